@@ -1,0 +1,68 @@
+# `python -m derive MODEL.toml`: derive the model, generate C into generated/<name>/, build it.
+"""Derive a model file and generate its C code.
+
+Usage: python -m derive [MODEL.toml] [--out DIR] [--no-build]
+
+Writes DIR/<name>.c, DIR/<name>.h and DIR/manifest.json (DIR defaults to
+generated/<name>/), then compiles DIR/lib<name>.so unless --no-build.
+"""
+import argparse
+import sys
+import time
+from pathlib import Path
+
+import casadi as ca
+
+from pm2dof.model_file import read_model_file
+from pm2dof.errors import ModelFileError
+
+from .export import export
+from .model_functions import Derivation, model_functions
+
+REPO = Path(__file__).resolve().parent.parent
+
+
+def _label(path):
+    path = Path(path).resolve()
+    try:
+        return str(path.relative_to(REPO))
+    except ValueError:
+        return path.name
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog="python -m derive", description=__doc__.split("\n\n")[0])
+    ap.add_argument("model", nargs="?", default=str(REPO / "models" / "shang2010.toml"))
+    ap.add_argument("--out", help="output folder (default generated/<name>/)")
+    ap.add_argument("--no-build", action="store_true", help="do not compile the shared library")
+    args = ap.parse_args(argv)
+    t0 = time.perf_counter()
+
+    def say(msg):
+        print(f"[derive {time.perf_counter() - t0:5.1f}s] {msg}", flush=True)
+
+    try:
+        spec = read_model_file(args.model)
+    except ModelFileError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    out = Path(args.out) if args.out else REPO / "generated" / spec.name
+    say(f"model {spec.name!r}: {spec.n_legs} legs, {len(spec.param_names)} parameters, "
+        f"friction {spec.friction!r}")
+    d = Derivation(spec)
+    say("SymPy: H, A, W, Wdot, S, M, C, Me, Ce, S^T f_a, Y, forward dynamics derived")
+    functions = [ca.Function(f.name(), f.sx_in(), [ca.densify(o) for o in f.call(f.sx_in())],
+                             f.name_in(), f.name_out()) for f in model_functions(d, spec.name)]
+    say(f"CasADi: {len(functions)} functions, "
+        f"{sum(f.n_instructions() for f in functions)} instructions")
+    manifest = export(spec, functions, out, _label(args.model))
+    say(f"wrote {', '.join(manifest['files'])}, manifest.json in {_label(out)}")
+    if not args.no_build:
+        from pm2dof.build import compile_library
+        lib = compile_library(out / f"{spec.name}.c", out / f"lib{spec.name}.so")
+        say(f"compiled {_label(lib)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,100 @@
+# CasADi export: one CodeGenerator -> generated/<name>/<name>.c/.h, a documenting header, a manifest.
+import hashlib
+import json
+from pathlib import Path
+
+import casadi as ca
+import sympy
+
+__all__ = ["export", "derive_sources_sha256", "MANIFEST"]
+
+MANIFEST = "manifest.json"
+DERIVE_DIR = Path(__file__).resolve().parent
+
+
+def derive_sources_sha256():
+    """Hash of every derivation source file (name and content), in sorted order."""
+    h = hashlib.sha256()
+    for path in sorted(DERIVE_DIR.glob("*.py")):
+        h.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+def _sha(path):
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def _signature(f):
+    def side(n, name, sparsity):
+        return [[name(i), sparsity(i).size1() * sparsity(i).size2()] for i in range(n)]
+    return {"inputs": side(f.n_in(), f.name_in, f.sparsity_in),
+            "outputs": side(f.n_out(), f.name_out, f.sparsity_out)}
+
+
+def _header_doc(spec, functions):
+    """A comment block for the top of the generated header: argument order and layouts."""
+    n = spec.n_legs
+    lines = [
+        f"/* pm2dof generated code for model '{spec.name}' ({n} legs, friction '{spec.friction}').",
+        " * Written by `make derive` from the model file; do not edit.",
+        " *",
+        " * Every function follows CasADi's C API: int f(const double** arg, double** res,",
+        " * long long* iw, double* w, int mem), with work sizes from f_work(). All inputs and",
+        " * outputs are dense; matrices are stored ROW-MAJOR (flattened row by row). SI units.",
+        " *",
+        f" * q     = [qa_1..qa_{n}, qb_1..qb_{n}]  absolute joint angles, rad (eq. 3 order)",
+        f" * qa    = [qa_1..qa_{n}]  measured active angles, rad",
+        " * xe    = [x, y] end-effector position, m;  xed, xrd, xrdd: velocities m/s, accel. m/s^2",
+        f" * theta = [{', '.join(spec.param_names)}]",
+        " *         (alpha, beta, gamma in kg*m^2; fv in N*m*s/rad; fc, fs in N*m)",
+        " * sing  = min_i |sin(qb_i - qa_i)|, the singularity measure at the pose",
+        " *",
+        " * Functions (inputs -> outputs, element counts):",
+    ]
+    for f in functions:
+        sig = _signature(f)
+        ins = ", ".join(f"{a}[{k}]" for a, k in sig["inputs"])
+        outs = ", ".join(f"{a}[{k}]" for a, k in sig["outputs"])
+        lines.append(f" *   {f.name()}({ins}) -> ({outs})")
+    lines.append(" */")
+    return "\n".join(lines) + "\n"
+
+
+def export(spec, functions, out_dir, model_file_label):
+    """Generate C for ``functions`` into ``out_dir`` and write the manifest.
+
+    Parameters
+    ----------
+    spec : pm2dof.model_file.ModelSpec
+    functions : list of casadi.Function
+        Named functions with named inputs and outputs; all outputs are densified.
+    out_dir : pathlib.Path
+        ``generated/<name>/``; created if missing. Only files this function writes change.
+    model_file_label : str
+        How the manifest names the model file (repository-relative when possible).
+
+    Returns
+    -------
+    dict
+        The manifest.
+    """
+    out_dir.mkdir(parents=True, exist_ok=True)
+    cg = ca.CodeGenerator(f"{spec.name}.c", {"with_header": True, "verbose": False})
+    for f in functions:
+        cg.add(f)
+    cg.generate(str(out_dir) + "/")
+    header = out_dir / f"{spec.name}.h"
+    header.write_text(_header_doc(spec, functions) + header.read_text())
+    manifest = {
+        "model": spec.name,
+        "model_file": model_file_label,
+        "model_file_sha256": spec.file_sha256,
+        "formulation_sha256": spec.formulation_sha256,
+        "derive_sources_sha256": derive_sources_sha256(),
+        "versions": {"sympy": sympy.__version__, "casadi": ca.__version__},
+        "param_names": list(spec.param_names),
+        "files": {p.name: _sha(p) for p in (out_dir / f"{spec.name}.c", header)},
+        "functions": {f.name(): _signature(f) for f in functions},
+    }
+    (out_dir / MANIFEST).write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+    return manifest

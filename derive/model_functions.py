@@ -1,0 +1,114 @@
+# The model's CasADi functions (kinematics, dynamics, regressor) built from the SymPy derivation.
+import casadi as ca
+
+from .dynamics import Dynamics
+from .kinematics import Kinematics
+from .symbols import Symbols
+from .to_casadi import Converter
+
+__all__ = ["Derivation", "model_functions"]
+
+
+class Derivation:
+    """The SymPy derivation of one model, and converters from it to CasADi SX."""
+
+    def __init__(self, spec):
+        self.spec = spec
+        self.sym = Symbols(spec.n_legs, spec.param_names)
+        self.kin = Kinematics(spec, self.sym)
+        self.dyn = Dynamics(spec, self.sym, self.kin)
+
+    def sx(self, name, n):
+        return ca.SX.sym(name, n)
+
+    def converter_q(self, q, extra=()):
+        """Converter for functions of the joint angles q: one cos/sin per angle."""
+        sym = self.sym
+        symbols = dict(zip(sym.q, ca.vertsplit(q)))
+        trig = {s: (ca.cos(v), ca.sin(v)) for s, v in symbols.items()}
+        for syms, value in extra:
+            symbols.update(zip(syms, ca.vertsplit(value)))
+        return Converter(symbols, trig)
+
+    def converter_xe(self, xe, extra=()):
+        """Converter for functions of the task position: joint directions from geometry, no trig."""
+        symbols = dict(zip(self.sym.xe, ca.vertsplit(xe)))
+        for syms, value in extra:
+            symbols.update(zip(syms, ca.vertsplit(value)))
+        base = Converter(symbols)
+        trig = {s: (base(c), base(si)) for s, (c, si) in self.kin.unit_vectors_from_xe().items()}
+        return Converter(symbols, trig)
+
+    def converter_qa(self, qa, extra=()):
+        """Converter for functions of the measured active angles: trig of qa, passive from fk."""
+        sym = self.sym
+        symbols = dict(zip(sym.qa, ca.vertsplit(qa)))
+        for syms, value in extra:
+            symbols.update(zip(syms, ca.vertsplit(value)))
+        trig = {s: (ca.cos(v), ca.sin(v)) for s, v in zip(sym.qa, ca.vertsplit(qa))}
+        base = Converter(symbols, trig)
+        O = self.kin.fk()
+        trig.update({s: (base(c), base(si)) for s, (c, si)
+                     in self.kin.unit_vectors_from_qa(O).items()})
+        return Converter(symbols, trig)
+
+    def singularity_measure(self, conv):
+        """min_i |sin(qb_i - qa_i)|: zero where a leg's tip Jacobian is singular."""
+        n = self.spec.n_legs
+        values = [ca.fabs(conv(self.kin.sin_ab(i))) for i in range(n)]
+        out = values[0]
+        for v in values[1:]:
+            out = ca.fmin(out, v)
+        return out
+
+
+def model_functions(d, prefix):
+    """The model-level functions of the runtime API, each named and with named inputs/outputs.
+
+    Matrices are returned flattened row-major. ``sing`` is the singularity measure at the pose.
+    """
+    n, p = d.spec.n_legs, len(d.spec.param_names)
+    sym, kin, dyn = d.sym, d.kin, d.dyn
+    q, xe, qa = d.sx("q", 2 * n), d.sx("xe", 2), d.sx("qa", n)
+    xed, xrd, xrdd = d.sx("xed", 2), d.sx("xrd", 2), d.sx("xrdd", 2)
+    qd, theta, tau_a = d.sx("qd", 2 * n), d.sx("theta", p), d.sx("tau_a", n)
+    f = []
+
+    def add(name, ins, outs):
+        f.append(ca.Function(f"{prefix}_{name}", [v for _, v in ins], [v for _, v in outs],
+                             [k for k, _ in ins], [k for k, _ in outs]))
+
+    cv = Converter(dict(zip(sym.xe, ca.vertsplit(xe))))
+    add("ik", [("xe", xe)], [("q", cv(kin.ik()))])
+    cqa = d.converter_qa(qa)
+    add("fk", [("qa", qa)], [("xe", cqa(kin.fk()))])
+    cq = d.converter_q(q)
+    add("H", [("q", q)], [("H", cq(kin.H))])                                   # eq. 5
+    add("A", [("q", q)], [("A", cq(kin.A))])                                   # eq. 6
+    add("singularity", [("q", q)], [("sin_ab", cq(sp_vector(kin.sin_ab(i) for i in range(n))))])
+    sing = d.singularity_measure(cq)
+    add("W", [("q", q)], [("W", cq(kin.W)), ("sing", sing)])                   # eq. 7
+    add("S", [("q", q)], [("S", cq(kin.S)), ("sing", sing)])                   # eq. 8
+    cqx = d.converter_q(q, [(sym.xed, xed)])
+    add("Wdot", [("q", q), ("xed", xed)], [("Wdot", cqx(kin.Wdot)), ("sing", sing)])  # eq. 9
+    cqt = d.converter_q(q, [(sym.theta, theta), (dyn.qd, qd)])
+    add("M", [("q", q), ("theta", theta)], [("M", cqt(dyn.M))])                # eq. 3
+    add("C", [("q", q), ("qd", qd), ("theta", theta)], [("C", cqt(dyn.C))])    # eq. 3
+    cqxt = d.converter_q(q, [(sym.xed, xed), (sym.theta, theta)])
+    add("Me", [("q", q), ("theta", theta)], [("Me", cqxt(dyn.Me)), ("sing", sing)])  # eq. 12
+    add("Ce", [("q", q), ("xed", xed), ("theta", theta)],
+        [("Ce", cqxt(dyn.Ce)), ("sing", sing)])                                 # eq. 12
+    add("StF", [("q", q), ("xed", xed), ("theta", theta)],
+        [("StF", cqxt(dyn.StF)), ("sing", sing)])                               # eqs. 2, 10
+    cy = d.converter_q(q, [(sym.xed, xed), (sym.xrd, xrd), (sym.xrdd, xrdd)])
+    add("Y", [("q", q), ("xed", xed), ("xrd", xrd), ("xrdd", xrdd)],
+        [("Y", cy(dyn.Y)), ("sing", sing)])                                     # eq. 13
+    cfd = d.converter_xe(xe, [(sym.xed, xed), (sym.tau_a, tau_a), (sym.theta, theta)])
+    add("forward_dynamics", [("xe", xe), ("xed", xed), ("tau_a", tau_a), ("theta", theta)],
+        [("xedd", cfd(dyn.xedd)), ("sing", d.singularity_measure(cfd))])        # eqs. 10-12
+    return f
+
+
+def sp_vector(items):
+    import sympy as sp
+    return sp.Matrix(list(items))

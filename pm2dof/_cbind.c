@@ -1,0 +1,1364 @@
+/* pm2dof._cbind: near-zero-overhead calls from Python into CasADi-generated C functions loaded with dlopen. */
+
+/*
+ * Overview
+ * --------
+ * Library(path)          dlopen()s a shared library built from CasADi-generated C code.
+ * Function(lib, name)    resolves the CasADi external C API of one function
+ *                        (name, name_n_in, name_sparsity_in, name_work, ...), checks that
+ *                        every input/output is dense, and allocates the work arrays once.
+ * f(*inputs, *outputs)   binds flat float64 buffers to arg/res and calls the function.
+ *                        Outputs are written in place; None as an output means "don't
+ *                        compute it" (NULL res pointer).
+ * f.accumulate(...)      runs a whole x_{k+1}, y_k = f(x_k, u_k, p) rollout in C.
+ * f.time_calls(...)      times back-to-back calls inside a C loop.
+ *
+ * The binding is layout-agnostic: it passes the buffers' memory as the flat nonzero
+ * vectors CasADi expects. CasADi stores matrices column-major, so a 2x3 matrix argument
+ * must be given as its 6 column-major entries (e.g. numpy order='F' flattened, or the
+ * transpose of a C-ordered array); the binding only checks the element count.
+ *
+ * Per-call cost: no heap allocation and no Python object creation on the success path.
+ * Buffer views are stored in an array owned by the Function (allocated once) and are
+ * released before returning, on every path. If the Function is already in use (another
+ * thread while accumulate/time_calls run without the GIL, or re-entrancy from a buffer
+ * exporter), the call transparently uses a temporary work area instead.
+ */
+
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include "structmember.h"
+
+#include <dlfcn.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include <time.h>
+
+/* CasADi's defaults (see the generated header): casadi_real = double, casadi_int = long long. */
+typedef double casadi_real;
+typedef long long int casadi_int;
+
+_Static_assert(sizeof(double) == 8, "float64 buffers require an 8-byte double");
+
+typedef int (*eval_fn)(const casadi_real **arg, casadi_real **res, casadi_int *iw,
+                       casadi_real *w, int mem);
+typedef int (*work_fn)(casadi_int *sz_arg, casadi_int *sz_res, casadi_int *sz_iw,
+                       casadi_int *sz_w);
+typedef casadi_int (*count_fn)(void);
+typedef const casadi_int *(*sparsity_fn)(casadi_int i);
+typedef const char *(*name_fn)(casadi_int i);
+typedef int (*checkout_fn)(void);
+typedef void (*release_fn)(int mem);
+typedef void (*void_fn)(void);
+typedef int (*int_fn)(void);
+
+/* Sanity limit on the number of inputs/outputs reported by a library. */
+#define MAX_ARGS 4096
+/* Longest accepted function name (bytes); symbol names add a short suffix. */
+#define MAX_NAME 400
+
+static PyObject *EvalError;
+
+/* ------------------------------------------------------------------------------------ */
+/* Library                                                                              */
+/* ------------------------------------------------------------------------------------ */
+
+typedef struct {
+    PyObject_HEAD
+    void *handle;   /* from dlopen, closed on dealloc */
+    PyObject *path; /* str */
+} LibraryObject;
+
+static PyObject *
+Library_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
+{
+    static char *kwlist[] = {"path", NULL};
+    PyObject *path_bytes = NULL;
+    if (!PyArg_ParseTupleAndKeywords(args, kwds, "O&:Library", kwlist,
+                                     PyUnicode_FSConverter, &path_bytes))
+        return NULL;
+    const char *cpath = PyBytes_AS_STRING(path_bytes);
+
+    (void)dlerror(); /* clear any stale error */
+    void *handle = dlopen(cpath, RTLD_NOW | RTLD_LOCAL);
+    if (handle == NULL) {
+        const char *msg = dlerror();
+        PyErr_Format(PyExc_OSError, "cannot load shared library '%s': %s", cpath,
+                     msg ? msg : "unknown dlopen error");
+        Py_DECREF(path_bytes);
+        return NULL;
+    }
+    LibraryObject *self = (LibraryObject *)type->tp_alloc(type, 0);
+    if (self == NULL) {
+        dlclose(handle);
+        Py_DECREF(path_bytes);
+        return NULL;
+    }
+    self->handle = handle;
+    self->path = PyUnicode_DecodeFSDefaultAndSize(PyBytes_AS_STRING(path_bytes),
+                                                  PyBytes_GET_SIZE(path_bytes));
+    Py_DECREF(path_bytes);
+    if (self->path == NULL) {
+        Py_DECREF(self);
+        return NULL;
+    }
+    return (PyObject *)self;
+}
+
+static void
+Library_dealloc(LibraryObject *self)
+{
+    if (self->handle)
+        dlclose(self->handle);
+    Py_XDECREF(self->path);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyObject *
+Library_repr(LibraryObject *self)
+{
+    return PyUnicode_FromFormat("<Library %R>", self->path);
+}
+
+static PyMemberDef Library_members[] = {
+    {"path", T_OBJECT_EX, offsetof(LibraryObject, path), READONLY,
+     "Path the library was loaded from (str)."},
+    {NULL, 0, 0, 0, NULL},
+};
+
+PyDoc_STRVAR(Library_doc,
+"Library(path)\n"
+"--\n\n"
+"A shared library loaded with dlopen(path, RTLD_NOW | RTLD_LOCAL).\n\n"
+"Raises OSError (with the dlerror() text) if it cannot be loaded. The library is\n"
+"dlclose()d when the object is garbage-collected; Function objects keep a reference\n"
+"to their Library. Note that dlopen() returns the already-loaded library for a path\n"
+"that is still open in this process, so a library rebuilt in place is only reloaded\n"
+"once every Library for that path (and every Function using it) is gone.");
+
+static PyTypeObject LibraryType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "pm2dof._cbind.Library",
+    .tp_basicsize = sizeof(LibraryObject),
+    .tp_dealloc = (destructor)Library_dealloc,
+    .tp_repr = (reprfunc)Library_repr,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = Library_doc,
+    .tp_members = Library_members,
+    .tp_new = Library_new,
+};
+
+/* ------------------------------------------------------------------------------------ */
+/* Function                                                                             */
+/* ------------------------------------------------------------------------------------ */
+
+/* Everything one evaluation needs; a Function owns one, busy callers get a temporary. */
+typedef struct {
+    const casadi_real **arg; /* max(sz_arg, n_in) entries */
+    casadi_real **res;       /* max(sz_res, n_out) entries */
+    casadi_int *iw;          /* sz_iw */
+    casadi_real *w;          /* sz_w */
+    casadi_real *scalars;    /* n_in: Python numbers passed for 1-element inputs */
+    casadi_real *xbuf;       /* nx: accumulate ping-pong state (NULL if not applicable) */
+    Py_buffer *views;        /* n_in + n_out held buffer views */
+    unsigned char *how;      /* n_in + n_out: how each argument was bound (BOUND_*) */
+    int mem;                 /* from checkout() */
+    int checked_out;
+} Work;
+
+typedef struct {
+    PyObject_HEAD
+    vectorcallfunc vectorcall;
+    LibraryObject *lib;
+    PyObject *name;      /* str */
+    PyObject *signature; /* str, e.g. "f(x[3], p[1]) -> (y[2])" */
+    PyObject *names_in, *names_out;   /* tuple of str */
+    PyObject *sizes_in, *sizes_out;   /* tuple of int */
+    PyObject *shapes_in, *shapes_out; /* tuple of (nrow, ncol) */
+    Py_ssize_t n_in, n_out;
+    Py_ssize_t *nnz; /* n_in + n_out element counts (outputs start at nnz + n_in) */
+    casadi_int sz_arg, sz_res, sz_iw, sz_w;
+    eval_fn eval;
+    checkout_fn checkout;
+    release_fn release;
+    void_fn decref;
+    int increfed;
+    int acc_ok; /* signature fits accumulate: 3 inputs, 2 outputs, nnz_out[0] == nnz_in[0] */
+    int busy;   /* primary work area in use */
+    Work work;
+} FunctionObject;
+
+/* ---- work areas ---- */
+
+static void
+work_free(FunctionObject *f, Work *w)
+{
+    if (w->checked_out && f->release)
+        f->release(w->mem);
+    w->checked_out = 0;
+    PyMem_Free((void *)w->arg);
+    PyMem_Free(w->res);
+    PyMem_Free(w->iw);
+    PyMem_Free(w->w);
+    PyMem_Free(w->scalars);
+    PyMem_Free(w->xbuf);
+    PyMem_Free(w->views);
+    PyMem_Free(w->how);
+    memset(w, 0, sizeof(*w));
+}
+
+static int
+work_init(FunctionObject *f, Work *w)
+{
+    memset(w, 0, sizeof(*w));
+    size_t n_arg = (size_t)(f->sz_arg > f->n_in ? f->sz_arg : f->n_in);
+    size_t n_res = (size_t)(f->sz_res > f->n_out ? f->sz_res : f->n_out);
+    /* +1 everywhere: never ask for zero bytes */
+    w->arg = PyMem_Calloc(n_arg + 1, sizeof(*w->arg));
+    w->res = PyMem_Calloc(n_res + 1, sizeof(*w->res));
+    w->iw = PyMem_Calloc((size_t)f->sz_iw + 1, sizeof(*w->iw));
+    w->w = PyMem_Calloc((size_t)f->sz_w + 1, sizeof(*w->w));
+    w->scalars = PyMem_Calloc((size_t)f->n_in + 1, sizeof(*w->scalars));
+    w->views = PyMem_Calloc((size_t)(f->n_in + f->n_out) + 1, sizeof(*w->views));
+    w->how = PyMem_Calloc((size_t)(f->n_in + f->n_out) + 1, sizeof(*w->how));
+    if (f->acc_ok)
+        w->xbuf = PyMem_Calloc((size_t)f->nnz[0] + 1, sizeof(*w->xbuf));
+    if (!w->arg || !w->res || !w->iw || !w->w || !w->scalars || !w->views || !w->how ||
+        (f->acc_ok && !w->xbuf)) {
+        work_free(f, w);
+        PyErr_NoMemory();
+        return -1;
+    }
+    if (f->checkout) {
+        int mem = f->checkout();
+        if (mem < 0) {
+            work_free(f, w);
+            PyErr_Format(EvalError, "%U: checkout() failed (returned %d)", f->name, mem);
+            return -1;
+        }
+        w->mem = mem;
+        w->checked_out = 1;
+    }
+    return 0;
+}
+
+/* Primary work area if free, else a freshly initialised temporary in *tmp. */
+static Work *
+work_acquire(FunctionObject *f, Work *tmp)
+{
+    if (!f->busy) {
+        f->busy = 1;
+        return &f->work;
+    }
+    if (work_init(f, tmp) < 0)
+        return NULL;
+    return tmp;
+}
+
+static void
+work_done(FunctionObject *f, Work *w, Py_ssize_t held)
+{
+    for (Py_ssize_t k = 0; k < held; k++)
+        PyBuffer_Release(&w->views[k]);
+    if (w == &f->work)
+        f->busy = 0;
+    else
+        work_free(f, w);
+}
+
+/* ---- error messages ---- */
+
+/* Which argument an error is about; only formatted into text on error paths. */
+typedef struct {
+    const char *method; /* NULL for a plain call, else "time_calls" / "accumulate" */
+    const char *accarg; /* accumulate's own argument name, or NULL */
+    int is_out;
+    Py_ssize_t idx;
+} ArgCtx;
+
+static void
+arg_error(FunctionObject *f, PyObject *exc, const ArgCtx *c, const char *fmt, ...)
+{
+    PyObject *nm = PyTuple_GET_ITEM(c->is_out ? f->names_out : f->names_in, c->idx);
+    const char *kind = c->is_out ? "output" : "input";
+    PyObject *label;
+    if (c->accarg)
+        label = PyUnicode_FromFormat("%U.%s: argument '%s' (%s '%U' #%zd)", f->name,
+                                     c->method, c->accarg, kind, nm, c->idx);
+    else if (c->method)
+        label = PyUnicode_FromFormat("%U.%s: %s '%U' (#%zd)", f->name, c->method, kind, nm,
+                                     c->idx);
+    else
+        label = PyUnicode_FromFormat("%U: %s '%U' (#%zd)", f->name, kind, nm, c->idx);
+    if (label == NULL)
+        return;
+    va_list va;
+    va_start(va, fmt);
+    PyObject *detail = PyUnicode_FromFormatV(fmt, va);
+    va_end(va);
+    if (detail != NULL)
+        PyErr_Format(exc, "%U %U", label, detail);
+    Py_DECREF(label);
+    Py_XDECREF(detail);
+}
+
+/* ---- argument checks ---- */
+
+/* True for a struct-module format describing one native float64. */
+static int
+format_is_f64(const char *fmt)
+{
+    if (fmt == NULL) /* NULL means unsigned bytes */
+        return 0;
+    if (fmt[0] == '@' || fmt[0] == '=')
+        fmt++;
+#if PY_LITTLE_ENDIAN
+    else if (fmt[0] == '<')
+        fmt++;
+#else
+    else if (fmt[0] == '>' || fmt[0] == '!')
+        fmt++;
+#endif
+    return fmt[0] == 'd' && fmt[1] == '\0';
+}
+
+/*
+ * numpy fast path
+ * ---------------
+ * numpy's buffer export builds and compares a format string on every request (~60 ns
+ * here), which would dominate a call with several small arrays. For an exact
+ * numpy.ndarray, a plain call (GIL held from binding to the end of the evaluation, so
+ * the array cannot be resized or freed meanwhile) reads the array's public C struct
+ * instead (the documented PyArrayObject_fields / PyArray_Descr layout, unchanged in
+ * numpy 1.x and 2.x) and takes the pointer if the array is exactly what is needed:
+ * float64 in native byte order, C-contiguous, aligned, writable for outputs, with the
+ * right element count. Anything else goes through the buffer protocol, which produces
+ * the precise error messages. The struct layout is checked once against a real buffer
+ * export of the first ndarray seen; on any mismatch the fast path is disabled for good.
+ * numpy headers are not needed at build time.
+ */
+typedef struct {
+    PyObject_HEAD
+    PyTypeObject *typeobj;
+    char kind, type, byteorder, former_flags;
+    int type_num;
+} NpDescr;
+
+typedef struct {
+    PyObject_HEAD
+    char *data;
+    int nd;
+    Py_ssize_t *dimensions;
+    Py_ssize_t *strides;
+    PyObject *base;
+    NpDescr *descr;
+    int flags;
+} NpArray;
+
+#define NP_C_CONTIGUOUS 0x0001
+#define NP_ALIGNED 0x0100
+#define NP_WRITEABLE 0x0400
+#define NP_WARN_ON_WRITE ((int)(1u << 31))
+#define NP_DOUBLE 12
+#if PY_LITTLE_ENDIAN
+#define NP_NATIVE_ORDER '<'
+#else
+#define NP_NATIVE_ORDER '>'
+#endif
+
+static PyTypeObject *np_type; /* numpy.ndarray once its layout was verified */
+static int np_disabled;       /* layout check failed: never use the fast path */
+
+static inline int
+np_descr_is_f64(const NpDescr *d)
+{
+    return d->type_num == NP_DOUBLE && d->type == 'd' && d->kind == 'f' &&
+           (d->byteorder == '=' || d->byteorder == NP_NATIVE_ORDER);
+}
+
+/* Verify our view of the struct against a buffer export of one array. */
+static void
+np_probe(PyObject *o)
+{
+    Py_buffer v;
+    if (PyObject_GetBuffer(o, &v, PyBUF_RECORDS_RO) < 0) {
+        PyErr_Clear(); /* e.g. object arrays: try again with another array */
+        return;
+    }
+    const NpArray *a = (const NpArray *)o;
+    int ok = Py_TYPE(o)->tp_basicsize >= (Py_ssize_t)sizeof(NpArray) && v.buf == a->data &&
+             v.ndim == a->nd && v.shape != NULL && v.strides != NULL;
+    for (int k = 0; ok && k < v.ndim; k++)
+        ok = v.shape[k] == a->dimensions[k] && v.strides[k] == a->strides[k];
+    /* Only now is a->descr known to be at the assumed offset. */
+    ok = ok && a->descr != NULL &&
+         (np_descr_is_f64(a->descr) == (v.itemsize == 8 && format_is_f64(v.format)));
+    if (ok && !(a->flags & NP_WARN_ON_WRITE))
+        ok = v.readonly == !(a->flags & NP_WRITEABLE);
+    PyBuffer_Release(&v);
+    if (ok) {
+        Py_INCREF(Py_TYPE(o));
+        np_type = Py_TYPE(o);
+    }
+    else {
+        np_disabled = 1;
+    }
+}
+
+static inline int
+np_is_ndarray(PyObject *o)
+{
+    PyTypeObject *t = Py_TYPE(o);
+    if (t == np_type)
+        return 1;
+    if (np_type == NULL && !np_disabled && strcmp(t->tp_name, "numpy.ndarray") == 0) {
+        np_probe(o);
+        return t == np_type;
+    }
+    return 0;
+}
+
+/* Data pointer of an ndarray that is exactly right for the argument, else NULL. */
+static inline double *
+np_fast(PyObject *o, int writable, Py_ssize_t expect)
+{
+    const NpArray *a = (const NpArray *)o;
+    int need = NP_C_CONTIGUOUS | NP_ALIGNED | (writable ? NP_WRITEABLE : 0);
+    if ((a->flags & need) != need || (writable && (a->flags & NP_WARN_ON_WRITE)) ||
+        !np_descr_is_f64(a->descr))
+        return NULL;
+    Py_ssize_t n = 1;
+    for (int k = 0; k < a->nd; k++)
+        n *= a->dimensions[k];
+    return n == expect ? (double *)a->data : NULL;
+}
+
+/*
+ * Get a C-contiguous, aligned float64 buffer from obj into *view. On failure sets an
+ * exception and holds no view. The element count is checked by the caller.
+ */
+static int
+get_f64_buffer(FunctionObject *f, PyObject *obj, Py_buffer *view, int writable,
+               int scalar_ok, const ArgCtx *c)
+{
+    int flags = PyBUF_STRIDES | PyBUF_FORMAT | (writable ? PyBUF_WRITABLE : 0);
+    if (PyObject_GetBuffer(obj, view, flags) < 0) {
+        if (!PyObject_CheckBuffer(obj)) {
+            PyErr_Clear();
+            arg_error(f, PyExc_TypeError, c,
+                      "must be a C-contiguous float64 buffer%s, got %s",
+                      scalar_ok ? " or a Python float" : "", Py_TYPE(obj)->tp_name);
+            return -1;
+        }
+        if (writable) {
+            /* Distinguish "read-only" from other export failures. */
+            PyObject *et, *ev, *tb;
+            PyErr_Fetch(&et, &ev, &tb);
+            if (PyObject_GetBuffer(obj, view, PyBUF_STRIDES | PyBUF_FORMAT) == 0) {
+                PyBuffer_Release(view);
+                Py_XDECREF(et);
+                Py_XDECREF(ev);
+                Py_XDECREF(tb);
+                arg_error(f, PyExc_ValueError, c, "must be writable, got a read-only %s",
+                          Py_TYPE(obj)->tp_name);
+                return -1;
+            }
+            PyErr_Clear();
+            PyErr_Restore(et, ev, tb);
+        }
+        /* Keep the exporter's message, prefixed with the argument. */
+        PyObject *et, *ev, *tb;
+        PyErr_Fetch(&et, &ev, &tb);
+        PyErr_NormalizeException(&et, &ev, &tb);
+        arg_error(f, PyExc_TypeError, c, "cannot export a float64 buffer from %s: %S",
+                  Py_TYPE(obj)->tp_name, ev ? ev : Py_None);
+        Py_XDECREF(et);
+        Py_XDECREF(ev);
+        Py_XDECREF(tb);
+        return -1;
+    }
+    if (view->itemsize != 8 || !format_is_f64(view->format)) {
+        arg_error(f, PyExc_TypeError, c,
+                  "must have dtype float64 (buffer format 'd'), got format '%s' "
+                  "(itemsize %zd) from %s",
+                  view->format ? view->format : "B", view->itemsize, Py_TYPE(obj)->tp_name);
+        PyBuffer_Release(view);
+        return -1;
+    }
+    if (!PyBuffer_IsContiguous(view, 'C')) {
+        arg_error(f, PyExc_ValueError, c, "must be C-contiguous, got a strided %s",
+                  Py_TYPE(obj)->tp_name);
+        PyBuffer_Release(view);
+        return -1;
+    }
+    if (((uintptr_t)view->buf & 7u) != 0 && view->len > 0) {
+        arg_error(f, PyExc_ValueError, c, "must be 8-byte aligned, got a misaligned %s",
+                  Py_TYPE(obj)->tp_name);
+        PyBuffer_Release(view);
+        return -1;
+    }
+    return 0;
+}
+
+/* Index of the first non-finite value in p[0..n), or -1. */
+static inline Py_ssize_t
+first_nonfinite(const double *p, Py_ssize_t n)
+{
+    for (Py_ssize_t k = 0; k < n; k++)
+        if (!isfinite(p[k]))
+            return k;
+    return -1;
+}
+
+static int
+check_finite(FunctionObject *f, const double *p, Py_ssize_t n, const ArgCtx *c)
+{
+    Py_ssize_t k = first_nonfinite(p, n);
+    if (k < 0)
+        return 0;
+    const char *v = isnan(p[k]) ? "nan" : (p[k] > 0 ? "inf" : "-inf");
+    arg_error(f, PyExc_ValueError, c, "has a non-finite value at index %zd (%s)", k, v);
+    return -1;
+}
+
+/* How an argument was bound. */
+enum { BOUND_NONE, BOUND_SCALAR, BOUND_FAST, BOUND_NUMPY_EXPORT, BOUND_FOREIGN_EXPORT };
+
+/*
+ * Bind one input through the buffer protocol, or as a Python float/int when expect == 1
+ * (copied to w->scalars[c->idx]). A view is appended to w->views[*held]. expect < 0
+ * accepts any element count. Finiteness is checked by the caller, after all arguments
+ * are bound (a foreign exporter could run Python code that changes earlier arguments).
+ */
+static int
+bind_input(FunctionObject *f, Work *w, PyObject *o, Py_ssize_t *held, const ArgCtx *c,
+           Py_ssize_t expect, const double **data, Py_ssize_t *count)
+{
+    Py_ssize_t i = c->idx;
+    if (expect == 1 && PyFloat_Check(o)) {
+        w->scalars[i] = PyFloat_AS_DOUBLE(o);
+    }
+    else if (expect == 1 && PyLong_Check(o)) {
+        double v = PyLong_AsDouble(o); /* never runs Python code */
+        if (v == -1.0 && PyErr_Occurred()) {
+            PyErr_Clear();
+            arg_error(f, PyExc_OverflowError, c, "is an int too large for a float64");
+            return -1;
+        }
+        w->scalars[i] = v;
+    }
+    else if (o == Py_None) {
+        arg_error(f, PyExc_TypeError, c,
+                  "cannot be None (only outputs may be None), expected a float64 buffer");
+        return -1;
+    }
+    else {
+        Py_buffer *v = &w->views[*held];
+        if (get_f64_buffer(f, o, v, 0, expect == 1, c) < 0)
+            return -1;
+        (*held)++;
+        *data = (const double *)v->buf;
+        *count = v->len / 8;
+        if (expect >= 0 && *count != expect) {
+            arg_error(f, PyExc_ValueError, c, "must have %zd float64 element%s, got %zd",
+                      expect, expect == 1 ? "" : "s", *count);
+            return -1;
+        }
+        return Py_TYPE(o) == np_type ? BOUND_NUMPY_EXPORT : BOUND_FOREIGN_EXPORT;
+    }
+    *data = &w->scalars[i];
+    *count = 1;
+    return BOUND_SCALAR;
+}
+
+/* Bind one output: a writable float64 buffer, or None (-> NULL). */
+static int
+bind_output(FunctionObject *f, Work *w, PyObject *o, Py_ssize_t *held, const ArgCtx *c,
+            Py_ssize_t expect, double **data, Py_ssize_t *count)
+{
+    if (o == Py_None) {
+        *data = NULL;
+        *count = 0;
+        return BOUND_NONE;
+    }
+    Py_buffer *v = &w->views[*held];
+    if (get_f64_buffer(f, o, v, 1, 0, c) < 0)
+        return -1;
+    (*held)++;
+    *data = (double *)v->buf;
+    *count = v->len / 8;
+    if (expect >= 0 && *count != expect) {
+        arg_error(f, PyExc_ValueError, c, "must have %zd float64 element%s, got %zd", expect,
+                  expect == 1 ? "" : "s", *count);
+        return -1;
+    }
+    return Py_TYPE(o) == np_type ? BOUND_NUMPY_EXPORT : BOUND_FOREIGN_EXPORT;
+}
+
+static inline int
+overlaps(const void *a, Py_ssize_t na, const void *b, Py_ssize_t nb)
+{
+    const char *pa = (const char *)a, *pb = (const char *)b;
+    return na > 0 && nb > 0 && pa < pb + nb * 8 && pb < pa + na * 8;
+}
+
+/* Bind argument k (inputs first, then outputs), trying the numpy fast path if allowed. */
+static int
+bind_one(FunctionObject *f, Work *w, PyObject *const *args, Py_ssize_t k, int fast_ok,
+         const char *method, Py_ssize_t *held)
+{
+    int is_out = k >= f->n_in;
+    PyObject *o = args[k];
+    Py_ssize_t expect = f->nnz[k], count;
+    if (fast_ok && np_is_ndarray(o)) {
+        double *p = np_fast(o, is_out, expect);
+        if (p != NULL) {
+            if (is_out)
+                w->res[k - f->n_in] = p;
+            else
+                w->arg[k] = p;
+            return BOUND_FAST;
+        }
+    }
+    ArgCtx c = {method, NULL, is_out, is_out ? k - f->n_in : k};
+    if (is_out)
+        return bind_output(f, w, o, held, &c, expect, &w->res[k - f->n_in], &count);
+    return bind_input(f, w, o, held, &c, expect, &w->arg[k], &count);
+}
+
+/*
+ * Bind all n_in + n_out arguments of a call into w->arg / w->res, then check that the
+ * inputs are finite and that no output shares memory with an input or another output
+ * (generated code may read an input after writing an output). The numpy fast path is
+ * used only for plain calls (fast_ok), where the GIL is held until the evaluation ends.
+ */
+static int
+bind_all(FunctionObject *f, Work *w, PyObject *const *args, int fast_ok,
+         const char *method, Py_ssize_t *held)
+{
+    const Py_ssize_t nargs = f->n_in + f->n_out;
+    int fast_seen = 0, recheck = 0;
+    for (Py_ssize_t k = 0; k < nargs; k++) {
+        int how = bind_one(f, w, args, k, fast_ok, method, held);
+        if (how < 0)
+            return -1;
+        w->how[k] = (unsigned char)how;
+        fast_seen |= how == BOUND_FAST;
+        recheck |= fast_seen && how == BOUND_FOREIGN_EXPORT;
+    }
+    if (recheck) {
+        /* A foreign exporter ran after pointers were taken from ndarrays without an
+           export: it might have resized them, so take those pointers again. */
+        for (Py_ssize_t k = 0; k < nargs; k++) {
+            if (w->how[k] != BOUND_FAST)
+                continue;
+            int how = bind_one(f, w, args, k, fast_ok, method, held);
+            if (how < 0)
+                return -1;
+            w->how[k] = (unsigned char)how;
+        }
+    }
+    ArgCtx c = {method, NULL, 0, 0};
+    for (Py_ssize_t i = 0; i < f->n_in; i++) {
+        c.idx = i;
+        if (check_finite(f, w->arg[i], f->nnz[i], &c) < 0)
+            return -1;
+    }
+    c.is_out = 1;
+    for (Py_ssize_t j = 0; j < f->n_out; j++) {
+        const double *r = w->res[j];
+        Py_ssize_t nr = f->nnz[f->n_in + j];
+        if (r == NULL)
+            continue;
+        c.idx = j;
+        for (Py_ssize_t i = 0; i < f->n_in; i++) {
+            if (overlaps(r, nr, w->arg[i], f->nnz[i])) {
+                arg_error(f, PyExc_ValueError, &c,
+                          "shares memory with input '%U' (#%zd); in-place evaluation "
+                          "is not supported",
+                          PyTuple_GET_ITEM(f->names_in, i), i);
+                return -1;
+            }
+        }
+        for (Py_ssize_t k = 0; k < j; k++) {
+            if (w->res[k] && overlaps(r, nr, w->res[k], f->nnz[f->n_in + k])) {
+                arg_error(f, PyExc_ValueError, &c, "shares memory with output '%U' (#%zd)",
+                          PyTuple_GET_ITEM(f->names_out, k), k);
+                return -1;
+            }
+        }
+    }
+    return 0;
+}
+
+static int
+check_nargs(FunctionObject *f, Py_ssize_t nargs, PyObject *kwnames, const char *method)
+{
+    if (kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0) {
+        if (method)
+            PyErr_Format(PyExc_TypeError, "%U.%s() takes no keyword arguments", f->name,
+                         method);
+        else
+            PyErr_Format(PyExc_TypeError, "%U() takes no keyword arguments", f->name);
+        return -1;
+    }
+    Py_ssize_t want = f->n_in + f->n_out;
+    if (nargs == want)
+        return 0;
+    if (method)
+        PyErr_Format(PyExc_TypeError,
+                     "%U.%s(n_inner, n_repeat, *inputs, *outputs) for %U takes %zd "
+                     "arguments (2 counts, %zd input%s, %zd output%s), got %zd",
+                     f->name, method, f->signature, want + 2, f->n_in,
+                     f->n_in == 1 ? "" : "s", f->n_out, f->n_out == 1 ? "" : "s",
+                     nargs + 2);
+    else
+        PyErr_Format(PyExc_TypeError,
+                     "%U takes %zd argument%s (%zd input%s, %zd output%s), got %zd",
+                     f->signature, want, want == 1 ? "" : "s", f->n_in,
+                     f->n_in == 1 ? "" : "s", f->n_out, f->n_out == 1 ? "" : "s", nargs);
+    return -1;
+}
+
+static PyObject *
+eval_error(FunctionObject *f, int rc)
+{
+    PyErr_Format(EvalError, "%U: CasADi function returned error code %d", f->name, rc);
+    return NULL;
+}
+
+/* ---- f(*inputs, *outputs) ---- */
+
+static PyObject *
+Function_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject *kwnames)
+{
+    FunctionObject *f = (FunctionObject *)self;
+    if (check_nargs(f, PyVectorcall_NARGS(nargsf), kwnames, NULL) < 0)
+        return NULL;
+    Work tmp;
+    Work *w = work_acquire(f, &tmp);
+    if (w == NULL)
+        return NULL;
+    Py_ssize_t held = 0;
+    if (bind_all(f, w, args, 1, NULL, &held) < 0) {
+        work_done(f, w, held);
+        return NULL;
+    }
+    int rc = f->eval(w->arg, w->res, w->iw, w->w, w->mem);
+    work_done(f, w, held);
+    if (rc != 0)
+        return eval_error(f, rc);
+    Py_RETURN_NONE;
+}
+
+/* ---- f.time_calls(n_inner, n_repeat, *inputs, *outputs) ---- */
+
+static int
+positive_count(FunctionObject *f, PyObject *o, const char *what, Py_ssize_t *out)
+{
+    Py_ssize_t v = PyLong_AsSsize_t(o);
+    if (v == -1 && PyErr_Occurred()) {
+        PyErr_Clear();
+        PyErr_Format(PyExc_TypeError, "%U.time_calls: %s must be a positive int, got %R",
+                     f->name, what, o);
+        return -1;
+    }
+    if (v < 1) {
+        PyErr_Format(PyExc_ValueError, "%U.time_calls: %s must be >= 1, got %zd", f->name,
+                     what, v);
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+static inline double
+now_ns(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+}
+
+static PyObject *
+Function_time_calls(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
+                    PyObject *kwnames)
+{
+    FunctionObject *f = (FunctionObject *)self;
+    Py_ssize_t n_inner, n_repeat;
+    if (nargs < 2) {
+        check_nargs(f, nargs - 2, NULL, "time_calls");
+        return NULL;
+    }
+    if (check_nargs(f, nargs - 2, kwnames, "time_calls") < 0 ||
+        positive_count(f, args[0], "n_inner", &n_inner) < 0 ||
+        positive_count(f, args[1], "n_repeat", &n_repeat) < 0)
+        return NULL;
+
+    PyObject *result = PyList_New(n_repeat);
+    if (result == NULL)
+        return NULL;
+    Work tmp;
+    Work *w = work_acquire(f, &tmp);
+    if (w == NULL) {
+        Py_DECREF(result);
+        return NULL;
+    }
+    Py_ssize_t held = 0;
+    if (bind_all(f, w, args + 2, 0, "time_calls", &held) < 0) {
+        work_done(f, w, held);
+        Py_DECREF(result);
+        return NULL;
+    }
+    int rc = 0;
+    /* Raw timings, boxed into floats after the GIL is reacquired. */
+    double *ns = PyMem_Malloc((size_t)n_repeat * sizeof(double));
+    if (ns == NULL) {
+        work_done(f, w, held);
+        Py_DECREF(result);
+        return PyErr_NoMemory();
+    }
+    eval_fn eval = f->eval;
+    const casadi_real **arg = w->arg;
+    casadi_real **res = w->res;
+    casadi_int *iw = w->iw;
+    casadi_real *wk = w->w;
+    int mem = w->mem;
+    Py_BEGIN_ALLOW_THREADS
+    for (Py_ssize_t r = 0; r < n_repeat && rc == 0; r++) {
+        double t0 = now_ns();
+        for (Py_ssize_t k = 0; k < n_inner; k++)
+            rc |= eval(arg, res, iw, wk, mem);
+        ns[r] = (now_ns() - t0) / (double)n_inner;
+    }
+    Py_END_ALLOW_THREADS
+    work_done(f, w, held);
+    if (rc != 0) {
+        PyMem_Free(ns);
+        Py_DECREF(result);
+        return eval_error(f, rc);
+    }
+    for (Py_ssize_t r = 0; r < n_repeat; r++) {
+        PyObject *v = PyFloat_FromDouble(ns[r]);
+        if (v == NULL) {
+            PyMem_Free(ns);
+            Py_DECREF(result);
+            return NULL;
+        }
+        PyList_SET_ITEM(result, r, v);
+    }
+    PyMem_Free(ns);
+    return result;
+}
+
+/* ---- f.accumulate(x, u_seq, p, y_seq) ---- */
+
+static PyObject *
+Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
+                    PyObject *kwnames)
+{
+    FunctionObject *f = (FunctionObject *)self;
+    if (!f->acc_ok) {
+        PyErr_Format(PyExc_TypeError,
+                     "%U.accumulate requires a function with 3 inputs (x[nx], u[nu], "
+                     "p[np]) and 2 outputs (x_next[nx], y[ny]) where x_next has as many "
+                     "elements as x; %U does not fit",
+                     f->name, f->signature);
+        return NULL;
+    }
+    if (kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0) {
+        PyErr_Format(PyExc_TypeError, "%U.accumulate() takes no keyword arguments", f->name);
+        return NULL;
+    }
+    if (nargs != 4) {
+        PyErr_Format(PyExc_TypeError,
+                     "%U.accumulate(x, u_seq, p, y_seq) takes 4 arguments, got %zd", f->name,
+                     nargs);
+        return NULL;
+    }
+    const Py_ssize_t nx = f->nnz[0], nu = f->nnz[1], np_ = f->nnz[2], ny = f->nnz[4];
+    if (nu == 0) {
+        PyErr_Format(PyExc_ValueError,
+                     "%U.accumulate: input 'u' has 0 elements; the number of steps is "
+                     "taken from len(u_seq) / nu, so nu == 0 is not supported",
+                     f->name);
+        return NULL;
+    }
+
+    Work tmp;
+    Work *w = work_acquire(f, &tmp);
+    if (w == NULL)
+        return NULL;
+    Py_ssize_t held = 0, n;
+    double *x, *y;
+    const double *u, *p;
+    ArgCtx cx = {"accumulate", "x", 0, 0}, cu = {"accumulate", "u_seq", 0, 1},
+           cp = {"accumulate", "p", 0, 2}, cy = {"accumulate", "y_seq", 1, 1};
+
+    /* x: writable state, nx elements */
+    if (bind_output(f, w, args[0], &held, &cx, nx, &x, &n) < 0)
+        goto fail;
+    if (x == NULL) {
+        arg_error(f, PyExc_TypeError, &cx, "must be a writable float64 buffer, got None");
+        goto fail;
+    }
+    /* u_seq: N * nu elements */
+    Py_ssize_t n_u;
+    if (bind_input(f, w, args[1], &held, &cu, -1, &u, &n_u) < 0)
+        goto fail;
+    if (n_u == 0 || n_u % nu != 0) {
+        arg_error(f, PyExc_ValueError, &cu,
+                  "must have N * %zd float64 elements with N >= 1, got %zd", nu, n_u);
+        goto fail;
+    }
+    const Py_ssize_t steps = n_u / nu;
+    /* p: np elements (or a Python float if np == 1) */
+    if (bind_input(f, w, args[2], &held, &cp, np_, &p, &n) < 0)
+        goto fail;
+    /* y_seq: N * ny elements, or None (outputs y not computed) */
+    if (bind_output(f, w, args[3], &held, &cy, steps * ny, &y, &n) < 0)
+        goto fail;
+    /* Finiteness last: binding may run an exporter's code that changes earlier buffers. */
+    if (check_finite(f, x, nx, &cx) < 0 || check_finite(f, u, n_u, &cu) < 0 ||
+        check_finite(f, p, np_, &cp) < 0)
+        goto fail;
+    if (overlaps(x, nx, u, n_u) || overlaps(x, nx, p, np_) ||
+        (y && (overlaps(y, steps * ny, x, nx) || overlaps(y, steps * ny, u, n_u) ||
+               overlaps(y, steps * ny, p, np_)))) {
+        PyErr_Format(PyExc_ValueError,
+                     "%U.accumulate: x and y_seq must not share memory with each other or "
+                     "with u_seq / p",
+                     f->name);
+        goto fail;
+    }
+
+    int rc = 0;
+    Py_ssize_t k = 0;
+    {
+        eval_fn eval = f->eval;
+        const casadi_real **arg = w->arg;
+        casadi_real **res = w->res;
+        casadi_int *iw = w->iw;
+        casadi_real *wk = w->w;
+        int mem = w->mem;
+        double *cur = x, *nxt = w->xbuf;
+        Py_BEGIN_ALLOW_THREADS
+        for (k = 0; k < steps; k++) {
+            arg[0] = cur;
+            arg[1] = u + k * nu;
+            arg[2] = p;
+            res[0] = nxt;
+            res[1] = y ? y + k * ny : NULL;
+            rc = eval(arg, res, iw, wk, mem);
+            if (rc != 0)
+                break; /* cur still holds x_k, the input of the failed step */
+            double *t = cur;
+            cur = nxt;
+            nxt = t;
+        }
+        if (cur != x)
+            memcpy(x, cur, (size_t)nx * sizeof(double));
+        Py_END_ALLOW_THREADS
+    }
+    work_done(f, w, held);
+    if (rc != 0) {
+        PyErr_Format(EvalError,
+                     "%U: CasADi function returned error code %d at step %zd of %zd "
+                     "(x holds the state before that step)",
+                     f->name, rc, k, steps);
+        return NULL;
+    }
+    Py_RETURN_NONE;
+
+fail:
+    work_done(f, w, held);
+    return NULL;
+}
+
+/* ---- construction ---- */
+
+/*
+ * dlsym() a symbol "<base><suffix>". Returned as a generic function pointer (converted via
+ * memcpy, the POSIX-sanctioned way that keeps ISO C happy); callers cast it to the real
+ * type. A missing required symbol sets LookupError.
+ */
+static void_fn
+lookup(LibraryObject *lib, const char *base, const char *suffix, int required)
+{
+    char sym[MAX_NAME + 64];
+    int len = snprintf(sym, sizeof(sym), "%s%s", base, suffix);
+    if (len < 0 || (size_t)len >= sizeof(sym)) {
+        PyErr_Format(PyExc_ValueError, "function name too long: '%s'", base);
+        return NULL;
+    }
+    (void)dlerror();
+    void *p = dlsym(lib->handle, sym);
+    if (p == NULL) {
+        if (required)
+            PyErr_Format(PyExc_LookupError,
+                         "symbol '%s' not found in %R (is '%s' a CasADi function generated "
+                         "into this library?)",
+                         sym, lib->path, base);
+        return NULL;
+    }
+    void_fn fp;
+    _Static_assert(sizeof(fp) == sizeof(p), "function and object pointers differ in size");
+    memcpy(&fp, &p, sizeof(fp));
+    return fp;
+}
+
+/* Tuple of argument names; CasADi's default i0/o0 names if name_in/out is absent. */
+static PyObject *
+read_names(name_fn getname, Py_ssize_t n, const char *dflt)
+{
+    PyObject *t = PyTuple_New(n);
+    if (t == NULL)
+        return NULL;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        const char *s = getname ? getname((casadi_int)i) : NULL;
+        PyObject *nm = s ? PyUnicode_FromString(s) : PyUnicode_FromFormat("%s%zd", dflt, i);
+        if (nm == NULL) {
+            Py_DECREF(t);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(t, i, nm);
+    }
+    return t;
+}
+
+/*
+ * Read sparsity patterns, fill nnz[] and the sizes/shapes tuples, and reject sparse
+ * arguments. Generated code abbreviates a dense pattern to [nrow, ncol, 1]; the canonical
+ * form is [nrow, ncol, colind[0..ncol], row[0..nnz-1]] with colind[0] == 0.
+ */
+static int
+read_sparsity(FunctionObject *f, sparsity_fn sp, Py_ssize_t n, Py_ssize_t *nnz,
+              PyObject *names, const char *kind, PyObject **sizes, PyObject **shapes)
+{
+    *sizes = PyTuple_New(n);
+    *shapes = PyTuple_New(n);
+    if (*sizes == NULL || *shapes == NULL)
+        return -1;
+    for (Py_ssize_t i = 0; i < n; i++) {
+        const casadi_int *s = sp((casadi_int)i);
+        if (s == NULL || s[0] < 0 || s[1] < 0) {
+            PyErr_Format(PyExc_ValueError, "%U: invalid sparsity pattern for %s '%U' (#%zd)",
+                         f->name, kind, PyTuple_GET_ITEM(names, i), i);
+            return -1;
+        }
+        casadi_int nrow = s[0], ncol = s[1], count;
+        if (s[2] == 1) { /* abbreviated dense pattern */
+            count = nrow * ncol;
+        }
+        else {
+            count = s[2 + ncol]; /* colind[ncol] */
+        }
+        if (count != nrow * ncol) {
+            PyErr_Format(PyExc_ValueError,
+                         "%U: %s '%U' (#%zd) is sparse (%lldx%lld with %lld nonzeros); "
+                         "only dense inputs and outputs are supported (densify it before "
+                         "code generation)",
+                         f->name, kind, PyTuple_GET_ITEM(names, i), i, nrow, ncol, count);
+            return -1;
+        }
+        if (count > PY_SSIZE_T_MAX / 8) {
+            PyErr_Format(PyExc_ValueError, "%U: %s '%U' (#%zd) is too large", f->name, kind,
+                         PyTuple_GET_ITEM(names, i), i);
+            return -1;
+        }
+        nnz[i] = (Py_ssize_t)count;
+        PyObject *sz = PyLong_FromLongLong(count);
+        PyObject *shape = Py_BuildValue("(LL)", nrow, ncol);
+        if (sz == NULL || shape == NULL) {
+            Py_XDECREF(sz);
+            Py_XDECREF(shape);
+            return -1;
+        }
+        PyTuple_SET_ITEM(*sizes, i, sz);
+        PyTuple_SET_ITEM(*shapes, i, shape);
+    }
+    return 0;
+}
+
+/* "name(a[3], b[1]) -> (c[2])" */
+static PyObject *
+make_signature(FunctionObject *f)
+{
+    PyObject *parts[2] = {NULL, NULL}, *result = NULL, *sep = NULL;
+    for (int o = 0; o < 2; o++) {
+        Py_ssize_t n = o ? f->n_out : f->n_in;
+        PyObject *names = o ? f->names_out : f->names_in;
+        parts[o] = PyList_New(n);
+        if (parts[o] == NULL)
+            goto done;
+        for (Py_ssize_t i = 0; i < n; i++) {
+            PyObject *s = PyUnicode_FromFormat("%U[%zd]", PyTuple_GET_ITEM(names, i),
+                                               f->nnz[o ? f->n_in + i : i]);
+            if (s == NULL)
+                goto done;
+            PyList_SET_ITEM(parts[o], i, s);
+        }
+    }
+    sep = PyUnicode_FromString(", ");
+    if (sep == NULL)
+        goto done;
+    PyObject *ins = PyUnicode_Join(sep, parts[0]);
+    PyObject *outs = ins ? PyUnicode_Join(sep, parts[1]) : NULL;
+    if (ins && outs)
+        result = PyUnicode_FromFormat("%U(%U) -> (%U)", f->name, ins, outs);
+    Py_XDECREF(ins);
+    Py_XDECREF(outs);
+done:
+    Py_XDECREF(parts[0]);
+    Py_XDECREF(parts[1]);
+    Py_XDECREF(sep);
+    return result;
+}
+
+static PyObject *
+Function_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
+{
+    static char *kwlist[] = {"library", "name", NULL};
+    LibraryObject *lib;
+    PyObject *name;
+    if (!PyArg_ParseTupleAndKeywords(args, kwds, "O!U:Function", kwlist, &LibraryType, &lib,
+                                     &name))
+        return NULL;
+    const char *cname = PyUnicode_AsUTF8(name);
+    if (cname == NULL)
+        return NULL;
+    if (strlen(cname) > MAX_NAME) {
+        PyErr_Format(PyExc_ValueError, "function name longer than %d bytes: %R", MAX_NAME,
+                     name);
+        return NULL;
+    }
+
+    FunctionObject *f = (FunctionObject *)type->tp_alloc(type, 0);
+    if (f == NULL)
+        return NULL;
+    f->vectorcall = Function_vectorcall;
+    Py_INCREF(lib);
+    f->lib = lib;
+    Py_INCREF(name);
+    f->name = name;
+
+    /* Required symbols */
+    count_fn n_in = NULL, n_out = NULL;
+    sparsity_fn sp_in = NULL, sp_out = NULL;
+    work_fn work = NULL;
+    if (!(f->eval = (eval_fn)lookup(lib, cname, "", 1)) ||
+        !(n_in = (count_fn)lookup(lib, cname, "_n_in", 1)) ||
+        !(n_out = (count_fn)lookup(lib, cname, "_n_out", 1)) ||
+        !(sp_in = (sparsity_fn)lookup(lib, cname, "_sparsity_in", 1)) ||
+        !(sp_out = (sparsity_fn)lookup(lib, cname, "_sparsity_out", 1)) ||
+        !(work = (work_fn)lookup(lib, cname, "_work", 1)))
+        goto fail;
+    /* Optional symbols (absent with some code-generation options) */
+    name_fn name_in = (name_fn)lookup(lib, cname, "_name_in", 0);
+    name_fn name_out = (name_fn)lookup(lib, cname, "_name_out", 0);
+    void_fn incref = (void_fn)lookup(lib, cname, "_incref", 0);
+    f->decref = (void_fn)lookup(lib, cname, "_decref", 0);
+    f->checkout = (checkout_fn)lookup(lib, cname, "_checkout", 0);
+    f->release = (release_fn)lookup(lib, cname, "_release", 0);
+    int_fn int_size = (int_fn)lookup(lib, cname, "_casadi_int_size", 0);
+    int_fn real_size = (int_fn)lookup(lib, cname, "_casadi_real_size", 0);
+
+    if ((int_size && int_size() != (int)sizeof(casadi_int)) ||
+        (real_size && real_size() != (int)sizeof(casadi_real))) {
+        PyErr_Format(PyExc_ValueError,
+                     "%U in %R was generated with casadi_int of %d bytes and casadi_real of "
+                     "%d bytes; this binding requires long long (8) and double (8)",
+                     name, lib->path, int_size ? int_size() : 8, real_size ? real_size() : 8);
+        goto fail;
+    }
+
+    casadi_int ni = n_in(), no = n_out();
+    if (ni < 0 || no < 0 || ni > MAX_ARGS || no > MAX_ARGS) {
+        PyErr_Format(PyExc_ValueError, "%U: implausible n_in=%lld / n_out=%lld", name, ni, no);
+        goto fail;
+    }
+    f->n_in = (Py_ssize_t)ni;
+    f->n_out = (Py_ssize_t)no;
+
+    if (work(&f->sz_arg, &f->sz_res, &f->sz_iw, &f->sz_w) != 0 || f->sz_arg < 0 ||
+        f->sz_res < 0 || f->sz_iw < 0 || f->sz_w < 0) {
+        PyErr_Format(PyExc_ValueError, "%U: %s_work() failed or returned negative sizes",
+                     name, cname);
+        goto fail;
+    }
+
+    f->nnz = PyMem_Calloc((size_t)(f->n_in + f->n_out) + 1, sizeof(Py_ssize_t));
+    if (f->nnz == NULL) {
+        PyErr_NoMemory();
+        goto fail;
+    }
+    f->names_in = read_names(name_in, f->n_in, "i");
+    if (f->names_in == NULL)
+        goto fail;
+    f->names_out = read_names(name_out, f->n_out, "o");
+    if (f->names_out == NULL)
+        goto fail;
+    if (read_sparsity(f, sp_in, f->n_in, f->nnz, f->names_in, "input", &f->sizes_in,
+                      &f->shapes_in) < 0 ||
+        read_sparsity(f, sp_out, f->n_out, f->nnz + f->n_in, f->names_out, "output",
+                      &f->sizes_out, &f->shapes_out) < 0)
+        goto fail;
+    f->signature = make_signature(f);
+    if (f->signature == NULL)
+        goto fail;
+    f->acc_ok = f->n_in == 3 && f->n_out == 2 && f->nnz[3] == f->nnz[0];
+
+    if (incref) {
+        incref();
+        f->increfed = 1;
+    }
+    if (work_init(f, &f->work) < 0)
+        goto fail;
+    return (PyObject *)f;
+
+fail:
+    Py_DECREF(f);
+    return NULL;
+}
+
+static void
+Function_dealloc(FunctionObject *f)
+{
+    work_free(f, &f->work); /* releases the checked-out memory */
+    if (f->increfed && f->decref)
+        f->decref();
+    PyMem_Free(f->nnz);
+    Py_XDECREF(f->name);
+    Py_XDECREF(f->signature);
+    Py_XDECREF(f->names_in);
+    Py_XDECREF(f->names_out);
+    Py_XDECREF(f->sizes_in);
+    Py_XDECREF(f->sizes_out);
+    Py_XDECREF(f->shapes_in);
+    Py_XDECREF(f->shapes_out);
+    Py_XDECREF(f->lib); /* last: may dlclose the code called above */
+    Py_TYPE(f)->tp_free((PyObject *)f);
+}
+
+static PyObject *
+Function_repr(FunctionObject *f)
+{
+    return PyUnicode_FromFormat("<Function %U>", f->signature);
+}
+
+static PyMemberDef Function_members[] = {
+    {"name", T_OBJECT_EX, offsetof(FunctionObject, name), READONLY, "Function name (str)."},
+    {"library", T_OBJECT_EX, offsetof(FunctionObject, lib), READONLY,
+     "The Library the function was resolved from."},
+    {"signature", T_OBJECT_EX, offsetof(FunctionObject, signature), READONLY,
+     "Signature with element counts, e.g. 'f(x[3], p[1]) -> (y[2])'."},
+    {"n_in", T_PYSSIZET, offsetof(FunctionObject, n_in), READONLY, "Number of inputs."},
+    {"n_out", T_PYSSIZET, offsetof(FunctionObject, n_out), READONLY, "Number of outputs."},
+    {"names_in", T_OBJECT_EX, offsetof(FunctionObject, names_in), READONLY,
+     "Input names (tuple of str)."},
+    {"names_out", T_OBJECT_EX, offsetof(FunctionObject, names_out), READONLY,
+     "Output names (tuple of str)."},
+    {"sizes_in", T_OBJECT_EX, offsetof(FunctionObject, sizes_in), READONLY,
+     "Number of float64 elements of each input (tuple of int)."},
+    {"sizes_out", T_OBJECT_EX, offsetof(FunctionObject, sizes_out), READONLY,
+     "Number of float64 elements of each output (tuple of int)."},
+    {"shapes_in", T_OBJECT_EX, offsetof(FunctionObject, shapes_in), READONLY,
+     "(nrow, ncol) of each input; data is column-major (tuple of tuples)."},
+    {"shapes_out", T_OBJECT_EX, offsetof(FunctionObject, shapes_out), READONLY,
+     "(nrow, ncol) of each output; data is column-major (tuple of tuples)."},
+    {NULL, 0, 0, 0, NULL},
+};
+
+PyDoc_STRVAR(time_calls_doc,
+"time_calls(n_inner, n_repeat, *inputs, *outputs) -> list[float]\n"
+"--\n\n"
+"Bind the arguments as for a call, then time n_repeat batches of n_inner\n"
+"back-to-back evaluations in a C loop (clock_gettime(CLOCK_MONOTONIC), GIL\n"
+"released). Returns nanoseconds per evaluation for each batch.");
+
+PyDoc_STRVAR(accumulate_doc,
+"accumulate(x, u_seq, p, y_seq) -> None\n"
+"--\n\n"
+"Roll out x_{k+1}, y_k = f(x_k, u_k, p) for k = 0..N-1 in C (GIL released).\n\n"
+"Requires 3 inputs (x[nx], u[nu], p[np]) and 2 outputs (x_next[nx], y[ny]).\n"
+"x: writable float64 buffer of nx: initial state in, final state out.\n"
+"u_seq: float64 buffer of N*nu elements (N >= 1), row k = u_k.\n"
+"p: float64 buffer of np elements (or a Python float if np == 1).\n"
+"y_seq: writable float64 buffer of N*ny elements (row k = y_k), or None.\n"
+"x, u_seq and p must be finite on entry. If the function fails at step k,\n"
+"EvalError is raised and x holds x_k.");
+
+static PyMethodDef Function_methods[] = {
+    {"time_calls", (PyCFunction)(void (*)(void))Function_time_calls,
+     METH_FASTCALL | METH_KEYWORDS, time_calls_doc},
+    {"accumulate", (PyCFunction)(void (*)(void))Function_accumulate,
+     METH_FASTCALL | METH_KEYWORDS, accumulate_doc},
+    {NULL, NULL, 0, NULL},
+};
+
+PyDoc_STRVAR(Function_doc,
+"Function(library, name)\n"
+"--\n\n"
+"A CasADi-generated function resolved from a Library by name.\n\n"
+"Call as f(*inputs, *outputs) with exactly n_in + n_out positional arguments:\n"
+"each input a C-contiguous float64 buffer with sizes_in[i] elements (any ndim),\n"
+"or a Python float/int when sizes_in[i] == 1; each output a writable C-contiguous\n"
+"float64 buffer with sizes_out[i] elements, or None to skip it. Outputs are\n"
+"written in place and must not share memory with inputs or other outputs.\n"
+"Matrices are flat column-major nonzero vectors (CasADi's layout); the binding\n"
+"only checks element counts. Inputs must be finite (ValueError otherwise). A\n"
+"nonzero return code raises EvalError. Returns None.");
+
+static PyTypeObject FunctionType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "pm2dof._cbind.Function",
+    .tp_basicsize = sizeof(FunctionObject),
+    .tp_dealloc = (destructor)Function_dealloc,
+    .tp_vectorcall_offset = offsetof(FunctionObject, vectorcall),
+    .tp_repr = (reprfunc)Function_repr,
+    .tp_call = PyVectorcall_Call,
+    .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_HAVE_VECTORCALL,
+    .tp_doc = Function_doc,
+    .tp_methods = Function_methods,
+    .tp_members = Function_members,
+    .tp_new = Function_new,
+};
+
+/* ------------------------------------------------------------------------------------ */
+/* Module                                                                               */
+/* ------------------------------------------------------------------------------------ */
+
+PyDoc_STRVAR(module_doc,
+"Near-zero-overhead calls into CasADi-generated C functions loaded with dlopen.\n\n"
+"Library(path) loads a shared library; Function(library, name) resolves one\n"
+"generated function; EvalError is raised when the function returns nonzero.");
+
+static struct PyModuleDef cbind_module = {
+    PyModuleDef_HEAD_INIT,
+    .m_name = "pm2dof._cbind",
+    .m_doc = module_doc,
+    .m_size = -1,
+};
+
+PyMODINIT_FUNC
+PyInit__cbind(void)
+{
+    if (PyType_Ready(&LibraryType) < 0 || PyType_Ready(&FunctionType) < 0)
+        return NULL;
+    PyObject *m = PyModule_Create(&cbind_module);
+    if (m == NULL)
+        return NULL;
+    EvalError = PyErr_NewExceptionWithDoc(
+        "pm2dof._cbind.EvalError",
+        "A CasADi-generated function returned a nonzero error code.", PyExc_RuntimeError,
+        NULL);
+    if (EvalError == NULL || PyModule_AddObjectRef(m, "EvalError", EvalError) < 0 ||
+        PyModule_AddObjectRef(m, "Library", (PyObject *)&LibraryType) < 0 ||
+        PyModule_AddObjectRef(m, "Function", (PyObject *)&FunctionType) < 0) {
+        Py_DECREF(m);
+        return NULL;
+    }
+    return m;
+}

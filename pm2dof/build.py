@@ -1,0 +1,156 @@
+# pm2dof.build: compile one CasADi-generated C file into a shared library for pm2dof._cbind.
+"""Compile a CasADi-generated C file into a shared library.
+
+The library is meant to be loaded with :class:`pm2dof._cbind.Library`. Compilation
+writes to a temporary file next to the target and renames it into place, so a
+process that loads the target path never sees a half-written library.
+"""
+
+from __future__ import annotations
+
+import os
+import pathlib
+import shlex
+import subprocess
+import sysconfig
+import tempfile
+from collections.abc import Iterable
+
+__all__ = ["compile_library", "BuildError"]
+
+#: Compiler flags used by :func:`compile_library`, in order:
+#:
+#: ``-O3``
+#:     Full optimisation of the straight-line code CasADi generates.
+#: ``-march=native``
+#:     Use every instruction-set extension of the building machine (AVX2, ...).
+#:     The library is therefore only meant to run on the machine that built it.
+#: ``-ffp-contract=off``
+#:     Do not fuse ``a*b + c`` into FMA instructions (GCC fuses by default in GNU C
+#:     mode once ``-march=native`` enables FMA). Fusing changes rounding, so results
+#:     would no longer agree bit for bit with CasADi's own evaluation.
+#: ``-fPIC``
+#:     Position-independent code, required for a shared library.
+#: ``-shared``
+#:     Produce a shared library that ``dlopen`` can load.
+#: ``-fno-math-errno``
+#:     Math functions need not set ``errno``, so ``sqrt`` and friends compile to
+#:     single instructions; results are unchanged (IEEE semantics are kept).
+#:
+#: ``-ffast-math`` is deliberately absent: it lets the compiler assume there are no
+#: NaNs or infinities (breaking ``isfinite`` checks) and reassociate arithmetic
+#: (breaking agreement with CasADi's reference evaluation).
+FLAGS: tuple[str, ...] = (
+    "-O3",
+    "-march=native",
+    "-ffp-contract=off",
+    "-fPIC",
+    "-shared",
+    "-fno-math-errno",
+)
+
+#: Libraries linked after the source file: the generated code calls libm.
+LIBS: tuple[str, ...] = ("-lm",)
+
+
+class BuildError(RuntimeError):
+    """The C compiler failed; the message holds the full command and its stderr."""
+
+
+def _compiler() -> list[str]:
+    """Return the C compiler command as an argument list.
+
+    Returns
+    -------
+    list of str
+        ``$CC`` if set and non-empty, else Python's configured ``CC``
+        (``sysconfig.get_config_var("CC")``), else ``cc``; split with
+        :func:`shlex.split` so values such as ``"gcc -pthread"`` work.
+    """
+    cc = os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc"
+    return shlex.split(cc) or ["cc"]
+
+
+def compile_library(
+    c_path: str | os.PathLike[str],
+    out_path: str | os.PathLike[str],
+    *,
+    extra_flags: Iterable[str] = (),
+) -> pathlib.Path:
+    """Compile one C file into a shared library, atomically replacing ``out_path``.
+
+    Parameters
+    ----------
+    c_path : str or os.PathLike
+        The C source, typically written by ``casadi.CodeGenerator``.
+    out_path : str or os.PathLike
+        Where the shared library goes (e.g. ``.../model.so``). Its directory is
+        created if needed.
+    extra_flags : iterable of str, optional
+        Further compiler arguments, placed after :data:`FLAGS`.
+
+    Returns
+    -------
+    pathlib.Path
+        The absolute path of the library, suitable for
+        :class:`pm2dof._cbind.Library`.
+
+    Raises
+    ------
+    FileNotFoundError
+        If ``c_path`` does not exist.
+    BuildError
+        If the compiler cannot be run or exits with a non-zero status; the message
+        contains the full command line and the compiler's stderr.
+
+    Notes
+    -----
+    The compiler is ``$CC``, else ``sysconfig.get_config_var("CC")``, else ``cc``.
+    The command is ``CC FLAGS extra_flags -o TMP c_path -lm``, where ``TMP`` is a
+    fresh file in the directory of ``out_path`` that is then renamed onto
+    ``out_path`` with :func:`os.replace` (atomic on POSIX), so a concurrently
+    running process sees either the old or the new library, never a partial one.
+
+    A process that already has ``out_path`` open through ``dlopen`` keeps the old
+    code: ``dlopen`` hands back the loaded library for a path that is still open.
+    """
+    c_path = pathlib.Path(c_path)
+    out_path = pathlib.Path(out_path).absolute()
+    if not c_path.is_file():
+        raise FileNotFoundError(f"C source not found: {c_path}")
+    out_path.parent.mkdir(parents=True, exist_ok=True)
+
+    fd, tmp_name = tempfile.mkstemp(
+        prefix=f".{out_path.name}.", suffix=".tmp", dir=out_path.parent
+    )
+    os.close(fd)
+    tmp = pathlib.Path(tmp_name)
+    cmd = [
+        *_compiler(),
+        *FLAGS,
+        *[str(f) for f in extra_flags],
+        "-o",
+        str(tmp),
+        str(c_path),
+        *LIBS,
+    ]
+    try:
+        try:
+            proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
+        except OSError as exc:
+            raise BuildError(
+                f"cannot run the C compiler: {exc}\ncommand: {shlex.join(cmd)}"
+            ) from exc
+        if proc.returncode != 0:
+            raise BuildError(
+                f"C compiler failed with exit status {proc.returncode}\n"
+                f"command: {shlex.join(cmd)}\n"
+                f"stderr:\n{proc.stderr.strip()}"
+            )
+        # mkstemp creates the file with mode 0600; a library is normally 0755.
+        os.chmod(tmp, 0o755)
+        os.replace(tmp, out_path)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
+    return out_path

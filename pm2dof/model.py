@@ -1,0 +1,287 @@
+# The runtime Model: a frozen model file plus its compiled generated C, bound through pm2dof._cbind.
+"""The runtime model of an n-leg planar RR parallel manipulator.
+
+:func:`load_model` reads a model file, checks that ``generated/<name>/`` was derived from it
+(``manifest.json``) and binds the compiled functions. Every method is one call into the
+generated C. Inputs are float arrays of the documented length (lists and other dtypes are
+converted, on a slower path); outputs are new arrays unless ``out=`` is given, in which case
+the result is written there (no allocation) and returned.
+"""
+import array
+import json
+from pathlib import Path
+
+import numpy as np
+
+from . import _cbind
+from .errors import SingularityError, StaleGeneratedCodeError, WorkspaceError
+from .model_file import read_model_file
+
+__all__ = ["Model", "load_model", "DEFAULT_MODEL", "GENERATED"]
+
+
+REPO = Path(__file__).resolve().parent.parent
+DEFAULT_MODEL = REPO / "models" / "shang2010.toml"
+GENERATED = REPO / "generated"
+
+_FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "W", "S", "Wdot", "M", "C", "Me", "Ce",
+              "StF", "Y", "forward_dynamics")
+
+
+def _stale(msg):
+    raise StaleGeneratedCodeError(f"{msg}. Run `make derive` (or `make derive MODEL=<file>`).")
+
+
+def _check_generated(spec, gen_dir):
+    """Refuse generated code that is missing or was derived from another formulation."""
+    manifest_path = gen_dir / "manifest.json"
+    if not manifest_path.is_file():
+        _stale(f"no generated code for model {spec.name!r}: {manifest_path} is missing")
+    manifest = json.loads(manifest_path.read_text())
+    if manifest.get("formulation_sha256") != spec.formulation_sha256:
+        _stale(f"{gen_dir} was generated from a different formulation of model {spec.name!r} "
+               f"than {spec.path} (hash {manifest.get('formulation_sha256', '?')[:12]} != "
+               f"{spec.formulation_sha256[:12]}): legs, geometry or friction model changed")
+    c_file = gen_dir / f"{spec.name}.c"
+    lib = gen_dir / f"lib{spec.name}.so"
+    if not c_file.is_file():
+        _stale(f"{c_file} is missing")
+    if not lib.is_file():
+        _stale(f"the compiled library {lib} is missing (it is built by `make install`/`make derive`)")
+    if lib.stat().st_mtime < c_file.stat().st_mtime:
+        _stale(f"{lib} is older than {c_file}")
+    return manifest, lib
+
+
+class Model:
+    """A planar RR parallel manipulator with its compiled model functions. Immutable.
+
+    Build with :func:`load_model`. Attributes: ``name``, ``spec`` (the validated model file),
+    ``n_legs``, ``bases`` (n, 2) m, ``param_names`` (5n,), ``theta_nominal`` (5n,) (Tables
+    1-2), ``singularity_threshold``, ``manifest``, ``library`` (path of the compiled C).
+    Angles in rad, lengths in m; q = [qa_1..qa_n, qb_1..qb_n].
+
+    A Model holds one small scratch buffer, so one Model must not be called from two threads
+    at once; load one Model per thread.
+    """
+
+    __slots__ = ("spec", "manifest", "library", "_lib", "_f", "_sing_thr", "_sing", "__weakref__")
+
+    def __init__(self, spec, gen_dir=None):
+        gen_dir = Path(gen_dir) if gen_dir is not None else GENERATED / spec.name
+        manifest, lib_path = _check_generated(spec, gen_dir)
+        lib = _cbind.Library(str(lib_path))
+        funcs = {}
+        for short in _FUNCTIONS:
+            f = _cbind.Function(lib, f"{spec.name}_{short}")
+            want = manifest["functions"].get(f.name)
+            have = {"inputs": [[a, k] for a, k in zip(f.names_in, f.sizes_in)],
+                    "outputs": [[a, k] for a, k in zip(f.names_out, f.sizes_out)]}
+            if want != have:
+                _stale(f"{lib_path}: {f.name} has signature {have}, manifest says {want}")
+            funcs[short] = f
+        for k, v in (("spec", spec), ("manifest", manifest), ("library", str(lib_path)),
+                     ("_lib", lib), ("_f", funcs),
+                     ("_sing_thr", spec.limits["singularity_threshold"]),
+                     ("_sing", array.array("d", [0.0]))):  # array: ~3x faster [0] than numpy
+            object.__setattr__(self, k, v)
+
+    def __setattr__(self, key, value):
+        raise AttributeError(f"Model is immutable (tried to set {key!r})")
+
+    def __repr__(self):
+        return (f"<Model {self.name!r}: {self.n_legs} legs, {len(self.param_names)} parameters, "
+                f"friction {self.spec.friction!r}>")
+
+    # --- description ---------------------------------------------------------------------
+    name = property(lambda self: self.spec.name)
+    n_legs = property(lambda self: self.spec.n_legs, doc="number of legs (= actuators)")
+    param_names = property(lambda self: self.spec.param_names, doc="names of theta, in order")
+    theta_nominal = property(lambda self: self.spec.theta_nominal, doc="(5n,) Tables 1-2")
+    singularity_threshold = property(lambda self: self._sing_thr,
+                                     doc="smallest allowed min_i |sin(qb_i - qa_i)|")
+
+    @property
+    def bases(self):
+        """(n, 2) base positions A_i, m."""
+        b = self.spec.bases
+        b.setflags(write=False)
+        return b
+
+    def function(self, short_name):
+        """The bound generated function ``<name>_<short_name>`` (for benchmarks and tools)."""
+        return self._f[short_name]
+
+    # --- argument handling ---------------------------------------------------------------
+    # Fast path: the arguments go straight to the C binding, which checks the dtype (float64),
+    # contiguity, element count and finiteness of every one. Only if it rejects an argument
+    # are the arguments converted (lists, ints, float32 ...) and the call retried.
+    def _coerce(self, f, args):
+        out = []
+        for name, size, x in zip(f.names_in, f.sizes_in, args):
+            try:
+                a = np.ascontiguousarray(x, dtype=np.float64)
+            except (TypeError, ValueError) as exc:
+                raise TypeError(f"{name} must be an array of {size} numbers, got "
+                                f"{type(x).__name__}: {exc}") from None
+            if a.size != size or a.ndim > 2:
+                raise ValueError(f"{name} must have shape ({size},), got shape {a.shape}")
+            out.append(a)
+        return out
+
+    def _eval(self, short, shape, out, *args):
+        """Evaluate ``<name>_<short>(*args) -> out [, sing]``; raise on a singular pose."""
+        if out is None:
+            out = np.empty(shape)
+        elif type(out) is not np.ndarray or out.shape != shape:
+            raise ValueError(f"out must be a C-contiguous float64 array of shape {shape}, got "
+                             f"{type(out).__name__} {getattr(out, 'shape', '')}")
+        f = self._f[short]
+        sing = self._sing if f.n_out == 2 else None
+        try:
+            f(*args, out, sing) if sing is not None else f(*args, out)
+        except (TypeError, ValueError):
+            args = self._coerce(f, args)
+            f(*args, out, sing) if sing is not None else f(*args, out)
+        if sing is not None and not sing[0] >= self._sing_thr:
+            if sing[0] != sing[0] and short == "forward_dynamics":
+                self.ik(args[0])  # NaN measure: xe is out of reach; ik names the leg
+            raise SingularityError(
+                f"{short}: the pose is too close to a singularity: min_i |sin(qb_i - qa_i)| = "
+                f"{sing[0]:.4g} < threshold {self._sing_thr} (limits.singularity_threshold)")
+        return out
+
+    # --- kinematics ----------------------------------------------------------------------
+    def ik(self, xe, out=None):
+        """Inverse kinematics for the configured assembly modes.
+
+        Parameters
+        ----------
+        xe : array_like (2,)
+            End-effector position [x, y], m.
+
+        Returns
+        -------
+        q : ndarray (2n,)
+            [qa_1..qa_n, qb_1..qb_n], absolute angles, rad.
+
+        Raises
+        ------
+        WorkspaceError
+            If a leg cannot reach ``xe`` (names the leg and its distance).
+        """
+        out = self._eval("ik", (2 * self.n_legs,), out, xe)
+        if not np.isfinite(out).all():
+            xe = np.asarray(xe, dtype=float).ravel()
+            for i, leg in enumerate(self.spec.legs):
+                dist = float(np.hypot(*(xe - leg.base)))
+                lo, hi = abs(leg.la - leg.lb), leg.la + leg.lb
+                if not lo <= dist <= hi:
+                    raise WorkspaceError(
+                        f"xe = {xe.tolist()} is out of reach of leg {i + 1}: distance from its "
+                        f"base {dist:.6g} m is outside [{lo:.6g}, {hi:.6g}] m")
+            raise WorkspaceError(f"inverse kinematics failed at xe = {xe.tolist()}")
+        return out
+
+    def fk(self, qa, out=None):
+        """Forward kinematics from the measured active angles ``qa`` (n,), rad -> xe (2,), m."""
+        out = self._eval("fk", (2,), out, qa)
+        if not np.isfinite(out).all():
+            raise WorkspaceError(f"no assembly of the legs has active angles qa = "
+                                 f"{np.asarray(qa).tolist()}")
+        return out
+
+    def H(self, q, out=None):
+        """Loop-closure constraints H(q) (2(n-1),), m (eq. 5)."""
+        return self._eval("H", (2 * (self.n_legs - 1),), out, q)
+
+    def A(self, q, out=None):
+        """Constraint Jacobian A = dH/dq (2(n-1), 2n) (eq. 6)."""
+        n = self.n_legs
+        return self._eval("A", (2 * (n - 1), 2 * n), out, q)
+
+    def singularity(self, q, out=None):
+        """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0."""
+        return self._eval("singularity", (self.n_legs,), out, q)
+
+    def W(self, q, out=None):
+        """W (2n, 2) with qd = W xed (eq. 7). Raises SingularityError near singular poses."""
+        return self._eval("W", (2 * self.n_legs, 2), out, q)
+
+    def S(self, q, out=None):
+        """S (n, 2), the actuated rows of W: qd_a = S xed (eq. 8)."""
+        return self._eval("S", (self.n_legs, 2), out, q)
+
+    def Wdot(self, q, xed, out=None):
+        """dW/dt (2n, 2) along qd = W xed, with xed (2,) in m/s (eq. 9), 1/s per m."""
+        return self._eval("Wdot", (2 * self.n_legs, 2), out, q, xed)
+
+    # --- dynamics ------------------------------------------------------------------------
+    def M(self, q, theta, out=None):
+        """Open-chain joint-space inertia M (2n, 2n), kg*m^2 (eq. 3)."""
+        n = self.n_legs
+        return self._eval("M", (2 * n, 2 * n), out, q, theta)
+
+    def C(self, q, qd, theta, out=None):
+        """Open-chain Coriolis/centrifugal matrix C (2n, 2n) at joint velocity qd (eq. 3)."""
+        n = self.n_legs
+        return self._eval("C", (2 * n, 2 * n), out, q, qd, theta)
+
+    def Me(self, q, theta, out=None):
+        """Task-space inertia Me = W^T M W (2, 2), kg (eq. 12)."""
+        return self._eval("Me", (2, 2), out, q, theta)
+
+    def Ce(self, q, xed, theta, out=None):
+        """Task-space Coriolis matrix Ce = W^T (M Wdot + C W) (2, 2), kg/s (eq. 12)."""
+        return self._eval("Ce", (2, 2), out, q, xed, theta)
+
+    def StF(self, q, xed, theta, out=None):
+        """Friction in task space S^T f_a(S xed) (2,), N (eqs. 2, 10)."""
+        return self._eval("StF", (2,), out, q, xed, theta)
+
+    def Y(self, q, xed, xrd, xrdd, out=None):
+        """Regressor Y (2, 5n): Y theta = Me xrdd + Ce(q, W xed) xrd + S^T f_a(S xed) (eq. 13).
+
+        Columns follow :attr:`param_names`; friction uses sign(0) = +1.
+        """
+        return self._eval("Y", (2, len(self.param_names)), out, q, xed, xrd, xrdd)
+
+    def forward_dynamics(self, xe, xed, tau_a, theta, out=None):
+        """Task-space acceleration xedd (2,), m/s^2, from eq. 12 with eq. 2 friction.
+
+        Solves Me xedd = S^T tau_a - Ce xed - S^T f_a at the pose ``xe`` (2,) m, velocity
+        ``xed`` (2,) m/s, actuator torques ``tau_a`` (n,) N*m and parameters ``theta``.
+        """
+        return self._eval("forward_dynamics", (2,), out, xe, xed, tau_a, theta)
+
+
+def load_model(path=None):
+    """Load a model file and bind its generated, compiled C.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path, optional
+        A model file; default ``models/shang2010.toml``, the paper's robot.
+
+    Returns
+    -------
+    Model
+
+    Raises
+    ------
+    ModelFileError
+        The model file is unreadable or invalid.
+    StaleGeneratedCodeError
+        ``generated/<name>/`` is missing or was derived from another formulation.
+
+    Examples
+    --------
+    >>> import pm2dof
+    >>> m = pm2dof.load_model()
+    >>> m.n_legs, m.param_names[:3]
+    (3, ('alpha1', 'alpha2', 'alpha3'))
+    >>> q = m.ik([0.25, 0.26])
+    >>> bool(abs(m.fk(q[:3]) - [0.25, 0.26]).max() < 1e-12)
+    True
+    """
+    return Model(read_model_file(DEFAULT_MODEL if path is None else path))

@@ -1,0 +1,235 @@
+# Model files (TOML): read, validate, and split into the derivation's formulation and run-time data.
+"""Read and validate a pm2dof model file.
+
+A model file describes one planar parallel manipulator made of RR legs (``[[legs]]``), its
+friction model, its nominal parameters (the paper's Tables 1-2) and run-time data (limits,
+gains, plant truth, trajectories). Only ``[model]`` and ``[[legs]]`` enter the generated C;
+their canonical hash (:attr:`ModelSpec.formulation_sha256`) guards generated code against
+staleness. This module is pure Python and is shared by ``derive/`` and the runtime.
+"""
+import hashlib
+import json
+import math
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .errors import ModelFileError
+
+__all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS"]
+
+# friction model -> its per-leg parameters after the inertial ones (eq. 2 and extensions)
+FRICTION_MODELS = {
+    "coulomb_viscous": ("fv", "fc"),                 # eq. 2, sign(0) = +1
+    "coulomb_viscous_stribeck": ("fv", "fc", "fs"),  # + fs exp(-(v/vs)^2) sign(v)
+    "smooth_sign": ("fv", "fc"),                     # sign(v) -> tanh(v/eps)
+}
+FRICTION_CONSTANTS = {  # formulation constants each friction model needs in [model]
+    "coulomb_viscous": (),
+    "coulomb_viscous_stribeck": ("stribeck_velocity",),
+    "smooth_sign": ("sign_smoothing_velocity",),
+}
+INERTIAL = ("alpha", "beta", "gamma")
+ELBOWS = {"left": 1, "right": -1}
+FK_BRANCHES = {"left": 1, "right": -1}
+
+_MODEL_KEYS = {"name", "description", "friction", "fk_branch", "stribeck_velocity",
+               "sign_smoothing_velocity"}
+_LEG_KEYS = {"base", "la", "lb", "elbow"}
+_TOP_KEYS = {"model", "legs", "nominal", "limits", "sensing", "gains", "plant", "trajectories"}
+
+
+@dataclass(frozen=True)
+class Leg:
+    """One RR leg: base ``A`` (2,) in m, link lengths ``la``, ``lb`` in m, elbow +1 left / -1 right."""
+    base: tuple
+    la: float
+    lb: float
+    elbow: int
+
+
+@dataclass(frozen=True)
+class ModelSpec:
+    """A validated model file. Immutable; arrays are read-only copies."""
+    path: str
+    name: str
+    description: str
+    friction: str
+    friction_constants: dict
+    fk_branch: int
+    legs: tuple
+    param_names: tuple
+    theta_nominal: np.ndarray
+    limits: dict
+    sections: dict = field(repr=False)      # run-time sections, as read: sensing, gains, ...
+    file_sha256: str = ""
+    formulation_sha256: str = ""
+
+    @property
+    def n_legs(self):
+        return len(self.legs)
+
+    @property
+    def bases(self):
+        return np.array([leg.base for leg in self.legs], dtype=float)
+
+    def formulation(self):
+        """The part of the model that enters the generated code, as canonical JSON-able data."""
+        return {
+            "name": self.name,
+            "friction": self.friction,
+            "friction_constants": dict(sorted(self.friction_constants.items())),
+            "fk_branch": self.fk_branch,
+            "legs": [{"base": list(l.base), "la": l.la, "lb": l.lb, "elbow": l.elbow}
+                     for l in self.legs],
+        }
+
+
+def _fail(path, key, reason):
+    raise ModelFileError(f"{path}: [{key}] {reason}")
+
+
+def _number(path, key, value, *, positive=False, nonnegative=False):
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        _fail(path, key, f"must be a number, got {type(value).__name__} {value!r}")
+    value = float(value)
+    if not math.isfinite(value):
+        _fail(path, key, f"must be finite, got {value}")
+    if positive and value <= 0:
+        _fail(path, key, f"must be > 0, got {value}")
+    if nonnegative and value < 0:
+        _fail(path, key, f"must be >= 0, got {value}")
+    return value
+
+
+def _table(path, doc, key, required=True):
+    value = doc.get(key)
+    if value is None:
+        if required:
+            _fail(path, key, "missing section")
+        return {}
+    if not isinstance(value, dict):
+        _fail(path, key, f"must be a table, got {type(value).__name__}")
+    return value
+
+
+def _check_keys(path, where, table, allowed, required):
+    unknown = sorted(set(table) - set(allowed))
+    if unknown:
+        _fail(path, where, f"unknown key(s) {unknown}; allowed: {sorted(allowed)}")
+    missing = sorted(set(required) - set(table))
+    if missing:
+        _fail(path, where, f"missing key(s) {missing}")
+
+
+def _read_leg(path, i, leg):
+    where = f"legs[{i}]"
+    if not isinstance(leg, dict):
+        _fail(path, where, "each [[legs]] entry must be a table")
+    _check_keys(path, where, leg, _LEG_KEYS, _LEG_KEYS)
+    base = leg["base"]
+    if not isinstance(base, list) or len(base) != 2:
+        _fail(path, f"{where}.base", f"must be [x, y] in m, got {base!r}")
+    base = tuple(_number(path, f"{where}.base", v) for v in base)
+    la = _number(path, f"{where}.la", leg["la"], positive=True)
+    lb = _number(path, f"{where}.lb", leg["lb"], positive=True)
+    if leg["elbow"] not in ELBOWS:
+        _fail(path, f"{where}.elbow", f"must be one of {sorted(ELBOWS)}, got {leg['elbow']!r}")
+    return Leg(base=base, la=la, lb=lb, elbow=ELBOWS[leg["elbow"]])
+
+
+def _read_nominal(path, nominal, n, friction):
+    names = INERTIAL + FRICTION_MODELS[friction]
+    _check_keys(path, "nominal", nominal, names, names)
+    values = {}
+    for key in names:
+        vec = nominal[key]
+        if not isinstance(vec, list) or len(vec) != n:
+            _fail(path, f"nominal.{key}", f"must be a list of {n} numbers (one per leg), got {vec!r}")
+        values[key] = [_number(path, f"nominal.{key}[{i}]", v, positive=key in INERTIAL,
+                               nonnegative=key not in INERTIAL) for i, v in enumerate(vec)]
+    for i in range(n):  # M_i positive definite: alpha, gamma > 0 and beta^2 < alpha gamma
+        a, b, g = values["alpha"][i], values["beta"][i], values["gamma"][i]
+        if b * b >= a * g:
+            _fail(path, f"nominal.beta[{i}]",
+                  f"leg {i + 1} inertia is not positive definite: beta^2 = {b * b:.6g} >= "
+                  f"alpha*gamma = {a * g:.6g}")
+    param_names = tuple(f"{key}{i + 1}" for key in names for i in range(n))
+    theta = np.array([values[key][i] for key in names for i in range(n)], dtype=float)
+    theta.setflags(write=False)
+    return param_names, theta
+
+
+def read_model_file(path):
+    """Read and validate a model file.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        A TOML model file (see ``models/shang2010.toml`` for the documented format).
+
+    Returns
+    -------
+    ModelSpec
+
+    Raises
+    ------
+    ModelFileError
+        Naming the file, the key and the reason, for unreadable content, missing or unknown
+        keys, wrong types and non-physical values.
+    """
+    path = Path(path)
+    try:
+        raw = path.read_bytes()
+    except OSError as exc:
+        raise ModelFileError(f"{path}: cannot read model file: {exc.strerror or exc}") from None
+    try:
+        doc = tomllib.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError as exc:
+        raise ModelFileError(f"{path}: not a text (UTF-8) file: {exc.reason} at byte {exc.start}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise ModelFileError(f"{path}: not valid TOML: {exc}") from None
+    unknown = sorted(set(doc) - _TOP_KEYS)
+    if unknown:
+        _fail(path, "<top>", f"unknown section(s) {unknown}; allowed: {sorted(_TOP_KEYS)}")
+    model = _table(path, doc, "model")
+    _check_keys(path, "model", model, _MODEL_KEYS, {"name", "friction"})
+    name = model["name"]
+    if not isinstance(name, str) or not name.isidentifier() or not name.isascii():
+        _fail(path, "model.name", f"must be an ASCII identifier (it prefixes C symbols), got {name!r}")
+    friction = model["friction"]
+    if friction not in FRICTION_MODELS:
+        _fail(path, "model.friction", f"must be one of {sorted(FRICTION_MODELS)}, got {friction!r}")
+    constants = {}
+    for key in FRICTION_CONSTANTS[friction]:
+        if key not in model:
+            _fail(path, f"model.{key}", f"required by friction = {friction!r}")
+        constants[key] = _number(path, f"model.{key}", model[key], positive=True)
+    legs_raw = doc.get("legs")
+    if not isinstance(legs_raw, list) or len(legs_raw) < 2:
+        _fail(path, "legs", "needs at least two [[legs]] tables (a planar 2-DOF mechanism)")
+    legs = tuple(_read_leg(path, i, leg) for i, leg in enumerate(legs_raw))
+    fk_branch = model.get("fk_branch", "left")
+    if fk_branch not in FK_BRANCHES:
+        _fail(path, "model.fk_branch", f"must be one of {sorted(FK_BRANCHES)}, got {fk_branch!r}")
+    if len(legs) == 2 and "fk_branch" not in model:
+        _fail(path, "model.fk_branch", "a two-leg mechanism must choose its forward-kinematics "
+                                       "branch ('left' or 'right' of the line B1 -> B2)")
+    param_names, theta = _read_nominal(path, _table(path, doc, "nominal"), len(legs), friction)
+    limits = _table(path, doc, "limits")
+    _check_keys(path, "limits", limits, {"singularity_threshold"}, {"singularity_threshold"})
+    thr = _number(path, "limits.singularity_threshold", limits["singularity_threshold"], positive=True)
+    if thr >= 1:
+        _fail(path, "limits.singularity_threshold", f"is a bound on |sin|, must be < 1, got {thr}")
+    spec = ModelSpec(
+        path=str(path), name=name, description=str(model.get("description", "")),
+        friction=friction, friction_constants=constants, fk_branch=FK_BRANCHES[fk_branch],
+        legs=legs, param_names=param_names, theta_nominal=theta,
+        limits={"singularity_threshold": thr},
+        sections={k: doc[k] for k in ("sensing", "gains", "plant", "trajectories") if k in doc},
+        file_sha256=hashlib.sha256(raw).hexdigest())
+    formulation = json.dumps(spec.formulation(), sort_keys=True, separators=(",", ":"))
+    object.__setattr__(spec, "formulation_sha256", hashlib.sha256(formulation.encode()).hexdigest())
+    return spec

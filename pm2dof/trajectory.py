@@ -1,0 +1,251 @@
+# Desired task-space motion: time-optimal jerk-limited (S-curve) rest-to-rest straight-line moves.
+"""Time-optimal rest-to-rest S-curve (jerk ``+j, 0, -j, 0, -j, 0, +j``) along a
+straight segment, sampled at the controller period. SI units (m, s)."""
+import math
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+import numpy as np
+
+__all__ = ["TrajectoryError", "SCurve", "Trajectory", "line", "PAPER_MOVES", "paper_move"]
+
+
+class TrajectoryError(ValueError):
+    """Invalid trajectory request (bad limit, period, length, point or name)."""
+
+
+def _positive(name, value, zero_ok=False):
+    """Return ``value`` as a float, or raise unless it is finite and > 0 (>= 0 if ``zero_ok``)."""
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        x = math.nan
+    if not (math.isfinite(x) and (x > 0.0 or (zero_ok and x == 0.0))):
+        raise TrajectoryError(f"{name} must be a finite number {'>=' if zero_ok else '>'} 0, "
+                              f"got {value!r}")
+    return x
+
+
+@dataclass(frozen=True)
+class SCurve:
+    """Time-optimal rest-to-rest jerk-limited 1-D profile over a distance ``L``.
+
+    Attributes
+    ----------
+    L : float
+        Distance travelled, m (> 0).
+    v_max, a_max, j_max : float
+        Limits on speed (m/s), acceleration (m/s^2) and jerk (m/s^3).
+    t_j, t_a, t_v : float
+        Durations (s) of each jerk segment (4 of them), each constant-acceleration
+        segment (2) and the cruise segment (1); ``t_a`` or ``t_v`` may be 0.
+    v_peak, a_peak : float
+        Peak speed (m/s) and acceleration (m/s^2) actually reached.
+    """
+
+    L: float
+    v_max: float
+    a_max: float
+    j_max: float
+    t_j: float
+    t_a: float
+    t_v: float
+    v_peak: float
+    a_peak: float
+
+    @classmethod
+    def plan(cls, L, v_max, a_max, j_max):
+        """Plan the time-optimal profile; every limit must be finite and > 0.
+
+        Parameters
+        ----------
+        L : float
+            Distance, m.
+        v_max, a_max, j_max : float
+            Speed (m/s), acceleration (m/s^2) and jerk (m/s^3) limits.
+        """
+        L = _positive("L (path length, m)", L)
+        v = _positive("v_max (m/s)", v_max)
+        a = _positive("a_max (m/s^2)", a_max)
+        j = _positive("j_max (m/s^3)", j_max)
+        if v * j >= a * a:  # a_max is reached while accelerating to v_max
+            t_j, t_a, a_p = a / j, max(v / a - a / j, 0.0), a
+        else:
+            t_j, t_a = math.sqrt(v / j), 0.0
+            a_p = j * t_j
+        L_v = v * (2.0 * t_j + t_a)  # shortest distance with v_max reached
+        if L >= L_v:
+            return cls(L, v, a, j, t_j, t_a, L / v - (2.0 * t_j + t_a), v, a_p)
+        if L >= 2.0 * a**3 / j**2:  # no cruise, a_max still reached
+            t_j = a / j
+            v_p = 2.0 * L / (t_j + math.sqrt(t_j * t_j + 4.0 * L / a))  # v^2/a + t_j v = L
+            return cls(L, v, a, j, t_j, max(v_p / a - t_j, 0.0), 0.0, v_p, a)
+        t_j = (L / (2.0 * j)) ** (1.0 / 3.0)  # no limit reached: L = 2 j t_j^3
+        return cls(L, v, a, j, t_j, 0.0, 0.0, j * t_j * t_j, j * t_j)
+
+    @property
+    def duration(self):
+        """Total move time, s: ``4 t_j + 2 t_a + t_v``."""
+        return 4.0 * self.t_j + 2.0 * self.t_a + self.t_v
+
+    def evaluate(self, t):
+        """Position, speed, acceleration and jerk of the path parameter at times ``t``.
+
+        Parameters
+        ----------
+        t : array_like, shape (...)
+            Times, s. Before 0 the profile is at rest at 0, after ``duration`` at
+            rest at ``L``.
+
+        Returns
+        -------
+        s, sd, sdd, sddd : ndarray, shape (...)
+            In m, m/s, m/s^2 and m/s^3. Closed-form per segment; the second half
+            is the point reflection of the first, so ``s(duration) == L`` exactly.
+        """
+        t = np.asarray(t, dtype=np.float64)
+        T, j, a_p, v_p = self.duration, self.j_max, self.a_peak, self.v_peak
+        t1, t3 = self.t_j, 2.0 * self.t_j + self.t_a
+        v1, s3 = 0.5 * j * t1 * t1, 0.5 * v_p * t3
+        tc = np.clip(t, 0.0, T)
+        second = tc > 0.5 * T
+        m = np.where(second, T - tc, tc)  # time within the first half
+        r = t3 - m  # time left to the end of the acceleration phase
+        u = m - t1  # time into the constant-acceleration segment
+        seg = np.select([m < t1, m < t1 + self.t_a, m < t3], [0, 1, 2], 3)
+        s = np.choose(seg, [j * m**3 / 6.0, j * t1**3 / 6.0 + v1 * u + 0.5 * a_p * u * u,
+                            s3 - v_p * r + j * r**3 / 6.0, s3 + v_p * (m - t3)])
+        sd = np.choose(seg, [0.5 * j * m * m, v1 + a_p * u, v_p - 0.5 * j * r * r, v_p])
+        sdd = np.choose(seg, [j * m, a_p, j * r, 0.0])
+        sddd = np.choose(seg, [j, 0.0, -j, 0.0])
+        s = np.where(second, self.L - s, s)
+        sdd = np.where(second, -sdd, sdd)
+        sddd = np.where((t < 0.0) | (t > T), 0.0, sddd)
+        return s, sd, sdd, sddd
+
+
+@dataclass(frozen=True, eq=False)
+class Trajectory:
+    """Sampled desired task-space motion.
+
+    Attributes
+    ----------
+    t : ndarray, shape (N,)
+        Sample times ``k * period``, s.
+    xd, xd_dot, xd_ddot : ndarray, shape (N, 2)
+        Desired position (m), velocity (m/s) and acceleration (m/s^2).
+    period : float
+        Sampling period, s.
+    start, end : tuple of float
+        End points of the straight segment, m.
+    profile : SCurve
+        Profile of the arc length along the segment.
+    """
+
+    t: np.ndarray = field(repr=False)
+    xd: np.ndarray = field(repr=False)
+    xd_dot: np.ndarray = field(repr=False)
+    xd_ddot: np.ndarray = field(repr=False)
+    period: float
+    start: tuple
+    end: tuple
+    profile: SCurve = field(repr=False)
+
+    def __post_init__(self):  # store read-only float64 C-contiguous copies
+        n = np.size(self.t)
+        for name, shape in [("t", (n,)), ("xd", (n, 2)), ("xd_dot", (n, 2)), ("xd_ddot", (n, 2))]:
+            arr = np.array(getattr(self, name), dtype=np.float64, order="C")
+            if arr.shape != shape:
+                raise TrajectoryError(f"{name} must have shape {shape}, got {arr.shape}")
+            arr.setflags(write=False)
+            object.__setattr__(self, name, arr)
+
+    @property
+    def duration(self):
+        """Duration of the move itself (``profile.duration``), s."""
+        return self.profile.duration
+
+    def extended(self, settle_time):
+        """Copy with rest samples at ``end`` appended for at least ``settle_time`` s.
+
+        Parameters
+        ----------
+        settle_time : float
+            Extra time, s (finite, >= 0); ``ceil(settle_time / period)`` samples are added.
+        """
+        ts = _positive("settle_time (s)", settle_time, zero_ok=True)
+        k = math.ceil(ts / self.period - 1e-9)  # tolerate 0.1/0.002 = 50.000000000000004
+        zeros = np.zeros((k, 2))
+        return Trajectory(np.arange(len(self.t) + k) * self.period,
+                          np.vstack([self.xd, np.broadcast_to(self.end, (k, 2))]),
+                          np.vstack([self.xd_dot, zeros]), np.vstack([self.xd_ddot, zeros]),
+                          self.period, self.start, self.end, self.profile)
+
+
+def _point(name, p):
+    """Validate a 2-D point, returning it as a tuple of floats (m)."""
+    try:
+        arr = np.asarray(p, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise TrajectoryError(f"{name} must be a point (x, y) in m, got {p!r}") from None
+    if arr.shape != (2,) or not np.all(np.isfinite(arr)):
+        raise TrajectoryError(f"{name} must be a finite point (x, y) in m of shape (2,), got {p!r}")
+    return (float(arr[0]), float(arr[1]))
+
+
+def line(start, end, v_max, a_max, j_max, period=0.002):
+    """S-curve motion along the straight segment from ``start`` to ``end``.
+
+    Parameters
+    ----------
+    start, end : array_like, shape (2,)
+        End points, m; they must differ.
+    v_max, a_max, j_max : float
+        Limits along the path: m/s, m/s^2, m/s^3.
+    period : float, optional
+        Sampling period, s (default 2 ms).
+
+    Returns
+    -------
+    Trajectory
+        Samples at ``k * period``, ``k = 0 .. ceil(duration / period)``; the last
+        one is at rest at ``end`` exactly.
+    """
+    p0, p1 = _point("start", start), _point("end", end)
+    period = _positive("period (s)", period)
+    L = math.hypot(p1[0] - p0[0], p1[1] - p0[1])
+    if L == 0.0:
+        raise TrajectoryError(f"start and end coincide at {p0}: zero path length")
+    prof = SCurve.plan(L, v_max, a_max, j_max)
+    n = math.ceil(prof.duration / period)
+    n += int(n * period < prof.duration)  # guard against rounding in the division
+    t = np.arange(n + 1) * period
+    s, sd, sdd, _ = prof.evaluate(t)
+    a, b = np.array(p0), np.array(p1)
+    lam = (s / L)[:, None]
+    u = (b - a) / L
+    xd = (1.0 - lam) * a + lam * b  # exact at both ends (lam = 0 and lam = 1)
+    xd_dot, xd_ddot = sd[:, None] * u + 0.0, sdd[:, None] * u + 0.0  # + 0.0: no -0.0
+    return Trajectory(t, xd, xd_dot, xd_ddot, period, p0, p1, prof)
+
+
+_PATH = dict(start=(0.22, 0.29), end=(0.27, 0.24))  # Shang & Cong 2010 desired line, m
+PAPER_MOVES = MappingProxyType({  # read-only: {name: keyword arguments of line()}
+    "low": MappingProxyType(dict(_PATH, v_max=0.2, a_max=5.0, j_max=200.0)),
+    "high": MappingProxyType(dict(_PATH, v_max=0.5, a_max=10.0, j_max=400.0)),
+})
+
+
+def paper_move(speed, period=0.002):
+    """Desired trajectory of the paper's low- or high-speed experiment.
+
+    Parameters
+    ----------
+    speed : {"low", "high"}
+        Which move of :data:`PAPER_MOVES`.
+    period : float, optional
+        Sampling period, s.
+    """
+    if not isinstance(speed, str) or speed not in PAPER_MOVES:
+        raise TrajectoryError(f"unknown speed {speed!r}; valid names: {sorted(PAPER_MOVES)}")
+    return line(**PAPER_MOVES[speed], period=period)
