@@ -154,3 +154,22 @@ def compile_library(
         if tmp.exists():
             tmp.unlink()
     return out_path
+
+
+def _main(argv=None):
+    """``python -m pm2dof.build SOURCE.c OUT.so``: compile one generated file (used by make)."""
+    import sys
+    args = sys.argv[1:] if argv is None else argv
+    if len(args) != 2:
+        print("usage: python -m pm2dof.build SOURCE.c OUT.so", file=sys.stderr)
+        return 2
+    try:
+        print(f"compiled {compile_library(args[0], args[1])}")
+    except (BuildError, FileNotFoundError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(_main())

@@ -1,0 +1,64 @@
+# Model report: what the compiled model says about the robot over its workspace (pm2dof report).
+import numpy as np
+
+from .errors import SingularityError, WorkspaceError
+
+__all__ = ["model_report"]
+
+
+def _grid(m, n=41, margin=None):
+    """Task positions on a grid over the bases' bounding box where every function is defined."""
+    lo, hi = m.bases.min(axis=0), m.bases.max(axis=0)
+    pts = []
+    for x in np.linspace(lo[0], hi[0], n):
+        for y in np.linspace(lo[1], hi[1], n):
+            try:
+                q = m.ik([x, y])
+                m.W(q)
+            except (WorkspaceError, SingularityError):
+                continue
+            pts.append((x, y, q))
+    return pts
+
+
+def model_report(m, seed=0, samples=200):
+    """A text report: parameters, Me at the path's midpoint, cond(S^T S) and rank of Y.
+
+    Returns
+    -------
+    str
+    """
+    rng = np.random.default_rng(seed)
+    lines = [f"model {m.name!r}: {m.n_legs} legs, {len(m.param_names)} parameters "
+             f"({m.spec.friction} friction)", f"  generated C: {m.library}"]
+    lines.append("  theta_nominal (Tables 1-2):")
+    for name, value in zip(m.param_names, m.theta_nominal):
+        lines.append(f"    {name:8s} {value:9.4f}")
+    xe = np.array([0.245, 0.265])  # midpoint of the paper's path (0.22,0.29) -> (0.27,0.24)
+    q = m.ik(xe)
+    Me = m.Me(q, m.theta_nominal)
+    lines.append(f"  at xe = {xe.tolist()} m (midpoint of the paper's path):")
+    lines.append(f"    q  = {np.round(q, 4).tolist()} rad")
+    lines.append(f"    Me = [[{Me[0, 0]:.4f}, {Me[0, 1]:.4f}], [{Me[1, 0]:.4f}, {Me[1, 1]:.4f}]] kg, "
+                 f"eigenvalues {np.round(np.linalg.eigvalsh(Me), 4).tolist()}")
+    pts = _grid(m)
+    conds, sings = [], []
+    Ys = []
+    for x, y, qq in pts:
+        S = m.S(qq)
+        conds.append(np.linalg.cond(S.T @ S))
+        sings.append(np.min(np.abs(m.singularity(qq))))
+    for k in rng.choice(len(pts), size=min(samples, len(pts)), replace=False):
+        v = rng.normal(size=(3, 2)) * [[0.3], [0.3], [5.0]]
+        Ys.append(m.Y(pts[k][2], v[0], v[0], v[2]))  # reference = measured velocity
+    Y = np.vstack(Ys)
+    sv = np.linalg.svd(Y, compute_uv=False)
+    rank = int(np.sum(sv > sv[0] * 1e-10))
+    lines.append(f"  over {len(pts)} grid points of the workspace (min|sin(qb-qa)| >= "
+                 f"{m.singularity_threshold}):")
+    lines.append(f"    cond(S^T S): min {min(conds):.3g}, median {np.median(conds):.3g}, "
+                 f"max {max(conds):.3g}")
+    lines.append(f"    min_i |sin(qb_i - qa_i)|: min {min(sings):.3g}, max {max(sings):.3g}")
+    lines.append(f"    regressor Y stacked over {len(Ys)} random states: rank {rank} of "
+                 f"{Y.shape[1]} (singular values {sv[-1]:.3g} .. {sv[0]:.3g})")
+    return "\n".join(lines)
