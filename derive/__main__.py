@@ -16,8 +16,10 @@ import casadi as ca
 from pm2dof.model_file import read_model_file
 from pm2dof.errors import ModelFileError
 
+from .controllers import STATUS, controller_functions, controller_layouts
 from .export import export
 from .model_functions import Derivation, model_functions
+from .plant import closed_loop_functions, closed_loop_layouts, plant_functions, plant_layout
 
 REPO = Path(__file__).resolve().parent.parent
 
@@ -28,6 +30,14 @@ def _label(path):
         return str(path.relative_to(REPO))
     except ValueError:
         return path.name
+
+
+def _dense(f):
+    """The same function with dense outputs (the C binding takes dense buffers only)."""
+    if all(f.sparsity_out(i).is_dense() for i in range(f.n_out())):
+        return f
+    return ca.Function(f.name(), f.sx_in(), [ca.densify(o) for o in f.call(f.sx_in())],
+                       f.name_in(), f.name_out())
 
 
 def main(argv=None):
@@ -51,11 +61,17 @@ def main(argv=None):
         f"friction {spec.friction!r}")
     d = Derivation(spec)
     say("SymPy: H, A, W, Wdot, S, M, C, Me, Ce, S^T f_a, Y, forward dynamics derived")
-    functions = [ca.Function(f.name(), f.sx_in(), [ca.densify(o) for o in f.call(f.sx_in())],
-                             f.name_in(), f.name_out()) for f in model_functions(d, spec.name)]
+    n, p = spec.n_legs, len(spec.param_names)
+    ctrl = controller_functions(d, spec.name)
+    plant = plant_functions(d, spec.name)
+    loops = closed_loop_functions(d, spec.name, ctrl, plant, spec.rk4_substeps)
+    functions = [_dense(f) for f in model_functions(d, spec.name) + ctrl + plant + loops]
     say(f"CasADi: {len(functions)} functions, "
         f"{sum(f.n_instructions() for f in functions)} instructions")
-    manifest = export(spec, functions, out, _label(args.model))
+    layouts = {**controller_layouts(n, p), **closed_loop_layouts(n, p), "plant": plant_layout(n)}
+    extra = {"layouts": {k: v.to_json() for k, v in layouts.items()}, "status_codes": STATUS,
+             "rk4_substeps": spec.rk4_substeps}
+    manifest = export(spec, functions, out, _label(args.model), extra)
     say(f"wrote {', '.join(manifest['files'])}, manifest.json in {_label(out)}")
     if not args.no_build:
         from pm2dof.build import compile_library

@@ -60,7 +60,7 @@ def _header_doc(spec, functions):
     return "\n".join(lines) + "\n"
 
 
-def export(spec, functions, out_dir, model_file_label):
+def export(spec, functions, out_dir, model_file_label, extra=None):
     """Generate C for ``functions`` into ``out_dir`` and write the manifest.
 
     Parameters
@@ -72,6 +72,8 @@ def export(spec, functions, out_dir, model_file_label):
         ``generated/<name>/``; created if missing. Only files this function writes change.
     model_file_label : str
         How the manifest names the model file (repository-relative when possible).
+    extra : dict, optional
+        More manifest entries (vector layouts, status codes).
 
     Returns
     -------
@@ -95,6 +97,7 @@ def export(spec, functions, out_dir, model_file_label):
         "param_names": list(spec.param_names),
         "files": {p.name: _sha(p) for p in (out_dir / f"{spec.name}.c", header)},
         "functions": {f.name(): _signature(f) for f in functions},
+        **(extra or {}),
     }
     (out_dir / MANIFEST).write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
     return manifest

@@ -25,7 +25,8 @@ DEFAULT_MODEL = REPO / "models" / "shang2010.toml"
 GENERATED = REPO / "generated"
 
 _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "W", "S", "Wdot", "M", "C", "Me", "Ce",
-              "StF", "Y", "forward_dynamics")
+              "StF", "Y", "forward_dynamics", "na_step", "apd_step", "plant_xedd", "plant_step",
+              "measure", "na_closed_loop", "apd_closed_loop")
 
 
 def _stale(msg):

@@ -36,7 +36,7 @@ ELBOWS = {"left": 1, "right": -1}
 FK_BRANCHES = {"left": 1, "right": -1}
 
 _MODEL_KEYS = {"name", "description", "friction", "fk_branch", "stribeck_velocity",
-               "sign_smoothing_velocity"}
+               "sign_smoothing_velocity", "rk4_substeps"}
 _LEG_KEYS = {"base", "la", "lb", "elbow"}
 _TOP_KEYS = {"model", "legs", "nominal", "limits", "sensing", "gains", "plant", "trajectories"}
 
@@ -59,11 +59,15 @@ class ModelSpec:
     friction: str
     friction_constants: dict
     fk_branch: int
+    rk4_substeps: int
     legs: tuple
     param_names: tuple
     theta_nominal: np.ndarray
     limits: dict
-    sections: dict = field(repr=False)      # run-time sections, as read: sensing, gains, ...
+    sensing: dict = field(repr=False)
+    gains: dict = field(repr=False)         # {"na": {...}, "apd": {...}}
+    plant: dict = field(repr=False)
+    trajectories: dict = field(repr=False)  # {"low": {...}, "high": {...}}
     file_sha256: str = ""
     formulation_sha256: str = ""
 
@@ -82,6 +86,7 @@ class ModelSpec:
             "friction": self.friction,
             "friction_constants": dict(sorted(self.friction_constants.items())),
             "fk_branch": self.fk_branch,
+            "rk4_substeps": self.rk4_substeps,
             "legs": [{"base": list(l.base), "la": l.la, "lb": l.lb, "elbow": l.elbow}
                      for l in self.legs],
         }
@@ -162,6 +167,68 @@ def _read_nominal(path, nominal, n, friction):
     return param_names, theta
 
 
+# run-time sections: key -> (length: None for a scalar, "n" per leg, "p" per parameter, or int;
+#                             constraint: "pos" > 0, "nonneg" >= 0, "any")
+_SCHEMA = {
+    "sensing": {"sample_period": (None, "pos"), "encoder_counts_per_rev": (None, "nonneg"),
+                "velocity_filter_hz": (None, "nonneg")},
+    "gains.na": {"Kd": (2, "pos"), "Q": (2, "pos"), "Gamma": ("p", "nonneg")},
+    "gains.apd": {"Kp": (2, "pos"), "Kv": (2, "pos")},
+    "plant": {"alpha": ("n", "pos"), "beta": ("n", "any"), "gamma": ("n", "pos"),
+              "payload_mass": (None, "nonneg"), "payload_leg": (None, "pos"),
+              "fv": ("n", "nonneg"), "fc": ("n", "nonneg"), "fs": ("n", "nonneg"),
+              "stribeck_velocity": (None, "pos"), "coulomb_smoothing_velocity": (None, "pos")},
+    "trajectory": {"start": (2, "any"), "end": (2, "any"), "v_max": (None, "pos"),
+                   "a_max": (None, "pos"), "j_max": (None, "pos")},
+}
+
+
+def _read_section(path, where, table, schema, n, p):
+    if not isinstance(table, dict):
+        _fail(path, where, f"must be a table, got {type(table).__name__}")
+    _check_keys(path, where, table, schema, schema)
+    out = {}
+    for key, (length, rule) in schema.items():
+        kw = {"positive": rule == "pos", "nonnegative": rule == "nonneg"}
+        value = table[key]
+        if length is None:
+            out[key] = _number(path, f"{where}.{key}", value, **kw)
+            continue
+        size = {"n": n, "p": p}.get(length, length)
+        if not isinstance(value, list) or len(value) != size:
+            _fail(path, f"{where}.{key}", f"must be a list of {size} numbers, got {value!r}")
+        out[key] = np.array([_number(path, f"{where}.{key}[{i}]", v, **kw)
+                             for i, v in enumerate(value)])
+        out[key].setflags(write=False)
+    return out
+
+
+def _read_runtime(path, doc, n, p, legs):
+    """Validate the run-time sections: sensing, gains, plant truth, trajectories."""
+    sensing = _read_section(path, "sensing", _table(path, doc, "sensing"), _SCHEMA["sensing"], n, p)
+    if sensing["encoder_counts_per_rev"] != int(sensing["encoder_counts_per_rev"]):
+        _fail(path, "sensing.encoder_counts_per_rev", "must be a whole number (0: no quantisation)")
+    gains_raw = _table(path, doc, "gains")
+    _check_keys(path, "gains", gains_raw, {"na", "apd"}, {"na", "apd"})
+    gains = {law: _read_section(path, f"gains.{law}", gains_raw[law], _SCHEMA[f"gains.{law}"], n, p)
+             for law in ("na", "apd")}
+    plant = _read_section(path, "plant", _table(path, doc, "plant"), _SCHEMA["plant"], n, p)
+    leg = plant["payload_leg"]
+    if leg != int(leg) or not 1 <= leg <= n:
+        _fail(path, "plant.payload_leg", f"must be a leg number 1..{n}, got {leg}")
+    for i in range(n):
+        a, b, g = plant["alpha"][i], plant["beta"][i], plant["gamma"][i]
+        if b * b >= a * g:
+            _fail(path, f"plant.beta[{i}]", f"leg {i + 1} inertia is not positive definite: "
+                                            f"beta^2 = {b * b:.6g} >= alpha*gamma = {a * g:.6g}")
+    trajs_raw = _table(path, doc, "trajectories")
+    if not trajs_raw:
+        _fail(path, "trajectories", "needs at least one [trajectories.<name>] table")
+    trajs = {name: _read_section(path, f"trajectories.{name}", t, _SCHEMA["trajectory"], n, p)
+             for name, t in trajs_raw.items()}
+    return sensing, gains, plant, trajs
+
+
 def read_model_file(path):
     """Read and validate a model file.
 
@@ -217,18 +284,22 @@ def read_model_file(path):
     if len(legs) == 2 and "fk_branch" not in model:
         _fail(path, "model.fk_branch", "a two-leg mechanism must choose its forward-kinematics "
                                        "branch ('left' or 'right' of the line B1 -> B2)")
+    substeps = model.get("rk4_substeps", 4)
+    if isinstance(substeps, bool) or not isinstance(substeps, int) or not 1 <= substeps <= 100:
+        _fail(path, "model.rk4_substeps", f"must be an integer in [1, 100], got {substeps!r}")
     param_names, theta = _read_nominal(path, _table(path, doc, "nominal"), len(legs), friction)
-    limits = _table(path, doc, "limits")
-    _check_keys(path, "limits", limits, {"singularity_threshold"}, {"singularity_threshold"})
-    thr = _number(path, "limits.singularity_threshold", limits["singularity_threshold"], positive=True)
-    if thr >= 1:
-        _fail(path, "limits.singularity_threshold", f"is a bound on |sin|, must be < 1, got {thr}")
+    limits = _read_section(path, "limits", _table(path, doc, "limits"),
+                           {"singularity_threshold": (None, "pos"), "tau_max": ("n", "pos")},
+                           len(legs), len(param_names))
+    if limits["singularity_threshold"] >= 1:
+        _fail(path, "limits.singularity_threshold",
+              f"is a bound on |sin|, must be < 1, got {limits['singularity_threshold']}")
+    sensing, gains, plant, trajs = _read_runtime(path, doc, len(legs), len(param_names), legs)
     spec = ModelSpec(
         path=str(path), name=name, description=str(model.get("description", "")),
-        friction=friction, friction_constants=constants, fk_branch=FK_BRANCHES[fk_branch],
+        friction=friction, friction_constants=constants, fk_branch=FK_BRANCHES[fk_branch], rk4_substeps=substeps,
         legs=legs, param_names=param_names, theta_nominal=theta,
-        limits={"singularity_threshold": thr},
-        sections={k: doc[k] for k in ("sensing", "gains", "plant", "trajectories") if k in doc},
+        limits=limits, sensing=sensing, gains=gains, plant=plant, trajectories=trajs,
         file_sha256=hashlib.sha256(raw).hexdigest())
     formulation = json.dumps(spec.formulation(), sort_keys=True, separators=(",", ":"))
     object.__setattr__(spec, "formulation_sha256", hashlib.sha256(formulation.encode()).hexdigest())

@@ -1,0 +1,85 @@
+# Generated controller steps: Fig. 2 signal processing + NA law (eqs. 14-29) or APD law (eq. 40).
+import casadi as ca
+
+from .layouts import Layout
+
+__all__ = ["controller_layouts", "controller_functions", "STATUS"]
+
+# status codes of a step (also in the manifest): what the step did with this sample
+STATUS = {"ok": 0, "singular": 1, "saturated": 2}
+
+
+def controller_layouts(n, p):
+    """Flat-vector layouts: the controller state and each controller's parameters."""
+    state = Layout([("xe_prev", 2), ("v", 2), ("theta_hat", p)])
+    common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("tau_max", n)]
+    na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p)] + common)
+    apd = Layout([("Kp", 2), ("Kv", 2)] + common)
+    return {"ctrl_state": state, "na_params": na, "apd_params": apd}
+
+
+def _min_norm_torque(S, u):
+    """tau_a = S (S^T S)^-1 u, the minimum-norm actuator torques (eq. 21), 2x2 in closed form."""
+    G = S.T @ S
+    det = G[0, 0] * G[1, 1] - G[0, 1] * G[1, 0]
+    z = ca.vertcat(G[1, 1] * u[0] - G[0, 1] * u[1], G[0, 0] * u[1] - G[1, 0] * u[0]) / det
+    return S @ z
+
+
+def controller_functions(d, prefix):
+    """``<prefix>_na_step`` and ``<prefix>_apd_step``: one 2 ms sample each, all in C.
+
+    Inputs: state (xe_prev, v, theta_hat), qa (measured active angles), xd, xd_dot, xd_ddot
+    (desired position, velocity, acceleration), params (see controller_layouts).
+    Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot].
+    """
+    n, p = d.spec.n_legs, len(d.spec.param_names)
+    sym, kin, dyn = d.sym, d.kin, d.dyn
+    lay = controller_layouts(n, p)
+    state = ca.SX.sym("state", lay["ctrl_state"].size)
+    qa = ca.SX.sym("qa", n)
+    xd, xd_dot, xd_ddot = ca.SX.sym("xd", 2), ca.SX.sym("xd_dot", 2), ca.SX.sym("xd_ddot", 2)
+    st = lay["ctrl_state"].split(state)
+    functions = []
+
+    for law in ("na", "apd"):
+        params = ca.SX.sym("params", lay[f"{law}_params"].size)
+        P = lay[f"{law}_params"].split(params)
+        # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
+        # low-pass on the backward difference, passive joints from geometry (unit vectors)
+        base = d.converter_qa(qa)
+        xe = base(kin.fk())
+        v = st["v"] + P["vel_alpha"] * ((xe - st["xe_prev"]) / P["T"] - st["v"])
+        e = xd - xe                                     # eq. 14
+        edot = xd_dot - v
+        theta = st["theta_hat"]
+        if law == "na":
+            xrd = xd_dot + P["Q"] * e                   # eq. 16: reference velocity
+            xrdd = xd_ddot + P["Q"] * edot              # eq. 17: reference acceleration
+            s = xrd - v                                 # eq. 15: s = edot + Q e
+        else:
+            xrd, xrdd = xd_dot, xd_ddot                 # eq. 40: nominal feedforward
+        conv = d.converter_qa(qa, [(sym.xed, v), (sym.xrd, xrd), (sym.xrdd, xrdd)])
+        Y = ca.reshape(conv(dyn.Y), p, 2).T             # row-major (2, p)
+        S = ca.reshape(conv(kin.S), 2, n).T             # row-major (n, 2)
+        if law == "na":
+            u = Y @ theta + P["Kd"] * s                 # eq. 29: S^T tau_a
+            theta_next = theta + P["T"] * P["Gamma"] * (Y.T @ s)   # eq. 28, explicit Euler
+        else:
+            u = Y @ theta + P["Kp"] * e + P["Kv"] * edot           # eq. 40
+            theta_next = theta
+        tau = _min_norm_torque(S, u)                    # eq. 21
+        tau_sat = ca.fmin(ca.fmax(tau, -P["tau_max"]), P["tau_max"])
+        saturated = ca.mmax(ca.fabs(tau) - P["tau_max"]) > 0
+        ok = d.singularity_measure(conv) >= P["sing_threshold"]
+        tau_out = ca.if_else(ok, tau_sat, ca.DM.zeros(n))          # safe torque: zero
+        theta_out = ca.if_else(ok, theta_next, theta)              # no update on a bad sample
+        status = ca.if_else(ok, ca.if_else(saturated, STATUS["saturated"], STATUS["ok"]),
+                            STATUS["singular"])
+        state_next = lay["ctrl_state"].pack(xe_prev=xe, v=v, theta_hat=theta_out)
+        functions.append(ca.Function(
+            f"{prefix}_{law}_step", [state, qa, xd, xd_dot, xd_ddot, params],
+            [tau_out, state_next, status, ca.vertcat(xe, v, e, edot)],
+            ["state", "qa", "xd", "xd_dot", "xd_ddot", "params"],
+            ["tau_a", "state_next", "status", "diag"]))
+    return functions

@@ -1,0 +1,108 @@
+# Generated plant: truth dynamics with Stribeck friction, RK4 under a zero-order hold, encoder.
+import casadi as ca
+
+from .controllers import controller_layouts
+from .layouts import Layout
+
+__all__ = ["plant_layout", "plant_functions", "closed_loop_layouts", "closed_loop_functions"]
+
+
+def plant_layout(n):
+    """Plant truth: link inertias, payload-augmented; friction with a Stribeck part."""
+    return Layout([("alpha", n), ("beta", n), ("gamma", n), ("fv", n), ("fc", n), ("fs", n),
+                   ("stribeck_velocity", 1), ("coulomb_smoothing_velocity", 1),
+                   ("encoder_step", 1)])
+
+
+def closed_loop_layouts(n, p):
+    ctrl = controller_layouts(n, p)
+    x = Layout([("xe", 2), ("xed", 2), ("ctrl_state", ctrl["ctrl_state"].size)])
+    u = Layout([("xd", 2), ("xd_dot", 2), ("xd_ddot", 2)])
+    y = Layout([("xe", 2), ("xed", 2), ("tau_a", n), ("status", 1), ("theta_hat", p)])
+    return {"cl_state": x, "cl_input": u, "cl_output": y}
+
+
+def plant_functions(d, prefix):
+    """``<prefix>_plant_xedd``, ``<prefix>_plant_step`` (one RK4 step of h s), ``<prefix>_measure``."""
+    n = d.spec.n_legs
+    sym, kin, dyn = d.sym, d.kin, d.dyn
+    lay = plant_layout(n)
+    xe, xed, tau = ca.SX.sym("xe", 2), ca.SX.sym("xed", 2), ca.SX.sym("tau_a", n)
+    pp = ca.SX.sym("plant", lay.size)
+    P = lay.split(pp)
+    inertial = {}
+    for i in range(n):
+        for name in ("alpha", "beta", "gamma"):
+            inertial[sym.param[f"{name}{i + 1}"]] = P[name][i]
+    conv = d.converter_xe(xe, [(sym.xed, xed)])
+    conv.symbols.update(inertial)
+    Me = ca.reshape(conv(dyn.Me), 2, 2).T
+    Ce = ca.reshape(conv(dyn.Ce), 2, 2).T
+    S = ca.reshape(conv(kin.S), 2, n).T
+    va = S @ xed
+    # truth friction: Coulomb smoothed over +-coulomb_smoothing_velocity, Stribeck excess fs
+    fric = ((P["fc"] + P["fs"] * ca.exp(-(va / P["stribeck_velocity"]) ** 2))
+            * ca.tanh(va / P["coulomb_smoothing_velocity"]) + P["fv"] * va)
+    rhs = S.T @ (tau - fric) - Ce @ xed                  # eq. 10 with the plant's friction
+    xedd = ca.vertcat(*solve2_ca(Me, rhs))
+    f_xedd = ca.Function(f"{prefix}_plant_xedd", [xe, xed, tau, pp], [xedd],
+                         ["xe", "xed", "tau_a", "plant"], ["xedd"])
+    x = ca.SX.sym("x", 4)
+    h = ca.SX.sym("h")
+
+    def f(z):
+        return ca.vertcat(z[2:4], f_xedd(z[0:2], z[2:4], tau, pp))
+    k1 = f(x)
+    k2 = f(x + h / 2 * k1)
+    k3 = f(x + h / 2 * k2)
+    k4 = f(x + h * k3)
+    x_next = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)   # classical RK4
+    f_step = ca.Function(f"{prefix}_plant_step", [x, tau, pp, h], [x_next],
+                         ["x", "tau_a", "plant", "h"], ["x_next"])
+    # encoder: the active angles of the true pose, quantised to encoder_step (0: exact)
+    cik = d.converter_xe(xe)
+    qa = ca.vertcat(*[ca.atan2(cik(kin.unit_vectors_from_xe()[sym.qa[i]][1]),
+                               cik(kin.unit_vectors_from_xe()[sym.qa[i]][0])) for i in range(n)])
+    step = P["encoder_step"]
+    qa_meas = ca.if_else(step > 0, step * ca.floor(qa / step + 0.5), qa)
+    f_meas = ca.Function(f"{prefix}_measure", [xe, pp], [qa_meas], ["xe", "plant"], ["qa"])
+    return [f_xedd, f_step, f_meas]
+
+
+def solve2_ca(A, b):
+    det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
+    return [(A[1, 1] * b[0] - A[0, 1] * b[1]) / det, (A[0, 0] * b[1] - A[1, 0] * b[0]) / det]
+
+
+def closed_loop_functions(d, prefix, ctrl_fns, plant_fns, substeps):
+    """``<prefix>_<law>_closed_loop(x, u, p) -> (x_next, y)``: one control sample.
+
+    Measure qa from the true pose, run the controller step, hold its torque for ``substeps``
+    RK4 steps of the plant. y records the true state at the sample, the torque, the status
+    and theta_hat after the update. Shaped for pm2dof._cbind.Function.accumulate.
+    """
+    n, p = d.spec.n_legs, len(d.spec.param_names)
+    lay = closed_loop_layouts(n, p)
+    ctrl_lay = controller_layouts(n, p)
+    f_step, f_meas = plant_fns[1], plant_fns[2]
+    out = []
+    for law, step in zip(("na", "apd"), ctrl_fns):
+        x = ca.MX.sym("x", lay["cl_state"].size)
+        u = ca.MX.sym("u", lay["cl_input"].size)
+        npar = ctrl_lay[f"{law}_params"].size
+        prm = ca.MX.sym("p", npar + plant_layout(n).size)
+        X, U = lay["cl_state"].split(x), lay["cl_input"].split(u)
+        cp, pp = prm[:npar], prm[npar:]
+        h = cp[ctrl_lay[f"{law}_params"].offsets()["T"][0]] / substeps  # zero-order hold
+        qa = f_meas(X["xe"], pp)
+        tau, cs_next, status, _ = step(X["ctrl_state"], qa, U["xd"], U["xd_dot"], U["xd_ddot"], cp)
+        z = ca.vertcat(X["xe"], X["xed"])
+        for _ in range(substeps):
+            z = f_step(z, tau, pp, h)
+        x_next = ca.vertcat(z, cs_next)
+        theta_hat = cs_next[ctrl_lay["ctrl_state"].offsets()["theta_hat"][0]:]
+        y = lay["cl_output"].pack(xe=X["xe"], xed=X["xed"], tau_a=tau, status=status,
+                                  theta_hat=theta_hat)
+        out.append(ca.Function(f"{prefix}_{law}_closed_loop", [x, u, prm], [x_next, y],
+                               ["x", "u", "p"], ["x_next", "y"]))
+    return out

@@ -1,0 +1,157 @@
+# NA (eqs. 14-29) and APD (eq. 40) controllers: one call into generated C per 2 ms sample.
+"""Task-space controllers of the paper, each step one call into the generated C.
+
+A step runs the whole chain of Fig. 2: end-effector position by fk from the measured active
+angles, velocity by a first-order low-pass on the backward difference, the passive joints
+from geometry, the control law, the minimum-norm torque split (eq. 21) and, for NA, the
+parameter update (eq. 28, explicit Euler over the sample period). Torques are clipped to
+``limits.tau_max``; at a pose closer to a singularity than ``limits.singularity_threshold``
+the step outputs the safe torque zero and leaves theta_hat unchanged (see ``status``).
+"""
+import math
+
+import numpy as np
+
+from .layout import Layout
+
+__all__ = ["NAController", "APDController", "STATUS_NAMES"]
+
+STATUS_NAMES = {0: "ok", 1: "singular", 2: "saturated"}
+
+
+def velocity_filter_alpha(sample_period, cutoff_hz):
+    """Gain a of v_k = v_{k-1} + a ((x_k - x_{k-1})/T - v_{k-1}); cutoff 0: no filter (a = 1)."""
+    if cutoff_hz == 0:
+        return 1.0
+    return sample_period / (sample_period + 1.0 / (2.0 * math.pi * cutoff_hz))
+
+
+class _Controller:
+    _law = ""
+
+    def __init__(self, model, gains, theta0, sample_period, velocity_filter_hz, tau_max):
+        spec = model.spec
+        lays = model.manifest["layouts"]
+        self.model = model
+        self.state_layout = Layout("ctrl_state", lays["ctrl_state"])
+        self.params_layout = Layout(f"{self._law}_params", lays[f"{self._law}_params"])
+        T = spec.sensing["sample_period"] if sample_period is None else float(sample_period)
+        fc = spec.sensing["velocity_filter_hz"] if velocity_filter_hz is None else velocity_filter_hz
+        if not (math.isfinite(T) and T > 0):
+            raise ValueError(f"sample_period must be > 0 s, got {T}")
+        if not (math.isfinite(fc) and fc >= 0):
+            raise ValueError(f"velocity_filter_hz must be >= 0 (0: no filter), got {fc}")
+        self.sample_period = T
+        self.theta0 = np.array(spec.theta_nominal if theta0 is None else theta0, dtype=float)
+        if self.theta0.shape != (len(model.param_names),):
+            raise ValueError(f"theta0 must have shape ({len(model.param_names)},), "
+                             f"got {self.theta0.shape}")
+        self.params = self.params_layout.pack(
+            **gains, T=T, vel_alpha=velocity_filter_alpha(T, fc),
+            sing_threshold=model.singularity_threshold,
+            tau_max=spec.limits["tau_max"] if tau_max is None else tau_max)
+        self.params.setflags(write=False)
+        self._f = model.function(f"{self._law}_step")
+        n = model.n_legs
+        self._states = [np.zeros(self.state_layout.size), np.zeros(self.state_layout.size)]
+        self._tau = np.zeros(n)
+        self._status = np.zeros(1)
+        self._diag = np.zeros(8)
+        self._ready = False
+
+    def reset(self, qa0, theta_hat=None):
+        """Start at rest at the measured active angles ``qa0`` (n,), rad.
+
+        ``theta_hat`` (5n,) replaces the initial estimate (default: ``theta0``, Tables 1-2).
+        """
+        s = self.state_layout.unpack(self._states[0])
+        s["xe_prev"][:] = self.model.fk(qa0)
+        s["v"][:] = 0.0
+        s["theta_hat"][:] = self.theta0 if theta_hat is None else theta_hat
+        self._ready = True
+
+    def step(self, qa_meas, xd, xd_dot, xd_ddot, out=None):
+        """One control sample: measured active angles (n,) rad and the desired position (2,) m,
+        velocity (2,) m/s and acceleration (2,) m/s^2 -> actuator torques tau_a (n,) N*m.
+
+        Returns a new array, or writes into ``out`` (n,) and returns it (no allocation).
+        Non-finite inputs raise ValueError and leave the controller unchanged; a singular
+        pose gives the safe torque zero (``status == "singular"``).
+        """
+        if not self._ready:
+            raise RuntimeError("call reset(qa0) before the first step")
+        s0, s1 = self._states
+        self._f(s0, qa_meas, xd, xd_dot, xd_ddot, self.params, self._tau, s1, self._status,
+                self._diag)
+        self._states = [s1, s0]
+        if out is None:
+            return self._tau.copy()
+        out[:] = self._tau
+        return out
+
+    @property
+    def status(self):
+        """What the last step did: "ok", "singular" (zero torque) or "saturated" (clipped)."""
+        return STATUS_NAMES[int(self._status[0])]
+
+    @property
+    def state(self):
+        """Copy of the controller state: dict of xe_prev (2,), v (2,), theta_hat (5n,)."""
+        return {k: v.copy() for k, v in self.state_layout.unpack(self._states[0]).items()}
+
+    @property
+    def diag(self):
+        """Last step's signal processing: dict of xe (2,) m, v (2,) m/s, e (2,) m, edot (2,) m/s."""
+        d = self._diag.copy()
+        return {"xe": d[0:2], "v": d[2:4], "e": d[4:6], "edot": d[6:8]}
+
+
+class NAController(_Controller):
+    """The nonlinear adaptive controller (eqs. 14-29), gains of Sect. 5 by default.
+
+    Parameters
+    ----------
+    model : Model
+    Kd, Q : array_like (2,), optional
+        Diagonal gains, N*s/m and 1/s (default: ``[gains.na]`` of the model file).
+    Gamma : array_like (5n,), optional
+        Diagonal adaptation gain in theta's order; zeros switch adaptation off.
+    theta0 : array_like (5n,), optional
+        Initial estimate theta_hat (default: Tables 1-2, ``model.theta_nominal``).
+    sample_period : float, optional
+        s (default ``[sensing].sample_period``, 0.002).
+    velocity_filter_hz : float, optional
+        Cutoff of the velocity low-pass, Hz; 0 for the raw backward difference.
+    tau_max : array_like (n,), optional
+        Torque limits, N*m (default ``[limits].tau_max``).
+    """
+    _law = "na"
+
+    def __init__(self, model, *, Kd=None, Q=None, Gamma=None, theta0=None, sample_period=None,
+                 velocity_filter_hz=None, tau_max=None):
+        g = model.spec.gains["na"]
+        super().__init__(model, {"Kd": g["Kd"] if Kd is None else Kd,
+                                 "Q": g["Q"] if Q is None else Q,
+                                 "Gamma": g["Gamma"] if Gamma is None else Gamma},
+                         theta0, sample_period, velocity_filter_hz, tau_max)
+
+    @property
+    def theta_hat(self):
+        """Current estimate theta_hat (5n,), in ``model.param_names`` order (a copy)."""
+        return self.state["theta_hat"]
+
+
+class APDController(_Controller):
+    """The augmented PD controller of eq. 40 with the nominal model (Tables 1-2).
+
+    Parameters are those of :class:`NAController` with ``Kp`` (N/m), ``Kv`` (N*s/m) in place
+    of the NA gains; ``theta0`` is the fixed model inside the feedforward.
+    """
+    _law = "apd"
+
+    def __init__(self, model, *, Kp=None, Kv=None, theta0=None, sample_period=None,
+                 velocity_filter_hz=None, tau_max=None):
+        g = model.spec.gains["apd"]
+        super().__init__(model, {"Kp": g["Kp"] if Kp is None else Kp,
+                                 "Kv": g["Kv"] if Kv is None else Kv},
+                         theta0, sample_period, velocity_filter_hz, tau_max)

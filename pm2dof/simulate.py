@@ -1,0 +1,166 @@
+# Closed-loop simulation: controller + plant over a trajectory, the whole rollout one call into C.
+"""Closed-loop rollouts in generated C.
+
+Each control sample k: the encoder reads the true active angles (quantised), the controller
+step computes tau_k from them and the desired motion at t_k, and the plant integrates its
+truth dynamics over [t_k, t_k + T] with ``rk4_substeps`` RK4 steps under that torque held
+constant (zero-order hold). The loop over samples runs in C (``_cbind.Function.accumulate``).
+"""
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .controllers import APDController, NAController
+from .layout import Layout
+
+__all__ = ["simulate", "SimResult", "plant_truth", "rmse", "theta_truth"]
+
+
+def plant_truth(model, **overrides):
+    """The plant's truth as a dict: the model file's ``[plant]`` with the payload booked in.
+
+    The payload m at the tip of leg j's distal link adds m la^2, m la lb, m lb^2 to alpha_j,
+    beta_j, gamma_j (its kinetic energy 1/2 m |tip velocity|^2 in the leg's angles).
+    ``overrides`` replace fields of ``[plant]`` (e.g. ``payload_mass=0``).
+    """
+    p = dict(model.spec.plant)
+    unknown = sorted(set(overrides) - set(p))
+    if unknown:
+        raise TypeError(f"unknown plant field(s) {unknown}; fields are {sorted(p)}")
+    p.update(overrides)
+    j = int(p["payload_leg"]) - 1
+    leg = model.spec.legs[j]
+    m = float(p["payload_mass"])
+    alpha, beta, gamma = (np.array(p[k], dtype=float) for k in ("alpha", "beta", "gamma"))
+    alpha[j] += m * leg.la ** 2
+    beta[j] += m * leg.la * leg.lb
+    gamma[j] += m * leg.lb ** 2
+    return {"alpha": alpha, "beta": beta, "gamma": gamma,
+            **{k: np.array(p[k], dtype=float) for k in ("fv", "fc", "fs")},
+            "stribeck_velocity": float(p["stribeck_velocity"]),
+            "coulomb_smoothing_velocity": float(p["coulomb_smoothing_velocity"])}
+
+
+def theta_truth(model, truth=None):
+    """The truth expressed in theta's coordinates (5n,): inertias with payload, fv, fc.
+
+    The Stribeck excess fs has no coordinate in theta; it is left out.
+    """
+    t = plant_truth(model) if truth is None else truth
+    return np.concatenate([t["alpha"], t["beta"], t["gamma"], t["fv"], t["fc"]])
+
+
+def rmse(xd, xe):
+    """Eq. 41: sqrt(1/N sum_i [(xd_i - xe_i)^2 + (yd_i - ye_i)^2]) over N samples, m.
+
+    Parameters
+    ----------
+    xd, xe : array_like (N, 2)
+        Desired and actual positions, m.
+    """
+    d = np.asarray(xd, dtype=float) - np.asarray(xe, dtype=float)
+    return float(np.sqrt(np.mean(np.sum(d * d, axis=-1))))
+
+
+@dataclass(frozen=True)
+class SimResult:
+    """One rollout. Arrays have one row per control sample k (t_k = k T).
+
+    t (N,) s; xd, xd_dot (N, 2) desired; xe, xed (N, 2) true position m and velocity m/s at
+    t_k; tau_a (N, n) N*m applied over [t_k, t_k+T]; status (N,) int (0 ok, 1 singular,
+    2 saturated); theta_hat (N, 5n) after the update at t_k. ``n_move`` is the number of
+    samples of the desired trajectory proper (eq. 41's N); later rows are settling.
+    """
+    controller: str
+    t: np.ndarray
+    xd: np.ndarray
+    xd_dot: np.ndarray
+    xe: np.ndarray
+    xed: np.ndarray
+    tau_a: np.ndarray
+    status: np.ndarray
+    theta_hat: np.ndarray
+    n_move: int
+    final_state: np.ndarray = field(repr=False)
+
+    @property
+    def e(self):
+        """Position error xd - xe (N, 2), m."""
+        return self.xd - self.xe
+
+    @property
+    def rmse(self):
+        """Eq. 41 over the samples of the desired trajectory, m."""
+        return rmse(self.xd[:self.n_move], self.xe[:self.n_move])
+
+    @property
+    def n_singular(self):
+        return int(np.sum(self.status == 1))
+
+    @property
+    def n_saturated(self):
+        return int(np.sum(self.status == 2))
+
+
+def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_hat0=None,
+             settle_time=0.0):
+    """Run ``controller`` against the plant's truth along ``trajectory``: one call into C.
+
+    Parameters
+    ----------
+    model : Model
+    controller : NAController or APDController
+        Supplies the law, its gains, sample period and theta0 (its internal state is not used
+        or changed: the rollout keeps its own state in C).
+    trajectory : pm2dof.trajectory.Trajectory
+        Desired motion sampled at the controller's period; the robot starts at rest at its
+        first point.
+    truth : dict, optional
+        Plant truth (default :func:`plant_truth`); must not be the controller's parameters.
+    quantise : bool
+        Quantise the encoders to ``[sensing].encoder_counts_per_rev`` (False: exact angles).
+    theta_hat0 : array_like (5n,), optional
+        Initial estimate (default: the controller's ``theta0``).
+    settle_time : float
+        Seconds of rest at the end point simulated after the move (not in the RMSE).
+
+    Returns
+    -------
+    SimResult
+    """
+    if not isinstance(controller, (NAController, APDController)):
+        raise TypeError(f"controller must be an NAController or APDController, got "
+                        f"{type(controller).__name__}")
+    T = controller.sample_period
+    if abs(trajectory.period - T) > 1e-12 * T:
+        raise ValueError(f"trajectory period {trajectory.period} s differs from the "
+                         f"controller's sample period {T} s")
+    n_move = len(trajectory.t)
+    traj = trajectory.extended(settle_time) if settle_time > 0 else trajectory
+    lays = model.manifest["layouts"]
+    law = controller._law
+    f = model.function(f"{law}_closed_loop")
+    truth = plant_truth(model) if truth is None else truth
+    counts = model.spec.sensing["encoder_counts_per_rev"]
+    plant = Layout("plant", lays["plant"]).pack(
+        **truth, encoder_step=(2 * math.pi / counts) if (quantise and counts > 0) else 0.0)
+    p = np.concatenate([controller.params, plant])
+    xs = Layout("cl_state", lays["cl_state"])
+    cs = Layout("ctrl_state", lays["ctrl_state"])
+    x = np.zeros(xs.size)
+    X = xs.unpack(x)
+    X["xe"][:] = traj.xd[0]
+    qa0 = np.empty(model.n_legs)
+    model.function("measure")(traj.xd[0], plant, qa0)
+    c0 = cs.unpack(X["ctrl_state"])
+    c0["xe_prev"][:] = model.fk(qa0)
+    c0["theta_hat"][:] = controller.theta0 if theta_hat0 is None else theta_hat0
+    u = np.ascontiguousarray(np.hstack([traj.xd, traj.xd_dot, traj.xd_ddot]))
+    ylay = Layout("cl_output", lays["cl_output"])
+    y = np.empty((len(traj.t), ylay.size))
+    f.accumulate(x, u, p, y)
+    Y = ylay.unpack(y)
+    return SimResult(controller=law, t=traj.t, xd=traj.xd, xd_dot=traj.xd_dot, xe=Y["xe"],
+                     xed=Y["xed"], tau_a=Y["tau_a"], status=Y["status"][:, 0].astype(int),
+                     theta_hat=Y["theta_hat"], n_move=n_move, final_state=x)
