@@ -9,6 +9,7 @@ the result is written there (no allocation) and returned.
 """
 import array
 import json
+import types
 from pathlib import Path
 
 import numpy as np
@@ -27,6 +28,15 @@ GENERATED = REPO / "generated"
 _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "W", "S", "Wdot", "M", "C", "Me", "Ce",
               "StF", "Y", "forward_dynamics", "na_step", "apd_step", "plant_xedd", "plant_step",
               "measure", "na_closed_loop", "apd_closed_loop")
+
+
+def _freeze(obj):
+    """Read-only view of JSON data: dicts -> mappingproxy, lists -> tuples."""
+    if isinstance(obj, dict):
+        return types.MappingProxyType({k: _freeze(v) for k, v in obj.items()})
+    if isinstance(obj, list):
+        return tuple(_freeze(v) for v in obj)
+    return obj
 
 
 def _stale(msg):
@@ -81,14 +91,17 @@ class Model:
             if want != have:
                 _stale(f"{lib_path}: {f.name} has signature {have}, manifest says {want}")
             funcs[short] = f
-        for k, v in (("spec", spec), ("manifest", manifest), ("library", str(lib_path)),
-                     ("_lib", lib), ("_f", funcs),
+        for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
+                     ("_lib", lib), ("_f", types.MappingProxyType(funcs)),
                      ("_sing_thr", spec.limits["singularity_threshold"]),
                      ("_sing", array.array("d", [0.0]))):  # array: ~3x faster [0] than numpy
             object.__setattr__(self, k, v)
 
     def __setattr__(self, key, value):
         raise AttributeError(f"Model is immutable (tried to set {key!r})")
+
+    def __delattr__(self, key):
+        raise AttributeError(f"Model is immutable (tried to delete {key!r})")
 
     def __repr__(self):
         return (f"<Model {self.name!r}: {self.n_legs} legs, {len(self.param_names)} parameters, "
@@ -144,9 +157,9 @@ class Model:
         except (TypeError, ValueError):
             args = self._coerce(f, args)
             f(*args, out, sing) if sing is not None else f(*args, out)
+        if short == "forward_dynamics" and not (out[0] == out[0] and out[1] == out[1]):
+            self.ik(args[0])  # NaN: xe is out of reach (C's fmin drops NaN); ik names the leg
         if sing is not None and not sing[0] >= self._sing_thr:
-            if sing[0] != sing[0] and short == "forward_dynamics":
-                self.ik(args[0])  # NaN measure: xe is out of reach; ik names the leg
             raise SingularityError(
                 f"{short}: the pose is too close to a singularity: min_i |sin(qb_i - qa_i)| = "
                 f"{sing[0]:.4g} < threshold {self._sing_thr} (limits.singularity_threshold)")

@@ -1,0 +1,105 @@
+# The paper's experiment (Sect. 5): Table 3 in simulation, the Gamma = 0 ablation, repeated runs.
+import numpy as np
+
+from .controllers import APDController, NAController
+from .simulate import simulate, theta_truth
+from .trajectory import line
+
+__all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3",
+           "repeated_runs"]
+
+# Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
+PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percent": 38.40},
+                "high": {"apd_rmse": 4.7136e-4, "na_rmse": 2.8299e-4, "rpe_percent": 39.96}}
+
+
+def trajectory(model, speed, period=None):
+    """The desired move ``[trajectories.<speed>]`` of the model file, sampled at ``period``."""
+    moves = model.spec.trajectories
+    if speed not in moves:
+        raise KeyError(f"no trajectory {speed!r} in {model.spec.path}; have {sorted(moves)}")
+    t = moves[speed]
+    return line(t["start"], t["end"], t["v_max"], t["a_max"], t["j_max"],
+                period=model.spec.sensing["sample_period"] if period is None else period)
+
+
+def rpe(apd_rmse, na_rmse):
+    """Relative performance: percentage reduction of the RMSE from APD to NA."""
+    return 100.0 * (apd_rmse - na_rmse) / apd_rmse
+
+
+def table3(model, speeds=None, quantise=True, progress=None):
+    """Run APD, NA and NA with Gamma = 0 on each move. Returns {speed: {name: SimResult}}."""
+    speeds = list(model.spec.trajectories) if speeds is None else speeds
+    out = {}
+    p = len(model.param_names)
+    for speed in speeds:
+        traj = trajectory(model, speed)
+        runs = {}
+        for name, ctrl in (("apd", APDController(model)), ("na", NAController(model)),
+                           ("na_no_adaptation", NAController(model, Gamma=np.zeros(p)))):
+            if progress:
+                progress(f"{speed} speed: {name} ({len(traj.t)} samples)")
+            runs[name] = simulate(model, ctrl, traj, quantise=quantise)
+        out[speed] = runs
+    return out
+
+
+def table3_json(results):
+    """The numbers of :func:`table3`: RMSE in m, RPE in percent, duration in s."""
+    out = {}
+    for speed, runs in results.items():
+        r = runs["na"]
+        out[speed] = {
+            "apd_rmse": runs["apd"].rmse,
+            "na_rmse": r.rmse,
+            "na_no_adaptation_rmse": runs["na_no_adaptation"].rmse,
+            "rpe_percent": rpe(runs["apd"].rmse, r.rmse),
+            "trajectory_duration_s": float(r.t[r.n_move - 1]),
+            "samples": r.n_move,
+            "saturated_samples": {k: v.n_saturated for k, v in runs.items()},
+            "singular_samples": {k: v.n_singular for k, v in runs.items()},
+        }
+    return out
+
+
+def format_table3(numbers):
+    """A text table like the paper's Table 3, simulated beside measured."""
+    lines = ["RMSE of the end-effector position (eq. 41), m. Simulated here | measured in the "
+             "paper (Table 3).",
+             f"{'speed':6s} {'APD sim':>11s} {'NA sim':>11s} {'NA G=0 sim':>11s} {'RPE sim':>8s}"
+             f" | {'APD paper':>11s} {'NA paper':>11s} {'RPE paper':>9s}"]
+    for speed, r in numbers.items():
+        paper = PAPER_TABLE3.get(speed, {})
+        lines.append(f"{speed:6s} {r['apd_rmse']:11.4e} {r['na_rmse']:11.4e} "
+                     f"{r['na_no_adaptation_rmse']:11.4e} {r['rpe_percent']:7.2f}% | "
+                     f"{paper.get('apd_rmse', float('nan')):11.4e} "
+                     f"{paper.get('na_rmse', float('nan')):11.4e} "
+                     f"{paper.get('rpe_percent', float('nan')):8.2f}%")
+    lines.append("RPE = 100 (APD - NA) / APD: positive when NA tracks better.")
+    return "\n".join(lines)
+
+
+def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
+    """Run the same move ``runs`` times with NA, carrying theta_hat from one run to the next.
+
+    Each run starts at rest at the start point (the return move is not simulated).
+
+    Returns
+    -------
+    dict with ``rmse`` (runs,) m, ``theta_hat_end`` (runs, 5n), ``theta_truth`` (5n,),
+    ``theta0`` (5n,).
+    """
+    traj = trajectory(model, speed)
+    ctrl = NAController(model)
+    theta = ctrl.theta0.copy()
+    rmses, thetas = [], []
+    for k in range(runs):
+        r = simulate(model, ctrl, traj, quantise=quantise, theta_hat0=theta)
+        theta = r.theta_hat[-1].copy()
+        rmses.append(r.rmse)
+        thetas.append(theta)
+        if progress and (k + 1) % 5 == 0:
+            progress(f"repeated {speed}-speed runs: {k + 1}/{runs}, RMSE {r.rmse:.3e} m")
+    return {"rmse": np.array(rmses), "theta_hat_end": np.array(thetas),
+            "theta_truth": theta_truth(model), "theta0": ctrl.theta0.copy()}

@@ -1,0 +1,84 @@
+# Writing results: atomically (temp file + rename), each carrying its provenance.
+import json
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["provenance", "write_atomic", "write_json", "save_figure"]
+
+REPO = Path(__file__).resolve().parent.parent
+
+
+def _git_commit():
+    try:
+        out = subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True,
+                             text=True, timeout=5)
+        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"],
+                               cwd=REPO, capture_output=True, text=True, timeout=5).stdout.strip()
+        return out.stdout.strip() + ("+dirty" if dirty else "") if out.returncode == 0 else None
+    except (OSError, subprocess.SubprocessError):
+        return None
+
+
+def provenance(model):
+    """Where a result came from: model hashes, git commit, versions, command line."""
+    from importlib.metadata import PackageNotFoundError, version
+    try:
+        pm2dof_version = version("pm2dof")
+    except PackageNotFoundError:
+        pm2dof_version = None
+    return {
+        "model": model.name,
+        "model_file": model.spec.path,
+        "model_file_sha256": model.spec.file_sha256,
+        "formulation_sha256": model.spec.formulation_sha256,
+        "generated_with": dict(model.manifest["versions"]),
+        "git_commit": _git_commit(),
+        "pm2dof": pm2dof_version,
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "machine": f"{platform.machine()} {platform.system()}, {os.cpu_count()} cores",
+        "command_line": sys.argv,
+    }
+
+
+def write_atomic(path, data):
+    """Write bytes to ``path`` through a temporary file in the same folder and a rename."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+    return path
+
+
+def write_json(path, obj):
+    return write_atomic(path, (json.dumps(obj, indent=1, default=_jsonable) + "\n").encode())
+
+
+def _jsonable(x):
+    if isinstance(x, np.ndarray):
+        return x.tolist()
+    if isinstance(x, np.generic):
+        return x.item()
+    raise TypeError(f"not JSON serialisable: {type(x).__name__}")
+
+
+def save_figure(fig, path, prov):
+    """Save a matplotlib figure as PNG atomically, with the provenance in its text chunks."""
+    import io
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110,
+                metadata={"Software": "pm2dof", "Description": json.dumps(prov, default=_jsonable)})
+    return write_atomic(path, buf.getvalue())
