@@ -96,12 +96,16 @@ def cmd_demo(args):
     results, rep, paths = _figures(m, args.out, args.runs, _progress)
     numbers = table3_json(results)
     print(format_table3(numbers))
+    from .experiment import format_sensitivity, sensitivity
+    sens = sensitivity(m)
+    print("\nSensitivity: the same table under other assumptions of the simulation (RMSE, m):")
+    print(format_sensitivity(sens))
     if rep is not None:
         r = rep["rmse"]
         print(f"\nSame {rep['speed']}-speed move repeated {len(r)} times, theta_hat carried over:"
               f" NA RMSE {r[0]:.3e} m (run 1) -> {r[-1]:.3e} m (run {len(r)}); "
               f"APD {rep['apd_rmse']:.3e} m.")
-    out = {"table3": numbers, "provenance": provenance(m)}
+    out = {"table3": numbers, "sensitivity": dict(sens), "provenance": provenance(m)}
     if rep is not None:
         out["repeated_runs"] = {"speed": rep["speed"], "rmse": rep["rmse"],
                                 "theta_hat_end": rep["theta_hat_end"][-1],

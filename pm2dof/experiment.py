@@ -6,7 +6,7 @@ from .simulate import simulate, theta_truth
 from .trajectory import line
 
 __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3",
-           "repeated_runs"]
+           "repeated_runs", "sensitivity", "format_sensitivity"]
 
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
 PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percent": 38.40},
@@ -28,19 +28,24 @@ def rpe(apd_rmse, na_rmse):
     return 100.0 * (apd_rmse - na_rmse) / apd_rmse
 
 
-def table3(model, speeds=None, quantise=True, progress=None):
-    """Run APD, NA and NA with Gamma = 0 on each move. Returns {speed: {name: SimResult}}."""
+def table3(model, speeds=None, quantise=True, progress=None, truth=None, **controller_options):
+    """Run APD, NA and NA with Gamma = 0 on each move. Returns {speed: {name: SimResult}}.
+
+    ``controller_options`` (e.g. ``velocity_filter_hz``) go to all three controllers alike;
+    ``truth`` replaces the plant truth (see :func:`pm2dof.simulate.plant_truth`).
+    """
     speeds = list(model.spec.trajectories) if speeds is None else speeds
     out = {}
     p = len(model.param_names)
+    kw = controller_options
     for speed in speeds:
         traj = trajectory(model, speed)
         runs = {}
-        for name, ctrl in (("apd", APDController(model)), ("na", NAController(model)),
-                           ("na_no_adaptation", NAController(model, Gamma=np.zeros(p)))):
+        for name, ctrl in (("apd", APDController(model, **kw)), ("na", NAController(model, **kw)),
+                           ("na_no_adaptation", NAController(model, Gamma=np.zeros(p), **kw))):
             if progress:
                 progress(f"{speed} speed: {name} ({len(traj.t)} samples)")
-            runs[name] = simulate(model, ctrl, traj, quantise=quantise)
+            runs[name] = simulate(model, ctrl, traj, quantise=quantise, truth=truth)
         out[speed] = runs
     return out
 
@@ -103,3 +108,38 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
             progress(f"repeated {speed}-speed runs: {k + 1}/{runs}, RMSE {r.rmse:.3e} m")
     return {"rmse": np.array(rmses), "theta_hat_end": np.array(thetas),
             "theta_truth": theta_truth(model), "theta0": ctrl.theta0.copy()}
+
+
+def _nominal_truth(model):
+    """A plant whose truth is exactly the controllers' nominal model (no payload, no Stribeck)."""
+    from .simulate import plant_truth
+    n = model.n_legs
+    th = model.theta_nominal
+    base = plant_truth(model)
+    return {**base, "alpha": th[0:n], "beta": th[n:2 * n], "gamma": th[2 * n:3 * n],
+            "fv": th[3 * n:4 * n], "fc": th[4 * n:5 * n], "fs": np.zeros(n)}
+
+
+def sensitivity(model):
+    """Table 3 under other assumptions of the simulation (what the ranking depends on).
+
+    Returns a list of (label, table3_json numbers).
+    """
+    fc = model.spec.sensing["velocity_filter_hz"]
+    variants = [(f"model file (velocity filter {fc:g} Hz)", {}),
+                ("velocity filter 100 Hz", {"velocity_filter_hz": 100.0}),
+                ("velocity filter 300 Hz", {"velocity_filter_hz": 300.0}),
+                ("exact encoders", {"quantise": False}),
+                ("plant truth = nominal model", {"truth": _nominal_truth(model)})]
+    return [(label, table3_json(table3(model, **kw))) for label, kw in variants]
+
+
+def format_sensitivity(rows):
+    speeds = list(rows[0][1])
+    head = f"{'variant':38s}" + "".join(f" | {s + ': APD, NA, NA G=0, RPE':>42s}" for s in speeds)
+    lines = [head]
+    for label, numbers in rows:
+        cells = "".join(f" | {r['apd_rmse']:.3e} {r['na_rmse']:.3e} {r['na_no_adaptation_rmse']:.3e}"
+                        f" {r['rpe_percent']:6.1f}%" for r in numbers.values())
+        lines.append(f"{label:38s}{cells}")
+    return "\n".join(lines)
