@@ -32,12 +32,16 @@ def _label(path):
         return path.name
 
 
-def _dense(f):
-    """The same function with dense outputs (the C binding takes dense buffers only)."""
-    if all(f.sparsity_out(i).is_dense() for i in range(f.n_out())):
+def _finalize(f):
+    """Dense outputs (the C binding takes dense buffers only) and, for SX functions, common
+    subexpressions merged across all outputs (ca.cse): identical nodes built by separate
+    conversions — e.g. cos(qa_i) — are computed once."""
+    if not f.is_a("SXFunction"):
+        assert all(f.sparsity_out(i).is_dense() for i in range(f.n_out())), f.name()
         return f
-    return ca.Function(f.name(), f.sx_in(), [ca.densify(o) for o in f.call(f.sx_in())],
-                       f.name_in(), f.name_out())
+    ins = f.sx_in()
+    outs = ca.cse([ca.densify(o) for o in f.call(ins)])
+    return ca.Function(f.name(), ins, outs, f.name_in(), f.name_out())
 
 
 def main(argv=None):
@@ -62,10 +66,10 @@ def main(argv=None):
     d = Derivation(spec)
     say("SymPy: H, A, W, Wdot, S, M, C, Me, Ce, S^T f_a, Y, forward dynamics derived")
     n, p = spec.n_legs, len(spec.param_names)
-    ctrl = controller_functions(d, spec.name)
-    plant = plant_functions(d, spec.name)
+    ctrl = [_finalize(f) for f in controller_functions(d, spec.name)]
+    plant = [_finalize(f) for f in plant_functions(d, spec.name)]
     loops = closed_loop_functions(d, spec.name, ctrl, plant, spec.rk4_substeps)
-    functions = [_dense(f) for f in model_functions(d, spec.name) + ctrl + plant + loops]
+    functions = [_finalize(f) for f in model_functions(d, spec.name)] + ctrl + plant + loops
     say(f"CasADi: {len(functions)} functions, "
         f"{sum(f.n_instructions() for f in functions)} instructions")
     layouts = {**controller_layouts(n, p), **closed_loop_layouts(n, p), "plant": plant_layout(n)}
