@@ -12,9 +12,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .controllers import APDController, NAController
+from .errors import SingularityError, WorkspaceError
 from .layout import Layout
 
-__all__ = ["simulate", "SimResult", "plant_truth", "rmse", "theta_truth"]
+__all__ = ["simulate", "SimResult", "plant_truth", "rmse", "theta_truth", "check_trajectory"]
 
 
 def plant_truth(model, **overrides):
@@ -103,6 +104,31 @@ class SimResult:
         return int(np.sum(self.status == 2))
 
 
+def check_trajectory(model, trajectory):
+    """Check every sample of a desired trajectory before a run.
+
+    Every sample must be reachable by every leg (WorkspaceError otherwise) and keep
+    min_i |sin(qb_i - qa_i)| >= ``limits.singularity_threshold`` (SingularityError), and the
+    samples must be finite. The error names the sample, its time and position.
+    """
+    xd = np.asarray(trajectory.xd, dtype=float)
+    if not np.isfinite(xd).all():
+        k = int(np.argwhere(~np.isfinite(xd))[0, 0])
+        raise ValueError(f"desired position at sample {k} is not finite: {xd[k].tolist()}")
+    thr = model.singularity_threshold
+    for k, x in enumerate(xd):
+        try:
+            q = model.ik(x)
+        except WorkspaceError as exc:
+            raise WorkspaceError(f"trajectory sample {k} (t = {trajectory.t[k]:.4f} s): {exc}") from None
+        measure = float(np.min(np.abs(model.singularity(q))))
+        if measure < thr:
+            raise SingularityError(
+                f"trajectory sample {k} (t = {trajectory.t[k]:.4f} s) at xe = {x.tolist()} is "
+                f"too close to a singularity: min_i |sin(qb_i - qa_i)| = {measure:.4g} < "
+                f"{thr} (limits.singularity_threshold)")
+
+
 def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_hat0=None,
              settle_time=0.0):
     """Run ``controller`` against the plant's truth along ``trajectory``: one call into C.
@@ -136,6 +162,7 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     if abs(trajectory.period - T) > 1e-12 * T:
         raise ValueError(f"trajectory period {trajectory.period} s differs from the "
                          f"controller's sample period {T} s")
+    check_trajectory(model, trajectory)
     n_move = len(trajectory.t)
     traj = trajectory.extended(settle_time) if settle_time > 0 else trajectory
     lays = model.manifest["layouts"]
