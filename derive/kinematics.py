@@ -110,6 +110,14 @@ class Kinematics:
         return table
 
     def unit_vectors_from_qa(self, O):
-        """(cos, sin) of the passive angles from the active ones and the tip O = fk(qa)."""
-        return {self.sym.qb[i]: ((O[0] - B[0]) / self.lb[i], (O[1] - B[1]) / self.lb[i])
-                for i, B in enumerate(self.elbows())}
+        """(cos, sin) of the passive angles from the active ones and the tip O = fk(qa).
+
+        Normalised by |O - B_i| rather than lb_i: the same as qb_i = atan2(O - B_i) even when
+        quantised angles make the legs slightly inconsistent (|O - B_i| != lb_i).
+        """
+        out = {}
+        for i, B in enumerate(self.elbows()):
+            d = O - B
+            r = sp.sqrt(d[0] ** 2 + d[1] ** 2)
+            out[self.sym.qb[i]] = (d[0] / r, d[1] / r)
+        return out

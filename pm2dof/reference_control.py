@@ -41,6 +41,7 @@ __all__ = [
     "passive_angles",
     "na_step",
     "apd_step",
+    "truth_friction",
     "plant_xedd",
     "plant_step",
     "measure",
@@ -214,6 +215,32 @@ def _truth_theta(truth: dict) -> np.ndarray:
                            for k in ("alpha", "beta", "gamma", "fv", "fc")])
 
 
+def truth_friction(va, truth: dict) -> np.ndarray:
+    """Friction torques of the simulated plant at the actuated joints, N m.
+
+    Parameters
+    ----------
+    va : array_like, shape (n,)
+        Active joint velocities, rad/s.
+    truth : dict
+        fv, fc, fs (n,), stribeck_velocity vs and coulomb_smoothing_velocity eps (scalars).
+
+    Returns
+    -------
+    f : ndarray, shape (n,)
+        (fc + fs / (1 + (va/vs)^2)) va / sqrt(va^2 + eps^2) + fv va: eq. 2 with a Stribeck
+        excess fs (Lorentzian decay) and sign(va) smoothed over eps (as derive/plant.py).
+        With fs = 0 and |va| >> eps this is eq. 2 (the relative gap is eps^2 / (2 va^2)).
+    """
+    va = np.asarray(va, dtype=float)
+    fc, fs, fv = (np.asarray(truth[k], dtype=float) for k in ("fc", "fs", "fv"))
+    vs = float(np.ravel(truth["stribeck_velocity"])[0])
+    eps = float(np.ravel(truth["coulomb_smoothing_velocity"])[0])
+    smooth_sign = va / np.sqrt(va * va + eps * eps)
+    stribeck = fs / (1.0 + (va / vs) ** 2)
+    return (fc + stribeck) * smooth_sign + fv * va
+
+
 def plant_xedd(g: Any, xe, xed, tau_a, truth: dict) -> np.ndarray:
     """Truth task-space acceleration of the plant (eq. 10 with the truth friction).
 
@@ -231,19 +258,14 @@ def plant_xedd(g: Any, xe, xed, tau_a, truth: dict) -> np.ndarray:
     Returns
     -------
     xedd : ndarray, shape (2,), m/s^2
-        Me^-1 (S^T (tau_a - f) - Ce xed) with, at each actuated joint of velocity va = S xed,
-        f = (fc + fs exp(-(va/vs)^2)) tanh(va/eps) + fv va (eq. 2 with a Stribeck excess and
-        the sign smoothed over eps = coulomb_smoothing_velocity).
+        Me^-1 (S^T (tau_a - f) - Ce xed), f = :func:`truth_friction` (S xed).
     """
     q = ref.ik(g, xe)
     xed = np.asarray(xed, dtype=float).reshape(2)
     theta = _truth_theta(truth)
     Sq = ref.S(g, q)
     va = Sq @ xed
-    fc, fs, fv = (np.asarray(truth[k], dtype=float) for k in ("fc", "fs", "fv"))
-    vs = float(np.ravel(truth["stribeck_velocity"])[0])
-    eps = float(np.ravel(truth["coulomb_smoothing_velocity"])[0])
-    fric = (fc + fs * np.exp(-(va / vs) ** 2)) * np.tanh(va / eps) + fv * va
+    fric = truth_friction(va, truth)
     rhs = Sq.T @ (np.asarray(tau_a, dtype=float) - fric) - ref.Ce(g, q, xed, theta) @ xed
     return np.linalg.solve(ref.Me(g, q, theta), rhs)
 
