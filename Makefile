@@ -10,12 +10,13 @@ OUT    ?= out
 MODEL_DIRS := $(patsubst %/manifest.json,%,$(wildcard generated/*/manifest.json))
 LIBS := $(foreach d,$(MODEL_DIRS),$(d)/lib$(notdir $(d)).so)
 
-.PHONY: install derive libs test demo bench clean help
+.PHONY: install derive derive-all libs test demo bench c-example clean help
 
 help:
 	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
 	@echo "make test     set up .venv, build, run the test suite"
 	@echo "make derive   re-derive $(MODEL) into generated/<name>/ and compile it (MODEL=path)"
+	@echo "make derive-all  re-derive every models/*.toml (after a change to derive/)"
 	@echo "make bench    controller step-time benchmark"
 	@echo "make install  only create .venv, install pm2dof and compile the generated C"
 
@@ -37,6 +38,9 @@ install: $(STAMP) libs
 
 derive: $(STAMP)
 	$(PY) -m derive $(MODEL)
+
+derive-all: $(STAMP)
+	for m in models/*.toml; do $(PY) -m derive $$m || exit 1; done
 
 test: install
 	$(PY) -m pytest -q

@@ -11,14 +11,14 @@ def _friction(model, v, params, constants):
     if model == "coulomb_viscous":                 # eq. 2
         fv, fc = params
         return fc * sgn(v) + fv * v
-    if model == "coulomb_viscous_stribeck":        # eq. 2 + Stribeck term, linear in fs
+    if model == "coulomb_viscous_stribeck":        # eq. 2 + Stribeck excess, linear in fs
         fv, fc, fs = params
         vs = sp.Rational(repr(constants["stribeck_velocity"]))
-        return (fc + fs * sp.exp(-(v / vs) ** 2)) * sgn(v) + fv * v
-    if model == "smooth_sign":                     # eq. 2 with sign -> tanh(v / eps)
+        return (fc + fs / (1 + (v / vs) ** 2)) * sgn(v) + fv * v
+    if model == "smooth_sign":                     # eq. 2 with sign(v) -> v / sqrt(v^2 + eps^2)
         fv, fc = params
         eps = sp.Rational(repr(constants["sign_smoothing_velocity"]))
-        return fc * sp.tanh(v / eps) + fv * v
+        return fc * v / sp.sqrt(v ** 2 + eps ** 2) + fv * v
     raise ValueError(f"unknown friction model {model!r}")
 
 

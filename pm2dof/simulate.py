@@ -44,12 +44,19 @@ def plant_truth(model, **overrides):
 
 
 def theta_truth(model, truth=None):
-    """The truth expressed in theta's coordinates (5n,): inertias with payload, fv, fc.
+    """The truth in theta's coordinates (``model.param_names`` order): inertias with payload,
+    fv, fc, and fs when the model's friction has a Stribeck term.
 
-    The Stribeck excess fs has no coordinate in theta; it is left out.
+    The paper's model (eq. 2) has no coordinate for the Stribeck excess; it is left out.
+    Smooth-sign or Stribeck shapes of the controller's model differ from the plant's, so
+    only the coefficients are compared.
     """
     t = plant_truth(model) if truth is None else truth
-    return np.concatenate([t["alpha"], t["beta"], t["gamma"], t["fv"], t["fc"]])
+    out = []
+    for name in model.param_names:
+        base, i = name.rstrip("0123456789"), int(name[len(name.rstrip("0123456789")):]) - 1
+        out.append(t[base][i])
+    return np.array(out)
 
 
 def rmse(xd, xe):
