@@ -18,6 +18,7 @@ help:
 	@echo "make derive   re-derive $(MODEL) into generated/<name>/ and compile it (MODEL=path)"
 	@echo "make derive-all  re-derive every models/*.toml (after a change to derive/)"
 	@echo "make bench    controller step-time benchmark"
+	@echo "make c-example  standalone C: NA against the compiled plant, paced at 2 ms"
 	@echo "make install  only create .venv, install pm2dof and compile the generated C"
 
 $(STAMP): pyproject.toml setup.py pm2dof/_cbind.c
@@ -50,6 +51,9 @@ demo: install
 
 bench: install
 	$(VENV)/bin/pm2dof bench
+
+c-example: install
+	$(MAKE) -C examples/c run
 
 clean:
 	rm -rf $(VENV) build pm2dof/*.so generated/*/*.so $(OUT)

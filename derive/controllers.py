@@ -1,6 +1,7 @@
 # Generated controller steps: Fig. 2 signal processing + NA law (eqs. 14-29) or APD law (eq. 40).
 import casadi as ca
 
+from .factored import regressor
 from .layouts import Layout
 
 __all__ = ["controller_layouts", "controller_functions", "STATUS"]
@@ -34,7 +35,7 @@ def controller_functions(d, prefix):
     Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot].
     """
     n, p = d.spec.n_legs, len(d.spec.param_names)
-    sym, kin, dyn = d.sym, d.kin, d.dyn
+    kin = d.kin
     lay = controller_layouts(n, p)
     state = ca.SX.sym("state", lay["ctrl_state"].size)
     qa = ca.SX.sym("qa", n)
@@ -59,9 +60,8 @@ def controller_functions(d, prefix):
             s = xrd - v                                 # eq. 15: s = edot + Q e
         else:
             xrd, xrdd = xd_dot, xd_ddot                 # eq. 40: nominal feedforward
-        conv = d.converter_qa(qa, [(sym.xed, v), (sym.xrd, xrd), (sym.xrdd, xrdd)])
-        Y = ca.reshape(conv(dyn.Y), p, 2).T             # row-major (2, p)
-        S = ca.reshape(conv(kin.S), 2, n).T             # row-major (n, 2)
+        Y, S, _ = regressor(d, base, v, xrd, xrdd)      # eq. 13, factored (derive/factored.py)
+        conv = base
         if law == "na":
             u = Y @ theta + P["Kd"] * s                 # eq. 29: S^T tau_a
             theta_next = theta + P["T"] * P["Gamma"] * (Y.T @ s)   # eq. 28, explicit Euler

@@ -35,7 +35,7 @@ class Dynamics:
         self.spec, self.sym, self.kin = spec, sym, kin
         n = spec.n_legs
         q = sym.q
-        self.qd = sp.Matrix(sp.symbols(f"qda1:{n + 1}", real=True) + sp.symbols(f"qdb1:{n + 1}", real=True))
+        self.qd = sym.qd
         T = 0
         for i in range(n):
             alpha, beta, gamma = sym.leg_params(i, ("alpha", "beta", "gamma"))
@@ -59,6 +59,10 @@ class Dynamics:
         tau = self.Me * sym.xrdd + self.Ce * sym.xrd + self.StF              # eq. 13
         self.Y = tau.jacobian(sym.theta)                                    # eq. 13: Y = d tau / d theta
         rhs = S.T * sym.tau_a - self.Ce * sym.xed - self.StF               # eq. 10
+        # joint-space factors of Y (used by the generated controller steps): with qd, qd^r,
+        # qdd^r as free symbols, Y = W^T Y_joint + S^T Y_friction (eqs. 9, 12, 13)
+        self.Y_joint = (self.M * sym.qddr + self.C * sym.qdr).jacobian(sym.theta)
+        self.Y_friction = self.f_a.jacobian(sym.theta)
         self.xedd = solve2(self.Me, rhs)                                    # Me xedd = rhs
 
     def _christoffel(self):

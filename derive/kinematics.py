@@ -35,6 +35,10 @@ class Kinematics:
         self.H = sp.Matrix.vstack(*[self.tips[0] - self.tips[i] for i in range(1, n)])  # eq. 5
         self.A = self.H.jacobian(sym.q)                                             # eq. 6
         self.W = self._W()                                                          # eq. 7
+        # each leg's tip Jacobian J_i = d tip_i / d(qa_i, qb_i) and its rate along qd
+        self.J = [self.tips[i].jacobian([sym.qa[i], sym.qb[i]]) for i in range(n)]
+        self.Jdot = [J.diff(sym.qa[i]) * sym.qd[i] + J.diff(sym.qb[i]) * sym.qd[n + i]
+                     for i, J in enumerate(self.J)]
         self.S = self.W[:n, :]                                                      # eq. 8
         qd = self.W * sym.xed
         self.Wdot = sp.Matrix(2 * n, 2, lambda r, c: sum(                           # eq. 9

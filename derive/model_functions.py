@@ -57,8 +57,8 @@ class Derivation:
         n = self.spec.n_legs
         values = [ca.fabs(conv(self.kin.sin_ab(i))) for i in range(n)]
         out = values[0]
-        for v in values[1:]:
-            out = ca.fmin(out, v)
+        for v in values[1:]:  # min(a, b) = (a + b - |a - b|) / 2: unlike C's fmin, keeps NaN
+            out = (out + v - ca.fabs(out - v)) / 2
         return out
 
 

@@ -1,7 +1,9 @@
 # Generated plant: truth dynamics with Stribeck friction, RK4 under a zero-order hold, encoder.
 import casadi as ca
+import sympy as sp
 
 from .controllers import controller_layouts
+from .factored import task_inertia_coriolis
 from .layouts import Layout
 
 __all__ = ["plant_layout", "plant_functions", "closed_loop_layouts", "closed_loop_functions"]
@@ -25,20 +27,14 @@ def closed_loop_layouts(n, p):
 def plant_functions(d, prefix):
     """``<prefix>_plant_xedd``, ``<prefix>_plant_step`` (one RK4 step of h s), ``<prefix>_measure``."""
     n = d.spec.n_legs
-    sym, kin, dyn = d.sym, d.kin, d.dyn
+    sym, kin = d.sym, d.kin
     lay = plant_layout(n)
     xe, xed, tau = ca.SX.sym("xe", 2), ca.SX.sym("xed", 2), ca.SX.sym("tau_a", n)
     pp = ca.SX.sym("plant", lay.size)
     P = lay.split(pp)
-    inertial = {}
-    for i in range(n):
-        for name in ("alpha", "beta", "gamma"):
-            inertial[sym.param[f"{name}{i + 1}"]] = P[name][i]
-    conv = d.converter_xe(xe, [(sym.xed, xed)])
-    conv.symbols.update(inertial)
-    Me = ca.reshape(conv(dyn.Me), 2, 2).T
-    Ce = ca.reshape(conv(dyn.Ce), 2, 2).T
-    S = ca.reshape(conv(kin.S), 2, n).T
+    inertial = [(sp.Matrix([sym.param[f"{name}{i + 1}"] for i in range(n)]), P[name])
+                for name in ("alpha", "beta", "gamma")]
+    Me, Ce_v, S, _ = task_inertia_coriolis(d, d.converter_xe(xe), xed, inertial)  # eq. 12
     va = S @ xed
     # truth friction: Coulomb smoothed over +-coulomb_smoothing_velocity (algebraic sign
     # v / sqrt(v^2 + eps^2)), Stribeck excess fs with a Lorentzian decay 1 / (1 + (v/vs)^2);
@@ -47,7 +43,7 @@ def plant_functions(d, prefix):
     smooth_sign = va / ca.sqrt(va * va + eps2)
     stribeck = P["fs"] / (1 + (va / P["stribeck_velocity"]) ** 2)
     fric = (P["fc"] + stribeck) * smooth_sign + P["fv"] * va
-    rhs = S.T @ (tau - fric) - Ce @ xed                  # eq. 10 with the plant's friction
+    rhs = S.T @ (tau - fric) - Ce_v                      # eq. 10 with the plant's friction
     xedd = ca.vertcat(*solve2_ca(Me, rhs))
     f_xedd = ca.Function(f"{prefix}_plant_xedd", [xe, xed, tau, pp], [xedd],
                          ["xe", "xed", "tau_a", "plant"], ["xedd"])

@@ -37,6 +37,10 @@ class Symbols:
         self.xrd = sp.Matrix(sp.symbols("xrd yrd", real=True))  # reference velocity qd_e^r
         self.xrdd = sp.Matrix(sp.symbols("xrdd yrdd", real=True))  # reference acceleration
         self.tau_a = sp.Matrix(sp.symbols(f"tau_a1:{n + 1}", real=True))
+        # joint-space velocities: measured qd, reference qd^r = W xrd, qdd^r = W xrdd + Wdot xrd
+        self.qd = sp.Matrix(sp.symbols(f"qda1:{n + 1}", real=True) + sp.symbols(f"qdb1:{n + 1}", real=True))
+        self.qdr = sp.Matrix(sp.symbols(f"qdra1:{n + 1}", real=True) + sp.symbols(f"qdrb1:{n + 1}", real=True))
+        self.qddr = sp.Matrix(sp.symbols(f"qddra1:{n + 1}", real=True) + sp.symbols(f"qddrb1:{n + 1}", real=True))
         self.theta = sp.Matrix(sp.symbols(" ".join(param_names), real=True))
         self.param = dict(zip(param_names, self.theta))
 

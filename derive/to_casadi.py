@@ -28,6 +28,15 @@ class Converter:
         self.trig = dict(trig or {})
         self.cache = {}
 
+    def extended(self, pairs):
+        """A converter with more symbols bound ((sympy symbols, SX vector) pairs). It shares the
+        trig table and starts from a copy of this cache, so common pieces convert once."""
+        out = Converter(self.symbols, self.trig)
+        out.cache = dict(self.cache)
+        for syms, value in pairs:
+            out.symbols.update(zip(syms, ca.vertsplit(value)))
+        return out
+
     def __call__(self, expr):
         if isinstance(expr, sp.MatrixBase):  # row-major flattening, the layout of every output
             return ca.vertcat(*[self(e) for e in expr]) if expr.shape[0] * expr.shape[1] else ca.SX(0, 1)

@@ -7,6 +7,7 @@ Typical use:
   pm2dof figures --out DIR    error, torque, theta_hat and repeated-run figures (PNG)
   pm2dof report               what the compiled model says (Me, cond(S^T S), rank of Y)
   pm2dof identify [--report]  identifiable parameters; least-squares estimate of theta
+  pm2dof bench [--json]       controller step time: C, Python binding, CasADi, NumPy, SymPy
   pm2dof derive MODEL.toml    re-derive a model file into generated/<name>/ and compile it
 
 Every command takes --model PATH (default models/shang2010.toml). Run
@@ -150,6 +151,19 @@ def cmd_identify(args):
     return 0
 
 
+def cmd_bench(args):
+    from .bench import format_bench, run_bench
+    m = _model(args)
+    res = run_bench(m, quick=args.quick, progress=None if args.json else _progress)
+    if args.json:
+        import json
+        from .results import _jsonable
+        print(json.dumps(res, indent=1, default=_jsonable))
+    else:
+        print(format_bench(res))
+    return 0
+
+
 def build_parser():
     ap = argparse.ArgumentParser(prog="pm2dof", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -204,6 +218,15 @@ def build_parser():
     p.add_argument("--seed-na", action="store_true",
                    help="rerun the moves with NA seeded by the identified theta")
     p.set_defaults(func=cmd_identify)
+    from .bench import run_bench
+    p = sub.add_parser("bench", parents=[common], help="controller step-time benchmark",
+                       description=(run_bench.__doc__ or "").split("\n\n")[0] + " Targets: NA "
+                       "step in C <= 250 ns, from Python <= 1 us, rollout >= 500k steps/s, C >= "
+                       "300x NumPy, binding >= 50x casadi.Function. Quote medians from one run: "
+                       "this machine is shared and noisy.")
+    p.add_argument("--json", action="store_true", help="print the results as JSON")
+    p.add_argument("--quick", action="store_true", help="few repeats (a few seconds; for tests)")
+    p.set_defaults(func=cmd_bench)
     p = sub.add_parser("derive", help="derive a model file and generate + compile its C",
                        description="Derive MODEL.toml with SymPy, generate C with CasADi into "
                        "generated/<name>/ (other models' code is left alone) and compile it. "

@@ -53,8 +53,8 @@ class _Controller:
         self.params.setflags(write=False)
         self._f = model.function(f"{self._law}_step")
         n = model.n_legs
-        self._states = [np.zeros(self.state_layout.size), np.zeros(self.state_layout.size)]
-        self._tau = np.zeros(n)
+        self._states = (np.zeros(self.state_layout.size), np.zeros(self.state_layout.size))
+        self._n = n
         self._status = np.zeros(1)
         self._diag = np.zeros(8)
         self._ready = False
@@ -76,18 +76,17 @@ class _Controller:
 
         Returns a new array, or writes into ``out`` (n,) and returns it (no allocation).
         Non-finite inputs raise ValueError and leave the controller unchanged; a singular
-        pose gives the safe torque zero (``status == "singular"``).
+        pose gives the safe torque zero (``status == "singular"``). Inputs should be float64
+        arrays (the fast path); other array-likes raise TypeError from the binding.
         """
         if not self._ready:
             raise RuntimeError("call reset(qa0) before the first step")
         s0, s1 = self._states
-        self._f(s0, qa_meas, xd, xd_dot, xd_ddot, self.params, self._tau, s1, self._status,
+        tau = np.empty(self._n) if out is None else out  # the C checks out's dtype and size
+        self._f(s0, qa_meas, xd, xd_dot, xd_ddot, self.params, tau, s1, self._status,
                 self._diag)
-        self._states = [s1, s0]
-        if out is None:
-            return self._tau.copy()
-        out[:] = self._tau
-        return out
+        self._states = (s1, s0)
+        return tau
 
     @property
     def status(self):

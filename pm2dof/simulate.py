@@ -123,16 +123,30 @@ def check_trajectory(model, trajectory):
         k = int(np.argwhere(~np.isfinite(xd))[0, 0])
         raise ValueError(f"desired position at sample {k} is not finite: {xd[k].tolist()}")
     thr = model.singularity_threshold
-    for k, x in enumerate(xd):
+    # vectorised geometry of every sample at once (the same law of cosines as ik, in NumPy);
+    # the first offending sample is then re-checked with the generated ik for its message
+    measure = np.full(len(xd), np.inf)
+    for leg in model.spec.legs:
+        d = xd - np.asarray(leg.base)
+        dist = np.hypot(d[:, 0], d[:, 1])
+        with np.errstate(invalid="ignore", divide="ignore"):
+            c = (leg.la ** 2 + dist ** 2 - leg.lb ** 2) / (2 * leg.la * dist)
+            # |sin(qb - qa)| = dist sin(psi) / lb: the law of sines in the triangle A B O
+            s_ab = dist * np.sqrt(1 - c * c) / leg.lb
+        s_ab[~(np.abs(c) <= 1)] = np.nan
+        measure = np.minimum(measure, s_ab)  # NaN (out of reach) propagates
+    bad = np.flatnonzero(~(measure >= thr * (1 - 1e-12)))
+    for k in bad[:1]:
+        x = xd[k]
         try:
             q = model.ik(x)
         except WorkspaceError as exc:
             raise WorkspaceError(f"trajectory sample {k} (t = {trajectory.t[k]:.4f} s): {exc}") from None
-        measure = float(np.min(np.abs(model.singularity(q))))
-        if measure < thr:
+        value = float(np.min(np.abs(model.singularity(q))))
+        if value < thr:
             raise SingularityError(
                 f"trajectory sample {k} (t = {trajectory.t[k]:.4f} s) at xe = {x.tolist()} is "
-                f"too close to a singularity: min_i |sin(qb_i - qa_i)| = {measure:.4g} < "
+                f"too close to a singularity: min_i |sin(qb_i - qa_i)| = {value:.4g} < "
                 f"{thr} (limits.singularity_threshold)")
 
 

@@ -432,7 +432,7 @@ int fivebar_na_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, ca
 #define fivebar_na_closed_loop_SZ_ARG 9
 #define fivebar_na_closed_loop_SZ_RES 6
 #define fivebar_na_closed_loop_SZ_IW 0
-#define fivebar_na_closed_loop_SZ_W 156
+#define fivebar_na_closed_loop_SZ_W 121
 int fivebar_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_apd_closed_loop_checkout(void);
 void fivebar_apd_closed_loop_release(int mem);
@@ -450,7 +450,7 @@ int fivebar_apd_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, c
 #define fivebar_apd_closed_loop_SZ_ARG 9
 #define fivebar_apd_closed_loop_SZ_RES 6
 #define fivebar_apd_closed_loop_SZ_IW 0
-#define fivebar_apd_closed_loop_SZ_W 156
+#define fivebar_apd_closed_loop_SZ_W 121
 void fivebar_casadi_version(int* major, int* minor, int* patch);
 int fivebar_casadi_int_size(void);
 int fivebar_casadi_real_size(void);

@@ -432,7 +432,7 @@ int fourleg_na_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, ca
 #define fourleg_na_closed_loop_SZ_ARG 9
 #define fourleg_na_closed_loop_SZ_RES 6
 #define fourleg_na_closed_loop_SZ_IW 0
-#define fourleg_na_closed_loop_SZ_W 256
+#define fourleg_na_closed_loop_SZ_W 187
 int fourleg_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_apd_closed_loop_checkout(void);
 void fourleg_apd_closed_loop_release(int mem);
@@ -450,7 +450,7 @@ int fourleg_apd_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, c
 #define fourleg_apd_closed_loop_SZ_ARG 9
 #define fourleg_apd_closed_loop_SZ_RES 6
 #define fourleg_apd_closed_loop_SZ_IW 0
-#define fourleg_apd_closed_loop_SZ_W 256
+#define fourleg_apd_closed_loop_SZ_W 187
 void fourleg_casadi_version(int* major, int* minor, int* patch);
 int fourleg_casadi_int_size(void);
 int fourleg_casadi_real_size(void);

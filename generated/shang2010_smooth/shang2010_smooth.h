@@ -432,7 +432,7 @@ int shang2010_smooth_na_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* s
 #define shang2010_smooth_na_closed_loop_SZ_ARG 9
 #define shang2010_smooth_na_closed_loop_SZ_RES 6
 #define shang2010_smooth_na_closed_loop_SZ_IW 0
-#define shang2010_smooth_na_closed_loop_SZ_W 208
+#define shang2010_smooth_na_closed_loop_SZ_W 156
 int shang2010_smooth_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_apd_closed_loop_checkout(void);
 void shang2010_smooth_apd_closed_loop_release(int mem);
@@ -450,7 +450,7 @@ int shang2010_smooth_apd_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* 
 #define shang2010_smooth_apd_closed_loop_SZ_ARG 9
 #define shang2010_smooth_apd_closed_loop_SZ_RES 6
 #define shang2010_smooth_apd_closed_loop_SZ_IW 0
-#define shang2010_smooth_apd_closed_loop_SZ_W 208
+#define shang2010_smooth_apd_closed_loop_SZ_W 156
 void shang2010_smooth_casadi_version(int* major, int* minor, int* patch);
 int shang2010_smooth_casadi_int_size(void);
 int shang2010_smooth_casadi_real_size(void);

@@ -432,7 +432,7 @@ int unequal_na_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, ca
 #define unequal_na_closed_loop_SZ_ARG 9
 #define unequal_na_closed_loop_SZ_RES 6
 #define unequal_na_closed_loop_SZ_IW 0
-#define unequal_na_closed_loop_SZ_W 242
+#define unequal_na_closed_loop_SZ_W 183
 int unequal_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int unequal_apd_closed_loop_checkout(void);
 void unequal_apd_closed_loop_release(int mem);
@@ -450,7 +450,7 @@ int unequal_apd_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, c
 #define unequal_apd_closed_loop_SZ_ARG 9
 #define unequal_apd_closed_loop_SZ_RES 6
 #define unequal_apd_closed_loop_SZ_IW 0
-#define unequal_apd_closed_loop_SZ_W 242
+#define unequal_apd_closed_loop_SZ_W 183
 void unequal_casadi_version(int* major, int* minor, int* patch);
 int unequal_casadi_int_size(void);
 int unequal_casadi_real_size(void);
