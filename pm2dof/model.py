@@ -157,9 +157,9 @@ class Model:
         except (TypeError, ValueError):
             args = self._coerce(f, args)
             f(*args, out, sing) if sing is not None else f(*args, out)
-        if short == "forward_dynamics" and not (out[0] == out[0] and out[1] == out[1]):
-            self.ik(args[0])  # NaN: xe is out of reach (C's fmin drops NaN); ik names the leg
         if sing is not None and not sing[0] >= self._sing_thr:
+            if sing[0] != sing[0] and short == "forward_dynamics":
+                self.ik(args[0])  # NaN measure: some leg cannot reach xe; ik names it
             raise SingularityError(
                 f"{short}: the pose is too close to a singularity: min_i |sin(qb_i - qa_i)| = "
                 f"{sing[0]:.4g} < threshold {self._sing_thr} (limits.singularity_threshold)")
