@@ -7,16 +7,43 @@ from .layouts import Layout
 __all__ = ["controller_layouts", "controller_functions", "STATUS"]
 
 # status codes of a step (also in the manifest): what the step did with this sample
-STATUS = {"ok": 0, "singular": 1, "saturated": 2}
+STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3}
+# smallest alpha, gamma the optional projection of theta_hat allows, kg*m^2
+PROJECTION_FLOOR = 1e-6
 
 
 def controller_layouts(n, p):
     """Flat-vector layouts: the controller state and each controller's parameters."""
     state = Layout([("xe_prev", 2), ("v", 2), ("theta_hat", p)])
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("tau_max", n)]
-    na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p)] + common)
+    na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p), ("project", 1)] + common)
     apd = Layout([("Kp", 2), ("Kv", 2)] + common)
     return {"ctrl_state": state, "na_params": na, "apd_params": apd}
+
+
+def _project(theta, param_names, n):
+    """theta_hat onto physically consistent values: alpha, gamma >= PROJECTION_FLOOR,
+    beta^2 <= alpha gamma (each leg's inertia block PSD), friction parameters >= 0."""
+    idx = {name: k for k, name in enumerate(param_names)}
+    out = [theta[k] for k in range(theta.numel())]
+    for i in range(1, n + 1):
+        a = ca.fmax(theta[idx[f"alpha{i}"]], PROJECTION_FLOOR)
+        g = ca.fmax(theta[idx[f"gamma{i}"]], PROJECTION_FLOOR)
+        bmax = ca.sqrt(a * g)
+        out[idx[f"alpha{i}"]], out[idx[f"gamma{i}"]] = a, g
+        out[idx[f"beta{i}"]] = ca.fmin(ca.fmax(theta[idx[f"beta{i}"]], -bmax), bmax)
+    for name, k in idx.items():
+        if not name.startswith(("alpha", "beta", "gamma")):
+            out[k] = ca.fmax(theta[k], 0)
+    return ca.vertcat(*out)
+
+
+def _all_finite(x):
+    """1 if every element of x is finite: |x| < inf is false for NaN and +-inf."""
+    ok = ca.fabs(x[0]) < ca.inf
+    for k in range(1, x.numel()):
+        ok = ca.logic_and(ok, ca.fabs(x[k]) < ca.inf)
+    return ok
 
 
 def _min_norm_torque(S, u):
@@ -32,7 +59,9 @@ def controller_functions(d, prefix):
 
     Inputs: state (xe_prev, v, theta_hat), qa (measured active angles), xd, xd_dot, xd_ddot
     (desired position, velocity, acceleration), params (see controller_layouts).
-    Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot].
+    Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot, sing].
+    A bad sample (singular pose, or any non-finite intermediate) gives the safe torque zero
+    and leaves theta_hat unchanged; a non-finite sample also keeps xe_prev and v.
     """
     n, p = d.spec.n_legs, len(d.spec.param_names)
     kin = d.kin
@@ -65,21 +94,28 @@ def controller_functions(d, prefix):
         if law == "na":
             u = Y @ theta + P["Kd"] * s                 # eq. 29: S^T tau_a
             theta_next = theta + P["T"] * P["Gamma"] * (Y.T @ s)   # eq. 28, explicit Euler
+            theta_next = ca.if_else(P["project"] > 0,             # optional, off by default
+                                    _project(theta_next, d.spec.param_names, n), theta_next)
         else:
             u = Y @ theta + P["Kp"] * e + P["Kv"] * edot           # eq. 40
             theta_next = theta
         tau = _min_norm_torque(S, u)                    # eq. 21
         tau_sat = ca.fmin(ca.fmax(tau, -P["tau_max"]), P["tau_max"])
         saturated = ca.mmax(ca.fabs(tau) - P["tau_max"]) > 0
-        ok = d.singularity_measure(conv) >= P["sing_threshold"]
-        tau_out = ca.if_else(ok, tau_sat, ca.DM.zeros(n))          # safe torque: zero
-        theta_out = ca.if_else(ok, theta_next, theta)              # no update on a bad sample
-        status = ca.if_else(ok, ca.if_else(saturated, STATUS["saturated"], STATUS["ok"]),
-                            STATUS["singular"])
-        state_next = lay["ctrl_state"].pack(xe_prev=xe, v=v, theta_hat=theta_out)
+        sing = d.singularity_measure(conv)
+        regular = sing >= P["sing_threshold"]                      # false for NaN too
+        finite = _all_finite(ca.vertcat(tau, theta_next, xe, v))
+        good = ca.logic_and(regular, finite)
+        tau_out = ca.if_else(good, tau_sat, ca.DM.zeros(n))        # safe torque: zero
+        theta_out = ca.if_else(good, theta_next, theta)            # no update on a bad sample
+        status = ca.if_else(regular, ca.if_else(finite, ca.if_else(
+            saturated, STATUS["saturated"], STATUS["ok"]), STATUS["non_finite"]),
+            STATUS["singular"])
+        state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(finite, xe, st["xe_prev"]),
+                                            v=ca.if_else(finite, v, st["v"]), theta_hat=theta_out)
         functions.append(ca.Function(
             f"{prefix}_{law}_step", [state, qa, xd, xd_dot, xd_ddot, params],
-            [tau_out, state_next, status, ca.vertcat(xe, v, e, edot)],
+            [tau_out, state_next, status, ca.vertcat(xe, v, e, edot, sing)],
             ["state", "qa", "xd", "xd_dot", "xd_ddot", "params"],
             ["tau_a", "state_next", "status", "diag"]))
     return functions

@@ -240,7 +240,7 @@ def _random_cases(model, ctrl, rng, count, center):
 
 
 def _c_step(f, params, case, n):
-    tau, s1, st, dg = np.empty(n), np.empty(len(case[0])), np.empty(1), np.empty(8)
+    tau, s1, st, dg = np.empty(n), np.empty(len(case[0])), np.empty(1), np.empty(f.sizes_out[3])
     f(*case, params, tau, s1, st, dg)
     return tau, s1, int(st[0])
 
@@ -450,7 +450,7 @@ def run_bench(model=None, quick=False, progress=None):
     say(f"C loop: na_step and apd_step, {repeats} x {c_inner} calls")
     for law, ctrl in (("na", na), ("apd", apd)):
         f = model.function(f"{law}_step")
-        outs = (np.empty(n), np.empty(len(op[0])), np.empty(1), np.empty(8))
+        outs = (np.empty(n), np.empty(len(op[0])), np.empty(1), np.empty(f.sizes_out[3]))
         f.time_calls(max(1, c_inner // 10), 1, *op, ctrl.params, *outs)  # warm up
         st = _stats(f.time_calls(c_inner, repeats, *op, ctrl.params, *outs))
         res[f"{law}_step_c_ns"], res[f"{law}_step_c_ns_min"] = st["median"], st["min"]
@@ -471,7 +471,7 @@ def run_bench(model=None, quick=False, progress=None):
             step(qa, xd, xd_dot, xd_ddot)
 
     fna = model.function("na_step")
-    s1, tau, stat, dg = np.empty_like(state0), np.empty(n), np.empty(1), np.empty(8)
+    s1, tau, stat, dg = np.empty_like(state0), np.empty(n), np.empty(1), np.empty(fna.sizes_out[3])
     params = na.params
 
     def run_binding(k):

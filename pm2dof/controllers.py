@@ -8,15 +8,17 @@ parameter update (eq. 28, explicit Euler over the sample period). Torques are cl
 ``limits.tau_max``; at a pose closer to a singularity than ``limits.singularity_threshold``
 the step outputs the safe torque zero and leaves theta_hat unchanged (see ``status``).
 """
+import array
 import math
 
 import numpy as np
 
+from .errors import SingularityError
 from .layout import Layout
 
 __all__ = ["NAController", "APDController", "STATUS_NAMES"]
 
-STATUS_NAMES = {0: "ok", 1: "singular", 2: "saturated"}
+STATUS_NAMES = {0: "ok", 1: "singular", 2: "saturated", 3: "non_finite"}
 
 
 def velocity_filter_alpha(sample_period, cutoff_hz):
@@ -29,7 +31,11 @@ def velocity_filter_alpha(sample_period, cutoff_hz):
 class _Controller:
     _law = ""
 
-    def __init__(self, model, gains, theta0, sample_period, velocity_filter_hz, tau_max):
+    def __init__(self, model, gains, theta0, sample_period, velocity_filter_hz, tau_max,
+                 on_singular):
+        if on_singular not in ("raise", "zero"):
+            raise ValueError(f"on_singular must be 'raise' or 'zero', got {on_singular!r}")
+        self.on_singular = on_singular
         spec = model.spec
         lays = model.manifest["layouts"]
         self.model = model
@@ -55,8 +61,8 @@ class _Controller:
         n = model.n_legs
         self._states = (np.zeros(self.state_layout.size), np.zeros(self.state_layout.size))
         self._n = n
-        self._status = np.zeros(1)
-        self._diag = np.zeros(8)
+        self._status = array.array("d", [0.0])  # array: reading [0] is ~3x cheaper than numpy
+        self._diag = np.zeros(9)
         self._ready = False
 
     def reset(self, qa0, theta_hat=None):
@@ -75,8 +81,12 @@ class _Controller:
         velocity (2,) m/s and acceleration (2,) m/s^2 -> actuator torques tau_a (n,) N*m.
 
         Returns a new array, or writes into ``out`` (n,) and returns it (no allocation).
-        Non-finite inputs raise ValueError and leave the controller unchanged; a singular
-        pose gives the safe torque zero (``status == "singular"``). Inputs should be float64
+        Non-finite inputs raise ValueError and leave the controller unchanged. At a pose
+        closer to a singularity than ``limits.singularity_threshold`` the step raises
+        SingularityError (a ValueError), or with ``on_singular="zero"`` returns the safe
+        torque zero; either way theta_hat is not updated (``status == "singular"``). A
+        non-finite intermediate result gives zero torque and leaves the whole state as it
+        was (``status == "non_finite"``). The next good sample gives a finite torque. Inputs should be float64
         arrays (the fast path); other array-likes raise TypeError from the binding.
         """
         if not self._ready:
@@ -86,6 +96,12 @@ class _Controller:
         self._f(s0, qa_meas, xd, xd_dot, xd_ddot, self.params, tau, s1, self._status,
                 self._diag)
         self._states = (s1, s0)
+        if self._status[0] == 1.0 and self.on_singular == "raise":
+            raise SingularityError(
+                f"controller step at a pose too close to a singularity: min_i |sin(qb_i - "
+                f"qa_i)| = {self._diag[8]:.4g} < {self.model.singularity_threshold} "
+                f"(limits.singularity_threshold); theta_hat was not updated and the safe "
+                f"torque is zero (on_singular='zero' returns it instead of raising)")
         return tau
 
     @property
@@ -100,9 +116,10 @@ class _Controller:
 
     @property
     def diag(self):
-        """Last step's signal processing: dict of xe (2,) m, v (2,) m/s, e (2,) m, edot (2,) m/s."""
+        """Last step's signal processing: dict of xe (2,) m, v (2,) m/s, e (2,) m, edot (2,) m/s,
+        sing (the singularity measure min_i |sin(qb_i - qa_i)|)."""
         d = self._diag.copy()
-        return {"xe": d[0:2], "v": d[2:4], "e": d[4:6], "edot": d[6:8]}
+        return {"xe": d[0:2], "v": d[2:4], "e": d[4:6], "edot": d[6:8], "sing": float(d[8])}
 
 
 class NAController(_Controller):
@@ -123,16 +140,22 @@ class NAController(_Controller):
         Cutoff of the velocity low-pass, Hz; 0 for the raw backward difference.
     tau_max : array_like (n,), optional
         Torque limits, N*m (default ``[limits].tau_max``).
+    project : bool
+        Project theta_hat after each update onto physical values (alpha, gamma > 0,
+        beta^2 <= alpha gamma, friction >= 0). Off by default, as in the paper.
+    on_singular : {"raise", "zero"}
+        What ``step`` does at a singular pose: raise SingularityError, or return zeros.
     """
     _law = "na"
 
     def __init__(self, model, *, Kd=None, Q=None, Gamma=None, theta0=None, sample_period=None,
-                 velocity_filter_hz=None, tau_max=None):
+                 velocity_filter_hz=None, tau_max=None, project=False, on_singular="raise"):
         g = model.spec.gains["na"]
         super().__init__(model, {"Kd": g["Kd"] if Kd is None else Kd,
                                  "Q": g["Q"] if Q is None else Q,
-                                 "Gamma": g["Gamma"] if Gamma is None else Gamma},
-                         theta0, sample_period, velocity_filter_hz, tau_max)
+                                 "Gamma": g["Gamma"] if Gamma is None else Gamma,
+                                 "project": 1.0 if project else 0.0},
+                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular)
 
     @property
     def theta_hat(self):
@@ -149,8 +172,8 @@ class APDController(_Controller):
     _law = "apd"
 
     def __init__(self, model, *, Kp=None, Kv=None, theta0=None, sample_period=None,
-                 velocity_filter_hz=None, tau_max=None):
+                 velocity_filter_hz=None, tau_max=None, on_singular="raise"):
         g = model.spec.gains["apd"]
         super().__init__(model, {"Kp": g["Kp"] if Kp is None else Kp,
                                  "Kv": g["Kv"] if Kv is None else Kv},
-                         theta0, sample_period, velocity_filter_hz, tau_max)
+                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular)

@@ -50,7 +50,9 @@ __all__ = [
 ]
 
 #: Status codes of a controller step (same as the manifest's ``status_codes``).
-STATUS = {"ok": 0, "singular": 1, "saturated": 2}
+STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3}
+#: alpha, gamma floor of the optional projection of theta_hat, kg*m^2
+PROJECTION_FLOOR = 1e-6
 
 
 def layouts(n: int) -> dict:
@@ -76,7 +78,7 @@ def layouts(n: int) -> dict:
     state = [("xe_prev", 2), ("v", 2), ("theta_hat", p)]
     fields = {
         "ctrl_state": state,
-        "na_params": [("Kd", 2), ("Q", 2), ("Gamma", p)] + common,
+        "na_params": [("Kd", 2), ("Q", 2), ("Gamma", p), ("project", 1)] + common,
         "apd_params": [("Kp", 2), ("Kv", 2)] + common,
         "plant": [(k, n) for k in ("alpha", "beta", "gamma", "fv", "fc", "fs")]
         + [("stribeck_velocity", 1), ("coulomb_smoothing_velocity", 1), ("encoder_step", 1)],
@@ -114,6 +116,19 @@ def passive_angles(g: Any, qa: np.ndarray, xe: np.ndarray) -> np.ndarray:
     return np.arctan2(d[:, 1], d[:, 0])
 
 
+def project(theta: np.ndarray, n: int) -> np.ndarray:
+    """theta (5n,) onto physical values: alpha, gamma >= floor, |beta| <= sqrt(alpha gamma),
+    fv, fc >= 0 (the optional projection of the NA update)."""
+    th = np.array(theta, dtype=float)
+    a = np.maximum(th[0:n], PROJECTION_FLOOR)
+    g = np.maximum(th[2 * n:3 * n], PROJECTION_FLOOR)
+    bmax = np.sqrt(a * g)
+    th[0:n], th[2 * n:3 * n] = a, g
+    th[n:2 * n] = np.minimum(np.maximum(th[n:2 * n], -bmax), bmax)
+    th[3 * n:] = np.maximum(th[3 * n:], 0.0)
+    return th
+
+
 def _min_norm_torque(Sq: np.ndarray, u: np.ndarray) -> np.ndarray:
     """Eq. 21: tau_a = S (S^T S)^-1 u, the minimum-norm torques with S^T tau_a = u."""
     return Sq @ np.linalg.solve(Sq.T @ Sq, u)
@@ -145,20 +160,25 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params):
     if law == "na":
         u = Yq @ theta + P["Kd"] * s                              # eq. 29
         theta_next = theta + T * P["Gamma"] * (Yq.T @ s)          # eq. 28, explicit Euler
+        if P["project"][0] > 0:
+            theta_next = project(theta_next, n)
     else:
         u = Yq @ theta + P["Kp"] * e + P["Kv"] * edot             # eq. 40
         theta_next = theta
     tau = _min_norm_torque(ref.S(g, q), u)                        # eq. 21
     tau_max = P["tau_max"]
     sing = float(np.min(np.abs(np.sin(q[n:] - q[:n]))))
-    if sing >= P["sing_threshold"][0]:
+    finite = bool(np.isfinite(np.concatenate([tau, theta_next, xe, v])).all())
+    if not sing >= P["sing_threshold"][0]:  # singular (or NaN measure): safe torque, no update
+        status, tau_out, theta_out = STATUS["singular"], np.zeros(n), theta
+    elif not finite:                       # non-finite: safe torque, keep the whole state
+        status, tau_out, theta_out = STATUS["non_finite"], np.zeros(n), theta
+    else:
         status = STATUS["saturated"] if np.max(np.abs(tau) - tau_max) > 0 else STATUS["ok"]
         tau_out = np.minimum(np.maximum(tau, -tau_max), tau_max)
         theta_out = theta_next
-    else:                              # singular (or NaN measure): safe torque, no update
-        status = STATUS["singular"]
-        tau_out = np.zeros(n)
-        theta_out = theta
+    if not finite:
+        xe, v = st["xe_prev"].copy(), st["v"].copy()
     state_next = np.concatenate([xe, v, theta_out])      # ctrl_state layout
     diag = {"xe": xe, "v": v, "e": e, "edot": edot, "sing": sing, "q": q}
     return tau_out, state_next, status, diag

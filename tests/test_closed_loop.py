@@ -95,7 +95,7 @@ def sample_pose(rng, lo=0.2, hi=1.0, box=((0.17, 0.32), (0.18, 0.34))):
 
 def c_step(m, law, state, qa, xd, xd_dot, xd_ddot, params):
     """The generated <law>_step: (tau_a, state_next, status, diag)."""
-    tau, sn, st, dg = np.empty(N_LEGS), np.empty(len(state)), np.empty(1), np.empty(8)
+    tau, sn, st, dg = np.empty(N_LEGS), np.empty(len(state)), np.empty(1), np.empty(9)
     m.function(f"{law}_step")(*(np.ascontiguousarray(a, dtype=float) for a in
                                 (state, qa, xd, xd_dot, xd_ddot, params)), tau, sn, st, dg)
     return tau, sn, int(st[0]), dg
@@ -149,7 +149,8 @@ def _random_step_case(m, rng, law, xe=None, tau_max=1e3):
                   tau_max=np.full(N_LEGS, tau_max))
     if law == "na":
         params = L["na_params"].pack(Kd=rng.uniform(50, 300, 2), Q=rng.uniform(50, 400, 2),
-                                     Gamma=rng.uniform(0.0, 0.05, 5 * N_LEGS), **common)
+                                     Gamma=rng.uniform(0.0, 0.05, 5 * N_LEGS), project=0.0,
+                                     **common)
     else:
         params = L["apd_params"].pack(Kp=rng.uniform(1e4, 5e4, 2), Kv=rng.uniform(100, 500, 2),
                                       **common)
@@ -203,7 +204,7 @@ def _compare_step(m, law, args, name, expect_status=None):
         assert err <= 1e-12 * scale, (
             f"{law} {name} {g}: |C - ref| = {err:.3e} > 1e-12 * {scale:.3e}\n"
             f"C={out_c[sl]}\nref={out_r[sl]}\nat {info}")
-    # diag = [xe, v, e, edot]
+    # diag = [xe, v, e, edot, sing]
     for g, lo in (("xe", 0), ("v", 2), ("e", 4), ("edot", 6)):
         want = dg_r[g]
         err = float(np.max(np.abs(dg_c[lo:lo + 2] - want)))
