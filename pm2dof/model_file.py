@@ -226,6 +226,17 @@ def _read_runtime(path, doc, n, p, legs):
         _fail(path, "trajectories", "needs at least one [trajectories.<name>] table")
     trajs = {name: _read_section(path, f"trajectories.{name}", t, _SCHEMA["trajectory"], n, p)
              for name, t in trajs_raw.items()}
+    for name, t in trajs.items():  # the legs must meet: every end point within every leg's reach
+        for end in ("start", "end"):
+            for i, lg in enumerate(legs):
+                dist = float(np.hypot(*(t[end] - np.asarray(lg.base))))
+                lo, hi = abs(lg.la - lg.lb), lg.la + lg.lb
+                if not lo <= dist <= hi:
+                    _fail(path, f"trajectories.{name}.{end}",
+                          f"the legs cannot meet at {t[end].tolist()}: leg {i + 1} is {dist:.4g} m "
+                          f"from its base, its reach is [{lo:.4g}, {hi:.4g}] m")
+        if np.array_equal(t["start"], t["end"]):
+            _fail(path, f"trajectories.{name}", "start and end are the same point")
     return sensing, gains, plant, trajs
 
 
@@ -252,6 +263,9 @@ def read_model_file(path):
         raw = path.read_bytes()
     except OSError as exc:
         raise ModelFileError(f"{path}: cannot read model file: {exc.strerror or exc}") from None
+    if b"\x00" in raw:
+        raise ModelFileError(f"{path}: binary content (NUL byte at offset {raw.index(b'\x00')}), "
+                             f"not a TOML model file")
     try:
         doc = tomllib.loads(raw.decode("utf-8"))
     except UnicodeDecodeError as exc:
