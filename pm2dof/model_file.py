@@ -263,8 +263,9 @@ def read_model_file(path):
         raw = path.read_bytes()
     except OSError as exc:
         raise ModelFileError(f"{path}: cannot read model file: {exc.strerror or exc}") from None
-    if b"\x00" in raw:
-        raise ModelFileError(f"{path}: binary content (NUL byte at offset {raw.index(b'\x00')}), "
+    nul = raw.find(b"\x00")
+    if nul >= 0:
+        raise ModelFileError(f"{path}: binary content (NUL byte at offset {nul}), "
                              f"not a TOML model file")
     try:
         doc = tomllib.loads(raw.decode("utf-8"))
