@@ -16,7 +16,7 @@ def controller_layouts(n, p):
     """Flat-vector layouts: the controller state and each controller's parameters."""
     state = Layout([("xe_prev", 2), ("v", 2), ("theta_hat", p)])
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("tau_max", n)]
-    na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p), ("project", 1)] + common)
+    na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p)] + common)
     apd = Layout([("Kp", 2), ("Kv", 2)] + common)
     return {"ctrl_state": state, "na_params": na, "apd_params": apd}
 
@@ -39,11 +39,10 @@ def _project(theta, param_names, n):
 
 
 def _all_finite(x):
-    """1 if every element of x is finite: |x| < inf is false for NaN and +-inf."""
-    ok = ca.fabs(x[0]) < ca.inf
-    for k in range(1, x.numel()):
-        ok = ca.logic_and(ok, ca.fabs(x[k]) < ca.inf)
-    return ok
+    """1 if every element of x is finite: a NaN or inf anywhere makes the sum NaN or inf, and
+    |sum| < inf is false for both (a sum that overflows from finite values also counts as
+    non-finite: values near 1e308 are no torques)."""
+    return ca.fabs(ca.sum1(x)) < ca.inf
 
 
 def _min_norm_torque(S, u):
@@ -55,7 +54,8 @@ def _min_norm_torque(S, u):
 
 
 def controller_functions(d, prefix):
-    """``<prefix>_na_step`` and ``<prefix>_apd_step``: one 2 ms sample each, all in C.
+    """``<prefix>_na_step``, ``<prefix>_na_proj_step`` (theta_hat projected after each update)
+    and ``<prefix>_apd_step``: one 2 ms sample each, all in C.
 
     Inputs: state (xe_prev, v, theta_hat), qa (measured active angles), xd, xd_dot, xd_ddot
     (desired position, velocity, acceleration), params (see controller_layouts).
@@ -72,7 +72,8 @@ def controller_functions(d, prefix):
     st = lay["ctrl_state"].split(state)
     functions = []
 
-    for law in ("na", "apd"):
+    for name, law, project in (("na", "na", False), ("na_proj", "na", True),
+                               ("apd", "apd", False)):
         params = ca.SX.sym("params", lay[f"{law}_params"].size)
         P = lay[f"{law}_params"].split(params)
         # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
@@ -94,8 +95,8 @@ def controller_functions(d, prefix):
         if law == "na":
             u = Y @ theta + P["Kd"] * s                 # eq. 29: S^T tau_a
             theta_next = theta + P["T"] * P["Gamma"] * (Y.T @ s)   # eq. 28, explicit Euler
-            theta_next = ca.if_else(P["project"] > 0,             # optional, off by default
-                                    _project(theta_next, d.spec.param_names, n), theta_next)
+            if project:  # <prefix>_na_proj_step: optional, off by default (as in the paper)
+                theta_next = _project(theta_next, d.spec.param_names, n)
         else:
             u = Y @ theta + P["Kp"] * e + P["Kv"] * edot           # eq. 40
             theta_next = theta
@@ -114,7 +115,7 @@ def controller_functions(d, prefix):
         state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(finite, xe, st["xe_prev"]),
                                             v=ca.if_else(finite, v, st["v"]), theta_hat=theta_out)
         functions.append(ca.Function(
-            f"{prefix}_{law}_step", [state, qa, xd, xd_dot, xd_ddot, params],
+            f"{prefix}_{name}_step", [state, qa, xd, xd_dot, xd_ddot, params],
             [tau_out, state_next, status, ca.vertcat(xe, v, e, edot, sing)],
             ["state", "qa", "xd", "xd_dot", "xd_ddot", "params"],
             ["tau_a", "state_next", "status", "diag"]))

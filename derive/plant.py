@@ -86,7 +86,8 @@ def closed_loop_functions(d, prefix, ctrl_fns, plant_fns, substeps):
     ctrl_lay = controller_layouts(n, p)
     f_step, f_meas = plant_fns[1], plant_fns[2]
     out = []
-    for law, step in zip(("na", "apd"), ctrl_fns):
+    for name, step in zip(("na", "na_proj", "apd"), ctrl_fns):
+        law = "apd" if name == "apd" else "na"
         x = ca.MX.sym("x", lay["cl_state"].size)
         u = ca.MX.sym("u", lay["cl_input"].size)
         npar = ctrl_lay[f"{law}_params"].size
@@ -103,6 +104,6 @@ def closed_loop_functions(d, prefix, ctrl_fns, plant_fns, substeps):
         theta_hat = cs_next[ctrl_lay["ctrl_state"].offsets()["theta_hat"][0]:]
         y = lay["cl_output"].pack(xe=X["xe"], xed=X["xed"], tau_a=tau, status=status,
                                   theta_hat=theta_hat)
-        out.append(ca.Function(f"{prefix}_{law}_closed_loop", [x, u, prm], [x_next, y],
+        out.append(ca.Function(f"{prefix}_{name}_closed_loop", [x, u, prm], [x_next, y],
                                ["x", "u", "p"], ["x_next", "y"]))
     return out

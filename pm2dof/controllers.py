@@ -57,7 +57,7 @@ class _Controller:
             sing_threshold=model.singularity_threshold,
             tau_max=spec.limits["tau_max"] if tau_max is None else tau_max)
         self.params.setflags(write=False)
-        self._f = model.function(f"{self._law}_step")
+        self._f = model.function(f"{self.function_name}_step")
         n = model.n_legs
         self._states = (np.zeros(self.state_layout.size), np.zeros(self.state_layout.size))
         self._n = n
@@ -150,11 +150,12 @@ class NAController(_Controller):
 
     def __init__(self, model, *, Kd=None, Q=None, Gamma=None, theta0=None, sample_period=None,
                  velocity_filter_hz=None, tau_max=None, project=False, on_singular="raise"):
+        self.project = bool(project)
+        self.function_name = "na_proj" if self.project else "na"  # generated <name>_na_proj_step
         g = model.spec.gains["na"]
         super().__init__(model, {"Kd": g["Kd"] if Kd is None else Kd,
                                  "Q": g["Q"] if Q is None else Q,
-                                 "Gamma": g["Gamma"] if Gamma is None else Gamma,
-                                 "project": 1.0 if project else 0.0},
+                                 "Gamma": g["Gamma"] if Gamma is None else Gamma},
                          theta0, sample_period, velocity_filter_hz, tau_max, on_singular)
 
     @property
@@ -170,6 +171,7 @@ class APDController(_Controller):
     of the NA gains; ``theta0`` is the fixed model inside the feedforward.
     """
     _law = "apd"
+    function_name = "apd"
 
     def __init__(self, model, *, Kp=None, Kv=None, theta0=None, sample_period=None,
                  velocity_filter_hz=None, tau_max=None, on_singular="raise"):

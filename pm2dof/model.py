@@ -26,8 +26,8 @@ DEFAULT_MODEL = REPO / "models" / "shang2010.toml"
 GENERATED = REPO / "generated"
 
 _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "W", "S", "Wdot", "M", "C", "Me", "Ce",
-              "StF", "Y", "forward_dynamics", "na_step", "apd_step", "plant_xedd", "plant_step",
-              "measure", "na_closed_loop", "apd_closed_loop")
+              "StF", "Y", "forward_dynamics", "na_step", "na_proj_step", "apd_step", "plant_xedd",
+              "plant_step", "measure", "na_closed_loop", "na_proj_closed_loop", "apd_closed_loop")
 
 
 def _freeze(obj):

@@ -78,7 +78,7 @@ def layouts(n: int) -> dict:
     state = [("xe_prev", 2), ("v", 2), ("theta_hat", p)]
     fields = {
         "ctrl_state": state,
-        "na_params": [("Kd", 2), ("Q", 2), ("Gamma", p), ("project", 1)] + common,
+        "na_params": [("Kd", 2), ("Q", 2), ("Gamma", p)] + common,
         "apd_params": [("Kp", 2), ("Kv", 2)] + common,
         "plant": [(k, n) for k in ("alpha", "beta", "gamma", "fv", "fc", "fs")]
         + [("stribeck_velocity", 1), ("coulomb_smoothing_velocity", 1), ("encoder_step", 1)],
@@ -116,7 +116,7 @@ def passive_angles(g: Any, qa: np.ndarray, xe: np.ndarray) -> np.ndarray:
     return np.arctan2(d[:, 1], d[:, 0])
 
 
-def project(theta: np.ndarray, n: int) -> np.ndarray:
+def project_theta(theta: np.ndarray, n: int) -> np.ndarray:
     """theta (5n,) onto physical values: alpha, gamma >= floor, |beta| <= sqrt(alpha gamma),
     fv, fc >= 0 (the optional projection of the NA update)."""
     th = np.array(theta, dtype=float)
@@ -134,7 +134,7 @@ def _min_norm_torque(Sq: np.ndarray, u: np.ndarray) -> np.ndarray:
     return Sq @ np.linalg.solve(Sq.T @ Sq, u)
 
 
-def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params):
+def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=False):
     n = _n(g)
     lay = layouts(n)
     st = lay["ctrl_state"].unpack(np.asarray(state, dtype=float))
@@ -160,8 +160,8 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params):
     if law == "na":
         u = Yq @ theta + P["Kd"] * s                              # eq. 29
         theta_next = theta + T * P["Gamma"] * (Yq.T @ s)          # eq. 28, explicit Euler
-        if P["project"][0] > 0:
-            theta_next = project(theta_next, n)
+        if project:
+            theta_next = project_theta(theta_next, n)
     else:
         u = Yq @ theta + P["Kp"] * e + P["Kv"] * edot             # eq. 40
         theta_next = theta
@@ -208,15 +208,16 @@ _STEP_DOC = """One control sample of the {what}, as the generated ``{law}_step``
         at a singular sample.
     status : int
         0 ok, 1 singular (min_i |sin(qb_i - qa_i)| < sing_threshold), 2 saturated
-        (some |tau_i| > tau_max_i before clipping).
+        (some |tau_i| > tau_max_i before clipping), 3 non-finite (zero torque, state kept).
     diag : dict
         xe (2,), v (2,), e (2,), edot (2,) (the C's ``diag`` = [xe, v, e, edot]), plus sing
         (the singularity measure) and q (2n,) (the joint angles used).
 """
 
 
-def na_step(g, state, qa, xd, xd_dot, xd_ddot, params):
-    return _step("na", g, state, qa, xd, xd_dot, xd_ddot, params)
+def na_step(g, state, qa, xd, xd_dot, xd_ddot, params, project=False):
+    """NA step (eqs. 14-29); ``project=True`` mirrors the generated ``<name>_na_proj_step``."""
+    return _step("na", g, state, qa, xd, xd_dot, xd_ddot, params, project)
 
 
 def apd_step(g, state, qa, xd, xd_dot, xd_ddot, params):

@@ -192,7 +192,7 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     traj = trajectory.extended(settle_time) if settle_time > 0 else trajectory
     lays = model.manifest["layouts"]
     law = controller._law
-    f = model.function(f"{law}_closed_loop")
+    f = model.function(f"{controller.function_name}_closed_loop")
     truth = plant_truth(model) if truth is None else truth
     counts = model.spec.sensing["encoder_counts_per_rev"]
     plant = Layout("plant", lays["plant"]).pack(

@@ -149,8 +149,7 @@ def _random_step_case(m, rng, law, xe=None, tau_max=1e3):
                   tau_max=np.full(N_LEGS, tau_max))
     if law == "na":
         params = L["na_params"].pack(Kd=rng.uniform(50, 300, 2), Q=rng.uniform(50, 400, 2),
-                                     Gamma=rng.uniform(0.0, 0.05, 5 * N_LEGS), project=0.0,
-                                     **common)
+                                     Gamma=rng.uniform(0.0, 0.05, 5 * N_LEGS), **common)
     else:
         params = L["apd_params"].pack(Kp=rng.uniform(1e4, 5e4, 2), Kv=rng.uniform(100, 500, 2),
                                       **common)

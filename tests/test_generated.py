@@ -1,14 +1,21 @@
-# The generated C against its SymPy source at 30 digits, and the generated files against their derivation.
-"""Tests of ``generated/shang2010/``: what ``make derive`` produced and what the runtime loads.
+# The generated C of every model vs its SymPy source at 30 digits; the generated files vs their derivation.
+"""Tests of ``generated/<name>/``: what ``make derive`` produced and what the runtime loads.
+
+Every check runs over every ``models/*.toml`` (the ``model`` fixture of ``conftest.py``, ids =
+model names), except where marked paper-only (``m``, ``models/shang2010.toml``):
 
 * The compiled C agrees with the SymPy expressions of ``derive/`` evaluated with mpmath at
   30 significant digits (so the reference carries no rounding error at double precision):
-  this isolates the CasADi conversion, the code generation and the C compiler.
-* Regenerating into a temporary folder gives byte-identical files (deterministic output,
-  independent of Python's hash seed, and the committed files are up to date).
+  this isolates the CasADi conversion, the code generation and the C compiler. 6 poses for
+  the paper's robot, 3 for every other model (the cost is the per-model SymPy derivation
+  and lambdify, ~1.5-3.5 s each, not the poses). Paper-only: sign(0) = +1 at an exact zero.
+* Regenerating into a temporary folder gives byte-identical files for every model (the
+  ``python -m derive --no-build`` subprocesses run in parallel, one per CPU); for the paper's
+  robot twice, with different hash seeds (deterministic output).
 * The manifest describes the files and the model file it was derived from; a model file
-  whose formulation differs is refused with :class:`pm2dof.StaleGeneratedCodeError`.
-* The runtime never imports SymPy, CasADi or ``derive``.
+  whose formulation differs (an edited base, for every model; more edits for the paper's) is
+  refused with :class:`pm2dof.StaleGeneratedCodeError`.
+* The runtime never imports SymPy, CasADi or ``derive`` (any model).
 
 Tolerance: ``TOL = 1e-12`` relative (max-norm, scale = max-norm of the 30-digit value, or of
 the summed terms where the value is a sum that may cancel). The C evaluates straight-line
@@ -18,6 +25,7 @@ by at most 5): accumulated rounding ~1e-15..1e-14 relative; 1e-12 is a >= 100x m
 """
 from __future__ import annotations
 
+import concurrent.futures
 import hashlib
 import json
 import os
@@ -39,45 +47,62 @@ from pm2dof.model_file import read_model_file
 
 TOL = 1e-12
 DPS = 30
-N_POSES = 6
-GEN = GENERATED / "shang2010"
-FILES = ("shang2010.c", "shang2010.h", "manifest.json")
+N_POSES_PAPER = 6
+N_POSES_OTHER = 3
+PAPER = "shang2010"
 
-_OBSERVED: dict[str, float] = {}
+# {model: {check: largest err / scale}}, printed at module teardown (-s)
+_OBSERVED: dict[str, dict[str, float]] = {}
 
 
-def _record(name, ratio):
-    _OBSERVED[name] = max(_OBSERVED.get(name, 0.0), float(ratio))
+def _record(model_name, name, ratio):
+    d = _OBSERVED.setdefault(model_name, {})
+    d[name] = max(d.get(name, 0.0), float(ratio))
 
 
 @pytest.fixture(scope="module", autouse=True)
 def _report_observed():
     yield
     if _OBSERVED:
-        print("\n[test_generated] largest observed relative errors (C vs 30-digit SymPy):")
-        for k in sorted(_OBSERVED):
-            print(f"  {k:<28s} {_OBSERVED[k]:.3e}")
+        print("\n[test_generated] largest observed relative errors (C vs 30-digit SymPy), per model:")
+        for model_name in sorted(_OBSERVED):
+            print(f"  {model_name}:")
+            for k in sorted(_OBSERVED[model_name]):
+                print(f"    {k:<28s} {_OBSERVED[model_name][k]:.3e}")
 
 
 @pytest.fixture(scope="module")
 def m():
+    """The paper's robot (paper-only checks)."""
     return pm2dof.load_model()
 
 
+def gen_dir(model):
+    return GENERATED / model.name
+
+
+def gen_files(model):
+    return (f"{model.name}.c", f"{model.name}.h", "manifest.json")
+
+
 # --------------------------------------------------------------------------------------
-# 6'. C against the SymPy expressions at 30 digits
+# 6'. C against the SymPy expressions at 30 digits (every model)
 # --------------------------------------------------------------------------------------
 
 def _sgn(v):
     return 1 if v >= 0 else -1  # derive.symbols.sgn: sign with sgn(0) = +1
 
 
-@pytest.fixture(scope="module")
-def mp():
-    """The SymPy derivation, lambdified once per matrix for mpmath (cse: ~0.2 s each)."""
+_LAMBDIFIED: dict = {}
+
+
+def _sympy_functions(spec):
+    """The SymPy derivation of a model, lambdified once per matrix for mpmath (cached)."""
+    if spec.formulation_sha256 in _LAMBDIFIED:
+        return _LAMBDIFIED[spec.formulation_sha256]
     from derive.model_functions import Derivation
 
-    d = Derivation(read_model_file(DEFAULT_MODEL))
+    d = Derivation(spec)
     s, kin, dyn = d.sym, d.kin, d.dyn
     q, qa, xe = list(s.q), list(s.qa), list(s.xe)
     xed, xrd, xrdd = list(s.xed), list(s.xrd), list(s.xrdd)
@@ -88,7 +113,7 @@ def mp():
     def lam(args, expr):
         return sympy.lambdify(args, expr, modules=modules, cse=True)
 
-    return {
+    out = {
         "ik": lam([xe], kin.ik()),
         "fk": lam([qa], kin.fk()),
         "H": lam([q], kin.H),
@@ -104,6 +129,14 @@ def mp():
         "Y": lam([q, xed, xrd, xrdd], dyn.Y),
         "xedd": lam([q, xed, tau, theta], dyn.xedd),
     }
+    _LAMBDIFIED[spec.formulation_sha256] = out
+    return out
+
+
+@pytest.fixture(scope="module")
+def mp(model):
+    """The model's SymPy functions for mpmath (per model; cse lambdify ~0.6-1.2 s)."""
+    return _sympy_functions(model.spec)
 
 
 def _mpv(x):
@@ -123,74 +156,71 @@ def _wrap(a):
     return -np.remainder(-np.asarray(a, float) + np.pi, 2.0 * np.pi) + np.pi
 
 
-def _poses(m, seed, k=N_POSES):
-    rng = np.random.default_rng(seed)
+def _poses(model, sample_xe, random_theta, seed):
+    """(xe, xed, xrd, xrdd, theta, tau_a) at admissible poses (conftest.sample_xe): |xed| in
+    [0.05, 0.5] m/s, random theta with PD leg inertias, tau_a in [-10, 10] N m."""
+    k = N_POSES_PAPER if model.name == PAPER else N_POSES_OTHER
+    rng = np.random.default_rng(seed + 1)
     out = []
-    while len(out) < k:
-        xe = np.array([rng.uniform(0.17, 0.32), rng.uniform(0.18, 0.34)])
-        try:
-            q = m.ik(xe)
-        except pm2dof.WorkspaceError:
-            continue
-        if np.min(np.abs(m.singularity(q))) > 0.2:
-            phi = rng.uniform(-np.pi, np.pi)
-            xed = rng.uniform(0.05, 0.5) * np.array([np.cos(phi), np.sin(phi)])
-            alpha, gamma = rng.uniform(0.005, 0.15, 3), rng.uniform(0.005, 0.08, 3)
-            beta = rng.uniform(-0.95, 0.95, 3) * np.sqrt(alpha * gamma)
-            theta = np.concatenate([alpha, beta, gamma, rng.uniform(0, 5, 3), rng.uniform(0, 1, 3)])
-            out.append((xe, xed, rng.uniform(-0.5, 0.5, 2), rng.uniform(-10, 10, 2), theta,
-                        rng.uniform(-10, 10, 3)))
+    for xe in sample_xe(model, seed, k):
+        phi = rng.uniform(-np.pi, np.pi)
+        xed = rng.uniform(0.05, 0.5) * np.array([np.cos(phi), np.sin(phi)])
+        out.append((xe, xed, rng.uniform(-0.5, 0.5, 2), rng.uniform(-10, 10, 2),
+                    random_theta(model, rng), rng.uniform(-10, 10, model.n_legs)))
+    assert len(out) == k
     return out
 
 
-def _check(name, got, want, scale, info):
+def _check(model, name, got, want, scale, info):
     got, want = np.asarray(got, float), np.asarray(want, float).reshape(np.shape(got))
     err = float(np.max(np.abs(got - want)))
-    _record(name, err / scale)
-    assert err <= TOL * scale, (f"{name}: C vs 30-digit SymPy: max error {err:.3e} > {TOL:.0e} * "
-                                f"{scale:.3e} at {info}\nC=\n{got}\nSymPy=\n{want}")
+    _record(model.name, name, err / scale)
+    assert err <= TOL * scale, (f"{model.name}: {name}: C vs 30-digit SymPy: max error {err:.3e} > "
+                                f"{TOL:.0e} * {scale:.3e} at {info}\nC=\n{got}\nSymPy=\n{want}")
 
 
-def test_C_matches_sympy_at_30_digits(m, mp):
+def test_C_matches_sympy_at_30_digits(model, mp, sample_xe, random_theta):
     mpmath.mp.dps = DPS
-    for xe, xed, xrd, xrdd, theta, tau in _poses(m, 2010):
+    n = model.n_legs
+    for xe, xed, xrd, xrdd, theta, tau in _poses(model, sample_xe, random_theta, 2010):
         info = (f"xe={xe.tolist()}, xed={xed.tolist()}, xrd={xrd.tolist()}, xrdd={xrdd.tolist()}, "
                 f"theta={theta.tolist()}, tau_a={tau.tolist()}")
-        q = m.ik(xe)
-        qd = m.W(q) @ xed
+        q = model.ik(xe)
+        qd = model.W(q) @ xed
         Q, XED, TH = _mpv(q), _mpv(xed), _mpv(theta)
         # ik: same expression, so the same branch; wrap only guards the atan2 cut at +-pi
         q_mp = list(mp["ik"](_mpv(xe)))
-        _check("ik (rad)", _wrap(q - _to_float(q_mp)), np.zeros(6), 1.0, info)
-        _check("fk (m)", m.fk(q[:3]), _to_float(mp["fk"](Q[:3])), 1.0, info)
-        _check("H (m)", m.H(q), _to_float(mp["H"](Q)), 1.0, info)
+        _check(model, "ik (rad)", _wrap(q - _to_float(q_mp)), np.zeros(2 * n), 1.0, info)
+        _check(model, "fk (m)", model.fk(q[:n]), _to_float(mp["fk"](Q[:n])), 1.0, info)
+        _check(model, "H (m)", model.H(q), _to_float(mp["H"](Q)), 1.0, info)
         for name, got, want in [
-            ("A", m.A(q), mp["A"](Q)),
-            ("W", m.W(q), mp["W"](Q)),
-            ("S", m.S(q), mp["S"](Q)),
-            ("Wdot", m.Wdot(q, xed), mp["Wdot"](Q, XED)),
-            ("M", m.M(q, theta), mp["M"](Q, TH)),
-            ("C", m.C(q, qd, theta), mp["C"](Q, _mpv(qd), TH)),
-            ("Me", m.Me(q, theta), mp["Me"](Q, TH)),
-            ("Ce", m.Ce(q, xed, theta), mp["Ce"](Q, XED, TH)),
-            ("StF", m.StF(q, xed, theta), mp["StF"](Q, XED, TH)),
-            ("Y", m.Y(q, xed, xrd, xrdd), mp["Y"](Q, XED, _mpv(xrd), _mpv(xrdd))),
+            ("A", model.A(q), mp["A"](Q)),
+            ("W", model.W(q), mp["W"](Q)),
+            ("S", model.S(q), mp["S"](Q)),
+            ("Wdot", model.Wdot(q, xed), mp["Wdot"](Q, XED)),
+            ("M", model.M(q, theta), mp["M"](Q, TH)),
+            ("C", model.C(q, qd, theta), mp["C"](Q, _mpv(qd), TH)),
+            ("Me", model.Me(q, theta), mp["Me"](Q, TH)),
+            ("Ce", model.Ce(q, xed, theta), mp["Ce"](Q, XED, TH)),
+            ("StF", model.StF(q, xed, theta), mp["StF"](Q, XED, TH)),
+            ("Y", model.Y(q, xed, xrd, xrdd), mp["Y"](Q, XED, _mpv(xrd), _mpv(xrdd))),
         ]:
             want = _to_float(want)
-            _check(name, got, want, max(float(np.max(np.abs(want))), 1e-300), info)
+            _check(model, name, got, want, max(float(np.max(np.abs(want))), 1e-300), info)
         # forward dynamics: the SymPy xedd is in terms of q; use q = ik(xe) at 30 digits
         # (q_mp, never rounded to double). Scale: |Me^-1| times the summed terms of the
         # right-hand side S^T tau - Ce xed - StF (the sum may cancel).
         want = _to_float(mp["xedd"](list(q_mp), XED, _mpv(tau), TH))
-        Me = m.Me(q, theta)
-        terms = (np.max(np.abs(m.S(q).T @ tau)) + np.max(np.abs(m.Ce(q, xed, theta) @ xed))
-                 + np.max(np.abs(m.StF(q, xed, theta))))
+        Me = model.Me(q, theta)
+        terms = (np.max(np.abs(model.S(q).T @ tau)) + np.max(np.abs(model.Ce(q, xed, theta) @ xed))
+                 + np.max(np.abs(model.StF(q, xed, theta))))
         scale = np.linalg.norm(np.linalg.inv(Me), np.inf) * terms
-        _check("forward_dynamics", m.forward_dynamics(xe, xed, tau, theta), want, scale, info)
+        _check(model, "forward_dynamics", model.forward_dynamics(xe, xed, tau, theta), want, scale, info)
 
 
-def test_C_matches_sympy_sign_zero(m, mp):
-    """At qd_a1 = 0 exactly (qb_1 = 0, xed along y) both sides use sgn(0) = +1."""
+def test_C_matches_sympy_sign_zero(m):
+    """Paper only: at qd_a1 = 0 exactly (qb_1 = 0, xed along y) both sides use sgn(0) = +1."""
+    mp = _sympy_functions(m.spec)
     mpmath.mp.dps = DPS
     L, A1 = 0.244, np.array([0.0, 0.25])
     qa1 = -0.3
@@ -200,15 +230,16 @@ def test_C_matches_sympy_sign_zero(m, mp):
     xed = np.array([0.0, 0.2])
     theta = np.array(m.theta_nominal)
     info = f"q={q.tolist()}, xed={xed.tolist()}"
+    assert m.S(q)[0] @ xed == 0.0, info  # qd_a1 = 0 exactly
     want = _to_float(mp["StF"](_mpv(q), _mpv(xed), _mpv(theta)))
-    _check("StF at qd_a = 0", m.StF(q, xed, theta), want, float(np.max(np.abs(want))), info)
+    _check(m, "StF at qd_a = 0", m.StF(q, xed, theta), want, float(np.max(np.abs(want))), info)
     want = _to_float(mp["Y"](_mpv(q), _mpv(xed), _mpv([0, 0]), _mpv([0, 0])))
-    _check("Y at qd_a = 0", m.Y(q, xed, np.zeros(2), np.zeros(2)), want,
+    _check(m, "Y at qd_a = 0", m.Y(q, xed, np.zeros(2), np.zeros(2)), want,
            float(np.max(np.abs(want))), info)
 
 
 # --------------------------------------------------------------------------------------
-# 8. Regeneration is deterministic and the committed files are up to date
+# 8. Regeneration is deterministic and the committed files are up to date (every model)
 # --------------------------------------------------------------------------------------
 
 def _first_difference(a: bytes, b: bytes):
@@ -220,115 +251,158 @@ def _first_difference(a: bytes, b: bytes):
         "<end of file>" if len(lb) < len(la) else lb[len(la)]
 
 
+def _derive(model_file, out, seed):
+    """python -m derive MODEL --out OUT --no-build with PYTHONHASHSEED=seed -> (rc, output)."""
+    env = {**os.environ, "PYTHONHASHSEED": seed,
+           "PYTHONPATH": os.pathsep.join([str(REPO), os.environ.get("PYTHONPATH", "")])}
+    r = subprocess.run([sys.executable, "-m", "derive", str(model_file), "--out", str(out),
+                        "--no-build"], cwd=REPO, env=env, capture_output=True, text=True,
+                       timeout=600)
+    return r.returncode, r.stdout + r.stderr
+
+
 @pytest.fixture(scope="module")
 def regenerated(tmp_path_factory):
-    """Two regenerations (``python -m derive ... --no-build``) with different hash seeds."""
-    outs, procs = [], []
-    for seed in ("0", "4242"):
-        out = tmp_path_factory.mktemp(f"derive_seed{seed}")
-        env = {**os.environ, "PYTHONHASHSEED": seed,
-               "PYTHONPATH": os.pathsep.join([str(REPO), os.environ.get("PYTHONPATH", "")])}
-        procs.append(subprocess.Popen(
-            [sys.executable, "-m", "derive", str(REPO / "models" / "shang2010.toml"),
-             "--out", str(out), "--no-build"],
-            cwd=REPO, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE))
-        outs.append((seed, out))
-    for (seed, out), p in zip(outs, procs):
-        so, se = p.communicate(timeout=300)
-        assert p.returncode == 0, (f"python -m derive (PYTHONHASHSEED={seed}) failed "
-                                   f"({p.returncode}):\n{so.decode()}\n{se.decode()}")
-    return outs
+    """Every model file of models/ regenerated into a temporary folder (PYTHONHASHSEED=4242),
+    the paper's robot a second time with PYTHONHASHSEED=0; the derivations run in parallel.
+
+    Returns {(resolved model file, seed): (returncode, output, out_dir)}; a failing
+    derivation fails only its own model's tests."""
+    jobs = [(p.resolve(), "4242") for p in sorted((REPO / "models").glob("*.toml"))]
+    jobs.append((DEFAULT_MODEL.resolve(), "0"))
+    outs = {job: tmp_path_factory.mktemp(f"derive_{job[0].stem}_seed{job[1]}") for job in jobs}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
+        futures = {job: pool.submit(_derive, job[0], outs[job], job[1]) for job in jobs}
+        return {job: (*f.result(), outs[job]) for job, f in futures.items()}
 
 
-def test_regeneration_is_byte_identical(regenerated):
+def _regenerated_dir(model, regenerated, seed="4242"):
+    key = (Path(model.spec.path).resolve(), seed)
+    assert key in regenerated, f"{model.spec.path} was not regenerated"
+    rc, output, out = regenerated[key]
+    assert rc == 0, f"python -m derive {model.spec.path} (PYTHONHASHSEED={seed}) failed ({rc}):\n{output}"
+    return out
+
+
+def test_regeneration_is_byte_identical(model, regenerated):
+    out = _regenerated_dir(model, regenerated)
     problems = []
-    for seed, out in regenerated:
-        for name in FILES:
-            new, old = out / name, GEN / name
-            if not new.is_file():
-                problems.append(f"PYTHONHASHSEED={seed}: {name} was not written")
-                continue
-            if new.read_bytes() != old.read_bytes():
-                line, a, b = _first_difference(old.read_bytes(), new.read_bytes())
-                problems.append(f"PYTHONHASHSEED={seed}: generated/shang2010/{name} differs from a "
-                                f"fresh derivation at line {line}:\n  committed:   {a[:200]}\n"
-                                f"  regenerated: {b[:200]}")
-    assert not problems, ("the committed generated code is not what `python -m derive` produces "
-                          "now; run `make derive`.\n" + "\n".join(problems))
+    for name in gen_files(model):
+        new, old = out / name, gen_dir(model) / name
+        if not new.is_file():
+            problems.append(f"{name} was not written")
+            continue
+        if new.read_bytes() != old.read_bytes():
+            line, a, b = _first_difference(old.read_bytes(), new.read_bytes())
+            problems.append(f"generated/{model.name}/{name} differs from a fresh derivation at "
+                            f"line {line}:\n  committed:   {a[:200]}\n  regenerated: {b[:200]}")
+    assert not problems, (f"the committed generated code of {model.name} is not what `python -m "
+                          f"derive {model.spec.path}` produces now; run `make derive`.\n"
+                          + "\n".join(problems))
 
 
-def test_regeneration_is_deterministic_across_hash_seeds(regenerated):
-    (s1, o1), (s2, o2) = regenerated
-    for name in FILES:
+def test_regeneration_is_deterministic_across_hash_seeds(m, regenerated):
+    """Paper only (one model suffices: the derivation code is shared)."""
+    o1, o2 = _regenerated_dir(m, regenerated, "4242"), _regenerated_dir(m, regenerated, "0")
+    for name in gen_files(m):
         a, b = (o1 / name).read_bytes(), (o2 / name).read_bytes()
         if a != b:
             line, x, y = _first_difference(a, b)
-            pytest.fail(f"{name} depends on PYTHONHASHSEED ({s1} vs {s2}) at line {line}:\n"
+            pytest.fail(f"{name} depends on PYTHONHASHSEED (4242 vs 0) at line {line}:\n"
                         f"  {x[:200]}\n  {y[:200]}")
 
 
-def test_generated_code_has_no_timestamp_or_local_path():
-    text = (GEN / "shang2010.c").read_text() + (GEN / "shang2010.h").read_text() \
-        + (GEN / "manifest.json").read_text()
+def test_generated_code_has_no_timestamp_or_local_path(model):
+    text = "".join((gen_dir(model) / name).read_text() for name in gen_files(model))
+    assert len(text) > 1000, f"{model.name}: generated files are (nearly) empty"
     for needle in (str(REPO), "/tmp/", str(Path.home())):
-        assert needle not in text, f"generated code contains {needle!r} (not reproducible)"
+        assert needle not in text, f"{model.name}: generated code contains {needle!r} (not reproducible)"
     stamp = re.search(r"\b20\d\d-[01]\d-[0-3]\d\b|\b\d\d:\d\d:\d\d\b", text)
-    assert stamp is None, f"generated code contains a timestamp {stamp.group(0)!r}"
+    assert stamp is None, f"{model.name}: generated code contains a timestamp {stamp.group(0)!r}"
 
 
 # --------------------------------------------------------------------------------------
-# The manifest
+# The manifest (every model)
 # --------------------------------------------------------------------------------------
 
-@pytest.fixture(scope="module")
-def manifest():
-    return json.loads((GEN / "manifest.json").read_text())
+@pytest.fixture
+def manifest(model):
+    return json.loads((gen_dir(model) / "manifest.json").read_text())
 
 
-def test_manifest_formulation_hash(manifest):
-    spec = read_model_file(DEFAULT_MODEL)
+def test_manifest_formulation_hash(model, manifest):
+    spec = read_model_file(model.spec.path)  # a fresh read of the file on disk
+    path = Path(model.spec.path).resolve()
     assert manifest["formulation_sha256"] == spec.formulation_sha256, "run make derive"
     assert manifest["model_file_sha256"] == spec.file_sha256, \
-        "models/shang2010.toml changed since generation; run make derive"
-    assert manifest["model"] == spec.name == "shang2010"
+        f"{path.name} changed since generation; run make derive"
+    assert manifest["model"] == spec.name == model.name
+    assert manifest["model_file"] == str(path.relative_to(REPO))
     assert manifest["param_names"] == list(spec.param_names)
 
 
-def test_manifest_versions_are_the_installed_ones(manifest):
+def test_manifest_versions_are_the_installed_ones(model, manifest):
     assert manifest["versions"] == {"sympy": sympy.__version__, "casadi": casadi.__version__}, \
-        f"manifest {manifest['versions']} vs installed sympy {sympy.__version__}, casadi " \
-        f"{casadi.__version__}: run make derive"
+        f"{model.name}: manifest {manifest['versions']} vs installed sympy {sympy.__version__}, " \
+        f"casadi {casadi.__version__}: run make derive"
 
 
-def test_manifest_file_hashes_match_the_files(manifest):
-    assert set(manifest["files"]) == {"shang2010.c", "shang2010.h"}
+def test_manifest_file_hashes_match_the_files(model, manifest):
+    assert set(manifest["files"]) == {f"{model.name}.c", f"{model.name}.h"}
     for name, sha in manifest["files"].items():
-        got = hashlib.sha256((GEN / name).read_bytes()).hexdigest()
-        assert got == sha, f"{name}: sha256 {got} != manifest {sha}; run make derive"
+        got = hashlib.sha256((gen_dir(model) / name).read_bytes()).hexdigest()
+        assert got == sha, f"{model.name}: {name}: sha256 {got} != manifest {sha}; run make derive"
 
 
-def test_manifest_derive_sources_hash(manifest):
+def test_manifest_derive_sources_hash(model, manifest):
     from derive.export import derive_sources_sha256
     assert manifest["derive_sources_sha256"] == derive_sources_sha256(), \
-        "derive/*.py changed since generation; run make derive"
+        f"{model.name}: derive/*.py changed since generation; run make derive"
 
 
-def test_manifest_signatures_match_the_loaded_functions(m, manifest):
+def test_manifest_signatures_match_the_loaded_functions(model, manifest):
     """Every model function is in the manifest with the signature the loaded C reports."""
     for k in ("ik", "fk", "H", "A", "singularity", "W", "S", "Wdot", "M", "C", "Me", "Ce", "StF",
               "Y", "forward_dynamics"):
-        f = m.function(k)
-        want = manifest["functions"].get(f"shang2010_{k}")
+        f = model.function(k)
+        want = manifest["functions"].get(f"{model.name}_{k}")
         have = {"inputs": [[a, n] for a, n in zip(f.names_in, f.sizes_in)],
                 "outputs": [[a, n] for a, n in zip(f.names_out, f.sizes_out)]}
-        assert want == have, f"shang2010_{k}: manifest {want} != loaded {have}"
+        assert want == have, f"{model.name}_{k}: manifest {want} != loaded {have}"
     for key in ("formulation_sha256", "model_file_sha256", "derive_sources_sha256"):
-        assert m.manifest[key] == manifest[key], key
+        assert model.manifest[key] == manifest[key], key
 
 
 # --------------------------------------------------------------------------------------
 # Stale generated code is refused
 # --------------------------------------------------------------------------------------
+
+_BASE_X = re.compile(r"(base\s*=\s*\[\s*)([-+0-9.eE]+)")
+
+
+def test_edited_base_is_refused(model, tmp_path):
+    """Every model: a copy of its model file with leg 1's base moved 1 mm in x is stale."""
+    text = Path(model.spec.path).read_text()
+    match = _BASE_X.search(text)
+    assert match, f"no `base = [x, y]` in {model.spec.path}"
+    x_new = float(match.group(2)) + 0.001
+    path = tmp_path / Path(model.spec.path).name
+    path.write_text(text[:match.start(2)] + repr(x_new) + text[match.end(2):])
+    edited = read_model_file(path)
+    # the edit did what it says: leg 1's base moved, nothing else in the legs changed
+    assert edited.legs[0].base == (x_new, model.spec.legs[0].base[1])
+    assert edited.legs[1:] == model.spec.legs[1:] and edited.name == model.name
+    assert edited.formulation_sha256 != model.spec.formulation_sha256
+    with pytest.raises(pm2dof.StaleGeneratedCodeError, match="make derive"):
+        pm2dof.load_model(path)
+
+
+def test_unchanged_copy_loads(model, tmp_path):
+    path = tmp_path / Path(model.spec.path).name
+    shutil.copy(model.spec.path, path)
+    loaded = pm2dof.load_model(path)
+    assert loaded.name == model.name and loaded.n_legs == model.n_legs
+
 
 def _edited_copy(tmp_path, old, new):
     text = DEFAULT_MODEL.read_text()
@@ -346,15 +420,10 @@ def _edited_copy(tmp_path, old, new):
      'lb = 0.244              # passive (distal) link, m\nelbow = "left"'),
 ], ids=["base2-x", "base1-y", "la1", "elbow1"])
 def test_changed_formulation_is_refused(tmp_path, old, new):
+    """Paper only: more kinds of edits of the formulation."""
     path = _edited_copy(tmp_path, old, new)
     with pytest.raises(pm2dof.StaleGeneratedCodeError, match="make derive"):
         pm2dof.load_model(path)
-
-
-def test_unchanged_copy_loads(tmp_path):
-    path = tmp_path / "shang2010.toml"
-    shutil.copy(DEFAULT_MODEL, path)
-    pm2dof.load_model(path)
 
 
 @pytest.mark.parametrize("old, new, check", [
@@ -365,6 +434,7 @@ def test_unchanged_copy_loads(tmp_path):
     ("# Tables 1-2", "# Tables one and two", lambda m: True),
 ], ids=["limits", "nominal", "comment"])
 def test_run_time_sections_do_not_make_code_stale(tmp_path, old, new, check):
+    """Paper only."""
     m = pm2dof.load_model(_edited_copy(tmp_path, old, new))
     assert check(m)
 
@@ -374,20 +444,29 @@ def test_run_time_sections_do_not_make_code_stale(tmp_path, old, new, check):
 # --------------------------------------------------------------------------------------
 
 def test_runtime_never_imports_sympy_casadi_derive():
+    """All model files in one subprocess (each loaded and evaluated)."""
     code = (
-        "import sys, json, numpy as np\n"
+        "import sys, json, glob, numpy as np\n"
         "import pm2dof\n"
-        "m = pm2dof.load_model()\n"
-        "q = m.ik([0.25, 0.26])\n"
-        "Y = m.Y(q, [0.1, 0.2], [0.1, 0.0], [1.0, 0.0])\n"
-        "m.forward_dynamics([0.25, 0.26], [0.1, 0.2], [1.0, 2.0, 3.0], m.theta_nominal)\n"
-        "assert Y.shape == (2, 15)\n"
+        "done = []\n"
+        "for path in sorted(glob.glob('models/*.toml')):\n"
+        "    m = pm2dof.load_model(path)\n"
+        "    n = m.n_legs\n"
+        "    t = next(iter(m.spec.trajectories.values()))\n"
+        "    xe = (np.asarray(t['start']) + np.asarray(t['end'])) / 2\n"
+        "    q = m.ik(xe)\n"
+        "    Y = m.Y(q, [0.1, 0.2], [0.1, 0.0], [1.0, 0.0])\n"
+        "    m.forward_dynamics(xe, [0.1, 0.2], np.arange(1.0, n + 1), m.theta_nominal)\n"
+        "    assert Y.shape == (2, len(m.param_names))\n"
+        "    done.append(m.name)\n"
         "bad = sorted(k for k in sys.modules if k.split('.')[0] in ('sympy', 'casadi', 'derive'))\n"
-        "print(json.dumps(bad))\n"
+        "print(json.dumps({'bad': bad, 'done': done}))\n"
     )
     env = {**os.environ, "PYTHONPATH": str(REPO)}
     r = subprocess.run([sys.executable, "-c", code], cwd=REPO, env=env, capture_output=True,
                        text=True, timeout=120)
     assert r.returncode == 0, r.stderr
-    bad = json.loads(r.stdout.strip().splitlines()[-1])
-    assert bad == [], f"the runtime imported build-time modules: {bad}"
+    res = json.loads(r.stdout.strip().splitlines()[-1])
+    want = sorted(read_model_file(p).name for p in (REPO / "models").glob("*.toml"))
+    assert sorted(res["done"]) == want and PAPER in res["done"], res
+    assert res["bad"] == [], f"the runtime imported build-time modules: {res['bad']}"

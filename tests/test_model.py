@@ -1,33 +1,48 @@
-# Numerical verification of the compiled model (pm2dof.Model) at random reachable poses.
+# Numerical verification of the compiled model (pm2dof.Model) of every model file, at random reachable poses.
 """Tests of :class:`pm2dof.Model`: the CasADi-generated C as seen through the runtime API.
 
-Every check runs at random poses of the paper's workspace (x in [0.17, 0.32] m, y in
-[0.18, 0.34] m) drawn with fixed seeds, keeping only poses with min_i |sin(qb_i - qa_i)| > 0.2
-(measured with ``Model.singularity``), so |W| <= 1/(0.244 m * 0.2) ~ 20 rad/m and every
-derivative below is well scaled. Velocities are up to the paper's high-speed v_max (0.5 m/s),
-accelerations up to 10 m/s^2. Every assertion message carries the failing input.
+Which model
+-----------
+* The generic checks (sections 1-7) run over every ``models/*.toml`` through the ``model``
+  fixture of ``conftest.py`` (test ids = model names): kinematics, W, A W = 0, Wdot, the
+  properties of Me and Ce, the regressor identity, friction, forward dynamics. The comparison
+  with the NumPy reference (``pm2dof.reference``) runs only where the reference applies: the
+  paper's Coulomb + viscous friction (``coulomb_viscous_model``).
+* The paper-only checks (sign(0) = +1 at an exact zero velocity, errors, the API contract,
+  Tables 1-2, the bases of Sect. 2) use ``m``, the paper's robot ``models/shang2010.toml``.
+
+Sampling
+--------
+Every generic check runs at random poses drawn with fixed seeds in a box +-0.05 m around the
+midpoint of the model's first trajectory (``conftest.sample_xe``), keeping only poses that
+every leg reaches and with min_i |sin(qb_i - qa_i)| > 0.2 (measured with
+``Model.singularity``); the sampler fails if it finds too few. With link lengths >= 0.235 m
+in every model file, |W| <= 1/(0.235 m * 0.2) ~ 21 rad/m and every derivative below is well
+scaled. Velocities are up to the paper's high-speed v_max (0.5 m/s), accelerations up to
+10 m/s^2; theta is random with every leg's inertia block positive definite. Every assertion
+message carries the model and the failing input.
 
 Error measures: ``err = max|actual - expected|`` (max-norm over the entries), compared with
 ``rtol * scale``, where ``scale`` is stated at each check (normally the max-norm of the
 expected value, or of the terms that are summed to form it, so that cancellation in the
 sum does not make the check depend on luck).
 
-Tolerances, from the numerics (the observed largest errors are recorded by ``_record`` and
-printed at the end of the module with ``pytest -s``):
+Tolerances, from the numerics (the observed largest errors, per model, are recorded by
+``check`` and printed at the end of the module with ``pytest -s``):
 
 * ``TOL_EXACT = 1e-12``: closed-form evaluations and algebraic identities in double
-  precision. Inputs are O(1) (angles <= pi rad, lengths <= 0.5 m, parameters <= 5); each
+  precision. Inputs are O(1) (angles <= pi rad, lengths <= 0.6 m, parameters <= 5); each
   output is a straight-line expression of at most a few hundred flops with no cancellation
   worse than the singularity margin 1/0.2 = 5 per division by sin(qb - qa), so the rounding
   error is ~1e-15..1e-14 relative. 1e-12 leaves a >= 100x margin; it is not a fit to the
   observed values.
 * ``TOL_FD = 1e-7``: central finite differences with step h = 1e-6 (m or s). Truncation
-  is h^2/6 |f'''|, and with |d/dq| ~ |W| ~ 20 rad/m each derivative of W/q/Me costs a factor
-  <= ~20, so h^2/6 * 20^3 ~ 1.3e-9 relative; round-off is ~ eps * cond / h ~
-  2.2e-16 * 20 / 1e-6 ~ 4e-9 relative. 1e-7 is >= 25x above both bounds.
+  is h^2/6 |f'''|, and with |d/dq| ~ |W| ~ 21 rad/m each derivative of W/q/Me costs a factor
+  <= ~21, so h^2/6 * 21^3 ~ 1.5e-9 relative; round-off is ~ eps * cond / h ~
+  2.2e-16 * 21 / 1e-6 ~ 5e-9 relative. 1e-7 is >= 20x above both bounds.
 * ``TOL_KKT = 1e-9``: the Lagrange-multiplier solution uses Adot qd from finite
   differences of A (h = 1e-6 rad along qd): A is made of l*sin/l*cos, so the truncation is
-  h^2/6 * l * |qd|^3 ~ 1e-12/6 * 0.244 * 10^3 ~ 4e-11 against |Adot qd| ~ l |qd|^2 ~ 24
+  h^2/6 * l * |qd|^3 ~ 1e-12/6 * 0.25 * 10^3 ~ 4e-11 against |Adot qd| ~ l |qd|^2 ~ 25
   (relative ~2e-12), and round-off eps * l / h * |qd| ~ 5e-10 absolute (~2e-11 relative);
   the KKT solve multiplies this by cond(K) ~ 1e2. About 1e-10 relative in the worst case,
   so 1e-9 is a 10x margin.
@@ -41,38 +56,43 @@ import pm2dof
 from pm2dof import reference as ref
 
 # --------------------------------------------------------------------------------------
-# Constants, sampling, helpers
+# Constants, helpers
 # --------------------------------------------------------------------------------------
 
-L = 0.244                     # all link lengths, m (NOTES.md, Sect. 2)
+# the paper's robot (NOTES.md, Sect. 2): used by the paper-only checks
+L = 0.244                     # all link lengths, m
 BASES = np.array([[0.0, 0.25], [0.433, 0.0], [0.433, 0.5]])
 N_LEGS = 3
-N_POSES = 25                  # per test; every test is fast (one C call ~ 1 us)
-SING_MIN = 0.2                # admissible poses: min_i |sin(qb_i - qa_i)| > 0.2
+
+N_POSES = 25                  # per test and model; every test is fast (one C call ~ 1 us)
 H_FD = 1e-6                   # central finite-difference step, m or s
 TOL_EXACT = 1e-12             # see module docstring
 TOL_FD = 1e-7                 # see module docstring
 TOL_KKT = 1e-9                # see module docstring
 
-# largest observed error ratio err/scale of each check, printed at module teardown (-s)
-_OBSERVED: dict[str, float] = {}
+# largest observed error ratio err/scale, {model: {check: ratio}}, printed at module teardown (-s)
+_OBSERVED: dict[str, dict[str, float]] = {}
 
 
-def _record(name, err, scale=1.0):
-    _OBSERVED[name] = max(_OBSERVED.get(name, 0.0), float(err) / float(scale))
+def _record(model_name, name, err, scale=1.0):
+    d = _OBSERVED.setdefault(model_name, {})
+    d[name] = max(d.get(name, 0.0), float(err) / float(scale))
 
 
 @pytest.fixture(scope="module", autouse=True)
 def _report_observed():
     yield
     if _OBSERVED:
-        print("\n[test_model] largest observed relative errors:")
-        for k in sorted(_OBSERVED):
-            print(f"  {k:<40s} {_OBSERVED[k]:.3e}")
+        print("\n[test_model] largest observed relative errors (err / scale), per model:")
+        for model_name in sorted(_OBSERVED):
+            print(f"  {model_name}:")
+            for k in sorted(_OBSERVED[model_name]):
+                print(f"    {k:<44s} {_OBSERVED[model_name][k]:.3e}")
 
 
 @pytest.fixture(scope="module")
 def m():
+    """The paper's robot, models/shang2010.toml (the default model)."""
     return pm2dof.load_model()
 
 
@@ -82,56 +102,49 @@ def wrap(a):
     return -np.remainder(-a + np.pi, 2.0 * np.pi) + np.pi
 
 
-def sample_poses(m, seed, k=N_POSES):
-    """k reachable xe (2,) in the paper's workspace with min_i |sin(qb_i - qa_i)| > SING_MIN."""
-    rng = np.random.default_rng(seed)
-    out = []
-    for _ in range(100 * k):
-        xe = np.array([rng.uniform(0.17, 0.32), rng.uniform(0.18, 0.34)])
-        try:
-            q = m.ik(xe)
-        except pm2dof.WorkspaceError:
-            continue
-        if np.min(np.abs(m.singularity(q))) > SING_MIN:
-            out.append(xe)
-        if len(out) == k:
-            return out
-    raise AssertionError(f"only {len(out)} admissible poses found (seed {seed})")
+def geometry(model):
+    """(bases (n, 2), la (n,), lb (n,), elbow (n,) +1 left / -1 right) from the model file."""
+    legs = model.spec.legs
+    return (np.array([leg.base for leg in legs], float), np.array([leg.la for leg in legs]),
+            np.array([leg.lb for leg in legs]), np.array([leg.elbow for leg in legs]))
 
 
-def random_theta(rng):
-    """theta (15,) with every leg's block PD: alpha, gamma > 0 and beta^2 < alpha gamma."""
-    alpha = rng.uniform(0.005, 0.15, N_LEGS)
-    gamma = rng.uniform(0.005, 0.08, N_LEGS)
-    beta = rng.uniform(-0.95, 0.95, N_LEGS) * np.sqrt(alpha * gamma)
-    fv = rng.uniform(0.0, 5.0, N_LEGS)
-    fc = rng.uniform(0.0, 1.0, N_LEGS)
-    return np.concatenate([alpha, beta, gamma, fv, fc])
+def u(t):
+    return np.array([np.cos(t), np.sin(t)])
 
 
-def cases(m, seed, k=N_POSES):
-    """(xe, xed, xrd, xrdd, theta, tau_a) with |xed| in [0.05, 0.5] m/s (not ~0, so that
-    Wdot, Ce are not vanishing and relative checks are meaningful)."""
-    rng = np.random.default_rng(seed + 7919)
-    for xe in sample_poses(m, seed, k):
-        phi = rng.uniform(-np.pi, np.pi)
-        xed = rng.uniform(0.05, 0.5) * np.array([np.cos(phi), np.sin(phi)])
-        yield (xe, xed, rng.uniform(-0.5, 0.5, 2), rng.uniform(-10.0, 10.0, 2),
-               random_theta(rng), rng.uniform(-10.0, 10.0, N_LEGS))
+def up(t):
+    return np.array([-np.sin(t), np.cos(t)])
+
+
+@pytest.fixture(scope="module")
+def cases(sample_xe, random_theta):
+    """cases(model, seed, k) -> iterator of (xe, xed, xrd, xrdd, theta, tau_a) with |xed| in
+    [0.05, 0.5] m/s (not ~0, so that Wdot, Ce are not vanishing and relative checks are
+    meaningful), random theta (conftest.random_theta) and tau_a in [-10, 10] N m."""
+    def gen(model, seed, k=N_POSES):
+        rng = np.random.default_rng(seed + 7919)
+        for xe in sample_xe(model, seed, k):
+            phi = rng.uniform(-np.pi, np.pi)
+            xed = rng.uniform(0.05, 0.5) * np.array([np.cos(phi), np.sin(phi)])
+            yield (xe, xed, rng.uniform(-0.5, 0.5, 2), rng.uniform(-10.0, 10.0, 2),
+                   random_theta(model, rng), rng.uniform(-10.0, 10.0, model.n_legs))
+    return gen
 
 
 def maxabs(a):
     return float(np.max(np.abs(a)))
 
 
-def check(name, actual, expected, rtol, scale, info):
-    """Assert max|actual - expected| <= rtol * scale and record the ratio."""
+def check(name, actual, expected, rtol, scale, info, model):
+    """Assert max|actual - expected| <= rtol * scale and record the ratio under the model."""
     actual, expected = np.asarray(actual, float), np.asarray(expected, float)
-    assert actual.shape == expected.shape, f"{name}: shape {actual.shape} != {expected.shape} at {info}"
+    assert actual.shape == expected.shape, \
+        f"{model.name}: {name}: shape {actual.shape} != {expected.shape} at {info}"
     err = maxabs(actual - expected)
-    _record(name, err, scale)
+    _record(model.name, name, err, scale)
     assert err <= rtol * scale, (
-        f"{name}: max error {err:.3e} > {rtol:.0e} * scale {scale:.3e} at {info}\n"
+        f"{model.name}: {name}: max error {err:.3e} > {rtol:.0e} * scale {scale:.3e} at {info}\n"
         f"actual=\n{actual}\nexpected=\n{expected}")
 
 
@@ -141,167 +154,416 @@ def fmt(**kw):
                      for k, v in kw.items())
 
 
+def friction_typed(model, v, theta):
+    """The actuated-joint friction f_a (n,) at joint velocities v (n,), typed here from the
+    model file's comments (eq. 2 and its extensions), independent of derive/ and reference.py.
+    Returns None for a friction model this test does not know."""
+    spec, n = model.spec, model.n_legs
+    names = list(model.param_names)
+    par = lambda kind: theta[[names.index(f"{kind}{i + 1}") for i in range(n)]]  # noqa: E731
+    v = np.asarray(v, float)
+    sgn = np.where(v >= 0, 1.0, -1.0)                       # sign(0) = +1
+    if spec.friction == "coulomb_viscous":                   # eq. 2
+        return par("fc") * sgn + par("fv") * v
+    if spec.friction == "coulomb_viscous_stribeck":          # eq. 2 + fs sign(v) / (1 + (v/vs)^2)
+        vs = spec.friction_constants["stribeck_velocity"]
+        return (par("fc") + par("fs") / (1.0 + (v / vs) ** 2)) * sgn + par("fv") * v
+    if spec.friction == "smooth_sign":                       # sign(v) -> v / sqrt(v^2 + eps^2)
+        eps = spec.friction_constants["sign_smoothing_velocity"]
+        return par("fc") * v / np.sqrt(v ** 2 + eps ** 2) + par("fv") * v
+    return None
+
+
+def friction_index(model, param_index):
+    """Indices of theta's friction parameters (everything but alpha, beta, gamma)."""
+    return sorted(j for (kind, _), j in param_index(model).items()
+                  if kind not in ("alpha", "beta", "gamma"))
+
+
 # --------------------------------------------------------------------------------------
-# 1. Kinematics: ik closes the loop, fk inverts ik
+# 1. Kinematics: ik closes the loop, fk inverts ik (every model)
 # --------------------------------------------------------------------------------------
 
-def test_ik_closes_loop_and_fk_inverts_it(m):
+def test_ik_closes_loop_and_fk_inverts_it(model, sample_xe):
     # H and xe are O(0.5 m) and computed from a few trig calls: rounding ~1e-16 m.
-    for xe in sample_poses(m, 1):
-        q = m.ik(xe)
+    n = model.n_legs
+    bases, la, lb, _ = geometry(model)
+    for xe in sample_xe(model, 1, N_POSES):
+        q = model.ik(xe)
         info = fmt(xe=xe, q=q)
-        check("H(ik(x)) [m]", m.H(q), np.zeros(4), TOL_EXACT, 1.0, info)
-        check("fk(ik(x)[:3]) - x [m]", m.fk(q[:3]), xe, TOL_EXACT, 1.0, info)
-        # the tips of all legs are at xe (typed here from NOTES.md, Sect. 2)
-        for i in range(N_LEGS):
-            tip = BASES[i] + L * np.array([np.cos(q[i]), np.sin(q[i])]) \
-                + L * np.array([np.cos(q[3 + i]), np.sin(q[3 + i])])
-            check(f"tip_{i + 1}(ik(x)) - x [m]", tip, xe, TOL_EXACT, 1.0, info)
+        check("H(ik(x)) [m]", model.H(q), np.zeros(2 * (n - 1)), TOL_EXACT, 1.0, info, model)
+        check("fk(ik(x)[:n]) - x [m]", model.fk(q[:n]), xe, TOL_EXACT, 1.0, info, model)
+        # the tips of all legs are at xe (typed here from NOTES.md, Sect. 2, per-leg lengths)
+        for i in range(n):
+            tip = bases[i] + la[i] * u(q[i]) + lb[i] * u(q[n + i])
+            check("tip_i(ik(x)) - x [m]", tip, xe, TOL_EXACT, 1.0, f"leg {i + 1}, {info}", model)
 
 
-def test_ik_elbows_are_right_of_base_to_tip(m):
-    """The model file chooses elbow = "right" for every leg: B_i lies right of A_i -> O."""
-    for xe in sample_poses(m, 2):
-        q = m.ik(xe)
-        for i in range(N_LEGS):
-            d = xe - BASES[i]
-            b = L * np.array([np.cos(q[i]), np.sin(q[i])])
+def test_ik_elbows_are_on_the_side_the_model_file_chooses(model, sample_xe):
+    """elbow = "right" (-1): B_i lies right of A_i -> O; "left" (+1): left."""
+    n = model.n_legs
+    bases, la, _, elbow = geometry(model)
+    for xe in sample_xe(model, 2, N_POSES):
+        q = model.ik(xe)
+        for i in range(n):
+            d = xe - bases[i]
+            b = la[i] * u(q[i])
             cross = d[0] * b[1] - d[1] * b[0]
-            assert cross < 0, f"leg {i + 1} elbow is not right of A->O: cross={cross} at {fmt(xe=xe, q=q)}"
+            # |cross| = |d| la |sin(angle at A_i)|, bounded away from 0 at admissible poses
+            assert np.sign(cross) == elbow[i], \
+                f"{model.name}: leg {i + 1} elbow on the wrong side: cross={cross} at {fmt(xe=xe, q=q)}"
 
 
 # --------------------------------------------------------------------------------------
-# 2. W against finite differences of ik; A W = 0
+# 2. W against finite differences of ik; A W = 0; A = dH/dq (every model)
 # --------------------------------------------------------------------------------------
 
-def test_W_is_the_derivative_of_ik(m):
-    for xe in sample_poses(m, 3):
-        q = m.ik(xe)
-        Wq = m.W(q)
-        fd = np.empty((6, 2))
+def test_W_is_the_derivative_of_ik(model, sample_xe):
+    n = model.n_legs
+    for xe in sample_xe(model, 3, N_POSES):
+        q = model.ik(xe)
+        Wq = model.W(q)
+        fd = np.empty((2 * n, 2))
         for j in range(2):
             e = np.zeros(2)
             e[j] = H_FD
             # wrap: ik returns each angle modulo 2 pi (a branch cut must not look like a jump)
-            fd[:, j] = wrap(m.ik(xe + e) - m.ik(xe - e)) / (2 * H_FD)
-        check("W vs FD of ik (rel. max|W|)", Wq, fd, TOL_FD, maxabs(Wq), fmt(xe=xe, q=q))
+            fd[:, j] = wrap(model.ik(xe + e) - model.ik(xe - e)) / (2 * H_FD)
+        check("W vs FD of ik (rel. max|W|)", Wq, fd, TOL_FD, maxabs(Wq), fmt(xe=xe, q=q), model)
 
 
-def test_A_W_is_zero(m):
-    for xe in sample_poses(m, 4):
-        q = m.ik(xe)
-        Aq, Wq = m.A(q), m.W(q)
+def test_A_W_is_zero(model, sample_xe):
+    n = model.n_legs
+    for xe in sample_xe(model, 4, N_POSES):
+        q = model.ik(xe)
+        Aq, Wq = model.A(q), model.W(q)
+        assert Aq.shape == (2 * (n - 1), 2 * n)
         # each entry of A W is a sum of 4 products of entries of A and W: rounding
         # <= 4 eps max|A| max|W|; the scale makes the check independent of units.
-        check("A W = 0 (rel. max|A| max|W|)", Aq @ Wq, np.zeros((4, 2)), TOL_EXACT,
-              maxabs(Aq) * maxabs(Wq), fmt(xe=xe, q=q))
+        check("A W = 0 (rel. max|A| max|W|)", Aq @ Wq, np.zeros((2 * (n - 1), 2)), TOL_EXACT,
+              maxabs(Aq) * maxabs(Wq), fmt(xe=xe, q=q), model)
 
 
-def test_A_is_the_jacobian_of_H(m):
-    for xe in sample_poses(m, 5):
-        q = m.ik(xe)
-        fd = np.column_stack([(m.H(q + H_FD * e) - m.H(q - H_FD * e)) / (2 * H_FD)
-                              for e in np.eye(6)])
-        Aq = m.A(q)
-        check("A vs FD of H (rel. max|A|)", Aq, fd, TOL_FD, maxabs(Aq), fmt(xe=xe, q=q))
-
-
-# --------------------------------------------------------------------------------------
-# 3. Wdot against finite differences of W along the motion
-# --------------------------------------------------------------------------------------
-
-def test_Wdot_is_the_time_derivative_of_W(m):
-    for xe, xed, *_ in cases(m, 6):
-        q = m.ik(xe)
-        Wd = m.Wdot(q, xed)
-        fd = (m.W(m.ik(xe + H_FD * xed)) - m.W(m.ik(xe - H_FD * xed))) / (2 * H_FD)
-        check("Wdot vs FD of W (rel. max|Wdot|)", Wd, fd, TOL_FD, maxabs(Wd), fmt(xe=xe, xed=xed))
-
-
-def test_S_is_the_active_rows_of_W(m):
-    for xe in sample_poses(m, 7):
-        q = m.ik(xe)
-        np.testing.assert_array_equal(m.S(q), m.W(q)[:3], err_msg=fmt(xe=xe))
+def test_A_is_the_jacobian_of_H(model, sample_xe):
+    n = model.n_legs
+    for xe in sample_xe(model, 5, N_POSES):
+        q = model.ik(xe)
+        fd = np.column_stack([(model.H(q + H_FD * e) - model.H(q - H_FD * e)) / (2 * H_FD)
+                              for e in np.eye(2 * n)])
+        Aq = model.A(q)
+        check("A vs FD of H (rel. max|A|)", Aq, fd, TOL_FD, maxabs(Aq), fmt(xe=xe, q=q), model)
 
 
 # --------------------------------------------------------------------------------------
-# 4. Me symmetric positive definite, Medot - 2 Ce skew-symmetric
+# 3. Wdot against finite differences of W along the motion (every model)
 # --------------------------------------------------------------------------------------
 
-def _theta_cases(m, seed):
-    """Random PD theta and, for every pose, also the nominal theta (Tables 1-2)."""
-    for xe, xed, xrd, xrdd, theta, tau in cases(m, seed):
+def test_Wdot_is_the_time_derivative_of_W(model, cases):
+    for xe, xed, *_ in cases(model, 6):
+        q = model.ik(xe)
+        Wd = model.Wdot(q, xed)
+        fd = (model.W(model.ik(xe + H_FD * xed)) - model.W(model.ik(xe - H_FD * xed))) / (2 * H_FD)
+        check("Wdot vs FD of W (rel. max|Wdot|)", Wd, fd, TOL_FD, maxabs(Wd),
+              fmt(xe=xe, xed=xed), model)
+
+
+def test_S_is_the_active_rows_of_W(model, sample_xe):
+    n = model.n_legs
+    for xe in sample_xe(model, 7, N_POSES):
+        q = model.ik(xe)
+        np.testing.assert_array_equal(model.S(q), model.W(q)[:n], err_msg=f"{model.name}: {fmt(xe=xe)}")
+
+
+# --------------------------------------------------------------------------------------
+# 4. Me symmetric positive definite, Medot - 2 Ce skew-symmetric (every model)
+# --------------------------------------------------------------------------------------
+
+def _theta_cases(model, cases, seed):
+    """Random PD theta and, for every pose, also the nominal theta of the model file."""
+    for xe, xed, xrd, xrdd, theta, tau in cases(model, seed):
         yield "random", xe, xed, theta
-        yield "nominal", xe, xed, np.array(m.theta_nominal)
+        yield "nominal", xe, xed, np.array(model.theta_nominal)
 
 
-def test_Me_symmetric_positive_definite(m):
-    for which, xe, xed, theta in _theta_cases(m, 8):
-        q = m.ik(xe)
-        Me = m.Me(q, theta)
+def test_Me_symmetric_positive_definite(model, cases):
+    for which, xe, xed, theta in _theta_cases(model, cases, 8):
+        q = model.ik(xe)
+        Me = model.Me(q, theta)
         info = fmt(xe=xe, theta=theta)
-        check(f"Me - Me^T ({which}, rel. max|Me|)", Me, Me.T, TOL_EXACT, maxabs(Me), info)
+        check(f"Me - Me^T ({which}, rel. max|Me|)", Me, Me.T, TOL_EXACT, maxabs(Me), info, model)
         ev = np.linalg.eigvalsh((Me + Me.T) / 2)
         # Me = W^T M W with M PD and W of full column rank: the smallest eigenvalue is
         # bounded away from 0 at these poses (>= lambda_min(M) sigma_min(W)^2), far above
         # rounding; a sign test is enough.
-        assert ev[0] > 0, f"Me not positive definite ({which}): eigenvalues {ev} at {info}"
+        assert ev[0] > 0, f"{model.name}: Me not positive definite ({which}): eigenvalues {ev} at {info}"
         # M of eq. 3 itself: symmetric PD for these theta
-        Mq = m.M(q, theta)
-        np.testing.assert_array_equal(Mq, Mq.T, err_msg=info)
-        assert np.linalg.eigvalsh(Mq)[0] > 0, f"M not PD ({which}) at {info}"
+        Mq = model.M(q, theta)
+        np.testing.assert_array_equal(Mq, Mq.T, err_msg=f"{model.name}: {info}")
+        assert np.linalg.eigvalsh(Mq)[0] > 0, f"{model.name}: M not PD ({which}) at {info}"
 
 
-def test_Medot_minus_2Ce_is_skew_symmetric(m):
-    for which, xe, xed, theta in _theta_cases(m, 9):
-        q = m.ik(xe)
-        Ce = m.Ce(q, xed, theta)
-        Medot = (m.Me(m.ik(xe + H_FD * xed), theta) - m.Me(m.ik(xe - H_FD * xed), theta)) / (2 * H_FD)
+def test_Medot_minus_2Ce_is_skew_symmetric(model, cases):
+    for which, xe, xed, theta in _theta_cases(model, cases, 9):
+        q = model.ik(xe)
+        Ce = model.Ce(q, xed, theta)
+        Medot = (model.Me(model.ik(xe + H_FD * xed), theta)
+                 - model.Me(model.ik(xe - H_FD * xed), theta)) / (2 * H_FD)
         N = Medot - 2 * Ce
         scale = maxabs(Medot) + 2 * maxabs(Ce)  # N is a difference of these two terms
         check(f"Medot - 2Ce + (..)^T ({which}, FD)", N + N.T, np.zeros((2, 2)), TOL_FD, scale,
-              fmt(xe=xe, xed=xed, theta=theta))
+              fmt(xe=xe, xed=xed, theta=theta), model)
 
 
-def test_Mdot_minus_2C_is_skew_symmetric_joint_space(m):
+def test_Mdot_minus_2C_is_skew_symmetric_joint_space(model, random_theta):
     """Eq. 3 property, with Mdot by central FD along qd (any q, any qd: M, C are open-chain)."""
+    n = model.n_legs
     rng = np.random.default_rng(10)
     for _ in range(N_POSES):
-        q, qd, theta = rng.uniform(-np.pi, np.pi, 6), rng.uniform(-5, 5, 6), random_theta(rng)
-        Mdot = (m.M(q + H_FD * qd, theta) - m.M(q - H_FD * qd, theta)) / (2 * H_FD)
-        N = Mdot - 2 * m.C(q, qd, theta)
-        scale = maxabs(Mdot) + 2 * maxabs(m.C(q, qd, theta))
-        check("Mdot - 2C + (..)^T (FD)", N + N.T, np.zeros((6, 6)), TOL_FD, scale,
-              fmt(q=q, qd=qd, theta=theta))
+        q, qd = rng.uniform(-np.pi, np.pi, 2 * n), rng.uniform(-5, 5, 2 * n)
+        theta = random_theta(model, rng)
+        Mdot = (model.M(q + H_FD * qd, theta) - model.M(q - H_FD * qd, theta)) / (2 * H_FD)
+        Cq = model.C(q, qd, theta)
+        N = Mdot - 2 * Cq
+        scale = maxabs(Mdot) + 2 * maxabs(Cq)
+        check("Mdot - 2C + (..)^T (FD)", N + N.T, np.zeros((2 * n, 2 * n)), TOL_FD, scale,
+              fmt(q=q, qd=qd, theta=theta), model)
+
+
+def test_M_C_typed_from_notes(model, random_theta):
+    """M and C of eq. 3 at arbitrary q, qd, typed from NOTES.md (n legs)."""
+    n = model.n_legs
+    rng = np.random.default_rng(15)
+    for _ in range(N_POSES):
+        q, qd = rng.uniform(-np.pi, np.pi, 2 * n), rng.uniform(-5, 5, 2 * n)
+        theta = random_theta(model, rng)
+        Mw, Cw = _M_notes(model, q, theta), _C_notes(model, q, qd, theta)
+        info = fmt(q=q, qd=qd, theta=theta)
+        check("M vs NOTES", model.M(q, theta), Mw, TOL_EXACT, maxabs(Mw), info, model)
+        check("C vs NOTES", model.C(q, qd, theta), Cw, TOL_EXACT, maxabs(Cw), info, model)
 
 
 # --------------------------------------------------------------------------------------
-# 5. The regressor: Y theta = Me xrdd + Ce xrd + S^T f_a; sign(0) = +1
+# 5. The regressor: Y theta = Me xrdd + Ce xrd + S^T f_a (every model)
 # --------------------------------------------------------------------------------------
 
-def test_Y_theta_equals_the_dynamics(m):
-    for xe, xed, xrd, xrdd, theta, _ in cases(m, 11):
-        q = m.ik(xe)
-        Me, Ce, StF = m.Me(q, theta), m.Ce(q, xed, theta), m.StF(q, xed, theta)
-        Yq = m.Y(q, xed, xrd, xrdd)
+def test_Y_theta_equals_the_dynamics(model, cases):
+    """Eq. 13 for random theta. For friction models other than eq. 2 the identity holds as
+    well: StF comes from the same model, and every friction law is linear in its parameters."""
+    p = len(model.param_names)
+    for xe, xed, xrd, xrdd, theta, _ in cases(model, 11):
+        q = model.ik(xe)
+        Me, Ce, StF = model.Me(q, theta), model.Ce(q, xed, theta), model.StF(q, xed, theta)
+        Yq = model.Y(q, xed, xrd, xrdd)
+        assert Yq.shape == (2, p)
         rhs = Me @ xrdd + Ce @ xrd + StF
         # the scale is the size of the summed terms (cancellation must not tighten the check)
         scale = maxabs(Me @ xrdd) + maxabs(Ce @ xrd) + maxabs(StF)
         check("Y theta vs Me xrdd + Ce xrd + StF", Yq @ theta, rhs, TOL_EXACT, scale,
-              fmt(xe=xe, xed=xed, xrd=xrd, xrdd=xrdd, theta=theta))
+              fmt(xe=xe, xed=xed, xrd=xrd, xrdd=xrdd, theta=theta), model)
 
 
-def test_StF_is_S_transpose_friction(m):
-    """S^T f_a with f_ai = sign(qd_ai) fc_i + fv_i qd_ai (eq. 2), typed from NOTES.md."""
-    for xe, xed, _, _, theta, _ in cases(m, 12):
-        q = m.ik(xe)
-        S = m.S(q)
+def test_StF_is_S_transpose_friction(model, cases):
+    """S^T f_a(S xed) with f_a typed from the model file's friction law (friction_typed)."""
+    if friction_typed(model, np.zeros(model.n_legs), np.array(model.theta_nominal)) is None:
+        pytest.skip(f"no hand-typed law for friction {model.spec.friction!r} in this test")
+    n = model.n_legs
+    for xe, xed, _, _, theta, _ in cases(model, 12):
+        q = model.ik(xe)
+        S = model.S(q)
         v = S @ xed
-        fa = np.where(v >= 0, 1.0, -1.0) * theta[12:15] + theta[9:12] * v
+        fa = friction_typed(model, v, theta)
         want = S.T @ fa
-        check("StF vs S^T f_a", m.StF(q, xed, theta), want, TOL_EXACT,
-              maxabs(S) * maxabs(fa) * 3, fmt(xe=xe, xed=xed, theta=theta))
+        check("StF vs S^T f_a (typed)", model.StF(q, xed, theta), want, TOL_EXACT,
+              maxabs(S) * maxabs(fa) * n, fmt(xe=xe, xed=xed, theta=theta), model)
 
+
+# --------------------------------------------------------------------------------------
+# 6. The C against the independent NumPy reference (models with eq. 2 friction)
+# --------------------------------------------------------------------------------------
+
+def reference_geometry(model):
+    """pm2dof.reference.Geometry of the model file (legs, elbows, five-bar fk branch)."""
+    bases, la, lb, elbow = geometry(model)
+    return ref.Geometry(bases=bases, la=la, lb=lb, elbow=elbow, fk_branch=model.spec.fk_branch)
+
+
+def test_reference_geometry_of_the_paper_is_geometry_paper(m):
+    """The Geometry built from the model file is the reference's own paper geometry."""
+    g, p = reference_geometry(m), ref.Geometry.paper()
+    for f in ("bases", "la", "lb", "elbow"):
+        np.testing.assert_array_equal(getattr(g, f), getattr(p, f), err_msg=f)
+
+
+def test_C_agrees_with_numpy_reference(coulomb_viscous_model, cases):
+    model = coulomb_viscous_model
+    assert model.spec.friction == "coulomb_viscous"
+    g = reference_geometry(model)
+    n = model.n_legs
+    for xe, xed, xrd, xrdd, theta, tau in cases(model, 14):
+        q = model.ik(xe)
+        qd = model.W(q) @ xed
+        info = fmt(xe=xe, xed=xed, xrd=xrd, xrdd=xrdd, theta=theta, tau_a=tau)
+        # ik: angles are equal modulo 2 pi (the C returns qb = atan2(.) in (-pi, pi]; the
+        # reference returns qb with qb - qa in (-pi, pi]); both are valid representatives.
+        check("ik vs ref (wrapped, rad)", wrap(q - ref.ik(g, xe)), np.zeros(2 * n), TOL_EXACT, 1.0,
+              info, model)
+        check("fk vs ref [m]", model.fk(q[:n]), ref.fk(g, q[:n]), TOL_EXACT, 1.0, info, model)
+        for name, got, want in [
+            ("H", model.H(q), ref.H(g, q)),
+            ("A", model.A(q), ref.A(g, q)),
+            ("W", model.W(q), ref.W(g, q)),
+            ("S", model.S(q), ref.S(g, q)),
+            ("Wdot", model.Wdot(q, xed), ref.Wdot(g, q, xed)),
+            ("M", model.M(q, theta), ref.M(g, q, theta)),
+            ("C", model.C(q, qd, theta), ref.C(g, q, qd, theta)),
+            ("Me", model.Me(q, theta), ref.Me(g, q, theta)),
+            ("Ce", model.Ce(q, xed, theta), ref.Ce(g, q, xed, theta)),
+            ("StF", model.StF(q, xed, theta), ref.task_friction(g, q, xed, theta)),
+            ("Y", model.Y(q, xed, xrd, xrdd), ref.Y(g, q, xed, xrd, xrdd)),
+        ]:
+            scale = max(maxabs(want), 1e-300)
+            if name == "H":
+                scale = 1.0  # H = 0 at a closed pose: absolute, in m
+            check(f"{name} vs ref", got, want, TOL_EXACT, scale, info, model)
+        # forward dynamics: xedd = Me^-1 (S^T tau - Ce xed - StF); relative to the size
+        # of Me^-1 times the summed terms (the sum may cancel)
+        Me = ref.Me(g, q, theta)
+        terms = (maxabs(ref.S(g, q).T @ tau) + maxabs(ref.Ce(g, q, xed, theta) @ xed)
+                 + maxabs(ref.task_friction(g, q, xed, theta)))
+        scale = np.linalg.norm(np.linalg.inv(Me), np.inf) * terms
+        check("forward_dynamics vs ref", model.forward_dynamics(xe, xed, tau, theta),
+              ref.forward_dynamics(g, xe, xed, tau, theta), TOL_EXACT, scale, info, model)
+
+
+# --------------------------------------------------------------------------------------
+# 7. Task-space forward dynamics against the joint-space Lagrange-multiplier solution
+# --------------------------------------------------------------------------------------
+# Written here from NOTES.md (eqs. 1-6), generalised to n legs with the model file's leg
+# geometry; independent of derive/ and of reference.py.
+
+def _leg_params(model, theta, kind):
+    names = list(model.param_names)
+    return np.array([theta[names.index(f"{kind}{i + 1}")] for i in range(model.n_legs)])
+
+
+def _M_notes(model, q, theta):
+    """Eq. 3: alpha_i at (i,i), gamma_i at (n+i,n+i), beta_i cos(qa_i - qb_i) off-diagonal."""
+    n = model.n_legs
+    al, be, ga = (_leg_params(model, theta, k) for k in ("alpha", "beta", "gamma"))
+    Mq = np.zeros((2 * n, 2 * n))
+    for i in range(n):
+        c = np.cos(q[i] - q[n + i])
+        Mq[i, i], Mq[n + i, n + i] = al[i], ga[i]
+        Mq[i, n + i] = Mq[n + i, i] = be[i] * c
+    return Mq
+
+
+def _C_notes(model, q, qd, theta):
+    """Eq. 1/3: C_i = [[0, beta_i s_i qd_bi], [-beta_i s_i qd_ai, 0]], s_i = sin(qa_i - qb_i)."""
+    n = model.n_legs
+    be = _leg_params(model, theta, "beta")
+    Cq = np.zeros((2 * n, 2 * n))
+    for i in range(n):
+        s = np.sin(q[i] - q[n + i])
+        Cq[i, n + i] = be[i] * s * qd[n + i]
+        Cq[n + i, i] = -be[i] * s * qd[i]
+    return Cq
+
+
+def _A_hand(model, q):
+    """Eq. 6 by hand: H = [tip_1 - tip_2; ...; tip_1 - tip_n], d tip_i/d qa_i = la_i (-sin, cos)."""
+    n = model.n_legs
+    _, la, lb, _ = geometry(model)
+    Aq = np.zeros((2 * (n - 1), 2 * n))
+    for k in range(1, n):
+        r = slice(2 * (k - 1), 2 * k)
+        Aq[r, 0], Aq[r, n] = la[0] * up(q[0]), lb[0] * up(q[n])
+        Aq[r, k], Aq[r, n + k] = -la[k] * up(q[k]), -lb[k] * up(q[n + k])
+    return Aq
+
+
+def _joint_velocities(model, q, xed):
+    """qd from xed, leg by leg: solve d tip_i/d(qa_i, qb_i) [qda_i; qdb_i] = xed."""
+    n = model.n_legs
+    _, la, lb, _ = geometry(model)
+    qd = np.zeros(2 * n)
+    for i in range(n):
+        J = np.column_stack([la[i] * up(q[i]), lb[i] * up(q[n + i])])
+        qd[i], qd[n + i] = np.linalg.solve(J, xed)
+    return qd
+
+
+def _xedd_lagrange(model, xe, xed, tau_a, theta, h=H_FD):
+    """Eq. 4 with multipliers: [[M, -A^T], [A, 0]] [qdd; lam] = [tau - f - C qd; -Adot qd].
+
+    f: the actuated-joint friction of the model file's law, typed here (friction_typed); for
+    a law it does not know, f = 0 (the caller has set the friction parameters to zero)."""
+    n = model.n_legs
+    _, la, lb, _ = geometry(model)
+    q = model.ik(xe)
+    qd = _joint_velocities(model, q, xed)
+    Aq = _A_hand(model, q)
+    # Adot qd = d/dt (A) qd along the motion q(t) = q + t qd, central FD of the hand A
+    Adot_qd = (_A_hand(model, q + h * qd) - _A_hand(model, q - h * qd)) / (2 * h) @ qd
+    fa = friction_typed(model, qd[:n], theta)
+    fa = np.zeros(n) if fa is None else fa
+    tau = np.concatenate([tau_a, np.zeros(n)])
+    f = np.concatenate([fa, np.zeros(n)])
+    K = np.block([[_M_notes(model, q, theta), -Aq.T], [Aq, np.zeros((2 * (n - 1), 2 * (n - 1)))]])
+    rhs = np.concatenate([tau - f - _C_notes(model, q, qd, theta) @ qd, -Adot_qd])
+    sol = np.linalg.solve(K, rhs)
+    qdd = sol[:2 * n]
+    # the tip of leg i: xedd = la u'(qa) qdd_a + lb u'(qb) qdd_b - la u(qa) qd_a^2 - lb u(qb) qd_b^2
+    tips = [la[i] * up(q[i]) * qdd[i] + lb[i] * up(q[n + i]) * qdd[n + i]
+            - la[i] * u(q[i]) * qd[i] ** 2 - lb[i] * u(q[n + i]) * qd[n + i] ** 2 for i in range(n)]
+    return tips, Aq, q
+
+
+def test_forward_dynamics_matches_lagrange_multipliers(model, cases, param_index):
+    """For a friction law this test cannot type, the friction parameters are set to zero
+    (every law is linear in its parameters: asserted via StF = 0) and f = 0 in the KKT system."""
+    n = model.n_legs
+    known = friction_typed(model, np.zeros(n), np.array(model.theta_nominal)) is not None
+    for xe, xed, _, _, theta, tau in cases(model, 16):
+        if not known:
+            theta = theta.copy()
+            theta[friction_index(model, param_index)] = 0.0
+            assert not model.StF(model.ik(xe), xed, theta).any(), "friction is not linear in theta"
+        info = fmt(xe=xe, xed=xed, tau_a=tau, theta=theta)
+        tips, Aq, q = _xedd_lagrange(model, xe, xed, tau, theta)
+        check("hand A vs m.A", model.A(q), Aq, TOL_EXACT, maxabs(Aq), info, model)
+        got = model.forward_dynamics(xe, xed, tau, theta)
+        scale = max(maxabs(tips[0]), 1.0)  # m/s^2; |xedd| is O(1..1e3) here
+        check("forward_dynamics vs Lagrange (tip 1)", got, tips[0], TOL_KKT, scale, info, model)
+        # the constraint acceleration holds: all tips accelerate together
+        for i in range(1, n):
+            check("Lagrange tip i = tip 1", tips[i], tips[0], TOL_KKT, scale, f"leg {i + 1}, {info}",
+                  model)
+
+
+def test_forward_dynamics_at_rest_without_torque_is_friction_only(model, sample_xe, param_index):
+    """xed = 0, tau = 0: Me xedd = -S^T f_a(0) (sign(0) = +1: f_a(0) = fc (+ fs) for the sign
+    laws; 0 for the smooth sign)."""
+    n = model.n_legs
+    theta = np.array(model.theta_nominal)
+    fa0 = friction_typed(model, np.zeros(n), theta)
+    if fa0 is None:
+        pytest.skip(f"no hand-typed law for friction {model.spec.friction!r} in this test")
+    for xe in sample_xe(model, 17, 10):
+        q = model.ik(xe)
+        Me, S = model.Me(q, theta), model.S(q)
+        want = np.linalg.solve(Me, -S.T @ fa0)
+        # scale: what friction of the size of the largest friction parameter would give (so
+        # that a zero expected value, the smooth sign, is still checked at a meaningful size)
+        fmax = maxabs(theta[friction_index(model, param_index)])
+        scale = np.linalg.norm(np.linalg.inv(Me), np.inf) * maxabs(S) * n * fmax
+        check("forward_dynamics at rest", model.forward_dynamics(xe, np.zeros(2), np.zeros(n), theta),
+              want, TOL_EXACT, scale, fmt(xe=xe), model)
+
+
+# --------------------------------------------------------------------------------------
+# 5'. sign(0) = +1 in the friction of the regressor (paper only: eq. 2, its geometry)
+# --------------------------------------------------------------------------------------
 
 def _pose_with_qb1_zero(m):
     """A closed pose whose passive link 1 points exactly along +x (qb_1 = 0.0 exactly).
@@ -336,27 +598,28 @@ def test_Y_friction_uses_sign_zero_plus_one(m, speed):
     np.testing.assert_array_equal(Yq[:, 12], S[0], err_msg=f"fc1 column: sign(0) must be +1 at {info}")
     for i in (1, 2):  # the other legs move: their sign is the sign of qd_ai
         assert v[i] != 0.0
-        check(f"Y fc{i + 1} column", Yq[:, 12 + i], np.sign(v[i]) * S[i], TOL_EXACT, maxabs(S[i]), info)
+        check(f"Y fc{i + 1} column", Yq[:, 12 + i], np.sign(v[i]) * S[i], TOL_EXACT, maxabs(S[i]), info,
+              m)
     # and StF: f_a1 = +fc1 at zero velocity
     theta = np.array(m.theta_nominal)
     fa = np.where(v >= 0, 1.0, -1.0) * theta[12:15] + theta[9:12] * v
     check("StF at qd_a1 = 0", m.StF(q, xed, theta), S.T @ fa, TOL_EXACT,
-          maxabs(S) * maxabs(fa) * 3, info)
+          maxabs(S) * maxabs(fa) * 3, info, m)
     # the reference agrees (it has its own sign(0) = +1)
     check("Y at qd_a1 = 0 vs reference", Yq, ref.Y(ref.Geometry.paper(), q, xed, np.zeros(2),
-                                                   np.zeros(2)), TOL_EXACT, maxabs(Yq), info)
+                                                   np.zeros(2)), TOL_EXACT, maxabs(Yq), info, m)
     # a tiny negative velocity flips the fc1 column
     Yneg = m.Y(q, xed + np.array([-1e-9, 0.0]) * np.sign(S[0, 0]), np.zeros(2), np.zeros(2))
     np.testing.assert_array_equal(Yneg[:, 12], -S[0], err_msg=f"fc1 column at qd_a1 < 0, {info}")
 
 
-def test_Y_friction_perpendicular_xed_generic_poses(m):
+def test_Y_friction_perpendicular_xed_generic_poses(m, sample_xe):
     """xed = c * perp(S[i]) at generic poses: qd_ai = 0 up to rounding of the C's own S xed.
 
     The exact-zero case is above; here the fc_i column must be +-S[i] (a sign) and the fv_i
     column ~0, i.e. the perpendicular direction really makes leg i's active joint still.
     """
-    for k, xe in enumerate(sample_poses(m, 13, 10)):
+    for k, xe in enumerate(sample_xe(m, 13, 10)):
         q = m.ik(xe)
         S = m.S(q)
         for i in range(3):
@@ -364,163 +627,19 @@ def test_Y_friction_perpendicular_xed_generic_poses(m):
             Yq = m.Y(q, xed, np.zeros(2), np.zeros(2))
             info = fmt(xe=xe, leg=i + 1, xed=xed)
             check(f"Y fv{i + 1} column at perp xed", Yq[:, 9 + i], np.zeros(2), TOL_EXACT,
-                  maxabs(S[i]) ** 2 * maxabs(xed), info)
+                  maxabs(S[i]) ** 2 * maxabs(xed), info, m)
             assert np.allclose(np.abs(Yq[:, 12 + i]), np.abs(S[i]), rtol=0, atol=1e-15 * maxabs(S[i])), info
 
 
 # --------------------------------------------------------------------------------------
-# 6. The C against the independent NumPy reference
-# --------------------------------------------------------------------------------------
-
-def test_C_agrees_with_numpy_reference(m):
-    g = ref.Geometry.paper()
-    for xe, xed, xrd, xrdd, theta, tau in cases(m, 14):
-        q = m.ik(xe)
-        qd = m.W(q) @ xed
-        info = fmt(xe=xe, xed=xed, xrd=xrd, xrdd=xrdd, theta=theta, tau_a=tau)
-        # ik: angles are equal modulo 2 pi (the C returns qb = atan2(.) in (-pi, pi]; the
-        # reference returns qb with qb - qa in (-pi, pi]); both are valid representatives.
-        check("ik vs ref (wrapped, rad)", wrap(q - ref.ik(g, xe)), np.zeros(6), TOL_EXACT, 1.0, info)
-        check("fk vs ref [m]", m.fk(q[:3]), ref.fk(g, q[:3]), TOL_EXACT, 1.0, info)
-        for name, got, want in [
-            ("H", m.H(q), ref.H(g, q)),
-            ("A", m.A(q), ref.A(g, q)),
-            ("W", m.W(q), ref.W(g, q)),
-            ("S", m.S(q), ref.S(g, q)),
-            ("Wdot", m.Wdot(q, xed), ref.Wdot(g, q, xed)),
-            ("M", m.M(q, theta), ref.M(g, q, theta)),
-            ("C", m.C(q, qd, theta), ref.C(g, q, qd, theta)),
-            ("Me", m.Me(q, theta), ref.Me(g, q, theta)),
-            ("Ce", m.Ce(q, xed, theta), ref.Ce(g, q, xed, theta)),
-            ("StF", m.StF(q, xed, theta), ref.task_friction(g, q, xed, theta)),
-            ("Y", m.Y(q, xed, xrd, xrdd), ref.Y(g, q, xed, xrd, xrdd)),
-        ]:
-            scale = max(maxabs(want), 1e-300)
-            if name == "H":
-                scale = 1.0  # H = 0 at a closed pose: absolute, in m
-            check(f"{name} vs ref", got, want, TOL_EXACT, scale, info)
-        # forward dynamics: xedd = Me^-1 (S^T tau - Ce xed - StF); relative to the size
-        # of Me^-1 times the summed terms (the sum may cancel)
-        Me = ref.Me(g, q, theta)
-        terms = (maxabs(ref.S(g, q).T @ tau) + maxabs(ref.Ce(g, q, xed, theta) @ xed)
-                 + maxabs(ref.task_friction(g, q, xed, theta)))
-        scale = np.linalg.norm(np.linalg.inv(Me), np.inf) * terms
-        check("forward_dynamics vs ref", m.forward_dynamics(xe, xed, tau, theta),
-              ref.forward_dynamics(g, xe, xed, tau, theta), TOL_EXACT, scale, info)
-
-
-def test_M_C_typed_from_notes(m):
-    """M and C of eq. 3 at arbitrary q, qd, typed from NOTES.md."""
-    rng = np.random.default_rng(15)
-    for _ in range(N_POSES):
-        q, qd, theta = rng.uniform(-np.pi, np.pi, 6), rng.uniform(-5, 5, 6), random_theta(rng)
-        Mw, Cw = _M_notes(q, theta), _C_notes(q, qd, theta)
-        info = fmt(q=q, qd=qd, theta=theta)
-        check("M vs NOTES", m.M(q, theta), Mw, TOL_EXACT, maxabs(Mw), info)
-        check("C vs NOTES", m.C(q, qd, theta), Cw, TOL_EXACT, maxabs(Cw), info)
-
-
-# --------------------------------------------------------------------------------------
-# 7. Task-space forward dynamics against the joint-space Lagrange-multiplier solution
-# --------------------------------------------------------------------------------------
-# Written here from NOTES.md (eqs. 1-6), independent of derive/ and of reference.py.
-
-def _M_notes(q, theta):
-    """Eq. 3: alpha_i at (i,i), gamma_i at (3+i,3+i), beta_i cos(qa_i - qb_i) off-diagonal."""
-    al, be, ga = theta[0:3], theta[3:6], theta[6:9]
-    Mq = np.zeros((6, 6))
-    for i in range(3):
-        c = np.cos(q[i] - q[3 + i])
-        Mq[i, i], Mq[3 + i, 3 + i] = al[i], ga[i]
-        Mq[i, 3 + i] = Mq[3 + i, i] = be[i] * c
-    return Mq
-
-
-def _C_notes(q, qd, theta):
-    """Eq. 1/3: C_i = [[0, beta_i s_i qd_bi], [-beta_i s_i qd_ai, 0]], s_i = sin(qa_i - qb_i)."""
-    be = theta[3:6]
-    Cq = np.zeros((6, 6))
-    for i in range(3):
-        s = np.sin(q[i] - q[3 + i])
-        Cq[i, 3 + i] = be[i] * s * qd[3 + i]
-        Cq[3 + i, i] = -be[i] * s * qd[i]
-    return Cq
-
-
-def _A_hand(q):
-    """Eq. 6 by hand: H = [tip_1 - tip_2; tip_1 - tip_3], d tip_i/d q_ai = l (-sin, cos)."""
-    Aq = np.zeros((4, 6))
-    dtip = lambda t: L * np.array([-np.sin(t), np.cos(t)])  # noqa: E731
-    for k in (1, 2):
-        r = slice(2 * (k - 1), 2 * k)
-        Aq[r, 0], Aq[r, 3] = dtip(q[0]), dtip(q[3])
-        Aq[r, k], Aq[r, 3 + k] = -dtip(q[k]), -dtip(q[3 + k])
-    return Aq
-
-
-def _joint_velocities(q, xed):
-    """qd from xed, leg by leg: solve d tip_i/d(qa_i, qb_i) [qda_i; qdb_i] = xed."""
-    qd = np.zeros(6)
-    for i in range(3):
-        J = L * np.array([[-np.sin(q[i]), -np.sin(q[3 + i])], [np.cos(q[i]), np.cos(q[3 + i])]])
-        qd[i], qd[3 + i] = np.linalg.solve(J, xed)
-    return qd
-
-
-def _xedd_lagrange(m, xe, xed, tau_a, theta, h=H_FD):
-    """Eq. 4 with multipliers: [[M, -A^T], [A, 0]] [qdd; lam] = [tau - f - C qd; -Adot qd]."""
-    q = m.ik(xe)
-    qd = _joint_velocities(q, xed)
-    Aq = _A_hand(q)
-    # Adot qd = d/dt (A) qd along the motion q(t) = q + t qd, central FD of the hand A
-    Adot_qd = (_A_hand(q + h * qd) - _A_hand(q - h * qd)) / (2 * h) @ qd
-    fa = np.where(qd[:3] >= 0, 1.0, -1.0) * theta[12:15] + theta[9:12] * qd[:3]  # eq. 2
-    tau = np.concatenate([tau_a, np.zeros(3)])
-    f = np.concatenate([fa, np.zeros(3)])
-    K = np.block([[_M_notes(q, theta), -Aq.T], [Aq, np.zeros((4, 4))]])
-    rhs = np.concatenate([tau - f - _C_notes(q, qd, theta) @ qd, -Adot_qd])
-    sol = np.linalg.solve(K, rhs)
-    qdd = sol[:6]
-    # the tip of leg 1: xedd = l u'(qa1) qdd_a1 + l u'(qb1) qdd_b1 - l u(qa1) qd_a1^2 - l u(qb1) qd_b1^2
-    u = lambda t: np.array([np.cos(t), np.sin(t)])  # noqa: E731
-    up = lambda t: np.array([-np.sin(t), np.cos(t)])  # noqa: E731
-    tips = [L * up(q[i]) * qdd[i] + L * up(q[3 + i]) * qdd[3 + i]
-            - L * u(q[i]) * qd[i] ** 2 - L * u(q[3 + i]) * qd[3 + i] ** 2 for i in range(3)]
-    return tips, Aq, q
-
-
-def test_forward_dynamics_matches_lagrange_multipliers(m):
-    for xe, xed, _, _, theta, tau in cases(m, 16):
-        info = fmt(xe=xe, xed=xed, tau_a=tau, theta=theta)
-        tips, Aq, q = _xedd_lagrange(m, xe, xed, tau, theta)
-        check("hand A vs m.A", m.A(q), Aq, TOL_EXACT, maxabs(Aq), info)
-        got = m.forward_dynamics(xe, xed, tau, theta)
-        scale = max(maxabs(tips[0]), 1.0)  # m/s^2; |xedd| is O(1..1e3) here
-        check("forward_dynamics vs Lagrange (tip 1)", got, tips[0], TOL_KKT, scale, info)
-        # the constraint acceleration holds: all tips accelerate together
-        for i in (1, 2):
-            check(f"Lagrange tip {i + 1} = tip 1", tips[i], tips[0], TOL_KKT, scale, info)
-
-
-def test_forward_dynamics_at_rest_without_torque_is_friction_only(m):
-    """xed = 0, tau = 0: Me xedd = -S^T f_a(0) = -S^T fc (sign(0) = +1)."""
-    theta = np.array(m.theta_nominal)
-    for xe in sample_poses(m, 17, 10):
-        q = m.ik(xe)
-        want = np.linalg.solve(m.Me(q, theta), -m.S(q).T @ theta[12:15])
-        check("forward_dynamics at rest", m.forward_dynamics(xe, np.zeros(2), np.zeros(3), theta),
-              want, TOL_EXACT, maxabs(want), fmt(xe=xe))
-
-
-# --------------------------------------------------------------------------------------
-# 8. Errors
+# 8. Errors (the paper's robot, except the singular-pose guard: every model)
 # --------------------------------------------------------------------------------------
 
 @pytest.fixture(scope="module")
-def singular_q(m):
-    """A q with qb_1 = qa_1 (leg 1 stretched): sin(qb_1 - qa_1) = 0 exactly."""
-    q = m.ik([0.25, 0.26]).copy()
-    q[3] = q[0]
+def singular_q(model, sample_xe):
+    """A q of the model with qb_1 = qa_1 (leg 1 stretched): sin(qb_1 - qa_1) = 0 exactly."""
+    q = model.ik(sample_xe(model, 0, 1)[0]).copy()
+    q[model.n_legs] = q[0]
     return q
 
 
@@ -533,9 +652,10 @@ def singular_q(m):
     lambda m, q: m.StF(q, [0.1, 0.2], m.theta_nominal),
     lambda m, q: m.Y(q, [0.1, 0.2], [0.1, 0.0], [1.0, 0.0]),
 ], ids=["W", "S", "Wdot", "Me", "Ce", "StF", "Y"])
-def test_singular_pose_raises(m, singular_q, call):
+def test_singular_pose_raises(model, singular_q, call):
+    """Every model (paper-independent: the runtime's singularity guard)."""
     with pytest.raises(pm2dof.SingularityError, match="singularity"):
-        call(m, singular_q)
+        call(model, singular_q)
 
 
 def test_singularity_threshold_is_enforced(m):
@@ -656,7 +776,7 @@ def test_lists_and_other_dtypes_are_accepted(m):
 
 
 # --------------------------------------------------------------------------------------
-# 9. API contract
+# 9. API contract (the paper's robot: Tables 1-2, Sect. 2; output shapes: every model)
 # --------------------------------------------------------------------------------------
 
 PARAM_NAMES = ("alpha1", "alpha2", "alpha3", "beta1", "beta2", "beta3", "gamma1", "gamma2",
@@ -685,31 +805,37 @@ def test_geometry_attributes(m):
     assert m.bases.shape == (3, 2)
 
 
-def test_output_shapes(m):
-    xe = np.array([0.25, 0.26])
-    q = m.ik(xe)
-    th = np.array(m.theta_nominal)
-    z2, z3 = np.zeros(2), np.zeros(3)
+def test_output_shapes(model, sample_xe, param_index):
+    n, p = model.n_legs, len(model.param_names)
+    xe = sample_xe(model, 0, 1)[0]
+    q = model.ik(xe)
+    th = np.array(model.theta_nominal)
+    z2 = np.zeros(2)
     shapes = {
-        "ik": (m.ik(xe), (6,)),
-        "fk": (m.fk(q[:3]), (2,)),
-        "H": (m.H(q), (4,)),
-        "A": (m.A(q), (4, 6)),
-        "singularity": (m.singularity(q), (3,)),
-        "W": (m.W(q), (6, 2)),
-        "Wdot": (m.Wdot(q, z2), (6, 2)),
-        "S": (m.S(q), (3, 2)),
-        "M": (m.M(q, th), (6, 6)),
-        "C": (m.C(q, np.zeros(6), th), (6, 6)),
-        "Me": (m.Me(q, th), (2, 2)),
-        "Ce": (m.Ce(q, z2, th), (2, 2)),
-        "StF": (m.StF(q, z2, th), (2,)),
-        "Y": (m.Y(q, z2, z2, z2), (2, 15)),
-        "forward_dynamics": (m.forward_dynamics(xe, z2, z3, th), (2,)),
+        "ik": (model.ik(xe), (2 * n,)),
+        "fk": (model.fk(q[:n]), (2,)),
+        "H": (model.H(q), (2 * (n - 1),)),
+        "A": (model.A(q), (2 * (n - 1), 2 * n)),
+        "singularity": (model.singularity(q), (n,)),
+        "W": (model.W(q), (2 * n, 2)),
+        "Wdot": (model.Wdot(q, z2), (2 * n, 2)),
+        "S": (model.S(q), (n, 2)),
+        "M": (model.M(q, th), (2 * n, 2 * n)),
+        "C": (model.C(q, np.zeros(2 * n), th), (2 * n, 2 * n)),
+        "Me": (model.Me(q, th), (2, 2)),
+        "Ce": (model.Ce(q, z2, th), (2, 2)),
+        "StF": (model.StF(q, z2, th), (2,)),
+        "Y": (model.Y(q, z2, z2, z2), (2, p)),
+        "forward_dynamics": (model.forward_dynamics(xe, z2, np.zeros(n), th), (2,)),
     }
+    # theta: one value of each kind (alpha, beta, gamma, friction ...) per leg
+    idx = param_index(model)
+    kinds = {k for k, _ in idx}
+    assert {"alpha", "beta", "gamma"} <= kinds and len(th) == p == len(idx) == n * len(kinds)
+    assert set(idx) == {(k, i) for k in kinds for i in range(n)}
     for name, (val, shape) in shapes.items():
-        assert isinstance(val, np.ndarray) and val.dtype == np.float64, name
-        assert val.shape == shape, f"{name}: shape {val.shape} != {shape}"
+        assert isinstance(val, np.ndarray) and val.dtype == np.float64, f"{model.name}: {name}"
+        assert val.shape == shape, f"{model.name}: {name}: shape {val.shape} != {shape}"
 
 
 def test_model_is_immutable():

@@ -86,8 +86,8 @@ static const double MOVE_V = 0.5, MOVE_A = 10.0, MOVE_J = 400.0; /* m/s, m/s^2, 
 /* Layout sizes (manifest.json "layouts") */
 enum {
     STATE_SIZE = 2 + 2 + N_THETA,              /* ctrl_state: xe_prev, v, theta_hat */
-    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 1 + 3 + N_LEGS, /* Kd, Q, Gamma, project, T,
-                                                          vel_alpha, sing_threshold, tau_max */
+    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 3 + N_LEGS, /* Kd, Q, Gamma, T, vel_alpha,
+                                                      sing_threshold, tau_max */
     DIAG_SIZE = 9,                             /* diag: xe, v, e, edot, sing */
     PLANT_SIZE = 6 * N_LEGS + 3                /* alpha beta gamma fv fc fs, vs, eps, step */
 };
@@ -359,7 +359,6 @@ int main(int argc, char **argv)
     for (int i = 0; i < 2; i++) *pp++ = KD[i];
     for (int i = 0; i < 2; i++) *pp++ = Q[i];
     for (int i = 0; i < N_THETA; i++) *pp++ = GAMMA[i];
-    *pp++ = 0.0;                                /* project theta_hat: off, as in the paper */
     *pp++ = T;
     /* velocity estimate v += a ((xe - xe_prev) / T - v): first-order low-pass, a = 1: none */
     *pp++ = VELOCITY_FILTER_HZ > 0.0 ? T / (T + 1.0 / (2.0 * PI * VELOCITY_FILTER_HZ)) : 1.0;

@@ -45,6 +45,8 @@ extern "C" {
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f20 CASADI_PREFIX(f20)
 #define casadi_f21 CASADI_PREFIX(f21)
+#define casadi_f22 CASADI_PREFIX(f22)
+#define casadi_f23 CASADI_PREFIX(f23)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
 #define casadi_f5 CASADI_PREFIX(f5)
@@ -62,6 +64,7 @@ extern "C" {
 #define casadi_s12 CASADI_PREFIX(s12)
 #define casadi_s13 CASADI_PREFIX(s13)
 #define casadi_s14 CASADI_PREFIX(s14)
+#define casadi_s15 CASADI_PREFIX(s15)
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
@@ -149,15 +152,16 @@ static const casadi_int casadi_s4[3] = {10, 1, 1};
 static const casadi_int casadi_s5[3] = {16, 1, 1};
 static const casadi_int casadi_s6[3] = {20, 1, 1};
 static const casadi_int casadi_s7[3] = {14, 1, 1};
-static const casadi_int casadi_s8[3] = {9, 1, 1};
-static const casadi_int casadi_s9[3] = {15, 1, 1};
-static const casadi_int casadi_s10[3] = {18, 1, 1};
-static const casadi_int casadi_s11[3] = {6, 1, 1};
-static const casadi_int casadi_s12[3] = {35, 1, 1};
-static const casadi_int casadi_s13[3] = {17, 1, 1};
-static const casadi_int casadi_s14[3] = {24, 1, 1};
+static const casadi_int casadi_s8[3] = {19, 1, 1};
+static const casadi_int casadi_s9[3] = {9, 1, 1};
+static const casadi_int casadi_s10[3] = {15, 1, 1};
+static const casadi_int casadi_s11[3] = {18, 1, 1};
+static const casadi_int casadi_s12[3] = {6, 1, 1};
+static const casadi_int casadi_s13[3] = {34, 1, 1};
+static const casadi_int casadi_s14[3] = {17, 1, 1};
+static const casadi_int casadi_s15[3] = {24, 1, 1};
 
-static const casadi_real casadi_zeros[35] = 
+static const casadi_real casadi_zeros[34] = 
   {0.};
 
 /* fivebar_ik:(xe[2])->(q[4]) */
@@ -3315,7 +3319,7 @@ CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* fivebar_na_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[20])->(tau_a[2],state_next[14],status,diag[9]) */
+/* fivebar_na_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[19])->(tau_a[2],state_next[14],status,diag[9]) */
 static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -3323,7 +3327,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
   casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
   casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
   casadi_real a60, a61, a62, a63;
-  a00=arg[5]? arg[5][17] : 0;
+  a00=arg[5]? arg[5][16] : 0;
   a01=arg[1]? arg[1][0] : 0;
   a02=sin(a01);
   a03=5.9535999999999999e-02;
@@ -3423,12 +3427,12 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a32=arg[5]? arg[5][2] : 0;
   a33=arg[3]? arg[3][0] : 0;
   a34=arg[0]? arg[0][2] : 0;
-  a35=arg[5]? arg[5][16] : 0;
+  a35=arg[5]? arg[5][15] : 0;
   a18=(a22+a18);
   a18=(a18+a10);
   a10=arg[0]? arg[0][0] : 0;
   a36=(a18-a10);
-  a37=arg[5]? arg[5][15] : 0;
+  a37=arg[5]? arg[5][14] : 0;
   a36=(a36/a37);
   a36=(a36-a34);
   a36=(a35*a36);
@@ -3683,264 +3687,184 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a40=(a40/a28);
   a27=(a27*a40);
   a23=(a23-a27);
-  a27=casadi_fabs(a23);
-  a28=casadi_inf;
-  a58=(a27<a28);
   a07=(a07*a60);
   a29=(a29*a40);
   a07=(a07-a29);
-  a29=casadi_fabs(a07);
-  a40=(a29<a28);
-  a58=(a58&&a40);
-  a40=arg[5]? arg[5][14] : 0;
-  a40=(a31<a40);
-  a60=arg[5]? arg[5][4] : 0;
-  a60=(a37*a60);
+  a29=(a23+a07);
+  a40=arg[5]? arg[5][4] : 0;
+  a40=(a37*a40);
   a48=(a48*a33);
   a39=(a39*a42);
   a48=(a48-a39);
-  a60=(a60*a48);
-  a60=(a26+a60);
-  a48=9.9999999999999995e-07;
-  a39=casadi_fmax(a60,a48);
-  a50=(a40?a39:0);
-  a02=(!a40);
-  a60=(a02?a60:0);
-  a50=(a50+a60);
-  a60=casadi_fabs(a50);
-  a60=(a60<a28);
-  a58=(a58&&a60);
-  a60=arg[5]? arg[5][5] : 0;
-  a60=(a37*a60);
+  a40=(a40*a48);
+  a40=(a26+a40);
+  a29=(a29+a40);
+  a48=arg[5]? arg[5][5] : 0;
+  a48=(a37*a48);
   a30=(a30*a33);
   a51=(a51*a42);
   a30=(a30-a51);
-  a60=(a60*a30);
-  a60=(a05+a60);
-  a30=casadi_fmax(a60,a48);
-  a51=(a40?a30:0);
-  a60=(a02?a60:0);
-  a51=(a51+a60);
-  a60=casadi_fabs(a51);
-  a60=(a60<a28);
-  a58=(a58&&a60);
-  a60=arg[5]? arg[5][6] : 0;
-  a60=(a37*a60);
+  a48=(a48*a30);
+  a48=(a05+a48);
+  a29=(a29+a48);
+  a30=arg[5]? arg[5][6] : 0;
+  a30=(a37*a30);
   a41=(a41*a33);
   a01=(a01*a42);
   a41=(a41+a01);
-  a60=(a60*a41);
-  a60=(a32+a60);
-  a41=arg[5]? arg[5][8] : 0;
+  a30=(a30*a41);
+  a30=(a32+a30);
+  a29=(a29+a30);
+  a41=arg[5]? arg[5][7] : 0;
   a41=(a37*a41);
-  a06=(a06*a42);
-  a22=(a22*a33);
-  a06=(a06-a22);
-  a41=(a41*a06);
-  a41=(a24+a41);
-  a06=casadi_fmax(a41,a48);
-  a39=(a39*a06);
-  a39=sqrt(a39);
-  a22=(-a39);
-  a22=casadi_fmax(a60,a22);
-  a22=casadi_fmin(a22,a39);
-  a22=(a40?a22:0);
-  a60=(a02?a60:0);
-  a22=(a22+a60);
-  a60=casadi_fabs(a22);
-  a60=(a60<a28);
-  a58=(a58&&a60);
-  a60=arg[5]? arg[5][7] : 0;
-  a60=(a37*a60);
   a56=(a56*a33);
   a08=(a08*a42);
   a56=(a56+a08);
-  a60=(a60*a56);
-  a60=(a55+a60);
-  a56=arg[5]? arg[5][9] : 0;
+  a41=(a41*a56);
+  a41=(a55+a41);
+  a29=(a29+a41);
+  a56=arg[5]? arg[5][8] : 0;
   a56=(a37*a56);
+  a06=(a06*a42);
+  a22=(a22*a33);
+  a06=(a06-a22);
+  a56=(a56*a06);
+  a56=(a24+a56);
+  a29=(a29+a56);
+  a06=arg[5]? arg[5][9] : 0;
+  a06=(a37*a06);
   a13=(a13*a42);
   a12=(a12*a33);
   a13=(a13-a12);
-  a56=(a56*a13);
-  a56=(a57+a56);
-  a48=casadi_fmax(a56,a48);
-  a30=(a30*a48);
-  a30=sqrt(a30);
-  a13=(-a30);
-  a13=casadi_fmax(a60,a13);
-  a13=casadi_fmin(a13,a30);
-  a13=(a40?a13:0);
-  a60=(a02?a60:0);
-  a13=(a13+a60);
-  a60=casadi_fabs(a13);
-  a60=(a60<a28);
-  a58=(a58&&a60);
-  a06=(a40?a06:0);
-  a41=(a02?a41:0);
-  a06=(a06+a41);
-  a41=casadi_fabs(a06);
-  a41=(a41<a28);
-  a58=(a58&&a41);
-  a48=(a40?a48:0);
-  a56=(a02?a56:0);
-  a48=(a48+a56);
-  a56=casadi_fabs(a48);
-  a56=(a56<a28);
-  a58=(a58&&a56);
-  a56=arg[5]? arg[5][10] : 0;
-  a56=(a37*a56);
+  a06=(a06*a13);
+  a06=(a57+a06);
+  a29=(a29+a06);
+  a13=arg[5]? arg[5][10] : 0;
+  a13=(a37*a13);
   a16=(a16*a33);
   a17=(a17*a42);
   a16=(a16-a17);
-  a56=(a56*a16);
-  a56=(a21+a56);
-  a16=casadi_fmax(a56,a31);
-  a16=(a40?a16:0);
-  a56=(a02?a56:0);
-  a16=(a16+a56);
-  a56=casadi_fabs(a16);
-  a56=(a56<a28);
-  a58=(a58&&a56);
-  a56=arg[5]? arg[5][11] : 0;
-  a56=(a37*a56);
+  a13=(a13*a16);
+  a13=(a21+a13);
+  a29=(a29+a13);
+  a16=arg[5]? arg[5][11] : 0;
+  a16=(a37*a16);
   a53=(a53*a33);
   a52=(a52*a42);
   a53=(a53-a52);
-  a56=(a56*a53);
-  a56=(a54+a56);
-  a53=casadi_fmax(a56,a31);
-  a53=(a40?a53:0);
-  a56=(a02?a56:0);
-  a53=(a53+a56);
-  a56=casadi_fabs(a53);
-  a56=(a56<a28);
-  a58=(a58&&a56);
-  a56=arg[5]? arg[5][12] : 0;
-  a56=(a37*a56);
+  a16=(a16*a53);
+  a16=(a54+a16);
+  a29=(a29+a16);
+  a53=arg[5]? arg[5][12] : 0;
+  a53=(a37*a53);
   a11=(a11*a33);
   a04=(a04*a42);
   a11=(a11-a04);
-  a56=(a56*a11);
-  a56=(a44+a56);
-  a11=casadi_fmax(a56,a31);
-  a11=(a40?a11:0);
-  a56=(a02?a56:0);
-  a11=(a11+a56);
-  a56=casadi_fabs(a11);
-  a56=(a56<a28);
-  a58=(a58&&a56);
-  a56=arg[5]? arg[5][13] : 0;
-  a37=(a37*a56);
+  a53=(a53*a11);
+  a53=(a44+a53);
+  a29=(a29+a53);
+  a11=arg[5]? arg[5][13] : 0;
+  a37=(a37*a11);
   a45=(a45*a33);
   a59=(a59*a42);
   a45=(a45-a59);
   a37=(a37*a45);
   a37=(a19+a37);
-  a45=casadi_fmax(a37,a31);
-  a40=(a40?a45:0);
-  a02=(a02?a37:0);
-  a40=(a40+a02);
-  a02=casadi_fabs(a40);
-  a02=(a02<a28);
-  a58=(a58&&a02);
-  a02=casadi_fabs(a18);
-  a02=(a02<a28);
-  a58=(a58&&a02);
-  a02=casadi_fabs(a15);
-  a02=(a02<a28);
-  a58=(a58&&a02);
-  a02=casadi_fabs(a36);
-  a02=(a02<a28);
-  a58=(a58&&a02);
-  a02=casadi_fabs(a35);
-  a02=(a02<a28);
-  a58=(a58&&a02);
-  a02=(a00&&a58);
-  a28=arg[5]? arg[5][18] : 0;
-  a37=(-a28);
-  a23=casadi_fmax(a23,a37);
-  a23=casadi_fmin(a23,a28);
-  a23=(a02?a23:0);
-  if (res[0]!=0) res[0][0]=a23;
-  a23=arg[5]? arg[5][19] : 0;
-  a37=(-a23);
-  a07=casadi_fmax(a07,a37);
-  a07=casadi_fmin(a07,a23);
-  a07=(a02?a07:0);
-  if (res[0]!=0) res[0][1]=a07;
-  a07=(a58?a18:0);
-  a37=(!a58);
-  a10=(a37?a10:0);
-  a07=(a07+a10);
-  if (res[1]!=0) res[1][0]=a07;
-  a07=(a58?a15:0);
-  a14=(a37?a14:0);
-  a07=(a07+a14);
-  if (res[1]!=0) res[1][1]=a07;
-  a07=(a58?a36:0);
-  a34=(a37?a34:0);
-  a07=(a07+a34);
-  if (res[1]!=0) res[1][2]=a07;
-  a07=(a58?a35:0);
-  a43=(a37?a43:0);
-  a07=(a07+a43);
-  if (res[1]!=0) res[1][3]=a07;
-  a50=(a02?a50:0);
-  a07=(!a02);
-  a26=(a07?a26:0);
-  a50=(a50+a26);
-  if (res[1]!=0) res[1][4]=a50;
-  a51=(a02?a51:0);
-  a05=(a07?a05:0);
-  a51=(a51+a05);
-  if (res[1]!=0) res[1][5]=a51;
-  a22=(a02?a22:0);
-  a32=(a07?a32:0);
-  a22=(a22+a32);
-  if (res[1]!=0) res[1][6]=a22;
-  a13=(a02?a13:0);
-  a55=(a07?a55:0);
-  a13=(a13+a55);
-  if (res[1]!=0) res[1][7]=a13;
-  a06=(a02?a06:0);
-  a24=(a07?a24:0);
-  a06=(a06+a24);
-  if (res[1]!=0) res[1][8]=a06;
-  a48=(a02?a48:0);
-  a57=(a07?a57:0);
-  a48=(a48+a57);
-  if (res[1]!=0) res[1][9]=a48;
-  a16=(a02?a16:0);
-  a21=(a07?a21:0);
-  a16=(a16+a21);
-  if (res[1]!=0) res[1][10]=a16;
-  a53=(a02?a53:0);
-  a54=(a07?a54:0);
-  a53=(a53+a54);
-  if (res[1]!=0) res[1][11]=a53;
-  a11=(a02?a11:0);
-  a44=(a07?a44:0);
-  a11=(a11+a44);
-  if (res[1]!=0) res[1][12]=a11;
-  a02=(a02?a40:0);
-  a07=(a07?a19:0);
-  a02=(a02+a07);
-  if (res[1]!=0) res[1][13]=a02;
-  a27=(a27-a28);
-  a29=(a29-a23);
-  a27=casadi_fmax(a27,a29);
-  a31=(a31<a27);
+  a29=(a29+a37);
+  a29=(a29+a18);
+  a29=(a29+a15);
+  a29=(a29+a36);
+  a29=(a29+a35);
+  a29=casadi_fabs(a29);
+  a45=casadi_inf;
+  a29=(a29<a45);
+  a45=(a00&&a29);
+  a59=arg[5]? arg[5][17] : 0;
+  a42=(-a59);
+  a42=casadi_fmax(a23,a42);
+  a42=casadi_fmin(a42,a59);
+  a42=(a45?a42:0);
+  if (res[0]!=0) res[0][0]=a42;
+  a42=arg[5]? arg[5][18] : 0;
+  a33=(-a42);
+  a33=casadi_fmax(a07,a33);
+  a33=casadi_fmin(a33,a42);
+  a33=(a45?a33:0);
+  if (res[0]!=0) res[0][1]=a33;
+  a33=(a29?a18:0);
+  a11=(!a29);
+  a10=(a11?a10:0);
+  a33=(a33+a10);
+  if (res[1]!=0) res[1][0]=a33;
+  a33=(a29?a15:0);
+  a14=(a11?a14:0);
+  a33=(a33+a14);
+  if (res[1]!=0) res[1][1]=a33;
+  a33=(a29?a36:0);
+  a34=(a11?a34:0);
+  a33=(a33+a34);
+  if (res[1]!=0) res[1][2]=a33;
+  a33=(a29?a35:0);
+  a43=(a11?a43:0);
+  a33=(a33+a43);
+  if (res[1]!=0) res[1][3]=a33;
+  a40=(a45?a40:0);
+  a33=(!a45);
+  a26=(a33?a26:0);
+  a40=(a40+a26);
+  if (res[1]!=0) res[1][4]=a40;
+  a48=(a45?a48:0);
+  a05=(a33?a05:0);
+  a48=(a48+a05);
+  if (res[1]!=0) res[1][5]=a48;
+  a30=(a45?a30:0);
+  a32=(a33?a32:0);
+  a30=(a30+a32);
+  if (res[1]!=0) res[1][6]=a30;
+  a41=(a45?a41:0);
+  a55=(a33?a55:0);
+  a41=(a41+a55);
+  if (res[1]!=0) res[1][7]=a41;
+  a56=(a45?a56:0);
+  a24=(a33?a24:0);
+  a56=(a56+a24);
+  if (res[1]!=0) res[1][8]=a56;
+  a06=(a45?a06:0);
+  a57=(a33?a57:0);
+  a06=(a06+a57);
+  if (res[1]!=0) res[1][9]=a06;
+  a13=(a45?a13:0);
+  a21=(a33?a21:0);
+  a13=(a13+a21);
+  if (res[1]!=0) res[1][10]=a13;
+  a16=(a45?a16:0);
+  a54=(a33?a54:0);
+  a16=(a16+a54);
+  if (res[1]!=0) res[1][11]=a16;
+  a53=(a45?a53:0);
+  a44=(a33?a44:0);
+  a53=(a53+a44);
+  if (res[1]!=0) res[1][12]=a53;
+  a45=(a45?a37:0);
+  a33=(a33?a19:0);
+  a45=(a45+a33);
+  if (res[1]!=0) res[1][13]=a45;
+  a23=casadi_fabs(a23);
+  a23=(a23-a59);
+  a07=casadi_fabs(a07);
+  a07=(a07-a42);
+  a23=casadi_fmax(a23,a07);
+  a31=(a31<a23);
   a31=(a31?a20:0);
-  a58=(a58?a31:0);
+  a29=(a29?a31:0);
   a31=3.;
-  a37=(a37?a31:0);
-  a58=(a58+a37);
-  a58=(a00?a58:0);
+  a11=(a11?a31:0);
+  a29=(a29+a11);
+  a29=(a00?a29:0);
   a00=(!a00);
   a00=(a00?a49:0);
-  a58=(a58+a00);
-  if (res[2]!=0) res[2][0]=a58;
+  a29=(a29+a00);
+  if (res[2]!=0) res[2][0]=a29;
   if (res[3]!=0) res[3][0]=a18;
   if (res[3]!=0) res[3][1]=a15;
   if (res[3]!=0) res[3][2]=a36;
@@ -4009,7 +3933,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_step_sparsity_in(casadi_int i)
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s6;
+    case 5: return casadi_s8;
     default: return 0;
   }
 }
@@ -4019,7 +3943,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_step_sparsity_out(casadi_int i
     case 0: return casadi_s0;
     case 1: return casadi_s7;
     case 2: return casadi_s3;
-    case 3: return casadi_s8;
+    case 3: return casadi_s9;
     default: return 0;
   }
 }
@@ -4040,8 +3964,672 @@ CASADI_SYMBOL_EXPORT int fivebar_na_step_work_bytes(casadi_int *sz_arg, casadi_i
   return 0;
 }
 
-/* fivebar_apd_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[9])->(tau_a[2],state_next[14],status,diag[9]) */
+/* fivebar_na_proj_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[19])->(tau_a[2],state_next[14],status,diag[9]) */
 static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63;
+  a00=arg[5]? arg[5][16] : 0;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=sin(a01);
+  a03=5.9535999999999999e-02;
+  a04=-2.5000000000000000e-01;
+  a05=-2.4399999999999999e-01;
+  a06=(a05*a02);
+  a04=(a04+a06);
+  a07=2.4399999999999999e-01;
+  a08=arg[1]? arg[1][1] : 0;
+  a09=sin(a08);
+  a10=(a07*a09);
+  a04=(a04+a10);
+  a10=casadi_sq(a04);
+  a11=4.3300000000000000e-01;
+  a01=cos(a01);
+  a12=(a05*a01);
+  a11=(a11+a12);
+  a08=cos(a08);
+  a12=(a07*a08);
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a10+a13);
+  a03=(a03/a14);
+  a15=casadi_sq(a14);
+  a10=(2.*a10);
+  a13=(2.*a13);
+  a10=(a10+a13);
+  a13=casadi_sq(a10);
+  a15=(a15/a13);
+  a03=(a03-a15);
+  a03=sqrt(a03);
+  a15=2.5000000000000000e-01;
+  a13=(a05*a09);
+  a16=(a15+a13);
+  a17=(a07*a02);
+  a16=(a16+a17);
+  a18=(a03*a16);
+  a14=(a14/a10);
+  a10=(a14*a11);
+  a19=(a18+a10);
+  a20=casadi_sq(a19);
+  a03=(a03*a11);
+  a14=(a14*a04);
+  a04=(a03+a14);
+  a11=casadi_sq(a04);
+  a20=(a20+a11);
+  a20=sqrt(a20);
+  a19=(a19/a20);
+  a11=(a02*a19);
+  a04=(a04/a20);
+  a20=(a01*a04);
+  a11=(a11-a20);
+  a20=casadi_fabs(a11);
+  a21=-4.3300000000000000e-01;
+  a22=(a05*a08);
+  a21=(a21+a22);
+  a22=(a07*a01);
+  a21=(a21+a22);
+  a21=(a21+a18);
+  a21=(a21+a10);
+  a23=casadi_sq(a21);
+  a16=(a16+a03);
+  a16=(a16+a14);
+  a24=casadi_sq(a16);
+  a23=(a23+a24);
+  a23=sqrt(a23);
+  a21=(a21/a23);
+  a24=(a09*a21);
+  a16=(a16/a23);
+  a23=(a08*a16);
+  a24=(a24-a23);
+  a23=casadi_fabs(a24);
+  a25=(a20+a23);
+  a20=(a20-a23);
+  a20=casadi_fabs(a20);
+  a25=(a25-a20);
+  a20=2.;
+  a25=(a25/a20);
+  a00=(a00<=a25);
+  a23=(a07*a19);
+  a26=(a06*a23);
+  a27=(a05*a04);
+  a28=(a27*a22);
+  a26=(a26-a28);
+  a23=(a23/a26);
+  a27=(a27/a26);
+  a28=casadi_sq(a27);
+  a29=(a05*a16);
+  a07=(a07*a21);
+  a30=(a13*a07);
+  a31=(a29*a12);
+  a30=(a30-a31);
+  a29=(a29/a30);
+  a31=casadi_sq(a29);
+  a28=(a28+a31);
+  a31=arg[4]? arg[4][0] : 0;
+  a32=arg[5]? arg[5][2] : 0;
+  a33=arg[3]? arg[3][0] : 0;
+  a34=arg[0]? arg[0][2] : 0;
+  a35=arg[5]? arg[5][15] : 0;
+  a18=(a22+a18);
+  a18=(a18+a10);
+  a10=arg[0]? arg[0][0] : 0;
+  a36=(a18-a10);
+  a37=arg[5]? arg[5][14] : 0;
+  a36=(a36/a37);
+  a36=(a36-a34);
+  a36=(a35*a36);
+  a36=(a34+a36);
+  a38=(a33-a36);
+  a39=(a32*a38);
+  a31=(a31+a39);
+  a39=(a23*a31);
+  a40=arg[4]? arg[4][1] : 0;
+  a41=arg[5]? arg[5][3] : 0;
+  a42=arg[3]? arg[3][1] : 0;
+  a43=arg[0]? arg[0][3] : 0;
+  a15=(a15+a17);
+  a15=(a15+a03);
+  a15=(a15+a14);
+  a14=arg[0]? arg[0][1] : 0;
+  a03=(a15-a14);
+  a03=(a03/a37);
+  a03=(a03-a43);
+  a35=(a35*a03);
+  a35=(a43+a35);
+  a03=(a42-a35);
+  a17=(a41*a03);
+  a40=(a40+a17);
+  a17=(a27*a40);
+  a39=(a39-a17);
+  a17=(a23*a36);
+  a44=(a27*a35);
+  a17=(a17-a44);
+  a44=(a05*a17);
+  a45=(a44*a02);
+  a46=arg[2]? arg[2][0] : 0;
+  a46=(a46-a18);
+  a32=(a32*a46);
+  a33=(a33+a32);
+  a32=(a23*a33);
+  a47=arg[2]? arg[2][1] : 0;
+  a47=(a47-a15);
+  a41=(a41*a47);
+  a42=(a42+a41);
+  a41=(a27*a42);
+  a32=(a32-a41);
+  a45=(a45*a32);
+  a06=(a06/a26);
+  a41=(a06*a35);
+  a22=(a22/a26);
+  a26=(a22*a36);
+  a41=(a41-a26);
+  a26=(a05*a41);
+  a48=(a26*a04);
+  a49=(a06*a42);
+  a50=(a22*a33);
+  a49=(a49-a50);
+  a48=(a48*a49);
+  a45=(a45+a48);
+  a48=(a27*a45);
+  a44=(a44*a01);
+  a44=(a44*a32);
+  a26=(a26*a19);
+  a26=(a26*a49);
+  a44=(a44+a26);
+  a26=(a23*a44);
+  a48=(a48-a26);
+  a39=(a39+a48);
+  a48=(a23*a39);
+  a26=arg[0]? arg[0][4] : 0;
+  a50=(a48*a26);
+  a07=(a07/a30);
+  a51=(a07*a31);
+  a52=(a29*a40);
+  a51=(a51-a52);
+  a52=(a07*a36);
+  a53=(a29*a35);
+  a52=(a52-a53);
+  a53=(a05*a52);
+  a54=(a53*a09);
+  a55=(a07*a33);
+  a56=(a29*a42);
+  a55=(a55-a56);
+  a54=(a54*a55);
+  a13=(a13/a30);
+  a56=(a13*a35);
+  a12=(a12/a30);
+  a30=(a12*a36);
+  a56=(a56-a30);
+  a05=(a05*a56);
+  a30=(a05*a16);
+  a57=(a13*a42);
+  a58=(a12*a33);
+  a57=(a57-a58);
+  a30=(a30*a57);
+  a54=(a54+a30);
+  a30=(a29*a54);
+  a53=(a53*a08);
+  a53=(a53*a55);
+  a05=(a05*a21);
+  a05=(a05*a57);
+  a53=(a53+a05);
+  a05=(a07*a53);
+  a30=(a30-a05);
+  a51=(a51+a30);
+  a30=(a07*a51);
+  a05=arg[0]? arg[0][5] : 0;
+  a58=(a30*a05);
+  a50=(a50+a58);
+  a58=(a06*a40);
+  a59=(a22*a31);
+  a58=(a58-a59);
+  a44=(a22*a44);
+  a45=(a06*a45);
+  a44=(a44-a45);
+  a58=(a58+a44);
+  a01=(a01*a19);
+  a02=(a02*a04);
+  a01=(a01+a02);
+  a02=(a58*a01);
+  a41=(a41*a49);
+  a41=(a41*a11);
+  a02=(a02+a41);
+  a41=(a23*a02);
+  a01=(a39*a01);
+  a32=(a17*a32);
+  a32=(a32*a11);
+  a01=(a01-a32);
+  a32=(a22*a01);
+  a41=(a41-a32);
+  a32=arg[0]? arg[0][6] : 0;
+  a11=(a41*a32);
+  a50=(a50+a11);
+  a40=(a13*a40);
+  a31=(a12*a31);
+  a40=(a40-a31);
+  a53=(a12*a53);
+  a54=(a13*a54);
+  a53=(a53-a54);
+  a40=(a40+a53);
+  a08=(a08*a21);
+  a09=(a09*a16);
+  a08=(a08+a09);
+  a09=(a40*a08);
+  a56=(a56*a57);
+  a56=(a56*a24);
+  a09=(a09+a56);
+  a56=(a07*a09);
+  a08=(a51*a08);
+  a55=(a52*a55);
+  a55=(a55*a24);
+  a08=(a08-a55);
+  a55=(a12*a08);
+  a56=(a56-a55);
+  a55=arg[0]? arg[0][7] : 0;
+  a24=(a56*a55);
+  a50=(a50+a24);
+  a22=(a22*a58);
+  a24=arg[0]? arg[0][8] : 0;
+  a57=(a22*a24);
+  a50=(a50-a57);
+  a12=(a12*a40);
+  a57=arg[0]? arg[0][9] : 0;
+  a16=(a12*a57);
+  a50=(a50-a16);
+  a16=(a23*a17);
+  a21=arg[0]? arg[0][10] : 0;
+  a53=(a16*a21);
+  a50=(a50+a53);
+  a53=(a07*a52);
+  a54=arg[0]? arg[0][11] : 0;
+  a31=(a53*a54);
+  a50=(a50+a31);
+  a31=0.;
+  a11=(a31<=a17);
+  a49=1.;
+  a04=(a11?a49:0);
+  a11=(!a11);
+  a19=-1.;
+  a11=(a11?a19:0);
+  a04=(a04+a11);
+  a11=(a23*a04);
+  a44=arg[0]? arg[0][12] : 0;
+  a45=(a11*a44);
+  a50=(a50+a45);
+  a45=(a31<=a52);
+  a59=(a45?a49:0);
+  a45=(!a45);
+  a45=(a45?a19:0);
+  a59=(a59+a45);
+  a45=(a07*a59);
+  a19=arg[0]? arg[0][13] : 0;
+  a60=(a45*a19);
+  a50=(a50+a60);
+  a60=arg[5]? arg[5][0] : 0;
+  a33=(a33-a36);
+  a60=(a60*a33);
+  a50=(a50+a60);
+  a60=(a28*a50);
+  a61=(a23*a27);
+  a62=(a07*a29);
+  a61=(a61+a62);
+  a01=(a06*a01);
+  a02=(a27*a02);
+  a01=(a01-a02);
+  a02=(a01*a32);
+  a39=(a27*a39);
+  a62=(a39*a26);
+  a51=(a29*a51);
+  a63=(a51*a05);
+  a62=(a62+a63);
+  a02=(a02-a62);
+  a08=(a13*a08);
+  a09=(a29*a09);
+  a08=(a08-a09);
+  a09=(a08*a55);
+  a02=(a02+a09);
+  a06=(a06*a58);
+  a58=(a06*a24);
+  a02=(a02+a58);
+  a13=(a13*a40);
+  a40=(a13*a57);
+  a02=(a02+a40);
+  a17=(a27*a17);
+  a40=(a17*a21);
+  a02=(a02-a40);
+  a52=(a29*a52);
+  a40=(a52*a54);
+  a02=(a02-a40);
+  a04=(a27*a04);
+  a40=(a04*a44);
+  a02=(a02-a40);
+  a59=(a29*a59);
+  a40=(a59*a19);
+  a02=(a02-a40);
+  a40=arg[5]? arg[5][1] : 0;
+  a42=(a42-a35);
+  a40=(a40*a42);
+  a02=(a02+a40);
+  a40=(a61*a02);
+  a60=(a60+a40);
+  a40=casadi_sq(a23);
+  a58=casadi_sq(a07);
+  a40=(a40+a58);
+  a28=(a40*a28);
+  a58=(a27*a23);
+  a09=(a29*a07);
+  a58=(a58+a09);
+  a61=(a61*a58);
+  a28=(a28-a61);
+  a60=(a60/a28);
+  a23=(a23*a60);
+  a40=(a40*a02);
+  a58=(a58*a50);
+  a40=(a40+a58);
+  a40=(a40/a28);
+  a27=(a27*a40);
+  a23=(a23-a27);
+  a07=(a07*a60);
+  a29=(a29*a40);
+  a07=(a07-a29);
+  a29=(a23+a07);
+  a40=arg[5]? arg[5][4] : 0;
+  a40=(a37*a40);
+  a48=(a48*a33);
+  a39=(a39*a42);
+  a48=(a48-a39);
+  a40=(a40*a48);
+  a40=(a26+a40);
+  a48=9.9999999999999995e-07;
+  a40=casadi_fmax(a40,a48);
+  a29=(a29+a40);
+  a39=arg[5]? arg[5][5] : 0;
+  a39=(a37*a39);
+  a30=(a30*a33);
+  a51=(a51*a42);
+  a30=(a30-a51);
+  a39=(a39*a30);
+  a39=(a05+a39);
+  a39=casadi_fmax(a39,a48);
+  a29=(a29+a39);
+  a30=arg[5]? arg[5][6] : 0;
+  a30=(a37*a30);
+  a41=(a41*a33);
+  a01=(a01*a42);
+  a41=(a41+a01);
+  a30=(a30*a41);
+  a30=(a32+a30);
+  a41=arg[5]? arg[5][8] : 0;
+  a41=(a37*a41);
+  a06=(a06*a42);
+  a22=(a22*a33);
+  a06=(a06-a22);
+  a41=(a41*a06);
+  a41=(a24+a41);
+  a41=casadi_fmax(a41,a48);
+  a06=(a40*a41);
+  a06=sqrt(a06);
+  a22=(-a06);
+  a30=casadi_fmax(a30,a22);
+  a30=casadi_fmin(a30,a06);
+  a29=(a29+a30);
+  a06=arg[5]? arg[5][7] : 0;
+  a06=(a37*a06);
+  a56=(a56*a33);
+  a08=(a08*a42);
+  a56=(a56+a08);
+  a06=(a06*a56);
+  a06=(a55+a06);
+  a56=arg[5]? arg[5][9] : 0;
+  a56=(a37*a56);
+  a13=(a13*a42);
+  a12=(a12*a33);
+  a13=(a13-a12);
+  a56=(a56*a13);
+  a56=(a57+a56);
+  a56=casadi_fmax(a56,a48);
+  a48=(a39*a56);
+  a48=sqrt(a48);
+  a13=(-a48);
+  a06=casadi_fmax(a06,a13);
+  a06=casadi_fmin(a06,a48);
+  a29=(a29+a06);
+  a29=(a29+a41);
+  a29=(a29+a56);
+  a48=arg[5]? arg[5][10] : 0;
+  a48=(a37*a48);
+  a16=(a16*a33);
+  a17=(a17*a42);
+  a16=(a16-a17);
+  a48=(a48*a16);
+  a48=(a21+a48);
+  a48=casadi_fmax(a48,a31);
+  a29=(a29+a48);
+  a16=arg[5]? arg[5][11] : 0;
+  a16=(a37*a16);
+  a53=(a53*a33);
+  a52=(a52*a42);
+  a53=(a53-a52);
+  a16=(a16*a53);
+  a16=(a54+a16);
+  a16=casadi_fmax(a16,a31);
+  a29=(a29+a16);
+  a53=arg[5]? arg[5][12] : 0;
+  a53=(a37*a53);
+  a11=(a11*a33);
+  a04=(a04*a42);
+  a11=(a11-a04);
+  a53=(a53*a11);
+  a53=(a44+a53);
+  a53=casadi_fmax(a53,a31);
+  a29=(a29+a53);
+  a11=arg[5]? arg[5][13] : 0;
+  a37=(a37*a11);
+  a45=(a45*a33);
+  a59=(a59*a42);
+  a45=(a45-a59);
+  a37=(a37*a45);
+  a37=(a19+a37);
+  a37=casadi_fmax(a37,a31);
+  a29=(a29+a37);
+  a29=(a29+a18);
+  a29=(a29+a15);
+  a29=(a29+a36);
+  a29=(a29+a35);
+  a29=casadi_fabs(a29);
+  a45=casadi_inf;
+  a29=(a29<a45);
+  a45=(a00&&a29);
+  a59=arg[5]? arg[5][17] : 0;
+  a42=(-a59);
+  a42=casadi_fmax(a23,a42);
+  a42=casadi_fmin(a42,a59);
+  a42=(a45?a42:0);
+  if (res[0]!=0) res[0][0]=a42;
+  a42=arg[5]? arg[5][18] : 0;
+  a33=(-a42);
+  a33=casadi_fmax(a07,a33);
+  a33=casadi_fmin(a33,a42);
+  a33=(a45?a33:0);
+  if (res[0]!=0) res[0][1]=a33;
+  a33=(a29?a18:0);
+  a11=(!a29);
+  a10=(a11?a10:0);
+  a33=(a33+a10);
+  if (res[1]!=0) res[1][0]=a33;
+  a33=(a29?a15:0);
+  a14=(a11?a14:0);
+  a33=(a33+a14);
+  if (res[1]!=0) res[1][1]=a33;
+  a33=(a29?a36:0);
+  a34=(a11?a34:0);
+  a33=(a33+a34);
+  if (res[1]!=0) res[1][2]=a33;
+  a33=(a29?a35:0);
+  a43=(a11?a43:0);
+  a33=(a33+a43);
+  if (res[1]!=0) res[1][3]=a33;
+  a40=(a45?a40:0);
+  a33=(!a45);
+  a26=(a33?a26:0);
+  a40=(a40+a26);
+  if (res[1]!=0) res[1][4]=a40;
+  a39=(a45?a39:0);
+  a05=(a33?a05:0);
+  a39=(a39+a05);
+  if (res[1]!=0) res[1][5]=a39;
+  a30=(a45?a30:0);
+  a32=(a33?a32:0);
+  a30=(a30+a32);
+  if (res[1]!=0) res[1][6]=a30;
+  a06=(a45?a06:0);
+  a55=(a33?a55:0);
+  a06=(a06+a55);
+  if (res[1]!=0) res[1][7]=a06;
+  a41=(a45?a41:0);
+  a24=(a33?a24:0);
+  a41=(a41+a24);
+  if (res[1]!=0) res[1][8]=a41;
+  a56=(a45?a56:0);
+  a57=(a33?a57:0);
+  a56=(a56+a57);
+  if (res[1]!=0) res[1][9]=a56;
+  a48=(a45?a48:0);
+  a21=(a33?a21:0);
+  a48=(a48+a21);
+  if (res[1]!=0) res[1][10]=a48;
+  a16=(a45?a16:0);
+  a54=(a33?a54:0);
+  a16=(a16+a54);
+  if (res[1]!=0) res[1][11]=a16;
+  a53=(a45?a53:0);
+  a44=(a33?a44:0);
+  a53=(a53+a44);
+  if (res[1]!=0) res[1][12]=a53;
+  a45=(a45?a37:0);
+  a33=(a33?a19:0);
+  a45=(a45+a33);
+  if (res[1]!=0) res[1][13]=a45;
+  a23=casadi_fabs(a23);
+  a23=(a23-a59);
+  a07=casadi_fabs(a07);
+  a07=(a07-a42);
+  a23=casadi_fmax(a23,a07);
+  a31=(a31<a23);
+  a31=(a31?a20:0);
+  a29=(a29?a31:0);
+  a31=3.;
+  a11=(a11?a31:0);
+  a29=(a29+a11);
+  a29=(a00?a29:0);
+  a00=(!a00);
+  a00=(a00?a49:0);
+  a29=(a29+a00);
+  if (res[2]!=0) res[2][0]=a29;
+  if (res[3]!=0) res[3][0]=a18;
+  if (res[3]!=0) res[3][1]=a15;
+  if (res[3]!=0) res[3][2]=a36;
+  if (res[3]!=0) res[3][3]=a35;
+  if (res[3]!=0) res[3][4]=a46;
+  if (res[3]!=0) res[3][5]=a47;
+  if (res[3]!=0) res[3][6]=a38;
+  if (res[3]!=0) res[3][7]=a03;
+  if (res[3]!=0) res[3][8]=a25;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f16(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_proj_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s3;
+    case 3: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_apd_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[9])->(tau_a[2],state_next[14],status,diag[9]) */
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -4401,142 +4989,114 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a42=(a42/a28);
   a27=(a27*a42);
   a23=(a23-a27);
-  a27=casadi_fabs(a23);
-  a28=casadi_inf;
-  a46=(a27<a28);
   a07=(a07*a16);
   a29=(a29*a42);
   a07=(a07-a29);
-  a29=casadi_fabs(a07);
-  a42=(a29<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a26);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a05);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a40);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a49);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a50);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a22);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a24);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a51);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a31);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a48);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a18);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a15);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a36);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=casadi_fabs(a35);
-  a42=(a42<a28);
-  a46=(a46&&a42);
-  a42=(a00&&a46);
-  a28=arg[5]? arg[5][7] : 0;
-  a16=(-a28);
-  a23=casadi_fmax(a23,a16);
-  a23=casadi_fmin(a23,a28);
-  a23=(a42?a23:0);
-  if (res[0]!=0) res[0][0]=a23;
-  a23=arg[5]? arg[5][8] : 0;
-  a16=(-a23);
-  a07=casadi_fmax(a07,a16);
-  a07=casadi_fmin(a07,a23);
-  a07=(a42?a07:0);
-  if (res[0]!=0) res[0][1]=a07;
-  a07=(a46?a18:0);
-  a16=(!a46);
-  a10=(a16?a10:0);
-  a07=(a07+a10);
-  if (res[1]!=0) res[1][0]=a07;
-  a07=(a46?a15:0);
-  a14=(a16?a14:0);
-  a07=(a07+a14);
-  if (res[1]!=0) res[1][1]=a07;
-  a07=(a46?a36:0);
-  a34=(a16?a34:0);
-  a07=(a07+a34);
-  if (res[1]!=0) res[1][2]=a07;
-  a07=(a46?a35:0);
-  a39=(a16?a39:0);
-  a07=(a07+a39);
-  if (res[1]!=0) res[1][3]=a07;
-  a07=(a42?a26:0);
+  a29=(a23+a07);
+  a29=(a29+a26);
+  a29=(a29+a05);
+  a29=(a29+a40);
+  a29=(a29+a49);
+  a29=(a29+a50);
+  a29=(a29+a22);
+  a29=(a29+a24);
+  a29=(a29+a51);
+  a29=(a29+a31);
+  a29=(a29+a48);
+  a29=(a29+a18);
+  a29=(a29+a15);
+  a29=(a29+a36);
+  a29=(a29+a35);
+  a29=casadi_fabs(a29);
+  a42=casadi_inf;
+  a29=(a29<a42);
+  a42=(a00&&a29);
+  a16=arg[5]? arg[5][7] : 0;
+  a27=(-a16);
+  a27=casadi_fmax(a23,a27);
+  a27=casadi_fmin(a27,a16);
+  a27=(a42?a27:0);
+  if (res[0]!=0) res[0][0]=a27;
+  a27=arg[5]? arg[5][8] : 0;
+  a28=(-a27);
+  a28=casadi_fmax(a07,a28);
+  a28=casadi_fmin(a28,a27);
+  a28=(a42?a28:0);
+  if (res[0]!=0) res[0][1]=a28;
+  a28=(a29?a18:0);
+  a46=(!a29);
+  a10=(a46?a10:0);
+  a28=(a28+a10);
+  if (res[1]!=0) res[1][0]=a28;
+  a28=(a29?a15:0);
+  a14=(a46?a14:0);
+  a28=(a28+a14);
+  if (res[1]!=0) res[1][1]=a28;
+  a28=(a29?a36:0);
+  a34=(a46?a34:0);
+  a28=(a28+a34);
+  if (res[1]!=0) res[1][2]=a28;
+  a28=(a29?a35:0);
+  a39=(a46?a39:0);
+  a28=(a28+a39);
+  if (res[1]!=0) res[1][3]=a28;
+  a28=(a42?a26:0);
   a39=(!a42);
   a26=(a39?a26:0);
-  a07=(a07+a26);
-  if (res[1]!=0) res[1][4]=a07;
-  a07=(a42?a05:0);
+  a28=(a28+a26);
+  if (res[1]!=0) res[1][4]=a28;
+  a28=(a42?a05:0);
   a05=(a39?a05:0);
-  a07=(a07+a05);
-  if (res[1]!=0) res[1][5]=a07;
-  a07=(a42?a40:0);
+  a28=(a28+a05);
+  if (res[1]!=0) res[1][5]=a28;
+  a28=(a42?a40:0);
   a40=(a39?a40:0);
-  a07=(a07+a40);
-  if (res[1]!=0) res[1][6]=a07;
-  a07=(a42?a49:0);
+  a28=(a28+a40);
+  if (res[1]!=0) res[1][6]=a28;
+  a28=(a42?a49:0);
   a49=(a39?a49:0);
-  a07=(a07+a49);
-  if (res[1]!=0) res[1][7]=a07;
-  a07=(a42?a50:0);
+  a28=(a28+a49);
+  if (res[1]!=0) res[1][7]=a28;
+  a28=(a42?a50:0);
   a50=(a39?a50:0);
-  a07=(a07+a50);
-  if (res[1]!=0) res[1][8]=a07;
-  a07=(a42?a22:0);
+  a28=(a28+a50);
+  if (res[1]!=0) res[1][8]=a28;
+  a28=(a42?a22:0);
   a22=(a39?a22:0);
-  a07=(a07+a22);
-  if (res[1]!=0) res[1][9]=a07;
-  a07=(a42?a24:0);
+  a28=(a28+a22);
+  if (res[1]!=0) res[1][9]=a28;
+  a28=(a42?a24:0);
   a24=(a39?a24:0);
-  a07=(a07+a24);
-  if (res[1]!=0) res[1][10]=a07;
-  a07=(a42?a51:0);
+  a28=(a28+a24);
+  if (res[1]!=0) res[1][10]=a28;
+  a28=(a42?a51:0);
   a51=(a39?a51:0);
-  a07=(a07+a51);
-  if (res[1]!=0) res[1][11]=a07;
-  a07=(a42?a31:0);
+  a28=(a28+a51);
+  if (res[1]!=0) res[1][11]=a28;
+  a28=(a42?a31:0);
   a31=(a39?a31:0);
-  a07=(a07+a31);
-  if (res[1]!=0) res[1][12]=a07;
+  a28=(a28+a31);
+  if (res[1]!=0) res[1][12]=a28;
   a42=(a42?a48:0);
   a39=(a39?a48:0);
   a42=(a42+a39);
   if (res[1]!=0) res[1][13]=a42;
-  a27=(a27-a28);
-  a29=(a29-a23);
-  a27=casadi_fmax(a27,a29);
-  a12=(a12<a27);
+  a23=casadi_fabs(a23);
+  a23=(a23-a16);
+  a07=casadi_fabs(a07);
+  a07=(a07-a27);
+  a23=casadi_fmax(a23,a07);
+  a12=(a12<a23);
   a12=(a12?a20:0);
-  a46=(a46?a12:0);
+  a29=(a29?a12:0);
   a12=3.;
-  a16=(a16?a12:0);
-  a46=(a46+a16);
-  a46=(a00?a46:0);
+  a46=(a46?a12:0);
+  a29=(a29+a46);
+  a29=(a00?a29:0);
   a00=(!a00);
   a00=(a00?a21:0);
-  a46=(a46+a00);
-  if (res[2]!=0) res[2][0]=a46;
+  a29=(a29+a00);
+  if (res[2]!=0) res[2][0]=a29;
   if (res[3]!=0) res[3][0]=a18;
   if (res[3]!=0) res[3][1]=a15;
   if (res[3]!=0) res[3][2]=a36;
@@ -4550,7 +5110,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_step_checkout(void) {
@@ -4605,7 +5165,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_step_sparsity_in(casadi_int i
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s8;
+    case 5: return casadi_s9;
     default: return 0;
   }
 }
@@ -4615,7 +5175,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_step_sparsity_out(casadi_int 
     case 0: return casadi_s0;
     case 1: return casadi_s7;
     case 2: return casadi_s3;
-    case 3: return casadi_s8;
+    case 3: return casadi_s9;
     default: return 0;
   }
 }
@@ -4637,7 +5197,7 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_step_work_bytes(casadi_int *sz_arg, casadi_
 }
 
 /* fivebar_plant_xedd:(xe[2],xed[2],tau_a[2],plant[15])->(xedd[2]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -4942,7 +5502,7 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_checkout(void) {
@@ -4990,7 +5550,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_plant_xedd_sparsity_in(casadi_int
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s9;
+    case 3: return casadi_s10;
     default: return 0;
   }
 }
@@ -5019,7 +5579,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_plant_step:(x[4],tau_a[2],plant[15],h)->(x_next[4]) */
-static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -6176,7 +6736,7 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f18(arg, res, iw, w, mem);
+  return casadi_f19(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step_checkout(void) {
@@ -6223,7 +6783,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_plant_step_sparsity_in(casadi_int
   switch (i) {
     case 0: return casadi_s1;
     case 1: return casadi_s0;
-    case 2: return casadi_s9;
+    case 2: return casadi_s10;
     case 3: return casadi_s3;
     default: return 0;
   }
@@ -6253,7 +6813,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_step_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_measure:(xe[2],plant[15])->(qa[2]) */
-static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=0.;
@@ -6328,7 +6888,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f19(arg, res, iw, w, mem);
+  return casadi_f20(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure_checkout(void) {
@@ -6372,7 +6932,7 @@ CASADI_SYMBOL_EXPORT const char* fivebar_measure_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s9;
+    case 1: return casadi_s10;
     default: return 0;
   }
 }
@@ -6400,8 +6960,8 @@ CASADI_SYMBOL_EXPORT int fivebar_measure_work_bytes(casadi_int *sz_arg, casadi_i
   return 0;
 }
 
-/* fivebar_na_closed_loop:(x[18],u[6],p[35])->(x_next[18],y[17]) */
-static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_closed_loop:(x[18],u[6],p[34])->(x_next[18],y[17]) */
+static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -6414,11 +6974,11 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+20;
+  wr06 = wr05+19;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -6435,7 +6995,7 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f15(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[15];
+  w16 = wr05[14];
   w17 = 4.;
   w16 /= w17;
   arg1[0]=w03;
@@ -6443,25 +7003,25 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w03, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -6474,7 +7034,7 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f20(arg, res, iw, w, mem);
+  return casadi_f21(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_checkout(void) {
@@ -6519,17 +7079,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_closed_loop_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -6550,8 +7110,8 @@ CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_work_bytes(casadi_int *sz_arg, c
   return 0;
 }
 
-/* fivebar_apd_closed_loop:(x[18],u[6],p[24])->(x_next[18],y[17]) */
-static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_proj_closed_loop:(x[18],u[6],p[34])->(x_next[18],y[17]) */
+static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -6564,11 +7124,11 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+9;
+  wr06 = wr05+19;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -6585,6 +7145,156 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f16(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[14];
+  w17 = 4.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w03, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f22(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_proj_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 121;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 121*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_apd_closed_loop:(x[18],u[6],p[24])->(x_next[18],y[17]) */
+static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
+  casadi_real w17, *w18=w+107, *w19=w+111;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+9;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f17(arg1, res1, iw, w, 0)) return 1;
   w16 = wr05[4];
   w17 = 4.;
   w16 /= w17;
@@ -6593,25 +7303,25 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w03, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -6624,7 +7334,7 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f21(arg, res, iw, w, mem);
+  return casadi_f23(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop_checkout(void) {
@@ -6669,17 +7379,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_closed_loop_name_out(casadi_int i) 
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s14;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }

@@ -1,0 +1,148 @@
+# Shared fixtures: every model file in models/ as a parametrised `model`, and the pose sampler.
+"""Fixtures shared by the verification suite.
+
+* ``model``: every ``models/*.toml`` (discovered by glob, never a hard-coded list), loaded with
+  :func:`pm2dof.load_model`; module-scoped, test ids are the model names. A model whose
+  generated code is missing or stale fails its tests with ``StaleGeneratedCodeError``.
+* ``coulomb_viscous_model``: the subset with the paper's friction (eq. 2, 5 parameters per
+  leg), the only one :mod:`pm2dof.reference` implements.
+* ``sample_xe``, ``random_theta``, ``param_index``: the per-model sampling helpers (fixtures
+  returning the functions of this module, see :func:`sample_xe`).
+
+Module scope (not session scope) on purpose: a session-scoped parametrised fixture makes
+pytest regroup tests of different files by parameter, which interleaves the files.
+"""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pm2dof
+from pm2dof.model_file import read_model_file
+
+REPO = Path(__file__).resolve().parent.parent
+MODEL_FILES = sorted((REPO / "models").glob("*.toml"))
+PAPER_MODEL = "shang2010"      # the paper's robot (Shang & Cong 2010): paper-only checks use it
+
+SING_MIN = 0.2                 # admissible poses: min_i |sin(qb_i - qa_i)| > 0.2
+BOX_HALF_WIDTH = 0.05          # m: poses are drawn in a box of this half width ...
+# ... centred at the midpoint of the model's first trajectory (where the model is meant to work)
+
+
+def _read(path):
+    try:
+        return read_model_file(path)
+    except pm2dof.ModelFileError:
+        return None  # still parametrised (id = file stem): its tests fail at load_model
+
+
+_SPECS = [(path, _read(path)) for path in MODEL_FILES]
+assert _SPECS, f"no model files found in {REPO / 'models'}"
+
+
+def _params(where=None):
+    return [pytest.param(path, id=spec.name if spec else path.stem) for path, spec in _SPECS
+            if where is None or (spec is not None and where(spec))]
+
+
+_LOADED: dict = {}
+
+
+def _load(path):
+    if path not in _LOADED:
+        _LOADED[path] = pm2dof.load_model(path)
+    return _LOADED[path]
+
+
+@pytest.fixture(scope="module", params=_params())
+def model(request):
+    """Every model file of models/, loaded (ids: model names)."""
+    return _load(request.param)
+
+
+@pytest.fixture(scope="module", params=_params(lambda s: s.friction == "coulomb_viscous"))
+def coulomb_viscous_model(request):
+    """The models with the paper's Coulomb + viscous friction (what pm2dof.reference covers)."""
+    return _load(request.param)
+
+
+# --------------------------------------------------------------------------------------
+# Sampling
+# --------------------------------------------------------------------------------------
+
+def box_centre(model):
+    """The midpoint of the model file's first trajectory, m."""
+    traj = next(iter(model.spec.trajectories.values()))
+    return 0.5 * (np.asarray(traj["start"], float) + np.asarray(traj["end"], float))
+
+
+def sample_xe(model, seed, k, half_width=BOX_HALF_WIDTH, sing_min=SING_MIN):
+    """k xe (2,) in the box box_centre(model) +- half_width where every leg reaches (ik does not
+    raise WorkspaceError) and min_i |sin(qb_i - qa_i)| > sing_min. Fails (AssertionError) if
+    fewer than k are found in 100 k draws, so no check can pass on an empty sample."""
+    rng = np.random.default_rng(seed)
+    c = box_centre(model)
+    out = []
+    for _ in range(100 * k):
+        xe = c + rng.uniform(-half_width, half_width, 2)
+        try:
+            q = model.ik(xe)
+        except pm2dof.WorkspaceError:
+            continue
+        if np.min(np.abs(model.singularity(q))) > sing_min:
+            out.append(xe)
+            if len(out) == k:
+                return out
+    raise AssertionError(f"{model.name}: only {len(out)} of {k} admissible poses found around "
+                         f"{c.tolist()} +- {half_width} m (seed {seed})")
+
+
+_PARAM = re.compile(r"([A-Za-z_]+?)(\d+)$")
+
+
+def param_index(model):
+    """{(kind, leg 0-based): index in theta}, e.g. ("fc", 0) -> index of "fc1"."""
+    out = {}
+    for j, name in enumerate(model.param_names):
+        kind, leg = _PARAM.fullmatch(name).groups()
+        out[kind, int(leg) - 1] = j
+    return out
+
+
+def random_theta(model, rng):
+    """theta (p,) in param_names order with every leg's inertia block PD (alpha, gamma > 0,
+    beta^2 < alpha gamma) and nonnegative friction parameters: fv in [0, 5] N m s/rad,
+    fc and every other friction parameter (e.g. fs) in [0, 1] N m."""
+    n, idx = model.n_legs, param_index(model)
+    theta = np.empty(len(model.param_names))
+    alpha = rng.uniform(0.005, 0.15, n)
+    gamma = rng.uniform(0.005, 0.08, n)
+    beta = rng.uniform(-0.95, 0.95, n) * np.sqrt(alpha * gamma)
+    for (kind, i), j in idx.items():
+        if kind in ("alpha", "beta", "gamma"):
+            theta[j] = {"alpha": alpha, "beta": beta, "gamma": gamma}[kind][i]
+        elif kind == "fv":
+            theta[j] = rng.uniform(0.0, 5.0)
+        else:
+            theta[j] = rng.uniform(0.0, 1.0)
+    assert np.isfinite(theta).all(), theta
+    return theta
+
+
+# the helpers as fixtures, so that test files need not import this conftest
+@pytest.fixture(scope="session", name="sample_xe")
+def _sample_xe_fixture():
+    return sample_xe
+
+
+@pytest.fixture(scope="session", name="random_theta")
+def _random_theta_fixture():
+    return random_theta
+
+
+@pytest.fixture(scope="session", name="param_index")
+def _param_index_fixture():
+    return param_index
