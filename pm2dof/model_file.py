@@ -99,7 +99,10 @@ def _fail(path, key, reason):
 def _number(path, key, value, *, positive=False, nonnegative=False):
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         _fail(path, key, f"must be a number, got {type(value).__name__} {value!r}")
-    value = float(value)
+    try:
+        value = float(value)
+    except OverflowError:
+        _fail(path, key, f"is too large for a float: {str(value)[:20]}...")
     if not math.isfinite(value):
         _fail(path, key, f"must be finite, got {value}")
     if positive and value <= 0:
@@ -129,6 +132,13 @@ def _check_keys(path, where, table, allowed, required):
         _fail(path, where, f"missing key(s) {missing}")
 
 
+def _choice(path, key, value, choices):
+    """A string that must be one of ``choices`` (a dict), as its mapped value."""
+    if not isinstance(value, str) or value not in choices:
+        _fail(path, key, f"must be one of {sorted(choices)}, got {value!r}")
+    return choices[value]
+
+
 def _read_leg(path, i, leg):
     where = f"legs[{i}]"
     if not isinstance(leg, dict):
@@ -140,9 +150,7 @@ def _read_leg(path, i, leg):
     base = tuple(_number(path, f"{where}.base", v) for v in base)
     la = _number(path, f"{where}.la", leg["la"], positive=True)
     lb = _number(path, f"{where}.lb", leg["lb"], positive=True)
-    if leg["elbow"] not in ELBOWS:
-        _fail(path, f"{where}.elbow", f"must be one of {sorted(ELBOWS)}, got {leg['elbow']!r}")
-    return Leg(base=base, la=la, lb=lb, elbow=ELBOWS[leg["elbow"]])
+    return Leg(base=base, la=la, lb=lb, elbow=_choice(path, f"{where}.elbow", leg["elbow"], ELBOWS))
 
 
 def _read_nominal(path, nominal, n, friction):
@@ -281,9 +289,10 @@ def read_model_file(path):
     name = model["name"]
     if not isinstance(name, str) or not name.isidentifier() or not name.isascii():
         _fail(path, "model.name", f"must be an ASCII identifier (it prefixes C symbols), got {name!r}")
+    if not isinstance(model.get("description", ""), str):
+        _fail(path, "model.description", f"must be a string, got {type(model['description']).__name__}")
     friction = model["friction"]
-    if friction not in FRICTION_MODELS:
-        _fail(path, "model.friction", f"must be one of {sorted(FRICTION_MODELS)}, got {friction!r}")
+    _choice(path, "model.friction", friction, {k: k for k in FRICTION_MODELS})
     constants = {}
     for key in FRICTION_CONSTANTS[friction]:
         if key not in model:
@@ -294,8 +303,7 @@ def read_model_file(path):
         _fail(path, "legs", "needs at least two [[legs]] tables (a planar 2-DOF mechanism)")
     legs = tuple(_read_leg(path, i, leg) for i, leg in enumerate(legs_raw))
     fk_branch = model.get("fk_branch", "left")
-    if fk_branch not in FK_BRANCHES:
-        _fail(path, "model.fk_branch", f"must be one of {sorted(FK_BRANCHES)}, got {fk_branch!r}")
+    _choice(path, "model.fk_branch", fk_branch, FK_BRANCHES)
     if len(legs) == 2 and "fk_branch" not in model:
         _fail(path, "model.fk_branch", "a two-leg mechanism must choose its forward-kinematics "
                                        "branch ('left' or 'right' of the line B1 -> B2)")

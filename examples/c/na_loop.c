@@ -65,7 +65,7 @@ static const double VELOCITY_FILTER_HZ = 0.0;       /* 0: plain backward differe
 static const double ENCODER_COUNTS_PER_REV = 131072.0;
 static const double SING_THRESHOLD = 0.1;
 static const double TAU_MAX[N_LEGS] = {30.0, 30.0, 30.0}; /* N m */
-static const int RK4_SUBSTEPS = 4;                  /* manifest.json "rk4_substeps" */
+static const int RK4_SUBSTEPS = 3;                  /* manifest.json "rk4_substeps" */
 
 /* [plant]: the simulated robot's truth (differs from [nominal] on purpose) */
 static const double PLANT_ALPHA[N_LEGS] = {0.0932, 0.0427, 0.0427};
@@ -513,8 +513,8 @@ int main(int argc, char **argv)
            locked ? "locked (mlockall)" : "not locked");
     printf("NA step time:    mean %8.1f ns, worst %8lld ns  (%lld steps)\n", stat_mean(&t_step),
            t_step.worst, t_step.n);
-    printf("plant (4 RK4):   mean %8.1f ns, worst %8lld ns  per sample (the simulated robot)\n",
-           stat_mean(&t_plant), t_plant.worst);
+    printf("plant (%d RK4):   mean %8.1f ns, worst %8lld ns  per sample (the simulated robot)\n",
+           RK4_SUBSTEPS, stat_mean(&t_plant), t_plant.worst);
     if (sleep_mode)
         printf("wake-up latency: mean %8.1f ns, worst %8lld ns; overruns: %ld\n",
                stat_mean(&wake), wake.worst, overruns);
