@@ -187,6 +187,7 @@ typedef struct {
     int increfed;
     int acc_ok; /* signature fits accumulate: 3 inputs, 2 outputs, nnz_out[0] == nnz_in[0] */
     int busy;   /* primary work area in use */
+    char check_outputs; /* raise ValueError when a call leaves a non-finite output */
     Work work;
 } FunctionObject;
 
@@ -747,9 +748,45 @@ Function_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObje
         return NULL;
     }
     int rc = f->eval(w->arg, w->res, w->iw, w->w, w->mem);
+    int bad = 0;
+    if (rc == 0 && f->check_outputs) {
+        /* finite inputs can still give a non-finite result (overflow, degenerate pose or
+           parameters): never hand that back silently */
+        for (Py_ssize_t j = 0; j < f->n_out && !bad; j++) {
+            const double *r = w->res[j];
+            if (r == NULL)
+                continue;
+            Py_ssize_t k = first_nonfinite(r, f->nnz[f->n_in + j]);
+            if (k >= 0) {
+                /* name the input holding the largest magnitude: the usual culprit */
+                Py_ssize_t bi = 0, bk = 0;
+                double big = -1.0;
+                for (Py_ssize_t i = 0; i < f->n_in; i++)
+                    for (Py_ssize_t e = 0; e < f->nnz[i]; e++)
+                        if (fabs(w->arg[i][e]) > big) {
+                            big = fabs(w->arg[i][e]);
+                            bi = i;
+                            bk = e;
+                        }
+                char num[32];
+                snprintf(num, sizeof num, "%.6g", f->n_in ? w->arg[bi][bk] : 0.0);
+                PyErr_Format(PyExc_ValueError,
+                             "%U: output '%U' (#%zd) is not finite at index %zd (%s) although "
+                             "every input is finite: inputs too large, or a degenerate pose or "
+                             "parameter set (e.g. a singular inertia); the largest input is "
+                             "'%U' (#%zd) = %s at index %zd",
+                             f->name, PyTuple_GET_ITEM(f->names_out, j), j, k,
+                             isnan(r[k]) ? "nan" : (r[k] > 0 ? "inf" : "-inf"),
+                             PyTuple_GET_ITEM(f->names_in, bi), bi, num, bk);
+                bad = 1;
+            }
+        }
+    }
     work_done(f, w, held);
     if (rc != 0)
         return eval_error(f, rc);
+    if (bad)
+        return NULL;
     Py_RETURN_NONE;
 }
 
@@ -1250,6 +1287,8 @@ Function_repr(FunctionObject *f)
 
 static PyMemberDef Function_members[] = {
     {"name", T_OBJECT_EX, offsetof(FunctionObject, name), READONLY, "Function name (str)."},
+    {"check_outputs", T_BOOL, offsetof(FunctionObject, check_outputs), 0,
+     "If true, a call whose result holds a NaN or inf raises ValueError (default false)."},
     {"library", T_OBJECT_EX, offsetof(FunctionObject, lib), READONLY,
      "The Library the function was resolved from."},
     {"signature", T_OBJECT_EX, offsetof(FunctionObject, signature), READONLY,

@@ -238,8 +238,10 @@ def build_parser():
 
 
 def main(argv=None):
+    from . import results
     ap = build_parser()
     args = ap.parse_args(argv)
+    results.COMMAND_LINE = ["pm2dof", *(sys.argv[1:] if argv is None else argv)]
     if not getattr(args, "func", None):
         ap.print_help()
         return 2

@@ -25,6 +25,9 @@ REPO = Path(__file__).resolve().parent.parent
 DEFAULT_MODEL = REPO / "models" / "shang2010.toml"
 GENERATED = REPO / "generated"
 
+_NONFINITE_OUTPUT = "although every input is finite"  # text of the binding's output check
+_STEPPING = ("na_step", "na_proj_step", "apd_step", "plant_xedd", "plant_step", "measure",
+             "na_closed_loop", "na_proj_closed_loop", "apd_closed_loop")
 _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "W", "S", "Wdot", "M", "C", "Me", "Ce",
               "StF", "Y", "forward_dynamics", "na_step", "na_proj_step", "apd_step", "plant_xedd",
               "plant_step", "measure", "na_closed_loop", "na_proj_closed_loop", "apd_closed_loop")
@@ -90,6 +93,9 @@ class Model:
                     "outputs": [[a, k] for a, k in zip(f.names_out, f.sizes_out)]}
             if want != have:
                 _stale(f"{lib_path}: {f.name} has signature {have}, manifest says {want}")
+            # model functions never hand back NaN/inf silently; ik and fk turn NaN into a
+            # WorkspaceError themselves; controller steps and the plant report by status
+            f.check_outputs = short not in _STEPPING and short not in ("ik", "fk")
             funcs[short] = f
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
                      ("_lib", lib), ("_f", types.MappingProxyType(funcs)),
@@ -134,9 +140,11 @@ class Model:
         out = []
         for name, size, x in zip(f.names_in, f.sizes_in, args):
             try:
+                if np.iscomplexobj(x):
+                    raise TypeError("complex values are not allowed")
                 a = np.ascontiguousarray(x, dtype=np.float64)
             except (TypeError, ValueError) as exc:
-                raise TypeError(f"{name} must be an array of {size} numbers, got "
+                raise TypeError(f"{name} must be an array of {size} real numbers, got "
                                 f"{type(x).__name__}: {exc}") from None
             if a.size != size or a.ndim > 2:
                 raise ValueError(f"{name} must have shape ({size},), got shape {a.shape}")
@@ -152,17 +160,29 @@ class Model:
                              f"{type(out).__name__} {getattr(out, 'shape', '')}")
         f = self._f[short]
         sing = self._sing if f.n_out == 2 else None
+        outs = (out, sing) if sing is not None else (out,)
+        nonfinite = None  # the binding's error for a NaN/inf result from finite inputs
         try:
-            f(*args, out, sing) if sing is not None else f(*args, out)
-        except (TypeError, ValueError):
-            args = self._coerce(f, args)
-            f(*args, out, sing) if sing is not None else f(*args, out)
+            f(*args, *outs)
+        except (TypeError, ValueError) as exc:
+            if _NONFINITE_OUTPUT in str(exc):
+                nonfinite = exc
+            else:  # not float64 arrays: convert (clear errors for bad input) and retry
+                args = self._coerce(f, args)
+                try:
+                    f(*args, *outs)
+                except ValueError as exc2:
+                    if _NONFINITE_OUTPUT not in str(exc2):
+                        raise
+                    nonfinite = exc2
         if sing is not None and not sing[0] >= self._sing_thr:
             if sing[0] != sing[0] and short == "forward_dynamics":
                 self.ik(args[0])  # NaN measure: some leg cannot reach xe; ik names it
             raise SingularityError(
                 f"{short}: the pose is too close to a singularity: min_i |sin(qb_i - qa_i)| = "
                 f"{sing[0]:.4g} < threshold {self._sing_thr} (limits.singularity_threshold)")
+        if nonfinite is not None:
+            raise nonfinite
         return out
 
     # --- kinematics ----------------------------------------------------------------------

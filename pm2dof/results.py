@@ -25,6 +25,9 @@ def _git_commit():
         return None
 
 
+COMMAND_LINE = None  # set by pm2dof.cli.main to the command it runs; else sys.argv
+
+
 def provenance(model):
     """Where a result came from: model hashes, git commit, versions, command line."""
     from importlib.metadata import PackageNotFoundError, version
@@ -43,7 +46,7 @@ def provenance(model):
         "python": platform.python_version(),
         "numpy": np.__version__,
         "machine": f"{platform.machine()} {platform.system()}, {os.cpu_count()} cores",
-        "command_line": sys.argv,
+        "command_line": list(COMMAND_LINE) if COMMAND_LINE is not None else sys.argv,
     }
 
 
@@ -55,6 +58,9 @@ def write_atomic(path, data):
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # as a plain open() would (mkstemp makes it 0600)
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
