@@ -31,7 +31,7 @@ def _signature(f):
             "outputs": side(f.n_out(), f.name_out, f.sparsity_out)}
 
 
-def _header_doc(spec, functions):
+def _header_doc(spec, functions, layouts, status_codes):
     """A comment block for the top of the generated header: argument order and layouts."""
     n = spec.n_legs
     lines = [
@@ -56,6 +56,13 @@ def _header_doc(spec, functions):
         ins = ", ".join(f"{a}[{k}]" for a, k in sig["inputs"])
         outs = ", ".join(f"{a}[{k}]" for a, k in sig["outputs"])
         lines.append(f" *   {f.name()}({ins}) -> ({outs})")
+    if layouts:
+        lines += [" *", " * Flat vectors of the controllers, plant and closed loop (field[count], in order):"]
+        for name, fields in layouts.items():
+            lines.append(f" *   {name}: " + ", ".join(f"{f}[{k}]" for f, k in fields))
+    if status_codes:
+        lines.append(" *   status of a controller step: " + ", ".join(
+            f"{v} {k}" for k, v in sorted(status_codes.items(), key=lambda kv: kv[1])))
     lines.append(" */")
     return "\n".join(lines) + "\n"
 
@@ -86,7 +93,8 @@ def export(spec, functions, out_dir, model_file_label, extra=None):
         cg.add(f)
     cg.generate(str(out_dir) + "/")
     header = out_dir / f"{spec.name}.h"
-    header.write_text(_header_doc(spec, functions) + header.read_text())
+    header.write_text(_header_doc(spec, functions, (extra or {}).get("layouts", {}),
+                                  (extra or {}).get("status_codes", {})) + header.read_text())
     manifest = {
         "model": spec.name,
         "model_file": model_file_label,

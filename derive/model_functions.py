@@ -1,5 +1,6 @@
 # The model's CasADi functions (kinematics, dynamics, regressor) built from the SymPy derivation.
 import casadi as ca
+import sympy as sp
 
 from .dynamics import Dynamics
 from .kinematics import Kinematics
@@ -85,7 +86,7 @@ def model_functions(d, prefix):
     cq = d.converter_q(q)
     add("H", [("q", q)], [("H", cq(kin.H))])                                   # eq. 5
     add("A", [("q", q)], [("A", cq(kin.A))])                                   # eq. 6
-    add("singularity", [("q", q)], [("sin_ab", cq(sp_vector(kin.sin_ab(i) for i in range(n))))])
+    add("singularity", [("q", q)], [("sin_ab", cq(sp.Matrix([kin.sin_ab(i) for i in range(n)])))])
     sing = d.singularity_measure(cq)
     add("W", [("q", q)], [("W", cq(kin.W)), ("sing", sing)])                   # eq. 7
     add("S", [("q", q)], [("S", cq(kin.S)), ("sing", sing)])                   # eq. 8
@@ -107,8 +108,3 @@ def model_functions(d, prefix):
     add("forward_dynamics", [("xe", xe), ("xed", xed), ("tau_a", tau_a), ("theta", theta)],
         [("xedd", cfd(dyn.xedd)), ("sing", d.singularity_measure(cfd))])        # eqs. 10-12
     return f
-
-
-def sp_vector(items):
-    import sympy as sp
-    return sp.Matrix(list(items))

@@ -59,7 +59,7 @@ def _torques(plt, results):
     return fig
 
 
-def _theta(plt, results, names, truth):
+def _theta(plt, results, names):
     speeds = list(results)
     fig, axes = plt.subplots(1, len(speeds), figsize=(5 * len(speeds), 4), squeeze=False)
     for ax, speed in zip(axes[0], speeds):
@@ -109,7 +109,7 @@ def write_figures(model, results, repeated, out_dir, prov):
     names = list(model.param_names)
     figs = [(f"errors_{speed}.png", _errors(plt, results, speed)) for speed in results]
     figs.append(("torques.png", _torques(plt, results)))
-    figs.append(("theta_hat.png", _theta(plt, results, names, None)))
+    figs.append(("theta_hat.png", _theta(plt, results, names)))
     if repeated is not None:
         figs.append(("repeated_runs.png", _repeated(plt, repeated, names, repeated["speed"])))
     for name, fig in figs:

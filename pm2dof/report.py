@@ -6,7 +6,7 @@ from .errors import SingularityError, WorkspaceError
 __all__ = ["model_report"]
 
 
-def _grid(m, n=41, margin=None):
+def _grid(m, n=41):
     """Task positions on a grid over the bases' bounding box where every function is defined."""
     lo, hi = m.bases.min(axis=0), m.bases.max(axis=0)
     pts = []
