@@ -1,7 +1,7 @@
 # Generated controller steps: Fig. 2 signal processing + NA law (eqs. 14-29) or APD law (eq. 40).
 import casadi as ca
 
-from .factored import regressor
+from .factored import regressor, solve2
 from .layouts import Layout
 
 __all__ = ["controller_layouts", "controller_functions", "STATUS"]
@@ -47,10 +47,7 @@ def _all_finite(x):
 
 def _min_norm_torque(S, u):
     """tau_a = S (S^T S)^-1 u, the minimum-norm actuator torques (eq. 21), 2x2 in closed form."""
-    G = S.T @ S
-    det = G[0, 0] * G[1, 1] - G[0, 1] * G[1, 0]
-    z = ca.vertcat(G[1, 1] * u[0] - G[0, 1] * u[1], G[0, 0] * u[1] - G[1, 0] * u[0]) / det
-    return S @ z
+    return S @ solve2(S.T @ S, u)
 
 
 def controller_functions(d, prefix):

@@ -13,7 +13,13 @@ with Y_joint = d(M qdd^r + C qd^r)/d theta and Y_friction = d f_a / d theta deri
 """
 import casadi as ca
 
-__all__ = ["joint_W", "Wdot_times", "regressor", "task_inertia_coriolis"]
+__all__ = ["joint_W", "Wdot_times", "regressor", "task_inertia_coriolis", "solve2"]
+
+
+def solve2(A, b):
+    """A^-1 b for a 2x2 A by Cramer's rule (closed form, one division per entry)."""
+    det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
+    return ca.vertcat(A[1, 1] * b[0] - A[0, 1] * b[1], A[0, 0] * b[1] - A[1, 0] * b[0]) / det
 
 
 def _inv2(J):

@@ -3,7 +3,7 @@ import casadi as ca
 import sympy as sp
 
 from .controllers import controller_layouts
-from .factored import task_inertia_coriolis
+from .factored import solve2, task_inertia_coriolis
 from .layouts import Layout
 
 __all__ = ["plant_layout", "plant_functions", "closed_loop_layouts", "closed_loop_functions"]
@@ -44,7 +44,7 @@ def plant_functions(d, prefix):
     stribeck = P["fs"] / (1 + (va / P["stribeck_velocity"]) ** 2)
     fric = (P["fc"] + stribeck) * smooth_sign + P["fv"] * va
     rhs = S.T @ (tau - fric) - Ce_v                      # eq. 10 with the plant's friction
-    xedd = ca.vertcat(*solve2_ca(Me, rhs))
+    xedd = solve2(Me, rhs)
     f_xedd = ca.Function(f"{prefix}_plant_xedd", [xe, xed, tau, pp], [xedd],
                          ["xe", "xed", "tau_a", "plant"], ["xedd"])
     x = ca.SX.sym("x", 4)
@@ -61,17 +61,12 @@ def plant_functions(d, prefix):
                          ["x", "tau_a", "plant", "h"], ["x_next"])
     # encoder: the active angles of the true pose, quantised to encoder_step (0: exact)
     cik = d.converter_xe(xe)
-    qa = ca.vertcat(*[ca.atan2(cik(kin.unit_vectors_from_xe()[sym.qa[i]][1]),
-                               cik(kin.unit_vectors_from_xe()[sym.qa[i]][0])) for i in range(n)])
+    ua = kin.unit_vectors_from_xe()
+    qa = ca.vertcat(*[ca.atan2(cik(ua[sym.qa[i]][1]), cik(ua[sym.qa[i]][0])) for i in range(n)])
     step = P["encoder_step"]
     qa_meas = ca.if_else(step > 0, step * ca.floor(qa / step + 0.5), qa)
     f_meas = ca.Function(f"{prefix}_measure", [xe, pp], [qa_meas], ["xe", "plant"], ["qa"])
     return [f_xedd, f_step, f_meas]
-
-
-def solve2_ca(A, b):
-    det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
-    return [(A[1, 1] * b[0] - A[0, 1] * b[1]) / det, (A[0, 0] * b[1] - A[1, 0] * b[0]) / det]
 
 
 def closed_loop_functions(d, prefix, ctrl_fns, plant_fns, substeps):

@@ -60,6 +60,7 @@ typedef int (*int_fn)(void);
 #define MAX_NAME 400
 
 static PyObject *EvalError;
+static PyObject *NonFiniteOutputError;
 
 /* ------------------------------------------------------------------------------------ */
 /* Library                                                                              */
@@ -770,7 +771,7 @@ Function_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObje
                         }
                 char num[32];
                 snprintf(num, sizeof num, "%.6g", f->n_in ? w->arg[bi][bk] : 0.0);
-                PyErr_Format(PyExc_ValueError,
+                PyErr_Format(NonFiniteOutputError,
                              "%U: output '%U' (#%zd) is not finite at index %zd (%s) although "
                              "every input is finite: inputs too large, or a degenerate pose or "
                              "parameter set (e.g. a singular inertia); the largest input is "
@@ -1288,7 +1289,8 @@ Function_repr(FunctionObject *f)
 static PyMemberDef Function_members[] = {
     {"name", T_OBJECT_EX, offsetof(FunctionObject, name), READONLY, "Function name (str)."},
     {"check_outputs", T_BOOL, offsetof(FunctionObject, check_outputs), 0,
-     "If true, a call whose result holds a NaN or inf raises ValueError (default false)."},
+     "If true, a call whose result holds a NaN or inf raises NonFiniteOutputError "
+     "(a ValueError; default false)."},
     {"library", T_OBJECT_EX, offsetof(FunctionObject, lib), READONLY,
      "The Library the function was resolved from."},
     {"signature", T_OBJECT_EX, offsetof(FunctionObject, signature), READONLY,
@@ -1393,7 +1395,13 @@ PyInit__cbind(void)
         "pm2dof._cbind.EvalError",
         "A CasADi-generated function returned a nonzero error code.", PyExc_RuntimeError,
         NULL);
+    NonFiniteOutputError = PyErr_NewExceptionWithDoc(
+        "pm2dof._cbind.NonFiniteOutputError",
+        "A call with finite inputs left a NaN or inf in an output (check_outputs).",
+        PyExc_ValueError, NULL);
     if (EvalError == NULL || PyModule_AddObjectRef(m, "EvalError", EvalError) < 0 ||
+        NonFiniteOutputError == NULL ||
+        PyModule_AddObjectRef(m, "NonFiniteOutputError", NonFiniteOutputError) < 0 ||
         PyModule_AddObjectRef(m, "Library", (PyObject *)&LibraryType) < 0 ||
         PyModule_AddObjectRef(m, "Function", (PyObject *)&FunctionType) < 0) {
         Py_DECREF(m);

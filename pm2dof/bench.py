@@ -422,7 +422,7 @@ def run_bench(model=None, quick=False, progress=None):
     from .experiment import trajectory
     from .layout import Layout
     from .model import load_model
-    from .simulate import plant_truth, simulate
+    from .simulate import plant_vector, simulate
 
     t_start = time.perf_counter()
     say = progress or (lambda msg: None)
@@ -565,9 +565,7 @@ def run_bench(model=None, quick=False, progress=None):
     res["rollout_samples"] = n_roll
     res["rk4_substeps"] = int(model.manifest.get("rk4_substeps", 0)) or None
     f_cl = model.function("na_closed_loop")
-    counts = model.spec.sensing["encoder_counts_per_rev"]
-    plant = lays["plant"].pack(**plant_truth(model),
-                               encoder_step=(2 * math.pi / counts) if counts > 0 else 0.0)
+    plant = plant_vector(model)
     p = np.concatenate([na.params, plant])
     x0 = np.zeros(lays["cl_state"].size)
     X = lays["cl_state"].unpack(x0)

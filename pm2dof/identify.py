@@ -15,7 +15,7 @@ import numpy as np
 
 from .controllers import APDController
 from .errors import SingularityError, WorkspaceError
-from .simulate import simulate, theta_truth
+from .simulate import plant_vector, simulate, theta_truth
 
 __all__ = ["identifiability", "excitation", "estimate", "format_identifiability",
            "format_estimate", "full_theta"]
@@ -51,9 +51,9 @@ def identifiability(model, samples=400, seed=0, radius=0.04, rtol=1e-9):
     theta_d, and ``null_space`` (p, p - rank) orthonormal.
     """
     rng = np.random.default_rng(seed)
-    Phi = np.vstack([model.Y(q, v, vr, ar) for q, v, vr, ar
-                     in _random_states(model, samples, rng, _center(model), radius)])
-    Phi = Phi / np.linalg.norm(Phi, axis=0)  # scale columns: units differ (kg m^2, N m s)
+    Phi_raw = np.vstack([model.Y(q, v, vr, ar) for q, v, vr, ar
+                         in _random_states(model, samples, rng, _center(model), radius)])
+    Phi = Phi_raw / np.linalg.norm(Phi_raw, axis=0)  # scale columns: units differ
     sv = np.linalg.svd(Phi, compute_uv=False)
     rank = int(np.sum(sv > sv[0] * rtol))
     independent = []
@@ -63,9 +63,6 @@ def identifiability(model, samples=400, seed=0, radius=0.04, rtol=1e-9):
         if s[-1] > sv[0] * rtol:
             independent.append(j)
     dependent = [j for j in range(Phi.shape[1]) if j not in independent]
-    Phi_raw = np.vstack([model.Y(q, v, vr, ar) for q, v, vr, ar
-                         in _random_states(model, samples, np.random.default_rng(seed),
-                                           _center(model), radius)])
     beta, *_ = np.linalg.lstsq(Phi_raw[:, independent], Phi_raw[:, dependent], rcond=None)
     beta[np.abs(beta) < 1e-9 * max(1.0, np.abs(beta).max(initial=0))] = 0.0
     _, _, Vt = np.linalg.svd(Phi_raw)
@@ -159,11 +156,7 @@ def estimate(model, duration=4.0, seed=1, quantise=True, filter_alpha=0.3, ident
     ident = identifiability(model) if ident is None else ident
     traj = excitation(model, duration=duration, seed=seed)
     r = simulate(model, APDController(model), traj, quantise=quantise)
-    from .layout import Layout
-    from .simulate import plant_truth
-    counts = model.spec.sensing["encoder_counts_per_rev"]
-    plant = Layout("plant", model.manifest["layouts"]["plant"]).pack(
-        **plant_truth(model), encoder_step=(2 * np.pi / counts) if (quantise and counts) else 0.0)
+    plant = plant_vector(model, quantise=quantise)
     measure = model.function("measure")
     qa = np.empty(model.n_legs)
     xm = np.empty_like(r.xe)

@@ -25,7 +25,6 @@ REPO = Path(__file__).resolve().parent.parent
 DEFAULT_MODEL = REPO / "models" / "shang2010.toml"
 GENERATED = REPO / "generated"
 
-_NONFINITE_OUTPUT = "although every input is finite"  # text of the binding's output check
 _STEPPING = ("na_step", "na_proj_step", "apd_step", "plant_xedd", "plant_step", "measure",
              "na_closed_loop", "na_proj_closed_loop", "apd_closed_loop")
 _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "W", "S", "Wdot", "M", "C", "Me", "Ce",
@@ -161,20 +160,17 @@ class Model:
         f = self._f[short]
         sing = self._sing if f.n_out == 2 else None
         outs = (out, sing) if sing is not None else (out,)
-        nonfinite = None  # the binding's error for a NaN/inf result from finite inputs
+        nonfinite = None  # a NaN/inf result from finite inputs: a singular pose explains it
         try:
             f(*args, *outs)
-        except (TypeError, ValueError) as exc:
-            if _NONFINITE_OUTPUT in str(exc):
+        except _cbind.NonFiniteOutputError as exc:
+            nonfinite = exc
+        except (TypeError, ValueError):  # not float64 arrays: convert (clear errors) and retry
+            args = self._coerce(f, args)
+            try:
+                f(*args, *outs)
+            except _cbind.NonFiniteOutputError as exc:
                 nonfinite = exc
-            else:  # not float64 arrays: convert (clear errors for bad input) and retry
-                args = self._coerce(f, args)
-                try:
-                    f(*args, *outs)
-                except ValueError as exc2:
-                    if _NONFINITE_OUTPUT not in str(exc2):
-                        raise
-                    nonfinite = exc2
         if sing is not None and not sing[0] >= self._sing_thr:
             if sing[0] != sing[0] and short == "forward_dynamics":
                 self.ik(args[0])  # NaN measure: some leg cannot reach xe; ik names it

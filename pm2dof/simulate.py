@@ -15,7 +15,8 @@ from .controllers import APDController, NAController
 from .errors import SingularityError, WorkspaceError
 from .layout import Layout
 
-__all__ = ["simulate", "SimResult", "plant_truth", "rmse", "theta_truth", "check_trajectory"]
+__all__ = ["simulate", "SimResult", "plant_truth", "plant_vector", "rmse", "theta_truth",
+           "check_trajectory"]
 
 
 def plant_truth(model, **overrides):
@@ -41,6 +42,16 @@ def plant_truth(model, **overrides):
             **{k: np.array(p[k], dtype=float) for k in ("fv", "fc", "fs")},
             "stribeck_velocity": float(p["stribeck_velocity"]),
             "coulomb_smoothing_velocity": float(p["coulomb_smoothing_velocity"])}
+
+
+def plant_vector(model, truth=None, quantise=True):
+    """The generated plant's parameter vector (manifest layout ``plant``): the truth (default
+    :func:`plant_truth`) and the encoder step 2 pi / encoder_counts_per_rev (0 when
+    ``quantise`` is false or the model file sets no encoder)."""
+    counts = model.spec.sensing["encoder_counts_per_rev"]
+    truth = plant_truth(model) if truth is None else truth
+    return Layout("plant", model.manifest["layouts"]["plant"]).pack(
+        **truth, encoder_step=(2 * math.pi / counts) if (quantise and counts > 0) else 0.0)
 
 
 def theta_truth(model, truth=None):
@@ -193,10 +204,7 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     lays = model.manifest["layouts"]
     law = controller._law
     f = model.function(f"{controller.function_name}_closed_loop")
-    truth = plant_truth(model) if truth is None else truth
-    counts = model.spec.sensing["encoder_counts_per_rev"]
-    plant = Layout("plant", lays["plant"]).pack(
-        **truth, encoder_step=(2 * math.pi / counts) if (quantise and counts > 0) else 0.0)
+    plant = plant_vector(model, truth, quantise)
     p = np.concatenate([controller.params, plant])
     xs = Layout("cl_state", lays["cl_state"])
     cs = Layout("ctrl_state", lays["ctrl_state"])
