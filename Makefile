@@ -21,7 +21,7 @@ help:
 	@echo "make c-example  standalone C: NA against the compiled plant, paced at 2 ms"
 	@echo "make install  only create .venv, install pm2dof and compile the generated C"
 
-$(STAMP): pyproject.toml setup.py pm2dof/_cbind.c
+$(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -e '.[dev]'
@@ -29,7 +29,7 @@ $(STAMP): pyproject.toml setup.py pm2dof/_cbind.c
 
 define LIB_RULE
 $(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c $(STAMP)
-	$(PY) -m pm2dof.build $$< $$@
+	$(PY) -m pm2dof.core.build $$< $$@
 endef
 $(foreach d,$(MODEL_DIRS),$(eval $(call LIB_RULE,$(d))))
 
@@ -56,4 +56,4 @@ c-example: install
 	$(MAKE) -C examples/c run
 
 clean:
-	rm -rf $(VENV) build pm2dof/*.so generated/*/*.so $(OUT)
+	rm -rf $(VENV) build pm2dof/*.so pm2dof/*/*.so generated/*/*.so $(OUT)

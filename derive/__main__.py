@@ -13,8 +13,8 @@ from pathlib import Path
 
 import casadi as ca
 
-from pm2dof.model_file import read_model_file
-from pm2dof.errors import ModelFileError
+from pm2dof.core.model_file import read_model_file
+from pm2dof.core.errors import ModelFileError
 
 from .controllers import STATUS, controller_functions, controller_layouts
 from .export import export
@@ -78,7 +78,7 @@ def main(argv=None):
     manifest = export(spec, functions, out, _label(args.model), extra)
     say(f"wrote {', '.join(manifest['files'])}, manifest.json in {_label(out)}")
     if not args.no_build:
-        from pm2dof.build import compile_library
+        from pm2dof.core.build import compile_library
         lib = compile_library(out / f"{spec.name}.c", out / f"lib{spec.name}.so")
         say(f"compiled {_label(lib)}")
     return 0

@@ -72,7 +72,7 @@ def export(spec, functions, out_dir, model_file_label, extra=None):
 
     Parameters
     ----------
-    spec : pm2dof.model_file.ModelSpec
+    spec : pm2dof.core.model_file.ModelSpec
     functions : list of casadi.Function
         Named functions with named inputs and outputs; all outputs are densified.
     out_dir : pathlib.Path

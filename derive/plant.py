@@ -74,7 +74,7 @@ def closed_loop_functions(d, prefix, ctrl_fns, plant_fns, substeps):
 
     Measure qa from the true pose, run the controller step, hold its torque for ``substeps``
     RK4 steps of the plant. y records the true state at the sample, the torque, the status
-    and theta_hat after the update. Shaped for pm2dof._cbind.Function.accumulate.
+    and theta_hat after the update. Shaped for pm2dof.core._cbind.Function.accumulate.
     """
     n, p = d.spec.n_legs, len(d.spec.param_names)
     lay = closed_loop_layouts(n, p)

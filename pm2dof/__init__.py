@@ -1,11 +1,73 @@
 # pm2dof: generated-C model and controllers of the Shang & Cong (2010) planar parallel manipulator.
 """pm2dof: derive, generate and run the model and controllers of a planar RR parallel manipulator.
 
->>> import pm2dof
->>> m = pm2dof.load_model()
-"""
-from .errors import ModelFileError, SingularityError, StaleGeneratedCodeError, WorkspaceError
-from .model import Model, load_model
+Everything a user touches is importable from here::
 
-__all__ = ["load_model", "Model", "ModelFileError", "SingularityError",
-           "StaleGeneratedCodeError", "WorkspaceError"]
+    >>> import pm2dof
+    >>> m = pm2dof.load_model()
+    >>> ctrl = pm2dof.NAController(m)
+    >>> r = pm2dof.simulate(m, ctrl, pm2dof.paper_move("high"))
+    >>> bool(r.rmse < 1e-3)
+    True
+
+The package is layered; imports only point down (tests/test_layers.py checks it):
+
+=================  ==========================================================================
+``core/``          1. the thin runtime: model file, ``Model``, the C binding. NumPy only.
+``control/``       2. controllers, trajectories, closed-loop rollouts (one call into C each).
+``analysis/``      3. the paper's experiment, identification, reports, result files.
+``bench/``         3. the step-time benchmark.
+``figures/``       4. matplotlib figures and the demo.
+``cli.py``         4. ``pm2dof COMMAND``: parses arguments and dispatches, nothing else.
+``reference/``     beside the layers: independent NumPy formulations for tests and the bench.
+=================  ==========================================================================
+
+``import pm2dof`` loads layers 1-2 only; the names of the analyses (e.g. :func:`table3`)
+are imported on first use, so a real-time process never pays for them.
+"""
+import importlib
+
+from . import _moved
+from .control.controllers import STATUS_NAMES, APDController, NAController
+from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
+from .control.trajectory import PAPER_MOVES, Trajectory, TrajectoryError, line, paper_move
+from .core.errors import ModelFileError, SingularityError, StaleGeneratedCodeError, WorkspaceError
+from .core.model import Model, load_model
+
+# analyses (layer 3): resolved on first access by __getattr__ below. name -> module
+_LAZY = {
+    "table3": "pm2dof.analysis.experiment",
+    "PAPER_TABLE3": "pm2dof.analysis.experiment",
+    "repeated_runs": "pm2dof.analysis.experiment",
+    "identifiability": "pm2dof.analysis.identify",
+    "model_report": "pm2dof.analysis.report",
+    "run_bench": "pm2dof.bench",
+}
+
+__all__ = [
+    # layer 1: the model
+    "load_model", "Model",
+    # layer 2: control
+    "NAController", "APDController", "STATUS_NAMES", "simulate", "SimResult", "check_trajectory",
+    "plant_truth", "theta_truth", "rmse", "line", "paper_move", "PAPER_MOVES", "Trajectory",
+    # errors
+    "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
+    "TrajectoryError",
+    # layer 3 (imported on first use)
+    *_LAZY,
+]
+
+
+def __getattr__(name):
+    if name in _LAZY:
+        value = getattr(importlib.import_module(_LAZY[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'pm2dof' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))
+
+
+_moved.install()

@@ -1,4 +1,4 @@
-# Command-line interface: pm2dof report | demo | derive (more commands register in COMMANDS).
+# Command-line interface: parses `pm2dof COMMAND ...` and dispatches to the command's layer.
 """pm2dof: the Shang & Cong (2010) planar parallel manipulator, from model file to fast C.
 
 Typical use:
@@ -14,153 +14,67 @@ Every command takes --model PATH (default models/shang2010.toml). Run
 `pm2dof COMMAND --help` for the details of one command.
 """
 import argparse
-import subprocess
 import sys
-from pathlib import Path
 
-from .errors import ModelFileError, StaleGeneratedCodeError
+from .core.errors import ModelFileError, StaleGeneratedCodeError
 
-__all__ = ["main"]
-
-REPO = Path(__file__).resolve().parent.parent
-
-
-def _model(args):
-    from .model import load_model
-    return load_model(args.model)
-
-
-def cmd_report(args):
-    from .report import model_report
-    print(model_report(_model(args)))
-    return 0
-
-
-def cmd_derive(args):
-    """Run the build-time derivation in its own process: the runtime never imports it."""
-    cmd = [sys.executable, "-m", "derive", str(Path(args.path).resolve())]
-    if args.no_build:
-        cmd.append("--no-build")
-    return subprocess.call(cmd, cwd=REPO)
+__all__ = ["main", "build_parser"]
 
 
 def _progress(msg):
     print(f"  .. {msg}", file=sys.stderr, flush=True)
 
 
-def cmd_table3(args):
-    from .experiment import format_table3, table3, table3_json
-    from .results import provenance, write_json
-    m = _model(args)
-    numbers = table3_json(table3(m, quantise=not args.exact_encoders,
-                                 progress=None if args.json else _progress))
-    if args.json:
-        import json
-        print(json.dumps(numbers, indent=1))
-    else:
-        print(format_table3(numbers))
-    if args.save:
-        write_json(args.save, {**numbers, "provenance": provenance(m)})
-        if not args.json:
-            print(f"saved {args.save}")
+def _model(args):
+    from .core.model import load_model
+    return load_model(args.model)
+
+
+# one dispatcher per command: load what it needs, call its layer, print
+def cmd_report(args):
+    from .analysis.report import model_report
+    print(model_report(_model(args)))
     return 0
 
 
-def _figures(m, out, runs, progress):
-    from .experiment import repeated_runs, table3
-    from .figures import write_figures
-    from .results import provenance
-    results = table3(m, progress=progress)
-    rep = None
-    if runs > 0:
-        speed = "high" if "high" in m.spec.trajectories else next(iter(m.spec.trajectories))
-        rep = repeated_runs(m, speed, runs, progress=progress)
-        rep["speed"] = speed
-        rep["apd_rmse"] = results[speed]["apd"].rmse
-    paths = write_figures(m, results, rep, out, provenance(m))
-    return results, rep, paths
+def cmd_derive(args):
+    from .core.build import derive
+    return derive(args.path, build=not args.no_build)
+
+
+def cmd_table3(args):
+    from .analysis.experiment import run_table3
+    run_table3(_model(args), as_json=args.json, exact_encoders=args.exact_encoders,
+               save=args.save, progress=_progress)
+    return 0
 
 
 def cmd_figures(args):
-    m = _model(args)
-    _, _, paths = _figures(m, args.out, args.runs, _progress)
+    from .figures.experiment import experiment_figures
+    _, _, paths = experiment_figures(_model(args), args.out, args.runs, _progress)
     for p in paths:
         print(f"wrote {p}")
     return 0
 
 
 def cmd_demo(args):
-    from .experiment import format_table3, table3_json
-    from .results import provenance, write_json
-    m = _model(args)
-    print(f"pm2dof demo: the experiment of Shang & Cong (2010), Sect. 5, in simulation\n"
-          f"model {m.name!r} from {m.spec.path}; generated C {m.library}\n")
-    results, rep, paths = _figures(m, args.out, args.runs, _progress)
-    numbers = table3_json(results)
-    print(format_table3(numbers))
-    from .experiment import format_sensitivity, sensitivity
-    sens = sensitivity(m)
-    print("\nSensitivity: the same table under other assumptions of the simulation (RMSE, m):")
-    print(format_sensitivity(sens))
-    if rep is not None:
-        r = rep["rmse"]
-        print(f"\nSame {rep['speed']}-speed move repeated {len(r)} times, theta_hat carried over:"
-              f" NA RMSE {r[0]:.3e} m (run 1) -> {r[-1]:.3e} m (run {len(r)}); "
-              f"APD {rep['apd_rmse']:.3e} m.")
-    out = {"table3": numbers, "sensitivity": dict(sens), "provenance": provenance(m)}
-    if rep is not None:
-        out["repeated_runs"] = {"speed": rep["speed"], "rmse": rep["rmse"],
-                                "theta_hat_end": rep["theta_hat_end"][-1],
-                                "theta_truth": rep["theta_truth"], "param_names": m.param_names}
-    from pathlib import Path
-    json_path = write_json(Path(args.out) / "results.json", out)
-    print(f"\nfigures: {', '.join(str(p) for p in paths)}\nnumbers: {json_path}")
+    from .figures.demo import run_demo
+    run_demo(_model(args), args.out, args.runs, progress=_progress)
     return 0
 
 
 def cmd_identify(args):
-    from .identify import (estimate, format_estimate, format_identifiability, full_theta,
-                           identifiability)
-    m = _model(args)
-    ident = identifiability(m)
-    print(format_identifiability(ident))
-    if args.report:
-        return 0
-    print()
-    _progress(f"simulating a {args.duration:g} s excitation run and solving least squares")
-    e = estimate(m, duration=args.duration, ident=ident)
-    print(format_estimate(e))
-    if args.save:
-        from .results import provenance, write_json
-        write_json(args.save, {"param_names": m.param_names, "theta0": full_theta(e),
-                               "base_parameters": e["names"], "estimate": e["estimate"],
-                               "std": e["std"], "truth": e["truth"], "provenance": provenance(m)})
-        print(f"saved {args.save} (theta0: use it with NAController(model, theta0=...))")
-    if args.seed_na:
-        import numpy as np
-        from .experiment import trajectory
-        from .controllers import NAController
-        from .simulate import simulate
-        print("\nNA seeded with the identified theta (dependent parameters at nominal):")
-        for speed in m.spec.trajectories:
-            traj = trajectory(m, speed)
-            a = simulate(m, NAController(m), traj).rmse
-            b = simulate(m, NAController(m, theta0=full_theta(e)), traj).rmse
-            print(f"  {speed:5s}: RMSE {a:.4e} m with Tables 1-2 -> {b:.4e} m identified "
-                  f"({100 * (a - b) / a:+.1f} %)")
+    from .analysis.identify import run_identify
+    run_identify(_model(args), report_only=args.report, duration=args.duration, save=args.save,
+                 seed=args.seed_na, progress=_progress)
     return 0
 
 
 def cmd_bench(args):
+    from .analysis.results import dumps
     from .bench import format_bench, run_bench
-    m = _model(args)
-    res = run_bench(m, quick=args.quick, progress=None if args.json else _progress)
-    if args.json:
-        import json
-        from .results import _jsonable
-        print(json.dumps(res, indent=1, default=_jsonable))
-    else:
-        print(format_bench(res))
+    res = run_bench(_model(args), quick=args.quick, progress=None if args.json else _progress)
+    print(dumps(res) if args.json else format_bench(res))
     return 0
 
 
@@ -218,7 +132,7 @@ def build_parser():
     p.add_argument("--seed-na", action="store_true",
                    help="rerun the moves with NA seeded by the identified theta")
     p.set_defaults(func=cmd_identify)
-    from .bench import run_bench
+    from .bench.run import run_bench
     p = sub.add_parser("bench", parents=[common], help="controller step-time benchmark",
                        description=(run_bench.__doc__ or "").split("\n\n")[0] + " Targets: NA "
                        "step in C <= 250 ns, from Python <= 1 us, rollout >= 500k steps/s, C >= "
@@ -238,7 +152,7 @@ def build_parser():
 
 
 def main(argv=None):
-    from . import results
+    from .analysis import results
     ap = build_parser()
     args = ap.parse_args(argv)
     results.COMMAND_LINE = ["pm2dof", *(sys.argv[1:] if argv is None else argv)]

@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.model_file import read_model_file
+from pm2dof.core.model_file import read_model_file
 
 REPO = Path(__file__).resolve().parent.parent
 MODEL_FILES = sorted((REPO / "models").glob("*.toml"))

@@ -8,7 +8,8 @@ import math
 import pytest
 
 from pm2dof import bench
-from pm2dof.model import load_model
+from pm2dof.bench import baselines
+from pm2dof import load_model
 
 
 @pytest.fixture(scope="module")
@@ -113,8 +114,8 @@ def test_missing_casadi_and_sympy_give_none_with_notes(model, monkeypatch):
     def no_derive():
         raise ImportError("derive hidden by the test")
 
-    monkeypatch.setattr(bench, "_import_derive", no_derive)
-    monkeypatch.setattr(bench, "_LAMBDIFY_CACHE", {})
+    monkeypatch.setattr(baselines, "_import_derive", no_derive)
+    monkeypatch.setattr(baselines, "_LAMBDIFY_CACHE", {})
     r = bench.run_bench(model, quick=True)
     for key in ("na_step_casadi_function_us", "na_step_lambdify_us"):
         assert r[key] is None and key in r["notes"]

@@ -1,7 +1,7 @@
-"""Tests of pm2dof._cbind (calling CasADi-generated C) and pm2dof.build (compiling it).
+"""Tests of pm2dof.core._cbind (calling CasADi-generated C) and pm2dof.core.build (compiling it).
 
 CasADi is used at test time only: it generates C code for a few toy functions, which
-``pm2dof.build.compile_library`` turns into a shared library that ``_cbind`` loads.
+``pm2dof.core.build.compile_library`` turns into a shared library that ``_cbind`` loads.
 A small hand-written C file that mimics CasADi's external API covers what generated
 code cannot easily produce (error return codes, missing symbols, lifecycle counters).
 
@@ -22,7 +22,7 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from pm2dof import _cbind, build
+from pm2dof.core import _cbind, build
 
 # --------------------------------------------------------------------------------------
 # Fixtures: one library of CasADi-generated functions, one hand-written stub library
@@ -237,7 +237,7 @@ def test_flags_constant_has_documented_flags_and_no_fast_math():
     for flag in ("-fPIC", "-shared", "-fno-math-errno", "-ffp-contract=off"):
         assert flag in build.FLAGS
     assert not any("fast-math" in flag for flag in build.FLAGS)
-    assert set(build.__all__) == {"compile_library", "BuildError"}
+    assert set(build.__all__) == {"compile_library", "derive", "BuildError", "STALE_TMP_AGE_S"}
     assert issubclass(build.BuildError, RuntimeError)
 
 

@@ -40,12 +40,12 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof import reference as ref
-from pm2dof import reference_control as rc
-from pm2dof.controllers import APDController, NAController
-from pm2dof.layout import Layout
-from pm2dof.simulate import SimResult, plant_truth, rmse, simulate, theta_truth
-from pm2dof.trajectory import paper_move
+from pm2dof.reference import model as ref
+from pm2dof.reference import control as rc
+from pm2dof import APDController, NAController
+from pm2dof.core.layout import Layout
+from pm2dof import SimResult, plant_truth, rmse, simulate, theta_truth
+from pm2dof.control.trajectory import paper_move
 
 G = ref.Geometry.paper()
 N_LEGS = 3

@@ -42,8 +42,8 @@ import pytest
 import sympy
 
 import pm2dof
-from pm2dof.model import DEFAULT_MODEL, GENERATED, REPO
-from pm2dof.model_file import read_model_file
+from pm2dof.core.model import DEFAULT_MODEL, GENERATED, REPO
+from pm2dof.core.model_file import read_model_file
 
 TOL = 1e-12
 DPS = 30

@@ -3,8 +3,8 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.identify import estimate, excitation, identifiability
-from pm2dof.simulate import theta_truth
+from pm2dof.analysis.identify import estimate, excitation, identifiability
+from pm2dof import theta_truth
 
 
 @pytest.fixture(scope="module")

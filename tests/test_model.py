@@ -53,7 +53,7 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof import reference as ref
+from pm2dof.reference import model as ref
 
 # --------------------------------------------------------------------------------------
 # Constants, helpers

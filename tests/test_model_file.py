@@ -30,8 +30,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import pm2dof
-from pm2dof.errors import ModelFileError, StaleGeneratedCodeError
-from pm2dof.model_file import ModelSpec, read_model_file
+from pm2dof.core.errors import ModelFileError, StaleGeneratedCodeError
+from pm2dof.core.model_file import ModelSpec, read_model_file
 
 REPO = Path(__file__).resolve().parent.parent
 PAPER = REPO / "models" / "shang2010.toml"
@@ -636,7 +636,7 @@ def test_model_without_generated_code(tmp_path):
 
 def test_manifest_mismatch_in_a_copied_generated_dir(tmp_path):
     """Model(spec, gen_dir): a generated folder whose manifest names another formulation."""
-    from pm2dof.model import GENERATED, Model
+    from pm2dof.core.model import GENERATED, Model
     gen = tmp_path / "gen"
     shutil.copytree(GENERATED / "shang2010", gen)
     man = json.loads((gen / "manifest.json").read_text())

@@ -1,7 +1,7 @@
 # Closed loop of every model file: the paper's experiment (Table 3) runs and tracks for each variant.
 """Every ``models/*.toml`` (the ``model`` fixture of ``conftest.py``) through the closed loop.
 
-* ``pm2dof.experiment.table3(model)`` runs APD, NA and NA with Gamma = 0 on each of the model
+* ``pm2dof.table3(model)`` runs APD, NA and NA with Gamma = 0 on each of the model
   file's moves: every run is finite, has no singular and no non-finite sample, and tracks
   with an RMSE (eq. 41) below 1e-3 m. The bound: the paper's moves are 0.0707 m long and the
   paper's worst measured RMSE is 4.7e-4 m (APD, high speed, Table 3); a wrongly wired
@@ -23,8 +23,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pm2dof.controllers import APDController, NAController
-from pm2dof.experiment import table3, trajectory
+from pm2dof import APDController, NAController
+from pm2dof.analysis.experiment import table3, trajectory
 
 RMSE_MAX = 1e-3          # m, see the module docstring
 CONTROLLERS = ("apd", "na", "na_no_adaptation")

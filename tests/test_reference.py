@@ -29,10 +29,10 @@ import numpy as np
 import pytest
 
 try:
-    from pm2dof import reference as ref
+    from pm2dof.reference import model as ref
 except ImportError:  # running pytest without the project root on sys.path
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-    from pm2dof import reference as ref
+    from pm2dof.reference import model as ref
 
 # --------------------------------------------------------------------------
 # Fixtures: geometries, poses, parameters

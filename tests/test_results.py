@@ -23,9 +23,10 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof import cli, results
-from pm2dof.model_file import read_model_file
-from pm2dof.results import provenance, save_figure, write_atomic, write_json
+from pm2dof import cli
+from pm2dof.analysis import results
+from pm2dof.core.model_file import read_model_file
+from pm2dof.analysis.results import provenance, save_figure, write_atomic, write_json
 
 REPO = Path(__file__).resolve().parent.parent
 PAPER = REPO / "models" / "shang2010.toml"

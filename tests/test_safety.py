@@ -13,7 +13,7 @@
 * Projection of theta_hat (``project=True``): every estimate of a rollout with a large
   Gamma stays physical (alpha, gamma >= 1e-6, beta^2 <= alpha gamma, friction >= 0), while the
   same run without projection (the default, as in the paper) leaves that set; the generated
-  projected step equals ``pm2dof.reference_control.na_step(..., project=True)``.
+  projected step equals ``pm2dof.reference.control.na_step(..., project=True)``.
 * Rollouts count their bad and saturated samples consistently with ``status``.
 * ``check_trajectory`` names the first offending sample and its time; ``line`` refuses
   non-positive limits.
@@ -30,12 +30,12 @@ from hypothesis import strategies as st
 
 import pm2dof
 from pm2dof import SingularityError, WorkspaceError
-from pm2dof import reference as ref
-from pm2dof import reference_control as rc
-from pm2dof.controllers import APDController, NAController
-from pm2dof.layout import Layout
-from pm2dof.simulate import check_trajectory, simulate
-from pm2dof.trajectory import Trajectory, TrajectoryError, line, paper_move
+from pm2dof.reference import model as ref
+from pm2dof.reference import control as rc
+from pm2dof import APDController, NAController
+from pm2dof.core.layout import Layout
+from pm2dof import check_trajectory, simulate
+from pm2dof.control.trajectory import Trajectory, TrajectoryError, line, paper_move
 
 M = pm2dof.load_model()
 N = M.n_legs

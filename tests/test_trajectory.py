@@ -4,7 +4,7 @@ import math
 import numpy as np
 import pytest
 
-from pm2dof.trajectory import (PAPER_MOVES, SCurve, Trajectory, TrajectoryError, line,
+from pm2dof.control.trajectory import (PAPER_MOVES, SCurve, Trajectory, TrajectoryError, line,
                                paper_move)
 
 ruckig = pytest.importorskip("ruckig")  # test-only reference implementation

@@ -1,4 +1,4 @@
-# pm2dof/reference.py
+# pm2dof/reference/model.py
 #
 # Plain-NumPy reference implementation of the kinematics and dynamics of the
 # redundantly actuated planar parallel manipulator of

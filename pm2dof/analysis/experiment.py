@@ -1,12 +1,12 @@
 # The paper's experiment (Sect. 5): Table 3 in simulation, the Gamma = 0 ablation, repeated runs.
 import numpy as np
 
-from .controllers import APDController, NAController
-from .simulate import simulate, theta_truth
-from .trajectory import line
+from ..control.controllers import APDController, NAController
+from ..control.simulate import simulate, theta_truth
+from ..control.trajectory import line
 
 __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3",
-           "repeated_runs", "sensitivity", "format_sensitivity"]
+           "run_table3", "repeated_runs", "sensitivity", "format_sensitivity"]
 
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
 PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percent": 38.40},
@@ -32,7 +32,7 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, **contr
     """Run APD, NA and NA with Gamma = 0 on each move. Returns {speed: {name: SimResult}}.
 
     ``controller_options`` (e.g. ``velocity_filter_hz``) go to all three controllers alike;
-    ``truth`` replaces the plant truth (see :func:`pm2dof.simulate.plant_truth`).
+    ``truth`` replaces the plant truth (see :func:`pm2dof.plant_truth`).
     """
     speeds = list(model.spec.trajectories) if speeds is None else speeds
     out = {}
@@ -85,6 +85,23 @@ def format_table3(numbers):
     return "\n".join(lines)
 
 
+def run_table3(model, *, as_json=False, exact_encoders=False, save=None, echo=print,
+               progress=None):
+    """``pm2dof table3``: run :func:`table3`, print it (text or JSON), optionally save it.
+
+    ``save`` is a path for the numbers and their provenance (JSON). Returns the numbers.
+    """
+    from .results import dumps, provenance, write_json
+    numbers = table3_json(table3(model, quantise=not exact_encoders,
+                                 progress=None if as_json else progress))
+    echo(dumps(numbers) if as_json else format_table3(numbers))
+    if save:
+        write_json(save, {**numbers, "provenance": provenance(model)})
+        if not as_json:
+            echo(f"saved {save}")
+    return numbers
+
+
 def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
     """Run the same move ``runs`` times with NA, carrying theta_hat from one run to the next.
 
@@ -112,7 +129,7 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
 
 def _nominal_truth(model):
     """A plant whose truth is exactly the controllers' nominal model (no payload, no Stribeck)."""
-    from .simulate import plant_truth
+    from ..control.simulate import plant_truth
     n = model.n_legs
     th = model.theta_nominal
     base = plant_truth(model)

@@ -13,12 +13,12 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from .controllers import APDController
-from .errors import SingularityError, WorkspaceError
-from .simulate import plant_vector, simulate, theta_truth
+from ..control.controllers import APDController
+from ..core.errors import SingularityError, WorkspaceError
+from ..control.simulate import plant_vector, simulate, theta_truth
 
 __all__ = ["identifiability", "excitation", "estimate", "format_identifiability",
-           "format_estimate", "full_theta"]
+           "format_estimate", "full_theta", "seed_na", "run_identify"]
 
 
 def _random_states(model, n, rng, center, radius):
@@ -207,3 +207,46 @@ def format_estimate(e):
 def full_theta(e):
     """The full theta (5n,) to seed NAController(theta0=...) with."""
     return e["theta0"].copy()
+
+
+def seed_na(model, theta0):
+    """RMSE of NA on each move of the model file with Tables 1-2 and with ``theta0``.
+
+    Returns {speed: (rmse_nominal, rmse_theta0)}, m.
+    """
+    from ..control.controllers import NAController
+    from .experiment import trajectory
+    out = {}
+    for speed in model.spec.trajectories:
+        traj = trajectory(model, speed)
+        out[speed] = (simulate(model, NAController(model), traj).rmse,
+                      simulate(model, NAController(model, theta0=theta0), traj).rmse)
+    return out
+
+
+def run_identify(model, *, report_only=False, duration=4.0, save=None, seed=False, echo=print,
+                 progress=None):
+    """``pm2dof identify``: identifiability, then (unless ``report_only``) least squares from
+    a simulated excitation run; ``save`` writes a full theta0 (JSON), ``seed`` reruns the
+    moves with NA seeded by it."""
+    ident = identifiability(model)
+    echo(format_identifiability(ident))
+    if report_only:
+        return ident
+    echo("")
+    if progress:
+        progress(f"simulating a {duration:g} s excitation run and solving least squares")
+    e = estimate(model, duration=duration, ident=ident)
+    echo(format_estimate(e))
+    if save:
+        from .results import provenance, write_json
+        write_json(save, {"param_names": model.param_names, "theta0": full_theta(e),
+                          "base_parameters": e["names"], "estimate": e["estimate"],
+                          "std": e["std"], "truth": e["truth"], "provenance": provenance(model)})
+        echo(f"saved {save} (theta0: use it with NAController(model, theta0=...))")
+    if seed:
+        echo("\nNA seeded with the identified theta (dependent parameters at nominal):")
+        for speed, (a, b) in seed_na(model, full_theta(e)).items():
+            echo(f"  {speed:5s}: RMSE {a:.4e} m with Tables 1-2 -> {b:.4e} m identified "
+                 f"({100 * (a - b) / a:+.1f} %)")
+    return e

@@ -9,9 +9,9 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["provenance", "write_atomic", "write_json", "save_figure"]
+__all__ = ["provenance", "write_atomic", "write_json", "dumps", "save_figure"]
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parents[2]
 
 
 def _git_commit():
@@ -69,8 +69,14 @@ def write_atomic(path, data):
     return path
 
 
+def dumps(obj):
+    """JSON text of results holding NumPy arrays and scalars (indent 1)."""
+    return json.dumps(obj, indent=1, default=_jsonable)
+
+
 def write_json(path, obj):
-    return write_atomic(path, (json.dumps(obj, indent=1, default=_jsonable) + "\n").encode())
+    """Write ``obj`` (NumPy arrays allowed) as JSON, atomically."""
+    return write_atomic(path, (dumps(obj) + "\n").encode())
 
 
 def _jsonable(x):

@@ -1,4 +1,4 @@
-/* pm2dof._cbind: near-zero-overhead calls from Python into CasADi-generated C functions loaded with dlopen. */
+/* pm2dof.core._cbind: near-zero-overhead calls from Python into CasADi-generated C functions loaded with dlopen. */
 
 /*
  * Overview
@@ -141,7 +141,7 @@ PyDoc_STRVAR(Library_doc,
 
 static PyTypeObject LibraryType = {
     PyVarObject_HEAD_INIT(NULL, 0)
-    .tp_name = "pm2dof._cbind.Library",
+    .tp_name = "pm2dof.core._cbind.Library",
     .tp_basicsize = sizeof(LibraryObject),
     .tp_dealloc = (destructor)Library_dealloc,
     .tp_repr = (reprfunc)Library_repr,
@@ -1354,7 +1354,7 @@ PyDoc_STRVAR(Function_doc,
 
 static PyTypeObject FunctionType = {
     PyVarObject_HEAD_INIT(NULL, 0)
-    .tp_name = "pm2dof._cbind.Function",
+    .tp_name = "pm2dof.core._cbind.Function",
     .tp_basicsize = sizeof(FunctionObject),
     .tp_dealloc = (destructor)Function_dealloc,
     .tp_vectorcall_offset = offsetof(FunctionObject, vectorcall),
@@ -1378,7 +1378,7 @@ PyDoc_STRVAR(module_doc,
 
 static struct PyModuleDef cbind_module = {
     PyModuleDef_HEAD_INIT,
-    .m_name = "pm2dof._cbind",
+    .m_name = "pm2dof.core._cbind",
     .m_doc = module_doc,
     .m_size = -1,
 };
@@ -1392,11 +1392,11 @@ PyInit__cbind(void)
     if (m == NULL)
         return NULL;
     EvalError = PyErr_NewExceptionWithDoc(
-        "pm2dof._cbind.EvalError",
+        "pm2dof.core._cbind.EvalError",
         "A CasADi-generated function returned a nonzero error code.", PyExc_RuntimeError,
         NULL);
     NonFiniteOutputError = PyErr_NewExceptionWithDoc(
-        "pm2dof._cbind.NonFiniteOutputError",
+        "pm2dof.core._cbind.NonFiniteOutputError",
         "A call with finite inputs left a NaN or inf in an output (check_outputs).",
         PyExc_ValueError, NULL);
     if (EvalError == NULL || PyModule_AddObjectRef(m, "EvalError", EvalError) < 0 ||

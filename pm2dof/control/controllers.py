@@ -13,8 +13,8 @@ import math
 
 import numpy as np
 
-from .errors import SingularityError
-from .layout import Layout
+from ..core.errors import SingularityError
+from ..core.layout import Layout
 
 __all__ = ["NAController", "APDController", "STATUS_NAMES"]
 

@@ -12,8 +12,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .controllers import APDController, NAController
-from .errors import SingularityError, WorkspaceError
-from .layout import Layout
+from ..core.errors import SingularityError, WorkspaceError
+from ..core.layout import Layout
 
 __all__ = ["simulate", "SimResult", "plant_truth", "plant_vector", "rmse", "theta_truth",
            "check_trajectory"]
@@ -175,7 +175,7 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     controller : NAController or APDController
         Supplies the law, its gains, sample period and theta0 (its internal state is not used
         or changed: the rollout keeps its own state in C).
-    trajectory : pm2dof.trajectory.Trajectory
+    trajectory : pm2dof.Trajectory
         Desired motion sampled at the controller's period; the robot starts at rest at its
         first point.
     truth : dict, optional

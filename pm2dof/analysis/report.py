@@ -1,7 +1,7 @@
 # Model report: what the compiled model says about the robot over its workspace (pm2dof report).
 import numpy as np
 
-from .errors import SingularityError, WorkspaceError
+from ..core.errors import SingularityError, WorkspaceError
 
 __all__ = ["model_report"]
 

@@ -1,7 +1,7 @@
-# pm2dof.build: compile one CasADi-generated C file into a shared library for pm2dof._cbind.
+# pm2dof.core.build: compile one CasADi-generated C file into a shared library for pm2dof.core._cbind.
 """Compile a CasADi-generated C file into a shared library.
 
-The library is meant to be loaded with :class:`pm2dof._cbind.Library`. Compilation
+The library is meant to be loaded with :class:`pm2dof.core._cbind.Library`. Compilation
 writes to a temporary file next to the target and renames it into place, so a
 process that loads the target path never sees a half-written library.
 """
@@ -16,7 +16,12 @@ import sysconfig
 import tempfile
 from collections.abc import Iterable
 
-__all__ = ["compile_library", "BuildError"]
+__all__ = ["compile_library", "derive", "BuildError", "STALE_TMP_AGE_S"]
+
+#: Temporary libraries (``.lib<name>.so.*.tmp``) older than this are left-overs of a build that
+#: was killed; :func:`compile_library` removes them. Younger ones may belong to a build that is
+#: running now (a build takes seconds), so they are left alone.
+STALE_TMP_AGE_S = 600.0
 
 #: Compiler flags used by :func:`compile_library`, in order:
 #:
@@ -93,7 +98,7 @@ def compile_library(
     -------
     pathlib.Path
         The absolute path of the library, suitable for
-        :class:`pm2dof._cbind.Library`.
+        :class:`pm2dof.core._cbind.Library`.
 
     Raises
     ------
@@ -119,6 +124,7 @@ def compile_library(
     if not c_path.is_file():
         raise FileNotFoundError(f"C source not found: {c_path}")
     out_path.parent.mkdir(parents=True, exist_ok=True)
+    remove_stale_temporaries(out_path)
 
     fd, tmp_name = tempfile.mkstemp(
         prefix=f".{out_path.name}.", suffix=".tmp", dir=out_path.parent
@@ -156,12 +162,40 @@ def compile_library(
     return out_path
 
 
+def remove_stale_temporaries(out_path, max_age_s=STALE_TMP_AGE_S):
+    """Delete ``.<library name>.*.tmp`` files next to ``out_path`` older than ``max_age_s``:
+    what a build killed between compiling and renaming leaves behind. Returns their paths."""
+    import time
+    out_path = pathlib.Path(out_path)
+    now, removed = time.time(), []
+    for tmp in out_path.parent.glob(f".{out_path.name}.*.tmp"):
+        try:
+            if now - tmp.stat().st_mtime > max_age_s:
+                tmp.unlink()
+                removed.append(tmp)
+        except FileNotFoundError:  # removed by a concurrent build meanwhile
+            pass
+    return removed
+
+
+def derive(model_path, build=True):
+    """Run the build-time derivation ``python -m derive MODEL`` in its own process (the
+    runtime never imports SymPy or CasADi): generate ``generated/<name>/`` and, unless
+    ``build`` is false, compile it. Returns the process's exit status."""
+    import sys
+    repo = pathlib.Path(__file__).resolve().parents[2]
+    cmd = [sys.executable, "-m", "derive", str(pathlib.Path(model_path).resolve())]
+    if not build:
+        cmd.append("--no-build")
+    return subprocess.call(cmd, cwd=repo)
+
+
 def _main(argv=None):
-    """``python -m pm2dof.build SOURCE.c OUT.so``: compile one generated file (used by make)."""
+    """``python -m pm2dof.core.build SOURCE.c OUT.so``: compile one generated file (used by make)."""
     import sys
     args = sys.argv[1:] if argv is None else argv
     if len(args) != 2:
-        print("usage: python -m pm2dof.build SOURCE.c OUT.so", file=sys.stderr)
+        print("usage: python -m pm2dof.core.build SOURCE.c OUT.so", file=sys.stderr)
         return 2
     try:
         print(f"compiled {compile_library(args[0], args[1])}")

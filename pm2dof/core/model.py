@@ -1,4 +1,4 @@
-# The runtime Model: a frozen model file plus its compiled generated C, bound through pm2dof._cbind.
+# The runtime Model: a frozen model file plus its compiled generated C, bound through pm2dof.core._cbind.
 """The runtime model of an n-leg planar RR parallel manipulator.
 
 :func:`load_model` reads a model file, checks that ``generated/<name>/`` was derived from it
@@ -21,7 +21,7 @@ from .model_file import read_model_file
 __all__ = ["Model", "load_model", "DEFAULT_MODEL", "GENERATED"]
 
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parents[2]
 DEFAULT_MODEL = REPO / "models" / "shang2010.toml"
 GENERATED = REPO / "generated"
 

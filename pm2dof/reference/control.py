@@ -1,7 +1,7 @@
-# pm2dof/reference_control.py
+# pm2dof/reference/control.py
 #
 # Plain-NumPy reference of the generated controller steps, truth plant, encoder and
-# closed-loop rollout of Shang & Cong (2010), built on pm2dof.reference (never on the
+# closed-loop rollout of Shang & Cong (2010), built on pm2dof.reference.model (never on the
 # generated C). Used only by tests and benchmarks to cross-check derive/controllers.py
 # and derive/plant.py; it favours clarity over speed.
 #
@@ -23,7 +23,7 @@
 Mirrors, operation for operation where it matters for rounding, the generated C of
 ``derive/controllers.py`` (``na_step``, ``apd_step``) and ``derive/plant.py``
 (``plant_xedd``, ``plant_step``, ``measure``, ``*_closed_loop``), but computes every
-kinematic and dynamic quantity with :mod:`pm2dof.reference`.
+kinematic and dynamic quantity with :mod:`pm2dof.reference.model`.
 """
 
 from __future__ import annotations
@@ -32,8 +32,8 @@ from typing import Any
 
 import numpy as np
 
-from . import reference as ref
-from .layout import Layout
+from . import model as ref
+from ..core.layout import Layout
 
 __all__ = [
     "STATUS",
@@ -65,7 +65,7 @@ def layouts(n: int) -> dict:
 
     Returns
     -------
-    dict of str -> pm2dof.layout.Layout
+    dict of str -> pm2dof.core.layout.Layout
         ``ctrl_state`` (xe_prev 2, v 2, theta_hat p); ``na_params`` (Kd 2, Q 2, Gamma p,
         T, vel_alpha, sing_threshold, tau_max n); ``apd_params`` (Kp 2, Kv 2, T,
         vel_alpha, sing_threshold, tau_max n); ``plant`` (alpha, beta, gamma, fv, fc, fs
@@ -189,7 +189,7 @@ _STEP_DOC = """One control sample of the {what}, as the generated ``{law}_step``
     Parameters
     ----------
     g : Geometry-like
-        ``pm2dof.reference.Geometry`` (bases, la, lb, elbow) of n legs.
+        ``pm2dof.reference.model.Geometry`` (bases, la, lb, elbow) of n legs.
     state : array_like, shape (4 + 5n,)
         Controller state ``ctrl_state``: xe_prev (2,) m, v (2,) m/s, theta_hat (5n,).
     qa : array_like, shape (n,)
@@ -274,7 +274,7 @@ def plant_xedd(g: Any, xe, xed, tau_a, truth: dict) -> np.ndarray:
         Actuator torques, N m.
     truth : dict
         alpha, beta, gamma, fv, fc, fs (n,) and stribeck_velocity, coulomb_smoothing_velocity
-        (as :func:`pm2dof.simulate.plant_truth`; an ``encoder_step`` key is ignored).
+        (as :func:`pm2dof.plant_truth`; an ``encoder_step`` key is ignored).
 
     Returns
     -------
@@ -333,7 +333,7 @@ def measure(g: Any, xe, encoder_step: float) -> np.ndarray:
 
 
 def initial_state(g: Any, xe0, theta_hat0, encoder_step: float = 0.0) -> np.ndarray:
-    """Closed-loop state (``cl_state``) at rest at ``xe0``, as :func:`pm2dof.simulate.simulate`.
+    """Closed-loop state (``cl_state``) at rest at ``xe0``, as :func:`pm2dof.simulate`.
 
     xe = xe0, xed = 0, xe_prev = fk(measure(xe0)), v = 0, theta_hat = theta_hat0.
     """

@@ -1,9 +1,9 @@
 # Figures of the experiment: errors (like the paper's Figs. 4-5), torques, theta_hat, repeated runs.
 import numpy as np
 
-from .results import save_figure
+from ..analysis.results import save_figure
 
-__all__ = ["write_figures"]
+__all__ = ["write_figures", "experiment_figures"]
 
 COLORS = {"apd": "tab:blue", "na": "tab:red", "na_no_adaptation": "tab:gray"}
 LABELS = {"apd": "APD (eq. 40)", "na": "NA (eqs. 28-29)", "na_no_adaptation": "NA, Gamma = 0"}
@@ -116,3 +116,22 @@ def write_figures(model, results, repeated, out_dir, prov):
         written.append(save_figure(fig, out_dir / name, prov))
         plt.close(fig)
     return written
+
+
+def experiment_figures(model, out, runs=40, progress=None):
+    """Run the experiment (Table 3 and ``runs`` repeated runs) and write its figures to ``out``.
+
+    Returns (table3 results, repeated-runs dict or None, list of PNG paths).
+    """
+    from ..analysis.experiment import repeated_runs, table3
+    from ..analysis.results import provenance
+    results = table3(model, progress=progress)
+    rep = None
+    if runs > 0:
+        moves = model.spec.trajectories
+        speed = "high" if "high" in moves else next(iter(moves))
+        rep = repeated_runs(model, speed, runs, progress=progress)
+        rep["speed"] = speed
+        rep["apd_rmse"] = results[speed]["apd"].rmse
+    paths = write_figures(model, results, rep, out, provenance(model))
+    return results, rep, paths

@@ -1,0 +1,107 @@
+# Rendering of a benchmark result: timings, targets, ratios and op counts as a text table.
+__all__ = ["format_bench"]
+
+
+def _fmt(v, unit=""):
+    if v is None:
+        return "n/a"
+    if unit == "rel":
+        return f"{v:.2e}"
+    if abs(v) >= 1e5:
+        return f"{v:,.0f}"
+    if abs(v) >= 100:
+        return f"{v:.1f}"
+    if abs(v) >= 1:
+        return f"{v:.2f}"
+    return f"{v:.3g}"
+
+
+def format_bench(results):
+    """A readable report of :func:`run_bench`'s dict: timings, targets, ratios, op counts."""
+    r = results
+    tg = r.get("targets", {})
+    lines = [f"pm2dof bench: model {r.get('model')!r} ({r.get('n_legs')} legs), "
+             f"{'quick' if r.get('quick') else 'full'} run, median (min) of "
+             f"{r.get('repeats')} batches",
+             ""]
+    head = f"{'measurement':44s} {'median':>12s} {'min':>12s} {'unit':8s} {'target':>10s}  result"
+    lines += [head, "-" * len(head)]
+
+    def row(label, key, unit, scale=1.0, min_key=None):
+        v = r.get(key)
+        vm = r.get(min_key or key + "_min")
+        v = None if v is None else v * scale
+        vm = None if vm is None else vm * scale
+        t = tg.get(key)
+        tgt = res_s = ""
+        if t:
+            tgt = f"{t['op']} {_fmt(t['target'], t['unit'])}"
+            res_s = "n/a" if t["pass"] is None else ("PASS" if t["pass"] else "FAIL")
+        vm_s = _fmt(vm, unit) if vm is not None else ""
+        lines.append(f"{label:44s} {_fmt(v, unit):>12s} {vm_s:>12s} {unit:8s} {tgt:>10s}  "
+                     f"{res_s}")
+
+    row("NA step, C loop (time_calls)", "na_step_c_ns", "ns")
+    row("APD step, C loop (time_calls)", "apd_step_c_ns", "ns")
+    row("NA step, bare _cbind call from Python", "na_step_binding_us", "us")
+    row("NA step, NAController.step(out=buf)", "na_step_python_us", "us")
+    row("NA step, NAController.step (allocating)", "na_step_python_alloc_us", "us")
+    row("NA step, casadi.Function (casadi.external)", "na_step_casadi_function_us", "us")
+    row("NA step, NumPy reference", "na_step_numpy_us", "us")
+    row("NA step, SymPy lambdify (numpy, cse)", "na_step_lambdify_us", "us")
+    row(f"rollout, accumulate ({r.get('rollout_samples')} samples)", "rollout_steps_per_s",
+        "steps/s", min_key="rollout_steps_per_s_best")
+    row("rollout, end to end (simulate())", "rollout_end_to_end_steps_per_s", "steps/s",
+        min_key="rollout_end_to_end_steps_per_s_best")
+    lines.append("(for the rollout rows the second column is the best batch)")
+    if r.get("rollout_ns_per_step") is not None:
+        lines.append(f"rollout: {_fmt(r['rollout_ns_per_step'])} ns per control step in C "
+                     f"(NA step, encoder, {r.get('rk4_substeps')} RK4 plant steps); simulate() "
+                     f"adds {_fmt(r.get('rollout_python_overhead_us_per_step'))} us per step "
+                     f"in Python")
+    lines.append("")
+    lines.append("ratios and agreement")
+    for label, key, unit in (
+            ("C step vs NumPy reference", "speedup_c_vs_numpy", "x"),
+            ("C step vs SymPy lambdify", "speedup_c_vs_lambdify", "x"),
+            ("NAController.step vs casadi.Function", "speedup_binding_vs_casadi_function", "x"),
+            ("bare binding vs casadi.Function", "speedup_raw_binding_vs_casadi_function", "x"),
+            (f"C vs NumPy, max rel. diff. ({r.get('agreement_cases')} states)",
+             "agreement_c_vs_numpy", "rel"),
+            ("C vs lambdify, max rel. diff.", "agreement_c_vs_lambdify", "rel"),
+            ("casadi.Function vs binding (tau_a)", "agreement_casadi_function_vs_c", "rel")):
+        t = tg.get(key)
+        tgt = f"{t['op']} {_fmt(t['target'], t['unit'])}" if t else ""
+        res_s = ("n/a" if t["pass"] is None else ("PASS" if t["pass"] else "FAIL")) if t else ""
+        lines.append(f"  {label:42s} {_fmt(r.get(key), unit):>12s} {'':12s} {unit:8s} "
+                     f"{tgt:>10s}  {res_s}")
+    if r.get("na_step_budget_fraction") is not None:
+        lines.append(f"  the NA step in C takes {100 * r['na_step_budget_fraction']:.4f} % of "
+                     f"the sample period; NAController.step adds "
+                     f"{_fmt(r.get('python_overhead_us'))} us of Python")
+    ops = r.get("op_counts")
+    if ops:
+        lines.append("")
+        lines.append("operations in the generated C (static count, callees included)")
+        cols = ("mul", "sq", "add", "sub", "div", "neg", "sin", "cos", "sqrt", "atan2", "exp",
+                "tanh", "floor", "fmin", "fmax", "fabs", "cmp", "select", "flops")
+        lines.append(f"  {'function':18s}" + "".join(f"{c:>7s}" for c in cols))
+        for name, c in ops.items():
+            lines.append(f"  {name:18s}" + "".join(f"{c.get(k, 0):7d}" for k in cols))
+    notes = r.get("notes") or {}
+    if notes:
+        lines.append("")
+        lines += [f"note: {k}: {v}" for k, v in notes.items()]
+    m = r.get("machine") or {}
+    if m:
+        lines.append("")
+        lines.append(f"machine: {m.get('cpu')}, {m.get('cores')} cores "
+                     f"({m.get('cores_available')} available), {m.get('platform')}")
+        lines.append(f"compiler: {m.get('compiler_version') or m.get('compiler')}; flags: "
+                     f"{m.get('compiler_flags')}")
+        lines.append(f"python {m.get('python')}, numpy {m.get('numpy')}"
+                     + (f", casadi {r['casadi_version']}" if r.get("casadi_version") else ""))
+    if "elapsed_s" in r:
+        n_pass = sum(1 for t in tg.values() if t["pass"])
+        lines.append(f"targets met: {n_pass}/{len(tg)}; bench took {r['elapsed_s']:.1f} s")
+    return "\n".join(lines)

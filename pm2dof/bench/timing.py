@@ -1,0 +1,48 @@
+# The timing harness: calibrated batches of calls with gc off; medians, minima, relative differences.
+import gc
+import statistics
+import time
+
+import numpy as np
+
+__all__ = ["stats", "time_batches", "rel_diff"]
+
+
+def stats(per_call):
+    """{"median", "min", "samples"} of per-call times (one per batch)."""
+    return {"median": float(statistics.median(per_call)), "min": float(min(per_call)),
+            "samples": [float(x) for x in per_call]}
+
+
+def time_batches(run, repeats, batch_s):
+    """Time ``run(n)`` (n calls in its own tight loop): per-call ns for each of ``repeats``
+    batches of about ``batch_s`` seconds. The batch size is calibrated first; gc is off."""
+    n = 1
+    while True:  # calibrate: grow n until one batch takes >= batch_s / 4
+        t0 = time.perf_counter_ns()
+        run(n)
+        dt = time.perf_counter_ns() - t0
+        if dt >= batch_s * 0.25e9 or n >= 1 << 24:
+            break
+        n *= 4 if dt < batch_s * 0.025e9 else 2
+    n = max(1, int(n * batch_s * 1e9 / max(dt, 1)))
+    out = []
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        for _ in range(repeats):
+            t0 = time.perf_counter_ns()
+            run(n)
+            out.append((time.perf_counter_ns() - t0) / n)
+    finally:
+        if enabled:
+            gc.enable()
+    return out, n
+
+
+def rel_diff(a, b):
+    """||a - b||_inf / ||b||_inf (0 if both are zero)."""
+    a, b = np.ravel(np.asarray(a, dtype=float)), np.ravel(np.asarray(b, dtype=float))
+    d = float(np.max(np.abs(a - b)))
+    s = float(np.max(np.abs(b)))
+    return d / s if s > 0 else d

@@ -1,0 +1,15 @@
+# Beside the layers: independent plain-NumPy formulations, for the tests and the bench only.
+"""Independent, hand-derived NumPy formulations that check the generated C.
+
+* :mod:`.model` -- kinematics and dynamics (eqs. 1-13), n legs;
+* :mod:`.control` -- the controller steps, truth plant, encoder and rollout.
+
+Never used at run time: clarity over speed (a reference step is ~10^4 times slower than
+the C). Imports NumPy and :mod:`pm2dof.core.layout` only.
+"""
+from . import control
+from .model import (A, C, Ce, Geometry, H, M, Me, S, W, Wdot, Y, fk, forward_dynamics,
+                    forward_dynamics_joint, friction, ik, task_friction)
+
+__all__ = ["control", "Geometry", "ik", "fk", "H", "A", "W", "S", "Wdot", "M", "C", "friction",
+           "Me", "Ce", "task_friction", "Y", "forward_dynamics", "forward_dynamics_joint"]
