@@ -162,8 +162,9 @@ def test_reachable_poses_give_finite_outputs_of_the_right_shape(dx, dy, xed, the
 # 2. Random bad inputs
 # --------------------------------------------------------------------------------------
 
+# right_size_2d (e.g. (1, 6) for q) is refused: only the documented shape (k,) is accepted
 VALID_KINDS = {"float32", "int_list", "object_numeric", "strided", "readonly", "big_endian",
-               "list", "tuple", "right_size_2d", "bool"}
+               "list", "tuple", "bool"}
 
 
 @st.composite
@@ -535,3 +536,24 @@ def test_huge_finite_inputs_never_give_silent_non_finite_output():
         if not np.isfinite(r).all():
             silent.append(f"{label} -> {r.tolist()}")
     assert not silent, "silent non-finite outputs:\n  " + "\n  ".join(silent)
+
+
+@pytest.mark.parametrize("name", sorted(SIGNATURES))
+def test_right_size_wrong_shape_is_refused_naming_argument_and_shape(name):
+    """A float64 array with the right number of elements but not the shape (k,) -- (2, 3) or
+    (1, 6) for q -- is refused with a ValueError naming the argument and the expected shape,
+    on the fast path (float64) and on the converting path (a nested list) alike."""
+    args = SIGNATURES[name][0]
+    for j, arg in enumerate(args):
+        good = np.asarray(BASE[arg], dtype=float)
+        k = good.size
+        shapes = [(1, k), (k, 1)] + ([(2, k // 2)] if k % 2 == 0 and k > 2 else [])
+        for shape in shapes:
+            for bad in (good.reshape(shape).copy(), good.reshape(shape).tolist()):
+                values = [BASE[a] for a in args]
+                values[j] = bad
+                with pytest.raises(ValueError) as info:
+                    getattr(M, name)(*values)
+                msg = str(info.value)
+                assert arg in msg and f"shape ({k},)" in msg and str(shape) in msg, (name, arg, msg)
+        assert_model_still_good(name)

@@ -14,9 +14,12 @@ from __future__ import annotations
 import array
 import ctypes
 import gc
+import os
 import pathlib
+import subprocess
 import sys
 import threading
+import time
 
 import casadi as ca
 import numpy as np
@@ -257,6 +260,26 @@ def test_compile_library_returns_absolute_path_and_leaves_no_temp_files(tmp_path
     assert twice(21.0) == 42.0
 
 
+def test_killed_build_leftovers_are_removed_by_the_next_build_and_ignored_by_git(tmp_path):
+    """A build killed between compiling and renaming leaves .lib<name>.so.*.tmp: the next build
+    removes those older than STALE_TMP_AGE_S (younger ones may be a concurrent build's), and
+    git does not show them under generated/."""
+    (tmp_path / "a.c").write_text("double twice(double x) { return 2 * x; }\n")
+    old, young = tmp_path / ".liba.so.killed1.tmp", tmp_path / ".liba.so.running.tmp"
+    other = tmp_path / ".libb.so.killed2.tmp"  # another library's: not this build's business
+    for f in (old, young, other):
+        f.write_bytes(b"half a library")
+    stale = time.time() - build.STALE_TMP_AGE_S - 60
+    os.utime(old, (stale, stale))
+    os.utime(other, (stale, stale))
+    build.compile_library(tmp_path / "a.c", tmp_path / "liba.so")
+    assert not old.exists() and young.exists() and other.exists()
+    repo = pathlib.Path(__file__).resolve().parent.parent
+    probe = "generated/shang2010/.libshang2010.so.abc123.tmp"
+    r = subprocess.run(["git", "check-ignore", "-q", probe], cwd=repo)
+    assert r.returncode == 0, f"git does not ignore {probe}"
+
+
 def test_compile_library_invalid_c_raises_build_error_with_command_and_stderr(tmp_path):
     (tmp_path / "bad.c").write_text("int f(void) { return undeclared_thing; }\n")
     with pytest.raises(build.BuildError) as info:
@@ -430,8 +453,20 @@ def test_none_outputs_are_not_computed(toy):
     np.testing.assert_array_equal(yy, [2.0, 3.0, 6.0, 11.0])  # untouched this time
 
 
+def test_vector_input_must_be_one_dimensional(toy):
+    """A vector input given as a 2-D array of the right size is refused, with both shapes."""
+    x = np.array([1.0, -2.0, 4.0])
+    for bad in (x[None, :].copy(), x[:, None].copy()):
+        with pytest.raises(ValueError, match=r"toy: input 'x' \(#0\) must have shape \(3,\), "
+                           r"got shape \((1, 3|3, 1)\)"):
+            toy(bad, np.zeros(4), 2.0, np.empty(3), None, None)
+    with pytest.raises(ValueError, match=r"input 's' \(#2\) must have shape \(1,\), got shape "
+                       r"\(1, 1\)"):
+        toy(x, np.zeros(4), np.array([[2.5]]), np.empty(3), None, None)
+
+
 @pytest.mark.parametrize(
-    "scalar", [2.5, 3, True, np.float64(2.5), np.array(2.5), np.array([[2.5]]), [2.5]]
+    "scalar", [2.5, 3, True, np.float64(2.5), np.array(2.5), np.array([2.5]), [2.5]]
 )
 def test_scalar_input_forms(toy, scalar):
     x = np.array([1.0, -2.0, 4.0])

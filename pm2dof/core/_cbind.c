@@ -180,6 +180,7 @@ typedef struct {
     PyObject *shapes_in, *shapes_out; /* tuple of (nrow, ncol) */
     Py_ssize_t n_in, n_out;
     Py_ssize_t *nnz; /* n_in + n_out element counts (outputs start at nnz + n_in) */
+    unsigned char *vec; /* per argument: 1 if a vector (k x 1 or 1 x k): must be 1-D */
     casadi_int sz_arg, sz_res, sz_iw, sz_w;
     eval_fn eval;
     checkout_fn checkout;
@@ -422,14 +423,21 @@ np_is_ndarray(PyObject *o)
     return 0;
 }
 
+/* A vector argument takes a 1-D buffer (a 0-d one too when it has one element). */
+static inline int
+ndim_ok(int is_vec, int ndim, Py_ssize_t expect)
+{
+    return !is_vec || ndim == 1 || (ndim == 0 && expect == 1);
+}
+
 /* Data pointer of an ndarray that is exactly right for the argument, else NULL. */
 static inline double *
-np_fast(PyObject *o, int writable, Py_ssize_t expect)
+np_fast(PyObject *o, int writable, Py_ssize_t expect, int is_vec)
 {
     const NpArray *a = (const NpArray *)o;
     int need = NP_C_CONTIGUOUS | NP_ALIGNED | (writable ? NP_WRITEABLE : 0);
     if ((a->flags & need) != need || (writable && (a->flags & NP_WARN_ON_WRITE)) ||
-        !np_descr_is_f64(a->descr))
+        !np_descr_is_f64(a->descr) || !ndim_ok(is_vec, a->nd, expect))
         return NULL;
     Py_ssize_t n = 1;
     for (int k = 0; k < a->nd; k++)
@@ -525,6 +533,29 @@ check_finite(FunctionObject *f, const double *p, Py_ssize_t n, const ArgCtx *c)
     return -1;
 }
 
+/* Refuse a vector argument given as a 2-D (or higher) buffer: name it and both shapes. */
+static int
+check_ndim(FunctionObject *f, const Py_buffer *v, Py_ssize_t expect, int is_vec,
+           const ArgCtx *c)
+{
+    if (ndim_ok(is_vec, v->ndim, expect))
+        return 0;
+    PyObject *shape = PyTuple_New(v->ndim);
+    if (shape == NULL)
+        return -1;
+    for (int k = 0; k < v->ndim; k++) {
+        PyObject *d = PyLong_FromSsize_t(v->shape ? v->shape[k] : 0);
+        if (d == NULL) {
+            Py_DECREF(shape);
+            return -1;
+        }
+        PyTuple_SET_ITEM(shape, k, d);
+    }
+    arg_error(f, PyExc_ValueError, c, "must have shape (%zd,), got shape %R", expect, shape);
+    Py_DECREF(shape);
+    return -1;
+}
+
 /* How an argument was bound. */
 enum { BOUND_NONE, BOUND_SCALAR, BOUND_FAST, BOUND_NUMPY_EXPORT, BOUND_FOREIGN_EXPORT };
 
@@ -536,7 +567,7 @@ enum { BOUND_NONE, BOUND_SCALAR, BOUND_FAST, BOUND_NUMPY_EXPORT, BOUND_FOREIGN_E
  */
 static int
 bind_input(FunctionObject *f, Work *w, PyObject *o, Py_ssize_t *held, const ArgCtx *c,
-           Py_ssize_t expect, const double **data, Py_ssize_t *count)
+           Py_ssize_t expect, int is_vec, const double **data, Py_ssize_t *count)
 {
     Py_ssize_t i = c->idx;
     if (expect == 1 && PyFloat_Check(o)) {
@@ -568,6 +599,8 @@ bind_input(FunctionObject *f, Work *w, PyObject *o, Py_ssize_t *held, const ArgC
                       expect, expect == 1 ? "" : "s", *count);
             return -1;
         }
+        if (check_ndim(f, v, expect, is_vec, c) < 0)
+            return -1;
         return Py_TYPE(o) == np_type ? BOUND_NUMPY_EXPORT : BOUND_FOREIGN_EXPORT;
     }
     *data = &w->scalars[i];
@@ -578,7 +611,7 @@ bind_input(FunctionObject *f, Work *w, PyObject *o, Py_ssize_t *held, const ArgC
 /* Bind one output: a writable float64 buffer, or None (-> NULL). */
 static int
 bind_output(FunctionObject *f, Work *w, PyObject *o, Py_ssize_t *held, const ArgCtx *c,
-            Py_ssize_t expect, double **data, Py_ssize_t *count)
+            Py_ssize_t expect, int is_vec, double **data, Py_ssize_t *count)
 {
     if (o == Py_None) {
         *data = NULL;
@@ -596,6 +629,8 @@ bind_output(FunctionObject *f, Work *w, PyObject *o, Py_ssize_t *held, const Arg
                   expect == 1 ? "" : "s", *count);
         return -1;
     }
+    if (check_ndim(f, v, expect, is_vec, c) < 0)
+        return -1;
     return Py_TYPE(o) == np_type ? BOUND_NUMPY_EXPORT : BOUND_FOREIGN_EXPORT;
 }
 
@@ -615,7 +650,7 @@ bind_one(FunctionObject *f, Work *w, PyObject *const *args, Py_ssize_t k, int fa
     PyObject *o = args[k];
     Py_ssize_t expect = f->nnz[k], count;
     if (fast_ok && np_is_ndarray(o)) {
-        double *p = np_fast(o, is_out, expect);
+        double *p = np_fast(o, is_out, expect, f->vec[k]);
         if (p != NULL) {
             if (is_out)
                 w->res[k - f->n_in] = p;
@@ -626,8 +661,9 @@ bind_one(FunctionObject *f, Work *w, PyObject *const *args, Py_ssize_t k, int fa
     }
     ArgCtx c = {method, NULL, is_out, is_out ? k - f->n_in : k};
     if (is_out)
-        return bind_output(f, w, o, held, &c, expect, &w->res[k - f->n_in], &count);
-    return bind_input(f, w, o, held, &c, expect, &w->arg[k], &count);
+        return bind_output(f, w, o, held, &c, expect, f->vec[k], &w->res[k - f->n_in],
+                           &count);
+    return bind_input(f, w, o, held, &c, expect, f->vec[k], &w->arg[k], &count);
 }
 
 /*
@@ -936,7 +972,7 @@ Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
            cp = {"accumulate", "p", 0, 2}, cy = {"accumulate", "y_seq", 1, 1};
 
     /* x: writable state, nx elements */
-    if (bind_output(f, w, args[0], &held, &cx, nx, &x, &n) < 0)
+    if (bind_output(f, w, args[0], &held, &cx, nx, 0, &x, &n) < 0)
         goto fail;
     if (x == NULL) {
         arg_error(f, PyExc_TypeError, &cx, "must be a writable float64 buffer, got None");
@@ -944,7 +980,7 @@ Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
     }
     /* u_seq: N * nu elements */
     Py_ssize_t n_u;
-    if (bind_input(f, w, args[1], &held, &cu, -1, &u, &n_u) < 0)
+    if (bind_input(f, w, args[1], &held, &cu, -1, 0, &u, &n_u) < 0)
         goto fail;
     if (n_u == 0 || n_u % nu != 0) {
         arg_error(f, PyExc_ValueError, &cu,
@@ -953,10 +989,10 @@ Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
     }
     const Py_ssize_t steps = n_u / nu;
     /* p: np elements (or a Python float if np == 1) */
-    if (bind_input(f, w, args[2], &held, &cp, np_, &p, &n) < 0)
+    if (bind_input(f, w, args[2], &held, &cp, np_, 0, &p, &n) < 0)
         goto fail;
     /* y_seq: N * ny elements, or None (outputs y not computed) */
-    if (bind_output(f, w, args[3], &held, &cy, steps * ny, &y, &n) < 0)
+    if (bind_output(f, w, args[3], &held, &cy, steps * ny, 0, &y, &n) < 0)
         goto fail;
     /* Finiteness last: binding may run an exporter's code that changes earlier buffers. */
     if (check_finite(f, x, nx, &cx) < 0 || check_finite(f, u, n_u, &cu) < 0 ||
@@ -1073,7 +1109,8 @@ read_names(name_fn getname, Py_ssize_t n, const char *dflt)
  */
 static int
 read_sparsity(FunctionObject *f, sparsity_fn sp, Py_ssize_t n, Py_ssize_t *nnz,
-              PyObject *names, const char *kind, PyObject **sizes, PyObject **shapes)
+              unsigned char *vec, PyObject *names, const char *kind, PyObject **sizes,
+              PyObject **shapes)
 {
     *sizes = PyTuple_New(n);
     *shapes = PyTuple_New(n);
@@ -1107,6 +1144,8 @@ read_sparsity(FunctionObject *f, sparsity_fn sp, Py_ssize_t n, Py_ssize_t *nnz,
             return -1;
         }
         nnz[i] = (Py_ssize_t)count;
+        /* inputs only: generated outputs are often matrices flattened into a column */
+        vec[i] = strcmp(kind, "input") == 0 && (nrow == 1 || ncol == 1);
         PyObject *sz = PyLong_FromLongLong(count);
         PyObject *shape = Py_BuildValue("(LL)", nrow, ncol);
         if (sz == NULL || shape == NULL) {
@@ -1228,7 +1267,8 @@ Function_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
     }
 
     f->nnz = PyMem_Calloc((size_t)(f->n_in + f->n_out) + 1, sizeof(Py_ssize_t));
-    if (f->nnz == NULL) {
+    f->vec = PyMem_Calloc((size_t)(f->n_in + f->n_out) + 1, 1);
+    if (f->nnz == NULL || f->vec == NULL) {
         PyErr_NoMemory();
         goto fail;
     }
@@ -1238,9 +1278,10 @@ Function_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
     f->names_out = read_names(name_out, f->n_out, "o");
     if (f->names_out == NULL)
         goto fail;
-    if (read_sparsity(f, sp_in, f->n_in, f->nnz, f->names_in, "input", &f->sizes_in,
+    if (read_sparsity(f, sp_in, f->n_in, f->nnz, f->vec, f->names_in, "input", &f->sizes_in,
                       &f->shapes_in) < 0 ||
-        read_sparsity(f, sp_out, f->n_out, f->nnz + f->n_in, f->names_out, "output",
+        read_sparsity(f, sp_out, f->n_out, f->nnz + f->n_in, f->vec + f->n_in, f->names_out,
+                      "output",
                       &f->sizes_out, &f->shapes_out) < 0)
         goto fail;
     f->signature = make_signature(f);
@@ -1268,6 +1309,7 @@ Function_dealloc(FunctionObject *f)
     if (f->increfed && f->decref)
         f->decref();
     PyMem_Free(f->nnz);
+    PyMem_Free(f->vec);
     Py_XDECREF(f->name);
     Py_XDECREF(f->signature);
     Py_XDECREF(f->names_in);
@@ -1344,12 +1386,15 @@ PyDoc_STRVAR(Function_doc,
 "--\n\n"
 "A CasADi-generated function resolved from a Library by name.\n\n"
 "Call as f(*inputs, *outputs) with exactly n_in + n_out positional arguments:\n"
-"each input a C-contiguous float64 buffer with sizes_in[i] elements (any ndim),\n"
-"or a Python float/int when sizes_in[i] == 1; each output a writable C-contiguous\n"
-"float64 buffer with sizes_out[i] elements, or None to skip it. Outputs are\n"
+"each input a C-contiguous float64 buffer with sizes_in[i] elements, or a Python\n"
+"float/int when sizes_in[i] == 1; each output a writable C-contiguous float64\n"
+"buffer with sizes_out[i] elements, or None to skip it. A vector input (shape\n"
+"k x 1 or 1 x k) must be a 1-D buffer of shape (k,) (0-d allowed when k == 1);\n"
+"matrix inputs and all outputs may have any ndim: they are flat vectors of\n"
+"nonzeros (generated code often flattens a matrix into a column), and only\n"
+"their element count is checked. Outputs are\n"
 "written in place and must not share memory with inputs or other outputs.\n"
-"Matrices are flat column-major nonzero vectors (CasADi's layout); the binding\n"
-"only checks element counts. Inputs must be finite (ValueError otherwise). A\n"
+"Inputs must be finite (ValueError otherwise). A\n"
 "nonzero return code raises EvalError. Returns None.");
 
 static PyTypeObject FunctionType = {

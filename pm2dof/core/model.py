@@ -145,8 +145,9 @@ class Model:
             except (TypeError, ValueError) as exc:
                 raise TypeError(f"{name} must be an array of {size} real numbers, got "
                                 f"{type(x).__name__}: {exc}") from None
-            if a.size != size or a.ndim > 2:
-                raise ValueError(f"{name} must have shape ({size},), got shape {a.shape}")
+            if a.shape != (size,) and not (size == 1 and a.ndim == 0):
+                raise ValueError(f"{f.name}: input '{name}' must have shape ({size},), got shape "
+                                 f"{a.shape}")
             out.append(a)
         return out
 

@@ -1,0 +1,130 @@
+# The package's layers: imports point down only, and the runtime layers pull in no heavy library.
+"""Import direction of ``pm2dof``'s sub-packages.
+
+* Static: every import statement of every module (top level and inside functions, absolute or
+  relative) is resolved, and a module of one sub-package may import only the sub-packages and
+  third-party libraries its layer allows (:data:`ALLOWED`, :data:`THIRD_PARTY`).
+* Dynamic: in a fresh interpreter, ``import pm2dof`` (and its core and control layers, and a
+  controller step and a rollout) loads none of SymPy, CasADi, matplotlib, Dask, pyarrow, SciPy.
+
+A new sub-package must be entered in :data:`ALLOWED`, which is where its layer is decided.
+"""
+import ast
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+PKG = Path(__file__).resolve().parent.parent / "pm2dof"
+
+# sub-package (or top-level module) -> the pm2dof sub-packages it may import
+_RUNTIME = {"core", "control"}
+ALLOWED = {
+    "core": {"core"},                                   # 1: the thin runtime
+    "control": {"core", "control"},                     # 2: controllers, rollouts
+    "reference": {"core", "reference"},                 # beside: NumPy formulations
+    "analysis": _RUNTIME | {"analysis"},                # 3: experiment, identification
+    "bench": _RUNTIME | {"analysis", "reference", "bench"},   # 3: benchmark
+    "figures": _RUNTIME | {"analysis", "figures"},      # 4: matplotlib
+    "cli": _RUNTIME | {"analysis", "bench", "figures", "cli"},  # 4: parse and dispatch
+    "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
+    "__main__": {"cli"},
+    "_moved": set(),
+}
+# sub-package -> third-party top-level modules it may import (besides the standard library)
+_HEAVY = {"sympy", "casadi", "matplotlib", "dask", "distributed", "pyarrow", "scipy"}
+THIRD_PARTY = {
+    "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
+    "__main__": set(), "_moved": set(),
+    "analysis": {"numpy", "scipy", "casadi"},
+    "bench": {"numpy", "casadi", "sympy", "derive"},    # baselines; each optional at run time
+    "figures": {"numpy", "matplotlib", "PIL"},
+    "cli": set(),
+}
+STDLIB = set(sys.stdlib_module_names)
+
+
+def _unit(path):
+    """The layer unit of a module file: its sub-package, or the top-level module's stem."""
+    rel = path.relative_to(PKG)
+    return rel.parts[0] if len(rel.parts) > 1 else rel.stem
+
+
+def _imports(path):
+    """(line, absolute module name) of every import in the file, relative ones resolved."""
+    rel = path.relative_to(PKG.parent).with_suffix("")
+    package = list(rel.parts[:-1])  # the package a relative import starts from (also for __init__)
+    out = []
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        if isinstance(node, ast.Import):
+            out += [(node.lineno, a.name) for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package[:len(package) - node.level + 1]
+                mod = ".".join(base + ([node.module] if node.module else []))
+                if node.module is None:  # from . import x, y: each is a module of base
+                    out += [(node.lineno, ".".join(base + [a.name])) for a in node.names]
+                    continue
+            else:
+                mod = node.module
+            out.append((node.lineno, mod))
+    return out
+
+
+MODULES = sorted(p for p in PKG.rglob("*.py"))
+
+
+def test_every_sub_package_has_a_declared_layer():
+    units = {_unit(p) for p in MODULES}
+    assert units <= set(ALLOWED), f"undeclared sub-packages: {sorted(units - set(ALLOWED))}"
+    assert units <= set(THIRD_PARTY)
+    assert {"core", "control", "analysis", "bench", "figures", "reference", "cli"} <= units
+
+
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))
+def test_imports_point_down_the_layers(path):
+    unit = _unit(path)
+    bad = []
+    for line, mod in _imports(path):
+        top = mod.split(".")[0]
+        if top == "pm2dof":
+            parts = mod.split(".")
+            target = parts[1] if len(parts) > 1 else "__init__"
+            if target not in ALLOWED[unit]:
+                bad.append(f"line {line}: {mod} (layer {target!r} is not below {unit!r})")
+        elif top not in STDLIB and top not in THIRD_PARTY[unit]:
+            bad.append(f"line {line}: third-party {mod!r} is not allowed in {unit!r}")
+    assert not bad, f"{path.relative_to(PKG.parent)}:\n  " + "\n  ".join(bad)
+
+
+def test_the_checker_sees_relative_and_function_level_imports(tmp_path):
+    """The static check would catch a violation (it is not vacuous)."""
+    src = PKG / "core" / "model.py"
+    found = {m for _, m in _imports(src)}
+    assert {"pm2dof.core._cbind", "pm2dof.core.errors", "numpy"} <= found, found
+    found = {m for _, m in _imports(PKG / "figures" / "experiment.py")}
+    assert "matplotlib" in found and "pm2dof.analysis.results" in found, found
+
+
+_PROBE = r"""
+import sys
+import numpy as np
+import pm2dof, pm2dof.core, pm2dof.control
+m = pm2dof.load_model()
+c = pm2dof.NAController(m)
+q = m.ik([0.245, 0.265])
+c.reset(q[:m.n_legs])
+c.step(q[:m.n_legs], np.array([0.245, 0.265]), np.zeros(2), np.zeros(2))
+pm2dof.simulate(m, pm2dof.APDController(m), pm2dof.paper_move("high"))
+heavy = sorted({k.split(".")[0] for k in sys.modules} & HEAVY)
+print(",".join(heavy))
+"""
+
+
+def test_runtime_layers_load_no_heavy_library():
+    code = f"HEAVY = {sorted(_HEAVY)!r}\nHEAVY = set(HEAVY)\n" + _PROBE
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
+                       cwd=PKG.parent)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "", f"runtime imports loaded {r.stdout.strip()}"
