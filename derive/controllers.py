@@ -15,7 +15,9 @@ PROJECTION_FLOOR = 1e-6
 def controller_layouts(n, p):
     """Flat-vector layouts: the controller state and each controller's parameters."""
     state = Layout([("xe_prev", 2), ("v", 2), ("theta_hat", p)])
-    common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("tau_max", n)]
+    # sing_threshold: type I (legs), parallel_sing_threshold: type II (actuation)
+    common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
+              ("tau_max", n)]
     na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p)] + common)
     apd = Layout([("Kp", 2), ("Kv", 2)] + common)
     return {"ctrl_state": state, "na_params": na, "apd_params": apd}
@@ -56,7 +58,8 @@ def controller_functions(d, prefix):
 
     Inputs: state (xe_prev, v, theta_hat), qa (measured active angles), xd, xd_dot, xd_ddot
     (desired position, velocity, acceleration), params (see controller_layouts).
-    Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot, sing].
+    Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot, sing (2):
+    type I, type II].
     A bad sample (singular pose, or any non-finite intermediate) gives the safe torque zero
     and leaves theta_hat unchanged; a non-finite sample also keeps xe_prev and v.
     """
@@ -100,8 +103,9 @@ def controller_functions(d, prefix):
         tau = _min_norm_torque(S, u)                    # eq. 21
         tau_sat = ca.fmin(ca.fmax(tau, -P["tau_max"]), P["tau_max"])
         saturated = ca.mmax(ca.fabs(tau) - P["tau_max"]) > 0
-        sing = d.singularity_measure(conv)
-        regular = sing >= P["sing_threshold"]                      # false for NaN too
+        sing = d.singularity_measures(conv)                        # [type I, type II]
+        regular = ca.logic_and(sing[0] >= P["sing_threshold"],     # false for NaN too
+                               sing[1] >= P["parallel_sing_threshold"])
         finite = _all_finite(ca.vertcat(tau, theta_next, xe, v))
         good = ca.logic_and(regular, finite)
         tau_out = ca.if_else(good, tau_sat, ca.DM.zeros(n))        # safe torque: zero

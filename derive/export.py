@@ -47,7 +47,8 @@ def _header_doc(spec, functions, layouts, status_codes):
         " * xe    = [x, y] end-effector position, m;  xed, xrd, xrdd: velocities m/s, accel. m/s^2",
         f" * theta = [{', '.join(spec.param_names)}]",
         " *         (alpha, beta, gamma in kg*m^2; fv in N*m*s/rad; fc, fs in N*m)",
-        " * sing  = min_i |sin(qb_i - qa_i)|, the singularity measure at the pose",
+        " * sing  = [min_i |sin(qb_i - qa_i)| (type I, legs), sqrt(1 - |sum_i exp(2 i qb_i)| / n)",
+        " *         (type II, actuation: sigma_min of S with unit rows over sqrt(n/2))]",
         " *",
         " * Functions (inputs -> outputs, element counts):",
     ]

@@ -74,6 +74,15 @@ class Kinematics:
             out_b.append(sp.atan2(e[1], e[0]))
         return sp.Matrix(out_a + out_b)
 
+    def assembly_side(self):
+        """For two legs: cross(B2 - B1, O - B1) at the pose ik gives for xe. Its sign is the
+        assembly mode (+: O left of the line B1 -> B2); fk returns the side ``fk_branch``. Zero on
+        the parallel singularity (distal links aligned), which separates the two modes."""
+        sym, uv = self.sym, self.unit_vectors_from_xe()
+        B = [self.A_base[i] + self.la[i] * sp.Matrix(uv[sym.qa[i]]) for i in range(2)]
+        d, e = B[1] - B[0], sym.xe - B[0]
+        return d[0] * e[1] - d[1] * e[0]
+
     def elbows(self):
         """Elbow points B_i = A_i + la_i u(qa_i), from the active angles only."""
         return [self.A_base[i] + self.la[i] * _u(self.sym.qa[i]) for i in range(self.spec.n_legs)]

@@ -53,20 +53,41 @@ class Derivation:
                      in self.kin.unit_vectors_from_qa(O).items()})
         return Converter(symbols, trig)
 
-    def singularity_measure(self, conv):
-        """min_i |sin(qb_i - qa_i)|: zero where a leg's tip Jacobian is singular."""
-        n = self.spec.n_legs
+    def singularity_measures(self, conv):
+        """[type I, type II] singularity measures at the pose, each 0 at its singularity:
+
+        * type I (a leg): min_i |sin(qb_i - qa_i)|, zero where leg i's tip Jacobian is singular
+          (its links aligned);
+        * type II (the actuation, parallel): the smallest singular value of S with its rows
+          normalised, divided by its largest possible value sqrt(n/2). Row i of S is
+          u_bi^T / (la_i sin(qb_i - qa_i)) (eq. 8): normalising the rows removes the legs'
+          type I factors and leaves U = [u_b1; ..; u_bn], the distal links' directions. U loses
+          rank -- S^T tau cannot produce every task force -- exactly when all distal links are
+          parallel. With U^T U = n/2 I + 1/2 [[Re z, Im z], [Im z, -Re z]], z = sum_i e^(2 i qb_i),
+          sigma_min(U)^2 = (n - |z|)/2, so the measure is sqrt(1 - |z|/n) in [0, 1]: 1 for
+          isotropic directions, sqrt(1 - |cos(qb_1 - qb_2)|) for a five-bar.
+
+        NaN propagates through both (a pose out of reach stays NaN).
+        """
+        n, sym = self.spec.n_legs, self.sym
         values = [ca.fabs(conv(self.kin.sin_ab(i))) for i in range(n)]
-        out = values[0]
+        type1 = values[0]
         for v in values[1:]:  # min(a, b) = (a + b - |a - b|) / 2: unlike C's fmin, keeps NaN
-            out = (out + v - ca.fabs(out - v)) / 2
-        return out
+            type1 = (type1 + v - ca.fabs(type1 - v)) / 2
+        re, im = 0, 0
+        for i in range(n):
+            c, s = conv(sp.cos(sym.qb[i])), conv(sp.sin(sym.qb[i]))
+            re, im = re + (c * c - s * s), im + 2 * c * s      # e^(2 i qb) = (c^2 - s^2, 2 c s)
+        a = 1 - ca.sqrt(re * re + im * im) * (1.0 / n)         # multiplications, not divisions
+        type2 = ca.sqrt((a + ca.fabs(a)) * 0.5)                 # max(a, 0), keeping NaN
+        return ca.vertcat(type1, type2)
 
 
 def model_functions(d, prefix):
     """The model-level functions of the runtime API, each named and with named inputs/outputs.
 
-    Matrices are returned flattened row-major. ``sing`` is the singularity measure at the pose.
+    Matrices are returned flattened row-major. ``sing`` holds the two singularity measures at the
+    pose, [type I (legs), type II (actuation)] (:meth:`Derivation.singularity_measures`).
     """
     n, p = d.spec.n_legs, len(d.spec.param_names)
     sym, kin, dyn = d.sym, d.kin, d.dyn
@@ -80,14 +101,18 @@ def model_functions(d, prefix):
                              [k for k, _ in ins], [k for k, _ in outs]))
 
     cv = Converter(dict(zip(sym.xe, ca.vertsplit(xe))))
-    add("ik", [("xe", xe)], [("q", cv(kin.ik()))])
+    q_ik = cv(kin.ik())
+    if n == 2:  # five-bar: refuse (NaN) a pose of the other assembly mode, which fk cannot reach
+        q_ik = ca.if_else(cv(kin.assembly_side()) * d.spec.fk_branch > 0, q_ik, ca.DM.nan(2 * n))
+    add("ik", [("xe", xe)], [("q", q_ik)])
     cqa = d.converter_qa(qa)
     add("fk", [("qa", qa)], [("xe", cqa(kin.fk()))])
     cq = d.converter_q(q)
     add("H", [("q", q)], [("H", cq(kin.H))])                                   # eq. 5
     add("A", [("q", q)], [("A", cq(kin.A))])                                   # eq. 6
     add("singularity", [("q", q)], [("sin_ab", cq(sp.Matrix([kin.sin_ab(i) for i in range(n)])))])
-    sing = d.singularity_measure(cq)
+    sing = d.singularity_measures(cq)
+    add("singularity_measures", [("q", q)], [("sing", sing)])
     add("W", [("q", q)], [("W", cq(kin.W)), ("sing", sing)])                   # eq. 7
     add("S", [("q", q)], [("S", cq(kin.S)), ("sing", sing)])                   # eq. 8
     cqx = d.converter_q(q, [(sym.xed, xed)])
@@ -106,5 +131,5 @@ def model_functions(d, prefix):
         [("Y", cy(dyn.Y)), ("sing", sing)])                                     # eq. 13
     cfd = d.converter_xe(xe, [(sym.xed, xed), (sym.tau_a, tau_a), (sym.theta, theta)])
     add("forward_dynamics", [("xe", xe), ("xed", xed), ("tau_a", tau_a), ("theta", theta)],
-        [("xedd", cfd(dyn.xedd)), ("sing", d.singularity_measure(cfd))])        # eqs. 10-12
+        [("xedd", cfd(dyn.xedd)), ("sing", d.singularity_measures(cfd))])       # eqs. 10-12
     return f

@@ -95,7 +95,7 @@ def sample_pose(rng, lo=0.2, hi=1.0, box=((0.17, 0.32), (0.18, 0.34))):
 
 def c_step(m, law, state, qa, xd, xd_dot, xd_ddot, params):
     """The generated <law>_step: (tau_a, state_next, status, diag)."""
-    tau, sn, st, dg = np.empty(N_LEGS), np.empty(len(state)), np.empty(1), np.empty(9)
+    tau, sn, st, dg = np.empty(N_LEGS), np.empty(len(state)), np.empty(1), np.empty(10)
     m.function(f"{law}_step")(*(np.ascontiguousarray(a, dtype=float) for a in
                                 (state, qa, xd, xd_dot, xd_ddot, params)), tau, sn, st, dg)
     return tau, sn, int(st[0]), dg
@@ -146,6 +146,7 @@ def _random_step_case(m, rng, law, xe=None, tau_max=1e3):
     xd = xe + rng.normal(0.0, 2e-3, 2)
     xd_dot, xd_ddot = rng.normal(0.0, 0.3, 2), rng.normal(0.0, 5.0, 2)
     common = dict(T=T, vel_alpha=a, sing_threshold=m.singularity_threshold,
+                  parallel_sing_threshold=m.parallel_singularity_threshold,
                   tau_max=np.full(N_LEGS, tau_max))
     if law == "na":
         params = L["na_params"].pack(Kd=rng.uniform(50, 300, 2), Q=rng.uniform(50, 400, 2),

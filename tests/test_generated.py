@@ -427,7 +427,7 @@ def test_changed_formulation_is_refused(tmp_path, old, new):
 
 
 @pytest.mark.parametrize("old, new, check", [
-    ("singularity_threshold = 0.1 ", "singularity_threshold = 0.15 ",
+    ("\nsingularity_threshold = 0.1 ", "\nsingularity_threshold = 0.15 ",
      lambda m: m.singularity_threshold == 0.15),
     ("fc    = [0.4976, 0.4570, 0.3006]", "fc    = [0.5, 0.4570, 0.3006]",
      lambda m: m.theta_nominal[12] == 0.5),

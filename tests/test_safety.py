@@ -349,7 +349,7 @@ def test_projection_is_the_identity_inside_the_physical_set():
 
 
 def _c_step(name, state, qa, xd, xd_dot, xd_ddot, params):
-    tau, sn, st, dg = np.empty(N), np.empty(len(state)), np.empty(1), np.empty(9)
+    tau, sn, st, dg = np.empty(N), np.empty(len(state)), np.empty(1), np.empty(10)
     M.function(f"{name}_step")(*(np.ascontiguousarray(a, dtype=float) for a in
                                  (state, qa, xd, xd_dot, xd_ddot, params)), tau, sn, st, dg)
     return tau, sn, int(st[0]), dg
@@ -367,7 +367,8 @@ def _projection_case(rng):
     state = lays["ctrl_state"].pack(xe_prev=xe_prev, v=rng.normal(0, 0.2, 2), theta_hat=theta)
     params = lays["na_params"].pack(Kd=[195.0, 195.0], Q=[280.0, 280.0],
                                     Gamma=rng.uniform(0, 0.02, P), T=0.002, vel_alpha=1.0,
-                                    sing_threshold=THR, tau_max=np.full(N, 1e3))
+                                    sing_threshold=THR, parallel_sing_threshold=THR,
+                                    tau_max=np.full(N, 1e3))
     qa = rc.measure(G, XE, 0.0)
     xd = XE + rng.normal(0, 2e-3, 2)
     return state, qa, xd, rng.normal(0, 0.3, 2), rng.normal(0, 5, 2), params

@@ -63,7 +63,8 @@ static const double GAMMA[N_THETA] = {5e-4, 5e-4, 5e-4, 5e-4, 5e-4, 5e-4, 5e-4, 
 static const double SAMPLE_PERIOD = 0.002;          /* s */
 static const double VELOCITY_FILTER_HZ = 0.0;       /* 0: plain backward difference */
 static const double ENCODER_COUNTS_PER_REV = 131072.0;
-static const double SING_THRESHOLD = 0.1;
+static const double SING_THRESHOLD = 0.1;           /* type I (legs) */
+static const double PARALLEL_SING_THRESHOLD = 0.1;  /* type II (actuation) */
 static const double TAU_MAX[N_LEGS] = {30.0, 30.0, 30.0}; /* N m */
 static const int RK4_SUBSTEPS = 3;                  /* manifest.json "rk4_substeps" */
 
@@ -86,9 +87,10 @@ static const double MOVE_V = 0.5, MOVE_A = 10.0, MOVE_J = 400.0; /* m/s, m/s^2, 
 /* Layout sizes (manifest.json "layouts") */
 enum {
     STATE_SIZE = 2 + 2 + N_THETA,              /* ctrl_state: xe_prev, v, theta_hat */
-    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 3 + N_LEGS, /* Kd, Q, Gamma, T, vel_alpha,
-                                                      sing_threshold, tau_max */
-    DIAG_SIZE = 9,                             /* diag: xe, v, e, edot, sing */
+    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 4 + N_LEGS, /* Kd, Q, Gamma, T, vel_alpha,
+                                                      sing_threshold, parallel_sing_threshold,
+                                                      tau_max */
+    DIAG_SIZE = 10,                            /* diag: xe, v, e, edot, sing (type I, II) */
     PLANT_SIZE = 6 * N_LEGS + 3                /* alpha beta gamma fv fc fs, vs, eps, step */
 };
 
@@ -363,6 +365,7 @@ int main(int argc, char **argv)
     /* velocity estimate v += a ((xe - xe_prev) / T - v): first-order low-pass, a = 1: none */
     *pp++ = VELOCITY_FILTER_HZ > 0.0 ? T / (T + 1.0 / (2.0 * PI * VELOCITY_FILTER_HZ)) : 1.0;
     *pp++ = SING_THRESHOLD;
+    *pp++ = PARALLEL_SING_THRESHOLD;
     for (int i = 0; i < N_LEGS; i++) *pp++ = TAU_MAX[i];
 
     /* --- plant truth: plant layout, payload booked into leg PAYLOAD_LEG --------------- */

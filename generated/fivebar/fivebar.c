@@ -47,6 +47,7 @@ extern "C" {
 #define casadi_f21 CASADI_PREFIX(f21)
 #define casadi_f22 CASADI_PREFIX(f22)
 #define casadi_f23 CASADI_PREFIX(f23)
+#define casadi_f24 CASADI_PREFIX(f24)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
 #define casadi_f5 CASADI_PREFIX(f5)
@@ -63,8 +64,6 @@ extern "C" {
 #define casadi_s11 CASADI_PREFIX(s11)
 #define casadi_s12 CASADI_PREFIX(s12)
 #define casadi_s13 CASADI_PREFIX(s13)
-#define casadi_s14 CASADI_PREFIX(s14)
-#define casadi_s15 CASADI_PREFIX(s15)
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
@@ -92,6 +91,10 @@ extern "C" {
 #endif
 
 casadi_real casadi_sq(casadi_real x) { return x*x;}
+
+#ifndef casadi_nan
+  #define casadi_nan NAN
+#endif
 
 casadi_real casadi_fabs(casadi_real x) {
 /* Pre-c99 compatibility */
@@ -147,71 +150,122 @@ CASADI_SYMBOL_EXPORT int fivebar_casadi_real_size(void) { return (int) sizeof(ca
 static const casadi_int casadi_s0[3] = {2, 1, 1};
 static const casadi_int casadi_s1[3] = {4, 1, 1};
 static const casadi_int casadi_s2[3] = {8, 1, 1};
-static const casadi_int casadi_s3[3] = {1, 1, 1};
-static const casadi_int casadi_s4[3] = {10, 1, 1};
-static const casadi_int casadi_s5[3] = {16, 1, 1};
-static const casadi_int casadi_s6[3] = {20, 1, 1};
-static const casadi_int casadi_s7[3] = {14, 1, 1};
-static const casadi_int casadi_s8[3] = {19, 1, 1};
-static const casadi_int casadi_s9[3] = {9, 1, 1};
-static const casadi_int casadi_s10[3] = {15, 1, 1};
-static const casadi_int casadi_s11[3] = {18, 1, 1};
-static const casadi_int casadi_s12[3] = {6, 1, 1};
-static const casadi_int casadi_s13[3] = {34, 1, 1};
-static const casadi_int casadi_s14[3] = {17, 1, 1};
-static const casadi_int casadi_s15[3] = {24, 1, 1};
+static const casadi_int casadi_s3[3] = {10, 1, 1};
+static const casadi_int casadi_s4[3] = {16, 1, 1};
+static const casadi_int casadi_s5[3] = {20, 1, 1};
+static const casadi_int casadi_s6[3] = {14, 1, 1};
+static const casadi_int casadi_s7[3] = {1, 1, 1};
+static const casadi_int casadi_s8[3] = {15, 1, 1};
+static const casadi_int casadi_s9[3] = {18, 1, 1};
+static const casadi_int casadi_s10[3] = {6, 1, 1};
+static const casadi_int casadi_s11[3] = {35, 1, 1};
+static const casadi_int casadi_s12[3] = {17, 1, 1};
+static const casadi_int casadi_s13[3] = {25, 1, 1};
 
-static const casadi_real casadi_zeros[34] = 
+static const casadi_real casadi_zeros[35] = 
   {0.};
 
 /* fivebar_ik:(xe[2])->(q[4]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
-  a0=-2.5000000000000000e-01;
-  a1=arg[0]? arg[0][1] : 0;
-  a0=(a0+a1);
-  a2=arg[0]? arg[0][0] : 0;
-  a3=atan2(a0,a2);
-  a4=2.0491803278688523e+00;
-  a5=casadi_sq(a2);
-  a6=casadi_sq(a0);
-  a5=(a5+a6);
-  a5=sqrt(a5);
-  a5=(a4*a5);
-  a5=acos(a5);
-  a6=(a3-a5);
-  if (res[0]!=0) res[0][0]=a6;
-  a6=-4.3300000000000000e-01;
-  a6=(a6+a2);
-  a7=atan2(a1,a6);
-  a8=casadi_sq(a1);
-  a9=casadi_sq(a6);
-  a8=(a8+a9);
-  a8=sqrt(a8);
-  a4=(a4*a8);
-  a4=acos(a4);
-  a8=(a7-a4);
-  if (res[0]!=0) res[0][1]=a8;
-  a8=2.4399999999999999e-01;
-  a5=(a5-a3);
-  a3=sin(a5);
-  a3=(a8*a3);
-  a0=(a0+a3);
-  a3=-2.4399999999999999e-01;
-  a5=cos(a5);
-  a5=(a3*a5);
-  a2=(a2+a5);
-  a0=atan2(a0,a2);
-  if (res[0]!=0) res[0][2]=a0;
-  a4=(a4-a7);
-  a7=sin(a4);
-  a8=(a8*a7);
-  a1=(a1+a8);
-  a4=cos(a4);
-  a3=(a3*a4);
-  a6=(a6+a3);
-  a1=atan2(a1,a6);
-  if (res[0]!=0) res[0][3]=a1;
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19;
+  a00=0.;
+  a01=-1.2500000000000000e-01;
+  a02=5.0000000000000000e-01;
+  a03=arg[0]? arg[0][1] : 0;
+  a04=(a02*a03);
+  a04=(a01+a04);
+  a05=2.4399999999999999e-01;
+  a06=arg[0]? arg[0][0] : 0;
+  a07=(a05*a06);
+  a08=casadi_sq(a06);
+  a09=-2.5000000000000000e-01;
+  a09=(a09+a03);
+  a10=casadi_sq(a09);
+  a11=(a08+a10);
+  a11=sqrt(a11);
+  a07=(a07/a11);
+  a12=1.;
+  a13=-4.1991400161246979e+00;
+  a08=(a13*a08);
+  a08=(a12+a08);
+  a10=(a13*a10);
+  a08=(a08+a10);
+  a08=sqrt(a08);
+  a07=(a07*a08);
+  a04=(a04+a07);
+  a10=2.1650000000000000e-01;
+  a14=-2.4399999999999999e-01;
+  a15=(a14/a11);
+  a15=(a15*a08);
+  a15=(a15*a09);
+  a10=(a10+a15);
+  a08=(a05*a03);
+  a16=casadi_sq(a03);
+  a17=-4.3300000000000000e-01;
+  a17=(a17+a06);
+  a18=casadi_sq(a17);
+  a19=(a16+a18);
+  a19=sqrt(a19);
+  a08=(a08/a19);
+  a16=(a13*a16);
+  a12=(a12+a16);
+  a13=(a13*a18);
+  a12=(a12+a13);
+  a12=sqrt(a12);
+  a08=(a08*a12);
+  a10=(a10+a08);
+  a04=(a04*a10);
+  a02=(a02*a06);
+  a02=(a02+a15);
+  a15=(a14/a19);
+  a15=(a15*a12);
+  a15=(a15*a17);
+  a01=(a01+a15);
+  a01=(a01+a07);
+  a02=(a02*a01);
+  a04=(a04-a02);
+  a00=(a00<a04);
+  a04=atan2(a09,a06);
+  a02=2.0491803278688523e+00;
+  a11=(a02*a11);
+  a11=acos(a11);
+  a01=(a04-a11);
+  a01=(a00?a01:0);
+  a07=(!a00);
+  a15=casadi_nan;
+  a07=(a07?a15:0);
+  a01=(a01+a07);
+  if (res[0]!=0) res[0][0]=a01;
+  a01=atan2(a03,a17);
+  a02=(a02*a19);
+  a02=acos(a02);
+  a19=(a01-a02);
+  a19=(a00?a19:0);
+  a19=(a19+a07);
+  if (res[0]!=0) res[0][1]=a19;
+  a11=(a11-a04);
+  a04=sin(a11);
+  a04=(a05*a04);
+  a09=(a09+a04);
+  a11=cos(a11);
+  a11=(a14*a11);
+  a06=(a06+a11);
+  a09=atan2(a09,a06);
+  a09=(a00?a09:0);
+  a09=(a09+a07);
+  if (res[0]!=0) res[0][2]=a09;
+  a02=(a02-a01);
+  a01=sin(a02);
+  a05=(a05*a01);
+  a03=(a03+a05);
+  a02=cos(a02);
+  a14=(a14*a02);
+  a17=(a17+a14);
+  a03=atan2(a03,a17);
+  a00=(a00?a03:0);
+  a00=(a00+a07);
+  if (res[0]!=0) res[0][3]=a00;
   return 0;
 }
 
@@ -729,8 +783,137 @@ CASADI_SYMBOL_EXPORT int fivebar_singularity_work_bytes(casadi_int *sz_arg, casa
   return 0;
 }
 
-/* fivebar_W:(q[4])->(W[8],sing) */
+/* fivebar_singularity_measures:(q[4])->(sing[2]) */
 static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
+  a0=arg[0]? arg[0][0] : 0;
+  a1=sin(a0);
+  a2=arg[0]? arg[0][2] : 0;
+  a3=cos(a2);
+  a1=(a1*a3);
+  a0=cos(a0);
+  a2=sin(a2);
+  a0=(a0*a2);
+  a1=(a1-a0);
+  a1=casadi_fabs(a1);
+  a0=arg[0]? arg[0][1] : 0;
+  a4=sin(a0);
+  a5=arg[0]? arg[0][3] : 0;
+  a6=cos(a5);
+  a4=(a4*a6);
+  a0=cos(a0);
+  a5=sin(a5);
+  a0=(a0*a5);
+  a4=(a4-a0);
+  a4=casadi_fabs(a4);
+  a0=(a1+a4);
+  a1=(a1-a4);
+  a1=casadi_fabs(a1);
+  a0=(a0-a1);
+  a1=2.;
+  a0=(a0/a1);
+  if (res[0]!=0) res[0][0]=a0;
+  a0=5.0000000000000000e-01;
+  a1=1.;
+  a4=casadi_sq(a3);
+  a7=casadi_sq(a2);
+  a4=(a4-a7);
+  a7=casadi_sq(a6);
+  a8=casadi_sq(a5);
+  a7=(a7-a8);
+  a4=(a4+a7);
+  a4=casadi_sq(a4);
+  a3=(2.*a3);
+  a3=(a3*a2);
+  a6=(2.*a6);
+  a6=(a6*a5);
+  a3=(a3+a6);
+  a3=casadi_sq(a3);
+  a4=(a4+a3);
+  a4=sqrt(a4);
+  a4=(a0*a4);
+  a1=(a1-a4);
+  a4=casadi_fabs(a1);
+  a1=(a1+a4);
+  a0=(a0*a1);
+  a0=sqrt(a0);
+  if (res[0]!=0) res[0][1]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_singularity_measures(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f5(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_singularity_measures_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_singularity_measures_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_singularity_measures_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_singularity_measures_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_singularity_measures_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_singularity_measures_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_singularity_measures_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_singularity_measures_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_singularity_measures_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_singularity_measures_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_singularity_measures_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_singularity_measures_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_singularity_measures_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_W:(q[4])->(W[8],sing[2]) */
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=2.4399999999999999e-01;
   a01=-5.9535999999999999e-02;
@@ -793,11 +976,36 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a06=2.;
   a10=(a10/a06);
   if (res[1]!=0) res[1][0]=a10;
+  a10=5.0000000000000000e-01;
+  a06=1.;
+  a11=casadi_sq(a03);
+  a05=casadi_sq(a02);
+  a11=(a11-a05);
+  a05=casadi_sq(a09);
+  a00=casadi_sq(a08);
+  a05=(a05-a00);
+  a11=(a11+a05);
+  a11=casadi_sq(a11);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a09=(2.*a09);
+  a09=(a09*a08);
+  a03=(a03+a09);
+  a03=casadi_sq(a03);
+  a11=(a11+a03);
+  a11=sqrt(a11);
+  a11=(a10*a11);
+  a06=(a06-a11);
+  a11=casadi_fabs(a06);
+  a06=(a06+a11);
+  a10=(a10*a06);
+  a10=sqrt(a10);
+  if (res[1]!=0) res[1][1]=a10;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_W(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_W_checkout(void) {
@@ -848,7 +1056,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_W_sparsity_in(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_W_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s2;
-    case 1: return casadi_s3;
+    case 1: return casadi_s0;
     default: return 0;
   }
 }
@@ -869,8 +1077,8 @@ CASADI_SYMBOL_EXPORT int fivebar_W_work_bytes(casadi_int *sz_arg, casadi_int* sz
   return 0;
 }
 
-/* fivebar_S:(q[4])->(S[4],sing) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_S:(q[4])->(S[4],sing[2]) */
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=2.4399999999999999e-01;
   a01=-5.9535999999999999e-02;
@@ -922,11 +1130,36 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a06=2.;
   a09=(a09/a06);
   if (res[1]!=0) res[1][0]=a09;
+  a09=5.0000000000000000e-01;
+  a06=1.;
+  a10=casadi_sq(a03);
+  a05=casadi_sq(a02);
+  a10=(a10-a05);
+  a05=casadi_sq(a08);
+  a00=casadi_sq(a04);
+  a05=(a05-a00);
+  a10=(a10+a05);
+  a10=casadi_sq(a10);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a08=(2.*a08);
+  a08=(a08*a04);
+  a03=(a03+a08);
+  a03=casadi_sq(a03);
+  a10=(a10+a03);
+  a10=sqrt(a10);
+  a10=(a09*a10);
+  a06=(a06-a10);
+  a10=casadi_fabs(a06);
+  a06=(a06+a10);
+  a09=(a09*a06);
+  a09=sqrt(a09);
+  if (res[1]!=0) res[1][1]=a09;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_S(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_S_checkout(void) {
@@ -977,7 +1210,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_S_sparsity_in(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_S_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s1;
-    case 1: return casadi_s3;
+    case 1: return casadi_s0;
     default: return 0;
   }
 }
@@ -998,8 +1231,8 @@ CASADI_SYMBOL_EXPORT int fivebar_S_work_bytes(casadi_int *sz_arg, casadi_int* sz
   return 0;
 }
 
-/* fivebar_Wdot:(q[4],xed[2])->(Wdot[8],sing) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_Wdot:(q[4],xed[2])->(Wdot[8],sing[2]) */
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -1166,11 +1399,36 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
   a06=2.;
   a22=(a22/a06);
   if (res[1]!=0) res[1][0]=a22;
+  a22=5.0000000000000000e-01;
+  a06=1.;
+  a23=casadi_sq(a03);
+  a05=casadi_sq(a02);
+  a23=(a23-a05);
+  a05=casadi_sq(a13);
+  a25=casadi_sq(a10);
+  a05=(a05-a25);
+  a23=(a23+a05);
+  a23=casadi_sq(a23);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a13=(2.*a13);
+  a13=(a13*a10);
+  a03=(a03+a13);
+  a03=casadi_sq(a03);
+  a23=(a23+a03);
+  a23=sqrt(a23);
+  a23=(a22*a23);
+  a06=(a06-a23);
+  a23=casadi_fabs(a06);
+  a06=(a06+a23);
+  a22=(a22*a06);
+  a22=sqrt(a22);
+  if (res[1]!=0) res[1][1]=a22;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Wdot(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Wdot_checkout(void) {
@@ -1223,7 +1481,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Wdot_sparsity_in(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Wdot_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s2;
-    case 1: return casadi_s3;
+    case 1: return casadi_s0;
     default: return 0;
   }
 }
@@ -1245,7 +1503,7 @@ CASADI_SYMBOL_EXPORT int fivebar_Wdot_work_bytes(casadi_int *sz_arg, casadi_int*
 }
 
 /* fivebar_M:(q[4],theta[10])->(M[16]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6;
   a0=arg[1]? arg[1][0] : 0;
   if (res[0]!=0) res[0][0]=a0;
@@ -1294,7 +1552,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_M(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_M_checkout(void) {
@@ -1338,14 +1596,14 @@ CASADI_SYMBOL_EXPORT const char* fivebar_M_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_M_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s1;
-    case 1: return casadi_s4;
+    case 1: return casadi_s3;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_M_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s4;
     default: return 0;
   }
 }
@@ -1367,7 +1625,7 @@ CASADI_SYMBOL_EXPORT int fivebar_M_work_bytes(casadi_int *sz_arg, casadi_int* sz
 }
 
 /* fivebar_C:(q[4],qd[4],theta[10])->(C[16]) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -1424,7 +1682,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_C(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_C_checkout(void) {
@@ -1470,14 +1728,14 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_C_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s1;
     case 1: return casadi_s1;
-    case 2: return casadi_s4;
+    case 2: return casadi_s3;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_C_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s5;
+    case 0: return casadi_s4;
     default: return 0;
   }
 }
@@ -1498,8 +1756,8 @@ CASADI_SYMBOL_EXPORT int fivebar_C_work_bytes(casadi_int *sz_arg, casadi_int* sz
   return 0;
 }
 
-/* fivebar_Me:(q[4],theta[10])->(Me[4],sing) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_Me:(q[4],theta[10])->(Me[4],sing[2]) */
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28;
@@ -1648,11 +1906,36 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a06=2.;
   a18=(a18/a06);
   if (res[1]!=0) res[1][0]=a18;
+  a18=5.0000000000000000e-01;
+  a06=1.;
+  a19=casadi_sq(a03);
+  a05=casadi_sq(a02);
+  a19=(a19-a05);
+  a05=casadi_sq(a17);
+  a08=casadi_sq(a16);
+  a05=(a05-a08);
+  a19=(a19+a05);
+  a19=casadi_sq(a19);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a17=(2.*a17);
+  a17=(a17*a16);
+  a03=(a03+a17);
+  a03=casadi_sq(a03);
+  a19=(a19+a03);
+  a19=sqrt(a19);
+  a19=(a18*a19);
+  a06=(a06-a19);
+  a19=casadi_fabs(a06);
+  a06=(a06+a19);
+  a18=(a18*a06);
+  a18=sqrt(a18);
+  if (res[1]!=0) res[1][1]=a18;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Me(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f11(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Me_checkout(void) {
@@ -1697,7 +1980,7 @@ CASADI_SYMBOL_EXPORT const char* fivebar_Me_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Me_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s1;
-    case 1: return casadi_s4;
+    case 1: return casadi_s3;
     default: return 0;
   }
 }
@@ -1705,7 +1988,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Me_sparsity_in(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Me_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s1;
-    case 1: return casadi_s3;
+    case 1: return casadi_s0;
     default: return 0;
   }
 }
@@ -1726,8 +2009,8 @@ CASADI_SYMBOL_EXPORT int fivebar_Me_work_bytes(casadi_int *sz_arg, casadi_int* s
   return 0;
 }
 
-/* fivebar_Ce:(q[4],xed[2],theta[10])->(Ce[4],sing) */
-static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_Ce:(q[4],xed[2],theta[10])->(Ce[4],sing[2]) */
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -1965,8 +2248,8 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a08=(a08*a29);
   a35=(a35+a08);
   a12=(a12*a35);
-  a03=(a12*a03);
-  a05=(a05+a03);
+  a35=(a12*a03);
+  a05=(a05+a35);
   a13=(a13*a41);
   a01=(a01*a10);
   a01=(a01*a40);
@@ -1975,8 +2258,8 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a00=(a00*a43);
   a13=(a13+a00);
   a38=(a38*a13);
-  a31=(a38*a31);
-  a05=(a05+a31);
+  a13=(a38*a31);
+  a05=(a05+a13);
   if (res[0]!=0) res[0][1]=a05;
   a24=(a24*a06);
   a20=(a20*a34);
@@ -2003,11 +2286,36 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a29=2.;
   a09=(a09/a29);
   if (res[1]!=0) res[1][0]=a09;
+  a09=5.0000000000000000e-01;
+  a29=1.;
+  a43=casadi_sq(a03);
+  a38=casadi_sq(a02);
+  a43=(a43-a38);
+  a38=casadi_sq(a31);
+  a12=casadi_sq(a30);
+  a38=(a38-a12);
+  a43=(a43+a38);
+  a43=casadi_sq(a43);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a31=(2.*a31);
+  a31=(a31*a30);
+  a03=(a03+a31);
+  a03=casadi_sq(a03);
+  a43=(a43+a03);
+  a43=sqrt(a43);
+  a43=(a09*a43);
+  a29=(a29-a43);
+  a43=casadi_fabs(a29);
+  a29=(a29+a43);
+  a09=(a09*a29);
+  a09=sqrt(a09);
+  if (res[1]!=0) res[1][1]=a09;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Ce(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f11(arg, res, iw, w, mem);
+  return casadi_f12(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Ce_checkout(void) {
@@ -2054,7 +2362,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Ce_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s1;
     case 1: return casadi_s0;
-    case 2: return casadi_s4;
+    case 2: return casadi_s3;
     default: return 0;
   }
 }
@@ -2062,7 +2370,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Ce_sparsity_in(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Ce_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s1;
-    case 1: return casadi_s3;
+    case 1: return casadi_s0;
     default: return 0;
   }
 }
@@ -2083,8 +2391,8 @@ CASADI_SYMBOL_EXPORT int fivebar_Ce_work_bytes(casadi_int *sz_arg, casadi_int* s
   return 0;
 }
 
-/* fivebar_StF:(q[4],xed[2],theta[10])->(StF[2],sing) */
-static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_StF:(q[4],xed[2],theta[10])->(StF[2],sing[2]) */
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17;
   a00=2.4399999999999999e-01;
@@ -2145,14 +2453,14 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a13=(a13*a15);
   a11=(a11+a13);
   a10=(a10<=a11);
-  a14=(a10?a14:0);
+  a13=(a10?a14:0);
   a10=(!a10);
   a10=(a10?a16:0);
-  a14=(a14+a10);
-  a07=(a07*a14);
-  a14=arg[2]? arg[2][7] : 0;
-  a14=(a14*a11);
-  a07=(a07+a14);
+  a13=(a13+a10);
+  a07=(a07*a13);
+  a13=arg[2]? arg[2][7] : 0;
+  a13=(a13*a11);
+  a07=(a07+a13);
   a00=(a00*a07);
   a07=(a00*a12);
   a09=(a09+a07);
@@ -2176,11 +2484,35 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a06=2.;
   a04=(a04/a06);
   if (res[1]!=0) res[1][0]=a04;
+  a04=5.0000000000000000e-01;
+  a06=casadi_sq(a03);
+  a17=casadi_sq(a02);
+  a06=(a06-a17);
+  a17=casadi_sq(a12);
+  a05=casadi_sq(a15);
+  a17=(a17-a05);
+  a06=(a06+a17);
+  a06=casadi_sq(a06);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a12=(2.*a12);
+  a12=(a12*a15);
+  a03=(a03+a12);
+  a03=casadi_sq(a03);
+  a06=(a06+a03);
+  a06=sqrt(a06);
+  a06=(a04*a06);
+  a14=(a14-a06);
+  a06=casadi_fabs(a14);
+  a14=(a14+a06);
+  a04=(a04*a14);
+  a04=sqrt(a04);
+  if (res[1]!=0) res[1][1]=a04;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_StF(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f12(arg, res, iw, w, mem);
+  return casadi_f13(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_StF_checkout(void) {
@@ -2227,7 +2559,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_StF_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s1;
     case 1: return casadi_s0;
-    case 2: return casadi_s4;
+    case 2: return casadi_s3;
     default: return 0;
   }
 }
@@ -2235,7 +2567,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_StF_sparsity_in(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_StF_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s3;
+    case 1: return casadi_s0;
     default: return 0;
   }
 }
@@ -2256,13 +2588,13 @@ CASADI_SYMBOL_EXPORT int fivebar_StF_work_bytes(casadi_int *sz_arg, casadi_int* 
   return 0;
 }
 
-/* fivebar_Y:(q[4],xed[2],xrd[2],xrdd[2])->(Y[20],sing) */
-static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_Y:(q[4],xed[2],xrd[2],xrdd[2])->(Y[20],sing[2]) */
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
   casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
-  casadi_real a48, a49, a50, a51, a52, a53, a54, a55;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57;
   a00=5.9535999999999999e-02;
   a01=arg[3]? arg[3][0] : 0;
   a02=(a00*a01);
@@ -2281,428 +2613,448 @@ static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a10=casadi_sq(a06);
   a11=(a02/a10);
   a12=casadi_sq(a05);
-  a12=(a11*a12);
-  a13=2.4399999999999999e-01;
-  a14=arg[2]? arg[2][0] : 0;
-  a15=(a13*a14);
-  a16=(a15/a06);
-  a17=-2.4399999999999999e-01;
-  a18=(a17/a06);
-  a19=(a18*a04);
-  a20=(a13/a10);
-  a21=(a03*a07);
-  a21=(a21*a05);
-  a22=(a03*a08);
-  a22=(a22*a04);
-  a21=(a21+a22);
-  a22=(a20*a21);
-  a23=(a22*a05);
-  a19=(a19+a23);
-  a23=arg[1]? arg[1][0] : 0;
-  a24=(a17*a23);
-  a25=(a24/a06);
-  a25=(a25*a07);
-  a26=arg[1]? arg[1][1] : 0;
-  a27=(a17*a26);
-  a28=(a27/a06);
-  a28=(a28*a08);
-  a25=(a25+a28);
-  a19=(a19*a25);
+  a13=(a11*a12);
+  a14=2.4399999999999999e-01;
+  a15=arg[2]? arg[2][0] : 0;
+  a16=(a14*a15);
+  a17=(a16/a06);
+  a18=-2.4399999999999999e-01;
+  a19=(a18/a06);
+  a20=(a19*a04);
+  a21=(a14/a10);
+  a22=(a03*a07);
+  a22=(a22*a05);
+  a23=(a03*a08);
+  a23=(a23*a04);
+  a22=(a22+a23);
+  a23=(a21*a22);
+  a24=(a23*a05);
+  a20=(a20+a24);
+  a24=arg[1]? arg[1][0] : 0;
+  a25=(a18*a24);
+  a26=(a25/a06);
+  a26=(a26*a07);
+  a27=arg[1]? arg[1][1] : 0;
+  a28=(a18*a27);
+  a29=(a28/a06);
+  a29=(a29*a08);
+  a26=(a26+a29);
+  a20=(a20*a26);
   a09=(a09*a05);
-  a28=(a00*a08);
-  a28=(a28*a04);
-  a09=(a09+a28);
-  a20=(a20*a09);
-  a23=(a13*a23);
-  a28=(a23/a06);
-  a28=(a28*a05);
-  a26=(a13*a26);
-  a29=(a26/a06);
+  a29=(a00*a08);
   a29=(a29*a04);
-  a28=(a28+a29);
-  a20=(a20*a28);
-  a29=(a20*a05);
-  a19=(a19+a29);
-  a16=(a16*a19);
-  a29=(a16*a05);
-  a12=(a12+a29);
-  a29=arg[2]? arg[2][1] : 0;
-  a30=(a13*a29);
-  a31=(a30/a06);
-  a32=(a13/a06);
-  a33=(a32*a05);
-  a22=(a22*a04);
-  a22=(a33+a22);
-  a22=(a22*a25);
-  a20=(a20*a04);
-  a22=(a22+a20);
-  a31=(a31*a22);
-  a20=(a31*a05);
-  a12=(a12+a20);
-  a20=arg[3]? arg[3][1] : 0;
-  a34=(a00*a20);
-  a35=(a34/a10);
-  a36=(a35*a05);
-  a36=(a36*a04);
-  a12=(a12+a36);
-  if (res[0]!=0) res[0][0]=a12;
-  a12=arg[0]? arg[0][3] : 0;
-  a36=cos(a12);
-  a37=(a03*a36);
-  a38=arg[0]? arg[0][1] : 0;
-  a39=sin(a38);
-  a37=(a37*a39);
-  a38=cos(a38);
-  a40=(a00*a38);
-  a12=sin(a12);
-  a41=(a40*a12);
-  a37=(a37+a41);
-  a41=casadi_sq(a37);
-  a02=(a02/a41);
-  a42=casadi_sq(a36);
-  a42=(a02*a42);
-  a15=(a15/a37);
-  a43=(a17/a37);
-  a44=(a43*a12);
-  a45=(a13/a41);
-  a46=(a03*a38);
-  a46=(a46*a36);
-  a47=(a03*a39);
-  a47=(a47*a12);
-  a46=(a46+a47);
-  a47=(a45*a46);
-  a48=(a47*a36);
-  a44=(a44+a48);
-  a24=(a24/a37);
-  a24=(a24*a38);
-  a27=(a27/a37);
-  a27=(a27*a39);
-  a24=(a24+a27);
-  a44=(a44*a24);
-  a40=(a40*a36);
-  a00=(a00*a39);
-  a00=(a00*a12);
-  a40=(a40+a00);
-  a45=(a45*a40);
-  a23=(a23/a37);
-  a23=(a23*a36);
-  a26=(a26/a37);
-  a26=(a26*a12);
-  a23=(a23+a26);
-  a45=(a45*a23);
-  a26=(a45*a36);
-  a44=(a44+a26);
-  a15=(a15*a44);
-  a26=(a15*a36);
-  a42=(a42+a26);
-  a30=(a30/a37);
-  a13=(a13/a37);
-  a26=(a13*a36);
-  a47=(a47*a12);
-  a47=(a26+a47);
-  a47=(a47*a24);
-  a45=(a45*a12);
-  a47=(a47+a45);
-  a30=(a30*a47);
-  a45=(a30*a36);
-  a42=(a42+a45);
-  a34=(a34/a41);
-  a45=(a34*a36);
-  a45=(a45*a12);
-  a42=(a42+a45);
-  if (res[0]!=0) res[0][1]=a42;
-  a42=(a07*a05);
-  a45=(a08*a04);
-  a42=(a42+a45);
-  a19=(a19*a42);
-  a45=(a18*a28);
-  a00=(a45*a05);
-  a27=(a08*a05);
-  a48=(a07*a04);
-  a27=(a27-a48);
-  a00=(a00*a27);
-  a19=(a19+a00);
-  a19=(a18*a19);
-  a00=(a19*a07);
-  a48=(a32*a08);
-  a49=(a17/a10);
-  a09=(a49*a09);
-  a50=(a09*a07);
-  a48=(a48+a50);
-  a48=(a48*a28);
-  a49=(a49*a21);
-  a49=(a49*a25);
-  a21=(a49*a07);
-  a48=(a48+a21);
-  a21=(a48*a42);
-  a25=(a18*a25);
-  a50=(a25*a07);
-  a50=(a50*a27);
-  a21=(a21+a50);
-  a21=(a32*a21);
-  a50=(a21*a05);
-  a00=(a00+a50);
-  a00=(a14*a00);
-  a22=(a22*a42);
-  a45=(a45*a04);
-  a45=(a45*a27);
-  a22=(a22+a45);
-  a22=(a18*a22);
-  a45=(a22*a07);
-  a18=(a18*a07);
-  a09=(a09*a08);
-  a18=(a18+a09);
-  a18=(a18*a28);
-  a49=(a49*a08);
-  a18=(a18+a49);
-  a49=(a18*a42);
-  a25=(a25*a08);
-  a25=(a25*a27);
-  a49=(a49+a25);
-  a49=(a32*a49);
-  a25=(a49*a05);
-  a45=(a45+a25);
-  a45=(a29*a45);
-  a00=(a00+a45);
-  a45=(a03/a10);
-  a25=(a45*a07);
-  a25=(a25*a42);
-  a25=(a25*a04);
-  a45=(a45*a05);
-  a45=(a45*a42);
-  a45=(a45*a08);
-  a25=(a25+a45);
-  a45=(a20*a25);
-  a00=(a00+a45);
-  a45=-1.1907200000000000e-01;
-  a09=(a45*a01);
-  a50=(a09/a10);
-  a50=(a50*a07);
-  a50=(a50*a05);
-  a50=(a50*a42);
-  a00=(a00+a50);
-  if (res[0]!=0) res[0][2]=a00;
-  a00=(a38*a36);
-  a50=(a39*a12);
-  a00=(a00+a50);
-  a44=(a44*a00);
-  a50=(a43*a23);
-  a51=(a50*a36);
-  a52=(a39*a36);
-  a53=(a38*a12);
-  a52=(a52-a53);
-  a51=(a51*a52);
-  a44=(a44+a51);
-  a44=(a43*a44);
-  a51=(a44*a38);
-  a53=(a13*a39);
-  a54=(a17/a41);
-  a40=(a54*a40);
-  a55=(a40*a38);
-  a53=(a53+a55);
-  a53=(a53*a23);
-  a54=(a54*a46);
-  a54=(a54*a24);
-  a46=(a54*a38);
-  a53=(a53+a46);
-  a46=(a53*a00);
-  a24=(a43*a24);
-  a55=(a24*a38);
-  a55=(a55*a52);
-  a46=(a46+a55);
-  a46=(a13*a46);
-  a55=(a46*a36);
-  a51=(a51+a55);
-  a51=(a14*a51);
-  a47=(a47*a00);
-  a50=(a50*a12);
-  a50=(a50*a52);
-  a47=(a47+a50);
-  a47=(a43*a47);
-  a50=(a47*a38);
-  a43=(a43*a38);
-  a40=(a40*a39);
-  a43=(a43+a40);
-  a43=(a43*a23);
-  a54=(a54*a39);
-  a43=(a43+a54);
-  a54=(a43*a00);
-  a24=(a24*a39);
-  a24=(a24*a52);
-  a54=(a54+a24);
-  a54=(a13*a54);
-  a24=(a54*a36);
-  a50=(a50+a24);
-  a50=(a29*a50);
-  a51=(a51+a50);
-  a03=(a03/a41);
-  a50=(a03*a38);
-  a50=(a50*a00);
-  a50=(a50*a12);
-  a03=(a03*a36);
-  a03=(a03*a00);
-  a03=(a03*a39);
-  a50=(a50+a03);
-  a03=(a20*a50);
-  a51=(a51+a03);
-  a09=(a09/a41);
-  a09=(a09*a38);
-  a09=(a09*a36);
-  a09=(a09*a00);
-  a51=(a51+a09);
-  if (res[0]!=0) res[0][3]=a51;
-  a51=casadi_sq(a07);
-  a51=(a11*a51);
-  a09=(a17*a14);
-  a03=(a09/a06);
-  a03=(a03*a48);
-  a48=(a03*a07);
-  a51=(a51+a48);
-  a17=(a17*a29);
-  a06=(a17/a06);
-  a06=(a06*a18);
-  a18=(a06*a07);
-  a51=(a51+a18);
-  a18=(a35*a07);
-  a18=(a18*a08);
-  a51=(a51+a18);
-  if (res[0]!=0) res[0][4]=a51;
-  a51=casadi_sq(a38);
-  a51=(a02*a51);
-  a09=(a09/a37);
-  a09=(a09*a53);
-  a53=(a09*a38);
-  a51=(a51+a53);
-  a17=(a17/a37);
-  a17=(a17*a43);
-  a43=(a17*a38);
-  a51=(a51+a43);
-  a43=(a34*a38);
-  a43=(a43*a39);
-  a51=(a51+a43);
-  if (res[0]!=0) res[0][5]=a51;
-  a51=(a32*a28);
-  a43=(a51*a05);
-  if (res[0]!=0) res[0][6]=a43;
-  a43=(a13*a23);
-  a37=(a43*a36);
-  if (res[0]!=0) res[0][7]=a37;
-  a37=0.;
-  a28=(a37<=a28);
-  a53=1.;
-  a18=(a28?a53:0);
-  a28=(!a28);
-  a48=-1.;
-  a28=(a28?a48:0);
-  a18=(a18+a28);
-  a33=(a33*a18);
-  if (res[0]!=0) res[0][8]=a33;
-  a37=(a37<=a23);
-  a53=(a37?a53:0);
-  a37=(!a37);
-  a37=(a37?a48:0);
-  a53=(a53+a37);
-  a26=(a26*a53);
-  if (res[0]!=0) res[0][9]=a26;
-  a26=casadi_sq(a04);
-  a26=(a35*a26);
-  a16=(a16*a04);
-  a26=(a26+a16);
-  a31=(a31*a04);
-  a26=(a26+a31);
-  a05=(a11*a05);
-  a05=(a05*a04);
-  a26=(a26+a05);
-  if (res[0]!=0) res[0][10]=a26;
-  a26=casadi_sq(a12);
-  a26=(a34*a26);
-  a15=(a15*a12);
-  a26=(a26+a15);
-  a30=(a30*a12);
-  a26=(a26+a30);
-  a36=(a02*a36);
-  a36=(a36*a12);
-  a26=(a26+a36);
-  if (res[0]!=0) res[0][11]=a26;
-  a19=(a19*a08);
+  a09=(a09+a29);
+  a21=(a21*a09);
+  a24=(a14*a24);
+  a29=(a24/a06);
+  a29=(a29*a05);
+  a27=(a14*a27);
+  a30=(a27/a06);
+  a30=(a30*a04);
+  a29=(a29+a30);
+  a21=(a21*a29);
+  a30=(a21*a05);
+  a20=(a20+a30);
+  a17=(a17*a20);
+  a30=(a17*a05);
+  a13=(a13+a30);
+  a30=arg[2]? arg[2][1] : 0;
+  a31=(a14*a30);
+  a32=(a31/a06);
+  a33=(a14/a06);
+  a34=(a33*a05);
+  a23=(a23*a04);
+  a23=(a34+a23);
+  a23=(a23*a26);
   a21=(a21*a04);
-  a19=(a19+a21);
-  a19=(a14*a19);
-  a25=(a01*a25);
-  a19=(a19+a25);
-  a22=(a22*a08);
-  a49=(a49*a04);
-  a22=(a22+a49);
-  a22=(a29*a22);
-  a19=(a19+a22);
-  a45=(a45*a20);
-  a10=(a45/a10);
-  a10=(a10*a42);
+  a23=(a23+a21);
+  a32=(a32*a23);
+  a21=(a32*a05);
+  a13=(a13+a21);
+  a21=arg[3]? arg[3][1] : 0;
+  a35=(a00*a21);
+  a36=(a35/a10);
+  a37=(a36*a05);
+  a37=(a37*a04);
+  a13=(a13+a37);
+  if (res[0]!=0) res[0][0]=a13;
+  a13=arg[0]? arg[0][3] : 0;
+  a37=cos(a13);
+  a38=(a03*a37);
+  a39=arg[0]? arg[0][1] : 0;
+  a40=sin(a39);
+  a38=(a38*a40);
+  a39=cos(a39);
+  a41=(a00*a39);
+  a13=sin(a13);
+  a42=(a41*a13);
+  a38=(a38+a42);
+  a42=casadi_sq(a38);
+  a02=(a02/a42);
+  a43=casadi_sq(a37);
+  a44=(a02*a43);
+  a16=(a16/a38);
+  a45=(a18/a38);
+  a46=(a45*a13);
+  a47=(a14/a42);
+  a48=(a03*a39);
+  a48=(a48*a37);
+  a49=(a03*a40);
+  a49=(a49*a13);
+  a48=(a48+a49);
+  a49=(a47*a48);
+  a50=(a49*a37);
+  a46=(a46+a50);
+  a25=(a25/a38);
+  a25=(a25*a39);
+  a28=(a28/a38);
+  a28=(a28*a40);
+  a25=(a25+a28);
+  a46=(a46*a25);
+  a41=(a41*a37);
+  a00=(a00*a40);
+  a00=(a00*a13);
+  a41=(a41+a00);
+  a47=(a47*a41);
+  a24=(a24/a38);
+  a24=(a24*a37);
+  a27=(a27/a38);
+  a27=(a27*a13);
+  a24=(a24+a27);
+  a47=(a47*a24);
+  a27=(a47*a37);
+  a46=(a46+a27);
+  a16=(a16*a46);
+  a27=(a16*a37);
+  a44=(a44+a27);
+  a31=(a31/a38);
+  a14=(a14/a38);
+  a27=(a14*a37);
+  a49=(a49*a13);
+  a49=(a27+a49);
+  a49=(a49*a25);
+  a47=(a47*a13);
+  a49=(a49+a47);
+  a31=(a31*a49);
+  a47=(a31*a37);
+  a44=(a44+a47);
+  a35=(a35/a42);
+  a47=(a35*a37);
+  a47=(a47*a13);
+  a44=(a44+a47);
+  if (res[0]!=0) res[0][1]=a44;
+  a44=(a07*a05);
+  a47=(a08*a04);
+  a44=(a44+a47);
+  a20=(a20*a44);
+  a47=(a19*a29);
+  a00=(a47*a05);
+  a28=(a08*a05);
+  a50=(a07*a04);
+  a28=(a28-a50);
+  a00=(a00*a28);
+  a20=(a20+a00);
+  a20=(a19*a20);
+  a00=(a20*a07);
+  a50=(a33*a08);
+  a51=(a18/a10);
+  a09=(a51*a09);
+  a52=(a09*a07);
+  a50=(a50+a52);
+  a50=(a50*a29);
+  a51=(a51*a22);
+  a51=(a51*a26);
+  a22=(a51*a07);
+  a50=(a50+a22);
+  a22=(a50*a44);
+  a26=(a19*a26);
+  a52=(a26*a07);
+  a52=(a52*a28);
+  a22=(a22+a52);
+  a22=(a33*a22);
+  a52=(a22*a05);
+  a00=(a00+a52);
+  a00=(a15*a00);
+  a23=(a23*a44);
+  a47=(a47*a04);
+  a47=(a47*a28);
+  a23=(a23+a47);
+  a23=(a19*a23);
+  a47=(a23*a07);
+  a19=(a19*a07);
+  a09=(a09*a08);
+  a19=(a19+a09);
+  a19=(a19*a29);
+  a51=(a51*a08);
+  a19=(a19+a51);
+  a51=(a19*a44);
+  a26=(a26*a08);
+  a26=(a26*a28);
+  a51=(a51+a26);
+  a51=(a33*a51);
+  a26=(a51*a05);
+  a47=(a47+a26);
+  a47=(a30*a47);
+  a00=(a00+a47);
+  a47=(a03/a10);
+  a26=(a47*a07);
+  a26=(a26*a44);
+  a26=(a26*a04);
+  a47=(a47*a05);
+  a47=(a47*a44);
+  a47=(a47*a08);
+  a26=(a26+a47);
+  a47=(a21*a26);
+  a00=(a00+a47);
+  a47=-1.1907200000000000e-01;
+  a09=(a47*a01);
+  a52=(a09/a10);
+  a52=(a52*a07);
+  a52=(a52*a05);
+  a52=(a52*a44);
+  a00=(a00+a52);
+  if (res[0]!=0) res[0][2]=a00;
+  a00=(a39*a37);
+  a52=(a40*a13);
+  a00=(a00+a52);
+  a46=(a46*a00);
+  a52=(a45*a24);
+  a53=(a52*a37);
+  a54=(a40*a37);
+  a55=(a39*a13);
+  a54=(a54-a55);
+  a53=(a53*a54);
+  a46=(a46+a53);
+  a46=(a45*a46);
+  a53=(a46*a39);
+  a55=(a14*a40);
+  a56=(a18/a42);
+  a41=(a56*a41);
+  a57=(a41*a39);
+  a55=(a55+a57);
+  a55=(a55*a24);
+  a56=(a56*a48);
+  a56=(a56*a25);
+  a48=(a56*a39);
+  a55=(a55+a48);
+  a48=(a55*a00);
+  a25=(a45*a25);
+  a57=(a25*a39);
+  a57=(a57*a54);
+  a48=(a48+a57);
+  a48=(a14*a48);
+  a57=(a48*a37);
+  a53=(a53+a57);
+  a53=(a15*a53);
+  a49=(a49*a00);
+  a52=(a52*a13);
+  a52=(a52*a54);
+  a49=(a49+a52);
+  a49=(a45*a49);
+  a52=(a49*a39);
+  a45=(a45*a39);
+  a41=(a41*a40);
+  a45=(a45+a41);
+  a45=(a45*a24);
+  a56=(a56*a40);
+  a45=(a45+a56);
+  a56=(a45*a00);
+  a25=(a25*a40);
+  a25=(a25*a54);
+  a56=(a56+a25);
+  a56=(a14*a56);
+  a25=(a56*a37);
+  a52=(a52+a25);
+  a52=(a30*a52);
+  a53=(a53+a52);
+  a03=(a03/a42);
+  a52=(a03*a39);
+  a52=(a52*a00);
+  a52=(a52*a13);
+  a03=(a03*a37);
+  a03=(a03*a00);
+  a03=(a03*a40);
+  a52=(a52+a03);
+  a03=(a21*a52);
+  a53=(a53+a03);
+  a09=(a09/a42);
+  a09=(a09*a39);
+  a09=(a09*a37);
+  a09=(a09*a00);
+  a53=(a53+a09);
+  if (res[0]!=0) res[0][3]=a53;
+  a53=casadi_sq(a07);
+  a53=(a11*a53);
+  a09=(a18*a15);
+  a03=(a09/a06);
+  a03=(a03*a50);
+  a50=(a03*a07);
+  a53=(a53+a50);
+  a18=(a18*a30);
+  a06=(a18/a06);
+  a06=(a06*a19);
+  a19=(a06*a07);
+  a53=(a53+a19);
+  a19=(a36*a07);
+  a19=(a19*a08);
+  a53=(a53+a19);
+  if (res[0]!=0) res[0][4]=a53;
+  a53=casadi_sq(a39);
+  a53=(a02*a53);
+  a09=(a09/a38);
+  a09=(a09*a55);
+  a55=(a09*a39);
+  a53=(a53+a55);
+  a18=(a18/a38);
+  a18=(a18*a45);
+  a45=(a18*a39);
+  a53=(a53+a45);
+  a45=(a35*a39);
+  a45=(a45*a40);
+  a53=(a53+a45);
+  if (res[0]!=0) res[0][5]=a53;
+  a53=(a33*a29);
+  a45=(a53*a05);
+  if (res[0]!=0) res[0][6]=a45;
+  a45=(a14*a24);
+  a38=(a45*a37);
+  if (res[0]!=0) res[0][7]=a38;
+  a38=0.;
+  a29=(a38<=a29);
+  a55=1.;
+  a19=(a29?a55:0);
+  a29=(!a29);
+  a50=-1.;
+  a29=(a29?a50:0);
+  a19=(a19+a29);
+  a34=(a34*a19);
+  if (res[0]!=0) res[0][8]=a34;
+  a38=(a38<=a24);
+  a24=(a38?a55:0);
+  a38=(!a38);
+  a38=(a38?a50:0);
+  a24=(a24+a38);
+  a27=(a27*a24);
+  if (res[0]!=0) res[0][9]=a27;
+  a27=casadi_sq(a04);
+  a38=(a36*a27);
+  a17=(a17*a04);
+  a38=(a38+a17);
+  a32=(a32*a04);
+  a38=(a38+a32);
+  a32=(a11*a05);
+  a32=(a32*a04);
+  a38=(a38+a32);
+  if (res[0]!=0) res[0][10]=a38;
+  a38=casadi_sq(a13);
+  a32=(a35*a38);
+  a16=(a16*a13);
+  a32=(a32+a16);
+  a31=(a31*a13);
+  a32=(a32+a31);
+  a31=(a02*a37);
+  a31=(a31*a13);
+  a32=(a32+a31);
+  if (res[0]!=0) res[0][11]=a32;
+  a20=(a20*a08);
+  a22=(a22*a04);
+  a20=(a20+a22);
+  a20=(a15*a20);
+  a26=(a01*a26);
+  a20=(a20+a26);
+  a23=(a23*a08);
+  a51=(a51*a04);
+  a23=(a23+a51);
+  a23=(a30*a23);
+  a20=(a20+a23);
+  a47=(a47*a21);
+  a10=(a47/a10);
+  a10=(a10*a44);
   a10=(a10*a08);
   a10=(a10*a04);
-  a19=(a19+a10);
-  if (res[0]!=0) res[0][12]=a19;
-  a44=(a44*a39);
-  a46=(a46*a12);
-  a44=(a44+a46);
-  a14=(a14*a44);
-  a01=(a01*a50);
-  a14=(a14+a01);
-  a47=(a47*a39);
-  a54=(a54*a12);
-  a47=(a47+a54);
-  a29=(a29*a47);
-  a14=(a14+a29);
-  a45=(a45/a41);
-  a45=(a45*a00);
-  a45=(a45*a39);
-  a45=(a45*a12);
-  a14=(a14+a45);
-  if (res[0]!=0) res[0][13]=a14;
-  a14=casadi_sq(a08);
-  a35=(a35*a14);
+  a20=(a20+a10);
+  if (res[0]!=0) res[0][12]=a20;
+  a46=(a46*a40);
+  a48=(a48*a13);
+  a46=(a46+a48);
+  a15=(a15*a46);
+  a01=(a01*a52);
+  a15=(a15+a01);
+  a49=(a49*a40);
+  a56=(a56*a13);
+  a49=(a49+a56);
+  a30=(a30*a49);
+  a15=(a15+a30);
+  a47=(a47/a42);
+  a47=(a47*a00);
+  a47=(a47*a40);
+  a47=(a47*a13);
+  a15=(a15+a47);
+  if (res[0]!=0) res[0][13]=a15;
+  a15=casadi_sq(a08);
+  a36=(a36*a15);
   a03=(a03*a08);
-  a35=(a35+a03);
+  a36=(a36+a03);
   a06=(a06*a08);
-  a35=(a35+a06);
+  a36=(a36+a06);
   a11=(a11*a07);
   a11=(a11*a08);
-  a35=(a35+a11);
-  if (res[0]!=0) res[0][14]=a35;
-  a35=casadi_sq(a39);
-  a34=(a34*a35);
-  a09=(a09*a39);
-  a34=(a34+a09);
-  a17=(a17*a39);
-  a34=(a34+a17);
-  a02=(a02*a38);
+  a36=(a36+a11);
+  if (res[0]!=0) res[0][14]=a36;
+  a36=casadi_sq(a40);
+  a35=(a35*a36);
+  a09=(a09*a40);
+  a35=(a35+a09);
+  a18=(a18*a40);
+  a35=(a35+a18);
   a02=(a02*a39);
-  a34=(a34+a02);
-  if (res[0]!=0) res[0][15]=a34;
-  a51=(a51*a04);
-  if (res[0]!=0) res[0][16]=a51;
-  a43=(a43*a12);
-  if (res[0]!=0) res[0][17]=a43;
-  a32=(a32*a18);
-  a32=(a32*a04);
-  if (res[0]!=0) res[0][18]=a32;
-  a13=(a13*a53);
-  a13=(a13*a12);
-  if (res[0]!=0) res[0][19]=a13;
-  a27=casadi_fabs(a27);
-  a52=casadi_fabs(a52);
-  a13=(a27+a52);
-  a27=(a27-a52);
-  a27=casadi_fabs(a27);
-  a13=(a13-a27);
-  a27=2.;
-  a13=(a13/a27);
-  if (res[1]!=0) res[1][0]=a13;
+  a02=(a02*a40);
+  a35=(a35+a02);
+  if (res[0]!=0) res[0][15]=a35;
+  a53=(a53*a04);
+  if (res[0]!=0) res[0][16]=a53;
+  a45=(a45*a13);
+  if (res[0]!=0) res[0][17]=a45;
+  a33=(a33*a19);
+  a33=(a33*a04);
+  if (res[0]!=0) res[0][18]=a33;
+  a14=(a14*a24);
+  a14=(a14*a13);
+  if (res[0]!=0) res[0][19]=a14;
+  a28=casadi_fabs(a28);
+  a54=casadi_fabs(a54);
+  a14=(a28+a54);
+  a28=(a28-a54);
+  a28=casadi_fabs(a28);
+  a14=(a14-a28);
+  a28=2.;
+  a14=(a14/a28);
+  if (res[1]!=0) res[1][0]=a14;
+  a14=5.0000000000000000e-01;
+  a12=(a12-a27);
+  a43=(a43-a38);
+  a12=(a12+a43);
+  a12=casadi_sq(a12);
+  a05=(2.*a05);
+  a05=(a05*a04);
+  a37=(2.*a37);
+  a37=(a37*a13);
+  a05=(a05+a37);
+  a05=casadi_sq(a05);
+  a12=(a12+a05);
+  a12=sqrt(a12);
+  a12=(a14*a12);
+  a55=(a55-a12);
+  a12=casadi_fabs(a55);
+  a55=(a55+a12);
+  a14=(a14*a55);
+  a14=sqrt(a14);
+  if (res[1]!=0) res[1][1]=a14;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Y(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f13(arg, res, iw, w, mem);
+  return casadi_f14(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Y_checkout(void) {
@@ -2758,8 +3110,8 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Y_sparsity_in(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Y_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
-    case 1: return casadi_s3;
+    case 0: return casadi_s5;
+    case 1: return casadi_s0;
     default: return 0;
   }
 }
@@ -2780,8 +3132,8 @@ CASADI_SYMBOL_EXPORT int fivebar_Y_work_bytes(casadi_int *sz_arg, casadi_int* sz
   return 0;
 }
 
-/* fivebar_forward_dynamics:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],sing) */
-static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_forward_dynamics:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],sing[2]) */
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -3128,21 +3480,21 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a50=(a50-a61);
   a61=arg[3]? arg[3][9] : 0;
   a43=(a43<=a45);
-  a05=(a43?a05:0);
+  a15=(a43?a05:0);
   a43=(!a43);
   a43=(a43?a51:0);
-  a05=(a05+a43);
-  a61=(a61*a05);
-  a05=arg[3]? arg[3][7] : 0;
-  a05=(a05*a45);
-  a61=(a61+a05);
+  a15=(a15+a43);
+  a61=(a61*a15);
+  a15=arg[3]? arg[3][7] : 0;
+  a15=(a15*a45);
+  a61=(a61+a15);
   a61=(a04*a61);
-  a05=(a61*a06);
-  a50=(a50+a05);
-  a05=arg[2]? arg[2][0] : 0;
-  a05=(a19*a05);
-  a05=(a05/a12);
-  a12=(a05*a09);
+  a15=(a61*a06);
+  a50=(a50+a15);
+  a15=arg[2]? arg[2][0] : 0;
+  a15=(a19*a15);
+  a15=(a15/a12);
+  a12=(a15*a09);
   a50=(a50+a12);
   a12=arg[2]? arg[2][1] : 0;
   a19=(a19*a12);
@@ -3198,8 +3550,8 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a42=(a42-a44);
   a61=(a61*a02);
   a42=(a42+a61);
-  a05=(a05*a13);
-  a42=(a42+a05);
+  a15=(a15*a13);
+  a42=(a42+a15);
   a19=(a19*a02);
   a42=(a42+a19);
   a19=(a17*a42);
@@ -3237,11 +3589,35 @@ static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a62=2.;
   a07=(a07/a62);
   if (res[1]!=0) res[1][0]=a07;
+  a07=5.0000000000000000e-01;
+  a62=casadi_sq(a09);
+  a66=casadi_sq(a13);
+  a62=(a62-a66);
+  a66=casadi_sq(a06);
+  a23=casadi_sq(a02);
+  a66=(a66-a23);
+  a62=(a62+a66);
+  a62=casadi_sq(a62);
+  a09=(2.*a09);
+  a09=(a09*a13);
+  a06=(2.*a06);
+  a06=(a06*a02);
+  a09=(a09+a06);
+  a09=casadi_sq(a09);
+  a62=(a62+a09);
+  a62=sqrt(a62);
+  a62=(a07*a62);
+  a05=(a05-a62);
+  a62=casadi_fabs(a05);
+  a05=(a05+a62);
+  a07=(a07*a05);
+  a07=sqrt(a07);
+  if (res[1]!=0) res[1][1]=a07;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f14(arg, res, iw, w, mem);
+  return casadi_f15(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_checkout(void) {
@@ -3290,7 +3666,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_forward_dynamics_sparsity_in(casa
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s4;
+    case 3: return casadi_s3;
     default: return 0;
   }
 }
@@ -3298,7 +3674,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_forward_dynamics_sparsity_in(casa
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_forward_dynamics_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s3;
+    case 1: return casadi_s0;
     default: return 0;
   }
 }
@@ -3319,14 +3695,14 @@ CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* fivebar_na_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[19])->(tau_a[2],state_next[14],status,diag[9]) */
-static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[20])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
   casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
   casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
-  casadi_real a60, a61, a62, a63;
+  casadi_real a60, a61, a62, a63, a64;
   a00=arg[5]? arg[5][16] : 0;
   a01=arg[1]? arg[1][0] : 0;
   a02=sin(a01);
@@ -3407,478 +3783,505 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a20=2.;
   a25=(a25/a20);
   a00=(a00<=a25);
+  a23=arg[5]? arg[5][17] : 0;
+  a26=5.0000000000000000e-01;
+  a27=1.;
+  a28=casadi_sq(a19);
+  a29=casadi_sq(a04);
+  a28=(a28-a29);
+  a29=casadi_sq(a21);
+  a30=casadi_sq(a16);
+  a29=(a29-a30);
+  a28=(a28+a29);
+  a28=casadi_sq(a28);
+  a29=(2.*a19);
+  a29=(a29*a04);
+  a30=(2.*a21);
+  a30=(a30*a16);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a28=(a28+a29);
+  a28=sqrt(a28);
+  a28=(a26*a28);
+  a28=(a27-a28);
+  a29=casadi_fabs(a28);
+  a28=(a28+a29);
+  a26=(a26*a28);
+  a26=sqrt(a26);
+  a23=(a23<=a26);
+  a00=(a00&&a23);
   a23=(a07*a19);
-  a26=(a06*a23);
-  a27=(a05*a04);
-  a28=(a27*a22);
-  a26=(a26-a28);
-  a23=(a23/a26);
-  a27=(a27/a26);
-  a28=casadi_sq(a27);
-  a29=(a05*a16);
+  a28=(a06*a23);
+  a29=(a05*a04);
+  a30=(a29*a22);
+  a28=(a28-a30);
+  a23=(a23/a28);
+  a29=(a29/a28);
+  a30=casadi_sq(a29);
+  a31=(a05*a16);
   a07=(a07*a21);
-  a30=(a13*a07);
-  a31=(a29*a12);
-  a30=(a30-a31);
-  a29=(a29/a30);
-  a31=casadi_sq(a29);
-  a28=(a28+a31);
-  a31=arg[4]? arg[4][0] : 0;
-  a32=arg[5]? arg[5][2] : 0;
-  a33=arg[3]? arg[3][0] : 0;
-  a34=arg[0]? arg[0][2] : 0;
-  a35=arg[5]? arg[5][15] : 0;
+  a32=(a13*a07);
+  a33=(a31*a12);
+  a32=(a32-a33);
+  a31=(a31/a32);
+  a33=casadi_sq(a31);
+  a30=(a30+a33);
+  a33=arg[4]? arg[4][0] : 0;
+  a34=arg[5]? arg[5][2] : 0;
+  a35=arg[3]? arg[3][0] : 0;
+  a36=arg[0]? arg[0][2] : 0;
+  a37=arg[5]? arg[5][15] : 0;
   a18=(a22+a18);
   a18=(a18+a10);
   a10=arg[0]? arg[0][0] : 0;
-  a36=(a18-a10);
-  a37=arg[5]? arg[5][14] : 0;
-  a36=(a36/a37);
-  a36=(a36-a34);
-  a36=(a35*a36);
-  a36=(a34+a36);
-  a38=(a33-a36);
-  a39=(a32*a38);
-  a31=(a31+a39);
-  a39=(a23*a31);
-  a40=arg[4]? arg[4][1] : 0;
-  a41=arg[5]? arg[5][3] : 0;
-  a42=arg[3]? arg[3][1] : 0;
-  a43=arg[0]? arg[0][3] : 0;
+  a38=(a18-a10);
+  a39=arg[5]? arg[5][14] : 0;
+  a38=(a38/a39);
+  a38=(a38-a36);
+  a38=(a37*a38);
+  a38=(a36+a38);
+  a40=(a35-a38);
+  a41=(a34*a40);
+  a33=(a33+a41);
+  a41=(a23*a33);
+  a42=arg[4]? arg[4][1] : 0;
+  a43=arg[5]? arg[5][3] : 0;
+  a44=arg[3]? arg[3][1] : 0;
+  a45=arg[0]? arg[0][3] : 0;
   a15=(a15+a17);
   a15=(a15+a03);
   a15=(a15+a14);
   a14=arg[0]? arg[0][1] : 0;
   a03=(a15-a14);
-  a03=(a03/a37);
-  a03=(a03-a43);
-  a35=(a35*a03);
-  a35=(a43+a35);
-  a03=(a42-a35);
-  a17=(a41*a03);
-  a40=(a40+a17);
-  a17=(a27*a40);
-  a39=(a39-a17);
-  a17=(a23*a36);
-  a44=(a27*a35);
-  a17=(a17-a44);
-  a44=(a05*a17);
-  a45=(a44*a02);
-  a46=arg[2]? arg[2][0] : 0;
-  a46=(a46-a18);
-  a32=(a32*a46);
-  a33=(a33+a32);
-  a32=(a23*a33);
-  a47=arg[2]? arg[2][1] : 0;
-  a47=(a47-a15);
-  a41=(a41*a47);
-  a42=(a42+a41);
-  a41=(a27*a42);
-  a32=(a32-a41);
-  a45=(a45*a32);
-  a06=(a06/a26);
-  a41=(a06*a35);
-  a22=(a22/a26);
-  a26=(a22*a36);
-  a41=(a41-a26);
-  a26=(a05*a41);
-  a48=(a26*a04);
-  a49=(a06*a42);
-  a50=(a22*a33);
-  a49=(a49-a50);
-  a48=(a48*a49);
-  a45=(a45+a48);
-  a48=(a27*a45);
-  a44=(a44*a01);
-  a44=(a44*a32);
-  a26=(a26*a19);
-  a26=(a26*a49);
-  a44=(a44+a26);
-  a26=(a23*a44);
-  a48=(a48-a26);
-  a39=(a39+a48);
-  a48=(a23*a39);
-  a26=arg[0]? arg[0][4] : 0;
-  a50=(a48*a26);
-  a07=(a07/a30);
-  a51=(a07*a31);
-  a52=(a29*a40);
+  a03=(a03/a39);
+  a03=(a03-a45);
+  a37=(a37*a03);
+  a37=(a45+a37);
+  a03=(a44-a37);
+  a17=(a43*a03);
+  a42=(a42+a17);
+  a17=(a29*a42);
+  a41=(a41-a17);
+  a17=(a23*a38);
+  a46=(a29*a37);
+  a17=(a17-a46);
+  a46=(a05*a17);
+  a47=(a46*a02);
+  a48=arg[2]? arg[2][0] : 0;
+  a48=(a48-a18);
+  a34=(a34*a48);
+  a35=(a35+a34);
+  a34=(a23*a35);
+  a49=arg[2]? arg[2][1] : 0;
+  a49=(a49-a15);
+  a43=(a43*a49);
+  a44=(a44+a43);
+  a43=(a29*a44);
+  a34=(a34-a43);
+  a47=(a47*a34);
+  a06=(a06/a28);
+  a43=(a06*a37);
+  a22=(a22/a28);
+  a28=(a22*a38);
+  a43=(a43-a28);
+  a28=(a05*a43);
+  a50=(a28*a04);
+  a51=(a06*a44);
+  a52=(a22*a35);
   a51=(a51-a52);
-  a52=(a07*a36);
-  a53=(a29*a35);
-  a52=(a52-a53);
-  a53=(a05*a52);
-  a54=(a53*a09);
-  a55=(a07*a33);
-  a56=(a29*a42);
-  a55=(a55-a56);
-  a54=(a54*a55);
-  a13=(a13/a30);
-  a56=(a13*a35);
-  a12=(a12/a30);
-  a30=(a12*a36);
-  a56=(a56-a30);
-  a05=(a05*a56);
-  a30=(a05*a16);
-  a57=(a13*a42);
-  a58=(a12*a33);
+  a50=(a50*a51);
+  a47=(a47+a50);
+  a50=(a29*a47);
+  a46=(a46*a01);
+  a46=(a46*a34);
+  a28=(a28*a19);
+  a28=(a28*a51);
+  a46=(a46+a28);
+  a28=(a23*a46);
+  a50=(a50-a28);
+  a41=(a41+a50);
+  a50=(a23*a41);
+  a28=arg[0]? arg[0][4] : 0;
+  a52=(a50*a28);
+  a07=(a07/a32);
+  a53=(a07*a33);
+  a54=(a31*a42);
+  a53=(a53-a54);
+  a54=(a07*a38);
+  a55=(a31*a37);
+  a54=(a54-a55);
+  a55=(a05*a54);
+  a56=(a55*a09);
+  a57=(a07*a35);
+  a58=(a31*a44);
   a57=(a57-a58);
-  a30=(a30*a57);
-  a54=(a54+a30);
-  a30=(a29*a54);
-  a53=(a53*a08);
-  a53=(a53*a55);
+  a56=(a56*a57);
+  a13=(a13/a32);
+  a58=(a13*a37);
+  a12=(a12/a32);
+  a32=(a12*a38);
+  a58=(a58-a32);
+  a05=(a05*a58);
+  a32=(a05*a16);
+  a59=(a13*a44);
+  a60=(a12*a35);
+  a59=(a59-a60);
+  a32=(a32*a59);
+  a56=(a56+a32);
+  a32=(a31*a56);
+  a55=(a55*a08);
+  a55=(a55*a57);
   a05=(a05*a21);
-  a05=(a05*a57);
-  a53=(a53+a05);
-  a05=(a07*a53);
-  a30=(a30-a05);
-  a51=(a51+a30);
-  a30=(a07*a51);
+  a05=(a05*a59);
+  a55=(a55+a05);
+  a05=(a07*a55);
+  a32=(a32-a05);
+  a53=(a53+a32);
+  a32=(a07*a53);
   a05=arg[0]? arg[0][5] : 0;
-  a58=(a30*a05);
-  a50=(a50+a58);
-  a58=(a06*a40);
-  a59=(a22*a31);
-  a58=(a58-a59);
-  a44=(a22*a44);
-  a45=(a06*a45);
-  a44=(a44-a45);
-  a58=(a58+a44);
+  a60=(a32*a05);
+  a52=(a52+a60);
+  a60=(a06*a42);
+  a61=(a22*a33);
+  a60=(a60-a61);
+  a46=(a22*a46);
+  a47=(a06*a47);
+  a46=(a46-a47);
+  a60=(a60+a46);
   a01=(a01*a19);
   a02=(a02*a04);
   a01=(a01+a02);
-  a02=(a58*a01);
-  a41=(a41*a49);
-  a41=(a41*a11);
-  a02=(a02+a41);
-  a41=(a23*a02);
-  a01=(a39*a01);
-  a32=(a17*a32);
-  a32=(a32*a11);
-  a01=(a01-a32);
-  a32=(a22*a01);
-  a41=(a41-a32);
-  a32=arg[0]? arg[0][6] : 0;
-  a11=(a41*a32);
-  a50=(a50+a11);
-  a40=(a13*a40);
-  a31=(a12*a31);
-  a40=(a40-a31);
-  a53=(a12*a53);
-  a54=(a13*a54);
-  a53=(a53-a54);
-  a40=(a40+a53);
+  a02=(a60*a01);
+  a43=(a43*a51);
+  a43=(a43*a11);
+  a02=(a02+a43);
+  a43=(a23*a02);
+  a01=(a41*a01);
+  a34=(a17*a34);
+  a34=(a34*a11);
+  a01=(a01-a34);
+  a34=(a22*a01);
+  a43=(a43-a34);
+  a34=arg[0]? arg[0][6] : 0;
+  a11=(a43*a34);
+  a52=(a52+a11);
+  a42=(a13*a42);
+  a33=(a12*a33);
+  a42=(a42-a33);
+  a55=(a12*a55);
+  a56=(a13*a56);
+  a55=(a55-a56);
+  a42=(a42+a55);
   a08=(a08*a21);
   a09=(a09*a16);
   a08=(a08+a09);
-  a09=(a40*a08);
-  a56=(a56*a57);
-  a56=(a56*a24);
-  a09=(a09+a56);
-  a56=(a07*a09);
-  a08=(a51*a08);
-  a55=(a52*a55);
-  a55=(a55*a24);
-  a08=(a08-a55);
-  a55=(a12*a08);
-  a56=(a56-a55);
-  a55=arg[0]? arg[0][7] : 0;
-  a24=(a56*a55);
-  a50=(a50+a24);
-  a22=(a22*a58);
+  a09=(a42*a08);
+  a58=(a58*a59);
+  a58=(a58*a24);
+  a09=(a09+a58);
+  a58=(a07*a09);
+  a08=(a53*a08);
+  a57=(a54*a57);
+  a57=(a57*a24);
+  a08=(a08-a57);
+  a57=(a12*a08);
+  a58=(a58-a57);
+  a57=arg[0]? arg[0][7] : 0;
+  a24=(a58*a57);
+  a52=(a52+a24);
+  a22=(a22*a60);
   a24=arg[0]? arg[0][8] : 0;
-  a57=(a22*a24);
-  a50=(a50-a57);
-  a12=(a12*a40);
-  a57=arg[0]? arg[0][9] : 0;
-  a16=(a12*a57);
-  a50=(a50-a16);
+  a59=(a22*a24);
+  a52=(a52-a59);
+  a12=(a12*a42);
+  a59=arg[0]? arg[0][9] : 0;
+  a16=(a12*a59);
+  a52=(a52-a16);
   a16=(a23*a17);
   a21=arg[0]? arg[0][10] : 0;
-  a53=(a16*a21);
-  a50=(a50+a53);
-  a53=(a07*a52);
-  a54=arg[0]? arg[0][11] : 0;
-  a31=(a53*a54);
-  a50=(a50+a31);
-  a31=0.;
-  a11=(a31<=a17);
-  a49=1.;
-  a04=(a11?a49:0);
+  a55=(a16*a21);
+  a52=(a52+a55);
+  a55=(a07*a54);
+  a56=arg[0]? arg[0][11] : 0;
+  a33=(a55*a56);
+  a52=(a52+a33);
+  a33=0.;
+  a11=(a33<=a17);
+  a51=(a11?a27:0);
   a11=(!a11);
-  a19=-1.;
-  a11=(a11?a19:0);
-  a04=(a04+a11);
-  a11=(a23*a04);
-  a44=arg[0]? arg[0][12] : 0;
-  a45=(a11*a44);
-  a50=(a50+a45);
-  a45=(a31<=a52);
-  a59=(a45?a49:0);
-  a45=(!a45);
-  a45=(a45?a19:0);
-  a59=(a59+a45);
-  a45=(a07*a59);
-  a19=arg[0]? arg[0][13] : 0;
-  a60=(a45*a19);
-  a50=(a50+a60);
-  a60=arg[5]? arg[5][0] : 0;
-  a33=(a33-a36);
-  a60=(a60*a33);
-  a50=(a50+a60);
-  a60=(a28*a50);
-  a61=(a23*a27);
-  a62=(a07*a29);
-  a61=(a61+a62);
-  a01=(a06*a01);
-  a02=(a27*a02);
-  a01=(a01-a02);
-  a02=(a01*a32);
-  a39=(a27*a39);
-  a62=(a39*a26);
-  a51=(a29*a51);
-  a63=(a51*a05);
+  a04=-1.;
+  a11=(a11?a04:0);
+  a51=(a51+a11);
+  a11=(a23*a51);
+  a19=arg[0]? arg[0][12] : 0;
+  a46=(a11*a19);
+  a52=(a52+a46);
+  a46=(a33<=a54);
+  a47=(a46?a27:0);
+  a46=(!a46);
+  a46=(a46?a04:0);
+  a47=(a47+a46);
+  a46=(a07*a47);
+  a04=arg[0]? arg[0][13] : 0;
+  a61=(a46*a04);
+  a52=(a52+a61);
+  a61=arg[5]? arg[5][0] : 0;
+  a35=(a35-a38);
+  a61=(a61*a35);
+  a52=(a52+a61);
+  a61=(a30*a52);
+  a62=(a23*a29);
+  a63=(a07*a31);
   a62=(a62+a63);
-  a02=(a02-a62);
+  a01=(a06*a01);
+  a02=(a29*a02);
+  a01=(a01-a02);
+  a02=(a01*a34);
+  a41=(a29*a41);
+  a63=(a41*a28);
+  a53=(a31*a53);
+  a64=(a53*a05);
+  a63=(a63+a64);
+  a02=(a02-a63);
   a08=(a13*a08);
-  a09=(a29*a09);
+  a09=(a31*a09);
   a08=(a08-a09);
-  a09=(a08*a55);
+  a09=(a08*a57);
   a02=(a02+a09);
-  a06=(a06*a58);
-  a58=(a06*a24);
-  a02=(a02+a58);
-  a13=(a13*a40);
-  a40=(a13*a57);
-  a02=(a02+a40);
-  a17=(a27*a17);
-  a40=(a17*a21);
-  a02=(a02-a40);
-  a52=(a29*a52);
-  a40=(a52*a54);
-  a02=(a02-a40);
-  a04=(a27*a04);
-  a40=(a04*a44);
-  a02=(a02-a40);
-  a59=(a29*a59);
-  a40=(a59*a19);
-  a02=(a02-a40);
-  a40=arg[5]? arg[5][1] : 0;
-  a42=(a42-a35);
-  a40=(a40*a42);
-  a02=(a02+a40);
-  a40=(a61*a02);
-  a60=(a60+a40);
-  a40=casadi_sq(a23);
-  a58=casadi_sq(a07);
-  a40=(a40+a58);
-  a28=(a40*a28);
-  a58=(a27*a23);
-  a09=(a29*a07);
-  a58=(a58+a09);
-  a61=(a61*a58);
-  a28=(a28-a61);
-  a60=(a60/a28);
-  a23=(a23*a60);
-  a40=(a40*a02);
-  a58=(a58*a50);
-  a40=(a40+a58);
-  a40=(a40/a28);
-  a27=(a27*a40);
-  a23=(a23-a27);
-  a07=(a07*a60);
-  a29=(a29*a40);
-  a07=(a07-a29);
-  a29=(a23+a07);
-  a40=arg[5]? arg[5][4] : 0;
-  a40=(a37*a40);
-  a48=(a48*a33);
-  a39=(a39*a42);
-  a48=(a48-a39);
-  a40=(a40*a48);
-  a40=(a26+a40);
-  a29=(a29+a40);
-  a48=arg[5]? arg[5][5] : 0;
-  a48=(a37*a48);
-  a30=(a30*a33);
-  a51=(a51*a42);
-  a30=(a30-a51);
-  a48=(a48*a30);
-  a48=(a05+a48);
-  a29=(a29+a48);
-  a30=arg[5]? arg[5][6] : 0;
-  a30=(a37*a30);
-  a41=(a41*a33);
-  a01=(a01*a42);
-  a41=(a41+a01);
-  a30=(a30*a41);
-  a30=(a32+a30);
-  a29=(a29+a30);
-  a41=arg[5]? arg[5][7] : 0;
-  a41=(a37*a41);
-  a56=(a56*a33);
-  a08=(a08*a42);
-  a56=(a56+a08);
-  a41=(a41*a56);
-  a41=(a55+a41);
-  a29=(a29+a41);
-  a56=arg[5]? arg[5][8] : 0;
-  a56=(a37*a56);
-  a06=(a06*a42);
-  a22=(a22*a33);
-  a06=(a06-a22);
-  a56=(a56*a06);
-  a56=(a24+a56);
-  a29=(a29+a56);
-  a06=arg[5]? arg[5][9] : 0;
-  a06=(a37*a06);
+  a06=(a06*a60);
+  a60=(a06*a24);
+  a02=(a02+a60);
   a13=(a13*a42);
-  a12=(a12*a33);
+  a42=(a13*a59);
+  a02=(a02+a42);
+  a17=(a29*a17);
+  a42=(a17*a21);
+  a02=(a02-a42);
+  a54=(a31*a54);
+  a42=(a54*a56);
+  a02=(a02-a42);
+  a51=(a29*a51);
+  a42=(a51*a19);
+  a02=(a02-a42);
+  a47=(a31*a47);
+  a42=(a47*a04);
+  a02=(a02-a42);
+  a42=arg[5]? arg[5][1] : 0;
+  a44=(a44-a37);
+  a42=(a42*a44);
+  a02=(a02+a42);
+  a42=(a62*a02);
+  a61=(a61+a42);
+  a42=casadi_sq(a23);
+  a60=casadi_sq(a07);
+  a42=(a42+a60);
+  a30=(a42*a30);
+  a60=(a29*a23);
+  a09=(a31*a07);
+  a60=(a60+a09);
+  a62=(a62*a60);
+  a30=(a30-a62);
+  a61=(a61/a30);
+  a23=(a23*a61);
+  a42=(a42*a02);
+  a60=(a60*a52);
+  a42=(a42+a60);
+  a42=(a42/a30);
+  a29=(a29*a42);
+  a23=(a23-a29);
+  a07=(a07*a61);
+  a31=(a31*a42);
+  a07=(a07-a31);
+  a31=(a23+a07);
+  a42=arg[5]? arg[5][4] : 0;
+  a42=(a39*a42);
+  a50=(a50*a35);
+  a41=(a41*a44);
+  a50=(a50-a41);
+  a42=(a42*a50);
+  a42=(a28+a42);
+  a31=(a31+a42);
+  a50=arg[5]? arg[5][5] : 0;
+  a50=(a39*a50);
+  a32=(a32*a35);
+  a53=(a53*a44);
+  a32=(a32-a53);
+  a50=(a50*a32);
+  a50=(a05+a50);
+  a31=(a31+a50);
+  a32=arg[5]? arg[5][6] : 0;
+  a32=(a39*a32);
+  a43=(a43*a35);
+  a01=(a01*a44);
+  a43=(a43+a01);
+  a32=(a32*a43);
+  a32=(a34+a32);
+  a31=(a31+a32);
+  a43=arg[5]? arg[5][7] : 0;
+  a43=(a39*a43);
+  a58=(a58*a35);
+  a08=(a08*a44);
+  a58=(a58+a08);
+  a43=(a43*a58);
+  a43=(a57+a43);
+  a31=(a31+a43);
+  a58=arg[5]? arg[5][8] : 0;
+  a58=(a39*a58);
+  a06=(a06*a44);
+  a22=(a22*a35);
+  a06=(a06-a22);
+  a58=(a58*a06);
+  a58=(a24+a58);
+  a31=(a31+a58);
+  a06=arg[5]? arg[5][9] : 0;
+  a06=(a39*a06);
+  a13=(a13*a44);
+  a12=(a12*a35);
   a13=(a13-a12);
   a06=(a06*a13);
-  a06=(a57+a06);
-  a29=(a29+a06);
+  a06=(a59+a06);
+  a31=(a31+a06);
   a13=arg[5]? arg[5][10] : 0;
-  a13=(a37*a13);
-  a16=(a16*a33);
-  a17=(a17*a42);
+  a13=(a39*a13);
+  a16=(a16*a35);
+  a17=(a17*a44);
   a16=(a16-a17);
   a13=(a13*a16);
   a13=(a21+a13);
-  a29=(a29+a13);
+  a31=(a31+a13);
   a16=arg[5]? arg[5][11] : 0;
-  a16=(a37*a16);
-  a53=(a53*a33);
-  a52=(a52*a42);
-  a53=(a53-a52);
-  a16=(a16*a53);
-  a16=(a54+a16);
-  a29=(a29+a16);
-  a53=arg[5]? arg[5][12] : 0;
-  a53=(a37*a53);
-  a11=(a11*a33);
-  a04=(a04*a42);
-  a11=(a11-a04);
-  a53=(a53*a11);
-  a53=(a44+a53);
-  a29=(a29+a53);
+  a16=(a39*a16);
+  a55=(a55*a35);
+  a54=(a54*a44);
+  a55=(a55-a54);
+  a16=(a16*a55);
+  a16=(a56+a16);
+  a31=(a31+a16);
+  a55=arg[5]? arg[5][12] : 0;
+  a55=(a39*a55);
+  a11=(a11*a35);
+  a51=(a51*a44);
+  a11=(a11-a51);
+  a55=(a55*a11);
+  a55=(a19+a55);
+  a31=(a31+a55);
   a11=arg[5]? arg[5][13] : 0;
-  a37=(a37*a11);
-  a45=(a45*a33);
-  a59=(a59*a42);
-  a45=(a45-a59);
-  a37=(a37*a45);
-  a37=(a19+a37);
-  a29=(a29+a37);
-  a29=(a29+a18);
-  a29=(a29+a15);
-  a29=(a29+a36);
-  a29=(a29+a35);
-  a29=casadi_fabs(a29);
-  a45=casadi_inf;
-  a29=(a29<a45);
-  a45=(a00&&a29);
-  a59=arg[5]? arg[5][17] : 0;
-  a42=(-a59);
-  a42=casadi_fmax(a23,a42);
-  a42=casadi_fmin(a42,a59);
-  a42=(a45?a42:0);
-  if (res[0]!=0) res[0][0]=a42;
-  a42=arg[5]? arg[5][18] : 0;
-  a33=(-a42);
-  a33=casadi_fmax(a07,a33);
-  a33=casadi_fmin(a33,a42);
-  a33=(a45?a33:0);
-  if (res[0]!=0) res[0][1]=a33;
-  a33=(a29?a18:0);
-  a11=(!a29);
+  a39=(a39*a11);
+  a46=(a46*a35);
+  a47=(a47*a44);
+  a46=(a46-a47);
+  a39=(a39*a46);
+  a39=(a04+a39);
+  a31=(a31+a39);
+  a31=(a31+a18);
+  a31=(a31+a15);
+  a31=(a31+a38);
+  a31=(a31+a37);
+  a31=casadi_fabs(a31);
+  a46=casadi_inf;
+  a31=(a31<a46);
+  a46=(a00&&a31);
+  a47=arg[5]? arg[5][18] : 0;
+  a44=(-a47);
+  a44=casadi_fmax(a23,a44);
+  a44=casadi_fmin(a44,a47);
+  a44=(a46?a44:0);
+  if (res[0]!=0) res[0][0]=a44;
+  a44=arg[5]? arg[5][19] : 0;
+  a35=(-a44);
+  a35=casadi_fmax(a07,a35);
+  a35=casadi_fmin(a35,a44);
+  a35=(a46?a35:0);
+  if (res[0]!=0) res[0][1]=a35;
+  a35=(a31?a18:0);
+  a11=(!a31);
   a10=(a11?a10:0);
-  a33=(a33+a10);
-  if (res[1]!=0) res[1][0]=a33;
-  a33=(a29?a15:0);
+  a35=(a35+a10);
+  if (res[1]!=0) res[1][0]=a35;
+  a35=(a31?a15:0);
   a14=(a11?a14:0);
-  a33=(a33+a14);
-  if (res[1]!=0) res[1][1]=a33;
-  a33=(a29?a36:0);
-  a34=(a11?a34:0);
-  a33=(a33+a34);
-  if (res[1]!=0) res[1][2]=a33;
-  a33=(a29?a35:0);
-  a43=(a11?a43:0);
-  a33=(a33+a43);
-  if (res[1]!=0) res[1][3]=a33;
-  a40=(a45?a40:0);
-  a33=(!a45);
-  a26=(a33?a26:0);
-  a40=(a40+a26);
-  if (res[1]!=0) res[1][4]=a40;
-  a48=(a45?a48:0);
-  a05=(a33?a05:0);
-  a48=(a48+a05);
-  if (res[1]!=0) res[1][5]=a48;
-  a30=(a45?a30:0);
-  a32=(a33?a32:0);
-  a30=(a30+a32);
-  if (res[1]!=0) res[1][6]=a30;
-  a41=(a45?a41:0);
-  a55=(a33?a55:0);
-  a41=(a41+a55);
-  if (res[1]!=0) res[1][7]=a41;
-  a56=(a45?a56:0);
-  a24=(a33?a24:0);
-  a56=(a56+a24);
-  if (res[1]!=0) res[1][8]=a56;
-  a06=(a45?a06:0);
-  a57=(a33?a57:0);
-  a06=(a06+a57);
+  a35=(a35+a14);
+  if (res[1]!=0) res[1][1]=a35;
+  a35=(a31?a38:0);
+  a36=(a11?a36:0);
+  a35=(a35+a36);
+  if (res[1]!=0) res[1][2]=a35;
+  a35=(a31?a37:0);
+  a45=(a11?a45:0);
+  a35=(a35+a45);
+  if (res[1]!=0) res[1][3]=a35;
+  a42=(a46?a42:0);
+  a35=(!a46);
+  a28=(a35?a28:0);
+  a42=(a42+a28);
+  if (res[1]!=0) res[1][4]=a42;
+  a50=(a46?a50:0);
+  a05=(a35?a05:0);
+  a50=(a50+a05);
+  if (res[1]!=0) res[1][5]=a50;
+  a32=(a46?a32:0);
+  a34=(a35?a34:0);
+  a32=(a32+a34);
+  if (res[1]!=0) res[1][6]=a32;
+  a43=(a46?a43:0);
+  a57=(a35?a57:0);
+  a43=(a43+a57);
+  if (res[1]!=0) res[1][7]=a43;
+  a58=(a46?a58:0);
+  a24=(a35?a24:0);
+  a58=(a58+a24);
+  if (res[1]!=0) res[1][8]=a58;
+  a06=(a46?a06:0);
+  a59=(a35?a59:0);
+  a06=(a06+a59);
   if (res[1]!=0) res[1][9]=a06;
-  a13=(a45?a13:0);
-  a21=(a33?a21:0);
+  a13=(a46?a13:0);
+  a21=(a35?a21:0);
   a13=(a13+a21);
   if (res[1]!=0) res[1][10]=a13;
-  a16=(a45?a16:0);
-  a54=(a33?a54:0);
-  a16=(a16+a54);
+  a16=(a46?a16:0);
+  a56=(a35?a56:0);
+  a16=(a16+a56);
   if (res[1]!=0) res[1][11]=a16;
-  a53=(a45?a53:0);
-  a44=(a33?a44:0);
-  a53=(a53+a44);
-  if (res[1]!=0) res[1][12]=a53;
-  a45=(a45?a37:0);
-  a33=(a33?a19:0);
-  a45=(a45+a33);
-  if (res[1]!=0) res[1][13]=a45;
+  a55=(a46?a55:0);
+  a19=(a35?a19:0);
+  a55=(a55+a19);
+  if (res[1]!=0) res[1][12]=a55;
+  a46=(a46?a39:0);
+  a35=(a35?a04:0);
+  a46=(a46+a35);
+  if (res[1]!=0) res[1][13]=a46;
   a23=casadi_fabs(a23);
-  a23=(a23-a59);
+  a23=(a23-a47);
   a07=casadi_fabs(a07);
-  a07=(a07-a42);
+  a07=(a07-a44);
   a23=casadi_fmax(a23,a07);
-  a31=(a31<a23);
-  a31=(a31?a20:0);
-  a29=(a29?a31:0);
-  a31=3.;
-  a11=(a11?a31:0);
-  a29=(a29+a11);
-  a29=(a00?a29:0);
+  a33=(a33<a23);
+  a33=(a33?a20:0);
+  a31=(a31?a33:0);
+  a33=3.;
+  a11=(a11?a33:0);
+  a31=(a31+a11);
+  a31=(a00?a31:0);
   a00=(!a00);
-  a00=(a00?a49:0);
-  a29=(a29+a00);
-  if (res[2]!=0) res[2][0]=a29;
+  a00=(a00?a27:0);
+  a31=(a31+a00);
+  if (res[2]!=0) res[2][0]=a31;
   if (res[3]!=0) res[3][0]=a18;
   if (res[3]!=0) res[3][1]=a15;
-  if (res[3]!=0) res[3][2]=a36;
-  if (res[3]!=0) res[3][3]=a35;
-  if (res[3]!=0) res[3][4]=a46;
-  if (res[3]!=0) res[3][5]=a47;
-  if (res[3]!=0) res[3][6]=a38;
+  if (res[3]!=0) res[3][2]=a38;
+  if (res[3]!=0) res[3][3]=a37;
+  if (res[3]!=0) res[3][4]=a48;
+  if (res[3]!=0) res[3][5]=a49;
+  if (res[3]!=0) res[3][6]=a40;
   if (res[3]!=0) res[3][7]=a03;
   if (res[3]!=0) res[3][8]=a25;
+  if (res[3]!=0) res[3][9]=a26;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f16(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_step_checkout(void) {
@@ -3928,12 +4331,12 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_step_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_step_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s6;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s8;
+    case 5: return casadi_s5;
     default: return 0;
   }
 }
@@ -3941,9 +4344,9 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_step_sparsity_in(casadi_int i)
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_step_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s7;
-    case 2: return casadi_s3;
-    case 3: return casadi_s9;
+    case 1: return casadi_s6;
+    case 2: return casadi_s7;
+    case 3: return casadi_s3;
     default: return 0;
   }
 }
@@ -3964,14 +4367,14 @@ CASADI_SYMBOL_EXPORT int fivebar_na_step_work_bytes(casadi_int *sz_arg, casadi_i
   return 0;
 }
 
-/* fivebar_na_proj_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[19])->(tau_a[2],state_next[14],status,diag[9]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_proj_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[20])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
   casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
   casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
-  casadi_real a60, a61, a62, a63;
+  casadi_real a60, a61, a62, a63, a64;
   a00=arg[5]? arg[5][16] : 0;
   a01=arg[1]? arg[1][0] : 0;
   a02=sin(a01);
@@ -4052,497 +4455,524 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a20=2.;
   a25=(a25/a20);
   a00=(a00<=a25);
+  a23=arg[5]? arg[5][17] : 0;
+  a26=5.0000000000000000e-01;
+  a27=1.;
+  a28=casadi_sq(a19);
+  a29=casadi_sq(a04);
+  a28=(a28-a29);
+  a29=casadi_sq(a21);
+  a30=casadi_sq(a16);
+  a29=(a29-a30);
+  a28=(a28+a29);
+  a28=casadi_sq(a28);
+  a29=(2.*a19);
+  a29=(a29*a04);
+  a30=(2.*a21);
+  a30=(a30*a16);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a28=(a28+a29);
+  a28=sqrt(a28);
+  a28=(a26*a28);
+  a28=(a27-a28);
+  a29=casadi_fabs(a28);
+  a28=(a28+a29);
+  a26=(a26*a28);
+  a26=sqrt(a26);
+  a23=(a23<=a26);
+  a00=(a00&&a23);
   a23=(a07*a19);
-  a26=(a06*a23);
-  a27=(a05*a04);
-  a28=(a27*a22);
-  a26=(a26-a28);
-  a23=(a23/a26);
-  a27=(a27/a26);
-  a28=casadi_sq(a27);
-  a29=(a05*a16);
+  a28=(a06*a23);
+  a29=(a05*a04);
+  a30=(a29*a22);
+  a28=(a28-a30);
+  a23=(a23/a28);
+  a29=(a29/a28);
+  a30=casadi_sq(a29);
+  a31=(a05*a16);
   a07=(a07*a21);
-  a30=(a13*a07);
-  a31=(a29*a12);
-  a30=(a30-a31);
-  a29=(a29/a30);
-  a31=casadi_sq(a29);
-  a28=(a28+a31);
-  a31=arg[4]? arg[4][0] : 0;
-  a32=arg[5]? arg[5][2] : 0;
-  a33=arg[3]? arg[3][0] : 0;
-  a34=arg[0]? arg[0][2] : 0;
-  a35=arg[5]? arg[5][15] : 0;
+  a32=(a13*a07);
+  a33=(a31*a12);
+  a32=(a32-a33);
+  a31=(a31/a32);
+  a33=casadi_sq(a31);
+  a30=(a30+a33);
+  a33=arg[4]? arg[4][0] : 0;
+  a34=arg[5]? arg[5][2] : 0;
+  a35=arg[3]? arg[3][0] : 0;
+  a36=arg[0]? arg[0][2] : 0;
+  a37=arg[5]? arg[5][15] : 0;
   a18=(a22+a18);
   a18=(a18+a10);
   a10=arg[0]? arg[0][0] : 0;
-  a36=(a18-a10);
-  a37=arg[5]? arg[5][14] : 0;
-  a36=(a36/a37);
-  a36=(a36-a34);
-  a36=(a35*a36);
-  a36=(a34+a36);
-  a38=(a33-a36);
-  a39=(a32*a38);
-  a31=(a31+a39);
-  a39=(a23*a31);
-  a40=arg[4]? arg[4][1] : 0;
-  a41=arg[5]? arg[5][3] : 0;
-  a42=arg[3]? arg[3][1] : 0;
-  a43=arg[0]? arg[0][3] : 0;
+  a38=(a18-a10);
+  a39=arg[5]? arg[5][14] : 0;
+  a38=(a38/a39);
+  a38=(a38-a36);
+  a38=(a37*a38);
+  a38=(a36+a38);
+  a40=(a35-a38);
+  a41=(a34*a40);
+  a33=(a33+a41);
+  a41=(a23*a33);
+  a42=arg[4]? arg[4][1] : 0;
+  a43=arg[5]? arg[5][3] : 0;
+  a44=arg[3]? arg[3][1] : 0;
+  a45=arg[0]? arg[0][3] : 0;
   a15=(a15+a17);
   a15=(a15+a03);
   a15=(a15+a14);
   a14=arg[0]? arg[0][1] : 0;
   a03=(a15-a14);
-  a03=(a03/a37);
-  a03=(a03-a43);
-  a35=(a35*a03);
-  a35=(a43+a35);
-  a03=(a42-a35);
-  a17=(a41*a03);
-  a40=(a40+a17);
-  a17=(a27*a40);
-  a39=(a39-a17);
-  a17=(a23*a36);
-  a44=(a27*a35);
-  a17=(a17-a44);
-  a44=(a05*a17);
-  a45=(a44*a02);
-  a46=arg[2]? arg[2][0] : 0;
-  a46=(a46-a18);
-  a32=(a32*a46);
-  a33=(a33+a32);
-  a32=(a23*a33);
-  a47=arg[2]? arg[2][1] : 0;
-  a47=(a47-a15);
-  a41=(a41*a47);
-  a42=(a42+a41);
-  a41=(a27*a42);
-  a32=(a32-a41);
-  a45=(a45*a32);
-  a06=(a06/a26);
-  a41=(a06*a35);
-  a22=(a22/a26);
-  a26=(a22*a36);
-  a41=(a41-a26);
-  a26=(a05*a41);
-  a48=(a26*a04);
-  a49=(a06*a42);
-  a50=(a22*a33);
-  a49=(a49-a50);
-  a48=(a48*a49);
-  a45=(a45+a48);
-  a48=(a27*a45);
-  a44=(a44*a01);
-  a44=(a44*a32);
-  a26=(a26*a19);
-  a26=(a26*a49);
-  a44=(a44+a26);
-  a26=(a23*a44);
-  a48=(a48-a26);
-  a39=(a39+a48);
-  a48=(a23*a39);
-  a26=arg[0]? arg[0][4] : 0;
-  a50=(a48*a26);
-  a07=(a07/a30);
-  a51=(a07*a31);
-  a52=(a29*a40);
+  a03=(a03/a39);
+  a03=(a03-a45);
+  a37=(a37*a03);
+  a37=(a45+a37);
+  a03=(a44-a37);
+  a17=(a43*a03);
+  a42=(a42+a17);
+  a17=(a29*a42);
+  a41=(a41-a17);
+  a17=(a23*a38);
+  a46=(a29*a37);
+  a17=(a17-a46);
+  a46=(a05*a17);
+  a47=(a46*a02);
+  a48=arg[2]? arg[2][0] : 0;
+  a48=(a48-a18);
+  a34=(a34*a48);
+  a35=(a35+a34);
+  a34=(a23*a35);
+  a49=arg[2]? arg[2][1] : 0;
+  a49=(a49-a15);
+  a43=(a43*a49);
+  a44=(a44+a43);
+  a43=(a29*a44);
+  a34=(a34-a43);
+  a47=(a47*a34);
+  a06=(a06/a28);
+  a43=(a06*a37);
+  a22=(a22/a28);
+  a28=(a22*a38);
+  a43=(a43-a28);
+  a28=(a05*a43);
+  a50=(a28*a04);
+  a51=(a06*a44);
+  a52=(a22*a35);
   a51=(a51-a52);
-  a52=(a07*a36);
-  a53=(a29*a35);
-  a52=(a52-a53);
-  a53=(a05*a52);
-  a54=(a53*a09);
-  a55=(a07*a33);
-  a56=(a29*a42);
-  a55=(a55-a56);
-  a54=(a54*a55);
-  a13=(a13/a30);
-  a56=(a13*a35);
-  a12=(a12/a30);
-  a30=(a12*a36);
-  a56=(a56-a30);
-  a05=(a05*a56);
-  a30=(a05*a16);
-  a57=(a13*a42);
-  a58=(a12*a33);
+  a50=(a50*a51);
+  a47=(a47+a50);
+  a50=(a29*a47);
+  a46=(a46*a01);
+  a46=(a46*a34);
+  a28=(a28*a19);
+  a28=(a28*a51);
+  a46=(a46+a28);
+  a28=(a23*a46);
+  a50=(a50-a28);
+  a41=(a41+a50);
+  a50=(a23*a41);
+  a28=arg[0]? arg[0][4] : 0;
+  a52=(a50*a28);
+  a07=(a07/a32);
+  a53=(a07*a33);
+  a54=(a31*a42);
+  a53=(a53-a54);
+  a54=(a07*a38);
+  a55=(a31*a37);
+  a54=(a54-a55);
+  a55=(a05*a54);
+  a56=(a55*a09);
+  a57=(a07*a35);
+  a58=(a31*a44);
   a57=(a57-a58);
-  a30=(a30*a57);
-  a54=(a54+a30);
-  a30=(a29*a54);
-  a53=(a53*a08);
-  a53=(a53*a55);
+  a56=(a56*a57);
+  a13=(a13/a32);
+  a58=(a13*a37);
+  a12=(a12/a32);
+  a32=(a12*a38);
+  a58=(a58-a32);
+  a05=(a05*a58);
+  a32=(a05*a16);
+  a59=(a13*a44);
+  a60=(a12*a35);
+  a59=(a59-a60);
+  a32=(a32*a59);
+  a56=(a56+a32);
+  a32=(a31*a56);
+  a55=(a55*a08);
+  a55=(a55*a57);
   a05=(a05*a21);
-  a05=(a05*a57);
-  a53=(a53+a05);
-  a05=(a07*a53);
-  a30=(a30-a05);
-  a51=(a51+a30);
-  a30=(a07*a51);
+  a05=(a05*a59);
+  a55=(a55+a05);
+  a05=(a07*a55);
+  a32=(a32-a05);
+  a53=(a53+a32);
+  a32=(a07*a53);
   a05=arg[0]? arg[0][5] : 0;
-  a58=(a30*a05);
-  a50=(a50+a58);
-  a58=(a06*a40);
-  a59=(a22*a31);
-  a58=(a58-a59);
-  a44=(a22*a44);
-  a45=(a06*a45);
-  a44=(a44-a45);
-  a58=(a58+a44);
+  a60=(a32*a05);
+  a52=(a52+a60);
+  a60=(a06*a42);
+  a61=(a22*a33);
+  a60=(a60-a61);
+  a46=(a22*a46);
+  a47=(a06*a47);
+  a46=(a46-a47);
+  a60=(a60+a46);
   a01=(a01*a19);
   a02=(a02*a04);
   a01=(a01+a02);
-  a02=(a58*a01);
-  a41=(a41*a49);
-  a41=(a41*a11);
-  a02=(a02+a41);
-  a41=(a23*a02);
-  a01=(a39*a01);
-  a32=(a17*a32);
-  a32=(a32*a11);
-  a01=(a01-a32);
-  a32=(a22*a01);
-  a41=(a41-a32);
-  a32=arg[0]? arg[0][6] : 0;
-  a11=(a41*a32);
-  a50=(a50+a11);
-  a40=(a13*a40);
-  a31=(a12*a31);
-  a40=(a40-a31);
-  a53=(a12*a53);
-  a54=(a13*a54);
-  a53=(a53-a54);
-  a40=(a40+a53);
+  a02=(a60*a01);
+  a43=(a43*a51);
+  a43=(a43*a11);
+  a02=(a02+a43);
+  a43=(a23*a02);
+  a01=(a41*a01);
+  a34=(a17*a34);
+  a34=(a34*a11);
+  a01=(a01-a34);
+  a34=(a22*a01);
+  a43=(a43-a34);
+  a34=arg[0]? arg[0][6] : 0;
+  a11=(a43*a34);
+  a52=(a52+a11);
+  a42=(a13*a42);
+  a33=(a12*a33);
+  a42=(a42-a33);
+  a55=(a12*a55);
+  a56=(a13*a56);
+  a55=(a55-a56);
+  a42=(a42+a55);
   a08=(a08*a21);
   a09=(a09*a16);
   a08=(a08+a09);
-  a09=(a40*a08);
-  a56=(a56*a57);
-  a56=(a56*a24);
-  a09=(a09+a56);
-  a56=(a07*a09);
-  a08=(a51*a08);
-  a55=(a52*a55);
-  a55=(a55*a24);
-  a08=(a08-a55);
-  a55=(a12*a08);
-  a56=(a56-a55);
-  a55=arg[0]? arg[0][7] : 0;
-  a24=(a56*a55);
-  a50=(a50+a24);
-  a22=(a22*a58);
+  a09=(a42*a08);
+  a58=(a58*a59);
+  a58=(a58*a24);
+  a09=(a09+a58);
+  a58=(a07*a09);
+  a08=(a53*a08);
+  a57=(a54*a57);
+  a57=(a57*a24);
+  a08=(a08-a57);
+  a57=(a12*a08);
+  a58=(a58-a57);
+  a57=arg[0]? arg[0][7] : 0;
+  a24=(a58*a57);
+  a52=(a52+a24);
+  a22=(a22*a60);
   a24=arg[0]? arg[0][8] : 0;
-  a57=(a22*a24);
-  a50=(a50-a57);
-  a12=(a12*a40);
-  a57=arg[0]? arg[0][9] : 0;
-  a16=(a12*a57);
-  a50=(a50-a16);
+  a59=(a22*a24);
+  a52=(a52-a59);
+  a12=(a12*a42);
+  a59=arg[0]? arg[0][9] : 0;
+  a16=(a12*a59);
+  a52=(a52-a16);
   a16=(a23*a17);
   a21=arg[0]? arg[0][10] : 0;
-  a53=(a16*a21);
-  a50=(a50+a53);
-  a53=(a07*a52);
-  a54=arg[0]? arg[0][11] : 0;
-  a31=(a53*a54);
-  a50=(a50+a31);
-  a31=0.;
-  a11=(a31<=a17);
-  a49=1.;
-  a04=(a11?a49:0);
+  a55=(a16*a21);
+  a52=(a52+a55);
+  a55=(a07*a54);
+  a56=arg[0]? arg[0][11] : 0;
+  a33=(a55*a56);
+  a52=(a52+a33);
+  a33=0.;
+  a11=(a33<=a17);
+  a51=(a11?a27:0);
   a11=(!a11);
-  a19=-1.;
-  a11=(a11?a19:0);
-  a04=(a04+a11);
-  a11=(a23*a04);
-  a44=arg[0]? arg[0][12] : 0;
-  a45=(a11*a44);
-  a50=(a50+a45);
-  a45=(a31<=a52);
-  a59=(a45?a49:0);
-  a45=(!a45);
-  a45=(a45?a19:0);
-  a59=(a59+a45);
-  a45=(a07*a59);
-  a19=arg[0]? arg[0][13] : 0;
-  a60=(a45*a19);
-  a50=(a50+a60);
-  a60=arg[5]? arg[5][0] : 0;
-  a33=(a33-a36);
-  a60=(a60*a33);
-  a50=(a50+a60);
-  a60=(a28*a50);
-  a61=(a23*a27);
-  a62=(a07*a29);
-  a61=(a61+a62);
-  a01=(a06*a01);
-  a02=(a27*a02);
-  a01=(a01-a02);
-  a02=(a01*a32);
-  a39=(a27*a39);
-  a62=(a39*a26);
-  a51=(a29*a51);
-  a63=(a51*a05);
+  a04=-1.;
+  a11=(a11?a04:0);
+  a51=(a51+a11);
+  a11=(a23*a51);
+  a19=arg[0]? arg[0][12] : 0;
+  a46=(a11*a19);
+  a52=(a52+a46);
+  a46=(a33<=a54);
+  a47=(a46?a27:0);
+  a46=(!a46);
+  a46=(a46?a04:0);
+  a47=(a47+a46);
+  a46=(a07*a47);
+  a04=arg[0]? arg[0][13] : 0;
+  a61=(a46*a04);
+  a52=(a52+a61);
+  a61=arg[5]? arg[5][0] : 0;
+  a35=(a35-a38);
+  a61=(a61*a35);
+  a52=(a52+a61);
+  a61=(a30*a52);
+  a62=(a23*a29);
+  a63=(a07*a31);
   a62=(a62+a63);
-  a02=(a02-a62);
+  a01=(a06*a01);
+  a02=(a29*a02);
+  a01=(a01-a02);
+  a02=(a01*a34);
+  a41=(a29*a41);
+  a63=(a41*a28);
+  a53=(a31*a53);
+  a64=(a53*a05);
+  a63=(a63+a64);
+  a02=(a02-a63);
   a08=(a13*a08);
-  a09=(a29*a09);
+  a09=(a31*a09);
   a08=(a08-a09);
-  a09=(a08*a55);
+  a09=(a08*a57);
   a02=(a02+a09);
-  a06=(a06*a58);
-  a58=(a06*a24);
-  a02=(a02+a58);
-  a13=(a13*a40);
-  a40=(a13*a57);
-  a02=(a02+a40);
-  a17=(a27*a17);
-  a40=(a17*a21);
-  a02=(a02-a40);
-  a52=(a29*a52);
-  a40=(a52*a54);
-  a02=(a02-a40);
-  a04=(a27*a04);
-  a40=(a04*a44);
-  a02=(a02-a40);
-  a59=(a29*a59);
-  a40=(a59*a19);
-  a02=(a02-a40);
-  a40=arg[5]? arg[5][1] : 0;
-  a42=(a42-a35);
-  a40=(a40*a42);
-  a02=(a02+a40);
-  a40=(a61*a02);
-  a60=(a60+a40);
-  a40=casadi_sq(a23);
-  a58=casadi_sq(a07);
-  a40=(a40+a58);
-  a28=(a40*a28);
-  a58=(a27*a23);
-  a09=(a29*a07);
-  a58=(a58+a09);
-  a61=(a61*a58);
-  a28=(a28-a61);
-  a60=(a60/a28);
-  a23=(a23*a60);
-  a40=(a40*a02);
-  a58=(a58*a50);
-  a40=(a40+a58);
-  a40=(a40/a28);
-  a27=(a27*a40);
-  a23=(a23-a27);
-  a07=(a07*a60);
-  a29=(a29*a40);
-  a07=(a07-a29);
-  a29=(a23+a07);
-  a40=arg[5]? arg[5][4] : 0;
-  a40=(a37*a40);
-  a48=(a48*a33);
-  a39=(a39*a42);
-  a48=(a48-a39);
-  a40=(a40*a48);
-  a40=(a26+a40);
-  a48=9.9999999999999995e-07;
-  a40=casadi_fmax(a40,a48);
-  a29=(a29+a40);
-  a39=arg[5]? arg[5][5] : 0;
-  a39=(a37*a39);
-  a30=(a30*a33);
-  a51=(a51*a42);
-  a30=(a30-a51);
-  a39=(a39*a30);
-  a39=(a05+a39);
-  a39=casadi_fmax(a39,a48);
-  a29=(a29+a39);
-  a30=arg[5]? arg[5][6] : 0;
-  a30=(a37*a30);
-  a41=(a41*a33);
-  a01=(a01*a42);
-  a41=(a41+a01);
-  a30=(a30*a41);
-  a30=(a32+a30);
-  a41=arg[5]? arg[5][8] : 0;
-  a41=(a37*a41);
-  a06=(a06*a42);
-  a22=(a22*a33);
+  a06=(a06*a60);
+  a60=(a06*a24);
+  a02=(a02+a60);
+  a13=(a13*a42);
+  a42=(a13*a59);
+  a02=(a02+a42);
+  a17=(a29*a17);
+  a42=(a17*a21);
+  a02=(a02-a42);
+  a54=(a31*a54);
+  a42=(a54*a56);
+  a02=(a02-a42);
+  a51=(a29*a51);
+  a42=(a51*a19);
+  a02=(a02-a42);
+  a47=(a31*a47);
+  a42=(a47*a04);
+  a02=(a02-a42);
+  a42=arg[5]? arg[5][1] : 0;
+  a44=(a44-a37);
+  a42=(a42*a44);
+  a02=(a02+a42);
+  a42=(a62*a02);
+  a61=(a61+a42);
+  a42=casadi_sq(a23);
+  a60=casadi_sq(a07);
+  a42=(a42+a60);
+  a30=(a42*a30);
+  a60=(a29*a23);
+  a09=(a31*a07);
+  a60=(a60+a09);
+  a62=(a62*a60);
+  a30=(a30-a62);
+  a61=(a61/a30);
+  a23=(a23*a61);
+  a42=(a42*a02);
+  a60=(a60*a52);
+  a42=(a42+a60);
+  a42=(a42/a30);
+  a29=(a29*a42);
+  a23=(a23-a29);
+  a07=(a07*a61);
+  a31=(a31*a42);
+  a07=(a07-a31);
+  a31=(a23+a07);
+  a42=arg[5]? arg[5][4] : 0;
+  a42=(a39*a42);
+  a50=(a50*a35);
+  a41=(a41*a44);
+  a50=(a50-a41);
+  a42=(a42*a50);
+  a42=(a28+a42);
+  a50=9.9999999999999995e-07;
+  a42=casadi_fmax(a42,a50);
+  a31=(a31+a42);
+  a41=arg[5]? arg[5][5] : 0;
+  a41=(a39*a41);
+  a32=(a32*a35);
+  a53=(a53*a44);
+  a32=(a32-a53);
+  a41=(a41*a32);
+  a41=(a05+a41);
+  a41=casadi_fmax(a41,a50);
+  a31=(a31+a41);
+  a32=arg[5]? arg[5][6] : 0;
+  a32=(a39*a32);
+  a43=(a43*a35);
+  a01=(a01*a44);
+  a43=(a43+a01);
+  a32=(a32*a43);
+  a32=(a34+a32);
+  a43=arg[5]? arg[5][8] : 0;
+  a43=(a39*a43);
+  a06=(a06*a44);
+  a22=(a22*a35);
   a06=(a06-a22);
-  a41=(a41*a06);
-  a41=(a24+a41);
-  a41=casadi_fmax(a41,a48);
-  a06=(a40*a41);
+  a43=(a43*a06);
+  a43=(a24+a43);
+  a43=casadi_fmax(a43,a50);
+  a06=(a42*a43);
   a06=sqrt(a06);
   a22=(-a06);
-  a30=casadi_fmax(a30,a22);
-  a30=casadi_fmin(a30,a06);
-  a29=(a29+a30);
+  a32=casadi_fmax(a32,a22);
+  a32=casadi_fmin(a32,a06);
+  a31=(a31+a32);
   a06=arg[5]? arg[5][7] : 0;
-  a06=(a37*a06);
-  a56=(a56*a33);
-  a08=(a08*a42);
-  a56=(a56+a08);
-  a06=(a06*a56);
-  a06=(a55+a06);
-  a56=arg[5]? arg[5][9] : 0;
-  a56=(a37*a56);
-  a13=(a13*a42);
-  a12=(a12*a33);
+  a06=(a39*a06);
+  a58=(a58*a35);
+  a08=(a08*a44);
+  a58=(a58+a08);
+  a06=(a06*a58);
+  a06=(a57+a06);
+  a58=arg[5]? arg[5][9] : 0;
+  a58=(a39*a58);
+  a13=(a13*a44);
+  a12=(a12*a35);
   a13=(a13-a12);
-  a56=(a56*a13);
-  a56=(a57+a56);
-  a56=casadi_fmax(a56,a48);
-  a48=(a39*a56);
-  a48=sqrt(a48);
-  a13=(-a48);
+  a58=(a58*a13);
+  a58=(a59+a58);
+  a58=casadi_fmax(a58,a50);
+  a50=(a41*a58);
+  a50=sqrt(a50);
+  a13=(-a50);
   a06=casadi_fmax(a06,a13);
-  a06=casadi_fmin(a06,a48);
-  a29=(a29+a06);
-  a29=(a29+a41);
-  a29=(a29+a56);
-  a48=arg[5]? arg[5][10] : 0;
-  a48=(a37*a48);
-  a16=(a16*a33);
-  a17=(a17*a42);
+  a06=casadi_fmin(a06,a50);
+  a31=(a31+a06);
+  a31=(a31+a43);
+  a31=(a31+a58);
+  a50=arg[5]? arg[5][10] : 0;
+  a50=(a39*a50);
+  a16=(a16*a35);
+  a17=(a17*a44);
   a16=(a16-a17);
-  a48=(a48*a16);
-  a48=(a21+a48);
-  a48=casadi_fmax(a48,a31);
-  a29=(a29+a48);
+  a50=(a50*a16);
+  a50=(a21+a50);
+  a50=casadi_fmax(a50,a33);
+  a31=(a31+a50);
   a16=arg[5]? arg[5][11] : 0;
-  a16=(a37*a16);
-  a53=(a53*a33);
-  a52=(a52*a42);
-  a53=(a53-a52);
-  a16=(a16*a53);
-  a16=(a54+a16);
-  a16=casadi_fmax(a16,a31);
-  a29=(a29+a16);
-  a53=arg[5]? arg[5][12] : 0;
-  a53=(a37*a53);
-  a11=(a11*a33);
-  a04=(a04*a42);
-  a11=(a11-a04);
-  a53=(a53*a11);
-  a53=(a44+a53);
-  a53=casadi_fmax(a53,a31);
-  a29=(a29+a53);
+  a16=(a39*a16);
+  a55=(a55*a35);
+  a54=(a54*a44);
+  a55=(a55-a54);
+  a16=(a16*a55);
+  a16=(a56+a16);
+  a16=casadi_fmax(a16,a33);
+  a31=(a31+a16);
+  a55=arg[5]? arg[5][12] : 0;
+  a55=(a39*a55);
+  a11=(a11*a35);
+  a51=(a51*a44);
+  a11=(a11-a51);
+  a55=(a55*a11);
+  a55=(a19+a55);
+  a55=casadi_fmax(a55,a33);
+  a31=(a31+a55);
   a11=arg[5]? arg[5][13] : 0;
-  a37=(a37*a11);
-  a45=(a45*a33);
-  a59=(a59*a42);
-  a45=(a45-a59);
-  a37=(a37*a45);
-  a37=(a19+a37);
-  a37=casadi_fmax(a37,a31);
-  a29=(a29+a37);
-  a29=(a29+a18);
-  a29=(a29+a15);
-  a29=(a29+a36);
-  a29=(a29+a35);
-  a29=casadi_fabs(a29);
-  a45=casadi_inf;
-  a29=(a29<a45);
-  a45=(a00&&a29);
-  a59=arg[5]? arg[5][17] : 0;
-  a42=(-a59);
-  a42=casadi_fmax(a23,a42);
-  a42=casadi_fmin(a42,a59);
-  a42=(a45?a42:0);
-  if (res[0]!=0) res[0][0]=a42;
-  a42=arg[5]? arg[5][18] : 0;
-  a33=(-a42);
-  a33=casadi_fmax(a07,a33);
-  a33=casadi_fmin(a33,a42);
-  a33=(a45?a33:0);
-  if (res[0]!=0) res[0][1]=a33;
-  a33=(a29?a18:0);
-  a11=(!a29);
+  a39=(a39*a11);
+  a46=(a46*a35);
+  a47=(a47*a44);
+  a46=(a46-a47);
+  a39=(a39*a46);
+  a39=(a04+a39);
+  a39=casadi_fmax(a39,a33);
+  a31=(a31+a39);
+  a31=(a31+a18);
+  a31=(a31+a15);
+  a31=(a31+a38);
+  a31=(a31+a37);
+  a31=casadi_fabs(a31);
+  a46=casadi_inf;
+  a31=(a31<a46);
+  a46=(a00&&a31);
+  a47=arg[5]? arg[5][18] : 0;
+  a44=(-a47);
+  a44=casadi_fmax(a23,a44);
+  a44=casadi_fmin(a44,a47);
+  a44=(a46?a44:0);
+  if (res[0]!=0) res[0][0]=a44;
+  a44=arg[5]? arg[5][19] : 0;
+  a35=(-a44);
+  a35=casadi_fmax(a07,a35);
+  a35=casadi_fmin(a35,a44);
+  a35=(a46?a35:0);
+  if (res[0]!=0) res[0][1]=a35;
+  a35=(a31?a18:0);
+  a11=(!a31);
   a10=(a11?a10:0);
-  a33=(a33+a10);
-  if (res[1]!=0) res[1][0]=a33;
-  a33=(a29?a15:0);
+  a35=(a35+a10);
+  if (res[1]!=0) res[1][0]=a35;
+  a35=(a31?a15:0);
   a14=(a11?a14:0);
-  a33=(a33+a14);
-  if (res[1]!=0) res[1][1]=a33;
-  a33=(a29?a36:0);
-  a34=(a11?a34:0);
-  a33=(a33+a34);
-  if (res[1]!=0) res[1][2]=a33;
-  a33=(a29?a35:0);
-  a43=(a11?a43:0);
-  a33=(a33+a43);
-  if (res[1]!=0) res[1][3]=a33;
-  a40=(a45?a40:0);
-  a33=(!a45);
-  a26=(a33?a26:0);
-  a40=(a40+a26);
-  if (res[1]!=0) res[1][4]=a40;
-  a39=(a45?a39:0);
-  a05=(a33?a05:0);
-  a39=(a39+a05);
-  if (res[1]!=0) res[1][5]=a39;
-  a30=(a45?a30:0);
-  a32=(a33?a32:0);
-  a30=(a30+a32);
-  if (res[1]!=0) res[1][6]=a30;
-  a06=(a45?a06:0);
-  a55=(a33?a55:0);
-  a06=(a06+a55);
+  a35=(a35+a14);
+  if (res[1]!=0) res[1][1]=a35;
+  a35=(a31?a38:0);
+  a36=(a11?a36:0);
+  a35=(a35+a36);
+  if (res[1]!=0) res[1][2]=a35;
+  a35=(a31?a37:0);
+  a45=(a11?a45:0);
+  a35=(a35+a45);
+  if (res[1]!=0) res[1][3]=a35;
+  a42=(a46?a42:0);
+  a35=(!a46);
+  a28=(a35?a28:0);
+  a42=(a42+a28);
+  if (res[1]!=0) res[1][4]=a42;
+  a41=(a46?a41:0);
+  a05=(a35?a05:0);
+  a41=(a41+a05);
+  if (res[1]!=0) res[1][5]=a41;
+  a32=(a46?a32:0);
+  a34=(a35?a34:0);
+  a32=(a32+a34);
+  if (res[1]!=0) res[1][6]=a32;
+  a06=(a46?a06:0);
+  a57=(a35?a57:0);
+  a06=(a06+a57);
   if (res[1]!=0) res[1][7]=a06;
-  a41=(a45?a41:0);
-  a24=(a33?a24:0);
-  a41=(a41+a24);
-  if (res[1]!=0) res[1][8]=a41;
-  a56=(a45?a56:0);
-  a57=(a33?a57:0);
-  a56=(a56+a57);
-  if (res[1]!=0) res[1][9]=a56;
-  a48=(a45?a48:0);
-  a21=(a33?a21:0);
-  a48=(a48+a21);
-  if (res[1]!=0) res[1][10]=a48;
-  a16=(a45?a16:0);
-  a54=(a33?a54:0);
-  a16=(a16+a54);
+  a43=(a46?a43:0);
+  a24=(a35?a24:0);
+  a43=(a43+a24);
+  if (res[1]!=0) res[1][8]=a43;
+  a58=(a46?a58:0);
+  a59=(a35?a59:0);
+  a58=(a58+a59);
+  if (res[1]!=0) res[1][9]=a58;
+  a50=(a46?a50:0);
+  a21=(a35?a21:0);
+  a50=(a50+a21);
+  if (res[1]!=0) res[1][10]=a50;
+  a16=(a46?a16:0);
+  a56=(a35?a56:0);
+  a16=(a16+a56);
   if (res[1]!=0) res[1][11]=a16;
-  a53=(a45?a53:0);
-  a44=(a33?a44:0);
-  a53=(a53+a44);
-  if (res[1]!=0) res[1][12]=a53;
-  a45=(a45?a37:0);
-  a33=(a33?a19:0);
-  a45=(a45+a33);
-  if (res[1]!=0) res[1][13]=a45;
+  a55=(a46?a55:0);
+  a19=(a35?a19:0);
+  a55=(a55+a19);
+  if (res[1]!=0) res[1][12]=a55;
+  a46=(a46?a39:0);
+  a35=(a35?a04:0);
+  a46=(a46+a35);
+  if (res[1]!=0) res[1][13]=a46;
   a23=casadi_fabs(a23);
-  a23=(a23-a59);
+  a23=(a23-a47);
   a07=casadi_fabs(a07);
-  a07=(a07-a42);
+  a07=(a07-a44);
   a23=casadi_fmax(a23,a07);
-  a31=(a31<a23);
-  a31=(a31?a20:0);
-  a29=(a29?a31:0);
-  a31=3.;
-  a11=(a11?a31:0);
-  a29=(a29+a11);
-  a29=(a00?a29:0);
+  a33=(a33<a23);
+  a33=(a33?a20:0);
+  a31=(a31?a33:0);
+  a33=3.;
+  a11=(a11?a33:0);
+  a31=(a31+a11);
+  a31=(a00?a31:0);
   a00=(!a00);
-  a00=(a00?a49:0);
-  a29=(a29+a00);
-  if (res[2]!=0) res[2][0]=a29;
+  a00=(a00?a27:0);
+  a31=(a31+a00);
+  if (res[2]!=0) res[2][0]=a31;
   if (res[3]!=0) res[3][0]=a18;
   if (res[3]!=0) res[3][1]=a15;
-  if (res[3]!=0) res[3][2]=a36;
-  if (res[3]!=0) res[3][3]=a35;
-  if (res[3]!=0) res[3][4]=a46;
-  if (res[3]!=0) res[3][5]=a47;
-  if (res[3]!=0) res[3][6]=a38;
+  if (res[3]!=0) res[3][2]=a38;
+  if (res[3]!=0) res[3][3]=a37;
+  if (res[3]!=0) res[3][4]=a48;
+  if (res[3]!=0) res[3][5]=a49;
+  if (res[3]!=0) res[3][6]=a40;
   if (res[3]!=0) res[3][7]=a03;
   if (res[3]!=0) res[3][8]=a25;
+  if (res[3]!=0) res[3][9]=a26;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_step_checkout(void) {
@@ -4592,12 +5022,12 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_step_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_step_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s6;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s8;
+    case 5: return casadi_s5;
     default: return 0;
   }
 }
@@ -4605,9 +5035,9 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_step_sparsity_in(casadi_i
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_step_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s7;
-    case 2: return casadi_s3;
-    case 3: return casadi_s9;
+    case 1: return casadi_s6;
+    case 2: return casadi_s7;
+    case 3: return casadi_s3;
     default: return 0;
   }
 }
@@ -4628,13 +5058,13 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_step_work_bytes(casadi_int *sz_arg, cas
   return 0;
 }
 
-/* fivebar_apd_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[9])->(tau_a[2],state_next[14],status,diag[9]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_apd_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[10])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
   casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
-  casadi_real a48, a49, a50, a51, a52;
+  casadi_real a48, a49, a50, a51, a52, a53, a54;
   a00=arg[5]? arg[5][6] : 0;
   a01=arg[1]? arg[1][0] : 0;
   a02=sin(a01);
@@ -4715,402 +5145,429 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a20=2.;
   a25=(a25/a20);
   a00=(a00<=a25);
+  a23=arg[5]? arg[5][7] : 0;
+  a26=5.0000000000000000e-01;
+  a27=1.;
+  a28=casadi_sq(a19);
+  a29=casadi_sq(a04);
+  a28=(a28-a29);
+  a29=casadi_sq(a21);
+  a30=casadi_sq(a16);
+  a29=(a29-a30);
+  a28=(a28+a29);
+  a28=casadi_sq(a28);
+  a29=(2.*a19);
+  a29=(a29*a04);
+  a30=(2.*a21);
+  a30=(a30*a16);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a28=(a28+a29);
+  a28=sqrt(a28);
+  a28=(a26*a28);
+  a28=(a27-a28);
+  a29=casadi_fabs(a28);
+  a28=(a28+a29);
+  a26=(a26*a28);
+  a26=sqrt(a26);
+  a23=(a23<=a26);
+  a00=(a00&&a23);
   a23=(a07*a19);
-  a26=(a06*a23);
-  a27=(a05*a04);
-  a28=(a27*a22);
-  a26=(a26-a28);
-  a23=(a23/a26);
-  a27=(a27/a26);
-  a28=casadi_sq(a27);
-  a29=(a05*a16);
+  a28=(a06*a23);
+  a29=(a05*a04);
+  a30=(a29*a22);
+  a28=(a28-a30);
+  a23=(a23/a28);
+  a29=(a29/a28);
+  a30=casadi_sq(a29);
+  a31=(a05*a16);
   a07=(a07*a21);
-  a30=(a13*a07);
-  a31=(a29*a12);
-  a30=(a30-a31);
-  a29=(a29/a30);
-  a31=casadi_sq(a29);
-  a28=(a28+a31);
-  a31=arg[4]? arg[4][0] : 0;
-  a32=(a23*a31);
-  a33=arg[4]? arg[4][1] : 0;
-  a34=(a27*a33);
-  a32=(a32-a34);
-  a34=arg[0]? arg[0][2] : 0;
-  a35=arg[5]? arg[5][5] : 0;
+  a32=(a13*a07);
+  a33=(a31*a12);
+  a32=(a32-a33);
+  a31=(a31/a32);
+  a33=casadi_sq(a31);
+  a30=(a30+a33);
+  a33=arg[4]? arg[4][0] : 0;
+  a34=(a23*a33);
+  a35=arg[4]? arg[4][1] : 0;
+  a36=(a29*a35);
+  a34=(a34-a36);
+  a36=arg[0]? arg[0][2] : 0;
+  a37=arg[5]? arg[5][5] : 0;
   a18=(a22+a18);
   a18=(a18+a10);
   a10=arg[0]? arg[0][0] : 0;
-  a36=(a18-a10);
-  a37=arg[5]? arg[5][4] : 0;
-  a36=(a36/a37);
-  a36=(a36-a34);
-  a36=(a35*a36);
-  a36=(a34+a36);
-  a38=(a23*a36);
-  a39=arg[0]? arg[0][3] : 0;
+  a38=(a18-a10);
+  a39=arg[5]? arg[5][4] : 0;
+  a38=(a38/a39);
+  a38=(a38-a36);
+  a38=(a37*a38);
+  a38=(a36+a38);
+  a40=(a23*a38);
+  a41=arg[0]? arg[0][3] : 0;
   a15=(a15+a17);
   a15=(a15+a03);
   a15=(a15+a14);
   a14=arg[0]? arg[0][1] : 0;
   a03=(a15-a14);
-  a03=(a03/a37);
-  a03=(a03-a39);
-  a35=(a35*a03);
-  a35=(a39+a35);
-  a03=(a27*a35);
-  a38=(a38-a03);
-  a03=(a05*a38);
-  a37=(a03*a02);
+  a03=(a03/a39);
+  a03=(a03-a41);
+  a37=(a37*a03);
+  a37=(a41+a37);
+  a03=(a29*a37);
+  a40=(a40-a03);
+  a03=(a05*a40);
+  a39=(a03*a02);
   a17=arg[3]? arg[3][0] : 0;
-  a40=(a23*a17);
-  a41=arg[3]? arg[3][1] : 0;
-  a42=(a27*a41);
-  a40=(a40-a42);
-  a37=(a37*a40);
-  a06=(a06/a26);
-  a42=(a06*a35);
-  a22=(a22/a26);
-  a26=(a22*a36);
-  a42=(a42-a26);
-  a26=(a05*a42);
-  a43=(a26*a04);
-  a44=(a06*a41);
-  a45=(a22*a17);
-  a44=(a44-a45);
-  a43=(a43*a44);
-  a37=(a37+a43);
-  a43=(a27*a37);
-  a03=(a03*a01);
-  a03=(a03*a40);
-  a26=(a26*a19);
-  a26=(a26*a44);
-  a03=(a03+a26);
-  a26=(a23*a03);
-  a43=(a43-a26);
-  a32=(a32+a43);
-  a43=(a23*a32);
-  a26=arg[0]? arg[0][4] : 0;
-  a43=(a43*a26);
-  a07=(a07/a30);
-  a45=(a07*a31);
-  a46=(a29*a33);
-  a45=(a45-a46);
-  a46=(a07*a36);
-  a47=(a29*a35);
+  a42=(a23*a17);
+  a43=arg[3]? arg[3][1] : 0;
+  a44=(a29*a43);
+  a42=(a42-a44);
+  a39=(a39*a42);
+  a06=(a06/a28);
+  a44=(a06*a37);
+  a22=(a22/a28);
+  a28=(a22*a38);
+  a44=(a44-a28);
+  a28=(a05*a44);
+  a45=(a28*a04);
+  a46=(a06*a43);
+  a47=(a22*a17);
   a46=(a46-a47);
-  a47=(a05*a46);
-  a48=(a47*a09);
-  a49=(a07*a17);
-  a50=(a29*a41);
-  a49=(a49-a50);
-  a48=(a48*a49);
-  a13=(a13/a30);
-  a50=(a13*a35);
-  a12=(a12/a30);
-  a30=(a12*a36);
-  a50=(a50-a30);
-  a05=(a05*a50);
-  a30=(a05*a16);
-  a51=(a13*a41);
-  a52=(a12*a17);
+  a45=(a45*a46);
+  a39=(a39+a45);
+  a45=(a29*a39);
+  a03=(a03*a01);
+  a03=(a03*a42);
+  a28=(a28*a19);
+  a28=(a28*a46);
+  a03=(a03+a28);
+  a28=(a23*a03);
+  a45=(a45-a28);
+  a34=(a34+a45);
+  a45=(a23*a34);
+  a28=arg[0]? arg[0][4] : 0;
+  a45=(a45*a28);
+  a07=(a07/a32);
+  a47=(a07*a33);
+  a48=(a31*a35);
+  a47=(a47-a48);
+  a48=(a07*a38);
+  a49=(a31*a37);
+  a48=(a48-a49);
+  a49=(a05*a48);
+  a50=(a49*a09);
+  a51=(a07*a17);
+  a52=(a31*a43);
   a51=(a51-a52);
-  a30=(a30*a51);
-  a48=(a48+a30);
-  a30=(a29*a48);
-  a47=(a47*a08);
-  a47=(a47*a49);
+  a50=(a50*a51);
+  a13=(a13/a32);
+  a52=(a13*a37);
+  a12=(a12/a32);
+  a32=(a12*a38);
+  a52=(a52-a32);
+  a05=(a05*a52);
+  a32=(a05*a16);
+  a53=(a13*a43);
+  a54=(a12*a17);
+  a53=(a53-a54);
+  a32=(a32*a53);
+  a50=(a50+a32);
+  a32=(a31*a50);
+  a49=(a49*a08);
+  a49=(a49*a51);
   a05=(a05*a21);
-  a05=(a05*a51);
-  a47=(a47+a05);
-  a05=(a07*a47);
-  a30=(a30-a05);
-  a45=(a45+a30);
-  a30=(a07*a45);
+  a05=(a05*a53);
+  a49=(a49+a05);
+  a05=(a07*a49);
+  a32=(a32-a05);
+  a47=(a47+a32);
+  a32=(a07*a47);
   a05=arg[0]? arg[0][5] : 0;
-  a30=(a30*a05);
-  a43=(a43+a30);
-  a30=(a06*a33);
-  a52=(a22*a31);
-  a30=(a30-a52);
+  a32=(a32*a05);
+  a45=(a45+a32);
+  a32=(a06*a35);
+  a54=(a22*a33);
+  a32=(a32-a54);
   a03=(a22*a03);
-  a37=(a06*a37);
-  a03=(a03-a37);
-  a30=(a30+a03);
+  a39=(a06*a39);
+  a03=(a03-a39);
+  a32=(a32+a03);
   a01=(a01*a19);
   a02=(a02*a04);
   a01=(a01+a02);
-  a02=(a30*a01);
-  a42=(a42*a44);
+  a02=(a32*a01);
+  a44=(a44*a46);
+  a44=(a44*a11);
+  a02=(a02+a44);
+  a44=(a23*a02);
+  a01=(a34*a01);
+  a42=(a40*a42);
   a42=(a42*a11);
-  a02=(a02+a42);
-  a42=(a23*a02);
-  a01=(a32*a01);
-  a40=(a38*a40);
-  a40=(a40*a11);
-  a01=(a01-a40);
-  a40=(a22*a01);
-  a42=(a42-a40);
-  a40=arg[0]? arg[0][6] : 0;
-  a42=(a42*a40);
-  a43=(a43+a42);
-  a33=(a13*a33);
-  a31=(a12*a31);
-  a33=(a33-a31);
-  a47=(a12*a47);
-  a48=(a13*a48);
-  a47=(a47-a48);
-  a33=(a33+a47);
+  a01=(a01-a42);
+  a42=(a22*a01);
+  a44=(a44-a42);
+  a42=arg[0]? arg[0][6] : 0;
+  a44=(a44*a42);
+  a45=(a45+a44);
+  a35=(a13*a35);
+  a33=(a12*a33);
+  a35=(a35-a33);
+  a49=(a12*a49);
+  a50=(a13*a50);
+  a49=(a49-a50);
+  a35=(a35+a49);
   a08=(a08*a21);
   a09=(a09*a16);
   a08=(a08+a09);
-  a09=(a33*a08);
-  a50=(a50*a51);
-  a50=(a50*a24);
-  a09=(a09+a50);
-  a50=(a07*a09);
-  a08=(a45*a08);
-  a49=(a46*a49);
-  a49=(a49*a24);
-  a08=(a08-a49);
-  a49=(a12*a08);
-  a50=(a50-a49);
-  a49=arg[0]? arg[0][7] : 0;
-  a50=(a50*a49);
-  a43=(a43+a50);
-  a22=(a22*a30);
-  a50=arg[0]? arg[0][8] : 0;
-  a22=(a22*a50);
-  a43=(a43-a22);
-  a12=(a12*a33);
+  a09=(a35*a08);
+  a52=(a52*a53);
+  a52=(a52*a24);
+  a09=(a09+a52);
+  a52=(a07*a09);
+  a08=(a47*a08);
+  a51=(a48*a51);
+  a51=(a51*a24);
+  a08=(a08-a51);
+  a51=(a12*a08);
+  a52=(a52-a51);
+  a51=arg[0]? arg[0][7] : 0;
+  a52=(a52*a51);
+  a45=(a45+a52);
+  a22=(a22*a32);
+  a52=arg[0]? arg[0][8] : 0;
+  a22=(a22*a52);
+  a45=(a45-a22);
+  a12=(a12*a35);
   a22=arg[0]? arg[0][9] : 0;
   a12=(a12*a22);
-  a43=(a43-a12);
-  a12=(a23*a38);
+  a45=(a45-a12);
+  a12=(a23*a40);
   a24=arg[0]? arg[0][10] : 0;
   a12=(a12*a24);
-  a43=(a43+a12);
-  a12=(a07*a46);
-  a51=arg[0]? arg[0][11] : 0;
-  a12=(a12*a51);
-  a43=(a43+a12);
+  a45=(a45+a12);
+  a12=(a07*a48);
+  a53=arg[0]? arg[0][11] : 0;
+  a12=(a12*a53);
+  a45=(a45+a12);
   a12=0.;
-  a16=(a12<=a38);
-  a21=1.;
-  a47=(a16?a21:0);
+  a16=(a12<=a40);
+  a21=(a16?a27:0);
   a16=(!a16);
-  a48=-1.;
-  a16=(a16?a48:0);
-  a47=(a47+a16);
-  a16=(a23*a47);
-  a31=arg[0]? arg[0][12] : 0;
-  a16=(a16*a31);
-  a43=(a43+a16);
-  a16=(a12<=a46);
-  a42=(a16?a21:0);
+  a49=-1.;
+  a16=(a16?a49:0);
+  a21=(a21+a16);
+  a16=(a23*a21);
+  a50=arg[0]? arg[0][12] : 0;
+  a16=(a16*a50);
+  a45=(a45+a16);
+  a16=(a12<=a48);
+  a33=(a16?a27:0);
   a16=(!a16);
-  a16=(a16?a48:0);
-  a42=(a42+a16);
-  a16=(a07*a42);
-  a48=arg[0]? arg[0][13] : 0;
-  a16=(a16*a48);
-  a43=(a43+a16);
+  a16=(a16?a49:0);
+  a33=(a33+a16);
+  a16=(a07*a33);
+  a49=arg[0]? arg[0][13] : 0;
+  a16=(a16*a49);
+  a45=(a45+a16);
   a16=arg[5]? arg[5][0] : 0;
-  a11=arg[2]? arg[2][0] : 0;
-  a11=(a11-a18);
-  a16=(a16*a11);
-  a43=(a43+a16);
+  a44=arg[2]? arg[2][0] : 0;
+  a44=(a44-a18);
+  a16=(a16*a44);
+  a45=(a45+a16);
   a16=arg[5]? arg[5][2] : 0;
-  a17=(a17-a36);
+  a17=(a17-a38);
   a16=(a16*a17);
-  a43=(a43+a16);
-  a16=(a28*a43);
-  a44=(a23*a27);
-  a04=(a07*a29);
-  a44=(a44+a04);
+  a45=(a45+a16);
+  a16=(a30*a45);
+  a11=(a23*a29);
+  a46=(a07*a31);
+  a11=(a11+a46);
   a01=(a06*a01);
-  a02=(a27*a02);
+  a02=(a29*a02);
   a01=(a01-a02);
-  a01=(a01*a40);
-  a32=(a27*a32);
-  a32=(a32*a26);
-  a45=(a29*a45);
-  a45=(a45*a05);
-  a32=(a32+a45);
-  a01=(a01-a32);
+  a01=(a01*a42);
+  a34=(a29*a34);
+  a34=(a34*a28);
+  a47=(a31*a47);
+  a47=(a47*a05);
+  a34=(a34+a47);
+  a01=(a01-a34);
   a08=(a13*a08);
-  a09=(a29*a09);
+  a09=(a31*a09);
   a08=(a08-a09);
-  a08=(a08*a49);
+  a08=(a08*a51);
   a01=(a01+a08);
-  a06=(a06*a30);
-  a06=(a06*a50);
+  a06=(a06*a32);
+  a06=(a06*a52);
   a01=(a01+a06);
-  a13=(a13*a33);
+  a13=(a13*a35);
   a13=(a13*a22);
   a01=(a01+a13);
-  a38=(a27*a38);
-  a38=(a38*a24);
-  a01=(a01-a38);
-  a46=(a29*a46);
-  a46=(a46*a51);
-  a01=(a01-a46);
-  a47=(a27*a47);
-  a47=(a47*a31);
-  a01=(a01-a47);
-  a42=(a29*a42);
-  a42=(a42*a48);
-  a01=(a01-a42);
-  a42=arg[5]? arg[5][1] : 0;
-  a47=arg[2]? arg[2][1] : 0;
-  a47=(a47-a15);
-  a42=(a42*a47);
-  a01=(a01+a42);
-  a42=arg[5]? arg[5][3] : 0;
-  a41=(a41-a35);
-  a42=(a42*a41);
-  a01=(a01+a42);
-  a42=(a44*a01);
-  a16=(a16+a42);
-  a42=casadi_sq(a23);
-  a46=casadi_sq(a07);
-  a42=(a42+a46);
-  a28=(a42*a28);
-  a46=(a27*a23);
-  a38=(a29*a07);
-  a46=(a46+a38);
-  a44=(a44*a46);
-  a28=(a28-a44);
-  a16=(a16/a28);
+  a40=(a29*a40);
+  a40=(a40*a24);
+  a01=(a01-a40);
+  a48=(a31*a48);
+  a48=(a48*a53);
+  a01=(a01-a48);
+  a21=(a29*a21);
+  a21=(a21*a50);
+  a01=(a01-a21);
+  a33=(a31*a33);
+  a33=(a33*a49);
+  a01=(a01-a33);
+  a33=arg[5]? arg[5][1] : 0;
+  a21=arg[2]? arg[2][1] : 0;
+  a21=(a21-a15);
+  a33=(a33*a21);
+  a01=(a01+a33);
+  a33=arg[5]? arg[5][3] : 0;
+  a43=(a43-a37);
+  a33=(a33*a43);
+  a01=(a01+a33);
+  a33=(a11*a01);
+  a16=(a16+a33);
+  a33=casadi_sq(a23);
+  a48=casadi_sq(a07);
+  a33=(a33+a48);
+  a30=(a33*a30);
+  a48=(a29*a23);
+  a40=(a31*a07);
+  a48=(a48+a40);
+  a11=(a11*a48);
+  a30=(a30-a11);
+  a16=(a16/a30);
   a23=(a23*a16);
-  a42=(a42*a01);
-  a46=(a46*a43);
-  a42=(a42+a46);
-  a42=(a42/a28);
-  a27=(a27*a42);
-  a23=(a23-a27);
+  a33=(a33*a01);
+  a48=(a48*a45);
+  a33=(a33+a48);
+  a33=(a33/a30);
+  a29=(a29*a33);
+  a23=(a23-a29);
   a07=(a07*a16);
-  a29=(a29*a42);
-  a07=(a07-a29);
-  a29=(a23+a07);
-  a29=(a29+a26);
-  a29=(a29+a05);
-  a29=(a29+a40);
-  a29=(a29+a49);
-  a29=(a29+a50);
-  a29=(a29+a22);
-  a29=(a29+a24);
-  a29=(a29+a51);
-  a29=(a29+a31);
-  a29=(a29+a48);
-  a29=(a29+a18);
-  a29=(a29+a15);
-  a29=(a29+a36);
-  a29=(a29+a35);
-  a29=casadi_fabs(a29);
-  a42=casadi_inf;
-  a29=(a29<a42);
-  a42=(a00&&a29);
-  a16=arg[5]? arg[5][7] : 0;
-  a27=(-a16);
-  a27=casadi_fmax(a23,a27);
-  a27=casadi_fmin(a27,a16);
-  a27=(a42?a27:0);
-  if (res[0]!=0) res[0][0]=a27;
-  a27=arg[5]? arg[5][8] : 0;
-  a28=(-a27);
-  a28=casadi_fmax(a07,a28);
-  a28=casadi_fmin(a28,a27);
-  a28=(a42?a28:0);
-  if (res[0]!=0) res[0][1]=a28;
-  a28=(a29?a18:0);
-  a46=(!a29);
-  a10=(a46?a10:0);
-  a28=(a28+a10);
-  if (res[1]!=0) res[1][0]=a28;
-  a28=(a29?a15:0);
-  a14=(a46?a14:0);
-  a28=(a28+a14);
-  if (res[1]!=0) res[1][1]=a28;
-  a28=(a29?a36:0);
-  a34=(a46?a34:0);
-  a28=(a28+a34);
-  if (res[1]!=0) res[1][2]=a28;
-  a28=(a29?a35:0);
-  a39=(a46?a39:0);
-  a28=(a28+a39);
-  if (res[1]!=0) res[1][3]=a28;
-  a28=(a42?a26:0);
-  a39=(!a42);
-  a26=(a39?a26:0);
-  a28=(a28+a26);
-  if (res[1]!=0) res[1][4]=a28;
-  a28=(a42?a05:0);
-  a05=(a39?a05:0);
-  a28=(a28+a05);
-  if (res[1]!=0) res[1][5]=a28;
-  a28=(a42?a40:0);
-  a40=(a39?a40:0);
-  a28=(a28+a40);
-  if (res[1]!=0) res[1][6]=a28;
-  a28=(a42?a49:0);
-  a49=(a39?a49:0);
-  a28=(a28+a49);
-  if (res[1]!=0) res[1][7]=a28;
-  a28=(a42?a50:0);
-  a50=(a39?a50:0);
-  a28=(a28+a50);
-  if (res[1]!=0) res[1][8]=a28;
-  a28=(a42?a22:0);
-  a22=(a39?a22:0);
-  a28=(a28+a22);
-  if (res[1]!=0) res[1][9]=a28;
-  a28=(a42?a24:0);
-  a24=(a39?a24:0);
-  a28=(a28+a24);
-  if (res[1]!=0) res[1][10]=a28;
-  a28=(a42?a51:0);
-  a51=(a39?a51:0);
-  a28=(a28+a51);
-  if (res[1]!=0) res[1][11]=a28;
-  a28=(a42?a31:0);
-  a31=(a39?a31:0);
-  a28=(a28+a31);
-  if (res[1]!=0) res[1][12]=a28;
-  a42=(a42?a48:0);
-  a39=(a39?a48:0);
-  a42=(a42+a39);
-  if (res[1]!=0) res[1][13]=a42;
+  a31=(a31*a33);
+  a07=(a07-a31);
+  a31=(a23+a07);
+  a31=(a31+a28);
+  a31=(a31+a05);
+  a31=(a31+a42);
+  a31=(a31+a51);
+  a31=(a31+a52);
+  a31=(a31+a22);
+  a31=(a31+a24);
+  a31=(a31+a53);
+  a31=(a31+a50);
+  a31=(a31+a49);
+  a31=(a31+a18);
+  a31=(a31+a15);
+  a31=(a31+a38);
+  a31=(a31+a37);
+  a31=casadi_fabs(a31);
+  a33=casadi_inf;
+  a31=(a31<a33);
+  a33=(a00&&a31);
+  a16=arg[5]? arg[5][8] : 0;
+  a29=(-a16);
+  a29=casadi_fmax(a23,a29);
+  a29=casadi_fmin(a29,a16);
+  a29=(a33?a29:0);
+  if (res[0]!=0) res[0][0]=a29;
+  a29=arg[5]? arg[5][9] : 0;
+  a30=(-a29);
+  a30=casadi_fmax(a07,a30);
+  a30=casadi_fmin(a30,a29);
+  a30=(a33?a30:0);
+  if (res[0]!=0) res[0][1]=a30;
+  a30=(a31?a18:0);
+  a48=(!a31);
+  a10=(a48?a10:0);
+  a30=(a30+a10);
+  if (res[1]!=0) res[1][0]=a30;
+  a30=(a31?a15:0);
+  a14=(a48?a14:0);
+  a30=(a30+a14);
+  if (res[1]!=0) res[1][1]=a30;
+  a30=(a31?a38:0);
+  a36=(a48?a36:0);
+  a30=(a30+a36);
+  if (res[1]!=0) res[1][2]=a30;
+  a30=(a31?a37:0);
+  a41=(a48?a41:0);
+  a30=(a30+a41);
+  if (res[1]!=0) res[1][3]=a30;
+  a30=(a33?a28:0);
+  a41=(!a33);
+  a28=(a41?a28:0);
+  a30=(a30+a28);
+  if (res[1]!=0) res[1][4]=a30;
+  a30=(a33?a05:0);
+  a05=(a41?a05:0);
+  a30=(a30+a05);
+  if (res[1]!=0) res[1][5]=a30;
+  a30=(a33?a42:0);
+  a42=(a41?a42:0);
+  a30=(a30+a42);
+  if (res[1]!=0) res[1][6]=a30;
+  a30=(a33?a51:0);
+  a51=(a41?a51:0);
+  a30=(a30+a51);
+  if (res[1]!=0) res[1][7]=a30;
+  a30=(a33?a52:0);
+  a52=(a41?a52:0);
+  a30=(a30+a52);
+  if (res[1]!=0) res[1][8]=a30;
+  a30=(a33?a22:0);
+  a22=(a41?a22:0);
+  a30=(a30+a22);
+  if (res[1]!=0) res[1][9]=a30;
+  a30=(a33?a24:0);
+  a24=(a41?a24:0);
+  a30=(a30+a24);
+  if (res[1]!=0) res[1][10]=a30;
+  a30=(a33?a53:0);
+  a53=(a41?a53:0);
+  a30=(a30+a53);
+  if (res[1]!=0) res[1][11]=a30;
+  a30=(a33?a50:0);
+  a50=(a41?a50:0);
+  a30=(a30+a50);
+  if (res[1]!=0) res[1][12]=a30;
+  a33=(a33?a49:0);
+  a41=(a41?a49:0);
+  a33=(a33+a41);
+  if (res[1]!=0) res[1][13]=a33;
   a23=casadi_fabs(a23);
   a23=(a23-a16);
   a07=casadi_fabs(a07);
-  a07=(a07-a27);
+  a07=(a07-a29);
   a23=casadi_fmax(a23,a07);
   a12=(a12<a23);
   a12=(a12?a20:0);
-  a29=(a29?a12:0);
+  a31=(a31?a12:0);
   a12=3.;
-  a46=(a46?a12:0);
-  a29=(a29+a46);
-  a29=(a00?a29:0);
+  a48=(a48?a12:0);
+  a31=(a31+a48);
+  a31=(a00?a31:0);
   a00=(!a00);
-  a00=(a00?a21:0);
-  a29=(a29+a00);
-  if (res[2]!=0) res[2][0]=a29;
+  a00=(a00?a27:0);
+  a31=(a31+a00);
+  if (res[2]!=0) res[2][0]=a31;
   if (res[3]!=0) res[3][0]=a18;
   if (res[3]!=0) res[3][1]=a15;
-  if (res[3]!=0) res[3][2]=a36;
-  if (res[3]!=0) res[3][3]=a35;
-  if (res[3]!=0) res[3][4]=a11;
-  if (res[3]!=0) res[3][5]=a47;
+  if (res[3]!=0) res[3][2]=a38;
+  if (res[3]!=0) res[3][3]=a37;
+  if (res[3]!=0) res[3][4]=a44;
+  if (res[3]!=0) res[3][5]=a21;
   if (res[3]!=0) res[3][6]=a17;
-  if (res[3]!=0) res[3][7]=a41;
+  if (res[3]!=0) res[3][7]=a43;
   if (res[3]!=0) res[3][8]=a25;
+  if (res[3]!=0) res[3][9]=a26;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_step_checkout(void) {
@@ -5160,12 +5617,12 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_step_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_step_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s7;
+    case 0: return casadi_s6;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s9;
+    case 5: return casadi_s3;
     default: return 0;
   }
 }
@@ -5173,9 +5630,9 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_step_sparsity_in(casadi_int i
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_step_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s7;
-    case 2: return casadi_s3;
-    case 3: return casadi_s9;
+    case 1: return casadi_s6;
+    case 2: return casadi_s7;
+    case 3: return casadi_s3;
     default: return 0;
   }
 }
@@ -5197,7 +5654,7 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_step_work_bytes(casadi_int *sz_arg, casadi_
 }
 
 /* fivebar_plant_xedd:(xe[2],xed[2],tau_a[2],plant[15])->(xedd[2]) */
-static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -5502,7 +5959,7 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f18(arg, res, iw, w, mem);
+  return casadi_f19(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_checkout(void) {
@@ -5550,7 +6007,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_plant_xedd_sparsity_in(casadi_int
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s10;
+    case 3: return casadi_s8;
     default: return 0;
   }
 }
@@ -5579,7 +6036,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_plant_step:(x[4],tau_a[2],plant[15],h)->(x_next[4]) */
-static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -6736,7 +7193,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f19(arg, res, iw, w, mem);
+  return casadi_f20(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step_checkout(void) {
@@ -6783,8 +7240,8 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_plant_step_sparsity_in(casadi_int
   switch (i) {
     case 0: return casadi_s1;
     case 1: return casadi_s0;
-    case 2: return casadi_s10;
-    case 3: return casadi_s3;
+    case 2: return casadi_s8;
+    case 3: return casadi_s7;
     default: return 0;
   }
 }
@@ -6813,7 +7270,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_step_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_measure:(xe[2],plant[15])->(qa[2]) */
-static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=0.;
@@ -6888,7 +7345,7 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f20(arg, res, iw, w, mem);
+  return casadi_f21(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure_checkout(void) {
@@ -6932,7 +7389,7 @@ CASADI_SYMBOL_EXPORT const char* fivebar_measure_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s10;
+    case 1: return casadi_s8;
     default: return 0;
   }
 }
@@ -6960,8 +7417,8 @@ CASADI_SYMBOL_EXPORT int fivebar_measure_work_bytes(casadi_int *sz_arg, casadi_i
   return 0;
 }
 
-/* fivebar_na_closed_loop:(x[18],u[6],p[34])->(x_next[18],y[17]) */
-static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_closed_loop:(x[18],u[6],p[35])->(x_next[18],y[17]) */
+static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -6974,11 +7431,11 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+19;
+  wr06 = wr05+20;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -6994,7 +7451,7 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[1]=w14;
   res1[2]=(&w15);
   res1[3]=0;
-  if (casadi_f15(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f16(arg1, res1, iw, w, 0)) return 1;
   w16 = wr05[14];
   w17 = 3.;
   w16 /= w17;
@@ -7003,19 +7460,19 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -7028,7 +7485,7 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f21(arg, res, iw, w, mem);
+  return casadi_f22(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_checkout(void) {
@@ -7073,17 +7530,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_closed_loop_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s11;
-    case 1: return casadi_s12;
-    case 2: return casadi_s13;
+    case 0: return casadi_s9;
+    case 1: return casadi_s10;
+    case 2: return casadi_s11;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s11;
-    case 1: return casadi_s14;
+    case 0: return casadi_s9;
+    case 1: return casadi_s12;
     default: return 0;
   }
 }
@@ -7104,8 +7561,8 @@ CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_work_bytes(casadi_int *sz_arg, c
   return 0;
 }
 
-/* fivebar_na_proj_closed_loop:(x[18],u[6],p[34])->(x_next[18],y[17]) */
-static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_proj_closed_loop:(x[18],u[6],p[35])->(x_next[18],y[17]) */
+static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -7118,11 +7575,11 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+19;
+  wr06 = wr05+20;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -7138,7 +7595,7 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[1]=w14;
   res1[2]=(&w15);
   res1[3]=0;
-  if (casadi_f16(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f17(arg1, res1, iw, w, 0)) return 1;
   w16 = wr05[14];
   w17 = 3.;
   w16 /= w17;
@@ -7147,19 +7604,19 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -7172,7 +7629,7 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f22(arg, res, iw, w, mem);
+  return casadi_f23(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_checkout(void) {
@@ -7217,17 +7674,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_closed_loop_name_out(casadi_int
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s11;
-    case 1: return casadi_s12;
-    case 2: return casadi_s13;
+    case 0: return casadi_s9;
+    case 1: return casadi_s10;
+    case 2: return casadi_s11;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s11;
-    case 1: return casadi_s14;
+    case 0: return casadi_s9;
+    case 1: return casadi_s12;
     default: return 0;
   }
 }
@@ -7248,11 +7705,11 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_work_bytes(casadi_int *sz_a
   return 0;
 }
 
-/* fivebar_apd_closed_loop:(x[18],u[6],p[24])->(x_next[18],y[17]) */
-static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_apd_closed_loop:(x[18],u[6],p[25])->(x_next[18],y[17]) */
+static int casadi_f24(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
-  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
-  casadi_real w17, *w18=w+107, *w19=w+111;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w12=w+91, *w13=w+101, *w14=w+103, w15;
+  casadi_real w16, w17, *w18=w+117;
   const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
   wr00 = arg[0] ? arg[0] : casadi_zeros;
   wr01 = wr00+0;
@@ -7262,11 +7719,11 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+9;
+  wr06 = wr05+10;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -7282,7 +7739,7 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[1]=w14;
   res1[2]=(&w15);
   res1[3]=0;
-  if (casadi_f17(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
   w16 = wr05[4];
   w17 = 3.;
   w16 /= w17;
@@ -7291,32 +7748,32 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
   if (res[1]) casadi_copy(wr02, 2, res[1]+2);
   if (res[1]) casadi_copy(w13, 2, res[1]+4);
   if (res[1]) res[1][6] = w15;
-  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
-  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  for (rr=w12, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w12, 10, res[1]+7);
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f23(arg, res, iw, w, mem);
+  return casadi_f24(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop_checkout(void) {
@@ -7361,17 +7818,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_closed_loop_name_out(casadi_int i) 
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s11;
-    case 1: return casadi_s12;
-    case 2: return casadi_s15;
+    case 0: return casadi_s9;
+    case 1: return casadi_s10;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s11;
-    case 1: return casadi_s14;
+    case 0: return casadi_s9;
+    case 1: return casadi_s12;
     default: return 0;
   }
 }

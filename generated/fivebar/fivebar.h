@@ -10,7 +10,8 @@
  * xe    = [x, y] end-effector position, m;  xed, xrd, xrdd: velocities m/s, accel. m/s^2
  * theta = [alpha1, alpha2, beta1, beta2, gamma1, gamma2, fv1, fv2, fc1, fc2]
  *         (alpha, beta, gamma in kg*m^2; fv in N*m*s/rad; fc, fs in N*m)
- * sing  = min_i |sin(qb_i - qa_i)|, the singularity measure at the pose
+ * sing  = [min_i |sin(qb_i - qa_i)| (type I, legs), sqrt(1 - |sum_i exp(2 i qb_i)| / n)
+ *         (type II, actuation: sigma_min of S with unit rows over sqrt(n/2))]
  *
  * Functions (inputs -> outputs, element counts):
  *   fivebar_ik(xe[2]) -> (q[4])
@@ -18,30 +19,31 @@
  *   fivebar_H(q[4]) -> (H[2])
  *   fivebar_A(q[4]) -> (A[8])
  *   fivebar_singularity(q[4]) -> (sin_ab[2])
- *   fivebar_W(q[4]) -> (W[8], sing[1])
- *   fivebar_S(q[4]) -> (S[4], sing[1])
- *   fivebar_Wdot(q[4], xed[2]) -> (Wdot[8], sing[1])
+ *   fivebar_singularity_measures(q[4]) -> (sing[2])
+ *   fivebar_W(q[4]) -> (W[8], sing[2])
+ *   fivebar_S(q[4]) -> (S[4], sing[2])
+ *   fivebar_Wdot(q[4], xed[2]) -> (Wdot[8], sing[2])
  *   fivebar_M(q[4], theta[10]) -> (M[16])
  *   fivebar_C(q[4], qd[4], theta[10]) -> (C[16])
- *   fivebar_Me(q[4], theta[10]) -> (Me[4], sing[1])
- *   fivebar_Ce(q[4], xed[2], theta[10]) -> (Ce[4], sing[1])
- *   fivebar_StF(q[4], xed[2], theta[10]) -> (StF[2], sing[1])
- *   fivebar_Y(q[4], xed[2], xrd[2], xrdd[2]) -> (Y[20], sing[1])
- *   fivebar_forward_dynamics(xe[2], xed[2], tau_a[2], theta[10]) -> (xedd[2], sing[1])
- *   fivebar_na_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[19]) -> (tau_a[2], state_next[14], status[1], diag[9])
- *   fivebar_na_proj_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[19]) -> (tau_a[2], state_next[14], status[1], diag[9])
- *   fivebar_apd_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[9]) -> (tau_a[2], state_next[14], status[1], diag[9])
+ *   fivebar_Me(q[4], theta[10]) -> (Me[4], sing[2])
+ *   fivebar_Ce(q[4], xed[2], theta[10]) -> (Ce[4], sing[2])
+ *   fivebar_StF(q[4], xed[2], theta[10]) -> (StF[2], sing[2])
+ *   fivebar_Y(q[4], xed[2], xrd[2], xrdd[2]) -> (Y[20], sing[2])
+ *   fivebar_forward_dynamics(xe[2], xed[2], tau_a[2], theta[10]) -> (xedd[2], sing[2])
+ *   fivebar_na_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[20]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_proj_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[20]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_apd_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[10]) -> (tau_a[2], state_next[14], status[1], diag[10])
  *   fivebar_plant_xedd(xe[2], xed[2], tau_a[2], plant[15]) -> (xedd[2])
  *   fivebar_plant_step(x[4], tau_a[2], plant[15], h[1]) -> (x_next[4])
  *   fivebar_measure(xe[2], plant[15]) -> (qa[2])
- *   fivebar_na_closed_loop(x[18], u[6], p[34]) -> (x_next[18], y[17])
- *   fivebar_na_proj_closed_loop(x[18], u[6], p[34]) -> (x_next[18], y[17])
- *   fivebar_apd_closed_loop(x[18], u[6], p[24]) -> (x_next[18], y[17])
+ *   fivebar_na_closed_loop(x[18], u[6], p[35]) -> (x_next[18], y[17])
+ *   fivebar_na_proj_closed_loop(x[18], u[6], p[35]) -> (x_next[18], y[17])
+ *   fivebar_apd_closed_loop(x[18], u[6], p[25]) -> (x_next[18], y[17])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[10]
- *   na_params: Kd[2], Q[2], Gamma[10], T[1], vel_alpha[1], sing_threshold[1], tau_max[2]
- *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], tau_max[2]
+ *   na_params: Kd[2], Q[2], Gamma[10], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2]
+ *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2]
  *   cl_state: xe[2], xed[2], ctrl_state[14]
  *   cl_input: xd[2], xd_dot[2], xd_ddot[2]
  *   cl_output: xe[2], xed[2], tau_a[2], status[1], theta_hat[10]
@@ -157,6 +159,24 @@ int fivebar_singularity_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casad
 #define fivebar_singularity_SZ_RES 1
 #define fivebar_singularity_SZ_IW 0
 #define fivebar_singularity_SZ_W 0
+int fivebar_singularity_measures(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_singularity_measures_checkout(void);
+void fivebar_singularity_measures_release(int mem);
+void fivebar_singularity_measures_incref(void);
+void fivebar_singularity_measures_decref(void);
+casadi_int fivebar_singularity_measures_n_in(void);
+casadi_int fivebar_singularity_measures_n_out(void);
+casadi_real fivebar_singularity_measures_default_in(casadi_int i);
+const char* fivebar_singularity_measures_name_in(casadi_int i);
+const char* fivebar_singularity_measures_name_out(casadi_int i);
+const casadi_int* fivebar_singularity_measures_sparsity_in(casadi_int i);
+const casadi_int* fivebar_singularity_measures_sparsity_out(casadi_int i);
+int fivebar_singularity_measures_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_singularity_measures_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_singularity_measures_SZ_ARG 1
+#define fivebar_singularity_measures_SZ_RES 1
+#define fivebar_singularity_measures_SZ_IW 0
+#define fivebar_singularity_measures_SZ_W 0
 int fivebar_W(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_W_checkout(void);
 void fivebar_W_release(int mem);

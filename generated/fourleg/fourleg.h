@@ -10,7 +10,8 @@
  * xe    = [x, y] end-effector position, m;  xed, xrd, xrdd: velocities m/s, accel. m/s^2
  * theta = [alpha1, alpha2, alpha3, alpha4, beta1, beta2, beta3, beta4, gamma1, gamma2, gamma3, gamma4, fv1, fv2, fv3, fv4, fc1, fc2, fc3, fc4]
  *         (alpha, beta, gamma in kg*m^2; fv in N*m*s/rad; fc, fs in N*m)
- * sing  = min_i |sin(qb_i - qa_i)|, the singularity measure at the pose
+ * sing  = [min_i |sin(qb_i - qa_i)| (type I, legs), sqrt(1 - |sum_i exp(2 i qb_i)| / n)
+ *         (type II, actuation: sigma_min of S with unit rows over sqrt(n/2))]
  *
  * Functions (inputs -> outputs, element counts):
  *   fourleg_ik(xe[2]) -> (q[8])
@@ -18,30 +19,31 @@
  *   fourleg_H(q[8]) -> (H[6])
  *   fourleg_A(q[8]) -> (A[48])
  *   fourleg_singularity(q[8]) -> (sin_ab[4])
- *   fourleg_W(q[8]) -> (W[16], sing[1])
- *   fourleg_S(q[8]) -> (S[8], sing[1])
- *   fourleg_Wdot(q[8], xed[2]) -> (Wdot[16], sing[1])
+ *   fourleg_singularity_measures(q[8]) -> (sing[2])
+ *   fourleg_W(q[8]) -> (W[16], sing[2])
+ *   fourleg_S(q[8]) -> (S[8], sing[2])
+ *   fourleg_Wdot(q[8], xed[2]) -> (Wdot[16], sing[2])
  *   fourleg_M(q[8], theta[20]) -> (M[64])
  *   fourleg_C(q[8], qd[8], theta[20]) -> (C[64])
- *   fourleg_Me(q[8], theta[20]) -> (Me[4], sing[1])
- *   fourleg_Ce(q[8], xed[2], theta[20]) -> (Ce[4], sing[1])
- *   fourleg_StF(q[8], xed[2], theta[20]) -> (StF[2], sing[1])
- *   fourleg_Y(q[8], xed[2], xrd[2], xrdd[2]) -> (Y[40], sing[1])
- *   fourleg_forward_dynamics(xe[2], xed[2], tau_a[4], theta[20]) -> (xedd[2], sing[1])
- *   fourleg_na_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[31]) -> (tau_a[4], state_next[24], status[1], diag[9])
- *   fourleg_na_proj_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[31]) -> (tau_a[4], state_next[24], status[1], diag[9])
- *   fourleg_apd_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[11]) -> (tau_a[4], state_next[24], status[1], diag[9])
+ *   fourleg_Me(q[8], theta[20]) -> (Me[4], sing[2])
+ *   fourleg_Ce(q[8], xed[2], theta[20]) -> (Ce[4], sing[2])
+ *   fourleg_StF(q[8], xed[2], theta[20]) -> (StF[2], sing[2])
+ *   fourleg_Y(q[8], xed[2], xrd[2], xrdd[2]) -> (Y[40], sing[2])
+ *   fourleg_forward_dynamics(xe[2], xed[2], tau_a[4], theta[20]) -> (xedd[2], sing[2])
+ *   fourleg_na_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[32]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_proj_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[32]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_apd_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[12]) -> (tau_a[4], state_next[24], status[1], diag[10])
  *   fourleg_plant_xedd(xe[2], xed[2], tau_a[4], plant[27]) -> (xedd[2])
  *   fourleg_plant_step(x[4], tau_a[4], plant[27], h[1]) -> (x_next[4])
  *   fourleg_measure(xe[2], plant[27]) -> (qa[4])
- *   fourleg_na_closed_loop(x[28], u[6], p[58]) -> (x_next[28], y[29])
- *   fourleg_na_proj_closed_loop(x[28], u[6], p[58]) -> (x_next[28], y[29])
- *   fourleg_apd_closed_loop(x[28], u[6], p[38]) -> (x_next[28], y[29])
+ *   fourleg_na_closed_loop(x[28], u[6], p[59]) -> (x_next[28], y[29])
+ *   fourleg_na_proj_closed_loop(x[28], u[6], p[59]) -> (x_next[28], y[29])
+ *   fourleg_apd_closed_loop(x[28], u[6], p[39]) -> (x_next[28], y[29])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[20]
- *   na_params: Kd[2], Q[2], Gamma[20], T[1], vel_alpha[1], sing_threshold[1], tau_max[4]
- *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], tau_max[4]
+ *   na_params: Kd[2], Q[2], Gamma[20], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4]
+ *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4]
  *   cl_state: xe[2], xed[2], ctrl_state[24]
  *   cl_input: xd[2], xd_dot[2], xd_ddot[2]
  *   cl_output: xe[2], xed[2], tau_a[4], status[1], theta_hat[20]
@@ -157,6 +159,24 @@ int fourleg_singularity_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casad
 #define fourleg_singularity_SZ_RES 1
 #define fourleg_singularity_SZ_IW 0
 #define fourleg_singularity_SZ_W 0
+int fourleg_singularity_measures(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_singularity_measures_checkout(void);
+void fourleg_singularity_measures_release(int mem);
+void fourleg_singularity_measures_incref(void);
+void fourleg_singularity_measures_decref(void);
+casadi_int fourleg_singularity_measures_n_in(void);
+casadi_int fourleg_singularity_measures_n_out(void);
+casadi_real fourleg_singularity_measures_default_in(casadi_int i);
+const char* fourleg_singularity_measures_name_in(casadi_int i);
+const char* fourleg_singularity_measures_name_out(casadi_int i);
+const casadi_int* fourleg_singularity_measures_sparsity_in(casadi_int i);
+const casadi_int* fourleg_singularity_measures_sparsity_out(casadi_int i);
+int fourleg_singularity_measures_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_singularity_measures_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_singularity_measures_SZ_ARG 1
+#define fourleg_singularity_measures_SZ_RES 1
+#define fourleg_singularity_measures_SZ_IW 0
+#define fourleg_singularity_measures_SZ_W 0
 int fourleg_W(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_W_checkout(void);
 void fourleg_W_release(int mem);

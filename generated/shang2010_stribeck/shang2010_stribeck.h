@@ -10,7 +10,8 @@
  * xe    = [x, y] end-effector position, m;  xed, xrd, xrdd: velocities m/s, accel. m/s^2
  * theta = [alpha1, alpha2, alpha3, beta1, beta2, beta3, gamma1, gamma2, gamma3, fv1, fv2, fv3, fc1, fc2, fc3, fs1, fs2, fs3]
  *         (alpha, beta, gamma in kg*m^2; fv in N*m*s/rad; fc, fs in N*m)
- * sing  = min_i |sin(qb_i - qa_i)|, the singularity measure at the pose
+ * sing  = [min_i |sin(qb_i - qa_i)| (type I, legs), sqrt(1 - |sum_i exp(2 i qb_i)| / n)
+ *         (type II, actuation: sigma_min of S with unit rows over sqrt(n/2))]
  *
  * Functions (inputs -> outputs, element counts):
  *   shang2010_stribeck_ik(xe[2]) -> (q[6])
@@ -18,30 +19,31 @@
  *   shang2010_stribeck_H(q[6]) -> (H[4])
  *   shang2010_stribeck_A(q[6]) -> (A[24])
  *   shang2010_stribeck_singularity(q[6]) -> (sin_ab[3])
- *   shang2010_stribeck_W(q[6]) -> (W[12], sing[1])
- *   shang2010_stribeck_S(q[6]) -> (S[6], sing[1])
- *   shang2010_stribeck_Wdot(q[6], xed[2]) -> (Wdot[12], sing[1])
+ *   shang2010_stribeck_singularity_measures(q[6]) -> (sing[2])
+ *   shang2010_stribeck_W(q[6]) -> (W[12], sing[2])
+ *   shang2010_stribeck_S(q[6]) -> (S[6], sing[2])
+ *   shang2010_stribeck_Wdot(q[6], xed[2]) -> (Wdot[12], sing[2])
  *   shang2010_stribeck_M(q[6], theta[18]) -> (M[36])
  *   shang2010_stribeck_C(q[6], qd[6], theta[18]) -> (C[36])
- *   shang2010_stribeck_Me(q[6], theta[18]) -> (Me[4], sing[1])
- *   shang2010_stribeck_Ce(q[6], xed[2], theta[18]) -> (Ce[4], sing[1])
- *   shang2010_stribeck_StF(q[6], xed[2], theta[18]) -> (StF[2], sing[1])
- *   shang2010_stribeck_Y(q[6], xed[2], xrd[2], xrdd[2]) -> (Y[36], sing[1])
- *   shang2010_stribeck_forward_dynamics(xe[2], xed[2], tau_a[3], theta[18]) -> (xedd[2], sing[1])
- *   shang2010_stribeck_na_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[28]) -> (tau_a[3], state_next[22], status[1], diag[9])
- *   shang2010_stribeck_na_proj_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[28]) -> (tau_a[3], state_next[22], status[1], diag[9])
- *   shang2010_stribeck_apd_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[10]) -> (tau_a[3], state_next[22], status[1], diag[9])
+ *   shang2010_stribeck_Me(q[6], theta[18]) -> (Me[4], sing[2])
+ *   shang2010_stribeck_Ce(q[6], xed[2], theta[18]) -> (Ce[4], sing[2])
+ *   shang2010_stribeck_StF(q[6], xed[2], theta[18]) -> (StF[2], sing[2])
+ *   shang2010_stribeck_Y(q[6], xed[2], xrd[2], xrdd[2]) -> (Y[36], sing[2])
+ *   shang2010_stribeck_forward_dynamics(xe[2], xed[2], tau_a[3], theta[18]) -> (xedd[2], sing[2])
+ *   shang2010_stribeck_na_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[29]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_stribeck_na_proj_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[29]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_stribeck_apd_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[11]) -> (tau_a[3], state_next[22], status[1], diag[10])
  *   shang2010_stribeck_plant_xedd(xe[2], xed[2], tau_a[3], plant[21]) -> (xedd[2])
  *   shang2010_stribeck_plant_step(x[4], tau_a[3], plant[21], h[1]) -> (x_next[4])
  *   shang2010_stribeck_measure(xe[2], plant[21]) -> (qa[3])
- *   shang2010_stribeck_na_closed_loop(x[26], u[6], p[49]) -> (x_next[26], y[26])
- *   shang2010_stribeck_na_proj_closed_loop(x[26], u[6], p[49]) -> (x_next[26], y[26])
- *   shang2010_stribeck_apd_closed_loop(x[26], u[6], p[31]) -> (x_next[26], y[26])
+ *   shang2010_stribeck_na_closed_loop(x[26], u[6], p[50]) -> (x_next[26], y[26])
+ *   shang2010_stribeck_na_proj_closed_loop(x[26], u[6], p[50]) -> (x_next[26], y[26])
+ *   shang2010_stribeck_apd_closed_loop(x[26], u[6], p[32]) -> (x_next[26], y[26])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[18]
- *   na_params: Kd[2], Q[2], Gamma[18], T[1], vel_alpha[1], sing_threshold[1], tau_max[3]
- *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], tau_max[3]
+ *   na_params: Kd[2], Q[2], Gamma[18], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3]
+ *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3]
  *   cl_state: xe[2], xed[2], ctrl_state[22]
  *   cl_input: xd[2], xd_dot[2], xd_ddot[2]
  *   cl_output: xe[2], xed[2], tau_a[3], status[1], theta_hat[18]
@@ -157,6 +159,24 @@ int shang2010_stribeck_singularity_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define shang2010_stribeck_singularity_SZ_RES 1
 #define shang2010_stribeck_singularity_SZ_IW 0
 #define shang2010_stribeck_singularity_SZ_W 0
+int shang2010_stribeck_singularity_measures(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_singularity_measures_checkout(void);
+void shang2010_stribeck_singularity_measures_release(int mem);
+void shang2010_stribeck_singularity_measures_incref(void);
+void shang2010_stribeck_singularity_measures_decref(void);
+casadi_int shang2010_stribeck_singularity_measures_n_in(void);
+casadi_int shang2010_stribeck_singularity_measures_n_out(void);
+casadi_real shang2010_stribeck_singularity_measures_default_in(casadi_int i);
+const char* shang2010_stribeck_singularity_measures_name_in(casadi_int i);
+const char* shang2010_stribeck_singularity_measures_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_singularity_measures_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_singularity_measures_sparsity_out(casadi_int i);
+int shang2010_stribeck_singularity_measures_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_singularity_measures_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_singularity_measures_SZ_ARG 1
+#define shang2010_stribeck_singularity_measures_SZ_RES 1
+#define shang2010_stribeck_singularity_measures_SZ_IW 0
+#define shang2010_stribeck_singularity_measures_SZ_W 0
 int shang2010_stribeck_W(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_stribeck_W_checkout(void);
 void shang2010_stribeck_W_release(int mem);

@@ -47,18 +47,22 @@ def model_report(m, seed=0, samples=200):
     for x, y, qq in pts:
         S = m.S(qq)
         conds.append(np.linalg.cond(S.T @ S))
-        sings.append(np.min(np.abs(m.singularity(qq))))
+        sings.append(m.singularity_measures(qq))
+    sings = np.array(sings)
     for k in rng.choice(len(pts), size=min(samples, len(pts)), replace=False):
         v = rng.normal(size=(3, 2)) * [[0.3], [0.3], [5.0]]
         Ys.append(m.Y(pts[k][2], v[0], v[0], v[2]))  # reference = measured velocity
     Y = np.vstack(Ys)
     sv = np.linalg.svd(Y, compute_uv=False)
     rank = int(np.sum(sv > sv[0] * 1e-10))
-    lines.append(f"  over {len(pts)} grid points of the workspace (min|sin(qb-qa)| >= "
-                 f"{m.singularity_threshold}):")
+    lines.append(f"  over {len(pts)} grid points of the workspace in the model's assembly mode "
+                 f"and clear of both singularities:")
     lines.append(f"    cond(S^T S): min {min(conds):.3g}, median {np.median(conds):.3g}, "
                  f"max {max(conds):.3g}")
-    lines.append(f"    min_i |sin(qb_i - qa_i)|: min {min(sings):.3g}, max {max(sings):.3g}")
+    lines.append(f"    type I  min_i |sin(qb_i - qa_i)|: min {sings[:, 0].min():.3g}, max "
+                 f"{sings[:, 0].max():.3g} (threshold {m.singularity_threshold})")
+    lines.append(f"    type II sigma_min(S, unit rows)/sqrt(n/2): min {sings[:, 1].min():.3g}, max "
+                 f"{sings[:, 1].max():.3g} (threshold {m.parallel_singularity_threshold})")
     lines.append(f"    regressor Y stacked over {len(Ys)} random states: rank {rank} of "
                  f"{Y.shape[1]} (singular values {sv[-1]:.3g} .. {sv[0]:.3g})")
     return "\n".join(lines)

@@ -129,7 +129,10 @@ def lambdify_step(model, layouts):
         G = Sq.T @ Sq
         tau = Sq @ np.linalg.solve(G, u)
         tau_max = P["tau_max"]
-        ok = float(np.min(np.abs(np.asarray(sab(q), dtype=float)))) >= P["sing_threshold"][0]
+        U = np.stack([np.cos(q[n:]), np.sin(q[n:])], axis=1)   # distal directions (type II)
+        kappa = np.linalg.svd(U, compute_uv=False)[-1] / np.sqrt(n / 2)
+        ok = (float(np.min(np.abs(np.asarray(sab(q), dtype=float)))) >= P["sing_threshold"][0]
+              and kappa >= P["parallel_sing_threshold"][0])
         if ok:
             status = 2 if np.max(np.abs(tau) - tau_max) > 0 else 0
             tau_out, theta_out = np.minimum(np.maximum(tau, -tau_max), tau_max), theta_next

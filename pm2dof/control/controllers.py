@@ -5,8 +5,10 @@ A step runs the whole chain of Fig. 2: end-effector position by fk from the meas
 angles, velocity by a first-order low-pass on the backward difference, the passive joints
 from geometry, the control law, the minimum-norm torque split (eq. 21) and, for NA, the
 parameter update (eq. 28, explicit Euler over the sample period). Torques are clipped to
-``limits.tau_max``; at a pose closer to a singularity than ``limits.singularity_threshold``
-the step outputs the safe torque zero and leaves theta_hat unchanged (see ``status``).
+``limits.tau_max``; at a pose closer to a singularity of either kind than its threshold
+(``limits.singularity_threshold``: type I, a leg; ``limits.parallel_singularity_threshold``:
+type II, the actuation) the step outputs the safe torque zero and leaves theta_hat unchanged
+(see ``status``).
 """
 import array
 import math
@@ -55,6 +57,7 @@ class _Controller:
         self.params = self.params_layout.pack(
             **gains, T=T, vel_alpha=velocity_filter_alpha(T, fc),
             sing_threshold=model.singularity_threshold,
+            parallel_sing_threshold=model.parallel_singularity_threshold,
             tau_max=spec.limits["tau_max"] if tau_max is None else tau_max)
         self.params.setflags(write=False)
         self._f = model.function(f"{self.function_name}_step")
@@ -62,7 +65,7 @@ class _Controller:
         self._states = (np.zeros(self.state_layout.size), np.zeros(self.state_layout.size))
         self._n = n
         self._status = array.array("d", [0.0])  # array: reading [0] is ~3x cheaper than numpy
-        self._diag = np.zeros(9)
+        self._diag = np.zeros(10)
         self._ready = False
 
     def reset(self, qa0, theta_hat=None):
@@ -82,7 +85,7 @@ class _Controller:
 
         Returns a new array, or writes into ``out`` (n,) and returns it (no allocation).
         Non-finite inputs raise ValueError and leave the controller unchanged. At a pose
-        closer to a singularity than ``limits.singularity_threshold`` the step raises
+        closer to a singularity of either kind than its threshold the step raises
         SingularityError (a ValueError), or with ``on_singular="zero"`` returns the safe
         torque zero; either way theta_hat is not updated (``status == "singular"``). A
         non-finite intermediate result gives zero torque and leaves the whole state as it
@@ -98,10 +101,9 @@ class _Controller:
         self._states = (s1, s0)
         if self._status[0] == 1.0 and self.on_singular == "raise":
             raise SingularityError(
-                f"controller step at a pose too close to a singularity: min_i |sin(qb_i - "
-                f"qa_i)| = {self._diag[8]:.4g} < {self.model.singularity_threshold} "
-                f"(limits.singularity_threshold); theta_hat was not updated and the safe "
-                f"torque is zero (on_singular='zero' returns it instead of raising)")
+                f"controller step: {self.model.singularity_message(self._diag[8:10])}; "
+                f"theta_hat was not updated and the safe torque is zero (on_singular='zero' "
+                f"returns it instead of raising)")
         return tau
 
     @property
@@ -117,9 +119,11 @@ class _Controller:
     @property
     def diag(self):
         """Last step's signal processing: dict of xe (2,) m, v (2,) m/s, e (2,) m, edot (2,) m/s,
-        sing (the singularity measure min_i |sin(qb_i - qa_i)|)."""
+        sing (type I measure min_i |sin(qb_i - qa_i)|) and sing_parallel (type II measure, see
+        :meth:`pm2dof.Model.singularity_measures`)."""
         d = self._diag.copy()
-        return {"xe": d[0:2], "v": d[2:4], "e": d[4:6], "edot": d[6:8], "sing": float(d[8])}
+        return {"xe": d[0:2], "v": d[2:4], "e": d[4:6], "edot": d[6:8], "sing": float(d[8]),
+                "sing_parallel": float(d[9])}
 
 
 class NAController(_Controller):

@@ -16,7 +16,7 @@ from ..core.errors import SingularityError, WorkspaceError
 from ..core.layout import Layout
 
 __all__ = ["simulate", "SimResult", "plant_truth", "plant_vector", "rmse", "theta_truth",
-           "check_trajectory"]
+           "check_trajectory", "pose_measures"]
 
 
 def plant_truth(model, **overrides):
@@ -126,43 +126,79 @@ class SimResult:
         return int(np.sum(self.status == 3))
 
 
+def pose_measures(model, xd):
+    """Both singularity measures and, for two legs, the assembly side of every position.
+
+    Vectorised NumPy geometry of ``ik`` (law of cosines per leg, the model's elbows), used to
+    check a whole trajectory at once; the generated ``ik`` and ``singularity_measures`` remain
+    the reference and word the errors.
+
+    Parameters
+    ----------
+    xd : array_like (N, 2)
+        Task positions, m.
+
+    Returns
+    -------
+    type1, type2, side : ndarray (N,)
+        min_i |sin(qb_i - qa_i)|, the type II measure (see ``Model.singularity_measures``), NaN
+        where some leg cannot reach; ``side`` = fk_branch * cross(B2 - B1, O - B1) for two legs
+        (> 0 in the model's assembly mode), +1 for more legs.
+    """
+    xd = np.asarray(xd, dtype=float).reshape(-1, 2)
+    legs = model.spec.legs
+    type1 = np.full(len(xd), np.inf)
+    z = np.zeros(len(xd), dtype=complex)
+    elbows = []
+    with np.errstate(invalid="ignore", divide="ignore"):
+        for leg in legs:
+            d = xd - np.asarray(leg.base)
+            dist = np.hypot(d[:, 0], d[:, 1])
+            c = (leg.la ** 2 + dist ** 2 - leg.lb ** 2) / (2 * leg.la * dist)
+            c[~(np.abs(c) <= 1)] = np.nan                       # out of reach: NaN
+            s = leg.elbow * np.sqrt(1 - c * c)
+            dh = d / dist[:, None]
+            ua = c[:, None] * dh + s[:, None] * np.stack([-dh[:, 1], dh[:, 0]], axis=1)
+            ub = (d - leg.la * ua) / leg.lb
+            type1 = np.minimum(type1, np.abs(ua[:, 0] * ub[:, 1] - ua[:, 1] * ub[:, 0]))
+            z += (ub[:, 0] + 1j * ub[:, 1]) ** 2                # e^(2 i qb)
+            elbows.append(np.asarray(leg.base) + leg.la * ua)
+        type2 = np.sqrt(np.maximum(1 - np.abs(z) / len(legs), 0)) + 0 * type1  # NaN stays
+        side = np.ones(len(xd))
+        if len(legs) == 2:
+            dB, e = elbows[1] - elbows[0], xd - elbows[0]
+            side = model.spec.fk_branch * (dB[:, 0] * e[:, 1] - dB[:, 1] * e[:, 0])
+    return type1, type2, side
+
+
 def check_trajectory(model, trajectory):
     """Check every sample of a desired trajectory before a run.
 
-    Every sample must be reachable by every leg (WorkspaceError otherwise) and keep
-    min_i |sin(qb_i - qa_i)| >= ``limits.singularity_threshold`` (SingularityError), and the
-    samples must be finite. The error names the sample, its time and position.
+    Every sample must be reachable by every leg in the model's assembly mode (WorkspaceError
+    otherwise) and keep both singularity measures at or above their thresholds,
+    ``limits.singularity_threshold`` (type I, legs) and
+    ``limits.parallel_singularity_threshold`` (type II, actuation) (SingularityError naming
+    the kind), and the samples must be finite. The error names the sample, its time and
+    position.
     """
     xd = np.asarray(trajectory.xd, dtype=float)
     if not np.isfinite(xd).all():
         k = int(np.argwhere(~np.isfinite(xd))[0, 0])
         raise ValueError(f"desired position at sample {k} is not finite: {xd[k].tolist()}")
-    thr = model.singularity_threshold
-    # vectorised geometry of every sample at once (the same law of cosines as ik, in NumPy);
-    # the first offending sample is then re-checked with the generated ik for its message
-    measure = np.full(len(xd), np.inf)
-    for leg in model.spec.legs:
-        d = xd - np.asarray(leg.base)
-        dist = np.hypot(d[:, 0], d[:, 1])
-        with np.errstate(invalid="ignore", divide="ignore"):
-            c = (leg.la ** 2 + dist ** 2 - leg.lb ** 2) / (2 * leg.la * dist)
-            # |sin(qb - qa)| = dist sin(psi) / lb: the law of sines in the triangle A B O
-            s_ab = dist * np.sqrt(1 - c * c) / leg.lb
-        s_ab[~(np.abs(c) <= 1)] = np.nan
-        measure = np.minimum(measure, s_ab)  # NaN (out of reach) propagates
-    bad = np.flatnonzero(~(measure >= thr * (1 - 1e-12)))
-    for k in bad[:1]:
+    thr1, thr2 = model.singularity_threshold, model.parallel_singularity_threshold
+    type1, type2, side = pose_measures(model, xd)
+    # the first offending sample is re-checked with the generated ik for its message
+    ok = (type1 >= thr1 * (1 - 1e-12)) & (type2 >= thr2 * (1 - 1e-12)) & (side > 0)
+    for k in np.flatnonzero(~ok)[:1]:
         x = xd[k]
+        where = f"trajectory sample {k} (t = {trajectory.t[k]:.4f} s) at xe = {x.tolist()}"
         try:
             q = model.ik(x)
         except WorkspaceError as exc:
-            raise WorkspaceError(f"trajectory sample {k} (t = {trajectory.t[k]:.4f} s): {exc}") from None
-        value = float(np.min(np.abs(model.singularity(q))))
-        if value < thr:
-            raise SingularityError(
-                f"trajectory sample {k} (t = {trajectory.t[k]:.4f} s) at xe = {x.tolist()} is "
-                f"too close to a singularity: min_i |sin(qb_i - qa_i)| = {value:.4g} < "
-                f"{thr} (limits.singularity_threshold)")
+            raise WorkspaceError(f"{where}: {exc}") from None
+        sing = model.singularity_measures(q)
+        if not (sing[0] >= thr1 and sing[1] >= thr2):
+            raise SingularityError(f"{where}: {model.singularity_message(sing)}")
 
 
 def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_hat0=None,

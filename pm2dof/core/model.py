@@ -27,7 +27,8 @@ GENERATED = REPO / "generated"
 
 _STEPPING = ("na_step", "na_proj_step", "apd_step", "plant_xedd", "plant_step", "measure",
              "na_closed_loop", "na_proj_closed_loop", "apd_closed_loop")
-_FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "W", "S", "Wdot", "M", "C", "Me", "Ce",
+_FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "singularity_measures", "W", "S", "Wdot",
+              "M", "C", "Me", "Ce",
               "StF", "Y", "forward_dynamics", "na_step", "na_proj_step", "apd_step", "plant_xedd",
               "plant_step", "measure", "na_closed_loop", "na_proj_closed_loop", "apd_closed_loop")
 
@@ -71,14 +72,26 @@ class Model:
 
     Build with :func:`load_model`. Attributes: ``name``, ``spec`` (the validated model file),
     ``n_legs``, ``bases`` (n, 2) m, ``param_names`` (5n,), ``theta_nominal`` (5n,) (Tables
-    1-2), ``singularity_threshold``, ``manifest``, ``library`` (path of the compiled C).
+    1-2), ``singularity_threshold`` (type I), ``parallel_singularity_threshold`` (type II),
+    ``manifest``, ``library`` (path of the compiled C).
     Angles in rad, lengths in m; q = [qa_1..qa_n, qb_1..qb_n].
+
+    Two kinds of singularity are guarded (:meth:`singularity_measures`): type I, a leg
+    stretched or folded (min_i |sin(qb_i - qa_i)| -> 0, W unbounded), and type II, the
+    actuation losing a direction (all distal links parallel, S^T rank-deficient). Functions
+    of the pose raise :class:`SingularityError` naming the kind when either measure is below
+    its threshold in ``[limits]``.
 
     A Model holds one small scratch buffer, so one Model must not be called from two threads
     at once; load one Model per thread.
     """
 
     __slots__ = ("spec", "manifest", "library", "_lib", "_f", "_sing_thr", "_sing", "__weakref__")
+
+    #: names of the two singularity measures, in the order of :meth:`singularity_measures`
+    SINGULARITY_KINDS = ("type I (a leg's links aligned)",
+                         "type II (parallel: all distal links aligned, the actuators lose a "
+                         "task direction)")
 
     def __init__(self, spec, gen_dir=None):
         gen_dir = Path(gen_dir) if gen_dir is not None else GENERATED / spec.name
@@ -98,8 +111,9 @@ class Model:
             funcs[short] = f
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
                      ("_lib", lib), ("_f", types.MappingProxyType(funcs)),
-                     ("_sing_thr", spec.limits["singularity_threshold"]),
-                     ("_sing", array.array("d", [0.0]))):  # array: ~3x faster [0] than numpy
+                     ("_sing_thr", (spec.limits["singularity_threshold"],
+                                    spec.limits["parallel_singularity_threshold"])),
+                     ("_sing", array.array("d", [0.0, 0.0]))):  # array: [0] ~3x faster than numpy
             object.__setattr__(self, k, v)
 
     def __setattr__(self, key, value):
@@ -117,8 +131,11 @@ class Model:
     n_legs = property(lambda self: self.spec.n_legs, doc="number of legs (= actuators)")
     param_names = property(lambda self: self.spec.param_names, doc="names of theta, in order")
     theta_nominal = property(lambda self: self.spec.theta_nominal, doc="(5n,) Tables 1-2")
-    singularity_threshold = property(lambda self: self._sing_thr,
-                                     doc="smallest allowed min_i |sin(qb_i - qa_i)|")
+    singularity_threshold = property(lambda self: self._sing_thr[0],
+                                     doc="type I: smallest allowed min_i |sin(qb_i - qa_i)|")
+    parallel_singularity_threshold = property(
+        lambda self: self._sing_thr[1],
+        doc="type II: smallest allowed normalised sigma_min of the distal directions")
 
     @property
     def bases(self):
@@ -172,15 +189,23 @@ class Model:
                 f(*args, *outs)
             except _cbind.NonFiniteOutputError as exc:
                 nonfinite = exc
-        if sing is not None and not sing[0] >= self._sing_thr:
+        if sing is not None and not (sing[0] >= self._sing_thr[0] and
+                                     sing[1] >= self._sing_thr[1]):
             if sing[0] != sing[0] and short == "forward_dynamics":
                 self.ik(args[0])  # NaN measure: some leg cannot reach xe; ik names it
-            raise SingularityError(
-                f"{short}: the pose is too close to a singularity: min_i |sin(qb_i - qa_i)| = "
-                f"{sing[0]:.4g} < threshold {self._sing_thr} (limits.singularity_threshold)")
+            raise SingularityError(f"{short}: {self.singularity_message(sing)}")
         if nonfinite is not None:
             raise nonfinite
         return out
+
+    def singularity_message(self, sing):
+        """Which kind of singularity the measures ``sing`` = [type I, type II] hit, with the
+        measure, its threshold and the model-file key (for error messages)."""
+        kind = 0 if not sing[0] >= self._sing_thr[0] else 1
+        what = ("min_i |sin(qb_i - qa_i)|", "sigma_min(S with unit rows) / sqrt(n/2)")[kind]
+        key = ("singularity_threshold", "parallel_singularity_threshold")[kind]
+        return (f"the pose is too close to a {self.SINGULARITY_KINDS[kind]} singularity: "
+                f"{what} = {sing[kind]:.4g} < threshold {self._sing_thr[kind]} (limits.{key})")
 
     # --- kinematics ----------------------------------------------------------------------
     def ik(self, xe, out=None):
@@ -199,7 +224,9 @@ class Model:
         Raises
         ------
         WorkspaceError
-            If a leg cannot reach ``xe`` (names the leg and its distance).
+            If a leg cannot reach ``xe`` (names the leg and its distance), or, for two legs,
+            if the pose at ``xe`` is not in the model's assembly mode (``fk_branch``): ``fk``
+            could not return to it. So ``fk(ik(xe)[:n]) == xe`` wherever ``ik`` answers.
         """
         out = self._eval("ik", (2 * self.n_legs,), out, xe)
         if not np.isfinite(out).all():
@@ -211,6 +238,13 @@ class Model:
                     raise WorkspaceError(
                         f"xe = {xe.tolist()} is out of reach of leg {i + 1}: distance from its "
                         f"base {dist:.6g} m is outside [{lo:.6g}, {hi:.6g}] m")
+            if self.n_legs == 2:
+                side = {1: "left", -1: "right"}[self.spec.fk_branch]
+                raise WorkspaceError(
+                    f"xe = {xe.tolist()} is reachable by both legs, but not in the model's "
+                    f"assembly mode: with these elbows the tip lies on the other side of the "
+                    f"line B1 -> B2 than model.fk_branch = {side!r}, so fk could not return to "
+                    f"it (the parallel singularity, distal links aligned, separates the modes)")
             raise WorkspaceError(f"inverse kinematics failed at xe = {xe.tolist()}")
         return out
 
@@ -234,6 +268,18 @@ class Model:
     def singularity(self, q, out=None):
         """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0."""
         return self._eval("singularity", (self.n_legs,), out, q)
+
+    def singularity_measures(self, q, out=None):
+        """The two singularity measures at the pose q (2n,), each in [0, 1], 0 when singular.
+
+        ``[0]`` type I (a leg): min_i |sin(qb_i - qa_i)|, compared with
+        ``limits.singularity_threshold``; ``[1]`` type II (parallel, the actuation): the smallest
+        singular value of S with its rows normalised (the distal links' directions), over its
+        largest possible value sqrt(n/2), i.e. sqrt(1 - |sum_i exp(2 i qb_i)| / n); 0 when all
+        distal links are parallel; compared with ``limits.parallel_singularity_threshold``.
+        Never raises on a singular pose: it is the measure.
+        """
+        return self._eval("singularity_measures", (2,), out, q)
 
     def W(self, q, out=None):
         """W (2n, 2) with qd = W xed (eq. 7). Raises SingularityError near singular poses."""

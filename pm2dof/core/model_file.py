@@ -32,6 +32,9 @@ FRICTION_CONSTANTS = {  # formulation constants each friction model needs in [mo
     "smooth_sign": ("sign_smoothing_velocity",),
 }
 INERTIAL = ("alpha", "beta", "gamma")
+#: [limits] parallel_singularity_threshold when a model file does not set it (type II measure,
+#: see Model.singularity_measures; 0.1 is about 8 degrees between a five-bar's distal links)
+DEFAULT_PARALLEL_THRESHOLD = 0.1
 ELBOWS = {"left": 1, "right": -1}
 FK_BRANCHES = {"left": 1, "right": -1}
 
@@ -311,12 +314,19 @@ def read_model_file(path):
     if isinstance(substeps, bool) or not isinstance(substeps, int) or not 1 <= substeps <= 100:
         _fail(path, "model.rk4_substeps", f"must be an integer in [1, 100], got {substeps!r}")
     param_names, theta = _read_nominal(path, _table(path, doc, "nominal"), len(legs), friction)
-    limits = _read_section(path, "limits", _table(path, doc, "limits"),
+    limits_raw = _table(path, doc, "limits")
+    limits_raw = dict(limits_raw) if isinstance(limits_raw, dict) else limits_raw
+    parallel = (limits_raw.pop("parallel_singularity_threshold", DEFAULT_PARALLEL_THRESHOLD)
+                if isinstance(limits_raw, dict) else None)
+    limits = _read_section(path, "limits", limits_raw,
                            {"singularity_threshold": (None, "pos"), "tau_max": ("n", "pos")},
                            len(legs), len(param_names))
-    if limits["singularity_threshold"] >= 1:
-        _fail(path, "limits.singularity_threshold",
-              f"is a bound on |sin|, must be < 1, got {limits['singularity_threshold']}")
+    limits["parallel_singularity_threshold"] = _number(
+        path, "limits.parallel_singularity_threshold", parallel, positive=True)
+    for key in ("singularity_threshold", "parallel_singularity_threshold"):
+        if limits[key] >= 1:  # both measures lie in [0, 1]
+            _fail(path, f"limits.{key}", f"bounds a measure in [0, 1], must be < 1, got "
+                                         f"{limits[key]}")
     sensing, gains, plant, trajs = _read_runtime(path, doc, len(legs), len(param_names), legs)
     spec = ModelSpec(
         path=str(path), name=name, description=str(model.get("description", "")),

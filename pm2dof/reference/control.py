@@ -67,14 +67,15 @@ def layouts(n: int) -> dict:
     -------
     dict of str -> pm2dof.core.layout.Layout
         ``ctrl_state`` (xe_prev 2, v 2, theta_hat p); ``na_params`` (Kd 2, Q 2, Gamma p,
-        T, vel_alpha, sing_threshold, tau_max n); ``apd_params`` (Kp 2, Kv 2, T,
-        vel_alpha, sing_threshold, tau_max n); ``plant`` (alpha, beta, gamma, fv, fc, fs
+        T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n); ``apd_params``
+        (Kp 2, Kv 2, T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n); ``plant`` (alpha, beta, gamma, fv, fc, fs
         each n, stribeck_velocity, coulomb_smoothing_velocity, encoder_step);
         ``cl_state`` (xe 2, xed 2, ctrl_state); ``cl_input`` (xd 2, xd_dot 2,
         xd_ddot 2); ``cl_output`` (xe 2, xed 2, tau_a n, status 1, theta_hat p).
     """
     p = 5 * n
-    common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("tau_max", n)]
+    common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
+              ("tau_max", n)]
     state = [("xe_prev", 2), ("v", 2), ("theta_hat", p)]
     fields = {
         "ctrl_state": state,
@@ -167,9 +168,11 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=Fals
         theta_next = theta
     tau = _min_norm_torque(ref.S(g, q), u)                        # eq. 21
     tau_max = P["tau_max"]
-    sing = float(np.min(np.abs(np.sin(q[n:] - q[:n]))))
+    with np.errstate(invalid="ignore"):
+        sing, sing_parallel = _measures(q, n)
     finite = bool(np.isfinite(np.concatenate([tau, theta_next, xe, v])).all())
-    if not sing >= P["sing_threshold"][0]:  # singular (or NaN measure): safe torque, no update
+    regular = sing >= P["sing_threshold"][0] and sing_parallel >= P["parallel_sing_threshold"][0]
+    if not regular:  # singular (or NaN measure): safe torque, no update
         status, tau_out, theta_out = STATUS["singular"], np.zeros(n), theta
     elif not finite:                       # non-finite: safe torque, keep the whole state
         status, tau_out, theta_out = STATUS["non_finite"], np.zeros(n), theta
@@ -180,8 +183,20 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=Fals
     if not finite:
         xe, v = st["xe_prev"].copy(), st["v"].copy()
     state_next = np.concatenate([xe, v, theta_out])      # ctrl_state layout
-    diag = {"xe": xe, "v": v, "e": e, "edot": edot, "sing": sing, "q": q}
+    diag = {"xe": xe, "v": v, "e": e, "edot": edot, "sing": sing, "sing_parallel": sing_parallel,
+            "q": q}
     return tau_out, state_next, status, diag
+
+
+def _measures(q, n):
+    """(type I, type II) from the joint angles: min_i |sin(qb_i - qa_i)| and the normalised
+    smallest singular value of the distal directions U = [u(qb_i)] (rows), by SVD. NaN angles
+    give NaN measures (the C's NaN-keeping min); a NaN anywhere is singular."""
+    if not np.isfinite(q).all():
+        return np.nan, np.nan
+    U = np.stack([np.cos(q[n:]), np.sin(q[n:])], axis=1)
+    sv = np.linalg.svd(U, compute_uv=False)
+    return float(np.min(np.abs(np.sin(q[n:] - q[:n])))), float(sv[-1] / np.sqrt(n / 2))
 
 
 _STEP_DOC = """One control sample of the {what}, as the generated ``{law}_step``.
@@ -207,11 +222,12 @@ _STEP_DOC = """One control sample of the {what}, as the generated ``{law}_step``
         xe_prev = fk(qa), the filtered v, and theta_hat ({update}); theta_hat is unchanged
         at a singular sample.
     status : int
-        0 ok, 1 singular (min_i |sin(qb_i - qa_i)| < sing_threshold), 2 saturated
+        0 ok, 1 singular (min_i |sin(qb_i - qa_i)| < sing_threshold, or the type II
+        measure < parallel_sing_threshold), 2 saturated
         (some |tau_i| > tau_max_i before clipping), 3 non-finite (zero torque, state kept).
     diag : dict
-        xe (2,), v (2,), e (2,), edot (2,) (the C's ``diag`` = [xe, v, e, edot]), plus sing
-        (the singularity measure) and q (2n,) (the joint angles used).
+        xe (2,), v (2,), e (2,), edot (2,) (the C's ``diag`` = [xe, v, e, edot, sing,
+        sing_parallel]), sing (type I), sing_parallel (type II) and q (2n,) (the angles used).
 """
 
 

@@ -54,6 +54,7 @@ __all__ = [
     "Ce",
     "task_friction",
     "Y",
+    "singularity_measures",
     "forward_dynamics",
     "forward_dynamics_joint",
 ]
@@ -237,7 +238,9 @@ def ik(g: Any, xe: np.ndarray) -> np.ndarray:
     Raises
     ------
     ValueError
-        If some leg cannot reach O (distance outside [|la-lb|, la+lb]).
+        If some leg cannot reach O (distance outside [|la-lb|, la+lb]); for n == 2, if the
+        pose is not in the assembly mode ``g.fk_branch`` (O on the other side of B_1 -> B_2,
+        where :func:`fk` cannot return).
 
     Notes
     -----
@@ -260,6 +263,12 @@ def ik(g: Any, xe: np.ndarray) -> np.ndarray:
     elb = bases + la[:, None] * _u(qa)  # elbows B_i
     e = xe[None, :] - elb  # B_i -> O, length lb_i
     qb = qa + _wrap(np.arctan2(e[:, 1], e[:, 0]) - qa)
+    if n == 2:
+        d12 = elb[1] - elb[0]
+        side = d12[0] * e[0, 1] - d12[1] * e[0, 0]  # cross(B2 - B1, O - B1)
+        if not side * int(getattr(g, "fk_branch", 1)) > 0:
+            raise ValueError(f"ik: xe={xe.tolist()} is in the other assembly mode than "
+                             f"fk_branch={getattr(g, 'fk_branch', 1)}")
     return np.concatenate([qa, qb])
 
 
@@ -628,6 +637,21 @@ def Y(g: Any, q: np.ndarray, xed: np.ndarray, xrd: np.ndarray, xrdd: np.ndarray)
     xrdd = np.asarray(xrdd, dtype=float).reshape(2)
     eye = np.eye(5 * n)
     return np.column_stack([_Y_expr(g, q, xed, xrd, xrdd, eye[k]) for k in range(5 * n)])
+
+
+def singularity_measures(g: Any, q: np.ndarray) -> np.ndarray:
+    """[type I, type II] singularity measures, by a plain SVD (independent of the C's closed form).
+
+    type I: min_i |sin(qb_i - qa_i)|. type II: the smallest singular value of S (eq. 8) after
+    scaling each row to unit length, divided by sqrt(n/2) (its largest possible value, reached
+    when the distal directions are isotropic).
+    """
+    qa, qb = _split(g, q)
+    Sq = S(g, q)
+    rows = Sq / np.linalg.norm(Sq, axis=1, keepdims=True)
+    n = rows.shape[0]
+    sv = np.linalg.svd(rows, compute_uv=False)
+    return np.array([np.min(np.abs(np.sin(qb - qa))), sv[-1] / np.sqrt(n / 2)])
 
 
 def forward_dynamics(g: Any, xe: np.ndarray, xed: np.ndarray, tau_a: np.ndarray,
