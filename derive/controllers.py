@@ -1,13 +1,16 @@
 # Generated controller steps: Fig. 2 signal processing + NA law (eqs. 14-29) or APD law (eq. 40).
+import itertools
+
 import casadi as ca
 
-from .factored import regressor, solve2
+from .factored import regressor
 from .layouts import Layout
+from .splits import SPLITS, min_max, min_norm
 
 __all__ = ["controller_layouts", "controller_functions", "STATUS"]
 
 # status codes of a step (also in the manifest): what the step did with this sample
-STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3}
+STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3, "preload_infeasible": 4}
 # smallest alpha, gamma the optional projection of theta_hat allows, kg*m^2
 PROJECTION_FLOOR = 1e-6
 
@@ -16,8 +19,9 @@ def controller_layouts(n, p):
     """Flat-vector layouts: the controller state and each controller's parameters."""
     state = Layout([("xe_prev", 2), ("v", 2), ("theta_hat", p)])
     # sing_threshold: type I (legs), parallel_sing_threshold: type II (actuation)
+    # preload_sign, preload: the "preload" split's sign per actuator (+-1) and least |tau|, N*m
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
-              ("tau_max", n)]
+              ("tau_max", n), ("preload_sign", n), ("preload", n)]
     na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p)] + common)
     apd = Layout([("Kp", 2), ("Kv", 2)] + common)
     return {"ctrl_state": state, "na_params": na, "apd_params": apd}
@@ -47,14 +51,24 @@ def _all_finite(x):
     return ca.fabs(ca.sum1(x)) < ca.inf
 
 
-def _min_norm_torque(S, u):
-    """tau_a = S (S^T S)^-1 u, the minimum-norm actuator torques (eq. 21), 2x2 in closed form."""
-    return S @ solve2(S.T @ S, u)
+def _split(d, split, S, u, P):
+    """tau_a with S^T tau_a = u by the named split (derive/splits.py) and its status flags
+    (saturated, preload_infeasible) before clipping to tau_max."""
+    w = P["tau_max"]
+    if split == "min_norm":
+        tau = min_norm(S, u)                                       # eq. 21
+        return tau, ca.mmax(ca.fabs(tau) - w) > 0, ca.SX(0)
+    if split == "min_max":
+        tau, t = min_max(S, u, w)
+        return tau, t > 1, ca.SX(0)
+    tau, mode = d.preload(S, u, w, P["preload_sign"], P["preload"])
+    return tau, mode == 2, mode == 1
 
 
 def controller_functions(d, prefix):
-    """``<prefix>_na_step``, ``<prefix>_na_proj_step`` (theta_hat projected after each update)
-    and ``<prefix>_apd_step``: one 2 ms sample each, all in C.
+    """``<prefix>_<law><split>_step`` for law na, na_proj (theta_hat projected after each
+    update) and apd, and split "" (min_norm, eq. 21), "_minmax", "_preload"
+    (derive/splits.py): one 2 ms sample each, all in C.
 
     Inputs: state (xe_prev, v, theta_hat), qa (measured active angles), xd, xd_dot, xd_ddot
     (desired position, velocity, acceleration), params (see controller_layouts).
@@ -72,8 +86,8 @@ def controller_functions(d, prefix):
     st = lay["ctrl_state"].split(state)
     functions = []
 
-    for name, law, project in (("na", "na", False), ("na_proj", "na", True),
-                               ("apd", "apd", False)):
+    for (name, law, project), (split, suffix) in itertools.product(
+            (("na", "na", False), ("na_proj", "na", True), ("apd", "apd", False)), SPLITS.items()):
         params = ca.SX.sym("params", lay[f"{law}_params"].size)
         P = lay[f"{law}_params"].split(params)
         # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
@@ -100,9 +114,8 @@ def controller_functions(d, prefix):
         else:
             u = Y @ theta + P["Kp"] * e + P["Kv"] * edot           # eq. 40
             theta_next = theta
-        tau = _min_norm_torque(S, u)                    # eq. 21
+        tau, saturated, unpreloaded = _split(d, split, S, u, P)       # eq. 21 or another split
         tau_sat = ca.fmin(ca.fmax(tau, -P["tau_max"]), P["tau_max"])
-        saturated = ca.mmax(ca.fabs(tau) - P["tau_max"]) > 0
         sing = d.singularity_measures(conv)                        # [type I, type II]
         regular = ca.logic_and(sing[0] >= P["sing_threshold"],     # false for NaN too
                                sing[1] >= P["parallel_sing_threshold"])
@@ -111,12 +124,13 @@ def controller_functions(d, prefix):
         tau_out = ca.if_else(good, tau_sat, ca.DM.zeros(n))        # safe torque: zero
         theta_out = ca.if_else(good, theta_next, theta)            # no update on a bad sample
         status = ca.if_else(regular, ca.if_else(finite, ca.if_else(
-            saturated, STATUS["saturated"], STATUS["ok"]), STATUS["non_finite"]),
+            saturated, STATUS["saturated"], ca.if_else(
+                unpreloaded, STATUS["preload_infeasible"], STATUS["ok"])), STATUS["non_finite"]),
             STATUS["singular"])
         state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(finite, xe, st["xe_prev"]),
                                             v=ca.if_else(finite, v, st["v"]), theta_hat=theta_out)
         functions.append(ca.Function(
-            f"{prefix}_{name}_step", [state, qa, xd, xd_dot, xd_ddot, params],
+            f"{prefix}_{name}{suffix}_step", [state, qa, xd, xd_dot, xd_ddot, params],
             [tau_out, state_next, status, ca.vertcat(xe, v, e, edot, sing)],
             ["state", "qa", "xd", "xd_dot", "xd_ddot", "params"],
             ["tau_a", "state_next", "status", "diag"]))

@@ -4,6 +4,7 @@ import sympy as sp
 
 from .dynamics import Dynamics
 from .kinematics import Kinematics
+from .splits import min_max, min_norm, preload_function
 from .symbols import Symbols
 from .to_casadi import Converter
 
@@ -18,6 +19,14 @@ class Derivation:
         self.sym = Symbols(spec.n_legs, spec.param_names)
         self.kin = Kinematics(spec, self.sym)
         self.dyn = Dynamics(spec, self.sym, self.kin)
+        self._preload = None
+
+    def preload(self, S, u, w, sigma, p):
+        """The preload split (derive/splits.py) as a call of one shared, never-inlined
+        function of this model: (tau, mode)."""
+        if self._preload is None:
+            self._preload = preload_function(self.spec.n_legs, self.spec.name)
+        return self._preload.call([S, u, w, sigma, p], False, True)
 
     def sx(self, name, n):
         return ca.SX.sym(name, n)
@@ -129,6 +138,14 @@ def model_functions(d, prefix):
     cy = d.converter_q(q, [(sym.xed, xed), (sym.xrd, xrd), (sym.xrdd, xrdd)])
     add("Y", [("q", q), ("xed", xed), ("xrd", xrd), ("xrdd", xrdd)],
         [("Y", cy(dyn.Y)), ("sing", sing)])                                     # eq. 13
+    u, w, sgn, pre = d.sx("u", 2), d.sx("tau_max", n), d.sx("preload_sign", n), d.sx("preload", n)
+    S = ca.reshape(cq(kin.S), 2, n).T                                           # eq. 8
+    t_mm, ratio = min_max(S, u, w)
+    t_pl, mode = d.preload(S, u, w, sgn, pre)
+    add("torque_splits", [("q", q), ("u", u), ("tau_max", w), ("preload_sign", sgn),
+                          ("preload", pre)],
+        [("tau_min_norm", min_norm(S, u)), ("tau_min_max", t_mm), ("min_max_ratio", ratio),
+         ("tau_preload", t_pl), ("preload_mode", mode), ("sing", sing)])       # S^T tau = u
     cfd = d.converter_xe(xe, [(sym.xed, xed), (sym.tau_a, tau_a), (sym.theta, theta)])
     add("forward_dynamics", [("xe", xe), ("xed", xed), ("tau_a", tau_a), ("theta", theta)],
         [("xedd", cfd(dyn.xedd)), ("sing", d.singularity_measures(cfd))])       # eqs. 10-12

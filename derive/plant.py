@@ -81,8 +81,9 @@ def closed_loop_functions(d, prefix, ctrl_fns, plant_fns, substeps):
     ctrl_lay = controller_layouts(n, p)
     f_step, f_meas = plant_fns[1], plant_fns[2]
     out = []
-    for name, step in zip(("na", "na_proj", "apd"), ctrl_fns):
-        law = "apd" if name == "apd" else "na"
+    for step in ctrl_fns:
+        name = step.name()[len(prefix) + 1:-len("_step")]          # e.g. na_proj_minmax
+        law = "apd" if name.startswith("apd") else "na"
         x = ca.MX.sym("x", lay["cl_state"].size)
         u = ca.MX.sym("u", lay["cl_input"].size)
         npar = ctrl_lay[f"{law}_params"].size

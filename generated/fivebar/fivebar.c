@@ -48,7 +48,21 @@ extern "C" {
 #define casadi_f22 CASADI_PREFIX(f22)
 #define casadi_f23 CASADI_PREFIX(f23)
 #define casadi_f24 CASADI_PREFIX(f24)
+#define casadi_f25 CASADI_PREFIX(f25)
+#define casadi_f26 CASADI_PREFIX(f26)
+#define casadi_f27 CASADI_PREFIX(f27)
+#define casadi_f28 CASADI_PREFIX(f28)
+#define casadi_f29 CASADI_PREFIX(f29)
 #define casadi_f3 CASADI_PREFIX(f3)
+#define casadi_f30 CASADI_PREFIX(f30)
+#define casadi_f31 CASADI_PREFIX(f31)
+#define casadi_f32 CASADI_PREFIX(f32)
+#define casadi_f33 CASADI_PREFIX(f33)
+#define casadi_f34 CASADI_PREFIX(f34)
+#define casadi_f35 CASADI_PREFIX(f35)
+#define casadi_f36 CASADI_PREFIX(f36)
+#define casadi_f37 CASADI_PREFIX(f37)
+#define casadi_f38 CASADI_PREFIX(f38)
 #define casadi_f4 CASADI_PREFIX(f4)
 #define casadi_f5 CASADI_PREFIX(f5)
 #define casadi_f6 CASADI_PREFIX(f6)
@@ -64,6 +78,7 @@ extern "C" {
 #define casadi_s11 CASADI_PREFIX(s11)
 #define casadi_s12 CASADI_PREFIX(s12)
 #define casadi_s13 CASADI_PREFIX(s13)
+#define casadi_s14 CASADI_PREFIX(s14)
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
@@ -153,16 +168,17 @@ static const casadi_int casadi_s2[3] = {8, 1, 1};
 static const casadi_int casadi_s3[3] = {10, 1, 1};
 static const casadi_int casadi_s4[3] = {16, 1, 1};
 static const casadi_int casadi_s5[3] = {20, 1, 1};
-static const casadi_int casadi_s6[3] = {14, 1, 1};
-static const casadi_int casadi_s7[3] = {1, 1, 1};
-static const casadi_int casadi_s8[3] = {15, 1, 1};
-static const casadi_int casadi_s9[3] = {18, 1, 1};
-static const casadi_int casadi_s10[3] = {6, 1, 1};
-static const casadi_int casadi_s11[3] = {35, 1, 1};
-static const casadi_int casadi_s12[3] = {17, 1, 1};
-static const casadi_int casadi_s13[3] = {25, 1, 1};
+static const casadi_int casadi_s6[3] = {1, 1, 1};
+static const casadi_int casadi_s7[3] = {14, 1, 1};
+static const casadi_int casadi_s8[3] = {24, 1, 1};
+static const casadi_int casadi_s9[3] = {15, 1, 1};
+static const casadi_int casadi_s10[3] = {18, 1, 1};
+static const casadi_int casadi_s11[3] = {6, 1, 1};
+static const casadi_int casadi_s12[3] = {39, 1, 1};
+static const casadi_int casadi_s13[3] = {17, 1, 1};
+static const casadi_int casadi_s14[3] = {29, 1, 1};
 
-static const casadi_real casadi_zeros[35] = 
+static const casadi_real casadi_zeros[39] = 
   {0.};
 
 /* fivebar_ik:(xe[2])->(q[4]) */
@@ -3132,8 +3148,522 @@ CASADI_SYMBOL_EXPORT int fivebar_Y_work_bytes(casadi_int *sz_arg, casadi_int* sz
   return 0;
 }
 
-/* fivebar_forward_dynamics:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],sing[2]) */
+/* fivebar_split_preload:(S[2x2],u[2],tau_max[2],preload_sign[2],preload[2])->(tau_a[2],mode) */
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  a00=0.;
+  a01=arg[0]? arg[0][0] : 0;
+  a02=casadi_sq(a01);
+  a03=arg[0]? arg[0][1] : 0;
+  a04=casadi_sq(a03);
+  a02=(a02+a04);
+  a04=arg[0]? arg[0][2] : 0;
+  a05=casadi_sq(a04);
+  a06=arg[0]? arg[0][3] : 0;
+  a07=casadi_sq(a06);
+  a05=(a05+a07);
+  a07=(a02*a05);
+  a08=(a01*a04);
+  a09=(a03*a06);
+  a08=(a08+a09);
+  a09=(a04*a01);
+  a10=(a06*a03);
+  a09=(a09+a10);
+  a10=(a08*a09);
+  a07=(a07-a10);
+  a07=(a07!=a00);
+  a10=1.;
+  a11=arg[3]? arg[3][0] : 0;
+  a12=(a00<a11);
+  a13=arg[4]? arg[4][0] : 0;
+  a14=(a12?a13:0);
+  a12=(!a12);
+  a15=arg[2]? arg[2][0] : 0;
+  a16=(-a15);
+  a12=(a12?a16:0);
+  a14=(a14+a12);
+  a12=1.0000000000000000e-10;
+  a16=(a12*a15);
+  a14=(a14-a16);
+  a16=arg[1]? arg[1][0] : 0;
+  a17=(a05*a16);
+  a18=arg[1]? arg[1][1] : 0;
+  a19=(a08*a18);
+  a17=(a17-a19);
+  a05=(a02*a05);
+  a08=(a08*a09);
+  a05=(a05-a08);
+  a17=(a17/a05);
+  a08=(a01*a17);
+  a02=(a02*a18);
+  a09=(a09*a16);
+  a02=(a02-a09);
+  a02=(a02/a05);
+  a05=(a04*a02);
+  a08=(a08+a05);
+  a14=(a14<=a08);
+  a05=(a00<a11);
+  a09=(a05?a15:0);
+  a05=(!a05);
+  a19=(-a13);
+  a05=(a05?a19:0);
+  a09=(a09+a05);
+  a05=(a12*a15);
+  a09=(a09+a05);
+  a09=(a08<=a09);
+  a14=(a14&&a09);
+  a14=(a10&&a14);
+  a09=arg[3]? arg[3][1] : 0;
+  a05=(a00<a09);
+  a19=arg[4]? arg[4][1] : 0;
+  a20=(a05?a19:0);
+  a05=(!a05);
+  a21=arg[2]? arg[2][1] : 0;
+  a22=(-a21);
+  a05=(a05?a22:0);
+  a20=(a20+a05);
+  a05=(a12*a21);
+  a20=(a20-a05);
+  a17=(a03*a17);
+  a02=(a06*a02);
+  a17=(a17+a02);
+  a20=(a20<=a17);
+  a02=(a00<a09);
+  a05=(a02?a21:0);
+  a02=(!a02);
+  a22=(-a19);
+  a02=(a02?a22:0);
+  a05=(a05+a02);
+  a02=(a12*a21);
+  a05=(a05+a02);
+  a05=(a17<=a05);
+  a20=(a20&&a05);
+  a14=(a14&&a20);
+  a07=(a07&&a14);
+  a14=(a00||a07);
+  a20=casadi_sq(a08);
+  a05=casadi_sq(a17);
+  a20=(a20+a05);
+  a05=casadi_inf;
+  a20=(a20<a05);
+  a07=(a07&&a20);
+  a08=(a07?a08:0);
+  a08=(a14?a08:0);
+  a20=(!a14);
+  a02=(a03*a09);
+  a22=(a02*a04);
+  a23=(a06*a09);
+  a24=(a23*a01);
+  a22=(a22-a24);
+  a24=(a22!=a00);
+  a25=(a12*a15);
+  a25=(a15+a25);
+  a25=(-a25);
+  a26=(a06*a09);
+  a26=(a26*a19);
+  a26=(a18-a26);
+  a02=(a02*a26);
+  a27=(a03*a09);
+  a27=(a27*a19);
+  a27=(a16-a27);
+  a23=(a23*a27);
+  a02=(a02-a23);
+  a02=(a02/a22);
+  a25=(a25<=a02);
+  a23=(a12*a15);
+  a23=(a15+a23);
+  a23=(a02<=a23);
+  a25=(a25&&a23);
+  a25=(a10&&a25);
+  a23=(a12*a21);
+  a23=(a21+a23);
+  a23=(-a23);
+  a27=(a27*a04);
+  a26=(a26*a01);
+  a27=(a27-a26);
+  a27=(a27/a22);
+  a22=(a19+a27);
+  a22=(a09*a22);
+  a23=(a23<=a22);
+  a26=(a12*a21);
+  a26=(a21+a26);
+  a26=(a22<=a26);
+  a23=(a23&&a26);
+  a25=(a25&&a23);
+  a24=(a24&&a25);
+  a25=casadi_fmax(a15,a21);
+  a25=(a12*a25);
+  a25=(a27-a25);
+  a23=(a11*a02);
+  a23=(a23-a13);
+  a26=(a09*a22);
+  a26=(a26-a19);
+  a23=casadi_fmin(a23,a26);
+  a25=(a25<=a23);
+  a24=(a24&&a25);
+  a25=(a00||a24);
+  a25=(a25||a00);
+  a25=(a25||a00);
+  a23=(a01*a11);
+  a26=(a23*a06);
+  a28=(a04*a11);
+  a29=(a28*a03);
+  a26=(a26-a29);
+  a29=(a26!=a00);
+  a30=(a12*a15);
+  a30=(a15+a30);
+  a30=(-a30);
+  a31=(a01*a11);
+  a31=(a31*a13);
+  a31=(a16-a31);
+  a32=(a31*a06);
+  a33=(a04*a11);
+  a33=(a33*a13);
+  a33=(a18-a33);
+  a34=(a33*a03);
+  a32=(a32-a34);
+  a32=(a32/a26);
+  a34=(a13+a32);
+  a34=(a11*a34);
+  a30=(a30<=a34);
+  a35=(a12*a15);
+  a35=(a15+a35);
+  a35=(a34<=a35);
+  a30=(a30&&a35);
+  a30=(a10&&a30);
+  a35=(a12*a21);
+  a35=(a21+a35);
+  a35=(-a35);
+  a23=(a23*a33);
+  a28=(a28*a31);
+  a23=(a23-a28);
+  a23=(a23/a26);
+  a35=(a35<=a23);
+  a26=(a12*a21);
+  a26=(a21+a26);
+  a26=(a23<=a26);
+  a35=(a35&&a26);
+  a30=(a30&&a35);
+  a29=(a29&&a30);
+  a15=casadi_fmax(a15,a21);
+  a12=(a12*a15);
+  a12=(a32-a12);
+  a11=(a11*a34);
+  a11=(a11-a13);
+  a09=(a09*a23);
+  a09=(a09-a19);
+  a11=casadi_fmin(a11,a09);
+  a12=(a12<=a11);
+  a29=(a29&&a12);
+  a25=(a25||a29);
+  a25=(a25||a00);
+  a25=(a25||a00);
+  a32=(-a32);
+  a27=(-a27);
+  a00=(a27<a05);
+  a24=(a24&&a00);
+  a27=(a24?a27:0);
+  a00=(!a24);
+  a00=(a00?a05:0);
+  a27=(a27+a00);
+  a32=(a32<a27);
+  a29=(a29&&a32);
+  a34=(a29?a34:0);
+  a32=(!a29);
+  a02=(a24?a02:0);
+  a02=(a32?a02:0);
+  a34=(a34+a02);
+  a34=(a25?a34:0);
+  a02=(!a25);
+  a27=casadi_sq(a04);
+  a00=casadi_sq(a06);
+  a27=(a27+a00);
+  a00=(a27*a16);
+  a05=(a01*a04);
+  a12=(a03*a06);
+  a05=(a05+a12);
+  a12=(a05*a18);
+  a00=(a00-a12);
+  a12=casadi_sq(a01);
+  a11=casadi_sq(a03);
+  a12=(a12+a11);
+  a27=(a12*a27);
+  a11=(a04*a01);
+  a09=(a06*a03);
+  a11=(a11+a09);
+  a05=(a05*a11);
+  a27=(a27-a05);
+  a00=(a00/a27);
+  a01=(a01*a00);
+  a12=(a12*a18);
+  a11=(a11*a16);
+  a12=(a12-a11);
+  a12=(a12/a27);
+  a04=(a04*a12);
+  a01=(a01+a04);
+  a01=(a02?a01:0);
+  a34=(a34+a01);
+  a34=(a20?a34:0);
+  a08=(a08+a34);
+  if (res[0]!=0) res[0][0]=a08;
+  a07=(a07?a17:0);
+  a07=(a14?a07:0);
+  a29=(a29?a23:0);
+  a24=(a24?a22:0);
+  a32=(a32?a24:0);
+  a29=(a29+a32);
+  a29=(a25?a29:0);
+  a03=(a03*a00);
+  a06=(a06*a12);
+  a03=(a03+a06);
+  a02=(a02?a03:0);
+  a29=(a29+a02);
+  a20=(a20?a29:0);
+  a07=(a07+a20);
+  if (res[0]!=0) res[0][1]=a07;
+  a14=(!a14);
+  a10=(a25?a10:0);
+  a25=(!a25);
+  a07=2.;
+  a25=(a25?a07:0);
+  a10=(a10+a25);
+  a14=(a14?a10:0);
+  if (res[1]!=0) res[1][0]=a14;
+  return 0;
+}
+
+/* fivebar_torque_splits:(q[4],u[2],tau_max[2],preload_sign[2],preload[2])->(tau_min_norm[2],tau_min_max[2],min_max_ratio,tau_preload[2],preload_mode,sing[2]) */
 static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20;
+  a00=2.4399999999999999e-01;
+  a01=-5.9535999999999999e-02;
+  a02=arg[0]? arg[0][2] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=arg[0]? arg[0][0] : 0;
+  a06=sin(a05);
+  a04=(a04*a06);
+  a07=5.9535999999999999e-02;
+  a05=cos(a05);
+  a08=(a07*a05);
+  a02=sin(a02);
+  a08=(a08*a02);
+  a04=(a04+a08);
+  a04=(a00/a04);
+  a08=(a04*a03);
+  a04=(a04*a02);
+  a09=casadi_sq(a04);
+  a10=arg[0]? arg[0][3] : 0;
+  a11=cos(a10);
+  a01=(a01*a11);
+  a12=arg[0]? arg[0][1] : 0;
+  a13=sin(a12);
+  a01=(a01*a13);
+  a12=cos(a12);
+  a07=(a07*a12);
+  a10=sin(a10);
+  a07=(a07*a10);
+  a01=(a01+a07);
+  a01=(a00/a01);
+  a07=(a01*a10);
+  a14=casadi_sq(a07);
+  a09=(a09+a14);
+  a14=arg[1]? arg[1][0] : 0;
+  a15=(a09*a14);
+  a16=(a08*a04);
+  a01=(a01*a11);
+  a17=(a01*a07);
+  a16=(a16+a17);
+  a17=arg[1]? arg[1][1] : 0;
+  a18=(a16*a17);
+  a15=(a15-a18);
+  a18=casadi_sq(a08);
+  a19=casadi_sq(a01);
+  a18=(a18+a19);
+  a09=(a18*a09);
+  a19=(a04*a08);
+  a20=(a07*a01);
+  a19=(a19+a20);
+  a16=(a16*a19);
+  a09=(a09-a16);
+  a15=(a15/a09);
+  a16=(a08*a15);
+  a18=(a18*a17);
+  a19=(a19*a14);
+  a18=(a18-a19);
+  a18=(a18/a09);
+  a09=(a04*a18);
+  a16=(a16+a09);
+  if (res[0]!=0) res[0][0]=a16;
+  a15=(a01*a15);
+  a18=(a07*a18);
+  a15=(a15+a18);
+  if (res[0]!=0) res[0][1]=a15;
+  if (res[1]!=0) res[1][0]=a16;
+  if (res[1]!=0) res[1][1]=a15;
+  a16=casadi_fabs(a16);
+  a18=arg[2]? arg[2][0] : 0;
+  a16=(a16/a18);
+  a15=casadi_fabs(a15);
+  a09=arg[2]? arg[2][1] : 0;
+  a15=(a15/a09);
+  a16=casadi_fmax(a16,a15);
+  if (res[2]!=0) res[2][0]=a16;
+  arg[5]=w+0;
+  arg[6] = arg[1]? arg[1] + 0 : 0;
+  arg[7] = arg[2]? arg[2] + 0 : 0;
+  arg[8] = arg[3]? arg[3] + 0 : 0;
+  arg[9] = arg[4]? arg[4] + 0 : 0;
+  res[6]=w+12;
+  res[7]=w+14;
+  w[0] = a08;
+  w[1] = a01;
+  w[2] = a04;
+  w[3] = a07;
+  if (casadi_f16(arg+5, res+6, iw, w+15, 0)) return 1;
+  a08 = w[12];
+  a01 = w[13];
+  a04 = w[14];
+  if (res[3]!=0) res[3][0]=a08;
+  if (res[3]!=0) res[3][1]=a01;
+  if (res[4]!=0) res[4][0]=a04;
+  a06=(a06*a03);
+  a05=(a05*a02);
+  a06=(a06-a05);
+  a06=casadi_fabs(a06);
+  a13=(a13*a11);
+  a12=(a12*a10);
+  a13=(a13-a12);
+  a13=casadi_fabs(a13);
+  a12=(a06+a13);
+  a06=(a06-a13);
+  a06=casadi_fabs(a06);
+  a12=(a12-a06);
+  a06=2.;
+  a12=(a12/a06);
+  if (res[5]!=0) res[5][0]=a12;
+  a12=5.0000000000000000e-01;
+  a06=1.;
+  a13=casadi_sq(a03);
+  a05=casadi_sq(a02);
+  a13=(a13-a05);
+  a05=casadi_sq(a11);
+  a04=casadi_sq(a10);
+  a05=(a05-a04);
+  a13=(a13+a05);
+  a13=casadi_sq(a13);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a11=(2.*a11);
+  a11=(a11*a10);
+  a03=(a03+a11);
+  a03=casadi_sq(a03);
+  a13=(a13+a03);
+  a13=sqrt(a13);
+  a13=(a12*a13);
+  a06=(a06-a13);
+  a13=casadi_fabs(a06);
+  a06=(a06+a13);
+  a12=(a12*a06);
+  a12=sqrt(a12);
+  if (res[5]!=0) res[5][1]=a12;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_torque_splits(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f15(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_torque_splits_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_torque_splits_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_torque_splits_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_torque_splits_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_torque_splits_n_in(void) { return 5;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_torque_splits_n_out(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_torque_splits_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_torque_splits_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "u";
+    case 2: return "tau_max";
+    case 3: return "preload_sign";
+    case 4: return "preload";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_torque_splits_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_min_norm";
+    case 1: return "tau_min_max";
+    case 2: return "min_max_ratio";
+    case 3: return "tau_preload";
+    case 4: return "preload_mode";
+    case 5: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_torque_splits_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_torque_splits_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s6;
+    case 3: return casadi_s0;
+    case 4: return casadi_s6;
+    case 5: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_torque_splits_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 10;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 51;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_torque_splits_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 10*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 51*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_forward_dynamics:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],sing[2]) */
+static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -3617,7 +4147,7 @@ static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f15(arg, res, iw, w, mem);
+  return casadi_f17(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_checkout(void) {
@@ -3695,8 +4225,8 @@ CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* fivebar_na_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[20])->(tau_a[2],state_next[14],status,diag[10]) */
-static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[24])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -4281,7 +4811,7 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f16(arg, res, iw, w, mem);
+  return casadi_f18(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_step_checkout(void) {
@@ -4331,12 +4861,12 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_step_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_step_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s5;
+    case 5: return casadi_s8;
     default: return 0;
   }
 }
@@ -4344,8 +4874,8 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_step_sparsity_in(casadi_int i)
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_step_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s6;
-    case 2: return casadi_s7;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
     case 3: return casadi_s3;
     default: return 0;
   }
@@ -4367,8 +4897,1343 @@ CASADI_SYMBOL_EXPORT int fivebar_na_step_work_bytes(casadi_int *sz_arg, casadi_i
   return 0;
 }
 
-/* fivebar_na_proj_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[20])->(tau_a[2],state_next[14],status,diag[10]) */
-static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[24])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63;
+  a00=arg[5]? arg[5][16] : 0;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=sin(a01);
+  a03=5.9535999999999999e-02;
+  a04=-2.5000000000000000e-01;
+  a05=-2.4399999999999999e-01;
+  a06=(a05*a02);
+  a04=(a04+a06);
+  a07=2.4399999999999999e-01;
+  a08=arg[1]? arg[1][1] : 0;
+  a09=sin(a08);
+  a10=(a07*a09);
+  a04=(a04+a10);
+  a10=casadi_sq(a04);
+  a11=4.3300000000000000e-01;
+  a01=cos(a01);
+  a12=(a05*a01);
+  a11=(a11+a12);
+  a08=cos(a08);
+  a12=(a07*a08);
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a10+a13);
+  a03=(a03/a14);
+  a15=casadi_sq(a14);
+  a10=(2.*a10);
+  a13=(2.*a13);
+  a10=(a10+a13);
+  a13=casadi_sq(a10);
+  a15=(a15/a13);
+  a03=(a03-a15);
+  a03=sqrt(a03);
+  a15=2.5000000000000000e-01;
+  a13=(a05*a09);
+  a16=(a15+a13);
+  a17=(a07*a02);
+  a16=(a16+a17);
+  a18=(a03*a16);
+  a14=(a14/a10);
+  a10=(a14*a11);
+  a19=(a18+a10);
+  a20=casadi_sq(a19);
+  a03=(a03*a11);
+  a14=(a14*a04);
+  a04=(a03+a14);
+  a11=casadi_sq(a04);
+  a20=(a20+a11);
+  a20=sqrt(a20);
+  a19=(a19/a20);
+  a11=(a02*a19);
+  a04=(a04/a20);
+  a20=(a01*a04);
+  a11=(a11-a20);
+  a20=casadi_fabs(a11);
+  a21=-4.3300000000000000e-01;
+  a22=(a05*a08);
+  a21=(a21+a22);
+  a22=(a07*a01);
+  a21=(a21+a22);
+  a21=(a21+a18);
+  a21=(a21+a10);
+  a23=casadi_sq(a21);
+  a16=(a16+a03);
+  a16=(a16+a14);
+  a24=casadi_sq(a16);
+  a23=(a23+a24);
+  a23=sqrt(a23);
+  a21=(a21/a23);
+  a24=(a09*a21);
+  a16=(a16/a23);
+  a23=(a08*a16);
+  a24=(a24-a23);
+  a23=casadi_fabs(a24);
+  a25=(a20+a23);
+  a20=(a20-a23);
+  a20=casadi_fabs(a20);
+  a25=(a25-a20);
+  a20=2.;
+  a25=(a25/a20);
+  a00=(a00<=a25);
+  a23=arg[5]? arg[5][17] : 0;
+  a26=5.0000000000000000e-01;
+  a27=1.;
+  a28=casadi_sq(a19);
+  a29=casadi_sq(a04);
+  a28=(a28-a29);
+  a29=casadi_sq(a21);
+  a30=casadi_sq(a16);
+  a29=(a29-a30);
+  a28=(a28+a29);
+  a28=casadi_sq(a28);
+  a29=(2.*a19);
+  a29=(a29*a04);
+  a30=(2.*a21);
+  a30=(a30*a16);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a28=(a28+a29);
+  a28=sqrt(a28);
+  a28=(a26*a28);
+  a28=(a27-a28);
+  a29=casadi_fabs(a28);
+  a28=(a28+a29);
+  a26=(a26*a28);
+  a26=sqrt(a26);
+  a23=(a23<=a26);
+  a00=(a00&&a23);
+  a23=(a07*a19);
+  a28=(a06*a23);
+  a29=(a05*a04);
+  a30=(a29*a22);
+  a28=(a28-a30);
+  a23=(a23/a28);
+  a29=(a29/a28);
+  a30=casadi_sq(a29);
+  a31=(a05*a16);
+  a07=(a07*a21);
+  a32=(a13*a07);
+  a33=(a31*a12);
+  a32=(a32-a33);
+  a31=(a31/a32);
+  a33=casadi_sq(a31);
+  a30=(a30+a33);
+  a33=arg[4]? arg[4][0] : 0;
+  a34=arg[5]? arg[5][2] : 0;
+  a35=arg[3]? arg[3][0] : 0;
+  a36=arg[0]? arg[0][2] : 0;
+  a37=arg[5]? arg[5][15] : 0;
+  a18=(a22+a18);
+  a18=(a18+a10);
+  a10=arg[0]? arg[0][0] : 0;
+  a38=(a18-a10);
+  a39=arg[5]? arg[5][14] : 0;
+  a38=(a38/a39);
+  a38=(a38-a36);
+  a38=(a37*a38);
+  a38=(a36+a38);
+  a40=(a35-a38);
+  a41=(a34*a40);
+  a33=(a33+a41);
+  a41=(a23*a33);
+  a42=arg[4]? arg[4][1] : 0;
+  a43=arg[5]? arg[5][3] : 0;
+  a44=arg[3]? arg[3][1] : 0;
+  a45=arg[0]? arg[0][3] : 0;
+  a15=(a15+a17);
+  a15=(a15+a03);
+  a15=(a15+a14);
+  a14=arg[0]? arg[0][1] : 0;
+  a03=(a15-a14);
+  a03=(a03/a39);
+  a03=(a03-a45);
+  a37=(a37*a03);
+  a37=(a45+a37);
+  a03=(a44-a37);
+  a17=(a43*a03);
+  a42=(a42+a17);
+  a17=(a29*a42);
+  a41=(a41-a17);
+  a17=(a23*a38);
+  a46=(a29*a37);
+  a17=(a17-a46);
+  a46=(a05*a17);
+  a47=(a46*a02);
+  a48=arg[2]? arg[2][0] : 0;
+  a48=(a48-a18);
+  a34=(a34*a48);
+  a35=(a35+a34);
+  a34=(a23*a35);
+  a49=arg[2]? arg[2][1] : 0;
+  a49=(a49-a15);
+  a43=(a43*a49);
+  a44=(a44+a43);
+  a43=(a29*a44);
+  a34=(a34-a43);
+  a47=(a47*a34);
+  a06=(a06/a28);
+  a43=(a06*a37);
+  a22=(a22/a28);
+  a28=(a22*a38);
+  a43=(a43-a28);
+  a28=(a05*a43);
+  a50=(a28*a04);
+  a51=(a06*a44);
+  a52=(a22*a35);
+  a51=(a51-a52);
+  a50=(a50*a51);
+  a47=(a47+a50);
+  a50=(a29*a47);
+  a46=(a46*a01);
+  a46=(a46*a34);
+  a28=(a28*a19);
+  a28=(a28*a51);
+  a46=(a46+a28);
+  a28=(a23*a46);
+  a50=(a50-a28);
+  a41=(a41+a50);
+  a50=(a23*a41);
+  a28=arg[0]? arg[0][4] : 0;
+  a52=(a50*a28);
+  a07=(a07/a32);
+  a53=(a07*a33);
+  a54=(a31*a42);
+  a53=(a53-a54);
+  a54=(a07*a38);
+  a55=(a31*a37);
+  a54=(a54-a55);
+  a55=(a05*a54);
+  a56=(a55*a09);
+  a57=(a07*a35);
+  a58=(a31*a44);
+  a57=(a57-a58);
+  a56=(a56*a57);
+  a13=(a13/a32);
+  a58=(a13*a37);
+  a12=(a12/a32);
+  a32=(a12*a38);
+  a58=(a58-a32);
+  a05=(a05*a58);
+  a32=(a05*a16);
+  a59=(a13*a44);
+  a60=(a12*a35);
+  a59=(a59-a60);
+  a32=(a32*a59);
+  a56=(a56+a32);
+  a32=(a31*a56);
+  a55=(a55*a08);
+  a55=(a55*a57);
+  a05=(a05*a21);
+  a05=(a05*a59);
+  a55=(a55+a05);
+  a05=(a07*a55);
+  a32=(a32-a05);
+  a53=(a53+a32);
+  a32=(a07*a53);
+  a05=arg[0]? arg[0][5] : 0;
+  a60=(a32*a05);
+  a52=(a52+a60);
+  a60=(a06*a42);
+  a61=(a22*a33);
+  a60=(a60-a61);
+  a46=(a22*a46);
+  a47=(a06*a47);
+  a46=(a46-a47);
+  a60=(a60+a46);
+  a01=(a01*a19);
+  a02=(a02*a04);
+  a01=(a01+a02);
+  a02=(a60*a01);
+  a43=(a43*a51);
+  a43=(a43*a11);
+  a02=(a02+a43);
+  a43=(a23*a02);
+  a01=(a41*a01);
+  a34=(a17*a34);
+  a34=(a34*a11);
+  a01=(a01-a34);
+  a34=(a22*a01);
+  a43=(a43-a34);
+  a34=arg[0]? arg[0][6] : 0;
+  a11=(a43*a34);
+  a52=(a52+a11);
+  a42=(a13*a42);
+  a33=(a12*a33);
+  a42=(a42-a33);
+  a55=(a12*a55);
+  a56=(a13*a56);
+  a55=(a55-a56);
+  a42=(a42+a55);
+  a08=(a08*a21);
+  a09=(a09*a16);
+  a08=(a08+a09);
+  a09=(a42*a08);
+  a58=(a58*a59);
+  a58=(a58*a24);
+  a09=(a09+a58);
+  a58=(a07*a09);
+  a08=(a53*a08);
+  a57=(a54*a57);
+  a57=(a57*a24);
+  a08=(a08-a57);
+  a57=(a12*a08);
+  a58=(a58-a57);
+  a57=arg[0]? arg[0][7] : 0;
+  a24=(a58*a57);
+  a52=(a52+a24);
+  a22=(a22*a60);
+  a24=arg[0]? arg[0][8] : 0;
+  a59=(a22*a24);
+  a52=(a52-a59);
+  a12=(a12*a42);
+  a59=arg[0]? arg[0][9] : 0;
+  a16=(a12*a59);
+  a52=(a52-a16);
+  a16=(a23*a17);
+  a21=arg[0]? arg[0][10] : 0;
+  a55=(a16*a21);
+  a52=(a52+a55);
+  a55=(a07*a54);
+  a56=arg[0]? arg[0][11] : 0;
+  a33=(a55*a56);
+  a52=(a52+a33);
+  a33=0.;
+  a11=(a33<=a17);
+  a51=(a11?a27:0);
+  a11=(!a11);
+  a04=-1.;
+  a11=(a11?a04:0);
+  a51=(a51+a11);
+  a11=(a23*a51);
+  a19=arg[0]? arg[0][12] : 0;
+  a46=(a11*a19);
+  a52=(a52+a46);
+  a33=(a33<=a54);
+  a46=(a33?a27:0);
+  a33=(!a33);
+  a33=(a33?a04:0);
+  a46=(a46+a33);
+  a33=(a07*a46);
+  a04=arg[0]? arg[0][13] : 0;
+  a47=(a33*a04);
+  a52=(a52+a47);
+  a47=arg[5]? arg[5][0] : 0;
+  a35=(a35-a38);
+  a47=(a47*a35);
+  a52=(a52+a47);
+  a47=(a30*a52);
+  a61=(a23*a29);
+  a62=(a07*a31);
+  a61=(a61+a62);
+  a01=(a06*a01);
+  a02=(a29*a02);
+  a01=(a01-a02);
+  a02=(a01*a34);
+  a41=(a29*a41);
+  a62=(a41*a28);
+  a53=(a31*a53);
+  a63=(a53*a05);
+  a62=(a62+a63);
+  a02=(a02-a62);
+  a08=(a13*a08);
+  a09=(a31*a09);
+  a08=(a08-a09);
+  a09=(a08*a57);
+  a02=(a02+a09);
+  a06=(a06*a60);
+  a60=(a06*a24);
+  a02=(a02+a60);
+  a13=(a13*a42);
+  a42=(a13*a59);
+  a02=(a02+a42);
+  a17=(a29*a17);
+  a42=(a17*a21);
+  a02=(a02-a42);
+  a54=(a31*a54);
+  a42=(a54*a56);
+  a02=(a02-a42);
+  a51=(a29*a51);
+  a42=(a51*a19);
+  a02=(a02-a42);
+  a46=(a31*a46);
+  a42=(a46*a04);
+  a02=(a02-a42);
+  a42=arg[5]? arg[5][1] : 0;
+  a44=(a44-a37);
+  a42=(a42*a44);
+  a02=(a02+a42);
+  a42=(a61*a02);
+  a47=(a47+a42);
+  a42=casadi_sq(a23);
+  a60=casadi_sq(a07);
+  a42=(a42+a60);
+  a30=(a42*a30);
+  a60=(a29*a23);
+  a09=(a31*a07);
+  a60=(a60+a09);
+  a61=(a61*a60);
+  a30=(a30-a61);
+  a47=(a47/a30);
+  a23=(a23*a47);
+  a42=(a42*a02);
+  a60=(a60*a52);
+  a42=(a42+a60);
+  a42=(a42/a30);
+  a29=(a29*a42);
+  a23=(a23-a29);
+  a07=(a07*a47);
+  a31=(a31*a42);
+  a07=(a07-a31);
+  a31=(a23+a07);
+  a42=arg[5]? arg[5][4] : 0;
+  a42=(a39*a42);
+  a50=(a50*a35);
+  a41=(a41*a44);
+  a50=(a50-a41);
+  a42=(a42*a50);
+  a42=(a28+a42);
+  a31=(a31+a42);
+  a50=arg[5]? arg[5][5] : 0;
+  a50=(a39*a50);
+  a32=(a32*a35);
+  a53=(a53*a44);
+  a32=(a32-a53);
+  a50=(a50*a32);
+  a50=(a05+a50);
+  a31=(a31+a50);
+  a32=arg[5]? arg[5][6] : 0;
+  a32=(a39*a32);
+  a43=(a43*a35);
+  a01=(a01*a44);
+  a43=(a43+a01);
+  a32=(a32*a43);
+  a32=(a34+a32);
+  a31=(a31+a32);
+  a43=arg[5]? arg[5][7] : 0;
+  a43=(a39*a43);
+  a58=(a58*a35);
+  a08=(a08*a44);
+  a58=(a58+a08);
+  a43=(a43*a58);
+  a43=(a57+a43);
+  a31=(a31+a43);
+  a58=arg[5]? arg[5][8] : 0;
+  a58=(a39*a58);
+  a06=(a06*a44);
+  a22=(a22*a35);
+  a06=(a06-a22);
+  a58=(a58*a06);
+  a58=(a24+a58);
+  a31=(a31+a58);
+  a06=arg[5]? arg[5][9] : 0;
+  a06=(a39*a06);
+  a13=(a13*a44);
+  a12=(a12*a35);
+  a13=(a13-a12);
+  a06=(a06*a13);
+  a06=(a59+a06);
+  a31=(a31+a06);
+  a13=arg[5]? arg[5][10] : 0;
+  a13=(a39*a13);
+  a16=(a16*a35);
+  a17=(a17*a44);
+  a16=(a16-a17);
+  a13=(a13*a16);
+  a13=(a21+a13);
+  a31=(a31+a13);
+  a16=arg[5]? arg[5][11] : 0;
+  a16=(a39*a16);
+  a55=(a55*a35);
+  a54=(a54*a44);
+  a55=(a55-a54);
+  a16=(a16*a55);
+  a16=(a56+a16);
+  a31=(a31+a16);
+  a55=arg[5]? arg[5][12] : 0;
+  a55=(a39*a55);
+  a11=(a11*a35);
+  a51=(a51*a44);
+  a11=(a11-a51);
+  a55=(a55*a11);
+  a55=(a19+a55);
+  a31=(a31+a55);
+  a11=arg[5]? arg[5][13] : 0;
+  a39=(a39*a11);
+  a33=(a33*a35);
+  a46=(a46*a44);
+  a33=(a33-a46);
+  a39=(a39*a33);
+  a39=(a04+a39);
+  a31=(a31+a39);
+  a31=(a31+a18);
+  a31=(a31+a15);
+  a31=(a31+a38);
+  a31=(a31+a37);
+  a31=casadi_fabs(a31);
+  a33=casadi_inf;
+  a31=(a31<a33);
+  a33=(a00&&a31);
+  a46=arg[5]? arg[5][18] : 0;
+  a44=(-a46);
+  a44=casadi_fmax(a23,a44);
+  a44=casadi_fmin(a44,a46);
+  a44=(a33?a44:0);
+  if (res[0]!=0) res[0][0]=a44;
+  a44=arg[5]? arg[5][19] : 0;
+  a35=(-a44);
+  a35=casadi_fmax(a07,a35);
+  a35=casadi_fmin(a35,a44);
+  a35=(a33?a35:0);
+  if (res[0]!=0) res[0][1]=a35;
+  a35=(a31?a18:0);
+  a11=(!a31);
+  a10=(a11?a10:0);
+  a35=(a35+a10);
+  if (res[1]!=0) res[1][0]=a35;
+  a35=(a31?a15:0);
+  a14=(a11?a14:0);
+  a35=(a35+a14);
+  if (res[1]!=0) res[1][1]=a35;
+  a35=(a31?a38:0);
+  a36=(a11?a36:0);
+  a35=(a35+a36);
+  if (res[1]!=0) res[1][2]=a35;
+  a35=(a31?a37:0);
+  a45=(a11?a45:0);
+  a35=(a35+a45);
+  if (res[1]!=0) res[1][3]=a35;
+  a42=(a33?a42:0);
+  a35=(!a33);
+  a28=(a35?a28:0);
+  a42=(a42+a28);
+  if (res[1]!=0) res[1][4]=a42;
+  a50=(a33?a50:0);
+  a05=(a35?a05:0);
+  a50=(a50+a05);
+  if (res[1]!=0) res[1][5]=a50;
+  a32=(a33?a32:0);
+  a34=(a35?a34:0);
+  a32=(a32+a34);
+  if (res[1]!=0) res[1][6]=a32;
+  a43=(a33?a43:0);
+  a57=(a35?a57:0);
+  a43=(a43+a57);
+  if (res[1]!=0) res[1][7]=a43;
+  a58=(a33?a58:0);
+  a24=(a35?a24:0);
+  a58=(a58+a24);
+  if (res[1]!=0) res[1][8]=a58;
+  a06=(a33?a06:0);
+  a59=(a35?a59:0);
+  a06=(a06+a59);
+  if (res[1]!=0) res[1][9]=a06;
+  a13=(a33?a13:0);
+  a21=(a35?a21:0);
+  a13=(a13+a21);
+  if (res[1]!=0) res[1][10]=a13;
+  a16=(a33?a16:0);
+  a56=(a35?a56:0);
+  a16=(a16+a56);
+  if (res[1]!=0) res[1][11]=a16;
+  a55=(a33?a55:0);
+  a19=(a35?a19:0);
+  a55=(a55+a19);
+  if (res[1]!=0) res[1][12]=a55;
+  a33=(a33?a39:0);
+  a35=(a35?a04:0);
+  a33=(a33+a35);
+  if (res[1]!=0) res[1][13]=a33;
+  a23=casadi_fabs(a23);
+  a23=(a23/a46);
+  a07=casadi_fabs(a07);
+  a07=(a07/a44);
+  a23=casadi_fmax(a23,a07);
+  a23=(a27<a23);
+  a23=(a23?a20:0);
+  a31=(a31?a23:0);
+  a23=3.;
+  a11=(a11?a23:0);
+  a31=(a31+a11);
+  a31=(a00?a31:0);
+  a00=(!a00);
+  a00=(a00?a27:0);
+  a31=(a31+a00);
+  if (res[2]!=0) res[2][0]=a31;
+  if (res[3]!=0) res[3][0]=a18;
+  if (res[3]!=0) res[3][1]=a15;
+  if (res[3]!=0) res[3][2]=a38;
+  if (res[3]!=0) res[3][3]=a37;
+  if (res[3]!=0) res[3][4]=a48;
+  if (res[3]!=0) res[3][5]=a49;
+  if (res[3]!=0) res[3][6]=a40;
+  if (res[3]!=0) res[3][7]=a03;
+  if (res[3]!=0) res[3][8]=a25;
+  if (res[3]!=0) res[3][9]=a26;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f19(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_na_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[24])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63;
+  a00=arg[5]? arg[5][16] : 0;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=sin(a01);
+  a03=5.9535999999999999e-02;
+  a04=-2.5000000000000000e-01;
+  a05=-2.4399999999999999e-01;
+  a06=(a05*a02);
+  a04=(a04+a06);
+  a07=2.4399999999999999e-01;
+  a08=arg[1]? arg[1][1] : 0;
+  a09=sin(a08);
+  a10=(a07*a09);
+  a04=(a04+a10);
+  a10=casadi_sq(a04);
+  a11=4.3300000000000000e-01;
+  a01=cos(a01);
+  a12=(a05*a01);
+  a11=(a11+a12);
+  a08=cos(a08);
+  a12=(a07*a08);
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a10+a13);
+  a03=(a03/a14);
+  a15=casadi_sq(a14);
+  a10=(2.*a10);
+  a13=(2.*a13);
+  a10=(a10+a13);
+  a13=casadi_sq(a10);
+  a15=(a15/a13);
+  a03=(a03-a15);
+  a03=sqrt(a03);
+  a15=2.5000000000000000e-01;
+  a13=(a05*a09);
+  a16=(a15+a13);
+  a17=(a07*a02);
+  a16=(a16+a17);
+  a18=(a03*a16);
+  a14=(a14/a10);
+  a10=(a14*a11);
+  a19=(a18+a10);
+  a20=casadi_sq(a19);
+  a03=(a03*a11);
+  a14=(a14*a04);
+  a04=(a03+a14);
+  a11=casadi_sq(a04);
+  a20=(a20+a11);
+  a20=sqrt(a20);
+  a19=(a19/a20);
+  a11=(a02*a19);
+  a04=(a04/a20);
+  a20=(a01*a04);
+  a11=(a11-a20);
+  a20=casadi_fabs(a11);
+  a21=-4.3300000000000000e-01;
+  a22=(a05*a08);
+  a21=(a21+a22);
+  a22=(a07*a01);
+  a21=(a21+a22);
+  a21=(a21+a18);
+  a21=(a21+a10);
+  a23=casadi_sq(a21);
+  a16=(a16+a03);
+  a16=(a16+a14);
+  a24=casadi_sq(a16);
+  a23=(a23+a24);
+  a23=sqrt(a23);
+  a21=(a21/a23);
+  a24=(a09*a21);
+  a16=(a16/a23);
+  a23=(a08*a16);
+  a24=(a24-a23);
+  a23=casadi_fabs(a24);
+  a25=(a20+a23);
+  a20=(a20-a23);
+  a20=casadi_fabs(a20);
+  a25=(a25-a20);
+  a20=2.;
+  a25=(a25/a20);
+  a23=(a00<=a25);
+  a26=arg[5]? arg[5][17] : 0;
+  a27=5.0000000000000000e-01;
+  a28=1.;
+  a29=casadi_sq(a19);
+  a30=casadi_sq(a04);
+  a29=(a29-a30);
+  a30=casadi_sq(a21);
+  a31=casadi_sq(a16);
+  a30=(a30-a31);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a30=(2.*a19);
+  a30=(a30*a04);
+  a31=(2.*a21);
+  a31=(a31*a16);
+  a30=(a30+a31);
+  a30=casadi_sq(a30);
+  a29=(a29+a30);
+  a29=sqrt(a29);
+  a29=(a27*a29);
+  a29=(a28-a29);
+  a30=casadi_fabs(a29);
+  a29=(a29+a30);
+  a27=(a27*a29);
+  a27=sqrt(a27);
+  a26=(a26<=a27);
+  a23=(a23&&a26);
+  a26=(a07*a19);
+  a29=(a06*a26);
+  a30=(a05*a04);
+  a31=(a30*a22);
+  a29=(a29-a31);
+  a26=(a26/a29);
+  a07=(a07*a21);
+  a31=(a13*a07);
+  a32=(a05*a16);
+  a33=(a32*a12);
+  a31=(a31-a33);
+  a07=(a07/a31);
+  a30=(a30/a29);
+  a33=(-a30);
+  a32=(a32/a31);
+  a34=(-a32);
+  a35=arg[4]? arg[4][0] : 0;
+  a36=arg[5]? arg[5][2] : 0;
+  a37=arg[3]? arg[3][0] : 0;
+  a38=arg[0]? arg[0][2] : 0;
+  a39=arg[5]? arg[5][15] : 0;
+  a18=(a22+a18);
+  a18=(a18+a10);
+  a10=arg[0]? arg[0][0] : 0;
+  a40=(a18-a10);
+  a41=arg[5]? arg[5][14] : 0;
+  a40=(a40/a41);
+  a40=(a40-a38);
+  a40=(a39*a40);
+  a40=(a38+a40);
+  a42=(a37-a40);
+  a43=(a36*a42);
+  a35=(a35+a43);
+  a43=(a26*a35);
+  a44=arg[4]? arg[4][1] : 0;
+  a45=arg[5]? arg[5][3] : 0;
+  a46=arg[3]? arg[3][1] : 0;
+  a47=arg[0]? arg[0][3] : 0;
+  a15=(a15+a17);
+  a15=(a15+a03);
+  a15=(a15+a14);
+  a14=arg[0]? arg[0][1] : 0;
+  a03=(a15-a14);
+  a03=(a03/a41);
+  a03=(a03-a47);
+  a39=(a39*a03);
+  a39=(a47+a39);
+  a03=(a46-a39);
+  a17=(a45*a03);
+  a44=(a44+a17);
+  a17=(a30*a44);
+  a43=(a43-a17);
+  a17=(a26*a40);
+  a48=(a30*a39);
+  a17=(a17-a48);
+  a48=(a05*a17);
+  a49=(a48*a02);
+  a50=arg[2]? arg[2][0] : 0;
+  a50=(a50-a18);
+  a36=(a36*a50);
+  a37=(a37+a36);
+  a36=(a26*a37);
+  a51=arg[2]? arg[2][1] : 0;
+  a51=(a51-a15);
+  a45=(a45*a51);
+  a46=(a46+a45);
+  a45=(a30*a46);
+  a36=(a36-a45);
+  a49=(a49*a36);
+  a06=(a06/a29);
+  a45=(a06*a39);
+  a22=(a22/a29);
+  a29=(a22*a40);
+  a45=(a45-a29);
+  a29=(a05*a45);
+  a52=(a29*a04);
+  a53=(a06*a46);
+  a54=(a22*a37);
+  a53=(a53-a54);
+  a52=(a52*a53);
+  a49=(a49+a52);
+  a52=(a30*a49);
+  a48=(a48*a01);
+  a48=(a48*a36);
+  a29=(a29*a19);
+  a29=(a29*a53);
+  a48=(a48+a29);
+  a29=(a26*a48);
+  a52=(a52-a29);
+  a43=(a43+a52);
+  a52=(a26*a43);
+  a29=arg[0]? arg[0][4] : 0;
+  a54=(a52*a29);
+  a55=(a07*a35);
+  a56=(a32*a44);
+  a55=(a55-a56);
+  a56=(a07*a40);
+  a57=(a32*a39);
+  a56=(a56-a57);
+  a57=(a05*a56);
+  a58=(a57*a09);
+  a59=(a07*a37);
+  a60=(a32*a46);
+  a59=(a59-a60);
+  a58=(a58*a59);
+  a13=(a13/a31);
+  a60=(a13*a39);
+  a12=(a12/a31);
+  a31=(a12*a40);
+  a60=(a60-a31);
+  a05=(a05*a60);
+  a31=(a05*a16);
+  a61=(a13*a46);
+  a62=(a12*a37);
+  a61=(a61-a62);
+  a31=(a31*a61);
+  a58=(a58+a31);
+  a31=(a32*a58);
+  a57=(a57*a08);
+  a57=(a57*a59);
+  a05=(a05*a21);
+  a05=(a05*a61);
+  a57=(a57+a05);
+  a05=(a07*a57);
+  a31=(a31-a05);
+  a55=(a55+a31);
+  a31=(a07*a55);
+  a05=arg[0]? arg[0][5] : 0;
+  a62=(a31*a05);
+  a54=(a54+a62);
+  a62=(a06*a44);
+  a63=(a22*a35);
+  a62=(a62-a63);
+  a48=(a22*a48);
+  a49=(a06*a49);
+  a48=(a48-a49);
+  a62=(a62+a48);
+  a01=(a01*a19);
+  a02=(a02*a04);
+  a01=(a01+a02);
+  a02=(a62*a01);
+  a45=(a45*a53);
+  a45=(a45*a11);
+  a02=(a02+a45);
+  a45=(a26*a02);
+  a01=(a43*a01);
+  a36=(a17*a36);
+  a36=(a36*a11);
+  a01=(a01-a36);
+  a36=(a22*a01);
+  a45=(a45-a36);
+  a36=arg[0]? arg[0][6] : 0;
+  a11=(a45*a36);
+  a54=(a54+a11);
+  a44=(a13*a44);
+  a35=(a12*a35);
+  a44=(a44-a35);
+  a57=(a12*a57);
+  a58=(a13*a58);
+  a57=(a57-a58);
+  a44=(a44+a57);
+  a08=(a08*a21);
+  a09=(a09*a16);
+  a08=(a08+a09);
+  a09=(a44*a08);
+  a60=(a60*a61);
+  a60=(a60*a24);
+  a09=(a09+a60);
+  a60=(a07*a09);
+  a08=(a55*a08);
+  a59=(a56*a59);
+  a59=(a59*a24);
+  a08=(a08-a59);
+  a59=(a12*a08);
+  a60=(a60-a59);
+  a59=arg[0]? arg[0][7] : 0;
+  a24=(a60*a59);
+  a54=(a54+a24);
+  a22=(a22*a62);
+  a24=arg[0]? arg[0][8] : 0;
+  a61=(a22*a24);
+  a54=(a54-a61);
+  a12=(a12*a44);
+  a61=arg[0]? arg[0][9] : 0;
+  a16=(a12*a61);
+  a54=(a54-a16);
+  a16=(a26*a17);
+  a21=arg[0]? arg[0][10] : 0;
+  a57=(a16*a21);
+  a54=(a54+a57);
+  a57=(a07*a56);
+  a58=arg[0]? arg[0][11] : 0;
+  a35=(a57*a58);
+  a54=(a54+a35);
+  a35=0.;
+  a11=(a35<=a17);
+  a53=(a11?a28:0);
+  a11=(!a11);
+  a04=-1.;
+  a11=(a11?a04:0);
+  a53=(a53+a11);
+  a11=(a26*a53);
+  a19=arg[0]? arg[0][12] : 0;
+  a48=(a11*a19);
+  a54=(a54+a48);
+  a35=(a35<=a56);
+  a48=(a35?a28:0);
+  a35=(!a35);
+  a35=(a35?a04:0);
+  a48=(a48+a35);
+  a35=(a07*a48);
+  a04=arg[0]? arg[0][13] : 0;
+  a49=(a35*a04);
+  a54=(a54+a49);
+  a49=arg[5]? arg[5][0] : 0;
+  a37=(a37-a40);
+  a49=(a49*a37);
+  a54=(a54+a49);
+  a01=(a06*a01);
+  a02=(a30*a02);
+  a01=(a01-a02);
+  a02=(a01*a36);
+  a43=(a30*a43);
+  a49=(a43*a29);
+  a55=(a32*a55);
+  a63=(a55*a05);
+  a49=(a49+a63);
+  a02=(a02-a49);
+  a08=(a13*a08);
+  a09=(a32*a09);
+  a08=(a08-a09);
+  a09=(a08*a59);
+  a02=(a02+a09);
+  a06=(a06*a62);
+  a62=(a06*a24);
+  a02=(a02+a62);
+  a13=(a13*a44);
+  a44=(a13*a61);
+  a02=(a02+a44);
+  a17=(a30*a17);
+  a44=(a17*a21);
+  a02=(a02-a44);
+  a56=(a32*a56);
+  a44=(a56*a58);
+  a02=(a02-a44);
+  a30=(a30*a53);
+  a53=(a30*a19);
+  a02=(a02-a53);
+  a32=(a32*a48);
+  a48=(a32*a04);
+  a02=(a02-a48);
+  a48=arg[5]? arg[5][1] : 0;
+  a46=(a46-a39);
+  a48=(a48*a46);
+  a02=(a02+a48);
+  a48=arg[5]? arg[5][18] : 0;
+  a53=arg[5]? arg[5][19] : 0;
+  arg[6]=w+0;
+  arg[7]=w+4;
+  arg[8] = arg[5]? arg[5] + 18 : 0;
+  arg[9] = arg[5]? arg[5] + 20 : 0;
+  arg[10] = arg[5]? arg[5] + 22 : 0;
+  res[4]=w+12;
+  res[5]=w+14;
+  w[0] = a26;
+  w[1] = a07;
+  w[2] = a33;
+  w[3] = a34;
+  w[4] = a54;
+  w[5] = a02;
+  if (casadi_f16(arg+6, res+4, iw, w+15, 0)) return 1;
+  a26 = w[12];
+  a07 = w[13];
+  a33 = w[14];
+  a34=(a26+a07);
+  a54=arg[5]? arg[5][4] : 0;
+  a54=(a41*a54);
+  a52=(a52*a37);
+  a43=(a43*a46);
+  a52=(a52-a43);
+  a54=(a54*a52);
+  a54=(a29+a54);
+  a34=(a34+a54);
+  a52=arg[5]? arg[5][5] : 0;
+  a52=(a41*a52);
+  a31=(a31*a37);
+  a55=(a55*a46);
+  a31=(a31-a55);
+  a52=(a52*a31);
+  a52=(a05+a52);
+  a34=(a34+a52);
+  a31=arg[5]? arg[5][6] : 0;
+  a31=(a41*a31);
+  a45=(a45*a37);
+  a01=(a01*a46);
+  a45=(a45+a01);
+  a31=(a31*a45);
+  a31=(a36+a31);
+  a34=(a34+a31);
+  a45=arg[5]? arg[5][7] : 0;
+  a45=(a41*a45);
+  a60=(a60*a37);
+  a08=(a08*a46);
+  a60=(a60+a08);
+  a45=(a45*a60);
+  a45=(a59+a45);
+  a34=(a34+a45);
+  a60=arg[5]? arg[5][8] : 0;
+  a60=(a41*a60);
+  a06=(a06*a46);
+  a22=(a22*a37);
+  a06=(a06-a22);
+  a60=(a60*a06);
+  a60=(a24+a60);
+  a34=(a34+a60);
+  a06=arg[5]? arg[5][9] : 0;
+  a06=(a41*a06);
+  a13=(a13*a46);
+  a12=(a12*a37);
+  a13=(a13-a12);
+  a06=(a06*a13);
+  a06=(a61+a06);
+  a34=(a34+a06);
+  a13=arg[5]? arg[5][10] : 0;
+  a13=(a41*a13);
+  a16=(a16*a37);
+  a17=(a17*a46);
+  a16=(a16-a17);
+  a13=(a13*a16);
+  a13=(a21+a13);
+  a34=(a34+a13);
+  a16=arg[5]? arg[5][11] : 0;
+  a16=(a41*a16);
+  a57=(a57*a37);
+  a56=(a56*a46);
+  a57=(a57-a56);
+  a16=(a16*a57);
+  a16=(a58+a16);
+  a34=(a34+a16);
+  a57=arg[5]? arg[5][12] : 0;
+  a57=(a41*a57);
+  a11=(a11*a37);
+  a30=(a30*a46);
+  a11=(a11-a30);
+  a57=(a57*a11);
+  a57=(a19+a57);
+  a34=(a34+a57);
+  a11=arg[5]? arg[5][13] : 0;
+  a41=(a41*a11);
+  a35=(a35*a37);
+  a32=(a32*a46);
+  a35=(a35-a32);
+  a41=(a41*a35);
+  a41=(a04+a41);
+  a34=(a34+a41);
+  a34=(a34+a18);
+  a34=(a34+a15);
+  a34=(a34+a40);
+  a34=(a34+a39);
+  a34=casadi_fabs(a34);
+  a35=casadi_inf;
+  a34=(a34<a35);
+  a35=(a23&&a34);
+  a32=(-a48);
+  a26=casadi_fmax(a26,a32);
+  a26=casadi_fmin(a26,a48);
+  a26=(a35?a26:0);
+  if (res[0]!=0) res[0][0]=a26;
+  a26=(-a53);
+  a07=casadi_fmax(a07,a26);
+  a07=casadi_fmin(a07,a53);
+  a07=(a35?a07:0);
+  if (res[0]!=0) res[0][1]=a07;
+  a07=(a34?a18:0);
+  a53=(!a34);
+  a10=(a53?a10:0);
+  a07=(a07+a10);
+  if (res[1]!=0) res[1][0]=a07;
+  a07=(a34?a15:0);
+  a14=(a53?a14:0);
+  a07=(a07+a14);
+  if (res[1]!=0) res[1][1]=a07;
+  a07=(a34?a40:0);
+  a38=(a53?a38:0);
+  a07=(a07+a38);
+  if (res[1]!=0) res[1][2]=a07;
+  a07=(a34?a39:0);
+  a47=(a53?a47:0);
+  a07=(a07+a47);
+  if (res[1]!=0) res[1][3]=a07;
+  a54=(a35?a54:0);
+  a07=(!a35);
+  a29=(a07?a29:0);
+  a54=(a54+a29);
+  if (res[1]!=0) res[1][4]=a54;
+  a52=(a35?a52:0);
+  a05=(a07?a05:0);
+  a52=(a52+a05);
+  if (res[1]!=0) res[1][5]=a52;
+  a31=(a35?a31:0);
+  a36=(a07?a36:0);
+  a31=(a31+a36);
+  if (res[1]!=0) res[1][6]=a31;
+  a45=(a35?a45:0);
+  a59=(a07?a59:0);
+  a45=(a45+a59);
+  if (res[1]!=0) res[1][7]=a45;
+  a60=(a35?a60:0);
+  a24=(a07?a24:0);
+  a60=(a60+a24);
+  if (res[1]!=0) res[1][8]=a60;
+  a06=(a35?a06:0);
+  a61=(a07?a61:0);
+  a06=(a06+a61);
+  if (res[1]!=0) res[1][9]=a06;
+  a13=(a35?a13:0);
+  a21=(a07?a21:0);
+  a13=(a13+a21);
+  if (res[1]!=0) res[1][10]=a13;
+  a16=(a35?a16:0);
+  a58=(a07?a58:0);
+  a16=(a16+a58);
+  if (res[1]!=0) res[1][11]=a16;
+  a57=(a35?a57:0);
+  a19=(a07?a19:0);
+  a57=(a57+a19);
+  if (res[1]!=0) res[1][12]=a57;
+  a35=(a35?a41:0);
+  a07=(a07?a04:0);
+  a35=(a35+a07);
+  if (res[1]!=0) res[1][13]=a35;
+  a35=(a33==a20);
+  a20=(a35?a20:0);
+  a35=(!a35);
+  a33=(a33==a28);
+  a07=4.;
+  a33=(a33?a07:0);
+  a35=(a35?a33:0);
+  a20=(a20+a35);
+  a34=(a34?a20:0);
+  a20=3.;
+  a53=(a53?a20:0);
+  a34=(a34+a53);
+  a34=(a23?a34:0);
+  a23=(!a23);
+  a23=(a23?a28:0);
+  a34=(a34+a23);
+  if (res[2]!=0) res[2][0]=a34;
+  if (res[3]!=0) res[3][0]=a18;
+  if (res[3]!=0) res[3][1]=a15;
+  if (res[3]!=0) res[3][2]=a40;
+  if (res[3]!=0) res[3][3]=a39;
+  if (res[3]!=0) res[3][4]=a50;
+  if (res[3]!=0) res[3][5]=a51;
+  if (res[3]!=0) res[3][6]=a42;
+  if (res[3]!=0) res[3][7]=a03;
+  if (res[3]!=0) res[3][8]=a25;
+  if (res[3]!=0) res[3][9]=a27;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f20(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 51;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 51*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_na_proj_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[24])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -4972,7 +6837,7 @@ static int casadi_f17(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f17(arg, res, iw, w, mem);
+  return casadi_f21(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_step_checkout(void) {
@@ -5022,12 +6887,12 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_step_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_step_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s5;
+    case 5: return casadi_s8;
     default: return 0;
   }
 }
@@ -5035,8 +6900,8 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_step_sparsity_in(casadi_i
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_step_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s6;
-    case 2: return casadi_s7;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
     case 3: return casadi_s3;
     default: return 0;
   }
@@ -5058,8 +6923,1381 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_step_work_bytes(casadi_int *sz_arg, cas
   return 0;
 }
 
-/* fivebar_apd_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[10])->(tau_a[2],state_next[14],status,diag[10]) */
-static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_proj_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[24])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64;
+  a00=arg[5]? arg[5][16] : 0;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=sin(a01);
+  a03=5.9535999999999999e-02;
+  a04=-2.5000000000000000e-01;
+  a05=-2.4399999999999999e-01;
+  a06=(a05*a02);
+  a04=(a04+a06);
+  a07=2.4399999999999999e-01;
+  a08=arg[1]? arg[1][1] : 0;
+  a09=sin(a08);
+  a10=(a07*a09);
+  a04=(a04+a10);
+  a10=casadi_sq(a04);
+  a11=4.3300000000000000e-01;
+  a01=cos(a01);
+  a12=(a05*a01);
+  a11=(a11+a12);
+  a08=cos(a08);
+  a12=(a07*a08);
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a10+a13);
+  a03=(a03/a14);
+  a15=casadi_sq(a14);
+  a10=(2.*a10);
+  a13=(2.*a13);
+  a10=(a10+a13);
+  a13=casadi_sq(a10);
+  a15=(a15/a13);
+  a03=(a03-a15);
+  a03=sqrt(a03);
+  a15=2.5000000000000000e-01;
+  a13=(a05*a09);
+  a16=(a15+a13);
+  a17=(a07*a02);
+  a16=(a16+a17);
+  a18=(a03*a16);
+  a14=(a14/a10);
+  a10=(a14*a11);
+  a19=(a18+a10);
+  a20=casadi_sq(a19);
+  a03=(a03*a11);
+  a14=(a14*a04);
+  a04=(a03+a14);
+  a11=casadi_sq(a04);
+  a20=(a20+a11);
+  a20=sqrt(a20);
+  a19=(a19/a20);
+  a11=(a02*a19);
+  a04=(a04/a20);
+  a20=(a01*a04);
+  a11=(a11-a20);
+  a20=casadi_fabs(a11);
+  a21=-4.3300000000000000e-01;
+  a22=(a05*a08);
+  a21=(a21+a22);
+  a22=(a07*a01);
+  a21=(a21+a22);
+  a21=(a21+a18);
+  a21=(a21+a10);
+  a23=casadi_sq(a21);
+  a16=(a16+a03);
+  a16=(a16+a14);
+  a24=casadi_sq(a16);
+  a23=(a23+a24);
+  a23=sqrt(a23);
+  a21=(a21/a23);
+  a24=(a09*a21);
+  a16=(a16/a23);
+  a23=(a08*a16);
+  a24=(a24-a23);
+  a23=casadi_fabs(a24);
+  a25=(a20+a23);
+  a20=(a20-a23);
+  a20=casadi_fabs(a20);
+  a25=(a25-a20);
+  a20=2.;
+  a25=(a25/a20);
+  a00=(a00<=a25);
+  a23=arg[5]? arg[5][17] : 0;
+  a26=5.0000000000000000e-01;
+  a27=1.;
+  a28=casadi_sq(a19);
+  a29=casadi_sq(a04);
+  a28=(a28-a29);
+  a29=casadi_sq(a21);
+  a30=casadi_sq(a16);
+  a29=(a29-a30);
+  a28=(a28+a29);
+  a28=casadi_sq(a28);
+  a29=(2.*a19);
+  a29=(a29*a04);
+  a30=(2.*a21);
+  a30=(a30*a16);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a28=(a28+a29);
+  a28=sqrt(a28);
+  a28=(a26*a28);
+  a28=(a27-a28);
+  a29=casadi_fabs(a28);
+  a28=(a28+a29);
+  a26=(a26*a28);
+  a26=sqrt(a26);
+  a23=(a23<=a26);
+  a00=(a00&&a23);
+  a23=(a07*a19);
+  a28=(a06*a23);
+  a29=(a05*a04);
+  a30=(a29*a22);
+  a28=(a28-a30);
+  a23=(a23/a28);
+  a29=(a29/a28);
+  a30=casadi_sq(a29);
+  a31=(a05*a16);
+  a07=(a07*a21);
+  a32=(a13*a07);
+  a33=(a31*a12);
+  a32=(a32-a33);
+  a31=(a31/a32);
+  a33=casadi_sq(a31);
+  a30=(a30+a33);
+  a33=arg[4]? arg[4][0] : 0;
+  a34=arg[5]? arg[5][2] : 0;
+  a35=arg[3]? arg[3][0] : 0;
+  a36=arg[0]? arg[0][2] : 0;
+  a37=arg[5]? arg[5][15] : 0;
+  a18=(a22+a18);
+  a18=(a18+a10);
+  a10=arg[0]? arg[0][0] : 0;
+  a38=(a18-a10);
+  a39=arg[5]? arg[5][14] : 0;
+  a38=(a38/a39);
+  a38=(a38-a36);
+  a38=(a37*a38);
+  a38=(a36+a38);
+  a40=(a35-a38);
+  a41=(a34*a40);
+  a33=(a33+a41);
+  a41=(a23*a33);
+  a42=arg[4]? arg[4][1] : 0;
+  a43=arg[5]? arg[5][3] : 0;
+  a44=arg[3]? arg[3][1] : 0;
+  a45=arg[0]? arg[0][3] : 0;
+  a15=(a15+a17);
+  a15=(a15+a03);
+  a15=(a15+a14);
+  a14=arg[0]? arg[0][1] : 0;
+  a03=(a15-a14);
+  a03=(a03/a39);
+  a03=(a03-a45);
+  a37=(a37*a03);
+  a37=(a45+a37);
+  a03=(a44-a37);
+  a17=(a43*a03);
+  a42=(a42+a17);
+  a17=(a29*a42);
+  a41=(a41-a17);
+  a17=(a23*a38);
+  a46=(a29*a37);
+  a17=(a17-a46);
+  a46=(a05*a17);
+  a47=(a46*a02);
+  a48=arg[2]? arg[2][0] : 0;
+  a48=(a48-a18);
+  a34=(a34*a48);
+  a35=(a35+a34);
+  a34=(a23*a35);
+  a49=arg[2]? arg[2][1] : 0;
+  a49=(a49-a15);
+  a43=(a43*a49);
+  a44=(a44+a43);
+  a43=(a29*a44);
+  a34=(a34-a43);
+  a47=(a47*a34);
+  a06=(a06/a28);
+  a43=(a06*a37);
+  a22=(a22/a28);
+  a28=(a22*a38);
+  a43=(a43-a28);
+  a28=(a05*a43);
+  a50=(a28*a04);
+  a51=(a06*a44);
+  a52=(a22*a35);
+  a51=(a51-a52);
+  a50=(a50*a51);
+  a47=(a47+a50);
+  a50=(a29*a47);
+  a46=(a46*a01);
+  a46=(a46*a34);
+  a28=(a28*a19);
+  a28=(a28*a51);
+  a46=(a46+a28);
+  a28=(a23*a46);
+  a50=(a50-a28);
+  a41=(a41+a50);
+  a50=(a23*a41);
+  a28=arg[0]? arg[0][4] : 0;
+  a52=(a50*a28);
+  a07=(a07/a32);
+  a53=(a07*a33);
+  a54=(a31*a42);
+  a53=(a53-a54);
+  a54=(a07*a38);
+  a55=(a31*a37);
+  a54=(a54-a55);
+  a55=(a05*a54);
+  a56=(a55*a09);
+  a57=(a07*a35);
+  a58=(a31*a44);
+  a57=(a57-a58);
+  a56=(a56*a57);
+  a13=(a13/a32);
+  a58=(a13*a37);
+  a12=(a12/a32);
+  a32=(a12*a38);
+  a58=(a58-a32);
+  a05=(a05*a58);
+  a32=(a05*a16);
+  a59=(a13*a44);
+  a60=(a12*a35);
+  a59=(a59-a60);
+  a32=(a32*a59);
+  a56=(a56+a32);
+  a32=(a31*a56);
+  a55=(a55*a08);
+  a55=(a55*a57);
+  a05=(a05*a21);
+  a05=(a05*a59);
+  a55=(a55+a05);
+  a05=(a07*a55);
+  a32=(a32-a05);
+  a53=(a53+a32);
+  a32=(a07*a53);
+  a05=arg[0]? arg[0][5] : 0;
+  a60=(a32*a05);
+  a52=(a52+a60);
+  a60=(a06*a42);
+  a61=(a22*a33);
+  a60=(a60-a61);
+  a46=(a22*a46);
+  a47=(a06*a47);
+  a46=(a46-a47);
+  a60=(a60+a46);
+  a01=(a01*a19);
+  a02=(a02*a04);
+  a01=(a01+a02);
+  a02=(a60*a01);
+  a43=(a43*a51);
+  a43=(a43*a11);
+  a02=(a02+a43);
+  a43=(a23*a02);
+  a01=(a41*a01);
+  a34=(a17*a34);
+  a34=(a34*a11);
+  a01=(a01-a34);
+  a34=(a22*a01);
+  a43=(a43-a34);
+  a34=arg[0]? arg[0][6] : 0;
+  a11=(a43*a34);
+  a52=(a52+a11);
+  a42=(a13*a42);
+  a33=(a12*a33);
+  a42=(a42-a33);
+  a55=(a12*a55);
+  a56=(a13*a56);
+  a55=(a55-a56);
+  a42=(a42+a55);
+  a08=(a08*a21);
+  a09=(a09*a16);
+  a08=(a08+a09);
+  a09=(a42*a08);
+  a58=(a58*a59);
+  a58=(a58*a24);
+  a09=(a09+a58);
+  a58=(a07*a09);
+  a08=(a53*a08);
+  a57=(a54*a57);
+  a57=(a57*a24);
+  a08=(a08-a57);
+  a57=(a12*a08);
+  a58=(a58-a57);
+  a57=arg[0]? arg[0][7] : 0;
+  a24=(a58*a57);
+  a52=(a52+a24);
+  a22=(a22*a60);
+  a24=arg[0]? arg[0][8] : 0;
+  a59=(a22*a24);
+  a52=(a52-a59);
+  a12=(a12*a42);
+  a59=arg[0]? arg[0][9] : 0;
+  a16=(a12*a59);
+  a52=(a52-a16);
+  a16=(a23*a17);
+  a21=arg[0]? arg[0][10] : 0;
+  a55=(a16*a21);
+  a52=(a52+a55);
+  a55=(a07*a54);
+  a56=arg[0]? arg[0][11] : 0;
+  a33=(a55*a56);
+  a52=(a52+a33);
+  a33=0.;
+  a11=(a33<=a17);
+  a51=(a11?a27:0);
+  a11=(!a11);
+  a04=-1.;
+  a11=(a11?a04:0);
+  a51=(a51+a11);
+  a11=(a23*a51);
+  a19=arg[0]? arg[0][12] : 0;
+  a46=(a11*a19);
+  a52=(a52+a46);
+  a46=(a33<=a54);
+  a47=(a46?a27:0);
+  a46=(!a46);
+  a46=(a46?a04:0);
+  a47=(a47+a46);
+  a46=(a07*a47);
+  a04=arg[0]? arg[0][13] : 0;
+  a61=(a46*a04);
+  a52=(a52+a61);
+  a61=arg[5]? arg[5][0] : 0;
+  a35=(a35-a38);
+  a61=(a61*a35);
+  a52=(a52+a61);
+  a61=(a30*a52);
+  a62=(a23*a29);
+  a63=(a07*a31);
+  a62=(a62+a63);
+  a01=(a06*a01);
+  a02=(a29*a02);
+  a01=(a01-a02);
+  a02=(a01*a34);
+  a41=(a29*a41);
+  a63=(a41*a28);
+  a53=(a31*a53);
+  a64=(a53*a05);
+  a63=(a63+a64);
+  a02=(a02-a63);
+  a08=(a13*a08);
+  a09=(a31*a09);
+  a08=(a08-a09);
+  a09=(a08*a57);
+  a02=(a02+a09);
+  a06=(a06*a60);
+  a60=(a06*a24);
+  a02=(a02+a60);
+  a13=(a13*a42);
+  a42=(a13*a59);
+  a02=(a02+a42);
+  a17=(a29*a17);
+  a42=(a17*a21);
+  a02=(a02-a42);
+  a54=(a31*a54);
+  a42=(a54*a56);
+  a02=(a02-a42);
+  a51=(a29*a51);
+  a42=(a51*a19);
+  a02=(a02-a42);
+  a47=(a31*a47);
+  a42=(a47*a04);
+  a02=(a02-a42);
+  a42=arg[5]? arg[5][1] : 0;
+  a44=(a44-a37);
+  a42=(a42*a44);
+  a02=(a02+a42);
+  a42=(a62*a02);
+  a61=(a61+a42);
+  a42=casadi_sq(a23);
+  a60=casadi_sq(a07);
+  a42=(a42+a60);
+  a30=(a42*a30);
+  a60=(a29*a23);
+  a09=(a31*a07);
+  a60=(a60+a09);
+  a62=(a62*a60);
+  a30=(a30-a62);
+  a61=(a61/a30);
+  a23=(a23*a61);
+  a42=(a42*a02);
+  a60=(a60*a52);
+  a42=(a42+a60);
+  a42=(a42/a30);
+  a29=(a29*a42);
+  a23=(a23-a29);
+  a07=(a07*a61);
+  a31=(a31*a42);
+  a07=(a07-a31);
+  a31=(a23+a07);
+  a42=arg[5]? arg[5][4] : 0;
+  a42=(a39*a42);
+  a50=(a50*a35);
+  a41=(a41*a44);
+  a50=(a50-a41);
+  a42=(a42*a50);
+  a42=(a28+a42);
+  a50=9.9999999999999995e-07;
+  a42=casadi_fmax(a42,a50);
+  a31=(a31+a42);
+  a41=arg[5]? arg[5][5] : 0;
+  a41=(a39*a41);
+  a32=(a32*a35);
+  a53=(a53*a44);
+  a32=(a32-a53);
+  a41=(a41*a32);
+  a41=(a05+a41);
+  a41=casadi_fmax(a41,a50);
+  a31=(a31+a41);
+  a32=arg[5]? arg[5][6] : 0;
+  a32=(a39*a32);
+  a43=(a43*a35);
+  a01=(a01*a44);
+  a43=(a43+a01);
+  a32=(a32*a43);
+  a32=(a34+a32);
+  a43=arg[5]? arg[5][8] : 0;
+  a43=(a39*a43);
+  a06=(a06*a44);
+  a22=(a22*a35);
+  a06=(a06-a22);
+  a43=(a43*a06);
+  a43=(a24+a43);
+  a43=casadi_fmax(a43,a50);
+  a06=(a42*a43);
+  a06=sqrt(a06);
+  a22=(-a06);
+  a32=casadi_fmax(a32,a22);
+  a32=casadi_fmin(a32,a06);
+  a31=(a31+a32);
+  a06=arg[5]? arg[5][7] : 0;
+  a06=(a39*a06);
+  a58=(a58*a35);
+  a08=(a08*a44);
+  a58=(a58+a08);
+  a06=(a06*a58);
+  a06=(a57+a06);
+  a58=arg[5]? arg[5][9] : 0;
+  a58=(a39*a58);
+  a13=(a13*a44);
+  a12=(a12*a35);
+  a13=(a13-a12);
+  a58=(a58*a13);
+  a58=(a59+a58);
+  a58=casadi_fmax(a58,a50);
+  a50=(a41*a58);
+  a50=sqrt(a50);
+  a13=(-a50);
+  a06=casadi_fmax(a06,a13);
+  a06=casadi_fmin(a06,a50);
+  a31=(a31+a06);
+  a31=(a31+a43);
+  a31=(a31+a58);
+  a50=arg[5]? arg[5][10] : 0;
+  a50=(a39*a50);
+  a16=(a16*a35);
+  a17=(a17*a44);
+  a16=(a16-a17);
+  a50=(a50*a16);
+  a50=(a21+a50);
+  a50=casadi_fmax(a50,a33);
+  a31=(a31+a50);
+  a16=arg[5]? arg[5][11] : 0;
+  a16=(a39*a16);
+  a55=(a55*a35);
+  a54=(a54*a44);
+  a55=(a55-a54);
+  a16=(a16*a55);
+  a16=(a56+a16);
+  a16=casadi_fmax(a16,a33);
+  a31=(a31+a16);
+  a55=arg[5]? arg[5][12] : 0;
+  a55=(a39*a55);
+  a11=(a11*a35);
+  a51=(a51*a44);
+  a11=(a11-a51);
+  a55=(a55*a11);
+  a55=(a19+a55);
+  a55=casadi_fmax(a55,a33);
+  a31=(a31+a55);
+  a11=arg[5]? arg[5][13] : 0;
+  a39=(a39*a11);
+  a46=(a46*a35);
+  a47=(a47*a44);
+  a46=(a46-a47);
+  a39=(a39*a46);
+  a39=(a04+a39);
+  a39=casadi_fmax(a39,a33);
+  a31=(a31+a39);
+  a31=(a31+a18);
+  a31=(a31+a15);
+  a31=(a31+a38);
+  a31=(a31+a37);
+  a31=casadi_fabs(a31);
+  a33=casadi_inf;
+  a31=(a31<a33);
+  a33=(a00&&a31);
+  a46=arg[5]? arg[5][18] : 0;
+  a47=(-a46);
+  a47=casadi_fmax(a23,a47);
+  a47=casadi_fmin(a47,a46);
+  a47=(a33?a47:0);
+  if (res[0]!=0) res[0][0]=a47;
+  a47=arg[5]? arg[5][19] : 0;
+  a44=(-a47);
+  a44=casadi_fmax(a07,a44);
+  a44=casadi_fmin(a44,a47);
+  a44=(a33?a44:0);
+  if (res[0]!=0) res[0][1]=a44;
+  a44=(a31?a18:0);
+  a35=(!a31);
+  a10=(a35?a10:0);
+  a44=(a44+a10);
+  if (res[1]!=0) res[1][0]=a44;
+  a44=(a31?a15:0);
+  a14=(a35?a14:0);
+  a44=(a44+a14);
+  if (res[1]!=0) res[1][1]=a44;
+  a44=(a31?a38:0);
+  a36=(a35?a36:0);
+  a44=(a44+a36);
+  if (res[1]!=0) res[1][2]=a44;
+  a44=(a31?a37:0);
+  a45=(a35?a45:0);
+  a44=(a44+a45);
+  if (res[1]!=0) res[1][3]=a44;
+  a42=(a33?a42:0);
+  a44=(!a33);
+  a28=(a44?a28:0);
+  a42=(a42+a28);
+  if (res[1]!=0) res[1][4]=a42;
+  a41=(a33?a41:0);
+  a05=(a44?a05:0);
+  a41=(a41+a05);
+  if (res[1]!=0) res[1][5]=a41;
+  a32=(a33?a32:0);
+  a34=(a44?a34:0);
+  a32=(a32+a34);
+  if (res[1]!=0) res[1][6]=a32;
+  a06=(a33?a06:0);
+  a57=(a44?a57:0);
+  a06=(a06+a57);
+  if (res[1]!=0) res[1][7]=a06;
+  a43=(a33?a43:0);
+  a24=(a44?a24:0);
+  a43=(a43+a24);
+  if (res[1]!=0) res[1][8]=a43;
+  a58=(a33?a58:0);
+  a59=(a44?a59:0);
+  a58=(a58+a59);
+  if (res[1]!=0) res[1][9]=a58;
+  a50=(a33?a50:0);
+  a21=(a44?a21:0);
+  a50=(a50+a21);
+  if (res[1]!=0) res[1][10]=a50;
+  a16=(a33?a16:0);
+  a56=(a44?a56:0);
+  a16=(a16+a56);
+  if (res[1]!=0) res[1][11]=a16;
+  a55=(a33?a55:0);
+  a19=(a44?a19:0);
+  a55=(a55+a19);
+  if (res[1]!=0) res[1][12]=a55;
+  a33=(a33?a39:0);
+  a44=(a44?a04:0);
+  a33=(a33+a44);
+  if (res[1]!=0) res[1][13]=a33;
+  a23=casadi_fabs(a23);
+  a23=(a23/a46);
+  a07=casadi_fabs(a07);
+  a07=(a07/a47);
+  a23=casadi_fmax(a23,a07);
+  a23=(a27<a23);
+  a23=(a23?a20:0);
+  a31=(a31?a23:0);
+  a23=3.;
+  a35=(a35?a23:0);
+  a31=(a31+a35);
+  a31=(a00?a31:0);
+  a00=(!a00);
+  a00=(a00?a27:0);
+  a31=(a31+a00);
+  if (res[2]!=0) res[2][0]=a31;
+  if (res[3]!=0) res[3][0]=a18;
+  if (res[3]!=0) res[3][1]=a15;
+  if (res[3]!=0) res[3][2]=a38;
+  if (res[3]!=0) res[3][3]=a37;
+  if (res[3]!=0) res[3][4]=a48;
+  if (res[3]!=0) res[3][5]=a49;
+  if (res[3]!=0) res[3][6]=a40;
+  if (res[3]!=0) res[3][7]=a03;
+  if (res[3]!=0) res[3][8]=a25;
+  if (res[3]!=0) res[3][9]=a26;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f22(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_proj_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_na_proj_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[24])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64;
+  a00=arg[5]? arg[5][16] : 0;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=sin(a01);
+  a03=5.9535999999999999e-02;
+  a04=-2.5000000000000000e-01;
+  a05=-2.4399999999999999e-01;
+  a06=(a05*a02);
+  a04=(a04+a06);
+  a07=2.4399999999999999e-01;
+  a08=arg[1]? arg[1][1] : 0;
+  a09=sin(a08);
+  a10=(a07*a09);
+  a04=(a04+a10);
+  a10=casadi_sq(a04);
+  a11=4.3300000000000000e-01;
+  a01=cos(a01);
+  a12=(a05*a01);
+  a11=(a11+a12);
+  a08=cos(a08);
+  a12=(a07*a08);
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a10+a13);
+  a03=(a03/a14);
+  a15=casadi_sq(a14);
+  a10=(2.*a10);
+  a13=(2.*a13);
+  a10=(a10+a13);
+  a13=casadi_sq(a10);
+  a15=(a15/a13);
+  a03=(a03-a15);
+  a03=sqrt(a03);
+  a15=2.5000000000000000e-01;
+  a13=(a05*a09);
+  a16=(a15+a13);
+  a17=(a07*a02);
+  a16=(a16+a17);
+  a18=(a03*a16);
+  a14=(a14/a10);
+  a10=(a14*a11);
+  a19=(a18+a10);
+  a20=casadi_sq(a19);
+  a03=(a03*a11);
+  a14=(a14*a04);
+  a04=(a03+a14);
+  a11=casadi_sq(a04);
+  a20=(a20+a11);
+  a20=sqrt(a20);
+  a19=(a19/a20);
+  a11=(a02*a19);
+  a04=(a04/a20);
+  a20=(a01*a04);
+  a11=(a11-a20);
+  a20=casadi_fabs(a11);
+  a21=-4.3300000000000000e-01;
+  a22=(a05*a08);
+  a21=(a21+a22);
+  a22=(a07*a01);
+  a21=(a21+a22);
+  a21=(a21+a18);
+  a21=(a21+a10);
+  a23=casadi_sq(a21);
+  a16=(a16+a03);
+  a16=(a16+a14);
+  a24=casadi_sq(a16);
+  a23=(a23+a24);
+  a23=sqrt(a23);
+  a21=(a21/a23);
+  a24=(a09*a21);
+  a16=(a16/a23);
+  a23=(a08*a16);
+  a24=(a24-a23);
+  a23=casadi_fabs(a24);
+  a25=(a20+a23);
+  a20=(a20-a23);
+  a20=casadi_fabs(a20);
+  a25=(a25-a20);
+  a20=2.;
+  a25=(a25/a20);
+  a23=(a00<=a25);
+  a26=arg[5]? arg[5][17] : 0;
+  a27=5.0000000000000000e-01;
+  a28=1.;
+  a29=casadi_sq(a19);
+  a30=casadi_sq(a04);
+  a29=(a29-a30);
+  a30=casadi_sq(a21);
+  a31=casadi_sq(a16);
+  a30=(a30-a31);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a30=(2.*a19);
+  a30=(a30*a04);
+  a31=(2.*a21);
+  a31=(a31*a16);
+  a30=(a30+a31);
+  a30=casadi_sq(a30);
+  a29=(a29+a30);
+  a29=sqrt(a29);
+  a29=(a27*a29);
+  a29=(a28-a29);
+  a30=casadi_fabs(a29);
+  a29=(a29+a30);
+  a27=(a27*a29);
+  a27=sqrt(a27);
+  a26=(a26<=a27);
+  a23=(a23&&a26);
+  a26=(a07*a19);
+  a29=(a06*a26);
+  a30=(a05*a04);
+  a31=(a30*a22);
+  a29=(a29-a31);
+  a26=(a26/a29);
+  a07=(a07*a21);
+  a31=(a13*a07);
+  a32=(a05*a16);
+  a33=(a32*a12);
+  a31=(a31-a33);
+  a07=(a07/a31);
+  a30=(a30/a29);
+  a33=(-a30);
+  a32=(a32/a31);
+  a34=(-a32);
+  a35=arg[4]? arg[4][0] : 0;
+  a36=arg[5]? arg[5][2] : 0;
+  a37=arg[3]? arg[3][0] : 0;
+  a38=arg[0]? arg[0][2] : 0;
+  a39=arg[5]? arg[5][15] : 0;
+  a18=(a22+a18);
+  a18=(a18+a10);
+  a10=arg[0]? arg[0][0] : 0;
+  a40=(a18-a10);
+  a41=arg[5]? arg[5][14] : 0;
+  a40=(a40/a41);
+  a40=(a40-a38);
+  a40=(a39*a40);
+  a40=(a38+a40);
+  a42=(a37-a40);
+  a43=(a36*a42);
+  a35=(a35+a43);
+  a43=(a26*a35);
+  a44=arg[4]? arg[4][1] : 0;
+  a45=arg[5]? arg[5][3] : 0;
+  a46=arg[3]? arg[3][1] : 0;
+  a47=arg[0]? arg[0][3] : 0;
+  a15=(a15+a17);
+  a15=(a15+a03);
+  a15=(a15+a14);
+  a14=arg[0]? arg[0][1] : 0;
+  a03=(a15-a14);
+  a03=(a03/a41);
+  a03=(a03-a47);
+  a39=(a39*a03);
+  a39=(a47+a39);
+  a03=(a46-a39);
+  a17=(a45*a03);
+  a44=(a44+a17);
+  a17=(a30*a44);
+  a43=(a43-a17);
+  a17=(a26*a40);
+  a48=(a30*a39);
+  a17=(a17-a48);
+  a48=(a05*a17);
+  a49=(a48*a02);
+  a50=arg[2]? arg[2][0] : 0;
+  a50=(a50-a18);
+  a36=(a36*a50);
+  a37=(a37+a36);
+  a36=(a26*a37);
+  a51=arg[2]? arg[2][1] : 0;
+  a51=(a51-a15);
+  a45=(a45*a51);
+  a46=(a46+a45);
+  a45=(a30*a46);
+  a36=(a36-a45);
+  a49=(a49*a36);
+  a06=(a06/a29);
+  a45=(a06*a39);
+  a22=(a22/a29);
+  a29=(a22*a40);
+  a45=(a45-a29);
+  a29=(a05*a45);
+  a52=(a29*a04);
+  a53=(a06*a46);
+  a54=(a22*a37);
+  a53=(a53-a54);
+  a52=(a52*a53);
+  a49=(a49+a52);
+  a52=(a30*a49);
+  a48=(a48*a01);
+  a48=(a48*a36);
+  a29=(a29*a19);
+  a29=(a29*a53);
+  a48=(a48+a29);
+  a29=(a26*a48);
+  a52=(a52-a29);
+  a43=(a43+a52);
+  a52=(a26*a43);
+  a29=arg[0]? arg[0][4] : 0;
+  a54=(a52*a29);
+  a55=(a07*a35);
+  a56=(a32*a44);
+  a55=(a55-a56);
+  a56=(a07*a40);
+  a57=(a32*a39);
+  a56=(a56-a57);
+  a57=(a05*a56);
+  a58=(a57*a09);
+  a59=(a07*a37);
+  a60=(a32*a46);
+  a59=(a59-a60);
+  a58=(a58*a59);
+  a13=(a13/a31);
+  a60=(a13*a39);
+  a12=(a12/a31);
+  a31=(a12*a40);
+  a60=(a60-a31);
+  a05=(a05*a60);
+  a31=(a05*a16);
+  a61=(a13*a46);
+  a62=(a12*a37);
+  a61=(a61-a62);
+  a31=(a31*a61);
+  a58=(a58+a31);
+  a31=(a32*a58);
+  a57=(a57*a08);
+  a57=(a57*a59);
+  a05=(a05*a21);
+  a05=(a05*a61);
+  a57=(a57+a05);
+  a05=(a07*a57);
+  a31=(a31-a05);
+  a55=(a55+a31);
+  a31=(a07*a55);
+  a05=arg[0]? arg[0][5] : 0;
+  a62=(a31*a05);
+  a54=(a54+a62);
+  a62=(a06*a44);
+  a63=(a22*a35);
+  a62=(a62-a63);
+  a48=(a22*a48);
+  a49=(a06*a49);
+  a48=(a48-a49);
+  a62=(a62+a48);
+  a01=(a01*a19);
+  a02=(a02*a04);
+  a01=(a01+a02);
+  a02=(a62*a01);
+  a45=(a45*a53);
+  a45=(a45*a11);
+  a02=(a02+a45);
+  a45=(a26*a02);
+  a01=(a43*a01);
+  a36=(a17*a36);
+  a36=(a36*a11);
+  a01=(a01-a36);
+  a36=(a22*a01);
+  a45=(a45-a36);
+  a36=arg[0]? arg[0][6] : 0;
+  a11=(a45*a36);
+  a54=(a54+a11);
+  a44=(a13*a44);
+  a35=(a12*a35);
+  a44=(a44-a35);
+  a57=(a12*a57);
+  a58=(a13*a58);
+  a57=(a57-a58);
+  a44=(a44+a57);
+  a08=(a08*a21);
+  a09=(a09*a16);
+  a08=(a08+a09);
+  a09=(a44*a08);
+  a60=(a60*a61);
+  a60=(a60*a24);
+  a09=(a09+a60);
+  a60=(a07*a09);
+  a08=(a55*a08);
+  a59=(a56*a59);
+  a59=(a59*a24);
+  a08=(a08-a59);
+  a59=(a12*a08);
+  a60=(a60-a59);
+  a59=arg[0]? arg[0][7] : 0;
+  a24=(a60*a59);
+  a54=(a54+a24);
+  a22=(a22*a62);
+  a24=arg[0]? arg[0][8] : 0;
+  a61=(a22*a24);
+  a54=(a54-a61);
+  a12=(a12*a44);
+  a61=arg[0]? arg[0][9] : 0;
+  a16=(a12*a61);
+  a54=(a54-a16);
+  a16=(a26*a17);
+  a21=arg[0]? arg[0][10] : 0;
+  a57=(a16*a21);
+  a54=(a54+a57);
+  a57=(a07*a56);
+  a58=arg[0]? arg[0][11] : 0;
+  a35=(a57*a58);
+  a54=(a54+a35);
+  a35=0.;
+  a11=(a35<=a17);
+  a53=(a11?a28:0);
+  a11=(!a11);
+  a04=-1.;
+  a11=(a11?a04:0);
+  a53=(a53+a11);
+  a11=(a26*a53);
+  a19=arg[0]? arg[0][12] : 0;
+  a48=(a11*a19);
+  a54=(a54+a48);
+  a48=(a35<=a56);
+  a49=(a48?a28:0);
+  a48=(!a48);
+  a48=(a48?a04:0);
+  a49=(a49+a48);
+  a48=(a07*a49);
+  a04=arg[0]? arg[0][13] : 0;
+  a63=(a48*a04);
+  a54=(a54+a63);
+  a63=arg[5]? arg[5][0] : 0;
+  a37=(a37-a40);
+  a63=(a63*a37);
+  a54=(a54+a63);
+  a01=(a06*a01);
+  a02=(a30*a02);
+  a01=(a01-a02);
+  a02=(a01*a36);
+  a43=(a30*a43);
+  a63=(a43*a29);
+  a55=(a32*a55);
+  a64=(a55*a05);
+  a63=(a63+a64);
+  a02=(a02-a63);
+  a08=(a13*a08);
+  a09=(a32*a09);
+  a08=(a08-a09);
+  a09=(a08*a59);
+  a02=(a02+a09);
+  a06=(a06*a62);
+  a62=(a06*a24);
+  a02=(a02+a62);
+  a13=(a13*a44);
+  a44=(a13*a61);
+  a02=(a02+a44);
+  a17=(a30*a17);
+  a44=(a17*a21);
+  a02=(a02-a44);
+  a56=(a32*a56);
+  a44=(a56*a58);
+  a02=(a02-a44);
+  a30=(a30*a53);
+  a53=(a30*a19);
+  a02=(a02-a53);
+  a32=(a32*a49);
+  a49=(a32*a04);
+  a02=(a02-a49);
+  a49=arg[5]? arg[5][1] : 0;
+  a46=(a46-a39);
+  a49=(a49*a46);
+  a02=(a02+a49);
+  a49=arg[5]? arg[5][18] : 0;
+  a53=arg[5]? arg[5][19] : 0;
+  arg[6]=w+0;
+  arg[7]=w+4;
+  arg[8] = arg[5]? arg[5] + 18 : 0;
+  arg[9] = arg[5]? arg[5] + 20 : 0;
+  arg[10] = arg[5]? arg[5] + 22 : 0;
+  res[4]=w+12;
+  res[5]=w+14;
+  w[0] = a26;
+  w[1] = a07;
+  w[2] = a33;
+  w[3] = a34;
+  w[4] = a54;
+  w[5] = a02;
+  if (casadi_f16(arg+6, res+4, iw, w+15, 0)) return 1;
+  a26 = w[12];
+  a07 = w[13];
+  a33 = w[14];
+  a34=(a26+a07);
+  a54=arg[5]? arg[5][4] : 0;
+  a54=(a41*a54);
+  a52=(a52*a37);
+  a43=(a43*a46);
+  a52=(a52-a43);
+  a54=(a54*a52);
+  a54=(a29+a54);
+  a52=9.9999999999999995e-07;
+  a54=casadi_fmax(a54,a52);
+  a34=(a34+a54);
+  a43=arg[5]? arg[5][5] : 0;
+  a43=(a41*a43);
+  a31=(a31*a37);
+  a55=(a55*a46);
+  a31=(a31-a55);
+  a43=(a43*a31);
+  a43=(a05+a43);
+  a43=casadi_fmax(a43,a52);
+  a34=(a34+a43);
+  a31=arg[5]? arg[5][6] : 0;
+  a31=(a41*a31);
+  a45=(a45*a37);
+  a01=(a01*a46);
+  a45=(a45+a01);
+  a31=(a31*a45);
+  a31=(a36+a31);
+  a45=arg[5]? arg[5][8] : 0;
+  a45=(a41*a45);
+  a06=(a06*a46);
+  a22=(a22*a37);
+  a06=(a06-a22);
+  a45=(a45*a06);
+  a45=(a24+a45);
+  a45=casadi_fmax(a45,a52);
+  a06=(a54*a45);
+  a06=sqrt(a06);
+  a22=(-a06);
+  a31=casadi_fmax(a31,a22);
+  a31=casadi_fmin(a31,a06);
+  a34=(a34+a31);
+  a06=arg[5]? arg[5][7] : 0;
+  a06=(a41*a06);
+  a60=(a60*a37);
+  a08=(a08*a46);
+  a60=(a60+a08);
+  a06=(a06*a60);
+  a06=(a59+a06);
+  a60=arg[5]? arg[5][9] : 0;
+  a60=(a41*a60);
+  a13=(a13*a46);
+  a12=(a12*a37);
+  a13=(a13-a12);
+  a60=(a60*a13);
+  a60=(a61+a60);
+  a60=casadi_fmax(a60,a52);
+  a52=(a43*a60);
+  a52=sqrt(a52);
+  a13=(-a52);
+  a06=casadi_fmax(a06,a13);
+  a06=casadi_fmin(a06,a52);
+  a34=(a34+a06);
+  a34=(a34+a45);
+  a34=(a34+a60);
+  a52=arg[5]? arg[5][10] : 0;
+  a52=(a41*a52);
+  a16=(a16*a37);
+  a17=(a17*a46);
+  a16=(a16-a17);
+  a52=(a52*a16);
+  a52=(a21+a52);
+  a52=casadi_fmax(a52,a35);
+  a34=(a34+a52);
+  a16=arg[5]? arg[5][11] : 0;
+  a16=(a41*a16);
+  a57=(a57*a37);
+  a56=(a56*a46);
+  a57=(a57-a56);
+  a16=(a16*a57);
+  a16=(a58+a16);
+  a16=casadi_fmax(a16,a35);
+  a34=(a34+a16);
+  a57=arg[5]? arg[5][12] : 0;
+  a57=(a41*a57);
+  a11=(a11*a37);
+  a30=(a30*a46);
+  a11=(a11-a30);
+  a57=(a57*a11);
+  a57=(a19+a57);
+  a57=casadi_fmax(a57,a35);
+  a34=(a34+a57);
+  a11=arg[5]? arg[5][13] : 0;
+  a41=(a41*a11);
+  a48=(a48*a37);
+  a32=(a32*a46);
+  a48=(a48-a32);
+  a41=(a41*a48);
+  a41=(a04+a41);
+  a41=casadi_fmax(a41,a35);
+  a34=(a34+a41);
+  a34=(a34+a18);
+  a34=(a34+a15);
+  a34=(a34+a40);
+  a34=(a34+a39);
+  a34=casadi_fabs(a34);
+  a35=casadi_inf;
+  a34=(a34<a35);
+  a35=(a23&&a34);
+  a48=(-a49);
+  a26=casadi_fmax(a26,a48);
+  a26=casadi_fmin(a26,a49);
+  a26=(a35?a26:0);
+  if (res[0]!=0) res[0][0]=a26;
+  a26=(-a53);
+  a07=casadi_fmax(a07,a26);
+  a07=casadi_fmin(a07,a53);
+  a07=(a35?a07:0);
+  if (res[0]!=0) res[0][1]=a07;
+  a07=(a34?a18:0);
+  a53=(!a34);
+  a10=(a53?a10:0);
+  a07=(a07+a10);
+  if (res[1]!=0) res[1][0]=a07;
+  a07=(a34?a15:0);
+  a14=(a53?a14:0);
+  a07=(a07+a14);
+  if (res[1]!=0) res[1][1]=a07;
+  a07=(a34?a40:0);
+  a38=(a53?a38:0);
+  a07=(a07+a38);
+  if (res[1]!=0) res[1][2]=a07;
+  a07=(a34?a39:0);
+  a47=(a53?a47:0);
+  a07=(a07+a47);
+  if (res[1]!=0) res[1][3]=a07;
+  a54=(a35?a54:0);
+  a07=(!a35);
+  a29=(a07?a29:0);
+  a54=(a54+a29);
+  if (res[1]!=0) res[1][4]=a54;
+  a43=(a35?a43:0);
+  a05=(a07?a05:0);
+  a43=(a43+a05);
+  if (res[1]!=0) res[1][5]=a43;
+  a31=(a35?a31:0);
+  a36=(a07?a36:0);
+  a31=(a31+a36);
+  if (res[1]!=0) res[1][6]=a31;
+  a06=(a35?a06:0);
+  a59=(a07?a59:0);
+  a06=(a06+a59);
+  if (res[1]!=0) res[1][7]=a06;
+  a45=(a35?a45:0);
+  a24=(a07?a24:0);
+  a45=(a45+a24);
+  if (res[1]!=0) res[1][8]=a45;
+  a60=(a35?a60:0);
+  a61=(a07?a61:0);
+  a60=(a60+a61);
+  if (res[1]!=0) res[1][9]=a60;
+  a52=(a35?a52:0);
+  a21=(a07?a21:0);
+  a52=(a52+a21);
+  if (res[1]!=0) res[1][10]=a52;
+  a16=(a35?a16:0);
+  a58=(a07?a58:0);
+  a16=(a16+a58);
+  if (res[1]!=0) res[1][11]=a16;
+  a57=(a35?a57:0);
+  a19=(a07?a19:0);
+  a57=(a57+a19);
+  if (res[1]!=0) res[1][12]=a57;
+  a35=(a35?a41:0);
+  a07=(a07?a04:0);
+  a35=(a35+a07);
+  if (res[1]!=0) res[1][13]=a35;
+  a35=(a33==a20);
+  a20=(a35?a20:0);
+  a35=(!a35);
+  a33=(a33==a28);
+  a07=4.;
+  a33=(a33?a07:0);
+  a35=(a35?a33:0);
+  a20=(a20+a35);
+  a34=(a34?a20:0);
+  a20=3.;
+  a53=(a53?a20:0);
+  a34=(a34+a53);
+  a34=(a23?a34:0);
+  a23=(!a23);
+  a23=(a23?a28:0);
+  a34=(a34+a23);
+  if (res[2]!=0) res[2][0]=a34;
+  if (res[3]!=0) res[3][0]=a18;
+  if (res[3]!=0) res[3][1]=a15;
+  if (res[3]!=0) res[3][2]=a40;
+  if (res[3]!=0) res[3][3]=a39;
+  if (res[3]!=0) res[3][4]=a50;
+  if (res[3]!=0) res[3][5]=a51;
+  if (res[3]!=0) res[3][6]=a42;
+  if (res[3]!=0) res[3][7]=a03;
+  if (res[3]!=0) res[3][8]=a25;
+  if (res[3]!=0) res[3][9]=a27;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f23(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_proj_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 51;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 51*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_apd_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[14])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f24(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -5567,7 +8805,7 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f18(arg, res, iw, w, mem);
+  return casadi_f24(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_step_checkout(void) {
@@ -5617,12 +8855,12 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_step_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_step_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s6;
+    case 0: return casadi_s7;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s3;
+    case 5: return casadi_s7;
     default: return 0;
   }
 }
@@ -5630,8 +8868,8 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_step_sparsity_in(casadi_int i
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_step_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s6;
-    case 2: return casadi_s7;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
     case 3: return casadi_s3;
     default: return 0;
   }
@@ -5653,8 +8891,1189 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_step_work_bytes(casadi_int *sz_arg, casadi_
   return 0;
 }
 
+/* fivebar_apd_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[14])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f25(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54;
+  a00=arg[5]? arg[5][6] : 0;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=sin(a01);
+  a03=5.9535999999999999e-02;
+  a04=-2.5000000000000000e-01;
+  a05=-2.4399999999999999e-01;
+  a06=(a05*a02);
+  a04=(a04+a06);
+  a07=2.4399999999999999e-01;
+  a08=arg[1]? arg[1][1] : 0;
+  a09=sin(a08);
+  a10=(a07*a09);
+  a04=(a04+a10);
+  a10=casadi_sq(a04);
+  a11=4.3300000000000000e-01;
+  a01=cos(a01);
+  a12=(a05*a01);
+  a11=(a11+a12);
+  a08=cos(a08);
+  a12=(a07*a08);
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a10+a13);
+  a03=(a03/a14);
+  a15=casadi_sq(a14);
+  a10=(2.*a10);
+  a13=(2.*a13);
+  a10=(a10+a13);
+  a13=casadi_sq(a10);
+  a15=(a15/a13);
+  a03=(a03-a15);
+  a03=sqrt(a03);
+  a15=2.5000000000000000e-01;
+  a13=(a05*a09);
+  a16=(a15+a13);
+  a17=(a07*a02);
+  a16=(a16+a17);
+  a18=(a03*a16);
+  a14=(a14/a10);
+  a10=(a14*a11);
+  a19=(a18+a10);
+  a20=casadi_sq(a19);
+  a03=(a03*a11);
+  a14=(a14*a04);
+  a04=(a03+a14);
+  a11=casadi_sq(a04);
+  a20=(a20+a11);
+  a20=sqrt(a20);
+  a19=(a19/a20);
+  a11=(a02*a19);
+  a04=(a04/a20);
+  a20=(a01*a04);
+  a11=(a11-a20);
+  a20=casadi_fabs(a11);
+  a21=-4.3300000000000000e-01;
+  a22=(a05*a08);
+  a21=(a21+a22);
+  a22=(a07*a01);
+  a21=(a21+a22);
+  a21=(a21+a18);
+  a21=(a21+a10);
+  a23=casadi_sq(a21);
+  a16=(a16+a03);
+  a16=(a16+a14);
+  a24=casadi_sq(a16);
+  a23=(a23+a24);
+  a23=sqrt(a23);
+  a21=(a21/a23);
+  a24=(a09*a21);
+  a16=(a16/a23);
+  a23=(a08*a16);
+  a24=(a24-a23);
+  a23=casadi_fabs(a24);
+  a25=(a20+a23);
+  a20=(a20-a23);
+  a20=casadi_fabs(a20);
+  a25=(a25-a20);
+  a20=2.;
+  a25=(a25/a20);
+  a00=(a00<=a25);
+  a23=arg[5]? arg[5][7] : 0;
+  a26=5.0000000000000000e-01;
+  a27=1.;
+  a28=casadi_sq(a19);
+  a29=casadi_sq(a04);
+  a28=(a28-a29);
+  a29=casadi_sq(a21);
+  a30=casadi_sq(a16);
+  a29=(a29-a30);
+  a28=(a28+a29);
+  a28=casadi_sq(a28);
+  a29=(2.*a19);
+  a29=(a29*a04);
+  a30=(2.*a21);
+  a30=(a30*a16);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a28=(a28+a29);
+  a28=sqrt(a28);
+  a28=(a26*a28);
+  a28=(a27-a28);
+  a29=casadi_fabs(a28);
+  a28=(a28+a29);
+  a26=(a26*a28);
+  a26=sqrt(a26);
+  a23=(a23<=a26);
+  a00=(a00&&a23);
+  a23=(a07*a19);
+  a28=(a06*a23);
+  a29=(a05*a04);
+  a30=(a29*a22);
+  a28=(a28-a30);
+  a23=(a23/a28);
+  a29=(a29/a28);
+  a30=casadi_sq(a29);
+  a31=(a05*a16);
+  a07=(a07*a21);
+  a32=(a13*a07);
+  a33=(a31*a12);
+  a32=(a32-a33);
+  a31=(a31/a32);
+  a33=casadi_sq(a31);
+  a30=(a30+a33);
+  a33=arg[4]? arg[4][0] : 0;
+  a34=(a23*a33);
+  a35=arg[4]? arg[4][1] : 0;
+  a36=(a29*a35);
+  a34=(a34-a36);
+  a36=arg[0]? arg[0][2] : 0;
+  a37=arg[5]? arg[5][5] : 0;
+  a18=(a22+a18);
+  a18=(a18+a10);
+  a10=arg[0]? arg[0][0] : 0;
+  a38=(a18-a10);
+  a39=arg[5]? arg[5][4] : 0;
+  a38=(a38/a39);
+  a38=(a38-a36);
+  a38=(a37*a38);
+  a38=(a36+a38);
+  a40=(a23*a38);
+  a41=arg[0]? arg[0][3] : 0;
+  a15=(a15+a17);
+  a15=(a15+a03);
+  a15=(a15+a14);
+  a14=arg[0]? arg[0][1] : 0;
+  a03=(a15-a14);
+  a03=(a03/a39);
+  a03=(a03-a41);
+  a37=(a37*a03);
+  a37=(a41+a37);
+  a03=(a29*a37);
+  a40=(a40-a03);
+  a03=(a05*a40);
+  a39=(a03*a02);
+  a17=arg[3]? arg[3][0] : 0;
+  a42=(a23*a17);
+  a43=arg[3]? arg[3][1] : 0;
+  a44=(a29*a43);
+  a42=(a42-a44);
+  a39=(a39*a42);
+  a06=(a06/a28);
+  a44=(a06*a37);
+  a22=(a22/a28);
+  a28=(a22*a38);
+  a44=(a44-a28);
+  a28=(a05*a44);
+  a45=(a28*a04);
+  a46=(a06*a43);
+  a47=(a22*a17);
+  a46=(a46-a47);
+  a45=(a45*a46);
+  a39=(a39+a45);
+  a45=(a29*a39);
+  a03=(a03*a01);
+  a03=(a03*a42);
+  a28=(a28*a19);
+  a28=(a28*a46);
+  a03=(a03+a28);
+  a28=(a23*a03);
+  a45=(a45-a28);
+  a34=(a34+a45);
+  a45=(a23*a34);
+  a28=arg[0]? arg[0][4] : 0;
+  a45=(a45*a28);
+  a07=(a07/a32);
+  a47=(a07*a33);
+  a48=(a31*a35);
+  a47=(a47-a48);
+  a48=(a07*a38);
+  a49=(a31*a37);
+  a48=(a48-a49);
+  a49=(a05*a48);
+  a50=(a49*a09);
+  a51=(a07*a17);
+  a52=(a31*a43);
+  a51=(a51-a52);
+  a50=(a50*a51);
+  a13=(a13/a32);
+  a52=(a13*a37);
+  a12=(a12/a32);
+  a32=(a12*a38);
+  a52=(a52-a32);
+  a05=(a05*a52);
+  a32=(a05*a16);
+  a53=(a13*a43);
+  a54=(a12*a17);
+  a53=(a53-a54);
+  a32=(a32*a53);
+  a50=(a50+a32);
+  a32=(a31*a50);
+  a49=(a49*a08);
+  a49=(a49*a51);
+  a05=(a05*a21);
+  a05=(a05*a53);
+  a49=(a49+a05);
+  a05=(a07*a49);
+  a32=(a32-a05);
+  a47=(a47+a32);
+  a32=(a07*a47);
+  a05=arg[0]? arg[0][5] : 0;
+  a32=(a32*a05);
+  a45=(a45+a32);
+  a32=(a06*a35);
+  a54=(a22*a33);
+  a32=(a32-a54);
+  a03=(a22*a03);
+  a39=(a06*a39);
+  a03=(a03-a39);
+  a32=(a32+a03);
+  a01=(a01*a19);
+  a02=(a02*a04);
+  a01=(a01+a02);
+  a02=(a32*a01);
+  a44=(a44*a46);
+  a44=(a44*a11);
+  a02=(a02+a44);
+  a44=(a23*a02);
+  a01=(a34*a01);
+  a42=(a40*a42);
+  a42=(a42*a11);
+  a01=(a01-a42);
+  a42=(a22*a01);
+  a44=(a44-a42);
+  a42=arg[0]? arg[0][6] : 0;
+  a44=(a44*a42);
+  a45=(a45+a44);
+  a35=(a13*a35);
+  a33=(a12*a33);
+  a35=(a35-a33);
+  a49=(a12*a49);
+  a50=(a13*a50);
+  a49=(a49-a50);
+  a35=(a35+a49);
+  a08=(a08*a21);
+  a09=(a09*a16);
+  a08=(a08+a09);
+  a09=(a35*a08);
+  a52=(a52*a53);
+  a52=(a52*a24);
+  a09=(a09+a52);
+  a52=(a07*a09);
+  a08=(a47*a08);
+  a51=(a48*a51);
+  a51=(a51*a24);
+  a08=(a08-a51);
+  a51=(a12*a08);
+  a52=(a52-a51);
+  a51=arg[0]? arg[0][7] : 0;
+  a52=(a52*a51);
+  a45=(a45+a52);
+  a22=(a22*a32);
+  a52=arg[0]? arg[0][8] : 0;
+  a22=(a22*a52);
+  a45=(a45-a22);
+  a12=(a12*a35);
+  a22=arg[0]? arg[0][9] : 0;
+  a12=(a12*a22);
+  a45=(a45-a12);
+  a12=(a23*a40);
+  a24=arg[0]? arg[0][10] : 0;
+  a12=(a12*a24);
+  a45=(a45+a12);
+  a12=(a07*a48);
+  a53=arg[0]? arg[0][11] : 0;
+  a12=(a12*a53);
+  a45=(a45+a12);
+  a12=0.;
+  a16=(a12<=a40);
+  a21=(a16?a27:0);
+  a16=(!a16);
+  a49=-1.;
+  a16=(a16?a49:0);
+  a21=(a21+a16);
+  a16=(a23*a21);
+  a50=arg[0]? arg[0][12] : 0;
+  a16=(a16*a50);
+  a45=(a45+a16);
+  a12=(a12<=a48);
+  a16=(a12?a27:0);
+  a12=(!a12);
+  a12=(a12?a49:0);
+  a16=(a16+a12);
+  a12=(a07*a16);
+  a49=arg[0]? arg[0][13] : 0;
+  a12=(a12*a49);
+  a45=(a45+a12);
+  a12=arg[5]? arg[5][0] : 0;
+  a33=arg[2]? arg[2][0] : 0;
+  a33=(a33-a18);
+  a12=(a12*a33);
+  a45=(a45+a12);
+  a12=arg[5]? arg[5][2] : 0;
+  a17=(a17-a38);
+  a12=(a12*a17);
+  a45=(a45+a12);
+  a12=(a30*a45);
+  a44=(a23*a29);
+  a11=(a07*a31);
+  a44=(a44+a11);
+  a01=(a06*a01);
+  a02=(a29*a02);
+  a01=(a01-a02);
+  a01=(a01*a42);
+  a34=(a29*a34);
+  a34=(a34*a28);
+  a47=(a31*a47);
+  a47=(a47*a05);
+  a34=(a34+a47);
+  a01=(a01-a34);
+  a08=(a13*a08);
+  a09=(a31*a09);
+  a08=(a08-a09);
+  a08=(a08*a51);
+  a01=(a01+a08);
+  a06=(a06*a32);
+  a06=(a06*a52);
+  a01=(a01+a06);
+  a13=(a13*a35);
+  a13=(a13*a22);
+  a01=(a01+a13);
+  a40=(a29*a40);
+  a40=(a40*a24);
+  a01=(a01-a40);
+  a48=(a31*a48);
+  a48=(a48*a53);
+  a01=(a01-a48);
+  a21=(a29*a21);
+  a21=(a21*a50);
+  a01=(a01-a21);
+  a16=(a31*a16);
+  a16=(a16*a49);
+  a01=(a01-a16);
+  a16=arg[5]? arg[5][1] : 0;
+  a21=arg[2]? arg[2][1] : 0;
+  a21=(a21-a15);
+  a16=(a16*a21);
+  a01=(a01+a16);
+  a16=arg[5]? arg[5][3] : 0;
+  a43=(a43-a37);
+  a16=(a16*a43);
+  a01=(a01+a16);
+  a16=(a44*a01);
+  a12=(a12+a16);
+  a16=casadi_sq(a23);
+  a48=casadi_sq(a07);
+  a16=(a16+a48);
+  a30=(a16*a30);
+  a48=(a29*a23);
+  a40=(a31*a07);
+  a48=(a48+a40);
+  a44=(a44*a48);
+  a30=(a30-a44);
+  a12=(a12/a30);
+  a23=(a23*a12);
+  a16=(a16*a01);
+  a48=(a48*a45);
+  a16=(a16+a48);
+  a16=(a16/a30);
+  a29=(a29*a16);
+  a23=(a23-a29);
+  a07=(a07*a12);
+  a31=(a31*a16);
+  a07=(a07-a31);
+  a31=(a23+a07);
+  a31=(a31+a28);
+  a31=(a31+a05);
+  a31=(a31+a42);
+  a31=(a31+a51);
+  a31=(a31+a52);
+  a31=(a31+a22);
+  a31=(a31+a24);
+  a31=(a31+a53);
+  a31=(a31+a50);
+  a31=(a31+a49);
+  a31=(a31+a18);
+  a31=(a31+a15);
+  a31=(a31+a38);
+  a31=(a31+a37);
+  a31=casadi_fabs(a31);
+  a16=casadi_inf;
+  a31=(a31<a16);
+  a16=(a00&&a31);
+  a12=arg[5]? arg[5][8] : 0;
+  a29=(-a12);
+  a29=casadi_fmax(a23,a29);
+  a29=casadi_fmin(a29,a12);
+  a29=(a16?a29:0);
+  if (res[0]!=0) res[0][0]=a29;
+  a29=arg[5]? arg[5][9] : 0;
+  a30=(-a29);
+  a30=casadi_fmax(a07,a30);
+  a30=casadi_fmin(a30,a29);
+  a30=(a16?a30:0);
+  if (res[0]!=0) res[0][1]=a30;
+  a30=(a31?a18:0);
+  a48=(!a31);
+  a10=(a48?a10:0);
+  a30=(a30+a10);
+  if (res[1]!=0) res[1][0]=a30;
+  a30=(a31?a15:0);
+  a14=(a48?a14:0);
+  a30=(a30+a14);
+  if (res[1]!=0) res[1][1]=a30;
+  a30=(a31?a38:0);
+  a36=(a48?a36:0);
+  a30=(a30+a36);
+  if (res[1]!=0) res[1][2]=a30;
+  a30=(a31?a37:0);
+  a41=(a48?a41:0);
+  a30=(a30+a41);
+  if (res[1]!=0) res[1][3]=a30;
+  a30=(a16?a28:0);
+  a41=(!a16);
+  a28=(a41?a28:0);
+  a30=(a30+a28);
+  if (res[1]!=0) res[1][4]=a30;
+  a30=(a16?a05:0);
+  a05=(a41?a05:0);
+  a30=(a30+a05);
+  if (res[1]!=0) res[1][5]=a30;
+  a30=(a16?a42:0);
+  a42=(a41?a42:0);
+  a30=(a30+a42);
+  if (res[1]!=0) res[1][6]=a30;
+  a30=(a16?a51:0);
+  a51=(a41?a51:0);
+  a30=(a30+a51);
+  if (res[1]!=0) res[1][7]=a30;
+  a30=(a16?a52:0);
+  a52=(a41?a52:0);
+  a30=(a30+a52);
+  if (res[1]!=0) res[1][8]=a30;
+  a30=(a16?a22:0);
+  a22=(a41?a22:0);
+  a30=(a30+a22);
+  if (res[1]!=0) res[1][9]=a30;
+  a30=(a16?a24:0);
+  a24=(a41?a24:0);
+  a30=(a30+a24);
+  if (res[1]!=0) res[1][10]=a30;
+  a30=(a16?a53:0);
+  a53=(a41?a53:0);
+  a30=(a30+a53);
+  if (res[1]!=0) res[1][11]=a30;
+  a30=(a16?a50:0);
+  a50=(a41?a50:0);
+  a30=(a30+a50);
+  if (res[1]!=0) res[1][12]=a30;
+  a16=(a16?a49:0);
+  a41=(a41?a49:0);
+  a16=(a16+a41);
+  if (res[1]!=0) res[1][13]=a16;
+  a23=casadi_fabs(a23);
+  a23=(a23/a12);
+  a07=casadi_fabs(a07);
+  a07=(a07/a29);
+  a23=casadi_fmax(a23,a07);
+  a23=(a27<a23);
+  a23=(a23?a20:0);
+  a31=(a31?a23:0);
+  a23=3.;
+  a48=(a48?a23:0);
+  a31=(a31+a48);
+  a31=(a00?a31:0);
+  a00=(!a00);
+  a00=(a00?a27:0);
+  a31=(a31+a00);
+  if (res[2]!=0) res[2][0]=a31;
+  if (res[3]!=0) res[3][0]=a18;
+  if (res[3]!=0) res[3][1]=a15;
+  if (res[3]!=0) res[3][2]=a38;
+  if (res[3]!=0) res[3][3]=a37;
+  if (res[3]!=0) res[3][4]=a33;
+  if (res[3]!=0) res[3][5]=a21;
+  if (res[3]!=0) res[3][6]=a17;
+  if (res[3]!=0) res[3][7]=a43;
+  if (res[3]!=0) res[3][8]=a25;
+  if (res[3]!=0) res[3][9]=a26;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f25(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_apd_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_apd_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_apd_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_apd_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_apd_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s7;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_apd_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[14])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f26(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56;
+  a00=arg[5]? arg[5][6] : 0;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=sin(a01);
+  a03=5.9535999999999999e-02;
+  a04=-2.5000000000000000e-01;
+  a05=-2.4399999999999999e-01;
+  a06=(a05*a02);
+  a04=(a04+a06);
+  a07=2.4399999999999999e-01;
+  a08=arg[1]? arg[1][1] : 0;
+  a09=sin(a08);
+  a10=(a07*a09);
+  a04=(a04+a10);
+  a10=casadi_sq(a04);
+  a11=4.3300000000000000e-01;
+  a01=cos(a01);
+  a12=(a05*a01);
+  a11=(a11+a12);
+  a08=cos(a08);
+  a12=(a07*a08);
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a10+a13);
+  a03=(a03/a14);
+  a15=casadi_sq(a14);
+  a10=(2.*a10);
+  a13=(2.*a13);
+  a10=(a10+a13);
+  a13=casadi_sq(a10);
+  a15=(a15/a13);
+  a03=(a03-a15);
+  a03=sqrt(a03);
+  a15=2.5000000000000000e-01;
+  a13=(a05*a09);
+  a16=(a15+a13);
+  a17=(a07*a02);
+  a16=(a16+a17);
+  a18=(a03*a16);
+  a14=(a14/a10);
+  a10=(a14*a11);
+  a19=(a18+a10);
+  a20=casadi_sq(a19);
+  a03=(a03*a11);
+  a14=(a14*a04);
+  a04=(a03+a14);
+  a11=casadi_sq(a04);
+  a20=(a20+a11);
+  a20=sqrt(a20);
+  a19=(a19/a20);
+  a11=(a02*a19);
+  a04=(a04/a20);
+  a20=(a01*a04);
+  a11=(a11-a20);
+  a20=casadi_fabs(a11);
+  a21=-4.3300000000000000e-01;
+  a22=(a05*a08);
+  a21=(a21+a22);
+  a22=(a07*a01);
+  a21=(a21+a22);
+  a21=(a21+a18);
+  a21=(a21+a10);
+  a23=casadi_sq(a21);
+  a16=(a16+a03);
+  a16=(a16+a14);
+  a24=casadi_sq(a16);
+  a23=(a23+a24);
+  a23=sqrt(a23);
+  a21=(a21/a23);
+  a24=(a09*a21);
+  a16=(a16/a23);
+  a23=(a08*a16);
+  a24=(a24-a23);
+  a23=casadi_fabs(a24);
+  a25=(a20+a23);
+  a20=(a20-a23);
+  a20=casadi_fabs(a20);
+  a25=(a25-a20);
+  a20=2.;
+  a25=(a25/a20);
+  a23=(a00<=a25);
+  a26=arg[5]? arg[5][7] : 0;
+  a27=5.0000000000000000e-01;
+  a28=1.;
+  a29=casadi_sq(a19);
+  a30=casadi_sq(a04);
+  a29=(a29-a30);
+  a30=casadi_sq(a21);
+  a31=casadi_sq(a16);
+  a30=(a30-a31);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a30=(2.*a19);
+  a30=(a30*a04);
+  a31=(2.*a21);
+  a31=(a31*a16);
+  a30=(a30+a31);
+  a30=casadi_sq(a30);
+  a29=(a29+a30);
+  a29=sqrt(a29);
+  a29=(a27*a29);
+  a29=(a28-a29);
+  a30=casadi_fabs(a29);
+  a29=(a29+a30);
+  a27=(a27*a29);
+  a27=sqrt(a27);
+  a26=(a26<=a27);
+  a23=(a23&&a26);
+  a26=(a07*a19);
+  a29=(a06*a26);
+  a30=(a05*a04);
+  a31=(a30*a22);
+  a29=(a29-a31);
+  a26=(a26/a29);
+  a07=(a07*a21);
+  a31=(a13*a07);
+  a32=(a05*a16);
+  a33=(a32*a12);
+  a31=(a31-a33);
+  a07=(a07/a31);
+  a30=(a30/a29);
+  a33=(-a30);
+  a32=(a32/a31);
+  a34=(-a32);
+  a35=arg[4]? arg[4][0] : 0;
+  a36=(a26*a35);
+  a37=arg[4]? arg[4][1] : 0;
+  a38=(a30*a37);
+  a36=(a36-a38);
+  a38=arg[0]? arg[0][2] : 0;
+  a39=arg[5]? arg[5][5] : 0;
+  a18=(a22+a18);
+  a18=(a18+a10);
+  a10=arg[0]? arg[0][0] : 0;
+  a40=(a18-a10);
+  a41=arg[5]? arg[5][4] : 0;
+  a40=(a40/a41);
+  a40=(a40-a38);
+  a40=(a39*a40);
+  a40=(a38+a40);
+  a42=(a26*a40);
+  a43=arg[0]? arg[0][3] : 0;
+  a15=(a15+a17);
+  a15=(a15+a03);
+  a15=(a15+a14);
+  a14=arg[0]? arg[0][1] : 0;
+  a03=(a15-a14);
+  a03=(a03/a41);
+  a03=(a03-a43);
+  a39=(a39*a03);
+  a39=(a43+a39);
+  a03=(a30*a39);
+  a42=(a42-a03);
+  a03=(a05*a42);
+  a41=(a03*a02);
+  a17=arg[3]? arg[3][0] : 0;
+  a44=(a26*a17);
+  a45=arg[3]? arg[3][1] : 0;
+  a46=(a30*a45);
+  a44=(a44-a46);
+  a41=(a41*a44);
+  a06=(a06/a29);
+  a46=(a06*a39);
+  a22=(a22/a29);
+  a29=(a22*a40);
+  a46=(a46-a29);
+  a29=(a05*a46);
+  a47=(a29*a04);
+  a48=(a06*a45);
+  a49=(a22*a17);
+  a48=(a48-a49);
+  a47=(a47*a48);
+  a41=(a41+a47);
+  a47=(a30*a41);
+  a03=(a03*a01);
+  a03=(a03*a44);
+  a29=(a29*a19);
+  a29=(a29*a48);
+  a03=(a03+a29);
+  a29=(a26*a03);
+  a47=(a47-a29);
+  a36=(a36+a47);
+  a47=(a26*a36);
+  a29=arg[0]? arg[0][4] : 0;
+  a47=(a47*a29);
+  a49=(a07*a35);
+  a50=(a32*a37);
+  a49=(a49-a50);
+  a50=(a07*a40);
+  a51=(a32*a39);
+  a50=(a50-a51);
+  a51=(a05*a50);
+  a52=(a51*a09);
+  a53=(a07*a17);
+  a54=(a32*a45);
+  a53=(a53-a54);
+  a52=(a52*a53);
+  a13=(a13/a31);
+  a54=(a13*a39);
+  a12=(a12/a31);
+  a31=(a12*a40);
+  a54=(a54-a31);
+  a05=(a05*a54);
+  a31=(a05*a16);
+  a55=(a13*a45);
+  a56=(a12*a17);
+  a55=(a55-a56);
+  a31=(a31*a55);
+  a52=(a52+a31);
+  a31=(a32*a52);
+  a51=(a51*a08);
+  a51=(a51*a53);
+  a05=(a05*a21);
+  a05=(a05*a55);
+  a51=(a51+a05);
+  a05=(a07*a51);
+  a31=(a31-a05);
+  a49=(a49+a31);
+  a31=(a07*a49);
+  a05=arg[0]? arg[0][5] : 0;
+  a31=(a31*a05);
+  a47=(a47+a31);
+  a31=(a06*a37);
+  a56=(a22*a35);
+  a31=(a31-a56);
+  a03=(a22*a03);
+  a41=(a06*a41);
+  a03=(a03-a41);
+  a31=(a31+a03);
+  a01=(a01*a19);
+  a02=(a02*a04);
+  a01=(a01+a02);
+  a02=(a31*a01);
+  a46=(a46*a48);
+  a46=(a46*a11);
+  a02=(a02+a46);
+  a46=(a26*a02);
+  a01=(a36*a01);
+  a44=(a42*a44);
+  a44=(a44*a11);
+  a01=(a01-a44);
+  a44=(a22*a01);
+  a46=(a46-a44);
+  a44=arg[0]? arg[0][6] : 0;
+  a46=(a46*a44);
+  a47=(a47+a46);
+  a37=(a13*a37);
+  a35=(a12*a35);
+  a37=(a37-a35);
+  a51=(a12*a51);
+  a52=(a13*a52);
+  a51=(a51-a52);
+  a37=(a37+a51);
+  a08=(a08*a21);
+  a09=(a09*a16);
+  a08=(a08+a09);
+  a09=(a37*a08);
+  a54=(a54*a55);
+  a54=(a54*a24);
+  a09=(a09+a54);
+  a54=(a07*a09);
+  a08=(a49*a08);
+  a53=(a50*a53);
+  a53=(a53*a24);
+  a08=(a08-a53);
+  a53=(a12*a08);
+  a54=(a54-a53);
+  a53=arg[0]? arg[0][7] : 0;
+  a54=(a54*a53);
+  a47=(a47+a54);
+  a22=(a22*a31);
+  a54=arg[0]? arg[0][8] : 0;
+  a22=(a22*a54);
+  a47=(a47-a22);
+  a12=(a12*a37);
+  a22=arg[0]? arg[0][9] : 0;
+  a12=(a12*a22);
+  a47=(a47-a12);
+  a12=(a26*a42);
+  a24=arg[0]? arg[0][10] : 0;
+  a12=(a12*a24);
+  a47=(a47+a12);
+  a12=(a07*a50);
+  a55=arg[0]? arg[0][11] : 0;
+  a12=(a12*a55);
+  a47=(a47+a12);
+  a12=0.;
+  a16=(a12<=a42);
+  a21=(a16?a28:0);
+  a16=(!a16);
+  a51=-1.;
+  a16=(a16?a51:0);
+  a21=(a21+a16);
+  a16=(a26*a21);
+  a52=arg[0]? arg[0][12] : 0;
+  a16=(a16*a52);
+  a47=(a47+a16);
+  a12=(a12<=a50);
+  a16=(a12?a28:0);
+  a12=(!a12);
+  a12=(a12?a51:0);
+  a16=(a16+a12);
+  a12=(a07*a16);
+  a51=arg[0]? arg[0][13] : 0;
+  a12=(a12*a51);
+  a47=(a47+a12);
+  a12=arg[5]? arg[5][0] : 0;
+  a35=arg[2]? arg[2][0] : 0;
+  a35=(a35-a18);
+  a12=(a12*a35);
+  a47=(a47+a12);
+  a12=arg[5]? arg[5][2] : 0;
+  a17=(a17-a40);
+  a12=(a12*a17);
+  a47=(a47+a12);
+  a01=(a06*a01);
+  a02=(a30*a02);
+  a01=(a01-a02);
+  a01=(a01*a44);
+  a36=(a30*a36);
+  a36=(a36*a29);
+  a49=(a32*a49);
+  a49=(a49*a05);
+  a36=(a36+a49);
+  a01=(a01-a36);
+  a08=(a13*a08);
+  a09=(a32*a09);
+  a08=(a08-a09);
+  a08=(a08*a53);
+  a01=(a01+a08);
+  a06=(a06*a31);
+  a06=(a06*a54);
+  a01=(a01+a06);
+  a13=(a13*a37);
+  a13=(a13*a22);
+  a01=(a01+a13);
+  a42=(a30*a42);
+  a42=(a42*a24);
+  a01=(a01-a42);
+  a50=(a32*a50);
+  a50=(a50*a55);
+  a01=(a01-a50);
+  a30=(a30*a21);
+  a30=(a30*a52);
+  a01=(a01-a30);
+  a32=(a32*a16);
+  a32=(a32*a51);
+  a01=(a01-a32);
+  a32=arg[5]? arg[5][1] : 0;
+  a16=arg[2]? arg[2][1] : 0;
+  a16=(a16-a15);
+  a32=(a32*a16);
+  a01=(a01+a32);
+  a32=arg[5]? arg[5][3] : 0;
+  a45=(a45-a39);
+  a32=(a32*a45);
+  a01=(a01+a32);
+  a32=arg[5]? arg[5][8] : 0;
+  a30=arg[5]? arg[5][9] : 0;
+  arg[6]=w+0;
+  arg[7]=w+4;
+  arg[8] = arg[5]? arg[5] + 8 : 0;
+  arg[9] = arg[5]? arg[5] + 10 : 0;
+  arg[10] = arg[5]? arg[5] + 12 : 0;
+  res[4]=w+12;
+  res[5]=w+14;
+  w[0] = a26;
+  w[1] = a07;
+  w[2] = a33;
+  w[3] = a34;
+  w[4] = a47;
+  w[5] = a01;
+  if (casadi_f16(arg+6, res+4, iw, w+15, 0)) return 1;
+  a26 = w[12];
+  a07 = w[13];
+  a33 = w[14];
+  a34=(a26+a07);
+  a34=(a34+a29);
+  a34=(a34+a05);
+  a34=(a34+a44);
+  a34=(a34+a53);
+  a34=(a34+a54);
+  a34=(a34+a22);
+  a34=(a34+a24);
+  a34=(a34+a55);
+  a34=(a34+a52);
+  a34=(a34+a51);
+  a34=(a34+a18);
+  a34=(a34+a15);
+  a34=(a34+a40);
+  a34=(a34+a39);
+  a34=casadi_fabs(a34);
+  a47=casadi_inf;
+  a34=(a34<a47);
+  a47=(a23&&a34);
+  a01=(-a32);
+  a26=casadi_fmax(a26,a01);
+  a26=casadi_fmin(a26,a32);
+  a26=(a47?a26:0);
+  if (res[0]!=0) res[0][0]=a26;
+  a26=(-a30);
+  a07=casadi_fmax(a07,a26);
+  a07=casadi_fmin(a07,a30);
+  a07=(a47?a07:0);
+  if (res[0]!=0) res[0][1]=a07;
+  a07=(a34?a18:0);
+  a30=(!a34);
+  a10=(a30?a10:0);
+  a07=(a07+a10);
+  if (res[1]!=0) res[1][0]=a07;
+  a07=(a34?a15:0);
+  a14=(a30?a14:0);
+  a07=(a07+a14);
+  if (res[1]!=0) res[1][1]=a07;
+  a07=(a34?a40:0);
+  a38=(a30?a38:0);
+  a07=(a07+a38);
+  if (res[1]!=0) res[1][2]=a07;
+  a07=(a34?a39:0);
+  a43=(a30?a43:0);
+  a07=(a07+a43);
+  if (res[1]!=0) res[1][3]=a07;
+  a07=(a47?a29:0);
+  a43=(!a47);
+  a29=(a43?a29:0);
+  a07=(a07+a29);
+  if (res[1]!=0) res[1][4]=a07;
+  a07=(a47?a05:0);
+  a05=(a43?a05:0);
+  a07=(a07+a05);
+  if (res[1]!=0) res[1][5]=a07;
+  a07=(a47?a44:0);
+  a44=(a43?a44:0);
+  a07=(a07+a44);
+  if (res[1]!=0) res[1][6]=a07;
+  a07=(a47?a53:0);
+  a53=(a43?a53:0);
+  a07=(a07+a53);
+  if (res[1]!=0) res[1][7]=a07;
+  a07=(a47?a54:0);
+  a54=(a43?a54:0);
+  a07=(a07+a54);
+  if (res[1]!=0) res[1][8]=a07;
+  a07=(a47?a22:0);
+  a22=(a43?a22:0);
+  a07=(a07+a22);
+  if (res[1]!=0) res[1][9]=a07;
+  a07=(a47?a24:0);
+  a24=(a43?a24:0);
+  a07=(a07+a24);
+  if (res[1]!=0) res[1][10]=a07;
+  a07=(a47?a55:0);
+  a55=(a43?a55:0);
+  a07=(a07+a55);
+  if (res[1]!=0) res[1][11]=a07;
+  a07=(a47?a52:0);
+  a52=(a43?a52:0);
+  a07=(a07+a52);
+  if (res[1]!=0) res[1][12]=a07;
+  a47=(a47?a51:0);
+  a43=(a43?a51:0);
+  a47=(a47+a43);
+  if (res[1]!=0) res[1][13]=a47;
+  a47=(a33==a20);
+  a20=(a47?a20:0);
+  a47=(!a47);
+  a33=(a33==a28);
+  a43=4.;
+  a33=(a33?a43:0);
+  a47=(a47?a33:0);
+  a20=(a20+a47);
+  a34=(a34?a20:0);
+  a20=3.;
+  a30=(a30?a20:0);
+  a34=(a34+a30);
+  a34=(a23?a34:0);
+  a23=(!a23);
+  a23=(a23?a28:0);
+  a34=(a34+a23);
+  if (res[2]!=0) res[2][0]=a34;
+  if (res[3]!=0) res[3][0]=a18;
+  if (res[3]!=0) res[3][1]=a15;
+  if (res[3]!=0) res[3][2]=a40;
+  if (res[3]!=0) res[3][3]=a39;
+  if (res[3]!=0) res[3][4]=a35;
+  if (res[3]!=0) res[3][5]=a16;
+  if (res[3]!=0) res[3][6]=a17;
+  if (res[3]!=0) res[3][7]=a45;
+  if (res[3]!=0) res[3][8]=a25;
+  if (res[3]!=0) res[3][9]=a27;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f26(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_apd_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_apd_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_apd_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_apd_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_apd_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s7;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 51;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 51*sizeof(casadi_real);
+  return 0;
+}
+
 /* fivebar_plant_xedd:(xe[2],xed[2],tau_a[2],plant[15])->(xedd[2]) */
-static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -5959,7 +10378,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f19(arg, res, iw, w, mem);
+  return casadi_f27(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_checkout(void) {
@@ -6007,7 +10426,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_plant_xedd_sparsity_in(casadi_int
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s0;
-    case 3: return casadi_s8;
+    case 3: return casadi_s9;
     default: return 0;
   }
 }
@@ -6036,7 +10455,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_plant_step:(x[4],tau_a[2],plant[15],h)->(x_next[4]) */
-static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -7193,7 +11612,7 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f20(arg, res, iw, w, mem);
+  return casadi_f28(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step_checkout(void) {
@@ -7240,8 +11659,8 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_plant_step_sparsity_in(casadi_int
   switch (i) {
     case 0: return casadi_s1;
     case 1: return casadi_s0;
-    case 2: return casadi_s8;
-    case 3: return casadi_s7;
+    case 2: return casadi_s9;
+    case 3: return casadi_s6;
     default: return 0;
   }
 }
@@ -7270,7 +11689,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_step_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_measure:(xe[2],plant[15])->(qa[2]) */
-static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=0.;
@@ -7345,7 +11764,7 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f21(arg, res, iw, w, mem);
+  return casadi_f29(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure_checkout(void) {
@@ -7389,7 +11808,7 @@ CASADI_SYMBOL_EXPORT const char* fivebar_measure_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s8;
+    case 1: return casadi_s9;
     default: return 0;
   }
 }
@@ -7417,8 +11836,8 @@ CASADI_SYMBOL_EXPORT int fivebar_measure_work_bytes(casadi_int *sz_arg, casadi_i
   return 0;
 }
 
-/* fivebar_na_closed_loop:(x[18],u[6],p[35])->(x_next[18],y[17]) */
-static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_closed_loop:(x[18],u[6],p[39])->(x_next[18],y[17]) */
+static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -7431,11 +11850,11 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+20;
+  wr06 = wr05+24;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -7451,7 +11870,7 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[1]=w14;
   res1[2]=(&w15);
   res1[3]=0;
-  if (casadi_f16(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
   w16 = wr05[14];
   w17 = 3.;
   w16 /= w17;
@@ -7460,19 +11879,19 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -7485,7 +11904,7 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f22(arg, res, iw, w, mem);
+  return casadi_f30(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_checkout(void) {
@@ -7530,17 +11949,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_closed_loop_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s9;
-    case 1: return casadi_s10;
-    case 2: return casadi_s11;
+    case 0: return casadi_s10;
+    case 1: return casadi_s11;
+    case 2: return casadi_s12;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s9;
-    case 1: return casadi_s12;
+    case 0: return casadi_s10;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -7561,8 +11980,8 @@ CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_work_bytes(casadi_int *sz_arg, c
   return 0;
 }
 
-/* fivebar_na_proj_closed_loop:(x[18],u[6],p[35])->(x_next[18],y[17]) */
-static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_minmax_closed_loop:(x[18],u[6],p[39])->(x_next[18],y[17]) */
+static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -7575,11 +11994,11 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+20;
+  wr06 = wr05+24;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -7595,7 +12014,7 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[1]=w14;
   res1[2]=(&w15);
   res1[3]=0;
-  if (casadi_f17(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
   w16 = wr05[14];
   w17 = 3.;
   w16 /= w17;
@@ -7604,19 +12023,307 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f31(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s11;
+    case 2: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 121;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 121*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_na_preload_closed_loop:(x[18],u[6],p[39])->(x_next[18],y[17]) */
+static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+115, *w07=w+119, *w08=w+121, *w09=w+127, *w10=w+129, *w11=w+131, *w13=w+133, *w14=w+135, w15, w16;
+  casadi_real w17, *w18=w+149, *w19=w+153;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+24;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
   if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[14];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f32(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s11;
+    case 2: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 163;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 163*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_na_proj_closed_loop:(x[18],u[6],p[39])->(x_next[18],y[17]) */
+static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
+  casadi_real w17, *w18=w+107, *w19=w+111;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+24;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[14];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -7629,7 +12336,7 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f23(arg, res, iw, w, mem);
+  return casadi_f33(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_checkout(void) {
@@ -7674,17 +12381,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_closed_loop_name_out(casadi_int
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s9;
-    case 1: return casadi_s10;
-    case 2: return casadi_s11;
+    case 0: return casadi_s10;
+    case 1: return casadi_s11;
+    case 2: return casadi_s12;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s9;
-    case 1: return casadi_s12;
+    case 0: return casadi_s10;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -7705,11 +12412,11 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_work_bytes(casadi_int *sz_a
   return 0;
 }
 
-/* fivebar_apd_closed_loop:(x[18],u[6],p[25])->(x_next[18],y[17]) */
-static int casadi_f24(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_na_proj_minmax_closed_loop:(x[18],u[6],p[39])->(x_next[18],y[17]) */
+static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
-  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w12=w+91, *w13=w+101, *w14=w+103, w15;
-  casadi_real w16, w17, *w18=w+117;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
+  casadi_real w17, *w18=w+107, *w19=w+111;
   const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
   wr00 = arg[0] ? arg[0] : casadi_zeros;
   wr01 = wr00+0;
@@ -7719,11 +12426,11 @@ static int casadi_f24(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+10;
+  wr06 = wr05+24;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -7739,7 +12446,295 @@ static int casadi_f24(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[1]=w14;
   res1[2]=(&w15);
   res1[3]=0;
-  if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f22(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[14];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f34(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_proj_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s11;
+    case 2: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 121;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 121*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_na_proj_preload_closed_loop:(x[18],u[6],p[39])->(x_next[18],y[17]) */
+static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+116, *w07=w+120, *w08=w+122, *w09=w+128, *w10=w+130, *w11=w+132, *w13=w+134, *w14=w+136, w15, w16;
+  casadi_real w17, *w18=w+150, *w19=w+154;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+24;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f23(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[14];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f35(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_na_proj_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_na_proj_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_na_proj_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s11;
+    case 2: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 164;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 164*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_apd_closed_loop:(x[18],u[6],p[29])->(x_next[18],y[17]) */
+static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
+  casadi_real w17, *w18=w+107, *w19=w+111;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f24(arg1, res1, iw, w, 0)) return 1;
   w16 = wr05[4];
   w17 = 3.;
   w16 /= w17;
@@ -7748,32 +12743,32 @@ static int casadi_f24(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
   if (res[1]) casadi_copy(wr02, 2, res[1]+2);
   if (res[1]) casadi_copy(w13, 2, res[1]+4);
   if (res[1]) res[1][6] = w15;
-  for (rr=w12, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
-  if (res[1]) casadi_copy(w12, 10, res[1]+7);
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f24(arg, res, iw, w, mem);
+  return casadi_f36(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop_checkout(void) {
@@ -7818,17 +12813,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_closed_loop_name_out(casadi_int i) 
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s9;
-    case 1: return casadi_s10;
-    case 2: return casadi_s13;
+    case 0: return casadi_s10;
+    case 1: return casadi_s11;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s9;
-    case 1: return casadi_s12;
+    case 0: return casadi_s10;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -7846,6 +12841,294 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop_work_bytes(casadi_int *sz_arg, 
   if (sz_res) *sz_res = 6*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 121*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_apd_minmax_closed_loop:(x[18],u[6],p[29])->(x_next[18],y[17]) */
+static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
+  casadi_real w17, *w18=w+107, *w19=w+111;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f25(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f37(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_apd_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_apd_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_apd_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_apd_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_apd_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s11;
+    case 2: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 121;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 121*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_apd_preload_closed_loop:(x[18],u[6],p[29])->(x_next[18],y[17]) */
+static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+108, *w07=w+112, *w08=w+114, *w09=w+120, *w10=w+122, *w11=w+124, *w13=w+126, *w14=w+128, w15, w16;
+  casadi_real w17, *w18=w+142, *w19=w+146;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f26(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f38(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_apd_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_apd_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_apd_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_apd_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_apd_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_apd_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s11;
+    case 2: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 156;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 156*sizeof(casadi_real);
   return 0;
 }
 

@@ -20,7 +20,9 @@ from ..core.layout import Layout
 
 __all__ = ["NAController", "APDController", "STATUS_NAMES"]
 
-STATUS_NAMES = {0: "ok", 1: "singular", 2: "saturated", 3: "non_finite"}
+STATUS_NAMES = {0: "ok", 1: "singular", 2: "saturated", 3: "non_finite", 4: "preload_infeasible"}
+#: torque split -> suffix of its generated functions (derive/splits.py)
+SPLITS = {"min_norm": "", "min_max": "_minmax", "preload": "_preload"}
 
 
 def velocity_filter_alpha(sample_period, cutoff_hz):
@@ -30,15 +32,27 @@ def velocity_filter_alpha(sample_period, cutoff_hz):
     return sample_period / (sample_period + 1.0 / (2.0 * math.pi * cutoff_hz))
 
 
+def _vector(name, value, n):
+    v = np.array(value, dtype=float)
+    if v.shape != (n,) or not np.isfinite(v).all():
+        raise ValueError(f"{name} must be {n} finite numbers, got {value!r}")
+    return v
+
+
 class _Controller:
     _law = ""
 
-    def __init__(self, model, gains, theta0, sample_period, velocity_filter_hz, tau_max,
-                 on_singular):
+    def __init__(self, model, base, gains, theta0, sample_period, velocity_filter_hz, tau_max,
+                 on_singular, split, preload, preload_sign):
         if on_singular not in ("raise", "zero"):
             raise ValueError(f"on_singular must be 'raise' or 'zero', got {on_singular!r}")
         self.on_singular = on_singular
         spec = model.spec
+        ctl = spec.control
+        self.split = ctl["split"] if split is None else split
+        if self.split not in SPLITS:
+            raise ValueError(f"split must be one of {list(SPLITS)}, got {split!r}")
+        self.function_name = base + SPLITS[self.split]   # generated <name>_<function_name>_step
         lays = model.manifest["layouts"]
         self.model = model
         self.state_layout = Layout("ctrl_state", lays["ctrl_state"])
@@ -54,14 +68,23 @@ class _Controller:
         if self.theta0.shape != (len(model.param_names),):
             raise ValueError(f"theta0 must have shape ({len(model.param_names)},), "
                              f"got {self.theta0.shape}")
+        n = model.n_legs
+        tau_max = _vector("tau_max", spec.limits["tau_max"] if tau_max is None else tau_max, n)
+        preload = _vector("preload", ctl["preload"] if preload is None else preload, n)
+        preload_sign = _vector("preload_sign", ctl["preload_sign"] if preload_sign is None
+                               else preload_sign, n)
+        if np.any(tau_max <= 0) or np.any(preload < 0) or np.any(preload >= tau_max):
+            raise ValueError(f"need 0 <= preload < tau_max and tau_max > 0, got preload "
+                             f"{preload.tolist()}, tau_max {tau_max.tolist()} N*m")
+        if not np.all(np.isin(preload_sign, (1.0, -1.0))):
+            raise ValueError(f"preload_sign entries must be +1 or -1, got {preload_sign.tolist()}")
         self.params = self.params_layout.pack(
             **gains, T=T, vel_alpha=velocity_filter_alpha(T, fc),
             sing_threshold=model.singularity_threshold,
             parallel_sing_threshold=model.parallel_singularity_threshold,
-            tau_max=spec.limits["tau_max"] if tau_max is None else tau_max)
+            tau_max=tau_max, preload_sign=preload_sign, preload=preload)
         self.params.setflags(write=False)
         self._f = model.function(f"{self.function_name}_step")
-        n = model.n_legs
         self._states = (np.zeros(self.state_layout.size), np.zeros(self.state_layout.size))
         self._n = n
         self._status = array.array("d", [0.0])  # array: reading [0] is ~3x cheaper than numpy
@@ -108,7 +131,9 @@ class _Controller:
 
     @property
     def status(self):
-        """What the last step did: "ok", "singular" (zero torque) or "saturated" (clipped)."""
+        """What the last step did: "ok", "singular" (zero torque), "saturated" (clipped),
+        "non_finite" (zero torque, state kept) or "preload_infeasible" (the preload split could
+        not keep every preload within the limits: the largest worst-case preload instead)."""
         return STATUS_NAMES[int(self._status[0])]
 
     @property
@@ -149,18 +174,28 @@ class NAController(_Controller):
         beta^2 <= alpha gamma, friction >= 0). Off by default, as in the paper.
     on_singular : {"raise", "zero"}
         What ``step`` does at a singular pose: raise SingularityError, or return zeros.
+    split : {"min_norm", "min_max", "preload"}, optional
+        How S^T tau_a = u is shared among the n actuators (default ``[control] split``,
+        "min_norm"): "min_norm" is eq. 21; "min_max" minimises max_i |tau_i| / tau_max,i (delays
+        saturation); "preload" keeps sign preload_sign_i and |tau_i| >= preload_i with the
+        least 2-norm (against backlash), else the largest worst-case preload the limits allow
+        (status "preload_infeasible"). Every split gives the same S^T tau_a to rounding. Each
+        is an exact optimum, generated as its own C step (README, "Torque distribution").
+    preload, preload_sign : array_like (n,), optional
+        The "preload" split's least |tau_i|, N*m, and signs +-1 (default ``[control]``).
     """
     _law = "na"
 
     def __init__(self, model, *, Kd=None, Q=None, Gamma=None, theta0=None, sample_period=None,
-                 velocity_filter_hz=None, tau_max=None, project=False, on_singular="raise"):
+                 velocity_filter_hz=None, tau_max=None, project=False, on_singular="raise",
+                 split=None, preload=None, preload_sign=None):
         self.project = bool(project)
-        self.function_name = "na_proj" if self.project else "na"  # generated <name>_na_proj_step
         g = model.spec.gains["na"]
-        super().__init__(model, {"Kd": g["Kd"] if Kd is None else Kd,
-                                 "Q": g["Q"] if Q is None else Q,
-                                 "Gamma": g["Gamma"] if Gamma is None else Gamma},
-                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular)
+        super().__init__(model, "na_proj" if self.project else "na",
+                         {"Kd": g["Kd"] if Kd is None else Kd, "Q": g["Q"] if Q is None else Q,
+                          "Gamma": g["Gamma"] if Gamma is None else Gamma},
+                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular, split,
+                         preload, preload_sign)
 
     @property
     def theta_hat(self):
@@ -172,14 +207,16 @@ class APDController(_Controller):
     """The augmented PD controller of eq. 40 with the nominal model (Tables 1-2).
 
     Parameters are those of :class:`NAController` with ``Kp`` (N/m), ``Kv`` (N*s/m) in place
-    of the NA gains; ``theta0`` is the fixed model inside the feedforward.
+    of the NA gains; ``theta0`` is the fixed model inside the feedforward; ``split``,
+    ``preload`` and ``preload_sign`` as for NA.
     """
     _law = "apd"
-    function_name = "apd"
 
     def __init__(self, model, *, Kp=None, Kv=None, theta0=None, sample_period=None,
-                 velocity_filter_hz=None, tau_max=None, on_singular="raise"):
+                 velocity_filter_hz=None, tau_max=None, on_singular="raise", split=None,
+                 preload=None, preload_sign=None):
         g = model.spec.gains["apd"]
-        super().__init__(model, {"Kp": g["Kp"] if Kp is None else Kp,
-                                 "Kv": g["Kv"] if Kv is None else Kv},
-                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular)
+        super().__init__(model, "apd", {"Kp": g["Kp"] if Kp is None else Kp,
+                                        "Kv": g["Kv"] if Kv is None else Kv},
+                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular, split,
+                         preload, preload_sign)

@@ -88,7 +88,7 @@ class SimResult:
 
     t (N,) s; xd, xd_dot (N, 2) desired; xe, xed (N, 2) true position m and velocity m/s at
     t_k; tau_a (N, n) N*m applied over [t_k, t_k+T]; status (N,) int (0 ok, 1 singular,
-    2 saturated, 3 non-finite); theta_hat (N, 5n) after the update at t_k. ``n_move`` is the number of
+    2 saturated, 3 non-finite, 4 preload infeasible); theta_hat (N, 5n) after the update at t_k. ``n_move`` is the number of
     samples of the desired trajectory proper (eq. 41's N); later rows are settling.
     """
     controller: str
@@ -124,6 +124,16 @@ class SimResult:
     @property
     def n_non_finite(self):
         return int(np.sum(self.status == 3))
+
+    @property
+    def n_preload_infeasible(self):
+        """Samples where the preload split could not keep every preload within the limits."""
+        return int(np.sum(self.status == 4))
+
+    @property
+    def peak_tau(self):
+        """Largest |tau_a| applied over the rollout, N*m."""
+        return float(np.max(np.abs(self.tau_a)))
 
 
 def pose_measures(model, xd):

@@ -25,12 +25,13 @@ REPO = Path(__file__).resolve().parents[2]
 DEFAULT_MODEL = REPO / "models" / "shang2010.toml"
 GENERATED = REPO / "generated"
 
-_STEPPING = ("na_step", "na_proj_step", "apd_step", "plant_xedd", "plant_step", "measure",
-             "na_closed_loop", "na_proj_closed_loop", "apd_closed_loop")
+# controller steps and closed loops: <law><split>_step, <law><split>_closed_loop
+_SPLIT_SUFFIXES = ("", "_minmax", "_preload")                   # min_norm, min_max, preload
+_LOOPS = tuple(f"{law}{sfx}_{kind}" for law in ("na", "na_proj", "apd")
+               for sfx in _SPLIT_SUFFIXES for kind in ("step", "closed_loop"))
+_STEPPING = ("plant_xedd", "plant_step", "measure") + _LOOPS
 _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "singularity_measures", "W", "S", "Wdot",
-              "M", "C", "Me", "Ce",
-              "StF", "Y", "forward_dynamics", "na_step", "na_proj_step", "apd_step", "plant_xedd",
-              "plant_step", "measure", "na_closed_loop", "na_proj_closed_loop", "apd_closed_loop")
+              "M", "C", "Me", "Ce", "StF", "Y", "torque_splits", "forward_dynamics") + _STEPPING
 
 
 def _freeze(obj):
@@ -322,6 +323,39 @@ class Model:
         Columns follow :attr:`param_names`; friction uses sign(0) = +1.
         """
         return self._eval("Y", (2, len(self.param_names)), out, q, xed, xrd, xrdd)
+
+    def torque_splits(self, q, u, tau_max=None, preload=None, preload_sign=None):
+        """The actuator torques of every split for the task force ``u`` (2,), N, at pose q (2n,).
+
+        All satisfy S^T tau = u (eqs. 10, 21) to rounding; ``tau_max`` (n,) N*m defaults to
+        ``[limits]``, ``preload`` (n,) N*m and ``preload_sign`` (n,) +-1 to ``[control]``. No
+        clipping is applied here (the controller steps clip). Raises SingularityError at a pose
+        too close to a singularity of either kind.
+
+        Returns
+        -------
+        dict
+            ``min_norm`` (n,) eq. 21; ``min_max`` (n,) and ``min_max_ratio`` = max_i |tau_i| /
+            tau_max,i at that optimum (> 1: u is beyond the actuators); ``preload`` (n,) and
+            ``preload_mode`` (0 the preload holds, 1 only the largest worst-case preload margin
+            fits the limits, 2 not even the limits: min-max torques).
+        """
+        n, ctl = self.n_legs, self.spec.control
+        w = self.spec.limits["tau_max"] if tau_max is None else tau_max
+        pre = ctl["preload"] if preload is None else preload
+        sgn = ctl["preload_sign"] if preload_sign is None else preload_sign
+        args = [np.ascontiguousarray(a, dtype=float) for a in (q, u, w, sgn, pre)]
+        f = self._f["torque_splits"]
+        outs = (np.empty(n), np.empty(n), np.empty(1), np.empty(n), np.empty(1), np.empty(2))
+        try:
+            f(*args, *outs)
+        except (TypeError, ValueError):
+            f(*self._coerce(f, args), *outs)
+        sing = outs[5]
+        if not (sing[0] >= self._sing_thr[0] and sing[1] >= self._sing_thr[1]):
+            raise SingularityError(f"torque_splits: {self.singularity_message(sing)}")
+        return {"min_norm": outs[0], "min_max": outs[1], "min_max_ratio": float(outs[2][0]),
+                "preload": outs[3], "preload_mode": int(outs[4][0])}
 
     def forward_dynamics(self, xe, xed, tau_a, theta, out=None):
         """Task-space acceleration xedd (2,), m/s^2, from eq. 12 with eq. 2 friction.

@@ -41,7 +41,10 @@ FK_BRANCHES = {"left": 1, "right": -1}
 _MODEL_KEYS = {"name", "description", "friction", "fk_branch", "stribeck_velocity",
                "sign_smoothing_velocity", "rk4_substeps"}
 _LEG_KEYS = {"base", "la", "lb", "elbow"}
-_TOP_KEYS = {"model", "legs", "nominal", "limits", "sensing", "gains", "plant", "trajectories"}
+_TOP_KEYS = {"model", "legs", "nominal", "limits", "sensing", "gains", "plant", "trajectories",
+             "control"}
+#: torque distributions among the actuators (S^T tau_a = u; derive/splits.py)
+SPLITS = ("min_norm", "min_max", "preload")
 
 
 @dataclass(frozen=True)
@@ -71,6 +74,7 @@ class ModelSpec:
     gains: dict = field(repr=False)         # {"na": {...}, "apd": {...}}
     plant: dict = field(repr=False)
     trajectories: dict = field(repr=False)  # {"low": {...}, "high": {...}}
+    control: dict = field(repr=False, default_factory=dict)  # split, preload, preload_sign
     file_sha256: str = ""
     formulation_sha256: str = ""
 
@@ -251,6 +255,31 @@ def _read_runtime(path, doc, n, p, legs):
     return sensing, gains, plant, trajs
 
 
+def _read_control(path, doc, n, tau_max):
+    """[control] (optional): the torque split and the preload split's signs and levels."""
+    raw = doc.get("control", {})
+    if not isinstance(raw, dict):
+        _fail(path, "control", f"must be a table, got {type(raw).__name__}")
+    _check_keys(path, "control", raw, {"split", "preload", "preload_sign"}, set())
+    split = raw.get("split", "min_norm")
+    _choice(path, "control.split", split, {k: k for k in SPLITS})
+    out = {"split": split}
+    for key, default in (("preload", [0.0] * n), ("preload_sign", [1] * n)):
+        value = raw.get(key, default)
+        if not isinstance(value, list) or len(value) != n:
+            _fail(path, f"control.{key}", f"must be a list of {n} numbers, got {value!r}")
+        arr = np.array([_number(path, f"control.{key}[{i}]", v, nonnegative=key == "preload")
+                        for i, v in enumerate(value)])
+        arr.setflags(write=False)
+        out[key] = arr
+    if not np.all(np.isin(out["preload_sign"], (1.0, -1.0))):
+        _fail(path, "control.preload_sign", f"each entry must be +1 or -1, got {raw['preload_sign']}")
+    if np.any(out["preload"] >= tau_max):
+        _fail(path, "control.preload", f"must stay below limits.tau_max {tau_max.tolist()}, got "
+                                       f"{out['preload'].tolist()}")
+    return out
+
+
 def read_model_file(path):
     """Read and validate a model file.
 
@@ -328,11 +357,13 @@ def read_model_file(path):
             _fail(path, f"limits.{key}", f"bounds a measure in [0, 1], must be < 1, got "
                                          f"{limits[key]}")
     sensing, gains, plant, trajs = _read_runtime(path, doc, len(legs), len(param_names), legs)
+    control = _read_control(path, doc, len(legs), limits["tau_max"])
     spec = ModelSpec(
         path=str(path), name=name, description=str(model.get("description", "")),
         friction=friction, friction_constants=constants, fk_branch=FK_BRANCHES[fk_branch], rk4_substeps=substeps,
         legs=legs, param_names=param_names, theta_nominal=theta,
         limits=limits, sensing=sensing, gains=gains, plant=plant, trajectories=trajs,
+        control=control,
         file_sha256=hashlib.sha256(raw).hexdigest())
     formulation = json.dumps(spec.formulation(), sort_keys=True, separators=(",", ":"))
     object.__setattr__(spec, "formulation_sha256", hashlib.sha256(formulation.encode()).hexdigest())

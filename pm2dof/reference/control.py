@@ -50,7 +50,7 @@ __all__ = [
 ]
 
 #: Status codes of a controller step (same as the manifest's ``status_codes``).
-STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3}
+STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3, "preload_infeasible": 4}
 #: alpha, gamma floor of the optional projection of theta_hat, kg*m^2
 PROJECTION_FLOOR = 1e-6
 
@@ -67,15 +67,16 @@ def layouts(n: int) -> dict:
     -------
     dict of str -> pm2dof.core.layout.Layout
         ``ctrl_state`` (xe_prev 2, v 2, theta_hat p); ``na_params`` (Kd 2, Q 2, Gamma p,
-        T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n); ``apd_params``
-        (Kp 2, Kv 2, T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n); ``plant`` (alpha, beta, gamma, fv, fc, fs
+        T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n, preload_sign n,
+        preload n); ``apd_params`` (Kp 2, Kv 2, and the same); the reference steps are the
+        min_norm split (eq. 21; tests/test_splits.py checks the other splits); ``plant`` (alpha, beta, gamma, fv, fc, fs
         each n, stribeck_velocity, coulomb_smoothing_velocity, encoder_step);
         ``cl_state`` (xe 2, xed 2, ctrl_state); ``cl_input`` (xd 2, xd_dot 2,
         xd_ddot 2); ``cl_output`` (xe 2, xed 2, tau_a n, status 1, theta_hat p).
     """
     p = 5 * n
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
-              ("tau_max", n)]
+              ("tau_max", n), ("preload_sign", n), ("preload", n)]
     state = [("xe_prev", 2), ("v", 2), ("theta_hat", p)]
     fields = {
         "ctrl_state": state,

@@ -1,0 +1,191 @@
+# Torque distribution among n redundant actuators: S^T tau = u, exact optima by finite enumeration.
+"""Exact redundancy resolutions of S^T tau_a = u (eqs. 10, 21) as straight-line CasADi code.
+
+Every option returns a tau with S^T tau = u (to rounding): the task-space behaviour is the
+minimum-norm split's. The optima are exact because each problem is a linear (LP) or convex
+quadratic (QP) programme whose optimum lies at one of finitely many "vertices", each fixed by
+a choice of active constraints and one 2x2 linear solve; all are enumerated and the feasible
+one with the best objective is kept (the first in enumeration order among equals).
+
+* ``min_norm``  eq. 21: tau = S (S^T S)^-1 u.
+* ``min_max``   the LP min t s.t. S^T tau = u, |tau_i| <= t w_i (w = tau_max). A vertex of
+  {(tau, t)} has n - 1 active bounds |tau_i| = t w_i: all indices but one (r) sit at
+  tau_i = sigma_i t w_i, and (t, tau_r) solves a 2x2 system. n 2^(n-2) candidates (the sign
+  flip (sigma, t) -> (-sigma, -t) halves them).
+* ``preload``   the QP min |tau|^2 s.t. S^T tau = u, p_i <= sigma_i tau_i <= w_i (each
+  actuator keeps the sign sigma_i with at least the preload p_i). At the optimum some bounds
+  are active (tau_A fixed) and the free torques are the minimum-norm solution of the rest:
+  tau_F = S_F (S_F^T S_F)^-1 (u - S_A^T tau_A); all active sets of size <= n - 2 are
+  enumerated. If no torque within the limits keeps the preload, the fallback is the LP
+  max m s.t. S^T tau = u, sigma_i tau_i - p_i >= m, |tau_i| <= w_i: the largest worst-case
+  preload margin the limits allow (vertices: one index free with the others at a margin or a
+  limit, or one index at both a margin and a limit and two free). If even the limits cannot
+  be met, the min-max torques are used (and clipped: status "saturated").
+
+Candidate feasibility allows a violation of 1e-10 w_i (rounding at degenerate vertices).
+"""
+import itertools
+
+import casadi as ca
+
+from .factored import solve2
+
+__all__ = ["SPLITS", "min_norm", "min_max", "preload", "preload_function"]
+
+#: split name -> suffix of the generated function names (<law><suffix>_step)
+SPLITS = {"min_norm": "", "min_max": "_minmax", "preload": "_preload"}
+_TOL = 1e-10  # relative to w_i: admitted bound violation of a candidate (rounding only)
+
+
+def _solve2(a, b, rhs):
+    """(x, y) with x a + y b = rhs (2-vectors), by Cramer's rule, and det."""
+    det = a[0] * b[1] - a[1] * b[0]
+    return (rhs[0] * b[1] - rhs[1] * b[0]) / det, (a[0] * rhs[1] - a[1] * rhs[0]) / det, det
+
+
+def _best(cands, n):
+    """The valid candidate with the smallest score (the first of equals): (tau, score, found)."""
+    tau, score, found = ca.DM.zeros(n), ca.SX(ca.inf), ca.SX(0)
+    for valid, sc, t in cands:
+        take = ca.logic_and(valid, sc < score)   # NaN scores are never taken
+        tau = ca.if_else(take, t, tau)
+        score = ca.if_else(take, sc, score)
+        found = ca.logic_or(found, valid)
+    return tau, score, found
+
+
+def min_norm(S, u):
+    """tau = S (S^T S)^-1 u, the minimum-norm actuator torques (eq. 21), 2x2 in closed form."""
+    return S @ solve2(S.T @ S, u)
+
+
+def min_max(S, u, w):
+    """The exact min over S^T tau = u of max_i |tau_i| / w_i. Returns (tau, t*)."""
+    n = S.shape[0]
+    if n == 2:  # no redundancy: the torques are unique
+        tau = min_norm(S, u)
+        return tau, ca.mmax(ca.fabs(tau) / w)
+    s = [S[i, :].T for i in range(n)]
+    cands = []
+    for r in range(n):
+        rest = [i for i in range(n) if i != r]
+        for tail in itertools.product((1, -1), repeat=n - 2):
+            sigma = dict(zip(rest, (1,) + tail))      # sigma of the first fixed at +1
+            a = sum(sigma[i] * w[i] * s[i] for i in rest)
+            t, tr, det = _solve2(a, s[r], u)
+            # tau_i = sigma_i w_i t; with t < 0 it is the vertex of signs -sigma at ratio |t|
+            tau = ca.vertcat(*[tr if i == r else sigma[i] * w[i] * t for i in range(n)])
+            t = ca.fabs(t)
+            valid = ca.logic_and(det != 0, ca.fabs(tr) <= t * w[r] * (1 + _TOL) + _TOL * w[r])
+            cands.append((valid, t, tau))
+    tau, t, found = _best(cands, n)
+    tau0 = min_norm(S, u)  # never used on a regular pose (some vertex is always optimal)
+    return ca.if_else(found, tau, tau0), ca.if_else(found, t, ca.mmax(ca.fabs(tau0) / w))
+
+
+def _within(tau, lo, hi, w):
+    """lo_i <= tau_i <= hi_i for all i, with the rounding allowance."""
+    ok = ca.SX(1)
+    for i in range(tau.shape[0]):
+        ok = ca.logic_and(ok, ca.logic_and(tau[i] >= lo[i] - _TOL * w[i],
+                                           tau[i] <= hi[i] + _TOL * w[i]))
+    return ok
+
+
+def _min_norm_on(S, u, fixed):
+    """Minimum-norm tau with tau_i = value for (i, value) in ``fixed`` and S^T tau = u."""
+    n = S.shape[0]
+    free = [i for i in range(n) if i not in fixed]
+    rhs = u - sum((S[i, :].T * v for i, v in fixed.items()), ca.DM.zeros(2))
+    SF = ca.vertcat(*[S[i, :] for i in free])
+    G = SF.T @ SF
+    det = G[0, 0] * G[1, 1] - G[0, 1] * G[1, 0]
+    tF = SF @ solve2(G, rhs)
+    out = [None] * n
+    for k, i in enumerate(free):
+        out[i] = tF[k]
+    for i, v in fixed.items():
+        out[i] = v
+    return ca.vertcat(*out), det
+
+
+def _max_margin(S, u, w, sigma, p):
+    """The LP max m s.t. S^T tau = u, sigma_i tau_i - p_i >= m, |tau_i| <= w_i: (tau, m, found)."""
+    n = S.shape[0]
+    s = [S[i, :].T for i in range(n)]
+    cands = []
+
+    def add(tau, m, det):
+        margins = ca.vertcat(*[sigma[i] * tau[i] - p[i] for i in range(n)])
+        valid = ca.logic_and(det != 0, _within(tau, -w, w, w))
+        valid = ca.logic_and(valid, ca.mmin(margins) >= m - _TOL * ca.mmax(w))
+        cands.append((valid, -m, tau))
+
+    states = ("margin", "upper", "lower")
+    for f in range(n):                       # one index free, the others at a margin or a limit
+        rest = [i for i in range(n) if i != f]
+        for combo in itertools.product(states, repeat=n - 1):
+            st = dict(zip(rest, combo))
+            M = [i for i in rest if st[i] == "margin"]
+            fixed = {i: (w[i] if st[i] == "upper" else -w[i]) for i in rest if st[i] != "margin"}
+            rhs = u - sum((s[i] * v for i, v in fixed.items()), ca.DM.zeros(2)) \
+                - sum((s[i] * sigma[i] * p[i] for i in M), ca.DM.zeros(2))
+            a = sum((s[i] * sigma[i] for i in M), ca.DM.zeros(2))  # tau_i = sigma_i (p_i + m)
+            m, tf, det = _solve2(a, s[f], rhs)
+            tau = ca.vertcat(*[tf if i == f else fixed[i] if i in fixed
+                               else sigma[i] * (p[i] + m) for i in range(n)])
+            add(tau, m, det)
+    for j in range(n):                       # index j at a margin and a limit: m is fixed
+        for lim in (1, -1):
+            m = sigma[j] * lim * w[j] - p[j]
+            rest = [i for i in range(n) if i != j]
+            for free in itertools.combinations(rest, 2):
+                others = [i for i in rest if i not in free]
+                for combo in itertools.product(states, repeat=len(others)):
+                    fixed = {j: lim * w[j]}
+                    for i, state in zip(others, combo):
+                        fixed[i] = {"upper": w[i], "lower": -w[i],
+                                    "margin": sigma[i] * (p[i] + m)}[state]
+                    rhs = u - sum((s[i] * v for i, v in fixed.items()), ca.DM.zeros(2))
+                    x, y, det = _solve2(s[free[0]], s[free[1]], rhs)
+                    tau = ca.vertcat(*[x if i == free[0] else y if i == free[1] else fixed[i]
+                                       for i in range(n)])
+                    add(tau, m, det)
+    tau, neg_m, found = _best(cands, n)
+    return tau, -neg_m, found
+
+
+def preload(S, u, w, sigma, p):
+    """Least-norm tau with S^T tau = u and p_i <= sigma_i tau_i <= w_i (sigma_i = +-1, p_i >= 0).
+
+    Returns (tau, mode): mode 0 the preload holds, 1 the preload cannot be kept within the
+    limits (the max-margin torques), 2 not even the limits can be met (min-max torques).
+    """
+    n = S.shape[0]
+    lo = ca.vertcat(*[ca.if_else(sigma[i] > 0, p[i], -w[i]) for i in range(n)])
+    hi = ca.vertcat(*[ca.if_else(sigma[i] > 0, w[i], -p[i]) for i in range(n)])
+    cands = []
+    for k in range(0, n - 1):                # active sets of size k <= n - 2
+        for act in itertools.combinations(range(n), k):
+            for sides in itertools.product(("lo", "hi"), repeat=k):
+                fixed = {i: (lo[i] if side == "lo" else hi[i]) for i, side in zip(act, sides)}
+                tau, det = _min_norm_on(S, u, fixed)
+                valid = ca.logic_and(det != 0, _within(tau, lo, hi, w))
+                cands.append((valid, ca.sumsqr(tau), tau))
+    tau_q, _, held = _best(cands, n)
+    tau_m, _, limited = _max_margin(S, u, w, sigma, p)
+    tau_x, _ = min_max(S, u, w)
+    tau = ca.if_else(held, tau_q, ca.if_else(limited, tau_m, tau_x))
+    mode = ca.if_else(held, 0, ca.if_else(limited, 1, 2))
+    return tau, mode
+
+
+def preload_function(n, prefix):
+    """``preload`` as one CasADi Function (S (n, 2), u, w, sigma, p) -> (tau, mode), for call
+    nodes that are never inlined: its enumeration (up to a few hundred candidates for four legs)
+    then appears once in the generated C, shared by every step that uses it."""
+    S, u = ca.SX.sym("S", n, 2), ca.SX.sym("u", 2)
+    w, sigma, p = ca.SX.sym("tau_max", n), ca.SX.sym("preload_sign", n), ca.SX.sym("preload", n)
+    tau, mode = preload(S, u, w, sigma, p)
+    return ca.Function(f"{prefix}_split_preload", [S, u, w, sigma, p], [tau, mode],
+                       ["S", "u", "tau_max", "preload_sign", "preload"], ["tau_a", "mode"])
