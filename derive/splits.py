@@ -60,27 +60,38 @@ def min_norm(S, u):
 
 
 def min_max(S, u, w):
-    """The exact min over S^T tau = u of max_i |tau_i| / w_i. Returns (tau, t*)."""
+    """The exact min over S^T tau = u of max_i |tau_i| / w_i. Returns (tau, t*).
+
+    Each candidate vertex is kept as numerators over its 2x2 determinant and candidates are
+    compared by cross-multiplying, so the only division is the winner's (divisions dominate
+    the cost of this enumeration). No valid candidate -- only possible at a degenerate,
+    singular S -- gives NaN, which the step's finiteness check turns into zero torque.
+    """
     n = S.shape[0]
     if n == 2:  # no redundancy: the torques are unique
         tau = min_norm(S, u)
         return tau, ca.mmax(ca.fabs(tau) / w)
     s = [S[i, :].T for i in range(n)]
-    cands = []
+    best_num, best_n, best_d = ca.DM.nan(n), ca.SX(1), ca.SX(0)   # t_best = best_n / best_d
+    best_det = ca.SX(float("nan"))
     for r in range(n):
         rest = [i for i in range(n) if i != r]
         for tail in itertools.product((1, -1), repeat=n - 2):
             sigma = dict(zip(rest, (1,) + tail))      # sigma of the first fixed at +1
             a = sum(sigma[i] * w[i] * s[i] for i in rest)
-            t, tr, det = _solve2(a, s[r], u)
+            det = a[0] * s[r][1] - a[1] * s[r][0]      # (t, tau_r) = (nt, nr) / det
+            nt = u[0] * s[r][1] - u[1] * s[r][0]
+            nr = a[0] * u[1] - a[1] * u[0]
             # tau_i = sigma_i w_i t; with t < 0 it is the vertex of signs -sigma at ratio |t|
-            tau = ca.vertcat(*[tr if i == r else sigma[i] * w[i] * t for i in range(n)])
-            t = ca.fabs(t)
-            valid = ca.logic_and(det != 0, ca.fabs(tr) <= t * w[r] * (1 + _TOL) + _TOL * w[r])
-            cands.append((valid, t, tau))
-    tau, t, found = _best(cands, n)
-    tau0 = min_norm(S, u)  # never used on a regular pose (some vertex is always optimal)
-    return ca.if_else(found, tau, tau0), ca.if_else(found, t, ca.mmax(ca.fabs(tau0) / w))
+            num = ca.vertcat(*[nr if i == r else sigma[i] * w[i] * nt for i in range(n)])
+            ant, ad = ca.fabs(nt), ca.fabs(det)
+            valid = ca.logic_and(ad > 0, ca.fabs(nr) <= ant * w[r] * (1 + _TOL) + _TOL * w[r] * ad)
+            take = ca.logic_and(valid, ant * best_d < best_n * ad)   # |t| < t_best, first of equals
+            best_num = ca.if_else(take, num, best_num)
+            best_det = ca.if_else(take, det, best_det)
+            best_n = ca.if_else(take, ant, best_n)
+            best_d = ca.if_else(take, ad, best_d)
+    return best_num / best_det, best_n / best_d
 
 
 def _within(tau, lo, hi, w):

@@ -87,9 +87,9 @@ static const double MOVE_V = 0.5, MOVE_A = 10.0, MOVE_J = 400.0; /* m/s, m/s^2, 
 /* Layout sizes (manifest.json "layouts") */
 enum {
     STATE_SIZE = 2 + 2 + N_THETA,              /* ctrl_state: xe_prev, v, theta_hat */
-    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 4 + N_LEGS, /* Kd, Q, Gamma, T, vel_alpha,
+    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 4 + 3 * N_LEGS, /* Kd, Q, Gamma, T, vel_alpha,
                                                       sing_threshold, parallel_sing_threshold,
-                                                      tau_max */
+                                                      tau_max, preload_sign, preload */
     DIAG_SIZE = 10,                            /* diag: xe, v, e, edot, sing (type I, II) */
     PLANT_SIZE = 6 * N_LEGS + 3                /* alpha beta gamma fv fc fs, vs, eps, step */
 };
@@ -367,6 +367,8 @@ int main(int argc, char **argv)
     *pp++ = SING_THRESHOLD;
     *pp++ = PARALLEL_SING_THRESHOLD;
     for (int i = 0; i < N_LEGS; i++) *pp++ = TAU_MAX[i];
+    for (int i = 0; i < N_LEGS; i++) *pp++ = 1.0;   /* preload_sign: unused by the min_norm step */
+    for (int i = 0; i < N_LEGS; i++) *pp++ = 0.0;   /* preload, N m: likewise */
 
     /* --- plant truth: plant layout, payload booked into leg PAYLOAD_LEG --------------- */
     double plant[PLANT_SIZE];

@@ -43,6 +43,8 @@ def format_bench(results):
 
     row("NA step, C loop (time_calls)", "na_step_c_ns", "ns")
     row("APD step, C loop (time_calls)", "apd_step_c_ns", "ns")
+    for split in ("min_norm", "min_max", "preload"):
+        row(f"NA step, {split} split, C loop (interleaved)", f"na_{split}_step_c_ns", "ns")
     row("NA step, bare _cbind call from Python", "na_step_binding_us", "us")
     row("NA step, NAController.step(out=buf)", "na_step_python_us", "us")
     row("NA step, NAController.step (allocating)", "na_step_python_alloc_us", "us")
@@ -62,6 +64,8 @@ def format_bench(results):
     lines.append("")
     lines.append("ratios and agreement")
     for label, key, unit in (
+            ("NA step: min_max / min_norm split", "na_min_max_over_min_norm", "x"),
+            ("NA step: preload / min_norm split", "na_preload_over_min_norm", "x"),
             ("C step vs NumPy reference", "speedup_c_vs_numpy", "x"),
             ("C step vs SymPy lambdify", "speedup_c_vs_lambdify", "x"),
             ("NAController.step vs casadi.Function", "speedup_binding_vs_casadi_function", "x"),

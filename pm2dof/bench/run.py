@@ -39,7 +39,11 @@ TARGETS = (
     ("speedup_binding_vs_casadi_function", ">=", 50.0, "x",
      "NAController.step vs casadi.Function call"),
     ("agreement_c_vs_numpy", "<=", 1e-10, "rel", "C step vs NumPy reference (max rel. diff.)"),
+    ("na_min_max_over_min_norm", "<=", 1.3, "x", "NA step, min_max split / min_norm split"),
 )
+#: torque splits timed side by side (README, "Torque distribution"); preload level, N*m
+BENCH_SPLITS = ("min_norm", "min_max", "preload")
+BENCH_PRELOAD = 1.0
 
 
 def run_bench(model=None, quick=False, progress=None):
@@ -120,6 +124,24 @@ def run_bench(model=None, quick=False, progress=None):
         f.time_calls(max(1, c_inner // 10), 1, *op, ctrl.params, *outs)  # warm up
         st = stats(f.time_calls(c_inner, repeats, *op, ctrl.params, *outs))
         res[f"{law}_step_c_ns"], res[f"{law}_step_c_ns_min"] = st["median"], st["min"]
+
+    # --- C loop: the NA step of each torque split, batches interleaved -------------------
+    say(f"C loop: NA step per torque split {BENCH_SPLITS}, interleaved batches")
+    ctrls = {s: NAController(model, split=s, preload=np.full(n, BENCH_PRELOAD))
+             for s in BENCH_SPLITS}
+    per = {s: [] for s in BENCH_SPLITS}
+    for _ in range(repeats):
+        for s, c in ctrls.items():
+            f = model.function(f"{c.function_name}_step")
+            outs = (np.empty(n), np.empty(len(op[0])), np.empty(1), np.empty(f.sizes_out[3]))
+            per[s] += f.time_calls(c_inner, 1, *op, c.params, *outs)
+    for s, times in per.items():
+        st = stats(times)
+        res[f"na_{s}_step_c_ns"], res[f"na_{s}_step_c_ns_min"] = st["median"], st["min"]
+    ratios = [a / b for a, b in zip(per["min_max"], per["min_norm"])]  # paired, same round
+    res["na_min_max_over_min_norm"] = stats(ratios)["median"]
+    res["na_preload_over_min_norm"] = stats([a / b for a, b in
+                                             zip(per["preload"], per["min_norm"])])["median"]
 
     # --- Python: NAController.step, with and without out=, and the bare binding ------
     say("Python: NAController.step (out= and allocating), bare binding call")
