@@ -42,6 +42,9 @@ _LAZY = {
     "identifiability": "pm2dof.analysis.identify",
     "model_report": "pm2dof.analysis.report",
     "run_bench": "pm2dof.bench",
+    "split_comparison": "pm2dof.analysis.splits",
+    "workspace_maps": "pm2dof.analysis.maps",
+    "capability": "pm2dof.analysis.maps",
 }
 
 __all__ = [

@@ -7,6 +7,9 @@ Typical use:
   pm2dof figures --out DIR    error, torque, theta_hat and repeated-run figures (PNG)
   pm2dof report               what the compiled model says (Me, cond(S^T S), rank of Y)
   pm2dof identify [--report]  identifiable parameters; least-squares estimate of theta
+  pm2dof splits [--tau-max X] torque splits (min-norm, min-max, preload) in closed loop
+  pm2dof maps --out DIR       singularities, conditioning, force/acceleration capability maps
+  pm2dof animate --out F.gif  the move as an animation: legs to scale, error magnified
   pm2dof bench [--json]       controller step time: C, Python binding, CasADi, NumPy, SymPy
   pm2dof derive MODEL.toml    re-derive a model file into generated/<name>/ and compile it
 
@@ -67,6 +70,51 @@ def cmd_identify(args):
     from .analysis.identify import run_identify
     run_identify(_model(args), report_only=args.report, duration=args.duration, save=args.save,
                  seed=args.seed_na, progress=_progress)
+    return 0
+
+
+def cmd_splits(args):
+    from .analysis.splits import run_splits
+    run_splits(_model(args), args.tau_max, args.preload, args.preload_sign, as_json=args.json,
+               progress=None if args.json else _progress)
+    if args.out:
+        from .figures.splits import splits_figure
+        path, _ = splits_figure(_model(args), args.out, preload=args.preload,
+                                preload_sign=args.preload_sign, progress=_progress)
+        print(f"wrote {path}", file=sys.stderr if args.json else sys.stdout)
+    return 0
+
+
+def _per_actuator(values, n, flag):
+    if len(values) not in (1, n):
+        raise ValueError(f"{flag}: give one value or {n} (one per actuator), got {len(values)}")
+    if not all(v > 0 for v in values):
+        raise ValueError(f"{flag}: every value must be > 0, got {values}")
+    return [values[0]] * n if len(values) == 1 else list(values)
+
+
+def cmd_maps(args):
+    from .analysis.results import dumps
+    from .figures.maps import maps_figures
+    m = _model(args)
+    tau_max = None if args.tau_max is None else _per_actuator(args.tau_max, m.n_legs, "--tau-max")
+    summary, paths = maps_figures(m, args.out, args.resolution, tau_max=tau_max,
+                                  progress=_progress)
+    if args.json:
+        print(dumps(summary))
+    else:
+        from .analysis.maps import format_maps_summary
+        print(format_maps_summary(summary))
+    for p in paths:
+        print(f"wrote {p}", file=sys.stderr if args.json else sys.stdout)
+    return 0
+
+
+def cmd_animate(args):
+    from .figures.animate import animate_move
+    path, r = animate_move(_model(args), args.out, args.move, args.controller, args.split,
+                           args.magnify, args.fps, args.every, progress=_progress)
+    print(f"wrote {path} ({r.controller}, RMSE {r.rmse:.4g} m, {r.n_saturated} saturated samples)")
     return 0
 
 
@@ -132,6 +180,64 @@ def build_parser():
     p.add_argument("--seed-na", action="store_true",
                    help="rerun the moves with NA seeded by the identified theta")
     p.set_defaults(func=cmd_identify)
+    p = sub.add_parser("splits", parents=[common], help="torque splits compared in closed loop",
+                       description="Simulate APD and NA with each torque split (min_norm: eq. "
+                       "21; min_max: least max_i |tau_i|/tau_max,i; preload: every actuator "
+                       "keeps its sign and |tau_i| >= preload_i, least 2-norm) on the model's "
+                       "moves, and print RMSE (eq. 41), largest error, saturated samples and "
+                       "peak torque. All splits give the same task force S^T tau; they differ "
+                       "once an actuator reaches its limit, so lower --tau-max to see them "
+                       "differ (the paper's robot: min-norm first clips near 7.4 N m on the "
+                       "high-speed move, min-max near 7.1 N m). With --out, also sweep the limit "
+                       "and plot RMSE and clipped samples against it (splits_high.png).",
+                       epilog="example: pm2dof splits --tau-max 6.0 --preload 1.0 --out out")
+    p.add_argument("--tau-max", type=float, metavar="NM",
+                   help="torque limit of every actuator, N m (default: [limits].tau_max)")
+    p.add_argument("--preload", type=float, metavar="NM",
+                   help="least |tau_i| of the preload split, N m (default: [control].preload)")
+    p.add_argument("--preload-sign", type=float, nargs="+", metavar="S",
+                   help="sign (+1/-1) each actuator keeps under the preload split "
+                   "(default: [control].preload_sign)")
+    p.add_argument("--json", action="store_true", help="print the numbers as JSON")
+    p.add_argument("--out", metavar="DIR", help="also write the sweep figure splits_high.png here")
+    p.set_defaults(func=cmd_splits)
+    p = sub.add_parser("maps", parents=[common], help="capability maps over the workspace (PNG)",
+                       description="Map over the workspace, in the model's assembly mode: the "
+                       "type I and type II singularity measures with their thresholds (and, for "
+                       "two legs, the parallel-singular curve), cond(S^T S), the largest task "
+                       "force available in every direction within tau_max for the min-norm split "
+                       "(eq. 21) and for the min-max split (the circle inside the zonotope "
+                       "{S^T tau : |tau_i| <= tau_max_i}) and their ratio, and the same for "
+                       "acceleration at rest through Me (Tables 1-2). The model's moves are "
+                       "drawn on every map. Writes maps_*.png and maps.json into --out.",
+                       epilog="example: pm2dof maps --model models/fivebar.toml --out out/maps")
+    p.add_argument("--out", required=True, metavar="DIR", help="folder for the PNGs and maps.json")
+    p.add_argument("--resolution", type=int, default=121, metavar="N",
+                   help="grid points per axis (default 121; about 1 s per 10^4 points)")
+    p.add_argument("--tau-max", type=float, nargs="+", metavar="NM",
+                   help="actuator limits, N m: one value for all or one per actuator "
+                   "(default: [limits].tau_max)")
+    p.add_argument("--json", action="store_true", help="print the summary as JSON")
+    p.set_defaults(func=cmd_maps)
+    p = sub.add_parser("animate", parents=[common], help="animated GIF of a closed-loop move",
+                       description="Simulate one move of the model file with one controller and "
+                       "write an animated GIF: the legs and links to scale at the true pose, the "
+                       "desired and actual paths, the same move zoomed with the error magnified "
+                       "(its factor and a 0.1 mm scale bar shown), and |xd - xe| against time. "
+                       "Uses matplotlib's animation with Pillow.",
+                       epilog="example: pm2dof animate --move high --controller apd --out apd.gif")
+    p.add_argument("--move", default="high", help="move of [trajectories] (default high)")
+    p.add_argument("--controller", default="na", choices=["na", "apd"],
+                   help="NA (eqs. 28-29, default) or APD (eq. 40)")
+    p.add_argument("--split", choices=["min_norm", "min_max", "preload"],
+                   help="torque split (default: [control].split)")
+    p.add_argument("--out", default="move.gif", help="GIF to write (default move.gif)")
+    p.add_argument("--magnify", type=float, help="error magnification (default: a power of ten "
+                   "that keeps the error below 0.3 of the move's length)")
+    p.add_argument("--fps", type=int, default=20, help="GIF frames per second (default 20)")
+    p.add_argument("--every", type=int, default=2,
+                   help="2 ms samples per frame (default 2: the GIF is 12.5x slower than life)")
+    p.set_defaults(func=cmd_animate)
     from .bench.run import run_bench
     p = sub.add_parser("bench", parents=[common], help="controller step-time benchmark",
                        description=(run_bench.__doc__ or "").split("\n\n")[0] + " Targets: NA "
@@ -161,7 +267,7 @@ def main(argv=None):
         return 2
     try:
         return args.func(args)
-    except (ModelFileError, StaleGeneratedCodeError) as exc:
+    except (ModelFileError, StaleGeneratedCodeError, ValueError) as exc:  # incl. our typed errors
         print(f"pm2dof: error: {exc}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # output piped into `head` and the like

@@ -3,7 +3,7 @@ import numpy as np
 
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate, theta_truth
-from ..control.trajectory import line
+from ..control.trajectory import TrajectoryError, line
 
 __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3",
            "run_table3", "repeated_runs", "sensitivity", "format_sensitivity"]
@@ -17,7 +17,8 @@ def trajectory(model, speed, period=None):
     """The desired move ``[trajectories.<speed>]`` of the model file, sampled at ``period``."""
     moves = model.spec.trajectories
     if speed not in moves:
-        raise KeyError(f"no trajectory {speed!r} in {model.spec.path}; have {sorted(moves)}")
+        raise TrajectoryError(f"no move {speed!r} in [trajectories] of {model.spec.path}; have "
+                              f"{sorted(moves)}")
     t = moves[speed]
     return line(t["start"], t["end"], t["v_max"], t["a_max"], t["j_max"],
                 period=model.spec.sensing["sample_period"] if period is None else period)

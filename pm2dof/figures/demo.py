@@ -33,6 +33,21 @@ def run_demo(model, out="out", runs=40, echo=print, progress=None):
         data["repeated_runs"] = {"speed": rep["speed"], "rmse": rep["rmse"],
                                  "theta_hat_end": rep["theta_hat_end"][-1],
                                  "theta_truth": rep["theta_truth"], "param_names": m.param_names}
+    # the redundancy (issue 11): capability maps, the torque splits, the move animated
+    from .animate import animate_move
+    from .maps import maps_figures
+    from .splits import splits_figure
+    maps, map_paths = maps_figures(m, Path(out) / "maps", progress=progress)
+    w = maps["over_clear_workspace"]["force_ratio"]
+    echo(f"\nCapability maps (maps/): the min-max split's force in every direction is "
+         f"{w['min']:.3f}-{w['max']:.3f}x (median {w['median']:.3f}x) the minimum-norm split's "
+         f"over the workspace clear of singularities.")
+    paths += map_paths
+    if "high" in m.spec.trajectories:
+        split_path, _ = splits_figure(m, out, "high", progress=progress)
+        gif, _ = animate_move(m, Path(out) / "move_high_na.gif", progress=progress)
+        paths += [split_path, gif]
+    data["maps"] = maps
     json_path = write_json(Path(out) / "results.json", data)
     echo(f"\nfigures: {', '.join(str(p) for p in paths)}\nnumbers: {json_path}")
     return data

@@ -1,0 +1,132 @@
+# The torque splits compared in closed loop: where the redundancy delays saturation (issue 11).
+"""APD and NA with each torque split on the model file's moves, at a chosen torque limit.
+
+With the paper's limits nothing saturates and every split tracks alike (they all give the same
+S^T tau, eq. 10). Lower ``tau_max`` until the minimum-norm split (eq. 21) clips on the
+high-speed move, and the min-max split, which uses the redundancy to keep every actuator below
+its limit for as long as the task force allows, tracks where min-norm cannot. The preload split
+pays for its backlash protection in torque.
+"""
+import numpy as np
+
+from ..control.controllers import SPLITS, APDController, NAController
+from ..control.simulate import simulate
+from .experiment import trajectory
+
+__all__ = ["split_comparison", "format_split_comparison", "tau_max_sweep", "run_splits"]
+
+CONTROLLERS = {"apd": APDController, "na": NAController}
+
+
+def _row(r):
+    e = r.e[:r.n_move]
+    return {"rmse": r.rmse, "max_error": float(np.max(np.hypot(e[:, 0], e[:, 1]))),
+            "n_saturated": r.n_saturated, "n_preload_infeasible": r.n_preload_infeasible,
+            "n_singular": r.n_singular, "peak_tau": r.peak_tau,
+            "rms_tau": float(np.sqrt(np.mean(r.tau_a[:r.n_move] ** 2)))}
+
+
+def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speeds=None,
+                     splits=SPLITS, controllers=("apd", "na"), quantise=True, progress=None):
+    """Simulate every controller x split on each move at the torque limit ``tau_max``.
+
+    Parameters
+    ----------
+    model : Model
+    tau_max : float or array_like (n,), optional
+        Actuator limits, N*m, for the controllers (default ``[limits].tau_max``). A scalar
+        applies to every actuator. The plant applies what the controller commands.
+    preload, preload_sign : array_like (n,), optional
+        The preload split's least |tau_i| (N*m) and signs (default ``[control]``).
+    speeds : list of str, optional
+        Moves of ``[trajectories]`` (default: all).
+
+    Returns
+    -------
+    dict
+        ``{speed: {controller: {split: {rmse (m), max_error (m), n_saturated,
+        n_preload_infeasible, n_singular, peak_tau (N*m), rms_tau (N*m)}}}}``.
+    """
+    n = model.n_legs
+    if tau_max is not None:
+        tau_max = np.broadcast_to(np.asarray(tau_max, dtype=float), (n,)).copy()
+    if preload is not None:
+        preload = np.broadcast_to(np.asarray(preload, dtype=float), (n,)).copy()
+    out = {}
+    for speed in (list(model.spec.trajectories) if speeds is None else speeds):
+        traj = trajectory(model, speed)
+        out[speed] = {}
+        for name in controllers:
+            out[speed][name] = {}
+            for split in splits:
+                if progress:
+                    progress(f"{speed} speed: {name}, split {split}")
+                pre = {"preload": preload, "preload_sign": preload_sign} if split == "preload" \
+                    else {"preload": np.zeros(n)}   # the preload only binds its own split
+                ctrl = CONTROLLERS[name](model, tau_max=tau_max, split=split, **pre)
+                out[speed][name][split] = _row(simulate(model, ctrl, traj, quantise=quantise))
+    return out
+
+
+def tau_max_sweep(model, levels, speed="high", preload=None, preload_sign=None,
+                  controllers=("apd", "na"), splits=SPLITS, progress=None):
+    """RMSE and saturated samples of every controller x split against a uniform limit.
+
+    ``levels`` (k,) N*m. Returns ``{"tau_max": levels, controller: {split: {"rmse": (k,),
+    "n_saturated": (k,), "peak_tau": (k,)}}}``. A split whose preload does not fit under a
+    level (preload >= level) has NaN there.
+    """
+    levels = np.asarray(levels, dtype=float)
+    res = {"tau_max": levels}
+    keys = ("rmse", "n_saturated", "peak_tau")
+    for name in controllers:
+        res[name] = {s: {k: np.full(len(levels), np.nan) for k in keys} for s in splits}
+    pre = model.spec.control["preload"] if preload is None else np.broadcast_to(
+        np.asarray(preload, dtype=float), (model.n_legs,))
+    for i, level in enumerate(levels):
+        if progress:
+            progress(f"tau_max = {level:.3g} N*m ({i + 1}/{len(levels)})")
+        for split in splits:
+            if split == "preload" and np.any(pre >= level):
+                continue
+            r = split_comparison(model, level, preload, preload_sign, [speed], (split,),
+                                 controllers)[speed]
+            for name in controllers:
+                for k in keys:
+                    res[name][split][k][i] = r[name][split][k]
+    return res
+
+
+def format_split_comparison(numbers, tau_max, preload):
+    """A text table of :func:`split_comparison`."""
+    lines = [f"Torque splits in closed loop: tau_max = {np.round(tau_max, 4).tolist()} N*m, "
+             f"preload = {np.round(preload, 4).tolist()} N*m (plant: the model file's truth)",
+             f"{'move':5s} {'ctrl':4s} {'split':9s} {'RMSE, m':>10s} {'max |e|, m':>10s} "
+             f"{'saturated':>9s} {'preload inf.':>12s} {'peak |tau|':>10s} {'rms tau':>8s}"]
+    for speed, by_ctrl in numbers.items():
+        for name, by_split in by_ctrl.items():
+            for split, r in by_split.items():
+                lines.append(f"{speed:5s} {name:4s} {split:9s} {r['rmse']:10.4e} "
+                             f"{r['max_error']:10.4e} {r['n_saturated']:9d} "
+                             f"{r['n_preload_infeasible']:12d} {r['peak_tau']:10.3f} "
+                             f"{r['rms_tau']:8.3f}")
+    lines.append("saturated: samples where some actuator was clipped at tau_max; preload inf.: "
+                 "samples where the preload did not fit within the limits")
+    return "\n".join(lines)
+
+
+def run_splits(model, tau_max=None, preload=None, preload_sign=None, as_json=False,
+               progress=None):
+    """The ``pm2dof splits`` command: the table (or JSON) at one limit. Returns the numbers."""
+    from .results import dumps
+    n = model.n_legs
+    w = model.spec.limits["tau_max"] if tau_max is None else np.broadcast_to(
+        np.asarray(tau_max, dtype=float), (n,))
+    pre = model.spec.control["preload"] if preload is None else np.broadcast_to(
+        np.asarray(preload, dtype=float), (n,))
+    numbers = split_comparison(model, w, pre, preload_sign, progress=progress)
+    if as_json:
+        print(dumps({"tau_max": w, "preload": pre, "results": numbers}))
+    else:
+        print(format_split_comparison(numbers, w, pre))
+    return numbers

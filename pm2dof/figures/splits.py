@@ -1,0 +1,52 @@
+# Figure of the torque splits: tracking and saturation against the actuator limit (issue 11).
+from pathlib import Path
+
+import numpy as np
+
+from ..analysis.results import provenance, save_figure
+from ..analysis.splits import split_comparison, tau_max_sweep
+from .experiment import COLORS, LABELS, _plt
+
+__all__ = ["splits_figure", "sweep_levels"]
+
+SPLIT_STYLE = {"min_norm": "-", "min_max": "--", "preload": ":"}
+
+
+def sweep_levels(model, speed="high", k=41):
+    """Uniform limits (k,) N*m from 0.7x the min-max split's peak |tau| to 1.1x min-norm's,
+    on the move ``speed`` at the model's limits: the range where the splits differ."""
+    r = split_comparison(model, speeds=[speed], splits=("min_norm", "min_max"))[speed]
+    lo = min(r[c]["min_max"]["peak_tau"] for c in r)
+    hi = max(r[c]["min_norm"]["peak_tau"] for c in r)
+    return np.linspace(0.7 * lo, 1.1 * hi, k)
+
+
+def splits_figure(model, out_dir, speed="high", preload=None, preload_sign=None, levels=None,
+                  progress=None):
+    """Write ``splits_<speed>.png``: RMSE (eq. 41) and saturated samples of APD and NA with each
+    split against a uniform torque limit. Returns (path, sweep dict of :func:`tau_max_sweep`)."""
+    plt = _plt()
+    levels = sweep_levels(model, speed) if levels is None else np.asarray(levels, dtype=float)
+    sw = tau_max_sweep(model, levels, speed, preload, preload_sign, progress=progress)
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2), sharex=True)
+    for name in ("apd", "na"):
+        for split, res in sw[name].items():
+            kw = dict(color=COLORS[name], ls=SPLIT_STYLE[split], lw=1.3,
+                      label=f"{LABELS[name]}, {split}")
+            a1.semilogy(levels, res["rmse"], **kw)
+            a2.plot(levels, res["n_saturated"], **kw)
+    a1.set_ylabel("RMSE (m)")
+    a2.set_ylabel("saturated samples")
+    for ax in (a1, a2):
+        ax.set_xlabel("tau_max, every actuator (N m)")
+        ax.grid(alpha=0.3, which="both")
+    pre = model.spec.control["preload"] if preload is None else np.broadcast_to(preload,
+                                                                                 (model.n_legs,))
+    a1.set_title(f"{speed}-speed move: tracking against the torque limit", fontsize=9)
+    a2.set_title(f"clipped samples (preload split: |tau_i| >= {np.round(pre, 3).tolist()} N m)",
+                 fontsize=9)
+    a2.legend(fontsize=7)
+    fig.tight_layout()
+    path = save_figure(fig, Path(out_dir) / f"splits_{speed}.png", provenance(model))
+    plt.close(fig)
+    return path, sw
