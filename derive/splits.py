@@ -8,10 +8,9 @@ a choice of active constraints and one 2x2 linear solve; all are enumerated and 
 one with the best objective is kept (the first in enumeration order among equals).
 
 * ``min_norm``  eq. 21: tau = S (S^T S)^-1 u.
-* ``min_max``   the LP min t s.t. S^T tau = u, |tau_i| <= t w_i (w = tau_max). A vertex of
-  {(tau, t)} has n - 1 active bounds |tau_i| = t w_i: all indices but one (r) sit at
-  tau_i = sigma_i t w_i, and (t, tau_r) solves a 2x2 system. n 2^(n-2) candidates (the sign
-  flip (sigma, t) -> (-sigma, -t) halves them).
+* ``min_max``   the LP min t s.t. S^T tau = u, |tau_i| <= t w_i (w = tau_max), solved through
+  its 2-D dual: the optimum lies on one of the n kink directions perp(w_j s_j), and
+  complementary slackness gives tau (see :func:`min_max`).
 * ``preload``   the QP min |tau|^2 s.t. S^T tau = u, p_i <= sigma_i tau_i <= w_i (each
   actuator keeps the sign sigma_i with at least the preload p_i). At the optimum some bounds
   are active (tau_A fixed) and the free torques are the minimum-norm solution of the rest:
@@ -35,6 +34,7 @@ __all__ = ["SPLITS", "min_norm", "min_max", "preload", "preload_function"]
 #: split name -> suffix of the generated function names (<law><suffix>_step)
 SPLITS = {"min_norm": "", "min_max": "_minmax", "preload": "_preload"}
 _TOL = 1e-10  # relative to w_i: admitted bound violation of a candidate (rounding only)
+_FREE = 1e-12  # |g_i.l| <= _FREE |g_i| |l|: g_i counts as parallel to g_j (min_max)
 
 
 def _solve2(a, b, rhs):
@@ -62,36 +62,43 @@ def min_norm(S, u):
 def min_max(S, u, w):
     """The exact min over S^T tau = u of max_i |tau_i| / w_i. Returns (tau, t*).
 
-    Each candidate vertex is kept as numerators over its 2x2 determinant and candidates are
-    compared by cross-multiplying, so the only division is the winner's (divisions dominate
-    the cost of this enumeration). No valid candidate -- only possible at a degenerate,
-    singular S -- gives NaN, which the step's finiteness check turns into zero torque.
+    With g_i = w_i s_i (s_i row i of S) and tau_i = w_i y_i this is min |y|_inf s.t.
+    sum_i y_i g_i = u, whose LP dual is max u.l s.t. sum_i |g_i.l| <= 1. The dual objective
+    u.l / sum_i |g_i.l| is linear-fractional on each cone between the kinks g_i.l = 0, so its
+    maximum lies on a kink, l = perp(g_j): t* = max_j |u.p_j| / sum_i |g_i.p_j|, n candidates
+    (compared by cross-multiplying: one division). Complementary slackness gives the primal:
+    y_i = t* sign(g_i.l) where g_i.l != 0, and the free y_i (g_i parallel to g_j, j included)
+    share the remaining force along g_j equally in magnitude, which the optimality makes
+    feasible (|y_i| <= t*).
     """
     n = S.shape[0]
     if n == 2:  # no redundancy: the torques are unique
         tau = min_norm(S, u)
         return tau, ca.mmax(ca.fabs(tau) / w)
-    s = [S[i, :].T for i in range(n)]
-    best_num, best_n, best_d = ca.DM.nan(n), ca.SX(1), ca.SX(0)   # t_best = best_n / best_d
-    best_det = ca.SX(float("nan"))
-    for r in range(n):
-        rest = [i for i in range(n) if i != r]
-        for tail in itertools.product((1, -1), repeat=n - 2):
-            sigma = dict(zip(rest, (1,) + tail))      # sigma of the first fixed at +1
-            a = sum(sigma[i] * w[i] * s[i] for i in rest)
-            det = a[0] * s[r][1] - a[1] * s[r][0]      # (t, tau_r) = (nt, nr) / det
-            nt = u[0] * s[r][1] - u[1] * s[r][0]
-            nr = a[0] * u[1] - a[1] * u[0]
-            # tau_i = sigma_i w_i t; with t < 0 it is the vertex of signs -sigma at ratio |t|
-            num = ca.vertcat(*[nr if i == r else sigma[i] * w[i] * nt for i in range(n)])
-            ant, ad = ca.fabs(nt), ca.fabs(det)
-            valid = ca.logic_and(ad > 0, ca.fabs(nr) <= ant * w[r] * (1 + _TOL) + _TOL * w[r] * ad)
-            take = ca.logic_and(valid, ant * best_d < best_n * ad)   # |t| < t_best, first of equals
-            best_num = ca.if_else(take, num, best_num)
-            best_det = ca.if_else(take, det, best_det)
-            best_n = ca.if_else(take, ant, best_n)
-            best_d = ca.if_else(take, ad, best_d)
-    return best_num / best_det, best_n / best_d
+    g = [w[i] * S[i, :].T for i in range(n)]
+    best_num, best_den, best_p = ca.SX(0), ca.SX(1), ca.vertcat(-g[0][1], g[0][0])
+    for j in range(n):
+        p = ca.vertcat(-g[j][1], g[j][0])                    # perp(g_j), length |g_j|
+        num = ca.fabs(u[0] * p[0] + u[1] * p[1])
+        den = sum(ca.fabs(g[i][0] * p[0] + g[i][1] * p[1]) for i in range(n) if i != j)
+        take = num * best_den > best_num * den               # t_j > t_best; first of equals
+        best_num = ca.if_else(take, num, best_num)
+        best_den = ca.if_else(take, den, best_den)
+        best_p = ca.if_else(take, p, best_p)
+    t = best_num / best_den
+    lam = best_p * ca.sign(u[0] * best_p[0] + u[1] * best_p[1])   # the dual direction
+    gp2 = best_p[0] ** 2 + best_p[1] ** 2
+    a = [g[i][0] * lam[0] + g[i][1] * lam[1] for i in range(n)]
+    gg = [g[i][0] ** 2 + g[i][1] ** 2 for i in range(n)]
+    free = [a[i] ** 2 <= _FREE ** 2 * gg[i] * gp2 for i in range(n)]   # g_i parallel to g_j
+    y_act = [ca.if_else(free[i], 0, t * ca.sign(a[i])) for i in range(n)]
+    r = u - sum(y_act[i] * g[i] for i in range(n))             # parallel to g_j (optimality)
+    gj = ca.vertcat(best_p[1], -best_p[0])                     # g_j back from its perp
+    b = [(g[i][0] * gj[0] + g[i][1] * gj[1]) for i in range(n)]
+    share = (r[0] * gj[0] + r[1] * gj[1]) / sum(ca.if_else(free[i], ca.fabs(b[i]), 0)
+                                               for i in range(n))
+    y = [ca.if_else(free[i], ca.sign(b[i]) * share, y_act[i]) for i in range(n)]
+    return ca.vertcat(*[w[i] * y[i] for i in range(n)]), t
 
 
 def _within(tau, lo, hi, w):

@@ -232,3 +232,30 @@ def test_model_file_split_is_the_controllers_default(tmp_path):
     m = pm2dof.core.model.Model(spec)
     assert pm2dof.NAController(m).split == "min_max"
     assert pm2dof.APDController(m, split="min_norm").function_name == "apd"
+
+
+@pytest.mark.parametrize("n", [3, 4])
+def test_min_max_with_parallel_legs_is_exact(n):
+    """Degenerate poses the random cases never hit: two rows of S parallel (same or opposite
+    direction), so two torques are free at the dual optimum. The derivation's min_max, as a
+    CasADi function, against HiGHS; equal S^T tau and max |tau_i|/w_i = t* to rounding."""
+    import casadi as ca
+    from derive.splits import min_max
+    Ssym, usym, wsym = ca.SX.sym("S", n, 2), ca.SX.sym("u", 2), ca.SX.sym("w", n)
+    f = ca.Function("mm", [Ssym, usym, wsym], list(min_max(Ssym, usym, wsym)))
+    rng = np.random.default_rng(7)
+    hits = 0
+    for k in range(200):
+        S = rng.normal(size=(n, 2))
+        S[1] = S[0] * rng.choice([-1.0, 1.0]) * rng.uniform(0.5, 2.0)   # parallel rows 0, 1
+        w = rng.uniform(5.0, 30.0, n)
+        u = S[0] * rng.normal() * 20 + rng.normal(size=2) * rng.choice([0.0, 1.0, 30.0])
+        tau, t = (np.asarray(v, dtype=float).ravel() for v in f(S, u, w))
+        t_lp = _lp_min_max(S, u, w)
+        assert float(t[0]) == pytest.approx(t_lp, rel=1e-9, abs=1e-12), (S, u, w)
+        assert np.abs(S.T @ tau - u).max() <= 1e-12 * (np.abs(S).max() * np.abs(tau).max()
+                                                       + np.abs(u).max())
+        assert np.max(np.abs(tau) / w) <= t_lp * (1 + 1e-9) + 1e-12
+        both_free = abs(tau[0]) < w[0] * t_lp * (1 - 1e-6)
+        hits += bool(both_free)
+    assert hits >= 10, f"the degenerate branch (a free pair) was exercised only {hits} times"

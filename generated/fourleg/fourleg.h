@@ -369,7 +369,7 @@ int fourleg_torque_splits_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, cas
 #define fourleg_torque_splits_SZ_ARG 10
 #define fourleg_torque_splits_SZ_RES 8
 #define fourleg_torque_splits_SZ_IW 0
-#define fourleg_torque_splits_SZ_W 973
+#define fourleg_torque_splits_SZ_W 972
 int fourleg_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_forward_dynamics_checkout(void);
 void fourleg_forward_dynamics_release(int mem);
@@ -441,7 +441,7 @@ int fourleg_na_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, c
 #define fourleg_na_preload_step_SZ_ARG 11
 #define fourleg_na_preload_step_SZ_RES 6
 #define fourleg_na_preload_step_SZ_IW 0
-#define fourleg_na_preload_step_SZ_W 973
+#define fourleg_na_preload_step_SZ_W 972
 int fourleg_na_proj_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_na_proj_step_checkout(void);
 void fourleg_na_proj_step_release(int mem);
@@ -495,7 +495,7 @@ int fourleg_na_proj_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 #define fourleg_na_proj_preload_step_SZ_ARG 11
 #define fourleg_na_proj_preload_step_SZ_RES 6
 #define fourleg_na_proj_preload_step_SZ_IW 0
-#define fourleg_na_proj_preload_step_SZ_W 973
+#define fourleg_na_proj_preload_step_SZ_W 972
 int fourleg_apd_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_apd_step_checkout(void);
 void fourleg_apd_step_release(int mem);
@@ -549,7 +549,7 @@ int fourleg_apd_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, 
 #define fourleg_apd_preload_step_SZ_ARG 11
 #define fourleg_apd_preload_step_SZ_RES 6
 #define fourleg_apd_preload_step_SZ_IW 0
-#define fourleg_apd_preload_step_SZ_W 973
+#define fourleg_apd_preload_step_SZ_W 972
 int fourleg_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_plant_xedd_checkout(void);
 void fourleg_plant_xedd_release(int mem);
@@ -639,7 +639,7 @@ int fourleg_na_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 #define fourleg_na_minmax_closed_loop_SZ_ARG 9
 #define fourleg_na_minmax_closed_loop_SZ_RES 6
 #define fourleg_na_minmax_closed_loop_SZ_IW 0
-#define fourleg_na_minmax_closed_loop_SZ_W 237
+#define fourleg_na_minmax_closed_loop_SZ_W 187
 int fourleg_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_na_preload_closed_loop_checkout(void);
 void fourleg_na_preload_closed_loop_release(int mem);
@@ -657,7 +657,7 @@ int fourleg_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fourleg_na_preload_closed_loop_SZ_ARG 14
 #define fourleg_na_preload_closed_loop_SZ_RES 8
 #define fourleg_na_preload_closed_loop_SZ_IW 0
-#define fourleg_na_preload_closed_loop_SZ_W 1145
+#define fourleg_na_preload_closed_loop_SZ_W 1144
 int fourleg_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_na_proj_closed_loop_checkout(void);
 void fourleg_na_proj_closed_loop_release(int mem);
@@ -693,7 +693,7 @@ int fourleg_na_proj_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int
 #define fourleg_na_proj_minmax_closed_loop_SZ_ARG 9
 #define fourleg_na_proj_minmax_closed_loop_SZ_RES 6
 #define fourleg_na_proj_minmax_closed_loop_SZ_IW 0
-#define fourleg_na_proj_minmax_closed_loop_SZ_W 238
+#define fourleg_na_proj_minmax_closed_loop_SZ_W 187
 int fourleg_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_na_proj_preload_closed_loop_checkout(void);
 void fourleg_na_proj_preload_closed_loop_release(int mem);
@@ -711,7 +711,7 @@ int fourleg_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define fourleg_na_proj_preload_closed_loop_SZ_ARG 14
 #define fourleg_na_proj_preload_closed_loop_SZ_RES 8
 #define fourleg_na_proj_preload_closed_loop_SZ_IW 0
-#define fourleg_na_proj_preload_closed_loop_SZ_W 1146
+#define fourleg_na_proj_preload_closed_loop_SZ_W 1145
 int fourleg_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_apd_closed_loop_checkout(void);
 void fourleg_apd_closed_loop_release(int mem);
@@ -747,7 +747,7 @@ int fourleg_apd_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fourleg_apd_minmax_closed_loop_SZ_ARG 9
 #define fourleg_apd_minmax_closed_loop_SZ_RES 6
 #define fourleg_apd_minmax_closed_loop_SZ_IW 0
-#define fourleg_apd_minmax_closed_loop_SZ_W 194
+#define fourleg_apd_minmax_closed_loop_SZ_W 187
 int fourleg_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_apd_preload_closed_loop_checkout(void);
 void fourleg_apd_preload_closed_loop_release(int mem);
@@ -765,7 +765,7 @@ int fourleg_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* s
 #define fourleg_apd_preload_closed_loop_SZ_ARG 14
 #define fourleg_apd_preload_closed_loop_SZ_RES 8
 #define fourleg_apd_preload_closed_loop_SZ_IW 0
-#define fourleg_apd_preload_closed_loop_SZ_W 1134
+#define fourleg_apd_preload_closed_loop_SZ_W 1133
 void fourleg_casadi_version(int* major, int* minor, int* patch);
 int fourleg_casadi_int_size(void);
 int fourleg_casadi_real_size(void);

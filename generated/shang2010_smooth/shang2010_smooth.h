@@ -369,7 +369,7 @@ int shang2010_smooth_torque_splits_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define shang2010_smooth_torque_splits_SZ_ARG 10
 #define shang2010_smooth_torque_splits_SZ_RES 8
 #define shang2010_smooth_torque_splits_SZ_IW 0
-#define shang2010_smooth_torque_splits_SZ_W 179
+#define shang2010_smooth_torque_splits_SZ_W 171
 int shang2010_smooth_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_forward_dynamics_checkout(void);
 void shang2010_smooth_forward_dynamics_release(int mem);
@@ -441,7 +441,7 @@ int shang2010_smooth_na_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* 
 #define shang2010_smooth_na_preload_step_SZ_ARG 11
 #define shang2010_smooth_na_preload_step_SZ_RES 6
 #define shang2010_smooth_na_preload_step_SZ_IW 0
-#define shang2010_smooth_na_preload_step_SZ_W 179
+#define shang2010_smooth_na_preload_step_SZ_W 171
 int shang2010_smooth_na_proj_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_na_proj_step_checkout(void);
 void shang2010_smooth_na_proj_step_release(int mem);
@@ -495,7 +495,7 @@ int shang2010_smooth_na_proj_preload_step_work_bytes(casadi_int *sz_arg, casadi_
 #define shang2010_smooth_na_proj_preload_step_SZ_ARG 11
 #define shang2010_smooth_na_proj_preload_step_SZ_RES 6
 #define shang2010_smooth_na_proj_preload_step_SZ_IW 0
-#define shang2010_smooth_na_proj_preload_step_SZ_W 179
+#define shang2010_smooth_na_proj_preload_step_SZ_W 171
 int shang2010_smooth_apd_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_apd_step_checkout(void);
 void shang2010_smooth_apd_step_release(int mem);
@@ -549,7 +549,7 @@ int shang2010_smooth_apd_preload_step_work_bytes(casadi_int *sz_arg, casadi_int*
 #define shang2010_smooth_apd_preload_step_SZ_ARG 11
 #define shang2010_smooth_apd_preload_step_SZ_RES 6
 #define shang2010_smooth_apd_preload_step_SZ_IW 0
-#define shang2010_smooth_apd_preload_step_SZ_W 179
+#define shang2010_smooth_apd_preload_step_SZ_W 171
 int shang2010_smooth_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_plant_xedd_checkout(void);
 void shang2010_smooth_plant_xedd_release(int mem);
@@ -639,7 +639,7 @@ int shang2010_smooth_na_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi
 #define shang2010_smooth_na_minmax_closed_loop_SZ_ARG 9
 #define shang2010_smooth_na_minmax_closed_loop_SZ_RES 6
 #define shang2010_smooth_na_minmax_closed_loop_SZ_IW 0
-#define shang2010_smooth_na_minmax_closed_loop_SZ_W 167
+#define shang2010_smooth_na_minmax_closed_loop_SZ_W 156
 int shang2010_smooth_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_na_preload_closed_loop_checkout(void);
 void shang2010_smooth_na_preload_closed_loop_release(int mem);
@@ -657,7 +657,7 @@ int shang2010_smooth_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casad
 #define shang2010_smooth_na_preload_closed_loop_SZ_ARG 14
 #define shang2010_smooth_na_preload_closed_loop_SZ_RES 8
 #define shang2010_smooth_na_preload_closed_loop_SZ_IW 0
-#define shang2010_smooth_na_preload_closed_loop_SZ_W 323
+#define shang2010_smooth_na_preload_closed_loop_SZ_W 315
 int shang2010_smooth_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_na_proj_closed_loop_checkout(void);
 void shang2010_smooth_na_proj_closed_loop_release(int mem);
@@ -693,7 +693,7 @@ int shang2010_smooth_na_proj_minmax_closed_loop_work_bytes(casadi_int *sz_arg, c
 #define shang2010_smooth_na_proj_minmax_closed_loop_SZ_ARG 9
 #define shang2010_smooth_na_proj_minmax_closed_loop_SZ_RES 6
 #define shang2010_smooth_na_proj_minmax_closed_loop_SZ_IW 0
-#define shang2010_smooth_na_proj_minmax_closed_loop_SZ_W 167
+#define shang2010_smooth_na_proj_minmax_closed_loop_SZ_W 156
 int shang2010_smooth_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_na_proj_preload_closed_loop_checkout(void);
 void shang2010_smooth_na_proj_preload_closed_loop_release(int mem);
@@ -711,7 +711,7 @@ int shang2010_smooth_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, 
 #define shang2010_smooth_na_proj_preload_closed_loop_SZ_ARG 14
 #define shang2010_smooth_na_proj_preload_closed_loop_SZ_RES 8
 #define shang2010_smooth_na_proj_preload_closed_loop_SZ_IW 0
-#define shang2010_smooth_na_proj_preload_closed_loop_SZ_W 323
+#define shang2010_smooth_na_proj_preload_closed_loop_SZ_W 315
 int shang2010_smooth_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_apd_closed_loop_checkout(void);
 void shang2010_smooth_apd_closed_loop_release(int mem);
@@ -765,7 +765,7 @@ int shang2010_smooth_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casa
 #define shang2010_smooth_apd_preload_closed_loop_SZ_ARG 14
 #define shang2010_smooth_apd_preload_closed_loop_SZ_RES 8
 #define shang2010_smooth_apd_preload_closed_loop_SZ_IW 0
-#define shang2010_smooth_apd_preload_closed_loop_SZ_W 314
+#define shang2010_smooth_apd_preload_closed_loop_SZ_W 306
 void shang2010_smooth_casadi_version(int* major, int* minor, int* patch);
 int shang2010_smooth_casadi_int_size(void);
 int shang2010_smooth_casadi_real_size(void);

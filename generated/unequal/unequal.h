@@ -369,7 +369,7 @@ int unequal_torque_splits_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, cas
 #define unequal_torque_splits_SZ_ARG 10
 #define unequal_torque_splits_SZ_RES 8
 #define unequal_torque_splits_SZ_IW 0
-#define unequal_torque_splits_SZ_W 179
+#define unequal_torque_splits_SZ_W 171
 int unequal_forward_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int unequal_forward_dynamics_checkout(void);
 void unequal_forward_dynamics_release(int mem);
@@ -441,7 +441,7 @@ int unequal_na_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, c
 #define unequal_na_preload_step_SZ_ARG 11
 #define unequal_na_preload_step_SZ_RES 6
 #define unequal_na_preload_step_SZ_IW 0
-#define unequal_na_preload_step_SZ_W 179
+#define unequal_na_preload_step_SZ_W 171
 int unequal_na_proj_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int unequal_na_proj_step_checkout(void);
 void unequal_na_proj_step_release(int mem);
@@ -495,7 +495,7 @@ int unequal_na_proj_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 #define unequal_na_proj_preload_step_SZ_ARG 11
 #define unequal_na_proj_preload_step_SZ_RES 6
 #define unequal_na_proj_preload_step_SZ_IW 0
-#define unequal_na_proj_preload_step_SZ_W 179
+#define unequal_na_proj_preload_step_SZ_W 171
 int unequal_apd_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int unequal_apd_step_checkout(void);
 void unequal_apd_step_release(int mem);
@@ -549,7 +549,7 @@ int unequal_apd_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, 
 #define unequal_apd_preload_step_SZ_ARG 11
 #define unequal_apd_preload_step_SZ_RES 6
 #define unequal_apd_preload_step_SZ_IW 0
-#define unequal_apd_preload_step_SZ_W 179
+#define unequal_apd_preload_step_SZ_W 171
 int unequal_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int unequal_plant_xedd_checkout(void);
 void unequal_plant_xedd_release(int mem);
@@ -657,7 +657,7 @@ int unequal_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define unequal_na_preload_closed_loop_SZ_ARG 14
 #define unequal_na_preload_closed_loop_SZ_RES 8
 #define unequal_na_preload_closed_loop_SZ_IW 0
-#define unequal_na_preload_closed_loop_SZ_W 323
+#define unequal_na_preload_closed_loop_SZ_W 315
 int unequal_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int unequal_na_proj_closed_loop_checkout(void);
 void unequal_na_proj_closed_loop_release(int mem);
@@ -711,7 +711,7 @@ int unequal_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define unequal_na_proj_preload_closed_loop_SZ_ARG 14
 #define unequal_na_proj_preload_closed_loop_SZ_RES 8
 #define unequal_na_proj_preload_closed_loop_SZ_IW 0
-#define unequal_na_proj_preload_closed_loop_SZ_W 324
+#define unequal_na_proj_preload_closed_loop_SZ_W 316
 int unequal_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int unequal_apd_closed_loop_checkout(void);
 void unequal_apd_closed_loop_release(int mem);
@@ -765,7 +765,7 @@ int unequal_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* s
 #define unequal_apd_preload_closed_loop_SZ_ARG 14
 #define unequal_apd_preload_closed_loop_SZ_RES 8
 #define unequal_apd_preload_closed_loop_SZ_IW 0
-#define unequal_apd_preload_closed_loop_SZ_W 314
+#define unequal_apd_preload_closed_loop_SZ_W 306
 void unequal_casadi_version(int* major, int* minor, int* patch);
 int unequal_casadi_int_size(void);
 int unequal_casadi_real_size(void);
