@@ -835,3 +835,46 @@ def test_accumulate_from_threads_shares_one_function_safely(step):
     expected = np.empty(3)
     step(x0, u_seq[:2], 0.9, expected, None)
     np.testing.assert_array_equal(single, expected)
+
+
+# --------------------------------------------------------------------------------------
+# accumulate_batch: K rollouts of one input sequence in one call
+# --------------------------------------------------------------------------------------
+
+
+def test_accumulate_batch_equals_accumulate_per_row_bit_for_bit(step):
+    rng = np.random.default_rng(11)
+    n, K = 7, 5
+    u_seq = rng.standard_normal((n, 2))
+    X0 = rng.standard_normal((K, 3))
+    P = rng.uniform(0.1, 0.9, (K, 1))
+    X, Y = X0.copy(), np.empty((K, n, 2))
+    assert step.accumulate_batch(X, u_seq, P, Y) is None
+    for r in range(K):
+        x, y = X0[r].copy(), np.empty((n, 2))
+        step.accumulate(x, u_seq, P[r], y)
+        np.testing.assert_array_equal(X[r], x)
+        np.testing.assert_array_equal(Y[r], y)
+    X2 = X0.copy()
+    step.accumulate_batch(X2, u_seq, P, None)          # outputs not computed
+    np.testing.assert_array_equal(X2, X)
+
+
+def test_accumulate_batch_argument_errors(toy, step):
+    u = np.zeros((4, 2))
+    with pytest.raises(TypeError, match=r"toy\.accumulate_batch requires a function"):
+        toy.accumulate_batch(np.zeros(3), u, np.zeros(1), None)
+    with pytest.raises(TypeError, match=r"takes 4 positional arguments"):
+        step.accumulate_batch(np.zeros(3), u, np.zeros(1))
+    with pytest.raises(ValueError, match=r"argument 'P' .*must have K \* 1 float64 elements "
+                       r"with K >= 1, got 0"):
+        step.accumulate_batch(np.zeros(0), u, np.zeros(0), None)
+    with pytest.raises(ValueError, match=r"argument 'X' .*must have 6 float64"):
+        step.accumulate_batch(np.zeros(3), u, np.zeros(2), None)
+    with pytest.raises(ValueError, match=r"argument 'Y_seq' .*must have 16 float64"):
+        step.accumulate_batch(np.zeros(6), u, np.zeros(2), np.zeros(15))
+    with pytest.raises(ValueError, match=r"argument 'P' .*non-finite value at index 1"):
+        step.accumulate_batch(np.zeros(6), u, np.array([0.0, np.nan]), None)
+    buf = np.zeros(16)
+    with pytest.raises(ValueError, match=r"must not share memory"):
+        step.accumulate_batch(buf[:6], u, np.zeros(2), buf)

@@ -16,7 +16,7 @@ from ..core.errors import SingularityError, WorkspaceError
 from ..core.layout import Layout
 
 __all__ = ["simulate", "SimResult", "plant_truth", "plant_vector", "rmse", "theta_truth",
-           "check_trajectory", "pose_measures"]
+           "check_trajectory", "pose_measures", "rollout_inputs"]
 
 
 def plant_truth(model, **overrides):
@@ -211,6 +211,28 @@ def check_trajectory(model, trajectory):
             raise SingularityError(f"{where}: {model.singularity_message(sing)}")
 
 
+def rollout_inputs(model, controller, traj, plant, theta_hat0=None):
+    """What one rollout's C call takes: (closed-loop function, initial state x (nx,), inputs u
+    (N, 6), parameters p (np,), output Layout). The robot starts at rest at traj's first point,
+    the controller's estimate of xe from the first (quantised) measurement, theta_hat(0) =
+    ``theta_hat0`` or the controller's theta0. ``plant`` is a :func:`plant_vector`."""
+    lays = model.manifest["layouts"]
+    f = model.function(f"{controller.function_name}_closed_loop")
+    p = np.concatenate([controller.params, plant])
+    xs = Layout("cl_state", lays["cl_state"])
+    cs = Layout("ctrl_state", lays["ctrl_state"])
+    x = np.zeros(xs.size)
+    X = xs.unpack(x)
+    X["xe"][:] = traj.xd[0]
+    qa0 = np.empty(model.n_legs)
+    model.function("measure")(traj.xd[0], plant, qa0)
+    c0 = cs.unpack(X["ctrl_state"])
+    c0["xe_prev"][:] = model.fk(qa0)
+    c0["theta_hat"][:] = controller.theta0 if theta_hat0 is None else theta_hat0
+    u = np.ascontiguousarray(np.hstack([traj.xd, traj.xd_dot, traj.xd_ddot]))
+    return f, x, u, p, Layout("cl_output", lays["cl_output"])
+
+
 def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_hat0=None,
              settle_time=0.0):
     """Run ``controller`` against the plant's truth along ``trajectory``: one call into C.
@@ -247,26 +269,11 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     check_trajectory(model, trajectory)
     n_move = len(trajectory.t)
     traj = trajectory.extended(settle_time) if settle_time > 0 else trajectory
-    lays = model.manifest["layouts"]
-    law = controller._law
-    f = model.function(f"{controller.function_name}_closed_loop")
-    plant = plant_vector(model, truth, quantise)
-    p = np.concatenate([controller.params, plant])
-    xs = Layout("cl_state", lays["cl_state"])
-    cs = Layout("ctrl_state", lays["ctrl_state"])
-    x = np.zeros(xs.size)
-    X = xs.unpack(x)
-    X["xe"][:] = traj.xd[0]
-    qa0 = np.empty(model.n_legs)
-    model.function("measure")(traj.xd[0], plant, qa0)
-    c0 = cs.unpack(X["ctrl_state"])
-    c0["xe_prev"][:] = model.fk(qa0)
-    c0["theta_hat"][:] = controller.theta0 if theta_hat0 is None else theta_hat0
-    u = np.ascontiguousarray(np.hstack([traj.xd, traj.xd_dot, traj.xd_ddot]))
-    ylay = Layout("cl_output", lays["cl_output"])
+    f, x, u, p, ylay = rollout_inputs(model, controller, traj, plant_vector(model, truth, quantise),
+                                      theta_hat0)
     y = np.empty((len(traj.t), ylay.size))
     f.accumulate(x, u, p, y)
     Y = ylay.unpack(y)
-    return SimResult(controller=law, t=traj.t, xd=traj.xd, xd_dot=traj.xd_dot, xe=Y["xe"],
+    return SimResult(controller=controller._law, t=traj.t, xd=traj.xd, xd_dot=traj.xd_dot, xe=Y["xe"],
                      xed=Y["xed"], tau_a=Y["tau_a"], status=Y["status"][:, 0].astype(int),
                      theta_hat=Y["theta_hat"], n_move=n_move, final_state=x)

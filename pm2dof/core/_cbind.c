@@ -1361,6 +1361,136 @@ PyDoc_STRVAR(time_calls_doc,
 "back-to-back evaluations in a C loop (clock_gettime(CLOCK_MONOTONIC), GIL\n"
 "released). Returns nanoseconds per evaluation for each batch.");
 
+/* accumulate_batch(X, u_seq, P, Y_seq): K rollouts of the same input sequence with their own
+ * initial states (rows of X) and parameters (rows of P), all in one call with the GIL released.
+ * Studies run thousands of rollouts: one Python call per batch, not per rollout. */
+static PyObject *
+Function_accumulate_batch(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
+                          PyObject *kwnames)
+{
+    FunctionObject *f = (FunctionObject *)self;
+    if (!f->acc_ok) {
+        PyErr_Format(PyExc_TypeError,
+                     "%U.accumulate_batch requires a function with 3 inputs (x[nx], u[nu], "
+                     "p[np]) and 2 outputs (x_next[nx], y[ny]) where x_next has as many "
+                     "elements as x; %U does not fit",
+                     f->name, f->signature);
+        return NULL;
+    }
+    if ((kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0) || nargs != 4) {
+        PyErr_Format(PyExc_TypeError,
+                     "%U.accumulate_batch(X, u_seq, P, Y_seq) takes 4 positional arguments",
+                     f->name);
+        return NULL;
+    }
+    const Py_ssize_t nx = f->nnz[0], nu = f->nnz[1], np_ = f->nnz[2], ny = f->nnz[4];
+    if (nu == 0 || np_ == 0) {
+        PyErr_Format(PyExc_ValueError, "%U.accumulate_batch: needs nu > 0 and np > 0", f->name);
+        return NULL;
+    }
+    Work tmp;
+    Work *w = work_acquire(f, &tmp);
+    if (w == NULL)
+        return NULL;
+    Py_ssize_t held = 0, n_x, n_u, n_p, n_y;
+    double *X, *Y;
+    const double *u, *P;
+    ArgCtx cx = {"accumulate_batch", "X", 0, 0}, cu = {"accumulate_batch", "u_seq", 0, 1},
+           cp = {"accumulate_batch", "P", 0, 2}, cy = {"accumulate_batch", "Y_seq", 1, 1};
+    if (bind_input(f, w, args[2], &held, &cp, -1, 0, &P, &n_p) < 0)
+        goto fail;
+    if (n_p == 0 || n_p % np_ != 0) {
+        arg_error(f, PyExc_ValueError, &cp, "must have K * %zd float64 elements with K >= 1, "
+                  "got %zd", np_, n_p);
+        goto fail;
+    }
+    const Py_ssize_t K = n_p / np_;
+    if (bind_output(f, w, args[0], &held, &cx, K * nx, 0, &X, &n_x) < 0)
+        goto fail;
+    if (X == NULL) {
+        arg_error(f, PyExc_TypeError, &cx, "must be a writable float64 buffer, got None");
+        goto fail;
+    }
+    if (bind_input(f, w, args[1], &held, &cu, -1, 0, &u, &n_u) < 0)
+        goto fail;
+    if (n_u == 0 || n_u % nu != 0) {
+        arg_error(f, PyExc_ValueError, &cu,
+                  "must have N * %zd float64 elements with N >= 1, got %zd", nu, n_u);
+        goto fail;
+    }
+    const Py_ssize_t steps = n_u / nu;
+    if (bind_output(f, w, args[3], &held, &cy, K * steps * ny, 0, &Y, &n_y) < 0)
+        goto fail;
+    if (check_finite(f, X, K * nx, &cx) < 0 || check_finite(f, u, n_u, &cu) < 0 ||
+        check_finite(f, P, n_p, &cp) < 0)
+        goto fail;
+    if (overlaps(X, K * nx, u, n_u) || overlaps(X, K * nx, P, n_p) ||
+        (Y && (overlaps(Y, K * steps * ny, X, K * nx) || overlaps(Y, K * steps * ny, u, n_u) ||
+               overlaps(Y, K * steps * ny, P, n_p)))) {
+        PyErr_Format(PyExc_ValueError,
+                     "%U.accumulate_batch: X and Y_seq must not share memory with each other "
+                     "or with u_seq / P", f->name);
+        goto fail;
+    }
+    int rc = 0;
+    Py_ssize_t r = 0, k = 0;
+    {
+        eval_fn eval = f->eval;
+        const casadi_real **arg = w->arg;
+        casadi_real **res = w->res;
+        casadi_int *iw = w->iw;
+        casadi_real *wk = w->w;
+        int mem = w->mem;
+        Py_BEGIN_ALLOW_THREADS
+        for (r = 0; r < K && rc == 0; r++) {
+            double *x = X + r * nx, *cur = x, *nxt = w->xbuf;
+            const double *p = P + r * np_;
+            double *y = Y ? Y + r * steps * ny : NULL;
+            for (k = 0; k < steps; k++) {
+                arg[0] = cur;
+                arg[1] = u + k * nu;
+                arg[2] = p;
+                res[0] = nxt;
+                res[1] = y ? y + k * ny : NULL;
+                rc = eval(arg, res, iw, wk, mem);
+                if (rc != 0)
+                    break;
+                double *t = cur;
+                cur = nxt;
+                nxt = t;
+            }
+            if (cur != x)
+                memcpy(x, cur, (size_t)nx * sizeof(double));
+        }
+        Py_END_ALLOW_THREADS
+    }
+    work_done(f, w, held);
+    if (rc != 0) {
+        PyErr_Format(EvalError,
+                     "%U: CasADi function returned error code %d at step %zd of rollout %zd "
+                     "(row %zd of X holds the state before that step)",
+                     f->name, rc, k, r - 1, r - 1);
+        return NULL;
+    }
+    Py_RETURN_NONE;
+
+fail:
+    work_done(f, w, held);
+    return NULL;
+}
+
+PyDoc_STRVAR(accumulate_batch_doc,
+"accumulate_batch(X, u_seq, P, Y_seq) -> None\n"
+"--\n\n"
+"K rollouts x_{k+1}, y_k = f(x_k, u_k, p_r) of one input sequence, in C (GIL released).\n\n"
+"P: float64 buffer of K*np elements, row r = the parameters of rollout r (K >= 1).\n"
+"X: writable float64 buffer of K*nx: row r = initial state in, final state out.\n"
+"u_seq: float64 buffer of N*nu elements (N >= 1), shared by every rollout.\n"
+"Y_seq: writable float64 buffer of K*N*ny elements (rollout r's rows r*N..r*N+N-1),\n"
+"or None. Each rollout is exactly accumulate() on its row. If the function fails,\n"
+"EvalError names the rollout and the step.");
+
+
 PyDoc_STRVAR(accumulate_doc,
 "accumulate(x, u_seq, p, y_seq) -> None\n"
 "--\n\n"
@@ -1378,6 +1508,8 @@ static PyMethodDef Function_methods[] = {
      METH_FASTCALL | METH_KEYWORDS, time_calls_doc},
     {"accumulate", (PyCFunction)(void (*)(void))Function_accumulate,
      METH_FASTCALL | METH_KEYWORDS, accumulate_doc},
+    {"accumulate_batch", (PyCFunction)(void (*)(void))Function_accumulate_batch,
+     METH_FASTCALL | METH_KEYWORDS, accumulate_batch_doc},
     {NULL, NULL, 0, NULL},
 };
 
