@@ -10,6 +10,8 @@ Typical use:
   pm2dof splits [--tau-max X] torque splits (min-norm, min-max, preload) in closed loop
   pm2dof maps --out DIR       singularities, conditioning, force/acceleration capability maps
   pm2dof animate --out F.gif  the move as an animation: legs to scale, error magnified
+  pm2dof study run S.toml --out DIR   many rollouts on Dask (robustness, gains, adaptation)
+  pm2dof study report DIR     summary tables and figures of a study's results
   pm2dof bench [--json]       controller step time: C, Python binding, CasADi, NumPy, SymPy
   pm2dof derive MODEL.toml    re-derive a model file into generated/<name>/ and compile it
 
@@ -116,6 +118,96 @@ def cmd_animate(args):
                            args.magnify, args.fps, args.every, progress=_progress)
     print(f"wrote {path} ({r.controller}, RMSE {r.rmse:.4g} m, {r.n_saturated} saturated samples)")
     return 0
+
+
+def cmd_study_run(args):
+    from .studies import read_study, run_study
+    study = read_study(args.study, quick=args.quick)
+    try:
+        res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
+                        timeout=args.timeout, progress=not args.no_progress)
+    except KeyboardInterrupt:
+        print(f"\npm2dof: interrupted; the finished chunks are in {args.out}/results. Run the "
+              f"same command again to continue where it stopped.", file=sys.stderr)
+        return 130
+    print(f"{res['rows']} rows in {args.out}/results ({res['skipped']} of {res['chunks']} chunks "
+          f"were already there; {res['seconds']:.1f} s, {res['rollouts_per_s']:,.0f} "
+          f"rollouts/s). Next: pm2dof study report {args.out}")
+    return 0
+
+
+def cmd_study_report(args):
+    from pathlib import Path
+    from .studies.report import run_report
+    s, cols, info = run_report(args.dir, as_json=args.json)
+    if not args.no_figures:
+        from .figures.studies import study_figures
+        for p in study_figures(cols, s, Path(args.dir) / "figures", info.get("provenance", {})):
+            print(f"wrote {p}", file=sys.stderr if args.json else sys.stdout)
+    return 0
+
+
+def cmd_study_bench(args):
+    from .analysis.results import dumps
+    from .studies.bench import format_study_bench, study_bench
+    res = study_bench(quick=args.quick, progress=None if args.json else _progress)
+    print(dumps(res) if args.json else format_study_bench(res))
+    return 0
+
+
+def _study_parser(sub):
+    p = sub.add_parser("study", help="many-rollout studies on Dask (run, report, bench)",
+                       description="Studies run thousands to millions of closed-loop rollouts "
+                       "(controller x move x random plant x repetition) described by a study "
+                       "file (TOML; see studies/*.toml), on Dask: an embedded LocalCluster by "
+                       "default, or an existing cluster with --scheduler. Rows (one per "
+                       "rollout) go to Parquet in DIR/results/.",
+                       formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
+                           "examples:\n"
+                           "  pm2dof study run studies/robustness.toml --quick --out out/rob\n"
+                           "  pm2dof study report out/rob\n"
+                           "  dask scheduler --port 8786 &  dask worker tcp://HOST:8786 &\n"
+                           "  pm2dof study run studies/gains.toml --scheduler tcp://HOST:8786 "
+                           "--out out/gains"))
+    ssub = p.add_subparsers(dest="study_command", metavar="SUBCOMMAND", required=True)
+    r = ssub.add_parser("run", help="run every rollout of a study file",
+                        description="Run every rollout of STUDY into DIR/results/ (Parquet, one "
+                        "row per rollout, written chunk by chunk as they finish). Interrupted? "
+                        "Run the same command again: finished chunks are skipped. A different "
+                        "study on a non-empty DIR is refused. Rows depend only on the study file "
+                        "(seed, draw), not on the workers or the cluster.")
+    r.add_argument("study", help="study file (TOML), e.g. studies/robustness.toml")
+    r.add_argument("--out", required=True, metavar="DIR", help="output folder")
+    r.add_argument("--workers", type=int, metavar="N",
+                   help="worker processes of the embedded cluster (default: one per core)")
+    r.add_argument("--scheduler", metavar="ADDRESS",
+                   help="use an existing Dask cluster, e.g. tcp://10.0.0.5:8786 (its workers need "
+                   "pm2dof installed, with the model file at the same path)")
+    r.add_argument("--quick", action="store_true",
+                   help="the study file's [quick] size: seconds, for a first look and the tests")
+    r.add_argument("--timeout", type=float, default=10.0, metavar="S",
+                   help="seconds to wait for the scheduler and its workers (default 10)")
+    r.add_argument("--no-progress", action="store_true", help="no progress line")
+    r.set_defaults(func=cmd_study_run)
+    r = ssub.add_parser("report", help="summary tables and figures of a study's results",
+                        description="Read DIR/results and print: RMSE (eq. 41) per controller "
+                        "and move; the RPE of every NA variant over APD on the same plants; the "
+                        "best point and flatness of every gain grid; RMSE and theta error "
+                        "against the repetition index. Writes PNG figures into DIR/figures.")
+    r.add_argument("dir", metavar="DIR", help="the --out of `pm2dof study run`")
+    r.add_argument("--json", action="store_true", help="print the summary as JSON")
+    r.add_argument("--no-figures", action="store_true", help="tables only")
+    r.set_defaults(func=cmd_study_report)
+    r = ssub.add_parser("bench", help="rollouts per second: plain loop, batch, Dask 1 and 2 "
+                        "workers", description="High-speed-move rollouts per second, measured "
+                        "in one run: simulate() in a Python loop, the batch path in one process "
+                        "(run_chunk), and the same chunks on a LocalCluster of 1 and of 2 "
+                        "worker processes (started before the clock). Targets: batch >= 4000/s "
+                        "on one core; 2 workers >= 1.7x one; Dask (1 worker) within 10 % of "
+                        "the in-process batch at 10^4 rollouts.")
+    r.add_argument("--json", action="store_true", help="print the results as JSON")
+    r.add_argument("--quick", action="store_true", help="10x fewer rollouts (for tests)")
+    r.set_defaults(func=cmd_study_bench)
 
 
 def cmd_bench(args):
@@ -238,6 +330,7 @@ def build_parser():
     p.add_argument("--every", type=int, default=2,
                    help="2 ms samples per frame (default 2: the GIF is 12.5x slower than life)")
     p.set_defaults(func=cmd_animate)
+    _study_parser(sub)
     from .bench.run import run_bench
     p = sub.add_parser("bench", parents=[common], help="controller step-time benchmark",
                        description=(run_bench.__doc__ or "").split("\n\n")[0] + " Targets: NA "
@@ -257,6 +350,12 @@ def build_parser():
     return ap
 
 
+def _run_errors():
+    """StudyRunError when the studies layer is loaded (no Dask import otherwise)."""
+    mod = sys.modules.get("pm2dof.studies.runner")
+    return mod.StudyRunError if mod else ValueError
+
+
 def main(argv=None):
     from .analysis import results
     ap = build_parser()
@@ -267,7 +366,7 @@ def main(argv=None):
         return 2
     try:
         return args.func(args)
-    except (ModelFileError, StaleGeneratedCodeError, ValueError) as exc:  # incl. our typed errors
+    except (ModelFileError, StaleGeneratedCodeError, ValueError, _run_errors()) as exc:  # typed
         print(f"pm2dof: error: {exc}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # output piped into `head` and the like

@@ -26,8 +26,9 @@ ALLOWED = {
     "reference": {"core", "reference"},                 # beside: NumPy formulations
     "analysis": _RUNTIME | {"analysis"},                # 3: experiment, identification
     "bench": _RUNTIME | {"analysis", "reference", "bench"},   # 3: benchmark
-    "figures": _RUNTIME | {"analysis", "figures"},      # 4: matplotlib
-    "cli": _RUNTIME | {"analysis", "bench", "figures", "cli"},  # 4: parse and dispatch
+    "studies": _RUNTIME | {"analysis", "studies"},      # 3: many rollouts on Dask
+    "figures": _RUNTIME | {"analysis", "studies", "figures"},   # 4: matplotlib
+    "cli": _RUNTIME | {"analysis", "bench", "studies", "figures", "cli"},  # 4: parse, dispatch
     "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
     "__main__": {"cli"},
     "_moved": set(),
@@ -39,7 +40,8 @@ THIRD_PARTY = {
     "__main__": set(), "_moved": set(),
     "analysis": {"numpy", "scipy", "casadi"},
     "bench": {"numpy", "casadi", "sympy", "derive"},    # baselines; each optional at run time
-    "figures": {"numpy", "matplotlib", "PIL"},
+    "studies": {"numpy", "dask", "distributed", "pyarrow"},
+    "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},
     "cli": set(),
 }
 STDLIB = set(sys.stdlib_module_names)

@@ -6,6 +6,7 @@ step computes tau_k from them and the desired motion at t_k, and the plant integ
 truth dynamics over [t_k, t_k + T] with ``rk4_substeps`` RK4 steps under that torque held
 constant (zero-order hold). The loop over samples runs in C (``_cbind.Function.accumulate``).
 """
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -13,7 +14,6 @@ import numpy as np
 
 from .controllers import APDController, NAController
 from ..core.errors import SingularityError, WorkspaceError
-from ..core.layout import Layout
 
 __all__ = ["simulate", "SimResult", "plant_truth", "plant_vector", "rmse", "theta_truth",
            "check_trajectory", "pose_measures", "rollout_inputs"]
@@ -44,13 +44,18 @@ def plant_truth(model, **overrides):
             "coulomb_smoothing_velocity": float(p["coulomb_smoothing_velocity"])}
 
 
-def plant_vector(model, truth=None, quantise=True):
+def plant_vector(model, truth=None, quantise=True, encoder_counts_per_rev=None):
     """The generated plant's parameter vector (manifest layout ``plant``): the truth (default
     :func:`plant_truth`) and the encoder step 2 pi / encoder_counts_per_rev (0 when
-    ``quantise`` is false or the model file sets no encoder)."""
-    counts = model.spec.sensing["encoder_counts_per_rev"]
+    ``quantise`` is false or the resolution is 0). ``encoder_counts_per_rev`` replaces the model
+    file's ``[sensing]`` value."""
+    counts = (model.spec.sensing["encoder_counts_per_rev"] if encoder_counts_per_rev is None
+              else encoder_counts_per_rev)
+    if not (isinstance(counts, (int, float, np.integer, np.floating)) and counts >= 0
+            and float(counts).is_integer()):
+        raise ValueError(f"encoder_counts_per_rev must be a whole number >= 0, got {counts!r}")
     truth = plant_truth(model) if truth is None else truth
-    return Layout("plant", model.manifest["layouts"]["plant"]).pack(
+    return model.layout("plant").pack(
         **truth, encoder_step=(2 * math.pi / counts) if (quantise and counts > 0) else 0.0)
 
 
@@ -63,11 +68,17 @@ def theta_truth(model, truth=None):
     only the coefficients are compared.
     """
     t = plant_truth(model) if truth is None else truth
+    return np.array([t[base][i] for base, i in _param_index(model.param_names)])
+
+
+@functools.lru_cache(maxsize=16)
+def _param_index(names):
+    """(field, leg index) of each parameter name, e.g. 'gamma3' -> ('gamma', 2)."""
     out = []
-    for name in model.param_names:
-        base, i = name.rstrip("0123456789"), int(name[len(name.rstrip("0123456789")):]) - 1
-        out.append(t[base][i])
-    return np.array(out)
+    for name in names:
+        base = name.rstrip("0123456789")
+        out.append((base, int(name[len(base):]) - 1))
+    return tuple(out)
 
 
 def rmse(xd, xe):
@@ -216,11 +227,9 @@ def rollout_inputs(model, controller, traj, plant, theta_hat0=None):
     (N, 6), parameters p (np,), output Layout). The robot starts at rest at traj's first point,
     the controller's estimate of xe from the first (quantised) measurement, theta_hat(0) =
     ``theta_hat0`` or the controller's theta0. ``plant`` is a :func:`plant_vector`."""
-    lays = model.manifest["layouts"]
     f = model.function(f"{controller.function_name}_closed_loop")
     p = np.concatenate([controller.params, plant])
-    xs = Layout("cl_state", lays["cl_state"])
-    cs = Layout("ctrl_state", lays["ctrl_state"])
+    xs, cs = model.layout("cl_state"), model.layout("ctrl_state")
     x = np.zeros(xs.size)
     X = xs.unpack(x)
     X["xe"][:] = traj.xd[0]
@@ -230,11 +239,11 @@ def rollout_inputs(model, controller, traj, plant, theta_hat0=None):
     c0["xe_prev"][:] = model.fk(qa0)
     c0["theta_hat"][:] = controller.theta0 if theta_hat0 is None else theta_hat0
     u = np.ascontiguousarray(np.hstack([traj.xd, traj.xd_dot, traj.xd_ddot]))
-    return f, x, u, p, Layout("cl_output", lays["cl_output"])
+    return f, x, u, p, model.layout("cl_output")
 
 
 def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_hat0=None,
-             settle_time=0.0):
+             settle_time=0.0, encoder_counts_per_rev=None):
     """Run ``controller`` against the plant's truth along ``trajectory``: one call into C.
 
     Parameters
@@ -250,6 +259,8 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
         Plant truth (default :func:`plant_truth`); must not be the controller's parameters.
     quantise : bool
         Quantise the encoders to ``[sensing].encoder_counts_per_rev`` (False: exact angles).
+    encoder_counts_per_rev : int, optional
+        Replaces the model file's encoder resolution (0: exact angles).
     theta_hat0 : array_like (5n,), optional
         Initial estimate (default: the controller's ``theta0``).
     settle_time : float
@@ -269,8 +280,8 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     check_trajectory(model, trajectory)
     n_move = len(trajectory.t)
     traj = trajectory.extended(settle_time) if settle_time > 0 else trajectory
-    f, x, u, p, ylay = rollout_inputs(model, controller, traj, plant_vector(model, truth, quantise),
-                                      theta_hat0)
+    plant = plant_vector(model, truth, quantise, encoder_counts_per_rev)
+    f, x, u, p, ylay = rollout_inputs(model, controller, traj, plant, theta_hat0)
     y = np.empty((len(traj.t), ylay.size))
     f.accumulate(x, u, p, y)
     Y = ylay.unpack(y)

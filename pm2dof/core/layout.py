@@ -41,9 +41,10 @@ class Layout:
                 v = np.full(size, v[0])
             if v.size != size:
                 raise ValueError(f"{self.name}.{f} needs {size} values, got {v.size}")
-            if not np.isfinite(v).all():
-                raise ValueError(f"{self.name}.{f} has non-finite values: {v.tolist()}")
             vec[self.slices[f]] = v
+        if not np.isfinite(vec).all():   # one check; name the first offending field
+            f = next(f for f, sl in self.slices.items() if not np.isfinite(vec[sl]).all())
+            raise ValueError(f"{self.name}.{f} has non-finite values: {vec[self.slices[f]].tolist()}")
         return vec
 
     def unpack(self, vec):

@@ -16,6 +16,7 @@ import numpy as np
 
 from . import _cbind
 from .errors import SingularityError, StaleGeneratedCodeError, WorkspaceError
+from .layout import Layout
 from .model_file import read_model_file
 
 __all__ = ["Model", "load_model", "DEFAULT_MODEL", "GENERATED"]
@@ -87,7 +88,7 @@ class Model:
     at once; load one Model per thread.
     """
 
-    __slots__ = ("spec", "manifest", "library", "_lib", "_f", "_sing_thr", "_sing", "__weakref__")
+    __slots__ = ("spec", "manifest", "library", "_lib", "_f", "_layouts", "_sing_thr", "_sing", "__weakref__")
 
     #: names of the two singularity measures, in the order of :meth:`singularity_measures`
     SINGULARITY_KINDS = ("type I (a leg's links aligned)",
@@ -112,6 +113,8 @@ class Model:
             funcs[short] = f
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
                      ("_lib", lib), ("_f", types.MappingProxyType(funcs)),
+                     ("_layouts", types.MappingProxyType(
+                         {name: Layout(name, fl) for name, fl in manifest["layouts"].items()})),
                      ("_sing_thr", (spec.limits["singularity_threshold"],
                                     spec.limits["parallel_singularity_threshold"])),
                      ("_sing", array.array("d", [0.0, 0.0]))):  # array: [0] ~3x faster than numpy
@@ -148,6 +151,11 @@ class Model:
     def function(self, short_name):
         """The bound generated function ``<name>_<short_name>`` (for benchmarks and tools)."""
         return self._f[short_name]
+
+    def layout(self, name):
+        """The :class:`~pm2dof.core.layout.Layout` ``name`` of the manifest (e.g. "plant",
+        "cl_state"), built once."""
+        return self._layouts[name]
 
     # --- argument handling ---------------------------------------------------------------
     # Fast path: the arguments go straight to the C binding, which checks the dtype (float64),

@@ -1,0 +1,14 @@
+# Studies at scale (layer 3): many closed-loop rollouts from a study file, on Dask, into Parquet.
+"""Many-rollout studies: robustness to model error, gain maps, when adaptation pays.
+
+``read_study`` (spec) -> ``run_study`` (runner: Dask tasks of ``run_chunk`` in evaluate, rows
+into Parquet by store) -> ``study_report`` (report). ``pm2dof study run|report|bench`` are the
+commands. Nothing here is imported by ``import pm2dof`` until used.
+"""
+from .spec import Study, StudyFileError, read_study
+from .evaluate import check_study, rollout_setup, run_chunk
+from .store import StudyOutError, read_results
+from .runner import StudyRunError, run_study
+
+__all__ = ["Study", "StudyFileError", "StudyOutError", "StudyRunError", "read_study",
+           "check_study", "run_study", "run_chunk", "rollout_setup", "read_results"]

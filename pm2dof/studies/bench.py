@@ -1,0 +1,123 @@
+# pm2dof study bench: rollouts per second on the high-speed move, every path measured in one run.
+"""Throughput of the study machinery (``pm2dof study bench``).
+
+One study of NA on the paper's high-speed move over random plants (the robustness study's
+uncertainty) is run four ways, in one process run so the ratios are fair on a noisy machine:
+
+* ``plain_loop``: :func:`pm2dof.simulate` in a Python loop (the plants drawn beforehand);
+* ``batch``: :func:`pm2dof.studies.run_chunk` chunk after chunk in this process;
+* ``dask_1_worker`` / ``dask_2_workers``: the same chunks as tasks on a LocalCluster of one or
+  two single-threaded worker processes, started and warmed up before the clock;
+* ``study_run_2_workers``: :func:`pm2dof.studies.run_study` end to end (Parquet writes,
+  progress, resume bookkeeping; the cluster already up), at 1/10 and all of the rollouts, with
+  the client's peak traced memory, which stays flat in the number of rollouts.
+"""
+import dataclasses
+import os
+import tempfile
+import time
+import tracemalloc
+from pathlib import Path
+
+from .evaluate import rollout_setup, run_chunk
+from .runner import _close, connect, run_study
+from .spec import read_study
+
+__all__ = ["study_bench", "format_study_bench", "bench_study"]
+
+STUDIES = Path(__file__).resolve().parents[2] / "studies"
+
+
+def bench_study(rollouts, chunk=500):
+    """The benchmark's study: NA, high-speed move, ``rollouts`` random plants."""
+    s = read_study(STUDIES / "robustness.toml")
+    na = [v for v in s.variants if v.name == "na"]
+    return dataclasses.replace(s, name="bench", variants=tuple(na),
+                               moves=tuple(m for m in s.moves if m[0] == "high"),
+                               draws=rollouts, runs=1, chunk=chunk)
+
+
+def _dask_rate(client, study):
+    from distributed import as_completed
+    client.gather(client.submit(run_chunk, study, 0, pure=False))      # warm: model, context
+    t0 = time.perf_counter()
+    n = 0
+    for fut in as_completed(client.map(run_chunk, [study] * study.n_chunks,
+                                       range(study.n_chunks), pure=False)):
+        n += len(fut.result()["rollout"])
+        fut.release()
+    return n / (time.perf_counter() - t0)
+
+
+def study_bench(quick=False, progress=None):
+    """Rollouts per second of each path (module docstring); JSON-able dict."""
+    say = progress or (lambda msg: None)
+    n = 1000 if quick else 10000
+    study = bench_study(n)
+    res = {"rollouts": n, "chunk": study.chunk, "move": "high", "controller": "na",
+           "cores": os.cpu_count()}
+    # plain loop: today's simulate(), one call per rollout
+    import pm2dof
+    n_plain = n // 10
+    setups = [rollout_setup(study, 0, 0, d, 0) for d in range(n_plain)]
+    say(f"plain loop: simulate() x {n_plain}")
+    t0 = time.perf_counter()
+    for model, ctrl, traj, truth, counts, th0, _ in setups:
+        pm2dof.simulate(model, ctrl, traj, truth=truth, encoder_counts_per_rev=counts)
+    res["rollouts_per_s_plain_loop"] = n_plain / (time.perf_counter() - t0)
+    say(f"batch: run_chunk x {study.n_chunks} chunks of {study.chunk}")
+    run_chunk(study, 0)
+    t0 = time.perf_counter()
+    for i in range(study.n_chunks):
+        run_chunk(study, i)
+    res["rollouts_per_s_batch"] = n / (time.perf_counter() - t0)
+    for k, key in ((1, "rollouts_per_s_dask_1_worker"), (2, "rollouts_per_s_dask_2_workers")):
+        say(f"Dask: LocalCluster of {k} worker process(es)")
+        client = connect(workers=k)
+        try:
+            res[key] = _dask_rate(client, study)
+            if k == 2:
+                for size in (n // 10, n):
+                    say(f"run_study end to end, {size} rollouts, 2 workers")
+                    s = bench_study(size, study.chunk)
+                    with tempfile.TemporaryDirectory() as tmp:
+                        tracemalloc.start()
+                        r = run_study(s, tmp, client=client, progress=False,
+                                      echo=lambda *a: None)
+                        peak = tracemalloc.get_traced_memory()[1]
+                        tracemalloc.stop()
+                    res[f"rollouts_per_s_study_run_2_workers_{size}"] = r["rollouts_per_s"]
+                    res[f"client_peak_traced_mb_{size}"] = peak / 2 ** 20
+        finally:
+            _close(client)
+    res["dask_2_over_1_workers"] = res["rollouts_per_s_dask_2_workers"] / \
+        res["rollouts_per_s_dask_1_worker"]
+    res["dask_1_worker_overhead_vs_batch"] = 1 - res["rollouts_per_s_dask_1_worker"] / \
+        res["rollouts_per_s_batch"]
+    res["batch_over_plain_loop"] = res["rollouts_per_s_batch"] / res["rollouts_per_s_plain_loop"]
+    res["targets"] = {
+        "batch >= 4000 rollouts/s": res["rollouts_per_s_batch"] >= 4000,
+        "2 workers >= 1.7x 1 worker": res["dask_2_over_1_workers"] >= 1.7,
+        "Dask overhead <= 10 % (1 worker vs batch)": res["dask_1_worker_overhead_vs_batch"] <= 0.10,
+    }
+    return res
+
+
+def format_study_bench(r):
+    m = (r["rollouts"] // 10, r["rollouts"])
+    lines = [f"Study throughput: NA on the high-speed move over random plants, {r['rollouts']} "
+             f"rollouts in chunks of {r['chunk']}, {r['cores']} cores (one run; medians are not "
+             f"taken, the ratios are what counts on a shared machine)",
+             f"  simulate() in a Python loop       {r['rollouts_per_s_plain_loop']:9,.0f} rollouts/s",
+             f"  batch, one process (run_chunk)    {r['rollouts_per_s_batch']:9,.0f} rollouts/s "
+             f"({r['batch_over_plain_loop']:.2f}x the loop)",
+             f"  Dask, 1 worker process            {r['rollouts_per_s_dask_1_worker']:9,.0f} rollouts/s "
+             f"(overhead {100 * r['dask_1_worker_overhead_vs_batch']:+.1f} % vs batch)",
+             f"  Dask, 2 worker processes          {r['rollouts_per_s_dask_2_workers']:9,.0f} rollouts/s "
+             f"({r['dask_2_over_1_workers']:.2f}x 1 worker)"]
+    for size in m:
+        lines.append(f"  run_study, 2 workers, {size:6d} rows {r[f'rollouts_per_s_study_run_2_workers_{size}']:7,.0f} "
+                     f"rollouts/s, client peak {r[f'client_peak_traced_mb_{size}']:.1f} MB traced")
+    lines.append("targets: " + "; ".join(f"{k}: {'met' if v else 'NOT MET'}"
+                                         for k, v in r["targets"].items()))
+    return "\n".join(lines)

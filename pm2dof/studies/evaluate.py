@@ -1,0 +1,205 @@
+# One chunk of a study: its rollouts in batches (one C call per run of one controller and move).
+"""Evaluate one chunk of a study into result columns.
+
+A chunk's units of one controller variant and one move share the closed-loop function and the
+desired motion, so their draws run as one :meth:`Function.accumulate_batch` call per
+repetition (the GIL released, the per-rollout Python overhead amortised). Each row is exactly
+the rollout :func:`pm2dof.simulate` gives for the same controller, plant truth, encoder
+resolution and theta_hat(0): the same generated function on the same inputs
+(:func:`pm2dof.control.simulate.rollout_inputs`), and the metrics are the same arithmetic as
+:class:`pm2dof.SimResult`'s.
+
+Runs on the workers; imports no Dask or pyarrow (the client turns columns into Parquet).
+"""
+import numpy as np
+
+from ..control.controllers import APDController, NAController
+from ..control.simulate import check_trajectory, plant_vector, rollout_inputs, theta_truth
+from ..control.trajectory import line
+from ..core.model import load_model
+from .draws import draw_columns, plant_of, sample_draw
+
+__all__ = ["run_chunk", "check_study", "make_controller", "make_trajectory", "rollout_setup",
+           "METRICS", "columns"]
+
+#: metric columns of every row (units in README "Studies at scale")
+METRICS = ("rmse", "max_error", "peak_tau", "n_saturated", "n_singular", "n_non_finite",
+           "diverged", "theta_error")
+_CACHE = {}
+
+
+def make_controller(model, variant):
+    """The NAController or APDController of a study's controller variant."""
+    o = dict(variant.options)
+    kw = {k: o[k] for k in ("Kp", "Kv", "Kd", "Q", "velocity_filter_hz", "split", "project")
+          if k in o}
+    if "tau_max" in o:
+        kw["tau_max"] = np.broadcast_to(np.asarray(o["tau_max"], dtype=float), (model.n_legs,))
+    if variant.law == "apd":
+        return APDController(model, **kw)
+    if "Gamma_scale" in o:
+        kw["Gamma"] = o["Gamma_scale"] * np.asarray(model.spec.gains["na"]["Gamma"], dtype=float)
+    return NAController(model, **kw)
+
+
+def make_trajectory(model, move, period):
+    """A study move: a name of the model file's [trajectories] or a line's (sorted) items."""
+    name, items = move
+    if items is None:
+        from ..analysis.experiment import trajectory
+        return trajectory(model, name, period)
+    d = dict(items)
+    return line(d["start"], d["end"], d["v_max"], d["a_max"], d["j_max"], period=period)
+
+
+def _context(study):
+    key = (study.model_path, study.text, study.quick)
+    ctx = _CACHE.get(key)
+    if ctx is None:
+        from ..analysis.identify import identifiability
+        model = load_model(study.model_path)
+        ctrls = [make_controller(model, v) for v in study.variants]
+        T = ctrls[0].sample_period
+        trajs = []
+        for mv in study.moves:
+            tr = make_trajectory(model, mv, T)
+            check_trajectory(model, tr)
+            trajs.append((tr.extended(study.settle_time) if study.settle_time > 0 else tr,
+                          len(tr.t)))
+        N = identifiability(model)["null_space"]
+        ctx = {"model": model, "ctrls": ctrls, "trajs": trajs,
+               "P_id": np.eye(N.shape[0]) - N @ N.T,   # projector on the identifiable directions
+               "draw_cols": draw_columns(study, model.n_legs)}
+        _CACHE.clear()
+        _CACHE[key] = ctx
+    return ctx
+
+
+def rollout_setup(study, c, m, d, r, theta_hat0=None):
+    """What rollout (c, m, d, r) runs, as :func:`pm2dof.simulate`'s arguments: (model,
+    controller, trajectory, truth, encoder counts or None, theta_hat0, column values)."""
+    ctx = _context(study)
+    model = ctx["model"]
+    truth, counts, cols = plant_of(model, study, sample_draw(study, d, model.n_legs), r)
+    return model, ctx["ctrls"][c], ctx["trajs"][m][0], truth, counts, theta_hat0, cols
+
+
+def columns(study, n_legs):
+    """(name, kind) of every result column, in order; kind is int, str, float or bool."""
+    return ([("rollout", "int"), ("controller", "str"), ("law", "str"), ("move", "str"),
+             ("draw", "int"), ("run", "int")]
+            + [(k, "float") for k in study.grid_keys]
+            + [(k, "int" if k == "encoder_counts_per_rev" else "float")
+               for k in draw_columns(study, n_legs)]
+            + [(k, "bool" if k == "diverged" else "int" if k.startswith("n_") else "float")
+               for k in METRICS])
+
+
+def run_chunk(study, index):
+    """Rows of chunk ``index``: {column: ndarray}, one row per rollout, ordered by rollout."""
+    ctx = _context(study)
+    model = ctx["model"]
+    units = study.chunk_units(index)
+    n_rows = len(units) * study.runs
+    dt = {"int": np.int64, "str": object, "float": np.float64, "bool": np.bool_}
+    out = {k: np.full(n_rows, np.nan) if t == "float" else np.zeros(n_rows, dt[t])
+           for k, t in columns(study, model.n_legs)}
+    groups = {}    # (variant, move) -> its draws in this chunk: one batch per run
+    for u in units:
+        c, m, d = study.unit(u)
+        groups.setdefault((c, m), []).append(d)
+    plants = {}    # draw -> per run: (truth, encoder counts, columns, plant vector, theta truth)
+    for d in dict.fromkeys(d for ds in groups.values() for d in ds):
+        values = sample_draw(study, d, model.n_legs)
+        plants[d] = []
+        for r in range(study.runs):
+            truth, counts, cols = plant_of(model, study, values, r)
+            plants[d].append((truth, counts, cols, plant_vector(model, truth, study.quantise, counts),
+                              theta_truth(model, truth)))
+    row0 = units[0] * study.runs
+    for (c, m), draws in groups.items():
+        _run_group(study, ctx, c, m, draws, plants, out, row0)
+    return out
+
+
+def _run_group(study, ctx, c, m, draws, plants, out, row0):
+    model, ctrl, (traj, n_move) = ctx["model"], ctx["ctrls"][c], ctx["trajs"][m]
+    variant = study.variants[c]
+    K = len(draws)
+    theta = [None] * K
+    Y = None
+    for r in range(study.runs):
+        X, P, rows = [], [], []
+        for k, d in enumerate(draws):
+            truth, counts, cols, plant, _ = plants[d][r]
+            f, x, u, p, ylay = rollout_inputs(model, ctrl, traj, plant, theta[k])
+            X.append(x)
+            P.append(p)
+            row = study.rollout(c, m, d, r) - row0
+            rows.append(row)
+            for key, v in cols.items():
+                out[key][row] = v
+        X, P = np.array(X), np.array(P)
+        if Y is None:
+            Y = np.empty((K, len(traj.t), ylay.size))
+        f.accumulate_batch(X, u, P, Y)
+        Yf = ylay.unpack(Y.reshape(K * len(traj.t), ylay.size))
+        xe = Yf["xe"].reshape(K, -1, 2)
+        tau = Yf["tau_a"].reshape(K, -1, model.n_legs)
+        status = Yf["status"].reshape(K, -1)
+        th = Yf["theta_hat"].reshape(K, len(traj.t), -1)
+        rows = np.array(rows)
+        _metrics(out, rows, traj.xd, xe, tau, status, n_move)
+        if variant.law == "na":
+            Pid = ctx["P_id"]
+            for k, d in enumerate(draws):
+                t_true = plants[d][r][4]
+                out["theta_error"][rows[k]] = (np.linalg.norm(Pid @ (th[k, -1] - t_true))
+                                               / np.linalg.norm(Pid @ t_true))
+        theta = [th[k, -1].copy() for k in range(K)]   # carried into the next run
+        out["rollout"][rows] = row0 + rows
+        out["controller"][rows] = variant.name
+        out["law"][rows] = variant.law
+        out["move"][rows] = study.moves[m][0]
+        out["draw"][rows] = draws
+        out["run"][rows] = r
+        for key, v in variant.grid:
+            out[key][rows] = v
+
+
+def _metrics(out, rows, xd, xe, tau, status, n_move):
+    """SimResult's metrics, one row per rollout: rmse (eq. 41) and max |e| over the move's
+    samples, m; peak |tau_a| N*m and the status counts over every sample."""
+    e = xd[:n_move] - xe[:, :n_move]
+    e2 = np.sum(e * e, axis=-1)
+    diverged = ~np.isfinite(xe).all(axis=(1, 2))
+    out["rmse"][rows] = np.where(diverged, np.inf, np.sqrt(np.mean(e2, axis=-1)))  # eq. 41
+    out["max_error"][rows] = np.where(diverged, np.inf, np.sqrt(np.max(e2, axis=-1)))
+    out["peak_tau"][rows] = np.max(np.abs(tau), axis=(1, 2))
+    out["n_singular"][rows] = np.sum(status == 1, axis=1)
+    out["n_saturated"][rows] = np.sum(status == 2, axis=1)
+    out["n_non_finite"][rows] = np.sum(status == 3, axis=1)
+    out["diverged"][rows] = diverged
+
+
+def check_study(study, model):
+    """Everything that needs the model, before any rollout: each controller variant is accepted
+    by its controller, each move is reachable and clear of both singularity kinds. Raises
+    :class:`StudyFileError` naming the file and the key."""
+    from ..core.errors import SingularityError, WorkspaceError
+    from ..control.trajectory import TrajectoryError
+    from .spec import StudyFileError
+    ctrls = []
+    for c, v in enumerate(study.variants):
+        try:
+            ctrls.append(make_controller(model, v))
+        except (ValueError, TypeError) as exc:
+            i = [w.name for w in study.variants].index(v.name)
+            point = f" at grid point {dict(v.grid)}" if v.grid else ""
+            raise StudyFileError(f"{study.path}: controllers[{i}] ({v.name!r}){point}: "
+                                 f"{exc}") from None
+    for i, mv in enumerate(study.moves):
+        try:
+            check_trajectory(model, make_trajectory(model, mv, ctrls[0].sample_period))
+        except (WorkspaceError, SingularityError, TrajectoryError) as exc:
+            raise StudyFileError(f"{study.path}: study.moves[{i}] ({mv[0]!r}): {exc}") from None

@@ -1,0 +1,187 @@
+# Running a study on Dask: an embedded LocalCluster, or an existing cluster by its address.
+"""``pm2dof study run``: every chunk of a study as a Dask task, rows written as chunks finish.
+
+The client keeps a bounded window of tasks in flight and writes each finished chunk to
+Parquet at once (:mod:`pm2dof.studies.store`), so memory does not grow with the number of
+rollouts and an interruption loses at most the chunks in flight. Dask reruns the tasks of a
+lost worker (``retries`` on top of its own rescheduling). Rows do not depend on the worker
+count, the cluster or the order in which chunks finish.
+"""
+import importlib.util
+import logging
+import os
+import sys
+import time
+
+from ..core.model import load_model
+from .evaluate import check_study, run_chunk
+from .store import finish_out, prepare_out, write_chunk
+
+__all__ = ["StudyRunError", "run_study", "connect", "Progress"]
+
+
+class StudyRunError(RuntimeError):
+    """The study could not run: no scheduler at the address, no workers, a failing chunk."""
+
+
+def connect(workers=None, scheduler=None, timeout=10.0, echo=None):
+    """A ``distributed.Client``: to ``scheduler`` (an address such as ``tcp://10.0.0.5:8786``),
+    else to a new ``LocalCluster`` of ``workers`` single-threaded worker processes (default: one
+    per core). Raises StudyRunError within ``timeout`` s when the scheduler cannot be reached or
+    has no worker. The caller closes the client (and its cluster)."""
+    from distributed import Client, LocalCluster
+    if scheduler:
+        try:
+            client = Client(scheduler, timeout=timeout)
+        except (OSError, TimeoutError) as exc:
+            raise StudyRunError(f"cannot reach the Dask scheduler at {scheduler} within "
+                                f"{timeout:g} s ({type(exc).__name__}: {exc}). Is `dask "
+                                f"scheduler` running there, and the port open?") from None
+        try:
+            client.wait_for_workers(1, timeout=timeout)
+        except (OSError, TimeoutError):
+            client.close()
+            raise StudyRunError(f"the Dask scheduler at {scheduler} has no worker after "
+                                f"{timeout:g} s; start some with `dask worker {scheduler}`") \
+                from None
+        return client
+    n = (os.cpu_count() or 1) if workers is None else workers
+    if n < 1:
+        raise ValueError(f"--workers must be >= 1, got {n}")
+    dashboard = importlib.util.find_spec("bokeh") is not None
+    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                           dashboard_address=":0" if dashboard else None,
+                           silence_logs=logging.ERROR)
+    client = Client(cluster, timeout=timeout)
+    client._pm2dof_owns_cluster = cluster
+    return client
+
+
+def _close(client):
+    cluster = getattr(client, "_pm2dof_owns_cluster", None)
+    client.close()
+    if cluster is not None:
+        cluster.close()
+
+
+class Progress:
+    """Rollouts done, rate and ETA on stderr: one updating line on a terminal, else a line
+    every ``every`` seconds."""
+
+    def __init__(self, total, done=0, stream=None, every=5.0):
+        self.total, self.done, self.start_done = total, done, done
+        self.stream = sys.stderr if stream is None else stream
+        self.tty = getattr(self.stream, "isatty", lambda: False)()
+        self.t0 = self.last = time.perf_counter()
+        self.every = every
+
+    @property
+    def rate(self):
+        dt = time.perf_counter() - self.t0
+        return (self.done - self.start_done) / dt if dt > 0 else 0.0
+
+    def line(self):
+        rate = self.rate
+        eta = (self.total - self.done) / rate if rate > 0 else float("nan")
+        return (f"rollouts {self.done}/{self.total} ({100 * self.done / self.total:.0f}%), "
+                f"{rate:,.0f}/s, ETA {eta:.0f} s")
+
+    def update(self, n):
+        self.done += n
+        now = time.perf_counter()
+        if self.tty:
+            print(f"\r  .. {self.line()}   ", end="", file=self.stream, flush=True)
+        elif now - self.last >= self.every or self.done == self.total:
+            print(f"  .. {self.line()}", file=self.stream, flush=True)
+            self.last = now
+
+    def close(self):
+        if self.tty:
+            print(file=self.stream, flush=True)
+
+
+def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=10.0,
+              progress=True, echo=print):
+    """Run every rollout of ``study`` (a :class:`~pm2dof.studies.spec.Study`) into ``out``.
+
+    Parameters
+    ----------
+    out : path
+        Output folder (created); a rerun with the same study skips its finished chunks.
+    workers : int, optional
+        Worker processes of the embedded LocalCluster (default: one per core).
+    scheduler : str, optional
+        Address of an existing Dask scheduler; its workers need pm2dof installed with the same
+        generated code, and the model file at the same path.
+    client : distributed.Client, optional
+        Use this client (not closed here) instead of ``workers`` / ``scheduler``.
+    progress : bool
+        Progress line on stderr.
+
+    Returns
+    -------
+    dict: ``rows`` (in the folder), ``chunks``, ``skipped`` (already there), ``seconds`` and
+    ``rollouts_per_s`` of this session.
+    """
+    from distributed import as_completed
+    model = load_model(study.model_path)
+    check_study(study, model)
+    done = prepare_out(out, study, model)
+    todo = [i for i in range(study.n_chunks) if i not in done]
+    rows_done = sum(len(study.chunk_units(i)) for i in done) * study.runs
+    echo(f"study {study.name!r}: {study.n_rollouts} rollouts in {study.n_chunks} chunks"
+         + (f"; {len(done)} chunk(s) already in {out}, skipped" if done else ""))
+    t0 = time.perf_counter()
+    if not todo:
+        return {"rows": finish_out(out, study), "chunks": study.n_chunks, "skipped": len(done),
+                "seconds": 0.0, "rollouts_per_s": 0.0}
+    own = client is None
+    if own:
+        client = connect(workers, scheduler, timeout)
+    bar = Progress(study.n_rollouts, rows_done) if progress else None
+    try:
+        nthreads = sum(client.nthreads().values()) or 1
+        where = scheduler or f"a local cluster of {nthreads} worker process(es)"
+        echo(f"running on {where}" + (f"; dashboard {client.dashboard_link}"
+                                      if _has_dashboard(client) else ""))
+        pending = iter(todo)
+        ac, index = as_completed(), {}
+
+        def submit():
+            i = next(pending, None)
+            if i is not None:
+                fut = client.submit(run_chunk, study, i, pure=False, retries=2,
+                                    key=f"pm2dof-{study.identity[:12]}-chunk-{i}")
+                index[fut.key] = i
+                ac.add(fut)
+
+        for _ in range(2 * nthreads + 2):
+            submit()
+        for fut in ac:
+            i = index.pop(fut.key)
+            try:
+                cols = fut.result()
+            except Exception as exc:
+                raise StudyRunError(f"chunk {i} (rollouts {study.chunk_units(i)[0] * study.runs}"
+                                    f"..) failed: {type(exc).__name__}: {exc}") from exc
+            write_chunk(out, i, cols, study)
+            fut.release()
+            if bar:
+                bar.update(len(cols["rollout"]))
+            submit()
+    finally:
+        if bar:
+            bar.close()
+        if own:
+            _close(client)
+    dt = time.perf_counter() - t0
+    n = study.n_rollouts - rows_done
+    return {"rows": finish_out(out, study), "chunks": study.n_chunks, "skipped": len(done),
+            "seconds": dt, "rollouts_per_s": n / dt}
+
+
+def _has_dashboard(client):
+    try:
+        return bool(client.dashboard_link) and importlib.util.find_spec("bokeh") is not None
+    except (KeyError, AttributeError):
+        return False
