@@ -19,6 +19,7 @@ import time
 import tracemalloc
 from pathlib import Path
 
+from ..control.simulate import simulate
 from .evaluate import rollout_setup, run_chunk
 from .runner import _close, connect, run_study
 from .spec import read_study
@@ -57,13 +58,12 @@ def study_bench(quick=False, progress=None):
     res = {"rollouts": n, "chunk": study.chunk, "move": "high", "controller": "na",
            "cores": os.cpu_count()}
     # plain loop: today's simulate(), one call per rollout
-    import pm2dof
     n_plain = n // 10
     setups = [rollout_setup(study, 0, 0, d, 0) for d in range(n_plain)]
     say(f"plain loop: simulate() x {n_plain}")
     t0 = time.perf_counter()
     for model, ctrl, traj, truth, counts, th0, _ in setups:
-        pm2dof.simulate(model, ctrl, traj, truth=truth, encoder_counts_per_rev=counts)
+        simulate(model, ctrl, traj, truth=truth, encoder_counts_per_rev=counts)
     res["rollouts_per_s_plain_loop"] = n_plain / (time.perf_counter() - t0)
     say(f"batch: run_chunk x {study.n_chunks} chunks of {study.chunk}")
     run_chunk(study, 0)
