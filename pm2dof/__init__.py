@@ -17,6 +17,7 @@ The package is layered; imports only point down (tests/test_layers.py checks it)
 ``control/``       2. controllers, trajectories, closed-loop rollouts (one call into C each).
 ``analysis/``      3. the paper's experiment, identification, reports, result files.
 ``bench/``         3. the step-time benchmark.
+``studies/``       3. many-rollout studies on Dask, results in Parquet.
 ``figures/``       4. matplotlib figures and the demo.
 ``cli.py``         4. ``pm2dof COMMAND``: parses arguments and dispatches, nothing else.
 ``reference/``     beside the layers: independent NumPy formulations for tests and the bench.
@@ -45,6 +46,9 @@ _LAZY = {
     "split_comparison": "pm2dof.analysis.splits",
     "workspace_maps": "pm2dof.analysis.maps",
     "capability": "pm2dof.analysis.maps",
+    "read_study": "pm2dof.studies",
+    "run_study": "pm2dof.studies",
+    "StudyFileError": "pm2dof.studies",
 }
 
 __all__ = [

@@ -188,3 +188,25 @@ def test_unreachable_scheduler_fails_clearly_within_the_timeout(tmp_path):
                         "--timeout", "2"], capture_output=True, text=True, timeout=DEADLINE,
                        cwd=ROOT)
     assert r.returncode == 2 and "pm2dof: error: cannot reach the Dask scheduler" in r.stderr
+
+
+def test_readme_command_on_a_shipped_study_and_the_bench_keys(tmp_path):
+    """`pm2dof study run studies/robustness.toml --quick --out DIR` (the issue's "done when"),
+    and the bench's JSON contract (its speed targets live in the bench, not here)."""
+    out = tmp_path / "rob"
+    r = subprocess.run([*PM2DOF, "study", "run", "studies/robustness.toml", "--quick", "--out",
+                        str(out), "--workers", "2"], capture_output=True, text=True,
+                       timeout=DEADLINE, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    study = read_study(ROOT / "studies" / "robustness.toml", quick=True)
+    info, table = read_results(out)
+    assert table.num_rows == info["rows"] == study.n_rollouts == 240 and info["complete"]
+    assert info["provenance"]["model_file_sha256"] and info["study_text"] == \
+        (ROOT / "studies" / "robustness.toml").read_text()
+    from pm2dof.studies.bench import study_bench
+    res = study_bench(quick=True)
+    for k in ("rollouts_per_s_plain_loop", "rollouts_per_s_batch",
+              "rollouts_per_s_dask_1_worker", "rollouts_per_s_dask_2_workers"):
+        assert res[k] > 0, k
+    assert set(res["targets"]) == {"batch >= 4000 rollouts/s", "2 workers >= 1.7x 1 worker",
+                                   "Dask overhead <= 10 % (1 worker vs batch)"}

@@ -48,6 +48,40 @@ def run_demo(model, out="out", runs=40, echo=print, progress=None):
         gif, _ = animate_move(m, Path(out) / "move_high_na.gif", progress=progress)
         paths += [split_path, gif]
     data["maps"] = maps
+    study = _demo_study(m, Path(out) / "study_robustness", echo, progress)
+    if study is not None:
+        data["study_robustness_quick"] = study[0]
+        paths += study[1]
     json_path = write_json(Path(out) / "results.json", data)
     echo(f"\nfigures: {', '.join(str(p) for p in paths)}\nnumbers: {json_path}")
     return data
+
+
+def _demo_study(m, out, echo, progress):
+    """The robustness study at its --quick size (a local Dask cluster, a few seconds), when
+    the study file's model is the demo's. Returns (RPE rows, figure paths) or None."""
+    import shutil
+    from ..studies import read_study, run_study
+    from ..studies.report import columns_of, summarise
+    from ..studies.store import read_results
+    from .studies import study_figures
+    study = read_study(Path(__file__).resolve().parents[2] / "studies" / "robustness.toml",
+                       quick=True)
+    if Path(study.model_path) != Path(m.spec.path).resolve():
+        return None
+    shutil.rmtree(out, ignore_errors=True)      # the demo's own folder: always a fresh run
+    if progress:
+        progress(f"study {study.name!r} --quick: {study.n_rollouts} rollouts on a local Dask "
+                 f"cluster")
+    run_study(study, out, progress=False, echo=lambda *a: None)
+    info, table = read_results(out)
+    cols = columns_of(table)
+    s = summarise(cols, {**info, "grid_keys": []})
+    echo(f"\nRobustness study, quick size ({study.draws} random plants; the full study is "
+         f"`pm2dof study run studies/robustness.toml --out DIR`): RPE over APD on the same "
+         f"plants, median [5th, 95th percentile]:")
+    for r in s["rpe"]:
+        echo(f"  {r['controller']:18s} {r['move']:5s} {r['median']:5.1f} % "
+             f"[{r['p05']:5.1f}, {r['p95']:5.1f}], better on {100 * r['share_better']:.0f} % of "
+             f"the plants")
+    return s["rpe"], study_figures(cols, s, out / "figures", info["provenance"])

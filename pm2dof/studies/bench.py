@@ -2,7 +2,8 @@
 """Throughput of the study machinery (``pm2dof study bench``).
 
 One study of NA on the paper's high-speed move over random plants (the robustness study's
-uncertainty) is run four ways, in one process run so the ratios are fair on a noisy machine:
+uncertainty) is run four ways, in one process run so the ratios are fair on a noisy machine;
+each rate is the median of ``repeats`` passes:
 
 * ``plain_loop``: :func:`pm2dof.simulate` in a Python loop (the plants drawn beforehand);
 * ``batch``: :func:`pm2dof.studies.run_chunk` chunk after chunk in this process;
@@ -14,6 +15,7 @@ uncertainty) is run four ways, in one process run so the ratios are fair on a no
 """
 import dataclasses
 import os
+import statistics
 import tempfile
 import time
 import tracemalloc
@@ -38,9 +40,8 @@ def bench_study(rollouts, chunk=500):
                                draws=rollouts, runs=1, chunk=chunk)
 
 
-def _dask_rate(client, study):
+def _dask_pass(client, study):
     from distributed import as_completed
-    client.gather(client.submit(run_chunk, study, 0, pure=False))      # warm: model, context
     t0 = time.perf_counter()
     n = 0
     for fut in as_completed(client.map(run_chunk, [study] * study.n_chunks,
@@ -50,32 +51,45 @@ def _dask_rate(client, study):
     return n / (time.perf_counter() - t0)
 
 
+def _batch_pass(study):
+    t0 = time.perf_counter()
+    for i in range(study.n_chunks):
+        run_chunk(study, i)
+    return study.n_rollouts / (time.perf_counter() - t0)
+
+
+def _median(f, repeats):
+    return statistics.median(f() for _ in range(repeats))
+
+
 def study_bench(quick=False, progress=None):
     """Rollouts per second of each path (module docstring); JSON-able dict."""
     say = progress or (lambda msg: None)
     n = 1000 if quick else 10000
+    repeats = 1 if quick else 3
     study = bench_study(n)
     res = {"rollouts": n, "chunk": study.chunk, "move": "high", "controller": "na",
-           "cores": os.cpu_count()}
+           "cores": os.cpu_count(), "repeats": repeats}
     # plain loop: today's simulate(), one call per rollout
     n_plain = n // 10
     setups = [rollout_setup(study, 0, 0, d, 0) for d in range(n_plain)]
-    say(f"plain loop: simulate() x {n_plain}")
-    t0 = time.perf_counter()
-    for model, ctrl, traj, truth, counts, th0, _ in setups:
-        simulate(model, ctrl, traj, truth=truth, encoder_counts_per_rev=counts)
-    res["rollouts_per_s_plain_loop"] = n_plain / (time.perf_counter() - t0)
-    say(f"batch: run_chunk x {study.n_chunks} chunks of {study.chunk}")
+    say(f"plain loop: simulate() x {n_plain}, {repeats} time(s)")
+
+    def plain():
+        t0 = time.perf_counter()
+        for model, ctrl, traj, truth, counts, th0, _ in setups:
+            simulate(model, ctrl, traj, truth=truth, encoder_counts_per_rev=counts)
+        return n_plain / (time.perf_counter() - t0)
+    res["rollouts_per_s_plain_loop"] = _median(plain, repeats)
+    say(f"batch: run_chunk x {study.n_chunks} chunks of {study.chunk}, {repeats} time(s)")
     run_chunk(study, 0)
-    t0 = time.perf_counter()
-    for i in range(study.n_chunks):
-        run_chunk(study, i)
-    res["rollouts_per_s_batch"] = n / (time.perf_counter() - t0)
+    res["rollouts_per_s_batch"] = _median(lambda: _batch_pass(study), repeats)
     for k, key in ((1, "rollouts_per_s_dask_1_worker"), (2, "rollouts_per_s_dask_2_workers")):
         say(f"Dask: LocalCluster of {k} worker process(es)")
         client = connect(workers=k)
         try:
-            res[key] = _dask_rate(client, study)
+            client.gather(client.map(run_chunk, [study] * k, range(k), pure=False))  # warm
+            res[key] = _median(lambda: _dask_pass(client, study), repeats)
             if k == 2:
                 for size in (n // 10, n):
                     say(f"run_study end to end, {size} rollouts, 2 workers")
@@ -106,8 +120,8 @@ def study_bench(quick=False, progress=None):
 def format_study_bench(r):
     m = (r["rollouts"] // 10, r["rollouts"])
     lines = [f"Study throughput: NA on the high-speed move over random plants, {r['rollouts']} "
-             f"rollouts in chunks of {r['chunk']}, {r['cores']} cores (one run; medians are not "
-             f"taken, the ratios are what counts on a shared machine)",
+             f"rollouts in chunks of {r['chunk']}, {r['cores']} cores; medians of {r['repeats']} "
+             f"passes, all in one run (on a shared machine the ratios are what counts)",
              f"  simulate() in a Python loop       {r['rollouts_per_s_plain_loop']:9,.0f} rollouts/s",
              f"  batch, one process (run_chunk)    {r['rollouts_per_s_batch']:9,.0f} rollouts/s "
              f"({r['batch_over_plain_loop']:.2f}x the loop)",

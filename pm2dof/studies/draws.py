@@ -6,6 +6,8 @@ the fixed order of :data:`pm2dof.studies.spec.UNCERTAINTY`, so its values depend
 else (not the worker, the chunk or the other draws). The plant is the model file's
 ``[plant]`` with the draw applied; the controllers keep their own nominal model (Tables 1-2).
 """
+import functools
+
 import numpy as np
 
 from ..control.simulate import plant_truth
@@ -33,12 +35,17 @@ def draw_columns(study, n_legs):
     cols = []
     for key, _ in study.uncertainty:
         if key == "inertia_error_percent":
-            cols += [f"{key}_{p}{i + 1}" for p in INERTIAL for i in range(n_legs)]
+            cols += list(_inertia_columns(n_legs))
         else:
             cols.append(key)
     if study.payload_change and "payload_mass" not in cols:
         cols.insert(0, "payload_mass")
     return cols
+
+
+@functools.lru_cache(maxsize=8)
+def _inertia_columns(n):
+    return tuple(f"inertia_error_percent_{p}{i + 1}" for p in INERTIAL for i in range(n))
 
 
 def plant_of(model, study, values, run):
@@ -52,7 +59,7 @@ def plant_of(model, study, values, run):
             for j, p in enumerate(INERTIAL):
                 e = v[j * n:(j + 1) * n]
                 over[p] = np.asarray(base[p], dtype=float) * (1 + e / 100)
-                cols.update({f"{key}_{p}{i + 1}": e[i] for i in range(n)})
+            cols.update(zip(_inertia_columns(n), v.tolist()))
         elif key == "payload_mass":
             over["payload_mass"] = v
         elif key in ("fv_scale", "fc_scale", "stribeck_scale"):

@@ -55,6 +55,8 @@ def _bins(v, y):
     out = []
     for i, (lo, hi) in enumerate(edges):
         m = (v >= lo) & ((v <= hi) if (i == len(edges) - 1 or lo == hi) else (v < hi))
+        if not m.any():
+            continue
         out.append({"lo": float(lo), "hi": float(hi), "rpe_median": _q(y[m])["median"],
                     "pairs": int(m.sum())})
     return out
@@ -187,18 +189,24 @@ def format_report(s):
         lines.append(f"best: {best}, RMSE {g['best']['rmse']:.3e} m; "
                      f"{100 * g['within_10_percent_share']:.0f}% of the grid within 10 % of it")
     if s["runs"]:
-        lines += ["", "Repeated runs carrying theta_hat: median RMSE (m) and theta error "
-                  "(relative, identifiable directions) by run"]
-        by = {}
+        by, one_move = {}, len({r["move"] for r in s["runs"]}) == 1
         for r in s["runs"]:
-            by.setdefault((r["controller"], r["move"]), []).append(r)
-        for (c, mv), rs in by.items():
-            lines.append(f"  {c} / {mv}:")
-            lines.append("    run    " + "".join(f"{r['run']:>10d}" for r in rs))
-            lines.append("    RMSE   " + "".join(f"{_f(r['rmse_median']):>10s}" for r in rs))
-            if any(r["theta_error_median"] is not None for r in rs):
-                lines.append("    theta  " + "".join(f"{_f(r['theta_error_median'], '.4f'):>10s}"
-                                                    for r in rs))
+            label = r["controller"] if one_move else f"{r['controller']}/{r['move']}"
+            by.setdefault(label, {})[r["run"]] = r
+        names = list(by)
+        runs = sorted({r["run"] for r in s["runs"]})
+        w = max(12, *(len(n) + 1 for n in names))
+        for key, title, fmt in (("rmse_median", "median RMSE (m)", ".3e"),
+                                ("theta_error_median", "median theta error (relative, "
+                                 "identifiable directions; NA only)", ".4f")):
+            cols = [n for n in names if any(by[n][r][key] is not None for r in by[n])]
+            if not cols:
+                continue
+            lines += ["", f"Repeated runs carrying theta_hat: {title} by run",
+                      f"{'run':>4s}" + "".join(f"{n:>{w}s}" for n in cols)]
+            for r in runs:
+                lines.append(f"{r:4d}" + "".join(
+                    f"{_f(by[n][r][key] if r in by[n] else None, fmt):>{w}s}" for n in cols))
     return "\n".join(lines)
 
 
