@@ -122,6 +122,9 @@ def cmd_animate(args):
 
 def cmd_study_run(args):
     from .studies import read_study, run_study
+    if args.workers is not None and args.scheduler:
+        raise ValueError("give --workers (an embedded cluster) or --scheduler (an existing "
+                         "one), not both: an existing cluster's workers are started with it")
     study = read_study(args.study, quick=args.quick)
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,

@@ -124,6 +124,8 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     ``rollouts_per_s`` of this session.
     """
     from distributed import as_completed
+    if client is None and not scheduler and workers is not None and workers < 1:
+        raise ValueError(f"--workers must be >= 1, got {workers}")
     model = load_model(study.model_path)
     check_study(study, model)
     done = prepare_out(out, study, model)
