@@ -13,6 +13,9 @@ def _color(i):
     return f"C{i % 10}"
 
 
+_DASHES = ("-", "--", ":", "-.")
+
+
 def _rmse_ecdf(plt, cols, moves, names):
     fig, axes = plt.subplots(1, len(moves), figsize=(5.2 * len(moves), 4), squeeze=False)
     for ax, mv in zip(axes[0], moves):
@@ -21,8 +24,9 @@ def _rmse_ecdf(plt, cols, moves, names):
             x = x[np.isfinite(x)]
             if len(x):
                 ax.step(x * 1e3, np.arange(1, len(x) + 1) / len(x), where="post",
-                        color=_color(i), label=c)
+                        color=_color(i), ls=_DASHES[i % 4], label=c)
         ax.set_xscale("log")
+        ax.xaxis.set_minor_formatter(plt.NullFormatter())
         ax.set_xlabel("RMSE, eq. 41 (mm)")
         ax.set_title(f"{mv} move")
         ax.grid(alpha=0.3, which="both")
