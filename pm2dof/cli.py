@@ -145,7 +145,8 @@ def cmd_study_report(args):
     s, cols, info = run_report(args.dir, as_json=args.json)
     if not args.no_figures:
         from .figures.studies import study_figures
-        for p in study_figures(cols, s, Path(args.dir) / "figures", info.get("provenance", {})):
+        for p in study_figures(cols, s, Path(args.dir) / "figures", info.get("provenance", {}),
+                               info.get("payload_change")):
             print(f"wrote {p}", file=sys.stderr if args.json else sys.stdout)
     return 0
 

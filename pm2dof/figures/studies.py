@@ -94,8 +94,14 @@ def _grid(plt, g):
     return fig
 
 
-def _runs(plt, s):
+def _runs(plt, s, payload_change):
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
+    if payload_change:
+        after, mass = payload_change
+        for ax in (a1, a2):
+            ax.axvline(after - 0.5, color="0.5", ls="--", lw=1)
+        a2.annotate(f" payload {mass:g} kg from run {after}", (after - 0.5, 0.02), xycoords=(
+            "data", "axes fraction"), va="bottom", fontsize=8, color="0.3")
     by = {}
     for r in s["runs"]:
         by.setdefault((r["controller"], r["move"]), []).append(r)
@@ -117,11 +123,12 @@ def _runs(plt, s):
     return fig
 
 
-def study_figures(cols, summary, out_dir, prov):
+def study_figures(cols, summary, out_dir, prov, payload_change=None):
     """Write the figures of a study's rows into ``out_dir``; returns the paths.
 
     ``rmse_ecdf.png`` always; ``rpe.png`` when there are paired RPEs over a sampled
-    uncertainty; ``grid_<controller>_<move>.png`` per gain grid; ``runs.png`` for repeated runs.
+    uncertainty; ``grid_<controller>_<move>.png`` per gain grid; ``runs.png`` for repeated runs
+    (``payload_change``: the study's (after_run, kg), drawn as a line).
     """
     plt = _plt()
     out_dir = Path(out_dir)
@@ -133,7 +140,7 @@ def study_figures(cols, summary, out_dir, prov):
     for g in summary["grids"]:
         figs.append((f"grid_{g['controller']}_{g['move']}.png", lambda g=g: _grid(plt, g)))
     if summary["runs"]:
-        figs.append(("runs.png", lambda: _runs(plt, summary)))
+        figs.append(("runs.png", lambda: _runs(plt, summary, payload_change)))
     paths = []
     for name, make in figs:
         fig = make()

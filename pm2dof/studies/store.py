@@ -78,6 +78,7 @@ def prepare_out(out, study, model):
     write_json(meta, {"name": study.name, "identity": study.identity,
                       "study_file": study.path, "study_text": study.text, "quick": study.quick,
                       "rollouts": study.n_rollouts, "chunks": study.n_chunks,
+                      "runs": study.runs, "payload_change": study.payload_change,
                       "complete": False, "rows": None, "provenance": provenance(model)})
     return done
 
