@@ -16,7 +16,7 @@ from .controllers import APDController, NAController
 from ..core.errors import SingularityError, WorkspaceError
 
 __all__ = ["simulate", "SimResult", "plant_truth", "plant_vector", "rmse", "theta_truth",
-           "check_trajectory", "pose_measures", "rollout_inputs"]
+           "check_trajectory", "pose_measures", "rollout_inputs", "batch_inputs"]
 
 
 def plant_truth(model, **overrides):
@@ -227,19 +227,39 @@ def rollout_inputs(model, controller, traj, plant, theta_hat0=None):
     (N, 6), parameters p (np,), output Layout). The robot starts at rest at traj's first point,
     the controller's estimate of xe from the first (quantised) measurement, theta_hat(0) =
     ``theta_hat0`` or the controller's theta0. ``plant`` is a :func:`plant_vector`."""
+    f, X, u, P, ylay = batch_inputs(model, controller, traj, np.asarray(plant)[None],
+                                    None if theta_hat0 is None else [theta_hat0])
+    return f, X[0], u, P[0], ylay
+
+
+def batch_inputs(model, controller, traj, plants, theta_hat0=None):
+    """:func:`rollout_inputs` for K rollouts at once, for ``Function.accumulate_batch``:
+    ``plants`` (K, n_plant) rows of :func:`plant_vector`, ``theta_hat0`` None or K rows (a row
+    None: the controller's theta0). Returns (f, X (K, nx), u (N, 6), P (K, np), output Layout).
+    """
+    plants = np.asarray(plants, dtype=float)
+    K = len(plants)
     f = model.function(f"{controller.function_name}_closed_loop")
-    p = np.concatenate([controller.params, plant])
+    P = np.empty((K, len(controller.params) + plants.shape[1]))
+    P[:, :len(controller.params)] = controller.params
+    P[:, len(controller.params):] = plants
     xs, cs = model.layout("cl_state"), model.layout("ctrl_state")
-    x = np.zeros(xs.size)
-    X = xs.unpack(x)
-    X["xe"][:] = traj.xd[0]
+    X = np.zeros((K, xs.size))
+    S = xs.unpack(X)
+    S["xe"][:] = traj.xd[0]
+    C = cs.unpack(S["ctrl_state"])
     qa0 = np.empty(model.n_legs)
-    model.function("measure")(traj.xd[0], plant, qa0)
-    c0 = cs.unpack(X["ctrl_state"])
-    c0["xe_prev"][:] = model.fk(qa0)
-    c0["theta_hat"][:] = controller.theta0 if theta_hat0 is None else theta_hat0
+    measure, x0 = model.function("measure"), np.ascontiguousarray(traj.xd[0])
+    for k in range(K):   # the first (quantised) measurement depends on each plant's encoder
+        measure(x0, plants[k], qa0)
+        C["xe_prev"][k] = model.fk(qa0)
+    C["theta_hat"][:] = controller.theta0
+    if theta_hat0 is not None:
+        for k, th in enumerate(theta_hat0):
+            if th is not None:
+                C["theta_hat"][k] = th
     u = np.ascontiguousarray(np.hstack([traj.xd, traj.xd_dot, traj.xd_ddot]))
-    return f, x, u, p, model.layout("cl_output")
+    return f, X, u, P, model.layout("cl_output")
 
 
 def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_hat0=None,

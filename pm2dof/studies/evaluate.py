@@ -14,7 +14,7 @@ Runs on the workers; imports no Dask or pyarrow (the client turns columns into P
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.simulate import check_trajectory, plant_vector, rollout_inputs, theta_truth
+from ..control.simulate import batch_inputs, check_trajectory, plant_vector, theta_truth
 from ..control.trajectory import line
 from ..core.model import load_model
 from .draws import draw_columns, plant_of, sample_draw
@@ -126,20 +126,15 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
     model, ctrl, (traj, n_move) = ctx["model"], ctx["ctrls"][c], ctx["trajs"][m]
     variant = study.variants[c]
     K = len(draws)
-    theta = [None] * K
+    theta = None
     Y = None
     for r in range(study.runs):
-        X, P, rows = [], [], []
+        rows = np.array([study.rollout(c, m, d, r) for d in draws]) - row0
+        f, X, u, P, ylay = batch_inputs(model, ctrl, traj, [plants[d][r][3] for d in draws],
+                                        theta)
         for k, d in enumerate(draws):
-            truth, counts, cols, plant, _ = plants[d][r]
-            f, x, u, p, ylay = rollout_inputs(model, ctrl, traj, plant, theta[k])
-            X.append(x)
-            P.append(p)
-            row = study.rollout(c, m, d, r) - row0
-            rows.append(row)
-            for key, v in cols.items():
-                out[key][row] = v
-        X, P = np.array(X), np.array(P)
+            for key, v in plants[d][r][2].items():
+                out[key][rows[k]] = v
         if Y is None:
             Y = np.empty((K, len(traj.t), ylay.size))
         f.accumulate_batch(X, u, P, Y)
@@ -148,7 +143,6 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
         tau = Yf["tau_a"].reshape(K, -1, model.n_legs)
         status = Yf["status"].reshape(K, -1)
         th = Yf["theta_hat"].reshape(K, len(traj.t), -1)
-        rows = np.array(rows)
         _metrics(out, rows, traj.xd, xe, tau, status, n_move)
         if variant.law == "na":
             Pid = ctx["P_id"]
