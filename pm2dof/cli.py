@@ -179,7 +179,9 @@ def _study_parser(sub):
                         "row per rollout, written chunk by chunk as they finish). Interrupted? "
                         "Run the same command again: finished chunks are skipped. A different "
                         "study on a non-empty DIR is refused. Rows depend only on the study file "
-                        "(seed, draw), not on the workers or the cluster.")
+                        "(seed, draw), not on the workers or the cluster. Every key of a study "
+                        "file is listed in README 'Studies at scale'; studies/*.toml are "
+                        "commented examples.")
     r.add_argument("study", help="study file (TOML), e.g. studies/robustness.toml")
     r.add_argument("--out", required=True, metavar="DIR", help="output folder")
     r.add_argument("--workers", type=int, metavar="N",
