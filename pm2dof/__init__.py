@@ -45,6 +45,11 @@ _LAZY = {
     "split_comparison": "pm2dof.analysis.splits",
     "workspace_maps": "pm2dof.analysis.maps",
     "capability": "pm2dof.analysis.maps",
+    # identification from logs (issue 13)
+    "IdentLog": "pm2dof.analysis.ident_log",
+    "LogError": "pm2dof.analysis.ident_log",
+    "read_log": "pm2dof.analysis.ident_log",
+    "write_log": "pm2dof.analysis.ident_log",
 }
 
 __all__ = [
