@@ -67,6 +67,18 @@ def cmd_demo(args):
 
 
 def cmd_identify(args):
+    if args.excite:  # issue 13: simulated robot -> log file
+        from .analysis.excite import run_excite
+        run_excite(_model(args), args.out, excitation_file=args.excitation,
+                   duration=args.duration, quantise=not args.exact_encoders,
+                   controller=args.controller, progress=_progress)
+        return 0
+    if args.data:  # issue 13: measured log -> base parameters, physical theta
+        from .analysis.ident_report import run_identify_data
+        run_identify_data(_model(args), args.data, save=args.save, as_json=args.json,
+                          cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
+                          progress=None if args.json else _progress)
+        return 0
     from .analysis.identify import run_identify
     run_identify(_model(args), report_only=args.report, duration=args.duration, save=args.save,
                  seed=args.seed_na, progress=_progress)
@@ -179,6 +191,25 @@ def build_parser():
     p.add_argument("--save", metavar="FILE", help="write the estimate and a full theta0 as JSON")
     p.add_argument("--seed-na", action="store_true",
                    help="rerun the moves with NA seeded by the identified theta")
+    p.add_argument("--excite", action="store_true",
+                   help="run an excitation on the simulated plant (its truth, quantised encoders, "
+                   "APD tracking with Tables 1-2) and write its log to --out")
+    p.add_argument("--out", metavar="LOG", help="log (.csv or .parquet) that --excite writes")
+    p.add_argument("--excitation", metavar="FILE",
+                   help="excitation file for --excite (default: a --duration s multi-sine)")
+    p.add_argument("--exact-encoders", action="store_true",
+                   help="--excite without encoder quantisation (a noise-free log)")
+    p.add_argument("--controller", choices=["apd", "na"], default="apd",
+                   help="controller tracking the excitation in --excite (default apd)")
+    p.add_argument("--data", metavar="LOG", help="identify from a measured log (.csv or "
+                   ".parquet: t, qa1..qan, tau1..taun, optional qb1..qbn; README, "
+                   "'Identification from logs')")
+    p.add_argument("--json", action="store_true", help="--data: print the results as JSON")
+    p.add_argument("--cutoff", type=float, metavar="HZ",
+                   help="--data: low-pass cutoff (default 10 x the excitation band)")
+    p.add_argument("--min-joint-speed", type=float, metavar="RAD_S",
+                   help="--data: leave out samples with a slower active joint (default 0.1; "
+                   "0 keeps all)")
     p.set_defaults(func=cmd_identify)
     p = sub.add_parser("splits", parents=[common], help="torque splits compared in closed loop",
                        description="Simulate APD and NA with each torque split (min_norm: eq. "
