@@ -50,6 +50,10 @@ _LAZY = {
     "LogError": "pm2dof.analysis.ident_log",
     "read_log": "pm2dof.analysis.ident_log",
     "write_log": "pm2dof.analysis.ident_log",
+    "excite": "pm2dof.analysis.excite",
+    "identify_log": "pm2dof.analysis.ident_data",
+    "design_excitation": "pm2dof.analysis.excitation_design",
+    "load_excitation": "pm2dof.analysis.excitation_design",
 }
 
 __all__ = [
