@@ -81,11 +81,17 @@ def cmd_identify(args):
                    periods=args.periods, v_max=args.v_max, a_max=args.a_max,
                    tau_fraction=args.tau_fraction, seed=args.design_seed, progress=_progress)
         return 0
+    if args.monte_carlo:  # issue 13: the targets, measured over seeds
+        from .analysis.ident_study import run_monte_carlo
+        run_monte_carlo(_model(args), args.monte_carlo, excitation_file=args.excitation,
+                        duration=args.duration, as_json=args.json,
+                        progress=None if args.json else _progress)
+        return 0
     if args.data:  # issue 13: measured log -> base parameters, physical theta
         from .analysis.ident_report import run_identify_data
         run_identify_data(_model(args), args.data, save=args.save, as_json=args.json,
                           cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
-                          progress=None if args.json else _progress)
+                          seed=args.seed_na, progress=None if args.json else _progress)
         return 0
     from .analysis.identify import run_identify
     run_identify(_model(args), report_only=args.report, duration=args.duration, save=args.save,
@@ -228,6 +234,9 @@ def build_parser():
             ("--tau-fraction", float, 0.5, "torque limit / tau_max (default 0.5)"),
             ("--design-seed", int, 0, "seed of IPOPT's random start (default 0)")):
         p.add_argument(flag, type=kind, default=default, help=f"--design-excitation: {text}")
+    p.add_argument("--monte-carlo", type=int, metavar="N",
+                   help="measure the identification targets over N seeds (random plant truths "
+                   "and encoder noise; --excitation FILE, else the default multi-sine)")
     p.add_argument("--cutoff", type=float, metavar="HZ",
                    help="--data: low-pass cutoff (default 10 x the excitation band)")
     p.add_argument("--min-joint-speed", type=float, metavar="RAD_S",

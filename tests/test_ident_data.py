@@ -227,3 +227,25 @@ def test_excite_writes_the_applied_torques(m):
     r = simulate(m, pm2dof.APDController(m, on_singular="zero"), exc, quantise=False)
     assert np.array_equal(log.tau, r.tau_a) and np.array_equal(log.t, r.t)
     assert np.allclose([m.fk(a) for a in log.qa], r.xe, rtol=0, atol=1e-12)
+
+
+def test_plant_task_force_is_the_plants_inverse_dynamics(m):
+    """ident_study's plant model (used for the torque target) inverts the generated plant."""
+    from pm2dof.analysis.ident_study import plant_task_force, torque_error
+    truth = plant_truth(m)
+    pv = plant_vector(m, truth, quantise=False)
+    rng = np.random.default_rng(2)
+    xedd = np.empty(2)
+    for _ in range(10):
+        x = np.array([0.245, 0.265]) + rng.uniform(-0.03, 0.03, 2)
+        v, tau = rng.normal(0, 0.3, 2), rng.normal(0, 3, 3)
+        m.function("plant_xedd")(x, v, tau, pv, xedd)
+        q = m.ik(x)
+        assert np.allclose(plant_task_force(m, truth, q, v, xedd), m.S(q).T @ tau,
+                           rtol=1e-10, atol=1e-10)
+    # the truth's own theta misses only the Stribeck excess and the Coulomb smoothing
+    th = theta_truth(m, truth)
+    e = torque_error(m, th, truth, n=100)
+    assert 0 < e < torque_error(m, m.theta_nominal, truth, n=100)
+    assert torque_error(m, th, dict(truth, fs=np.zeros(3), coulomb_smoothing_velocity=1e-12),
+                        n=100) < 1e-10

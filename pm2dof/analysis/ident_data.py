@@ -340,9 +340,10 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
         warnings.append(f"the data do not determine the direction {what} well (±2 sigma = "
                         f"{100 * r2s:.0f} % of its size): excite more, or trust it less")
     frac_slow = st["n_slow"] / max(st["n_candidates"], 1)
-    if frac_slow > 0.5:
+    if frac_slow > 0.75:
         warnings.append(f"{100 * frac_slow:.0f} % of the samples were left out because a joint "
-                        f"moved slower than {min_joint_speed:g} rad/s: use a faster excitation")
+                        f"moved slower than {min_joint_speed:g} rad/s: the estimate rests on "
+                        f"few samples; a faster or richer excitation helps")
     sat = np.abs(log.tau) >= 0.999 * np.asarray(model.spec.limits["tau_max"])
     if sat.any():
         warnings.append(f"{int(sat.any(axis=1).sum())} rows have a torque at its limit "

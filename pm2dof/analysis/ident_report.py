@@ -86,9 +86,13 @@ def format_identification(model, log, res, ident=None):
                      "excess has no coordinate in eq. 2")
     if phys:
         act = ", ".join(phys["active_constraints"]) or "none"
-        lines += ["", f"physical theta (CasADi + IPOPT, {phys['ipopt_status'][0]}): every leg's "
-                  f"[[alpha, beta], [beta, gamma]] >= 0 and friction >= 0; active constraints: "
-                  f"{act}; residual increase {phys['objective_increase']:.3g} (relative)",
+        how = ("the least-squares base parameters are physical as they are" if
+               phys["ipopt_status"][0].startswith("not needed") else
+               f"constrained least squares, IPOPT: {phys['ipopt_status'][0]}; active "
+               f"constraints: {act}; residual increase {phys['objective_increase']:.3g} "
+               f"(relative)")
+        lines += ["", f"physical theta (every leg's [[alpha, beta], [beta, gamma]] >= 0, friction "
+                  f">= 0; CasADi + IPOPT): {how}",
                   "the directions no data can see (point masses at the common tip booked to one "
                   "leg or another) are fixed closest to the nominal theta (Tables 1-2)"]
     lines.append("theta0 (full, for NAController/APDController(theta0=...) and [nominal]):")
@@ -99,9 +103,11 @@ def format_identification(model, log, res, ident=None):
 
 
 def run_identify_data(model, path, *, save=None, as_json=False, cutoff_hz=None,
-                      min_joint_speed=None, time_tolerance=1e-3, echo=print, progress=None):
+                      min_joint_speed=None, time_tolerance=1e-3, seed=False, echo=print,
+                      progress=None):
     """``pm2dof identify --data LOG``: read, identify, print (text or JSON), optionally save
-    ``{"param_names", "theta0", ...}`` as JSON (the format ``--save`` always wrote)."""
+    ``{"param_names", "theta0", ...}`` as JSON (the format ``--save`` always wrote); ``seed``
+    reruns Table 3 with APD and NA using the identified theta."""
     from .identify import identifiability
     from .ident_data import MIN_JOINT_SPEED
     from .results import dumps, provenance, write_json
@@ -114,7 +120,13 @@ def run_identify_data(model, path, *, save=None, as_json=False, cutoff_hz=None,
                        min_joint_speed=MIN_JOINT_SPEED if min_joint_speed is None
                        else min_joint_speed)
     s = summary(model, log, res, ident)
-    echo(dumps(s) if as_json else format_identification(model, log, res, ident))
+    if seed:
+        from .ident_study import format_seeded_table3, seeded_table3
+        if progress:
+            progress("Table 3 with Tables 1-2 and with the identified theta")
+        s["table3"] = seeded_table3(model, res["theta0"])
+    echo(dumps(s) if as_json else format_identification(model, log, res, ident)
+         + ("\n\n" + format_seeded_table3(s["table3"]) if seed else ""))
     if save:
         write_json(save, {**s, "provenance": provenance(model)})
         if not as_json:
