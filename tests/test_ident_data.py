@@ -249,3 +249,13 @@ def test_plant_task_force_is_the_plants_inverse_dynamics(m):
     assert 0 < e < torque_error(m, m.theta_nominal, truth, n=100)
     assert torque_error(m, th, dict(truth, fs=np.zeros(3), coulomb_smoothing_velocity=1e-12),
                         n=100) < 1e-10
+
+
+def test_monte_carlo_reports_every_target(m, capsys):
+    from pm2dof.analysis.ident_study import TARGETS
+    assert cli.main(["identify", "--monte-carlo", "2", "--duration", "3", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    for k in ("inertial_vector", "inertial_each", "friction", "torque"):
+        assert set(d[k]) == {"median", "p90", "max", "met_fraction"} and k in TARGETS
+        assert 0 <= d[k]["median"] <= d[k]["max"] and np.isfinite(d[k]["max"])
+    assert len(d["coverage"]) == len(d["names"]) == 13 and d["seeds"] == 2

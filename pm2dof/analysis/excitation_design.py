@@ -38,7 +38,7 @@ from .ident_data import MIN_JOINT_SPEED
 
 __all__ = ["ExcitationError", "FourierExcitation", "design_excitation", "load_excitation",
            "write_excitation", "trajectory_of", "regressor_condition", "check_excitation",
-           "sample_function", "run_design"]
+           "sample_function", "excitation_trajectory", "run_design"]
 
 
 class ExcitationError(ValueError):
@@ -183,6 +183,16 @@ def sample_function(model, independent, smooth_sign=None):
                         ext["singularity_measures"](q)])
 
 
+def excitation_trajectory(model, excitation_file=None, duration=10.0):
+    """(trajectory, description): the file's excitation (:func:`load_excitation`) sampled at
+    the model's period, or without a file the default multi-sine of
+    :func:`pm2dof.analysis.identify.excitation` lasting ``duration`` s."""
+    if excitation_file is None:
+        from .identify import excitation
+        return excitation(model, duration=duration), f"the default {duration:g} s multi-sine"
+    return trajectory_of(model, load_excitation(excitation_file, model)), str(excitation_file)
+
+
 def _center(model):
     t = next(iter(model.spec.trajectories.values()))
     return (np.asarray(t["start"], float) + np.asarray(t["end"], float)) / 2
@@ -190,7 +200,7 @@ def _center(model):
 
 def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
                       tau_fraction=0.5, singularity_margin=0.1, radius=0.06, samples=250,
-                      constraint_samples=1000, safety=0.98, seed=0, max_iter=300,
+                      constraint_samples=1000, safety=0.98, seed=0, max_iter=500,
                       progress=None):
     """Design a D-optimal excitation (CasADi + IPOPT).
 

@@ -78,14 +78,9 @@ def run_excite(model, out, *, excitation_file=None, duration=4.0, quantise=True,
     """``pm2dof identify --excite --out LOG``: run an excitation on the simulated plant and
     write its log (CSV or Parquet by the suffix of ``out``). Without ``excitation_file`` the
     multi-sine of :func:`pm2dof.analysis.identify.excitation` (``duration`` s) runs."""
+    from .excitation_design import excitation_trajectory
     from .ident_log import write_log
-    if excitation_file is None:
-        from .identify import excitation
-        traj, what = excitation(model, duration=duration), f"the default {duration:g} s multi-sine"
-    else:
-        from .excitation_design import load_excitation, trajectory_of
-        exc = load_excitation(excitation_file, model)
-        traj, what = trajectory_of(model, exc), f"{excitation_file}"
+    traj, what = excitation_trajectory(model, excitation_file, duration)
     if progress:
         progress(f"running {what} on the simulated plant ({controller.upper()} tracking, "
                  f"{'17-bit' if quantise else 'exact'} encoders)")

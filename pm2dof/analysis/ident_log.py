@@ -258,8 +258,8 @@ def read_log(path, *, time_tolerance=1e-3):
 def write_log(path, log):
     """Write ``log`` (an :class:`IdentLog`) as CSV or Parquet (by the suffix), atomically.
 
-    Numbers are written with 17 significant digits, so reading the file back gives the same
-    float64 values bit for bit.
+    Numbers are written as the shortest decimal that reads back as the same float64 (Python's
+    repr), so reading the file gives the same values bit for bit.
     """
     path = Path(path)
     cols = log.columns()
@@ -273,7 +273,7 @@ def write_log(path, log):
         buf.write(",".join(cols) + "\n")
         data = np.column_stack(list(cols.values()))
         for row in data:
-            buf.write(",".join(format(x, ".17g") for x in row) + "\n")
+            buf.write(",".join(repr(float(x)) for x in row) + "\n")   # shortest exact
         write_atomic(path, buf.getvalue().encode())
     elif suffix in (".parquet", ".pq"):
         import pyarrow as pa

@@ -234,13 +234,9 @@ def format_seeded_table3(tab):
 def run_monte_carlo(model, seeds, *, excitation_file=None, duration=10.0, as_json=False,
                     echo=print, progress=None):
     """``pm2dof identify --monte-carlo N [--excitation FILE]``: the targets table."""
+    from .excitation_design import excitation_trajectory
     from .results import dumps
-    if excitation_file is None:
-        from .identify import excitation
-        traj = excitation(model, duration=duration)
-    else:
-        from .excitation_design import load_excitation, trajectory_of
-        traj = trajectory_of(model, load_excitation(excitation_file, model))
+    traj, _ = excitation_trajectory(model, excitation_file, duration)
     if progress:
         progress(f"{seeds} seeds: random plant truth and encoder noise, excite, identify")
     mc = monte_carlo(model, traj, seeds, progress=progress)
