@@ -91,7 +91,8 @@ def cmd_identify(args):
         from .analysis.ident_report import run_identify_data
         run_identify_data(_model(args), args.data, save=args.save, as_json=args.json,
                           cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
-                          seed=args.seed_na, progress=None if args.json else _progress)
+                          seed=args.seed_na, time_tolerance=args.time_tolerance,
+                          progress=None if args.json else _progress)
         return 0
     from .analysis.identify import run_identify
     run_identify(_model(args), report_only=args.report, duration=args.duration, save=args.save,
@@ -239,6 +240,8 @@ def build_parser():
                    "and encoder noise; --excitation FILE, else the default multi-sine)")
     p.add_argument("--cutoff", type=float, metavar="HZ",
                    help="--data: low-pass cutoff (default 10 x the excitation band)")
+    p.add_argument("--time-tolerance", type=float, default=1e-3, metavar="FRACTION",
+                   help="--data: largest allowed |t_k+1 - t_k - T| / T (default 1e-3)")
     p.add_argument("--min-joint-speed", type=float, metavar="RAD_S",
                    help="--data: leave out samples with a slower active joint (default 0.1; "
                    "0 keeps all)")

@@ -140,7 +140,7 @@ def _from_columns(cols, meta, source, time_tolerance):
         if bad.size:
             k = int(bad[0])
             raise LogError(f"{source}: column {c} is not finite at row {k + 1} "
-                           f"({ncol[c][k]!r}; {bad.size} such row(s)): NaN rows cannot be used, "
+                           f"({float(ncol[c][k])!r}; {bad.size} such row(s)): NaN rows cannot be used, "
                            f"cut the log or fill the gap before identifying")
     if N < MIN_ROWS:
         raise LogError(f"{source}: too short: {N} rows, need at least {MIN_ROWS}")
