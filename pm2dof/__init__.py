@@ -49,6 +49,15 @@ _LAZY = {
     "read_study": "pm2dof.studies",
     "run_study": "pm2dof.studies",
     "StudyFileError": "pm2dof.studies",
+    # identification from logs (issue 13)
+    "IdentLog": "pm2dof.analysis.ident_log",
+    "LogError": "pm2dof.analysis.ident_log",
+    "read_log": "pm2dof.analysis.ident_log",
+    "write_log": "pm2dof.analysis.ident_log",
+    "excite": "pm2dof.analysis.excite",
+    "identify_log": "pm2dof.analysis.ident_data",
+    "design_excitation": "pm2dof.analysis.excitation_design",
+    "load_excitation": "pm2dof.analysis.excitation_design",
 }
 
 __all__ = [

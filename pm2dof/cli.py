@@ -69,6 +69,33 @@ def cmd_demo(args):
 
 
 def cmd_identify(args):
+    if (args.excite or args.design_excitation) and not args.out:
+        raise ValueError("--excite and --design-excitation need --out FILE")
+    if args.excite:  # issue 13: simulated robot -> log file
+        from .analysis.excite import run_excite
+        run_excite(_model(args), args.out, excitation_file=args.excitation,
+                   duration=args.duration, quantise=not args.exact_encoders,
+                   controller=args.controller, progress=_progress)
+        return 0
+    if args.design_excitation:  # issue 13: D-optimal periodic excitation -> TOML
+        from .analysis.excitation_design import run_design
+        run_design(_model(args), args.out, base_hz=args.base_hz, harmonics=args.harmonics,
+                   periods=args.periods, v_max=args.v_max, a_max=args.a_max,
+                   tau_fraction=args.tau_fraction, seed=args.design_seed, progress=_progress)
+        return 0
+    if args.monte_carlo:  # issue 13: the targets, measured over seeds
+        from .analysis.ident_study import run_monte_carlo
+        run_monte_carlo(_model(args), args.monte_carlo, excitation_file=args.excitation,
+                        duration=args.duration, as_json=args.json,
+                        progress=None if args.json else _progress)
+        return 0
+    if args.data:  # issue 13: measured log -> base parameters, physical theta
+        from .analysis.ident_report import run_identify_data
+        run_identify_data(_model(args), args.data, save=args.save, as_json=args.json,
+                          cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
+                          seed=args.seed_na, time_tolerance=args.time_tolerance,
+                          progress=None if args.json else _progress)
+        return 0
     from .analysis.identify import run_identify
     run_identify(_model(args), report_only=args.report, duration=args.duration, save=args.save,
                  seed=args.seed_na, progress=_progress)
@@ -272,11 +299,50 @@ def build_parser():
                        "(its truth, encoder quantisation, APD tracking) and estimate the base "
                        "parameters by least squares from the measured angles and commanded "
                        "torques, with the truth beside the estimate.")
+    p.epilog = ("from logs (README, 'Identification from logs'): --design-excitation --out "
+                "exc.toml; --excite --excitation exc.toml --out run.csv (or log your robot in "
+                "that format); --data run.csv --save theta.json")
     p.add_argument("--report", action="store_true", help="identifiability only, no estimation")
     p.add_argument("--duration", type=float, default=4.0, help="excitation length, s (default 4)")
     p.add_argument("--save", metavar="FILE", help="write the estimate and a full theta0 as JSON")
     p.add_argument("--seed-na", action="store_true",
                    help="rerun the moves with NA seeded by the identified theta")
+    p.add_argument("--excite", action="store_true",
+                   help="run an excitation on the simulated plant (its truth, quantised encoders, "
+                   "APD tracking with Tables 1-2) and write its log to --out")
+    p.add_argument("--out", metavar="LOG", help="log (.csv or .parquet) that --excite writes")
+    p.add_argument("--excitation", metavar="FILE",
+                   help="excitation file for --excite (default: a --duration s multi-sine)")
+    p.add_argument("--exact-encoders", action="store_true",
+                   help="--excite without encoder quantisation (a noise-free log)")
+    p.add_argument("--controller", choices=["apd", "na"], default="apd",
+                   help="controller tracking the excitation in --excite (default apd)")
+    p.add_argument("--data", metavar="LOG", help="identify from a measured log (.csv or "
+                   ".parquet: t, qa1..qan, tau1..taun, optional qb1..qbn; README, "
+                   "'Identification from logs')")
+    p.add_argument("--json", action="store_true", help="--data: print the results as JSON")
+    p.add_argument("--design-excitation", action="store_true",
+                   help="design a D-optimal periodic excitation (Fourier series in task space, "
+                   "CasADi + IPOPT, about a minute) and write it as TOML to --out")
+    for flag, kind, default, text in (
+            ("--base-hz", float, 0.2, "base frequency f0, Hz (default 0.2: 5 s period)"),
+            ("--harmonics", int, 10, "harmonics of f0 (default 10: up to 2 Hz)"),
+            ("--periods", int, 2, "periods per run (default 2: 10 s)"),
+            ("--v-max", float, 0.5, "task speed limit, m/s (default 0.5)"),
+            ("--a-max", float, 10.0, "task acceleration limit, m/s^2 (default 10)"),
+            ("--tau-fraction", float, 0.5, "torque limit / tau_max (default 0.5)"),
+            ("--design-seed", int, 0, "seed of IPOPT's random start (default 0)")):
+        p.add_argument(flag, type=kind, default=default, help=f"--design-excitation: {text}")
+    p.add_argument("--monte-carlo", type=int, metavar="N",
+                   help="measure the identification targets over N seeds (random plant truths "
+                   "and encoder noise; --excitation FILE, else the default multi-sine)")
+    p.add_argument("--cutoff", type=float, metavar="HZ",
+                   help="--data: low-pass cutoff (default 10 x the excitation band)")
+    p.add_argument("--time-tolerance", type=float, default=1e-3, metavar="FRACTION",
+                   help="--data: largest allowed |t_k+1 - t_k - T| / T (default 1e-3)")
+    p.add_argument("--min-joint-speed", type=float, metavar="RAD_S",
+                   help="--data: leave out samples with a slower active joint (default 0.1; "
+                   "0 keeps all)")
     p.set_defaults(func=cmd_identify)
     p = sub.add_parser("splits", parents=[common], help="torque splits compared in closed loop",
                        description="Simulate APD and NA with each torque split (min_norm: eq. "

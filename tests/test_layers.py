@@ -38,7 +38,7 @@ _HEAVY = {"sympy", "casadi", "matplotlib", "dask", "distributed", "pyarrow", "sc
 THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
     "__main__": set(), "_moved": set(),
-    "analysis": {"numpy", "scipy", "casadi"},
+    "analysis": {"numpy", "scipy", "casadi", "pyarrow"},   # pyarrow: Parquet logs (ident_log)
     "bench": {"numpy", "casadi", "sympy", "derive"},    # baselines; each optional at run time
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},

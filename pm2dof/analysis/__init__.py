@@ -4,6 +4,11 @@
 * :mod:`.experiment` -- Table 3 in simulation, the Gamma = 0 ablation, repeated runs,
   sensitivity (``pm2dof table3``);
 * :mod:`.identify` -- identifiability and least squares (``pm2dof identify``);
+* identification from logs (``pm2dof identify --data / --excite / --design-excitation``):
+  :mod:`.ident_log` (the log format, LogError), :mod:`.excite` (simulated robot -> log),
+  :mod:`.ident_data` (filter, regressor, weighted LS), :mod:`.ident_consistent` (physical
+  theta, IPOPT), :mod:`.excitation_design` (D-optimal Fourier excitation, IPOPT),
+  :mod:`.ident_report` (printing, --save), :mod:`.ident_study` (the targets over seeds);
 * :mod:`.report` -- what the compiled model says over the workspace (``pm2dof report``);
 * :mod:`.results` -- atomic result files with provenance.
 

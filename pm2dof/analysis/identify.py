@@ -108,7 +108,8 @@ def excitation(model, duration=4.0, amplitude=0.02, seed=1, harmonics=4, base_hz
     """A smooth multi-sine motion around the middle of the model's first move, starting at rest.
 
     x(t) = c + sum_k a_k (1 - cos(w_k t + 0)) rotated per axis; velocity is zero at t = 0.
-    Returns an object with t, xd, xd_dot, xd_ddot (N, 2) and period, like a Trajectory.
+    Returns an object with t, xd, xd_dot, xd_ddot (N, 2), period and max_hz (the highest
+    harmonic, Hz), like a Trajectory.
     """
     rng = np.random.default_rng(seed)
     T = model.spec.sensing["sample_period"]
@@ -123,7 +124,8 @@ def excitation(model, duration=4.0, amplitude=0.02, seed=1, harmonics=4, base_hz
             xd_dot[:, axis] += a * w * np.sin(w * t)
             xd_ddot[:, axis] += a * w * w * np.cos(w * t)
     xd += c - amplitude / 2
-    return SimpleNamespace(t=t, xd=xd, xd_dot=xd_dot, xd_ddot=xd_ddot, period=T)
+    return SimpleNamespace(t=t, xd=xd, xd_dot=xd_dot, xd_ddot=xd_ddot, period=T,
+                           max_hz=base_hz * harmonics * 1.13)  # highest harmonic, Hz
 
 
 def _filtfilt(x, alpha):

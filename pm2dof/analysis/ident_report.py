@@ -1,0 +1,147 @@
+# `pm2dof identify --data LOG`: run the identification pipeline on a log, print, save theta.
+"""Text and JSON reports of :func:`pm2dof.analysis.ident_data.identify_log`."""
+import numpy as np
+
+from ..control.simulate import theta_truth
+from .ident_data import identify_log
+from .ident_log import read_log
+
+__all__ = ["format_identification", "summary", "run_identify_data", "load_theta",
+           "SIMULATED_SOURCE"]
+
+#: metadata ``source`` of a log simulated with the model file's [plant] (then the truth is known)
+SIMULATED_SOURCE = "simulated plant ([plant] of the model file)"
+
+
+def _truth_base(model, res, ident):
+    tr = theta_truth(model)
+    return tr[ident["independent"]] + ident["beta"] @ tr[ident["dependent"]]
+
+
+def summary(model, log, res, ident=None):
+    """JSON-ready numbers of one identification (the base parameters, the physical theta,
+    the filter and the residual statistics; the plant truth if the log is simulated with the
+    model file's [plant])."""
+    c = res["consistent"]
+    out = {"log": log.source, "model": model.name, "rows": len(log.t),
+           "duration_s": log.duration, "sample_period_s": log.period,
+           "filter": {"kind": "Butterworth, zero-phase (scipy.signal.sosfiltfilt)",
+                      "order": 4, "cutoff_hz": res["cutoff_hz"], "band_hz": res["band_hz"],
+                      "band_from": res["band_from"], "decimate": res["decimate"]},
+           "samples_used": res["samples"], "samples_left_out_slow": res["left_out_slow"],
+           "min_joint_speed_rad_s": res["min_joint_speed"],
+           "residual_rms_N": res["rms"], "r2": res["r2"], "residual_lag1": res["lag1"],
+           "condition_number": res["condition_number"],
+           "base_parameters": res["names"], "estimate": res["estimate"],
+           "two_sigma": 2 * res["std"], "nominal": res["nominal"],
+           "param_names": list(model.param_names), "theta0": res["theta0"],
+           "theta_least_squares": res["theta_ls"], "warnings": res["warnings"]}
+    if c is not None:
+        out["physical"] = {"base": c["base"], "active_constraints": c["active"],
+                           "ipopt_status": list(c["status"]),
+                           "objective_increase": c["objective"] - c["unconstrained_objective"]}
+    if ident is not None and log.meta.get("source") == SIMULATED_SOURCE:
+        out["truth"] = _truth_base(model, res, ident)
+    return out
+
+
+def format_identification(model, log, res, ident=None):
+    """The printed report of ``pm2dof identify --data``."""
+    s = summary(model, log, res, ident)
+    f = s["filter"]
+    band = (f"{f['cutoff_hz']:.4g} Hz = {f['cutoff_hz'] / f['band_hz']:.3g} x the excitation "
+            f"band {f['band_hz']:.4g} Hz ({f['band_from']})" if f["band_hz"] else
+            f"{f['cutoff_hz']:.4g} Hz (given)")
+    lines = [
+        f"identification from {log.source}: {len(log.t)} rows, {log.duration:.3f} s at T = "
+        f"{log.period * 1e3:.4g} ms, model {model.name!r} ({model.n_legs} legs)",
+        f"filter: 4th-order Butterworth, zero-phase (sosfiltfilt), cutoff {band}; the same "
+        f"filter on every regressor column and on S^T tau, then decimated by {f['decimate']}",
+        f"samples: {s['samples_used']} used ({2 * s['samples_used']} equations), "
+        f"{s['samples_left_out_slow']} left out (a joint slower than "
+        f"{s['min_joint_speed_rad_s']:g} rad/s)",
+        f"residual: rms {s['residual_rms_N'][0]:.4g} N (x), {s['residual_rms_N'][1]:.4g} N (y); "
+        f"R^2 {s['r2'][0]:.6f}, {s['r2'][1]:.6f}; lag-1 autocorrelation {s['residual_lag1']:.2f} "
+        f"(sigma from a Newey-West covariance); condition number {s['condition_number']:.4g}",
+        "",
+    ]
+    truth = s.get("truth")
+    phys = s.get("physical")
+    head = f"{'base parameter':38s} {'estimate':>10s} {'+-2 sigma':>10s} {'nominal':>10s}"
+    head += f" {'physical':>10s}" if phys else ""
+    head += f" {'truth':>10s}" if truth is not None else ""
+    lines.append(head)
+    for k, name in enumerate(s["base_parameters"]):
+        row = (f"{name[:38]:38s} {s['estimate'][k]:10.5f} {s['two_sigma'][k]:10.5f} "
+               f"{s['nominal'][k]:10.5f}")
+        row += f" {phys['base'][k]:10.5f}" if phys else ""
+        if truth is not None:
+            row += f" {truth[k]:10.5f}"
+            if abs(s["estimate"][k] - truth[k]) > s["two_sigma"][k]:
+                row += "  (truth outside +-2 sigma)"
+        lines.append(row)
+    if truth is not None:
+        lines.append("truth: the simulated plant's ([plant] of the model file, payload booked to "
+                     "its leg), shown because this log says it was simulated; the Stribeck "
+                     "excess has no coordinate in eq. 2")
+    if phys:
+        act = ", ".join(phys["active_constraints"]) or "none"
+        how = ("the least-squares base parameters are physical as they are" if
+               phys["ipopt_status"][0].startswith("not needed") else
+               f"constrained least squares, IPOPT: {phys['ipopt_status'][0]}; active "
+               f"constraints: {act}; residual increase {phys['objective_increase']:.3g} "
+               f"(relative)")
+        lines += ["", f"physical theta (every leg's [[alpha, beta], [beta, gamma]] >= 0, friction "
+                  f">= 0; CasADi + IPOPT): {how}",
+                  "the directions no data can see (point masses at the common tip booked to one "
+                  "leg or another) are fixed closest to the nominal theta (Tables 1-2)"]
+    lines.append("theta0 (full, for NAController/APDController(theta0=...) and [nominal]):")
+    lines += [f"  {n:8s} {v:10.6f}" for n, v in zip(s["param_names"], s["theta0"])]
+    for w in s["warnings"]:
+        lines.append(f"warning: {w}")
+    return "\n".join(lines)
+
+
+def run_identify_data(model, path, *, save=None, as_json=False, cutoff_hz=None,
+                      min_joint_speed=None, time_tolerance=1e-3, seed=False, echo=print,
+                      progress=None):
+    """``pm2dof identify --data LOG``: read, identify, print (text or JSON), optionally save
+    ``{"param_names", "theta0", ...}`` as JSON (the format ``--save`` always wrote); ``seed``
+    reruns Table 3 with APD and NA using the identified theta."""
+    from .identify import identifiability
+    from .ident_data import MIN_JOINT_SPEED
+    from .results import dumps, provenance, write_json
+    log = read_log(path, time_tolerance=time_tolerance)
+    if progress:
+        progress(f"read {path}: {len(log.t)} rows; filtering, stacking the base regressor, "
+                 f"weighted and physically constrained least squares")
+    ident = identifiability(model)
+    res = identify_log(model, log, ident=ident, cutoff_hz=cutoff_hz,
+                       min_joint_speed=MIN_JOINT_SPEED if min_joint_speed is None
+                       else min_joint_speed)
+    s = summary(model, log, res, ident)
+    if seed:
+        from .ident_study import format_seeded_table3, seeded_table3
+        if progress:
+            progress("Table 3 with Tables 1-2 and with the identified theta")
+        s["table3"] = seeded_table3(model, res["theta0"])
+    echo(dumps(s) if as_json else format_identification(model, log, res, ident)
+         + ("\n\n" + format_seeded_table3(s["table3"]) if seed else ""))
+    if save:
+        write_json(save, {**s, "provenance": provenance(model)})
+        if not as_json:
+            echo(f"saved {save} (theta0: use it with NAController(model, theta0=...))")
+    return res
+
+
+def load_theta(path, model):
+    """theta0 (p,) from a JSON written by ``pm2dof identify --save`` (checks the names)."""
+    import json
+    d = json.loads(open(path).read())
+    if list(d.get("param_names", [])) != list(model.param_names):
+        raise ValueError(f"{path}: param_names {d.get('param_names')} do not match model "
+                         f"{model.name!r} ({list(model.param_names)})")
+    th = np.asarray(d["theta0"], dtype=float)
+    if th.shape != (len(model.param_names),) or not np.isfinite(th).all():
+        raise ValueError(f"{path}: theta0 must be {len(model.param_names)} finite numbers")
+    return th
