@@ -53,7 +53,7 @@ def make_trajectory(model, move, period):
 
 
 def _context(study):
-    key = (study.model_path, study.text, study.quick)
+    key = (study.model_path, study.variants, study.moves, study.settle_time)   # what ctx holds
     ctx = _CACHE.get(key)
     if ctx is None:
         from ..analysis.identify import identifiability
