@@ -929,6 +929,37 @@ Function_time_calls(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
 
 /* ---- f.accumulate(x, u_seq, p, y_seq) ---- */
 
+/* One rollout x_{k+1}, y_k = f(x_k, u_k, p) for k < steps, without the GIL: x holds the final
+ * state on return (or, if step *k fails, the state before it); returns CasADi's code. */
+static int
+rollout(FunctionObject *f, Work *w, double *x, const double *u, const double *p, double *y,
+        Py_ssize_t steps, Py_ssize_t *k_out)
+{
+    const Py_ssize_t nx = f->nnz[0], nu = f->nnz[1], ny = f->nnz[4];
+    const casadi_real **arg = w->arg;
+    casadi_real **res = w->res;
+    double *cur = x, *nxt = w->xbuf;
+    int rc = 0;
+    Py_ssize_t k;
+    for (k = 0; k < steps; k++) {
+        arg[0] = cur;
+        arg[1] = u + k * nu;
+        arg[2] = p;
+        res[0] = nxt;
+        res[1] = y ? y + k * ny : NULL;
+        rc = f->eval(arg, res, w->iw, w->w, w->mem);
+        if (rc != 0)
+            break; /* cur still holds x_k, the input of the failed step */
+        double *t = cur;
+        cur = nxt;
+        nxt = t;
+    }
+    if (cur != x)
+        memcpy(x, cur, (size_t)nx * sizeof(double));
+    *k_out = k;
+    return rc;
+}
+
 static PyObject *
 Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
                     PyObject *kwnames)
@@ -1010,32 +1041,9 @@ Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
 
     int rc = 0;
     Py_ssize_t k = 0;
-    {
-        eval_fn eval = f->eval;
-        const casadi_real **arg = w->arg;
-        casadi_real **res = w->res;
-        casadi_int *iw = w->iw;
-        casadi_real *wk = w->w;
-        int mem = w->mem;
-        double *cur = x, *nxt = w->xbuf;
-        Py_BEGIN_ALLOW_THREADS
-        for (k = 0; k < steps; k++) {
-            arg[0] = cur;
-            arg[1] = u + k * nu;
-            arg[2] = p;
-            res[0] = nxt;
-            res[1] = y ? y + k * ny : NULL;
-            rc = eval(arg, res, iw, wk, mem);
-            if (rc != 0)
-                break; /* cur still holds x_k, the input of the failed step */
-            double *t = cur;
-            cur = nxt;
-            nxt = t;
-        }
-        if (cur != x)
-            memcpy(x, cur, (size_t)nx * sizeof(double));
-        Py_END_ALLOW_THREADS
-    }
+    Py_BEGIN_ALLOW_THREADS
+    rc = rollout(f, w, x, u, p, y, steps, &k);
+    Py_END_ALLOW_THREADS
     work_done(f, w, held);
     if (rc != 0) {
         PyErr_Format(EvalError,
@@ -1434,36 +1442,10 @@ Function_accumulate_batch(PyObject *self, PyObject *const *args, Py_ssize_t narg
     }
     int rc = 0;
     Py_ssize_t r = 0, k = 0;
-    {
-        eval_fn eval = f->eval;
-        const casadi_real **arg = w->arg;
-        casadi_real **res = w->res;
-        casadi_int *iw = w->iw;
-        casadi_real *wk = w->w;
-        int mem = w->mem;
-        Py_BEGIN_ALLOW_THREADS
-        for (r = 0; r < K && rc == 0; r++) {
-            double *x = X + r * nx, *cur = x, *nxt = w->xbuf;
-            const double *p = P + r * np_;
-            double *y = Y ? Y + r * steps * ny : NULL;
-            for (k = 0; k < steps; k++) {
-                arg[0] = cur;
-                arg[1] = u + k * nu;
-                arg[2] = p;
-                res[0] = nxt;
-                res[1] = y ? y + k * ny : NULL;
-                rc = eval(arg, res, iw, wk, mem);
-                if (rc != 0)
-                    break;
-                double *t = cur;
-                cur = nxt;
-                nxt = t;
-            }
-            if (cur != x)
-                memcpy(x, cur, (size_t)nx * sizeof(double));
-        }
-        Py_END_ALLOW_THREADS
-    }
+    Py_BEGIN_ALLOW_THREADS
+    for (r = 0; r < K && rc == 0; r++)
+        rc = rollout(f, w, X + r * nx, u, P + r * np_, Y ? Y + r * steps * ny : NULL, steps, &k);
+    Py_END_ALLOW_THREADS
     work_done(f, w, held);
     if (rc != 0) {
         PyErr_Format(EvalError,
