@@ -301,8 +301,12 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     if progress:
         progress(f"IPOPT: {4 * L + 2} coefficients, log det over {samples} samples, "
                  f"{len(lbg)} constraints at {constraint_samples} samples per period")
+    opts = {}
+    if progress:    # IPOPT's iterations reported as they happen (about a minute in all)
+        watch = _IterationProgress(z.numel(), len(lbg), progress, t_start)
+        opts["iteration_callback"] = watch
     solver = ca.nlpsol("excitation", "ipopt", {"x": z, "f": objective, "g": ca.vertcat(*g)},
-                       {"ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
+                       {**opts, "ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
                         "ipopt.hessian_approximation": "limited-memory",
                         "ipopt.max_iter": int(max_iter), "ipopt.tol": 1e-6,
                         "ipopt.acceptable_tol": 1e-4, "ipopt.acceptable_iter": 10,
@@ -324,6 +328,54 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
             "ipopt_iterations": stats["iter_count"],
             "design_seconds": round(time.perf_counter() - t_start, 2)}
     return FourierExcitation(exc.base_hz, exc.periods, exc.center, exc.a, exc.b, info)
+
+
+def _iteration_progress_class():
+    import casadi as ca
+
+    class IterationProgress(ca.Callback):
+        """CasADi iteration callback: a progress line every ``every`` IPOPT iterations."""
+
+        def __init__(self, nx, ng, progress, t_start, every=25):
+            ca.Callback.__init__(self)
+            self.nx, self.ng, self.progress, self.t_start = nx, ng, progress, t_start
+            self.every, self.iteration = every, 0
+            self.construct("excitation_progress", {})
+
+        def get_n_in(self):
+            return ca.nlpsol_n_out()
+
+        def get_n_out(self):
+            return 1
+
+        def get_name_in(self, i):
+            return ca.nlpsol_out(i)
+
+        def get_name_out(self, i):
+            return "ret"
+
+        def get_sparsity_in(self, i):
+            name = ca.nlpsol_out(i)
+            if name == "f":
+                return ca.Sparsity.scalar()
+            if name in ("x", "lam_x"):
+                return ca.Sparsity.dense(self.nx)
+            if name in ("g", "lam_g"):
+                return ca.Sparsity.dense(self.ng)
+            return ca.Sparsity(0, 0)
+
+        def eval(self, arg):
+            self.iteration += 1
+            if self.iteration % self.every == 0:
+                self.progress(f"IPOPT iteration {self.iteration}: log det {-float(arg[1]):.3f}, "
+                              f"{time.perf_counter() - self.t_start:.0f} s")
+            return [0]
+
+    return IterationProgress
+
+
+def _IterationProgress(*args):
+    return _iteration_progress_class()(*args)
 
 
 def _with_rest(exc):
