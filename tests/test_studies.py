@@ -94,7 +94,6 @@ def _all_rows(study):
      "missing"),
     (("runs = 1", "runs = 3\n[payload_change]\nafter_run = 3\npayload_mass = 1.0"),
      r"payload_change\.after_run", "must be < study.runs"),
-    (("model = ", "model = \"nowhere.toml\"\nx_model = "), r"study\.(model|x_model)", ""),
 ])
 def test_bad_study_files_name_the_key(tmp_path, edit, key, reason):
     text = BASE.replace(*edit, 1)
@@ -119,8 +118,8 @@ def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any
                        'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
     s = read_study(_write(tmp_path, far))
     m = pm2dof.load_model(MODEL)
-    with pytest.raises(StudyFileError, match=r"study\.moves\[1\] \('far'\): .*WorkspaceError|"
-                       r"study\.moves\[1\] \('far'\): trajectory sample"):
+    with pytest.raises(StudyFileError, match=r"study\.moves\[1\] \('far'\): trajectory sample "
+                       r"\d+ .*(singularity|reach)"):
         check_study(s, m)
     out = tmp_path / "out"
     from pm2dof.studies import run_study
