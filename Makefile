@@ -2,24 +2,26 @@
 PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
-MODEL  ?= models/shang2010.toml
+MODEL  ?= pm2dof/models/shang2010.toml
 STAMP  := $(VENV)/.installed-stamp
 OUT    ?= out
 
-# one compiled library per generated model folder: generated/<name>/lib<name>.so
-MODEL_DIRS := $(patsubst %/manifest.json,%,$(wildcard generated/*/manifest.json))
+# one compiled library per shipped model: pm2dof/generated/<name>/lib<name>.so
+MODEL_DIRS := $(patsubst %/manifest.json,%,$(wildcard pm2dof/generated/*/manifest.json))
 LIBS := $(foreach d,$(MODEL_DIRS),$(d)/lib$(notdir $(d)).so)
 
-.PHONY: install derive derive-all libs test demo bench c-example clean help
+.PHONY: install derive derive-all libs test check-install dist demo bench c-example clean help
 
 help:
 	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
 	@echo "make test     set up .venv, build, run the test suite"
-	@echo "make derive   re-derive $(MODEL) into generated/<name>/ and compile it (MODEL=path)"
-	@echo "make derive-all  re-derive every models/*.toml (after a change to derive/)"
+	@echo "make derive   re-derive $(MODEL) into pm2dof/generated/<name>/ and compile it (MODEL=path)"
+	@echo "make derive-all  re-derive every shipped model (after a change to pm2dof/derive/)"
+	@echo "make dist     build the sdist and the wheel into dist/"
+	@echo "make check-install  build the wheel, install it in a fresh venv outside the checkout, smoke-test it"
 	@echo "make bench    controller step-time benchmark"
 	@echo "make c-example  standalone C: NA against the compiled plant, paced at 2 ms"
-	@echo "make install  only create .venv, install pm2dof and compile the generated C"
+	@echo "make install  only create .venv, install pm2dof (editable) and compile the generated C"
 
 $(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -38,13 +40,20 @@ libs: $(LIBS)
 install: $(STAMP) libs
 
 derive: $(STAMP)
-	$(PY) -m derive $(MODEL)
+	$(VENV)/bin/pm2dof derive $(MODEL)
 
 derive-all: $(STAMP)
-	for m in models/*.toml; do $(PY) -m derive $$m || exit 1; done
+	for m in pm2dof/models/*.toml; do $(VENV)/bin/pm2dof derive $$m || exit 1; done
 
 test: install
 	$(PY) -m pytest -q
+
+dist: $(STAMP)
+	rm -rf dist
+	$(PY) -m build --outdir dist .
+
+check-install: dist
+	bash tests/install/smoke.sh dist
 
 demo: install
 	$(VENV)/bin/pm2dof demo --out $(OUT)
@@ -56,4 +65,4 @@ c-example: install
 	$(MAKE) -C examples/c run
 
 clean:
-	rm -rf $(VENV) build pm2dof/*.so pm2dof/*/*.so generated/*/*.so $(OUT)
+	rm -rf $(VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT)

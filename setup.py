@@ -1,9 +1,46 @@
-"""Build the pm2dof.core._cbind C extension (project metadata lives in pyproject.toml)."""
+"""Build the pm2dof.core._cbind C extension and the shipped models' libraries (project metadata
+lives in pyproject.toml).
+
+The shipped models' generated C (pm2dof/generated/<name>/<name>.c) is compiled into
+lib<name>.so beside it, so a wheel needs no compiler at install time. In a wheel the
+libraries use portable flags (no -march=native); in an editable install they are built in place
+for this machine.
+"""
+import importlib.util
+from pathlib import Path
 
 from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+HERE = Path(__file__).resolve().parent
+
+
+def _build_module():
+    """pm2dof/core/build.py (standard library only), without importing the pm2dof package."""
+    spec = importlib.util.spec_from_file_location("_pm2dof_build", HERE / "pm2dof/core/build.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+class BuildExtWithModels(build_ext):
+    """build_ext, then compile every shipped model's generated C into its library."""
+
+    def run(self):
+        super().run()
+        build = _build_module()
+        for c_file in sorted((HERE / "pm2dof" / "generated").glob("*/*.c")):
+            rel = c_file.relative_to(HERE).parent / f"lib{c_file.stem}.so"
+            target = HERE / rel if self.inplace else Path(self.build_lib) / rel
+            if self.inplace and build.library_is_fresh(c_file, target):
+                continue
+            build.compile_library(c_file, target, portable=not self.inplace)
+            print(f"compiled {rel}")
+
 
 setup(
     ext_modules=[
         Extension("pm2dof.core._cbind", ["pm2dof/core/_cbind.c"], extra_compile_args=["-O2"]),
     ],
+    cmdclass={"build_ext": BuildExtWithModels},
 )

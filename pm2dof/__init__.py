@@ -34,6 +34,7 @@ from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, si
 from .control.trajectory import PAPER_MOVES, Trajectory, TrajectoryError, line, paper_move
 from .core.errors import ModelFileError, SingularityError, StaleGeneratedCodeError, WorkspaceError
 from .core.model import Model, load_model
+from .core.version import __version__
 
 # analyses (layer 3): resolved on first access by __getattr__ below. name -> module
 _LAZY = {
@@ -61,6 +62,7 @@ _LAZY = {
 }
 
 __all__ = [
+    "__version__",
     # layer 1: the model
     "load_model", "Model",
     # layer 2: control

@@ -13,10 +13,14 @@ Typical use:
   pm2dof study run S.toml --out DIR   many rollouts on Dask (robustness, gains, adaptation)
   pm2dof study report DIR     summary tables and figures of a study's results
   pm2dof bench [--json]       controller step time: C, Python binding, CasADi, NumPy, SymPy
-  pm2dof derive MODEL.toml    re-derive a model file into generated/<name>/ and compile it
+  pm2dof models               the shipped models, with their descriptions
+  pm2dof derive MYROBOT.toml  derive your own model file: C into generated/MYROBOT/ beside it
 
-Every command takes --model PATH (default models/shang2010.toml). Run
-`pm2dof COMMAND --help` for the details of one command.
+The model: every command that uses one takes --model NAME|PATH, a shipped model's name
+(`pm2dof models` lists them) or your model file (default: shang2010, the paper's robot), and
+--generated DIR when its generated C is not in the default folder (generated/<stem>/ beside
+the model file). Where a file names its model (a study file), that model is the default and
+--model overrides it. Run `pm2dof COMMAND --help` for the details of one command.
 """
 import argparse
 import sys
@@ -32,7 +36,38 @@ def _progress(msg):
 
 def _model(args):
     from .core.model import load_model
-    return load_model(args.model)
+    return load_model(args.model, args.generated)
+
+
+def cmd_models(args):
+    from .core.model_file import read_model_file
+    from .core.paths import shipped_models
+    rows = []
+    for name, (path, desc) in shipped_models().items():
+        spec = read_model_file(path)
+        rows.append((name, f"{spec.n_legs} legs", desc))
+    w = max(len(r[0]) for r in rows)
+    for name, legs, desc in rows:
+        print(f"{name:{w}s}  {legs}  {desc}")
+    print(f"\nLoad one with --model NAME or pm2dof.load_model(NAME). To start your own robot, "
+          f"copy one (pm2dof models --copy NAME DIR) and run pm2dof derive DIR/NAME.toml.")
+    return 0
+
+
+def cmd_models_copy(args):
+    import shutil
+    from pathlib import Path
+    from .core.paths import resolve_model
+    src = resolve_model(args.copy[0])
+    dest = Path(args.copy[1]).expanduser()
+    if dest.is_dir():
+        dest = dest / src.name
+    if dest.exists():
+        raise FileExistsError(f"{dest} exists; not overwritten")
+    dest.parent.mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(src, dest)
+    print(f"wrote {dest}. Edit it (keep or change [model].name), then: pm2dof derive {dest}")
+    return 0
 
 
 # one dispatcher per command: load what it needs, call its layer, print
@@ -43,8 +78,13 @@ def cmd_report(args):
 
 
 def cmd_derive(args):
-    from .core.build import derive
-    return derive(args.path, build=not args.no_build)
+    if args.path and args.model and args.path != args.model:
+        raise ValueError(f"give the model once: positional {args.path!r} or --model "
+                         f"{args.model!r}, not both")
+    from .derive.run import derive  # needs the [derive] extra (SymPy, CasADi); main() says so
+    derive(args.path or args.model, args.out, force=args.force, build=not args.no_build,
+           progress=lambda msg: print(msg, flush=True))
+    return 0
 
 
 def cmd_table3(args):
@@ -148,11 +188,15 @@ def cmd_animate(args):
 
 
 def cmd_study_run(args):
-    from .studies import read_study, run_study
+    from .studies import read_study, resolve_study, run_study
     if args.workers is not None and args.scheduler:
         raise ValueError("give --workers (an embedded cluster) or --scheduler (an existing "
                          "one), not both: an existing cluster's workers are started with it")
-    study = read_study(args.study, quick=args.quick)
+    study = read_study(resolve_study(args.study), quick=args.quick)
+    if args.model is not None:  # the study file names its model; --model overrides it
+        import dataclasses
+        from .core.paths import resolve_model
+        study = dataclasses.replace(study, model_path=str(resolve_model(args.model).resolve()))
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
                         timeout=args.timeout, progress=not args.no_progress)
@@ -163,6 +207,20 @@ def cmd_study_run(args):
     print(f"{res['rows']} rows in {args.out}/results ({res['skipped']} of {res['chunks']} chunks "
           f"were already there; {res['seconds']:.1f} s, {res['rollouts_per_s']:,.0f} "
           f"rollouts/s). Next: pm2dof study report {args.out}")
+    return 0
+
+
+def cmd_study_show(args):
+    from .studies import SHIPPED_STUDIES, resolve_study
+    if args.name is None:
+        for f in sorted(SHIPPED_STUDIES.glob("*.toml")):
+            print(f.stem)
+        return 0
+    path = resolve_study(args.name)
+    if not path.is_file():
+        raise ValueError(f"no study file {path} (shipped: "
+                         f"{', '.join(f.stem for f in sorted(SHIPPED_STUDIES.glob('*.toml')))})")
+    sys.stdout.write(path.read_text())
     return 0
 
 
@@ -190,15 +248,15 @@ def _study_parser(sub):
     p = sub.add_parser("study", help="many-rollout studies on Dask (run, report, bench)",
                        description="Studies run thousands to millions of closed-loop rollouts "
                        "(controller x move x random plant x repetition) described by a study "
-                       "file (TOML; see studies/*.toml), on Dask: an embedded LocalCluster by "
+                       "file (TOML), on Dask: an embedded LocalCluster by "
                        "default, or an existing cluster with --scheduler. Rows (one per "
                        "rollout) go to Parquet in DIR/results/.",
                        formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
                            "examples:\n"
-                           "  pm2dof study run studies/robustness.toml --quick --out out/rob\n"
+                           "  pm2dof study run robustness --quick --out out/rob\n"
                            "  pm2dof study report out/rob\n"
                            "  dask scheduler --port 8786 &  dask worker tcp://HOST:8786 &\n"
-                           "  pm2dof study run studies/gains.toml --scheduler tcp://HOST:8786 "
+                           "  pm2dof study run gains --scheduler tcp://HOST:8786 "
                            "--out out/gains"))
     ssub = p.add_subparsers(dest="study_command", metavar="SUBCOMMAND", required=True)
     r = ssub.add_parser("run", help="run every rollout of a study file",
@@ -207,9 +265,13 @@ def _study_parser(sub):
                         "Run the same command again: finished chunks are skipped. A different "
                         "study on a non-empty DIR is refused. Rows depend only on the study file "
                         "(seed, draw), not on the workers or the cluster. Every key of a study "
-                        "file is listed in README 'Studies at scale'; studies/*.toml are "
-                        "commented examples.")
-    r.add_argument("study", help="study file (TOML), e.g. studies/robustness.toml")
+                        "file is listed in README 'Studies at scale'; the shipped studies "
+                        "(robustness, gains, adaptation) are commented examples: see them with "
+                        "`pm2dof study show NAME`.")
+    r.add_argument("study", help="study file (TOML), or a shipped study's name: robustness, "
+                   "gains, adaptation")
+    r.add_argument("--model", metavar="NAME|PATH", help="run the study on this model instead of "
+                   "the one its file names")
     r.add_argument("--out", required=True, metavar="DIR", help="output folder")
     r.add_argument("--workers", type=int, metavar="N",
                    help="worker processes of the embedded cluster (default: one per core)")
@@ -222,6 +284,12 @@ def _study_parser(sub):
                    help="seconds to wait for the scheduler and its workers (default 10)")
     r.add_argument("--no-progress", action="store_true", help="no progress line")
     r.set_defaults(func=cmd_study_run)
+    r = ssub.add_parser("show", help="print a shipped study file (a commented example)",
+                        description="Print a shipped study file, or list them without NAME. "
+                        "Start your own: pm2dof study show robustness > my_study.toml, edit its "
+                        "model key (a shipped model's name or a path relative to the study file)")
+    r.add_argument("name", nargs="?", metavar="NAME", help="robustness, gains or adaptation")
+    r.set_defaults(func=cmd_study_show)
     r = ssub.add_parser("report", help="summary tables and figures of a study's results",
                         description="Read DIR/results and print: RMSE (eq. 41) per controller "
                         "and move; the RPE of every NA variant over APD on the same plants; the "
@@ -255,9 +323,23 @@ def build_parser():
     ap = argparse.ArgumentParser(prog="pm2dof", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="command", metavar="COMMAND")
+    from .core.version import __version__
+    ap.add_argument("--version", action="version", version=f"pm2dof {__version__}")
     common = argparse.ArgumentParser(add_help=False)
-    common.add_argument("--model", default=None, metavar="PATH",
-                        help="model file (default: models/shang2010.toml, the paper's robot)")
+    common.add_argument("--model", default=None, metavar="NAME|PATH",
+                        help="a shipped model's name (pm2dof models) or your model file "
+                        "(default: shang2010, the paper's robot)")
+    common.add_argument("--generated", default=None, metavar="DIR",
+                        help="folder of the model's generated C (default: generated/<stem>/ "
+                        "beside the model file; shipped models: inside pm2dof)")
+    p = sub.add_parser("models", help="list the shipped models",
+                       description="List the models that come with pm2dof: their name (for "
+                       "--model NAME and load_model(NAME)), leg count and description. With "
+                       "--copy NAME DIR, copy one into a folder of yours as a starting point "
+                       "for your own robot.")
+    p.add_argument("--copy", nargs=2, metavar=("NAME", "DIR"),
+                   help="copy shipped model NAME's file into DIR (then edit and pm2dof derive it)")
+    p.set_defaults(func=lambda a: cmd_models_copy(a) if a.copy else cmd_models(a))
 
     p = sub.add_parser("report", parents=[common], help="model report over the workspace",
                        description="Print the nominal parameters, Me at the middle of the "
@@ -412,11 +494,25 @@ def build_parser():
     p.add_argument("--json", action="store_true", help="print the results as JSON")
     p.add_argument("--quick", action="store_true", help="few repeats (a few seconds; for tests)")
     p.set_defaults(func=cmd_bench)
-    p = sub.add_parser("derive", help="derive a model file and generate + compile its C",
-                       description="Derive MODEL.toml with SymPy, generate C with CasADi into "
-                       "generated/<name>/ (other models' code is left alone) and compile it. "
-                       "Needs the build-time extras (pip install -e '.[derive]').")
-    p.add_argument("path", help="model file (TOML)")
+    p = sub.add_parser("derive", parents=[common],
+                       help="derive a model file and generate + compile its C",
+                       description="Derive MODEL (a model file, TOML) with SymPy, generate C "
+                       "with CasADi, and compile it: MODEL.c, MODEL.h, manifest.json and "
+                       "libMODEL.so go into --out, by default generated/<stem>/ beside the model "
+                       "file (~/robots/myrobot.toml -> ~/robots/generated/myrobot/), where "
+                       "load_model and --model find them. A folder generated from another model "
+                       "file is not overwritten without --force. Needs the derivation extra: "
+                       "pip install 'pm2dof[derive]'.",
+                       formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
+                           "examples:\n"
+                           "  pm2dof models --copy shang2010 ~/robots   # a model file to edit\n"
+                           "  pm2dof derive ~/robots/shang2010.toml\n"
+                           "  pm2dof table3 --model ~/robots/shang2010.toml"))
+    p.add_argument("path", nargs="?", metavar="MODEL", help="model file (the same as --model)")
+    p.add_argument("--out", metavar="DIR", help="folder for the generated code (default: "
+                   "generated/<stem>/ beside the model file)")
+    p.add_argument("--force", action="store_true",
+                   help="overwrite a folder that holds code generated from another model file")
     p.add_argument("--no-build", action="store_true", help="generate C but do not compile it")
     p.set_defaults(func=cmd_derive)
     return ap
@@ -428,6 +524,12 @@ def _run_errors():
     return mod.StudyRunError if mod else ValueError
 
 
+#: optional dependencies -> the extra that installs them (pyproject.toml)
+_EXTRAS = {"sympy": "derive", "casadi": "derive", "dask": "studies", "distributed": "studies",
+           "pyarrow": "studies", "scipy": "ident"}
+_COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies"}
+
+
 def main(argv=None):
     from .analysis import results
     ap = build_parser()
@@ -436,10 +538,20 @@ def main(argv=None):
     if not getattr(args, "func", None):
         ap.print_help()
         return 2
+    from .core.build import BuildError
     try:
         return args.func(args)
-    except (ModelFileError, StaleGeneratedCodeError, ValueError, _run_errors()) as exc:  # typed
+    except (ModelFileError, StaleGeneratedCodeError, ValueError, BuildError, FileExistsError,
+            _run_errors()) as exc:  # typed
         print(f"pm2dof: error: {exc}", file=sys.stderr)
+        return 2
+    except ModuleNotFoundError as exc:
+        module = (exc.name or "").split(".")[0]
+        if module not in _EXTRAS:
+            raise
+        extra = _COMMAND_EXTRAS.get(args.command, _EXTRAS[module])
+        print(f"pm2dof: error: `pm2dof {args.command}` needs {exc.name}, which is not "
+              f"installed: pip install 'pm2dof[{extra}]'", file=sys.stderr)
         return 2
     except BrokenPipeError:  # output piped into `head` and the like
         sys.stderr.close()

@@ -21,10 +21,11 @@ import numpy as np
 import pytest
 
 import pm2dof
+from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.core.model_file import read_model_file
 
 REPO = Path(__file__).resolve().parent.parent
-MODEL_FILES = sorted((REPO / "models").glob("*.toml"))
+MODEL_FILES = sorted(SHIPPED_MODELS.glob("*.toml"))
 PAPER_MODEL = "shang2010"      # the paper's robot (Shang & Cong 2010): paper-only checks use it
 
 SING_MIN = 0.2                 # admissible poses: min_i |sin(qb_i - qa_i)| > 0.2
@@ -40,7 +41,7 @@ def _read(path):
 
 
 _SPECS = [(path, _read(path)) for path in MODEL_FILES]
-assert _SPECS, f"no model files found in {REPO / 'models'}"
+assert _SPECS, f"no model files found in {SHIPPED_MODELS}"
 
 
 def _params(where=None):

@@ -14,6 +14,7 @@ from __future__ import annotations
 import array
 import ctypes
 import gc
+import json
 import os
 import pathlib
 import subprocess
@@ -240,7 +241,9 @@ def test_flags_constant_has_documented_flags_and_no_fast_math():
     for flag in ("-fPIC", "-shared", "-fno-math-errno", "-ffp-contract=off"):
         assert flag in build.FLAGS
     assert not any("fast-math" in flag for flag in build.FLAGS)
-    assert set(build.__all__) == {"compile_library", "derive", "BuildError", "STALE_TMP_AGE_S"}
+    assert set(build.__all__) == {"compile_library", "library_is_fresh", "BuildError",
+                                  "STALE_TMP_AGE_S", "FLAGS", "PORTABLE_FLAGS"}
+    assert build.PORTABLE_FLAGS == tuple(f for f in build.FLAGS if f != "-march=native")
     assert issubclass(build.BuildError, RuntimeError)
 
 
@@ -254,7 +257,7 @@ def test_compile_library_returns_absolute_path_and_leaves_no_temp_files(tmp_path
     inode_before = out.stat().st_ino
     build.compile_library(tmp_path / "a.c", out)
     assert out.stat().st_ino != inode_before
-    assert sorted(p.name for p in out.parent.iterdir()) == ["liba.so"]
+    assert sorted(p.name for p in out.parent.iterdir()) == ["liba.so", "liba.so.json"]
     twice = ctypes.CDLL(str(out)).twice
     twice.restype, twice.argtypes = ctypes.c_double, [ctypes.c_double]
     assert twice(21.0) == 42.0
@@ -263,7 +266,7 @@ def test_compile_library_returns_absolute_path_and_leaves_no_temp_files(tmp_path
 def test_killed_build_leftovers_are_removed_by_the_next_build_and_ignored_by_git(tmp_path):
     """A build killed between compiling and renaming leaves .lib<name>.so.*.tmp: the next build
     removes those older than STALE_TMP_AGE_S (younger ones may be a concurrent build's), and
-    git does not show them under generated/."""
+    git does not show them under pm2dof/generated/."""
     (tmp_path / "a.c").write_text("double twice(double x) { return 2 * x; }\n")
     old, young = tmp_path / ".liba.so.killed1.tmp", tmp_path / ".liba.so.running.tmp"
     other = tmp_path / ".libb.so.killed2.tmp"  # another library's: not this build's business
@@ -275,7 +278,7 @@ def test_killed_build_leftovers_are_removed_by_the_next_build_and_ignored_by_git
     build.compile_library(tmp_path / "a.c", tmp_path / "liba.so")
     assert not old.exists() and young.exists() and other.exists()
     repo = pathlib.Path(__file__).resolve().parent.parent
-    probe = "generated/shang2010/.libshang2010.so.abc123.tmp"
+    probe = "pm2dof/generated/shang2010/.libshang2010.so.abc123.tmp"
     r = subprocess.run(["git", "check-ignore", "-q", probe], cwd=repo)
     assert r.returncode == 0, f"git does not ignore {probe}"
 
@@ -294,8 +297,34 @@ def test_compile_library_invalid_c_raises_build_error_with_command_and_stderr(tm
 def test_compile_library_uses_cc_environment_variable(tmp_path, monkeypatch):
     (tmp_path / "a.c").write_text("int one(void) { return 1; }\n")
     monkeypatch.setenv("CC", "/nonexistent/bin/my-cc -pipe")
-    with pytest.raises(build.BuildError, match=r"(?s)cannot run the C compiler.*command: /nonexistent/bin/my-cc -pipe -O3"):
+    with pytest.raises(build.BuildError, match=r"(?s)no C compiler found.*apt install gcc.*"
+                                               r"command: /nonexistent/bin/my-cc -pipe -O3"):
         build.compile_library(tmp_path / "a.c", tmp_path / "a.so")
+
+
+def test_build_record_says_which_source_the_library_came_from(tmp_path):
+    """library_is_fresh: true after a build; false when the source changes (even if the
+    library looks newer), when the record or library is missing; true for an older-looking
+    library whose record matches the source (installers do not keep file times)."""
+    c, lib = tmp_path / "a.c", tmp_path / "liba.so"
+    c.write_text("int one(void) { return 1; }\n")
+    assert not build.library_is_fresh(c, lib)
+    build.compile_library(c, lib, portable=True)
+    record = json.loads((tmp_path / "liba.so.json").read_text())
+    assert "-march=native" not in record["flags"] and record["source"] == "a.c"
+    sha = record["source_sha256"]
+    assert build.library_is_fresh(c, lib, sha) and build.library_is_fresh(c, lib)
+    os.utime(lib, (1e9, 1e9))                        # older than the source, same content
+    assert build.library_is_fresh(c, lib, sha)
+    os.utime(lib, None)
+    c.write_text("int one(void) { return 2; }\n")   # new content, newer than the library
+    assert not build.library_is_fresh(c, lib, sha)
+    os.utime(c, (1e9, 1e9))          # older-looking: without the manifest's hash, hashed anyway
+    assert not build.library_is_fresh(c, lib)
+    build.compile_library(c, lib)
+    assert build.library_is_fresh(c, lib)
+    (tmp_path / "liba.so.json").unlink()
+    assert not build.library_is_fresh(c, lib)
 
 
 def test_compile_library_missing_source(tmp_path):

@@ -1,21 +1,21 @@
 # The generated C of every model vs its SymPy source at 30 digits; the generated files vs their derivation.
-"""Tests of ``generated/<name>/``: what ``make derive`` produced and what the runtime loads.
+"""Tests of ``pm2dof/generated/<name>/``: what ``pm2dof derive`` produced and what the runtime loads.
 
-Every check runs over every ``models/*.toml`` (the ``model`` fixture of ``conftest.py``, ids =
-model names), except where marked paper-only (``m``, ``models/shang2010.toml``):
+Every check runs over every ``pm2dof/models/*.toml`` (the ``model`` fixture of ``conftest.py``, ids =
+model names), except where marked paper-only (``m``, ``shang2010``):
 
-* The compiled C agrees with the SymPy expressions of ``derive/`` evaluated with mpmath at
+* The compiled C agrees with the SymPy expressions of ``pm2dof.derive`` evaluated with mpmath at
   30 significant digits (so the reference carries no rounding error at double precision):
   this isolates the CasADi conversion, the code generation and the C compiler. 6 poses for
   the paper's robot, 3 for every other model (the cost is the per-model SymPy derivation
   and lambdify, ~1.5-3.5 s each, not the poses). Paper-only: sign(0) = +1 at an exact zero.
 * Regenerating into a temporary folder gives byte-identical files for every model (the
-  ``python -m derive --no-build`` subprocesses run in parallel, one per CPU); for the paper's
+  ``python -m pm2dof.derive --no-build`` subprocesses run in parallel, one per CPU); for the paper's
   robot twice, with different hash seeds (deterministic output).
 * The manifest describes the files and the model file it was derived from; a model file
   whose formulation differs (an edited base, for every model; more edits for the paper's) is
   refused with :class:`pm2dof.StaleGeneratedCodeError`.
-* The runtime never imports SymPy, CasADi or ``derive`` (any model).
+* The runtime never imports SymPy, CasADi or ``pm2dof.derive`` (any model).
 
 Tolerance: ``TOL = 1e-12`` relative (max-norm, scale = max-norm of the 30-digit value, or of
 the summed terms where the value is a sum that may cancel). The C evaluates straight-line
@@ -42,7 +42,7 @@ import pytest
 import sympy
 
 import pm2dof
-from pm2dof.core.model import DEFAULT_MODEL, GENERATED, REPO
+from pm2dof.core.paths import PACKAGE, SHIPPED_GENERATED, SHIPPED_MODELS
 from pm2dof.core.model_file import read_model_file
 
 TOL = 1e-12
@@ -50,6 +50,7 @@ DPS = 30
 N_POSES_PAPER = 6
 N_POSES_OTHER = 3
 PAPER = "shang2010"
+DEFAULT_MODEL = SHIPPED_MODELS / "shang2010.toml"
 
 # {model: {check: largest err / scale}}, printed at module teardown (-s)
 _OBSERVED: dict[str, dict[str, float]] = {}
@@ -78,7 +79,7 @@ def m():
 
 
 def gen_dir(model):
-    return GENERATED / model.name
+    return SHIPPED_GENERATED / model.name
 
 
 def gen_files(model):
@@ -100,7 +101,7 @@ def _sympy_functions(spec):
     """The SymPy derivation of a model, lambdified once per matrix for mpmath (cached)."""
     if spec.formulation_sha256 in _LAMBDIFIED:
         return _LAMBDIFIED[spec.formulation_sha256]
-    from derive.model_functions import Derivation
+    from pm2dof.derive.model_functions import Derivation
 
     d = Derivation(spec)
     s, kin, dyn = d.sym, d.kin, d.dyn
@@ -252,11 +253,12 @@ def _first_difference(a: bytes, b: bytes):
 
 
 def _derive(model_file, out, seed):
-    """python -m derive MODEL --out OUT --no-build with PYTHONHASHSEED=seed -> (rc, output)."""
-    env = {**os.environ, "PYTHONHASHSEED": seed,
-           "PYTHONPATH": os.pathsep.join([str(REPO), os.environ.get("PYTHONPATH", "")])}
-    r = subprocess.run([sys.executable, "-m", "derive", str(model_file), "--out", str(out),
-                        "--no-build"], cwd=REPO, env=env, capture_output=True, text=True,
+    """python -m pm2dof.derive MODEL --out OUT --no-build with PYTHONHASHSEED=seed
+    -> (rc, output). OUT sits at the same depth below a models/ sibling as the package's
+    generated/<name>/, so the manifest's relative model_file path is the same."""
+    env = {**os.environ, "PYTHONHASHSEED": seed}
+    r = subprocess.run([sys.executable, "-m", "pm2dof.derive", str(model_file), "--out", str(out),
+                        "--no-build"], cwd=out, env=env, capture_output=True, text=True,
                        timeout=600)
     return r.returncode, r.stdout + r.stderr
 
@@ -268,11 +270,18 @@ def regenerated(tmp_path_factory):
 
     Returns {(resolved model file, seed): (returncode, output, out_dir)}; a failing
     derivation fails only its own model's tests."""
-    jobs = [(p.resolve(), "4242") for p in sorted((REPO / "models").glob("*.toml"))]
+    jobs = [(p.resolve(), "4242") for p in sorted(SHIPPED_MODELS.glob("*.toml"))]
     jobs.append((DEFAULT_MODEL.resolve(), "0"))
-    outs = {job: tmp_path_factory.mktemp(f"derive_{job[0].stem}_seed{job[1]}") for job in jobs}
+    outs = {}
+    for job in jobs:  # root/models/<stem>.toml and root/generated/<stem>/, as in the package
+        root = tmp_path_factory.mktemp(f"derive_{job[0].stem}_seed{job[1]}")
+        (root / "models").mkdir()
+        shutil.copyfile(job[0], root / "models" / job[0].name)
+        outs[job] = root / "generated" / job[0].stem
+        outs[job].mkdir(parents=True)
+    jobs_files = {job: outs[job].parent.parent / "models" / job[0].name for job in jobs}
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
-        futures = {job: pool.submit(_derive, job[0], outs[job], job[1]) for job in jobs}
+        futures = {job: pool.submit(_derive, jobs_files[job], outs[job], job[1]) for job in jobs}
         return {job: (*f.result(), outs[job]) for job, f in futures.items()}
 
 
@@ -296,8 +305,8 @@ def test_regeneration_is_byte_identical(model, regenerated):
             line, a, b = _first_difference(old.read_bytes(), new.read_bytes())
             problems.append(f"generated/{model.name}/{name} differs from a fresh derivation at "
                             f"line {line}:\n  committed:   {a[:200]}\n  regenerated: {b[:200]}")
-    assert not problems, (f"the committed generated code of {model.name} is not what `python -m "
-                          f"derive {model.spec.path}` produces now; run `make derive`.\n"
+    assert not problems, (f"the committed generated code of {model.name} is not what `pm2dof "
+                          f"derive {model.spec.path}` produces now; run `make derive-all`.\n"
                           + "\n".join(problems))
 
 
@@ -315,7 +324,7 @@ def test_regeneration_is_deterministic_across_hash_seeds(m, regenerated):
 def test_generated_code_has_no_timestamp_or_local_path(model):
     text = "".join((gen_dir(model) / name).read_text() for name in gen_files(model))
     assert len(text) > 1000, f"{model.name}: generated files are (nearly) empty"
-    for needle in (str(REPO), "/tmp/", str(Path.home())):
+    for needle in (str(PACKAGE.parent), "/tmp/", str(Path.home())):
         assert needle not in text, f"{model.name}: generated code contains {needle!r} (not reproducible)"
     stamp = re.search(r"\b20\d\d-[01]\d-[0-3]\d\b|\b\d\d:\d\d:\d\d\b", text)
     assert stamp is None, f"{model.name}: generated code contains a timestamp {stamp.group(0)!r}"
@@ -333,31 +342,33 @@ def manifest(model):
 def test_manifest_formulation_hash(model, manifest):
     spec = read_model_file(model.spec.path)  # a fresh read of the file on disk
     path = Path(model.spec.path).resolve()
-    assert manifest["formulation_sha256"] == spec.formulation_sha256, "run make derive"
+    assert manifest["formulation_sha256"] == spec.formulation_sha256, "run make derive-all"
     assert manifest["model_file_sha256"] == spec.file_sha256, \
-        f"{path.name} changed since generation; run make derive"
+        f"{path.name} changed since generation; run make derive-all"
     assert manifest["model"] == spec.name == model.name
-    assert manifest["model_file"] == str(path.relative_to(REPO))
+    # the model file as seen from the generated folder: the pair moves together
+    assert manifest["model_file"] == f"../../models/{path.name}"
+    assert (gen_dir(model) / manifest["model_file"]).resolve() == path
     assert manifest["param_names"] == list(spec.param_names)
 
 
 def test_manifest_versions_are_the_installed_ones(model, manifest):
     assert manifest["versions"] == {"sympy": sympy.__version__, "casadi": casadi.__version__}, \
         f"{model.name}: manifest {manifest['versions']} vs installed sympy {sympy.__version__}, " \
-        f"casadi {casadi.__version__}: run make derive"
+        f"casadi {casadi.__version__}: run make derive-all"
 
 
 def test_manifest_file_hashes_match_the_files(model, manifest):
     assert set(manifest["files"]) == {f"{model.name}.c", f"{model.name}.h"}
     for name, sha in manifest["files"].items():
         got = hashlib.sha256((gen_dir(model) / name).read_bytes()).hexdigest()
-        assert got == sha, f"{model.name}: {name}: sha256 {got} != manifest {sha}; run make derive"
+        assert got == sha, f"{model.name}: {name}: sha256 {got} != manifest {sha}; run make derive-all"
 
 
 def test_manifest_derive_sources_hash(model, manifest):
-    from derive.export import derive_sources_sha256
+    from pm2dof.derive.export import derive_sources_sha256
     assert manifest["derive_sources_sha256"] == derive_sources_sha256(), \
-        f"{model.name}: derive/*.py changed since generation; run make derive"
+        f"{model.name}: derive/*.py changed since generation; run make derive-all"
 
 
 def test_manifest_signatures_match_the_loaded_functions(model, manifest):
@@ -393,15 +404,22 @@ def test_edited_base_is_refused(model, tmp_path):
     assert edited.legs[0].base == (x_new, model.spec.legs[0].base[1])
     assert edited.legs[1:] == model.spec.legs[1:] and edited.name == model.name
     assert edited.formulation_sha256 != model.spec.formulation_sha256
-    with pytest.raises(pm2dof.StaleGeneratedCodeError, match="make derive"):
-        pm2dof.load_model(path)
+    with pytest.raises(pm2dof.StaleGeneratedCodeError, match=re.escape(
+            f"Run `pm2dof derive {path} --out {gen_dir(model)}`")):
+        pm2dof.load_model(path, generated=gen_dir(model))
 
 
-def test_unchanged_copy_loads(model, tmp_path):
+def test_unchanged_copy_loads_with_the_shipped_code(model, tmp_path):
+    """A copy of a shipped model file finds no code beside it (the message names the command
+    that derives it there) and loads with the shipped code named by ``generated=``."""
     path = tmp_path / Path(model.spec.path).name
     shutil.copy(model.spec.path, path)
-    loaded = pm2dof.load_model(path)
+    with pytest.raises(pm2dof.StaleGeneratedCodeError,
+                       match=re.escape(f"Run `pm2dof derive {path}`")):
+        pm2dof.load_model(path)
+    loaded = pm2dof.load_model(path, generated=gen_dir(model))
     assert loaded.name == model.name and loaded.n_legs == model.n_legs
+    assert loaded.generated == str(gen_dir(model))
 
 
 def _edited_copy(tmp_path, old, new):
@@ -422,8 +440,8 @@ def _edited_copy(tmp_path, old, new):
 def test_changed_formulation_is_refused(tmp_path, old, new):
     """Paper only: more kinds of edits of the formulation."""
     path = _edited_copy(tmp_path, old, new)
-    with pytest.raises(pm2dof.StaleGeneratedCodeError, match="make derive"):
-        pm2dof.load_model(path)
+    with pytest.raises(pm2dof.StaleGeneratedCodeError, match="pm2dof derive"):
+        pm2dof.load_model(path, generated=SHIPPED_GENERATED / PAPER)
 
 
 @pytest.mark.parametrize("old, new, check", [
@@ -435,7 +453,7 @@ def test_changed_formulation_is_refused(tmp_path, old, new):
 ], ids=["limits", "nominal", "comment"])
 def test_run_time_sections_do_not_make_code_stale(tmp_path, old, new, check):
     """Paper only."""
-    m = pm2dof.load_model(_edited_copy(tmp_path, old, new))
+    m = pm2dof.load_model(_edited_copy(tmp_path, old, new), generated=SHIPPED_GENERATED / PAPER)
     assert check(m)
 
 
@@ -449,7 +467,7 @@ def test_runtime_never_imports_sympy_casadi_derive():
         "import sys, json, glob, numpy as np\n"
         "import pm2dof\n"
         "done = []\n"
-        "for path in sorted(glob.glob('models/*.toml')):\n"
+        "for path in sorted(glob.glob('pm2dof/models/*.toml')):\n"
         "    m = pm2dof.load_model(path)\n"
         "    n = m.n_legs\n"
         "    t = next(iter(m.spec.trajectories.values()))\n"
@@ -459,14 +477,14 @@ def test_runtime_never_imports_sympy_casadi_derive():
         "    m.forward_dynamics(xe, [0.1, 0.2], np.arange(1.0, n + 1), m.theta_nominal)\n"
         "    assert Y.shape == (2, len(m.param_names))\n"
         "    done.append(m.name)\n"
-        "bad = sorted(k for k in sys.modules if k.split('.')[0] in ('sympy', 'casadi', 'derive'))\n"
+        "bad = sorted(k for k in sys.modules if k.split('.')[0] in ('sympy', 'casadi')\n"
+        "             or k.startswith('pm2dof.derive'))\n"
         "print(json.dumps({'bad': bad, 'done': done}))\n"
     )
-    env = {**os.environ, "PYTHONPATH": str(REPO)}
-    r = subprocess.run([sys.executable, "-c", code], cwd=REPO, env=env, capture_output=True,
+    r = subprocess.run([sys.executable, "-c", code], cwd=PACKAGE.parent, capture_output=True,
                        text=True, timeout=120)
     assert r.returncode == 0, r.stderr
     res = json.loads(r.stdout.strip().splitlines()[-1])
-    want = sorted(read_model_file(p).name for p in (REPO / "models").glob("*.toml"))
+    want = sorted(read_model_file(p).name for p in SHIPPED_MODELS.glob("*.toml"))
     assert sorted(res["done"]) == want and PAPER in res["done"], res
     assert res["bad"] == [], f"the runtime imported build-time modules: {res['bad']}"

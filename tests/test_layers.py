@@ -22,13 +22,14 @@ PKG = Path(__file__).resolve().parent.parent / "pm2dof"
 _RUNTIME = {"core", "control"}
 ALLOWED = {
     "core": {"core"},                                   # 1: the thin runtime
+    "derive": {"core", "derive"},                       # build time: SymPy, CasADi -> C
     "control": {"core", "control"},                     # 2: controllers, rollouts
     "reference": {"core", "reference"},                 # beside: NumPy formulations
     "analysis": _RUNTIME | {"analysis"},                # 3: experiment, identification
-    "bench": _RUNTIME | {"analysis", "reference", "bench"},   # 3: benchmark
+    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive"},   # 3: benchmark
     "studies": _RUNTIME | {"analysis", "studies"},      # 3: many rollouts on Dask
     "figures": _RUNTIME | {"analysis", "studies", "figures"},   # 4: matplotlib
-    "cli": _RUNTIME | {"analysis", "bench", "studies", "figures", "cli"},  # 4: parse, dispatch
+    "cli": _RUNTIME | {"analysis", "bench", "studies", "figures", "cli", "derive"},  # 4
     "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
     "__main__": {"cli"},
     "_moved": set(),
@@ -39,7 +40,8 @@ THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
     "__main__": set(), "_moved": set(),
     "analysis": {"numpy", "scipy", "casadi", "pyarrow"},   # pyarrow: Parquet logs (ident_log)
-    "bench": {"numpy", "casadi", "sympy", "derive"},    # baselines; each optional at run time
+    "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
+    "bench": {"numpy", "casadi", "sympy"},              # baselines; each optional at run time
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},
     "cli": set(),
@@ -81,7 +83,7 @@ def test_every_sub_package_has_a_declared_layer():
     units = {_unit(p) for p in MODULES}
     assert units <= set(ALLOWED), f"undeclared sub-packages: {sorted(units - set(ALLOWED))}"
     assert units <= set(THIRD_PARTY)
-    assert {"core", "control", "analysis", "bench", "figures", "reference", "cli"} <= units
+    assert {"core", "control", "analysis", "bench", "figures", "reference", "cli", "derive"} <= units
 
 
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))
@@ -120,6 +122,7 @@ c.reset(q[:m.n_legs])
 c.step(q[:m.n_legs], np.array([0.245, 0.265]), np.zeros(2), np.zeros(2))
 pm2dof.simulate(m, pm2dof.APDController(m), pm2dof.paper_move("high"))
 heavy = sorted({k.split(".")[0] for k in sys.modules} & HEAVY)
+heavy += sorted(k for k in sys.modules if k.startswith("pm2dof.derive"))
 print(",".join(heavy))
 """
 

@@ -44,7 +44,7 @@ def test_min_max_force_radius_is_the_lp_inradius(name):
     """The closed form (least support over edge normals) equals the least LP radial value:
     at the edge normals (where the minimum is attained) to solver precision, and no dense
     direction has a smaller one (the circle fits)."""
-    m = pm2dof.load_model(f"models/{name}.toml")
+    m = pm2dof.load_model(name)
     w = np.array([30.0, 22.0, 27.0, 25.0][:m.n_legs])
     dirs = np.linspace(0, np.pi, 90, endpoint=False)     # radial(-d) = radial(d): symmetric
     for q in _random_poses(m, 3, 1):
@@ -75,7 +75,7 @@ def test_min_norm_force_radius_by_dense_directions():
 def test_capability_ordering_and_the_five_bar():
     """min-max >= min-norm everywhere (it is the optimum); with two legs there is no choice."""
     for name, equal in (("shang2010", False), ("fivebar", True)):
-        m = pm2dof.load_model(f"models/{name}.toml")
+        m = pm2dof.load_model(name)
         for q in _random_poses(m, 10, 3):
             c = capability(m, q)
             assert c["force_min_max"] >= c["force_min_norm"] * (1 - 1e-12)
@@ -103,7 +103,7 @@ def test_acceleration_capability_is_force_through_Me():
 
 
 def test_workspace_maps_shapes_and_reachable_round_trip():
-    m = pm2dof.load_model("models/fivebar.toml")
+    m = pm2dof.load_model("fivebar")
     mp = workspace_maps(m, 25)
     assert mp["reachable"].shape == (25, 25) and mp["reachable"].any()
     X, Y = np.meshgrid(mp["x"], mp["y"])

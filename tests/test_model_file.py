@@ -11,7 +11,7 @@
 * Targeted tests, one per validation rule: the message names the file, the key and the reason.
 * StaleGeneratedCodeError: a model file whose formulation (legs) differs from the one its
   generated code was derived from, or a model name with no generated code at all, is refused
-  with a message that says to run ``make derive``; a copy that differs only in comments or
+  with a message that names the ``pm2dof derive ...`` command to run; a copy that differs only in comments or
   run-time data loads (the positive control that makes the negative tests meaningful).
 """
 from __future__ import annotations
@@ -30,12 +30,13 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import pm2dof
+from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
 from pm2dof.core.errors import ModelFileError, StaleGeneratedCodeError
 from pm2dof.core.model_file import ModelSpec, read_model_file
 
 REPO = Path(__file__).resolve().parent.parent
-PAPER = REPO / "models" / "shang2010.toml"
-FIVEBAR = REPO / "models" / "fivebar.toml"
+PAPER = SHIPPED_MODELS / "shang2010.toml"
+FIVEBAR = SHIPPED_MODELS / "fivebar.toml"
 SRC = PAPER.read_text()
 SRC_BYTES = PAPER.read_bytes()
 DOC = tomllib.loads(SRC)
@@ -574,12 +575,12 @@ def test_stribeck_friction_needs_its_velocity(tmp_path):
 
 
 def test_every_shipped_model_file_loads():
-    for path in sorted((REPO / "models").glob("*.toml")):
+    for path in sorted(SHIPPED_MODELS.glob("*.toml")):
         check_spec_invariants(read_model_file(path), str(path))
 
 
 # --------------------------------------------------------------------------------------
-# Generated code: missing or stale -> StaleGeneratedCodeError ("make derive")
+# Generated code: missing or stale -> StaleGeneratedCodeError ("pm2dof derive ...")
 # --------------------------------------------------------------------------------------
 
 def test_error_hierarchy():
@@ -593,7 +594,7 @@ def test_copy_with_only_comments_and_runtime_data_changed_loads(tmp_path):
     """Positive control: the guard compares the formulation ([model], [[legs]]), not bytes:
     the rewritten document (no comments) with other gains loads."""
     text = "# a copy\n" + mutated(**{"gains.na.Kd": [190.0, 190.0]})
-    m = pm2dof.load_model(write(tmp_path, text, "copy.toml"))
+    m = pm2dof.load_model(write(tmp_path, text, "copy.toml"), generated=SHIPPED_GENERATED / "shang2010")
     assert m.name == "shang2010" and m.spec.gains["na"]["Kd"].tolist() == [190.0, 190.0]
     assert m.spec.file_sha256 != read_model_file(PAPER).file_sha256
 
@@ -604,10 +605,11 @@ def test_changed_base_is_stale(tmp_path):
     p = write(tmp_path, text, "moved.toml")
     spec = read_model_file(p)  # a valid model file ...
     assert spec.bases[0].tolist() == [x + 0.001, y]
+    gen = SHIPPED_GENERATED / "shang2010"
     with pytest.raises(StaleGeneratedCodeError) as info:  # ... whose generated code is stale
-        pm2dof.load_model(p)
+        pm2dof.load_model(p, generated=gen)
     msg = str(info.value)
-    assert "make derive" in msg and "shang2010" in msg, msg
+    assert f"Run `pm2dof derive {p} --out {gen}`" in msg and "different formulation" in msg, msg
 
 
 @pytest.mark.parametrize("edits", [
@@ -620,8 +622,8 @@ def test_other_formulation_changes_are_stale(tmp_path, edits):
     p = write(tmp_path, mutated(**edits), "changed.toml")
     read_model_file(p)
     with pytest.raises(StaleGeneratedCodeError) as info:
-        pm2dof.load_model(p)
-    assert "make derive" in str(info.value), str(info.value)
+        pm2dof.load_model(p, generated=SHIPPED_GENERATED / "shang2010")
+    assert "pm2dof derive" in str(info.value), str(info.value)
 
 
 def test_model_without_generated_code(tmp_path):
@@ -631,21 +633,21 @@ def test_model_without_generated_code(tmp_path):
     with pytest.raises(StaleGeneratedCodeError) as info:
         pm2dof.load_model(p)
     msg = str(info.value)
-    assert "make derive" in msg and "nonexistent_model" in msg, msg
+    assert f"Run `pm2dof derive {p}`" in msg and str(tmp_path / "generated" / "nonexistent") in msg, msg
 
 
 def test_manifest_mismatch_in_a_copied_generated_dir(tmp_path):
     """Model(spec, gen_dir): a generated folder whose manifest names another formulation."""
-    from pm2dof.core.model import GENERATED, Model
+    from pm2dof.core.model import Model
     gen = tmp_path / "gen"
-    shutil.copytree(GENERATED / "shang2010", gen)
+    shutil.copytree(SHIPPED_GENERATED / "shang2010", gen)
     man = json.loads((gen / "manifest.json").read_text())
     man["formulation_sha256"] = "0" * 64
     (gen / "manifest.json").write_text(json.dumps(man))
     with pytest.raises(StaleGeneratedCodeError) as info:
         Model(read_model_file(PAPER), gen)
-    assert "make derive" in str(info.value), str(info.value)
+    assert "pm2dof derive" in str(info.value), str(info.value)
     (gen / "manifest.json").unlink()
     with pytest.raises(StaleGeneratedCodeError) as info:
         Model(read_model_file(PAPER), gen)
-    assert "make derive" in str(info.value) and "manifest.json" in str(info.value)
+    assert "pm2dof derive" in str(info.value) and "manifest.json" in str(info.value)

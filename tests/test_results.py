@@ -23,13 +23,14 @@ import numpy as np
 import pytest
 
 import pm2dof
+from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof import cli
 from pm2dof.analysis import results
 from pm2dof.core.model_file import read_model_file
 from pm2dof.analysis.results import provenance, save_figure, write_atomic, write_json
 
 REPO = Path(__file__).resolve().parent.parent
-PAPER = REPO / "models" / "shang2010.toml"
+PAPER = SHIPPED_MODELS / "shang2010.toml"
 TABLE3_KEYS = ("apd_rmse", "na_rmse", "na_no_adaptation_rmse", "rpe_percent",
                "trajectory_duration_s")
 PROVENANCE_KEYS = ("model", "model_file", "model_file_sha256", "formulation_sha256",

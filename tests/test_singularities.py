@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 
 import pm2dof
+from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.control.simulate import pose_measures
 from pm2dof.reference import model as ref
 
@@ -127,7 +128,7 @@ def _on_curve(m, a, b):
 
 @pytest.fixture(scope="module")
 def fivebar():
-    return pm2dof.load_model(pm2dof.core.model.REPO / "models" / "fivebar.toml")
+    return pm2dof.load_model(SHIPPED_MODELS / "fivebar.toml")
 
 
 def test_fivebar_singular_curve_is_where_the_distal_links_align(fivebar):
@@ -229,7 +230,7 @@ def test_type_one_errors_say_type_one():
                                       ("x", False)])
 def test_parallel_threshold_in_the_model_file(tmp_path, value, ok):
     from pm2dof.core.model_file import DEFAULT_PARALLEL_THRESHOLD, read_model_file
-    src = "\n".join(line for line in pm2dof.core.model.DEFAULT_MODEL.read_text().splitlines()
+    src = "\n".join(line for line in (SHIPPED_MODELS / "shang2010.toml").read_text().splitlines()
                     if not line.startswith("parallel_singularity_threshold")) + "\n"
     text = src.replace("[limits]\n", f"[limits]\nparallel_singularity_threshold = {value!r}\n"
                        .replace("'", '"'), 1)

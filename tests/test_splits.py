@@ -16,7 +16,7 @@ import pytest
 from scipy.optimize import linprog, lsq_linear, minimize
 
 import pm2dof
-from pm2dof.core.model import REPO
+from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
 
 MODELS = ("shang2010", "unequal", "fourleg")
 HIGHS = dict(primal_feasibility_tolerance=1e-10, dual_feasibility_tolerance=1e-10)
@@ -24,7 +24,7 @@ HIGHS = dict(primal_feasibility_tolerance=1e-10, dual_feasibility_tolerance=1e-1
 
 @pytest.fixture(scope="module", params=MODELS)
 def redundant(request):
-    return pm2dof.load_model(REPO / "models" / f"{request.param}.toml")
+    return pm2dof.load_model(SHIPPED_MODELS / f"{request.param}.toml")
 
 
 def _cases(m, count, seed):
@@ -170,7 +170,7 @@ def test_every_split_gives_the_min_norm_task_force_in_the_steps(redundant):
 
 
 def test_two_legs_have_nothing_to_distribute():
-    m = pm2dof.load_model(REPO / "models" / "fivebar.toml")
+    m = pm2dof.load_model(SHIPPED_MODELS / "fivebar.toml")
     q = m.ik([0.35, 0.45])
     for u in ([3.0, -2.0], [100.0, 50.0]):
         r = m.torque_splits(q, u, [30.0, 30.0], [0.5, 0.5], [1.0, 1.0])
@@ -216,7 +216,7 @@ def test_bad_split_settings_are_refused(kwargs, match):
 def test_model_file_control_section_is_validated(tmp_path, control, key):
     from pm2dof.core.model_file import read_model_file
     path = tmp_path / "m.toml"
-    path.write_text((REPO / "models" / "shang2010.toml").read_text() + f"\n[control]\n{control}\n")
+    path.write_text((SHIPPED_MODELS / "shang2010.toml").read_text() + f"\n[control]\n{control}\n")
     with pytest.raises(pm2dof.ModelFileError, match=key):
         read_model_file(path)
 
@@ -224,12 +224,12 @@ def test_model_file_control_section_is_validated(tmp_path, control, key):
 def test_model_file_split_is_the_controllers_default(tmp_path):
     from pm2dof.core.model_file import read_model_file
     path = tmp_path / "m.toml"
-    path.write_text((REPO / "models" / "shang2010.toml").read_text()
+    path.write_text((SHIPPED_MODELS / "shang2010.toml").read_text()
                     + '\n[control]\nsplit = "min_max"\npreload = [0.5, 0.5, 0.5]\n')
     spec = read_model_file(path)
     assert spec.control["split"] == "min_max" and spec.formulation_sha256 == \
-        read_model_file(REPO / "models" / "shang2010.toml").formulation_sha256
-    m = pm2dof.core.model.Model(spec)
+        read_model_file(SHIPPED_MODELS / "shang2010.toml").formulation_sha256
+    m = pm2dof.core.model.Model(spec, SHIPPED_GENERATED / "shang2010")
     assert pm2dof.NAController(m).split == "min_max"
     assert pm2dof.APDController(m, split="min_norm").function_name == "apd"
 
@@ -240,7 +240,7 @@ def test_min_max_with_parallel_legs_is_exact(n):
     direction), so two torques are free at the dual optimum. The derivation's min_max, as a
     CasADi function, against HiGHS; equal S^T tau and max |tau_i|/w_i = t* to rounding."""
     import casadi as ca
-    from derive.splits import min_max
+    from pm2dof.derive.splits import min_max
     Ssym, usym, wsym = ca.SX.sym("S", n, 2), ca.SX.sym("u", 2), ca.SX.sym("w", n)
     f = ca.Function("mm", [Ssym, usym, wsym], list(min_max(Ssym, usym, wsym)))
     rng = np.random.default_rng(7)

@@ -14,15 +14,16 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.studies import (StudyFileError, StudyOutError, check_study, read_results,
+from pm2dof.core.paths import SHIPPED_MODELS
+from pm2dof.studies import (SHIPPED_STUDIES, StudyFileError, StudyOutError, check_study, read_results,
                             read_study, rollout_setup, run_chunk)
 from pm2dof.studies.draws import sample_draw
 from pm2dof.studies.report import columns_of, summarise
 from pm2dof.studies.store import finish_out, prepare_out, write_chunk
 
 ROOT = Path(__file__).resolve().parent.parent
-STUDIES = ROOT / "studies"
-MODEL = ROOT / "models" / "shang2010.toml"
+STUDIES = SHIPPED_STUDIES
+MODEL = SHIPPED_MODELS / "shang2010.toml"
 
 BASE = f"""
 [study]
@@ -127,7 +128,7 @@ def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any
         run_study(s, out, progress=False, echo=lambda *a: None)
     assert not out.exists()                     # refused before the folder or a cluster
     # the five-bar: a line across its parallel-singular curve
-    five = ROOT / "models" / "fivebar.toml"
+    five = SHIPPED_MODELS / "fivebar.toml"
     text = BASE.replace(str(MODEL), str(five)).replace(
         'moves = ["high"]', 'moves = [{name = "across", start = [0.4366773, 0.19502559], '
         'end = [0.274602, 0.000219374], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')

@@ -17,7 +17,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pm2dof.studies import StudyRunError, read_results, read_study, run_chunk, run_study
+from pm2dof.studies import (SHIPPED_STUDIES, StudyRunError, read_results, read_study, run_chunk,
+                            run_study)
 from pm2dof.studies.report import columns_of
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -28,9 +29,7 @@ DEADLINE = 120.0    # s: no step of these tests may wait longer
 
 def _study_file(tmp_path, draws=300, chunk=30):
     """The robustness study's quick variant, larger: enough chunks to interrupt in the middle."""
-    text = (ROOT / "studies" / "robustness.toml").read_text()
-    text = text.replace('model = "../models/shang2010.toml"',
-                        f'model = "{ROOT / "models" / "shang2010.toml"}"')
+    text = (SHIPPED_STUDIES / "robustness.toml").read_text()
     text = text.replace("draws = 40\nchunk = 40", f"draws = {draws}\nchunk = {chunk}")
     p = tmp_path / "study.toml"
     p.write_text(text)
@@ -157,7 +156,7 @@ def test_real_scheduler_two_workers_one_killed_mid_run(tmp_path, study_file):
 
 
 def test_embedded_cluster_equals_in_process_rows_and_report_runs(tmp_path, study_file):
-    study = read_study(ROOT / "studies" / "adaptation.toml", quick=True)
+    study = read_study(SHIPPED_STUDIES / "adaptation.toml", quick=True)
     out = tmp_path / "a"
     res = run_study(study, out, workers=2, progress=False, echo=lambda *a: None)
     assert res["rows"] == study.n_rollouts and res["skipped"] == 0
@@ -175,7 +174,7 @@ def test_embedded_cluster_equals_in_process_rows_and_report_runs(tmp_path, study
 
 
 def test_unreachable_scheduler_fails_clearly_within_the_timeout(tmp_path):
-    study = read_study(ROOT / "studies" / "robustness.toml", quick=True)
+    study = read_study(SHIPPED_STUDIES / "robustness.toml", quick=True)
     addr = f"tcp://127.0.0.1:{_free_port()}"           # nothing listens there
     t0 = time.monotonic()
     with pytest.raises(StudyRunError, match=rf"cannot reach the Dask scheduler at {addr} "
@@ -183,7 +182,7 @@ def test_unreachable_scheduler_fails_clearly_within_the_timeout(tmp_path):
         run_study(study, tmp_path / "out", scheduler=addr, timeout=2, progress=False,
                   echo=lambda *a: None)
     assert time.monotonic() - t0 < 20
-    r = subprocess.run([*PM2DOF, "study", "run", str(ROOT / "studies" / "robustness.toml"),
+    r = subprocess.run([*PM2DOF, "study", "run", str(SHIPPED_STUDIES / "robustness.toml"),
                         "--quick", "--out", str(tmp_path / "o2"), "--scheduler", addr,
                         "--timeout", "2"], capture_output=True, text=True, timeout=DEADLINE,
                        cwd=ROOT)
@@ -191,18 +190,18 @@ def test_unreachable_scheduler_fails_clearly_within_the_timeout(tmp_path):
 
 
 def test_readme_command_on_a_shipped_study_and_the_bench_keys(tmp_path):
-    """`pm2dof study run studies/robustness.toml --quick --out DIR` (the issue's "done when"),
+    """`pm2dof study run robustness --quick --out DIR` (the issue's "done when"),
     and the bench's JSON contract (its speed targets live in the bench, not here)."""
     out = tmp_path / "rob"
-    r = subprocess.run([*PM2DOF, "study", "run", "studies/robustness.toml", "--quick", "--out",
+    r = subprocess.run([*PM2DOF, "study", "run", "robustness", "--quick", "--out",
                         str(out), "--workers", "2"], capture_output=True, text=True,
                        timeout=DEADLINE, cwd=ROOT)
     assert r.returncode == 0, r.stderr
-    study = read_study(ROOT / "studies" / "robustness.toml", quick=True)
+    study = read_study(SHIPPED_STUDIES / "robustness.toml", quick=True)
     info, table = read_results(out)
     assert table.num_rows == info["rows"] == study.n_rollouts == 240 and info["complete"]
     assert info["provenance"]["model_file_sha256"] and info["study_text"] == \
-        (ROOT / "studies" / "robustness.toml").read_text()
+        (SHIPPED_STUDIES / "robustness.toml").read_text()
     from pm2dof.studies.bench import study_bench
     res = study_bench(quick=True)
     for k in ("rollouts_per_s_plain_loop", "rollouts_per_s_batch",

@@ -1,6 +1,6 @@
 /* na_loop.c: the NA controller of Shang & Cong (2010) in a 2 ms loop, plain C99, no Python.
  *
- * Uses only the generated code generated/shang2010/shang2010.{c,h}:
+ * Uses only the generated code pm2dof/generated/shang2010/shang2010.{c,h}:
  *   shang2010_na_step     the controller (fk, velocity estimate, NA law eqs. 14-29,
  *                         minimum-norm torque split eq. 21, parameter update eq. 28)
  *   shang2010_measure     the simulated encoders (true pose -> quantised active angles)
@@ -36,7 +36,7 @@
 
 /* ---------------------------------------------------------------------------------------
  * Model data, hard-coded from models/shang2010.toml (keep in sync with that file).
- * The flat-vector layouts are those of generated/shang2010/manifest.json ("layouts");
+ * The flat-vector layouts are those of pm2dof/generated/shang2010/manifest.json ("layouts");
  * main() checks the vector sizes against the generated code before running.
  * theta order: alpha1..3, beta1..3, gamma1..3, fv1..3, fc1..3 (header of shang2010.h).
  * ------------------------------------------------------------------------------------- */

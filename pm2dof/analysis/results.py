@@ -11,10 +11,12 @@ import numpy as np
 
 __all__ = ["provenance", "write_atomic", "write_json", "dumps", "save_figure"]
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[2]   # the source checkout, when pm2dof runs from one
 
 
 def _git_commit():
+    if not (REPO / ".git").exists():            # an installed package: no checkout
+        return None
     try:
         out = subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True,
                              text=True, timeout=5)
@@ -29,20 +31,21 @@ COMMAND_LINE = None  # set by pm2dof.cli.main to the command it runs; else sys.a
 
 
 def provenance(model):
-    """Where a result came from: model hashes, git commit, versions, command line."""
-    from importlib.metadata import PackageNotFoundError, version
-    try:
-        pm2dof_version = version("pm2dof")
-    except PackageNotFoundError:
-        pm2dof_version = None
+    """Where a result came from: the pm2dof version, the model file and the generated code
+    (paths, hashes, whether shipped with pm2dof), git commit, versions, command line."""
+    from ..core.version import __version__
+    from ..core.paths import is_shipped
     return {
         "model": model.name,
         "model_file": model.spec.path,
+        "model_shipped": is_shipped(model.spec.path),
         "model_file_sha256": model.spec.file_sha256,
         "formulation_sha256": model.spec.formulation_sha256,
+        "generated": model.generated,
+        "library": model.library,
         "generated_with": dict(model.manifest["versions"]),
         "git_commit": _git_commit(),
-        "pm2dof": pm2dof_version,
+        "pm2dof": __version__,
         "python": platform.python_version(),
         "numpy": np.__version__,
         "machine": f"{platform.machine()} {platform.system()}, {os.cpu_count()} cores",

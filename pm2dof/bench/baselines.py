@@ -64,16 +64,8 @@ def c_step(f, params, case, n):
 
 
 def _import_derive():
-    """derive is build-time code at the repository root; import it (lazily) for the bench."""
-    try:
-        import derive.model_functions as dmf
-    except ImportError:
-        from ..core.model import REPO
-        if not (REPO / "derive" / "__init__.py").is_file():
-            raise
-        if str(REPO) not in sys.path:
-            sys.path.insert(0, str(REPO))
-        import derive.model_functions as dmf
+    """pm2dof.derive is build-time code (the [derive] extra); import it lazily for the bench."""
+    import pm2dof.derive.model_functions as dmf
     return dmf
 
 

@@ -16,7 +16,8 @@ import sysconfig
 import tempfile
 from collections.abc import Iterable
 
-__all__ = ["compile_library", "derive", "BuildError", "STALE_TMP_AGE_S"]
+__all__ = ["compile_library", "library_is_fresh", "BuildError", "STALE_TMP_AGE_S", "FLAGS",
+           "PORTABLE_FLAGS"]
 
 #: Temporary libraries (``.lib<name>.so.*.tmp``) older than this are left-overs of a build that
 #: was killed; :func:`compile_library` removes them. Younger ones may belong to a build that is
@@ -54,12 +55,57 @@ FLAGS: tuple[str, ...] = (
     "-fno-math-errno",
 )
 
+#: :data:`FLAGS` without ``-march=native``: for libraries that travel to other machines (the
+#: shipped models' libraries inside a wheel). Results are the same bit for bit: without
+#: ``-ffast-math`` and with ``-ffp-contract=off`` the compiler may not reorder or fuse
+#: floating-point operations, whichever instructions it picks.
+PORTABLE_FLAGS: tuple[str, ...] = tuple(f for f in FLAGS if f != "-march=native")
+
 #: Libraries linked after the source file: the generated code calls libm.
 LIBS: tuple[str, ...] = ("-lm",)
 
 
 class BuildError(RuntimeError):
-    """The C compiler failed; the message holds the full command and its stderr."""
+    """The C compiler failed or is missing; the message holds the command and its stderr, or
+    what to install."""
+
+
+#: What to install when there is no C compiler (the message of :class:`BuildError`).
+NO_COMPILER = ("no C compiler found: pm2dof compiles a model's generated C once, on first use. "
+               "Install one (Debian/Ubuntu: `sudo apt install gcc`; Fedora: `sudo dnf install "
+               "gcc`; macOS: `xcode-select --install`) or name it in the CC environment "
+               "variable. The shipped models need none: their libraries come with the wheel")
+
+
+def stamp_path(lib_path):
+    """The build record written next to a compiled library: ``lib<name>.so.json``."""
+    lib_path = pathlib.Path(lib_path)
+    return lib_path.with_name(lib_path.name + ".json")
+
+
+def _sha256(path):
+    import hashlib
+    return hashlib.sha256(pathlib.Path(path).read_bytes()).hexdigest()
+
+
+def library_is_fresh(c_path, lib_path, c_sha256=None):
+    """Whether ``lib_path`` was compiled from the current content of ``c_path``.
+
+    The build record (:func:`stamp_path`) holds the SHA-256 of the source it was built from.
+    Fast path: the record matches ``c_sha256`` (the manifest's hash of the C file) and the
+    library is not older than the source. Otherwise the source is hashed (file times are not
+    kept by every installer, so an older-looking library may still be right).
+    """
+    import json
+    lib_path, c_path = pathlib.Path(lib_path), pathlib.Path(c_path)
+    try:
+        built_from = json.loads(stamp_path(lib_path).read_text())["source_sha256"]
+        lib_mtime = lib_path.stat().st_mtime
+    except (OSError, ValueError, KeyError, TypeError):
+        return False
+    if built_from == c_sha256 and lib_mtime >= c_path.stat().st_mtime:
+        return True
+    return built_from == _sha256(c_path)
 
 
 def _compiler() -> list[str]:
@@ -81,6 +127,7 @@ def compile_library(
     out_path: str | os.PathLike[str],
     *,
     extra_flags: Iterable[str] = (),
+    portable: bool = False,
 ) -> pathlib.Path:
     """Compile one C file into a shared library, atomically replacing ``out_path``.
 
@@ -93,6 +140,8 @@ def compile_library(
         created if needed.
     extra_flags : iterable of str, optional
         Further compiler arguments, placed after :data:`FLAGS`.
+    portable : bool, optional
+        Use :data:`PORTABLE_FLAGS` (no ``-march=native``): for a library built into a wheel.
 
     Returns
     -------
@@ -105,8 +154,8 @@ def compile_library(
     FileNotFoundError
         If ``c_path`` does not exist.
     BuildError
-        If the compiler cannot be run or exits with a non-zero status; the message
-        contains the full command line and the compiler's stderr.
+        If there is no compiler (the message says what to install), or it exits with a
+        non-zero status (the message contains the full command line and its stderr).
 
     Notes
     -----
@@ -118,6 +167,9 @@ def compile_library(
 
     A process that already has ``out_path`` open through ``dlopen`` keeps the old
     code: ``dlopen`` hands back the loaded library for a path that is still open.
+
+    After the library, a build record :func:`stamp_path` is written (source hash, flags), which
+    :func:`library_is_fresh` reads.
     """
     c_path = pathlib.Path(c_path)
     out_path = pathlib.Path(out_path).absolute()
@@ -131,10 +183,10 @@ def compile_library(
     )
     os.close(fd)
     tmp = pathlib.Path(tmp_name)
+    flags = [*(PORTABLE_FLAGS if portable else FLAGS), *[str(f) for f in extra_flags]]
     cmd = [
         *_compiler(),
-        *FLAGS,
-        *[str(f) for f in extra_flags],
+        *flags,
         "-o",
         str(tmp),
         str(c_path),
@@ -143,6 +195,8 @@ def compile_library(
     try:
         try:
             proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
+        except FileNotFoundError:
+            raise BuildError(f"{NO_COMPILER}\ncommand: {shlex.join(cmd)}") from None
         except OSError as exc:
             raise BuildError(
                 f"cannot run the C compiler: {exc}\ncommand: {shlex.join(cmd)}"
@@ -159,7 +213,21 @@ def compile_library(
     finally:
         if tmp.exists():
             tmp.unlink()
+    _write_stamp(out_path, c_path, cmd[0], flags)
     return out_path
+
+
+def _write_stamp(lib_path, c_path, compiler, flags):
+    """The build record, written atomically after the library."""
+    import json
+    record = {"source": c_path.name, "source_sha256": _sha256(c_path), "flags": flags,
+              "compiler": compiler}
+    stamp = stamp_path(lib_path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{stamp.name}.", suffix=".tmp", dir=stamp.parent)
+    with os.fdopen(fd, "w") as fh:
+        fh.write(json.dumps(record, indent=1, sort_keys=True) + "\n")
+    os.chmod(tmp, 0o644)
+    os.replace(tmp, stamp)
 
 
 def remove_stale_temporaries(out_path, max_age_s=STALE_TMP_AGE_S):
@@ -176,18 +244,6 @@ def remove_stale_temporaries(out_path, max_age_s=STALE_TMP_AGE_S):
         except FileNotFoundError:  # removed by a concurrent build meanwhile
             pass
     return removed
-
-
-def derive(model_path, build=True):
-    """Run the build-time derivation ``python -m derive MODEL`` in its own process (the
-    runtime never imports SymPy or CasADi): generate ``generated/<name>/`` and, unless
-    ``build`` is false, compile it. Returns the process's exit status."""
-    import sys
-    repo = pathlib.Path(__file__).resolve().parents[2]
-    cmd = [sys.executable, "-m", "derive", str(pathlib.Path(model_path).resolve())]
-    if not build:
-        cmd.append("--no-build")
-    return subprocess.call(cmd, cwd=repo)
 
 
 def _main(argv=None):

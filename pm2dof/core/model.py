@@ -9,22 +9,26 @@ the result is written there (no allocation) and returned.
 """
 import array
 import json
+import sys
 import types
 from pathlib import Path
 
 import numpy as np
 
-from . import _cbind
+from . import build, paths
 from .errors import SingularityError, StaleGeneratedCodeError, WorkspaceError
 from .layout import Layout
 from .model_file import read_model_file
 
-__all__ = ["Model", "load_model", "DEFAULT_MODEL", "GENERATED"]
+try:
+    from . import _cbind
+except ImportError as _exc:  # a source tree whose C extension was never built
+    raise ImportError(
+        f"pm2dof's C extension pm2dof.core._cbind is not built in {Path(__file__).parent} "
+        f"({_exc}): run `pip install -e .` (or `make install`) in the source tree") from None
 
+__all__ = ["Model", "load_model"]
 
-REPO = Path(__file__).resolve().parents[2]
-DEFAULT_MODEL = REPO / "models" / "shang2010.toml"
-GENERATED = REPO / "generated"
 
 # controller steps and closed loops: <law><split>_step, <law><split>_closed_loop
 _SPLIT_SUFFIXES = ("", "_minmax", "_preload")                   # min_norm, min_max, preload
@@ -44,28 +48,40 @@ def _freeze(obj):
     return obj
 
 
-def _stale(msg):
-    raise StaleGeneratedCodeError(f"{msg}. Run `make derive` (or `make derive MODEL=<file>`).")
+def _stale(spec, gen_dir, msg):
+    if paths.in_installed_package(gen_dir):
+        raise StaleGeneratedCodeError(
+            f"{msg}. This is the installed pm2dof's own generated code for a shipped model: "
+            f"reinstall pm2dof (`pip install --force-reinstall pm2dof`)")
+    raise StaleGeneratedCodeError(
+        f"{msg}. Run `{paths.derive_command(spec.path, gen_dir)}`")
 
 
 def _check_generated(spec, gen_dir):
-    """Refuse generated code that is missing or was derived from another formulation."""
+    """Refuse generated code that is missing or was derived from another formulation; compile
+    the C on first use when its library is missing or older than it (never inside an installed
+    package)."""
     manifest_path = gen_dir / "manifest.json"
     if not manifest_path.is_file():
-        _stale(f"no generated code for model {spec.name!r}: {manifest_path} is missing")
+        _stale(spec, gen_dir, f"no generated code for model file {spec.path} in {gen_dir} "
+                              f"({manifest_path.name} is missing)")
     manifest = json.loads(manifest_path.read_text())
     if manifest.get("formulation_sha256") != spec.formulation_sha256:
-        _stale(f"{gen_dir} was generated from a different formulation of model {spec.name!r} "
-               f"than {spec.path} (hash {manifest.get('formulation_sha256', '?')[:12]} != "
-               f"{spec.formulation_sha256[:12]}): legs, geometry or friction model changed")
-    c_file = gen_dir / f"{spec.name}.c"
-    lib = gen_dir / f"lib{spec.name}.so"
+        _stale(spec, gen_dir,
+               f"{gen_dir} was generated from a different formulation than {spec.path} (hash "
+               f"{str(manifest.get('formulation_sha256', '?'))[:12]} != "
+               f"{spec.formulation_sha256[:12]}): the legs, geometry or friction model changed")
+    name = manifest.get("model", spec.name)
+    c_file = gen_dir / f"{name}.c"
+    lib = gen_dir / f"lib{name}.so"
     if not c_file.is_file():
-        _stale(f"{c_file} is missing")
-    if not lib.is_file():
-        _stale(f"the compiled library {lib} is missing (it is built by `make install`/`make derive`)")
-    if lib.stat().st_mtime < c_file.stat().st_mtime:
-        _stale(f"{lib} is older than {c_file}")
+        _stale(spec, gen_dir, f"{c_file} is missing")
+    if not build.library_is_fresh(c_file, lib, manifest.get("files", {}).get(c_file.name)):
+        if paths.in_installed_package(gen_dir):
+            _stale(spec, gen_dir, f"the compiled library {lib} is missing or older than {c_file}")
+        print(f"pm2dof: compiling {c_file} (first use of this generated code; a few seconds)",
+              file=sys.stderr, flush=True)
+        build.compile_library(c_file, lib)
     return manifest, lib
 
 
@@ -75,7 +91,8 @@ class Model:
     Build with :func:`load_model`. Attributes: ``name``, ``spec`` (the validated model file),
     ``n_legs``, ``bases`` (n, 2) m, ``param_names`` (5n,), ``theta_nominal`` (5n,) (Tables
     1-2), ``singularity_threshold`` (type I), ``parallel_singularity_threshold`` (type II),
-    ``manifest``, ``library`` (path of the compiled C).
+    ``manifest``, ``generated`` (the folder of the generated C), ``library`` (path of the
+    compiled C).
     Angles in rad, lengths in m; q = [qa_1..qa_n, qb_1..qb_n].
 
     Two kinds of singularity are guarded (:meth:`singularity_measures`): type I, a leg
@@ -88,7 +105,8 @@ class Model:
     at once; load one Model per thread.
     """
 
-    __slots__ = ("spec", "manifest", "library", "_lib", "_f", "_layouts", "_sing_thr", "_sing", "__weakref__")
+    __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_layouts", "_sing_thr",
+                 "_sing", "__weakref__")
 
     #: names of the two singularity measures, in the order of :meth:`singularity_measures`
     SINGULARITY_KINDS = ("type I (a leg's links aligned)",
@@ -96,7 +114,8 @@ class Model:
                          "task direction)")
 
     def __init__(self, spec, gen_dir=None):
-        gen_dir = Path(gen_dir) if gen_dir is not None else GENERATED / spec.name
+        gen_dir = (Path(gen_dir).expanduser().absolute() if gen_dir is not None
+                   else paths.default_generated_dir(spec.path))
         manifest, lib_path = _check_generated(spec, gen_dir)
         lib = _cbind.Library(str(lib_path))
         funcs = {}
@@ -106,12 +125,14 @@ class Model:
             have = {"inputs": [[a, k] for a, k in zip(f.names_in, f.sizes_in)],
                     "outputs": [[a, k] for a, k in zip(f.names_out, f.sizes_out)]}
             if want != have:
-                _stale(f"{lib_path}: {f.name} has signature {have}, manifest says {want}")
+                _stale(spec, gen_dir, f"{lib_path}: {f.name} has signature {have}, manifest "
+                                      f"says {want}")
             # model functions never hand back NaN/inf silently; ik and fk turn NaN into a
             # WorkspaceError themselves; controller steps and the plant report by status
             f.check_outputs = short not in _STEPPING and short not in ("ik", "fk")
             funcs[short] = f
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
+                     ("generated", str(gen_dir)),
                      ("_lib", lib), ("_f", types.MappingProxyType(funcs)),
                      ("_layouts", types.MappingProxyType(
                          {name: Layout(name, fl) for name, fl in manifest["layouts"].items()})),
@@ -374,13 +395,17 @@ class Model:
         return self._eval("forward_dynamics", (2,), out, xe, xed, tau_a, theta)
 
 
-def load_model(path=None):
+def load_model(model=None, generated=None):
     """Load a model file and bind its generated, compiled C.
 
     Parameters
     ----------
-    path : str or pathlib.Path, optional
-        A model file; default ``models/shang2010.toml``, the paper's robot.
+    model : str or pathlib.Path, optional
+        A shipped model's name (``"fivebar"``; ``pm2dof models`` lists them) or the path of a
+        model file (``"~/robots/myrobot.toml"``). Default: ``"shang2010"``, the paper's robot.
+    generated : str or pathlib.Path, optional
+        The folder of the model's generated C. Default: the one ``pm2dof derive`` writes,
+        ``generated/<stem>/`` beside the model file (a shipped model's code comes with pm2dof).
 
     Returns
     -------
@@ -389,9 +414,13 @@ def load_model(path=None):
     Raises
     ------
     ModelFileError
-        The model file is unreadable or invalid.
+        The model file is unreadable or invalid, or the name is not a shipped model.
     StaleGeneratedCodeError
-        ``generated/<name>/`` is missing or was derived from another formulation.
+        The generated code is missing or was derived from another formulation of the model
+        (the message names the ``pm2dof derive ...`` command to run).
+    pm2dof.core.build.BuildError
+        The library had to be compiled (first use, or the C is newer) and that failed, or
+        there is no C compiler (the message says what to install).
 
     Examples
     --------
@@ -402,5 +431,7 @@ def load_model(path=None):
     >>> q = m.ik([0.25, 0.26])
     >>> bool(abs(m.fk(q[:3]) - [0.25, 0.26]).max() < 1e-12)
     True
+    >>> pm2dof.load_model("fivebar").n_legs
+    2
     """
-    return Model(read_model_file(DEFAULT_MODEL if path is None else path))
+    return Model(read_model_file(paths.resolve_model(model)), generated)

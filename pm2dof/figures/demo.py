@@ -61,12 +61,11 @@ def _demo_study(m, out, echo, progress):
     """The robustness study at its --quick size (a local Dask cluster, a few seconds), when
     the study file's model is the demo's. Returns (RPE rows, figure paths) or None."""
     import shutil
-    from ..studies import read_study, run_study
+    from ..studies import read_study, resolve_study, run_study
     from ..studies.report import columns_of, summarise
     from ..studies.store import read_results
     from .studies import study_figures
-    study = read_study(Path(__file__).resolve().parents[2] / "studies" / "robustness.toml",
-                       quick=True)
+    study = read_study(resolve_study("robustness"), quick=True)
     if Path(study.model_path) != Path(m.spec.path).resolve():
         return None
     shutil.rmtree(out, ignore_errors=True)      # the demo's own folder: always a fresh run
@@ -78,7 +77,7 @@ def _demo_study(m, out, echo, progress):
     cols = columns_of(table)
     s = summarise(cols, {**info, "grid_keys": []})
     echo(f"\nRobustness study, quick size ({study.draws} random plants; the full study is "
-         f"`pm2dof study run studies/robustness.toml --out DIR`): RPE over APD on the same "
+         f"`pm2dof study run robustness --out DIR`): RPE over APD on the same "
          f"plants, median [5th, 95th percentile]:")
     for r in s["rpe"]:
         echo(f"  {r['controller']:18s} {r['move']:5s} {r['median']:5.1f} % "

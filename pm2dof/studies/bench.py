@@ -26,15 +26,13 @@ from ..control.simulate import simulate
 from .evaluate import rollout_setup, run_chunk
 from .runner import _close, connect, run_study
 from .spec import read_study
+from . import resolve_study
 
 __all__ = ["study_bench", "format_study_bench", "bench_study"]
 
-STUDIES = Path(__file__).resolve().parents[2] / "studies"
-
-
 def bench_study(rollouts, chunk=1000):
     """The benchmark's study: NA, high-speed move, ``rollouts`` random plants."""
-    s = read_study(STUDIES / "robustness.toml")
+    s = read_study(resolve_study("robustness"))
     na = [v for v in s.variants if v.name == "na"]
     return dataclasses.replace(s, name="bench", variants=tuple(na),
                                moves=tuple(m for m in s.moves if m[0] == "high"),

@@ -23,6 +23,9 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..core.errors import ModelFileError
+from ..core.paths import resolve_model
+
 __all__ = ["StudyFileError", "Study", "Variant", "Distribution", "read_study", "UNCERTAINTY",
            "LAWS"]
 
@@ -347,10 +350,13 @@ def read_study(path, quick=False):
     name = st["name"]
     if not isinstance(name, str) or not name:
         _fail(path, "study.name", f"must be a non-empty string, got {name!r}")
-    model_path = (path.parent / str(st["model"])).resolve()
+    try:
+        model_path = resolve_model(str(st["model"]), relative_to=path.parent).resolve()
+    except ModelFileError as exc:
+        _fail(path, "study.model", str(exc))
     if not model_path.is_file():
-        _fail(path, "study.model", f"no model file at {model_path} (paths are relative to the "
-              f"study file's folder)")
+        _fail(path, "study.model", f"no model file at {model_path} (a shipped model's name, or "
+              f"a path relative to the study file's folder)")
     grid_points = q.get("grid_points") if quick else None
     if grid_points is not None:
         _number(path, "quick.grid_points", grid_points, integer=True, low=1)

@@ -1,5 +1,5 @@
 /* pm2dof generated code for model 'shang2010' (3 legs, friction 'coulomb_viscous').
- * Written by `make derive` from the model file; do not edit.
+ * Written by `pm2dof derive` from the model file; do not edit.
  *
  * Every function follows CasADi's C API: int f(const double** arg, double** res,
  * long long* iw, double* w, int mem), with work sizes from f_work(). All inputs and

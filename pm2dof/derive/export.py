@@ -36,7 +36,7 @@ def _header_doc(spec, functions, layouts, status_codes):
     n = spec.n_legs
     lines = [
         f"/* pm2dof generated code for model '{spec.name}' ({n} legs, friction '{spec.friction}').",
-        " * Written by `make derive` from the model file; do not edit.",
+        " * Written by `pm2dof derive` from the model file; do not edit.",
         " *",
         " * Every function follows CasADi's C API: int f(const double** arg, double** res,",
         " * long long* iw, double* w, int mem), with work sizes from f_work(). All inputs and",
