@@ -133,3 +133,19 @@ def test_runtime_layers_load_no_heavy_library():
                        cwd=PKG.parent)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "", f"runtime imports loaded {r.stdout.strip()}"
+
+
+def test_importing_an_unbuilt_source_tree_says_what_is_missing(tmp_path):
+    """A copy of the package without its compiled extension: one sentence naming what is not
+    built and the command that builds it (not Python's 'circular import' guess)."""
+    import shutil
+    shutil.copytree(PKG, tmp_path / "pm2dof",
+                    ignore=shutil.ignore_patterns("*.so", "__pycache__", "generated"))
+    r = subprocess.run([sys.executable, "-c", "import pm2dof"], capture_output=True, text=True,
+                       timeout=60, cwd=tmp_path, env={"PYTHONPATH": str(tmp_path), "PATH": ""})
+    assert r.returncode != 0
+    last = r.stderr.strip().splitlines()[-1]
+    assert last == (f"ImportError: pm2dof is not built: its C extension pm2dof.core._cbind is "
+                    f"missing from {tmp_path / 'pm2dof' / 'core'}; build it with `pip install "
+                    f"-e .` (or `make install`) in the source tree"), r.stderr
+    assert "circular import" not in r.stderr

@@ -22,10 +22,11 @@ from .model_file import read_model_file
 
 try:
     from . import _cbind
-except ImportError as _exc:  # a source tree whose C extension was never built
+except ImportError:  # a source tree whose C extension was never built
     raise ImportError(
-        f"pm2dof's C extension pm2dof.core._cbind is not built in {Path(__file__).parent} "
-        f"({_exc}): run `pip install -e .` (or `make install`) in the source tree") from None
+        f"pm2dof is not built: its C extension pm2dof.core._cbind is missing from "
+        f"{Path(__file__).parent}; build it with `pip install -e .` (or `make install`) in the "
+        f"source tree") from None
 
 __all__ = ["Model", "load_model"]
 
