@@ -1,5 +1,6 @@
 # Typed errors of pm2dof: each subclasses a builtin and names the value, the place and the limit.
-__all__ = ["ModelFileError", "StaleGeneratedCodeError", "WorkspaceError", "SingularityError"]
+__all__ = ["ModelFileError", "StaleGeneratedCodeError", "WorkspaceError", "ClosureError",
+           "SingularityError"]
 
 
 class ModelFileError(ValueError):
@@ -12,6 +13,11 @@ class StaleGeneratedCodeError(RuntimeError):
 
 class WorkspaceError(ValueError):
     """A task-space position no leg (or not every leg) can reach."""
+
+
+class ClosureError(WorkspaceError):
+    """Active (encoder) angles that do not close the loops: some leg's closure residual exceeds
+    ``[sensing] closure_tolerance`` (names the leg and the residual in m)."""
 
 
 class SingularityError(ValueError):

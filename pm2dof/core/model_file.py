@@ -36,6 +36,8 @@ INERTIAL = ("alpha", "beta", "gamma")
 #: see Model.singularity_measures; 0.1 is about 8 degrees between a five-bar's distal links)
 DEFAULT_PARALLEL_THRESHOLD = 0.1
 ELBOWS = {"left": 1, "right": -1}
+#: smallest default [sensing] closure_tolerance, m (exact encoders still meet rounding)
+CLOSURE_FLOOR = 1e-6
 FK_BRANCHES = {"left": 1, "right": -1}
 
 _MODEL_KEYS = {"name", "description", "friction", "fk_branch", "stribeck_velocity",
@@ -218,11 +220,29 @@ def _read_section(path, where, table, schema, n, p):
     return out
 
 
+def default_closure_tolerance(legs, encoder_counts_per_rev):
+    """[sensing] closure_tolerance when a model file does not set it, m: five encoder steps at
+    the longest active link, at least 1 um. (One step moves an elbow by la * 2 pi / counts;
+    quantised angles over the paper robot's workspace give residuals up to 0.8 of that, and
+    up to 1.3 with a full step of error: tests/test_closure.py measures it.)"""
+    if encoder_counts_per_rev <= 0:
+        return CLOSURE_FLOOR
+    step = 2 * math.pi / encoder_counts_per_rev
+    return max(CLOSURE_FLOOR, 5 * max(leg.la for leg in legs) * step)
+
+
 def _read_runtime(path, doc, n, p, legs):
     """Validate the run-time sections: sensing, gains, plant truth, trajectories."""
-    sensing = _read_section(path, "sensing", _table(path, doc, "sensing"), _SCHEMA["sensing"], n, p)
+    sensing_raw = _table(path, doc, "sensing")
+    sensing_raw = dict(sensing_raw) if isinstance(sensing_raw, dict) else sensing_raw
+    closure = (sensing_raw.pop("closure_tolerance", None) if isinstance(sensing_raw, dict)
+               else None)
+    sensing = _read_section(path, "sensing", sensing_raw, _SCHEMA["sensing"], n, p)
     if sensing["encoder_counts_per_rev"] != int(sensing["encoder_counts_per_rev"]):
         _fail(path, "sensing.encoder_counts_per_rev", "must be a whole number (0: no quantisation)")
+    sensing["closure_tolerance"] = (
+        default_closure_tolerance(legs, sensing["encoder_counts_per_rev"]) if closure is None
+        else _number(path, "sensing.closure_tolerance", closure, positive=True))
     gains_raw = _table(path, doc, "gains")
     _check_keys(path, "gains", gains_raw, {"na", "apd"}, {"na", "apd"})
     gains = {law: _read_section(path, f"gains.{law}", gains_raw[law], _SCHEMA[f"gains.{law}"], n, p)
