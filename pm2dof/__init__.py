@@ -32,7 +32,8 @@ from . import _moved
 from .control.controllers import STATUS_NAMES, APDController, NAController
 from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
 from .control.trajectory import PAPER_MOVES, Trajectory, TrajectoryError, line, paper_move
-from .core.errors import (ClosureError, ModelFileError, SingularityError, StaleGeneratedCodeError,
+from .core.errors import (ClosureError, GainError, ModelFileError, ModelMismatchError,
+                          OutcomeWarning, SingularityError, StaleGeneratedCodeError,
                           WorkspaceError)
 from .core.model import Model, load_model
 from .core.version import __version__
@@ -72,7 +73,7 @@ __all__ = [
     # errors
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError",
-    "TrajectoryError",
+    "TrajectoryError", "GainError", "ModelMismatchError", "OutcomeWarning",
     # layer 3 (imported on first use)
     *_LAZY,
 ]

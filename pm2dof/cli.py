@@ -24,8 +24,9 @@ the model file). Where a file names its model (a study file), that model is the 
 """
 import argparse
 import sys
+import warnings
 
-from .core.errors import ModelFileError, StaleGeneratedCodeError
+from .core.errors import ModelFileError, OutcomeWarning, StaleGeneratedCodeError
 
 __all__ = ["main", "build_parser"]
 
@@ -183,7 +184,8 @@ def cmd_animate(args):
     from .figures.animate import animate_move
     path, r = animate_move(_model(args), args.out, args.move, args.controller, args.split,
                            args.magnify, args.fps, args.every, progress=_progress)
-    print(f"wrote {path} ({r.controller}, RMSE {r.rmse:.4g} m, {r.n_saturated} saturated samples)")
+    print(f"wrote {path} ({r.controller}, {r.outcome_message}, RMSE {r.rmse:.4g} m, "
+          f"{r.n_saturated} saturated samples)")
     return 0
 
 
@@ -524,6 +526,14 @@ def _run_errors():
     return mod.StudyRunError if mod else ValueError
 
 
+def _show_warning(message, category, filename, lineno, file=None, line=None,
+                  _default=warnings.showwarning):
+    if issubclass(category, OutcomeWarning):
+        print(f"pm2dof: warning: {message}", file=sys.stderr, flush=True)
+    else:
+        _default(message, category, filename, lineno, file, line)
+
+
 #: optional dependencies -> the extra that installs them (pyproject.toml)
 _EXTRAS = {"sympy": "derive", "casadi": "derive", "dask": "studies", "distributed": "studies",
            "pyarrow": "studies", "scipy": "ident"}
@@ -540,7 +550,10 @@ def main(argv=None):
         return 2
     from .core.build import BuildError
     try:
-        return args.func(args)
+        with warnings.catch_warnings():   # each rollout that did not complete: one line
+            warnings.simplefilter("always", OutcomeWarning)
+            warnings.showwarning = _show_warning
+            return args.func(args)
     except (ModelFileError, StaleGeneratedCodeError, ValueError, BuildError, FileExistsError,
             _run_errors()) as exc:  # typed
         print(f"pm2dof: error: {exc}", file=sys.stderr)

@@ -183,7 +183,7 @@ def test_step_argument_errors_are_clear():
     before = c.state
     for args, name in [((QA[:2], XE, Z2, Z2), "qa"), ((QA, XE[:1], Z2, Z2), "xd"),
                        ((QA, XE, "ab", Z2), "xd_dot"), ((QA, XE, Z2, None), "xd_ddot"),
-                       ((QA.astype(np.float32), XE, Z2, Z2), "qa")]:
+                       ((QA, XE, Z2, [0.0, 1j]), "xd_ddot")]:   # float32, lists: converted
         with pytest.raises((ValueError, TypeError)) as info:
             c.step(*args)
         assert name in str(info.value), (name, str(info.value))

@@ -15,10 +15,10 @@ import math
 
 import numpy as np
 
-from ..core.errors import SingularityError
+from ..core.errors import GainError, ModelMismatchError, SingularityError
 from ..core.layout import Layout
 
-__all__ = ["NAController", "APDController", "STATUS_NAMES"]
+__all__ = ["NAController", "APDController", "STATUS_NAMES", "check_same_model"]
 
 STATUS_NAMES = {0: "ok", 1: "singular", 2: "saturated", 3: "non_finite", 4: "preload_infeasible",
                 5: "inconsistent_encoders"}
@@ -38,6 +38,73 @@ def _vector(name, value, n):
     if v.shape != (n,) or not np.isfinite(v).all():
         raise ValueError(f"{name} must be {n} finite numbers, got {value!r}")
     return v
+
+
+#: gain -> (strict: > 0 rather than >= 0, the condition and where it comes from)
+GAIN_CONDITIONS = {
+    "Kd": (True, "K_d must be positive definite (the Lyapunov argument of Sect. 4)"),
+    "Q": (True, "Q must be positive definite (the Lyapunov argument of Sect. 4)"),
+    "Gamma": (False, "Gamma must be positive semi-definite (Sect. 4; a zero entry switches "
+                     "adaptation of that parameter off)"),
+    "Kp": (True, "APD (eq. 40) needs Kp positive definite"),
+    "Kv": (True, "APD (eq. 40) needs Kv positive definite"),
+}
+
+
+def diagonal_gain(law, name, value, labels):
+    """The diagonal of a gain matrix of the control law, checked against :data:`GAIN_CONDITIONS`.
+
+    The gains of eqs. 14-29 and 40 are diagonal matrices, applied entry by entry in the
+    generated C. ``value`` may be a scalar (every entry alike), the k diagonal entries, or a
+    diagonal k x k matrix (k = len(labels)). Raises :class:`GainError` naming the gain, the
+    entry and the condition: a wrong shape, an off-diagonal entry, a non-finite entry, or an
+    entry <= 0 (Gamma: < 0). Returns the (k,) float64 diagonal.
+    """
+    strict, why = GAIN_CONDITIONS[name]
+    k = len(labels)
+    where = f"{law}: {name}"
+    try:
+        if np.iscomplexobj(value):
+            raise TypeError("complex values are not allowed")
+        a = np.array(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise GainError(f"{where} must be real numbers, got {value!r} ({exc})") from None
+    if a.ndim == 2 and a.shape == (k, k):
+        off = np.argwhere((a != 0) & ~np.eye(k, dtype=bool))
+        if len(off):
+            i, j = off[0]
+            raise GainError(f"{where} must be diagonal (the law applies it entry by entry); "
+                            f"entry [{i}, {j}] = {float(a[i, j])!r}")
+        a = np.diag(a).copy()
+    elif a.ndim == 0:
+        a = np.full(k, float(a))
+    if a.shape != (k,):
+        raise GainError(f"{where} must be a scalar, {k} diagonal entries ({', '.join(labels)}) "
+                        f"or a diagonal {k} x {k} matrix, got shape {a.shape}")
+    bad = np.flatnonzero(~np.isfinite(a) | ((a <= 0) if strict else (a < 0)))
+    if len(bad):
+        i = bad[0]
+        more = f" (and {len(bad) - 1} more entries)" if len(bad) > 1 else ""
+        cond = "finite" if not np.isfinite(a[i]) else "> 0" if strict else ">= 0"
+        raise GainError(f"{where}[{i}] ({labels[i]}) = {float(a[i])!r} must be {cond}{more}: "
+                        f"{why}")
+    return a
+
+
+def check_same_model(model, controller):
+    """Raise :class:`ModelMismatchError` unless ``controller`` was built for ``model``: the same
+    Model, or one with the same name and formulation hash (the same generated code)."""
+    cm = controller.model
+    if cm is model or (cm.name, cm.spec.formulation_sha256) == (model.name,
+                                                                model.spec.formulation_sha256):
+        return
+
+    def who(m):
+        return (f"{m.name!r} ({m.n_legs} legs, {m.spec.path}, formulation "
+                f"{m.spec.formulation_sha256[:12]})")
+    raise ModelMismatchError(
+        f"the {type(controller).__name__} was built for model {who(cm)}, not for model "
+        f"{who(model)}; build the controller with the model it runs on")
 
 
 class _Controller:
@@ -66,9 +133,9 @@ class _Controller:
             raise ValueError(f"velocity_filter_hz must be >= 0 (0: no filter), got {fc}")
         self.sample_period = T
         self.theta0 = np.array(spec.theta_nominal if theta0 is None else theta0, dtype=float)
-        if self.theta0.shape != (len(model.param_names),):
-            raise ValueError(f"theta0 must have shape ({len(model.param_names)},), "
-                             f"got {self.theta0.shape}")
+        if self.theta0.shape != (len(model.param_names),) or not np.isfinite(self.theta0).all():
+            raise ValueError(f"theta0 must be {len(model.param_names)} finite numbers "
+                             f"({', '.join(model.param_names)}), got {self.theta0.tolist()}")
         n = model.n_legs
         tau_max = _vector("tau_max", spec.limits["tau_max"] if tau_max is None else tau_max, n)
         preload = _vector("preload", ctl["preload"] if preload is None else preload, n)
@@ -79,6 +146,10 @@ class _Controller:
                              f"{preload.tolist()}, tau_max {tau_max.tolist()} N*m")
         if not np.all(np.isin(preload_sign, (1.0, -1.0))):
             raise ValueError(f"preload_sign entries must be +1 or -1, got {preload_sign.tolist()}")
+        xy = ("x", "y")
+        labels = {"Gamma": model.param_names}
+        gains = {k: diagonal_gain(type(self).__name__, k, v, labels.get(k, xy))
+                 for k, v in gains.items()}
         self.params = self.params_layout.pack(
             **gains, T=T, vel_alpha=velocity_filter_alpha(T, fc),
             sing_threshold=model.singularity_threshold,
@@ -98,10 +169,15 @@ class _Controller:
 
         ``theta_hat`` (5n,) replaces the initial estimate (default: ``theta0``, Tables 1-2).
         """
+        th = self.theta0 if theta_hat is None else np.array(theta_hat, dtype=float)
+        if th.shape != self.theta0.shape or not np.isfinite(th).all():
+            raise ValueError(f"theta_hat must be {len(th)} finite numbers "
+                             f"({', '.join(self.model.param_names)}), got {th.tolist()}")
+        xe = self.model.fk(qa0)
         s = self.state_layout.unpack(self._states[0])
-        s["xe_prev"][:] = self.model.fk(qa0)
+        s["xe_prev"][:] = xe
         s["v"][:] = 0.0
-        s["theta_hat"][:] = self.theta0 if theta_hat is None else theta_hat
+        s["theta_hat"][:] = th
         self._ready = True
 
     def step(self, qa_meas, xd, xd_dot, xd_ddot, out=None):
@@ -114,15 +190,27 @@ class _Controller:
         SingularityError (a ValueError), or with ``on_singular="zero"`` returns the safe
         torque zero; either way theta_hat is not updated (``status == "singular"``). A
         non-finite intermediate result gives zero torque and leaves the whole state as it
-        was (``status == "non_finite"``). The next good sample gives a finite torque. Inputs should be float64
-        arrays (the fast path); other array-likes raise TypeError from the binding.
+        was (``status == "non_finite"``). The next good sample gives a finite torque.
+
+        Inputs may be any array-likes of real numbers (lists, float32, ...): they are converted
+        once, and a wrong length raises ValueError naming the input. C-contiguous float64
+        arrays go straight to the C (the fast path, no conversion).
         """
         if not self._ready:
             raise RuntimeError("call reset(qa0) before the first step")
         s0, s1 = self._states
         tau = np.empty(self._n) if out is None else out  # the C checks out's dtype and size
-        self._f(s0, qa_meas, xd, xd_dot, xd_ddot, self.params, tau, s1, self._status,
-                self._diag)
+        try:
+            self._f(s0, qa_meas, xd, xd_dot, xd_ddot, self.params, tau, s1, self._status,
+                    self._diag)
+        except (TypeError, ValueError):
+            args = (qa_meas, xd, xd_dot, xd_ddot)
+            if all(type(a) is np.ndarray and a.dtype == np.float64 and a.flags.c_contiguous
+                   for a in args):
+                raise                   # converting would change nothing: the C's error stands
+            # array-likes (lists, float32 ...): convert once (clear errors) and retry
+            args = self.model._coerce(self._f, (s0, *args, self.params))
+            self._f(*args, tau, s1, self._status, self._diag)
         self._states = (s1, s0)
         if self._status[0] == 1.0 and self.on_singular == "raise":
             raise SingularityError(
@@ -159,10 +247,14 @@ class NAController(_Controller):
     Parameters
     ----------
     model : Model
-    Kd, Q : array_like (2,), optional
-        Diagonal gains, N*s/m and 1/s (default: ``[gains.na]`` of the model file).
-    Gamma : array_like (5n,), optional
-        Diagonal adaptation gain in theta's order; zeros switch adaptation off.
+    Kd, Q : float or array_like (2,) or (2, 2), optional
+        Diagonal gains K_d (N*s/m) and Q (1/s), each entry > 0 (positive definite, as the
+        Lyapunov argument of Sect. 4 needs): a scalar, the diagonal [x, y] or a diagonal
+        matrix (default: ``[gains.na]`` of the model file).
+    Gamma : float or array_like (5n,) or (5n, 5n), optional
+        Diagonal adaptation gain in ``model.param_names`` order, each entry >= 0 (positive
+        semi-definite); zeros switch adaptation off. Gains outside these conditions, non-finite
+        or of the wrong shape raise :class:`pm2dof.GainError` naming the gain and the entry.
     theta0 : array_like (5n,), optional
         Initial estimate theta_hat (default: Tables 1-2, ``model.theta_nominal``).
     sample_period : float, optional
@@ -209,7 +301,7 @@ class APDController(_Controller):
     """The augmented PD controller of eq. 40 with the nominal model (Tables 1-2).
 
     Parameters are those of :class:`NAController` with ``Kp`` (N/m), ``Kv`` (N*s/m) in place
-    of the NA gains; ``theta0`` is the fixed model inside the feedforward; ``split``,
+    of the NA gains (diagonal, each entry > 0, else :class:`pm2dof.GainError`); ``theta0`` is the fixed model inside the feedforward; ``split``,
     ``preload`` and ``preload_sign`` as for NA.
     """
     _law = "apd"

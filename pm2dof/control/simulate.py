@@ -8,14 +8,16 @@ constant (zero-order hold). The loop over samples runs in C (``_cbind.Function.a
 """
 import functools
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from .controllers import APDController, NAController
-from ..core.errors import SingularityError, WorkspaceError
+from .controllers import APDController, NAController, check_same_model
+from .outcome import OUTCOMES, classify_failure
+from ..core.errors import OutcomeWarning, SingularityError, WorkspaceError
 
-__all__ = ["simulate", "SimResult", "plant_truth", "plant_vector", "rmse", "theta_truth",
+__all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "plant_truth", "plant_vector", "rmse", "theta_truth",
            "check_trajectory", "pose_measures", "rollout_inputs", "batch_inputs"]
 
 
@@ -99,8 +101,20 @@ class SimResult:
 
     t (N,) s; xd, xd_dot (N, 2) desired; xe, xed (N, 2) true position m and velocity m/s at
     t_k; tau_a (N, n) N*m applied over [t_k, t_k+T]; status (N,) int (0 ok, 1 singular,
-    2 saturated, 3 non-finite, 4 preload infeasible); theta_hat (N, 5n) after the update at t_k. ``n_move`` is the number of
-    samples of the desired trajectory proper (eq. 41's N); later rows are settling.
+    2 saturated, 3 non-finite, 4 preload infeasible); theta_hat (N, 5n) after the update at
+    t_k. ``n_move`` is the number of samples of the desired trajectory proper (eq. 41's N) in
+    the arrays; later rows are settling. No field is ever NaN.
+
+    ``outcome`` says how the run ended (:data:`pm2dof.control.outcome.OUTCOMES`):
+    "completed", or "left_workspace" / "diverged" when the true pose left the workspace or
+    the state stopped being finite during sample ``failed_sample`` (over [t_k, t_k + T]), at
+    ``failed_time`` s (``outcome_reason`` says where and why; both None for a completed run).
+    A run that did not complete ends there: its arrays hold samples 0..failed_sample (each
+    one finite and in the workspace), ``n_move`` is clipped to that length, ``final_state``
+    (the closed loop's state after the last sample, ``cl_state`` layout) is None, and
+    :attr:`rmse` is ``inf``: no finite tracking error describes the run, and a sum or mean
+    over runs that includes it cannot pass for a good result (medians and counts still work).
+    The status counts and ``peak_tau`` cover the samples held.
     """
     controller: str
     t: np.ndarray
@@ -113,6 +127,10 @@ class SimResult:
     theta_hat: np.ndarray
     n_move: int
     final_state: np.ndarray = field(repr=False)
+    outcome: str = "completed"
+    failed_sample: int = None
+    failed_time: float = None
+    outcome_reason: str = ""
 
     @property
     def e(self):
@@ -121,8 +139,21 @@ class SimResult:
 
     @property
     def rmse(self):
-        """Eq. 41 over the samples of the desired trajectory, m."""
+        """Eq. 41 over the samples of the desired trajectory, m; ``inf`` if the run did not
+        complete (see ``outcome``)."""
+        if self.outcome != "completed":
+            return math.inf
         return rmse(self.xd[:self.n_move], self.xe[:self.n_move])
+
+    @property
+    def outcome_message(self):
+        """One line: the outcome, and for a run that did not complete, its sample, time and
+        reason."""
+        if self.outcome == "completed":
+            return f"completed ({len(self.t)} samples)"
+        return (f"{self.outcome} during sample {self.failed_sample} (t = "
+                f"{self.t[self.failed_sample]:.4f} s), at t = {self.failed_time:.5f} s: "
+                f"{self.outcome_reason}")
 
     @property
     def n_singular(self):
@@ -222,6 +253,23 @@ def check_trajectory(model, trajectory):
             raise SingularityError(f"{where}: {model.singularity_message(sing)}")
 
 
+def completed_samples(model, y, ylay):
+    """How many leading samples of rollouts exist: (...,) int, from their outputs ``y``
+    (..., N, ny) in the Layout ``ylay`` (``cl_output``).
+
+    A sample exists when its whole row is finite and its true pose xe is in reach of every
+    leg. The plant's dynamics go through the inverse kinematics, so a pose out of reach makes
+    every later row non-finite: only the last finite row can hold one, and only it is checked.
+    ``N`` for a run that completed; else the first sample that does not exist.
+    """
+    bad = ~np.isfinite(y).all(axis=-1)
+    n = np.where(bad.any(axis=-1), bad.argmax(axis=-1), y.shape[-2])
+    last = np.take_along_axis(y[..., ylay.slices["xe"]],
+                              np.maximum(n - 1, 0)[..., None, None], axis=-2)[..., 0, :]
+    type1 = pose_measures(model, last.reshape(-1, 2))[0].reshape(n.shape)
+    return np.where((n > 0) & ~np.isfinite(type1), n - 1, n)
+
+
 def rollout_inputs(model, controller, traj, plant, theta_hat0=None):
     """What one rollout's C call takes: (closed-loop function, initial state x (nx,), inputs u
     (N, 6), parameters p (np,), output Layout). The robot starts at rest at traj's first point,
@@ -237,6 +285,7 @@ def batch_inputs(model, controller, traj, plants, theta_hat0=None):
     ``plants`` (K, n_plant) rows of :func:`plant_vector`, ``theta_hat0`` None or K rows (a row
     None: the controller's theta0). Returns (f, X (K, nx), u (N, 6), P (K, np), output Layout).
     """
+    check_same_model(model, controller)
     plants = np.asarray(plants, dtype=float)
     K = len(plants)
     f = model.function(f"{controller.function_name}_closed_loop")
@@ -255,8 +304,13 @@ def batch_inputs(model, controller, traj, plants, theta_hat0=None):
         C["xe_prev"][k] = model.fk(qa0)
     C["theta_hat"][:] = controller.theta0
     if theta_hat0 is not None:
+        p = len(model.param_names)
         for k, th in enumerate(theta_hat0):
             if th is not None:
+                th = np.asarray(th, dtype=float)
+                if th.shape != (p,) or not np.isfinite(th).all():
+                    raise ValueError(f"theta_hat0 must be {p} finite numbers "
+                                     f"({', '.join(model.param_names)}), got {th.tolist()}")
                 C["theta_hat"][k] = th
     u = np.ascontiguousarray(np.hstack([traj.xd, traj.xd_dot, traj.xd_ddot]))
     return f, X, u, P, model.layout("cl_output")
@@ -289,6 +343,14 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     Returns
     -------
     SimResult
+        Its ``outcome`` says whether the run completed; one that left the workspace or
+        diverged ends at the failed sample (see :class:`SimResult`), and ``simulate`` warns
+        (:class:`pm2dof.OutcomeWarning`) naming the sample, the time and the reason.
+
+    Raises
+    ------
+    ModelMismatchError
+        If ``controller`` was built for another model.
     """
     if not isinstance(controller, (NAController, APDController)):
         raise TypeError(f"controller must be an NAController or APDController, got "
@@ -297,6 +359,7 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     if abs(trajectory.period - T) > 1e-12 * T:
         raise ValueError(f"trajectory period {trajectory.period} s differs from the "
                          f"controller's sample period {T} s")
+    check_same_model(model, controller)
     check_trajectory(model, trajectory)
     n_move = len(trajectory.t)
     traj = trajectory.extended(settle_time) if settle_time > 0 else trajectory
@@ -304,7 +367,23 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     f, x, u, p, ylay = rollout_inputs(model, controller, traj, plant, theta_hat0)
     y = np.empty((len(traj.t), ylay.size))
     f.accumulate(x, u, p, y)
+    N = int(completed_samples(model, y, ylay))
+    end = {}
+    if N < len(y):              # the state at sample N does not exist: the run ends at N - 1
+        y, k = y[:N], N - 1
+        Y = ylay.unpack(y)
+        outcome, when, reason = classify_failure(
+            model, Y["xe"][k], Y["xed"][k], Y["tau_a"][k], plant, T, model.spec.rk4_substeps,
+            traj.t[k])
+        end = {"outcome": outcome, "failed_sample": k, "failed_time": float(when),
+               "outcome_reason": reason}
+        n_move, x = min(n_move, N), None
     Y = ylay.unpack(y)
-    return SimResult(controller=controller._law, t=traj.t, xd=traj.xd, xd_dot=traj.xd_dot, xe=Y["xe"],
-                     xed=Y["xed"], tau_a=Y["tau_a"], status=Y["status"][:, 0].astype(int),
-                     theta_hat=Y["theta_hat"], n_move=n_move, final_state=x)
+    r = SimResult(controller=controller._law, t=traj.t[:N], xd=traj.xd[:N],
+                  xd_dot=traj.xd_dot[:N], xe=Y["xe"], xed=Y["xed"], tau_a=Y["tau_a"],
+                  status=Y["status"][:, 0].astype(int), theta_hat=Y["theta_hat"], n_move=n_move,
+                  final_state=x, **end)
+    if end:
+        warnings.warn(f"simulate ({controller._law}, model {model.name!r}): "
+                      f"{r.outcome_message}", OutcomeWarning, stacklevel=2)
+    return r

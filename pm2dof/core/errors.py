@@ -1,6 +1,6 @@
 # Typed errors of pm2dof: each subclasses a builtin and names the value, the place and the limit.
 __all__ = ["ModelFileError", "StaleGeneratedCodeError", "WorkspaceError", "ClosureError",
-           "SingularityError"]
+           "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning"]
 
 
 class ModelFileError(ValueError):
@@ -22,3 +22,17 @@ class ClosureError(WorkspaceError):
 
 class SingularityError(ValueError):
     """A pose too close to a singularity (singularity measure below the model's threshold)."""
+
+
+class GainError(ValueError):
+    """A controller gain outside what the stability argument allows (names the gain, the entry
+    and the condition): K_d, Q > 0 and Gamma >= 0 (Sect. 4), Kp, Kv > 0 (eq. 40)."""
+
+
+class ModelMismatchError(ValueError):
+    """A controller built for one model used with another (names both models)."""
+
+
+class OutcomeWarning(RuntimeWarning):
+    """A rollout that did not complete: it left the workspace or diverged (``SimResult.outcome``
+    names which, the sample and the time)."""

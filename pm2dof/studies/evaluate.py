@@ -14,7 +14,8 @@ Runs on the workers; imports no Dask or pyarrow (the client turns columns into P
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.simulate import batch_inputs, check_trajectory, plant_vector, theta_truth
+from ..control.simulate import (batch_inputs, check_trajectory, completed_samples, plant_vector,
+                                theta_truth)
 from ..control.trajectory import line
 from ..core.model import load_model
 from .draws import draw_columns, plant_of, sample_draw
@@ -143,14 +144,16 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
         tau = Yf["tau_a"].reshape(K, -1, model.n_legs)
         status = Yf["status"].reshape(K, -1)
         th = Yf["theta_hat"].reshape(K, len(traj.t), -1)
-        _metrics(out, rows, traj.xd, xe, tau, status, n_move)
+        n_ok = completed_samples(model, Y, ylay)       # SimResult's samples: where a run ended
+        _metrics(out, rows, traj.xd, xe, tau, status, n_move, n_ok)
+        th_end = th[np.arange(K), n_ok - 1]            # SimResult.theta_hat[-1]
         if variant.law == "na":
             Pid = ctx["P_id"]
             for k, d in enumerate(draws):
                 t_true = plants[d][r][4]
-                out["theta_error"][rows[k]] = (np.linalg.norm(Pid @ (th[k, -1] - t_true))
+                out["theta_error"][rows[k]] = (np.linalg.norm(Pid @ (th_end[k] - t_true))
                                                / np.linalg.norm(Pid @ t_true))
-        theta = [th[k, -1].copy() for k in range(K)]   # carried into the next run
+        theta = [th_end[k].copy() for k in range(K)]   # carried into the next run
         out["rollout"][rows] = row0 + rows
         out["controller"][rows] = variant.name
         out["law"][rows] = variant.law
@@ -161,18 +164,21 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
             out[key][rows] = v
 
 
-def _metrics(out, rows, xd, xe, tau, status, n_move):
+def _metrics(out, rows, xd, xe, tau, status, n_move, n_ok):
     """SimResult's metrics, one row per rollout: rmse (eq. 41) and max |e| over the move's
-    samples, m; peak |tau_a| N*m and the status counts over every sample."""
+    samples, m (``inf`` for a run that did not complete: ``diverged``); peak |tau_a| N*m and
+    the status counts over the samples the run completed (the first ``n_ok`` (K,))."""
     e = xd[:n_move] - xe[:, :n_move]
     e2 = np.sum(e * e, axis=-1)
-    diverged = ~np.isfinite(xe).all(axis=(1, 2))
-    out["rmse"][rows] = np.where(diverged, np.inf, np.sqrt(np.mean(e2, axis=-1)))  # eq. 41
-    out["max_error"][rows] = np.where(diverged, np.inf, np.sqrt(np.max(e2, axis=-1)))
-    out["peak_tau"][rows] = np.max(np.abs(tau), axis=(1, 2))
-    out["n_singular"][rows] = np.sum(status == 1, axis=1)
-    out["n_saturated"][rows] = np.sum(status == 2, axis=1)
-    out["n_non_finite"][rows] = np.sum(status == 3, axis=1)
+    diverged = n_ok < xe.shape[1]                     # SimResult.outcome != "completed"
+    held = np.arange(xe.shape[1]) < n_ok[:, None]     # the samples a SimResult holds
+    with np.errstate(invalid="ignore"):
+        out["rmse"][rows] = np.where(diverged, np.inf, np.sqrt(np.mean(e2, axis=-1)))  # eq. 41
+        out["max_error"][rows] = np.where(diverged, np.inf, np.sqrt(np.max(e2, axis=-1)))
+    out["peak_tau"][rows] = np.max(np.where(held[..., None], np.abs(tau), 0.0), axis=(1, 2))
+    out["n_singular"][rows] = np.sum(held & (status == 1), axis=1)
+    out["n_saturated"][rows] = np.sum(held & (status == 2), axis=1)
+    out["n_non_finite"][rows] = np.sum(held & (status == 3), axis=1)
     out["diverged"][rows] = diverged
 
 
