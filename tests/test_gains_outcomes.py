@@ -221,7 +221,8 @@ def test_cli_prints_the_outcome(tmp_path, capsys):
     assert edited.count("1e6") == 3 and "1e4, 1e4" in edited, "model file layout changed"
     p = tmp_path / "unstable.toml"
     p.write_text(edited)
-    assert cli.main(["table3", "--model", str(p)]) == 0
+    gen = Path(M.library).parent      # the same formulation: gains and limits are run time
+    assert cli.main(["table3", "--model", str(p), "--generated", str(gen)]) == 0
     out, err = capsys.readouterr()
     assert "nan" not in out.lower(), out
     assert "pm2dof: warning: simulate (na, model 'shang2010'): left_workspace during sample" \
