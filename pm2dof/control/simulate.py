@@ -258,16 +258,21 @@ def completed_samples(model, y, ylay):
     (..., N, ny) in the Layout ``ylay`` (``cl_output``).
 
     A sample exists when its whole row is finite and its true pose xe is in reach of every
-    leg. The plant's dynamics go through the inverse kinematics, so a pose out of reach makes
-    every later row non-finite: only the last finite row can hold one, and only it is checked.
-    ``N`` for a run that completed; else the first sample that does not exist.
+    leg (|la - lb| <= |xe - A_i| <= la + lb). The plant's dynamics go through the inverse
+    kinematics, so a pose out of reach makes every later row non-finite: only the last finite
+    row can hold one, and only it is checked. ``N`` for a run that completed; else the first
+    sample that does not exist.
     """
-    bad = ~np.isfinite(y).all(axis=-1)
-    n = np.where(bad.any(axis=-1), bad.argmax(axis=-1), y.shape[-2])
-    last = np.take_along_axis(y[..., ylay.slices["xe"]],
-                              np.maximum(n - 1, 0)[..., None, None], axis=-2)[..., 0, :]
-    type1 = pose_measures(model, last.reshape(-1, 2))[0].reshape(n.shape)
-    return np.where((n > 0) & ~np.isfinite(type1), n - 1, n)
+    N, ny = y.shape[-2:]
+    yy = y.reshape(-1, N, ny)
+    bad = ~np.isfinite(yy).all(axis=-1)
+    n = np.where(bad.any(axis=-1), bad.argmax(axis=-1), N)
+    last = yy[np.arange(len(yy)), np.maximum(n - 1, 0), ylay.slices["xe"]]     # (K, 2)
+    reach = n > 0
+    for leg in model.spec.legs:
+        d = np.hypot(last[:, 0] - leg.base[0], last[:, 1] - leg.base[1])
+        reach &= (abs(leg.la - leg.lb) <= d) & (d <= leg.la + leg.lb)
+    return np.where((n > 0) & ~reach, n - 1, n).reshape(y.shape[:-2])
 
 
 def rollout_inputs(model, controller, traj, plant, theta_hat0=None):
