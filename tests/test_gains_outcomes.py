@@ -154,6 +154,19 @@ def test_a_run_that_leaves_the_workspace_ends_with_its_outcome(name, make):
     assert not np.isfinite(y).all(), f"{name}: the raw rollout was expected to go non-finite"
 
 
+def test_a_state_that_overflows_at_a_reachable_pose_is_diverged():
+    from pm2dof.control.outcome import classify_failure
+    xe = np.array([0.245, 0.265])                       # well inside the workspace
+    plant, T, sub = plant_vector(M), 0.002, M.spec.rk4_substeps
+    # 1e200 m/s: the velocity-squared (Coriolis) terms overflow at the very first RK4 stage
+    got = classify_failure(M, xe, np.array([1e200, 0.0]), np.zeros(N), plant, T, sub, 0.1)
+    assert got[:2] == ("diverged", 0.1), got
+    assert "every leg reaches" in got[2] and str(xe.tolist()) in got[2], got
+    # at rest with a finite torque nothing fails: the replay says so instead of guessing
+    got = classify_failure(M, xe, np.zeros(2), np.ones(N), plant, T, sub, 0.1)
+    assert got[:2] == ("diverged", 0.1 + T) and "a replay of this sample stays finite" in got[2]
+
+
 def test_completed_runs_are_unchanged_and_do_not_warn():
     with warnings.catch_warnings():
         warnings.simplefilter("error", OutcomeWarning)

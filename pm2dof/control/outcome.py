@@ -83,8 +83,9 @@ def classify_failure(model, xe, xed, tau_a, plant, period, substeps, t0):
             return outcome, t0 + (j + 1) * h, reason
         z = nxt.copy()
     else:
-        return "diverged", t0 + period, "the state is not finite at the end of the sample"
-    # the four RK4 stages of substep j (derive/plant.py), in order: the first that fails
+        return "diverged", t0 + period, ("the rollout's next state is not finite, but a replay "
+                                         "of this sample stays finite and in reach")
+    # the four RK4 stages of substep j (pm2dof/derive/plant.py), in order: the first that fails
     s = z
     for c, w in ((0.0, 0.5), (0.5, 0.5), (0.5, 1.0), (1.0, None)):
         if np.isfinite(s).all():
