@@ -1,4 +1,4 @@
-# Gains the stability proof allows, rollouts that end (outcome, never NaN), controller vs model, step inputs.
+# Gains the stability proof allows, rollouts that end (never NaN), controller vs model, step inputs.
 """Controller gains, rollout outcomes, the controller's model and the step's inputs (issue 22).
 
 * Gains outside Sect. 4's conditions (K_d, Q > 0, Gamma >= 0) or eq. 40's (Kp, Kv > 0), not

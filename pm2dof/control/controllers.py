@@ -301,8 +301,9 @@ class APDController(_Controller):
     """The augmented PD controller of eq. 40 with the nominal model (Tables 1-2).
 
     Parameters are those of :class:`NAController` with ``Kp`` (N/m), ``Kv`` (N*s/m) in place
-    of the NA gains (diagonal, each entry > 0, else :class:`pm2dof.GainError`); ``theta0`` is the fixed model inside the feedforward; ``split``,
-    ``preload`` and ``preload_sign`` as for NA.
+    of the NA gains (diagonal, each entry > 0, else :class:`pm2dof.GainError`); ``theta0`` is
+    the fixed model inside the feedforward; ``split``, ``preload`` and ``preload_sign`` as for
+    NA.
     """
     _law = "apd"
 

@@ -17,8 +17,9 @@ from .controllers import APDController, NAController, check_same_model
 from .outcome import OUTCOMES, classify_failure
 from ..core.errors import OutcomeWarning, SingularityError, WorkspaceError
 
-__all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "plant_truth", "plant_vector", "rmse", "theta_truth",
-           "check_trajectory", "pose_measures", "rollout_inputs", "batch_inputs"]
+__all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "plant_truth",
+           "plant_vector", "rmse", "theta_truth", "check_trajectory", "pose_measures",
+           "rollout_inputs", "batch_inputs"]
 
 
 def plant_truth(model, **overrides):
@@ -101,9 +102,10 @@ class SimResult:
 
     t (N,) s; xd, xd_dot (N, 2) desired; xe, xed (N, 2) true position m and velocity m/s at
     t_k; tau_a (N, n) N*m applied over [t_k, t_k+T]; status (N,) int (0 ok, 1 singular,
-    2 saturated, 3 non-finite, 4 preload infeasible); theta_hat (N, 5n) after the update at
-    t_k. ``n_move`` is the number of samples of the desired trajectory proper (eq. 41's N) in
-    the arrays; later rows are settling. No field is ever NaN.
+    2 saturated, 3 non-finite, 4 preload infeasible, 5 inconsistent encoders); theta_hat
+    (N, 5n) after the update at t_k. ``n_move`` is the number of samples of the desired
+    trajectory proper (eq. 41's N) in the arrays; later rows are settling. No field is ever
+    NaN.
 
     ``outcome`` says how the run ended (:data:`pm2dof.control.outcome.OUTCOMES`):
     "completed", or "left_workspace" / "diverged" when the true pose left the workspace or
