@@ -266,6 +266,10 @@ def completed_samples(model, y, ylay):
     sample that does not exist.
     """
     N, ny = y.shape[-2:]
+    if y.ndim == 2 and np.isfinite(y).all():    # one finite rollout (simulate): its last pose
+        x, z = y[-1, ylay.slices["xe"]].tolist()
+        return N - (not all(abs(g.la - g.lb) <= math.hypot(x - g.base[0], z - g.base[1])
+                            <= g.la + g.lb for g in model.spec.legs))
     yy = y.reshape(-1, N, ny)
     bad = ~np.isfinite(yy).all(axis=-1)
     n = np.where(bad.any(axis=-1), bad.argmax(axis=-1), N)
