@@ -907,3 +907,67 @@ def test_accumulate_batch_argument_errors(toy, step):
     buf = np.zeros(16)
     with pytest.raises(ValueError, match=r"must not share memory"):
         step.accumulate_batch(buf[:6], u, np.zeros(2), buf)
+
+
+# --------------------------------------------------------------------------------------
+# map: K points in one call
+# --------------------------------------------------------------------------------------
+
+def test_map_equals_one_call_per_point_with_broadcast_inputs_and_none_outputs():
+    import pm2dof
+    m = pm2dof.load_model()
+    f = m.function("Ce")                                     # (q, xed, theta) -> (Ce, sing)
+    rng = np.random.default_rng(5)
+    K = 37
+    Q = np.array([m.ik([0.245, 0.265] + rng.uniform(-0.02, 0.02, 2)) for _ in range(K)])
+    V = rng.normal(0, 0.3, (K, 2))
+    out, sing = np.empty((K, 4)), np.empty((K, 2))
+    f.map(K, Q, V, m.theta_nominal, out, sing)               # theta: one value for all points
+    for k in range(K):
+        o, s = np.empty(4), np.empty(2)
+        f(Q[k], V[k], m.theta_nominal, o, s)
+        assert np.array_equal(out[k], o) and np.array_equal(sing[k], s), k
+    out2 = np.empty((K, 4))
+    f.map(K, Q, V, m.theta_nominal, out2, None)              # an output may be skipped
+    assert np.array_equal(out, out2)
+    one = np.empty((1, 4))
+    f.map(1, Q[0], V[0], m.theta_nominal, one, None)         # K = 1: every input is per point
+    assert np.array_equal(one[0], out[0])
+
+
+def test_map_refuses_bad_arguments_by_name():
+    import pm2dof
+    m = pm2dof.load_model()
+    f = m.function("Me")
+    q = np.tile(m.ik([0.245, 0.265]), (4, 1))
+    out = np.empty((4, 4))
+    with pytest.raises(ValueError, match=r"map: input 'q' \(#0\) must have 6 float64 elements "
+                                         r"\(one value for all points\) or K \* 6 = 24"):
+        f.map(4, q[:3], m.theta_nominal, out, None)
+    with pytest.raises(ValueError, match=r"map: K must be >= 1"):
+        f.map(0, q, m.theta_nominal, out, None)
+    bad = q.copy()
+    bad[2, 1] = np.nan
+    with pytest.raises(ValueError, match=r"map: input 'q' \(#0\) has a non-finite value at "
+                                         r"index 13"):
+        f.map(4, bad, m.theta_nominal, out, None)
+    with pytest.raises(ValueError, match=r"map: output 'Me' \(#0\) must have 16"):
+        f.map(4, q, m.theta_nominal, np.empty((3, 4)), None)
+    with pytest.raises(TypeError, match=r"takes 5 arguments \(K, 2 inputs, 2 outputs\), got 4"):
+        f.map(4, q, m.theta_nominal, out)
+    shared = np.empty(24)
+    with pytest.raises(ValueError, match="shares memory with input 'q'"):
+        f.map(4, shared, m.theta_nominal, shared[:16], None)
+
+
+def test_map_names_the_point_of_a_non_finite_output():
+    import pm2dof
+    m = pm2dof.load_model()
+    f = m.function("Me")
+    q = np.tile(m.ik([0.245, 0.265]), (3, 1))
+    theta = np.tile(m.theta_nominal, (3, 1))
+    theta[1, :3] = 1e308                                      # alpha overflows Me at point 1
+    assert f.check_outputs
+    with pytest.raises(_cbind.NonFiniteOutputError, match=r"Me\.map: output 'Me' \(#0\) is not "
+                                                          r"finite at point 1"):
+        f.map(3, q, theta, np.empty((3, 4)), np.empty((3, 2)))

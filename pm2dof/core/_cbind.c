@@ -1461,6 +1461,152 @@ fail:
     return NULL;
 }
 
+
+/* ---- f.map(K, *inputs, *outputs) ---- */
+
+static PyObject *
+Function_map(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
+{
+    FunctionObject *f = (FunctionObject *)self;
+    if (kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0) {
+        PyErr_Format(PyExc_TypeError, "%U.map() takes no keyword arguments", f->name);
+        return NULL;
+    }
+    const Py_ssize_t nio = f->n_in + f->n_out;
+    if (nargs != nio + 1) {
+        PyErr_Format(PyExc_TypeError,
+                     "%U.map(K, *inputs, *outputs) for %U takes %zd arguments (K, %zd "
+                     "input%s, %zd output%s), got %zd",
+                     f->name, f->signature, nio + 1, f->n_in, f->n_in == 1 ? "" : "s",
+                     f->n_out, f->n_out == 1 ? "" : "s", nargs);
+        return NULL;
+    }
+    Py_ssize_t K = PyLong_AsSsize_t(args[0]);
+    if (K == -1 && PyErr_Occurred())
+        return NULL;
+    if (K < 1) {
+        PyErr_Format(PyExc_ValueError, "%U.map: K must be >= 1, got %zd", f->name, K);
+        return NULL;
+    }
+    Py_ssize_t *stride = PyMem_Calloc((size_t)nio + 1, sizeof(Py_ssize_t));
+    const double **base = PyMem_Calloc((size_t)nio + 1, sizeof(double *));
+    if (stride == NULL || base == NULL) {
+        PyMem_Free(stride);
+        PyMem_Free(base);
+        return PyErr_NoMemory();
+    }
+    Work tmp;
+    Work *w = work_acquire(f, &tmp);
+    if (w == NULL) {
+        PyMem_Free(stride);
+        PyMem_Free(base);
+        return NULL;
+    }
+    Py_ssize_t held = 0, count;
+    for (Py_ssize_t i = 0; i < f->n_in; i++) {
+        ArgCtx c = {"map", NULL, 0, i};
+        const Py_ssize_t nz = f->nnz[i];
+        const double *d;
+        int scalar = nz == 1 && (PyFloat_Check(args[1 + i]) || PyLong_Check(args[1 + i]));
+        if (bind_input(f, w, args[1 + i], &held, &c, scalar ? 1 : -1, 0, &d, &count) < 0)
+            goto fail;
+        if (count == nz && K > 1)
+            stride[i] = 0; /* one value for every point */
+        else if (count == K * nz)
+            stride[i] = nz;
+        else {
+            arg_error(f, PyExc_ValueError, &c,
+                      "must have %zd float64 elements (one value for all points) or K * %zd "
+                      "= %zd (one row per point), got %zd", nz, nz, K * nz, count);
+            goto fail;
+        }
+        if (check_finite(f, d, count, &c) < 0)
+            goto fail;
+        base[i] = d;
+    }
+    for (Py_ssize_t j = 0; j < f->n_out; j++) {
+        ArgCtx c = {"map", NULL, 1, j};
+        const Py_ssize_t nz = f->nnz[f->n_in + j];
+        double *d;
+        if (bind_output(f, w, args[1 + f->n_in + j], &held, &c, K * nz, 0, &d, &count) < 0)
+            goto fail;
+        stride[f->n_in + j] = nz;
+        base[f->n_in + j] = d;
+        if (d == NULL)
+            continue;
+        for (Py_ssize_t i = 0; i < f->n_in; i++)
+            if (overlaps(d, K * nz, base[i], stride[i] ? K * f->nnz[i] : f->nnz[i])) {
+                arg_error(f, PyExc_ValueError, &c, "shares memory with input '%U' (#%zd)",
+                          PyTuple_GET_ITEM(f->names_in, i), i);
+                goto fail;
+            }
+        for (Py_ssize_t k = 0; k < j; k++)
+            if (base[f->n_in + k] &&
+                overlaps(d, K * nz, base[f->n_in + k], K * f->nnz[f->n_in + k])) {
+                arg_error(f, PyExc_ValueError, &c, "shares memory with output '%U' (#%zd)",
+                          PyTuple_GET_ITEM(f->names_out, k), k);
+                goto fail;
+            }
+    }
+    int rc = 0;
+    Py_ssize_t k = 0;
+    Py_BEGIN_ALLOW_THREADS
+    for (k = 0; k < K && rc == 0; k++) {
+        for (Py_ssize_t i = 0; i < f->n_in; i++)
+            w->arg[i] = base[i] + k * stride[i];
+        for (Py_ssize_t j = 0; j < f->n_out; j++)
+            w->res[j] = base[f->n_in + j] ? (double *)base[f->n_in + j] +
+                                                k * stride[f->n_in + j] : NULL;
+        rc = f->eval(w->arg, w->res, w->iw, w->w, w->mem);
+    }
+    Py_END_ALLOW_THREADS
+    if (rc != 0) {
+        work_done(f, w, held);
+        PyMem_Free(stride);
+        PyMem_Free(base);
+        PyErr_Format(EvalError, "%U.map: CasADi function returned error code %d at point %zd "
+                     "of %zd", f->name, rc, k - 1, K);
+        return NULL;
+    }
+    if (f->check_outputs) {
+        for (Py_ssize_t j = 0; j < f->n_out; j++) {
+            const double *r = base[f->n_in + j];
+            const Py_ssize_t nz = f->nnz[f->n_in + j];
+            if (r == NULL)
+                continue;
+            Py_ssize_t e = first_nonfinite(r, K * nz);
+            if (e >= 0) {
+                PyErr_Format(NonFiniteOutputError,
+                             "%U.map: output '%U' (#%zd) is not finite at point %zd, index %zd "
+                             "although every input is finite (a degenerate pose or parameter "
+                             "set)", f->name, PyTuple_GET_ITEM(f->names_out, j), j, e / nz,
+                             e % nz);
+                goto fail;
+            }
+        }
+    }
+    work_done(f, w, held);
+    PyMem_Free(stride);
+    PyMem_Free(base);
+    Py_RETURN_NONE;
+
+fail:
+    work_done(f, w, held);
+    PyMem_Free(stride);
+    PyMem_Free(base);
+    return NULL;
+}
+
+PyDoc_STRVAR(map_doc,
+"map(K, *inputs, *outputs) -> None\n"
+"--\n\n"
+"Evaluate the function at K points in one call, in C (GIL released).\n\n"
+"Each input is a float64 buffer of K*nnz elements (row k = its value at point k) or of\n"
+"nnz elements (the same value at every point; a Python number for a 1-element input).\n"
+"Each output is a writable float64 buffer of K*nnz elements (row k = point k), or None.\n"
+"Inputs must be finite; with check_outputs, a non-finite output raises\n"
+"NonFiniteOutputError naming the point.");
+
 PyDoc_STRVAR(accumulate_batch_doc,
 "accumulate_batch(X, u_seq, P, Y_seq) -> None\n"
 "--\n\n"
@@ -1492,6 +1638,7 @@ static PyMethodDef Function_methods[] = {
      METH_FASTCALL | METH_KEYWORDS, accumulate_doc},
     {"accumulate_batch", (PyCFunction)(void (*)(void))Function_accumulate_batch,
      METH_FASTCALL | METH_KEYWORDS, accumulate_batch_doc},
+    {"map", (PyCFunction)(void (*)(void))Function_map, METH_FASTCALL | METH_KEYWORDS, map_doc},
     {NULL, NULL, 0, NULL},
 };
 
