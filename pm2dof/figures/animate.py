@@ -79,10 +79,29 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     tmp = out.with_name(f".{out.name}.tmp.gif")
-    anim.save(tmp, writer=animation.PillowWriter(fps=fps), dpi=DPI)
+    anim.save(tmp, writer=_gif_writer(animation)(fps=fps), dpi=DPI)
     tmp.replace(out)                             # atomic: never a half-written GIF
     plt.close(fig)
     return out, r
+
+
+def _gif_writer(animation):
+    """matplotlib's PillowWriter with one palette for every frame, taken from the first, and no
+    dithering: frames then differ only where something moved, and Pillow stores only that
+    (a third of the size of independently dithered frames)."""
+    from PIL import Image
+
+    class SharedPaletteGIF(animation.PillowWriter):
+        def finish(self):
+            first = self._frames[0].convert("RGB").quantize(
+                colors=128, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+            frames = [first] + [f.convert("RGB").quantize(palette=first,
+                                                          dither=Image.Dither.NONE)
+                                for f in self._frames[1:]]
+            frames[0].save(self.outfile, save_all=True, append_images=frames[1:],
+                           duration=int(1000 / self.fps), loop=0)
+
+    return SharedPaletteGIF
 
 
 def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2):

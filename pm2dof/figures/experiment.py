@@ -55,10 +55,10 @@ def _torques(plt, results):
                         label=rf"$\tau_{{a{leg + 1}}}$, actuator {leg + 1}")
             ax.axvline(r.t[r.n_move - 1], color="0.5", ls=":", lw=1)
             ax.set_title(f"{LABELS[name]}, {speed} speed", fontsize=9)
+            ax.set_xlabel("time (s)")
             ax.grid(alpha=0.3)
         axes[i][0].set_ylabel("torque (N m)")
-    for ax in axes[-1]:
-        ax.set_xlabel("time (s); dotted: end of the move")
+    fig.suptitle("Actuator torques (simulated; dotted: the end of the move)", fontsize=10)
     legend_outside(fig, axes[0][:1], "lower")
     return fig
 
