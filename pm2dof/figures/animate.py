@@ -7,7 +7,7 @@ from ..analysis.experiment import trajectory
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from .experiment import COLORS, LABELS, _plt, sci
-from .style import legend_outside
+from .style import label_bases, legend_outside
 
 __all__ = ["animate_move", "animation_figure"]
 
@@ -123,11 +123,7 @@ def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2)
     pts = np.vstack([b, links.reshape(-1, 2)])
     lo, hi = pts.min(axis=0) - 0.07, pts.max(axis=0) + 0.07    # room for the labels
     ax.plot(b[:, 0], b[:, 1], "k^", ms=8, label="bases A1, A2, ...")
-    for i, d in enumerate(b - b.mean(axis=0)):      # each label away from the robot's middle
-        d = d / (np.hypot(*d) or 1.0)
-        ax.annotate(f"A{i + 1}", b[i], xytext=9 * d, textcoords="offset points", fontsize=9,
-                    ha="left" if d[0] > 0.3 else "right" if d[0] < -0.3 else "center",
-                    va="bottom" if d[1] > 0.3 else "top" if d[1] < -0.3 else "center")
+    label_bases(ax, b, fontsize=9, offset=9.0)
     ax.plot(r.xd[:, 0], r.xd[:, 1], "-", color="0.6", lw=3, label="desired path")
     trace_true, = ax.plot([], [], "-", color=color, lw=1, label="actual path, true scale")
     legs = [ax.plot([], [], "-o", color="0.25", lw=2, ms=3)[0] for _ in range(model.n_legs)]

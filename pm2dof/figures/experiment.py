@@ -3,7 +3,7 @@ import numpy as np
 from matplotlib.ticker import MaxNLocator
 
 from ..analysis.results import save_figure
-from .style import kind_of, legend_outside, param_styles, place_legend
+from .style import kind_of, legend_outside, param_styles, place_legend, tex_name
 
 __all__ = ["write_figures", "experiment_figures"]
 
@@ -72,13 +72,13 @@ def _theta(plt, results, names):
         r = results[speed]["na"]
         change = 100.0 * (r.theta_hat / r.theta_hat[0] - 1.0)
         for k, name in enumerate(names):
-            ax.plot(r.t, change[:, k], lw=1, label=name, **styles[name])
+            ax.plot(r.t, change[:, k], lw=1, label=tex_name(name), **styles[name])
         ax.set_title(f"NA's estimate during the {speed}-speed move", fontsize=9)
         ax.set_xlabel("time (s)")
         ax.set_ylabel(THETA_HAT + r"$_k\,/\,$" + THETA_HAT + r"$_k(0) - 1$ (%)")
         ax.grid(alpha=0.3)
     legend_outside(fig, axes[0][:1], "lower", ncol=len({kind_of(n)[0] for n in names}),
-                   fontsize=7)
+                   fontsize=8)
     return fig
 
 
@@ -99,16 +99,16 @@ def _repeated(plt, rep, names, speed):
     rel = theta / rep["theta_truth"]
     styles = param_styles(names)
     for k, name in enumerate(names):
-        a2.plot(np.arange(len(theta)), rel[:, k], lw=1, label=name, **styles[name])
+        a2.plot(np.arange(len(theta)), rel[:, k], lw=1, label=tex_name(name), **styles[name])
     a2.axhline(1.0, color="k", lw=0.8)
     a2.set_xlabel("run (0: Tables 1-2)")
     a2.set_ylabel(THETA_HAT + " / truth at the end of the run")
-    a2.set_title("Where " + THETA_HAT + " goes (truth: inertias with the payload, fv, fc)",
+    a2.set_title("Where " + THETA_HAT + r" goes (truth: inertias with the payload, $f_v$, $f_c$)",
                  fontsize=9)
     a2.grid(alpha=0.3)
     a2.xaxis.set_major_locator(MaxNLocator(integer=True))
     place_legend(a1, fontsize=8)
-    legend_outside(fig, [a2], "right", fontsize=7)
+    legend_outside(fig, [a2], "right", fontsize=8)
     return fig
 
 

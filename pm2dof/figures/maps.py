@@ -7,7 +7,7 @@ from ..analysis.experiment import trajectory
 from ..analysis.maps import FIELDS, maps_summary, workspace_maps
 from ..analysis.results import provenance, save_figure, write_json
 from .experiment import _plt
-from .style import log_ticks, wrap
+from .style import label_bases, log_ticks, wrap
 
 __all__ = ["maps_figures", "maps_figure", "maps_note", "draw_robot_frame"]
 
@@ -29,11 +29,7 @@ def draw_robot_frame(ax, model, maps):
         ax.contour(X, Y, side, levels=[0.0], colors="m", linewidths=1.2, linestyles="-")
     b = model.bases
     ax.plot(b[:, 0], b[:, 1], "k^", ms=7)
-    for i, d in enumerate(b - b.mean(axis=0)):      # each label away from the robot's middle
-        d = d / (np.hypot(*d) or 1.0)
-        ax.annotate(f"A{i + 1}", b[i], xytext=8 * d, textcoords="offset points", fontsize=8,
-                    ha="left" if d[0] > 0.3 else "right" if d[0] < -0.3 else "center",
-                    va="bottom" if d[1] > 0.3 else "top" if d[1] < -0.3 else "center")
+    label_bases(ax, b)
     for speed in model.spec.trajectories:
         xd = trajectory(model, speed).xd
         ax.plot(xd[:, 0], xd[:, 1], "-", color="w", lw=3.5)

@@ -16,8 +16,8 @@ import textwrap
 
 import numpy as np
 
-__all__ = ["log_ticks", "legend_outside", "place_legend", "wrap", "param_styles", "kind_of", "UNITS",
-           "with_unit"]
+__all__ = ["log_ticks", "legend_outside", "place_legend", "wrap", "param_styles", "kind_of",
+           "tex_name", "label_bases", "UNITS", "with_unit"]
 
 #: units of the columns a study samples or grids (pm2dof/studies/spec.py); "" = a factor
 UNITS = {"payload_mass": "kg", "fv_scale": "factor", "fc_scale": "factor",
@@ -122,6 +122,18 @@ def place_legend(ax, **kwargs):
     return ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, **kwargs)
 
 
+def label_bases(ax, bases, fontsize=8, offset=8.0):
+    """Name the bases A1, A2, ... beside their markers, each label ``offset`` points away from
+    the bases' centre (outwards, off the robot). ``bases`` (n, 2) m."""
+    bases = np.asarray(bases, dtype=float)
+    for i, d in enumerate(bases - bases.mean(axis=0)):
+        d = d / (np.hypot(*d) or 1.0)
+        ax.annotate(f"A{i + 1}", bases[i], xytext=offset * d, textcoords="offset points",
+                    fontsize=fontsize,
+                    ha="left" if d[0] > 0.3 else "right" if d[0] < -0.3 else "center",
+                    va="bottom" if d[1] > 0.3 else "top" if d[1] < -0.3 else "center")
+
+
 def wrap(fig, text, fontsize):
     """``text`` wrapped to lines that fit the figure's width at ``fontsize`` points (paragraphs
     split at newlines are wrapped each)."""
@@ -140,6 +152,17 @@ def kind_of(name):
     """("fv", 2) for "fv2": the kind of a parameter of theta and its leg (1-based)."""
     kind, leg = _KIND.fullmatch(name).groups()
     return kind, int(leg)
+
+
+def tex_name(name):
+    """The paper's symbol of a parameter of theta as mathtext: "alpha1" -> $\\alpha_{1}$,
+    "fv2" -> $f_{v2}$."""
+    kind, leg = kind_of(name)
+    if kind in ("alpha", "beta", "gamma"):
+        return rf"$\{kind}_{{{leg}}}$"
+    if len(kind) == 2 and kind[0] == "f":
+        return rf"$f_{{{kind[1]}{leg}}}$"
+    return name
 
 
 def param_styles(names):
