@@ -19,6 +19,20 @@ FIGURES = {  # file -> the maps it shows, side by side
 }
 
 
+def _extent(model, maps):
+    """(lo, hi) (2,) m of a map's axes: the reachable set and the bases, with room for the
+    bases' labels."""
+    X, Y = np.meshgrid(maps["x"], maps["y"])
+    reach = np.column_stack([X[maps["reachable"]], Y[maps["reachable"]]])
+    if not len(reach):                                 # nothing reachable: the whole grid
+        reach = np.array([[maps["x"][0], maps["y"][0]], [maps["x"][-1], maps["y"][-1]]])
+    b = model.bases
+    lo = np.minimum(b.min(axis=0), reach.min(axis=0))
+    hi = np.maximum(b.max(axis=0), reach.max(axis=0))
+    pad = 0.1 * float(np.max(hi - lo))
+    return lo - pad, hi + pad
+
+
 def draw_robot_frame(ax, model, maps):
     """Bases, the reachable set's boundary, for two legs the parallel-singular curve, and the
     model's moves, on an axis in metres."""
@@ -36,11 +50,9 @@ def draw_robot_frame(ax, model, maps):
         ax.plot(xd[:, 0], xd[:, 1], "-", color="tab:red", lw=1.5)
         ax.plot(*xd[0], "o", color="tab:red", ms=4)
         ax.plot(*xd[-1], "s", color="tab:red", ms=4)
-    lo = np.minimum(b.min(axis=0), [maps["x"][0], maps["y"][0]])
-    hi = np.maximum(b.max(axis=0), [maps["x"][-1], maps["y"][-1]])
-    pad = 0.1 * float(np.max(hi - lo))                 # room for the bases' labels
-    ax.set_xlim(lo[0] - pad, hi[0] + pad)
-    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    lo, hi = _extent(model, maps)
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
@@ -98,8 +110,10 @@ def _panel(plt, fig, ax, model, maps, key):
 
 def maps_figure(plt, model, maps, keys, note):
     """One figure of the maps ``keys`` side by side, ``note`` wrapped above them."""
-    fig, axes = plt.subplots(1, len(keys), figsize=(0.6 + 5.0 * len(keys), 4.8), squeeze=False,
-                             layout="constrained")
+    lo, hi = _extent(model, maps)
+    aspect = float(np.clip((hi[1] - lo[1]) / (hi[0] - lo[0]), 0.5, 2.0))
+    fig, axes = plt.subplots(1, len(keys), figsize=(0.6 + 5.0 * len(keys), 1.6 + 3.4 * aspect),
+                             squeeze=False, layout="constrained")
     for ax, key in zip(axes[0], keys):
         _panel(plt, fig, ax, model, maps, key)
     fig.suptitle(wrap(fig, note, 8), fontsize=8)
