@@ -207,8 +207,10 @@ def cmd_study_run(args):
               f"same command again to continue where it stopped.", file=sys.stderr)
         return 130
     print(f"{res['rows']} rows in {args.out}/results ({res['skipped']} of {res['chunks']} chunks "
-          f"were already there; {res['seconds']:.1f} s, {res['rollouts_per_s']:,.0f} "
-          f"rollouts/s). Next: pm2dof study report {args.out}")
+          f"were already there). Wall time {res['seconds']:.1f} s, {res['rollouts_per_s']:,.0f} "
+          f"rollouts/s, including {res['cluster_seconds']:.1f} s to set up and close the cluster; "
+          f"running the rollouts {res['run_seconds']:.1f} s, {res['run_rollouts_per_s']:,.0f} "
+          f"rollouts/s (the progress line's rate). Next: pm2dof study report {args.out}")
     return 0
 
 

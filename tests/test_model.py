@@ -59,7 +59,7 @@ from pm2dof.reference import model as ref
 # Constants, helpers
 # --------------------------------------------------------------------------------------
 
-# the paper's robot (NOTES.md, Sect. 2): used by the paper-only checks
+# the paper's robot (docs/paper.md, the paper's Sect. 2): used by the paper-only checks
 L = 0.244                     # all link lengths, m
 BASES = np.array([[0.0, 0.25], [0.433, 0.0], [0.433, 0.5]])
 N_LEGS = 3
@@ -193,7 +193,7 @@ def test_ik_closes_loop_and_fk_inverts_it(model, sample_xe):
         info = fmt(xe=xe, q=q)
         check("H(ik(x)) [m]", model.H(q), np.zeros(2 * (n - 1)), TOL_EXACT, 1.0, info, model)
         check("fk(ik(x)[:n]) - x [m]", model.fk(q[:n]), xe, TOL_EXACT, 1.0, info, model)
-        # the tips of all legs are at xe (typed here from NOTES.md, Sect. 2, per-leg lengths)
+        # the tips of all legs are at xe (typed from docs/paper.md, Sect. 1, per-leg lengths)
         for i in range(n):
             tip = bases[i] + la[i] * u(q[i]) + lb[i] * u(q[n + i])
             check("tip_i(ik(x)) - x [m]", tip, xe, TOL_EXACT, 1.0, f"leg {i + 1}, {info}", model)
@@ -330,7 +330,7 @@ def test_Mdot_minus_2C_is_skew_symmetric_joint_space(model, random_theta):
 
 
 def test_M_C_typed_from_notes(model, random_theta):
-    """M and C of eq. 3 at arbitrary q, qd, typed from NOTES.md (n legs)."""
+    """M and C of eq. 3 at arbitrary q, qd, typed from docs/paper.md (n legs)."""
     n = model.n_legs
     rng = np.random.default_rng(15)
     for _ in range(N_POSES):
@@ -338,8 +338,8 @@ def test_M_C_typed_from_notes(model, random_theta):
         theta = random_theta(model, rng)
         Mw, Cw = _M_notes(model, q, theta), _C_notes(model, q, qd, theta)
         info = fmt(q=q, qd=qd, theta=theta)
-        check("M vs NOTES", model.M(q, theta), Mw, TOL_EXACT, maxabs(Mw), info, model)
-        check("C vs NOTES", model.C(q, qd, theta), Cw, TOL_EXACT, maxabs(Cw), info, model)
+        check("M vs docs/paper.md", model.M(q, theta), Mw, TOL_EXACT, maxabs(Mw), info, model)
+        check("C vs docs/paper.md", model.C(q, qd, theta), Cw, TOL_EXACT, maxabs(Cw), info, model)
 
 
 # --------------------------------------------------------------------------------------
@@ -438,7 +438,7 @@ def test_C_agrees_with_numpy_reference(coulomb_viscous_model, cases):
 # --------------------------------------------------------------------------------------
 # 7. Task-space forward dynamics against the joint-space Lagrange-multiplier solution
 # --------------------------------------------------------------------------------------
-# Written here from NOTES.md (eqs. 1-6), generalised to n legs with the model file's leg
+# Written here from docs/paper.md (eqs. 1-6), generalised to n legs with the model file's leg
 # geometry; independent of derive/ and of reference.py.
 
 def _leg_params(model, theta, kind):
@@ -781,7 +781,7 @@ def test_lists_and_other_dtypes_are_accepted(m):
 
 PARAM_NAMES = ("alpha1", "alpha2", "alpha3", "beta1", "beta2", "beta3", "gamma1", "gamma2",
                "gamma3", "fv1", "fv2", "fv3", "fc1", "fc2", "fc3")
-# NOTES.md, Sect. 5, Tables 1 and 2, in the order of PARAM_NAMES
+# docs/paper.md (the paper's Sect. 5), Tables 1 and 2, in the order of PARAM_NAMES
 TABLE1_ALPHA = (0.0932, 0.0427, 0.0427)
 TABLE1_BETA = (0.0381, 0.0085, 0.0085)
 TABLE1_GAMMA = (0.0426, 0.0111, 0.0111)

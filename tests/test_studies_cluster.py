@@ -7,6 +7,7 @@
 # (run_chunk, which tests/test_studies.py checks against simulate() bit for bit): rows must be
 # present exactly once and equal to it, whatever the workers, interruptions or lost workers.
 import os
+import re
 import signal
 import socket
 import subprocess
@@ -155,11 +156,19 @@ def test_real_scheduler_two_workers_one_killed_mid_run(tmp_path, study_file):
     _assert_same(out, _reference(study))
 
 
-def test_embedded_cluster_equals_in_process_rows_and_report_runs(tmp_path, study_file):
+def test_embedded_cluster_equals_in_process_rows_and_report_runs(tmp_path, study_file, capsys):
     study = read_study(SHIPPED_STUDIES / "adaptation.toml", quick=True)
     out = tmp_path / "a"
-    res = run_study(study, out, workers=2, progress=False, echo=lambda *a: None)
+    res = run_study(study, out, workers=2, progress=True, echo=lambda *a: None)
     assert res["rows"] == study.n_rollouts and res["skipped"] == 0
+    # the two rates (issue 22, item 10): the progress line's is the summary's run rate, the
+    # wall-time rate also counts the cluster's start and stop
+    last = capsys.readouterr().err.strip().splitlines()[-1]
+    shown = float(re.search(r"([\d,]+) rollouts/s since the first task", last)[1].replace(",", ""))
+    assert abs(shown - res["run_rollouts_per_s"]) <= 0.03 * shown + 1, (last, res)
+    assert res["seconds"] == pytest.approx(res["run_seconds"] + res["cluster_seconds"])
+    assert 0 < res["run_seconds"] < res["seconds"], res
+    assert res["rollouts_per_s"] == pytest.approx(study.n_rollouts / res["seconds"])
     _assert_same(out, _reference(study))
     again = run_study(study, out, workers=2, progress=False, echo=lambda *a: None)
     assert again["skipped"] == study.n_chunks and again["rows"] == study.n_rollouts

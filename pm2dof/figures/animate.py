@@ -6,9 +6,12 @@ import numpy as np
 from ..analysis.experiment import trajectory
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
-from .experiment import COLORS, LABELS, _plt
+from .experiment import COLORS, LABELS, _plt, sci
+from .style import label_bases, legend_outside
 
-__all__ = ["animate_move"]
+__all__ = ["animate_move", "animation_figure"]
+
+DPI = 80    # of the GIF: about 960 x 380 px
 
 CONTROLLERS = {"na": NAController, "apd": APDController}
 
@@ -68,36 +71,74 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
         magnify = 10.0 ** np.floor(np.log10(0.3 * length / max(emax, 1e-12)))
     if not (np.isfinite(magnify) and magnify > 0):
         raise ValueError(f"magnify must be > 0, got {magnify}")
+    fig, draw, n_frames = animation_figure(plt, model, r, speed, controller, magnify,
+                                           fps=fps, every=every)
+    if progress:
+        progress(f"{n_frames} frames of {speed}-speed {controller}, error x{magnify:g}")
+    anim = animation.FuncAnimation(fig, draw, frames=n_frames, blit=False)
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    tmp = out.with_name(f".{out.name}.tmp.gif")
+    anim.save(tmp, writer=_gif_writer(animation)(fps=fps), dpi=DPI)
+    tmp.replace(out)                             # atomic: never a half-written GIF
+    plt.close(fig)
+    return out, r
+
+
+def _gif_writer(animation):
+    """matplotlib's PillowWriter with one palette for every frame, taken from the first, and no
+    dithering: frames then differ only where something moved, and Pillow stores only that
+    (a third of the size of independently dithered frames)."""
+    from PIL import Image
+
+    class SharedPaletteGIF(animation.PillowWriter):
+        def finish(self):
+            first = self._frames[0].convert("RGB").quantize(
+                colors=128, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+            frames = [first] + [f.convert("RGB").quantize(palette=first,
+                                                          dither=Image.Dither.NONE)
+                                for f in self._frames[1:]]
+            frames[0].save(self.outfile, save_all=True, append_images=frames[1:],
+                           duration=int(1000 / self.fps), loop=0)
+
+    return SharedPaletteGIF
+
+
+def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2):
+    """The animation's figure for the rollout ``r`` (a :class:`SimResult`), and its frames.
+
+    Returns (fig, draw, n_frames): ``draw(j)`` sets the figure to frame j (sample ``j * every``
+    of ``r``). The layout is fixed at frame 0, so that nothing moves between frames.
+    """
+    e = r.xe - r.xd
     shown = r.xd + magnify * e
     qs = np.array([model.ik(x) for x in r.xe])
     frames = np.arange(0, len(r.t), every)
-    if progress:
-        progress(f"{len(frames)} frames of {speed}-speed {controller}, error x{magnify:g}")
-
-    fig, (ax, az, ae) = plt.subplots(1, 3, figsize=(12, 4.2),
+    period = float(r.t[1] - r.t[0])
+    fig, (ax, az, ae) = plt.subplots(1, 3, figsize=(12, 4.8), layout="constrained",
                                      gridspec_kw={"width_ratios": [1.1, 1, 1]})
     color = COLORS[controller]
     b = model.bases
     links = np.array([_links(model, qs[k]) for k in frames])          # (frames, n, 3, 2)
     pts = np.vstack([b, links.reshape(-1, 2)])
-    lo, hi = pts.min(axis=0) - 0.03, pts.max(axis=0) + 0.03
-    ax.plot(b[:, 0], b[:, 1], "k^", ms=8)
+    lo, hi = pts.min(axis=0) - 0.07, pts.max(axis=0) + 0.07    # room for the labels
+    ax.plot(b[:, 0], b[:, 1], "k^", ms=8, label="bases A1, A2, ...")
+    label_bases(ax, b, fontsize=9, offset=9.0)
     ax.plot(r.xd[:, 0], r.xd[:, 1], "-", color="0.6", lw=3, label="desired path")
-    trace_true, = ax.plot([], [], "-", color=color, lw=1, label="actual path (true scale)")
+    trace_true, = ax.plot([], [], "-", color=color, lw=1, label="actual path, true scale")
     legs = [ax.plot([], [], "-o", color="0.25", lw=2, ms=3)[0] for _ in range(model.n_legs)]
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
-    ax.legend(fontsize=7, loc="lower right")
-    ax.set_title(f"{model.name}: {LABELS[controller]}, {speed} speed; links to scale",
-                 fontsize=8)
+    ax.set_title("the legs to scale", fontsize=9)
     # the move's neighbourhood, the error magnified
-    az.plot(r.xd[:, 0], r.xd[:, 1], "-", color="0.6", lw=3, label="desired path")
-    trace, = az.plot([], [], "-", color=color, lw=1.2, label=f"xd + {magnify:g} (xe - xd)")
+    az.plot(r.xd[:, 0], r.xd[:, 1], "-", color="0.6", lw=3)
+    trace, = az.plot([], [], "-", color=color, lw=1.2,
+                     label=f"xd + {magnify:g} (xe - xd)")
     tip, = az.plot([], [], "o", color=color, ms=5)
-    ref, = az.plot([], [], "o", mfc="none", mec="k", ms=7)
+    ref, = az.plot([], [], "o", mfc="none", mec="k", ms=7, label="desired point now")
     c_lo, c_hi = np.minimum(shown.min(axis=0), r.xd.min(axis=0)), np.maximum(
         shown.max(axis=0), r.xd.max(axis=0))
     pad = 0.15 * float(np.max(c_hi - c_lo))
@@ -106,23 +147,24 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
     bar = 1e-4 * magnify                           # 0.1 mm of error on the figure's scale
     x0, y0 = c_lo[0] - 0.6 * pad, c_lo[1] - 0.6 * pad
     az.plot([x0, x0 + bar], [y0, y0], "k-", lw=2.5)
-    az.text(x0, y0 + 0.15 * pad, f"0.1 mm of error (x{magnify:g})", fontsize=7)
+    az.annotate(f"0.1 mm of error (x{magnify:g})", (x0, y0), xytext=(0, 4),
+                textcoords="offset points", fontsize=8, va="bottom")
     az.set_aspect("equal")
     az.set_xlabel("x (m)")
-    az.legend(fontsize=7, loc="upper right")
-    slow = fps * every * traj.period                # seconds of GIF per second of motion
-    az.set_title(f"the move, error magnified (o: desired point now); {1 / slow:.3g}x slower "
-                 f"than real time", fontsize=8)
+    az.set_ylabel("y (m)")
+    az.set_title(f"the move, error magnified x{magnify:g}", fontsize=9)
     err_mm = 1e3 * np.hypot(e[:, 0], e[:, 1])
     ae.plot(r.t, err_mm, color=color, lw=1)
     ae.axvline(r.t[r.n_move - 1], color="0.5", ls=":", lw=1)
     cursor = ae.axvline(0.0, color="k", lw=1)
-    ae.set_xlabel("time (s)")
+    ae.set_xlabel("time (s); dotted: end of the move")
     ae.set_ylabel("|xd - xe| (mm)")
-    ae.set_title(f"RMSE (eq. 41) {r.rmse:.3g} m; dotted: end of the move", fontsize=8)
     ae.grid(alpha=0.3)
-    clock = ae.text(0.02, 0.95, "", transform=ae.transAxes, fontsize=8, va="top")
-    fig.tight_layout()
+    slow = 1.0 / (fps * every * period)            # real seconds per GIF second
+    fig.suptitle(f"{model.name}: {LABELS[controller]}, {speed}-speed move, RMSE (eq. 41) "
+                 f"{sci(r.rmse)} m; the GIF runs {slow:.3g}x slower than real time",
+                 fontsize=10)
+    legend_outside(fig, [ax, az], "lower", ncol=5, fontsize=9)
 
     def draw(j):
         k = frames[j]
@@ -133,14 +175,11 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
         tip.set_data([shown[k, 0]], [shown[k, 1]])
         ref.set_data([r.xd[k, 0]], [r.xd[k, 1]])
         cursor.set_xdata([r.t[k], r.t[k]])
-        clock.set_text(f"t = {r.t[k]:.3f} s   |e| = {err_mm[k]:.4f} mm")
-        return [*legs, trace_true, trace, tip, ref, cursor, clock]
+        ae.set_title(f"t = {r.t[k]:.3f} s, |xd - xe| = {err_mm[k]:.4f} mm", fontsize=9)
+        return [*legs, trace_true, trace, tip, ref, cursor]
 
-    anim = animation.FuncAnimation(fig, draw, frames=len(frames), blit=False)
-    out = Path(out)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = out.with_name(f".{out.name}.tmp.gif")
-    anim.save(tmp, writer=animation.PillowWriter(fps=fps), dpi=72)
-    tmp.replace(out)                             # atomic: never a half-written GIF
-    plt.close(fig)
-    return out, r
+    draw(0)
+    fig.set_dpi(DPI)
+    fig.canvas.draw()
+    fig.set_layout_engine("none")                  # frozen: the panels stay put
+    return fig, draw, len(frames)

@@ -1,18 +1,21 @@
 # Figures of the experiment: errors (like the paper's Figs. 4-5), torques, theta_hat, repeated runs.
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from ..analysis.results import save_figure
+from .style import kind_of, legend_outside, param_styles, place_legend, tex_name
 
 __all__ = ["write_figures", "experiment_figures"]
 
 COLORS = {"apd": "tab:blue", "na": "tab:red", "na_no_adaptation": "tab:gray"}
 LABELS = {"apd": "APD (eq. 40)", "na": "NA (eqs. 28-29)", "na_no_adaptation": "NA, Gamma = 0"}
+THETA_HAT = r"$\hat\theta$"
 
 
-def _style(name):
-    """Line style by parameter group: inertial solid, viscous dashed, Coulomb dotted."""
-    return {"alpha": "-", "beta": "-", "gamma": "-", "fv": "--", "fc": ":", "fs": "-."}[
-        name.rstrip("0123456789")]
+def sci(x, digits=3):
+    """``x`` in scientific notation without padding: 1.23e-4."""
+    m, e = f"{x:.{digits - 1}e}".split("e")
+    return f"{m}e{int(e)}"
 
 
 def _plt():
@@ -23,80 +26,89 @@ def _plt():
 
 
 def _errors(plt, results, speed):
-    fig, axes = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
+    fig, axes = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True, layout="constrained")
     for name in ("apd", "na"):
         r = results[speed][name]
         n = r.n_move
         for k, ax in enumerate(axes):
             ax.plot(r.t[:n], 1e3 * r.e[:n, k], color=COLORS[name],
-                    label=f"{LABELS[name]}, RMSE {r.rmse:.3g} m")
+                    label=f"{LABELS[name]}, RMSE (eq. 41) {sci(r.rmse)} m")
     for k, ax in enumerate(axes):
-        ax.set_ylabel(f"{'xy'[k]} error (mm)")
+        ax.set_ylabel(f"{'xy'[k]}d - {'xy'[k]}e (mm)")
         ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=8)
     axes[1].set_xlabel("time (s)")
-    fig.suptitle(f"Position errors, {speed}-speed move (simulated; cf. the paper's Figs. 4-5)")
-    fig.tight_layout()
+    fig.suptitle(f"Position errors, {speed}-speed move (simulated; cf. the paper's Figs. 4-5)",
+                 fontsize=10)
+    legend_outside(fig, axes[:1], "lower", ncol=1)
     return fig
 
 
 def _torques(plt, results):
     speeds = list(results)
-    fig, axes = plt.subplots(len(speeds), 2, figsize=(9, 3 * len(speeds)), squeeze=False,
-                             sharex="row")
+    fig, axes = plt.subplots(len(speeds), 2, figsize=(9, 0.4 + 3 * len(speeds)), squeeze=False,
+                             sharex="row", sharey="row", layout="constrained")
     for i, speed in enumerate(speeds):
         for j, name in enumerate(("apd", "na")):
             r, ax = results[speed][name], axes[i][j]
             for leg in range(r.tau_a.shape[1]):
-                ax.plot(r.t, r.tau_a[:, leg], label=f"tau_a{leg + 1}")
+                ax.plot(r.t, r.tau_a[:, leg], color=f"C{leg}", lw=1,
+                        label=rf"$\tau_{{a{leg + 1}}}$, actuator {leg + 1}")
+            ax.axvline(r.t[r.n_move - 1], color="0.5", ls=":", lw=1)
             ax.set_title(f"{LABELS[name]}, {speed} speed", fontsize=9)
-            ax.set_ylabel("torque (N m)")
+            ax.set_xlabel("time (s)")
             ax.grid(alpha=0.3)
-        axes[i][0].legend(fontsize=8)
-    for ax in axes[-1]:
-        ax.set_xlabel("time (s)")
-    fig.tight_layout()
+        axes[i][0].set_ylabel("torque (N m)")
+    fig.suptitle("Actuator torques (simulated; dotted: the end of the move)", fontsize=10)
+    legend_outside(fig, axes[0][:1], "lower")
     return fig
 
 
 def _theta(plt, results, names):
     speeds = list(results)
-    fig, axes = plt.subplots(1, len(speeds), figsize=(5 * len(speeds), 4), squeeze=False)
+    styles = param_styles(names)
+    fig, axes = plt.subplots(1, len(speeds), figsize=(5 * len(speeds), 4.6), squeeze=False,
+                             layout="constrained")
     for ax, speed in zip(axes[0], speeds):
         r = results[speed]["na"]
-        ratio = r.theta_hat / r.theta_hat[0]
+        change = 100.0 * (r.theta_hat / r.theta_hat[0] - 1.0)
         for k, name in enumerate(names):
-            ax.plot(r.t, ratio[:, k], _style(name), label=name, lw=1)
-        ax.set_title(f"NA estimate theta_hat / theta_hat(0), {speed} speed", fontsize=9)
+            ax.plot(r.t, change[:, k], lw=1, label=tex_name(name), **styles[name])
+        ax.set_title(f"NA's estimate during the {speed}-speed move", fontsize=9)
         ax.set_xlabel("time (s)")
+        ax.set_ylabel(THETA_HAT + r"$_k\,/\,$" + THETA_HAT + r"$_k(0) - 1$ (%)")
         ax.grid(alpha=0.3)
-    axes[0][-1].legend(fontsize=7, ncol=3)
-    fig.tight_layout()
+    legend_outside(fig, axes[0][:1], "lower", ncol=len({kind_of(n)[0] for n in names}),
+                   fontsize=8)
     return fig
 
 
 def _repeated(plt, rep, names, speed):
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.8), layout="constrained")
     runs = np.arange(1, len(rep["rmse"]) + 1)
-    a1.plot(runs, rep["rmse"], "o-", color=COLORS["na"], ms=3, label="NA, theta_hat carried over")
+    a1.plot(runs, 1e3 * np.asarray(rep["rmse"]), "o-", color=COLORS["na"], ms=3,
+            label="NA, " + THETA_HAT + " carried over")
     if "apd_rmse" in rep:
-        a1.axhline(rep["apd_rmse"], color=COLORS["apd"], ls="--", label="APD (no memory)")
+        a1.axhline(1e3 * rep["apd_rmse"], color=COLORS["apd"], ls="--",
+                   label="APD (no memory)")
     a1.set_xlabel("run")
-    a1.set_ylabel("RMSE (m)")
-    a1.set_title(f"Same {speed}-speed move repeated", fontsize=9)
+    a1.set_ylabel("RMSE, eq. 41 (mm)")
+    a1.set_title(f"The same {speed}-speed move repeated", fontsize=9)
     a1.grid(alpha=0.3)
-    a1.legend(fontsize=8)
+    a1.xaxis.set_major_locator(MaxNLocator(integer=True))
     theta = np.vstack([rep["theta0"], rep["theta_hat_end"]])
     rel = theta / rep["theta_truth"]
+    styles = param_styles(names)
     for k, name in enumerate(names):
-        a2.plot(np.arange(len(theta)), rel[:, k], _style(name), lw=1, label=name)
+        a2.plot(np.arange(len(theta)), rel[:, k], lw=1, label=tex_name(name), **styles[name])
     a2.axhline(1.0, color="k", lw=0.8)
     a2.set_xlabel("run (0: Tables 1-2)")
-    a2.set_ylabel("theta_hat / truth")
-    a2.set_title("Where theta_hat goes (truth: payload-augmented inertias, fv, fc)", fontsize=9)
+    a2.set_ylabel(THETA_HAT + " / truth at the end of the run")
+    a2.set_title("Where " + THETA_HAT + r" goes (truth: inertias with the payload, $f_v$, $f_c$)",
+                 fontsize=9)
     a2.grid(alpha=0.3)
-    a2.legend(fontsize=7, ncol=3)
-    fig.tight_layout()
+    a2.xaxis.set_major_locator(MaxNLocator(integer=True))
+    place_legend(a1, fontsize=8)
+    legend_outside(fig, [a2], "right", fontsize=8)
     return fig
 
 

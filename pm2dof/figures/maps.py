@@ -7,8 +7,9 @@ from ..analysis.experiment import trajectory
 from ..analysis.maps import FIELDS, maps_summary, workspace_maps
 from ..analysis.results import provenance, save_figure, write_json
 from .experiment import _plt
+from .style import label_bases, log_ticks, wrap
 
-__all__ = ["maps_figures", "draw_robot_frame"]
+__all__ = ["maps_figures", "maps_figure", "maps_note", "draw_robot_frame"]
 
 FIGURES = {  # file -> the maps it shows, side by side
     "maps_singularity.png": ("type1", "type2"),
@@ -16,6 +17,20 @@ FIGURES = {  # file -> the maps it shows, side by side
     "maps_force.png": ("force_min_norm", "force_min_max", "force_ratio"),
     "maps_acceleration.png": ("accel_min_norm", "accel_min_max", "accel_ratio"),
 }
+
+
+def _extent(model, maps):
+    """(lo, hi) (2,) m of a map's axes: the reachable set and the bases, with room for the
+    bases' labels."""
+    X, Y = np.meshgrid(maps["x"], maps["y"])
+    reach = np.column_stack([X[maps["reachable"]], Y[maps["reachable"]]])
+    if not len(reach):                                 # nothing reachable: the whole grid
+        reach = np.array([[maps["x"][0], maps["y"][0]], [maps["x"][-1], maps["y"][-1]]])
+    b = model.bases
+    lo = np.minimum(b.min(axis=0), reach.min(axis=0))
+    hi = np.maximum(b.max(axis=0), reach.max(axis=0))
+    pad = 0.1 * float(np.max(hi - lo))
+    return lo - pad, hi + pad
 
 
 def draw_robot_frame(ax, model, maps):
@@ -28,35 +43,92 @@ def draw_robot_frame(ax, model, maps):
         ax.contour(X, Y, side, levels=[0.0], colors="m", linewidths=1.2, linestyles="-")
     b = model.bases
     ax.plot(b[:, 0], b[:, 1], "k^", ms=7)
+    label_bases(ax, b)
     for speed in model.spec.trajectories:
         xd = trajectory(model, speed).xd
         ax.plot(xd[:, 0], xd[:, 1], "-", color="w", lw=3.5)
         ax.plot(xd[:, 0], xd[:, 1], "-", color="tab:red", lw=1.5)
         ax.plot(*xd[0], "o", color="tab:red", ms=4)
         ax.plot(*xd[-1], "s", color="tab:red", ms=4)
+    lo, hi = _extent(model, maps)
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
 
 
+#: colour bar label and panel title of each map (FIELDS gives the units)
+CBAR = {
+    "type1": ("type I measure (dimensionless; 0: singular)",
+              r"type I measure $\min_i |\sin(q_{bi} - q_{ai})|$"),
+    "type2": ("type II measure (dimensionless; 0: singular)",
+              r"type II measure $\sigma_{min}$(S, unit rows) / $\sqrt{n/2}$"),
+    "cond_StS": (r"cond($S^TS$) (dimensionless)", r"condition number of $S^TS$"),
+    "force_min_norm": ("force (N)", "task force available in every direction,\n"
+                                    "min-norm split (eq. 21)"),
+    "force_min_max": ("force (N)", "task force available in every direction,\n"
+                                   "min-max split"),
+    "force_ratio": ("min-max / min-norm (ratio)", "force ratio, min-max / min-norm split"),
+    "accel_min_norm": (r"acceleration (m/s$^2$)", "acceleration at rest in every direction,\n"
+                                                   "min-norm split"),
+    "accel_min_max": (r"acceleration (m/s$^2$)", "acceleration at rest in every direction,\n"
+                                                  "min-max split"),
+    "accel_ratio": ("min-max / min-norm (ratio)", "acceleration ratio, min-max / min-norm"),
+}
+
+
 def _panel(plt, fig, ax, model, maps, key):
     from matplotlib.colors import LogNorm
+    from matplotlib.ticker import ScalarFormatter
     X, Y = np.meshgrid(maps["x"], maps["y"])
     Z = np.ma.masked_invalid(maps[key])
+    extend = "neither"
     if key == "cond_StS":
         kw = {"norm": LogNorm(vmin=max(1.0, float(Z.min())), vmax=float(Z.max()))}
     elif key.startswith(("force_min", "accel_min")):  # huge beside the edges: colour the bulk
         kw = {"vmax": float(np.percentile(Z.compressed(), 95)), "vmin": float(Z.min())}
+        extend = "max"
+    elif key.endswith("_ratio"):                      # >= 1; a constant 1 (five-bar) stays 1
+        kw = {"vmin": 1.0, "vmax": max(float(Z.max()), 1.01)}
     else:
         kw = {}
     pc = ax.pcolormesh(X, Y, Z, shading="auto", cmap="viridis", **kw)
-    fig.colorbar(pc, ax=ax, shrink=0.8, label=FIELDS[key][0])
+    cb = fig.colorbar(pc, ax=ax, shrink=0.85, extend=extend, label=CBAR[key][0])
+    if key == "cond_StS":
+        log_ticks(cb.ax.yaxis)
+    else:
+        cb.formatter = ScalarFormatter(useOffset=False)
+        cb.update_ticks()
     thr = {"type1": model.singularity_threshold, "type2": model.parallel_singularity_threshold}
     if key in thr:
         ax.contour(X, Y, maps[key], levels=[thr[key]], colors="tab:orange", linewidths=1.2,
                    linestyles="--")
     draw_robot_frame(ax, model, maps)
-    ax.set_title(FIELDS[key][1], fontsize=8)
+    ax.set_title(CBAR[key][1], fontsize=9)
+
+
+def maps_figure(plt, model, maps, keys, note):
+    """One figure of the maps ``keys`` side by side, ``note`` wrapped above them."""
+    lo, hi = _extent(model, maps)
+    aspect = float(np.clip((hi[1] - lo[1]) / (hi[0] - lo[0]), 0.5, 2.0))
+    fig, axes = plt.subplots(1, len(keys), figsize=(0.6 + 5.0 * len(keys), 1.6 + 3.4 * aspect),
+                             squeeze=False, layout="constrained")
+    for ax, key in zip(axes[0], keys):
+        _panel(plt, fig, ax, model, maps, key)
+    fig.suptitle(wrap(fig, note, 8), fontsize=8)
+    return fig
+
+
+def maps_note(model, tau_max=None):
+    """The key to the maps' figures: model, limits, and what each line and marker is."""
+    w = model.spec.limits["tau_max"] if tau_max is None else np.asarray(tau_max, dtype=float)
+    return (f"Model {model.name!r}; tau_max = {', '.join(f'{v:g}' for v in w)} N m; Me from "
+            f"Tables 1-2. Force and acceleration maps: the 95th percentile and above share the "
+            f"top colour.\nBlack: the reachable set in the assembly mode; orange dashed: the "
+            f"singularity threshold; "
+            + ("magenta: the parallel-singular curve; " if model.n_legs == 2 else "")
+            + "red: the moves (o start, square end); triangles: the bases A1, A2, ...")
 
 
 def maps_figures(model, out_dir, resolution=121, theta=None, tau_max=None, progress=None):
@@ -70,18 +142,10 @@ def maps_figures(model, out_dir, resolution=121, theta=None, tau_max=None, progr
     summary = maps_summary(model, maps, theta, tau_max)
     prov = provenance(model)
     out_dir = Path(out_dir)
-    w = model.spec.limits["tau_max"] if tau_max is None else np.asarray(tau_max, dtype=float)
-    note = (f"model {model.name!r}; tau_max = {np.round(w, 3).tolist()} N m; Me from Tables 1-2. "
-            f"95th percentile and above share the top colour.\nBlack: reachable set in the assembly mode; orange dashed: singularity threshold; "
-            + ("magenta: parallel-singular curve; " if model.n_legs == 2 else "")
-            + "red: the moves (o start, square end); triangles: bases")
+    note = maps_note(model, tau_max)
     paths = []
     for name, keys in FIGURES.items():
-        fig, axes = plt.subplots(1, len(keys), figsize=(5.2 * len(keys), 4.6), squeeze=False)
-        for ax, key in zip(axes[0], keys):
-            _panel(plt, fig, ax, model, maps, key)
-        fig.suptitle(note, fontsize=7)
-        fig.tight_layout()
+        fig = maps_figure(plt, model, maps, keys, note)
         paths.append(save_figure(fig, out_dir / name, prov))
         plt.close(fig)
     paths.append(write_json(out_dir / "maps.json", {"summary": summary, "provenance": prov}))

@@ -2,11 +2,13 @@
 from pathlib import Path
 
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from ..analysis.results import save_figure
 from .experiment import _plt
+from .style import legend_outside, log_ticks, with_unit
 
-__all__ = ["study_figures"]
+__all__ = ["study_figures", "study_figure_makers"]
 
 
 def _color(i):
@@ -17,22 +19,24 @@ _DASHES = ("-", "--", ":", "-.")
 
 
 def _rmse_ecdf(plt, cols, moves, names):
-    fig, axes = plt.subplots(1, len(moves), figsize=(5.2 * len(moves), 4), squeeze=False)
+    fig, axes = plt.subplots(1, len(moves), figsize=(0.4 + 5.2 * len(moves), 4.6), squeeze=False,
+                             sharey=True, layout="constrained")
     for ax, mv in zip(axes[0], moves):
+        n = []
         for i, c in enumerate(names):
             x = np.sort(cols["rmse"][(cols["controller"] == c) & (cols["move"] == mv)])
             x = x[np.isfinite(x)]
+            n.append(len(x))
             if len(x):
                 ax.step(x * 1e3, np.arange(1, len(x) + 1) / len(x), where="post",
                         color=_color(i), ls=_DASHES[i % 4], label=c)
         ax.set_xscale("log")
-        ax.xaxis.set_minor_formatter(plt.NullFormatter())
+        log_ticks(ax.xaxis)
         ax.set_xlabel("RMSE, eq. 41 (mm)")
-        ax.set_title(f"{mv} move")
+        ax.set_title(f"{mv} move, {max(n)} rollouts per controller", fontsize=9)
         ax.grid(alpha=0.3, which="both")
     axes[0][0].set_ylabel("share of rollouts with RMSE <= x")
-    axes[0][0].legend(fontsize=8)
-    fig.tight_layout()
+    legend_outside(fig, axes[0][:1], "lower")
     return fig
 
 
@@ -45,8 +49,8 @@ def _rpe(plt, cols, s):
             keys.append(r["key"])
     keys = keys[:4]
     pairs = [(r["controller"], r["move"]) for r in s["rpe"]]
-    fig, axes = plt.subplots(1, len(keys), figsize=(4.2 * len(keys), 3.8), squeeze=False,
-                             sharey=True)
+    fig, axes = plt.subplots(1, len(keys), figsize=(0.4 + 4.2 * len(keys), 4.4), squeeze=False,
+                             sharey=True, layout="constrained")
     ref = s["rpe"][0]["reference"]
     for ax, k in zip(axes[0], keys):
         for i, (c, mv) in enumerate(pairs):
@@ -58,69 +62,99 @@ def _rpe(plt, cols, s):
                    if (d, r) in ra]
             if pts:
                 x, y = np.array(pts, dtype=float).T
-                ax.scatter(x, y, s=4, alpha=0.35, color=_color(i), label=f"{c}, {mv}")
+                ax.scatter(x, y, s=4, alpha=0.35, color=_color(i), label=f"{c}, {mv} move")
         ax.axhline(0, color="k", lw=0.8)
-        ax.set_xlabel(k)
+        ax.set_xlabel(with_unit(k))
         ax.grid(alpha=0.3)
-    axes[0][0].set_ylabel(f"RPE over {ref}, % (positive: better)")
-    axes[0][0].legend(fontsize=7, markerscale=3)
-    fig.tight_layout()
+    axes[0][0].set_ylabel(f"RPE over {ref} (%); > 0: better than {ref}")
+    lg = legend_outside(fig, axes[0][:1], "lower", markerscale=3)
+    for h in lg.legend_handles if lg else ():
+        h.set_alpha(1.0)                          # the key's colours at full strength
     return fig
 
 
+def _tick(v):
+    """A grid value as a short tick label: 54.6k for 54600, 0.5, 195."""
+    return f"{v / 1000:.4g}k" if abs(v) >= 1000 else f"{v:.3g}"
+
+
 def _grid(plt, g):
-    fig, ax = plt.subplots(figsize=(5.6, 4.4))
-    med = np.array(g["rmse_median"], dtype=float)
+    from matplotlib.colors import LogNorm
+    fig, ax = plt.subplots(figsize=(5.8, 4.8), layout="constrained")
+    med = np.array(g["rmse_median"], dtype=float) * 1e3
     if len(g["keys"]) == 1:
-        ax.semilogy(g["values"][0], med * 1e3, "o-")
-        ax.set_xlabel(g["keys"][0])
-        ax.set_ylabel("median RMSE (mm)")
+        ax.semilogy(g["values"][0], med, "o-")
+        ax.set_xlabel(with_unit(g["keys"][0]))
+        ax.set_ylabel("median RMSE, eq. 41 (mm)")
+        log_ticks(ax.yaxis)
+        ax.grid(alpha=0.3, which="both")
+        title = f"{g['controller']}, {g['move']} move"
     else:
-        im = ax.imshow(np.log10(med * 1e3).T, origin="lower", aspect="auto", cmap="viridis")
-        ax.set_xticks(range(len(g["values"][0])), [f"{v:.3g}" for v in g["values"][0]],
-                      rotation=45)
-        ax.set_yticks(range(len(g["values"][1])), [f"{v:.3g}" for v in g["values"][1]])
-        ax.set_xlabel(g["keys"][0])
-        ax.set_ylabel(g["keys"][1])
+        nx, ny = (len(v) for v in g["values"])
+        im = ax.pcolormesh(np.arange(nx + 1) - 0.5, np.arange(ny + 1) - 0.5, med.T,
+                           cmap="viridis", norm=LogNorm(vmin=np.nanmin(med), vmax=np.nanmax(med)))
+        ax.set_xticks(range(nx), [_tick(v) for v in g["values"][0]])
+        ax.set_yticks(range(ny), [_tick(v) for v in g["values"][1]])
+        ax.set_xlabel(with_unit(g["keys"][0]))
+        ax.set_ylabel(with_unit(g["keys"][1]))
         b = [g["values"][i].index(g["best"][k]) for i, k in enumerate(g["keys"])]
-        ax.plot(*b, "r*", ms=12, label="best")
+        ax.plot(*b, "r*", ms=12)
         for (i, j), v in np.ndenumerate(med):
-            if v <= 1.1 * g["best"]["rmse"]:
+            if v <= 1.1 * 1e3 * g["best"]["rmse"]:
                 ax.plot(i, j, "w.", ms=4)
-        fig.colorbar(im, ax=ax, label="log10 median RMSE (mm)")
-        ax.legend(fontsize=8, loc="upper right")
-    ax.set_title(f"{g['controller']}, {g['move']} move (dots: within 10 % of best)", fontsize=9)
-    fig.tight_layout()
+        cb = fig.colorbar(im, ax=ax, label="median RMSE, eq. 41 (mm)")
+        log_ticks(cb.ax.yaxis)
+        title = (f"{g['controller']}, {g['move']} move (star: best;\nwhite dots: within 10 % "
+                 f"of the best)")
+    ax.set_title(title, fontsize=9)
     return fig
 
 
 def _runs(plt, s, payload_change):
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.8), layout="constrained")
     if payload_change:
         after, mass = payload_change
         for ax in (a1, a2):
-            ax.axvline(after - 0.5, color="0.5", ls="--", lw=1)
-        a2.annotate(f" payload {mass:g} kg from run {after}", (after - 0.5, 0.02), xycoords=(
-            "data", "axes fraction"), va="bottom", fontsize=8, color="0.3")
+            ax.axvline(after - 0.5, color="0.5", ls="--", lw=1,
+                       label=f"payload {mass:g} kg from run {after} on")
     by = {}
     for r in s["runs"]:
         by.setdefault((r["controller"], r["move"]), []).append(r)
     for i, ((c, mv), rs) in enumerate(by.items()):
         runs = [r["run"] for r in rs]
         a1.semilogy(runs, [r["rmse_median"] * 1e3 for r in rs], "o-", ms=3, color=_color(i),
-                    label=f"{c}, {mv}")
+                    label=f"{c}, {mv} move")
         th = [r["theta_error_median"] for r in rs]
         if any(t is not None for t in th):
             a2.plot(runs, [np.nan if t is None else t for t in th], "o-", ms=3, color=_color(i),
-                    label=f"{c}, {mv}")
-    a1.set_ylabel("median RMSE (mm)")
-    a2.set_ylabel("median theta error (identifiable directions)")
+                    label=f"{c}, {mv} move")
+    a1.set_ylabel("median RMSE, eq. 41 (mm)")
+    log_ticks(a1.yaxis)
+    a2.set_ylabel(r"median $\|P(\hat\theta - \theta)\| / \|P\theta\|$ (relative)")
+    a2.set_title(r"$\hat\theta$'s error on the identifiable directions (P), NA only",
+                 fontsize=9)
+    a1.set_title("tracking", fontsize=9)
     for ax in (a1, a2):
-        ax.set_xlabel("run (theta_hat carried from the run before)")
+        ax.set_xlabel("run (" + r"$\hat\theta$" + " carried from the run before)")
         ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=7)
-    fig.tight_layout()
+        ax.xaxis.set_major_locator(MaxNLocator(integer=True))
+    legend_outside(fig, [a1], "lower", ncol=3)
     return fig
+
+
+def study_figure_makers(cols, summary, payload_change=None):
+    """[(file name, function returning the figure)] of a study's rows, in the order written."""
+    plt = _plt()
+    moves = list(dict.fromkeys(cols["move"]))
+    names = list(dict.fromkeys(cols["controller"]))
+    figs = [("rmse_ecdf.png", lambda: _rmse_ecdf(plt, cols, moves, names))]
+    if summary["rpe"] and summary["rpe_vs_uncertainty"]:
+        figs.append(("rpe.png", lambda: _rpe(plt, cols, summary)))
+    for g in summary["grids"]:
+        figs.append((f"grid_{g['controller']}_{g['move']}.png", lambda g=g: _grid(plt, g)))
+    if summary["runs"]:
+        figs.append(("runs.png", lambda: _runs(plt, summary, payload_change)))
+    return figs
 
 
 def study_figures(cols, summary, out_dir, prov, payload_change=None):
@@ -132,15 +166,7 @@ def study_figures(cols, summary, out_dir, prov, payload_change=None):
     """
     plt = _plt()
     out_dir = Path(out_dir)
-    moves = list(dict.fromkeys(cols["move"]))
-    names = list(dict.fromkeys(cols["controller"]))
-    figs = [("rmse_ecdf.png", lambda: _rmse_ecdf(plt, cols, moves, names))]
-    if summary["rpe"] and summary["rpe_vs_uncertainty"]:
-        figs.append(("rpe.png", lambda: _rpe(plt, cols, summary)))
-    for g in summary["grids"]:
-        figs.append((f"grid_{g['controller']}_{g['move']}.png", lambda g=g: _grid(plt, g)))
-    if summary["runs"]:
-        figs.append(("runs.png", lambda: _runs(plt, summary, payload_change)))
+    figs = study_figure_makers(cols, summary, payload_change)
     paths = []
     for name, make in figs:
         fig = make()

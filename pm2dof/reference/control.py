@@ -5,7 +5,7 @@
 # generated C). Used only by tests and benchmarks to cross-check derive/controllers.py
 # and derive/plant.py; it favours clarity over speed.
 #
-# Equation numbers refer to the paper as restored in shared/paper/NOTES.md:
+# Equation numbers refer to the paper as restated in docs/paper.md of the pm2dof repository:
 #   eq. 2   friction f_ai = sign(qd_ai) fc_i + fv_i qd_ai (sign(0) = +1)
 #   eq. 10  Me xedd + Ce xed + S^T f_a = S^T tau_a
 #   eq. 13  Y(q, qd, xrd, xrdd) theta = Me xrdd + Ce xrd + S^T f_a

@@ -7,7 +7,7 @@
 #     redundantly actuated parallel manipulator", Nonlinear Dyn 59:61-72 (2010)
 #
 # generalised from the paper's 3 legs to n RR legs meeting at one tip O.
-# Equation numbers refer to the paper (as restored in shared/paper/NOTES.md).
+# Equation numbers refer to the paper (as restated in docs/paper.md of the pm2dof repository).
 #
 # This module is an independent, hand-derived formulation used only by tests and
 # benchmarks to cross-check the symbolic (SymPy/CasADi) derivation; it favours
