@@ -415,7 +415,7 @@ def test_unknown_key(tmp_path, key, where, allowed):
 
 @pytest.mark.parametrize("key, where, value, reason", [
     ("legs.0.la", "legs.la (leg 1)", "0.244", "must be a number, got str"),
-    ("legs.2.base", "legs.base (leg 3)", 0.5, "must be [x, y]"),
+    ("legs.2.base", "legs.base (leg 3)", 0.5, "must be a point [x, y] in m"),
     ("limits.singularity_threshold", "limits.singularity_threshold", True, "must be a number"),
     ("nominal.alpha", "nominal.alpha", 0.0932, "must be a list of 3"),
     ("sensing.sample_period", "sensing.sample_period", [0.002], "must be a number"),

@@ -156,13 +156,7 @@ def _read_leg(pr, i, leg):
         return pr.add(entry("legs", label), f"each [[legs]] entry must be a table, got "
                                             f"{type(leg).__name__}")
     ok = pr.keys("legs", leg, _LEG_KEYS, _LEG_KEYS, label=label)
-    base = leg.get("base")
-    if "base" in leg:
-        if isinstance(base, list) and len(base) == 2:
-            base = [pr.number(entry("legs.base", label), v) for v in base]
-            base = None if None in base else tuple(base)
-        else:
-            base = pr.add(entry("legs.base", label), f"must be [x, y] in m, got {base!r}")
+    base = pr.point(entry("legs.base", label), leg["base"]) if "base" in leg else None
     la, lb = (pr.number(entry(f"legs.{k}", label), leg[k], **RULES["pos"]) if k in leg else None
               for k in ("la", "lb"))
     elbow = pr.choice(entry("legs.elbow", label), leg["elbow"], ELBOWS) if "elbow" in leg else None

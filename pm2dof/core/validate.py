@@ -2,7 +2,7 @@
 """Checks of a user's input file that collect problems instead of raising at the first one.
 
 A :class:`Problems` collector belongs to one file. Its typed checks (:meth:`~Problems.number`,
-:meth:`~Problems.vector`, :meth:`~Problems.table`, :meth:`~Problems.keys`,
+:meth:`~Problems.vector`, :meth:`~Problems.point`, :meth:`~Problems.table`, :meth:`~Problems.keys`,
 :meth:`~Problems.choice`, ...) return the checked value, or None after recording a
 :class:`~pm2dof.core.errors.Problem`; callers skip the checks that depend on a None.
 :meth:`~Problems.raise_if_any` then raises every problem at once, as one
@@ -101,6 +101,13 @@ class Problems:
             return self.add(key, f"must be a list of {size} numbers{meaning}, {got}")
         out = [self.number(entry(key, label), v, **bounds) for label, v in zip(labels, value)]
         return None if any(v is None for v in out) else tuple(out)
+
+    def point(self, key, value):
+        """A point [x, y] in m: two finite numbers. Returns a tuple of floats."""
+        if not (isinstance(value, list) and len(value) == 2):
+            return self.add(key, f"must be a point [x, y] in m, got {value!r}")
+        xy = [self.number(key, v) for v in value]
+        return None if None in xy else tuple(xy)
 
     def table(self, key, value, *, required=True):
         """``value`` (a ``doc.get(key)``) as a table. Absent: a problem when ``required``;
