@@ -596,7 +596,8 @@ def test_a_fourth_leg_reports_every_three_entry_array_at_once(tmp_path):
     """Issue 22 item 7: a fourth [[legs]] table added to the paper's model file (and a [control]
     table with per-leg arrays) leaves 15 arrays with 3 entries. One read names all of them,
     each with the length the leg count implies; fixing exactly the named keys makes it load."""
-    control = '\n[control]\nsplit = "preload"\npreload = [1.0, 1.0, 1.0]\npreload_sign = [1, -1, 1]\n'
+    control = ('\n[control]\nsplit = "preload"\npreload = [1.0, 1.0, 1.0]\n'
+               'preload_sign = [1, -1, 1]\n')
     text = SRC.replace("\n# Tables 1-2", FOURTH_LEG + "\n# Tables 1-2", 1) + control
     assert len(re.findall(r"^\[\[legs\]\]", text, re.M)) == 4
     p = write(tmp_path, text, "four.toml")
@@ -663,7 +664,8 @@ def test_independent_problems_of_several_sections_are_reported_together(tmp_path
     assert exc.path == str(p)
     import pickle  # the problems survive pickling (errors cross Dask workers)
     again = pickle.loads(pickle.dumps(exc))
-    assert type(again) is ModelFileError and again.problems == exc.problems and str(again) == str(exc)
+    assert type(again) is ModelFileError and again.problems == exc.problems
+    assert str(again) == str(exc) and again.path == exc.path
 
 
 def test_a_single_problem_is_one_line(tmp_path):

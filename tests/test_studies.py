@@ -165,7 +165,8 @@ def test_every_problem_of_a_study_file_in_one_error(tmp_path):
         ("payload_change.payload_mass", "missing (required)"),
     ]
     assert [tuple(pr) for pr in exc.value.problems] == expected
-    assert str(exc.value).splitlines() == [f"{p}: 5 problems:"] + [f"  [{k}] {r}" for k, r in expected]
+    assert str(exc.value).splitlines() == ([f"{p}: 5 problems:"]
+                                           + [f"  [{k}] {r}" for k, r in expected])
 
 
 @pytest.mark.parametrize("edit, key", [

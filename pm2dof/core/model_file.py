@@ -106,16 +106,11 @@ def _frozen(values):
     return out
 
 
-def _legs_of(n):
-    """Labels of per-leg entries, numbered from 1 as in the paper."""
-    return [f"leg {i + 1}" for i in range(n)]
-
-
 def _size(length, n, param_names):
-    """Labels and message text of an array of ``length``: "n" per leg, "p" per parameter, or
-    2 (a task-space pair x, y)."""
+    """Labels and message text of an array of ``length``: "n" per leg (legs numbered from 1,
+    as in the paper), "p" per parameter, or 2 (a task-space pair x, y)."""
     if length == "n":
-        return _legs_of(n), f", one per leg (the file has {n} [[legs]])"
+        return [f"leg {i + 1}" for i in range(n)], f", one per leg (the file has {n} [[legs]])"
     if length == "p":
         return ([f"entry {k + 1}, {name}" for k, name in enumerate(param_names)],
                 f", one per parameter of theta, in the order of param_names: "
@@ -191,13 +186,12 @@ def _read_nominal(pr, nominal, n, friction):
     _check_inertia(pr, "nominal", values, n)
     if any(values.get(key) is None for key in names):
         return param_names, None
-    theta = np.array([values[key][i] for key in names for i in range(n)], dtype=float)
-    theta.setflags(write=False)
-    return param_names, theta
+    return param_names, _frozen([values[key][i] for key in names for i in range(n)])
 
 
 # run-time sections: key -> (length: None for a scalar, "n" per leg, "p" per parameter, or 2
-#                             for a task-space pair; rule: see validate.RULES[, default if optional])
+#                             for a task-space pair; rule: a validate.RULES key;
+#                             default: a third entry makes the key optional)
 _SCHEMA = {
     "limits": {"singularity_threshold": (None, "pos"), "tau_max": ("n", "pos"),
                "parallel_singularity_threshold": (None, "pos", DEFAULT_PARALLEL_THRESHOLD)},

@@ -9,7 +9,7 @@ A :class:`Problems` collector belongs to one file. Its typed checks (:meth:`~Pro
 :class:`~pm2dof.core.errors.InputFileError` (a ``ModelFileError``, a ``StudyFileError``)::
 
     /path/model.toml: 2 problems:
-      [nominal.alpha] must be a list of 4 numbers, one per leg (the file has 4 [[legs]]), got 3: [...]
+      [nominal.alpha] must be a list of 4 numbers, one per leg (the file has 4 [[legs]]), ...
       [limits.tau_max (leg 2)] must be > 0, got 0.0
 
 Entries of arrays are numbered from 1, as the paper numbers legs: :func:`entry`.

@@ -92,7 +92,8 @@ def _distribution(pr, key, v, integer=False):
     if not isinstance(v, dict):
         v = {"value": v}
     if len(v) != 1:
-        return pr.add(key, f"give exactly one of value / uniform / normal / choice, got {sorted(v)}")
+        return pr.add(key, f"give exactly one of value / uniform / normal / choice, got "
+                           f"{sorted(v)}")
     (kind, a), = v.items()
     if kind == "value":
         return None if pr.number(f"{key}.value", a, integer=integer) is None else \
@@ -136,7 +137,8 @@ class Variant:
 def _controller_value(pr, key, name, v):
     """One controller key's value (gains as floats or tuples); None after a problem."""
     if name in ("Kp", "Kv", "Kd", "Q", "tau_max"):
-        vals = [pr.number(key, x, low=0.0, low_ok=False) for x in (v if isinstance(v, list) else [v])]
+        vals = [pr.number(key, x, low=0.0, low_ok=False)
+                for x in (v if isinstance(v, list) else [v])]
         return None if None in vals else (tuple(vals) if isinstance(v, list) else vals[0])
     if name in ("Gamma_scale", "velocity_filter_hz"):
         return pr.number(key, v, low=0.0)
