@@ -32,7 +32,8 @@ from . import _moved
 from .control.controllers import STATUS_NAMES, APDController, NAController
 from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
 from .control.trajectory import PAPER_MOVES, Trajectory, TrajectoryError, line, paper_move
-from .core.errors import ModelFileError, SingularityError, StaleGeneratedCodeError, WorkspaceError
+from .core.errors import (ClosureError, ModelFileError, SingularityError, StaleGeneratedCodeError,
+                          WorkspaceError)
 from .core.model import Model, load_model
 from .core.version import __version__
 
@@ -70,6 +71,7 @@ __all__ = [
     "plant_truth", "theta_truth", "rmse", "line", "paper_move", "PAPER_MOVES", "Trajectory",
     # errors
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
+    "ClosureError",
     "TrajectoryError",
     # layer 3 (imported on first use)
     *_LAZY,

@@ -53,7 +53,7 @@ def test_promised_names_are_at_the_top_level():
     r = simulate(m, apd, paper_move("low"))
     assert isinstance(r, SimResult) and r.rmse < 1e-3
     assert set(STATUS_NAMES.values()) == {"ok", "singular", "saturated", "non_finite",
-                                          "preload_infeasible"}
+                                          "preload_infeasible", "inconsistent_encoders"}
     assert STATUS_NAMES == {int(v): k for k, v in m.manifest["status_codes"].items()}
     assert len(line((0.22, 0.29), (0.27, 0.24), 0.2, 5.0, 200.0).t) == len(paper_move("low").t)
 

@@ -148,7 +148,7 @@ def _random_step_case(m, rng, law, xe=None, tau_max=1e3):
     common = dict(T=T, vel_alpha=a, sing_threshold=m.singularity_threshold,
                   parallel_sing_threshold=m.parallel_singularity_threshold,
                   tau_max=np.full(N_LEGS, tau_max), preload_sign=np.ones(N_LEGS),
-                  preload=np.zeros(N_LEGS))
+                  preload=np.zeros(N_LEGS), closure_tol=m.closure_tolerance)
     if law == "na":
         params = L["na_params"].pack(Kd=rng.uniform(50, 300, 2), Q=rng.uniform(50, 400, 2),
                                      Gamma=rng.uniform(0.0, 0.05, 5 * N_LEGS), **common)

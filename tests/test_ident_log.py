@@ -125,8 +125,8 @@ def test_another_model_is_refused_by_name(m, good):
 
 def test_angles_outside_the_workspace_are_named(m, good):
     qa = good.qa.copy()
-    qa[12] = np.degrees(qa[12])           # a row logged in degrees
-    with pytest.raises(LogError, match=r"row 13 .*outside the workspace"):
+    qa[12] = np.degrees(qa[12])           # a row logged in degrees: the legs cannot close
+    with pytest.raises(LogError, match=r"row 13 .*do not close the loops.*angles must be in rad"):
         log_poses(m, IdentLog(t=good.t, qa=qa, tau=good.tau))
 
 

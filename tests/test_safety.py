@@ -86,7 +86,7 @@ def same_state(a, b):
 
 def test_status_codes():
     assert STATUS == {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3,
-                      "preload_infeasible": 4}
+                      "preload_infeasible": 4, "inconsistent_encoders": 5}
     assert issubclass(SingularityError, ValueError)
 
 
@@ -370,7 +370,7 @@ def _projection_case(rng):
                                     Gamma=rng.uniform(0, 0.02, P), T=0.002, vel_alpha=1.0,
                                     sing_threshold=THR, parallel_sing_threshold=THR,
                                     tau_max=np.full(N, 1e3), preload_sign=np.ones(N),
-                                    preload=np.zeros(N))
+                                    preload=np.zeros(N), closure_tol=M.closure_tolerance)
     qa = rc.measure(G, XE, 0.0)
     xd = XE + rng.normal(0, 2e-3, 2)
     return state, qa, xd, rng.normal(0, 0.3, 2), rng.normal(0, 5, 2), params

@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import WorkspaceError
+from ..core.errors import ClosureError, WorkspaceError
 from .results import write_atomic
 
 __all__ = ["LogError", "IdentLog", "read_log", "write_log", "log_poses", "MIN_ROWS"]
@@ -327,6 +327,12 @@ def log_poses(model, log, *, encoder_tolerance=2e-3):
         try:
             model.fk(log.qa[k], out=xe[k])
             model.ik(xe[k], out=q[k])
+        except ClosureError as exc:
+            raise LogError(f"{where}: the encoders qa1..qa{n} do not close the loops of "
+                           f"{model.name!r} ({exc}). An encoder offset or sign (with more "
+                           f"encoders than degrees of freedom one bad encoder shows on all of "
+                           f"them), another robot's log, or angles not in rad (angles must be "
+                           f"in rad, absolute from +x, as in the model file)") from None
         except WorkspaceError as exc:
             raise LogError(f"{where}: active angles qa = {log.qa[k].tolist()} rad are outside "
                            f"the workspace of {model.name!r} ({exc}); angles must be in rad, "

@@ -20,7 +20,8 @@ from ..core.layout import Layout
 
 __all__ = ["NAController", "APDController", "STATUS_NAMES"]
 
-STATUS_NAMES = {0: "ok", 1: "singular", 2: "saturated", 3: "non_finite", 4: "preload_infeasible"}
+STATUS_NAMES = {0: "ok", 1: "singular", 2: "saturated", 3: "non_finite", 4: "preload_infeasible",
+                5: "inconsistent_encoders"}
 #: torque split -> suffix of its generated functions (derive/splits.py)
 SPLITS = {"min_norm": "", "min_max": "_minmax", "preload": "_preload"}
 
@@ -82,7 +83,8 @@ class _Controller:
             **gains, T=T, vel_alpha=velocity_filter_alpha(T, fc),
             sing_threshold=model.singularity_threshold,
             parallel_sing_threshold=model.parallel_singularity_threshold,
-            tau_max=tau_max, preload_sign=preload_sign, preload=preload)
+            tau_max=tau_max, preload_sign=preload_sign, preload=preload,
+            closure_tol=model.closure_tolerance)
         self.params.setflags(write=False)
         self._f = model.function(f"{self.function_name}_step")
         self._states = (np.zeros(self.state_layout.size), np.zeros(self.state_layout.size))

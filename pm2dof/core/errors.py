@@ -2,7 +2,7 @@
 from typing import NamedTuple
 
 __all__ = ["Problem", "InputFileError", "ModelFileError", "StaleGeneratedCodeError",
-           "WorkspaceError", "SingularityError"]
+           "WorkspaceError", "ClosureError", "SingularityError"]
 
 
 class Problem(NamedTuple):
@@ -55,6 +55,11 @@ class StaleGeneratedCodeError(RuntimeError):
 
 class WorkspaceError(ValueError):
     """A task-space position no leg (or not every leg) can reach."""
+
+
+class ClosureError(WorkspaceError):
+    """Active (encoder) angles that do not close the loops: some leg's closure residual exceeds
+    ``[sensing] closure_tolerance`` (names the leg and the residual in m)."""
 
 
 class SingularityError(ValueError):

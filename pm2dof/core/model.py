@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from . import build, paths
-from .errors import SingularityError, StaleGeneratedCodeError, WorkspaceError
+from .errors import ClosureError, SingularityError, StaleGeneratedCodeError, WorkspaceError
 from .layout import Layout
 from .model_file import read_model_file
 
@@ -107,7 +107,7 @@ class Model:
     """
 
     __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_layouts", "_sing_thr",
-                 "_sing", "__weakref__")
+                 "_sing", "_residual", "__weakref__")
 
     #: names of the two singularity measures, in the order of :meth:`singularity_measures`
     SINGULARITY_KINDS = ("type I (a leg's links aligned)",
@@ -139,7 +139,8 @@ class Model:
                          {name: Layout(name, fl) for name, fl in manifest["layouts"].items()})),
                      ("_sing_thr", (spec.limits["singularity_threshold"],
                                     spec.limits["parallel_singularity_threshold"])),
-                     ("_sing", array.array("d", [0.0, 0.0]))):  # array: [0] ~3x faster than numpy
+                     ("_sing", array.array("d", [0.0, 0.0])),   # array: [0] ~3x faster than numpy
+                     ("_residual", np.zeros(spec.n_legs))):
             object.__setattr__(self, k, v)
 
     def __setattr__(self, key, value):
@@ -279,12 +280,57 @@ class Model:
             raise WorkspaceError(f"inverse kinematics failed at xe = {xe.tolist()}")
         return out
 
+    closure_tolerance = property(
+        lambda self: self.spec.sensing["closure_tolerance"],
+        doc="largest |O - B_i| - lb_i, m, that fk and the controllers accept from the encoders")
+
     def fk(self, qa, out=None):
-        """Forward kinematics from the measured active angles ``qa`` (n,), rad -> xe (2,), m."""
-        out = self._eval("fk", (2,), out, qa)
-        if not np.isfinite(out).all():
+        """Forward kinematics from the measured active angles.
+
+        Parameters
+        ----------
+        qa : array_like (n,)
+            Active (encoder) angles, rad, absolute from +x.
+
+        Returns
+        -------
+        xe : ndarray (2,)
+            End-effector position O, m: for n >= 3 legs the least-squares point of the n
+            elbow circles (B_i = A_i + la_i u(qa_i), radius lb_i), for two legs their
+            intersection on the ``fk_branch`` side.
+
+        Raises
+        ------
+        WorkspaceError
+            No assembly exists (a five-bar's circles do not meet), or (:class:`ClosureError`, a
+            WorkspaceError) the angles do not close the loops: some leg's closure residual | |O - B_i| - lb_i | exceeds
+            :attr:`closure_tolerance` (``[sensing] closure_tolerance``, by default a few
+            encoder steps at the active link's length). With three encoders for two degrees of
+            freedom, the extra legs are a check of the measurement; the message names the leg
+            and its residual in m.
+        """
+        if out is None:
+            out = np.empty(2)
+        elif type(out) is not np.ndarray or out.shape != (2,):
+            raise ValueError(f"out must be a C-contiguous float64 array of shape (2,), got "
+                             f"{type(out).__name__} {getattr(out, 'shape', '')}")
+        f, r = self._f["fk"], self._residual
+        try:
+            f(qa, out, r)
+        except (TypeError, ValueError):
+            qa = self._coerce(f, (qa,))[0]
+            f(qa, out, r)
+        tol = self.spec.sensing["closure_tolerance"]
+        if not (np.isfinite(out).all() and np.isfinite(r).all()):
             raise WorkspaceError(f"no assembly of the legs has active angles qa = "
-                                 f"{np.asarray(qa).tolist()}")
+                                 f"{np.asarray(qa).tolist()} rad")
+        worst = int(np.argmax(np.abs(r)))
+        if not abs(r[worst]) <= tol:
+            raise ClosureError(
+                f"the active angles qa = {np.asarray(qa).tolist()} rad do not close the loops: "
+                f"leg {worst + 1}'s tip misses the common point by {r[worst]:+.3g} m (closure "
+                f"residual |O - B_i| - lb_i; tolerance {tol:.3g} m, [sensing] "
+                f"closure_tolerance): inconsistent encoders, or angles of another robot")
         return out
 
     def H(self, q, out=None):

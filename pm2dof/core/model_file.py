@@ -9,6 +9,7 @@ staleness. This module is pure Python and is shared by ``derive/`` and the runti
 """
 import hashlib
 import json
+import math
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -36,6 +37,8 @@ INERTIAL = ("alpha", "beta", "gamma")
 #: see Model.singularity_measures; 0.1 is about 8 degrees between a five-bar's distal links)
 DEFAULT_PARALLEL_THRESHOLD = 0.1
 ELBOWS = {"left": 1, "right": -1}
+#: smallest default [sensing] closure_tolerance, m (exact encoders still meet rounding)
+CLOSURE_FLOOR = 1e-6
 FK_BRANCHES = {"left": 1, "right": -1}
 
 _MODEL_KEYS = {"name", "description", "friction", "fk_branch", "stribeck_velocity",
@@ -191,12 +194,14 @@ def _read_nominal(pr, nominal, n, friction):
 
 # run-time sections: key -> (length: None for a scalar, "n" per leg, "p" per parameter, or 2
 #                             for a task-space pair; rule: a validate.RULES key;
-#                             default: a third entry makes the key optional)
+#                             default: a third entry makes the key optional, None: the
+#                             caller fills it in)
 _SCHEMA = {
     "limits": {"singularity_threshold": (None, "pos"), "tau_max": ("n", "pos"),
                "parallel_singularity_threshold": (None, "pos", DEFAULT_PARALLEL_THRESHOLD)},
     "sensing": {"sample_period": (None, "pos"), "encoder_counts_per_rev": (None, "nonneg"),
-                "velocity_filter_hz": (None, "nonneg")},
+                "velocity_filter_hz": (None, "nonneg"),
+                "closure_tolerance": (None, "pos", None)},   # default: default_closure_tolerance
     "gains.na": {"Kd": (2, "pos"), "Q": (2, "pos"), "Gamma": ("p", "nonneg")},
     "gains.apd": {"Kp": (2, "pos"), "Kv": (2, "pos")},
     "plant": {"alpha": ("n", "pos"), "beta": ("n", "any"), "gamma": ("n", "pos"),
@@ -217,7 +222,7 @@ def _read_section(pr, where, table, schema, n, param_names):
     out = {}
     for key, (length, rule, *default) in schema.items():
         if key not in table:
-            if default:
+            if default and default[0] is not None:
                 out[key] = default[0]
             continue
         if length is None:
@@ -240,14 +245,28 @@ def _read_limits(pr, doc, n, param_names):
     return limits
 
 
-def _read_runtime(pr, doc, n, param_names):
+def default_closure_tolerance(legs, encoder_counts_per_rev):
+    """[sensing] closure_tolerance when a model file does not set it, m: five encoder steps at
+    the longest active link, at least 1 um. (One step moves an elbow by la * 2 pi / counts;
+    quantised angles over the paper robot's workspace give residuals up to 0.8 of that, and
+    up to 1.3 with a full step of error: tests/test_closure.py measures it.)"""
+    if encoder_counts_per_rev <= 0:
+        return CLOSURE_FLOOR
+    step = 2 * math.pi / encoder_counts_per_rev
+    return max(CLOSURE_FLOOR, 5 * max(leg.la for leg in legs) * step)
+
+
+def _read_runtime(pr, doc, n, param_names, legs):
     """The run-time sections [sensing], [gains.*], [plant]."""
-    sensing = _read_section(pr, "sensing", pr.table("sensing", doc.get("sensing")),
-                            _SCHEMA["sensing"], n, param_names)
+    sensing_raw = pr.table("sensing", doc.get("sensing"))
+    sensing = _read_section(pr, "sensing", sensing_raw, _SCHEMA["sensing"], n, param_names)
     counts = (sensing or {}).get("encoder_counts_per_rev")
     if counts is not None and counts != int(counts):
-        pr.add("sensing.encoder_counts_per_rev", f"must be a whole number (0: no quantisation), "
-                                                 f"got {counts}")
+        counts = pr.add("sensing.encoder_counts_per_rev", f"must be a whole number (0: no "
+                                                          f"quantisation), got {counts}")
+    if (sensing is not None and "closure_tolerance" not in sensing_raw and counts is not None
+            and None not in legs):
+        sensing["closure_tolerance"] = default_closure_tolerance(legs, counts)
     gains_raw = pr.table("gains", doc.get("gains"))
     gains = {}
     if gains_raw is not None:
@@ -359,7 +378,7 @@ def read_model_file(path):
         pr.raise_if_any()
     param_names, theta = _read_nominal(pr, pr.table("nominal", doc.get("nominal")), n, friction)
     limits = _read_limits(pr, doc, n, param_names)
-    sensing, gains, plant = _read_runtime(pr, doc, n, param_names)
+    sensing, gains, plant = _read_runtime(pr, doc, n, param_names, legs)
     trajs = _read_trajectories(pr, doc, n, param_names, legs)
     control = _read_control(pr, doc, n, (limits or {}).get("tau_max"))
     pr.raise_if_any()

@@ -10,7 +10,8 @@ from .splits import SPLITS, min_max, min_norm
 __all__ = ["controller_layouts", "controller_functions", "STATUS"]
 
 # status codes of a step (also in the manifest): what the step did with this sample
-STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3, "preload_infeasible": 4}
+STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3, "preload_infeasible": 4,
+          "inconsistent_encoders": 5}
 # smallest alpha, gamma the optional projection of theta_hat allows, kg*m^2
 PROJECTION_FLOOR = 1e-6
 
@@ -20,8 +21,9 @@ def controller_layouts(n, p):
     state = Layout([("xe_prev", 2), ("v", 2), ("theta_hat", p)])
     # sing_threshold: type I (legs), parallel_sing_threshold: type II (actuation)
     # preload_sign, preload: the "preload" split's sign per actuator (+-1) and least |tau|, N*m
+    # closure_tol: largest |O - B_i| - lb_i of the measured pose, m ([sensing] closure_tolerance)
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
-              ("tau_max", n), ("preload_sign", n), ("preload", n)]
+              ("tau_max", n), ("preload_sign", n), ("preload", n), ("closure_tol", 1)]
     na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p)] + common)
     apd = Layout([("Kp", 2), ("Kv", 2)] + common)
     return {"ctrl_state": state, "na_params": na, "apd_params": apd}
@@ -74,8 +76,9 @@ def controller_functions(d, prefix):
     (desired position, velocity, acceleration), params (see controller_layouts).
     Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot, sing (2):
     type I, type II].
-    A bad sample (singular pose, or any non-finite intermediate) gives the safe torque zero
-    and leaves theta_hat unchanged; a non-finite sample also keeps xe_prev and v.
+    A bad sample (encoders that do not close the loops, a singular pose, or any non-finite
+    intermediate) gives the safe torque zero and leaves theta_hat unchanged; inconsistent
+    encoders and a non-finite sample also keep xe_prev and v (a wrong pose is not carried on).
     """
     n, p = d.spec.n_legs, len(d.spec.param_names)
     kin = d.kin
@@ -93,7 +96,10 @@ def controller_functions(d, prefix):
         # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
         # low-pass on the backward difference, passive joints from geometry (unit vectors)
         base = d.converter_qa(qa)
-        xe = base(kin.fk())
+        O = kin.fk()
+        xe = base(O)
+        # the extra legs are a check: every leg's residual within tolerance (false for NaN)
+        consistent = ca.mmax(ca.fabs(base(kin.closure_residuals(O)))) <= P["closure_tol"]
         v = st["v"] + P["vel_alpha"] * ((xe - st["xe_prev"]) / P["T"] - st["v"])
         e = xd - xe                                     # eq. 14
         edot = xd_dot - v
@@ -120,15 +126,16 @@ def controller_functions(d, prefix):
         regular = ca.logic_and(sing[0] >= P["sing_threshold"],     # false for NaN too
                                sing[1] >= P["parallel_sing_threshold"])
         finite = _all_finite(ca.vertcat(tau, theta_next, xe, v))
-        good = ca.logic_and(regular, finite)
+        good = ca.logic_and(consistent, ca.logic_and(regular, finite))
         tau_out = ca.if_else(good, tau_sat, ca.DM.zeros(n))        # safe torque: zero
         theta_out = ca.if_else(good, theta_next, theta)            # no update on a bad sample
-        status = ca.if_else(regular, ca.if_else(finite, ca.if_else(
+        status = ca.if_else(consistent, ca.if_else(regular, ca.if_else(finite, ca.if_else(
             saturated, STATUS["saturated"], ca.if_else(
                 unpreloaded, STATUS["preload_infeasible"], STATUS["ok"])), STATUS["non_finite"]),
-            STATUS["singular"])
-        state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(finite, xe, st["xe_prev"]),
-                                            v=ca.if_else(finite, v, st["v"]), theta_hat=theta_out)
+            STATUS["singular"]), STATUS["inconsistent_encoders"])
+        carry = ca.logic_and(consistent, finite)                   # a pose worth remembering
+        state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(carry, xe, st["xe_prev"]),
+                                            v=ca.if_else(carry, v, st["v"]), theta_hat=theta_out)
         functions.append(ca.Function(
             f"{prefix}_{name}{suffix}_step", [state, qa, xd, xd_dot, xd_ddot, params],
             [tau_out, state_next, status, ca.vertcat(xe, v, e, edot, sing)],

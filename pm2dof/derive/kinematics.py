@@ -103,6 +103,19 @@ class Kinematics:
                        for j in range(1, n)])
         return solve2(G.T * G, G.T * h)
 
+    def closure_residuals(self, O):
+        """|O - B_i| - lb_i for every leg, m: how far the tip O misses each elbow's circle.
+
+        Zero when the active angles are consistent. With n >= 3 legs, fk fits O to all circles
+        by least squares, so a residual measures how inconsistent the encoders are: the extra
+        legs are a check. (A five-bar's fk meets both circles exactly: residuals are zero.)
+        """
+        out = []
+        for i, B in enumerate(self.elbows()):
+            d = O - B
+            out.append(sp.sqrt(d[0] ** 2 + d[1] ** 2) - self.lb[i])
+        return sp.Matrix(out)
+
     def unit_vectors_from_xe(self):
         """(cos, sin) of every joint angle as functions of xe, from geometry alone (no trig).
 

@@ -115,7 +115,8 @@ def model_functions(d, prefix):
         q_ik = ca.if_else(cv(kin.assembly_side()) * d.spec.fk_branch > 0, q_ik, ca.DM.nan(2 * n))
     add("ik", [("xe", xe)], [("q", q_ik)])
     cqa = d.converter_qa(qa)
-    add("fk", [("qa", qa)], [("xe", cqa(kin.fk()))])
+    O = kin.fk()
+    add("fk", [("qa", qa)], [("xe", cqa(O)), ("residual", cqa(kin.closure_residuals(O)))])
     cq = d.converter_q(q)
     add("H", [("q", q)], [("H", cq(kin.H))])                                   # eq. 5
     add("A", [("q", q)], [("A", cq(kin.A))])                                   # eq. 6

@@ -50,7 +50,8 @@ __all__ = [
 ]
 
 #: Status codes of a controller step (same as the manifest's ``status_codes``).
-STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3, "preload_infeasible": 4}
+STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3, "preload_infeasible": 4,
+          "inconsistent_encoders": 5}
 #: alpha, gamma floor of the optional projection of theta_hat, kg*m^2
 PROJECTION_FLOOR = 1e-6
 
@@ -68,7 +69,7 @@ def layouts(n: int) -> dict:
     dict of str -> pm2dof.core.layout.Layout
         ``ctrl_state`` (xe_prev 2, v 2, theta_hat p); ``na_params`` (Kd 2, Q 2, Gamma p,
         T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n, preload_sign n,
-        preload n); ``apd_params`` (Kp 2, Kv 2, and the same); the reference steps are the
+        preload n, closure_tol); ``apd_params`` (Kp 2, Kv 2, and the same); the reference steps are the
         min_norm split (eq. 21; tests/test_splits.py checks the other splits); ``plant`` (alpha, beta, gamma, fv, fc, fs
         each n, stribeck_velocity, coulomb_smoothing_velocity, encoder_step);
         ``cl_state`` (xe 2, xed 2, ctrl_state); ``cl_input`` (xd 2, xd_dot 2,
@@ -76,7 +77,7 @@ def layouts(n: int) -> dict:
     """
     p = 5 * n
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
-              ("tau_max", n), ("preload_sign", n), ("preload", n)]
+              ("tau_max", n), ("preload_sign", n), ("preload", n), ("closure_tol", 1)]
     state = [("xe_prev", 2), ("v", 2), ("theta_hat", p)]
     fields = {
         "ctrl_state": state,
@@ -146,7 +147,12 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=Fals
     T, a = P["T"][0], P["vel_alpha"][0]
     # Fig. 2 signal processing: fk from qa; first-order low-pass on the backward difference
     # (written exactly as the generated C: v + a ((xe - xe_prev) / T - v))
-    xe = ref.fk(g, qa)
+    try:
+        xe = ref.fk(g, qa)
+    except ValueError:                   # no assembly of the legs at all
+        xe = np.full(2, np.nan)
+    with np.errstate(invalid="ignore"):  # the extra legs check the encoders (closure)
+        consistent = bool(np.max(np.abs(ref.closure_residuals(g, qa, xe))) <= P["closure_tol"][0])
     v = st["v"] + a * ((xe - st["xe_prev"]) / T - st["v"])
     e = xd - xe                                                   # eq. 14
     edot = xd_dot - v
@@ -173,7 +179,9 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=Fals
         sing, sing_parallel = _measures(q, n)
     finite = bool(np.isfinite(np.concatenate([tau, theta_next, xe, v])).all())
     regular = sing >= P["sing_threshold"][0] and sing_parallel >= P["parallel_sing_threshold"][0]
-    if not regular:  # singular (or NaN measure): safe torque, no update
+    if not consistent:  # encoders that do not close the loops: safe torque, keep the state
+        status, tau_out, theta_out = STATUS["inconsistent_encoders"], np.zeros(n), theta
+    elif not regular:  # singular (or NaN measure): safe torque, no update
         status, tau_out, theta_out = STATUS["singular"], np.zeros(n), theta
     elif not finite:                       # non-finite: safe torque, keep the whole state
         status, tau_out, theta_out = STATUS["non_finite"], np.zeros(n), theta
@@ -181,7 +189,7 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=Fals
         status = STATUS["saturated"] if np.max(np.abs(tau) - tau_max) > 0 else STATUS["ok"]
         tau_out = np.minimum(np.maximum(tau, -tau_max), tau_max)
         theta_out = theta_next
-    if not finite:
+    if not (finite and consistent):
         xe, v = st["xe_prev"].copy(), st["v"].copy()
     state_next = np.concatenate([xe, v, theta_out])      # ctrl_state layout
     diag = {"xe": xe, "v": v, "e": e, "edot": edot, "sing": sing, "sing_parallel": sing_parallel,

@@ -42,6 +42,7 @@ __all__ = [
     "Geometry",
     "ik",
     "fk",
+    "closure_residuals",
     "H",
     "A",
     "W",
@@ -330,6 +331,15 @@ def fk(g: Any, qa: np.ndarray) -> np.ndarray:
             f"fk: elbows are collinear for qa={qa.tolist()}; tip is not determined"
         )
     return sol
+
+
+def closure_residuals(g: Any, qa: np.ndarray, xe: np.ndarray) -> np.ndarray:
+    """How far the tip ``xe`` (2,) misses each elbow circle: |O - B_i| - lb_i (n,), m, with
+    B_i = A_i + la_i u(qa_i). Zero for consistent active angles; the extra legs of a
+    redundant robot make it a check of the encoders."""
+    bases, la, lb, _, n = _geom(g)
+    B = bases + la[:, None] * _u(np.asarray(qa, dtype=float))
+    return np.hypot(*(np.asarray(xe, dtype=float)[None, :] - B).T) - lb
 
 
 def H(g: Any, q: np.ndarray) -> np.ndarray:

@@ -15,7 +15,7 @@
  *
  * Functions (inputs -> outputs, element counts):
  *   fivebar_ik(xe[2]) -> (q[4])
- *   fivebar_fk(qa[2]) -> (xe[2])
+ *   fivebar_fk(qa[2]) -> (xe[2], residual[2])
  *   fivebar_H(q[4]) -> (H[2])
  *   fivebar_A(q[4]) -> (A[8])
  *   fivebar_singularity(q[4]) -> (sin_ab[2])
@@ -31,37 +31,37 @@
  *   fivebar_Y(q[4], xed[2], xrd[2], xrdd[2]) -> (Y[20], sing[2])
  *   fivebar_torque_splits(q[4], u[2], tau_max[2], preload_sign[2], preload[2]) -> (tau_min_norm[2], tau_min_max[2], min_max_ratio[1], tau_preload[2], preload_mode[1], sing[2])
  *   fivebar_forward_dynamics(xe[2], xed[2], tau_a[2], theta[10]) -> (xedd[2], sing[2])
- *   fivebar_na_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[24]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[24]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[24]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_proj_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[24]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_proj_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[24]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_proj_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[24]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_apd_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[14]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_apd_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[14]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_apd_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[14]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_proj_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_proj_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_proj_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_apd_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_apd_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_apd_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
  *   fivebar_plant_xedd(xe[2], xed[2], tau_a[2], plant[15]) -> (xedd[2])
  *   fivebar_plant_step(x[4], tau_a[2], plant[15], h[1]) -> (x_next[4])
  *   fivebar_measure(xe[2], plant[15]) -> (qa[2])
- *   fivebar_na_closed_loop(x[18], u[6], p[39]) -> (x_next[18], y[17])
- *   fivebar_na_minmax_closed_loop(x[18], u[6], p[39]) -> (x_next[18], y[17])
- *   fivebar_na_preload_closed_loop(x[18], u[6], p[39]) -> (x_next[18], y[17])
- *   fivebar_na_proj_closed_loop(x[18], u[6], p[39]) -> (x_next[18], y[17])
- *   fivebar_na_proj_minmax_closed_loop(x[18], u[6], p[39]) -> (x_next[18], y[17])
- *   fivebar_na_proj_preload_closed_loop(x[18], u[6], p[39]) -> (x_next[18], y[17])
- *   fivebar_apd_closed_loop(x[18], u[6], p[29]) -> (x_next[18], y[17])
- *   fivebar_apd_minmax_closed_loop(x[18], u[6], p[29]) -> (x_next[18], y[17])
- *   fivebar_apd_preload_closed_loop(x[18], u[6], p[29]) -> (x_next[18], y[17])
+ *   fivebar_na_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
+ *   fivebar_na_minmax_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
+ *   fivebar_na_preload_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
+ *   fivebar_na_proj_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
+ *   fivebar_na_proj_minmax_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
+ *   fivebar_na_proj_preload_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
+ *   fivebar_apd_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
+ *   fivebar_apd_minmax_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
+ *   fivebar_apd_preload_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[10]
- *   na_params: Kd[2], Q[2], Gamma[10], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2]
- *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2]
+ *   na_params: Kd[2], Q[2], Gamma[10], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
+ *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
  *   cl_state: xe[2], xed[2], ctrl_state[14]
  *   cl_input: xd[2], xd_dot[2], xd_ddot[2]
  *   cl_output: xe[2], xed[2], tau_a[2], status[1], theta_hat[10]
  *   plant: alpha[2], beta[2], gamma[2], fv[2], fc[2], fs[2], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
- *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible
+ *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
  */
 /* This file was automatically generated by CasADi 3.8.2.
  *  It consists of: 
@@ -115,7 +115,7 @@ const casadi_int* fivebar_fk_sparsity_out(casadi_int i);
 int fivebar_fk_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fivebar_fk_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 #define fivebar_fk_SZ_ARG 1
-#define fivebar_fk_SZ_RES 1
+#define fivebar_fk_SZ_RES 2
 #define fivebar_fk_SZ_IW 0
 #define fivebar_fk_SZ_W 0
 int fivebar_H(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
@@ -657,7 +657,7 @@ int fivebar_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fivebar_na_preload_closed_loop_SZ_ARG 14
 #define fivebar_na_preload_closed_loop_SZ_RES 8
 #define fivebar_na_preload_closed_loop_SZ_IW 0
-#define fivebar_na_preload_closed_loop_SZ_W 163
+#define fivebar_na_preload_closed_loop_SZ_W 164
 int fivebar_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_na_proj_closed_loop_checkout(void);
 void fivebar_na_proj_closed_loop_release(int mem);
@@ -711,7 +711,7 @@ int fivebar_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define fivebar_na_proj_preload_closed_loop_SZ_ARG 14
 #define fivebar_na_proj_preload_closed_loop_SZ_RES 8
 #define fivebar_na_proj_preload_closed_loop_SZ_IW 0
-#define fivebar_na_proj_preload_closed_loop_SZ_W 164
+#define fivebar_na_proj_preload_closed_loop_SZ_W 165
 int fivebar_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_apd_closed_loop_checkout(void);
 void fivebar_apd_closed_loop_release(int mem);
@@ -765,7 +765,7 @@ int fivebar_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* s
 #define fivebar_apd_preload_closed_loop_SZ_ARG 14
 #define fivebar_apd_preload_closed_loop_SZ_RES 8
 #define fivebar_apd_preload_closed_loop_SZ_IW 0
-#define fivebar_apd_preload_closed_loop_SZ_W 156
+#define fivebar_apd_preload_closed_loop_SZ_W 157
 void fivebar_casadi_version(int* major, int* minor, int* patch);
 int fivebar_casadi_int_size(void);
 int fivebar_casadi_real_size(void);

@@ -15,7 +15,7 @@
  *
  * Functions (inputs -> outputs, element counts):
  *   fourleg_ik(xe[2]) -> (q[8])
- *   fourleg_fk(qa[4]) -> (xe[2])
+ *   fourleg_fk(qa[4]) -> (xe[2], residual[4])
  *   fourleg_H(q[8]) -> (H[6])
  *   fourleg_A(q[8]) -> (A[48])
  *   fourleg_singularity(q[8]) -> (sin_ab[4])
@@ -31,37 +31,37 @@
  *   fourleg_Y(q[8], xed[2], xrd[2], xrdd[2]) -> (Y[40], sing[2])
  *   fourleg_torque_splits(q[8], u[2], tau_max[4], preload_sign[4], preload[4]) -> (tau_min_norm[4], tau_min_max[4], min_max_ratio[1], tau_preload[4], preload_mode[1], sing[2])
  *   fourleg_forward_dynamics(xe[2], xed[2], tau_a[4], theta[20]) -> (xedd[2], sing[2])
- *   fourleg_na_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[40]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[40]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[40]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_proj_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[40]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_proj_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[40]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_proj_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[40]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_apd_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[20]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_apd_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[20]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_apd_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[20]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_proj_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_proj_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_proj_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_apd_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_apd_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_apd_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
  *   fourleg_plant_xedd(xe[2], xed[2], tau_a[4], plant[27]) -> (xedd[2])
  *   fourleg_plant_step(x[4], tau_a[4], plant[27], h[1]) -> (x_next[4])
  *   fourleg_measure(xe[2], plant[27]) -> (qa[4])
- *   fourleg_na_closed_loop(x[28], u[6], p[67]) -> (x_next[28], y[29])
- *   fourleg_na_minmax_closed_loop(x[28], u[6], p[67]) -> (x_next[28], y[29])
- *   fourleg_na_preload_closed_loop(x[28], u[6], p[67]) -> (x_next[28], y[29])
- *   fourleg_na_proj_closed_loop(x[28], u[6], p[67]) -> (x_next[28], y[29])
- *   fourleg_na_proj_minmax_closed_loop(x[28], u[6], p[67]) -> (x_next[28], y[29])
- *   fourleg_na_proj_preload_closed_loop(x[28], u[6], p[67]) -> (x_next[28], y[29])
- *   fourleg_apd_closed_loop(x[28], u[6], p[47]) -> (x_next[28], y[29])
- *   fourleg_apd_minmax_closed_loop(x[28], u[6], p[47]) -> (x_next[28], y[29])
- *   fourleg_apd_preload_closed_loop(x[28], u[6], p[47]) -> (x_next[28], y[29])
+ *   fourleg_na_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
+ *   fourleg_na_minmax_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
+ *   fourleg_na_preload_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
+ *   fourleg_na_proj_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
+ *   fourleg_na_proj_minmax_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
+ *   fourleg_na_proj_preload_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
+ *   fourleg_apd_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
+ *   fourleg_apd_minmax_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
+ *   fourleg_apd_preload_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[20]
- *   na_params: Kd[2], Q[2], Gamma[20], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4]
- *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4]
+ *   na_params: Kd[2], Q[2], Gamma[20], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
+ *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
  *   cl_state: xe[2], xed[2], ctrl_state[24]
  *   cl_input: xd[2], xd_dot[2], xd_ddot[2]
  *   cl_output: xe[2], xed[2], tau_a[4], status[1], theta_hat[20]
  *   plant: alpha[4], beta[4], gamma[4], fv[4], fc[4], fs[4], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
- *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible
+ *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
  */
 /* This file was automatically generated by CasADi 3.8.2.
  *  It consists of: 
@@ -115,7 +115,7 @@ const casadi_int* fourleg_fk_sparsity_out(casadi_int i);
 int fourleg_fk_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fourleg_fk_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 #define fourleg_fk_SZ_ARG 1
-#define fourleg_fk_SZ_RES 1
+#define fourleg_fk_SZ_RES 2
 #define fourleg_fk_SZ_IW 0
 #define fourleg_fk_SZ_W 0
 int fourleg_H(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
@@ -657,7 +657,7 @@ int fourleg_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fourleg_na_preload_closed_loop_SZ_ARG 14
 #define fourleg_na_preload_closed_loop_SZ_RES 8
 #define fourleg_na_preload_closed_loop_SZ_IW 0
-#define fourleg_na_preload_closed_loop_SZ_W 1144
+#define fourleg_na_preload_closed_loop_SZ_W 1145
 int fourleg_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_na_proj_closed_loop_checkout(void);
 void fourleg_na_proj_closed_loop_release(int mem);
@@ -711,7 +711,7 @@ int fourleg_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define fourleg_na_proj_preload_closed_loop_SZ_ARG 14
 #define fourleg_na_proj_preload_closed_loop_SZ_RES 8
 #define fourleg_na_proj_preload_closed_loop_SZ_IW 0
-#define fourleg_na_proj_preload_closed_loop_SZ_W 1145
+#define fourleg_na_proj_preload_closed_loop_SZ_W 1146
 int fourleg_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_apd_closed_loop_checkout(void);
 void fourleg_apd_closed_loop_release(int mem);
@@ -765,7 +765,7 @@ int fourleg_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* s
 #define fourleg_apd_preload_closed_loop_SZ_ARG 14
 #define fourleg_apd_preload_closed_loop_SZ_RES 8
 #define fourleg_apd_preload_closed_loop_SZ_IW 0
-#define fourleg_apd_preload_closed_loop_SZ_W 1133
+#define fourleg_apd_preload_closed_loop_SZ_W 1134
 void fourleg_casadi_version(int* major, int* minor, int* patch);
 int fourleg_casadi_int_size(void);
 int fourleg_casadi_real_size(void);

@@ -15,7 +15,7 @@
  *
  * Functions (inputs -> outputs, element counts):
  *   shang2010_smooth_ik(xe[2]) -> (q[6])
- *   shang2010_smooth_fk(qa[3]) -> (xe[2])
+ *   shang2010_smooth_fk(qa[3]) -> (xe[2], residual[3])
  *   shang2010_smooth_H(q[6]) -> (H[4])
  *   shang2010_smooth_A(q[6]) -> (A[24])
  *   shang2010_smooth_singularity(q[6]) -> (sin_ab[3])
@@ -31,37 +31,37 @@
  *   shang2010_smooth_Y(q[6], xed[2], xrd[2], xrdd[2]) -> (Y[30], sing[2])
  *   shang2010_smooth_torque_splits(q[6], u[2], tau_max[3], preload_sign[3], preload[3]) -> (tau_min_norm[3], tau_min_max[3], min_max_ratio[1], tau_preload[3], preload_mode[1], sing[2])
  *   shang2010_smooth_forward_dynamics(xe[2], xed[2], tau_a[3], theta[15]) -> (xedd[2], sing[2])
- *   shang2010_smooth_na_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[32]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[32]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[32]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_proj_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[32]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_proj_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[32]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_proj_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[32]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_apd_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[17]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_apd_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[17]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_apd_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[17]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_proj_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_proj_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_proj_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_apd_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_apd_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_apd_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[19], status[1], diag[10])
  *   shang2010_smooth_plant_xedd(xe[2], xed[2], tau_a[3], plant[21]) -> (xedd[2])
  *   shang2010_smooth_plant_step(x[4], tau_a[3], plant[21], h[1]) -> (x_next[4])
  *   shang2010_smooth_measure(xe[2], plant[21]) -> (qa[3])
- *   shang2010_smooth_na_closed_loop(x[23], u[6], p[53]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_minmax_closed_loop(x[23], u[6], p[53]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_preload_closed_loop(x[23], u[6], p[53]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_proj_closed_loop(x[23], u[6], p[53]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_proj_minmax_closed_loop(x[23], u[6], p[53]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_proj_preload_closed_loop(x[23], u[6], p[53]) -> (x_next[23], y[23])
- *   shang2010_smooth_apd_closed_loop(x[23], u[6], p[38]) -> (x_next[23], y[23])
- *   shang2010_smooth_apd_minmax_closed_loop(x[23], u[6], p[38]) -> (x_next[23], y[23])
- *   shang2010_smooth_apd_preload_closed_loop(x[23], u[6], p[38]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_minmax_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_preload_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_proj_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_proj_minmax_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_proj_preload_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
+ *   shang2010_smooth_apd_closed_loop(x[23], u[6], p[39]) -> (x_next[23], y[23])
+ *   shang2010_smooth_apd_minmax_closed_loop(x[23], u[6], p[39]) -> (x_next[23], y[23])
+ *   shang2010_smooth_apd_preload_closed_loop(x[23], u[6], p[39]) -> (x_next[23], y[23])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[15]
- *   na_params: Kd[2], Q[2], Gamma[15], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3]
- *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3]
+ *   na_params: Kd[2], Q[2], Gamma[15], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
+ *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   cl_state: xe[2], xed[2], ctrl_state[19]
  *   cl_input: xd[2], xd_dot[2], xd_ddot[2]
  *   cl_output: xe[2], xed[2], tau_a[3], status[1], theta_hat[15]
  *   plant: alpha[3], beta[3], gamma[3], fv[3], fc[3], fs[3], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
- *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible
+ *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
  */
 /* This file was automatically generated by CasADi 3.8.2.
  *  It consists of: 
@@ -115,7 +115,7 @@ const casadi_int* shang2010_smooth_fk_sparsity_out(casadi_int i);
 int shang2010_smooth_fk_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int shang2010_smooth_fk_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 #define shang2010_smooth_fk_SZ_ARG 1
-#define shang2010_smooth_fk_SZ_RES 1
+#define shang2010_smooth_fk_SZ_RES 2
 #define shang2010_smooth_fk_SZ_IW 0
 #define shang2010_smooth_fk_SZ_W 0
 int shang2010_smooth_H(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
@@ -657,7 +657,7 @@ int shang2010_smooth_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casad
 #define shang2010_smooth_na_preload_closed_loop_SZ_ARG 14
 #define shang2010_smooth_na_preload_closed_loop_SZ_RES 8
 #define shang2010_smooth_na_preload_closed_loop_SZ_IW 0
-#define shang2010_smooth_na_preload_closed_loop_SZ_W 315
+#define shang2010_smooth_na_preload_closed_loop_SZ_W 316
 int shang2010_smooth_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_na_proj_closed_loop_checkout(void);
 void shang2010_smooth_na_proj_closed_loop_release(int mem);
@@ -711,7 +711,7 @@ int shang2010_smooth_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, 
 #define shang2010_smooth_na_proj_preload_closed_loop_SZ_ARG 14
 #define shang2010_smooth_na_proj_preload_closed_loop_SZ_RES 8
 #define shang2010_smooth_na_proj_preload_closed_loop_SZ_IW 0
-#define shang2010_smooth_na_proj_preload_closed_loop_SZ_W 315
+#define shang2010_smooth_na_proj_preload_closed_loop_SZ_W 316
 int shang2010_smooth_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_apd_closed_loop_checkout(void);
 void shang2010_smooth_apd_closed_loop_release(int mem);
@@ -765,7 +765,7 @@ int shang2010_smooth_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casa
 #define shang2010_smooth_apd_preload_closed_loop_SZ_ARG 14
 #define shang2010_smooth_apd_preload_closed_loop_SZ_RES 8
 #define shang2010_smooth_apd_preload_closed_loop_SZ_IW 0
-#define shang2010_smooth_apd_preload_closed_loop_SZ_W 306
+#define shang2010_smooth_apd_preload_closed_loop_SZ_W 307
 void shang2010_smooth_casadi_version(int* major, int* minor, int* patch);
 int shang2010_smooth_casadi_int_size(void);
 int shang2010_smooth_casadi_real_size(void);
