@@ -630,3 +630,18 @@ def test_simulate_contract(m):
     assert sat.n_singular == int(np.sum(sat.status == 1)) == 0
     assert np.all(np.abs(sat.tau_a) <= 2.0)
     _record("7 saturated samples with tau_max = 2 N m (count)", sat.n_saturated)
+
+
+def test_payload_leg_override_counts_legs_from_one():
+    """plant_truth(payload_leg=k) books the payload on leg k (1-based, as [plant] payload_leg):
+    0 was taken as index -1, the last leg, silently; n + 1 was an IndexError."""
+    m = pm2dof.load_model()
+    mass, leg = m.spec.plant["payload_mass"], m.spec.legs[2]
+    truth = plant_truth(m, payload_leg=3)
+    bare = np.asarray(m.spec.plant["alpha"])
+    assert truth["alpha"][2] == pytest.approx(bare[2] + mass * leg.la ** 2, rel=1e-15)
+    assert np.array_equal(truth["alpha"][:2], bare[:2])
+    for bad in (0, N_LEGS + 1, 1.5, True):
+        with pytest.raises(ValueError, match=rf"payload_leg must be a leg number 1\.\.{N_LEGS} "
+                                             rf"\(legs count from 1"):
+            plant_truth(m, payload_leg=bad)

@@ -344,7 +344,7 @@ def test_unhashable_enum_values_are_model_file_errors(tmp_path, key, value):
     try:
         read_model_file(p)
     except ModelFileError as exc:
-        where = key.replace(".0.", "[0].")
+        where = "legs.elbow (leg 1)" if key == "legs.0.elbow" else key
         assert_names(str(exc), p, where, "must be one of")
     except Exception as exc:  # noqa: BLE001
         raise AssertionError(f"{key} = {value!r}: read_model_file raised {type(exc).__name__}: "
@@ -375,17 +375,17 @@ def test_huge_integers_are_model_file_errors(tmp_path, key):
 # One test per rule
 # --------------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("key, where, missing", [
-    ("nominal.fc", "nominal", "fc"),
-    ("model.name", "model", "name"),
-    ("legs.1.lb", "legs[1]", "lb"),
-    ("gains.apd.Kv", "gains.apd", "Kv"),
-    ("trajectories.low.j_max", "trajectories.low", "j_max"),
-    ("plant.fs", "plant", "fs"),
+@pytest.mark.parametrize("key, where", [
+    ("nominal.fc", "nominal.fc"),
+    ("model.name", "model.name"),
+    ("legs.1.lb", "legs.lb (leg 2)"),
+    ("gains.apd.Kv", "gains.apd.Kv"),
+    ("trajectories.low.j_max", "trajectories.low.j_max"),
+    ("plant.fs", "plant.fs"),
 ])
-def test_missing_key(tmp_path, key, where, missing):
+def test_missing_key(tmp_path, key, where):
     p, msg = load_error(tmp_path, mutated(**{key: DELETE}))
-    assert_names(msg, p, where, "missing key", repr(missing))
+    assert_names(msg, p, where, "missing (required)")
 
 
 @pytest.mark.parametrize("section", ["sensing", "limits", "nominal", "plant", "gains"])
@@ -399,23 +399,23 @@ def test_missing_legs(tmp_path):
     assert_names(msg, p, "legs", "at least two")
 
 
-@pytest.mark.parametrize("key, where, unknown", [
-    ("legs.0.mass", "legs[0]", "mass"),
-    ("model.colour", "model", "colour"),
-    ("nominal.fs", "nominal", "fs"),          # a Stribeck term under coulomb_viscous
-    ("gains.na.Kp", "gains.na", "Kp"),
-    ("sensing.jitter", "sensing", "jitter"),
-    ("extra", "<top>", "extra"),
+@pytest.mark.parametrize("key, where, allowed", [
+    ("legs.0.mass", "legs.mass (leg 1)", "la"),
+    ("model.colour", "model.colour", "friction"),
+    ("nominal.fs", "nominal.fs", "fc"),          # a Stribeck term under coulomb_viscous
+    ("gains.na.Kp", "gains.na.Kp", "Gamma"),
+    ("sensing.jitter", "sensing.jitter", "sample_period"),
+    ("extra", "extra", "trajectories"),
 ])
-def test_unknown_key(tmp_path, key, where, unknown):
+def test_unknown_key(tmp_path, key, where, allowed):
     value = [0.1, 0.1, 0.1] if key == "nominal.fs" else ({"a": 1} if key == "extra" else 1.0)
     p, msg = load_error(tmp_path, mutated(**{key: value}))
-    assert_names(msg, p, where, "unknown", repr(unknown))
+    assert_names(msg, p, where, "unknown key; allowed here:", repr(allowed))
 
 
 @pytest.mark.parametrize("key, where, value, reason", [
-    ("legs.0.la", "legs[0].la", "0.244", "must be a number, got str"),
-    ("legs.2.base", "legs[2].base", 0.5, "must be [x, y]"),
+    ("legs.0.la", "legs.la (leg 1)", "0.244", "must be a number, got str"),
+    ("legs.2.base", "legs.base (leg 3)", 0.5, "must be a point [x, y] in m"),
     ("limits.singularity_threshold", "limits.singularity_threshold", True, "must be a number"),
     ("nominal.alpha", "nominal.alpha", 0.0932, "must be a list of 3"),
     ("sensing.sample_period", "sensing.sample_period", [0.002], "must be a number"),
@@ -438,15 +438,15 @@ def test_wrong_type_description(tmp_path):
 
 
 @pytest.mark.parametrize("key, where, value, reason", [
-    ("legs.0.la", "legs[0].la", 0.0, "must be > 0"),
-    ("legs.1.lb", "legs[1].lb", -0.244, "must be > 0"),
-    ("nominal.alpha.2", "nominal.alpha[2]", -0.01, "must be > 0"),
-    ("limits.tau_max.0", "limits.tau_max[0]", 0.0, "must be > 0"),
+    ("legs.0.la", "legs.la (leg 1)", 0.0, "must be > 0"),
+    ("legs.1.lb", "legs.lb (leg 2)", -0.244, "must be > 0"),
+    ("nominal.alpha.2", "nominal.alpha (leg 3)", -0.01, "must be > 0"),
+    ("limits.tau_max.0", "limits.tau_max (leg 1)", 0.0, "must be > 0"),
     ("limits.singularity_threshold", "limits.singularity_threshold", 1.0, "must be < 1"),
     ("sensing.sample_period", "sensing.sample_period", math.nan, "must be finite"),
     ("sensing.encoder_counts_per_rev", "sensing.encoder_counts_per_rev", 1000.5, "whole number"),
-    ("gains.na.Gamma.3", "gains.na.Gamma[3]", math.inf, "must be finite"),
-    ("gains.apd.Kp.1", "gains.apd.Kp[1]", -35000.0, "must be > 0"),
+    ("gains.na.Gamma.3", "gains.na.Gamma (entry 4, beta1)", math.inf, "must be finite"),
+    ("gains.apd.Kp.1", "gains.apd.Kp (y)", -35000.0, "must be > 0"),
     ("trajectories.high.v_max", "trajectories.high.v_max", 0.0, "must be > 0"),
     ("plant.payload_leg", "plant.payload_leg", 4, "leg number 1..3"),
     ("model.stribeck_velocity", "model.stribeck_velocity", -1.0, None),
@@ -467,7 +467,7 @@ def test_beta_squared_not_below_alpha_gamma(tmp_path, section):
     """beta^2 >= alpha gamma (a leg's inertia block not positive definite), nominal and plant."""
     # leg 2: beta^2 = 0.03^2 = 9e-4 > alpha gamma = 0.0427 * 0.0111 = 4.7e-4
     p, msg = load_error(tmp_path, mutated(**{f"{section}.beta.1": 0.03}))
-    assert_names(msg, p, f"{section}.beta[1]", "leg 2", "not positive definite", "beta^2")
+    assert_names(msg, p, f"{section}.beta (leg 2)", "leg 2", "not positive definite", "beta^2")
 
 
 @pytest.mark.parametrize("section", ["nominal", "plant"])
@@ -477,7 +477,7 @@ def test_beta_squared_equal_alpha_gamma_is_refused(tmp_path, section):
     p, msg = load_error(tmp_path, mutated(**{f"{section}.alpha.0": 0.25,
                                               f"{section}.gamma.0": 0.0625,
                                               f"{section}.beta.0": 0.125}))
-    assert_names(msg, p, f"{section}.beta[0]", "leg 1", "not positive definite")
+    assert_names(msg, p, f"{section}.beta (leg 1)", "leg 1", "not positive definite")
 
 
 @pytest.mark.parametrize("key", ["nominal.fc.0", "nominal.fv.2", "plant.fv.1", "plant.fs.0",
@@ -485,7 +485,7 @@ def test_beta_squared_equal_alpha_gamma_is_refused(tmp_path, section):
 def test_negative_friction(tmp_path, key):
     p, msg = load_error(tmp_path, mutated(**{key: -0.1}))
     section, name, i = _split(key)
-    assert_names(msg, p, f"{section}.{name}[{i}]", "must be >= 0", "-0.1")
+    assert_names(msg, p, f"{section}.{name} (leg {i + 1})", "must be >= 0", "-0.1")
 
 
 def test_legs_that_cannot_meet(tmp_path):
@@ -544,7 +544,7 @@ def test_empty_file(tmp_path):
 @pytest.mark.parametrize("elbow", ["up", "Left", "", 1])
 def test_bad_elbow(tmp_path, elbow):
     p, msg = load_error(tmp_path, mutated(**{"legs.2.elbow": elbow}))
-    assert_names(msg, p, "legs[2].elbow", "must be one of", "'left'", "'right'")
+    assert_names(msg, p, "legs.elbow (leg 3)", "must be one of", "'left'", "'right'")
 
 
 def test_bad_fk_branch_and_friction(tmp_path):
@@ -572,6 +572,129 @@ def test_gamma_of_the_wrong_length(tmp_path, length):
 def test_stribeck_friction_needs_its_velocity(tmp_path):
     p, msg = load_error(tmp_path, mutated(**{"model.friction": "coulomb_viscous_stribeck"}))
     assert_names(msg, p, "model.stribeck_velocity", "required")
+
+
+# --------------------------------------------------------------------------------------
+# Every problem of a file in one error; legs numbered from 1
+# --------------------------------------------------------------------------------------
+
+FOURTH_LEG = """
+[[legs]]
+base = [0.6, 0.25]      # A4, m (the fourth leg of fourleg.toml)
+la = 0.244
+lb = 0.244
+elbow = "right"
+"""
+#: theta's order for n legs, written out from the paper's notes (alpha1..alphan, beta.., gamma..,
+#: fv.., fc..), not from the loader
+def _theta_order(n):
+    return ", ".join(f"{k}{i}" for k in ("alpha", "beta", "gamma", "fv", "fc")
+                     for i in range(1, n + 1))
+
+
+def test_a_fourth_leg_reports_every_three_entry_array_at_once(tmp_path):
+    """Issue 22 item 7: a fourth [[legs]] table added to the paper's model file (and a [control]
+    table with per-leg arrays) leaves 15 arrays with 3 entries. One read names all of them,
+    each with the length the leg count implies; fixing exactly the named keys makes it load."""
+    control = ('\n[control]\nsplit = "preload"\npreload = [1.0, 1.0, 1.0]\n'
+               'preload_sign = [1, -1, 1]\n')
+    text = SRC.replace("\n# Tables 1-2", FOURTH_LEG + "\n# Tables 1-2", 1) + control
+    assert len(re.findall(r"^\[\[legs\]\]", text, re.M)) == 4
+    p = write(tmp_path, text, "four.toml")
+    with pytest.raises(ModelFileError) as info:
+        read_model_file(p)
+    exc, msg = info.value, str(info.value)
+    per_leg = ([f"nominal.{k}" for k in ("alpha", "beta", "gamma", "fv", "fc")]
+               + ["limits.tau_max"]
+               + [f"plant.{k}" for k in ("alpha", "beta", "gamma", "fv", "fc", "fs")]
+               + ["control.preload", "control.preload_sign"])
+    keys = [pr.key for pr in exc.problems]
+    assert sorted(keys) == sorted(per_leg + ["gains.na.Gamma"]), keys
+    for pr in exc.problems:
+        if pr.key == "gains.na.Gamma":
+            assert pr.reason.startswith("must be a list of 20 numbers, one per parameter of "
+                                        f"theta, in the order of param_names: {_theta_order(4)}, "
+                                        "got 15: "), pr.reason
+        else:
+            assert pr.reason.startswith("must be a list of 4 numbers, one per leg (the file has "
+                                        "4 [[legs]]), got 3: "), pr
+    lines = msg.splitlines()
+    assert lines[0] == f"{p}: 15 problems:", lines[0]
+    assert len(lines) == 16 and all(f"[{k}]" in msg for k in keys), msg
+    # positive control: extend exactly the named arrays, and the file loads
+    doc = tomllib.loads(text)
+    for key in keys:
+        *parents, last = key.split(".")
+        node = doc
+        for k in parents:
+            node = node[k]
+        node[last] = node[last] + node[last][-1:] if last != "Gamma" else [5e-4] * 20
+    spec = read_model_file(write(tmp_path, dump(doc), "four_fixed.toml"))
+    assert spec.n_legs == 4 and ", ".join(spec.param_names) == _theta_order(4)
+
+
+@pytest.mark.parametrize("length", [14, 16])
+def test_gamma_message_gives_the_parameter_order(tmp_path, length):
+    p, msg = load_error(tmp_path, mutated(**{"gains.na.Gamma": [5e-4] * length}))
+    assert_names(msg, p, "gains.na.Gamma", f"must be a list of 15 numbers, one per parameter of "
+                 f"theta, in the order of param_names: {_theta_order(3)}, got {length}")
+
+
+def test_independent_problems_of_several_sections_are_reported_together(tmp_path):
+    """Problems in [[legs]], [sensing], [gains.apd], [plant] and [trajectories]: one error,
+    one line each, also as exc.problems (key, reason), in the file's order."""
+    text = mutated(**{"legs.0.la": 0.0, "sensing.sample_period": -0.002,
+                      "gains.apd.Kp.1": "35000", "plant.fc.2": -0.1,
+                      "trajectories.low.v_max": math.nan, "limits.colour": 1})
+    p = write(tmp_path, text)
+    with pytest.raises(ModelFileError) as info:
+        read_model_file(p)
+    exc = info.value
+    assert [(pr.key, pr.reason) for pr in exc.problems] == [
+        ("legs.la (leg 1)", "must be > 0, got 0.0"),
+        ("limits.colour", "unknown key; allowed here: ['parallel_singularity_threshold', "
+                          "'singularity_threshold', 'tau_max']"),
+        ("sensing.sample_period", "must be > 0, got -0.002"),
+        ("gains.apd.Kp (y)", "must be a number, got str '35000'"),
+        ("plant.fc (leg 3)", "must be >= 0, got -0.1"),
+        ("trajectories.low.v_max", "must be finite, got nan"),
+    ]
+    assert str(exc).splitlines() == [f"{p}: 6 problems:"] + [
+        f"  [{pr.key}] {pr.reason}" for pr in exc.problems]
+    assert exc.path == str(p)
+    import pickle  # the problems survive pickling (errors cross Dask workers)
+    again = pickle.loads(pickle.dumps(exc))
+    assert type(again) is ModelFileError and again.problems == exc.problems
+    assert str(again) == str(exc) and again.path == exc.path
+
+
+def test_a_single_problem_is_one_line(tmp_path):
+    p, msg = load_error(tmp_path, mutated(**{"plant.payload_mass": -1.0}))
+    assert msg == f"{p}: [plant.payload_mass] must be >= 0, got -1.0"
+
+
+@pytest.mark.parametrize("leg", [0, 1, 2])
+@pytest.mark.parametrize("key", ["legs.{i}.la", "nominal.alpha.{i}", "nominal.fc.{i}",
+                                 "limits.tau_max.{i}", "plant.gamma.{i}", "plant.fs.{i}"])
+def test_legs_are_numbered_from_one(tmp_path, key, leg):
+    """Issue 22 item 9: the (i+1)-th leg's bad entry is reported as "leg i+1", never with a
+    0-based index (legs[0], alpha[0])."""
+    dotted = key.format(i=leg)
+    p, msg = load_error(tmp_path, mutated(**{dotted: -1.0}))
+    section, name = (dotted.split(".")[0], dotted.split(".")[2]) if key.startswith("legs") else \
+        dotted.split(".")[:2]
+    assert_names(msg, p, f"{section}.{name} (leg {leg + 1})", "must be > 0" if name != "fc"
+                 and name != "fs" else "must be >= 0")
+    assert not re.search(r"\[\d\]", msg) and f"leg {leg}]" not in msg.replace(
+        f"leg {leg + 1}", ""), msg
+
+
+def test_payload_leg_is_one_based(tmp_path):
+    """[plant] payload_leg counts from 1: 0 is refused, n is the last leg."""
+    p, msg = load_error(tmp_path, mutated(**{"plant.payload_leg": 0}))
+    assert_names(msg, p, "plant.payload_leg", "must be")
+    assert read_model_file(write(tmp_path, mutated(**{"plant.payload_leg": 3}), "ok.toml")
+                           ).plant["payload_leg"] == 3
 
 
 def test_every_shipped_model_file_loads():

@@ -208,7 +208,7 @@ def test_bad_split_settings_are_refused(kwargs, match):
 @pytest.mark.parametrize("control,key", [
     ('split = "fastest"', "control.split"),
     ("preload = [1.0, 1.0]", "control.preload"),
-    ("preload = [1.0, -1.0, 1.0]", r"control.preload\[1\]"),
+    ("preload = [1.0, -1.0, 1.0]", r"control\.preload \(leg 2\)"),   # legs count from 1
     ("preload = [1.0, 1.0, 31.0]", "control.preload"),
     ("preload_sign = [1, 2, 1]", "control.preload_sign"),
     ("mode = 3", "control"),

@@ -60,49 +60,52 @@ def _all_rows(study):
 # --------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("edit, key, reason", [
-    (("[study]", "[study]\ncolour = 1"), r"study\.colour", "unknown key"),
-    (("[uncertainty]", "[uncertainty]\nwind = 1.0"), r"uncertainty\.wind", "unknown key"),
-    (("law = \"apd\"", "law = \"apd\"\nKq = 3"), r"controllers\[0\]\.Kq", "unknown key"),
+    (("[study]", "[study]\ncolour = 1"), "study.colour", "unknown key"),
+    (("[uncertainty]", "[uncertainty]\nwind = 1.0"), "uncertainty.wind", "unknown key"),
+    (("law = \"apd\"", "law = \"apd\"\nKq = 3"), "controllers.Kq (entry 1)", "unknown key"),
     (("[study]", "[studdy]\nx = 1\n[study]"), "studdy", "unknown key"),
-    (("draws = 3", "draws = \"3\""), r"study\.draws", "must be an integer"),
-    (("draws = 3", "draws = 0"), r"study\.draws", "must be >= 1"),
-    (("draws = 3", "draws = -5"), r"study\.draws", "must be >= 1"),
-    (("runs = 1", "runs = 1.5"), r"study\.runs", "must be an integer"),
-    (("seed = 7", "seed = true"), r"study\.seed", "must be an integer"),
-    (("[0.0, 0.5]", "[0.5, 0.5]"), r"uncertainty\.payload_mass\.uniform", "empty or negative range"),
-    (("[0.0, 0.5]", "[0.5, 0.1]"), r"uncertainty\.payload_mass\.uniform", "empty or negative range"),
-    (("uniform = [0.0, 0.5]", "uniform = []"), r"uncertainty\.payload_mass\.uniform", "non-empty"),
-    (("uniform = [0.0, 0.5]", "normal = [0.1, 0.2]"), r"uncertainty\.payload_mass",
+    (("draws = 3", "draws = \"3\""), "study.draws", "must be an integer"),
+    (("draws = 3", "draws = 0"), "study.draws", "must be >= 1"),
+    (("draws = 3", "draws = -5"), "study.draws", "must be >= 1"),
+    (("runs = 1", "runs = 1.5"), "study.runs", "must be an integer"),
+    (("seed = 7", "seed = true"), "study.seed", "must be an integer"),
+    (("[0.0, 0.5]", "[0.5, 0.5]"), "uncertainty.payload_mass.uniform", "empty or negative range"),
+    (("[0.0, 0.5]", "[0.5, 0.1]"), "uncertainty.payload_mass.uniform", "empty or negative range"),
+    (("uniform = [0.0, 0.5]", "uniform = []"), "uncertainty.payload_mass.uniform", "non-empty"),
+    (("uniform = [0.0, 0.5]", "normal = [0.1, 0.2]"), "uncertainty.payload_mass",
      "can draw -1.1, below the allowed >= 0"),
-    (("uniform = [0.0, 0.5]", "uniform = [-0.2, 0.5]"), r"uncertainty\.payload_mass",
+    (("uniform = [0.0, 0.5]", "uniform = [-0.2, 0.5]"), "uncertainty.payload_mass",
      "below the allowed"),
-    (("uniform = [0.0, 0.5]", "gamma = [1, 2]"), r"uncertainty\.payload_mass", "unknown distribution"),
+    (("uniform = [0.0, 0.5]", "gamma = [1, 2]"), "uncertainty.payload_mass", "unknown distribution"),
     (("payload_mass = {uniform = [0.0, 0.5]}", "inertia_error_percent = {uniform = [-100, 5]}"),
-     r"uncertainty\.inertia_error_percent", "below the allowed > -100"),
+     "uncertainty.inertia_error_percent", "below the allowed > -100"),
     (("payload_mass = {uniform = [0.0, 0.5]}", "encoder_counts_per_rev = {uniform = [1, 5]}"),
-     r"uncertainty\.encoder_counts_per_rev", "whole numbers"),
-    (("law = \"apd\"", "law = \"pid\""), r"controllers\[0\]\.law", "must be one of"),
-    (("law = \"apd\"", "law = \"apd\"\nKp = {grid = []}"), r"controllers\[0\]\.Kp\.grid", "non-empty"),
-    (("law = \"apd\"", "law = \"apd\"\nKp = {grid = [1.0, 1.0]}"), r"controllers\[0\]\.Kp\.grid",
+     "uncertainty.encoder_counts_per_rev", "whole numbers"),
+    (("law = \"apd\"", "law = \"pid\""), "controllers.law (entry 1)", "must be one of"),
+    (("law = \"apd\"", "law = \"apd\"\nKp = {grid = []}"), "controllers.Kp.grid (entry 1)", "non-empty"),
+    (("law = \"apd\"", "law = \"apd\"\nKp = {grid = [1.0, 1.0]}"), "controllers.Kp.grid (entry 1)",
      "distinct"),
-    (("law = \"apd\"", "law = \"apd\"\nKp = -5.0"), r"controllers\[0\]\.Kp", "must be > 0"),
+    (("law = \"apd\"", "law = \"apd\"\nKp = -5.0"), "controllers.Kp (entry 1)", "must be > 0"),
     (("law = \"apd\"", "law = \"apd\"\nsplit = {grid = [\"min_norm\"]}"),
-     r"controllers\[0\]\.split", "cannot be a grid"),
+     "controllers.split (entry 1)", "cannot be a grid"),
     (("name = \"apd\"\nlaw", "name = \"apd\"\nlaw = \"apd\"\n[[controllers]]\nname = \"apd\"\nlaw"),
-     r"controllers\[1\]\.name", "used twice"),
-    (("moves = [\"high\"]", "moves = []"), r"study\.moves", "non-empty"),
-    (("moves = [\"high\"]", "moves = [{name = \"l\", start = [0.2, 0.3]}]"), r"study\.moves\[0\]",
-     "missing"),
+     "controllers.name (entry 2)", "used twice"),
+    (("moves = [\"high\"]", "moves = []"), "study.moves", "non-empty"),
+    (("moves = [\"high\"]", "moves = [{name = \"l\", start = [0.2, 0.3]}]"),
+     "study.moves.j_max (entry 1)", "missing"),
     (("runs = 1", "runs = 3\n[payload_change]\nafter_run = 3\npayload_mass = 1.0"),
-     r"payload_change\.after_run", "must be < study.runs"),
+     "payload_change.after_run", "must be < study.runs"),
 ])
 def test_bad_study_files_name_the_key(tmp_path, edit, key, reason):
     text = BASE.replace(*edit, 1)
     assert text != BASE, edit
     p = _write(tmp_path, text)
-    with pytest.raises(StudyFileError, match=rf"^{p}: {key}: .*{reason}") as exc:
+    with pytest.raises(StudyFileError) as exc:
         read_study(p)
+    msg, problems = str(exc.value), exc.value.problems
     assert isinstance(exc.value, ValueError)
+    assert msg.startswith(f"{p}: ") and f"[{key}] " in msg, msg
+    assert any(pr.key == key and reason in pr.reason for pr in problems), problems
 
 
 def test_not_toml_and_missing_file(tmp_path):
@@ -110,7 +113,7 @@ def test_not_toml_and_missing_file(tmp_path):
         read_study(_write(tmp_path, "[study\nname="))
     with pytest.raises(StudyFileError, match="cannot read the study file"):
         read_study(tmp_path / "absent.toml")
-    with pytest.raises(StudyFileError, match=r"study\.model: no model file"):
+    with pytest.raises(StudyFileError, match=r"\[study\.model\] no model file"):
         read_study(_write(tmp_path, BASE.replace(str(MODEL), "nowhere.toml")))
 
 
@@ -119,12 +122,12 @@ def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any
                        'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
     s = read_study(_write(tmp_path, far))
     m = pm2dof.load_model(MODEL)
-    with pytest.raises(StudyFileError, match=r"study\.moves\[1\] \('far'\): trajectory sample "
+    with pytest.raises(StudyFileError, match=r"\[study\.moves \(entry 2, 'far'\)\] trajectory sample "
                        r"\d+ .*(singularity|reach)"):
         check_study(s, m)
     out = tmp_path / "out"
     from pm2dof.studies import run_study
-    with pytest.raises(StudyFileError, match=r"study\.moves\[1\]"):
+    with pytest.raises(StudyFileError, match=r"\[study\.moves \(entry 2, 'far'\)\]"):
         run_study(s, out, progress=False, echo=lambda *a: None)
     assert not out.exists()                     # refused before the folder or a cluster
     # the five-bar: a line across its parallel-singular curve
@@ -133,13 +136,80 @@ def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any
         'moves = ["high"]', 'moves = [{name = "across", start = [0.4366773, 0.19502559], '
         'end = [0.274602, 0.000219374], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
     s = read_study(_write(tmp_path, text, "five.toml"))
-    with pytest.raises(StudyFileError, match=r"study\.moves\[0\] \('across'\): trajectory sample "
+    with pytest.raises(StudyFileError, match=r"\[study\.moves \(entry 1, 'across'\)\] trajectory sample "
                        r"\d+ .*(assembly mode|singular)"):
         check_study(s, pm2dof.load_model(five))
     bad = read_study(_write(tmp_path, BASE.replace('law = "apd"', 'law = "apd"\nsplit = "fair"'),
                             "bad.toml"))
-    with pytest.raises(StudyFileError, match=r"controllers\[0\] \('apd'\): split must be one of"):
+    with pytest.raises(StudyFileError, match=r"\[controllers \(entry 1, 'apd'\)\] split must be one of"):
         check_study(bad, m)
+
+
+def test_every_problem_of_a_study_file_in_one_error(tmp_path):
+    """Independent problems of [study], [uncertainty], [[controllers]] and [payload_change]:
+    one StudyFileError, one line each (entries numbered from 1), also as exc.problems."""
+    text = (BASE.replace("draws = 3", "draws = 0")
+            .replace("[uncertainty]", "[uncertainty]\nwind = 1.0")
+            .replace('law = "apd"', 'law = "apd"\nKv = -1.0\n\n[[controllers]]\nlaw = "pid"')
+            + "\n[payload_change]\nafter_run = 1\n")
+    p = _write(tmp_path, text)
+    with pytest.raises(StudyFileError) as exc:
+        read_study(p)
+    expected = [
+        ("study.draws", "must be >= 1, got 0"),
+        ("uncertainty.wind", "unknown key; allowed here: ['encoder_counts_per_rev', 'fc_scale', "
+                             "'fv_scale', 'inertia_error_percent', 'payload_mass', "
+                             "'stribeck_scale']"),
+        ("controllers.Kv (entry 1)", "must be > 0, got -1.0"),
+        ("controllers.law (entry 2)", "must be one of ['apd', 'na'], got 'pid'"),
+        ("payload_change.payload_mass", "missing (required)"),
+    ]
+    assert [tuple(pr) for pr in exc.value.problems] == expected
+    assert str(exc.value).splitlines() == ([f"{p}: 5 problems:"]
+                                           + [f"  [{k}] {r}" for k, r in expected])
+
+
+@pytest.mark.parametrize("edit, key", [
+    (('law = "apd"', 'law = ["apd"]'), "controllers.law (entry 1)"),
+    (('moves = ["high"]', 'moves = [{name = ["l"], start = [0.2, 0.3], end = [0.25, 0.25], '
+      'v_max = 0.2, a_max = 5.0, j_max = 200.0}]'), "study.moves.name (entry 1)"),
+    (("draws = 3", f"draws = {10 ** 400}"), "study.draws"),
+    ((f'model = "{MODEL}"', "model = 3"), "study.model"),
+])
+def test_wrong_types_are_study_file_errors_not_crashes(tmp_path, edit, key):
+    """Values of the wrong type where a name or a number is expected (a list as the law, as a
+    move's name; an integer too large for a float; a number as the model): StudyFileError, not
+    TypeError or OverflowError."""
+    text = BASE.replace(*edit, 1)
+    assert text != BASE
+    p = _write(tmp_path, text)
+    with pytest.raises(StudyFileError) as exc:
+        read_study(p)
+    assert key in [pr.key for pr in exc.value.problems], exc.value
+
+
+def test_binary_study_file(tmp_path):
+    p = tmp_path / "s.toml"
+    p.write_bytes(b"[study]\nname = \"\xff\xfe\"\n")
+    with pytest.raises(StudyFileError, match=r"not a text \(UTF-8\) file"):
+        read_study(p)
+
+
+def test_check_study_lists_every_refused_variant_and_move_by_its_entry(tmp_path):
+    """The second [[controllers]] entry is entry 2 even when the first expands into a grid of
+    three variants (it was reported as controllers[3], the variant's index); a refused
+    controller and an unreachable move are reported together."""
+    text = BASE.replace('moves = ["high"]', 'moves = ["high", {name = "far", start = [0.24, 0.27], '
+                        'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]').replace(
+        'law = "apd"', 'law = "apd"\nKp = {grid = [30000.0, 35000.0, 40000.0]}\n\n'
+        '[[controllers]]\nname = "na"\nlaw = "na"\nsplit = "fair"')
+    s = read_study(_write(tmp_path, text))
+    assert [v.name for v in s.variants] == ["apd", "apd", "apd", "na"]
+    with pytest.raises(StudyFileError) as exc:
+        check_study(s, pm2dof.load_model(MODEL))
+    keys = [pr.key for pr in exc.value.problems]
+    assert keys == ["controllers (entry 2, 'na')", "study.moves (entry 2, 'far')"], exc.value
+    assert "split must be one of" in exc.value.problems[0].reason
 
 
 # --------------------------------------------------------------------------------------

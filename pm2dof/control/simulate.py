@@ -25,16 +25,22 @@ __all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "plant_trut
 def plant_truth(model, **overrides):
     """The plant's truth as a dict: the model file's ``[plant]`` with the payload booked in.
 
-    The payload m at the tip of leg j's distal link adds m la^2, m la lb, m lb^2 to alpha_j,
-    beta_j, gamma_j (its kinetic energy 1/2 m |tip velocity|^2 in the leg's angles).
-    ``overrides`` replace fields of ``[plant]`` (e.g. ``payload_mass=0``).
+    The payload m at the tip of leg j's distal link (j = ``payload_leg``, counted from 1 as in
+    the paper) adds m la^2, m la lb, m lb^2 to alpha_j, beta_j, gamma_j (its kinetic energy
+    1/2 m |tip velocity|^2 in the leg's angles). ``overrides`` replace fields of ``[plant]``
+    (e.g. ``payload_mass=0``); a ``payload_leg`` outside 1..n raises ValueError.
     """
     p = dict(model.spec.plant)
     unknown = sorted(set(overrides) - set(p))
     if unknown:
         raise TypeError(f"unknown plant field(s) {unknown}; fields are {sorted(p)}")
     p.update(overrides)
-    j = int(p["payload_leg"]) - 1
+    leg_no = p["payload_leg"]
+    if not (isinstance(leg_no, (int, float, np.number)) and not isinstance(leg_no, bool)
+            and leg_no == int(leg_no) and 1 <= leg_no <= model.n_legs):
+        raise ValueError(f"payload_leg must be a leg number 1..{model.n_legs} (legs count from 1, "
+                         f"as in the paper), got {leg_no!r}")
+    j = int(leg_no) - 1
     leg = model.spec.legs[j]
     m = float(p["payload_mass"])
     alpha, beta, gamma = (np.array(p[k], dtype=float) for k in ("alpha", "beta", "gamma"))

@@ -6,6 +6,8 @@
 * :mod:`._cbind` -- the C extension binding CasADi's C API (``dlopen``, no allocation per call);
 * :mod:`.layout` -- flat state/parameter vectors packed by field name (from the manifest);
 * :mod:`.errors` -- the typed errors;
+* :mod:`.validate` -- the checks of input files (model and study files), collecting every
+  problem of a file into one error;
 * :mod:`.build` -- compile generated C into a shared library (used by ``make``).
 
 Imports the standard library and NumPy only: never SymPy, CasADi, matplotlib, Dask or

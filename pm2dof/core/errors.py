@@ -1,10 +1,53 @@
 # Typed errors of pm2dof: each subclasses a builtin and names the value, the place and the limit.
-__all__ = ["ModelFileError", "StaleGeneratedCodeError", "WorkspaceError", "ClosureError",
-           "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning"]
+from typing import NamedTuple
+
+__all__ = ["Problem", "InputFileError", "ModelFileError", "StaleGeneratedCodeError",
+           "WorkspaceError", "ClosureError", "SingularityError", "GainError",
+           "ModelMismatchError", "OutcomeWarning"]
 
 
-class ModelFileError(ValueError):
-    """A model file is unreadable, incomplete or non-physical (names the file, key and reason)."""
+class Problem(NamedTuple):
+    """One problem of an input file.
+
+    ``key`` is the dotted key, with entries of arrays numbered from 1 after it in parentheses
+    (``nominal.alpha (leg 2)``, ``gains.na.Gamma (entry 4, beta1)``), or None when the problem
+    concerns the file as a whole (unreadable, not TOML). ``reason`` says what is wrong: the
+    value, the rule and the limit.
+    """
+    key: object
+    reason: str
+
+
+class InputFileError(ValueError):
+    """A user's input file (a model file or a study file) that cannot be used.
+
+    The message names the file and lists every problem found, one per line; the same problems
+    are in :attr:`problems`, a tuple of :class:`Problem`, in the order of the file's sections.
+    Problems that make further checks meaningless (an unreadable file, not TOML, too few legs,
+    an unknown friction model) stop the checks early, so those files report what was found up
+    to there.
+    """
+
+    def __init__(self, message, problems=None, path=None):
+        super().__init__(message)
+        self.path = None if path is None else str(path)
+        self.problems = (tuple(problems) if problems is not None
+                         else (Problem(None, str(message)),))
+
+    def __reduce__(self):  # keep problems and path across pickling (Dask workers)
+        return type(self), (str(self), self.problems, self.path)
+
+
+class ModelFileError(InputFileError):
+    """A model file is unreadable, incomplete or non-physical.
+
+    Lists every problem of the file (see :class:`InputFileError`), each naming the key and
+    the reason. Legs are numbered from 1, as in the paper: the key ``legs.la (leg 2)`` is
+    ``la`` of the second ``[[legs]]`` table, ``nominal.alpha (leg 2)`` the second entry of
+    ``nominal.alpha`` (alpha_2); entries of per-parameter arrays name the parameter
+    (``gains.na.Gamma (entry 4, beta1)``) and those of task-space pairs the axis
+    (``gains.na.Kd (y)``).
+    """
 
 
 class StaleGeneratedCodeError(RuntimeError):

@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import ModelFileError
+from .validate import RULES, Problems, entry
 
 __all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS"]
 
@@ -101,94 +102,106 @@ class ModelSpec:
         }
 
 
-def _fail(path, key, reason):
-    raise ModelFileError(f"{path}: [{key}] {reason}")
+def _frozen(values):
+    """A read-only float array of ``values``."""
+    out = np.array(values, dtype=float)
+    out.setflags(write=False)
+    return out
 
 
-def _number(path, key, value, *, positive=False, nonnegative=False):
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        _fail(path, key, f"must be a number, got {type(value).__name__} {value!r}")
-    try:
-        value = float(value)
-    except OverflowError:
-        _fail(path, key, f"is too large for a float: {str(value)[:20]}...")
-    if not math.isfinite(value):
-        _fail(path, key, f"must be finite, got {value}")
-    if positive and value <= 0:
-        _fail(path, key, f"must be > 0, got {value}")
-    if nonnegative and value < 0:
-        _fail(path, key, f"must be >= 0, got {value}")
-    return value
+def _size(length, n, param_names):
+    """Labels and message text of an array of ``length``: "n" per leg (legs numbered from 1,
+    as in the paper), "p" per parameter, or 2 (a task-space pair x, y)."""
+    if length == "n":
+        return [f"leg {i + 1}" for i in range(n)], f", one per leg (the file has {n} [[legs]])"
+    if length == "p":
+        return ([f"entry {k + 1}, {name}" for k, name in enumerate(param_names)],
+                f", one per parameter of theta, in the order of param_names: "
+                f"{', '.join(param_names)}")
+    return ["x", "y"], " [x, y]"
 
 
-def _table(path, doc, key, required=True):
-    value = doc.get(key)
-    if value is None:
-        if required:
-            _fail(path, key, "missing section")
-        return {}
-    if not isinstance(value, dict):
-        _fail(path, key, f"must be a table, got {type(value).__name__}")
-    return value
+def _read_model(pr, model):
+    """[model]: name, friction and its constants, fk_branch, rk4_substeps (None where invalid)."""
+    if model is None:
+        return None, None, {}, None, None
+    pr.keys("model", model, _MODEL_KEYS, ("name", "friction"))
+    name = model.get("name")
+    if "name" in model and not (isinstance(name, str) and name.isidentifier() and name.isascii()):
+        name = pr.add("model.name", f"must be an ASCII identifier (it prefixes C symbols), got "
+                                    f"{name!r}")
+    pr.text("model.description", model.get("description", ""))
+    friction = model.get("friction")
+    if "friction" in model:
+        friction = pr.choice("model.friction", friction, {k: k for k in FRICTION_MODELS})
+    constants = {}
+    for key in FRICTION_CONSTANTS.get(friction, ()):
+        if key not in model:
+            pr.add(f"model.{key}", f"required by friction = {friction!r}")
+        else:
+            constants[key] = pr.number(f"model.{key}", model[key], **RULES["pos"])
+    fk_branch = pr.choice("model.fk_branch", model.get("fk_branch", "left"), FK_BRANCHES)
+    substeps = model.get("rk4_substeps", 4)
+    if isinstance(substeps, bool) or not isinstance(substeps, int) or not 1 <= substeps <= 100:
+        substeps = pr.add("model.rk4_substeps", f"must be an integer in [1, 100], got {substeps!r}")
+    return name, friction, constants, fk_branch, substeps
 
 
-def _check_keys(path, where, table, allowed, required):
-    unknown = sorted(set(table) - set(allowed))
-    if unknown:
-        _fail(path, where, f"unknown key(s) {unknown}; allowed: {sorted(allowed)}")
-    missing = sorted(set(required) - set(table))
-    if missing:
-        _fail(path, where, f"missing key(s) {missing}")
-
-
-def _choice(path, key, value, choices):
-    """A string that must be one of ``choices`` (a dict), as its mapped value."""
-    if not isinstance(value, str) or value not in choices:
-        _fail(path, key, f"must be one of {sorted(choices)}, got {value!r}")
-    return choices[value]
-
-
-def _read_leg(path, i, leg):
-    where = f"legs[{i}]"
+def _read_leg(pr, i, leg):
+    """One [[legs]] table (leg i + 1): a Leg, or None."""
+    label = f"leg {i + 1}"
     if not isinstance(leg, dict):
-        _fail(path, where, "each [[legs]] entry must be a table")
-    _check_keys(path, where, leg, _LEG_KEYS, _LEG_KEYS)
-    base = leg["base"]
-    if not isinstance(base, list) or len(base) != 2:
-        _fail(path, f"{where}.base", f"must be [x, y] in m, got {base!r}")
-    base = tuple(_number(path, f"{where}.base", v) for v in base)
-    la = _number(path, f"{where}.la", leg["la"], positive=True)
-    lb = _number(path, f"{where}.lb", leg["lb"], positive=True)
-    return Leg(base=base, la=la, lb=lb, elbow=_choice(path, f"{where}.elbow", leg["elbow"], ELBOWS))
+        return pr.add(entry("legs", label), f"each [[legs]] entry must be a table, got "
+                                            f"{type(leg).__name__}")
+    ok = pr.keys("legs", leg, _LEG_KEYS, _LEG_KEYS, label=label)
+    base = pr.point(entry("legs.base", label), leg["base"]) if "base" in leg else None
+    la, lb = (pr.number(entry(f"legs.{k}", label), leg[k], **RULES["pos"]) if k in leg else None
+              for k in ("la", "lb"))
+    elbow = pr.choice(entry("legs.elbow", label), leg["elbow"], ELBOWS) if "elbow" in leg else None
+    if not ok or None in (base, la, lb, elbow):
+        return None
+    return Leg(base=base, la=la, lb=lb, elbow=elbow)
 
 
-def _read_nominal(path, nominal, n, friction):
-    names = INERTIAL + FRICTION_MODELS[friction]
-    _check_keys(path, "nominal", nominal, names, names)
-    values = {}
-    for key in names:
-        vec = nominal[key]
-        if not isinstance(vec, list) or len(vec) != n:
-            _fail(path, f"nominal.{key}", f"must be a list of {n} numbers (one per leg), got {vec!r}")
-        values[key] = [_number(path, f"nominal.{key}[{i}]", v, positive=key in INERTIAL,
-                               nonnegative=key not in INERTIAL) for i, v in enumerate(vec)]
-    for i in range(n):  # M_i positive definite: alpha, gamma > 0 and beta^2 < alpha gamma
-        a, b, g = values["alpha"][i], values["beta"][i], values["gamma"][i]
+def _check_inertia(pr, section, values, n):
+    """M_i positive definite: beta_i^2 < alpha_i gamma_i (alpha, gamma > 0 are checked apart)."""
+    if any(values.get(k) is None for k in INERTIAL):
+        return
+    for i in range(n):
+        a, b, g = (float(values[k][i]) for k in INERTIAL)
         if b * b >= a * g:
-            _fail(path, f"nominal.beta[{i}]",
-                  f"leg {i + 1} inertia is not positive definite: beta^2 = {b * b:.6g} >= "
-                  f"alpha*gamma = {a * g:.6g}")
+            pr.add(entry(f"{section}.beta", f"leg {i + 1}"),
+                   f"leg {i + 1} inertia is not positive definite: beta^2 = {b * b:.6g} >= "
+                   f"alpha*gamma = {a * g:.6g}")
+
+
+def _read_nominal(pr, nominal, n, friction):
+    """[nominal]: theta's names and values (None when invalid)."""
+    names = INERTIAL + FRICTION_MODELS[friction]
     param_names = tuple(f"{key}{i + 1}" for key in names for i in range(n))
-    theta = np.array([values[key][i] for key in names for i in range(n)], dtype=float)
-    theta.setflags(write=False)
-    return param_names, theta
+    if nominal is None:
+        return param_names, None
+    pr.keys("nominal", nominal, names, names)
+    labels, meaning = _size("n", n, param_names)
+    values = {key: pr.vector(f"nominal.{key}", nominal[key], labels, meaning=meaning,
+                             **RULES["pos" if key in INERTIAL else "nonneg"])
+              for key in names if key in nominal}
+    _check_inertia(pr, "nominal", values, n)
+    if any(values.get(key) is None for key in names):
+        return param_names, None
+    return param_names, _frozen([values[key][i] for key in names for i in range(n)])
 
 
-# run-time sections: key -> (length: None for a scalar, "n" per leg, "p" per parameter, or int;
-#                             constraint: "pos" > 0, "nonneg" >= 0, "any")
+# run-time sections: key -> (length: None for a scalar, "n" per leg, "p" per parameter, or 2
+#                             for a task-space pair; rule: a validate.RULES key;
+#                             default: a third entry makes the key optional, None: the
+#                             caller fills it in)
 _SCHEMA = {
+    "limits": {"singularity_threshold": (None, "pos"), "tau_max": ("n", "pos"),
+               "parallel_singularity_threshold": (None, "pos", DEFAULT_PARALLEL_THRESHOLD)},
     "sensing": {"sample_period": (None, "pos"), "encoder_counts_per_rev": (None, "nonneg"),
-                "velocity_filter_hz": (None, "nonneg")},
+                "velocity_filter_hz": (None, "nonneg"),
+                "closure_tolerance": (None, "pos", None)},   # default: default_closure_tolerance
     "gains.na": {"Kd": (2, "pos"), "Q": (2, "pos"), "Gamma": ("p", "nonneg")},
     "gains.apd": {"Kp": (2, "pos"), "Kv": (2, "pos")},
     "plant": {"alpha": ("n", "pos"), "beta": ("n", "any"), "gamma": ("n", "pos"),
@@ -200,24 +213,36 @@ _SCHEMA = {
 }
 
 
-def _read_section(path, where, table, schema, n, p):
-    if not isinstance(table, dict):
-        _fail(path, where, f"must be a table, got {type(table).__name__}")
-    _check_keys(path, where, table, schema, schema)
+def _read_section(pr, where, table, schema, n, param_names):
+    """A table of numbers and arrays by ``schema``: {key: float or read-only array}, holding
+    only the valid entries (and the defaults of absent optional ones); None for no table."""
+    if table is None:
+        return None
+    pr.keys(where, table, schema, {k for k, spec in schema.items() if len(spec) == 2})
     out = {}
-    for key, (length, rule) in schema.items():
-        kw = {"positive": rule == "pos", "nonnegative": rule == "nonneg"}
-        value = table[key]
-        if length is None:
-            out[key] = _number(path, f"{where}.{key}", value, **kw)
+    for key, (length, rule, *default) in schema.items():
+        if key not in table:
+            if default and default[0] is not None:
+                out[key] = default[0]
             continue
-        size = {"n": n, "p": p}.get(length, length)
-        if not isinstance(value, list) or len(value) != size:
-            _fail(path, f"{where}.{key}", f"must be a list of {size} numbers, got {value!r}")
-        out[key] = np.array([_number(path, f"{where}.{key}[{i}]", v, **kw)
-                             for i, v in enumerate(value)])
-        out[key].setflags(write=False)
+        if length is None:
+            value = pr.number(f"{where}.{key}", table[key], **RULES[rule])
+        else:
+            labels, meaning = _size(length, n, param_names)
+            value = pr.vector(f"{where}.{key}", table[key], labels, meaning=meaning, **RULES[rule])
+            value = None if value is None else _frozen(value)
+        if value is not None:
+            out[key] = value
     return out
+
+
+def _read_limits(pr, doc, n, param_names):
+    limits = _read_section(pr, "limits", pr.table("limits", doc.get("limits")),
+                           _SCHEMA["limits"], n, param_names)
+    for key in ("singularity_threshold", "parallel_singularity_threshold"):
+        if limits is not None and limits.get(key, 0) >= 1:  # both measures lie in [0, 1]
+            pr.add(f"limits.{key}", f"bounds a measure in [0, 1], must be < 1, got {limits[key]}")
+    return limits
 
 
 def default_closure_tolerance(legs, encoder_counts_per_rev):
@@ -231,72 +256,85 @@ def default_closure_tolerance(legs, encoder_counts_per_rev):
     return max(CLOSURE_FLOOR, 5 * max(leg.la for leg in legs) * step)
 
 
-def _read_runtime(path, doc, n, p, legs):
-    """Validate the run-time sections: sensing, gains, plant truth, trajectories."""
-    sensing_raw = _table(path, doc, "sensing")
-    sensing_raw = dict(sensing_raw) if isinstance(sensing_raw, dict) else sensing_raw
-    closure = (sensing_raw.pop("closure_tolerance", None) if isinstance(sensing_raw, dict)
-               else None)
-    sensing = _read_section(path, "sensing", sensing_raw, _SCHEMA["sensing"], n, p)
-    if sensing["encoder_counts_per_rev"] != int(sensing["encoder_counts_per_rev"]):
-        _fail(path, "sensing.encoder_counts_per_rev", "must be a whole number (0: no quantisation)")
-    sensing["closure_tolerance"] = (
-        default_closure_tolerance(legs, sensing["encoder_counts_per_rev"]) if closure is None
-        else _number(path, "sensing.closure_tolerance", closure, positive=True))
-    gains_raw = _table(path, doc, "gains")
-    _check_keys(path, "gains", gains_raw, {"na", "apd"}, {"na", "apd"})
-    gains = {law: _read_section(path, f"gains.{law}", gains_raw[law], _SCHEMA[f"gains.{law}"], n, p)
-             for law in ("na", "apd")}
-    plant = _read_section(path, "plant", _table(path, doc, "plant"), _SCHEMA["plant"], n, p)
-    leg = plant["payload_leg"]
-    if leg != int(leg) or not 1 <= leg <= n:
-        _fail(path, "plant.payload_leg", f"must be a leg number 1..{n}, got {leg}")
-    for i in range(n):
-        a, b, g = plant["alpha"][i], plant["beta"][i], plant["gamma"][i]
-        if b * b >= a * g:
-            _fail(path, f"plant.beta[{i}]", f"leg {i + 1} inertia is not positive definite: "
-                                            f"beta^2 = {b * b:.6g} >= alpha*gamma = {a * g:.6g}")
-    trajs_raw = _table(path, doc, "trajectories")
-    if not trajs_raw:
-        _fail(path, "trajectories", "needs at least one [trajectories.<name>] table")
-    trajs = {name: _read_section(path, f"trajectories.{name}", t, _SCHEMA["trajectory"], n, p)
-             for name, t in trajs_raw.items()}
+def _read_runtime(pr, doc, n, param_names, legs):
+    """The run-time sections [sensing], [gains.*], [plant]."""
+    sensing_raw = pr.table("sensing", doc.get("sensing"))
+    sensing = _read_section(pr, "sensing", sensing_raw, _SCHEMA["sensing"], n, param_names)
+    counts = (sensing or {}).get("encoder_counts_per_rev")
+    if counts is not None and counts != int(counts):
+        counts = pr.add("sensing.encoder_counts_per_rev", f"must be a whole number (0: no "
+                                                          f"quantisation), got {counts}")
+    if (sensing is not None and "closure_tolerance" not in sensing_raw and counts is not None
+            and None not in legs):
+        sensing["closure_tolerance"] = default_closure_tolerance(legs, counts)
+    gains_raw = pr.table("gains", doc.get("gains"))
+    gains = {}
+    if gains_raw is not None:
+        pr.keys("gains", gains_raw, ("na", "apd"), ("na", "apd"))
+        for law in ("na", "apd"):
+            gains[law] = _read_section(
+                pr, f"gains.{law}", pr.table(f"gains.{law}", gains_raw.get(law), required=False),
+                _SCHEMA[f"gains.{law}"], n, param_names)
+    plant = _read_section(pr, "plant", pr.table("plant", doc.get("plant")), _SCHEMA["plant"], n,
+                          param_names)
+    leg = (plant or {}).get("payload_leg")
+    if leg is not None and (leg != int(leg) or not 1 <= leg <= n):
+        pr.add("plant.payload_leg", f"must be a leg number 1..{n} (1-based), got {leg}")
+    if plant is not None:
+        _check_inertia(pr, "plant", plant, n)
+    return sensing, gains, plant
+
+
+def _read_trajectories(pr, doc, n, param_names, legs):
+    """[trajectories.<name>]: at least one move, whose end points every leg reaches."""
+    raw = pr.table("trajectories", doc.get("trajectories"))
+    if raw is None:
+        return None
+    if not raw:
+        pr.add("trajectories", "needs at least one [trajectories.<name>] table")
+    trajs = {name: _read_section(pr, f"trajectories.{name}", pr.table(f"trajectories.{name}", t),
+                                 _SCHEMA["trajectory"], n, param_names)
+             for name, t in raw.items()}
     for name, t in trajs.items():  # the legs must meet: every end point within every leg's reach
         for end in ("start", "end"):
+            if t is None or end not in t or None in legs:
+                continue
             for i, lg in enumerate(legs):
                 dist = float(np.hypot(*(t[end] - np.asarray(lg.base))))
                 lo, hi = abs(lg.la - lg.lb), lg.la + lg.lb
                 if not lo <= dist <= hi:
-                    _fail(path, f"trajectories.{name}.{end}",
-                          f"the legs cannot meet at {t[end].tolist()}: leg {i + 1} is {dist:.4g} m "
-                          f"from its base, its reach is [{lo:.4g}, {hi:.4g}] m")
-        if np.array_equal(t["start"], t["end"]):
-            _fail(path, f"trajectories.{name}", "start and end are the same point")
-    return sensing, gains, plant, trajs
+                    pr.add(f"trajectories.{name}.{end}",
+                           f"the legs cannot meet at {t[end].tolist()}: leg {i + 1} is "
+                           f"{dist:.4g} m from its base, its reach is [{lo:.4g}, {hi:.4g}] m")
+        if t is not None and "start" in t and "end" in t and np.array_equal(t["start"], t["end"]):
+            pr.add(f"trajectories.{name}", "start and end are the same point")
+    return trajs
 
 
-def _read_control(path, doc, n, tau_max):
+def _read_control(pr, doc, n, tau_max):
     """[control] (optional): the torque split and the preload split's signs and levels."""
-    raw = doc.get("control", {})
-    if not isinstance(raw, dict):
-        _fail(path, "control", f"must be a table, got {type(raw).__name__}")
-    _check_keys(path, "control", raw, {"split", "preload", "preload_sign"}, set())
-    split = raw.get("split", "min_norm")
-    _choice(path, "control.split", split, {k: k for k in SPLITS})
-    out = {"split": split}
-    for key, default in (("preload", [0.0] * n), ("preload_sign", [1] * n)):
-        value = raw.get(key, default)
-        if not isinstance(value, list) or len(value) != n:
-            _fail(path, f"control.{key}", f"must be a list of {n} numbers, got {value!r}")
-        arr = np.array([_number(path, f"control.{key}[{i}]", v, nonnegative=key == "preload")
-                        for i, v in enumerate(value)])
-        arr.setflags(write=False)
-        out[key] = arr
-    if not np.all(np.isin(out["preload_sign"], (1.0, -1.0))):
-        _fail(path, "control.preload_sign", f"each entry must be +1 or -1, got {raw['preload_sign']}")
-    if np.any(out["preload"] >= tau_max):
-        _fail(path, "control.preload", f"must stay below limits.tau_max {tau_max.tolist()}, got "
-                                       f"{out['preload'].tolist()}")
+    raw = pr.table("control", doc.get("control"), required=False)
+    if raw is None:
+        if "control" in doc:  # not a table: reported
+            return None
+        raw = {}
+    pr.keys("control", raw, ("split", "preload", "preload_sign"))
+    out = {"split": pr.choice("control.split", raw.get("split", "min_norm"),
+                              {k: k for k in SPLITS})}
+    labels, meaning = _size("n", n, ())
+    for key, fill, rule in (("preload", 0.0, "nonneg"), ("preload_sign", 1, "any")):
+        value = pr.vector(f"control.{key}", raw.get(key, [fill] * n), labels, meaning=meaning,
+                          **RULES[rule])
+        out[key] = None if value is None else _frozen(value)
+    sign, preload = out["preload_sign"], out["preload"]
+    for i in range(n):
+        if sign is not None and sign[i] not in (1.0, -1.0):
+            pr.add(entry("control.preload_sign", f"leg {i + 1}"),
+                   f"must be +1 or -1, got {sign[i]:g}")
+        if preload is not None and tau_max is not None and preload[i] >= tau_max[i]:
+            pr.add(entry("control.preload", f"leg {i + 1}"),
+                   f"must stay below limits.tau_max (leg {i + 1}) = {tau_max[i]:g} N m, got "
+                   f"{preload[i]:g}")
     return out
 
 
@@ -315,76 +353,58 @@ def read_model_file(path):
     Raises
     ------
     ModelFileError
-        Naming the file, the key and the reason, for unreadable content, missing or unknown
-        keys, wrong types and non-physical values.
+        Listing every problem of the file at once (also as ``exc.problems``), each naming the
+        key and the reason: missing or unknown keys, wrong types, arrays whose length does
+        not match the number of ``[[legs]]`` or of parameters (the message gives the length
+        and, for per-parameter arrays, the order ``param_names``), non-physical values. Legs
+        are numbered from 1 (``nominal.alpha (leg 2)``). Unreadable or non-TOML content, fewer
+        than two legs and an unknown friction model stop the checks early.
     """
     path = Path(path)
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise ModelFileError(f"{path}: cannot read model file: {exc.strerror or exc}") from None
-    nul = raw.find(b"\x00")
-    if nul >= 0:
-        raise ModelFileError(f"{path}: binary content (NUL byte at offset {nul}), "
-                             f"not a TOML model file")
-    try:
-        doc = tomllib.loads(raw.decode("utf-8"))
-    except UnicodeDecodeError as exc:
-        raise ModelFileError(f"{path}: not a text (UTF-8) file: {exc.reason} at byte {exc.start}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ModelFileError(f"{path}: not valid TOML: {exc}") from None
-    unknown = sorted(set(doc) - _TOP_KEYS)
-    if unknown:
-        _fail(path, "<top>", f"unknown section(s) {unknown}; allowed: {sorted(_TOP_KEYS)}")
-    model = _table(path, doc, "model")
-    _check_keys(path, "model", model, _MODEL_KEYS, {"name", "friction"})
-    name = model["name"]
-    if not isinstance(name, str) or not name.isidentifier() or not name.isascii():
-        _fail(path, "model.name", f"must be an ASCII identifier (it prefixes C symbols), got {name!r}")
-    if not isinstance(model.get("description", ""), str):
-        _fail(path, "model.description", f"must be a string, got {type(model['description']).__name__}")
-    friction = model["friction"]
-    _choice(path, "model.friction", friction, {k: k for k in FRICTION_MODELS})
-    constants = {}
-    for key in FRICTION_CONSTANTS[friction]:
-        if key not in model:
-            _fail(path, f"model.{key}", f"required by friction = {friction!r}")
-        constants[key] = _number(path, f"model.{key}", model[key], positive=True)
+    pr = Problems(path, ModelFileError)
+    raw, doc = _read_toml(pr, path)
+    pr.keys("", doc, _TOP_KEYS)
+    model = pr.table("model", doc.get("model"))
+    name, friction, constants, fk_branch, substeps = _read_model(pr, model)
     legs_raw = doc.get("legs")
     if not isinstance(legs_raw, list) or len(legs_raw) < 2:
-        _fail(path, "legs", "needs at least two [[legs]] tables (a planar 2-DOF mechanism)")
-    legs = tuple(_read_leg(path, i, leg) for i, leg in enumerate(legs_raw))
-    fk_branch = model.get("fk_branch", "left")
-    _choice(path, "model.fk_branch", fk_branch, FK_BRANCHES)
-    if len(legs) == 2 and "fk_branch" not in model:
-        _fail(path, "model.fk_branch", "a two-leg mechanism must choose its forward-kinematics "
-                                       "branch ('left' or 'right' of the line B1 -> B2)")
-    substeps = model.get("rk4_substeps", 4)
-    if isinstance(substeps, bool) or not isinstance(substeps, int) or not 1 <= substeps <= 100:
-        _fail(path, "model.rk4_substeps", f"must be an integer in [1, 100], got {substeps!r}")
-    param_names, theta = _read_nominal(path, _table(path, doc, "nominal"), len(legs), friction)
-    limits_raw = _table(path, doc, "limits")
-    limits_raw = dict(limits_raw) if isinstance(limits_raw, dict) else limits_raw
-    parallel = (limits_raw.pop("parallel_singularity_threshold", DEFAULT_PARALLEL_THRESHOLD)
-                if isinstance(limits_raw, dict) else None)
-    limits = _read_section(path, "limits", limits_raw,
-                           {"singularity_threshold": (None, "pos"), "tau_max": ("n", "pos")},
-                           len(legs), len(param_names))
-    limits["parallel_singularity_threshold"] = _number(
-        path, "limits.parallel_singularity_threshold", parallel, positive=True)
-    for key in ("singularity_threshold", "parallel_singularity_threshold"):
-        if limits[key] >= 1:  # both measures lie in [0, 1]
-            _fail(path, f"limits.{key}", f"bounds a measure in [0, 1], must be < 1, got "
-                                         f"{limits[key]}")
-    sensing, gains, plant, trajs = _read_runtime(path, doc, len(legs), len(param_names), legs)
-    control = _read_control(path, doc, len(legs), limits["tau_max"])
+        pr.stop("legs", "needs at least two [[legs]] tables (a planar 2-DOF mechanism)")
+    n = len(legs_raw)
+    legs = tuple(_read_leg(pr, i, leg) for i, leg in enumerate(legs_raw))
+    if n == 2 and model is not None and "fk_branch" not in model:
+        pr.add("model.fk_branch", "a two-leg mechanism must choose its forward-kinematics branch "
+                                  "('left' or 'right' of the line B1 -> B2)")
+    if friction is None:  # theta's names and size depend on it
+        pr.raise_if_any()
+    param_names, theta = _read_nominal(pr, pr.table("nominal", doc.get("nominal")), n, friction)
+    limits = _read_limits(pr, doc, n, param_names)
+    sensing, gains, plant = _read_runtime(pr, doc, n, param_names, legs)
+    trajs = _read_trajectories(pr, doc, n, param_names, legs)
+    control = _read_control(pr, doc, n, (limits or {}).get("tau_max"))
+    pr.raise_if_any()
     spec = ModelSpec(
         path=str(path), name=name, description=str(model.get("description", "")),
-        friction=friction, friction_constants=constants, fk_branch=FK_BRANCHES[fk_branch], rk4_substeps=substeps,
-        legs=legs, param_names=param_names, theta_nominal=theta,
+        friction=friction, friction_constants=constants, fk_branch=fk_branch,
+        rk4_substeps=substeps, legs=legs, param_names=param_names, theta_nominal=theta,
         limits=limits, sensing=sensing, gains=gains, plant=plant, trajectories=trajs,
-        control=control,
-        file_sha256=hashlib.sha256(raw).hexdigest())
+        control=control, file_sha256=hashlib.sha256(raw).hexdigest())
     formulation = json.dumps(spec.formulation(), sort_keys=True, separators=(",", ":"))
     object.__setattr__(spec, "formulation_sha256", hashlib.sha256(formulation.encode()).hexdigest())
     return spec
+
+
+def _read_toml(pr, path):
+    """The file's bytes and its TOML document; unreadable or undecodable content stops here."""
+    try:
+        raw = path.read_bytes()
+    except OSError as exc:
+        pr.stop(None, f"cannot read model file: {exc.strerror or exc}")
+    nul = raw.find(b"\x00")
+    if nul >= 0:
+        pr.stop(None, f"binary content (NUL byte at offset {nul}), not a TOML model file")
+    try:
+        return raw, tomllib.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError as exc:
+        pr.stop(None, f"not a text (UTF-8) file: {exc.reason} at byte {exc.start}")
+    except tomllib.TOMLDecodeError as exc:
+        pr.stop(None, f"not valid TOML: {exc}")

@@ -185,21 +185,24 @@ def _metrics(out, rows, xd, xe, tau, status, n_move, n_ok):
 def check_study(study, model):
     """Everything that needs the model, before any rollout: each controller variant is accepted
     by its controller, each move is reachable and clear of both singularity kinds. Raises
-    :class:`StudyFileError` naming the file and the key."""
+    :class:`StudyFileError` listing every refused variant and move (``[[controllers]]`` and
+    ``study.moves`` entries numbered from 1)."""
     from ..core.errors import SingularityError, WorkspaceError
+    from ..core.validate import Problems, entry
     from ..control.trajectory import TrajectoryError
     from .spec import StudyFileError
-    ctrls = []
-    for c, v in enumerate(study.variants):
+    pr = Problems(study.path, StudyFileError)
+    entries = list(dict.fromkeys(v.name for v in study.variants))   # one name per [[controllers]]
+    for v in study.variants:
         try:
-            ctrls.append(make_controller(model, v))
+            make_controller(model, v)
         except (ValueError, TypeError) as exc:
-            i = [w.name for w in study.variants].index(v.name)
-            point = f" at grid point {dict(v.grid)}" if v.grid else ""
-            raise StudyFileError(f"{study.path}: controllers[{i}] ({v.name!r}){point}: "
-                                 f"{exc}") from None
+            point = f"at grid point {dict(v.grid)}: " if v.grid else ""
+            pr.add(entry("controllers", f"entry {entries.index(v.name) + 1}, {v.name!r}"),
+                   f"{point}{exc}")
     for i, mv in enumerate(study.moves):
         try:
-            check_trajectory(model, make_trajectory(model, mv, ctrls[0].sample_period))
+            check_trajectory(model, make_trajectory(model, mv, model.spec.sensing["sample_period"]))
         except (WorkspaceError, SingularityError, TrajectoryError) as exc:
-            raise StudyFileError(f"{study.path}: study.moves[{i}] ({mv[0]!r}): {exc}") from None
+            pr.add(entry("study.moves", f"entry {i + 1}, {mv[0]!r}"), str(exc))
+    pr.raise_if_any()

@@ -18,20 +18,25 @@ controller and move, and the draws of one controller and move run as one batch i
 import hashlib
 import itertools
 import json
-import math
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..core.errors import ModelFileError
+from ..core.errors import InputFileError, ModelFileError
 from ..core.paths import resolve_model
+from ..core.validate import Problems, entry
 
 __all__ = ["StudyFileError", "Study", "Variant", "Distribution", "read_study", "UNCERTAINTY",
            "LAWS"]
 
 
-class StudyFileError(ValueError):
-    """A study file that cannot be run: names the file, the key and the reason."""
+class StudyFileError(InputFileError):
+    """A study file that cannot be run.
+
+    Lists every problem of the file (also as ``exc.problems``), each naming the key and the
+    reason. Entries of ``[[controllers]]`` and of ``study.moves`` are numbered from 1:
+    ``controllers.Kp (entry 2)`` is ``Kp`` of the second ``[[controllers]]`` table.
+    """
 
 
 #: uncertainty key -> (meaning, lowest allowed value, whether the lowest value is allowed)
@@ -55,26 +60,6 @@ _STUDY_KEYS = {"name", "description", "model", "moves", "seed", "draws", "runs",
 _QUICK_KEYS = {"moves", "draws", "runs", "chunk", "grid_points"}
 _TOP_KEYS = {"study", "quick", "controllers", "uncertainty", "payload_change"}
 _MOVE_KEYS = {"name", "start", "end", "v_max", "a_max", "j_max"}
-
-
-def _fail(path, key, reason):
-    raise StudyFileError(f"{path}: {key}: {reason}")
-
-
-def _number(path, key, v, *, integer=False, low=None, low_ok=True):
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or (integer and not isinstance(v, int)):
-        _fail(path, key, f"must be {'an integer' if integer else 'a number'}, got {v!r}")
-    if not math.isfinite(v):
-        _fail(path, key, f"must be finite, got {v!r}")
-    if low is not None and (v < low or (v == low and not low_ok)):
-        _fail(path, key, f"must be {'>=' if low_ok else '>'} {low:g}, got {v!r}")
-    return v
-
-
-def _unknown(path, where, table, allowed):
-    extra = sorted(set(table) - set(allowed))
-    if extra:
-        _fail(path, f"{where}{extra[0]}", f"unknown key; allowed here: {sorted(allowed)}")
 
 
 @dataclass(frozen=True)
@@ -102,32 +87,38 @@ class Distribution:
         return min(self.args), max(self.args)
 
 
-def _distribution(path, key, v, integer=False):
+def _distribution(pr, key, v, integer=False):
+    """A Distribution from ``{kind = args}`` or a bare value; None after a problem."""
     if not isinstance(v, dict):
         v = {"value": v}
     if len(v) != 1:
-        _fail(path, key, f"give exactly one of value / uniform / normal / choice, got {sorted(v)}")
+        return pr.add(key, f"give exactly one of value / uniform / normal / choice, got "
+                           f"{sorted(v)}")
     (kind, a), = v.items()
     if kind == "value":
-        return Distribution("value", (_number(path, f"{key}.value", a, integer=integer),))
+        return None if pr.number(f"{key}.value", a, integer=integer) is None else \
+            Distribution("value", (a,))
     if kind not in ("uniform", "normal", "choice"):
-        _fail(path, key, f"unknown distribution {kind!r}; use value, uniform, normal or choice")
+        return pr.add(key, f"unknown distribution {kind!r}; use value, uniform, normal or choice")
     if integer and kind != "choice":
-        _fail(path, key, "takes whole numbers: use value or choice")
+        return pr.add(key, "takes whole numbers: use value or choice")
     if not isinstance(a, list) or not a:
-        _fail(path, f"{key}.{kind}", f"must be a non-empty list, got {a!r}")
-    a = tuple(_number(path, f"{key}.{kind}", x, integer=integer) for x in a)
+        return pr.add(f"{key}.{kind}", f"must be a non-empty list, got {a!r}")
+    if None in [pr.number(entry(f"{key}.{kind}", f"entry {i + 1}"), x, integer=integer)
+                for i, x in enumerate(a)]:
+        return None
+    a = tuple(a)
     if kind == "uniform":
         if len(a) != 2:
-            _fail(path, f"{key}.uniform", f"must be [lo, hi], got {list(a)}")
+            return pr.add(f"{key}.uniform", f"must be [lo, hi], got {list(a)}")
         if not a[1] > a[0]:
-            _fail(path, f"{key}.uniform", f"empty or negative range [{a[0]}, {a[1]}]: need hi > "
-                  f"lo (a single value is {{value = {a[0]}}})")
+            return pr.add(f"{key}.uniform", f"empty or negative range [{a[0]}, {a[1]}]: need hi > "
+                          f"lo (a single value is {{value = {a[0]}}})")
     if kind == "normal":
         if len(a) != 2:
-            _fail(path, f"{key}.normal", f"must be [mean, sd], got {list(a)}")
+            return pr.add(f"{key}.normal", f"must be [mean, sd], got {list(a)}")
         if not a[1] > 0:
-            _fail(path, f"{key}.normal", f"sd must be > 0, got {a[1]}")
+            return pr.add(f"{key}.normal", f"sd must be > 0, got {a[1]}")
     return Distribution(kind, a)
 
 
@@ -143,96 +134,103 @@ class Variant:
     grid: tuple
 
 
-def _controller_value(path, key, name, v):
+def _controller_value(pr, key, name, v):
+    """One controller key's value (gains as floats or tuples); None after a problem."""
     if name in ("Kp", "Kv", "Kd", "Q", "tau_max"):
-        vals = v if isinstance(v, list) else [v]
-        for x in vals:
-            _number(path, key, x, low=0.0, low_ok=False)
-        return float(v) if not isinstance(v, list) else tuple(float(x) for x in v)
+        vals = [pr.number(key, x, low=0.0, low_ok=False)
+                for x in (v if isinstance(v, list) else [v])]
+        return None if None in vals else (tuple(vals) if isinstance(v, list) else vals[0])
     if name in ("Gamma_scale", "velocity_filter_hz"):
-        return float(_number(path, key, v, low=0.0))
+        return pr.number(key, v, low=0.0)
     if name == "project":
-        if not isinstance(v, bool):
-            _fail(path, key, f"must be true or false, got {v!r}")
-        return v
-    if not isinstance(v, str):   # split
-        _fail(path, key, f"must be a string, got {v!r}")
-    return v
+        return pr.boolean(key, v)
+    return pr.text(key, v)   # split
 
 
-def _variants(path, entries, grid_points):
+def _grid(pr, name, label, v, grid_points):
+    """The values of ``{grid = [...]}`` of controller key ``name`` in entry ``label`` (its ends
+    and middle under --quick); None after a problem."""
+    key, gkey = entry(f"controllers.{name}", label), entry(f"controllers.{name}.grid", label)
+    if set(v) != {"grid"}:
+        return pr.add(key, f"a table here must be {{grid = [...]}}, got {sorted(v)}")
+    if name not in GRID_KEYS:
+        return pr.add(key, f"cannot be a grid; grids: {list(GRID_KEYS)}")
+    g = v["grid"]
+    if not isinstance(g, list) or not g:
+        return pr.add(gkey, "must be a non-empty list of numbers")
+    vals = [_controller_value(pr, gkey, name, x) for x in g]
+    if None in vals:
+        return None
+    if any(isinstance(x, tuple) for x in vals) or len(set(vals)) != len(vals):
+        return pr.add(gkey, f"must hold distinct scalars, got {g}")
+    if grid_points:   # --quick: the grid's ends and middle
+        vals = sorted({vals[0], vals[len(vals) // 2], vals[-1]}, key=vals.index)[:grid_points]
+    return vals
+
+
+def _variants(pr, entries, grid_points):
+    """Every [[controllers]] entry at every point of its grid."""
     if not isinstance(entries, list) or not entries:
-        _fail(path, "controllers", "need at least one [[controllers]] entry")
+        return pr.add("controllers", "need at least one [[controllers]] entry")
     out, names = [], set()
     for i, e in enumerate(entries):
-        where = f"controllers[{i}]"
+        label = f"entry {i + 1}"
         if not isinstance(e, dict):
-            _fail(path, where, "must be a table")
-        law = e.get("law")
-        if law not in LAWS:
-            _fail(path, f"{where}.law", f"must be one of {sorted(LAWS)}, got {law!r}")
+            pr.add(entry("controllers", label), f"must be a table, got {type(e).__name__}")
+            continue
+        law = pr.choice(entry("controllers.law", label), e.get("law"), {k: k for k in LAWS})
+        if law is None:
+            continue
         name = e.get("name", law)
         if not isinstance(name, str) or not name.isidentifier():
-            _fail(path, f"{where}.name", f"must be a name like na_no_adaptation, got {name!r}")
-        if name in names:
-            _fail(path, f"{where}.name", f"{name!r} is used twice")
-        names.add(name)
-        _unknown(path, f"{where}.", e, {"name", "law", *LAWS[law]})
+            pr.add(entry("controllers.name", label), f"must be a name like na_no_adaptation, "
+                   f"got {name!r}")
+        elif name in names:
+            pr.add(entry("controllers.name", label), f"{name!r} is used twice")
+        else:
+            names.add(name)
+        pr.keys("controllers", e, {"name", "law", *LAWS[law]}, label=label)
         fixed, grids = {}, []
         for k in LAWS[law]:
             if k not in e:
                 continue
-            v = e[k]
-            if isinstance(v, dict):
-                if set(v) != {"grid"}:
-                    _fail(path, f"{where}.{k}", f"a table here must be {{grid = [...]}}, got {sorted(v)}")
-                if k not in GRID_KEYS:
-                    _fail(path, f"{where}.{k}", f"cannot be a grid; grids: {list(GRID_KEYS)}")
-                g = v["grid"]
-                if not isinstance(g, list) or not g:
-                    _fail(path, f"{where}.{k}.grid", "must be a non-empty list of numbers")
-                if grid_points:   # --quick: the grid's ends and middle
-                    g = sorted(set([g[0], g[len(g) // 2], g[-1]]), key=g.index)[:grid_points]
-                vals = [_controller_value(path, f"{where}.{k}.grid", k, x) for x in g]
-                if any(isinstance(x, tuple) for x in vals) or len(set(vals)) != len(vals):
-                    _fail(path, f"{where}.{k}.grid", f"must hold distinct scalars, got {g}")
-                grids.append((k, vals))
+            if isinstance(e[k], dict):
+                grids.append((k, _grid(pr, k, label, e[k], grid_points)))
             else:
-                fixed[k] = _controller_value(path, f"{where}.{k}", k, v)
+                fixed[k] = _controller_value(pr, entry(f"controllers.{k}", label), k, e[k])
+        if None in fixed.values() or any(vals is None for _, vals in grids):
+            continue
         for point in itertools.product(*[vals for _, vals in grids]):
             grid = tuple(zip([k for k, _ in grids], point))
             out.append(Variant(name, law, tuple(sorted({**fixed, **dict(grid)}.items())), grid))
     return tuple(out)
 
 
-def _moves(path, moves):
+def _moves(pr, moves):
+    """study.moves: (name, None) for a model file's move, (name, sorted line items) for a line."""
     if not isinstance(moves, list) or not moves:
-        _fail(path, "study.moves", "must be a non-empty list of move names or {name, start, "
-              "end, v_max, a_max, j_max} tables")
+        return pr.add("study.moves", "must be a non-empty list of move names or {name, start, "
+                      "end, v_max, a_max, j_max} tables")
     out = []
     for i, mv in enumerate(moves):
-        key = f"study.moves[{i}]"
+        label = f"entry {i + 1}"
         if isinstance(mv, str):
             out.append((mv, None))
             continue
         if not isinstance(mv, dict):
-            _fail(path, key, f"must be a move name or a table, got {mv!r}")
-        _unknown(path, f"{key}.", mv, _MOVE_KEYS)
-        missing = sorted(_MOVE_KEYS - set(mv))
-        if missing:
-            _fail(path, key, f"missing {missing}")
-        line = {}
-        for k in ("start", "end"):
-            p = mv[k]
-            if not (isinstance(p, list) and len(p) == 2):
-                _fail(path, f"{key}.{k}", f"must be a point [x, y] in m, got {p!r}")
-            line[k] = tuple(float(_number(path, f"{key}.{k}", x)) for x in p)
-        for k in ("v_max", "a_max", "j_max"):
-            line[k] = float(_number(path, f"{key}.{k}", mv[k], low=0.0, low_ok=False))
-        out.append((mv["name"], tuple(sorted(line.items()))))
+            pr.add(entry("study.moves", label), f"must be a move name or a table, got {mv!r}")
+            continue
+        ok = pr.keys("study.moves", mv, _MOVE_KEYS, _MOVE_KEYS, label=label)
+        at = {k: entry(f"study.moves.{k}", label) for k in _MOVE_KEYS}
+        line = {k: pr.point(at[k], mv[k]) for k in ("start", "end") if k in mv}
+        line.update({k: pr.number(at[k], mv[k], low=0.0, low_ok=False)
+                     for k in ("v_max", "a_max", "j_max") if k in mv})
+        name = pr.text(at["name"], mv["name"], nonempty=True) if "name" in mv else None
+        if ok and name is not None and None not in line.values():
+            out.append((name, tuple(sorted(line.items()))))
     names = [n for n, _ in out]
     if len(set(names)) != len(names):
-        _fail(path, "study.moves", f"move names must be distinct, got {names}")
+        pr.add("study.moves", f"move names must be distinct, got {names}")
     return tuple(out)
 
 
@@ -320,87 +318,113 @@ def read_study(path, quick=False):
     """Read and validate a study file (TOML). ``quick``: apply its ``[quick]`` table.
 
     Paths in the file (``study.model``) are relative to the study file's folder. Raises
-    :class:`StudyFileError` naming the file, the key and the reason. Checks that need the
-    model (moves reachable and clear of singularities, gains accepted by the controllers) are
-    made by :func:`pm2dof.studies.check_study`.
+    :class:`StudyFileError` listing every problem of the file, each naming the key and the
+    reason. Checks that need the model (moves reachable and clear of singularities, gains
+    accepted by the controllers) are made by :func:`pm2dof.studies.check_study`.
     """
     path = Path(path)
+    pr = Problems(path, StudyFileError)
     try:
-        text = path.read_text()
+        text = path.read_text(encoding="utf-8")
     except OSError as exc:
-        raise StudyFileError(f"{path}: cannot read the study file: {exc.strerror}") from None
+        pr.stop(None, f"cannot read the study file: {exc.strerror}")
+    except UnicodeDecodeError as exc:
+        pr.stop(None, f"not a text (UTF-8) file: {exc.reason} at byte {exc.start}")
     try:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise StudyFileError(f"{path}: not valid TOML: {exc}") from None
-    _unknown(path, "", doc, _TOP_KEYS)
-    st = doc.get("study")
-    if not isinstance(st, dict):
-        _fail(path, "study", "missing [study] table")
-    _unknown(path, "study.", st, _STUDY_KEYS)
-    q = doc.get("quick", {})
-    if not isinstance(q, dict):
-        _fail(path, "quick", "must be a table")
-    _unknown(path, "quick.", q, _QUICK_KEYS)
-    if quick:
-        st = {**st, **{k: v for k, v in q.items() if k != "grid_points"}}
-    for k in ("name", "model", "moves", "seed", "draws"):
-        if k not in st:
-            _fail(path, f"study.{k}", "missing")
-    name = st["name"]
-    if not isinstance(name, str) or not name:
-        _fail(path, "study.name", f"must be a non-empty string, got {name!r}")
-    try:
-        model_path = resolve_model(str(st["model"]), relative_to=path.parent).resolve()
-    except ModelFileError as exc:
-        _fail(path, "study.model", str(exc))
-    if not model_path.is_file():
-        _fail(path, "study.model", f"no model file at {model_path} (a shipped model's name, or "
-              f"a path relative to the study file's folder)")
+        pr.stop(None, f"not valid TOML: {exc}")
+    pr.keys("", doc, _TOP_KEYS)
+    q = pr.table("quick", doc.get("quick"), required=False) or {}
+    pr.keys("quick", q, _QUICK_KEYS)
     grid_points = q.get("grid_points") if quick else None
     if grid_points is not None:
-        _number(path, "quick.grid_points", grid_points, integer=True, low=1)
-    unc = doc.get("uncertainty", {})
-    if not isinstance(unc, dict):
-        _fail(path, "uncertainty", "must be a table")
-    _unknown(path, "uncertainty.", unc, UNCERTAINTY)
+        grid_points = pr.number("quick.grid_points", grid_points, integer=True, low=1)
+    fields = _study_table(pr, path, pr.table("study", doc.get("study")), q if quick else None)
+    uncertainty = _uncertainty(pr, doc.get("uncertainty"))
+    variants = _variants(pr, doc.get("controllers"), grid_points)
+    payload_change = _payload_change(pr, doc.get("payload_change"), fields.get("runs"),
+                                     quick and "runs" in q)
+    pr.raise_if_any()
+    return Study(path=str(path.resolve()), text=text, **fields, variants=variants,
+                 uncertainty=uncertainty, payload_change=payload_change, quick=bool(quick))
+
+
+def _study_table(pr, path, st, q):
+    """[study] (with ``q``, the [quick] table, applied): the fields of Study it holds."""
+    if st is None:
+        return {}
+    pr.keys("study", st, _STUDY_KEYS, ("name", "model", "moves", "seed", "draws"))
+    if q is not None:
+        st = {**st, **{k: v for k, v in q.items() if k in _QUICK_KEYS - {"grid_points"}}}
+    out = {"description": pr.text("study.description", st.get("description", "")),
+           "runs": pr.number("study.runs", st.get("runs", 1), integer=True, low=1),
+           "chunk": pr.number("study.chunk", st.get("chunk", 256), integer=True, low=1),
+           "settle_time": pr.number("study.settle_time", st.get("settle_time", 0.0), low=0.0),
+           "quantise": pr.boolean("study.quantise", st.get("quantise", True))}
+    if "name" in st:
+        out["name"] = pr.text("study.name", st["name"], nonempty=True)
+    if "model" in st:
+        out["model_path"] = _model_path(pr, path, st["model"])
+    if "moves" in st:
+        out["moves"] = _moves(pr, st["moves"])
+    if "seed" in st:
+        out["seed"] = pr.number("study.seed", st["seed"], integer=True, low=0)
+    if "draws" in st:
+        out["draws"] = pr.number("study.draws", st["draws"], integer=True, low=1)
+    return out
+
+
+def _model_path(pr, path, ref):
+    """study.model: a shipped model's name or a path relative to the study file's folder."""
+    if pr.text("study.model", ref, nonempty=True) is None:
+        return None
+    try:
+        model_path = resolve_model(ref, relative_to=path.parent).resolve()
+    except ModelFileError as exc:
+        return pr.add("study.model", str(exc))
+    if not model_path.is_file():
+        return pr.add("study.model", f"no model file at {model_path} (a shipped model's name, "
+                      f"or a path relative to the study file's folder)")
+    return str(model_path)
+
+
+def _uncertainty(pr, unc):
+    """[uncertainty]: (key, Distribution) in UNCERTAINTY's order (the draws do not depend on
+    the file's order)."""
+    unc = pr.table("uncertainty", unc, required=False) or {}
+    pr.keys("uncertainty", unc, UNCERTAINTY)
     dists = []
-    for k in UNCERTAINTY:   # canonical order: the draws do not depend on the file's order
-        if k in unc:
-            d = _distribution(path, f"uncertainty.{k}", unc[k],
-                              integer=(k == "encoder_counts_per_rev"))
-            lo, low_ok = UNCERTAINTY[k][1], UNCERTAINTY[k][2]
-            if d.support[0] < lo or (d.support[0] == lo and not low_ok):
-                _fail(path, f"uncertainty.{k}", f"can draw {d.support[0]:g}, below the allowed "
-                      f"{'>=' if low_ok else '>'} {lo:g} ({UNCERTAINTY[k][0]})")
-            dists.append((k, d))
-    pc = doc.get("payload_change")
-    if pc is not None:
-        if not isinstance(pc, dict):
-            _fail(path, "payload_change", "must be a table {after_run, payload_mass}")
-        _unknown(path, "payload_change.", pc, {"after_run", "payload_mass"})
-        if set(pc) != {"after_run", "payload_mass"}:
-            _fail(path, "payload_change", "needs after_run and payload_mass")
-        after = _number(path, "payload_change.after_run", pc["after_run"], integer=True, low=1)
-        if quick and "runs" in q:
-            after = min(after, max(1, q["runs"] // 2))
-        pc = (after, float(_number(path, "payload_change.payload_mass", pc["payload_mass"],
-                                   low=0.0)))
-    runs = _number(path, "study.runs", st.get("runs", 1), integer=True, low=1)
-    if pc is not None and pc[0] >= runs:
-        _fail(path, "payload_change.after_run", f"must be < study.runs = {runs}, got {pc[0]}")
-    quantise = st.get("quantise", True)
-    if not isinstance(quantise, bool):
-        _fail(path, "study.quantise", f"must be true or false, got {quantise!r}")
-    description = st.get("description", "")
-    if not isinstance(description, str):
-        _fail(path, "study.description", "must be a string")
-    return Study(
-        path=str(path.resolve()), text=text, name=name, description=description,
-        model_path=str(model_path), moves=_moves(path, st["moves"]),
-        seed=_number(path, "study.seed", st["seed"], integer=True, low=0),
-        draws=_number(path, "study.draws", st["draws"], integer=True, low=1, low_ok=True),
-        runs=runs, chunk=_number(path, "study.chunk", st.get("chunk", 256), integer=True, low=1),
-        settle_time=float(_number(path, "study.settle_time", st.get("settle_time", 0.0), low=0.0)),
-        quantise=quantise, variants=_variants(path, doc.get("controllers"), grid_points),
-        uncertainty=tuple(dists), payload_change=pc, quick=bool(quick))
+    for k in UNCERTAINTY:
+        if k not in unc:
+            continue
+        d = _distribution(pr, f"uncertainty.{k}", unc[k], integer=(k == "encoder_counts_per_rev"))
+        if d is None:
+            continue
+        lo, low_ok = UNCERTAINTY[k][1], UNCERTAINTY[k][2]
+        if d.support[0] < lo or (d.support[0] == lo and not low_ok):
+            pr.add(f"uncertainty.{k}", f"can draw {d.support[0]:g}, below the allowed "
+                   f"{'>=' if low_ok else '>'} {lo:g} ({UNCERTAINTY[k][0]})")
+        dists.append((k, d))
+    return tuple(dists)
+
+
+def _payload_change(pr, pc, runs, quick_runs):
+    """[payload_change]: None or (after_run, payload_mass kg); under --quick with [quick]
+    runs, after_run moves to at most half the runs."""
+    pc = pr.table("payload_change", pc, required=False)
+    if pc is None:
+        return None
+    keys = ("after_run", "payload_mass")
+    pr.keys("payload_change", pc, keys, keys)
+    after = (pr.number("payload_change.after_run", pc["after_run"], integer=True, low=1)
+             if "after_run" in pc else None)
+    mass = (pr.number("payload_change.payload_mass", pc["payload_mass"], low=0.0)
+            if "payload_mass" in pc else None)
+    if after is None or mass is None:
+        return None
+    if quick_runs and runs is not None:
+        after = min(after, max(1, runs // 2))
+    if runs is not None and after >= runs:
+        pr.add("payload_change.after_run", f"must be < study.runs = {runs}, got {after}")
+    return after, mass
