@@ -26,7 +26,7 @@ import argparse
 import sys
 import warnings
 
-from .core.errors import ModelFileError, OutcomeWarning, StaleGeneratedCodeError
+from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
 
 __all__ = ["main", "build_parser"]
 
@@ -64,7 +64,7 @@ def cmd_models_copy(args):
     if dest.is_dir():
         dest = dest / src.name
     if dest.exists():
-        raise FileExistsError(f"{dest} exists; not overwritten")
+        raise ArgumentError(f"{dest} exists; not overwritten (choose another folder or remove it)")
     dest.parent.mkdir(parents=True, exist_ok=True)
     shutil.copyfile(src, dest)
     print(f"wrote {dest}. Edit it (keep or change [model].name), then: pm2dof derive {dest}")
@@ -80,7 +80,7 @@ def cmd_report(args):
 
 def cmd_derive(args):
     if args.path and args.model and args.path != args.model:
-        raise ValueError(f"give the model once: positional {args.path!r} or --model "
+        raise ArgumentError(f"give the model once: positional {args.path!r} or --model "
                          f"{args.model!r}, not both")
     from .derive.run import derive  # needs the [derive] extra (SymPy, CasADi); main() says so
     derive(args.path or args.model, args.out, force=args.force, build=not args.no_build,
@@ -111,7 +111,7 @@ def cmd_demo(args):
 
 def cmd_identify(args):
     if (args.excite or args.design_excitation) and not args.out:
-        raise ValueError("--excite and --design-excitation need --out FILE")
+        raise ArgumentError("--excite and --design-excitation need --out FILE")
     if args.excite:  # issue 13: simulated robot -> log file
         from .analysis.excite import run_excite
         run_excite(_model(args), args.out, excitation_file=args.excitation,
@@ -157,9 +157,9 @@ def cmd_splits(args):
 
 def _per_actuator(values, n, flag):
     if len(values) not in (1, n):
-        raise ValueError(f"{flag}: give one value or {n} (one per actuator), got {len(values)}")
+        raise ArgumentError(f"{flag}: give one value or {n} (one per actuator), got {len(values)}")
     if not all(v > 0 for v in values):
-        raise ValueError(f"{flag}: every value must be > 0, got {values}")
+        raise ArgumentError(f"{flag}: every value must be > 0, got {values}")
     return [values[0]] * n if len(values) == 1 else list(values)
 
 
@@ -192,7 +192,7 @@ def cmd_animate(args):
 def cmd_study_run(args):
     from .studies import read_study, resolve_study, run_study
     if args.workers is not None and args.scheduler:
-        raise ValueError("give --workers (an embedded cluster) or --scheduler (an existing "
+        raise ArgumentError("give --workers (an embedded cluster) or --scheduler (an existing "
                          "one), not both: an existing cluster's workers are started with it")
     study = read_study(resolve_study(args.study), quick=args.quick)
     if args.model is not None:  # the study file names its model; --model overrides it
@@ -222,7 +222,7 @@ def cmd_study_show(args):
         return 0
     path = resolve_study(args.name)
     if not path.is_file():
-        raise ValueError(f"no study file {path} (shipped: "
+        raise ArgumentError(f"no study file {path} (shipped: "
                          f"{', '.join(f.stem for f in sorted(SHIPPED_STUDIES.glob('*.toml')))})")
     sys.stdout.write(path.read_text())
     return 0
@@ -522,12 +522,6 @@ def build_parser():
     return ap
 
 
-def _run_errors():
-    """StudyRunError when the studies layer is loaded (no Dask import otherwise)."""
-    mod = sys.modules.get("pm2dof.studies.runner")
-    return mod.StudyRunError if mod else ValueError
-
-
 def _show_warning(message, category, filename, lineno, file=None, line=None,
                   _default=warnings.showwarning):
     if issubclass(category, OutcomeWarning):
@@ -550,16 +544,17 @@ def main(argv=None):
     if not getattr(args, "func", None):
         ap.print_help()
         return 2
-    from .core.build import BuildError
     try:
         with warnings.catch_warnings():   # each rollout that did not complete: one line
             warnings.simplefilter("always", OutcomeWarning)
             warnings.showwarning = _show_warning
             return args.func(args)
-    except (ModelFileError, StaleGeneratedCodeError, ValueError, BuildError, FileExistsError,
-            _run_errors()) as exc:  # typed
+    except Pm2dofError as exc:  # a typed error: the input is refused, not a bug
         print(f"pm2dof: error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        print("\npm2dof: interrupted", file=sys.stderr)
+        return 130
     except ModuleNotFoundError as exc:
         module = (exc.name or "").split(".")[0]
         if module not in _EXTRAS:

@@ -34,6 +34,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from ..core.errors import Pm2dofError
 from .ident_data import MIN_JOINT_SPEED
 
 __all__ = ["ExcitationError", "FourierExcitation", "design_excitation", "load_excitation",
@@ -41,7 +42,7 @@ __all__ = ["ExcitationError", "FourierExcitation", "design_excitation", "load_ex
            "sample_function", "excitation_trajectory", "run_design"]
 
 
-class ExcitationError(ValueError):
+class ExcitationError(Pm2dofError, ValueError):
     """An excitation file or design request that cannot be used (names the key and value)."""
 
 

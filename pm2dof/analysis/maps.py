@@ -17,7 +17,7 @@ generators become Me^-1 s_i tau_max,i and the min-norm rows (P Me)_i.
 """
 import numpy as np
 
-from ..core.errors import WorkspaceError
+from ..core.errors import ArgumentError, WorkspaceError
 from ..control.simulate import pose_measures
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
@@ -122,7 +122,7 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
         outside the reachable set and where a pose is singular.
     """
     if not (isinstance(resolution, int) and resolution >= 5):
-        raise ValueError(f"resolution must be an integer >= 5, got {resolution!r}")
+        raise ArgumentError(f"resolution must be an integer >= 5, got {resolution!r}")
     x, y = _grid(model, resolution)
     X, Y = np.meshgrid(x, y)
     pts = np.stack([X.ravel(), Y.ravel()], axis=1)

@@ -7,10 +7,12 @@ from types import MappingProxyType
 
 import numpy as np
 
+from ..core.errors import Pm2dofError
+
 __all__ = ["TrajectoryError", "SCurve", "Trajectory", "line", "PAPER_MOVES", "paper_move"]
 
 
-class TrajectoryError(ValueError):
+class TrajectoryError(Pm2dofError, ValueError):
     """Invalid trajectory request (bad limit, period, length, point or name)."""
 
 

@@ -65,7 +65,13 @@ PORTABLE_FLAGS: tuple[str, ...] = tuple(f for f in FLAGS if f != "-march=native"
 LIBS: tuple[str, ...] = ("-lm",)
 
 
-class BuildError(RuntimeError):
+try:
+    from .errors import Pm2dofError
+except ImportError:       # loaded as a file by setup.py, outside the package: no common base
+    Pm2dofError = Exception
+
+
+class BuildError(Pm2dofError, RuntimeError):
     """The C compiler failed or is missing; the message holds the command and its stderr, or
     what to install."""
 

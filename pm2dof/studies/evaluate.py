@@ -18,6 +18,7 @@ from ..control.simulate import (batch_inputs, check_trajectory, completed_sample
                                 theta_truth)
 from ..control.trajectory import line
 from ..core.model import load_model
+from ..core.status import Status
 from .draws import draw_columns, plant_of, sample_draw
 
 __all__ = ["run_chunk", "check_study", "make_controller", "make_trajectory", "rollout_setup",
@@ -176,9 +177,9 @@ def _metrics(out, rows, xd, xe, tau, status, n_move, n_ok):
         out["rmse"][rows] = np.where(diverged, np.inf, np.sqrt(np.mean(e2, axis=-1)))  # eq. 41
         out["max_error"][rows] = np.where(diverged, np.inf, np.sqrt(np.max(e2, axis=-1)))
     out["peak_tau"][rows] = np.max(np.where(held[..., None], np.abs(tau), 0.0), axis=(1, 2))
-    out["n_singular"][rows] = np.sum(held & (status == 1), axis=1)
-    out["n_saturated"][rows] = np.sum(held & (status == 2), axis=1)
-    out["n_non_finite"][rows] = np.sum(held & (status == 3), axis=1)
+    out["n_singular"][rows] = np.sum(held & (status == Status.SINGULAR), axis=1)
+    out["n_saturated"][rows] = np.sum(held & (status == Status.SATURATED), axis=1)
+    out["n_non_finite"][rows] = np.sum(held & (status == Status.NON_FINITE), axis=1)
     out["diverged"][rows] = diverged
 
 

@@ -13,6 +13,7 @@ import os
 import sys
 import time
 
+from ..core.errors import ArgumentError, Pm2dofError
 from ..core.model import load_model
 from .evaluate import check_study, run_chunk
 from .store import finish_out, prepare_out, write_chunk
@@ -34,7 +35,7 @@ QUIET_WORKERS = {
 }
 
 
-class StudyRunError(RuntimeError):
+class StudyRunError(Pm2dofError, RuntimeError):
     """The study could not run: no scheduler at the address, no workers, a failing chunk."""
 
 
@@ -61,7 +62,7 @@ def connect(workers=None, scheduler=None, timeout=10.0, echo=None):
         return client
     n = (os.cpu_count() or 1) if workers is None else workers
     if n < 1:
-        raise ValueError(f"--workers must be >= 1, got {n}")
+        raise ArgumentError(f"--workers must be >= 1, got {n}")
     import dask
     with dask.config.set(QUIET_WORKERS):
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
@@ -155,7 +156,7 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     """
     from distributed import as_completed
     if client is None and not scheduler and workers is not None and workers < 1:
-        raise ValueError(f"--workers must be >= 1, got {workers}")
+        raise ArgumentError(f"--workers must be >= 1, got {workers}")
     model = load_model(study.model_path)
     check_study(study, model)
     done = prepare_out(out, study, model)
