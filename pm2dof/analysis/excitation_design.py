@@ -36,8 +36,8 @@ whole run, exact sign: :func:`regressor_condition`).
 
 Determinism: the design is a long IPOPT run (hundreds of iterations) on a non-convex problem,
 and its path, hence the local optimum it ends at, follows the last bits of the arithmetic. So
-the design runs CasADi's bundled OpenBLAS (the BLAS of IPOPT and MUMPS) on one thread: with its default
-of one thread per core the result depended on the machine's core count (measured: 345 IPOPT
+the design runs CasADi's bundled OpenBLAS (the BLAS of IPOPT and MUMPS) on one thread: with
+its default of one thread per core the result depended on the core count (measured: 345 IPOPT
 iterations with 2 threads, 341 with 4, 373 with 1, each with other coefficients). Whatever
 else rounds differently from one machine to another (glibc's libm picks FMA variants by CPU;
 measured 308 iterations with them switched off) still moves the result: a design is
