@@ -409,7 +409,7 @@ def build_parser():
     p.add_argument("--json", action="store_true", help="--data: print the results as JSON")
     p.add_argument("--design-excitation", action="store_true",
                    help="design a D-optimal periodic excitation (Fourier series in task space, "
-                   "CasADi + IPOPT, about a minute) and write it as TOML to --out")
+                   "CasADi + IPOPT, 1-2 minutes) and write it as TOML to --out")
     for flag, kind, default, text in (
             ("--base-hz", float, 0.2, "base frequency f0, Hz (default 0.2: 5 s period)"),
             ("--harmonics", int, 10, "harmonics of f0 (default 10: up to 2 Hz)"),
