@@ -68,7 +68,8 @@ LIBS: tuple[str, ...] = ("-lm",)
 try:
     from .errors import Pm2dofError
 except ImportError:       # loaded as a file by setup.py, outside the package: no common base
-    Pm2dofError = Exception
+    class Pm2dofError(Exception):   # (a bare Exception here would make BuildError's MRO fail)
+        """Stand-in base when build.py is loaded as a file."""
 
 
 class BuildError(Pm2dofError, RuntimeError):
