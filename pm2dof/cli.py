@@ -113,31 +113,31 @@ def cmd_identify(args):
     if (args.excite or args.design_excitation) and not args.out:
         raise ArgumentError("--excite and --design-excitation need --out FILE")
     if args.excite:  # issue 13: simulated robot -> log file
-        from .analysis.excite import run_excite
+        from .identification.excitation import run_excite
         run_excite(_model(args), args.out, excitation_file=args.excitation,
                    duration=args.duration, quantise=not args.exact_encoders,
                    controller=args.controller, progress=_progress)
         return 0
     if args.design_excitation:  # issue 13: D-optimal periodic excitation -> TOML
-        from .analysis.excitation_design import run_design
+        from .identification.design import run_design
         run_design(_model(args), args.out, base_hz=args.base_hz, harmonics=args.harmonics,
                    periods=args.periods, v_max=args.v_max, a_max=args.a_max,
                    tau_fraction=args.tau_fraction, seed=args.design_seed, progress=_progress)
         return 0
     if args.monte_carlo:  # issue 13: the targets, measured over seeds
-        from .analysis.ident_study import run_monte_carlo
+        from .identification.monte_carlo import run_monte_carlo
         run_monte_carlo(_model(args), args.monte_carlo, excitation_file=args.excitation,
                         duration=args.duration, as_json=args.json,
                         progress=None if args.json else _progress)
         return 0
     if args.data:  # issue 13: measured log -> base parameters, physical theta
-        from .analysis.ident_report import run_identify_data
+        from .identification.report import run_identify_data
         run_identify_data(_model(args), args.data, save=args.save, as_json=args.json,
                           cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
                           seed=args.seed_na, time_tolerance=args.time_tolerance,
                           progress=None if args.json else _progress)
         return 0
-    from .analysis.identify import run_identify
+    from .identification.base import run_identify
     run_identify(_model(args), report_only=args.report, duration=args.duration, save=args.save,
                  seed=args.seed_na, progress=_progress)
     return 0

@@ -25,11 +25,13 @@ ALLOWED = {
     "derive": {"core", "derive"},                       # build time: SymPy, CasADi -> C
     "control": {"core", "control"},                     # 2: controllers, rollouts
     "reference": {"core", "reference"},                 # beside: NumPy formulations
-    "analysis": _RUNTIME | {"analysis"},                # 3: experiment, identification
+    "analysis": _RUNTIME | {"analysis"},                # 3: experiment, reports, results
+    "identification": _RUNTIME | {"analysis", "identification"},   # 3: logs, excitation, fit
     "bench": _RUNTIME | {"analysis", "reference", "bench", "derive"},   # 3: benchmark
-    "studies": _RUNTIME | {"analysis", "studies"},      # 3: many rollouts on Dask
+    "studies": _RUNTIME | {"analysis", "identification", "studies"},   # 3: many rollouts, Dask
     "figures": _RUNTIME | {"analysis", "studies", "figures"},   # 4: matplotlib
-    "cli": _RUNTIME | {"analysis", "bench", "studies", "figures", "cli", "derive"},  # 4
+    "cli": _RUNTIME | {"analysis", "identification", "bench", "studies", "figures", "cli",
+                       "derive"},                                               # 4
     "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
     "__main__": {"cli"},
     "_moved": set(),
@@ -39,7 +41,8 @@ _HEAVY = {"sympy", "casadi", "matplotlib", "dask", "distributed", "pyarrow", "sc
 THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
     "__main__": set(), "_moved": set(),
-    "analysis": {"numpy", "scipy", "casadi", "pyarrow", "tqdm"},   # pyarrow: Parquet logs
+    "analysis": {"numpy", "tqdm"},
+    "identification": {"numpy", "scipy", "casadi", "pyarrow"},   # the ident extra; lazily
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
     "bench": {"numpy", "casadi", "sympy"},              # baselines; each optional at run time
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
@@ -83,7 +86,8 @@ def test_every_sub_package_has_a_declared_layer():
     units = {_unit(p) for p in MODULES}
     assert units <= set(ALLOWED), f"undeclared sub-packages: {sorted(units - set(ALLOWED))}"
     assert units <= set(THIRD_PARTY)
-    assert {"core", "control", "analysis", "bench", "figures", "reference", "cli", "derive"} <= units
+    assert {"core", "control", "analysis", "identification", "bench", "figures", "reference", "cli",
+            "derive"} <= units
 
 
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))

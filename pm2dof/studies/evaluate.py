@@ -58,7 +58,7 @@ def _context(study):
     key = (study.model_path, study.variants, study.moves, study.settle_time)   # what ctx holds
     ctx = _CACHE.get(key)
     if ctx is None:
-        from ..analysis.identify import identifiability
+        from ..identification.base import identifiability
         model = load_model(study.model_path)
         ctrls = [make_controller(model, v) for v in study.variants]
         T = ctrls[0].sample_period

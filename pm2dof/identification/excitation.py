@@ -12,7 +12,7 @@ import numpy as np
 from ..core.errors import ArgumentError
 from ..control.controllers import APDController, NAController
 from ..control.simulate import plant_vector, simulate
-from .ident_log import IdentLog
+from .log import IdentLog
 
 __all__ = ["excite", "measured_angles"]
 
@@ -36,8 +36,8 @@ def excite(model, trajectory, *, truth=None, quantise=True, controller="apd"):
     ----------
     model : Model
     trajectory : object with t, xd, xd_dot, xd_ddot (N, 2) and period
-        The excitation, e.g. :func:`pm2dof.analysis.identify.excitation` or
-        :func:`pm2dof.analysis.excitation_design.trajectory_of`; the robot starts at rest at
+        The excitation, e.g. :func:`pm2dof.identification.base.excitation` or
+        :func:`pm2dof.identification.design.trajectory_of`; the robot starts at rest at
         its first point. Its ``max_hz`` (highest frequency, Hz), if it has one, is written into
         the log's metadata (``excitation_max_hz``) for the filter design of ``--data``.
     truth : dict, optional
@@ -78,9 +78,9 @@ def run_excite(model, out, *, excitation_file=None, duration=4.0, quantise=True,
                controller="apd", echo=print, progress=None):
     """``pm2dof identify --excite --out LOG``: run an excitation on the simulated plant and
     write its log (CSV or Parquet by the suffix of ``out``). Without ``excitation_file`` the
-    multi-sine of :func:`pm2dof.analysis.identify.excitation` (``duration`` s) runs."""
-    from .excitation_design import excitation_trajectory
-    from .ident_log import write_log
+    multi-sine of :func:`pm2dof.identification.base.excitation` (``duration`` s) runs."""
+    from .design import excitation_trajectory
+    from .log import write_log
     traj, what = excitation_trajectory(model, excitation_file, duration)
     if progress:
         progress(f"running {what} on the simulated plant ({controller.upper()} tracking, "

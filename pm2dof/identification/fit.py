@@ -27,7 +27,7 @@ import math
 
 import numpy as np
 
-from .ident_log import LogError, log_poses
+from .log import LogError, log_poses
 from ..core.errors import ArgumentError
 
 __all__ = ["lowpass", "choose_cutoff", "differentiate", "stack_regressor", "weighted_ls",
@@ -116,7 +116,7 @@ def stack_regressor(model, ident, t, xe, tau, cutoff_hz, *, decimate=None,
     ----------
     model : Model
     ident : dict
-        :func:`pm2dof.analysis.identify.identifiability` (the base columns).
+        :func:`pm2dof.identification.base.identifiability` (the base columns).
     t : ndarray (N,)
         Sample times, s (regular).
     xe : ndarray (N, 2)
@@ -273,9 +273,9 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
     ----------
     model : Model
     log : IdentLog
-        Checked against the model by :func:`pm2dof.analysis.ident_log.log_poses`.
+        Checked against the model by :func:`pm2dof.identification.log.log_poses`.
     ident : dict, optional
-        :func:`pm2dof.analysis.identify.identifiability` (computed if not given).
+        :func:`pm2dof.identification.base.identifiability` (computed if not given).
     cutoff_hz : float, optional
         Low-pass cutoff (default :func:`choose_cutoff`: ``factor`` x the excitation band).
     decimate : int, optional
@@ -291,7 +291,7 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
         ``names`` (base parameters, readable), ``independent_names``, ``estimate`` (r,),
         ``std`` (r,) 1 sigma, ``nominal`` (r,) Tables 1-2 folded, ``theta_ls`` (p,) full theta
         with the dependent parameters at nominal, ``consistent`` (dict of
-        :func:`pm2dof.analysis.ident_consistent.consistent_theta`, or None), ``theta0`` (p,) the
+        :func:`pm2dof.identification.consistent.consistent_theta`, or None), ``theta0`` (p,) the
         theta to use (consistent if computed), ``cutoff_hz``, ``band_hz``, ``band_from``,
         ``decimate``, ``samples`` (equations / 2), ``left_out_slow``, residual statistics
         ``rms`` (2,) N, ``r2`` (2,), ``lag1``, ``inflation``; ``warnings`` (list of str).
@@ -302,7 +302,7 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
         The log does not fit the model (see ``log_poses``), or is too short, or does not
         excite every base parameter (names the directions).
     """
-    from .identify import base_names, identifiability
+    from .base import base_names, identifiability
     ident = identifiability(model) if ident is None else ident
     I, D, beta = ident["independent"], ident["dependent"], ident["beta"]
     pnames = list(ident["param_names"])
@@ -361,7 +361,7 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
            "warnings": warnings, "consistent": None, "theta0": theta_ls,
            "param_names": pnames}
     if consistent:
-        from .ident_consistent import consistent_theta
+        from .consistent import consistent_theta
         c = consistent_theta(ls["A"], ls["b"], ident, nominal)
         out["consistent"] = c
         out["theta0"] = c["theta"]

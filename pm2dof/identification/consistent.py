@@ -3,7 +3,7 @@
 
 The data determine only the base parameters pi = P theta (P: (r, p), the identity on the
 independent columns plus the folding ``beta`` of the dependent ones, from
-:func:`pm2dof.analysis.identify.identifiability`). A theta is physical when every leg's
+:func:`pm2dof.identification.base.identifiability`). A theta is physical when every leg's
 inertia matrix [[alpha_i, beta_i], [beta_i, gamma_i]] is positive semidefinite (alpha_i >= 0,
 gamma_i >= 0, alpha_i gamma_i - beta_i^2 >= 0) and every friction coefficient is >= 0.
 
@@ -85,11 +85,11 @@ def consistent_theta(A, b, ident, theta_nominal):
     ----------
     A : ndarray (m, r)
         Weighted base regressor (rows of all samples), as returned by
-        :func:`pm2dof.analysis.ident_data.weighted_ls`.
+        :func:`pm2dof.identification.fit.weighted_ls`.
     b : ndarray (m,)
         Weighted task forces.
     ident : dict
-        :func:`pm2dof.analysis.identify.identifiability`.
+        :func:`pm2dof.identification.base.identifiability`.
     theta_nominal : array_like (p,)
         Tables 1-2: the point closest to which the invisible directions are fixed.
 

@@ -8,18 +8,18 @@ import pytest
 
 import pm2dof
 from pm2dof import cli
-from pm2dof.analysis.excitation_design import (IPOPT_OPTIONS, ExcitationError,
+from pm2dof.identification.design import (IPOPT_OPTIONS, ExcitationError,
                                                FourierExcitation, _casadi_openblas,
                                                check_excitation, design_excitation,
                                                load_excitation, objective_logdet, random_start,
                                                regressor_condition, sample_function,
                                                trajectory_of, write_excitation)
-from pm2dof.analysis.ident_log import read_log
-from pm2dof.analysis.identify import identifiability
+from pm2dof.identification.log import read_log
+from pm2dof.identification.base import identifiability
 
 LIMITS = {"v_max": 0.4, "a_max": 6.0, "tau_fraction": 0.3}
 SMALL = dict(base_hz=0.5, harmonics=4, periods=1, samples=80, constraint_samples=200, **LIMITS)
-SHIPPED = Path(__file__).resolve().parent.parent / "examples" / "excitation_shang2010.toml"
+SHIPPED = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
 
 
 @pytest.fixture(scope="module")
@@ -115,7 +115,7 @@ def test_excite_runs_the_file(tmp_path, m, designed, capsys):
     traj = trajectory_of(m, designed)
     assert len(log.t) == len(traj.t) and float(log.meta["excitation_max_hz"]) == 2.0
     # the optimised motion is better conditioned than the default multi-sine of --excite
-    from pm2dof.analysis.identify import excitation
+    from pm2dof.identification.base import excitation
     ident = identifiability(m)
     assert (regressor_condition(m, ident, traj)[0]
             < regressor_condition(m, ident, excitation(m, duration=designed.duration))[0])

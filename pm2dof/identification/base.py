@@ -217,7 +217,7 @@ def seed_na(model, theta0):
     Returns {speed: (rmse_nominal, rmse_theta0)}, m.
     """
     from ..control.controllers import NAController
-    from .experiment import trajectory
+    from ..analysis.experiment import trajectory
     out = {}
     for speed in model.spec.trajectories:
         traj = trajectory(model, speed)
@@ -241,7 +241,7 @@ def run_identify(model, *, report_only=False, duration=4.0, save=None, seed=Fals
     e = estimate(model, duration=duration, ident=ident)
     echo(format_estimate(e))
     if save:
-        from .results import provenance, write_json
+        from ..analysis.results import provenance, write_json
         write_json(save, {"param_names": model.param_names, "theta0": full_theta(e),
                           "base_parameters": e["names"], "estimate": e["estimate"],
                           "std": e["std"], "truth": e["truth"], "provenance": provenance(model)})

@@ -22,11 +22,11 @@ from scipy import optimize, signal
 
 import pm2dof
 from pm2dof import cli
-from pm2dof.analysis.excite import excite, measured_angles
-from pm2dof.analysis.ident_consistent import base_map, consistent_theta, physical_constraints
-from pm2dof.analysis.ident_data import identify_log, lowpass, weighted_ls, zero_phase
-from pm2dof.analysis.ident_log import IdentLog, LogError, read_log
-from pm2dof.analysis.identify import excitation, identifiability
+from pm2dof.identification.excitation import excite, measured_angles
+from pm2dof.identification.consistent import base_map, consistent_theta, physical_constraints
+from pm2dof.identification.fit import identify_log, lowpass, weighted_ls, zero_phase
+from pm2dof.identification.log import IdentLog, LogError, read_log
+from pm2dof.identification.base import excitation, identifiability
 from pm2dof.control.simulate import plant_truth, plant_vector, simulate, theta_truth
 
 
@@ -230,8 +230,8 @@ def test_excite_writes_the_applied_torques(m):
 
 
 def test_plant_task_force_is_the_plants_inverse_dynamics(m):
-    """ident_study's plant model (used for the torque target) inverts the generated plant."""
-    from pm2dof.analysis.ident_study import plant_task_force, torque_error
+    """monte_carlo's plant model (used for the torque target) inverts the generated plant."""
+    from pm2dof.identification.monte_carlo import plant_task_force, torque_error
     truth = plant_truth(m)
     pv = plant_vector(m, truth, quantise=False)
     rng = np.random.default_rng(2)
@@ -252,7 +252,7 @@ def test_plant_task_force_is_the_plants_inverse_dynamics(m):
 
 
 def test_monte_carlo_reports_every_target(m, capsys):
-    from pm2dof.analysis.ident_study import TARGETS
+    from pm2dof.identification.monte_carlo import TARGETS
     assert cli.main(["identify", "--monte-carlo", "2", "--duration", "3", "--json"]) == 0
     d = json.loads(capsys.readouterr().out)
     for k in ("inertial_vector", "inertial_each", "friction", "torque"):
@@ -265,9 +265,9 @@ def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, iden
     """examples/excitation_shang2010.toml on the model file's plant (17-bit encoders, Stribeck
     excess): the issue's accuracy targets, and both controllers track better with the result."""
     from pathlib import Path
-    from pm2dof.analysis.excitation_design import load_excitation, trajectory_of
-    from pm2dof.analysis.ident_study import seeded_table3
-    path = Path(__file__).resolve().parent.parent / "examples" / "excitation_shang2010.toml"
+    from pm2dof.identification.design import load_excitation, trajectory_of
+    from pm2dof.identification.monte_carlo import seeded_table3
+    path = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
     log = excite(m, trajectory_of(m, load_excitation(path, m)))
     res = identify_log(m, log, ident=ident)
     th = theta_truth(m)

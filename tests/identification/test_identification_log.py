@@ -3,8 +3,8 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.analysis.ident_log import MIN_ROWS, IdentLog, LogError, log_poses, read_log, write_log
-from pm2dof.analysis.identify import excitation
+from pm2dof.identification.log import MIN_ROWS, IdentLog, LogError, log_poses, read_log, write_log
+from pm2dof.identification.base import excitation
 
 
 @pytest.fixture(scope="module")

@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.errors import ClosureError, Pm2dofError, WorkspaceError
-from .results import write_atomic
+from ..analysis.results import write_atomic
 
 __all__ = ["LogError", "IdentLog", "read_log", "write_log", "log_poses", "MIN_ROWS"]
 

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.analysis.identify import estimate, excitation, identifiability
+from pm2dof.identification.base import estimate, excitation, identifiability
 from pm2dof import theta_truth
 
 

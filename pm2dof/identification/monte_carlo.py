@@ -22,9 +22,9 @@ import numpy as np
 
 from ..core.errors import ArgumentError
 from ..control.simulate import plant_truth, theta_truth
-from .excite import excite
-from .ident_data import identify_log
-from .identify import base_names, identifiability
+from .excitation import excite
+from .fit import identify_log
+from .base import base_names, identifiability
 
 __all__ = ["random_truth", "plant_task_force", "torque_error", "monte_carlo",
            "format_monte_carlo", "substep_sensitivity", "seeded_table3", "format_seeded_table3",
@@ -117,7 +117,7 @@ def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", iden
     Parameters
     ----------
     traj : trajectory-like (t, xd, xd_dot, xd_ddot, period, max_hz)
-        The excitation (e.g. :func:`pm2dof.analysis.excitation_design.trajectory_of`).
+        The excitation (e.g. :func:`pm2dof.identification.design.trajectory_of`).
     truth : "random" or "model"
         A fresh :func:`random_truth` per seed, or the model file's [plant] every time (then
         only the encoder noise differs).
@@ -213,7 +213,7 @@ def seeded_table3(model, theta):
         {speed: {"nominal": table3 numbers, "identified": table3 numbers}} (RMSE in m,
         RPE in percent; see :func:`pm2dof.analysis.experiment.table3_json`).
     """
-    from .experiment import table3, table3_json
+    from ..analysis.experiment import table3, table3_json
     nominal = table3_json(table3(model))
     identified = table3_json(table3(model, theta0=np.asarray(theta, dtype=float)))
     return {s: {"nominal": nominal[s], "identified": identified[s]} for s in nominal}
@@ -235,8 +235,8 @@ def format_seeded_table3(tab):
 def run_monte_carlo(model, seeds, *, excitation_file=None, duration=10.0, as_json=False,
                     echo=print, progress=None):
     """``pm2dof identify --monte-carlo N [--excitation FILE]``: the targets table."""
-    from .excitation_design import excitation_trajectory
-    from .results import dumps
+    from .design import excitation_trajectory
+    from ..analysis.results import dumps
     traj, _ = excitation_trajectory(model, excitation_file, duration)
     if progress:
         progress(f"{seeds} seeds: random plant truth and encoder noise, excite, identify")

@@ -56,7 +56,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..core.errors import Pm2dofError
-from .ident_data import MIN_JOINT_SPEED
+from .fit import MIN_JOINT_SPEED
 
 __all__ = ["ExcitationError", "FourierExcitation", "design_excitation", "load_excitation",
            "write_excitation", "trajectory_of", "regressor_condition", "check_excitation",
@@ -113,7 +113,7 @@ class FourierExcitation:
 def trajectory_of(model, exc, period=None):
     """The excitation sampled at the controller period (default ``[sensing].sample_period``):
     an object with t, xd, xd_dot, xd_ddot (N, 2), period and max_hz, for ``simulate`` and
-    :func:`pm2dof.analysis.excite.excite`."""
+    :func:`pm2dof.identification.excitation.excite`."""
     T = model.spec.sensing["sample_period"] if period is None else float(period)
     t = np.arange(int(round(exc.duration / T)) + 1) * T
     x, v, a = exc.evaluate(t)
@@ -214,9 +214,9 @@ def sample_function(model, independent, smooth_sign=None):
 def excitation_trajectory(model, excitation_file=None, duration=10.0):
     """(trajectory, description): the file's excitation (:func:`load_excitation`) sampled at
     the model's period, or without a file the default multi-sine of
-    :func:`pm2dof.analysis.identify.excitation` lasting ``duration`` s."""
+    :func:`pm2dof.identification.base.excitation` lasting ``duration`` s."""
     if excitation_file is None:
-        from .identify import excitation
+        from .base import excitation
         return excitation(model, duration=duration), f"the default {duration:g} s multi-sine"
     return trajectory_of(model, load_excitation(excitation_file, model)), str(excitation_file)
 
@@ -249,7 +249,7 @@ def objective_logdet(model, exc, samples=250, ident=None):
     at K = ``samples`` instants of one period, Coulomb columns smoothed as in the design
     (:func:`sample_function`, evaluated numerically); the quantity IPOPT's progress lines
     show. Recomputes the file's ``objective_logdet_*`` from its coefficients."""
-    from .identify import identifiability
+    from .base import identifiability
     I = (identifiability(model) if ident is None else ident)["independent"]
     t = np.arange(samples) / (samples * exc.base_hz)
     x, v, a = exc.evaluate(t)
@@ -373,7 +373,7 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         the same coefficients and ``info`` bit for bit (no wall time in it).
     """
     import casadi as ca
-    from .identify import identifiability
+    from .base import identifiability
     if not (base_hz > 0 and harmonics >= 1 and periods >= 1 and v_max > 0 and a_max > 0
             and 0 < tau_fraction <= 1 and radius > 0):
         raise ExcitationError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
@@ -541,7 +541,7 @@ def write_excitation(path, exc, model):
     """Write ``exc`` as TOML (``[excitation]`` coefficients; ``[design]`` its ``info``, a dict
     value such as ``ipopt`` or ``provenance`` as the sub-table ``[design.<key>]``),
     atomically. The text is a function of ``exc`` and the model's name only."""
-    from .results import write_atomic
+    from ..analysis.results import write_atomic
     lines = ["# pm2dof excitation: periodic finite Fourier series in task space (Swevers et al. "
              "1997)",
              "# x_j(t) = center_j + sum_l a_jl/w_l sin(w_l t) - b_jl/w_l cos(w_l t), "
@@ -607,7 +607,7 @@ def load_excitation(path, model=None):
 def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
                tau_fraction=0.5, seed=0, echo=print, progress=None):
     """``pm2dof identify --design-excitation --out FILE``: design, check at 1 ms, write."""
-    from .identify import excitation, identifiability
+    from .base import excitation, identifiability
     t0 = time.perf_counter()
     exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
                             v_max=v_max, a_max=a_max, tau_fraction=tau_fraction, seed=seed,

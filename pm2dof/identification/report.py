@@ -1,11 +1,11 @@
 # `pm2dof identify --data LOG`: run the identification pipeline on a log, print, save theta.
-"""Text and JSON reports of :func:`pm2dof.analysis.ident_data.identify_log`."""
+"""Text and JSON reports of :func:`pm2dof.identification.fit.identify_log`."""
 import numpy as np
 
 from ..core.errors import ArgumentError
 from ..control.simulate import theta_truth
-from .ident_data import identify_log
-from .ident_log import read_log
+from .fit import identify_log
+from .log import read_log
 
 __all__ = ["format_identification", "summary", "run_identify_data", "load_theta",
            "SIMULATED_SOURCE"]
@@ -109,9 +109,9 @@ def run_identify_data(model, path, *, save=None, as_json=False, cutoff_hz=None,
     """``pm2dof identify --data LOG``: read, identify, print (text or JSON), optionally save
     ``{"param_names", "theta0", ...}`` as JSON (the format ``--save`` always wrote); ``seed``
     reruns Table 3 with APD and NA using the identified theta."""
-    from .identify import identifiability
-    from .ident_data import MIN_JOINT_SPEED
-    from .results import dumps, provenance, write_json
+    from .base import identifiability
+    from .fit import MIN_JOINT_SPEED
+    from ..analysis.results import dumps, provenance, write_json
     log = read_log(path, time_tolerance=time_tolerance)
     if progress:
         progress(f"read {path}: {len(log.t)} rows; filtering, stacking the base regressor, "
@@ -122,7 +122,7 @@ def run_identify_data(model, path, *, save=None, as_json=False, cutoff_hz=None,
                        else min_joint_speed)
     s = summary(model, log, res, ident)
     if seed:
-        from .ident_study import format_seeded_table3, seeded_table3
+        from .monte_carlo import format_seeded_table3, seeded_table3
         if progress:
             progress("Table 3 with Tables 1-2 and with the identified theta")
         s["table3"] = seeded_table3(model, res["theta0"])
