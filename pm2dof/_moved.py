@@ -1,4 +1,4 @@
-# Old import paths (0.1's flat modules, 0.2's identification in analysis/): importing one fails naming the new place.
+# Old import paths (0.1's flat modules, 0.2's identification): each fails naming its new place.
 """pm2dof 0.2 moved its flat modules into layers (``core``, ``control``, ``analysis``, ...);
 pm2dof 0.3 moved identification out of ``analysis`` into its own sub-package,
 ``identification``.
@@ -32,7 +32,7 @@ MOVED = {
     "pm2dof._cbind": ("pm2dof.core._cbind", "from pm2dof.core import _cbind"),
     "pm2dof.experiment": ("pm2dof.analysis.experiment", "from pm2dof import table3"),
     "pm2dof.identify": ("pm2dof.identification.base",
-                        "from pm2dof.identification.base import identifiability, base_names",
+                        "from pm2dof.identification.base import identifiability, BaseParameters",
                         "0.2 (and again in 0.3)"),
     "pm2dof.report": ("pm2dof.analysis.report", "from pm2dof import model_report"),
     "pm2dof.results": ("pm2dof.analysis.results",
@@ -42,12 +42,12 @@ MOVED = {
     # 0.3: identification, from analysis/ into pm2dof.identification (one module per job)
     "pm2dof.analysis.identify": ("pm2dof.identification.base",
                                  "from pm2dof.identification.base import identifiability, "
-                                 "base_names", "0.3"),
+                                 "BaseParameters", "0.3"),
     "pm2dof.analysis.ident_log": ("pm2dof.identification.log",
                                   "from pm2dof import read_log, write_log, IdentLog, LogError",
                                   "0.3"),
     "pm2dof.analysis.excite": ("pm2dof.identification.excitation",
-                               "from pm2dof.identification.excitation import excite, measured_angles",
+                               "from pm2dof.identification.excitation import excite, multisine",
                                "0.3"),
     "pm2dof.analysis.ident_data": ("pm2dof.identification.fit",
                                    "from pm2dof.identification.fit import identify_log, "

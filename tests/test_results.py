@@ -6,7 +6,7 @@
   write itself, from the rename, from a bad payload or from an interrupt.
 * ``write_json``: parses back; numpy arrays and scalars are converted; an unserialisable object
   fails before the target is touched.
-* ``pm2dof table3 --save`` / ``identify --save`` / ``figures``: the JSON carries the numbers and
+* ``pm2dof table3 --save`` / ``identify fit --save`` / ``figures``: the JSON carries the numbers and
   the provenance (model file hash = the model spec's ``file_sha256``, formulation hash, git
   commit, versions, command line); every PNG carries the provenance in its text chunk.
 """
@@ -256,7 +256,7 @@ def test_cli_table3_save_from_a_shell(tmp_path, model):
 
 def test_cli_identify_save(tmp_path, model, capsys):
     out = tmp_path / "id.json"
-    assert cli.main(["identify", "--duration", "0.5", "--save", str(out)]) == 0
+    assert cli.main(["identify", "fit", "--duration", "3", "--save", str(out)]) == 0
     capsys.readouterr()
     d = json.loads(out.read_text())
     assert d["param_names"] == list(model.param_names)

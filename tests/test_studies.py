@@ -268,7 +268,7 @@ def test_study_rows_equal_simulate_bit_for_bit(name):
     s = read_study(STUDIES / f"{name}.toml", quick=True)
     rows = _all_rows(s)
     from pm2dof.identification.base import identifiability
-    N = identifiability(pm2dof.load_model(s.model_path))["null_space"]
+    N = identifiability(pm2dof.load_model(s.model_path)).null_space
     P = np.eye(N.shape[0]) - N @ N.T
     units = range(0, s.n_units, max(1, s.n_units // 9))
     for u in units:

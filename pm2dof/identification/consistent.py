@@ -2,8 +2,8 @@
 """Constrained least squares for a full, physically consistent theta (CasADi + IPOPT).
 
 The data determine only the base parameters pi = P theta (P: (r, p), the identity on the
-independent columns plus the folding ``beta`` of the dependent ones, from
-:func:`pm2dof.identification.base.identifiability`). A theta is physical when every leg's
+independent columns plus the folding ``beta`` of the dependent ones:
+:meth:`pm2dof.identification.base.BaseParameters.matrix`). A theta is physical when every leg's
 inertia matrix [[alpha_i, beta_i], [beta_i, gamma_i]] is positive semidefinite (alpha_i >= 0,
 gamma_i >= 0, alpha_i gamma_i - beta_i^2 >= 0) and every friction coefficient is >= 0.
 
@@ -21,20 +21,10 @@ squares is already physical and is kept exactly (stage 1 is skipped).
 """
 import numpy as np
 
-__all__ = ["base_map", "physical_constraints", "consistent_theta"]
+from .base import INERTIAL as _INERTIAL
+from .base import inertial_mask
 
-_INERTIAL = ("alpha", "beta", "gamma")
-
-
-def base_map(ident):
-    """P (r, p): base parameters pi = P theta (independent column i plus beta[i] . dependent)."""
-    p = len(ident["param_names"])
-    P = np.zeros((len(ident["independent"]), p))
-    for i, j in enumerate(ident["independent"]):
-        P[i, j] = 1.0
-    for k, d in enumerate(ident["dependent"]):
-        P[:, d] = ident["beta"][:, k]
-    return P
+__all__ = ["physical_constraints", "consistent_theta"]
 
 
 def _legs(names):
@@ -44,7 +34,7 @@ def _legs(names):
     while f"alpha{i}" in idx:
         legs.append(tuple(idx[f"{k}{i}"] for k in _INERTIAL))
         i += 1
-    friction = [j for j, n in enumerate(names) if not n.startswith(_INERTIAL)]
+    friction = [int(j) for j in np.flatnonzero(~inertial_mask(names))]
     return legs, friction
 
 
@@ -78,7 +68,7 @@ def _ipopt(casadi, x, f, g, lbg, ubg, x0, what):
     return sol, status
 
 
-def consistent_theta(A, b, ident, theta_nominal):
+def consistent_theta(A, b, base, theta_nominal):
     """The physically consistent least-squares theta.
 
     Parameters
@@ -88,8 +78,8 @@ def consistent_theta(A, b, ident, theta_nominal):
         :func:`pm2dof.identification.fit.weighted_ls`.
     b : ndarray (m,)
         Weighted task forces.
-    ident : dict
-        :func:`pm2dof.identification.base.identifiability`.
+    base : BaseParameters
+        The base parameters the columns of ``A`` are (:mod:`pm2dof.identification.base`).
     theta_nominal : array_like (p,)
         Tables 1-2: the point closest to which the invisible directions are fixed.
 
@@ -104,8 +94,8 @@ def consistent_theta(A, b, ident, theta_nominal):
         component of theta - theta_nominal in the null space of P, i.e. what stage 2 chose).
     """
     import casadi
-    names = list(ident["param_names"])
-    P = base_map(ident)
+    names = list(base.names)
+    P = base.matrix()
     r, p = P.shape
     th0 = np.asarray(theta_nominal, dtype=float)
     AP = A @ P

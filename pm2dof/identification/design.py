@@ -25,11 +25,11 @@ The model's Y, S, ik and singularity measures enter the optimisation as its gene
 (``casadi.external`` on the compiled library, derivatives by finite differences): nothing is
 re-derived. In the objective, the Coulomb columns use tanh(qd / 0.1 rad/s) for sign(qd): it
 keeps log det differentiable, and samples slower than 0.1 rad/s are left out by
-``identify --data`` anyway.
+``identify fit`` anyway.
 
 Every log det reported is one quantity, log det(Phi^T Phi / K): Phi the unscaled base regressor
 stacked over K samples, so that it does not grow with K. It is reported on two sample sets,
-each named where printed: the *objective* (what IPOPT maximises and its progress lines show:
+each named where printed: the *objective* (what IPOPT maximises and its progress bar shows:
 ``samples`` per period, Coulomb columns smoothed; IPOPT itself works on column-scaled Phi, which
 shifts log det by a constant) and the *run* (every 5th sample of the controller period over the
 whole run, exact sign: :func:`regressor_condition`).
@@ -43,10 +43,12 @@ else rounds differently from one machine to another (glibc's libm picks FMA vari
 measured 308 iterations with them switched off) still moves the result: a design is
 reproducible bit for bit on the same machine and install, which the file records
 (``[design.provenance]``).
+
+The file records its model relative to itself (:mod:`.model_ref`), so that it can be moved
+together with the model file.
 """
 import contextlib
 import json
-import math
 import platform
 import time
 from dataclasses import dataclass, field
@@ -55,13 +57,16 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from ..analysis.progress import bar
 from ..core.errors import Pm2dofError
+from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED
+from .model_ref import mismatch, model_entries
 
 __all__ = ["ExcitationError", "FourierExcitation", "design_excitation", "load_excitation",
            "write_excitation", "trajectory_of", "regressor_condition", "check_excitation",
-           "sample_function", "excitation_trajectory", "run_design", "objective_logdet",
-           "random_start", "IPOPT_OPTIONS", "design_provenance"]
+           "sample_function", "run_design", "objective_logdet", "random_start",
+           "IPOPT_OPTIONS", "design_provenance"]
 
 #: IPOPT's options of the design (``max_iter`` is an argument of :func:`design_excitation`);
 #: written to the file's ``[design.ipopt]``.
@@ -89,6 +94,9 @@ class FourierExcitation:
         Coefficients, m/s, per axis (x, y) and harmonic.
     info : dict
         What the design reported (limits, objective, condition numbers), for the file.
+    model : dict
+        The model a file records (``model``, ``model_name``, ``formulation_sha256``:
+        :mod:`.model_ref`) as read by :func:`load_excitation`; empty for a design in memory.
     """
     base_hz: float
     periods: int
@@ -96,6 +104,7 @@ class FourierExcitation:
     a: np.ndarray
     b: np.ndarray
     info: dict = field(default_factory=dict)
+    model: dict = field(default_factory=dict)
 
     harmonics = property(lambda self: self.a.shape[1])
     max_hz = property(lambda self: self.base_hz * self.harmonics, doc="highest harmonic, Hz")
@@ -128,7 +137,7 @@ def _basis(f0, L, t):
     return s / w, -c / w, c, s, -s * w, c * w
 
 
-def regressor_condition(model, ident, traj, every=5):
+def regressor_condition(model, base, traj, every=5):
     """Condition number of the column-scaled base regressor stacked over ``traj`` (every
     ``every``-th sample; desired motion, exact derivatives), and log det(Phi^T Phi / K) of the
     unscaled one. NumPy on the model's C functions (independent of the CasADi design graph).
@@ -137,7 +146,7 @@ def regressor_condition(model, ident, traj, every=5):
     -------
     cond, logdet : float
     """
-    I = ident["independent"]
+    I = list(base.independent)
     rows = [model.Y(model.ik(x), v, v, a)[:, I] for x, v, a in
             zip(traj.xd[::every], traj.xd_dot[::every], traj.xd_ddot[::every])]
     Phi = np.vstack(rows)
@@ -169,7 +178,7 @@ def check_excitation(model, exc, *, v_max, a_max, tau_limit, sing_min, radius, s
         tau = max(tau, float(np.abs(S @ np.linalg.solve(S.T @ S, u)).max()))
     out = {"speed": float(np.max(np.hypot(*v.T))), "acceleration": float(np.max(np.hypot(*a.T))),
            "torque": tau, "sing": sing,
-           "radius": float(np.max(np.hypot(*(x - _center(model)).T))),
+           "radius": float(np.max(np.hypot(*(x - region_center(model)).T))),
            "rest": float(np.abs(np.concatenate([v[0], a[0]])).max())}
     out["ok"] = (out["speed"] <= v_max and out["acceleration"] <= a_max and tau <= tau_limit
                  and sing >= sing_min and out["radius"] <= radius and out["rest"] < 1e-9)
@@ -211,26 +220,11 @@ def sample_function(model, independent, smooth_sign=None):
                         ext["singularity_measures"](q)])
 
 
-def excitation_trajectory(model, excitation_file=None, duration=10.0):
-    """(trajectory, description): the file's excitation (:func:`load_excitation`) sampled at
-    the model's period, or without a file the default multi-sine of
-    :func:`pm2dof.identification.base.excitation` lasting ``duration`` s."""
-    if excitation_file is None:
-        from .base import excitation
-        return excitation(model, duration=duration), f"the default {duration:g} s multi-sine"
-    return trajectory_of(model, load_excitation(excitation_file, model)), str(excitation_file)
-
-
-def _center(model):
-    t = next(iter(model.spec.trajectories.values()))
-    return (np.asarray(t["start"], float) + np.asarray(t["end"], float)) / 2
-
-
 def random_start(model, *, base_hz, harmonics, periods, v_max, a_max, radius, seed):
     """IPOPT's start: random coefficients (``numpy.random.default_rng(seed)``) with the rest
     conditions, around the middle c0 of the model's first move, scaled to 30 % of the speed,
     acceleration and radius limits. Returns a :class:`FourierExcitation`."""
-    L, c0 = int(harmonics), _center(model)
+    L, c0 = int(harmonics), region_center(model)
     rng = np.random.default_rng(seed)
     w = 2 * np.pi * base_hz * np.arange(1, L + 1)
     a0 = rng.normal(size=(2, L)) / np.arange(1, L + 1)
@@ -244,13 +238,12 @@ def random_start(model, *, base_hz, harmonics, periods, v_max, a_max, radius, se
     return FourierExcitation(base_hz, periods, c0.copy(), k * a0, k * b0)
 
 
-def objective_logdet(model, exc, samples=250, ident=None):
+def objective_logdet(model, exc, samples=250, base=None):
     """The design's objective at ``exc``: log det(Phi^T Phi / K) of the unscaled base regressor
     at K = ``samples`` instants of one period, Coulomb columns smoothed as in the design
-    (:func:`sample_function`, evaluated numerically); the quantity IPOPT's progress lines
-    show. Recomputes the file's ``objective_logdet_*`` from its coefficients."""
-    from .base import identifiability
-    I = (identifiability(model) if ident is None else ident)["independent"]
+    (:func:`sample_function`, evaluated numerically); the quantity IPOPT's progress bar
+    shows. Recomputes the file's ``objective_logdet_*`` from its coefficients."""
+    I = list((base_parameters(model) if base is None else base).independent)
     t = np.arange(samples) / (samples * exc.base_hz)
     x, v, a = exc.evaluate(t)
     Yv = np.array(sample_function(model, I, smooth_sign=MIN_JOINT_SPEED).map(samples)(
@@ -360,8 +353,9 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         concave here).
     max_iter : int
         IPOPT's iteration limit (its other options: :data:`IPOPT_OPTIONS`).
-    progress : callable(str), optional
-        Called with a line every 25 IPOPT iterations (the objective's log det, elapsed s).
+    progress : callable(str) or pm2dof.analysis.progress.Progress, optional
+        Stage lines; a :class:`~pm2dof.analysis.progress.Progress` also draws a bar of IPOPT's
+        iterations with the objective's log det as its postfix.
 
     Returns
     -------
@@ -373,7 +367,6 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         the same coefficients and ``info`` bit for bit (no wall time in it).
     """
     import casadi as ca
-    from .base import identifiability
     if not (base_hz > 0 and harmonics >= 1 and periods >= 1 and v_max > 0 and a_max > 0
             and 0 < tau_fraction <= 1 and radius > 0):
         raise ExcitationError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
@@ -383,14 +376,13 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
             "singularity_margin": singularity_margin, "radius": radius, "samples": int(samples),
             "constraint_samples": int(constraint_samples), "safety": safety, "seed": int(seed),
             "max_iter": int(max_iter)}
-    t_start = time.perf_counter()
-    ident = identifiability(model)
-    I, L = ident["independent"], int(harmonics)
+    base = base_parameters(model)
+    I, L = list(base.independent), int(harmonics)
     r = len(I)
     tau_lim = safety * tau_fraction * np.asarray(model.spec.limits["tau_max"], float)
     sing_min = (np.array([model.singularity_threshold, model.parallel_singularity_threshold])
                 + singularity_margin)
-    c0 = _center(model)
+    c0 = region_center(model)
     per_sample = sample_function(model, I, smooth_sign=MIN_JOINT_SPEED)
     z = ca.MX.sym("z", 4 * L + 2)
     A = ca.reshape(z[:2 * L], L, 2)
@@ -435,26 +427,26 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         progress(f"IPOPT: {4 * L + 2} coefficients, objective log det(Phi^T Phi / K) over "
                  f"{samples} samples per period, {len(lbg)} constraints at {constraint_samples} "
                  f"samples per period")
-    opts = {}
-    if progress:    # IPOPT's iterations reported as they happen (about a minute in all)
-        opts["iteration_callback"] = _IterationProgress(z.numel(), len(lbg), progress, t_start,
-                                                        to_logdet)
-    solver = ca.nlpsol("excitation", "ipopt", {"x": z, "f": objective, "g": ca.vertcat(*g)},
-                       {**opts, "ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
-                        "ipopt.max_iter": int(max_iter),
-                        **{f"ipopt.{k}": v for k, v in IPOPT_OPTIONS.items()}})
-    with _single_thread_blas() as blas_threads:
-        sol = solver(x0=z0, lbg=lbg, ubg=ubg)
+    with bar(progress, int(max_iter), "IPOPT", unit="it") as iterations:
+        # IPOPT's iterations shown as they happen (about a minute in all)
+        opts = ({"iteration_callback": _IterationProgress(z.numel(), len(lbg), iterations,
+                                                          to_logdet)} if progress else {})
+        solver = ca.nlpsol("excitation", "ipopt", {"x": z, "f": objective, "g": ca.vertcat(*g)},
+                           {**opts, "ipopt.print_level": 0, "print_time": False,
+                            "ipopt.sb": "yes", "ipopt.max_iter": int(max_iter),
+                            **{f"ipopt.{k}": v for k, v in IPOPT_OPTIONS.items()}})
+        with _single_thread_blas() as blas_threads:
+            sol = solver(x0=z0, lbg=lbg, ubg=ubg)
     zs = np.array(sol["x"]).ravel()
     stats = solver.stats()
     exc = _with_rest(FourierExcitation(base_hz, periods, zs[4 * L:], zs[:2 * L].reshape(2, L),
                                        zs[2 * L:4 * L].reshape(2, L)))
-    before = regressor_condition(model, ident, trajectory_of(model, start))
-    after = regressor_condition(model, ident, trajectory_of(model, exc))
+    before = regressor_condition(model, base, trajectory_of(model, start))
+    after = regressor_condition(model, base, trajectory_of(model, exc))
     info = {"objective": "log det(Phi^T Phi / K) of the base regressor (D-optimal)", **args,
             "region_center": c0.tolist(),
-            "objective_logdet_before": objective_logdet(model, start, samples, ident),
-            "objective_logdet_after": objective_logdet(model, exc, samples, ident),
+            "objective_logdet_before": objective_logdet(model, start, samples, base),
+            "objective_logdet_after": objective_logdet(model, exc, samples, base),
             "cond_before": before[0], "cond_after": after[0],
             "logdet_before": before[1], "logdet_after": after[1],
             "ipopt_status": stats["return_status"], "ipopt_iterations": stats["iter_count"],
@@ -467,13 +459,13 @@ def _iteration_progress_class():
     import casadi as ca
 
     class IterationProgress(ca.Callback):
-        """CasADi iteration callback: a progress line every ``every`` IPOPT iterations with
-        log det(Phi^T Phi / K) = -f + ``to_logdet`` (f IPOPT's objective, column-scaled)."""
+        """CasADi iteration callback: one step of the bar ``iterations`` per IPOPT iteration,
+        its postfix log det(Phi^T Phi / K) = -f + ``to_logdet`` (f IPOPT's objective,
+        column-scaled)."""
 
-        def __init__(self, nx, ng, progress, t_start, to_logdet, every=25):
+        def __init__(self, nx, ng, iterations, to_logdet):
             ca.Callback.__init__(self)
-            self.nx, self.ng, self.progress, self.t_start = nx, ng, progress, t_start
-            self.to_logdet, self.every, self.calls = to_logdet, every, 0
+            self.nx, self.ng, self.iterations, self.to_logdet = nx, ng, iterations, to_logdet
             self.construct("excitation_progress", {})
 
         def get_n_in(self):
@@ -499,12 +491,10 @@ def _iteration_progress_class():
             return ca.Sparsity(0, 0)
 
         def eval(self, arg):
-            self.calls += 1
-            k = self.calls - 1      # IPOPT calls back at its iterations 0, 1, 2, ...
-            if k > 0 and k % self.every == 0:
-                logdet = -float(arg[1]) + self.to_logdet
-                self.progress(f"IPOPT iteration {k}: objective log det "
-                              f"{logdet:.3f}, {time.perf_counter() - self.t_start:.0f} s")
+            # IPOPT calls back at its iterations 0, 1, 2, ...: the bar counts 1, 2, ...
+            logdet = -float(arg[1]) + self.to_logdet
+            self.iterations.set_postfix_str(f"objective log det {logdet:.3f}", refresh=False)
+            self.iterations.update(1)
             return [0]
 
     return IterationProgress
@@ -538,16 +528,19 @@ def _toml_value(v):
 
 
 def write_excitation(path, exc, model):
-    """Write ``exc`` as TOML (``[excitation]`` coefficients; ``[design]`` its ``info``, a dict
+    """Write ``exc`` as TOML (``[excitation]``: the model, :mod:`.model_ref`, a model file by its
+    path relative to ``path``'s folder, and the coefficients; ``[design]`` its ``info``, a dict
     value such as ``ipopt`` or ``provenance`` as the sub-table ``[design.<key>]``),
-    atomically. The text is a function of ``exc`` and the model's name only."""
+    atomically. The text is a function of ``exc``, the model and the file's folder only."""
     from ..analysis.results import write_atomic
+    entries = model_entries(model, Path(path).parent)
     lines = ["# pm2dof excitation: periodic finite Fourier series in task space (Swevers et al. "
              "1997)",
              "# x_j(t) = center_j + sum_l a_jl/w_l sin(w_l t) - b_jl/w_l cos(w_l t), "
              "w_l = 2 pi l base_hz; j = x, y",
-             "# run it: pm2dof identify --excite --excitation THIS_FILE --out run.csv", "",
-             "[excitation]", f'model = "{model.name}"', f"base_hz = {exc.base_hz!r}",
+             "# run it: pm2dof identify excite --excitation THIS_FILE --out run.csv", "",
+             "[excitation]", *(f"{k} = {_toml_value(v)}" for k, v in entries.items()),
+             f"base_hz = {exc.base_hz!r}",
              f"periods = {int(exc.periods)}", f"center = {_toml_list(exc.center)}   # m",
              f"a_x = {_toml_list(exc.a[0])}   # m/s", f"a_y = {_toml_list(exc.a[1])}",
              f"b_x = {_toml_list(exc.b[0])}   # m/s", f"b_y = {_toml_list(exc.b[1])}", ""]
@@ -564,6 +557,19 @@ def write_excitation(path, exc, model):
 
 def load_excitation(path, model=None):
     """Read an excitation file (TOML, as :func:`write_excitation` writes it).
+
+    Parameters
+    ----------
+    path : str or Path
+    model : Model, optional
+        Check that the file was made for this model (:func:`.model_ref.mismatch`: by name and,
+        if recorded, formulation hash; files that name their model by name only are checked
+        by name).
+
+    Returns
+    -------
+    FourierExcitation
+        Its ``model``: the model entries the file records.
 
     Raises
     ------
@@ -589,14 +595,16 @@ def load_excitation(path, model=None):
         raise ExcitationError(f"{path}: [excitation] misses key {exc.args[0]!r}") from None
     except (TypeError, ValueError) as exc:
         raise ExcitationError(f"{path}: [excitation] has a malformed value ({exc})") from None
-    if model is not None and e.get("model", model.name) != model.name:
-        raise ExcitationError(f"{path}: designed for model {e['model']!r}, not {model.name!r}")
+    entries = {k: str(e[k]) for k in ("model", "model_name", "formulation_sha256") if k in e}
+    msg = None if model is None else mismatch(model, entries, Path(path).parent, str(path))
+    if msg:
+        raise ExcitationError(msg)
     if not (f0 > 0 and periods >= 1 and center.shape == (2,) and a.shape == b.shape
             and a.shape[1] >= 1 and np.isfinite(a).all() and np.isfinite(b).all()
             and np.isfinite(center).all()):
         raise ExcitationError(f"{path}: need base_hz > 0, periods >= 1, center of 2 numbers and "
                               f"a_x, a_y, b_x, b_y of one finite number per harmonic")
-    exc = FourierExcitation(f0, periods, center, a, b, dict(d.get("design", {})))
+    exc = FourierExcitation(f0, periods, center, a, b, dict(d.get("design", {})), entries)
     _, v, acc = exc.evaluate([0.0])
     if np.abs(np.concatenate([v[0], acc[0]])).max() > 1e-9 * (1 + np.abs(a).max() * f0):
         raise ExcitationError(f"{path}: the motion does not start at rest (sum of a_x, a_y and "
@@ -606,8 +614,8 @@ def load_excitation(path, model=None):
 
 def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
                tau_fraction=0.5, seed=0, echo=print, progress=None):
-    """``pm2dof identify --design-excitation --out FILE``: design, check at 1 ms, write."""
-    from .base import excitation, identifiability
+    """``pm2dof identify design --out FILE``: design, check at 1 ms, write."""
+    from .excitation import multisine
     t0 = time.perf_counter()
     exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
                             v_max=v_max, a_max=a_max, tau_fraction=tau_fraction, seed=seed,
@@ -619,8 +627,8 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
                            sing_min=max(model.singularity_threshold,
                                         model.parallel_singularity_threshold) + 0.1,
                            radius=i["radius"])
-    ident = identifiability(model)
-    default = regressor_condition(model, ident, excitation(model, duration=exc.duration))
+    default = regressor_condition(model, base_parameters(model),
+                                  multisine(model, duration=exc.duration))
     write_excitation(out, exc, model)
     echo(f"wrote {out}: {exc.harmonics} harmonics of {exc.base_hz:g} Hz (up to {exc.max_hz:g} "
          f"Hz), {exc.periods} periods = {exc.duration:g} s; IPOPT {i['ipopt_status']} after "
@@ -628,11 +636,11 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
     echo(f"objective: {i['objective']}")
     echo(f"log det(Phi^T Phi / K) at the start -> optimised: {i['objective_logdet_before']:.2f} "
          f"-> {i['objective_logdet_after']:.2f} on the objective's samples ({i['samples']} per "
-         f"period, Coulomb smoothed: the progress lines), {i['logdet_before']:.2f} -> "
+         f"period, Coulomb smoothed: the progress bar), {i['logdet_before']:.2f} -> "
          f"{i['logdet_after']:.2f} on the run's (every 5th sample, exact sign)")
     echo(f"condition number of the column-scaled base regressor on the run's samples: "
          f"{i['cond_before']:.4g} at the start -> {i['cond_after']:.4g} optimised (the default "
-         f"multi-sine of --excite: {default[0]:.4g})")
+         f"multi-sine of excite: {default[0]:.4g})")
     echo(f"checked every 1 ms: speed {chk['speed']:.3f} <= {v_max:g} m/s, acceleration "
          f"{chk['acceleration']:.2f} <= {a_max:g} m/s^2, torque (Tables 1-2, min-norm) "
          f"{chk['torque']:.2f} N m, singularity measures >= {chk['sing']:.3f}, "

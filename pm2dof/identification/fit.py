@@ -1,7 +1,9 @@
 # Identification from a log: filter, differentiate, stack the base regressor, weighted least squares.
-"""``pm2dof identify --data LOG``: least squares for the base parameters from measured data.
+"""``pm2dof identify fit``: least squares for the base parameters from a log.
 
-The pipeline (each step a function below; :func:`identify_log` runs them all):
+The one pipeline of pm2dof's identification: a measured log (``fit LOG``) and a simulated
+excitation run (``fit`` without a log, :func:`pm2dof.identification.excitation.simulated_log`)
+go through it alike. Each step is a function below; :func:`identify_log` runs them all:
 
 1. ``log_poses``: xe = fk(qa) per row, the passive angles from geometry (checks the log).
 2. :func:`lowpass`: a zero-phase Butterworth low-pass (``scipy.signal.butter`` +
@@ -27,8 +29,9 @@ import math
 
 import numpy as np
 
-from .log import LogError, log_poses
 from ..core.errors import ArgumentError
+from .base import inertial_mask
+from .log import LogError, log_poses
 
 __all__ = ["lowpass", "choose_cutoff", "differentiate", "stack_regressor", "weighted_ls",
            "weak_directions", "identify_log", "CUTOFF_FACTOR", "MIN_JOINT_SPEED"]
@@ -73,7 +76,7 @@ def zero_phase(sos, x):
 def choose_cutoff(log, xe=None, factor=CUTOFF_FACTOR):
     """The low-pass cutoff for ``log``: ``factor`` x the highest excitation frequency.
 
-    The band is the log's metadata ``excitation_max_hz`` (written by ``--excite``); else it
+    The band is the log's metadata ``excitation_max_hz`` (written by ``excite``); else it
     is estimated from the data: the frequency below which 99.99 % of the power of the
     positions xe (N, 2) (mean removed) lies. Capped at 0.4 of the Nyquist frequency.
 
@@ -108,15 +111,15 @@ def differentiate(x, T):
     return v, a
 
 
-def stack_regressor(model, ident, t, xe, tau, cutoff_hz, *, decimate=None,
+def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
                     min_joint_speed=MIN_JOINT_SPEED, order=FILTER_ORDER):
     """Steps 2-5 of the pipeline: the filtered, decimated base regressor and task force.
 
     Parameters
     ----------
     model : Model
-    ident : dict
-        :func:`pm2dof.identification.base.identifiability` (the base columns).
+    base : BaseParameters
+        The base columns (:func:`pm2dof.identification.base.base_parameters`).
     t : ndarray (N,)
         Sample times, s (regular).
     xe : ndarray (N, 2)
@@ -138,7 +141,7 @@ def stack_regressor(model, ident, t, xe, tau, cutoff_hz, *, decimate=None,
         left out as slow).
     """
     T = float(np.median(np.diff(t)))
-    N, I = len(t), ident["independent"]
+    N, I = len(t), list(base.independent)
     sos = lowpass(cutoff_hz, T, order)
     xf = zero_phase(sos, xe)
     v, a = differentiate(xf, T)
@@ -246,7 +249,7 @@ def weak_directions(cov, estimate, names, rel=0.1):
     list of (rel_2sigma, description), largest first
     """
     est = np.abs(np.asarray(estimate, dtype=float))
-    inertial = np.array([n.startswith(("alpha", "beta", "gamma")) for n in names])
+    inertial = inertial_mask(names)
     s = est.copy()
     for grp in (inertial, ~inertial):
         if grp.any():
@@ -265,7 +268,7 @@ def weak_directions(cov, estimate, names, rel=0.1):
     return out
 
 
-def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
+def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
                  decimate=None, min_joint_speed=MIN_JOINT_SPEED, consistent=True):
     """The whole pipeline on one log: base parameters with ±2 sigma, and a physical theta.
 
@@ -274,8 +277,8 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
     model : Model
     log : IdentLog
         Checked against the model by :func:`pm2dof.identification.log.log_poses`.
-    ident : dict, optional
-        :func:`pm2dof.identification.base.identifiability` (computed if not given).
+    base : BaseParameters, optional
+        :func:`pm2dof.identification.base.base_parameters` (computed if not given).
     cutoff_hz : float, optional
         Low-pass cutoff (default :func:`choose_cutoff`: ``factor`` x the excitation band).
     decimate : int, optional
@@ -288,7 +291,8 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
     Returns
     -------
     dict
-        ``names`` (base parameters, readable), ``independent_names``, ``estimate`` (r,),
+        ``base`` (the :class:`~pm2dof.identification.base.BaseParameters`), ``names`` (base
+        parameters, readable), ``independent_names``, ``estimate`` (r,),
         ``std`` (r,) 1 sigma, ``nominal`` (r,) Tables 1-2 folded, ``theta_ls`` (p,) full theta
         with the dependent parameters at nominal, ``consistent`` (dict of
         :func:`pm2dof.identification.consistent.consistent_theta`, or None), ``theta0`` (p,) the
@@ -302,20 +306,18 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
         The log does not fit the model (see ``log_poses``), or is too short, or does not
         excite every base parameter (names the directions).
     """
-    from .base import base_names, identifiability
-    ident = identifiability(model) if ident is None else ident
-    I, D, beta = ident["independent"], ident["dependent"], ident["beta"]
-    pnames = list(ident["param_names"])
-    inames = [pnames[i] for i in I]
+    from .base import base_parameters
+    base = base_parameters(model) if base is None else base
+    inames = base.independent_names
     xe, _ = log_poses(model, log)
     if cutoff_hz is None:
         cutoff_hz, band, how = choose_cutoff(log, xe, factor)
     else:
         band, how = None, "given"
-    st = stack_regressor(model, ident, log.t, xe, log.tau, cutoff_hz, decimate=decimate,
+    st = stack_regressor(model, base, log.t, xe, log.tau, cutoff_hz, decimate=decimate,
                          min_joint_speed=min_joint_speed)
     K = len(st["t"])
-    r = len(I)
+    r = base.r
     src = log.source
     if 2 * K <= r:
         raise LogError(f"{src}: too short to determine the {r} base parameters: {K} usable "
@@ -332,8 +334,7 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
                        f"{sv[0] / max(sv[-1], 1e-300):.3g}; not seen: {', '.join(unseen)}")
     ls = weighted_ls(st["Phi"], st["u"])
     nominal = model.theta_nominal
-    theta_ls = nominal.copy()
-    theta_ls[I] = ls["estimate"] - beta @ nominal[D]
+    theta_ls = base.unfold(ls["estimate"], nominal)
     warnings = []
     if log.ignored:
         warnings.append(f"columns not used: {', '.join(log.ignored)}")
@@ -350,19 +351,19 @@ def identify_log(model, log, *, ident=None, cutoff_hz=None, factor=CUTOFF_FACTOR
         warnings.append(f"{int(sat.any(axis=1).sum())} rows have a torque at its limit "
                         f"(tau_max): if the drive clipped it, the logged torque is not the "
                         f"applied one")
-    out = {"names": base_names(ident), "independent_names": inames,
+    out = {"base": base, "names": base.labels(), "independent_names": inames,
            "estimate": ls["estimate"], "std": ls["std"], "cov": ls["cov"],
-           "nominal": nominal[I] + beta @ nominal[D], "theta_ls": theta_ls,
+           "nominal": base.fold(nominal), "theta_ls": theta_ls,
            "cutoff_hz": float(cutoff_hz), "band_hz": band, "band_from": how,
            "decimate": st["decimate"], "samples": K, "left_out_slow": st["n_slow"],
            "min_joint_speed": min_joint_speed, "rms": ls["rms"], "r2": ls["r2"],
            "lag1": ls["lag1"], "inflation": ls["inflation"],
            "condition_number": float(sv[0] / sv[-1]), "duration_s": log.duration,
            "warnings": warnings, "consistent": None, "theta0": theta_ls,
-           "param_names": pnames}
+           "param_names": list(base.names)}
     if consistent:
         from .consistent import consistent_theta
-        c = consistent_theta(ls["A"], ls["b"], ident, nominal)
+        c = consistent_theta(ls["A"], ls["b"], base, nominal)
         out["consistent"] = c
         out["theta0"] = c["theta"]
         if any(not s.startswith(("Solve_Succeeded", "Solved_To_Acceptable", "not needed"))

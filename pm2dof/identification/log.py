@@ -1,5 +1,5 @@
 # Identification logs: the measured encoder angles and torques of a run, read, written and checked.
-"""The log format of ``pm2dof identify --data`` (README, "Identification from logs").
+"""The log format of ``pm2dof identify fit LOG`` (README, "Identification from logs").
 
 A log is a table with one row per control sample:
 
@@ -14,13 +14,15 @@ column         unit      meaning
 
 CSV (``.csv``: optional ``# key = value`` lines, then a header row, then numbers) or Parquet
 (``.parquet``: the same columns, metadata in the schema as ``pm2dof.<key>``). Column order is
-free. Metadata keys written by :func:`write_log`: ``model`` (name of the model file's robot),
-``n_legs``, ``sample_period`` and, for simulated logs, what produced them.
+free. Metadata keys written by ``pm2dof identify excite``: the model (``model``: a shipped model's
+name or the model file's path relative to the log's folder; ``model_name``,
+``formulation_sha256``: :mod:`.model_ref`), ``n_legs``, ``sample_period`` and what produced
+the log.
 
 :func:`read_log` checks the format (columns, numbers, time); :func:`log_poses` checks the log
-against a model (leg count, model name, every row inside the workspace and clear of both
-singularity thresholds, encoders consistent with the geometry). Both raise :class:`LogError`
-naming the file, the row (1-based, data rows) and the column.
+against a model (leg count, the recorded model, every row inside the workspace and clear of
+both singularity thresholds, encoders consistent with the geometry). Both raise
+:class:`LogError` naming the file, the row (1-based, data rows) and the column.
 """
 import csv
 import io
@@ -30,10 +32,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import ClosureError, Pm2dofError, WorkspaceError
 from ..analysis.results import write_atomic
+from ..core.errors import ClosureError, Pm2dofError, WorkspaceError
+from .model_ref import mismatch, rebase
 
-__all__ = ["LogError", "IdentLog", "read_log", "write_log", "log_poses", "MIN_ROWS"]
+__all__ = ["LogError", "IdentLog", "read_log", "write_log", "log_poses", "log_folder",
+           "MIN_ROWS"]
 
 #: fewest rows a log may have (the zero-phase filter needs a few hundred samples to settle)
 MIN_ROWS = 50
@@ -101,6 +105,13 @@ class IdentLog:
             if arr is not None:
                 out.update({f"{name}{i + 1}": arr[:, i] for i in range(n)})
         return out
+
+
+def log_folder(log):
+    """The folder of the file ``log`` was read from (where its relative ``model`` path starts),
+    or None for a log that was not read from a file."""
+    p = Path(log.source)
+    return p.parent if p.is_file() else None
 
 
 def _row(log_t, k):
@@ -259,16 +270,20 @@ def write_log(path, log):
     """Write ``log`` (an :class:`IdentLog`) as CSV or Parquet (by the suffix), atomically.
 
     Numbers are written as the shortest decimal that reads back as the same float64 (Python's
-    repr), so reading the file gives the same values bit for bit.
+    repr), so reading the file gives the same values bit for bit. A model file recorded in the
+    metadata (``model``) is written relative to the new file's folder (:mod:`.model_ref`).
     """
     path = Path(path)
     cols = log.columns()
+    meta = dict(log.meta)
+    if "model" in meta:
+        meta["model"] = rebase(meta["model"], log_folder(log), path.parent)
     suffix = path.suffix.lower()
     if suffix == ".csv":
         buf = io.StringIO()
         buf.write("# pm2dof identification log: t s, qa rad, tau N*m (held until the next "
                   "row), qb rad\n")
-        for k, v in log.meta.items():
+        for k, v in meta.items():
             buf.write(f"# {k} = {v}\n")
         buf.write(",".join(cols) + "\n")
         data = np.column_stack(list(cols.values()))
@@ -280,7 +295,7 @@ def write_log(path, log):
         import pyarrow.parquet as pq
         table = pa.table({k: pa.array(np.asarray(v)) for k, v in cols.items()},
                          metadata={f"pm2dof.{k}".encode(): str(v).encode()
-                                   for k, v in log.meta.items()})
+                                   for k, v in meta.items()})
         sink = pa.BufferOutputStream()
         pq.write_table(table, sink)
         write_atomic(path, sink.getvalue().to_pybytes())
@@ -308,17 +323,17 @@ def log_poses(model, log, *, encoder_tolerance=2e-3):
     Raises
     ------
     LogError
-        Another leg count or model (by name), a row outside the workspace or too close to a
+        Another leg count, another recorded model (by name or formulation hash:
+        :func:`.model_ref.mismatch`), a row outside the workspace or too close to a
         singularity, an encoder inconsistent with the others (names the row and column).
     """
     src, n = log.source, model.n_legs
     if log.n_legs != n:
         raise LogError(f"{src}: the log has {log.n_legs} legs (qa1..qa{log.n_legs}), model "
                        f"{model.name!r} has {n}: a log of another robot")
-    name = log.meta.get("model")
-    if name is not None and name != model.name:
-        raise LogError(f"{src}: the log was written for model {name!r}, not {model.name!r} "
-                       f"(metadata 'model'); pass --model for that robot")
+    msg = mismatch(model, log.meta, log_folder(log), src)
+    if msg:
+        raise LogError(msg)
     N = len(log.t)
     xe, q = np.empty((N, 2)), np.empty((N, 2 * n))
     sing = np.empty(2)

@@ -1,5 +1,5 @@
 # How good is identification from logs? Monte Carlo over plant truths and encoder noise, against the targets.
-"""``pm2dof identify --monte-carlo N --excitation FILE``: the issue's targets, measured.
+"""``pm2dof identify monte-carlo N --excitation FILE``: the issue's targets, measured.
 
 Each seed draws a plant truth around the model file's ``[plant]`` (every bare-link inertia,
 viscous, Coulomb and Stribeck coefficient scaled by 1 + 0.1 N(0, 1), the payload mass
@@ -20,11 +20,12 @@ import math
 
 import numpy as np
 
-from ..core.errors import ArgumentError
+from ..analysis.progress import bar
 from ..control.simulate import plant_truth, theta_truth
+from ..core.errors import ArgumentError
+from .base import base_parameters, inertial_mask, region_center
 from .excitation import excite
 from .fit import identify_log
-from .base import base_names, identifiability
 
 __all__ = ["random_truth", "plant_task_force", "torque_error", "monte_carlo",
            "format_monte_carlo", "substep_sensitivity", "seeded_table3", "format_seeded_table3",
@@ -52,9 +53,7 @@ def plant_task_force(model, truth, q, xed, xedd):
     the plant's friction f_i = (fc_i + fs_i / (1 + (v/vs)^2)) v / sqrt(v^2 + eps^2) + fv_i v
     (derive/plant.py), v = qd_a,i."""
     th = theta_truth(model, truth).copy()
-    names = model.param_names
-    fric = [j for j, nm in enumerate(names) if not nm.startswith(("alpha", "beta", "gamma"))]
-    th[fric] = 0.0
+    th[~inertial_mask(model.param_names)] = 0.0
     S = model.S(q)
     v = S @ xed
     eps, vs = truth["coulomb_smoothing_velocity"], truth["stribeck_velocity"]
@@ -69,8 +68,7 @@ def torque_error(model, theta, truth, n=400, seed=0, radius=0.05, speed=0.3, acc
     the model's first move, velocities N(0, speed) m/s, accelerations N(0, accel) m/s^2 per
     axis."""
     rng = np.random.default_rng(seed)
-    t = next(iter(model.spec.trajectories.values()))
-    c = (np.asarray(t["start"], float) + np.asarray(t["end"], float)) / 2
+    c = region_center(model)
     num = den = 0.0
     while n > 0:
         r, phi = radius * math.sqrt(rng.uniform()), rng.uniform(0, 2 * math.pi)
@@ -87,24 +85,21 @@ def torque_error(model, theta, truth, n=400, seed=0, radius=0.05, speed=0.3, acc
     return math.sqrt(num / den)
 
 
-def _one(model, ident, traj, truth, rng, noise_counts, identify_kw):
+def _one(model, base, traj, truth, rng, noise_counts, identify_kw):
     log = excite(model, traj, truth=truth)
     if noise_counts > 0:
         step = 2 * math.pi / model.spec.sensing["encoder_counts_per_rev"]
         log = type(log)(t=log.t, qa=log.qa + noise_counts * step * rng.normal(size=log.qa.shape),
                         tau=log.tau, meta=log.meta)
-    res = identify_log(model, log, ident=ident, **identify_kw)
-    th = theta_truth(model, truth)
-    I, D, beta = ident["independent"], ident["dependent"], ident["beta"]
-    base = th[I] + beta @ th[D]
-    names = res["independent_names"]
-    inert = np.array([nm.startswith(("alpha", "beta", "gamma")) for nm in names])
-    err = res["estimate"] - base
-    large = inert & (np.abs(base) > 0.1 * np.abs(base[inert]).max())
-    return {"estimate": res["estimate"], "truth": base, "std": res["std"],
-            "inertial_vector": float(np.linalg.norm(err[inert]) / np.linalg.norm(base[inert])),
-            "inertial_each": float(np.max(np.abs(err[large] / base[large]))),
-            "friction": float(np.max(np.abs(err[~inert] / base[~inert]))),
+    res = identify_log(model, log, base=base, **identify_kw)
+    pi = base.fold(theta_truth(model, truth))
+    inert = base.inertial
+    err = res["estimate"] - pi
+    large = inert & (np.abs(pi) > 0.1 * np.abs(pi[inert]).max())
+    return {"estimate": res["estimate"], "truth": pi, "std": res["std"],
+            "inertial_vector": float(np.linalg.norm(err[inert]) / np.linalg.norm(pi[inert])),
+            "inertial_each": float(np.max(np.abs(err[large] / pi[large]))),
+            "friction": float(np.max(np.abs(err[~inert] / pi[~inert]))),
             "torque": torque_error(model, res["theta0"], truth),
             "covered": np.abs(err) <= 2 * res["std"], "theta0": res["theta0"],
             "large": large}
@@ -123,6 +118,8 @@ def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", iden
         only the encoder noise differs).
     noise_counts : float
         Encoder noise added to the logged angles, counts rms (0: quantisation only).
+    progress : callable(str) or pm2dof.analysis.progress.Progress, optional
+        A :class:`~pm2dof.analysis.progress.Progress` draws a bar over the seeds.
 
     Returns
     -------
@@ -130,16 +127,18 @@ def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", iden
         Per-seed arrays of every metric, the names, the coverage per base parameter, and
         the medians and 90th percentiles.
     """
-    ident = identifiability(model)
+    base = base_parameters(model)
     runs = []
-    for s in range(seeds):
-        rng = np.random.default_rng(1000 + s)
-        tr = random_truth(model, rng) if truth == "random" else plant_truth(model)
-        runs.append(_one(model, ident, traj, tr, rng, noise_counts, identify_kw or {}))
-        if progress and (s + 1) % 10 == 0:
-            progress(f"{s + 1} of {seeds} seeds")
+    with bar(progress, seeds, "Monte Carlo", unit="seed") as done:
+        for s in range(seeds):
+            rng = np.random.default_rng(1000 + s)
+            tr = random_truth(model, rng) if truth == "random" else plant_truth(model)
+            runs.append(_one(model, base, traj, tr, rng, noise_counts, identify_kw or {}))
+            done.set_postfix_str(f"inertial error {100 * runs[-1]['inertial_vector']:.2f} %",
+                                 refresh=False)
+            done.update(1)
     out = {"seeds": seeds, "noise_counts": noise_counts, "truth": truth,
-           "names": base_names(ident),
+           "names": base.labels(),
            "coverage": np.mean([r["covered"] for r in runs], axis=0),
            "large_inertial": runs[0]["large"]}
     for k in ("inertial_vector", "inertial_each", "friction", "torque"):
@@ -185,23 +184,18 @@ def substep_sensitivity(model, other, traj, seeds=10, *, noise_counts=0.5, ident
     """
     if list(other.param_names) != list(model.param_names):
         raise ArgumentError("the two models must have the same parameters")
-    ident = identifiability(model)
+    base = base_parameters(model)
     changes, worst = [], []
     for s in range(seeds):
         est = []
         for mdl in (model, other):
             rng = np.random.default_rng(1000 + s)
             tr = random_truth(model, rng)
-            est.append(_one(mdl, ident, traj, tr, rng, noise_counts, identify_kw or {}))
+            est.append(_one(mdl, base, traj, tr, rng, noise_counts, identify_kw or {}))
         d = (est[1]["estimate"] - est[0]["estimate"]) / np.abs(est[0]["estimate"])
         changes.append(d)
-        worst.append(float(np.max(np.abs(d[est[0]["large"] | _friction_mask(ident)]))))
-    return {"names": base_names(ident), "change": np.array(changes), "max_large": np.array(worst)}
-
-
-def _friction_mask(ident):
-    names = [ident["param_names"][i] for i in ident["independent"]]
-    return np.array([not n.startswith(("alpha", "beta", "gamma")) for n in names])
+        worst.append(float(np.max(np.abs(d[est[0]["large"] | ~base.inertial]))))
+    return {"names": base.labels(), "change": np.array(changes), "max_large": np.array(worst)}
 
 
 def seeded_table3(model, theta):
@@ -232,14 +226,21 @@ def format_seeded_table3(tab):
     return "\n".join(lines)
 
 
-def run_monte_carlo(model, seeds, *, excitation_file=None, duration=10.0, as_json=False,
-                    echo=print, progress=None):
-    """``pm2dof identify --monte-carlo N [--excitation FILE]``: the targets table."""
-    from .design import excitation_trajectory
+def run_monte_carlo(seeds, *, model=None, generated=None, excitation_file=None,
+                    duration=None, as_json=False, echo=print, progress=None):
+    """``pm2dof identify monte-carlo N [--excitation FILE]``: the targets table. The model is
+    the one the excitation file records unless ``model`` is given (then it must be that one);
+    without a file the default multi-sine of ``duration`` s runs on ``model``."""
     from ..analysis.results import dumps
-    traj, _ = excitation_trajectory(model, excitation_file, duration)
+    from .excitation import DEFAULT_DURATION, excitation_trajectory, model_of_excitation
+    if seeds < 1:
+        raise ArgumentError(f"monte-carlo needs N >= 1 seeds, got {seeds}")
+    model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
+    traj, what = excitation_trajectory(model, excitation_file,
+                                       DEFAULT_DURATION if duration is None else duration)
     if progress:
-        progress(f"{seeds} seeds: random plant truth and encoder noise, excite, identify")
+        progress(f"{seeds} seeds of {what}: random plant truth and encoder noise, excite, "
+                 f"identify")
     mc = monte_carlo(model, traj, seeds, progress=progress)
     if as_json:
         echo(dumps({k: v for k, v in mc.items() if k != "large_inertial"}))

@@ -1,25 +1,21 @@
-# `pm2dof identify --data LOG`: run the identification pipeline on a log, print, save theta.
-"""Text and JSON reports of :func:`pm2dof.identification.fit.identify_log`."""
+# `pm2dof identify fit [LOG]`: run the identification pipeline on a log, print, save theta.
+"""Text and JSON reports of :func:`pm2dof.identification.fit.identify_log`, and
+``pm2dof identify fit``: a log read from a file and a simulated excitation run go through the
+same pipeline and the same report."""
 import numpy as np
 
-from ..core.errors import ArgumentError
 from ..control.simulate import theta_truth
+from ..core.errors import ArgumentError
 from .fit import identify_log
-from .log import read_log
+from .log import LogError, log_folder, read_log
 
-__all__ = ["format_identification", "summary", "run_identify_data", "load_theta",
-           "SIMULATED_SOURCE"]
+__all__ = ["format_identification", "summary", "run_fit", "load_theta", "SIMULATED_SOURCE"]
 
 #: metadata ``source`` of a log simulated with the model file's [plant] (then the truth is known)
 SIMULATED_SOURCE = "simulated plant ([plant] of the model file)"
 
 
-def _truth_base(model, res, ident):
-    tr = theta_truth(model)
-    return tr[ident["independent"]] + ident["beta"] @ tr[ident["dependent"]]
-
-
-def summary(model, log, res, ident=None):
+def summary(model, log, res):
     """JSON-ready numbers of one identification (the base parameters, the physical theta,
     the filter and the residual statistics; the plant truth if the log is simulated with the
     model file's [plant])."""
@@ -41,14 +37,14 @@ def summary(model, log, res, ident=None):
         out["physical"] = {"base": c["base"], "active_constraints": c["active"],
                            "ipopt_status": list(c["status"]),
                            "objective_increase": c["objective"] - c["unconstrained_objective"]}
-    if ident is not None and log.meta.get("source") == SIMULATED_SOURCE:
-        out["truth"] = _truth_base(model, res, ident)
+    if log.meta.get("source") == SIMULATED_SOURCE:
+        out["truth"] = res["base"].fold(theta_truth(model))
     return out
 
 
-def format_identification(model, log, res, ident=None):
-    """The printed report of ``pm2dof identify --data``."""
-    s = summary(model, log, res, ident)
+def format_identification(model, log, res):
+    """The printed report of ``pm2dof identify fit``."""
+    s = summary(model, log, res)
     f = s["filter"]
     band = (f"{f['cutoff_hz']:.4g} Hz = {f['cutoff_hz'] / f['band_hz']:.3g} x the excitation "
             f"band {f['band_hz']:.4g} Hz ({f['band_from']})" if f["band_hz"] else
@@ -103,30 +99,71 @@ def format_identification(model, log, res, ident=None):
     return "\n".join(lines)
 
 
-def run_identify_data(model, path, *, save=None, as_json=False, cutoff_hz=None,
-                      min_joint_speed=None, time_tolerance=1e-3, seed=False, echo=print,
-                      progress=None):
-    """``pm2dof identify --data LOG``: read, identify, print (text or JSON), optionally save
-    ``{"param_names", "theta0", ...}`` as JSON (the format ``--save`` always wrote); ``seed``
-    reruns Table 3 with APD and NA using the identified theta."""
-    from .base import identifiability
-    from .fit import MIN_JOINT_SPEED
+def run_fit(log=None, *, model=None, generated=None, excitation_file=None, duration=None,
+            quantise=True, controller=None, save=None, as_json=False, cutoff_hz=None,
+            min_joint_speed=None, time_tolerance=1e-3, seed=False, echo=print, progress=None):
+    """``pm2dof identify fit [LOG]``: identify, print (text or JSON), optionally save.
+
+    Parameters
+    ----------
+    log : str or Path, optional
+        A log file (:func:`~pm2dof.identification.log.read_log`). Its model is the one it
+        records unless ``model`` is given, and then it must be that one. Without a log, an
+        excitation runs on the simulated plant first
+        (:func:`~pm2dof.identification.excitation.simulated_log`: ``excitation_file``, else the
+        default multi-sine of ``duration`` s; ``quantise``; ``controller`` "apd" (default) or
+        "na"), and that log is identified the same way.
+    model, generated : optional
+        ``--model`` (a name, a model file or a Model), ``--generated``.
+    save : path, optional
+        Write ``{"param_names", "theta0", ...}`` and the provenance as JSON.
+    seed : bool
+        Also Table 3 with APD and NA using the identified theta.
+    cutoff_hz, min_joint_speed, time_tolerance :
+        See :func:`~pm2dof.identification.fit.identify_log` and ``read_log``.
+
+    Returns
+    -------
+    dict
+        :func:`~pm2dof.identification.fit.identify_log`'s result.
+    """
     from ..analysis.results import dumps, provenance, write_json
-    log = read_log(path, time_tolerance=time_tolerance)
-    if progress:
-        progress(f"read {path}: {len(log.t)} rows; filtering, stacking the base regressor, "
-                 f"weighted and physically constrained least squares")
-    ident = identifiability(model)
-    res = identify_log(model, log, ident=ident, cutoff_hz=cutoff_hz,
+    from .excitation import DEFAULT_DURATION, model_of_excitation, simulated_log
+    from .fit import MIN_JOINT_SPEED
+    from .model_ref import model_for
+    if log is not None:
+        simulated = {"--excitation": excitation_file is not None,
+                     "--duration": duration is not None, "--exact-encoders": not quantise,
+                     "--controller": controller is not None}
+        given = [k for k, v in simulated.items() if v]
+        if given:
+            raise ArgumentError(f"{', '.join(given)}: options of a simulated excitation run, "
+                                f"which fit runs only without a LOG (got LOG {log})")
+        path = log
+        log = read_log(path, time_tolerance=time_tolerance)
+        model = model_for(log.meta, log_folder(log), str(path), model=model, generated=generated,
+                          error=LogError)
+        if progress:
+            progress(f"read {path}: {len(log.t)} rows; filtering, stacking the base regressor, "
+                     f"weighted and physically constrained least squares")
+    else:
+        model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
+        log = simulated_log(model, excitation_file,
+                            DEFAULT_DURATION if duration is None else duration,
+                            quantise=quantise, controller=controller or "apd", progress=progress)
+        if progress:
+            progress(f"{len(log.t)} rows; filtering, stacking the base regressor, weighted and "
+                     f"physically constrained least squares")
+    res = identify_log(model, log, cutoff_hz=cutoff_hz,
                        min_joint_speed=MIN_JOINT_SPEED if min_joint_speed is None
                        else min_joint_speed)
-    s = summary(model, log, res, ident)
+    s = summary(model, log, res)
     if seed:
         from .monte_carlo import format_seeded_table3, seeded_table3
         if progress:
             progress("Table 3 with Tables 1-2 and with the identified theta")
         s["table3"] = seeded_table3(model, res["theta0"])
-    echo(dumps(s) if as_json else format_identification(model, log, res, ident)
+    echo(dumps(s) if as_json else format_identification(model, log, res)
          + ("\n\n" + format_seeded_table3(s["table3"]) if seed else ""))
     if save:
         write_json(save, {**s, "provenance": provenance(model)})
@@ -136,7 +173,7 @@ def run_identify_data(model, path, *, save=None, as_json=False, cutoff_hz=None,
 
 
 def load_theta(path, model):
-    """theta0 (p,) from a JSON written by ``pm2dof identify --save`` (checks the names)."""
+    """theta0 (p,) from a JSON written by ``pm2dof identify fit --save`` (checks the names)."""
     import json
     d = json.loads(open(path).read())
     if list(d.get("param_names", [])) != list(model.param_names):

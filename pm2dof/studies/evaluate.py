@@ -68,7 +68,7 @@ def _context(study):
             check_trajectory(model, tr)
             trajs.append((tr.extended(study.settle_time) if study.settle_time > 0 else tr,
                           len(tr.t)))
-        N = identifiability(model)["null_space"]
+        N = identifiability(model).null_space
         ctx = {"model": model, "ctrls": ctrls, "trajs": trajs,
                "P_id": np.eye(N.shape[0]) - N @ N.T,   # projector on the identifiable directions
                "draw_cols": draw_columns(study, model.n_legs)}

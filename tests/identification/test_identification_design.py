@@ -14,8 +14,10 @@ from pm2dof.identification.design import (IPOPT_OPTIONS, ExcitationError,
                                                load_excitation, objective_logdet, random_start,
                                                regressor_condition, sample_function,
                                                trajectory_of, write_excitation)
+from pm2dof.analysis.progress import Progress
+from pm2dof.identification.base import base_parameters
+from pm2dof.identification.excitation import multisine
 from pm2dof.identification.log import read_log
-from pm2dof.identification.base import identifiability
 
 LIMITS = {"v_max": 0.4, "a_max": 6.0, "tau_fraction": 0.3}
 SMALL = dict(base_hz=0.5, harmonics=4, periods=1, samples=80, constraint_samples=200, **LIMITS)
@@ -25,6 +27,41 @@ SHIPPED = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang20
 @pytest.fixture(scope="module")
 def m():
     return pm2dof.load_model()
+
+
+class _Bar:
+    """What a progress bar was told: its postfixes and steps (``on_step`` called at each)."""
+
+    def __init__(self, total, desc, on_step):
+        self.total, self.desc, self.n, self.postfixes, self.on_step = total, desc, 0, [], on_step
+
+    def set_postfix_str(self, s, refresh=True):
+        self.postfixes.append(s)
+
+    def update(self, n=1):
+        self.n += n
+        self.on_step()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+
+class Recorder(Progress):
+    """A Progress that records its stage lines and bars instead of drawing them."""
+
+    def __init__(self, on_step=lambda: None):
+        super().__init__(quiet=True)
+        self.lines, self.bars_made, self.on_step = [], [], on_step
+
+    def __call__(self, msg):
+        self.lines.append(msg)
+
+    def bar(self, total, desc, unit="step", **kw):
+        self.bars_made.append(_Bar(total, desc, self.on_step))
+        return self.bars_made[-1]
 
 
 @pytest.fixture(scope="module")
@@ -55,8 +92,7 @@ def test_design_meets_every_constraint_every_millisecond(m, designed):
 def test_casadi_graph_is_the_model_c(m):
     """The design's per-sample function (casadi.external on the compiled library) gives the
     Model's Y, min-norm torque and singularity measures."""
-    ident = identifiability(m)
-    I = ident["independent"]
+    I = list(base_parameters(m).independent)
     f = sample_function(m, I)
     # the design's smooth Coulomb columns S^T e_i tanh(qd_i / d) become the C's sign() as d -> 0
     f_sharp = sample_function(m, I, smooth_sign=1e-12)
@@ -90,12 +126,23 @@ def test_file_round_trip_and_bad_files(tmp_path, m, designed):
         assert np.array_equal(getattr(back, k), getattr(designed, k)), k
     assert back.base_hz == designed.base_hz and back.periods == designed.periods
     assert back.info == designed.info          # [design] with its sub-tables, exactly
+    assert back.model == {"model": "shang2010", "model_name": "shang2010",
+                          "formulation_sha256": m.spec.formulation_sha256}
     text = p.read_text()
     # the file is a function of the design alone: no wall time, no date
     assert write_excitation(tmp_path / "again.toml", back, m).read_text() == text
     bad = tmp_path / "bad.toml"
-    bad.write_text(text.replace('model = "shang2010"', 'model = "fivebar"'))
-    with pytest.raises(ExcitationError, match="model 'fivebar', not 'shang2010'"):
+    write_excitation(bad, designed, pm2dof.load_model("fivebar"))
+    with pytest.raises(ExcitationError, match=r"written for model 'fivebar' \(model fivebar, "
+                                              r"formulation [0-9a-f]{12}\), not 'shang2010'"):
+        load_excitation(bad, m)
+    # a file of before pm2dof 0.3 names its model by name only: still read, and checked
+    old = "\n".join(l for l in text.splitlines() if not l.startswith(("model_name",
+                                                                       "formulation_sha256")))
+    bad.write_text(old)
+    assert load_excitation(bad, m).model == {"model": "shang2010"}
+    bad.write_text(old.replace('model = "shang2010"', 'model = "fivebar"'))
+    with pytest.raises(ExcitationError, match=r"written for model 'fivebar'.*not 'shang2010'"):
         load_excitation(bad, m)
     bad.write_text("\n".join(l for l in text.splitlines() if not l.startswith("b_y")))
     with pytest.raises(ExcitationError, match="misses key 'b_y'"):
@@ -109,16 +156,15 @@ def test_file_round_trip_and_bad_files(tmp_path, m, designed):
 def test_excite_runs_the_file(tmp_path, m, designed, capsys):
     p = write_excitation(tmp_path / "exc.toml", designed, m)
     logp = tmp_path / "run.parquet"
-    assert cli.main(["identify", "--excite", "--excitation", str(p), "--out", str(logp)]) == 0
+    assert cli.main(["identify", "excite", "--excitation", str(p), "--out", str(logp)]) == 0
     capsys.readouterr()
     log = read_log(logp)
     traj = trajectory_of(m, designed)
     assert len(log.t) == len(traj.t) and float(log.meta["excitation_max_hz"]) == 2.0
-    # the optimised motion is better conditioned than the default multi-sine of --excite
-    from pm2dof.identification.base import excitation
-    ident = identifiability(m)
-    assert (regressor_condition(m, ident, traj)[0]
-            < regressor_condition(m, ident, excitation(m, duration=designed.duration))[0])
+    # the optimised motion is better conditioned than the default multi-sine of excite
+    base = base_parameters(m)
+    assert (regressor_condition(m, base, traj)[0]
+            < regressor_condition(m, base, multisine(m, duration=designed.duration))[0])
 
 
 def test_design_is_deterministic_and_runs_ipopt_blas_on_one_thread(m, designed):
@@ -129,10 +175,13 @@ def test_design_is_deterministic_and_runs_ipopt_blas_on_one_thread(m, designed):
     assert lib is not None, "CasADi's bundled OpenBLAS was not found"
     seen = []
     lib.openblas_set_num_threads(2)
-    again = design_excitation(m, **SMALL, progress=lambda line: seen.append(
-        lib.openblas_get_num_threads()) if "IPOPT iteration" in line else None)
+    progress = Recorder(on_step=lambda: seen.append(lib.openblas_get_num_threads()))
+    again = design_excitation(m, **SMALL, progress=progress)
     assert lib.openblas_get_num_threads() == 2
     assert seen and set(seen) == {1}, seen
+    # one bar, one step per IPOPT iteration (its iterations 0..n call back)
+    (iterations,) = progress.bars_made
+    assert iterations.n == again.info["ipopt_iterations"] + 1 and iterations.total == 500
     for k in ("center", "a", "b"):
         assert np.array_equal(getattr(again, k), getattr(designed, k)), k
     assert again.info == designed.info
@@ -142,25 +191,26 @@ def test_design_is_deterministic_and_runs_ipopt_blas_on_one_thread(m, designed):
         assert len({ln.split()[-1] for ln in fh if "libcasadi-tp-openblas" in ln}) == 1
 
 
-def test_progress_lines_and_summary_report_one_log_det(m):
-    """The progress lines' log det is the objective's log det(Phi^T Phi / K) (not IPOPT's
-    column-scaled value): stopped at iteration 25, the last line equals
+def test_progress_bar_and_summary_report_one_log_det(m):
+    """The progress bar's log det is the objective's log det(Phi^T Phi / K) (not IPOPT's
+    column-scaled value): stopped at iteration 25, the bar's last postfix equals
     :func:`objective_logdet` of the result, which the summary reports as the objective's."""
-    lines = []
-    exc = design_excitation(m, **{**SMALL, "max_iter": 25}, progress=lines.append)
-    values = [float(re.search(r"iteration 25: objective log det (-?[0-9.]+)", ln).group(1))
-              for ln in lines if "iteration 25:" in ln]
-    assert len(values) == 1, lines
+    progress = Recorder()
+    exc = design_excitation(m, **{**SMALL, "max_iter": 25}, progress=progress)
+    (iterations,) = progress.bars_made
+    assert iterations.n == 26 and len(iterations.postfixes) == 26      # iterations 0..25
+    value = float(re.fullmatch(r"objective log det (-?[0-9.]+)", iterations.postfixes[-1])[1])
+    assert any(ln.startswith("IPOPT: 18 coefficients") for ln in progress.lines), progress.lines
     # 3 decimals printed; the result is IPOPT's iterate projected exactly onto the rest
     # conditions (a change of IPOPT's constraint tolerance)
-    assert values[0] == pytest.approx(exc.info["objective_logdet_after"], abs=2e-3)
+    assert value == pytest.approx(exc.info["objective_logdet_after"], abs=2e-3)
     assert exc.info["objective_logdet_after"] == pytest.approx(
         objective_logdet(m, exc, SMALL["samples"]), rel=1e-12)
 
 
 def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
     """examples/excitation_shang2010.toml (issue 22, item 5): its [design] holds the arguments
-    of ``pm2dof identify --design-excitation`` today (the README's command), IPOPT's options,
+    of ``pm2dof identify design`` today (the README's command), IPOPT's options,
     what it was designed with, and figures that recompute from its coefficients with today's
     model: cond and log det on the run's samples and on the objective's, at the optimum and at
     the start (rebuilt from the recorded seed). A change of the defaults, or of the model that
@@ -180,14 +230,14 @@ def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
                           (np.asarray(first["start"], float) + first["end"]) / 2)
     assert (exc.base_hz, exc.periods, exc.harmonics) == (
         info["base_hz"], info["periods"], info["harmonics"])
-    ident = identifiability(m)
+    base = base_parameters(m)
     start = random_start(m, **{k: info[k] for k in ("base_hz", "harmonics", "periods", "v_max",
                                                   "a_max", "radius", "seed")})
     for when, e in (("after", exc), ("before", start)):
-        cond, logdet = regressor_condition(m, ident, trajectory_of(m, e))
+        cond, logdet = regressor_condition(m, base, trajectory_of(m, e))
         assert cond == pytest.approx(info[f"cond_{when}"], rel=1e-9), when
         assert logdet == pytest.approx(info[f"logdet_{when}"], rel=1e-9, abs=1e-9), when
-        assert objective_logdet(m, e, info["samples"], ident) == pytest.approx(
+        assert objective_logdet(m, e, info["samples"], base) == pytest.approx(
             info[f"objective_logdet_{when}"], rel=1e-9, abs=1e-9), when
     chk = check_excitation(m, exc, v_max=info["v_max"], a_max=info["a_max"],
                            tau_limit=info["tau_fraction"] * np.max(m.spec.limits["tau_max"]),

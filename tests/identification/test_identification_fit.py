@@ -1,5 +1,5 @@
 # Identification from logs: filter vs scipy's response, noise-free recovery, constrained LS (KKT), CLI round trip.
-"""Checks of ``pm2dof identify --excite`` / ``--data`` against independent computations.
+"""Checks of ``pm2dof identify excite`` / ``fit`` against independent computations.
 
 * The low-pass: scipy's ``sosfreqz`` against the closed-form bilinear Butterworth magnitude,
   and the zero-phase filter on sinusoids against |H|^2 with no phase shift.
@@ -22,11 +22,11 @@ from scipy import optimize, signal
 
 import pm2dof
 from pm2dof import cli
-from pm2dof.identification.excitation import excite, measured_angles
-from pm2dof.identification.consistent import base_map, consistent_theta, physical_constraints
+from pm2dof.identification.base import base_parameters
+from pm2dof.identification.consistent import consistent_theta, physical_constraints
+from pm2dof.identification.excitation import excite, measured_angles, multisine
 from pm2dof.identification.fit import identify_log, lowpass, weighted_ls, zero_phase
 from pm2dof.identification.log import IdentLog, LogError, read_log
-from pm2dof.identification.base import excitation, identifiability
 from pm2dof.control.simulate import plant_truth, plant_vector, simulate, theta_truth
 
 
@@ -35,7 +35,7 @@ def m():
     return pm2dof.load_model()
 
 
-ident = pytest.fixture(scope="module", name="ident")(lambda m: identifiability(m))
+base = pytest.fixture(scope="module", name="base")(lambda m: base_parameters(m))
 
 
 @pytest.mark.parametrize("fc, T", [(45.0, 0.002), (10.0, 0.002), (120.0, 0.001)])
@@ -63,11 +63,11 @@ def _plant_class_truth(m):
     return plant_truth(m, fs=[0.0] * m.n_legs, coulomb_smoothing_velocity=1e-6)
 
 
-def _exact_state_regression(m, ident, r, truth):
+def _exact_state_regression(m, base, r, truth):
     """Regressor rows and task forces from the plant's exact states at the samples."""
     pv = plant_vector(m, truth, quantise=False)
     xedd = m.function("plant_xedd")
-    I = ident["independent"]
+    I = list(base.independent)
     rows, rhs = [], []
     ap, am = np.empty(2), np.empty(2)
     for k in range(1, len(r.t) - 1):
@@ -83,59 +83,58 @@ def _exact_state_regression(m, ident, r, truth):
 
 
 @pytest.fixture(scope="module")
-def noise_free(m, ident):
+def noise_free(m, base):
     truth = _plant_class_truth(m)
-    exc = excitation(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5)
+    exc = multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5)
     r = simulate(m, pm2dof.APDController(m), exc, truth=truth, quantise=False)
-    th = theta_truth(m, truth)
-    return r, truth, th[ident["independent"]] + ident["beta"] @ th[ident["dependent"]]
+    return r, truth, base.fold(theta_truth(m, truth))
 
 
-def test_exact_states_recover_the_base_parameters_to_1e_8(m, ident, noise_free):
-    r, truth, base = noise_free
-    Phi, u = _exact_state_regression(m, ident, r, truth)
+def test_exact_states_recover_the_base_parameters_to_1e_8(m, base, noise_free):
+    r, truth, pi = noise_free
+    Phi, u = _exact_state_regression(m, base, r, truth)
     ls = weighted_ls(Phi, u)
-    rel = np.abs(ls["estimate"] - base) / np.abs(base)
+    rel = np.abs(ls["estimate"] - pi) / np.abs(pi)
     assert rel.max() < 1e-8, rel
     # the truth is physical, so the least squares is kept as it is
-    c = consistent_theta(ls["A"], ls["b"], ident, m.theta_nominal)
+    c = consistent_theta(ls["A"], ls["b"], base, m.theta_nominal)
     assert c["status"][0].startswith("not needed") and c["status"][1] == "Solve_Succeeded"
-    assert np.abs(c["base"] - base).max() / np.abs(base).min() < 1e-8
+    assert np.abs(c["base"] - pi).max() / np.abs(pi).min() < 1e-8
     assert c["active"] == [] and np.all(c["g"] >= 0)
     # stage 2 with nothing active: theta - nominal has no component in P's null space
-    P = base_map(ident)
+    P = base.matrix()
     d = c["theta"] - m.theta_nominal
     assert np.abs(d - np.linalg.pinv(P) @ (P @ d)).max() < 1e-9
 
 
-def _pipeline_error(m, ident, T, truth, base):
+def _pipeline_error(m, base, T, truth, pi):
     from types import SimpleNamespace
-    ex = excitation(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5)
-    # the same analytic excitation sampled at T (excitation() samples at the model's period)
+    ex = multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5)
+    # the same analytic excitation sampled at T (multisine() samples at the model's period)
     t = np.arange(int(round(3.0 / T)) + 1) * T
     exT = SimpleNamespace(t=t, period=T, **{k: np.column_stack([
         np.interp(t, ex.t, getattr(ex, k)[:, i]) for i in range(2)]) for k in
         ("xd", "xd_dot", "xd_ddot")})
     r = simulate(m, pm2dof.APDController(m, sample_period=T), exT, truth=truth, quantise=False)
     log = IdentLog(t=r.t, qa=measured_angles(m, r.xe, False, truth), tau=r.tau_a)
-    res = identify_log(m, log, ident=ident, cutoff_hz=0.2 / T, consistent=False)
-    err = res["estimate"] - base
-    return np.linalg.norm(err[:7]) / np.linalg.norm(base[:7]), np.abs(err[7:] / base[7:]).max()
+    res = identify_log(m, log, base=base, cutoff_hz=0.2 / T, consistent=False)
+    err = res["estimate"] - pi
+    return np.linalg.norm(err[:7]) / np.linalg.norm(pi[:7]), np.abs(err[7:] / pi[7:]).max()
 
 
-def test_noise_free_log_error_is_discretisation(m, ident, noise_free):
+def test_noise_free_log_error_is_discretisation(m, base, noise_free):
     """From the log alone (angles at the samples), with the cutoff at a fixed fraction of the
     sample rate, the error must fall at least like T (the hold's jerk jumps make the second
     difference first order; central differences alone would give T^2): T/4 -> error / 3."""
-    _, truth, base = noise_free
-    coarse = _pipeline_error(m, ident, 0.002, truth, base)
-    fine = _pipeline_error(m, ident, 0.0005, truth, base)
+    _, truth, pi = noise_free
+    coarse = _pipeline_error(m, base, 0.002, truth, pi)
+    fine = _pipeline_error(m, base, 0.0005, truth, pi)
     assert fine[0] < coarse[0] / 3 and fine[1] < coarse[1] / 3, (coarse, fine)
 
 
-def _kkt(c, A, b, ident):
+def _kkt(c, A, b, base):
     """Stage 1's KKT residual from IPOPT's multipliers, gradients computed here in NumPy."""
-    P, th, names = c["P"], c["theta_stage1"], ident["param_names"]
+    P, th, names = c["P"], c["theta_stage1"], base.names
     nb = b @ b
     grad_f = 2 * P.T @ A.T @ (A @ P @ th - b) / nb
     g, _ = physical_constraints(th, names)
@@ -149,37 +148,37 @@ def _kkt(c, A, b, ident):
     return grad_f + J.T @ c["lam_g"], np.array(g)
 
 
-def test_constrained_solution_kkt_and_scipy(m, ident, noise_free):
+def test_constrained_solution_kkt_and_scipy(m, base, noise_free):
     """A non-physical truth (negative Coulomb friction on leg 1): the constraint fc1 >= 0 is
     active, the KKT conditions hold, and SciPy's SLSQP finds the same base parameters."""
     r, truth, _ = noise_free
     truth = dict(truth, fc=np.array([-0.2, truth["fc"][1], truth["fc"][2]]))
-    Phi, u = _exact_state_regression(m, ident, r, truth)
+    Phi, u = _exact_state_regression(m, base, r, truth)
     ls = weighted_ls(Phi, u)
     A, b = ls["A"], ls["b"]
-    c = consistent_theta(A, b, ident, m.theta_nominal)
+    c = consistent_theta(A, b, base, m.theta_nominal)
     assert c["status"] == ("Solve_Succeeded", "Solve_Succeeded")
     assert "fc1 >= 0" in c["active"]
     assert np.all(c["g"] >= -1e-10)
-    stat, g = _kkt(c, A, b, ident)
+    stat, g = _kkt(c, A, b, base)
     lam = c["lam_g"]
     assert np.abs(stat).max() < 1e-7, stat                  # stationarity (IPOPT tol 1e-12)
     assert np.all(lam <= 1e-9)                              # g >= 0: multipliers <= 0
     assert np.abs(lam * g).max() < 1e-9                     # complementarity
     # independent: with exactly fc1 >= 0 active, the optimum is the least squares with the
     # base parameter fc1 (an independent column) fixed at 0 -- NumPy's lstsq on the rest
-    j = ident["independent"].index(ident["param_names"].index("fc1"))
+    j = base.independent.index(base.names.index("fc1"))
     keep = [i for i in range(A.shape[1]) if i != j]
     ref = np.zeros(A.shape[1])
     ref[keep] = np.linalg.lstsq(A[:, keep], b, rcond=None)[0]
     assert "fc1 >= 0" in c["active"]
     assert np.abs(c["base"] - ref).max() < 1e-7 * np.abs(ref).max(), c["base"] - ref
     # and a general-purpose solver (SciPy's SLSQP) reaches no lower objective
-    P = base_map(ident)
+    P = base.matrix()
     nb = b @ b
     fun = lambda th: float(np.sum((A @ P @ th - b) ** 2) / nb)  # noqa: E731
-    cons = [{"type": "ineq", "fun": lambda th, i=i: physical_constraints(th, ident[
-        "param_names"])[0][i]} for i in range(len(g))]
+    cons = [{"type": "ineq", "fun": lambda th, i=i: physical_constraints(th, base.names)[0][i]}
+            for i in range(len(g))]
     sp = optimize.minimize(fun, m.theta_nominal, constraints=cons, method="SLSQP",
                            options={"ftol": 1e-15, "maxiter": 1000})
     assert c["objective"] <= fun(sp.x) * (1 + 1e-9), (c["objective"], fun(sp.x))
@@ -198,16 +197,16 @@ def test_log_without_motion_is_refused(m):
 
 
 def test_round_trip_simulated_robot_log_identify(tmp_path, m, capsys):
-    """pm2dof identify --excite -> CSV -> pm2dof identify --data --json --save -> NA."""
+    """pm2dof identify excite -> CSV -> pm2dof identify fit --json --save -> NA."""
     logp, thp = tmp_path / "run.csv", tmp_path / "theta.json"
-    assert cli.main(["identify", "--excite", "--out", str(logp), "--duration", "3"]) == 0
+    assert cli.main(["identify", "excite", "--out", str(logp), "--duration", "3"]) == 0
     capsys.readouterr()
     log = read_log(logp)
     assert log.meta["model"] == m.name and log.meta["encoders"] == "131072 counts/rev"
     # the log holds what the encoders read: multiples of the encoder step
     step = 2 * np.pi / 131072
     assert np.abs(log.qa / step - np.round(log.qa / step)).max() < 1e-6
-    assert cli.main(["identify", "--data", str(logp), "--json", "--save", str(thp)]) == 0
+    assert cli.main(["identify", "fit", str(logp), "--json", "--save", str(thp)]) == 0
     printed = json.loads(capsys.readouterr().out)
     saved = json.loads(thp.read_text())
     assert saved["param_names"] == list(m.param_names)
@@ -222,7 +221,7 @@ def test_round_trip_simulated_robot_log_identify(tmp_path, m, capsys):
 
 
 def test_excite_writes_the_applied_torques(m):
-    exc = excitation(m, duration=0.5)
+    exc = multisine(m, duration=0.5)
     log = excite(m, exc, quantise=False)
     r = simulate(m, pm2dof.APDController(m, on_singular="zero"), exc, quantise=False)
     assert np.array_equal(log.tau, r.tau_a) and np.array_equal(log.t, r.t)
@@ -253,7 +252,7 @@ def test_plant_task_force_is_the_plants_inverse_dynamics(m):
 
 def test_monte_carlo_reports_every_target(m, capsys):
     from pm2dof.identification.monte_carlo import TARGETS
-    assert cli.main(["identify", "--monte-carlo", "2", "--duration", "3", "--json"]) == 0
+    assert cli.main(["identify", "monte-carlo", "2", "--duration", "3", "--json"]) == 0
     d = json.loads(capsys.readouterr().out)
     for k in ("inertial_vector", "inertial_each", "friction", "torque"):
         assert set(d[k]) == {"median", "p90", "max", "met_fraction"} and k in TARGETS
@@ -261,7 +260,7 @@ def test_monte_carlo_reports_every_target(m, capsys):
     assert len(d["coverage"]) == len(d["names"]) == 13 and d["seeds"] == 2
 
 
-def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, ident):
+def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, base):
     """examples/excitation_shang2010.toml on the model file's plant (17-bit encoders, Stribeck
     excess): the issue's accuracy targets, and both controllers track better with the result."""
     from pathlib import Path
@@ -269,22 +268,21 @@ def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, iden
     from pm2dof.identification.monte_carlo import seeded_table3
     path = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
     log = excite(m, trajectory_of(m, load_excitation(path, m)))
-    res = identify_log(m, log, ident=ident)
-    th = theta_truth(m)
-    base = th[ident["independent"]] + ident["beta"] @ th[ident["dependent"]]
-    err = res["estimate"] - base
-    inert = np.array([n.startswith(("alpha", "beta", "gamma")) for n in res["independent_names"]])
-    large = inert & (np.abs(base) > 0.1 * np.abs(base[inert]).max())
-    assert np.linalg.norm(err[inert]) < 0.05 * np.linalg.norm(base[inert])       # issue: 5 %
-    assert np.all(np.abs(err[large]) < 0.05 * np.abs(base[large]))              # issue: 5 %
-    assert np.all(np.abs(err[~inert]) < 0.03 * np.abs(base[~inert]))            # issue: 3 %
+    res = identify_log(m, log, base=base)
+    pi = base.fold(theta_truth(m))
+    err = res["estimate"] - pi
+    inert = base.inertial
+    large = inert & (np.abs(pi) > 0.1 * np.abs(pi[inert]).max())
+    assert np.linalg.norm(err[inert]) < 0.05 * np.linalg.norm(pi[inert])       # issue: 5 %
+    assert np.all(np.abs(err[large]) < 0.05 * np.abs(pi[large]))              # issue: 5 %
+    assert np.all(np.abs(err[~inert]) < 0.03 * np.abs(pi[~inert]))            # issue: 3 %
     assert not any("do not determine" in w for w in res["warnings"]), res["warnings"]
     for speed, d in seeded_table3(m, res["theta0"]).items():
         assert d["identified"]["apd_rmse"] < d["nominal"]["apd_rmse"], speed
         assert d["identified"]["na_rmse"] < d["nominal"]["na_rmse"], speed
 
 
-def test_weak_excitation_is_flagged(m, ident):
-    log = excite(m, excitation(m, duration=3.0))
-    res = identify_log(m, log, ident=ident, consistent=False)
+def test_weak_excitation_is_flagged(m, base):
+    log = excite(m, multisine(m, duration=3.0))
+    res = identify_log(m, log, base=base, consistent=False)
     assert any("do not determine" in w and "beta" in w for w in res["warnings"]), res["warnings"]

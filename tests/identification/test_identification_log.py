@@ -4,7 +4,7 @@ import pytest
 
 import pm2dof
 from pm2dof.identification.log import MIN_ROWS, IdentLog, LogError, log_poses, read_log, write_log
-from pm2dof.identification.base import excitation
+from pm2dof.identification.excitation import multisine
 
 
 @pytest.fixture(scope="module")
@@ -15,7 +15,7 @@ def m():
 @pytest.fixture(scope="module")
 def good(m):
     """A consistent log: angles of a smooth motion (ik), arbitrary torques, passive angles."""
-    ex = excitation(m, duration=0.4)
+    ex = multisine(m, duration=0.4)
     q = np.array([m.ik(x) for x in ex.xd])
     rng = np.random.default_rng(0)
     return IdentLog(t=ex.t, qa=q[:, :3], tau=rng.normal(0, 2, (len(ex.t), 3)), qb=q[:, 3:],
@@ -117,10 +117,21 @@ def test_another_leg_count_is_refused(tmp_path, m, good):
             for i in range(_header_index(ls), len(ls))]))
 
 
-def test_another_model_is_refused_by_name(m, good):
-    other = IdentLog(t=good.t, qa=good.qa, tau=good.tau, meta={"model": "fourleg"})
-    with pytest.raises(LogError, match=r"written for model 'fourleg', not 'shang2010'"):
+def test_another_model_is_refused_by_name_or_formulation(m, good):
+    # a log of before pm2dof 0.3: the model by name only
+    other = IdentLog(t=good.t, qa=good.qa, tau=good.tau, meta={"model": "myrobot"})
+    with pytest.raises(LogError, match=r"written for model 'myrobot' \(model myrobot\), not "
+                                       r"'shang2010' \(.*shang2010.toml, formulation "):
         log_poses(m, other)
+    # the same name, another formulation (e.g. a leg length changed after the log was written)
+    meta = {"model": "shang2010", "model_name": "shang2010", "formulation_sha256": "ab" * 32}
+    with pytest.raises(LogError, match=r"written for model 'shang2010' \(model shang2010, "
+                                       r"formulation abababababab\), not 'shang2010'"):
+        log_poses(m, IdentLog(t=good.t, qa=good.qa, tau=good.tau, meta=meta))
+    # a shipped model's name resolves to its file: its formulation is compared too
+    with pytest.raises(LogError, match=r"written for model 'fivebar' \(model fivebar, "
+                                       r"formulation [0-9a-f]{12}\)"):
+        log_poses(m, IdentLog(t=good.t, qa=good.qa, tau=good.tau, meta={"model": "fivebar"}))
 
 
 def test_angles_outside_the_workspace_are_named(m, good):
