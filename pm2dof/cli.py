@@ -26,13 +26,14 @@ import argparse
 import sys
 import warnings
 
+from .analysis.progress import Progress
 from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
 
 __all__ = ["main", "build_parser"]
 
 
-def _progress(msg):
-    print(f"  .. {msg}", file=sys.stderr, flush=True)
+#: where long jobs report (stage lines; bars on a terminal); main() makes it quiet on --quiet
+_progress = Progress()
 
 
 def _model(args):
@@ -201,7 +202,7 @@ def cmd_study_run(args):
         study = dataclasses.replace(study, model_path=str(resolve_model(args.model).resolve()))
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
-                        timeout=args.timeout, progress=not args.no_progress)
+                        timeout=args.timeout, progress=_progress)
     except KeyboardInterrupt:
         print(f"\npm2dof: interrupted; the finished chunks are in {args.out}/results. Run the "
               f"same command again to continue where it stopped.", file=sys.stderr)
@@ -286,7 +287,8 @@ def _study_parser(sub):
                    help="the study file's [quick] size: seconds, for a first look and the tests")
     r.add_argument("--timeout", type=float, default=10.0, metavar="S",
                    help="seconds to wait for the scheduler and its workers (default 10)")
-    r.add_argument("--no-progress", action="store_true", help="no progress line")
+    r.add_argument("--quiet", "--no-progress", action="store_true", dest="quiet",
+                   help="no progress output (bars are drawn only on a terminal anyway)")
     r.set_defaults(func=cmd_study_run)
     r = ssub.add_parser("show", help="print a shipped study file (a commented example)",
                         description="Print a shipped study file, or list them without NAME. "
@@ -312,6 +314,7 @@ def _study_parser(sub):
                         "the in-process batch at 10^4 rollouts.")
     r.add_argument("--json", action="store_true", help="print the results as JSON")
     r.add_argument("--quick", action="store_true", help="10x fewer rollouts (for tests)")
+    r.add_argument("--quiet", action="store_true", help="no progress output on stderr")
     r.set_defaults(func=cmd_study_bench)
 
 
@@ -336,6 +339,9 @@ def build_parser():
     common.add_argument("--generated", default=None, metavar="DIR",
                         help="folder of the model's generated C (default: generated/<stem>/ "
                         "beside the model file; shipped models: inside pm2dof)")
+    common.add_argument("--quiet", action="store_true",
+                        help="no progress output on stderr (progress bars are drawn only when "
+                        "stderr is a terminal; stage lines always, unless --quiet)")
     p = sub.add_parser("models", help="list the shipped models",
                        description="List the models that come with pm2dof: their name (for "
                        "--model NAME and load_model(NAME)), leg count and description. With "
@@ -541,6 +547,8 @@ def main(argv=None):
     ap = build_parser()
     args = ap.parse_args(argv)
     results.COMMAND_LINE = ["pm2dof", *(sys.argv[1:] if argv is None else argv)]
+    global _progress
+    _progress = Progress(quiet=getattr(args, "quiet", False))
     if not getattr(args, "func", None):
         ap.print_help()
         return 2

@@ -4,6 +4,7 @@ import numpy as np
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate, theta_truth
 from ..control.trajectory import TrajectoryError, line
+from .progress import bar
 
 __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3",
            "run_table3", "repeated_runs", "sensitivity", "format_sensitivity"]
@@ -39,15 +40,17 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, **contr
     out = {}
     p = len(model.param_names)
     kw = controller_options
-    for speed in speeds:
-        traj = trajectory(model, speed)
-        runs = {}
-        for name, ctrl in (("apd", APDController(model, **kw)), ("na", NAController(model, **kw)),
-                           ("na_no_adaptation", NAController(model, Gamma=np.zeros(p), **kw))):
-            if progress:
-                progress(f"{speed} speed: {name} ({len(traj.t)} samples)")
-            runs[name] = simulate(model, ctrl, traj, quantise=quantise, truth=truth)
-        out[speed] = runs
+    with bar(progress, 3 * len(speeds), "Table 3", unit="rollout") as b:
+        for speed in speeds:
+            traj = trajectory(model, speed)
+            runs = {}
+            for name, ctrl in (("apd", APDController(model, **kw)),
+                               ("na", NAController(model, **kw)),
+                               ("na_no_adaptation", NAController(model, Gamma=np.zeros(p), **kw))):
+                b.set_postfix_str(f"{speed} speed, {name}")
+                runs[name] = simulate(model, ctrl, traj, quantise=quantise, truth=truth)
+                b.update()
+            out[speed] = runs
     return out
 
 
@@ -117,13 +120,14 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
     ctrl = NAController(model)
     theta = ctrl.theta0.copy()
     rmses, thetas = [], []
-    for k in range(runs):
-        r = simulate(model, ctrl, traj, quantise=quantise, theta_hat0=theta)
-        theta = r.theta_hat[-1].copy()
-        rmses.append(r.rmse)
-        thetas.append(theta)
-        if progress and (k + 1) % 5 == 0:
-            progress(f"repeated {speed}-speed runs: {k + 1}/{runs}, RMSE {r.rmse:.3e} m")
+    with bar(progress, runs, f"repeated {speed}-speed runs", unit="run") as b:
+        for k in range(runs):
+            r = simulate(model, ctrl, traj, quantise=quantise, theta_hat0=theta)
+            theta = r.theta_hat[-1].copy()
+            rmses.append(r.rmse)
+            thetas.append(theta)
+            b.set_postfix_str(f"RMSE {r.rmse:.3e} m")
+            b.update()
     return {"rmse": np.array(rmses), "theta_hat_end": np.array(thetas),
             "theta_truth": theta_truth(model), "theta0": ctrl.theta0.copy()}
 

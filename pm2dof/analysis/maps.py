@@ -19,6 +19,7 @@ import numpy as np
 
 from ..core.errors import ArgumentError, WorkspaceError
 from ..control.simulate import pose_measures
+from .progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
            "maps_summary", "format_maps_summary", "FIELDS"]
@@ -132,9 +133,9 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
     out["type1"] = np.where(reach, type1, np.nan)
     out["type2"] = np.where(reach, type2, np.nan)
     idx = np.flatnonzero(reach & (type1 > 1e-6) & (type2 > 1e-6))
+    b = bar(progress, len(idx), "capability maps", unit="pose", miniters=200)
     for j, k in enumerate(idx):
-        if progress and j % 2000 == 0:
-            progress(f"capability maps: {j}/{len(idx)} poses")
+        b.update()
         try:
             q = model.ik(pts[k])
         except WorkspaceError:                # the grid's own geometry said reachable; C disagrees
@@ -144,6 +145,7 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
             continue
         for key, value in capability(model, q, theta, tau_max).items():
             out[key][k] = value
+    b.close()
     shape = X.shape
     res = {key: v.reshape(shape) for key, v in out.items()}
     res.update(x=x, y=y, reachable=reach.reshape(shape), side=side.reshape(shape))
