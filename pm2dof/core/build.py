@@ -67,8 +67,9 @@ LIBS: tuple[str, ...] = ("-lm",)
 
 try:
     from .errors import Pm2dofError
-except ImportError:       # loaded as a file by setup.py, outside the package: no common base
-    Pm2dofError = Exception
+except ImportError:       # loaded as a file by setup.py, outside the package: a stand-in base
+    class Pm2dofError(Exception):
+        """Stand-in for pm2dof.core.errors.Pm2dofError when built without the package."""
 
 
 class BuildError(Pm2dofError, RuntimeError):
