@@ -3,7 +3,7 @@ import numpy as np
 
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate, theta_truth
-from ..control.trajectory import TrajectoryError, line
+from ..control.trajectory import model_move
 from .progress import bar
 
 __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3",
@@ -12,17 +12,6 @@ __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
 PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percent": 38.40},
                 "high": {"apd_rmse": 4.7136e-4, "na_rmse": 2.8299e-4, "rpe_percent": 39.96}}
-
-
-def trajectory(model, speed, period=None):
-    """The desired move ``[trajectories.<speed>]`` of the model file, sampled at ``period``."""
-    moves = model.spec.trajectories
-    if speed not in moves:
-        raise TrajectoryError(f"no move {speed!r} in [trajectories] of {model.spec.path}; have "
-                              f"{sorted(moves)}")
-    t = moves[speed]
-    return line(t["start"], t["end"], t["v_max"], t["a_max"], t["j_max"],
-                period=model.spec.sensing["sample_period"] if period is None else period)
 
 
 def rpe(apd_rmse, na_rmse):
@@ -42,7 +31,7 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, **contr
     kw = controller_options
     with bar(progress, 3 * len(speeds), "Table 3", unit="rollout") as b:
         for speed in speeds:
-            traj = trajectory(model, speed)
+            traj = model_move(model, speed)
             runs = {}
             for name, ctrl in (("apd", APDController(model, **kw)),
                                ("na", NAController(model, **kw)),
@@ -116,7 +105,7 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
     dict with ``rmse`` (runs,) m, ``theta_hat_end`` (runs, 5n), ``theta_truth`` (5n,),
     ``theta0`` (5n,).
     """
-    traj = trajectory(model, speed)
+    traj = model_move(model, speed)
     ctrl = NAController(model)
     theta = ctrl.theta0.copy()
     rmses, thetas = [], []

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..control.controllers import SPLITS, APDController, NAController
 from ..control.simulate import simulate
-from .experiment import trajectory
+from ..control.trajectory import model_move
 from .progress import bar
 
 __all__ = ["split_comparison", "format_split_comparison", "tau_max_sweep", "run_splits",
@@ -82,7 +82,7 @@ def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speed
     speeds = list(model.spec.trajectories) if speeds is None else speeds
     b = bar(progress, len(speeds) * len(controllers) * len(splits), "splits", unit="rollout")
     for speed in speeds:
-        traj = trajectory(model, speed)
+        traj = model_move(model, speed)
         out[speed] = {}
         for name in controllers:
             out[speed][name] = {}

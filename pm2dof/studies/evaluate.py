@@ -16,7 +16,7 @@ import numpy as np
 from ..control.controllers import APDController, NAController
 from ..control.simulate import (batch_inputs, check_trajectory, completed_samples, plant_vector,
                                 theta_truth)
-from ..control.trajectory import line
+from ..control.trajectory import line, model_move
 from ..core.model import load_model
 from ..core.status import Status
 from .draws import draw_columns, plant_of, sample_draw
@@ -48,8 +48,7 @@ def make_trajectory(model, move, period):
     """A study move: a name of the model file's [trajectories] or a line's (sorted) items."""
     name, items = move
     if items is None:
-        from ..analysis.experiment import trajectory
-        return trajectory(model, name, period)
+        return model_move(model, name, period)
     d = dict(items)
     return line(d["start"], d["end"], d["v_max"], d["a_max"], d["j_max"], period=period)
 
