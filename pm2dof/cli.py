@@ -25,6 +25,7 @@ the model file). Where a file names its model (a study file), that model is the 
 import argparse
 import sys
 import warnings
+from pathlib import Path
 
 from .analysis.progress import Progress
 from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
@@ -58,7 +59,6 @@ def cmd_models(args):
 
 def cmd_models_copy(args):
     import shutil
-    from pathlib import Path
     from .core.paths import resolve_model
     src = resolve_model(args.copy[0])
     dest = Path(args.copy[1]).expanduser()
@@ -196,10 +196,14 @@ def cmd_study_run(args):
         raise ArgumentError("give --workers (an embedded cluster) or --scheduler (an existing "
                          "one), not both: an existing cluster's workers are started with it")
     study = read_study(resolve_study(args.study), quick=args.quick)
-    if args.model is not None:  # the study file names its model; --model overrides it
+    if args.model is not None or args.generated is not None:  # override the study file's
         import dataclasses
         from .core.paths import resolve_model
-        study = dataclasses.replace(study, model_path=str(resolve_model(args.model).resolve()))
+        study = dataclasses.replace(
+            study, model_path=(study.model_path if args.model is None
+                               else str(resolve_model(args.model).resolve())),
+            generated_path=(study.generated_path if args.generated is None
+                            else str(Path(args.generated).expanduser().resolve())))
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
                         timeout=args.timeout, progress=_progress)
@@ -230,7 +234,6 @@ def cmd_study_show(args):
 
 
 def cmd_study_report(args):
-    from pathlib import Path
     from .studies.report import run_report
     s, cols, info = run_report(args.dir, as_json=args.json)
     if not args.no_figures:
@@ -277,6 +280,8 @@ def _study_parser(sub):
                    "gains, adaptation")
     r.add_argument("--model", metavar="NAME|PATH", help="run the study on this model instead of "
                    "the one its file names")
+    r.add_argument("--generated", metavar="DIR", help="the model's generated C, when not in "
+                   "the default folder (overrides the study file's generated key)")
     r.add_argument("--out", required=True, metavar="DIR", help="output folder")
     r.add_argument("--workers", type=int, metavar="N",
                    help="worker processes of the embedded cluster (default: one per core)")

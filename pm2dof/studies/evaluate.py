@@ -54,11 +54,12 @@ def make_trajectory(model, move, period):
 
 
 def _context(study):
-    key = (study.model_path, study.variants, study.moves, study.settle_time)   # what ctx holds
+    key = (study.model_path, study.generated_path, study.variants, study.moves,
+           study.settle_time)                                                   # what ctx holds
     ctx = _CACHE.get(key)
     if ctx is None:
         from ..analysis.identify import identifiability
-        model = load_model(study.model_path)
+        model = load_model(study.model_path, study.generated_path)
         ctrls = [make_controller(model, v) for v in study.variants]
         T = ctrls[0].sample_period
         trajs = []
