@@ -53,6 +53,8 @@ test: install
 # NO_MKDOCS_2_WARNING silences the Material theme's banner about MkDocs 2 (pinned < 2).
 docs: $(STAMP)
 	NO_MKDOCS_2_WARNING=1 $(VENV)/bin/mkdocs build --strict --site-dir site
+	! grep -l -E ':(func|class|meth|attr|mod|data|exc):' site/api.html || \
+		{ echo "make docs: Sphinx roles left in site/api.html (docs/_ext/sphinx_roles.py)"; exit 1; }
 
 dist: $(STAMP)
 	rm -rf dist
