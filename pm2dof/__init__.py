@@ -29,11 +29,14 @@ are imported on first use, so a real-time process never pays for them.
 import importlib
 
 from . import _moved
-from .control.controllers import STATUS_NAMES, APDController, NAController
+from .control.controllers import STATUS_NAMES, APDController, NAController, Status
 from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
-from .control.trajectory import PAPER_MOVES, Trajectory, TrajectoryError, line, paper_move
-from .core.errors import (ClosureError, GainError, ModelFileError, ModelMismatchError,
-                          OutcomeWarning, SingularityError, StaleGeneratedCodeError,
+from .control.trajectory import (PAPER_MOVES, Trajectory, TrajectoryError, line, model_move,
+                                 paper_move)
+from .core.build import BuildError
+from .core.errors import (ArgumentError, ArgumentTypeError, ClosureError, GainError, OutputError,
+                          InputFileError, ModelFileError, ModelMismatchError, NonFiniteError,
+                          OutcomeWarning, Pm2dofError, SingularityError, StaleGeneratedCodeError,
                           WorkspaceError)
 from .core.model import Model, load_model
 from .core.version import __version__
@@ -68,12 +71,16 @@ __all__ = [
     # layer 1: the model
     "load_model", "Model",
     # layer 2: control
-    "NAController", "APDController", "STATUS_NAMES", "simulate", "SimResult", "check_trajectory",
-    "plant_truth", "theta_truth", "rmse", "line", "paper_move", "PAPER_MOVES", "Trajectory",
+    "NAController", "APDController", "Status", "STATUS_NAMES", "simulate", "SimResult",
+    "check_trajectory",
+    "plant_truth", "theta_truth", "rmse", "line", "model_move", "paper_move", "PAPER_MOVES",
+    "Trajectory",
     # errors
+    "Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError", "OutputError",
+    "InputFileError",
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
-    "ClosureError",
-    "TrajectoryError", "GainError", "ModelMismatchError", "OutcomeWarning",
+    "ClosureError", "TrajectoryError", "GainError", "ModelMismatchError", "BuildError",
+    "OutcomeWarning",
     # layer 3 (imported on first use)
     *_LAZY,
 ]

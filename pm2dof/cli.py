@@ -25,14 +25,16 @@ the model file). Where a file names its model (a study file), that model is the 
 import argparse
 import sys
 import warnings
+from pathlib import Path
 
-from .core.errors import ModelFileError, OutcomeWarning, StaleGeneratedCodeError
+from .analysis.progress import Progress
+from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
 
 __all__ = ["main", "build_parser"]
 
 
-def _progress(msg):
-    print(f"  .. {msg}", file=sys.stderr, flush=True)
+#: where long jobs report (stage lines; bars on a terminal); main() makes it quiet on --quiet
+_progress = Progress()
 
 
 def _model(args):
@@ -57,14 +59,13 @@ def cmd_models(args):
 
 def cmd_models_copy(args):
     import shutil
-    from pathlib import Path
     from .core.paths import resolve_model
     src = resolve_model(args.copy[0])
     dest = Path(args.copy[1]).expanduser()
     if dest.is_dir():
         dest = dest / src.name
     if dest.exists():
-        raise FileExistsError(f"{dest} exists; not overwritten")
+        raise ArgumentError(f"{dest} exists; not overwritten (choose another folder or remove it)")
     dest.parent.mkdir(parents=True, exist_ok=True)
     shutil.copyfile(src, dest)
     print(f"wrote {dest}. Edit it (keep or change [model].name), then: pm2dof derive {dest}")
@@ -80,7 +81,7 @@ def cmd_report(args):
 
 def cmd_derive(args):
     if args.path and args.model and args.path != args.model:
-        raise ValueError(f"give the model once: positional {args.path!r} or --model "
+        raise ArgumentError(f"give the model once: positional {args.path!r} or --model "
                          f"{args.model!r}, not both")
     from .derive.run import derive  # needs the [derive] extra (SymPy, CasADi); main() says so
     derive(args.path or args.model, args.out, force=args.force, build=not args.no_build,
@@ -111,7 +112,7 @@ def cmd_demo(args):
 
 def cmd_identify(args):
     if (args.excite or args.design_excitation) and not args.out:
-        raise ValueError("--excite and --design-excitation need --out FILE")
+        raise ArgumentError("--excite and --design-excitation need --out FILE")
     if args.excite:  # issue 13: simulated robot -> log file
         from .analysis.excite import run_excite
         run_excite(_model(args), args.out, excitation_file=args.excitation,
@@ -157,9 +158,9 @@ def cmd_splits(args):
 
 def _per_actuator(values, n, flag):
     if len(values) not in (1, n):
-        raise ValueError(f"{flag}: give one value or {n} (one per actuator), got {len(values)}")
+        raise ArgumentError(f"{flag}: give one value or {n} (one per actuator), got {len(values)}")
     if not all(v > 0 for v in values):
-        raise ValueError(f"{flag}: every value must be > 0, got {values}")
+        raise ArgumentError(f"{flag}: every value must be > 0, got {values}")
     return [values[0]] * n if len(values) == 1 else list(values)
 
 
@@ -192,16 +193,20 @@ def cmd_animate(args):
 def cmd_study_run(args):
     from .studies import read_study, resolve_study, run_study
     if args.workers is not None and args.scheduler:
-        raise ValueError("give --workers (an embedded cluster) or --scheduler (an existing "
+        raise ArgumentError("give --workers (an embedded cluster) or --scheduler (an existing "
                          "one), not both: an existing cluster's workers are started with it")
     study = read_study(resolve_study(args.study), quick=args.quick)
-    if args.model is not None:  # the study file names its model; --model overrides it
+    if args.model is not None or args.generated is not None:  # override the study file's
         import dataclasses
         from .core.paths import resolve_model
-        study = dataclasses.replace(study, model_path=str(resolve_model(args.model).resolve()))
+        study = dataclasses.replace(
+            study, model_path=(study.model_path if args.model is None
+                               else str(resolve_model(args.model).resolve())),
+            generated_path=(study.generated_path if args.generated is None
+                            else str(Path(args.generated).expanduser().resolve())))
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
-                        timeout=args.timeout, progress=not args.no_progress)
+                        timeout=args.timeout, progress=_progress)
     except KeyboardInterrupt:
         print(f"\npm2dof: interrupted; the finished chunks are in {args.out}/results. Run the "
               f"same command again to continue where it stopped.", file=sys.stderr)
@@ -222,14 +227,13 @@ def cmd_study_show(args):
         return 0
     path = resolve_study(args.name)
     if not path.is_file():
-        raise ValueError(f"no study file {path} (shipped: "
+        raise ArgumentError(f"no study file {path} (shipped: "
                          f"{', '.join(f.stem for f in sorted(SHIPPED_STUDIES.glob('*.toml')))})")
     sys.stdout.write(path.read_text())
     return 0
 
 
 def cmd_study_report(args):
-    from pathlib import Path
     from .studies.report import run_report
     s, cols, info = run_report(args.dir, as_json=args.json)
     if not args.no_figures:
@@ -276,6 +280,8 @@ def _study_parser(sub):
                    "gains, adaptation")
     r.add_argument("--model", metavar="NAME|PATH", help="run the study on this model instead of "
                    "the one its file names")
+    r.add_argument("--generated", metavar="DIR", help="the model's generated C, when not in "
+                   "the default folder (overrides the study file's generated key)")
     r.add_argument("--out", required=True, metavar="DIR", help="output folder")
     r.add_argument("--workers", type=int, metavar="N",
                    help="worker processes of the embedded cluster (default: one per core)")
@@ -286,7 +292,8 @@ def _study_parser(sub):
                    help="the study file's [quick] size: seconds, for a first look and the tests")
     r.add_argument("--timeout", type=float, default=10.0, metavar="S",
                    help="seconds to wait for the scheduler and its workers (default 10)")
-    r.add_argument("--no-progress", action="store_true", help="no progress line")
+    r.add_argument("--quiet", "--no-progress", action="store_true", dest="quiet",
+                   help="no progress output (bars are drawn only on a terminal anyway)")
     r.set_defaults(func=cmd_study_run)
     r = ssub.add_parser("show", help="print a shipped study file (a commented example)",
                         description="Print a shipped study file, or list them without NAME. "
@@ -312,6 +319,7 @@ def _study_parser(sub):
                         "the in-process batch at 10^4 rollouts.")
     r.add_argument("--json", action="store_true", help="print the results as JSON")
     r.add_argument("--quick", action="store_true", help="10x fewer rollouts (for tests)")
+    r.add_argument("--quiet", action="store_true", help="no progress output on stderr")
     r.set_defaults(func=cmd_study_bench)
 
 
@@ -336,6 +344,9 @@ def build_parser():
     common.add_argument("--generated", default=None, metavar="DIR",
                         help="folder of the model's generated C (default: generated/<stem>/ "
                         "beside the model file; shipped models: inside pm2dof)")
+    common.add_argument("--quiet", action="store_true",
+                        help="no progress output on stderr (progress bars are drawn only when "
+                        "stderr is a terminal; stage lines always, unless --quiet)")
     p = sub.add_parser("models", help="list the shipped models",
                        description="List the models that come with pm2dof: their name (for "
                        "--model NAME and load_model(NAME)), leg count and description. With "
@@ -409,7 +420,7 @@ def build_parser():
     p.add_argument("--json", action="store_true", help="--data: print the results as JSON")
     p.add_argument("--design-excitation", action="store_true",
                    help="design a D-optimal periodic excitation (Fourier series in task space, "
-                   "CasADi + IPOPT, about a minute) and write it as TOML to --out")
+                   "CasADi + IPOPT, 1-2 minutes) and write it as TOML to --out")
     for flag, kind, default, text in (
             ("--base-hz", float, 0.2, "base frequency f0, Hz (default 0.2: 5 s period)"),
             ("--harmonics", int, 10, "harmonics of f0 (default 10: up to 2 Hz)"),
@@ -522,12 +533,6 @@ def build_parser():
     return ap
 
 
-def _run_errors():
-    """StudyRunError when the studies layer is loaded (no Dask import otherwise)."""
-    mod = sys.modules.get("pm2dof.studies.runner")
-    return mod.StudyRunError if mod else ValueError
-
-
 def _show_warning(message, category, filename, lineno, file=None, line=None,
                   _default=warnings.showwarning):
     if issubclass(category, OutcomeWarning):
@@ -547,19 +552,22 @@ def main(argv=None):
     ap = build_parser()
     args = ap.parse_args(argv)
     results.COMMAND_LINE = ["pm2dof", *(sys.argv[1:] if argv is None else argv)]
+    global _progress
+    _progress = Progress(quiet=getattr(args, "quiet", False))
     if not getattr(args, "func", None):
         ap.print_help()
         return 2
-    from .core.build import BuildError
     try:
         with warnings.catch_warnings():   # each rollout that did not complete: one line
             warnings.simplefilter("always", OutcomeWarning)
             warnings.showwarning = _show_warning
             return args.func(args)
-    except (ModelFileError, StaleGeneratedCodeError, ValueError, BuildError, FileExistsError,
-            _run_errors()) as exc:  # typed
+    except Pm2dofError as exc:  # a typed error: the input is refused, not a bug
         print(f"pm2dof: error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        print("\npm2dof: interrupted", file=sys.stderr)
+        return 130
     except ModuleNotFoundError as exc:
         module = (exc.name or "").split(".")[0]
         if module not in _EXTRAS:

@@ -97,7 +97,7 @@ def test_controller_step_refuses_a_wrong_shape():
     c = pm2dof.NAController(m)
     q = m.ik([0.245, 0.265])
     c.reset(q[:3])
-    with pytest.raises(ValueError, match=r"'qa' \(#1\) must have shape \(3,\), got shape \(1, 3\)"):
+    with pytest.raises(pm2dof.ArgumentError, match=r"input 'qa' must have shape \(3,\), got shape \(1, 3\)"):
         c.step(q[:3].reshape(1, 3).copy(), np.array([0.245, 0.265]), np.zeros(2), np.zeros(2))
 
 

@@ -1,17 +1,25 @@
 # Optimal excitation: constraints hold at dense samples, rest at both ends, the CasADi graph is the model's C, file round trip.
+import inspect
+import re
+from pathlib import Path
+
 import numpy as np
 import pytest
 
 import pm2dof
 from pm2dof import cli
-from pm2dof.analysis.excitation_design import (ExcitationError, FourierExcitation,
+from pm2dof.analysis.excitation_design import (IPOPT_OPTIONS, ExcitationError,
+                                               FourierExcitation, _casadi_openblas,
                                                check_excitation, design_excitation,
-                                               load_excitation, regressor_condition,
-                                               sample_function, trajectory_of, write_excitation)
+                                               load_excitation, objective_logdet, random_start,
+                                               regressor_condition, sample_function,
+                                               trajectory_of, write_excitation)
 from pm2dof.analysis.ident_log import read_log
 from pm2dof.analysis.identify import identifiability
 
 LIMITS = {"v_max": 0.4, "a_max": 6.0, "tau_fraction": 0.3}
+SMALL = dict(base_hz=0.5, harmonics=4, periods=1, samples=80, constraint_samples=200, **LIMITS)
+SHIPPED = Path(__file__).resolve().parent.parent / "examples" / "excitation_shang2010.toml"
 
 
 @pytest.fixture(scope="module")
@@ -23,8 +31,7 @@ def m():
 def designed(m):
     """A small design (4 harmonics of 0.5 Hz, one 2 s period; a few seconds of IPOPT) with
     limits below the defaults, so that some of them bind."""
-    return design_excitation(m, base_hz=0.5, harmonics=4, periods=1, samples=80,
-                             constraint_samples=200, **LIMITS)
+    return design_excitation(m, **SMALL)
 
 
 def test_design_meets_every_constraint_every_millisecond(m, designed):
@@ -82,8 +89,10 @@ def test_file_round_trip_and_bad_files(tmp_path, m, designed):
     for k in ("center", "a", "b"):
         assert np.array_equal(getattr(back, k), getattr(designed, k)), k
     assert back.base_hz == designed.base_hz and back.periods == designed.periods
-    assert back.info["cond_after"] == designed.info["cond_after"]
+    assert back.info == designed.info          # [design] with its sub-tables, exactly
     text = p.read_text()
+    # the file is a function of the design alone: no wall time, no date
+    assert write_excitation(tmp_path / "again.toml", back, m).read_text() == text
     bad = tmp_path / "bad.toml"
     bad.write_text(text.replace('model = "shang2010"', 'model = "fivebar"'))
     with pytest.raises(ExcitationError, match="model 'fivebar', not 'shang2010'"):
@@ -110,3 +119,79 @@ def test_excite_runs_the_file(tmp_path, m, designed, capsys):
     ident = identifiability(m)
     assert (regressor_condition(m, ident, traj)[0]
             < regressor_condition(m, ident, excitation(m, duration=designed.duration))[0])
+
+
+def test_design_is_deterministic_and_runs_ipopt_blas_on_one_thread(m, designed):
+    """The same arguments give the same file bit for bit, whatever CasADi's OpenBLAS was set
+    to before (its default, one thread per core, changed the shipped design's IPOPT path:
+    issue 22, item 5); during the solve it runs on one thread, and is restored after."""
+    lib = _casadi_openblas()
+    assert lib is not None, "CasADi's bundled OpenBLAS was not found"
+    seen = []
+    lib.openblas_set_num_threads(2)
+    again = design_excitation(m, **SMALL, progress=lambda line: seen.append(
+        lib.openblas_get_num_threads()) if "IPOPT iteration" in line else None)
+    assert lib.openblas_get_num_threads() == 2
+    assert seen and set(seen) == {1}, seen
+    for k in ("center", "a", "b"):
+        assert np.array_equal(getattr(again, k), getattr(designed, k)), k
+    assert again.info == designed.info
+    assert designed.info["blas_threads"] == 1
+    # the copy IPOPT uses is the one set: the process maps exactly one
+    with open("/proc/self/maps") as fh:
+        assert len({ln.split()[-1] for ln in fh if "libcasadi-tp-openblas" in ln}) == 1
+
+
+def test_progress_lines_and_summary_report_one_log_det(m):
+    """The progress lines' log det is the objective's log det(Phi^T Phi / K) (not IPOPT's
+    column-scaled value): stopped at iteration 25, the last line equals
+    :func:`objective_logdet` of the result, which the summary reports as the objective's."""
+    lines = []
+    exc = design_excitation(m, **{**SMALL, "max_iter": 25}, progress=lines.append)
+    values = [float(re.search(r"iteration 25: objective log det (-?[0-9.]+)", ln).group(1))
+              for ln in lines if "iteration 25:" in ln]
+    assert len(values) == 1, lines
+    # 3 decimals printed; the result is IPOPT's iterate projected exactly onto the rest
+    # conditions (a change of IPOPT's constraint tolerance)
+    assert values[0] == pytest.approx(exc.info["objective_logdet_after"], abs=2e-3)
+    assert exc.info["objective_logdet_after"] == pytest.approx(
+        objective_logdet(m, exc, SMALL["samples"]), rel=1e-12)
+
+
+def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
+    """examples/excitation_shang2010.toml (issue 22, item 5): its [design] holds the arguments
+    of ``pm2dof identify --design-excitation`` today (the README's command), IPOPT's options,
+    what it was designed with, and figures that recompute from its coefficients with today's
+    model: cond and log det on the run's samples and on the objective's, at the optimum and at
+    the start (rebuilt from the recorded seed). A change of the defaults, or of the model that
+    moves these figures, makes this fail until the file is designed again."""
+    exc = load_excitation(SHIPPED, m)
+    info = exc.info
+    defaults = {k: p.default for k, p in inspect.signature(design_excitation).parameters.items()
+                if p.default is not inspect.Parameter.empty and k != "progress"}
+    assert {k: info[k] for k in defaults} == defaults
+    assert info["ipopt"] == IPOPT_OPTIONS
+    assert info["ipopt_status"] == "Solve_Succeeded" and info["blas_threads"] == 1
+    # what it was designed with (a model change that matters shows in the figures below)
+    assert {"pm2dof", "casadi", "numpy", "model_file_sha256", "formulation_sha256", "machine",
+            "libc"} <= set(info["provenance"])
+    first = next(iter(m.spec.trajectories.values()))       # the middle of the first move
+    assert np.array_equal(info["region_center"],
+                          (np.asarray(first["start"], float) + first["end"]) / 2)
+    assert (exc.base_hz, exc.periods, exc.harmonics) == (
+        info["base_hz"], info["periods"], info["harmonics"])
+    ident = identifiability(m)
+    start = random_start(m, **{k: info[k] for k in ("base_hz", "harmonics", "periods", "v_max",
+                                                  "a_max", "radius", "seed")})
+    for when, e in (("after", exc), ("before", start)):
+        cond, logdet = regressor_condition(m, ident, trajectory_of(m, e))
+        assert cond == pytest.approx(info[f"cond_{when}"], rel=1e-9), when
+        assert logdet == pytest.approx(info[f"logdet_{when}"], rel=1e-9, abs=1e-9), when
+        assert objective_logdet(m, e, info["samples"], ident) == pytest.approx(
+            info[f"objective_logdet_{when}"], rel=1e-9, abs=1e-9), when
+    chk = check_excitation(m, exc, v_max=info["v_max"], a_max=info["a_max"],
+                           tau_limit=info["tau_fraction"] * np.max(m.spec.limits["tau_max"]),
+                           sing_min=max(m.singularity_threshold,
+                                        m.parallel_singularity_threshold)
+                           + info["singularity_margin"], radius=info["radius"])
+    assert chk["ok"], chk

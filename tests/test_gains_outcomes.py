@@ -294,12 +294,13 @@ def test_step_accepts_array_likes():
     (lambda q: (q.tolist()[:2], [0.2, 0.3], [0, 0], [0, 0]), r"'qa' must have shape \(3,\), got shape \(2,\)"),
     (lambda q: (q, [0.2, 0.3, 0.1], [0, 0], [0, 0]), r"'xd' must have shape \(2,\), got shape \(3,\)"),
     (lambda q: (q, [0.2, math.nan], [0, 0], [0, 0]), r"'xd' \(#2\) has a non-finite value at index 1"),
-    (lambda q: (q, [0.2, 0.3], [0, "x"], [0, 0]), r"xd_dot must be an array of 2 real numbers"),
+    (lambda q: (q, [0.2, 0.3], [0, "x"], [0, 0]), r"input 'xd_dot' must be an array of 2 real numbers"),
 ])
 def test_step_refuses_bad_array_likes_and_keeps_its_state(args, text):
     q, a, _ = _pair()
     before = a.state
-    with pytest.raises((ValueError, TypeError), match=text):
+    with pytest.raises((ValueError, TypeError), match=text) as info:
         a.step(*args(q))
+    assert isinstance(info.value, pm2dof.Pm2dofError), type(info.value)   # typed (issue 19)
     after = a.state
     assert all(np.array_equal(before[k], after[k]) for k in before)

@@ -39,7 +39,7 @@ _HEAVY = {"sympy", "casadi", "matplotlib", "dask", "distributed", "pyarrow", "sc
 THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
     "__main__": set(), "_moved": set(),
-    "analysis": {"numpy", "scipy", "casadi", "pyarrow"},   # pyarrow: Parquet logs (ident_log)
+    "analysis": {"numpy", "scipy", "casadi", "pyarrow", "tqdm"},   # pyarrow: Parquet logs
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
     "bench": {"numpy", "casadi", "sympy"},              # baselines; each optional at run time
     "studies": {"numpy", "dask", "distributed", "pyarrow"},

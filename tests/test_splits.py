@@ -138,6 +138,34 @@ def test_splits_are_exact_against_independent_solvers(redundant):
     assert modes_checked, "no case showed that a non-optimal torque fails the KKT check"
 
 
+def test_zero_preload_still_keeps_the_signs_as_the_lp_says():
+    """A preload of 0 (the model file's default) is not "no preload": every tau_i keeps its sign
+    where some torques within the limits can (mode 0, least norm), and where none can (mode 1)
+    the torques are HiGHS's largest worst-case margin, which is < 0 there. Along the low-speed
+    move's inverse dynamics at 6 N m (issue 22, item 11) both happen: keeping (+, +, +) needs
+    more torque than min-norm, so `splits --tau-max 6.0` counts preload-infeasible samples."""
+    from pm2dof.control.trajectory import model_move
+    m = pm2dof.load_model()
+    n, traj = m.n_legs, model_move(m, "low")
+    w, pre, sign = np.full(n, 6.0), np.zeros(n), np.ones(n)
+    modes = set()
+    for x, v, a in zip(traj.xd, traj.xd_dot, traj.xd_ddot):
+        q = m.ik(x)
+        S, u = m.S(q), m.Y(q, v, v, a) @ m.theta_nominal
+        r = m.torque_splits(q, u, w, pre, sign)
+        tau, mode, best = r["preload"], r["preload_mode"], _lp_max_margin(S, u, w, pre, sign)
+        info = f"x={x.tolist()} u={u.tolist()} mode={mode} lp={best}"
+        assert best is not None, info                      # the limits alone are never exceeded
+        if mode == 0:
+            assert best >= -1e-9 * w.max() and np.all(tau >= -1e-10 * w), info
+            assert _kkt_residual(S, tau, pre, w, w) <= 1e-9, info
+        else:
+            assert mode == 1 and best < 0, info
+            assert np.min(sign * tau - pre) == pytest.approx(best, abs=1e-8 * w.max()), info
+        modes.add(mode)
+    assert modes == {0, 1}
+
+
 def test_every_split_gives_the_min_norm_task_force_in_the_steps(redundant):
     """The generated steps at one state: S^T tau_a of every split equals min_norm's (no clipping
     here: the torques stay inside tau_max)."""

@@ -26,22 +26,50 @@ The model's Y, S, ik and singularity measures enter the optimisation as its gene
 re-derived. In the objective, the Coulomb columns use tanh(qd / 0.1 rad/s) for sign(qd): it
 keeps log det differentiable, and samples slower than 0.1 rad/s are left out by
 ``identify --data`` anyway.
+
+Every log det reported is one quantity, log det(Phi^T Phi / K): Phi the unscaled base regressor
+stacked over K samples, so that it does not grow with K. It is reported on two sample sets,
+each named where printed: the *objective* (what IPOPT maximises and its progress lines show:
+``samples`` per period, Coulomb columns smoothed; IPOPT itself works on column-scaled Phi, which
+shifts log det by a constant) and the *run* (every 5th sample of the controller period over the
+whole run, exact sign: :func:`regressor_condition`).
+
+Determinism: the design is a long IPOPT run (hundreds of iterations) on a non-convex problem,
+and its path, hence the local optimum it ends at, follows the last bits of the arithmetic. So
+the design runs CasADi's bundled OpenBLAS (the BLAS of IPOPT and MUMPS) on one thread: with
+its default of one thread per core the result depended on the core count (measured: 345 IPOPT
+iterations with 2 threads, 341 with 4, 373 with 1, each with other coefficients). Whatever
+else rounds differently from one machine to another (glibc's libm picks FMA variants by CPU;
+measured 308 iterations with them switched off) still moves the result: a design is
+reproducible bit for bit on the same machine and install, which the file records
+(``[design.provenance]``).
 """
+import contextlib
+import json
 import math
+import platform
 import time
 from dataclasses import dataclass, field
+from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
 
+from ..core.errors import Pm2dofError
 from .ident_data import MIN_JOINT_SPEED
 
 __all__ = ["ExcitationError", "FourierExcitation", "design_excitation", "load_excitation",
            "write_excitation", "trajectory_of", "regressor_condition", "check_excitation",
-           "sample_function", "excitation_trajectory", "run_design"]
+           "sample_function", "excitation_trajectory", "run_design", "objective_logdet",
+           "random_start", "IPOPT_OPTIONS", "design_provenance"]
+
+#: IPOPT's options of the design (``max_iter`` is an argument of :func:`design_excitation`);
+#: written to the file's ``[design.ipopt]``.
+IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "tol": 1e-6, "acceptable_tol": 1e-4,
+                 "acceptable_iter": 10, "acceptable_obj_change_tol": 1e-7}
 
 
-class ExcitationError(ValueError):
+class ExcitationError(Pm2dofError, ValueError):
     """An excitation file or design request that cannot be used (names the key and value)."""
 
 
@@ -198,6 +226,105 @@ def _center(model):
     return (np.asarray(t["start"], float) + np.asarray(t["end"], float)) / 2
 
 
+def random_start(model, *, base_hz, harmonics, periods, v_max, a_max, radius, seed):
+    """IPOPT's start: random coefficients (``numpy.random.default_rng(seed)``) with the rest
+    conditions, around the middle c0 of the model's first move, scaled to 30 % of the speed,
+    acceleration and radius limits. Returns a :class:`FourierExcitation`."""
+    L, c0 = int(harmonics), _center(model)
+    rng = np.random.default_rng(seed)
+    w = 2 * np.pi * base_hz * np.arange(1, L + 1)
+    a0 = rng.normal(size=(2, L)) / np.arange(1, L + 1)
+    b0 = rng.normal(size=(2, L)) / np.arange(1, L + 1) ** 2
+    a0 -= a0.mean(axis=1, keepdims=True)
+    b0 -= np.outer(b0 @ w, w) / (w @ w)
+    x_, v_, a_ = FourierExcitation(base_hz, periods, c0, a0, b0).evaluate(
+        np.arange(2000) / (2000 * base_hz))
+    k = min(0.3 * v_max / np.max(np.hypot(*v_.T)), 0.3 * a_max / np.max(np.hypot(*a_.T)),
+            0.3 * radius / np.max(np.hypot(*(x_ - c0).T)))
+    return FourierExcitation(base_hz, periods, c0.copy(), k * a0, k * b0)
+
+
+def objective_logdet(model, exc, samples=250, ident=None):
+    """The design's objective at ``exc``: log det(Phi^T Phi / K) of the unscaled base regressor
+    at K = ``samples`` instants of one period, Coulomb columns smoothed as in the design
+    (:func:`sample_function`, evaluated numerically); the quantity IPOPT's progress lines
+    show. Recomputes the file's ``objective_logdet_*`` from its coefficients."""
+    from .identify import identifiability
+    I = (identifiability(model) if ident is None else ident)["independent"]
+    t = np.arange(samples) / (samples * exc.base_hz)
+    x, v, a = exc.evaluate(t)
+    Yv = np.array(sample_function(model, I, smooth_sign=MIN_JOINT_SPEED).map(samples)(
+        x.T, v.T, a.T)[0])
+    Phi = np.vstack([Yv[:, k].reshape(len(I), 2).T for k in range(samples)])
+    return float(np.linalg.slogdet(Phi.T @ Phi / samples)[1])
+
+
+def _casadi_openblas():
+    """ctypes handle of the OpenBLAS that CasADi's IPOPT and MUMPS use, or None.
+
+    The wheel ships it three times (``libcasadi-tp-openblas.so``, ``.so.0``, ``.so.0.3``: wheels
+    hold no symbolic links) and IPOPT loads the ``.so.0`` (its soname): loading another copy
+    would set the threads of a library nobody calls. So: the copy this process has mapped, else
+    the ``.so.0``, which the IPOPT plugin then finds by its soname."""
+    import ctypes
+
+    import casadi
+    path = Path(casadi.__file__).parent / "libcasadi-tp-openblas.so.0"
+    try:
+        with open("/proc/self/maps") as fh:
+            mapped = {ln.split()[-1] for ln in fh if "libcasadi-tp-openblas" in ln}
+        if len(mapped) == 1:
+            path = Path(mapped.pop())
+    except OSError:
+        pass
+    try:
+        lib = ctypes.CDLL(str(path))
+        lib.openblas_get_num_threads, lib.openblas_set_num_threads
+    except (OSError, AttributeError):
+        return None
+    return lib
+
+
+@contextlib.contextmanager
+def _single_thread_blas():
+    """CasADi's OpenBLAS (:func:`_casadi_openblas`) on one thread for the block, then as
+    before. Yields the thread count in force, or None for a CasADi without that library."""
+    lib = _casadi_openblas()
+    if lib is None:
+        yield None
+        return
+    before = lib.openblas_get_num_threads()
+    lib.openblas_set_num_threads(1)
+    try:
+        yield int(lib.openblas_get_num_threads())
+    finally:
+        lib.openblas_set_num_threads(before)
+
+
+def design_provenance(model):
+    """What a design's result depends on besides its arguments: versions, the model's hashes and
+    the machine's arithmetic (CPU, C library). Deterministic for one machine and install."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    import casadi
+    try:
+        pm2dof_version = version("pm2dof")
+    except PackageNotFoundError:
+        pm2dof_version = "unknown"
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as fh:
+            cpu = next((ln.split(":", 1)[1].strip() for ln in fh if ln.startswith("model name")),
+                       cpu)
+    except OSError:
+        pass
+    return {"pm2dof": pm2dof_version, "casadi": casadi.__version__, "numpy": np.__version__,
+            "model_file_sha256": model.spec.file_sha256,
+            "formulation_sha256": model.spec.formulation_sha256,
+            "machine": f"{platform.machine()}, {cpu}",
+            "libc": " ".join(platform.libc_ver()).strip() or "unknown"}
+
+
 def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
                       tau_fraction=0.5, singularity_margin=0.1, radius=0.06, samples=250,
                       constraint_samples=1000, safety=0.98, seed=0, max_iter=500,
@@ -229,13 +356,21 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         imposed with the limits times ``safety`` (0.98), so that they hold between the
         samples too (:func:`check_excitation` checks every 1 ms).
     seed : int
-        Random start (IPOPT finds a local optimum; log det is not concave here).
+        Random start (:func:`random_start`; IPOPT finds a local optimum, log det is not
+        concave here).
+    max_iter : int
+        IPOPT's iteration limit (its other options: :data:`IPOPT_OPTIONS`).
+    progress : callable(str), optional
+        Called with a line every 25 IPOPT iterations (the objective's log det, elapsed s).
 
     Returns
     -------
     FourierExcitation
-        Its ``info`` has the limits, the objective, cond and log det before (the start)
-        and after, IPOPT's status, iterations and wall time.
+        Its ``info`` (the file's ``[design]``): every argument above but ``progress``, the
+        IPOPT options, cond and log det before (the start) and after on the objective's and
+        the run's samples (module docstring), IPOPT's status and iterations, and
+        :func:`design_provenance`. The same arguments on the same machine and install give
+        the same coefficients and ``info`` bit for bit (no wall time in it).
     """
     import casadi as ca
     from .identify import identifiability
@@ -243,6 +378,11 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
             and 0 < tau_fraction <= 1 and radius > 0):
         raise ExcitationError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
                               "a_max > 0, 0 < tau_fraction <= 1, radius > 0")
+    args = {"base_hz": base_hz, "harmonics": int(harmonics), "periods": int(periods),
+            "v_max": v_max, "a_max": a_max, "tau_fraction": tau_fraction,
+            "singularity_margin": singularity_margin, "radius": radius, "samples": int(samples),
+            "constraint_samples": int(constraint_samples), "safety": safety, "seed": int(seed),
+            "max_iter": int(max_iter)}
     t_start = time.perf_counter()
     ident = identifiability(model)
     I, L = ident["independent"], int(harmonics)
@@ -266,28 +406,21 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     Yv, _, _ = per_sample.map(samples)(X.T, V.T, Acc.T)
     Phi = ca.vertcat(*[ca.reshape(Yv[:, k], 2, r) for k in range(samples)])
 
-    # random start: small coefficients with the rest conditions, inside every limit
-    rng = np.random.default_rng(seed)
-    w = 2 * np.pi * base_hz * np.arange(1, L + 1)
-    a0 = rng.normal(size=(2, L)) / np.arange(1, L + 1)
-    b0 = rng.normal(size=(2, L)) / np.arange(1, L + 1) ** 2
-    a0 -= a0.mean(axis=1, keepdims=True)
-    b0 -= np.outer(b0 @ w, w) / (w @ w)
-    start = FourierExcitation(base_hz, periods, c0.copy(), a0, b0)
-    _, v_, a_ = start.evaluate(np.arange(2000) / (2000 * base_hz))
-    x_ = start.evaluate(np.arange(2000) / (2000 * base_hz))[0]
-    k = min(0.3 * v_max / np.max(np.hypot(*v_.T)), 0.3 * a_max / np.max(np.hypot(*a_.T)),
-            0.3 * radius / np.max(np.hypot(*(x_ - c0).T)))
-    start = FourierExcitation(base_hz, periods, c0.copy(), k * a0, k * b0)
+    start = random_start(model, base_hz=base_hz, harmonics=L, periods=periods, v_max=v_max,
+                         a_max=a_max, radius=radius, seed=seed)
     z0 = np.concatenate([start.a.ravel(), start.b.ravel(), c0])   # z = [a_x, a_y, b_x, b_y, c]
     # column scaling: log det is invariant to it up to a constant; it keeps det() in range
     Phi0 = ca.Function("Phi0", [z], [Phi])(z0).full()
-    D = ca.DM(np.diag(1.0 / np.linalg.norm(Phi0, axis=0)))
+    norms = np.linalg.norm(Phi0, axis=0)
+    D = ca.DM(np.diag(1.0 / norms))
     M = ca.mtimes([D, Phi.T, Phi, D])
     objective = -ca.log(ca.det(M))
+    # -objective + this = log det(Phi^T Phi / samples), the unscaled per-sample log det
+    to_logdet = float(2 * np.sum(np.log(norms)) - r * np.log(samples))
 
     Xc, Vc, Ac = motion(constraint_samples)
     _, Tc, Sc = per_sample.map(constraint_samples)(Xc.T, Vc.T, Ac.T)
+    w = 2 * np.pi * base_hz * np.arange(1, L + 1)
     g = [ca.vec(ca.sum1(A)), ca.mtimes(B.T, ca.DM(w)),                               # rest: 4
          ca.sum2(Vc ** 2), ca.sum2(Ac ** 2),                                  # speed, accel
          ca.sum2((Xc - ca.repmat(ca.DM(c0).T, constraint_samples, 1)) ** 2),  # radius
@@ -299,34 +432,34 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
                           np.full(K, (safety * a_max) ** 2), np.full(K, (safety * radius) ** 2),
                           np.tile(tau_lim, K), np.full(2 * K, np.inf)])
     if progress:
-        progress(f"IPOPT: {4 * L + 2} coefficients, log det over {samples} samples, "
-                 f"{len(lbg)} constraints at {constraint_samples} samples per period")
+        progress(f"IPOPT: {4 * L + 2} coefficients, objective log det(Phi^T Phi / K) over "
+                 f"{samples} samples per period, {len(lbg)} constraints at {constraint_samples} "
+                 f"samples per period")
     opts = {}
     if progress:    # IPOPT's iterations reported as they happen (about a minute in all)
-        watch = _IterationProgress(z.numel(), len(lbg), progress, t_start)
-        opts["iteration_callback"] = watch
+        opts["iteration_callback"] = _IterationProgress(z.numel(), len(lbg), progress, t_start,
+                                                        to_logdet)
     solver = ca.nlpsol("excitation", "ipopt", {"x": z, "f": objective, "g": ca.vertcat(*g)},
                        {**opts, "ipopt.print_level": 0, "print_time": False, "ipopt.sb": "yes",
-                        "ipopt.hessian_approximation": "limited-memory",
-                        "ipopt.max_iter": int(max_iter), "ipopt.tol": 1e-6,
-                        "ipopt.acceptable_tol": 1e-4, "ipopt.acceptable_iter": 10,
-                        "ipopt.acceptable_obj_change_tol": 1e-7})
-    sol = solver(x0=z0, lbg=lbg, ubg=ubg)
+                        "ipopt.max_iter": int(max_iter),
+                        **{f"ipopt.{k}": v for k, v in IPOPT_OPTIONS.items()}})
+    with _single_thread_blas() as blas_threads:
+        sol = solver(x0=z0, lbg=lbg, ubg=ubg)
     zs = np.array(sol["x"]).ravel()
     stats = solver.stats()
-    exc = FourierExcitation(base_hz, periods, zs[4 * L:], zs[:2 * L].reshape(2, L),
-                            zs[2 * L:4 * L].reshape(2, L))
-    exc = _with_rest(exc)
+    exc = _with_rest(FourierExcitation(base_hz, periods, zs[4 * L:], zs[:2 * L].reshape(2, L),
+                                       zs[2 * L:4 * L].reshape(2, L)))
     before = regressor_condition(model, ident, trajectory_of(model, start))
     after = regressor_condition(model, ident, trajectory_of(model, exc))
-    info = {"objective": "log det of the base regressor's information matrix (D-optimal)",
-            "v_max": v_max, "a_max": a_max, "tau_fraction": tau_fraction,
-            "singularity_margin": singularity_margin, "radius": radius,
-            "region_center": c0.tolist(), "seed": seed,
-            "cond_before": before[0], "cond_after": after[0], "logdet_before": before[1],
-            "logdet_after": after[1], "ipopt_status": stats["return_status"],
-            "ipopt_iterations": stats["iter_count"],
-            "design_seconds": round(time.perf_counter() - t_start, 2)}
+    info = {"objective": "log det(Phi^T Phi / K) of the base regressor (D-optimal)", **args,
+            "region_center": c0.tolist(),
+            "objective_logdet_before": objective_logdet(model, start, samples, ident),
+            "objective_logdet_after": objective_logdet(model, exc, samples, ident),
+            "cond_before": before[0], "cond_after": after[0],
+            "logdet_before": before[1], "logdet_after": after[1],
+            "ipopt_status": stats["return_status"], "ipopt_iterations": stats["iter_count"],
+            "ipopt": dict(IPOPT_OPTIONS), "blas_threads": blas_threads or "default",
+            "provenance": design_provenance(model)}
     return FourierExcitation(exc.base_hz, exc.periods, exc.center, exc.a, exc.b, info)
 
 
@@ -334,12 +467,13 @@ def _iteration_progress_class():
     import casadi as ca
 
     class IterationProgress(ca.Callback):
-        """CasADi iteration callback: a progress line every ``every`` IPOPT iterations."""
+        """CasADi iteration callback: a progress line every ``every`` IPOPT iterations with
+        log det(Phi^T Phi / K) = -f + ``to_logdet`` (f IPOPT's objective, column-scaled)."""
 
-        def __init__(self, nx, ng, progress, t_start, every=25):
+        def __init__(self, nx, ng, progress, t_start, to_logdet, every=25):
             ca.Callback.__init__(self)
             self.nx, self.ng, self.progress, self.t_start = nx, ng, progress, t_start
-            self.every, self.iteration = every, 0
+            self.to_logdet, self.every, self.calls = to_logdet, every, 0
             self.construct("excitation_progress", {})
 
         def get_n_in(self):
@@ -365,10 +499,12 @@ def _iteration_progress_class():
             return ca.Sparsity(0, 0)
 
         def eval(self, arg):
-            self.iteration += 1
-            if self.iteration % self.every == 0:
-                self.progress(f"IPOPT iteration {self.iteration}: log det {-float(arg[1]):.3f}, "
-                              f"{time.perf_counter() - self.t_start:.0f} s")
+            self.calls += 1
+            k = self.calls - 1      # IPOPT calls back at its iterations 0, 1, 2, ...
+            if k > 0 and k % self.every == 0:
+                logdet = -float(arg[1]) + self.to_logdet
+                self.progress(f"IPOPT iteration {k}: objective log det "
+                              f"{logdet:.3f}, {time.perf_counter() - self.t_start:.0f} s")
             return [0]
 
     return IterationProgress
@@ -391,9 +527,20 @@ def _toml_list(v):
     return "[" + ", ".join(format(float(x), ".17g") for x in np.ravel(v)) + "]"
 
 
+def _toml_value(v):
+    if isinstance(v, str):
+        return json.dumps(v)            # a TOML basic string
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (list, tuple, np.ndarray)):
+        return _toml_list(v)
+    return repr(int(v)) if isinstance(v, (int, np.integer)) else repr(float(v))
+
+
 def write_excitation(path, exc, model):
-    """Write ``exc`` as TOML (``[excitation]`` coefficients, ``[design]`` what the design
-    reported), atomically."""
+    """Write ``exc`` as TOML (``[excitation]`` coefficients; ``[design]`` its ``info``, a dict
+    value such as ``ipopt`` or ``provenance`` as the sub-table ``[design.<key>]``),
+    atomically. The text is a function of ``exc`` and the model's name only."""
     from .results import write_atomic
     lines = ["# pm2dof excitation: periodic finite Fourier series in task space (Swevers et al. "
              "1997)",
@@ -405,14 +552,12 @@ def write_excitation(path, exc, model):
              f"a_x = {_toml_list(exc.a[0])}   # m/s", f"a_y = {_toml_list(exc.a[1])}",
              f"b_x = {_toml_list(exc.b[0])}   # m/s", f"b_y = {_toml_list(exc.b[1])}", ""]
     if exc.info:
+        tables = {k: v for k, v in exc.info.items() if isinstance(v, dict)}
         lines.append("[design]")
-        for k, v in exc.info.items():
-            if isinstance(v, str):
-                lines.append(f'{k} = "{v}"')
-            elif isinstance(v, (list, tuple, np.ndarray)):
-                lines.append(f"{k} = {_toml_list(v)}")
-            else:
-                lines.append(f"{k} = {v!r}")
+        lines += [f"{k} = {_toml_value(v)}" for k, v in exc.info.items() if k not in tables]
+        for name, table in tables.items():
+            lines += ["", f"[design.{name}]"] + [f"{k} = {_toml_value(v)}"
+                                                 for k, v in table.items()]
     write_atomic(path, ("\n".join(lines) + "\n").encode())
     return path
 
@@ -463,9 +608,11 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
                tau_fraction=0.5, seed=0, echo=print, progress=None):
     """``pm2dof identify --design-excitation --out FILE``: design, check at 1 ms, write."""
     from .identify import excitation, identifiability
+    t0 = time.perf_counter()
     exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
                             v_max=v_max, a_max=a_max, tau_fraction=tau_fraction, seed=seed,
                             progress=progress)
+    seconds = time.perf_counter() - t0
     i = exc.info
     chk = check_excitation(model, exc, v_max=v_max, a_max=a_max,
                            tau_limit=tau_fraction * np.max(model.spec.limits["tau_max"]),
@@ -477,11 +624,15 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
     write_excitation(out, exc, model)
     echo(f"wrote {out}: {exc.harmonics} harmonics of {exc.base_hz:g} Hz (up to {exc.max_hz:g} "
          f"Hz), {exc.periods} periods = {exc.duration:g} s; IPOPT {i['ipopt_status']} after "
-         f"{i['ipopt_iterations']} iterations, {i['design_seconds']:g} s")
+         f"{i['ipopt_iterations']} iterations, {seconds:.0f} s")
     echo(f"objective: {i['objective']}")
-    echo(f"condition number of the column-scaled base regressor: {i['cond_before']:.4g} at the "
-         f"start -> {i['cond_after']:.4g} optimised (the default multi-sine of --excite: "
-         f"{default[0]:.4g}); log det {i['logdet_before']:.2f} -> {i['logdet_after']:.2f}")
+    echo(f"log det(Phi^T Phi / K) at the start -> optimised: {i['objective_logdet_before']:.2f} "
+         f"-> {i['objective_logdet_after']:.2f} on the objective's samples ({i['samples']} per "
+         f"period, Coulomb smoothed: the progress lines), {i['logdet_before']:.2f} -> "
+         f"{i['logdet_after']:.2f} on the run's (every 5th sample, exact sign)")
+    echo(f"condition number of the column-scaled base regressor on the run's samples: "
+         f"{i['cond_before']:.4g} at the start -> {i['cond_after']:.4g} optimised (the default "
+         f"multi-sine of --excite: {default[0]:.4g})")
     echo(f"checked every 1 ms: speed {chk['speed']:.3f} <= {v_max:g} m/s, acceleration "
          f"{chk['acceleration']:.2f} <= {a_max:g} m/s^2, torque (Tables 1-2, min-norm) "
          f"{chk['torque']:.2f} N m, singularity measures >= {chk['sing']:.3f}, "

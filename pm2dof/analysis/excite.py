@@ -9,6 +9,7 @@ truth is written into the log.
 """
 import numpy as np
 
+from ..core.errors import ArgumentError
 from ..control.controllers import APDController, NAController
 from ..control.simulate import plant_vector, simulate
 from .ident_log import IdentLog
@@ -53,11 +54,11 @@ def excite(model, trajectory, *, truth=None, quantise=True, controller="apd"):
         period, the controller, the encoders and the excitation band.
     """
     if controller not in ("apd", "na"):
-        raise ValueError(f"controller must be 'apd' or 'na', got {controller!r}")
+        raise ArgumentError(f"controller must be 'apd' or 'na', got {controller!r}")
     ctrl = (APDController if controller == "apd" else NAController)(model, on_singular="zero")
     r = simulate(model, ctrl, trajectory, truth=truth, quantise=quantise)
     if r.n_singular or r.n_non_finite:
-        raise ValueError(f"the excitation run left the safe region ({r.n_singular} singular, "
+        raise ArgumentError(f"the excitation run left the safe region ({r.n_singular} singular, "
                          f"{r.n_non_finite} non-finite samples): reduce its amplitude")
     counts = model.spec.sensing["encoder_counts_per_rev"]
     meta = {"model": model.name, "n_legs": model.n_legs, "sample_period": trajectory.period,

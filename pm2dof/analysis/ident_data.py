@@ -28,6 +28,7 @@ import math
 import numpy as np
 
 from .ident_log import LogError, log_poses
+from ..core.errors import ArgumentError
 
 __all__ = ["lowpass", "choose_cutoff", "differentiate", "stack_regressor", "weighted_ls",
            "weak_directions", "identify_log", "CUTOFF_FACTOR", "MIN_JOINT_SPEED"]
@@ -58,7 +59,7 @@ def lowpass(cutoff_hz, sample_period, order=FILTER_ORDER):
     from scipy import signal
     nyquist = 0.5 / sample_period
     if not (0 < cutoff_hz < nyquist):
-        raise ValueError(f"filter cutoff {cutoff_hz:g} Hz must be in (0, {nyquist:g}) Hz "
+        raise ArgumentError(f"filter cutoff {cutoff_hz:g} Hz must be in (0, {nyquist:g}) Hz "
                          f"(the Nyquist frequency of T = {sample_period:g} s)")
     return signal.butter(order, cutoff_hz, fs=1.0 / sample_period, output="sos")
 

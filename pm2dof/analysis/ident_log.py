@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import ClosureError, WorkspaceError
+from ..core.errors import ClosureError, Pm2dofError, WorkspaceError
 from .results import write_atomic
 
 __all__ = ["LogError", "IdentLog", "read_log", "write_log", "log_poses", "MIN_ROWS"]
@@ -40,7 +40,7 @@ MIN_ROWS = 50
 _FAMILY = re.compile(r"(qa|qb|tau)(\d+)$")
 
 
-class LogError(ValueError):
+class LogError(Pm2dofError, ValueError):
     """A log that cannot be used: names the file, the row (1-based data row) and the column."""
 
 

@@ -2,6 +2,7 @@
 """Text and JSON reports of :func:`pm2dof.analysis.ident_data.identify_log`."""
 import numpy as np
 
+from ..core.errors import ArgumentError
 from ..control.simulate import theta_truth
 from .ident_data import identify_log
 from .ident_log import read_log
@@ -139,9 +140,9 @@ def load_theta(path, model):
     import json
     d = json.loads(open(path).read())
     if list(d.get("param_names", [])) != list(model.param_names):
-        raise ValueError(f"{path}: param_names {d.get('param_names')} do not match model "
+        raise ArgumentError(f"{path}: param_names {d.get('param_names')} do not match model "
                          f"{model.name!r} ({list(model.param_names)})")
     th = np.asarray(d["theta0"], dtype=float)
     if th.shape != (len(model.param_names),) or not np.isfinite(th).all():
-        raise ValueError(f"{path}: theta0 must be {len(model.param_names)} finite numbers")
+        raise ArgumentError(f"{path}: theta0 must be {len(model.param_names)} finite numbers")
     return th

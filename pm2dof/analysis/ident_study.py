@@ -20,6 +20,7 @@ import math
 
 import numpy as np
 
+from ..core.errors import ArgumentError
 from ..control.simulate import plant_truth, theta_truth
 from .excite import excite
 from .ident_data import identify_log
@@ -183,7 +184,7 @@ def substep_sensitivity(model, other, traj, seeds=10, *, noise_counts=0.5, ident
         inertial base parameters > 10 % of the largest and the friction ones, per seed).
     """
     if list(other.param_names) != list(model.param_names):
-        raise ValueError("the two models must have the same parameters")
+        raise ArgumentError("the two models must have the same parameters")
     ident = identifiability(model)
     changes, worst = [], []
     for s in range(seeds):

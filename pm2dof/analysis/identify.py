@@ -233,10 +233,10 @@ def seed_na(model, theta0):
     Returns {speed: (rmse_nominal, rmse_theta0)}, m.
     """
     from ..control.controllers import NAController
-    from .experiment import trajectory
+    from ..control.trajectory import model_move
     out = {}
     for speed in model.spec.trajectories:
-        traj = trajectory(model, speed)
+        traj = model_move(model, speed)
         out[speed] = (simulate(model, NAController(model), traj).rmse,
                       simulate(model, NAController(model, theta0=theta0), traj).rmse)
     return out

@@ -9,6 +9,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.errors import OutputError
+
 __all__ = ["provenance", "write_atomic", "write_json", "dumps", "save_figure"]
 
 REPO = Path(__file__).resolve().parents[2]   # the source checkout, when pm2dof runs from one
@@ -56,8 +58,11 @@ def provenance(model):
 def write_atomic(path, data):
     """Write bytes to ``path`` through a temporary file in the same folder and a rename."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    except OSError as exc:
+        raise OutputError(f"cannot write {path}: {exc.strerror or exc}") from None
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)

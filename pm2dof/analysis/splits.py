@@ -6,24 +6,49 @@ S^T tau, eq. 10). Lower ``tau_max`` until the minimum-norm split (eq. 21) clips 
 high-speed move, and the min-max split, which uses the redundancy to keep every actuator below
 its limit for as long as the task force allows, tracks where min-norm cannot. The preload split
 pays for its backlash protection in torque.
+
+The preload split keeps every actuator's sign sigma_i (``preload_sign``) and |tau_i| >= p_i
+(``preload``); a preload of 0 still keeps the signs (no torque reversal: no backlash crossing).
+Where no torques within tau_max do that, the split takes the torques with the largest
+worst-case margin min_i (sigma_i tau_i - p_i) (status "preload_infeasible"), which can put an
+actuator exactly at tau_max without clipping it. The rows say so: ``n_preload_infeasible``
+counts those samples and ``preload_margin`` is the least margin over the move (< 0: some
+actuator reversed its sign or fell short of its preload, by that much).
 """
 import numpy as np
 
 from ..control.controllers import SPLITS, APDController, NAController
 from ..control.simulate import simulate
-from .experiment import trajectory
+from ..control.trajectory import model_move
+from .progress import bar
 
-__all__ = ["split_comparison", "format_split_comparison", "tau_max_sweep", "run_splits"]
+__all__ = ["split_comparison", "format_split_comparison", "tau_max_sweep", "run_splits",
+           "preload_settings"]
 
 CONTROLLERS = {"apd": APDController, "na": NAController}
 
 
-def _row(r):
+def _row(r, preload=None, preload_sign=None):
+    """The numbers of one run; with ``preload`` and ``preload_sign`` (n,) also
+    ``preload_margin`` = min over the move's samples and actuators of sigma_i tau_i - p_i, N*m."""
     e = r.e[:r.n_move]
-    return {"rmse": r.rmse, "max_error": float(np.max(np.hypot(e[:, 0], e[:, 1]))),
-            "n_saturated": r.n_saturated, "n_preload_infeasible": r.n_preload_infeasible,
-            "n_singular": r.n_singular, "peak_tau": r.peak_tau,
-            "rms_tau": float(np.sqrt(np.mean(r.tau_a[:r.n_move] ** 2)))}
+    row = {"rmse": r.rmse, "max_error": float(np.max(np.hypot(e[:, 0], e[:, 1]))),
+           "n_saturated": r.n_saturated, "n_preload_infeasible": r.n_preload_infeasible,
+           "n_singular": r.n_singular, "peak_tau": r.peak_tau,
+           "rms_tau": float(np.sqrt(np.mean(r.tau_a[:r.n_move] ** 2)))}
+    if preload is not None:
+        row["preload_margin"] = float(np.min(r.tau_a[:r.n_move] * preload_sign - preload))
+    return row
+
+
+def preload_settings(model, preload=None, preload_sign=None):
+    """(preload, preload_sign), each (n,): the arguments, a scalar broadcast to every actuator,
+    else ``[control]`` of the model file (the controllers' defaults)."""
+    n, ctl = model.n_legs, model.spec.control
+    pre = ctl["preload"] if preload is None else preload
+    sgn = ctl["preload_sign"] if preload_sign is None else preload_sign
+    return (np.broadcast_to(np.asarray(pre, dtype=float), (n,)).copy(),
+            np.broadcast_to(np.asarray(sgn, dtype=float), (n,)).copy())
 
 
 def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speeds=None,
@@ -37,7 +62,8 @@ def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speed
         Actuator limits, N*m, for the controllers (default ``[limits].tau_max``). A scalar
         applies to every actuator. The plant applies what the controller commands.
     preload, preload_sign : array_like (n,), optional
-        The preload split's least |tau_i| (N*m) and signs (default ``[control]``).
+        The preload split's least |tau_i| (N*m) and signs (default ``[control]``). A preload
+        of 0 still keeps the signs.
     speeds : list of str, optional
         Moves of ``[trajectories]`` (default: all).
 
@@ -45,26 +71,31 @@ def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speed
     -------
     dict
         ``{speed: {controller: {split: {rmse (m), max_error (m), n_saturated,
-        n_preload_infeasible, n_singular, peak_tau (N*m), rms_tau (N*m)}}}}``.
+        n_preload_infeasible, n_singular, peak_tau (N*m), rms_tau (N*m)}}}}``; the preload
+        split's rows also have ``preload_margin`` (N*m, see the module docstring).
     """
     n = model.n_legs
     if tau_max is not None:
         tau_max = np.broadcast_to(np.asarray(tau_max, dtype=float), (n,)).copy()
-    if preload is not None:
-        preload = np.broadcast_to(np.asarray(preload, dtype=float), (n,)).copy()
+    preload, preload_sign = preload_settings(model, preload, preload_sign)
     out = {}
-    for speed in (list(model.spec.trajectories) if speeds is None else speeds):
-        traj = trajectory(model, speed)
+    speeds = list(model.spec.trajectories) if speeds is None else speeds
+    b = bar(progress, len(speeds) * len(controllers) * len(splits), "splits", unit="rollout")
+    for speed in speeds:
+        traj = model_move(model, speed)
         out[speed] = {}
         for name in controllers:
             out[speed][name] = {}
             for split in splits:
-                if progress:
-                    progress(f"{speed} speed: {name}, split {split}")
+                b.set_postfix_str(f"{speed} speed, {name}, {split}")
+                b.update()
                 pre = {"preload": preload, "preload_sign": preload_sign} if split == "preload" \
                     else {"preload": np.zeros(n)}   # the preload only binds its own split
                 ctrl = CONTROLLERS[name](model, tau_max=tau_max, split=split, **pre)
-                out[speed][name][split] = _row(simulate(model, ctrl, traj, quantise=quantise))
+                r = simulate(model, ctrl, traj, quantise=quantise)
+                out[speed][name][split] = (_row(r, preload, preload_sign) if split == "preload"
+                                           else _row(r))
+    b.close()
     return out
 
 
@@ -81,11 +112,11 @@ def tau_max_sweep(model, levels, speed="high", preload=None, preload_sign=None,
     keys = ("rmse", "n_saturated", "peak_tau")
     for name in controllers:
         res[name] = {s: {k: np.full(len(levels), np.nan) for k in keys} for s in splits}
-    pre = model.spec.control["preload"] if preload is None else np.broadcast_to(
-        np.asarray(preload, dtype=float), (model.n_legs,))
+    pre, _ = preload_settings(model, preload, preload_sign)
+    b = bar(progress, len(levels), "tau_max sweep", unit="level")
     for i, level in enumerate(levels):
-        if progress:
-            progress(f"tau_max = {level:.3g} N*m ({i + 1}/{len(levels)})")
+        b.set_postfix_str(f"tau_max = {level:.3g} N m")
+        b.update()
         for split in splits:
             if split == "preload" and np.any(pre >= level):
                 continue
@@ -94,24 +125,41 @@ def tau_max_sweep(model, levels, speed="high", preload=None, preload_sign=None,
             for name in controllers:
                 for k in keys:
                     res[name][split][k][i] = r[name][split][k]
+    b.close()
     return res
 
 
-def format_split_comparison(numbers, tau_max, preload):
-    """A text table of :func:`split_comparison`."""
-    lines = [f"Torque splits in closed loop: tau_max = {np.round(tau_max, 4).tolist()} N*m, "
-             f"preload = {np.round(preload, 4).tolist()} N*m (plant: the model file's truth)",
+def _signs(sign):
+    return "(" + ", ".join("+" if v > 0 else "-" for v in sign) + ")"
+
+
+def format_split_comparison(numbers, tau_max, preload, preload_sign):
+    """A text table of :func:`split_comparison` at ``tau_max``, ``preload`` and
+    ``preload_sign`` (n,), with a legend of its columns."""
+    zero = "; a preload of 0 still keeps the signs" if not np.any(preload) else ""
+    lines = [f"Torque splits in closed loop: tau_max = {np.round(tau_max, 4).tolist()} N*m "
+             f"(plant: the model file's truth)",
+             f"preload split: every tau_i keeps the sign {_signs(preload_sign)} with |tau_i| >= "
+             f"{np.round(preload, 4).tolist()} N*m{zero}",
              f"{'move':5s} {'ctrl':4s} {'split':9s} {'RMSE, m':>10s} {'max |e|, m':>10s} "
-             f"{'saturated':>9s} {'preload inf.':>12s} {'peak |tau|':>10s} {'rms tau':>8s}"]
+             f"{'saturated':>9s} {'preload inf.':>12s} {'margin':>7s} {'peak |tau|':>10s} "
+             f"{'rms tau':>8s}"]
     for speed, by_ctrl in numbers.items():
         for name, by_split in by_ctrl.items():
             for split, r in by_split.items():
+                margin = f"{r['preload_margin']:7.3f}" if "preload_margin" in r else f"{'-':>7s}"
                 lines.append(f"{speed:5s} {name:4s} {split:9s} {r['rmse']:10.4e} "
                              f"{r['max_error']:10.4e} {r['n_saturated']:9d} "
-                             f"{r['n_preload_infeasible']:12d} {r['peak_tau']:10.3f} "
+                             f"{r['n_preload_infeasible']:12d} {margin} {r['peak_tau']:10.3f} "
                              f"{r['rms_tau']:8.3f}")
-    lines.append("saturated: samples where some actuator was clipped at tau_max; preload inf.: "
-                 "samples where the preload did not fit within the limits")
+    lines += ["saturated: samples where some actuator was clipped at tau_max.",
+              "preload inf.: samples where no torques within tau_max keep every sign and preload; "
+              "there the preload split",
+              "  takes the largest worst-case margin min_i (sign_i tau_i - preload_i), which can "
+              "put an actuator at tau_max",
+              "  without clipping it (peak |tau| = tau_max with 0 saturated).",
+              "margin: the least of that margin over the move, N*m (< 0: an actuator reversed "
+              "its sign or fell short of its preload)."]
     return "\n".join(lines)
 
 
@@ -122,11 +170,10 @@ def run_splits(model, tau_max=None, preload=None, preload_sign=None, as_json=Fal
     n = model.n_legs
     w = model.spec.limits["tau_max"] if tau_max is None else np.broadcast_to(
         np.asarray(tau_max, dtype=float), (n,))
-    pre = model.spec.control["preload"] if preload is None else np.broadcast_to(
-        np.asarray(preload, dtype=float), (n,))
-    numbers = split_comparison(model, w, pre, preload_sign, progress=progress)
+    pre, sgn = preload_settings(model, preload, preload_sign)
+    numbers = split_comparison(model, w, pre, sgn, progress=progress)
     if as_json:
-        print(dumps({"tau_max": w, "preload": pre, "results": numbers}))
+        print(dumps({"tau_max": w, "preload": pre, "preload_sign": sgn, "results": numbers}))
     else:
-        print(format_split_comparison(numbers, w, pre))
+        print(format_split_comparison(numbers, w, pre, sgn))
     return numbers

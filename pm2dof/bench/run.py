@@ -11,11 +11,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.experiment import trajectory
+from ..control.trajectory import model_move
 from ..control.controllers import APDController, NAController
 from ..control.simulate import plant_vector, simulate
 from ..core.layout import Layout
 from ..core.model import load_model
+from ..core.status import Status
 from ..reference import control as rc
 from .baselines import (c_step, lambdify_step, long_trajectory, operating_point, random_cases,
                         reference_geometry)
@@ -110,7 +111,7 @@ def run_bench(model=None, quick=False, progress=None):
     n = model.n_legs
     na, apd = NAController(model), APDController(model)
     speed = "high" if "high" in model.spec.trajectories else next(iter(model.spec.trajectories))
-    traj = trajectory(model, speed)
+    traj = model_move(model, speed)
     k_op = len(traj.t) // 2
     say(f"operating point: the NA controller along the {speed}-speed move to sample {k_op}")
     op = operating_point(model, na, traj, k_op)
@@ -274,7 +275,7 @@ def run_bench(model=None, quick=False, progress=None):
 
     run_acc(1)
     status = y[:, lays["cl_output"].slices["status"]].ravel()
-    res["rollout_singular_samples"] = int(np.sum(status == 1))
+    res["rollout_singular_samples"] = int(np.sum(status == Status.SINGULAR))
     res["rollout_max_error_m"] = float(np.max(np.hypot(*(long.xd - y[:, 0:2]).T)))
     acc = stats(time_batches(run_acc, repeats, 0.0 if quick else 0.05)[0])
     res["rollout_steps_per_s"] = n_roll * 1e9 / acc["median"]

@@ -15,13 +15,13 @@ import math
 
 import numpy as np
 
-from ..core.errors import GainError, ModelMismatchError, SingularityError
+from ..core.errors import (ArgumentError, ArgumentTypeError, GainError, ModelMismatchError,
+                           SingularityError)
 from ..core.layout import Layout
+from ..core.status import STATUS_NAMES, Status
 
-__all__ = ["NAController", "APDController", "STATUS_NAMES", "check_same_model"]
+__all__ = ["NAController", "APDController", "STATUS_NAMES", "Status", "check_same_model"]
 
-STATUS_NAMES = {0: "ok", 1: "singular", 2: "saturated", 3: "non_finite", 4: "preload_infeasible",
-                5: "inconsistent_encoders"}
 #: torque split -> suffix of its generated functions (derive/splits.py)
 SPLITS = {"min_norm": "", "min_max": "_minmax", "preload": "_preload"}
 
@@ -36,7 +36,7 @@ def velocity_filter_alpha(sample_period, cutoff_hz):
 def _vector(name, value, n):
     v = np.array(value, dtype=float)
     if v.shape != (n,) or not np.isfinite(v).all():
-        raise ValueError(f"{name} must be {n} finite numbers, got {value!r}")
+        raise ArgumentError(f"{name} must be {n} finite numbers, got {value!r}")
     return v
 
 
@@ -65,7 +65,7 @@ def diagonal_gain(law, name, value, labels):
     where = f"{law}: {name}"
     try:
         if np.iscomplexobj(value):
-            raise TypeError("complex values are not allowed")
+            raise ArgumentTypeError("complex values are not allowed")
         a = np.array(value, dtype=float)
     except (TypeError, ValueError) as exc:
         raise GainError(f"{where} must be real numbers, got {value!r} ({exc})") from None
@@ -113,13 +113,13 @@ class _Controller:
     def __init__(self, model, base, gains, theta0, sample_period, velocity_filter_hz, tau_max,
                  on_singular, split, preload, preload_sign):
         if on_singular not in ("raise", "zero"):
-            raise ValueError(f"on_singular must be 'raise' or 'zero', got {on_singular!r}")
+            raise ArgumentError(f"on_singular must be 'raise' or 'zero', got {on_singular!r}")
         self.on_singular = on_singular
         spec = model.spec
         ctl = spec.control
         self.split = ctl["split"] if split is None else split
         if self.split not in SPLITS:
-            raise ValueError(f"split must be one of {list(SPLITS)}, got {split!r}")
+            raise ArgumentError(f"split must be one of {list(SPLITS)}, got {split!r}")
         self.function_name = base + SPLITS[self.split]   # generated <name>_<function_name>_step
         lays = model.manifest["layouts"]
         self.model = model
@@ -128,13 +128,13 @@ class _Controller:
         T = spec.sensing["sample_period"] if sample_period is None else float(sample_period)
         fc = spec.sensing["velocity_filter_hz"] if velocity_filter_hz is None else velocity_filter_hz
         if not (math.isfinite(T) and T > 0):
-            raise ValueError(f"sample_period must be > 0 s, got {T}")
+            raise ArgumentError(f"sample_period must be > 0 s, got {T}")
         if not (math.isfinite(fc) and fc >= 0):
-            raise ValueError(f"velocity_filter_hz must be >= 0 (0: no filter), got {fc}")
+            raise ArgumentError(f"velocity_filter_hz must be >= 0 (0: no filter), got {fc}")
         self.sample_period = T
         self.theta0 = np.array(spec.theta_nominal if theta0 is None else theta0, dtype=float)
         if self.theta0.shape != (len(model.param_names),) or not np.isfinite(self.theta0).all():
-            raise ValueError(f"theta0 must be {len(model.param_names)} finite numbers "
+            raise ArgumentError(f"theta0 must be {len(model.param_names)} finite numbers "
                              f"({', '.join(model.param_names)}), got {self.theta0.tolist()}")
         n = model.n_legs
         tau_max = _vector("tau_max", spec.limits["tau_max"] if tau_max is None else tau_max, n)
@@ -142,10 +142,10 @@ class _Controller:
         preload_sign = _vector("preload_sign", ctl["preload_sign"] if preload_sign is None
                                else preload_sign, n)
         if np.any(tau_max <= 0) or np.any(preload < 0) or np.any(preload >= tau_max):
-            raise ValueError(f"need 0 <= preload < tau_max and tau_max > 0, got preload "
+            raise ArgumentError(f"need 0 <= preload < tau_max and tau_max > 0, got preload "
                              f"{preload.tolist()}, tau_max {tau_max.tolist()} N*m")
         if not np.all(np.isin(preload_sign, (1.0, -1.0))):
-            raise ValueError(f"preload_sign entries must be +1 or -1, got {preload_sign.tolist()}")
+            raise ArgumentError(f"preload_sign entries must be +1 or -1, got {preload_sign.tolist()}")
         xy = ("x", "y")
         labels = {"Gamma": model.param_names}
         gains = {k: diagonal_gain(type(self).__name__, k, v, labels.get(k, xy))
@@ -171,7 +171,7 @@ class _Controller:
         """
         th = self.theta0 if theta_hat is None else np.array(theta_hat, dtype=float)
         if th.shape != self.theta0.shape or not np.isfinite(th).all():
-            raise ValueError(f"theta_hat must be {len(th)} finite numbers "
+            raise ArgumentError(f"theta_hat must be {len(th)} finite numbers "
                              f"({', '.join(self.model.param_names)}), got {th.tolist()}")
         xe = self.model.fk(qa0)
         s = self.state_layout.unpack(self._states[0])
@@ -185,7 +185,7 @@ class _Controller:
         velocity (2,) m/s and acceleration (2,) m/s^2 -> actuator torques tau_a (n,) N*m.
 
         Returns a new array, or writes into ``out`` (n,) and returns it (no allocation).
-        Non-finite inputs raise ValueError and leave the controller unchanged. At a pose
+        Non-finite inputs raise ArgumentError (a ValueError) and leave the controller unchanged. At a pose
         closer to a singularity of either kind than its threshold the step raises
         SingularityError (a ValueError), or with ``on_singular="zero"`` returns the safe
         torque zero; either way theta_hat is not updated (``status == "singular"``). A
@@ -193,26 +193,19 @@ class _Controller:
         was (``status == "non_finite"``). The next good sample gives a finite torque.
 
         Inputs may be any array-likes of real numbers (lists, float32, ...): they are converted
-        once, and a wrong length raises ValueError naming the input. C-contiguous float64
+        once, and a wrong length raises ArgumentError (a ValueError) naming the input. C-contiguous float64
         arrays go straight to the C (the fast path, no conversion).
         """
         if not self._ready:
             raise RuntimeError("call reset(qa0) before the first step")
         s0, s1 = self._states
         tau = np.empty(self._n) if out is None else out  # the C checks out's dtype and size
-        try:
-            self._f(s0, qa_meas, xd, xd_dot, xd_ddot, self.params, tau, s1, self._status,
-                    self._diag)
-        except (TypeError, ValueError):
-            args = (qa_meas, xd, xd_dot, xd_ddot)
-            if all(type(a) is np.ndarray and a.dtype == np.float64 and a.flags.c_contiguous
-                   for a in args):
-                raise                   # converting would change nothing: the C's error stands
-            # array-likes (lists, float32 ...): convert once (clear errors) and retry
-            args = self.model._coerce(self._f, (s0, *args, self.params))
-            self._f(*args, tau, s1, self._status, self._diag)
+        # the fast path; array-likes (lists, float32 ...) are converted once and the call
+        # retried; what the binding refuses (a NaN, a wrong length) becomes ArgumentError
+        self.model._call(self._f, (s0, qa_meas, xd, xd_dot, xd_ddot, self.params),
+                         (tau, s1, self._status, self._diag))
         self._states = (s1, s0)
-        if self._status[0] == 1.0 and self.on_singular == "raise":
+        if self._status[0] == Status.SINGULAR and self.on_singular == "raise":
             raise SingularityError(
                 f"controller step: {self.model.singularity_message(self._diag[8:10])}; "
                 f"theta_hat was not updated and the safe torque is zero (on_singular='zero' "

@@ -15,7 +15,9 @@ import numpy as np
 
 from .controllers import APDController, NAController, check_same_model
 from .outcome import OUTCOMES, classify_failure
-from ..core.errors import OutcomeWarning, SingularityError, WorkspaceError
+from ..core.errors import (ArgumentError, ArgumentTypeError, OutcomeWarning, SingularityError,
+                           WorkspaceError)
+from ..core.status import Status
 
 __all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "plant_truth",
            "plant_vector", "rmse", "theta_truth", "check_trajectory", "pose_measures",
@@ -33,12 +35,12 @@ def plant_truth(model, **overrides):
     p = dict(model.spec.plant)
     unknown = sorted(set(overrides) - set(p))
     if unknown:
-        raise TypeError(f"unknown plant field(s) {unknown}; fields are {sorted(p)}")
+        raise ArgumentTypeError(f"unknown plant field(s) {unknown}; fields are {sorted(p)}")
     p.update(overrides)
     leg_no = p["payload_leg"]
     if not (isinstance(leg_no, (int, float, np.number)) and not isinstance(leg_no, bool)
             and leg_no == int(leg_no) and 1 <= leg_no <= model.n_legs):
-        raise ValueError(f"payload_leg must be a leg number 1..{model.n_legs} (legs count from 1, "
+        raise ArgumentError(f"payload_leg must be a leg number 1..{model.n_legs} (legs count from 1, "
                          f"as in the paper), got {leg_no!r}")
     j = int(leg_no) - 1
     leg = model.spec.legs[j]
@@ -62,7 +64,7 @@ def plant_vector(model, truth=None, quantise=True, encoder_counts_per_rev=None):
               else encoder_counts_per_rev)
     if not (isinstance(counts, (int, float, np.integer, np.floating)) and counts >= 0
             and float(counts).is_integer()):
-        raise ValueError(f"encoder_counts_per_rev must be a whole number >= 0, got {counts!r}")
+        raise ArgumentError(f"encoder_counts_per_rev must be a whole number >= 0, got {counts!r}")
     truth = plant_truth(model) if truth is None else truth
     return model.layout("plant").pack(
         **truth, encoder_step=(2 * math.pi / counts) if (quantise and counts > 0) else 0.0)
@@ -163,22 +165,23 @@ class SimResult:
                 f"{self.t[self.failed_sample]:.4f} s), at t = {self.failed_time:.5f} s: "
                 f"{self.outcome_reason}")
 
-    @property
-    def n_singular(self):
-        return int(np.sum(self.status == 1))
+    def count(self, status):
+        """Samples of the run with the given :class:`~pm2dof.Status` (or its label)."""
+        code = Status[status.upper()] if isinstance(status, str) else Status(status)
+        return int(np.sum(self.status == code))
 
-    @property
-    def n_saturated(self):
-        return int(np.sum(self.status == 2))
-
-    @property
-    def n_non_finite(self):
-        return int(np.sum(self.status == 3))
-
-    @property
-    def n_preload_infeasible(self):
-        """Samples where the preload split could not keep every preload within the limits."""
-        return int(np.sum(self.status == 4))
+    n_singular = property(lambda self: self.count(Status.SINGULAR),
+                          doc="samples at a singular pose (zero torque, theta_hat frozen)")
+    n_saturated = property(lambda self: self.count(Status.SATURATED),
+                           doc="samples whose torque was clipped to tau_max")
+    n_non_finite = property(lambda self: self.count(Status.NON_FINITE),
+                            doc="samples with a non-finite intermediate (zero torque)")
+    n_preload_infeasible = property(
+        lambda self: self.count(Status.PRELOAD_INFEASIBLE),
+        doc="samples where the preload split could not keep every preload within the limits")
+    n_inconsistent_encoders = property(
+        lambda self: self.count(Status.INCONSISTENT_ENCODERS),
+        doc="samples whose encoders did not close the loops (zero torque, state kept)")
 
     @property
     def peak_tau(self):
@@ -244,7 +247,7 @@ def check_trajectory(model, trajectory):
     xd = np.asarray(trajectory.xd, dtype=float)
     if not np.isfinite(xd).all():
         k = int(np.argwhere(~np.isfinite(xd))[0, 0])
-        raise ValueError(f"desired position at sample {k} is not finite: {xd[k].tolist()}")
+        raise ArgumentError(f"desired position at sample {k} is not finite: {xd[k].tolist()}")
     thr1, thr2 = model.singularity_threshold, model.parallel_singularity_threshold
     type1, type2, side = pose_measures(model, xd)
     # the first offending sample is re-checked with the generated ik for its message
@@ -326,7 +329,7 @@ def batch_inputs(model, controller, traj, plants, theta_hat0=None):
             if th is not None:
                 th = np.asarray(th, dtype=float)
                 if th.shape != (p,) or not np.isfinite(th).all():
-                    raise ValueError(f"theta_hat0 must be {p} finite numbers "
+                    raise ArgumentError(f"theta_hat0 must be {p} finite numbers "
                                      f"({', '.join(model.param_names)}), got {th.tolist()}")
                 C["theta_hat"][k] = th
     u = np.ascontiguousarray(np.hstack([traj.xd, traj.xd_dot, traj.xd_ddot]))
@@ -370,11 +373,11 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
         If ``controller`` was built for another model.
     """
     if not isinstance(controller, (NAController, APDController)):
-        raise TypeError(f"controller must be an NAController or APDController, got "
+        raise ArgumentTypeError(f"controller must be an NAController or APDController, got "
                         f"{type(controller).__name__}")
     T = controller.sample_period
     if abs(trajectory.period - T) > 1e-12 * T:
-        raise ValueError(f"trajectory period {trajectory.period} s differs from the "
+        raise ArgumentError(f"trajectory period {trajectory.period} s differs from the "
                          f"controller's sample period {T} s")
     check_same_model(model, controller)
     check_trajectory(model, trajectory)

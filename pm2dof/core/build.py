@@ -65,7 +65,14 @@ PORTABLE_FLAGS: tuple[str, ...] = tuple(f for f in FLAGS if f != "-march=native"
 LIBS: tuple[str, ...] = ("-lm",)
 
 
-class BuildError(RuntimeError):
+try:
+    from .errors import Pm2dofError
+except ImportError:       # loaded as a file by setup.py, outside the package: a stand-in base
+    class Pm2dofError(Exception):
+        """Stand-in for pm2dof.core.errors.Pm2dofError when built without the package."""
+
+
+class BuildError(Pm2dofError, RuntimeError):
     """The C compiler failed or is missing; the message holds the command and its stderr, or
     what to install."""
 

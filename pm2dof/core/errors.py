@@ -1,9 +1,36 @@
 # Typed errors of pm2dof: each subclasses a builtin and names the value, the place and the limit.
 from typing import NamedTuple
 
-__all__ = ["Problem", "InputFileError", "ModelFileError", "StaleGeneratedCodeError",
-           "WorkspaceError", "ClosureError", "SingularityError", "GainError",
-           "ModelMismatchError", "OutcomeWarning"]
+__all__ = ["Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError", "OutputError",
+           "Problem",
+           "InputFileError", "ModelFileError", "StaleGeneratedCodeError", "WorkspaceError",
+           "ClosureError", "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning"]
+
+
+class Pm2dofError(Exception):
+    """Base of every typed error of pm2dof: a user's input, file or environment that pm2dof
+    refuses, with a message naming the value, the place and the rule. Each subclass also keeps
+    a builtin base (ValueError, TypeError, RuntimeError), so ``except ValueError`` still works.
+    ``pm2dof`` (the CLI) prints these as one line and exits 2; any other exception is a bug
+    and shows its traceback."""
+
+
+class ArgumentError(Pm2dofError, ValueError):
+    """An argument outside what a function accepts: names the argument, the value and the
+    rule (a length, a range, a non-finite entry)."""
+
+
+class ArgumentTypeError(Pm2dofError, TypeError):
+    """An argument of the wrong type (names the argument and the type expected)."""
+
+
+class OutputError(Pm2dofError, OSError):
+    """A results file or folder that cannot be written (names the path and the reason)."""
+
+
+class NonFiniteError(Pm2dofError, ValueError):
+    """A model function whose result is not finite although every input is (inputs too large,
+    or a degenerate pose or parameter set); names the output and the largest input."""
 
 
 class Problem(NamedTuple):
@@ -18,7 +45,7 @@ class Problem(NamedTuple):
     reason: str
 
 
-class InputFileError(ValueError):
+class InputFileError(Pm2dofError, ValueError):
     """A user's input file (a model file or a study file) that cannot be used.
 
     The message names the file and lists every problem found, one per line; the same problems
@@ -50,11 +77,12 @@ class ModelFileError(InputFileError):
     """
 
 
-class StaleGeneratedCodeError(RuntimeError):
-    """Generated code is missing, or does not match its model file: run ``make derive``."""
+class StaleGeneratedCodeError(Pm2dofError, RuntimeError):
+    """Generated code is missing, or does not match its model file: the message names the
+    ``pm2dof derive ...`` command to run."""
 
 
-class WorkspaceError(ValueError):
+class WorkspaceError(Pm2dofError, ValueError):
     """A task-space position no leg (or not every leg) can reach."""
 
 
@@ -63,16 +91,16 @@ class ClosureError(WorkspaceError):
     ``[sensing] closure_tolerance`` (names the leg and the residual in m)."""
 
 
-class SingularityError(ValueError):
+class SingularityError(Pm2dofError, ValueError):
     """A pose too close to a singularity (singularity measure below the model's threshold)."""
 
 
-class GainError(ValueError):
+class GainError(Pm2dofError, ValueError):
     """A controller gain outside what the stability argument allows (names the gain, the entry
     and the condition): K_d, Q > 0 and Gamma >= 0 (Sect. 4), Kp, Kv > 0 (eq. 40)."""
 
 
-class ModelMismatchError(ValueError):
+class ModelMismatchError(Pm2dofError, ValueError):
     """A controller built for one model used with another (names both models)."""
 
 

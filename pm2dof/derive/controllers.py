@@ -3,6 +3,8 @@ import itertools
 
 import casadi as ca
 
+from pm2dof.core.status import Status
+
 from .factored import regressor
 from .layouts import Layout
 from .splits import SPLITS, min_max, min_norm
@@ -10,8 +12,7 @@ from .splits import SPLITS, min_max, min_norm
 __all__ = ["controller_layouts", "controller_functions", "STATUS"]
 
 # status codes of a step (also in the manifest): what the step did with this sample
-STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3, "preload_infeasible": 4,
-          "inconsistent_encoders": 5}
+STATUS = Status.codes()
 # smallest alpha, gamma the optional projection of theta_hat allows, kg*m^2
 PROJECTION_FLOOR = 1e-6
 

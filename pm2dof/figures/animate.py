@@ -3,7 +3,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.experiment import trajectory
+from ..core.errors import ArgumentError
+from ..control.trajectory import model_move
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from .experiment import COLORS, LABELS, _plt, sci
@@ -57,11 +58,11 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
     """
     from matplotlib import animation
     if controller not in CONTROLLERS:
-        raise ValueError(f"controller must be one of {sorted(CONTROLLERS)}, got {controller!r}")
+        raise ArgumentError(f"controller must be one of {sorted(CONTROLLERS)}, got {controller!r}")
     if not (isinstance(every, int) and every >= 1 and isinstance(fps, int) and fps >= 1):
-        raise ValueError(f"every and fps must be integers >= 1, got {every}, {fps}")
+        raise ArgumentError(f"every and fps must be integers >= 1, got {every}, {fps}")
     plt = _plt()
-    traj = trajectory(model, speed)
+    traj = model_move(model, speed)
     r = simulate(model, CONTROLLERS[controller](model, split=split), traj,
                  settle_time=settle_time)
     e = r.xe - r.xd
@@ -70,7 +71,7 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
     if magnify is None:
         magnify = 10.0 ** np.floor(np.log10(0.3 * length / max(emax, 1e-12)))
     if not (np.isfinite(magnify) and magnify > 0):
-        raise ValueError(f"magnify must be > 0, got {magnify}")
+        raise ArgumentError(f"magnify must be > 0, got {magnify}")
     fig, draw, n_frames = animation_figure(plt, model, r, speed, controller, magnify,
                                            fps=fps, every=every)
     if progress:

@@ -34,6 +34,7 @@ import numpy as np
 
 from . import model as ref
 from ..core.layout import Layout
+from ..core.status import Status
 
 __all__ = [
     "STATUS",
@@ -50,8 +51,7 @@ __all__ = [
 ]
 
 #: Status codes of a controller step (same as the manifest's ``status_codes``).
-STATUS = {"ok": 0, "singular": 1, "saturated": 2, "non_finite": 3, "preload_infeasible": 4,
-          "inconsistent_encoders": 5}
+STATUS = Status.codes()
 #: alpha, gamma floor of the optional projection of theta_hat, kg*m^2
 PROJECTION_FLOOR = 1e-6
 
@@ -180,13 +180,13 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=Fals
     finite = bool(np.isfinite(np.concatenate([tau, theta_next, xe, v])).all())
     regular = sing >= P["sing_threshold"][0] and sing_parallel >= P["parallel_sing_threshold"][0]
     if not consistent:  # encoders that do not close the loops: safe torque, keep the state
-        status, tau_out, theta_out = STATUS["inconsistent_encoders"], np.zeros(n), theta
+        status, tau_out, theta_out = Status.INCONSISTENT_ENCODERS, np.zeros(n), theta
     elif not regular:  # singular (or NaN measure): safe torque, no update
-        status, tau_out, theta_out = STATUS["singular"], np.zeros(n), theta
+        status, tau_out, theta_out = Status.SINGULAR, np.zeros(n), theta
     elif not finite:                       # non-finite: safe torque, keep the whole state
-        status, tau_out, theta_out = STATUS["non_finite"], np.zeros(n), theta
+        status, tau_out, theta_out = Status.NON_FINITE, np.zeros(n), theta
     else:
-        status = STATUS["saturated"] if np.max(np.abs(tau) - tau_max) > 0 else STATUS["ok"]
+        status = Status.SATURATED if np.max(np.abs(tau) - tau_max) > 0 else Status.OK
         tau_out = np.minimum(np.maximum(tau, -tau_max), tau_max)
         theta_out = theta_next
     if not (finite and consistent):

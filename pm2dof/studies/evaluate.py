@@ -16,8 +16,9 @@ import numpy as np
 from ..control.controllers import APDController, NAController
 from ..control.simulate import (batch_inputs, check_trajectory, completed_samples, plant_vector,
                                 theta_truth)
-from ..control.trajectory import line
+from ..control.trajectory import line, model_move
 from ..core.model import load_model
+from ..core.status import Status
 from .draws import draw_columns, plant_of, sample_draw
 
 __all__ = ["run_chunk", "check_study", "make_controller", "make_trajectory", "rollout_setup",
@@ -47,18 +48,18 @@ def make_trajectory(model, move, period):
     """A study move: a name of the model file's [trajectories] or a line's (sorted) items."""
     name, items = move
     if items is None:
-        from ..analysis.experiment import trajectory
-        return trajectory(model, name, period)
+        return model_move(model, name, period)
     d = dict(items)
     return line(d["start"], d["end"], d["v_max"], d["a_max"], d["j_max"], period=period)
 
 
 def _context(study):
-    key = (study.model_path, study.variants, study.moves, study.settle_time)   # what ctx holds
+    key = (study.model_path, study.generated_path, study.variants, study.moves,
+           study.settle_time)                                                   # what ctx holds
     ctx = _CACHE.get(key)
     if ctx is None:
         from ..analysis.identify import identifiability
-        model = load_model(study.model_path)
+        model = load_model(study.model_path, study.generated_path)
         ctrls = [make_controller(model, v) for v in study.variants]
         T = ctrls[0].sample_period
         trajs = []
@@ -176,9 +177,9 @@ def _metrics(out, rows, xd, xe, tau, status, n_move, n_ok):
         out["rmse"][rows] = np.where(diverged, np.inf, np.sqrt(np.mean(e2, axis=-1)))  # eq. 41
         out["max_error"][rows] = np.where(diverged, np.inf, np.sqrt(np.max(e2, axis=-1)))
     out["peak_tau"][rows] = np.max(np.where(held[..., None], np.abs(tau), 0.0), axis=(1, 2))
-    out["n_singular"][rows] = np.sum(held & (status == 1), axis=1)
-    out["n_saturated"][rows] = np.sum(held & (status == 2), axis=1)
-    out["n_non_finite"][rows] = np.sum(held & (status == 3), axis=1)
+    out["n_singular"][rows] = np.sum(held & (status == Status.SINGULAR), axis=1)
+    out["n_saturated"][rows] = np.sum(held & (status == Status.SATURATED), axis=1)
+    out["n_non_finite"][rows] = np.sum(held & (status == Status.NON_FINITE), axis=1)
     out["diverged"][rows] = diverged
 
 

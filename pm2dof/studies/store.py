@@ -17,6 +17,7 @@ import pyarrow as pa
 import pyarrow.parquet as pq
 
 from ..analysis.results import provenance, write_atomic, write_json
+from ..core.errors import Pm2dofError
 from .spec import StudyFileError
 
 __all__ = ["StudyOutError", "prepare_out", "finished_chunks", "write_chunk", "finish_out",
@@ -25,7 +26,7 @@ __all__ = ["StudyOutError", "prepare_out", "finished_chunks", "write_chunk", "fi
 _NULLABLE = ("theta_error",)   # null where it does not apply (APD) or the rollout diverged
 
 
-class StudyOutError(ValueError):
+class StudyOutError(Pm2dofError, ValueError):
     """The output folder cannot be used: not writable, or it holds another study."""
 
 
