@@ -47,7 +47,7 @@ class _MovedFinder:
         new, hint = MOVED[name]
         raise ModuleNotFoundError(
             f"{name} was moved in pm2dof 0.2 to {new}: use `{hint}` "
-            f"(README, 'Where things are').", name=name)
+            f"(docs/layout.md, 'Old import paths').", name=name)
 
     def __repr__(self):
         return "<pm2dof: old module paths, see pm2dof._moved>"

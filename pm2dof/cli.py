@@ -273,7 +273,7 @@ def _study_parser(sub):
                         "Run the same command again: finished chunks are skipped. A different "
                         "study on a non-empty DIR is refused. Rows depend only on the study file "
                         "(seed, draw), not on the workers or the cluster. Every key of a study "
-                        "file is listed in README 'Studies at scale'; the shipped studies "
+                        "file is listed in docs/study-file.md; the shipped studies "
                         "(robustness, gains, adaptation) are commented examples: see them with "
                         "`pm2dof study show NAME`.")
     r.add_argument("study", help="study file (TOML), or a shipped study's name: robustness, "
@@ -396,7 +396,7 @@ def build_parser():
                        "(its truth, encoder quantisation, APD tracking) and estimate the base "
                        "parameters by least squares from the measured angles and commanded "
                        "torques, with the truth beside the estimate.")
-    p.epilog = ("from logs (README, 'Identification from logs'): --design-excitation --out "
+    p.epilog = ("from logs (docs/results-identification.md): --design-excitation --out "
                 "exc.toml; --excite --excitation exc.toml --out run.csv (or log your robot in "
                 "that format); --data run.csv --save theta.json")
     p.add_argument("--report", action="store_true", help="identifiability only, no estimation")
@@ -415,8 +415,8 @@ def build_parser():
     p.add_argument("--controller", choices=["apd", "na"], default="apd",
                    help="controller tracking the excitation in --excite (default apd)")
     p.add_argument("--data", metavar="LOG", help="identify from a measured log (.csv or "
-                   ".parquet: t, qa1..qan, tau1..taun, optional qb1..qbn; README, "
-                   "'Identification from logs')")
+                   ".parquet: t, qa1..qan, tau1..taun, optional qb1..qbn; the format: "
+                   "docs/log-format.md)")
     p.add_argument("--json", action="store_true", help="--data: print the results as JSON")
     p.add_argument("--design-excitation", action="store_true",
                    help="design a D-optimal periodic excitation (Fourier series in task space, "

@@ -1,4 +1,4 @@
-# The torque splits in closed loop (issue 11, part 4): the comparison the README reports.
+# The torque splits in closed loop (issue 11, part 4): the comparison docs/results-redundancy.md reports.
 import json
 
 import numpy as np

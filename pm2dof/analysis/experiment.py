@@ -12,6 +12,8 @@ __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
 PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percent": 38.40},
                 "high": {"apd_rmse": 4.7136e-4, "na_rmse": 2.8299e-4, "rpe_percent": 39.96}}
+"""Table 3 of the paper, measured on the real robot: {move: {"apd_rmse", "na_rmse" (eq. 41, m),
+"rpe_percent" (100 (APD - NA) / APD)}} for the moves "low" and "high"."""
 
 
 def rpe(apd_rmse, na_rmse):
@@ -100,10 +102,24 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
 
     Each run starts at rest at the start point (the return move is not simulated).
 
+    Parameters
+    ----------
+    model : Model
+    speed : str
+        A move of the model file's ``[trajectories]`` (default "high").
+    runs : int
+        Number of runs.
+    quantise : bool
+        Quantise the encoder angles (``[sensing] encoder_counts_per_rev``).
+    progress : callable, optional
+        Called with a one-line message every 5 runs.
+
     Returns
     -------
-    dict with ``rmse`` (runs,) m, ``theta_hat_end`` (runs, 5n), ``theta_truth`` (5n,),
-    ``theta0`` (5n,).
+    dict
+        ``rmse`` (runs,) m, eq. 41 of each run; ``theta_hat_end`` (runs, 5n), theta_hat at the
+        end of each run; ``theta_truth`` (5n,), the plant's; ``theta0`` (5n,), theta_hat of
+        the first run (Tables 1-2).
     """
     traj = model_move(model, speed)
     ctrl = NAController(model)

@@ -43,12 +43,28 @@ def _center(model):
 def identifiability(model, samples=400, seed=0, radius=0.04, rtol=1e-9):
     """Rank of the stacked regressor and the base parameters.
 
+    Parameters
+    ----------
+    model : Model
+    samples : int
+        Random states over which Y is stacked.
+    seed : int
+        Seed of the random states.
+    radius : float
+        m: the states' positions are drawn uniformly within +-radius in x and y of the middle
+        of the model file's first move; velocities N(0, 0.3) m/s, accelerations N(0, 5) m/s^2.
+    rtol : float
+        Singular values of the column-scaled stacked Y below ``rtol`` times the largest count
+        as zero.
+
     Returns
     -------
-    dict with ``rank``, ``singular_values``, ``independent`` (indices of base columns, in
-    order), ``dependent`` (indices), ``beta`` (len(independent), len(dependent)): column d of Y
-    equals sum_i beta[i, d] * column i, so base parameter i is theta_i + sum_d beta[i, d]
-    theta_d, and ``null_space`` (p, p - rank) orthonormal.
+    dict
+        ``rank``, ``n_params`` (p), ``singular_values`` (of the column-scaled stack),
+        ``independent`` (indices of base columns, in order), ``dependent`` (indices), ``beta``
+        (len(independent), len(dependent)): column d of Y equals sum_i beta[i, d] * column i,
+        so base parameter i is theta_i + sum_d beta[i, d] theta_d, ``null_space`` (p, p - rank)
+        orthonormal, and ``param_names``.
     """
     rng = np.random.default_rng(seed)
     Phi_raw = np.vstack([model.Y(q, v, vr, ar) for q, v, vr, ar

@@ -42,7 +42,7 @@ TARGETS = (
     ("agreement_c_vs_numpy", "<=", 1e-10, "rel", "C step vs NumPy reference (max rel. diff.)"),
     ("na_min_max_over_min_norm", "<=", 1.3, "x", "NA step, min_max split / min_norm split"),
 )
-#: torque splits timed side by side (README, "Torque distribution"); preload level, N*m
+#: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 BENCH_SPLITS = ("min_norm", "min_max", "preload")
 BENCH_PRELOAD = 1.0
 

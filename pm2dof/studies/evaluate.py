@@ -24,7 +24,7 @@ from .draws import draw_columns, plant_of, sample_draw
 __all__ = ["run_chunk", "check_study", "make_controller", "make_trajectory", "rollout_setup",
            "METRICS", "columns"]
 
-#: metric columns of every row (units in README "Studies at scale")
+#: metric columns of every row (units in docs/study-file.md, "The results folder")
 METRICS = ("rmse", "max_error", "peak_tau", "n_saturated", "n_singular", "n_non_finite",
            "diverged", "theta_error")
 _CACHE = {}

@@ -4,7 +4,8 @@
 A study file names the model, the moves, the controllers (with gain overrides and gain
 grids), the plant's uncertainty as distributions, the number of random draws, a seed,
 repeated runs that carry theta_hat from run to run, and optionally a payload change.
-``studies/*.toml`` are commented examples; README "Studies at scale" lists every key.
+The shipped studies (``pm2dof/studies/shipped/*.toml``, ``pm2dof study show NAME``) are
+commented examples; docs/study-file.md lists every key.
 
 Rollouts are enumerated as (draw d, variant c, move m, run r), run innermost::
 
