@@ -32,7 +32,8 @@ import importlib
 from . import _moved
 from .control.controllers import STATUS_NAMES, APDController, NAController, Status
 from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
-from .control.trajectory import PAPER_MOVES, Trajectory, TrajectoryError, line, paper_move
+from .control.trajectory import (PAPER_MOVES, Trajectory, TrajectoryError, line, model_move,
+                                 paper_move)
 from .core.build import BuildError
 from .core.errors import (ArgumentError, ArgumentTypeError, ClosureError, GainError, OutputError,
                           InputFileError, ModelFileError, ModelMismatchError, NonFiniteError,
@@ -73,7 +74,8 @@ __all__ = [
     # layer 2: control
     "NAController", "APDController", "Status", "STATUS_NAMES", "simulate", "SimResult",
     "check_trajectory",
-    "plant_truth", "theta_truth", "rmse", "line", "paper_move", "PAPER_MOVES", "Trajectory",
+    "plant_truth", "theta_truth", "rmse", "line", "model_move", "paper_move", "PAPER_MOVES",
+    "Trajectory",
     # errors
     "Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError", "OutputError",
     "InputFileError",

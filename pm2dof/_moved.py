@@ -76,7 +76,7 @@ class _MovedFinder:
         new, hint, *since = MOVED[name]
         raise ModuleNotFoundError(
             f"{name} was moved in pm2dof {since[0] if since else '0.2'} to {new}: use `{hint}` "
-            f"(README, 'Where things are').", name=name)
+            f"(docs/layout.md, 'Old import paths').", name=name)
 
     def __repr__(self):
         return "<pm2dof: old module paths, see pm2dof._moved>"

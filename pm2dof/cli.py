@@ -27,14 +27,16 @@ log's or an excitation file's. Run `pm2dof COMMAND --help` for the details of on
 import argparse
 import sys
 import warnings
+from pathlib import Path
 
+from .analysis.progress import Progress
 from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
 
 __all__ = ["main", "build_parser"]
 
 
-def _progress(msg):
-    print(f"  .. {msg}", file=sys.stderr, flush=True)
+#: where long jobs report (stage lines; bars on a terminal); main() makes it quiet on --quiet
+_progress = Progress()
 
 
 def _model(args):
@@ -59,7 +61,6 @@ def cmd_models(args):
 
 def cmd_models_copy(args):
     import shutil
-    from pathlib import Path
     from .core.paths import resolve_model
     src = resolve_model(args.copy[0])
     dest = Path(args.copy[1]).expanduser()
@@ -126,9 +127,8 @@ def _identify(cmd):
 
 
 def _ident_progress(args):
-    """Stage lines and bars on stderr; none with --json (stdout is the result)."""
-    from .analysis.progress import Progress
-    return None if getattr(args, "json", False) else Progress()
+    """Stage lines and bars on stderr (main()'s, --quiet aside); none with --json."""
+    return None if getattr(args, "json", False) else _progress
 
 
 def cmd_identify_report(args):
@@ -211,8 +211,8 @@ def _identify_parser(sub, common):
                        "(excite), and least squares from a log or a simulated run (fit). Logs "
                        "and excitation files record their model (a shipped model's name or the "
                        "model file's path relative to themselves): that model is the default "
-                       "of fit, excite and monte-carlo, and --model must match it. README, "
-                       "'Identification from logs'."),
+                       "of fit, excite and monte-carlo, and --model must match it. The results: "
+                       "docs/results-identification.md."),
                        formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
                            "examples:\n"
                            "  pm2dof identify report\n"
@@ -258,8 +258,8 @@ def _identify_parser(sub, common):
                     "Run an excitation on the simulated plant (its truth: [plant] of the model "
                     "file; quantised encoders; a controller with Tables 1-2 tracking) and write "
                     "what a real set-up logs, encoder angles and commanded torques, to --out "
-                    "(CSV or Parquet by the suffix; the format: README, 'Identification from "
-                    "logs'). The log records its model relative to itself.",
+                    "(CSV or Parquet by the suffix; the format: docs/log-format.md). The log "
+                    "records its model relative to itself.",
                     ["pm2dof identify excite --excitation exc.toml --out run.csv",
                      "pm2dof identify excite --duration 10 --out run.parquet"],
                     cmd_identify_excite)
@@ -269,7 +269,7 @@ def _identify_parser(sub, common):
 
     r = sub_command("fit", "least squares for theta from a log (or a simulated run)",
                     "Identify the base parameters from LOG (t, qa1..qan, tau1..taun, optional "
-                    "qb1..qbn; README, 'Identification from logs'): fk of the encoder angles, a "
+                    "qb1..qbn; the format: docs/log-format.md): fk of the encoder angles, a "
                     "zero-phase Butterworth low-pass, central differences, the same filter on "
                     "the regressor and on S^T tau, weighted least squares with a Newey-West "
                     "covariance (+-2 sigma), then a physically consistent full theta (CasADi + "
@@ -378,13 +378,17 @@ def cmd_study_run(args):
         raise ArgumentError("give --workers (an embedded cluster) or --scheduler (an existing "
                          "one), not both: an existing cluster's workers are started with it")
     study = read_study(resolve_study(args.study), quick=args.quick)
-    if args.model is not None:  # the study file names its model; --model overrides it
+    if args.model is not None or args.generated is not None:  # override the study file's
         import dataclasses
         from .core.paths import resolve_model
-        study = dataclasses.replace(study, model_path=str(resolve_model(args.model).resolve()))
+        study = dataclasses.replace(
+            study, model_path=(study.model_path if args.model is None
+                               else str(resolve_model(args.model).resolve())),
+            generated_path=(study.generated_path if args.generated is None
+                            else str(Path(args.generated).expanduser().resolve())))
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
-                        timeout=args.timeout, progress=not args.no_progress)
+                        timeout=args.timeout, progress=_progress)
     except KeyboardInterrupt:
         print(f"\npm2dof: interrupted; the finished chunks are in {args.out}/results. Run the "
               f"same command again to continue where it stopped.", file=sys.stderr)
@@ -412,7 +416,6 @@ def cmd_study_show(args):
 
 
 def cmd_study_report(args):
-    from pathlib import Path
     from .studies.report import run_report
     s, cols, info = run_report(args.dir, as_json=args.json)
     if not args.no_figures:
@@ -452,13 +455,15 @@ def _study_parser(sub):
                         "Run the same command again: finished chunks are skipped. A different "
                         "study on a non-empty DIR is refused. Rows depend only on the study file "
                         "(seed, draw), not on the workers or the cluster. Every key of a study "
-                        "file is listed in README 'Studies at scale'; the shipped studies "
+                        "file is listed in docs/study-file.md; the shipped studies "
                         "(robustness, gains, adaptation) are commented examples: see them with "
                         "`pm2dof study show NAME`.")
     r.add_argument("study", help="study file (TOML), or a shipped study's name: robustness, "
                    "gains, adaptation")
     r.add_argument("--model", metavar="NAME|PATH", help="run the study on this model instead of "
                    "the one its file names")
+    r.add_argument("--generated", metavar="DIR", help="the model's generated C, when not in "
+                   "the default folder (overrides the study file's generated key)")
     r.add_argument("--out", required=True, metavar="DIR", help="output folder")
     r.add_argument("--workers", type=int, metavar="N",
                    help="worker processes of the embedded cluster (default: one per core)")
@@ -469,7 +474,8 @@ def _study_parser(sub):
                    help="the study file's [quick] size: seconds, for a first look and the tests")
     r.add_argument("--timeout", type=float, default=10.0, metavar="S",
                    help="seconds to wait for the scheduler and its workers (default 10)")
-    r.add_argument("--no-progress", action="store_true", help="no progress line")
+    r.add_argument("--quiet", "--no-progress", action="store_true", dest="quiet",
+                   help="no progress output (bars are drawn only on a terminal anyway)")
     r.set_defaults(func=cmd_study_run)
     r = ssub.add_parser("show", help="print a shipped study file (a commented example)",
                         description="Print a shipped study file, or list them without NAME. "
@@ -495,6 +501,7 @@ def _study_parser(sub):
                         "the in-process batch at 10^4 rollouts.")
     r.add_argument("--json", action="store_true", help="print the results as JSON")
     r.add_argument("--quick", action="store_true", help="10x fewer rollouts (for tests)")
+    r.add_argument("--quiet", action="store_true", help="no progress output on stderr")
     r.set_defaults(func=cmd_study_bench)
 
 
@@ -519,6 +526,9 @@ def build_parser():
     common.add_argument("--generated", default=None, metavar="DIR",
                         help="folder of the model's generated C (default: generated/<stem>/ "
                         "beside the model file; shipped models: inside pm2dof)")
+    common.add_argument("--quiet", action="store_true",
+                        help="no progress output on stderr (progress bars are drawn only when "
+                        "stderr is a terminal; stage lines always, unless --quiet)")
     p = sub.add_parser("models", help="list the shipped models",
                        description="List the models that come with pm2dof: their name (for "
                        "--model NAME and load_model(NAME)), leg count and description. With "
@@ -677,6 +687,8 @@ def main(argv=None):
         print(f"pm2dof: error: {exc}", file=sys.stderr)
         return 2
     results.COMMAND_LINE = ["pm2dof", *(sys.argv[1:] if argv is None else argv)]
+    global _progress
+    _progress = Progress(quiet=getattr(args, "quiet", False))
     if not getattr(args, "func", None):
         ap.print_help()
         return 2

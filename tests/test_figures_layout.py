@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.analysis.experiment import repeated_runs, table3, trajectory
+from pm2dof.analysis.experiment import repeated_runs, table3
+from pm2dof.control.trajectory import model_move
 from pm2dof.analysis.maps import workspace_maps
 from pm2dof.analysis.splits import tau_max_sweep
 from pm2dof.figures import animate, experiment, maps, splits, studies
@@ -311,7 +312,7 @@ def test_animation_frames(coulomb_viscous_model, plt):
     """First, middle and last frame of the high-speed move's GIF, for every geometry."""
     model = coulomb_viscous_model
     speed = "high" if "high" in model.spec.trajectories else next(iter(model.spec.trajectories))
-    r = pm2dof.simulate(model, pm2dof.NAController(model), trajectory(model, speed),
+    r = pm2dof.simulate(model, pm2dof.NAController(model), model_move(model, speed),
                         settle_time=0.1)
     fig, draw, n = animate.animation_figure(plt, model, r, speed, "na", 100.0, every=4)
     for j in (0, n // 2, n - 1):

@@ -11,6 +11,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import pm2dof
@@ -186,3 +187,23 @@ def test_shipped_studies_by_name_and_study_show():
     r = subprocess.run([*PM2DOF, "study", "show", "gains"], capture_output=True, text=True,
                        timeout=60)
     assert r.stdout == (SHIPPED_STUDIES / "gains.toml").read_text()
+
+
+def test_a_study_names_its_model_and_generated_folder_relative_to_itself(tmp_path):
+    """A study folder holding the model file and its code in a non-default folder: the
+    study's `model` and `generated` keys, relative to the study file, are all it needs; the
+    whole folder can move."""
+    from pm2dof.studies import SHIPPED_STUDIES, read_study, run_chunk
+    model = _robot(tmp_path / "proj" / "robot")
+    assert _derive(model, "--out", tmp_path / "proj" / "code")[0] == 0
+    text = (SHIPPED_STUDIES / "robustness.toml").read_text().replace(
+        'model = "shang2010"', 'model = "../robot/myrobot.toml"\ngenerated = "../code"', 1)
+    (tmp_path / "proj" / "studies").mkdir()
+    (tmp_path / "proj" / "studies" / "s.toml").write_text(text)
+    shutil.move(tmp_path / "proj", tmp_path / "moved")
+    s = read_study(tmp_path / "moved" / "studies" / "s.toml", quick=True)
+    assert s.model_path == str(tmp_path / "moved" / "robot" / "myrobot.toml")
+    assert s.generated_path == str(tmp_path / "moved" / "code")
+    cols = run_chunk(s, 0)
+    assert len(cols["rollout"]) > 0 and np.all(np.isfinite(cols["rmse"]))
+    assert read_study("robustness").name == "robustness"       # a shipped study by name

@@ -24,7 +24,8 @@ import numpy as np
 import pytest
 
 from pm2dof import APDController, NAController
-from pm2dof.analysis.experiment import table3, trajectory
+from pm2dof.analysis.experiment import table3
+from pm2dof.control.trajectory import model_move
 
 RMSE_MAX = 1e-3          # m, see the module docstring
 CONTROLLERS = ("apd", "na", "na_no_adaptation")
@@ -57,7 +58,7 @@ def test_table3_runs_and_tracks_on_every_move(model, results):
     assert set(results) == set(model.spec.trajectories) and results, results.keys()
     tau_max = np.asarray(model.spec.limits["tau_max"])
     for speed, runs in results.items():
-        traj = trajectory(model, speed)
+        traj = model_move(model, speed)
         assert set(runs) == set(CONTROLLERS), runs.keys()
         for name, r in runs.items():
             where = f"{model.name}, {speed} speed, {name}"
@@ -89,7 +90,7 @@ def test_na_adapts_on_every_model(model, results):
 @pytest.mark.parametrize("law", ["apd", "na_gamma0"])
 def test_one_step_torque_is_the_minimum_norm_resolution(model, law):
     n = model.n_legs
-    traj = trajectory(model, next(iter(model.spec.trajectories)))
+    traj = model_move(model, next(iter(model.spec.trajectories)))
     theta0 = np.array(model.theta_nominal)
     qa0 = model.ik(traj.xd[0])[:n]
     q = model.ik(model.fk(qa0))

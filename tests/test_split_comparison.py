@@ -1,10 +1,10 @@
-# The torque splits in closed loop (issue 11, part 4): the comparison the README reports.
+# The torque splits in closed loop (issue 11, part 4): the comparison docs/results-redundancy.md reports.
 import json
 
 import numpy as np
 
 import pm2dof
-from pm2dof.analysis.experiment import trajectory
+from pm2dof.control.trajectory import model_move
 from pm2dof.analysis.splits import split_comparison, tau_max_sweep
 from pm2dof.cli import main
 
@@ -81,7 +81,7 @@ def test_preload_margin_is_the_least_signed_margin_of_the_torques():
         assert (r["preload_margin"] >= -1e-9) == feasible, r
     ctrl = pm2dof.NAController(m, tau_max=np.full(3, 6.0), split="preload",
                                preload=np.zeros(3), preload_sign=sign)
-    run = pm2dof.simulate(m, ctrl, trajectory(m, "low"))
+    run = pm2dof.simulate(m, ctrl, model_move(m, "low"))
     assert r["preload_margin"] == np.min(run.tau_a[:run.n_move] * sign)
 
 

@@ -144,9 +144,9 @@ def test_zero_preload_still_keeps_the_signs_as_the_lp_says():
     the torques are HiGHS's largest worst-case margin, which is < 0 there. Along the low-speed
     move's inverse dynamics at 6 N m (issue 22, item 11) both happen: keeping (+, +, +) needs
     more torque than min-norm, so `splits --tau-max 6.0` counts preload-infeasible samples."""
-    from pm2dof.analysis.experiment import trajectory
+    from pm2dof.control.trajectory import model_move
     m = pm2dof.load_model()
-    n, traj = m.n_legs, trajectory(m, "low")
+    n, traj = m.n_legs, model_move(m, "low")
     w, pre, sign = np.full(n, 6.0), np.zeros(n), np.ones(n)
     modes = set()
     for x, v, a in zip(traj.xd, traj.xd_dot, traj.xd_ddot):

@@ -347,3 +347,19 @@ def test_paper_move_and_extended_errors():
     for bad in (-0.1, math.nan, math.inf, "x"):
         with pytest.raises(TrajectoryError, match="settle_time"):
             paper_move("low").extended(bad)
+
+
+def test_the_paper_moves_have_one_home_the_model_file():
+    """PAPER_MOVES is read from the shipped model file (issue 19): the same trajectory either
+    way, and an edit of the file's move is what paper_move would follow."""
+    import pm2dof
+    from pm2dof.control.trajectory import model_move
+    m = pm2dof.load_model()
+    for name, t in m.spec.trajectories.items():
+        assert PAPER_MOVES[name]["start"] == tuple(t["start"]) and \
+            PAPER_MOVES[name]["v_max"] == t["v_max"], name
+        a, b = model_move(m, name), pm2dof.paper_move(name)
+        assert np.array_equal(a.xd, b.xd) and np.array_equal(a.xd_ddot, b.xd_ddot), name
+    with pytest.raises(TrajectoryError, match=r"no move 'far' in \[trajectories\] of .*; have "
+                                              r"\['high', 'low'\]"):
+        model_move(m, "far")

@@ -3,7 +3,8 @@ import numpy as np
 
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate, theta_truth
-from ..control.trajectory import TrajectoryError, line
+from ..control.trajectory import model_move
+from .progress import bar
 
 __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3",
            "run_table3", "repeated_runs", "sensitivity", "format_sensitivity"]
@@ -11,17 +12,8 @@ __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
 PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percent": 38.40},
                 "high": {"apd_rmse": 4.7136e-4, "na_rmse": 2.8299e-4, "rpe_percent": 39.96}}
-
-
-def trajectory(model, speed, period=None):
-    """The desired move ``[trajectories.<speed>]`` of the model file, sampled at ``period``."""
-    moves = model.spec.trajectories
-    if speed not in moves:
-        raise TrajectoryError(f"no move {speed!r} in [trajectories] of {model.spec.path}; have "
-                              f"{sorted(moves)}")
-    t = moves[speed]
-    return line(t["start"], t["end"], t["v_max"], t["a_max"], t["j_max"],
-                period=model.spec.sensing["sample_period"] if period is None else period)
+"""Table 3 of the paper, measured on the real robot: {move: {"apd_rmse", "na_rmse" (eq. 41, m),
+"rpe_percent" (100 (APD - NA) / APD)}} for the moves "low" and "high"."""
 
 
 def rpe(apd_rmse, na_rmse):
@@ -39,15 +31,17 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, **contr
     out = {}
     p = len(model.param_names)
     kw = controller_options
-    for speed in speeds:
-        traj = trajectory(model, speed)
-        runs = {}
-        for name, ctrl in (("apd", APDController(model, **kw)), ("na", NAController(model, **kw)),
-                           ("na_no_adaptation", NAController(model, Gamma=np.zeros(p), **kw))):
-            if progress:
-                progress(f"{speed} speed: {name} ({len(traj.t)} samples)")
-            runs[name] = simulate(model, ctrl, traj, quantise=quantise, truth=truth)
-        out[speed] = runs
+    with bar(progress, 3 * len(speeds), "Table 3", unit="rollout") as b:
+        for speed in speeds:
+            traj = model_move(model, speed)
+            runs = {}
+            for name, ctrl in (("apd", APDController(model, **kw)),
+                               ("na", NAController(model, **kw)),
+                               ("na_no_adaptation", NAController(model, Gamma=np.zeros(p), **kw))):
+                b.set_postfix_str(f"{speed} speed, {name}")
+                runs[name] = simulate(model, ctrl, traj, quantise=quantise, truth=truth)
+                b.update()
+            out[speed] = runs
     return out
 
 
@@ -108,22 +102,37 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
 
     Each run starts at rest at the start point (the return move is not simulated).
 
+    Parameters
+    ----------
+    model : Model
+    speed : str
+        A move of the model file's ``[trajectories]`` (default "high").
+    runs : int
+        Number of runs.
+    quantise : bool
+        Quantise the encoder angles (``[sensing] encoder_counts_per_rev``).
+    progress : callable, optional
+        Called with a one-line message every 5 runs.
+
     Returns
     -------
-    dict with ``rmse`` (runs,) m, ``theta_hat_end`` (runs, 5n), ``theta_truth`` (5n,),
-    ``theta0`` (5n,).
+    dict
+        ``rmse`` (runs,) m, eq. 41 of each run; ``theta_hat_end`` (runs, 5n), theta_hat at the
+        end of each run; ``theta_truth`` (5n,), the plant's; ``theta0`` (5n,), theta_hat of
+        the first run (Tables 1-2).
     """
-    traj = trajectory(model, speed)
+    traj = model_move(model, speed)
     ctrl = NAController(model)
     theta = ctrl.theta0.copy()
     rmses, thetas = [], []
-    for k in range(runs):
-        r = simulate(model, ctrl, traj, quantise=quantise, theta_hat0=theta)
-        theta = r.theta_hat[-1].copy()
-        rmses.append(r.rmse)
-        thetas.append(theta)
-        if progress and (k + 1) % 5 == 0:
-            progress(f"repeated {speed}-speed runs: {k + 1}/{runs}, RMSE {r.rmse:.3e} m")
+    with bar(progress, runs, f"repeated {speed}-speed runs", unit="run") as b:
+        for k in range(runs):
+            r = simulate(model, ctrl, traj, quantise=quantise, theta_hat0=theta)
+            theta = r.theta_hat[-1].copy()
+            rmses.append(r.rmse)
+            thetas.append(theta)
+            b.set_postfix_str(f"RMSE {r.rmse:.3e} m")
+            b.update()
     return {"rmse": np.array(rmses), "theta_hat_end": np.array(thetas),
             "theta_truth": theta_truth(model), "theta0": ctrl.theta0.copy()}
 

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..core.errors import ArgumentError, WorkspaceError
 from ..control.simulate import pose_measures
+from .progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
            "maps_summary", "format_maps_summary", "FIELDS"]
@@ -132,9 +133,9 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
     out["type1"] = np.where(reach, type1, np.nan)
     out["type2"] = np.where(reach, type2, np.nan)
     idx = np.flatnonzero(reach & (type1 > 1e-6) & (type2 > 1e-6))
+    b = bar(progress, len(idx), "capability maps", unit="pose", miniters=200)
     for j, k in enumerate(idx):
-        if progress and j % 2000 == 0:
-            progress(f"capability maps: {j}/{len(idx)} poses")
+        b.update()
         try:
             q = model.ik(pts[k])
         except WorkspaceError:                # the grid's own geometry said reachable; C disagrees
@@ -144,6 +145,7 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
             continue
         for key, value in capability(model, q, theta, tau_max).items():
             out[key][k] = value
+    b.close()
     shape = X.shape
     res = {key: v.reshape(shape) for key, v in out.items()}
     res.update(x=x, y=y, reachable=reach.reshape(shape), side=side.reshape(shape))
@@ -161,7 +163,7 @@ def maps_summary(model, maps, theta=None, tau_max=None):
     """Numbers of :func:`workspace_maps`: the reachable area, the min/median/max of every map
     over the poses clear of both singularity thresholds, and every quantity along each move
     of ``[trajectories]`` (its worst value on the path, 201 points)."""
-    from .experiment import trajectory
+    from ..control.trajectory import model_move
     dx, dy = maps["x"][1] - maps["x"][0], maps["y"][1] - maps["y"][0]
     clear = (maps["reachable"] & (maps["type1"] >= model.singularity_threshold)
              & (maps["type2"] >= model.parallel_singularity_threshold))
@@ -173,7 +175,7 @@ def maps_summary(model, maps, theta=None, tau_max=None):
                                         for k in FIELDS},
                "units": {k: u for k, (u, _) in FIELDS.items()}, "moves": {}}
     for speed in model.spec.trajectories:
-        xd = trajectory(model, speed).xd
+        xd = model_move(model, speed).xd
         pts = xd[np.linspace(0, len(xd) - 1, 201).astype(int)]
         vals = {k: [] for k in FIELDS}
         type1, type2, _ = pose_measures(model, pts)

@@ -19,7 +19,8 @@ import numpy as np
 
 from ..control.controllers import SPLITS, APDController, NAController
 from ..control.simulate import simulate
-from .experiment import trajectory
+from ..control.trajectory import model_move
+from .progress import bar
 
 __all__ = ["split_comparison", "format_split_comparison", "tau_max_sweep", "run_splits",
            "preload_settings"]
@@ -78,20 +79,23 @@ def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speed
         tau_max = np.broadcast_to(np.asarray(tau_max, dtype=float), (n,)).copy()
     preload, preload_sign = preload_settings(model, preload, preload_sign)
     out = {}
-    for speed in (list(model.spec.trajectories) if speeds is None else speeds):
-        traj = trajectory(model, speed)
+    speeds = list(model.spec.trajectories) if speeds is None else speeds
+    b = bar(progress, len(speeds) * len(controllers) * len(splits), "splits", unit="rollout")
+    for speed in speeds:
+        traj = model_move(model, speed)
         out[speed] = {}
         for name in controllers:
             out[speed][name] = {}
             for split in splits:
-                if progress:
-                    progress(f"{speed} speed: {name}, split {split}")
+                b.set_postfix_str(f"{speed} speed, {name}, {split}")
+                b.update()
                 pre = {"preload": preload, "preload_sign": preload_sign} if split == "preload" \
                     else {"preload": np.zeros(n)}   # the preload only binds its own split
                 ctrl = CONTROLLERS[name](model, tau_max=tau_max, split=split, **pre)
                 r = simulate(model, ctrl, traj, quantise=quantise)
                 out[speed][name][split] = (_row(r, preload, preload_sign) if split == "preload"
                                            else _row(r))
+    b.close()
     return out
 
 
@@ -109,9 +113,10 @@ def tau_max_sweep(model, levels, speed="high", preload=None, preload_sign=None,
     for name in controllers:
         res[name] = {s: {k: np.full(len(levels), np.nan) for k in keys} for s in splits}
     pre, _ = preload_settings(model, preload, preload_sign)
+    b = bar(progress, len(levels), "tau_max sweep", unit="level")
     for i, level in enumerate(levels):
-        if progress:
-            progress(f"tau_max = {level:.3g} N*m ({i + 1}/{len(levels)})")
+        b.set_postfix_str(f"tau_max = {level:.3g} N m")
+        b.update()
         for split in splits:
             if split == "preload" and np.any(pre >= level):
                 continue
@@ -120,6 +125,7 @@ def tau_max_sweep(model, levels, speed="high", preload=None, preload_sign=None,
             for name in controllers:
                 for k in keys:
                     res[name][split][k][i] = r[name][split][k]
+    b.close()
     return res
 
 

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.experiment import trajectory
+from ..control.trajectory import model_move
 from ..control.controllers import APDController, NAController
 from ..control.simulate import plant_vector, simulate
 from ..core.layout import Layout
@@ -42,7 +42,7 @@ TARGETS = (
     ("agreement_c_vs_numpy", "<=", 1e-10, "rel", "C step vs NumPy reference (max rel. diff.)"),
     ("na_min_max_over_min_norm", "<=", 1.3, "x", "NA step, min_max split / min_norm split"),
 )
-#: torque splits timed side by side (README, "Torque distribution"); preload level, N*m
+#: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 BENCH_SPLITS = ("min_norm", "min_max", "preload")
 BENCH_PRELOAD = 1.0
 
@@ -111,7 +111,7 @@ def run_bench(model=None, quick=False, progress=None):
     n = model.n_legs
     na, apd = NAController(model), APDController(model)
     speed = "high" if "high" in model.spec.trajectories else next(iter(model.spec.trajectories))
-    traj = trajectory(model, speed)
+    traj = model_move(model, speed)
     k_op = len(traj.t) // 2
     say(f"operating point: the NA controller along the {speed}-speed move to sample {k_op}")
     op = operating_point(model, na, traj, k_op)

@@ -8,8 +8,11 @@ from types import MappingProxyType
 import numpy as np
 
 from ..core.errors import Pm2dofError
+from ..core.model_file import read_model_file
+from ..core.paths import DEFAULT_MODEL_NAME, SHIPPED_MODELS
 
-__all__ = ["TrajectoryError", "SCurve", "Trajectory", "line", "PAPER_MOVES", "paper_move"]
+__all__ = ["TrajectoryError", "SCurve", "Trajectory", "line", "model_move", "PAPER_MOVES",
+           "paper_move"]
 
 
 class TrajectoryError(Pm2dofError, ValueError):
@@ -231,11 +234,51 @@ def line(start, end, v_max, a_max, j_max, period=0.002):
     return Trajectory(t, xd, xd_dot, xd_ddot, period, p0, p1, prof)
 
 
-_PATH = dict(start=(0.22, 0.29), end=(0.27, 0.24))  # Shang & Cong 2010 desired line, m
-PAPER_MOVES = MappingProxyType({  # read-only: {name: keyword arguments of line()}
-    "low": MappingProxyType(dict(_PATH, v_max=0.2, a_max=5.0, j_max=200.0)),
-    "high": MappingProxyType(dict(_PATH, v_max=0.5, a_max=10.0, j_max=400.0)),
-})
+def _move_arguments(spec, name):
+    """Keyword arguments of :func:`line` for the model file's ``[trajectories.<name>]``."""
+    moves = spec.trajectories
+    if not isinstance(name, str) or name not in moves:
+        raise TrajectoryError(f"no move {name!r} in [trajectories] of {spec.path}; have "
+                              f"{sorted(moves)}")
+    t = moves[name]
+    return MappingProxyType({"start": tuple(float(v) for v in t["start"]),
+                             "end": tuple(float(v) for v in t["end"]),
+                             **{k: float(t[k]) for k in ("v_max", "a_max", "j_max")}})
+
+
+def model_move(model, name, period=None):
+    """The move ``[trajectories.<name>]`` of a model file: its S-curve line, sampled.
+
+    The one reader of a model file's moves (the paper's, in ``shang2010``, are its
+    ``low`` and ``high``).
+
+    Parameters
+    ----------
+    model : Model or ModelSpec
+    name : str
+        A key of the model file's ``[trajectories]``.
+    period : float, optional
+        Sampling period, s (default ``[sensing] sample_period``).
+
+    Raises
+    ------
+    TrajectoryError
+        No such move (the message lists the file's moves).
+    """
+    spec = getattr(model, "spec", model)
+    return line(**_move_arguments(spec, name),
+                period=spec.sensing["sample_period"] if period is None else period)
+
+
+def _paper_moves():
+    """The paper's moves, read from the shipped model file of the paper's robot."""
+    spec = read_model_file(SHIPPED_MODELS / f"{DEFAULT_MODEL_NAME}.toml")
+    return MappingProxyType({k: _move_arguments(spec, k) for k in spec.trajectories})
+
+
+#: read-only {name: keyword arguments of line()}: the paper's low- and high-speed moves (Sect. 5),
+#: as the shipped model file ``shang2010`` writes them (their one home)
+PAPER_MOVES = _paper_moves()
 
 
 def paper_move(speed, period=0.002):
@@ -244,7 +287,7 @@ def paper_move(speed, period=0.002):
     Parameters
     ----------
     speed : {"low", "high"}
-        Which move of :data:`PAPER_MOVES`.
+        Which move of :data:`PAPER_MOVES` (the shipped ``shang2010`` model file's moves).
     period : float, optional
         Sampling period, s.
     """

@@ -67,9 +67,9 @@ LIBS: tuple[str, ...] = ("-lm",)
 
 try:
     from .errors import Pm2dofError
-except ImportError:       # loaded as a file by setup.py, outside the package: no common base
-    class Pm2dofError(Exception):   # (a bare Exception here would make BuildError's MRO fail)
-        """Stand-in base when build.py is loaded as a file."""
+except ImportError:       # loaded as a file by setup.py, outside the package: a stand-in base
+    class Pm2dofError(Exception):
+        """Stand-in for pm2dof.core.errors.Pm2dofError when built without the package."""
 
 
 class BuildError(Pm2dofError, RuntimeError):

@@ -4,7 +4,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.errors import ArgumentError
-from ..analysis.experiment import trajectory
+from ..control.trajectory import model_move
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from .experiment import COLORS, LABELS, _plt, sci
@@ -62,7 +62,7 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
     if not (isinstance(every, int) and every >= 1 and isinstance(fps, int) and fps >= 1):
         raise ArgumentError(f"every and fps must be integers >= 1, got {every}, {fps}")
     plt = _plt()
-    traj = trajectory(model, speed)
+    traj = model_move(model, speed)
     r = simulate(model, CONTROLLERS[controller](model, split=split), traj,
                  settle_time=settle_time)
     e = r.xe - r.xd

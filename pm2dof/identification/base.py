@@ -154,14 +154,27 @@ def _random_states(model, n, rng, center, radius):
 def identifiability(model, samples=400, seed=0, radius=0.04, rtol=1e-9):
     """Rank of the regressor Y stacked over random states, and the base parameters.
 
-    States: ``samples`` positions uniform in a square of half width ``radius`` m around
-    :func:`region_center`, velocities N(0, 0.3) m/s, accelerations N(0, 5) m/s^2.
+    Parameters
+    ----------
+    model : Model
+    samples : int
+        Random states over which Y is stacked.
+    seed : int
+        Seed of the random states.
+    radius : float
+        m: the states' positions are drawn uniformly within +-radius in x and y of
+        :func:`region_center` (the middle of the model file's first move); velocities
+        N(0, 0.3) m/s, accelerations N(0, 5) m/s^2.
+    rtol : float
+        Singular values of the column-scaled stacked Y below ``rtol`` times the largest count
+        as zero.
 
     Returns
     -------
     Identifiability
         Its ``base`` (:class:`BaseParameters`): a greedy choice of independent columns (a column
-        is kept if it raises the rank) and the least-squares folding of the others.
+        is kept if it raises the rank) and the least-squares folding of the others; ``rank``,
+        ``singular_values`` and ``null_space``.
     """
     rng = np.random.default_rng(seed)
     Phi_raw = np.vstack([model.Y(q, v, vr, ar) for q, v, vr, ar

@@ -1,5 +1,5 @@
 # Identification logs: the measured encoder angles and torques of a run, read, written and checked.
-"""The log format of ``pm2dof identify fit LOG`` (README, "Identification from logs").
+"""The log format of ``pm2dof identify fit LOG`` (docs/log-format.md).
 
 A log is a table with one row per control sample:
 

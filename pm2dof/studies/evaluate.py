@@ -16,7 +16,7 @@ import numpy as np
 from ..control.controllers import APDController, NAController
 from ..control.simulate import (batch_inputs, check_trajectory, completed_samples, plant_vector,
                                 theta_truth)
-from ..control.trajectory import line
+from ..control.trajectory import line, model_move
 from ..core.model import load_model
 from ..core.status import Status
 from .draws import draw_columns, plant_of, sample_draw
@@ -24,7 +24,7 @@ from .draws import draw_columns, plant_of, sample_draw
 __all__ = ["run_chunk", "check_study", "make_controller", "make_trajectory", "rollout_setup",
            "METRICS", "columns"]
 
-#: metric columns of every row (units in README "Studies at scale")
+#: metric columns of every row (units in docs/study-file.md, "The results folder")
 METRICS = ("rmse", "max_error", "peak_tau", "n_saturated", "n_singular", "n_non_finite",
            "diverged", "theta_error")
 _CACHE = {}
@@ -48,18 +48,18 @@ def make_trajectory(model, move, period):
     """A study move: a name of the model file's [trajectories] or a line's (sorted) items."""
     name, items = move
     if items is None:
-        from ..analysis.experiment import trajectory
-        return trajectory(model, name, period)
+        return model_move(model, name, period)
     d = dict(items)
     return line(d["start"], d["end"], d["v_max"], d["a_max"], d["j_max"], period=period)
 
 
 def _context(study):
-    key = (study.model_path, study.variants, study.moves, study.settle_time)   # what ctx holds
+    key = (study.model_path, study.generated_path, study.variants, study.moves,
+           study.settle_time)                                                   # what ctx holds
     ctx = _CACHE.get(key)
     if ctx is None:
         from ..identification.base import identifiability
-        model = load_model(study.model_path)
+        model = load_model(study.model_path, study.generated_path)
         ctrls = [make_controller(model, v) for v in study.variants]
         T = ctrls[0].sample_period
         trajs = []

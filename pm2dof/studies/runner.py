@@ -13,6 +13,8 @@ import os
 import sys
 import time
 
+from ..analysis.progress import Progress
+from ..analysis.progress import bar as progress_bar
 from ..core.errors import ArgumentError, Pm2dofError
 from ..core.model import load_model
 from .evaluate import check_study, run_chunk
@@ -79,50 +81,6 @@ def _close(client):
         cluster.close()
 
 
-class Progress:
-    """Rollouts done, rate and ETA on stderr: one updating line on a terminal, else a line
-    every ``every`` seconds.
-
-    The rate is the rollouts finished in this session over the seconds since ``t0`` (a
-    ``time.perf_counter()`` value; :func:`run_study` passes the moment its first task is
-    submitted, the cluster already running), so it leaves out the cluster's start. The line
-    labels it so: ``rollouts 40/240 (17%), 1,138 rollouts/s since the first task, ETA 0 s``.
-    """
-
-    def __init__(self, total, done=0, stream=None, every=5.0, t0=None):
-        self.total, self.done, self.start_done = total, done, done
-        self.stream = sys.stderr if stream is None else stream
-        self.tty = getattr(self.stream, "isatty", lambda: False)()
-        self.t0 = time.perf_counter() if t0 is None else t0
-        self.last = time.perf_counter()
-        self.every = every
-
-    @property
-    def rate(self):
-        """Rollouts per second since ``t0``, this session's only."""
-        dt = time.perf_counter() - self.t0
-        return (self.done - self.start_done) / dt if dt > 0 else 0.0
-
-    def line(self):
-        rate = self.rate
-        eta = (self.total - self.done) / rate if rate > 0 else float("nan")
-        return (f"rollouts {self.done}/{self.total} ({100 * self.done / self.total:.0f}%), "
-                f"{rate:,.0f} rollouts/s since the first task, ETA {eta:.0f} s")
-
-    def update(self, n):
-        self.done += n
-        now = time.perf_counter()
-        if self.tty:
-            print(f"\r  .. {self.line()}   ", end="", file=self.stream, flush=True)
-        elif now - self.last >= self.every or self.done == self.total:
-            print(f"  .. {self.line()}", file=self.stream, flush=True)
-            self.last = now
-
-    def close(self):
-        if self.tty:
-            print(file=self.stream, flush=True)
-
-
 def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=10.0,
               progress=True, echo=print):
     """Run every rollout of ``study`` (a :class:`~pm2dof.studies.spec.Study`) into ``out``.
@@ -138,8 +96,9 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
         generated code, and the model file at the same path.
     client : distributed.Client, optional
         Use this client (not closed here) instead of ``workers`` / ``scheduler``.
-    progress : bool
-        Progress line on stderr.
+    progress : bool or pm2dof.analysis.progress.Progress
+        True: a bar on stderr when it is a terminal (rollouts done, the rate since the first
+        task, ETA), nothing otherwise; a Progress: its bar; False: none.
 
     Returns
     -------
@@ -157,7 +116,7 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     from distributed import as_completed
     if client is None and not scheduler and workers is not None and workers < 1:
         raise ArgumentError(f"--workers must be >= 1, got {workers}")
-    model = load_model(study.model_path)
+    model = load_model(study.model_path, study.generated_path)
     check_study(study, model)
     done = prepare_out(out, study, model)
     todo = [i for i in range(study.n_chunks) if i not in done]
@@ -173,7 +132,9 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     if own:
         client = connect(workers, scheduler, timeout)
     t_run = time.perf_counter()                  # the cluster is up: the rollouts start now
-    bar = Progress(study.n_rollouts, rows_done, t0=t_run) if progress else None
+    reporter = Progress() if progress is True else progress
+    bar = progress_bar(reporter, study.n_rollouts, f"study {study.name}", unit="rollout",
+                       initial=rows_done, smoothing=0)      # the mean rate since the first task
     try:
         nthreads = sum(client.nthreads().values()) or 1
         where = scheduler or f"a local cluster of {nthreads} worker process(es)"
@@ -201,13 +162,11 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
                                     f"..) failed: {type(exc).__name__}: {exc}") from exc
             write_chunk(out, i, cols, study)
             fut.release()
-            if bar:
-                bar.update(len(cols["rollout"]))
+            bar.update(len(cols["rollout"]))
             submit()
         run_dt = time.perf_counter() - t_run
     finally:
-        if bar:
-            bar.close()
+        bar.close()
         if own:
             _close(client)
     dt = time.perf_counter() - t0
