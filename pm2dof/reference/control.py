@@ -70,7 +70,7 @@ def layouts(n: int) -> dict:
         ``ctrl_state`` (xe_prev 2, v 2, theta_hat p); ``na_params`` (Kd 2, Q 2, Gamma p,
         T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n, preload_sign n,
         preload n, closure_tol); ``apd_params`` (Kp 2, Kv 2, and the same); the reference steps are the
-        min_norm split (eq. 21; tests/test_splits.py checks the other splits); ``plant`` (alpha, beta, gamma, fv, fc, fs
+        min_norm split (eq. 21; tests/control/test_splits.py checks the other splits); ``plant`` (alpha, beta, gamma, fv, fc, fs
         each n, stribeck_velocity, coulomb_smoothing_velocity, encoder_step);
         ``cl_state`` (xe 2, xed 2, ctrl_state); ``cl_input`` (xd 2, xd_dot 2,
         xd_ddot 2); ``cl_output`` (xe 2, xed 2, tau_a n, status 1, theta_hat p).

@@ -29,7 +29,7 @@ from pm2dof.analysis import results
 from pm2dof.core.model_file import read_model_file
 from pm2dof.analysis.results import provenance, save_figure, write_atomic, write_json
 
-REPO = Path(__file__).resolve().parent.parent
+REPO = Path(__file__).resolve().parents[2]
 PAPER = SHIPPED_MODELS / "shang2010.toml"
 TABLE3_KEYS = ("apd_rmse", "na_rmse", "na_no_adaptation_rmse", "rpe_percent",
                "trajectory_duration_s")

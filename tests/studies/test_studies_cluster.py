@@ -22,7 +22,7 @@ from pm2dof.studies import (SHIPPED_STUDIES, StudyRunError, read_results, read_s
                             run_study)
 from pm2dof.studies.report import columns_of
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 BIN = Path(sys.executable).parent
 PM2DOF = [sys.executable, "-m", "pm2dof"]
 DEADLINE = 120.0    # s: no step of these tests may wait longer

@@ -31,7 +31,7 @@ import pytest
 try:
     from pm2dof.reference import model as ref
 except ImportError:  # running pytest without the project root on sys.path
-    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
     from pm2dof.reference import model as ref
 
 # --------------------------------------------------------------------------

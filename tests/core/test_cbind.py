@@ -277,7 +277,7 @@ def test_killed_build_leftovers_are_removed_by_the_next_build_and_ignored_by_git
     os.utime(other, (stale, stale))
     build.compile_library(tmp_path / "a.c", tmp_path / "liba.so")
     assert not old.exists() and young.exists() and other.exists()
-    repo = pathlib.Path(__file__).resolve().parent.parent
+    repo = pathlib.Path(__file__).resolve().parents[2]
     probe = "pm2dof/generated/shang2010/.libshang2010.so.abc123.tmp"
     r = subprocess.run(["git", "check-ignore", "-q", probe], cwd=repo)
     assert r.returncode == 0, f"git does not ignore {probe}"
