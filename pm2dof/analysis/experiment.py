@@ -17,7 +17,10 @@ PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percen
 
 
 def rpe(apd_rmse, na_rmse):
-    """Relative performance: percentage reduction of the RMSE from APD to NA."""
+    """Relative performance: percentage reduction of the RMSE from APD to NA; None when a run
+    did not complete (its RMSE is inf: no percentage means anything then)."""
+    if not (np.isfinite(apd_rmse) and np.isfinite(na_rmse)):
+        return None
     return 100.0 * (apd_rmse - na_rmse) / apd_rmse
 
 
@@ -60,6 +63,9 @@ def table3_json(results):
             "saturated_samples": {k: v.n_saturated for k, v in runs.items()},
             "singular_samples": {k: v.n_singular for k, v in runs.items()},
         }
+        failed = {k: v.outcome_message for k, v in runs.items() if v.outcome != "completed"}
+        if failed:  # a run that left the workspace or diverged: its RMSE is inf (JSON: null)
+            out[speed]["outcomes"] = failed
     return out
 
 
@@ -69,14 +75,23 @@ def format_table3(numbers):
              "paper (Table 3).",
              f"{'speed':6s} {'APD sim':>11s} {'NA sim':>11s} {'NA G=0 sim':>11s} {'RPE sim':>8s}"
              f" | {'APD paper':>11s} {'NA paper':>11s} {'RPE paper':>9s}"]
+    def cell(x, width, spec, none="-"):   # None: no paper number, or a run that failed
+        return f"{x:{width}{spec}}" if x is not None and np.isfinite(x) else f"{none:>{width}s}"
+
+    failed = []
     for speed, r in numbers.items():
         paper = PAPER_TABLE3.get(speed, {})
-        lines.append(f"{speed:6s} {r['apd_rmse']:11.4e} {r['na_rmse']:11.4e} "
-                     f"{r['na_no_adaptation_rmse']:11.4e} {r['rpe_percent']:7.2f}% | "
-                     f"{paper.get('apd_rmse', float('nan')):11.4e} "
-                     f"{paper.get('na_rmse', float('nan')):11.4e} "
-                     f"{paper.get('rpe_percent', float('nan')):8.2f}%")
+        lines.append(f"{speed:6s} {cell(r['apd_rmse'], 11, '.4e', 'failed')} "
+                     f"{cell(r['na_rmse'], 11, '.4e', 'failed')} "
+                     f"{cell(r['na_no_adaptation_rmse'], 11, '.4e', 'failed')} "
+                     f"{cell(r['rpe_percent'], 7, '.2f', 'n/a')}% | "
+                     f"{cell(paper.get('apd_rmse'), 11, '.4e')} "
+                     f"{cell(paper.get('na_rmse'), 11, '.4e')} "
+                     f"{cell(paper.get('rpe_percent'), 8, '.2f')}%")
+        failed += [f"  {speed} {k}: {msg}" for k, msg in r.get("outcomes", {}).items()]
     lines.append("RPE = 100 (APD - NA) / APD: positive when NA tracks better.")
+    if failed:
+        lines += ["Runs that did not complete (their RMSE is infinite):"] + failed
     return "\n".join(lines)
 
 
