@@ -18,6 +18,7 @@ The package is layered; imports only point down (tests/test_layers.py checks it)
 ``analysis/``      3. the paper's experiment, identification, reports, result files.
 ``bench/``         3. the step-time benchmark.
 ``studies/``       3. many-rollout studies on Dask, results in Parquet.
+``planning/``      3. paths in the task plane, time-optimal and kinematic timing.
 ``figures/``       4. matplotlib figures and the demo.
 ``cli.py``         4. ``pm2dof COMMAND``: parses arguments and dispatches, nothing else.
 ``reference/``     beside the layers: independent NumPy formulations for tests and the bench.
@@ -33,7 +34,7 @@ from .control.controllers import STATUS_NAMES, APDController, NAController
 from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
 from .control.trajectory import PAPER_MOVES, Trajectory, TrajectoryError, line, paper_move
 from .core.errors import (ClosureError, GainError, ModelFileError, ModelMismatchError,
-                          OutcomeWarning, SingularityError, StaleGeneratedCodeError,
+                          OutcomeWarning, PlanError, SingularityError, StaleGeneratedCodeError,
                           WorkspaceError)
 from .core.model import Model, load_model
 from .core.version import __version__
@@ -61,6 +62,13 @@ _LAZY = {
     "identify_log": "pm2dof.analysis.ident_data",
     "design_excitation": "pm2dof.analysis.excitation_design",
     "load_excitation": "pm2dof.analysis.excitation_design",
+    # motion planning (issue 20)
+    "TaskPath": "pm2dof.planning",
+    "check_path": "pm2dof.planning",
+    "plan_kinematic": "pm2dof.planning",
+    "plan_time_optimal": "pm2dof.planning",
+    "plan_smooth": "pm2dof.planning",
+    "Plan": "pm2dof.planning",
 }
 
 __all__ = [
@@ -73,7 +81,7 @@ __all__ = [
     # errors
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError",
-    "TrajectoryError", "GainError", "ModelMismatchError", "OutcomeWarning",
+    "TrajectoryError", "GainError", "ModelMismatchError", "OutcomeWarning", "PlanError",
     # layer 3 (imported on first use)
     *_LAZY,
 ]

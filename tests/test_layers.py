@@ -26,10 +26,11 @@ ALLOWED = {
     "control": {"core", "control"},                     # 2: controllers, rollouts
     "reference": {"core", "reference"},                 # beside: NumPy formulations
     "analysis": _RUNTIME | {"analysis"},                # 3: experiment, identification
-    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive"},   # 3: benchmark
+    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive", "planning"},  # 3: benchmark
     "studies": _RUNTIME | {"analysis", "studies"},      # 3: many rollouts on Dask
-    "figures": _RUNTIME | {"analysis", "studies", "figures"},   # 4: matplotlib
-    "cli": _RUNTIME | {"analysis", "bench", "studies", "figures", "cli", "derive"},  # 4
+    "planning": _RUNTIME | {"planning"},                # 3: motion planning (issue 20)
+    "figures": _RUNTIME | {"analysis", "studies", "figures", "planning"},   # 4: matplotlib
+    "cli": _RUNTIME | {"analysis", "bench", "studies", "figures", "cli", "derive", "planning"},
     "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
     "__main__": {"cli"},
     "_moved": set(),
@@ -41,8 +42,9 @@ THIRD_PARTY = {
     "__main__": set(), "_moved": set(),
     "analysis": {"numpy", "scipy", "casadi", "pyarrow"},   # pyarrow: Parquet logs (ident_log)
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
-    "bench": {"numpy", "casadi", "sympy"},              # baselines; each optional at run time
+    "bench": {"numpy", "casadi", "sympy", "toppra"},    # baselines; each optional at run time
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
+    "planning": {"numpy", "casadi"},                    # CasADi only in plan_smooth (lazily)
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},
     "cli": set(),
 }

@@ -1,6 +1,6 @@
 # Typed errors of pm2dof: each subclasses a builtin and names the value, the place and the limit.
 __all__ = ["ModelFileError", "StaleGeneratedCodeError", "WorkspaceError", "ClosureError",
-           "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning"]
+           "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning", "PlanError"]
 
 
 class ModelFileError(ValueError):
@@ -36,3 +36,9 @@ class ModelMismatchError(ValueError):
 class OutcomeWarning(RuntimeWarning):
     """A rollout that did not complete: it left the workspace or diverged (``SimResult.outcome``
     names which, the sample and the time)."""
+
+
+class PlanError(ValueError):
+    """A path or a motion plan that cannot be built (names what and where: the argument and its
+    value, or the arc length and point of the path): bad path geometry, a non-positive grid or
+    margin, torque limits too low to follow the path at any speed."""

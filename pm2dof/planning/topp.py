@@ -1,0 +1,154 @@
+# Time-optimal path parameterisation under the actuators' torque limits, friction included, in C.
+"""``plan_time_optimal``: the fastest traversal of a path that the motors allow.
+
+The discretisation is TOPP-RA's (Pham & Pham 2018) with the constraints collocated at the grid
+points: x_k = s_d^2 at s_k, a constant s_dd = u_k on [s_k, s_k+1] (x_k+1 = x_k + 2 delta_k u_k)
+and at every grid point the torque rows N (a u_k + b x_k + S^T f_a(S p' sqrt(x_k))) <= h. The
+friction term makes the rows nonlinear in sqrt(x) (viscous) and sign-dependent (Coulomb), so
+the stage sets are not polytopes; every set the recursion needs is one-dimensional, though, and
+is computed exactly (to 2e-11 m/s) by bisection in generated C (pm2dof/derive/planning.py):
+
+1. the maximum-velocity curve: the largest s_d at each point with a feasible s_dd (``map``);
+2. backward from rest at the end: the largest x_k from which some feasible u_k reaches
+   [0, x_k+1,max] (one ``accumulate`` call over the grid);
+3. forward from rest at the start: the greatest feasible u_k that stays below x_k+1,max
+   (one ``accumulate`` call). This greedy profile is the time-optimal one of the discrete
+   problem (each x_k is the largest reachable and controllable value).
+"""
+import time
+
+import numpy as np
+
+from ..core.errors import PlanError
+from .plan import Plan, PathProfile, grid_times, sample
+from .stages import grid_points, limits, params, stages
+
+__all__ = ["plan_time_optimal", "solve_profile"]
+
+_TOL = 1e-9   # relative slack of the forward pass's own checks (rounding)
+
+
+def _at(coef, s, k):
+    p = coef["p"][k]
+    return f"s = {s[k]:.6g} m, point ({p[0]:.6g}, {p[1]:.6g}) m"
+
+
+def _stop_indices(path, s):
+    return np.searchsorted(s, path.stops) if len(path.stops) else np.array([], dtype=int)
+
+
+def solve_profile(model, stage, prm, s, coef):
+    """The three passes over one grid. Returns (x (K,), sdd (K,), x_mvc (K,))."""
+    K = len(s)
+    x_mvc = np.empty(K)
+    model.function("path_mvc").map(K, stage, prm, x_mvc)
+    bad = np.flatnonzero(x_mvc < 0)
+    if bad.size:
+        k = int(bad[0])
+        raise PlanError(f"the torque limits cannot move the robot along the path at "
+                        f"{_at(coef, s, k)}: even at rest no path acceleration keeps every "
+                        f"|tau_i| within tau_max (Coulomb friction and the split's force "
+                        f"polygon leave no feasible force along the path)")
+    sl = model.layout("path_stage").slices
+    x_cap = stage[:, sl["x_cap"]].ravel()
+    interior = np.flatnonzero((x_mvc <= 0) & (x_cap > 0))
+    if interior.size:
+        k = int(interior[0])
+        raise PlanError(f"zero feasible velocity at {_at(coef, s, k)}: the torque limits hold "
+                        f"the path there only at rest (the maximum-velocity curve touches 0)")
+    # backward: controllable bounds, from rest at the end
+    back = np.empty(K - 1)
+    xb = np.zeros(1)
+    model.function("path_backward").accumulate(xb, np.ascontiguousarray(stage[-2::-1]), prm,
+                                               back)
+    hi = np.concatenate([back[::-1], [0.0]])
+    if hi[0] < 0:
+        k = int(np.flatnonzero(hi < 0)[-1])
+        raise PlanError(f"the robot cannot reach the end of the path at rest from "
+                        f"{_at(coef, s, k)} with these torque limits: no feasible deceleration")
+    # forward: greedy from rest at the start
+    fin = np.empty((K - 1, stage.shape[1] + 1))
+    fin[:, :-1] = stage[:-1]
+    fin[:, -1] = hi[1:]
+    y = np.empty((K - 1, 5))
+    xf = np.zeros(1)
+    model.function("path_forward").accumulate(xf, fin, prm, y)
+    x = np.concatenate([y[:, 0], xf])
+    sdd, L, Z = y[:, 1], y[:, 2], y[:, 4]
+    scale = np.maximum(1.0, np.abs(sdd))
+    wrong = (sdd < L - _TOL * scale) | (Z < -_TOL * stage[:-1, sl["h"]].max(axis=1)) | \
+        (x[1:] < -_TOL * np.maximum(x_mvc[1:], 1e-12))
+    if wrong.any():
+        k = int(np.argmax(wrong))
+        raise PlanError(f"the forward pass found no feasible path acceleration at "
+                        f"{_at(coef, s, k)} (s_dd {sdd[k]:.6g} below its lower bound "
+                        f"{L[k]:.6g} m/s^2): the feasible speeds there are not an interval")
+    x = np.maximum(x, 0.0)
+    x[x_cap == 0] = 0.0
+    return x, np.concatenate([sdd, sdd[-1:]]), x_mvc
+
+
+def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, margin=1.0,
+                      grid=1000):
+    """The time-optimal traversal of ``path`` from rest to rest under the torque limits.
+
+    Parameters
+    ----------
+    model : Model
+    path : TaskPath
+    tau_max : float or array_like (n,), optional
+        Actuator torque limits, N m (default ``[limits] tau_max`` of the model file).
+    split : {"min_max", "min_norm"}
+        ``"min_norm"``: tau = S (S^T S)^-1 u (eq. 21) within the limits; ``"min_max"``: any tau
+        with S^T tau = u within the limits (the force zonotope, exactly).
+    theta : array_like (5n,), optional
+        Dynamic parameters (default the model's nominal theta, Tables 1-2); friction, viscous
+        and Coulomb, is the model's own law with these coefficients.
+    margin : float
+        The plan uses tau_max * margin (< 1 leaves headroom for feedback).
+    grid : int
+        Grid points along the path (each piece uniform, breakpoints included).
+
+    Returns
+    -------
+    Plan
+        ``method`` "time_optimal"; torques at the grid points from the generated C.
+
+    Raises
+    ------
+    PlanError
+        A non-positive grid or margin, bad limits or theta, or limits too low to follow the
+        path (names the arc length and the point).
+    WorkspaceError, SingularityError
+        A grid point out of reach or too close to a singularity (names s and the point).
+
+    Examples
+    --------
+    >>> import pm2dof
+    >>> m = pm2dof.load_model()
+    >>> path = pm2dof.TaskPath.line([0.22, 0.29], [0.27, 0.24])
+    >>> plan = pm2dof.plan_time_optimal(m, path, tau_max=6.0, split="min_max", grid=200)
+    >>> bool(0.1 < plan.duration < 0.216), bool((plan.tau_peak <= 6.0 + 1e-9).all())
+    (True, True)
+    """
+    t0 = time.perf_counter()
+    w = limits(model, tau_max, margin)
+    s = grid_points(path, grid)
+    prm, th = params(model, theta)
+    stops = _stop_indices(path, s)
+    stage, coef = stages(model, path, s, w, th, split, stops)
+    x, sdd, x_mvc = solve_profile(model, stage, prm, s, coef)
+    sdot = np.sqrt(x)
+    t = grid_times(s, sdot)
+    K, n = len(s), model.n_legs
+    outs = (np.empty((K, 2)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
+    sdd_pt = np.concatenate([sdd[:-1], sdd[-2:-1]])
+    model.function("path_torques").map(K, stage, sdot, sdd_pt, prm, w, *outs)
+    tau = outs[1] if split == "min_norm" else outs[2]
+    profile = PathProfile(s, sdot, sdd, t)
+    traj = sample(path, profile, model.spec.sensing["sample_period"])
+    return Plan(path=path, method="time_optimal", split=split, duration=float(t[-1]), s=s,
+                sdot=sdot, sddot=sdd, t=t, max_velocity=np.sqrt(np.maximum(x_mvc, 0.0)),
+                tau=tau, tau_peak=np.abs(tau).max(axis=0), tau_max=w, margin=float(margin),
+                trajectory=traj, compute_time_s=time.perf_counter() - t0,
+                info={"grid": K, "stops": s[stops].tolist(), "theta": th.tolist()})
