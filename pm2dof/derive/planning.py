@@ -44,8 +44,9 @@ Functions (prefix ``<name>_``), all per grid point:
 * ``path_torques(stage, sd, sdd, params, tau_max) -> u, tau_min_norm, tau_min_max, ratio``.
 
 The largest s_d with a non-empty interval is found by bisection on [0, v_top] with
-:data:`BISECTIONS` halvings: the stage sets are intervals [0, s_d*] for these robots, and the
-bisection keeps the feasible end, so the result never exceeds the true bound. For a friction
+:data:`BISECTIONS` halvings (:data:`MVC_BISECTIONS` for the maximum-velocity curve): the stage
+sets are intervals [0, s_d*] for these robots, and the bisection keeps the feasible end, so
+the result never exceeds the true bound. For a friction
 law affine in |v| (Coulomb + viscous, eq. 2) each facet is a quadratic in s_d whose
 coefficients are computed once per point; other laws (Stribeck, smooth sign) are evaluated at
 every halving.
@@ -60,10 +61,13 @@ from .splits import min_max, min_norm
 from .symbols import sgn
 from .to_casadi import Converter
 
-__all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS"]
+__all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS", "MVC_BISECTIONS"]
 
-#: halvings of the bisection for the largest feasible s_d: v_top 2^-36, 1.5e-9 m/s at 100 m/s
-BISECTIONS = 36
+#: halvings of the bisection for the largest controllable s_d: v_top 2^-32, 2.3e-8 m/s at
+#: 100 m/s; and for the maximum-velocity curve (a diagnostic the passes do not use): 2^-20,
+#: 1e-4 m/s at 100 m/s
+BISECTIONS = 32
+MVC_BISECTIONS = 20
 _PARALLEL = 1e-12   # |N_j . a| <= _PARALLEL |a|: facet j does not bound s_dd (it bounds s_d only)
 
 
@@ -193,11 +197,11 @@ class _Stage:
         L, U, Z = self.bounds(sd)
         return ca.logic_and(L <= U, Z >= 0), L
 
-    def largest(self, v_top, predicate):
+    def largest(self, v_top, predicate, halvings):
         """(largest sd in [0, v_top] where predicate(sd) holds, holds at 0), by bisection."""
         ok0, okt = predicate(ca.SX(0)), predicate(v_top)
         lo, hi = ca.SX(0), v_top
-        for _ in range(BISECTIONS):
+        for _ in range(halvings):
             mid = 0.5 * (lo + hi)
             c = predicate(mid)
             lo, hi = ca.if_else(c, mid, lo), ca.if_else(c, hi, mid)
@@ -232,7 +236,7 @@ def path_functions(d, prefix):
     st = _Stage(n, lays["path_stage"].split(stage_v), friction)
     v_top = P["v_top"]
 
-    y_mvc, ok0 = st.largest(v_top, lambda sd: st.feasible(sd)[0])
+    y_mvc, ok0 = st.largest(v_top, lambda sd: st.feasible(sd)[0], MVC_BISECTIONS)
     out.append(ca.Function(f"{prefix}_path_mvc", [stage_v, prm],
                            [ca.if_else(ok0, y_mvc * y_mvc, -1)], ["stage", "params"], ["x_mvc"]))
 
@@ -242,7 +246,7 @@ def path_functions(d, prefix):
     def reaches(sd):
         ok, L = st.feasible(sd)
         return ca.logic_and(ok, sd * sd + 2 * delta * L <= x)
-    y_b, ok0 = st.largest(v_top, reaches)
+    y_b, ok0 = st.largest(v_top, reaches, BISECTIONS)
     x_b = ca.if_else(ca.logic_and(ok0, x >= 0), ca.fmin(y_b * y_b, st.st["x_cap"]), -1)
     out.append(ca.Function(f"{prefix}_path_backward", [x, stage_v, prm], [x_b, x_b],
                            ["x_next_max", "stage", "params"], ["x_max", "y"]))

@@ -9,7 +9,7 @@
   friction included, in generated C;
 * :mod:`.smooth` -- :func:`plan_smooth`: torque-rate-limited near-time-optimal (CasADi/IPOPT);
 * :mod:`.plan` -- :class:`Plan`, the sampled :class:`pm2dof.Trajectory`;
-* :mod:`.torques` -- inverse dynamics along a trajectory (Me, Ce, StF, then the split);
+* :mod:`.torques` -- inverse dynamics along a timed path (Me, Ce, StF, then the split);
 * :mod:`.pathfile` -- path files (TOML) for ``pm2dof plan``; :mod:`.report` what it prints.
 
 Imports :mod:`pm2dof.core`, :mod:`pm2dof.control` and NumPy; CasADi only inside
@@ -19,7 +19,8 @@ from .check import check_path
 from .kinematic import plan_kinematic
 from .paths import TaskPath
 from .plan import PathProfile, Plan
+from .smooth import plan_smooth
 from .topp import plan_time_optimal
 
-__all__ = ["TaskPath", "check_path", "plan_kinematic", "plan_time_optimal", "Plan",
-           "PathProfile"]
+__all__ = ["TaskPath", "check_path", "plan_kinematic", "plan_time_optimal", "plan_smooth",
+           "Plan", "PathProfile"]
