@@ -65,12 +65,13 @@ def check_path(model, path, step=STEP):
     K, nq = len(s), 2 * model.n_legs
     q = np.empty((K, nq))
     model.function("ik").map(K, p, q)
-    bad = ~np.isfinite(q).all(axis=1)     # ik's NaN rows: out of reach (or the other mode)
-    if bad.any():
-        k = int(np.argmax(bad))
-        raise_at(model, s[k], p[k])
-    sing = np.empty((K, 2))
-    model.function("singularity_measures").map(K, q, sing)
-    k = first_bad(model, sing)
+    sing = np.full((K, 2), np.nan)      # ik's NaN rows: out of reach (or the other mode)
+    ok = np.isfinite(q).all(axis=1)
+    if ok.any():
+        sing_ok = np.empty((int(ok.sum()), 2))
+        model.function("singularity_measures").map(len(sing_ok), np.ascontiguousarray(q[ok]),
+                                                   sing_ok)
+        sing[ok] = sing_ok
+    k = first_bad(model, sing)          # the first sample out of reach or too close
     if k is not None:
         raise_at(model, s[k], p[k], sing[k])

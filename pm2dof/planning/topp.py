@@ -20,6 +20,7 @@ import time
 import numpy as np
 
 from ..core.errors import PlanError
+from .check import check_path
 from .plan import Plan, PathProfile, grid_times, sample
 from .stages import grid_points, limits, params, stages
 
@@ -120,7 +121,8 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         A non-positive grid or margin, bad limits or theta, or limits too low to follow the
         path (names the arc length and the point).
     WorkspaceError, SingularityError
-        A grid point out of reach or too close to a singularity (names s and the point).
+        The path leaves the workspace or comes closer to a singularity than its threshold
+        (:func:`check_path`, every 0.5 mm; names s and the point).
 
     Examples
     --------
@@ -135,6 +137,7 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
     w = limits(model, tau_max, margin)
     s = grid_points(path, grid)
     prm, th = params(model, theta)
+    check_path(model, path)             # every 0.5 mm, between the grid points too
     stops = _stop_indices(path, s)
     stage, coef = stages(model, path, s, w, th, split, stops)
     x, sdd, x_mvc = solve_profile(model, stage, prm, s, coef)
