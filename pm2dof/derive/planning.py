@@ -68,6 +68,8 @@ __all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS", "MVC
 #: 1e-4 m/s at 100 m/s
 BISECTIONS = 32
 MVC_BISECTIONS = 20
+#: fixed-point steps of the forward pass for the arrival facets' bound at the landing speed
+ARRIVAL_ITERATIONS = 3
 _PARALLEL = 1e-12   # |N_j . a| <= _PARALLEL |a|: facet j does not bound s_dd (it bounds s_d only)
 
 
@@ -75,9 +77,13 @@ def path_layouts(n, p):
     """Per-grid-point vectors of the path functions (manifest layouts)."""
     stage = Layout([("N", 2 * n), ("h", n), ("a", 2), ("b", 2), ("S", 2 * n), ("v1", n),
                     ("rho", n), ("delta", 1), ("x_cap", 1)])
-    forward = Layout(stage.fields + [("x_next_max", 1)])
+    # an interval: the point's own stage, the next point's arrival stage (the path's left limit
+    # there, the interval's rho) and the largest s_d^2 its facets allow (its MVC)
+    pair = Layout([("stage", stage.size), ("next", stage.size), ("next_cap", 1)])
+    forward = Layout([("pair", pair.size), ("x_next_max", 1)])
     params = Layout([("v_top", 1), ("theta", p)])
-    return {"path_stage": stage, "path_forward_input": forward, "path_params": params}
+    return {"path_stage": stage, "path_pair": pair, "path_forward_input": forward,
+            "path_params": params}
 
 
 def force_polygon(S, w):
@@ -240,26 +246,43 @@ def path_functions(d, prefix):
     out.append(ca.Function(f"{prefix}_path_mvc", [stage_v, prm],
                            [ca.if_else(ok0, y_mvc * y_mvc, -1)], ["stage", "params"], ["x_mvc"]))
 
-    x = ca.SX.sym("x_next_max")                 # controllable bound at s_k+1
-    delta = st.st["delta"]
+    # one interval [s_k, s_k+1]: the own facets at s_k and the arrival facets at s_k+1
+    pair_v = ca.SX.sym("pair", lays["path_pair"].size)
+    PR = lays["path_pair"].split(pair_v)
+    own = _Stage(n, lays["path_stage"].split(PR["stage"]), friction)
+    nxt = _Stage(n, lays["path_stage"].split(PR["next"]), friction)
+    delta = own.st["delta"]
 
-    def reaches(sd):
-        ok, L = st.feasible(sd)
-        return ca.logic_and(ok, sd * sd + 2 * delta * L <= x)
-    y_b, ok0 = st.largest(v_top, reaches, BISECTIONS)
-    x_b = ca.if_else(ca.logic_and(ok0, x >= 0), ca.fmin(y_b * y_b, st.st["x_cap"]), -1)
-    out.append(ca.Function(f"{prefix}_path_backward", [x, stage_v, prm], [x_b, x_b],
-                           ["x_next_max", "stage", "params"], ["x_max", "y"]))
+    x = ca.SX.sym("x_next_max")                 # controllable bound at s_k+1
+    xl = ca.fmin(x, PR["next_cap"])             # ... and where the arrival facets allow
+    L_next = nxt.bounds(ca.sqrt(ca.fmax(xl, 0)))[0]
+
+    def reaches(sd):       # a feasible s_dd lands at or below xl, feasible there too
+        ok, L = own.feasible(sd)
+        return ca.logic_and(ok, sd * sd + 2 * delta * ca.fmax(L, L_next) <= xl)
+    y_b, ok0 = own.largest(v_top, reaches, BISECTIONS)
+    x_b = ca.if_else(ca.logic_and(ok0, xl >= 0), ca.fmin(y_b * y_b, own.st["x_cap"]), -1)
+    out.append(ca.Function(f"{prefix}_path_backward", [x, pair_v, prm], [x_b, x_b],
+                           ["x_next_max", "pair", "params"], ["x_max", "y"]))
 
     fin = ca.SX.sym("input", lays["path_forward_input"].size)
     F = lays["path_forward_input"].split(fin)
-    sf = _Stage(n, {k: F[k] for k, _ in lays["path_stage"].fields}, friction)
+    PF = lays["path_pair"].split(F["pair"])
+    fown = _Stage(n, lays["path_stage"].split(PF["stage"]), friction)
+    fnxt = _Stage(n, lays["path_stage"].split(PF["next"]), friction)
     xk = ca.SX.sym("x")
-    L, U, Z = sf.bounds(ca.sqrt(ca.fmax(xk, 0)))
-    dlt = F["delta"]
-    sdd = ca.fmin(U, (F["x_next_max"] - xk) / (2 * dlt))
+    L, U, Z = fown.bounds(ca.sqrt(ca.fmax(xk, 0)))
+    dlt = fown.st["delta"]
+    sdd = ca.fmin(U, (ca.fmin(F["x_next_max"], PF["next_cap"]) - xk) / (2 * dlt))
+    for _ in range(ARRIVAL_ITERATIONS):         # the arrival facets' U at the landing speed
+        sdd = ca.fmin(sdd, fnxt.bounds(ca.sqrt(ca.fmax(xk + 2 * dlt * sdd, 0)))[1])
+    sdd = ca.fmax(sdd, L)      # where both ends cannot hold (riding a coarse grid's MVC): own
+    Ln, Un, Zn = fnxt.bounds(ca.sqrt(ca.fmax(xk + 2 * dlt * sdd, 0)))
+    scale = ca.fmax(1, ca.fabs(sdd))
+    arrival_ok = ca.logic_and(ca.logic_and(sdd >= Ln - 1e-9 * scale, sdd <= Un + 1e-9 * scale),
+                              Zn >= -1e-9 * ca.mmax(fnxt.h))
     out.append(ca.Function(f"{prefix}_path_forward", [xk, fin, prm],
-                           [xk + 2 * dlt * sdd, ca.vertcat(xk, sdd, L, U, Z)],
+                           [xk + 2 * dlt * sdd, ca.vertcat(xk, sdd, L, U, Z, arrival_ok)],
                            ["x", "input", "params"], ["x_next", "y"]))
 
     sd, sdd = ca.SX.sym("sd"), ca.SX.sym("sdd")

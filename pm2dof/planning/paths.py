@@ -121,14 +121,16 @@ class TaskPath:
         return (f"<TaskPath {'+'.join(self.kinds)}: {self.length:.6g} m, "
                 f"{len(self._stops) - 2} interior stop(s)>")
 
-    def evaluate(self, s):
+    def evaluate(self, s, side="right"):
         """p(s), p'(s), p''(s) at arc lengths ``s``.
 
         Parameters
         ----------
         s : array_like (k,) or float
             Arc lengths, m, within [0, ``length``] (rounding beyond the ends is clipped).
-            At a junction the following piece is used.
+        side : {"right", "left"}
+            At a junction of two pieces, the following piece (the derivatives leaving the
+            junction) or the preceding one (arriving at it).
 
         Returns
         -------
@@ -143,8 +145,10 @@ class TaskPath:
         bad = (s < -tol) | (s > L + tol)
         if bad.any():
             raise PlanError(f"arc length s = {s[bad][0]!r} m is outside the path [0, {L!r}] m")
+        if side not in ("right", "left"):
+            raise PlanError(f"side must be 'right' or 'left', got {side!r}")
         s = np.clip(s, 0.0, L)
-        idx = np.clip(np.searchsorted(self._ends, s, side="right") - 1, 0, len(self._pieces) - 1)
+        idx = np.clip(np.searchsorted(self._ends, s, side=side) - 1, 0, len(self._pieces) - 1)
         out = [np.empty((len(s), 2)) for _ in range(3)]
         for i, pc in enumerate(self._pieces):
             sel = idx == i

@@ -4,14 +4,17 @@ limit on how fast each actuator torque may change, |d tau_i / dt| <= tau_rate,i.
 torque profile (the strict optimum) jumps between its limits and excites the structure; this
 one ramps. Solved by IPOPT (shipped in the casadi wheel), warm-started from the strict optimum.
 
-Variables: the path speeds y_k at the grid points and, for the min-max split, the torques tau_k
-(n per point; min-norm: tau_k = S (S^T S)^-1 u_k). With u_k = (y_k+1^2 - y_k^2) / (2 delta_k):
+Variables: the path speeds y_k at the grid points and, for the min-max split, the torques at
+both ends of every interval (n each; min-norm: tau = S (S^T S)^-1 u). With
+u_k = (y_k+1^2 - y_k^2) / (2 delta_k), on the same two-ended discretisation as
+:func:`plan_time_optimal`:
 
     min sum_k 2 delta_k / (y_k + y_k+1)
-    S_k^T tau_k = a_k u_k + b_k y_k^2 + g_k(y_k),   |tau_k,i| <= tau_max,i,
-    |tau_k+1,i - tau_k,i| (y_k + y_k+1) <= 2 delta_k tau_rate,i,   y = 0 at the stops,
+    S^T tau = a u_k + b y^2 + g(y) leaving s_k (y_k) and arriving at s_k+1 (y_k+1),
+    |tau_i| <= tau_max,i at both,   |tau_k+1,i - tau_k,i| (y_k + y_k+1) <= 2 delta_k tau_rate,i
+    (tau_k the torque leaving s_k, the last one arriving),   y = 0 at the stops,
 
-g_k(y) = S_k^T f_a(S_k p'_k y) the friction force. For a friction law affine in the speed (eq. 2)
+g(y) = S^T f_a(S p' y) the friction force. For a friction law affine in the speed (eq. 2)
 g_k is evaluated exactly from the generated ``path_torques``; otherwise the same C function
 enters through ``casadi.external`` with finite-difference derivatives.
 """
@@ -82,36 +85,50 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     stage, coef = stages(model, path, s, w, th, split, stops)
     K = len(s)
     delta = np.diff(s)
-    a, b, S = coef["a"], coef["b"], coef["S"]
-    g0, g1, gh = _friction(model, stage, prm, w, [np.zeros(K), np.ones(K), np.full(K, 0.5)])
-    g0, g1, gh = g0 - 0.0, g1 - b, gh - 0.25 * b
-    scale = max(1.0, float(np.abs(g1 - g0).max()))
-    affine = np.abs(gh - 0.5 * (g0 + g1)).max() <= 1e-9 * scale
+    lay = model.layout("path_stage")
+    ends = (stage[:-1], coef["arrive"][1:])          # the facets leaving s_k, arriving s_k+1
+    affine = True
+    for rows in ends:
+        g0, g1, gh = _friction(model, rows, prm, w, [np.zeros(K - 1), np.ones(K - 1),
+                                                     np.full(K - 1, 0.5)])
+        b = lay.unpack(rows)["b"]
+        g1, gh = g1 - b, gh - 0.25 * b
+        scale = max(1.0, float(np.abs(g1 - g0).max()))
+        affine &= bool(np.abs(gh - 0.5 * (g0 + g1)).max() <= 1e-9 * scale)
 
     opti = ca.Opti()
     y = opti.variable(K)
     x = y * y
     u = (x[1:] - x[:-1]) / (2 * delta)
-    u_pt = ca.vertcat(u, u[-1])
-    if affine:
-        fr = [ca.DM(g0[:, i]) + ca.DM(g1[:, i] - g0[:, i]) * y for i in range(2)]
-    else:
-        ext = ca.external(f"{model.name}_path_torques", model.library,
-                          {"enable_fd": True, "fd_method": "central"}).map(K)
-        U = ext(ca.DM(stage.T), y.T, ca.DM.zeros(1, K), ca.DM(prm), ca.DM(w))[0]
-        fr = [U[i, :].T - ca.DM(b[:, i]) * x for i in range(2)]
-    force = [ca.DM(a[:, i]) * u_pt + ca.DM(b[:, i]) * x + fr[i] for i in range(2)]
+    taus = []
+    for rows, yk in zip(ends, (y[:-1], y[1:])):
+        R = lay.unpack(rows)
+        a, b, S = R["a"], R["b"], R["S"].reshape(K - 1, n, 2)
+        if affine:
+            g0, g1 = _friction(model, rows, prm, w, [np.zeros(K - 1), np.ones(K - 1)])
+            fr = [ca.DM(g0[:, i]) + ca.DM(g1[:, i] - b[:, i] - g0[:, i]) * yk for i in range(2)]
+        else:
+            ext = ca.external(f"{model.name}_path_torques", model.library,
+                              {"enable_fd": True, "fd_method": "central"}).map(K - 1)
+            U = ext(ca.DM(rows.T), yk.T, ca.DM.zeros(1, K - 1), ca.DM(prm), ca.DM(w))[0]
+            fr = [U[i, :].T - ca.DM(b[:, i]) * yk * yk for i in range(2)]
+        force = [ca.DM(a[:, i]) * u + ca.DM(b[:, i]) * yk * yk + fr[i] for i in range(2)]
+        if split == "min_max":
+            tau = opti.variable(K - 1, n)
+            for i in range(2):
+                opti.subject_to(sum(ca.DM(S[:, j, i]) * tau[:, j] for j in range(n)) == force[i])
+        else:
+            P = np.einsum("kij,kjl->kil", S, np.linalg.inv(np.einsum("kji,kjl->kil", S, S)))
+            tau = ca.horzcat(*[ca.DM(P[:, j, 0]) * force[0] + ca.DM(P[:, j, 1]) * force[1]
+                               for j in range(n)])
+        for j in range(n):
+            opti.subject_to(opti.bounded(-w[j], tau[:, j], w[j]))
+        taus.append(tau)
     if split == "min_max":
-        tau = opti.variable(K, n)
-        for i in range(2):
-            opti.subject_to(sum(ca.DM(S[:, j, i]) * tau[:, j] for j in range(n)) == force[i])
-        opti.set_initial(tau, strict.tau)
-    else:
-        P = np.einsum("kij,kjl->kil", S, np.linalg.inv(np.einsum("kji,kjl->kil", S, S)))
-        tau = ca.horzcat(*[ca.DM(P[:, j, 0]) * force[0] + ca.DM(P[:, j, 1]) * force[1]
-                           for j in range(n)])
+        opti.set_initial(taus[0], strict.tau[:-1])
+        opti.set_initial(taus[1], strict.tau[1:])
+    tau = ca.vertcat(taus[0], taus[1][-1, :])        # at the grid points (the end: arriving)
     for j in range(n):
-        opti.subject_to(opti.bounded(-w[j], tau[:, j], w[j]))
         d = (tau[1:, j] - tau[:-1, j]) * (y[1:] + y[:-1])
         opti.subject_to(opti.bounded(-2 * delta * rate[j], d, 2 * delta * rate[j]))
     opti.subject_to(y >= 0)

@@ -7,8 +7,9 @@ curvature at both ends), then p(s) = c(u(s)) with s the arc length:
     p' = c' / |c'|,   p'' = (c'' - (c'' . p') p') / |c'|^2,
 
 so |p'| = 1 exactly and p'' is the curvature vector. s(u) is integrated with 8-point
-Gauss-Legendre on 8 sub-intervals of every span (|c'| is smooth: about 1e-15 relative), and
-u(s) is found by Newton's method from the tabulated nodes (4 steps, converged to rounding).
+Gauss-Legendre on 16 sub-intervals of every span (|c'| is smooth: about 1e-15 relative). u(s)
+starts from the cubic Hermite interpolant of the table (du/ds = 1 / |c'| at its nodes) and is
+polished by two Newton steps (quadratic convergence from ~1e-9: to rounding).
 """
 import numpy as np
 
@@ -17,8 +18,8 @@ from ..core.errors import PlanError
 __all__ = ["SplinePiece"]
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
-_SUB = 8          # sub-intervals per span for the arc-length table
-_NEWTON = 4
+_SUB = 16         # sub-intervals per span for the arc-length table
+_NEWTON = 2
 
 
 def _natural_second_derivatives(u, P):
@@ -50,6 +51,7 @@ class SplinePiece:
         a, b = nodes[:-1], nodes[1:]
         seg = np.cumsum(self._integral(a, b))
         self.nodes, self.s_nodes = nodes, np.concatenate([[0.0], seg])
+        self.du_ds = 1.0 / np.hypot(*self._derivs(nodes)[1].T)
         self.length = float(self.s_nodes[-1])
         speed = np.hypot(*self._derivs(np.linspace(0, u[-1], 64 * len(u)))[1].T)
         if not speed.min() > 1e-6 * max(1.0, speed.max()):
@@ -81,7 +83,11 @@ class SplinePiece:
         k = np.clip(np.searchsorted(self.s_nodes, s, side="right") - 1, 0, len(self.nodes) - 2)
         s0, s1 = self.s_nodes[k], self.s_nodes[k + 1]
         u0, u1 = self.nodes[k], self.nodes[k + 1]
-        u = u0 + (s - s0) / (s1 - s0) * (u1 - u0)
+        h = s1 - s0
+        t = (s - s0) / h                        # cubic Hermite of u(s) on the table interval
+        t2, t3 = t * t, t * t * t
+        u = ((2 * t3 - 3 * t2 + 1) * u0 + (t3 - 2 * t2 + t) * h * self.du_ds[k]
+             + (-2 * t3 + 3 * t2) * u1 + (t3 - t2) * h * self.du_ds[k + 1])
         for _ in range(_NEWTON):
             speed = np.hypot(*self._derivs(u)[1].T)
             u = np.clip(u - (s0 + self._integral(u0, u) - s) / speed, u0, u1)

@@ -95,6 +95,25 @@ def params(model, theta):
     return model.layout("path_params").pack(v_top=V_TOP, theta=th), th
 
 
+def _coefficients(model, p, dp, ddp, theta, w, split):
+    """One ``path_coefficients`` map over the points: dict of its outputs (the other split's
+    polygon not computed)."""
+    K, n = len(p), model.n_legs
+    sizes = (("a", 2), ("b", 2), ("S", 2 * n), ("v1", n), ("N_min_norm", 2 * n),
+             ("h_min_norm", n), ("N_min_max", 2 * n), ("h_min_max", n), ("sing", 2))
+    other = "min_max" if split == "min_norm" else "min_norm"
+    outs = {k: (None if k.endswith(other) else np.empty((K, m))) for k, m in sizes}
+    model.function("path_coefficients").map(K, p, dp, ddp, theta, w, *outs.values())
+    return outs
+
+
+def _fill(model, stage, outs, split):
+    st = model.layout("path_stage").unpack(stage)
+    st["N"][:], st["h"][:] = outs[f"N_{split}"], outs[f"h_{split}"]
+    for key in ("a", "b", "S", "v1"):
+        st[key][:] = outs[key]
+
+
 def stages(model, path, s, w, theta, split, stops=()):
     """Evaluate the path's dynamics at the arc lengths ``s`` (K,) in one C call.
 
@@ -110,11 +129,14 @@ def stages(model, path, s, w, theta, split, stops=()):
     Returns
     -------
     stage : ndarray (K, size of ``path_stage``)
-        The packed per-point vectors (see the manifest layout ``path_stage``).
+        The packed per-point vectors (see the manifest layout ``path_stage``): the facets of
+        the interval that starts at each point.
     coef : dict
         ``a``, ``b`` (K, 2) N per m/s^2 and per (m/s)^2, ``S`` (K, n, 2), ``v1`` (K, n)
         rad/m, ``N`` (K, n, 2) and ``h`` (K, n) N: the split's force polygon |N_j . u| <= h_j,
-        ``sing`` (K, 2), ``p``, ``dp``, ``ddp``.
+        ``sing`` (K, 2), ``p``, ``dp``, ``ddp``; and ``arrive`` (K, size of ``path_stage``):
+        the facets at each point for the interval that ends there (the path's left limit at a
+        breakpoint, that interval's rho; row 0 unused).
 
     Raises
     ------
@@ -125,14 +147,7 @@ def stages(model, path, s, w, theta, split, stops=()):
         raise PlanError(f"split must be one of {list(SPLITS)}, got {split!r}")
     p, dp, ddp = (np.ascontiguousarray(x) for x in path.evaluate(s))
     K, n = len(s), model.n_legs
-    outs = {k: np.empty((K, m)) for k, m in (("a", 2), ("b", 2), ("S", 2 * n), ("v1", n),
-                                                ("N_min_norm", 2 * n), ("h_min_norm", n),
-                                                ("N_min_max", 2 * n), ("h_min_max", n),
-                                                ("sing", 2))}
-    other = "min_max" if split == "min_norm" else "min_norm"
-    outs[f"N_{other}"] = outs[f"h_{other}"] = None
-    names = ("a", "b", "S", "v1", "N_min_norm", "h_min_norm", "N_min_max", "h_min_max", "sing")
-    model.function("path_coefficients").map(K, p, dp, ddp, theta, w, *[outs[k] for k in names])
+    outs = _coefficients(model, p, dp, ddp, theta, w, split)
     sing = outs["sing"]
     k = first_bad(model, sing)
     bad = ~np.isfinite(outs["a"]).all(axis=1) | ~np.isfinite(outs["b"]).all(axis=1)
@@ -141,10 +156,8 @@ def stages(model, path, s, w, theta, split, stops=()):
         raise_at(model, s[k], p[k], sing[k])
     lay = model.layout("path_stage")
     stage = np.empty((K, lay.size))
+    _fill(model, stage, outs, split)
     st = lay.unpack(stage)
-    st["N"][:], st["h"][:] = outs[f"N_{split}"], outs[f"h_{split}"]
-    for key in ("a", "b", "S", "v1"):
-        st[key][:] = outs[key]
     sign = np.where(outs["v1"] >= 0, 1.0, -1.0)       # sgn(0) = +1, the model's convention
     st["rho"][:-1] = sign[:-1] != sign[1:]             # a joint reverses on [s_k, s_k+1]
     st["rho"][-1] = 0.0
@@ -152,7 +165,16 @@ def stages(model, path, s, w, theta, split, stops=()):
     st["delta"][-1, 0] = st["delta"][-2, 0]
     st["x_cap"][:] = V_TOP ** 2
     st["x_cap"][list(stops)] = 0.0
+    arrive = stage.copy()
+    lay.unpack(arrive)["rho"][1:] = st["rho"][:-1]
+    junction = np.flatnonzero(np.isin(s, path.breakpoints[1:-1]))
+    if junction.size:                   # arriving at a breakpoint: the preceding piece
+        pl, dpl, ddpl = (np.ascontiguousarray(x) for x in path.evaluate(s[junction], "left"))
+        left = _coefficients(model, pl, dpl, ddpl, theta, w, split)
+        part = arrive[junction]
+        _fill(model, part, left, split)
+        arrive[junction] = part
     coef = {"a": outs["a"], "b": outs["b"], "S": outs["S"].reshape(K, n, 2), "v1": outs["v1"],
             "N": outs[f"N_{split}"].reshape(K, n, 2), "h": outs[f"h_{split}"],
-            "sing": sing, "p": p, "dp": dp, "ddp": ddp}
+            "sing": sing, "p": p, "dp": dp, "ddp": ddp, "arrive": arrive}
     return stage, coef

@@ -1,19 +1,22 @@
 # Time-optimal path parameterisation under the actuators' torque limits, friction included, in C.
 """``plan_time_optimal``: the fastest traversal of a path that the motors allow.
 
-The discretisation is TOPP-RA's (Pham & Pham 2018) with the constraints collocated at the grid
-points: x_k = s_d^2 at s_k, a constant s_dd = u_k on [s_k, s_k+1] (x_k+1 = x_k + 2 delta_k u_k)
-and at every grid point the torque rows N (a u_k + b x_k + S^T f_a(S p' sqrt(x_k))) <= h. The
-friction term makes the rows nonlinear in sqrt(x) (viscous) and sign-dependent (Coulomb), so
-the stage sets are not polytopes; every set the recursion needs is one-dimensional, though, and
-is computed exactly (to 2e-11 m/s) by bisection in generated C (pm2dof/derive/planning.py):
+The discretisation is TOPP-RA's (Pham & Pham 2018): x_k = s_d^2 at s_k, a constant
+s_dd = u_k on [s_k, s_k+1] (x_k+1 = x_k + 2 delta_k u_k), and the torque facets
+|N_j (a u + b x + S^T f_a(S p' sqrt(x)))| <= h_j at each end of every interval: at s_k with
+(x_k, u_k) and, arriving, at s_k+1 with (x_k+1, u_k). The friction term makes the facets
+nonlinear in sqrt(x) (viscous) and sign-dependent (Coulomb), so the stage sets are not
+polytopes; every set the recursion needs is one-dimensional, though, and is computed exactly
+(to 2.3e-8 m/s) by bisection in generated C (pm2dof/derive/planning.py):
 
 1. the maximum-velocity curve: the largest s_d at each point with a feasible s_dd (``map``);
-2. backward from rest at the end: the largest x_k from which some feasible u_k reaches
-   [0, x_k+1,max] (one ``accumulate`` call over the grid);
-3. forward from rest at the start: the greatest feasible u_k that stays below x_k+1,max
-   (one ``accumulate`` call). This greedy profile is the time-optimal one of the discrete
-   problem (each x_k is the largest reachable and controllable value).
+2. backward from rest at the end: the largest x_k from which a feasible u_k lands at
+   x_k+1,max (or below) where the arrival facets hold too (one ``accumulate`` call);
+3. forward from rest at the start: the greatest feasible u_k that stays below x_k+1,max,
+   capped by the arrival facets at the landing speed (a fixed point, 3 steps; one
+   ``accumulate`` call). Each x_k is the largest reachable and controllable value: the
+   time-optimal profile of the discrete problem, where the arrival facets bind when braking
+   (landing on the bound) and accelerating (the fixed point).
 """
 import time
 
@@ -27,6 +30,9 @@ from .stages import grid_points, limits, params, stages
 __all__ = ["plan_time_optimal", "solve_profile"]
 
 _TOL = 1e-9   # relative slack of the forward pass's own checks (rounding)
+#: where an interval's facets cannot hold at both ends (riding a steep maximum-velocity curve),
+#: it and its neighbours are split into SPLIT_INTO parts and the passes rerun, REFINE times
+REFINE, SPLIT_INTO = 2, 8
 
 
 def _at(coef, s, k):
@@ -39,10 +45,13 @@ def _stop_indices(path, s):
 
 
 def solve_profile(model, stage, prm, s, coef):
-    """The three passes over one grid. Returns (x (K,), sdd (K,), x_mvc (K,))."""
+    """The three passes over one grid. Returns (x (K,), sdd (K,), x_mvc (K,), relaxed): the
+    intervals whose arrival facets could not hold together with the departing ones (only the
+    departing ones are met there: collocation's O(delta) error)."""
     K = len(s)
     x_mvc = np.empty(K)
-    model.function("path_mvc").map(K, stage, prm, x_mvc)
+    mvc = model.function("path_mvc")
+    mvc.map(K, stage, prm, x_mvc)
     bad = np.flatnonzero(x_mvc < 0)
     if bad.size:
         k = int(bad[0])
@@ -57,25 +66,34 @@ def solve_profile(model, stage, prm, s, coef):
         k = int(interior[0])
         raise PlanError(f"zero feasible velocity at {_at(coef, s, k)}: the torque limits hold "
                         f"the path there only at rest (the maximum-velocity curve touches 0)")
+    arrive = coef["arrive"]
+    cap = x_mvc.copy()                      # the arrival facets' own maximum-velocity curve
+    other = np.flatnonzero(np.any(arrive != stage, axis=1))
+    if other.size:
+        part = np.empty(other.size)
+        mvc.map(other.size, np.ascontiguousarray(arrive[other]), prm, part)
+        cap[other] = part
+    S = stage.shape[1]
+    pair = np.empty((K - 1, 2 * S + 2))     # path_forward_input: pair, then x_next_max
+    pair[:, :S], pair[:, S:2 * S], pair[:, 2 * S] = stage[:-1], arrive[1:], cap[1:]
     # backward: controllable bounds, from rest at the end
     back = np.empty(K - 1)
     xb = np.zeros(1)
-    model.function("path_backward").accumulate(xb, np.ascontiguousarray(stage[-2::-1]), prm,
-                                               back)
+    model.function("path_backward").accumulate(
+        xb, np.ascontiguousarray(pair[::-1, :2 * S + 1]), prm, back)
     hi = np.concatenate([back[::-1], [0.0]])
     if hi[0] < 0:
         k = int(np.flatnonzero(hi < 0)[-1])
         raise PlanError(f"the robot cannot reach the end of the path at rest from "
                         f"{_at(coef, s, k)} with these torque limits: no feasible deceleration")
     # forward: greedy from rest at the start
-    fin = np.empty((K - 1, stage.shape[1] + 1))
-    fin[:, :-1] = stage[:-1]
-    fin[:, -1] = hi[1:]
-    y = np.empty((K - 1, 5))
+    pair[:, -1] = hi[1:]
+    y = np.empty((K - 1, 6))
     xf = np.zeros(1)
-    model.function("path_forward").accumulate(xf, fin, prm, y)
+    model.function("path_forward").accumulate(xf, pair, prm, y)
     x = np.concatenate([y[:, 0], xf])
     sdd, L, Z = y[:, 1], y[:, 2], y[:, 4]
+    relaxed = np.flatnonzero(y[:, 5] == 0)      # the arrival facets do not hold there
     scale = np.maximum(1.0, np.abs(sdd))
     wrong = (sdd < L - _TOL * scale) | (Z < -_TOL * stage[:-1, sl["h"]].max(axis=1)) | \
         (x[1:] < -_TOL * np.maximum(x_mvc[1:], 1e-12))
@@ -86,7 +104,7 @@ def solve_profile(model, stage, prm, s, coef):
                         f"{L[k]:.6g} m/s^2): the feasible speeds there are not an interval")
     x = np.maximum(x, 0.0)
     x[x_cap == 0] = 0.0
-    return x, np.concatenate([sdd, sdd[-1:]]), x_mvc
+    return x, np.concatenate([sdd, sdd[-1:]]), x_mvc, relaxed
 
 
 def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, margin=1.0,
@@ -108,7 +126,9 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
     margin : float
         The plan uses tau_max * margin (< 1 leaves headroom for feedback).
     grid : int
-        Grid points along the path (each piece uniform, breakpoints included).
+        Grid points along the path (graded towards the stops, breakpoints included); where an
+        interval's torque facets cannot hold at both its ends, it and its neighbours are split
+        in 8 and the plan rerun (at most twice): ``plan.info["grid"]`` is the final count.
 
     Returns
     -------
@@ -138,9 +158,16 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
     s = grid_points(path, grid)
     prm, th = params(model, theta)
     check_path(model, path)             # every 0.5 mm, between the grid points too
-    stops = _stop_indices(path, s)
-    stage, coef = stages(model, path, s, w, th, split, stops)
-    x, sdd, x_mvc = solve_profile(model, stage, prm, s, coef)
+    for attempt in range(REFINE + 1):
+        stops = _stop_indices(path, s)
+        stage, coef = stages(model, path, s, w, th, split, stops)
+        x, sdd, x_mvc, relaxed = solve_profile(model, stage, prm, s, coef)
+        if not relaxed.size or attempt == REFINE:
+            break
+        ks = np.unique(np.clip(np.concatenate([relaxed - 1, relaxed, relaxed + 1]), 0,
+                               len(s) - 2))
+        s = np.union1d(s, (s[ks, None] + np.diff(s)[ks, None]
+                           * (np.arange(1, SPLIT_INTO) / SPLIT_INTO)).ravel())
     sdot = np.sqrt(x)
     t = grid_times(s, sdot)
     K, n = len(s), model.n_legs
@@ -154,4 +181,5 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
                 sdot=sdot, sddot=sdd, t=t, max_velocity=np.sqrt(np.maximum(x_mvc, 0.0)),
                 tau=tau, tau_peak=np.abs(tau).max(axis=0), tau_max=w, margin=float(margin),
                 trajectory=traj, compute_time_s=time.perf_counter() - t0,
-                info={"grid": K, "stops": s[stops].tolist(), "theta": th.tolist()})
+                info={"grid": K, "stops": s[stops].tolist(), "theta": th.tolist(),
+                      "arrival_relaxed": s[relaxed].tolist()})

@@ -65,26 +65,31 @@ def _toppra(m, path, theta, w, split, s, scheme, coulomb=None):
 @pytest.mark.parametrize("split", ["min_norm", "min_max"])
 @pytest.mark.parametrize("path", [LINE, ARC], ids=["line", "arc"])
 def test_friction_free_agrees_with_toppra(m, path, split):
-    """Same grid, same polygon, friction-free theta: with toppra's collocation scheme (the same
-    discrete problem) the durations agree to 1e-6 and pm2dof's is not longer; against toppra's
-    default interpolation scheme the difference is discretisation error, and it shrinks when
-    the grid is refined 4x (both approach the continuous optimum)."""
+    """Same grid, same polygon, friction-free theta, against toppra's interpolation scheme
+    (constraints at both ends of every interval, its default): on the line the same discrete
+    problem, durations equal to toppra's own precision (1e-5); on the arc pm2dof's backward
+    pass lands each braking interval on the controllable bound (conservative where landing
+    lower would let the arrival end brake harder), a discretisation error that shrinks at
+    least 4x when the grid is refined 4x. toppra's collocation scheme (one end only) is looser:
+    never longer than pm2dof's."""
     th = friction_free(m)
     w = np.full(3, 10.0)
-    diff = []
+    rel = []
     for grid in (60, 240):
         plan = plan_time_optimal(m, path, w, split, th, grid=grid)
-        d_col = _toppra(m, path, th, w, split, plan.s, DiscretizationType.Collocation)
-        assert plan.duration == pytest.approx(d_col, rel=1e-6), grid
-        assert plan.duration <= d_col * (1 + 1e-9)
         d_int = _toppra(m, path, th, w, split, plan.s, DiscretizationType.Interpolation)
-        diff.append(abs(plan.duration - d_int))
-    assert diff[1] < 0.5 * diff[0] or diff[1] < 1e-6 * plan.duration, diff
+        rel.append(plan.duration / d_int - 1)
+        d_col = _toppra(m, path, th, w, split, plan.s, DiscretizationType.Collocation)
+        assert d_col <= plan.duration * (1 + 1e-5)
+    if path is LINE:
+        assert max(map(abs, rel)) < 1e-5, rel
+    else:
+        assert -1e-5 < rel[0] < 2e-3 and -1e-5 < rel[1] < max(rel[0] / 4, 1e-5), rel
 
 
 def test_coulomb_friction_agrees_with_toppra(m):
     """Coulomb friction only (fv = 0): for s_d > 0 it is the constant S^T fc sign(S p'), which
-    toppra takes as its custom term. No joint reverses on the paper's line."""
+    toppra takes as its custom term (interpolation scheme). No joint reverses on the line."""
     th = m.theta_nominal.copy()
     names = m.param_names
     th[[names.index(f"fv{i}") for i in (1, 2, 3)]] = 0.0
@@ -92,45 +97,50 @@ def test_coulomb_friction_agrees_with_toppra(m):
     w = np.full(3, 6.0)
     for split in ("min_norm", "min_max"):
         plan = plan_time_optimal(m, LINE, w, split, th, grid=150)
-        d = _toppra(m, LINE, th, w, split, plan.s, DiscretizationType.Collocation, coulomb=fc)
+        d = _toppra(m, LINE, th, w, split, plan.s, DiscretizationType.Interpolation, coulomb=fc)
         assert plan.duration == pytest.approx(d, rel=1e-6), split
 
 
 def _collocation(m, path, theta, w, split, s, start):
     """Minimum time on the grid s by direct collocation (CasADi + IPOPT), written here from the
-    model's Me, Ce, S and StF: path speeds y_k, torques tau_k at each point,
-    S^T tau_k = Me (p' u_k + p'' y_k^2) + Ce(p' y_k) p' y_k + S^T f_a, the friction affine in
-    y_k for a fixed direction (StF at y = 1 and y = 0+). Where joint i moves with another sign
-    at the next grid point its velocity passes through zero on the interval: the limits must
-    hold with its friction (Coulomb and viscous) of either sign."""
+    model's Me, Ce, S and StF: path speeds y_k, a constant u_k on each interval, and at both of
+    its ends (the far end on the path's piece arriving there) torques within the limits with
+    S^T tau = Me (p' u_k + p'' y^2) + Ce(p' y) p' y + S^T f_a, the friction affine in y for a
+    fixed direction (StF at y = 1 and y = 0+). Where joint i moves with another sign at the
+    next grid point its velocity passes through zero on the interval: the limits must hold
+    with its friction (Coulomb and viscous) of either sign, at both ends."""
     import itertools
 
     import casadi as ca
     K, n = len(s), m.n_legs
     fc = theta[[m.param_names.index(f"fc{i + 1}") for i in range(n)]]
     fv = theta[[m.param_names.index(f"fv{i + 1}") for i in range(n)]]
-    p, dp, ddp = path.evaluate(s)
-    rows, sign = [], []
-    for k in range(K):
-        q = m.ik(p[k])
-        Me, S = m.Me(q, theta), m.S(q)
-        f0 = m.StF(q, dp[k] * 1e-12, theta)
-        f1 = m.StF(q, dp[k], theta) - f0
-        rows.append((Me @ dp[k], Me @ ddp[k] + m.Ce(q, dp[k], theta) @ dp[k], f0, f1, S))
-        sign.append(S @ dp[k])
+
+    def facets(side):
+        out = []
+        for pk, dpk, ddpk in zip(*path.evaluate(s, side)):
+            q = m.ik(pk)
+            Me, S = m.Me(q, theta), m.S(q)
+            f0 = m.StF(q, dpk * 1e-12, theta)
+            f1 = m.StF(q, dpk, theta) - f0
+            out.append((Me @ dpk, Me @ ddpk + m.Ce(q, dpk, theta) @ dpk, f0, f1, S, S @ dpk))
+        return out
+    leave, arrive = facets("right"), facets("left")
     opti = ca.Opti()
     y = opti.variable(K)
     d = np.diff(s)
     u = (y[1:] ** 2 - y[:-1] ** 2) / (2 * d)
-    for k in range(K - 1):            # the last point's torque is the discretisation's to bear
-        a, b, f0, f1, S = rows[k]
-        v1, sgn = sign[k], np.where(sign[k] >= 0, 1.0, -1.0)
-        flips = np.flatnonzero(sgn != np.where(sign[k + 1] >= 0, 1.0, -1.0))
+    sgn = [np.where(r[5] >= 0, 1.0, -1.0) for r in leave]
+    for k, end in itertools.product(range(K - 1), (0, 1)):
+        a, b, f0, f1, S, v1 = leave[k] if end == 0 else arrive[k + 1]
+        flips = np.flatnonzero(sgn[k] != sgn[k + 1])
         for case in itertools.product((False, True), repeat=len(flips)):
             flip = [i for i, f in zip(flips, case) if f]
-            c0 = f0 - sum((2 * fc[i] * sgn[i] * S[i] for i in flip), np.zeros(2))
+            si = np.where(v1 >= 0, 1.0, -1.0)
+            c0 = f0 - sum((2 * fc[i] * si[i] * S[i] for i in flip), np.zeros(2))
             c1 = f1 - sum((2 * fv[i] * v1[i] * S[i] for i in flip), np.zeros(2))
-            force = a * u[k] + b * y[k] ** 2 + c0 + c1 * y[k]
+            yk = y[k + end]
+            force = a * u[k] + b * yk ** 2 + c0 + c1 * yk
             if split == "min_norm":
                 tau = S @ np.linalg.solve(S.T @ S, np.eye(2)) @ force
             else:
@@ -148,39 +158,47 @@ def _collocation(m, path, theta, w, split, s, start):
     return float(np.sum(2 * d / (yv[1:] + yv[:-1])))
 
 
-@pytest.mark.parametrize("split", ["min_norm", "min_max"])
-@pytest.mark.parametrize("points", [[[0.2, 0.3], [0.26, 0.26], [0.3, 0.2]],
-                                    [[0.2, 0.24], [0.26, 0.24], [0.28, 0.3]]],
-                         ids=["no_reversal", "joint_3_reverses"])
+@pytest.mark.parametrize("split, points", [
+    ("min_norm", [[0.2, 0.3], [0.26, 0.26], [0.3, 0.2]]),
+    ("min_max", [[0.2, 0.3], [0.26, 0.26], [0.3, 0.2]]),
+    ("min_max", [[0.2, 0.24], [0.26, 0.24], [0.28, 0.3]])],
+    ids=["no_reversal-min_norm", "no_reversal-min_max", "joint_3_reverses-min_max"])
 def test_with_friction_agrees_with_direct_collocation(m, split, points):
-    """The model's viscous and Coulomb friction (Tables 1-2): the minimum time of the same
-    discrete problem by IPOPT from a start 30 % below the plan, to 1e-6; on the second path an
-    active joint reverses, and both formulations impose both Coulomb signs there."""
+    """The model's viscous and Coulomb friction (Tables 1-2) against the same discretisation by
+    IPOPT (from a start 30 % below the plan): pm2dof's duration is never shorter, and longer
+    only by the discretisation error of its braking intervals, which shrinks at least 4x when
+    the grid is refined 4x. On the third path an active joint reverses, and both formulations
+    impose both friction signs there."""
     path = TaskPath.polyline(points, 0.02)
     w = np.full(3, 6.0)
-    plan = plan_time_optimal(m, path, w, split, grid=80)
-    assert not plan.info["stops"][1:-1]
-    d = _collocation(m, path, m.theta_nominal, w, split, plan.s, 0.7 * plan.sdot)
-    assert plan.duration == pytest.approx(d, rel=1e-6)
+    rel = []
+    for grid in (40, 160):
+        plan = plan_time_optimal(m, path, w, split, grid=grid)
+        assert not plan.info["stops"][1:-1]
+        d = _collocation(m, path, m.theta_nominal, w, split, plan.s, 0.7 * plan.sdot)
+        rel.append(plan.duration / d - 1)
+    assert -1e-6 < rel[0] < 2e-2 and -1e-6 < rel[1] < rel[0] / 4, rel
 
 
-@pytest.mark.parametrize("path", [LINE, ARC, TaskPath.polyline(
-    [[0.2, 0.22], [0.3, 0.22], [0.28, 0.32]], 0.02)], ids=["line", "arc", "polyline"])
-def test_feasible_between_the_grid_points(m, path):
+@pytest.mark.parametrize("name", ["line", "arc", "polyline", "pick_and_place", "curve"])
+def test_feasible_between_the_grid_points(m, name):
     """Inverse dynamics (Me, Ce, StF, then the split, all generated C) at 10 points per grid
-    interval: at the grid points the limits hold to rounding; between them the excess is the
-    discretisation error, under 2.5 % of tau_max at 1000 grid points and under half of that
-    at 4000."""
+    interval: at the grid points, the end included, the limits hold to rounding; between them
+    they are exceeded by less than 0.1 % of tau_max at 1000 grid points (both ends of every
+    interval are constrained), and at 4000."""
+    from pm2dof.planning.pathfile import read_path_file
+    path = {"line": LINE, "arc": ARC,
+            "polyline": TaskPath.polyline([[0.2, 0.22], [0.3, 0.22], [0.28, 0.32]], 0.02)}.get(
+        name) or read_path_file(name)["path"]
     w = np.full(3, 6.0)
     excess = []
     for grid in (1000, 4000):
         plan = plan_time_optimal(m, path, w, "min_max", grid=grid)
         s, tau, ratio = plan_torques(m, plan, factor=10)
-        on_grid = ratio[:-1][::10]                 # (s_k, x_k, u_k), k < K - 1
-        assert on_grid.max() <= 1 + 1e-9
-        assert np.isfinite(ratio).all()
+        assert ratio[::10].max() <= 1 + 1e-9 and np.isfinite(ratio).all()
+        assert (np.abs(plan.tau) <= plan.tau_max * (1 + 1e-9)).all()
         excess.append(ratio.max() - 1)
-    assert excess[0] < 0.025 and excess[1] < 0.5 * excess[0], excess
+    assert max(excess) < 1e-3, excess
 
 
 def test_splits_limits_and_margin(m):
@@ -208,7 +226,7 @@ def test_every_model_plans_its_first_move(model):
     for split in ("min_norm", "min_max"):
         plan = plan_time_optimal(model, path, split=split, grid=200)
         assert np.isfinite(plan.duration) and plan.duration > 0
-        assert (plan.tau[:-1] <= plan.tau_max * (1 + 1e-9)).all()
+        assert (np.abs(plan.tau) <= plan.tau_max * (1 + 1e-9)).all()
         assert plan.sdot[0] == plan.sdot[-1] == 0
 
 

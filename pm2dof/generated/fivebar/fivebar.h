@@ -54,8 +54,8 @@
  *   fivebar_apd_preload_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
  *   fivebar_path_coefficients(p[2], dp[2], ddp[2], theta[10], tau_max[2]) -> (a[2], b[2], S[4], v1[2], N_min_norm[4], h_min_norm[2], N_min_max[4], h_min_max[2], sing[2])
  *   fivebar_path_mvc(stage[20], params[11]) -> (x_mvc[1])
- *   fivebar_path_backward(x_next_max[1], stage[20], params[11]) -> (x_max[1], y[1])
- *   fivebar_path_forward(x[1], input[21], params[11]) -> (x_next[1], y[5])
+ *   fivebar_path_backward(x_next_max[1], pair[41], params[11]) -> (x_max[1], y[1])
+ *   fivebar_path_forward(x[1], input[42], params[11]) -> (x_next[1], y[6])
  *   fivebar_path_torques(stage[20], sd[1], sdd[1], params[11], tau_max[2]) -> (u[2], tau_min_norm[2], tau_min_max[2], min_max_ratio[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
@@ -67,7 +67,8 @@
  *   cl_output: xe[2], xed[2], tau_a[2], status[1], theta_hat[10]
  *   plant: alpha[2], beta[2], gamma[2], fv[2], fc[2], fs[2], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[4], h[2], a[2], b[2], S[4], v1[2], rho[2], delta[1], x_cap[1]
- *   path_forward_input: N[4], h[2], a[2], b[2], S[4], v1[2], rho[2], delta[1], x_cap[1], x_next_max[1]
+ *   path_pair: stage[20], next[20], next_cap[1]
+ *   path_forward_input: pair[41], x_next_max[1]
  *   path_params: v_top[1], theta[10]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
  */

@@ -54,8 +54,8 @@
  *   fourleg_apd_preload_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
  *   fourleg_path_coefficients(p[2], dp[2], ddp[2], theta[20], tau_max[4]) -> (a[2], b[2], S[8], v1[4], N_min_norm[8], h_min_norm[4], N_min_max[8], h_min_max[4], sing[2])
  *   fourleg_path_mvc(stage[34], params[21]) -> (x_mvc[1])
- *   fourleg_path_backward(x_next_max[1], stage[34], params[21]) -> (x_max[1], y[1])
- *   fourleg_path_forward(x[1], input[35], params[21]) -> (x_next[1], y[5])
+ *   fourleg_path_backward(x_next_max[1], pair[69], params[21]) -> (x_max[1], y[1])
+ *   fourleg_path_forward(x[1], input[70], params[21]) -> (x_next[1], y[6])
  *   fourleg_path_torques(stage[34], sd[1], sdd[1], params[21], tau_max[4]) -> (u[2], tau_min_norm[4], tau_min_max[4], min_max_ratio[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
@@ -67,7 +67,8 @@
  *   cl_output: xe[2], xed[2], tau_a[4], status[1], theta_hat[20]
  *   plant: alpha[4], beta[4], gamma[4], fv[4], fc[4], fs[4], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[8], h[4], a[2], b[2], S[8], v1[4], rho[4], delta[1], x_cap[1]
- *   path_forward_input: N[8], h[4], a[2], b[2], S[8], v1[4], rho[4], delta[1], x_cap[1], x_next_max[1]
+ *   path_pair: stage[34], next[34], next_cap[1]
+ *   path_forward_input: pair[69], x_next_max[1]
  *   path_params: v_top[1], theta[20]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
  */

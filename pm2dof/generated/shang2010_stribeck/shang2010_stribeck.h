@@ -54,8 +54,8 @@
  *   shang2010_stribeck_apd_preload_closed_loop(x[26], u[6], p[39]) -> (x_next[26], y[26])
  *   shang2010_stribeck_path_coefficients(p[2], dp[2], ddp[2], theta[18], tau_max[3]) -> (a[2], b[2], S[6], v1[3], N_min_norm[6], h_min_norm[3], N_min_max[6], h_min_max[3], sing[2])
  *   shang2010_stribeck_path_mvc(stage[27], params[19]) -> (x_mvc[1])
- *   shang2010_stribeck_path_backward(x_next_max[1], stage[27], params[19]) -> (x_max[1], y[1])
- *   shang2010_stribeck_path_forward(x[1], input[28], params[19]) -> (x_next[1], y[5])
+ *   shang2010_stribeck_path_backward(x_next_max[1], pair[55], params[19]) -> (x_max[1], y[1])
+ *   shang2010_stribeck_path_forward(x[1], input[56], params[19]) -> (x_next[1], y[6])
  *   shang2010_stribeck_path_torques(stage[27], sd[1], sdd[1], params[19], tau_max[3]) -> (u[2], tau_min_norm[3], tau_min_max[3], min_max_ratio[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
@@ -67,7 +67,8 @@
  *   cl_output: xe[2], xed[2], tau_a[3], status[1], theta_hat[18]
  *   plant: alpha[3], beta[3], gamma[3], fv[3], fc[3], fs[3], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[6], h[3], a[2], b[2], S[6], v1[3], rho[3], delta[1], x_cap[1]
- *   path_forward_input: N[6], h[3], a[2], b[2], S[6], v1[3], rho[3], delta[1], x_cap[1], x_next_max[1]
+ *   path_pair: stage[27], next[27], next_cap[1]
+ *   path_forward_input: pair[55], x_next_max[1]
  *   path_params: v_top[1], theta[18]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
  */
