@@ -4,8 +4,10 @@ reference time-optimal path parameterisation) on the same friction-free problem.
 
 The problem: the model's fastest move (its start/end as a line), 1,000 grid points (toppra is
 given pm2dof's grid), the min-max split's force polygon (the zonotope's facets from the
-generated ``path_coefficients``) as toppra's ``F u <= g``, and theta with every friction entry
-zero (toppra's convex formulation cannot take viscous friction). Two toppra timings:
+generated ``path_coefficients``) as toppra's ``F u <= g`` at both ends of every interval
+(toppra's default interpolation scheme, pm2dof's discretisation), and theta with every
+friction entry zero (toppra's convex formulation cannot take viscous friction). Two toppra
+timings:
 
 * ``toppra_ms``: what a user runs, ``TOPPRA(...)`` with a ``SecondOrderConstraint`` whose
   inverse dynamics are pm2dof's generated Me and Ce (one C call each per point) and
@@ -52,19 +54,22 @@ class ToppraPath:
 
 
 def _toppra_constraints(model, theta, N_of, h_of, precomputed=None):
-    """toppra's SecondOrderConstraint (Me, Ce from the generated C; F u <= g from N_of/h_of), or
-    with ``precomputed`` = (a, b, c, F, g) a constraint that only hands those over."""
+    """toppra's SecondOrderConstraint (Me, Ce from the generated C; F u <= g from N_of/h_of) in
+    its default interpolation scheme (both ends of every interval, like pm2dof's), or with
+    ``precomputed`` = (a, b, c, F, g) at the grid points a constraint that only hands over
+    their interpolation form."""
     import toppra
     from toppra.constraint import DiscretizationType, LinearConstraint
+    from toppra.constraint.linear_constraint import canlinear_colloc_to_interpolate
     if precomputed is not None:
         class Given(LinearConstraint):
             def __init__(self):
                 super().__init__()
-                self.discretization_type = DiscretizationType.Collocation
+                self.discretization_type = DiscretizationType.Interpolation
                 self.identical = False
 
             def compute_constraint_params(self, path, gridpoints):
-                return (*precomputed, None, None)
+                return canlinear_colloc_to_interpolate(*precomputed, None, None, gridpoints)
         return Given()
 
     def inv_dyn(p, v, a):
@@ -72,7 +77,7 @@ def _toppra_constraints(model, theta, N_of, h_of, precomputed=None):
         return model.Me(q, theta) @ a + model.Ce(q, v, theta) @ v
 
     return toppra.constraint.SecondOrderConstraint(
-        inv_dyn, N_of, h_of, dof=2, discretization_scheme=DiscretizationType.Collocation)
+        inv_dyn, N_of, h_of, dof=2, discretization_scheme=DiscretizationType.Interpolation)
 
 
 def _toppra_duration(sd, s):

@@ -43,10 +43,10 @@ Functions (prefix ``<name>_``), all per grid point:
   parallel to a hold);
 * ``path_torques(stage, sd, sdd, params, tau_max) -> u, tau_min_norm, tau_min_max, ratio``.
 
-The largest s_d with a non-empty interval is found by bisection on [0, v_top] with
-:data:`BISECTIONS` halvings (:data:`MVC_BISECTIONS` for the maximum-velocity curve): the stage
-sets are intervals [0, s_d*] for these robots, and the bisection keeps the feasible end, so
-the result never exceeds the true bound. For a friction
+The largest s_d with a non-empty interval is found by bisection with :data:`BISECTIONS`
+halvings (:data:`MVC_BISECTIONS` for the maximum-velocity curve): the stage sets are intervals
+[0, s_d*] for these robots, and the bisection keeps the feasible end, so the result never
+exceeds the true bound. For a friction
 law affine in |v| (Coulomb + viscous, eq. 2) each facet is a quadratic in s_d whose
 coefficients are computed once per point; other laws (Stribeck, smooth sign) are evaluated at
 every halving.
@@ -61,13 +61,17 @@ from .splits import min_max, min_norm
 from .symbols import sgn
 from .to_casadi import Converter
 
-__all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS", "MVC_BISECTIONS"]
+__all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS", "MVC_BISECTIONS",
+           "HINT_SPAN", "HINT_FLOOR"]
 
-#: halvings of the bisection for the largest controllable s_d: v_top 2^-32, 2.3e-8 m/s at
-#: 100 m/s; and for the maximum-velocity curve (a diagnostic the passes do not use): 2^-20,
-#: 1e-4 m/s at 100 m/s
-BISECTIONS = 32
+#: halvings of the bisection for the largest controllable s_d, on a bracket of +-10 % around
+#: a hint (braking onto the next point's bound; resolution 5e-8 of it) or, where that does not
+#: bracket the answer (a jump of the maximum-velocity curve), on [0, v_top] (2.4e-5 m/s at
+#: 100 m/s, on the feasible side); and for the maximum-velocity curve (a
+#: diagnostic the passes use only at breakpoints): v_top 2^-20, 1e-4 m/s at 100 m/s
+BISECTIONS = 22
 MVC_BISECTIONS = 20
+HINT_SPAN, HINT_FLOOR = 0.1, 1e-3
 #: fixed-point steps of the forward pass for the arrival facets' bound at the landing speed
 ARRIVAL_ITERATIONS = 3
 _PARALLEL = 1e-12   # |N_j . a| <= _PARALLEL |a|: facet j does not bound s_dd (it bounds s_d only)
@@ -203,10 +207,16 @@ class _Stage:
         L, U, Z = self.bounds(sd)
         return ca.logic_and(L <= U, Z >= 0), L
 
-    def largest(self, v_top, predicate, halvings):
-        """(largest sd in [0, v_top] where predicate(sd) holds, holds at 0), by bisection."""
+    def largest(self, v_top, predicate, halvings, hint=None):
+        """(largest sd in [0, v_top] where predicate(sd) holds, holds at 0), by bisection; with
+        a ``hint``, on [hint (1 - r), hint (1 + r) + c] (r = HINT_SPAN, c = HINT_FLOOR m/s)
+        when that brackets the answer, else on [0, v_top]."""
         ok0, okt = predicate(ca.SX(0)), predicate(v_top)
         lo, hi = ca.SX(0), v_top
+        if hint is not None:
+            a, b = hint * (1 - HINT_SPAN), hint * (1 + HINT_SPAN) + HINT_FLOOR
+            use = ca.logic_and(predicate(a), ca.logic_not(predicate(b)))
+            lo, hi = ca.if_else(use, a, lo), ca.if_else(use, b, hi)
         for _ in range(halvings):
             mid = 0.5 * (lo + hi)
             c = predicate(mid)
@@ -260,7 +270,9 @@ def path_functions(d, prefix):
     def reaches(sd):       # a feasible s_dd lands at or below xl, feasible there too
         ok, L = own.feasible(sd)
         return ca.logic_and(ok, sd * sd + 2 * delta * ca.fmax(L, L_next) <= xl)
-    y_b, ok0 = own.largest(v_top, reaches, BISECTIONS)
+    # the hint: braking from xl at the arrival end's deceleration (exact where that binds)
+    hint = ca.sqrt(ca.fmin(ca.fmax(xl - 2 * delta * L_next, 0), 4 * ca.fmax(xl, 0) + 1))
+    y_b, ok0 = own.largest(v_top, reaches, BISECTIONS, hint=hint)
     x_b = ca.if_else(ca.logic_and(ok0, xl >= 0), ca.fmin(y_b * y_b, own.st["x_cap"]), -1)
     out.append(ca.Function(f"{prefix}_path_backward", [x, pair_v, prm], [x_b, x_b],
                            ["x_next_max", "pair", "params"], ["x_max", "y"]))
