@@ -33,14 +33,18 @@ Functions (prefix ``<name>_``), all per grid point:
   other assembly mode);
 * ``path_mvc(stage, params) -> x_mvc``: the maximum-velocity curve squared, the largest s_d^2 at
   which [L, U] is not empty (-1: not even at rest);
-* ``path_backward(x, stage, params) -> x_next, y``: one backward step of the controllable sets
-  (TOPP-RA's recursion, exact in the friction): from x, the largest s_d^2 at s_k+1 from which
-  the end can be reached, to the largest s_d^2 at s_k with a feasible s_dd that reaches [0, x]
-  (s_d^2 rises by 2 delta s_dd), capped at ``x_cap`` (-1: none);
+* ``path_backward(x, pair, params) -> x_next, y``: one backward step of the controllable sets
+  (TOPP-RA's recursion, exact in the friction) over the interval [s_k, s_k+1], whose ``pair``
+  holds the facets leaving s_k and arriving at s_k+1 (the path's left limit there) and the
+  arrival facets' maximum-velocity curve: from x, the largest s_d^2 at s_k+1 from which the
+  end can be reached, to the largest s_d^2 at s_k with a feasible s_dd that lands at or below
+  it with the arrival facets holding there too, capped at ``x_cap`` (-1: none);
 * ``path_forward(x, input, params) -> x_next, y``: one forward step from s_d^2 = x at s_k, the
-  greatest feasible s_dd that keeps s_d^2 at s_k+1 within the controllable bound
-  (``x_next_max``); y = [x, s_dd, L, U, Z] (L, U: the feasible s_dd at x; Z >= 0: the facets
-  parallel to a hold);
+  greatest s_dd feasible leaving s_k that keeps s_d^2 at s_k+1 within the controllable bound
+  (``x_next_max``), capped by the arrival facets' U at the landing speed (a fixed point,
+  :data:`ARRIVAL_ITERATIONS` steps); y = [x, s_dd, L, U, Z, arrival_ok] (L, U: the feasible
+  s_dd leaving s_k; Z >= 0: the facets parallel to a hold; arrival_ok: 1 if the arrival
+  facets hold too, 0 where both ends cannot, where the departing ones are kept);
 * ``path_torques(stage, sd, sdd, params, tau_max) -> u, tau_min_norm, tau_min_max, ratio``.
 
 The largest s_d with a non-empty interval is found by bisection with :data:`BISECTIONS`
