@@ -114,7 +114,7 @@ def _fill(model, stage, outs, split):
         st[key][:] = outs[key]
 
 
-def stages(model, path, s, w, theta, split, stops=()):
+def stages(model, path, s, w, theta, split, stops=(), evaluated=None):
     """Evaluate the path's dynamics at the arc lengths ``s`` (K,) in one C call.
 
     Parameters
@@ -125,6 +125,8 @@ def stages(model, path, s, w, theta, split, stops=()):
     split : {"min_norm", "min_max"}
     stops : array_like of int
         Grid indices where the robot must be at rest (x_cap = 0).
+    evaluated : tuple of ndarray, optional
+        ``path.evaluate(s)`` if the caller has it (p, dp, ddp), to save evaluating again.
 
     Returns
     -------
@@ -145,7 +147,7 @@ def stages(model, path, s, w, theta, split, stops=()):
     """
     if split not in SPLITS:
         raise PlanError(f"split must be one of {list(SPLITS)}, got {split!r}")
-    p, dp, ddp = (np.ascontiguousarray(x) for x in path.evaluate(s))
+    p, dp, ddp = (np.ascontiguousarray(x) for x in (evaluated or path.evaluate(s)))
     K, n = len(s), model.n_legs
     outs = _coefficients(model, p, dp, ddp, theta, w, split)
     sing = outs["sing"]

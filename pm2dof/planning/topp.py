@@ -158,16 +158,20 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
     s = grid_points(path, grid)
     prm, th = params(model, theta)
     check_path(model, path)             # every 0.5 mm, between the grid points too
+    ev = path.evaluate(s)
     for attempt in range(REFINE + 1):
         stops = _stop_indices(path, s)
-        stage, coef = stages(model, path, s, w, th, split, stops)
+        stage, coef = stages(model, path, s, w, th, split, stops, ev)
         x, sdd, x_mvc, relaxed = solve_profile(model, stage, prm, s, coef)
         if not relaxed.size or attempt == REFINE:
             break
         ks = np.unique(np.clip(np.concatenate([relaxed - 1, relaxed, relaxed + 1]), 0,
                                len(s) - 2))
-        s = np.union1d(s, (s[ks, None] + np.diff(s)[ks, None]
-                           * (np.arange(1, SPLIT_INTO) / SPLIT_INTO)).ravel())
+        new = (s[ks, None] + np.diff(s)[ks, None]
+               * (np.arange(1, SPLIT_INTO) / SPLIT_INTO)).ravel()
+        order = np.argsort(np.concatenate([s, new]), kind="stable")
+        s = np.concatenate([s, new])[order]      # only the new points are evaluated
+        ev = tuple(np.concatenate([e, f])[order] for e, f in zip(ev, path.evaluate(new)))
     sdot = np.sqrt(x)
     t = grid_times(s, sdot)
     K, n = len(s), model.n_legs
