@@ -42,9 +42,10 @@ Functions (prefix ``<name>_``), all per grid point:
 * ``path_forward(x, input, params) -> x_next, y``: one forward step from s_d^2 = x at s_k, the
   greatest s_dd feasible leaving s_k that keeps s_d^2 at s_k+1 within the controllable bound
   (``x_next_max``), capped by the arrival facets' U at the landing speed (a fixed point,
-  :data:`ARRIVAL_ITERATIONS` steps); y = [x, s_dd, L, U, Z, arrival_ok] (L, U: the feasible
-  s_dd leaving s_k; Z >= 0: the facets parallel to a hold; arrival_ok: 1 if the arrival
-  facets hold too, 0 where both ends cannot, where the departing ones are kept);
+  :data:`ARRIVAL_ITERATIONS` steps); y (layout ``path_forward_output``) = [x, s_dd, L, U, Z,
+  arrival_ok] (L, U: the feasible s_dd leaving s_k; Z >= 0: the facets parallel to a hold;
+  arrival_ok: 1 if the arrival facets hold too, 0 where both ends cannot, where the departing
+  ones are kept);
 * ``path_torques(stage, sd, sdd, params, tau_max) -> u, tau_min_norm, tau_min_max, ratio``.
 
 The largest s_d with a non-empty interval is found by bisection with :data:`BISECTIONS`
@@ -89,9 +90,11 @@ def path_layouts(n, p):
     # there, the interval's rho) and the largest s_d^2 its facets allow (its MVC)
     pair = Layout([("stage", stage.size), ("next", stage.size), ("next_cap", 1)])
     forward = Layout([("pair", pair.size), ("x_next_max", 1)])
+    forward_out = Layout([("x", 1), ("sdd", 1), ("L", 1), ("U", 1), ("Z", 1),
+                          ("arrival_ok", 1)])
     params = Layout([("v_top", 1), ("theta", p)])
     return {"path_stage": stage, "path_pair": pair, "path_forward_input": forward,
-            "path_params": params}
+            "path_forward_output": forward_out, "path_params": params}
 
 
 def force_polygon(S, w):
@@ -297,8 +300,8 @@ def path_functions(d, prefix):
     scale = ca.fmax(1, ca.fabs(sdd))
     arrival_ok = ca.logic_and(ca.logic_and(sdd >= Ln - 1e-9 * scale, sdd <= Un + 1e-9 * scale),
                               Zn >= -1e-9 * ca.mmax(fnxt.h))
-    out.append(ca.Function(f"{prefix}_path_forward", [xk, fin, prm],
-                           [xk + 2 * dlt * sdd, ca.vertcat(xk, sdd, L, U, Z, arrival_ok)],
+    y = lays["path_forward_output"].pack(x=xk, sdd=sdd, L=L, U=U, Z=Z, arrival_ok=arrival_ok)
+    out.append(ca.Function(f"{prefix}_path_forward", [xk, fin, prm], [xk + 2 * dlt * sdd, y],
                            ["x", "input", "params"], ["x_next", "y"]))
 
     sd, sdd = ca.SX.sym("sd"), ca.SX.sym("sdd")

@@ -73,27 +73,30 @@ def solve_profile(model, stage, prm, s, coef):
         part = np.empty(other.size)
         mvc.map(other.size, np.ascontiguousarray(arrive[other]), prm, part)
         cap[other] = part
-    S = stage.shape[1]
-    pair = np.empty((K - 1, 2 * S + 2))     # path_forward_input: pair, then x_next_max
-    pair[:, :S], pair[:, S:2 * S], pair[:, 2 * S] = stage[:-1], arrive[1:], cap[1:]
+    fin = model.layout("path_forward_input")
+    inp = np.empty((K - 1, fin.size))             # per interval: pair, then x_next_max
+    pair = model.layout("path_pair").unpack(inp[:, fin.slices["pair"]])
+    pair["stage"][:], pair["next"][:], pair["next_cap"][:, 0] = stage[:-1], arrive[1:], cap[1:]
     # backward: controllable bounds, from rest at the end
     back = np.empty(K - 1)
     xb = np.zeros(1)
     model.function("path_backward").accumulate(
-        xb, np.ascontiguousarray(pair[::-1, :2 * S + 1]), prm, back)
+        xb, np.ascontiguousarray(inp[::-1, fin.slices["pair"]]), prm, back)
     hi = np.concatenate([back[::-1], [0.0]])
     if hi[0] < 0:
         k = int(np.flatnonzero(hi < 0)[-1])
         raise PlanError(f"the robot cannot reach the end of the path at rest from "
                         f"{_at(coef, s, k)} with these torque limits: no feasible deceleration")
     # forward: greedy from rest at the start
-    pair[:, -1] = hi[1:]
-    y = np.empty((K - 1, 6))
+    inp[:, fin.slices["x_next_max"]] = hi[1:, None]
+    out = model.layout("path_forward_output")
+    y = np.empty((K - 1, out.size))
     xf = np.zeros(1)
-    model.function("path_forward").accumulate(xf, pair, prm, y)
-    x = np.concatenate([y[:, 0], xf])
-    sdd, L, Z = y[:, 1], y[:, 2], y[:, 4]
-    relaxed = np.flatnonzero(y[:, 5] == 0)      # the arrival facets do not hold there
+    model.function("path_forward").accumulate(xf, inp, prm, y)
+    Y = {k: v[:, 0] for k, v in out.unpack(y).items()}
+    x = np.concatenate([Y["x"], xf])
+    sdd, L, Z = Y["sdd"], Y["L"], Y["Z"]
+    relaxed = np.flatnonzero(Y["arrival_ok"] == 0)  # the arrival facets do not hold there
     scale = np.maximum(1.0, np.abs(sdd))
     wrong = (sdd < L - _TOL * scale) | (Z < -_TOL * stage[:-1, sl["h"]].max(axis=1)) | \
         (x[1:] < -_TOL * np.maximum(x_mvc[1:], 1e-12))

@@ -69,6 +69,7 @@
  *   path_stage: N[8], h[4], a[2], b[2], S[8], v1[4], rho[4], delta[1], x_cap[1]
  *   path_pair: stage[34], next[34], next_cap[1]
  *   path_forward_input: pair[69], x_next_max[1]
+ *   path_forward_output: x[1], sdd[1], L[1], U[1], Z[1], arrival_ok[1]
  *   path_params: v_top[1], theta[20]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
  */

@@ -69,6 +69,7 @@
  *   path_stage: N[6], h[3], a[2], b[2], S[6], v1[3], rho[3], delta[1], x_cap[1]
  *   path_pair: stage[27], next[27], next_cap[1]
  *   path_forward_input: pair[55], x_next_max[1]
+ *   path_forward_output: x[1], sdd[1], L[1], U[1], Z[1], arrival_ok[1]
  *   path_params: v_top[1], theta[15]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
  */
