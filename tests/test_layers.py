@@ -27,11 +27,12 @@ ALLOWED = {
     "reference": {"core", "reference"},                 # beside: NumPy formulations
     "analysis": _RUNTIME | {"analysis"},                # 3: experiment, reports, results
     "identification": _RUNTIME | {"analysis", "identification"},   # 3: logs, excitation, fit
-    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive"},   # 3: benchmark
+    "planning": _RUNTIME | {"analysis", "planning"},    # 3: motion planning (issue 20)
+    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive", "planning"},  # 3: benchmark
     "studies": _RUNTIME | {"analysis", "identification", "studies"},   # 3: many rollouts, Dask
-    "figures": _RUNTIME | {"analysis", "studies", "figures"},   # 4: matplotlib
+    "figures": _RUNTIME | {"analysis", "studies", "figures", "planning"},   # 4: matplotlib
     "cli": _RUNTIME | {"analysis", "identification", "bench", "studies", "figures", "cli",
-                       "derive"},                                               # 4
+                       "derive", "planning"},                                   # 4
     "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
     "__main__": {"cli"},
     "_moved": set(),
@@ -44,8 +45,9 @@ THIRD_PARTY = {
     "analysis": {"numpy", "tqdm"},
     "identification": {"numpy", "scipy", "casadi", "pyarrow"},   # the ident extra; lazily
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
-    "bench": {"numpy", "casadi", "sympy"},              # baselines; each optional at run time
+    "bench": {"numpy", "casadi", "sympy", "toppra"},    # baselines; each optional at run time
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
+    "planning": {"numpy", "casadi", "tqdm"},            # CasADi only in plan_smooth (lazily)
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},
     "cli": set(),
 }

@@ -41,6 +41,8 @@ TARGETS = (
      "NAController.step vs casadi.Function call"),
     ("agreement_c_vs_numpy", "<=", 1e-10, "rel", "C step vs NumPy reference (max rel. diff.)"),
     ("na_min_max_over_min_norm", "<=", 1.3, "x", "NA step, min_max split / min_norm split"),
+    ("plan_time_optimal_ms", "<=", 5.0, "ms", "plan_time_optimal, 1000 grid points"),
+    ("speedup_vs_toppra", ">=", 10.0, "x", "plan_time_optimal vs toppra, friction-free"),
 )
 #: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 BENCH_SPLITS = ("min_norm", "min_max", "preload")
@@ -290,6 +292,12 @@ def run_bench(model=None, quick=False, progress=None):
     res["rollout_end_to_end_steps_per_s"] = n_roll * 1e9 / sim["median"]
     res["rollout_end_to_end_steps_per_s_best"] = n_roll * 1e9 / sim["min"]
     res["rollout_python_overhead_us_per_step"] = (sim["median"] - acc["median"]) / n_roll / 1e3
+
+    # --- motion planning (issue 20): plan_time_optimal beside toppra ----------------------
+    from .planning import bench_planning
+    planning = bench_planning(model, quick, say)
+    notes.update(planning.pop("notes"))
+    res.update(planning)
 
     # --- op counts --------------------------------------------------------------------
     say("op counts from the generated C source")
