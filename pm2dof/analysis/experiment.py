@@ -3,7 +3,7 @@ import numpy as np
 
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate, theta_truth
-from ..control.trajectory import model_move
+from ..control.trajectory import line_moves, model_move
 from .progress import bar
 
 __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3",
@@ -30,7 +30,7 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, **contr
     ``controller_options`` (e.g. ``velocity_filter_hz``) go to all three controllers alike;
     ``truth`` replaces the plant truth (see :func:`pm2dof.plant_truth`).
     """
-    speeds = list(model.spec.trajectories) if speeds is None else speeds
+    speeds = list(line_moves(model)) if speeds is None else speeds
     out = {}
     p = len(model.param_names)
     kw = controller_options

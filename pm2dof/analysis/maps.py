@@ -163,7 +163,7 @@ def maps_summary(model, maps, theta=None, tau_max=None):
     """Numbers of :func:`workspace_maps`: the reachable area, the min/median/max of every map
     over the poses clear of both singularity thresholds, and every quantity along each move
     of ``[trajectories]`` (its worst value on the path, 201 points)."""
-    from ..control.trajectory import model_move
+    from ..control.trajectory import line_moves, model_move
     dx, dy = maps["x"][1] - maps["x"][0], maps["y"][1] - maps["y"][0]
     clear = (maps["reachable"] & (maps["type1"] >= model.singularity_threshold)
              & (maps["type2"] >= model.parallel_singularity_threshold))
@@ -174,7 +174,7 @@ def maps_summary(model, maps, theta=None, tau_max=None):
                "over_clear_workspace": {k: _stats(np.where(clear, maps[k], np.nan))
                                         for k in FIELDS},
                "units": {k: u for k, (u, _) in FIELDS.items()}, "moves": {}}
-    for speed in model.spec.trajectories:
+    for speed in line_moves(model):
         xd = model_move(model, speed).xd
         pts = xd[np.linspace(0, len(xd) - 1, 201).astype(int)]
         vals = {k: [] for k in FIELDS}

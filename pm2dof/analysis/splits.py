@@ -19,7 +19,7 @@ import numpy as np
 
 from ..control.controllers import SPLITS, APDController, NAController
 from ..control.simulate import simulate
-from ..control.trajectory import model_move
+from ..control.trajectory import line_moves, model_move
 from .progress import bar
 
 __all__ = ["split_comparison", "format_split_comparison", "tau_max_sweep", "run_splits",
@@ -79,7 +79,7 @@ def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speed
         tau_max = np.broadcast_to(np.asarray(tau_max, dtype=float), (n,)).copy()
     preload, preload_sign = preload_settings(model, preload, preload_sign)
     out = {}
-    speeds = list(model.spec.trajectories) if speeds is None else speeds
+    speeds = list(line_moves(model)) if speeds is None else speeds
     b = bar(progress, len(speeds) * len(controllers) * len(splits), "splits", unit="rollout")
     for speed in speeds:
         traj = model_move(model, speed)

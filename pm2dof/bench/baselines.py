@@ -138,9 +138,10 @@ def lambdify_step(model, layouts):
 
 def long_trajectory(model, n_samples):
     """The high-speed move forward and back (reversed in time), tiled to ``n_samples``."""
-    from ..control.trajectory import model_move
+    from ..control.trajectory import line_moves, model_move
     from ..control.trajectory import Trajectory
-    speed = "high" if "high" in model.spec.trajectories else next(iter(model.spec.trajectories))
+    moves = line_moves(model)
+    speed = "high" if "high" in moves else moves[0]
     tr = model_move(model, speed)
     xd = np.vstack([tr.xd, tr.xd[::-1]])
     xdd = np.vstack([tr.xd_dot, -tr.xd_dot[::-1]]) + 0.0

@@ -21,6 +21,7 @@ import time
 
 import numpy as np
 
+from ..control.trajectory import line_moves
 from ..planning import TaskPath, plan_time_optimal
 from ..planning.smooth import plan_smooth
 from ..planning.stages import grid_points, limits, params, stages
@@ -91,7 +92,7 @@ def bench_planning(model, quick=False, progress=None):
     and ``speedup_vs_toppra_solve``, the durations each finds, ``plan_smooth_*``, ``notes``)."""
     say = progress or (lambda msg: None)
     repeats = 3 if quick else 7
-    moves = model.spec.trajectories
+    moves = {k: model.spec.trajectories[k] for k in line_moves(model)}
     name = max(moves, key=lambda k: moves[k]["v_max"])
     path = TaskPath.line(moves[name]["start"], moves[name]["end"])
     grid = 1000

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..control.trajectory import model_move
+from ..control.trajectory import line_moves, model_move
 from ..control.controllers import APDController, NAController
 from ..control.simulate import plant_vector, simulate
 from ..core.layout import Layout
@@ -112,7 +112,8 @@ def run_bench(model=None, quick=False, progress=None):
     lays = {k: Layout(k, v) for k, v in model.manifest["layouts"].items()}
     n = model.n_legs
     na, apd = NAController(model), APDController(model)
-    speed = "high" if "high" in model.spec.trajectories else next(iter(model.spec.trajectories))
+    moves = line_moves(model)
+    speed = "high" if "high" in moves else moves[0]
     traj = model_move(model, speed)
     k_op = len(traj.t) // 2
     say(f"operating point: the NA controller along the {speed}-speed move to sample {k_op}")

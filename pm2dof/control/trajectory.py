@@ -11,7 +11,8 @@ from ..core.errors import Pm2dofError
 from ..core.model_file import read_model_file
 from ..core.paths import DEFAULT_MODEL_NAME, SHIPPED_MODELS
 
-__all__ = ["TrajectoryError", "SCurve", "Trajectory", "line", "model_move", "PAPER_MOVES",
+__all__ = ["TrajectoryError", "SCurve", "Trajectory", "line", "model_move", "line_moves",
+           "PAPER_MOVES",
            "paper_move"]
 
 
@@ -234,6 +235,13 @@ def line(start, end, v_max, a_max, j_max, period=0.002):
     return Trajectory(t, xd, xd_dot, xd_ddot, period, p0, p1, prof)
 
 
+def line_moves(model):
+    """Names of the model file's line moves (``start``, ``end``): what :func:`model_move`
+    samples. A move that names a path file (``path = ...``) is planned by pm2dof.planning."""
+    spec = getattr(model, "spec", model)
+    return tuple(k for k, t in spec.trajectories.items() if "path" not in t)
+
+
 def _move_arguments(spec, name):
     """Keyword arguments of :func:`line` for the model file's ``[trajectories.<name>]``."""
     moves = spec.trajectories
@@ -241,6 +249,11 @@ def _move_arguments(spec, name):
         raise TrajectoryError(f"no move {name!r} in [trajectories] of {spec.path}; have "
                               f"{sorted(moves)}")
     t = moves[name]
+    if "path" in t:
+        raise TrajectoryError(
+            f"move {name!r} of {spec.path} follows the path {t['path']!r}: time it with "
+            f"`pm2dof plan --move {name}`, or pm2dof.planning.model_move_path(model, {name!r}) "
+            f"and plan_kinematic / plan_time_optimal (its trajectory simulates as any other)")
     return MappingProxyType({"start": tuple(float(v) for v in t["start"]),
                              "end": tuple(float(v) for v in t["end"]),
                              **{k: float(t[k]) for k in ("v_max", "a_max", "j_max")}})
@@ -273,7 +286,7 @@ def model_move(model, name, period=None):
 def _paper_moves():
     """The paper's moves, read from the shipped model file of the paper's robot."""
     spec = read_model_file(SHIPPED_MODELS / f"{DEFAULT_MODEL_NAME}.toml")
-    return MappingProxyType({k: _move_arguments(spec, k) for k in spec.trajectories})
+    return MappingProxyType({k: _move_arguments(spec, k) for k in line_moves(spec)})
 
 
 #: read-only {name: keyword arguments of line()}: the paper's low- and high-speed moves (Sect. 5),

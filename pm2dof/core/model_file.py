@@ -210,6 +210,10 @@ _SCHEMA = {
               "stribeck_velocity": (None, "pos"), "coulomb_smoothing_velocity": (None, "pos")},
     "trajectory": {"start": (2, "any"), "end": (2, "any"), "v_max": (None, "pos"),
                    "a_max": (None, "pos"), "j_max": (None, "pos")},
+    # a move along a path file (pm2dof.planning): the kinematic limits are optional (default:
+    # the path file's [kinematic]); `path` is read separately (a string)
+    "path_move": {"v_max": (None, "pos", None), "a_max": (None, "pos", None),
+                  "j_max": (None, "pos", None)},
 }
 
 
@@ -292,9 +296,18 @@ def _read_trajectories(pr, doc, n, param_names, legs):
         return None
     if not raw:
         pr.add("trajectories", "needs at least one [trajectories.<name>] table")
-    trajs = {name: _read_section(pr, f"trajectories.{name}", pr.table(f"trajectories.{name}", t),
-                                 _SCHEMA["trajectory"], n, param_names)
-             for name, t in raw.items()}
+    trajs = {}
+    for name, t in raw.items():
+        t = pr.table(f"trajectories.{name}", t)
+        if isinstance(t, dict) and "path" in t:   # a path file, planned by pm2dof.planning
+            rest = {k: v for k, v in t.items() if k != "path"}
+            move = _read_section(pr, f"trajectories.{name}", rest, _SCHEMA["path_move"], n,
+                                 param_names)
+            ref = pr.text(f"trajectories.{name}.path", t["path"], nonempty=True)
+            trajs[name] = None if move is None or ref is None else {**move, "path": ref}
+            continue
+        trajs[name] = _read_section(pr, f"trajectories.{name}", t, _SCHEMA["trajectory"], n,
+                                    param_names)
     for name, t in trajs.items():  # the legs must meet: every end point within every leg's reach
         for end in ("start", "end"):
             if t is None or end not in t or None in legs:

@@ -3,6 +3,7 @@ import numpy as np
 from matplotlib.ticker import MaxNLocator
 
 from ..analysis.results import save_figure
+from ..control.trajectory import line_moves
 from .style import kind_of, legend_outside, param_styles, place_legend, tex_name
 
 __all__ = ["write_figures", "experiment_figures"]
@@ -140,8 +141,8 @@ def experiment_figures(model, out, runs=40, progress=None):
     results = table3(model, progress=progress)
     rep = None
     if runs > 0:
-        moves = model.spec.trajectories
-        speed = "high" if "high" in moves else next(iter(moves))
+        moves = line_moves(model)
+        speed = "high" if "high" in moves else moves[0]
         rep = repeated_runs(model, speed, runs, progress=progress)
         rep["speed"] = speed
         rep["apd_rmse"] = results[speed]["apd"].rmse

@@ -3,7 +3,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..control.trajectory import model_move
+from ..control.trajectory import line_moves, model_move
 from ..analysis.maps import FIELDS, maps_summary, workspace_maps
 from ..analysis.results import provenance, save_figure, write_json
 from .experiment import _plt
@@ -44,7 +44,7 @@ def draw_robot_frame(ax, model, maps):
     b = model.bases
     ax.plot(b[:, 0], b[:, 1], "k^", ms=7)
     label_bases(ax, b)
-    for speed in model.spec.trajectories:
+    for speed in line_moves(model):
         xd = model_move(model, speed).xd
         ax.plot(xd[:, 0], xd[:, 1], "-", color="w", lw=3.5)
         ax.plot(xd[:, 0], xd[:, 1], "-", color="tab:red", lw=1.5)

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..control.trajectory import line_moves
 from ..core.errors import ArgumentError, SingularityError, WorkspaceError
 
 __all__ = ["BaseParameters", "Identifiability", "identifiability", "base_parameters",
@@ -28,7 +29,7 @@ def inertial_mask(names):
 
 def region_center(model):
     """The middle of the model's first move (m, (2,)): where identification excites the robot."""
-    t = next(iter(model.spec.trajectories.values()))
+    t = model.spec.trajectories[line_moves(model)[0]]
     return (np.asarray(t["start"], float) + np.asarray(t["end"], float)) / 2
 
 

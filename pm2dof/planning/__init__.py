@@ -10,17 +10,19 @@
 * :mod:`.smooth` -- :func:`plan_smooth`: torque-rate-limited near-time-optimal (CasADi/IPOPT);
 * :mod:`.plan` -- :class:`Plan`, the sampled :class:`pm2dof.Trajectory`;
 * :mod:`.torques` -- inverse dynamics along a timed path (Me, Ce, StF, then the split);
-* :mod:`.pathfile` -- path files (TOML) for ``pm2dof plan``; :mod:`.report` what it prints.
+* :mod:`.pathfile` -- path files (TOML) for ``pm2dof plan``, and :func:`model_move_path`: a model
+  file's move (a line, or ``path = ...``) as a path; :mod:`.report` what ``pm2dof plan`` prints.
 
 Imports :mod:`pm2dof.core`, :mod:`pm2dof.control` and NumPy; CasADi only inside
 :func:`plan_smooth`.
 """
 from .check import check_path
 from .kinematic import plan_kinematic
+from .pathfile import model_move_path
 from .paths import TaskPath
 from .plan import PathProfile, Plan
 from .smooth import plan_smooth
 from .topp import plan_time_optimal
 
 __all__ = ["TaskPath", "check_path", "plan_kinematic", "plan_time_optimal", "plan_smooth",
-           "Plan", "PathProfile"]
+           "Plan", "PathProfile", "model_move_path"]

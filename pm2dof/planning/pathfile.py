@@ -31,7 +31,8 @@ from pathlib import Path
 from ..core.errors import PlanError
 from .paths import TaskPath
 
-__all__ = ["SHIPPED_PATHS", "shipped_paths", "resolve_path_file", "read_path_file"]
+__all__ = ["SHIPPED_PATHS", "shipped_paths", "resolve_path_file", "read_path_file",
+           "model_move_path"]
 
 SHIPPED_PATHS = Path(__file__).resolve().parent / "shipped"
 _SEGMENTS = {"line": ("start", "end"), "arc": ("center", "radius", "angle0", "angle1"),
@@ -44,8 +45,9 @@ def shipped_paths():
     return {p.stem: p for p in sorted(SHIPPED_PATHS.glob("*.toml"))}
 
 
-def resolve_path_file(ref):
-    """The path file ``ref`` names: a shipped name or a file path."""
+def resolve_path_file(ref, relative_to=None):
+    """The path file ``ref`` names: a shipped name or a file path (relative to the folder
+    ``relative_to`` when given, e.g. the model file's folder, else the working directory)."""
     s = str(ref)
     if "/" not in s and not s.endswith(".toml"):
         shipped = shipped_paths()
@@ -53,7 +55,8 @@ def resolve_path_file(ref):
             raise PlanError(f"no shipped path named {s!r}; shipped: {sorted(shipped)} (or give "
                             f"a file: ./{s}.toml)")
         return shipped[s]
-    return Path(s).expanduser()
+    p = Path(s).expanduser()
+    return p if p.is_absolute() or relative_to is None else Path(relative_to) / p
 
 
 def _fail(path, key, reason):
@@ -66,8 +69,8 @@ def _unknown(path, where, table, allowed):
         _fail(path, f"{where}{extra[0]}", f"unknown key; allowed here: {sorted(allowed)}")
 
 
-def read_path_file(ref):
-    """Read a path file.
+def read_path_file(ref, relative_to=None):
+    """Read a path file (``relative_to``: see :func:`resolve_path_file`).
 
     Returns
     -------
@@ -75,7 +78,7 @@ def read_path_file(ref):
         ``name``, ``description``, ``path`` (TaskPath), ``kinematic`` (dict of v_max, a_max,
         j_max, or None), ``file`` (pathlib.Path).
     """
-    path = resolve_path_file(ref)
+    path = resolve_path_file(ref, relative_to)
     try:
         data = tomllib.loads(path.read_text())
     except OSError as exc:
@@ -123,3 +126,30 @@ def read_path_file(ref):
         _fail(path, "segments", str(exc))
     return {"name": str(head.get("name", path.stem)), "description": str(head.get("description", "")),
             "path": joined, "kinematic": kin, "file": path}
+
+
+def model_move_path(model, name):
+    """The model file's move ``[trajectories.<name>]`` as a path: ``{name, path (TaskPath),
+    kinematic (v_max, a_max, j_max, or None), file}``.
+
+    A line move (``start``, ``end``) is :meth:`TaskPath.line`; a path move (``path = "..."``: a
+    shipped path's name or a path file relative to the model file) is that file's path, with
+    the move's kinematic limits where it gives them, else the file's ``[kinematic]``.
+    """
+    spec = getattr(model, "spec", model)
+    moves = spec.trajectories
+    if name not in moves:
+        raise PlanError(f"no move {name!r} in [trajectories] of {spec.path}; have "
+                        f"{sorted(moves)}")
+    mv = moves[name]
+    lim = {k: float(mv[k]) for k in ("v_max", "a_max", "j_max") if k in mv}
+    if "path" not in mv:
+        return {"name": name, "path": TaskPath.line(mv["start"], mv["end"]), "kinematic": lim,
+                "file": None}
+    f = read_path_file(mv["path"], relative_to=Path(spec.path).parent)
+    kin = lim if len(lim) == 3 else ({**(f["kinematic"] or {}), **lim} or None)
+    if kin is not None and len(kin) != 3:
+        raise PlanError(f"{spec.path}: [trajectories.{name}] gives {sorted(lim)} and its path "
+                        f"file {f['file']} no [kinematic] table: give all of v_max, a_max, "
+                        f"j_max")
+    return {"name": name, "path": f["path"], "kinematic": kin, "file": f["file"]}

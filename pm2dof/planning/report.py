@@ -19,13 +19,10 @@ __all__ = ["plan_paths", "closed_loop", "csv_text", "format_report", "model_move
 
 
 def model_moves(model):
-    """The model file's moves as paths: [{name, path, kinematic}] (start/end as lines)."""
-    from .paths import TaskPath
-    out = []
-    for name, mv in model.spec.trajectories.items():
-        out.append({"name": name, "path": TaskPath.line(mv["start"], mv["end"]),
-                    "kinematic": {k: float(mv[k]) for k in ("v_max", "a_max", "j_max")}})
-    return out
+    """The model file's moves as paths: [{name, path, kinematic}] (line moves as lines, path
+    moves from their path files)."""
+    from .pathfile import model_move_path
+    return [model_move_path(model, name) for name in model.spec.trajectories]
 
 
 def _at_samples(plan):
