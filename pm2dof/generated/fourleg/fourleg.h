@@ -52,6 +52,11 @@
  *   fourleg_apd_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
  *   fourleg_apd_minmax_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
  *   fourleg_apd_preload_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
+ *   fourleg_forward_dynamics_jacobians(xe[2], xed[2], tau_a[4], theta[20]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[8], d_theta[40], sing[2])
+ *   fourleg_inverse_dynamics(xe[2], xed[2], xedd[2], theta[20]) -> (u[2], sing[2])
+ *   fourleg_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[20]) -> (u[2], d_xe[4], d_xed[4], sing[2])
+ *   fourleg_sampled_step(x[4], tau_a[4], theta[20], T[1]) -> (x_next[4], sing[2])
+ *   fourleg_sampled_step_jacobians(x[4], tau_a[4], theta[20], T[1]) -> (x_next[4], d_x[16], d_tau_a[16], sing[2])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[20]
@@ -766,6 +771,96 @@ int fourleg_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* s
 #define fourleg_apd_preload_closed_loop_SZ_RES 8
 #define fourleg_apd_preload_closed_loop_SZ_IW 0
 #define fourleg_apd_preload_closed_loop_SZ_W 1134
+int fourleg_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_forward_dynamics_jacobians_checkout(void);
+void fourleg_forward_dynamics_jacobians_release(int mem);
+void fourleg_forward_dynamics_jacobians_incref(void);
+void fourleg_forward_dynamics_jacobians_decref(void);
+casadi_int fourleg_forward_dynamics_jacobians_n_in(void);
+casadi_int fourleg_forward_dynamics_jacobians_n_out(void);
+casadi_real fourleg_forward_dynamics_jacobians_default_in(casadi_int i);
+const char* fourleg_forward_dynamics_jacobians_name_in(casadi_int i);
+const char* fourleg_forward_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* fourleg_forward_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* fourleg_forward_dynamics_jacobians_sparsity_out(casadi_int i);
+int fourleg_forward_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_forward_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_forward_dynamics_jacobians_SZ_ARG 4
+#define fourleg_forward_dynamics_jacobians_SZ_RES 6
+#define fourleg_forward_dynamics_jacobians_SZ_IW 0
+#define fourleg_forward_dynamics_jacobians_SZ_W 0
+int fourleg_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_inverse_dynamics_checkout(void);
+void fourleg_inverse_dynamics_release(int mem);
+void fourleg_inverse_dynamics_incref(void);
+void fourleg_inverse_dynamics_decref(void);
+casadi_int fourleg_inverse_dynamics_n_in(void);
+casadi_int fourleg_inverse_dynamics_n_out(void);
+casadi_real fourleg_inverse_dynamics_default_in(casadi_int i);
+const char* fourleg_inverse_dynamics_name_in(casadi_int i);
+const char* fourleg_inverse_dynamics_name_out(casadi_int i);
+const casadi_int* fourleg_inverse_dynamics_sparsity_in(casadi_int i);
+const casadi_int* fourleg_inverse_dynamics_sparsity_out(casadi_int i);
+int fourleg_inverse_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_inverse_dynamics_SZ_ARG 4
+#define fourleg_inverse_dynamics_SZ_RES 2
+#define fourleg_inverse_dynamics_SZ_IW 0
+#define fourleg_inverse_dynamics_SZ_W 0
+int fourleg_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_inverse_dynamics_jacobians_checkout(void);
+void fourleg_inverse_dynamics_jacobians_release(int mem);
+void fourleg_inverse_dynamics_jacobians_incref(void);
+void fourleg_inverse_dynamics_jacobians_decref(void);
+casadi_int fourleg_inverse_dynamics_jacobians_n_in(void);
+casadi_int fourleg_inverse_dynamics_jacobians_n_out(void);
+casadi_real fourleg_inverse_dynamics_jacobians_default_in(casadi_int i);
+const char* fourleg_inverse_dynamics_jacobians_name_in(casadi_int i);
+const char* fourleg_inverse_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* fourleg_inverse_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* fourleg_inverse_dynamics_jacobians_sparsity_out(casadi_int i);
+int fourleg_inverse_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_inverse_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_inverse_dynamics_jacobians_SZ_ARG 4
+#define fourleg_inverse_dynamics_jacobians_SZ_RES 4
+#define fourleg_inverse_dynamics_jacobians_SZ_IW 0
+#define fourleg_inverse_dynamics_jacobians_SZ_W 0
+int fourleg_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_sampled_step_checkout(void);
+void fourleg_sampled_step_release(int mem);
+void fourleg_sampled_step_incref(void);
+void fourleg_sampled_step_decref(void);
+casadi_int fourleg_sampled_step_n_in(void);
+casadi_int fourleg_sampled_step_n_out(void);
+casadi_real fourleg_sampled_step_default_in(casadi_int i);
+const char* fourleg_sampled_step_name_in(casadi_int i);
+const char* fourleg_sampled_step_name_out(casadi_int i);
+const casadi_int* fourleg_sampled_step_sparsity_in(casadi_int i);
+const casadi_int* fourleg_sampled_step_sparsity_out(casadi_int i);
+int fourleg_sampled_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_sampled_step_SZ_ARG 8
+#define fourleg_sampled_step_SZ_RES 4
+#define fourleg_sampled_step_SZ_IW 0
+#define fourleg_sampled_step_SZ_W 110
+int fourleg_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_sampled_step_jacobians_checkout(void);
+void fourleg_sampled_step_jacobians_release(int mem);
+void fourleg_sampled_step_jacobians_incref(void);
+void fourleg_sampled_step_jacobians_decref(void);
+casadi_int fourleg_sampled_step_jacobians_n_in(void);
+casadi_int fourleg_sampled_step_jacobians_n_out(void);
+casadi_real fourleg_sampled_step_jacobians_default_in(casadi_int i);
+const char* fourleg_sampled_step_jacobians_name_in(casadi_int i);
+const char* fourleg_sampled_step_jacobians_name_out(casadi_int i);
+const casadi_int* fourleg_sampled_step_jacobians_sparsity_in(casadi_int i);
+const casadi_int* fourleg_sampled_step_jacobians_sparsity_out(casadi_int i);
+int fourleg_sampled_step_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_sampled_step_jacobians_SZ_ARG 8
+#define fourleg_sampled_step_jacobians_SZ_RES 10
+#define fourleg_sampled_step_jacobians_SZ_IW 9
+#define fourleg_sampled_step_jacobians_SZ_W 869
 void fourleg_casadi_version(int* major, int* minor, int* patch);
 int fourleg_casadi_int_size(void);
 int fourleg_casadi_real_size(void);

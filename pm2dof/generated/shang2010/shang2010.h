@@ -52,6 +52,11 @@
  *   shang2010_apd_closed_loop(x[23], u[6], p[39]) -> (x_next[23], y[23])
  *   shang2010_apd_minmax_closed_loop(x[23], u[6], p[39]) -> (x_next[23], y[23])
  *   shang2010_apd_preload_closed_loop(x[23], u[6], p[39]) -> (x_next[23], y[23])
+ *   shang2010_forward_dynamics_jacobians(xe[2], xed[2], tau_a[3], theta[15]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[6], d_theta[30], sing[2])
+ *   shang2010_inverse_dynamics(xe[2], xed[2], xedd[2], theta[15]) -> (u[2], sing[2])
+ *   shang2010_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[15]) -> (u[2], d_xe[4], d_xed[4], sing[2])
+ *   shang2010_sampled_step(x[4], tau_a[3], theta[15], T[1]) -> (x_next[4], sing[2])
+ *   shang2010_sampled_step_jacobians(x[4], tau_a[3], theta[15], T[1]) -> (x_next[4], d_x[16], d_tau_a[12], sing[2])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[15]
@@ -766,6 +771,96 @@ int shang2010_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int*
 #define shang2010_apd_preload_closed_loop_SZ_RES 8
 #define shang2010_apd_preload_closed_loop_SZ_IW 0
 #define shang2010_apd_preload_closed_loop_SZ_W 307
+int shang2010_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_forward_dynamics_jacobians_checkout(void);
+void shang2010_forward_dynamics_jacobians_release(int mem);
+void shang2010_forward_dynamics_jacobians_incref(void);
+void shang2010_forward_dynamics_jacobians_decref(void);
+casadi_int shang2010_forward_dynamics_jacobians_n_in(void);
+casadi_int shang2010_forward_dynamics_jacobians_n_out(void);
+casadi_real shang2010_forward_dynamics_jacobians_default_in(casadi_int i);
+const char* shang2010_forward_dynamics_jacobians_name_in(casadi_int i);
+const char* shang2010_forward_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* shang2010_forward_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* shang2010_forward_dynamics_jacobians_sparsity_out(casadi_int i);
+int shang2010_forward_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_forward_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_forward_dynamics_jacobians_SZ_ARG 4
+#define shang2010_forward_dynamics_jacobians_SZ_RES 6
+#define shang2010_forward_dynamics_jacobians_SZ_IW 0
+#define shang2010_forward_dynamics_jacobians_SZ_W 0
+int shang2010_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_inverse_dynamics_checkout(void);
+void shang2010_inverse_dynamics_release(int mem);
+void shang2010_inverse_dynamics_incref(void);
+void shang2010_inverse_dynamics_decref(void);
+casadi_int shang2010_inverse_dynamics_n_in(void);
+casadi_int shang2010_inverse_dynamics_n_out(void);
+casadi_real shang2010_inverse_dynamics_default_in(casadi_int i);
+const char* shang2010_inverse_dynamics_name_in(casadi_int i);
+const char* shang2010_inverse_dynamics_name_out(casadi_int i);
+const casadi_int* shang2010_inverse_dynamics_sparsity_in(casadi_int i);
+const casadi_int* shang2010_inverse_dynamics_sparsity_out(casadi_int i);
+int shang2010_inverse_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_inverse_dynamics_SZ_ARG 4
+#define shang2010_inverse_dynamics_SZ_RES 2
+#define shang2010_inverse_dynamics_SZ_IW 0
+#define shang2010_inverse_dynamics_SZ_W 0
+int shang2010_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_inverse_dynamics_jacobians_checkout(void);
+void shang2010_inverse_dynamics_jacobians_release(int mem);
+void shang2010_inverse_dynamics_jacobians_incref(void);
+void shang2010_inverse_dynamics_jacobians_decref(void);
+casadi_int shang2010_inverse_dynamics_jacobians_n_in(void);
+casadi_int shang2010_inverse_dynamics_jacobians_n_out(void);
+casadi_real shang2010_inverse_dynamics_jacobians_default_in(casadi_int i);
+const char* shang2010_inverse_dynamics_jacobians_name_in(casadi_int i);
+const char* shang2010_inverse_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* shang2010_inverse_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* shang2010_inverse_dynamics_jacobians_sparsity_out(casadi_int i);
+int shang2010_inverse_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_inverse_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_inverse_dynamics_jacobians_SZ_ARG 4
+#define shang2010_inverse_dynamics_jacobians_SZ_RES 4
+#define shang2010_inverse_dynamics_jacobians_SZ_IW 0
+#define shang2010_inverse_dynamics_jacobians_SZ_W 0
+int shang2010_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_sampled_step_checkout(void);
+void shang2010_sampled_step_release(int mem);
+void shang2010_sampled_step_incref(void);
+void shang2010_sampled_step_decref(void);
+casadi_int shang2010_sampled_step_n_in(void);
+casadi_int shang2010_sampled_step_n_out(void);
+casadi_real shang2010_sampled_step_default_in(casadi_int i);
+const char* shang2010_sampled_step_name_in(casadi_int i);
+const char* shang2010_sampled_step_name_out(casadi_int i);
+const casadi_int* shang2010_sampled_step_sparsity_in(casadi_int i);
+const casadi_int* shang2010_sampled_step_sparsity_out(casadi_int i);
+int shang2010_sampled_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_sampled_step_SZ_ARG 8
+#define shang2010_sampled_step_SZ_RES 4
+#define shang2010_sampled_step_SZ_IW 0
+#define shang2010_sampled_step_SZ_W 91
+int shang2010_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_sampled_step_jacobians_checkout(void);
+void shang2010_sampled_step_jacobians_release(int mem);
+void shang2010_sampled_step_jacobians_incref(void);
+void shang2010_sampled_step_jacobians_decref(void);
+casadi_int shang2010_sampled_step_jacobians_n_in(void);
+casadi_int shang2010_sampled_step_jacobians_n_out(void);
+casadi_real shang2010_sampled_step_jacobians_default_in(casadi_int i);
+const char* shang2010_sampled_step_jacobians_name_in(casadi_int i);
+const char* shang2010_sampled_step_jacobians_name_out(casadi_int i);
+const casadi_int* shang2010_sampled_step_jacobians_sparsity_in(casadi_int i);
+const casadi_int* shang2010_sampled_step_jacobians_sparsity_out(casadi_int i);
+int shang2010_sampled_step_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_sampled_step_jacobians_SZ_ARG 8
+#define shang2010_sampled_step_jacobians_SZ_RES 10
+#define shang2010_sampled_step_jacobians_SZ_IW 8
+#define shang2010_sampled_step_jacobians_SZ_W 761
 void shang2010_casadi_version(int* major, int* minor, int* patch);
 int shang2010_casadi_int_size(void);
 int shang2010_casadi_real_size(void);
