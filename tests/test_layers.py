@@ -25,11 +25,12 @@ ALLOWED = {
     "derive": {"core", "derive"},                       # build time: SymPy, CasADi -> C
     "control": {"core", "control"},                     # 2: controllers, rollouts
     "reference": {"core", "reference"},                 # beside: NumPy formulations
-    "analysis": _RUNTIME | {"analysis"},                # 3: experiment, identification
-    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive"},   # 3: benchmark
-    "studies": _RUNTIME | {"analysis", "studies"},      # 3: many rollouts on Dask
-    "figures": _RUNTIME | {"analysis", "studies", "figures"},   # 4: matplotlib
-    "cli": _RUNTIME | {"analysis", "bench", "studies", "figures", "cli", "derive"},  # 4
+    "linear": _RUNTIME | {"linear"},                    # 3: linearisation, LQR (SciPy)
+    "analysis": _RUNTIME | {"analysis", "linear"},      # 3: experiment, identification
+    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive", "linear"},   # 3: benchmark
+    "studies": _RUNTIME | {"analysis", "studies", "linear"},    # 3: many rollouts on Dask
+    "figures": _RUNTIME | {"analysis", "studies", "figures", "linear"},   # 4: matplotlib
+    "cli": _RUNTIME | {"analysis", "bench", "studies", "figures", "cli", "derive", "linear"},
     "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
     "__main__": {"cli"},
     "_moved": set(),
@@ -40,8 +41,9 @@ THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
     "__main__": set(), "_moved": set(),
     "analysis": {"numpy", "scipy", "casadi", "pyarrow", "tqdm"},   # pyarrow: Parquet logs
+    "linear": {"numpy", "scipy", "control"},            # the [control] extra (python-control)
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
-    "bench": {"numpy", "casadi", "sympy"},              # baselines; each optional at run time
+    "bench": {"numpy", "casadi", "sympy", "pinocchio"},  # baselines; each optional at run time
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},
     "cli": set(),

@@ -36,7 +36,7 @@ __all__ = ["Model", "load_model"]
 
 # controller steps and closed loops: <law><split>_step, <law><split>_closed_loop
 _SPLIT_SUFFIXES = ("", "_minmax", "_preload")                   # min_norm, min_max, preload
-_LOOPS = tuple(f"{law}{sfx}_{kind}" for law in ("na", "na_proj", "apd")
+_LOOPS = tuple(f"{law}{sfx}_{kind}" for law in ("na", "na_proj", "apd", "ctc", "lqr")
                for sfx in _SPLIT_SUFFIXES for kind in ("step", "closed_loop"))
 _STEPPING = ("plant_xedd", "plant_step", "measure") + _LOOPS
 _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "singularity_measures", "W", "S", "Wdot",

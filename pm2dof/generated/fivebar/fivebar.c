@@ -72,7 +72,19 @@ extern "C" {
 #define casadi_f42 CASADI_PREFIX(f42)
 #define casadi_f43 CASADI_PREFIX(f43)
 #define casadi_f44 CASADI_PREFIX(f44)
+#define casadi_f45 CASADI_PREFIX(f45)
+#define casadi_f46 CASADI_PREFIX(f46)
+#define casadi_f47 CASADI_PREFIX(f47)
+#define casadi_f48 CASADI_PREFIX(f48)
+#define casadi_f49 CASADI_PREFIX(f49)
 #define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f50 CASADI_PREFIX(f50)
+#define casadi_f51 CASADI_PREFIX(f51)
+#define casadi_f52 CASADI_PREFIX(f52)
+#define casadi_f53 CASADI_PREFIX(f53)
+#define casadi_f54 CASADI_PREFIX(f54)
+#define casadi_f55 CASADI_PREFIX(f55)
+#define casadi_f56 CASADI_PREFIX(f56)
 #define casadi_f6 CASADI_PREFIX(f6)
 #define casadi_f7 CASADI_PREFIX(f7)
 #define casadi_f8 CASADI_PREFIX(f8)
@@ -99,6 +111,8 @@ extern "C" {
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s20 CASADI_PREFIX(s20)
 #define casadi_s21 CASADI_PREFIX(s21)
+#define casadi_s22 CASADI_PREFIX(s22)
+#define casadi_s23 CASADI_PREFIX(s23)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
@@ -301,37 +315,39 @@ static const casadi_int casadi_s6[3] = {1, 1, 1};
 static const casadi_int casadi_s7[3] = {14, 1, 1};
 static const casadi_int casadi_s8[3] = {25, 1, 1};
 static const casadi_int casadi_s9[3] = {15, 1, 1};
-static const casadi_int casadi_s10[3] = {18, 1, 1};
-static const casadi_int casadi_s11[3] = {6, 1, 1};
-static const casadi_int casadi_s12[3] = {40, 1, 1};
-static const casadi_int casadi_s13[3] = {17, 1, 1};
-static const casadi_int casadi_s14[3] = {30, 1, 1};
-static const casadi_int casadi_s15[21] = 
+static const casadi_int casadi_s10[3] = {11, 1, 1};
+static const casadi_int casadi_s11[3] = {18, 1, 1};
+static const casadi_int casadi_s12[3] = {6, 1, 1};
+static const casadi_int casadi_s13[3] = {40, 1, 1};
+static const casadi_int casadi_s14[3] = {17, 1, 1};
+static const casadi_int casadi_s15[3] = {30, 1, 1};
+static const casadi_int casadi_s16[3] = {26, 1, 1};
+static const casadi_int casadi_s17[21] = 
   {4, 6, 0, 1, 2, 3, 4, 8,
   12, 0, 1, 2, 3, 0, 1, 2,
   3, 0, 1, 2, 3};
-static const casadi_int casadi_s16[11] = 
+static const casadi_int casadi_s18[11] = 
   {6, 2, 0, 3, 6, 2, 4, 5,
   3, 4, 5};
-static const casadi_int casadi_s17[15] = 
+static const casadi_int casadi_s19[15] = 
   {2, 6, 0, 0, 0, 1, 2, 4,
   6, 0, 1, 0, 1, 0, 1};
-static const casadi_int casadi_s18[27] = 
+static const casadi_int casadi_s20[27] = 
   {4, 6, 0, 2, 4, 7, 10, 14,
   18, 2, 3, 2, 3, 0, 2, 3,
   1, 2, 3, 0, 1, 2, 3, 0,
   1, 2, 3};
-static const casadi_int casadi_s19[25] = 
+static const casadi_int casadi_s21[25] = 
   {6, 4, 0, 3, 6, 12, 18, 2,
   4, 5, 3, 4, 5, 0, 1, 2,
   3, 4, 5, 0, 1, 2, 3, 4,
   5};
-static const casadi_int casadi_s20[29] = 
+static const casadi_int casadi_s22[29] = 
   {4, 6, 0, 3, 6, 9, 12, 16,
   20, 0, 2, 3, 1, 2, 3, 0,
   2, 3, 1, 2, 3, 0, 1, 2,
   3, 0, 1, 2, 3};
-static const casadi_int casadi_s21[12] = 
+static const casadi_int casadi_s23[12] = 
   {1, 2, 4, 5, 7, 8, 10, 11,
   14, 15, 18, 19};
 
@@ -10389,8 +10405,3151 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_preload_step_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* fivebar_plant_xedd:(xe[2],xed[2],tau_a[2],plant[15])->(xedd[2]) */
+/* fivebar_ctc_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[15])->(tau_a[2],state_next[14],status,diag[10]) */
 static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][14] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][6] : 0;
+  a18=(a18/a19);
+  a24=(a04*a18);
+  a02=(a02/a19);
+  a19=(a03*a02);
+  a24=(a24-a19);
+  a19=casadi_fabs(a24);
+  a20=(a20/a22);
+  a25=(a08*a20);
+  a15=(a15/a22);
+  a22=(a07*a15);
+  a25=(a25-a22);
+  a22=casadi_fabs(a25);
+  a26=(a19+a22);
+  a19=(a19-a22);
+  a19=casadi_fabs(a19);
+  a26=(a26-a19);
+  a19=2.;
+  a26=(a26/a19);
+  a23=(a23<=a26);
+  a22=arg[5]? arg[5][7] : 0;
+  a27=5.0000000000000000e-01;
+  a28=1.;
+  a29=casadi_sq(a18);
+  a30=casadi_sq(a02);
+  a29=(a29-a30);
+  a30=casadi_sq(a20);
+  a31=casadi_sq(a15);
+  a30=(a30-a31);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a30=(2.*a18);
+  a30=(a30*a02);
+  a31=(2.*a20);
+  a31=(a31*a15);
+  a30=(a30+a31);
+  a30=casadi_sq(a30);
+  a29=(a29+a30);
+  a29=sqrt(a29);
+  a29=(a27*a29);
+  a29=(a28-a29);
+  a30=casadi_fabs(a29);
+  a29=(a29+a30);
+  a27=(a27*a29);
+  a27=sqrt(a27);
+  a22=(a22<=a27);
+  a23=(a23&&a22);
+  a22=(a06*a18);
+  a29=(a05*a22);
+  a30=(a00*a02);
+  a31=(a30*a21);
+  a29=(a29-a31);
+  a22=(a22/a29);
+  a30=(a30/a29);
+  a31=casadi_sq(a30);
+  a32=(a00*a15);
+  a06=(a06*a20);
+  a33=(a12*a06);
+  a34=(a32*a11);
+  a33=(a33-a34);
+  a32=(a32/a33);
+  a34=casadi_sq(a32);
+  a31=(a31+a34);
+  a34=arg[4]? arg[4][0] : 0;
+  a35=arg[5]? arg[5][2] : 0;
+  a36=arg[3]? arg[3][0] : 0;
+  a37=arg[0]? arg[0][2] : 0;
+  a38=arg[5]? arg[5][5] : 0;
+  a17=(a21+a17);
+  a17=(a17+a09);
+  a09=arg[0]? arg[0][0] : 0;
+  a39=(a17-a09);
+  a40=arg[5]? arg[5][4] : 0;
+  a39=(a39/a40);
+  a39=(a39-a37);
+  a39=(a38*a39);
+  a39=(a37+a39);
+  a36=(a36-a39);
+  a35=(a35*a36);
+  a34=(a34+a35);
+  a35=arg[5]? arg[5][0] : 0;
+  a41=arg[2]? arg[2][0] : 0;
+  a41=(a41-a17);
+  a35=(a35*a41);
+  a34=(a34+a35);
+  a35=(a22*a34);
+  a42=arg[4]? arg[4][1] : 0;
+  a43=arg[5]? arg[5][3] : 0;
+  a44=arg[3]? arg[3][1] : 0;
+  a45=arg[0]? arg[0][3] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[0]? arg[0][1] : 0;
+  a01=(a14-a13);
+  a01=(a01/a40);
+  a01=(a01-a45);
+  a38=(a38*a01);
+  a38=(a45+a38);
+  a44=(a44-a38);
+  a43=(a43*a44);
+  a42=(a42+a43);
+  a43=arg[5]? arg[5][1] : 0;
+  a01=arg[2]? arg[2][1] : 0;
+  a01=(a01-a14);
+  a43=(a43*a01);
+  a42=(a42+a43);
+  a43=(a30*a42);
+  a35=(a35-a43);
+  a43=(a22*a39);
+  a40=(a30*a38);
+  a43=(a43-a40);
+  a40=(a00*a43);
+  a16=(a40*a04);
+  a16=(a16*a43);
+  a05=(a05/a29);
+  a46=(a05*a38);
+  a21=(a21/a29);
+  a29=(a21*a39);
+  a46=(a46-a29);
+  a29=(a00*a46);
+  a47=(a29*a02);
+  a47=(a47*a46);
+  a16=(a16+a47);
+  a47=(a30*a16);
+  a40=(a40*a03);
+  a40=(a40*a43);
+  a29=(a29*a18);
+  a29=(a29*a46);
+  a40=(a40+a29);
+  a29=(a22*a40);
+  a47=(a47-a29);
+  a35=(a35+a47);
+  a47=(a22*a35);
+  a29=arg[0]? arg[0][4] : 0;
+  a47=(a47*a29);
+  a06=(a06/a33);
+  a48=(a06*a34);
+  a49=(a32*a42);
+  a48=(a48-a49);
+  a49=(a06*a39);
+  a50=(a32*a38);
+  a49=(a49-a50);
+  a50=(a00*a49);
+  a51=(a50*a08);
+  a51=(a51*a49);
+  a12=(a12/a33);
+  a52=(a12*a38);
+  a11=(a11/a33);
+  a33=(a11*a39);
+  a52=(a52-a33);
+  a00=(a00*a52);
+  a33=(a00*a15);
+  a33=(a33*a52);
+  a51=(a51+a33);
+  a33=(a32*a51);
+  a50=(a50*a07);
+  a50=(a50*a49);
+  a00=(a00*a20);
+  a00=(a00*a52);
+  a50=(a50+a00);
+  a00=(a06*a50);
+  a33=(a33-a00);
+  a48=(a48+a33);
+  a33=(a06*a48);
+  a00=arg[0]? arg[0][5] : 0;
+  a33=(a33*a00);
+  a47=(a47+a33);
+  a33=(a05*a42);
+  a53=(a21*a34);
+  a33=(a33-a53);
+  a40=(a21*a40);
+  a16=(a05*a16);
+  a40=(a40-a16);
+  a33=(a33+a40);
+  a03=(a03*a18);
+  a04=(a04*a02);
+  a03=(a03+a04);
+  a04=(a33*a03);
+  a46=casadi_sq(a46);
+  a46=(a46*a24);
+  a04=(a04+a46);
+  a46=(a22*a04);
+  a03=(a35*a03);
+  a02=casadi_sq(a43);
+  a02=(a02*a24);
+  a03=(a03-a02);
+  a02=(a21*a03);
+  a46=(a46-a02);
+  a02=arg[0]? arg[0][6] : 0;
+  a46=(a46*a02);
+  a47=(a47+a46);
+  a42=(a12*a42);
+  a34=(a11*a34);
+  a42=(a42-a34);
+  a50=(a11*a50);
+  a51=(a12*a51);
+  a50=(a50-a51);
+  a42=(a42+a50);
+  a07=(a07*a20);
+  a08=(a08*a15);
+  a07=(a07+a08);
+  a08=(a42*a07);
+  a52=casadi_sq(a52);
+  a52=(a52*a25);
+  a08=(a08+a52);
+  a52=(a06*a08);
+  a07=(a48*a07);
+  a15=casadi_sq(a49);
+  a15=(a15*a25);
+  a07=(a07-a15);
+  a15=(a11*a07);
+  a52=(a52-a15);
+  a15=arg[0]? arg[0][7] : 0;
+  a52=(a52*a15);
+  a47=(a47+a52);
+  a21=(a21*a33);
+  a52=arg[0]? arg[0][8] : 0;
+  a21=(a21*a52);
+  a47=(a47-a21);
+  a11=(a11*a42);
+  a21=arg[0]? arg[0][9] : 0;
+  a11=(a11*a21);
+  a47=(a47-a11);
+  a11=(a22*a43);
+  a25=arg[0]? arg[0][10] : 0;
+  a11=(a11*a25);
+  a47=(a47+a11);
+  a11=(a06*a49);
+  a20=arg[0]? arg[0][11] : 0;
+  a11=(a11*a20);
+  a47=(a47+a11);
+  a11=0.;
+  a50=(a11<=a43);
+  a51=(a50?a28:0);
+  a50=(!a50);
+  a34=-1.;
+  a50=(a50?a34:0);
+  a51=(a51+a50);
+  a50=(a22*a51);
+  a46=arg[0]? arg[0][12] : 0;
+  a50=(a50*a46);
+  a47=(a47+a50);
+  a50=(a11<=a49);
+  a24=(a50?a28:0);
+  a50=(!a50);
+  a50=(a50?a34:0);
+  a24=(a24+a50);
+  a50=(a06*a24);
+  a34=arg[0]? arg[0][13] : 0;
+  a50=(a50*a34);
+  a47=(a47+a50);
+  a50=(a31*a47);
+  a18=(a22*a30);
+  a40=(a06*a32);
+  a18=(a18+a40);
+  a03=(a05*a03);
+  a04=(a30*a04);
+  a03=(a03-a04);
+  a03=(a03*a02);
+  a35=(a30*a35);
+  a35=(a35*a29);
+  a48=(a32*a48);
+  a48=(a48*a00);
+  a35=(a35+a48);
+  a03=(a03-a35);
+  a07=(a12*a07);
+  a08=(a32*a08);
+  a07=(a07-a08);
+  a07=(a07*a15);
+  a03=(a03+a07);
+  a05=(a05*a33);
+  a05=(a05*a52);
+  a03=(a03+a05);
+  a12=(a12*a42);
+  a12=(a12*a21);
+  a03=(a03+a12);
+  a43=(a30*a43);
+  a43=(a43*a25);
+  a03=(a03-a43);
+  a49=(a32*a49);
+  a49=(a49*a20);
+  a03=(a03-a49);
+  a51=(a30*a51);
+  a51=(a51*a46);
+  a03=(a03-a51);
+  a24=(a32*a24);
+  a24=(a24*a34);
+  a03=(a03-a24);
+  a24=(a18*a03);
+  a50=(a50+a24);
+  a24=casadi_sq(a22);
+  a51=casadi_sq(a06);
+  a24=(a24+a51);
+  a31=(a24*a31);
+  a51=(a30*a22);
+  a49=(a32*a06);
+  a51=(a51+a49);
+  a18=(a18*a51);
+  a31=(a31-a18);
+  a50=(a50/a31);
+  a22=(a22*a50);
+  a24=(a24*a03);
+  a51=(a51*a47);
+  a24=(a24+a51);
+  a24=(a24/a31);
+  a30=(a30*a24);
+  a22=(a22-a30);
+  a06=(a06*a50);
+  a32=(a32*a24);
+  a06=(a06-a32);
+  a32=(a22+a06);
+  a32=(a32+a29);
+  a32=(a32+a00);
+  a32=(a32+a02);
+  a32=(a32+a15);
+  a32=(a32+a52);
+  a32=(a32+a21);
+  a32=(a32+a25);
+  a32=(a32+a20);
+  a32=(a32+a46);
+  a32=(a32+a34);
+  a32=(a32+a17);
+  a32=(a32+a14);
+  a32=(a32+a39);
+  a32=(a32+a38);
+  a32=casadi_fabs(a32);
+  a24=casadi_inf;
+  a32=(a32<a24);
+  a24=(a23&&a32);
+  a24=(a10&&a24);
+  a50=arg[5]? arg[5][8] : 0;
+  a30=(-a50);
+  a30=casadi_fmax(a22,a30);
+  a30=casadi_fmin(a30,a50);
+  a30=(a24?a30:0);
+  if (res[0]!=0) res[0][0]=a30;
+  a30=arg[5]? arg[5][9] : 0;
+  a31=(-a30);
+  a31=casadi_fmax(a06,a31);
+  a31=casadi_fmin(a31,a30);
+  a31=(a24?a31:0);
+  if (res[0]!=0) res[0][1]=a31;
+  a31=(a10&&a32);
+  a51=(a31?a17:0);
+  a47=(!a31);
+  a09=(a47?a09:0);
+  a51=(a51+a09);
+  if (res[1]!=0) res[1][0]=a51;
+  a51=(a31?a14:0);
+  a13=(a47?a13:0);
+  a51=(a51+a13);
+  if (res[1]!=0) res[1][1]=a51;
+  a51=(a31?a39:0);
+  a37=(a47?a37:0);
+  a51=(a51+a37);
+  if (res[1]!=0) res[1][2]=a51;
+  a31=(a31?a38:0);
+  a47=(a47?a45:0);
+  a31=(a31+a47);
+  if (res[1]!=0) res[1][3]=a31;
+  a31=(a24?a29:0);
+  a47=(!a24);
+  a29=(a47?a29:0);
+  a31=(a31+a29);
+  if (res[1]!=0) res[1][4]=a31;
+  a31=(a24?a00:0);
+  a00=(a47?a00:0);
+  a31=(a31+a00);
+  if (res[1]!=0) res[1][5]=a31;
+  a31=(a24?a02:0);
+  a02=(a47?a02:0);
+  a31=(a31+a02);
+  if (res[1]!=0) res[1][6]=a31;
+  a31=(a24?a15:0);
+  a15=(a47?a15:0);
+  a31=(a31+a15);
+  if (res[1]!=0) res[1][7]=a31;
+  a31=(a24?a52:0);
+  a52=(a47?a52:0);
+  a31=(a31+a52);
+  if (res[1]!=0) res[1][8]=a31;
+  a31=(a24?a21:0);
+  a21=(a47?a21:0);
+  a31=(a31+a21);
+  if (res[1]!=0) res[1][9]=a31;
+  a31=(a24?a25:0);
+  a25=(a47?a25:0);
+  a31=(a31+a25);
+  if (res[1]!=0) res[1][10]=a31;
+  a31=(a24?a20:0);
+  a20=(a47?a20:0);
+  a31=(a31+a20);
+  if (res[1]!=0) res[1][11]=a31;
+  a31=(a24?a46:0);
+  a46=(a47?a46:0);
+  a31=(a31+a46);
+  if (res[1]!=0) res[1][12]=a31;
+  a24=(a24?a34:0);
+  a47=(a47?a34:0);
+  a24=(a24+a47);
+  if (res[1]!=0) res[1][13]=a24;
+  a22=casadi_fabs(a22);
+  a22=(a22-a50);
+  a06=casadi_fabs(a06);
+  a06=(a06-a30);
+  a22=casadi_fmax(a22,a06);
+  a11=(a11<a22);
+  a11=(a11?a19:0);
+  a11=(a32?a11:0);
+  a32=(!a32);
+  a19=3.;
+  a32=(a32?a19:0);
+  a11=(a11+a32);
+  a11=(a23?a11:0);
+  a23=(!a23);
+  a23=(a23?a28:0);
+  a11=(a11+a23);
+  a11=(a10?a11:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a11=(a11+a10);
+  if (res[2]!=0) res[2][0]=a11;
+  if (res[3]!=0) res[3][0]=a17;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a39;
+  if (res[3]!=0) res[3][3]=a38;
+  if (res[3]!=0) res[3][4]=a41;
+  if (res[3]!=0) res[3][5]=a01;
+  if (res[3]!=0) res[3][6]=a36;
+  if (res[3]!=0) res[3][7]=a44;
+  if (res[3]!=0) res[3][8]=a26;
+  if (res[3]!=0) res[3][9]=a27;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f27(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_ctc_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[15])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][14] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][6] : 0;
+  a18=(a18/a19);
+  a24=(a04*a18);
+  a02=(a02/a19);
+  a19=(a03*a02);
+  a24=(a24-a19);
+  a19=casadi_fabs(a24);
+  a20=(a20/a22);
+  a25=(a08*a20);
+  a15=(a15/a22);
+  a22=(a07*a15);
+  a25=(a25-a22);
+  a22=casadi_fabs(a25);
+  a26=(a19+a22);
+  a19=(a19-a22);
+  a19=casadi_fabs(a19);
+  a26=(a26-a19);
+  a19=2.;
+  a26=(a26/a19);
+  a23=(a23<=a26);
+  a22=arg[5]? arg[5][7] : 0;
+  a27=5.0000000000000000e-01;
+  a28=1.;
+  a29=casadi_sq(a18);
+  a30=casadi_sq(a02);
+  a29=(a29-a30);
+  a30=casadi_sq(a20);
+  a31=casadi_sq(a15);
+  a30=(a30-a31);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a30=(2.*a18);
+  a30=(a30*a02);
+  a31=(2.*a20);
+  a31=(a31*a15);
+  a30=(a30+a31);
+  a30=casadi_sq(a30);
+  a29=(a29+a30);
+  a29=sqrt(a29);
+  a29=(a27*a29);
+  a29=(a28-a29);
+  a30=casadi_fabs(a29);
+  a29=(a29+a30);
+  a27=(a27*a29);
+  a27=sqrt(a27);
+  a22=(a22<=a27);
+  a23=(a23&&a22);
+  a22=(a06*a18);
+  a29=(a05*a22);
+  a30=(a00*a02);
+  a31=(a30*a21);
+  a29=(a29-a31);
+  a22=(a22/a29);
+  a30=(a30/a29);
+  a31=casadi_sq(a30);
+  a32=(a00*a15);
+  a06=(a06*a20);
+  a33=(a12*a06);
+  a34=(a32*a11);
+  a33=(a33-a34);
+  a32=(a32/a33);
+  a34=casadi_sq(a32);
+  a31=(a31+a34);
+  a34=arg[4]? arg[4][0] : 0;
+  a35=arg[5]? arg[5][2] : 0;
+  a36=arg[3]? arg[3][0] : 0;
+  a37=arg[0]? arg[0][2] : 0;
+  a38=arg[5]? arg[5][5] : 0;
+  a17=(a21+a17);
+  a17=(a17+a09);
+  a09=arg[0]? arg[0][0] : 0;
+  a39=(a17-a09);
+  a40=arg[5]? arg[5][4] : 0;
+  a39=(a39/a40);
+  a39=(a39-a37);
+  a39=(a38*a39);
+  a39=(a37+a39);
+  a36=(a36-a39);
+  a35=(a35*a36);
+  a34=(a34+a35);
+  a35=arg[5]? arg[5][0] : 0;
+  a41=arg[2]? arg[2][0] : 0;
+  a41=(a41-a17);
+  a35=(a35*a41);
+  a34=(a34+a35);
+  a35=(a22*a34);
+  a42=arg[4]? arg[4][1] : 0;
+  a43=arg[5]? arg[5][3] : 0;
+  a44=arg[3]? arg[3][1] : 0;
+  a45=arg[0]? arg[0][3] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[0]? arg[0][1] : 0;
+  a01=(a14-a13);
+  a01=(a01/a40);
+  a01=(a01-a45);
+  a38=(a38*a01);
+  a38=(a45+a38);
+  a44=(a44-a38);
+  a43=(a43*a44);
+  a42=(a42+a43);
+  a43=arg[5]? arg[5][1] : 0;
+  a01=arg[2]? arg[2][1] : 0;
+  a01=(a01-a14);
+  a43=(a43*a01);
+  a42=(a42+a43);
+  a43=(a30*a42);
+  a35=(a35-a43);
+  a43=(a22*a39);
+  a40=(a30*a38);
+  a43=(a43-a40);
+  a40=(a00*a43);
+  a16=(a40*a04);
+  a16=(a16*a43);
+  a05=(a05/a29);
+  a46=(a05*a38);
+  a21=(a21/a29);
+  a29=(a21*a39);
+  a46=(a46-a29);
+  a29=(a00*a46);
+  a47=(a29*a02);
+  a47=(a47*a46);
+  a16=(a16+a47);
+  a47=(a30*a16);
+  a40=(a40*a03);
+  a40=(a40*a43);
+  a29=(a29*a18);
+  a29=(a29*a46);
+  a40=(a40+a29);
+  a29=(a22*a40);
+  a47=(a47-a29);
+  a35=(a35+a47);
+  a47=(a22*a35);
+  a29=arg[0]? arg[0][4] : 0;
+  a47=(a47*a29);
+  a06=(a06/a33);
+  a48=(a06*a34);
+  a49=(a32*a42);
+  a48=(a48-a49);
+  a49=(a06*a39);
+  a50=(a32*a38);
+  a49=(a49-a50);
+  a50=(a00*a49);
+  a51=(a50*a08);
+  a51=(a51*a49);
+  a12=(a12/a33);
+  a52=(a12*a38);
+  a11=(a11/a33);
+  a33=(a11*a39);
+  a52=(a52-a33);
+  a00=(a00*a52);
+  a33=(a00*a15);
+  a33=(a33*a52);
+  a51=(a51+a33);
+  a33=(a32*a51);
+  a50=(a50*a07);
+  a50=(a50*a49);
+  a00=(a00*a20);
+  a00=(a00*a52);
+  a50=(a50+a00);
+  a00=(a06*a50);
+  a33=(a33-a00);
+  a48=(a48+a33);
+  a33=(a06*a48);
+  a00=arg[0]? arg[0][5] : 0;
+  a33=(a33*a00);
+  a47=(a47+a33);
+  a33=(a05*a42);
+  a53=(a21*a34);
+  a33=(a33-a53);
+  a40=(a21*a40);
+  a16=(a05*a16);
+  a40=(a40-a16);
+  a33=(a33+a40);
+  a03=(a03*a18);
+  a04=(a04*a02);
+  a03=(a03+a04);
+  a04=(a33*a03);
+  a46=casadi_sq(a46);
+  a46=(a46*a24);
+  a04=(a04+a46);
+  a46=(a22*a04);
+  a03=(a35*a03);
+  a02=casadi_sq(a43);
+  a02=(a02*a24);
+  a03=(a03-a02);
+  a02=(a21*a03);
+  a46=(a46-a02);
+  a02=arg[0]? arg[0][6] : 0;
+  a46=(a46*a02);
+  a47=(a47+a46);
+  a42=(a12*a42);
+  a34=(a11*a34);
+  a42=(a42-a34);
+  a50=(a11*a50);
+  a51=(a12*a51);
+  a50=(a50-a51);
+  a42=(a42+a50);
+  a07=(a07*a20);
+  a08=(a08*a15);
+  a07=(a07+a08);
+  a08=(a42*a07);
+  a52=casadi_sq(a52);
+  a52=(a52*a25);
+  a08=(a08+a52);
+  a52=(a06*a08);
+  a07=(a48*a07);
+  a15=casadi_sq(a49);
+  a15=(a15*a25);
+  a07=(a07-a15);
+  a15=(a11*a07);
+  a52=(a52-a15);
+  a15=arg[0]? arg[0][7] : 0;
+  a52=(a52*a15);
+  a47=(a47+a52);
+  a21=(a21*a33);
+  a52=arg[0]? arg[0][8] : 0;
+  a21=(a21*a52);
+  a47=(a47-a21);
+  a11=(a11*a42);
+  a21=arg[0]? arg[0][9] : 0;
+  a11=(a11*a21);
+  a47=(a47-a11);
+  a11=(a22*a43);
+  a25=arg[0]? arg[0][10] : 0;
+  a11=(a11*a25);
+  a47=(a47+a11);
+  a11=(a06*a49);
+  a20=arg[0]? arg[0][11] : 0;
+  a11=(a11*a20);
+  a47=(a47+a11);
+  a11=0.;
+  a50=(a11<=a43);
+  a51=(a50?a28:0);
+  a50=(!a50);
+  a34=-1.;
+  a50=(a50?a34:0);
+  a51=(a51+a50);
+  a50=(a22*a51);
+  a46=arg[0]? arg[0][12] : 0;
+  a50=(a50*a46);
+  a47=(a47+a50);
+  a11=(a11<=a49);
+  a50=(a11?a28:0);
+  a11=(!a11);
+  a11=(a11?a34:0);
+  a50=(a50+a11);
+  a11=(a06*a50);
+  a34=arg[0]? arg[0][13] : 0;
+  a11=(a11*a34);
+  a47=(a47+a11);
+  a11=(a31*a47);
+  a24=(a22*a30);
+  a18=(a06*a32);
+  a24=(a24+a18);
+  a03=(a05*a03);
+  a04=(a30*a04);
+  a03=(a03-a04);
+  a03=(a03*a02);
+  a35=(a30*a35);
+  a35=(a35*a29);
+  a48=(a32*a48);
+  a48=(a48*a00);
+  a35=(a35+a48);
+  a03=(a03-a35);
+  a07=(a12*a07);
+  a08=(a32*a08);
+  a07=(a07-a08);
+  a07=(a07*a15);
+  a03=(a03+a07);
+  a05=(a05*a33);
+  a05=(a05*a52);
+  a03=(a03+a05);
+  a12=(a12*a42);
+  a12=(a12*a21);
+  a03=(a03+a12);
+  a43=(a30*a43);
+  a43=(a43*a25);
+  a03=(a03-a43);
+  a49=(a32*a49);
+  a49=(a49*a20);
+  a03=(a03-a49);
+  a51=(a30*a51);
+  a51=(a51*a46);
+  a03=(a03-a51);
+  a50=(a32*a50);
+  a50=(a50*a34);
+  a03=(a03-a50);
+  a50=(a24*a03);
+  a11=(a11+a50);
+  a50=casadi_sq(a22);
+  a51=casadi_sq(a06);
+  a50=(a50+a51);
+  a31=(a50*a31);
+  a51=(a30*a22);
+  a49=(a32*a06);
+  a51=(a51+a49);
+  a24=(a24*a51);
+  a31=(a31-a24);
+  a11=(a11/a31);
+  a22=(a22*a11);
+  a50=(a50*a03);
+  a51=(a51*a47);
+  a50=(a50+a51);
+  a50=(a50/a31);
+  a30=(a30*a50);
+  a22=(a22-a30);
+  a06=(a06*a11);
+  a32=(a32*a50);
+  a06=(a06-a32);
+  a32=(a22+a06);
+  a32=(a32+a29);
+  a32=(a32+a00);
+  a32=(a32+a02);
+  a32=(a32+a15);
+  a32=(a32+a52);
+  a32=(a32+a21);
+  a32=(a32+a25);
+  a32=(a32+a20);
+  a32=(a32+a46);
+  a32=(a32+a34);
+  a32=(a32+a17);
+  a32=(a32+a14);
+  a32=(a32+a39);
+  a32=(a32+a38);
+  a32=casadi_fabs(a32);
+  a50=casadi_inf;
+  a32=(a32<a50);
+  a50=(a23&&a32);
+  a50=(a10&&a50);
+  a11=arg[5]? arg[5][8] : 0;
+  a30=(-a11);
+  a30=casadi_fmax(a22,a30);
+  a30=casadi_fmin(a30,a11);
+  a30=(a50?a30:0);
+  if (res[0]!=0) res[0][0]=a30;
+  a30=arg[5]? arg[5][9] : 0;
+  a31=(-a30);
+  a31=casadi_fmax(a06,a31);
+  a31=casadi_fmin(a31,a30);
+  a31=(a50?a31:0);
+  if (res[0]!=0) res[0][1]=a31;
+  a31=(a10&&a32);
+  a51=(a31?a17:0);
+  a47=(!a31);
+  a09=(a47?a09:0);
+  a51=(a51+a09);
+  if (res[1]!=0) res[1][0]=a51;
+  a51=(a31?a14:0);
+  a13=(a47?a13:0);
+  a51=(a51+a13);
+  if (res[1]!=0) res[1][1]=a51;
+  a51=(a31?a39:0);
+  a37=(a47?a37:0);
+  a51=(a51+a37);
+  if (res[1]!=0) res[1][2]=a51;
+  a31=(a31?a38:0);
+  a47=(a47?a45:0);
+  a31=(a31+a47);
+  if (res[1]!=0) res[1][3]=a31;
+  a31=(a50?a29:0);
+  a47=(!a50);
+  a29=(a47?a29:0);
+  a31=(a31+a29);
+  if (res[1]!=0) res[1][4]=a31;
+  a31=(a50?a00:0);
+  a00=(a47?a00:0);
+  a31=(a31+a00);
+  if (res[1]!=0) res[1][5]=a31;
+  a31=(a50?a02:0);
+  a02=(a47?a02:0);
+  a31=(a31+a02);
+  if (res[1]!=0) res[1][6]=a31;
+  a31=(a50?a15:0);
+  a15=(a47?a15:0);
+  a31=(a31+a15);
+  if (res[1]!=0) res[1][7]=a31;
+  a31=(a50?a52:0);
+  a52=(a47?a52:0);
+  a31=(a31+a52);
+  if (res[1]!=0) res[1][8]=a31;
+  a31=(a50?a21:0);
+  a21=(a47?a21:0);
+  a31=(a31+a21);
+  if (res[1]!=0) res[1][9]=a31;
+  a31=(a50?a25:0);
+  a25=(a47?a25:0);
+  a31=(a31+a25);
+  if (res[1]!=0) res[1][10]=a31;
+  a31=(a50?a20:0);
+  a20=(a47?a20:0);
+  a31=(a31+a20);
+  if (res[1]!=0) res[1][11]=a31;
+  a31=(a50?a46:0);
+  a46=(a47?a46:0);
+  a31=(a31+a46);
+  if (res[1]!=0) res[1][12]=a31;
+  a50=(a50?a34:0);
+  a47=(a47?a34:0);
+  a50=(a50+a47);
+  if (res[1]!=0) res[1][13]=a50;
+  a22=casadi_fabs(a22);
+  a22=(a22/a11);
+  a06=casadi_fabs(a06);
+  a06=(a06/a30);
+  a22=casadi_fmax(a22,a06);
+  a22=(a28<a22);
+  a22=(a22?a19:0);
+  a22=(a32?a22:0);
+  a32=(!a32);
+  a19=3.;
+  a32=(a32?a19:0);
+  a22=(a22+a32);
+  a22=(a23?a22:0);
+  a23=(!a23);
+  a23=(a23?a28:0);
+  a22=(a22+a23);
+  a22=(a10?a22:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a22=(a22+a10);
+  if (res[2]!=0) res[2][0]=a22;
+  if (res[3]!=0) res[3][0]=a17;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a39;
+  if (res[3]!=0) res[3][3]=a38;
+  if (res[3]!=0) res[3][4]=a41;
+  if (res[3]!=0) res[3][5]=a01;
+  if (res[3]!=0) res[3][6]=a36;
+  if (res[3]!=0) res[3][7]=a44;
+  if (res[3]!=0) res[3][8]=a26;
+  if (res[3]!=0) res[3][9]=a27;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f28(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_ctc_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[15])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][14] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][6] : 0;
+  a18=(a18/a19);
+  a24=(a04*a18);
+  a02=(a02/a19);
+  a19=(a03*a02);
+  a24=(a24-a19);
+  a19=casadi_fabs(a24);
+  a20=(a20/a22);
+  a25=(a08*a20);
+  a15=(a15/a22);
+  a22=(a07*a15);
+  a25=(a25-a22);
+  a22=casadi_fabs(a25);
+  a26=(a19+a22);
+  a19=(a19-a22);
+  a19=casadi_fabs(a19);
+  a26=(a26-a19);
+  a19=2.;
+  a26=(a26/a19);
+  a23=(a23<=a26);
+  a22=arg[5]? arg[5][7] : 0;
+  a27=5.0000000000000000e-01;
+  a28=1.;
+  a29=casadi_sq(a18);
+  a30=casadi_sq(a02);
+  a29=(a29-a30);
+  a30=casadi_sq(a20);
+  a31=casadi_sq(a15);
+  a30=(a30-a31);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a30=(2.*a18);
+  a30=(a30*a02);
+  a31=(2.*a20);
+  a31=(a31*a15);
+  a30=(a30+a31);
+  a30=casadi_sq(a30);
+  a29=(a29+a30);
+  a29=sqrt(a29);
+  a29=(a27*a29);
+  a29=(a28-a29);
+  a30=casadi_fabs(a29);
+  a29=(a29+a30);
+  a27=(a27*a29);
+  a27=sqrt(a27);
+  a22=(a22<=a27);
+  a23=(a23&&a22);
+  a22=(a06*a18);
+  a29=(a05*a22);
+  a30=(a00*a02);
+  a31=(a30*a21);
+  a29=(a29-a31);
+  a22=(a22/a29);
+  a06=(a06*a20);
+  a31=(a12*a06);
+  a32=(a00*a15);
+  a33=(a32*a11);
+  a31=(a31-a33);
+  a06=(a06/a31);
+  a30=(a30/a29);
+  a33=(-a30);
+  a32=(a32/a31);
+  a34=(-a32);
+  a35=arg[4]? arg[4][0] : 0;
+  a36=arg[5]? arg[5][2] : 0;
+  a37=arg[3]? arg[3][0] : 0;
+  a38=arg[0]? arg[0][2] : 0;
+  a39=arg[5]? arg[5][5] : 0;
+  a17=(a21+a17);
+  a17=(a17+a09);
+  a09=arg[0]? arg[0][0] : 0;
+  a40=(a17-a09);
+  a41=arg[5]? arg[5][4] : 0;
+  a40=(a40/a41);
+  a40=(a40-a38);
+  a40=(a39*a40);
+  a40=(a38+a40);
+  a37=(a37-a40);
+  a36=(a36*a37);
+  a35=(a35+a36);
+  a36=arg[5]? arg[5][0] : 0;
+  a42=arg[2]? arg[2][0] : 0;
+  a42=(a42-a17);
+  a36=(a36*a42);
+  a35=(a35+a36);
+  a36=(a22*a35);
+  a43=arg[4]? arg[4][1] : 0;
+  a44=arg[5]? arg[5][3] : 0;
+  a45=arg[3]? arg[3][1] : 0;
+  a46=arg[0]? arg[0][3] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[0]? arg[0][1] : 0;
+  a01=(a14-a13);
+  a01=(a01/a41);
+  a01=(a01-a46);
+  a39=(a39*a01);
+  a39=(a46+a39);
+  a45=(a45-a39);
+  a44=(a44*a45);
+  a43=(a43+a44);
+  a44=arg[5]? arg[5][1] : 0;
+  a01=arg[2]? arg[2][1] : 0;
+  a01=(a01-a14);
+  a44=(a44*a01);
+  a43=(a43+a44);
+  a44=(a30*a43);
+  a36=(a36-a44);
+  a44=(a22*a40);
+  a41=(a30*a39);
+  a44=(a44-a41);
+  a41=(a00*a44);
+  a16=(a41*a04);
+  a16=(a16*a44);
+  a05=(a05/a29);
+  a47=(a05*a39);
+  a21=(a21/a29);
+  a29=(a21*a40);
+  a47=(a47-a29);
+  a29=(a00*a47);
+  a48=(a29*a02);
+  a48=(a48*a47);
+  a16=(a16+a48);
+  a48=(a30*a16);
+  a41=(a41*a03);
+  a41=(a41*a44);
+  a29=(a29*a18);
+  a29=(a29*a47);
+  a41=(a41+a29);
+  a29=(a22*a41);
+  a48=(a48-a29);
+  a36=(a36+a48);
+  a48=(a22*a36);
+  a29=arg[0]? arg[0][4] : 0;
+  a48=(a48*a29);
+  a49=(a06*a35);
+  a50=(a32*a43);
+  a49=(a49-a50);
+  a50=(a06*a40);
+  a51=(a32*a39);
+  a50=(a50-a51);
+  a51=(a00*a50);
+  a52=(a51*a08);
+  a52=(a52*a50);
+  a12=(a12/a31);
+  a53=(a12*a39);
+  a11=(a11/a31);
+  a31=(a11*a40);
+  a53=(a53-a31);
+  a31=(a00*a53);
+  a54=(a31*a15);
+  a54=(a54*a53);
+  a52=(a52+a54);
+  a54=(a32*a52);
+  a51=(a51*a07);
+  a51=(a51*a50);
+  a31=(a31*a20);
+  a31=(a31*a53);
+  a51=(a51+a31);
+  a31=(a06*a51);
+  a54=(a54-a31);
+  a49=(a49+a54);
+  a54=(a06*a49);
+  a31=arg[0]? arg[0][5] : 0;
+  a54=(a54*a31);
+  a48=(a48+a54);
+  a54=(a05*a43);
+  a55=(a21*a35);
+  a54=(a54-a55);
+  a41=(a21*a41);
+  a16=(a05*a16);
+  a41=(a41-a16);
+  a54=(a54+a41);
+  a03=(a03*a18);
+  a04=(a04*a02);
+  a03=(a03+a04);
+  a04=(a54*a03);
+  a47=casadi_sq(a47);
+  a47=(a47*a24);
+  a04=(a04+a47);
+  a47=(a22*a04);
+  a03=(a36*a03);
+  a02=casadi_sq(a44);
+  a02=(a02*a24);
+  a03=(a03-a02);
+  a02=(a21*a03);
+  a47=(a47-a02);
+  a02=arg[0]? arg[0][6] : 0;
+  a47=(a47*a02);
+  a48=(a48+a47);
+  a43=(a12*a43);
+  a35=(a11*a35);
+  a43=(a43-a35);
+  a51=(a11*a51);
+  a52=(a12*a52);
+  a51=(a51-a52);
+  a43=(a43+a51);
+  a07=(a07*a20);
+  a08=(a08*a15);
+  a07=(a07+a08);
+  a08=(a43*a07);
+  a53=casadi_sq(a53);
+  a53=(a53*a25);
+  a08=(a08+a53);
+  a53=(a06*a08);
+  a07=(a49*a07);
+  a15=casadi_sq(a50);
+  a15=(a15*a25);
+  a07=(a07-a15);
+  a15=(a11*a07);
+  a53=(a53-a15);
+  a15=arg[0]? arg[0][7] : 0;
+  a53=(a53*a15);
+  a48=(a48+a53);
+  a21=(a21*a54);
+  a53=arg[0]? arg[0][8] : 0;
+  a21=(a21*a53);
+  a48=(a48-a21);
+  a11=(a11*a43);
+  a21=arg[0]? arg[0][9] : 0;
+  a11=(a11*a21);
+  a48=(a48-a11);
+  a11=(a22*a44);
+  a25=arg[0]? arg[0][10] : 0;
+  a11=(a11*a25);
+  a48=(a48+a11);
+  a11=(a06*a50);
+  a20=arg[0]? arg[0][11] : 0;
+  a11=(a11*a20);
+  a48=(a48+a11);
+  a11=0.;
+  a51=(a11<=a44);
+  a52=(a51?a28:0);
+  a51=(!a51);
+  a35=-1.;
+  a51=(a51?a35:0);
+  a52=(a52+a51);
+  a51=(a22*a52);
+  a47=arg[0]? arg[0][12] : 0;
+  a51=(a51*a47);
+  a48=(a48+a51);
+  a11=(a11<=a50);
+  a51=(a11?a28:0);
+  a11=(!a11);
+  a11=(a11?a35:0);
+  a51=(a51+a11);
+  a11=(a06*a51);
+  a35=arg[0]? arg[0][13] : 0;
+  a11=(a11*a35);
+  a48=(a48+a11);
+  a03=(a05*a03);
+  a04=(a30*a04);
+  a03=(a03-a04);
+  a03=(a03*a02);
+  a36=(a30*a36);
+  a36=(a36*a29);
+  a49=(a32*a49);
+  a49=(a49*a31);
+  a36=(a36+a49);
+  a03=(a03-a36);
+  a07=(a12*a07);
+  a08=(a32*a08);
+  a07=(a07-a08);
+  a07=(a07*a15);
+  a03=(a03+a07);
+  a05=(a05*a54);
+  a05=(a05*a53);
+  a03=(a03+a05);
+  a12=(a12*a43);
+  a12=(a12*a21);
+  a03=(a03+a12);
+  a44=(a30*a44);
+  a44=(a44*a25);
+  a03=(a03-a44);
+  a50=(a32*a50);
+  a50=(a50*a20);
+  a03=(a03-a50);
+  a30=(a30*a52);
+  a30=(a30*a47);
+  a03=(a03-a30);
+  a32=(a32*a51);
+  a32=(a32*a35);
+  a03=(a03-a32);
+  a32=arg[5]? arg[5][8] : 0;
+  a51=arg[5]? arg[5][9] : 0;
+  arg[6]=w+0;
+  arg[7]=w+4;
+  arg[8] = arg[5]? arg[5] + 8 : 0;
+  arg[9] = arg[5]? arg[5] + 10 : 0;
+  arg[10] = arg[5]? arg[5] + 12 : 0;
+  res[4]=w+12;
+  res[5]=w+14;
+  w[0] = a22;
+  w[1] = a06;
+  w[2] = a33;
+  w[3] = a34;
+  w[4] = a48;
+  w[5] = a03;
+  if (casadi_f16(arg+6, res+4, iw, w+15, 0)) return 1;
+  a22 = w[12];
+  a06 = w[13];
+  a33 = w[14];
+  a34=(a22+a06);
+  a34=(a34+a29);
+  a34=(a34+a31);
+  a34=(a34+a02);
+  a34=(a34+a15);
+  a34=(a34+a53);
+  a34=(a34+a21);
+  a34=(a34+a25);
+  a34=(a34+a20);
+  a34=(a34+a47);
+  a34=(a34+a35);
+  a34=(a34+a17);
+  a34=(a34+a14);
+  a34=(a34+a40);
+  a34=(a34+a39);
+  a34=casadi_fabs(a34);
+  a48=casadi_inf;
+  a34=(a34<a48);
+  a48=(a23&&a34);
+  a48=(a10&&a48);
+  a03=(-a32);
+  a22=casadi_fmax(a22,a03);
+  a22=casadi_fmin(a22,a32);
+  a22=(a48?a22:0);
+  if (res[0]!=0) res[0][0]=a22;
+  a22=(-a51);
+  a06=casadi_fmax(a06,a22);
+  a06=casadi_fmin(a06,a51);
+  a06=(a48?a06:0);
+  if (res[0]!=0) res[0][1]=a06;
+  a06=(a10&&a34);
+  a51=(a06?a17:0);
+  a22=(!a06);
+  a09=(a22?a09:0);
+  a51=(a51+a09);
+  if (res[1]!=0) res[1][0]=a51;
+  a51=(a06?a14:0);
+  a13=(a22?a13:0);
+  a51=(a51+a13);
+  if (res[1]!=0) res[1][1]=a51;
+  a51=(a06?a40:0);
+  a38=(a22?a38:0);
+  a51=(a51+a38);
+  if (res[1]!=0) res[1][2]=a51;
+  a06=(a06?a39:0);
+  a22=(a22?a46:0);
+  a06=(a06+a22);
+  if (res[1]!=0) res[1][3]=a06;
+  a06=(a48?a29:0);
+  a22=(!a48);
+  a29=(a22?a29:0);
+  a06=(a06+a29);
+  if (res[1]!=0) res[1][4]=a06;
+  a06=(a48?a31:0);
+  a31=(a22?a31:0);
+  a06=(a06+a31);
+  if (res[1]!=0) res[1][5]=a06;
+  a06=(a48?a02:0);
+  a02=(a22?a02:0);
+  a06=(a06+a02);
+  if (res[1]!=0) res[1][6]=a06;
+  a06=(a48?a15:0);
+  a15=(a22?a15:0);
+  a06=(a06+a15);
+  if (res[1]!=0) res[1][7]=a06;
+  a06=(a48?a53:0);
+  a53=(a22?a53:0);
+  a06=(a06+a53);
+  if (res[1]!=0) res[1][8]=a06;
+  a06=(a48?a21:0);
+  a21=(a22?a21:0);
+  a06=(a06+a21);
+  if (res[1]!=0) res[1][9]=a06;
+  a06=(a48?a25:0);
+  a25=(a22?a25:0);
+  a06=(a06+a25);
+  if (res[1]!=0) res[1][10]=a06;
+  a06=(a48?a20:0);
+  a20=(a22?a20:0);
+  a06=(a06+a20);
+  if (res[1]!=0) res[1][11]=a06;
+  a06=(a48?a47:0);
+  a47=(a22?a47:0);
+  a06=(a06+a47);
+  if (res[1]!=0) res[1][12]=a06;
+  a48=(a48?a35:0);
+  a22=(a22?a35:0);
+  a48=(a48+a22);
+  if (res[1]!=0) res[1][13]=a48;
+  a48=(a33==a19);
+  a19=(a48?a19:0);
+  a48=(!a48);
+  a33=(a33==a28);
+  a22=4.;
+  a33=(a33?a22:0);
+  a48=(a48?a33:0);
+  a19=(a19+a48);
+  a19=(a34?a19:0);
+  a34=(!a34);
+  a48=3.;
+  a34=(a34?a48:0);
+  a19=(a19+a34);
+  a19=(a23?a19:0);
+  a23=(!a23);
+  a23=(a23?a28:0);
+  a19=(a19+a23);
+  a19=(a10?a19:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a19=(a19+a10);
+  if (res[2]!=0) res[2][0]=a19;
+  if (res[3]!=0) res[3][0]=a17;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a40;
+  if (res[3]!=0) res[3][3]=a39;
+  if (res[3]!=0) res[3][4]=a42;
+  if (res[3]!=0) res[3][5]=a01;
+  if (res[3]!=0) res[3][6]=a37;
+  if (res[3]!=0) res[3][7]=a45;
+  if (res[3]!=0) res[3][8]=a26;
+  if (res[3]!=0) res[3][9]=a27;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f29(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 51;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 51*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[11],K[8],tau_ff[2])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][10] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][2] : 0;
+  a18=(a18/a19);
+  a04=(a04*a18);
+  a02=(a02/a19);
+  a03=(a03*a02);
+  a04=(a04-a03);
+  a04=casadi_fabs(a04);
+  a20=(a20/a22);
+  a08=(a08*a20);
+  a15=(a15/a22);
+  a07=(a07*a15);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a07=(a04+a08);
+  a04=(a04-a08);
+  a04=casadi_fabs(a04);
+  a07=(a07-a04);
+  a04=2.;
+  a07=(a07/a04);
+  a23=(a23<=a07);
+  a08=arg[5]? arg[5][3] : 0;
+  a22=5.0000000000000000e-01;
+  a03=1.;
+  a19=casadi_sq(a18);
+  a24=casadi_sq(a02);
+  a19=(a19-a24);
+  a24=casadi_sq(a20);
+  a25=casadi_sq(a15);
+  a24=(a24-a25);
+  a19=(a19+a24);
+  a19=casadi_sq(a19);
+  a24=(2.*a18);
+  a24=(a24*a02);
+  a25=(2.*a20);
+  a25=(a25*a15);
+  a24=(a24+a25);
+  a24=casadi_sq(a24);
+  a19=(a19+a24);
+  a19=sqrt(a19);
+  a19=(a22*a19);
+  a19=(a03-a19);
+  a24=casadi_fabs(a19);
+  a19=(a19+a24);
+  a22=(a22*a19);
+  a22=sqrt(a22);
+  a08=(a08<=a22);
+  a23=(a23&&a08);
+  a18=(a06*a18);
+  a05=(a05*a18);
+  a02=(a00*a02);
+  a08=(a02*a21);
+  a05=(a05-a08);
+  a18=(a18/a05);
+  a02=(a02/a05);
+  a05=casadi_sq(a02);
+  a00=(a00*a15);
+  a06=(a06*a20);
+  a12=(a12*a06);
+  a11=(a00*a11);
+  a12=(a12-a11);
+  a00=(a00/a12);
+  a11=casadi_sq(a00);
+  a05=(a05+a11);
+  a11=arg[7]? arg[7][0] : 0;
+  a20=arg[6]? arg[6][0] : 0;
+  a21=(a21+a17);
+  a21=(a21+a09);
+  a09=arg[2]? arg[2][0] : 0;
+  a17=(a21-a09);
+  a20=(a20*a17);
+  a15=arg[6]? arg[6][1] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[2]? arg[2][1] : 0;
+  a01=(a14-a13);
+  a15=(a15*a01);
+  a20=(a20+a15);
+  a15=arg[6]? arg[6][2] : 0;
+  a16=arg[0]? arg[0][2] : 0;
+  a08=arg[5]? arg[5][1] : 0;
+  a19=arg[0]? arg[0][0] : 0;
+  a24=(a21-a19);
+  a25=arg[5]? arg[5][0] : 0;
+  a24=(a24/a25);
+  a24=(a24-a16);
+  a24=(a08*a24);
+  a24=(a16+a24);
+  a26=arg[3]? arg[3][0] : 0;
+  a27=(a24-a26);
+  a15=(a15*a27);
+  a20=(a20+a15);
+  a15=arg[6]? arg[6][3] : 0;
+  a28=arg[0]? arg[0][3] : 0;
+  a29=arg[0]? arg[0][1] : 0;
+  a30=(a14-a29);
+  a30=(a30/a25);
+  a30=(a30-a28);
+  a08=(a08*a30);
+  a08=(a28+a08);
+  a30=arg[3]? arg[3][1] : 0;
+  a25=(a08-a30);
+  a15=(a15*a25);
+  a20=(a20+a15);
+  a11=(a11-a20);
+  a20=(a18*a11);
+  a06=(a06/a12);
+  a12=arg[7]? arg[7][1] : 0;
+  a15=arg[6]? arg[6][4] : 0;
+  a15=(a15*a17);
+  a17=arg[6]? arg[6][5] : 0;
+  a17=(a17*a01);
+  a15=(a15+a17);
+  a17=arg[6]? arg[6][6] : 0;
+  a17=(a17*a27);
+  a15=(a15+a17);
+  a17=arg[6]? arg[6][7] : 0;
+  a17=(a17*a25);
+  a15=(a15+a17);
+  a12=(a12-a15);
+  a15=(a06*a12);
+  a20=(a20+a15);
+  a15=(a05*a20);
+  a17=(a18*a02);
+  a25=(a06*a00);
+  a17=(a17+a25);
+  a11=(a02*a11);
+  a12=(a00*a12);
+  a11=(a11+a12);
+  a12=(a17*a11);
+  a15=(a15-a12);
+  a12=casadi_sq(a18);
+  a25=casadi_sq(a06);
+  a12=(a12+a25);
+  a05=(a12*a05);
+  a25=(a02*a18);
+  a27=(a00*a06);
+  a25=(a25+a27);
+  a17=(a17*a25);
+  a05=(a05-a17);
+  a15=(a15/a05);
+  a18=(a18*a15);
+  a25=(a25*a20);
+  a12=(a12*a11);
+  a25=(a25-a12);
+  a25=(a25/a05);
+  a02=(a02*a25);
+  a18=(a18-a02);
+  a06=(a06*a15);
+  a00=(a00*a25);
+  a06=(a06-a00);
+  a00=(a18+a06);
+  a25=arg[0]? arg[0][4] : 0;
+  a00=(a00+a25);
+  a15=arg[0]? arg[0][5] : 0;
+  a00=(a00+a15);
+  a02=arg[0]? arg[0][6] : 0;
+  a00=(a00+a02);
+  a05=arg[0]? arg[0][7] : 0;
+  a00=(a00+a05);
+  a12=arg[0]? arg[0][8] : 0;
+  a00=(a00+a12);
+  a11=arg[0]? arg[0][9] : 0;
+  a00=(a00+a11);
+  a20=arg[0]? arg[0][10] : 0;
+  a00=(a00+a20);
+  a17=arg[0]? arg[0][11] : 0;
+  a00=(a00+a17);
+  a27=arg[0]? arg[0][12] : 0;
+  a00=(a00+a27);
+  a01=arg[0]? arg[0][13] : 0;
+  a00=(a00+a01);
+  a00=(a00+a21);
+  a00=(a00+a14);
+  a00=(a00+a24);
+  a00=(a00+a08);
+  a00=casadi_fabs(a00);
+  a31=casadi_inf;
+  a00=(a00<a31);
+  a31=(a23&&a00);
+  a31=(a10&&a31);
+  a32=arg[5]? arg[5][4] : 0;
+  a33=(-a32);
+  a33=casadi_fmax(a18,a33);
+  a33=casadi_fmin(a33,a32);
+  a33=(a31?a33:0);
+  if (res[0]!=0) res[0][0]=a33;
+  a33=arg[5]? arg[5][5] : 0;
+  a34=(-a33);
+  a34=casadi_fmax(a06,a34);
+  a34=casadi_fmin(a34,a33);
+  a34=(a31?a34:0);
+  if (res[0]!=0) res[0][1]=a34;
+  a34=(a10&&a00);
+  a35=(a34?a21:0);
+  a36=(!a34);
+  a19=(a36?a19:0);
+  a35=(a35+a19);
+  if (res[1]!=0) res[1][0]=a35;
+  a35=(a34?a14:0);
+  a29=(a36?a29:0);
+  a35=(a35+a29);
+  if (res[1]!=0) res[1][1]=a35;
+  a35=(a34?a24:0);
+  a16=(a36?a16:0);
+  a35=(a35+a16);
+  if (res[1]!=0) res[1][2]=a35;
+  a34=(a34?a08:0);
+  a36=(a36?a28:0);
+  a34=(a34+a36);
+  if (res[1]!=0) res[1][3]=a34;
+  a34=(a31?a25:0);
+  a36=(!a31);
+  a25=(a36?a25:0);
+  a34=(a34+a25);
+  if (res[1]!=0) res[1][4]=a34;
+  a34=(a31?a15:0);
+  a15=(a36?a15:0);
+  a34=(a34+a15);
+  if (res[1]!=0) res[1][5]=a34;
+  a34=(a31?a02:0);
+  a02=(a36?a02:0);
+  a34=(a34+a02);
+  if (res[1]!=0) res[1][6]=a34;
+  a34=(a31?a05:0);
+  a05=(a36?a05:0);
+  a34=(a34+a05);
+  if (res[1]!=0) res[1][7]=a34;
+  a34=(a31?a12:0);
+  a12=(a36?a12:0);
+  a34=(a34+a12);
+  if (res[1]!=0) res[1][8]=a34;
+  a34=(a31?a11:0);
+  a11=(a36?a11:0);
+  a34=(a34+a11);
+  if (res[1]!=0) res[1][9]=a34;
+  a34=(a31?a20:0);
+  a20=(a36?a20:0);
+  a34=(a34+a20);
+  if (res[1]!=0) res[1][10]=a34;
+  a34=(a31?a17:0);
+  a17=(a36?a17:0);
+  a34=(a34+a17);
+  if (res[1]!=0) res[1][11]=a34;
+  a34=(a31?a27:0);
+  a27=(a36?a27:0);
+  a34=(a34+a27);
+  if (res[1]!=0) res[1][12]=a34;
+  a31=(a31?a01:0);
+  a36=(a36?a01:0);
+  a31=(a31+a36);
+  if (res[1]!=0) res[1][13]=a31;
+  a31=0.;
+  a18=casadi_fabs(a18);
+  a18=(a18-a32);
+  a06=casadi_fabs(a06);
+  a06=(a06-a33);
+  a18=casadi_fmax(a18,a06);
+  a31=(a31<a18);
+  a31=(a31?a04:0);
+  a31=(a00?a31:0);
+  a00=(!a00);
+  a04=3.;
+  a00=(a00?a04:0);
+  a31=(a31+a00);
+  a31=(a23?a31:0);
+  a23=(!a23);
+  a23=(a23?a03:0);
+  a31=(a31+a23);
+  a31=(a10?a31:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a31=(a31+a10);
+  if (res[2]!=0) res[2][0]=a31;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a24;
+  if (res[3]!=0) res[3][3]=a08;
+  a09=(a09-a21);
+  if (res[3]!=0) res[3][4]=a09;
+  a13=(a13-a14);
+  if (res[3]!=0) res[3][5]=a13;
+  a26=(a26-a24);
+  if (res[3]!=0) res[3][6]=a26;
+  a30=(a30-a08);
+  if (res[3]!=0) res[3][7]=a30;
+  if (res[3]!=0) res[3][8]=a07;
+  if (res[3]!=0) res[3][9]=a22;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f30(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s10;
+    case 6: return casadi_s2;
+    case 7: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[11],K[8],tau_ff[2])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][10] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][2] : 0;
+  a18=(a18/a19);
+  a04=(a04*a18);
+  a02=(a02/a19);
+  a03=(a03*a02);
+  a04=(a04-a03);
+  a04=casadi_fabs(a04);
+  a20=(a20/a22);
+  a08=(a08*a20);
+  a15=(a15/a22);
+  a07=(a07*a15);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a07=(a04+a08);
+  a04=(a04-a08);
+  a04=casadi_fabs(a04);
+  a07=(a07-a04);
+  a04=2.;
+  a07=(a07/a04);
+  a23=(a23<=a07);
+  a08=arg[5]? arg[5][3] : 0;
+  a22=5.0000000000000000e-01;
+  a03=1.;
+  a19=casadi_sq(a18);
+  a24=casadi_sq(a02);
+  a19=(a19-a24);
+  a24=casadi_sq(a20);
+  a25=casadi_sq(a15);
+  a24=(a24-a25);
+  a19=(a19+a24);
+  a19=casadi_sq(a19);
+  a24=(2.*a18);
+  a24=(a24*a02);
+  a25=(2.*a20);
+  a25=(a25*a15);
+  a24=(a24+a25);
+  a24=casadi_sq(a24);
+  a19=(a19+a24);
+  a19=sqrt(a19);
+  a19=(a22*a19);
+  a19=(a03-a19);
+  a24=casadi_fabs(a19);
+  a19=(a19+a24);
+  a22=(a22*a19);
+  a22=sqrt(a22);
+  a08=(a08<=a22);
+  a23=(a23&&a08);
+  a18=(a06*a18);
+  a05=(a05*a18);
+  a02=(a00*a02);
+  a08=(a02*a21);
+  a05=(a05-a08);
+  a18=(a18/a05);
+  a02=(a02/a05);
+  a05=casadi_sq(a02);
+  a00=(a00*a15);
+  a06=(a06*a20);
+  a12=(a12*a06);
+  a11=(a00*a11);
+  a12=(a12-a11);
+  a00=(a00/a12);
+  a11=casadi_sq(a00);
+  a05=(a05+a11);
+  a11=arg[7]? arg[7][0] : 0;
+  a20=arg[6]? arg[6][0] : 0;
+  a21=(a21+a17);
+  a21=(a21+a09);
+  a09=arg[2]? arg[2][0] : 0;
+  a17=(a21-a09);
+  a20=(a20*a17);
+  a15=arg[6]? arg[6][1] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[2]? arg[2][1] : 0;
+  a01=(a14-a13);
+  a15=(a15*a01);
+  a20=(a20+a15);
+  a15=arg[6]? arg[6][2] : 0;
+  a16=arg[0]? arg[0][2] : 0;
+  a08=arg[5]? arg[5][1] : 0;
+  a19=arg[0]? arg[0][0] : 0;
+  a24=(a21-a19);
+  a25=arg[5]? arg[5][0] : 0;
+  a24=(a24/a25);
+  a24=(a24-a16);
+  a24=(a08*a24);
+  a24=(a16+a24);
+  a26=arg[3]? arg[3][0] : 0;
+  a27=(a24-a26);
+  a15=(a15*a27);
+  a20=(a20+a15);
+  a15=arg[6]? arg[6][3] : 0;
+  a28=arg[0]? arg[0][3] : 0;
+  a29=arg[0]? arg[0][1] : 0;
+  a30=(a14-a29);
+  a30=(a30/a25);
+  a30=(a30-a28);
+  a08=(a08*a30);
+  a08=(a28+a08);
+  a30=arg[3]? arg[3][1] : 0;
+  a25=(a08-a30);
+  a15=(a15*a25);
+  a20=(a20+a15);
+  a11=(a11-a20);
+  a20=(a18*a11);
+  a06=(a06/a12);
+  a12=arg[7]? arg[7][1] : 0;
+  a15=arg[6]? arg[6][4] : 0;
+  a15=(a15*a17);
+  a17=arg[6]? arg[6][5] : 0;
+  a17=(a17*a01);
+  a15=(a15+a17);
+  a17=arg[6]? arg[6][6] : 0;
+  a17=(a17*a27);
+  a15=(a15+a17);
+  a17=arg[6]? arg[6][7] : 0;
+  a17=(a17*a25);
+  a15=(a15+a17);
+  a12=(a12-a15);
+  a15=(a06*a12);
+  a20=(a20+a15);
+  a15=(a05*a20);
+  a17=(a18*a02);
+  a25=(a06*a00);
+  a17=(a17+a25);
+  a11=(a02*a11);
+  a12=(a00*a12);
+  a11=(a11+a12);
+  a12=(a17*a11);
+  a15=(a15-a12);
+  a12=casadi_sq(a18);
+  a25=casadi_sq(a06);
+  a12=(a12+a25);
+  a05=(a12*a05);
+  a25=(a02*a18);
+  a27=(a00*a06);
+  a25=(a25+a27);
+  a17=(a17*a25);
+  a05=(a05-a17);
+  a15=(a15/a05);
+  a18=(a18*a15);
+  a25=(a25*a20);
+  a12=(a12*a11);
+  a25=(a25-a12);
+  a25=(a25/a05);
+  a02=(a02*a25);
+  a18=(a18-a02);
+  a06=(a06*a15);
+  a00=(a00*a25);
+  a06=(a06-a00);
+  a00=(a18+a06);
+  a25=arg[0]? arg[0][4] : 0;
+  a00=(a00+a25);
+  a15=arg[0]? arg[0][5] : 0;
+  a00=(a00+a15);
+  a02=arg[0]? arg[0][6] : 0;
+  a00=(a00+a02);
+  a05=arg[0]? arg[0][7] : 0;
+  a00=(a00+a05);
+  a12=arg[0]? arg[0][8] : 0;
+  a00=(a00+a12);
+  a11=arg[0]? arg[0][9] : 0;
+  a00=(a00+a11);
+  a20=arg[0]? arg[0][10] : 0;
+  a00=(a00+a20);
+  a17=arg[0]? arg[0][11] : 0;
+  a00=(a00+a17);
+  a27=arg[0]? arg[0][12] : 0;
+  a00=(a00+a27);
+  a01=arg[0]? arg[0][13] : 0;
+  a00=(a00+a01);
+  a00=(a00+a21);
+  a00=(a00+a14);
+  a00=(a00+a24);
+  a00=(a00+a08);
+  a00=casadi_fabs(a00);
+  a31=casadi_inf;
+  a00=(a00<a31);
+  a31=(a23&&a00);
+  a31=(a10&&a31);
+  a32=arg[5]? arg[5][4] : 0;
+  a33=(-a32);
+  a33=casadi_fmax(a18,a33);
+  a33=casadi_fmin(a33,a32);
+  a33=(a31?a33:0);
+  if (res[0]!=0) res[0][0]=a33;
+  a33=arg[5]? arg[5][5] : 0;
+  a34=(-a33);
+  a34=casadi_fmax(a06,a34);
+  a34=casadi_fmin(a34,a33);
+  a34=(a31?a34:0);
+  if (res[0]!=0) res[0][1]=a34;
+  a34=(a10&&a00);
+  a35=(a34?a21:0);
+  a36=(!a34);
+  a19=(a36?a19:0);
+  a35=(a35+a19);
+  if (res[1]!=0) res[1][0]=a35;
+  a35=(a34?a14:0);
+  a29=(a36?a29:0);
+  a35=(a35+a29);
+  if (res[1]!=0) res[1][1]=a35;
+  a35=(a34?a24:0);
+  a16=(a36?a16:0);
+  a35=(a35+a16);
+  if (res[1]!=0) res[1][2]=a35;
+  a34=(a34?a08:0);
+  a36=(a36?a28:0);
+  a34=(a34+a36);
+  if (res[1]!=0) res[1][3]=a34;
+  a34=(a31?a25:0);
+  a36=(!a31);
+  a25=(a36?a25:0);
+  a34=(a34+a25);
+  if (res[1]!=0) res[1][4]=a34;
+  a34=(a31?a15:0);
+  a15=(a36?a15:0);
+  a34=(a34+a15);
+  if (res[1]!=0) res[1][5]=a34;
+  a34=(a31?a02:0);
+  a02=(a36?a02:0);
+  a34=(a34+a02);
+  if (res[1]!=0) res[1][6]=a34;
+  a34=(a31?a05:0);
+  a05=(a36?a05:0);
+  a34=(a34+a05);
+  if (res[1]!=0) res[1][7]=a34;
+  a34=(a31?a12:0);
+  a12=(a36?a12:0);
+  a34=(a34+a12);
+  if (res[1]!=0) res[1][8]=a34;
+  a34=(a31?a11:0);
+  a11=(a36?a11:0);
+  a34=(a34+a11);
+  if (res[1]!=0) res[1][9]=a34;
+  a34=(a31?a20:0);
+  a20=(a36?a20:0);
+  a34=(a34+a20);
+  if (res[1]!=0) res[1][10]=a34;
+  a34=(a31?a17:0);
+  a17=(a36?a17:0);
+  a34=(a34+a17);
+  if (res[1]!=0) res[1][11]=a34;
+  a34=(a31?a27:0);
+  a27=(a36?a27:0);
+  a34=(a34+a27);
+  if (res[1]!=0) res[1][12]=a34;
+  a31=(a31?a01:0);
+  a36=(a36?a01:0);
+  a31=(a31+a36);
+  if (res[1]!=0) res[1][13]=a31;
+  a18=casadi_fabs(a18);
+  a18=(a18/a32);
+  a06=casadi_fabs(a06);
+  a06=(a06/a33);
+  a18=casadi_fmax(a18,a06);
+  a18=(a03<a18);
+  a18=(a18?a04:0);
+  a18=(a00?a18:0);
+  a00=(!a00);
+  a04=3.;
+  a00=(a00?a04:0);
+  a18=(a18+a00);
+  a18=(a23?a18:0);
+  a23=(!a23);
+  a23=(a23?a03:0);
+  a18=(a18+a23);
+  a18=(a10?a18:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a18=(a18+a10);
+  if (res[2]!=0) res[2][0]=a18;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a24;
+  if (res[3]!=0) res[3][3]=a08;
+  a09=(a09-a21);
+  if (res[3]!=0) res[3][4]=a09;
+  a13=(a13-a14);
+  if (res[3]!=0) res[3][5]=a13;
+  a26=(a26-a24);
+  if (res[3]!=0) res[3][6]=a26;
+  a30=(a30-a08);
+  if (res[3]!=0) res[3][7]=a30;
+  if (res[3]!=0) res[3][8]=a07;
+  if (res[3]!=0) res[3][9]=a22;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f31(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_minmax_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s10;
+    case 6: return casadi_s2;
+    case 7: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[11],K[8],tau_ff[2])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][10] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][2] : 0;
+  a18=(a18/a19);
+  a04=(a04*a18);
+  a02=(a02/a19);
+  a03=(a03*a02);
+  a04=(a04-a03);
+  a04=casadi_fabs(a04);
+  a20=(a20/a22);
+  a08=(a08*a20);
+  a15=(a15/a22);
+  a07=(a07*a15);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a07=(a04+a08);
+  a04=(a04-a08);
+  a04=casadi_fabs(a04);
+  a07=(a07-a04);
+  a04=2.;
+  a07=(a07/a04);
+  a23=(a23<=a07);
+  a08=arg[5]? arg[5][3] : 0;
+  a22=5.0000000000000000e-01;
+  a03=1.;
+  a19=casadi_sq(a18);
+  a24=casadi_sq(a02);
+  a19=(a19-a24);
+  a24=casadi_sq(a20);
+  a25=casadi_sq(a15);
+  a24=(a24-a25);
+  a19=(a19+a24);
+  a19=casadi_sq(a19);
+  a24=(2.*a18);
+  a24=(a24*a02);
+  a25=(2.*a20);
+  a25=(a25*a15);
+  a24=(a24+a25);
+  a24=casadi_sq(a24);
+  a19=(a19+a24);
+  a19=sqrt(a19);
+  a19=(a22*a19);
+  a19=(a03-a19);
+  a24=casadi_fabs(a19);
+  a19=(a19+a24);
+  a22=(a22*a19);
+  a22=sqrt(a22);
+  a08=(a08<=a22);
+  a23=(a23&&a08);
+  a18=(a06*a18);
+  a05=(a05*a18);
+  a02=(a00*a02);
+  a08=(a02*a21);
+  a05=(a05-a08);
+  a18=(a18/a05);
+  a06=(a06*a20);
+  a12=(a12*a06);
+  a15=(a00*a15);
+  a11=(a15*a11);
+  a12=(a12-a11);
+  a06=(a06/a12);
+  a02=(a02/a05);
+  a05=(-a02);
+  a15=(a15/a12);
+  a12=(-a15);
+  a11=arg[7]? arg[7][0] : 0;
+  a20=arg[6]? arg[6][0] : 0;
+  a21=(a21+a17);
+  a21=(a21+a09);
+  a09=arg[2]? arg[2][0] : 0;
+  a17=(a21-a09);
+  a20=(a20*a17);
+  a08=arg[6]? arg[6][1] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[2]? arg[2][1] : 0;
+  a01=(a14-a13);
+  a08=(a08*a01);
+  a20=(a20+a08);
+  a08=arg[6]? arg[6][2] : 0;
+  a16=arg[0]? arg[0][2] : 0;
+  a19=arg[5]? arg[5][1] : 0;
+  a24=arg[0]? arg[0][0] : 0;
+  a25=(a21-a24);
+  a26=arg[5]? arg[5][0] : 0;
+  a25=(a25/a26);
+  a25=(a25-a16);
+  a25=(a19*a25);
+  a25=(a16+a25);
+  a27=arg[3]? arg[3][0] : 0;
+  a28=(a25-a27);
+  a08=(a08*a28);
+  a20=(a20+a08);
+  a08=arg[6]? arg[6][3] : 0;
+  a29=arg[0]? arg[0][3] : 0;
+  a30=arg[0]? arg[0][1] : 0;
+  a31=(a14-a30);
+  a31=(a31/a26);
+  a31=(a31-a29);
+  a19=(a19*a31);
+  a19=(a29+a19);
+  a31=arg[3]? arg[3][1] : 0;
+  a26=(a19-a31);
+  a08=(a08*a26);
+  a20=(a20+a08);
+  a11=(a11-a20);
+  a20=(a18*a11);
+  a08=arg[7]? arg[7][1] : 0;
+  a32=arg[6]? arg[6][4] : 0;
+  a32=(a32*a17);
+  a17=arg[6]? arg[6][5] : 0;
+  a17=(a17*a01);
+  a32=(a32+a17);
+  a17=arg[6]? arg[6][6] : 0;
+  a17=(a17*a28);
+  a32=(a32+a17);
+  a17=arg[6]? arg[6][7] : 0;
+  a17=(a17*a26);
+  a32=(a32+a17);
+  a08=(a08-a32);
+  a32=(a06*a08);
+  a20=(a20+a32);
+  a02=(a02*a11);
+  a15=(a15*a08);
+  a02=(a02+a15);
+  a02=(-a02);
+  a15=arg[5]? arg[5][4] : 0;
+  a08=arg[5]? arg[5][5] : 0;
+  arg[8]=w+0;
+  arg[9]=w+4;
+  arg[10] = arg[5]? arg[5] + 4 : 0;
+  arg[11] = arg[5]? arg[5] + 6 : 0;
+  arg[12] = arg[5]? arg[5] + 8 : 0;
+  res[4]=w+12;
+  res[5]=w+14;
+  w[0] = a18;
+  w[1] = a06;
+  w[2] = a05;
+  w[3] = a12;
+  w[4] = a20;
+  w[5] = a02;
+  if (casadi_f16(arg+8, res+4, iw, w+15, 0)) return 1;
+  a18 = w[12];
+  a06 = w[13];
+  a05 = w[14];
+  a12=(a18+a06);
+  a20=arg[0]? arg[0][4] : 0;
+  a12=(a12+a20);
+  a02=arg[0]? arg[0][5] : 0;
+  a12=(a12+a02);
+  a11=arg[0]? arg[0][6] : 0;
+  a12=(a12+a11);
+  a32=arg[0]? arg[0][7] : 0;
+  a12=(a12+a32);
+  a17=arg[0]? arg[0][8] : 0;
+  a12=(a12+a17);
+  a26=arg[0]? arg[0][9] : 0;
+  a12=(a12+a26);
+  a28=arg[0]? arg[0][10] : 0;
+  a12=(a12+a28);
+  a01=arg[0]? arg[0][11] : 0;
+  a12=(a12+a01);
+  a33=arg[0]? arg[0][12] : 0;
+  a12=(a12+a33);
+  a34=arg[0]? arg[0][13] : 0;
+  a12=(a12+a34);
+  a12=(a12+a21);
+  a12=(a12+a14);
+  a12=(a12+a25);
+  a12=(a12+a19);
+  a12=casadi_fabs(a12);
+  a35=casadi_inf;
+  a12=(a12<a35);
+  a35=(a23&&a12);
+  a35=(a10&&a35);
+  a36=(-a15);
+  a18=casadi_fmax(a18,a36);
+  a18=casadi_fmin(a18,a15);
+  a18=(a35?a18:0);
+  if (res[0]!=0) res[0][0]=a18;
+  a18=(-a08);
+  a06=casadi_fmax(a06,a18);
+  a06=casadi_fmin(a06,a08);
+  a06=(a35?a06:0);
+  if (res[0]!=0) res[0][1]=a06;
+  a06=(a10&&a12);
+  a08=(a06?a21:0);
+  a18=(!a06);
+  a24=(a18?a24:0);
+  a08=(a08+a24);
+  if (res[1]!=0) res[1][0]=a08;
+  a08=(a06?a14:0);
+  a30=(a18?a30:0);
+  a08=(a08+a30);
+  if (res[1]!=0) res[1][1]=a08;
+  a08=(a06?a25:0);
+  a16=(a18?a16:0);
+  a08=(a08+a16);
+  if (res[1]!=0) res[1][2]=a08;
+  a06=(a06?a19:0);
+  a18=(a18?a29:0);
+  a06=(a06+a18);
+  if (res[1]!=0) res[1][3]=a06;
+  a06=(a35?a20:0);
+  a18=(!a35);
+  a20=(a18?a20:0);
+  a06=(a06+a20);
+  if (res[1]!=0) res[1][4]=a06;
+  a06=(a35?a02:0);
+  a02=(a18?a02:0);
+  a06=(a06+a02);
+  if (res[1]!=0) res[1][5]=a06;
+  a06=(a35?a11:0);
+  a11=(a18?a11:0);
+  a06=(a06+a11);
+  if (res[1]!=0) res[1][6]=a06;
+  a06=(a35?a32:0);
+  a32=(a18?a32:0);
+  a06=(a06+a32);
+  if (res[1]!=0) res[1][7]=a06;
+  a06=(a35?a17:0);
+  a17=(a18?a17:0);
+  a06=(a06+a17);
+  if (res[1]!=0) res[1][8]=a06;
+  a06=(a35?a26:0);
+  a26=(a18?a26:0);
+  a06=(a06+a26);
+  if (res[1]!=0) res[1][9]=a06;
+  a06=(a35?a28:0);
+  a28=(a18?a28:0);
+  a06=(a06+a28);
+  if (res[1]!=0) res[1][10]=a06;
+  a06=(a35?a01:0);
+  a01=(a18?a01:0);
+  a06=(a06+a01);
+  if (res[1]!=0) res[1][11]=a06;
+  a06=(a35?a33:0);
+  a33=(a18?a33:0);
+  a06=(a06+a33);
+  if (res[1]!=0) res[1][12]=a06;
+  a35=(a35?a34:0);
+  a18=(a18?a34:0);
+  a35=(a35+a18);
+  if (res[1]!=0) res[1][13]=a35;
+  a35=(a05==a04);
+  a04=(a35?a04:0);
+  a35=(!a35);
+  a05=(a05==a03);
+  a18=4.;
+  a05=(a05?a18:0);
+  a35=(a35?a05:0);
+  a04=(a04+a35);
+  a04=(a12?a04:0);
+  a12=(!a12);
+  a35=3.;
+  a12=(a12?a35:0);
+  a04=(a04+a12);
+  a04=(a23?a04:0);
+  a23=(!a23);
+  a23=(a23?a03:0);
+  a04=(a04+a23);
+  a04=(a10?a04:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a04=(a04+a10);
+  if (res[2]!=0) res[2][0]=a04;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a25;
+  if (res[3]!=0) res[3][3]=a19;
+  a09=(a09-a21);
+  if (res[3]!=0) res[3][4]=a09;
+  a13=(a13-a14);
+  if (res[3]!=0) res[3][5]=a13;
+  a27=(a27-a25);
+  if (res[3]!=0) res[3][6]=a27;
+  a31=(a31-a19);
+  if (res[3]!=0) res[3][7]=a31;
+  if (res[3]!=0) res[3][8]=a07;
+  if (res[3]!=0) res[3][9]=a22;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f32(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_preload_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s10;
+    case 6: return casadi_s2;
+    case 7: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 51;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 51*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_plant_xedd:(xe[2],xed[2],tau_a[2],plant[15])->(xedd[2]) */
+static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -10695,7 +13854,7 @@ static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f27(arg, res, iw, w, mem);
+  return casadi_f33(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_checkout(void) {
@@ -10772,7 +13931,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_plant_step:(x[4],tau_a[2],plant[15],h)->(x_next[4]) */
-static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -11929,7 +15088,7 @@ static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f28(arg, res, iw, w, mem);
+  return casadi_f34(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step_checkout(void) {
@@ -12006,7 +15165,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_step_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_measure:(xe[2],plant[15])->(qa[2]) */
-static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=0.;
@@ -12081,7 +15240,7 @@ static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f29(arg, res, iw, w, mem);
+  return casadi_f35(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure_checkout(void) {
@@ -12154,7 +15313,7 @@ CASADI_SYMBOL_EXPORT int fivebar_measure_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* fivebar_na_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -12171,7 +15330,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12196,19 +15355,19 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12221,7 +15380,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f30(arg, res, iw, w, mem);
+  return casadi_f36(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_checkout(void) {
@@ -12266,17 +15425,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_closed_loop_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12298,7 +15457,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_work_bytes(casadi_int *sz_arg, c
 }
 
 /* fivebar_na_minmax_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -12315,7 +15474,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12340,19 +15499,19 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12365,7 +15524,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f31(arg, res, iw, w, mem);
+  return casadi_f37(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop_checkout(void) {
@@ -12410,17 +15569,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_minmax_closed_loop_name_out(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12442,7 +15601,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop_work_bytes(casadi_int *sz
 }
 
 /* fivebar_na_preload_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+116, *w07=w+120, *w08=w+122, *w09=w+128, *w10=w+130, *w11=w+132, *w13=w+134, *w14=w+136, w15, w16;
   casadi_real w17, *w18=w+150, *w19=w+154;
@@ -12459,7 +15618,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12484,19 +15643,19 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12509,7 +15668,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f32(arg, res, iw, w, mem);
+  return casadi_f38(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop_checkout(void) {
@@ -12554,17 +15713,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_preload_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12586,7 +15745,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop_work_bytes(casadi_int *s
 }
 
 /* fivebar_na_proj_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -12603,7 +15762,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12628,19 +15787,19 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12653,7 +15812,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f33(arg, res, iw, w, mem);
+  return casadi_f39(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_checkout(void) {
@@ -12698,17 +15857,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_closed_loop_name_out(casadi_int
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12730,7 +15889,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_work_bytes(casadi_int *sz_a
 }
 
 /* fivebar_na_proj_minmax_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -12747,7 +15906,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12772,19 +15931,19 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12797,7 +15956,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f34(arg, res, iw, w, mem);
+  return casadi_f40(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop_checkout(void) {
@@ -12842,17 +16001,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_minmax_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12874,7 +16033,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop_work_bytes(casadi_in
 }
 
 /* fivebar_na_proj_preload_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+117, *w07=w+121, *w08=w+123, *w09=w+129, *w10=w+131, *w11=w+133, *w13=w+135, *w14=w+137, w15, w16;
   casadi_real w17, *w18=w+151, *w19=w+155;
@@ -12891,7 +16050,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12916,19 +16075,19 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12941,7 +16100,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f35(arg, res, iw, w, mem);
+  return casadi_f41(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop_checkout(void) {
@@ -12986,17 +16145,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_preload_closed_loop_name_out(ca
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -13018,7 +16177,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop_work_bytes(casadi_i
 }
 
 /* fivebar_apd_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
-static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -13035,7 +16194,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -13060,19 +16219,19 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -13085,7 +16244,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f36(arg, res, iw, w, mem);
+  return casadi_f42(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop_checkout(void) {
@@ -13130,17 +16289,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_closed_loop_name_out(casadi_int i) 
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s14;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -13162,7 +16321,7 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop_work_bytes(casadi_int *sz_arg, 
 }
 
 /* fivebar_apd_minmax_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
-static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -13179,7 +16338,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -13204,19 +16363,19 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -13229,7 +16388,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f37(arg, res, iw, w, mem);
+  return casadi_f43(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop_checkout(void) {
@@ -13274,17 +16433,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_minmax_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s14;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -13306,7 +16465,7 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop_work_bytes(casadi_int *s
 }
 
 /* fivebar_apd_preload_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
-static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+109, *w07=w+113, *w08=w+115, *w09=w+121, *w10=w+123, *w11=w+125, *w13=w+127, *w14=w+129, w15, w16;
   casadi_real w17, *w18=w+143, *w19=w+147;
@@ -13323,7 +16482,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -13348,19 +16507,19 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -13373,7 +16532,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f38(arg, res, iw, w, mem);
+  return casadi_f44(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop_checkout(void) {
@@ -13418,17 +16577,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_preload_closed_loop_name_out(casadi
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s14;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -13449,8 +16608,884 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop_work_bytes(casadi_int *
   return 0;
 }
 
+/* fivebar_ctc_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
+static int casadi_f45(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
+  casadi_real w17, *w18=w+107, *w19=w+111;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+15;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f27(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f45(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 121;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 121*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_ctc_minmax_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
+static int casadi_f46(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
+  casadi_real w17, *w18=w+107, *w19=w+111;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+15;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f46(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 121;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 121*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_ctc_preload_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
+static int casadi_f47(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+107, *w07=w+111, *w08=w+113, *w09=w+119, *w10=w+121, *w11=w+123, *w13=w+125, *w14=w+127, w15, w16;
+  casadi_real w17, *w18=w+141, *w19=w+145;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+15;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f47(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 155;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 155*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_closed_loop:(x[18],u[16],p[26])->(x_next[18],y[17]) */
+static int casadi_f48(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w15=w+79, *w16=w+81, w17, w18, w19, *w20=w+95, *w21=w+99;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+11;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+14;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f30(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 2, res[1]+4);
+  if (res[1]) res[1][6] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f48(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s4;
+    case 2: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 109;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 109*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_minmax_closed_loop:(x[18],u[16],p[26])->(x_next[18],y[17]) */
+static int casadi_f49(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w15=w+79, *w16=w+81, w17, w18, w19, *w20=w+95, *w21=w+99;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+11;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+14;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f31(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 2, res[1]+4);
+  if (res[1]) res[1][6] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f49(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s4;
+    case 2: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 109;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 109*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_preload_closed_loop:(x[18],u[16],p[26])->(x_next[18],y[17]) */
+static int casadi_f50(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+88, *w07=w+92, *w15=w+94, *w16=w+96, w17, w18, w19, *w20=w+110, *w21=w+114;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+11;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+14;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f32(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 2, res[1]+4);
+  if (res[1]) res[1][6] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f50(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s4;
+    case 2: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 124;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 124*sizeof(casadi_real);
+  return 0;
+}
+
 /* fivebar_forward_dynamics_jacobians:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],d_xe[4],d_xed[4],d_tau_a[4],d_theta[20],sing[2]) */
-static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f51(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -14871,7 +18906,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f39(arg, res, iw, w, mem);
+  return casadi_f51(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians_checkout(void) {
@@ -14958,7 +18993,7 @@ CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians_work_bytes(casadi_in
 }
 
 /* fivebar_inverse_dynamics:(xe[2],xed[2],xedd[2],theta[10])->(u[2],sing[2]) */
-static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f52(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -15279,7 +19314,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f40(arg, res, iw, w, mem);
+  return casadi_f52(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_checkout(void) {
@@ -15358,7 +19393,7 @@ CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* fivebar_inverse_dynamics_jacobians:(xe[2],xed[2],xedd[2],theta[10])->(u[2],d_xe[4],d_xed[4],sing[2]) */
-static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f53(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -16443,7 +20478,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f41(arg, res, iw, w, mem);
+  return casadi_f53(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians_checkout(void) {
@@ -16526,7 +20561,7 @@ CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians_work_bytes(casadi_in
 }
 
 /* fivebar_sampled_step_xedd:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],sing[2]) */
-static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f55(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -16858,7 +20893,7 @@ static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 /* fivebar_sampled_step:(x[4],tau_a[2],theta[10],T)->(x_next[4],sing[2]) */
-static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f54(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w00=w+44, w01, w02, *w03=w+48, *w04=w+50, *w05=w+52, *w06=w+54, *w08=w+56, *w09=w+58, *w10=w+60;
   casadi_real w11, *w12=w+64, *w13=w+68;
@@ -16880,7 +20915,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=w09;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -16897,7 +20932,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -16916,7 +20951,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -16933,7 +20968,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -16951,7 +20986,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -16968,7 +21003,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -16987,7 +21022,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -17004,7 +21039,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -17022,7 +21057,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -17039,7 +21074,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -17058,7 +21093,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -17075,7 +21110,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -17088,7 +21123,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f42(arg, res, iw, w, mem);
+  return casadi_f54(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_sampled_step_checkout(void) {
@@ -17167,7 +21202,7 @@ CASADI_SYMBOL_EXPORT int fivebar_sampled_step_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* fivebar_sampled_step_jacobians:(x[4],tau_a[2],theta[10],T)->(x_next[4],d_x[16],d_tau_a[8],sing[2]) */
-static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i, j;
   casadi_real **res1=res+4, *rr, *w00=w+173, w01, w02, *w03=w+177, *w04=w+179, *w05=w+181, *w06=w+183, *w08=w+185, *w09=w+187, *w10=w+191;
   casadi_real *w11=w+195, *w12=w+199, *w13=w+201, w14, *w15=w+205, *w16=w+209, *w17=w+213, *w18=w+217, *w19=w+221, *w20=w+225, *w21=w+229, *w22=w+233;
@@ -17198,7 +21233,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w11;
   res1[4]=0;
   res1[5]=w12;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w13;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -17219,7 +21254,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w17;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w18;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -17242,7 +21277,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w20;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w21;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -17263,7 +21298,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w23;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w24;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -17285,7 +21320,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w25;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w26;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -17306,7 +21341,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w29;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w30;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -17329,7 +21364,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w32;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w33;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -17350,7 +21385,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w35;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w36;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -17372,7 +21407,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w37;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w38;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -17393,7 +21428,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w41;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w42;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -17416,7 +21451,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w44;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w45;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -17437,7 +21472,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w47;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w48;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -17450,18 +21485,18 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w50;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
-  casadi_densify(w50, casadi_s15, w51, 0);
+  casadi_densify(w50, casadi_s17, w51, 0);
   w02 = 6.;
   w02  = (w01/w02);
   for (rr=w52, cs=w50+0; cs!=w50+12; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
-  casadi_trans(w52,casadi_s17, w53, casadi_s16, iw);
+  casadi_trans(w52,casadi_s19, w53, casadi_s18, iw);
   casadi_clear(w54, 12);
   for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w49;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w49, 2, w50, casadi_s15, w54);
+  casadi_mtimes_dense_sparse(w49, 2, w50, casadi_s17, w54);
   casadi_clear(w49, 8);
   for (i=0, rr=w00, cs=w11; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w55;
@@ -17472,15 +21507,15 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w56;
   for (i=0, cs=w53; i<6; ++i) *rr++ = *cs++;
   for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
-  casadi_trans(w56,casadi_s19, w57, casadi_s18, iw);
-  casadi_densify(w57, casadi_s18, w58, 0);
-  casadi_project(w50, casadi_s15, w59, casadi_s20, w);
+  casadi_trans(w56,casadi_s21, w57, casadi_s20, iw);
+  casadi_densify(w57, casadi_s20, w58, 0);
+  casadi_project(w50, casadi_s17, w59, casadi_s22, w);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w57, cs=w57; i<18; ++i) (*rr++)  = (w14*(*cs++));
-  casadi_project(w57, casadi_s18, w60, casadi_s20, w);
+  casadi_project(w57, casadi_s20, w60, casadi_s22, w);
   for (i=0, rr=w59, cs=w60; i<20; ++i) (*rr++) += (*cs++);
-  for (cii=casadi_s21, rr=w55, cs=w59; cii!=casadi_s21+12; ++cii) *rr++ = cs[*cii];
+  for (cii=casadi_s23, rr=w55, cs=w59; cii!=casadi_s23+12; ++cii) *rr++ = cs[*cii];
   for (i=0, rr=w54, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
   casadi_clear(w55, 12);
   for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
@@ -17488,7 +21523,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w49;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w49, 2, w59, casadi_s20, w55);
+  casadi_mtimes_dense_sparse(w49, 2, w59, casadi_s22, w55);
   casadi_clear(w49, 8);
   for (i=0, rr=w00, cs=w17; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w61;
@@ -17502,7 +21537,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w63, cs=w62; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w62, cs=w63; i<24; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w58, cs=w62; i<24; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s15, w62, 0);
+  casadi_densify(w50, casadi_s17, w62, 0);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w63, cs=w63; i<24; ++i) (*rr++)  = (w14*(*cs++));
@@ -17529,7 +21564,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w63, cs=w62; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w62, cs=w63; i<24; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w58, cs=w62; i<24; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s15, w62, 0);
+  casadi_densify(w50, casadi_s17, w62, 0);
   for (i=0, rr=w63, cs=w63; i<24; ++i) (*rr++)  = (w01*(*cs++));
   for (i=0, rr=w62, cs=w63; i<24; ++i) (*rr++) += (*cs++);
   for (rr=w50, cs=w62+0; cs!=w62+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
@@ -17764,7 +21799,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f44(arg, res, iw, w, mem);
+  return casadi_f56(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians_checkout(void) {

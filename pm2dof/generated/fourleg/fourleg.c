@@ -72,7 +72,19 @@ extern "C" {
 #define casadi_f42 CASADI_PREFIX(f42)
 #define casadi_f43 CASADI_PREFIX(f43)
 #define casadi_f44 CASADI_PREFIX(f44)
+#define casadi_f45 CASADI_PREFIX(f45)
+#define casadi_f46 CASADI_PREFIX(f46)
+#define casadi_f47 CASADI_PREFIX(f47)
+#define casadi_f48 CASADI_PREFIX(f48)
+#define casadi_f49 CASADI_PREFIX(f49)
 #define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f50 CASADI_PREFIX(f50)
+#define casadi_f51 CASADI_PREFIX(f51)
+#define casadi_f52 CASADI_PREFIX(f52)
+#define casadi_f53 CASADI_PREFIX(f53)
+#define casadi_f54 CASADI_PREFIX(f54)
+#define casadi_f55 CASADI_PREFIX(f55)
+#define casadi_f56 CASADI_PREFIX(f56)
 #define casadi_f6 CASADI_PREFIX(f6)
 #define casadi_f7 CASADI_PREFIX(f7)
 #define casadi_f8 CASADI_PREFIX(f8)
@@ -102,6 +114,9 @@ extern "C" {
 #define casadi_s22 CASADI_PREFIX(s22)
 #define casadi_s23 CASADI_PREFIX(s23)
 #define casadi_s24 CASADI_PREFIX(s24)
+#define casadi_s25 CASADI_PREFIX(s25)
+#define casadi_s26 CASADI_PREFIX(s26)
+#define casadi_s27 CASADI_PREFIX(s27)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
@@ -307,41 +322,44 @@ static const casadi_int casadi_s10[3] = {24, 1, 1};
 static const casadi_int casadi_s11[3] = {41, 1, 1};
 static const casadi_int casadi_s12[3] = {10, 1, 1};
 static const casadi_int casadi_s13[3] = {21, 1, 1};
-static const casadi_int casadi_s14[3] = {27, 1, 1};
-static const casadi_int casadi_s15[3] = {28, 1, 1};
-static const casadi_int casadi_s16[3] = {68, 1, 1};
-static const casadi_int casadi_s17[3] = {29, 1, 1};
-static const casadi_int casadi_s18[31] = 
+static const casadi_int casadi_s14[3] = {17, 1, 1};
+static const casadi_int casadi_s15[3] = {27, 1, 1};
+static const casadi_int casadi_s16[3] = {28, 1, 1};
+static const casadi_int casadi_s17[3] = {68, 1, 1};
+static const casadi_int casadi_s18[3] = {29, 1, 1};
+static const casadi_int casadi_s19[3] = {26, 1, 1};
+static const casadi_int casadi_s20[3] = {44, 1, 1};
+static const casadi_int casadi_s21[31] = 
   {4, 8, 0, 1, 2, 3, 4, 8,
   12, 16, 20, 0, 1, 2, 3, 0,
   1, 2, 3, 0, 1, 2, 3, 0,
   1, 2, 3, 0, 1, 2, 3};
-static const casadi_int casadi_s19[15] = 
+static const casadi_int casadi_s22[15] = 
   {8, 2, 0, 5, 10, 2, 4, 5,
   6, 7, 3, 4, 5, 6, 7};
-static const casadi_int casadi_s20[21] = 
+static const casadi_int casadi_s23[21] = 
   {2, 8, 0, 0, 0, 1, 2, 4,
   6, 8, 10, 0, 1, 0, 1, 0,
   1, 0, 1, 0, 1};
-static const casadi_int casadi_s21[37] = 
+static const casadi_int casadi_s24[37] = 
   {4, 8, 0, 2, 4, 7, 10, 14,
   18, 22, 26, 2, 3, 2, 3, 0,
   2, 3, 1, 2, 3, 0, 1, 2,
   3, 0, 1, 2, 3, 0, 1, 2,
   3, 0, 1, 2, 3};
-static const casadi_int casadi_s22[33] = 
+static const casadi_int casadi_s25[33] = 
   {8, 4, 0, 5, 10, 18, 26, 2,
   4, 5, 6, 7, 3, 4, 5, 6,
   7, 0, 1, 2, 3, 4, 5, 6,
   7, 0, 1, 2, 3, 4, 5, 6,
   7};
-static const casadi_int casadi_s23[39] = 
+static const casadi_int casadi_s26[39] = 
   {4, 8, 0, 3, 6, 9, 12, 16,
   20, 24, 28, 0, 2, 3, 1, 2,
   3, 0, 2, 3, 1, 2, 3, 0,
   1, 2, 3, 0, 1, 2, 3, 0,
   1, 2, 3, 0, 1, 2, 3};
-static const casadi_int casadi_s24[16] = 
+static const casadi_int casadi_s27[16] = 
   {1, 2, 4, 5, 7, 8, 10, 11,
   14, 15, 18, 19, 22, 23, 26, 27};
 
@@ -36986,8 +37004,5643 @@ CASADI_SYMBOL_EXPORT int fourleg_apd_preload_step_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* fourleg_plant_xedd:(xe[2],xed[2],tau_a[4],plant[27])->(xedd[2]) */
+/* fourleg_ctc_step:(state[24],qa[4],xd[2],xd_dot[2],xd_ddot[2],params[21])->(tau_a[4],state_next[24],status,diag[10]) */
 static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  casadi_real a72, a73, a74, a75, a76, a77, a78, a79, a80, a81, a82, a83;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a05=(a04*a01);
+  a06=4.8799999999999999e-01;
+  a07=arg[1]? arg[1][3] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a09=(a05+a09);
+  a10=casadi_sq(a09);
+  a11=5.0000000000000000e-01;
+  a12=(a11+a05);
+  a13=arg[1]? arg[1][2] : 0;
+  a14=sin(a13);
+  a15=(a06*a14);
+  a12=(a12+a15);
+  a15=casadi_sq(a12);
+  a10=(a10+a15);
+  a15=-5.0000000000000000e-01;
+  a05=(a15+a05);
+  a16=arg[1]? arg[1][1] : 0;
+  a17=sin(a16);
+  a18=(a06*a17);
+  a05=(a05+a18);
+  a18=casadi_sq(a05);
+  a10=(a10+a18);
+  a18=1.2000000000000000e+00;
+  a04=(a04*a02);
+  a18=(a18+a04);
+  a07=cos(a07);
+  a19=(a06*a07);
+  a18=(a18+a19);
+  a19=2.5000000000000000e-01;
+  a20=2.4399999999999999e-01;
+  a21=(a20*a08);
+  a21=(a19+a21);
+  a21=casadi_sq(a21);
+  a22=5.9999999999999998e-01;
+  a23=(a20*a07);
+  a22=(a22+a23);
+  a22=casadi_sq(a22);
+  a21=(a21+a22);
+  a22=(a20*a01);
+  a22=(a19+a22);
+  a22=casadi_sq(a22);
+  a21=(a21-a22);
+  a24=-5.9535999999999999e-02;
+  a25=casadi_sq(a02);
+  a24=(a24*a25);
+  a21=(a21+a24);
+  a25=(a18*a21);
+  a26=8.6599999999999999e-01;
+  a26=(a26+a04);
+  a16=cos(a16);
+  a04=(a06*a16);
+  a04=(a26+a04);
+  a27=4.3300000000000000e-01;
+  a28=(a20*a16);
+  a29=(a27+a28);
+  a29=casadi_sq(a29);
+  a29=(a29-a22);
+  a29=(a29+a24);
+  a30=5.9535999999999999e-02;
+  a31=casadi_sq(a17);
+  a30=(a30*a31);
+  a29=(a29+a30);
+  a30=(a04*a29);
+  a25=(a25+a30);
+  a13=cos(a13);
+  a06=(a06*a13);
+  a26=(a26+a06);
+  a06=(a20*a14);
+  a06=(a11+a06);
+  a06=casadi_sq(a06);
+  a30=(a20*a13);
+  a27=(a27+a30);
+  a27=casadi_sq(a27);
+  a06=(a06+a27);
+  a06=(a06-a22);
+  a06=(a06+a24);
+  a24=(a26*a06);
+  a25=(a25+a24);
+  a24=(a10*a25);
+  a22=(a09*a18);
+  a27=(a12*a26);
+  a22=(a22+a27);
+  a27=(a05*a04);
+  a22=(a22+a27);
+  a09=(a09*a21);
+  a12=(a12*a06);
+  a09=(a09+a12);
+  a05=(a05*a29);
+  a09=(a09+a05);
+  a05=(a22*a09);
+  a24=(a24-a05);
+  a18=casadi_sq(a18);
+  a04=casadi_sq(a04);
+  a18=(a18+a04);
+  a26=casadi_sq(a26);
+  a18=(a18+a26);
+  a10=(a10*a18);
+  a26=casadi_sq(a22);
+  a10=(a10-a26);
+  a24=(a24/a10);
+  a03=(a03+a24);
+  a26=casadi_sq(a03);
+  a04=-2.5000000000000000e-01;
+  a05=(a00*a01);
+  a29=(a04+a05);
+  a18=(a18*a09);
+  a22=(a22*a25);
+  a18=(a18-a22);
+  a18=(a18/a10);
+  a29=(a29+a18);
+  a10=casadi_sq(a29);
+  a26=(a26+a10);
+  a26=sqrt(a26);
+  a10=(a00+a26);
+  a10=casadi_fabs(a10);
+  a22=(a00*a17);
+  a25=(a22+a18);
+  a09=casadi_sq(a25);
+  a12=-4.3300000000000000e-01;
+  a06=(a00*a16);
+  a06=(a12+a06);
+  a06=(a06+a24);
+  a21=casadi_sq(a06);
+  a09=(a09+a21);
+  a09=sqrt(a09);
+  a21=(a00+a09);
+  a21=casadi_fabs(a21);
+  a10=casadi_fmax(a10,a21);
+  a21=(a00*a13);
+  a12=(a12+a21);
+  a12=(a12+a24);
+  a21=casadi_sq(a12);
+  a27=(a00*a14);
+  a15=(a15+a27);
+  a15=(a15+a18);
+  a31=casadi_sq(a15);
+  a21=(a21+a31);
+  a21=sqrt(a21);
+  a31=(a00+a21);
+  a31=casadi_fabs(a31);
+  a10=casadi_fmax(a10,a31);
+  a31=-5.9999999999999998e-01;
+  a32=(a00*a07);
+  a31=(a31+a32);
+  a31=(a31+a24);
+  a32=casadi_sq(a31);
+  a33=(a00*a08);
+  a04=(a04+a33);
+  a04=(a04+a18);
+  a34=casadi_sq(a04);
+  a32=(a32+a34);
+  a32=sqrt(a32);
+  a34=(a00+a32);
+  a34=casadi_fabs(a34);
+  a10=casadi_fmax(a10,a34);
+  a34=arg[5]? arg[5][20] : 0;
+  a10=(a10<=a34);
+  a34=arg[5]? arg[5][6] : 0;
+  a03=(a03/a26);
+  a35=(a01*a03);
+  a29=(a29/a26);
+  a26=(a02*a29);
+  a35=(a35-a26);
+  a26=casadi_fabs(a35);
+  a06=(a06/a09);
+  a36=(a17*a06);
+  a25=(a25/a09);
+  a09=(a16*a25);
+  a36=(a36-a09);
+  a09=casadi_fabs(a36);
+  a37=(a26+a09);
+  a26=(a26-a09);
+  a26=casadi_fabs(a26);
+  a37=(a37-a26);
+  a26=2.;
+  a37=(a37/a26);
+  a12=(a12/a21);
+  a09=(a14*a12);
+  a15=(a15/a21);
+  a21=(a13*a15);
+  a09=(a09-a21);
+  a21=casadi_fabs(a09);
+  a38=(a37+a21);
+  a37=(a37-a21);
+  a37=casadi_fabs(a37);
+  a38=(a38-a37);
+  a38=(a38/a26);
+  a31=(a31/a32);
+  a37=(a08*a31);
+  a04=(a04/a32);
+  a32=(a07*a04);
+  a37=(a37-a32);
+  a32=casadi_fabs(a37);
+  a21=(a38+a32);
+  a38=(a38-a32);
+  a38=casadi_fabs(a38);
+  a21=(a21-a38);
+  a21=(a21/a26);
+  a34=(a34<=a21);
+  a38=arg[5]? arg[5][7] : 0;
+  a32=1.;
+  a39=casadi_sq(a03);
+  a40=casadi_sq(a29);
+  a39=(a39-a40);
+  a40=casadi_sq(a06);
+  a41=casadi_sq(a25);
+  a40=(a40-a41);
+  a39=(a39+a40);
+  a40=casadi_sq(a12);
+  a41=casadi_sq(a15);
+  a40=(a40-a41);
+  a39=(a39+a40);
+  a40=casadi_sq(a31);
+  a41=casadi_sq(a04);
+  a40=(a40-a41);
+  a39=(a39+a40);
+  a39=casadi_sq(a39);
+  a40=(2.*a03);
+  a40=(a40*a29);
+  a41=(2.*a06);
+  a41=(a41*a25);
+  a40=(a40+a41);
+  a41=(2.*a12);
+  a41=(a41*a15);
+  a40=(a40+a41);
+  a41=(2.*a31);
+  a41=(a41*a04);
+  a40=(a40+a41);
+  a40=casadi_sq(a40);
+  a39=(a39+a40);
+  a39=sqrt(a39);
+  a19=(a19*a39);
+  a19=(a32-a19);
+  a39=casadi_fabs(a19);
+  a19=(a19+a39);
+  a11=(a11*a19);
+  a11=sqrt(a11);
+  a38=(a38<=a11);
+  a34=(a34&&a38);
+  a38=(a20*a03);
+  a19=(a05*a38);
+  a39=(a00*a29);
+  a40=(a20*a02);
+  a41=(a39*a40);
+  a19=(a19-a41);
+  a38=(a38/a19);
+  a39=(a39/a19);
+  a41=casadi_sq(a39);
+  a42=(a00*a25);
+  a43=(a20*a06);
+  a44=(a22*a43);
+  a45=(a42*a28);
+  a44=(a44-a45);
+  a42=(a42/a44);
+  a45=casadi_sq(a42);
+  a41=(a41+a45);
+  a45=(a00*a15);
+  a46=(a20*a12);
+  a47=(a27*a46);
+  a48=(a45*a30);
+  a47=(a47-a48);
+  a45=(a45/a47);
+  a48=casadi_sq(a45);
+  a41=(a41+a48);
+  a48=(a00*a04);
+  a20=(a20*a31);
+  a49=(a33*a20);
+  a50=(a48*a23);
+  a49=(a49-a50);
+  a48=(a48/a49);
+  a50=casadi_sq(a48);
+  a41=(a41+a50);
+  a50=arg[4]? arg[4][0] : 0;
+  a51=arg[5]? arg[5][2] : 0;
+  a52=arg[3]? arg[3][0] : 0;
+  a53=arg[0]? arg[0][2] : 0;
+  a54=arg[5]? arg[5][5] : 0;
+  a55=arg[0]? arg[0][0] : 0;
+  a56=(a24-a55);
+  a57=arg[5]? arg[5][4] : 0;
+  a56=(a56/a57);
+  a56=(a56-a53);
+  a56=(a54*a56);
+  a56=(a53+a56);
+  a52=(a52-a56);
+  a51=(a51*a52);
+  a50=(a50+a51);
+  a51=arg[5]? arg[5][0] : 0;
+  a58=arg[2]? arg[2][0] : 0;
+  a58=(a58-a24);
+  a51=(a51*a58);
+  a50=(a50+a51);
+  a51=(a38*a50);
+  a59=arg[4]? arg[4][1] : 0;
+  a60=arg[5]? arg[5][3] : 0;
+  a61=arg[3]? arg[3][1] : 0;
+  a62=arg[0]? arg[0][3] : 0;
+  a63=arg[0]? arg[0][1] : 0;
+  a64=(a18-a63);
+  a64=(a64/a57);
+  a64=(a64-a62);
+  a54=(a54*a64);
+  a54=(a62+a54);
+  a61=(a61-a54);
+  a60=(a60*a61);
+  a59=(a59+a60);
+  a60=arg[5]? arg[5][1] : 0;
+  a64=arg[2]? arg[2][1] : 0;
+  a64=(a64-a18);
+  a60=(a60*a64);
+  a59=(a59+a60);
+  a60=(a39*a59);
+  a51=(a51-a60);
+  a60=(a38*a56);
+  a57=(a39*a54);
+  a60=(a60-a57);
+  a57=(a00*a60);
+  a65=(a57*a01);
+  a65=(a65*a60);
+  a05=(a05/a19);
+  a66=(a05*a54);
+  a40=(a40/a19);
+  a19=(a40*a56);
+  a66=(a66-a19);
+  a19=(a00*a66);
+  a67=(a19*a29);
+  a67=(a67*a66);
+  a65=(a65+a67);
+  a67=(a39*a65);
+  a57=(a57*a02);
+  a57=(a57*a60);
+  a19=(a19*a03);
+  a19=(a19*a66);
+  a57=(a57+a19);
+  a19=(a38*a57);
+  a67=(a67-a19);
+  a51=(a51+a67);
+  a67=(a38*a51);
+  a19=arg[0]? arg[0][4] : 0;
+  a67=(a67*a19);
+  a43=(a43/a44);
+  a68=(a43*a50);
+  a69=(a42*a59);
+  a68=(a68-a69);
+  a69=(a43*a56);
+  a70=(a42*a54);
+  a69=(a69-a70);
+  a70=(a00*a69);
+  a71=(a70*a17);
+  a71=(a71*a69);
+  a22=(a22/a44);
+  a72=(a22*a54);
+  a28=(a28/a44);
+  a44=(a28*a56);
+  a72=(a72-a44);
+  a44=(a00*a72);
+  a73=(a44*a25);
+  a73=(a73*a72);
+  a71=(a71+a73);
+  a73=(a42*a71);
+  a70=(a70*a16);
+  a70=(a70*a69);
+  a44=(a44*a06);
+  a44=(a44*a72);
+  a70=(a70+a44);
+  a44=(a43*a70);
+  a73=(a73-a44);
+  a68=(a68+a73);
+  a73=(a43*a68);
+  a44=arg[0]? arg[0][5] : 0;
+  a73=(a73*a44);
+  a67=(a67+a73);
+  a46=(a46/a47);
+  a73=(a46*a50);
+  a74=(a45*a59);
+  a73=(a73-a74);
+  a74=(a46*a56);
+  a75=(a45*a54);
+  a74=(a74-a75);
+  a75=(a00*a74);
+  a76=(a75*a14);
+  a76=(a76*a74);
+  a27=(a27/a47);
+  a77=(a27*a54);
+  a30=(a30/a47);
+  a47=(a30*a56);
+  a77=(a77-a47);
+  a47=(a00*a77);
+  a78=(a47*a15);
+  a78=(a78*a77);
+  a76=(a76+a78);
+  a78=(a45*a76);
+  a75=(a75*a13);
+  a75=(a75*a74);
+  a47=(a47*a12);
+  a47=(a47*a77);
+  a75=(a75+a47);
+  a47=(a46*a75);
+  a78=(a78-a47);
+  a73=(a73+a78);
+  a78=(a46*a73);
+  a47=arg[0]? arg[0][6] : 0;
+  a78=(a78*a47);
+  a67=(a67+a78);
+  a20=(a20/a49);
+  a78=(a20*a50);
+  a79=(a48*a59);
+  a78=(a78-a79);
+  a79=(a20*a56);
+  a80=(a48*a54);
+  a79=(a79-a80);
+  a80=(a00*a79);
+  a81=(a80*a08);
+  a81=(a81*a79);
+  a33=(a33/a49);
+  a82=(a33*a54);
+  a23=(a23/a49);
+  a49=(a23*a56);
+  a82=(a82-a49);
+  a00=(a00*a82);
+  a49=(a00*a04);
+  a49=(a49*a82);
+  a81=(a81+a49);
+  a49=(a48*a81);
+  a80=(a80*a07);
+  a80=(a80*a79);
+  a00=(a00*a31);
+  a00=(a00*a82);
+  a80=(a80+a00);
+  a00=(a20*a80);
+  a49=(a49-a00);
+  a78=(a78+a49);
+  a49=(a20*a78);
+  a00=arg[0]? arg[0][7] : 0;
+  a49=(a49*a00);
+  a67=(a67+a49);
+  a49=(a05*a59);
+  a83=(a40*a50);
+  a49=(a49-a83);
+  a57=(a40*a57);
+  a65=(a05*a65);
+  a57=(a57-a65);
+  a49=(a49+a57);
+  a02=(a02*a03);
+  a01=(a01*a29);
+  a02=(a02+a01);
+  a01=(a49*a02);
+  a66=casadi_sq(a66);
+  a66=(a66*a35);
+  a01=(a01+a66);
+  a66=(a38*a01);
+  a02=(a51*a02);
+  a29=casadi_sq(a60);
+  a29=(a29*a35);
+  a02=(a02-a29);
+  a29=(a40*a02);
+  a66=(a66-a29);
+  a29=arg[0]? arg[0][8] : 0;
+  a66=(a66*a29);
+  a67=(a67+a66);
+  a66=(a22*a59);
+  a35=(a28*a50);
+  a66=(a66-a35);
+  a70=(a28*a70);
+  a71=(a22*a71);
+  a70=(a70-a71);
+  a66=(a66+a70);
+  a16=(a16*a06);
+  a17=(a17*a25);
+  a16=(a16+a17);
+  a17=(a66*a16);
+  a72=casadi_sq(a72);
+  a72=(a72*a36);
+  a17=(a17+a72);
+  a72=(a43*a17);
+  a16=(a68*a16);
+  a25=casadi_sq(a69);
+  a25=(a25*a36);
+  a16=(a16-a25);
+  a25=(a28*a16);
+  a72=(a72-a25);
+  a25=arg[0]? arg[0][9] : 0;
+  a72=(a72*a25);
+  a67=(a67+a72);
+  a72=(a27*a59);
+  a36=(a30*a50);
+  a72=(a72-a36);
+  a75=(a30*a75);
+  a76=(a27*a76);
+  a75=(a75-a76);
+  a72=(a72+a75);
+  a13=(a13*a12);
+  a14=(a14*a15);
+  a13=(a13+a14);
+  a14=(a72*a13);
+  a77=casadi_sq(a77);
+  a77=(a77*a09);
+  a14=(a14+a77);
+  a77=(a46*a14);
+  a13=(a73*a13);
+  a15=casadi_sq(a74);
+  a15=(a15*a09);
+  a13=(a13-a15);
+  a15=(a30*a13);
+  a77=(a77-a15);
+  a15=arg[0]? arg[0][10] : 0;
+  a77=(a77*a15);
+  a67=(a67+a77);
+  a59=(a33*a59);
+  a50=(a23*a50);
+  a59=(a59-a50);
+  a80=(a23*a80);
+  a81=(a33*a81);
+  a80=(a80-a81);
+  a59=(a59+a80);
+  a07=(a07*a31);
+  a08=(a08*a04);
+  a07=(a07+a08);
+  a08=(a59*a07);
+  a82=casadi_sq(a82);
+  a82=(a82*a37);
+  a08=(a08+a82);
+  a82=(a20*a08);
+  a07=(a78*a07);
+  a04=casadi_sq(a79);
+  a04=(a04*a37);
+  a07=(a07-a04);
+  a04=(a23*a07);
+  a82=(a82-a04);
+  a04=arg[0]? arg[0][11] : 0;
+  a82=(a82*a04);
+  a67=(a67+a82);
+  a40=(a40*a49);
+  a82=arg[0]? arg[0][12] : 0;
+  a40=(a40*a82);
+  a67=(a67-a40);
+  a28=(a28*a66);
+  a40=arg[0]? arg[0][13] : 0;
+  a28=(a28*a40);
+  a67=(a67-a28);
+  a30=(a30*a72);
+  a28=arg[0]? arg[0][14] : 0;
+  a30=(a30*a28);
+  a67=(a67-a30);
+  a23=(a23*a59);
+  a30=arg[0]? arg[0][15] : 0;
+  a23=(a23*a30);
+  a67=(a67-a23);
+  a23=(a38*a60);
+  a37=arg[0]? arg[0][16] : 0;
+  a23=(a23*a37);
+  a67=(a67+a23);
+  a23=(a43*a69);
+  a31=arg[0]? arg[0][17] : 0;
+  a23=(a23*a31);
+  a67=(a67+a23);
+  a23=(a46*a74);
+  a80=arg[0]? arg[0][18] : 0;
+  a23=(a23*a80);
+  a67=(a67+a23);
+  a23=(a20*a79);
+  a81=arg[0]? arg[0][19] : 0;
+  a23=(a23*a81);
+  a67=(a67+a23);
+  a23=0.;
+  a50=(a23<=a60);
+  a77=(a50?a32:0);
+  a50=(!a50);
+  a09=-1.;
+  a50=(a50?a09:0);
+  a77=(a77+a50);
+  a50=(a38*a77);
+  a12=arg[0]? arg[0][20] : 0;
+  a50=(a50*a12);
+  a67=(a67+a50);
+  a50=(a23<=a69);
+  a75=(a50?a32:0);
+  a50=(!a50);
+  a50=(a50?a09:0);
+  a75=(a75+a50);
+  a50=(a43*a75);
+  a76=arg[0]? arg[0][21] : 0;
+  a50=(a50*a76);
+  a67=(a67+a50);
+  a50=(a23<=a74);
+  a36=(a50?a32:0);
+  a50=(!a50);
+  a50=(a50?a09:0);
+  a36=(a36+a50);
+  a50=(a46*a36);
+  a06=arg[0]? arg[0][22] : 0;
+  a50=(a50*a06);
+  a67=(a67+a50);
+  a50=(a23<=a79);
+  a70=(a50?a32:0);
+  a50=(!a50);
+  a50=(a50?a09:0);
+  a70=(a70+a50);
+  a50=(a20*a70);
+  a09=arg[0]? arg[0][23] : 0;
+  a50=(a50*a09);
+  a67=(a67+a50);
+  a50=(a41*a67);
+  a71=(a38*a39);
+  a35=(a43*a42);
+  a71=(a71+a35);
+  a35=(a46*a45);
+  a71=(a71+a35);
+  a35=(a20*a48);
+  a71=(a71+a35);
+  a02=(a05*a02);
+  a01=(a39*a01);
+  a02=(a02-a01);
+  a02=(a02*a29);
+  a51=(a39*a51);
+  a51=(a51*a19);
+  a68=(a42*a68);
+  a68=(a68*a44);
+  a51=(a51+a68);
+  a73=(a45*a73);
+  a73=(a73*a47);
+  a51=(a51+a73);
+  a78=(a48*a78);
+  a78=(a78*a00);
+  a51=(a51+a78);
+  a02=(a02-a51);
+  a16=(a22*a16);
+  a17=(a42*a17);
+  a16=(a16-a17);
+  a16=(a16*a25);
+  a02=(a02+a16);
+  a13=(a27*a13);
+  a14=(a45*a14);
+  a13=(a13-a14);
+  a13=(a13*a15);
+  a02=(a02+a13);
+  a07=(a33*a07);
+  a08=(a48*a08);
+  a07=(a07-a08);
+  a07=(a07*a04);
+  a02=(a02+a07);
+  a05=(a05*a49);
+  a05=(a05*a82);
+  a02=(a02+a05);
+  a22=(a22*a66);
+  a22=(a22*a40);
+  a02=(a02+a22);
+  a27=(a27*a72);
+  a27=(a27*a28);
+  a02=(a02+a27);
+  a33=(a33*a59);
+  a33=(a33*a30);
+  a02=(a02+a33);
+  a60=(a39*a60);
+  a60=(a60*a37);
+  a02=(a02-a60);
+  a69=(a42*a69);
+  a69=(a69*a31);
+  a02=(a02-a69);
+  a74=(a45*a74);
+  a74=(a74*a80);
+  a02=(a02-a74);
+  a79=(a48*a79);
+  a79=(a79*a81);
+  a02=(a02-a79);
+  a77=(a39*a77);
+  a77=(a77*a12);
+  a02=(a02-a77);
+  a75=(a42*a75);
+  a75=(a75*a76);
+  a02=(a02-a75);
+  a36=(a45*a36);
+  a36=(a36*a06);
+  a02=(a02-a36);
+  a70=(a48*a70);
+  a70=(a70*a09);
+  a02=(a02-a70);
+  a70=(a71*a02);
+  a50=(a50+a70);
+  a70=casadi_sq(a38);
+  a36=casadi_sq(a43);
+  a70=(a70+a36);
+  a36=casadi_sq(a46);
+  a70=(a70+a36);
+  a36=casadi_sq(a20);
+  a70=(a70+a36);
+  a41=(a70*a41);
+  a36=(a39*a38);
+  a75=(a42*a43);
+  a36=(a36+a75);
+  a75=(a45*a46);
+  a36=(a36+a75);
+  a75=(a48*a20);
+  a36=(a36+a75);
+  a71=(a71*a36);
+  a41=(a41-a71);
+  a50=(a50/a41);
+  a38=(a38*a50);
+  a70=(a70*a02);
+  a36=(a36*a67);
+  a70=(a70+a36);
+  a70=(a70/a41);
+  a39=(a39*a70);
+  a38=(a38-a39);
+  a43=(a43*a50);
+  a42=(a42*a70);
+  a43=(a43-a42);
+  a42=(a38+a43);
+  a46=(a46*a50);
+  a45=(a45*a70);
+  a46=(a46-a45);
+  a42=(a42+a46);
+  a20=(a20*a50);
+  a48=(a48*a70);
+  a20=(a20-a48);
+  a42=(a42+a20);
+  a42=(a42+a19);
+  a42=(a42+a44);
+  a42=(a42+a47);
+  a42=(a42+a00);
+  a42=(a42+a29);
+  a42=(a42+a25);
+  a42=(a42+a15);
+  a42=(a42+a04);
+  a42=(a42+a82);
+  a42=(a42+a40);
+  a42=(a42+a28);
+  a42=(a42+a30);
+  a42=(a42+a37);
+  a42=(a42+a31);
+  a42=(a42+a80);
+  a42=(a42+a81);
+  a42=(a42+a12);
+  a42=(a42+a76);
+  a42=(a42+a06);
+  a42=(a42+a09);
+  a42=(a42+a24);
+  a42=(a42+a18);
+  a42=(a42+a56);
+  a42=(a42+a54);
+  a42=casadi_fabs(a42);
+  a48=casadi_inf;
+  a42=(a42<a48);
+  a48=(a34&&a42);
+  a48=(a10&&a48);
+  a70=arg[5]? arg[5][8] : 0;
+  a50=(-a70);
+  a50=casadi_fmax(a38,a50);
+  a50=casadi_fmin(a50,a70);
+  a50=(a48?a50:0);
+  if (res[0]!=0) res[0][0]=a50;
+  a50=arg[5]? arg[5][9] : 0;
+  a45=(-a50);
+  a45=casadi_fmax(a43,a45);
+  a45=casadi_fmin(a45,a50);
+  a45=(a48?a45:0);
+  if (res[0]!=0) res[0][1]=a45;
+  a45=arg[5]? arg[5][10] : 0;
+  a39=(-a45);
+  a39=casadi_fmax(a46,a39);
+  a39=casadi_fmin(a39,a45);
+  a39=(a48?a39:0);
+  if (res[0]!=0) res[0][2]=a39;
+  a39=arg[5]? arg[5][11] : 0;
+  a41=(-a39);
+  a41=casadi_fmax(a20,a41);
+  a41=casadi_fmin(a41,a39);
+  a41=(a48?a41:0);
+  if (res[0]!=0) res[0][3]=a41;
+  a41=(a10&&a42);
+  a36=(a41?a24:0);
+  a67=(!a41);
+  a55=(a67?a55:0);
+  a36=(a36+a55);
+  if (res[1]!=0) res[1][0]=a36;
+  a36=(a41?a18:0);
+  a63=(a67?a63:0);
+  a36=(a36+a63);
+  if (res[1]!=0) res[1][1]=a36;
+  a36=(a41?a56:0);
+  a53=(a67?a53:0);
+  a36=(a36+a53);
+  if (res[1]!=0) res[1][2]=a36;
+  a41=(a41?a54:0);
+  a67=(a67?a62:0);
+  a41=(a41+a67);
+  if (res[1]!=0) res[1][3]=a41;
+  a41=(a48?a19:0);
+  a67=(!a48);
+  a19=(a67?a19:0);
+  a41=(a41+a19);
+  if (res[1]!=0) res[1][4]=a41;
+  a41=(a48?a44:0);
+  a44=(a67?a44:0);
+  a41=(a41+a44);
+  if (res[1]!=0) res[1][5]=a41;
+  a41=(a48?a47:0);
+  a47=(a67?a47:0);
+  a41=(a41+a47);
+  if (res[1]!=0) res[1][6]=a41;
+  a41=(a48?a00:0);
+  a00=(a67?a00:0);
+  a41=(a41+a00);
+  if (res[1]!=0) res[1][7]=a41;
+  a41=(a48?a29:0);
+  a29=(a67?a29:0);
+  a41=(a41+a29);
+  if (res[1]!=0) res[1][8]=a41;
+  a41=(a48?a25:0);
+  a25=(a67?a25:0);
+  a41=(a41+a25);
+  if (res[1]!=0) res[1][9]=a41;
+  a41=(a48?a15:0);
+  a15=(a67?a15:0);
+  a41=(a41+a15);
+  if (res[1]!=0) res[1][10]=a41;
+  a41=(a48?a04:0);
+  a04=(a67?a04:0);
+  a41=(a41+a04);
+  if (res[1]!=0) res[1][11]=a41;
+  a41=(a48?a82:0);
+  a82=(a67?a82:0);
+  a41=(a41+a82);
+  if (res[1]!=0) res[1][12]=a41;
+  a41=(a48?a40:0);
+  a40=(a67?a40:0);
+  a41=(a41+a40);
+  if (res[1]!=0) res[1][13]=a41;
+  a41=(a48?a28:0);
+  a28=(a67?a28:0);
+  a41=(a41+a28);
+  if (res[1]!=0) res[1][14]=a41;
+  a41=(a48?a30:0);
+  a30=(a67?a30:0);
+  a41=(a41+a30);
+  if (res[1]!=0) res[1][15]=a41;
+  a41=(a48?a37:0);
+  a37=(a67?a37:0);
+  a41=(a41+a37);
+  if (res[1]!=0) res[1][16]=a41;
+  a41=(a48?a31:0);
+  a31=(a67?a31:0);
+  a41=(a41+a31);
+  if (res[1]!=0) res[1][17]=a41;
+  a41=(a48?a80:0);
+  a80=(a67?a80:0);
+  a41=(a41+a80);
+  if (res[1]!=0) res[1][18]=a41;
+  a41=(a48?a81:0);
+  a81=(a67?a81:0);
+  a41=(a41+a81);
+  if (res[1]!=0) res[1][19]=a41;
+  a41=(a48?a12:0);
+  a12=(a67?a12:0);
+  a41=(a41+a12);
+  if (res[1]!=0) res[1][20]=a41;
+  a41=(a48?a76:0);
+  a76=(a67?a76:0);
+  a41=(a41+a76);
+  if (res[1]!=0) res[1][21]=a41;
+  a41=(a48?a06:0);
+  a06=(a67?a06:0);
+  a41=(a41+a06);
+  if (res[1]!=0) res[1][22]=a41;
+  a48=(a48?a09:0);
+  a67=(a67?a09:0);
+  a48=(a48+a67);
+  if (res[1]!=0) res[1][23]=a48;
+  a38=casadi_fabs(a38);
+  a38=(a38-a70);
+  a43=casadi_fabs(a43);
+  a43=(a43-a50);
+  a38=casadi_fmax(a38,a43);
+  a46=casadi_fabs(a46);
+  a46=(a46-a45);
+  a38=casadi_fmax(a38,a46);
+  a20=casadi_fabs(a20);
+  a20=(a20-a39);
+  a38=casadi_fmax(a38,a20);
+  a23=(a23<a38);
+  a23=(a23?a26:0);
+  a23=(a42?a23:0);
+  a42=(!a42);
+  a26=3.;
+  a42=(a42?a26:0);
+  a23=(a23+a42);
+  a23=(a34?a23:0);
+  a34=(!a34);
+  a34=(a34?a32:0);
+  a23=(a23+a34);
+  a23=(a10?a23:0);
+  a10=(!a10);
+  a34=5.;
+  a10=(a10?a34:0);
+  a23=(a23+a10);
+  if (res[2]!=0) res[2][0]=a23;
+  if (res[3]!=0) res[3][0]=a24;
+  if (res[3]!=0) res[3][1]=a18;
+  if (res[3]!=0) res[3][2]=a56;
+  if (res[3]!=0) res[3][3]=a54;
+  if (res[3]!=0) res[3][4]=a58;
+  if (res[3]!=0) res[3][5]=a64;
+  if (res[3]!=0) res[3][6]=a52;
+  if (res[3]!=0) res[3][7]=a61;
+  if (res[3]!=0) res[3][8]=a21;
+  if (res[3]!=0) res[3][9]=a11;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f27(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_ctc_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_ctc_minmax_step:(state[24],qa[4],xd[2],xd_dot[2],xd_ddot[2],params[21])->(tau_a[4],state_next[24],status,diag[10]) */
+static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  casadi_real a72, a73, a74, a75, a76, a77, a78, a79, a80, a81, a82, a83;
+  casadi_real a84, a85;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a05=(a04*a01);
+  a06=4.8799999999999999e-01;
+  a07=arg[1]? arg[1][3] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a09=(a05+a09);
+  a10=casadi_sq(a09);
+  a11=5.0000000000000000e-01;
+  a12=(a11+a05);
+  a13=arg[1]? arg[1][2] : 0;
+  a14=sin(a13);
+  a15=(a06*a14);
+  a12=(a12+a15);
+  a15=casadi_sq(a12);
+  a10=(a10+a15);
+  a15=-5.0000000000000000e-01;
+  a05=(a15+a05);
+  a16=arg[1]? arg[1][1] : 0;
+  a17=sin(a16);
+  a18=(a06*a17);
+  a05=(a05+a18);
+  a18=casadi_sq(a05);
+  a10=(a10+a18);
+  a18=1.2000000000000000e+00;
+  a04=(a04*a02);
+  a18=(a18+a04);
+  a07=cos(a07);
+  a19=(a06*a07);
+  a18=(a18+a19);
+  a19=2.5000000000000000e-01;
+  a20=2.4399999999999999e-01;
+  a21=(a20*a08);
+  a21=(a19+a21);
+  a21=casadi_sq(a21);
+  a22=5.9999999999999998e-01;
+  a23=(a20*a07);
+  a22=(a22+a23);
+  a22=casadi_sq(a22);
+  a21=(a21+a22);
+  a22=(a20*a01);
+  a22=(a19+a22);
+  a22=casadi_sq(a22);
+  a21=(a21-a22);
+  a24=-5.9535999999999999e-02;
+  a25=casadi_sq(a02);
+  a24=(a24*a25);
+  a21=(a21+a24);
+  a25=(a18*a21);
+  a26=8.6599999999999999e-01;
+  a26=(a26+a04);
+  a16=cos(a16);
+  a04=(a06*a16);
+  a04=(a26+a04);
+  a27=4.3300000000000000e-01;
+  a28=(a20*a16);
+  a29=(a27+a28);
+  a29=casadi_sq(a29);
+  a29=(a29-a22);
+  a29=(a29+a24);
+  a30=5.9535999999999999e-02;
+  a31=casadi_sq(a17);
+  a30=(a30*a31);
+  a29=(a29+a30);
+  a30=(a04*a29);
+  a25=(a25+a30);
+  a13=cos(a13);
+  a06=(a06*a13);
+  a26=(a26+a06);
+  a06=(a20*a14);
+  a06=(a11+a06);
+  a06=casadi_sq(a06);
+  a30=(a20*a13);
+  a27=(a27+a30);
+  a27=casadi_sq(a27);
+  a06=(a06+a27);
+  a06=(a06-a22);
+  a06=(a06+a24);
+  a24=(a26*a06);
+  a25=(a25+a24);
+  a24=(a10*a25);
+  a22=(a09*a18);
+  a27=(a12*a26);
+  a22=(a22+a27);
+  a27=(a05*a04);
+  a22=(a22+a27);
+  a09=(a09*a21);
+  a12=(a12*a06);
+  a09=(a09+a12);
+  a05=(a05*a29);
+  a09=(a09+a05);
+  a05=(a22*a09);
+  a24=(a24-a05);
+  a18=casadi_sq(a18);
+  a04=casadi_sq(a04);
+  a18=(a18+a04);
+  a26=casadi_sq(a26);
+  a18=(a18+a26);
+  a10=(a10*a18);
+  a26=casadi_sq(a22);
+  a10=(a10-a26);
+  a24=(a24/a10);
+  a03=(a03+a24);
+  a26=casadi_sq(a03);
+  a04=-2.5000000000000000e-01;
+  a05=(a00*a01);
+  a29=(a04+a05);
+  a18=(a18*a09);
+  a22=(a22*a25);
+  a18=(a18-a22);
+  a18=(a18/a10);
+  a29=(a29+a18);
+  a10=casadi_sq(a29);
+  a26=(a26+a10);
+  a26=sqrt(a26);
+  a10=(a00+a26);
+  a10=casadi_fabs(a10);
+  a22=(a00*a17);
+  a25=(a22+a18);
+  a09=casadi_sq(a25);
+  a12=-4.3300000000000000e-01;
+  a06=(a00*a16);
+  a06=(a12+a06);
+  a06=(a06+a24);
+  a21=casadi_sq(a06);
+  a09=(a09+a21);
+  a09=sqrt(a09);
+  a21=(a00+a09);
+  a21=casadi_fabs(a21);
+  a10=casadi_fmax(a10,a21);
+  a21=(a00*a13);
+  a12=(a12+a21);
+  a12=(a12+a24);
+  a21=casadi_sq(a12);
+  a27=(a00*a14);
+  a15=(a15+a27);
+  a15=(a15+a18);
+  a31=casadi_sq(a15);
+  a21=(a21+a31);
+  a21=sqrt(a21);
+  a31=(a00+a21);
+  a31=casadi_fabs(a31);
+  a10=casadi_fmax(a10,a31);
+  a31=-5.9999999999999998e-01;
+  a32=(a00*a07);
+  a31=(a31+a32);
+  a31=(a31+a24);
+  a32=casadi_sq(a31);
+  a33=(a00*a08);
+  a04=(a04+a33);
+  a04=(a04+a18);
+  a34=casadi_sq(a04);
+  a32=(a32+a34);
+  a32=sqrt(a32);
+  a34=(a00+a32);
+  a34=casadi_fabs(a34);
+  a10=casadi_fmax(a10,a34);
+  a34=arg[5]? arg[5][20] : 0;
+  a10=(a10<=a34);
+  a34=arg[5]? arg[5][6] : 0;
+  a03=(a03/a26);
+  a35=(a01*a03);
+  a29=(a29/a26);
+  a26=(a02*a29);
+  a35=(a35-a26);
+  a26=casadi_fabs(a35);
+  a06=(a06/a09);
+  a36=(a17*a06);
+  a25=(a25/a09);
+  a09=(a16*a25);
+  a36=(a36-a09);
+  a09=casadi_fabs(a36);
+  a37=(a26+a09);
+  a26=(a26-a09);
+  a26=casadi_fabs(a26);
+  a37=(a37-a26);
+  a26=2.;
+  a37=(a37/a26);
+  a12=(a12/a21);
+  a09=(a14*a12);
+  a15=(a15/a21);
+  a21=(a13*a15);
+  a09=(a09-a21);
+  a21=casadi_fabs(a09);
+  a38=(a37+a21);
+  a37=(a37-a21);
+  a37=casadi_fabs(a37);
+  a38=(a38-a37);
+  a38=(a38/a26);
+  a31=(a31/a32);
+  a37=(a08*a31);
+  a04=(a04/a32);
+  a32=(a07*a04);
+  a37=(a37-a32);
+  a32=casadi_fabs(a37);
+  a21=(a38+a32);
+  a38=(a38-a32);
+  a38=casadi_fabs(a38);
+  a21=(a21-a38);
+  a21=(a21/a26);
+  a34=(a34<=a21);
+  a38=arg[5]? arg[5][7] : 0;
+  a32=1.;
+  a39=casadi_sq(a03);
+  a40=casadi_sq(a29);
+  a39=(a39-a40);
+  a40=casadi_sq(a06);
+  a41=casadi_sq(a25);
+  a40=(a40-a41);
+  a39=(a39+a40);
+  a40=casadi_sq(a12);
+  a41=casadi_sq(a15);
+  a40=(a40-a41);
+  a39=(a39+a40);
+  a40=casadi_sq(a31);
+  a41=casadi_sq(a04);
+  a40=(a40-a41);
+  a39=(a39+a40);
+  a39=casadi_sq(a39);
+  a40=(2.*a03);
+  a40=(a40*a29);
+  a41=(2.*a06);
+  a41=(a41*a25);
+  a40=(a40+a41);
+  a41=(2.*a12);
+  a41=(a41*a15);
+  a40=(a40+a41);
+  a41=(2.*a31);
+  a41=(a41*a04);
+  a40=(a40+a41);
+  a40=casadi_sq(a40);
+  a39=(a39+a40);
+  a39=sqrt(a39);
+  a19=(a19*a39);
+  a19=(a32-a19);
+  a39=casadi_fabs(a19);
+  a19=(a19+a39);
+  a11=(a11*a19);
+  a11=sqrt(a11);
+  a38=(a38<=a11);
+  a34=(a34&&a38);
+  a38=arg[5]? arg[5][8] : 0;
+  a19=(a20*a03);
+  a39=(a05*a19);
+  a40=(a00*a29);
+  a41=(a20*a02);
+  a42=(a40*a41);
+  a39=(a39-a42);
+  a19=(a19/a39);
+  a42=(a38*a19);
+  a43=0.;
+  a44=arg[4]? arg[4][0] : 0;
+  a45=arg[5]? arg[5][2] : 0;
+  a46=arg[3]? arg[3][0] : 0;
+  a47=arg[0]? arg[0][2] : 0;
+  a48=arg[5]? arg[5][5] : 0;
+  a49=arg[0]? arg[0][0] : 0;
+  a50=(a24-a49);
+  a51=arg[5]? arg[5][4] : 0;
+  a50=(a50/a51);
+  a50=(a50-a47);
+  a50=(a48*a50);
+  a50=(a47+a50);
+  a46=(a46-a50);
+  a45=(a45*a46);
+  a44=(a44+a45);
+  a45=arg[5]? arg[5][0] : 0;
+  a52=arg[2]? arg[2][0] : 0;
+  a52=(a52-a24);
+  a45=(a45*a52);
+  a44=(a44+a45);
+  a45=(a19*a44);
+  a40=(a40/a39);
+  a53=arg[4]? arg[4][1] : 0;
+  a54=arg[5]? arg[5][3] : 0;
+  a55=arg[3]? arg[3][1] : 0;
+  a56=arg[0]? arg[0][3] : 0;
+  a57=arg[0]? arg[0][1] : 0;
+  a58=(a18-a57);
+  a58=(a58/a51);
+  a58=(a58-a56);
+  a48=(a48*a58);
+  a48=(a56+a48);
+  a55=(a55-a48);
+  a54=(a54*a55);
+  a53=(a53+a54);
+  a54=arg[5]? arg[5][1] : 0;
+  a58=arg[2]? arg[2][1] : 0;
+  a58=(a58-a18);
+  a54=(a54*a58);
+  a53=(a53+a54);
+  a54=(a40*a53);
+  a45=(a45-a54);
+  a54=(a19*a50);
+  a51=(a40*a48);
+  a54=(a54-a51);
+  a51=(a00*a54);
+  a59=(a51*a01);
+  a59=(a59*a54);
+  a05=(a05/a39);
+  a60=(a05*a48);
+  a41=(a41/a39);
+  a39=(a41*a50);
+  a60=(a60-a39);
+  a39=(a00*a60);
+  a61=(a39*a29);
+  a61=(a61*a60);
+  a59=(a59+a61);
+  a61=(a40*a59);
+  a51=(a51*a02);
+  a51=(a51*a54);
+  a39=(a39*a03);
+  a39=(a39*a60);
+  a51=(a51+a39);
+  a39=(a19*a51);
+  a61=(a61-a39);
+  a45=(a45+a61);
+  a61=(a19*a45);
+  a39=arg[0]? arg[0][4] : 0;
+  a61=(a61*a39);
+  a62=(a20*a06);
+  a63=(a22*a62);
+  a64=(a00*a25);
+  a65=(a64*a28);
+  a63=(a63-a65);
+  a62=(a62/a63);
+  a65=(a62*a44);
+  a64=(a64/a63);
+  a66=(a64*a53);
+  a65=(a65-a66);
+  a66=(a62*a50);
+  a67=(a64*a48);
+  a66=(a66-a67);
+  a67=(a00*a66);
+  a68=(a67*a17);
+  a68=(a68*a66);
+  a22=(a22/a63);
+  a69=(a22*a48);
+  a28=(a28/a63);
+  a63=(a28*a50);
+  a69=(a69-a63);
+  a63=(a00*a69);
+  a70=(a63*a25);
+  a70=(a70*a69);
+  a68=(a68+a70);
+  a70=(a64*a68);
+  a67=(a67*a16);
+  a67=(a67*a66);
+  a63=(a63*a06);
+  a63=(a63*a69);
+  a67=(a67+a63);
+  a63=(a62*a67);
+  a70=(a70-a63);
+  a65=(a65+a70);
+  a70=(a62*a65);
+  a63=arg[0]? arg[0][5] : 0;
+  a70=(a70*a63);
+  a61=(a61+a70);
+  a70=(a20*a12);
+  a71=(a27*a70);
+  a72=(a00*a15);
+  a73=(a72*a30);
+  a71=(a71-a73);
+  a70=(a70/a71);
+  a73=(a70*a44);
+  a72=(a72/a71);
+  a74=(a72*a53);
+  a73=(a73-a74);
+  a74=(a70*a50);
+  a75=(a72*a48);
+  a74=(a74-a75);
+  a75=(a00*a74);
+  a76=(a75*a14);
+  a76=(a76*a74);
+  a27=(a27/a71);
+  a77=(a27*a48);
+  a30=(a30/a71);
+  a71=(a30*a50);
+  a77=(a77-a71);
+  a71=(a00*a77);
+  a78=(a71*a15);
+  a78=(a78*a77);
+  a76=(a76+a78);
+  a78=(a72*a76);
+  a75=(a75*a13);
+  a75=(a75*a74);
+  a71=(a71*a12);
+  a71=(a71*a77);
+  a75=(a75+a71);
+  a71=(a70*a75);
+  a78=(a78-a71);
+  a73=(a73+a78);
+  a78=(a70*a73);
+  a71=arg[0]? arg[0][6] : 0;
+  a78=(a78*a71);
+  a61=(a61+a78);
+  a20=(a20*a31);
+  a78=(a33*a20);
+  a79=(a00*a04);
+  a80=(a79*a23);
+  a78=(a78-a80);
+  a20=(a20/a78);
+  a80=(a20*a44);
+  a79=(a79/a78);
+  a81=(a79*a53);
+  a80=(a80-a81);
+  a81=(a20*a50);
+  a82=(a79*a48);
+  a81=(a81-a82);
+  a82=(a00*a81);
+  a83=(a82*a08);
+  a83=(a83*a81);
+  a33=(a33/a78);
+  a84=(a33*a48);
+  a23=(a23/a78);
+  a78=(a23*a50);
+  a84=(a84-a78);
+  a00=(a00*a84);
+  a78=(a00*a04);
+  a78=(a78*a84);
+  a83=(a83+a78);
+  a78=(a79*a83);
+  a82=(a82*a07);
+  a82=(a82*a81);
+  a00=(a00*a31);
+  a00=(a00*a84);
+  a82=(a82+a00);
+  a00=(a20*a82);
+  a78=(a78-a00);
+  a80=(a80+a78);
+  a78=(a20*a80);
+  a00=arg[0]? arg[0][7] : 0;
+  a78=(a78*a00);
+  a61=(a61+a78);
+  a78=(a05*a53);
+  a85=(a41*a44);
+  a78=(a78-a85);
+  a51=(a41*a51);
+  a59=(a05*a59);
+  a51=(a51-a59);
+  a78=(a78+a51);
+  a02=(a02*a03);
+  a01=(a01*a29);
+  a02=(a02+a01);
+  a01=(a78*a02);
+  a60=casadi_sq(a60);
+  a60=(a60*a35);
+  a01=(a01+a60);
+  a60=(a19*a01);
+  a02=(a45*a02);
+  a29=casadi_sq(a54);
+  a29=(a29*a35);
+  a02=(a02-a29);
+  a29=(a41*a02);
+  a60=(a60-a29);
+  a29=arg[0]? arg[0][8] : 0;
+  a60=(a60*a29);
+  a61=(a61+a60);
+  a60=(a22*a53);
+  a35=(a28*a44);
+  a60=(a60-a35);
+  a67=(a28*a67);
+  a68=(a22*a68);
+  a67=(a67-a68);
+  a60=(a60+a67);
+  a16=(a16*a06);
+  a17=(a17*a25);
+  a16=(a16+a17);
+  a17=(a60*a16);
+  a69=casadi_sq(a69);
+  a69=(a69*a36);
+  a17=(a17+a69);
+  a69=(a62*a17);
+  a16=(a65*a16);
+  a25=casadi_sq(a66);
+  a25=(a25*a36);
+  a16=(a16-a25);
+  a25=(a28*a16);
+  a69=(a69-a25);
+  a25=arg[0]? arg[0][9] : 0;
+  a69=(a69*a25);
+  a61=(a61+a69);
+  a69=(a27*a53);
+  a36=(a30*a44);
+  a69=(a69-a36);
+  a75=(a30*a75);
+  a76=(a27*a76);
+  a75=(a75-a76);
+  a69=(a69+a75);
+  a13=(a13*a12);
+  a14=(a14*a15);
+  a13=(a13+a14);
+  a14=(a69*a13);
+  a77=casadi_sq(a77);
+  a77=(a77*a09);
+  a14=(a14+a77);
+  a77=(a70*a14);
+  a13=(a73*a13);
+  a15=casadi_sq(a74);
+  a15=(a15*a09);
+  a13=(a13-a15);
+  a15=(a30*a13);
+  a77=(a77-a15);
+  a15=arg[0]? arg[0][10] : 0;
+  a77=(a77*a15);
+  a61=(a61+a77);
+  a53=(a33*a53);
+  a44=(a23*a44);
+  a53=(a53-a44);
+  a82=(a23*a82);
+  a83=(a33*a83);
+  a82=(a82-a83);
+  a53=(a53+a82);
+  a07=(a07*a31);
+  a08=(a08*a04);
+  a07=(a07+a08);
+  a08=(a53*a07);
+  a84=casadi_sq(a84);
+  a84=(a84*a37);
+  a08=(a08+a84);
+  a84=(a20*a08);
+  a07=(a80*a07);
+  a04=casadi_sq(a81);
+  a04=(a04*a37);
+  a07=(a07-a04);
+  a04=(a23*a07);
+  a84=(a84-a04);
+  a04=arg[0]? arg[0][11] : 0;
+  a84=(a84*a04);
+  a61=(a61+a84);
+  a41=(a41*a78);
+  a84=arg[0]? arg[0][12] : 0;
+  a41=(a41*a84);
+  a61=(a61-a41);
+  a28=(a28*a60);
+  a41=arg[0]? arg[0][13] : 0;
+  a28=(a28*a41);
+  a61=(a61-a28);
+  a30=(a30*a69);
+  a28=arg[0]? arg[0][14] : 0;
+  a30=(a30*a28);
+  a61=(a61-a30);
+  a23=(a23*a53);
+  a30=arg[0]? arg[0][15] : 0;
+  a23=(a23*a30);
+  a61=(a61-a23);
+  a23=(a19*a54);
+  a37=arg[0]? arg[0][16] : 0;
+  a23=(a23*a37);
+  a61=(a61+a23);
+  a23=(a62*a66);
+  a31=arg[0]? arg[0][17] : 0;
+  a23=(a23*a31);
+  a61=(a61+a23);
+  a23=(a70*a74);
+  a82=arg[0]? arg[0][18] : 0;
+  a23=(a23*a82);
+  a61=(a61+a23);
+  a23=(a20*a81);
+  a83=arg[0]? arg[0][19] : 0;
+  a23=(a23*a83);
+  a61=(a61+a23);
+  a23=(a43<=a54);
+  a44=(a23?a32:0);
+  a23=(!a23);
+  a77=-1.;
+  a23=(a23?a77:0);
+  a44=(a44+a23);
+  a19=(a19*a44);
+  a23=arg[0]? arg[0][20] : 0;
+  a19=(a19*a23);
+  a61=(a61+a19);
+  a19=(a43<=a66);
+  a09=(a19?a32:0);
+  a19=(!a19);
+  a19=(a19?a77:0);
+  a09=(a09+a19);
+  a19=(a62*a09);
+  a12=arg[0]? arg[0][21] : 0;
+  a19=(a19*a12);
+  a61=(a61+a19);
+  a19=(a43<=a74);
+  a75=(a19?a32:0);
+  a19=(!a19);
+  a19=(a19?a77:0);
+  a75=(a75+a19);
+  a19=(a70*a75);
+  a76=arg[0]? arg[0][22] : 0;
+  a19=(a19*a76);
+  a61=(a61+a19);
+  a19=(a43<=a81);
+  a36=(a19?a32:0);
+  a19=(!a19);
+  a19=(a19?a77:0);
+  a36=(a36+a19);
+  a19=(a20*a36);
+  a77=arg[0]? arg[0][23] : 0;
+  a19=(a19*a77);
+  a61=(a61+a19);
+  a19=(a38*a40);
+  a06=(a61*a19);
+  a02=(a05*a02);
+  a01=(a40*a01);
+  a02=(a02-a01);
+  a02=(a02*a29);
+  a45=(a40*a45);
+  a45=(a45*a39);
+  a65=(a64*a65);
+  a65=(a65*a63);
+  a45=(a45+a65);
+  a73=(a72*a73);
+  a73=(a73*a71);
+  a45=(a45+a73);
+  a80=(a79*a80);
+  a80=(a80*a00);
+  a45=(a45+a80);
+  a02=(a02-a45);
+  a16=(a22*a16);
+  a17=(a64*a17);
+  a16=(a16-a17);
+  a16=(a16*a25);
+  a02=(a02+a16);
+  a13=(a27*a13);
+  a14=(a72*a14);
+  a13=(a13-a14);
+  a13=(a13*a15);
+  a02=(a02+a13);
+  a07=(a33*a07);
+  a08=(a79*a08);
+  a07=(a07-a08);
+  a07=(a07*a04);
+  a02=(a02+a07);
+  a05=(a05*a78);
+  a05=(a05*a84);
+  a02=(a02+a05);
+  a22=(a22*a60);
+  a22=(a22*a41);
+  a02=(a02+a22);
+  a27=(a27*a69);
+  a27=(a27*a28);
+  a02=(a02+a27);
+  a33=(a33*a53);
+  a33=(a33*a30);
+  a02=(a02+a33);
+  a54=(a40*a54);
+  a54=(a54*a37);
+  a02=(a02-a54);
+  a66=(a64*a66);
+  a66=(a66*a31);
+  a02=(a02-a66);
+  a74=(a72*a74);
+  a74=(a74*a82);
+  a02=(a02-a74);
+  a81=(a79*a81);
+  a81=(a81*a83);
+  a02=(a02-a81);
+  a40=(a40*a44);
+  a40=(a40*a23);
+  a02=(a02-a40);
+  a09=(a64*a09);
+  a09=(a09*a12);
+  a02=(a02-a09);
+  a75=(a72*a75);
+  a75=(a75*a76);
+  a02=(a02-a75);
+  a36=(a79*a36);
+  a36=(a36*a77);
+  a02=(a02-a36);
+  a36=(a02*a42);
+  a06=(a06+a36);
+  a06=casadi_fabs(a06);
+  a43=(a43<a06);
+  a36=arg[5]? arg[5][9] : 0;
+  a64=(a36*a64);
+  a75=(a42*a64);
+  a62=(a36*a62);
+  a09=(a19*a62);
+  a75=(a75-a09);
+  a75=casadi_fabs(a75);
+  a09=arg[5]? arg[5][10] : 0;
+  a70=(a09*a70);
+  a40=(a70*a64);
+  a72=(a09*a72);
+  a44=(a72*a62);
+  a40=(a40-a44);
+  a40=casadi_fabs(a40);
+  a75=(a75+a40);
+  a40=arg[5]? arg[5][11] : 0;
+  a20=(a40*a20);
+  a44=(a20*a64);
+  a79=(a40*a79);
+  a81=(a79*a62);
+  a44=(a44-a81);
+  a44=casadi_fabs(a44);
+  a75=(a75+a44);
+  a44=(a06*a75);
+  a44=(a43?a44:0);
+  a81=(a61*a64);
+  a74=(a02*a62);
+  a81=(a81+a74);
+  a81=casadi_fabs(a81);
+  a74=(a62*a19);
+  a66=(a64*a42);
+  a74=(a74-a66);
+  a74=casadi_fabs(a74);
+  a66=(a70*a19);
+  a54=(a72*a42);
+  a66=(a66-a54);
+  a66=casadi_fabs(a66);
+  a74=(a74+a66);
+  a66=(a20*a19);
+  a54=(a79*a42);
+  a66=(a66-a54);
+  a66=casadi_fabs(a66);
+  a74=(a74+a66);
+  a74=(a43?a74:0);
+  a66=(!a43);
+  a54=(a66?a32:0);
+  a74=(a74+a54);
+  a54=(a81*a74);
+  a44=(a44<a54);
+  a81=(a44?a81:0);
+  a54=(!a44);
+  a06=(a43?a06:0);
+  a06=(a54?a06:0);
+  a81=(a81+a06);
+  a06=(a42*a72);
+  a33=(a19*a70);
+  a06=(a06-a33);
+  a06=casadi_fabs(a06);
+  a33=(a62*a72);
+  a53=(a64*a70);
+  a33=(a33-a53);
+  a33=casadi_fabs(a33);
+  a06=(a06+a33);
+  a33=(a20*a72);
+  a53=(a79*a70);
+  a33=(a33-a53);
+  a33=casadi_fabs(a33);
+  a06=(a06+a33);
+  a33=(a81*a06);
+  a53=(a61*a72);
+  a27=(a02*a70);
+  a53=(a53+a27);
+  a53=casadi_fabs(a53);
+  a75=(a44?a75:0);
+  a74=(a54?a74:0);
+  a75=(a75+a74);
+  a74=(a53*a75);
+  a33=(a33<a74);
+  a53=(a33?a53:0);
+  a74=(!a33);
+  a81=(a74?a81:0);
+  a53=(a53+a81);
+  a81=(a42*a79);
+  a27=(a19*a20);
+  a81=(a81-a27);
+  a81=casadi_fabs(a81);
+  a27=(a62*a79);
+  a69=(a64*a20);
+  a27=(a27-a69);
+  a27=casadi_fabs(a27);
+  a81=(a81+a27);
+  a27=(a70*a79);
+  a69=(a72*a20);
+  a27=(a27-a69);
+  a27=casadi_fabs(a27);
+  a81=(a81+a27);
+  a27=(a53*a81);
+  a69=(a61*a79);
+  a22=(a02*a20);
+  a69=(a69+a22);
+  a69=casadi_fabs(a69);
+  a06=(a33?a06:0);
+  a75=(a74?a75:0);
+  a06=(a06+a75);
+  a75=(a69*a06);
+  a27=(a27<a75);
+  a75=(a27?a79:0);
+  a22=(!a27);
+  a60=(a33?a72:0);
+  a05=(a44?a64:0);
+  a78=(a43?a19:0);
+  a07=(a66?a19:0);
+  a78=(a78+a07);
+  a78=(a54?a78:0);
+  a05=(a05+a78);
+  a05=(a74?a05:0);
+  a60=(a60+a05);
+  a60=(a22?a60:0);
+  a75=(a75+a60);
+  a60=(a61*a75);
+  a05=(a27?a20:0);
+  a33=(a33?a70:0);
+  a44=(a44?a62:0);
+  a43=(a43?a42:0);
+  a66=(a66?a42:0);
+  a43=(a43+a66);
+  a54=(a54?a43:0);
+  a44=(a44+a54);
+  a74=(a74?a44:0);
+  a33=(a33+a74);
+  a33=(a22?a33:0);
+  a05=(a05+a33);
+  a33=(a02*a05);
+  a60=(a60+a33);
+  a60=casadi_sign(a60);
+  a33=(a75*a60);
+  a74=(a42*a33);
+  a60=(a05*a60);
+  a44=(a19*a60);
+  a74=(a74-a44);
+  a44=casadi_sq(a74);
+  a54=9.9999999999999992e-25;
+  a43=casadi_sq(a42);
+  a66=casadi_sq(a19);
+  a43=(a43+a66);
+  a43=(a54*a43);
+  a66=casadi_sq(a75);
+  a78=casadi_sq(a05);
+  a66=(a66+a78);
+  a43=(a43*a66);
+  a44=(a44<=a43);
+  a43=(a42*a05);
+  a78=(a19*a75);
+  a43=(a43+a78);
+  a78=casadi_sign(a43);
+  a07=(!a44);
+  a69=(a27?a69:0);
+  a53=(a22?a53:0);
+  a69=(a69+a53);
+  a27=(a27?a81:0);
+  a22=(a22?a06:0);
+  a27=(a27+a22);
+  a69=(a69/a27);
+  a74=casadi_sign(a74);
+  a74=(a69*a74);
+  a42=(a74*a42);
+  a42=(a07?a42:0);
+  a27=(a62*a33);
+  a22=(a64*a60);
+  a27=(a27-a22);
+  a22=casadi_sq(a27);
+  a06=casadi_sq(a62);
+  a81=casadi_sq(a64);
+  a06=(a06+a81);
+  a06=(a54*a06);
+  a06=(a06*a66);
+  a22=(a22<=a06);
+  a06=(!a22);
+  a27=casadi_sign(a27);
+  a27=(a69*a27);
+  a81=(a27*a62);
+  a81=(a06?a81:0);
+  a42=(a42+a81);
+  a81=(a70*a33);
+  a53=(a72*a60);
+  a81=(a81-a53);
+  a53=casadi_sq(a81);
+  a08=casadi_sq(a70);
+  a13=casadi_sq(a72);
+  a08=(a08+a13);
+  a08=(a54*a08);
+  a08=(a08*a66);
+  a53=(a53<=a08);
+  a08=(!a53);
+  a81=casadi_sign(a81);
+  a81=(a69*a81);
+  a13=(a81*a70);
+  a13=(a08?a13:0);
+  a42=(a42+a13);
+  a33=(a20*a33);
+  a60=(a79*a60);
+  a33=(a33-a60);
+  a60=casadi_sq(a33);
+  a13=casadi_sq(a20);
+  a14=casadi_sq(a79);
+  a13=(a13+a14);
+  a54=(a54*a13);
+  a54=(a54*a66);
+  a60=(a60<=a54);
+  a54=(!a60);
+  a33=casadi_sign(a33);
+  a33=(a69*a33);
+  a66=(a33*a20);
+  a66=(a54?a66:0);
+  a42=(a42+a66);
+  a61=(a61-a42);
+  a61=(a61*a05);
+  a19=(a74*a19);
+  a19=(-a19);
+  a19=(a07?a19:0);
+  a42=(a27*a64);
+  a42=(-a42);
+  a42=(a06?a42:0);
+  a19=(a19+a42);
+  a42=(a81*a72);
+  a42=(-a42);
+  a42=(a08?a42:0);
+  a19=(a19+a42);
+  a42=(a33*a79);
+  a42=(-a42);
+  a42=(a54?a42:0);
+  a19=(a19+a42);
+  a02=(a02-a19);
+  a02=(a02*a75);
+  a61=(a61-a02);
+  a43=casadi_fabs(a43);
+  a43=(a44?a43:0);
+  a62=(a62*a05);
+  a64=(a64*a75);
+  a62=(a62+a64);
+  a64=casadi_fabs(a62);
+  a64=(a22?a64:0);
+  a43=(a43+a64);
+  a70=(a70*a05);
+  a72=(a72*a75);
+  a70=(a70+a72);
+  a72=casadi_fabs(a70);
+  a72=(a53?a72:0);
+  a43=(a43+a72);
+  a20=(a20*a05);
+  a79=(a79*a75);
+  a20=(a20+a79);
+  a79=casadi_fabs(a20);
+  a79=(a60?a79:0);
+  a43=(a43+a79);
+  a61=(a61/a43);
+  a78=(a78*a61);
+  a44=(a44?a78:0);
+  a74=(a07?a74:0);
+  a07=(a07?a74:0);
+  a44=(a44+a07);
+  a44=(a38*a44);
+  a62=casadi_sign(a62);
+  a62=(a62*a61);
+  a22=(a22?a62:0);
+  a27=(a06?a27:0);
+  a06=(a06?a27:0);
+  a22=(a22+a06);
+  a22=(a36*a22);
+  a06=(a44+a22);
+  a70=casadi_sign(a70);
+  a70=(a70*a61);
+  a53=(a53?a70:0);
+  a81=(a08?a81:0);
+  a08=(a08?a81:0);
+  a53=(a53+a08);
+  a53=(a09*a53);
+  a06=(a06+a53);
+  a20=casadi_sign(a20);
+  a20=(a20*a61);
+  a60=(a60?a20:0);
+  a33=(a54?a33:0);
+  a54=(a54?a33:0);
+  a60=(a60+a54);
+  a60=(a40*a60);
+  a06=(a06+a60);
+  a06=(a06+a39);
+  a06=(a06+a63);
+  a06=(a06+a71);
+  a06=(a06+a00);
+  a06=(a06+a29);
+  a06=(a06+a25);
+  a06=(a06+a15);
+  a06=(a06+a04);
+  a06=(a06+a84);
+  a06=(a06+a41);
+  a06=(a06+a28);
+  a06=(a06+a30);
+  a06=(a06+a37);
+  a06=(a06+a31);
+  a06=(a06+a82);
+  a06=(a06+a83);
+  a06=(a06+a23);
+  a06=(a06+a12);
+  a06=(a06+a76);
+  a06=(a06+a77);
+  a06=(a06+a24);
+  a06=(a06+a18);
+  a06=(a06+a50);
+  a06=(a06+a48);
+  a06=casadi_fabs(a06);
+  a54=casadi_inf;
+  a06=(a06<a54);
+  a54=(a34&&a06);
+  a54=(a10&&a54);
+  a33=(-a38);
+  a44=casadi_fmax(a44,a33);
+  a44=casadi_fmin(a44,a38);
+  a44=(a54?a44:0);
+  if (res[0]!=0) res[0][0]=a44;
+  a44=(-a36);
+  a22=casadi_fmax(a22,a44);
+  a22=casadi_fmin(a22,a36);
+  a22=(a54?a22:0);
+  if (res[0]!=0) res[0][1]=a22;
+  a22=(-a09);
+  a53=casadi_fmax(a53,a22);
+  a53=casadi_fmin(a53,a09);
+  a53=(a54?a53:0);
+  if (res[0]!=0) res[0][2]=a53;
+  a53=(-a40);
+  a60=casadi_fmax(a60,a53);
+  a60=casadi_fmin(a60,a40);
+  a60=(a54?a60:0);
+  if (res[0]!=0) res[0][3]=a60;
+  a60=(a10&&a06);
+  a40=(a60?a24:0);
+  a53=(!a60);
+  a49=(a53?a49:0);
+  a40=(a40+a49);
+  if (res[1]!=0) res[1][0]=a40;
+  a40=(a60?a18:0);
+  a57=(a53?a57:0);
+  a40=(a40+a57);
+  if (res[1]!=0) res[1][1]=a40;
+  a40=(a60?a50:0);
+  a47=(a53?a47:0);
+  a40=(a40+a47);
+  if (res[1]!=0) res[1][2]=a40;
+  a60=(a60?a48:0);
+  a53=(a53?a56:0);
+  a60=(a60+a53);
+  if (res[1]!=0) res[1][3]=a60;
+  a60=(a54?a39:0);
+  a53=(!a54);
+  a39=(a53?a39:0);
+  a60=(a60+a39);
+  if (res[1]!=0) res[1][4]=a60;
+  a60=(a54?a63:0);
+  a63=(a53?a63:0);
+  a60=(a60+a63);
+  if (res[1]!=0) res[1][5]=a60;
+  a60=(a54?a71:0);
+  a71=(a53?a71:0);
+  a60=(a60+a71);
+  if (res[1]!=0) res[1][6]=a60;
+  a60=(a54?a00:0);
+  a00=(a53?a00:0);
+  a60=(a60+a00);
+  if (res[1]!=0) res[1][7]=a60;
+  a60=(a54?a29:0);
+  a29=(a53?a29:0);
+  a60=(a60+a29);
+  if (res[1]!=0) res[1][8]=a60;
+  a60=(a54?a25:0);
+  a25=(a53?a25:0);
+  a60=(a60+a25);
+  if (res[1]!=0) res[1][9]=a60;
+  a60=(a54?a15:0);
+  a15=(a53?a15:0);
+  a60=(a60+a15);
+  if (res[1]!=0) res[1][10]=a60;
+  a60=(a54?a04:0);
+  a04=(a53?a04:0);
+  a60=(a60+a04);
+  if (res[1]!=0) res[1][11]=a60;
+  a60=(a54?a84:0);
+  a84=(a53?a84:0);
+  a60=(a60+a84);
+  if (res[1]!=0) res[1][12]=a60;
+  a60=(a54?a41:0);
+  a41=(a53?a41:0);
+  a60=(a60+a41);
+  if (res[1]!=0) res[1][13]=a60;
+  a60=(a54?a28:0);
+  a28=(a53?a28:0);
+  a60=(a60+a28);
+  if (res[1]!=0) res[1][14]=a60;
+  a60=(a54?a30:0);
+  a30=(a53?a30:0);
+  a60=(a60+a30);
+  if (res[1]!=0) res[1][15]=a60;
+  a60=(a54?a37:0);
+  a37=(a53?a37:0);
+  a60=(a60+a37);
+  if (res[1]!=0) res[1][16]=a60;
+  a60=(a54?a31:0);
+  a31=(a53?a31:0);
+  a60=(a60+a31);
+  if (res[1]!=0) res[1][17]=a60;
+  a60=(a54?a82:0);
+  a82=(a53?a82:0);
+  a60=(a60+a82);
+  if (res[1]!=0) res[1][18]=a60;
+  a60=(a54?a83:0);
+  a83=(a53?a83:0);
+  a60=(a60+a83);
+  if (res[1]!=0) res[1][19]=a60;
+  a60=(a54?a23:0);
+  a23=(a53?a23:0);
+  a60=(a60+a23);
+  if (res[1]!=0) res[1][20]=a60;
+  a60=(a54?a12:0);
+  a12=(a53?a12:0);
+  a60=(a60+a12);
+  if (res[1]!=0) res[1][21]=a60;
+  a60=(a54?a76:0);
+  a76=(a53?a76:0);
+  a60=(a60+a76);
+  if (res[1]!=0) res[1][22]=a60;
+  a54=(a54?a77:0);
+  a53=(a53?a77:0);
+  a54=(a54+a53);
+  if (res[1]!=0) res[1][23]=a54;
+  a69=(a32<a69);
+  a69=(a69?a26:0);
+  a69=(a06?a69:0);
+  a06=(!a06);
+  a26=3.;
+  a06=(a06?a26:0);
+  a69=(a69+a06);
+  a69=(a34?a69:0);
+  a34=(!a34);
+  a34=(a34?a32:0);
+  a69=(a69+a34);
+  a69=(a10?a69:0);
+  a10=(!a10);
+  a34=5.;
+  a10=(a10?a34:0);
+  a69=(a69+a10);
+  if (res[2]!=0) res[2][0]=a69;
+  if (res[3]!=0) res[3][0]=a24;
+  if (res[3]!=0) res[3][1]=a18;
+  if (res[3]!=0) res[3][2]=a50;
+  if (res[3]!=0) res[3][3]=a48;
+  if (res[3]!=0) res[3][4]=a52;
+  if (res[3]!=0) res[3][5]=a58;
+  if (res[3]!=0) res[3][6]=a46;
+  if (res[3]!=0) res[3][7]=a55;
+  if (res[3]!=0) res[3][8]=a21;
+  if (res[3]!=0) res[3][9]=a11;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f28(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_ctc_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_ctc_preload_step:(state[24],qa[4],xd[2],xd_dot[2],xd_ddot[2],params[21])->(tau_a[4],state_next[24],status,diag[10]) */
+static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  casadi_real a72, a73, a74, a75, a76, a77, a78, a79, a80, a81, a82, a83;
+  casadi_real a84, a85, a86, a87;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a05=(a04*a01);
+  a06=4.8799999999999999e-01;
+  a07=arg[1]? arg[1][3] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a09=(a05+a09);
+  a10=casadi_sq(a09);
+  a11=5.0000000000000000e-01;
+  a12=(a11+a05);
+  a13=arg[1]? arg[1][2] : 0;
+  a14=sin(a13);
+  a15=(a06*a14);
+  a12=(a12+a15);
+  a15=casadi_sq(a12);
+  a10=(a10+a15);
+  a15=-5.0000000000000000e-01;
+  a05=(a15+a05);
+  a16=arg[1]? arg[1][1] : 0;
+  a17=sin(a16);
+  a18=(a06*a17);
+  a05=(a05+a18);
+  a18=casadi_sq(a05);
+  a10=(a10+a18);
+  a18=1.2000000000000000e+00;
+  a04=(a04*a02);
+  a18=(a18+a04);
+  a07=cos(a07);
+  a19=(a06*a07);
+  a18=(a18+a19);
+  a19=2.5000000000000000e-01;
+  a20=2.4399999999999999e-01;
+  a21=(a20*a08);
+  a21=(a19+a21);
+  a21=casadi_sq(a21);
+  a22=5.9999999999999998e-01;
+  a23=(a20*a07);
+  a22=(a22+a23);
+  a22=casadi_sq(a22);
+  a21=(a21+a22);
+  a22=(a20*a01);
+  a22=(a19+a22);
+  a22=casadi_sq(a22);
+  a21=(a21-a22);
+  a24=-5.9535999999999999e-02;
+  a25=casadi_sq(a02);
+  a24=(a24*a25);
+  a21=(a21+a24);
+  a25=(a18*a21);
+  a26=8.6599999999999999e-01;
+  a26=(a26+a04);
+  a16=cos(a16);
+  a04=(a06*a16);
+  a04=(a26+a04);
+  a27=4.3300000000000000e-01;
+  a28=(a20*a16);
+  a29=(a27+a28);
+  a29=casadi_sq(a29);
+  a29=(a29-a22);
+  a29=(a29+a24);
+  a30=5.9535999999999999e-02;
+  a31=casadi_sq(a17);
+  a30=(a30*a31);
+  a29=(a29+a30);
+  a30=(a04*a29);
+  a25=(a25+a30);
+  a13=cos(a13);
+  a06=(a06*a13);
+  a26=(a26+a06);
+  a06=(a20*a14);
+  a06=(a11+a06);
+  a06=casadi_sq(a06);
+  a30=(a20*a13);
+  a27=(a27+a30);
+  a27=casadi_sq(a27);
+  a06=(a06+a27);
+  a06=(a06-a22);
+  a06=(a06+a24);
+  a24=(a26*a06);
+  a25=(a25+a24);
+  a24=(a10*a25);
+  a22=(a09*a18);
+  a27=(a12*a26);
+  a22=(a22+a27);
+  a27=(a05*a04);
+  a22=(a22+a27);
+  a09=(a09*a21);
+  a12=(a12*a06);
+  a09=(a09+a12);
+  a05=(a05*a29);
+  a09=(a09+a05);
+  a05=(a22*a09);
+  a24=(a24-a05);
+  a18=casadi_sq(a18);
+  a04=casadi_sq(a04);
+  a18=(a18+a04);
+  a26=casadi_sq(a26);
+  a18=(a18+a26);
+  a10=(a10*a18);
+  a26=casadi_sq(a22);
+  a10=(a10-a26);
+  a24=(a24/a10);
+  a03=(a03+a24);
+  a26=casadi_sq(a03);
+  a04=-2.5000000000000000e-01;
+  a05=(a00*a01);
+  a29=(a04+a05);
+  a18=(a18*a09);
+  a22=(a22*a25);
+  a18=(a18-a22);
+  a18=(a18/a10);
+  a29=(a29+a18);
+  a10=casadi_sq(a29);
+  a26=(a26+a10);
+  a26=sqrt(a26);
+  a10=(a00+a26);
+  a10=casadi_fabs(a10);
+  a22=(a00*a17);
+  a25=(a22+a18);
+  a09=casadi_sq(a25);
+  a12=-4.3300000000000000e-01;
+  a06=(a00*a16);
+  a06=(a12+a06);
+  a06=(a06+a24);
+  a21=casadi_sq(a06);
+  a09=(a09+a21);
+  a09=sqrt(a09);
+  a21=(a00+a09);
+  a21=casadi_fabs(a21);
+  a10=casadi_fmax(a10,a21);
+  a21=(a00*a13);
+  a12=(a12+a21);
+  a12=(a12+a24);
+  a21=casadi_sq(a12);
+  a27=(a00*a14);
+  a15=(a15+a27);
+  a15=(a15+a18);
+  a31=casadi_sq(a15);
+  a21=(a21+a31);
+  a21=sqrt(a21);
+  a31=(a00+a21);
+  a31=casadi_fabs(a31);
+  a10=casadi_fmax(a10,a31);
+  a31=-5.9999999999999998e-01;
+  a32=(a00*a07);
+  a31=(a31+a32);
+  a31=(a31+a24);
+  a32=casadi_sq(a31);
+  a33=(a00*a08);
+  a04=(a04+a33);
+  a04=(a04+a18);
+  a34=casadi_sq(a04);
+  a32=(a32+a34);
+  a32=sqrt(a32);
+  a34=(a00+a32);
+  a34=casadi_fabs(a34);
+  a10=casadi_fmax(a10,a34);
+  a34=arg[5]? arg[5][20] : 0;
+  a10=(a10<=a34);
+  a34=arg[5]? arg[5][6] : 0;
+  a03=(a03/a26);
+  a35=(a01*a03);
+  a29=(a29/a26);
+  a26=(a02*a29);
+  a35=(a35-a26);
+  a26=casadi_fabs(a35);
+  a06=(a06/a09);
+  a36=(a17*a06);
+  a25=(a25/a09);
+  a09=(a16*a25);
+  a36=(a36-a09);
+  a09=casadi_fabs(a36);
+  a37=(a26+a09);
+  a26=(a26-a09);
+  a26=casadi_fabs(a26);
+  a37=(a37-a26);
+  a26=2.;
+  a37=(a37/a26);
+  a12=(a12/a21);
+  a09=(a14*a12);
+  a15=(a15/a21);
+  a21=(a13*a15);
+  a09=(a09-a21);
+  a21=casadi_fabs(a09);
+  a38=(a37+a21);
+  a37=(a37-a21);
+  a37=casadi_fabs(a37);
+  a38=(a38-a37);
+  a38=(a38/a26);
+  a31=(a31/a32);
+  a37=(a08*a31);
+  a04=(a04/a32);
+  a32=(a07*a04);
+  a37=(a37-a32);
+  a32=casadi_fabs(a37);
+  a21=(a38+a32);
+  a38=(a38-a32);
+  a38=casadi_fabs(a38);
+  a21=(a21-a38);
+  a21=(a21/a26);
+  a34=(a34<=a21);
+  a38=arg[5]? arg[5][7] : 0;
+  a32=1.;
+  a39=casadi_sq(a03);
+  a40=casadi_sq(a29);
+  a39=(a39-a40);
+  a40=casadi_sq(a06);
+  a41=casadi_sq(a25);
+  a40=(a40-a41);
+  a39=(a39+a40);
+  a40=casadi_sq(a12);
+  a41=casadi_sq(a15);
+  a40=(a40-a41);
+  a39=(a39+a40);
+  a40=casadi_sq(a31);
+  a41=casadi_sq(a04);
+  a40=(a40-a41);
+  a39=(a39+a40);
+  a39=casadi_sq(a39);
+  a40=(2.*a03);
+  a40=(a40*a29);
+  a41=(2.*a06);
+  a41=(a41*a25);
+  a40=(a40+a41);
+  a41=(2.*a12);
+  a41=(a41*a15);
+  a40=(a40+a41);
+  a41=(2.*a31);
+  a41=(a41*a04);
+  a40=(a40+a41);
+  a40=casadi_sq(a40);
+  a39=(a39+a40);
+  a39=sqrt(a39);
+  a19=(a19*a39);
+  a19=(a32-a19);
+  a39=casadi_fabs(a19);
+  a19=(a19+a39);
+  a11=(a11*a19);
+  a11=sqrt(a11);
+  a38=(a38<=a11);
+  a34=(a34&&a38);
+  a38=(a20*a03);
+  a19=(a05*a38);
+  a39=(a00*a29);
+  a40=(a20*a02);
+  a41=(a39*a40);
+  a19=(a19-a41);
+  a38=(a38/a19);
+  a41=(a20*a06);
+  a42=(a22*a41);
+  a43=(a00*a25);
+  a44=(a43*a28);
+  a42=(a42-a44);
+  a41=(a41/a42);
+  a44=(a20*a12);
+  a45=(a27*a44);
+  a46=(a00*a15);
+  a47=(a46*a30);
+  a45=(a45-a47);
+  a44=(a44/a45);
+  a20=(a20*a31);
+  a47=(a33*a20);
+  a48=(a00*a04);
+  a49=(a48*a23);
+  a47=(a47-a49);
+  a20=(a20/a47);
+  a39=(a39/a19);
+  a49=(-a39);
+  a43=(a43/a42);
+  a50=(-a43);
+  a46=(a46/a45);
+  a51=(-a46);
+  a48=(a48/a47);
+  a52=(-a48);
+  a53=arg[4]? arg[4][0] : 0;
+  a54=arg[5]? arg[5][2] : 0;
+  a55=arg[3]? arg[3][0] : 0;
+  a56=arg[0]? arg[0][2] : 0;
+  a57=arg[5]? arg[5][5] : 0;
+  a58=arg[0]? arg[0][0] : 0;
+  a59=(a24-a58);
+  a60=arg[5]? arg[5][4] : 0;
+  a59=(a59/a60);
+  a59=(a59-a56);
+  a59=(a57*a59);
+  a59=(a56+a59);
+  a55=(a55-a59);
+  a54=(a54*a55);
+  a53=(a53+a54);
+  a54=arg[5]? arg[5][0] : 0;
+  a61=arg[2]? arg[2][0] : 0;
+  a61=(a61-a24);
+  a54=(a54*a61);
+  a53=(a53+a54);
+  a54=(a38*a53);
+  a62=arg[4]? arg[4][1] : 0;
+  a63=arg[5]? arg[5][3] : 0;
+  a64=arg[3]? arg[3][1] : 0;
+  a65=arg[0]? arg[0][3] : 0;
+  a66=arg[0]? arg[0][1] : 0;
+  a67=(a18-a66);
+  a67=(a67/a60);
+  a67=(a67-a65);
+  a57=(a57*a67);
+  a57=(a65+a57);
+  a64=(a64-a57);
+  a63=(a63*a64);
+  a62=(a62+a63);
+  a63=arg[5]? arg[5][1] : 0;
+  a67=arg[2]? arg[2][1] : 0;
+  a67=(a67-a18);
+  a63=(a63*a67);
+  a62=(a62+a63);
+  a63=(a39*a62);
+  a54=(a54-a63);
+  a63=(a38*a59);
+  a60=(a39*a57);
+  a63=(a63-a60);
+  a60=(a00*a63);
+  a68=(a60*a01);
+  a68=(a68*a63);
+  a05=(a05/a19);
+  a69=(a05*a57);
+  a40=(a40/a19);
+  a19=(a40*a59);
+  a69=(a69-a19);
+  a19=(a00*a69);
+  a70=(a19*a29);
+  a70=(a70*a69);
+  a68=(a68+a70);
+  a70=(a39*a68);
+  a60=(a60*a02);
+  a60=(a60*a63);
+  a19=(a19*a03);
+  a19=(a19*a69);
+  a60=(a60+a19);
+  a19=(a38*a60);
+  a70=(a70-a19);
+  a54=(a54+a70);
+  a70=(a38*a54);
+  a19=arg[0]? arg[0][4] : 0;
+  a70=(a70*a19);
+  a71=(a41*a53);
+  a72=(a43*a62);
+  a71=(a71-a72);
+  a72=(a41*a59);
+  a73=(a43*a57);
+  a72=(a72-a73);
+  a73=(a00*a72);
+  a74=(a73*a17);
+  a74=(a74*a72);
+  a22=(a22/a42);
+  a75=(a22*a57);
+  a28=(a28/a42);
+  a42=(a28*a59);
+  a75=(a75-a42);
+  a42=(a00*a75);
+  a76=(a42*a25);
+  a76=(a76*a75);
+  a74=(a74+a76);
+  a76=(a43*a74);
+  a73=(a73*a16);
+  a73=(a73*a72);
+  a42=(a42*a06);
+  a42=(a42*a75);
+  a73=(a73+a42);
+  a42=(a41*a73);
+  a76=(a76-a42);
+  a71=(a71+a76);
+  a76=(a41*a71);
+  a42=arg[0]? arg[0][5] : 0;
+  a76=(a76*a42);
+  a70=(a70+a76);
+  a76=(a44*a53);
+  a77=(a46*a62);
+  a76=(a76-a77);
+  a77=(a44*a59);
+  a78=(a46*a57);
+  a77=(a77-a78);
+  a78=(a00*a77);
+  a79=(a78*a14);
+  a79=(a79*a77);
+  a27=(a27/a45);
+  a80=(a27*a57);
+  a30=(a30/a45);
+  a45=(a30*a59);
+  a80=(a80-a45);
+  a45=(a00*a80);
+  a81=(a45*a15);
+  a81=(a81*a80);
+  a79=(a79+a81);
+  a81=(a46*a79);
+  a78=(a78*a13);
+  a78=(a78*a77);
+  a45=(a45*a12);
+  a45=(a45*a80);
+  a78=(a78+a45);
+  a45=(a44*a78);
+  a81=(a81-a45);
+  a76=(a76+a81);
+  a81=(a44*a76);
+  a45=arg[0]? arg[0][6] : 0;
+  a81=(a81*a45);
+  a70=(a70+a81);
+  a81=(a20*a53);
+  a82=(a48*a62);
+  a81=(a81-a82);
+  a82=(a20*a59);
+  a83=(a48*a57);
+  a82=(a82-a83);
+  a83=(a00*a82);
+  a84=(a83*a08);
+  a84=(a84*a82);
+  a33=(a33/a47);
+  a85=(a33*a57);
+  a23=(a23/a47);
+  a47=(a23*a59);
+  a85=(a85-a47);
+  a47=(a00*a85);
+  a86=(a47*a04);
+  a86=(a86*a85);
+  a84=(a84+a86);
+  a86=(a48*a84);
+  a83=(a83*a07);
+  a83=(a83*a82);
+  a47=(a47*a31);
+  a47=(a47*a85);
+  a83=(a83+a47);
+  a47=(a20*a83);
+  a86=(a86-a47);
+  a81=(a81+a86);
+  a86=(a20*a81);
+  a47=arg[0]? arg[0][7] : 0;
+  a86=(a86*a47);
+  a70=(a70+a86);
+  a86=(a05*a62);
+  a87=(a40*a53);
+  a86=(a86-a87);
+  a60=(a40*a60);
+  a68=(a05*a68);
+  a60=(a60-a68);
+  a86=(a86+a60);
+  a02=(a02*a03);
+  a01=(a01*a29);
+  a02=(a02+a01);
+  a01=(a86*a02);
+  a69=casadi_sq(a69);
+  a69=(a69*a35);
+  a01=(a01+a69);
+  a69=(a38*a01);
+  a02=(a54*a02);
+  a29=casadi_sq(a63);
+  a29=(a29*a35);
+  a02=(a02-a29);
+  a29=(a40*a02);
+  a69=(a69-a29);
+  a29=arg[0]? arg[0][8] : 0;
+  a69=(a69*a29);
+  a70=(a70+a69);
+  a69=(a22*a62);
+  a35=(a28*a53);
+  a69=(a69-a35);
+  a73=(a28*a73);
+  a74=(a22*a74);
+  a73=(a73-a74);
+  a69=(a69+a73);
+  a16=(a16*a06);
+  a17=(a17*a25);
+  a16=(a16+a17);
+  a17=(a69*a16);
+  a75=casadi_sq(a75);
+  a75=(a75*a36);
+  a17=(a17+a75);
+  a75=(a41*a17);
+  a16=(a71*a16);
+  a25=casadi_sq(a72);
+  a25=(a25*a36);
+  a16=(a16-a25);
+  a25=(a28*a16);
+  a75=(a75-a25);
+  a25=arg[0]? arg[0][9] : 0;
+  a75=(a75*a25);
+  a70=(a70+a75);
+  a75=(a27*a62);
+  a36=(a30*a53);
+  a75=(a75-a36);
+  a78=(a30*a78);
+  a79=(a27*a79);
+  a78=(a78-a79);
+  a75=(a75+a78);
+  a13=(a13*a12);
+  a14=(a14*a15);
+  a13=(a13+a14);
+  a14=(a75*a13);
+  a80=casadi_sq(a80);
+  a80=(a80*a09);
+  a14=(a14+a80);
+  a80=(a44*a14);
+  a13=(a76*a13);
+  a15=casadi_sq(a77);
+  a15=(a15*a09);
+  a13=(a13-a15);
+  a15=(a30*a13);
+  a80=(a80-a15);
+  a15=arg[0]? arg[0][10] : 0;
+  a80=(a80*a15);
+  a70=(a70+a80);
+  a62=(a33*a62);
+  a53=(a23*a53);
+  a62=(a62-a53);
+  a83=(a23*a83);
+  a84=(a33*a84);
+  a83=(a83-a84);
+  a62=(a62+a83);
+  a07=(a07*a31);
+  a08=(a08*a04);
+  a07=(a07+a08);
+  a08=(a62*a07);
+  a85=casadi_sq(a85);
+  a85=(a85*a37);
+  a08=(a08+a85);
+  a85=(a20*a08);
+  a07=(a81*a07);
+  a04=casadi_sq(a82);
+  a04=(a04*a37);
+  a07=(a07-a04);
+  a04=(a23*a07);
+  a85=(a85-a04);
+  a04=arg[0]? arg[0][11] : 0;
+  a85=(a85*a04);
+  a70=(a70+a85);
+  a40=(a40*a86);
+  a85=arg[0]? arg[0][12] : 0;
+  a40=(a40*a85);
+  a70=(a70-a40);
+  a28=(a28*a69);
+  a40=arg[0]? arg[0][13] : 0;
+  a28=(a28*a40);
+  a70=(a70-a28);
+  a30=(a30*a75);
+  a28=arg[0]? arg[0][14] : 0;
+  a30=(a30*a28);
+  a70=(a70-a30);
+  a23=(a23*a62);
+  a30=arg[0]? arg[0][15] : 0;
+  a23=(a23*a30);
+  a70=(a70-a23);
+  a23=(a38*a63);
+  a37=arg[0]? arg[0][16] : 0;
+  a23=(a23*a37);
+  a70=(a70+a23);
+  a23=(a41*a72);
+  a31=arg[0]? arg[0][17] : 0;
+  a23=(a23*a31);
+  a70=(a70+a23);
+  a23=(a44*a77);
+  a83=arg[0]? arg[0][18] : 0;
+  a23=(a23*a83);
+  a70=(a70+a23);
+  a23=(a20*a82);
+  a84=arg[0]? arg[0][19] : 0;
+  a23=(a23*a84);
+  a70=(a70+a23);
+  a23=0.;
+  a53=(a23<=a63);
+  a80=(a53?a32:0);
+  a53=(!a53);
+  a09=-1.;
+  a53=(a53?a09:0);
+  a80=(a80+a53);
+  a53=(a38*a80);
+  a12=arg[0]? arg[0][20] : 0;
+  a53=(a53*a12);
+  a70=(a70+a53);
+  a53=(a23<=a72);
+  a78=(a53?a32:0);
+  a53=(!a53);
+  a53=(a53?a09:0);
+  a78=(a78+a53);
+  a53=(a41*a78);
+  a79=arg[0]? arg[0][21] : 0;
+  a53=(a53*a79);
+  a70=(a70+a53);
+  a53=(a23<=a77);
+  a36=(a53?a32:0);
+  a53=(!a53);
+  a53=(a53?a09:0);
+  a36=(a36+a53);
+  a53=(a44*a36);
+  a06=arg[0]? arg[0][22] : 0;
+  a53=(a53*a06);
+  a70=(a70+a53);
+  a23=(a23<=a82);
+  a53=(a23?a32:0);
+  a23=(!a23);
+  a23=(a23?a09:0);
+  a53=(a53+a23);
+  a23=(a20*a53);
+  a09=arg[0]? arg[0][23] : 0;
+  a23=(a23*a09);
+  a70=(a70+a23);
+  a02=(a05*a02);
+  a01=(a39*a01);
+  a02=(a02-a01);
+  a02=(a02*a29);
+  a54=(a39*a54);
+  a54=(a54*a19);
+  a71=(a43*a71);
+  a71=(a71*a42);
+  a54=(a54+a71);
+  a76=(a46*a76);
+  a76=(a76*a45);
+  a54=(a54+a76);
+  a81=(a48*a81);
+  a81=(a81*a47);
+  a54=(a54+a81);
+  a02=(a02-a54);
+  a16=(a22*a16);
+  a17=(a43*a17);
+  a16=(a16-a17);
+  a16=(a16*a25);
+  a02=(a02+a16);
+  a13=(a27*a13);
+  a14=(a46*a14);
+  a13=(a13-a14);
+  a13=(a13*a15);
+  a02=(a02+a13);
+  a07=(a33*a07);
+  a08=(a48*a08);
+  a07=(a07-a08);
+  a07=(a07*a04);
+  a02=(a02+a07);
+  a05=(a05*a86);
+  a05=(a05*a85);
+  a02=(a02+a05);
+  a22=(a22*a69);
+  a22=(a22*a40);
+  a02=(a02+a22);
+  a27=(a27*a75);
+  a27=(a27*a28);
+  a02=(a02+a27);
+  a33=(a33*a62);
+  a33=(a33*a30);
+  a02=(a02+a33);
+  a63=(a39*a63);
+  a63=(a63*a37);
+  a02=(a02-a63);
+  a72=(a43*a72);
+  a72=(a72*a31);
+  a02=(a02-a72);
+  a77=(a46*a77);
+  a77=(a77*a83);
+  a02=(a02-a77);
+  a82=(a48*a82);
+  a82=(a82*a84);
+  a02=(a02-a82);
+  a39=(a39*a80);
+  a39=(a39*a12);
+  a02=(a02-a39);
+  a43=(a43*a78);
+  a43=(a43*a79);
+  a02=(a02-a43);
+  a46=(a46*a36);
+  a46=(a46*a06);
+  a02=(a02-a46);
+  a48=(a48*a53);
+  a48=(a48*a09);
+  a02=(a02-a48);
+  a48=arg[5]? arg[5][8] : 0;
+  a53=arg[5]? arg[5][9] : 0;
+  a46=arg[5]? arg[5][10] : 0;
+  a36=arg[5]? arg[5][11] : 0;
+  arg[6]=w+0;
+  arg[7]=w+8;
+  arg[8] = arg[5]? arg[5] + 8 : 0;
+  arg[9] = arg[5]? arg[5] + 12 : 0;
+  arg[10] = arg[5]? arg[5] + 16 : 0;
+  res[4]=w+22;
+  res[5]=w+26;
+  w[0] = a38;
+  w[1] = a41;
+  w[2] = a44;
+  w[3] = a20;
+  w[4] = a49;
+  w[5] = a50;
+  w[6] = a51;
+  w[7] = a52;
+  w[8] = a70;
+  w[9] = a02;
+  if (casadi_f16(arg+6, res+4, iw, w+27, 0)) return 1;
+  a38 = w[22];
+  a41 = w[23];
+  a44 = w[24];
+  a20 = w[25];
+  a49 = w[26];
+  a50=(a38+a41);
+  a50=(a50+a44);
+  a50=(a50+a20);
+  a50=(a50+a19);
+  a50=(a50+a42);
+  a50=(a50+a45);
+  a50=(a50+a47);
+  a50=(a50+a29);
+  a50=(a50+a25);
+  a50=(a50+a15);
+  a50=(a50+a04);
+  a50=(a50+a85);
+  a50=(a50+a40);
+  a50=(a50+a28);
+  a50=(a50+a30);
+  a50=(a50+a37);
+  a50=(a50+a31);
+  a50=(a50+a83);
+  a50=(a50+a84);
+  a50=(a50+a12);
+  a50=(a50+a79);
+  a50=(a50+a06);
+  a50=(a50+a09);
+  a50=(a50+a24);
+  a50=(a50+a18);
+  a50=(a50+a59);
+  a50=(a50+a57);
+  a50=casadi_fabs(a50);
+  a51=casadi_inf;
+  a50=(a50<a51);
+  a51=(a34&&a50);
+  a51=(a10&&a51);
+  a52=(-a48);
+  a38=casadi_fmax(a38,a52);
+  a38=casadi_fmin(a38,a48);
+  a38=(a51?a38:0);
+  if (res[0]!=0) res[0][0]=a38;
+  a38=(-a53);
+  a41=casadi_fmax(a41,a38);
+  a41=casadi_fmin(a41,a53);
+  a41=(a51?a41:0);
+  if (res[0]!=0) res[0][1]=a41;
+  a41=(-a46);
+  a44=casadi_fmax(a44,a41);
+  a44=casadi_fmin(a44,a46);
+  a44=(a51?a44:0);
+  if (res[0]!=0) res[0][2]=a44;
+  a44=(-a36);
+  a20=casadi_fmax(a20,a44);
+  a20=casadi_fmin(a20,a36);
+  a20=(a51?a20:0);
+  if (res[0]!=0) res[0][3]=a20;
+  a20=(a10&&a50);
+  a36=(a20?a24:0);
+  a44=(!a20);
+  a58=(a44?a58:0);
+  a36=(a36+a58);
+  if (res[1]!=0) res[1][0]=a36;
+  a36=(a20?a18:0);
+  a66=(a44?a66:0);
+  a36=(a36+a66);
+  if (res[1]!=0) res[1][1]=a36;
+  a36=(a20?a59:0);
+  a56=(a44?a56:0);
+  a36=(a36+a56);
+  if (res[1]!=0) res[1][2]=a36;
+  a20=(a20?a57:0);
+  a44=(a44?a65:0);
+  a20=(a20+a44);
+  if (res[1]!=0) res[1][3]=a20;
+  a20=(a51?a19:0);
+  a44=(!a51);
+  a19=(a44?a19:0);
+  a20=(a20+a19);
+  if (res[1]!=0) res[1][4]=a20;
+  a20=(a51?a42:0);
+  a42=(a44?a42:0);
+  a20=(a20+a42);
+  if (res[1]!=0) res[1][5]=a20;
+  a20=(a51?a45:0);
+  a45=(a44?a45:0);
+  a20=(a20+a45);
+  if (res[1]!=0) res[1][6]=a20;
+  a20=(a51?a47:0);
+  a47=(a44?a47:0);
+  a20=(a20+a47);
+  if (res[1]!=0) res[1][7]=a20;
+  a20=(a51?a29:0);
+  a29=(a44?a29:0);
+  a20=(a20+a29);
+  if (res[1]!=0) res[1][8]=a20;
+  a20=(a51?a25:0);
+  a25=(a44?a25:0);
+  a20=(a20+a25);
+  if (res[1]!=0) res[1][9]=a20;
+  a20=(a51?a15:0);
+  a15=(a44?a15:0);
+  a20=(a20+a15);
+  if (res[1]!=0) res[1][10]=a20;
+  a20=(a51?a04:0);
+  a04=(a44?a04:0);
+  a20=(a20+a04);
+  if (res[1]!=0) res[1][11]=a20;
+  a20=(a51?a85:0);
+  a85=(a44?a85:0);
+  a20=(a20+a85);
+  if (res[1]!=0) res[1][12]=a20;
+  a20=(a51?a40:0);
+  a40=(a44?a40:0);
+  a20=(a20+a40);
+  if (res[1]!=0) res[1][13]=a20;
+  a20=(a51?a28:0);
+  a28=(a44?a28:0);
+  a20=(a20+a28);
+  if (res[1]!=0) res[1][14]=a20;
+  a20=(a51?a30:0);
+  a30=(a44?a30:0);
+  a20=(a20+a30);
+  if (res[1]!=0) res[1][15]=a20;
+  a20=(a51?a37:0);
+  a37=(a44?a37:0);
+  a20=(a20+a37);
+  if (res[1]!=0) res[1][16]=a20;
+  a20=(a51?a31:0);
+  a31=(a44?a31:0);
+  a20=(a20+a31);
+  if (res[1]!=0) res[1][17]=a20;
+  a20=(a51?a83:0);
+  a83=(a44?a83:0);
+  a20=(a20+a83);
+  if (res[1]!=0) res[1][18]=a20;
+  a20=(a51?a84:0);
+  a84=(a44?a84:0);
+  a20=(a20+a84);
+  if (res[1]!=0) res[1][19]=a20;
+  a20=(a51?a12:0);
+  a12=(a44?a12:0);
+  a20=(a20+a12);
+  if (res[1]!=0) res[1][20]=a20;
+  a20=(a51?a79:0);
+  a79=(a44?a79:0);
+  a20=(a20+a79);
+  if (res[1]!=0) res[1][21]=a20;
+  a20=(a51?a06:0);
+  a06=(a44?a06:0);
+  a20=(a20+a06);
+  if (res[1]!=0) res[1][22]=a20;
+  a51=(a51?a09:0);
+  a44=(a44?a09:0);
+  a51=(a51+a44);
+  if (res[1]!=0) res[1][23]=a51;
+  a51=(a49==a26);
+  a26=(a51?a26:0);
+  a51=(!a51);
+  a49=(a49==a32);
+  a44=4.;
+  a49=(a49?a44:0);
+  a51=(a51?a49:0);
+  a26=(a26+a51);
+  a26=(a50?a26:0);
+  a50=(!a50);
+  a51=3.;
+  a50=(a50?a51:0);
+  a26=(a26+a50);
+  a26=(a34?a26:0);
+  a34=(!a34);
+  a34=(a34?a32:0);
+  a26=(a26+a34);
+  a26=(a10?a26:0);
+  a10=(!a10);
+  a34=5.;
+  a10=(a10?a34:0);
+  a26=(a26+a10);
+  if (res[2]!=0) res[2][0]=a26;
+  if (res[3]!=0) res[3][0]=a24;
+  if (res[3]!=0) res[3][1]=a18;
+  if (res[3]!=0) res[3][2]=a59;
+  if (res[3]!=0) res[3][3]=a57;
+  if (res[3]!=0) res[3][4]=a61;
+  if (res[3]!=0) res[3][5]=a67;
+  if (res[3]!=0) res[3][6]=a55;
+  if (res[3]!=0) res[3][7]=a64;
+  if (res[3]!=0) res[3][8]=a21;
+  if (res[3]!=0) res[3][9]=a11;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f29(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_ctc_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 972;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 972*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_lqr_step:(state[24],qa[4],xd[2],xd_dot[2],xd_ddot[2],params[17],K[16],tau_ff[4])->(tau_a[4],state_next[24],status,diag[10]) */
+static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a05=(a04*a01);
+  a06=4.8799999999999999e-01;
+  a07=arg[1]? arg[1][3] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a09=(a05+a09);
+  a10=casadi_sq(a09);
+  a11=5.0000000000000000e-01;
+  a12=(a11+a05);
+  a13=arg[1]? arg[1][2] : 0;
+  a14=sin(a13);
+  a15=(a06*a14);
+  a12=(a12+a15);
+  a15=casadi_sq(a12);
+  a10=(a10+a15);
+  a15=-5.0000000000000000e-01;
+  a05=(a15+a05);
+  a16=arg[1]? arg[1][1] : 0;
+  a17=sin(a16);
+  a18=(a06*a17);
+  a05=(a05+a18);
+  a18=casadi_sq(a05);
+  a10=(a10+a18);
+  a18=1.2000000000000000e+00;
+  a04=(a04*a02);
+  a18=(a18+a04);
+  a07=cos(a07);
+  a19=(a06*a07);
+  a18=(a18+a19);
+  a19=2.5000000000000000e-01;
+  a20=2.4399999999999999e-01;
+  a21=(a20*a08);
+  a21=(a19+a21);
+  a21=casadi_sq(a21);
+  a22=5.9999999999999998e-01;
+  a23=(a20*a07);
+  a22=(a22+a23);
+  a22=casadi_sq(a22);
+  a21=(a21+a22);
+  a22=(a20*a01);
+  a22=(a19+a22);
+  a22=casadi_sq(a22);
+  a21=(a21-a22);
+  a24=-5.9535999999999999e-02;
+  a25=casadi_sq(a02);
+  a24=(a24*a25);
+  a21=(a21+a24);
+  a25=(a18*a21);
+  a26=8.6599999999999999e-01;
+  a26=(a26+a04);
+  a16=cos(a16);
+  a04=(a06*a16);
+  a04=(a26+a04);
+  a27=4.3300000000000000e-01;
+  a28=(a20*a16);
+  a29=(a27+a28);
+  a29=casadi_sq(a29);
+  a29=(a29-a22);
+  a29=(a29+a24);
+  a30=5.9535999999999999e-02;
+  a31=casadi_sq(a17);
+  a30=(a30*a31);
+  a29=(a29+a30);
+  a30=(a04*a29);
+  a25=(a25+a30);
+  a13=cos(a13);
+  a06=(a06*a13);
+  a26=(a26+a06);
+  a06=(a20*a14);
+  a06=(a11+a06);
+  a06=casadi_sq(a06);
+  a30=(a20*a13);
+  a27=(a27+a30);
+  a27=casadi_sq(a27);
+  a06=(a06+a27);
+  a06=(a06-a22);
+  a06=(a06+a24);
+  a24=(a26*a06);
+  a25=(a25+a24);
+  a24=(a10*a25);
+  a22=(a09*a18);
+  a27=(a12*a26);
+  a22=(a22+a27);
+  a27=(a05*a04);
+  a22=(a22+a27);
+  a09=(a09*a21);
+  a12=(a12*a06);
+  a09=(a09+a12);
+  a05=(a05*a29);
+  a09=(a09+a05);
+  a05=(a22*a09);
+  a24=(a24-a05);
+  a18=casadi_sq(a18);
+  a04=casadi_sq(a04);
+  a18=(a18+a04);
+  a26=casadi_sq(a26);
+  a18=(a18+a26);
+  a10=(a10*a18);
+  a26=casadi_sq(a22);
+  a10=(a10-a26);
+  a24=(a24/a10);
+  a03=(a03+a24);
+  a26=casadi_sq(a03);
+  a04=-2.5000000000000000e-01;
+  a05=(a00*a01);
+  a29=(a04+a05);
+  a18=(a18*a09);
+  a22=(a22*a25);
+  a18=(a18-a22);
+  a18=(a18/a10);
+  a29=(a29+a18);
+  a10=casadi_sq(a29);
+  a26=(a26+a10);
+  a26=sqrt(a26);
+  a10=(a00+a26);
+  a10=casadi_fabs(a10);
+  a22=(a00*a17);
+  a25=(a22+a18);
+  a09=casadi_sq(a25);
+  a12=-4.3300000000000000e-01;
+  a06=(a00*a16);
+  a06=(a12+a06);
+  a06=(a06+a24);
+  a21=casadi_sq(a06);
+  a09=(a09+a21);
+  a09=sqrt(a09);
+  a21=(a00+a09);
+  a21=casadi_fabs(a21);
+  a10=casadi_fmax(a10,a21);
+  a21=(a00*a13);
+  a12=(a12+a21);
+  a12=(a12+a24);
+  a21=casadi_sq(a12);
+  a27=(a00*a14);
+  a15=(a15+a27);
+  a15=(a15+a18);
+  a31=casadi_sq(a15);
+  a21=(a21+a31);
+  a21=sqrt(a21);
+  a31=(a00+a21);
+  a31=casadi_fabs(a31);
+  a10=casadi_fmax(a10,a31);
+  a31=-5.9999999999999998e-01;
+  a32=(a00*a07);
+  a31=(a31+a32);
+  a31=(a31+a24);
+  a32=casadi_sq(a31);
+  a33=(a00*a08);
+  a04=(a04+a33);
+  a04=(a04+a18);
+  a34=casadi_sq(a04);
+  a32=(a32+a34);
+  a32=sqrt(a32);
+  a34=(a00+a32);
+  a34=casadi_fabs(a34);
+  a10=casadi_fmax(a10,a34);
+  a34=arg[5]? arg[5][16] : 0;
+  a10=(a10<=a34);
+  a34=arg[5]? arg[5][2] : 0;
+  a03=(a03/a26);
+  a01=(a01*a03);
+  a29=(a29/a26);
+  a26=(a02*a29);
+  a01=(a01-a26);
+  a01=casadi_fabs(a01);
+  a06=(a06/a09);
+  a17=(a17*a06);
+  a25=(a25/a09);
+  a16=(a16*a25);
+  a17=(a17-a16);
+  a17=casadi_fabs(a17);
+  a16=(a01+a17);
+  a01=(a01-a17);
+  a01=casadi_fabs(a01);
+  a16=(a16-a01);
+  a01=2.;
+  a16=(a16/a01);
+  a12=(a12/a21);
+  a14=(a14*a12);
+  a15=(a15/a21);
+  a13=(a13*a15);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a16+a14);
+  a16=(a16-a14);
+  a16=casadi_fabs(a16);
+  a13=(a13-a16);
+  a13=(a13/a01);
+  a31=(a31/a32);
+  a08=(a08*a31);
+  a04=(a04/a32);
+  a07=(a07*a04);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a07=(a13+a08);
+  a13=(a13-a08);
+  a13=casadi_fabs(a13);
+  a07=(a07-a13);
+  a07=(a07/a01);
+  a34=(a34<=a07);
+  a13=arg[5]? arg[5][3] : 0;
+  a08=1.;
+  a32=casadi_sq(a03);
+  a16=casadi_sq(a29);
+  a32=(a32-a16);
+  a16=casadi_sq(a06);
+  a14=casadi_sq(a25);
+  a16=(a16-a14);
+  a32=(a32+a16);
+  a16=casadi_sq(a12);
+  a14=casadi_sq(a15);
+  a16=(a16-a14);
+  a32=(a32+a16);
+  a16=casadi_sq(a31);
+  a14=casadi_sq(a04);
+  a16=(a16-a14);
+  a32=(a32+a16);
+  a32=casadi_sq(a32);
+  a16=(2.*a03);
+  a16=(a16*a29);
+  a14=(2.*a06);
+  a14=(a14*a25);
+  a16=(a16+a14);
+  a14=(2.*a12);
+  a14=(a14*a15);
+  a16=(a16+a14);
+  a14=(2.*a31);
+  a14=(a14*a04);
+  a16=(a16+a14);
+  a16=casadi_sq(a16);
+  a32=(a32+a16);
+  a32=sqrt(a32);
+  a19=(a19*a32);
+  a19=(a08-a19);
+  a32=casadi_fabs(a19);
+  a19=(a19+a32);
+  a11=(a11*a19);
+  a11=sqrt(a11);
+  a13=(a13<=a11);
+  a34=(a34&&a13);
+  a03=(a20*a03);
+  a05=(a05*a03);
+  a29=(a00*a29);
+  a02=(a20*a02);
+  a02=(a29*a02);
+  a05=(a05-a02);
+  a03=(a03/a05);
+  a29=(a29/a05);
+  a05=casadi_sq(a29);
+  a25=(a00*a25);
+  a06=(a20*a06);
+  a22=(a22*a06);
+  a28=(a25*a28);
+  a22=(a22-a28);
+  a25=(a25/a22);
+  a28=casadi_sq(a25);
+  a05=(a05+a28);
+  a15=(a00*a15);
+  a12=(a20*a12);
+  a27=(a27*a12);
+  a30=(a15*a30);
+  a27=(a27-a30);
+  a15=(a15/a27);
+  a30=casadi_sq(a15);
+  a05=(a05+a30);
+  a00=(a00*a04);
+  a20=(a20*a31);
+  a33=(a33*a20);
+  a23=(a00*a23);
+  a33=(a33-a23);
+  a00=(a00/a33);
+  a23=casadi_sq(a00);
+  a05=(a05+a23);
+  a23=arg[7]? arg[7][0] : 0;
+  a31=arg[6]? arg[6][0] : 0;
+  a04=arg[2]? arg[2][0] : 0;
+  a30=(a24-a04);
+  a31=(a31*a30);
+  a28=arg[6]? arg[6][1] : 0;
+  a02=arg[2]? arg[2][1] : 0;
+  a13=(a18-a02);
+  a28=(a28*a13);
+  a31=(a31+a28);
+  a28=arg[6]? arg[6][2] : 0;
+  a19=arg[0]? arg[0][2] : 0;
+  a32=arg[5]? arg[5][1] : 0;
+  a16=arg[0]? arg[0][0] : 0;
+  a14=(a24-a16);
+  a21=arg[5]? arg[5][0] : 0;
+  a14=(a14/a21);
+  a14=(a14-a19);
+  a14=(a32*a14);
+  a14=(a19+a14);
+  a17=arg[3]? arg[3][0] : 0;
+  a09=(a14-a17);
+  a28=(a28*a09);
+  a31=(a31+a28);
+  a28=arg[6]? arg[6][3] : 0;
+  a26=arg[0]? arg[0][3] : 0;
+  a35=arg[0]? arg[0][1] : 0;
+  a36=(a18-a35);
+  a36=(a36/a21);
+  a36=(a36-a26);
+  a32=(a32*a36);
+  a32=(a26+a32);
+  a36=arg[3]? arg[3][1] : 0;
+  a21=(a32-a36);
+  a28=(a28*a21);
+  a31=(a31+a28);
+  a23=(a23-a31);
+  a31=(a03*a23);
+  a06=(a06/a22);
+  a22=arg[7]? arg[7][1] : 0;
+  a28=arg[6]? arg[6][4] : 0;
+  a28=(a28*a30);
+  a37=arg[6]? arg[6][5] : 0;
+  a37=(a37*a13);
+  a28=(a28+a37);
+  a37=arg[6]? arg[6][6] : 0;
+  a37=(a37*a09);
+  a28=(a28+a37);
+  a37=arg[6]? arg[6][7] : 0;
+  a37=(a37*a21);
+  a28=(a28+a37);
+  a22=(a22-a28);
+  a28=(a06*a22);
+  a31=(a31+a28);
+  a12=(a12/a27);
+  a27=arg[7]? arg[7][2] : 0;
+  a28=arg[6]? arg[6][8] : 0;
+  a28=(a28*a30);
+  a37=arg[6]? arg[6][9] : 0;
+  a37=(a37*a13);
+  a28=(a28+a37);
+  a37=arg[6]? arg[6][10] : 0;
+  a37=(a37*a09);
+  a28=(a28+a37);
+  a37=arg[6]? arg[6][11] : 0;
+  a37=(a37*a21);
+  a28=(a28+a37);
+  a27=(a27-a28);
+  a28=(a12*a27);
+  a31=(a31+a28);
+  a20=(a20/a33);
+  a33=arg[7]? arg[7][3] : 0;
+  a28=arg[6]? arg[6][12] : 0;
+  a28=(a28*a30);
+  a30=arg[6]? arg[6][13] : 0;
+  a30=(a30*a13);
+  a28=(a28+a30);
+  a30=arg[6]? arg[6][14] : 0;
+  a30=(a30*a09);
+  a28=(a28+a30);
+  a30=arg[6]? arg[6][15] : 0;
+  a30=(a30*a21);
+  a28=(a28+a30);
+  a33=(a33-a28);
+  a28=(a20*a33);
+  a31=(a31+a28);
+  a28=(a05*a31);
+  a30=(a03*a29);
+  a21=(a06*a25);
+  a30=(a30+a21);
+  a21=(a12*a15);
+  a30=(a30+a21);
+  a21=(a20*a00);
+  a30=(a30+a21);
+  a23=(a29*a23);
+  a22=(a25*a22);
+  a23=(a23+a22);
+  a27=(a15*a27);
+  a23=(a23+a27);
+  a33=(a00*a33);
+  a23=(a23+a33);
+  a33=(a30*a23);
+  a28=(a28-a33);
+  a33=casadi_sq(a03);
+  a27=casadi_sq(a06);
+  a33=(a33+a27);
+  a27=casadi_sq(a12);
+  a33=(a33+a27);
+  a27=casadi_sq(a20);
+  a33=(a33+a27);
+  a05=(a33*a05);
+  a27=(a29*a03);
+  a22=(a25*a06);
+  a27=(a27+a22);
+  a22=(a15*a12);
+  a27=(a27+a22);
+  a22=(a00*a20);
+  a27=(a27+a22);
+  a30=(a30*a27);
+  a05=(a05-a30);
+  a28=(a28/a05);
+  a03=(a03*a28);
+  a27=(a27*a31);
+  a33=(a33*a23);
+  a27=(a27-a33);
+  a27=(a27/a05);
+  a29=(a29*a27);
+  a03=(a03-a29);
+  a06=(a06*a28);
+  a25=(a25*a27);
+  a06=(a06-a25);
+  a25=(a03+a06);
+  a12=(a12*a28);
+  a15=(a15*a27);
+  a12=(a12-a15);
+  a25=(a25+a12);
+  a20=(a20*a28);
+  a00=(a00*a27);
+  a20=(a20-a00);
+  a25=(a25+a20);
+  a00=arg[0]? arg[0][4] : 0;
+  a25=(a25+a00);
+  a27=arg[0]? arg[0][5] : 0;
+  a25=(a25+a27);
+  a28=arg[0]? arg[0][6] : 0;
+  a25=(a25+a28);
+  a15=arg[0]? arg[0][7] : 0;
+  a25=(a25+a15);
+  a29=arg[0]? arg[0][8] : 0;
+  a25=(a25+a29);
+  a05=arg[0]? arg[0][9] : 0;
+  a25=(a25+a05);
+  a33=arg[0]? arg[0][10] : 0;
+  a25=(a25+a33);
+  a23=arg[0]? arg[0][11] : 0;
+  a25=(a25+a23);
+  a31=arg[0]? arg[0][12] : 0;
+  a25=(a25+a31);
+  a30=arg[0]? arg[0][13] : 0;
+  a25=(a25+a30);
+  a22=arg[0]? arg[0][14] : 0;
+  a25=(a25+a22);
+  a21=arg[0]? arg[0][15] : 0;
+  a25=(a25+a21);
+  a09=arg[0]? arg[0][16] : 0;
+  a25=(a25+a09);
+  a13=arg[0]? arg[0][17] : 0;
+  a25=(a25+a13);
+  a37=arg[0]? arg[0][18] : 0;
+  a25=(a25+a37);
+  a38=arg[0]? arg[0][19] : 0;
+  a25=(a25+a38);
+  a39=arg[0]? arg[0][20] : 0;
+  a25=(a25+a39);
+  a40=arg[0]? arg[0][21] : 0;
+  a25=(a25+a40);
+  a41=arg[0]? arg[0][22] : 0;
+  a25=(a25+a41);
+  a42=arg[0]? arg[0][23] : 0;
+  a25=(a25+a42);
+  a25=(a25+a24);
+  a25=(a25+a18);
+  a25=(a25+a14);
+  a25=(a25+a32);
+  a25=casadi_fabs(a25);
+  a43=casadi_inf;
+  a25=(a25<a43);
+  a43=(a34&&a25);
+  a43=(a10&&a43);
+  a44=arg[5]? arg[5][4] : 0;
+  a45=(-a44);
+  a45=casadi_fmax(a03,a45);
+  a45=casadi_fmin(a45,a44);
+  a45=(a43?a45:0);
+  if (res[0]!=0) res[0][0]=a45;
+  a45=arg[5]? arg[5][5] : 0;
+  a46=(-a45);
+  a46=casadi_fmax(a06,a46);
+  a46=casadi_fmin(a46,a45);
+  a46=(a43?a46:0);
+  if (res[0]!=0) res[0][1]=a46;
+  a46=arg[5]? arg[5][6] : 0;
+  a47=(-a46);
+  a47=casadi_fmax(a12,a47);
+  a47=casadi_fmin(a47,a46);
+  a47=(a43?a47:0);
+  if (res[0]!=0) res[0][2]=a47;
+  a47=arg[5]? arg[5][7] : 0;
+  a48=(-a47);
+  a48=casadi_fmax(a20,a48);
+  a48=casadi_fmin(a48,a47);
+  a48=(a43?a48:0);
+  if (res[0]!=0) res[0][3]=a48;
+  a48=(a10&&a25);
+  a49=(a48?a24:0);
+  a50=(!a48);
+  a16=(a50?a16:0);
+  a49=(a49+a16);
+  if (res[1]!=0) res[1][0]=a49;
+  a49=(a48?a18:0);
+  a35=(a50?a35:0);
+  a49=(a49+a35);
+  if (res[1]!=0) res[1][1]=a49;
+  a49=(a48?a14:0);
+  a19=(a50?a19:0);
+  a49=(a49+a19);
+  if (res[1]!=0) res[1][2]=a49;
+  a48=(a48?a32:0);
+  a50=(a50?a26:0);
+  a48=(a48+a50);
+  if (res[1]!=0) res[1][3]=a48;
+  a48=(a43?a00:0);
+  a50=(!a43);
+  a00=(a50?a00:0);
+  a48=(a48+a00);
+  if (res[1]!=0) res[1][4]=a48;
+  a48=(a43?a27:0);
+  a27=(a50?a27:0);
+  a48=(a48+a27);
+  if (res[1]!=0) res[1][5]=a48;
+  a48=(a43?a28:0);
+  a28=(a50?a28:0);
+  a48=(a48+a28);
+  if (res[1]!=0) res[1][6]=a48;
+  a48=(a43?a15:0);
+  a15=(a50?a15:0);
+  a48=(a48+a15);
+  if (res[1]!=0) res[1][7]=a48;
+  a48=(a43?a29:0);
+  a29=(a50?a29:0);
+  a48=(a48+a29);
+  if (res[1]!=0) res[1][8]=a48;
+  a48=(a43?a05:0);
+  a05=(a50?a05:0);
+  a48=(a48+a05);
+  if (res[1]!=0) res[1][9]=a48;
+  a48=(a43?a33:0);
+  a33=(a50?a33:0);
+  a48=(a48+a33);
+  if (res[1]!=0) res[1][10]=a48;
+  a48=(a43?a23:0);
+  a23=(a50?a23:0);
+  a48=(a48+a23);
+  if (res[1]!=0) res[1][11]=a48;
+  a48=(a43?a31:0);
+  a31=(a50?a31:0);
+  a48=(a48+a31);
+  if (res[1]!=0) res[1][12]=a48;
+  a48=(a43?a30:0);
+  a30=(a50?a30:0);
+  a48=(a48+a30);
+  if (res[1]!=0) res[1][13]=a48;
+  a48=(a43?a22:0);
+  a22=(a50?a22:0);
+  a48=(a48+a22);
+  if (res[1]!=0) res[1][14]=a48;
+  a48=(a43?a21:0);
+  a21=(a50?a21:0);
+  a48=(a48+a21);
+  if (res[1]!=0) res[1][15]=a48;
+  a48=(a43?a09:0);
+  a09=(a50?a09:0);
+  a48=(a48+a09);
+  if (res[1]!=0) res[1][16]=a48;
+  a48=(a43?a13:0);
+  a13=(a50?a13:0);
+  a48=(a48+a13);
+  if (res[1]!=0) res[1][17]=a48;
+  a48=(a43?a37:0);
+  a37=(a50?a37:0);
+  a48=(a48+a37);
+  if (res[1]!=0) res[1][18]=a48;
+  a48=(a43?a38:0);
+  a38=(a50?a38:0);
+  a48=(a48+a38);
+  if (res[1]!=0) res[1][19]=a48;
+  a48=(a43?a39:0);
+  a39=(a50?a39:0);
+  a48=(a48+a39);
+  if (res[1]!=0) res[1][20]=a48;
+  a48=(a43?a40:0);
+  a40=(a50?a40:0);
+  a48=(a48+a40);
+  if (res[1]!=0) res[1][21]=a48;
+  a48=(a43?a41:0);
+  a41=(a50?a41:0);
+  a48=(a48+a41);
+  if (res[1]!=0) res[1][22]=a48;
+  a43=(a43?a42:0);
+  a50=(a50?a42:0);
+  a43=(a43+a50);
+  if (res[1]!=0) res[1][23]=a43;
+  a43=0.;
+  a03=casadi_fabs(a03);
+  a03=(a03-a44);
+  a06=casadi_fabs(a06);
+  a06=(a06-a45);
+  a03=casadi_fmax(a03,a06);
+  a12=casadi_fabs(a12);
+  a12=(a12-a46);
+  a03=casadi_fmax(a03,a12);
+  a20=casadi_fabs(a20);
+  a20=(a20-a47);
+  a03=casadi_fmax(a03,a20);
+  a43=(a43<a03);
+  a43=(a43?a01:0);
+  a43=(a25?a43:0);
+  a25=(!a25);
+  a01=3.;
+  a25=(a25?a01:0);
+  a43=(a43+a25);
+  a43=(a34?a43:0);
+  a34=(!a34);
+  a34=(a34?a08:0);
+  a43=(a43+a34);
+  a43=(a10?a43:0);
+  a10=(!a10);
+  a34=5.;
+  a10=(a10?a34:0);
+  a43=(a43+a10);
+  if (res[2]!=0) res[2][0]=a43;
+  if (res[3]!=0) res[3][0]=a24;
+  if (res[3]!=0) res[3][1]=a18;
+  if (res[3]!=0) res[3][2]=a14;
+  if (res[3]!=0) res[3][3]=a32;
+  a04=(a04-a24);
+  if (res[3]!=0) res[3][4]=a04;
+  a02=(a02-a18);
+  if (res[3]!=0) res[3][5]=a02;
+  a17=(a17-a14);
+  if (res[3]!=0) res[3][6]=a17;
+  a36=(a36-a32);
+  if (res[3]!=0) res[3][7]=a36;
+  if (res[3]!=0) res[3][8]=a07;
+  if (res[3]!=0) res[3][9]=a11;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f30(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_lqr_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_lqr_minmax_step:(state[24],qa[4],xd[2],xd_dot[2],xd_ddot[2],params[17],K[16],tau_ff[4])->(tau_a[4],state_next[24],status,diag[10]) */
+static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a05=(a04*a01);
+  a06=4.8799999999999999e-01;
+  a07=arg[1]? arg[1][3] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a09=(a05+a09);
+  a10=casadi_sq(a09);
+  a11=5.0000000000000000e-01;
+  a12=(a11+a05);
+  a13=arg[1]? arg[1][2] : 0;
+  a14=sin(a13);
+  a15=(a06*a14);
+  a12=(a12+a15);
+  a15=casadi_sq(a12);
+  a10=(a10+a15);
+  a15=-5.0000000000000000e-01;
+  a05=(a15+a05);
+  a16=arg[1]? arg[1][1] : 0;
+  a17=sin(a16);
+  a18=(a06*a17);
+  a05=(a05+a18);
+  a18=casadi_sq(a05);
+  a10=(a10+a18);
+  a18=1.2000000000000000e+00;
+  a04=(a04*a02);
+  a18=(a18+a04);
+  a07=cos(a07);
+  a19=(a06*a07);
+  a18=(a18+a19);
+  a19=2.5000000000000000e-01;
+  a20=2.4399999999999999e-01;
+  a21=(a20*a08);
+  a21=(a19+a21);
+  a21=casadi_sq(a21);
+  a22=5.9999999999999998e-01;
+  a23=(a20*a07);
+  a22=(a22+a23);
+  a22=casadi_sq(a22);
+  a21=(a21+a22);
+  a22=(a20*a01);
+  a22=(a19+a22);
+  a22=casadi_sq(a22);
+  a21=(a21-a22);
+  a24=-5.9535999999999999e-02;
+  a25=casadi_sq(a02);
+  a24=(a24*a25);
+  a21=(a21+a24);
+  a25=(a18*a21);
+  a26=8.6599999999999999e-01;
+  a26=(a26+a04);
+  a16=cos(a16);
+  a04=(a06*a16);
+  a04=(a26+a04);
+  a27=4.3300000000000000e-01;
+  a28=(a20*a16);
+  a29=(a27+a28);
+  a29=casadi_sq(a29);
+  a29=(a29-a22);
+  a29=(a29+a24);
+  a30=5.9535999999999999e-02;
+  a31=casadi_sq(a17);
+  a30=(a30*a31);
+  a29=(a29+a30);
+  a30=(a04*a29);
+  a25=(a25+a30);
+  a13=cos(a13);
+  a06=(a06*a13);
+  a26=(a26+a06);
+  a06=(a20*a14);
+  a06=(a11+a06);
+  a06=casadi_sq(a06);
+  a30=(a20*a13);
+  a27=(a27+a30);
+  a27=casadi_sq(a27);
+  a06=(a06+a27);
+  a06=(a06-a22);
+  a06=(a06+a24);
+  a24=(a26*a06);
+  a25=(a25+a24);
+  a24=(a10*a25);
+  a22=(a09*a18);
+  a27=(a12*a26);
+  a22=(a22+a27);
+  a27=(a05*a04);
+  a22=(a22+a27);
+  a09=(a09*a21);
+  a12=(a12*a06);
+  a09=(a09+a12);
+  a05=(a05*a29);
+  a09=(a09+a05);
+  a05=(a22*a09);
+  a24=(a24-a05);
+  a18=casadi_sq(a18);
+  a04=casadi_sq(a04);
+  a18=(a18+a04);
+  a26=casadi_sq(a26);
+  a18=(a18+a26);
+  a10=(a10*a18);
+  a26=casadi_sq(a22);
+  a10=(a10-a26);
+  a24=(a24/a10);
+  a03=(a03+a24);
+  a26=casadi_sq(a03);
+  a04=-2.5000000000000000e-01;
+  a05=(a00*a01);
+  a29=(a04+a05);
+  a18=(a18*a09);
+  a22=(a22*a25);
+  a18=(a18-a22);
+  a18=(a18/a10);
+  a29=(a29+a18);
+  a10=casadi_sq(a29);
+  a26=(a26+a10);
+  a26=sqrt(a26);
+  a10=(a00+a26);
+  a10=casadi_fabs(a10);
+  a22=(a00*a17);
+  a25=(a22+a18);
+  a09=casadi_sq(a25);
+  a12=-4.3300000000000000e-01;
+  a06=(a00*a16);
+  a06=(a12+a06);
+  a06=(a06+a24);
+  a21=casadi_sq(a06);
+  a09=(a09+a21);
+  a09=sqrt(a09);
+  a21=(a00+a09);
+  a21=casadi_fabs(a21);
+  a10=casadi_fmax(a10,a21);
+  a21=(a00*a13);
+  a12=(a12+a21);
+  a12=(a12+a24);
+  a21=casadi_sq(a12);
+  a27=(a00*a14);
+  a15=(a15+a27);
+  a15=(a15+a18);
+  a31=casadi_sq(a15);
+  a21=(a21+a31);
+  a21=sqrt(a21);
+  a31=(a00+a21);
+  a31=casadi_fabs(a31);
+  a10=casadi_fmax(a10,a31);
+  a31=-5.9999999999999998e-01;
+  a32=(a00*a07);
+  a31=(a31+a32);
+  a31=(a31+a24);
+  a32=casadi_sq(a31);
+  a33=(a00*a08);
+  a04=(a04+a33);
+  a04=(a04+a18);
+  a34=casadi_sq(a04);
+  a32=(a32+a34);
+  a32=sqrt(a32);
+  a34=(a00+a32);
+  a34=casadi_fabs(a34);
+  a10=casadi_fmax(a10,a34);
+  a34=arg[5]? arg[5][16] : 0;
+  a10=(a10<=a34);
+  a34=arg[5]? arg[5][2] : 0;
+  a03=(a03/a26);
+  a01=(a01*a03);
+  a29=(a29/a26);
+  a26=(a02*a29);
+  a01=(a01-a26);
+  a01=casadi_fabs(a01);
+  a06=(a06/a09);
+  a17=(a17*a06);
+  a25=(a25/a09);
+  a16=(a16*a25);
+  a17=(a17-a16);
+  a17=casadi_fabs(a17);
+  a16=(a01+a17);
+  a01=(a01-a17);
+  a01=casadi_fabs(a01);
+  a16=(a16-a01);
+  a01=2.;
+  a16=(a16/a01);
+  a12=(a12/a21);
+  a14=(a14*a12);
+  a15=(a15/a21);
+  a13=(a13*a15);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a16+a14);
+  a16=(a16-a14);
+  a16=casadi_fabs(a16);
+  a13=(a13-a16);
+  a13=(a13/a01);
+  a31=(a31/a32);
+  a08=(a08*a31);
+  a04=(a04/a32);
+  a07=(a07*a04);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a07=(a13+a08);
+  a13=(a13-a08);
+  a13=casadi_fabs(a13);
+  a07=(a07-a13);
+  a07=(a07/a01);
+  a34=(a34<=a07);
+  a13=arg[5]? arg[5][3] : 0;
+  a08=1.;
+  a32=casadi_sq(a03);
+  a16=casadi_sq(a29);
+  a32=(a32-a16);
+  a16=casadi_sq(a06);
+  a14=casadi_sq(a25);
+  a16=(a16-a14);
+  a32=(a32+a16);
+  a16=casadi_sq(a12);
+  a14=casadi_sq(a15);
+  a16=(a16-a14);
+  a32=(a32+a16);
+  a16=casadi_sq(a31);
+  a14=casadi_sq(a04);
+  a16=(a16-a14);
+  a32=(a32+a16);
+  a32=casadi_sq(a32);
+  a16=(2.*a03);
+  a16=(a16*a29);
+  a14=(2.*a06);
+  a14=(a14*a25);
+  a16=(a16+a14);
+  a14=(2.*a12);
+  a14=(a14*a15);
+  a16=(a16+a14);
+  a14=(2.*a31);
+  a14=(a14*a04);
+  a16=(a16+a14);
+  a16=casadi_sq(a16);
+  a32=(a32+a16);
+  a32=sqrt(a32);
+  a19=(a19*a32);
+  a19=(a08-a19);
+  a32=casadi_fabs(a19);
+  a19=(a19+a32);
+  a11=(a11*a19);
+  a11=sqrt(a11);
+  a13=(a13<=a11);
+  a34=(a34&&a13);
+  a13=arg[5]? arg[5][4] : 0;
+  a03=(a20*a03);
+  a05=(a05*a03);
+  a29=(a00*a29);
+  a02=(a20*a02);
+  a02=(a29*a02);
+  a05=(a05-a02);
+  a03=(a03/a05);
+  a02=(a13*a03);
+  a19=0.;
+  a32=arg[7]? arg[7][0] : 0;
+  a16=arg[6]? arg[6][0] : 0;
+  a14=arg[2]? arg[2][0] : 0;
+  a21=(a24-a14);
+  a16=(a16*a21);
+  a17=arg[6]? arg[6][1] : 0;
+  a09=arg[2]? arg[2][1] : 0;
+  a26=(a18-a09);
+  a17=(a17*a26);
+  a16=(a16+a17);
+  a17=arg[6]? arg[6][2] : 0;
+  a35=arg[0]? arg[0][2] : 0;
+  a36=arg[5]? arg[5][1] : 0;
+  a37=arg[0]? arg[0][0] : 0;
+  a38=(a24-a37);
+  a39=arg[5]? arg[5][0] : 0;
+  a38=(a38/a39);
+  a38=(a38-a35);
+  a38=(a36*a38);
+  a38=(a35+a38);
+  a40=arg[3]? arg[3][0] : 0;
+  a41=(a38-a40);
+  a17=(a17*a41);
+  a16=(a16+a17);
+  a17=arg[6]? arg[6][3] : 0;
+  a42=arg[0]? arg[0][3] : 0;
+  a43=arg[0]? arg[0][1] : 0;
+  a44=(a18-a43);
+  a44=(a44/a39);
+  a44=(a44-a42);
+  a36=(a36*a44);
+  a36=(a42+a36);
+  a44=arg[3]? arg[3][1] : 0;
+  a39=(a36-a44);
+  a17=(a17*a39);
+  a16=(a16+a17);
+  a32=(a32-a16);
+  a03=(a03*a32);
+  a06=(a20*a06);
+  a22=(a22*a06);
+  a25=(a00*a25);
+  a28=(a25*a28);
+  a22=(a22-a28);
+  a06=(a06/a22);
+  a28=arg[7]? arg[7][1] : 0;
+  a16=arg[6]? arg[6][4] : 0;
+  a16=(a16*a21);
+  a17=arg[6]? arg[6][5] : 0;
+  a17=(a17*a26);
+  a16=(a16+a17);
+  a17=arg[6]? arg[6][6] : 0;
+  a17=(a17*a41);
+  a16=(a16+a17);
+  a17=arg[6]? arg[6][7] : 0;
+  a17=(a17*a39);
+  a16=(a16+a17);
+  a28=(a28-a16);
+  a16=(a06*a28);
+  a03=(a03+a16);
+  a12=(a20*a12);
+  a27=(a27*a12);
+  a15=(a00*a15);
+  a30=(a15*a30);
+  a27=(a27-a30);
+  a12=(a12/a27);
+  a30=arg[7]? arg[7][2] : 0;
+  a16=arg[6]? arg[6][8] : 0;
+  a16=(a16*a21);
+  a17=arg[6]? arg[6][9] : 0;
+  a17=(a17*a26);
+  a16=(a16+a17);
+  a17=arg[6]? arg[6][10] : 0;
+  a17=(a17*a41);
+  a16=(a16+a17);
+  a17=arg[6]? arg[6][11] : 0;
+  a17=(a17*a39);
+  a16=(a16+a17);
+  a30=(a30-a16);
+  a16=(a12*a30);
+  a03=(a03+a16);
+  a20=(a20*a31);
+  a33=(a33*a20);
+  a00=(a00*a04);
+  a23=(a00*a23);
+  a33=(a33-a23);
+  a20=(a20/a33);
+  a23=arg[7]? arg[7][3] : 0;
+  a04=arg[6]? arg[6][12] : 0;
+  a04=(a04*a21);
+  a21=arg[6]? arg[6][13] : 0;
+  a21=(a21*a26);
+  a04=(a04+a21);
+  a21=arg[6]? arg[6][14] : 0;
+  a21=(a21*a41);
+  a04=(a04+a21);
+  a21=arg[6]? arg[6][15] : 0;
+  a21=(a21*a39);
+  a04=(a04+a21);
+  a23=(a23-a04);
+  a04=(a20*a23);
+  a03=(a03+a04);
+  a29=(a29/a05);
+  a05=(a13*a29);
+  a04=(a03*a05);
+  a29=(a29*a32);
+  a25=(a25/a22);
+  a28=(a25*a28);
+  a29=(a29+a28);
+  a15=(a15/a27);
+  a30=(a15*a30);
+  a29=(a29+a30);
+  a00=(a00/a33);
+  a23=(a00*a23);
+  a29=(a29+a23);
+  a23=(a29*a02);
+  a04=(a04-a23);
+  a04=casadi_fabs(a04);
+  a19=(a19<a04);
+  a23=arg[5]? arg[5][5] : 0;
+  a25=(a23*a25);
+  a33=(a02*a25);
+  a06=(a23*a06);
+  a30=(a05*a06);
+  a33=(a33-a30);
+  a33=casadi_fabs(a33);
+  a30=arg[5]? arg[5][6] : 0;
+  a12=(a30*a12);
+  a27=(a12*a25);
+  a15=(a30*a15);
+  a28=(a15*a06);
+  a27=(a27-a28);
+  a27=casadi_fabs(a27);
+  a33=(a33+a27);
+  a27=arg[5]? arg[5][7] : 0;
+  a20=(a27*a20);
+  a28=(a20*a25);
+  a00=(a27*a00);
+  a22=(a00*a06);
+  a28=(a28-a22);
+  a28=casadi_fabs(a28);
+  a33=(a33+a28);
+  a28=(a04*a33);
+  a28=(a19?a28:0);
+  a22=(a03*a25);
+  a32=(a29*a06);
+  a22=(a22-a32);
+  a22=casadi_fabs(a22);
+  a32=(a06*a05);
+  a21=(a25*a02);
+  a32=(a32-a21);
+  a32=casadi_fabs(a32);
+  a21=(a12*a05);
+  a39=(a15*a02);
+  a21=(a21-a39);
+  a21=casadi_fabs(a21);
+  a32=(a32+a21);
+  a21=(a20*a05);
+  a39=(a00*a02);
+  a21=(a21-a39);
+  a21=casadi_fabs(a21);
+  a32=(a32+a21);
+  a32=(a19?a32:0);
+  a21=(!a19);
+  a39=(a21?a08:0);
+  a32=(a32+a39);
+  a39=(a22*a32);
+  a28=(a28<a39);
+  a22=(a28?a22:0);
+  a39=(!a28);
+  a04=(a19?a04:0);
+  a04=(a39?a04:0);
+  a22=(a22+a04);
+  a04=(a02*a15);
+  a41=(a05*a12);
+  a04=(a04-a41);
+  a04=casadi_fabs(a04);
+  a41=(a06*a15);
+  a26=(a25*a12);
+  a41=(a41-a26);
+  a41=casadi_fabs(a41);
+  a04=(a04+a41);
+  a41=(a20*a15);
+  a26=(a00*a12);
+  a41=(a41-a26);
+  a41=casadi_fabs(a41);
+  a04=(a04+a41);
+  a41=(a22*a04);
+  a26=(a03*a15);
+  a31=(a29*a12);
+  a26=(a26-a31);
+  a26=casadi_fabs(a26);
+  a33=(a28?a33:0);
+  a32=(a39?a32:0);
+  a33=(a33+a32);
+  a32=(a26*a33);
+  a41=(a41<a32);
+  a26=(a41?a26:0);
+  a32=(!a41);
+  a22=(a32?a22:0);
+  a26=(a26+a22);
+  a22=(a02*a00);
+  a31=(a05*a20);
+  a22=(a22-a31);
+  a22=casadi_fabs(a22);
+  a31=(a06*a00);
+  a16=(a25*a20);
+  a31=(a31-a16);
+  a31=casadi_fabs(a31);
+  a22=(a22+a31);
+  a31=(a12*a00);
+  a16=(a15*a20);
+  a31=(a31-a16);
+  a31=casadi_fabs(a31);
+  a22=(a22+a31);
+  a31=(a26*a22);
+  a16=(a03*a00);
+  a17=(a29*a20);
+  a16=(a16-a17);
+  a16=casadi_fabs(a16);
+  a04=(a41?a04:0);
+  a33=(a32?a33:0);
+  a04=(a04+a33);
+  a33=(a16*a04);
+  a31=(a31<a33);
+  a33=(a31?a00:0);
+  a17=(!a31);
+  a45=(a41?a15:0);
+  a46=(a28?a25:0);
+  a47=(a19?a05:0);
+  a48=(a21?a05:0);
+  a47=(a47+a48);
+  a47=(a39?a47:0);
+  a46=(a46+a47);
+  a46=(a32?a46:0);
+  a45=(a45+a46);
+  a45=(a17?a45:0);
+  a33=(a33+a45);
+  a45=(a03*a33);
+  a46=(a31?a20:0);
+  a41=(a41?a12:0);
+  a28=(a28?a06:0);
+  a19=(a19?a02:0);
+  a21=(a21?a02:0);
+  a19=(a19+a21);
+  a39=(a39?a19:0);
+  a28=(a28+a39);
+  a32=(a32?a28:0);
+  a41=(a41+a32);
+  a41=(a17?a41:0);
+  a46=(a46+a41);
+  a41=(a29*a46);
+  a45=(a45-a41);
+  a45=casadi_sign(a45);
+  a41=(a33*a45);
+  a32=(a02*a41);
+  a45=(a46*a45);
+  a28=(a05*a45);
+  a32=(a32-a28);
+  a28=casadi_sq(a32);
+  a39=9.9999999999999992e-25;
+  a19=casadi_sq(a02);
+  a21=casadi_sq(a05);
+  a19=(a19+a21);
+  a19=(a39*a19);
+  a21=casadi_sq(a33);
+  a47=casadi_sq(a46);
+  a21=(a21+a47);
+  a19=(a19*a21);
+  a28=(a28<=a19);
+  a19=(a02*a46);
+  a47=(a05*a33);
+  a19=(a19+a47);
+  a47=casadi_sign(a19);
+  a48=(!a28);
+  a16=(a31?a16:0);
+  a26=(a17?a26:0);
+  a16=(a16+a26);
+  a31=(a31?a22:0);
+  a17=(a17?a04:0);
+  a31=(a31+a17);
+  a16=(a16/a31);
+  a32=casadi_sign(a32);
+  a32=(a16*a32);
+  a02=(a32*a02);
+  a02=(a48?a02:0);
+  a31=(a06*a41);
+  a17=(a25*a45);
+  a31=(a31-a17);
+  a17=casadi_sq(a31);
+  a04=casadi_sq(a06);
+  a22=casadi_sq(a25);
+  a04=(a04+a22);
+  a04=(a39*a04);
+  a04=(a04*a21);
+  a17=(a17<=a04);
+  a04=(!a17);
+  a31=casadi_sign(a31);
+  a31=(a16*a31);
+  a22=(a31*a06);
+  a22=(a04?a22:0);
+  a02=(a02+a22);
+  a22=(a12*a41);
+  a26=(a15*a45);
+  a22=(a22-a26);
+  a26=casadi_sq(a22);
+  a49=casadi_sq(a12);
+  a50=casadi_sq(a15);
+  a49=(a49+a50);
+  a49=(a39*a49);
+  a49=(a49*a21);
+  a26=(a26<=a49);
+  a49=(!a26);
+  a22=casadi_sign(a22);
+  a22=(a16*a22);
+  a50=(a22*a12);
+  a50=(a49?a50:0);
+  a02=(a02+a50);
+  a41=(a20*a41);
+  a45=(a00*a45);
+  a41=(a41-a45);
+  a45=casadi_sq(a41);
+  a50=casadi_sq(a20);
+  a51=casadi_sq(a00);
+  a50=(a50+a51);
+  a39=(a39*a50);
+  a39=(a39*a21);
+  a45=(a45<=a39);
+  a39=(!a45);
+  a41=casadi_sign(a41);
+  a41=(a16*a41);
+  a21=(a41*a20);
+  a21=(a39?a21:0);
+  a02=(a02+a21);
+  a03=(a03-a02);
+  a03=(a03*a46);
+  a05=(a32*a05);
+  a05=(-a05);
+  a05=(a48?a05:0);
+  a02=(a31*a25);
+  a02=(-a02);
+  a02=(a04?a02:0);
+  a05=(a05+a02);
+  a02=(a22*a15);
+  a02=(-a02);
+  a02=(a49?a02:0);
+  a05=(a05+a02);
+  a02=(a41*a00);
+  a02=(-a02);
+  a02=(a39?a02:0);
+  a05=(a05+a02);
+  a29=(a29+a05);
+  a29=(a29*a33);
+  a03=(a03+a29);
+  a19=casadi_fabs(a19);
+  a19=(a28?a19:0);
+  a06=(a06*a46);
+  a25=(a25*a33);
+  a06=(a06+a25);
+  a25=casadi_fabs(a06);
+  a25=(a17?a25:0);
+  a19=(a19+a25);
+  a12=(a12*a46);
+  a15=(a15*a33);
+  a12=(a12+a15);
+  a15=casadi_fabs(a12);
+  a15=(a26?a15:0);
+  a19=(a19+a15);
+  a20=(a20*a46);
+  a00=(a00*a33);
+  a20=(a20+a00);
+  a00=casadi_fabs(a20);
+  a00=(a45?a00:0);
+  a19=(a19+a00);
+  a03=(a03/a19);
+  a47=(a47*a03);
+  a28=(a28?a47:0);
+  a32=(a48?a32:0);
+  a48=(a48?a32:0);
+  a28=(a28+a48);
+  a28=(a13*a28);
+  a06=casadi_sign(a06);
+  a06=(a06*a03);
+  a17=(a17?a06:0);
+  a31=(a04?a31:0);
+  a04=(a04?a31:0);
+  a17=(a17+a04);
+  a17=(a23*a17);
+  a04=(a28+a17);
+  a12=casadi_sign(a12);
+  a12=(a12*a03);
+  a26=(a26?a12:0);
+  a22=(a49?a22:0);
+  a49=(a49?a22:0);
+  a26=(a26+a49);
+  a26=(a30*a26);
+  a04=(a04+a26);
+  a20=casadi_sign(a20);
+  a20=(a20*a03);
+  a45=(a45?a20:0);
+  a41=(a39?a41:0);
+  a39=(a39?a41:0);
+  a45=(a45+a39);
+  a45=(a27*a45);
+  a04=(a04+a45);
+  a39=arg[0]? arg[0][4] : 0;
+  a04=(a04+a39);
+  a41=arg[0]? arg[0][5] : 0;
+  a04=(a04+a41);
+  a20=arg[0]? arg[0][6] : 0;
+  a04=(a04+a20);
+  a03=arg[0]? arg[0][7] : 0;
+  a04=(a04+a03);
+  a49=arg[0]? arg[0][8] : 0;
+  a04=(a04+a49);
+  a22=arg[0]? arg[0][9] : 0;
+  a04=(a04+a22);
+  a12=arg[0]? arg[0][10] : 0;
+  a04=(a04+a12);
+  a31=arg[0]? arg[0][11] : 0;
+  a04=(a04+a31);
+  a06=arg[0]? arg[0][12] : 0;
+  a04=(a04+a06);
+  a48=arg[0]? arg[0][13] : 0;
+  a04=(a04+a48);
+  a32=arg[0]? arg[0][14] : 0;
+  a04=(a04+a32);
+  a47=arg[0]? arg[0][15] : 0;
+  a04=(a04+a47);
+  a19=arg[0]? arg[0][16] : 0;
+  a04=(a04+a19);
+  a00=arg[0]? arg[0][17] : 0;
+  a04=(a04+a00);
+  a33=arg[0]? arg[0][18] : 0;
+  a04=(a04+a33);
+  a46=arg[0]? arg[0][19] : 0;
+  a04=(a04+a46);
+  a15=arg[0]? arg[0][20] : 0;
+  a04=(a04+a15);
+  a25=arg[0]? arg[0][21] : 0;
+  a04=(a04+a25);
+  a29=arg[0]? arg[0][22] : 0;
+  a04=(a04+a29);
+  a05=arg[0]? arg[0][23] : 0;
+  a04=(a04+a05);
+  a04=(a04+a24);
+  a04=(a04+a18);
+  a04=(a04+a38);
+  a04=(a04+a36);
+  a04=casadi_fabs(a04);
+  a02=casadi_inf;
+  a04=(a04<a02);
+  a02=(a34&&a04);
+  a02=(a10&&a02);
+  a21=(-a13);
+  a28=casadi_fmax(a28,a21);
+  a28=casadi_fmin(a28,a13);
+  a28=(a02?a28:0);
+  if (res[0]!=0) res[0][0]=a28;
+  a28=(-a23);
+  a17=casadi_fmax(a17,a28);
+  a17=casadi_fmin(a17,a23);
+  a17=(a02?a17:0);
+  if (res[0]!=0) res[0][1]=a17;
+  a17=(-a30);
+  a26=casadi_fmax(a26,a17);
+  a26=casadi_fmin(a26,a30);
+  a26=(a02?a26:0);
+  if (res[0]!=0) res[0][2]=a26;
+  a26=(-a27);
+  a45=casadi_fmax(a45,a26);
+  a45=casadi_fmin(a45,a27);
+  a45=(a02?a45:0);
+  if (res[0]!=0) res[0][3]=a45;
+  a45=(a10&&a04);
+  a27=(a45?a24:0);
+  a26=(!a45);
+  a37=(a26?a37:0);
+  a27=(a27+a37);
+  if (res[1]!=0) res[1][0]=a27;
+  a27=(a45?a18:0);
+  a43=(a26?a43:0);
+  a27=(a27+a43);
+  if (res[1]!=0) res[1][1]=a27;
+  a27=(a45?a38:0);
+  a35=(a26?a35:0);
+  a27=(a27+a35);
+  if (res[1]!=0) res[1][2]=a27;
+  a45=(a45?a36:0);
+  a26=(a26?a42:0);
+  a45=(a45+a26);
+  if (res[1]!=0) res[1][3]=a45;
+  a45=(a02?a39:0);
+  a26=(!a02);
+  a39=(a26?a39:0);
+  a45=(a45+a39);
+  if (res[1]!=0) res[1][4]=a45;
+  a45=(a02?a41:0);
+  a41=(a26?a41:0);
+  a45=(a45+a41);
+  if (res[1]!=0) res[1][5]=a45;
+  a45=(a02?a20:0);
+  a20=(a26?a20:0);
+  a45=(a45+a20);
+  if (res[1]!=0) res[1][6]=a45;
+  a45=(a02?a03:0);
+  a03=(a26?a03:0);
+  a45=(a45+a03);
+  if (res[1]!=0) res[1][7]=a45;
+  a45=(a02?a49:0);
+  a49=(a26?a49:0);
+  a45=(a45+a49);
+  if (res[1]!=0) res[1][8]=a45;
+  a45=(a02?a22:0);
+  a22=(a26?a22:0);
+  a45=(a45+a22);
+  if (res[1]!=0) res[1][9]=a45;
+  a45=(a02?a12:0);
+  a12=(a26?a12:0);
+  a45=(a45+a12);
+  if (res[1]!=0) res[1][10]=a45;
+  a45=(a02?a31:0);
+  a31=(a26?a31:0);
+  a45=(a45+a31);
+  if (res[1]!=0) res[1][11]=a45;
+  a45=(a02?a06:0);
+  a06=(a26?a06:0);
+  a45=(a45+a06);
+  if (res[1]!=0) res[1][12]=a45;
+  a45=(a02?a48:0);
+  a48=(a26?a48:0);
+  a45=(a45+a48);
+  if (res[1]!=0) res[1][13]=a45;
+  a45=(a02?a32:0);
+  a32=(a26?a32:0);
+  a45=(a45+a32);
+  if (res[1]!=0) res[1][14]=a45;
+  a45=(a02?a47:0);
+  a47=(a26?a47:0);
+  a45=(a45+a47);
+  if (res[1]!=0) res[1][15]=a45;
+  a45=(a02?a19:0);
+  a19=(a26?a19:0);
+  a45=(a45+a19);
+  if (res[1]!=0) res[1][16]=a45;
+  a45=(a02?a00:0);
+  a00=(a26?a00:0);
+  a45=(a45+a00);
+  if (res[1]!=0) res[1][17]=a45;
+  a45=(a02?a33:0);
+  a33=(a26?a33:0);
+  a45=(a45+a33);
+  if (res[1]!=0) res[1][18]=a45;
+  a45=(a02?a46:0);
+  a46=(a26?a46:0);
+  a45=(a45+a46);
+  if (res[1]!=0) res[1][19]=a45;
+  a45=(a02?a15:0);
+  a15=(a26?a15:0);
+  a45=(a45+a15);
+  if (res[1]!=0) res[1][20]=a45;
+  a45=(a02?a25:0);
+  a25=(a26?a25:0);
+  a45=(a45+a25);
+  if (res[1]!=0) res[1][21]=a45;
+  a45=(a02?a29:0);
+  a29=(a26?a29:0);
+  a45=(a45+a29);
+  if (res[1]!=0) res[1][22]=a45;
+  a02=(a02?a05:0);
+  a26=(a26?a05:0);
+  a02=(a02+a26);
+  if (res[1]!=0) res[1][23]=a02;
+  a16=(a08<a16);
+  a16=(a16?a01:0);
+  a16=(a04?a16:0);
+  a04=(!a04);
+  a01=3.;
+  a04=(a04?a01:0);
+  a16=(a16+a04);
+  a16=(a34?a16:0);
+  a34=(!a34);
+  a34=(a34?a08:0);
+  a16=(a16+a34);
+  a16=(a10?a16:0);
+  a10=(!a10);
+  a34=5.;
+  a10=(a10?a34:0);
+  a16=(a16+a10);
+  if (res[2]!=0) res[2][0]=a16;
+  if (res[3]!=0) res[3][0]=a24;
+  if (res[3]!=0) res[3][1]=a18;
+  if (res[3]!=0) res[3][2]=a38;
+  if (res[3]!=0) res[3][3]=a36;
+  a14=(a14-a24);
+  if (res[3]!=0) res[3][4]=a14;
+  a09=(a09-a18);
+  if (res[3]!=0) res[3][5]=a09;
+  a40=(a40-a38);
+  if (res[3]!=0) res[3][6]=a40;
+  a44=(a44-a36);
+  if (res[3]!=0) res[3][7]=a44;
+  if (res[3]!=0) res[3][8]=a07;
+  if (res[3]!=0) res[3][9]=a11;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f31(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_minmax_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_lqr_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_lqr_preload_step:(state[24],qa[4],xd[2],xd_dot[2],xd_ddot[2],params[17],K[16],tau_ff[4])->(tau_a[4],state_next[24],status,diag[10]) */
+static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a05=(a04*a01);
+  a06=4.8799999999999999e-01;
+  a07=arg[1]? arg[1][3] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a09=(a05+a09);
+  a10=casadi_sq(a09);
+  a11=5.0000000000000000e-01;
+  a12=(a11+a05);
+  a13=arg[1]? arg[1][2] : 0;
+  a14=sin(a13);
+  a15=(a06*a14);
+  a12=(a12+a15);
+  a15=casadi_sq(a12);
+  a10=(a10+a15);
+  a15=-5.0000000000000000e-01;
+  a05=(a15+a05);
+  a16=arg[1]? arg[1][1] : 0;
+  a17=sin(a16);
+  a18=(a06*a17);
+  a05=(a05+a18);
+  a18=casadi_sq(a05);
+  a10=(a10+a18);
+  a18=1.2000000000000000e+00;
+  a04=(a04*a02);
+  a18=(a18+a04);
+  a07=cos(a07);
+  a19=(a06*a07);
+  a18=(a18+a19);
+  a19=2.5000000000000000e-01;
+  a20=2.4399999999999999e-01;
+  a21=(a20*a08);
+  a21=(a19+a21);
+  a21=casadi_sq(a21);
+  a22=5.9999999999999998e-01;
+  a23=(a20*a07);
+  a22=(a22+a23);
+  a22=casadi_sq(a22);
+  a21=(a21+a22);
+  a22=(a20*a01);
+  a22=(a19+a22);
+  a22=casadi_sq(a22);
+  a21=(a21-a22);
+  a24=-5.9535999999999999e-02;
+  a25=casadi_sq(a02);
+  a24=(a24*a25);
+  a21=(a21+a24);
+  a25=(a18*a21);
+  a26=8.6599999999999999e-01;
+  a26=(a26+a04);
+  a16=cos(a16);
+  a04=(a06*a16);
+  a04=(a26+a04);
+  a27=4.3300000000000000e-01;
+  a28=(a20*a16);
+  a29=(a27+a28);
+  a29=casadi_sq(a29);
+  a29=(a29-a22);
+  a29=(a29+a24);
+  a30=5.9535999999999999e-02;
+  a31=casadi_sq(a17);
+  a30=(a30*a31);
+  a29=(a29+a30);
+  a30=(a04*a29);
+  a25=(a25+a30);
+  a13=cos(a13);
+  a06=(a06*a13);
+  a26=(a26+a06);
+  a06=(a20*a14);
+  a06=(a11+a06);
+  a06=casadi_sq(a06);
+  a30=(a20*a13);
+  a27=(a27+a30);
+  a27=casadi_sq(a27);
+  a06=(a06+a27);
+  a06=(a06-a22);
+  a06=(a06+a24);
+  a24=(a26*a06);
+  a25=(a25+a24);
+  a24=(a10*a25);
+  a22=(a09*a18);
+  a27=(a12*a26);
+  a22=(a22+a27);
+  a27=(a05*a04);
+  a22=(a22+a27);
+  a09=(a09*a21);
+  a12=(a12*a06);
+  a09=(a09+a12);
+  a05=(a05*a29);
+  a09=(a09+a05);
+  a05=(a22*a09);
+  a24=(a24-a05);
+  a18=casadi_sq(a18);
+  a04=casadi_sq(a04);
+  a18=(a18+a04);
+  a26=casadi_sq(a26);
+  a18=(a18+a26);
+  a10=(a10*a18);
+  a26=casadi_sq(a22);
+  a10=(a10-a26);
+  a24=(a24/a10);
+  a03=(a03+a24);
+  a26=casadi_sq(a03);
+  a04=-2.5000000000000000e-01;
+  a05=(a00*a01);
+  a29=(a04+a05);
+  a18=(a18*a09);
+  a22=(a22*a25);
+  a18=(a18-a22);
+  a18=(a18/a10);
+  a29=(a29+a18);
+  a10=casadi_sq(a29);
+  a26=(a26+a10);
+  a26=sqrt(a26);
+  a10=(a00+a26);
+  a10=casadi_fabs(a10);
+  a22=(a00*a17);
+  a25=(a22+a18);
+  a09=casadi_sq(a25);
+  a12=-4.3300000000000000e-01;
+  a06=(a00*a16);
+  a06=(a12+a06);
+  a06=(a06+a24);
+  a21=casadi_sq(a06);
+  a09=(a09+a21);
+  a09=sqrt(a09);
+  a21=(a00+a09);
+  a21=casadi_fabs(a21);
+  a10=casadi_fmax(a10,a21);
+  a21=(a00*a13);
+  a12=(a12+a21);
+  a12=(a12+a24);
+  a21=casadi_sq(a12);
+  a27=(a00*a14);
+  a15=(a15+a27);
+  a15=(a15+a18);
+  a31=casadi_sq(a15);
+  a21=(a21+a31);
+  a21=sqrt(a21);
+  a31=(a00+a21);
+  a31=casadi_fabs(a31);
+  a10=casadi_fmax(a10,a31);
+  a31=-5.9999999999999998e-01;
+  a32=(a00*a07);
+  a31=(a31+a32);
+  a31=(a31+a24);
+  a32=casadi_sq(a31);
+  a33=(a00*a08);
+  a04=(a04+a33);
+  a04=(a04+a18);
+  a34=casadi_sq(a04);
+  a32=(a32+a34);
+  a32=sqrt(a32);
+  a34=(a00+a32);
+  a34=casadi_fabs(a34);
+  a10=casadi_fmax(a10,a34);
+  a34=arg[5]? arg[5][16] : 0;
+  a10=(a10<=a34);
+  a34=arg[5]? arg[5][2] : 0;
+  a03=(a03/a26);
+  a01=(a01*a03);
+  a29=(a29/a26);
+  a26=(a02*a29);
+  a01=(a01-a26);
+  a01=casadi_fabs(a01);
+  a06=(a06/a09);
+  a17=(a17*a06);
+  a25=(a25/a09);
+  a16=(a16*a25);
+  a17=(a17-a16);
+  a17=casadi_fabs(a17);
+  a16=(a01+a17);
+  a01=(a01-a17);
+  a01=casadi_fabs(a01);
+  a16=(a16-a01);
+  a01=2.;
+  a16=(a16/a01);
+  a12=(a12/a21);
+  a14=(a14*a12);
+  a15=(a15/a21);
+  a13=(a13*a15);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a16+a14);
+  a16=(a16-a14);
+  a16=casadi_fabs(a16);
+  a13=(a13-a16);
+  a13=(a13/a01);
+  a31=(a31/a32);
+  a08=(a08*a31);
+  a04=(a04/a32);
+  a07=(a07*a04);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a07=(a13+a08);
+  a13=(a13-a08);
+  a13=casadi_fabs(a13);
+  a07=(a07-a13);
+  a07=(a07/a01);
+  a34=(a34<=a07);
+  a13=arg[5]? arg[5][3] : 0;
+  a08=1.;
+  a32=casadi_sq(a03);
+  a16=casadi_sq(a29);
+  a32=(a32-a16);
+  a16=casadi_sq(a06);
+  a14=casadi_sq(a25);
+  a16=(a16-a14);
+  a32=(a32+a16);
+  a16=casadi_sq(a12);
+  a14=casadi_sq(a15);
+  a16=(a16-a14);
+  a32=(a32+a16);
+  a16=casadi_sq(a31);
+  a14=casadi_sq(a04);
+  a16=(a16-a14);
+  a32=(a32+a16);
+  a32=casadi_sq(a32);
+  a16=(2.*a03);
+  a16=(a16*a29);
+  a14=(2.*a06);
+  a14=(a14*a25);
+  a16=(a16+a14);
+  a14=(2.*a12);
+  a14=(a14*a15);
+  a16=(a16+a14);
+  a14=(2.*a31);
+  a14=(a14*a04);
+  a16=(a16+a14);
+  a16=casadi_sq(a16);
+  a32=(a32+a16);
+  a32=sqrt(a32);
+  a19=(a19*a32);
+  a19=(a08-a19);
+  a32=casadi_fabs(a19);
+  a19=(a19+a32);
+  a11=(a11*a19);
+  a11=sqrt(a11);
+  a13=(a13<=a11);
+  a34=(a34&&a13);
+  a03=(a20*a03);
+  a05=(a05*a03);
+  a29=(a00*a29);
+  a02=(a20*a02);
+  a02=(a29*a02);
+  a05=(a05-a02);
+  a03=(a03/a05);
+  a06=(a20*a06);
+  a22=(a22*a06);
+  a25=(a00*a25);
+  a28=(a25*a28);
+  a22=(a22-a28);
+  a06=(a06/a22);
+  a12=(a20*a12);
+  a27=(a27*a12);
+  a15=(a00*a15);
+  a30=(a15*a30);
+  a27=(a27-a30);
+  a12=(a12/a27);
+  a20=(a20*a31);
+  a33=(a33*a20);
+  a04=(a00*a04);
+  a23=(a04*a23);
+  a33=(a33-a23);
+  a20=(a20/a33);
+  a29=(a29/a05);
+  a05=(-a29);
+  a25=(a25/a22);
+  a22=(-a25);
+  a15=(a15/a27);
+  a27=(-a15);
+  a04=(a04/a33);
+  a33=(-a04);
+  a23=arg[7]? arg[7][0] : 0;
+  a31=arg[6]? arg[6][0] : 0;
+  a30=arg[2]? arg[2][0] : 0;
+  a28=(a24-a30);
+  a31=(a31*a28);
+  a02=arg[6]? arg[6][1] : 0;
+  a13=arg[2]? arg[2][1] : 0;
+  a19=(a18-a13);
+  a02=(a02*a19);
+  a31=(a31+a02);
+  a02=arg[6]? arg[6][2] : 0;
+  a32=arg[0]? arg[0][2] : 0;
+  a16=arg[5]? arg[5][1] : 0;
+  a14=arg[0]? arg[0][0] : 0;
+  a21=(a24-a14);
+  a17=arg[5]? arg[5][0] : 0;
+  a21=(a21/a17);
+  a21=(a21-a32);
+  a21=(a16*a21);
+  a21=(a32+a21);
+  a09=arg[3]? arg[3][0] : 0;
+  a26=(a21-a09);
+  a02=(a02*a26);
+  a31=(a31+a02);
+  a02=arg[6]? arg[6][3] : 0;
+  a35=arg[0]? arg[0][3] : 0;
+  a36=arg[0]? arg[0][1] : 0;
+  a37=(a18-a36);
+  a37=(a37/a17);
+  a37=(a37-a35);
+  a16=(a16*a37);
+  a16=(a35+a16);
+  a37=arg[3]? arg[3][1] : 0;
+  a17=(a16-a37);
+  a02=(a02*a17);
+  a31=(a31+a02);
+  a23=(a23-a31);
+  a31=(a03*a23);
+  a02=arg[7]? arg[7][1] : 0;
+  a38=arg[6]? arg[6][4] : 0;
+  a38=(a38*a28);
+  a39=arg[6]? arg[6][5] : 0;
+  a39=(a39*a19);
+  a38=(a38+a39);
+  a39=arg[6]? arg[6][6] : 0;
+  a39=(a39*a26);
+  a38=(a38+a39);
+  a39=arg[6]? arg[6][7] : 0;
+  a39=(a39*a17);
+  a38=(a38+a39);
+  a02=(a02-a38);
+  a38=(a06*a02);
+  a31=(a31+a38);
+  a38=arg[7]? arg[7][2] : 0;
+  a39=arg[6]? arg[6][8] : 0;
+  a39=(a39*a28);
+  a40=arg[6]? arg[6][9] : 0;
+  a40=(a40*a19);
+  a39=(a39+a40);
+  a40=arg[6]? arg[6][10] : 0;
+  a40=(a40*a26);
+  a39=(a39+a40);
+  a40=arg[6]? arg[6][11] : 0;
+  a40=(a40*a17);
+  a39=(a39+a40);
+  a38=(a38-a39);
+  a39=(a12*a38);
+  a31=(a31+a39);
+  a39=arg[7]? arg[7][3] : 0;
+  a40=arg[6]? arg[6][12] : 0;
+  a40=(a40*a28);
+  a28=arg[6]? arg[6][13] : 0;
+  a28=(a28*a19);
+  a40=(a40+a28);
+  a28=arg[6]? arg[6][14] : 0;
+  a28=(a28*a26);
+  a40=(a40+a28);
+  a28=arg[6]? arg[6][15] : 0;
+  a28=(a28*a17);
+  a40=(a40+a28);
+  a39=(a39-a40);
+  a40=(a20*a39);
+  a31=(a31+a40);
+  a29=(a29*a23);
+  a25=(a25*a02);
+  a29=(a29+a25);
+  a15=(a15*a38);
+  a29=(a29+a15);
+  a04=(a04*a39);
+  a29=(a29+a04);
+  a29=(-a29);
+  a04=arg[5]? arg[5][4] : 0;
+  a39=arg[5]? arg[5][5] : 0;
+  a15=arg[5]? arg[5][6] : 0;
+  a38=arg[5]? arg[5][7] : 0;
+  arg[8]=w+0;
+  arg[9]=w+8;
+  arg[10] = arg[5]? arg[5] + 4 : 0;
+  arg[11] = arg[5]? arg[5] + 8 : 0;
+  arg[12] = arg[5]? arg[5] + 12 : 0;
+  res[4]=w+22;
+  res[5]=w+26;
+  w[0] = a03;
+  w[1] = a06;
+  w[2] = a12;
+  w[3] = a20;
+  w[4] = a05;
+  w[5] = a22;
+  w[6] = a27;
+  w[7] = a33;
+  w[8] = a31;
+  w[9] = a29;
+  if (casadi_f16(arg+8, res+4, iw, w+27, 0)) return 1;
+  a03 = w[22];
+  a06 = w[23];
+  a12 = w[24];
+  a20 = w[25];
+  a05 = w[26];
+  a22=(a03+a06);
+  a22=(a22+a12);
+  a22=(a22+a20);
+  a27=arg[0]? arg[0][4] : 0;
+  a22=(a22+a27);
+  a33=arg[0]? arg[0][5] : 0;
+  a22=(a22+a33);
+  a31=arg[0]? arg[0][6] : 0;
+  a22=(a22+a31);
+  a29=arg[0]? arg[0][7] : 0;
+  a22=(a22+a29);
+  a25=arg[0]? arg[0][8] : 0;
+  a22=(a22+a25);
+  a02=arg[0]? arg[0][9] : 0;
+  a22=(a22+a02);
+  a23=arg[0]? arg[0][10] : 0;
+  a22=(a22+a23);
+  a40=arg[0]? arg[0][11] : 0;
+  a22=(a22+a40);
+  a28=arg[0]? arg[0][12] : 0;
+  a22=(a22+a28);
+  a17=arg[0]? arg[0][13] : 0;
+  a22=(a22+a17);
+  a26=arg[0]? arg[0][14] : 0;
+  a22=(a22+a26);
+  a19=arg[0]? arg[0][15] : 0;
+  a22=(a22+a19);
+  a41=arg[0]? arg[0][16] : 0;
+  a22=(a22+a41);
+  a42=arg[0]? arg[0][17] : 0;
+  a22=(a22+a42);
+  a43=arg[0]? arg[0][18] : 0;
+  a22=(a22+a43);
+  a44=arg[0]? arg[0][19] : 0;
+  a22=(a22+a44);
+  a45=arg[0]? arg[0][20] : 0;
+  a22=(a22+a45);
+  a46=arg[0]? arg[0][21] : 0;
+  a22=(a22+a46);
+  a47=arg[0]? arg[0][22] : 0;
+  a22=(a22+a47);
+  a48=arg[0]? arg[0][23] : 0;
+  a22=(a22+a48);
+  a22=(a22+a24);
+  a22=(a22+a18);
+  a22=(a22+a21);
+  a22=(a22+a16);
+  a22=casadi_fabs(a22);
+  a49=casadi_inf;
+  a22=(a22<a49);
+  a49=(a34&&a22);
+  a49=(a10&&a49);
+  a50=(-a04);
+  a03=casadi_fmax(a03,a50);
+  a03=casadi_fmin(a03,a04);
+  a03=(a49?a03:0);
+  if (res[0]!=0) res[0][0]=a03;
+  a03=(-a39);
+  a06=casadi_fmax(a06,a03);
+  a06=casadi_fmin(a06,a39);
+  a06=(a49?a06:0);
+  if (res[0]!=0) res[0][1]=a06;
+  a06=(-a15);
+  a12=casadi_fmax(a12,a06);
+  a12=casadi_fmin(a12,a15);
+  a12=(a49?a12:0);
+  if (res[0]!=0) res[0][2]=a12;
+  a12=(-a38);
+  a20=casadi_fmax(a20,a12);
+  a20=casadi_fmin(a20,a38);
+  a20=(a49?a20:0);
+  if (res[0]!=0) res[0][3]=a20;
+  a20=(a10&&a22);
+  a38=(a20?a24:0);
+  a12=(!a20);
+  a14=(a12?a14:0);
+  a38=(a38+a14);
+  if (res[1]!=0) res[1][0]=a38;
+  a38=(a20?a18:0);
+  a36=(a12?a36:0);
+  a38=(a38+a36);
+  if (res[1]!=0) res[1][1]=a38;
+  a38=(a20?a21:0);
+  a32=(a12?a32:0);
+  a38=(a38+a32);
+  if (res[1]!=0) res[1][2]=a38;
+  a20=(a20?a16:0);
+  a12=(a12?a35:0);
+  a20=(a20+a12);
+  if (res[1]!=0) res[1][3]=a20;
+  a20=(a49?a27:0);
+  a12=(!a49);
+  a27=(a12?a27:0);
+  a20=(a20+a27);
+  if (res[1]!=0) res[1][4]=a20;
+  a20=(a49?a33:0);
+  a33=(a12?a33:0);
+  a20=(a20+a33);
+  if (res[1]!=0) res[1][5]=a20;
+  a20=(a49?a31:0);
+  a31=(a12?a31:0);
+  a20=(a20+a31);
+  if (res[1]!=0) res[1][6]=a20;
+  a20=(a49?a29:0);
+  a29=(a12?a29:0);
+  a20=(a20+a29);
+  if (res[1]!=0) res[1][7]=a20;
+  a20=(a49?a25:0);
+  a25=(a12?a25:0);
+  a20=(a20+a25);
+  if (res[1]!=0) res[1][8]=a20;
+  a20=(a49?a02:0);
+  a02=(a12?a02:0);
+  a20=(a20+a02);
+  if (res[1]!=0) res[1][9]=a20;
+  a20=(a49?a23:0);
+  a23=(a12?a23:0);
+  a20=(a20+a23);
+  if (res[1]!=0) res[1][10]=a20;
+  a20=(a49?a40:0);
+  a40=(a12?a40:0);
+  a20=(a20+a40);
+  if (res[1]!=0) res[1][11]=a20;
+  a20=(a49?a28:0);
+  a28=(a12?a28:0);
+  a20=(a20+a28);
+  if (res[1]!=0) res[1][12]=a20;
+  a20=(a49?a17:0);
+  a17=(a12?a17:0);
+  a20=(a20+a17);
+  if (res[1]!=0) res[1][13]=a20;
+  a20=(a49?a26:0);
+  a26=(a12?a26:0);
+  a20=(a20+a26);
+  if (res[1]!=0) res[1][14]=a20;
+  a20=(a49?a19:0);
+  a19=(a12?a19:0);
+  a20=(a20+a19);
+  if (res[1]!=0) res[1][15]=a20;
+  a20=(a49?a41:0);
+  a41=(a12?a41:0);
+  a20=(a20+a41);
+  if (res[1]!=0) res[1][16]=a20;
+  a20=(a49?a42:0);
+  a42=(a12?a42:0);
+  a20=(a20+a42);
+  if (res[1]!=0) res[1][17]=a20;
+  a20=(a49?a43:0);
+  a43=(a12?a43:0);
+  a20=(a20+a43);
+  if (res[1]!=0) res[1][18]=a20;
+  a20=(a49?a44:0);
+  a44=(a12?a44:0);
+  a20=(a20+a44);
+  if (res[1]!=0) res[1][19]=a20;
+  a20=(a49?a45:0);
+  a45=(a12?a45:0);
+  a20=(a20+a45);
+  if (res[1]!=0) res[1][20]=a20;
+  a20=(a49?a46:0);
+  a46=(a12?a46:0);
+  a20=(a20+a46);
+  if (res[1]!=0) res[1][21]=a20;
+  a20=(a49?a47:0);
+  a47=(a12?a47:0);
+  a20=(a20+a47);
+  if (res[1]!=0) res[1][22]=a20;
+  a49=(a49?a48:0);
+  a12=(a12?a48:0);
+  a49=(a49+a12);
+  if (res[1]!=0) res[1][23]=a49;
+  a49=(a05==a01);
+  a01=(a49?a01:0);
+  a49=(!a49);
+  a05=(a05==a08);
+  a12=4.;
+  a05=(a05?a12:0);
+  a49=(a49?a05:0);
+  a01=(a01+a49);
+  a01=(a22?a01:0);
+  a22=(!a22);
+  a49=3.;
+  a22=(a22?a49:0);
+  a01=(a01+a22);
+  a01=(a34?a01:0);
+  a34=(!a34);
+  a34=(a34?a08:0);
+  a01=(a01+a34);
+  a01=(a10?a01:0);
+  a10=(!a10);
+  a34=5.;
+  a10=(a10?a34:0);
+  a01=(a01+a10);
+  if (res[2]!=0) res[2][0]=a01;
+  if (res[3]!=0) res[3][0]=a24;
+  if (res[3]!=0) res[3][1]=a18;
+  if (res[3]!=0) res[3][2]=a21;
+  if (res[3]!=0) res[3][3]=a16;
+  a30=(a30-a24);
+  if (res[3]!=0) res[3][4]=a30;
+  a13=(a13-a18);
+  if (res[3]!=0) res[3][5]=a13;
+  a09=(a09-a21);
+  if (res[3]!=0) res[3][6]=a09;
+  a37=(a37-a16);
+  if (res[3]!=0) res[3][7]=a37;
+  if (res[3]!=0) res[3][8]=a07;
+  if (res[3]!=0) res[3][9]=a11;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f32(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_preload_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_lqr_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 972;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 972*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_plant_xedd:(xe[2],xed[2],tau_a[4],plant[27])->(xedd[2]) */
+static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -37563,7 +43216,7 @@ static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f27(arg, res, iw, w, mem);
+  return casadi_f33(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_plant_xedd_checkout(void) {
@@ -37611,7 +43264,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fourleg_plant_xedd_sparsity_in(casadi_int
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s2;
-    case 3: return casadi_s14;
+    case 3: return casadi_s15;
     default: return 0;
   }
 }
@@ -37640,7 +43293,7 @@ CASADI_SYMBOL_EXPORT int fourleg_plant_xedd_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fourleg_plant_step:(x[4],tau_a[4],plant[27],h)->(x_next[4]) */
-static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -39818,7 +45471,7 @@ static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f28(arg, res, iw, w, mem);
+  return casadi_f34(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_plant_step_checkout(void) {
@@ -39865,7 +45518,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fourleg_plant_step_sparsity_in(casadi_int
   switch (i) {
     case 0: return casadi_s2;
     case 1: return casadi_s2;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     case 3: return casadi_s9;
     default: return 0;
   }
@@ -39895,7 +45548,7 @@ CASADI_SYMBOL_EXPORT int fourleg_plant_step_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fourleg_measure:(xe[2],plant[27])->(qa[4]) */
-static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20;
   a00=0.;
@@ -40020,7 +45673,7 @@ static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f29(arg, res, iw, w, mem);
+  return casadi_f35(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_measure_checkout(void) {
@@ -40064,7 +45717,7 @@ CASADI_SYMBOL_EXPORT const char* fourleg_measure_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s14;
+    case 1: return casadi_s15;
     default: return 0;
   }
 }
@@ -40093,7 +45746,7 @@ CASADI_SYMBOL_EXPORT int fourleg_measure_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* fourleg_na_closed_loop:(x[28],u[6],p[68])->(x_next[28],y[29]) */
-static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w08=w+127, *w09=w+133, *w10=w+135, *w11=w+137, *w13=w+139, *w14=w+143, w15, w16;
   casadi_real w17, *w18=w+167;
@@ -40110,7 +45763,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -40135,19 +45788,19 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w07;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w07, 4, res[0]);
   if (res[0]) casadi_copy(w14, 24, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -40160,7 +45813,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f30(arg, res, iw, w, mem);
+  return casadi_f36(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_closed_loop_checkout(void) {
@@ -40205,17 +45858,17 @@ CASADI_SYMBOL_EXPORT const char* fourleg_na_closed_loop_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s3;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s17;
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
     default: return 0;
   }
 }
@@ -40237,7 +45890,7 @@ CASADI_SYMBOL_EXPORT int fourleg_na_closed_loop_work_bytes(casadi_int *sz_arg, c
 }
 
 /* fourleg_na_minmax_closed_loop:(x[28],u[6],p[68])->(x_next[28],y[29]) */
-static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w08=w+127, *w09=w+133, *w10=w+135, *w11=w+137, *w13=w+139, *w14=w+143, w15, w16;
   casadi_real w17, *w18=w+167;
@@ -40254,7 +45907,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -40279,19 +45932,19 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w07;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w07, 4, res[0]);
   if (res[0]) casadi_copy(w14, 24, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -40304,7 +45957,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f31(arg, res, iw, w, mem);
+  return casadi_f37(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_minmax_closed_loop_checkout(void) {
@@ -40349,17 +46002,17 @@ CASADI_SYMBOL_EXPORT const char* fourleg_na_minmax_closed_loop_name_out(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s3;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s17;
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
     default: return 0;
   }
 }
@@ -40381,7 +46034,7 @@ CASADI_SYMBOL_EXPORT int fourleg_na_minmax_closed_loop_work_bytes(casadi_int *sz
 }
 
 /* fourleg_na_preload_closed_loop:(x[28],u[6],p[68])->(x_next[28],y[29]) */
-static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+1077, *w07=w+1081, *w08=w+1085, *w09=w+1091, *w10=w+1093, *w11=w+1095, *w13=w+1097, *w14=w+1101, w15, w16;
   casadi_real w17, *w18=w+1125;
@@ -40398,7 +46051,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -40423,19 +46076,19 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w07;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w07, 4, res[0]);
   if (res[0]) casadi_copy(w14, 24, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -40448,7 +46101,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f32(arg, res, iw, w, mem);
+  return casadi_f38(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_preload_closed_loop_checkout(void) {
@@ -40493,17 +46146,17 @@ CASADI_SYMBOL_EXPORT const char* fourleg_na_preload_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s3;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s17;
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
     default: return 0;
   }
 }
@@ -40525,7 +46178,7 @@ CASADI_SYMBOL_EXPORT int fourleg_na_preload_closed_loop_work_bytes(casadi_int *s
 }
 
 /* fourleg_na_proj_closed_loop:(x[28],u[6],p[68])->(x_next[28],y[29]) */
-static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w08=w+127, *w09=w+133, *w10=w+135, *w11=w+137, *w13=w+139, *w14=w+143, w15, w16;
   casadi_real w17, *w18=w+167;
@@ -40542,7 +46195,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -40567,19 +46220,19 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w07;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w07, 4, res[0]);
   if (res[0]) casadi_copy(w14, 24, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -40592,7 +46245,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f33(arg, res, iw, w, mem);
+  return casadi_f39(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_proj_closed_loop_checkout(void) {
@@ -40637,17 +46290,17 @@ CASADI_SYMBOL_EXPORT const char* fourleg_na_proj_closed_loop_name_out(casadi_int
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s3;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s17;
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
     default: return 0;
   }
 }
@@ -40669,7 +46322,7 @@ CASADI_SYMBOL_EXPORT int fourleg_na_proj_closed_loop_work_bytes(casadi_int *sz_a
 }
 
 /* fourleg_na_proj_minmax_closed_loop:(x[28],u[6],p[68])->(x_next[28],y[29]) */
-static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w08=w+127, *w09=w+133, *w10=w+135, *w11=w+137, *w13=w+139, *w14=w+143, w15, w16;
   casadi_real w17, *w18=w+167;
@@ -40686,7 +46339,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -40711,19 +46364,19 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w07;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w07, 4, res[0]);
   if (res[0]) casadi_copy(w14, 24, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -40736,7 +46389,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f34(arg, res, iw, w, mem);
+  return casadi_f40(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_proj_minmax_closed_loop_checkout(void) {
@@ -40781,17 +46434,17 @@ CASADI_SYMBOL_EXPORT const char* fourleg_na_proj_minmax_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s3;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s17;
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
     default: return 0;
   }
 }
@@ -40813,7 +46466,7 @@ CASADI_SYMBOL_EXPORT int fourleg_na_proj_minmax_closed_loop_work_bytes(casadi_in
 }
 
 /* fourleg_na_proj_preload_closed_loop:(x[28],u[6],p[68])->(x_next[28],y[29]) */
-static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+1078, *w07=w+1082, *w08=w+1086, *w09=w+1092, *w10=w+1094, *w11=w+1096, *w13=w+1098, *w14=w+1102, w15, w16;
   casadi_real w17, *w18=w+1126;
@@ -40830,7 +46483,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -40855,19 +46508,19 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w07;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w07, 4, res[0]);
   if (res[0]) casadi_copy(w14, 24, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -40880,7 +46533,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f35(arg, res, iw, w, mem);
+  return casadi_f41(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_na_proj_preload_closed_loop_checkout(void) {
@@ -40925,17 +46578,17 @@ CASADI_SYMBOL_EXPORT const char* fourleg_na_proj_preload_closed_loop_name_out(ca
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s3;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s17;
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
     default: return 0;
   }
 }
@@ -40957,7 +46610,7 @@ CASADI_SYMBOL_EXPORT int fourleg_na_proj_preload_closed_loop_work_bytes(casadi_i
 }
 
 /* fourleg_apd_closed_loop:(x[28],u[6],p[48])->(x_next[28],y[29]) */
-static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w08=w+127, *w09=w+133, *w10=w+135, *w11=w+137, *w13=w+139, *w14=w+143, w15, w16;
   casadi_real w17, *w18=w+167;
@@ -40974,7 +46627,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -40999,19 +46652,19 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w07;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w07, 4, res[0]);
   if (res[0]) casadi_copy(w14, 24, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -41024,7 +46677,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f36(arg, res, iw, w, mem);
+  return casadi_f42(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_apd_closed_loop_checkout(void) {
@@ -41069,7 +46722,7 @@ CASADI_SYMBOL_EXPORT const char* fourleg_apd_closed_loop_name_out(casadi_int i) 
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s3;
     case 2: return casadi_s4;
     default: return 0;
@@ -41078,8 +46731,8 @@ CASADI_SYMBOL_EXPORT const casadi_int* fourleg_apd_closed_loop_sparsity_in(casad
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s17;
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
     default: return 0;
   }
 }
@@ -41101,7 +46754,7 @@ CASADI_SYMBOL_EXPORT int fourleg_apd_closed_loop_work_bytes(casadi_int *sz_arg, 
 }
 
 /* fourleg_apd_minmax_closed_loop:(x[28],u[6],p[48])->(x_next[28],y[29]) */
-static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w08=w+127, *w09=w+133, *w10=w+135, *w11=w+137, *w13=w+139, *w14=w+143, w15, w16;
   casadi_real w17, *w18=w+167;
@@ -41118,7 +46771,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -41143,19 +46796,19 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w07;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w07, 4, res[0]);
   if (res[0]) casadi_copy(w14, 24, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -41168,7 +46821,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f37(arg, res, iw, w, mem);
+  return casadi_f43(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_apd_minmax_closed_loop_checkout(void) {
@@ -41213,7 +46866,7 @@ CASADI_SYMBOL_EXPORT const char* fourleg_apd_minmax_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s3;
     case 2: return casadi_s4;
     default: return 0;
@@ -41222,8 +46875,8 @@ CASADI_SYMBOL_EXPORT const casadi_int* fourleg_apd_minmax_closed_loop_sparsity_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s17;
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
     default: return 0;
   }
 }
@@ -41245,7 +46898,7 @@ CASADI_SYMBOL_EXPORT int fourleg_apd_minmax_closed_loop_work_bytes(casadi_int *s
 }
 
 /* fourleg_apd_preload_closed_loop:(x[28],u[6],p[48])->(x_next[28],y[29]) */
-static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+1066, *w07=w+1070, *w08=w+1074, *w09=w+1080, *w10=w+1082, *w11=w+1084, *w13=w+1086, *w14=w+1090, w15, w16;
   casadi_real w17, *w18=w+1114;
@@ -41262,7 +46915,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -41287,19 +46940,19 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w07;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w07;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w07, 4, res[0]);
   if (res[0]) casadi_copy(w14, 24, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -41312,7 +46965,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f38(arg, res, iw, w, mem);
+  return casadi_f44(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_apd_preload_closed_loop_checkout(void) {
@@ -41357,7 +47010,7 @@ CASADI_SYMBOL_EXPORT const char* fourleg_apd_preload_closed_loop_name_out(casadi
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s3;
     case 2: return casadi_s4;
     default: return 0;
@@ -41366,8 +47019,8 @@ CASADI_SYMBOL_EXPORT const casadi_int* fourleg_apd_preload_closed_loop_sparsity_
 
 CASADI_SYMBOL_EXPORT const casadi_int* fourleg_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s17;
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
     default: return 0;
   }
 }
@@ -41388,8 +47041,884 @@ CASADI_SYMBOL_EXPORT int fourleg_apd_preload_closed_loop_work_bytes(casadi_int *
   return 0;
 }
 
+/* fourleg_ctc_closed_loop:(x[28],u[6],p[48])->(x_next[28],y[29]) */
+static int casadi_f45(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w08=w+127, *w09=w+133, *w10=w+135, *w11=w+137, *w13=w+139, *w14=w+143, w15, w16;
+  casadi_real w17, *w18=w+167;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+21;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f27(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w07;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w07, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 24, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 4, res[1]+4);
+  if (res[1]) res[1][8] = w15;
+  for (rr=w18, cs=w14+4; cs!=w14+24; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w18, 20, res[1]+9);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f45(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_ctc_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s3;
+    case 2: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 187;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 187*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_ctc_minmax_closed_loop:(x[28],u[6],p[48])->(x_next[28],y[29]) */
+static int casadi_f46(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w08=w+127, *w09=w+133, *w10=w+135, *w11=w+137, *w13=w+139, *w14=w+143, w15, w16;
+  casadi_real w17, *w18=w+167;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+21;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w07;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w07, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 24, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 4, res[1]+4);
+  if (res[1]) res[1][8] = w15;
+  for (rr=w18, cs=w14+4; cs!=w14+24; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w18, 20, res[1]+9);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f46(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_ctc_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s3;
+    case 2: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 187;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 187*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_ctc_preload_closed_loop:(x[28],u[6],p[48])->(x_next[28],y[29]) */
+static int casadi_f47(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+1060, *w07=w+1064, *w08=w+1068, *w09=w+1074, *w10=w+1076, *w11=w+1078, *w13=w+1080, *w14=w+1084, w15, w16;
+  casadi_real w17, *w18=w+1108;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+21;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w07;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w07, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 24, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 4, res[1]+4);
+  if (res[1]) res[1][8] = w15;
+  for (rr=w18, cs=w14+4; cs!=w14+24; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w18, 20, res[1]+9);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f47(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_ctc_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_ctc_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_ctc_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_ctc_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s3;
+    case 2: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 1128;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 1128*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_lqr_closed_loop:(x[28],u[26],p[44])->(x_next[28],y[29]) */
+static int casadi_f48(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w15=w+127, *w16=w+131, w17, w18, w19, *w20=w+155;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+17;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+22;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f30(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w07;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w07, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 24, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 4, res[1]+4);
+  if (res[1]) res[1][8] = w17;
+  for (rr=w20, cs=w16+4; cs!=w16+24; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w20, 20, res[1]+9);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f48(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_lqr_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s19;
+    case 2: return casadi_s20;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 175;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 175*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_lqr_minmax_closed_loop:(x[28],u[26],p[44])->(x_next[28],y[29]) */
+static int casadi_f49(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+119, *w07=w+123, *w15=w+127, *w16=w+131, w17, w18, w19, *w20=w+155;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+17;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+22;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f31(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w07;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w07, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 24, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 4, res[1]+4);
+  if (res[1]) res[1][8] = w17;
+  for (rr=w20, cs=w16+4; cs!=w16+24; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w20, 20, res[1]+9);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f49(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_lqr_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s19;
+    case 2: return casadi_s20;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 175;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 175*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_lqr_preload_closed_loop:(x[28],u[26],p[44])->(x_next[28],y[29]) */
+static int casadi_f50(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+1023, *w07=w+1027, *w15=w+1031, *w16=w+1035, w17, w18, w19, *w20=w+1059;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+17;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+22;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f32(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w07;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w07;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w07, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 24, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 4, res[1]+4);
+  if (res[1]) res[1][8] = w17;
+  for (rr=w20, cs=w16+4; cs!=w16+24; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w20, 20, res[1]+9);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f50(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_lqr_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_lqr_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_lqr_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_lqr_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s19;
+    case 2: return casadi_s20;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 1079;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 1079*sizeof(casadi_real);
+  return 0;
+}
+
 /* fourleg_forward_dynamics_jacobians:(xe[2],xed[2],tau_a[4],theta[20])->(xedd[2],d_xe[4],d_xed[4],d_tau_a[8],d_theta[40],sing[2]) */
-static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f51(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -44171,7 +50700,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f39(arg, res, iw, w, mem);
+  return casadi_f51(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_forward_dynamics_jacobians_checkout(void) {
@@ -44258,7 +50787,7 @@ CASADI_SYMBOL_EXPORT int fourleg_forward_dynamics_jacobians_work_bytes(casadi_in
 }
 
 /* fourleg_inverse_dynamics:(xe[2],xed[2],xedd[2],theta[20])->(u[2],sing[2]) */
-static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f52(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -44862,7 +51391,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f40(arg, res, iw, w, mem);
+  return casadi_f52(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_inverse_dynamics_checkout(void) {
@@ -44941,7 +51470,7 @@ CASADI_SYMBOL_EXPORT int fourleg_inverse_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* fourleg_inverse_dynamics_jacobians:(xe[2],xed[2],xedd[2],theta[20])->(u[2],d_xe[4],d_xed[4],sing[2]) */
-static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f53(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -47074,7 +53603,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f41(arg, res, iw, w, mem);
+  return casadi_f53(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_inverse_dynamics_jacobians_checkout(void) {
@@ -47157,7 +53686,7 @@ CASADI_SYMBOL_EXPORT int fourleg_inverse_dynamics_jacobians_work_bytes(casadi_in
 }
 
 /* fourleg_sampled_step_xedd:(xe[2],xed[2],tau_a[4],theta[20])->(xedd[2],sing[2]) */
-static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f55(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -47783,7 +54312,7 @@ static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 /* fourleg_sampled_step:(x[4],tau_a[4],theta[20],T)->(x_next[4],sing[2]) */
-static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f54(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w00=w+80, w01, w02, *w03=w+84, *w04=w+86, *w05=w+88, *w06=w+90, *w08=w+94, *w09=w+96, *w10=w+98;
   casadi_real w11, *w12=w+102, *w13=w+106;
@@ -47805,7 +54334,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=w09;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -47822,7 +54351,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -47841,7 +54370,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -47858,7 +54387,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -47876,7 +54405,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -47893,7 +54422,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -47912,7 +54441,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -47929,7 +54458,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -47947,7 +54476,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -47964,7 +54493,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -47983,7 +54512,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -48000,7 +54529,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w06;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -48013,7 +54542,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f42(arg, res, iw, w, mem);
+  return casadi_f54(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_sampled_step_checkout(void) {
@@ -48092,7 +54621,7 @@ CASADI_SYMBOL_EXPORT int fourleg_sampled_step_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* fourleg_sampled_step_jacobians:(x[4],tau_a[4],theta[20],T)->(x_next[4],d_x[16],d_tau_a[16],sing[2]) */
-static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i, j;
   casadi_real **res1=res+4, *rr, *w00=w+315, w01, w02, *w03=w+319, *w04=w+321, *w05=w+323, *w06=w+325, *w07=w+329, *w08=w+349, *w09=w+351;
   casadi_real *w10=w+355, *w11=w+359, *w12=w+367, *w13=w+369, w14, *w15=w+373, *w16=w+377, *w17=w+381, *w18=w+389, *w19=w+393, *w20=w+397, *w21=w+405;
@@ -48123,7 +54652,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w11;
   res1[4]=0;
   res1[5]=w12;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w13;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -48144,7 +54673,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w17;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w18;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -48167,7 +54696,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w20;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w21;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -48188,7 +54717,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w23;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w24;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -48210,7 +54739,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w25;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w26;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -48231,7 +54760,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w29;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w30;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -48254,7 +54783,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w32;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w33;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -48275,7 +54804,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w35;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w36;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -48297,7 +54826,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w37;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w38;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -48318,7 +54847,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w41;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w42;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -48341,7 +54870,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w44;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w45;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -48362,7 +54891,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w47;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w06;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -48375,18 +54904,18 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w07;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w48; i<16; ++i) *rr++ = *cs++;
-  casadi_densify(w07, casadi_s18, w49, 0);
+  casadi_densify(w07, casadi_s21, w49, 0);
   w02 = 6.;
   w02  = (w01/w02);
   for (rr=w50, cs=w07+0; cs!=w07+20; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
-  casadi_trans(w50,casadi_s20, w51, casadi_s19, iw);
+  casadi_trans(w50,casadi_s23, w51, casadi_s22, iw);
   casadi_clear(w48, 16);
   for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w52;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w52, 2, w07, casadi_s18, w48);
+  casadi_mtimes_dense_sparse(w52, 2, w07, casadi_s21, w48);
   casadi_clear(w52, 8);
   for (i=0, rr=w53, cs=w11; i<2; ++i) for (j=0; j<4; ++j) rr[i+j*2] = *cs++;
   rr=w54;
@@ -48397,15 +54926,15 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w55;
   for (i=0, cs=w51; i<10; ++i) *rr++ = *cs++;
   for (i=0, cs=w54; i<16; ++i) *rr++ = *cs++;
-  casadi_trans(w55,casadi_s22, w56, casadi_s21, iw);
-  casadi_densify(w56, casadi_s21, w57, 0);
-  casadi_project(w07, casadi_s18, w58, casadi_s23, w);
+  casadi_trans(w55,casadi_s25, w56, casadi_s24, iw);
+  casadi_densify(w56, casadi_s24, w57, 0);
+  casadi_project(w07, casadi_s21, w58, casadi_s26, w);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w56, cs=w56; i<26; ++i) (*rr++)  = (w14*(*cs++));
-  casadi_project(w56, casadi_s21, w59, casadi_s23, w);
+  casadi_project(w56, casadi_s24, w59, casadi_s26, w);
   for (i=0, rr=w58, cs=w59; i<28; ++i) (*rr++) += (*cs++);
-  for (cii=casadi_s24, rr=w54, cs=w58; cii!=casadi_s24+16; ++cii) *rr++ = cs[*cii];
+  for (cii=casadi_s27, rr=w54, cs=w58; cii!=casadi_s27+16; ++cii) *rr++ = cs[*cii];
   for (i=0, rr=w48, cs=w54; i<8; ++i) for (j=0; j<2; ++j) rr[i+j*8] = *cs++;
   casadi_clear(w54, 16);
   for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
@@ -48413,7 +54942,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w52;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w52, 2, w58, casadi_s23, w54);
+  casadi_mtimes_dense_sparse(w52, 2, w58, casadi_s26, w54);
   casadi_clear(w52, 8);
   for (i=0, rr=w53, cs=w17; i<2; ++i) for (j=0; j<4; ++j) rr[i+j*2] = *cs++;
   rr=w60;
@@ -48427,7 +54956,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w62, cs=w61; i<4; ++i) for (j=0; j<8; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w61, cs=w62; i<32; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w57, cs=w61; i<32; ++i) (*rr++) += (*cs++);
-  casadi_densify(w07, casadi_s18, w61, 0);
+  casadi_densify(w07, casadi_s21, w61, 0);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w62, cs=w62; i<32; ++i) (*rr++)  = (w14*(*cs++));
@@ -48454,7 +54983,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w62, cs=w61; i<4; ++i) for (j=0; j<8; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w61, cs=w62; i<32; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w57, cs=w61; i<32; ++i) (*rr++) += (*cs++);
-  casadi_densify(w07, casadi_s18, w61, 0);
+  casadi_densify(w07, casadi_s21, w61, 0);
   for (i=0, rr=w62, cs=w62; i<32; ++i) (*rr++)  = (w01*(*cs++));
   for (i=0, rr=w61, cs=w62; i<32; ++i) (*rr++) += (*cs++);
   for (rr=w60, cs=w61+0; cs!=w61+32; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
@@ -48689,7 +55218,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f44(arg, res, iw, w, mem);
+  return casadi_f56(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fourleg_sampled_step_jacobians_checkout(void) {

@@ -72,7 +72,19 @@ extern "C" {
 #define casadi_f42 CASADI_PREFIX(f42)
 #define casadi_f43 CASADI_PREFIX(f43)
 #define casadi_f44 CASADI_PREFIX(f44)
+#define casadi_f45 CASADI_PREFIX(f45)
+#define casadi_f46 CASADI_PREFIX(f46)
+#define casadi_f47 CASADI_PREFIX(f47)
+#define casadi_f48 CASADI_PREFIX(f48)
+#define casadi_f49 CASADI_PREFIX(f49)
 #define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f50 CASADI_PREFIX(f50)
+#define casadi_f51 CASADI_PREFIX(f51)
+#define casadi_f52 CASADI_PREFIX(f52)
+#define casadi_f53 CASADI_PREFIX(f53)
+#define casadi_f54 CASADI_PREFIX(f54)
+#define casadi_f55 CASADI_PREFIX(f55)
+#define casadi_f56 CASADI_PREFIX(f56)
 #define casadi_f6 CASADI_PREFIX(f6)
 #define casadi_f7 CASADI_PREFIX(f7)
 #define casadi_f8 CASADI_PREFIX(f8)
@@ -100,6 +112,8 @@ extern "C" {
 #define casadi_s20 CASADI_PREFIX(s20)
 #define casadi_s21 CASADI_PREFIX(s21)
 #define casadi_s22 CASADI_PREFIX(s22)
+#define casadi_s23 CASADI_PREFIX(s23)
+#define casadi_s24 CASADI_PREFIX(s24)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
@@ -302,42 +316,44 @@ static const casadi_int casadi_s7[3] = {36, 1, 1};
 static const casadi_int casadi_s8[3] = {1, 1, 1};
 static const casadi_int casadi_s9[3] = {22, 1, 1};
 static const casadi_int casadi_s10[3] = {10, 1, 1};
-static const casadi_int casadi_s11[3] = {21, 1, 1};
-static const casadi_int casadi_s12[3] = {26, 1, 1};
-static const casadi_int casadi_s13[3] = {57, 1, 1};
-static const casadi_int casadi_s14[3] = {39, 1, 1};
-static const casadi_int casadi_s15[26] = 
+static const casadi_int casadi_s11[3] = {14, 1, 1};
+static const casadi_int casadi_s12[3] = {21, 1, 1};
+static const casadi_int casadi_s13[3] = {26, 1, 1};
+static const casadi_int casadi_s14[3] = {57, 1, 1};
+static const casadi_int casadi_s15[3] = {39, 1, 1};
+static const casadi_int casadi_s16[3] = {35, 1, 1};
+static const casadi_int casadi_s17[26] = 
   {4, 7, 0, 1, 2, 3, 4, 8,
   12, 16, 0, 1, 2, 3, 0, 1,
   2, 3, 0, 1, 2, 3, 0, 1,
   2, 3};
-static const casadi_int casadi_s16[13] = 
+static const casadi_int casadi_s18[13] = 
   {7, 2, 0, 4, 8, 2, 4, 5,
   6, 3, 4, 5, 6};
-static const casadi_int casadi_s17[18] = 
+static const casadi_int casadi_s19[18] = 
   {2, 7, 0, 0, 0, 1, 2, 4,
   6, 8, 0, 1, 0, 1, 0, 1,
   0, 1};
-static const casadi_int casadi_s18[32] = 
+static const casadi_int casadi_s20[32] = 
   {4, 7, 0, 2, 4, 7, 10, 14,
   18, 22, 2, 3, 2, 3, 0, 2,
   3, 1, 2, 3, 0, 1, 2, 3,
   0, 1, 2, 3, 0, 1, 2, 3};
-static const casadi_int casadi_s19[29] = 
+static const casadi_int casadi_s21[29] = 
   {7, 4, 0, 4, 8, 15, 22, 2,
   4, 5, 6, 3, 4, 5, 6, 0,
   1, 2, 3, 4, 5, 6, 0, 1,
   2, 3, 4, 5, 6};
-static const casadi_int casadi_s20[34] = 
+static const casadi_int casadi_s22[34] = 
   {4, 7, 0, 3, 6, 9, 12, 16,
   20, 24, 0, 2, 3, 1, 2, 3,
   0, 2, 3, 1, 2, 3, 0, 1,
   2, 3, 0, 1, 2, 3, 0, 1,
   2, 3};
-static const casadi_int casadi_s21[14] = 
+static const casadi_int casadi_s23[14] = 
   {1, 2, 4, 5, 7, 8, 10, 11,
   14, 15, 18, 19, 22, 23};
-static const casadi_int casadi_s22[3] = {16, 1, 1};
+static const casadi_int casadi_s24[3] = {16, 1, 1};
 
 static const casadi_real casadi_zeros[57] = 
   {0.};
@@ -17377,8 +17393,4696 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_preload_step_work_bytes(casadi_i
   return 0;
 }
 
-/* shang2010_stribeck_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+/* shang2010_stribeck_ctc_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][17] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][6] : 0;
+  a03=(a03/a15);
+  a27=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a27=(a27-a15);
+  a15=casadi_fabs(a27);
+  a16=(a16/a07);
+  a28=(a14*a16);
+  a22=(a22/a07);
+  a07=(a13*a22);
+  a28=(a28-a07);
+  a07=casadi_fabs(a28);
+  a29=(a15+a07);
+  a15=(a15-a07);
+  a15=casadi_fabs(a15);
+  a29=(a29-a15);
+  a15=2.;
+  a29=(a29/a15);
+  a08=(a08/a24);
+  a07=(a10*a08);
+  a12=(a12/a24);
+  a24=(a09*a12);
+  a07=(a07-a24);
+  a24=casadi_fabs(a07);
+  a30=(a29+a24);
+  a29=(a29-a24);
+  a29=casadi_fabs(a29);
+  a30=(a30-a29);
+  a30=(a30/a15);
+  a26=(a26<=a30);
+  a29=arg[5]? arg[5][7] : 0;
+  a24=1.;
+  a31=3.3333333333333331e-01;
+  a32=casadi_sq(a03);
+  a33=casadi_sq(a06);
+  a32=(a32-a33);
+  a33=casadi_sq(a16);
+  a34=casadi_sq(a22);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a33=casadi_sq(a08);
+  a34=casadi_sq(a12);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a32=casadi_sq(a32);
+  a33=(2.*a03);
+  a33=(a33*a06);
+  a34=(2.*a16);
+  a34=(a34*a22);
+  a33=(a33+a34);
+  a34=(2.*a08);
+  a34=(a34*a12);
+  a33=(a33+a34);
+  a33=casadi_sq(a33);
+  a32=(a32+a33);
+  a32=sqrt(a32);
+  a31=(a31*a32);
+  a31=(a24-a31);
+  a32=casadi_fabs(a31);
+  a31=(a31+a32);
+  a04=(a04*a31);
+  a04=sqrt(a04);
+  a29=(a29<=a04);
+  a26=(a26&&a29);
+  a29=(a17*a03);
+  a31=(a19*a29);
+  a32=(a00*a06);
+  a33=(a17*a02);
+  a34=(a32*a33);
+  a31=(a31-a34);
+  a29=(a29/a31);
+  a32=(a32/a31);
+  a34=casadi_sq(a32);
+  a35=(a00*a22);
+  a36=(a17*a16);
+  a37=(a20*a36);
+  a38=(a35*a18);
+  a37=(a37-a38);
+  a35=(a35/a37);
+  a38=casadi_sq(a35);
+  a34=(a34+a38);
+  a38=(a00*a12);
+  a17=(a17*a08);
+  a39=(a25*a17);
+  a40=(a38*a23);
+  a39=(a39-a40);
+  a38=(a38/a39);
+  a40=casadi_sq(a38);
+  a34=(a34+a40);
+  a40=arg[4]? arg[4][0] : 0;
+  a41=arg[5]? arg[5][2] : 0;
+  a42=arg[3]? arg[3][0] : 0;
+  a43=arg[0]? arg[0][2] : 0;
+  a44=arg[5]? arg[5][5] : 0;
+  a45=arg[0]? arg[0][0] : 0;
+  a46=(a21-a45);
+  a47=arg[5]? arg[5][4] : 0;
+  a46=(a46/a47);
+  a46=(a46-a43);
+  a46=(a44*a46);
+  a46=(a43+a46);
+  a42=(a42-a46);
+  a41=(a41*a42);
+  a40=(a40+a41);
+  a41=arg[5]? arg[5][0] : 0;
+  a48=arg[2]? arg[2][0] : 0;
+  a48=(a48-a21);
+  a41=(a41*a48);
+  a40=(a40+a41);
+  a41=(a29*a40);
+  a49=arg[4]? arg[4][1] : 0;
+  a50=arg[5]? arg[5][3] : 0;
+  a51=arg[3]? arg[3][1] : 0;
+  a52=arg[0]? arg[0][3] : 0;
+  a53=arg[0]? arg[0][1] : 0;
+  a54=(a05-a53);
+  a54=(a54/a47);
+  a54=(a54-a52);
+  a44=(a44*a54);
+  a44=(a52+a44);
+  a51=(a51-a44);
+  a50=(a50*a51);
+  a49=(a49+a50);
+  a50=arg[5]? arg[5][1] : 0;
+  a54=arg[2]? arg[2][1] : 0;
+  a54=(a54-a05);
+  a50=(a50*a54);
+  a49=(a49+a50);
+  a50=(a32*a49);
+  a41=(a41-a50);
+  a50=(a29*a46);
+  a47=(a32*a44);
+  a50=(a50-a47);
+  a47=(a00*a50);
+  a55=(a47*a01);
+  a55=(a55*a50);
+  a19=(a19/a31);
+  a56=(a19*a44);
+  a33=(a33/a31);
+  a31=(a33*a46);
+  a56=(a56-a31);
+  a31=(a00*a56);
+  a57=(a31*a06);
+  a57=(a57*a56);
+  a55=(a55+a57);
+  a57=(a32*a55);
+  a47=(a47*a02);
+  a47=(a47*a50);
+  a31=(a31*a03);
+  a31=(a31*a56);
+  a47=(a47+a31);
+  a31=(a29*a47);
+  a57=(a57-a31);
+  a41=(a41+a57);
+  a57=(a29*a41);
+  a31=arg[0]? arg[0][4] : 0;
+  a57=(a57*a31);
+  a36=(a36/a37);
+  a58=(a36*a40);
+  a59=(a35*a49);
+  a58=(a58-a59);
+  a59=(a36*a46);
+  a60=(a35*a44);
+  a59=(a59-a60);
+  a60=(a00*a59);
+  a61=(a60*a14);
+  a61=(a61*a59);
+  a20=(a20/a37);
+  a62=(a20*a44);
+  a18=(a18/a37);
+  a37=(a18*a46);
+  a62=(a62-a37);
+  a37=(a00*a62);
+  a63=(a37*a22);
+  a63=(a63*a62);
+  a61=(a61+a63);
+  a63=(a35*a61);
+  a60=(a60*a13);
+  a60=(a60*a59);
+  a37=(a37*a16);
+  a37=(a37*a62);
+  a60=(a60+a37);
+  a37=(a36*a60);
+  a63=(a63-a37);
+  a58=(a58+a63);
+  a63=(a36*a58);
+  a37=arg[0]? arg[0][5] : 0;
+  a63=(a63*a37);
+  a57=(a57+a63);
+  a17=(a17/a39);
+  a63=(a17*a40);
+  a64=(a38*a49);
+  a63=(a63-a64);
+  a64=(a17*a46);
+  a65=(a38*a44);
+  a64=(a64-a65);
+  a65=(a00*a64);
+  a66=(a65*a10);
+  a66=(a66*a64);
+  a25=(a25/a39);
+  a67=(a25*a44);
+  a23=(a23/a39);
+  a39=(a23*a46);
+  a67=(a67-a39);
+  a00=(a00*a67);
+  a39=(a00*a12);
+  a39=(a39*a67);
+  a66=(a66+a39);
+  a39=(a38*a66);
+  a65=(a65*a09);
+  a65=(a65*a64);
+  a00=(a00*a08);
+  a00=(a00*a67);
+  a65=(a65+a00);
+  a00=(a17*a65);
+  a39=(a39-a00);
+  a63=(a63+a39);
+  a39=(a17*a63);
+  a00=arg[0]? arg[0][6] : 0;
+  a39=(a39*a00);
+  a57=(a57+a39);
+  a39=(a19*a49);
+  a68=(a33*a40);
+  a39=(a39-a68);
+  a47=(a33*a47);
+  a55=(a19*a55);
+  a47=(a47-a55);
+  a39=(a39+a47);
+  a02=(a02*a03);
+  a01=(a01*a06);
+  a02=(a02+a01);
+  a01=(a39*a02);
+  a56=casadi_sq(a56);
+  a56=(a56*a27);
+  a01=(a01+a56);
+  a56=(a29*a01);
+  a02=(a41*a02);
+  a06=casadi_sq(a50);
+  a27=(a06*a27);
+  a02=(a02-a27);
+  a27=(a33*a02);
+  a56=(a56-a27);
+  a27=arg[0]? arg[0][7] : 0;
+  a56=(a56*a27);
+  a57=(a57+a56);
+  a56=(a20*a49);
+  a03=(a18*a40);
+  a56=(a56-a03);
+  a60=(a18*a60);
+  a61=(a20*a61);
+  a60=(a60-a61);
+  a56=(a56+a60);
+  a13=(a13*a16);
+  a14=(a14*a22);
+  a13=(a13+a14);
+  a14=(a56*a13);
+  a62=casadi_sq(a62);
+  a62=(a62*a28);
+  a14=(a14+a62);
+  a62=(a36*a14);
+  a13=(a58*a13);
+  a22=casadi_sq(a59);
+  a28=(a22*a28);
+  a13=(a13-a28);
+  a28=(a18*a13);
+  a62=(a62-a28);
+  a28=arg[0]? arg[0][8] : 0;
+  a62=(a62*a28);
+  a57=(a57+a62);
+  a49=(a25*a49);
+  a40=(a23*a40);
+  a49=(a49-a40);
+  a65=(a23*a65);
+  a66=(a25*a66);
+  a65=(a65-a66);
+  a49=(a49+a65);
+  a09=(a09*a08);
+  a10=(a10*a12);
+  a09=(a09+a10);
+  a10=(a49*a09);
+  a67=casadi_sq(a67);
+  a67=(a67*a07);
+  a10=(a10+a67);
+  a67=(a17*a10);
+  a09=(a63*a09);
+  a12=casadi_sq(a64);
+  a07=(a12*a07);
+  a09=(a09-a07);
+  a07=(a23*a09);
+  a67=(a67-a07);
+  a07=arg[0]? arg[0][9] : 0;
+  a67=(a67*a07);
+  a57=(a57+a67);
+  a33=(a33*a39);
+  a67=arg[0]? arg[0][10] : 0;
+  a33=(a33*a67);
+  a57=(a57-a33);
+  a18=(a18*a56);
+  a33=arg[0]? arg[0][11] : 0;
+  a18=(a18*a33);
+  a57=(a57-a18);
+  a23=(a23*a49);
+  a18=arg[0]? arg[0][12] : 0;
+  a23=(a23*a18);
+  a57=(a57-a23);
+  a23=(a29*a50);
+  a08=arg[0]? arg[0][13] : 0;
+  a23=(a23*a08);
+  a57=(a57+a23);
+  a23=(a36*a59);
+  a65=arg[0]? arg[0][14] : 0;
+  a23=(a23*a65);
+  a57=(a57+a23);
+  a23=(a17*a64);
+  a66=arg[0]? arg[0][15] : 0;
+  a23=(a23*a66);
+  a57=(a57+a23);
+  a23=0.;
+  a40=(a23<=a50);
+  a62=(a40?a24:0);
+  a40=(!a40);
+  a16=-1.;
+  a40=(a40?a16:0);
+  a62=(a62+a40);
+  a40=(a29*a62);
+  a60=arg[0]? arg[0][16] : 0;
+  a40=(a40*a60);
+  a57=(a57+a40);
+  a40=(a23<=a59);
+  a61=(a40?a24:0);
+  a40=(!a40);
+  a40=(a40?a16:0);
+  a61=(a61+a40);
+  a40=(a36*a61);
+  a03=arg[0]? arg[0][17] : 0;
+  a40=(a40*a03);
+  a57=(a57+a40);
+  a40=(a23<=a64);
+  a47=(a40?a24:0);
+  a40=(!a40);
+  a40=(a40?a16:0);
+  a47=(a47+a40);
+  a40=(a17*a47);
+  a16=arg[0]? arg[0][18] : 0;
+  a40=(a40*a16);
+  a57=(a57+a40);
+  a40=400.;
+  a06=(a40*a06);
+  a06=(a24+a06);
+  a06=(a62/a06);
+  a55=(a29*a06);
+  a68=arg[0]? arg[0][19] : 0;
+  a55=(a55*a68);
+  a57=(a57+a55);
+  a22=(a40*a22);
+  a22=(a24+a22);
+  a22=(a61/a22);
+  a55=(a36*a22);
+  a69=arg[0]? arg[0][20] : 0;
+  a55=(a55*a69);
+  a57=(a57+a55);
+  a40=(a40*a12);
+  a40=(a24+a40);
+  a40=(a47/a40);
+  a12=(a17*a40);
+  a55=arg[0]? arg[0][21] : 0;
+  a12=(a12*a55);
+  a57=(a57+a12);
+  a12=(a34*a57);
+  a70=(a29*a32);
+  a71=(a36*a35);
+  a70=(a70+a71);
+  a71=(a17*a38);
+  a70=(a70+a71);
+  a02=(a19*a02);
+  a01=(a32*a01);
+  a02=(a02-a01);
+  a02=(a02*a27);
+  a41=(a32*a41);
+  a41=(a41*a31);
+  a58=(a35*a58);
+  a58=(a58*a37);
+  a41=(a41+a58);
+  a63=(a38*a63);
+  a63=(a63*a00);
+  a41=(a41+a63);
+  a02=(a02-a41);
+  a13=(a20*a13);
+  a14=(a35*a14);
+  a13=(a13-a14);
+  a13=(a13*a28);
+  a02=(a02+a13);
+  a09=(a25*a09);
+  a10=(a38*a10);
+  a09=(a09-a10);
+  a09=(a09*a07);
+  a02=(a02+a09);
+  a19=(a19*a39);
+  a19=(a19*a67);
+  a02=(a02+a19);
+  a20=(a20*a56);
+  a20=(a20*a33);
+  a02=(a02+a20);
+  a25=(a25*a49);
+  a25=(a25*a18);
+  a02=(a02+a25);
+  a50=(a32*a50);
+  a50=(a50*a08);
+  a02=(a02-a50);
+  a59=(a35*a59);
+  a59=(a59*a65);
+  a02=(a02-a59);
+  a64=(a38*a64);
+  a64=(a64*a66);
+  a02=(a02-a64);
+  a62=(a32*a62);
+  a62=(a62*a60);
+  a02=(a02-a62);
+  a61=(a35*a61);
+  a61=(a61*a03);
+  a02=(a02-a61);
+  a47=(a38*a47);
+  a47=(a47*a16);
+  a02=(a02-a47);
+  a06=(a32*a06);
+  a06=(a06*a68);
+  a02=(a02-a06);
+  a22=(a35*a22);
+  a22=(a22*a69);
+  a02=(a02-a22);
+  a40=(a38*a40);
+  a40=(a40*a55);
+  a02=(a02-a40);
+  a40=(a70*a02);
+  a12=(a12+a40);
+  a40=casadi_sq(a29);
+  a22=casadi_sq(a36);
+  a40=(a40+a22);
+  a22=casadi_sq(a17);
+  a40=(a40+a22);
+  a34=(a40*a34);
+  a22=(a32*a29);
+  a06=(a35*a36);
+  a22=(a22+a06);
+  a06=(a38*a17);
+  a22=(a22+a06);
+  a70=(a70*a22);
+  a34=(a34-a70);
+  a12=(a12/a34);
+  a29=(a29*a12);
+  a40=(a40*a02);
+  a22=(a22*a57);
+  a40=(a40+a22);
+  a40=(a40/a34);
+  a32=(a32*a40);
+  a29=(a29-a32);
+  a36=(a36*a12);
+  a35=(a35*a40);
+  a36=(a36-a35);
+  a35=(a29+a36);
+  a17=(a17*a12);
+  a38=(a38*a40);
+  a17=(a17-a38);
+  a35=(a35+a17);
+  a35=(a35+a31);
+  a35=(a35+a37);
+  a35=(a35+a00);
+  a35=(a35+a27);
+  a35=(a35+a28);
+  a35=(a35+a07);
+  a35=(a35+a67);
+  a35=(a35+a33);
+  a35=(a35+a18);
+  a35=(a35+a08);
+  a35=(a35+a65);
+  a35=(a35+a66);
+  a35=(a35+a60);
+  a35=(a35+a03);
+  a35=(a35+a16);
+  a35=(a35+a68);
+  a35=(a35+a69);
+  a35=(a35+a55);
+  a35=(a35+a21);
+  a35=(a35+a05);
+  a35=(a35+a46);
+  a35=(a35+a44);
+  a35=casadi_fabs(a35);
+  a38=casadi_inf;
+  a35=(a35<a38);
+  a38=(a26&&a35);
+  a38=(a11&&a38);
+  a40=arg[5]? arg[5][8] : 0;
+  a12=(-a40);
+  a12=casadi_fmax(a29,a12);
+  a12=casadi_fmin(a12,a40);
+  a12=(a38?a12:0);
+  if (res[0]!=0) res[0][0]=a12;
+  a12=arg[5]? arg[5][9] : 0;
+  a32=(-a12);
+  a32=casadi_fmax(a36,a32);
+  a32=casadi_fmin(a32,a12);
+  a32=(a38?a32:0);
+  if (res[0]!=0) res[0][1]=a32;
+  a32=arg[5]? arg[5][10] : 0;
+  a34=(-a32);
+  a34=casadi_fmax(a17,a34);
+  a34=casadi_fmin(a34,a32);
+  a34=(a38?a34:0);
+  if (res[0]!=0) res[0][2]=a34;
+  a34=(a11&&a35);
+  a22=(a34?a21:0);
+  a57=(!a34);
+  a45=(a57?a45:0);
+  a22=(a22+a45);
+  if (res[1]!=0) res[1][0]=a22;
+  a22=(a34?a05:0);
+  a53=(a57?a53:0);
+  a22=(a22+a53);
+  if (res[1]!=0) res[1][1]=a22;
+  a22=(a34?a46:0);
+  a43=(a57?a43:0);
+  a22=(a22+a43);
+  if (res[1]!=0) res[1][2]=a22;
+  a34=(a34?a44:0);
+  a57=(a57?a52:0);
+  a34=(a34+a57);
+  if (res[1]!=0) res[1][3]=a34;
+  a34=(a38?a31:0);
+  a57=(!a38);
+  a31=(a57?a31:0);
+  a34=(a34+a31);
+  if (res[1]!=0) res[1][4]=a34;
+  a34=(a38?a37:0);
+  a37=(a57?a37:0);
+  a34=(a34+a37);
+  if (res[1]!=0) res[1][5]=a34;
+  a34=(a38?a00:0);
+  a00=(a57?a00:0);
+  a34=(a34+a00);
+  if (res[1]!=0) res[1][6]=a34;
+  a34=(a38?a27:0);
+  a27=(a57?a27:0);
+  a34=(a34+a27);
+  if (res[1]!=0) res[1][7]=a34;
+  a34=(a38?a28:0);
+  a28=(a57?a28:0);
+  a34=(a34+a28);
+  if (res[1]!=0) res[1][8]=a34;
+  a34=(a38?a07:0);
+  a07=(a57?a07:0);
+  a34=(a34+a07);
+  if (res[1]!=0) res[1][9]=a34;
+  a34=(a38?a67:0);
+  a67=(a57?a67:0);
+  a34=(a34+a67);
+  if (res[1]!=0) res[1][10]=a34;
+  a34=(a38?a33:0);
+  a33=(a57?a33:0);
+  a34=(a34+a33);
+  if (res[1]!=0) res[1][11]=a34;
+  a34=(a38?a18:0);
+  a18=(a57?a18:0);
+  a34=(a34+a18);
+  if (res[1]!=0) res[1][12]=a34;
+  a34=(a38?a08:0);
+  a08=(a57?a08:0);
+  a34=(a34+a08);
+  if (res[1]!=0) res[1][13]=a34;
+  a34=(a38?a65:0);
+  a65=(a57?a65:0);
+  a34=(a34+a65);
+  if (res[1]!=0) res[1][14]=a34;
+  a34=(a38?a66:0);
+  a66=(a57?a66:0);
+  a34=(a34+a66);
+  if (res[1]!=0) res[1][15]=a34;
+  a34=(a38?a60:0);
+  a60=(a57?a60:0);
+  a34=(a34+a60);
+  if (res[1]!=0) res[1][16]=a34;
+  a34=(a38?a03:0);
+  a03=(a57?a03:0);
+  a34=(a34+a03);
+  if (res[1]!=0) res[1][17]=a34;
+  a34=(a38?a16:0);
+  a16=(a57?a16:0);
+  a34=(a34+a16);
+  if (res[1]!=0) res[1][18]=a34;
+  a34=(a38?a68:0);
+  a68=(a57?a68:0);
+  a34=(a34+a68);
+  if (res[1]!=0) res[1][19]=a34;
+  a34=(a38?a69:0);
+  a69=(a57?a69:0);
+  a34=(a34+a69);
+  if (res[1]!=0) res[1][20]=a34;
+  a38=(a38?a55:0);
+  a57=(a57?a55:0);
+  a38=(a38+a57);
+  if (res[1]!=0) res[1][21]=a38;
+  a29=casadi_fabs(a29);
+  a29=(a29-a40);
+  a36=casadi_fabs(a36);
+  a36=(a36-a12);
+  a29=casadi_fmax(a29,a36);
+  a17=casadi_fabs(a17);
+  a17=(a17-a32);
+  a29=casadi_fmax(a29,a17);
+  a23=(a23<a29);
+  a23=(a23?a15:0);
+  a23=(a35?a23:0);
+  a35=(!a35);
+  a15=3.;
+  a35=(a35?a15:0);
+  a23=(a23+a35);
+  a23=(a26?a23:0);
+  a26=(!a26);
+  a26=(a26?a24:0);
+  a23=(a23+a26);
+  a23=(a11?a23:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a23=(a23+a11);
+  if (res[2]!=0) res[2][0]=a23;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a46;
+  if (res[3]!=0) res[3][3]=a44;
+  if (res[3]!=0) res[3][4]=a48;
+  if (res[3]!=0) res[3][5]=a54;
+  if (res[3]!=0) res[3][6]=a42;
+  if (res[3]!=0) res[3][7]=a51;
+  if (res[3]!=0) res[3][8]=a30;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f27(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_ctc_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s9;
+    case 2: return casadi_s8;
+    case 3: return casadi_s10;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_ctc_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[22],status,diag[10]) */
+static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][17] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][6] : 0;
+  a03=(a03/a15);
+  a27=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a27=(a27-a15);
+  a15=casadi_fabs(a27);
+  a16=(a16/a07);
+  a28=(a14*a16);
+  a22=(a22/a07);
+  a07=(a13*a22);
+  a28=(a28-a07);
+  a07=casadi_fabs(a28);
+  a29=(a15+a07);
+  a15=(a15-a07);
+  a15=casadi_fabs(a15);
+  a29=(a29-a15);
+  a15=2.;
+  a29=(a29/a15);
+  a08=(a08/a24);
+  a07=(a10*a08);
+  a12=(a12/a24);
+  a24=(a09*a12);
+  a07=(a07-a24);
+  a24=casadi_fabs(a07);
+  a30=(a29+a24);
+  a29=(a29-a24);
+  a29=casadi_fabs(a29);
+  a30=(a30-a29);
+  a30=(a30/a15);
+  a26=(a26<=a30);
+  a29=arg[5]? arg[5][7] : 0;
+  a24=1.;
+  a31=3.3333333333333331e-01;
+  a32=casadi_sq(a03);
+  a33=casadi_sq(a06);
+  a32=(a32-a33);
+  a33=casadi_sq(a16);
+  a34=casadi_sq(a22);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a33=casadi_sq(a08);
+  a34=casadi_sq(a12);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a32=casadi_sq(a32);
+  a33=(2.*a03);
+  a33=(a33*a06);
+  a34=(2.*a16);
+  a34=(a34*a22);
+  a33=(a33+a34);
+  a34=(2.*a08);
+  a34=(a34*a12);
+  a33=(a33+a34);
+  a33=casadi_sq(a33);
+  a32=(a32+a33);
+  a32=sqrt(a32);
+  a31=(a31*a32);
+  a31=(a24-a31);
+  a32=casadi_fabs(a31);
+  a31=(a31+a32);
+  a04=(a04*a31);
+  a04=sqrt(a04);
+  a29=(a29<=a04);
+  a26=(a26&&a29);
+  a29=arg[5]? arg[5][8] : 0;
+  a31=(a17*a03);
+  a32=(a19*a31);
+  a33=(a00*a06);
+  a34=(a17*a02);
+  a35=(a33*a34);
+  a32=(a32-a35);
+  a31=(a31/a32);
+  a35=(a29*a31);
+  a36=0.;
+  a37=arg[4]? arg[4][0] : 0;
+  a38=arg[5]? arg[5][2] : 0;
+  a39=arg[3]? arg[3][0] : 0;
+  a40=arg[0]? arg[0][2] : 0;
+  a41=arg[5]? arg[5][5] : 0;
+  a42=arg[0]? arg[0][0] : 0;
+  a43=(a21-a42);
+  a44=arg[5]? arg[5][4] : 0;
+  a43=(a43/a44);
+  a43=(a43-a40);
+  a43=(a41*a43);
+  a43=(a40+a43);
+  a39=(a39-a43);
+  a38=(a38*a39);
+  a37=(a37+a38);
+  a38=arg[5]? arg[5][0] : 0;
+  a45=arg[2]? arg[2][0] : 0;
+  a45=(a45-a21);
+  a38=(a38*a45);
+  a37=(a37+a38);
+  a38=(a31*a37);
+  a33=(a33/a32);
+  a46=arg[4]? arg[4][1] : 0;
+  a47=arg[5]? arg[5][3] : 0;
+  a48=arg[3]? arg[3][1] : 0;
+  a49=arg[0]? arg[0][3] : 0;
+  a50=arg[0]? arg[0][1] : 0;
+  a51=(a05-a50);
+  a51=(a51/a44);
+  a51=(a51-a49);
+  a41=(a41*a51);
+  a41=(a49+a41);
+  a48=(a48-a41);
+  a47=(a47*a48);
+  a46=(a46+a47);
+  a47=arg[5]? arg[5][1] : 0;
+  a51=arg[2]? arg[2][1] : 0;
+  a51=(a51-a05);
+  a47=(a47*a51);
+  a46=(a46+a47);
+  a47=(a33*a46);
+  a38=(a38-a47);
+  a47=(a31*a43);
+  a44=(a33*a41);
+  a47=(a47-a44);
+  a44=(a00*a47);
+  a52=(a44*a01);
+  a52=(a52*a47);
+  a19=(a19/a32);
+  a53=(a19*a41);
+  a34=(a34/a32);
+  a32=(a34*a43);
+  a53=(a53-a32);
+  a32=(a00*a53);
+  a54=(a32*a06);
+  a54=(a54*a53);
+  a52=(a52+a54);
+  a54=(a33*a52);
+  a44=(a44*a02);
+  a44=(a44*a47);
+  a32=(a32*a03);
+  a32=(a32*a53);
+  a44=(a44+a32);
+  a32=(a31*a44);
+  a54=(a54-a32);
+  a38=(a38+a54);
+  a54=(a31*a38);
+  a32=arg[0]? arg[0][4] : 0;
+  a54=(a54*a32);
+  a55=(a17*a16);
+  a56=(a20*a55);
+  a57=(a00*a22);
+  a58=(a57*a18);
+  a56=(a56-a58);
+  a55=(a55/a56);
+  a58=(a55*a37);
+  a57=(a57/a56);
+  a59=(a57*a46);
+  a58=(a58-a59);
+  a59=(a55*a43);
+  a60=(a57*a41);
+  a59=(a59-a60);
+  a60=(a00*a59);
+  a61=(a60*a14);
+  a61=(a61*a59);
+  a20=(a20/a56);
+  a62=(a20*a41);
+  a18=(a18/a56);
+  a56=(a18*a43);
+  a62=(a62-a56);
+  a56=(a00*a62);
+  a63=(a56*a22);
+  a63=(a63*a62);
+  a61=(a61+a63);
+  a63=(a57*a61);
+  a60=(a60*a13);
+  a60=(a60*a59);
+  a56=(a56*a16);
+  a56=(a56*a62);
+  a60=(a60+a56);
+  a56=(a55*a60);
+  a63=(a63-a56);
+  a58=(a58+a63);
+  a63=(a55*a58);
+  a56=arg[0]? arg[0][5] : 0;
+  a63=(a63*a56);
+  a54=(a54+a63);
+  a17=(a17*a08);
+  a63=(a25*a17);
+  a64=(a00*a12);
+  a65=(a64*a23);
+  a63=(a63-a65);
+  a17=(a17/a63);
+  a65=(a17*a37);
+  a64=(a64/a63);
+  a66=(a64*a46);
+  a65=(a65-a66);
+  a66=(a17*a43);
+  a67=(a64*a41);
+  a66=(a66-a67);
+  a67=(a00*a66);
+  a68=(a67*a10);
+  a68=(a68*a66);
+  a25=(a25/a63);
+  a69=(a25*a41);
+  a23=(a23/a63);
+  a63=(a23*a43);
+  a69=(a69-a63);
+  a00=(a00*a69);
+  a63=(a00*a12);
+  a63=(a63*a69);
+  a68=(a68+a63);
+  a63=(a64*a68);
+  a67=(a67*a09);
+  a67=(a67*a66);
+  a00=(a00*a08);
+  a00=(a00*a69);
+  a67=(a67+a00);
+  a00=(a17*a67);
+  a63=(a63-a00);
+  a65=(a65+a63);
+  a63=(a17*a65);
+  a00=arg[0]? arg[0][6] : 0;
+  a63=(a63*a00);
+  a54=(a54+a63);
+  a63=(a19*a46);
+  a70=(a34*a37);
+  a63=(a63-a70);
+  a44=(a34*a44);
+  a52=(a19*a52);
+  a44=(a44-a52);
+  a63=(a63+a44);
+  a02=(a02*a03);
+  a01=(a01*a06);
+  a02=(a02+a01);
+  a01=(a63*a02);
+  a53=casadi_sq(a53);
+  a53=(a53*a27);
+  a01=(a01+a53);
+  a53=(a31*a01);
+  a02=(a38*a02);
+  a06=casadi_sq(a47);
+  a27=(a06*a27);
+  a02=(a02-a27);
+  a27=(a34*a02);
+  a53=(a53-a27);
+  a27=arg[0]? arg[0][7] : 0;
+  a53=(a53*a27);
+  a54=(a54+a53);
+  a53=(a20*a46);
+  a03=(a18*a37);
+  a53=(a53-a03);
+  a60=(a18*a60);
+  a61=(a20*a61);
+  a60=(a60-a61);
+  a53=(a53+a60);
+  a13=(a13*a16);
+  a14=(a14*a22);
+  a13=(a13+a14);
+  a14=(a53*a13);
+  a62=casadi_sq(a62);
+  a62=(a62*a28);
+  a14=(a14+a62);
+  a62=(a55*a14);
+  a13=(a58*a13);
+  a22=casadi_sq(a59);
+  a28=(a22*a28);
+  a13=(a13-a28);
+  a28=(a18*a13);
+  a62=(a62-a28);
+  a28=arg[0]? arg[0][8] : 0;
+  a62=(a62*a28);
+  a54=(a54+a62);
+  a46=(a25*a46);
+  a37=(a23*a37);
+  a46=(a46-a37);
+  a67=(a23*a67);
+  a68=(a25*a68);
+  a67=(a67-a68);
+  a46=(a46+a67);
+  a09=(a09*a08);
+  a10=(a10*a12);
+  a09=(a09+a10);
+  a10=(a46*a09);
+  a69=casadi_sq(a69);
+  a69=(a69*a07);
+  a10=(a10+a69);
+  a69=(a17*a10);
+  a09=(a65*a09);
+  a12=casadi_sq(a66);
+  a07=(a12*a07);
+  a09=(a09-a07);
+  a07=(a23*a09);
+  a69=(a69-a07);
+  a07=arg[0]? arg[0][9] : 0;
+  a69=(a69*a07);
+  a54=(a54+a69);
+  a34=(a34*a63);
+  a69=arg[0]? arg[0][10] : 0;
+  a34=(a34*a69);
+  a54=(a54-a34);
+  a18=(a18*a53);
+  a34=arg[0]? arg[0][11] : 0;
+  a18=(a18*a34);
+  a54=(a54-a18);
+  a23=(a23*a46);
+  a18=arg[0]? arg[0][12] : 0;
+  a23=(a23*a18);
+  a54=(a54-a23);
+  a23=(a31*a47);
+  a08=arg[0]? arg[0][13] : 0;
+  a23=(a23*a08);
+  a54=(a54+a23);
+  a23=(a55*a59);
+  a67=arg[0]? arg[0][14] : 0;
+  a23=(a23*a67);
+  a54=(a54+a23);
+  a23=(a17*a66);
+  a68=arg[0]? arg[0][15] : 0;
+  a23=(a23*a68);
+  a54=(a54+a23);
+  a23=(a36<=a47);
+  a37=(a23?a24:0);
+  a23=(!a23);
+  a62=-1.;
+  a23=(a23?a62:0);
+  a37=(a37+a23);
+  a23=(a31*a37);
+  a16=arg[0]? arg[0][16] : 0;
+  a23=(a23*a16);
+  a54=(a54+a23);
+  a23=(a36<=a59);
+  a60=(a23?a24:0);
+  a23=(!a23);
+  a23=(a23?a62:0);
+  a60=(a60+a23);
+  a23=(a55*a60);
+  a61=arg[0]? arg[0][17] : 0;
+  a23=(a23*a61);
+  a54=(a54+a23);
+  a23=(a36<=a66);
+  a03=(a23?a24:0);
+  a23=(!a23);
+  a23=(a23?a62:0);
+  a03=(a03+a23);
+  a23=(a17*a03);
+  a62=arg[0]? arg[0][18] : 0;
+  a23=(a23*a62);
+  a54=(a54+a23);
+  a23=400.;
+  a06=(a23*a06);
+  a06=(a24+a06);
+  a06=(a37/a06);
+  a31=(a31*a06);
+  a44=arg[0]? arg[0][19] : 0;
+  a31=(a31*a44);
+  a54=(a54+a31);
+  a22=(a23*a22);
+  a22=(a24+a22);
+  a22=(a60/a22);
+  a31=(a55*a22);
+  a52=arg[0]? arg[0][20] : 0;
+  a31=(a31*a52);
+  a54=(a54+a31);
+  a23=(a23*a12);
+  a23=(a24+a23);
+  a23=(a03/a23);
+  a12=(a17*a23);
+  a31=arg[0]? arg[0][21] : 0;
+  a12=(a12*a31);
+  a54=(a54+a12);
+  a12=(a29*a33);
+  a70=(a54*a12);
+  a02=(a19*a02);
+  a01=(a33*a01);
+  a02=(a02-a01);
+  a02=(a02*a27);
+  a38=(a33*a38);
+  a38=(a38*a32);
+  a58=(a57*a58);
+  a58=(a58*a56);
+  a38=(a38+a58);
+  a65=(a64*a65);
+  a65=(a65*a00);
+  a38=(a38+a65);
+  a02=(a02-a38);
+  a13=(a20*a13);
+  a14=(a57*a14);
+  a13=(a13-a14);
+  a13=(a13*a28);
+  a02=(a02+a13);
+  a09=(a25*a09);
+  a10=(a64*a10);
+  a09=(a09-a10);
+  a09=(a09*a07);
+  a02=(a02+a09);
+  a19=(a19*a63);
+  a19=(a19*a69);
+  a02=(a02+a19);
+  a20=(a20*a53);
+  a20=(a20*a34);
+  a02=(a02+a20);
+  a25=(a25*a46);
+  a25=(a25*a18);
+  a02=(a02+a25);
+  a47=(a33*a47);
+  a47=(a47*a08);
+  a02=(a02-a47);
+  a59=(a57*a59);
+  a59=(a59*a67);
+  a02=(a02-a59);
+  a66=(a64*a66);
+  a66=(a66*a68);
+  a02=(a02-a66);
+  a37=(a33*a37);
+  a37=(a37*a16);
+  a02=(a02-a37);
+  a60=(a57*a60);
+  a60=(a60*a61);
+  a02=(a02-a60);
+  a03=(a64*a03);
+  a03=(a03*a62);
+  a02=(a02-a03);
+  a33=(a33*a06);
+  a33=(a33*a44);
+  a02=(a02-a33);
+  a22=(a57*a22);
+  a22=(a22*a52);
+  a02=(a02-a22);
+  a23=(a64*a23);
+  a23=(a23*a31);
+  a02=(a02-a23);
+  a23=(a02*a35);
+  a70=(a70+a23);
+  a70=casadi_fabs(a70);
+  a36=(a36<a70);
+  a23=arg[5]? arg[5][9] : 0;
+  a57=(a23*a57);
+  a22=(a35*a57);
+  a55=(a23*a55);
+  a33=(a12*a55);
+  a22=(a22-a33);
+  a22=casadi_fabs(a22);
+  a33=arg[5]? arg[5][10] : 0;
+  a17=(a33*a17);
+  a06=(a17*a57);
+  a64=(a33*a64);
+  a03=(a64*a55);
+  a06=(a06-a03);
+  a06=casadi_fabs(a06);
+  a22=(a22+a06);
+  a06=(a70*a22);
+  a06=(a36?a06:0);
+  a03=(a54*a57);
+  a60=(a02*a55);
+  a03=(a03+a60);
+  a03=casadi_fabs(a03);
+  a60=(a55*a12);
+  a37=(a57*a35);
+  a60=(a60-a37);
+  a60=casadi_fabs(a60);
+  a37=(a17*a12);
+  a66=(a64*a35);
+  a37=(a37-a66);
+  a37=casadi_fabs(a37);
+  a60=(a60+a37);
+  a60=(a36?a60:0);
+  a37=(!a36);
+  a66=(a37?a24:0);
+  a60=(a60+a66);
+  a66=(a03*a60);
+  a06=(a06<a66);
+  a03=(a06?a03:0);
+  a66=(!a06);
+  a70=(a36?a70:0);
+  a70=(a66?a70:0);
+  a03=(a03+a70);
+  a70=(a35*a64);
+  a59=(a12*a17);
+  a70=(a70-a59);
+  a70=casadi_fabs(a70);
+  a59=(a55*a64);
+  a47=(a57*a17);
+  a59=(a59-a47);
+  a59=casadi_fabs(a59);
+  a70=(a70+a59);
+  a59=(a03*a70);
+  a47=(a54*a64);
+  a25=(a02*a17);
+  a47=(a47+a25);
+  a47=casadi_fabs(a47);
+  a22=(a06?a22:0);
+  a60=(a66?a60:0);
+  a22=(a22+a60);
+  a60=(a47*a22);
+  a59=(a59<a60);
+  a60=(a59?a64:0);
+  a25=(!a59);
+  a46=(a06?a57:0);
+  a20=(a36?a12:0);
+  a53=(a37?a12:0);
+  a20=(a20+a53);
+  a20=(a66?a20:0);
+  a46=(a46+a20);
+  a46=(a25?a46:0);
+  a60=(a60+a46);
+  a46=(a54*a60);
+  a20=(a59?a17:0);
+  a06=(a06?a55:0);
+  a36=(a36?a35:0);
+  a37=(a37?a35:0);
+  a36=(a36+a37);
+  a66=(a66?a36:0);
+  a06=(a06+a66);
+  a06=(a25?a06:0);
+  a20=(a20+a06);
+  a06=(a02*a20);
+  a46=(a46+a06);
+  a46=casadi_sign(a46);
+  a06=(a60*a46);
+  a66=(a35*a06);
+  a46=(a20*a46);
+  a36=(a12*a46);
+  a66=(a66-a36);
+  a36=casadi_sq(a66);
+  a37=9.9999999999999992e-25;
+  a53=casadi_sq(a35);
+  a19=casadi_sq(a12);
+  a53=(a53+a19);
+  a53=(a37*a53);
+  a19=casadi_sq(a60);
+  a63=casadi_sq(a20);
+  a19=(a19+a63);
+  a53=(a53*a19);
+  a36=(a36<=a53);
+  a53=(a35*a20);
+  a63=(a12*a60);
+  a53=(a53+a63);
+  a63=casadi_sign(a53);
+  a09=(!a36);
+  a47=(a59?a47:0);
+  a03=(a25?a03:0);
+  a47=(a47+a03);
+  a59=(a59?a70:0);
+  a25=(a25?a22:0);
+  a59=(a59+a25);
+  a47=(a47/a59);
+  a66=casadi_sign(a66);
+  a66=(a47*a66);
+  a35=(a66*a35);
+  a35=(a09?a35:0);
+  a59=(a55*a06);
+  a25=(a57*a46);
+  a59=(a59-a25);
+  a25=casadi_sq(a59);
+  a22=casadi_sq(a55);
+  a70=casadi_sq(a57);
+  a22=(a22+a70);
+  a22=(a37*a22);
+  a22=(a22*a19);
+  a25=(a25<=a22);
+  a22=(!a25);
+  a59=casadi_sign(a59);
+  a59=(a47*a59);
+  a70=(a59*a55);
+  a70=(a22?a70:0);
+  a35=(a35+a70);
+  a06=(a17*a06);
+  a46=(a64*a46);
+  a06=(a06-a46);
+  a46=casadi_sq(a06);
+  a70=casadi_sq(a17);
+  a03=casadi_sq(a64);
+  a70=(a70+a03);
+  a37=(a37*a70);
+  a37=(a37*a19);
+  a46=(a46<=a37);
+  a37=(!a46);
+  a06=casadi_sign(a06);
+  a06=(a47*a06);
+  a19=(a06*a17);
+  a19=(a37?a19:0);
+  a35=(a35+a19);
+  a54=(a54-a35);
+  a54=(a54*a20);
+  a12=(a66*a12);
+  a12=(-a12);
+  a12=(a09?a12:0);
+  a35=(a59*a57);
+  a35=(-a35);
+  a35=(a22?a35:0);
+  a12=(a12+a35);
+  a35=(a06*a64);
+  a35=(-a35);
+  a35=(a37?a35:0);
+  a12=(a12+a35);
+  a02=(a02-a12);
+  a02=(a02*a60);
+  a54=(a54-a02);
+  a53=casadi_fabs(a53);
+  a53=(a36?a53:0);
+  a55=(a55*a20);
+  a57=(a57*a60);
+  a55=(a55+a57);
+  a57=casadi_fabs(a55);
+  a57=(a25?a57:0);
+  a53=(a53+a57);
+  a17=(a17*a20);
+  a64=(a64*a60);
+  a17=(a17+a64);
+  a64=casadi_fabs(a17);
+  a64=(a46?a64:0);
+  a53=(a53+a64);
+  a54=(a54/a53);
+  a63=(a63*a54);
+  a36=(a36?a63:0);
+  a66=(a09?a66:0);
+  a09=(a09?a66:0);
+  a36=(a36+a09);
+  a36=(a29*a36);
+  a55=casadi_sign(a55);
+  a55=(a55*a54);
+  a25=(a25?a55:0);
+  a59=(a22?a59:0);
+  a22=(a22?a59:0);
+  a25=(a25+a22);
+  a25=(a23*a25);
+  a22=(a36+a25);
+  a17=casadi_sign(a17);
+  a17=(a17*a54);
+  a46=(a46?a17:0);
+  a06=(a37?a06:0);
+  a37=(a37?a06:0);
+  a46=(a46+a37);
+  a46=(a33*a46);
+  a22=(a22+a46);
+  a22=(a22+a32);
+  a22=(a22+a56);
+  a22=(a22+a00);
+  a22=(a22+a27);
+  a22=(a22+a28);
+  a22=(a22+a07);
+  a22=(a22+a69);
+  a22=(a22+a34);
+  a22=(a22+a18);
+  a22=(a22+a08);
+  a22=(a22+a67);
+  a22=(a22+a68);
+  a22=(a22+a16);
+  a22=(a22+a61);
+  a22=(a22+a62);
+  a22=(a22+a44);
+  a22=(a22+a52);
+  a22=(a22+a31);
+  a22=(a22+a21);
+  a22=(a22+a05);
+  a22=(a22+a43);
+  a22=(a22+a41);
+  a22=casadi_fabs(a22);
+  a37=casadi_inf;
+  a22=(a22<a37);
+  a37=(a26&&a22);
+  a37=(a11&&a37);
+  a06=(-a29);
+  a36=casadi_fmax(a36,a06);
+  a36=casadi_fmin(a36,a29);
+  a36=(a37?a36:0);
+  if (res[0]!=0) res[0][0]=a36;
+  a36=(-a23);
+  a25=casadi_fmax(a25,a36);
+  a25=casadi_fmin(a25,a23);
+  a25=(a37?a25:0);
+  if (res[0]!=0) res[0][1]=a25;
+  a25=(-a33);
+  a46=casadi_fmax(a46,a25);
+  a46=casadi_fmin(a46,a33);
+  a46=(a37?a46:0);
+  if (res[0]!=0) res[0][2]=a46;
+  a46=(a11&&a22);
+  a33=(a46?a21:0);
+  a25=(!a46);
+  a42=(a25?a42:0);
+  a33=(a33+a42);
+  if (res[1]!=0) res[1][0]=a33;
+  a33=(a46?a05:0);
+  a50=(a25?a50:0);
+  a33=(a33+a50);
+  if (res[1]!=0) res[1][1]=a33;
+  a33=(a46?a43:0);
+  a40=(a25?a40:0);
+  a33=(a33+a40);
+  if (res[1]!=0) res[1][2]=a33;
+  a46=(a46?a41:0);
+  a25=(a25?a49:0);
+  a46=(a46+a25);
+  if (res[1]!=0) res[1][3]=a46;
+  a46=(a37?a32:0);
+  a25=(!a37);
+  a32=(a25?a32:0);
+  a46=(a46+a32);
+  if (res[1]!=0) res[1][4]=a46;
+  a46=(a37?a56:0);
+  a56=(a25?a56:0);
+  a46=(a46+a56);
+  if (res[1]!=0) res[1][5]=a46;
+  a46=(a37?a00:0);
+  a00=(a25?a00:0);
+  a46=(a46+a00);
+  if (res[1]!=0) res[1][6]=a46;
+  a46=(a37?a27:0);
+  a27=(a25?a27:0);
+  a46=(a46+a27);
+  if (res[1]!=0) res[1][7]=a46;
+  a46=(a37?a28:0);
+  a28=(a25?a28:0);
+  a46=(a46+a28);
+  if (res[1]!=0) res[1][8]=a46;
+  a46=(a37?a07:0);
+  a07=(a25?a07:0);
+  a46=(a46+a07);
+  if (res[1]!=0) res[1][9]=a46;
+  a46=(a37?a69:0);
+  a69=(a25?a69:0);
+  a46=(a46+a69);
+  if (res[1]!=0) res[1][10]=a46;
+  a46=(a37?a34:0);
+  a34=(a25?a34:0);
+  a46=(a46+a34);
+  if (res[1]!=0) res[1][11]=a46;
+  a46=(a37?a18:0);
+  a18=(a25?a18:0);
+  a46=(a46+a18);
+  if (res[1]!=0) res[1][12]=a46;
+  a46=(a37?a08:0);
+  a08=(a25?a08:0);
+  a46=(a46+a08);
+  if (res[1]!=0) res[1][13]=a46;
+  a46=(a37?a67:0);
+  a67=(a25?a67:0);
+  a46=(a46+a67);
+  if (res[1]!=0) res[1][14]=a46;
+  a46=(a37?a68:0);
+  a68=(a25?a68:0);
+  a46=(a46+a68);
+  if (res[1]!=0) res[1][15]=a46;
+  a46=(a37?a16:0);
+  a16=(a25?a16:0);
+  a46=(a46+a16);
+  if (res[1]!=0) res[1][16]=a46;
+  a46=(a37?a61:0);
+  a61=(a25?a61:0);
+  a46=(a46+a61);
+  if (res[1]!=0) res[1][17]=a46;
+  a46=(a37?a62:0);
+  a62=(a25?a62:0);
+  a46=(a46+a62);
+  if (res[1]!=0) res[1][18]=a46;
+  a46=(a37?a44:0);
+  a44=(a25?a44:0);
+  a46=(a46+a44);
+  if (res[1]!=0) res[1][19]=a46;
+  a46=(a37?a52:0);
+  a52=(a25?a52:0);
+  a46=(a46+a52);
+  if (res[1]!=0) res[1][20]=a46;
+  a37=(a37?a31:0);
+  a25=(a25?a31:0);
+  a37=(a37+a25);
+  if (res[1]!=0) res[1][21]=a37;
+  a47=(a24<a47);
+  a47=(a47?a15:0);
+  a47=(a22?a47:0);
+  a22=(!a22);
+  a15=3.;
+  a22=(a22?a15:0);
+  a47=(a47+a22);
+  a47=(a26?a47:0);
+  a26=(!a26);
+  a26=(a26?a24:0);
+  a47=(a47+a26);
+  a47=(a11?a47:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a47=(a47+a11);
+  if (res[2]!=0) res[2][0]=a47;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a43;
+  if (res[3]!=0) res[3][3]=a41;
+  if (res[3]!=0) res[3][4]=a45;
+  if (res[3]!=0) res[3][5]=a51;
+  if (res[3]!=0) res[3][6]=a39;
+  if (res[3]!=0) res[3][7]=a48;
+  if (res[3]!=0) res[3][8]=a30;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f28(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_ctc_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s9;
+    case 2: return casadi_s8;
+    case 3: return casadi_s10;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_ctc_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[22],status,diag[10]) */
+static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][17] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][6] : 0;
+  a03=(a03/a15);
+  a27=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a27=(a27-a15);
+  a15=casadi_fabs(a27);
+  a16=(a16/a07);
+  a28=(a14*a16);
+  a22=(a22/a07);
+  a07=(a13*a22);
+  a28=(a28-a07);
+  a07=casadi_fabs(a28);
+  a29=(a15+a07);
+  a15=(a15-a07);
+  a15=casadi_fabs(a15);
+  a29=(a29-a15);
+  a15=2.;
+  a29=(a29/a15);
+  a08=(a08/a24);
+  a07=(a10*a08);
+  a12=(a12/a24);
+  a24=(a09*a12);
+  a07=(a07-a24);
+  a24=casadi_fabs(a07);
+  a30=(a29+a24);
+  a29=(a29-a24);
+  a29=casadi_fabs(a29);
+  a30=(a30-a29);
+  a30=(a30/a15);
+  a26=(a26<=a30);
+  a29=arg[5]? arg[5][7] : 0;
+  a24=1.;
+  a31=3.3333333333333331e-01;
+  a32=casadi_sq(a03);
+  a33=casadi_sq(a06);
+  a32=(a32-a33);
+  a33=casadi_sq(a16);
+  a34=casadi_sq(a22);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a33=casadi_sq(a08);
+  a34=casadi_sq(a12);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a32=casadi_sq(a32);
+  a33=(2.*a03);
+  a33=(a33*a06);
+  a34=(2.*a16);
+  a34=(a34*a22);
+  a33=(a33+a34);
+  a34=(2.*a08);
+  a34=(a34*a12);
+  a33=(a33+a34);
+  a33=casadi_sq(a33);
+  a32=(a32+a33);
+  a32=sqrt(a32);
+  a31=(a31*a32);
+  a31=(a24-a31);
+  a32=casadi_fabs(a31);
+  a31=(a31+a32);
+  a04=(a04*a31);
+  a04=sqrt(a04);
+  a29=(a29<=a04);
+  a26=(a26&&a29);
+  a29=(a17*a03);
+  a31=(a19*a29);
+  a32=(a00*a06);
+  a33=(a17*a02);
+  a34=(a32*a33);
+  a31=(a31-a34);
+  a29=(a29/a31);
+  a34=(a17*a16);
+  a35=(a20*a34);
+  a36=(a00*a22);
+  a37=(a36*a18);
+  a35=(a35-a37);
+  a34=(a34/a35);
+  a17=(a17*a08);
+  a37=(a25*a17);
+  a38=(a00*a12);
+  a39=(a38*a23);
+  a37=(a37-a39);
+  a17=(a17/a37);
+  a32=(a32/a31);
+  a39=(-a32);
+  a36=(a36/a35);
+  a40=(-a36);
+  a38=(a38/a37);
+  a41=(-a38);
+  a42=arg[4]? arg[4][0] : 0;
+  a43=arg[5]? arg[5][2] : 0;
+  a44=arg[3]? arg[3][0] : 0;
+  a45=arg[0]? arg[0][2] : 0;
+  a46=arg[5]? arg[5][5] : 0;
+  a47=arg[0]? arg[0][0] : 0;
+  a48=(a21-a47);
+  a49=arg[5]? arg[5][4] : 0;
+  a48=(a48/a49);
+  a48=(a48-a45);
+  a48=(a46*a48);
+  a48=(a45+a48);
+  a44=(a44-a48);
+  a43=(a43*a44);
+  a42=(a42+a43);
+  a43=arg[5]? arg[5][0] : 0;
+  a50=arg[2]? arg[2][0] : 0;
+  a50=(a50-a21);
+  a43=(a43*a50);
+  a42=(a42+a43);
+  a43=(a29*a42);
+  a51=arg[4]? arg[4][1] : 0;
+  a52=arg[5]? arg[5][3] : 0;
+  a53=arg[3]? arg[3][1] : 0;
+  a54=arg[0]? arg[0][3] : 0;
+  a55=arg[0]? arg[0][1] : 0;
+  a56=(a05-a55);
+  a56=(a56/a49);
+  a56=(a56-a54);
+  a46=(a46*a56);
+  a46=(a54+a46);
+  a53=(a53-a46);
+  a52=(a52*a53);
+  a51=(a51+a52);
+  a52=arg[5]? arg[5][1] : 0;
+  a56=arg[2]? arg[2][1] : 0;
+  a56=(a56-a05);
+  a52=(a52*a56);
+  a51=(a51+a52);
+  a52=(a32*a51);
+  a43=(a43-a52);
+  a52=(a29*a48);
+  a49=(a32*a46);
+  a52=(a52-a49);
+  a49=(a00*a52);
+  a57=(a49*a01);
+  a57=(a57*a52);
+  a19=(a19/a31);
+  a58=(a19*a46);
+  a33=(a33/a31);
+  a31=(a33*a48);
+  a58=(a58-a31);
+  a31=(a00*a58);
+  a59=(a31*a06);
+  a59=(a59*a58);
+  a57=(a57+a59);
+  a59=(a32*a57);
+  a49=(a49*a02);
+  a49=(a49*a52);
+  a31=(a31*a03);
+  a31=(a31*a58);
+  a49=(a49+a31);
+  a31=(a29*a49);
+  a59=(a59-a31);
+  a43=(a43+a59);
+  a59=(a29*a43);
+  a31=arg[0]? arg[0][4] : 0;
+  a59=(a59*a31);
+  a60=(a34*a42);
+  a61=(a36*a51);
+  a60=(a60-a61);
+  a61=(a34*a48);
+  a62=(a36*a46);
+  a61=(a61-a62);
+  a62=(a00*a61);
+  a63=(a62*a14);
+  a63=(a63*a61);
+  a20=(a20/a35);
+  a64=(a20*a46);
+  a18=(a18/a35);
+  a35=(a18*a48);
+  a64=(a64-a35);
+  a35=(a00*a64);
+  a65=(a35*a22);
+  a65=(a65*a64);
+  a63=(a63+a65);
+  a65=(a36*a63);
+  a62=(a62*a13);
+  a62=(a62*a61);
+  a35=(a35*a16);
+  a35=(a35*a64);
+  a62=(a62+a35);
+  a35=(a34*a62);
+  a65=(a65-a35);
+  a60=(a60+a65);
+  a65=(a34*a60);
+  a35=arg[0]? arg[0][5] : 0;
+  a65=(a65*a35);
+  a59=(a59+a65);
+  a65=(a17*a42);
+  a66=(a38*a51);
+  a65=(a65-a66);
+  a66=(a17*a48);
+  a67=(a38*a46);
+  a66=(a66-a67);
+  a67=(a00*a66);
+  a68=(a67*a10);
+  a68=(a68*a66);
+  a25=(a25/a37);
+  a69=(a25*a46);
+  a23=(a23/a37);
+  a37=(a23*a48);
+  a69=(a69-a37);
+  a37=(a00*a69);
+  a70=(a37*a12);
+  a70=(a70*a69);
+  a68=(a68+a70);
+  a70=(a38*a68);
+  a67=(a67*a09);
+  a67=(a67*a66);
+  a37=(a37*a08);
+  a37=(a37*a69);
+  a67=(a67+a37);
+  a37=(a17*a67);
+  a70=(a70-a37);
+  a65=(a65+a70);
+  a70=(a17*a65);
+  a37=arg[0]? arg[0][6] : 0;
+  a70=(a70*a37);
+  a59=(a59+a70);
+  a70=(a19*a51);
+  a71=(a33*a42);
+  a70=(a70-a71);
+  a49=(a33*a49);
+  a57=(a19*a57);
+  a49=(a49-a57);
+  a70=(a70+a49);
+  a02=(a02*a03);
+  a01=(a01*a06);
+  a02=(a02+a01);
+  a01=(a70*a02);
+  a58=casadi_sq(a58);
+  a58=(a58*a27);
+  a01=(a01+a58);
+  a58=(a29*a01);
+  a02=(a43*a02);
+  a06=casadi_sq(a52);
+  a27=(a06*a27);
+  a02=(a02-a27);
+  a27=(a33*a02);
+  a58=(a58-a27);
+  a27=arg[0]? arg[0][7] : 0;
+  a58=(a58*a27);
+  a59=(a59+a58);
+  a58=(a20*a51);
+  a03=(a18*a42);
+  a58=(a58-a03);
+  a62=(a18*a62);
+  a63=(a20*a63);
+  a62=(a62-a63);
+  a58=(a58+a62);
+  a13=(a13*a16);
+  a14=(a14*a22);
+  a13=(a13+a14);
+  a14=(a58*a13);
+  a64=casadi_sq(a64);
+  a64=(a64*a28);
+  a14=(a14+a64);
+  a64=(a34*a14);
+  a13=(a60*a13);
+  a22=casadi_sq(a61);
+  a28=(a22*a28);
+  a13=(a13-a28);
+  a28=(a18*a13);
+  a64=(a64-a28);
+  a28=arg[0]? arg[0][8] : 0;
+  a64=(a64*a28);
+  a59=(a59+a64);
+  a51=(a25*a51);
+  a42=(a23*a42);
+  a51=(a51-a42);
+  a67=(a23*a67);
+  a68=(a25*a68);
+  a67=(a67-a68);
+  a51=(a51+a67);
+  a09=(a09*a08);
+  a10=(a10*a12);
+  a09=(a09+a10);
+  a10=(a51*a09);
+  a69=casadi_sq(a69);
+  a69=(a69*a07);
+  a10=(a10+a69);
+  a69=(a17*a10);
+  a09=(a65*a09);
+  a12=casadi_sq(a66);
+  a07=(a12*a07);
+  a09=(a09-a07);
+  a07=(a23*a09);
+  a69=(a69-a07);
+  a07=arg[0]? arg[0][9] : 0;
+  a69=(a69*a07);
+  a59=(a59+a69);
+  a33=(a33*a70);
+  a69=arg[0]? arg[0][10] : 0;
+  a33=(a33*a69);
+  a59=(a59-a33);
+  a18=(a18*a58);
+  a33=arg[0]? arg[0][11] : 0;
+  a18=(a18*a33);
+  a59=(a59-a18);
+  a23=(a23*a51);
+  a18=arg[0]? arg[0][12] : 0;
+  a23=(a23*a18);
+  a59=(a59-a23);
+  a23=(a29*a52);
+  a08=arg[0]? arg[0][13] : 0;
+  a23=(a23*a08);
+  a59=(a59+a23);
+  a23=(a34*a61);
+  a67=arg[0]? arg[0][14] : 0;
+  a23=(a23*a67);
+  a59=(a59+a23);
+  a23=(a17*a66);
+  a68=arg[0]? arg[0][15] : 0;
+  a23=(a23*a68);
+  a59=(a59+a23);
+  a23=0.;
+  a42=(a23<=a52);
+  a64=(a42?a24:0);
+  a42=(!a42);
+  a16=-1.;
+  a42=(a42?a16:0);
+  a64=(a64+a42);
+  a42=(a29*a64);
+  a62=arg[0]? arg[0][16] : 0;
+  a42=(a42*a62);
+  a59=(a59+a42);
+  a42=(a23<=a61);
+  a63=(a42?a24:0);
+  a42=(!a42);
+  a42=(a42?a16:0);
+  a63=(a63+a42);
+  a42=(a34*a63);
+  a03=arg[0]? arg[0][17] : 0;
+  a42=(a42*a03);
+  a59=(a59+a42);
+  a23=(a23<=a66);
+  a42=(a23?a24:0);
+  a23=(!a23);
+  a23=(a23?a16:0);
+  a42=(a42+a23);
+  a23=(a17*a42);
+  a16=arg[0]? arg[0][18] : 0;
+  a23=(a23*a16);
+  a59=(a59+a23);
+  a23=400.;
+  a06=(a23*a06);
+  a06=(a24+a06);
+  a06=(a64/a06);
+  a49=(a29*a06);
+  a57=arg[0]? arg[0][19] : 0;
+  a49=(a49*a57);
+  a59=(a59+a49);
+  a22=(a23*a22);
+  a22=(a24+a22);
+  a22=(a63/a22);
+  a49=(a34*a22);
+  a71=arg[0]? arg[0][20] : 0;
+  a49=(a49*a71);
+  a59=(a59+a49);
+  a23=(a23*a12);
+  a23=(a24+a23);
+  a23=(a42/a23);
+  a12=(a17*a23);
+  a49=arg[0]? arg[0][21] : 0;
+  a12=(a12*a49);
+  a59=(a59+a12);
+  a02=(a19*a02);
+  a01=(a32*a01);
+  a02=(a02-a01);
+  a02=(a02*a27);
+  a43=(a32*a43);
+  a43=(a43*a31);
+  a60=(a36*a60);
+  a60=(a60*a35);
+  a43=(a43+a60);
+  a65=(a38*a65);
+  a65=(a65*a37);
+  a43=(a43+a65);
+  a02=(a02-a43);
+  a13=(a20*a13);
+  a14=(a36*a14);
+  a13=(a13-a14);
+  a13=(a13*a28);
+  a02=(a02+a13);
+  a09=(a25*a09);
+  a10=(a38*a10);
+  a09=(a09-a10);
+  a09=(a09*a07);
+  a02=(a02+a09);
+  a19=(a19*a70);
+  a19=(a19*a69);
+  a02=(a02+a19);
+  a20=(a20*a58);
+  a20=(a20*a33);
+  a02=(a02+a20);
+  a25=(a25*a51);
+  a25=(a25*a18);
+  a02=(a02+a25);
+  a52=(a32*a52);
+  a52=(a52*a08);
+  a02=(a02-a52);
+  a61=(a36*a61);
+  a61=(a61*a67);
+  a02=(a02-a61);
+  a66=(a38*a66);
+  a66=(a66*a68);
+  a02=(a02-a66);
+  a64=(a32*a64);
+  a64=(a64*a62);
+  a02=(a02-a64);
+  a63=(a36*a63);
+  a63=(a63*a03);
+  a02=(a02-a63);
+  a42=(a38*a42);
+  a42=(a42*a16);
+  a02=(a02-a42);
+  a32=(a32*a06);
+  a32=(a32*a57);
+  a02=(a02-a32);
+  a36=(a36*a22);
+  a36=(a36*a71);
+  a02=(a02-a36);
+  a38=(a38*a23);
+  a38=(a38*a49);
+  a02=(a02-a38);
+  a38=arg[5]? arg[5][8] : 0;
+  a23=arg[5]? arg[5][9] : 0;
+  a36=arg[5]? arg[5][10] : 0;
+  arg[6]=w+0;
+  arg[7]=w+6;
+  arg[8] = arg[5]? arg[5] + 8 : 0;
+  arg[9] = arg[5]? arg[5] + 11 : 0;
+  arg[10] = arg[5]? arg[5] + 14 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a29;
+  w[1] = a34;
+  w[2] = a17;
+  w[3] = a39;
+  w[4] = a40;
+  w[5] = a41;
+  w[6] = a59;
+  w[7] = a02;
+  if (casadi_f16(arg+6, res+4, iw, w+21, 0)) return 1;
+  a29 = w[17];
+  a34 = w[18];
+  a17 = w[19];
+  a39 = w[20];
+  a40=(a29+a34);
+  a40=(a40+a17);
+  a40=(a40+a31);
+  a40=(a40+a35);
+  a40=(a40+a37);
+  a40=(a40+a27);
+  a40=(a40+a28);
+  a40=(a40+a07);
+  a40=(a40+a69);
+  a40=(a40+a33);
+  a40=(a40+a18);
+  a40=(a40+a08);
+  a40=(a40+a67);
+  a40=(a40+a68);
+  a40=(a40+a62);
+  a40=(a40+a03);
+  a40=(a40+a16);
+  a40=(a40+a57);
+  a40=(a40+a71);
+  a40=(a40+a49);
+  a40=(a40+a21);
+  a40=(a40+a05);
+  a40=(a40+a48);
+  a40=(a40+a46);
+  a40=casadi_fabs(a40);
+  a41=casadi_inf;
+  a40=(a40<a41);
+  a41=(a26&&a40);
+  a41=(a11&&a41);
+  a59=(-a38);
+  a29=casadi_fmax(a29,a59);
+  a29=casadi_fmin(a29,a38);
+  a29=(a41?a29:0);
+  if (res[0]!=0) res[0][0]=a29;
+  a29=(-a23);
+  a34=casadi_fmax(a34,a29);
+  a34=casadi_fmin(a34,a23);
+  a34=(a41?a34:0);
+  if (res[0]!=0) res[0][1]=a34;
+  a34=(-a36);
+  a17=casadi_fmax(a17,a34);
+  a17=casadi_fmin(a17,a36);
+  a17=(a41?a17:0);
+  if (res[0]!=0) res[0][2]=a17;
+  a17=(a11&&a40);
+  a36=(a17?a21:0);
+  a34=(!a17);
+  a47=(a34?a47:0);
+  a36=(a36+a47);
+  if (res[1]!=0) res[1][0]=a36;
+  a36=(a17?a05:0);
+  a55=(a34?a55:0);
+  a36=(a36+a55);
+  if (res[1]!=0) res[1][1]=a36;
+  a36=(a17?a48:0);
+  a45=(a34?a45:0);
+  a36=(a36+a45);
+  if (res[1]!=0) res[1][2]=a36;
+  a17=(a17?a46:0);
+  a34=(a34?a54:0);
+  a17=(a17+a34);
+  if (res[1]!=0) res[1][3]=a17;
+  a17=(a41?a31:0);
+  a34=(!a41);
+  a31=(a34?a31:0);
+  a17=(a17+a31);
+  if (res[1]!=0) res[1][4]=a17;
+  a17=(a41?a35:0);
+  a35=(a34?a35:0);
+  a17=(a17+a35);
+  if (res[1]!=0) res[1][5]=a17;
+  a17=(a41?a37:0);
+  a37=(a34?a37:0);
+  a17=(a17+a37);
+  if (res[1]!=0) res[1][6]=a17;
+  a17=(a41?a27:0);
+  a27=(a34?a27:0);
+  a17=(a17+a27);
+  if (res[1]!=0) res[1][7]=a17;
+  a17=(a41?a28:0);
+  a28=(a34?a28:0);
+  a17=(a17+a28);
+  if (res[1]!=0) res[1][8]=a17;
+  a17=(a41?a07:0);
+  a07=(a34?a07:0);
+  a17=(a17+a07);
+  if (res[1]!=0) res[1][9]=a17;
+  a17=(a41?a69:0);
+  a69=(a34?a69:0);
+  a17=(a17+a69);
+  if (res[1]!=0) res[1][10]=a17;
+  a17=(a41?a33:0);
+  a33=(a34?a33:0);
+  a17=(a17+a33);
+  if (res[1]!=0) res[1][11]=a17;
+  a17=(a41?a18:0);
+  a18=(a34?a18:0);
+  a17=(a17+a18);
+  if (res[1]!=0) res[1][12]=a17;
+  a17=(a41?a08:0);
+  a08=(a34?a08:0);
+  a17=(a17+a08);
+  if (res[1]!=0) res[1][13]=a17;
+  a17=(a41?a67:0);
+  a67=(a34?a67:0);
+  a17=(a17+a67);
+  if (res[1]!=0) res[1][14]=a17;
+  a17=(a41?a68:0);
+  a68=(a34?a68:0);
+  a17=(a17+a68);
+  if (res[1]!=0) res[1][15]=a17;
+  a17=(a41?a62:0);
+  a62=(a34?a62:0);
+  a17=(a17+a62);
+  if (res[1]!=0) res[1][16]=a17;
+  a17=(a41?a03:0);
+  a03=(a34?a03:0);
+  a17=(a17+a03);
+  if (res[1]!=0) res[1][17]=a17;
+  a17=(a41?a16:0);
+  a16=(a34?a16:0);
+  a17=(a17+a16);
+  if (res[1]!=0) res[1][18]=a17;
+  a17=(a41?a57:0);
+  a57=(a34?a57:0);
+  a17=(a17+a57);
+  if (res[1]!=0) res[1][19]=a17;
+  a17=(a41?a71:0);
+  a71=(a34?a71:0);
+  a17=(a17+a71);
+  if (res[1]!=0) res[1][20]=a17;
+  a41=(a41?a49:0);
+  a34=(a34?a49:0);
+  a41=(a41+a34);
+  if (res[1]!=0) res[1][21]=a41;
+  a41=(a39==a15);
+  a15=(a41?a15:0);
+  a41=(!a41);
+  a39=(a39==a24);
+  a34=4.;
+  a39=(a39?a34:0);
+  a41=(a41?a39:0);
+  a15=(a15+a41);
+  a15=(a40?a15:0);
+  a40=(!a40);
+  a41=3.;
+  a40=(a40?a41:0);
+  a15=(a15+a40);
+  a15=(a26?a15:0);
+  a26=(!a26);
+  a26=(a26?a24:0);
+  a15=(a15+a26);
+  a15=(a11?a15:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a15=(a15+a11);
+  if (res[2]!=0) res[2][0]=a15;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a48;
+  if (res[3]!=0) res[3][3]=a46;
+  if (res[3]!=0) res[3][4]=a50;
+  if (res[3]!=0) res[3][5]=a56;
+  if (res[3]!=0) res[3][6]=a44;
+  if (res[3]!=0) res[3][7]=a53;
+  if (res[3]!=0) res[3][8]=a30;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f29(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_ctc_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s9;
+    case 2: return casadi_s8;
+    case 3: return casadi_s10;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_lqr_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[22],status,diag[10]) */
+static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a03=(a03/a15);
+  a01=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a01=(a01-a15);
+  a01=casadi_fabs(a01);
+  a16=(a16/a07);
+  a14=(a14*a16);
+  a22=(a22/a07);
+  a13=(a13*a22);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a01+a14);
+  a01=(a01-a14);
+  a01=casadi_fabs(a01);
+  a13=(a13-a01);
+  a01=2.;
+  a13=(a13/a01);
+  a08=(a08/a24);
+  a10=(a10*a08);
+  a12=(a12/a24);
+  a09=(a09*a12);
+  a10=(a10-a09);
+  a10=casadi_fabs(a10);
+  a09=(a13+a10);
+  a13=(a13-a10);
+  a13=casadi_fabs(a13);
+  a09=(a09-a13);
+  a09=(a09/a01);
+  a26=(a26<=a09);
+  a13=arg[5]? arg[5][3] : 0;
+  a10=1.;
+  a24=3.3333333333333331e-01;
+  a14=casadi_sq(a03);
+  a07=casadi_sq(a06);
+  a14=(a14-a07);
+  a07=casadi_sq(a16);
+  a15=casadi_sq(a22);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a07=casadi_sq(a08);
+  a15=casadi_sq(a12);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a14=casadi_sq(a14);
+  a07=(2.*a03);
+  a07=(a07*a06);
+  a15=(2.*a16);
+  a15=(a15*a22);
+  a07=(a07+a15);
+  a15=(2.*a08);
+  a15=(a15*a12);
+  a07=(a07+a15);
+  a07=casadi_sq(a07);
+  a14=(a14+a07);
+  a14=sqrt(a14);
+  a24=(a24*a14);
+  a24=(a10-a24);
+  a14=casadi_fabs(a24);
+  a24=(a24+a14);
+  a04=(a04*a24);
+  a04=sqrt(a04);
+  a13=(a13<=a04);
+  a26=(a26&&a13);
+  a03=(a17*a03);
+  a19=(a19*a03);
+  a06=(a00*a06);
+  a02=(a17*a02);
+  a02=(a06*a02);
+  a19=(a19-a02);
+  a03=(a03/a19);
+  a06=(a06/a19);
+  a19=casadi_sq(a06);
+  a22=(a00*a22);
+  a16=(a17*a16);
+  a20=(a20*a16);
+  a18=(a22*a18);
+  a20=(a20-a18);
+  a22=(a22/a20);
+  a18=casadi_sq(a22);
+  a19=(a19+a18);
+  a00=(a00*a12);
+  a17=(a17*a08);
+  a25=(a25*a17);
+  a23=(a00*a23);
+  a25=(a25-a23);
+  a00=(a00/a25);
+  a23=casadi_sq(a00);
+  a19=(a19+a23);
+  a23=arg[7]? arg[7][0] : 0;
+  a08=arg[6]? arg[6][0] : 0;
+  a12=arg[2]? arg[2][0] : 0;
+  a18=(a21-a12);
+  a08=(a08*a18);
+  a02=arg[6]? arg[6][1] : 0;
+  a13=arg[2]? arg[2][1] : 0;
+  a24=(a05-a13);
+  a02=(a02*a24);
+  a08=(a08+a02);
+  a02=arg[6]? arg[6][2] : 0;
+  a14=arg[0]? arg[0][2] : 0;
+  a07=arg[5]? arg[5][1] : 0;
+  a15=arg[0]? arg[0][0] : 0;
+  a27=(a21-a15);
+  a28=arg[5]? arg[5][0] : 0;
+  a27=(a27/a28);
+  a27=(a27-a14);
+  a27=(a07*a27);
+  a27=(a14+a27);
+  a29=arg[3]? arg[3][0] : 0;
+  a30=(a27-a29);
+  a02=(a02*a30);
+  a08=(a08+a02);
+  a02=arg[6]? arg[6][3] : 0;
+  a31=arg[0]? arg[0][3] : 0;
+  a32=arg[0]? arg[0][1] : 0;
+  a33=(a05-a32);
+  a33=(a33/a28);
+  a33=(a33-a31);
+  a07=(a07*a33);
+  a07=(a31+a07);
+  a33=arg[3]? arg[3][1] : 0;
+  a28=(a07-a33);
+  a02=(a02*a28);
+  a08=(a08+a02);
+  a23=(a23-a08);
+  a08=(a03*a23);
+  a16=(a16/a20);
+  a20=arg[7]? arg[7][1] : 0;
+  a02=arg[6]? arg[6][4] : 0;
+  a02=(a02*a18);
+  a34=arg[6]? arg[6][5] : 0;
+  a34=(a34*a24);
+  a02=(a02+a34);
+  a34=arg[6]? arg[6][6] : 0;
+  a34=(a34*a30);
+  a02=(a02+a34);
+  a34=arg[6]? arg[6][7] : 0;
+  a34=(a34*a28);
+  a02=(a02+a34);
+  a20=(a20-a02);
+  a02=(a16*a20);
+  a08=(a08+a02);
+  a17=(a17/a25);
+  a25=arg[7]? arg[7][2] : 0;
+  a02=arg[6]? arg[6][8] : 0;
+  a02=(a02*a18);
+  a18=arg[6]? arg[6][9] : 0;
+  a18=(a18*a24);
+  a02=(a02+a18);
+  a18=arg[6]? arg[6][10] : 0;
+  a18=(a18*a30);
+  a02=(a02+a18);
+  a18=arg[6]? arg[6][11] : 0;
+  a18=(a18*a28);
+  a02=(a02+a18);
+  a25=(a25-a02);
+  a02=(a17*a25);
+  a08=(a08+a02);
+  a02=(a19*a08);
+  a18=(a03*a06);
+  a28=(a16*a22);
+  a18=(a18+a28);
+  a28=(a17*a00);
+  a18=(a18+a28);
+  a23=(a06*a23);
+  a20=(a22*a20);
+  a23=(a23+a20);
+  a25=(a00*a25);
+  a23=(a23+a25);
+  a25=(a18*a23);
+  a02=(a02-a25);
+  a25=casadi_sq(a03);
+  a20=casadi_sq(a16);
+  a25=(a25+a20);
+  a20=casadi_sq(a17);
+  a25=(a25+a20);
+  a19=(a25*a19);
+  a20=(a06*a03);
+  a28=(a22*a16);
+  a20=(a20+a28);
+  a28=(a00*a17);
+  a20=(a20+a28);
+  a18=(a18*a20);
+  a19=(a19-a18);
+  a02=(a02/a19);
+  a03=(a03*a02);
+  a20=(a20*a08);
+  a25=(a25*a23);
+  a20=(a20-a25);
+  a20=(a20/a19);
+  a06=(a06*a20);
+  a03=(a03-a06);
+  a16=(a16*a02);
+  a22=(a22*a20);
+  a16=(a16-a22);
+  a22=(a03+a16);
+  a17=(a17*a02);
+  a00=(a00*a20);
+  a17=(a17-a00);
+  a22=(a22+a17);
+  a00=arg[0]? arg[0][4] : 0;
+  a22=(a22+a00);
+  a20=arg[0]? arg[0][5] : 0;
+  a22=(a22+a20);
+  a02=arg[0]? arg[0][6] : 0;
+  a22=(a22+a02);
+  a06=arg[0]? arg[0][7] : 0;
+  a22=(a22+a06);
+  a19=arg[0]? arg[0][8] : 0;
+  a22=(a22+a19);
+  a25=arg[0]? arg[0][9] : 0;
+  a22=(a22+a25);
+  a23=arg[0]? arg[0][10] : 0;
+  a22=(a22+a23);
+  a08=arg[0]? arg[0][11] : 0;
+  a22=(a22+a08);
+  a18=arg[0]? arg[0][12] : 0;
+  a22=(a22+a18);
+  a28=arg[0]? arg[0][13] : 0;
+  a22=(a22+a28);
+  a30=arg[0]? arg[0][14] : 0;
+  a22=(a22+a30);
+  a24=arg[0]? arg[0][15] : 0;
+  a22=(a22+a24);
+  a34=arg[0]? arg[0][16] : 0;
+  a22=(a22+a34);
+  a35=arg[0]? arg[0][17] : 0;
+  a22=(a22+a35);
+  a36=arg[0]? arg[0][18] : 0;
+  a22=(a22+a36);
+  a37=arg[0]? arg[0][19] : 0;
+  a22=(a22+a37);
+  a38=arg[0]? arg[0][20] : 0;
+  a22=(a22+a38);
+  a39=arg[0]? arg[0][21] : 0;
+  a22=(a22+a39);
+  a22=(a22+a21);
+  a22=(a22+a05);
+  a22=(a22+a27);
+  a22=(a22+a07);
+  a22=casadi_fabs(a22);
+  a40=casadi_inf;
+  a22=(a22<a40);
+  a40=(a26&&a22);
+  a40=(a11&&a40);
+  a41=arg[5]? arg[5][4] : 0;
+  a42=(-a41);
+  a42=casadi_fmax(a03,a42);
+  a42=casadi_fmin(a42,a41);
+  a42=(a40?a42:0);
+  if (res[0]!=0) res[0][0]=a42;
+  a42=arg[5]? arg[5][5] : 0;
+  a43=(-a42);
+  a43=casadi_fmax(a16,a43);
+  a43=casadi_fmin(a43,a42);
+  a43=(a40?a43:0);
+  if (res[0]!=0) res[0][1]=a43;
+  a43=arg[5]? arg[5][6] : 0;
+  a44=(-a43);
+  a44=casadi_fmax(a17,a44);
+  a44=casadi_fmin(a44,a43);
+  a44=(a40?a44:0);
+  if (res[0]!=0) res[0][2]=a44;
+  a44=(a11&&a22);
+  a45=(a44?a21:0);
+  a46=(!a44);
+  a15=(a46?a15:0);
+  a45=(a45+a15);
+  if (res[1]!=0) res[1][0]=a45;
+  a45=(a44?a05:0);
+  a32=(a46?a32:0);
+  a45=(a45+a32);
+  if (res[1]!=0) res[1][1]=a45;
+  a45=(a44?a27:0);
+  a14=(a46?a14:0);
+  a45=(a45+a14);
+  if (res[1]!=0) res[1][2]=a45;
+  a44=(a44?a07:0);
+  a46=(a46?a31:0);
+  a44=(a44+a46);
+  if (res[1]!=0) res[1][3]=a44;
+  a44=(a40?a00:0);
+  a46=(!a40);
+  a00=(a46?a00:0);
+  a44=(a44+a00);
+  if (res[1]!=0) res[1][4]=a44;
+  a44=(a40?a20:0);
+  a20=(a46?a20:0);
+  a44=(a44+a20);
+  if (res[1]!=0) res[1][5]=a44;
+  a44=(a40?a02:0);
+  a02=(a46?a02:0);
+  a44=(a44+a02);
+  if (res[1]!=0) res[1][6]=a44;
+  a44=(a40?a06:0);
+  a06=(a46?a06:0);
+  a44=(a44+a06);
+  if (res[1]!=0) res[1][7]=a44;
+  a44=(a40?a19:0);
+  a19=(a46?a19:0);
+  a44=(a44+a19);
+  if (res[1]!=0) res[1][8]=a44;
+  a44=(a40?a25:0);
+  a25=(a46?a25:0);
+  a44=(a44+a25);
+  if (res[1]!=0) res[1][9]=a44;
+  a44=(a40?a23:0);
+  a23=(a46?a23:0);
+  a44=(a44+a23);
+  if (res[1]!=0) res[1][10]=a44;
+  a44=(a40?a08:0);
+  a08=(a46?a08:0);
+  a44=(a44+a08);
+  if (res[1]!=0) res[1][11]=a44;
+  a44=(a40?a18:0);
+  a18=(a46?a18:0);
+  a44=(a44+a18);
+  if (res[1]!=0) res[1][12]=a44;
+  a44=(a40?a28:0);
+  a28=(a46?a28:0);
+  a44=(a44+a28);
+  if (res[1]!=0) res[1][13]=a44;
+  a44=(a40?a30:0);
+  a30=(a46?a30:0);
+  a44=(a44+a30);
+  if (res[1]!=0) res[1][14]=a44;
+  a44=(a40?a24:0);
+  a24=(a46?a24:0);
+  a44=(a44+a24);
+  if (res[1]!=0) res[1][15]=a44;
+  a44=(a40?a34:0);
+  a34=(a46?a34:0);
+  a44=(a44+a34);
+  if (res[1]!=0) res[1][16]=a44;
+  a44=(a40?a35:0);
+  a35=(a46?a35:0);
+  a44=(a44+a35);
+  if (res[1]!=0) res[1][17]=a44;
+  a44=(a40?a36:0);
+  a36=(a46?a36:0);
+  a44=(a44+a36);
+  if (res[1]!=0) res[1][18]=a44;
+  a44=(a40?a37:0);
+  a37=(a46?a37:0);
+  a44=(a44+a37);
+  if (res[1]!=0) res[1][19]=a44;
+  a44=(a40?a38:0);
+  a38=(a46?a38:0);
+  a44=(a44+a38);
+  if (res[1]!=0) res[1][20]=a44;
+  a40=(a40?a39:0);
+  a46=(a46?a39:0);
+  a40=(a40+a46);
+  if (res[1]!=0) res[1][21]=a40;
+  a40=0.;
+  a03=casadi_fabs(a03);
+  a03=(a03-a41);
+  a16=casadi_fabs(a16);
+  a16=(a16-a42);
+  a03=casadi_fmax(a03,a16);
+  a17=casadi_fabs(a17);
+  a17=(a17-a43);
+  a03=casadi_fmax(a03,a17);
+  a40=(a40<a03);
+  a40=(a40?a01:0);
+  a40=(a22?a40:0);
+  a22=(!a22);
+  a01=3.;
+  a22=(a22?a01:0);
+  a40=(a40+a22);
+  a40=(a26?a40:0);
+  a26=(!a26);
+  a26=(a26?a10:0);
+  a40=(a40+a26);
+  a40=(a11?a40:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a40=(a40+a11);
+  if (res[2]!=0) res[2][0]=a40;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a27;
+  if (res[3]!=0) res[3][3]=a07;
+  a12=(a12-a21);
+  if (res[3]!=0) res[3][4]=a12;
+  a13=(a13-a05);
+  if (res[3]!=0) res[3][5]=a13;
+  a29=(a29-a27);
+  if (res[3]!=0) res[3][6]=a29;
+  a33=(a33-a07);
+  if (res[3]!=0) res[3][7]=a33;
+  if (res[3]!=0) res[3][8]=a09;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f30(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_lqr_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s11;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s9;
+    case 2: return casadi_s8;
+    case 3: return casadi_s10;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_lqr_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[22],status,diag[10]) */
+static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a03=(a03/a15);
+  a01=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a01=(a01-a15);
+  a01=casadi_fabs(a01);
+  a16=(a16/a07);
+  a14=(a14*a16);
+  a22=(a22/a07);
+  a13=(a13*a22);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a01+a14);
+  a01=(a01-a14);
+  a01=casadi_fabs(a01);
+  a13=(a13-a01);
+  a01=2.;
+  a13=(a13/a01);
+  a08=(a08/a24);
+  a10=(a10*a08);
+  a12=(a12/a24);
+  a09=(a09*a12);
+  a10=(a10-a09);
+  a10=casadi_fabs(a10);
+  a09=(a13+a10);
+  a13=(a13-a10);
+  a13=casadi_fabs(a13);
+  a09=(a09-a13);
+  a09=(a09/a01);
+  a26=(a26<=a09);
+  a13=arg[5]? arg[5][3] : 0;
+  a10=1.;
+  a24=3.3333333333333331e-01;
+  a14=casadi_sq(a03);
+  a07=casadi_sq(a06);
+  a14=(a14-a07);
+  a07=casadi_sq(a16);
+  a15=casadi_sq(a22);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a07=casadi_sq(a08);
+  a15=casadi_sq(a12);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a14=casadi_sq(a14);
+  a07=(2.*a03);
+  a07=(a07*a06);
+  a15=(2.*a16);
+  a15=(a15*a22);
+  a07=(a07+a15);
+  a15=(2.*a08);
+  a15=(a15*a12);
+  a07=(a07+a15);
+  a07=casadi_sq(a07);
+  a14=(a14+a07);
+  a14=sqrt(a14);
+  a24=(a24*a14);
+  a24=(a10-a24);
+  a14=casadi_fabs(a24);
+  a24=(a24+a14);
+  a04=(a04*a24);
+  a04=sqrt(a04);
+  a13=(a13<=a04);
+  a26=(a26&&a13);
+  a13=arg[5]? arg[5][4] : 0;
+  a03=(a17*a03);
+  a19=(a19*a03);
+  a06=(a00*a06);
+  a02=(a17*a02);
+  a02=(a06*a02);
+  a19=(a19-a02);
+  a03=(a03/a19);
+  a02=(a13*a03);
+  a24=0.;
+  a14=arg[7]? arg[7][0] : 0;
+  a07=arg[6]? arg[6][0] : 0;
+  a15=arg[2]? arg[2][0] : 0;
+  a27=(a21-a15);
+  a07=(a07*a27);
+  a28=arg[6]? arg[6][1] : 0;
+  a29=arg[2]? arg[2][1] : 0;
+  a30=(a05-a29);
+  a28=(a28*a30);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][2] : 0;
+  a31=arg[0]? arg[0][2] : 0;
+  a32=arg[5]? arg[5][1] : 0;
+  a33=arg[0]? arg[0][0] : 0;
+  a34=(a21-a33);
+  a35=arg[5]? arg[5][0] : 0;
+  a34=(a34/a35);
+  a34=(a34-a31);
+  a34=(a32*a34);
+  a34=(a31+a34);
+  a36=arg[3]? arg[3][0] : 0;
+  a37=(a34-a36);
+  a28=(a28*a37);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][3] : 0;
+  a38=arg[0]? arg[0][3] : 0;
+  a39=arg[0]? arg[0][1] : 0;
+  a40=(a05-a39);
+  a40=(a40/a35);
+  a40=(a40-a38);
+  a32=(a32*a40);
+  a32=(a38+a32);
+  a40=arg[3]? arg[3][1] : 0;
+  a35=(a32-a40);
+  a28=(a28*a35);
+  a07=(a07+a28);
+  a14=(a14-a07);
+  a03=(a03*a14);
+  a16=(a17*a16);
+  a20=(a20*a16);
+  a22=(a00*a22);
+  a18=(a22*a18);
+  a20=(a20-a18);
+  a16=(a16/a20);
+  a18=arg[7]? arg[7][1] : 0;
+  a07=arg[6]? arg[6][4] : 0;
+  a07=(a07*a27);
+  a28=arg[6]? arg[6][5] : 0;
+  a28=(a28*a30);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][6] : 0;
+  a28=(a28*a37);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][7] : 0;
+  a28=(a28*a35);
+  a07=(a07+a28);
+  a18=(a18-a07);
+  a07=(a16*a18);
+  a03=(a03+a07);
+  a17=(a17*a08);
+  a25=(a25*a17);
+  a00=(a00*a12);
+  a23=(a00*a23);
+  a25=(a25-a23);
+  a17=(a17/a25);
+  a23=arg[7]? arg[7][2] : 0;
+  a12=arg[6]? arg[6][8] : 0;
+  a12=(a12*a27);
+  a27=arg[6]? arg[6][9] : 0;
+  a27=(a27*a30);
+  a12=(a12+a27);
+  a27=arg[6]? arg[6][10] : 0;
+  a27=(a27*a37);
+  a12=(a12+a27);
+  a27=arg[6]? arg[6][11] : 0;
+  a27=(a27*a35);
+  a12=(a12+a27);
+  a23=(a23-a12);
+  a12=(a17*a23);
+  a03=(a03+a12);
+  a06=(a06/a19);
+  a19=(a13*a06);
+  a12=(a03*a19);
+  a06=(a06*a14);
+  a22=(a22/a20);
+  a18=(a22*a18);
+  a06=(a06+a18);
+  a00=(a00/a25);
+  a23=(a00*a23);
+  a06=(a06+a23);
+  a23=(a06*a02);
+  a12=(a12-a23);
+  a12=casadi_fabs(a12);
+  a24=(a24<a12);
+  a23=arg[5]? arg[5][5] : 0;
+  a22=(a23*a22);
+  a25=(a02*a22);
+  a16=(a23*a16);
+  a18=(a19*a16);
+  a25=(a25-a18);
+  a25=casadi_fabs(a25);
+  a18=arg[5]? arg[5][6] : 0;
+  a17=(a18*a17);
+  a20=(a17*a22);
+  a00=(a18*a00);
+  a14=(a00*a16);
+  a20=(a20-a14);
+  a20=casadi_fabs(a20);
+  a25=(a25+a20);
+  a20=(a12*a25);
+  a20=(a24?a20:0);
+  a14=(a03*a22);
+  a27=(a06*a16);
+  a14=(a14-a27);
+  a14=casadi_fabs(a14);
+  a27=(a16*a19);
+  a35=(a22*a02);
+  a27=(a27-a35);
+  a27=casadi_fabs(a27);
+  a35=(a17*a19);
+  a37=(a00*a02);
+  a35=(a35-a37);
+  a35=casadi_fabs(a35);
+  a27=(a27+a35);
+  a27=(a24?a27:0);
+  a35=(!a24);
+  a37=(a35?a10:0);
+  a27=(a27+a37);
+  a37=(a14*a27);
+  a20=(a20<a37);
+  a14=(a20?a14:0);
+  a37=(!a20);
+  a12=(a24?a12:0);
+  a12=(a37?a12:0);
+  a14=(a14+a12);
+  a12=(a02*a00);
+  a30=(a19*a17);
+  a12=(a12-a30);
+  a12=casadi_fabs(a12);
+  a30=(a16*a00);
+  a08=(a22*a17);
+  a30=(a30-a08);
+  a30=casadi_fabs(a30);
+  a12=(a12+a30);
+  a30=(a14*a12);
+  a08=(a03*a00);
+  a07=(a06*a17);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a25=(a20?a25:0);
+  a27=(a37?a27:0);
+  a25=(a25+a27);
+  a27=(a08*a25);
+  a30=(a30<a27);
+  a27=(a30?a00:0);
+  a07=(!a30);
+  a28=(a20?a22:0);
+  a41=(a24?a19:0);
+  a42=(a35?a19:0);
+  a41=(a41+a42);
+  a41=(a37?a41:0);
+  a28=(a28+a41);
+  a28=(a07?a28:0);
+  a27=(a27+a28);
+  a28=(a03*a27);
+  a41=(a30?a17:0);
+  a20=(a20?a16:0);
+  a24=(a24?a02:0);
+  a35=(a35?a02:0);
+  a24=(a24+a35);
+  a37=(a37?a24:0);
+  a20=(a20+a37);
+  a20=(a07?a20:0);
+  a41=(a41+a20);
+  a20=(a06*a41);
+  a28=(a28-a20);
+  a28=casadi_sign(a28);
+  a20=(a27*a28);
+  a37=(a02*a20);
+  a28=(a41*a28);
+  a24=(a19*a28);
+  a37=(a37-a24);
+  a24=casadi_sq(a37);
+  a35=9.9999999999999992e-25;
+  a42=casadi_sq(a02);
+  a43=casadi_sq(a19);
+  a42=(a42+a43);
+  a42=(a35*a42);
+  a43=casadi_sq(a27);
+  a44=casadi_sq(a41);
+  a43=(a43+a44);
+  a42=(a42*a43);
+  a24=(a24<=a42);
+  a42=(a02*a41);
+  a44=(a19*a27);
+  a42=(a42+a44);
+  a44=casadi_sign(a42);
+  a45=(!a24);
+  a08=(a30?a08:0);
+  a14=(a07?a14:0);
+  a08=(a08+a14);
+  a30=(a30?a12:0);
+  a07=(a07?a25:0);
+  a30=(a30+a07);
+  a08=(a08/a30);
+  a37=casadi_sign(a37);
+  a37=(a08*a37);
+  a02=(a37*a02);
+  a02=(a45?a02:0);
+  a30=(a16*a20);
+  a07=(a22*a28);
+  a30=(a30-a07);
+  a07=casadi_sq(a30);
+  a25=casadi_sq(a16);
+  a12=casadi_sq(a22);
+  a25=(a25+a12);
+  a25=(a35*a25);
+  a25=(a25*a43);
+  a07=(a07<=a25);
+  a25=(!a07);
+  a30=casadi_sign(a30);
+  a30=(a08*a30);
+  a12=(a30*a16);
+  a12=(a25?a12:0);
+  a02=(a02+a12);
+  a20=(a17*a20);
+  a28=(a00*a28);
+  a20=(a20-a28);
+  a28=casadi_sq(a20);
+  a12=casadi_sq(a17);
+  a14=casadi_sq(a00);
+  a12=(a12+a14);
+  a35=(a35*a12);
+  a35=(a35*a43);
+  a28=(a28<=a35);
+  a35=(!a28);
+  a20=casadi_sign(a20);
+  a20=(a08*a20);
+  a43=(a20*a17);
+  a43=(a35?a43:0);
+  a02=(a02+a43);
+  a03=(a03-a02);
+  a03=(a03*a41);
+  a19=(a37*a19);
+  a19=(-a19);
+  a19=(a45?a19:0);
+  a02=(a30*a22);
+  a02=(-a02);
+  a02=(a25?a02:0);
+  a19=(a19+a02);
+  a02=(a20*a00);
+  a02=(-a02);
+  a02=(a35?a02:0);
+  a19=(a19+a02);
+  a06=(a06+a19);
+  a06=(a06*a27);
+  a03=(a03+a06);
+  a42=casadi_fabs(a42);
+  a42=(a24?a42:0);
+  a16=(a16*a41);
+  a22=(a22*a27);
+  a16=(a16+a22);
+  a22=casadi_fabs(a16);
+  a22=(a07?a22:0);
+  a42=(a42+a22);
+  a17=(a17*a41);
+  a00=(a00*a27);
+  a17=(a17+a00);
+  a00=casadi_fabs(a17);
+  a00=(a28?a00:0);
+  a42=(a42+a00);
+  a03=(a03/a42);
+  a44=(a44*a03);
+  a24=(a24?a44:0);
+  a37=(a45?a37:0);
+  a45=(a45?a37:0);
+  a24=(a24+a45);
+  a24=(a13*a24);
+  a16=casadi_sign(a16);
+  a16=(a16*a03);
+  a07=(a07?a16:0);
+  a30=(a25?a30:0);
+  a25=(a25?a30:0);
+  a07=(a07+a25);
+  a07=(a23*a07);
+  a25=(a24+a07);
+  a17=casadi_sign(a17);
+  a17=(a17*a03);
+  a28=(a28?a17:0);
+  a20=(a35?a20:0);
+  a35=(a35?a20:0);
+  a28=(a28+a35);
+  a28=(a18*a28);
+  a25=(a25+a28);
+  a35=arg[0]? arg[0][4] : 0;
+  a25=(a25+a35);
+  a20=arg[0]? arg[0][5] : 0;
+  a25=(a25+a20);
+  a17=arg[0]? arg[0][6] : 0;
+  a25=(a25+a17);
+  a03=arg[0]? arg[0][7] : 0;
+  a25=(a25+a03);
+  a30=arg[0]? arg[0][8] : 0;
+  a25=(a25+a30);
+  a16=arg[0]? arg[0][9] : 0;
+  a25=(a25+a16);
+  a45=arg[0]? arg[0][10] : 0;
+  a25=(a25+a45);
+  a37=arg[0]? arg[0][11] : 0;
+  a25=(a25+a37);
+  a44=arg[0]? arg[0][12] : 0;
+  a25=(a25+a44);
+  a42=arg[0]? arg[0][13] : 0;
+  a25=(a25+a42);
+  a00=arg[0]? arg[0][14] : 0;
+  a25=(a25+a00);
+  a27=arg[0]? arg[0][15] : 0;
+  a25=(a25+a27);
+  a41=arg[0]? arg[0][16] : 0;
+  a25=(a25+a41);
+  a22=arg[0]? arg[0][17] : 0;
+  a25=(a25+a22);
+  a06=arg[0]? arg[0][18] : 0;
+  a25=(a25+a06);
+  a19=arg[0]? arg[0][19] : 0;
+  a25=(a25+a19);
+  a02=arg[0]? arg[0][20] : 0;
+  a25=(a25+a02);
+  a43=arg[0]? arg[0][21] : 0;
+  a25=(a25+a43);
+  a25=(a25+a21);
+  a25=(a25+a05);
+  a25=(a25+a34);
+  a25=(a25+a32);
+  a25=casadi_fabs(a25);
+  a12=casadi_inf;
+  a25=(a25<a12);
+  a12=(a26&&a25);
+  a12=(a11&&a12);
+  a14=(-a13);
+  a24=casadi_fmax(a24,a14);
+  a24=casadi_fmin(a24,a13);
+  a24=(a12?a24:0);
+  if (res[0]!=0) res[0][0]=a24;
+  a24=(-a23);
+  a07=casadi_fmax(a07,a24);
+  a07=casadi_fmin(a07,a23);
+  a07=(a12?a07:0);
+  if (res[0]!=0) res[0][1]=a07;
+  a07=(-a18);
+  a28=casadi_fmax(a28,a07);
+  a28=casadi_fmin(a28,a18);
+  a28=(a12?a28:0);
+  if (res[0]!=0) res[0][2]=a28;
+  a28=(a11&&a25);
+  a18=(a28?a21:0);
+  a07=(!a28);
+  a33=(a07?a33:0);
+  a18=(a18+a33);
+  if (res[1]!=0) res[1][0]=a18;
+  a18=(a28?a05:0);
+  a39=(a07?a39:0);
+  a18=(a18+a39);
+  if (res[1]!=0) res[1][1]=a18;
+  a18=(a28?a34:0);
+  a31=(a07?a31:0);
+  a18=(a18+a31);
+  if (res[1]!=0) res[1][2]=a18;
+  a28=(a28?a32:0);
+  a07=(a07?a38:0);
+  a28=(a28+a07);
+  if (res[1]!=0) res[1][3]=a28;
+  a28=(a12?a35:0);
+  a07=(!a12);
+  a35=(a07?a35:0);
+  a28=(a28+a35);
+  if (res[1]!=0) res[1][4]=a28;
+  a28=(a12?a20:0);
+  a20=(a07?a20:0);
+  a28=(a28+a20);
+  if (res[1]!=0) res[1][5]=a28;
+  a28=(a12?a17:0);
+  a17=(a07?a17:0);
+  a28=(a28+a17);
+  if (res[1]!=0) res[1][6]=a28;
+  a28=(a12?a03:0);
+  a03=(a07?a03:0);
+  a28=(a28+a03);
+  if (res[1]!=0) res[1][7]=a28;
+  a28=(a12?a30:0);
+  a30=(a07?a30:0);
+  a28=(a28+a30);
+  if (res[1]!=0) res[1][8]=a28;
+  a28=(a12?a16:0);
+  a16=(a07?a16:0);
+  a28=(a28+a16);
+  if (res[1]!=0) res[1][9]=a28;
+  a28=(a12?a45:0);
+  a45=(a07?a45:0);
+  a28=(a28+a45);
+  if (res[1]!=0) res[1][10]=a28;
+  a28=(a12?a37:0);
+  a37=(a07?a37:0);
+  a28=(a28+a37);
+  if (res[1]!=0) res[1][11]=a28;
+  a28=(a12?a44:0);
+  a44=(a07?a44:0);
+  a28=(a28+a44);
+  if (res[1]!=0) res[1][12]=a28;
+  a28=(a12?a42:0);
+  a42=(a07?a42:0);
+  a28=(a28+a42);
+  if (res[1]!=0) res[1][13]=a28;
+  a28=(a12?a00:0);
+  a00=(a07?a00:0);
+  a28=(a28+a00);
+  if (res[1]!=0) res[1][14]=a28;
+  a28=(a12?a27:0);
+  a27=(a07?a27:0);
+  a28=(a28+a27);
+  if (res[1]!=0) res[1][15]=a28;
+  a28=(a12?a41:0);
+  a41=(a07?a41:0);
+  a28=(a28+a41);
+  if (res[1]!=0) res[1][16]=a28;
+  a28=(a12?a22:0);
+  a22=(a07?a22:0);
+  a28=(a28+a22);
+  if (res[1]!=0) res[1][17]=a28;
+  a28=(a12?a06:0);
+  a06=(a07?a06:0);
+  a28=(a28+a06);
+  if (res[1]!=0) res[1][18]=a28;
+  a28=(a12?a19:0);
+  a19=(a07?a19:0);
+  a28=(a28+a19);
+  if (res[1]!=0) res[1][19]=a28;
+  a28=(a12?a02:0);
+  a02=(a07?a02:0);
+  a28=(a28+a02);
+  if (res[1]!=0) res[1][20]=a28;
+  a12=(a12?a43:0);
+  a07=(a07?a43:0);
+  a12=(a12+a07);
+  if (res[1]!=0) res[1][21]=a12;
+  a08=(a10<a08);
+  a08=(a08?a01:0);
+  a08=(a25?a08:0);
+  a25=(!a25);
+  a01=3.;
+  a25=(a25?a01:0);
+  a08=(a08+a25);
+  a08=(a26?a08:0);
+  a26=(!a26);
+  a26=(a26?a10:0);
+  a08=(a08+a26);
+  a08=(a11?a08:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a08=(a08+a11);
+  if (res[2]!=0) res[2][0]=a08;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a34;
+  if (res[3]!=0) res[3][3]=a32;
+  a15=(a15-a21);
+  if (res[3]!=0) res[3][4]=a15;
+  a29=(a29-a05);
+  if (res[3]!=0) res[3][5]=a29;
+  a36=(a36-a34);
+  if (res[3]!=0) res[3][6]=a36;
+  a40=(a40-a32);
+  if (res[3]!=0) res[3][7]=a40;
+  if (res[3]!=0) res[3][8]=a09;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f31(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_minmax_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_lqr_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s11;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s9;
+    case 2: return casadi_s8;
+    case 3: return casadi_s10;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_lqr_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[22],status,diag[10]) */
+static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a03=(a03/a15);
+  a01=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a01=(a01-a15);
+  a01=casadi_fabs(a01);
+  a16=(a16/a07);
+  a14=(a14*a16);
+  a22=(a22/a07);
+  a13=(a13*a22);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a01+a14);
+  a01=(a01-a14);
+  a01=casadi_fabs(a01);
+  a13=(a13-a01);
+  a01=2.;
+  a13=(a13/a01);
+  a08=(a08/a24);
+  a10=(a10*a08);
+  a12=(a12/a24);
+  a09=(a09*a12);
+  a10=(a10-a09);
+  a10=casadi_fabs(a10);
+  a09=(a13+a10);
+  a13=(a13-a10);
+  a13=casadi_fabs(a13);
+  a09=(a09-a13);
+  a09=(a09/a01);
+  a26=(a26<=a09);
+  a13=arg[5]? arg[5][3] : 0;
+  a10=1.;
+  a24=3.3333333333333331e-01;
+  a14=casadi_sq(a03);
+  a07=casadi_sq(a06);
+  a14=(a14-a07);
+  a07=casadi_sq(a16);
+  a15=casadi_sq(a22);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a07=casadi_sq(a08);
+  a15=casadi_sq(a12);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a14=casadi_sq(a14);
+  a07=(2.*a03);
+  a07=(a07*a06);
+  a15=(2.*a16);
+  a15=(a15*a22);
+  a07=(a07+a15);
+  a15=(2.*a08);
+  a15=(a15*a12);
+  a07=(a07+a15);
+  a07=casadi_sq(a07);
+  a14=(a14+a07);
+  a14=sqrt(a14);
+  a24=(a24*a14);
+  a24=(a10-a24);
+  a14=casadi_fabs(a24);
+  a24=(a24+a14);
+  a04=(a04*a24);
+  a04=sqrt(a04);
+  a13=(a13<=a04);
+  a26=(a26&&a13);
+  a03=(a17*a03);
+  a19=(a19*a03);
+  a06=(a00*a06);
+  a02=(a17*a02);
+  a02=(a06*a02);
+  a19=(a19-a02);
+  a03=(a03/a19);
+  a16=(a17*a16);
+  a20=(a20*a16);
+  a22=(a00*a22);
+  a18=(a22*a18);
+  a20=(a20-a18);
+  a16=(a16/a20);
+  a17=(a17*a08);
+  a25=(a25*a17);
+  a12=(a00*a12);
+  a23=(a12*a23);
+  a25=(a25-a23);
+  a17=(a17/a25);
+  a06=(a06/a19);
+  a19=(-a06);
+  a22=(a22/a20);
+  a20=(-a22);
+  a12=(a12/a25);
+  a25=(-a12);
+  a23=arg[7]? arg[7][0] : 0;
+  a08=arg[6]? arg[6][0] : 0;
+  a18=arg[2]? arg[2][0] : 0;
+  a02=(a21-a18);
+  a08=(a08*a02);
+  a13=arg[6]? arg[6][1] : 0;
+  a24=arg[2]? arg[2][1] : 0;
+  a14=(a05-a24);
+  a13=(a13*a14);
+  a08=(a08+a13);
+  a13=arg[6]? arg[6][2] : 0;
+  a07=arg[0]? arg[0][2] : 0;
+  a15=arg[5]? arg[5][1] : 0;
+  a27=arg[0]? arg[0][0] : 0;
+  a28=(a21-a27);
+  a29=arg[5]? arg[5][0] : 0;
+  a28=(a28/a29);
+  a28=(a28-a07);
+  a28=(a15*a28);
+  a28=(a07+a28);
+  a30=arg[3]? arg[3][0] : 0;
+  a31=(a28-a30);
+  a13=(a13*a31);
+  a08=(a08+a13);
+  a13=arg[6]? arg[6][3] : 0;
+  a32=arg[0]? arg[0][3] : 0;
+  a33=arg[0]? arg[0][1] : 0;
+  a34=(a05-a33);
+  a34=(a34/a29);
+  a34=(a34-a32);
+  a15=(a15*a34);
+  a15=(a32+a15);
+  a34=arg[3]? arg[3][1] : 0;
+  a29=(a15-a34);
+  a13=(a13*a29);
+  a08=(a08+a13);
+  a23=(a23-a08);
+  a08=(a03*a23);
+  a13=arg[7]? arg[7][1] : 0;
+  a35=arg[6]? arg[6][4] : 0;
+  a35=(a35*a02);
+  a36=arg[6]? arg[6][5] : 0;
+  a36=(a36*a14);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][6] : 0;
+  a36=(a36*a31);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][7] : 0;
+  a36=(a36*a29);
+  a35=(a35+a36);
+  a13=(a13-a35);
+  a35=(a16*a13);
+  a08=(a08+a35);
+  a35=arg[7]? arg[7][2] : 0;
+  a36=arg[6]? arg[6][8] : 0;
+  a36=(a36*a02);
+  a02=arg[6]? arg[6][9] : 0;
+  a02=(a02*a14);
+  a36=(a36+a02);
+  a02=arg[6]? arg[6][10] : 0;
+  a02=(a02*a31);
+  a36=(a36+a02);
+  a02=arg[6]? arg[6][11] : 0;
+  a02=(a02*a29);
+  a36=(a36+a02);
+  a35=(a35-a36);
+  a36=(a17*a35);
+  a08=(a08+a36);
+  a06=(a06*a23);
+  a22=(a22*a13);
+  a06=(a06+a22);
+  a12=(a12*a35);
+  a06=(a06+a12);
+  a06=(-a06);
+  a12=arg[5]? arg[5][4] : 0;
+  a35=arg[5]? arg[5][5] : 0;
+  a22=arg[5]? arg[5][6] : 0;
+  arg[8]=w+0;
+  arg[9]=w+6;
+  arg[10] = arg[5]? arg[5] + 4 : 0;
+  arg[11] = arg[5]? arg[5] + 7 : 0;
+  arg[12] = arg[5]? arg[5] + 10 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a03;
+  w[1] = a16;
+  w[2] = a17;
+  w[3] = a19;
+  w[4] = a20;
+  w[5] = a25;
+  w[6] = a08;
+  w[7] = a06;
+  if (casadi_f16(arg+8, res+4, iw, w+21, 0)) return 1;
+  a03 = w[17];
+  a16 = w[18];
+  a17 = w[19];
+  a19 = w[20];
+  a20=(a03+a16);
+  a20=(a20+a17);
+  a25=arg[0]? arg[0][4] : 0;
+  a20=(a20+a25);
+  a08=arg[0]? arg[0][5] : 0;
+  a20=(a20+a08);
+  a06=arg[0]? arg[0][6] : 0;
+  a20=(a20+a06);
+  a13=arg[0]? arg[0][7] : 0;
+  a20=(a20+a13);
+  a23=arg[0]? arg[0][8] : 0;
+  a20=(a20+a23);
+  a36=arg[0]? arg[0][9] : 0;
+  a20=(a20+a36);
+  a02=arg[0]? arg[0][10] : 0;
+  a20=(a20+a02);
+  a29=arg[0]? arg[0][11] : 0;
+  a20=(a20+a29);
+  a31=arg[0]? arg[0][12] : 0;
+  a20=(a20+a31);
+  a14=arg[0]? arg[0][13] : 0;
+  a20=(a20+a14);
+  a37=arg[0]? arg[0][14] : 0;
+  a20=(a20+a37);
+  a38=arg[0]? arg[0][15] : 0;
+  a20=(a20+a38);
+  a39=arg[0]? arg[0][16] : 0;
+  a20=(a20+a39);
+  a40=arg[0]? arg[0][17] : 0;
+  a20=(a20+a40);
+  a41=arg[0]? arg[0][18] : 0;
+  a20=(a20+a41);
+  a42=arg[0]? arg[0][19] : 0;
+  a20=(a20+a42);
+  a43=arg[0]? arg[0][20] : 0;
+  a20=(a20+a43);
+  a44=arg[0]? arg[0][21] : 0;
+  a20=(a20+a44);
+  a20=(a20+a21);
+  a20=(a20+a05);
+  a20=(a20+a28);
+  a20=(a20+a15);
+  a20=casadi_fabs(a20);
+  a45=casadi_inf;
+  a20=(a20<a45);
+  a45=(a26&&a20);
+  a45=(a11&&a45);
+  a46=(-a12);
+  a03=casadi_fmax(a03,a46);
+  a03=casadi_fmin(a03,a12);
+  a03=(a45?a03:0);
+  if (res[0]!=0) res[0][0]=a03;
+  a03=(-a35);
+  a16=casadi_fmax(a16,a03);
+  a16=casadi_fmin(a16,a35);
+  a16=(a45?a16:0);
+  if (res[0]!=0) res[0][1]=a16;
+  a16=(-a22);
+  a17=casadi_fmax(a17,a16);
+  a17=casadi_fmin(a17,a22);
+  a17=(a45?a17:0);
+  if (res[0]!=0) res[0][2]=a17;
+  a17=(a11&&a20);
+  a22=(a17?a21:0);
+  a16=(!a17);
+  a27=(a16?a27:0);
+  a22=(a22+a27);
+  if (res[1]!=0) res[1][0]=a22;
+  a22=(a17?a05:0);
+  a33=(a16?a33:0);
+  a22=(a22+a33);
+  if (res[1]!=0) res[1][1]=a22;
+  a22=(a17?a28:0);
+  a07=(a16?a07:0);
+  a22=(a22+a07);
+  if (res[1]!=0) res[1][2]=a22;
+  a17=(a17?a15:0);
+  a16=(a16?a32:0);
+  a17=(a17+a16);
+  if (res[1]!=0) res[1][3]=a17;
+  a17=(a45?a25:0);
+  a16=(!a45);
+  a25=(a16?a25:0);
+  a17=(a17+a25);
+  if (res[1]!=0) res[1][4]=a17;
+  a17=(a45?a08:0);
+  a08=(a16?a08:0);
+  a17=(a17+a08);
+  if (res[1]!=0) res[1][5]=a17;
+  a17=(a45?a06:0);
+  a06=(a16?a06:0);
+  a17=(a17+a06);
+  if (res[1]!=0) res[1][6]=a17;
+  a17=(a45?a13:0);
+  a13=(a16?a13:0);
+  a17=(a17+a13);
+  if (res[1]!=0) res[1][7]=a17;
+  a17=(a45?a23:0);
+  a23=(a16?a23:0);
+  a17=(a17+a23);
+  if (res[1]!=0) res[1][8]=a17;
+  a17=(a45?a36:0);
+  a36=(a16?a36:0);
+  a17=(a17+a36);
+  if (res[1]!=0) res[1][9]=a17;
+  a17=(a45?a02:0);
+  a02=(a16?a02:0);
+  a17=(a17+a02);
+  if (res[1]!=0) res[1][10]=a17;
+  a17=(a45?a29:0);
+  a29=(a16?a29:0);
+  a17=(a17+a29);
+  if (res[1]!=0) res[1][11]=a17;
+  a17=(a45?a31:0);
+  a31=(a16?a31:0);
+  a17=(a17+a31);
+  if (res[1]!=0) res[1][12]=a17;
+  a17=(a45?a14:0);
+  a14=(a16?a14:0);
+  a17=(a17+a14);
+  if (res[1]!=0) res[1][13]=a17;
+  a17=(a45?a37:0);
+  a37=(a16?a37:0);
+  a17=(a17+a37);
+  if (res[1]!=0) res[1][14]=a17;
+  a17=(a45?a38:0);
+  a38=(a16?a38:0);
+  a17=(a17+a38);
+  if (res[1]!=0) res[1][15]=a17;
+  a17=(a45?a39:0);
+  a39=(a16?a39:0);
+  a17=(a17+a39);
+  if (res[1]!=0) res[1][16]=a17;
+  a17=(a45?a40:0);
+  a40=(a16?a40:0);
+  a17=(a17+a40);
+  if (res[1]!=0) res[1][17]=a17;
+  a17=(a45?a41:0);
+  a41=(a16?a41:0);
+  a17=(a17+a41);
+  if (res[1]!=0) res[1][18]=a17;
+  a17=(a45?a42:0);
+  a42=(a16?a42:0);
+  a17=(a17+a42);
+  if (res[1]!=0) res[1][19]=a17;
+  a17=(a45?a43:0);
+  a43=(a16?a43:0);
+  a17=(a17+a43);
+  if (res[1]!=0) res[1][20]=a17;
+  a45=(a45?a44:0);
+  a16=(a16?a44:0);
+  a45=(a45+a16);
+  if (res[1]!=0) res[1][21]=a45;
+  a45=(a19==a01);
+  a01=(a45?a01:0);
+  a45=(!a45);
+  a19=(a19==a10);
+  a16=4.;
+  a19=(a19?a16:0);
+  a45=(a45?a19:0);
+  a01=(a01+a45);
+  a01=(a20?a01:0);
+  a20=(!a20);
+  a45=3.;
+  a20=(a20?a45:0);
+  a01=(a01+a20);
+  a01=(a26?a01:0);
+  a26=(!a26);
+  a26=(a26?a10:0);
+  a01=(a01+a26);
+  a01=(a11?a01:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a01=(a01+a11);
+  if (res[2]!=0) res[2][0]=a01;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a28;
+  if (res[3]!=0) res[3][3]=a15;
+  a18=(a18-a21);
+  if (res[3]!=0) res[3][4]=a18;
+  a24=(a24-a05);
+  if (res[3]!=0) res[3][5]=a24;
+  a30=(a30-a28);
+  if (res[3]!=0) res[3][6]=a30;
+  a34=(a34-a15);
+  if (res[3]!=0) res[3][7]=a34;
+  if (res[3]!=0) res[3][8]=a09;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f32(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_preload_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_lqr_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s11;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s9;
+    case 2: return casadi_s8;
+    case 3: return casadi_s10;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -17819,7 +22523,7 @@ static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f27(arg, res, iw, w, mem);
+  return casadi_f33(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_plant_xedd_checkout(void) {
@@ -17867,7 +22571,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_plant_xedd_sparsity_in
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s2;
-    case 3: return casadi_s11;
+    case 3: return casadi_s12;
     default: return 0;
   }
 }
@@ -17896,7 +22600,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_plant_xedd_work_bytes(casadi_int *sz
 }
 
 /* shang2010_stribeck_plant_step:(x[4],tau_a[3],plant[21],h)->(x_next[4]) */
-static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -19563,7 +24267,7 @@ static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f28(arg, res, iw, w, mem);
+  return casadi_f34(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_plant_step_checkout(void) {
@@ -19610,7 +24314,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_plant_step_sparsity_in
   switch (i) {
     case 0: return casadi_s3;
     case 1: return casadi_s2;
-    case 2: return casadi_s11;
+    case 2: return casadi_s12;
     case 3: return casadi_s8;
     default: return 0;
   }
@@ -19640,7 +24344,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_plant_step_work_bytes(casadi_int *sz
 }
 
 /* shang2010_stribeck_measure:(xe[2],plant[21])->(qa[3]) */
-static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15;
   a00=0.;
@@ -19740,7 +24444,7 @@ static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f29(arg, res, iw, w, mem);
+  return casadi_f35(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_measure_checkout(void) {
@@ -19784,7 +24488,7 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_measure_name_out(casadi_int 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s11;
+    case 1: return casadi_s12;
     default: return 0;
   }
 }
@@ -19813,7 +24517,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_measure_work_bytes(casadi_int *sz_ar
 }
 
 /* shang2010_stribeck_na_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
-static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+140, *w19=w+144;
@@ -19830,7 +24534,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19855,19 +24559,19 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 22, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19880,7 +24584,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f30(arg, res, iw, w, mem);
+  return casadi_f36(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_closed_loop_checkout(void) {
@@ -19925,17 +24629,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_closed_loop_name_out(casa
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -19957,7 +24661,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_closed_loop_work_bytes(casadi_int
 }
 
 /* shang2010_stribeck_na_minmax_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
-static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+103, *w07=w+107, *w08=w+110, *w09=w+116, *w10=w+118, *w11=w+120, *w13=w+122, *w14=w+125, w15, w16;
   casadi_real w17, *w18=w+147, *w19=w+151;
@@ -19974,7 +24678,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19999,19 +24703,19 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 22, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20024,7 +24728,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f31(arg, res, iw, w, mem);
+  return casadi_f37(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_minmax_closed_loop_checkout(void) {
@@ -20069,17 +24773,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_minmax_closed_loop_name_o
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -20101,7 +24805,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_minmax_closed_loop_work_bytes(cas
 }
 
 /* shang2010_stribeck_na_preload_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
-static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+265, *w07=w+269, *w08=w+272, *w09=w+278, *w10=w+280, *w11=w+282, *w13=w+284, *w14=w+287, w15, w16;
   casadi_real w17, *w18=w+309, *w19=w+313;
@@ -20118,7 +24822,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20143,19 +24847,19 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 22, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20168,7 +24872,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f32(arg, res, iw, w, mem);
+  return casadi_f38(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_preload_closed_loop_checkout(void) {
@@ -20213,17 +24917,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_preload_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -20245,7 +24949,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_preload_closed_loop_work_bytes(ca
 }
 
 /* shang2010_stribeck_na_proj_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
-static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+140, *w19=w+144;
@@ -20262,7 +24966,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20287,19 +24991,19 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 22, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20312,7 +25016,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f33(arg, res, iw, w, mem);
+  return casadi_f39(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_closed_loop_checkout(void) {
@@ -20357,17 +25061,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_proj_closed_loop_name_out
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -20389,7 +25093,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_closed_loop_work_bytes(casad
 }
 
 /* shang2010_stribeck_na_proj_minmax_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
-static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+104, *w07=w+108, *w08=w+111, *w09=w+117, *w10=w+119, *w11=w+121, *w13=w+123, *w14=w+126, w15, w16;
   casadi_real w17, *w18=w+148, *w19=w+152;
@@ -20406,7 +25110,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20431,19 +25135,19 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 22, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20456,7 +25160,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f34(arg, res, iw, w, mem);
+  return casadi_f40(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_minmax_closed_loop_checkout(void) {
@@ -20501,17 +25205,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_proj_minmax_closed_loop_n
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -20533,7 +25237,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_minmax_closed_loop_work_byte
 }
 
 /* shang2010_stribeck_na_proj_preload_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
-static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+266, *w07=w+270, *w08=w+273, *w09=w+279, *w10=w+281, *w11=w+283, *w13=w+285, *w14=w+288, w15, w16;
   casadi_real w17, *w18=w+310, *w19=w+314;
@@ -20550,7 +25254,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20575,19 +25279,19 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 22, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20600,7 +25304,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f35(arg, res, iw, w, mem);
+  return casadi_f41(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_preload_closed_loop_checkout(void) {
@@ -20645,17 +25349,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_proj_preload_closed_loop_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -20677,7 +25381,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_preload_closed_loop_work_byt
 }
 
 /* shang2010_stribeck_apd_closed_loop:(x[26],u[6],p[39])->(x_next[26],y[26]) */
-static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w12=w+115, *w13=w+133, *w14=w+136, w15;
   casadi_real w16, w17, *w18=w+158;
@@ -20694,7 +25398,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20719,19 +25423,19 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 22, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20744,7 +25448,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f36(arg, res, iw, w, mem);
+  return casadi_f42(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_closed_loop_checkout(void) {
@@ -20789,17 +25493,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_apd_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -20821,7 +25525,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_closed_loop_work_bytes(casadi_in
 }
 
 /* shang2010_stribeck_apd_minmax_closed_loop:(x[26],u[6],p[39])->(x_next[26],y[26]) */
-static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w12=w+115, *w13=w+133, *w14=w+136, w15;
   casadi_real w16, w17, *w18=w+158;
@@ -20838,7 +25542,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20863,19 +25567,19 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 22, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20888,7 +25592,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f37(arg, res, iw, w, mem);
+  return casadi_f43(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_minmax_closed_loop_checkout(void) {
@@ -20933,17 +25637,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_apd_minmax_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -20965,7 +25669,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_minmax_closed_loop_work_bytes(ca
 }
 
 /* shang2010_stribeck_apd_preload_closed_loop:(x[26],u[6],p[39])->(x_next[26],y[26]) */
-static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+247, *w07=w+251, *w08=w+254, *w09=w+260, *w10=w+262, *w11=w+264, *w12=w+266, *w13=w+284, *w14=w+287, w15;
   casadi_real w16, w17, *w18=w+309;
@@ -20982,7 +25686,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -21007,19 +25711,19 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 22, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -21032,7 +25736,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f38(arg, res, iw, w, mem);
+  return casadi_f44(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_preload_closed_loop_checkout(void) {
@@ -21077,17 +25781,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_apd_preload_closed_loop_name
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -21108,8 +25812,884 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_apd_preload_closed_loop_work_bytes(c
   return 0;
 }
 
+/* shang2010_stribeck_ctc_closed_loop:(x[26],u[6],p[39])->(x_next[26],y[26]) */
+static int casadi_f45(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w12=w+115, *w13=w+133, *w14=w+136, w15;
+  casadi_real w16, w17, *w18=w+158;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f27(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 22, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w12, cs=w14+4; cs!=w14+22; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w12, 18, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f45(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_ctc_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s1;
+    case 2: return casadi_s15;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 162;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 162*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_ctc_minmax_closed_loop:(x[26],u[6],p[39])->(x_next[26],y[26]) */
+static int casadi_f46(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w12=w+115, *w13=w+133, *w14=w+136, w15;
+  casadi_real w16, w17, *w18=w+158;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 22, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w12, cs=w14+4; cs!=w14+22; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w12, 18, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f46(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_ctc_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s1;
+    case 2: return casadi_s15;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 162;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 162*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_ctc_preload_closed_loop:(x[26],u[6],p[39])->(x_next[26],y[26]) */
+static int casadi_f47(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+243, *w07=w+247, *w08=w+250, *w09=w+256, *w10=w+258, *w11=w+260, *w12=w+262, *w13=w+280, *w14=w+283, w15;
+  casadi_real w16, w17, *w18=w+305;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 22, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w12, cs=w14+4; cs!=w14+22; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w12, 18, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f47(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_ctc_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_ctc_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_ctc_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s1;
+    case 2: return casadi_s15;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 309;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 309*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_lqr_closed_loop:(x[26],u[21],p[35])->(x_next[26],y[26]) */
+static int casadi_f48(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w15=w+103, *w16=w+106, w17, w18, w19, *w20=w+128, *w21=w+132;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f30(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 22, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+22; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 18, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f48(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_lqr_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s12;
+    case 2: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 150;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 150*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_lqr_minmax_closed_loop:(x[26],u[21],p[35])->(x_next[26],y[26]) */
+static int casadi_f49(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w15=w+103, *w16=w+106, w17, w18, w19, *w20=w+128, *w21=w+132;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f31(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 22, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+22; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 18, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f49(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_lqr_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s12;
+    case 2: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 150;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 150*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_lqr_preload_closed_loop:(x[26],u[21],p[35])->(x_next[26],y[26]) */
+static int casadi_f50(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+218, *w07=w+222, *w15=w+225, *w16=w+228, w17, w18, w19, *w20=w+250, *w21=w+254;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f32(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 22, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+22; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 18, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f50(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_lqr_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_lqr_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_lqr_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s12;
+    case 2: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 272;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 272*sizeof(casadi_real);
+  return 0;
+}
+
 /* shang2010_stribeck_forward_dynamics_jacobians:(xe[2],xed[2],tau_a[3],theta[18])->(xedd[2],d_xe[4],d_xed[4],d_tau_a[6],d_theta[36],sing[2]) */
-static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f51(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -23276,7 +28856,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f39(arg, res, iw, w, mem);
+  return casadi_f51(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_forward_dynamics_jacobians_checkout(void) {
@@ -23363,7 +28943,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_forward_dynamics_jacobians_work_byte
 }
 
 /* shang2010_stribeck_inverse_dynamics:(xe[2],xed[2],xedd[2],theta[18])->(u[2],sing[2]) */
-static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f52(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -23845,7 +29425,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f40(arg, res, iw, w, mem);
+  return casadi_f52(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_inverse_dynamics_checkout(void) {
@@ -23924,7 +29504,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_inverse_dynamics_work_bytes(casadi_i
 }
 
 /* shang2010_stribeck_inverse_dynamics_jacobians:(xe[2],xed[2],xedd[2],theta[18])->(u[2],d_xe[4],d_xed[4],sing[2]) */
-static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f53(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -25590,7 +31170,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f41(arg, res, iw, w, mem);
+  return casadi_f53(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_inverse_dynamics_jacobians_checkout(void) {
@@ -25673,7 +31253,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_inverse_dynamics_jacobians_work_byte
 }
 
 /* shang2010_stribeck_sampled_step_xedd:(xe[2],xed[2],tau_a[3],theta[18])->(xedd[2],sing[2]) */
-static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f55(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -26172,7 +31752,7 @@ static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 /* shang2010_stribeck_sampled_step:(x[4],tau_a[3],theta[18],T)->(x_next[4],sing[2]) */
-static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f54(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w00=w+62, w01, w02, *w03=w+66, *w04=w+68, *w05=w+70, *w06=w+72, *w08=w+75, *w09=w+77, *w10=w+79;
   casadi_real w11, *w12=w+83, *w13=w+87;
@@ -26194,7 +31774,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=w09;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26211,7 +31791,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26230,7 +31810,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26247,7 +31827,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26265,7 +31845,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26282,7 +31862,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26301,7 +31881,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26318,7 +31898,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26336,7 +31916,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26353,7 +31933,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26372,7 +31952,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26389,7 +31969,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26402,7 +31982,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f42(arg, res, iw, w, mem);
+  return casadi_f54(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_sampled_step_checkout(void) {
@@ -26481,7 +32061,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_sampled_step_work_bytes(casadi_int *
 }
 
 /* shang2010_stribeck_sampled_step_jacobians:(x[4],tau_a[3],theta[18],T)->(x_next[4],d_x[16],d_tau_a[12],sing[2]) */
-static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i, j;
   casadi_real **res1=res+4, *rr, *w00=w+255, w01, w02, *w03=w+259, *w04=w+261, *w05=w+263, *w06=w+265, *w08=w+268, *w09=w+270, *w10=w+274;
   casadi_real *w11=w+278, *w12=w+284, *w13=w+286, w14, *w15=w+290, *w16=w+294, *w17=w+298, *w18=w+304, *w19=w+308, *w20=w+312, *w21=w+318, *w22=w+322;
@@ -26512,7 +32092,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w11;
   res1[4]=0;
   res1[5]=w12;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w13;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26533,7 +32113,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w17;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w18;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26556,7 +32136,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w20;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w21;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26577,7 +32157,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w23;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w24;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26599,7 +32179,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w25;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w26;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26620,7 +32200,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w29;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w30;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26643,7 +32223,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w32;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w33;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26664,7 +32244,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w35;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w36;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26686,7 +32266,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w37;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w38;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26707,7 +32287,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w41;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w42;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26730,7 +32310,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w44;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w45;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26751,7 +32331,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w47;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w48;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26764,18 +32344,18 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w50;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w49; i<12; ++i) *rr++ = *cs++;
-  casadi_densify(w50, casadi_s15, w51, 0);
+  casadi_densify(w50, casadi_s17, w51, 0);
   w02 = 6.;
   w02  = (w01/w02);
   for (rr=w52, cs=w50+0; cs!=w50+16; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
-  casadi_trans(w52,casadi_s17, w53, casadi_s16, iw);
+  casadi_trans(w52,casadi_s19, w53, casadi_s18, iw);
   casadi_clear(w54, 14);
   for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w52;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w52, 2, w50, casadi_s15, w54);
+  casadi_mtimes_dense_sparse(w52, 2, w50, casadi_s17, w54);
   casadi_clear(w52, 8);
   for (i=0, rr=w55, cs=w11; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
   rr=w56;
@@ -26786,15 +32366,15 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w57;
   for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
   for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
-  casadi_trans(w57,casadi_s19, w58, casadi_s18, iw);
-  casadi_densify(w58, casadi_s18, w59, 0);
-  casadi_project(w50, casadi_s15, w60, casadi_s20, w);
+  casadi_trans(w57,casadi_s21, w58, casadi_s20, iw);
+  casadi_densify(w58, casadi_s20, w59, 0);
+  casadi_project(w50, casadi_s17, w60, casadi_s22, w);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w58, cs=w58; i<22; ++i) (*rr++)  = (w14*(*cs++));
-  casadi_project(w58, casadi_s18, w61, casadi_s20, w);
+  casadi_project(w58, casadi_s20, w61, casadi_s22, w);
   for (i=0, rr=w60, cs=w61; i<24; ++i) (*rr++) += (*cs++);
-  for (cii=casadi_s21, rr=w56, cs=w60; cii!=casadi_s21+14; ++cii) *rr++ = cs[*cii];
+  for (cii=casadi_s23, rr=w56, cs=w60; cii!=casadi_s23+14; ++cii) *rr++ = cs[*cii];
   for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
   casadi_clear(w56, 14);
   for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
@@ -26802,7 +32382,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w53;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w53, 2, w60, casadi_s20, w56);
+  casadi_mtimes_dense_sparse(w53, 2, w60, casadi_s22, w56);
   casadi_clear(w53, 8);
   for (i=0, rr=w55, cs=w17; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
   rr=w62;
@@ -26816,7 +32396,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s15, w63, 0);
+  casadi_densify(w50, casadi_s17, w63, 0);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w14*(*cs++));
@@ -26843,7 +32423,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s15, w63, 0);
+  casadi_densify(w50, casadi_s17, w63, 0);
   for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w01*(*cs++));
   for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
   for (rr=w62, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
@@ -27078,7 +32658,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f44(arg, res, iw, w, mem);
+  return casadi_f56(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_stribeck_sampled_step_jacobians_checkout(void) {
@@ -27137,7 +32717,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_sampled_step_jacobians
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_sampled_step_jacobians_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s3;
-    case 1: return casadi_s22;
+    case 1: return casadi_s24;
     case 2: return casadi_s5;
     case 3: return casadi_s0;
     default: return 0;

@@ -72,7 +72,19 @@ extern "C" {
 #define casadi_f42 CASADI_PREFIX(f42)
 #define casadi_f43 CASADI_PREFIX(f43)
 #define casadi_f44 CASADI_PREFIX(f44)
+#define casadi_f45 CASADI_PREFIX(f45)
+#define casadi_f46 CASADI_PREFIX(f46)
+#define casadi_f47 CASADI_PREFIX(f47)
+#define casadi_f48 CASADI_PREFIX(f48)
+#define casadi_f49 CASADI_PREFIX(f49)
 #define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f50 CASADI_PREFIX(f50)
+#define casadi_f51 CASADI_PREFIX(f51)
+#define casadi_f52 CASADI_PREFIX(f52)
+#define casadi_f53 CASADI_PREFIX(f53)
+#define casadi_f54 CASADI_PREFIX(f54)
+#define casadi_f55 CASADI_PREFIX(f55)
+#define casadi_f56 CASADI_PREFIX(f56)
 #define casadi_f6 CASADI_PREFIX(f6)
 #define casadi_f7 CASADI_PREFIX(f7)
 #define casadi_f8 CASADI_PREFIX(f8)
@@ -103,6 +115,8 @@ extern "C" {
 #define casadi_s23 CASADI_PREFIX(s23)
 #define casadi_s24 CASADI_PREFIX(s24)
 #define casadi_s25 CASADI_PREFIX(s25)
+#define casadi_s26 CASADI_PREFIX(s26)
+#define casadi_s27 CASADI_PREFIX(s27)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
@@ -308,42 +322,44 @@ static const casadi_int casadi_s10[3] = {19, 1, 1};
 static const casadi_int casadi_s11[3] = {33, 1, 1};
 static const casadi_int casadi_s12[3] = {10, 1, 1};
 static const casadi_int casadi_s13[3] = {18, 1, 1};
-static const casadi_int casadi_s14[3] = {21, 1, 1};
-static const casadi_int casadi_s15[3] = {23, 1, 1};
-static const casadi_int casadi_s16[3] = {54, 1, 1};
-static const casadi_int casadi_s17[3] = {39, 1, 1};
-static const casadi_int casadi_s18[26] = 
+static const casadi_int casadi_s14[3] = {14, 1, 1};
+static const casadi_int casadi_s15[3] = {21, 1, 1};
+static const casadi_int casadi_s16[3] = {23, 1, 1};
+static const casadi_int casadi_s17[3] = {54, 1, 1};
+static const casadi_int casadi_s18[3] = {39, 1, 1};
+static const casadi_int casadi_s19[3] = {35, 1, 1};
+static const casadi_int casadi_s20[26] = 
   {4, 7, 0, 1, 2, 3, 4, 8,
   12, 16, 0, 1, 2, 3, 0, 1,
   2, 3, 0, 1, 2, 3, 0, 1,
   2, 3};
-static const casadi_int casadi_s19[13] = 
+static const casadi_int casadi_s21[13] = 
   {7, 2, 0, 4, 8, 2, 4, 5,
   6, 3, 4, 5, 6};
-static const casadi_int casadi_s20[18] = 
+static const casadi_int casadi_s22[18] = 
   {2, 7, 0, 0, 0, 1, 2, 4,
   6, 8, 0, 1, 0, 1, 0, 1,
   0, 1};
-static const casadi_int casadi_s21[32] = 
+static const casadi_int casadi_s23[32] = 
   {4, 7, 0, 2, 4, 7, 10, 14,
   18, 22, 2, 3, 2, 3, 0, 2,
   3, 1, 2, 3, 0, 1, 2, 3,
   0, 1, 2, 3, 0, 1, 2, 3};
-static const casadi_int casadi_s22[29] = 
+static const casadi_int casadi_s24[29] = 
   {7, 4, 0, 4, 8, 15, 22, 2,
   4, 5, 6, 3, 4, 5, 6, 0,
   1, 2, 3, 4, 5, 6, 0, 1,
   2, 3, 4, 5, 6};
-static const casadi_int casadi_s23[34] = 
+static const casadi_int casadi_s25[34] = 
   {4, 7, 0, 3, 6, 9, 12, 16,
   20, 24, 0, 2, 3, 1, 2, 3,
   0, 2, 3, 1, 2, 3, 0, 1,
   2, 3, 0, 1, 2, 3, 0, 1,
   2, 3};
-static const casadi_int casadi_s24[14] = 
+static const casadi_int casadi_s26[14] = 
   {1, 2, 4, 5, 7, 8, 10, 11,
   14, 15, 18, 19, 22, 23};
-static const casadi_int casadi_s25[3] = {16, 1, 1};
+static const casadi_int casadi_s27[3] = {16, 1, 1};
 
 static const casadi_real casadi_zeros[54] = 
   {0.};
@@ -17200,8 +17216,4606 @@ CASADI_SYMBOL_EXPORT int unequal_apd_preload_step_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* unequal_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+/* unequal_ctc_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
 static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a30=(a26*a10);
+  a29=(a29+a30);
+  a29=(a29+a21);
+  a30=casadi_sq(a29);
+  a28=(a28+a30);
+  a28=sqrt(a28);
+  a30=(a17+a28);
+  a30=casadi_fabs(a30);
+  a12=casadi_fmax(a12,a30);
+  a30=arg[5]? arg[5][17] : 0;
+  a12=(a12<=a30);
+  a30=arg[5]? arg[5][6] : 0;
+  a04=(a04/a23);
+  a31=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a31=(a31-a23);
+  a23=casadi_fabs(a31);
+  a06=(a06/a09);
+  a32=(a15*a06);
+  a08=(a08/a09);
+  a09=(a14*a08);
+  a32=(a32-a09);
+  a09=casadi_fabs(a32);
+  a33=(a23+a09);
+  a23=(a23-a09);
+  a23=casadi_fabs(a23);
+  a33=(a33-a23);
+  a23=2.;
+  a33=(a33/a23);
+  a29=(a29/a28);
+  a09=(a11*a29);
+  a24=(a24/a28);
+  a28=(a10*a24);
+  a09=(a09-a28);
+  a28=casadi_fabs(a09);
+  a34=(a33+a28);
+  a33=(a33-a28);
+  a33=casadi_fabs(a33);
+  a34=(a34-a33);
+  a34=(a34/a23);
+  a30=(a30<=a34);
+  a33=arg[5]? arg[5][7] : 0;
+  a28=1.;
+  a35=3.3333333333333331e-01;
+  a36=casadi_sq(a04);
+  a37=casadi_sq(a13);
+  a36=(a36-a37);
+  a37=casadi_sq(a06);
+  a38=casadi_sq(a08);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a37=casadi_sq(a29);
+  a38=casadi_sq(a24);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a36=casadi_sq(a36);
+  a37=(2.*a04);
+  a37=(a37*a13);
+  a38=(2.*a06);
+  a38=(a38*a08);
+  a37=(a37+a38);
+  a38=(2.*a29);
+  a38=(a38*a24);
+  a37=(a37+a38);
+  a37=casadi_sq(a37);
+  a36=(a36+a37);
+  a36=sqrt(a36);
+  a35=(a35*a36);
+  a35=(a28-a35);
+  a36=casadi_fabs(a35);
+  a35=(a35+a36);
+  a05=(a05*a35);
+  a05=sqrt(a05);
+  a33=(a33<=a05);
+  a30=(a30&&a33);
+  a33=2.3499999999999999e-01;
+  a33=(a33*a04);
+  a35=(a07*a33);
+  a36=(a00*a13);
+  a37=(a20*a03);
+  a38=(a36*a37);
+  a35=(a35-a38);
+  a33=(a33/a35);
+  a36=(a36/a35);
+  a38=casadi_sq(a36);
+  a39=(a01*a08);
+  a20=(a20*a06);
+  a40=(a22*a20);
+  a41=(a39*a19);
+  a40=(a40-a41);
+  a39=(a39/a40);
+  a41=casadi_sq(a39);
+  a38=(a38+a41);
+  a41=(a17*a24);
+  a18=(a18*a29);
+  a42=(a27*a18);
+  a43=(a41*a25);
+  a42=(a42-a43);
+  a41=(a41/a42);
+  a43=casadi_sq(a41);
+  a38=(a38+a43);
+  a43=arg[4]? arg[4][0] : 0;
+  a44=arg[5]? arg[5][2] : 0;
+  a45=arg[3]? arg[3][0] : 0;
+  a46=arg[0]? arg[0][2] : 0;
+  a47=arg[5]? arg[5][5] : 0;
+  a48=arg[0]? arg[0][0] : 0;
+  a49=(a21-a48);
+  a50=arg[5]? arg[5][4] : 0;
+  a49=(a49/a50);
+  a49=(a49-a46);
+  a49=(a47*a49);
+  a49=(a46+a49);
+  a45=(a45-a49);
+  a44=(a44*a45);
+  a43=(a43+a44);
+  a44=arg[5]? arg[5][0] : 0;
+  a51=arg[2]? arg[2][0] : 0;
+  a51=(a51-a21);
+  a44=(a44*a51);
+  a43=(a43+a44);
+  a44=(a33*a43);
+  a52=arg[4]? arg[4][1] : 0;
+  a53=arg[5]? arg[5][3] : 0;
+  a54=arg[3]? arg[3][1] : 0;
+  a55=arg[0]? arg[0][3] : 0;
+  a56=arg[0]? arg[0][1] : 0;
+  a57=(a16-a56);
+  a57=(a57/a50);
+  a57=(a57-a55);
+  a47=(a47*a57);
+  a47=(a55+a47);
+  a54=(a54-a47);
+  a53=(a53*a54);
+  a52=(a52+a53);
+  a53=arg[5]? arg[5][1] : 0;
+  a57=arg[2]? arg[2][1] : 0;
+  a57=(a57-a16);
+  a53=(a53*a57);
+  a52=(a52+a53);
+  a53=(a36*a52);
+  a44=(a44-a53);
+  a53=(a33*a49);
+  a50=(a36*a47);
+  a53=(a53-a50);
+  a50=(a01*a53);
+  a58=(a50*a02);
+  a58=(a58*a53);
+  a07=(a07/a35);
+  a59=(a07*a47);
+  a37=(a37/a35);
+  a35=(a37*a49);
+  a59=(a59-a35);
+  a00=(a00*a59);
+  a35=(a00*a13);
+  a35=(a35*a59);
+  a58=(a58+a35);
+  a35=(a36*a58);
+  a50=(a50*a03);
+  a50=(a50*a53);
+  a00=(a00*a04);
+  a00=(a00*a59);
+  a50=(a50+a00);
+  a00=(a33*a50);
+  a35=(a35-a00);
+  a44=(a44+a35);
+  a35=(a33*a44);
+  a00=arg[0]? arg[0][4] : 0;
+  a35=(a35*a00);
+  a20=(a20/a40);
+  a60=(a20*a43);
+  a61=(a39*a52);
+  a60=(a60-a61);
+  a61=(a20*a49);
+  a62=(a39*a47);
+  a61=(a61-a62);
+  a62=(a17*a61);
+  a63=(a62*a15);
+  a63=(a63*a61);
+  a22=(a22/a40);
+  a64=(a22*a47);
+  a19=(a19/a40);
+  a40=(a19*a49);
+  a64=(a64-a40);
+  a01=(a01*a64);
+  a40=(a01*a08);
+  a40=(a40*a64);
+  a63=(a63+a40);
+  a40=(a39*a63);
+  a62=(a62*a14);
+  a62=(a62*a61);
+  a01=(a01*a06);
+  a01=(a01*a64);
+  a62=(a62+a01);
+  a01=(a20*a62);
+  a40=(a40-a01);
+  a60=(a60+a40);
+  a40=(a20*a60);
+  a01=arg[0]? arg[0][5] : 0;
+  a40=(a40*a01);
+  a35=(a35+a40);
+  a18=(a18/a42);
+  a40=(a18*a43);
+  a65=(a41*a52);
+  a40=(a40-a65);
+  a65=(a18*a49);
+  a66=(a41*a47);
+  a65=(a65-a66);
+  a26=(a26*a65);
+  a66=(a26*a11);
+  a66=(a66*a65);
+  a27=(a27/a42);
+  a67=(a27*a47);
+  a25=(a25/a42);
+  a42=(a25*a49);
+  a67=(a67-a42);
+  a17=(a17*a67);
+  a42=(a17*a24);
+  a42=(a42*a67);
+  a66=(a66+a42);
+  a42=(a41*a66);
+  a26=(a26*a10);
+  a26=(a26*a65);
+  a17=(a17*a29);
+  a17=(a17*a67);
+  a26=(a26+a17);
+  a17=(a18*a26);
+  a42=(a42-a17);
+  a40=(a40+a42);
+  a42=(a18*a40);
+  a17=arg[0]? arg[0][6] : 0;
+  a42=(a42*a17);
+  a35=(a35+a42);
+  a42=(a07*a52);
+  a68=(a37*a43);
+  a42=(a42-a68);
+  a50=(a37*a50);
+  a58=(a07*a58);
+  a50=(a50-a58);
+  a42=(a42+a50);
+  a03=(a03*a04);
+  a02=(a02*a13);
+  a03=(a03+a02);
+  a02=(a42*a03);
+  a59=casadi_sq(a59);
+  a59=(a59*a31);
+  a02=(a02+a59);
+  a59=(a33*a02);
+  a03=(a44*a03);
+  a13=casadi_sq(a53);
+  a13=(a13*a31);
+  a03=(a03-a13);
+  a13=(a37*a03);
+  a59=(a59-a13);
+  a13=arg[0]? arg[0][7] : 0;
+  a59=(a59*a13);
+  a35=(a35+a59);
+  a59=(a22*a52);
+  a31=(a19*a43);
+  a59=(a59-a31);
+  a62=(a19*a62);
+  a63=(a22*a63);
+  a62=(a62-a63);
+  a59=(a59+a62);
+  a14=(a14*a06);
+  a15=(a15*a08);
+  a14=(a14+a15);
+  a15=(a59*a14);
+  a64=casadi_sq(a64);
+  a64=(a64*a32);
+  a15=(a15+a64);
+  a64=(a20*a15);
+  a14=(a60*a14);
+  a08=casadi_sq(a61);
+  a08=(a08*a32);
+  a14=(a14-a08);
+  a08=(a19*a14);
+  a64=(a64-a08);
+  a08=arg[0]? arg[0][8] : 0;
+  a64=(a64*a08);
+  a35=(a35+a64);
+  a52=(a27*a52);
+  a43=(a25*a43);
+  a52=(a52-a43);
+  a26=(a25*a26);
+  a66=(a27*a66);
+  a26=(a26-a66);
+  a52=(a52+a26);
+  a10=(a10*a29);
+  a11=(a11*a24);
+  a10=(a10+a11);
+  a11=(a52*a10);
+  a67=casadi_sq(a67);
+  a67=(a67*a09);
+  a11=(a11+a67);
+  a67=(a18*a11);
+  a10=(a40*a10);
+  a24=casadi_sq(a65);
+  a24=(a24*a09);
+  a10=(a10-a24);
+  a24=(a25*a10);
+  a67=(a67-a24);
+  a24=arg[0]? arg[0][9] : 0;
+  a67=(a67*a24);
+  a35=(a35+a67);
+  a37=(a37*a42);
+  a67=arg[0]? arg[0][10] : 0;
+  a37=(a37*a67);
+  a35=(a35-a37);
+  a19=(a19*a59);
+  a37=arg[0]? arg[0][11] : 0;
+  a19=(a19*a37);
+  a35=(a35-a19);
+  a25=(a25*a52);
+  a19=arg[0]? arg[0][12] : 0;
+  a25=(a25*a19);
+  a35=(a35-a25);
+  a25=(a33*a53);
+  a09=arg[0]? arg[0][13] : 0;
+  a25=(a25*a09);
+  a35=(a35+a25);
+  a25=(a20*a61);
+  a29=arg[0]? arg[0][14] : 0;
+  a25=(a25*a29);
+  a35=(a35+a25);
+  a25=(a18*a65);
+  a26=arg[0]? arg[0][15] : 0;
+  a25=(a25*a26);
+  a35=(a35+a25);
+  a25=0.;
+  a66=(a25<=a53);
+  a43=(a66?a28:0);
+  a66=(!a66);
+  a64=-1.;
+  a66=(a66?a64:0);
+  a43=(a43+a66);
+  a66=(a33*a43);
+  a32=arg[0]? arg[0][16] : 0;
+  a66=(a66*a32);
+  a35=(a35+a66);
+  a66=(a25<=a61);
+  a06=(a66?a28:0);
+  a66=(!a66);
+  a66=(a66?a64:0);
+  a06=(a06+a66);
+  a66=(a20*a06);
+  a62=arg[0]? arg[0][17] : 0;
+  a66=(a66*a62);
+  a35=(a35+a66);
+  a66=(a25<=a65);
+  a63=(a66?a28:0);
+  a66=(!a66);
+  a66=(a66?a64:0);
+  a63=(a63+a66);
+  a66=(a18*a63);
+  a64=arg[0]? arg[0][18] : 0;
+  a66=(a66*a64);
+  a35=(a35+a66);
+  a66=(a38*a35);
+  a31=(a33*a36);
+  a04=(a20*a39);
+  a31=(a31+a04);
+  a04=(a18*a41);
+  a31=(a31+a04);
+  a03=(a07*a03);
+  a02=(a36*a02);
+  a03=(a03-a02);
+  a03=(a03*a13);
+  a44=(a36*a44);
+  a44=(a44*a00);
+  a60=(a39*a60);
+  a60=(a60*a01);
+  a44=(a44+a60);
+  a40=(a41*a40);
+  a40=(a40*a17);
+  a44=(a44+a40);
+  a03=(a03-a44);
+  a14=(a22*a14);
+  a15=(a39*a15);
+  a14=(a14-a15);
+  a14=(a14*a08);
+  a03=(a03+a14);
+  a10=(a27*a10);
+  a11=(a41*a11);
+  a10=(a10-a11);
+  a10=(a10*a24);
+  a03=(a03+a10);
+  a07=(a07*a42);
+  a07=(a07*a67);
+  a03=(a03+a07);
+  a22=(a22*a59);
+  a22=(a22*a37);
+  a03=(a03+a22);
+  a27=(a27*a52);
+  a27=(a27*a19);
+  a03=(a03+a27);
+  a53=(a36*a53);
+  a53=(a53*a09);
+  a03=(a03-a53);
+  a61=(a39*a61);
+  a61=(a61*a29);
+  a03=(a03-a61);
+  a65=(a41*a65);
+  a65=(a65*a26);
+  a03=(a03-a65);
+  a43=(a36*a43);
+  a43=(a43*a32);
+  a03=(a03-a43);
+  a06=(a39*a06);
+  a06=(a06*a62);
+  a03=(a03-a06);
+  a63=(a41*a63);
+  a63=(a63*a64);
+  a03=(a03-a63);
+  a63=(a31*a03);
+  a66=(a66+a63);
+  a63=casadi_sq(a33);
+  a06=casadi_sq(a20);
+  a63=(a63+a06);
+  a06=casadi_sq(a18);
+  a63=(a63+a06);
+  a38=(a63*a38);
+  a06=(a36*a33);
+  a43=(a39*a20);
+  a06=(a06+a43);
+  a43=(a41*a18);
+  a06=(a06+a43);
+  a31=(a31*a06);
+  a38=(a38-a31);
+  a66=(a66/a38);
+  a33=(a33*a66);
+  a63=(a63*a03);
+  a06=(a06*a35);
+  a63=(a63+a06);
+  a63=(a63/a38);
+  a36=(a36*a63);
+  a33=(a33-a36);
+  a20=(a20*a66);
+  a39=(a39*a63);
+  a20=(a20-a39);
+  a39=(a33+a20);
+  a18=(a18*a66);
+  a41=(a41*a63);
+  a18=(a18-a41);
+  a39=(a39+a18);
+  a39=(a39+a00);
+  a39=(a39+a01);
+  a39=(a39+a17);
+  a39=(a39+a13);
+  a39=(a39+a08);
+  a39=(a39+a24);
+  a39=(a39+a67);
+  a39=(a39+a37);
+  a39=(a39+a19);
+  a39=(a39+a09);
+  a39=(a39+a29);
+  a39=(a39+a26);
+  a39=(a39+a32);
+  a39=(a39+a62);
+  a39=(a39+a64);
+  a39=(a39+a21);
+  a39=(a39+a16);
+  a39=(a39+a49);
+  a39=(a39+a47);
+  a39=casadi_fabs(a39);
+  a41=casadi_inf;
+  a39=(a39<a41);
+  a41=(a30&&a39);
+  a41=(a12&&a41);
+  a63=arg[5]? arg[5][8] : 0;
+  a66=(-a63);
+  a66=casadi_fmax(a33,a66);
+  a66=casadi_fmin(a66,a63);
+  a66=(a41?a66:0);
+  if (res[0]!=0) res[0][0]=a66;
+  a66=arg[5]? arg[5][9] : 0;
+  a36=(-a66);
+  a36=casadi_fmax(a20,a36);
+  a36=casadi_fmin(a36,a66);
+  a36=(a41?a36:0);
+  if (res[0]!=0) res[0][1]=a36;
+  a36=arg[5]? arg[5][10] : 0;
+  a38=(-a36);
+  a38=casadi_fmax(a18,a38);
+  a38=casadi_fmin(a38,a36);
+  a38=(a41?a38:0);
+  if (res[0]!=0) res[0][2]=a38;
+  a38=(a12&&a39);
+  a06=(a38?a21:0);
+  a35=(!a38);
+  a48=(a35?a48:0);
+  a06=(a06+a48);
+  if (res[1]!=0) res[1][0]=a06;
+  a06=(a38?a16:0);
+  a56=(a35?a56:0);
+  a06=(a06+a56);
+  if (res[1]!=0) res[1][1]=a06;
+  a06=(a38?a49:0);
+  a46=(a35?a46:0);
+  a06=(a06+a46);
+  if (res[1]!=0) res[1][2]=a06;
+  a38=(a38?a47:0);
+  a35=(a35?a55:0);
+  a38=(a38+a35);
+  if (res[1]!=0) res[1][3]=a38;
+  a38=(a41?a00:0);
+  a35=(!a41);
+  a00=(a35?a00:0);
+  a38=(a38+a00);
+  if (res[1]!=0) res[1][4]=a38;
+  a38=(a41?a01:0);
+  a01=(a35?a01:0);
+  a38=(a38+a01);
+  if (res[1]!=0) res[1][5]=a38;
+  a38=(a41?a17:0);
+  a17=(a35?a17:0);
+  a38=(a38+a17);
+  if (res[1]!=0) res[1][6]=a38;
+  a38=(a41?a13:0);
+  a13=(a35?a13:0);
+  a38=(a38+a13);
+  if (res[1]!=0) res[1][7]=a38;
+  a38=(a41?a08:0);
+  a08=(a35?a08:0);
+  a38=(a38+a08);
+  if (res[1]!=0) res[1][8]=a38;
+  a38=(a41?a24:0);
+  a24=(a35?a24:0);
+  a38=(a38+a24);
+  if (res[1]!=0) res[1][9]=a38;
+  a38=(a41?a67:0);
+  a67=(a35?a67:0);
+  a38=(a38+a67);
+  if (res[1]!=0) res[1][10]=a38;
+  a38=(a41?a37:0);
+  a37=(a35?a37:0);
+  a38=(a38+a37);
+  if (res[1]!=0) res[1][11]=a38;
+  a38=(a41?a19:0);
+  a19=(a35?a19:0);
+  a38=(a38+a19);
+  if (res[1]!=0) res[1][12]=a38;
+  a38=(a41?a09:0);
+  a09=(a35?a09:0);
+  a38=(a38+a09);
+  if (res[1]!=0) res[1][13]=a38;
+  a38=(a41?a29:0);
+  a29=(a35?a29:0);
+  a38=(a38+a29);
+  if (res[1]!=0) res[1][14]=a38;
+  a38=(a41?a26:0);
+  a26=(a35?a26:0);
+  a38=(a38+a26);
+  if (res[1]!=0) res[1][15]=a38;
+  a38=(a41?a32:0);
+  a32=(a35?a32:0);
+  a38=(a38+a32);
+  if (res[1]!=0) res[1][16]=a38;
+  a38=(a41?a62:0);
+  a62=(a35?a62:0);
+  a38=(a38+a62);
+  if (res[1]!=0) res[1][17]=a38;
+  a41=(a41?a64:0);
+  a35=(a35?a64:0);
+  a41=(a41+a35);
+  if (res[1]!=0) res[1][18]=a41;
+  a33=casadi_fabs(a33);
+  a33=(a33-a63);
+  a20=casadi_fabs(a20);
+  a20=(a20-a66);
+  a33=casadi_fmax(a33,a20);
+  a18=casadi_fabs(a18);
+  a18=(a18-a36);
+  a33=casadi_fmax(a33,a18);
+  a25=(a25<a33);
+  a25=(a25?a23:0);
+  a25=(a39?a25:0);
+  a39=(!a39);
+  a23=3.;
+  a39=(a39?a23:0);
+  a25=(a25+a39);
+  a25=(a30?a25:0);
+  a30=(!a30);
+  a30=(a30?a28:0);
+  a25=(a25+a30);
+  a25=(a12?a25:0);
+  a12=(!a12);
+  a30=5.;
+  a12=(a12?a30:0);
+  a25=(a25+a12);
+  if (res[2]!=0) res[2][0]=a25;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a49;
+  if (res[3]!=0) res[3][3]=a47;
+  if (res[3]!=0) res[3][4]=a51;
+  if (res[3]!=0) res[3][5]=a57;
+  if (res[3]!=0) res[3][6]=a45;
+  if (res[3]!=0) res[3][7]=a54;
+  if (res[3]!=0) res[3][8]=a34;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f27(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_ctc_minmax_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a30=(a26*a10);
+  a29=(a29+a30);
+  a29=(a29+a21);
+  a30=casadi_sq(a29);
+  a28=(a28+a30);
+  a28=sqrt(a28);
+  a30=(a17+a28);
+  a30=casadi_fabs(a30);
+  a12=casadi_fmax(a12,a30);
+  a30=arg[5]? arg[5][17] : 0;
+  a12=(a12<=a30);
+  a30=arg[5]? arg[5][6] : 0;
+  a04=(a04/a23);
+  a31=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a31=(a31-a23);
+  a23=casadi_fabs(a31);
+  a06=(a06/a09);
+  a32=(a15*a06);
+  a08=(a08/a09);
+  a09=(a14*a08);
+  a32=(a32-a09);
+  a09=casadi_fabs(a32);
+  a33=(a23+a09);
+  a23=(a23-a09);
+  a23=casadi_fabs(a23);
+  a33=(a33-a23);
+  a23=2.;
+  a33=(a33/a23);
+  a29=(a29/a28);
+  a09=(a11*a29);
+  a24=(a24/a28);
+  a28=(a10*a24);
+  a09=(a09-a28);
+  a28=casadi_fabs(a09);
+  a34=(a33+a28);
+  a33=(a33-a28);
+  a33=casadi_fabs(a33);
+  a34=(a34-a33);
+  a34=(a34/a23);
+  a30=(a30<=a34);
+  a33=arg[5]? arg[5][7] : 0;
+  a28=1.;
+  a35=3.3333333333333331e-01;
+  a36=casadi_sq(a04);
+  a37=casadi_sq(a13);
+  a36=(a36-a37);
+  a37=casadi_sq(a06);
+  a38=casadi_sq(a08);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a37=casadi_sq(a29);
+  a38=casadi_sq(a24);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a36=casadi_sq(a36);
+  a37=(2.*a04);
+  a37=(a37*a13);
+  a38=(2.*a06);
+  a38=(a38*a08);
+  a37=(a37+a38);
+  a38=(2.*a29);
+  a38=(a38*a24);
+  a37=(a37+a38);
+  a37=casadi_sq(a37);
+  a36=(a36+a37);
+  a36=sqrt(a36);
+  a35=(a35*a36);
+  a35=(a28-a35);
+  a36=casadi_fabs(a35);
+  a35=(a35+a36);
+  a05=(a05*a35);
+  a05=sqrt(a05);
+  a33=(a33<=a05);
+  a30=(a30&&a33);
+  a33=arg[5]? arg[5][8] : 0;
+  a35=2.3499999999999999e-01;
+  a35=(a35*a04);
+  a36=(a07*a35);
+  a37=(a00*a13);
+  a38=(a20*a03);
+  a39=(a37*a38);
+  a36=(a36-a39);
+  a35=(a35/a36);
+  a39=(a33*a35);
+  a40=0.;
+  a41=arg[4]? arg[4][0] : 0;
+  a42=arg[5]? arg[5][2] : 0;
+  a43=arg[3]? arg[3][0] : 0;
+  a44=arg[0]? arg[0][2] : 0;
+  a45=arg[5]? arg[5][5] : 0;
+  a46=arg[0]? arg[0][0] : 0;
+  a47=(a21-a46);
+  a48=arg[5]? arg[5][4] : 0;
+  a47=(a47/a48);
+  a47=(a47-a44);
+  a47=(a45*a47);
+  a47=(a44+a47);
+  a43=(a43-a47);
+  a42=(a42*a43);
+  a41=(a41+a42);
+  a42=arg[5]? arg[5][0] : 0;
+  a49=arg[2]? arg[2][0] : 0;
+  a49=(a49-a21);
+  a42=(a42*a49);
+  a41=(a41+a42);
+  a42=(a35*a41);
+  a37=(a37/a36);
+  a50=arg[4]? arg[4][1] : 0;
+  a51=arg[5]? arg[5][3] : 0;
+  a52=arg[3]? arg[3][1] : 0;
+  a53=arg[0]? arg[0][3] : 0;
+  a54=arg[0]? arg[0][1] : 0;
+  a55=(a16-a54);
+  a55=(a55/a48);
+  a55=(a55-a53);
+  a45=(a45*a55);
+  a45=(a53+a45);
+  a52=(a52-a45);
+  a51=(a51*a52);
+  a50=(a50+a51);
+  a51=arg[5]? arg[5][1] : 0;
+  a55=arg[2]? arg[2][1] : 0;
+  a55=(a55-a16);
+  a51=(a51*a55);
+  a50=(a50+a51);
+  a51=(a37*a50);
+  a42=(a42-a51);
+  a51=(a35*a47);
+  a48=(a37*a45);
+  a51=(a51-a48);
+  a48=(a01*a51);
+  a56=(a48*a02);
+  a56=(a56*a51);
+  a07=(a07/a36);
+  a57=(a07*a45);
+  a38=(a38/a36);
+  a36=(a38*a47);
+  a57=(a57-a36);
+  a00=(a00*a57);
+  a36=(a00*a13);
+  a36=(a36*a57);
+  a56=(a56+a36);
+  a36=(a37*a56);
+  a48=(a48*a03);
+  a48=(a48*a51);
+  a00=(a00*a04);
+  a00=(a00*a57);
+  a48=(a48+a00);
+  a00=(a35*a48);
+  a36=(a36-a00);
+  a42=(a42+a36);
+  a36=(a35*a42);
+  a00=arg[0]? arg[0][4] : 0;
+  a36=(a36*a00);
+  a20=(a20*a06);
+  a58=(a22*a20);
+  a59=(a01*a08);
+  a60=(a59*a19);
+  a58=(a58-a60);
+  a20=(a20/a58);
+  a60=(a20*a41);
+  a59=(a59/a58);
+  a61=(a59*a50);
+  a60=(a60-a61);
+  a61=(a20*a47);
+  a62=(a59*a45);
+  a61=(a61-a62);
+  a62=(a17*a61);
+  a63=(a62*a15);
+  a63=(a63*a61);
+  a22=(a22/a58);
+  a64=(a22*a45);
+  a19=(a19/a58);
+  a58=(a19*a47);
+  a64=(a64-a58);
+  a01=(a01*a64);
+  a58=(a01*a08);
+  a58=(a58*a64);
+  a63=(a63+a58);
+  a58=(a59*a63);
+  a62=(a62*a14);
+  a62=(a62*a61);
+  a01=(a01*a06);
+  a01=(a01*a64);
+  a62=(a62+a01);
+  a01=(a20*a62);
+  a58=(a58-a01);
+  a60=(a60+a58);
+  a58=(a20*a60);
+  a01=arg[0]? arg[0][5] : 0;
+  a58=(a58*a01);
+  a36=(a36+a58);
+  a18=(a18*a29);
+  a58=(a27*a18);
+  a65=(a17*a24);
+  a66=(a65*a25);
+  a58=(a58-a66);
+  a18=(a18/a58);
+  a66=(a18*a41);
+  a65=(a65/a58);
+  a67=(a65*a50);
+  a66=(a66-a67);
+  a67=(a18*a47);
+  a68=(a65*a45);
+  a67=(a67-a68);
+  a26=(a26*a67);
+  a68=(a26*a11);
+  a68=(a68*a67);
+  a27=(a27/a58);
+  a69=(a27*a45);
+  a25=(a25/a58);
+  a58=(a25*a47);
+  a69=(a69-a58);
+  a17=(a17*a69);
+  a58=(a17*a24);
+  a58=(a58*a69);
+  a68=(a68+a58);
+  a58=(a65*a68);
+  a26=(a26*a10);
+  a26=(a26*a67);
+  a17=(a17*a29);
+  a17=(a17*a69);
+  a26=(a26+a17);
+  a17=(a18*a26);
+  a58=(a58-a17);
+  a66=(a66+a58);
+  a58=(a18*a66);
+  a17=arg[0]? arg[0][6] : 0;
+  a58=(a58*a17);
+  a36=(a36+a58);
+  a58=(a07*a50);
+  a70=(a38*a41);
+  a58=(a58-a70);
+  a48=(a38*a48);
+  a56=(a07*a56);
+  a48=(a48-a56);
+  a58=(a58+a48);
+  a03=(a03*a04);
+  a02=(a02*a13);
+  a03=(a03+a02);
+  a02=(a58*a03);
+  a57=casadi_sq(a57);
+  a57=(a57*a31);
+  a02=(a02+a57);
+  a57=(a35*a02);
+  a03=(a42*a03);
+  a13=casadi_sq(a51);
+  a13=(a13*a31);
+  a03=(a03-a13);
+  a13=(a38*a03);
+  a57=(a57-a13);
+  a13=arg[0]? arg[0][7] : 0;
+  a57=(a57*a13);
+  a36=(a36+a57);
+  a57=(a22*a50);
+  a31=(a19*a41);
+  a57=(a57-a31);
+  a62=(a19*a62);
+  a63=(a22*a63);
+  a62=(a62-a63);
+  a57=(a57+a62);
+  a14=(a14*a06);
+  a15=(a15*a08);
+  a14=(a14+a15);
+  a15=(a57*a14);
+  a64=casadi_sq(a64);
+  a64=(a64*a32);
+  a15=(a15+a64);
+  a64=(a20*a15);
+  a14=(a60*a14);
+  a08=casadi_sq(a61);
+  a08=(a08*a32);
+  a14=(a14-a08);
+  a08=(a19*a14);
+  a64=(a64-a08);
+  a08=arg[0]? arg[0][8] : 0;
+  a64=(a64*a08);
+  a36=(a36+a64);
+  a50=(a27*a50);
+  a41=(a25*a41);
+  a50=(a50-a41);
+  a26=(a25*a26);
+  a68=(a27*a68);
+  a26=(a26-a68);
+  a50=(a50+a26);
+  a10=(a10*a29);
+  a11=(a11*a24);
+  a10=(a10+a11);
+  a11=(a50*a10);
+  a69=casadi_sq(a69);
+  a69=(a69*a09);
+  a11=(a11+a69);
+  a69=(a18*a11);
+  a10=(a66*a10);
+  a24=casadi_sq(a67);
+  a24=(a24*a09);
+  a10=(a10-a24);
+  a24=(a25*a10);
+  a69=(a69-a24);
+  a24=arg[0]? arg[0][9] : 0;
+  a69=(a69*a24);
+  a36=(a36+a69);
+  a38=(a38*a58);
+  a69=arg[0]? arg[0][10] : 0;
+  a38=(a38*a69);
+  a36=(a36-a38);
+  a19=(a19*a57);
+  a38=arg[0]? arg[0][11] : 0;
+  a19=(a19*a38);
+  a36=(a36-a19);
+  a25=(a25*a50);
+  a19=arg[0]? arg[0][12] : 0;
+  a25=(a25*a19);
+  a36=(a36-a25);
+  a25=(a35*a51);
+  a09=arg[0]? arg[0][13] : 0;
+  a25=(a25*a09);
+  a36=(a36+a25);
+  a25=(a20*a61);
+  a29=arg[0]? arg[0][14] : 0;
+  a25=(a25*a29);
+  a36=(a36+a25);
+  a25=(a18*a67);
+  a26=arg[0]? arg[0][15] : 0;
+  a25=(a25*a26);
+  a36=(a36+a25);
+  a25=(a40<=a51);
+  a68=(a25?a28:0);
+  a25=(!a25);
+  a41=-1.;
+  a25=(a25?a41:0);
+  a68=(a68+a25);
+  a35=(a35*a68);
+  a25=arg[0]? arg[0][16] : 0;
+  a35=(a35*a25);
+  a36=(a36+a35);
+  a35=(a40<=a61);
+  a64=(a35?a28:0);
+  a35=(!a35);
+  a35=(a35?a41:0);
+  a64=(a64+a35);
+  a35=(a20*a64);
+  a32=arg[0]? arg[0][17] : 0;
+  a35=(a35*a32);
+  a36=(a36+a35);
+  a35=(a40<=a67);
+  a06=(a35?a28:0);
+  a35=(!a35);
+  a35=(a35?a41:0);
+  a06=(a06+a35);
+  a35=(a18*a06);
+  a41=arg[0]? arg[0][18] : 0;
+  a35=(a35*a41);
+  a36=(a36+a35);
+  a35=(a33*a37);
+  a62=(a36*a35);
+  a03=(a07*a03);
+  a02=(a37*a02);
+  a03=(a03-a02);
+  a03=(a03*a13);
+  a42=(a37*a42);
+  a42=(a42*a00);
+  a60=(a59*a60);
+  a60=(a60*a01);
+  a42=(a42+a60);
+  a66=(a65*a66);
+  a66=(a66*a17);
+  a42=(a42+a66);
+  a03=(a03-a42);
+  a14=(a22*a14);
+  a15=(a59*a15);
+  a14=(a14-a15);
+  a14=(a14*a08);
+  a03=(a03+a14);
+  a10=(a27*a10);
+  a11=(a65*a11);
+  a10=(a10-a11);
+  a10=(a10*a24);
+  a03=(a03+a10);
+  a07=(a07*a58);
+  a07=(a07*a69);
+  a03=(a03+a07);
+  a22=(a22*a57);
+  a22=(a22*a38);
+  a03=(a03+a22);
+  a27=(a27*a50);
+  a27=(a27*a19);
+  a03=(a03+a27);
+  a51=(a37*a51);
+  a51=(a51*a09);
+  a03=(a03-a51);
+  a61=(a59*a61);
+  a61=(a61*a29);
+  a03=(a03-a61);
+  a67=(a65*a67);
+  a67=(a67*a26);
+  a03=(a03-a67);
+  a37=(a37*a68);
+  a37=(a37*a25);
+  a03=(a03-a37);
+  a64=(a59*a64);
+  a64=(a64*a32);
+  a03=(a03-a64);
+  a06=(a65*a06);
+  a06=(a06*a41);
+  a03=(a03-a06);
+  a06=(a03*a39);
+  a62=(a62+a06);
+  a62=casadi_fabs(a62);
+  a40=(a40<a62);
+  a06=arg[5]? arg[5][9] : 0;
+  a59=(a06*a59);
+  a64=(a39*a59);
+  a20=(a06*a20);
+  a37=(a35*a20);
+  a64=(a64-a37);
+  a64=casadi_fabs(a64);
+  a37=arg[5]? arg[5][10] : 0;
+  a18=(a37*a18);
+  a68=(a18*a59);
+  a65=(a37*a65);
+  a67=(a65*a20);
+  a68=(a68-a67);
+  a68=casadi_fabs(a68);
+  a64=(a64+a68);
+  a68=(a62*a64);
+  a68=(a40?a68:0);
+  a67=(a36*a59);
+  a61=(a03*a20);
+  a67=(a67+a61);
+  a67=casadi_fabs(a67);
+  a61=(a20*a35);
+  a51=(a59*a39);
+  a61=(a61-a51);
+  a61=casadi_fabs(a61);
+  a51=(a18*a35);
+  a27=(a65*a39);
+  a51=(a51-a27);
+  a51=casadi_fabs(a51);
+  a61=(a61+a51);
+  a61=(a40?a61:0);
+  a51=(!a40);
+  a27=(a51?a28:0);
+  a61=(a61+a27);
+  a27=(a67*a61);
+  a68=(a68<a27);
+  a67=(a68?a67:0);
+  a27=(!a68);
+  a62=(a40?a62:0);
+  a62=(a27?a62:0);
+  a67=(a67+a62);
+  a62=(a39*a65);
+  a50=(a35*a18);
+  a62=(a62-a50);
+  a62=casadi_fabs(a62);
+  a50=(a20*a65);
+  a22=(a59*a18);
+  a50=(a50-a22);
+  a50=casadi_fabs(a50);
+  a62=(a62+a50);
+  a50=(a67*a62);
+  a22=(a36*a65);
+  a57=(a03*a18);
+  a22=(a22+a57);
+  a22=casadi_fabs(a22);
+  a64=(a68?a64:0);
+  a61=(a27?a61:0);
+  a64=(a64+a61);
+  a61=(a22*a64);
+  a50=(a50<a61);
+  a61=(a50?a65:0);
+  a57=(!a50);
+  a07=(a68?a59:0);
+  a58=(a40?a35:0);
+  a10=(a51?a35:0);
+  a58=(a58+a10);
+  a58=(a27?a58:0);
+  a07=(a07+a58);
+  a07=(a57?a07:0);
+  a61=(a61+a07);
+  a07=(a36*a61);
+  a58=(a50?a18:0);
+  a68=(a68?a20:0);
+  a40=(a40?a39:0);
+  a51=(a51?a39:0);
+  a40=(a40+a51);
+  a27=(a27?a40:0);
+  a68=(a68+a27);
+  a68=(a57?a68:0);
+  a58=(a58+a68);
+  a68=(a03*a58);
+  a07=(a07+a68);
+  a07=casadi_sign(a07);
+  a68=(a61*a07);
+  a27=(a39*a68);
+  a07=(a58*a07);
+  a40=(a35*a07);
+  a27=(a27-a40);
+  a40=casadi_sq(a27);
+  a51=9.9999999999999992e-25;
+  a10=casadi_sq(a39);
+  a11=casadi_sq(a35);
+  a10=(a10+a11);
+  a10=(a51*a10);
+  a11=casadi_sq(a61);
+  a14=casadi_sq(a58);
+  a11=(a11+a14);
+  a10=(a10*a11);
+  a40=(a40<=a10);
+  a10=(a39*a58);
+  a14=(a35*a61);
+  a10=(a10+a14);
+  a14=casadi_sign(a10);
+  a15=(!a40);
+  a22=(a50?a22:0);
+  a67=(a57?a67:0);
+  a22=(a22+a67);
+  a50=(a50?a62:0);
+  a57=(a57?a64:0);
+  a50=(a50+a57);
+  a22=(a22/a50);
+  a27=casadi_sign(a27);
+  a27=(a22*a27);
+  a39=(a27*a39);
+  a39=(a15?a39:0);
+  a50=(a20*a68);
+  a57=(a59*a07);
+  a50=(a50-a57);
+  a57=casadi_sq(a50);
+  a64=casadi_sq(a20);
+  a62=casadi_sq(a59);
+  a64=(a64+a62);
+  a64=(a51*a64);
+  a64=(a64*a11);
+  a57=(a57<=a64);
+  a64=(!a57);
+  a50=casadi_sign(a50);
+  a50=(a22*a50);
+  a62=(a50*a20);
+  a62=(a64?a62:0);
+  a39=(a39+a62);
+  a68=(a18*a68);
+  a07=(a65*a07);
+  a68=(a68-a07);
+  a07=casadi_sq(a68);
+  a62=casadi_sq(a18);
+  a67=casadi_sq(a65);
+  a62=(a62+a67);
+  a51=(a51*a62);
+  a51=(a51*a11);
+  a07=(a07<=a51);
+  a51=(!a07);
+  a68=casadi_sign(a68);
+  a68=(a22*a68);
+  a11=(a68*a18);
+  a11=(a51?a11:0);
+  a39=(a39+a11);
+  a36=(a36-a39);
+  a36=(a36*a58);
+  a35=(a27*a35);
+  a35=(-a35);
+  a35=(a15?a35:0);
+  a39=(a50*a59);
+  a39=(-a39);
+  a39=(a64?a39:0);
+  a35=(a35+a39);
+  a39=(a68*a65);
+  a39=(-a39);
+  a39=(a51?a39:0);
+  a35=(a35+a39);
+  a03=(a03-a35);
+  a03=(a03*a61);
+  a36=(a36-a03);
+  a10=casadi_fabs(a10);
+  a10=(a40?a10:0);
+  a20=(a20*a58);
+  a59=(a59*a61);
+  a20=(a20+a59);
+  a59=casadi_fabs(a20);
+  a59=(a57?a59:0);
+  a10=(a10+a59);
+  a18=(a18*a58);
+  a65=(a65*a61);
+  a18=(a18+a65);
+  a65=casadi_fabs(a18);
+  a65=(a07?a65:0);
+  a10=(a10+a65);
+  a36=(a36/a10);
+  a14=(a14*a36);
+  a40=(a40?a14:0);
+  a27=(a15?a27:0);
+  a15=(a15?a27:0);
+  a40=(a40+a15);
+  a40=(a33*a40);
+  a20=casadi_sign(a20);
+  a20=(a20*a36);
+  a57=(a57?a20:0);
+  a50=(a64?a50:0);
+  a64=(a64?a50:0);
+  a57=(a57+a64);
+  a57=(a06*a57);
+  a64=(a40+a57);
+  a18=casadi_sign(a18);
+  a18=(a18*a36);
+  a07=(a07?a18:0);
+  a68=(a51?a68:0);
+  a51=(a51?a68:0);
+  a07=(a07+a51);
+  a07=(a37*a07);
+  a64=(a64+a07);
+  a64=(a64+a00);
+  a64=(a64+a01);
+  a64=(a64+a17);
+  a64=(a64+a13);
+  a64=(a64+a08);
+  a64=(a64+a24);
+  a64=(a64+a69);
+  a64=(a64+a38);
+  a64=(a64+a19);
+  a64=(a64+a09);
+  a64=(a64+a29);
+  a64=(a64+a26);
+  a64=(a64+a25);
+  a64=(a64+a32);
+  a64=(a64+a41);
+  a64=(a64+a21);
+  a64=(a64+a16);
+  a64=(a64+a47);
+  a64=(a64+a45);
+  a64=casadi_fabs(a64);
+  a51=casadi_inf;
+  a64=(a64<a51);
+  a51=(a30&&a64);
+  a51=(a12&&a51);
+  a68=(-a33);
+  a40=casadi_fmax(a40,a68);
+  a40=casadi_fmin(a40,a33);
+  a40=(a51?a40:0);
+  if (res[0]!=0) res[0][0]=a40;
+  a40=(-a06);
+  a57=casadi_fmax(a57,a40);
+  a57=casadi_fmin(a57,a06);
+  a57=(a51?a57:0);
+  if (res[0]!=0) res[0][1]=a57;
+  a57=(-a37);
+  a07=casadi_fmax(a07,a57);
+  a07=casadi_fmin(a07,a37);
+  a07=(a51?a07:0);
+  if (res[0]!=0) res[0][2]=a07;
+  a07=(a12&&a64);
+  a37=(a07?a21:0);
+  a57=(!a07);
+  a46=(a57?a46:0);
+  a37=(a37+a46);
+  if (res[1]!=0) res[1][0]=a37;
+  a37=(a07?a16:0);
+  a54=(a57?a54:0);
+  a37=(a37+a54);
+  if (res[1]!=0) res[1][1]=a37;
+  a37=(a07?a47:0);
+  a44=(a57?a44:0);
+  a37=(a37+a44);
+  if (res[1]!=0) res[1][2]=a37;
+  a07=(a07?a45:0);
+  a57=(a57?a53:0);
+  a07=(a07+a57);
+  if (res[1]!=0) res[1][3]=a07;
+  a07=(a51?a00:0);
+  a57=(!a51);
+  a00=(a57?a00:0);
+  a07=(a07+a00);
+  if (res[1]!=0) res[1][4]=a07;
+  a07=(a51?a01:0);
+  a01=(a57?a01:0);
+  a07=(a07+a01);
+  if (res[1]!=0) res[1][5]=a07;
+  a07=(a51?a17:0);
+  a17=(a57?a17:0);
+  a07=(a07+a17);
+  if (res[1]!=0) res[1][6]=a07;
+  a07=(a51?a13:0);
+  a13=(a57?a13:0);
+  a07=(a07+a13);
+  if (res[1]!=0) res[1][7]=a07;
+  a07=(a51?a08:0);
+  a08=(a57?a08:0);
+  a07=(a07+a08);
+  if (res[1]!=0) res[1][8]=a07;
+  a07=(a51?a24:0);
+  a24=(a57?a24:0);
+  a07=(a07+a24);
+  if (res[1]!=0) res[1][9]=a07;
+  a07=(a51?a69:0);
+  a69=(a57?a69:0);
+  a07=(a07+a69);
+  if (res[1]!=0) res[1][10]=a07;
+  a07=(a51?a38:0);
+  a38=(a57?a38:0);
+  a07=(a07+a38);
+  if (res[1]!=0) res[1][11]=a07;
+  a07=(a51?a19:0);
+  a19=(a57?a19:0);
+  a07=(a07+a19);
+  if (res[1]!=0) res[1][12]=a07;
+  a07=(a51?a09:0);
+  a09=(a57?a09:0);
+  a07=(a07+a09);
+  if (res[1]!=0) res[1][13]=a07;
+  a07=(a51?a29:0);
+  a29=(a57?a29:0);
+  a07=(a07+a29);
+  if (res[1]!=0) res[1][14]=a07;
+  a07=(a51?a26:0);
+  a26=(a57?a26:0);
+  a07=(a07+a26);
+  if (res[1]!=0) res[1][15]=a07;
+  a07=(a51?a25:0);
+  a25=(a57?a25:0);
+  a07=(a07+a25);
+  if (res[1]!=0) res[1][16]=a07;
+  a07=(a51?a32:0);
+  a32=(a57?a32:0);
+  a07=(a07+a32);
+  if (res[1]!=0) res[1][17]=a07;
+  a51=(a51?a41:0);
+  a57=(a57?a41:0);
+  a51=(a51+a57);
+  if (res[1]!=0) res[1][18]=a51;
+  a22=(a28<a22);
+  a22=(a22?a23:0);
+  a22=(a64?a22:0);
+  a64=(!a64);
+  a23=3.;
+  a64=(a64?a23:0);
+  a22=(a22+a64);
+  a22=(a30?a22:0);
+  a30=(!a30);
+  a30=(a30?a28:0);
+  a22=(a22+a30);
+  a22=(a12?a22:0);
+  a12=(!a12);
+  a30=5.;
+  a12=(a12?a30:0);
+  a22=(a22+a12);
+  if (res[2]!=0) res[2][0]=a22;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a47;
+  if (res[3]!=0) res[3][3]=a45;
+  if (res[3]!=0) res[3][4]=a49;
+  if (res[3]!=0) res[3][5]=a55;
+  if (res[3]!=0) res[3][6]=a43;
+  if (res[3]!=0) res[3][7]=a52;
+  if (res[3]!=0) res[3][8]=a34;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f28(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_ctc_preload_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a30=(a26*a10);
+  a29=(a29+a30);
+  a29=(a29+a21);
+  a30=casadi_sq(a29);
+  a28=(a28+a30);
+  a28=sqrt(a28);
+  a30=(a17+a28);
+  a30=casadi_fabs(a30);
+  a12=casadi_fmax(a12,a30);
+  a30=arg[5]? arg[5][17] : 0;
+  a12=(a12<=a30);
+  a30=arg[5]? arg[5][6] : 0;
+  a04=(a04/a23);
+  a31=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a31=(a31-a23);
+  a23=casadi_fabs(a31);
+  a06=(a06/a09);
+  a32=(a15*a06);
+  a08=(a08/a09);
+  a09=(a14*a08);
+  a32=(a32-a09);
+  a09=casadi_fabs(a32);
+  a33=(a23+a09);
+  a23=(a23-a09);
+  a23=casadi_fabs(a23);
+  a33=(a33-a23);
+  a23=2.;
+  a33=(a33/a23);
+  a29=(a29/a28);
+  a09=(a11*a29);
+  a24=(a24/a28);
+  a28=(a10*a24);
+  a09=(a09-a28);
+  a28=casadi_fabs(a09);
+  a34=(a33+a28);
+  a33=(a33-a28);
+  a33=casadi_fabs(a33);
+  a34=(a34-a33);
+  a34=(a34/a23);
+  a30=(a30<=a34);
+  a33=arg[5]? arg[5][7] : 0;
+  a28=1.;
+  a35=3.3333333333333331e-01;
+  a36=casadi_sq(a04);
+  a37=casadi_sq(a13);
+  a36=(a36-a37);
+  a37=casadi_sq(a06);
+  a38=casadi_sq(a08);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a37=casadi_sq(a29);
+  a38=casadi_sq(a24);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a36=casadi_sq(a36);
+  a37=(2.*a04);
+  a37=(a37*a13);
+  a38=(2.*a06);
+  a38=(a38*a08);
+  a37=(a37+a38);
+  a38=(2.*a29);
+  a38=(a38*a24);
+  a37=(a37+a38);
+  a37=casadi_sq(a37);
+  a36=(a36+a37);
+  a36=sqrt(a36);
+  a35=(a35*a36);
+  a35=(a28-a35);
+  a36=casadi_fabs(a35);
+  a35=(a35+a36);
+  a05=(a05*a35);
+  a05=sqrt(a05);
+  a33=(a33<=a05);
+  a30=(a30&&a33);
+  a33=2.3499999999999999e-01;
+  a33=(a33*a04);
+  a35=(a07*a33);
+  a36=(a00*a13);
+  a37=(a20*a03);
+  a38=(a36*a37);
+  a35=(a35-a38);
+  a33=(a33/a35);
+  a20=(a20*a06);
+  a38=(a22*a20);
+  a39=(a01*a08);
+  a40=(a39*a19);
+  a38=(a38-a40);
+  a20=(a20/a38);
+  a18=(a18*a29);
+  a40=(a27*a18);
+  a41=(a17*a24);
+  a42=(a41*a25);
+  a40=(a40-a42);
+  a18=(a18/a40);
+  a36=(a36/a35);
+  a42=(-a36);
+  a39=(a39/a38);
+  a43=(-a39);
+  a41=(a41/a40);
+  a44=(-a41);
+  a45=arg[4]? arg[4][0] : 0;
+  a46=arg[5]? arg[5][2] : 0;
+  a47=arg[3]? arg[3][0] : 0;
+  a48=arg[0]? arg[0][2] : 0;
+  a49=arg[5]? arg[5][5] : 0;
+  a50=arg[0]? arg[0][0] : 0;
+  a51=(a21-a50);
+  a52=arg[5]? arg[5][4] : 0;
+  a51=(a51/a52);
+  a51=(a51-a48);
+  a51=(a49*a51);
+  a51=(a48+a51);
+  a47=(a47-a51);
+  a46=(a46*a47);
+  a45=(a45+a46);
+  a46=arg[5]? arg[5][0] : 0;
+  a53=arg[2]? arg[2][0] : 0;
+  a53=(a53-a21);
+  a46=(a46*a53);
+  a45=(a45+a46);
+  a46=(a33*a45);
+  a54=arg[4]? arg[4][1] : 0;
+  a55=arg[5]? arg[5][3] : 0;
+  a56=arg[3]? arg[3][1] : 0;
+  a57=arg[0]? arg[0][3] : 0;
+  a58=arg[0]? arg[0][1] : 0;
+  a59=(a16-a58);
+  a59=(a59/a52);
+  a59=(a59-a57);
+  a49=(a49*a59);
+  a49=(a57+a49);
+  a56=(a56-a49);
+  a55=(a55*a56);
+  a54=(a54+a55);
+  a55=arg[5]? arg[5][1] : 0;
+  a59=arg[2]? arg[2][1] : 0;
+  a59=(a59-a16);
+  a55=(a55*a59);
+  a54=(a54+a55);
+  a55=(a36*a54);
+  a46=(a46-a55);
+  a55=(a33*a51);
+  a52=(a36*a49);
+  a55=(a55-a52);
+  a52=(a01*a55);
+  a60=(a52*a02);
+  a60=(a60*a55);
+  a07=(a07/a35);
+  a61=(a07*a49);
+  a37=(a37/a35);
+  a35=(a37*a51);
+  a61=(a61-a35);
+  a35=(a00*a61);
+  a62=(a35*a13);
+  a62=(a62*a61);
+  a60=(a60+a62);
+  a62=(a36*a60);
+  a52=(a52*a03);
+  a52=(a52*a55);
+  a35=(a35*a04);
+  a35=(a35*a61);
+  a52=(a52+a35);
+  a35=(a33*a52);
+  a62=(a62-a35);
+  a46=(a46+a62);
+  a62=(a33*a46);
+  a35=arg[0]? arg[0][4] : 0;
+  a62=(a62*a35);
+  a63=(a20*a45);
+  a64=(a39*a54);
+  a63=(a63-a64);
+  a64=(a20*a51);
+  a65=(a39*a49);
+  a64=(a64-a65);
+  a65=(a17*a64);
+  a66=(a65*a15);
+  a66=(a66*a64);
+  a22=(a22/a38);
+  a67=(a22*a49);
+  a19=(a19/a38);
+  a38=(a19*a51);
+  a67=(a67-a38);
+  a01=(a01*a67);
+  a38=(a01*a08);
+  a38=(a38*a67);
+  a66=(a66+a38);
+  a38=(a39*a66);
+  a65=(a65*a14);
+  a65=(a65*a64);
+  a01=(a01*a06);
+  a01=(a01*a67);
+  a65=(a65+a01);
+  a01=(a20*a65);
+  a38=(a38-a01);
+  a63=(a63+a38);
+  a38=(a20*a63);
+  a01=arg[0]? arg[0][5] : 0;
+  a38=(a38*a01);
+  a62=(a62+a38);
+  a38=(a18*a45);
+  a68=(a41*a54);
+  a38=(a38-a68);
+  a68=(a18*a51);
+  a69=(a41*a49);
+  a68=(a68-a69);
+  a26=(a26*a68);
+  a69=(a26*a11);
+  a69=(a69*a68);
+  a27=(a27/a40);
+  a70=(a27*a49);
+  a25=(a25/a40);
+  a40=(a25*a51);
+  a70=(a70-a40);
+  a17=(a17*a70);
+  a40=(a17*a24);
+  a40=(a40*a70);
+  a69=(a69+a40);
+  a40=(a41*a69);
+  a26=(a26*a10);
+  a26=(a26*a68);
+  a17=(a17*a29);
+  a17=(a17*a70);
+  a26=(a26+a17);
+  a17=(a18*a26);
+  a40=(a40-a17);
+  a38=(a38+a40);
+  a40=(a18*a38);
+  a17=arg[0]? arg[0][6] : 0;
+  a40=(a40*a17);
+  a62=(a62+a40);
+  a40=(a07*a54);
+  a71=(a37*a45);
+  a40=(a40-a71);
+  a52=(a37*a52);
+  a60=(a07*a60);
+  a52=(a52-a60);
+  a40=(a40+a52);
+  a03=(a03*a04);
+  a02=(a02*a13);
+  a03=(a03+a02);
+  a02=(a40*a03);
+  a61=casadi_sq(a61);
+  a61=(a61*a31);
+  a02=(a02+a61);
+  a61=(a33*a02);
+  a03=(a46*a03);
+  a13=casadi_sq(a55);
+  a13=(a13*a31);
+  a03=(a03-a13);
+  a13=(a37*a03);
+  a61=(a61-a13);
+  a13=arg[0]? arg[0][7] : 0;
+  a61=(a61*a13);
+  a62=(a62+a61);
+  a61=(a22*a54);
+  a31=(a19*a45);
+  a61=(a61-a31);
+  a65=(a19*a65);
+  a66=(a22*a66);
+  a65=(a65-a66);
+  a61=(a61+a65);
+  a14=(a14*a06);
+  a15=(a15*a08);
+  a14=(a14+a15);
+  a15=(a61*a14);
+  a67=casadi_sq(a67);
+  a67=(a67*a32);
+  a15=(a15+a67);
+  a67=(a20*a15);
+  a14=(a63*a14);
+  a08=casadi_sq(a64);
+  a08=(a08*a32);
+  a14=(a14-a08);
+  a08=(a19*a14);
+  a67=(a67-a08);
+  a08=arg[0]? arg[0][8] : 0;
+  a67=(a67*a08);
+  a62=(a62+a67);
+  a54=(a27*a54);
+  a45=(a25*a45);
+  a54=(a54-a45);
+  a26=(a25*a26);
+  a69=(a27*a69);
+  a26=(a26-a69);
+  a54=(a54+a26);
+  a10=(a10*a29);
+  a11=(a11*a24);
+  a10=(a10+a11);
+  a11=(a54*a10);
+  a70=casadi_sq(a70);
+  a70=(a70*a09);
+  a11=(a11+a70);
+  a70=(a18*a11);
+  a10=(a38*a10);
+  a24=casadi_sq(a68);
+  a24=(a24*a09);
+  a10=(a10-a24);
+  a24=(a25*a10);
+  a70=(a70-a24);
+  a24=arg[0]? arg[0][9] : 0;
+  a70=(a70*a24);
+  a62=(a62+a70);
+  a37=(a37*a40);
+  a70=arg[0]? arg[0][10] : 0;
+  a37=(a37*a70);
+  a62=(a62-a37);
+  a19=(a19*a61);
+  a37=arg[0]? arg[0][11] : 0;
+  a19=(a19*a37);
+  a62=(a62-a19);
+  a25=(a25*a54);
+  a19=arg[0]? arg[0][12] : 0;
+  a25=(a25*a19);
+  a62=(a62-a25);
+  a25=(a33*a55);
+  a09=arg[0]? arg[0][13] : 0;
+  a25=(a25*a09);
+  a62=(a62+a25);
+  a25=(a20*a64);
+  a29=arg[0]? arg[0][14] : 0;
+  a25=(a25*a29);
+  a62=(a62+a25);
+  a25=(a18*a68);
+  a26=arg[0]? arg[0][15] : 0;
+  a25=(a25*a26);
+  a62=(a62+a25);
+  a25=0.;
+  a69=(a25<=a55);
+  a45=(a69?a28:0);
+  a69=(!a69);
+  a67=-1.;
+  a69=(a69?a67:0);
+  a45=(a45+a69);
+  a69=(a33*a45);
+  a32=arg[0]? arg[0][16] : 0;
+  a69=(a69*a32);
+  a62=(a62+a69);
+  a69=(a25<=a64);
+  a06=(a69?a28:0);
+  a69=(!a69);
+  a69=(a69?a67:0);
+  a06=(a06+a69);
+  a69=(a20*a06);
+  a65=arg[0]? arg[0][17] : 0;
+  a69=(a69*a65);
+  a62=(a62+a69);
+  a25=(a25<=a68);
+  a69=(a25?a28:0);
+  a25=(!a25);
+  a25=(a25?a67:0);
+  a69=(a69+a25);
+  a25=(a18*a69);
+  a67=arg[0]? arg[0][18] : 0;
+  a25=(a25*a67);
+  a62=(a62+a25);
+  a03=(a07*a03);
+  a02=(a36*a02);
+  a03=(a03-a02);
+  a03=(a03*a13);
+  a46=(a36*a46);
+  a46=(a46*a35);
+  a63=(a39*a63);
+  a63=(a63*a01);
+  a46=(a46+a63);
+  a38=(a41*a38);
+  a38=(a38*a17);
+  a46=(a46+a38);
+  a03=(a03-a46);
+  a14=(a22*a14);
+  a15=(a39*a15);
+  a14=(a14-a15);
+  a14=(a14*a08);
+  a03=(a03+a14);
+  a10=(a27*a10);
+  a11=(a41*a11);
+  a10=(a10-a11);
+  a10=(a10*a24);
+  a03=(a03+a10);
+  a07=(a07*a40);
+  a07=(a07*a70);
+  a03=(a03+a07);
+  a22=(a22*a61);
+  a22=(a22*a37);
+  a03=(a03+a22);
+  a27=(a27*a54);
+  a27=(a27*a19);
+  a03=(a03+a27);
+  a55=(a36*a55);
+  a55=(a55*a09);
+  a03=(a03-a55);
+  a64=(a39*a64);
+  a64=(a64*a29);
+  a03=(a03-a64);
+  a68=(a41*a68);
+  a68=(a68*a26);
+  a03=(a03-a68);
+  a36=(a36*a45);
+  a36=(a36*a32);
+  a03=(a03-a36);
+  a39=(a39*a06);
+  a39=(a39*a65);
+  a03=(a03-a39);
+  a41=(a41*a69);
+  a41=(a41*a67);
+  a03=(a03-a41);
+  a41=arg[5]? arg[5][8] : 0;
+  a69=arg[5]? arg[5][9] : 0;
+  a39=arg[5]? arg[5][10] : 0;
+  arg[6]=w+0;
+  arg[7]=w+6;
+  arg[8] = arg[5]? arg[5] + 8 : 0;
+  arg[9] = arg[5]? arg[5] + 11 : 0;
+  arg[10] = arg[5]? arg[5] + 14 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a33;
+  w[1] = a20;
+  w[2] = a18;
+  w[3] = a42;
+  w[4] = a43;
+  w[5] = a44;
+  w[6] = a62;
+  w[7] = a03;
+  if (casadi_f16(arg+6, res+4, iw, w+21, 0)) return 1;
+  a33 = w[17];
+  a20 = w[18];
+  a18 = w[19];
+  a42 = w[20];
+  a43=(a33+a20);
+  a43=(a43+a18);
+  a43=(a43+a35);
+  a43=(a43+a01);
+  a43=(a43+a17);
+  a43=(a43+a13);
+  a43=(a43+a08);
+  a43=(a43+a24);
+  a43=(a43+a70);
+  a43=(a43+a37);
+  a43=(a43+a19);
+  a43=(a43+a09);
+  a43=(a43+a29);
+  a43=(a43+a26);
+  a43=(a43+a32);
+  a43=(a43+a65);
+  a43=(a43+a67);
+  a43=(a43+a21);
+  a43=(a43+a16);
+  a43=(a43+a51);
+  a43=(a43+a49);
+  a43=casadi_fabs(a43);
+  a44=casadi_inf;
+  a43=(a43<a44);
+  a44=(a30&&a43);
+  a44=(a12&&a44);
+  a62=(-a41);
+  a33=casadi_fmax(a33,a62);
+  a33=casadi_fmin(a33,a41);
+  a33=(a44?a33:0);
+  if (res[0]!=0) res[0][0]=a33;
+  a33=(-a69);
+  a20=casadi_fmax(a20,a33);
+  a20=casadi_fmin(a20,a69);
+  a20=(a44?a20:0);
+  if (res[0]!=0) res[0][1]=a20;
+  a20=(-a39);
+  a18=casadi_fmax(a18,a20);
+  a18=casadi_fmin(a18,a39);
+  a18=(a44?a18:0);
+  if (res[0]!=0) res[0][2]=a18;
+  a18=(a12&&a43);
+  a39=(a18?a21:0);
+  a20=(!a18);
+  a50=(a20?a50:0);
+  a39=(a39+a50);
+  if (res[1]!=0) res[1][0]=a39;
+  a39=(a18?a16:0);
+  a58=(a20?a58:0);
+  a39=(a39+a58);
+  if (res[1]!=0) res[1][1]=a39;
+  a39=(a18?a51:0);
+  a48=(a20?a48:0);
+  a39=(a39+a48);
+  if (res[1]!=0) res[1][2]=a39;
+  a18=(a18?a49:0);
+  a20=(a20?a57:0);
+  a18=(a18+a20);
+  if (res[1]!=0) res[1][3]=a18;
+  a18=(a44?a35:0);
+  a20=(!a44);
+  a35=(a20?a35:0);
+  a18=(a18+a35);
+  if (res[1]!=0) res[1][4]=a18;
+  a18=(a44?a01:0);
+  a01=(a20?a01:0);
+  a18=(a18+a01);
+  if (res[1]!=0) res[1][5]=a18;
+  a18=(a44?a17:0);
+  a17=(a20?a17:0);
+  a18=(a18+a17);
+  if (res[1]!=0) res[1][6]=a18;
+  a18=(a44?a13:0);
+  a13=(a20?a13:0);
+  a18=(a18+a13);
+  if (res[1]!=0) res[1][7]=a18;
+  a18=(a44?a08:0);
+  a08=(a20?a08:0);
+  a18=(a18+a08);
+  if (res[1]!=0) res[1][8]=a18;
+  a18=(a44?a24:0);
+  a24=(a20?a24:0);
+  a18=(a18+a24);
+  if (res[1]!=0) res[1][9]=a18;
+  a18=(a44?a70:0);
+  a70=(a20?a70:0);
+  a18=(a18+a70);
+  if (res[1]!=0) res[1][10]=a18;
+  a18=(a44?a37:0);
+  a37=(a20?a37:0);
+  a18=(a18+a37);
+  if (res[1]!=0) res[1][11]=a18;
+  a18=(a44?a19:0);
+  a19=(a20?a19:0);
+  a18=(a18+a19);
+  if (res[1]!=0) res[1][12]=a18;
+  a18=(a44?a09:0);
+  a09=(a20?a09:0);
+  a18=(a18+a09);
+  if (res[1]!=0) res[1][13]=a18;
+  a18=(a44?a29:0);
+  a29=(a20?a29:0);
+  a18=(a18+a29);
+  if (res[1]!=0) res[1][14]=a18;
+  a18=(a44?a26:0);
+  a26=(a20?a26:0);
+  a18=(a18+a26);
+  if (res[1]!=0) res[1][15]=a18;
+  a18=(a44?a32:0);
+  a32=(a20?a32:0);
+  a18=(a18+a32);
+  if (res[1]!=0) res[1][16]=a18;
+  a18=(a44?a65:0);
+  a65=(a20?a65:0);
+  a18=(a18+a65);
+  if (res[1]!=0) res[1][17]=a18;
+  a44=(a44?a67:0);
+  a20=(a20?a67:0);
+  a44=(a44+a20);
+  if (res[1]!=0) res[1][18]=a44;
+  a44=(a42==a23);
+  a23=(a44?a23:0);
+  a44=(!a44);
+  a42=(a42==a28);
+  a20=4.;
+  a42=(a42?a20:0);
+  a44=(a44?a42:0);
+  a23=(a23+a44);
+  a23=(a43?a23:0);
+  a43=(!a43);
+  a44=3.;
+  a43=(a43?a44:0);
+  a23=(a23+a43);
+  a23=(a30?a23:0);
+  a30=(!a30);
+  a30=(a30?a28:0);
+  a23=(a23+a30);
+  a23=(a12?a23:0);
+  a12=(!a12);
+  a30=5.;
+  a12=(a12?a30:0);
+  a23=(a23+a12);
+  if (res[2]!=0) res[2][0]=a23;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a51;
+  if (res[3]!=0) res[3][3]=a49;
+  if (res[3]!=0) res[3][4]=a53;
+  if (res[3]!=0) res[3][5]=a59;
+  if (res[3]!=0) res[3][6]=a47;
+  if (res[3]!=0) res[3][7]=a56;
+  if (res[3]!=0) res[3][8]=a34;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f29(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a26=(a26*a10);
+  a29=(a29+a26);
+  a29=(a29+a21);
+  a26=casadi_sq(a29);
+  a28=(a28+a26);
+  a28=sqrt(a28);
+  a26=(a17+a28);
+  a26=casadi_fabs(a26);
+  a12=casadi_fmax(a12,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a12=(a12<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a04=(a04/a23);
+  a02=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a02=(a02-a23);
+  a02=casadi_fabs(a02);
+  a06=(a06/a09);
+  a15=(a15*a06);
+  a08=(a08/a09);
+  a14=(a14*a08);
+  a15=(a15-a14);
+  a15=casadi_fabs(a15);
+  a14=(a02+a15);
+  a02=(a02-a15);
+  a02=casadi_fabs(a02);
+  a14=(a14-a02);
+  a02=2.;
+  a14=(a14/a02);
+  a29=(a29/a28);
+  a11=(a11*a29);
+  a24=(a24/a28);
+  a10=(a10*a24);
+  a11=(a11-a10);
+  a11=casadi_fabs(a11);
+  a10=(a14+a11);
+  a14=(a14-a11);
+  a14=casadi_fabs(a14);
+  a10=(a10-a14);
+  a10=(a10/a02);
+  a26=(a26<=a10);
+  a14=arg[5]? arg[5][3] : 0;
+  a11=1.;
+  a28=3.3333333333333331e-01;
+  a15=casadi_sq(a04);
+  a09=casadi_sq(a13);
+  a15=(a15-a09);
+  a09=casadi_sq(a06);
+  a23=casadi_sq(a08);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a09=casadi_sq(a29);
+  a23=casadi_sq(a24);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a15=casadi_sq(a15);
+  a09=(2.*a04);
+  a09=(a09*a13);
+  a23=(2.*a06);
+  a23=(a23*a08);
+  a09=(a09+a23);
+  a23=(2.*a29);
+  a23=(a23*a24);
+  a09=(a09+a23);
+  a09=casadi_sq(a09);
+  a15=(a15+a09);
+  a15=sqrt(a15);
+  a28=(a28*a15);
+  a28=(a11-a28);
+  a15=casadi_fabs(a28);
+  a28=(a28+a15);
+  a05=(a05*a28);
+  a05=sqrt(a05);
+  a14=(a14<=a05);
+  a26=(a26&&a14);
+  a14=2.3499999999999999e-01;
+  a14=(a14*a04);
+  a07=(a07*a14);
+  a00=(a00*a13);
+  a03=(a20*a03);
+  a03=(a00*a03);
+  a07=(a07-a03);
+  a14=(a14/a07);
+  a00=(a00/a07);
+  a07=casadi_sq(a00);
+  a01=(a01*a08);
+  a20=(a20*a06);
+  a22=(a22*a20);
+  a19=(a01*a19);
+  a22=(a22-a19);
+  a01=(a01/a22);
+  a19=casadi_sq(a01);
+  a07=(a07+a19);
+  a17=(a17*a24);
+  a18=(a18*a29);
+  a27=(a27*a18);
+  a25=(a17*a25);
+  a27=(a27-a25);
+  a17=(a17/a27);
+  a25=casadi_sq(a17);
+  a07=(a07+a25);
+  a25=arg[7]? arg[7][0] : 0;
+  a29=arg[6]? arg[6][0] : 0;
+  a24=arg[2]? arg[2][0] : 0;
+  a19=(a21-a24);
+  a29=(a29*a19);
+  a06=arg[6]? arg[6][1] : 0;
+  a08=arg[2]? arg[2][1] : 0;
+  a03=(a16-a08);
+  a06=(a06*a03);
+  a29=(a29+a06);
+  a06=arg[6]? arg[6][2] : 0;
+  a13=arg[0]? arg[0][2] : 0;
+  a04=arg[5]? arg[5][1] : 0;
+  a28=arg[0]? arg[0][0] : 0;
+  a15=(a21-a28);
+  a09=arg[5]? arg[5][0] : 0;
+  a15=(a15/a09);
+  a15=(a15-a13);
+  a15=(a04*a15);
+  a15=(a13+a15);
+  a23=arg[3]? arg[3][0] : 0;
+  a30=(a15-a23);
+  a06=(a06*a30);
+  a29=(a29+a06);
+  a06=arg[6]? arg[6][3] : 0;
+  a31=arg[0]? arg[0][3] : 0;
+  a32=arg[0]? arg[0][1] : 0;
+  a33=(a16-a32);
+  a33=(a33/a09);
+  a33=(a33-a31);
+  a04=(a04*a33);
+  a04=(a31+a04);
+  a33=arg[3]? arg[3][1] : 0;
+  a09=(a04-a33);
+  a06=(a06*a09);
+  a29=(a29+a06);
+  a25=(a25-a29);
+  a29=(a14*a25);
+  a20=(a20/a22);
+  a22=arg[7]? arg[7][1] : 0;
+  a06=arg[6]? arg[6][4] : 0;
+  a06=(a06*a19);
+  a34=arg[6]? arg[6][5] : 0;
+  a34=(a34*a03);
+  a06=(a06+a34);
+  a34=arg[6]? arg[6][6] : 0;
+  a34=(a34*a30);
+  a06=(a06+a34);
+  a34=arg[6]? arg[6][7] : 0;
+  a34=(a34*a09);
+  a06=(a06+a34);
+  a22=(a22-a06);
+  a06=(a20*a22);
+  a29=(a29+a06);
+  a18=(a18/a27);
+  a27=arg[7]? arg[7][2] : 0;
+  a06=arg[6]? arg[6][8] : 0;
+  a06=(a06*a19);
+  a19=arg[6]? arg[6][9] : 0;
+  a19=(a19*a03);
+  a06=(a06+a19);
+  a19=arg[6]? arg[6][10] : 0;
+  a19=(a19*a30);
+  a06=(a06+a19);
+  a19=arg[6]? arg[6][11] : 0;
+  a19=(a19*a09);
+  a06=(a06+a19);
+  a27=(a27-a06);
+  a06=(a18*a27);
+  a29=(a29+a06);
+  a06=(a07*a29);
+  a19=(a14*a00);
+  a09=(a20*a01);
+  a19=(a19+a09);
+  a09=(a18*a17);
+  a19=(a19+a09);
+  a25=(a00*a25);
+  a22=(a01*a22);
+  a25=(a25+a22);
+  a27=(a17*a27);
+  a25=(a25+a27);
+  a27=(a19*a25);
+  a06=(a06-a27);
+  a27=casadi_sq(a14);
+  a22=casadi_sq(a20);
+  a27=(a27+a22);
+  a22=casadi_sq(a18);
+  a27=(a27+a22);
+  a07=(a27*a07);
+  a22=(a00*a14);
+  a09=(a01*a20);
+  a22=(a22+a09);
+  a09=(a17*a18);
+  a22=(a22+a09);
+  a19=(a19*a22);
+  a07=(a07-a19);
+  a06=(a06/a07);
+  a14=(a14*a06);
+  a22=(a22*a29);
+  a27=(a27*a25);
+  a22=(a22-a27);
+  a22=(a22/a07);
+  a00=(a00*a22);
+  a14=(a14-a00);
+  a20=(a20*a06);
+  a01=(a01*a22);
+  a20=(a20-a01);
+  a01=(a14+a20);
+  a18=(a18*a06);
+  a17=(a17*a22);
+  a18=(a18-a17);
+  a01=(a01+a18);
+  a17=arg[0]? arg[0][4] : 0;
+  a01=(a01+a17);
+  a22=arg[0]? arg[0][5] : 0;
+  a01=(a01+a22);
+  a06=arg[0]? arg[0][6] : 0;
+  a01=(a01+a06);
+  a00=arg[0]? arg[0][7] : 0;
+  a01=(a01+a00);
+  a07=arg[0]? arg[0][8] : 0;
+  a01=(a01+a07);
+  a27=arg[0]? arg[0][9] : 0;
+  a01=(a01+a27);
+  a25=arg[0]? arg[0][10] : 0;
+  a01=(a01+a25);
+  a29=arg[0]? arg[0][11] : 0;
+  a01=(a01+a29);
+  a19=arg[0]? arg[0][12] : 0;
+  a01=(a01+a19);
+  a09=arg[0]? arg[0][13] : 0;
+  a01=(a01+a09);
+  a30=arg[0]? arg[0][14] : 0;
+  a01=(a01+a30);
+  a03=arg[0]? arg[0][15] : 0;
+  a01=(a01+a03);
+  a34=arg[0]? arg[0][16] : 0;
+  a01=(a01+a34);
+  a35=arg[0]? arg[0][17] : 0;
+  a01=(a01+a35);
+  a36=arg[0]? arg[0][18] : 0;
+  a01=(a01+a36);
+  a01=(a01+a21);
+  a01=(a01+a16);
+  a01=(a01+a15);
+  a01=(a01+a04);
+  a01=casadi_fabs(a01);
+  a37=casadi_inf;
+  a01=(a01<a37);
+  a37=(a26&&a01);
+  a37=(a12&&a37);
+  a38=arg[5]? arg[5][4] : 0;
+  a39=(-a38);
+  a39=casadi_fmax(a14,a39);
+  a39=casadi_fmin(a39,a38);
+  a39=(a37?a39:0);
+  if (res[0]!=0) res[0][0]=a39;
+  a39=arg[5]? arg[5][5] : 0;
+  a40=(-a39);
+  a40=casadi_fmax(a20,a40);
+  a40=casadi_fmin(a40,a39);
+  a40=(a37?a40:0);
+  if (res[0]!=0) res[0][1]=a40;
+  a40=arg[5]? arg[5][6] : 0;
+  a41=(-a40);
+  a41=casadi_fmax(a18,a41);
+  a41=casadi_fmin(a41,a40);
+  a41=(a37?a41:0);
+  if (res[0]!=0) res[0][2]=a41;
+  a41=(a12&&a01);
+  a42=(a41?a21:0);
+  a43=(!a41);
+  a28=(a43?a28:0);
+  a42=(a42+a28);
+  if (res[1]!=0) res[1][0]=a42;
+  a42=(a41?a16:0);
+  a32=(a43?a32:0);
+  a42=(a42+a32);
+  if (res[1]!=0) res[1][1]=a42;
+  a42=(a41?a15:0);
+  a13=(a43?a13:0);
+  a42=(a42+a13);
+  if (res[1]!=0) res[1][2]=a42;
+  a41=(a41?a04:0);
+  a43=(a43?a31:0);
+  a41=(a41+a43);
+  if (res[1]!=0) res[1][3]=a41;
+  a41=(a37?a17:0);
+  a43=(!a37);
+  a17=(a43?a17:0);
+  a41=(a41+a17);
+  if (res[1]!=0) res[1][4]=a41;
+  a41=(a37?a22:0);
+  a22=(a43?a22:0);
+  a41=(a41+a22);
+  if (res[1]!=0) res[1][5]=a41;
+  a41=(a37?a06:0);
+  a06=(a43?a06:0);
+  a41=(a41+a06);
+  if (res[1]!=0) res[1][6]=a41;
+  a41=(a37?a00:0);
+  a00=(a43?a00:0);
+  a41=(a41+a00);
+  if (res[1]!=0) res[1][7]=a41;
+  a41=(a37?a07:0);
+  a07=(a43?a07:0);
+  a41=(a41+a07);
+  if (res[1]!=0) res[1][8]=a41;
+  a41=(a37?a27:0);
+  a27=(a43?a27:0);
+  a41=(a41+a27);
+  if (res[1]!=0) res[1][9]=a41;
+  a41=(a37?a25:0);
+  a25=(a43?a25:0);
+  a41=(a41+a25);
+  if (res[1]!=0) res[1][10]=a41;
+  a41=(a37?a29:0);
+  a29=(a43?a29:0);
+  a41=(a41+a29);
+  if (res[1]!=0) res[1][11]=a41;
+  a41=(a37?a19:0);
+  a19=(a43?a19:0);
+  a41=(a41+a19);
+  if (res[1]!=0) res[1][12]=a41;
+  a41=(a37?a09:0);
+  a09=(a43?a09:0);
+  a41=(a41+a09);
+  if (res[1]!=0) res[1][13]=a41;
+  a41=(a37?a30:0);
+  a30=(a43?a30:0);
+  a41=(a41+a30);
+  if (res[1]!=0) res[1][14]=a41;
+  a41=(a37?a03:0);
+  a03=(a43?a03:0);
+  a41=(a41+a03);
+  if (res[1]!=0) res[1][15]=a41;
+  a41=(a37?a34:0);
+  a34=(a43?a34:0);
+  a41=(a41+a34);
+  if (res[1]!=0) res[1][16]=a41;
+  a41=(a37?a35:0);
+  a35=(a43?a35:0);
+  a41=(a41+a35);
+  if (res[1]!=0) res[1][17]=a41;
+  a37=(a37?a36:0);
+  a43=(a43?a36:0);
+  a37=(a37+a43);
+  if (res[1]!=0) res[1][18]=a37;
+  a37=0.;
+  a14=casadi_fabs(a14);
+  a14=(a14-a38);
+  a20=casadi_fabs(a20);
+  a20=(a20-a39);
+  a14=casadi_fmax(a14,a20);
+  a18=casadi_fabs(a18);
+  a18=(a18-a40);
+  a14=casadi_fmax(a14,a18);
+  a37=(a37<a14);
+  a37=(a37?a02:0);
+  a37=(a01?a37:0);
+  a01=(!a01);
+  a02=3.;
+  a01=(a01?a02:0);
+  a37=(a37+a01);
+  a37=(a26?a37:0);
+  a26=(!a26);
+  a26=(a26?a11:0);
+  a37=(a37+a26);
+  a37=(a12?a37:0);
+  a12=(!a12);
+  a26=5.;
+  a12=(a12?a26:0);
+  a37=(a37+a12);
+  if (res[2]!=0) res[2][0]=a37;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a15;
+  if (res[3]!=0) res[3][3]=a04;
+  a24=(a24-a21);
+  if (res[3]!=0) res[3][4]=a24;
+  a08=(a08-a16);
+  if (res[3]!=0) res[3][5]=a08;
+  a23=(a23-a15);
+  if (res[3]!=0) res[3][6]=a23;
+  a33=(a33-a04);
+  if (res[3]!=0) res[3][7]=a33;
+  if (res[3]!=0) res[3][8]=a10;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f30(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_minmax_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a26=(a26*a10);
+  a29=(a29+a26);
+  a29=(a29+a21);
+  a26=casadi_sq(a29);
+  a28=(a28+a26);
+  a28=sqrt(a28);
+  a26=(a17+a28);
+  a26=casadi_fabs(a26);
+  a12=casadi_fmax(a12,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a12=(a12<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a04=(a04/a23);
+  a02=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a02=(a02-a23);
+  a02=casadi_fabs(a02);
+  a06=(a06/a09);
+  a15=(a15*a06);
+  a08=(a08/a09);
+  a14=(a14*a08);
+  a15=(a15-a14);
+  a15=casadi_fabs(a15);
+  a14=(a02+a15);
+  a02=(a02-a15);
+  a02=casadi_fabs(a02);
+  a14=(a14-a02);
+  a02=2.;
+  a14=(a14/a02);
+  a29=(a29/a28);
+  a11=(a11*a29);
+  a24=(a24/a28);
+  a10=(a10*a24);
+  a11=(a11-a10);
+  a11=casadi_fabs(a11);
+  a10=(a14+a11);
+  a14=(a14-a11);
+  a14=casadi_fabs(a14);
+  a10=(a10-a14);
+  a10=(a10/a02);
+  a26=(a26<=a10);
+  a14=arg[5]? arg[5][3] : 0;
+  a11=1.;
+  a28=3.3333333333333331e-01;
+  a15=casadi_sq(a04);
+  a09=casadi_sq(a13);
+  a15=(a15-a09);
+  a09=casadi_sq(a06);
+  a23=casadi_sq(a08);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a09=casadi_sq(a29);
+  a23=casadi_sq(a24);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a15=casadi_sq(a15);
+  a09=(2.*a04);
+  a09=(a09*a13);
+  a23=(2.*a06);
+  a23=(a23*a08);
+  a09=(a09+a23);
+  a23=(2.*a29);
+  a23=(a23*a24);
+  a09=(a09+a23);
+  a09=casadi_sq(a09);
+  a15=(a15+a09);
+  a15=sqrt(a15);
+  a28=(a28*a15);
+  a28=(a11-a28);
+  a15=casadi_fabs(a28);
+  a28=(a28+a15);
+  a05=(a05*a28);
+  a05=sqrt(a05);
+  a14=(a14<=a05);
+  a26=(a26&&a14);
+  a14=arg[5]? arg[5][4] : 0;
+  a28=2.3499999999999999e-01;
+  a28=(a28*a04);
+  a07=(a07*a28);
+  a00=(a00*a13);
+  a03=(a20*a03);
+  a03=(a00*a03);
+  a07=(a07-a03);
+  a28=(a28/a07);
+  a03=(a14*a28);
+  a13=0.;
+  a04=arg[7]? arg[7][0] : 0;
+  a15=arg[6]? arg[6][0] : 0;
+  a09=arg[2]? arg[2][0] : 0;
+  a23=(a21-a09);
+  a15=(a15*a23);
+  a30=arg[6]? arg[6][1] : 0;
+  a31=arg[2]? arg[2][1] : 0;
+  a32=(a16-a31);
+  a30=(a30*a32);
+  a15=(a15+a30);
+  a30=arg[6]? arg[6][2] : 0;
+  a33=arg[0]? arg[0][2] : 0;
+  a34=arg[5]? arg[5][1] : 0;
+  a35=arg[0]? arg[0][0] : 0;
+  a36=(a21-a35);
+  a37=arg[5]? arg[5][0] : 0;
+  a36=(a36/a37);
+  a36=(a36-a33);
+  a36=(a34*a36);
+  a36=(a33+a36);
+  a38=arg[3]? arg[3][0] : 0;
+  a39=(a36-a38);
+  a30=(a30*a39);
+  a15=(a15+a30);
+  a30=arg[6]? arg[6][3] : 0;
+  a40=arg[0]? arg[0][3] : 0;
+  a41=arg[0]? arg[0][1] : 0;
+  a42=(a16-a41);
+  a42=(a42/a37);
+  a42=(a42-a40);
+  a34=(a34*a42);
+  a34=(a40+a34);
+  a42=arg[3]? arg[3][1] : 0;
+  a37=(a34-a42);
+  a30=(a30*a37);
+  a15=(a15+a30);
+  a04=(a04-a15);
+  a28=(a28*a04);
+  a20=(a20*a06);
+  a22=(a22*a20);
+  a01=(a01*a08);
+  a19=(a01*a19);
+  a22=(a22-a19);
+  a20=(a20/a22);
+  a19=arg[7]? arg[7][1] : 0;
+  a08=arg[6]? arg[6][4] : 0;
+  a08=(a08*a23);
+  a06=arg[6]? arg[6][5] : 0;
+  a06=(a06*a32);
+  a08=(a08+a06);
+  a06=arg[6]? arg[6][6] : 0;
+  a06=(a06*a39);
+  a08=(a08+a06);
+  a06=arg[6]? arg[6][7] : 0;
+  a06=(a06*a37);
+  a08=(a08+a06);
+  a19=(a19-a08);
+  a08=(a20*a19);
+  a28=(a28+a08);
+  a18=(a18*a29);
+  a27=(a27*a18);
+  a17=(a17*a24);
+  a25=(a17*a25);
+  a27=(a27-a25);
+  a18=(a18/a27);
+  a25=arg[7]? arg[7][2] : 0;
+  a24=arg[6]? arg[6][8] : 0;
+  a24=(a24*a23);
+  a23=arg[6]? arg[6][9] : 0;
+  a23=(a23*a32);
+  a24=(a24+a23);
+  a23=arg[6]? arg[6][10] : 0;
+  a23=(a23*a39);
+  a24=(a24+a23);
+  a23=arg[6]? arg[6][11] : 0;
+  a23=(a23*a37);
+  a24=(a24+a23);
+  a25=(a25-a24);
+  a24=(a18*a25);
+  a28=(a28+a24);
+  a00=(a00/a07);
+  a07=(a14*a00);
+  a24=(a28*a07);
+  a00=(a00*a04);
+  a01=(a01/a22);
+  a19=(a01*a19);
+  a00=(a00+a19);
+  a17=(a17/a27);
+  a25=(a17*a25);
+  a00=(a00+a25);
+  a25=(a00*a03);
+  a24=(a24-a25);
+  a24=casadi_fabs(a24);
+  a13=(a13<a24);
+  a25=arg[5]? arg[5][5] : 0;
+  a01=(a25*a01);
+  a27=(a03*a01);
+  a20=(a25*a20);
+  a19=(a07*a20);
+  a27=(a27-a19);
+  a27=casadi_fabs(a27);
+  a19=arg[5]? arg[5][6] : 0;
+  a18=(a19*a18);
+  a22=(a18*a01);
+  a17=(a19*a17);
+  a04=(a17*a20);
+  a22=(a22-a04);
+  a22=casadi_fabs(a22);
+  a27=(a27+a22);
+  a22=(a24*a27);
+  a22=(a13?a22:0);
+  a04=(a28*a01);
+  a23=(a00*a20);
+  a04=(a04-a23);
+  a04=casadi_fabs(a04);
+  a23=(a20*a07);
+  a37=(a01*a03);
+  a23=(a23-a37);
+  a23=casadi_fabs(a23);
+  a37=(a18*a07);
+  a39=(a17*a03);
+  a37=(a37-a39);
+  a37=casadi_fabs(a37);
+  a23=(a23+a37);
+  a23=(a13?a23:0);
+  a37=(!a13);
+  a39=(a37?a11:0);
+  a23=(a23+a39);
+  a39=(a04*a23);
+  a22=(a22<a39);
+  a04=(a22?a04:0);
+  a39=(!a22);
+  a24=(a13?a24:0);
+  a24=(a39?a24:0);
+  a04=(a04+a24);
+  a24=(a03*a17);
+  a32=(a07*a18);
+  a24=(a24-a32);
+  a24=casadi_fabs(a24);
+  a32=(a20*a17);
+  a29=(a01*a18);
+  a32=(a32-a29);
+  a32=casadi_fabs(a32);
+  a24=(a24+a32);
+  a32=(a04*a24);
+  a29=(a28*a17);
+  a08=(a00*a18);
+  a29=(a29-a08);
+  a29=casadi_fabs(a29);
+  a27=(a22?a27:0);
+  a23=(a39?a23:0);
+  a27=(a27+a23);
+  a23=(a29*a27);
+  a32=(a32<a23);
+  a23=(a32?a17:0);
+  a08=(!a32);
+  a06=(a22?a01:0);
+  a15=(a13?a07:0);
+  a30=(a37?a07:0);
+  a15=(a15+a30);
+  a15=(a39?a15:0);
+  a06=(a06+a15);
+  a06=(a08?a06:0);
+  a23=(a23+a06);
+  a06=(a28*a23);
+  a15=(a32?a18:0);
+  a22=(a22?a20:0);
+  a13=(a13?a03:0);
+  a37=(a37?a03:0);
+  a13=(a13+a37);
+  a39=(a39?a13:0);
+  a22=(a22+a39);
+  a22=(a08?a22:0);
+  a15=(a15+a22);
+  a22=(a00*a15);
+  a06=(a06-a22);
+  a06=casadi_sign(a06);
+  a22=(a23*a06);
+  a39=(a03*a22);
+  a06=(a15*a06);
+  a13=(a07*a06);
+  a39=(a39-a13);
+  a13=casadi_sq(a39);
+  a37=9.9999999999999992e-25;
+  a30=casadi_sq(a03);
+  a43=casadi_sq(a07);
+  a30=(a30+a43);
+  a30=(a37*a30);
+  a43=casadi_sq(a23);
+  a44=casadi_sq(a15);
+  a43=(a43+a44);
+  a30=(a30*a43);
+  a13=(a13<=a30);
+  a30=(a03*a15);
+  a44=(a07*a23);
+  a30=(a30+a44);
+  a44=casadi_sign(a30);
+  a45=(!a13);
+  a29=(a32?a29:0);
+  a04=(a08?a04:0);
+  a29=(a29+a04);
+  a32=(a32?a24:0);
+  a08=(a08?a27:0);
+  a32=(a32+a08);
+  a29=(a29/a32);
+  a39=casadi_sign(a39);
+  a39=(a29*a39);
+  a03=(a39*a03);
+  a03=(a45?a03:0);
+  a32=(a20*a22);
+  a08=(a01*a06);
+  a32=(a32-a08);
+  a08=casadi_sq(a32);
+  a27=casadi_sq(a20);
+  a24=casadi_sq(a01);
+  a27=(a27+a24);
+  a27=(a37*a27);
+  a27=(a27*a43);
+  a08=(a08<=a27);
+  a27=(!a08);
+  a32=casadi_sign(a32);
+  a32=(a29*a32);
+  a24=(a32*a20);
+  a24=(a27?a24:0);
+  a03=(a03+a24);
+  a22=(a18*a22);
+  a06=(a17*a06);
+  a22=(a22-a06);
+  a06=casadi_sq(a22);
+  a24=casadi_sq(a18);
+  a04=casadi_sq(a17);
+  a24=(a24+a04);
+  a37=(a37*a24);
+  a37=(a37*a43);
+  a06=(a06<=a37);
+  a37=(!a06);
+  a22=casadi_sign(a22);
+  a22=(a29*a22);
+  a43=(a22*a18);
+  a43=(a37?a43:0);
+  a03=(a03+a43);
+  a28=(a28-a03);
+  a28=(a28*a15);
+  a07=(a39*a07);
+  a07=(-a07);
+  a07=(a45?a07:0);
+  a03=(a32*a01);
+  a03=(-a03);
+  a03=(a27?a03:0);
+  a07=(a07+a03);
+  a03=(a22*a17);
+  a03=(-a03);
+  a03=(a37?a03:0);
+  a07=(a07+a03);
+  a00=(a00+a07);
+  a00=(a00*a23);
+  a28=(a28+a00);
+  a30=casadi_fabs(a30);
+  a30=(a13?a30:0);
+  a20=(a20*a15);
+  a01=(a01*a23);
+  a20=(a20+a01);
+  a01=casadi_fabs(a20);
+  a01=(a08?a01:0);
+  a30=(a30+a01);
+  a18=(a18*a15);
+  a17=(a17*a23);
+  a18=(a18+a17);
+  a17=casadi_fabs(a18);
+  a17=(a06?a17:0);
+  a30=(a30+a17);
+  a28=(a28/a30);
+  a44=(a44*a28);
+  a13=(a13?a44:0);
+  a39=(a45?a39:0);
+  a45=(a45?a39:0);
+  a13=(a13+a45);
+  a13=(a14*a13);
+  a20=casadi_sign(a20);
+  a20=(a20*a28);
+  a08=(a08?a20:0);
+  a32=(a27?a32:0);
+  a27=(a27?a32:0);
+  a08=(a08+a27);
+  a08=(a25*a08);
+  a27=(a13+a08);
+  a18=casadi_sign(a18);
+  a18=(a18*a28);
+  a06=(a06?a18:0);
+  a22=(a37?a22:0);
+  a37=(a37?a22:0);
+  a06=(a06+a37);
+  a06=(a19*a06);
+  a27=(a27+a06);
+  a37=arg[0]? arg[0][4] : 0;
+  a27=(a27+a37);
+  a22=arg[0]? arg[0][5] : 0;
+  a27=(a27+a22);
+  a18=arg[0]? arg[0][6] : 0;
+  a27=(a27+a18);
+  a28=arg[0]? arg[0][7] : 0;
+  a27=(a27+a28);
+  a32=arg[0]? arg[0][8] : 0;
+  a27=(a27+a32);
+  a20=arg[0]? arg[0][9] : 0;
+  a27=(a27+a20);
+  a45=arg[0]? arg[0][10] : 0;
+  a27=(a27+a45);
+  a39=arg[0]? arg[0][11] : 0;
+  a27=(a27+a39);
+  a44=arg[0]? arg[0][12] : 0;
+  a27=(a27+a44);
+  a30=arg[0]? arg[0][13] : 0;
+  a27=(a27+a30);
+  a17=arg[0]? arg[0][14] : 0;
+  a27=(a27+a17);
+  a23=arg[0]? arg[0][15] : 0;
+  a27=(a27+a23);
+  a15=arg[0]? arg[0][16] : 0;
+  a27=(a27+a15);
+  a01=arg[0]? arg[0][17] : 0;
+  a27=(a27+a01);
+  a00=arg[0]? arg[0][18] : 0;
+  a27=(a27+a00);
+  a27=(a27+a21);
+  a27=(a27+a16);
+  a27=(a27+a36);
+  a27=(a27+a34);
+  a27=casadi_fabs(a27);
+  a07=casadi_inf;
+  a27=(a27<a07);
+  a07=(a26&&a27);
+  a07=(a12&&a07);
+  a03=(-a14);
+  a13=casadi_fmax(a13,a03);
+  a13=casadi_fmin(a13,a14);
+  a13=(a07?a13:0);
+  if (res[0]!=0) res[0][0]=a13;
+  a13=(-a25);
+  a08=casadi_fmax(a08,a13);
+  a08=casadi_fmin(a08,a25);
+  a08=(a07?a08:0);
+  if (res[0]!=0) res[0][1]=a08;
+  a08=(-a19);
+  a06=casadi_fmax(a06,a08);
+  a06=casadi_fmin(a06,a19);
+  a06=(a07?a06:0);
+  if (res[0]!=0) res[0][2]=a06;
+  a06=(a12&&a27);
+  a19=(a06?a21:0);
+  a08=(!a06);
+  a35=(a08?a35:0);
+  a19=(a19+a35);
+  if (res[1]!=0) res[1][0]=a19;
+  a19=(a06?a16:0);
+  a41=(a08?a41:0);
+  a19=(a19+a41);
+  if (res[1]!=0) res[1][1]=a19;
+  a19=(a06?a36:0);
+  a33=(a08?a33:0);
+  a19=(a19+a33);
+  if (res[1]!=0) res[1][2]=a19;
+  a06=(a06?a34:0);
+  a08=(a08?a40:0);
+  a06=(a06+a08);
+  if (res[1]!=0) res[1][3]=a06;
+  a06=(a07?a37:0);
+  a08=(!a07);
+  a37=(a08?a37:0);
+  a06=(a06+a37);
+  if (res[1]!=0) res[1][4]=a06;
+  a06=(a07?a22:0);
+  a22=(a08?a22:0);
+  a06=(a06+a22);
+  if (res[1]!=0) res[1][5]=a06;
+  a06=(a07?a18:0);
+  a18=(a08?a18:0);
+  a06=(a06+a18);
+  if (res[1]!=0) res[1][6]=a06;
+  a06=(a07?a28:0);
+  a28=(a08?a28:0);
+  a06=(a06+a28);
+  if (res[1]!=0) res[1][7]=a06;
+  a06=(a07?a32:0);
+  a32=(a08?a32:0);
+  a06=(a06+a32);
+  if (res[1]!=0) res[1][8]=a06;
+  a06=(a07?a20:0);
+  a20=(a08?a20:0);
+  a06=(a06+a20);
+  if (res[1]!=0) res[1][9]=a06;
+  a06=(a07?a45:0);
+  a45=(a08?a45:0);
+  a06=(a06+a45);
+  if (res[1]!=0) res[1][10]=a06;
+  a06=(a07?a39:0);
+  a39=(a08?a39:0);
+  a06=(a06+a39);
+  if (res[1]!=0) res[1][11]=a06;
+  a06=(a07?a44:0);
+  a44=(a08?a44:0);
+  a06=(a06+a44);
+  if (res[1]!=0) res[1][12]=a06;
+  a06=(a07?a30:0);
+  a30=(a08?a30:0);
+  a06=(a06+a30);
+  if (res[1]!=0) res[1][13]=a06;
+  a06=(a07?a17:0);
+  a17=(a08?a17:0);
+  a06=(a06+a17);
+  if (res[1]!=0) res[1][14]=a06;
+  a06=(a07?a23:0);
+  a23=(a08?a23:0);
+  a06=(a06+a23);
+  if (res[1]!=0) res[1][15]=a06;
+  a06=(a07?a15:0);
+  a15=(a08?a15:0);
+  a06=(a06+a15);
+  if (res[1]!=0) res[1][16]=a06;
+  a06=(a07?a01:0);
+  a01=(a08?a01:0);
+  a06=(a06+a01);
+  if (res[1]!=0) res[1][17]=a06;
+  a07=(a07?a00:0);
+  a08=(a08?a00:0);
+  a07=(a07+a08);
+  if (res[1]!=0) res[1][18]=a07;
+  a29=(a11<a29);
+  a29=(a29?a02:0);
+  a29=(a27?a29:0);
+  a27=(!a27);
+  a02=3.;
+  a27=(a27?a02:0);
+  a29=(a29+a27);
+  a29=(a26?a29:0);
+  a26=(!a26);
+  a26=(a26?a11:0);
+  a29=(a29+a26);
+  a29=(a12?a29:0);
+  a12=(!a12);
+  a26=5.;
+  a12=(a12?a26:0);
+  a29=(a29+a12);
+  if (res[2]!=0) res[2][0]=a29;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a36;
+  if (res[3]!=0) res[3][3]=a34;
+  a09=(a09-a21);
+  if (res[3]!=0) res[3][4]=a09;
+  a31=(a31-a16);
+  if (res[3]!=0) res[3][5]=a31;
+  a38=(a38-a36);
+  if (res[3]!=0) res[3][6]=a38;
+  a42=(a42-a34);
+  if (res[3]!=0) res[3][7]=a42;
+  if (res[3]!=0) res[3][8]=a10;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f31(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_minmax_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_preload_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a26=(a26*a10);
+  a29=(a29+a26);
+  a29=(a29+a21);
+  a26=casadi_sq(a29);
+  a28=(a28+a26);
+  a28=sqrt(a28);
+  a26=(a17+a28);
+  a26=casadi_fabs(a26);
+  a12=casadi_fmax(a12,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a12=(a12<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a04=(a04/a23);
+  a02=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a02=(a02-a23);
+  a02=casadi_fabs(a02);
+  a06=(a06/a09);
+  a15=(a15*a06);
+  a08=(a08/a09);
+  a14=(a14*a08);
+  a15=(a15-a14);
+  a15=casadi_fabs(a15);
+  a14=(a02+a15);
+  a02=(a02-a15);
+  a02=casadi_fabs(a02);
+  a14=(a14-a02);
+  a02=2.;
+  a14=(a14/a02);
+  a29=(a29/a28);
+  a11=(a11*a29);
+  a24=(a24/a28);
+  a10=(a10*a24);
+  a11=(a11-a10);
+  a11=casadi_fabs(a11);
+  a10=(a14+a11);
+  a14=(a14-a11);
+  a14=casadi_fabs(a14);
+  a10=(a10-a14);
+  a10=(a10/a02);
+  a26=(a26<=a10);
+  a14=arg[5]? arg[5][3] : 0;
+  a11=1.;
+  a28=3.3333333333333331e-01;
+  a15=casadi_sq(a04);
+  a09=casadi_sq(a13);
+  a15=(a15-a09);
+  a09=casadi_sq(a06);
+  a23=casadi_sq(a08);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a09=casadi_sq(a29);
+  a23=casadi_sq(a24);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a15=casadi_sq(a15);
+  a09=(2.*a04);
+  a09=(a09*a13);
+  a23=(2.*a06);
+  a23=(a23*a08);
+  a09=(a09+a23);
+  a23=(2.*a29);
+  a23=(a23*a24);
+  a09=(a09+a23);
+  a09=casadi_sq(a09);
+  a15=(a15+a09);
+  a15=sqrt(a15);
+  a28=(a28*a15);
+  a28=(a11-a28);
+  a15=casadi_fabs(a28);
+  a28=(a28+a15);
+  a05=(a05*a28);
+  a05=sqrt(a05);
+  a14=(a14<=a05);
+  a26=(a26&&a14);
+  a14=2.3499999999999999e-01;
+  a14=(a14*a04);
+  a07=(a07*a14);
+  a13=(a00*a13);
+  a03=(a20*a03);
+  a03=(a13*a03);
+  a07=(a07-a03);
+  a14=(a14/a07);
+  a20=(a20*a06);
+  a22=(a22*a20);
+  a01=(a01*a08);
+  a19=(a01*a19);
+  a22=(a22-a19);
+  a20=(a20/a22);
+  a18=(a18*a29);
+  a27=(a27*a18);
+  a17=(a17*a24);
+  a25=(a17*a25);
+  a27=(a27-a25);
+  a18=(a18/a27);
+  a13=(a13/a07);
+  a07=(-a13);
+  a01=(a01/a22);
+  a22=(-a01);
+  a17=(a17/a27);
+  a27=(-a17);
+  a25=arg[7]? arg[7][0] : 0;
+  a24=arg[6]? arg[6][0] : 0;
+  a29=arg[2]? arg[2][0] : 0;
+  a19=(a21-a29);
+  a24=(a24*a19);
+  a08=arg[6]? arg[6][1] : 0;
+  a06=arg[2]? arg[2][1] : 0;
+  a03=(a16-a06);
+  a08=(a08*a03);
+  a24=(a24+a08);
+  a08=arg[6]? arg[6][2] : 0;
+  a04=arg[0]? arg[0][2] : 0;
+  a28=arg[5]? arg[5][1] : 0;
+  a15=arg[0]? arg[0][0] : 0;
+  a09=(a21-a15);
+  a23=arg[5]? arg[5][0] : 0;
+  a09=(a09/a23);
+  a09=(a09-a04);
+  a09=(a28*a09);
+  a09=(a04+a09);
+  a30=arg[3]? arg[3][0] : 0;
+  a31=(a09-a30);
+  a08=(a08*a31);
+  a24=(a24+a08);
+  a08=arg[6]? arg[6][3] : 0;
+  a32=arg[0]? arg[0][3] : 0;
+  a33=arg[0]? arg[0][1] : 0;
+  a34=(a16-a33);
+  a34=(a34/a23);
+  a34=(a34-a32);
+  a28=(a28*a34);
+  a28=(a32+a28);
+  a34=arg[3]? arg[3][1] : 0;
+  a23=(a28-a34);
+  a08=(a08*a23);
+  a24=(a24+a08);
+  a25=(a25-a24);
+  a24=(a14*a25);
+  a08=arg[7]? arg[7][1] : 0;
+  a35=arg[6]? arg[6][4] : 0;
+  a35=(a35*a19);
+  a36=arg[6]? arg[6][5] : 0;
+  a36=(a36*a03);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][6] : 0;
+  a36=(a36*a31);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][7] : 0;
+  a36=(a36*a23);
+  a35=(a35+a36);
+  a08=(a08-a35);
+  a35=(a20*a08);
+  a24=(a24+a35);
+  a35=arg[7]? arg[7][2] : 0;
+  a36=arg[6]? arg[6][8] : 0;
+  a36=(a36*a19);
+  a19=arg[6]? arg[6][9] : 0;
+  a19=(a19*a03);
+  a36=(a36+a19);
+  a19=arg[6]? arg[6][10] : 0;
+  a19=(a19*a31);
+  a36=(a36+a19);
+  a19=arg[6]? arg[6][11] : 0;
+  a19=(a19*a23);
+  a36=(a36+a19);
+  a35=(a35-a36);
+  a36=(a18*a35);
+  a24=(a24+a36);
+  a13=(a13*a25);
+  a01=(a01*a08);
+  a13=(a13+a01);
+  a17=(a17*a35);
+  a13=(a13+a17);
+  a13=(-a13);
+  a17=arg[5]? arg[5][4] : 0;
+  a35=arg[5]? arg[5][5] : 0;
+  a01=arg[5]? arg[5][6] : 0;
+  arg[8]=w+0;
+  arg[9]=w+6;
+  arg[10] = arg[5]? arg[5] + 4 : 0;
+  arg[11] = arg[5]? arg[5] + 7 : 0;
+  arg[12] = arg[5]? arg[5] + 10 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a14;
+  w[1] = a20;
+  w[2] = a18;
+  w[3] = a07;
+  w[4] = a22;
+  w[5] = a27;
+  w[6] = a24;
+  w[7] = a13;
+  if (casadi_f16(arg+8, res+4, iw, w+21, 0)) return 1;
+  a14 = w[17];
+  a20 = w[18];
+  a18 = w[19];
+  a07 = w[20];
+  a22=(a14+a20);
+  a22=(a22+a18);
+  a27=arg[0]? arg[0][4] : 0;
+  a22=(a22+a27);
+  a24=arg[0]? arg[0][5] : 0;
+  a22=(a22+a24);
+  a13=arg[0]? arg[0][6] : 0;
+  a22=(a22+a13);
+  a08=arg[0]? arg[0][7] : 0;
+  a22=(a22+a08);
+  a25=arg[0]? arg[0][8] : 0;
+  a22=(a22+a25);
+  a36=arg[0]? arg[0][9] : 0;
+  a22=(a22+a36);
+  a19=arg[0]? arg[0][10] : 0;
+  a22=(a22+a19);
+  a23=arg[0]? arg[0][11] : 0;
+  a22=(a22+a23);
+  a31=arg[0]? arg[0][12] : 0;
+  a22=(a22+a31);
+  a03=arg[0]? arg[0][13] : 0;
+  a22=(a22+a03);
+  a37=arg[0]? arg[0][14] : 0;
+  a22=(a22+a37);
+  a38=arg[0]? arg[0][15] : 0;
+  a22=(a22+a38);
+  a39=arg[0]? arg[0][16] : 0;
+  a22=(a22+a39);
+  a40=arg[0]? arg[0][17] : 0;
+  a22=(a22+a40);
+  a41=arg[0]? arg[0][18] : 0;
+  a22=(a22+a41);
+  a22=(a22+a21);
+  a22=(a22+a16);
+  a22=(a22+a09);
+  a22=(a22+a28);
+  a22=casadi_fabs(a22);
+  a42=casadi_inf;
+  a22=(a22<a42);
+  a42=(a26&&a22);
+  a42=(a12&&a42);
+  a43=(-a17);
+  a14=casadi_fmax(a14,a43);
+  a14=casadi_fmin(a14,a17);
+  a14=(a42?a14:0);
+  if (res[0]!=0) res[0][0]=a14;
+  a14=(-a35);
+  a20=casadi_fmax(a20,a14);
+  a20=casadi_fmin(a20,a35);
+  a20=(a42?a20:0);
+  if (res[0]!=0) res[0][1]=a20;
+  a20=(-a01);
+  a18=casadi_fmax(a18,a20);
+  a18=casadi_fmin(a18,a01);
+  a18=(a42?a18:0);
+  if (res[0]!=0) res[0][2]=a18;
+  a18=(a12&&a22);
+  a01=(a18?a21:0);
+  a20=(!a18);
+  a15=(a20?a15:0);
+  a01=(a01+a15);
+  if (res[1]!=0) res[1][0]=a01;
+  a01=(a18?a16:0);
+  a33=(a20?a33:0);
+  a01=(a01+a33);
+  if (res[1]!=0) res[1][1]=a01;
+  a01=(a18?a09:0);
+  a04=(a20?a04:0);
+  a01=(a01+a04);
+  if (res[1]!=0) res[1][2]=a01;
+  a18=(a18?a28:0);
+  a20=(a20?a32:0);
+  a18=(a18+a20);
+  if (res[1]!=0) res[1][3]=a18;
+  a18=(a42?a27:0);
+  a20=(!a42);
+  a27=(a20?a27:0);
+  a18=(a18+a27);
+  if (res[1]!=0) res[1][4]=a18;
+  a18=(a42?a24:0);
+  a24=(a20?a24:0);
+  a18=(a18+a24);
+  if (res[1]!=0) res[1][5]=a18;
+  a18=(a42?a13:0);
+  a13=(a20?a13:0);
+  a18=(a18+a13);
+  if (res[1]!=0) res[1][6]=a18;
+  a18=(a42?a08:0);
+  a08=(a20?a08:0);
+  a18=(a18+a08);
+  if (res[1]!=0) res[1][7]=a18;
+  a18=(a42?a25:0);
+  a25=(a20?a25:0);
+  a18=(a18+a25);
+  if (res[1]!=0) res[1][8]=a18;
+  a18=(a42?a36:0);
+  a36=(a20?a36:0);
+  a18=(a18+a36);
+  if (res[1]!=0) res[1][9]=a18;
+  a18=(a42?a19:0);
+  a19=(a20?a19:0);
+  a18=(a18+a19);
+  if (res[1]!=0) res[1][10]=a18;
+  a18=(a42?a23:0);
+  a23=(a20?a23:0);
+  a18=(a18+a23);
+  if (res[1]!=0) res[1][11]=a18;
+  a18=(a42?a31:0);
+  a31=(a20?a31:0);
+  a18=(a18+a31);
+  if (res[1]!=0) res[1][12]=a18;
+  a18=(a42?a03:0);
+  a03=(a20?a03:0);
+  a18=(a18+a03);
+  if (res[1]!=0) res[1][13]=a18;
+  a18=(a42?a37:0);
+  a37=(a20?a37:0);
+  a18=(a18+a37);
+  if (res[1]!=0) res[1][14]=a18;
+  a18=(a42?a38:0);
+  a38=(a20?a38:0);
+  a18=(a18+a38);
+  if (res[1]!=0) res[1][15]=a18;
+  a18=(a42?a39:0);
+  a39=(a20?a39:0);
+  a18=(a18+a39);
+  if (res[1]!=0) res[1][16]=a18;
+  a18=(a42?a40:0);
+  a40=(a20?a40:0);
+  a18=(a18+a40);
+  if (res[1]!=0) res[1][17]=a18;
+  a42=(a42?a41:0);
+  a20=(a20?a41:0);
+  a42=(a42+a20);
+  if (res[1]!=0) res[1][18]=a42;
+  a42=(a07==a02);
+  a02=(a42?a02:0);
+  a42=(!a42);
+  a07=(a07==a11);
+  a20=4.;
+  a07=(a07?a20:0);
+  a42=(a42?a07:0);
+  a02=(a02+a42);
+  a02=(a22?a02:0);
+  a22=(!a22);
+  a42=3.;
+  a22=(a22?a42:0);
+  a02=(a02+a22);
+  a02=(a26?a02:0);
+  a26=(!a26);
+  a26=(a26?a11:0);
+  a02=(a02+a26);
+  a02=(a12?a02:0);
+  a12=(!a12);
+  a26=5.;
+  a12=(a12?a26:0);
+  a02=(a02+a12);
+  if (res[2]!=0) res[2][0]=a02;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a09;
+  if (res[3]!=0) res[3][3]=a28;
+  a29=(a29-a21);
+  if (res[3]!=0) res[3][4]=a29;
+  a06=(a06-a16);
+  if (res[3]!=0) res[3][5]=a06;
+  a30=(a30-a09);
+  if (res[3]!=0) res[3][6]=a30;
+  a34=(a34-a28);
+  if (res[3]!=0) res[3][7]=a34;
+  if (res[3]!=0) res[3][8]=a10;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f32(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_preload_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -17741,7 +22355,7 @@ static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f27(arg, res, iw, w, mem);
+  return casadi_f33(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_plant_xedd_checkout(void) {
@@ -17789,7 +22403,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* unequal_plant_xedd_sparsity_in(casadi_int
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s2;
-    case 3: return casadi_s14;
+    case 3: return casadi_s15;
     default: return 0;
   }
 }
@@ -17818,7 +22432,7 @@ CASADI_SYMBOL_EXPORT int unequal_plant_xedd_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* unequal_plant_step:(x[4],tau_a[3],plant[21],h)->(x_next[4]) */
-static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -19802,7 +24416,7 @@ static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f28(arg, res, iw, w, mem);
+  return casadi_f34(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_plant_step_checkout(void) {
@@ -19849,7 +24463,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* unequal_plant_step_sparsity_in(casadi_int
   switch (i) {
     case 0: return casadi_s3;
     case 1: return casadi_s2;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     case 3: return casadi_s9;
     default: return 0;
   }
@@ -19879,7 +24493,7 @@ CASADI_SYMBOL_EXPORT int unequal_plant_step_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* unequal_measure:(xe[2],plant[21])->(qa[3]) */
-static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14;
   a00=0.;
@@ -20005,7 +24619,7 @@ static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f29(arg, res, iw, w, mem);
+  return casadi_f35(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_measure_checkout(void) {
@@ -20049,7 +24663,7 @@ CASADI_SYMBOL_EXPORT const char* unequal_measure_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s14;
+    case 1: return casadi_s15;
     default: return 0;
   }
 }
@@ -20078,7 +24692,7 @@ CASADI_SYMBOL_EXPORT int unequal_measure_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* unequal_na_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20095,7 +24709,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20120,19 +24734,19 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20145,7 +24759,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f30(arg, res, iw, w, mem);
+  return casadi_f36(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_closed_loop_checkout(void) {
@@ -20190,17 +24804,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_closed_loop_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20222,7 +24836,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_closed_loop_work_bytes(casadi_int *sz_arg, c
 }
 
 /* unequal_na_minmax_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20239,7 +24853,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20264,19 +24878,19 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20289,7 +24903,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f31(arg, res, iw, w, mem);
+  return casadi_f37(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_minmax_closed_loop_checkout(void) {
@@ -20334,17 +24948,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_minmax_closed_loop_name_out(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20366,7 +24980,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_minmax_closed_loop_work_bytes(casadi_int *sz
 }
 
 /* unequal_na_preload_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+256, *w07=w+260, *w08=w+263, *w09=w+269, *w10=w+271, *w11=w+273, *w13=w+275, *w14=w+278, w15, w16;
   casadi_real w17, *w18=w+297, *w19=w+301;
@@ -20383,7 +24997,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20408,19 +25022,19 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20433,7 +25047,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f32(arg, res, iw, w, mem);
+  return casadi_f38(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_preload_closed_loop_checkout(void) {
@@ -20478,17 +25092,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_preload_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20510,7 +25124,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_preload_closed_loop_work_bytes(casadi_int *s
 }
 
 /* unequal_na_proj_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20527,7 +25141,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20552,19 +25166,19 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20577,7 +25191,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f33(arg, res, iw, w, mem);
+  return casadi_f39(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_closed_loop_checkout(void) {
@@ -20622,17 +25236,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_proj_closed_loop_name_out(casadi_int
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20654,7 +25268,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_proj_closed_loop_work_bytes(casadi_int *sz_a
 }
 
 /* unequal_na_proj_minmax_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20671,7 +25285,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20696,19 +25310,19 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20721,7 +25335,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f34(arg, res, iw, w, mem);
+  return casadi_f40(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_minmax_closed_loop_checkout(void) {
@@ -20766,17 +25380,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_proj_minmax_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20798,7 +25412,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_proj_minmax_closed_loop_work_bytes(casadi_in
 }
 
 /* unequal_na_proj_preload_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+257, *w07=w+261, *w08=w+264, *w09=w+270, *w10=w+272, *w11=w+274, *w13=w+276, *w14=w+279, w15, w16;
   casadi_real w17, *w18=w+298, *w19=w+302;
@@ -20815,7 +25429,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20840,19 +25454,19 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20865,7 +25479,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f35(arg, res, iw, w, mem);
+  return casadi_f41(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_preload_closed_loop_checkout(void) {
@@ -20910,17 +25524,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_proj_preload_closed_loop_name_out(ca
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20942,7 +25556,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_proj_preload_closed_loop_work_bytes(casadi_i
 }
 
 /* unequal_apd_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20959,7 +25573,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20984,19 +25598,19 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -21009,7 +25623,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f36(arg, res, iw, w, mem);
+  return casadi_f42(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_closed_loop_checkout(void) {
@@ -21054,17 +25668,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_apd_closed_loop_name_out(casadi_int i) 
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -21086,7 +25700,7 @@ CASADI_SYMBOL_EXPORT int unequal_apd_closed_loop_work_bytes(casadi_int *sz_arg, 
 }
 
 /* unequal_apd_minmax_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -21103,7 +25717,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -21128,19 +25742,19 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -21153,7 +25767,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f37(arg, res, iw, w, mem);
+  return casadi_f43(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_minmax_closed_loop_checkout(void) {
@@ -21198,17 +25812,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_apd_minmax_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -21230,7 +25844,7 @@ CASADI_SYMBOL_EXPORT int unequal_apd_minmax_closed_loop_work_bytes(casadi_int *s
 }
 
 /* unequal_apd_preload_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+247, *w07=w+251, *w08=w+254, *w09=w+260, *w10=w+262, *w11=w+264, *w13=w+266, *w14=w+269, w15, w16;
   casadi_real w17, *w18=w+288, *w19=w+292;
@@ -21247,7 +25861,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -21272,19 +25886,19 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -21297,7 +25911,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f38(arg, res, iw, w, mem);
+  return casadi_f44(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_preload_closed_loop_checkout(void) {
@@ -21342,17 +25956,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_apd_preload_closed_loop_name_out(casadi
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -21373,8 +25987,884 @@ CASADI_SYMBOL_EXPORT int unequal_apd_preload_closed_loop_work_bytes(casadi_int *
   return 0;
 }
 
+/* unequal_ctc_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f45(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
+  casadi_real w17, *w18=w+164, *w19=w+168;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f27(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f45(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 183;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 183*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_ctc_minmax_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f46(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
+  casadi_real w17, *w18=w+164, *w19=w+168;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f46(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 183;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 183*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_ctc_preload_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f47(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+243, *w07=w+247, *w08=w+250, *w09=w+256, *w10=w+258, *w11=w+260, *w13=w+262, *w14=w+265, w15, w16;
+  casadi_real w17, *w18=w+284, *w19=w+288;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f47(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 303;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 303*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f48(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w15=w+130, *w16=w+133, w17, w18, w19, *w20=w+152, *w21=w+156;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f30(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f48(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_minmax_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f49(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w15=w+130, *w16=w+133, w17, w18, w19, *w20=w+152, *w21=w+156;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f31(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f49(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_preload_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f50(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+215, *w07=w+219, *w15=w+222, *w16=w+225, w17, w18, w19, *w20=w+244, *w21=w+248;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f32(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f50(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 263;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 263*sizeof(casadi_real);
+  return 0;
+}
+
 /* unequal_forward_dynamics_jacobians:(xe[2],xed[2],tau_a[3],theta[15])->(xedd[2],d_xe[4],d_xed[4],d_tau_a[6],d_theta[30],sing[2]) */
-static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f51(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -23574,7 +29064,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f39(arg, res, iw, w, mem);
+  return casadi_f51(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_forward_dynamics_jacobians_checkout(void) {
@@ -23661,7 +29151,7 @@ CASADI_SYMBOL_EXPORT int unequal_forward_dynamics_jacobians_work_bytes(casadi_in
 }
 
 /* unequal_inverse_dynamics:(xe[2],xed[2],xedd[2],theta[15])->(u[2],sing[2]) */
-static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f52(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -24222,7 +29712,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f40(arg, res, iw, w, mem);
+  return casadi_f52(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_checkout(void) {
@@ -24301,7 +29791,7 @@ CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* unequal_inverse_dynamics_jacobians:(xe[2],xed[2],xedd[2],theta[15])->(u[2],d_xe[4],d_xed[4],sing[2]) */
-static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f53(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -26009,7 +31499,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f41(arg, res, iw, w, mem);
+  return casadi_f53(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_jacobians_checkout(void) {
@@ -26092,7 +31582,7 @@ CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_jacobians_work_bytes(casadi_in
 }
 
 /* unequal_sampled_step_xedd:(xe[2],xed[2],tau_a[3],theta[15])->(xedd[2],sing[2]) */
-static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f55(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -26670,7 +32160,7 @@ static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 /* unequal_sampled_step:(x[4],tau_a[3],theta[15],T)->(x_next[4],sing[2]) */
-static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f54(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w00=w+64, w01, w02, *w03=w+68, *w04=w+70, *w05=w+72, *w06=w+74, *w08=w+77, *w09=w+79, *w10=w+81;
   casadi_real w11, *w12=w+85, *w13=w+89;
@@ -26692,7 +32182,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=w09;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26709,7 +32199,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26728,7 +32218,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26745,7 +32235,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26763,7 +32253,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26780,7 +32270,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26799,7 +32289,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26816,7 +32306,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26834,7 +32324,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26851,7 +32341,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26870,7 +32360,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26887,7 +32377,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f43(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f55(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26900,7 +32390,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f42(arg, res, iw, w, mem);
+  return casadi_f54(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_sampled_step_checkout(void) {
@@ -26979,7 +32469,7 @@ CASADI_SYMBOL_EXPORT int unequal_sampled_step_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* unequal_sampled_step_jacobians:(x[4],tau_a[3],theta[15],T)->(x_next[4],d_x[16],d_tau_a[12],sing[2]) */
-static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i, j;
   casadi_real **res1=res+4, *rr, *w00=w+251, w01, w02, *w03=w+255, *w04=w+257, *w05=w+259, *w06=w+261, *w08=w+264, *w09=w+266, *w10=w+270;
   casadi_real *w11=w+274, *w12=w+280, *w13=w+282, w14, *w15=w+286, *w16=w+290, *w17=w+294, *w18=w+300, *w19=w+304, *w20=w+308, *w21=w+314, *w22=w+318;
@@ -27010,7 +32500,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w11;
   res1[4]=0;
   res1[5]=w12;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w13;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -27031,7 +32521,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w17;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w18;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -27054,7 +32544,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w20;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w21;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -27075,7 +32565,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w23;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w24;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -27097,7 +32587,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w25;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w26;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -27118,7 +32608,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w29;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w30;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -27141,7 +32631,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w32;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w33;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -27162,7 +32652,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w35;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w36;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -27184,7 +32674,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w37;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w38;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -27205,7 +32695,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w41;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w42;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -27228,7 +32718,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w44;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w45;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -27249,7 +32739,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w47;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f39(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f51(arg1, res1, iw, w, 0)) return 1;
   rr=w48;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -27262,18 +32752,18 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w50;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w49; i<12; ++i) *rr++ = *cs++;
-  casadi_densify(w50, casadi_s18, w51, 0);
+  casadi_densify(w50, casadi_s20, w51, 0);
   w02 = 6.;
   w02  = (w01/w02);
   for (rr=w52, cs=w50+0; cs!=w50+16; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
-  casadi_trans(w52,casadi_s20, w53, casadi_s19, iw);
+  casadi_trans(w52,casadi_s22, w53, casadi_s21, iw);
   casadi_clear(w54, 14);
   for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w52;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w52, 2, w50, casadi_s18, w54);
+  casadi_mtimes_dense_sparse(w52, 2, w50, casadi_s20, w54);
   casadi_clear(w52, 8);
   for (i=0, rr=w55, cs=w11; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
   rr=w56;
@@ -27284,15 +32774,15 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w57;
   for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
   for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
-  casadi_trans(w57,casadi_s22, w58, casadi_s21, iw);
-  casadi_densify(w58, casadi_s21, w59, 0);
-  casadi_project(w50, casadi_s18, w60, casadi_s23, w);
+  casadi_trans(w57,casadi_s24, w58, casadi_s23, iw);
+  casadi_densify(w58, casadi_s23, w59, 0);
+  casadi_project(w50, casadi_s20, w60, casadi_s25, w);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w58, cs=w58; i<22; ++i) (*rr++)  = (w14*(*cs++));
-  casadi_project(w58, casadi_s21, w61, casadi_s23, w);
+  casadi_project(w58, casadi_s23, w61, casadi_s25, w);
   for (i=0, rr=w60, cs=w61; i<24; ++i) (*rr++) += (*cs++);
-  for (cii=casadi_s24, rr=w56, cs=w60; cii!=casadi_s24+14; ++cii) *rr++ = cs[*cii];
+  for (cii=casadi_s26, rr=w56, cs=w60; cii!=casadi_s26+14; ++cii) *rr++ = cs[*cii];
   for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
   casadi_clear(w56, 14);
   for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
@@ -27300,7 +32790,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w53;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w53, 2, w60, casadi_s23, w56);
+  casadi_mtimes_dense_sparse(w53, 2, w60, casadi_s25, w56);
   casadi_clear(w53, 8);
   for (i=0, rr=w55, cs=w17; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
   rr=w62;
@@ -27314,7 +32804,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s18, w63, 0);
+  casadi_densify(w50, casadi_s20, w63, 0);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w14*(*cs++));
@@ -27341,7 +32831,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s18, w63, 0);
+  casadi_densify(w50, casadi_s20, w63, 0);
   for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w01*(*cs++));
   for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
   for (rr=w62, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
@@ -27576,7 +33066,7 @@ static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f44(arg, res, iw, w, mem);
+  return casadi_f56(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_sampled_step_jacobians_checkout(void) {
@@ -27635,7 +33125,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* unequal_sampled_step_jacobians_sparsity_i
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_sampled_step_jacobians_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s3;
-    case 1: return casadi_s25;
+    case 1: return casadi_s27;
     case 2: return casadi_s5;
     case 3: return casadi_s0;
     default: return 0;
