@@ -92,7 +92,7 @@ def cmd_derive(args):
 def cmd_table3(args):
     from .analysis.experiment import run_table3
     run_table3(_model(args), as_json=args.json, exact_encoders=args.exact_encoders,
-               save=args.save, progress=_progress)
+               save=args.save, progress=_progress, include=tuple(args.include))
     return 0
 
 
@@ -375,6 +375,9 @@ def build_parser():
     p.add_argument("--exact-encoders", action="store_true",
                    help="no encoder quantisation (default: [sensing].encoder_counts_per_rev)")
     p.add_argument("--save", metavar="FILE", help="also write the numbers and provenance as JSON")
+    p.add_argument("--include", nargs="+", choices=["ctc", "lqr"], default=[], metavar="LAW",
+                   help="also run these model-based controllers with Tables 1-2: ctc (computed "
+                   "torque), lqr (time-varying LQR along each move; needs the control extra)")
     p.set_defaults(func=cmd_table3)
     p = sub.add_parser("figures", parents=[common], help="write the figures as PNG",
                        description="Write errors_<speed>.png (x and y error against time, APD "
