@@ -263,7 +263,7 @@ def _simulate_rows(study, c, m, d):
     return rows
 
 
-@pytest.mark.parametrize("name", ["adaptation", "robustness"])
+@pytest.mark.parametrize("name", ["adaptation", "robustness", "model_based"])
 def test_study_rows_equal_simulate_bit_for_bit(name):
     s = read_study(STUDIES / f"{name}.toml", quick=True)
     rows = _all_rows(s)
