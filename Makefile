@@ -10,7 +10,7 @@ OUT    ?= out
 MODEL_DIRS := $(patsubst %/manifest.json,%,$(wildcard pm2dof/generated/*/manifest.json))
 LIBS := $(foreach d,$(MODEL_DIRS),$(d)/lib$(notdir $(d)).so)
 
-.PHONY: install derive derive-all libs test check-install dist demo bench c-example clean help
+.PHONY: install derive derive-all libs test docs check-install dist demo bench c-example clean help
 
 help:
 	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
@@ -19,6 +19,7 @@ help:
 	@echo "make derive-all  re-derive every shipped model (after a change to pm2dof/derive/)"
 	@echo "make dist     build the sdist and the wheel into dist/"
 	@echo "make check-install  build the wheel, install it in a fresh venv outside the checkout, smoke-test it"
+	@echo "make docs     build the documentation site into site/ (mkdocs build --strict)"
 	@echo "make bench    controller step-time benchmark"
 	@echo "make c-example  standalone C: NA against the compiled plant, paced at 2 ms"
 	@echo "make install  only create .venv, install pm2dof (editable) and compile the generated C"
@@ -48,6 +49,13 @@ derive-all: $(STAMP)
 test: install
 	$(PY) -m pytest -q
 
+# the documentation site: docs/*.md and the docstrings, warnings are errors (mkdocs.yml).
+# NO_MKDOCS_2_WARNING silences the Material theme's banner about MkDocs 2 (pinned < 2).
+docs: $(STAMP)
+	NO_MKDOCS_2_WARNING=1 $(VENV)/bin/mkdocs build --strict --site-dir site
+	! grep -l -E ':(func|class|meth|attr|mod|data|exc):' site/api.html || \
+		{ echo "make docs: Sphinx roles left in site/api.html (docs/_ext/sphinx_roles.py)"; exit 1; }
+
 dist: $(STAMP)
 	rm -rf dist
 	$(PY) -m build --outdir dist .
@@ -65,4 +73,4 @@ c-example: install
 	$(MAKE) -C examples/c run
 
 clean:
-	rm -rf $(VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT)
+	rm -rf $(VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT) site

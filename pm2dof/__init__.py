@@ -15,7 +15,8 @@ The package is layered; imports only point down (tests/test_layers.py checks it)
 =================  ==========================================================================
 ``core/``          1. the thin runtime: model file, ``Model``, the C binding. NumPy only.
 ``control/``       2. controllers, trajectories, closed-loop rollouts (one call into C each).
-``analysis/``      3. the paper's experiment, identification, reports, result files.
+``analysis/``      3. the paper's experiment, reports, result files.
+``identification/`` 3. logs, excitations, the least-squares fit of theta (``pm2dof identify``).
 ``bench/``         3. the step-time benchmark.
 ``studies/``       3. many-rollout studies on Dask, results in Parquet.
 ``figures/``       4. matplotlib figures and the demo.
@@ -47,7 +48,7 @@ _LAZY = {
     "table3": "pm2dof.analysis.experiment",
     "PAPER_TABLE3": "pm2dof.analysis.experiment",
     "repeated_runs": "pm2dof.analysis.experiment",
-    "identifiability": "pm2dof.analysis.identify",
+    "identifiability": "pm2dof.identification.base",
     "model_report": "pm2dof.analysis.report",
     "run_bench": "pm2dof.bench",
     "split_comparison": "pm2dof.analysis.splits",
@@ -56,15 +57,15 @@ _LAZY = {
     "read_study": "pm2dof.studies",
     "run_study": "pm2dof.studies",
     "StudyFileError": "pm2dof.studies",
-    # identification from logs (issue 13)
-    "IdentLog": "pm2dof.analysis.ident_log",
-    "LogError": "pm2dof.analysis.ident_log",
-    "read_log": "pm2dof.analysis.ident_log",
-    "write_log": "pm2dof.analysis.ident_log",
-    "excite": "pm2dof.analysis.excite",
-    "identify_log": "pm2dof.analysis.ident_data",
-    "design_excitation": "pm2dof.analysis.excitation_design",
-    "load_excitation": "pm2dof.analysis.excitation_design",
+    # identification from logs (issue 13; pm2dof.identification, issue 19)
+    "IdentLog": "pm2dof.identification.log",
+    "LogError": "pm2dof.identification.log",
+    "read_log": "pm2dof.identification.log",
+    "write_log": "pm2dof.identification.log",
+    "excite": "pm2dof.identification.excitation",
+    "identify_log": "pm2dof.identification.fit",
+    "design_excitation": "pm2dof.identification.design",
+    "load_excitation": "pm2dof.identification.design",
     # derivatives and linear design (issue 21)
     "linearize_trajectory": "pm2dof.linear",
     "statespace": "pm2dof.linear",

@@ -6,7 +6,8 @@ Typical use:
   pm2dof table3 [--json]      the paper's Table 3: APD vs NA (and NA with Gamma = 0)
   pm2dof figures --out DIR    error, torque, theta_hat and repeated-run figures (PNG)
   pm2dof report               what the compiled model says (Me, cond(S^T S), rank of Y)
-  pm2dof identify [--report]  identifiable parameters; least-squares estimate of theta
+  pm2dof identify report      identifiable parameters (base parameters, null space)
+  pm2dof identify fit [LOG]   least squares for theta from a log (without one: a simulated run)
   pm2dof splits [--tau-max X] torque splits (min-norm, min-max, preload) in closed loop
   pm2dof maps --out DIR       singularities, conditioning, force/acceleration capability maps
   pm2dof animate --out F.gif  the move as an animation: legs to scale, error magnified
@@ -19,12 +20,14 @@ Typical use:
 The model: every command that uses one takes --model NAME|PATH, a shipped model's name
 (`pm2dof models` lists them) or your model file (default: shang2010, the paper's robot), and
 --generated DIR when its generated C is not in the default folder (generated/<stem>/ beside
-the model file). Where a file names its model (a study file), that model is the default and
---model overrides it. Run `pm2dof COMMAND --help` for the details of one command.
+the model file). Where a file names its model (a study file; a log or an excitation file, for
+pm2dof identify), that model is the default: --model overrides a study's, and must match a
+log's or an excitation file's. Run `pm2dof COMMAND --help` for the details of one command.
 """
 import argparse
 import sys
 import warnings
+from pathlib import Path
 
 from .analysis.progress import Progress
 from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
@@ -58,7 +61,6 @@ def cmd_models(args):
 
 def cmd_models_copy(args):
     import shutil
-    from pathlib import Path
     from .core.paths import resolve_model
     src = resolve_model(args.copy[0])
     dest = Path(args.copy[1]).expanduser()
@@ -110,38 +112,218 @@ def cmd_demo(args):
     return 0
 
 
-def cmd_identify(args):
-    if (args.excite or args.design_excitation) and not args.out:
-        raise ArgumentError("--excite and --design-excitation need --out FILE")
-    if args.excite:  # issue 13: simulated robot -> log file
-        from .analysis.excite import run_excite
-        run_excite(_model(args), args.out, excitation_file=args.excitation,
-                   duration=args.duration, quantise=not args.exact_encoders,
-                   controller=args.controller, progress=_progress)
-        return 0
-    if args.design_excitation:  # issue 13: D-optimal periodic excitation -> TOML
-        from .analysis.excitation_design import run_design
-        run_design(_model(args), args.out, base_hz=args.base_hz, harmonics=args.harmonics,
-                   periods=args.periods, v_max=args.v_max, a_max=args.a_max,
-                   tau_fraction=args.tau_fraction, seed=args.design_seed, progress=_progress)
-        return 0
-    if args.monte_carlo:  # issue 13: the targets, measured over seeds
-        from .analysis.ident_study import run_monte_carlo
-        run_monte_carlo(_model(args), args.monte_carlo, excitation_file=args.excitation,
-                        duration=args.duration, as_json=args.json,
-                        progress=None if args.json else _progress)
-        return 0
-    if args.data:  # issue 13: measured log -> base parameters, physical theta
-        from .analysis.ident_report import run_identify_data
-        run_identify_data(_model(args), args.data, save=args.save, as_json=args.json,
-                          cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
-                          seed=args.seed_na, time_tolerance=args.time_tolerance,
-                          progress=None if args.json else _progress)
-        return 0
-    from .analysis.identify import run_identify
-    run_identify(_model(args), report_only=args.report, duration=args.duration, save=args.save,
-                 seed=args.seed_na, progress=_progress)
+def _identify(cmd):
+    """``cmd`` with --model/--generated given before the sub-command taken as given after it."""
+    def run(args):
+        for key in ("model", "generated"):
+            before = getattr(args, f"identify_{key}", None)
+            if before is not None:
+                if getattr(args, key) not in (None, before):
+                    raise ArgumentError(f"--{key} given twice ({before!r} before the "
+                                        f"sub-command, {getattr(args, key)!r} after it)")
+                setattr(args, key, before)
+        return cmd(args)
+    return run
+
+
+def _ident_progress(args):
+    """Stage lines and bars on stderr (main()'s, --quiet aside); none with --json."""
+    return None if getattr(args, "json", False) else _progress
+
+
+def cmd_identify_report(args):
+    from .identification.base import format_identifiability, identifiability
+    print(format_identifiability(identifiability(_model(args))))
     return 0
+
+
+def cmd_identify_excite(args):
+    from .identification.excitation import run_excite
+    run_excite(args.out, model=args.model, generated=args.generated,
+               excitation_file=args.excitation, duration=args.duration,
+               quantise=not args.exact_encoders, controller=args.controller,
+               progress=_ident_progress(args))
+    return 0
+
+
+def cmd_identify_fit(args):
+    from .identification.report import run_fit
+    run_fit(args.log, model=args.model, generated=args.generated,
+            excitation_file=args.excitation, duration=args.duration,
+            quantise=not args.exact_encoders, controller=args.controller, save=args.save,
+            as_json=args.json, cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
+            time_tolerance=args.time_tolerance, seed=args.seed_na,
+            progress=_ident_progress(args))
+    return 0
+
+
+def cmd_identify_design(args):
+    from .identification.design import run_design
+    run_design(_model(args), args.out, base_hz=args.base_hz, harmonics=args.harmonics,
+               periods=args.periods, v_max=args.v_max, a_max=args.a_max,
+               tau_fraction=args.tau_fraction, seed=args.seed, progress=_ident_progress(args))
+    return 0
+
+
+def cmd_identify_monte_carlo(args):
+    from .identification.monte_carlo import run_monte_carlo
+    run_monte_carlo(args.seeds, model=args.model, generated=args.generated,
+                    excitation_file=args.excitation, duration=args.duration, as_json=args.json,
+                    progress=_ident_progress(args))
+    return 0
+
+
+def cmd_identify_without_subcommand(args):
+    raise ArgumentError("pm2dof identify needs a sub-command: report, excite, fit, design or "
+                        "monte-carlo (plain `pm2dof identify` was replaced by: pm2dof identify "
+                        "report, and pm2dof identify fit)")
+
+
+#: the flags that chose a mode of `pm2dof identify` before it had sub-commands -> the command
+#: that replaced each, and whether the flag took a value
+_IDENTIFY_REPLACED = {"--report": ("pm2dof identify report", 0),
+                      "--excite": ("pm2dof identify excite --out LOG", 0),
+                      "--data": ("pm2dof identify fit LOG", "?"),
+                      "--design-excitation": ("pm2dof identify design --out FILE", 0),
+                      "--monte-carlo": ("pm2dof identify monte-carlo N", "?")}
+
+
+class _Replaced(argparse.Action):
+    """A removed option: refused while parsing, naming the command that replaced it."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        raise ArgumentError(f"pm2dof identify {option_string} was replaced by: {self.const}")
+
+
+def _wrap(text):
+    """A description wrapped for a parser whose epilog keeps its line breaks."""
+    import textwrap
+    return textwrap.fill(text, 79)
+
+
+def _identify_parser(sub, common):
+    p = sub.add_parser("identify", help="identification of theta: report, excite, fit, design, "
+                       "monte-carlo",
+                       description=_wrap("Identify the dynamic parameters theta (eq. 13: S^T "
+                       "tau_a = Y theta) from logs of encoder angles and commanded torques: which "
+                       "combinations of theta the data can determine (report), an excitation "
+                       "to run (design), a run of it on the simulated robot written as a log "
+                       "(excite), and least squares from a log or a simulated run (fit). Logs "
+                       "and excitation files record their model (a shipped model's name or the "
+                       "model file's path relative to themselves): that model is the default "
+                       "of fit, excite and monte-carlo, and --model must match it. The results: "
+                       "docs/results-identification.md."),
+                       formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
+                           "examples:\n"
+                           "  pm2dof identify report\n"
+                           "  pm2dof identify design --out exc.toml\n"
+                           "  pm2dof identify excite --excitation exc.toml --out run.csv\n"
+                           "  pm2dof identify fit run.csv --save theta.json --seed-na\n"
+                           "  pm2dof identify monte-carlo 50 --excitation exc.toml"))
+    for flag, (new, nargs) in _IDENTIFY_REPLACED.items():
+        p.add_argument(flag, action=_Replaced, nargs=nargs, const=new, help=argparse.SUPPRESS)
+    for flag in ("--model", "--generated"):   # before the sub-command: as after it
+        p.add_argument(flag, dest=f"identify_{flag[2:]}", help=argparse.SUPPRESS)
+    p.set_defaults(func=cmd_identify_without_subcommand)
+    isub = p.add_subparsers(dest="identify_command", metavar="SUBCOMMAND")
+
+    def excitation_options(r, what):
+        r.add_argument("--excitation", metavar="FILE", help=f"excitation file to {what} "
+                       "(written by `pm2dof identify design`); its model is the default")
+        r.add_argument("--duration", type=float, metavar="S", help="without --excitation: "
+                       "length of the default multi-sine, s (default 4)")
+
+    def simulated_options(r, when=""):
+        r.add_argument("--exact-encoders", action="store_true",
+                       help=f"{when}no encoder quantisation (a noise-free log)")
+        r.add_argument("--controller", choices=["apd", "na"],
+                       help=f"{when}controller tracking the excitation, with Tables 1-2 "
+                       "(default apd)")
+
+    def sub_command(name, help, description, examples, func):
+        r = isub.add_parser(name, parents=[common], help=help, description=_wrap(description),
+                            formatter_class=argparse.RawDescriptionHelpFormatter,
+                            epilog="examples:\n" + "\n".join(f"  {e}" for e in examples))
+        r.set_defaults(func=_identify(func))
+        return r
+
+    sub_command("report", "identifiable parameters: base parameters, null space",
+                "Stack the regressor Y over random states around the middle of the model's "
+                "first move and print its rank, the identifiable base parameters (each "
+                "independent column of Y with the dependent ones folded in) and the directions "
+                "of theta no motion can show (the null space of Y).",
+                ["pm2dof identify report --model fivebar"], cmd_identify_report)
+
+    r = sub_command("excite", "run an excitation on the simulated robot and write its log",
+                    "Run an excitation on the simulated plant (its truth: [plant] of the model "
+                    "file; quantised encoders; a controller with Tables 1-2 tracking) and write "
+                    "what a real set-up logs, encoder angles and commanded torques, to --out "
+                    "(CSV or Parquet by the suffix; the format: docs/log-format.md). The log "
+                    "records its model relative to itself.",
+                    ["pm2dof identify excite --excitation exc.toml --out run.csv",
+                     "pm2dof identify excite --duration 10 --out run.parquet"],
+                    cmd_identify_excite)
+    r.add_argument("--out", required=True, metavar="LOG", help="log to write (.csv or .parquet)")
+    excitation_options(r, "run")
+    simulated_options(r)
+
+    r = sub_command("fit", "least squares for theta from a log (or a simulated run)",
+                    "Identify the base parameters from LOG (t, qa1..qan, tau1..taun, optional "
+                    "qb1..qbn; the format: docs/log-format.md): fk of the encoder angles, a "
+                    "zero-phase Butterworth low-pass, central differences, the same filter on "
+                    "the regressor and on S^T tau, weighted least squares with a Newey-West "
+                    "covariance (+-2 sigma), then a physically consistent full theta (CasADi + "
+                    "IPOPT). The model is the one the log records unless --model is given. "
+                    "Without LOG, an excitation first runs on the simulated plant (as "
+                    "`identify excite` does) and its log goes through the same pipeline and "
+                    "the same report, with the plant's truth beside the estimate.",
+                    ["pm2dof identify fit run.csv --save theta.json --seed-na",
+                     "pm2dof identify fit --json       # the default 4 s multi-sine, simulated"],
+                    cmd_identify_fit)
+    r.add_argument("log", nargs="?", metavar="LOG", help="log file (.csv or .parquet); without "
+                   "it, a simulated excitation run")
+    r.add_argument("--save", metavar="FILE", help="write the estimate, a full theta0 and the "
+                   "provenance as JSON")
+    r.add_argument("--json", action="store_true", help="print the results as JSON")
+    r.add_argument("--seed-na", action="store_true",
+                   help="also Table 3 with APD and NA using the identified theta")
+    r.add_argument("--cutoff", type=float, metavar="HZ",
+                   help="low-pass cutoff (default 10 x the excitation band)")
+    r.add_argument("--time-tolerance", type=float, default=1e-3, metavar="FRACTION",
+                   help="largest allowed |t_k+1 - t_k - T| / T of LOG (default 1e-3)")
+    r.add_argument("--min-joint-speed", type=float, metavar="RAD_S",
+                   help="leave out samples with a slower active joint (default 0.1; 0 keeps all)")
+    excitation_options(r, "simulate without LOG")
+    simulated_options(r, "without LOG: ")
+
+    r = sub_command("design", "design a D-optimal excitation (1-2 minutes)",
+                    "Design a periodic excitation (a finite Fourier series in task space, "
+                    "Swevers et al. 1997) that maximises log det of the base regressor's "
+                    "information matrix, with CasADi + IPOPT (1-2 minutes), within speed, "
+                    "acceleration, torque, singularity and region limits checked every 1 ms, and "
+                    "write it as TOML to --out (the model recorded relative to the file).",
+                    ["pm2dof identify design --out exc.toml"], cmd_identify_design)
+    r.add_argument("--out", required=True, metavar="FILE", help="excitation file to write (TOML)")
+    for flag, kind, default, text in (
+            ("--base-hz", float, 0.2, "base frequency f0, Hz (default 0.2: 5 s period)"),
+            ("--harmonics", int, 10, "harmonics of f0 (default 10: up to 2 Hz)"),
+            ("--periods", int, 2, "periods per run (default 2: 10 s)"),
+            ("--v-max", float, 0.5, "task speed limit, m/s (default 0.5)"),
+            ("--a-max", float, 10.0, "task acceleration limit, m/s^2 (default 10)"),
+            ("--tau-fraction", float, 0.5, "torque limit / tau_max (default 0.5)"),
+            ("--seed", int, 0, "seed of IPOPT's random start (default 0)")):
+        r.add_argument(flag, type=kind, default=default, help=text)
+
+    r = sub_command("monte-carlo", "the identification targets measured over N seeds",
+                    "Measure the identification targets over N seeds: each draws a plant truth "
+                    "around [plant] (inertia and friction x (1 + 0.1 N(0, 1)), payload 0-0.5 kg) "
+                    "and encoder noise, runs the excitation on it, identifies from the log alone "
+                    "and compares with the truth.",
+                    ["pm2dof identify monte-carlo 50 --excitation exc.toml"],
+                    cmd_identify_monte_carlo)
+    r.add_argument("seeds", type=int, metavar="N", help="number of seeds")
+    r.add_argument("--json", action="store_true", help="print the results as JSON")
+    excitation_options(r, "run")
 
 
 def cmd_splits(args):
@@ -196,10 +378,14 @@ def cmd_study_run(args):
         raise ArgumentError("give --workers (an embedded cluster) or --scheduler (an existing "
                          "one), not both: an existing cluster's workers are started with it")
     study = read_study(resolve_study(args.study), quick=args.quick)
-    if args.model is not None:  # the study file names its model; --model overrides it
+    if args.model is not None or args.generated is not None:  # override the study file's
         import dataclasses
         from .core.paths import resolve_model
-        study = dataclasses.replace(study, model_path=str(resolve_model(args.model).resolve()))
+        study = dataclasses.replace(
+            study, model_path=(study.model_path if args.model is None
+                               else str(resolve_model(args.model).resolve())),
+            generated_path=(study.generated_path if args.generated is None
+                            else str(Path(args.generated).expanduser().resolve())))
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
                         timeout=args.timeout, progress=_progress)
@@ -230,7 +416,6 @@ def cmd_study_show(args):
 
 
 def cmd_study_report(args):
-    from pathlib import Path
     from .studies.report import run_report
     s, cols, info = run_report(args.dir, as_json=args.json)
     if not args.no_figures:
@@ -270,13 +455,15 @@ def _study_parser(sub):
                         "Run the same command again: finished chunks are skipped. A different "
                         "study on a non-empty DIR is refused. Rows depend only on the study file "
                         "(seed, draw), not on the workers or the cluster. Every key of a study "
-                        "file is listed in README 'Studies at scale'; the shipped studies "
+                        "file is listed in docs/study-file.md; the shipped studies "
                         "(robustness, gains, adaptation) are commented examples: see them with "
                         "`pm2dof study show NAME`.")
     r.add_argument("study", help="study file (TOML), or a shipped study's name: robustness, "
                    "gains, adaptation")
     r.add_argument("--model", metavar="NAME|PATH", help="run the study on this model instead of "
                    "the one its file names")
+    r.add_argument("--generated", metavar="DIR", help="the model's generated C, when not in "
+                   "the default folder (overrides the study file's generated key)")
     r.add_argument("--out", required=True, metavar="DIR", help="output folder")
     r.add_argument("--workers", type=int, metavar="N",
                    help="worker processes of the embedded cluster (default: one per core)")
@@ -387,58 +574,7 @@ def build_parser():
     p.add_argument("--out", required=True, help="output folder")
     p.add_argument("--runs", type=int, default=40, help="repeated runs for repeated_runs.png")
     p.set_defaults(func=cmd_figures)
-    p = sub.add_parser("identify", parents=[common], help="identifiability and least squares",
-                       description="Stack the regressor Y over random states and report its "
-                       "rank, the identifiable base parameters and the invisible directions of "
-                       "theta. Then (without --report) simulate an excitation run on the plant "
-                       "(its truth, encoder quantisation, APD tracking) and estimate the base "
-                       "parameters by least squares from the measured angles and commanded "
-                       "torques, with the truth beside the estimate.")
-    p.epilog = ("from logs (README, 'Identification from logs'): --design-excitation --out "
-                "exc.toml; --excite --excitation exc.toml --out run.csv (or log your robot in "
-                "that format); --data run.csv --save theta.json")
-    p.add_argument("--report", action="store_true", help="identifiability only, no estimation")
-    p.add_argument("--duration", type=float, default=4.0, help="excitation length, s (default 4)")
-    p.add_argument("--save", metavar="FILE", help="write the estimate and a full theta0 as JSON")
-    p.add_argument("--seed-na", action="store_true",
-                   help="rerun the moves with NA seeded by the identified theta")
-    p.add_argument("--excite", action="store_true",
-                   help="run an excitation on the simulated plant (its truth, quantised encoders, "
-                   "APD tracking with Tables 1-2) and write its log to --out")
-    p.add_argument("--out", metavar="LOG", help="log (.csv or .parquet) that --excite writes")
-    p.add_argument("--excitation", metavar="FILE",
-                   help="excitation file for --excite (default: a --duration s multi-sine)")
-    p.add_argument("--exact-encoders", action="store_true",
-                   help="--excite without encoder quantisation (a noise-free log)")
-    p.add_argument("--controller", choices=["apd", "na"], default="apd",
-                   help="controller tracking the excitation in --excite (default apd)")
-    p.add_argument("--data", metavar="LOG", help="identify from a measured log (.csv or "
-                   ".parquet: t, qa1..qan, tau1..taun, optional qb1..qbn; README, "
-                   "'Identification from logs')")
-    p.add_argument("--json", action="store_true", help="--data: print the results as JSON")
-    p.add_argument("--design-excitation", action="store_true",
-                   help="design a D-optimal periodic excitation (Fourier series in task space, "
-                   "CasADi + IPOPT, 1-2 minutes) and write it as TOML to --out")
-    for flag, kind, default, text in (
-            ("--base-hz", float, 0.2, "base frequency f0, Hz (default 0.2: 5 s period)"),
-            ("--harmonics", int, 10, "harmonics of f0 (default 10: up to 2 Hz)"),
-            ("--periods", int, 2, "periods per run (default 2: 10 s)"),
-            ("--v-max", float, 0.5, "task speed limit, m/s (default 0.5)"),
-            ("--a-max", float, 10.0, "task acceleration limit, m/s^2 (default 10)"),
-            ("--tau-fraction", float, 0.5, "torque limit / tau_max (default 0.5)"),
-            ("--design-seed", int, 0, "seed of IPOPT's random start (default 0)")):
-        p.add_argument(flag, type=kind, default=default, help=f"--design-excitation: {text}")
-    p.add_argument("--monte-carlo", type=int, metavar="N",
-                   help="measure the identification targets over N seeds (random plant truths "
-                   "and encoder noise; --excitation FILE, else the default multi-sine)")
-    p.add_argument("--cutoff", type=float, metavar="HZ",
-                   help="--data: low-pass cutoff (default 10 x the excitation band)")
-    p.add_argument("--time-tolerance", type=float, default=1e-3, metavar="FRACTION",
-                   help="--data: largest allowed |t_k+1 - t_k - T| / T (default 1e-3)")
-    p.add_argument("--min-joint-speed", type=float, metavar="RAD_S",
-                   help="--data: leave out samples with a slower active joint (default 0.1; "
-                   "0 keeps all)")
-    p.set_defaults(func=cmd_identify)
+    _identify_parser(sub, common)
     p = sub.add_parser("splits", parents=[common], help="torque splits compared in closed loop",
                        description="Simulate APD and NA with each torque split (min_norm: eq. "
                        "21; min_max: least max_i |tau_i|/tau_max,i; preload: every actuator "
@@ -548,7 +684,11 @@ _COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies"}
 def main(argv=None):
     from .analysis import results
     ap = build_parser()
-    args = ap.parse_args(argv)
+    try:
+        args = ap.parse_args(argv)
+    except Pm2dofError as exc:  # an option refused while parsing (a replaced one)
+        print(f"pm2dof: error: {exc}", file=sys.stderr)
+        return 2
     results.COMMAND_LINE = ["pm2dof", *(sys.argv[1:] if argv is None else argv)]
     global _progress
     _progress = Progress(quiet=getattr(args, "quiet", False))

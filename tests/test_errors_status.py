@@ -20,7 +20,7 @@ from pm2dof.core.paths import SHIPPED_GENERATED
 BUILTIN = (ValueError, TypeError, RuntimeError, OSError, ImportError)
 MODULES = ["pm2dof.core.errors", "pm2dof.core.build", "pm2dof.control.trajectory",
            "pm2dof.studies.spec", "pm2dof.studies.store", "pm2dof.studies.runner",
-           "pm2dof.analysis.ident_log", "pm2dof.analysis.excitation_design", "pm2dof.derive.run"]
+           "pm2dof.identification.log", "pm2dof.identification.design", "pm2dof.derive.run"]
 
 
 def _error_classes():

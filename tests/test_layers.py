@@ -26,11 +26,13 @@ ALLOWED = {
     "control": {"core", "control"},                     # 2: controllers, rollouts
     "reference": {"core", "reference"},                 # beside: NumPy formulations
     "linear": _RUNTIME | {"linear"},                    # 3: linearisation, LQR (SciPy)
-    "analysis": _RUNTIME | {"analysis", "linear"},      # 3: experiment, identification
+    "analysis": _RUNTIME | {"analysis", "linear"},      # 3: experiment, reports, results
+    "identification": _RUNTIME | {"analysis", "identification"},   # 3: logs, excitation, fit
     "bench": _RUNTIME | {"analysis", "reference", "bench", "derive", "linear"},   # 3: benchmark
-    "studies": _RUNTIME | {"analysis", "studies", "linear"},    # 3: many rollouts on Dask
+    "studies": _RUNTIME | {"analysis", "identification", "studies", "linear"},   # 3: Dask
     "figures": _RUNTIME | {"analysis", "studies", "figures", "linear"},   # 4: matplotlib
-    "cli": _RUNTIME | {"analysis", "bench", "studies", "figures", "cli", "derive", "linear"},
+    "cli": _RUNTIME | {"analysis", "identification", "bench", "studies", "figures", "cli",
+                       "derive", "linear"},                                     # 4
     "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
     "__main__": {"cli"},
     "_moved": set(),
@@ -40,7 +42,8 @@ _HEAVY = {"sympy", "casadi", "matplotlib", "dask", "distributed", "pyarrow", "sc
 THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
     "__main__": set(), "_moved": set(),
-    "analysis": {"numpy", "scipy", "casadi", "pyarrow", "tqdm"},   # pyarrow: Parquet logs
+    "analysis": {"numpy", "tqdm"},
+    "identification": {"numpy", "scipy", "casadi", "pyarrow"},   # the ident extra; lazily
     "linear": {"numpy", "scipy", "control"},            # the [control] extra (python-control)
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
     "bench": {"numpy", "casadi", "sympy", "pinocchio"},  # baselines; each optional at run time
@@ -85,7 +88,8 @@ def test_every_sub_package_has_a_declared_layer():
     units = {_unit(p) for p in MODULES}
     assert units <= set(ALLOWED), f"undeclared sub-packages: {sorted(units - set(ALLOWED))}"
     assert units <= set(THIRD_PARTY)
-    assert {"core", "control", "analysis", "bench", "figures", "reference", "cli", "derive"} <= units
+    assert {"core", "control", "analysis", "identification", "bench", "figures", "reference", "cli",
+            "derive"} <= units
 
 
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))

@@ -65,6 +65,9 @@ static const double VELOCITY_FILTER_HZ = 0.0;       /* 0: plain backward differe
 static const double ENCODER_COUNTS_PER_REV = 131072.0;
 static const double SING_THRESHOLD = 0.1;           /* type I (legs) */
 static const double PARALLEL_SING_THRESHOLD = 0.1;  /* type II (actuation) */
+/* largest closure residual |O - B_i| - lb_i accepted from the encoders, m: the model file's
+   default, 5 encoder steps at the longest active link ([sensing] closure_tolerance) */
+static const double CLOSURE_TOL = 5 * 0.244 * 2 * PI / 131072.0;
 static const double TAU_MAX[N_LEGS] = {30.0, 30.0, 30.0}; /* N m */
 static const int RK4_SUBSTEPS = 3;                  /* manifest.json "rk4_substeps" */
 
@@ -87,9 +90,10 @@ static const double MOVE_V = 0.5, MOVE_A = 10.0, MOVE_J = 400.0; /* m/s, m/s^2, 
 /* Layout sizes (manifest.json "layouts") */
 enum {
     STATE_SIZE = 2 + 2 + N_THETA,              /* ctrl_state: xe_prev, v, theta_hat */
-    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 4 + 3 * N_LEGS, /* Kd, Q, Gamma, T, vel_alpha,
+    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 4 + 3 * N_LEGS + 1, /* Kd, Q, Gamma, T, vel_alpha,
                                                       sing_threshold, parallel_sing_threshold,
-                                                      tau_max, preload_sign, preload */
+                                                      tau_max, preload_sign, preload,
+                                                      closure_tol */
     DIAG_SIZE = 10,                            /* diag: xe, v, e, edot, sing (type I, II) */
     PLANT_SIZE = 6 * N_LEGS + 3                /* alpha beta gamma fv fc fs, vs, eps, step */
 };
@@ -369,6 +373,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < N_LEGS; i++) *pp++ = TAU_MAX[i];
     for (int i = 0; i < N_LEGS; i++) *pp++ = 1.0;   /* preload_sign: unused by the min_norm step */
     for (int i = 0; i < N_LEGS; i++) *pp++ = 0.0;   /* preload, N m: likewise */
+    *pp++ = CLOSURE_TOL;                            /* status 5 beyond it */
 
     /* --- plant truth: plant layout, payload booked into leg PAYLOAD_LEG --------------- */
     double plant[PLANT_SIZE];

@@ -12,10 +12,15 @@ __all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
 PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percent": 38.40},
                 "high": {"apd_rmse": 4.7136e-4, "na_rmse": 2.8299e-4, "rpe_percent": 39.96}}
+"""Table 3 of the paper, measured on the real robot: {move: {"apd_rmse", "na_rmse" (eq. 41, m),
+"rpe_percent" (100 (APD - NA) / APD)}} for the moves "low" and "high"."""
 
 
 def rpe(apd_rmse, na_rmse):
-    """Relative performance: percentage reduction of the RMSE from APD to NA."""
+    """Relative performance: percentage reduction of the RMSE from APD to NA; None when a run
+    did not complete (its RMSE is inf: no percentage means anything then)."""
+    if not (np.isfinite(apd_rmse) and np.isfinite(na_rmse)):
+        return None
     return 100.0 * (apd_rmse - na_rmse) / apd_rmse
 
 
@@ -79,6 +84,9 @@ def table3_json(results):
             "saturated_samples": {k: v.n_saturated for k, v in runs.items()},
             "singular_samples": {k: v.n_singular for k, v in runs.items()},
         }
+        failed = {k: v.outcome_message for k, v in runs.items() if v.outcome != "completed"}
+        if failed:  # a run that left the workspace or diverged: its RMSE is inf (JSON: null)
+            out[speed]["outcomes"] = failed
     return out
 
 
@@ -90,18 +98,27 @@ def format_table3(numbers):
              f"{'speed':6s} {'APD sim':>11s} {'NA sim':>11s} {'NA G=0 sim':>11s} {'RPE sim':>8s}"
              f" | {'APD paper':>11s} {'NA paper':>11s} {'RPE paper':>9s}"
              + "".join(f" | {x.upper() + ' sim':>11s}" for x in extra)]
+    def cell(x, width, spec, none="-"):   # None: no paper number, or a run that failed
+        return f"{x:{width}{spec}}" if x is not None and np.isfinite(x) else f"{none:>{width}s}"
+
+    failed = []
     for speed, r in numbers.items():
         paper = PAPER_TABLE3.get(speed, {})
-        lines.append(f"{speed:6s} {r['apd_rmse']:11.4e} {r['na_rmse']:11.4e} "
-                     f"{r['na_no_adaptation_rmse']:11.4e} {r['rpe_percent']:7.2f}% | "
-                     f"{paper.get('apd_rmse', float('nan')):11.4e} "
-                     f"{paper.get('na_rmse', float('nan')):11.4e} "
-                     f"{paper.get('rpe_percent', float('nan')):8.2f}%"
-                     + "".join(f" | {r[f'{x}_rmse']:11.4e}" for x in extra))
+        lines.append(f"{speed:6s} {cell(r['apd_rmse'], 11, '.4e', 'failed')} "
+                     f"{cell(r['na_rmse'], 11, '.4e', 'failed')} "
+                     f"{cell(r['na_no_adaptation_rmse'], 11, '.4e', 'failed')} "
+                     f"{cell(r['rpe_percent'], 7, '.2f', 'n/a')}% | "
+                     f"{cell(paper.get('apd_rmse'), 11, '.4e')} "
+                     f"{cell(paper.get('na_rmse'), 11, '.4e')} "
+                     f"{cell(paper.get('rpe_percent'), 8, '.2f')}%"
+                     + "".join(f" | {cell(r[f'{x}_rmse'], 11, '.4e', 'failed')}" for x in extra))
+        failed += [f"  {speed} {k}: {msg}" for k, msg in r.get("outcomes", {}).items()]
     lines.append("RPE = 100 (APD - NA) / APD: positive when NA tracks better.")
     if extra:
         lines.append("CTC: computed torque, LQR: time-varying LQR along the move; both with "
                      "Tables 1-2 (pm2dof table3 --include).")
+    if failed:
+        lines += ["Runs that did not complete (their RMSE is infinite):"] + failed
     return "\n".join(lines)
 
 
@@ -128,10 +145,24 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
 
     Each run starts at rest at the start point (the return move is not simulated).
 
+    Parameters
+    ----------
+    model : Model
+    speed : str
+        A move of the model file's ``[trajectories]`` (default "high").
+    runs : int
+        Number of runs.
+    quantise : bool
+        Quantise the encoder angles (``[sensing] encoder_counts_per_rev``).
+    progress : callable, optional
+        Called with a one-line message every 5 runs.
+
     Returns
     -------
-    dict with ``rmse`` (runs,) m, ``theta_hat_end`` (runs, 5n), ``theta_truth`` (5n,),
-    ``theta0`` (5n,).
+    dict
+        ``rmse`` (runs,) m, eq. 41 of each run; ``theta_hat_end`` (runs, 5n), theta_hat at the
+        end of each run; ``theta_truth`` (5n,), the plant's; ``theta0`` (5n,), theta_hat of
+        the first run (Tables 1-2).
     """
     traj = model_move(model, speed)
     ctrl = NAController(model)

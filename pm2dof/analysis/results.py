@@ -78,8 +78,25 @@ def write_atomic(path, data):
 
 
 def dumps(obj):
-    """JSON text of results holding NumPy arrays and scalars (indent 1)."""
-    return json.dumps(obj, indent=1, default=_jsonable)
+    """JSON text of results holding NumPy arrays and scalars (indent 1).
+
+    Valid JSON always: a non-finite number (the ``inf`` RMSE of a run that did not complete)
+    is written as ``null``; the record's outcome says why (JSON has no inf or NaN).
+    """
+    return json.dumps(_finite(obj), indent=1, default=_jsonable, allow_nan=False)
+
+
+def _finite(x):
+    """``x`` with every non-finite float (also inside arrays) replaced by None."""
+    if isinstance(x, dict):
+        return {k: _finite(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_finite(v) for v in x]
+    if isinstance(x, np.ndarray):
+        return _finite(x.tolist()) if x.dtype.kind == "f" else x
+    if isinstance(x, (float, np.floating)) and not np.isfinite(x):
+        return None
+    return x
 
 
 def write_json(path, obj):

@@ -49,7 +49,7 @@ TARGETS = (
     ("ctc_step_c_ns", "<=", 300.0, "ns", "CTC step in C (C loop)"),
     ("lqr_step_c_ns", "<=", 300.0, "ns", "LQR step in C (C loop)"),
 )
-#: torque splits timed side by side (README, "Torque distribution"); preload level, N*m
+#: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 BENCH_SPLITS = ("min_norm", "min_max", "preload")
 BENCH_PRELOAD = 1.0
 

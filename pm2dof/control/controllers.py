@@ -289,7 +289,7 @@ class NAController(_Controller):
         saturation); "preload" keeps sign preload_sign_i and |tau_i| >= preload_i with the
         least 2-norm (against backlash), else the largest worst-case preload the limits allow
         (status "preload_infeasible"). Every split gives the same S^T tau_a to rounding. Each
-        is an exact optimum, generated as its own C step (README, "Torque distribution").
+        is an exact optimum, generated as its own C step (docs/results-redundancy.md).
     preload, preload_sign : array_like (n,), optional
         The "preload" split's least |tau_i|, N*m, and signs +-1 (default ``[control]``).
     """

@@ -252,7 +252,7 @@ def default_closure_tolerance(legs, encoder_counts_per_rev):
     """[sensing] closure_tolerance when a model file does not set it, m: five encoder steps at
     the longest active link, at least 1 um. (One step moves an elbow by la * 2 pi / counts;
     quantised angles over the paper robot's workspace give residuals up to 0.8 of that, and
-    up to 1.3 with a full step of error: tests/test_closure.py measures it.)"""
+    up to 1.3 with a full step of error: tests/core/test_closure.py measures it.)"""
     if encoder_counts_per_rev <= 0:
         return CLOSURE_FLOOR
     step = 2 * math.pi / encoder_counts_per_rev

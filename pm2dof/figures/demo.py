@@ -48,7 +48,12 @@ def run_demo(model, out="out", runs=40, echo=print, progress=None):
         gif, _ = animate_move(m, Path(out) / "move_high_na.gif", progress=progress)
         paths += [split_path, gif]
     data["maps"] = maps
-    study = _demo_study(m, Path(out) / "study_robustness", echo, progress)
+    try:
+        study = _demo_study(m, Path(out) / "study_robustness", echo, progress)
+    except ModuleNotFoundError as exc:     # Dask / pyarrow: the [studies] extra
+        echo(f"\nRobustness study skipped: it needs {exc.name}, which is not installed "
+             f"(pip install 'pm2dof[studies]').")
+        study = None
     if study is not None:
         data["study_robustness_quick"] = study[0]
         paths += study[1]

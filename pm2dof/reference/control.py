@@ -75,7 +75,7 @@ def layouts(n: int) -> dict:
         T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n, preload_sign n,
         preload n, closure_tol); ``apd_params`` and ``ctc_params`` (Kp 2, Kv 2, and the same);
         ``lqr_params`` (the same without gains); the reference steps are the
-        min_norm split (eq. 21; tests/test_splits.py checks the other splits); ``plant`` (alpha, beta, gamma, fv, fc, fs
+        min_norm split (eq. 21; tests/control/test_splits.py checks the other splits); ``plant`` (alpha, beta, gamma, fv, fc, fs
         each n, stribeck_velocity, coulomb_smoothing_velocity, encoder_step);
         ``cl_state`` (xe 2, xed 2, ctrl_state); ``cl_input`` (xd 2, xd_dot 2,
         xd_ddot 2), ``lqr_cl_input`` (the same, K 4n, tau_ff n); ``cl_output`` (xe 2, xed 2, tau_a n, status 1, theta_hat p).

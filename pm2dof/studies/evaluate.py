@@ -24,7 +24,7 @@ from .draws import draw_columns, plant_of, sample_draw
 __all__ = ["run_chunk", "check_study", "make_controller", "make_trajectory", "rollout_setup",
            "METRICS", "columns"]
 
-#: metric columns of every row (units in README "Studies at scale")
+#: metric columns of every row (units in docs/study-file.md, "The results folder")
 METRICS = ("rmse", "max_error", "peak_tau", "n_saturated", "n_singular", "n_non_finite",
            "diverged", "theta_error")
 _CACHE = {}
@@ -60,11 +60,12 @@ def make_trajectory(model, move, period):
 
 
 def _context(study):
-    key = (study.model_path, study.variants, study.moves, study.settle_time)   # what ctx holds
+    key = (study.model_path, study.generated_path, study.variants, study.moves,
+           study.settle_time)                                                   # what ctx holds
     ctx = _CACHE.get(key)
     if ctx is None:
-        from ..analysis.identify import identifiability
-        model = load_model(study.model_path)
+        from ..identification.base import identifiability
+        model = load_model(study.model_path, study.generated_path)
         T = model.spec.sensing["sample_period"]
         trajs = []
         for mv in study.moves:
@@ -75,7 +76,7 @@ def _context(study):
         # (variant, move) -> controller: an LQR's gains belong to its move
         ctrls = {(c, m): make_controller(model, v, trajs[m][0])
                  for c, v in enumerate(study.variants) for m in range(len(trajs))}
-        N = identifiability(model)["null_space"]
+        N = identifiability(model).null_space
         ctx = {"model": model, "ctrls": ctrls, "trajs": trajs,
                "P_id": np.eye(N.shape[0]) - N @ N.T,   # projector on the identifiable directions
                "draw_cols": draw_columns(study, model.n_legs)}

@@ -116,7 +116,7 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     from distributed import as_completed
     if client is None and not scheduler and workers is not None and workers < 1:
         raise ArgumentError(f"--workers must be >= 1, got {workers}")
-    model = load_model(study.model_path)
+    model = load_model(study.model_path, study.generated_path)
     check_study(study, model)
     done = prepare_out(out, study, model)
     todo = [i for i in range(study.n_chunks) if i not in done]

@@ -4,7 +4,8 @@
 A study file names the model, the moves, the controllers (with gain overrides and gain
 grids), the plant's uncertainty as distributions, the number of random draws, a seed,
 repeated runs that carry theta_hat from run to run, and optionally a payload change.
-``studies/*.toml`` are commented examples; README "Studies at scale" lists every key.
+The shipped studies (``pm2dof/studies/shipped/*.toml``, ``pm2dof study show NAME``) are
+commented examples; docs/study-file.md lists every key.
 
 Rollouts are enumerated as (draw d, variant c, move m, run r), run innermost::
 
@@ -58,8 +59,10 @@ LAWS = {
     "lqr": ("Q_position", "Q_velocity", "R", "velocity_filter_hz", "split", "tau_max"),
 }
 GRID_KEYS = ("Kp", "Kv", "Kd", "Q", "Gamma_scale", "velocity_filter_hz")
-_STUDY_KEYS = {"name", "description", "model", "moves", "seed", "draws", "runs", "chunk",
-               "settle_time", "quantise"}
+_STUDY_KEYS = {"name", "description", "model", "generated", "moves", "seed", "draws", "runs",
+               "chunk", "settle_time", "quantise"}
+#: the study files that come with pm2dof (robustness, gains, adaptation): by name
+SHIPPED_STUDIES = Path(__file__).resolve().parent / "shipped"
 _QUICK_KEYS = {"moves", "draws", "runs", "chunk", "grid_points"}
 _TOP_KEYS = {"study", "quick", "controllers", "uncertainty", "payload_change"}
 _MOVE_KEYS = {"name", "start", "end", "v_max", "a_max", "j_max"}
@@ -260,6 +263,7 @@ class Study:
     uncertainty: tuple
     payload_change: object
     quick: bool
+    generated_path: object = None   # the model's generated C, when not beside the model file
 
     # the enumeration (module docstring)
     @property
@@ -317,15 +321,25 @@ def _sha(p):
     return hashlib.sha256(p.read_bytes()).hexdigest()
 
 
-def read_study(path, quick=False):
-    """Read and validate a study file (TOML). ``quick``: apply its ``[quick]`` table.
+def resolve_study(ref):
+    """A shipped study's name (``"robustness"``) -> its file; anything else is a path."""
+    s = str(ref)
+    if "/" not in s and not s.endswith(".toml") and (SHIPPED_STUDIES / f"{s}.toml").is_file():
+        return SHIPPED_STUDIES / f"{s}.toml"
+    return Path(s).expanduser()
 
-    Paths in the file (``study.model``) are relative to the study file's folder. Raises
+
+def read_study(path, quick=False):
+    """Read and validate a study file (TOML), or a shipped study by name (``"robustness"``).
+    ``quick``: apply its ``[quick]`` table.
+
+    Paths in the file (``study.model``, ``study.generated``) are relative to the study file's
+    folder. Raises
     :class:`StudyFileError` listing every problem of the file, each naming the key and the
     reason. Checks that need the model (moves reachable and clear of singularities, gains
     accepted by the controllers) are made by :func:`pm2dof.studies.check_study`.
     """
-    path = Path(path)
+    path = resolve_study(path)
     pr = Problems(path, StudyFileError)
     try:
         text = path.read_text(encoding="utf-8")
@@ -369,6 +383,8 @@ def _study_table(pr, path, st, q):
         out["name"] = pr.text("study.name", st["name"], nonempty=True)
     if "model" in st:
         out["model_path"] = _model_path(pr, path, st["model"])
+    if "generated" in st and pr.text("study.generated", st["generated"], nonempty=True):
+        out["generated_path"] = str((path.parent / Path(st["generated"]).expanduser()).resolve())
     if "moves" in st:
         out["moves"] = _moves(pr, st["moves"])
     if "seed" in st:

@@ -1,0 +1,649 @@
+# Optimal excitation: a periodic finite Fourier series in task space (Swevers et al. 1997), IPOPT.
+"""Excitation trajectories for identification, designed by optimisation.
+
+The motion is a periodic finite Fourier series per task axis j (x, y) (Swevers, Ganseman,
+Bilgin, De Schutter & Van Brussel, 1997), w_l = 2 pi l f0, l = 1..L:
+
+    x_j(t)   = c_j + sum_l ( a_jl / w_l sin(w_l t) - b_jl / w_l cos(w_l t) )
+    xd_j(t)  = sum_l ( a_jl cos(w_l t) + b_jl sin(w_l t) )
+    xdd_j(t) = sum_l w_l ( -a_jl sin(w_l t) + b_jl cos(w_l t) )
+
+with sum_l a_jl = 0 and sum_l w_l b_jl = 0, so the motion starts and ends (after whole
+periods) at rest. :func:`design_excitation` chooses a, b, c with CasADi and IPOPT to
+maximise log det(Phi^T Phi), Phi the base regressor stacked over one period (D-optimality),
+subject to the workspace and a singularity margin, speed, acceleration and torque limits at
+dense samples.
+
+Why log det and not the condition number: log det is smooth (IPOPT needs derivatives; the
+condition number is a ratio of extreme singular values, non-smooth where they cross), it is
+invariant to the parameters' units (scaling a column adds a constant), it is the volume of
+the confidence ellipsoid of the estimate, and it rewards signal over noise, which the
+condition number ignores (doubling the motion leaves cond unchanged but halves the errors).
+The condition number of the column-scaled regressor is reported before and after.
+
+The model's Y, S, ik and singularity measures enter the optimisation as its generated C
+(``casadi.external`` on the compiled library, derivatives by finite differences): nothing is
+re-derived. In the objective, the Coulomb columns use tanh(qd / 0.1 rad/s) for sign(qd): it
+keeps log det differentiable, and samples slower than 0.1 rad/s are left out by
+``identify fit`` anyway.
+
+Every log det reported is one quantity, log det(Phi^T Phi / K): Phi the unscaled base regressor
+stacked over K samples, so that it does not grow with K. It is reported on two sample sets,
+each named where printed: the *objective* (what IPOPT maximises and its progress bar shows:
+``samples`` per period, Coulomb columns smoothed; IPOPT itself works on column-scaled Phi, which
+shifts log det by a constant) and the *run* (every 5th sample of the controller period over the
+whole run, exact sign: :func:`regressor_condition`).
+
+Determinism: the design is a long IPOPT run (hundreds of iterations) on a non-convex problem,
+and its path, hence the local optimum it ends at, follows the last bits of the arithmetic. So
+the design runs CasADi's bundled OpenBLAS (the BLAS of IPOPT and MUMPS) on one thread: with
+its default of one thread per core the result depended on the core count (measured: 345 IPOPT
+iterations with 2 threads, 341 with 4, 373 with 1, each with other coefficients). Whatever
+else rounds differently from one machine to another (glibc's libm picks FMA variants by CPU;
+measured 308 iterations with them switched off) still moves the result: a design is
+reproducible bit for bit on the same machine and install, which the file records
+(``[design.provenance]``).
+
+The file records its model relative to itself (:mod:`.model_ref`), so that it can be moved
+together with the model file.
+"""
+import contextlib
+import json
+import platform
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+
+from ..analysis.progress import bar
+from ..core.errors import Pm2dofError
+from .base import base_parameters, region_center
+from .fit import MIN_JOINT_SPEED
+from .model_ref import mismatch, model_entries
+
+__all__ = ["ExcitationError", "FourierExcitation", "design_excitation", "load_excitation",
+           "write_excitation", "trajectory_of", "regressor_condition", "check_excitation",
+           "sample_function", "run_design", "objective_logdet", "random_start",
+           "IPOPT_OPTIONS", "design_provenance"]
+
+#: IPOPT's options of the design (``max_iter`` is an argument of :func:`design_excitation`);
+#: written to the file's ``[design.ipopt]``.
+IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "tol": 1e-6, "acceptable_tol": 1e-4,
+                 "acceptable_iter": 10, "acceptable_obj_change_tol": 1e-7}
+
+
+class ExcitationError(Pm2dofError, ValueError):
+    """An excitation file or design request that cannot be used (names the key and value)."""
+
+
+@dataclass(frozen=True)
+class FourierExcitation:
+    """A periodic finite Fourier series in task space (see the module docstring).
+
+    Attributes
+    ----------
+    base_hz : float
+        f0, Hz (the period is 1 / f0).
+    periods : int
+        Whole periods the run lasts.
+    center : ndarray (2,)
+        c, m.
+    a, b : ndarray (2, L)
+        Coefficients, m/s, per axis (x, y) and harmonic.
+    info : dict
+        What the design reported (limits, objective, condition numbers), for the file.
+    model : dict
+        The model a file records (``model``, ``model_name``, ``formulation_sha256``:
+        :mod:`.model_ref`) as read by :func:`load_excitation`; empty for a design in memory.
+    """
+    base_hz: float
+    periods: int
+    center: np.ndarray
+    a: np.ndarray
+    b: np.ndarray
+    info: dict = field(default_factory=dict)
+    model: dict = field(default_factory=dict)
+
+    harmonics = property(lambda self: self.a.shape[1])
+    max_hz = property(lambda self: self.base_hz * self.harmonics, doc="highest harmonic, Hz")
+    duration = property(lambda self: self.periods / self.base_hz, doc="s")
+
+    def evaluate(self, t):
+        """Position (N, 2) m, velocity (N, 2) m/s, acceleration (N, 2) m/s^2 at times t (N,)."""
+        t = np.asarray(t, dtype=float)[:, None]
+        w = 2 * np.pi * self.base_hz * np.arange(1, self.harmonics + 1)
+        s, c = np.sin(w * t), np.cos(w * t)
+        x = self.center + (s / w) @ self.a.T - (c / w) @ self.b.T
+        return x, c @ self.a.T + s @ self.b.T, (-s * w) @ self.a.T + (c * w) @ self.b.T
+
+
+def trajectory_of(model, exc, period=None):
+    """The excitation sampled at the controller period (default ``[sensing].sample_period``):
+    an object with t, xd, xd_dot, xd_ddot (N, 2), period and max_hz, for ``simulate`` and
+    :func:`pm2dof.identification.excitation.excite`."""
+    T = model.spec.sensing["sample_period"] if period is None else float(period)
+    t = np.arange(int(round(exc.duration / T)) + 1) * T
+    x, v, a = exc.evaluate(t)
+    return SimpleNamespace(t=t, xd=x, xd_dot=v, xd_ddot=a, period=T, max_hz=exc.max_hz)
+
+
+def _basis(f0, L, t):
+    """(pos_a, pos_b, vel_a, vel_b, acc_a, acc_b), each (N, L): x = pos_a @ a + pos_b @ b + c."""
+    w = 2 * np.pi * f0 * np.arange(1, L + 1)
+    t = np.asarray(t, dtype=float)[:, None]
+    s, c = np.sin(w * t), np.cos(w * t)
+    return s / w, -c / w, c, s, -s * w, c * w
+
+
+def regressor_condition(model, base, traj, every=5):
+    """Condition number of the column-scaled base regressor stacked over ``traj`` (every
+    ``every``-th sample; desired motion, exact derivatives), and log det(Phi^T Phi / K) of the
+    unscaled one. NumPy on the model's C functions (independent of the CasADi design graph).
+
+    Returns
+    -------
+    cond, logdet : float
+    """
+    I = list(base.independent)
+    rows = [model.Y(model.ik(x), v, v, a)[:, I] for x, v, a in
+            zip(traj.xd[::every], traj.xd_dot[::every], traj.xd_ddot[::every])]
+    Phi = np.vstack(rows)
+    sv = np.linalg.svd(Phi / np.linalg.norm(Phi, axis=0), compute_uv=False)
+    _, logdet = np.linalg.slogdet(Phi.T @ Phi / len(rows))
+    return float(sv[0] / sv[-1]), float(logdet)
+
+
+def check_excitation(model, exc, *, v_max, a_max, tau_limit, sing_min, radius, step=1e-3):
+    """The excitation's worst values at samples every ``step`` s over one period, against the
+    design's limits (``radius`` around the middle of the model's first move).
+
+    Returns
+    -------
+    dict
+        ``speed`` (max |xd|, m/s), ``acceleration`` (max |xdd|, m/s^2), ``torque`` (max |tau_i|
+        of the min-norm split with Tables 1-2, N m), ``sing`` (min of both singularity measures),
+        ``radius`` (max |x - center|, m), ``rest`` (|xd|, |xdd| at t = 0), each with ``ok``.
+    """
+    t = np.arange(int(round(1.0 / (exc.base_hz * step))) + 1) * step
+    x, v, a = exc.evaluate(t)
+    th = model.theta_nominal
+    tau, sing = 0.0, np.inf
+    for xk, vk, ak in zip(x, v, a):
+        q = model.ik(xk)
+        sing = min(sing, float(np.min(model.singularity_measures(q))))
+        S = model.S(q)
+        u = model.Y(q, vk, vk, ak) @ th
+        tau = max(tau, float(np.abs(S @ np.linalg.solve(S.T @ S, u)).max()))
+    out = {"speed": float(np.max(np.hypot(*v.T))), "acceleration": float(np.max(np.hypot(*a.T))),
+           "torque": tau, "sing": sing,
+           "radius": float(np.max(np.hypot(*(x - region_center(model)).T))),
+           "rest": float(np.abs(np.concatenate([v[0], a[0]])).max())}
+    out["ok"] = (out["speed"] <= v_max and out["acceleration"] <= a_max and tau <= tau_limit
+                 and sing >= sing_min and out["radius"] <= radius and out["rest"] < 1e-9)
+    return out
+
+
+def sample_function(model, independent, smooth_sign=None):
+    """CasADi function (x (2), xd (2), xdd (2)) -> (vec of Y[:, independent] (2r, column-major),
+    tau (n) of the min-norm split with Tables 1-2 (eq. 21), both singularity measures (2)),
+    built on the model's generated C (``casadi.external``, finite-difference derivatives).
+
+    ``smooth_sign`` (rad/s): replace sign(qd_i) in the Coulomb (and Stribeck) columns by
+    tanh(qd_i / smooth_sign), so that the design's objective is differentiable (a sign
+    flipping at one sample would make it jump); None keeps the model's Y exactly.
+    """
+    import casadi as ca
+    n, p = model.n_legs, len(model.param_names)
+    ext = {k: ca.external(f"{model.name}_{k}", model.library, {"enable_fd": True})
+           for k in ("ik", "Y", "S", "singularity_measures")}
+    x, v, acc = ca.MX.sym("x", 2), ca.MX.sym("v", 2), ca.MX.sym("a", 2)
+    q = ext["ik"](x)
+    Yfull = ca.reshape(ext["Y"](q, v, v, acc)[0], p, 2).T       # the C writes Y row-major
+    S = ca.reshape(ext["S"](q)[0], 2, n).T
+    if smooth_sign and model.spec.friction in ("coulomb_viscous", "coulomb_viscous_stribeck"):
+        qd = ca.mtimes(S, v)                                    # eq. 8
+        names = list(model.param_names)
+        cols = [Yfull[:, j] for j in range(p)]
+        for i in range(n):
+            sgn = ca.tanh(qd[i] / smooth_sign)
+            cols[names.index(f"fc{i + 1}")] = S[i, :].T * sgn   # S^T e_i sign(qd_i), eq. 2
+            if f"fs{i + 1}" in names:
+                vs = model.spec.friction_constants["stribeck_velocity"]
+                cols[names.index(f"fs{i + 1}")] = S[i, :].T * sgn / (1 + (qd[i] / vs) ** 2)
+        Yfull = ca.horzcat(*cols)
+    u = ca.mtimes(Yfull, ca.DM(model.theta_nominal))
+    tau = ca.mtimes(S, ca.solve(ca.mtimes(S.T, S), u))          # eq. 21, Tables 1-2
+    return ca.Function("sample", [x, v, acc],
+                       [ca.vec(Yfull[:, list(independent)]), tau,
+                        ext["singularity_measures"](q)])
+
+
+def random_start(model, *, base_hz, harmonics, periods, v_max, a_max, radius, seed):
+    """IPOPT's start: random coefficients (``numpy.random.default_rng(seed)``) with the rest
+    conditions, around the middle c0 of the model's first move, scaled to 30 % of the speed,
+    acceleration and radius limits. Returns a :class:`FourierExcitation`."""
+    L, c0 = int(harmonics), region_center(model)
+    rng = np.random.default_rng(seed)
+    w = 2 * np.pi * base_hz * np.arange(1, L + 1)
+    a0 = rng.normal(size=(2, L)) / np.arange(1, L + 1)
+    b0 = rng.normal(size=(2, L)) / np.arange(1, L + 1) ** 2
+    a0 -= a0.mean(axis=1, keepdims=True)
+    b0 -= np.outer(b0 @ w, w) / (w @ w)
+    x_, v_, a_ = FourierExcitation(base_hz, periods, c0, a0, b0).evaluate(
+        np.arange(2000) / (2000 * base_hz))
+    k = min(0.3 * v_max / np.max(np.hypot(*v_.T)), 0.3 * a_max / np.max(np.hypot(*a_.T)),
+            0.3 * radius / np.max(np.hypot(*(x_ - c0).T)))
+    return FourierExcitation(base_hz, periods, c0.copy(), k * a0, k * b0)
+
+
+def objective_logdet(model, exc, samples=250, base=None):
+    """The design's objective at ``exc``: log det(Phi^T Phi / K) of the unscaled base regressor
+    at K = ``samples`` instants of one period, Coulomb columns smoothed as in the design
+    (:func:`sample_function`, evaluated numerically); the quantity IPOPT's progress bar
+    shows. Recomputes the file's ``objective_logdet_*`` from its coefficients."""
+    I = list((base_parameters(model) if base is None else base).independent)
+    t = np.arange(samples) / (samples * exc.base_hz)
+    x, v, a = exc.evaluate(t)
+    Yv = np.array(sample_function(model, I, smooth_sign=MIN_JOINT_SPEED).map(samples)(
+        x.T, v.T, a.T)[0])
+    Phi = np.vstack([Yv[:, k].reshape(len(I), 2).T for k in range(samples)])
+    return float(np.linalg.slogdet(Phi.T @ Phi / samples)[1])
+
+
+def _casadi_openblas():
+    """ctypes handle of the OpenBLAS that CasADi's IPOPT and MUMPS use, or None.
+
+    The wheel ships it three times (``libcasadi-tp-openblas.so``, ``.so.0``, ``.so.0.3``: wheels
+    hold no symbolic links) and IPOPT loads the ``.so.0`` (its soname): loading another copy
+    would set the threads of a library nobody calls. So: the copy this process has mapped, else
+    the ``.so.0``, which the IPOPT plugin then finds by its soname."""
+    import ctypes
+
+    import casadi
+    path = Path(casadi.__file__).parent / "libcasadi-tp-openblas.so.0"
+    try:
+        with open("/proc/self/maps") as fh:
+            mapped = {ln.split()[-1] for ln in fh if "libcasadi-tp-openblas" in ln}
+        if len(mapped) == 1:
+            path = Path(mapped.pop())
+    except OSError:
+        pass
+    try:
+        lib = ctypes.CDLL(str(path))
+        lib.openblas_get_num_threads, lib.openblas_set_num_threads
+    except (OSError, AttributeError):
+        return None
+    return lib
+
+
+@contextlib.contextmanager
+def _single_thread_blas():
+    """CasADi's OpenBLAS (:func:`_casadi_openblas`) on one thread for the block, then as
+    before. Yields the thread count in force, or None for a CasADi without that library."""
+    lib = _casadi_openblas()
+    if lib is None:
+        yield None
+        return
+    before = lib.openblas_get_num_threads()
+    lib.openblas_set_num_threads(1)
+    try:
+        yield int(lib.openblas_get_num_threads())
+    finally:
+        lib.openblas_set_num_threads(before)
+
+
+def design_provenance(model):
+    """What a design's result depends on besides its arguments: versions, the model's hashes and
+    the machine's arithmetic (CPU, C library). Deterministic for one machine and install."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    import casadi
+    try:
+        pm2dof_version = version("pm2dof")
+    except PackageNotFoundError:
+        pm2dof_version = "unknown"
+    cpu = platform.processor() or platform.machine()
+    try:
+        with open("/proc/cpuinfo") as fh:
+            cpu = next((ln.split(":", 1)[1].strip() for ln in fh if ln.startswith("model name")),
+                       cpu)
+    except OSError:
+        pass
+    return {"pm2dof": pm2dof_version, "casadi": casadi.__version__, "numpy": np.__version__,
+            "model_file_sha256": model.spec.file_sha256,
+            "formulation_sha256": model.spec.formulation_sha256,
+            "machine": f"{platform.machine()}, {cpu}",
+            "libc": " ".join(platform.libc_ver()).strip() or "unknown"}
+
+
+def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
+                      tau_fraction=0.5, singularity_margin=0.1, radius=0.06, samples=250,
+                      constraint_samples=1000, safety=0.98, seed=0, max_iter=500,
+                      progress=None):
+    """Design a D-optimal excitation (CasADi + IPOPT).
+
+    Parameters
+    ----------
+    model : Model
+    base_hz : float
+        f0, Hz; the period is 1 / f0 (default 0.2 Hz: 5 s).
+    harmonics : int
+        L (default 10: up to 2 Hz).
+    periods : int
+        Whole periods of the run (default 2: 10 s).
+    v_max, a_max : float
+        Task-space speed (m/s) and acceleration (m/s^2) limits; defaults are those of the
+        paper's high-speed move (0.5 m/s, 10 m/s^2): the robot is known to do them.
+    tau_fraction : float
+        |tau_i| <= tau_fraction * tau_max_i with the nominal model and the min-norm split
+        (default 0.5: the rest is left to feedback and model error).
+    singularity_margin : float
+        Both singularity measures >= their threshold + this (default 0.1).
+    radius : float
+        |x - c0| <= radius, m, c0 the middle of the model's first move (the region the
+        model is meant for).
+    samples, constraint_samples : int
+        Samples per period of the objective and of the constraints. The constraints are
+        imposed with the limits times ``safety`` (0.98), so that they hold between the
+        samples too (:func:`check_excitation` checks every 1 ms).
+    seed : int
+        Random start (:func:`random_start`; IPOPT finds a local optimum, log det is not
+        concave here).
+    max_iter : int
+        IPOPT's iteration limit (its other options: :data:`IPOPT_OPTIONS`).
+    progress : callable(str) or pm2dof.analysis.progress.Progress, optional
+        Stage lines; a :class:`~pm2dof.analysis.progress.Progress` also draws a bar of IPOPT's
+        iterations with the objective's log det as its postfix.
+
+    Returns
+    -------
+    FourierExcitation
+        Its ``info`` (the file's ``[design]``): every argument above but ``progress``, the
+        IPOPT options, cond and log det before (the start) and after on the objective's and
+        the run's samples (module docstring), IPOPT's status and iterations, and
+        :func:`design_provenance`. The same arguments on the same machine and install give
+        the same coefficients and ``info`` bit for bit (no wall time in it).
+    """
+    import casadi as ca
+    if not (base_hz > 0 and harmonics >= 1 and periods >= 1 and v_max > 0 and a_max > 0
+            and 0 < tau_fraction <= 1 and radius > 0):
+        raise ExcitationError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
+                              "a_max > 0, 0 < tau_fraction <= 1, radius > 0")
+    args = {"base_hz": base_hz, "harmonics": int(harmonics), "periods": int(periods),
+            "v_max": v_max, "a_max": a_max, "tau_fraction": tau_fraction,
+            "singularity_margin": singularity_margin, "radius": radius, "samples": int(samples),
+            "constraint_samples": int(constraint_samples), "safety": safety, "seed": int(seed),
+            "max_iter": int(max_iter)}
+    base = base_parameters(model)
+    I, L = list(base.independent), int(harmonics)
+    r = len(I)
+    tau_lim = safety * tau_fraction * np.asarray(model.spec.limits["tau_max"], float)
+    sing_min = (np.array([model.singularity_threshold, model.parallel_singularity_threshold])
+                + singularity_margin)
+    c0 = region_center(model)
+    per_sample = sample_function(model, I, smooth_sign=MIN_JOINT_SPEED)
+    z = ca.MX.sym("z", 4 * L + 2)
+    A = ca.reshape(z[:2 * L], L, 2)
+    B = ca.reshape(z[2 * L:4 * L], L, 2)
+    c = z[4 * L:]
+
+    def motion(K):
+        Pa, Pb, Va, Vb, Aa, Ab = (ca.DM(M) for M in _basis(base_hz, L, np.arange(K) / (K * base_hz)))
+        X = ca.mtimes(Pa, A) + ca.mtimes(Pb, B) + ca.repmat(c.T, K, 1)
+        return X, ca.mtimes(Va, A) + ca.mtimes(Vb, B), ca.mtimes(Aa, A) + ca.mtimes(Ab, B)
+
+    X, V, Acc = motion(samples)
+    Yv, _, _ = per_sample.map(samples)(X.T, V.T, Acc.T)
+    Phi = ca.vertcat(*[ca.reshape(Yv[:, k], 2, r) for k in range(samples)])
+
+    start = random_start(model, base_hz=base_hz, harmonics=L, periods=periods, v_max=v_max,
+                         a_max=a_max, radius=radius, seed=seed)
+    z0 = np.concatenate([start.a.ravel(), start.b.ravel(), c0])   # z = [a_x, a_y, b_x, b_y, c]
+    # column scaling: log det is invariant to it up to a constant; it keeps det() in range
+    Phi0 = ca.Function("Phi0", [z], [Phi])(z0).full()
+    norms = np.linalg.norm(Phi0, axis=0)
+    D = ca.DM(np.diag(1.0 / norms))
+    M = ca.mtimes([D, Phi.T, Phi, D])
+    objective = -ca.log(ca.det(M))
+    # -objective + this = log det(Phi^T Phi / samples), the unscaled per-sample log det
+    to_logdet = float(2 * np.sum(np.log(norms)) - r * np.log(samples))
+
+    Xc, Vc, Ac = motion(constraint_samples)
+    _, Tc, Sc = per_sample.map(constraint_samples)(Xc.T, Vc.T, Ac.T)
+    w = 2 * np.pi * base_hz * np.arange(1, L + 1)
+    g = [ca.vec(ca.sum1(A)), ca.mtimes(B.T, ca.DM(w)),                               # rest: 4
+         ca.sum2(Vc ** 2), ca.sum2(Ac ** 2),                                  # speed, accel
+         ca.sum2((Xc - ca.repmat(ca.DM(c0).T, constraint_samples, 1)) ** 2),  # radius
+         ca.vec(Tc), ca.vec(Sc)]
+    K = constraint_samples
+    lbg = np.concatenate([np.zeros(4), np.zeros(K), np.zeros(K), np.zeros(K),
+                          -np.tile(tau_lim, K), np.tile(sing_min, K)])
+    ubg = np.concatenate([np.zeros(4), np.full(K, (safety * v_max) ** 2),
+                          np.full(K, (safety * a_max) ** 2), np.full(K, (safety * radius) ** 2),
+                          np.tile(tau_lim, K), np.full(2 * K, np.inf)])
+    if progress:
+        progress(f"IPOPT: {4 * L + 2} coefficients, objective log det(Phi^T Phi / K) over "
+                 f"{samples} samples per period, {len(lbg)} constraints at {constraint_samples} "
+                 f"samples per period")
+    with bar(progress, int(max_iter), "IPOPT", unit="it") as iterations:
+        # IPOPT's iterations shown as they happen (about a minute in all)
+        opts = ({"iteration_callback": _IterationProgress(z.numel(), len(lbg), iterations,
+                                                          to_logdet)} if progress else {})
+        solver = ca.nlpsol("excitation", "ipopt", {"x": z, "f": objective, "g": ca.vertcat(*g)},
+                           {**opts, "ipopt.print_level": 0, "print_time": False,
+                            "ipopt.sb": "yes", "ipopt.max_iter": int(max_iter),
+                            **{f"ipopt.{k}": v for k, v in IPOPT_OPTIONS.items()}})
+        with _single_thread_blas() as blas_threads:
+            sol = solver(x0=z0, lbg=lbg, ubg=ubg)
+    zs = np.array(sol["x"]).ravel()
+    stats = solver.stats()
+    exc = _with_rest(FourierExcitation(base_hz, periods, zs[4 * L:], zs[:2 * L].reshape(2, L),
+                                       zs[2 * L:4 * L].reshape(2, L)))
+    before = regressor_condition(model, base, trajectory_of(model, start))
+    after = regressor_condition(model, base, trajectory_of(model, exc))
+    info = {"objective": "log det(Phi^T Phi / K) of the base regressor (D-optimal)", **args,
+            "region_center": c0.tolist(),
+            "objective_logdet_before": objective_logdet(model, start, samples, base),
+            "objective_logdet_after": objective_logdet(model, exc, samples, base),
+            "cond_before": before[0], "cond_after": after[0],
+            "logdet_before": before[1], "logdet_after": after[1],
+            "ipopt_status": stats["return_status"], "ipopt_iterations": stats["iter_count"],
+            "ipopt": dict(IPOPT_OPTIONS), "blas_threads": blas_threads or "default",
+            "provenance": design_provenance(model)}
+    return FourierExcitation(exc.base_hz, exc.periods, exc.center, exc.a, exc.b, info)
+
+
+def _iteration_progress_class():
+    import casadi as ca
+
+    class IterationProgress(ca.Callback):
+        """CasADi iteration callback: one step of the bar ``iterations`` per IPOPT iteration,
+        its postfix log det(Phi^T Phi / K) = -f + ``to_logdet`` (f IPOPT's objective,
+        column-scaled)."""
+
+        def __init__(self, nx, ng, iterations, to_logdet):
+            ca.Callback.__init__(self)
+            self.nx, self.ng, self.iterations, self.to_logdet = nx, ng, iterations, to_logdet
+            self.construct("excitation_progress", {})
+
+        def get_n_in(self):
+            return ca.nlpsol_n_out()
+
+        def get_n_out(self):
+            return 1
+
+        def get_name_in(self, i):
+            return ca.nlpsol_out(i)
+
+        def get_name_out(self, i):
+            return "ret"
+
+        def get_sparsity_in(self, i):
+            name = ca.nlpsol_out(i)
+            if name == "f":
+                return ca.Sparsity.scalar()
+            if name in ("x", "lam_x"):
+                return ca.Sparsity.dense(self.nx)
+            if name in ("g", "lam_g"):
+                return ca.Sparsity.dense(self.ng)
+            return ca.Sparsity(0, 0)
+
+        def eval(self, arg):
+            # IPOPT calls back at its iterations 0, 1, 2, ...: the bar counts 1, 2, ...
+            logdet = -float(arg[1]) + self.to_logdet
+            self.iterations.set_postfix_str(f"objective log det {logdet:.3f}", refresh=False)
+            self.iterations.update(1)
+            return [0]
+
+    return IterationProgress
+
+
+def _IterationProgress(*args):
+    return _iteration_progress_class()(*args)
+
+
+def _with_rest(exc):
+    """Project a, b onto the rest conditions exactly (IPOPT meets them to its tolerance)."""
+    w = 2 * np.pi * exc.base_hz * np.arange(1, exc.harmonics + 1)
+    a = exc.a - exc.a.mean(axis=1, keepdims=True)
+    b = exc.b - np.outer(exc.b @ w, w) / (w @ w)
+    return FourierExcitation(exc.base_hz, exc.periods, np.asarray(exc.center, float), a, b,
+                             exc.info)
+
+
+def _toml_list(v):
+    return "[" + ", ".join(format(float(x), ".17g") for x in np.ravel(v)) + "]"
+
+
+def _toml_value(v):
+    if isinstance(v, str):
+        return json.dumps(v)            # a TOML basic string
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (list, tuple, np.ndarray)):
+        return _toml_list(v)
+    return repr(int(v)) if isinstance(v, (int, np.integer)) else repr(float(v))
+
+
+def write_excitation(path, exc, model):
+    """Write ``exc`` as TOML (``[excitation]``: the model, :mod:`.model_ref`, a model file by its
+    path relative to ``path``'s folder, and the coefficients; ``[design]`` its ``info``, a dict
+    value such as ``ipopt`` or ``provenance`` as the sub-table ``[design.<key>]``),
+    atomically. The text is a function of ``exc``, the model and the file's folder only."""
+    from ..analysis.results import write_atomic
+    entries = model_entries(model, Path(path).parent)
+    lines = ["# pm2dof excitation: periodic finite Fourier series in task space (Swevers et al. "
+             "1997)",
+             "# x_j(t) = center_j + sum_l a_jl/w_l sin(w_l t) - b_jl/w_l cos(w_l t), "
+             "w_l = 2 pi l base_hz; j = x, y",
+             "# run it: pm2dof identify excite --excitation THIS_FILE --out run.csv", "",
+             "[excitation]", *(f"{k} = {_toml_value(v)}" for k, v in entries.items()),
+             f"base_hz = {exc.base_hz!r}",
+             f"periods = {int(exc.periods)}", f"center = {_toml_list(exc.center)}   # m",
+             f"a_x = {_toml_list(exc.a[0])}   # m/s", f"a_y = {_toml_list(exc.a[1])}",
+             f"b_x = {_toml_list(exc.b[0])}   # m/s", f"b_y = {_toml_list(exc.b[1])}", ""]
+    if exc.info:
+        tables = {k: v for k, v in exc.info.items() if isinstance(v, dict)}
+        lines.append("[design]")
+        lines += [f"{k} = {_toml_value(v)}" for k, v in exc.info.items() if k not in tables]
+        for name, table in tables.items():
+            lines += ["", f"[design.{name}]"] + [f"{k} = {_toml_value(v)}"
+                                                 for k, v in table.items()]
+    write_atomic(path, ("\n".join(lines) + "\n").encode())
+    return path
+
+
+def load_excitation(path, model=None):
+    """Read an excitation file (TOML, as :func:`write_excitation` writes it).
+
+    Parameters
+    ----------
+    path : str or Path
+    model : Model, optional
+        Check that the file was made for this model (:func:`.model_ref.mismatch`: by name and,
+        if recorded, formulation hash; files that name their model by name only are checked
+        by name).
+
+    Returns
+    -------
+    FourierExcitation
+        Its ``model``: the model entries the file records.
+
+    Raises
+    ------
+    ExcitationError
+        Unreadable file, a missing or malformed key (named), another model's file, or
+        coefficients that do not start at rest.
+    """
+    import tomllib
+    try:
+        with open(path, "rb") as fh:
+            d = tomllib.load(fh)
+    except (OSError, tomllib.TOMLDecodeError) as exc:
+        raise ExcitationError(f"{path}: cannot read the excitation file ({exc})") from None
+    e = d.get("excitation")
+    if not isinstance(e, dict):
+        raise ExcitationError(f"{path}: no [excitation] table")
+    try:
+        f0, periods = float(e["base_hz"]), int(e["periods"])
+        center = np.array(e["center"], dtype=float)
+        a = np.array([e["a_x"], e["a_y"]], dtype=float)
+        b = np.array([e["b_x"], e["b_y"]], dtype=float)
+    except KeyError as exc:
+        raise ExcitationError(f"{path}: [excitation] misses key {exc.args[0]!r}") from None
+    except (TypeError, ValueError) as exc:
+        raise ExcitationError(f"{path}: [excitation] has a malformed value ({exc})") from None
+    entries = {k: str(e[k]) for k in ("model", "model_name", "formulation_sha256") if k in e}
+    msg = None if model is None else mismatch(model, entries, Path(path).parent, str(path))
+    if msg:
+        raise ExcitationError(msg)
+    if not (f0 > 0 and periods >= 1 and center.shape == (2,) and a.shape == b.shape
+            and a.shape[1] >= 1 and np.isfinite(a).all() and np.isfinite(b).all()
+            and np.isfinite(center).all()):
+        raise ExcitationError(f"{path}: need base_hz > 0, periods >= 1, center of 2 numbers and "
+                              f"a_x, a_y, b_x, b_y of one finite number per harmonic")
+    exc = FourierExcitation(f0, periods, center, a, b, dict(d.get("design", {})), entries)
+    _, v, acc = exc.evaluate([0.0])
+    if np.abs(np.concatenate([v[0], acc[0]])).max() > 1e-9 * (1 + np.abs(a).max() * f0):
+        raise ExcitationError(f"{path}: the motion does not start at rest (sum of a_x, a_y and "
+                              f"of w_l b_x, w_l b_y must be 0)")
+    return exc
+
+
+def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
+               tau_fraction=0.5, seed=0, echo=print, progress=None):
+    """``pm2dof identify design --out FILE``: design, check at 1 ms, write."""
+    from .excitation import multisine
+    t0 = time.perf_counter()
+    exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
+                            v_max=v_max, a_max=a_max, tau_fraction=tau_fraction, seed=seed,
+                            progress=progress)
+    seconds = time.perf_counter() - t0
+    i = exc.info
+    chk = check_excitation(model, exc, v_max=v_max, a_max=a_max,
+                           tau_limit=tau_fraction * np.max(model.spec.limits["tau_max"]),
+                           sing_min=max(model.singularity_threshold,
+                                        model.parallel_singularity_threshold) + 0.1,
+                           radius=i["radius"])
+    default = regressor_condition(model, base_parameters(model),
+                                  multisine(model, duration=exc.duration))
+    write_excitation(out, exc, model)
+    echo(f"wrote {out}: {exc.harmonics} harmonics of {exc.base_hz:g} Hz (up to {exc.max_hz:g} "
+         f"Hz), {exc.periods} periods = {exc.duration:g} s; IPOPT {i['ipopt_status']} after "
+         f"{i['ipopt_iterations']} iterations, {seconds:.0f} s")
+    echo(f"objective: {i['objective']}")
+    echo(f"log det(Phi^T Phi / K) at the start -> optimised: {i['objective_logdet_before']:.2f} "
+         f"-> {i['objective_logdet_after']:.2f} on the objective's samples ({i['samples']} per "
+         f"period, Coulomb smoothed: the progress bar), {i['logdet_before']:.2f} -> "
+         f"{i['logdet_after']:.2f} on the run's (every 5th sample, exact sign)")
+    echo(f"condition number of the column-scaled base regressor on the run's samples: "
+         f"{i['cond_before']:.4g} at the start -> {i['cond_after']:.4g} optimised (the default "
+         f"multi-sine of excite: {default[0]:.4g})")
+    echo(f"checked every 1 ms: speed {chk['speed']:.3f} <= {v_max:g} m/s, acceleration "
+         f"{chk['acceleration']:.2f} <= {a_max:g} m/s^2, torque (Tables 1-2, min-norm) "
+         f"{chk['torque']:.2f} N m, singularity measures >= {chk['sing']:.3f}, "
+         f"|x - c0| <= {chk['radius'] * 1e3:.1f} mm, starts and ends at rest: "
+         f"{'all met' if chk['ok'] else 'NOT MET'}")
+    return exc, chk

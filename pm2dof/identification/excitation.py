@@ -1,0 +1,185 @@
+# Excite the simulated plant and record what a real set-up would log: encoder angles and torques.
+"""Excitation runs on the simulated robot, recorded as logs (``pm2dof identify excite``).
+
+* :func:`multisine` is the default excitation: a smooth multi-sine around the middle of the
+  model's first move. :mod:`.design` makes better ones.
+* :func:`excite` runs an excitation on the simulated plant. The plant runs with its truth
+  (``[plant]`` of the model file, or ``truth``), its encoders quantise the active angles, and a
+  controller with the nominal model (Tables 1-2) tracks the excitation. The log holds only what
+  a real set-up records: the encoder angles the controller read at t_k (quantised) and the
+  torque it commanded at t_k, held until t_k+1. Nothing of the truth is written into the log.
+* :func:`simulated_log` is what ``pm2dof identify excite`` writes and what ``pm2dof identify
+  fit`` without a log fits.
+"""
+import dataclasses
+from types import SimpleNamespace
+
+import numpy as np
+
+from ..control.controllers import APDController, NAController
+from ..control.simulate import plant_vector, simulate
+from ..core.errors import ArgumentError
+from .base import region_center
+from .log import IdentLog
+from .model_ref import model_entries
+
+__all__ = ["multisine", "excite", "measured_angles", "excitation_trajectory", "simulated_log",
+           "model_of_excitation", "run_excite", "DEFAULT_DURATION"]
+
+#: s: the default multi-sine's length (``--duration``)
+DEFAULT_DURATION = 4.0
+
+
+def multisine(model, duration=DEFAULT_DURATION, amplitude=0.02, seed=1, harmonics=4,
+              base_hz=0.75):
+    """A smooth multi-sine motion around the middle of the model's first move, starting at rest.
+
+    x(t) = c + sum_k a_k (1 - cos(w_k t)) per axis (the y axis' frequencies 13 % higher);
+    velocity is zero at t = 0.
+
+    Returns
+    -------
+    object with t (N,), xd, xd_dot, xd_ddot (N, 2), period (s) and max_hz (the highest
+    harmonic, Hz), like a Trajectory.
+    """
+    rng = np.random.default_rng(seed)
+    T = model.spec.sensing["sample_period"]
+    t = np.arange(int(round(duration / T)) + 1) * T
+    c = region_center(model)
+    xd, xd_dot, xd_ddot = (np.zeros((len(t), 2)) for _ in range(3))
+    for axis in range(2):
+        for k in range(1, harmonics + 1):
+            w = 2 * np.pi * base_hz * k * (1.0 + 0.13 * axis)
+            a = amplitude / harmonics * rng.uniform(0.5, 1.0) * rng.choice([-1, 1])
+            xd[:, axis] += a * (1 - np.cos(w * t))
+            xd_dot[:, axis] += a * w * np.sin(w * t)
+            xd_ddot[:, axis] += a * w * w * np.cos(w * t)
+    xd += c - amplitude / 2
+    return SimpleNamespace(t=t, xd=xd, xd_dot=xd_dot, xd_ddot=xd_ddot, period=T,
+                           max_hz=base_hz * harmonics * 1.13)  # highest harmonic, Hz
+
+
+def measured_angles(model, xe, quantise=True, truth=None):
+    """The encoder readings (N, n), rad, of true positions ``xe`` (N, 2): the generated
+    ``measure`` (quantised to ``[sensing].encoder_counts_per_rev`` unless ``quantise`` is
+    false), exactly what the controller read."""
+    plant = plant_vector(model, truth, quantise)
+    measure = model.function("measure")
+    qa = np.empty((len(xe), model.n_legs))
+    for k, x in enumerate(np.ascontiguousarray(xe)):
+        measure(x, plant, qa[k])
+    return qa
+
+
+def excite(model, trajectory, *, truth=None, quantise=True, controller="apd"):
+    """Run ``trajectory`` on the simulated plant and return its log.
+
+    Parameters
+    ----------
+    model : Model
+    trajectory : object with t, xd, xd_dot, xd_ddot (N, 2) and period
+        The excitation, e.g. :func:`multisine` or
+        :func:`pm2dof.identification.design.trajectory_of`; the robot starts at rest at its
+        first point. Its ``max_hz`` (highest frequency, Hz), if it has one, is written into the
+        log's metadata (``excitation_max_hz``) for the filter of
+        :func:`pm2dof.identification.fit.identify_log`.
+    truth : dict, optional
+        Plant truth (default :func:`pm2dof.plant_truth`).
+    quantise : bool
+        Quantise the encoders (False: exact angles, a noise-free log).
+    controller : {"apd", "na"}
+        Tracking controller, with the nominal model (Tables 1-2); NA adapts as in the paper.
+
+    Returns
+    -------
+    IdentLog
+        t (N,), qa (N, n) as measured, tau (N, n) as applied; meta names the model
+        (:mod:`.model_ref`; a model file by its absolute path until the log is written), the
+        sample period, the controller, the encoders and the excitation band.
+    """
+    if controller not in ("apd", "na"):
+        raise ArgumentError(f"controller must be 'apd' or 'na', got {controller!r}")
+    ctrl = (APDController if controller == "apd" else NAController)(model, on_singular="zero")
+    r = simulate(model, ctrl, trajectory, truth=truth, quantise=quantise)
+    if r.n_singular or r.n_non_finite:
+        raise ArgumentError(f"the excitation run left the safe region ({r.n_singular} singular, "
+                            f"{r.n_non_finite} non-finite samples): reduce its amplitude")
+    counts = model.spec.sensing["encoder_counts_per_rev"]
+    meta = {**model_entries(model), "n_legs": model.n_legs, "sample_period": trajectory.period,
+            "source": "simulated plant ([plant] of the model file)" if truth is None
+            else "simulated plant (a given truth)",
+            "controller": f"{controller} with Tables 1-2",
+            "encoders": f"{int(counts)} counts/rev" if (quantise and counts > 0) else "exact",
+            "saturated_samples": r.n_saturated,
+            "tracking_rmse_m": f"{r.rmse:.4g}"}
+    if getattr(trajectory, "max_hz", None):
+        meta["excitation_max_hz"] = f"{trajectory.max_hz:.6g}"
+    return IdentLog(t=r.t, qa=measured_angles(model, r.xe, quantise, truth), tau=r.tau_a,
+                    meta=meta)
+
+
+def excitation_trajectory(model, excitation=None, duration=DEFAULT_DURATION):
+    """(trajectory, description): an excitation (a :class:`~.design.FourierExcitation`, or the
+    path of its file) sampled at the model's period, or without one the default
+    :func:`multisine` lasting ``duration`` s."""
+    if excitation is None:
+        return multisine(model, duration=duration), f"the default {duration:g} s multi-sine"
+    from .design import load_excitation, trajectory_of
+    if isinstance(excitation, (str, bytes)) or hasattr(excitation, "__fspath__"):
+        return trajectory_of(model, load_excitation(excitation, model)), str(excitation)
+    return trajectory_of(model, excitation), "the excitation"
+
+
+def simulated_log(model, excitation=None, duration=DEFAULT_DURATION, *, quantise=True,
+                  controller="apd", progress=None):
+    """An excitation run on the simulated plant, as a log (:func:`excite`); its ``source``
+    says what ran. ``excitation``, ``duration``: :func:`excitation_trajectory`."""
+    traj, what = excitation_trajectory(model, excitation, duration)
+    if progress:
+        counts = model.spec.sensing["encoder_counts_per_rev"]
+        progress(f"running {what} on the simulated plant ({controller.upper()} tracking, "
+                 f"{f'{int(counts)} counts/rev' if quantise and counts > 0 else 'exact'} "
+                 f"encoders)")
+    log = excite(model, traj, quantise=quantise, controller=controller)
+    return dataclasses.replace(log, source=f"<simulated run of {what}>")
+
+
+def model_of_excitation(excitation_file=None, duration=None, *, model=None, generated=None):
+    """The model of a command that runs ``excitation_file`` (the one the file records, unless
+    ``model`` is given, and then it must be that one: :func:`.model_ref.model_for`), or
+    without a file ``model`` (default the paper's robot). ``duration`` (of the default
+    multi-sine) cannot go with a file."""
+    from pathlib import Path
+
+    from .model_ref import model_for
+    if excitation_file is None:
+        return model_for({}, model=model, generated=generated)
+    if duration is not None:
+        raise ArgumentError("--duration is the length of the default multi-sine: not with "
+                            "--excitation (the file sets its duration)")
+    from .design import ExcitationError, load_excitation
+    return model_for(load_excitation(excitation_file).model, Path(excitation_file).parent,
+                     str(excitation_file), model=model, generated=generated,
+                     error=ExcitationError)
+
+
+def run_excite(out, *, model=None, generated=None, excitation_file=None, duration=None,
+               quantise=True, controller=None, echo=print, progress=None):
+    """``pm2dof identify excite --out LOG``: run an excitation on the simulated plant and
+    write its log (CSV or Parquet by the suffix of ``out``), the model recorded relative to it.
+
+    Without ``excitation_file`` the default :func:`multisine` (``duration`` s, default
+    :data:`DEFAULT_DURATION`) runs on ``model`` (default the paper's robot); with one, see
+    :func:`model_of_excitation`. ``controller``: "apd" (default) or "na".
+    """
+    from .log import write_log
+    model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
+    log = simulated_log(model, excitation_file, DEFAULT_DURATION if duration is None else duration,
+                        quantise=quantise, controller=controller or "apd", progress=progress)
+    write_log(out, log)
+    echo(f"wrote {out}: {len(log.t)} samples, {log.duration:.3f} s at T = {log.period * 1e3:g} ms, "
+         f"{model.n_legs} legs; peak |tau| {np.abs(log.tau).max():.3f} N m "
+         f"({log.meta['saturated_samples']} saturated samples), tracking RMSE "
+         f"{log.meta['tracking_rmse_m']} m, excitation up to "
+         f"{log.meta.get('excitation_max_hz', '?')} Hz")
+    return log

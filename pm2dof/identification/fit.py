@@ -1,0 +1,372 @@
+# Identification from a log: filter, differentiate, stack the base regressor, weighted least squares.
+"""``pm2dof identify fit``: least squares for the base parameters from a log.
+
+The one pipeline of pm2dof's identification: a measured log (``fit LOG``) and a simulated
+excitation run (``fit`` without a log, :func:`pm2dof.identification.excitation.simulated_log`)
+go through it alike. Each step is a function below; :func:`identify_log` runs them all:
+
+1. ``log_poses``: xe = fk(qa) per row, the passive angles from geometry (checks the log).
+2. :func:`lowpass`: a zero-phase Butterworth low-pass (``scipy.signal.butter`` +
+   ``sosfiltfilt``) on xe; the cutoff is :func:`choose_cutoff` (a multiple of the excitation
+   band). Velocities and accelerations are central differences of the filtered positions.
+3. At every sample the regressor rows Y(q, xed, xed, xedd)[:, base] and the task force
+   S^T tau (eq. 13, tau averaged over the two hold intervals around t_k, which makes the
+   zero-order hold's acceleration jump cancel exactly).
+4. Parallel filtering and decimation: the *same* zero-phase low-pass on every regressor
+   column and on the task force, then every r-th sample. Filtering is linear, so
+   F(Y) theta = F(S^T tau) holds wherever Y theta = S^T tau holds: the equation stays exact
+   while the controller's high-frequency torque (reacting to encoder noise) is removed from
+   both sides.
+5. Samples where an active joint is slower than ``min_joint_speed`` (and their neighbours
+   within the filter's reach) are left out: there eq. 2's sign(qd) jumps and real friction
+   (stiction, Stribeck) is not eq. 2.
+6. Weighted least squares (:func:`weighted_ls`): OLS, then each task axis weighted by
+   1/sigma of its residual; a Newey-West (Bartlett) covariance, since filtered residuals
+   are correlated; ±2 sigma per base parameter; warnings for directions the data cannot
+   determine.
+"""
+import math
+
+import numpy as np
+
+from ..core.errors import ArgumentError
+from .base import inertial_mask
+from .log import LogError, log_poses
+
+__all__ = ["lowpass", "choose_cutoff", "differentiate", "stack_regressor", "weighted_ls",
+           "weak_directions", "identify_log", "CUTOFF_FACTOR", "MIN_JOINT_SPEED"]
+
+#: cutoff of the low-pass = CUTOFF_FACTOR x the highest excitation frequency. A 4th-order
+#: Butterworth applied forward and backward passes f/fc = 0.1 with gain 1 - 1e-8: the
+#: excitation is untouched, the tracking loop's content (tens of Hz) mostly kept, and the
+#: encoder noise in the accelerations (growing like fc^2.5) stays small.
+CUTOFF_FACTOR = 10.0
+#: rad/s: samples where |qd_a,i| is below this for some joint are not used (eq. 2 jumps there)
+MIN_JOINT_SPEED = 0.1
+FILTER_ORDER = 4
+
+
+def lowpass(cutoff_hz, sample_period, order=FILTER_ORDER):
+    """Second-order sections of a digital Butterworth low-pass (``scipy.signal.butter``).
+
+    Applied with :func:`zero_phase` (forward and backward), its gain is |H(f)|^2: the
+    magnitude squared of one pass, no phase shift.
+
+    Parameters
+    ----------
+    cutoff_hz : float
+        -3 dB frequency of one pass, Hz; below the Nyquist frequency 1 / (2 T).
+    sample_period : float
+        T, s.
+    """
+    from scipy import signal
+    nyquist = 0.5 / sample_period
+    if not (0 < cutoff_hz < nyquist):
+        raise ArgumentError(f"filter cutoff {cutoff_hz:g} Hz must be in (0, {nyquist:g}) Hz "
+                         f"(the Nyquist frequency of T = {sample_period:g} s)")
+    return signal.butter(order, cutoff_hz, fs=1.0 / sample_period, output="sos")
+
+
+def zero_phase(sos, x):
+    """Apply ``sos`` forward and backward along axis 0 (``scipy.signal.sosfiltfilt``)."""
+    from scipy import signal
+    return signal.sosfiltfilt(sos, x, axis=0)
+
+
+def choose_cutoff(log, xe=None, factor=CUTOFF_FACTOR):
+    """The low-pass cutoff for ``log``: ``factor`` x the highest excitation frequency.
+
+    The band is the log's metadata ``excitation_max_hz`` (written by ``excite``); else it
+    is estimated from the data: the frequency below which 99.99 % of the power of the
+    positions xe (N, 2) (mean removed) lies. Capped at 0.4 of the Nyquist frequency.
+
+    Returns
+    -------
+    cutoff_hz, band_hz : float
+    how : str
+        Where the band came from (for the printed report).
+    """
+    T = log.period
+    if "excitation_max_hz" in log.meta:
+        band, how = float(log.meta["excitation_max_hz"]), "excitation_max_hz in the log"
+    else:
+        x = np.asarray(xe, dtype=float) - np.mean(xe, axis=0)
+        P = np.sum(np.abs(np.fft.rfft(x, axis=0)) ** 2, axis=1)
+        f = np.fft.rfftfreq(len(x), T)
+        c = np.cumsum(P) / np.sum(P)
+        band = float(f[np.searchsorted(c, 0.9999)])
+        how = "estimated from the spectrum of fk(qa) (99.99 % of its power)"
+    cap = 0.4 * 0.5 / T
+    return min(factor * band, cap), band, how
+
+
+def differentiate(x, T):
+    """Central differences along axis 0: (v, a) at every sample; the two end samples copy
+    their neighbours (they lie in the filter's discarded edge)."""
+    v, a = np.empty_like(x), np.empty_like(x)
+    v[1:-1] = (x[2:] - x[:-2]) / (2 * T)
+    a[1:-1] = (x[2:] - 2 * x[1:-1] + x[:-2]) / (T * T)
+    for z in (v, a):
+        z[0], z[-1] = z[1], z[-2]
+    return v, a
+
+
+def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
+                    min_joint_speed=MIN_JOINT_SPEED, order=FILTER_ORDER):
+    """Steps 2-5 of the pipeline: the filtered, decimated base regressor and task force.
+
+    Parameters
+    ----------
+    model : Model
+    base : BaseParameters
+        The base columns (:func:`pm2dof.identification.base.base_parameters`).
+    t : ndarray (N,)
+        Sample times, s (regular).
+    xe : ndarray (N, 2)
+        Measured positions fk(qa), m.
+    tau : ndarray (N, n)
+        Torque applied over [t_k, t_k+1), N*m.
+    cutoff_hz : float
+    decimate : int, optional
+        Keep every r-th sample (default: the largest r with 1 / (r T) >= 4 cutoff).
+    min_joint_speed : float
+        rad/s (0: use every sample).
+
+    Returns
+    -------
+    dict
+        ``Phi`` (K, 2, r) filtered base regressor rows, ``u`` (K, 2) filtered S^T tau, N;
+        ``t`` (K,) their times; ``xe``, ``xed``, ``xedd`` (N, 2) the filtered motion;
+        ``decimate``, ``edge`` (samples dropped at each end), ``n_slow`` (decimated samples
+        left out as slow).
+    """
+    T = float(np.median(np.diff(t)))
+    N, I = len(t), list(base.independent)
+    sos = lowpass(cutoff_hz, T, order)
+    xf = zero_phase(sos, xe)
+    v, a = differentiate(xf, T)
+    tau_mid = np.empty_like(tau)
+    tau_mid[0] = tau[0]
+    tau_mid[1:] = 0.5 * (tau[1:] + tau[:-1])   # the hold intervals before and after t_k
+    Y = np.empty((N, 2, len(I)))
+    u = np.empty((N, 2))
+    slow = np.zeros(N, dtype=bool)
+    Yk = np.empty((2, len(model.param_names)))
+    S = np.empty((model.n_legs, 2))
+    q = np.empty(2 * model.n_legs)
+    for k in range(N):
+        model.ik(xf[k], out=q)
+        model.S(q, out=S)
+        model.Y(q, v[k], v[k], a[k], out=Yk)     # eq. 13 with xrd = xed, xrdd = xedd
+        Y[k] = Yk[:, I]
+        u[k] = S.T @ tau_mid[k]
+        slow[k] = np.min(np.abs(S @ v[k])) < min_joint_speed
+    Yf, uf = zero_phase(sos, Y), zero_phase(sos, u)   # parallel filtering: the same filter
+    edge = int(math.ceil(3.0 / (cutoff_hz * T)))       # filtfilt's start-up transients
+    r = decimate or max(1, int(1.0 / (4.0 * cutoff_hz * T)))
+    reach = int(math.ceil(0.5 / (cutoff_hz * T)))      # a slow sample spoils this far
+    if min_joint_speed > 0 and reach > 0:
+        slow = np.convolve(slow.astype(float), np.ones(2 * reach + 1), mode="same") > 0
+    ks = np.arange(edge, N - edge, r)
+    keep = ks[~slow[ks]]
+    return {"Phi": Yf[keep], "u": uf[keep], "t": np.asarray(t)[keep], "xe": xf, "xed": v,
+            "xedd": a, "decimate": r, "edge": edge, "n_slow": int(len(ks) - len(keep)),
+            "n_candidates": int(len(ks))}
+
+
+def weighted_ls(Phi, u, lags=None):
+    """Weighted least squares for Phi (K, 2, r) theta_b = u (K, 2).
+
+    Ordinary least squares first; then each task axis weighted by 1 / sigma of its OLS
+    residual and solved again. Columns are scaled to unit norm for the solve (units differ).
+    The covariance is Newey-West's (Bartlett weights, ``lags`` default floor(4 (K/100)^(2/9))):
+    the residuals of filtered data are correlated, and the plain sigma^2 (A^T A)^-1 would be
+    optimistic.
+
+    Returns
+    -------
+    dict
+        ``estimate`` (r,), ``std`` (r,) 1 sigma, ``cov`` (r, r), ``weights`` (2,) 1/N,
+        ``residual`` (K, 2) N (unweighted), ``A`` (2K, r) and ``b`` (2K,) the weighted system,
+        ``rms`` (2,) N, ``r2`` (2,), ``lag1`` (lag-1 autocorrelation of the weighted
+        residual), ``lags``, ``inflation`` (Newey-West over plain variance, geometric mean).
+    """
+    K, _, r = Phi.shape
+    if 2 * K <= r:
+        raise LogError(f"too short: {K} usable samples give {2 * K} equations for {r} base "
+                       f"parameters")
+
+    def solve(w):
+        A = (Phi * w[None, :, None]).reshape(-1, r)
+        b = (u * w[None, :]).reshape(-1)
+        scale = np.linalg.norm(A, axis=0)
+        scale[scale == 0] = 1.0
+        x, *_ = np.linalg.lstsq(A / scale, b, rcond=None)
+        return A, b, x / scale
+
+    _, _, x0 = solve(np.ones(2))
+    res0 = u - Phi @ x0
+    sig = np.sqrt(np.mean(res0 ** 2, axis=0))
+    w = 1.0 / np.maximum(sig, 1e-300)
+    A, b, x = solve(w)
+    res = u - Phi @ x
+    rw = res * w                                            # (K, 2), ~unit variance
+    Ak = Phi * w[None, :, None]
+    g = np.einsum("kir,ki->kr", Ak, rw)                      # scores (K, r)
+    L = int(math.floor(4 * (K / 100.0) ** (2.0 / 9.0))) if lags is None else int(lags)
+    Sg = g.T @ g
+    for lag in range(1, L + 1):
+        G = g[lag:].T @ g[:-lag]
+        Sg += (1.0 - lag / (L + 1.0)) * (G + G.T)
+    scale = np.linalg.norm(A, axis=0)
+    H = (A / scale).T @ (A / scale)
+    Hi = np.linalg.inv(H) / np.outer(scale, scale)          # (A^T A)^-1
+    dof = 2 * K - r
+    cov = (2 * K / dof) * Hi @ Sg @ Hi                        # sandwich, small-sample factor
+    plain = (np.sum(rw ** 2) / dof) * Hi
+    std = np.sqrt(np.diag(cov))
+    tss = np.sum((u - u.mean(axis=0)) ** 2, axis=0)
+    flat = rw.reshape(-1)
+    lag1 = float(np.sum(rw[1:] * rw[:-1]) / np.sum(rw * rw)) if K > 1 else 0.0
+    return {"estimate": x, "std": std, "cov": cov, "weights": w, "residual": res, "A": A,
+            "b": b, "rms": np.sqrt(np.mean(res ** 2, axis=0)),
+            "r2": 1.0 - np.sum(res ** 2, axis=0) / tss, "lag1": lag1, "lags": L,
+            "inflation": float(np.exp(np.mean(np.log(np.diag(cov) / np.diag(plain))))),
+            "n_equations": int(flat.size)}
+
+
+def weak_directions(cov, estimate, names, rel=0.1):
+    """Directions of the base parameters the data cannot determine.
+
+    The covariance is made relative: each base parameter is divided by its size, |estimate|
+    but at least 10 % of the largest of its kind (inertial: alpha, beta, gamma; friction),
+    so a parameter near zero is judged against its kind's scale. An eigenvector of that
+    relative covariance whose 2 sigma exceeds ``rel`` (default 10 %) is reported with its
+    dominant parameters.
+
+    Returns
+    -------
+    list of (rel_2sigma, description), largest first
+    """
+    est = np.abs(np.asarray(estimate, dtype=float))
+    inertial = inertial_mask(names)
+    s = est.copy()
+    for grp in (inertial, ~inertial):
+        if grp.any():
+            s[grp] = np.maximum(est[grp], 0.1 * est[grp].max())
+    s = np.maximum(s, 1e-300)
+    lam, V = np.linalg.eigh(cov / np.outer(s, s))
+    out = []
+    for j in np.argsort(lam)[::-1]:
+        r2s = 2 * math.sqrt(max(lam[j], 0.0))
+        if r2s <= rel:
+            break
+        v = V[:, j] / np.abs(V[:, j]).max()
+        terms = [f"{c:+.2f} {n}" for c, n in sorted(zip(v, names), key=lambda z: -abs(z[0]))
+                 if abs(c) > 0.2]
+        out.append((r2s, " ".join(terms)))
+    return out
+
+
+def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
+                 decimate=None, min_joint_speed=MIN_JOINT_SPEED, consistent=True):
+    """The whole pipeline on one log: base parameters with ±2 sigma, and a physical theta.
+
+    Parameters
+    ----------
+    model : Model
+    log : IdentLog
+        Checked against the model by :func:`pm2dof.identification.log.log_poses`.
+    base : BaseParameters, optional
+        :func:`pm2dof.identification.base.base_parameters` (computed if not given).
+    cutoff_hz : float, optional
+        Low-pass cutoff (default :func:`choose_cutoff`: ``factor`` x the excitation band).
+    decimate : int, optional
+        Keep every r-th filtered sample (default: 1 / (r T) >= 4 cutoff).
+    min_joint_speed : float
+        rad/s; samples with a slower active joint are left out (0: keep all).
+    consistent : bool
+        Also solve for a physically consistent full theta (CasADi + IPOPT).
+
+    Returns
+    -------
+    dict
+        ``base`` (the :class:`~pm2dof.identification.base.BaseParameters`), ``names`` (base
+        parameters, readable), ``independent_names``, ``estimate`` (r,),
+        ``std`` (r,) 1 sigma, ``nominal`` (r,) Tables 1-2 folded, ``theta_ls`` (p,) full theta
+        with the dependent parameters at nominal, ``consistent`` (dict of
+        :func:`pm2dof.identification.consistent.consistent_theta`, or None), ``theta0`` (p,) the
+        theta to use (consistent if computed), ``cutoff_hz``, ``band_hz``, ``band_from``,
+        ``decimate``, ``samples`` (equations / 2), ``left_out_slow``, residual statistics
+        ``rms`` (2,) N, ``r2`` (2,), ``lag1``, ``inflation``; ``warnings`` (list of str).
+
+    Raises
+    ------
+    LogError
+        The log does not fit the model (see ``log_poses``), or is too short, or does not
+        excite every base parameter (names the directions).
+    """
+    from .base import base_parameters
+    base = base_parameters(model) if base is None else base
+    inames = base.independent_names
+    xe, _ = log_poses(model, log)
+    if cutoff_hz is None:
+        cutoff_hz, band, how = choose_cutoff(log, xe, factor)
+    else:
+        band, how = None, "given"
+    st = stack_regressor(model, base, log.t, xe, log.tau, cutoff_hz, decimate=decimate,
+                         min_joint_speed=min_joint_speed)
+    K = len(st["t"])
+    r = base.r
+    src = log.source
+    if 2 * K <= r:
+        raise LogError(f"{src}: too short to determine the {r} base parameters: {K} usable "
+                       f"samples after the filter's edges ({st['edge']} samples each end), "
+                       f"decimation by {st['decimate']} and {st['n_slow']} slow samples left out")
+    Phi2 = st["Phi"].reshape(-1, r)
+    cs = np.linalg.norm(Phi2, axis=0)
+    sv = np.linalg.svd(Phi2 / np.where(cs > 0, cs, 1.0), compute_uv=False)
+    if cs.min() == 0 or sv[-1] < 1e-8 * sv[0]:
+        unseen = [n for n, c in zip(inames, cs) if c == 0] or ["(a combination; see the "
+                                                             "condition number)"]
+        raise LogError(f"{src}: the log does not excite every base parameter (too short or "
+                       f"too little motion): column-scaled regressor condition number "
+                       f"{sv[0] / max(sv[-1], 1e-300):.3g}; not seen: {', '.join(unseen)}")
+    ls = weighted_ls(st["Phi"], st["u"])
+    nominal = model.theta_nominal
+    theta_ls = base.unfold(ls["estimate"], nominal)
+    warnings = []
+    if log.ignored:
+        warnings.append(f"columns not used: {', '.join(log.ignored)}")
+    for r2s, what in weak_directions(ls["cov"], ls["estimate"], inames):
+        warnings.append(f"the data do not determine the direction {what} well (±2 sigma = "
+                        f"{100 * r2s:.0f} % of its size): excite more, or trust it less")
+    frac_slow = st["n_slow"] / max(st["n_candidates"], 1)
+    if frac_slow > 0.75:
+        warnings.append(f"{100 * frac_slow:.0f} % of the samples were left out because a joint "
+                        f"moved slower than {min_joint_speed:g} rad/s: the estimate rests on "
+                        f"few samples; a faster or richer excitation helps")
+    sat = np.abs(log.tau) >= 0.999 * np.asarray(model.spec.limits["tau_max"])
+    if sat.any():
+        warnings.append(f"{int(sat.any(axis=1).sum())} rows have a torque at its limit "
+                        f"(tau_max): if the drive clipped it, the logged torque is not the "
+                        f"applied one")
+    out = {"base": base, "names": base.labels(), "independent_names": inames,
+           "estimate": ls["estimate"], "std": ls["std"], "cov": ls["cov"],
+           "nominal": base.fold(nominal), "theta_ls": theta_ls,
+           "cutoff_hz": float(cutoff_hz), "band_hz": band, "band_from": how,
+           "decimate": st["decimate"], "samples": K, "left_out_slow": st["n_slow"],
+           "min_joint_speed": min_joint_speed, "rms": ls["rms"], "r2": ls["r2"],
+           "lag1": ls["lag1"], "inflation": ls["inflation"],
+           "condition_number": float(sv[0] / sv[-1]), "duration_s": log.duration,
+           "warnings": warnings, "consistent": None, "theta0": theta_ls,
+           "param_names": list(base.names)}
+    if consistent:
+        from .consistent import consistent_theta
+        c = consistent_theta(ls["A"], ls["b"], base, nominal)
+        out["consistent"] = c
+        out["theta0"] = c["theta"]
+        if any(not s.startswith(("Solve_Succeeded", "Solved_To_Acceptable", "not needed"))
+               for s in c["status"]):
+            warnings.append(f"IPOPT: {c['status']}: the physical theta may not be optimal")
+    return out

@@ -1,0 +1,249 @@
+# How good is identification from logs? Monte Carlo over plant truths and encoder noise, against the targets.
+"""``pm2dof identify monte-carlo N --excitation FILE``: the issue's targets, measured.
+
+Each seed draws a plant truth around the model file's ``[plant]`` (every bare-link inertia,
+viscous, Coulomb and Stribeck coefficient scaled by 1 + 0.1 N(0, 1), the payload mass
+uniform in [0, 0.5] kg) and encoder noise (Gaussian, ``noise_counts`` counts rms, added to the
+logged angles on top of the 17-bit quantisation the controller sees), runs the excitation on
+that plant (APD with Tables 1-2 tracking), identifies from the log alone, and compares with
+the truth:
+
+* the inertial base parameters as a vector (relative 2-norm of the error), and each one
+  larger than 10 % of the largest (relative error);
+* friction (fv, fc): largest relative error;
+* the actuator torque the identified (physical) theta predicts over random states, against
+  the plant's own (its friction with Coulomb smoothing and the Stribeck excess): relative
+  2-norm over the states;
+* whether each base parameter's truth lies within its ±2 sigma.
+"""
+import math
+
+import numpy as np
+
+from ..analysis.progress import bar
+from ..control.simulate import plant_truth, theta_truth
+from ..core.errors import ArgumentError
+from .base import base_parameters, inertial_mask, region_center
+from .excitation import excite
+from .fit import identify_log
+
+__all__ = ["random_truth", "plant_task_force", "torque_error", "monte_carlo",
+           "format_monte_carlo", "substep_sensitivity", "seeded_table3", "format_seeded_table3",
+           "run_monte_carlo", "TARGETS"]
+
+#: the issue's targets: inertial vector, each large inertial parameter, friction, torque, coverage
+TARGETS = {"inertial_vector": 0.05, "inertial_each": 0.05, "friction": 0.03, "torque": 0.05,
+           "coverage": 0.90}
+
+
+def random_truth(model, rng, spread=0.1, payload=(0.0, 0.5)):
+    """A plant truth (dict as :func:`pm2dof.plant_truth`) around ``[plant]``: each bare-link
+    inertia and friction coefficient times 1 + spread N(0, 1) (clipped to [0.5, 1.5]), payload
+    mass uniform in ``payload`` kg."""
+    p = model.spec.plant
+    over = {k: list(np.asarray(p[k], float) * np.clip(1 + spread * rng.normal(size=model.n_legs),
+                                                      0.5, 1.5))
+            for k in ("alpha", "beta", "gamma", "fv", "fc", "fs")}
+    return plant_truth(model, payload_mass=float(rng.uniform(*payload)), **over)
+
+
+def plant_task_force(model, truth, q, xed, xedd):
+    """The plant's task force S^T tau (2,), N, at pose q, velocity xed, acceleration xedd:
+    truth inertia (eq. 12 via Y with the truth's inertial and zero friction parameters) plus
+    the plant's friction f_i = (fc_i + fs_i / (1 + (v/vs)^2)) v / sqrt(v^2 + eps^2) + fv_i v
+    (derive/plant.py), v = qd_a,i."""
+    th = theta_truth(model, truth).copy()
+    th[~inertial_mask(model.param_names)] = 0.0
+    S = model.S(q)
+    v = S @ xed
+    eps, vs = truth["coulomb_smoothing_velocity"], truth["stribeck_velocity"]
+    f = ((truth["fc"] + truth["fs"] / (1 + (v / vs) ** 2)) * v / np.sqrt(v * v + eps * eps)
+         + truth["fv"] * v)
+    return model.Y(q, xed, xed, xedd) @ th + S.T @ f
+
+
+def torque_error(model, theta, truth, n=400, seed=0, radius=0.05, speed=0.3, accel=5.0):
+    """Relative 2-norm of the min-norm actuator torque predicted by ``theta`` minus the plant's,
+    over ``n`` random states: positions uniform in a disc of ``radius`` m around the middle of
+    the model's first move, velocities N(0, speed) m/s, accelerations N(0, accel) m/s^2 per
+    axis."""
+    rng = np.random.default_rng(seed)
+    c = region_center(model)
+    num = den = 0.0
+    while n > 0:
+        r, phi = radius * math.sqrt(rng.uniform()), rng.uniform(0, 2 * math.pi)
+        x = c + r * np.array([math.cos(phi), math.sin(phi)])
+        q = model.ik(x)
+        v, a = rng.normal(0, speed, 2), rng.normal(0, accel, 2)
+        S = model.S(q)
+        split = S @ np.linalg.inv(S.T @ S)                     # eq. 21
+        tp = split @ plant_task_force(model, truth, q, v, a)
+        ti = split @ (model.Y(q, v, v, a) @ theta)
+        num += float(np.sum((ti - tp) ** 2))
+        den += float(np.sum(tp ** 2))
+        n -= 1
+    return math.sqrt(num / den)
+
+
+def _one(model, base, traj, truth, rng, noise_counts, identify_kw):
+    log = excite(model, traj, truth=truth)
+    if noise_counts > 0:
+        step = 2 * math.pi / model.spec.sensing["encoder_counts_per_rev"]
+        log = type(log)(t=log.t, qa=log.qa + noise_counts * step * rng.normal(size=log.qa.shape),
+                        tau=log.tau, meta=log.meta)
+    res = identify_log(model, log, base=base, **identify_kw)
+    pi = base.fold(theta_truth(model, truth))
+    inert = base.inertial
+    err = res["estimate"] - pi
+    large = inert & (np.abs(pi) > 0.1 * np.abs(pi[inert]).max())
+    return {"estimate": res["estimate"], "truth": pi, "std": res["std"],
+            "inertial_vector": float(np.linalg.norm(err[inert]) / np.linalg.norm(pi[inert])),
+            "inertial_each": float(np.max(np.abs(err[large] / pi[large]))),
+            "friction": float(np.max(np.abs(err[~inert] / pi[~inert]))),
+            "torque": torque_error(model, res["theta0"], truth),
+            "covered": np.abs(err) <= 2 * res["std"], "theta0": res["theta0"],
+            "large": large}
+
+
+def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", identify_kw=None,
+                progress=None):
+    """Identify from ``seeds`` simulated logs of ``traj`` and measure the targets.
+
+    Parameters
+    ----------
+    traj : trajectory-like (t, xd, xd_dot, xd_ddot, period, max_hz)
+        The excitation (e.g. :func:`pm2dof.identification.design.trajectory_of`).
+    truth : "random" or "model"
+        A fresh :func:`random_truth` per seed, or the model file's [plant] every time (then
+        only the encoder noise differs).
+    noise_counts : float
+        Encoder noise added to the logged angles, counts rms (0: quantisation only).
+    progress : callable(str) or pm2dof.analysis.progress.Progress, optional
+        A :class:`~pm2dof.analysis.progress.Progress` draws a bar over the seeds.
+
+    Returns
+    -------
+    dict
+        Per-seed arrays of every metric, the names, the coverage per base parameter, and
+        the medians and 90th percentiles.
+    """
+    base = base_parameters(model)
+    runs = []
+    with bar(progress, seeds, "Monte Carlo", unit="seed") as done:
+        for s in range(seeds):
+            rng = np.random.default_rng(1000 + s)
+            tr = random_truth(model, rng) if truth == "random" else plant_truth(model)
+            runs.append(_one(model, base, traj, tr, rng, noise_counts, identify_kw or {}))
+            done.set_postfix_str(f"inertial error {100 * runs[-1]['inertial_vector']:.2f} %",
+                                 refresh=False)
+            done.update(1)
+    out = {"seeds": seeds, "noise_counts": noise_counts, "truth": truth,
+           "names": base.labels(),
+           "coverage": np.mean([r["covered"] for r in runs], axis=0),
+           "large_inertial": runs[0]["large"]}
+    for k in ("inertial_vector", "inertial_each", "friction", "torque"):
+        v = np.array([r[k] for r in runs])
+        out[k] = {"median": float(np.median(v)), "p90": float(np.percentile(v, 90)),
+                  "max": float(v.max()), "met_fraction": float(np.mean(v <= TARGETS[k]))}
+    out["relative_error"] = np.array([(r["estimate"] - r["truth"]) / np.abs(r["truth"])
+                                      for r in runs])
+    return out
+
+
+def format_monte_carlo(mc):
+    """The target table of a :func:`monte_carlo` run."""
+    lines = [f"Monte Carlo over {mc['seeds']} seeds ({'random plant truths' if mc['truth'] == 'random' else 'the model file [plant]'}, "
+             f"17-bit encoders + {mc['noise_counts']:g} count rms noise in the log)",
+             f"{'target':52s} {'median':>9s} {'90 %':>9s} {'max':>9s} {'met in':>7s}"]
+    what = {"inertial_vector": "inertial base parameters, vector, within 5 %",
+            "inertial_each": "each inertial base parameter > 10 % of max, within 5 %",
+            "friction": "friction (fv, fc) within 3 %",
+            "torque": "torque predicted over random states within 5 %"}
+    for k, text in what.items():
+        d = mc[k]
+        lines.append(f"{text:52s} {100 * d['median']:8.2f}% {100 * d['p90']:8.2f}% "
+                     f"{100 * d['max']:8.2f}% {100 * d['met_fraction']:6.0f}%")
+    lines.append("truth within +-2 sigma (target >= 90 % of seeds), per base parameter:")
+    for n, c in zip(mc["names"], mc["coverage"]):
+        lines.append(f"  {n[:44]:44s} {100 * c:5.0f} %{'' if c >= TARGETS['coverage'] else '  (below 90 %)'}")
+    return "\n".join(lines)
+
+
+def substep_sensitivity(model, other, traj, seeds=10, *, noise_counts=0.5, identify_kw=None):
+    """How much the estimates move when only the plant's integration changes.
+
+    ``other`` is the same robot derived with another ``rk4_substeps`` (same parameter names).
+    For each seed the same random truth and the same encoder noise run on both plants; the
+    relative change of each base parameter between the two identifications is returned.
+
+    Returns
+    -------
+    dict
+        ``names``, ``change`` (seeds, r) relative changes, ``max_large`` (largest over the
+        inertial base parameters > 10 % of the largest and the friction ones, per seed).
+    """
+    if list(other.param_names) != list(model.param_names):
+        raise ArgumentError("the two models must have the same parameters")
+    base = base_parameters(model)
+    changes, worst = [], []
+    for s in range(seeds):
+        est = []
+        for mdl in (model, other):
+            rng = np.random.default_rng(1000 + s)
+            tr = random_truth(model, rng)
+            est.append(_one(mdl, base, traj, tr, rng, noise_counts, identify_kw or {}))
+        d = (est[1]["estimate"] - est[0]["estimate"]) / np.abs(est[0]["estimate"])
+        changes.append(d)
+        worst.append(float(np.max(np.abs(d[est[0]["large"] | ~base.inertial]))))
+    return {"names": base.labels(), "change": np.array(changes), "max_large": np.array(worst)}
+
+
+def seeded_table3(model, theta):
+    """Table 3 with the controllers' model = Tables 1-2 and = ``theta`` (identified).
+
+    Returns
+    -------
+    dict
+        {speed: {"nominal": table3 numbers, "identified": table3 numbers}} (RMSE in m,
+        RPE in percent; see :func:`pm2dof.analysis.experiment.table3_json`).
+    """
+    from ..analysis.experiment import table3, table3_json
+    nominal = table3_json(table3(model))
+    identified = table3_json(table3(model, theta0=np.asarray(theta, dtype=float)))
+    return {s: {"nominal": nominal[s], "identified": identified[s]} for s in nominal}
+
+
+def format_seeded_table3(tab):
+    lines = ["Table 3 (RMSE, eq. 41, m) with the controllers' model from Tables 1-2 and from the "
+             "identified theta:",
+             f"{'speed':6s} {'APD T1-2':>11s} {'APD ident':>11s} {'NA T1-2':>11s} "
+             f"{'NA ident':>11s} {'RPE vs APD ident':>17s}"]
+    for s, d in tab.items():
+        a0, a1 = d["nominal"]["apd_rmse"], d["identified"]["apd_rmse"]
+        n0, n1 = d["nominal"]["na_rmse"], d["identified"]["na_rmse"]
+        lines.append(f"{s:6s} {a0:11.4e} {a1:11.4e} {n0:11.4e} {n1:11.4e} "
+                     f"{d['identified']['rpe_percent']:16.1f}%")
+    return "\n".join(lines)
+
+
+def run_monte_carlo(seeds, *, model=None, generated=None, excitation_file=None,
+                    duration=None, as_json=False, echo=print, progress=None):
+    """``pm2dof identify monte-carlo N [--excitation FILE]``: the targets table. The model is
+    the one the excitation file records unless ``model`` is given (then it must be that one);
+    without a file the default multi-sine of ``duration`` s runs on ``model``."""
+    from ..analysis.results import dumps
+    from .excitation import DEFAULT_DURATION, excitation_trajectory, model_of_excitation
+    if seeds < 1:
+        raise ArgumentError(f"monte-carlo needs N >= 1 seeds, got {seeds}")
+    model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
+    traj, what = excitation_trajectory(model, excitation_file,
+                                       DEFAULT_DURATION if duration is None else duration)
+    if progress:
+        progress(f"{seeds} seeds of {what}: random plant truth and encoder noise, excite, "
+                 f"identify")
+    mc = monte_carlo(model, traj, seeds, progress=progress)
+    if as_json:
+        echo(dumps({k: v for k, v in mc.items() if k != "large_inertial"}))
+    else:
+        echo(format_monte_carlo(mc))
+    return mc

@@ -1,0 +1,185 @@
+# `pm2dof identify fit [LOG]`: run the identification pipeline on a log, print, save theta.
+"""Text and JSON reports of :func:`pm2dof.identification.fit.identify_log`, and
+``pm2dof identify fit``: a log read from a file and a simulated excitation run go through the
+same pipeline and the same report."""
+import numpy as np
+
+from ..control.simulate import theta_truth
+from ..core.errors import ArgumentError
+from .fit import identify_log
+from .log import LogError, log_folder, read_log
+
+__all__ = ["format_identification", "summary", "run_fit", "load_theta", "SIMULATED_SOURCE"]
+
+#: metadata ``source`` of a log simulated with the model file's [plant] (then the truth is known)
+SIMULATED_SOURCE = "simulated plant ([plant] of the model file)"
+
+
+def summary(model, log, res):
+    """JSON-ready numbers of one identification (the base parameters, the physical theta,
+    the filter and the residual statistics; the plant truth if the log is simulated with the
+    model file's [plant])."""
+    c = res["consistent"]
+    out = {"log": log.source, "model": model.name, "rows": len(log.t),
+           "duration_s": log.duration, "sample_period_s": log.period,
+           "filter": {"kind": "Butterworth, zero-phase (scipy.signal.sosfiltfilt)",
+                      "order": 4, "cutoff_hz": res["cutoff_hz"], "band_hz": res["band_hz"],
+                      "band_from": res["band_from"], "decimate": res["decimate"]},
+           "samples_used": res["samples"], "samples_left_out_slow": res["left_out_slow"],
+           "min_joint_speed_rad_s": res["min_joint_speed"],
+           "residual_rms_N": res["rms"], "r2": res["r2"], "residual_lag1": res["lag1"],
+           "condition_number": res["condition_number"],
+           "base_parameters": res["names"], "estimate": res["estimate"],
+           "two_sigma": 2 * res["std"], "nominal": res["nominal"],
+           "param_names": list(model.param_names), "theta0": res["theta0"],
+           "theta_least_squares": res["theta_ls"], "warnings": res["warnings"]}
+    if c is not None:
+        out["physical"] = {"base": c["base"], "active_constraints": c["active"],
+                           "ipopt_status": list(c["status"]),
+                           "objective_increase": c["objective"] - c["unconstrained_objective"]}
+    if log.meta.get("source") == SIMULATED_SOURCE:
+        out["truth"] = res["base"].fold(theta_truth(model))
+    return out
+
+
+def format_identification(model, log, res):
+    """The printed report of ``pm2dof identify fit``."""
+    s = summary(model, log, res)
+    f = s["filter"]
+    band = (f"{f['cutoff_hz']:.4g} Hz = {f['cutoff_hz'] / f['band_hz']:.3g} x the excitation "
+            f"band {f['band_hz']:.4g} Hz ({f['band_from']})" if f["band_hz"] else
+            f"{f['cutoff_hz']:.4g} Hz (given)")
+    lines = [
+        f"identification from {log.source}: {len(log.t)} rows, {log.duration:.3f} s at T = "
+        f"{log.period * 1e3:.4g} ms, model {model.name!r} ({model.n_legs} legs)",
+        f"filter: 4th-order Butterworth, zero-phase (sosfiltfilt), cutoff {band}; the same "
+        f"filter on every regressor column and on S^T tau, then decimated by {f['decimate']}",
+        f"samples: {s['samples_used']} used ({2 * s['samples_used']} equations), "
+        f"{s['samples_left_out_slow']} left out (a joint slower than "
+        f"{s['min_joint_speed_rad_s']:g} rad/s)",
+        f"residual: rms {s['residual_rms_N'][0]:.4g} N (x), {s['residual_rms_N'][1]:.4g} N (y); "
+        f"R^2 {s['r2'][0]:.6f}, {s['r2'][1]:.6f}; lag-1 autocorrelation {s['residual_lag1']:.2f} "
+        f"(sigma from a Newey-West covariance); condition number {s['condition_number']:.4g}",
+        "",
+    ]
+    truth = s.get("truth")
+    phys = s.get("physical")
+    head = f"{'base parameter':38s} {'estimate':>10s} {'+-2 sigma':>10s} {'nominal':>10s}"
+    head += f" {'physical':>10s}" if phys else ""
+    head += f" {'truth':>10s}" if truth is not None else ""
+    lines.append(head)
+    for k, name in enumerate(s["base_parameters"]):
+        row = (f"{name[:38]:38s} {s['estimate'][k]:10.5f} {s['two_sigma'][k]:10.5f} "
+               f"{s['nominal'][k]:10.5f}")
+        row += f" {phys['base'][k]:10.5f}" if phys else ""
+        if truth is not None:
+            row += f" {truth[k]:10.5f}"
+            if abs(s["estimate"][k] - truth[k]) > s["two_sigma"][k]:
+                row += "  (truth outside +-2 sigma)"
+        lines.append(row)
+    if truth is not None:
+        lines.append("truth: the simulated plant's ([plant] of the model file, payload booked to "
+                     "its leg), shown because this log says it was simulated; the Stribeck "
+                     "excess has no coordinate in eq. 2")
+    if phys:
+        act = ", ".join(phys["active_constraints"]) or "none"
+        how = ("the least-squares base parameters are physical as they are" if
+               phys["ipopt_status"][0].startswith("not needed") else
+               f"constrained least squares, IPOPT: {phys['ipopt_status'][0]}; active "
+               f"constraints: {act}; residual increase {phys['objective_increase']:.3g} "
+               f"(relative)")
+        lines += ["", f"physical theta (every leg's [[alpha, beta], [beta, gamma]] >= 0, friction "
+                  f">= 0; CasADi + IPOPT): {how}",
+                  "the directions no data can see (point masses at the common tip booked to one "
+                  "leg or another) are fixed closest to the nominal theta (Tables 1-2)"]
+    lines.append("theta0 (full, for NAController/APDController(theta0=...) and [nominal]):")
+    lines += [f"  {n:8s} {v:10.6f}" for n, v in zip(s["param_names"], s["theta0"])]
+    for w in s["warnings"]:
+        lines.append(f"warning: {w}")
+    return "\n".join(lines)
+
+
+def run_fit(log=None, *, model=None, generated=None, excitation_file=None, duration=None,
+            quantise=True, controller=None, save=None, as_json=False, cutoff_hz=None,
+            min_joint_speed=None, time_tolerance=1e-3, seed=False, echo=print, progress=None):
+    """``pm2dof identify fit [LOG]``: identify, print (text or JSON), optionally save.
+
+    Parameters
+    ----------
+    log : str or Path, optional
+        A log file (:func:`~pm2dof.identification.log.read_log`). Its model is the one it
+        records unless ``model`` is given, and then it must be that one. Without a log, an
+        excitation runs on the simulated plant first
+        (:func:`~pm2dof.identification.excitation.simulated_log`: ``excitation_file``, else the
+        default multi-sine of ``duration`` s; ``quantise``; ``controller`` "apd" (default) or
+        "na"), and that log is identified the same way.
+    model, generated : optional
+        ``--model`` (a name, a model file or a Model), ``--generated``.
+    save : path, optional
+        Write ``{"param_names", "theta0", ...}`` and the provenance as JSON.
+    seed : bool
+        Also Table 3 with APD and NA using the identified theta.
+    cutoff_hz, min_joint_speed, time_tolerance :
+        See :func:`~pm2dof.identification.fit.identify_log` and ``read_log``.
+
+    Returns
+    -------
+    dict
+        :func:`~pm2dof.identification.fit.identify_log`'s result.
+    """
+    from ..analysis.results import dumps, provenance, write_json
+    from .excitation import DEFAULT_DURATION, model_of_excitation, simulated_log
+    from .fit import MIN_JOINT_SPEED
+    from .model_ref import model_for
+    if log is not None:
+        simulated = {"--excitation": excitation_file is not None,
+                     "--duration": duration is not None, "--exact-encoders": not quantise,
+                     "--controller": controller is not None}
+        given = [k for k, v in simulated.items() if v]
+        if given:
+            raise ArgumentError(f"{', '.join(given)}: options of a simulated excitation run, "
+                                f"which fit runs only without a LOG (got LOG {log})")
+        path = log
+        log = read_log(path, time_tolerance=time_tolerance)
+        model = model_for(log.meta, log_folder(log), str(path), model=model, generated=generated,
+                          error=LogError)
+        if progress:
+            progress(f"read {path}: {len(log.t)} rows; filtering, stacking the base regressor, "
+                     f"weighted and physically constrained least squares")
+    else:
+        model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
+        log = simulated_log(model, excitation_file,
+                            DEFAULT_DURATION if duration is None else duration,
+                            quantise=quantise, controller=controller or "apd", progress=progress)
+        if progress:
+            progress(f"{len(log.t)} rows; filtering, stacking the base regressor, weighted and "
+                     f"physically constrained least squares")
+    res = identify_log(model, log, cutoff_hz=cutoff_hz,
+                       min_joint_speed=MIN_JOINT_SPEED if min_joint_speed is None
+                       else min_joint_speed)
+    s = summary(model, log, res)
+    if seed:
+        from .monte_carlo import format_seeded_table3, seeded_table3
+        if progress:
+            progress("Table 3 with Tables 1-2 and with the identified theta")
+        s["table3"] = seeded_table3(model, res["theta0"])
+    echo(dumps(s) if as_json else format_identification(model, log, res)
+         + ("\n\n" + format_seeded_table3(s["table3"]) if seed else ""))
+    if save:
+        write_json(save, {**s, "provenance": provenance(model)})
+        if not as_json:
+            echo(f"saved {save} (theta0: use it with NAController(model, theta0=...))")
+    return res
+
+
+def load_theta(path, model):
+    """theta0 (p,) from a JSON written by ``pm2dof identify fit --save`` (checks the names)."""
+    import json
+    d = json.loads(open(path).read())
+    if list(d.get("param_names", [])) != list(model.param_names):
+        raise ArgumentError(f"{path}: param_names {d.get('param_names')} do not match model "
+                         f"{model.name!r} ({list(model.param_names)})")
+    th = np.asarray(d["theta0"], dtype=float)
+    if th.shape != (len(model.param_names),) or not np.isfinite(th).all():
+        raise ArgumentError(f"{path}: theta0 must be {len(model.param_names)} finite numbers")
+    return th

@@ -1,0 +1,209 @@
+# Where models and their generated code live: shipped names, user folders, the derive guards.
+"""Model references and generated-code folders (issue 18), and the derive guards (issue 22 #4).
+
+The full install (wheel and sdist in fresh virtual environments, used from an empty folder) is
+``tests/install/smoke.sh`` (``make check-install``, run by CI); these are the in-process parts.
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pm2dof
+from pm2dof.core import paths
+from pm2dof.core.model_file import read_model_file
+from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
+
+PAPER = SHIPPED_MODELS / "shang2010.toml"
+PM2DOF = [sys.executable, "-m", "pm2dof"]
+
+
+def _derive(*args):
+    """``pm2dof derive ARGS --no-build`` in-process; returns (exit code, stdout + stderr)."""
+    r = subprocess.run([*PM2DOF, "derive", *map(str, args), "--no-build"], capture_output=True,
+                       text=True, timeout=300)
+    return r.returncode, r.stdout + r.stderr
+
+
+def _robot(folder, name="myrobot", la="0.246", stem=None):
+    """A model file of our own: the paper's with another name and leg 1's active link."""
+    text = PAPER.read_text()
+    text = text.replace('name = "shang2010"', f'name = "{name}"').replace("la = 0.244", f"la = {la}", 1)
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"{stem or name}.toml"
+    path.write_text(text)
+    return path
+
+
+# --- references -----------------------------------------------------------------------------
+
+def test_shipped_models_by_name():
+    names = set(paths.shipped_models())
+    assert names == {p.stem for p in SHIPPED_MODELS.glob("*.toml")} and "fivebar" in names
+    assert pm2dof.load_model().name == "shang2010"
+    five = pm2dof.load_model("fivebar")
+    assert five.n_legs == 2 and Path(five.generated) == SHIPPED_GENERATED / "fivebar"
+    assert paths.resolve_model("fivebar") == SHIPPED_MODELS / "fivebar.toml"
+
+
+def test_unknown_name_lists_the_shipped_models():
+    with pytest.raises(pm2dof.ModelFileError) as info:
+        pm2dof.load_model("fivebars")
+    msg = str(info.value)
+    assert "'fivebars' is neither a shipped model" in msg and "fivebar, fourleg" in msg, msg
+
+
+def test_paths_expand_home_and_are_taken_relative_to_a_given_folder(tmp_path, monkeypatch):
+    monkeypatch.setenv("HOME", str(tmp_path))
+    assert paths.resolve_model("~/robots/r.toml") == tmp_path / "robots" / "r.toml"
+    assert paths.resolve_model("../r.toml", relative_to=tmp_path / "s") == tmp_path / "s" / ".." / "r.toml"
+    assert paths.default_generated_dir(tmp_path / "robots" / "r.toml") == \
+        tmp_path / "robots" / "generated" / "r"
+    assert paths.default_generated_dir(PAPER) == SHIPPED_GENERATED / "shang2010"
+
+
+def test_cli_models_lists_every_shipped_model_with_its_description():
+    r = subprocess.run([*PM2DOF, "models"], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    for name, (path, desc) in paths.shipped_models().items():
+        line = next(l for l in r.stdout.splitlines() if l.startswith(name + " "))
+        assert desc and desc in line and f"{read_model_file(path).n_legs} legs" in line, line
+
+
+def test_cli_version_is_the_package_metadata():
+    from importlib.metadata import version
+    r = subprocess.run([*PM2DOF, "--version"], capture_output=True, text=True, timeout=60)
+    assert r.stdout.strip() == f"pm2dof {version('pm2dof')}" == f"pm2dof {pm2dof.__version__}"
+
+
+# --- your robot, your folder ------------------------------------------------------------------
+
+def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tmp_path, capfd):
+    model = _robot(tmp_path / "robots")
+    rc, out = _derive(model)
+    gen = tmp_path / "robots" / "generated" / "myrobot"
+    assert rc == 0 and (gen / "manifest.json").is_file() and (gen / "myrobot.c").is_file(), out
+    assert json.loads((gen / "manifest.json").read_text())["model_file"] == "../../myrobot.toml"
+    assert not (gen / "libmyrobot.so").exists()          # --no-build: compiled on first use
+    m = pm2dof.load_model(model)
+    assert "compiling" in capfd.readouterr().err and (gen / "libmyrobot.so").is_file()
+    assert Path(m.generated) == gen and m.spec.legs[0].la == 0.246
+    q = m.ik([0.25, 0.26])
+    assert abs(m.fk(q[:3]) - [0.25, 0.26]).max() < 1e-12
+    pm2dof.load_model(str(model))                        # a second load compiles nothing
+    assert "compiling" not in capfd.readouterr().err
+    # the folder moves with its model file: the manifest names it relatively
+    shutil.move(tmp_path / "robots", tmp_path / "moved")
+    assert pm2dof.load_model(tmp_path / "moved" / "myrobot.toml").name == "myrobot"
+
+
+def test_generated_elsewhere_is_named_by_generated(tmp_path):
+    model = _robot(tmp_path)
+    rc, out = _derive("--model", model, "--out", tmp_path / "build" / "c")   # --model: issue 22 #6
+    assert rc == 0, out
+    with pytest.raises(pm2dof.StaleGeneratedCodeError) as info:
+        pm2dof.load_model(model)
+    assert f"Run `pm2dof derive {model}`" in str(info.value)
+    assert pm2dof.load_model(model, generated=tmp_path / "build" / "c").name == "myrobot"
+    r = subprocess.run([*PM2DOF, "report", "--model", str(model), "--generated",
+                        str(tmp_path / "build" / "c")], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and "myrobot" in r.stdout, r.stderr
+
+
+def test_edited_geometry_names_the_exact_derive_command(tmp_path):
+    model = _robot(tmp_path)
+    assert _derive(model)[0] == 0
+    model.write_text(model.read_text().replace("la = 0.246", "la = 0.2465", 1))
+    r = subprocess.run([*PM2DOF, "table3", "--model", str(model)], capture_output=True, text=True,
+                       timeout=120)
+    assert r.returncode == 2 and f"Run `pm2dof derive {model}`" in r.stderr, r.stderr
+
+
+def test_derive_refuses_a_folder_generated_from_another_model_file(tmp_path):
+    """Issue 22 #4: a copied model file that keeps an existing name, derived into that name's
+    folder, used to overwrite it silently. Now refused naming both files; --force overrides."""
+    pkg = tmp_path / "pkg"                       # the package's layout: models/, generated/<name>/
+    original = _robot(pkg / "models", name="shang2010", la="0.244")
+    assert _derive(original)[0] == 0
+    gen = pkg / "models" / "generated" / "shang2010"
+    before = (gen / "shang2010.c").read_bytes()
+    copy = _robot(pkg / "models", name="shang2010", la="0.25", stem="copy")
+    rc, out = _derive(copy, "--out", gen)
+    assert rc == 2 and f"{gen} holds code generated from another model file ({original})" in out \
+        and f"not from {copy}" in out and "--force" in out, out
+    assert (gen / "shang2010.c").read_bytes() == before
+    rc, out = _derive(copy)                      # its own default folder: no collision
+    assert rc == 0 and (pkg / "models" / "generated" / "copy" / "shang2010.c").is_file(), out
+    rc, out = _derive(copy, "--out", gen, "--force")
+    assert rc == 0 and (gen / "shang2010.c").read_bytes() != before, out
+    rc, out = _derive(copy, "--out", gen)        # now it is this file's folder: re-deriving is fine
+    assert rc == 0, out
+
+
+def test_derive_never_writes_into_an_installed_package(tmp_path, monkeypatch):
+    from pm2dof.derive.run import DeriveError, derive
+    monkeypatch.setattr(paths, "in_installed_package", lambda p: True)
+    with pytest.raises(DeriveError, match="inside the installed pm2dof package"):
+        derive(PAPER, build=False, progress=None)
+
+
+def test_installed_package_with_a_stale_library_is_never_compiled_into(tmp_path, monkeypatch):
+    gen = tmp_path / "shang2010"
+    shutil.copytree(SHIPPED_GENERATED / "shang2010", gen,
+                    ignore=shutil.ignore_patterns("*.so", "*.so.json"))
+    monkeypatch.setattr(paths, "in_installed_package", lambda p: True)
+    with pytest.raises(pm2dof.StaleGeneratedCodeError, match="reinstall pm2dof"):
+        pm2dof.load_model(generated=gen)
+    assert not (gen / "libshang2010.so").exists()
+
+
+def test_a_missing_extra_is_named(tmp_path):
+    code = ("import sys; sys.modules['casadi'] = None\n"   # as if casadi were not installed
+            "from pm2dof.cli import main\n"
+            f"sys.exit(main(['derive', {str(tmp_path / 'x.toml')!r}]))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2
+    assert "needs casadi, which is not installed: pip install 'pm2dof[derive]'" in r.stderr, r.stderr
+
+
+def test_provenance_records_version_model_file_and_generated_folder():
+    from pm2dof.analysis.results import provenance
+    m = pm2dof.load_model("fivebar")
+    p = provenance(m)
+    assert p["pm2dof"] == pm2dof.__version__ and p["model_shipped"] is True
+    assert p["model_file"] == str(SHIPPED_MODELS / "fivebar.toml")
+    assert p["generated"] == str(SHIPPED_GENERATED / "fivebar") and p["library"].endswith(".so")
+
+
+def test_shipped_studies_by_name_and_study_show():
+    from pm2dof.studies import SHIPPED_STUDIES, read_study, resolve_study
+    s = read_study(resolve_study("robustness"), quick=True)
+    assert Path(s.model_path) == PAPER
+    r = subprocess.run([*PM2DOF, "study", "show", "gains"], capture_output=True, text=True,
+                       timeout=60)
+    assert r.stdout == (SHIPPED_STUDIES / "gains.toml").read_text()
+
+
+def test_a_study_names_its_model_and_generated_folder_relative_to_itself(tmp_path):
+    """A study folder holding the model file and its code in a non-default folder: the
+    study's `model` and `generated` keys, relative to the study file, are all it needs; the
+    whole folder can move."""
+    from pm2dof.studies import SHIPPED_STUDIES, read_study, run_chunk
+    model = _robot(tmp_path / "proj" / "robot")
+    assert _derive(model, "--out", tmp_path / "proj" / "code")[0] == 0
+    text = (SHIPPED_STUDIES / "robustness.toml").read_text().replace(
+        'model = "shang2010"', 'model = "../robot/myrobot.toml"\ngenerated = "../code"', 1)
+    (tmp_path / "proj" / "studies").mkdir()
+    (tmp_path / "proj" / "studies" / "s.toml").write_text(text)
+    shutil.move(tmp_path / "proj", tmp_path / "moved")
+    s = read_study(tmp_path / "moved" / "studies" / "s.toml", quick=True)
+    assert s.model_path == str(tmp_path / "moved" / "robot" / "myrobot.toml")
+    assert s.generated_path == str(tmp_path / "moved" / "code")
+    cols = run_chunk(s, 0)
+    assert len(cols["rollout"]) > 0 and np.all(np.isfinite(cols["rmse"]))
+    assert read_study("robustness").name == "robustness"       # a shipped study by name

@@ -1,0 +1,206 @@
+# pm2dof identify's sub-commands: old flags named, one pipeline, files naming their model by path.
+"""The command line of identification (issue 19) and the model its files record (issue 18).
+
+* Every flag that chose a mode of ``pm2dof identify`` fails with one line naming the
+  sub-command that replaced it (exit 2); each sub-command has its own help with an example.
+* One pipeline: ``fit`` without a log is the fit of the same simulated log written to a file.
+* A log (``excite``) and an excitation file record their model: a shipped model by name, a
+  model file by its path relative to themselves. ``fit`` and ``excite`` use it when no
+  --model is given, so a folder with the model file, the excitation file and the log can be
+  moved; a --model that is not that model is refused naming both.
+"""
+import json
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pm2dof
+from pm2dof import cli
+from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
+from pm2dof.identification.design import load_excitation, write_excitation
+from pm2dof.identification.log import IdentLog, read_log, write_log
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
+
+OLD_FLAGS = {
+    ("--report",): "pm2dof identify --report was replaced by: pm2dof identify report",
+    ("--excite", "--out", "run.csv"):
+        "pm2dof identify --excite was replaced by: pm2dof identify excite --out LOG",
+    ("--data", "run.csv", "--save", "theta.json"):
+        "pm2dof identify --data was replaced by: pm2dof identify fit LOG",
+    ("--design-excitation", "--out", "exc.toml"):
+        "pm2dof identify --design-excitation was replaced by: pm2dof identify design --out FILE",
+    ("--monte-carlo", "50", "--excitation", "exc.toml"):
+        "pm2dof identify --monte-carlo was replaced by: pm2dof identify monte-carlo N",
+    ("--model", "fivebar", "--report"):
+        "pm2dof identify --report was replaced by: pm2dof identify report",
+    (): "pm2dof identify needs a sub-command: report, excite, fit, design or monte-carlo "
+        "(plain `pm2dof identify` was replaced by: pm2dof identify report, and pm2dof identify "
+        "fit)",
+}
+
+
+@pytest.mark.parametrize("argv", list(OLD_FLAGS), ids=lambda a: " ".join(a) or "plain")
+def test_old_flags_name_the_new_command(argv, capsys):
+    assert cli.main(["identify", *argv]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err == f"pm2dof: error: {OLD_FLAGS[argv]}\n"
+
+
+def test_old_flag_is_one_line_and_exit_2_from_the_shell():
+    r = subprocess.run([sys.executable, "-m", "pm2dof", "identify", "--data", "run.csv"],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 2 and r.stdout == ""
+    assert r.stderr == ("pm2dof: error: pm2dof identify --data was replaced by: pm2dof identify "
+                        "fit LOG\n")
+
+
+@pytest.mark.parametrize("sub", ["report", "excite", "fit", "design", "monte-carlo"])
+def test_every_sub_command_has_its_help_model_options_and_an_example(sub, capsys):
+    with pytest.raises(SystemExit) as info:
+        cli.main(["identify", sub, "--help"])
+    assert info.value.code == 0
+    text = capsys.readouterr().out
+    assert text.startswith(f"usage: pm2dof identify {sub} ")
+    assert "--model NAME|PATH" in text and "--generated DIR" in text
+    epilog = text[text.rindex("\nexample"):]
+    example = re.search(rf"pm2dof identify {sub}[^\n#]*", epilog)[0].split()
+    args = cli.build_parser().parse_args(example[1:])        # the example parses
+    assert args.identify_command == sub
+
+
+def test_model_before_the_sub_command_is_the_same_as_after(capsys):
+    assert cli.main(["identify", "--model", "fivebar", "report"]) == 0
+    assert "rank 9 of 10" in capsys.readouterr().out
+    assert cli.main(["identify", "--model", "fivebar", "report", "--model", "shang2010"]) == 2
+    assert "--model given twice" in capsys.readouterr().err
+
+
+def test_plain_fit_is_the_fit_of_the_same_log_written_to_a_file(tmp_path, capsys):
+    """One pipeline: `fit` without a log (a simulated run) prints the numbers `fit LOG` prints
+    for that run's log, bit for bit (JSON holds floats exactly)."""
+    assert cli.main(["identify", "fit", "--duration", "3", "--json"]) == 0
+    plain = json.loads(capsys.readouterr().out)
+    log = tmp_path / "run.csv"
+    assert cli.main(["identify", "excite", "--duration", "3", "--out", str(log)]) == 0
+    capsys.readouterr()
+    assert cli.main(["identify", "fit", str(log), "--json"]) == 0
+    from_file = json.loads(capsys.readouterr().out)
+    assert plain.pop("log") == "<simulated run of the default 3 s multi-sine>"
+    assert from_file.pop("log") == str(log)
+    assert plain == from_file
+    assert "truth" in plain and len(plain["estimate"]) == 13
+
+
+def test_fit_refuses_options_of_a_simulated_run_with_a_log(tmp_path, capsys):
+    assert cli.main(["identify", "fit", str(tmp_path / "run.csv"), "--duration", "3",
+                     "--controller", "apd"]) == 2
+    assert capsys.readouterr().err == (f"pm2dof: error: --duration, --controller: options of a "
+                                       f"simulated excitation run, which fit runs only without "
+                                       f"a LOG (got LOG {tmp_path / 'run.csv'})\n")
+
+
+# --- a folder of one's own: model file, excitation file, log ---------------------------------
+
+@pytest.fixture
+def project(tmp_path):
+    """tmp/project/robots/myshang.toml (the paper's model file, copied, with its generated code
+    in the default folder beside it) and an empty tmp/project/data/."""
+    robots = tmp_path / "project" / "robots"
+    (robots / "generated").mkdir(parents=True)
+    shutil.copyfile(SHIPPED_MODELS / "shang2010.toml", robots / "myshang.toml")
+    shutil.copytree(SHIPPED_GENERATED / "shang2010", robots / "generated" / "myshang")
+    (tmp_path / "project" / "data").mkdir()
+    return tmp_path / "project"
+
+
+def _fit(log, capsys, *more):
+    code = cli.main(["identify", "fit", str(log), "--json", *more])
+    out, err = capsys.readouterr()
+    return code, (json.loads(out) if code == 0 else err)
+
+
+def test_round_trip_with_the_model_taken_from_the_files_then_moved(project, tmp_path, capsys):
+    model = pm2dof.load_model(project / "robots" / "myshang.toml")
+    exc_file = project / "data" / "exc.toml"
+    write_excitation(exc_file, load_excitation(EXAMPLE), model)     # designed for our copy
+    assert 'model = "../robots/myshang.toml"' in exc_file.read_text()
+    assert load_excitation(exc_file).model["model"] == "../robots/myshang.toml"
+    # excite: no --model, the excitation file's; the log records it relative to itself
+    log = project / "data" / "run.parquet"
+    assert cli.main(["identify", "excite", "--excitation", str(exc_file), "--out", str(log)]) == 0
+    capsys.readouterr()
+    meta = read_log(log).meta
+    assert (meta["model"], meta["model_name"], meta["formulation_sha256"]) == (
+        "../robots/myshang.toml", "shang2010", model.spec.formulation_sha256)
+    code, first = _fit(log, capsys)
+    assert code == 0, first
+    # the whole folder moves: the log still finds its model
+    shutil.move(project, tmp_path / "elsewhere")
+    moved = tmp_path / "elsewhere" / "data" / "run.parquet"
+    code, again = _fit(moved, capsys)
+    assert code == 0, again
+    assert again["estimate"] == first["estimate"] and again["log"] == str(moved)
+    # a --model made for another robot is refused, naming both
+    code, err = _fit(moved, capsys, "--model", "fivebar")
+    assert code == 2 and err.count("\n") == 1, err
+    assert ("was written for model 'shang2010' (model ../robots/myshang.toml, formulation "
+            f"{model.spec.formulation_sha256[:12]}), not 'fivebar' (" in err), err
+    # the same model by another path (here the shipped file, the same formulation) is fine
+    assert _fit(moved, capsys, "--model", "shang2010")[0] == 0
+    # without its model file the log says which file it needs
+    shutil.rmtree(tmp_path / "elsewhere" / "robots")
+    code, err = _fit(moved, capsys)
+    assert code == 2 and "names its model file '../robots/myshang.toml'" in err, err
+    assert str(tmp_path / "elsewhere" / "robots" / "myshang.toml") in err
+
+
+def test_a_log_written_elsewhere_is_rebased(project, tmp_path, capsys):
+    log = project / "data" / "run.csv"
+    assert cli.main(["identify", "excite", "--model", str(project / "robots" / "myshang.toml"),
+                     "--duration", "3", "--out", str(log)]) == 0
+    capsys.readouterr()
+    first = read_log(log)
+    assert first.meta["model"] == "../robots/myshang.toml"
+    copy = write_log(tmp_path / "copies" / "deep" / "run.csv", first)
+    assert read_log(copy).meta["model"] == "../../project/robots/myshang.toml"
+    assert _fit(copy, capsys)[0] == 0
+    # an in-memory log names a model file by its absolute path
+    mem = pm2dof.excite(pm2dof.load_model(project / "robots" / "myshang.toml"),
+                        pm2dof.paper_move("low"))
+    assert mem.meta["model"] == str(project / "robots" / "myshang.toml")
+
+
+def test_old_logs_that_name_their_model_by_name(tmp_path, capsys):
+    """Logs written before pm2dof 0.3: `model` is a name. A shipped one is found; another is
+    refused without --model, and checked by name with it."""
+    m = pm2dof.load_model()
+    q = np.array([m.ik(x) for x in pm2dof.paper_move("low").xd])
+    log = IdentLog(t=np.arange(len(q)) * 0.002, qa=q[:, :3], tau=np.zeros((len(q), 3)),
+                   meta={"model": "myrobot"})
+    path = write_log(tmp_path / "old.csv", log)
+    code, err = _fit(path, capsys)
+    assert code == 2 and err == (f"pm2dof: error: {path} names its model 'myrobot' by name "
+                                 f"only, and that is not a shipped model: pass --model with its "
+                                 f"model file\n")
+    code, err = _fit(path, capsys, "--model", "shang2010")
+    assert code == 2 and "was written for model 'myrobot' (model myrobot), not 'shang2010'" in err
+
+
+def test_importing_identification_loads_no_heavy_library():
+    """SciPy, CasADi and pyarrow are imported inside the functions that need them."""
+    code = ("import sys, pm2dof.cli\n"
+            "import pm2dof.identification.base, pm2dof.identification.log, "
+            "pm2dof.identification.excitation, pm2dof.identification.fit, "
+            "pm2dof.identification.consistent, pm2dof.identification.design, "
+            "pm2dof.identification.report, pm2dof.identification.monte_carlo, "
+            "pm2dof.identification.model_ref\n"
+            "print(sorted({k.split('.')[0] for k in sys.modules} & {'scipy', 'casadi', "
+            "'pyarrow'}))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0 and r.stdout.strip() == "[]", r.stdout + r.stderr

@@ -1,0 +1,77 @@
+# The numbers the README and the docs quote, recomputed: a cheap number cannot go stale.
+"""Issue 22 #14: every number in the README comes with the command that reproduces it; the
+cheap ones are recomputed here (Table 3, the move durations, the type II minimum on both grids,
+the capability ratio) and must appear in the pages, formatted as the pages print them.
+Timings (the benchmark) are machine-dependent and are not checked here: the benchmark page
+quotes one run with its command.
+"""
+import re
+from pathlib import Path
+
+import pytest
+
+import pm2dof
+from pm2dof.analysis.experiment import table3, table3_json
+from pm2dof.analysis.maps import maps_summary, workspace_maps
+from pm2dof.analysis.report import model_report
+
+ROOT = Path(__file__).resolve().parents[1]
+README = (ROOT / "README.md").read_text()
+DOCS = {p.stem: p.read_text() for p in (ROOT / "docs").glob("*.md")}
+
+
+def sci(x, digits=2):
+    """4.93e-5 (the pages' format: no zero-padded exponent)."""
+    mant, exp = f"{x:.{digits}e}".split("e")
+    return f"{mant}e{int(exp)}"
+
+
+@pytest.fixture(scope="module")
+def m():
+    return pm2dof.load_model()
+
+
+@pytest.fixture(scope="module")
+def t3(m):
+    return table3_json(table3(m))
+
+
+def test_table3_rows(t3):
+    page = DOCS["results-paper"]
+    for speed in ("low", "high"):
+        r = t3[speed]
+        row = next(line for line in page.splitlines() if line.startswith(f"| {speed} ("))
+        cells = [c.strip() for c in row.split("|")[2:6]]
+        assert cells == [sci(r["apd_rmse"]), sci(r["na_rmse"]), sci(r["na_no_adaptation_rmse"]),
+                         f"{r['rpe_percent']:.1f} %"], (speed, cells)
+
+
+def test_readme_tour_numbers(t3):
+    h = t3["high"]
+    want = (f"RMSE of {sci(h['na_rmse'])} m against APD's {sci(h['apd_rmse'])} m, a "
+            f"{h['rpe_percent']:.1f} % reduction")
+    assert want in " ".join(README.split()), want
+
+
+def test_move_durations(t3):
+    page = " ".join(DOCS["results-paper"].split())
+    for speed in ("low", "high"):
+        traj = pm2dof.paper_move(speed)
+        assert f"S-curve {traj.profile.duration:.4f} s" in page, speed
+        assert (f"{len(traj.t)} samples, t = 0 … {t3[speed]['trajectory_duration_s']:.3f} s"
+                in page), speed
+
+
+def test_type2_minimum_and_capability_ratio_on_both_grids(m):
+    report = model_report(m)
+    rep_min = float(re.search(r"type II .*: min ([0-9.]+)", report)[1])
+    n_points = int(re.search(r"over (\d+) grid points", report)[1])
+    s = maps_summary(m, workspace_maps(m))["over_clear_workspace"]
+    guide = " ".join(DOCS["guide"].split())
+    assert (f"at or above {rep_min:.3f} on `pm2dof report`'s grid ({n_points} points" in guide)
+    assert f"and {s['type2']['min']:.3f} on `pm2dof maps`' finer grid" in guide
+    ratio = s["force_ratio"]
+    row = next(line for line in DOCS["results-redundancy"].splitlines()
+               if line.startswith("| ratio min-max / min-norm"))
+    assert [c.strip().strip("*") for c in row.split("|")[2:5]] == \
+        [f"{ratio[k]:.3f}" for k in ("min", "median", "max")], row
