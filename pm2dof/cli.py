@@ -677,8 +677,9 @@ def _show_warning(message, category, filename, lineno, file=None, line=None,
 
 #: optional dependencies -> the extra that installs them (pyproject.toml)
 _EXTRAS = {"sympy": "derive", "casadi": "derive", "dask": "studies", "distributed": "studies",
-           "pyarrow": "studies", "scipy": "ident"}
-_COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies"}
+           "pyarrow": "studies", "scipy": "ident", "control": "control"}
+_COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies",
+                   "table3": "control"}     # table3 --include lqr: SciPy's Riccati solver
 
 
 def main(argv=None):
