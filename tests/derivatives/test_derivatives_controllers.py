@@ -121,3 +121,29 @@ def test_python_steps_equal_the_closed_loop_in_c():
                             traj.xd_ddot[k])
             np.testing.assert_allclose(tau, r.tau_a[k], rtol=1e-9, atol=1e-9,
                                        err_msg=f"{ctrl._law} sample {k}")
+
+
+def test_model_file_gains_of_ctc_and_lqr(tmp_path):
+    """[gains.ctc] and [gains.lqr] are optional; when present they are the defaults, and bad
+    values are listed by the model file's reader."""
+    from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
+    text = (SHIPPED_MODELS / "shang2010.toml").read_text()
+    extra = ("\n[gains.ctc]\nKp = [10000.0, 12000.0]\nKv = [200.0, 220.0]\n"
+             "\n[gains.lqr]\nQ_position = [2e8, 3e8]\nQ_velocity = [1e4, 2e4]\n"
+             "R = [0.5, 0.5, 0.5]\n")
+    p = tmp_path / "shang2010.toml"
+    p.write_text(text.replace("\n[gains.apd]", extra + "\n[gains.apd]", 1))
+    m = pm2dof.load_model(p, generated=SHIPPED_GENERATED / "shang2010")
+    ctc = pm2dof.CTCController(m)
+    np.testing.assert_array_equal(m.layout("ctc_params").unpack(ctc.params)["Kp"], [1e4, 1.2e4])
+    lqr = LQRController(m, pm2dof.model_move(m, "low"))
+    np.testing.assert_array_equal(np.diag(lqr.weights["Q"]), [2e8, 3e8, 1e4, 2e4])
+    np.testing.assert_array_equal(np.diag(lqr.weights["R"]), [0.5, 0.5, 0.5])
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text.replace("\n[gains.apd]", "\n[gains.ctc]\nKp = [-1.0, 1.0]\nKv = 3\n"
+                                "\n[gains.lqr]\nR = [1.0]\n\n[gains.apd]", 1))
+    with pytest.raises(pm2dof.ModelFileError) as exc:
+        pm2dof.load_model(bad, generated=SHIPPED_GENERATED / "shang2010")
+    keys = [pr.key for pr in exc.value.problems]
+    assert any(k and k.startswith("gains.ctc.Kp") for k in keys), keys
+    assert any(k and k.startswith("gains.lqr") for k in keys), keys
