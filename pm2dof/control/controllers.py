@@ -352,8 +352,8 @@ class CTCController(_Controller):
         :class:`pm2dof.GainError` naming the gain and the entry.
     theta0 : array_like (5n,), optional
         The model inside the law (default Tables 1-2); never updated.
-
-    The other parameters are :class:`NAController`'s.
+    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign
+        As for :class:`NAController`.
     """
     _law = "ctc"
 

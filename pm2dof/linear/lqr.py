@@ -83,9 +83,9 @@ class LQRController(_Controller):
         :class:`pm2dof.GainError`.
     theta0 : array_like (5n,), optional
         The model linearised and inverted (default Tables 1-2).
-
-    The other parameters are :class:`pm2dof.NAController`'s. ``step`` counts samples from
-    ``reset``: sample k uses K_k and tau_ff,k (after the plan, its last ones).
+    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign
+        As for :class:`pm2dof.NAController`. ``step`` counts samples from ``reset``: sample k
+        uses K_k and tau_ff,k (after the plan, its last ones).
 
     Attributes
     ----------
