@@ -7,6 +7,7 @@ import pytest
 
 import pm2dof
 
+
 MODELS = ("shang2010", "fivebar")
 
 
@@ -71,10 +72,9 @@ def test_poses_give_the_model_functions_errors(m, where):
 
 
 @pytest.mark.parametrize("arg", [0, 1, 2, 3])
-def test_nan_and_wrong_shape_name_the_argument(m, arg):
+def test_nan_and_wrong_shape_name_the_argument(m, arg, first_point):
     n, th = m.n_legs, np.array(m.theta_nominal)
-    good = [np.array([0.245, 0.265]) if m.n_legs > 2 else np.array(
-        next(iter(m.spec.trajectories.values()))["start"], float),
+    good = [np.array([0.245, 0.265]) if m.n_legs > 2 else first_point(m),
         np.array([0.1, -0.2]), np.linspace(-1, 1, n), th]
     names = ("xe", "xed", "tau_a", "theta")
     for bad, what in ((np.full_like(good[arg], np.nan), "non-finite"),

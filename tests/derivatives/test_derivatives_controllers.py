@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import pm2dof
+
 from pm2dof.bench.baselines import random_cases, reference_geometry
 from pm2dof.linear import LQRController, lqr_gains
 from pm2dof.reference import control as rc
@@ -34,12 +35,12 @@ def _c(f, args, n, nstate):
 
 
 @pytest.mark.parametrize("split", ["min_norm", "min_max", "preload"])
-def test_ctc_and_lqr_steps_match_the_numpy_reference(m, split):
+def test_ctc_and_lqr_steps_match_the_numpy_reference(m, split, first_point):
     n = m.n_legs
     rng = np.random.default_rng(2101)
     g = reference_geometry(m)
     ctc = pm2dof.CTCController(m, split=split)
-    centre = next(iter(m.spec.trajectories.values()))["start"]
+    centre = first_point(m)
     cases = random_cases(m, ctc, rng, 6, centre)
     assert len(cases) == 6
     f_ctc = m.function(f"{ctc.function_name}_step")
@@ -67,10 +68,10 @@ def test_ctc_and_lqr_steps_match_the_numpy_reference(m, split):
         assert _rel(s_l, s_r) < 1e-12, info
 
 
-def test_lqr_gains_match_python_control_on_a_time_invariant_system(m):
+def test_lqr_gains_match_python_control_on_a_time_invariant_system(m, first_point):
     """Long horizon, constant (A, B): K_0 is the infinite-horizon gain of dlqr."""
     control = pytest.importorskip("control")
-    xe = np.asarray(next(iter(m.spec.trajectories.values()))["start"], float)
+    xe = first_point(m)
     A, B = m.linearize(xe, [0.1, -0.1], np.zeros(m.n_legs), discrete=True)
     Q, R = np.diag([1e8, 1e8, 1e4, 1e4]), 0.25 * np.eye(m.n_legs)
     N = 4000

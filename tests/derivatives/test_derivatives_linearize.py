@@ -15,6 +15,7 @@ import pytest
 import pm2dof
 
 
+
 @pytest.fixture(scope="module")
 def m():
     return pm2dof.load_model()
@@ -63,7 +64,7 @@ def test_statespace_has_named_states_and_inputs(m):
         assert isinstance(sys, control.StateSpace)
 
 
-def _smooth_setup():
+def _smooth_setup(first_point):
     """The smooth-friction model, a plant whose truth is that model, a rest pose."""
     m = pm2dof.load_model("shang2010_smooth")
     n, th = m.n_legs, np.asarray(m.theta_nominal)
@@ -71,11 +72,11 @@ def _smooth_setup():
         m, alpha=th[0:n], beta=th[n:2 * n], gamma=th[2 * n:3 * n], fv=th[3 * n:4 * n],
         fc=th[4 * n:5 * n], fs=[0.0] * n, payload_mass=0.0,
         coulomb_smoothing_velocity=m.spec.friction_constants["sign_smoothing_velocity"])
-    return m, truth, np.asarray(next(iter(m.spec.trajectories.values()))["start"], float)
+    return m, truth, first_point(m)
 
 
-def test_closed_loop_eigenvalues_predict_the_sampled_closed_loop():
-    m, truth, x0 = _smooth_setup()
+def test_closed_loop_eigenvalues_predict_the_sampled_closed_loop(first_point):
+    m, truth, x0 = _smooth_setup(first_point)
     n, T, th = m.n_legs, m.spec.sensing["sample_period"], m.theta_nominal
     w = 2 * np.pi * 15
     ctc = pm2dof.CTCController(m, Kp=w * w, Kv=2 * 0.7 * w)
