@@ -19,6 +19,7 @@ The package is layered; imports only point down (tests/test_layers.py checks it)
 ``identification/`` 3. logs, excitations, the least-squares fit of theta (``pm2dof identify``).
 ``bench/``         3. the step-time benchmark.
 ``studies/``       3. many-rollout studies on Dask, results in Parquet.
+``planning/``      3. paths in the task plane, time-optimal and kinematic timing.
 ``figures/``       4. matplotlib figures and the demo.
 ``cli.py``         4. ``pm2dof COMMAND``: parses arguments and dispatches, nothing else.
 ``reference/``     beside the layers: independent NumPy formulations for tests and the bench.
@@ -36,10 +37,10 @@ from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, si
 from .control.trajectory import (PAPER_MOVES, Trajectory, TrajectoryError, line, model_move,
                                  paper_move)
 from .core.build import BuildError
-from .core.errors import (ArgumentError, ArgumentTypeError, ClosureError, GainError, OutputError,
+from .core.errors import (ArgumentError, ArgumentTypeError, ClosureError, GainError,
                           InputFileError, ModelFileError, ModelMismatchError, NonFiniteError,
-                          OutcomeWarning, Pm2dofError, SingularityError, StaleGeneratedCodeError,
-                          WorkspaceError)
+                          OutcomeWarning, OutputError, Pm2dofError, PlanError, SingularityError,
+                          StaleGeneratedCodeError, WorkspaceError)
 from .core.model import Model, load_model
 from .core.version import __version__
 
@@ -66,6 +67,13 @@ _LAZY = {
     "identify_log": "pm2dof.identification.fit",
     "design_excitation": "pm2dof.identification.design",
     "load_excitation": "pm2dof.identification.design",
+    # motion planning (issue 20)
+    "TaskPath": "pm2dof.planning",
+    "check_path": "pm2dof.planning",
+    "plan_kinematic": "pm2dof.planning",
+    "plan_time_optimal": "pm2dof.planning",
+    "plan_smooth": "pm2dof.planning",
+    "Plan": "pm2dof.planning",
     # derivatives and linear design (issue 21)
     "linearize_trajectory": "pm2dof.linear",
     "statespace": "pm2dof.linear",
@@ -86,7 +94,7 @@ __all__ = [
     "InputFileError",
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError", "TrajectoryError", "GainError", "ModelMismatchError", "BuildError",
-    "OutcomeWarning",
+    "OutcomeWarning", "PlanError",
     # layer 3 (imported on first use)
     *_LAZY,
 ]

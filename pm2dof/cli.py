@@ -13,6 +13,7 @@ Typical use:
   pm2dof animate --out F.gif  the move as an animation: legs to scale, error magnified
   pm2dof study run S.toml --out DIR   many rollouts on Dask (robustness, gains, adaptation)
   pm2dof study report DIR     summary tables and figures of a study's results
+  pm2dof plan [--path P]      time-optimal motion along a path, with either torque split
   pm2dof bench [--json]       controller step time: C, Python binding, CasADi, NumPy, SymPy
   pm2dof models               the shipped models, with their descriptions
   pm2dof derive MYROBOT.toml  derive your own model file: C into generated/MYROBOT/ beside it
@@ -505,6 +506,48 @@ def _study_parser(sub):
     r.set_defaults(func=cmd_study_bench)
 
 
+def cmd_plan(args):
+    from .analysis.results import dumps, provenance, write_atomic
+    from .planning.report import closed_loop, csv_text, format_report, model_moves, plan_paths
+    m = _model(args)
+    tau_max = None if args.tau_max is None else _per_actuator(args.tau_max, m.n_legs, "--tau-max")
+    if args.path:
+        from .planning.pathfile import read_path_file
+        items = [read_path_file(args.path)]
+    else:
+        items = [mv for mv in model_moves(m) if args.move in (None, mv["name"])]
+        if not items:
+            raise ArgumentError(f"--move {args.move!r}: the model file's moves are "
+                                f"{sorted(m.spec.trajectories)}")
+    kin = {k: getattr(args, k) for k in ("v_max", "a_max", "j_max")}
+    for it in items:
+        if any(v is not None for v in kin.values()):
+            base = it["kinematic"] or dict(model_moves(m)[-1]["kinematic"])
+            it["kinematic"] = {k: (base[k] if v is None else v) for k, v in kin.items()}
+    splits = ("min_norm", "min_max") if args.split == "both" else (args.split,)
+    res, plans = plan_paths(m, items, tau_max, args.margin, args.grid, splits,
+                            smooth=args.smooth, tau_rate=args.tau_rate)
+    loops = {}
+    if args.closed_loop:
+        for it in items:
+            loops[it["name"]] = closed_loop(m, it["path"], tau_max, splits[-1], args.margins,
+                                            args.grid)
+        res["closed_loop"] = loops
+    print(dumps(res) if args.json else format_report(res, loops))
+    if args.out:
+        from pathlib import Path
+        from .figures.planning import plan_figures
+        out, prov = Path(args.out), provenance(m)
+        written = []
+        for (name, key), p in plans.items():
+            written.append(write_atomic(out / f"plan_{name}_{key}.csv",
+                                        csv_text(m, p).encode()))
+        written += plan_figures(m, plans, out, prov, res["tau_max"])
+        for p in written:
+            print(f"wrote {p}", file=sys.stderr if args.json else sys.stdout)
+    return 0
+
+
 def cmd_bench(args):
     from .analysis.results import dumps
     from .bench import format_bench, run_bench
@@ -633,6 +676,40 @@ def build_parser():
     p.add_argument("--every", type=int, default=2,
                    help="2 ms samples per frame (default 2: the GIF is 12.5x slower than life)")
     p.set_defaults(func=cmd_animate)
+    p = sub.add_parser("plan", parents=[common], help="time-optimal motion along a path",
+                       description="Time a path as fast as the motors allow (issue 20): the "
+                       "kinematic S-curve of the path's arc length beside the time-optimal "
+                       "timing under the torque limits with the min-norm split (eq. 21) and the "
+                       "min-max split (the whole redundancy), friction included. The paths are "
+                       "the model file's moves (start to end as lines) or a path file (--path: "
+                       "a shipped name such as pick_and_place, or your TOML file).",
+                       epilog="examples: pm2dof plan --tau-max 6 --closed-loop; pm2dof plan "
+                       "--path pick_and_place --out out/plan")
+    p.add_argument("--path", metavar="NAME|FILE", help="a path file (default: the moves)")
+    p.add_argument("--move", help="only this move of the model file (default: every move)")
+    p.add_argument("--tau-max", type=float, nargs="+", metavar="NM",
+                   help="actuator limits, N m: one value for all or one per actuator "
+                   "(default: [limits].tau_max)")
+    p.add_argument("--margin", type=float, default=1.0,
+                   help="plan with tau_max * margin (default 1.0)")
+    p.add_argument("--grid", type=int, default=1000, help="grid points (default 1000)")
+    p.add_argument("--split", choices=["both", "min_norm", "min_max"], default="both",
+                   help="torque split(s) to plan with (default both)")
+    for flag, what in (("--v-max", "m/s"), ("--a-max", "m/s^2"), ("--j-max", "m/s^3")):
+        p.add_argument(flag, type=float, help=f"kinematic S-curve limit, {what} (default: the "
+                       "move's, the path file's [kinematic], else the model's last move's)")
+    p.add_argument("--smooth", action="store_true", help="also the torque-rate-limited "
+                   "near-time-optimal plan (CasADi + IPOPT; needs casadi)")
+    p.add_argument("--tau-rate", type=float, metavar="NM_PER_S",
+                   help="--smooth: largest |dtau/dt| (default tau_max / 20 ms)")
+    p.add_argument("--closed-loop", action="store_true",
+                   help="simulate NA and APD tracking the time-optimal plan at --margins")
+    p.add_argument("--margins", type=float, nargs="+", default=[1.0, 0.9],
+                   help="--closed-loop: the margins to plan with (default 1.0 0.9)")
+    p.add_argument("--out", metavar="DIR", help="write each plan's trajectory (CSV) and the "
+                   "figures (phase plane, torques, path on the force map) here")
+    p.add_argument("--json", action="store_true", help="print the numbers as JSON")
+    p.set_defaults(func=cmd_plan)
     _study_parser(sub)
     from .bench.run import run_bench
     p = sub.add_parser("bench", parents=[common], help="controller step-time benchmark",

@@ -74,11 +74,31 @@ def format_bench(results):
                      f"(NA step, encoder, {r.get('rk4_substeps')} RK4 plant steps); simulate() "
                      f"adds {_fmt(r.get('rollout_python_overhead_us_per_step'))} us per step "
                      f"in Python")
+    if r.get("plan_time_optimal_ms") is not None:
+        lines.append("")
+        lines.append(f"motion planning: {r.get('plan_path')}, {r.get('plan_grid')} grid points "
+                     f"(median and min)")
+        row("plan_time_optimal, min_max split", "plan_time_optimal_ms", "ms")
+        row("plan_time_optimal, min_norm split", "plan_time_optimal_min_norm_ms", "ms")
+        row("  the same, friction-free theta", "plan_friction_free_ms", "ms")
+        row("toppra, end to end (Me, Ce per point in C)", "toppra_ms", "ms")
+        row("toppra, solver alone (coefficients given)", "toppra_solve_ms", "ms")
+        if r.get("toppra_duration_s") is not None:
+            lines.append(f"  durations found: pm2dof {r['plan_duration_friction_free_s']:.7f} s, "
+                         f"toppra {r['toppra_duration_s']:.7f} s (rel. diff. "
+                         f"{r['plan_vs_toppra_rel_diff']:.1e})")
+        if r.get("plan_smooth_solve_s") is not None:
+            lines.append(f"  smoothed plan (IPOPT, 200 points): {r['plan_smooth_solve_s']:.3f} s "
+                         f"solve, {r['plan_smooth_iterations']} iterations; "
+                         f"{r['plan_smooth_duration_s']:.4f} s vs strict "
+                         f"{r['plan_smooth_strict_duration_s']:.4f} s")
     lines.append("")
     lines.append("ratios and agreement")
     for label, key, unit in (
             ("NA step: min_max / min_norm split", "na_min_max_over_min_norm", "x"),
             ("NA step: preload / min_norm split", "na_preload_over_min_norm", "x"),
+            ("plan_time_optimal vs toppra, end to end", "speedup_vs_toppra", "x"),
+            ("plan_time_optimal vs toppra's solver alone", "speedup_vs_toppra_solve", "x"),
             ("C step vs NumPy reference", "speedup_c_vs_numpy", "x"),
             ("C step vs SymPy lambdify", "speedup_c_vs_lambdify", "x"),
             ("NAController.step vs casadi.Function", "speedup_binding_vs_casadi_function", "x"),

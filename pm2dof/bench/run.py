@@ -42,6 +42,8 @@ TARGETS = (
      "NAController.step vs casadi.Function call"),
     ("agreement_c_vs_numpy", "<=", 1e-10, "rel", "C step vs NumPy reference (max rel. diff.)"),
     ("na_min_max_over_min_norm", "<=", 1.3, "x", "NA step, min_max split / min_norm split"),
+    ("plan_time_optimal_ms", "<=", 5.0, "ms", "plan_time_optimal, 1000 grid points"),
+    ("speedup_vs_toppra", ">=", 10.0, "x", "plan_time_optimal vs toppra, friction-free"),
     # issue 21: derivatives and the model-based steps (bench/derivatives.py)
     ("fd_jacobians_over_fd_c", "<=", 3.0, "x", "forward-dynamics Jacobians / forward dynamics, C"),
     ("fd_jacobians_python_us", "<=", 1.5, "us",
@@ -302,6 +304,12 @@ def run_bench(model=None, quick=False, progress=None):
     say("derivatives: Jacobians, sampled step, inverse dynamics (C, Python, Pinocchio, finite "
         "differences); CTC and LQR steps")
     res.update(derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes))
+
+    # --- motion planning (issue 20): plan_time_optimal beside toppra ----------------------
+    from .planning import bench_planning
+    planning = bench_planning(model, quick, say)
+    notes.update(planning.pop("notes"))
+    res.update(planning)
 
     # --- op counts --------------------------------------------------------------------
     say("op counts from the generated C source")

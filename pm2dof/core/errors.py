@@ -4,7 +4,8 @@ from typing import NamedTuple
 __all__ = ["Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError", "OutputError",
            "Problem",
            "InputFileError", "ModelFileError", "StaleGeneratedCodeError", "WorkspaceError",
-           "ClosureError", "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning"]
+           "ClosureError", "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning",
+           "PlanError"]
 
 
 class Pm2dofError(Exception):
@@ -107,3 +108,9 @@ class ModelMismatchError(Pm2dofError, ValueError):
 class OutcomeWarning(RuntimeWarning):
     """A rollout that did not complete: it left the workspace or diverged (``SimResult.outcome``
     names which, the sample and the time)."""
+
+
+class PlanError(Pm2dofError, ValueError):
+    """A path or a motion plan that cannot be built (names what and where: the argument and its
+    value, or the arc length and point of the path): bad path geometry, a non-positive grid or
+    margin, torque limits too low to follow the path at any speed."""

@@ -39,8 +39,11 @@ _SPLIT_SUFFIXES = ("", "_minmax", "_preload")                   # min_norm, min_
 _LOOPS = tuple(f"{law}{sfx}_{kind}" for law in ("na", "na_proj", "apd", "ctc", "lqr")
                for sfx in _SPLIT_SUFFIXES for kind in ("step", "closed_loop"))
 _STEPPING = ("plant_xedd", "plant_step", "measure") + _LOOPS
+# motion planning (pm2dof.planning): per-grid-point path dynamics; they report, never raise
+_PATH = ("path_coefficients", "path_mvc", "path_backward", "path_forward", "path_torques")
 _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "singularity_measures", "W", "S", "Wdot",
-              "M", "C", "Me", "Ce", "StF", "Y", "torque_splits", "forward_dynamics") + _STEPPING
+              "M", "C", "Me", "Ce", "StF", "Y", "torque_splits", "forward_dynamics") + _STEPPING \
+    + _PATH
 _FUNCTIONS += DERIVATIVE_FUNCTIONS     # core/derivatives.py: Jacobians, sampled step, inverse dyn.
 
 
@@ -138,7 +141,7 @@ class Model(DerivativeMethods):
                                       f"says {want}")
             # model functions never hand back NaN/inf silently; ik and fk turn NaN into a
             # WorkspaceError themselves; controller steps and the plant report by status
-            f.check_outputs = short not in _STEPPING and short not in ("ik", "fk")
+            f.check_outputs = short not in _STEPPING + _PATH and short not in ("ik", "fk")
             funcs[short] = f
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
                      ("generated", str(gen_dir)),

@@ -20,6 +20,7 @@ from .controllers import STATUS, controller_functions, controller_layouts
 from .derivatives import derivative_functions
 from .export import MANIFEST, export
 from .model_functions import Derivation, model_functions
+from .planning import path_functions, path_layouts
 from .plant import closed_loop_functions, closed_loop_layouts, plant_functions, plant_layout
 
 __all__ = ["derive", "DeriveError"]
@@ -106,10 +107,12 @@ def derive(model, out=None, *, force=False, build=True, progress=print):
     plant = [_finalize(f) for f in plant_functions(d, spec.name)]
     loops = closed_loop_functions(d, spec.name, ctrl, plant, spec.rk4_substeps)
     functions = [_finalize(f) for f in model_functions(d, spec.name)] + ctrl + plant + loops
+    functions += [_finalize(f) for f in path_functions(d, spec.name)]       # motion planning
     functions += derivative_functions(d, spec.name, spec.rk4_substeps, _finalize)
     say(f"CasADi: {len(functions)} functions, "
         f"{sum(f.n_instructions() for f in functions)} instructions")
-    layouts = {**controller_layouts(n, p), **closed_loop_layouts(n, p), "plant": plant_layout(n)}
+    layouts = {**controller_layouts(n, p), **closed_loop_layouts(n, p), "plant": plant_layout(n),
+               **path_layouts(n, p)}
     extra = {"layouts": {k: v.to_json() for k, v in layouts.items()}, "status_codes": STATUS,
              "rk4_substeps": spec.rk4_substeps}
     # the model file as seen from the output folder, so the pair can be moved together

@@ -117,6 +117,8 @@ def test_reference_geometry_and_layouts_match_the_model(m):
     assert np.array_equal(G.elbow, [leg.elbow for leg in spec.legs])
     mine = rc.layouts(N_LEGS)
     for name, fields in m.manifest["layouts"].items():
+        if name.startswith("path_"):    # the motion planner's, not the controllers' (planning)
+            continue
         assert list(mine[name].fields) == [tuple(f) for f in fields], (
             f"layout {name}: reference_control {mine[name].fields} != manifest {fields}")
     assert rc.STATUS == dict(m.manifest["status_codes"])

@@ -1,0 +1,194 @@
+# Benchmark of the time-optimal planner: pm2dof.plan_time_optimal beside toppra on the same problem.
+"""How fast ``plan_time_optimal`` is, and how it compares with TOPP-RA (``toppra``, the
+reference time-optimal path parameterisation) on the same friction-free problem.
+
+The problem: the model's fastest move (its start/end as a line), 1,000 grid points (toppra is
+given pm2dof's grid), the min-max split's force polygon (the zonotope's facets from the
+generated ``path_coefficients``) as toppra's ``F u <= g`` at both ends of every interval
+(toppra's default interpolation scheme, pm2dof's discretisation), and theta with every
+friction entry zero (toppra's convex formulation cannot take viscous friction). Two toppra
+timings:
+
+* ``toppra_ms``: what a user runs, ``TOPPRA(...)`` with a ``SecondOrderConstraint`` whose
+  inverse dynamics are pm2dof's generated Me and Ce (one C call each per point) and
+  ``compute_parameterization``;
+* ``toppra_solve_ms``: the same with the constraint coefficients precomputed (toppra's solver
+  alone, its Cython Seidel LP).
+
+toppra is optional: without it those keys are None and ``notes`` says why.
+"""
+import time
+
+import numpy as np
+
+from ..planning import TaskPath, plan_time_optimal
+from ..planning.smooth import plan_smooth
+from ..planning.stages import grid_points, limits, params, stages
+from .timing import stats
+
+__all__ = ["bench_planning", "ToppraPath", "friction_free"]
+
+
+def friction_free(model):
+    """theta (5n,) of the model with every friction parameter zero."""
+    th = np.array(model.theta_nominal, dtype=float)
+    for j, name in enumerate(model.param_names):
+        if not name.startswith(("alpha", "beta", "gamma")):
+            th[j] = 0.0
+    return th
+
+
+class ToppraPath:
+    """A :class:`pm2dof.TaskPath` as a toppra geometric path (dof 2: the task position)."""
+
+    def __init__(self, path):
+        self.path = path
+        self.dof = 2
+        self.path_interval = np.array([0.0, path.length])
+        self.waypoints = None
+
+    def __call__(self, s, order=0):
+        scalar = np.ndim(s) == 0
+        out = self.path.evaluate(np.atleast_1d(s))[order]
+        return out[0] if scalar else out
+
+
+def _toppra_constraints(model, theta, N_of, h_of, precomputed=None):
+    """toppra's SecondOrderConstraint (Me, Ce from the generated C; F u <= g from N_of/h_of) in
+    its default interpolation scheme (both ends of every interval, like pm2dof's), or with
+    ``precomputed`` = (a, b, c, F, g) at the grid points a constraint that only hands over
+    their interpolation form."""
+    import toppra
+    from toppra.constraint import DiscretizationType, LinearConstraint
+    from toppra.constraint.linear_constraint import canlinear_colloc_to_interpolate
+    if precomputed is not None:
+        class Given(LinearConstraint):
+            def __init__(self):
+                super().__init__()
+                self.discretization_type = DiscretizationType.Interpolation
+                self.identical = False
+
+            def compute_constraint_params(self, path, gridpoints):
+                return canlinear_colloc_to_interpolate(*precomputed, None, None, gridpoints)
+        return Given()
+
+    def inv_dyn(p, v, a):
+        q = model.ik(p)
+        return model.Me(q, theta) @ a + model.Ce(q, v, theta) @ v
+
+    return toppra.constraint.SecondOrderConstraint(
+        inv_dyn, N_of, h_of, dof=2, discretization_scheme=DiscretizationType.Interpolation)
+
+
+def _toppra_duration(sd, s):
+    return float(np.sum(2 * np.diff(s) / (sd[:-1] + sd[1:])))
+
+
+def bench_planning(model, quick=False, progress=None):
+    """Time ``plan_time_optimal`` (1,000 grid points) and toppra on the same friction-free
+    problem, interleaved, plus the smoothed variant's IPOPT solve. Returns a JSON-able dict
+    (``plan_time_optimal_ms`` median, ``toppra_ms``, ``toppra_solve_ms``, ``speedup_vs_toppra``
+    and ``speedup_vs_toppra_solve``, the durations each finds, ``plan_smooth_*``, ``notes``)."""
+    say = progress or (lambda msg: None)
+    repeats = 3 if quick else 7
+    moves = model.spec.trajectories
+    name = max(moves, key=lambda k: moves[k]["v_max"])
+    path = TaskPath.line(moves[name]["start"], moves[name]["end"])
+    grid = 1000
+    res = {"plan_path": f"the {name} move as a line", "plan_grid": grid, "notes": {}}
+    th0 = friction_free(model)
+
+    say(f"planning: plan_time_optimal on the {name} move, {grid} grid points, both splits")
+    t_end = time.perf_counter() + (0.1 if quick else 0.5)
+    while time.perf_counter() < t_end:          # warm up (caches, the CPU's clock)
+        plan_time_optimal(model, path, grid=grid)
+    per = {"min_max": [], "min_norm": []}
+    for _ in range(repeats * 3):                 # the splits interleaved
+        for split, times in per.items():
+            t0 = time.perf_counter()
+            plan_time_optimal(model, path, split=split, grid=grid)
+            times.append((time.perf_counter() - t0) * 1e3)
+    for split, times in per.items():
+        st = stats(times)
+        res[f"plan_time_optimal_{split}_ms"] = st["median"]
+        res[f"plan_time_optimal_{split}_ms_min"] = st["min"]
+    res["plan_time_optimal_ms"] = res["plan_time_optimal_min_max_ms"]
+    res["plan_time_optimal_ms_min"] = res["plan_time_optimal_min_max_ms_min"]
+
+    try:
+        import toppra
+        import toppra.algorithm
+    except ImportError as exc:
+        toppra = None
+        res["notes"]["toppra"] = f"toppra is not installed ({exc}): pip install toppra"
+    for key in ("toppra_ms", "toppra_solve_ms", "plan_friction_free_ms", "speedup_vs_toppra",
+                "speedup_vs_toppra_solve"):
+        res[key] = None
+    if toppra is not None:
+        say("planning: toppra on the same friction-free problem (interleaved with pm2dof)")
+        toppra.setup_logging("WARNING") if hasattr(toppra, "setup_logging") else None
+        w = limits(model, None, 1.0)
+        s = grid_points(path, grid)
+        prm, th = params(model, th0)
+        stage, coef = stages(model, path, s, w, th, "min_max")
+        N, h = coef["N"], coef["h"]
+        f_pc, n = model.function("path_coefficients"), model.n_legs
+        bufs = [np.empty(k) for k in (2, 2, 2 * n, n, 2 * n, n, 2 * n, n, 2)]
+        unit, zero = np.array([1.0, 0.0]), np.zeros(2)
+
+        def F_of(p):     # the min-max force polygon at p: one call into the generated C
+            f_pc(np.ascontiguousarray(p), unit, zero, th, w, *bufs)
+            Nk = bufs[6].reshape(n, 2)
+            return np.vstack([Nk, -Nk])
+
+        def g_of(p):
+            f_pc(np.ascontiguousarray(p), unit, zero, th, w, *bufs)
+            return np.concatenate([bufs[7], bufs[7]])
+
+        tpath = ToppraPath(path)
+        a, b = coef["a"], coef["b"]
+        F = np.concatenate([N, -N], axis=1)
+        g = np.concatenate([h, h], axis=1)
+        pre = (a, b, np.zeros_like(a), F, g)
+
+        def run_toppra(given):
+            cons = _toppra_constraints(model, th0, F_of, g_of, pre if given else None)
+            algo = toppra.algorithm.TOPPRA([cons], tpath, gridpoints=s, solver_wrapper="seidel")
+            sdd, sd, _, _ = algo.compute_parameterization(0, 0, return_data=True)
+            return sd
+
+        per = {"toppra": [], "toppra_solve": [], "pm2dof": []}
+        sd_t = run_toppra(False)
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            sd_t = run_toppra(False)
+            per["toppra"].append((time.perf_counter() - t0) * 1e3)
+            t0 = time.perf_counter()
+            sd_g = run_toppra(True)
+            per["toppra_solve"].append((time.perf_counter() - t0) * 1e3)
+            t0 = time.perf_counter()
+            pl = plan_time_optimal(model, path, theta=th0, split="min_max", grid=grid)
+            per["pm2dof"].append((time.perf_counter() - t0) * 1e3)
+        res["toppra_ms"] = stats(per["toppra"])["median"]
+        res["toppra_solve_ms"] = stats(per["toppra_solve"])["median"]
+        res["plan_friction_free_ms"] = stats(per["pm2dof"])["median"]
+        res["speedup_vs_toppra"] = res["toppra_ms"] / res["plan_friction_free_ms"]
+        res["speedup_vs_toppra_solve"] = res["toppra_solve_ms"] / res["plan_friction_free_ms"]
+        res["plan_duration_friction_free_s"] = pl.duration
+        res["toppra_duration_s"] = _toppra_duration(sd_t, s)
+        res["toppra_given_duration_s"] = _toppra_duration(sd_g, s)
+        res["plan_vs_toppra_rel_diff"] = abs(res["toppra_duration_s"] / pl.duration - 1)
+
+    say("planning: the smoothed variant (IPOPT, 200 grid points)")
+    keys = ("plan_smooth_total_s", "plan_smooth_solve_s", "plan_smooth_iterations",
+            "plan_smooth_duration_s", "plan_smooth_strict_duration_s")
+    try:
+        t0 = time.perf_counter()
+        sm = plan_smooth(model, path, split="min_max")
+        vals = (time.perf_counter() - t0, sm.info["solve_time_s"], sm.info["iterations"],
+                sm.duration, sm.info["strict_duration"])
+    except ImportError as exc:
+        vals = (None,) * len(keys)
+        res["notes"]["plan_smooth"] = f"casadi is not importable ({exc})"
+    res.update(zip(keys, vals))
+    return res

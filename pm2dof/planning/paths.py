@@ -1,0 +1,273 @@
+# Task-plane paths parameterised by arc length: lines, arcs, blended polylines, C2 splines, joins.
+"""Geometric paths p(s) of the end-effector, s the arc length (m), 0 <= s <= ``length``.
+
+A :class:`TaskPath` is a chain of pieces (line, circular arc, C2 spline); ``evaluate(s)``
+returns p(s), p'(s) (unit tangent) and p''(s) (curvature vector). Where two pieces meet with
+different tangents the robot must be at rest: those arc lengths are the path's ``stops``
+(the ends always are). ``breakpoints`` are all piece junctions: the planner puts a grid point
+on each, so no grid interval straddles a jump of curvature.
+"""
+import math
+
+import numpy as np
+
+from ..core.errors import PlanError
+from .spline import SplinePiece
+
+__all__ = ["TaskPath"]
+
+GAP = 1e-9          # m: largest gap between pieces that concat() accepts
+_TANGENT = 1e-9     # |t_out - t_in| above this: a corner (a stop)
+
+
+def _point(name, p):
+    a = np.asarray(p, dtype=float) if not isinstance(p, str) else np.array([])
+    if a.shape != (2,) or not np.isfinite(a).all():
+        raise PlanError(f"{name} must be a finite point (x, y) in m, got {p!r}")
+    return a
+
+
+def _number(name, x, positive=False, nonnegative=False):
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        v = math.nan
+    if not math.isfinite(v) or (positive and v <= 0) or (nonnegative and v < 0):
+        want = "> 0" if positive else ">= 0" if nonnegative else "finite"
+        raise PlanError(f"{name} must be a finite number {want}, got {x!r}")
+    return v
+
+
+class _Line:
+    kind = "line"
+
+    def __init__(self, p0, p1):
+        self.p0, self.p1 = p0, p1
+        self.length = float(np.hypot(*(p1 - p0)))
+        self.u = (p1 - p0) / self.length
+
+    def evaluate(self, s):
+        lam = (s / self.length)[:, None]
+        p = (1.0 - lam) * self.p0 + lam * self.p1    # as pm2dof.line: exact at both ends
+        return p, np.broadcast_to(self.u, p.shape).copy(), np.zeros_like(p)
+
+
+class _Arc:
+    kind = "arc"
+
+    def __init__(self, center, radius, a0, a1):
+        self.c, self.r, self.a0 = center, radius, a0
+        self.d = 1.0 if a1 > a0 else -1.0
+        self.length = radius * abs(a1 - a0)
+
+    def evaluate(self, s):
+        phi = self.a0 + self.d * s / self.r
+        e = np.stack([np.cos(phi), np.sin(phi)], axis=1)
+        tangent = self.d * np.stack([-e[:, 1], e[:, 0]], axis=1)
+        return self.c + self.r * e, tangent, -e / self.r
+
+
+class TaskPath:
+    """A path in the task plane, parameterised by arc length. Immutable; build it with
+    :meth:`line`, :meth:`arc`, :meth:`polyline`, :meth:`spline` or :meth:`concat`.
+
+    Attributes
+    ----------
+    length : float
+        Arc length, m.
+    start, end : ndarray (2,)
+        First and last point, m.
+    breakpoints : ndarray
+        Arc lengths of the piece junctions, 0 and ``length`` included, m.
+    stops : ndarray
+        Arc lengths where the tangent jumps (a sharp corner or a reversal): the robot must be
+        at rest there. 0 and ``length`` included, m.
+    kinds : tuple of str
+        The pieces, in order ("line", "arc", "spline").
+
+    Examples
+    --------
+    >>> import numpy as np, pm2dof
+    >>> path = pm2dof.TaskPath.line([0.22, 0.29], [0.27, 0.24])
+    >>> p, dp, ddp = path.evaluate(np.array([0.0, path.length]))
+    >>> p.round(6).tolist(), round(path.length, 6)
+    ([[0.22, 0.29], [0.27, 0.24]], 0.070711)
+    """
+
+    __slots__ = ("_pieces", "_ends", "_stops")
+
+    def __init__(self, pieces, stop_junctions=()):
+        """``pieces``: line/arc/spline pieces in order; ``stop_junctions``: indices j of the
+        junctions (arc length ``breakpoints[j]``) where the robot must rest."""
+        object.__setattr__(self, "_pieces", tuple(pieces))
+        ends = np.concatenate([[0.0], np.cumsum([pc.length for pc in pieces])])
+        ends.setflags(write=False)
+        object.__setattr__(self, "_ends", ends)
+        st = np.unique(np.concatenate([[0, len(pieces)], np.asarray(stop_junctions, dtype=int)]))
+        object.__setattr__(self, "_stops", st)
+
+    def __setattr__(self, key, value):
+        raise AttributeError(f"TaskPath is immutable (tried to set {key!r})")
+
+    length = property(lambda self: float(self._ends[-1]), doc="arc length, m")
+    breakpoints = property(lambda self: self._ends, doc="piece junctions (arc lengths), m")
+    stops = property(lambda self: self._ends[self._stops],
+                     doc="arc lengths where the robot must rest, m")
+    kinds = property(lambda self: tuple(pc.kind for pc in self._pieces))
+    start = property(lambda self: self.evaluate(np.zeros(1))[0][0])
+    end = property(lambda self: self.evaluate(np.array([self.length]))[0][0])
+
+    def __repr__(self):
+        return (f"<TaskPath {'+'.join(self.kinds)}: {self.length:.6g} m, "
+                f"{len(self._stops) - 2} interior stop(s)>")
+
+    def evaluate(self, s, side="right"):
+        """p(s), p'(s), p''(s) at arc lengths ``s``.
+
+        Parameters
+        ----------
+        s : array_like (k,) or float
+            Arc lengths, m, within [0, ``length``] (rounding beyond the ends is clipped).
+        side : {"right", "left"}
+            At a junction of two pieces, the following piece (the derivatives leaving the
+            junction) or the preceding one (arriving at it).
+
+        Returns
+        -------
+        p, dp, ddp : ndarray (k, 2)
+            Position (m), unit tangent (1) and curvature vector p'' (1/m).
+        """
+        s = np.atleast_1d(np.asarray(s, dtype=float))
+        L = self.length
+        if s.ndim != 1 or not np.isfinite(s).all():
+            raise PlanError(f"arc lengths s must be a finite 1-D array, got shape {s.shape}")
+        tol = 1e-9 * max(L, 1.0)
+        bad = (s < -tol) | (s > L + tol)
+        if bad.any():
+            raise PlanError(f"arc length s = {s[bad][0]!r} m is outside the path [0, {L!r}] m")
+        if side not in ("right", "left"):
+            raise PlanError(f"side must be 'right' or 'left', got {side!r}")
+        s = np.clip(s, 0.0, L)
+        idx = np.clip(np.searchsorted(self._ends, s, side=side) - 1, 0, len(self._pieces) - 1)
+        out = [np.empty((len(s), 2)) for _ in range(3)]
+        for i, pc in enumerate(self._pieces):
+            sel = idx == i
+            if sel.all():
+                return pc.evaluate(np.clip(s - self._ends[i], 0.0, pc.length))
+            if sel.any():
+                for o, v in zip(out, pc.evaluate(np.clip(s[sel] - self._ends[i], 0.0, pc.length))):
+                    o[sel] = v
+        return tuple(out)
+
+    # --- constructors -----------------------------------------------------------------
+    @classmethod
+    def line(cls, p0, p1):
+        """The straight segment from ``p0`` to ``p1`` (each (2,), m; distinct)."""
+        a, b = _point("p0", p0), _point("p1", p1)
+        if np.hypot(*(b - a)) == 0.0:
+            raise PlanError(f"line: p0 and p1 coincide at {a.tolist()}: zero length")
+        return cls([_Line(a, b)])
+
+    @classmethod
+    def arc(cls, center, radius, angle0, angle1):
+        """The circular arc around ``center`` (2,) m of ``radius`` m from ``angle0`` to
+        ``angle1`` (rad, from +x; counter-clockwise if angle1 > angle0, else clockwise)."""
+        c = _point("center", center)
+        r = _number("radius (m)", radius, positive=True)
+        a0, a1 = _number("angle0 (rad)", angle0), _number("angle1 (rad)", angle1)
+        if a0 == a1:
+            raise PlanError(f"arc: angle0 == angle1 == {a0}: zero length")
+        return cls([_Arc(c, r, a0, a1)])
+
+    @classmethod
+    def polyline(cls, points, blend_radius=0.0):
+        """Straight segments through ``points`` (m, 2), m >= 2, each corner blended by a
+        circular arc of ``blend_radius`` m tangent to both segments (C1; the curvature jumps
+        at the tangent points). ``blend_radius = 0``: sharp corners, where the robot stops.
+
+        Raises PlanError for repeated points, a blend that does not fit between two corners
+        (names the segment and the largest radius that fits) or a corner that turns back
+        (180 degrees: no arc is tangent to both; stop there with blend_radius 0).
+        """
+        P = np.asarray(points, dtype=float) if not isinstance(points, str) else np.array([])
+        if P.ndim != 2 or P.shape[1:] != (2,) or len(P) < 2 or not np.isfinite(P).all():
+            raise PlanError(f"polyline: points must be a finite (m, 2) array with m >= 2, got "
+                            f"{points!r}")
+        r = _number("blend_radius (m)", blend_radius, nonnegative=True)
+        seg = np.diff(P, axis=0)
+        lens = np.hypot(*seg.T)
+        if (lens == 0).any():
+            i = int(np.argmax(lens == 0))
+            raise PlanError(f"polyline: points {i} and {i + 1} coincide at {P[i].tolist()}")
+        d = seg / lens[:, None]
+        turn = np.array([math.atan2(d[i, 0] * d[i + 1, 1] - d[i, 1] * d[i + 1, 0],
+                                    float(d[i] @ d[i + 1])) for i in range(len(d) - 1)])
+        if r == 0.0:
+            return cls.concat(*[cls.line(P[i], P[i + 1]) for i in range(len(P) - 1)])
+        for i, phi in enumerate(turn):
+            if abs(phi) > math.pi - 1e-9:
+                raise PlanError(f"polyline: the corner at point {i + 1} {P[i + 1].tolist()} "
+                                f"turns back (180 deg): no blend arc fits; use blend_radius=0 "
+                                f"to stop there")
+        cut = np.concatenate([[0.0], r * np.tan(np.abs(turn) / 2), [0.0]])   # per point
+        for i in range(len(lens)):
+            if cut[i] + cut[i + 1] > lens[i] * (1 + 1e-12):
+                t = np.tan(np.abs(np.concatenate([[0.0], turn, [0.0]]))[[i, i + 1]] / 2).sum()
+                raise PlanError(f"polyline: blend_radius {r} m does not fit on segment {i} "
+                                f"({P[i].tolist()} -> {P[i + 1].tolist()}, {lens[i]:.6g} m): its "
+                                f"corners cut {cut[i] + cut[i + 1]:.6g} m; at most "
+                                f"{lens[i] / t:.6g} m fits")
+        pieces, start = [], P[0]
+        for i in range(len(lens)):
+            end = P[i + 1] - cut[i + 1] * d[i]
+            if np.hypot(*(end - start)) > GAP:
+                pieces.append(_Line(start, end))
+            if i < len(turn) and turn[i] != 0.0:
+                phi = turn[i]
+                nl = np.array([-d[i, 1], d[i, 0]])                  # left normal of the segment
+                c = end + math.copysign(r, phi) * nl
+                a0 = math.atan2(*(end - c)[::-1])
+                pieces.append(_Arc(c, r, a0, a0 + phi))
+                start = P[i + 1] + cut[i + 1] * d[i + 1]
+            else:
+                start = end
+        return cls(pieces)
+
+    @classmethod
+    def spline(cls, waypoints):
+        """A C2 cubic spline through ``waypoints`` (m, 2), m >= 2 (natural: no curvature at
+        the ends; two points give the line). See :mod:`pm2dof.planning.spline`."""
+        P = np.asarray(waypoints, dtype=float) if not isinstance(waypoints, str) else np.array([])
+        if P.ndim != 2 or P.shape[1:] != (2,) or len(P) < 2 or not np.isfinite(P).all():
+            raise PlanError(f"spline: waypoints must be a finite (m, 2) array with m >= 2, got "
+                            f"{waypoints!r}")
+        gaps = np.hypot(*np.diff(P, axis=0).T)
+        if (gaps == 0).any():
+            i = int(np.argmax(gaps == 0))
+            raise PlanError(f"spline: waypoints {i} and {i + 1} coincide at {P[i].tolist()}")
+        if len(P) == 2:
+            return cls.line(P[0], P[1])
+        return cls([SplinePiece(P)])
+
+    @classmethod
+    def concat(cls, *paths):
+        """The paths one after the other. Each must start where the previous ends (within
+        1e-9 m); where the tangents differ the joined path has a stop."""
+        if not paths or not all(isinstance(p, TaskPath) for p in paths):
+            raise PlanError(f"concat takes one or more TaskPath, got "
+                            f"{[type(p).__name__ for p in paths]}")
+        pieces, stops = [], []
+        for k, path in enumerate(paths):
+            if k:
+                prev = paths[k - 1]
+                _, t_out, _ = prev.evaluate(np.array([prev.length]))
+                p_in, t_in, _ = path.evaluate(np.zeros(1))
+                gap = float(np.hypot(*(p_in[0] - prev.end)))
+                if gap > GAP:
+                    raise PlanError(f"concat: path {k} starts at {p_in[0].tolist()}, {gap:.3g} m "
+                                    f"from where path {k - 1} ends ({prev.end.tolist()})")
+                if np.hypot(*(t_out[0] - t_in[0])) > _TANGENT:
+                    stops.append(len(pieces))
+            stops += [len(pieces) + j for j in path._stops[1:-1]]
+            pieces += path._pieces
+        return cls(pieces, stops)

@@ -1,0 +1,144 @@
+# The result of a planner: the timing along the path, torques, limits, and the sampled Trajectory.
+"""A :class:`Plan`: how fast the path is traversed, and the desired motion that results.
+
+The timing is a profile of the path speed s_d over the arc length s on a grid, with constant
+path acceleration s_dd on each interval (s_d^2 rises linearly in s):
+
+    s(tau) = s_k + s_d,k tau + s_dd,k tau^2 / 2,   t_k+1 - t_k = 2 delta_k / (s_d,k + s_d,k+1).
+
+:func:`sample` turns it into a :class:`pm2dof.Trajectory` at the controller's period:
+xd = p(s), xd_dot = p' s_d, xd_ddot = p' s_dd + p'' s_d^2.
+"""
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..control.trajectory import Trajectory
+from ..core.errors import PlanError
+
+__all__ = ["Plan", "PathProfile", "sample", "grid_times"]
+
+
+def grid_times(s, sdot):
+    """Times (K,) s at the grid points of a profile with constant s_dd per interval."""
+    v = sdot[:-1] + sdot[1:]
+    if not (v > 0).all():
+        k = int(np.argmin(v > 0))
+        raise PlanError(f"zero feasible velocity on the whole interval s = [{s[k]:.6g}, "
+                        f"{s[k + 1]:.6g}] m: the torque limits cannot hold the path at any speed "
+                        f"there")
+    return np.concatenate([[0.0], np.cumsum(2.0 * np.diff(s) / v)])
+
+
+@dataclass(frozen=True, eq=False)
+class PathProfile:
+    """The timing of a path: ``s`` (K,) m, ``sdot`` (K,) m/s, ``sddot`` (K,) m/s^2 (interval k's
+    constant value; the last repeats the one before), ``t`` (K,) s. ``duration`` = t[-1]."""
+
+    s: np.ndarray = field(repr=False)
+    sdot: np.ndarray = field(repr=False)
+    sddot: np.ndarray = field(repr=False)
+    t: np.ndarray = field(repr=False)
+
+    @property
+    def duration(self):
+        """Time to traverse the path, s."""
+        return float(self.t[-1])
+
+    def evaluate(self, t):
+        """s (m), s_d (m/s), s_dd (m/s^2) at times ``t`` (array), at rest outside [0, duration]."""
+        t = np.asarray(t, dtype=float)
+        k = np.clip(np.searchsorted(self.t, t, side="right") - 1, 0, len(self.t) - 2)
+        tau = np.clip(t - self.t[k], 0.0, self.t[k + 1] - self.t[k])
+        u = self.sddot[k]
+        s = np.clip(self.s[k] + self.sdot[k] * tau + 0.5 * u * tau * tau, self.s[k], self.s[k + 1])
+        sd = np.maximum(self.sdot[k] + u * tau, 0.0)
+        after = t >= self.t[-1]
+        s = np.where(after, self.s[-1], np.where(t <= 0, self.s[0], s))
+        sd = np.where(after | (t < 0), 0.0, sd)
+        sdd = np.where(after | (t < 0), 0.0, u)
+        return s, sd, sdd
+
+
+def sample(path, profile, period):
+    """The :class:`pm2dof.Trajectory` of ``profile`` along ``path`` at ``period`` s: samples at
+    k * period, k = 0 .. ceil(duration / period); the last one at rest at the end."""
+    n = math.ceil(profile.duration / period)
+    n += int(n * period < profile.duration)
+    t = np.arange(n + 1) * period
+    s, sd, sdd = profile.evaluate(t)
+    p, dp, ddp = path.evaluate(s)
+    xd_dot = dp * sd[:, None] + 0.0
+    xd_ddot = dp * sdd[:, None] + ddp * (sd * sd)[:, None] + 0.0
+    return Trajectory(t, p, xd_dot, xd_ddot, period, tuple(path.start.tolist()),
+                      tuple(path.end.tolist()), profile)
+
+
+@dataclass(frozen=True, eq=False)
+class Plan:
+    """A timed path. Arrays are read-only; no field is NaN.
+
+    Attributes
+    ----------
+    path : TaskPath
+    method : str
+        "time_optimal", "smooth" or "kinematic".
+    split : str or None
+        "min_norm" or "min_max": the torque split whose limits the plan respects (None for a
+        kinematic plan, which knows no model).
+    duration : float
+        Time to traverse the path, s.
+    s, sdot, sddot, t : ndarray (K,)
+        The profile on its grid (see :class:`PathProfile`): m, m/s, m/s^2, s.
+    max_velocity : ndarray (K,)
+        The maximum-velocity curve: the largest s_d (m/s) at which some s_dd keeps every torque
+        within the limits (the kinematic plan: v_max). 0 at a point where only rest is feasible.
+    tau : ndarray (K, n) or None
+        Actuator torques of the split at the grid points, N m (the model's theta).
+    tau_peak : ndarray (n,) or None
+        max_k |tau_k,i|, N m.
+    tau_max : ndarray (n,) or None
+        The limits the plan respects: the model's (or given) tau_max times ``margin``, N m.
+    margin : float
+    trajectory : Trajectory
+        The motion sampled at ``trajectory.period`` (the model's), ready for ``simulate`` and
+        both controllers; its ``profile`` is the :class:`PathProfile`.
+    compute_time_s : float
+        Wall time of the planner, s.
+    info : dict
+        Planner details (grid size, solver status, ...).
+    """
+
+    path: object = field(repr=False)
+    method: str
+    split: object
+    duration: float
+    s: np.ndarray = field(repr=False)
+    sdot: np.ndarray = field(repr=False)
+    sddot: np.ndarray = field(repr=False)
+    t: np.ndarray = field(repr=False)
+    max_velocity: np.ndarray = field(repr=False)
+    tau: object = field(repr=False)
+    tau_peak: object
+    tau_max: object
+    margin: float
+    trajectory: Trajectory = field(repr=False)
+    compute_time_s: float
+    info: dict = field(repr=False, default_factory=dict)
+
+    def __post_init__(self):
+        for name in ("s", "sdot", "sddot", "t", "max_velocity", "tau", "tau_peak", "tau_max"):
+            v = getattr(self, name)
+            if v is None:
+                continue
+            a = np.array(v, dtype=float)
+            if not np.isfinite(a).all():
+                raise PlanError(f"Plan.{name} has non-finite values")   # never handed out
+            a.setflags(write=False)
+            object.__setattr__(self, name, a)
+
+    @property
+    def profile(self):
+        """The :class:`PathProfile` (the trajectory's)."""
+        return self.trajectory.profile

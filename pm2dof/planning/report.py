@@ -1,0 +1,182 @@
+# What `pm2dof plan` computes and prints: timings per split, the kinematic S-curve, the closed loop.
+"""The numbers of ``pm2dof plan``, as plain data (for ``--json``) and as text.
+
+:func:`plan_paths` plans each path with the kinematic S-curve and time-optimally with each
+split (optionally the smoothed variant); :func:`closed_loop` tracks time-optimal plans with NA
+and APD in simulation at several margins; :func:`csv_text` is a plan's trajectory with the
+split's torques as CSV; :func:`format_report` renders all of it.
+"""
+import numpy as np
+
+from ..control.controllers import APDController, NAController
+from ..control.simulate import simulate
+from .kinematic import plan_kinematic
+from .stages import limits
+from .topp import plan_time_optimal
+from .torques import path_torques
+
+__all__ = ["plan_paths", "closed_loop", "csv_text", "format_report", "model_moves"]
+
+
+def model_moves(model):
+    """The model file's moves as paths: [{name, path, kinematic}] (start/end as lines)."""
+    from .paths import TaskPath
+    out = []
+    for name, mv in model.spec.trajectories.items():
+        out.append({"name": name, "path": TaskPath.line(mv["start"], mv["end"]),
+                    "kinematic": {k: float(mv[k]) for k in ("v_max", "a_max", "j_max")}})
+    return out
+
+
+def _at_samples(plan):
+    """(s, s_d, s_dd) of a plan at its trajectory's samples."""
+    if plan.method == "kinematic":         # its profile arrays are the samples already
+        return plan.s, plan.sdot, plan.sddot
+    return plan.trajectory.profile.evaluate(plan.trajectory.t)
+
+
+def _peaks(model, plan, w):
+    """Peak |tau_i| of a timed plan for each split by inverse dynamics at its samples."""
+    r = path_torques(model, plan.path, *_at_samples(plan), None, w)
+    return {sp: np.abs(r[sp]).max(axis=0).tolist() for sp in ("min_norm", "min_max")}
+
+
+def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_norm", "min_max"),
+               theta=None, smooth=False, tau_rate=None):
+    """Plan every item ({name, path, kinematic}) kinematically and time-optimally.
+
+    Returns
+    -------
+    (dict, dict)
+        The JSON-able results ``{"tau_max", "margin", "grid", "paths": [...]}`` and the Plan
+        objects ``{(name, method_or_split): Plan}``.
+    """
+    w = limits(model, tau_max, 1.0)
+    res = {"model": model.name, "tau_max": w.tolist(), "margin": float(margin), "grid": int(grid),
+           "paths": []}
+    plans = {}
+    for item in items:
+        path = item["path"]
+        row = {"name": item["name"], "length_m": path.length, "kinds": list(path.kinds),
+               "stops_m": path.stops.tolist()}
+        kin = item.get("kinematic")
+        if kin:
+            kp = plan_kinematic(path, kin["v_max"], kin["a_max"], kin["j_max"],
+                                model.spec.sensing["sample_period"])
+            peaks = _peaks(model, kp, w)
+            row["kinematic"] = {**kin, "duration_s": kp.duration, "tau_peak": peaks,
+                                "within_limits": {sp: bool(np.all(np.array(v) <= w))
+                                                  for sp, v in peaks.items()}}
+            plans[item["name"], "kinematic"] = kp
+        for split in splits:
+            p = plan_time_optimal(model, path, tau_max, split, theta, margin, grid)
+            plans[item["name"], split] = p
+            row[split] = {"duration_s": p.duration, "tau_peak": p.tau_peak.tolist(),
+                          "compute_ms": p.compute_time_s * 1e3, "grid": p.info["grid"],
+                          "max_speed_m_s": float(p.sdot.max())}
+        if "min_norm" in row and "min_max" in row:
+            row["saving_min_max_percent"] = 100 * (1 - row["min_max"]["duration_s"]
+                                                   / row["min_norm"]["duration_s"])
+        if smooth:
+            from .smooth import plan_smooth
+            for split in splits:
+                sp = plan_smooth(model, path, tau_max, split, theta, margin, tau_rate=tau_rate)
+                plans[item["name"], f"smooth_{split}"] = sp
+                row[f"smooth_{split}"] = {
+                    "duration_s": sp.duration, "strict_duration_s": sp.info["strict_duration"],
+                    "grid": sp.info["grid"], "tau_rate": sp.info["tau_rate"],
+                    "solve_time_s": sp.info["solve_time_s"], "ipopt": sp.info["ipopt_status"]}
+        res["paths"].append(row)
+    return res, plans
+
+
+def closed_loop(model, path, tau_max=None, split="min_max", margins=(1.0, 0.9), grid=1000,
+                settle_time=0.1):
+    """NA and APD tracking the time-optimal plan of ``path`` at each margin, in simulation (the
+    model file's plant, quantised encoders). The controllers use the split of the plan and clip
+    at the full limits; the plan uses tau_max * margin.
+
+    Returns
+    -------
+    list of dict
+        One per margin: ``margin``, ``duration_s`` and for ``na``/``apd``: ``rmse_m``,
+        ``max_error_m``, ``tau_peak`` (N m), ``saturated`` (samples clipped), ``outcome``.
+    """
+    w = limits(model, tau_max, 1.0)
+    out = []
+    for m in margins:
+        plan = plan_time_optimal(model, path, w, split, None, m, grid)
+        row = {"margin": float(m), "duration_s": plan.duration}
+        for law, cls in (("na", NAController), ("apd", APDController)):
+            ctrl = cls(model, split=split, tau_max=w)
+            r = simulate(model, ctrl, plan.trajectory, settle_time=settle_time)
+            n = r.n_move
+            row[law] = {"rmse_m": float(r.rmse), "max_error_m": float(np.max(np.hypot(
+                *(r.xd[:n] - r.xe[:n]).T))), "tau_peak": np.abs(r.tau_a).max(axis=0).tolist(),
+                "saturated": int(r.n_saturated), "outcome": r.outcome}
+        out.append(row)
+    return out
+
+
+def csv_text(model, plan):
+    """``plan``'s trajectory as CSV text: ``# key = value`` lines, then the columns t, s, sdot,
+    sddot, x, y, vx, vy, ax, ay and the actuator torques of its split (inverse dynamics at the
+    samples with the plan's theta), tau1..taun; units s, m, m/s, m/s^2, N m."""
+    tr = plan.trajectory
+    s, sd, sdd = _at_samples(plan)
+    split = plan.split or "min_norm"
+    tau = path_torques(model, plan.path, s, sd, sdd, plan.info.get("theta"), plan.tau_max)[split]
+    n = model.n_legs
+    cols = np.column_stack([tr.t, s, sd, sdd, tr.xd, tr.xd_dot, tr.xd_ddot, tau])
+    head = "t,s,sdot,sddot,x,y,vx,vy,ax,ay," + ",".join(f"tau{i + 1}" for i in range(n))
+    meta = (f"# model = {model.name}\n# method = {plan.method}\n# split = {split}\n"
+            f"# duration = {plan.duration!r}\n# sample_period = {tr.period!r}\n"
+            f"# units: s, m, m/s, m/s^2, N m\n")
+    import io
+    buf = io.StringIO()
+    np.savetxt(buf, cols, delimiter=",", fmt="%.17g")
+    return meta + head + "\n" + buf.getvalue()
+
+
+def format_report(res, loops=None):
+    """The text ``pm2dof plan`` prints."""
+    lines = [f"model {res['model']}: tau_max {res['tau_max']} N m, margin {res['margin']}, "
+             f"grid {res['grid']}"]
+    for row in res["paths"]:
+        lines.append(f"\n{row['name']}: {row['length_m']:.4f} m ({'+'.join(row['kinds'])}; "
+                     f"{len(row['stops_m']) - 2} interior stop(s))")
+        k = row.get("kinematic")
+        if k:
+            lim = ", ".join(f"{sp} {'within' if ok else 'BEYOND'} limits"
+                            for sp, ok in k["within_limits"].items())
+            lines.append(f"  kinematic S-curve ({k['v_max']:g} m/s, {k['a_max']:g} m/s^2, "
+                         f"{k['j_max']:g} m/s^3): {k['duration_s']:.4f} s; peak |tau| "
+                         f"{max(k['tau_peak']['min_norm']):.3f} N m min-norm ({lim})")
+        for split in ("min_norm", "min_max"):
+            if split in row:
+                r = row[split]
+                lines.append(f"  time-optimal, {split:8s}: {r['duration_s']:.4f} s (peak |tau| "
+                             f"{max(r['tau_peak']):.3f} N m, top speed {r['max_speed_m_s']:.3f}"
+                             f" m/s; {r['compute_ms']:.1f} ms, {r['grid']} grid points)")
+        if "saving_min_max_percent" in row:
+            lines.append(f"  the redundancy (min-max over min-norm) saves "
+                         f"{row['saving_min_max_percent']:.1f} % of the time")
+        for split in ("min_norm", "min_max"):
+            r = row.get(f"smooth_{split}")
+            if r:
+                lines.append(f"  smoothed, {split:8s}: {r['duration_s']:.4f} s vs strict "
+                             f"{r['strict_duration_s']:.4f} s on its {r['grid']}-point grid "
+                             f"(+{100 * (r['duration_s'] / r['strict_duration_s'] - 1):.1f} %, "
+                             f"|dtau/dt| <= {max(r['tau_rate']):.0f} N m/s; IPOPT "
+                             f"{r['solve_time_s']:.2f} s)")
+    for name, rows in (loops or {}).items():
+        lines.append(f"\nclosed loop on {name} (plant truth of the model file, quantised "
+                     f"encoders):")
+        for r in rows:
+            for law in ("na", "apd"):
+                c = r[law]
+                lines.append(f"  margin {r['margin']:.2f} ({r['duration_s']:.4f} s) "
+                             f"{law.upper():3s}: RMSE {c['rmse_m']:.3e} m, max error "
+                             f"{c['max_error_m']:.3e} m, peak |tau| {max(c['tau_peak']):.3f} "
+                             f"N m, {c['saturated']} saturated samples, {c['outcome']}")
+    return "\n".join(lines)

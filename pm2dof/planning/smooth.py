@@ -1,0 +1,168 @@
+# A torque-rate-limited, near-time-optimal timing by direct collocation (CasADi + IPOPT).
+"""``plan_smooth``: the time-optimal problem of :mod:`.topp` on the same kind of grid, plus a
+limit on how fast each actuator torque may change, |d tau_i / dt| <= tau_rate,i. A bang-bang
+torque profile (the strict optimum) jumps between its limits and excites the structure; this
+one ramps. Solved by IPOPT (shipped in the casadi wheel), warm-started from the strict optimum.
+
+Variables: the path speeds y_k at the grid points and, for the min-max split, the torques at
+both ends of every interval (n each; min-norm: tau = S (S^T S)^-1 u). With
+u_k = (y_k+1^2 - y_k^2) / (2 delta_k), on the same two-ended discretisation as
+:func:`plan_time_optimal`:
+
+    min sum_k 2 delta_k / (y_k + y_k+1)
+    S^T tau = a u_k + b y^2 + g(y) leaving s_k (y_k) and arriving at s_k+1 (y_k+1),
+    |tau_i| <= tau_max,i at both,   |tau_k+1,i - tau_k,i| (y_k + y_k+1) <= 2 delta_k tau_rate,i
+    (tau_k the torque leaving s_k, the last one arriving),   y = 0 at the stops,
+
+g(y) = S^T f_a(S p' y) the friction force. For a friction law affine in the speed (eq. 2)
+g_k is evaluated exactly from the generated ``path_torques``; otherwise the same C function
+enters through ``casadi.external`` with finite-difference derivatives.
+"""
+import time
+
+import numpy as np
+
+from ..core.errors import PlanError
+from .plan import Plan, PathProfile, grid_times, sample
+from .stages import grid_points, limits, params, stages
+from .topp import plan_time_optimal
+
+__all__ = ["plan_smooth", "RISE_TIME"]
+
+RISE_TIME = 0.02   # s: the default tau_rate lets each torque swing 0 -> tau_max in 20 ms
+
+
+def _friction(model, stage, prm, w, speeds):
+    """g(y) (K, 2) at each grid point for each speed in ``speeds`` (list of (K,) arrays)."""
+    K = len(stage)
+    out = []
+    for y in speeds:
+        u = np.empty((K, 2))
+        model.function("path_torques").map(K, stage, np.ascontiguousarray(y), 0.0, prm, w, u,
+                                           None, None, None)
+        out.append(u)
+    return out
+
+
+def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1.0, grid=200,
+                tau_rate=None, max_iter=1000):
+    """A near-time-optimal traversal of ``path`` whose torques change at a limited rate.
+
+    Parameters
+    ----------
+    model, path, tau_max, split, theta, margin, grid
+        As :func:`plan_time_optimal` (grid: fewer points, IPOPT's cost grows with it).
+    tau_rate : float or array_like (n,), optional
+        Largest |d tau_i / dt|, N m/s (default tau_max * margin / RISE_TIME: a full swing in
+        20 ms).
+    max_iter : int
+        IPOPT's iteration limit.
+
+    Returns
+    -------
+    Plan
+        ``method`` "smooth"; ``info`` holds ``strict_duration`` (the time-optimal plan on the
+        same grid), ``ipopt_status``, ``iterations``, ``solve_time_s``, ``tau_rate``.
+
+    Raises
+    ------
+    PlanError
+        Bad arguments (as :func:`plan_time_optimal`), or IPOPT finds no solution.
+    """
+    t0 = time.perf_counter()
+    import casadi as ca
+    strict = plan_time_optimal(model, path, tau_max, split, theta, margin, grid)
+    w = strict.tau_max
+    n = model.n_legs
+    rate = w / RISE_TIME if tau_rate is None else np.broadcast_to(
+        np.asarray(tau_rate, dtype=float), (n,)).copy()
+    if not (np.isfinite(rate).all() and (rate > 0).all()):
+        raise PlanError(f"tau_rate must be one value or {n} finite rates > 0 N m/s, got "
+                        f"{tau_rate!r}")
+    s = strict.s
+    prm, th = params(model, strict.info["theta"])
+    stops = np.searchsorted(s, path.stops)
+    stage, coef = stages(model, path, s, w, th, split, stops)
+    K = len(s)
+    delta = np.diff(s)
+    lay = model.layout("path_stage")
+    ends = (stage[:-1], coef["arrive"][1:])          # the facets leaving s_k, arriving s_k+1
+    affine = True
+    for rows in ends:
+        g0, g1, gh = _friction(model, rows, prm, w, [np.zeros(K - 1), np.ones(K - 1),
+                                                     np.full(K - 1, 0.5)])
+        b = lay.unpack(rows)["b"]
+        g1, gh = g1 - b, gh - 0.25 * b
+        scale = max(1.0, float(np.abs(g1 - g0).max()))
+        affine &= bool(np.abs(gh - 0.5 * (g0 + g1)).max() <= 1e-9 * scale)
+
+    opti = ca.Opti()
+    y = opti.variable(K)
+    x = y * y
+    u = (x[1:] - x[:-1]) / (2 * delta)
+    taus = []
+    for rows, yk in zip(ends, (y[:-1], y[1:])):
+        R = lay.unpack(rows)
+        a, b, S = R["a"], R["b"], R["S"].reshape(K - 1, n, 2)
+        if affine:
+            g0, g1 = _friction(model, rows, prm, w, [np.zeros(K - 1), np.ones(K - 1)])
+            fr = [ca.DM(g0[:, i]) + ca.DM(g1[:, i] - b[:, i] - g0[:, i]) * yk for i in range(2)]
+        else:
+            ext = ca.external(f"{model.name}_path_torques", model.library,
+                              {"enable_fd": True, "fd_method": "central"}).map(K - 1)
+            U = ext(ca.DM(rows.T), yk.T, ca.DM.zeros(1, K - 1), ca.DM(prm), ca.DM(w))[0]
+            fr = [U[i, :].T - ca.DM(b[:, i]) * yk * yk for i in range(2)]
+        force = [ca.DM(a[:, i]) * u + ca.DM(b[:, i]) * yk * yk + fr[i] for i in range(2)]
+        if split == "min_max":
+            tau = opti.variable(K - 1, n)
+            for i in range(2):
+                opti.subject_to(sum(ca.DM(S[:, j, i]) * tau[:, j] for j in range(n)) == force[i])
+        else:
+            P = np.einsum("kij,kjl->kil", S, np.linalg.inv(np.einsum("kji,kjl->kil", S, S)))
+            tau = ca.horzcat(*[ca.DM(P[:, j, 0]) * force[0] + ca.DM(P[:, j, 1]) * force[1]
+                               for j in range(n)])
+        for j in range(n):
+            opti.subject_to(opti.bounded(-w[j], tau[:, j], w[j]))
+        taus.append(tau)
+    if split == "min_max":
+        opti.set_initial(taus[0], strict.tau[:-1])
+        opti.set_initial(taus[1], strict.tau[1:])
+    tau = ca.vertcat(taus[0], taus[1][-1, :])        # at the grid points (the end: arriving)
+    for j in range(n):
+        d = (tau[1:, j] - tau[:-1, j]) * (y[1:] + y[:-1])
+        opti.subject_to(opti.bounded(-2 * delta * rate[j], d, 2 * delta * rate[j]))
+    opti.subject_to(y >= 0)
+    for k in stops:
+        opti.subject_to(y[int(k)] == 0)
+    opti.minimize(ca.sum1(2 * delta / (y[1:] + y[:-1] + 1e-12)))
+    opti.set_initial(y, 0.9 * strict.sdot)
+    opti.solver("ipopt", {"print_time": False},
+                {"print_level": 0, "max_iter": int(max_iter), "tol": 1e-8, "sb": "yes"})
+    t1 = time.perf_counter()
+    try:
+        sol = opti.solve()
+        status = "Solve_Succeeded"
+    except RuntimeError:
+        sol, status = opti.debug, opti.stats().get("return_status", "failed")
+    solve_s = time.perf_counter() - t1
+    if not str(status).startswith(("Solve_Succeeded", "Solved_To_Acceptable")):
+        raise PlanError(f"plan_smooth: IPOPT did not converge ({status}) on {K} grid points "
+                        f"with tau_rate {rate.tolist()} N m/s")
+    sdot = np.maximum(np.asarray(sol.value(y), dtype=float).ravel(), 0.0)
+    sdot[stops] = 0.0
+    x = sdot ** 2
+    sdd = np.diff(x) / (2 * delta)
+    sdd = np.concatenate([sdd, sdd[-1:]])
+    t = grid_times(s, sdot)
+    tau_v = np.asarray(sol.value(tau), dtype=float).reshape(K, n)
+    profile = PathProfile(s, sdot, sdd, t)
+    traj = sample(path, profile, model.spec.sensing["sample_period"])
+    stats = opti.stats()
+    return Plan(path=path, method="smooth", split=split, duration=float(t[-1]), s=s, sdot=sdot,
+                sddot=sdd, t=t, max_velocity=strict.max_velocity, tau=tau_v,
+                tau_peak=np.abs(tau_v).max(axis=0), tau_max=w, margin=float(margin),
+                trajectory=traj, compute_time_s=time.perf_counter() - t0,
+                info={"grid": K, "theta": th.tolist(), "strict_duration": strict.duration,
+                      "ipopt_status": str(status), "iterations": int(stats.get("iter_count", -1)),
+                      "solve_time_s": solve_s, "tau_rate": rate.tolist(),
+                      "friction": "affine, exact" if affine else "casadi.external, FD"})

@@ -1,0 +1,182 @@
+# The path's dynamics at every grid point, in one call into the generated C (path_coefficients).
+"""Grid and per-point coefficients of the time-optimal planner.
+
+Along p(s) the task force is u = a s_dd + b s_d^2 + S^T f_a(S p' s_d) (eqs. 10-12, 2) with
+a = Me p', b = Me p'' + Ce(q, p') p', and the split's feasible forces are {u : N u <= h}
+(pm2dof/derive/planning.py). :func:`stages` evaluates all of it at every grid point with one
+``Function.map`` call and packs the ``path_stage`` vectors the generated passes take.
+"""
+import math
+import numbers
+
+import numpy as np
+
+from ..core.errors import PlanError
+from .check import first_bad, raise_at
+
+__all__ = ["SPLITS", "grid_points", "limits", "stages", "params"]
+
+SPLITS = ("min_norm", "min_max")
+V_TOP = 100.0   # m/s: the bisection's upper bracket; a maximum-velocity curve above it reads V_TOP
+
+
+RAMP = 0.15    # fraction of each rest-to-rest segment, at either end, graded quadratically
+
+
+def _graded(n):
+    """n + 1 points on [0, 1]: quadratic (s ~ xi^2) over the first and last RAMP of the length,
+    uniform between, C1. From rest the path speed grows like sqrt(s), so equal steps of xi are
+    about equal steps of speed there: the friction's change over an interval stays small."""
+    xi = np.linspace(0.0, 1.0, n + 1)
+    xr = 2 * RAMP / (1 + 2 * RAMP)             # the ramps' share of the points
+    c, slope = RAMP / xr ** 2, 2 * RAMP / xr
+    g = np.where(xi < xr, c * xi * xi, RAMP + slope * (xi - xr))
+    g = np.where(xi > 1 - xr, 1 - c * (1 - xi) ** 2, g)
+    g[0], g[-1] = 0.0, 1.0
+    return g
+
+
+def grid_points(path, grid):
+    """About ``grid`` arc lengths (m): each rest-to-rest segment graded by :func:`_graded`
+    (fine near the stops, where the speed changes fastest), every breakpoint a grid point (no
+    interval straddles a jump of curvature)."""
+    if isinstance(grid, bool) or not isinstance(grid, numbers.Integral) or grid < 2:
+        raise PlanError(f"grid must be a whole number of grid points >= 2, got {grid!r}")
+    stops, L = path.stops, path.length
+    pts = []
+    for a, b in zip(stops[:-1], stops[1:]):
+        k = max(2, int(round((grid - 1) * (b - a) / L)))
+        pts.append(a + (b - a) * _graded(k)[:-1])
+    s = np.concatenate(pts + [[L]])
+    bp = path.breakpoints
+    spacing = np.diff(s)
+    k = np.clip(np.searchsorted(s, bp), 1, len(s) - 1)
+    near = np.minimum(bp - s[k - 1], s[np.minimum(k, len(s) - 1)] - bp)
+    local = spacing[k - 1]
+    drop = np.zeros(len(s), dtype=bool)
+    for j, b in enumerate(bp):          # a grid point very close to a breakpoint gives way
+        if near[j] < 0.3 * local[j]:
+            i = k[j] - 1 if b - s[k[j] - 1] < s[k[j]] - b else k[j]
+            drop[i] = s[i] != b
+    return np.union1d(s[~drop], bp)
+
+
+def limits(model, tau_max, margin):
+    """The torque limits the plan may use, tau_max * margin (n,), N m, checked."""
+    n = model.n_legs
+    try:
+        m = float(margin)
+    except (TypeError, ValueError):
+        m = math.nan
+    if not (math.isfinite(m) and m > 0):
+        raise PlanError(f"margin must be a finite number > 0 (a fraction of tau_max), got "
+                        f"{margin!r}")
+    w = model.spec.limits["tau_max"] if tau_max is None else tau_max
+    try:
+        w = np.array(w, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise PlanError(f"tau_max must be {n} torques in N m, got {tau_max!r}") from None
+    if w.size == 1:
+        w = np.full(n, w[0])
+    if w.shape != (n,) or not np.isfinite(w).all() or (w <= 0).any():
+        raise PlanError(f"tau_max must be one value or {n} finite torques > 0 N m (one per "
+                        f"actuator), got {np.asarray(tau_max).tolist()}")
+    return w * m
+
+
+def params(model, theta):
+    """The ``path_params`` vector: v_top and theta (default the model's nominal, Tables 1-2)."""
+    th = model.theta_nominal if theta is None else theta
+    th = np.asarray(th, dtype=float).ravel()
+    p = len(model.param_names)
+    if th.shape != (p,) or not np.isfinite(th).all():
+        raise PlanError(f"theta must be {p} finite numbers ({', '.join(model.param_names)}), "
+                        f"got {np.asarray(theta).tolist()}")
+    return model.layout("path_params").pack(v_top=V_TOP, theta=th), th
+
+
+def _coefficients(model, p, dp, ddp, theta, w, split):
+    """One ``path_coefficients`` map over the points: dict of its outputs (the other split's
+    polygon not computed)."""
+    K, n = len(p), model.n_legs
+    sizes = (("a", 2), ("b", 2), ("S", 2 * n), ("v1", n), ("N_min_norm", 2 * n),
+             ("h_min_norm", n), ("N_min_max", 2 * n), ("h_min_max", n), ("sing", 2))
+    other = "min_max" if split == "min_norm" else "min_norm"
+    outs = {k: (None if k.endswith(other) else np.empty((K, m))) for k, m in sizes}
+    model.function("path_coefficients").map(K, p, dp, ddp, theta, w, *outs.values())
+    return outs
+
+
+def _fill(model, stage, outs, split):
+    st = model.layout("path_stage").unpack(stage)
+    st["N"][:], st["h"][:] = outs[f"N_{split}"], outs[f"h_{split}"]
+    for key in ("a", "b", "S", "v1"):
+        st[key][:] = outs[key]
+
+
+def stages(model, path, s, w, theta, split, stops=(), evaluated=None):
+    """Evaluate the path's dynamics at the arc lengths ``s`` (K,) in one C call.
+
+    Parameters
+    ----------
+    w : ndarray (n,)
+        Torque limits, N m (margin applied).
+    theta : ndarray (5n,)
+    split : {"min_norm", "min_max"}
+    stops : array_like of int
+        Grid indices where the robot must be at rest (x_cap = 0).
+    evaluated : tuple of ndarray, optional
+        ``path.evaluate(s)`` if the caller has it (p, dp, ddp), to save evaluating again.
+
+    Returns
+    -------
+    stage : ndarray (K, size of ``path_stage``)
+        The packed per-point vectors (see the manifest layout ``path_stage``): the facets of
+        the interval that starts at each point.
+    coef : dict
+        ``a``, ``b`` (K, 2) N per m/s^2 and per (m/s)^2, ``S`` (K, n, 2), ``v1`` (K, n)
+        rad/m, ``N`` (K, n, 2) and ``h`` (K, n) N: the split's force polygon |N_j . u| <= h_j,
+        ``sing`` (K, 2), ``p``, ``dp``, ``ddp``; and ``arrive`` (K, size of ``path_stage``):
+        the facets at each point for the interval that ends there (the path's left limit at a
+        breakpoint, that interval's rho; row 0 unused).
+
+    Raises
+    ------
+    WorkspaceError, SingularityError
+        At the first grid point out of reach or too close to a singularity.
+    """
+    if split not in SPLITS:
+        raise PlanError(f"split must be one of {list(SPLITS)}, got {split!r}")
+    p, dp, ddp = (np.ascontiguousarray(x) for x in (evaluated or path.evaluate(s)))
+    K, n = len(s), model.n_legs
+    outs = _coefficients(model, p, dp, ddp, theta, w, split)
+    sing = outs["sing"]
+    k = first_bad(model, sing)
+    bad = ~np.isfinite(outs["a"]).all(axis=1) | ~np.isfinite(outs["b"]).all(axis=1)
+    if k is not None or bad.any():
+        k = k if k is not None else int(np.argmax(bad))
+        raise_at(model, s[k], p[k], sing[k])
+    lay = model.layout("path_stage")
+    stage = np.empty((K, lay.size))
+    _fill(model, stage, outs, split)
+    st = lay.unpack(stage)
+    sign = np.where(outs["v1"] >= 0, 1.0, -1.0)       # sgn(0) = +1, the model's convention
+    st["rho"][:-1] = sign[:-1] != sign[1:]             # a joint reverses on [s_k, s_k+1]
+    st["rho"][-1] = 0.0
+    st["delta"][:-1, 0] = np.diff(s)
+    st["delta"][-1, 0] = st["delta"][-2, 0]
+    st["x_cap"][:] = V_TOP ** 2
+    st["x_cap"][list(stops)] = 0.0
+    arrive = stage.copy()
+    lay.unpack(arrive)["rho"][1:] = st["rho"][:-1]
+    junction = np.flatnonzero(np.isin(s, path.breakpoints[1:-1]))
+    if junction.size:                   # arriving at a breakpoint: the preceding piece
+        pl, dpl, ddpl = (np.ascontiguousarray(x) for x in path.evaluate(s[junction], "left"))
+        left = _coefficients(model, pl, dpl, ddpl, theta, w, split)
+        part = arrive[junction]
+        _fill(model, part, left, split)
+        arrive[junction] = part
+    coef = {"a": outs["a"], "b": outs["b"], "S": outs["S"].reshape(K, n, 2), "v1": outs["v1"],
+            "N": outs[f"N_{split}"].reshape(K, n, 2), "h": outs[f"h_{split}"],
+            "sing": sing, "p": p, "dp": dp, "ddp": ddp, "arrive": arrive}
+    return stage, coef

@@ -1,0 +1,192 @@
+# Time-optimal path parameterisation under the actuators' torque limits, friction included, in C.
+"""``plan_time_optimal``: the fastest traversal of a path that the motors allow.
+
+The discretisation is TOPP-RA's (Pham & Pham 2018): x_k = s_d^2 at s_k, a constant
+s_dd = u_k on [s_k, s_k+1] (x_k+1 = x_k + 2 delta_k u_k), and the torque facets
+|N_j (a u + b x + S^T f_a(S p' sqrt(x)))| <= h_j at each end of every interval: at s_k with
+(x_k, u_k) and, arriving, at s_k+1 with (x_k+1, u_k). The friction term makes the facets
+nonlinear in sqrt(x) (viscous) and sign-dependent (Coulomb), so the stage sets are not
+polytopes; every set the recursion needs is one-dimensional, though, and is computed exactly
+(to 2.3e-8 m/s) by bisection in generated C (pm2dof/derive/planning.py):
+
+1. the maximum-velocity curve: the largest s_d at each point with a feasible s_dd (``map``);
+2. backward from rest at the end: the largest x_k from which a feasible u_k lands at
+   x_k+1,max (or below) where the arrival facets hold too (one ``accumulate`` call);
+3. forward from rest at the start: the greatest feasible u_k that stays below x_k+1,max,
+   capped by the arrival facets at the landing speed (a fixed point, 3 steps; one
+   ``accumulate`` call). Each x_k is the largest reachable and controllable value: the
+   time-optimal profile of the discrete problem, where the arrival facets bind when braking
+   (landing on the bound) and accelerating (the fixed point).
+"""
+import time
+
+import numpy as np
+
+from ..core.errors import PlanError
+from .check import check_path
+from .plan import Plan, PathProfile, grid_times, sample
+from .stages import grid_points, limits, params, stages
+
+__all__ = ["plan_time_optimal", "solve_profile"]
+
+_TOL = 1e-9   # relative slack of the forward pass's own checks (rounding)
+#: where an interval's facets cannot hold at both ends (riding a steep maximum-velocity curve),
+#: it and its neighbours are split into SPLIT_INTO parts and the passes rerun, REFINE times
+REFINE, SPLIT_INTO = 2, 8
+
+
+def _at(coef, s, k):
+    p = coef["p"][k]
+    return f"s = {s[k]:.6g} m, point ({p[0]:.6g}, {p[1]:.6g}) m"
+
+
+def _stop_indices(path, s):
+    return np.searchsorted(s, path.stops) if len(path.stops) else np.array([], dtype=int)
+
+
+def solve_profile(model, stage, prm, s, coef):
+    """The three passes over one grid. Returns (x (K,), sdd (K,), x_mvc (K,), relaxed): the
+    intervals whose arrival facets could not hold together with the departing ones (only the
+    departing ones are met there: collocation's O(delta) error)."""
+    K = len(s)
+    x_mvc = np.empty(K)
+    mvc = model.function("path_mvc")
+    mvc.map(K, stage, prm, x_mvc)
+    bad = np.flatnonzero(x_mvc < 0)
+    if bad.size:
+        k = int(bad[0])
+        raise PlanError(f"the torque limits cannot move the robot along the path at "
+                        f"{_at(coef, s, k)}: even at rest no path acceleration keeps every "
+                        f"|tau_i| within tau_max (Coulomb friction and the split's force "
+                        f"polygon leave no feasible force along the path)")
+    sl = model.layout("path_stage").slices
+    x_cap = stage[:, sl["x_cap"]].ravel()
+    interior = np.flatnonzero((x_mvc <= 0) & (x_cap > 0))
+    if interior.size:
+        k = int(interior[0])
+        raise PlanError(f"zero feasible velocity at {_at(coef, s, k)}: the torque limits hold "
+                        f"the path there only at rest (the maximum-velocity curve touches 0)")
+    arrive = coef["arrive"]
+    cap = x_mvc.copy()                      # the arrival facets' own maximum-velocity curve
+    other = np.flatnonzero(np.any(arrive != stage, axis=1))
+    if other.size:
+        part = np.empty(other.size)
+        mvc.map(other.size, np.ascontiguousarray(arrive[other]), prm, part)
+        cap[other] = part
+    fin = model.layout("path_forward_input")
+    inp = np.empty((K - 1, fin.size))             # per interval: pair, then x_next_max
+    pair = model.layout("path_pair").unpack(inp[:, fin.slices["pair"]])
+    pair["stage"][:], pair["next"][:], pair["next_cap"][:, 0] = stage[:-1], arrive[1:], cap[1:]
+    # backward: controllable bounds, from rest at the end
+    back = np.empty(K - 1)
+    xb = np.zeros(1)
+    model.function("path_backward").accumulate(
+        xb, np.ascontiguousarray(inp[::-1, fin.slices["pair"]]), prm, back)
+    hi = np.concatenate([back[::-1], [0.0]])
+    if hi[0] < 0:
+        k = int(np.flatnonzero(hi < 0)[-1])
+        raise PlanError(f"the robot cannot reach the end of the path at rest from "
+                        f"{_at(coef, s, k)} with these torque limits: no feasible deceleration")
+    # forward: greedy from rest at the start
+    inp[:, fin.slices["x_next_max"]] = hi[1:, None]
+    out = model.layout("path_forward_output")
+    y = np.empty((K - 1, out.size))
+    xf = np.zeros(1)
+    model.function("path_forward").accumulate(xf, inp, prm, y)
+    Y = {k: v[:, 0] for k, v in out.unpack(y).items()}
+    x = np.concatenate([Y["x"], xf])
+    sdd, L, Z = Y["sdd"], Y["L"], Y["Z"]
+    relaxed = np.flatnonzero(Y["arrival_ok"] == 0)  # the arrival facets do not hold there
+    scale = np.maximum(1.0, np.abs(sdd))
+    wrong = (sdd < L - _TOL * scale) | (Z < -_TOL * stage[:-1, sl["h"]].max(axis=1)) | \
+        (x[1:] < -_TOL * np.maximum(x_mvc[1:], 1e-12))
+    if wrong.any():
+        k = int(np.argmax(wrong))
+        raise PlanError(f"the forward pass found no feasible path acceleration at "
+                        f"{_at(coef, s, k)} (s_dd {sdd[k]:.6g} below its lower bound "
+                        f"{L[k]:.6g} m/s^2): the feasible speeds there are not an interval")
+    x = np.maximum(x, 0.0)
+    x[x_cap == 0] = 0.0
+    return x, np.concatenate([sdd, sdd[-1:]]), x_mvc, relaxed
+
+
+def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, margin=1.0,
+                      grid=1000):
+    """The time-optimal traversal of ``path`` from rest to rest under the torque limits.
+
+    Parameters
+    ----------
+    model : Model
+    path : TaskPath
+    tau_max : float or array_like (n,), optional
+        Actuator torque limits, N m (default ``[limits] tau_max`` of the model file).
+    split : {"min_max", "min_norm"}
+        ``"min_norm"``: tau = S (S^T S)^-1 u (eq. 21) within the limits; ``"min_max"``: any tau
+        with S^T tau = u within the limits (the force zonotope, exactly).
+    theta : array_like (5n,), optional
+        Dynamic parameters (default the model's nominal theta, Tables 1-2); friction, viscous
+        and Coulomb, is the model's own law with these coefficients.
+    margin : float
+        The plan uses tau_max * margin (< 1 leaves headroom for feedback).
+    grid : int
+        Grid points along the path (graded towards the stops, breakpoints included); where an
+        interval's torque facets cannot hold at both its ends, it and its neighbours are split
+        in 8 and the plan rerun (at most twice): ``plan.info["grid"]`` is the final count.
+
+    Returns
+    -------
+    Plan
+        ``method`` "time_optimal"; torques at the grid points from the generated C.
+
+    Raises
+    ------
+    PlanError
+        A non-positive grid or margin, bad limits or theta, or limits too low to follow the
+        path (names the arc length and the point).
+    WorkspaceError, SingularityError
+        The path leaves the workspace or comes closer to a singularity than its threshold
+        (:func:`check_path`, every 0.5 mm; names s and the point).
+
+    Examples
+    --------
+    >>> import pm2dof
+    >>> m = pm2dof.load_model()
+    >>> path = pm2dof.TaskPath.line([0.22, 0.29], [0.27, 0.24])
+    >>> plan = pm2dof.plan_time_optimal(m, path, tau_max=6.0, split="min_max", grid=200)
+    >>> bool(0.1 < plan.duration < 0.216), bool((plan.tau_peak <= 6.0 + 1e-9).all())
+    (True, True)
+    """
+    t0 = time.perf_counter()
+    w = limits(model, tau_max, margin)
+    s = grid_points(path, grid)
+    prm, th = params(model, theta)
+    check_path(model, path)             # every 0.5 mm, between the grid points too
+    ev = path.evaluate(s)
+    for attempt in range(REFINE + 1):
+        stops = _stop_indices(path, s)
+        stage, coef = stages(model, path, s, w, th, split, stops, ev)
+        x, sdd, x_mvc, relaxed = solve_profile(model, stage, prm, s, coef)
+        if not relaxed.size or attempt == REFINE:
+            break
+        ks = np.unique(np.clip(np.concatenate([relaxed - 1, relaxed, relaxed + 1]), 0,
+                               len(s) - 2))
+        new = (s[ks, None] + np.diff(s)[ks, None]
+               * (np.arange(1, SPLIT_INTO) / SPLIT_INTO)).ravel()
+        order = np.argsort(np.concatenate([s, new]), kind="stable")
+        s = np.concatenate([s, new])[order]      # only the new points are evaluated
+        ev = tuple(np.concatenate([e, f])[order] for e, f in zip(ev, path.evaluate(new)))
+    sdot = np.sqrt(x)
+    t = grid_times(s, sdot)
+    K, n = len(s), model.n_legs
+    outs = (np.empty((K, 2)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
+    sdd_pt = np.concatenate([sdd[:-1], sdd[-2:-1]])
+    model.function("path_torques").map(K, stage, sdot, sdd_pt, prm, w, *outs)
+    tau = outs[1] if split == "min_norm" else outs[2]
+    profile = PathProfile(s, sdot, sdd, t)
+    traj = sample(path, profile, model.spec.sensing["sample_period"])
+    return Plan(path=path, method="time_optimal", split=split, duration=float(t[-1]), s=s,
+                sdot=sdot, sddot=sdd, t=t, max_velocity=np.sqrt(np.maximum(x_mvc, 0.0)),
+                tau=tau, tau_peak=np.abs(tau).max(axis=0), tau_max=w, margin=float(margin),
+                trajectory=traj, compute_time_s=time.perf_counter() - t0,
+                info={"grid": K, "stops": s[stops].tolist(), "theta": th.tolist(),
+                      "arrival_relaxed": s[relaxed].tolist()})

@@ -1,0 +1,194 @@
+# The generated path dynamics against independent formulations: Model's Me/Ce/S/StF, convex hulls,
+# the generated min-max split, and a brute-force maximum-velocity curve.
+import numpy as np
+import pytest
+from scipy.spatial import ConvexHull
+
+import pm2dof
+from pm2dof.analysis.maps import zonotope_inradius
+from pm2dof.planning import TaskPath
+from pm2dof.planning.stages import V_TOP, params, stages
+from pm2dof.planning.torques import path_torques
+
+PAPER_LINE = ([0.22, 0.29], [0.27, 0.24])
+
+
+def _coefficients(model, xe, dp, ddp, theta, w):
+    n = model.n_legs
+    outs = [np.empty(k) for k in (2, 2, 2 * n, n, 2 * n, n, 2 * n, n, 2)]
+    model.function("path_coefficients")(np.asarray(xe, float), dp, ddp, theta, w, *outs)
+    return dict(zip(("a", "b", "S", "v1", "N_mn", "h_mn", "N_mm", "h_mm", "sing"), outs))
+
+
+def test_coefficients_match_the_model_functions(model, sample_xe, random_theta):
+    """a = Me p', b = Me p'' + Ce(q, p') p', S, v1 = S p' (eqs. 8, 12) at random poses,
+    directions, curvatures and parameters."""
+    rng = np.random.default_rng(20)
+    n = model.n_legs
+    for xe in sample_xe(model, 21, 5):
+        th = random_theta(model, rng)
+        phi = rng.uniform(0, 2 * np.pi)
+        dp = np.array([np.cos(phi), np.sin(phi)])
+        ddp = rng.normal(0, 20, 2)
+        w = rng.uniform(1, 30, n)
+        c = _coefficients(model, xe, dp, ddp, th, w)
+        q = model.ik(xe)
+        Me, Ce, S = model.Me(q, th), model.Ce(q, dp, th), model.S(q)
+        assert np.allclose(c["a"], Me @ dp, rtol=1e-12, atol=1e-12 * np.abs(Me).max())
+        assert np.allclose(c["b"], Me @ ddp + Ce @ dp, rtol=1e-11,
+                           atol=1e-11 * (np.abs(Me).max() * 20 + np.abs(Ce).max()))
+        assert np.allclose(c["S"].reshape(n, 2), S, rtol=1e-13, atol=1e-13)
+        assert np.allclose(c["v1"], S @ dp, rtol=1e-12, atol=1e-12 * np.abs(S).max())
+        assert np.allclose(c["sing"], model.singularity_measures(q), atol=1e-13)
+
+
+def test_force_polygons_are_the_splits_feasible_sets(coulomb_viscous_model, sample_xe):
+    """min-norm: |N_j u| <= h_j is |(S (S^T S)^-1 u)_j| <= w_j; min-max: the facets of the convex
+    hull of the 2^n vertices sum_i +-w_i s_i (scipy's Qhull), and the least h is the inradius
+    of pm2dof.analysis.maps."""
+    model = coulomb_viscous_model
+    rng = np.random.default_rng(3)
+    n = model.n_legs
+    for xe in sample_xe(model, 5, 4):
+        w = rng.uniform(2, 30, n)
+        c = _coefficients(model, xe, np.array([1.0, 0.0]), np.zeros(2), model.theta_nominal, w)
+        S = model.S(model.ik(xe))
+        P = S @ np.linalg.inv(S.T @ S)
+        N, h = c["N_mn"].reshape(n, 2), c["h_mn"]
+        assert np.allclose(N * (w / h)[:, None], P, rtol=1e-12, atol=1e-12 * np.abs(P).max())
+        N, h = c["N_mm"].reshape(n, 2), c["h_mm"]
+        assert np.allclose(np.hypot(*N.T), 1.0, atol=1e-14)
+        G = S * w[:, None]
+        signs = np.array(np.meshgrid(*[[-1, 1]] * n)).reshape(n, -1).T
+        hull = ConvexHull(signs @ G)
+        for eq in hull.equations:              # each hull facet is one of ours (up to sign)
+            normal, off = eq[:2], -eq[2]
+            match = [j for j in range(n) if abs(abs(N[j] @ normal) - 1) < 1e-9]
+            assert match and any(abs(h[j] - off) < 1e-9 * off for j in match), (eq, N, h)
+        assert h.min() == pytest.approx(zonotope_inradius(G), rel=1e-12)
+
+
+def test_min_max_polygon_agrees_with_the_generated_split(coulomb_viscous_model, sample_xe):
+    """u is inside the min-max polygon exactly when the generated min-max split needs no more
+    than tau_max (its ratio <= 1)."""
+    model = coulomb_viscous_model
+    rng = np.random.default_rng(4)
+    n = model.n_legs
+    for xe in sample_xe(model, 6, 3):
+        w = np.full(n, 10.0)
+        c = _coefficients(model, xe, np.array([0.0, 1.0]), np.zeros(2), model.theta_nominal, w)
+        N, h = c["N_mm"].reshape(n, 2), c["h_mm"]
+        q = model.ik(xe)
+        for _ in range(40):
+            u = rng.normal(0, h.max(), 2)
+            inside = np.all(np.abs(N @ u) <= h)
+            ratio = model.torque_splits(q, u, tau_max=w)["min_max_ratio"]
+            margin = np.min(h - np.abs(N @ u)) / h.max()
+            if abs(margin) > 1e-9:
+                assert inside == (ratio <= 1), (u, ratio, margin)
+
+
+def test_torques_along_a_path_match_inverse_dynamics(model, random_theta):
+    """path_torques (planner's C) = Me (p' s_dd + p'' s_d^2) + Ce s_d p' s_d + StF, then each
+    split (torque_splits): pm2dof.planning.torques against the generated path_torques."""
+    rng = np.random.default_rng(8)
+    mv = next(iter(model.spec.trajectories.values()))
+    start, end = np.asarray(mv["start"]), np.asarray(mv["end"])
+    c = (start + end) / 2
+    path = TaskPath.arc(c, 0.3 * np.hypot(*(end - start)), 0.1, 2.0)
+    th = random_theta(model, rng)
+    w = np.full(model.n_legs, 20.0)
+    s = np.linspace(0, path.length, 30)
+    prm, th = params(model, th)
+    stage, _ = stages(model, path, s, w, th, "min_max")
+    sd, sdd = rng.uniform(0.01, 1.0, 30), rng.normal(0, 10, 30)
+    K, n = len(s), model.n_legs
+    outs = (np.empty((K, 2)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
+    model.function("path_torques").map(K, stage, sd, sdd, prm, w, *outs)
+    ref = path_torques(model, path, s, sd, sdd, th, w)
+    scale = np.abs(ref["u"]).max()
+    assert np.abs(outs[0] - ref["u"]).max() < 1e-10 * scale
+    assert np.abs(outs[1] - ref["min_norm"]).max() < 1e-10 * np.abs(ref["min_norm"]).max()
+    assert np.abs(outs[2] - ref["min_max"]).max() < 1e-9 * np.abs(ref["min_max"]).max()
+
+
+def _feasible_at(model, q, a, b, dp, y, w, split, theta):
+    """Is some s_dd feasible at speed y? By inverse dynamics and the generated split: the
+    torque of the min-max split (a norm of u) is convex in s_dd, so a golden-section search
+    finds its least value; min-norm's actuator intervals are intersected exactly."""
+    F = model.StF(q, dp * max(y, 1e-12), theta)
+    u0 = b * y * y + F
+    if split == "min_norm":
+        S = model.S(q)
+        P = S @ np.linalg.inv(S.T @ S)
+        pa, pu = P @ a, P @ u0
+        lo, hi = -np.inf, np.inf
+        for i in range(len(w)):
+            if abs(pa[i]) < 1e-14:
+                if abs(pu[i]) > w[i]:
+                    return False
+                continue
+            r = sorted(((-w[i] - pu[i]) / pa[i], (w[i] - pu[i]) / pa[i]))
+            lo, hi = max(lo, r[0]), min(hi, r[1])
+        return lo <= hi
+    ratio = lambda sdd: model.torque_splits(q, a * sdd + u0, tau_max=w)["min_max_ratio"]  # noqa
+    lo, hi = -1e4, 1e4
+    g = (np.sqrt(5) - 1) / 2
+    for _ in range(90):
+        m1, m2 = hi - g * (hi - lo), lo + g * (hi - lo)
+        if ratio(m1) < ratio(m2):
+            hi = m2
+        else:
+            lo = m1
+    return ratio(0.5 * (lo + hi)) <= 1
+
+
+@pytest.mark.parametrize("split", ["min_norm", "min_max"])
+def test_maximum_velocity_curve_by_brute_force(split):
+    """The generated maximum-velocity curve against a search over s_d with the model's own
+    inverse dynamics and split (friction included), at a few points of an arc."""
+    m = pm2dof.load_model()
+    path = TaskPath.arc([0.245, 0.265], 0.03, 0.0, 3.0)
+    w = np.full(3, 8.0)
+    s = np.linspace(0, path.length, 7)[1:-1]
+    prm, th = params(m, None)
+    stage, coef = stages(m, path, s, w, th, split)
+    stage[:, m.layout("path_stage").slices["rho"]] = 0.0    # each joint's own Coulomb sign
+    x = np.empty(len(s))
+    m.function("path_mvc").map(len(s), stage, prm, x)
+    for k in range(len(s)):
+        q = m.ik(coef["p"][k])
+        args = (m, q, coef["a"][k], coef["b"][k], coef["dp"][k])
+        lo, hi = 0.0, 2 * np.sqrt(x[k])
+        assert _feasible_at(*args, lo, w, split, th) and not _feasible_at(*args, hi, w, split, th)
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            if _feasible_at(*args, mid, w, split, th):
+                lo = mid
+            else:
+                hi = mid
+        assert np.sqrt(x[k]) == pytest.approx(lo, abs=2 * V_TOP * 2.0 ** -20 + 1e-9), (k, split)
+
+
+def test_reversing_joint_is_flagged_and_costs_both_signs():
+    """A path along which an active joint reverses: its grid interval carries rho = 1, and the
+    maximum-velocity curve there is at most the one with either Coulomb sign alone."""
+    m = pm2dof.load_model()
+    path = TaskPath.arc([0.245, 0.265], 0.04, 0.0, 2 * np.pi - 0.1)
+    s = np.linspace(0, path.length, 400)
+    prm, th = params(m, None)
+    w = np.full(3, 10.0)
+    stage, coef = stages(m, path, s, w, th, "min_max")
+    rho = stage[:, m.layout("path_stage").slices["rho"]]
+    flips = np.diff(np.sign(coef["v1"]), axis=0) != 0
+    assert flips.any(), "no joint reverses on this path"
+    assert np.array_equal(rho[:-1].astype(bool), flips)
+    k = int(np.argmax(rho.any(axis=1)))
+    x = np.empty(3)
+    sl = m.layout("path_stage").slices
+    one = np.repeat(stage[k:k + 1], 3, axis=0)
+    one[1:, sl["rho"]] = 0.0
+    v1 = one[2, sl["v1"]]
+    v1[rho[k] > 0] *= -1           # the reversing joint's other sign, same magnitude
+    m.function("path_mvc").map(3, one, prm, x)
+    assert x[0] <= min(x[1], x[2]) + 1e-12
