@@ -31,7 +31,8 @@ are imported on first use, so a real-time process never pays for them.
 import importlib
 
 from . import _moved
-from .control.controllers import STATUS_NAMES, APDController, NAController, Status
+from .control.controllers import (STATUS_NAMES, APDController, CTCController, NAController,
+                                  Status)
 from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
 from .control.trajectory import (PAPER_MOVES, Trajectory, TrajectoryError, line, model_move,
                                  paper_move)
@@ -73,6 +74,10 @@ _LAZY = {
     "plan_time_optimal": "pm2dof.planning",
     "plan_smooth": "pm2dof.planning",
     "Plan": "pm2dof.planning",
+    # derivatives and linear design (issue 21)
+    "linearize_trajectory": "pm2dof.linear",
+    "statespace": "pm2dof.linear",
+    "LQRController": "pm2dof.linear",
 }
 
 __all__ = [
@@ -80,7 +85,7 @@ __all__ = [
     # layer 1: the model
     "load_model", "Model",
     # layer 2: control
-    "NAController", "APDController", "Status", "STATUS_NAMES", "simulate", "SimResult",
+    "NAController", "APDController", "CTCController", "Status", "STATUS_NAMES", "simulate", "SimResult",
     "check_trajectory",
     "plant_truth", "theta_truth", "rmse", "line", "model_move", "paper_move", "PAPER_MOVES",
     "Trajectory",

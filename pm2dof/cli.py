@@ -95,7 +95,7 @@ def cmd_derive(args):
 def cmd_table3(args):
     from .analysis.experiment import run_table3
     run_table3(_model(args), as_json=args.json, exact_encoders=args.exact_encoders,
-               save=args.save, progress=_progress)
+               save=args.save, progress=_progress, include=tuple(args.include))
     return 0
 
 
@@ -605,6 +605,9 @@ def build_parser():
     p.add_argument("--exact-encoders", action="store_true",
                    help="no encoder quantisation (default: [sensing].encoder_counts_per_rev)")
     p.add_argument("--save", metavar="FILE", help="also write the numbers and provenance as JSON")
+    p.add_argument("--include", nargs="+", choices=["ctc", "lqr"], default=[], metavar="LAW",
+                   help="also run these model-based controllers with Tables 1-2: ctc (computed "
+                   "torque), lqr (time-varying LQR along each move; needs the control extra)")
     p.set_defaults(func=cmd_table3)
     p = sub.add_parser("figures", parents=[common], help="write the figures as PNG",
                        description="Write errors_<speed>.png (x and y error against time, APD "
@@ -751,8 +754,9 @@ def _show_warning(message, category, filename, lineno, file=None, line=None,
 
 #: optional dependencies -> the extra that installs them (pyproject.toml)
 _EXTRAS = {"sympy": "derive", "casadi": "derive", "dask": "studies", "distributed": "studies",
-           "pyarrow": "studies", "scipy": "ident"}
-_COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies"}
+           "pyarrow": "studies", "scipy": "ident", "control": "control"}
+_COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies",
+                   "table3": "control"}     # table3 --include lqr: SciPy's Riccati solver
 
 
 def main(argv=None):

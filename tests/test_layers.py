@@ -25,14 +25,15 @@ ALLOWED = {
     "derive": {"core", "derive"},                       # build time: SymPy, CasADi -> C
     "control": {"core", "control"},                     # 2: controllers, rollouts
     "reference": {"core", "reference"},                 # beside: NumPy formulations
-    "analysis": _RUNTIME | {"analysis"},                # 3: experiment, reports, results
+    "linear": _RUNTIME | {"linear"},                    # 3: linearisation, LQR (SciPy)
+    "analysis": _RUNTIME | {"analysis", "linear"},      # 3: experiment, reports, results
     "identification": _RUNTIME | {"analysis", "identification"},   # 3: logs, excitation, fit
     "planning": _RUNTIME | {"analysis", "planning"},    # 3: motion planning (issue 20)
-    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive", "planning"},  # 3: benchmark
-    "studies": _RUNTIME | {"analysis", "identification", "studies"},   # 3: many rollouts, Dask
-    "figures": _RUNTIME | {"analysis", "studies", "figures", "planning"},   # 4: matplotlib
+    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive", "planning", "linear"},
+    "studies": _RUNTIME | {"analysis", "identification", "studies", "linear"},   # 3: Dask
+    "figures": _RUNTIME | {"analysis", "studies", "figures", "planning", "linear"},   # 4
     "cli": _RUNTIME | {"analysis", "identification", "bench", "studies", "figures", "cli",
-                       "derive", "planning"},                                   # 4
+                       "derive", "planning", "linear"},                         # 4
     "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
     "__main__": {"cli"},
     "_moved": set(),
@@ -44,8 +45,9 @@ THIRD_PARTY = {
     "__main__": set(), "_moved": set(),
     "analysis": {"numpy", "tqdm"},
     "identification": {"numpy", "scipy", "casadi", "pyarrow"},   # the ident extra; lazily
+    "linear": {"numpy", "scipy", "control"},            # the [control] extra (python-control)
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
-    "bench": {"numpy", "casadi", "sympy", "toppra"},    # baselines; each optional at run time
+    "bench": {"numpy", "casadi", "sympy", "toppra", "pinocchio"},  # baselines; each optional
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
     "planning": {"numpy", "casadi", "tqdm"},            # CasADi only in plan_smooth (lazily)
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},

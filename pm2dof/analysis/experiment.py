@@ -1,12 +1,12 @@
 # The paper's experiment (Sect. 5): Table 3 in simulation, the Gamma = 0 ablation, repeated runs.
 import numpy as np
 
-from ..control.controllers import APDController, NAController
+from ..control.controllers import APDController, CTCController, NAController
 from ..control.simulate import simulate, theta_truth
 from ..control.trajectory import line_moves, model_move
 from .progress import bar
 
-__all__ = ["PAPER_TABLE3", "trajectory", "table3", "table3_json", "format_table3",
+__all__ = ["PAPER_TABLE3", "table3", "table3_json", "format_table3",
            "run_table3", "repeated_runs", "sensitivity", "format_sensitivity"]
 
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
@@ -24,23 +24,43 @@ def rpe(apd_rmse, na_rmse):
     return 100.0 * (apd_rmse - na_rmse) / apd_rmse
 
 
-def table3(model, speeds=None, quantise=True, progress=None, truth=None, **controller_options):
+#: the model-based controllers ``table3(include=...)`` can add (issue 21), with Tables 1-2
+EXTRA_CONTROLLERS = ("ctc", "lqr")
+
+
+def _extra_controller(model, name, traj, kw):
+    if name == "ctc":
+        return CTCController(model, **kw)
+    from ..linear.lqr import LQRController     # SciPy (the control extra)
+    return LQRController(model, traj, **kw)
+
+
+def table3(model, speeds=None, quantise=True, progress=None, truth=None, include=(),
+           **controller_options):
     """Run APD, NA and NA with Gamma = 0 on each move. Returns {speed: {name: SimResult}}.
 
-    ``controller_options`` (e.g. ``velocity_filter_hz``) go to all three controllers alike;
-    ``truth`` replaces the plant truth (see :func:`pm2dof.plant_truth`).
+    ``controller_options`` (e.g. ``velocity_filter_hz``) go to all the controllers alike;
+    ``truth`` replaces the plant truth (see :func:`pm2dof.plant_truth`); ``include`` adds
+    model-based controllers of :data:`EXTRA_CONTROLLERS` ("ctc": computed torque, "lqr":
+    time-varying LQR along each move), each with the nominal model (Tables 1-2).
     """
     speeds = list(line_moves(model)) if speeds is None else speeds
+    unknown = sorted(set(include) - set(EXTRA_CONTROLLERS))
+    if unknown:
+        from ..core.errors import ArgumentError
+        raise ArgumentError(f"include: unknown controller(s) {unknown}; choose from "
+                            f"{list(EXTRA_CONTROLLERS)}")
     out = {}
     p = len(model.param_names)
     kw = controller_options
-    with bar(progress, 3 * len(speeds), "Table 3", unit="rollout") as b:
+    with bar(progress, (3 + len(include)) * len(speeds), "Table 3", unit="rollout") as b:
         for speed in speeds:
             traj = model_move(model, speed)
             runs = {}
             for name, ctrl in (("apd", APDController(model, **kw)),
                                ("na", NAController(model, **kw)),
-                               ("na_no_adaptation", NAController(model, Gamma=np.zeros(p), **kw))):
+                               ("na_no_adaptation", NAController(model, Gamma=np.zeros(p), **kw)),
+                               *((x, _extra_controller(model, x, traj, kw)) for x in include)):
                 b.set_postfix_str(f"{speed} speed, {name}")
                 runs[name] = simulate(model, ctrl, traj, quantise=quantise, truth=truth)
                 b.update()
@@ -58,6 +78,7 @@ def table3_json(results):
             "na_rmse": r.rmse,
             "na_no_adaptation_rmse": runs["na_no_adaptation"].rmse,
             "rpe_percent": rpe(runs["apd"].rmse, r.rmse),
+            **{f"{x}_rmse": runs[x].rmse for x in EXTRA_CONTROLLERS if x in runs},
             "trajectory_duration_s": float(r.t[r.n_move - 1]),
             "samples": r.n_move,
             "saturated_samples": {k: v.n_saturated for k, v in runs.items()},
@@ -71,10 +92,12 @@ def table3_json(results):
 
 def format_table3(numbers):
     """A text table like the paper's Table 3, simulated beside measured."""
+    extra = [x for x in EXTRA_CONTROLLERS if all(f"{x}_rmse" in r for r in numbers.values())]
     lines = ["RMSE of the end-effector position (eq. 41), m. Simulated here | measured in the "
              "paper (Table 3).",
              f"{'speed':6s} {'APD sim':>11s} {'NA sim':>11s} {'NA G=0 sim':>11s} {'RPE sim':>8s}"
-             f" | {'APD paper':>11s} {'NA paper':>11s} {'RPE paper':>9s}"]
+             f" | {'APD paper':>11s} {'NA paper':>11s} {'RPE paper':>9s}"
+             + "".join(f" | {x.upper() + ' sim':>11s}" for x in extra)]
     def cell(x, width, spec, none="-"):   # None: no paper number, or a run that failed
         return f"{x:{width}{spec}}" if x is not None and np.isfinite(x) else f"{none:>{width}s}"
 
@@ -87,23 +110,28 @@ def format_table3(numbers):
                      f"{cell(r['rpe_percent'], 7, '.2f', 'n/a')}% | "
                      f"{cell(paper.get('apd_rmse'), 11, '.4e')} "
                      f"{cell(paper.get('na_rmse'), 11, '.4e')} "
-                     f"{cell(paper.get('rpe_percent'), 8, '.2f')}%")
+                     f"{cell(paper.get('rpe_percent'), 8, '.2f')}%"
+                     + "".join(f" | {cell(r[f'{x}_rmse'], 11, '.4e', 'failed')}" for x in extra))
         failed += [f"  {speed} {k}: {msg}" for k, msg in r.get("outcomes", {}).items()]
     lines.append("RPE = 100 (APD - NA) / APD: positive when NA tracks better.")
+    if extra:
+        lines.append("CTC: computed torque, LQR: time-varying LQR along the move; both with "
+                     "Tables 1-2 (pm2dof table3 --include).")
     if failed:
         lines += ["Runs that did not complete (their RMSE is infinite):"] + failed
     return "\n".join(lines)
 
 
 def run_table3(model, *, as_json=False, exact_encoders=False, save=None, echo=print,
-               progress=None):
+               progress=None, include=()):
     """``pm2dof table3``: run :func:`table3`, print it (text or JSON), optionally save it.
 
-    ``save`` is a path for the numbers and their provenance (JSON). Returns the numbers.
+    ``save`` is a path for the numbers and their provenance (JSON); ``include`` adds
+    controllers (:data:`EXTRA_CONTROLLERS`). Returns the numbers.
     """
     from .results import dumps, provenance, write_json
     numbers = table3_json(table3(model, quantise=not exact_encoders,
-                                 progress=None if as_json else progress))
+                                 progress=None if as_json else progress, include=include))
     echo(dumps(numbers) if as_json else format_table3(numbers))
     if save:
         write_json(save, {**numbers, "provenance": provenance(model)})

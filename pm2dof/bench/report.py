@@ -51,6 +51,19 @@ def format_bench(results):
     row("NA step, casadi.Function (casadi.external)", "na_step_casadi_function_us", "us")
     row("NA step, NumPy reference", "na_step_numpy_us", "us")
     row("NA step, SymPy lambdify (numpy, cse)", "na_step_lambdify_us", "us")
+    row("CTC step, C loop (interleaved with NA)", "ctc_step_c_ns", "ns")
+    row("LQR step, C loop (interleaved with NA)", "lqr_step_c_ns", "ns")
+    row("forward dynamics, C loop", "forward_dynamics_c_ns", "ns")
+    row("forward-dynamics Jacobians, C loop", "forward_dynamics_jacobians_c_ns", "ns")
+    row("sampled step (RK4 under ZOH), C loop", "sampled_step_c_ns", "ns")
+    row("sampled step + Jacobians, C loop", "sampled_step_jacobians_c_ns", "ns")
+    row("inverse dynamics + Jacobians, C loop", "inverse_dynamics_jacobians_c_ns", "ns")
+    row("forward dynamics, Model method (out=)", "forward_dynamics_python_us", "us")
+    row("FD Jacobians, Model method (out=)", "fd_jacobians_python_us", "us")
+    row("FD Jacobians by central differences, Python", "fd_jacobians_finite_differences_python_us",
+        "us")
+    row("Pinocchio constraintDynamics + derivatives", "pinocchio_constraint_derivatives_python_us",
+        "us")
     row(f"rollout, accumulate ({r.get('rollout_samples')} samples)", "rollout_steps_per_s",
         "steps/s", min_key="rollout_steps_per_s_best")
     row("rollout, end to end (simulate())", "rollout_end_to_end_steps_per_s", "steps/s",
@@ -93,7 +106,16 @@ def format_bench(results):
             (f"C vs NumPy, max rel. diff. ({r.get('agreement_cases')} states)",
              "agreement_c_vs_numpy", "rel"),
             ("C vs lambdify, max rel. diff.", "agreement_c_vs_lambdify", "rel"),
-            ("casadi.Function vs binding (tau_a)", "agreement_casadi_function_vs_c", "rel")):
+            ("casadi.Function vs binding (tau_a)", "agreement_casadi_function_vs_c", "rel"),
+            ("FD Jacobians / forward dynamics, C", "fd_jacobians_over_fd_c", "x"),
+            ("Pinocchio derivatives / FD Jacobians, Python", "speedup_fd_jacobians_vs_pinocchio",
+             "x"),
+            ("central differences / FD Jacobians, Python",
+             "speedup_fd_jacobians_vs_finite_differences", "x"),
+            ("FD Jacobians vs central differences", "agreement_fd_jacobians_vs_finite_differences",
+             "rel"),
+            ("Pinocchio vs pm2dof tip acceleration", "agreement_pinocchio_tip_acceleration",
+             "rel")):
         t = tg.get(key)
         tgt = f"{t['op']} {_fmt(t['target'], t['unit'])}" if t else ""
         res_s = ("n/a" if t["pass"] is None else ("PASS" if t["pass"] else "FAIL")) if t else ""

@@ -18,6 +18,7 @@ from ..core.layout import Layout
 from ..core.model import load_model
 from ..core.status import Status
 from ..reference import control as rc
+from .derivatives import derivative_bench
 from .baselines import (c_step, lambdify_step, long_trajectory, operating_point, random_cases,
                         reference_geometry)
 from .machine import machine
@@ -43,6 +44,12 @@ TARGETS = (
     ("na_min_max_over_min_norm", "<=", 1.3, "x", "NA step, min_max split / min_norm split"),
     ("plan_time_optimal_ms", "<=", 5.0, "ms", "plan_time_optimal, 1000 grid points"),
     ("speedup_vs_toppra", ">=", 10.0, "x", "plan_time_optimal vs toppra, friction-free"),
+    # issue 21: derivatives and the model-based steps (bench/derivatives.py)
+    ("fd_jacobians_over_fd_c", "<=", 3.0, "x", "forward-dynamics Jacobians / forward dynamics, C"),
+    ("fd_jacobians_python_us", "<=", 1.5, "us",
+     "forward-dynamics Jacobians from Python (Model.forward_dynamics_jacobians, out=)"),
+    ("ctc_step_c_ns", "<=", 300.0, "ns", "CTC step in C (C loop)"),
+    ("lqr_step_c_ns", "<=", 300.0, "ns", "LQR step in C (C loop)"),
 )
 #: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 BENCH_SPLITS = ("min_norm", "min_max", "preload")
@@ -293,6 +300,11 @@ def run_bench(model=None, quick=False, progress=None):
     res["rollout_end_to_end_steps_per_s"] = n_roll * 1e9 / sim["median"]
     res["rollout_end_to_end_steps_per_s_best"] = n_roll * 1e9 / sim["min"]
     res["rollout_python_overhead_us_per_step"] = (sim["median"] - acc["median"]) / n_roll / 1e3
+
+    # --- derivatives and the CTC, LQR steps (bench/derivatives.py) -----------------------
+    say("derivatives: Jacobians, sampled step, inverse dynamics (C, Python, Pinocchio, finite "
+        "differences); CTC and LQR steps")
+    res.update(derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes))
 
     # --- motion planning (issue 20): plan_time_optimal beside toppra ----------------------
     from .planning import bench_planning

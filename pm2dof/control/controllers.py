@@ -1,4 +1,4 @@
-# NA (eqs. 14-29) and APD (eq. 40) controllers: one call into generated C per 2 ms sample.
+# NA (eqs. 14-29), APD (eq. 40) and computed-torque (CTC) controllers: one C call per sample.
 """Task-space controllers of the paper, each step one call into the generated C.
 
 A step runs the whole chain of Fig. 2: end-effector position by fk from the measured active
@@ -20,7 +20,8 @@ from ..core.errors import (ArgumentError, ArgumentTypeError, GainError, ModelMis
 from ..core.layout import Layout
 from ..core.status import STATUS_NAMES, Status
 
-__all__ = ["NAController", "APDController", "STATUS_NAMES", "Status", "check_same_model"]
+__all__ = ["NAController", "APDController", "CTCController", "STATUS_NAMES", "Status",
+           "check_same_model", "CTC_DEFAULT_GAINS"]
 
 #: torque split -> suffix of its generated functions (derive/splits.py)
 SPLITS = {"min_norm": "", "min_max": "_minmax", "preload": "_preload"}
@@ -48,7 +49,20 @@ GAIN_CONDITIONS = {
                      "adaptation of that parameter off)"),
     "Kp": (True, "APD (eq. 40) needs Kp positive definite"),
     "Kv": (True, "APD (eq. 40) needs Kv positive definite"),
+    # computed torque: the error dynamics edd + Kv ed + Kp e = 0 are stable for Kp, Kv > 0
+    "CTCController.Kp": (True, "computed torque needs Kp positive definite (the error "
+                               "dynamics edd + Kv edot + Kp e = 0 are then stable)"),
+    "CTCController.Kv": (True, "computed torque needs Kv positive definite (the error "
+                               "dynamics edd + Kv edot + Kp e = 0 are then stable)"),
+    # LQR: Q > 0 (every state error is penalised: detectable), R > 0 (a unique minimiser)
+    "LQRController.Q_position": (True, "the LQR needs positive state weights Q"),
+    "LQRController.Q_velocity": (True, "the LQR needs positive state weights Q"),
+    "LQRController.R": (True, "the LQR needs positive definite torque weights R"),
 }
+#: CTCController's gains when the model file has no [gains.ctc]: per axis a critically damped
+#: pair at omega = 2 pi 20 Hz (Kp = omega^2 1/s^2, Kv = 2 omega 1/s), a tenth of the 2 ms
+#: sample rate, like APD's Kp, Kv over the paper robot's Me (about 1 kg)
+CTC_DEFAULT_GAINS = {"Kp": [(2 * math.pi * 20) ** 2] * 2, "Kv": [2 * (2 * math.pi * 20)] * 2}
 
 
 def diagonal_gain(law, name, value, labels):
@@ -60,7 +74,7 @@ def diagonal_gain(law, name, value, labels):
     entry and the condition: a wrong shape, an off-diagonal entry, a non-finite entry, or an
     entry <= 0 (Gamma: < 0). Returns the (k,) float64 diagonal.
     """
-    strict, why = GAIN_CONDITIONS[name]
+    strict, why = GAIN_CONDITIONS.get(f"{law}.{name}", GAIN_CONDITIONS.get(name, (True, "")))
     k = len(labels)
     where = f"{law}: {name}"
     try:
@@ -162,7 +176,14 @@ class _Controller:
         self._n = n
         self._status = array.array("d", [0.0])  # array: reading [0] is ~3x cheaper than numpy
         self._diag = np.zeros(10)
+        self._extra = ()
         self._ready = False
+
+    def closed_loop_inputs(self, trajectory):
+        """The closed loop's per-sample inputs along ``trajectory``: (N, 6) rows [xd, xd_dot,
+        xd_ddot] (a law with per-sample gains appends them, ``<law>_cl_input`` layout)."""
+        return np.ascontiguousarray(np.hstack([trajectory.xd, trajectory.xd_dot,
+                                               trajectory.xd_ddot]))
 
     def reset(self, qa0, theta_hat=None):
         """Start at rest at the measured active angles ``qa0`` (n,), rad.
@@ -201,8 +222,9 @@ class _Controller:
         s0, s1 = self._states
         tau = np.empty(self._n) if out is None else out  # the C checks out's dtype and size
         # the fast path; array-likes (lists, float32 ...) are converted once and the call
-        # retried; what the binding refuses (a NaN, a wrong length) becomes ArgumentError
-        self.model._call(self._f, (s0, qa_meas, xd, xd_dot, xd_ddot, self.params),
+        # retried; what the binding refuses (a NaN, a wrong length) becomes ArgumentError.
+        # _extra: the per-sample inputs of a law that has them (LQR's K_k, tau_ff_k)
+        self.model._call(self._f, (s0, qa_meas, xd, xd_dot, xd_ddot, self.params, *self._extra),
                          (tau, s1, self._status, self._diag))
         self._states = (s1, s0)
         if self._status[0] == Status.SINGULAR and self.on_singular == "raise":
@@ -305,6 +327,41 @@ class APDController(_Controller):
                  preload=None, preload_sign=None):
         g = model.spec.gains["apd"]
         super().__init__(model, "apd", {"Kp": g["Kp"] if Kp is None else Kp,
+                                        "Kv": g["Kv"] if Kv is None else Kv},
+                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular, split,
+                         preload, preload_sign)
+
+
+class CTCController(_Controller):
+    """Computed torque with the model's theta: the standard model-based baseline.
+
+    u = S^T tau_a = Me (xd_ddot + Kv edot + Kp e) + Ce xed + S^T f_a (eqs. 10-12 with the
+    measured pose and velocity of Fig. 2), i.e. Y(q, v, v, a) theta with a = xd_ddot + Kv edot
+    + Kp e (eq. 13); with an exact model the error obeys edd + Kv edot + Kp e = 0 per axis.
+    One C call per sample (``<name>_ctc<split>_step``), the signal processing, statuses and
+    splits of :class:`NAController`.
+
+    Parameters
+    ----------
+    model : Model
+    Kp : float or array_like (2,) or (2, 2), optional
+        Diagonal stiffness of the error dynamics, 1/s^2, each entry > 0 (default
+        ``[gains.ctc]`` of the model file, else :data:`CTC_DEFAULT_GAINS`).
+    Kv : float or array_like (2,) or (2, 2), optional
+        Diagonal damping, 1/s, each entry > 0. Gains outside these conditions raise
+        :class:`pm2dof.GainError` naming the gain and the entry.
+    theta0 : array_like (5n,), optional
+        The model inside the law (default Tables 1-2); never updated.
+    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign
+        As for :class:`NAController`.
+    """
+    _law = "ctc"
+
+    def __init__(self, model, *, Kp=None, Kv=None, theta0=None, sample_period=None,
+                 velocity_filter_hz=None, tau_max=None, on_singular="raise", split=None,
+                 preload=None, preload_sign=None):
+        g = model.spec.gains.get("ctc") or CTC_DEFAULT_GAINS
+        super().__init__(model, "ctc", {"Kp": g["Kp"] if Kp is None else Kp,
                                         "Kv": g["Kv"] if Kv is None else Kv},
                          theta0, sample_period, velocity_filter_hz, tau_max, on_singular, split,
                          preload, preload_sign)

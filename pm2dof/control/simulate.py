@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .controllers import APDController, NAController, check_same_model
+from .controllers import _Controller, check_same_model
 from .outcome import OUTCOMES, classify_failure
 from ..core.errors import (ArgumentError, ArgumentTypeError, OutcomeWarning, SingularityError,
                            WorkspaceError)
@@ -332,7 +332,7 @@ def batch_inputs(model, controller, traj, plants, theta_hat0=None):
                     raise ArgumentError(f"theta_hat0 must be {p} finite numbers "
                                      f"({', '.join(model.param_names)}), got {th.tolist()}")
                 C["theta_hat"][k] = th
-    u = np.ascontiguousarray(np.hstack([traj.xd, traj.xd_dot, traj.xd_ddot]))
+    u = controller.closed_loop_inputs(traj)
     return f, X, u, P, model.layout("cl_output")
 
 
@@ -343,9 +343,11 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     Parameters
     ----------
     model : Model
-    controller : NAController or APDController
+    controller : NAController, APDController, CTCController or LQRController
         Supplies the law, its gains, sample period and theta0 (its internal state is not used
-        or changed: the rollout keeps its own state in C).
+        or changed: the rollout keeps its own state in C). A Python-level controller
+        (:class:`pm2dof.control.python_loop.PythonController`, e.g. the NMPC example) runs
+        one Python step per sample against the same generated plant.
     trajectory : pm2dof.Trajectory
         Desired motion sampled at the controller's period; the robot starts at rest at its
         first point.
@@ -372,9 +374,11 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     ModelMismatchError
         If ``controller`` was built for another model.
     """
-    if not isinstance(controller, (NAController, APDController)):
-        raise ArgumentTypeError(f"controller must be an NAController or APDController, got "
-                        f"{type(controller).__name__}")
+    from .python_loop import PythonController, python_rollout
+    if not isinstance(controller, (_Controller, PythonController)):
+        raise ArgumentTypeError(f"controller must be an NAController, APDController, "
+                                f"CTCController, LQRController or a PythonController, got "
+                                f"{type(controller).__name__}")
     T = controller.sample_period
     if abs(trajectory.period - T) > 1e-12 * T:
         raise ArgumentError(f"trajectory period {trajectory.period} s differs from the "
@@ -384,9 +388,12 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     n_move = len(trajectory.t)
     traj = trajectory.extended(settle_time) if settle_time > 0 else trajectory
     plant = plant_vector(model, truth, quantise, encoder_counts_per_rev)
-    f, x, u, p, ylay = rollout_inputs(model, controller, traj, plant, theta_hat0)
-    y = np.empty((len(traj.t), ylay.size))
-    f.accumulate(x, u, p, y)
+    if isinstance(controller, PythonController):   # one Python step per sample
+        x, y, ylay = python_rollout(model, controller, traj, plant, theta_hat0)
+    else:
+        f, x, u, p, ylay = rollout_inputs(model, controller, traj, plant, theta_hat0)
+        y = np.empty((len(traj.t), ylay.size))
+        f.accumulate(x, u, p, y)
     N = int(completed_samples(model, y, ylay))
     end = {}
     if N < len(y):              # the state at sample N does not exist: the run ends at N - 1

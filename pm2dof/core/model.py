@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from . import build, paths
+from .derivatives import DERIVATIVE_FUNCTIONS, DerivativeMethods
 from .errors import (ArgumentError, ArgumentTypeError, ClosureError, NonFiniteError,
                      SingularityError, StaleGeneratedCodeError, WorkspaceError)
 from .layout import Layout
@@ -35,7 +36,7 @@ __all__ = ["Model", "load_model"]
 
 # controller steps and closed loops: <law><split>_step, <law><split>_closed_loop
 _SPLIT_SUFFIXES = ("", "_minmax", "_preload")                   # min_norm, min_max, preload
-_LOOPS = tuple(f"{law}{sfx}_{kind}" for law in ("na", "na_proj", "apd")
+_LOOPS = tuple(f"{law}{sfx}_{kind}" for law in ("na", "na_proj", "apd", "ctc", "lqr")
                for sfx in _SPLIT_SUFFIXES for kind in ("step", "closed_loop"))
 _STEPPING = ("plant_xedd", "plant_step", "measure") + _LOOPS
 # motion planning (pm2dof.planning): per-grid-point path dynamics; they report, never raise
@@ -43,6 +44,7 @@ _PATH = ("path_coefficients", "path_mvc", "path_backward", "path_forward", "path
 _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "singularity_measures", "W", "S", "Wdot",
               "M", "C", "Me", "Ce", "StF", "Y", "torque_splits", "forward_dynamics") + _STEPPING \
     + _PATH
+_FUNCTIONS += DERIVATIVE_FUNCTIONS     # core/derivatives.py: Jacobians, sampled step, inverse dyn.
 
 
 def _freeze(obj):
@@ -95,7 +97,7 @@ def _check_generated(spec, gen_dir):
     return manifest, lib
 
 
-class Model:
+class Model(DerivativeMethods):
     """A planar RR parallel manipulator with its compiled model functions. Immutable.
 
     Build with :func:`load_model`. Attributes: ``name``, ``spec`` (the validated model file),
@@ -244,16 +246,21 @@ class Model:
         f = self._f[short]
         sing = self._sing if f.n_out == 2 else None
         outs = (out, sing) if sing is not None else (out,)
+        self._checked_call(short, f, args, outs, sing)
+        return out
+
+    def _checked_call(self, short, f, args, outs, sing):
+        """``f(*args, *outs)``; raise on a singular pose (``sing``, the measures output, or
+        None) and on a non-finite result from finite inputs."""
         # a NaN/inf result from finite inputs: a singular pose explains it, else NonFiniteError
         args, nonfinite = self._call(f, args, outs)
         if sing is not None and not (sing[0] >= self._sing_thr[0] and
                                      sing[1] >= self._sing_thr[1]):
-            if sing[0] != sing[0] and short == "forward_dynamics":
-                self.ik(args[0])  # NaN measure: some leg cannot reach xe; ik names it
+            if sing[0] != sing[0] and f.names_in[0] in ("xe", "x"):
+                self.ik(args[0][:2])  # NaN measure: some leg cannot reach xe; ik names it
             raise SingularityError(f"{short}: {self.singularity_message(sing)}")
         if nonfinite is not None:
             raise NonFiniteError(str(nonfinite)) from None
-        return out
 
     def singularity_message(self, sing):
         """Which kind of singularity the measures ``sing`` = [type I, type II] hit, with the

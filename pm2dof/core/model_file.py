@@ -204,6 +204,9 @@ _SCHEMA = {
                 "closure_tolerance": (None, "pos", None)},   # default: default_closure_tolerance
     "gains.na": {"Kd": (2, "pos"), "Q": (2, "pos"), "Gamma": ("p", "nonneg")},
     "gains.apd": {"Kp": (2, "pos"), "Kv": (2, "pos")},
+    # optional: computed torque (1/s^2, 1/s) and the LQR's weights (1/m^2, s^2/m^2, 1/(N m)^2)
+    "gains.ctc": {"Kp": (2, "pos"), "Kv": (2, "pos")},
+    "gains.lqr": {"Q_position": (2, "pos"), "Q_velocity": (2, "pos"), "R": ("n", "pos")},
     "plant": {"alpha": ("n", "pos"), "beta": ("n", "any"), "gamma": ("n", "pos"),
               "payload_mass": (None, "nonneg"), "payload_leg": (None, "pos"),
               "fv": ("n", "nonneg"), "fc": ("n", "nonneg"), "fs": ("n", "nonneg"),
@@ -274,8 +277,10 @@ def _read_runtime(pr, doc, n, param_names, legs):
     gains_raw = pr.table("gains", doc.get("gains"))
     gains = {}
     if gains_raw is not None:
-        pr.keys("gains", gains_raw, ("na", "apd"), ("na", "apd"))
-        for law in ("na", "apd"):
+        pr.keys("gains", gains_raw, ("na", "apd", "ctc", "lqr"), ("na", "apd"))
+        for law in ("na", "apd", "ctc", "lqr"):
+            if law not in gains_raw and law in ("ctc", "lqr"):    # optional: code defaults
+                continue
             gains[law] = _read_section(
                 pr, f"gains.{law}", pr.table(f"gains.{law}", gains_raw.get(law), required=False),
                 _SCHEMA[f"gains.{law}"], n, param_names)

@@ -1,15 +1,16 @@
-# Generated controller steps: Fig. 2 signal processing + NA law (eqs. 14-29) or APD law (eq. 40).
+# Generated controller steps: Fig. 2 signal processing + NA law (eqs. 14-29), APD law (eq. 40),
+# computed torque (CTC) or time-varying LQR tracking.
 import itertools
 
 import casadi as ca
 
 from pm2dof.core.status import Status
 
-from .factored import regressor
+from .factored import joint_W, regressor
 from .layouts import Layout
 from .splits import SPLITS, min_max, min_norm
 
-__all__ = ["controller_layouts", "controller_functions", "STATUS"]
+__all__ = ["controller_layouts", "controller_functions", "per_sample_inputs", "LAWS", "STATUS"]
 
 # status codes of a step (also in the manifest): what the step did with this sample
 STATUS = Status.codes()
@@ -27,7 +28,21 @@ def controller_layouts(n, p):
               ("tau_max", n), ("preload_sign", n), ("preload", n), ("closure_tol", 1)]
     na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p)] + common)
     apd = Layout([("Kp", 2), ("Kv", 2)] + common)
-    return {"ctrl_state": state, "na_params": na, "apd_params": apd}
+    ctc = Layout([("Kp", 2), ("Kv", 2)] + common)       # 1/s^2, 1/s: Me multiplies them
+    lqr = Layout(common)                                 # its gains are per-sample inputs
+    return {"ctrl_state": state, "na_params": na, "apd_params": apd, "ctc_params": ctc,
+            "lqr_params": lqr}
+
+
+#: per-sample inputs of a law's step after its params (name, size for n legs): LQR's gain
+#: K_k (n x 4, row-major) and feedforward torque tau_ff_k (n), planned along the trajectory
+def per_sample_inputs(law, n):
+    return [("K", 4 * n), ("tau_ff", n)] if law == "lqr" else []
+
+
+#: the controller steps: (function name, law, theta_hat projected after the update)
+LAWS = (("na", "na", False), ("na_proj", "na", True), ("apd", "apd", False),
+        ("ctc", "ctc", False), ("lqr", "lqr", False))
 
 
 def _project(theta, param_names, n):
@@ -68,13 +83,47 @@ def _split(d, split, S, u, P):
     return tau, mode == 2, mode == 1
 
 
+def _law(d, law, base, P, theta, xe, v, e, edot, xd, xd_dot, xd_ddot, extra):
+    """The task force u = S^T tau_a of one law, theta_hat after the sample, and S (n, 2).
+
+    na (eqs. 15-17, 28-29), apd (eq. 40), ctc (computed torque with the model's theta:
+    u = Me (xd_ddot + Kv edot + Kp e) + Ce xed + S^T f_a, i.e. Y(q, v, v, a) theta, eq. 13),
+    lqr (u = S^T (tau_ff - K [xe - xd, v - xd_dot]) with the planned per-sample K, tau_ff).
+    """
+    n = d.spec.n_legs
+    if law == "lqr":
+        W, _ = joint_W(d, base)                          # eq. 7 at the measured pose
+        S = W[:n, :]
+        x_err = ca.vertcat(xe - xd, v - xd_dot)          # state error [x, y, xd, yd]
+        ex = dict(extra)
+        K = ca.reshape(ex["K"], 4, n).T                  # (n, 4), row-major input
+        return S.T @ (ex["tau_ff"] - K @ x_err), theta, S
+    if law == "na":
+        xrd = xd_dot + P["Q"] * e                        # eq. 16: reference velocity
+        xrdd = xd_ddot + P["Q"] * edot                   # eq. 17: reference acceleration
+        s = xrd - v                                      # eq. 15: s = edot + Q e
+    elif law == "ctc":
+        xrd, xrdd = v, xd_ddot + P["Kv"] * edot + P["Kp"] * e    # computed torque
+    else:
+        xrd, xrdd = xd_dot, xd_ddot                      # eq. 40: nominal feedforward
+    Y, S, _ = regressor(d, base, v, xrd, xrdd)           # eq. 13, factored (derive/factored.py)
+    if law == "na":
+        u = Y @ theta + P["Kd"] * s                      # eq. 29: S^T tau_a
+        return u, theta + P["T"] * P["Gamma"] * (Y.T @ s), S   # eq. 28, explicit Euler
+    if law == "ctc":
+        return Y @ theta, theta, S
+    return Y @ theta + P["Kp"] * e + P["Kv"] * edot, theta, S  # eq. 40
+
+
 def controller_functions(d, prefix):
     """``<prefix>_<law><split>_step`` for law na, na_proj (theta_hat projected after each
-    update) and apd, and split "" (min_norm, eq. 21), "_minmax", "_preload"
-    (derive/splits.py): one 2 ms sample each, all in C.
+    update), apd, ctc (computed torque) and lqr (time-varying LQR tracking), and split ""
+    (min_norm, eq. 21), "_minmax", "_preload" (derive/splits.py): one 2 ms sample each, all
+    in C.
 
     Inputs: state (xe_prev, v, theta_hat), qa (measured active angles), xd, xd_dot, xd_ddot
-    (desired position, velocity, acceleration), params (see controller_layouts).
+    (desired position, velocity, acceleration), params (see controller_layouts), and for lqr
+    the sample's K (n x 4, row-major) and tau_ff (n) (:func:`per_sample_inputs`).
     Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot, sing (2):
     type I, type II].
     A bad sample (encoders that do not close the loops, a singular pose, or any non-finite
@@ -90,10 +139,10 @@ def controller_functions(d, prefix):
     st = lay["ctrl_state"].split(state)
     functions = []
 
-    for (name, law, project), (split, suffix) in itertools.product(
-            (("na", "na", False), ("na_proj", "na", True), ("apd", "apd", False)), SPLITS.items()):
+    for (name, law, project), (split, suffix) in itertools.product(LAWS, SPLITS.items()):
         params = ca.SX.sym("params", lay[f"{law}_params"].size)
         P = lay[f"{law}_params"].split(params)
+        extra = [(k, ca.SX.sym(k, size)) for k, size in per_sample_inputs(law, n)]
         # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
         # low-pass on the backward difference, passive joints from geometry (unit vectors)
         base = d.converter_qa(qa)
@@ -105,22 +154,11 @@ def controller_functions(d, prefix):
         e = xd - xe                                     # eq. 14
         edot = xd_dot - v
         theta = st["theta_hat"]
-        if law == "na":
-            xrd = xd_dot + P["Q"] * e                   # eq. 16: reference velocity
-            xrdd = xd_ddot + P["Q"] * edot              # eq. 17: reference acceleration
-            s = xrd - v                                 # eq. 15: s = edot + Q e
-        else:
-            xrd, xrdd = xd_dot, xd_ddot                 # eq. 40: nominal feedforward
-        Y, S, _ = regressor(d, base, v, xrd, xrdd)      # eq. 13, factored (derive/factored.py)
+        u, theta_next, S = _law(d, law, base, P, theta, xe, v, e, edot, xd, xd_dot, xd_ddot,
+                                extra)
+        if project:  # <prefix>_na_proj_step: optional, off by default (as in the paper)
+            theta_next = _project(theta_next, d.spec.param_names, n)
         conv = base
-        if law == "na":
-            u = Y @ theta + P["Kd"] * s                 # eq. 29: S^T tau_a
-            theta_next = theta + P["T"] * P["Gamma"] * (Y.T @ s)   # eq. 28, explicit Euler
-            if project:  # <prefix>_na_proj_step: optional, off by default (as in the paper)
-                theta_next = _project(theta_next, d.spec.param_names, n)
-        else:
-            u = Y @ theta + P["Kp"] * e + P["Kv"] * edot           # eq. 40
-            theta_next = theta
         tau, saturated, unpreloaded = _split(d, split, S, u, P)       # eq. 21 or another split
         tau_sat = ca.fmin(ca.fmax(tau, -P["tau_max"]), P["tau_max"])
         sing = d.singularity_measures(conv)                        # [type I, type II]
@@ -138,8 +176,9 @@ def controller_functions(d, prefix):
         state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(carry, xe, st["xe_prev"]),
                                             v=ca.if_else(carry, v, st["v"]), theta_hat=theta_out)
         functions.append(ca.Function(
-            f"{prefix}_{name}{suffix}_step", [state, qa, xd, xd_dot, xd_ddot, params],
+            f"{prefix}_{name}{suffix}_step",
+            [state, qa, xd, xd_dot, xd_ddot, params] + [sx for _, sx in extra],
             [tau_out, state_next, status, ca.vertcat(xe, v, e, edot, sing)],
-            ["state", "qa", "xd", "xd_dot", "xd_ddot", "params"],
+            ["state", "qa", "xd", "xd_dot", "xd_ddot", "params"] + [k for k, _ in extra],
             ["tau_a", "state_next", "status", "diag"]))
     return functions

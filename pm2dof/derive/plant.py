@@ -2,7 +2,7 @@
 import casadi as ca
 import sympy as sp
 
-from .controllers import controller_layouts
+from .controllers import LAWS, controller_layouts, per_sample_inputs
 from .factored import solve2, task_inertia_coriolis
 from .layouts import Layout
 
@@ -17,11 +17,17 @@ def plant_layout(n):
 
 
 def closed_loop_layouts(n, p):
+    """cl_state, cl_input (the desired motion), cl_output, and ``<law>_cl_input`` for a law
+    whose step takes per-sample inputs (the desired motion, then those)."""
     ctrl = controller_layouts(n, p)
     x = Layout([("xe", 2), ("xed", 2), ("ctrl_state", ctrl["ctrl_state"].size)])
-    u = Layout([("xd", 2), ("xd_dot", 2), ("xd_ddot", 2)])
+    motion = [("xd", 2), ("xd_dot", 2), ("xd_ddot", 2)]
     y = Layout([("xe", 2), ("xed", 2), ("tau_a", n), ("status", 1), ("theta_hat", p)])
-    return {"cl_state": x, "cl_input": u, "cl_output": y}
+    out = {"cl_state": x, "cl_input": Layout(motion), "cl_output": y}
+    for law in dict.fromkeys(law for _, law, _ in LAWS):
+        if per_sample_inputs(law, n):
+            out[f"{law}_cl_input"] = Layout(motion + per_sample_inputs(law, n))
+    return out
 
 
 def plant_functions(d, prefix):
@@ -83,16 +89,19 @@ def closed_loop_functions(d, prefix, ctrl_fns, plant_fns, substeps):
     out = []
     for step in ctrl_fns:
         name = step.name()[len(prefix) + 1:-len("_step")]          # e.g. na_proj_minmax
-        law = "apd" if name.startswith("apd") else "na"
+        law = name.split("_")[0]                                    # na, apd, ctc, lqr
+        ulay = lay.get(f"{law}_cl_input", lay["cl_input"])
         x = ca.MX.sym("x", lay["cl_state"].size)
-        u = ca.MX.sym("u", lay["cl_input"].size)
+        u = ca.MX.sym("u", ulay.size)
         npar = ctrl_lay[f"{law}_params"].size
         prm = ca.MX.sym("p", npar + plant_layout(n).size)
-        X, U = lay["cl_state"].split(x), lay["cl_input"].split(u)
+        X, U = lay["cl_state"].split(x), ulay.split(u)
         cp, pp = prm[:npar], prm[npar:]
         h = cp[ctrl_lay[f"{law}_params"].offsets()["T"][0]] / substeps  # zero-order hold
         qa = f_meas(X["xe"], pp)
-        tau, cs_next, status, _ = step(X["ctrl_state"], qa, U["xd"], U["xd_dot"], U["xd_ddot"], cp)
+        extra = [U[k] for k, _ in per_sample_inputs(law, n)]        # e.g. LQR's K_k, tau_ff_k
+        tau, cs_next, status, _ = step(X["ctrl_state"], qa, U["xd"], U["xd_dot"], U["xd_ddot"], cp,
+                                       *extra)
         z = ca.vertcat(X["xe"], X["xed"])
         for _ in range(substeps):
             z = f_step(z, tau, pp, h)

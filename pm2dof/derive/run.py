@@ -17,6 +17,7 @@ from pm2dof.core.errors import ModelFileError
 from pm2dof.core.model_file import read_model_file
 
 from .controllers import STATUS, controller_functions, controller_layouts
+from .derivatives import derivative_functions
 from .export import MANIFEST, export
 from .model_functions import Derivation, model_functions
 from .planning import path_functions, path_layouts
@@ -107,6 +108,7 @@ def derive(model, out=None, *, force=False, build=True, progress=print):
     loops = closed_loop_functions(d, spec.name, ctrl, plant, spec.rk4_substeps)
     functions = [_finalize(f) for f in model_functions(d, spec.name)] + ctrl + plant + loops
     functions += [_finalize(f) for f in path_functions(d, spec.name)]       # motion planning
+    functions += derivative_functions(d, spec.name, spec.rk4_substeps, _finalize)
     say(f"CasADi: {len(functions)} functions, "
         f"{sum(f.n_instructions() for f in functions)} instructions")
     layouts = {**controller_layouts(n, p), **closed_loop_layouts(n, p), "plant": plant_layout(n),

@@ -14,6 +14,8 @@
 #   eq. 28  d theta_hat / dt = Gamma Y^T s   (explicit Euler over one sample here)
 #   eq. 29  u = Y theta_hat + Kd s      (NA)
 #   eq. 40  u = Y(q, qd, xd_dot, xd_ddot) theta0 + Kp e + Kv edot   (APD)
+#   CTC     u = Me (xd_ddot + Kv edot + Kp e) + Ce xed + S^T f_a     (computed torque)
+#   LQR     u = S^T (tau_ff - K [xe - xd, v - xd_dot])                (time-varying LQR)
 #
 # Flat vectors (state, params, plant, closed-loop state and output) use the same layouts
 # as the generated C; :func:`layouts` writes them down independently of derive/ and the
@@ -42,6 +44,8 @@ __all__ = [
     "passive_angles",
     "na_step",
     "apd_step",
+    "ctc_step",
+    "lqr_step",
     "truth_friction",
     "plant_xedd",
     "plant_step",
@@ -69,11 +73,12 @@ def layouts(n: int) -> dict:
     dict of str -> pm2dof.core.layout.Layout
         ``ctrl_state`` (xe_prev 2, v 2, theta_hat p); ``na_params`` (Kd 2, Q 2, Gamma p,
         T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n, preload_sign n,
-        preload n, closure_tol); ``apd_params`` (Kp 2, Kv 2, and the same); the reference steps are the
+        preload n, closure_tol); ``apd_params`` and ``ctc_params`` (Kp 2, Kv 2, and the same);
+        ``lqr_params`` (the same without gains); the reference steps are the
         min_norm split (eq. 21; tests/control/test_splits.py checks the other splits); ``plant`` (alpha, beta, gamma, fv, fc, fs
         each n, stribeck_velocity, coulomb_smoothing_velocity, encoder_step);
         ``cl_state`` (xe 2, xed 2, ctrl_state); ``cl_input`` (xd 2, xd_dot 2,
-        xd_ddot 2); ``cl_output`` (xe 2, xed 2, tau_a n, status 1, theta_hat p).
+        xd_ddot 2), ``lqr_cl_input`` (the same, K 4n, tau_ff n); ``cl_output`` (xe 2, xed 2, tau_a n, status 1, theta_hat p).
     """
     p = 5 * n
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
@@ -83,10 +88,13 @@ def layouts(n: int) -> dict:
         "ctrl_state": state,
         "na_params": [("Kd", 2), ("Q", 2), ("Gamma", p)] + common,
         "apd_params": [("Kp", 2), ("Kv", 2)] + common,
+        "ctc_params": [("Kp", 2), ("Kv", 2)] + common,
+        "lqr_params": common,
         "plant": [(k, n) for k in ("alpha", "beta", "gamma", "fv", "fc", "fs")]
         + [("stribeck_velocity", 1), ("coulomb_smoothing_velocity", 1), ("encoder_step", 1)],
         "cl_state": [("xe", 2), ("xed", 2), ("ctrl_state", 4 + p)],
         "cl_input": [("xd", 2), ("xd_dot", 2), ("xd_ddot", 2)],
+        "lqr_cl_input": [("xd", 2), ("xd_dot", 2), ("xd_ddot", 2), ("K", 4 * n), ("tau_ff", n)],
         "cl_output": [("xe", 2), ("xed", 2), ("tau_a", n), ("status", 1), ("theta_hat", p)],
     }
     return {name: Layout(name, f) for name, f in fields.items()}
@@ -137,7 +145,8 @@ def _min_norm_torque(Sq: np.ndarray, u: np.ndarray) -> np.ndarray:
     return Sq @ np.linalg.solve(Sq.T @ Sq, u)
 
 
-def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=False):
+def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=False,
+          K=None, tau_ff=None):
     n = _n(g)
     lay = layouts(n)
     st = lay["ctrl_state"].unpack(np.asarray(state, dtype=float))
@@ -162,10 +171,20 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=Fals
         xrd = xd_dot + P["Q"] * e                                 # eq. 16
         xrdd = xd_ddot + P["Q"] * edot                            # eq. 17
         s = xrd - v                                               # eq. 15
+    elif law == "ctc":                                            # computed torque
+        xrd, xrdd = v, xd_ddot + P["Kv"] * edot + P["Kp"] * e
     else:
         xrd, xrdd = xd_dot, xd_ddot                               # eq. 40: feedforward
-    Yq = ref.Y(g, q, v, xrd, xrdd)                                # eq. 13, (2, 5n)
-    if law == "na":
+    Yq = ref.Y(g, q, v, xrd, xrdd) if law != "lqr" else None      # eq. 13, (2, 5n)
+    if law == "lqr":                                              # tau_ff - K (x - x_d)
+        K = np.asarray(K, dtype=float).reshape(n, 4)
+        u = ref.S(g, q).T @ (np.asarray(tau_ff, dtype=float)
+                             - K @ np.concatenate([xe - xd, v - xd_dot]))
+        theta_next = theta
+    elif law == "ctc":                                            # Me a + Ce v + S^T f_a
+        u = Yq @ theta
+        theta_next = theta
+    elif law == "na":
         u = Yq @ theta + P["Kd"] * s                              # eq. 29
         theta_next = theta + T * P["Gamma"] * (Yq.T @ s)          # eq. 28, explicit Euler
         if project:
@@ -249,11 +268,24 @@ def apd_step(g, state, qa, xd, xd_dot, xd_ddot, params):
     return _step("apd", g, state, qa, xd, xd_dot, xd_ddot, params)
 
 
+def ctc_step(g, state, qa, xd, xd_dot, xd_ddot, params):
+    return _step("ctc", g, state, qa, xd, xd_dot, xd_ddot, params)
+
+
+def lqr_step(g, state, qa, xd, xd_dot, xd_ddot, params, K, tau_ff):
+    """LQR step: the sample's gain ``K`` (n, 4) (or its n*4 row-major entries) and feedforward
+    ``tau_ff`` (n,) N m after the common arguments; otherwise as :func:`na_step`."""
+    return _step("lqr", g, state, qa, xd, xd_dot, xd_ddot, params, K=K, tau_ff=tau_ff)
+
+
 na_step.__doc__ = _STEP_DOC.format(
     what="NA controller (eqs. 14-29)", law="na",
     update="theta_hat + T Gamma Y^T s, eq. 28 by explicit Euler")
 apd_step.__doc__ = _STEP_DOC.format(
     what="APD controller (eq. 40)", law="apd", update="unchanged: the fixed model")
+ctc_step.__doc__ = _STEP_DOC.format(
+    what="computed-torque controller (u = Me (xd_ddot + Kv edot + Kp e) + Ce xed + S^T f_a)",
+    law="ctc", update="unchanged: the fixed model")
 
 
 def _truth_theta(truth: dict) -> np.ndarray:

@@ -13,7 +13,7 @@ Runs on the workers; imports no Dask or pyarrow (the client turns columns into P
 """
 import numpy as np
 
-from ..control.controllers import APDController, NAController
+from ..control.controllers import APDController, CTCController, NAController
 from ..control.simulate import (batch_inputs, check_trajectory, completed_samples, plant_vector,
                                 theta_truth)
 from ..control.trajectory import line, model_move
@@ -30,15 +30,21 @@ METRICS = ("rmse", "max_error", "peak_tau", "n_saturated", "n_singular", "n_non_
 _CACHE = {}
 
 
-def make_controller(model, variant):
-    """The NAController or APDController of a study's controller variant."""
+def make_controller(model, variant, trajectory=None):
+    """The controller of a study's controller variant; an LQR is planned along
+    ``trajectory`` (the study's move, its settling samples included)."""
     o = dict(variant.options)
-    kw = {k: o[k] for k in ("Kp", "Kv", "Kd", "Q", "velocity_filter_hz", "split", "project")
-          if k in o}
+    kw = {k: o[k] for k in ("Kp", "Kv", "Kd", "Q", "velocity_filter_hz", "split", "project",
+                            "Q_position", "Q_velocity", "R") if k in o}
     if "tau_max" in o:
         kw["tau_max"] = np.broadcast_to(np.asarray(o["tau_max"], dtype=float), (model.n_legs,))
     if variant.law == "apd":
         return APDController(model, **kw)
+    if variant.law == "ctc":
+        return CTCController(model, **kw)
+    if variant.law == "lqr":
+        from ..linear.lqr import LQRController
+        return LQRController(model, trajectory, **kw)
     if "Gamma_scale" in o:
         kw["Gamma"] = o["Gamma_scale"] * np.asarray(model.spec.gains["na"]["Gamma"], dtype=float)
     return NAController(model, **kw)
@@ -60,14 +66,16 @@ def _context(study):
     if ctx is None:
         from ..identification.base import identifiability
         model = load_model(study.model_path, study.generated_path)
-        ctrls = [make_controller(model, v) for v in study.variants]
-        T = ctrls[0].sample_period
+        T = model.spec.sensing["sample_period"]
         trajs = []
         for mv in study.moves:
             tr = make_trajectory(model, mv, T)
             check_trajectory(model, tr)
             trajs.append((tr.extended(study.settle_time) if study.settle_time > 0 else tr,
                           len(tr.t)))
+        # (variant, move) -> controller: an LQR's gains belong to its move
+        ctrls = {(c, m): make_controller(model, v, trajs[m][0])
+                 for c, v in enumerate(study.variants) for m in range(len(trajs))}
         N = identifiability(model).null_space
         ctx = {"model": model, "ctrls": ctrls, "trajs": trajs,
                "P_id": np.eye(N.shape[0]) - N @ N.T,   # projector on the identifiable directions
@@ -83,7 +91,7 @@ def rollout_setup(study, c, m, d, r, theta_hat0=None):
     ctx = _context(study)
     model = ctx["model"]
     truth, counts, cols = plant_of(model, study, sample_draw(study, d, model.n_legs), r)
-    return model, ctx["ctrls"][c], ctx["trajs"][m][0], truth, counts, theta_hat0, cols
+    return model, ctx["ctrls"][c, m], ctx["trajs"][m][0], truth, counts, theta_hat0, cols
 
 
 def columns(study, n_legs):
@@ -125,7 +133,7 @@ def run_chunk(study, index):
 
 
 def _run_group(study, ctx, c, m, draws, plants, out, row0):
-    model, ctrl, (traj, n_move) = ctx["model"], ctx["ctrls"][c], ctx["trajs"][m]
+    model, ctrl, (traj, n_move) = ctx["model"], ctx["ctrls"][c, m], ctx["trajs"][m]
     variant = study.variants[c]
     K = len(draws)
     theta = None
@@ -194,9 +202,16 @@ def check_study(study, model):
     from .spec import StudyFileError
     pr = Problems(study.path, StudyFileError)
     entries = list(dict.fromkeys(v.name for v in study.variants))   # one name per [[controllers]]
+    try:   # an LQR variant is checked on the first move (a bad move is reported below)
+        first = make_trajectory(model, study.moves[0], model.spec.sensing["sample_period"])
+        check_trajectory(model, first)
+    except (WorkspaceError, SingularityError, TrajectoryError):
+        first = None
     for v in study.variants:
+        if v.law == "lqr" and first is None:
+            continue
         try:
-            make_controller(model, v)
+            make_controller(model, v, first)
         except (ValueError, TypeError) as exc:
             point = f"at grid point {dict(v.grid)}: " if v.grid else ""
             pr.add(entry("controllers", f"entry {entries.index(v.name) + 1}, {v.name!r}"),

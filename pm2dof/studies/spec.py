@@ -54,6 +54,9 @@ UNCERTAINTY = {
 LAWS = {
     "apd": ("Kp", "Kv", "velocity_filter_hz", "split", "tau_max"),
     "na": ("Kd", "Q", "Gamma_scale", "project", "velocity_filter_hz", "split", "tau_max"),
+    # computed torque (Kp 1/s^2, Kv 1/s) and time-varying LQR (weights, planned per move)
+    "ctc": ("Kp", "Kv", "velocity_filter_hz", "split", "tau_max"),
+    "lqr": ("Q_position", "Q_velocity", "R", "velocity_filter_hz", "split", "tau_max"),
 }
 GRID_KEYS = ("Kp", "Kv", "Kd", "Q", "Gamma_scale", "velocity_filter_hz")
 _STUDY_KEYS = {"name", "description", "model", "generated", "moves", "seed", "draws", "runs",
@@ -139,7 +142,7 @@ class Variant:
 
 def _controller_value(pr, key, name, v):
     """One controller key's value (gains as floats or tuples); None after a problem."""
-    if name in ("Kp", "Kv", "Kd", "Q", "tau_max"):
+    if name in ("Kp", "Kv", "Kd", "Q", "tau_max", "Q_position", "Q_velocity", "R"):
         vals = [pr.number(key, x, low=0.0, low_ok=False)
                 for x in (v if isinstance(v, list) else [v])]
         return None if None in vals else (tuple(vals) if isinstance(v, list) else vals[0])

@@ -161,7 +161,7 @@ def test_every_problem_of_a_study_file_in_one_error(tmp_path):
                              "'fv_scale', 'inertia_error_percent', 'payload_mass', "
                              "'stribeck_scale']"),
         ("controllers.Kv (entry 1)", "must be > 0, got -1.0"),
-        ("controllers.law (entry 2)", "must be one of ['apd', 'na'], got 'pid'"),
+        ("controllers.law (entry 2)", "must be one of ['apd', 'ctc', 'lqr', 'na'], got 'pid'"),
         ("payload_change.payload_mass", "missing (required)"),
     ]
     assert [tuple(pr) for pr in exc.value.problems] == expected
@@ -263,7 +263,7 @@ def _simulate_rows(study, c, m, d):
     return rows
 
 
-@pytest.mark.parametrize("name", ["adaptation", "robustness"])
+@pytest.mark.parametrize("name", ["adaptation", "robustness", "model_based"])
 def test_study_rows_equal_simulate_bit_for_bit(name):
     s = read_study(STUDIES / f"{name}.toml", quick=True)
     rows = _all_rows(s)

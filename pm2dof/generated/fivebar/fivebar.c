@@ -29,7 +29,9 @@ extern "C" {
 #endif
 
 /* Add prefix to internal symbols */
+#define casadi_clear CASADI_PREFIX(clear)
 #define casadi_copy CASADI_PREFIX(copy)
+#define casadi_densify CASADI_PREFIX(densify)
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f10 CASADI_PREFIX(f10)
@@ -69,14 +71,36 @@ extern "C" {
 #define casadi_f41 CASADI_PREFIX(f41)
 #define casadi_f42 CASADI_PREFIX(f42)
 #define casadi_f43 CASADI_PREFIX(f43)
+#define casadi_f44 CASADI_PREFIX(f44)
+#define casadi_f45 CASADI_PREFIX(f45)
+#define casadi_f46 CASADI_PREFIX(f46)
+#define casadi_f47 CASADI_PREFIX(f47)
+#define casadi_f48 CASADI_PREFIX(f48)
+#define casadi_f49 CASADI_PREFIX(f49)
 #define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f50 CASADI_PREFIX(f50)
+#define casadi_f51 CASADI_PREFIX(f51)
+#define casadi_f52 CASADI_PREFIX(f52)
+#define casadi_f53 CASADI_PREFIX(f53)
+#define casadi_f54 CASADI_PREFIX(f54)
+#define casadi_f55 CASADI_PREFIX(f55)
+#define casadi_f56 CASADI_PREFIX(f56)
+#define casadi_f57 CASADI_PREFIX(f57)
+#define casadi_f58 CASADI_PREFIX(f58)
+#define casadi_f59 CASADI_PREFIX(f59)
 #define casadi_f6 CASADI_PREFIX(f6)
+#define casadi_f60 CASADI_PREFIX(f60)
+#define casadi_f61 CASADI_PREFIX(f61)
 #define casadi_f7 CASADI_PREFIX(f7)
 #define casadi_f8 CASADI_PREFIX(f8)
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
+#define casadi_fill CASADI_PREFIX(fill)
 #define casadi_fmax CASADI_PREFIX(fmax)
 #define casadi_fmin CASADI_PREFIX(fmin)
+#define casadi_mtimes_dense CASADI_PREFIX(mtimes_dense)
+#define casadi_mtimes_dense_sparse CASADI_PREFIX(mtimes_dense_sparse)
+#define casadi_project CASADI_PREFIX(project)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s10 CASADI_PREFIX(s10)
@@ -87,7 +111,15 @@ extern "C" {
 #define casadi_s15 CASADI_PREFIX(s15)
 #define casadi_s16 CASADI_PREFIX(s16)
 #define casadi_s17 CASADI_PREFIX(s17)
+#define casadi_s18 CASADI_PREFIX(s18)
+#define casadi_s19 CASADI_PREFIX(s19)
 #define casadi_s2 CASADI_PREFIX(s2)
+#define casadi_s20 CASADI_PREFIX(s20)
+#define casadi_s21 CASADI_PREFIX(s21)
+#define casadi_s22 CASADI_PREFIX(s22)
+#define casadi_s23 CASADI_PREFIX(s23)
+#define casadi_s24 CASADI_PREFIX(s24)
+#define casadi_s25 CASADI_PREFIX(s25)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
@@ -96,6 +128,7 @@ extern "C" {
 #define casadi_s8 CASADI_PREFIX(s8)
 #define casadi_s9 CASADI_PREFIX(s9)
 #define casadi_sq CASADI_PREFIX(sq)
+#define casadi_trans CASADI_PREFIX(trans)
 #define casadi_zeros CASADI_PREFIX(zeros)
 
 /* Symbol visibility in DLLs */
@@ -161,6 +194,115 @@ void casadi_copy(const casadi_real* x, casadi_int n, casadi_real* y) {
   }
 }
 
+void casadi_fill(casadi_real* x, casadi_int n, casadi_real alpha) {
+  casadi_int i;
+  if (x) {
+    for (i=0; i<n; ++i) *x++ = alpha;
+  }
+}
+
+void casadi_clear(casadi_real* x, casadi_int n) {
+  casadi_int i;
+  if (x) {
+    for (i=0; i<n; ++i) *x++ = 0;
+  }
+}
+
+#define CASADI_CAST(x,y) ((x) y)
+
+void casadi_densify(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, casadi_int tr) {
+  casadi_int nrow_x, ncol_x, i, el;
+  const casadi_int *colind_x, *row_x;
+  if (!y) return;
+  nrow_x = sp_x[0]; ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x+ncol_x+3;
+  casadi_clear(y, nrow_x*ncol_x);
+  if (!x) return;
+  if (tr) {
+    for (i=0; i<ncol_x; ++i) {
+      for (el=colind_x[i]; el!=colind_x[i+1]; ++el) {
+        y[i + row_x[el]*ncol_x] = CASADI_CAST(casadi_real, *x++);
+      }
+    }
+  } else {
+    for (i=0; i<ncol_x; ++i) {
+      for (el=colind_x[i]; el!=colind_x[i+1]; ++el) {
+        y[row_x[el]] = CASADI_CAST(casadi_real, *x++);
+      }
+      y += nrow_x;
+    }
+  }
+}
+
+void casadi_trans(const casadi_real* x, const casadi_int* sp_x, casadi_real* y,
+    const casadi_int* sp_y, casadi_int* tmp) {
+  casadi_int ncol_x, nnz_x, ncol_y, k;
+  const casadi_int* row_x, *colind_y;
+  ncol_x = sp_x[1];
+  nnz_x = sp_x[2 + ncol_x];
+  row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2;
+  for (k=0; k<ncol_y; ++k) tmp[k] = colind_y[k];
+  for (k=0; k<nnz_x; ++k) {
+    y[tmp[row_x[k]]++] = x[k];
+  }
+}
+
+void casadi_mtimes_dense_sparse(const casadi_real* x, casadi_int nrow_x,
+    const casadi_real* y, const casadi_int* sp_y, casadi_real* z) {
+  casadi_int j, kk, i, ncol_y;
+  const casadi_int *colind_y, *row_y;
+  ncol_y = sp_y[1];
+  colind_y = sp_y + 2;
+  row_y = sp_y + 2 + ncol_y + 1;
+  for (j = 0; j < ncol_y; ++j) {
+    casadi_real* zj = z + j * nrow_x;
+    for (kk = colind_y[j]; kk < colind_y[j + 1]; ++kk) {
+      casadi_int rr = row_y[kk];
+      casadi_real yk = y[kk];
+      const casadi_real* x_col = x + rr * nrow_x;
+      for (i = 0; i < nrow_x; ++i) zj[i] += x_col[i] * yk;
+    }
+  }
+}
+
+void casadi_project(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, const casadi_int* sp_y, casadi_real* w) {
+  casadi_int ncol_x, ncol_y, i, el;
+  const casadi_int *colind_x, *row_x, *colind_y, *row_y;
+  ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2; row_y = sp_y + 2 + ncol_y+1;
+  for (i=0; i<ncol_x; ++i) {
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) w[row_y[el]] = 0;
+    for (el=colind_x[i]; el<colind_x[i+1]; ++el) w[row_x[el]] = x[el];
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) y[el] = w[row_y[el]];
+  }
+}
+
+void casadi_mtimes_dense(const casadi_real* x, casadi_int nrow_x, casadi_int ncol_x,
+    const casadi_real* y, casadi_int ncol_y, casadi_real* z, casadi_int tr) {
+  casadi_int i, j, k;
+  if (tr) {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<ncol_x; ++j) {
+        for (k=0; k<nrow_x; ++k) {
+          z[j + i*ncol_x] += x[k + j*nrow_x] * y[k + i*nrow_x];
+        }
+      }
+    }
+  } else {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<nrow_x; ++j) {
+        for (k=0; k<ncol_x; ++k) {
+          z[j + i*nrow_x] += x[j + k*nrow_x] * y[k + i*ncol_x];
+        }
+      }
+    }
+  }
+}
+
 /* Configuration this file was compiled with */
 CASADI_SYMBOL_EXPORT void fivebar_casadi_version(int* major, int* minor, int* patch) {
   *major = 3;
@@ -180,14 +322,43 @@ static const casadi_int casadi_s6[3] = {1, 1, 1};
 static const casadi_int casadi_s7[3] = {14, 1, 1};
 static const casadi_int casadi_s8[3] = {25, 1, 1};
 static const casadi_int casadi_s9[3] = {15, 1, 1};
-static const casadi_int casadi_s10[3] = {18, 1, 1};
-static const casadi_int casadi_s11[3] = {6, 1, 1};
-static const casadi_int casadi_s12[3] = {40, 1, 1};
-static const casadi_int casadi_s13[3] = {17, 1, 1};
-static const casadi_int casadi_s14[3] = {30, 1, 1};
-static const casadi_int casadi_s15[3] = {11, 1, 1};
-static const casadi_int casadi_s16[3] = {41, 1, 1};
-static const casadi_int casadi_s17[3] = {42, 1, 1};
+static const casadi_int casadi_s10[3] = {11, 1, 1};
+static const casadi_int casadi_s11[3] = {18, 1, 1};
+static const casadi_int casadi_s12[3] = {6, 1, 1};
+static const casadi_int casadi_s13[3] = {40, 1, 1};
+static const casadi_int casadi_s14[3] = {17, 1, 1};
+static const casadi_int casadi_s15[3] = {30, 1, 1};
+static const casadi_int casadi_s16[3] = {26, 1, 1};
+static const casadi_int casadi_s17[3] = {41, 1, 1};
+static const casadi_int casadi_s18[3] = {42, 1, 1};
+static const casadi_int casadi_s19[21] = 
+  {4, 6, 0, 1, 2, 3, 4, 8,
+  12, 0, 1, 2, 3, 0, 1, 2,
+  3, 0, 1, 2, 3};
+static const casadi_int casadi_s20[11] = 
+  {6, 2, 0, 3, 6, 2, 4, 5,
+  3, 4, 5};
+static const casadi_int casadi_s21[15] = 
+  {2, 6, 0, 0, 0, 1, 2, 4,
+  6, 0, 1, 0, 1, 0, 1};
+static const casadi_int casadi_s22[27] = 
+  {4, 6, 0, 2, 4, 7, 10, 14,
+  18, 2, 3, 2, 3, 0, 2, 3,
+  1, 2, 3, 0, 1, 2, 3, 0,
+  1, 2, 3};
+static const casadi_int casadi_s23[25] = 
+  {6, 4, 0, 3, 6, 12, 18, 2,
+  4, 5, 3, 4, 5, 0, 1, 2,
+  3, 4, 5, 0, 1, 2, 3, 4,
+  5};
+static const casadi_int casadi_s24[29] = 
+  {4, 6, 0, 3, 6, 9, 12, 16,
+  20, 0, 2, 3, 1, 2, 3, 0,
+  2, 3, 1, 2, 3, 0, 1, 2,
+  3, 0, 1, 2, 3};
+static const casadi_int casadi_s25[12] = 
+  {1, 2, 4, 5, 7, 8, 10, 11,
+  14, 15, 18, 19};
 
 static const casadi_real casadi_zeros[40] = 
   {0.};
@@ -10243,8 +10414,3151 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_preload_step_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* fivebar_plant_xedd:(xe[2],xed[2],tau_a[2],plant[15])->(xedd[2]) */
+/* fivebar_ctc_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[15])->(tau_a[2],state_next[14],status,diag[10]) */
 static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][14] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][6] : 0;
+  a18=(a18/a19);
+  a24=(a04*a18);
+  a02=(a02/a19);
+  a19=(a03*a02);
+  a24=(a24-a19);
+  a19=casadi_fabs(a24);
+  a20=(a20/a22);
+  a25=(a08*a20);
+  a15=(a15/a22);
+  a22=(a07*a15);
+  a25=(a25-a22);
+  a22=casadi_fabs(a25);
+  a26=(a19+a22);
+  a19=(a19-a22);
+  a19=casadi_fabs(a19);
+  a26=(a26-a19);
+  a19=2.;
+  a26=(a26/a19);
+  a23=(a23<=a26);
+  a22=arg[5]? arg[5][7] : 0;
+  a27=5.0000000000000000e-01;
+  a28=1.;
+  a29=casadi_sq(a18);
+  a30=casadi_sq(a02);
+  a29=(a29-a30);
+  a30=casadi_sq(a20);
+  a31=casadi_sq(a15);
+  a30=(a30-a31);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a30=(2.*a18);
+  a30=(a30*a02);
+  a31=(2.*a20);
+  a31=(a31*a15);
+  a30=(a30+a31);
+  a30=casadi_sq(a30);
+  a29=(a29+a30);
+  a29=sqrt(a29);
+  a29=(a27*a29);
+  a29=(a28-a29);
+  a30=casadi_fabs(a29);
+  a29=(a29+a30);
+  a27=(a27*a29);
+  a27=sqrt(a27);
+  a22=(a22<=a27);
+  a23=(a23&&a22);
+  a22=(a06*a18);
+  a29=(a05*a22);
+  a30=(a00*a02);
+  a31=(a30*a21);
+  a29=(a29-a31);
+  a22=(a22/a29);
+  a30=(a30/a29);
+  a31=casadi_sq(a30);
+  a32=(a00*a15);
+  a06=(a06*a20);
+  a33=(a12*a06);
+  a34=(a32*a11);
+  a33=(a33-a34);
+  a32=(a32/a33);
+  a34=casadi_sq(a32);
+  a31=(a31+a34);
+  a34=arg[4]? arg[4][0] : 0;
+  a35=arg[5]? arg[5][2] : 0;
+  a36=arg[3]? arg[3][0] : 0;
+  a37=arg[0]? arg[0][2] : 0;
+  a38=arg[5]? arg[5][5] : 0;
+  a17=(a21+a17);
+  a17=(a17+a09);
+  a09=arg[0]? arg[0][0] : 0;
+  a39=(a17-a09);
+  a40=arg[5]? arg[5][4] : 0;
+  a39=(a39/a40);
+  a39=(a39-a37);
+  a39=(a38*a39);
+  a39=(a37+a39);
+  a36=(a36-a39);
+  a35=(a35*a36);
+  a34=(a34+a35);
+  a35=arg[5]? arg[5][0] : 0;
+  a41=arg[2]? arg[2][0] : 0;
+  a41=(a41-a17);
+  a35=(a35*a41);
+  a34=(a34+a35);
+  a35=(a22*a34);
+  a42=arg[4]? arg[4][1] : 0;
+  a43=arg[5]? arg[5][3] : 0;
+  a44=arg[3]? arg[3][1] : 0;
+  a45=arg[0]? arg[0][3] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[0]? arg[0][1] : 0;
+  a01=(a14-a13);
+  a01=(a01/a40);
+  a01=(a01-a45);
+  a38=(a38*a01);
+  a38=(a45+a38);
+  a44=(a44-a38);
+  a43=(a43*a44);
+  a42=(a42+a43);
+  a43=arg[5]? arg[5][1] : 0;
+  a01=arg[2]? arg[2][1] : 0;
+  a01=(a01-a14);
+  a43=(a43*a01);
+  a42=(a42+a43);
+  a43=(a30*a42);
+  a35=(a35-a43);
+  a43=(a22*a39);
+  a40=(a30*a38);
+  a43=(a43-a40);
+  a40=(a00*a43);
+  a16=(a40*a04);
+  a16=(a16*a43);
+  a05=(a05/a29);
+  a46=(a05*a38);
+  a21=(a21/a29);
+  a29=(a21*a39);
+  a46=(a46-a29);
+  a29=(a00*a46);
+  a47=(a29*a02);
+  a47=(a47*a46);
+  a16=(a16+a47);
+  a47=(a30*a16);
+  a40=(a40*a03);
+  a40=(a40*a43);
+  a29=(a29*a18);
+  a29=(a29*a46);
+  a40=(a40+a29);
+  a29=(a22*a40);
+  a47=(a47-a29);
+  a35=(a35+a47);
+  a47=(a22*a35);
+  a29=arg[0]? arg[0][4] : 0;
+  a47=(a47*a29);
+  a06=(a06/a33);
+  a48=(a06*a34);
+  a49=(a32*a42);
+  a48=(a48-a49);
+  a49=(a06*a39);
+  a50=(a32*a38);
+  a49=(a49-a50);
+  a50=(a00*a49);
+  a51=(a50*a08);
+  a51=(a51*a49);
+  a12=(a12/a33);
+  a52=(a12*a38);
+  a11=(a11/a33);
+  a33=(a11*a39);
+  a52=(a52-a33);
+  a00=(a00*a52);
+  a33=(a00*a15);
+  a33=(a33*a52);
+  a51=(a51+a33);
+  a33=(a32*a51);
+  a50=(a50*a07);
+  a50=(a50*a49);
+  a00=(a00*a20);
+  a00=(a00*a52);
+  a50=(a50+a00);
+  a00=(a06*a50);
+  a33=(a33-a00);
+  a48=(a48+a33);
+  a33=(a06*a48);
+  a00=arg[0]? arg[0][5] : 0;
+  a33=(a33*a00);
+  a47=(a47+a33);
+  a33=(a05*a42);
+  a53=(a21*a34);
+  a33=(a33-a53);
+  a40=(a21*a40);
+  a16=(a05*a16);
+  a40=(a40-a16);
+  a33=(a33+a40);
+  a03=(a03*a18);
+  a04=(a04*a02);
+  a03=(a03+a04);
+  a04=(a33*a03);
+  a46=casadi_sq(a46);
+  a46=(a46*a24);
+  a04=(a04+a46);
+  a46=(a22*a04);
+  a03=(a35*a03);
+  a02=casadi_sq(a43);
+  a02=(a02*a24);
+  a03=(a03-a02);
+  a02=(a21*a03);
+  a46=(a46-a02);
+  a02=arg[0]? arg[0][6] : 0;
+  a46=(a46*a02);
+  a47=(a47+a46);
+  a42=(a12*a42);
+  a34=(a11*a34);
+  a42=(a42-a34);
+  a50=(a11*a50);
+  a51=(a12*a51);
+  a50=(a50-a51);
+  a42=(a42+a50);
+  a07=(a07*a20);
+  a08=(a08*a15);
+  a07=(a07+a08);
+  a08=(a42*a07);
+  a52=casadi_sq(a52);
+  a52=(a52*a25);
+  a08=(a08+a52);
+  a52=(a06*a08);
+  a07=(a48*a07);
+  a15=casadi_sq(a49);
+  a15=(a15*a25);
+  a07=(a07-a15);
+  a15=(a11*a07);
+  a52=(a52-a15);
+  a15=arg[0]? arg[0][7] : 0;
+  a52=(a52*a15);
+  a47=(a47+a52);
+  a21=(a21*a33);
+  a52=arg[0]? arg[0][8] : 0;
+  a21=(a21*a52);
+  a47=(a47-a21);
+  a11=(a11*a42);
+  a21=arg[0]? arg[0][9] : 0;
+  a11=(a11*a21);
+  a47=(a47-a11);
+  a11=(a22*a43);
+  a25=arg[0]? arg[0][10] : 0;
+  a11=(a11*a25);
+  a47=(a47+a11);
+  a11=(a06*a49);
+  a20=arg[0]? arg[0][11] : 0;
+  a11=(a11*a20);
+  a47=(a47+a11);
+  a11=0.;
+  a50=(a11<=a43);
+  a51=(a50?a28:0);
+  a50=(!a50);
+  a34=-1.;
+  a50=(a50?a34:0);
+  a51=(a51+a50);
+  a50=(a22*a51);
+  a46=arg[0]? arg[0][12] : 0;
+  a50=(a50*a46);
+  a47=(a47+a50);
+  a50=(a11<=a49);
+  a24=(a50?a28:0);
+  a50=(!a50);
+  a50=(a50?a34:0);
+  a24=(a24+a50);
+  a50=(a06*a24);
+  a34=arg[0]? arg[0][13] : 0;
+  a50=(a50*a34);
+  a47=(a47+a50);
+  a50=(a31*a47);
+  a18=(a22*a30);
+  a40=(a06*a32);
+  a18=(a18+a40);
+  a03=(a05*a03);
+  a04=(a30*a04);
+  a03=(a03-a04);
+  a03=(a03*a02);
+  a35=(a30*a35);
+  a35=(a35*a29);
+  a48=(a32*a48);
+  a48=(a48*a00);
+  a35=(a35+a48);
+  a03=(a03-a35);
+  a07=(a12*a07);
+  a08=(a32*a08);
+  a07=(a07-a08);
+  a07=(a07*a15);
+  a03=(a03+a07);
+  a05=(a05*a33);
+  a05=(a05*a52);
+  a03=(a03+a05);
+  a12=(a12*a42);
+  a12=(a12*a21);
+  a03=(a03+a12);
+  a43=(a30*a43);
+  a43=(a43*a25);
+  a03=(a03-a43);
+  a49=(a32*a49);
+  a49=(a49*a20);
+  a03=(a03-a49);
+  a51=(a30*a51);
+  a51=(a51*a46);
+  a03=(a03-a51);
+  a24=(a32*a24);
+  a24=(a24*a34);
+  a03=(a03-a24);
+  a24=(a18*a03);
+  a50=(a50+a24);
+  a24=casadi_sq(a22);
+  a51=casadi_sq(a06);
+  a24=(a24+a51);
+  a31=(a24*a31);
+  a51=(a30*a22);
+  a49=(a32*a06);
+  a51=(a51+a49);
+  a18=(a18*a51);
+  a31=(a31-a18);
+  a50=(a50/a31);
+  a22=(a22*a50);
+  a24=(a24*a03);
+  a51=(a51*a47);
+  a24=(a24+a51);
+  a24=(a24/a31);
+  a30=(a30*a24);
+  a22=(a22-a30);
+  a06=(a06*a50);
+  a32=(a32*a24);
+  a06=(a06-a32);
+  a32=(a22+a06);
+  a32=(a32+a29);
+  a32=(a32+a00);
+  a32=(a32+a02);
+  a32=(a32+a15);
+  a32=(a32+a52);
+  a32=(a32+a21);
+  a32=(a32+a25);
+  a32=(a32+a20);
+  a32=(a32+a46);
+  a32=(a32+a34);
+  a32=(a32+a17);
+  a32=(a32+a14);
+  a32=(a32+a39);
+  a32=(a32+a38);
+  a32=casadi_fabs(a32);
+  a24=casadi_inf;
+  a32=(a32<a24);
+  a24=(a23&&a32);
+  a24=(a10&&a24);
+  a50=arg[5]? arg[5][8] : 0;
+  a30=(-a50);
+  a30=casadi_fmax(a22,a30);
+  a30=casadi_fmin(a30,a50);
+  a30=(a24?a30:0);
+  if (res[0]!=0) res[0][0]=a30;
+  a30=arg[5]? arg[5][9] : 0;
+  a31=(-a30);
+  a31=casadi_fmax(a06,a31);
+  a31=casadi_fmin(a31,a30);
+  a31=(a24?a31:0);
+  if (res[0]!=0) res[0][1]=a31;
+  a31=(a10&&a32);
+  a51=(a31?a17:0);
+  a47=(!a31);
+  a09=(a47?a09:0);
+  a51=(a51+a09);
+  if (res[1]!=0) res[1][0]=a51;
+  a51=(a31?a14:0);
+  a13=(a47?a13:0);
+  a51=(a51+a13);
+  if (res[1]!=0) res[1][1]=a51;
+  a51=(a31?a39:0);
+  a37=(a47?a37:0);
+  a51=(a51+a37);
+  if (res[1]!=0) res[1][2]=a51;
+  a31=(a31?a38:0);
+  a47=(a47?a45:0);
+  a31=(a31+a47);
+  if (res[1]!=0) res[1][3]=a31;
+  a31=(a24?a29:0);
+  a47=(!a24);
+  a29=(a47?a29:0);
+  a31=(a31+a29);
+  if (res[1]!=0) res[1][4]=a31;
+  a31=(a24?a00:0);
+  a00=(a47?a00:0);
+  a31=(a31+a00);
+  if (res[1]!=0) res[1][5]=a31;
+  a31=(a24?a02:0);
+  a02=(a47?a02:0);
+  a31=(a31+a02);
+  if (res[1]!=0) res[1][6]=a31;
+  a31=(a24?a15:0);
+  a15=(a47?a15:0);
+  a31=(a31+a15);
+  if (res[1]!=0) res[1][7]=a31;
+  a31=(a24?a52:0);
+  a52=(a47?a52:0);
+  a31=(a31+a52);
+  if (res[1]!=0) res[1][8]=a31;
+  a31=(a24?a21:0);
+  a21=(a47?a21:0);
+  a31=(a31+a21);
+  if (res[1]!=0) res[1][9]=a31;
+  a31=(a24?a25:0);
+  a25=(a47?a25:0);
+  a31=(a31+a25);
+  if (res[1]!=0) res[1][10]=a31;
+  a31=(a24?a20:0);
+  a20=(a47?a20:0);
+  a31=(a31+a20);
+  if (res[1]!=0) res[1][11]=a31;
+  a31=(a24?a46:0);
+  a46=(a47?a46:0);
+  a31=(a31+a46);
+  if (res[1]!=0) res[1][12]=a31;
+  a24=(a24?a34:0);
+  a47=(a47?a34:0);
+  a24=(a24+a47);
+  if (res[1]!=0) res[1][13]=a24;
+  a22=casadi_fabs(a22);
+  a22=(a22-a50);
+  a06=casadi_fabs(a06);
+  a06=(a06-a30);
+  a22=casadi_fmax(a22,a06);
+  a11=(a11<a22);
+  a11=(a11?a19:0);
+  a11=(a32?a11:0);
+  a32=(!a32);
+  a19=3.;
+  a32=(a32?a19:0);
+  a11=(a11+a32);
+  a11=(a23?a11:0);
+  a23=(!a23);
+  a23=(a23?a28:0);
+  a11=(a11+a23);
+  a11=(a10?a11:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a11=(a11+a10);
+  if (res[2]!=0) res[2][0]=a11;
+  if (res[3]!=0) res[3][0]=a17;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a39;
+  if (res[3]!=0) res[3][3]=a38;
+  if (res[3]!=0) res[3][4]=a41;
+  if (res[3]!=0) res[3][5]=a01;
+  if (res[3]!=0) res[3][6]=a36;
+  if (res[3]!=0) res[3][7]=a44;
+  if (res[3]!=0) res[3][8]=a26;
+  if (res[3]!=0) res[3][9]=a27;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f27(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_ctc_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[15])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][14] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][6] : 0;
+  a18=(a18/a19);
+  a24=(a04*a18);
+  a02=(a02/a19);
+  a19=(a03*a02);
+  a24=(a24-a19);
+  a19=casadi_fabs(a24);
+  a20=(a20/a22);
+  a25=(a08*a20);
+  a15=(a15/a22);
+  a22=(a07*a15);
+  a25=(a25-a22);
+  a22=casadi_fabs(a25);
+  a26=(a19+a22);
+  a19=(a19-a22);
+  a19=casadi_fabs(a19);
+  a26=(a26-a19);
+  a19=2.;
+  a26=(a26/a19);
+  a23=(a23<=a26);
+  a22=arg[5]? arg[5][7] : 0;
+  a27=5.0000000000000000e-01;
+  a28=1.;
+  a29=casadi_sq(a18);
+  a30=casadi_sq(a02);
+  a29=(a29-a30);
+  a30=casadi_sq(a20);
+  a31=casadi_sq(a15);
+  a30=(a30-a31);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a30=(2.*a18);
+  a30=(a30*a02);
+  a31=(2.*a20);
+  a31=(a31*a15);
+  a30=(a30+a31);
+  a30=casadi_sq(a30);
+  a29=(a29+a30);
+  a29=sqrt(a29);
+  a29=(a27*a29);
+  a29=(a28-a29);
+  a30=casadi_fabs(a29);
+  a29=(a29+a30);
+  a27=(a27*a29);
+  a27=sqrt(a27);
+  a22=(a22<=a27);
+  a23=(a23&&a22);
+  a22=(a06*a18);
+  a29=(a05*a22);
+  a30=(a00*a02);
+  a31=(a30*a21);
+  a29=(a29-a31);
+  a22=(a22/a29);
+  a30=(a30/a29);
+  a31=casadi_sq(a30);
+  a32=(a00*a15);
+  a06=(a06*a20);
+  a33=(a12*a06);
+  a34=(a32*a11);
+  a33=(a33-a34);
+  a32=(a32/a33);
+  a34=casadi_sq(a32);
+  a31=(a31+a34);
+  a34=arg[4]? arg[4][0] : 0;
+  a35=arg[5]? arg[5][2] : 0;
+  a36=arg[3]? arg[3][0] : 0;
+  a37=arg[0]? arg[0][2] : 0;
+  a38=arg[5]? arg[5][5] : 0;
+  a17=(a21+a17);
+  a17=(a17+a09);
+  a09=arg[0]? arg[0][0] : 0;
+  a39=(a17-a09);
+  a40=arg[5]? arg[5][4] : 0;
+  a39=(a39/a40);
+  a39=(a39-a37);
+  a39=(a38*a39);
+  a39=(a37+a39);
+  a36=(a36-a39);
+  a35=(a35*a36);
+  a34=(a34+a35);
+  a35=arg[5]? arg[5][0] : 0;
+  a41=arg[2]? arg[2][0] : 0;
+  a41=(a41-a17);
+  a35=(a35*a41);
+  a34=(a34+a35);
+  a35=(a22*a34);
+  a42=arg[4]? arg[4][1] : 0;
+  a43=arg[5]? arg[5][3] : 0;
+  a44=arg[3]? arg[3][1] : 0;
+  a45=arg[0]? arg[0][3] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[0]? arg[0][1] : 0;
+  a01=(a14-a13);
+  a01=(a01/a40);
+  a01=(a01-a45);
+  a38=(a38*a01);
+  a38=(a45+a38);
+  a44=(a44-a38);
+  a43=(a43*a44);
+  a42=(a42+a43);
+  a43=arg[5]? arg[5][1] : 0;
+  a01=arg[2]? arg[2][1] : 0;
+  a01=(a01-a14);
+  a43=(a43*a01);
+  a42=(a42+a43);
+  a43=(a30*a42);
+  a35=(a35-a43);
+  a43=(a22*a39);
+  a40=(a30*a38);
+  a43=(a43-a40);
+  a40=(a00*a43);
+  a16=(a40*a04);
+  a16=(a16*a43);
+  a05=(a05/a29);
+  a46=(a05*a38);
+  a21=(a21/a29);
+  a29=(a21*a39);
+  a46=(a46-a29);
+  a29=(a00*a46);
+  a47=(a29*a02);
+  a47=(a47*a46);
+  a16=(a16+a47);
+  a47=(a30*a16);
+  a40=(a40*a03);
+  a40=(a40*a43);
+  a29=(a29*a18);
+  a29=(a29*a46);
+  a40=(a40+a29);
+  a29=(a22*a40);
+  a47=(a47-a29);
+  a35=(a35+a47);
+  a47=(a22*a35);
+  a29=arg[0]? arg[0][4] : 0;
+  a47=(a47*a29);
+  a06=(a06/a33);
+  a48=(a06*a34);
+  a49=(a32*a42);
+  a48=(a48-a49);
+  a49=(a06*a39);
+  a50=(a32*a38);
+  a49=(a49-a50);
+  a50=(a00*a49);
+  a51=(a50*a08);
+  a51=(a51*a49);
+  a12=(a12/a33);
+  a52=(a12*a38);
+  a11=(a11/a33);
+  a33=(a11*a39);
+  a52=(a52-a33);
+  a00=(a00*a52);
+  a33=(a00*a15);
+  a33=(a33*a52);
+  a51=(a51+a33);
+  a33=(a32*a51);
+  a50=(a50*a07);
+  a50=(a50*a49);
+  a00=(a00*a20);
+  a00=(a00*a52);
+  a50=(a50+a00);
+  a00=(a06*a50);
+  a33=(a33-a00);
+  a48=(a48+a33);
+  a33=(a06*a48);
+  a00=arg[0]? arg[0][5] : 0;
+  a33=(a33*a00);
+  a47=(a47+a33);
+  a33=(a05*a42);
+  a53=(a21*a34);
+  a33=(a33-a53);
+  a40=(a21*a40);
+  a16=(a05*a16);
+  a40=(a40-a16);
+  a33=(a33+a40);
+  a03=(a03*a18);
+  a04=(a04*a02);
+  a03=(a03+a04);
+  a04=(a33*a03);
+  a46=casadi_sq(a46);
+  a46=(a46*a24);
+  a04=(a04+a46);
+  a46=(a22*a04);
+  a03=(a35*a03);
+  a02=casadi_sq(a43);
+  a02=(a02*a24);
+  a03=(a03-a02);
+  a02=(a21*a03);
+  a46=(a46-a02);
+  a02=arg[0]? arg[0][6] : 0;
+  a46=(a46*a02);
+  a47=(a47+a46);
+  a42=(a12*a42);
+  a34=(a11*a34);
+  a42=(a42-a34);
+  a50=(a11*a50);
+  a51=(a12*a51);
+  a50=(a50-a51);
+  a42=(a42+a50);
+  a07=(a07*a20);
+  a08=(a08*a15);
+  a07=(a07+a08);
+  a08=(a42*a07);
+  a52=casadi_sq(a52);
+  a52=(a52*a25);
+  a08=(a08+a52);
+  a52=(a06*a08);
+  a07=(a48*a07);
+  a15=casadi_sq(a49);
+  a15=(a15*a25);
+  a07=(a07-a15);
+  a15=(a11*a07);
+  a52=(a52-a15);
+  a15=arg[0]? arg[0][7] : 0;
+  a52=(a52*a15);
+  a47=(a47+a52);
+  a21=(a21*a33);
+  a52=arg[0]? arg[0][8] : 0;
+  a21=(a21*a52);
+  a47=(a47-a21);
+  a11=(a11*a42);
+  a21=arg[0]? arg[0][9] : 0;
+  a11=(a11*a21);
+  a47=(a47-a11);
+  a11=(a22*a43);
+  a25=arg[0]? arg[0][10] : 0;
+  a11=(a11*a25);
+  a47=(a47+a11);
+  a11=(a06*a49);
+  a20=arg[0]? arg[0][11] : 0;
+  a11=(a11*a20);
+  a47=(a47+a11);
+  a11=0.;
+  a50=(a11<=a43);
+  a51=(a50?a28:0);
+  a50=(!a50);
+  a34=-1.;
+  a50=(a50?a34:0);
+  a51=(a51+a50);
+  a50=(a22*a51);
+  a46=arg[0]? arg[0][12] : 0;
+  a50=(a50*a46);
+  a47=(a47+a50);
+  a11=(a11<=a49);
+  a50=(a11?a28:0);
+  a11=(!a11);
+  a11=(a11?a34:0);
+  a50=(a50+a11);
+  a11=(a06*a50);
+  a34=arg[0]? arg[0][13] : 0;
+  a11=(a11*a34);
+  a47=(a47+a11);
+  a11=(a31*a47);
+  a24=(a22*a30);
+  a18=(a06*a32);
+  a24=(a24+a18);
+  a03=(a05*a03);
+  a04=(a30*a04);
+  a03=(a03-a04);
+  a03=(a03*a02);
+  a35=(a30*a35);
+  a35=(a35*a29);
+  a48=(a32*a48);
+  a48=(a48*a00);
+  a35=(a35+a48);
+  a03=(a03-a35);
+  a07=(a12*a07);
+  a08=(a32*a08);
+  a07=(a07-a08);
+  a07=(a07*a15);
+  a03=(a03+a07);
+  a05=(a05*a33);
+  a05=(a05*a52);
+  a03=(a03+a05);
+  a12=(a12*a42);
+  a12=(a12*a21);
+  a03=(a03+a12);
+  a43=(a30*a43);
+  a43=(a43*a25);
+  a03=(a03-a43);
+  a49=(a32*a49);
+  a49=(a49*a20);
+  a03=(a03-a49);
+  a51=(a30*a51);
+  a51=(a51*a46);
+  a03=(a03-a51);
+  a50=(a32*a50);
+  a50=(a50*a34);
+  a03=(a03-a50);
+  a50=(a24*a03);
+  a11=(a11+a50);
+  a50=casadi_sq(a22);
+  a51=casadi_sq(a06);
+  a50=(a50+a51);
+  a31=(a50*a31);
+  a51=(a30*a22);
+  a49=(a32*a06);
+  a51=(a51+a49);
+  a24=(a24*a51);
+  a31=(a31-a24);
+  a11=(a11/a31);
+  a22=(a22*a11);
+  a50=(a50*a03);
+  a51=(a51*a47);
+  a50=(a50+a51);
+  a50=(a50/a31);
+  a30=(a30*a50);
+  a22=(a22-a30);
+  a06=(a06*a11);
+  a32=(a32*a50);
+  a06=(a06-a32);
+  a32=(a22+a06);
+  a32=(a32+a29);
+  a32=(a32+a00);
+  a32=(a32+a02);
+  a32=(a32+a15);
+  a32=(a32+a52);
+  a32=(a32+a21);
+  a32=(a32+a25);
+  a32=(a32+a20);
+  a32=(a32+a46);
+  a32=(a32+a34);
+  a32=(a32+a17);
+  a32=(a32+a14);
+  a32=(a32+a39);
+  a32=(a32+a38);
+  a32=casadi_fabs(a32);
+  a50=casadi_inf;
+  a32=(a32<a50);
+  a50=(a23&&a32);
+  a50=(a10&&a50);
+  a11=arg[5]? arg[5][8] : 0;
+  a30=(-a11);
+  a30=casadi_fmax(a22,a30);
+  a30=casadi_fmin(a30,a11);
+  a30=(a50?a30:0);
+  if (res[0]!=0) res[0][0]=a30;
+  a30=arg[5]? arg[5][9] : 0;
+  a31=(-a30);
+  a31=casadi_fmax(a06,a31);
+  a31=casadi_fmin(a31,a30);
+  a31=(a50?a31:0);
+  if (res[0]!=0) res[0][1]=a31;
+  a31=(a10&&a32);
+  a51=(a31?a17:0);
+  a47=(!a31);
+  a09=(a47?a09:0);
+  a51=(a51+a09);
+  if (res[1]!=0) res[1][0]=a51;
+  a51=(a31?a14:0);
+  a13=(a47?a13:0);
+  a51=(a51+a13);
+  if (res[1]!=0) res[1][1]=a51;
+  a51=(a31?a39:0);
+  a37=(a47?a37:0);
+  a51=(a51+a37);
+  if (res[1]!=0) res[1][2]=a51;
+  a31=(a31?a38:0);
+  a47=(a47?a45:0);
+  a31=(a31+a47);
+  if (res[1]!=0) res[1][3]=a31;
+  a31=(a50?a29:0);
+  a47=(!a50);
+  a29=(a47?a29:0);
+  a31=(a31+a29);
+  if (res[1]!=0) res[1][4]=a31;
+  a31=(a50?a00:0);
+  a00=(a47?a00:0);
+  a31=(a31+a00);
+  if (res[1]!=0) res[1][5]=a31;
+  a31=(a50?a02:0);
+  a02=(a47?a02:0);
+  a31=(a31+a02);
+  if (res[1]!=0) res[1][6]=a31;
+  a31=(a50?a15:0);
+  a15=(a47?a15:0);
+  a31=(a31+a15);
+  if (res[1]!=0) res[1][7]=a31;
+  a31=(a50?a52:0);
+  a52=(a47?a52:0);
+  a31=(a31+a52);
+  if (res[1]!=0) res[1][8]=a31;
+  a31=(a50?a21:0);
+  a21=(a47?a21:0);
+  a31=(a31+a21);
+  if (res[1]!=0) res[1][9]=a31;
+  a31=(a50?a25:0);
+  a25=(a47?a25:0);
+  a31=(a31+a25);
+  if (res[1]!=0) res[1][10]=a31;
+  a31=(a50?a20:0);
+  a20=(a47?a20:0);
+  a31=(a31+a20);
+  if (res[1]!=0) res[1][11]=a31;
+  a31=(a50?a46:0);
+  a46=(a47?a46:0);
+  a31=(a31+a46);
+  if (res[1]!=0) res[1][12]=a31;
+  a50=(a50?a34:0);
+  a47=(a47?a34:0);
+  a50=(a50+a47);
+  if (res[1]!=0) res[1][13]=a50;
+  a22=casadi_fabs(a22);
+  a22=(a22/a11);
+  a06=casadi_fabs(a06);
+  a06=(a06/a30);
+  a22=casadi_fmax(a22,a06);
+  a22=(a28<a22);
+  a22=(a22?a19:0);
+  a22=(a32?a22:0);
+  a32=(!a32);
+  a19=3.;
+  a32=(a32?a19:0);
+  a22=(a22+a32);
+  a22=(a23?a22:0);
+  a23=(!a23);
+  a23=(a23?a28:0);
+  a22=(a22+a23);
+  a22=(a10?a22:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a22=(a22+a10);
+  if (res[2]!=0) res[2][0]=a22;
+  if (res[3]!=0) res[3][0]=a17;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a39;
+  if (res[3]!=0) res[3][3]=a38;
+  if (res[3]!=0) res[3][4]=a41;
+  if (res[3]!=0) res[3][5]=a01;
+  if (res[3]!=0) res[3][6]=a36;
+  if (res[3]!=0) res[3][7]=a44;
+  if (res[3]!=0) res[3][8]=a26;
+  if (res[3]!=0) res[3][9]=a27;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f28(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_ctc_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[15])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][14] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][6] : 0;
+  a18=(a18/a19);
+  a24=(a04*a18);
+  a02=(a02/a19);
+  a19=(a03*a02);
+  a24=(a24-a19);
+  a19=casadi_fabs(a24);
+  a20=(a20/a22);
+  a25=(a08*a20);
+  a15=(a15/a22);
+  a22=(a07*a15);
+  a25=(a25-a22);
+  a22=casadi_fabs(a25);
+  a26=(a19+a22);
+  a19=(a19-a22);
+  a19=casadi_fabs(a19);
+  a26=(a26-a19);
+  a19=2.;
+  a26=(a26/a19);
+  a23=(a23<=a26);
+  a22=arg[5]? arg[5][7] : 0;
+  a27=5.0000000000000000e-01;
+  a28=1.;
+  a29=casadi_sq(a18);
+  a30=casadi_sq(a02);
+  a29=(a29-a30);
+  a30=casadi_sq(a20);
+  a31=casadi_sq(a15);
+  a30=(a30-a31);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a30=(2.*a18);
+  a30=(a30*a02);
+  a31=(2.*a20);
+  a31=(a31*a15);
+  a30=(a30+a31);
+  a30=casadi_sq(a30);
+  a29=(a29+a30);
+  a29=sqrt(a29);
+  a29=(a27*a29);
+  a29=(a28-a29);
+  a30=casadi_fabs(a29);
+  a29=(a29+a30);
+  a27=(a27*a29);
+  a27=sqrt(a27);
+  a22=(a22<=a27);
+  a23=(a23&&a22);
+  a22=(a06*a18);
+  a29=(a05*a22);
+  a30=(a00*a02);
+  a31=(a30*a21);
+  a29=(a29-a31);
+  a22=(a22/a29);
+  a06=(a06*a20);
+  a31=(a12*a06);
+  a32=(a00*a15);
+  a33=(a32*a11);
+  a31=(a31-a33);
+  a06=(a06/a31);
+  a30=(a30/a29);
+  a33=(-a30);
+  a32=(a32/a31);
+  a34=(-a32);
+  a35=arg[4]? arg[4][0] : 0;
+  a36=arg[5]? arg[5][2] : 0;
+  a37=arg[3]? arg[3][0] : 0;
+  a38=arg[0]? arg[0][2] : 0;
+  a39=arg[5]? arg[5][5] : 0;
+  a17=(a21+a17);
+  a17=(a17+a09);
+  a09=arg[0]? arg[0][0] : 0;
+  a40=(a17-a09);
+  a41=arg[5]? arg[5][4] : 0;
+  a40=(a40/a41);
+  a40=(a40-a38);
+  a40=(a39*a40);
+  a40=(a38+a40);
+  a37=(a37-a40);
+  a36=(a36*a37);
+  a35=(a35+a36);
+  a36=arg[5]? arg[5][0] : 0;
+  a42=arg[2]? arg[2][0] : 0;
+  a42=(a42-a17);
+  a36=(a36*a42);
+  a35=(a35+a36);
+  a36=(a22*a35);
+  a43=arg[4]? arg[4][1] : 0;
+  a44=arg[5]? arg[5][3] : 0;
+  a45=arg[3]? arg[3][1] : 0;
+  a46=arg[0]? arg[0][3] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[0]? arg[0][1] : 0;
+  a01=(a14-a13);
+  a01=(a01/a41);
+  a01=(a01-a46);
+  a39=(a39*a01);
+  a39=(a46+a39);
+  a45=(a45-a39);
+  a44=(a44*a45);
+  a43=(a43+a44);
+  a44=arg[5]? arg[5][1] : 0;
+  a01=arg[2]? arg[2][1] : 0;
+  a01=(a01-a14);
+  a44=(a44*a01);
+  a43=(a43+a44);
+  a44=(a30*a43);
+  a36=(a36-a44);
+  a44=(a22*a40);
+  a41=(a30*a39);
+  a44=(a44-a41);
+  a41=(a00*a44);
+  a16=(a41*a04);
+  a16=(a16*a44);
+  a05=(a05/a29);
+  a47=(a05*a39);
+  a21=(a21/a29);
+  a29=(a21*a40);
+  a47=(a47-a29);
+  a29=(a00*a47);
+  a48=(a29*a02);
+  a48=(a48*a47);
+  a16=(a16+a48);
+  a48=(a30*a16);
+  a41=(a41*a03);
+  a41=(a41*a44);
+  a29=(a29*a18);
+  a29=(a29*a47);
+  a41=(a41+a29);
+  a29=(a22*a41);
+  a48=(a48-a29);
+  a36=(a36+a48);
+  a48=(a22*a36);
+  a29=arg[0]? arg[0][4] : 0;
+  a48=(a48*a29);
+  a49=(a06*a35);
+  a50=(a32*a43);
+  a49=(a49-a50);
+  a50=(a06*a40);
+  a51=(a32*a39);
+  a50=(a50-a51);
+  a51=(a00*a50);
+  a52=(a51*a08);
+  a52=(a52*a50);
+  a12=(a12/a31);
+  a53=(a12*a39);
+  a11=(a11/a31);
+  a31=(a11*a40);
+  a53=(a53-a31);
+  a31=(a00*a53);
+  a54=(a31*a15);
+  a54=(a54*a53);
+  a52=(a52+a54);
+  a54=(a32*a52);
+  a51=(a51*a07);
+  a51=(a51*a50);
+  a31=(a31*a20);
+  a31=(a31*a53);
+  a51=(a51+a31);
+  a31=(a06*a51);
+  a54=(a54-a31);
+  a49=(a49+a54);
+  a54=(a06*a49);
+  a31=arg[0]? arg[0][5] : 0;
+  a54=(a54*a31);
+  a48=(a48+a54);
+  a54=(a05*a43);
+  a55=(a21*a35);
+  a54=(a54-a55);
+  a41=(a21*a41);
+  a16=(a05*a16);
+  a41=(a41-a16);
+  a54=(a54+a41);
+  a03=(a03*a18);
+  a04=(a04*a02);
+  a03=(a03+a04);
+  a04=(a54*a03);
+  a47=casadi_sq(a47);
+  a47=(a47*a24);
+  a04=(a04+a47);
+  a47=(a22*a04);
+  a03=(a36*a03);
+  a02=casadi_sq(a44);
+  a02=(a02*a24);
+  a03=(a03-a02);
+  a02=(a21*a03);
+  a47=(a47-a02);
+  a02=arg[0]? arg[0][6] : 0;
+  a47=(a47*a02);
+  a48=(a48+a47);
+  a43=(a12*a43);
+  a35=(a11*a35);
+  a43=(a43-a35);
+  a51=(a11*a51);
+  a52=(a12*a52);
+  a51=(a51-a52);
+  a43=(a43+a51);
+  a07=(a07*a20);
+  a08=(a08*a15);
+  a07=(a07+a08);
+  a08=(a43*a07);
+  a53=casadi_sq(a53);
+  a53=(a53*a25);
+  a08=(a08+a53);
+  a53=(a06*a08);
+  a07=(a49*a07);
+  a15=casadi_sq(a50);
+  a15=(a15*a25);
+  a07=(a07-a15);
+  a15=(a11*a07);
+  a53=(a53-a15);
+  a15=arg[0]? arg[0][7] : 0;
+  a53=(a53*a15);
+  a48=(a48+a53);
+  a21=(a21*a54);
+  a53=arg[0]? arg[0][8] : 0;
+  a21=(a21*a53);
+  a48=(a48-a21);
+  a11=(a11*a43);
+  a21=arg[0]? arg[0][9] : 0;
+  a11=(a11*a21);
+  a48=(a48-a11);
+  a11=(a22*a44);
+  a25=arg[0]? arg[0][10] : 0;
+  a11=(a11*a25);
+  a48=(a48+a11);
+  a11=(a06*a50);
+  a20=arg[0]? arg[0][11] : 0;
+  a11=(a11*a20);
+  a48=(a48+a11);
+  a11=0.;
+  a51=(a11<=a44);
+  a52=(a51?a28:0);
+  a51=(!a51);
+  a35=-1.;
+  a51=(a51?a35:0);
+  a52=(a52+a51);
+  a51=(a22*a52);
+  a47=arg[0]? arg[0][12] : 0;
+  a51=(a51*a47);
+  a48=(a48+a51);
+  a11=(a11<=a50);
+  a51=(a11?a28:0);
+  a11=(!a11);
+  a11=(a11?a35:0);
+  a51=(a51+a11);
+  a11=(a06*a51);
+  a35=arg[0]? arg[0][13] : 0;
+  a11=(a11*a35);
+  a48=(a48+a11);
+  a03=(a05*a03);
+  a04=(a30*a04);
+  a03=(a03-a04);
+  a03=(a03*a02);
+  a36=(a30*a36);
+  a36=(a36*a29);
+  a49=(a32*a49);
+  a49=(a49*a31);
+  a36=(a36+a49);
+  a03=(a03-a36);
+  a07=(a12*a07);
+  a08=(a32*a08);
+  a07=(a07-a08);
+  a07=(a07*a15);
+  a03=(a03+a07);
+  a05=(a05*a54);
+  a05=(a05*a53);
+  a03=(a03+a05);
+  a12=(a12*a43);
+  a12=(a12*a21);
+  a03=(a03+a12);
+  a44=(a30*a44);
+  a44=(a44*a25);
+  a03=(a03-a44);
+  a50=(a32*a50);
+  a50=(a50*a20);
+  a03=(a03-a50);
+  a30=(a30*a52);
+  a30=(a30*a47);
+  a03=(a03-a30);
+  a32=(a32*a51);
+  a32=(a32*a35);
+  a03=(a03-a32);
+  a32=arg[5]? arg[5][8] : 0;
+  a51=arg[5]? arg[5][9] : 0;
+  arg[6]=w+0;
+  arg[7]=w+4;
+  arg[8] = arg[5]? arg[5] + 8 : 0;
+  arg[9] = arg[5]? arg[5] + 10 : 0;
+  arg[10] = arg[5]? arg[5] + 12 : 0;
+  res[4]=w+12;
+  res[5]=w+14;
+  w[0] = a22;
+  w[1] = a06;
+  w[2] = a33;
+  w[3] = a34;
+  w[4] = a48;
+  w[5] = a03;
+  if (casadi_f16(arg+6, res+4, iw, w+15, 0)) return 1;
+  a22 = w[12];
+  a06 = w[13];
+  a33 = w[14];
+  a34=(a22+a06);
+  a34=(a34+a29);
+  a34=(a34+a31);
+  a34=(a34+a02);
+  a34=(a34+a15);
+  a34=(a34+a53);
+  a34=(a34+a21);
+  a34=(a34+a25);
+  a34=(a34+a20);
+  a34=(a34+a47);
+  a34=(a34+a35);
+  a34=(a34+a17);
+  a34=(a34+a14);
+  a34=(a34+a40);
+  a34=(a34+a39);
+  a34=casadi_fabs(a34);
+  a48=casadi_inf;
+  a34=(a34<a48);
+  a48=(a23&&a34);
+  a48=(a10&&a48);
+  a03=(-a32);
+  a22=casadi_fmax(a22,a03);
+  a22=casadi_fmin(a22,a32);
+  a22=(a48?a22:0);
+  if (res[0]!=0) res[0][0]=a22;
+  a22=(-a51);
+  a06=casadi_fmax(a06,a22);
+  a06=casadi_fmin(a06,a51);
+  a06=(a48?a06:0);
+  if (res[0]!=0) res[0][1]=a06;
+  a06=(a10&&a34);
+  a51=(a06?a17:0);
+  a22=(!a06);
+  a09=(a22?a09:0);
+  a51=(a51+a09);
+  if (res[1]!=0) res[1][0]=a51;
+  a51=(a06?a14:0);
+  a13=(a22?a13:0);
+  a51=(a51+a13);
+  if (res[1]!=0) res[1][1]=a51;
+  a51=(a06?a40:0);
+  a38=(a22?a38:0);
+  a51=(a51+a38);
+  if (res[1]!=0) res[1][2]=a51;
+  a06=(a06?a39:0);
+  a22=(a22?a46:0);
+  a06=(a06+a22);
+  if (res[1]!=0) res[1][3]=a06;
+  a06=(a48?a29:0);
+  a22=(!a48);
+  a29=(a22?a29:0);
+  a06=(a06+a29);
+  if (res[1]!=0) res[1][4]=a06;
+  a06=(a48?a31:0);
+  a31=(a22?a31:0);
+  a06=(a06+a31);
+  if (res[1]!=0) res[1][5]=a06;
+  a06=(a48?a02:0);
+  a02=(a22?a02:0);
+  a06=(a06+a02);
+  if (res[1]!=0) res[1][6]=a06;
+  a06=(a48?a15:0);
+  a15=(a22?a15:0);
+  a06=(a06+a15);
+  if (res[1]!=0) res[1][7]=a06;
+  a06=(a48?a53:0);
+  a53=(a22?a53:0);
+  a06=(a06+a53);
+  if (res[1]!=0) res[1][8]=a06;
+  a06=(a48?a21:0);
+  a21=(a22?a21:0);
+  a06=(a06+a21);
+  if (res[1]!=0) res[1][9]=a06;
+  a06=(a48?a25:0);
+  a25=(a22?a25:0);
+  a06=(a06+a25);
+  if (res[1]!=0) res[1][10]=a06;
+  a06=(a48?a20:0);
+  a20=(a22?a20:0);
+  a06=(a06+a20);
+  if (res[1]!=0) res[1][11]=a06;
+  a06=(a48?a47:0);
+  a47=(a22?a47:0);
+  a06=(a06+a47);
+  if (res[1]!=0) res[1][12]=a06;
+  a48=(a48?a35:0);
+  a22=(a22?a35:0);
+  a48=(a48+a22);
+  if (res[1]!=0) res[1][13]=a48;
+  a48=(a33==a19);
+  a19=(a48?a19:0);
+  a48=(!a48);
+  a33=(a33==a28);
+  a22=4.;
+  a33=(a33?a22:0);
+  a48=(a48?a33:0);
+  a19=(a19+a48);
+  a19=(a34?a19:0);
+  a34=(!a34);
+  a48=3.;
+  a34=(a34?a48:0);
+  a19=(a19+a34);
+  a19=(a23?a19:0);
+  a23=(!a23);
+  a23=(a23?a28:0);
+  a19=(a19+a23);
+  a19=(a10?a19:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a19=(a19+a10);
+  if (res[2]!=0) res[2][0]=a19;
+  if (res[3]!=0) res[3][0]=a17;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a40;
+  if (res[3]!=0) res[3][3]=a39;
+  if (res[3]!=0) res[3][4]=a42;
+  if (res[3]!=0) res[3][5]=a01;
+  if (res[3]!=0) res[3][6]=a37;
+  if (res[3]!=0) res[3][7]=a45;
+  if (res[3]!=0) res[3][8]=a26;
+  if (res[3]!=0) res[3][9]=a27;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f29(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 51;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 51*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[11],K[8],tau_ff[2])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][10] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][2] : 0;
+  a18=(a18/a19);
+  a04=(a04*a18);
+  a02=(a02/a19);
+  a03=(a03*a02);
+  a04=(a04-a03);
+  a04=casadi_fabs(a04);
+  a20=(a20/a22);
+  a08=(a08*a20);
+  a15=(a15/a22);
+  a07=(a07*a15);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a07=(a04+a08);
+  a04=(a04-a08);
+  a04=casadi_fabs(a04);
+  a07=(a07-a04);
+  a04=2.;
+  a07=(a07/a04);
+  a23=(a23<=a07);
+  a08=arg[5]? arg[5][3] : 0;
+  a22=5.0000000000000000e-01;
+  a03=1.;
+  a19=casadi_sq(a18);
+  a24=casadi_sq(a02);
+  a19=(a19-a24);
+  a24=casadi_sq(a20);
+  a25=casadi_sq(a15);
+  a24=(a24-a25);
+  a19=(a19+a24);
+  a19=casadi_sq(a19);
+  a24=(2.*a18);
+  a24=(a24*a02);
+  a25=(2.*a20);
+  a25=(a25*a15);
+  a24=(a24+a25);
+  a24=casadi_sq(a24);
+  a19=(a19+a24);
+  a19=sqrt(a19);
+  a19=(a22*a19);
+  a19=(a03-a19);
+  a24=casadi_fabs(a19);
+  a19=(a19+a24);
+  a22=(a22*a19);
+  a22=sqrt(a22);
+  a08=(a08<=a22);
+  a23=(a23&&a08);
+  a18=(a06*a18);
+  a05=(a05*a18);
+  a02=(a00*a02);
+  a08=(a02*a21);
+  a05=(a05-a08);
+  a18=(a18/a05);
+  a02=(a02/a05);
+  a05=casadi_sq(a02);
+  a00=(a00*a15);
+  a06=(a06*a20);
+  a12=(a12*a06);
+  a11=(a00*a11);
+  a12=(a12-a11);
+  a00=(a00/a12);
+  a11=casadi_sq(a00);
+  a05=(a05+a11);
+  a11=arg[7]? arg[7][0] : 0;
+  a20=arg[6]? arg[6][0] : 0;
+  a21=(a21+a17);
+  a21=(a21+a09);
+  a09=arg[2]? arg[2][0] : 0;
+  a17=(a21-a09);
+  a20=(a20*a17);
+  a15=arg[6]? arg[6][1] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[2]? arg[2][1] : 0;
+  a01=(a14-a13);
+  a15=(a15*a01);
+  a20=(a20+a15);
+  a15=arg[6]? arg[6][2] : 0;
+  a16=arg[0]? arg[0][2] : 0;
+  a08=arg[5]? arg[5][1] : 0;
+  a19=arg[0]? arg[0][0] : 0;
+  a24=(a21-a19);
+  a25=arg[5]? arg[5][0] : 0;
+  a24=(a24/a25);
+  a24=(a24-a16);
+  a24=(a08*a24);
+  a24=(a16+a24);
+  a26=arg[3]? arg[3][0] : 0;
+  a27=(a24-a26);
+  a15=(a15*a27);
+  a20=(a20+a15);
+  a15=arg[6]? arg[6][3] : 0;
+  a28=arg[0]? arg[0][3] : 0;
+  a29=arg[0]? arg[0][1] : 0;
+  a30=(a14-a29);
+  a30=(a30/a25);
+  a30=(a30-a28);
+  a08=(a08*a30);
+  a08=(a28+a08);
+  a30=arg[3]? arg[3][1] : 0;
+  a25=(a08-a30);
+  a15=(a15*a25);
+  a20=(a20+a15);
+  a11=(a11-a20);
+  a20=(a18*a11);
+  a06=(a06/a12);
+  a12=arg[7]? arg[7][1] : 0;
+  a15=arg[6]? arg[6][4] : 0;
+  a15=(a15*a17);
+  a17=arg[6]? arg[6][5] : 0;
+  a17=(a17*a01);
+  a15=(a15+a17);
+  a17=arg[6]? arg[6][6] : 0;
+  a17=(a17*a27);
+  a15=(a15+a17);
+  a17=arg[6]? arg[6][7] : 0;
+  a17=(a17*a25);
+  a15=(a15+a17);
+  a12=(a12-a15);
+  a15=(a06*a12);
+  a20=(a20+a15);
+  a15=(a05*a20);
+  a17=(a18*a02);
+  a25=(a06*a00);
+  a17=(a17+a25);
+  a11=(a02*a11);
+  a12=(a00*a12);
+  a11=(a11+a12);
+  a12=(a17*a11);
+  a15=(a15-a12);
+  a12=casadi_sq(a18);
+  a25=casadi_sq(a06);
+  a12=(a12+a25);
+  a05=(a12*a05);
+  a25=(a02*a18);
+  a27=(a00*a06);
+  a25=(a25+a27);
+  a17=(a17*a25);
+  a05=(a05-a17);
+  a15=(a15/a05);
+  a18=(a18*a15);
+  a25=(a25*a20);
+  a12=(a12*a11);
+  a25=(a25-a12);
+  a25=(a25/a05);
+  a02=(a02*a25);
+  a18=(a18-a02);
+  a06=(a06*a15);
+  a00=(a00*a25);
+  a06=(a06-a00);
+  a00=(a18+a06);
+  a25=arg[0]? arg[0][4] : 0;
+  a00=(a00+a25);
+  a15=arg[0]? arg[0][5] : 0;
+  a00=(a00+a15);
+  a02=arg[0]? arg[0][6] : 0;
+  a00=(a00+a02);
+  a05=arg[0]? arg[0][7] : 0;
+  a00=(a00+a05);
+  a12=arg[0]? arg[0][8] : 0;
+  a00=(a00+a12);
+  a11=arg[0]? arg[0][9] : 0;
+  a00=(a00+a11);
+  a20=arg[0]? arg[0][10] : 0;
+  a00=(a00+a20);
+  a17=arg[0]? arg[0][11] : 0;
+  a00=(a00+a17);
+  a27=arg[0]? arg[0][12] : 0;
+  a00=(a00+a27);
+  a01=arg[0]? arg[0][13] : 0;
+  a00=(a00+a01);
+  a00=(a00+a21);
+  a00=(a00+a14);
+  a00=(a00+a24);
+  a00=(a00+a08);
+  a00=casadi_fabs(a00);
+  a31=casadi_inf;
+  a00=(a00<a31);
+  a31=(a23&&a00);
+  a31=(a10&&a31);
+  a32=arg[5]? arg[5][4] : 0;
+  a33=(-a32);
+  a33=casadi_fmax(a18,a33);
+  a33=casadi_fmin(a33,a32);
+  a33=(a31?a33:0);
+  if (res[0]!=0) res[0][0]=a33;
+  a33=arg[5]? arg[5][5] : 0;
+  a34=(-a33);
+  a34=casadi_fmax(a06,a34);
+  a34=casadi_fmin(a34,a33);
+  a34=(a31?a34:0);
+  if (res[0]!=0) res[0][1]=a34;
+  a34=(a10&&a00);
+  a35=(a34?a21:0);
+  a36=(!a34);
+  a19=(a36?a19:0);
+  a35=(a35+a19);
+  if (res[1]!=0) res[1][0]=a35;
+  a35=(a34?a14:0);
+  a29=(a36?a29:0);
+  a35=(a35+a29);
+  if (res[1]!=0) res[1][1]=a35;
+  a35=(a34?a24:0);
+  a16=(a36?a16:0);
+  a35=(a35+a16);
+  if (res[1]!=0) res[1][2]=a35;
+  a34=(a34?a08:0);
+  a36=(a36?a28:0);
+  a34=(a34+a36);
+  if (res[1]!=0) res[1][3]=a34;
+  a34=(a31?a25:0);
+  a36=(!a31);
+  a25=(a36?a25:0);
+  a34=(a34+a25);
+  if (res[1]!=0) res[1][4]=a34;
+  a34=(a31?a15:0);
+  a15=(a36?a15:0);
+  a34=(a34+a15);
+  if (res[1]!=0) res[1][5]=a34;
+  a34=(a31?a02:0);
+  a02=(a36?a02:0);
+  a34=(a34+a02);
+  if (res[1]!=0) res[1][6]=a34;
+  a34=(a31?a05:0);
+  a05=(a36?a05:0);
+  a34=(a34+a05);
+  if (res[1]!=0) res[1][7]=a34;
+  a34=(a31?a12:0);
+  a12=(a36?a12:0);
+  a34=(a34+a12);
+  if (res[1]!=0) res[1][8]=a34;
+  a34=(a31?a11:0);
+  a11=(a36?a11:0);
+  a34=(a34+a11);
+  if (res[1]!=0) res[1][9]=a34;
+  a34=(a31?a20:0);
+  a20=(a36?a20:0);
+  a34=(a34+a20);
+  if (res[1]!=0) res[1][10]=a34;
+  a34=(a31?a17:0);
+  a17=(a36?a17:0);
+  a34=(a34+a17);
+  if (res[1]!=0) res[1][11]=a34;
+  a34=(a31?a27:0);
+  a27=(a36?a27:0);
+  a34=(a34+a27);
+  if (res[1]!=0) res[1][12]=a34;
+  a31=(a31?a01:0);
+  a36=(a36?a01:0);
+  a31=(a31+a36);
+  if (res[1]!=0) res[1][13]=a31;
+  a31=0.;
+  a18=casadi_fabs(a18);
+  a18=(a18-a32);
+  a06=casadi_fabs(a06);
+  a06=(a06-a33);
+  a18=casadi_fmax(a18,a06);
+  a31=(a31<a18);
+  a31=(a31?a04:0);
+  a31=(a00?a31:0);
+  a00=(!a00);
+  a04=3.;
+  a00=(a00?a04:0);
+  a31=(a31+a00);
+  a31=(a23?a31:0);
+  a23=(!a23);
+  a23=(a23?a03:0);
+  a31=(a31+a23);
+  a31=(a10?a31:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a31=(a31+a10);
+  if (res[2]!=0) res[2][0]=a31;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a24;
+  if (res[3]!=0) res[3][3]=a08;
+  a09=(a09-a21);
+  if (res[3]!=0) res[3][4]=a09;
+  a13=(a13-a14);
+  if (res[3]!=0) res[3][5]=a13;
+  a26=(a26-a24);
+  if (res[3]!=0) res[3][6]=a26;
+  a30=(a30-a08);
+  if (res[3]!=0) res[3][7]=a30;
+  if (res[3]!=0) res[3][8]=a07;
+  if (res[3]!=0) res[3][9]=a22;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f30(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s10;
+    case 6: return casadi_s2;
+    case 7: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[11],K[8],tau_ff[2])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][10] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][2] : 0;
+  a18=(a18/a19);
+  a04=(a04*a18);
+  a02=(a02/a19);
+  a03=(a03*a02);
+  a04=(a04-a03);
+  a04=casadi_fabs(a04);
+  a20=(a20/a22);
+  a08=(a08*a20);
+  a15=(a15/a22);
+  a07=(a07*a15);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a07=(a04+a08);
+  a04=(a04-a08);
+  a04=casadi_fabs(a04);
+  a07=(a07-a04);
+  a04=2.;
+  a07=(a07/a04);
+  a23=(a23<=a07);
+  a08=arg[5]? arg[5][3] : 0;
+  a22=5.0000000000000000e-01;
+  a03=1.;
+  a19=casadi_sq(a18);
+  a24=casadi_sq(a02);
+  a19=(a19-a24);
+  a24=casadi_sq(a20);
+  a25=casadi_sq(a15);
+  a24=(a24-a25);
+  a19=(a19+a24);
+  a19=casadi_sq(a19);
+  a24=(2.*a18);
+  a24=(a24*a02);
+  a25=(2.*a20);
+  a25=(a25*a15);
+  a24=(a24+a25);
+  a24=casadi_sq(a24);
+  a19=(a19+a24);
+  a19=sqrt(a19);
+  a19=(a22*a19);
+  a19=(a03-a19);
+  a24=casadi_fabs(a19);
+  a19=(a19+a24);
+  a22=(a22*a19);
+  a22=sqrt(a22);
+  a08=(a08<=a22);
+  a23=(a23&&a08);
+  a18=(a06*a18);
+  a05=(a05*a18);
+  a02=(a00*a02);
+  a08=(a02*a21);
+  a05=(a05-a08);
+  a18=(a18/a05);
+  a02=(a02/a05);
+  a05=casadi_sq(a02);
+  a00=(a00*a15);
+  a06=(a06*a20);
+  a12=(a12*a06);
+  a11=(a00*a11);
+  a12=(a12-a11);
+  a00=(a00/a12);
+  a11=casadi_sq(a00);
+  a05=(a05+a11);
+  a11=arg[7]? arg[7][0] : 0;
+  a20=arg[6]? arg[6][0] : 0;
+  a21=(a21+a17);
+  a21=(a21+a09);
+  a09=arg[2]? arg[2][0] : 0;
+  a17=(a21-a09);
+  a20=(a20*a17);
+  a15=arg[6]? arg[6][1] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[2]? arg[2][1] : 0;
+  a01=(a14-a13);
+  a15=(a15*a01);
+  a20=(a20+a15);
+  a15=arg[6]? arg[6][2] : 0;
+  a16=arg[0]? arg[0][2] : 0;
+  a08=arg[5]? arg[5][1] : 0;
+  a19=arg[0]? arg[0][0] : 0;
+  a24=(a21-a19);
+  a25=arg[5]? arg[5][0] : 0;
+  a24=(a24/a25);
+  a24=(a24-a16);
+  a24=(a08*a24);
+  a24=(a16+a24);
+  a26=arg[3]? arg[3][0] : 0;
+  a27=(a24-a26);
+  a15=(a15*a27);
+  a20=(a20+a15);
+  a15=arg[6]? arg[6][3] : 0;
+  a28=arg[0]? arg[0][3] : 0;
+  a29=arg[0]? arg[0][1] : 0;
+  a30=(a14-a29);
+  a30=(a30/a25);
+  a30=(a30-a28);
+  a08=(a08*a30);
+  a08=(a28+a08);
+  a30=arg[3]? arg[3][1] : 0;
+  a25=(a08-a30);
+  a15=(a15*a25);
+  a20=(a20+a15);
+  a11=(a11-a20);
+  a20=(a18*a11);
+  a06=(a06/a12);
+  a12=arg[7]? arg[7][1] : 0;
+  a15=arg[6]? arg[6][4] : 0;
+  a15=(a15*a17);
+  a17=arg[6]? arg[6][5] : 0;
+  a17=(a17*a01);
+  a15=(a15+a17);
+  a17=arg[6]? arg[6][6] : 0;
+  a17=(a17*a27);
+  a15=(a15+a17);
+  a17=arg[6]? arg[6][7] : 0;
+  a17=(a17*a25);
+  a15=(a15+a17);
+  a12=(a12-a15);
+  a15=(a06*a12);
+  a20=(a20+a15);
+  a15=(a05*a20);
+  a17=(a18*a02);
+  a25=(a06*a00);
+  a17=(a17+a25);
+  a11=(a02*a11);
+  a12=(a00*a12);
+  a11=(a11+a12);
+  a12=(a17*a11);
+  a15=(a15-a12);
+  a12=casadi_sq(a18);
+  a25=casadi_sq(a06);
+  a12=(a12+a25);
+  a05=(a12*a05);
+  a25=(a02*a18);
+  a27=(a00*a06);
+  a25=(a25+a27);
+  a17=(a17*a25);
+  a05=(a05-a17);
+  a15=(a15/a05);
+  a18=(a18*a15);
+  a25=(a25*a20);
+  a12=(a12*a11);
+  a25=(a25-a12);
+  a25=(a25/a05);
+  a02=(a02*a25);
+  a18=(a18-a02);
+  a06=(a06*a15);
+  a00=(a00*a25);
+  a06=(a06-a00);
+  a00=(a18+a06);
+  a25=arg[0]? arg[0][4] : 0;
+  a00=(a00+a25);
+  a15=arg[0]? arg[0][5] : 0;
+  a00=(a00+a15);
+  a02=arg[0]? arg[0][6] : 0;
+  a00=(a00+a02);
+  a05=arg[0]? arg[0][7] : 0;
+  a00=(a00+a05);
+  a12=arg[0]? arg[0][8] : 0;
+  a00=(a00+a12);
+  a11=arg[0]? arg[0][9] : 0;
+  a00=(a00+a11);
+  a20=arg[0]? arg[0][10] : 0;
+  a00=(a00+a20);
+  a17=arg[0]? arg[0][11] : 0;
+  a00=(a00+a17);
+  a27=arg[0]? arg[0][12] : 0;
+  a00=(a00+a27);
+  a01=arg[0]? arg[0][13] : 0;
+  a00=(a00+a01);
+  a00=(a00+a21);
+  a00=(a00+a14);
+  a00=(a00+a24);
+  a00=(a00+a08);
+  a00=casadi_fabs(a00);
+  a31=casadi_inf;
+  a00=(a00<a31);
+  a31=(a23&&a00);
+  a31=(a10&&a31);
+  a32=arg[5]? arg[5][4] : 0;
+  a33=(-a32);
+  a33=casadi_fmax(a18,a33);
+  a33=casadi_fmin(a33,a32);
+  a33=(a31?a33:0);
+  if (res[0]!=0) res[0][0]=a33;
+  a33=arg[5]? arg[5][5] : 0;
+  a34=(-a33);
+  a34=casadi_fmax(a06,a34);
+  a34=casadi_fmin(a34,a33);
+  a34=(a31?a34:0);
+  if (res[0]!=0) res[0][1]=a34;
+  a34=(a10&&a00);
+  a35=(a34?a21:0);
+  a36=(!a34);
+  a19=(a36?a19:0);
+  a35=(a35+a19);
+  if (res[1]!=0) res[1][0]=a35;
+  a35=(a34?a14:0);
+  a29=(a36?a29:0);
+  a35=(a35+a29);
+  if (res[1]!=0) res[1][1]=a35;
+  a35=(a34?a24:0);
+  a16=(a36?a16:0);
+  a35=(a35+a16);
+  if (res[1]!=0) res[1][2]=a35;
+  a34=(a34?a08:0);
+  a36=(a36?a28:0);
+  a34=(a34+a36);
+  if (res[1]!=0) res[1][3]=a34;
+  a34=(a31?a25:0);
+  a36=(!a31);
+  a25=(a36?a25:0);
+  a34=(a34+a25);
+  if (res[1]!=0) res[1][4]=a34;
+  a34=(a31?a15:0);
+  a15=(a36?a15:0);
+  a34=(a34+a15);
+  if (res[1]!=0) res[1][5]=a34;
+  a34=(a31?a02:0);
+  a02=(a36?a02:0);
+  a34=(a34+a02);
+  if (res[1]!=0) res[1][6]=a34;
+  a34=(a31?a05:0);
+  a05=(a36?a05:0);
+  a34=(a34+a05);
+  if (res[1]!=0) res[1][7]=a34;
+  a34=(a31?a12:0);
+  a12=(a36?a12:0);
+  a34=(a34+a12);
+  if (res[1]!=0) res[1][8]=a34;
+  a34=(a31?a11:0);
+  a11=(a36?a11:0);
+  a34=(a34+a11);
+  if (res[1]!=0) res[1][9]=a34;
+  a34=(a31?a20:0);
+  a20=(a36?a20:0);
+  a34=(a34+a20);
+  if (res[1]!=0) res[1][10]=a34;
+  a34=(a31?a17:0);
+  a17=(a36?a17:0);
+  a34=(a34+a17);
+  if (res[1]!=0) res[1][11]=a34;
+  a34=(a31?a27:0);
+  a27=(a36?a27:0);
+  a34=(a34+a27);
+  if (res[1]!=0) res[1][12]=a34;
+  a31=(a31?a01:0);
+  a36=(a36?a01:0);
+  a31=(a31+a36);
+  if (res[1]!=0) res[1][13]=a31;
+  a18=casadi_fabs(a18);
+  a18=(a18/a32);
+  a06=casadi_fabs(a06);
+  a06=(a06/a33);
+  a18=casadi_fmax(a18,a06);
+  a18=(a03<a18);
+  a18=(a18?a04:0);
+  a18=(a00?a18:0);
+  a00=(!a00);
+  a04=3.;
+  a00=(a00?a04:0);
+  a18=(a18+a00);
+  a18=(a23?a18:0);
+  a23=(!a23);
+  a23=(a23?a03:0);
+  a18=(a18+a23);
+  a18=(a10?a18:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a18=(a18+a10);
+  if (res[2]!=0) res[2][0]=a18;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a24;
+  if (res[3]!=0) res[3][3]=a08;
+  a09=(a09-a21);
+  if (res[3]!=0) res[3][4]=a09;
+  a13=(a13-a14);
+  if (res[3]!=0) res[3][5]=a13;
+  a26=(a26-a24);
+  if (res[3]!=0) res[3][6]=a26;
+  a30=(a30-a08);
+  if (res[3]!=0) res[3][7]=a30;
+  if (res[3]!=0) res[3][8]=a07;
+  if (res[3]!=0) res[3][9]=a22;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f31(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_minmax_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s10;
+    case 6: return casadi_s2;
+    case 7: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[11],K[8],tau_ff[2])->(tau_a[2],state_next[14],status,diag[10]) */
+static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36;
+  a00=-2.4399999999999999e-01;
+  a01=5.9535999999999999e-02;
+  a02=-2.5000000000000000e-01;
+  a03=arg[1]? arg[1][0] : 0;
+  a04=sin(a03);
+  a05=(a00*a04);
+  a02=(a02+a05);
+  a06=2.4399999999999999e-01;
+  a07=arg[1]? arg[1][1] : 0;
+  a08=sin(a07);
+  a09=(a06*a08);
+  a02=(a02+a09);
+  a09=casadi_sq(a02);
+  a10=4.3300000000000000e-01;
+  a03=cos(a03);
+  a11=(a00*a03);
+  a10=(a10+a11);
+  a07=cos(a07);
+  a11=(a06*a07);
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a01=(a01/a13);
+  a14=casadi_sq(a13);
+  a09=(2.*a09);
+  a12=(2.*a12);
+  a09=(a09+a12);
+  a12=casadi_sq(a09);
+  a14=(a14/a12);
+  a01=(a01-a14);
+  a01=sqrt(a01);
+  a14=2.5000000000000000e-01;
+  a12=(a00*a08);
+  a15=(a14+a12);
+  a16=(a06*a04);
+  a15=(a15+a16);
+  a17=(a01*a15);
+  a13=(a13/a09);
+  a09=(a13*a10);
+  a18=(a17+a09);
+  a19=casadi_sq(a18);
+  a01=(a01*a10);
+  a13=(a13*a02);
+  a02=(a01+a13);
+  a10=casadi_sq(a02);
+  a19=(a19+a10);
+  a19=sqrt(a19);
+  a10=(a00+a19);
+  a10=casadi_fabs(a10);
+  a20=-4.3300000000000000e-01;
+  a21=(a00*a07);
+  a20=(a20+a21);
+  a21=(a06*a03);
+  a20=(a20+a21);
+  a20=(a20+a17);
+  a20=(a20+a09);
+  a22=casadi_sq(a20);
+  a15=(a15+a01);
+  a15=(a15+a13);
+  a23=casadi_sq(a15);
+  a22=(a22+a23);
+  a22=sqrt(a22);
+  a23=(a00+a22);
+  a23=casadi_fabs(a23);
+  a10=casadi_fmax(a10,a23);
+  a23=arg[5]? arg[5][10] : 0;
+  a10=(a10<=a23);
+  a23=arg[5]? arg[5][2] : 0;
+  a18=(a18/a19);
+  a04=(a04*a18);
+  a02=(a02/a19);
+  a03=(a03*a02);
+  a04=(a04-a03);
+  a04=casadi_fabs(a04);
+  a20=(a20/a22);
+  a08=(a08*a20);
+  a15=(a15/a22);
+  a07=(a07*a15);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a07=(a04+a08);
+  a04=(a04-a08);
+  a04=casadi_fabs(a04);
+  a07=(a07-a04);
+  a04=2.;
+  a07=(a07/a04);
+  a23=(a23<=a07);
+  a08=arg[5]? arg[5][3] : 0;
+  a22=5.0000000000000000e-01;
+  a03=1.;
+  a19=casadi_sq(a18);
+  a24=casadi_sq(a02);
+  a19=(a19-a24);
+  a24=casadi_sq(a20);
+  a25=casadi_sq(a15);
+  a24=(a24-a25);
+  a19=(a19+a24);
+  a19=casadi_sq(a19);
+  a24=(2.*a18);
+  a24=(a24*a02);
+  a25=(2.*a20);
+  a25=(a25*a15);
+  a24=(a24+a25);
+  a24=casadi_sq(a24);
+  a19=(a19+a24);
+  a19=sqrt(a19);
+  a19=(a22*a19);
+  a19=(a03-a19);
+  a24=casadi_fabs(a19);
+  a19=(a19+a24);
+  a22=(a22*a19);
+  a22=sqrt(a22);
+  a08=(a08<=a22);
+  a23=(a23&&a08);
+  a18=(a06*a18);
+  a05=(a05*a18);
+  a02=(a00*a02);
+  a08=(a02*a21);
+  a05=(a05-a08);
+  a18=(a18/a05);
+  a06=(a06*a20);
+  a12=(a12*a06);
+  a15=(a00*a15);
+  a11=(a15*a11);
+  a12=(a12-a11);
+  a06=(a06/a12);
+  a02=(a02/a05);
+  a05=(-a02);
+  a15=(a15/a12);
+  a12=(-a15);
+  a11=arg[7]? arg[7][0] : 0;
+  a20=arg[6]? arg[6][0] : 0;
+  a21=(a21+a17);
+  a21=(a21+a09);
+  a09=arg[2]? arg[2][0] : 0;
+  a17=(a21-a09);
+  a20=(a20*a17);
+  a08=arg[6]? arg[6][1] : 0;
+  a14=(a14+a16);
+  a14=(a14+a01);
+  a14=(a14+a13);
+  a13=arg[2]? arg[2][1] : 0;
+  a01=(a14-a13);
+  a08=(a08*a01);
+  a20=(a20+a08);
+  a08=arg[6]? arg[6][2] : 0;
+  a16=arg[0]? arg[0][2] : 0;
+  a19=arg[5]? arg[5][1] : 0;
+  a24=arg[0]? arg[0][0] : 0;
+  a25=(a21-a24);
+  a26=arg[5]? arg[5][0] : 0;
+  a25=(a25/a26);
+  a25=(a25-a16);
+  a25=(a19*a25);
+  a25=(a16+a25);
+  a27=arg[3]? arg[3][0] : 0;
+  a28=(a25-a27);
+  a08=(a08*a28);
+  a20=(a20+a08);
+  a08=arg[6]? arg[6][3] : 0;
+  a29=arg[0]? arg[0][3] : 0;
+  a30=arg[0]? arg[0][1] : 0;
+  a31=(a14-a30);
+  a31=(a31/a26);
+  a31=(a31-a29);
+  a19=(a19*a31);
+  a19=(a29+a19);
+  a31=arg[3]? arg[3][1] : 0;
+  a26=(a19-a31);
+  a08=(a08*a26);
+  a20=(a20+a08);
+  a11=(a11-a20);
+  a20=(a18*a11);
+  a08=arg[7]? arg[7][1] : 0;
+  a32=arg[6]? arg[6][4] : 0;
+  a32=(a32*a17);
+  a17=arg[6]? arg[6][5] : 0;
+  a17=(a17*a01);
+  a32=(a32+a17);
+  a17=arg[6]? arg[6][6] : 0;
+  a17=(a17*a28);
+  a32=(a32+a17);
+  a17=arg[6]? arg[6][7] : 0;
+  a17=(a17*a26);
+  a32=(a32+a17);
+  a08=(a08-a32);
+  a32=(a06*a08);
+  a20=(a20+a32);
+  a02=(a02*a11);
+  a15=(a15*a08);
+  a02=(a02+a15);
+  a02=(-a02);
+  a15=arg[5]? arg[5][4] : 0;
+  a08=arg[5]? arg[5][5] : 0;
+  arg[8]=w+0;
+  arg[9]=w+4;
+  arg[10] = arg[5]? arg[5] + 4 : 0;
+  arg[11] = arg[5]? arg[5] + 6 : 0;
+  arg[12] = arg[5]? arg[5] + 8 : 0;
+  res[4]=w+12;
+  res[5]=w+14;
+  w[0] = a18;
+  w[1] = a06;
+  w[2] = a05;
+  w[3] = a12;
+  w[4] = a20;
+  w[5] = a02;
+  if (casadi_f16(arg+8, res+4, iw, w+15, 0)) return 1;
+  a18 = w[12];
+  a06 = w[13];
+  a05 = w[14];
+  a12=(a18+a06);
+  a20=arg[0]? arg[0][4] : 0;
+  a12=(a12+a20);
+  a02=arg[0]? arg[0][5] : 0;
+  a12=(a12+a02);
+  a11=arg[0]? arg[0][6] : 0;
+  a12=(a12+a11);
+  a32=arg[0]? arg[0][7] : 0;
+  a12=(a12+a32);
+  a17=arg[0]? arg[0][8] : 0;
+  a12=(a12+a17);
+  a26=arg[0]? arg[0][9] : 0;
+  a12=(a12+a26);
+  a28=arg[0]? arg[0][10] : 0;
+  a12=(a12+a28);
+  a01=arg[0]? arg[0][11] : 0;
+  a12=(a12+a01);
+  a33=arg[0]? arg[0][12] : 0;
+  a12=(a12+a33);
+  a34=arg[0]? arg[0][13] : 0;
+  a12=(a12+a34);
+  a12=(a12+a21);
+  a12=(a12+a14);
+  a12=(a12+a25);
+  a12=(a12+a19);
+  a12=casadi_fabs(a12);
+  a35=casadi_inf;
+  a12=(a12<a35);
+  a35=(a23&&a12);
+  a35=(a10&&a35);
+  a36=(-a15);
+  a18=casadi_fmax(a18,a36);
+  a18=casadi_fmin(a18,a15);
+  a18=(a35?a18:0);
+  if (res[0]!=0) res[0][0]=a18;
+  a18=(-a08);
+  a06=casadi_fmax(a06,a18);
+  a06=casadi_fmin(a06,a08);
+  a06=(a35?a06:0);
+  if (res[0]!=0) res[0][1]=a06;
+  a06=(a10&&a12);
+  a08=(a06?a21:0);
+  a18=(!a06);
+  a24=(a18?a24:0);
+  a08=(a08+a24);
+  if (res[1]!=0) res[1][0]=a08;
+  a08=(a06?a14:0);
+  a30=(a18?a30:0);
+  a08=(a08+a30);
+  if (res[1]!=0) res[1][1]=a08;
+  a08=(a06?a25:0);
+  a16=(a18?a16:0);
+  a08=(a08+a16);
+  if (res[1]!=0) res[1][2]=a08;
+  a06=(a06?a19:0);
+  a18=(a18?a29:0);
+  a06=(a06+a18);
+  if (res[1]!=0) res[1][3]=a06;
+  a06=(a35?a20:0);
+  a18=(!a35);
+  a20=(a18?a20:0);
+  a06=(a06+a20);
+  if (res[1]!=0) res[1][4]=a06;
+  a06=(a35?a02:0);
+  a02=(a18?a02:0);
+  a06=(a06+a02);
+  if (res[1]!=0) res[1][5]=a06;
+  a06=(a35?a11:0);
+  a11=(a18?a11:0);
+  a06=(a06+a11);
+  if (res[1]!=0) res[1][6]=a06;
+  a06=(a35?a32:0);
+  a32=(a18?a32:0);
+  a06=(a06+a32);
+  if (res[1]!=0) res[1][7]=a06;
+  a06=(a35?a17:0);
+  a17=(a18?a17:0);
+  a06=(a06+a17);
+  if (res[1]!=0) res[1][8]=a06;
+  a06=(a35?a26:0);
+  a26=(a18?a26:0);
+  a06=(a06+a26);
+  if (res[1]!=0) res[1][9]=a06;
+  a06=(a35?a28:0);
+  a28=(a18?a28:0);
+  a06=(a06+a28);
+  if (res[1]!=0) res[1][10]=a06;
+  a06=(a35?a01:0);
+  a01=(a18?a01:0);
+  a06=(a06+a01);
+  if (res[1]!=0) res[1][11]=a06;
+  a06=(a35?a33:0);
+  a33=(a18?a33:0);
+  a06=(a06+a33);
+  if (res[1]!=0) res[1][12]=a06;
+  a35=(a35?a34:0);
+  a18=(a18?a34:0);
+  a35=(a35+a18);
+  if (res[1]!=0) res[1][13]=a35;
+  a35=(a05==a04);
+  a04=(a35?a04:0);
+  a35=(!a35);
+  a05=(a05==a03);
+  a18=4.;
+  a05=(a05?a18:0);
+  a35=(a35?a05:0);
+  a04=(a04+a35);
+  a04=(a12?a04:0);
+  a12=(!a12);
+  a35=3.;
+  a12=(a12?a35:0);
+  a04=(a04+a12);
+  a04=(a23?a04:0);
+  a23=(!a23);
+  a23=(a23?a03:0);
+  a04=(a04+a23);
+  a04=(a10?a04:0);
+  a10=(!a10);
+  a23=5.;
+  a10=(a10?a23:0);
+  a04=(a04+a10);
+  if (res[2]!=0) res[2][0]=a04;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a14;
+  if (res[3]!=0) res[3][2]=a25;
+  if (res[3]!=0) res[3][3]=a19;
+  a09=(a09-a21);
+  if (res[3]!=0) res[3][4]=a09;
+  a13=(a13-a14);
+  if (res[3]!=0) res[3][5]=a13;
+  a27=(a27-a25);
+  if (res[3]!=0) res[3][6]=a27;
+  a31=(a31-a19);
+  if (res[3]!=0) res[3][7]=a31;
+  if (res[3]!=0) res[3][8]=a07;
+  if (res[3]!=0) res[3][9]=a22;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f32(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_preload_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s7;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s10;
+    case 6: return casadi_s2;
+    case 7: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s7;
+    case 2: return casadi_s6;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 51;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 51*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_plant_xedd:(xe[2],xed[2],tau_a[2],plant[15])->(xedd[2]) */
+static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -10549,7 +13863,7 @@ static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f27(arg, res, iw, w, mem);
+  return casadi_f33(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_checkout(void) {
@@ -10626,7 +13940,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_xedd_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_plant_step:(x[4],tau_a[2],plant[15],h)->(x_next[4]) */
-static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -11783,7 +15097,7 @@ static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f28(arg, res, iw, w, mem);
+  return casadi_f34(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_plant_step_checkout(void) {
@@ -11860,7 +15174,7 @@ CASADI_SYMBOL_EXPORT int fivebar_plant_step_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* fivebar_measure:(xe[2],plant[15])->(qa[2]) */
-static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=0.;
@@ -11935,7 +15249,7 @@ static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f29(arg, res, iw, w, mem);
+  return casadi_f35(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_measure_checkout(void) {
@@ -12008,7 +15322,7 @@ CASADI_SYMBOL_EXPORT int fivebar_measure_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* fivebar_na_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -12025,7 +15339,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12050,19 +15364,19 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12075,7 +15389,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f30(arg, res, iw, w, mem);
+  return casadi_f36(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_checkout(void) {
@@ -12120,17 +15434,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_closed_loop_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12152,7 +15466,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_work_bytes(casadi_int *sz_arg, c
 }
 
 /* fivebar_na_minmax_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -12169,7 +15483,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12194,19 +15508,19 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12219,7 +15533,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f31(arg, res, iw, w, mem);
+  return casadi_f37(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop_checkout(void) {
@@ -12264,17 +15578,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_minmax_closed_loop_name_out(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12296,7 +15610,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop_work_bytes(casadi_int *sz
 }
 
 /* fivebar_na_preload_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+116, *w07=w+120, *w08=w+122, *w09=w+128, *w10=w+130, *w11=w+132, *w13=w+134, *w14=w+136, w15, w16;
   casadi_real w17, *w18=w+150, *w19=w+154;
@@ -12313,7 +15627,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12338,19 +15652,19 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12363,7 +15677,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f32(arg, res, iw, w, mem);
+  return casadi_f38(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop_checkout(void) {
@@ -12408,17 +15722,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_preload_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12440,7 +15754,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop_work_bytes(casadi_int *s
 }
 
 /* fivebar_na_proj_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -12457,7 +15771,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12482,19 +15796,19 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12507,7 +15821,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f33(arg, res, iw, w, mem);
+  return casadi_f39(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_checkout(void) {
@@ -12552,17 +15866,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_closed_loop_name_out(casadi_int
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12584,7 +15898,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_work_bytes(casadi_int *sz_a
 }
 
 /* fivebar_na_proj_minmax_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -12601,7 +15915,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12626,19 +15940,19 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12651,7 +15965,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f34(arg, res, iw, w, mem);
+  return casadi_f40(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop_checkout(void) {
@@ -12696,17 +16010,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_minmax_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12728,7 +16042,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop_work_bytes(casadi_in
 }
 
 /* fivebar_na_proj_preload_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
-static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+117, *w07=w+121, *w08=w+123, *w09=w+129, *w10=w+131, *w11=w+133, *w13=w+135, *w14=w+137, w15, w16;
   casadi_real w17, *w18=w+151, *w19=w+155;
@@ -12745,7 +16059,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12770,19 +16084,19 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12795,7 +16109,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f35(arg, res, iw, w, mem);
+  return casadi_f41(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop_checkout(void) {
@@ -12840,17 +16154,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_na_proj_preload_closed_loop_name_out(ca
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s12;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s13;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -12872,7 +16186,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_preload_closed_loop_work_bytes(casadi_i
 }
 
 /* fivebar_apd_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
-static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -12889,7 +16203,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -12914,19 +16228,19 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -12939,7 +16253,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f36(arg, res, iw, w, mem);
+  return casadi_f42(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop_checkout(void) {
@@ -12984,17 +16298,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_closed_loop_name_out(casadi_int i) 
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s14;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -13016,7 +16330,7 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_closed_loop_work_bytes(casadi_int *sz_arg, 
 }
 
 /* fivebar_apd_minmax_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
-static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
   casadi_real w17, *w18=w+107, *w19=w+111;
@@ -13033,7 +16347,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -13058,19 +16372,19 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -13083,7 +16397,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f37(arg, res, iw, w, mem);
+  return casadi_f43(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop_checkout(void) {
@@ -13128,17 +16442,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_minmax_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s14;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -13160,7 +16474,7 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_minmax_closed_loop_work_bytes(casadi_int *s
 }
 
 /* fivebar_apd_preload_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
-static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+109, *w07=w+113, *w08=w+115, *w09=w+121, *w10=w+123, *w11=w+125, *w13=w+127, *w14=w+129, w15, w16;
   casadi_real w17, *w18=w+143, *w19=w+147;
@@ -13177,7 +16491,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -13202,19 +16516,19 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 14, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -13227,7 +16541,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f38(arg, res, iw, w, mem);
+  return casadi_f44(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop_checkout(void) {
@@ -13272,17 +16586,17 @@ CASADI_SYMBOL_EXPORT const char* fivebar_apd_preload_closed_loop_name_out(casadi
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s11;
-    case 2: return casadi_s14;
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s10;
-    case 1: return casadi_s13;
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -13303,8 +16617,884 @@ CASADI_SYMBOL_EXPORT int fivebar_apd_preload_closed_loop_work_bytes(casadi_int *
   return 0;
 }
 
+/* fivebar_ctc_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
+static int casadi_f45(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
+  casadi_real w17, *w18=w+107, *w19=w+111;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+15;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f27(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f45(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 121;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 121*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_ctc_minmax_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
+static int casadi_f46(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
+  casadi_real w17, *w18=w+107, *w19=w+111;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+15;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f46(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 121;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 121*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_ctc_preload_closed_loop:(x[18],u[6],p[30])->(x_next[18],y[17]) */
+static int casadi_f47(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+107, *w07=w+111, *w08=w+113, *w09=w+119, *w10=w+121, *w11=w+123, *w13=w+125, *w14=w+127, w15, w16;
+  casadi_real w17, *w18=w+141, *w19=w+145;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+15;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 2, res[1]+4);
+  if (res[1]) res[1][6] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f47(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_ctc_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_ctc_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_ctc_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_ctc_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s12;
+    case 2: return casadi_s15;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 155;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 155*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_closed_loop:(x[18],u[16],p[26])->(x_next[18],y[17]) */
+static int casadi_f48(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w15=w+79, *w16=w+81, w17, w18, w19, *w20=w+95, *w21=w+99;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+11;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+14;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f30(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 2, res[1]+4);
+  if (res[1]) res[1][6] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f48(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s4;
+    case 2: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 109;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 109*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_minmax_closed_loop:(x[18],u[16],p[26])->(x_next[18],y[17]) */
+static int casadi_f49(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w15=w+79, *w16=w+81, w17, w18, w19, *w20=w+95, *w21=w+99;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+11;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+14;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f31(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 2, res[1]+4);
+  if (res[1]) res[1][6] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f49(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s4;
+    case 2: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 109;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 109*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_lqr_preload_closed_loop:(x[18],u[16],p[26])->(x_next[18],y[17]) */
+static int casadi_f50(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+88, *w07=w+92, *w15=w+94, *w16=w+96, w17, w18, w19, *w20=w+110, *w21=w+114;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+11;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+14;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f32(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 14, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 2, res[1]+4);
+  if (res[1]) res[1][6] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+14; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 10, res[1]+7);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f50(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_lqr_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_lqr_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_lqr_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_lqr_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s4;
+    case 2: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s11;
+    case 1: return casadi_s14;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 124;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 124*sizeof(casadi_real);
+  return 0;
+}
+
 /* fivebar_path_coefficients:(p[2],dp[2],ddp[2],theta[10],tau_max[2])->(a[2],b[2],S[4],v1[2],N_min_norm[4],h_min_norm[2],N_min_max[4],h_min_max[2],sing[2]) */
-static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f51(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -13740,7 +17930,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_coefficients(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f39(arg, res, iw, w, mem);
+  return casadi_f51(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_coefficients_checkout(void) {
@@ -13835,7 +18025,7 @@ CASADI_SYMBOL_EXPORT int fivebar_path_coefficients_work_bytes(casadi_int *sz_arg
 }
 
 /* fivebar_path_mvc:(stage[20],params[11])->(x_mvc) */
-static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f52(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -15110,7 +19300,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_mvc(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f40(arg, res, iw, w, mem);
+  return casadi_f52(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_mvc_checkout(void) {
@@ -15154,7 +19344,7 @@ CASADI_SYMBOL_EXPORT const char* fivebar_path_mvc_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_path_mvc_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s5;
-    case 1: return casadi_s15;
+    case 1: return casadi_s10;
     default: return 0;
   }
 }
@@ -15183,7 +19373,7 @@ CASADI_SYMBOL_EXPORT int fivebar_path_mvc_work_bytes(casadi_int *sz_arg, casadi_
 }
 
 /* fivebar_path_backward:(x_next_max,pair[41],params[11])->(x_max,y) */
-static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f53(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -16988,7 +21178,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_backward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f41(arg, res, iw, w, mem);
+  return casadi_f53(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_backward_checkout(void) {
@@ -17034,8 +21224,8 @@ CASADI_SYMBOL_EXPORT const char* fivebar_path_backward_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_path_backward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s6;
-    case 1: return casadi_s16;
-    case 2: return casadi_s15;
+    case 1: return casadi_s17;
+    case 2: return casadi_s10;
     default: return 0;
   }
 }
@@ -17065,7 +21255,7 @@ CASADI_SYMBOL_EXPORT int fivebar_path_backward_work_bytes(casadi_int *sz_arg, ca
 }
 
 /* fivebar_path_forward:(x,input[42],params[11])->(x_next,y[6]) */
-static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f54(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -17539,7 +21729,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f42(arg, res, iw, w, mem);
+  return casadi_f54(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_forward_checkout(void) {
@@ -17585,8 +21775,8 @@ CASADI_SYMBOL_EXPORT const char* fivebar_path_forward_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_path_forward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s6;
-    case 1: return casadi_s17;
-    case 2: return casadi_s15;
+    case 1: return casadi_s18;
+    case 2: return casadi_s10;
     default: return 0;
   }
 }
@@ -17594,7 +21784,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_path_forward_sparsity_in(casadi_i
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_path_forward_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s6;
-    case 1: return casadi_s11;
+    case 1: return casadi_s12;
     default: return 0;
   }
 }
@@ -17616,7 +21806,7 @@ CASADI_SYMBOL_EXPORT int fivebar_path_forward_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* fivebar_path_torques:(stage[20],sd,sdd,params[11],tau_max[2])->(u[2],tau_min_norm[2],tau_min_max[2],min_max_ratio) */
-static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f55(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=arg[0]? arg[0][6] : 0;
   a01=arg[2]? arg[2][0] : 0;
@@ -17718,7 +21908,7 @@ static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f43(arg, res, iw, w, mem);
+  return casadi_f55(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_torques_checkout(void) {
@@ -17770,7 +21960,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_path_torques_sparsity_in(casadi_i
     case 0: return casadi_s5;
     case 1: return casadi_s6;
     case 2: return casadi_s6;
-    case 3: return casadi_s15;
+    case 3: return casadi_s10;
     case 4: return casadi_s0;
     default: return 0;
   }
@@ -17799,6 +21989,4403 @@ CASADI_SYMBOL_EXPORT int fivebar_path_torques_work_bytes(casadi_int *sz_arg, cas
   if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_forward_dynamics_jacobians:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],d_xe[4],d_xed[4],d_tau_a[4],d_theta[20],sing[2]) */
+static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
+  casadi_real a120, a121, a122, a123, a124, a125, a126, a127, a128, a129, a130, a131;
+  casadi_real a132, a133, a134, a135, a136, a137, a138, a139, a140, a141, a142, a143;
+  casadi_real a144, a145, a146, a147, a148, a149, a150, a151, a152, a153, a154, a155;
+  casadi_real a156, a157, a158, a159, a160, a161, a162, a163, a164, a165, a166, a167;
+  casadi_real a168, a169, a170, a171, a172;
+  a000=-2.4399999999999999e-01;
+  a001=-5.1229508196721307e-01;
+  a002=2.0491803278688523e+00;
+  a003=arg[0]? arg[0][1] : 0;
+  a004=(a002*a003);
+  a001=(a001+a004);
+  a005=arg[0]? arg[0][0] : 0;
+  a006=casadi_sq(a005);
+  a007=-2.5000000000000000e-01;
+  a007=(a007+a003);
+  a008=casadi_sq(a007);
+  a009=(a006+a008);
+  a009=sqrt(a009);
+  a010=(a005/a009);
+  a011=1.;
+  a012=-4.1991400161246979e+00;
+  a006=(a012*a006);
+  a006=(a011+a006);
+  a008=(a012*a008);
+  a006=(a006+a008);
+  a006=sqrt(a006);
+  a010=(a010*a006);
+  a008=(a001-a010);
+  a013=(a000*a008);
+  a014=2.4399999999999999e-01;
+  a002=(a002*a005);
+  a006=(a006/a009);
+  a006=(a006*a007);
+  a007=(a002-a006);
+  a009=(a014*a007);
+  a015=(a013*a009);
+  a001=(a001+a010);
+  a010=(a000*a001);
+  a006=(a002+a006);
+  a016=(a014*a006);
+  a017=(a010*a016);
+  a015=(a015-a017);
+  a017=(a013/a015);
+  a018=arg[3]? arg[3][4] : 0;
+  a019=(a017*a018);
+  a020=(a010/a015);
+  a021=arg[3]? arg[3][2] : 0;
+  a022=(a006*a007);
+  a023=(a008*a001);
+  a022=(a022+a023);
+  a023=(a021*a022);
+  a024=(a020*a023);
+  a019=(a019-a024);
+  a024=(a019*a017);
+  a025=(a017*a023);
+  a026=arg[3]? arg[3][0] : 0;
+  a027=(a020*a026);
+  a025=(a025-a027);
+  a027=(a025*a020);
+  a028=casadi_sq(a003);
+  a029=(a012*a028);
+  a029=(a011+a029);
+  a030=-4.3300000000000000e-01;
+  a030=(a030+a005);
+  a005=casadi_sq(a030);
+  a012=(a012*a005);
+  a029=(a029+a012);
+  a029=sqrt(a029);
+  a028=(a028+a005);
+  a028=sqrt(a028);
+  a005=(a029/a028);
+  a005=(a005*a030);
+  a030=(a004-a005);
+  a012=(a000*a030);
+  a031=-8.8729508196721307e-01;
+  a031=(a031+a002);
+  a003=(a003/a028);
+  a003=(a003*a029);
+  a029=(a031-a003);
+  a028=(a014*a029);
+  a002=(a012*a028);
+  a004=(a004+a005);
+  a005=(a000*a004);
+  a031=(a031+a003);
+  a003=(a014*a031);
+  a032=(a005*a003);
+  a002=(a002-a032);
+  a032=(a012/a002);
+  a033=arg[3]? arg[3][3] : 0;
+  a034=(a031*a029);
+  a035=(a030*a004);
+  a034=(a034+a035);
+  a035=(a033*a034);
+  a036=(a032*a035);
+  a037=(a005/a002);
+  a038=arg[3]? arg[3][1] : 0;
+  a039=(a037*a038);
+  a036=(a036-a039);
+  a039=(a036*a037);
+  a027=(a027+a039);
+  a024=(a024-a027);
+  a027=arg[3]? arg[3][5] : 0;
+  a039=(a032*a027);
+  a040=(a037*a035);
+  a039=(a039-a040);
+  a040=(a039*a032);
+  a024=(a024+a040);
+  a040=(a009/a015);
+  a041=arg[2]? arg[2][0] : 0;
+  a042=(a040*a041);
+  a043=(a028/a002);
+  a044=arg[2]? arg[2][1] : 0;
+  a045=(a043*a044);
+  a042=(a042+a045);
+  a045=arg[1]? arg[1][0] : 0;
+  a046=(a040*a045);
+  a047=arg[1]? arg[1][1] : 0;
+  a048=(a020*a047);
+  a046=(a046-a048);
+  a048=(a000*a046);
+  a049=(a048*a008);
+  a050=(a049*a046);
+  a051=(a017*a047);
+  a052=(a016/a015);
+  a053=(a052*a045);
+  a051=(a051-a053);
+  a053=(a000*a051);
+  a054=(a053*a001);
+  a055=(a054*a051);
+  a050=(a050+a055);
+  a055=(a020*a050);
+  a056=(a048*a006);
+  a057=(a056*a046);
+  a058=(a053*a007);
+  a059=(a058*a051);
+  a057=(a057+a059);
+  a059=(a040*a057);
+  a055=(a055-a059);
+  a059=(a026*a055);
+  a060=(a052*a057);
+  a061=(a017*a050);
+  a060=(a060-a061);
+  a061=(a023*a060);
+  a059=(a059+a061);
+  a061=(a021*a051);
+  a062=(a008*a007);
+  a063=(a006*a001);
+  a062=(a062-a063);
+  a063=(a061*a062);
+  a064=(a063*a051);
+  a059=(a059+a064);
+  a064=(a040*a059);
+  a065=(a043*a045);
+  a066=(a037*a047);
+  a065=(a065-a066);
+  a066=(a000*a065);
+  a067=(a066*a030);
+  a068=(a067*a065);
+  a069=(a032*a047);
+  a070=(a003/a002);
+  a071=(a070*a045);
+  a069=(a069-a071);
+  a071=(a000*a069);
+  a072=(a071*a004);
+  a073=(a072*a069);
+  a068=(a068+a073);
+  a073=(a037*a068);
+  a074=(a066*a031);
+  a075=(a074*a065);
+  a076=(a071*a029);
+  a077=(a076*a069);
+  a075=(a075+a077);
+  a077=(a043*a075);
+  a073=(a073-a077);
+  a077=(a038*a073);
+  a078=(a070*a075);
+  a079=(a032*a068);
+  a078=(a078-a079);
+  a079=(a035*a078);
+  a077=(a077+a079);
+  a079=(a033*a069);
+  a080=(a030*a029);
+  a081=(a031*a004);
+  a080=(a080-a081);
+  a081=(a079*a080);
+  a082=(a081*a069);
+  a077=(a077+a082);
+  a082=(a043*a077);
+  a064=(a064+a082);
+  a082=(a023*a055);
+  a083=(a018*a060);
+  a082=(a082+a083);
+  a083=(a021*a046);
+  a084=(a083*a062);
+  a085=(a084*a046);
+  a082=(a082-a085);
+  a085=(a052*a082);
+  a064=(a064-a085);
+  a085=(a035*a073);
+  a086=(a027*a078);
+  a085=(a085+a086);
+  a086=(a033*a065);
+  a087=(a086*a080);
+  a088=(a087*a065);
+  a085=(a085-a088);
+  a088=(a070*a085);
+  a064=(a064-a088);
+  a042=(a042-a064);
+  a064=arg[3]? arg[3][8] : 0;
+  a088=0.;
+  a089=(a088<=a046);
+  a090=(a089?a011:0);
+  a089=(!a089);
+  a091=-1.;
+  a089=(a089?a091:0);
+  a090=(a090+a089);
+  a064=(a064*a090);
+  a089=arg[3]? arg[3][6] : 0;
+  a092=(a089*a046);
+  a064=(a064+a092);
+  a092=(a040*a064);
+  a093=arg[3]? arg[3][9] : 0;
+  a088=(a088<=a065);
+  a094=(a088?a011:0);
+  a088=(!a088);
+  a088=(a088?a091:0);
+  a094=(a094+a088);
+  a093=(a093*a094);
+  a088=arg[3]? arg[3][7] : 0;
+  a091=(a088*a065);
+  a093=(a093+a091);
+  a091=(a043*a093);
+  a092=(a092+a091);
+  a042=(a042-a092);
+  a092=(a024*a042);
+  a091=(a040*a023);
+  a095=(a052*a018);
+  a091=(a091-a095);
+  a095=(a091*a017);
+  a096=(a040*a026);
+  a097=(a052*a023);
+  a096=(a096-a097);
+  a097=(a096*a020);
+  a098=(a043*a038);
+  a099=(a070*a035);
+  a098=(a098-a099);
+  a099=(a098*a037);
+  a097=(a097+a099);
+  a095=(a095-a097);
+  a097=(a043*a035);
+  a099=(a070*a027);
+  a097=(a097-a099);
+  a099=(a097*a032);
+  a095=(a095+a099);
+  a099=(a020*a064);
+  a100=(a037*a093);
+  a099=(a099+a100);
+  a100=(a020*a041);
+  a101=(a037*a044);
+  a100=(a100+a101);
+  a101=(a017*a082);
+  a102=(a020*a059);
+  a103=(a037*a077);
+  a102=(a102+a103);
+  a101=(a101-a102);
+  a102=(a032*a085);
+  a101=(a101+a102);
+  a100=(a100+a101);
+  a099=(a099-a100);
+  a100=(a095*a099);
+  a092=(a092-a100);
+  a100=(a096*a040);
+  a101=(a098*a043);
+  a100=(a100+a101);
+  a101=(a091*a052);
+  a100=(a100-a101);
+  a101=(a097*a070);
+  a100=(a100-a101);
+  a101=(a100*a024);
+  a102=(a025*a040);
+  a103=(a036*a043);
+  a102=(a102+a103);
+  a103=(a019*a052);
+  a102=(a102-a103);
+  a103=(a039*a070);
+  a102=(a102-a103);
+  a103=(a095*a102);
+  a101=(a101-a103);
+  a092=(a092/a101);
+  if (res[0]!=0) res[0][0]=a092;
+  a103=(a100*a099);
+  a104=(a102*a042);
+  a103=(a103-a104);
+  a103=(a103/a101);
+  if (res[0]!=0) res[0][1]=a103;
+  a104=(a095/a101);
+  a105=(a017*a104);
+  a106=(a024/a101);
+  a107=(a052*a106);
+  a105=(a105+a107);
+  a107=(a018*a105);
+  a108=(a020*a104);
+  a109=(a040*a106);
+  a108=(a108+a109);
+  a109=(a023*a108);
+  a107=(a107-a109);
+  a109=(a052*a107);
+  a110=(a023*a105);
+  a111=(a026*a108);
+  a110=(a110-a111);
+  a111=(a040*a110);
+  a109=(a109-a111);
+  a111=(a051*a109);
+  a112=(a053*a111);
+  a113=(a046*a105);
+  a114=(a083*a113);
+  a115=(a051*a108);
+  a116=(a061*a115);
+  a114=(a114+a116);
+  a116=(a008*a114);
+  a112=(a112-a116);
+  a092=(a092/a101);
+  a116=(a024*a092);
+  a117=(a040*a116);
+  a118=(a102*a092);
+  a099=(a099/a101);
+  a118=(a118-a099);
+  a119=(a020*a118);
+  a117=(a117+a119);
+  a119=(a052*a117);
+  a120=(a052*a116);
+  a121=(a017*a118);
+  a120=(a120+a121);
+  a121=(a040*a120);
+  a119=(a119+a121);
+  a121=(a055*a105);
+  a119=(a119+a121);
+  a121=(a060*a108);
+  a119=(a119-a121);
+  a121=(a095*a092);
+  a122=(a040*a121);
+  a042=(a042/a101);
+  a092=(a100*a092);
+  a092=(a042-a092);
+  a123=(a020*a092);
+  a122=(a122-a123);
+  a123=(a017*a122);
+  a119=(a119+a123);
+  a123=(a017*a092);
+  a124=(a052*a121);
+  a123=(a123-a124);
+  a124=(a020*a123);
+  a119=(a119-a124);
+  a124=(a021*a119);
+  a125=(a006*a124);
+  a112=(a112+a125);
+  a125=(a025*a121);
+  a126=(a096*a116);
+  a125=(a125-a126);
+  a126=(a026*a117);
+  a125=(a125-a126);
+  a126=(a023*a120);
+  a125=(a125+a126);
+  a126=(a064*a106);
+  a125=(a125-a126);
+  a126=(a089*a108);
+  a127=(a045*a126);
+  a125=(a125-a127);
+  a127=(a059*a106);
+  a125=(a125-a127);
+  a127=(a057*a110);
+  a125=(a125-a127);
+  a127=(a056*a109);
+  a128=(a020*a110);
+  a129=(a017*a107);
+  a128=(a128-a129);
+  a129=(a049*a128);
+  a127=(a127+a129);
+  a129=(a045*a127);
+  a125=(a125+a129);
+  a129=(a046*a109);
+  a130=(a006*a129);
+  a130=(a000*a130);
+  a131=(a084*a105);
+  a113=(a062*a113);
+  a132=(a021*a113);
+  a131=(a131+a132);
+  a130=(a130-a131);
+  a131=(a046*a128);
+  a132=(a008*a131);
+  a132=(a000*a132);
+  a130=(a130+a132);
+  a132=(a045*a130);
+  a125=(a125+a132);
+  a132=(a041*a106);
+  a125=(a125+a132);
+  a132=(a125/a015);
+  a133=(a052/a015);
+  a134=(a091*a116);
+  a135=(a019*a121);
+  a134=(a134-a135);
+  a135=(a023*a117);
+  a134=(a134+a135);
+  a135=(a018*a120);
+  a134=(a134-a135);
+  a135=(a082*a106);
+  a134=(a134+a135);
+  a135=(a057*a107);
+  a134=(a134+a135);
+  a109=(a058*a109);
+  a135=(a054*a128);
+  a109=(a109+a135);
+  a135=(a045*a109);
+  a134=(a134-a135);
+  a111=(a007*a111);
+  a111=(a000*a111);
+  a135=(a063*a108);
+  a115=(a062*a115);
+  a136=(a021*a115);
+  a135=(a135+a136);
+  a111=(a111-a135);
+  a128=(a051*a128);
+  a135=(a001*a128);
+  a135=(a000*a135);
+  a111=(a111+a135);
+  a135=(a045*a111);
+  a134=(a134-a135);
+  a135=(a133*a134);
+  a136=(a040/a015);
+  a125=(a136*a125);
+  a135=(a135+a125);
+  a125=(a020/a015);
+  a137=(a041*a104);
+  a138=(a059*a104);
+  a137=(a137-a138);
+  a138=(a064*a104);
+  a137=(a137-a138);
+  a138=(a096*a118);
+  a137=(a137-a138);
+  a138=(a047*a126);
+  a137=(a137+a138);
+  a110=(a050*a110);
+  a137=(a137+a110);
+  a110=(a047*a127);
+  a137=(a137-a110);
+  a110=(a047*a130);
+  a137=(a137-a110);
+  a110=(a025*a092);
+  a137=(a137-a110);
+  a110=(a026*a122);
+  a137=(a137-a110);
+  a110=(a023*a123);
+  a137=(a137-a110);
+  a110=(a125*a137);
+  a135=(a135+a110);
+  a110=(a017/a015);
+  a138=(a082*a104);
+  a139=(a091*a118);
+  a138=(a138+a139);
+  a107=(a050*a107);
+  a138=(a138-a107);
+  a107=(a047*a109);
+  a138=(a138+a107);
+  a107=(a047*a111);
+  a138=(a138+a107);
+  a107=(a023*a122);
+  a138=(a138+a107);
+  a107=(a019*a092);
+  a138=(a138+a107);
+  a107=(a018*a123);
+  a138=(a138+a107);
+  a107=(a110*a138);
+  a135=(a135+a107);
+  a107=(a013*a135);
+  a132=(a132-a107);
+  a132=(a014*a132);
+  a112=(a112+a132);
+  a132=(a001*a052);
+  a107=(a112*a132);
+  a139=(a001*a114);
+  a129=(a048*a129);
+  a139=(a139+a129);
+  a129=(a007*a124);
+  a139=(a139+a129);
+  a134=(a134/a015);
+  a129=(a010*a135);
+  a134=(a134+a129);
+  a134=(a014*a134);
+  a139=(a139+a134);
+  a134=(a008*a040);
+  a129=(a139*a134);
+  a140=(a032*a104);
+  a141=(a070*a106);
+  a140=(a140+a141);
+  a141=(a065*a140);
+  a142=(a086*a141);
+  a143=(a037*a104);
+  a144=(a043*a106);
+  a143=(a143+a144);
+  a144=(a069*a143);
+  a145=(a079*a144);
+  a142=(a142+a145);
+  a145=(a004*a142);
+  a146=(a027*a140);
+  a147=(a035*a143);
+  a146=(a146-a147);
+  a147=(a070*a146);
+  a148=(a035*a140);
+  a149=(a038*a143);
+  a148=(a148-a149);
+  a149=(a043*a148);
+  a147=(a147-a149);
+  a149=(a065*a147);
+  a150=(a066*a149);
+  a145=(a145+a150);
+  a150=(a070*a116);
+  a151=(a032*a118);
+  a150=(a150+a151);
+  a151=(a043*a150);
+  a152=(a043*a116);
+  a153=(a037*a118);
+  a152=(a152+a153);
+  a153=(a070*a152);
+  a151=(a151+a153);
+  a153=(a073*a140);
+  a151=(a151+a153);
+  a153=(a078*a143);
+  a151=(a151-a153);
+  a153=(a032*a092);
+  a154=(a070*a121);
+  a153=(a153-a154);
+  a154=(a037*a153);
+  a151=(a151-a154);
+  a154=(a043*a121);
+  a155=(a037*a092);
+  a154=(a154-a155);
+  a155=(a032*a154);
+  a151=(a151+a155);
+  a155=(a033*a151);
+  a156=(a029*a155);
+  a145=(a145+a156);
+  a156=(a097*a116);
+  a157=(a039*a121);
+  a156=(a156-a157);
+  a157=(a027*a150);
+  a156=(a156-a157);
+  a157=(a035*a152);
+  a156=(a156+a157);
+  a157=(a085*a106);
+  a156=(a156+a157);
+  a157=(a075*a146);
+  a156=(a156+a157);
+  a157=(a076*a147);
+  a158=(a037*a148);
+  a159=(a032*a146);
+  a158=(a158-a159);
+  a159=(a072*a158);
+  a157=(a157+a159);
+  a159=(a045*a157);
+  a156=(a156-a159);
+  a159=(a069*a147);
+  a160=(a029*a159);
+  a160=(a000*a160);
+  a161=(a081*a143);
+  a144=(a080*a144);
+  a162=(a033*a144);
+  a161=(a161+a162);
+  a160=(a160-a161);
+  a161=(a069*a158);
+  a162=(a004*a161);
+  a162=(a000*a162);
+  a160=(a160+a162);
+  a162=(a045*a160);
+  a156=(a156-a162);
+  a162=(a156/a002);
+  a163=(a070/a002);
+  a156=(a163*a156);
+  a164=(a043/a002);
+  a121=(a036*a121);
+  a116=(a098*a116);
+  a121=(a121-a116);
+  a116=(a035*a150);
+  a121=(a121+a116);
+  a116=(a038*a152);
+  a121=(a121-a116);
+  a116=(a093*a106);
+  a121=(a121-a116);
+  a116=(a088*a143);
+  a165=(a045*a116);
+  a121=(a121-a165);
+  a165=(a077*a106);
+  a121=(a121-a165);
+  a165=(a075*a148);
+  a121=(a121-a165);
+  a147=(a074*a147);
+  a165=(a067*a158);
+  a147=(a147+a165);
+  a165=(a045*a147);
+  a121=(a121+a165);
+  a149=(a031*a149);
+  a149=(a000*a149);
+  a165=(a087*a140);
+  a141=(a080*a141);
+  a166=(a033*a141);
+  a165=(a165+a166);
+  a149=(a149-a165);
+  a158=(a065*a158);
+  a165=(a030*a158);
+  a165=(a000*a165);
+  a149=(a149+a165);
+  a165=(a045*a149);
+  a121=(a121+a165);
+  a106=(a044*a106);
+  a121=(a121+a106);
+  a106=(a164*a121);
+  a156=(a156+a106);
+  a106=(a037/a002);
+  a165=(a044*a104);
+  a166=(a077*a104);
+  a165=(a165-a166);
+  a166=(a093*a104);
+  a165=(a165-a166);
+  a166=(a098*a118);
+  a165=(a165-a166);
+  a166=(a047*a116);
+  a165=(a165+a166);
+  a148=(a068*a148);
+  a165=(a165+a148);
+  a148=(a047*a147);
+  a165=(a165-a148);
+  a148=(a047*a149);
+  a165=(a165-a148);
+  a148=(a035*a153);
+  a165=(a165-a148);
+  a148=(a036*a092);
+  a165=(a165-a148);
+  a148=(a038*a154);
+  a165=(a165-a148);
+  a148=(a106*a165);
+  a156=(a156+a148);
+  a148=(a032/a002);
+  a104=(a085*a104);
+  a118=(a097*a118);
+  a104=(a104+a118);
+  a146=(a068*a146);
+  a104=(a104-a146);
+  a146=(a047*a157);
+  a104=(a104+a146);
+  a146=(a047*a160);
+  a104=(a104+a146);
+  a092=(a039*a092);
+  a104=(a104+a092);
+  a092=(a027*a153);
+  a104=(a104+a092);
+  a092=(a035*a154);
+  a104=(a104+a092);
+  a092=(a148*a104);
+  a156=(a156+a092);
+  a092=(a005*a156);
+  a162=(a162+a092);
+  a162=(a014*a162);
+  a145=(a145+a162);
+  a162=(a030*a043);
+  a092=(a145*a162);
+  a129=(a129+a092);
+  a107=(a107-a129);
+  a159=(a071*a159);
+  a129=(a030*a142);
+  a159=(a159-a129);
+  a129=(a031*a155);
+  a159=(a159+a129);
+  a121=(a121/a002);
+  a129=(a012*a156);
+  a121=(a121-a129);
+  a121=(a014*a121);
+  a159=(a159+a121);
+  a121=(a004*a070);
+  a129=(a159*a121);
+  a107=(a107+a129);
+  a131=(a048*a131);
+  a129=(a007*a114);
+  a131=(a131-a129);
+  a129=(a001*a124);
+  a131=(a131+a129);
+  a138=(a138/a015);
+  a129=(a009*a135);
+  a138=(a138-a129);
+  a138=(a000*a138);
+  a131=(a131+a138);
+  a138=(a006*a040);
+  a129=(a131*a138);
+  a158=(a066*a158);
+  a092=(a029*a142);
+  a158=(a158-a092);
+  a092=(a004*a155);
+  a158=(a158+a092);
+  a104=(a104/a002);
+  a092=(a028*a156);
+  a104=(a104-a092);
+  a104=(a000*a104);
+  a158=(a158+a104);
+  a104=(a031*a043);
+  a092=(a158*a104);
+  a129=(a129+a092);
+  a114=(a006*a114);
+  a128=(a053*a128);
+  a114=(a114+a128);
+  a124=(a008*a124);
+  a114=(a114+a124);
+  a137=(a137/a015);
+  a135=(a016*a135);
+  a137=(a137+a135);
+  a137=(a000*a137);
+  a114=(a114+a137);
+  a137=(a007*a052);
+  a135=(a114*a137);
+  a129=(a129-a135);
+  a142=(a031*a142);
+  a161=(a071*a161);
+  a142=(a142+a161);
+  a155=(a030*a155);
+  a142=(a142+a155);
+  a165=(a165/a002);
+  a156=(a003*a156);
+  a165=(a165+a156);
+  a165=(a000*a165);
+  a142=(a142+a165);
+  a165=(a029*a070);
+  a156=(a142*a165);
+  a129=(a129-a156);
+  a107=(a107+a129);
+  if (res[1]!=0) res[1][0]=a107;
+  a107=(a008*a020);
+  a139=(a139*a107);
+  a129=(a030*a037);
+  a145=(a145*a129);
+  a139=(a139+a145);
+  a145=(a001*a017);
+  a112=(a112*a145);
+  a139=(a139-a112);
+  a112=(a004*a032);
+  a159=(a159*a112);
+  a139=(a139-a159);
+  a159=(a007*a017);
+  a114=(a114*a159);
+  a156=(a006*a020);
+  a131=(a131*a156);
+  a155=(a031*a037);
+  a158=(a158*a155);
+  a131=(a131+a158);
+  a114=(a114-a131);
+  a131=(a029*a032);
+  a142=(a142*a131);
+  a114=(a114+a142);
+  a139=(a139+a114);
+  if (res[1]!=0) res[1][1]=a139;
+  a139=(a100/a101);
+  a114=(a017*a139);
+  a142=(a102/a101);
+  a158=(a052*a142);
+  a114=(a114+a158);
+  a158=(a046*a114);
+  a083=(a083*a158);
+  a161=(a020*a139);
+  a135=(a040*a142);
+  a161=(a161+a135);
+  a135=(a051*a161);
+  a061=(a061*a135);
+  a083=(a083+a061);
+  a061=(a008*a083);
+  a124=(a023*a161);
+  a128=(a018*a114);
+  a124=(a124-a128);
+  a128=(a052*a124);
+  a092=(a026*a161);
+  a146=(a023*a114);
+  a092=(a092-a146);
+  a146=(a040*a092);
+  a128=(a128-a146);
+  a146=(a051*a128);
+  a118=(a053*a146);
+  a061=(a061+a118);
+  a103=(a103/a101);
+  a102=(a102*a103);
+  a101=(a017*a102);
+  a024=(a024*a103);
+  a099=(a099-a024);
+  a024=(a052*a099);
+  a101=(a101-a024);
+  a024=(a040*a101);
+  a118=(a040*a099);
+  a166=(a020*a102);
+  a118=(a118-a166);
+  a166=(a052*a118);
+  a024=(a024-a166);
+  a166=(a055*a114);
+  a024=(a024-a166);
+  a166=(a060*a161);
+  a024=(a024+a166);
+  a095=(a095*a103);
+  a095=(a095-a042);
+  a042=(a040*a095);
+  a100=(a100*a103);
+  a103=(a020*a100);
+  a042=(a042+a103);
+  a103=(a017*a042);
+  a024=(a024+a103);
+  a103=(a052*a095);
+  a166=(a017*a100);
+  a103=(a103+a166);
+  a166=(a020*a103);
+  a024=(a024+a166);
+  a166=(a021*a024);
+  a167=(a006*a166);
+  a061=(a061+a167);
+  a167=(a025*a095);
+  a168=(a096*a099);
+  a167=(a167+a168);
+  a168=(a026*a118);
+  a167=(a167+a168);
+  a168=(a023*a101);
+  a167=(a167+a168);
+  a168=(a064*a142);
+  a167=(a167+a168);
+  a089=(a089*a161);
+  a168=(a045*a089);
+  a167=(a167+a168);
+  a168=(a059*a142);
+  a167=(a167+a168);
+  a168=(a057*a092);
+  a167=(a167-a168);
+  a056=(a056*a128);
+  a168=(a020*a092);
+  a169=(a017*a124);
+  a168=(a168-a169);
+  a049=(a049*a168);
+  a056=(a056+a049);
+  a049=(a045*a056);
+  a167=(a167+a049);
+  a084=(a084*a114);
+  a158=(a062*a158);
+  a049=(a021*a158);
+  a084=(a084+a049);
+  a049=(a046*a128);
+  a169=(a006*a049);
+  a169=(a000*a169);
+  a084=(a084+a169);
+  a169=(a046*a168);
+  a170=(a008*a169);
+  a170=(a000*a170);
+  a084=(a084+a170);
+  a170=(a045*a084);
+  a167=(a167+a170);
+  a170=(a041*a142);
+  a167=(a167-a170);
+  a170=(a167/a015);
+  a057=(a057*a124);
+  a171=(a019*a095);
+  a172=(a091*a099);
+  a171=(a171+a172);
+  a172=(a023*a118);
+  a171=(a171+a172);
+  a172=(a018*a101);
+  a171=(a171+a172);
+  a172=(a082*a142);
+  a171=(a171+a172);
+  a057=(a057-a171);
+  a058=(a058*a128);
+  a054=(a054*a168);
+  a058=(a058+a054);
+  a054=(a045*a058);
+  a057=(a057-a054);
+  a063=(a063*a161);
+  a135=(a062*a135);
+  a021=(a021*a135);
+  a063=(a063+a021);
+  a146=(a007*a146);
+  a146=(a000*a146);
+  a063=(a063+a146);
+  a168=(a051*a168);
+  a146=(a001*a168);
+  a146=(a000*a146);
+  a063=(a063+a146);
+  a146=(a045*a063);
+  a057=(a057-a146);
+  a133=(a133*a057);
+  a136=(a136*a167);
+  a133=(a133+a136);
+  a059=(a059*a139);
+  a041=(a041*a139);
+  a059=(a059-a041);
+  a064=(a064*a139);
+  a059=(a059+a064);
+  a096=(a096*a102);
+  a059=(a059-a096);
+  a096=(a047*a089);
+  a059=(a059-a096);
+  a092=(a050*a092);
+  a059=(a059+a092);
+  a092=(a047*a056);
+  a059=(a059-a092);
+  a092=(a047*a084);
+  a059=(a059-a092);
+  a025=(a025*a100);
+  a059=(a059+a025);
+  a026=(a026*a042);
+  a059=(a059-a026);
+  a026=(a023*a103);
+  a059=(a059+a026);
+  a125=(a125*a059);
+  a133=(a133+a125);
+  a091=(a091*a102);
+  a082=(a082*a139);
+  a091=(a091-a082);
+  a050=(a050*a124);
+  a091=(a091-a050);
+  a050=(a047*a058);
+  a091=(a091+a050);
+  a050=(a047*a063);
+  a091=(a091+a050);
+  a023=(a023*a042);
+  a091=(a091+a023);
+  a019=(a019*a100);
+  a091=(a091-a019);
+  a018=(a018*a103);
+  a091=(a091-a018);
+  a110=(a110*a091);
+  a133=(a133+a110);
+  a013=(a013*a133);
+  a170=(a170-a013);
+  a170=(a014*a170);
+  a061=(a061+a170);
+  a132=(a061*a132);
+  a049=(a048*a049);
+  a170=(a001*a083);
+  a049=(a049-a170);
+  a170=(a007*a166);
+  a049=(a049+a170);
+  a057=(a057/a015);
+  a010=(a010*a133);
+  a057=(a057+a010);
+  a057=(a014*a057);
+  a049=(a049+a057);
+  a134=(a049*a134);
+  a057=(a037*a139);
+  a010=(a043*a142);
+  a057=(a057+a010);
+  a010=(a035*a057);
+  a170=(a032*a139);
+  a013=(a070*a142);
+  a170=(a170+a013);
+  a013=(a027*a170);
+  a010=(a010-a013);
+  a013=(a070*a010);
+  a110=(a038*a057);
+  a018=(a035*a170);
+  a110=(a110-a018);
+  a018=(a043*a110);
+  a013=(a013-a018);
+  a018=(a065*a013);
+  a019=(a066*a018);
+  a023=(a065*a170);
+  a086=(a086*a023);
+  a050=(a069*a057);
+  a079=(a079*a050);
+  a086=(a086+a079);
+  a079=(a004*a086);
+  a019=(a019-a079);
+  a079=(a032*a102);
+  a124=(a070*a099);
+  a079=(a079-a124);
+  a124=(a043*a079);
+  a082=(a043*a099);
+  a125=(a037*a102);
+  a082=(a082-a125);
+  a125=(a070*a082);
+  a124=(a124-a125);
+  a125=(a073*a170);
+  a124=(a124-a125);
+  a125=(a078*a057);
+  a124=(a124+a125);
+  a125=(a070*a095);
+  a026=(a032*a100);
+  a125=(a125+a026);
+  a026=(a037*a125);
+  a124=(a124+a026);
+  a026=(a043*a095);
+  a025=(a037*a100);
+  a026=(a026+a025);
+  a025=(a032*a026);
+  a124=(a124+a025);
+  a025=(a033*a124);
+  a092=(a029*a025);
+  a019=(a019+a092);
+  a092=(a075*a010);
+  a096=(a039*a095);
+  a064=(a097*a099);
+  a096=(a096+a064);
+  a064=(a027*a079);
+  a096=(a096+a064);
+  a064=(a035*a082);
+  a096=(a096+a064);
+  a064=(a085*a142);
+  a096=(a096+a064);
+  a092=(a092-a096);
+  a076=(a076*a013);
+  a096=(a037*a110);
+  a064=(a032*a010);
+  a096=(a096-a064);
+  a072=(a072*a096);
+  a076=(a076+a072);
+  a072=(a045*a076);
+  a092=(a092-a072);
+  a081=(a081*a057);
+  a050=(a080*a050);
+  a072=(a033*a050);
+  a081=(a081+a072);
+  a072=(a069*a013);
+  a064=(a029*a072);
+  a064=(a000*a064);
+  a081=(a081+a064);
+  a064=(a069*a096);
+  a041=(a004*a064);
+  a041=(a000*a041);
+  a081=(a081+a041);
+  a041=(a045*a081);
+  a092=(a092-a041);
+  a041=(a092/a002);
+  a163=(a163*a092);
+  a095=(a036*a095);
+  a099=(a098*a099);
+  a095=(a095+a099);
+  a099=(a035*a079);
+  a095=(a095+a099);
+  a099=(a038*a082);
+  a095=(a095+a099);
+  a099=(a093*a142);
+  a095=(a095+a099);
+  a088=(a088*a057);
+  a099=(a045*a088);
+  a095=(a095+a099);
+  a099=(a077*a142);
+  a095=(a095+a099);
+  a075=(a075*a110);
+  a095=(a095-a075);
+  a074=(a074*a013);
+  a067=(a067*a096);
+  a074=(a074+a067);
+  a067=(a045*a074);
+  a095=(a095+a067);
+  a087=(a087*a170);
+  a023=(a080*a023);
+  a033=(a033*a023);
+  a087=(a087+a033);
+  a018=(a031*a018);
+  a018=(a000*a018);
+  a087=(a087+a018);
+  a096=(a065*a096);
+  a018=(a030*a096);
+  a018=(a000*a018);
+  a087=(a087+a018);
+  a045=(a045*a087);
+  a095=(a095+a045);
+  a142=(a044*a142);
+  a095=(a095-a142);
+  a164=(a164*a095);
+  a163=(a163+a164);
+  a077=(a077*a139);
+  a044=(a044*a139);
+  a077=(a077-a044);
+  a093=(a093*a139);
+  a077=(a077+a093);
+  a098=(a098*a102);
+  a077=(a077-a098);
+  a098=(a047*a088);
+  a077=(a077-a098);
+  a110=(a068*a110);
+  a077=(a077+a110);
+  a110=(a047*a074);
+  a077=(a077-a110);
+  a110=(a047*a087);
+  a077=(a077-a110);
+  a110=(a035*a125);
+  a077=(a077+a110);
+  a036=(a036*a100);
+  a077=(a077+a036);
+  a038=(a038*a026);
+  a077=(a077-a038);
+  a106=(a106*a077);
+  a163=(a163+a106);
+  a097=(a097*a102);
+  a085=(a085*a139);
+  a097=(a097-a085);
+  a068=(a068*a010);
+  a097=(a097-a068);
+  a068=(a047*a076);
+  a097=(a097+a068);
+  a047=(a047*a081);
+  a097=(a097+a047);
+  a039=(a039*a100);
+  a097=(a097-a039);
+  a027=(a027*a125);
+  a097=(a097-a027);
+  a035=(a035*a026);
+  a097=(a097+a035);
+  a148=(a148*a097);
+  a163=(a163+a148);
+  a005=(a005*a163);
+  a041=(a041+a005);
+  a041=(a014*a041);
+  a019=(a019+a041);
+  a162=(a019*a162);
+  a134=(a134+a162);
+  a132=(a132-a134);
+  a134=(a030*a086);
+  a072=(a071*a072);
+  a134=(a134+a072);
+  a072=(a031*a025);
+  a134=(a134+a072);
+  a095=(a095/a002);
+  a012=(a012*a163);
+  a095=(a095-a012);
+  a014=(a014*a095);
+  a134=(a134+a014);
+  a121=(a134*a121);
+  a132=(a132+a121);
+  a121=(a007*a083);
+  a048=(a048*a169);
+  a121=(a121+a048);
+  a048=(a001*a166);
+  a121=(a121+a048);
+  a091=(a091/a015);
+  a009=(a009*a133);
+  a091=(a091-a009);
+  a091=(a000*a091);
+  a121=(a121+a091);
+  a138=(a121*a138);
+  a091=(a029*a086);
+  a066=(a066*a096);
+  a091=(a091+a066);
+  a066=(a004*a025);
+  a091=(a091+a066);
+  a097=(a097/a002);
+  a028=(a028*a163);
+  a097=(a097-a028);
+  a097=(a000*a097);
+  a091=(a091+a097);
+  a104=(a091*a104);
+  a138=(a138+a104);
+  a053=(a053*a168);
+  a006=(a006*a083);
+  a053=(a053-a006);
+  a008=(a008*a166);
+  a053=(a053+a008);
+  a059=(a059/a015);
+  a016=(a016*a133);
+  a059=(a059+a016);
+  a059=(a000*a059);
+  a053=(a053+a059);
+  a137=(a053*a137);
+  a138=(a138-a137);
+  a071=(a071*a064);
+  a031=(a031*a086);
+  a071=(a071-a031);
+  a030=(a030*a025);
+  a071=(a071+a030);
+  a077=(a077/a002);
+  a003=(a003*a163);
+  a077=(a077+a003);
+  a000=(a000*a077);
+  a071=(a071+a000);
+  a165=(a071*a165);
+  a138=(a138-a165);
+  a132=(a132+a138);
+  if (res[1]!=0) res[1][2]=a132;
+  a049=(a049*a107);
+  a019=(a019*a129);
+  a049=(a049+a019);
+  a061=(a061*a145);
+  a049=(a049-a061);
+  a134=(a134*a112);
+  a049=(a049-a134);
+  a053=(a053*a159);
+  a121=(a121*a156);
+  a091=(a091*a155);
+  a121=(a121+a091);
+  a053=(a053-a121);
+  a071=(a071*a131);
+  a053=(a053+a071);
+  a049=(a049+a053);
+  if (res[1]!=0) res[1][3]=a049;
+  a049=(a043*a147);
+  a053=(a043*a116);
+  a071=(a040*a126);
+  a053=(a053+a071);
+  a071=(a070*a157);
+  a053=(a053+a071);
+  a071=(a070*a160);
+  a053=(a053+a071);
+  a049=(a049-a053);
+  a053=(a043*a149);
+  a049=(a049+a053);
+  a053=(a052*a109);
+  a049=(a049-a053);
+  a053=(a052*a111);
+  a049=(a049-a053);
+  a053=(a040*a127);
+  a049=(a049+a053);
+  a053=(a040*a130);
+  a049=(a049+a053);
+  if (res[2]!=0) res[2][0]=a049;
+  a116=(a037*a116);
+  a126=(a020*a126);
+  a116=(a116+a126);
+  a157=(a032*a157);
+  a116=(a116+a157);
+  a160=(a032*a160);
+  a116=(a116+a160);
+  a147=(a037*a147);
+  a116=(a116-a147);
+  a149=(a037*a149);
+  a116=(a116-a149);
+  a109=(a017*a109);
+  a116=(a116+a109);
+  a111=(a017*a111);
+  a116=(a116+a111);
+  a127=(a020*a127);
+  a116=(a116-a127);
+  a130=(a020*a130);
+  a116=(a116-a130);
+  if (res[2]!=0) res[2][1]=a116;
+  a116=(a043*a088);
+  a130=(a040*a089);
+  a116=(a116+a130);
+  a130=(a070*a076);
+  a116=(a116-a130);
+  a130=(a070*a081);
+  a116=(a116-a130);
+  a130=(a043*a074);
+  a116=(a116+a130);
+  a130=(a043*a087);
+  a116=(a116+a130);
+  a130=(a052*a058);
+  a116=(a116-a130);
+  a130=(a052*a063);
+  a116=(a116-a130);
+  a130=(a040*a056);
+  a116=(a116+a130);
+  a130=(a040*a084);
+  a116=(a116+a130);
+  if (res[2]!=0) res[2][2]=a116;
+  a076=(a032*a076);
+  a088=(a037*a088);
+  a089=(a020*a089);
+  a088=(a088+a089);
+  a076=(a076-a088);
+  a081=(a032*a081);
+  a076=(a076+a081);
+  a074=(a037*a074);
+  a076=(a076-a074);
+  a087=(a037*a087);
+  a076=(a076-a087);
+  a058=(a017*a058);
+  a076=(a076+a058);
+  a063=(a017*a063);
+  a076=(a076+a063);
+  a056=(a020*a056);
+  a076=(a076-a056);
+  a084=(a020*a084);
+  a076=(a076-a084);
+  if (res[2]!=0) res[2][3]=a076;
+  if (res[3]!=0) res[3][0]=a108;
+  if (res[3]!=0) res[3][1]=a143;
+  a076=(-a161);
+  if (res[3]!=0) res[3][2]=a076;
+  a076=(-a057);
+  if (res[3]!=0) res[3][3]=a076;
+  a117=(a040*a117);
+  a076=(a055*a108);
+  a117=(a117+a076);
+  a122=(a020*a122);
+  a117=(a117+a122);
+  a117=(-a117);
+  if (res[4]!=0) res[4][0]=a117;
+  a152=(a043*a152);
+  a117=(a073*a143);
+  a152=(a152+a117);
+  a154=(a037*a154);
+  a152=(a152+a154);
+  a152=(-a152);
+  if (res[4]!=0) res[4][1]=a152;
+  a119=(a022*a119);
+  a113=(a046*a113);
+  a115=(a051*a115);
+  a113=(a113+a115);
+  a119=(a119-a113);
+  if (res[4]!=0) res[4][2]=a119;
+  a151=(a034*a151);
+  a141=(a065*a141);
+  a144=(a069*a144);
+  a141=(a141+a144);
+  a151=(a151-a141);
+  if (res[4]!=0) res[4][3]=a151;
+  a105=(a060*a105);
+  a120=(a052*a120);
+  a105=(a105-a120);
+  a123=(a017*a123);
+  a105=(a105+a123);
+  if (res[4]!=0) res[4][4]=a105;
+  a140=(a078*a140);
+  a150=(a070*a150);
+  a140=(a140-a150);
+  a153=(a032*a153);
+  a140=(a140+a153);
+  if (res[4]!=0) res[4][5]=a140;
+  a140=(a046*a108);
+  a140=(-a140);
+  if (res[4]!=0) res[4][6]=a140;
+  a140=(a065*a143);
+  a140=(-a140);
+  if (res[4]!=0) res[4][7]=a140;
+  a108=(a090*a108);
+  a108=(-a108);
+  if (res[4]!=0) res[4][8]=a108;
+  a143=(a094*a143);
+  a143=(-a143);
+  if (res[4]!=0) res[4][9]=a143;
+  a040=(a040*a118);
+  a055=(a055*a161);
+  a040=(a040+a055);
+  a020=(a020*a042);
+  a040=(a040-a020);
+  if (res[4]!=0) res[4][10]=a040;
+  a043=(a043*a082);
+  a073=(a073*a057);
+  a043=(a043+a073);
+  a037=(a037*a026);
+  a043=(a043-a037);
+  if (res[4]!=0) res[4][11]=a043;
+  a158=(a046*a158);
+  a051=(a051*a135);
+  a158=(a158+a051);
+  a022=(a022*a024);
+  a158=(a158+a022);
+  if (res[4]!=0) res[4][12]=a158;
+  a023=(a065*a023);
+  a069=(a069*a050);
+  a023=(a023+a069);
+  a034=(a034*a124);
+  a023=(a023+a034);
+  if (res[4]!=0) res[4][13]=a023;
+  a052=(a052*a101);
+  a060=(a060*a114);
+  a052=(a052+a060);
+  a017=(a017*a103);
+  a052=(a052+a017);
+  a052=(-a052);
+  if (res[4]!=0) res[4][14]=a052;
+  a070=(a070*a079);
+  a078=(a078*a170);
+  a070=(a070+a078);
+  a032=(a032*a125);
+  a070=(a070+a032);
+  a070=(-a070);
+  if (res[4]!=0) res[4][15]=a070;
+  a046=(a046*a161);
+  if (res[4]!=0) res[4][16]=a046;
+  a065=(a065*a057);
+  if (res[4]!=0) res[4][17]=a065;
+  a090=(a090*a161);
+  if (res[4]!=0) res[4][18]=a090;
+  a094=(a094*a057);
+  if (res[4]!=0) res[4][19]=a094;
+  a062=casadi_fabs(a062);
+  a080=casadi_fabs(a080);
+  a094=(a062+a080);
+  a062=(a062-a080);
+  a062=casadi_fabs(a062);
+  a094=(a094-a062);
+  a062=2.;
+  a094=(a094/a062);
+  if (res[5]!=0) res[5][0]=a094;
+  a094=5.0000000000000000e-01;
+  a062=casadi_sq(a007);
+  a080=casadi_sq(a001);
+  a062=(a062-a080);
+  a080=casadi_sq(a029);
+  a057=casadi_sq(a004);
+  a080=(a080-a057);
+  a062=(a062+a080);
+  a062=casadi_sq(a062);
+  a007=(2.*a007);
+  a007=(a007*a001);
+  a029=(2.*a029);
+  a029=(a029*a004);
+  a007=(a007+a029);
+  a007=casadi_sq(a007);
+  a062=(a062+a007);
+  a062=sqrt(a062);
+  a062=(a094*a062);
+  a011=(a011-a062);
+  a062=casadi_fabs(a011);
+  a011=(a011+a062);
+  a094=(a094*a011);
+  a094=sqrt(a094);
+  if (res[5]!=0) res[5][1]=a094;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f56(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_forward_dynamics_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_forward_dynamics_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_forward_dynamics_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_forward_dynamics_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_forward_dynamics_jacobians_n_out(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_forward_dynamics_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_forward_dynamics_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "tau_a";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_forward_dynamics_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xedd";
+    case 1: return "d_xe";
+    case 2: return "d_xed";
+    case 3: return "d_tau_a";
+    case 4: return "d_theta";
+    case 5: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_forward_dynamics_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_forward_dynamics_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s1;
+    case 3: return casadi_s1;
+    case 4: return casadi_s5;
+    case 5: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_inverse_dynamics:(xe[2],xed[2],xedd[2],theta[10])->(u[2],sing[2]) */
+static int casadi_f57(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37;
+  a00=2.4399999999999999e-01;
+  a01=2.0491803278688523e+00;
+  a02=arg[0]? arg[0][0] : 0;
+  a03=(a01*a02);
+  a04=1.;
+  a05=-4.1991400161246979e+00;
+  a06=casadi_sq(a02);
+  a07=(a05*a06);
+  a07=(a04+a07);
+  a08=-2.5000000000000000e-01;
+  a09=arg[0]? arg[0][1] : 0;
+  a08=(a08+a09);
+  a10=casadi_sq(a08);
+  a11=(a05*a10);
+  a07=(a07+a11);
+  a07=sqrt(a07);
+  a06=(a06+a10);
+  a06=sqrt(a06);
+  a10=(a07/a06);
+  a10=(a10*a08);
+  a08=(a03-a10);
+  a11=(a00*a08);
+  a12=-2.4399999999999999e-01;
+  a13=-5.1229508196721307e-01;
+  a01=(a01*a09);
+  a13=(a13+a01);
+  a06=(a02/a06);
+  a06=(a06*a07);
+  a07=(a13-a06);
+  a14=(a12*a07);
+  a15=(a14*a11);
+  a13=(a13+a06);
+  a06=(a12*a13);
+  a10=(a03+a10);
+  a16=(a00*a10);
+  a17=(a06*a16);
+  a15=(a15-a17);
+  a11=(a11/a15);
+  a17=arg[3]? arg[3][0] : 0;
+  a18=(a11*a17);
+  a16=(a16/a15);
+  a19=arg[3]? arg[3][2] : 0;
+  a20=(a10*a08);
+  a21=(a07*a13);
+  a20=(a20+a21);
+  a20=(a19*a20);
+  a21=(a16*a20);
+  a18=(a18-a21);
+  a21=(a18*a11);
+  a22=-8.8729508196721307e-01;
+  a22=(a22+a03);
+  a03=casadi_sq(a09);
+  a23=-4.3300000000000000e-01;
+  a23=(a23+a02);
+  a02=casadi_sq(a23);
+  a24=(a03+a02);
+  a24=sqrt(a24);
+  a09=(a09/a24);
+  a03=(a05*a03);
+  a03=(a04+a03);
+  a05=(a05*a02);
+  a03=(a03+a05);
+  a03=sqrt(a03);
+  a09=(a09*a03);
+  a05=(a22-a09);
+  a02=(a00*a05);
+  a03=(a03/a24);
+  a03=(a03*a23);
+  a23=(a01-a03);
+  a24=(a12*a23);
+  a25=(a24*a02);
+  a01=(a01+a03);
+  a03=(a12*a01);
+  a22=(a22+a09);
+  a00=(a00*a22);
+  a09=(a03*a00);
+  a25=(a25-a09);
+  a02=(a02/a25);
+  a09=arg[3]? arg[3][1] : 0;
+  a26=(a02*a09);
+  a00=(a00/a25);
+  a27=arg[3]? arg[3][3] : 0;
+  a28=(a22*a05);
+  a29=(a23*a01);
+  a28=(a28+a29);
+  a28=(a27*a28);
+  a29=(a00*a28);
+  a26=(a26-a29);
+  a29=(a26*a02);
+  a21=(a21+a29);
+  a29=(a11*a20);
+  a30=arg[3]? arg[3][4] : 0;
+  a31=(a16*a30);
+  a29=(a29-a31);
+  a31=(a29*a16);
+  a21=(a21-a31);
+  a31=(a02*a28);
+  a32=arg[3]? arg[3][5] : 0;
+  a33=(a00*a32);
+  a31=(a31-a33);
+  a33=(a31*a00);
+  a21=(a21-a33);
+  a33=arg[2]? arg[2][0] : 0;
+  a21=(a21*a33);
+  a14=(a14/a15);
+  a29=(a29*a14);
+  a06=(a06/a15);
+  a18=(a18*a06);
+  a03=(a03/a25);
+  a26=(a26*a03);
+  a18=(a18+a26);
+  a29=(a29-a18);
+  a24=(a24/a25);
+  a31=(a31*a24);
+  a29=(a29+a31);
+  a31=arg[2]? arg[2][1] : 0;
+  a29=(a29*a31);
+  a21=(a21+a29);
+  a29=arg[1]? arg[1][0] : 0;
+  a25=(a11*a29);
+  a18=arg[1]? arg[1][1] : 0;
+  a26=(a06*a18);
+  a25=(a25-a26);
+  a26=(a12*a25);
+  a15=(a26*a07);
+  a15=(a15*a25);
+  a34=(a14*a18);
+  a35=(a16*a29);
+  a34=(a34-a35);
+  a35=(a12*a34);
+  a36=(a35*a13);
+  a36=(a36*a34);
+  a15=(a15+a36);
+  a36=(a06*a15);
+  a26=(a26*a10);
+  a26=(a26*a25);
+  a35=(a35*a08);
+  a35=(a35*a34);
+  a26=(a26+a35);
+  a35=(a11*a26);
+  a36=(a36-a35);
+  a35=(a17*a36);
+  a26=(a16*a26);
+  a15=(a14*a15);
+  a26=(a26-a15);
+  a15=(a20*a26);
+  a35=(a35+a15);
+  a15=(a19*a34);
+  a07=(a07*a08);
+  a10=(a10*a13);
+  a07=(a07-a10);
+  a15=(a15*a07);
+  a15=(a15*a34);
+  a35=(a35+a15);
+  a15=(a11*a35);
+  a34=(a02*a29);
+  a10=(a03*a18);
+  a34=(a34-a10);
+  a10=(a12*a34);
+  a37=(a10*a23);
+  a37=(a37*a34);
+  a18=(a24*a18);
+  a29=(a00*a29);
+  a18=(a18-a29);
+  a12=(a12*a18);
+  a29=(a12*a01);
+  a29=(a29*a18);
+  a37=(a37+a29);
+  a29=(a03*a37);
+  a10=(a10*a22);
+  a10=(a10*a34);
+  a12=(a12*a05);
+  a12=(a12*a18);
+  a10=(a10+a12);
+  a12=(a02*a10);
+  a29=(a29-a12);
+  a12=(a09*a29);
+  a10=(a00*a10);
+  a37=(a24*a37);
+  a10=(a10-a37);
+  a37=(a28*a10);
+  a12=(a12+a37);
+  a37=(a27*a18);
+  a23=(a23*a05);
+  a22=(a22*a01);
+  a23=(a23-a22);
+  a37=(a37*a23);
+  a37=(a37*a18);
+  a12=(a12+a37);
+  a37=(a02*a12);
+  a15=(a15+a37);
+  a36=(a20*a36);
+  a26=(a30*a26);
+  a36=(a36+a26);
+  a19=(a19*a25);
+  a19=(a19*a07);
+  a19=(a19*a25);
+  a36=(a36-a19);
+  a19=(a16*a36);
+  a15=(a15-a19);
+  a29=(a28*a29);
+  a10=(a32*a10);
+  a29=(a29+a10);
+  a27=(a27*a34);
+  a27=(a27*a23);
+  a27=(a27*a34);
+  a29=(a29-a27);
+  a27=(a00*a29);
+  a15=(a15-a27);
+  a21=(a21+a15);
+  a15=arg[3]? arg[3][8] : 0;
+  a27=0.;
+  a10=(a27<=a25);
+  a19=(a10?a04:0);
+  a10=(!a10);
+  a26=-1.;
+  a10=(a10?a26:0);
+  a19=(a19+a10);
+  a15=(a15*a19);
+  a19=arg[3]? arg[3][6] : 0;
+  a19=(a19*a25);
+  a15=(a15+a19);
+  a19=(a11*a15);
+  a25=arg[3]? arg[3][9] : 0;
+  a27=(a27<=a34);
+  a10=(a27?a04:0);
+  a27=(!a27);
+  a27=(a27?a26:0);
+  a10=(a10+a27);
+  a25=(a25*a10);
+  a10=arg[3]? arg[3][7] : 0;
+  a10=(a10*a34);
+  a25=(a25+a10);
+  a10=(a02*a25);
+  a19=(a19+a10);
+  a21=(a21+a19);
+  if (res[0]!=0) res[0][0]=a21;
+  a21=(a14*a20);
+  a17=(a06*a17);
+  a21=(a21-a17);
+  a11=(a21*a11);
+  a17=(a24*a28);
+  a09=(a03*a09);
+  a17=(a17-a09);
+  a02=(a17*a02);
+  a11=(a11+a02);
+  a30=(a14*a30);
+  a20=(a06*a20);
+  a30=(a30-a20);
+  a16=(a30*a16);
+  a11=(a11-a16);
+  a32=(a24*a32);
+  a28=(a03*a28);
+  a32=(a32-a28);
+  a00=(a32*a00);
+  a11=(a11-a00);
+  a11=(a11*a33);
+  a30=(a30*a14);
+  a21=(a21*a06);
+  a17=(a17*a03);
+  a21=(a21+a17);
+  a30=(a30-a21);
+  a32=(a32*a24);
+  a30=(a30+a32);
+  a30=(a30*a31);
+  a11=(a11+a30);
+  a14=(a14*a36);
+  a35=(a06*a35);
+  a12=(a03*a12);
+  a35=(a35+a12);
+  a14=(a14-a35);
+  a24=(a24*a29);
+  a14=(a14+a24);
+  a11=(a11+a14);
+  a06=(a06*a15);
+  a03=(a03*a25);
+  a06=(a06+a03);
+  a11=(a11-a06);
+  if (res[0]!=0) res[0][1]=a11;
+  a07=casadi_fabs(a07);
+  a23=casadi_fabs(a23);
+  a11=(a07+a23);
+  a07=(a07-a23);
+  a07=casadi_fabs(a07);
+  a11=(a11-a07);
+  a07=2.;
+  a11=(a11/a07);
+  if (res[1]!=0) res[1][0]=a11;
+  a11=5.0000000000000000e-01;
+  a07=casadi_sq(a08);
+  a23=casadi_sq(a13);
+  a07=(a07-a23);
+  a23=casadi_sq(a05);
+  a06=casadi_sq(a01);
+  a23=(a23-a06);
+  a07=(a07+a23);
+  a07=casadi_sq(a07);
+  a08=(2.*a08);
+  a08=(a08*a13);
+  a05=(2.*a05);
+  a05=(a05*a01);
+  a08=(a08+a05);
+  a08=casadi_sq(a08);
+  a07=(a07+a08);
+  a07=sqrt(a07);
+  a07=(a11*a07);
+  a04=(a04-a07);
+  a07=casadi_fabs(a04);
+  a04=(a04+a07);
+  a11=(a11*a04);
+  a11=sqrt(a11);
+  if (res[1]!=0) res[1][1]=a11;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f57(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_inverse_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_inverse_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_inverse_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_inverse_dynamics_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_inverse_dynamics_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_inverse_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_inverse_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "xedd";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_inverse_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "u";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_inverse_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_inverse_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_inverse_dynamics_jacobians:(xe[2],xed[2],xedd[2],theta[10])->(u[2],d_xe[4],d_xed[4],sing[2]) */
+static int casadi_f58(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
+  casadi_real a120, a121, a122, a123, a124, a125, a126, a127, a128, a129, a130, a131;
+  casadi_real a132, a133, a134, a135, a136, a137, a138, a139, a140, a141;
+  a000=2.4399999999999999e-01;
+  a001=2.0491803278688523e+00;
+  a002=arg[0]? arg[0][0] : 0;
+  a003=(a001*a002);
+  a004=1.;
+  a005=-4.1991400161246979e+00;
+  a006=casadi_sq(a002);
+  a007=(a005*a006);
+  a007=(a004+a007);
+  a008=-2.5000000000000000e-01;
+  a009=arg[0]? arg[0][1] : 0;
+  a008=(a008+a009);
+  a010=casadi_sq(a008);
+  a011=(a005*a010);
+  a007=(a007+a011);
+  a007=sqrt(a007);
+  a006=(a006+a010);
+  a006=sqrt(a006);
+  a010=(a007/a006);
+  a010=(a010*a008);
+  a008=(a003-a010);
+  a011=(a000*a008);
+  a012=-2.4399999999999999e-01;
+  a013=-5.1229508196721307e-01;
+  a001=(a001*a009);
+  a013=(a013+a001);
+  a006=(a002/a006);
+  a006=(a006*a007);
+  a007=(a013-a006);
+  a014=(a012*a007);
+  a015=(a014*a011);
+  a013=(a013+a006);
+  a006=(a012*a013);
+  a010=(a003+a010);
+  a016=(a000*a010);
+  a017=(a006*a016);
+  a015=(a015-a017);
+  a017=(a011/a015);
+  a018=arg[3]? arg[3][0] : 0;
+  a019=(a017*a018);
+  a020=(a016/a015);
+  a021=arg[3]? arg[3][2] : 0;
+  a022=(a010*a008);
+  a023=(a007*a013);
+  a022=(a022+a023);
+  a022=(a021*a022);
+  a023=(a020*a022);
+  a019=(a019-a023);
+  a023=(a019*a017);
+  a024=-8.8729508196721307e-01;
+  a024=(a024+a003);
+  a003=casadi_sq(a009);
+  a025=-4.3300000000000000e-01;
+  a025=(a025+a002);
+  a002=casadi_sq(a025);
+  a026=(a003+a002);
+  a026=sqrt(a026);
+  a009=(a009/a026);
+  a003=(a005*a003);
+  a003=(a004+a003);
+  a005=(a005*a002);
+  a003=(a003+a005);
+  a003=sqrt(a003);
+  a009=(a009*a003);
+  a005=(a024-a009);
+  a002=(a000*a005);
+  a003=(a003/a026);
+  a003=(a003*a025);
+  a025=(a001-a003);
+  a026=(a012*a025);
+  a027=(a026*a002);
+  a001=(a001+a003);
+  a003=(a012*a001);
+  a024=(a024+a009);
+  a009=(a000*a024);
+  a028=(a003*a009);
+  a027=(a027-a028);
+  a028=(a002/a027);
+  a029=arg[3]? arg[3][1] : 0;
+  a030=(a028*a029);
+  a031=(a009/a027);
+  a032=arg[3]? arg[3][3] : 0;
+  a033=(a024*a005);
+  a034=(a025*a001);
+  a033=(a033+a034);
+  a033=(a032*a033);
+  a034=(a031*a033);
+  a030=(a030-a034);
+  a034=(a030*a028);
+  a023=(a023+a034);
+  a034=(a017*a022);
+  a035=arg[3]? arg[3][4] : 0;
+  a036=(a020*a035);
+  a034=(a034-a036);
+  a036=(a034*a020);
+  a023=(a023-a036);
+  a036=(a028*a033);
+  a037=arg[3]? arg[3][5] : 0;
+  a038=(a031*a037);
+  a036=(a036-a038);
+  a038=(a036*a031);
+  a023=(a023-a038);
+  a038=arg[2]? arg[2][0] : 0;
+  a023=(a023*a038);
+  a039=(a014/a015);
+  a040=(a034*a039);
+  a041=(a006/a015);
+  a042=(a019*a041);
+  a043=(a003/a027);
+  a044=(a030*a043);
+  a042=(a042+a044);
+  a040=(a040-a042);
+  a042=(a026/a027);
+  a044=(a036*a042);
+  a040=(a040+a044);
+  a044=arg[2]? arg[2][1] : 0;
+  a040=(a040*a044);
+  a023=(a023+a040);
+  a040=arg[1]? arg[1][0] : 0;
+  a045=(a017*a040);
+  a046=arg[1]? arg[1][1] : 0;
+  a047=(a041*a046);
+  a045=(a045-a047);
+  a047=(a012*a045);
+  a048=(a047*a007);
+  a049=(a048*a045);
+  a050=(a039*a046);
+  a051=(a020*a040);
+  a050=(a050-a051);
+  a051=(a012*a050);
+  a052=(a051*a013);
+  a053=(a052*a050);
+  a049=(a049+a053);
+  a053=(a041*a049);
+  a054=(a047*a010);
+  a055=(a054*a045);
+  a056=(a051*a008);
+  a057=(a056*a050);
+  a055=(a055+a057);
+  a057=(a017*a055);
+  a053=(a053-a057);
+  a057=(a018*a053);
+  a058=(a020*a055);
+  a059=(a039*a049);
+  a058=(a058-a059);
+  a059=(a022*a058);
+  a057=(a057+a059);
+  a059=(a021*a050);
+  a060=(a007*a008);
+  a061=(a010*a013);
+  a060=(a060-a061);
+  a061=(a059*a060);
+  a062=(a061*a050);
+  a057=(a057+a062);
+  a062=(a017*a057);
+  a063=(a028*a040);
+  a064=(a043*a046);
+  a063=(a063-a064);
+  a064=(a012*a063);
+  a065=(a064*a025);
+  a066=(a065*a063);
+  a067=(a042*a046);
+  a068=(a031*a040);
+  a067=(a067-a068);
+  a068=(a012*a067);
+  a069=(a068*a001);
+  a070=(a069*a067);
+  a066=(a066+a070);
+  a070=(a043*a066);
+  a071=(a064*a024);
+  a072=(a071*a063);
+  a073=(a068*a005);
+  a074=(a073*a067);
+  a072=(a072+a074);
+  a074=(a028*a072);
+  a070=(a070-a074);
+  a074=(a029*a070);
+  a075=(a031*a072);
+  a076=(a042*a066);
+  a075=(a075-a076);
+  a076=(a033*a075);
+  a074=(a074+a076);
+  a076=(a032*a067);
+  a077=(a025*a005);
+  a078=(a024*a001);
+  a077=(a077-a078);
+  a078=(a076*a077);
+  a079=(a078*a067);
+  a074=(a074+a079);
+  a079=(a028*a074);
+  a062=(a062+a079);
+  a079=(a022*a053);
+  a080=(a035*a058);
+  a079=(a079+a080);
+  a080=(a021*a045);
+  a081=(a080*a060);
+  a082=(a081*a045);
+  a079=(a079-a082);
+  a082=(a020*a079);
+  a062=(a062-a082);
+  a082=(a033*a070);
+  a083=(a037*a075);
+  a082=(a082+a083);
+  a083=(a032*a063);
+  a084=(a083*a077);
+  a085=(a084*a063);
+  a082=(a082-a085);
+  a085=(a031*a082);
+  a062=(a062-a085);
+  a023=(a023+a062);
+  a062=arg[3]? arg[3][8] : 0;
+  a085=0.;
+  a086=(a085<=a045);
+  a087=(a086?a004:0);
+  a086=(!a086);
+  a088=-1.;
+  a086=(a086?a088:0);
+  a087=(a087+a086);
+  a062=(a062*a087);
+  a087=arg[3]? arg[3][6] : 0;
+  a086=(a087*a045);
+  a062=(a062+a086);
+  a086=(a017*a062);
+  a089=arg[3]? arg[3][9] : 0;
+  a085=(a085<=a063);
+  a090=(a085?a004:0);
+  a085=(!a085);
+  a085=(a085?a088:0);
+  a090=(a090+a085);
+  a089=(a089*a090);
+  a090=arg[3]? arg[3][7] : 0;
+  a085=(a090*a063);
+  a089=(a089+a085);
+  a085=(a028*a089);
+  a086=(a086+a085);
+  a023=(a023+a086);
+  if (res[0]!=0) res[0][0]=a023;
+  a023=(a039*a022);
+  a086=(a041*a018);
+  a023=(a023-a086);
+  a086=(a023*a017);
+  a085=(a042*a033);
+  a088=(a043*a029);
+  a085=(a085-a088);
+  a088=(a085*a028);
+  a086=(a086+a088);
+  a088=(a039*a035);
+  a091=(a041*a022);
+  a088=(a088-a091);
+  a091=(a088*a020);
+  a086=(a086-a091);
+  a091=(a042*a037);
+  a092=(a043*a033);
+  a091=(a091-a092);
+  a092=(a091*a031);
+  a086=(a086-a092);
+  a086=(a086*a038);
+  a092=(a088*a039);
+  a093=(a023*a041);
+  a094=(a085*a043);
+  a093=(a093+a094);
+  a092=(a092-a093);
+  a093=(a091*a042);
+  a092=(a092+a093);
+  a092=(a092*a044);
+  a086=(a086+a092);
+  a092=(a039*a079);
+  a093=(a041*a057);
+  a094=(a043*a074);
+  a093=(a093+a094);
+  a092=(a092-a093);
+  a093=(a042*a082);
+  a092=(a092+a093);
+  a086=(a086+a092);
+  a092=(a041*a062);
+  a093=(a043*a089);
+  a092=(a092+a093);
+  a086=(a086-a092);
+  if (res[0]!=0) res[0][1]=a086;
+  a086=(a045*a020);
+  a092=(a080*a086);
+  a093=(a050*a017);
+  a094=(a059*a093);
+  a092=(a092+a094);
+  a094=(a007*a092);
+  a095=(a022*a017);
+  a096=(a035*a020);
+  a095=(a095-a096);
+  a096=(a020*a095);
+  a097=(a018*a017);
+  a098=(a022*a020);
+  a097=(a097-a098);
+  a098=(a017*a097);
+  a096=(a096-a098);
+  a098=(a050*a096);
+  a099=(a051*a098);
+  a094=(a094+a099);
+  a099=(a058*a017);
+  a100=(a053*a020);
+  a099=(a099-a100);
+  a100=(a039*a044);
+  a101=(a020*a038);
+  a100=(a100-a101);
+  a101=(a017*a100);
+  a099=(a099+a101);
+  a101=(a017*a038);
+  a102=(a041*a044);
+  a101=(a101-a102);
+  a102=(a020*a101);
+  a099=(a099-a102);
+  a099=(a021*a099);
+  a102=(a010*a099);
+  a094=(a094+a102);
+  a102=(a087*a017);
+  a103=(a040*a102);
+  a103=(a062+a103);
+  a103=(a103+a057);
+  a104=(a055*a097);
+  a103=(a103-a104);
+  a104=(a054*a096);
+  a105=(a041*a097);
+  a106=(a039*a095);
+  a105=(a105-a106);
+  a106=(a048*a105);
+  a104=(a104+a106);
+  a106=(a040*a104);
+  a103=(a103+a106);
+  a106=(a081*a020);
+  a086=(a060*a086);
+  a086=(a021*a086);
+  a106=(a106+a086);
+  a086=(a045*a096);
+  a107=(a010*a086);
+  a107=(a012*a107);
+  a106=(a106+a107);
+  a107=(a045*a105);
+  a108=(a007*a107);
+  a108=(a012*a108);
+  a106=(a106+a108);
+  a108=(a040*a106);
+  a103=(a103+a108);
+  a108=(a022*a100);
+  a103=(a103+a108);
+  a109=(a019*a038);
+  a103=(a103+a109);
+  a109=(a018*a101);
+  a103=(a103+a109);
+  a110=(a103/a015);
+  a111=(a041/a015);
+  a097=(a049*a097);
+  a112=(a046*a102);
+  a097=(a097-a112);
+  a112=(a046*a104);
+  a097=(a097-a112);
+  a112=(a046*a106);
+  a097=(a097-a112);
+  a019=(a019*a044);
+  a097=(a097-a019);
+  a019=(a111*a097);
+  a112=(a039/a015);
+  a096=(a056*a096);
+  a113=(a052*a105);
+  a096=(a096+a113);
+  a113=(a046*a096);
+  a114=(a049*a095);
+  a113=(a113-a114);
+  a114=(a061*a017);
+  a093=(a060*a093);
+  a093=(a021*a093);
+  a114=(a114+a093);
+  a098=(a008*a098);
+  a098=(a012*a098);
+  a114=(a114+a098);
+  a105=(a050*a105);
+  a098=(a013*a105);
+  a098=(a012*a098);
+  a114=(a114+a098);
+  a098=(a046*a114);
+  a113=(a113+a098);
+  a098=(a034*a044);
+  a113=(a113+a098);
+  a098=(a112*a113);
+  a019=(a019+a098);
+  a098=(a020/a015);
+  a095=(a055*a095);
+  a095=(a095-a079);
+  a093=(a040*a096);
+  a095=(a095-a093);
+  a093=(a040*a114);
+  a095=(a095-a093);
+  a034=(a034*a038);
+  a095=(a095-a034);
+  a034=(a035*a100);
+  a095=(a095-a034);
+  a093=(a022*a101);
+  a095=(a095-a093);
+  a115=(a098*a095);
+  a019=(a019+a115);
+  a115=(a017/a015);
+  a103=(a115*a103);
+  a019=(a019+a103);
+  a103=(a014*a019);
+  a110=(a110-a103);
+  a110=(a000*a110);
+  a094=(a094+a110);
+  a110=(a013*a020);
+  a103=(a094*a110);
+  a086=(a047*a086);
+  a116=(a013*a092);
+  a086=(a086-a116);
+  a116=(a008*a099);
+  a086=(a086+a116);
+  a095=(a095/a015);
+  a116=(a006*a019);
+  a095=(a095+a116);
+  a095=(a000*a095);
+  a086=(a086+a095);
+  a095=(a007*a017);
+  a116=(a086*a095);
+  a117=(a033*a028);
+  a118=(a037*a031);
+  a117=(a117-a118);
+  a118=(a031*a117);
+  a119=(a029*a028);
+  a120=(a033*a031);
+  a119=(a119-a120);
+  a120=(a028*a119);
+  a118=(a118-a120);
+  a120=(a063*a118);
+  a121=(a064*a120);
+  a122=(a063*a031);
+  a123=(a083*a122);
+  a124=(a067*a028);
+  a125=(a076*a124);
+  a123=(a123+a125);
+  a125=(a001*a123);
+  a121=(a121-a125);
+  a125=(a075*a028);
+  a126=(a070*a031);
+  a125=(a125-a126);
+  a126=(a042*a044);
+  a127=(a031*a038);
+  a126=(a126-a127);
+  a127=(a028*a126);
+  a125=(a125+a127);
+  a127=(a028*a038);
+  a128=(a043*a044);
+  a127=(a127-a128);
+  a128=(a031*a127);
+  a125=(a125-a128);
+  a125=(a032*a125);
+  a128=(a005*a125);
+  a121=(a121+a128);
+  a128=(a072*a117);
+  a128=(a128-a082);
+  a129=(a073*a118);
+  a130=(a043*a119);
+  a131=(a042*a117);
+  a130=(a130-a131);
+  a131=(a069*a130);
+  a129=(a129+a131);
+  a131=(a040*a129);
+  a128=(a128-a131);
+  a131=(a078*a028);
+  a124=(a077*a124);
+  a124=(a032*a124);
+  a131=(a131+a124);
+  a124=(a067*a118);
+  a132=(a005*a124);
+  a132=(a012*a132);
+  a131=(a131+a132);
+  a132=(a067*a130);
+  a133=(a001*a132);
+  a133=(a012*a133);
+  a131=(a131+a133);
+  a133=(a040*a131);
+  a128=(a128-a133);
+  a133=(a036*a038);
+  a128=(a128-a133);
+  a133=(a037*a126);
+  a128=(a128-a133);
+  a134=(a033*a127);
+  a128=(a128-a134);
+  a135=(a128/a027);
+  a136=(a042/a027);
+  a137=(a046*a129);
+  a117=(a066*a117);
+  a137=(a137-a117);
+  a117=(a046*a131);
+  a137=(a137+a117);
+  a036=(a036*a044);
+  a137=(a137+a036);
+  a036=(a136*a137);
+  a117=(a043/a027);
+  a138=(a066*a119);
+  a139=(a090*a028);
+  a140=(a046*a139);
+  a138=(a138-a140);
+  a118=(a071*a118);
+  a140=(a065*a130);
+  a118=(a118+a140);
+  a140=(a046*a118);
+  a138=(a138-a140);
+  a140=(a084*a031);
+  a122=(a077*a122);
+  a122=(a032*a122);
+  a140=(a140+a122);
+  a120=(a024*a120);
+  a120=(a012*a120);
+  a140=(a140+a120);
+  a130=(a063*a130);
+  a120=(a025*a130);
+  a120=(a012*a120);
+  a140=(a140+a120);
+  a120=(a046*a140);
+  a138=(a138-a120);
+  a120=(a030*a044);
+  a138=(a138-a120);
+  a120=(a117*a138);
+  a036=(a036+a120);
+  a120=(a031/a027);
+  a128=(a120*a128);
+  a036=(a036+a128);
+  a128=(a028/a027);
+  a122=(a040*a139);
+  a122=(a089+a122);
+  a122=(a122+a074);
+  a119=(a072*a119);
+  a122=(a122-a119);
+  a119=(a040*a118);
+  a122=(a122+a119);
+  a119=(a040*a140);
+  a122=(a122+a119);
+  a119=(a033*a126);
+  a122=(a122+a119);
+  a030=(a030*a038);
+  a122=(a122+a030);
+  a030=(a029*a127);
+  a122=(a122+a030);
+  a141=(a128*a122);
+  a036=(a036+a141);
+  a141=(a003*a036);
+  a135=(a135+a141);
+  a135=(a000*a135);
+  a121=(a121+a135);
+  a135=(a025*a028);
+  a141=(a121*a135);
+  a116=(a116+a141);
+  a103=(a103-a116);
+  a116=(a025*a123);
+  a124=(a068*a124);
+  a116=(a116+a124);
+  a124=(a024*a125);
+  a116=(a116+a124);
+  a122=(a122/a027);
+  a124=(a026*a036);
+  a122=(a122-a124);
+  a122=(a000*a122);
+  a116=(a116+a122);
+  a122=(a001*a031);
+  a124=(a116*a122);
+  a103=(a103+a124);
+  a124=(a008*a092);
+  a107=(a047*a107);
+  a124=(a124+a107);
+  a107=(a013*a099);
+  a124=(a124+a107);
+  a113=(a113/a015);
+  a107=(a011*a019);
+  a113=(a113-a107);
+  a113=(a012*a113);
+  a124=(a124+a113);
+  a113=(a010*a017);
+  a107=(a124*a113);
+  a141=(a005*a123);
+  a130=(a064*a130);
+  a141=(a141+a130);
+  a130=(a001*a125);
+  a141=(a141+a130);
+  a137=(a137/a027);
+  a130=(a002*a036);
+  a137=(a137-a130);
+  a137=(a012*a137);
+  a141=(a141+a137);
+  a137=(a024*a028);
+  a130=(a141*a137);
+  a107=(a107+a130);
+  a105=(a051*a105);
+  a092=(a010*a092);
+  a105=(a105-a092);
+  a099=(a007*a099);
+  a105=(a105+a099);
+  a097=(a097/a015);
+  a019=(a016*a019);
+  a097=(a097+a019);
+  a097=(a012*a097);
+  a105=(a105+a097);
+  a097=(a008*a020);
+  a019=(a105*a097);
+  a107=(a107-a019);
+  a132=(a068*a132);
+  a123=(a024*a123);
+  a132=(a132-a123);
+  a125=(a025*a125);
+  a132=(a132+a125);
+  a138=(a138/a027);
+  a036=(a009*a036);
+  a138=(a138+a036);
+  a138=(a012*a138);
+  a132=(a132+a138);
+  a138=(a005*a031);
+  a036=(a132*a138);
+  a107=(a107-a036);
+  a103=(a103+a107);
+  if (res[1]!=0) res[1][0]=a103;
+  a103=(a007*a041);
+  a086=(a086*a103);
+  a107=(a025*a043);
+  a121=(a121*a107);
+  a086=(a086+a121);
+  a121=(a013*a039);
+  a094=(a094*a121);
+  a086=(a086-a094);
+  a094=(a001*a042);
+  a116=(a116*a094);
+  a086=(a086-a116);
+  a116=(a008*a039);
+  a105=(a105*a116);
+  a036=(a010*a041);
+  a124=(a124*a036);
+  a125=(a024*a043);
+  a141=(a141*a125);
+  a124=(a124+a141);
+  a105=(a105-a124);
+  a124=(a005*a042);
+  a132=(a132*a124);
+  a105=(a105+a132);
+  a086=(a086+a105);
+  if (res[1]!=0) res[1][1]=a086;
+  a035=(a035*a039);
+  a086=(a022*a041);
+  a035=(a035-a086);
+  a086=(a020*a035);
+  a022=(a022*a039);
+  a018=(a018*a041);
+  a022=(a022-a018);
+  a018=(a017*a022);
+  a086=(a086-a018);
+  a018=(a050*a086);
+  a105=(a051*a018);
+  a132=(a045*a039);
+  a080=(a080*a132);
+  a141=(a050*a041);
+  a059=(a059*a141);
+  a080=(a080+a059);
+  a059=(a007*a080);
+  a105=(a105-a059);
+  a101=(a039*a101);
+  a100=(a041*a100);
+  a101=(a101-a100);
+  a053=(a053*a039);
+  a101=(a101+a053);
+  a058=(a058*a041);
+  a101=(a101-a058);
+  a101=(a021*a101);
+  a058=(a010*a101);
+  a105=(a105+a058);
+  a058=(a023*a038);
+  a087=(a087*a041);
+  a053=(a040*a087);
+  a058=(a058-a053);
+  a053=(a055*a022);
+  a058=(a058-a053);
+  a054=(a054*a086);
+  a053=(a041*a022);
+  a100=(a039*a035);
+  a053=(a053-a100);
+  a048=(a048*a053);
+  a054=(a054+a048);
+  a048=(a040*a054);
+  a058=(a058+a048);
+  a048=(a045*a086);
+  a100=(a010*a048);
+  a100=(a012*a100);
+  a081=(a081*a039);
+  a132=(a060*a132);
+  a132=(a021*a132);
+  a081=(a081+a132);
+  a100=(a100-a081);
+  a045=(a045*a053);
+  a081=(a007*a045);
+  a081=(a012*a081);
+  a100=(a100+a081);
+  a081=(a040*a100);
+  a058=(a058+a081);
+  a081=(a058/a015);
+  a132=(a046*a087);
+  a062=(a062+a057);
+  a023=(a023*a044);
+  a062=(a062+a023);
+  a062=(a062+a108);
+  a062=(a062+a109);
+  a132=(a132-a062);
+  a022=(a049*a022);
+  a132=(a132+a022);
+  a022=(a046*a054);
+  a132=(a132-a022);
+  a022=(a046*a100);
+  a132=(a132-a022);
+  a111=(a111*a132);
+  a022=(a088*a044);
+  a079=(a079+a022);
+  a079=(a079+a034);
+  a079=(a079+a093);
+  a049=(a049*a035);
+  a079=(a079-a049);
+  a056=(a056*a086);
+  a052=(a052*a053);
+  a056=(a056+a052);
+  a052=(a046*a056);
+  a079=(a079+a052);
+  a018=(a008*a018);
+  a018=(a012*a018);
+  a061=(a061*a041);
+  a141=(a060*a141);
+  a021=(a021*a141);
+  a061=(a061+a021);
+  a018=(a018-a061);
+  a050=(a050*a053);
+  a053=(a013*a050);
+  a053=(a012*a053);
+  a018=(a018+a053);
+  a053=(a046*a018);
+  a079=(a079+a053);
+  a112=(a112*a079);
+  a111=(a111+a112);
+  a055=(a055*a035);
+  a088=(a088*a038);
+  a055=(a055-a088);
+  a088=(a040*a056);
+  a055=(a055-a088);
+  a088=(a040*a018);
+  a055=(a055-a088);
+  a098=(a098*a055);
+  a111=(a111+a098);
+  a115=(a115*a058);
+  a111=(a111+a115);
+  a014=(a014*a111);
+  a081=(a081-a014);
+  a081=(a000*a081);
+  a105=(a105+a081);
+  a110=(a105*a110);
+  a081=(a013*a080);
+  a048=(a047*a048);
+  a081=(a081+a048);
+  a048=(a008*a101);
+  a081=(a081+a048);
+  a055=(a055/a015);
+  a006=(a006*a111);
+  a055=(a055+a006);
+  a055=(a000*a055);
+  a081=(a081+a055);
+  a095=(a081*a095);
+  a055=(a063*a042);
+  a083=(a083*a055);
+  a006=(a067*a043);
+  a076=(a076*a006);
+  a083=(a083+a076);
+  a076=(a001*a083);
+  a037=(a037*a042);
+  a048=(a033*a043);
+  a037=(a037-a048);
+  a048=(a031*a037);
+  a033=(a033*a042);
+  a029=(a029*a043);
+  a033=(a033-a029);
+  a029=(a028*a033);
+  a048=(a048-a029);
+  a029=(a063*a048);
+  a014=(a064*a029);
+  a076=(a076+a014);
+  a127=(a042*a127);
+  a126=(a043*a126);
+  a127=(a127-a126);
+  a070=(a070*a042);
+  a127=(a127+a070);
+  a075=(a075*a043);
+  a127=(a127-a075);
+  a127=(a032*a127);
+  a075=(a005*a127);
+  a076=(a076+a075);
+  a075=(a072*a037);
+  a070=(a091*a038);
+  a075=(a075-a070);
+  a073=(a073*a048);
+  a070=(a043*a033);
+  a126=(a042*a037);
+  a070=(a070-a126);
+  a069=(a069*a070);
+  a073=(a073+a069);
+  a069=(a040*a073);
+  a075=(a075-a069);
+  a069=(a067*a048);
+  a126=(a005*a069);
+  a126=(a012*a126);
+  a078=(a078*a043);
+  a006=(a077*a006);
+  a006=(a032*a006);
+  a078=(a078+a006);
+  a126=(a126-a078);
+  a067=(a067*a070);
+  a078=(a001*a067);
+  a078=(a012*a078);
+  a126=(a126+a078);
+  a078=(a040*a126);
+  a075=(a075-a078);
+  a078=(a075/a027);
+  a091=(a091*a044);
+  a082=(a082+a091);
+  a082=(a082+a133);
+  a082=(a082+a134);
+  a037=(a066*a037);
+  a082=(a082-a037);
+  a037=(a046*a073);
+  a082=(a082+a037);
+  a037=(a046*a126);
+  a082=(a082+a037);
+  a136=(a136*a082);
+  a090=(a090*a043);
+  a037=(a046*a090);
+  a089=(a089+a074);
+  a044=(a085*a044);
+  a089=(a089+a044);
+  a089=(a089+a119);
+  a089=(a089+a030);
+  a037=(a037-a089);
+  a066=(a066*a033);
+  a037=(a037+a066);
+  a071=(a071*a048);
+  a065=(a065*a070);
+  a071=(a071+a065);
+  a065=(a046*a071);
+  a037=(a037-a065);
+  a029=(a024*a029);
+  a029=(a012*a029);
+  a084=(a084*a042);
+  a055=(a077*a055);
+  a032=(a032*a055);
+  a084=(a084+a032);
+  a029=(a029-a084);
+  a063=(a063*a070);
+  a070=(a025*a063);
+  a070=(a012*a070);
+  a029=(a029+a070);
+  a046=(a046*a029);
+  a037=(a037-a046);
+  a117=(a117*a037);
+  a136=(a136+a117);
+  a120=(a120*a075);
+  a136=(a136+a120);
+  a085=(a085*a038);
+  a038=(a040*a090);
+  a085=(a085-a038);
+  a072=(a072*a033);
+  a085=(a085-a072);
+  a072=(a040*a071);
+  a085=(a085+a072);
+  a040=(a040*a029);
+  a085=(a085+a040);
+  a128=(a128*a085);
+  a136=(a136+a128);
+  a003=(a003*a136);
+  a078=(a078+a003);
+  a078=(a000*a078);
+  a076=(a076+a078);
+  a135=(a076*a135);
+  a095=(a095+a135);
+  a110=(a110-a095);
+  a069=(a068*a069);
+  a095=(a025*a083);
+  a069=(a069-a095);
+  a095=(a024*a127);
+  a069=(a069+a095);
+  a085=(a085/a027);
+  a026=(a026*a136);
+  a085=(a085-a026);
+  a000=(a000*a085);
+  a069=(a069+a000);
+  a122=(a069*a122);
+  a110=(a110+a122);
+  a047=(a047*a045);
+  a045=(a008*a080);
+  a047=(a047-a045);
+  a045=(a013*a101);
+  a047=(a047+a045);
+  a079=(a079/a015);
+  a011=(a011*a111);
+  a079=(a079-a011);
+  a079=(a012*a079);
+  a047=(a047+a079);
+  a113=(a047*a113);
+  a064=(a064*a063);
+  a063=(a005*a083);
+  a064=(a064-a063);
+  a063=(a001*a127);
+  a064=(a064+a063);
+  a082=(a082/a027);
+  a002=(a002*a136);
+  a082=(a082-a002);
+  a082=(a012*a082);
+  a064=(a064+a082);
+  a137=(a064*a137);
+  a113=(a113+a137);
+  a010=(a010*a080);
+  a051=(a051*a050);
+  a010=(a010+a051);
+  a007=(a007*a101);
+  a010=(a010+a007);
+  a132=(a132/a015);
+  a016=(a016*a111);
+  a132=(a132+a016);
+  a132=(a012*a132);
+  a010=(a010+a132);
+  a097=(a010*a097);
+  a113=(a113-a097);
+  a024=(a024*a083);
+  a068=(a068*a067);
+  a024=(a024+a068);
+  a025=(a025*a127);
+  a024=(a024+a025);
+  a037=(a037/a027);
+  a009=(a009*a136);
+  a037=(a037+a009);
+  a012=(a012*a037);
+  a024=(a024+a012);
+  a138=(a024*a138);
+  a113=(a113-a138);
+  a110=(a110+a113);
+  if (res[1]!=0) res[1][2]=a110;
+  a081=(a081*a103);
+  a076=(a076*a107);
+  a081=(a081+a076);
+  a105=(a105*a121);
+  a081=(a081-a105);
+  a069=(a069*a094);
+  a081=(a081-a069);
+  a010=(a010*a116);
+  a047=(a047*a036);
+  a064=(a064*a125);
+  a047=(a047+a064);
+  a010=(a010-a047);
+  a024=(a024*a124);
+  a010=(a010+a024);
+  a081=(a081+a010);
+  if (res[1]!=0) res[1][3]=a081;
+  a081=(a028*a139);
+  a010=(a017*a102);
+  a081=(a081+a010);
+  a010=(a031*a129);
+  a081=(a081-a010);
+  a010=(a031*a131);
+  a081=(a081-a010);
+  a010=(a028*a118);
+  a081=(a081+a010);
+  a010=(a028*a140);
+  a081=(a081+a010);
+  a010=(a020*a096);
+  a081=(a081-a010);
+  a010=(a020*a114);
+  a081=(a081-a010);
+  a010=(a017*a104);
+  a081=(a081+a010);
+  a010=(a017*a106);
+  a081=(a081+a010);
+  if (res[2]!=0) res[2][0]=a081;
+  a129=(a042*a129);
+  a139=(a043*a139);
+  a102=(a041*a102);
+  a139=(a139+a102);
+  a129=(a129-a139);
+  a131=(a042*a131);
+  a129=(a129+a131);
+  a118=(a043*a118);
+  a129=(a129-a118);
+  a140=(a043*a140);
+  a129=(a129-a140);
+  a096=(a039*a096);
+  a129=(a129+a096);
+  a114=(a039*a114);
+  a129=(a129+a114);
+  a104=(a041*a104);
+  a129=(a129-a104);
+  a106=(a041*a106);
+  a129=(a129-a106);
+  if (res[2]!=0) res[2][1]=a129;
+  a129=(a028*a071);
+  a106=(a028*a090);
+  a104=(a017*a087);
+  a106=(a106+a104);
+  a104=(a031*a073);
+  a106=(a106+a104);
+  a031=(a031*a126);
+  a106=(a106+a031);
+  a129=(a129-a106);
+  a028=(a028*a029);
+  a129=(a129+a028);
+  a028=(a020*a056);
+  a129=(a129-a028);
+  a020=(a020*a018);
+  a129=(a129-a020);
+  a020=(a017*a054);
+  a129=(a129+a020);
+  a017=(a017*a100);
+  a129=(a129+a017);
+  if (res[2]!=0) res[2][2]=a129;
+  a090=(a043*a090);
+  a087=(a041*a087);
+  a090=(a090+a087);
+  a073=(a042*a073);
+  a090=(a090+a073);
+  a042=(a042*a126);
+  a090=(a090+a042);
+  a071=(a043*a071);
+  a090=(a090-a071);
+  a043=(a043*a029);
+  a090=(a090-a043);
+  a056=(a039*a056);
+  a090=(a090+a056);
+  a039=(a039*a018);
+  a090=(a090+a039);
+  a054=(a041*a054);
+  a090=(a090-a054);
+  a041=(a041*a100);
+  a090=(a090-a041);
+  if (res[2]!=0) res[2][3]=a090;
+  a060=casadi_fabs(a060);
+  a077=casadi_fabs(a077);
+  a090=(a060+a077);
+  a060=(a060-a077);
+  a060=casadi_fabs(a060);
+  a090=(a090-a060);
+  a060=2.;
+  a090=(a090/a060);
+  if (res[3]!=0) res[3][0]=a090;
+  a090=5.0000000000000000e-01;
+  a060=casadi_sq(a008);
+  a077=casadi_sq(a013);
+  a060=(a060-a077);
+  a077=casadi_sq(a005);
+  a041=casadi_sq(a001);
+  a077=(a077-a041);
+  a060=(a060+a077);
+  a060=casadi_sq(a060);
+  a008=(2.*a008);
+  a008=(a008*a013);
+  a005=(2.*a005);
+  a005=(a005*a001);
+  a008=(a008+a005);
+  a008=casadi_sq(a008);
+  a060=(a060+a008);
+  a060=sqrt(a060);
+  a060=(a090*a060);
+  a004=(a004-a060);
+  a060=casadi_fabs(a004);
+  a004=(a004+a060);
+  a090=(a090*a004);
+  a090=sqrt(a090);
+  if (res[3]!=0) res[3][1]=a090;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f58(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_inverse_dynamics_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_inverse_dynamics_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_inverse_dynamics_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_inverse_dynamics_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_inverse_dynamics_jacobians_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_inverse_dynamics_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_inverse_dynamics_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "xedd";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_inverse_dynamics_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "u";
+    case 1: return "d_xe";
+    case 2: return "d_xed";
+    case 3: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_inverse_dynamics_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_inverse_dynamics_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s1;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_sampled_step_xedd:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],sing[2]) */
+static int casadi_f60(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43;
+  a00=-2.4399999999999999e-01;
+  a01=-5.1229508196721307e-01;
+  a02=2.0491803278688523e+00;
+  a03=arg[0]? arg[0][1] : 0;
+  a04=(a02*a03);
+  a01=(a01+a04);
+  a05=arg[0]? arg[0][0] : 0;
+  a06=casadi_sq(a05);
+  a07=-2.5000000000000000e-01;
+  a07=(a07+a03);
+  a08=casadi_sq(a07);
+  a09=(a06+a08);
+  a09=sqrt(a09);
+  a10=(a05/a09);
+  a11=1.;
+  a12=-4.1991400161246979e+00;
+  a06=(a12*a06);
+  a06=(a11+a06);
+  a08=(a12*a08);
+  a06=(a06+a08);
+  a06=sqrt(a06);
+  a10=(a10*a06);
+  a08=(a01-a10);
+  a13=(a00*a08);
+  a14=2.4399999999999999e-01;
+  a02=(a02*a05);
+  a06=(a06/a09);
+  a06=(a06*a07);
+  a07=(a02-a06);
+  a09=(a14*a07);
+  a15=(a13*a09);
+  a01=(a01+a10);
+  a10=(a00*a01);
+  a06=(a02+a06);
+  a16=(a14*a06);
+  a17=(a10*a16);
+  a15=(a15-a17);
+  a13=(a13/a15);
+  a17=arg[3]? arg[3][4] : 0;
+  a18=(a13*a17);
+  a10=(a10/a15);
+  a19=arg[3]? arg[3][2] : 0;
+  a20=(a06*a07);
+  a21=(a08*a01);
+  a20=(a20+a21);
+  a20=(a19*a20);
+  a21=(a10*a20);
+  a18=(a18-a21);
+  a21=(a18*a13);
+  a22=(a13*a20);
+  a23=arg[3]? arg[3][0] : 0;
+  a24=(a10*a23);
+  a22=(a22-a24);
+  a24=(a22*a10);
+  a25=casadi_sq(a03);
+  a26=(a12*a25);
+  a26=(a11+a26);
+  a27=-4.3300000000000000e-01;
+  a27=(a27+a05);
+  a05=casadi_sq(a27);
+  a12=(a12*a05);
+  a26=(a26+a12);
+  a26=sqrt(a26);
+  a25=(a25+a05);
+  a25=sqrt(a25);
+  a05=(a26/a25);
+  a05=(a05*a27);
+  a27=(a04-a05);
+  a12=(a00*a27);
+  a28=-8.8729508196721307e-01;
+  a28=(a28+a02);
+  a03=(a03/a25);
+  a03=(a03*a26);
+  a26=(a28-a03);
+  a25=(a14*a26);
+  a02=(a12*a25);
+  a04=(a04+a05);
+  a05=(a00*a04);
+  a28=(a28+a03);
+  a14=(a14*a28);
+  a03=(a05*a14);
+  a02=(a02-a03);
+  a12=(a12/a02);
+  a03=arg[3]? arg[3][3] : 0;
+  a29=(a28*a26);
+  a30=(a27*a04);
+  a29=(a29+a30);
+  a29=(a03*a29);
+  a30=(a12*a29);
+  a05=(a05/a02);
+  a31=arg[3]? arg[3][1] : 0;
+  a32=(a05*a31);
+  a30=(a30-a32);
+  a32=(a30*a05);
+  a24=(a24+a32);
+  a21=(a21-a24);
+  a24=arg[3]? arg[3][5] : 0;
+  a32=(a12*a24);
+  a33=(a05*a29);
+  a32=(a32-a33);
+  a33=(a32*a12);
+  a21=(a21+a33);
+  a09=(a09/a15);
+  a33=arg[2]? arg[2][0] : 0;
+  a34=(a09*a33);
+  a25=(a25/a02);
+  a35=arg[2]? arg[2][1] : 0;
+  a36=(a25*a35);
+  a34=(a34+a36);
+  a36=arg[1]? arg[1][0] : 0;
+  a37=(a09*a36);
+  a38=arg[1]? arg[1][1] : 0;
+  a39=(a10*a38);
+  a37=(a37-a39);
+  a39=(a00*a37);
+  a40=(a39*a08);
+  a40=(a40*a37);
+  a41=(a13*a38);
+  a16=(a16/a15);
+  a15=(a16*a36);
+  a41=(a41-a15);
+  a15=(a00*a41);
+  a42=(a15*a01);
+  a42=(a42*a41);
+  a40=(a40+a42);
+  a42=(a10*a40);
+  a39=(a39*a06);
+  a39=(a39*a37);
+  a15=(a15*a07);
+  a15=(a15*a41);
+  a39=(a39+a15);
+  a15=(a09*a39);
+  a42=(a42-a15);
+  a15=(a23*a42);
+  a39=(a16*a39);
+  a40=(a13*a40);
+  a39=(a39-a40);
+  a40=(a20*a39);
+  a15=(a15+a40);
+  a40=(a19*a41);
+  a08=(a08*a07);
+  a06=(a06*a01);
+  a08=(a08-a06);
+  a40=(a40*a08);
+  a40=(a40*a41);
+  a15=(a15+a40);
+  a40=(a09*a15);
+  a41=(a25*a36);
+  a06=(a05*a38);
+  a41=(a41-a06);
+  a06=(a00*a41);
+  a43=(a06*a27);
+  a43=(a43*a41);
+  a38=(a12*a38);
+  a14=(a14/a02);
+  a36=(a14*a36);
+  a38=(a38-a36);
+  a00=(a00*a38);
+  a36=(a00*a04);
+  a36=(a36*a38);
+  a43=(a43+a36);
+  a36=(a05*a43);
+  a06=(a06*a28);
+  a06=(a06*a41);
+  a00=(a00*a26);
+  a00=(a00*a38);
+  a06=(a06+a00);
+  a00=(a25*a06);
+  a36=(a36-a00);
+  a00=(a31*a36);
+  a06=(a14*a06);
+  a43=(a12*a43);
+  a06=(a06-a43);
+  a43=(a29*a06);
+  a00=(a00+a43);
+  a43=(a03*a38);
+  a27=(a27*a26);
+  a28=(a28*a04);
+  a27=(a27-a28);
+  a43=(a43*a27);
+  a43=(a43*a38);
+  a00=(a00+a43);
+  a43=(a25*a00);
+  a40=(a40+a43);
+  a42=(a20*a42);
+  a39=(a17*a39);
+  a42=(a42+a39);
+  a19=(a19*a37);
+  a19=(a19*a08);
+  a19=(a19*a37);
+  a42=(a42-a19);
+  a19=(a16*a42);
+  a40=(a40-a19);
+  a36=(a29*a36);
+  a06=(a24*a06);
+  a36=(a36+a06);
+  a03=(a03*a41);
+  a03=(a03*a27);
+  a03=(a03*a41);
+  a36=(a36-a03);
+  a03=(a14*a36);
+  a40=(a40-a03);
+  a34=(a34-a40);
+  a40=arg[3]? arg[3][8] : 0;
+  a03=0.;
+  a06=(a03<=a37);
+  a19=(a06?a11:0);
+  a06=(!a06);
+  a39=-1.;
+  a06=(a06?a39:0);
+  a19=(a19+a06);
+  a40=(a40*a19);
+  a19=arg[3]? arg[3][6] : 0;
+  a19=(a19*a37);
+  a40=(a40+a19);
+  a19=(a09*a40);
+  a37=arg[3]? arg[3][9] : 0;
+  a03=(a03<=a41);
+  a06=(a03?a11:0);
+  a03=(!a03);
+  a03=(a03?a39:0);
+  a06=(a06+a03);
+  a37=(a37*a06);
+  a06=arg[3]? arg[3][7] : 0;
+  a06=(a06*a41);
+  a37=(a37+a06);
+  a06=(a25*a37);
+  a19=(a19+a06);
+  a34=(a34-a19);
+  a19=(a21*a34);
+  a06=(a09*a20);
+  a17=(a16*a17);
+  a06=(a06-a17);
+  a17=(a06*a13);
+  a23=(a09*a23);
+  a20=(a16*a20);
+  a23=(a23-a20);
+  a20=(a23*a10);
+  a31=(a25*a31);
+  a41=(a14*a29);
+  a31=(a31-a41);
+  a41=(a31*a05);
+  a20=(a20+a41);
+  a17=(a17-a20);
+  a29=(a25*a29);
+  a24=(a14*a24);
+  a29=(a29-a24);
+  a24=(a29*a12);
+  a17=(a17+a24);
+  a40=(a10*a40);
+  a37=(a05*a37);
+  a40=(a40+a37);
+  a33=(a10*a33);
+  a35=(a05*a35);
+  a33=(a33+a35);
+  a13=(a13*a42);
+  a10=(a10*a15);
+  a05=(a05*a00);
+  a10=(a10+a05);
+  a13=(a13-a10);
+  a12=(a12*a36);
+  a13=(a13+a12);
+  a33=(a33+a13);
+  a40=(a40-a33);
+  a33=(a17*a40);
+  a19=(a19-a33);
+  a23=(a23*a09);
+  a31=(a31*a25);
+  a23=(a23+a31);
+  a06=(a06*a16);
+  a23=(a23-a06);
+  a29=(a29*a14);
+  a23=(a23-a29);
+  a21=(a23*a21);
+  a22=(a22*a09);
+  a30=(a30*a25);
+  a22=(a22+a30);
+  a18=(a18*a16);
+  a22=(a22-a18);
+  a32=(a32*a14);
+  a22=(a22-a32);
+  a17=(a17*a22);
+  a21=(a21-a17);
+  a19=(a19/a21);
+  if (res[0]!=0) res[0][0]=a19;
+  a23=(a23*a40);
+  a22=(a22*a34);
+  a23=(a23-a22);
+  a23=(a23/a21);
+  if (res[0]!=0) res[0][1]=a23;
+  a08=casadi_fabs(a08);
+  a27=casadi_fabs(a27);
+  a23=(a08+a27);
+  a08=(a08-a27);
+  a08=casadi_fabs(a08);
+  a23=(a23-a08);
+  a08=2.;
+  a23=(a23/a08);
+  if (res[1]!=0) res[1][0]=a23;
+  a23=5.0000000000000000e-01;
+  a08=casadi_sq(a07);
+  a27=casadi_sq(a01);
+  a08=(a08-a27);
+  a27=casadi_sq(a26);
+  a21=casadi_sq(a04);
+  a27=(a27-a21);
+  a08=(a08+a27);
+  a08=casadi_sq(a08);
+  a07=(2.*a07);
+  a07=(a07*a01);
+  a26=(2.*a26);
+  a26=(a26*a04);
+  a07=(a07+a26);
+  a07=casadi_sq(a07);
+  a08=(a08+a07);
+  a08=sqrt(a08);
+  a08=(a23*a08);
+  a11=(a11-a08);
+  a08=casadi_fabs(a11);
+  a11=(a11+a08);
+  a23=(a23*a11);
+  a23=sqrt(a23);
+  if (res[1]!=0) res[1][1]=a23;
+  return 0;
+}
+
+/* fivebar_sampled_step:(x[4],tau_a[2],theta[10],T)->(x_next[4],sing[2]) */
+static int casadi_f59(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w00=w+44, w01, w02, *w03=w+48, *w04=w+50, *w05=w+52, *w06=w+54, *w08=w+56, *w09=w+58, *w10=w+60;
+  casadi_real w11, *w12=w+64, *w13=w+68;
+  const casadi_real **arg1=arg+4, *cr, *cs, *wr07;
+  casadi_copy(arg[0], 4, w00);
+  w01 = arg[3] ? arg[3][0] : 0;
+  w02 = 3.;
+  w01 /= w02;
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  casadi_copy(arg[1], 2, w06);
+  wr07 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w09;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  casadi_copy(w00, 4, res[0]);
+  casadi_copy(w09, 2, res[1]);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f59(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_sampled_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_sampled_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_sampled_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_sampled_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_sampled_step_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_sampled_step_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_sampled_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_sampled_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_a";
+    case 2: return "theta";
+    case 3: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_sampled_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_sampled_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    case 2: return casadi_s3;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_sampled_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_sampled_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 72;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 72*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_sampled_step_jacobians:(x[4],tau_a[2],theta[10],T)->(x_next[4],d_x[16],d_tau_a[8],sing[2]) */
+static int casadi_f61(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i, j;
+  casadi_real **res1=res+4, *rr, *w00=w+173, w01, w02, *w03=w+177, *w04=w+179, *w05=w+181, *w06=w+183, *w08=w+185, *w09=w+187, *w10=w+191;
+  casadi_real *w11=w+195, *w12=w+199, *w13=w+201, w14, *w15=w+205, *w16=w+209, *w17=w+213, *w18=w+217, *w19=w+221, *w20=w+225, *w21=w+229, *w22=w+233;
+  casadi_real *w23=w+237, *w24=w+241, *w25=w+245, *w26=w+249, *w27=w+253, *w28=w+257, *w29=w+261, *w30=w+265, *w31=w+269, *w32=w+273, *w33=w+277, *w34=w+281;
+  casadi_real *w35=w+285, *w36=w+289, *w37=w+293, *w38=w+297, *w39=w+301, *w40=w+305, *w41=w+309, *w42=w+313, *w43=w+317, *w44=w+321, *w45=w+325, *w46=w+329;
+  casadi_real *w47=w+333, *w48=w+337, *w49=w+341, *w50=w+349, *w51=w+361, *w52=w+385, *w53=w+391, *w54=w+397, *w55=w+409, *w56=w+421, *w57=w+439, *w58=w+457;
+  casadi_real *w59=w+481, *w60=w+501, *w61=w+521, *w62=w+533, *w63=w+557, *w64=w+581, *w65=w+597, *w66=w+613;
+  const casadi_int *cii;
+  const casadi_real **arg1=arg+4, *cr, *cs, *ct, *wr07;
+  casadi_copy(arg[0], 4, w00);
+  w01 = arg[3] ? arg[3][0] : 0;
+  w02 = 3.;
+  w01 /= w02;
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  casadi_copy(arg[1], 2, w06);
+  wr07 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w09;
+  res1[2]=w10;
+  res1[3]=w11;
+  res1[4]=0;
+  res1[5]=w12;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w13;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w15, cs=w13; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w15, cr=w00, cs=w15; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w15+2; cs!=w15+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w15+0; cs!=w15+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w15+2; cs!=w15+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w15;
+  res1[2]=w16;
+  res1[3]=w17;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w18;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w19, cs=w18; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w13, cs=w19; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w18, cs=w18; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w18, cr=w00, cs=w18; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w18+2; cs!=w18+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w18+0; cs!=w18+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w18+2; cs!=w18+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w18;
+  res1[2]=w19;
+  res1[3]=w20;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w21;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w22, cs=w21; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w13, cs=w22; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w21, cs=w21; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w21, cr=w00, cs=w21; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w21+2; cs!=w21+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w21+0; cs!=w21+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w21+2; cs!=w21+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w21;
+  res1[2]=w22;
+  res1[3]=w23;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w24;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w24; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w13, cs=w13; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w13;
+  res1[2]=w24;
+  res1[3]=w25;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w26;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w27, cs=w26; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w27, cr=w00, cs=w27; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w27+2; cs!=w27+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w27+0; cs!=w27+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w27+2; cs!=w27+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w27;
+  res1[2]=w28;
+  res1[3]=w29;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w30;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w31, cs=w30; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w26, cs=w31; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w30, cs=w30; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w30, cr=w00, cs=w30; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w30+2; cs!=w30+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w30+0; cs!=w30+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w30+2; cs!=w30+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w30;
+  res1[2]=w31;
+  res1[3]=w32;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w33;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w34, cs=w33; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w26, cs=w34; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w33, cs=w33; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w33, cr=w00, cs=w33; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w33+2; cs!=w33+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w33+0; cs!=w33+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w33+2; cs!=w33+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w33;
+  res1[2]=w34;
+  res1[3]=w35;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w36;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w26, cs=w36; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w26, cs=w26; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w26; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w26;
+  res1[2]=w36;
+  res1[3]=w37;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w38;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w39, cs=w38; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w39, cr=w00, cs=w39; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w39+2; cs!=w39+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w39+0; cs!=w39+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w39+2; cs!=w39+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w39;
+  res1[2]=w40;
+  res1[3]=w41;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w42;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w43, cs=w42; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w38, cs=w43; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w42, cs=w42; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w42, cr=w00, cs=w42; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w42+2; cs!=w42+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w42+0; cs!=w42+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w42+2; cs!=w42+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w42;
+  res1[2]=w43;
+  res1[3]=w44;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w45;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w46, cs=w45; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w38, cs=w46; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w45, cs=w45; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w45, cr=w00, cs=w45; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w45+2; cs!=w45+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w45+0; cs!=w45+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w45+2; cs!=w45+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w45;
+  res1[2]=w46;
+  res1[3]=w47;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w48;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w38, cs=w48; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w38, cs=w38; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w38; i<4; ++i) (*rr++) += (*cs++);
+  casadi_copy(w00, 4, res[0]);
+  casadi_fill(w00, 4, 1.);
+  casadi_clear(w49, 8);
+  rr=w50;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  casadi_densify(w50, casadi_s19, w51, 0);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w52, cs=w50+0; cs!=w50+12; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  casadi_trans(w52,casadi_s21, w53, casadi_s20, iw);
+  casadi_clear(w54, 12);
+  for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense_sparse(w49, 2, w50, casadi_s19, w54);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w11; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w55;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w55; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w55, cs=w54; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<6; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
+  casadi_trans(w56,casadi_s23, w57, casadi_s22, iw);
+  casadi_densify(w57, casadi_s22, w58, 0);
+  casadi_project(w50, casadi_s19, w59, casadi_s24, w);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w57, cs=w57; i<18; ++i) (*rr++)  = (w14*(*cs++));
+  casadi_project(w57, casadi_s22, w60, casadi_s24, w);
+  for (i=0, rr=w59, cs=w60; i<20; ++i) (*rr++) += (*cs++);
+  for (cii=casadi_s25, rr=w55, cs=w59; cii!=casadi_s25+12; ++cii) *rr++ = cs[*cii];
+  for (i=0, rr=w54, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w55, 12);
+  for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w15, cs=w16; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense_sparse(w49, 2, w59, casadi_s24, w55);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w17; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w61;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w55, cs=w61; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w61, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w62;
+  for (i=0, cs=w54; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w61; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w62; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w62, cs=w63; i<24; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w58, cs=w62; i<24; ++i) (*rr++) += (*cs++);
+  casadi_densify(w50, casadi_s19, w62, 0);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w63, cs=w63; i<24; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w62, cs=w63; i<24; ++i) (*rr++) += (*cs++);
+  for (rr=w54, cs=w62+0; cs!=w62+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w61, cs=w54; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w54, 12);
+  for (i=0, rr=w00, cs=w18; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w18, cs=w19; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w18; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w62, 6, w54, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w20; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w55;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w55; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w55, cs=w54; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w62;
+  for (i=0, cs=w61; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w62; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w62, cs=w63; i<24; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w58, cs=w62; i<24; ++i) (*rr++) += (*cs++);
+  casadi_densify(w50, casadi_s19, w62, 0);
+  for (i=0, rr=w63, cs=w63; i<24; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w62, cs=w63; i<24; ++i) (*rr++) += (*cs++);
+  for (rr=w50, cs=w62+0; cs!=w62+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w61, cs=w50; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w50, 12);
+  for (i=0, rr=w00, cs=w21; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w21, cs=w22; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w21; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w62, 6, w50, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w23; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w55;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w50, cs=w55; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w55, cs=w50; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w62;
+  for (i=0, cs=w61; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w62; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w58, cs=w63; i<24; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w58, cs=w58; i<24; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w58; i<24; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w61, cs=w51+0; cs!=w51+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w55, cs=w61; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w61, 12);
+  for (i=0, rr=w00, cs=w13; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w13, cs=w24; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w13; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w51, 6, w61, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w25; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w50;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w61, cs=w50; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w50, cs=w61; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w58;
+  for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w50; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w58; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w58, cs=w63; i<24; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w58, cr=w51, cs=w58; i<24; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w55, cs=w58+0; cs!=w58+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w50, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w55, 12);
+  for (i=0, rr=w00, cs=w27; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w27, cs=w28; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w27; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w58, 6, w55, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w29; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w61;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w55, cs=w61; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w61, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w58;
+  for (i=0, cs=w50; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w61; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w58; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w58, cs=w62; i<24; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w63, cs=w58; i<24; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w62, cs=w62; i<24; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w62, cr=w51, cs=w62; i<24; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w50, cs=w62+0; cs!=w62+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w61, cs=w50; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w50, 12);
+  for (i=0, rr=w00, cs=w30; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w30, cs=w31; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w30; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w62, 6, w50, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w32; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w55;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w50, cs=w55; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w55, cs=w50; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w62;
+  for (i=0, cs=w61; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w58, cs=w62; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w62, cs=w58; i<24; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w63, cs=w62; i<24; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w58, cs=w58; i<24; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w58, cr=w51, cs=w58; i<24; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w61, cs=w58+0; cs!=w58+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w55, cs=w61; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w61, 12);
+  for (i=0, rr=w00, cs=w33; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w33, cs=w34; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w33; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w58, 6, w61, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w35; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w50;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w61, cs=w50; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w50, cs=w61; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w58;
+  for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w50; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w58; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w62; i<24; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w63, cs=w63; i<24; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w63; i<24; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w55, cs=w51+0; cs!=w51+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w50, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w55, 12);
+  for (i=0, rr=w00, cs=w26; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w26, cs=w36; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w26; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w51, 6, w55, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w37; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w61;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w55, cs=w61; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w61, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w63;
+  for (i=0, cs=w50; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w61; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w63; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w63, cs=w62; i<24; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w63, cr=w51, cs=w63; i<24; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w50, cs=w63+0; cs!=w63+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w61, cs=w50; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w50, 12);
+  for (i=0, rr=w00, cs=w39; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w39, cs=w40; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w39; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w63, 6, w50, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w41; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w55;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w50, cs=w55; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w55, cs=w50; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w63;
+  for (i=0, cs=w61; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w58, cs=w63; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w58; i<24; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w62, cs=w63; i<24; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w58, cs=w58; i<24; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w58, cr=w51, cs=w58; i<24; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w61, cs=w58+0; cs!=w58+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w55, cs=w61; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w61, 12);
+  for (i=0, rr=w00, cs=w42; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w42, cs=w43; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w42; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w58, 6, w61, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w44; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w50;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w61, cs=w50; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w50, cs=w61; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w58;
+  for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w50; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w58; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w58, cs=w63; i<24; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w62, cs=w58; i<24; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w63, cs=w63; i<24; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w63, cr=w51, cs=w63; i<24; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w55, cs=w63+0; cs!=w63+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w50, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  casadi_clear(w55, 12);
+  for (i=0, rr=w00, cs=w45; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w45, cs=w46; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w49;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w45; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w49, 2, 4, w63, 6, w55, 0);
+  casadi_clear(w49, 8);
+  for (i=0, rr=w00, cs=w47; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w61;
+  for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, rr=w55, cs=w61; i<12; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w61, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
+  rr=w63;
+  for (i=0, cs=w50; i<12; ++i) *rr++ = *cs++;
+  for (i=0, cs=w61; i<12; ++i) *rr++ = *cs++;
+  for (i=0, rr=w58, cs=w63; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w62, cs=w58; i<24; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w62; i<24; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w62; i<24; ++i) (*rr++) += (*cs++);
+  for (rr=w64, cs=w51+0; cs!=w51+16; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w65, cs=w64; i<4; ++i) for (j=0; j<4; ++j) rr[i+j*4] = *cs++;
+  casadi_copy(w65, 16, res[1]);
+  for (rr=w49, cs=w51+16; cs!=w51+24; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w66, cs=w49; i<2; ++i) for (j=0; j<4; ++j) rr[i+j*2] = *cs++;
+  casadi_copy(w66, 8, res[2]);
+  casadi_copy(w12, 2, res[3]);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f61(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_sampled_step_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_sampled_step_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_sampled_step_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_sampled_step_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_sampled_step_jacobians_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_sampled_step_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_sampled_step_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_a";
+    case 2: return "theta";
+    case 3: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_sampled_step_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "d_x";
+    case 2: return "d_tau_a";
+    case 3: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_sampled_step_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    case 2: return casadi_s3;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_sampled_step_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s4;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 10;
+  if (sz_iw) *sz_iw = 7;
+  if (sz_w) *sz_w = 621;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 10*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 7*sizeof(casadi_int);
+  if (sz_w) *sz_w = 621*sizeof(casadi_real);
   return 0;
 }
 

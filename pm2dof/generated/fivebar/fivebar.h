@@ -40,6 +40,12 @@
  *   fivebar_apd_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
  *   fivebar_apd_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
  *   fivebar_apd_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_ctc_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_ctc_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_ctc_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_lqr_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[11], K[8], tau_ff[2]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_lqr_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[11], K[8], tau_ff[2]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_lqr_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[11], K[8], tau_ff[2]) -> (tau_a[2], state_next[14], status[1], diag[10])
  *   fivebar_plant_xedd(xe[2], xed[2], tau_a[2], plant[15]) -> (xedd[2])
  *   fivebar_plant_step(x[4], tau_a[2], plant[15], h[1]) -> (x_next[4])
  *   fivebar_measure(xe[2], plant[15]) -> (qa[2])
@@ -52,19 +58,33 @@
  *   fivebar_apd_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
  *   fivebar_apd_minmax_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
  *   fivebar_apd_preload_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
+ *   fivebar_ctc_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
+ *   fivebar_ctc_minmax_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
+ *   fivebar_ctc_preload_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
+ *   fivebar_lqr_closed_loop(x[18], u[16], p[26]) -> (x_next[18], y[17])
+ *   fivebar_lqr_minmax_closed_loop(x[18], u[16], p[26]) -> (x_next[18], y[17])
+ *   fivebar_lqr_preload_closed_loop(x[18], u[16], p[26]) -> (x_next[18], y[17])
  *   fivebar_path_coefficients(p[2], dp[2], ddp[2], theta[10], tau_max[2]) -> (a[2], b[2], S[4], v1[2], N_min_norm[4], h_min_norm[2], N_min_max[4], h_min_max[2], sing[2])
  *   fivebar_path_mvc(stage[20], params[11]) -> (x_mvc[1])
  *   fivebar_path_backward(x_next_max[1], pair[41], params[11]) -> (x_max[1], y[1])
  *   fivebar_path_forward(x[1], input[42], params[11]) -> (x_next[1], y[6])
  *   fivebar_path_torques(stage[20], sd[1], sdd[1], params[11], tau_max[2]) -> (u[2], tau_min_norm[2], tau_min_max[2], min_max_ratio[1])
+ *   fivebar_forward_dynamics_jacobians(xe[2], xed[2], tau_a[2], theta[10]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[4], d_theta[20], sing[2])
+ *   fivebar_inverse_dynamics(xe[2], xed[2], xedd[2], theta[10]) -> (u[2], sing[2])
+ *   fivebar_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[10]) -> (u[2], d_xe[4], d_xed[4], sing[2])
+ *   fivebar_sampled_step(x[4], tau_a[2], theta[10], T[1]) -> (x_next[4], sing[2])
+ *   fivebar_sampled_step_jacobians(x[4], tau_a[2], theta[10], T[1]) -> (x_next[4], d_x[16], d_tau_a[8], sing[2])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[10]
  *   na_params: Kd[2], Q[2], Gamma[10], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
  *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
+ *   ctc_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
+ *   lqr_params: T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
  *   cl_state: xe[2], xed[2], ctrl_state[14]
  *   cl_input: xd[2], xd_dot[2], xd_ddot[2]
  *   cl_output: xe[2], xed[2], tau_a[2], status[1], theta_hat[10]
+ *   lqr_cl_input: xd[2], xd_dot[2], xd_ddot[2], K[8], tau_ff[2]
  *   plant: alpha[2], beta[2], gamma[2], fv[2], fc[2], fs[2], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[4], h[2], a[2], b[2], S[4], v1[2], rho[2], delta[1], x_cap[1]
  *   path_pair: stage[20], next[20], next_cap[1]
@@ -560,6 +580,114 @@ int fivebar_apd_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, 
 #define fivebar_apd_preload_step_SZ_RES 6
 #define fivebar_apd_preload_step_SZ_IW 0
 #define fivebar_apd_preload_step_SZ_W 51
+int fivebar_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_ctc_step_checkout(void);
+void fivebar_ctc_step_release(int mem);
+void fivebar_ctc_step_incref(void);
+void fivebar_ctc_step_decref(void);
+casadi_int fivebar_ctc_step_n_in(void);
+casadi_int fivebar_ctc_step_n_out(void);
+casadi_real fivebar_ctc_step_default_in(casadi_int i);
+const char* fivebar_ctc_step_name_in(casadi_int i);
+const char* fivebar_ctc_step_name_out(casadi_int i);
+const casadi_int* fivebar_ctc_step_sparsity_in(casadi_int i);
+const casadi_int* fivebar_ctc_step_sparsity_out(casadi_int i);
+int fivebar_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_ctc_step_SZ_ARG 6
+#define fivebar_ctc_step_SZ_RES 4
+#define fivebar_ctc_step_SZ_IW 0
+#define fivebar_ctc_step_SZ_W 0
+int fivebar_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_ctc_minmax_step_checkout(void);
+void fivebar_ctc_minmax_step_release(int mem);
+void fivebar_ctc_minmax_step_incref(void);
+void fivebar_ctc_minmax_step_decref(void);
+casadi_int fivebar_ctc_minmax_step_n_in(void);
+casadi_int fivebar_ctc_minmax_step_n_out(void);
+casadi_real fivebar_ctc_minmax_step_default_in(casadi_int i);
+const char* fivebar_ctc_minmax_step_name_in(casadi_int i);
+const char* fivebar_ctc_minmax_step_name_out(casadi_int i);
+const casadi_int* fivebar_ctc_minmax_step_sparsity_in(casadi_int i);
+const casadi_int* fivebar_ctc_minmax_step_sparsity_out(casadi_int i);
+int fivebar_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_ctc_minmax_step_SZ_ARG 6
+#define fivebar_ctc_minmax_step_SZ_RES 4
+#define fivebar_ctc_minmax_step_SZ_IW 0
+#define fivebar_ctc_minmax_step_SZ_W 0
+int fivebar_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_ctc_preload_step_checkout(void);
+void fivebar_ctc_preload_step_release(int mem);
+void fivebar_ctc_preload_step_incref(void);
+void fivebar_ctc_preload_step_decref(void);
+casadi_int fivebar_ctc_preload_step_n_in(void);
+casadi_int fivebar_ctc_preload_step_n_out(void);
+casadi_real fivebar_ctc_preload_step_default_in(casadi_int i);
+const char* fivebar_ctc_preload_step_name_in(casadi_int i);
+const char* fivebar_ctc_preload_step_name_out(casadi_int i);
+const casadi_int* fivebar_ctc_preload_step_sparsity_in(casadi_int i);
+const casadi_int* fivebar_ctc_preload_step_sparsity_out(casadi_int i);
+int fivebar_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_ctc_preload_step_SZ_ARG 11
+#define fivebar_ctc_preload_step_SZ_RES 6
+#define fivebar_ctc_preload_step_SZ_IW 0
+#define fivebar_ctc_preload_step_SZ_W 51
+int fivebar_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_lqr_step_checkout(void);
+void fivebar_lqr_step_release(int mem);
+void fivebar_lqr_step_incref(void);
+void fivebar_lqr_step_decref(void);
+casadi_int fivebar_lqr_step_n_in(void);
+casadi_int fivebar_lqr_step_n_out(void);
+casadi_real fivebar_lqr_step_default_in(casadi_int i);
+const char* fivebar_lqr_step_name_in(casadi_int i);
+const char* fivebar_lqr_step_name_out(casadi_int i);
+const casadi_int* fivebar_lqr_step_sparsity_in(casadi_int i);
+const casadi_int* fivebar_lqr_step_sparsity_out(casadi_int i);
+int fivebar_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_lqr_step_SZ_ARG 8
+#define fivebar_lqr_step_SZ_RES 4
+#define fivebar_lqr_step_SZ_IW 0
+#define fivebar_lqr_step_SZ_W 0
+int fivebar_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_lqr_minmax_step_checkout(void);
+void fivebar_lqr_minmax_step_release(int mem);
+void fivebar_lqr_minmax_step_incref(void);
+void fivebar_lqr_minmax_step_decref(void);
+casadi_int fivebar_lqr_minmax_step_n_in(void);
+casadi_int fivebar_lqr_minmax_step_n_out(void);
+casadi_real fivebar_lqr_minmax_step_default_in(casadi_int i);
+const char* fivebar_lqr_minmax_step_name_in(casadi_int i);
+const char* fivebar_lqr_minmax_step_name_out(casadi_int i);
+const casadi_int* fivebar_lqr_minmax_step_sparsity_in(casadi_int i);
+const casadi_int* fivebar_lqr_minmax_step_sparsity_out(casadi_int i);
+int fivebar_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_lqr_minmax_step_SZ_ARG 8
+#define fivebar_lqr_minmax_step_SZ_RES 4
+#define fivebar_lqr_minmax_step_SZ_IW 0
+#define fivebar_lqr_minmax_step_SZ_W 0
+int fivebar_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_lqr_preload_step_checkout(void);
+void fivebar_lqr_preload_step_release(int mem);
+void fivebar_lqr_preload_step_incref(void);
+void fivebar_lqr_preload_step_decref(void);
+casadi_int fivebar_lqr_preload_step_n_in(void);
+casadi_int fivebar_lqr_preload_step_n_out(void);
+casadi_real fivebar_lqr_preload_step_default_in(casadi_int i);
+const char* fivebar_lqr_preload_step_name_in(casadi_int i);
+const char* fivebar_lqr_preload_step_name_out(casadi_int i);
+const casadi_int* fivebar_lqr_preload_step_sparsity_in(casadi_int i);
+const casadi_int* fivebar_lqr_preload_step_sparsity_out(casadi_int i);
+int fivebar_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_lqr_preload_step_SZ_ARG 13
+#define fivebar_lqr_preload_step_SZ_RES 6
+#define fivebar_lqr_preload_step_SZ_IW 0
+#define fivebar_lqr_preload_step_SZ_W 51
 int fivebar_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_plant_xedd_checkout(void);
 void fivebar_plant_xedd_release(int mem);
@@ -776,6 +904,114 @@ int fivebar_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* s
 #define fivebar_apd_preload_closed_loop_SZ_RES 8
 #define fivebar_apd_preload_closed_loop_SZ_IW 0
 #define fivebar_apd_preload_closed_loop_SZ_W 157
+int fivebar_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_ctc_closed_loop_checkout(void);
+void fivebar_ctc_closed_loop_release(int mem);
+void fivebar_ctc_closed_loop_incref(void);
+void fivebar_ctc_closed_loop_decref(void);
+casadi_int fivebar_ctc_closed_loop_n_in(void);
+casadi_int fivebar_ctc_closed_loop_n_out(void);
+casadi_real fivebar_ctc_closed_loop_default_in(casadi_int i);
+const char* fivebar_ctc_closed_loop_name_in(casadi_int i);
+const char* fivebar_ctc_closed_loop_name_out(casadi_int i);
+const casadi_int* fivebar_ctc_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fivebar_ctc_closed_loop_sparsity_out(casadi_int i);
+int fivebar_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_ctc_closed_loop_SZ_ARG 9
+#define fivebar_ctc_closed_loop_SZ_RES 6
+#define fivebar_ctc_closed_loop_SZ_IW 0
+#define fivebar_ctc_closed_loop_SZ_W 121
+int fivebar_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_ctc_minmax_closed_loop_checkout(void);
+void fivebar_ctc_minmax_closed_loop_release(int mem);
+void fivebar_ctc_minmax_closed_loop_incref(void);
+void fivebar_ctc_minmax_closed_loop_decref(void);
+casadi_int fivebar_ctc_minmax_closed_loop_n_in(void);
+casadi_int fivebar_ctc_minmax_closed_loop_n_out(void);
+casadi_real fivebar_ctc_minmax_closed_loop_default_in(casadi_int i);
+const char* fivebar_ctc_minmax_closed_loop_name_in(casadi_int i);
+const char* fivebar_ctc_minmax_closed_loop_name_out(casadi_int i);
+const casadi_int* fivebar_ctc_minmax_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fivebar_ctc_minmax_closed_loop_sparsity_out(casadi_int i);
+int fivebar_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_ctc_minmax_closed_loop_SZ_ARG 9
+#define fivebar_ctc_minmax_closed_loop_SZ_RES 6
+#define fivebar_ctc_minmax_closed_loop_SZ_IW 0
+#define fivebar_ctc_minmax_closed_loop_SZ_W 121
+int fivebar_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_ctc_preload_closed_loop_checkout(void);
+void fivebar_ctc_preload_closed_loop_release(int mem);
+void fivebar_ctc_preload_closed_loop_incref(void);
+void fivebar_ctc_preload_closed_loop_decref(void);
+casadi_int fivebar_ctc_preload_closed_loop_n_in(void);
+casadi_int fivebar_ctc_preload_closed_loop_n_out(void);
+casadi_real fivebar_ctc_preload_closed_loop_default_in(casadi_int i);
+const char* fivebar_ctc_preload_closed_loop_name_in(casadi_int i);
+const char* fivebar_ctc_preload_closed_loop_name_out(casadi_int i);
+const casadi_int* fivebar_ctc_preload_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fivebar_ctc_preload_closed_loop_sparsity_out(casadi_int i);
+int fivebar_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_ctc_preload_closed_loop_SZ_ARG 14
+#define fivebar_ctc_preload_closed_loop_SZ_RES 8
+#define fivebar_ctc_preload_closed_loop_SZ_IW 0
+#define fivebar_ctc_preload_closed_loop_SZ_W 155
+int fivebar_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_lqr_closed_loop_checkout(void);
+void fivebar_lqr_closed_loop_release(int mem);
+void fivebar_lqr_closed_loop_incref(void);
+void fivebar_lqr_closed_loop_decref(void);
+casadi_int fivebar_lqr_closed_loop_n_in(void);
+casadi_int fivebar_lqr_closed_loop_n_out(void);
+casadi_real fivebar_lqr_closed_loop_default_in(casadi_int i);
+const char* fivebar_lqr_closed_loop_name_in(casadi_int i);
+const char* fivebar_lqr_closed_loop_name_out(casadi_int i);
+const casadi_int* fivebar_lqr_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fivebar_lqr_closed_loop_sparsity_out(casadi_int i);
+int fivebar_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_lqr_closed_loop_SZ_ARG 11
+#define fivebar_lqr_closed_loop_SZ_RES 6
+#define fivebar_lqr_closed_loop_SZ_IW 0
+#define fivebar_lqr_closed_loop_SZ_W 109
+int fivebar_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_lqr_minmax_closed_loop_checkout(void);
+void fivebar_lqr_minmax_closed_loop_release(int mem);
+void fivebar_lqr_minmax_closed_loop_incref(void);
+void fivebar_lqr_minmax_closed_loop_decref(void);
+casadi_int fivebar_lqr_minmax_closed_loop_n_in(void);
+casadi_int fivebar_lqr_minmax_closed_loop_n_out(void);
+casadi_real fivebar_lqr_minmax_closed_loop_default_in(casadi_int i);
+const char* fivebar_lqr_minmax_closed_loop_name_in(casadi_int i);
+const char* fivebar_lqr_minmax_closed_loop_name_out(casadi_int i);
+const casadi_int* fivebar_lqr_minmax_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fivebar_lqr_minmax_closed_loop_sparsity_out(casadi_int i);
+int fivebar_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_lqr_minmax_closed_loop_SZ_ARG 11
+#define fivebar_lqr_minmax_closed_loop_SZ_RES 6
+#define fivebar_lqr_minmax_closed_loop_SZ_IW 0
+#define fivebar_lqr_minmax_closed_loop_SZ_W 109
+int fivebar_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_lqr_preload_closed_loop_checkout(void);
+void fivebar_lqr_preload_closed_loop_release(int mem);
+void fivebar_lqr_preload_closed_loop_incref(void);
+void fivebar_lqr_preload_closed_loop_decref(void);
+casadi_int fivebar_lqr_preload_closed_loop_n_in(void);
+casadi_int fivebar_lqr_preload_closed_loop_n_out(void);
+casadi_real fivebar_lqr_preload_closed_loop_default_in(casadi_int i);
+const char* fivebar_lqr_preload_closed_loop_name_in(casadi_int i);
+const char* fivebar_lqr_preload_closed_loop_name_out(casadi_int i);
+const casadi_int* fivebar_lqr_preload_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fivebar_lqr_preload_closed_loop_sparsity_out(casadi_int i);
+int fivebar_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_lqr_preload_closed_loop_SZ_ARG 16
+#define fivebar_lqr_preload_closed_loop_SZ_RES 8
+#define fivebar_lqr_preload_closed_loop_SZ_IW 0
+#define fivebar_lqr_preload_closed_loop_SZ_W 124
 int fivebar_path_coefficients(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_path_coefficients_checkout(void);
 void fivebar_path_coefficients_release(int mem);
@@ -866,6 +1102,96 @@ int fivebar_path_torques_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casa
 #define fivebar_path_torques_SZ_RES 4
 #define fivebar_path_torques_SZ_IW 0
 #define fivebar_path_torques_SZ_W 0
+int fivebar_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_forward_dynamics_jacobians_checkout(void);
+void fivebar_forward_dynamics_jacobians_release(int mem);
+void fivebar_forward_dynamics_jacobians_incref(void);
+void fivebar_forward_dynamics_jacobians_decref(void);
+casadi_int fivebar_forward_dynamics_jacobians_n_in(void);
+casadi_int fivebar_forward_dynamics_jacobians_n_out(void);
+casadi_real fivebar_forward_dynamics_jacobians_default_in(casadi_int i);
+const char* fivebar_forward_dynamics_jacobians_name_in(casadi_int i);
+const char* fivebar_forward_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* fivebar_forward_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* fivebar_forward_dynamics_jacobians_sparsity_out(casadi_int i);
+int fivebar_forward_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_forward_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_forward_dynamics_jacobians_SZ_ARG 4
+#define fivebar_forward_dynamics_jacobians_SZ_RES 6
+#define fivebar_forward_dynamics_jacobians_SZ_IW 0
+#define fivebar_forward_dynamics_jacobians_SZ_W 0
+int fivebar_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_inverse_dynamics_checkout(void);
+void fivebar_inverse_dynamics_release(int mem);
+void fivebar_inverse_dynamics_incref(void);
+void fivebar_inverse_dynamics_decref(void);
+casadi_int fivebar_inverse_dynamics_n_in(void);
+casadi_int fivebar_inverse_dynamics_n_out(void);
+casadi_real fivebar_inverse_dynamics_default_in(casadi_int i);
+const char* fivebar_inverse_dynamics_name_in(casadi_int i);
+const char* fivebar_inverse_dynamics_name_out(casadi_int i);
+const casadi_int* fivebar_inverse_dynamics_sparsity_in(casadi_int i);
+const casadi_int* fivebar_inverse_dynamics_sparsity_out(casadi_int i);
+int fivebar_inverse_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_inverse_dynamics_SZ_ARG 4
+#define fivebar_inverse_dynamics_SZ_RES 2
+#define fivebar_inverse_dynamics_SZ_IW 0
+#define fivebar_inverse_dynamics_SZ_W 0
+int fivebar_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_inverse_dynamics_jacobians_checkout(void);
+void fivebar_inverse_dynamics_jacobians_release(int mem);
+void fivebar_inverse_dynamics_jacobians_incref(void);
+void fivebar_inverse_dynamics_jacobians_decref(void);
+casadi_int fivebar_inverse_dynamics_jacobians_n_in(void);
+casadi_int fivebar_inverse_dynamics_jacobians_n_out(void);
+casadi_real fivebar_inverse_dynamics_jacobians_default_in(casadi_int i);
+const char* fivebar_inverse_dynamics_jacobians_name_in(casadi_int i);
+const char* fivebar_inverse_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* fivebar_inverse_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* fivebar_inverse_dynamics_jacobians_sparsity_out(casadi_int i);
+int fivebar_inverse_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_inverse_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_inverse_dynamics_jacobians_SZ_ARG 4
+#define fivebar_inverse_dynamics_jacobians_SZ_RES 4
+#define fivebar_inverse_dynamics_jacobians_SZ_IW 0
+#define fivebar_inverse_dynamics_jacobians_SZ_W 0
+int fivebar_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_sampled_step_checkout(void);
+void fivebar_sampled_step_release(int mem);
+void fivebar_sampled_step_incref(void);
+void fivebar_sampled_step_decref(void);
+casadi_int fivebar_sampled_step_n_in(void);
+casadi_int fivebar_sampled_step_n_out(void);
+casadi_real fivebar_sampled_step_default_in(casadi_int i);
+const char* fivebar_sampled_step_name_in(casadi_int i);
+const char* fivebar_sampled_step_name_out(casadi_int i);
+const casadi_int* fivebar_sampled_step_sparsity_in(casadi_int i);
+const casadi_int* fivebar_sampled_step_sparsity_out(casadi_int i);
+int fivebar_sampled_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_sampled_step_SZ_ARG 8
+#define fivebar_sampled_step_SZ_RES 4
+#define fivebar_sampled_step_SZ_IW 0
+#define fivebar_sampled_step_SZ_W 72
+int fivebar_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_sampled_step_jacobians_checkout(void);
+void fivebar_sampled_step_jacobians_release(int mem);
+void fivebar_sampled_step_jacobians_incref(void);
+void fivebar_sampled_step_jacobians_decref(void);
+casadi_int fivebar_sampled_step_jacobians_n_in(void);
+casadi_int fivebar_sampled_step_jacobians_n_out(void);
+casadi_real fivebar_sampled_step_jacobians_default_in(casadi_int i);
+const char* fivebar_sampled_step_jacobians_name_in(casadi_int i);
+const char* fivebar_sampled_step_jacobians_name_out(casadi_int i);
+const casadi_int* fivebar_sampled_step_jacobians_sparsity_in(casadi_int i);
+const casadi_int* fivebar_sampled_step_jacobians_sparsity_out(casadi_int i);
+int fivebar_sampled_step_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_sampled_step_jacobians_SZ_ARG 8
+#define fivebar_sampled_step_jacobians_SZ_RES 10
+#define fivebar_sampled_step_jacobians_SZ_IW 7
+#define fivebar_sampled_step_jacobians_SZ_W 621
 void fivebar_casadi_version(int* major, int* minor, int* patch);
 int fivebar_casadi_int_size(void);
 int fivebar_casadi_real_size(void);

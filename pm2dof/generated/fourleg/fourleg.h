@@ -40,6 +40,12 @@
  *   fourleg_apd_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
  *   fourleg_apd_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
  *   fourleg_apd_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_ctc_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_ctc_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_ctc_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_lqr_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[17], K[16], tau_ff[4]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_lqr_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[17], K[16], tau_ff[4]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_lqr_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[17], K[16], tau_ff[4]) -> (tau_a[4], state_next[24], status[1], diag[10])
  *   fourleg_plant_xedd(xe[2], xed[2], tau_a[4], plant[27]) -> (xedd[2])
  *   fourleg_plant_step(x[4], tau_a[4], plant[27], h[1]) -> (x_next[4])
  *   fourleg_measure(xe[2], plant[27]) -> (qa[4])
@@ -52,19 +58,33 @@
  *   fourleg_apd_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
  *   fourleg_apd_minmax_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
  *   fourleg_apd_preload_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
+ *   fourleg_ctc_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
+ *   fourleg_ctc_minmax_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
+ *   fourleg_ctc_preload_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
+ *   fourleg_lqr_closed_loop(x[28], u[26], p[44]) -> (x_next[28], y[29])
+ *   fourleg_lqr_minmax_closed_loop(x[28], u[26], p[44]) -> (x_next[28], y[29])
+ *   fourleg_lqr_preload_closed_loop(x[28], u[26], p[44]) -> (x_next[28], y[29])
  *   fourleg_path_coefficients(p[2], dp[2], ddp[2], theta[20], tau_max[4]) -> (a[2], b[2], S[8], v1[4], N_min_norm[8], h_min_norm[4], N_min_max[8], h_min_max[4], sing[2])
  *   fourleg_path_mvc(stage[34], params[21]) -> (x_mvc[1])
  *   fourleg_path_backward(x_next_max[1], pair[69], params[21]) -> (x_max[1], y[1])
  *   fourleg_path_forward(x[1], input[70], params[21]) -> (x_next[1], y[6])
  *   fourleg_path_torques(stage[34], sd[1], sdd[1], params[21], tau_max[4]) -> (u[2], tau_min_norm[4], tau_min_max[4], min_max_ratio[1])
+ *   fourleg_forward_dynamics_jacobians(xe[2], xed[2], tau_a[4], theta[20]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[8], d_theta[40], sing[2])
+ *   fourleg_inverse_dynamics(xe[2], xed[2], xedd[2], theta[20]) -> (u[2], sing[2])
+ *   fourleg_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[20]) -> (u[2], d_xe[4], d_xed[4], sing[2])
+ *   fourleg_sampled_step(x[4], tau_a[4], theta[20], T[1]) -> (x_next[4], sing[2])
+ *   fourleg_sampled_step_jacobians(x[4], tau_a[4], theta[20], T[1]) -> (x_next[4], d_x[16], d_tau_a[16], sing[2])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[20]
  *   na_params: Kd[2], Q[2], Gamma[20], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
  *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
+ *   ctc_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
+ *   lqr_params: T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
  *   cl_state: xe[2], xed[2], ctrl_state[24]
  *   cl_input: xd[2], xd_dot[2], xd_ddot[2]
  *   cl_output: xe[2], xed[2], tau_a[4], status[1], theta_hat[20]
+ *   lqr_cl_input: xd[2], xd_dot[2], xd_ddot[2], K[16], tau_ff[4]
  *   plant: alpha[4], beta[4], gamma[4], fv[4], fc[4], fs[4], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[8], h[4], a[2], b[2], S[8], v1[4], rho[4], delta[1], x_cap[1]
  *   path_pair: stage[34], next[34], next_cap[1]
@@ -560,6 +580,114 @@ int fourleg_apd_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, 
 #define fourleg_apd_preload_step_SZ_RES 6
 #define fourleg_apd_preload_step_SZ_IW 0
 #define fourleg_apd_preload_step_SZ_W 972
+int fourleg_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_ctc_step_checkout(void);
+void fourleg_ctc_step_release(int mem);
+void fourleg_ctc_step_incref(void);
+void fourleg_ctc_step_decref(void);
+casadi_int fourleg_ctc_step_n_in(void);
+casadi_int fourleg_ctc_step_n_out(void);
+casadi_real fourleg_ctc_step_default_in(casadi_int i);
+const char* fourleg_ctc_step_name_in(casadi_int i);
+const char* fourleg_ctc_step_name_out(casadi_int i);
+const casadi_int* fourleg_ctc_step_sparsity_in(casadi_int i);
+const casadi_int* fourleg_ctc_step_sparsity_out(casadi_int i);
+int fourleg_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_ctc_step_SZ_ARG 6
+#define fourleg_ctc_step_SZ_RES 4
+#define fourleg_ctc_step_SZ_IW 0
+#define fourleg_ctc_step_SZ_W 0
+int fourleg_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_ctc_minmax_step_checkout(void);
+void fourleg_ctc_minmax_step_release(int mem);
+void fourleg_ctc_minmax_step_incref(void);
+void fourleg_ctc_minmax_step_decref(void);
+casadi_int fourleg_ctc_minmax_step_n_in(void);
+casadi_int fourleg_ctc_minmax_step_n_out(void);
+casadi_real fourleg_ctc_minmax_step_default_in(casadi_int i);
+const char* fourleg_ctc_minmax_step_name_in(casadi_int i);
+const char* fourleg_ctc_minmax_step_name_out(casadi_int i);
+const casadi_int* fourleg_ctc_minmax_step_sparsity_in(casadi_int i);
+const casadi_int* fourleg_ctc_minmax_step_sparsity_out(casadi_int i);
+int fourleg_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_ctc_minmax_step_SZ_ARG 6
+#define fourleg_ctc_minmax_step_SZ_RES 4
+#define fourleg_ctc_minmax_step_SZ_IW 0
+#define fourleg_ctc_minmax_step_SZ_W 0
+int fourleg_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_ctc_preload_step_checkout(void);
+void fourleg_ctc_preload_step_release(int mem);
+void fourleg_ctc_preload_step_incref(void);
+void fourleg_ctc_preload_step_decref(void);
+casadi_int fourleg_ctc_preload_step_n_in(void);
+casadi_int fourleg_ctc_preload_step_n_out(void);
+casadi_real fourleg_ctc_preload_step_default_in(casadi_int i);
+const char* fourleg_ctc_preload_step_name_in(casadi_int i);
+const char* fourleg_ctc_preload_step_name_out(casadi_int i);
+const casadi_int* fourleg_ctc_preload_step_sparsity_in(casadi_int i);
+const casadi_int* fourleg_ctc_preload_step_sparsity_out(casadi_int i);
+int fourleg_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_ctc_preload_step_SZ_ARG 11
+#define fourleg_ctc_preload_step_SZ_RES 6
+#define fourleg_ctc_preload_step_SZ_IW 0
+#define fourleg_ctc_preload_step_SZ_W 972
+int fourleg_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_lqr_step_checkout(void);
+void fourleg_lqr_step_release(int mem);
+void fourleg_lqr_step_incref(void);
+void fourleg_lqr_step_decref(void);
+casadi_int fourleg_lqr_step_n_in(void);
+casadi_int fourleg_lqr_step_n_out(void);
+casadi_real fourleg_lqr_step_default_in(casadi_int i);
+const char* fourleg_lqr_step_name_in(casadi_int i);
+const char* fourleg_lqr_step_name_out(casadi_int i);
+const casadi_int* fourleg_lqr_step_sparsity_in(casadi_int i);
+const casadi_int* fourleg_lqr_step_sparsity_out(casadi_int i);
+int fourleg_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_lqr_step_SZ_ARG 8
+#define fourleg_lqr_step_SZ_RES 4
+#define fourleg_lqr_step_SZ_IW 0
+#define fourleg_lqr_step_SZ_W 0
+int fourleg_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_lqr_minmax_step_checkout(void);
+void fourleg_lqr_minmax_step_release(int mem);
+void fourleg_lqr_minmax_step_incref(void);
+void fourleg_lqr_minmax_step_decref(void);
+casadi_int fourleg_lqr_minmax_step_n_in(void);
+casadi_int fourleg_lqr_minmax_step_n_out(void);
+casadi_real fourleg_lqr_minmax_step_default_in(casadi_int i);
+const char* fourleg_lqr_minmax_step_name_in(casadi_int i);
+const char* fourleg_lqr_minmax_step_name_out(casadi_int i);
+const casadi_int* fourleg_lqr_minmax_step_sparsity_in(casadi_int i);
+const casadi_int* fourleg_lqr_minmax_step_sparsity_out(casadi_int i);
+int fourleg_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_lqr_minmax_step_SZ_ARG 8
+#define fourleg_lqr_minmax_step_SZ_RES 4
+#define fourleg_lqr_minmax_step_SZ_IW 0
+#define fourleg_lqr_minmax_step_SZ_W 0
+int fourleg_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_lqr_preload_step_checkout(void);
+void fourleg_lqr_preload_step_release(int mem);
+void fourleg_lqr_preload_step_incref(void);
+void fourleg_lqr_preload_step_decref(void);
+casadi_int fourleg_lqr_preload_step_n_in(void);
+casadi_int fourleg_lqr_preload_step_n_out(void);
+casadi_real fourleg_lqr_preload_step_default_in(casadi_int i);
+const char* fourleg_lqr_preload_step_name_in(casadi_int i);
+const char* fourleg_lqr_preload_step_name_out(casadi_int i);
+const casadi_int* fourleg_lqr_preload_step_sparsity_in(casadi_int i);
+const casadi_int* fourleg_lqr_preload_step_sparsity_out(casadi_int i);
+int fourleg_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_lqr_preload_step_SZ_ARG 13
+#define fourleg_lqr_preload_step_SZ_RES 6
+#define fourleg_lqr_preload_step_SZ_IW 0
+#define fourleg_lqr_preload_step_SZ_W 972
 int fourleg_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_plant_xedd_checkout(void);
 void fourleg_plant_xedd_release(int mem);
@@ -776,6 +904,114 @@ int fourleg_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* s
 #define fourleg_apd_preload_closed_loop_SZ_RES 8
 #define fourleg_apd_preload_closed_loop_SZ_IW 0
 #define fourleg_apd_preload_closed_loop_SZ_W 1134
+int fourleg_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_ctc_closed_loop_checkout(void);
+void fourleg_ctc_closed_loop_release(int mem);
+void fourleg_ctc_closed_loop_incref(void);
+void fourleg_ctc_closed_loop_decref(void);
+casadi_int fourleg_ctc_closed_loop_n_in(void);
+casadi_int fourleg_ctc_closed_loop_n_out(void);
+casadi_real fourleg_ctc_closed_loop_default_in(casadi_int i);
+const char* fourleg_ctc_closed_loop_name_in(casadi_int i);
+const char* fourleg_ctc_closed_loop_name_out(casadi_int i);
+const casadi_int* fourleg_ctc_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fourleg_ctc_closed_loop_sparsity_out(casadi_int i);
+int fourleg_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_ctc_closed_loop_SZ_ARG 9
+#define fourleg_ctc_closed_loop_SZ_RES 6
+#define fourleg_ctc_closed_loop_SZ_IW 0
+#define fourleg_ctc_closed_loop_SZ_W 187
+int fourleg_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_ctc_minmax_closed_loop_checkout(void);
+void fourleg_ctc_minmax_closed_loop_release(int mem);
+void fourleg_ctc_minmax_closed_loop_incref(void);
+void fourleg_ctc_minmax_closed_loop_decref(void);
+casadi_int fourleg_ctc_minmax_closed_loop_n_in(void);
+casadi_int fourleg_ctc_minmax_closed_loop_n_out(void);
+casadi_real fourleg_ctc_minmax_closed_loop_default_in(casadi_int i);
+const char* fourleg_ctc_minmax_closed_loop_name_in(casadi_int i);
+const char* fourleg_ctc_minmax_closed_loop_name_out(casadi_int i);
+const casadi_int* fourleg_ctc_minmax_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fourleg_ctc_minmax_closed_loop_sparsity_out(casadi_int i);
+int fourleg_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_ctc_minmax_closed_loop_SZ_ARG 9
+#define fourleg_ctc_minmax_closed_loop_SZ_RES 6
+#define fourleg_ctc_minmax_closed_loop_SZ_IW 0
+#define fourleg_ctc_minmax_closed_loop_SZ_W 187
+int fourleg_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_ctc_preload_closed_loop_checkout(void);
+void fourleg_ctc_preload_closed_loop_release(int mem);
+void fourleg_ctc_preload_closed_loop_incref(void);
+void fourleg_ctc_preload_closed_loop_decref(void);
+casadi_int fourleg_ctc_preload_closed_loop_n_in(void);
+casadi_int fourleg_ctc_preload_closed_loop_n_out(void);
+casadi_real fourleg_ctc_preload_closed_loop_default_in(casadi_int i);
+const char* fourleg_ctc_preload_closed_loop_name_in(casadi_int i);
+const char* fourleg_ctc_preload_closed_loop_name_out(casadi_int i);
+const casadi_int* fourleg_ctc_preload_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fourleg_ctc_preload_closed_loop_sparsity_out(casadi_int i);
+int fourleg_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_ctc_preload_closed_loop_SZ_ARG 14
+#define fourleg_ctc_preload_closed_loop_SZ_RES 8
+#define fourleg_ctc_preload_closed_loop_SZ_IW 0
+#define fourleg_ctc_preload_closed_loop_SZ_W 1128
+int fourleg_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_lqr_closed_loop_checkout(void);
+void fourleg_lqr_closed_loop_release(int mem);
+void fourleg_lqr_closed_loop_incref(void);
+void fourleg_lqr_closed_loop_decref(void);
+casadi_int fourleg_lqr_closed_loop_n_in(void);
+casadi_int fourleg_lqr_closed_loop_n_out(void);
+casadi_real fourleg_lqr_closed_loop_default_in(casadi_int i);
+const char* fourleg_lqr_closed_loop_name_in(casadi_int i);
+const char* fourleg_lqr_closed_loop_name_out(casadi_int i);
+const casadi_int* fourleg_lqr_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fourleg_lqr_closed_loop_sparsity_out(casadi_int i);
+int fourleg_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_lqr_closed_loop_SZ_ARG 11
+#define fourleg_lqr_closed_loop_SZ_RES 6
+#define fourleg_lqr_closed_loop_SZ_IW 0
+#define fourleg_lqr_closed_loop_SZ_W 175
+int fourleg_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_lqr_minmax_closed_loop_checkout(void);
+void fourleg_lqr_minmax_closed_loop_release(int mem);
+void fourleg_lqr_minmax_closed_loop_incref(void);
+void fourleg_lqr_minmax_closed_loop_decref(void);
+casadi_int fourleg_lqr_minmax_closed_loop_n_in(void);
+casadi_int fourleg_lqr_minmax_closed_loop_n_out(void);
+casadi_real fourleg_lqr_minmax_closed_loop_default_in(casadi_int i);
+const char* fourleg_lqr_minmax_closed_loop_name_in(casadi_int i);
+const char* fourleg_lqr_minmax_closed_loop_name_out(casadi_int i);
+const casadi_int* fourleg_lqr_minmax_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fourleg_lqr_minmax_closed_loop_sparsity_out(casadi_int i);
+int fourleg_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_lqr_minmax_closed_loop_SZ_ARG 11
+#define fourleg_lqr_minmax_closed_loop_SZ_RES 6
+#define fourleg_lqr_minmax_closed_loop_SZ_IW 0
+#define fourleg_lqr_minmax_closed_loop_SZ_W 175
+int fourleg_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_lqr_preload_closed_loop_checkout(void);
+void fourleg_lqr_preload_closed_loop_release(int mem);
+void fourleg_lqr_preload_closed_loop_incref(void);
+void fourleg_lqr_preload_closed_loop_decref(void);
+casadi_int fourleg_lqr_preload_closed_loop_n_in(void);
+casadi_int fourleg_lqr_preload_closed_loop_n_out(void);
+casadi_real fourleg_lqr_preload_closed_loop_default_in(casadi_int i);
+const char* fourleg_lqr_preload_closed_loop_name_in(casadi_int i);
+const char* fourleg_lqr_preload_closed_loop_name_out(casadi_int i);
+const casadi_int* fourleg_lqr_preload_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* fourleg_lqr_preload_closed_loop_sparsity_out(casadi_int i);
+int fourleg_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_lqr_preload_closed_loop_SZ_ARG 16
+#define fourleg_lqr_preload_closed_loop_SZ_RES 8
+#define fourleg_lqr_preload_closed_loop_SZ_IW 0
+#define fourleg_lqr_preload_closed_loop_SZ_W 1079
 int fourleg_path_coefficients(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_path_coefficients_checkout(void);
 void fourleg_path_coefficients_release(int mem);
@@ -866,6 +1102,96 @@ int fourleg_path_torques_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casa
 #define fourleg_path_torques_SZ_RES 4
 #define fourleg_path_torques_SZ_IW 0
 #define fourleg_path_torques_SZ_W 0
+int fourleg_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_forward_dynamics_jacobians_checkout(void);
+void fourleg_forward_dynamics_jacobians_release(int mem);
+void fourleg_forward_dynamics_jacobians_incref(void);
+void fourleg_forward_dynamics_jacobians_decref(void);
+casadi_int fourleg_forward_dynamics_jacobians_n_in(void);
+casadi_int fourleg_forward_dynamics_jacobians_n_out(void);
+casadi_real fourleg_forward_dynamics_jacobians_default_in(casadi_int i);
+const char* fourleg_forward_dynamics_jacobians_name_in(casadi_int i);
+const char* fourleg_forward_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* fourleg_forward_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* fourleg_forward_dynamics_jacobians_sparsity_out(casadi_int i);
+int fourleg_forward_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_forward_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_forward_dynamics_jacobians_SZ_ARG 4
+#define fourleg_forward_dynamics_jacobians_SZ_RES 6
+#define fourleg_forward_dynamics_jacobians_SZ_IW 0
+#define fourleg_forward_dynamics_jacobians_SZ_W 0
+int fourleg_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_inverse_dynamics_checkout(void);
+void fourleg_inverse_dynamics_release(int mem);
+void fourleg_inverse_dynamics_incref(void);
+void fourleg_inverse_dynamics_decref(void);
+casadi_int fourleg_inverse_dynamics_n_in(void);
+casadi_int fourleg_inverse_dynamics_n_out(void);
+casadi_real fourleg_inverse_dynamics_default_in(casadi_int i);
+const char* fourleg_inverse_dynamics_name_in(casadi_int i);
+const char* fourleg_inverse_dynamics_name_out(casadi_int i);
+const casadi_int* fourleg_inverse_dynamics_sparsity_in(casadi_int i);
+const casadi_int* fourleg_inverse_dynamics_sparsity_out(casadi_int i);
+int fourleg_inverse_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_inverse_dynamics_SZ_ARG 4
+#define fourleg_inverse_dynamics_SZ_RES 2
+#define fourleg_inverse_dynamics_SZ_IW 0
+#define fourleg_inverse_dynamics_SZ_W 0
+int fourleg_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_inverse_dynamics_jacobians_checkout(void);
+void fourleg_inverse_dynamics_jacobians_release(int mem);
+void fourleg_inverse_dynamics_jacobians_incref(void);
+void fourleg_inverse_dynamics_jacobians_decref(void);
+casadi_int fourleg_inverse_dynamics_jacobians_n_in(void);
+casadi_int fourleg_inverse_dynamics_jacobians_n_out(void);
+casadi_real fourleg_inverse_dynamics_jacobians_default_in(casadi_int i);
+const char* fourleg_inverse_dynamics_jacobians_name_in(casadi_int i);
+const char* fourleg_inverse_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* fourleg_inverse_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* fourleg_inverse_dynamics_jacobians_sparsity_out(casadi_int i);
+int fourleg_inverse_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_inverse_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_inverse_dynamics_jacobians_SZ_ARG 4
+#define fourleg_inverse_dynamics_jacobians_SZ_RES 4
+#define fourleg_inverse_dynamics_jacobians_SZ_IW 0
+#define fourleg_inverse_dynamics_jacobians_SZ_W 0
+int fourleg_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_sampled_step_checkout(void);
+void fourleg_sampled_step_release(int mem);
+void fourleg_sampled_step_incref(void);
+void fourleg_sampled_step_decref(void);
+casadi_int fourleg_sampled_step_n_in(void);
+casadi_int fourleg_sampled_step_n_out(void);
+casadi_real fourleg_sampled_step_default_in(casadi_int i);
+const char* fourleg_sampled_step_name_in(casadi_int i);
+const char* fourleg_sampled_step_name_out(casadi_int i);
+const casadi_int* fourleg_sampled_step_sparsity_in(casadi_int i);
+const casadi_int* fourleg_sampled_step_sparsity_out(casadi_int i);
+int fourleg_sampled_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_sampled_step_SZ_ARG 8
+#define fourleg_sampled_step_SZ_RES 4
+#define fourleg_sampled_step_SZ_IW 0
+#define fourleg_sampled_step_SZ_W 110
+int fourleg_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_sampled_step_jacobians_checkout(void);
+void fourleg_sampled_step_jacobians_release(int mem);
+void fourleg_sampled_step_jacobians_incref(void);
+void fourleg_sampled_step_jacobians_decref(void);
+casadi_int fourleg_sampled_step_jacobians_n_in(void);
+casadi_int fourleg_sampled_step_jacobians_n_out(void);
+casadi_real fourleg_sampled_step_jacobians_default_in(casadi_int i);
+const char* fourleg_sampled_step_jacobians_name_in(casadi_int i);
+const char* fourleg_sampled_step_jacobians_name_out(casadi_int i);
+const casadi_int* fourleg_sampled_step_jacobians_sparsity_in(casadi_int i);
+const casadi_int* fourleg_sampled_step_jacobians_sparsity_out(casadi_int i);
+int fourleg_sampled_step_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_sampled_step_jacobians_SZ_ARG 8
+#define fourleg_sampled_step_jacobians_SZ_RES 10
+#define fourleg_sampled_step_jacobians_SZ_IW 9
+#define fourleg_sampled_step_jacobians_SZ_W 869
 void fourleg_casadi_version(int* major, int* minor, int* patch);
 int fourleg_casadi_int_size(void);
 int fourleg_casadi_real_size(void);

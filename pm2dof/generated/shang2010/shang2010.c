@@ -29,7 +29,9 @@ extern "C" {
 #endif
 
 /* Add prefix to internal symbols */
+#define casadi_clear CASADI_PREFIX(clear)
 #define casadi_copy CASADI_PREFIX(copy)
+#define casadi_densify CASADI_PREFIX(densify)
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f10 CASADI_PREFIX(f10)
@@ -69,14 +71,36 @@ extern "C" {
 #define casadi_f41 CASADI_PREFIX(f41)
 #define casadi_f42 CASADI_PREFIX(f42)
 #define casadi_f43 CASADI_PREFIX(f43)
+#define casadi_f44 CASADI_PREFIX(f44)
+#define casadi_f45 CASADI_PREFIX(f45)
+#define casadi_f46 CASADI_PREFIX(f46)
+#define casadi_f47 CASADI_PREFIX(f47)
+#define casadi_f48 CASADI_PREFIX(f48)
+#define casadi_f49 CASADI_PREFIX(f49)
 #define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f50 CASADI_PREFIX(f50)
+#define casadi_f51 CASADI_PREFIX(f51)
+#define casadi_f52 CASADI_PREFIX(f52)
+#define casadi_f53 CASADI_PREFIX(f53)
+#define casadi_f54 CASADI_PREFIX(f54)
+#define casadi_f55 CASADI_PREFIX(f55)
+#define casadi_f56 CASADI_PREFIX(f56)
+#define casadi_f57 CASADI_PREFIX(f57)
+#define casadi_f58 CASADI_PREFIX(f58)
+#define casadi_f59 CASADI_PREFIX(f59)
 #define casadi_f6 CASADI_PREFIX(f6)
+#define casadi_f60 CASADI_PREFIX(f60)
+#define casadi_f61 CASADI_PREFIX(f61)
 #define casadi_f7 CASADI_PREFIX(f7)
 #define casadi_f8 CASADI_PREFIX(f8)
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
+#define casadi_fill CASADI_PREFIX(fill)
 #define casadi_fmax CASADI_PREFIX(fmax)
 #define casadi_fmin CASADI_PREFIX(fmin)
+#define casadi_mtimes_dense CASADI_PREFIX(mtimes_dense)
+#define casadi_mtimes_dense_sparse CASADI_PREFIX(mtimes_dense_sparse)
+#define casadi_project CASADI_PREFIX(project)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s10 CASADI_PREFIX(s10)
@@ -92,7 +116,16 @@ extern "C" {
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s20 CASADI_PREFIX(s20)
 #define casadi_s21 CASADI_PREFIX(s21)
+#define casadi_s22 CASADI_PREFIX(s22)
+#define casadi_s23 CASADI_PREFIX(s23)
+#define casadi_s24 CASADI_PREFIX(s24)
+#define casadi_s25 CASADI_PREFIX(s25)
+#define casadi_s26 CASADI_PREFIX(s26)
+#define casadi_s27 CASADI_PREFIX(s27)
+#define casadi_s28 CASADI_PREFIX(s28)
+#define casadi_s29 CASADI_PREFIX(s29)
 #define casadi_s3 CASADI_PREFIX(s3)
+#define casadi_s30 CASADI_PREFIX(s30)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_s6 CASADI_PREFIX(s6)
@@ -101,6 +134,7 @@ extern "C" {
 #define casadi_s9 CASADI_PREFIX(s9)
 #define casadi_sign CASADI_PREFIX(sign)
 #define casadi_sq CASADI_PREFIX(sq)
+#define casadi_trans CASADI_PREFIX(trans)
 #define casadi_zeros CASADI_PREFIX(zeros)
 
 /* Symbol visibility in DLLs */
@@ -164,6 +198,115 @@ void casadi_copy(const casadi_real* x, casadi_int n, casadi_real* y) {
   }
 }
 
+void casadi_fill(casadi_real* x, casadi_int n, casadi_real alpha) {
+  casadi_int i;
+  if (x) {
+    for (i=0; i<n; ++i) *x++ = alpha;
+  }
+}
+
+void casadi_clear(casadi_real* x, casadi_int n) {
+  casadi_int i;
+  if (x) {
+    for (i=0; i<n; ++i) *x++ = 0;
+  }
+}
+
+#define CASADI_CAST(x,y) ((x) y)
+
+void casadi_densify(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, casadi_int tr) {
+  casadi_int nrow_x, ncol_x, i, el;
+  const casadi_int *colind_x, *row_x;
+  if (!y) return;
+  nrow_x = sp_x[0]; ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x+ncol_x+3;
+  casadi_clear(y, nrow_x*ncol_x);
+  if (!x) return;
+  if (tr) {
+    for (i=0; i<ncol_x; ++i) {
+      for (el=colind_x[i]; el!=colind_x[i+1]; ++el) {
+        y[i + row_x[el]*ncol_x] = CASADI_CAST(casadi_real, *x++);
+      }
+    }
+  } else {
+    for (i=0; i<ncol_x; ++i) {
+      for (el=colind_x[i]; el!=colind_x[i+1]; ++el) {
+        y[row_x[el]] = CASADI_CAST(casadi_real, *x++);
+      }
+      y += nrow_x;
+    }
+  }
+}
+
+void casadi_trans(const casadi_real* x, const casadi_int* sp_x, casadi_real* y,
+    const casadi_int* sp_y, casadi_int* tmp) {
+  casadi_int ncol_x, nnz_x, ncol_y, k;
+  const casadi_int* row_x, *colind_y;
+  ncol_x = sp_x[1];
+  nnz_x = sp_x[2 + ncol_x];
+  row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2;
+  for (k=0; k<ncol_y; ++k) tmp[k] = colind_y[k];
+  for (k=0; k<nnz_x; ++k) {
+    y[tmp[row_x[k]]++] = x[k];
+  }
+}
+
+void casadi_mtimes_dense_sparse(const casadi_real* x, casadi_int nrow_x,
+    const casadi_real* y, const casadi_int* sp_y, casadi_real* z) {
+  casadi_int j, kk, i, ncol_y;
+  const casadi_int *colind_y, *row_y;
+  ncol_y = sp_y[1];
+  colind_y = sp_y + 2;
+  row_y = sp_y + 2 + ncol_y + 1;
+  for (j = 0; j < ncol_y; ++j) {
+    casadi_real* zj = z + j * nrow_x;
+    for (kk = colind_y[j]; kk < colind_y[j + 1]; ++kk) {
+      casadi_int rr = row_y[kk];
+      casadi_real yk = y[kk];
+      const casadi_real* x_col = x + rr * nrow_x;
+      for (i = 0; i < nrow_x; ++i) zj[i] += x_col[i] * yk;
+    }
+  }
+}
+
+void casadi_project(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, const casadi_int* sp_y, casadi_real* w) {
+  casadi_int ncol_x, ncol_y, i, el;
+  const casadi_int *colind_x, *row_x, *colind_y, *row_y;
+  ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2; row_y = sp_y + 2 + ncol_y+1;
+  for (i=0; i<ncol_x; ++i) {
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) w[row_y[el]] = 0;
+    for (el=colind_x[i]; el<colind_x[i+1]; ++el) w[row_x[el]] = x[el];
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) y[el] = w[row_y[el]];
+  }
+}
+
+void casadi_mtimes_dense(const casadi_real* x, casadi_int nrow_x, casadi_int ncol_x,
+    const casadi_real* y, casadi_int ncol_y, casadi_real* z, casadi_int tr) {
+  casadi_int i, j, k;
+  if (tr) {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<ncol_x; ++j) {
+        for (k=0; k<nrow_x; ++k) {
+          z[j + i*ncol_x] += x[k + j*nrow_x] * y[k + i*nrow_x];
+        }
+      }
+    }
+  } else {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<nrow_x; ++j) {
+        for (k=0; k<ncol_x; ++k) {
+          z[j + i*nrow_x] += x[j + k*nrow_x] * y[k + i*ncol_x];
+        }
+      }
+    }
+  }
+}
+
 /* Configuration this file was compiled with */
 CASADI_SYMBOL_EXPORT void shang2010_casadi_version(int* major, int* minor, int* patch) {
   *major = 3;
@@ -187,14 +330,47 @@ static const casadi_int casadi_s10[3] = {19, 1, 1};
 static const casadi_int casadi_s11[3] = {33, 1, 1};
 static const casadi_int casadi_s12[3] = {10, 1, 1};
 static const casadi_int casadi_s13[3] = {18, 1, 1};
-static const casadi_int casadi_s14[3] = {21, 1, 1};
-static const casadi_int casadi_s15[3] = {23, 1, 1};
-static const casadi_int casadi_s16[3] = {54, 1, 1};
-static const casadi_int casadi_s17[3] = {39, 1, 1};
-static const casadi_int casadi_s18[3] = {27, 1, 1};
-static const casadi_int casadi_s19[3] = {16, 1, 1};
-static const casadi_int casadi_s20[3] = {55, 1, 1};
-static const casadi_int casadi_s21[3] = {56, 1, 1};
+static const casadi_int casadi_s14[3] = {14, 1, 1};
+static const casadi_int casadi_s15[3] = {21, 1, 1};
+static const casadi_int casadi_s16[3] = {23, 1, 1};
+static const casadi_int casadi_s17[3] = {54, 1, 1};
+static const casadi_int casadi_s18[3] = {39, 1, 1};
+static const casadi_int casadi_s19[3] = {35, 1, 1};
+static const casadi_int casadi_s20[3] = {27, 1, 1};
+static const casadi_int casadi_s21[3] = {16, 1, 1};
+static const casadi_int casadi_s22[3] = {55, 1, 1};
+static const casadi_int casadi_s23[3] = {56, 1, 1};
+static const casadi_int casadi_s24[26] = 
+  {4, 7, 0, 1, 2, 3, 4, 8,
+  12, 16, 0, 1, 2, 3, 0, 1,
+  2, 3, 0, 1, 2, 3, 0, 1,
+  2, 3};
+static const casadi_int casadi_s25[13] = 
+  {7, 2, 0, 4, 8, 2, 4, 5,
+  6, 3, 4, 5, 6};
+static const casadi_int casadi_s26[18] = 
+  {2, 7, 0, 0, 0, 1, 2, 4,
+  6, 8, 0, 1, 0, 1, 0, 1,
+  0, 1};
+static const casadi_int casadi_s27[32] = 
+  {4, 7, 0, 2, 4, 7, 10, 14,
+  18, 22, 2, 3, 2, 3, 0, 2,
+  3, 1, 2, 3, 0, 1, 2, 3,
+  0, 1, 2, 3, 0, 1, 2, 3};
+static const casadi_int casadi_s28[29] = 
+  {7, 4, 0, 4, 8, 15, 22, 2,
+  4, 5, 6, 3, 4, 5, 6, 0,
+  1, 2, 3, 4, 5, 6, 0, 1,
+  2, 3, 4, 5, 6};
+static const casadi_int casadi_s29[34] = 
+  {4, 7, 0, 3, 6, 9, 12, 16,
+  20, 24, 0, 2, 3, 1, 2, 3,
+  0, 2, 3, 1, 2, 3, 0, 1,
+  2, 3, 0, 1, 2, 3, 0, 1,
+  2, 3};
+static const casadi_int casadi_s30[14] = 
+  {1, 2, 4, 5, 7, 8, 10, 11,
+  14, 15, 18, 19, 22, 23};
 
 static const casadi_real casadi_zeros[54] = 
   {0.};
@@ -16582,8 +16758,4504 @@ CASADI_SYMBOL_EXPORT int shang2010_apd_preload_step_work_bytes(casadi_int *sz_ar
   return 0;
 }
 
-/* shang2010_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+/* shang2010_ctc_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
 static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][17] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][6] : 0;
+  a03=(a03/a15);
+  a27=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a27=(a27-a15);
+  a15=casadi_fabs(a27);
+  a16=(a16/a07);
+  a28=(a14*a16);
+  a22=(a22/a07);
+  a07=(a13*a22);
+  a28=(a28-a07);
+  a07=casadi_fabs(a28);
+  a29=(a15+a07);
+  a15=(a15-a07);
+  a15=casadi_fabs(a15);
+  a29=(a29-a15);
+  a15=2.;
+  a29=(a29/a15);
+  a08=(a08/a24);
+  a07=(a10*a08);
+  a12=(a12/a24);
+  a24=(a09*a12);
+  a07=(a07-a24);
+  a24=casadi_fabs(a07);
+  a30=(a29+a24);
+  a29=(a29-a24);
+  a29=casadi_fabs(a29);
+  a30=(a30-a29);
+  a30=(a30/a15);
+  a26=(a26<=a30);
+  a29=arg[5]? arg[5][7] : 0;
+  a24=1.;
+  a31=3.3333333333333331e-01;
+  a32=casadi_sq(a03);
+  a33=casadi_sq(a06);
+  a32=(a32-a33);
+  a33=casadi_sq(a16);
+  a34=casadi_sq(a22);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a33=casadi_sq(a08);
+  a34=casadi_sq(a12);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a32=casadi_sq(a32);
+  a33=(2.*a03);
+  a33=(a33*a06);
+  a34=(2.*a16);
+  a34=(a34*a22);
+  a33=(a33+a34);
+  a34=(2.*a08);
+  a34=(a34*a12);
+  a33=(a33+a34);
+  a33=casadi_sq(a33);
+  a32=(a32+a33);
+  a32=sqrt(a32);
+  a31=(a31*a32);
+  a31=(a24-a31);
+  a32=casadi_fabs(a31);
+  a31=(a31+a32);
+  a04=(a04*a31);
+  a04=sqrt(a04);
+  a29=(a29<=a04);
+  a26=(a26&&a29);
+  a29=(a17*a03);
+  a31=(a19*a29);
+  a32=(a00*a06);
+  a33=(a17*a02);
+  a34=(a32*a33);
+  a31=(a31-a34);
+  a29=(a29/a31);
+  a32=(a32/a31);
+  a34=casadi_sq(a32);
+  a35=(a00*a22);
+  a36=(a17*a16);
+  a37=(a20*a36);
+  a38=(a35*a18);
+  a37=(a37-a38);
+  a35=(a35/a37);
+  a38=casadi_sq(a35);
+  a34=(a34+a38);
+  a38=(a00*a12);
+  a17=(a17*a08);
+  a39=(a25*a17);
+  a40=(a38*a23);
+  a39=(a39-a40);
+  a38=(a38/a39);
+  a40=casadi_sq(a38);
+  a34=(a34+a40);
+  a40=arg[4]? arg[4][0] : 0;
+  a41=arg[5]? arg[5][2] : 0;
+  a42=arg[3]? arg[3][0] : 0;
+  a43=arg[0]? arg[0][2] : 0;
+  a44=arg[5]? arg[5][5] : 0;
+  a45=arg[0]? arg[0][0] : 0;
+  a46=(a21-a45);
+  a47=arg[5]? arg[5][4] : 0;
+  a46=(a46/a47);
+  a46=(a46-a43);
+  a46=(a44*a46);
+  a46=(a43+a46);
+  a42=(a42-a46);
+  a41=(a41*a42);
+  a40=(a40+a41);
+  a41=arg[5]? arg[5][0] : 0;
+  a48=arg[2]? arg[2][0] : 0;
+  a48=(a48-a21);
+  a41=(a41*a48);
+  a40=(a40+a41);
+  a41=(a29*a40);
+  a49=arg[4]? arg[4][1] : 0;
+  a50=arg[5]? arg[5][3] : 0;
+  a51=arg[3]? arg[3][1] : 0;
+  a52=arg[0]? arg[0][3] : 0;
+  a53=arg[0]? arg[0][1] : 0;
+  a54=(a05-a53);
+  a54=(a54/a47);
+  a54=(a54-a52);
+  a44=(a44*a54);
+  a44=(a52+a44);
+  a51=(a51-a44);
+  a50=(a50*a51);
+  a49=(a49+a50);
+  a50=arg[5]? arg[5][1] : 0;
+  a54=arg[2]? arg[2][1] : 0;
+  a54=(a54-a05);
+  a50=(a50*a54);
+  a49=(a49+a50);
+  a50=(a32*a49);
+  a41=(a41-a50);
+  a50=(a29*a46);
+  a47=(a32*a44);
+  a50=(a50-a47);
+  a47=(a00*a50);
+  a55=(a47*a01);
+  a55=(a55*a50);
+  a19=(a19/a31);
+  a56=(a19*a44);
+  a33=(a33/a31);
+  a31=(a33*a46);
+  a56=(a56-a31);
+  a31=(a00*a56);
+  a57=(a31*a06);
+  a57=(a57*a56);
+  a55=(a55+a57);
+  a57=(a32*a55);
+  a47=(a47*a02);
+  a47=(a47*a50);
+  a31=(a31*a03);
+  a31=(a31*a56);
+  a47=(a47+a31);
+  a31=(a29*a47);
+  a57=(a57-a31);
+  a41=(a41+a57);
+  a57=(a29*a41);
+  a31=arg[0]? arg[0][4] : 0;
+  a57=(a57*a31);
+  a36=(a36/a37);
+  a58=(a36*a40);
+  a59=(a35*a49);
+  a58=(a58-a59);
+  a59=(a36*a46);
+  a60=(a35*a44);
+  a59=(a59-a60);
+  a60=(a00*a59);
+  a61=(a60*a14);
+  a61=(a61*a59);
+  a20=(a20/a37);
+  a62=(a20*a44);
+  a18=(a18/a37);
+  a37=(a18*a46);
+  a62=(a62-a37);
+  a37=(a00*a62);
+  a63=(a37*a22);
+  a63=(a63*a62);
+  a61=(a61+a63);
+  a63=(a35*a61);
+  a60=(a60*a13);
+  a60=(a60*a59);
+  a37=(a37*a16);
+  a37=(a37*a62);
+  a60=(a60+a37);
+  a37=(a36*a60);
+  a63=(a63-a37);
+  a58=(a58+a63);
+  a63=(a36*a58);
+  a37=arg[0]? arg[0][5] : 0;
+  a63=(a63*a37);
+  a57=(a57+a63);
+  a17=(a17/a39);
+  a63=(a17*a40);
+  a64=(a38*a49);
+  a63=(a63-a64);
+  a64=(a17*a46);
+  a65=(a38*a44);
+  a64=(a64-a65);
+  a65=(a00*a64);
+  a66=(a65*a10);
+  a66=(a66*a64);
+  a25=(a25/a39);
+  a67=(a25*a44);
+  a23=(a23/a39);
+  a39=(a23*a46);
+  a67=(a67-a39);
+  a00=(a00*a67);
+  a39=(a00*a12);
+  a39=(a39*a67);
+  a66=(a66+a39);
+  a39=(a38*a66);
+  a65=(a65*a09);
+  a65=(a65*a64);
+  a00=(a00*a08);
+  a00=(a00*a67);
+  a65=(a65+a00);
+  a00=(a17*a65);
+  a39=(a39-a00);
+  a63=(a63+a39);
+  a39=(a17*a63);
+  a00=arg[0]? arg[0][6] : 0;
+  a39=(a39*a00);
+  a57=(a57+a39);
+  a39=(a19*a49);
+  a68=(a33*a40);
+  a39=(a39-a68);
+  a47=(a33*a47);
+  a55=(a19*a55);
+  a47=(a47-a55);
+  a39=(a39+a47);
+  a02=(a02*a03);
+  a01=(a01*a06);
+  a02=(a02+a01);
+  a01=(a39*a02);
+  a56=casadi_sq(a56);
+  a56=(a56*a27);
+  a01=(a01+a56);
+  a56=(a29*a01);
+  a02=(a41*a02);
+  a06=casadi_sq(a50);
+  a06=(a06*a27);
+  a02=(a02-a06);
+  a06=(a33*a02);
+  a56=(a56-a06);
+  a06=arg[0]? arg[0][7] : 0;
+  a56=(a56*a06);
+  a57=(a57+a56);
+  a56=(a20*a49);
+  a27=(a18*a40);
+  a56=(a56-a27);
+  a60=(a18*a60);
+  a61=(a20*a61);
+  a60=(a60-a61);
+  a56=(a56+a60);
+  a13=(a13*a16);
+  a14=(a14*a22);
+  a13=(a13+a14);
+  a14=(a56*a13);
+  a62=casadi_sq(a62);
+  a62=(a62*a28);
+  a14=(a14+a62);
+  a62=(a36*a14);
+  a13=(a58*a13);
+  a22=casadi_sq(a59);
+  a22=(a22*a28);
+  a13=(a13-a22);
+  a22=(a18*a13);
+  a62=(a62-a22);
+  a22=arg[0]? arg[0][8] : 0;
+  a62=(a62*a22);
+  a57=(a57+a62);
+  a49=(a25*a49);
+  a40=(a23*a40);
+  a49=(a49-a40);
+  a65=(a23*a65);
+  a66=(a25*a66);
+  a65=(a65-a66);
+  a49=(a49+a65);
+  a09=(a09*a08);
+  a10=(a10*a12);
+  a09=(a09+a10);
+  a10=(a49*a09);
+  a67=casadi_sq(a67);
+  a67=(a67*a07);
+  a10=(a10+a67);
+  a67=(a17*a10);
+  a09=(a63*a09);
+  a12=casadi_sq(a64);
+  a12=(a12*a07);
+  a09=(a09-a12);
+  a12=(a23*a09);
+  a67=(a67-a12);
+  a12=arg[0]? arg[0][9] : 0;
+  a67=(a67*a12);
+  a57=(a57+a67);
+  a33=(a33*a39);
+  a67=arg[0]? arg[0][10] : 0;
+  a33=(a33*a67);
+  a57=(a57-a33);
+  a18=(a18*a56);
+  a33=arg[0]? arg[0][11] : 0;
+  a18=(a18*a33);
+  a57=(a57-a18);
+  a23=(a23*a49);
+  a18=arg[0]? arg[0][12] : 0;
+  a23=(a23*a18);
+  a57=(a57-a23);
+  a23=(a29*a50);
+  a07=arg[0]? arg[0][13] : 0;
+  a23=(a23*a07);
+  a57=(a57+a23);
+  a23=(a36*a59);
+  a08=arg[0]? arg[0][14] : 0;
+  a23=(a23*a08);
+  a57=(a57+a23);
+  a23=(a17*a64);
+  a65=arg[0]? arg[0][15] : 0;
+  a23=(a23*a65);
+  a57=(a57+a23);
+  a23=0.;
+  a66=(a23<=a50);
+  a40=(a66?a24:0);
+  a66=(!a66);
+  a62=-1.;
+  a66=(a66?a62:0);
+  a40=(a40+a66);
+  a66=(a29*a40);
+  a28=arg[0]? arg[0][16] : 0;
+  a66=(a66*a28);
+  a57=(a57+a66);
+  a66=(a23<=a59);
+  a16=(a66?a24:0);
+  a66=(!a66);
+  a66=(a66?a62:0);
+  a16=(a16+a66);
+  a66=(a36*a16);
+  a60=arg[0]? arg[0][17] : 0;
+  a66=(a66*a60);
+  a57=(a57+a66);
+  a66=(a23<=a64);
+  a61=(a66?a24:0);
+  a66=(!a66);
+  a66=(a66?a62:0);
+  a61=(a61+a66);
+  a66=(a17*a61);
+  a62=arg[0]? arg[0][18] : 0;
+  a66=(a66*a62);
+  a57=(a57+a66);
+  a66=(a34*a57);
+  a27=(a29*a32);
+  a03=(a36*a35);
+  a27=(a27+a03);
+  a03=(a17*a38);
+  a27=(a27+a03);
+  a02=(a19*a02);
+  a01=(a32*a01);
+  a02=(a02-a01);
+  a02=(a02*a06);
+  a41=(a32*a41);
+  a41=(a41*a31);
+  a58=(a35*a58);
+  a58=(a58*a37);
+  a41=(a41+a58);
+  a63=(a38*a63);
+  a63=(a63*a00);
+  a41=(a41+a63);
+  a02=(a02-a41);
+  a13=(a20*a13);
+  a14=(a35*a14);
+  a13=(a13-a14);
+  a13=(a13*a22);
+  a02=(a02+a13);
+  a09=(a25*a09);
+  a10=(a38*a10);
+  a09=(a09-a10);
+  a09=(a09*a12);
+  a02=(a02+a09);
+  a19=(a19*a39);
+  a19=(a19*a67);
+  a02=(a02+a19);
+  a20=(a20*a56);
+  a20=(a20*a33);
+  a02=(a02+a20);
+  a25=(a25*a49);
+  a25=(a25*a18);
+  a02=(a02+a25);
+  a50=(a32*a50);
+  a50=(a50*a07);
+  a02=(a02-a50);
+  a59=(a35*a59);
+  a59=(a59*a08);
+  a02=(a02-a59);
+  a64=(a38*a64);
+  a64=(a64*a65);
+  a02=(a02-a64);
+  a40=(a32*a40);
+  a40=(a40*a28);
+  a02=(a02-a40);
+  a16=(a35*a16);
+  a16=(a16*a60);
+  a02=(a02-a16);
+  a61=(a38*a61);
+  a61=(a61*a62);
+  a02=(a02-a61);
+  a61=(a27*a02);
+  a66=(a66+a61);
+  a61=casadi_sq(a29);
+  a16=casadi_sq(a36);
+  a61=(a61+a16);
+  a16=casadi_sq(a17);
+  a61=(a61+a16);
+  a34=(a61*a34);
+  a16=(a32*a29);
+  a40=(a35*a36);
+  a16=(a16+a40);
+  a40=(a38*a17);
+  a16=(a16+a40);
+  a27=(a27*a16);
+  a34=(a34-a27);
+  a66=(a66/a34);
+  a29=(a29*a66);
+  a61=(a61*a02);
+  a16=(a16*a57);
+  a61=(a61+a16);
+  a61=(a61/a34);
+  a32=(a32*a61);
+  a29=(a29-a32);
+  a36=(a36*a66);
+  a35=(a35*a61);
+  a36=(a36-a35);
+  a35=(a29+a36);
+  a17=(a17*a66);
+  a38=(a38*a61);
+  a17=(a17-a38);
+  a35=(a35+a17);
+  a35=(a35+a31);
+  a35=(a35+a37);
+  a35=(a35+a00);
+  a35=(a35+a06);
+  a35=(a35+a22);
+  a35=(a35+a12);
+  a35=(a35+a67);
+  a35=(a35+a33);
+  a35=(a35+a18);
+  a35=(a35+a07);
+  a35=(a35+a08);
+  a35=(a35+a65);
+  a35=(a35+a28);
+  a35=(a35+a60);
+  a35=(a35+a62);
+  a35=(a35+a21);
+  a35=(a35+a05);
+  a35=(a35+a46);
+  a35=(a35+a44);
+  a35=casadi_fabs(a35);
+  a38=casadi_inf;
+  a35=(a35<a38);
+  a38=(a26&&a35);
+  a38=(a11&&a38);
+  a61=arg[5]? arg[5][8] : 0;
+  a66=(-a61);
+  a66=casadi_fmax(a29,a66);
+  a66=casadi_fmin(a66,a61);
+  a66=(a38?a66:0);
+  if (res[0]!=0) res[0][0]=a66;
+  a66=arg[5]? arg[5][9] : 0;
+  a32=(-a66);
+  a32=casadi_fmax(a36,a32);
+  a32=casadi_fmin(a32,a66);
+  a32=(a38?a32:0);
+  if (res[0]!=0) res[0][1]=a32;
+  a32=arg[5]? arg[5][10] : 0;
+  a34=(-a32);
+  a34=casadi_fmax(a17,a34);
+  a34=casadi_fmin(a34,a32);
+  a34=(a38?a34:0);
+  if (res[0]!=0) res[0][2]=a34;
+  a34=(a11&&a35);
+  a16=(a34?a21:0);
+  a57=(!a34);
+  a45=(a57?a45:0);
+  a16=(a16+a45);
+  if (res[1]!=0) res[1][0]=a16;
+  a16=(a34?a05:0);
+  a53=(a57?a53:0);
+  a16=(a16+a53);
+  if (res[1]!=0) res[1][1]=a16;
+  a16=(a34?a46:0);
+  a43=(a57?a43:0);
+  a16=(a16+a43);
+  if (res[1]!=0) res[1][2]=a16;
+  a34=(a34?a44:0);
+  a57=(a57?a52:0);
+  a34=(a34+a57);
+  if (res[1]!=0) res[1][3]=a34;
+  a34=(a38?a31:0);
+  a57=(!a38);
+  a31=(a57?a31:0);
+  a34=(a34+a31);
+  if (res[1]!=0) res[1][4]=a34;
+  a34=(a38?a37:0);
+  a37=(a57?a37:0);
+  a34=(a34+a37);
+  if (res[1]!=0) res[1][5]=a34;
+  a34=(a38?a00:0);
+  a00=(a57?a00:0);
+  a34=(a34+a00);
+  if (res[1]!=0) res[1][6]=a34;
+  a34=(a38?a06:0);
+  a06=(a57?a06:0);
+  a34=(a34+a06);
+  if (res[1]!=0) res[1][7]=a34;
+  a34=(a38?a22:0);
+  a22=(a57?a22:0);
+  a34=(a34+a22);
+  if (res[1]!=0) res[1][8]=a34;
+  a34=(a38?a12:0);
+  a12=(a57?a12:0);
+  a34=(a34+a12);
+  if (res[1]!=0) res[1][9]=a34;
+  a34=(a38?a67:0);
+  a67=(a57?a67:0);
+  a34=(a34+a67);
+  if (res[1]!=0) res[1][10]=a34;
+  a34=(a38?a33:0);
+  a33=(a57?a33:0);
+  a34=(a34+a33);
+  if (res[1]!=0) res[1][11]=a34;
+  a34=(a38?a18:0);
+  a18=(a57?a18:0);
+  a34=(a34+a18);
+  if (res[1]!=0) res[1][12]=a34;
+  a34=(a38?a07:0);
+  a07=(a57?a07:0);
+  a34=(a34+a07);
+  if (res[1]!=0) res[1][13]=a34;
+  a34=(a38?a08:0);
+  a08=(a57?a08:0);
+  a34=(a34+a08);
+  if (res[1]!=0) res[1][14]=a34;
+  a34=(a38?a65:0);
+  a65=(a57?a65:0);
+  a34=(a34+a65);
+  if (res[1]!=0) res[1][15]=a34;
+  a34=(a38?a28:0);
+  a28=(a57?a28:0);
+  a34=(a34+a28);
+  if (res[1]!=0) res[1][16]=a34;
+  a34=(a38?a60:0);
+  a60=(a57?a60:0);
+  a34=(a34+a60);
+  if (res[1]!=0) res[1][17]=a34;
+  a38=(a38?a62:0);
+  a57=(a57?a62:0);
+  a38=(a38+a57);
+  if (res[1]!=0) res[1][18]=a38;
+  a29=casadi_fabs(a29);
+  a29=(a29-a61);
+  a36=casadi_fabs(a36);
+  a36=(a36-a66);
+  a29=casadi_fmax(a29,a36);
+  a17=casadi_fabs(a17);
+  a17=(a17-a32);
+  a29=casadi_fmax(a29,a17);
+  a23=(a23<a29);
+  a23=(a23?a15:0);
+  a23=(a35?a23:0);
+  a35=(!a35);
+  a15=3.;
+  a35=(a35?a15:0);
+  a23=(a23+a35);
+  a23=(a26?a23:0);
+  a26=(!a26);
+  a26=(a26?a24:0);
+  a23=(a23+a26);
+  a23=(a11?a23:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a23=(a23+a11);
+  if (res[2]!=0) res[2][0]=a23;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a46;
+  if (res[3]!=0) res[3][3]=a44;
+  if (res[3]!=0) res[3][4]=a48;
+  if (res[3]!=0) res[3][5]=a54;
+  if (res[3]!=0) res[3][6]=a42;
+  if (res[3]!=0) res[3][7]=a51;
+  if (res[3]!=0) res[3][8]=a30;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f27(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_ctc_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_ctc_minmax_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][17] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][6] : 0;
+  a03=(a03/a15);
+  a27=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a27=(a27-a15);
+  a15=casadi_fabs(a27);
+  a16=(a16/a07);
+  a28=(a14*a16);
+  a22=(a22/a07);
+  a07=(a13*a22);
+  a28=(a28-a07);
+  a07=casadi_fabs(a28);
+  a29=(a15+a07);
+  a15=(a15-a07);
+  a15=casadi_fabs(a15);
+  a29=(a29-a15);
+  a15=2.;
+  a29=(a29/a15);
+  a08=(a08/a24);
+  a07=(a10*a08);
+  a12=(a12/a24);
+  a24=(a09*a12);
+  a07=(a07-a24);
+  a24=casadi_fabs(a07);
+  a30=(a29+a24);
+  a29=(a29-a24);
+  a29=casadi_fabs(a29);
+  a30=(a30-a29);
+  a30=(a30/a15);
+  a26=(a26<=a30);
+  a29=arg[5]? arg[5][7] : 0;
+  a24=1.;
+  a31=3.3333333333333331e-01;
+  a32=casadi_sq(a03);
+  a33=casadi_sq(a06);
+  a32=(a32-a33);
+  a33=casadi_sq(a16);
+  a34=casadi_sq(a22);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a33=casadi_sq(a08);
+  a34=casadi_sq(a12);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a32=casadi_sq(a32);
+  a33=(2.*a03);
+  a33=(a33*a06);
+  a34=(2.*a16);
+  a34=(a34*a22);
+  a33=(a33+a34);
+  a34=(2.*a08);
+  a34=(a34*a12);
+  a33=(a33+a34);
+  a33=casadi_sq(a33);
+  a32=(a32+a33);
+  a32=sqrt(a32);
+  a31=(a31*a32);
+  a31=(a24-a31);
+  a32=casadi_fabs(a31);
+  a31=(a31+a32);
+  a04=(a04*a31);
+  a04=sqrt(a04);
+  a29=(a29<=a04);
+  a26=(a26&&a29);
+  a29=arg[5]? arg[5][8] : 0;
+  a31=(a17*a03);
+  a32=(a19*a31);
+  a33=(a00*a06);
+  a34=(a17*a02);
+  a35=(a33*a34);
+  a32=(a32-a35);
+  a31=(a31/a32);
+  a35=(a29*a31);
+  a36=0.;
+  a37=arg[4]? arg[4][0] : 0;
+  a38=arg[5]? arg[5][2] : 0;
+  a39=arg[3]? arg[3][0] : 0;
+  a40=arg[0]? arg[0][2] : 0;
+  a41=arg[5]? arg[5][5] : 0;
+  a42=arg[0]? arg[0][0] : 0;
+  a43=(a21-a42);
+  a44=arg[5]? arg[5][4] : 0;
+  a43=(a43/a44);
+  a43=(a43-a40);
+  a43=(a41*a43);
+  a43=(a40+a43);
+  a39=(a39-a43);
+  a38=(a38*a39);
+  a37=(a37+a38);
+  a38=arg[5]? arg[5][0] : 0;
+  a45=arg[2]? arg[2][0] : 0;
+  a45=(a45-a21);
+  a38=(a38*a45);
+  a37=(a37+a38);
+  a38=(a31*a37);
+  a33=(a33/a32);
+  a46=arg[4]? arg[4][1] : 0;
+  a47=arg[5]? arg[5][3] : 0;
+  a48=arg[3]? arg[3][1] : 0;
+  a49=arg[0]? arg[0][3] : 0;
+  a50=arg[0]? arg[0][1] : 0;
+  a51=(a05-a50);
+  a51=(a51/a44);
+  a51=(a51-a49);
+  a41=(a41*a51);
+  a41=(a49+a41);
+  a48=(a48-a41);
+  a47=(a47*a48);
+  a46=(a46+a47);
+  a47=arg[5]? arg[5][1] : 0;
+  a51=arg[2]? arg[2][1] : 0;
+  a51=(a51-a05);
+  a47=(a47*a51);
+  a46=(a46+a47);
+  a47=(a33*a46);
+  a38=(a38-a47);
+  a47=(a31*a43);
+  a44=(a33*a41);
+  a47=(a47-a44);
+  a44=(a00*a47);
+  a52=(a44*a01);
+  a52=(a52*a47);
+  a19=(a19/a32);
+  a53=(a19*a41);
+  a34=(a34/a32);
+  a32=(a34*a43);
+  a53=(a53-a32);
+  a32=(a00*a53);
+  a54=(a32*a06);
+  a54=(a54*a53);
+  a52=(a52+a54);
+  a54=(a33*a52);
+  a44=(a44*a02);
+  a44=(a44*a47);
+  a32=(a32*a03);
+  a32=(a32*a53);
+  a44=(a44+a32);
+  a32=(a31*a44);
+  a54=(a54-a32);
+  a38=(a38+a54);
+  a54=(a31*a38);
+  a32=arg[0]? arg[0][4] : 0;
+  a54=(a54*a32);
+  a55=(a17*a16);
+  a56=(a20*a55);
+  a57=(a00*a22);
+  a58=(a57*a18);
+  a56=(a56-a58);
+  a55=(a55/a56);
+  a58=(a55*a37);
+  a57=(a57/a56);
+  a59=(a57*a46);
+  a58=(a58-a59);
+  a59=(a55*a43);
+  a60=(a57*a41);
+  a59=(a59-a60);
+  a60=(a00*a59);
+  a61=(a60*a14);
+  a61=(a61*a59);
+  a20=(a20/a56);
+  a62=(a20*a41);
+  a18=(a18/a56);
+  a56=(a18*a43);
+  a62=(a62-a56);
+  a56=(a00*a62);
+  a63=(a56*a22);
+  a63=(a63*a62);
+  a61=(a61+a63);
+  a63=(a57*a61);
+  a60=(a60*a13);
+  a60=(a60*a59);
+  a56=(a56*a16);
+  a56=(a56*a62);
+  a60=(a60+a56);
+  a56=(a55*a60);
+  a63=(a63-a56);
+  a58=(a58+a63);
+  a63=(a55*a58);
+  a56=arg[0]? arg[0][5] : 0;
+  a63=(a63*a56);
+  a54=(a54+a63);
+  a17=(a17*a08);
+  a63=(a25*a17);
+  a64=(a00*a12);
+  a65=(a64*a23);
+  a63=(a63-a65);
+  a17=(a17/a63);
+  a65=(a17*a37);
+  a64=(a64/a63);
+  a66=(a64*a46);
+  a65=(a65-a66);
+  a66=(a17*a43);
+  a67=(a64*a41);
+  a66=(a66-a67);
+  a67=(a00*a66);
+  a68=(a67*a10);
+  a68=(a68*a66);
+  a25=(a25/a63);
+  a69=(a25*a41);
+  a23=(a23/a63);
+  a63=(a23*a43);
+  a69=(a69-a63);
+  a00=(a00*a69);
+  a63=(a00*a12);
+  a63=(a63*a69);
+  a68=(a68+a63);
+  a63=(a64*a68);
+  a67=(a67*a09);
+  a67=(a67*a66);
+  a00=(a00*a08);
+  a00=(a00*a69);
+  a67=(a67+a00);
+  a00=(a17*a67);
+  a63=(a63-a00);
+  a65=(a65+a63);
+  a63=(a17*a65);
+  a00=arg[0]? arg[0][6] : 0;
+  a63=(a63*a00);
+  a54=(a54+a63);
+  a63=(a19*a46);
+  a70=(a34*a37);
+  a63=(a63-a70);
+  a44=(a34*a44);
+  a52=(a19*a52);
+  a44=(a44-a52);
+  a63=(a63+a44);
+  a02=(a02*a03);
+  a01=(a01*a06);
+  a02=(a02+a01);
+  a01=(a63*a02);
+  a53=casadi_sq(a53);
+  a53=(a53*a27);
+  a01=(a01+a53);
+  a53=(a31*a01);
+  a02=(a38*a02);
+  a06=casadi_sq(a47);
+  a06=(a06*a27);
+  a02=(a02-a06);
+  a06=(a34*a02);
+  a53=(a53-a06);
+  a06=arg[0]? arg[0][7] : 0;
+  a53=(a53*a06);
+  a54=(a54+a53);
+  a53=(a20*a46);
+  a27=(a18*a37);
+  a53=(a53-a27);
+  a60=(a18*a60);
+  a61=(a20*a61);
+  a60=(a60-a61);
+  a53=(a53+a60);
+  a13=(a13*a16);
+  a14=(a14*a22);
+  a13=(a13+a14);
+  a14=(a53*a13);
+  a62=casadi_sq(a62);
+  a62=(a62*a28);
+  a14=(a14+a62);
+  a62=(a55*a14);
+  a13=(a58*a13);
+  a22=casadi_sq(a59);
+  a22=(a22*a28);
+  a13=(a13-a22);
+  a22=(a18*a13);
+  a62=(a62-a22);
+  a22=arg[0]? arg[0][8] : 0;
+  a62=(a62*a22);
+  a54=(a54+a62);
+  a46=(a25*a46);
+  a37=(a23*a37);
+  a46=(a46-a37);
+  a67=(a23*a67);
+  a68=(a25*a68);
+  a67=(a67-a68);
+  a46=(a46+a67);
+  a09=(a09*a08);
+  a10=(a10*a12);
+  a09=(a09+a10);
+  a10=(a46*a09);
+  a69=casadi_sq(a69);
+  a69=(a69*a07);
+  a10=(a10+a69);
+  a69=(a17*a10);
+  a09=(a65*a09);
+  a12=casadi_sq(a66);
+  a12=(a12*a07);
+  a09=(a09-a12);
+  a12=(a23*a09);
+  a69=(a69-a12);
+  a12=arg[0]? arg[0][9] : 0;
+  a69=(a69*a12);
+  a54=(a54+a69);
+  a34=(a34*a63);
+  a69=arg[0]? arg[0][10] : 0;
+  a34=(a34*a69);
+  a54=(a54-a34);
+  a18=(a18*a53);
+  a34=arg[0]? arg[0][11] : 0;
+  a18=(a18*a34);
+  a54=(a54-a18);
+  a23=(a23*a46);
+  a18=arg[0]? arg[0][12] : 0;
+  a23=(a23*a18);
+  a54=(a54-a23);
+  a23=(a31*a47);
+  a07=arg[0]? arg[0][13] : 0;
+  a23=(a23*a07);
+  a54=(a54+a23);
+  a23=(a55*a59);
+  a08=arg[0]? arg[0][14] : 0;
+  a23=(a23*a08);
+  a54=(a54+a23);
+  a23=(a17*a66);
+  a67=arg[0]? arg[0][15] : 0;
+  a23=(a23*a67);
+  a54=(a54+a23);
+  a23=(a36<=a47);
+  a68=(a23?a24:0);
+  a23=(!a23);
+  a37=-1.;
+  a23=(a23?a37:0);
+  a68=(a68+a23);
+  a31=(a31*a68);
+  a23=arg[0]? arg[0][16] : 0;
+  a31=(a31*a23);
+  a54=(a54+a31);
+  a31=(a36<=a59);
+  a62=(a31?a24:0);
+  a31=(!a31);
+  a31=(a31?a37:0);
+  a62=(a62+a31);
+  a31=(a55*a62);
+  a28=arg[0]? arg[0][17] : 0;
+  a31=(a31*a28);
+  a54=(a54+a31);
+  a31=(a36<=a66);
+  a16=(a31?a24:0);
+  a31=(!a31);
+  a31=(a31?a37:0);
+  a16=(a16+a31);
+  a31=(a17*a16);
+  a37=arg[0]? arg[0][18] : 0;
+  a31=(a31*a37);
+  a54=(a54+a31);
+  a31=(a29*a33);
+  a60=(a54*a31);
+  a02=(a19*a02);
+  a01=(a33*a01);
+  a02=(a02-a01);
+  a02=(a02*a06);
+  a38=(a33*a38);
+  a38=(a38*a32);
+  a58=(a57*a58);
+  a58=(a58*a56);
+  a38=(a38+a58);
+  a65=(a64*a65);
+  a65=(a65*a00);
+  a38=(a38+a65);
+  a02=(a02-a38);
+  a13=(a20*a13);
+  a14=(a57*a14);
+  a13=(a13-a14);
+  a13=(a13*a22);
+  a02=(a02+a13);
+  a09=(a25*a09);
+  a10=(a64*a10);
+  a09=(a09-a10);
+  a09=(a09*a12);
+  a02=(a02+a09);
+  a19=(a19*a63);
+  a19=(a19*a69);
+  a02=(a02+a19);
+  a20=(a20*a53);
+  a20=(a20*a34);
+  a02=(a02+a20);
+  a25=(a25*a46);
+  a25=(a25*a18);
+  a02=(a02+a25);
+  a47=(a33*a47);
+  a47=(a47*a07);
+  a02=(a02-a47);
+  a59=(a57*a59);
+  a59=(a59*a08);
+  a02=(a02-a59);
+  a66=(a64*a66);
+  a66=(a66*a67);
+  a02=(a02-a66);
+  a33=(a33*a68);
+  a33=(a33*a23);
+  a02=(a02-a33);
+  a62=(a57*a62);
+  a62=(a62*a28);
+  a02=(a02-a62);
+  a16=(a64*a16);
+  a16=(a16*a37);
+  a02=(a02-a16);
+  a16=(a02*a35);
+  a60=(a60+a16);
+  a60=casadi_fabs(a60);
+  a36=(a36<a60);
+  a16=arg[5]? arg[5][9] : 0;
+  a57=(a16*a57);
+  a62=(a35*a57);
+  a55=(a16*a55);
+  a33=(a31*a55);
+  a62=(a62-a33);
+  a62=casadi_fabs(a62);
+  a33=arg[5]? arg[5][10] : 0;
+  a17=(a33*a17);
+  a68=(a17*a57);
+  a64=(a33*a64);
+  a66=(a64*a55);
+  a68=(a68-a66);
+  a68=casadi_fabs(a68);
+  a62=(a62+a68);
+  a68=(a60*a62);
+  a68=(a36?a68:0);
+  a66=(a54*a57);
+  a59=(a02*a55);
+  a66=(a66+a59);
+  a66=casadi_fabs(a66);
+  a59=(a55*a31);
+  a47=(a57*a35);
+  a59=(a59-a47);
+  a59=casadi_fabs(a59);
+  a47=(a17*a31);
+  a25=(a64*a35);
+  a47=(a47-a25);
+  a47=casadi_fabs(a47);
+  a59=(a59+a47);
+  a59=(a36?a59:0);
+  a47=(!a36);
+  a25=(a47?a24:0);
+  a59=(a59+a25);
+  a25=(a66*a59);
+  a68=(a68<a25);
+  a66=(a68?a66:0);
+  a25=(!a68);
+  a60=(a36?a60:0);
+  a60=(a25?a60:0);
+  a66=(a66+a60);
+  a60=(a35*a64);
+  a46=(a31*a17);
+  a60=(a60-a46);
+  a60=casadi_fabs(a60);
+  a46=(a55*a64);
+  a20=(a57*a17);
+  a46=(a46-a20);
+  a46=casadi_fabs(a46);
+  a60=(a60+a46);
+  a46=(a66*a60);
+  a20=(a54*a64);
+  a53=(a02*a17);
+  a20=(a20+a53);
+  a20=casadi_fabs(a20);
+  a62=(a68?a62:0);
+  a59=(a25?a59:0);
+  a62=(a62+a59);
+  a59=(a20*a62);
+  a46=(a46<a59);
+  a59=(a46?a64:0);
+  a53=(!a46);
+  a19=(a68?a57:0);
+  a63=(a36?a31:0);
+  a09=(a47?a31:0);
+  a63=(a63+a09);
+  a63=(a25?a63:0);
+  a19=(a19+a63);
+  a19=(a53?a19:0);
+  a59=(a59+a19);
+  a19=(a54*a59);
+  a63=(a46?a17:0);
+  a68=(a68?a55:0);
+  a36=(a36?a35:0);
+  a47=(a47?a35:0);
+  a36=(a36+a47);
+  a25=(a25?a36:0);
+  a68=(a68+a25);
+  a68=(a53?a68:0);
+  a63=(a63+a68);
+  a68=(a02*a63);
+  a19=(a19+a68);
+  a19=casadi_sign(a19);
+  a68=(a59*a19);
+  a25=(a35*a68);
+  a19=(a63*a19);
+  a36=(a31*a19);
+  a25=(a25-a36);
+  a36=casadi_sq(a25);
+  a47=9.9999999999999992e-25;
+  a09=casadi_sq(a35);
+  a10=casadi_sq(a31);
+  a09=(a09+a10);
+  a09=(a47*a09);
+  a10=casadi_sq(a59);
+  a13=casadi_sq(a63);
+  a10=(a10+a13);
+  a09=(a09*a10);
+  a36=(a36<=a09);
+  a09=(a35*a63);
+  a13=(a31*a59);
+  a09=(a09+a13);
+  a13=casadi_sign(a09);
+  a14=(!a36);
+  a20=(a46?a20:0);
+  a66=(a53?a66:0);
+  a20=(a20+a66);
+  a46=(a46?a60:0);
+  a53=(a53?a62:0);
+  a46=(a46+a53);
+  a20=(a20/a46);
+  a25=casadi_sign(a25);
+  a25=(a20*a25);
+  a35=(a25*a35);
+  a35=(a14?a35:0);
+  a46=(a55*a68);
+  a53=(a57*a19);
+  a46=(a46-a53);
+  a53=casadi_sq(a46);
+  a62=casadi_sq(a55);
+  a60=casadi_sq(a57);
+  a62=(a62+a60);
+  a62=(a47*a62);
+  a62=(a62*a10);
+  a53=(a53<=a62);
+  a62=(!a53);
+  a46=casadi_sign(a46);
+  a46=(a20*a46);
+  a60=(a46*a55);
+  a60=(a62?a60:0);
+  a35=(a35+a60);
+  a68=(a17*a68);
+  a19=(a64*a19);
+  a68=(a68-a19);
+  a19=casadi_sq(a68);
+  a60=casadi_sq(a17);
+  a66=casadi_sq(a64);
+  a60=(a60+a66);
+  a47=(a47*a60);
+  a47=(a47*a10);
+  a19=(a19<=a47);
+  a47=(!a19);
+  a68=casadi_sign(a68);
+  a68=(a20*a68);
+  a10=(a68*a17);
+  a10=(a47?a10:0);
+  a35=(a35+a10);
+  a54=(a54-a35);
+  a54=(a54*a63);
+  a31=(a25*a31);
+  a31=(-a31);
+  a31=(a14?a31:0);
+  a35=(a46*a57);
+  a35=(-a35);
+  a35=(a62?a35:0);
+  a31=(a31+a35);
+  a35=(a68*a64);
+  a35=(-a35);
+  a35=(a47?a35:0);
+  a31=(a31+a35);
+  a02=(a02-a31);
+  a02=(a02*a59);
+  a54=(a54-a02);
+  a09=casadi_fabs(a09);
+  a09=(a36?a09:0);
+  a55=(a55*a63);
+  a57=(a57*a59);
+  a55=(a55+a57);
+  a57=casadi_fabs(a55);
+  a57=(a53?a57:0);
+  a09=(a09+a57);
+  a17=(a17*a63);
+  a64=(a64*a59);
+  a17=(a17+a64);
+  a64=casadi_fabs(a17);
+  a64=(a19?a64:0);
+  a09=(a09+a64);
+  a54=(a54/a09);
+  a13=(a13*a54);
+  a36=(a36?a13:0);
+  a25=(a14?a25:0);
+  a14=(a14?a25:0);
+  a36=(a36+a14);
+  a36=(a29*a36);
+  a55=casadi_sign(a55);
+  a55=(a55*a54);
+  a53=(a53?a55:0);
+  a46=(a62?a46:0);
+  a62=(a62?a46:0);
+  a53=(a53+a62);
+  a53=(a16*a53);
+  a62=(a36+a53);
+  a17=casadi_sign(a17);
+  a17=(a17*a54);
+  a19=(a19?a17:0);
+  a68=(a47?a68:0);
+  a47=(a47?a68:0);
+  a19=(a19+a47);
+  a19=(a33*a19);
+  a62=(a62+a19);
+  a62=(a62+a32);
+  a62=(a62+a56);
+  a62=(a62+a00);
+  a62=(a62+a06);
+  a62=(a62+a22);
+  a62=(a62+a12);
+  a62=(a62+a69);
+  a62=(a62+a34);
+  a62=(a62+a18);
+  a62=(a62+a07);
+  a62=(a62+a08);
+  a62=(a62+a67);
+  a62=(a62+a23);
+  a62=(a62+a28);
+  a62=(a62+a37);
+  a62=(a62+a21);
+  a62=(a62+a05);
+  a62=(a62+a43);
+  a62=(a62+a41);
+  a62=casadi_fabs(a62);
+  a47=casadi_inf;
+  a62=(a62<a47);
+  a47=(a26&&a62);
+  a47=(a11&&a47);
+  a68=(-a29);
+  a36=casadi_fmax(a36,a68);
+  a36=casadi_fmin(a36,a29);
+  a36=(a47?a36:0);
+  if (res[0]!=0) res[0][0]=a36;
+  a36=(-a16);
+  a53=casadi_fmax(a53,a36);
+  a53=casadi_fmin(a53,a16);
+  a53=(a47?a53:0);
+  if (res[0]!=0) res[0][1]=a53;
+  a53=(-a33);
+  a19=casadi_fmax(a19,a53);
+  a19=casadi_fmin(a19,a33);
+  a19=(a47?a19:0);
+  if (res[0]!=0) res[0][2]=a19;
+  a19=(a11&&a62);
+  a33=(a19?a21:0);
+  a53=(!a19);
+  a42=(a53?a42:0);
+  a33=(a33+a42);
+  if (res[1]!=0) res[1][0]=a33;
+  a33=(a19?a05:0);
+  a50=(a53?a50:0);
+  a33=(a33+a50);
+  if (res[1]!=0) res[1][1]=a33;
+  a33=(a19?a43:0);
+  a40=(a53?a40:0);
+  a33=(a33+a40);
+  if (res[1]!=0) res[1][2]=a33;
+  a19=(a19?a41:0);
+  a53=(a53?a49:0);
+  a19=(a19+a53);
+  if (res[1]!=0) res[1][3]=a19;
+  a19=(a47?a32:0);
+  a53=(!a47);
+  a32=(a53?a32:0);
+  a19=(a19+a32);
+  if (res[1]!=0) res[1][4]=a19;
+  a19=(a47?a56:0);
+  a56=(a53?a56:0);
+  a19=(a19+a56);
+  if (res[1]!=0) res[1][5]=a19;
+  a19=(a47?a00:0);
+  a00=(a53?a00:0);
+  a19=(a19+a00);
+  if (res[1]!=0) res[1][6]=a19;
+  a19=(a47?a06:0);
+  a06=(a53?a06:0);
+  a19=(a19+a06);
+  if (res[1]!=0) res[1][7]=a19;
+  a19=(a47?a22:0);
+  a22=(a53?a22:0);
+  a19=(a19+a22);
+  if (res[1]!=0) res[1][8]=a19;
+  a19=(a47?a12:0);
+  a12=(a53?a12:0);
+  a19=(a19+a12);
+  if (res[1]!=0) res[1][9]=a19;
+  a19=(a47?a69:0);
+  a69=(a53?a69:0);
+  a19=(a19+a69);
+  if (res[1]!=0) res[1][10]=a19;
+  a19=(a47?a34:0);
+  a34=(a53?a34:0);
+  a19=(a19+a34);
+  if (res[1]!=0) res[1][11]=a19;
+  a19=(a47?a18:0);
+  a18=(a53?a18:0);
+  a19=(a19+a18);
+  if (res[1]!=0) res[1][12]=a19;
+  a19=(a47?a07:0);
+  a07=(a53?a07:0);
+  a19=(a19+a07);
+  if (res[1]!=0) res[1][13]=a19;
+  a19=(a47?a08:0);
+  a08=(a53?a08:0);
+  a19=(a19+a08);
+  if (res[1]!=0) res[1][14]=a19;
+  a19=(a47?a67:0);
+  a67=(a53?a67:0);
+  a19=(a19+a67);
+  if (res[1]!=0) res[1][15]=a19;
+  a19=(a47?a23:0);
+  a23=(a53?a23:0);
+  a19=(a19+a23);
+  if (res[1]!=0) res[1][16]=a19;
+  a19=(a47?a28:0);
+  a28=(a53?a28:0);
+  a19=(a19+a28);
+  if (res[1]!=0) res[1][17]=a19;
+  a47=(a47?a37:0);
+  a53=(a53?a37:0);
+  a47=(a47+a53);
+  if (res[1]!=0) res[1][18]=a47;
+  a20=(a24<a20);
+  a20=(a20?a15:0);
+  a20=(a62?a20:0);
+  a62=(!a62);
+  a15=3.;
+  a62=(a62?a15:0);
+  a20=(a20+a62);
+  a20=(a26?a20:0);
+  a26=(!a26);
+  a26=(a26?a24:0);
+  a20=(a20+a26);
+  a20=(a11?a20:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a20=(a20+a11);
+  if (res[2]!=0) res[2][0]=a20;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a43;
+  if (res[3]!=0) res[3][3]=a41;
+  if (res[3]!=0) res[3][4]=a45;
+  if (res[3]!=0) res[3][5]=a51;
+  if (res[3]!=0) res[3][6]=a39;
+  if (res[3]!=0) res[3][7]=a48;
+  if (res[3]!=0) res[3][8]=a30;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f28(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_ctc_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_ctc_preload_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][17] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][6] : 0;
+  a03=(a03/a15);
+  a27=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a27=(a27-a15);
+  a15=casadi_fabs(a27);
+  a16=(a16/a07);
+  a28=(a14*a16);
+  a22=(a22/a07);
+  a07=(a13*a22);
+  a28=(a28-a07);
+  a07=casadi_fabs(a28);
+  a29=(a15+a07);
+  a15=(a15-a07);
+  a15=casadi_fabs(a15);
+  a29=(a29-a15);
+  a15=2.;
+  a29=(a29/a15);
+  a08=(a08/a24);
+  a07=(a10*a08);
+  a12=(a12/a24);
+  a24=(a09*a12);
+  a07=(a07-a24);
+  a24=casadi_fabs(a07);
+  a30=(a29+a24);
+  a29=(a29-a24);
+  a29=casadi_fabs(a29);
+  a30=(a30-a29);
+  a30=(a30/a15);
+  a26=(a26<=a30);
+  a29=arg[5]? arg[5][7] : 0;
+  a24=1.;
+  a31=3.3333333333333331e-01;
+  a32=casadi_sq(a03);
+  a33=casadi_sq(a06);
+  a32=(a32-a33);
+  a33=casadi_sq(a16);
+  a34=casadi_sq(a22);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a33=casadi_sq(a08);
+  a34=casadi_sq(a12);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a32=casadi_sq(a32);
+  a33=(2.*a03);
+  a33=(a33*a06);
+  a34=(2.*a16);
+  a34=(a34*a22);
+  a33=(a33+a34);
+  a34=(2.*a08);
+  a34=(a34*a12);
+  a33=(a33+a34);
+  a33=casadi_sq(a33);
+  a32=(a32+a33);
+  a32=sqrt(a32);
+  a31=(a31*a32);
+  a31=(a24-a31);
+  a32=casadi_fabs(a31);
+  a31=(a31+a32);
+  a04=(a04*a31);
+  a04=sqrt(a04);
+  a29=(a29<=a04);
+  a26=(a26&&a29);
+  a29=(a17*a03);
+  a31=(a19*a29);
+  a32=(a00*a06);
+  a33=(a17*a02);
+  a34=(a32*a33);
+  a31=(a31-a34);
+  a29=(a29/a31);
+  a34=(a17*a16);
+  a35=(a20*a34);
+  a36=(a00*a22);
+  a37=(a36*a18);
+  a35=(a35-a37);
+  a34=(a34/a35);
+  a17=(a17*a08);
+  a37=(a25*a17);
+  a38=(a00*a12);
+  a39=(a38*a23);
+  a37=(a37-a39);
+  a17=(a17/a37);
+  a32=(a32/a31);
+  a39=(-a32);
+  a36=(a36/a35);
+  a40=(-a36);
+  a38=(a38/a37);
+  a41=(-a38);
+  a42=arg[4]? arg[4][0] : 0;
+  a43=arg[5]? arg[5][2] : 0;
+  a44=arg[3]? arg[3][0] : 0;
+  a45=arg[0]? arg[0][2] : 0;
+  a46=arg[5]? arg[5][5] : 0;
+  a47=arg[0]? arg[0][0] : 0;
+  a48=(a21-a47);
+  a49=arg[5]? arg[5][4] : 0;
+  a48=(a48/a49);
+  a48=(a48-a45);
+  a48=(a46*a48);
+  a48=(a45+a48);
+  a44=(a44-a48);
+  a43=(a43*a44);
+  a42=(a42+a43);
+  a43=arg[5]? arg[5][0] : 0;
+  a50=arg[2]? arg[2][0] : 0;
+  a50=(a50-a21);
+  a43=(a43*a50);
+  a42=(a42+a43);
+  a43=(a29*a42);
+  a51=arg[4]? arg[4][1] : 0;
+  a52=arg[5]? arg[5][3] : 0;
+  a53=arg[3]? arg[3][1] : 0;
+  a54=arg[0]? arg[0][3] : 0;
+  a55=arg[0]? arg[0][1] : 0;
+  a56=(a05-a55);
+  a56=(a56/a49);
+  a56=(a56-a54);
+  a46=(a46*a56);
+  a46=(a54+a46);
+  a53=(a53-a46);
+  a52=(a52*a53);
+  a51=(a51+a52);
+  a52=arg[5]? arg[5][1] : 0;
+  a56=arg[2]? arg[2][1] : 0;
+  a56=(a56-a05);
+  a52=(a52*a56);
+  a51=(a51+a52);
+  a52=(a32*a51);
+  a43=(a43-a52);
+  a52=(a29*a48);
+  a49=(a32*a46);
+  a52=(a52-a49);
+  a49=(a00*a52);
+  a57=(a49*a01);
+  a57=(a57*a52);
+  a19=(a19/a31);
+  a58=(a19*a46);
+  a33=(a33/a31);
+  a31=(a33*a48);
+  a58=(a58-a31);
+  a31=(a00*a58);
+  a59=(a31*a06);
+  a59=(a59*a58);
+  a57=(a57+a59);
+  a59=(a32*a57);
+  a49=(a49*a02);
+  a49=(a49*a52);
+  a31=(a31*a03);
+  a31=(a31*a58);
+  a49=(a49+a31);
+  a31=(a29*a49);
+  a59=(a59-a31);
+  a43=(a43+a59);
+  a59=(a29*a43);
+  a31=arg[0]? arg[0][4] : 0;
+  a59=(a59*a31);
+  a60=(a34*a42);
+  a61=(a36*a51);
+  a60=(a60-a61);
+  a61=(a34*a48);
+  a62=(a36*a46);
+  a61=(a61-a62);
+  a62=(a00*a61);
+  a63=(a62*a14);
+  a63=(a63*a61);
+  a20=(a20/a35);
+  a64=(a20*a46);
+  a18=(a18/a35);
+  a35=(a18*a48);
+  a64=(a64-a35);
+  a35=(a00*a64);
+  a65=(a35*a22);
+  a65=(a65*a64);
+  a63=(a63+a65);
+  a65=(a36*a63);
+  a62=(a62*a13);
+  a62=(a62*a61);
+  a35=(a35*a16);
+  a35=(a35*a64);
+  a62=(a62+a35);
+  a35=(a34*a62);
+  a65=(a65-a35);
+  a60=(a60+a65);
+  a65=(a34*a60);
+  a35=arg[0]? arg[0][5] : 0;
+  a65=(a65*a35);
+  a59=(a59+a65);
+  a65=(a17*a42);
+  a66=(a38*a51);
+  a65=(a65-a66);
+  a66=(a17*a48);
+  a67=(a38*a46);
+  a66=(a66-a67);
+  a67=(a00*a66);
+  a68=(a67*a10);
+  a68=(a68*a66);
+  a25=(a25/a37);
+  a69=(a25*a46);
+  a23=(a23/a37);
+  a37=(a23*a48);
+  a69=(a69-a37);
+  a37=(a00*a69);
+  a70=(a37*a12);
+  a70=(a70*a69);
+  a68=(a68+a70);
+  a70=(a38*a68);
+  a67=(a67*a09);
+  a67=(a67*a66);
+  a37=(a37*a08);
+  a37=(a37*a69);
+  a67=(a67+a37);
+  a37=(a17*a67);
+  a70=(a70-a37);
+  a65=(a65+a70);
+  a70=(a17*a65);
+  a37=arg[0]? arg[0][6] : 0;
+  a70=(a70*a37);
+  a59=(a59+a70);
+  a70=(a19*a51);
+  a71=(a33*a42);
+  a70=(a70-a71);
+  a49=(a33*a49);
+  a57=(a19*a57);
+  a49=(a49-a57);
+  a70=(a70+a49);
+  a02=(a02*a03);
+  a01=(a01*a06);
+  a02=(a02+a01);
+  a01=(a70*a02);
+  a58=casadi_sq(a58);
+  a58=(a58*a27);
+  a01=(a01+a58);
+  a58=(a29*a01);
+  a02=(a43*a02);
+  a06=casadi_sq(a52);
+  a06=(a06*a27);
+  a02=(a02-a06);
+  a06=(a33*a02);
+  a58=(a58-a06);
+  a06=arg[0]? arg[0][7] : 0;
+  a58=(a58*a06);
+  a59=(a59+a58);
+  a58=(a20*a51);
+  a27=(a18*a42);
+  a58=(a58-a27);
+  a62=(a18*a62);
+  a63=(a20*a63);
+  a62=(a62-a63);
+  a58=(a58+a62);
+  a13=(a13*a16);
+  a14=(a14*a22);
+  a13=(a13+a14);
+  a14=(a58*a13);
+  a64=casadi_sq(a64);
+  a64=(a64*a28);
+  a14=(a14+a64);
+  a64=(a34*a14);
+  a13=(a60*a13);
+  a22=casadi_sq(a61);
+  a22=(a22*a28);
+  a13=(a13-a22);
+  a22=(a18*a13);
+  a64=(a64-a22);
+  a22=arg[0]? arg[0][8] : 0;
+  a64=(a64*a22);
+  a59=(a59+a64);
+  a51=(a25*a51);
+  a42=(a23*a42);
+  a51=(a51-a42);
+  a67=(a23*a67);
+  a68=(a25*a68);
+  a67=(a67-a68);
+  a51=(a51+a67);
+  a09=(a09*a08);
+  a10=(a10*a12);
+  a09=(a09+a10);
+  a10=(a51*a09);
+  a69=casadi_sq(a69);
+  a69=(a69*a07);
+  a10=(a10+a69);
+  a69=(a17*a10);
+  a09=(a65*a09);
+  a12=casadi_sq(a66);
+  a12=(a12*a07);
+  a09=(a09-a12);
+  a12=(a23*a09);
+  a69=(a69-a12);
+  a12=arg[0]? arg[0][9] : 0;
+  a69=(a69*a12);
+  a59=(a59+a69);
+  a33=(a33*a70);
+  a69=arg[0]? arg[0][10] : 0;
+  a33=(a33*a69);
+  a59=(a59-a33);
+  a18=(a18*a58);
+  a33=arg[0]? arg[0][11] : 0;
+  a18=(a18*a33);
+  a59=(a59-a18);
+  a23=(a23*a51);
+  a18=arg[0]? arg[0][12] : 0;
+  a23=(a23*a18);
+  a59=(a59-a23);
+  a23=(a29*a52);
+  a07=arg[0]? arg[0][13] : 0;
+  a23=(a23*a07);
+  a59=(a59+a23);
+  a23=(a34*a61);
+  a08=arg[0]? arg[0][14] : 0;
+  a23=(a23*a08);
+  a59=(a59+a23);
+  a23=(a17*a66);
+  a67=arg[0]? arg[0][15] : 0;
+  a23=(a23*a67);
+  a59=(a59+a23);
+  a23=0.;
+  a68=(a23<=a52);
+  a42=(a68?a24:0);
+  a68=(!a68);
+  a64=-1.;
+  a68=(a68?a64:0);
+  a42=(a42+a68);
+  a68=(a29*a42);
+  a28=arg[0]? arg[0][16] : 0;
+  a68=(a68*a28);
+  a59=(a59+a68);
+  a68=(a23<=a61);
+  a16=(a68?a24:0);
+  a68=(!a68);
+  a68=(a68?a64:0);
+  a16=(a16+a68);
+  a68=(a34*a16);
+  a62=arg[0]? arg[0][17] : 0;
+  a68=(a68*a62);
+  a59=(a59+a68);
+  a23=(a23<=a66);
+  a68=(a23?a24:0);
+  a23=(!a23);
+  a23=(a23?a64:0);
+  a68=(a68+a23);
+  a23=(a17*a68);
+  a64=arg[0]? arg[0][18] : 0;
+  a23=(a23*a64);
+  a59=(a59+a23);
+  a02=(a19*a02);
+  a01=(a32*a01);
+  a02=(a02-a01);
+  a02=(a02*a06);
+  a43=(a32*a43);
+  a43=(a43*a31);
+  a60=(a36*a60);
+  a60=(a60*a35);
+  a43=(a43+a60);
+  a65=(a38*a65);
+  a65=(a65*a37);
+  a43=(a43+a65);
+  a02=(a02-a43);
+  a13=(a20*a13);
+  a14=(a36*a14);
+  a13=(a13-a14);
+  a13=(a13*a22);
+  a02=(a02+a13);
+  a09=(a25*a09);
+  a10=(a38*a10);
+  a09=(a09-a10);
+  a09=(a09*a12);
+  a02=(a02+a09);
+  a19=(a19*a70);
+  a19=(a19*a69);
+  a02=(a02+a19);
+  a20=(a20*a58);
+  a20=(a20*a33);
+  a02=(a02+a20);
+  a25=(a25*a51);
+  a25=(a25*a18);
+  a02=(a02+a25);
+  a52=(a32*a52);
+  a52=(a52*a07);
+  a02=(a02-a52);
+  a61=(a36*a61);
+  a61=(a61*a08);
+  a02=(a02-a61);
+  a66=(a38*a66);
+  a66=(a66*a67);
+  a02=(a02-a66);
+  a32=(a32*a42);
+  a32=(a32*a28);
+  a02=(a02-a32);
+  a36=(a36*a16);
+  a36=(a36*a62);
+  a02=(a02-a36);
+  a38=(a38*a68);
+  a38=(a38*a64);
+  a02=(a02-a38);
+  a38=arg[5]? arg[5][8] : 0;
+  a68=arg[5]? arg[5][9] : 0;
+  a36=arg[5]? arg[5][10] : 0;
+  arg[6]=w+0;
+  arg[7]=w+6;
+  arg[8] = arg[5]? arg[5] + 8 : 0;
+  arg[9] = arg[5]? arg[5] + 11 : 0;
+  arg[10] = arg[5]? arg[5] + 14 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a29;
+  w[1] = a34;
+  w[2] = a17;
+  w[3] = a39;
+  w[4] = a40;
+  w[5] = a41;
+  w[6] = a59;
+  w[7] = a02;
+  if (casadi_f16(arg+6, res+4, iw, w+21, 0)) return 1;
+  a29 = w[17];
+  a34 = w[18];
+  a17 = w[19];
+  a39 = w[20];
+  a40=(a29+a34);
+  a40=(a40+a17);
+  a40=(a40+a31);
+  a40=(a40+a35);
+  a40=(a40+a37);
+  a40=(a40+a06);
+  a40=(a40+a22);
+  a40=(a40+a12);
+  a40=(a40+a69);
+  a40=(a40+a33);
+  a40=(a40+a18);
+  a40=(a40+a07);
+  a40=(a40+a08);
+  a40=(a40+a67);
+  a40=(a40+a28);
+  a40=(a40+a62);
+  a40=(a40+a64);
+  a40=(a40+a21);
+  a40=(a40+a05);
+  a40=(a40+a48);
+  a40=(a40+a46);
+  a40=casadi_fabs(a40);
+  a41=casadi_inf;
+  a40=(a40<a41);
+  a41=(a26&&a40);
+  a41=(a11&&a41);
+  a59=(-a38);
+  a29=casadi_fmax(a29,a59);
+  a29=casadi_fmin(a29,a38);
+  a29=(a41?a29:0);
+  if (res[0]!=0) res[0][0]=a29;
+  a29=(-a68);
+  a34=casadi_fmax(a34,a29);
+  a34=casadi_fmin(a34,a68);
+  a34=(a41?a34:0);
+  if (res[0]!=0) res[0][1]=a34;
+  a34=(-a36);
+  a17=casadi_fmax(a17,a34);
+  a17=casadi_fmin(a17,a36);
+  a17=(a41?a17:0);
+  if (res[0]!=0) res[0][2]=a17;
+  a17=(a11&&a40);
+  a36=(a17?a21:0);
+  a34=(!a17);
+  a47=(a34?a47:0);
+  a36=(a36+a47);
+  if (res[1]!=0) res[1][0]=a36;
+  a36=(a17?a05:0);
+  a55=(a34?a55:0);
+  a36=(a36+a55);
+  if (res[1]!=0) res[1][1]=a36;
+  a36=(a17?a48:0);
+  a45=(a34?a45:0);
+  a36=(a36+a45);
+  if (res[1]!=0) res[1][2]=a36;
+  a17=(a17?a46:0);
+  a34=(a34?a54:0);
+  a17=(a17+a34);
+  if (res[1]!=0) res[1][3]=a17;
+  a17=(a41?a31:0);
+  a34=(!a41);
+  a31=(a34?a31:0);
+  a17=(a17+a31);
+  if (res[1]!=0) res[1][4]=a17;
+  a17=(a41?a35:0);
+  a35=(a34?a35:0);
+  a17=(a17+a35);
+  if (res[1]!=0) res[1][5]=a17;
+  a17=(a41?a37:0);
+  a37=(a34?a37:0);
+  a17=(a17+a37);
+  if (res[1]!=0) res[1][6]=a17;
+  a17=(a41?a06:0);
+  a06=(a34?a06:0);
+  a17=(a17+a06);
+  if (res[1]!=0) res[1][7]=a17;
+  a17=(a41?a22:0);
+  a22=(a34?a22:0);
+  a17=(a17+a22);
+  if (res[1]!=0) res[1][8]=a17;
+  a17=(a41?a12:0);
+  a12=(a34?a12:0);
+  a17=(a17+a12);
+  if (res[1]!=0) res[1][9]=a17;
+  a17=(a41?a69:0);
+  a69=(a34?a69:0);
+  a17=(a17+a69);
+  if (res[1]!=0) res[1][10]=a17;
+  a17=(a41?a33:0);
+  a33=(a34?a33:0);
+  a17=(a17+a33);
+  if (res[1]!=0) res[1][11]=a17;
+  a17=(a41?a18:0);
+  a18=(a34?a18:0);
+  a17=(a17+a18);
+  if (res[1]!=0) res[1][12]=a17;
+  a17=(a41?a07:0);
+  a07=(a34?a07:0);
+  a17=(a17+a07);
+  if (res[1]!=0) res[1][13]=a17;
+  a17=(a41?a08:0);
+  a08=(a34?a08:0);
+  a17=(a17+a08);
+  if (res[1]!=0) res[1][14]=a17;
+  a17=(a41?a67:0);
+  a67=(a34?a67:0);
+  a17=(a17+a67);
+  if (res[1]!=0) res[1][15]=a17;
+  a17=(a41?a28:0);
+  a28=(a34?a28:0);
+  a17=(a17+a28);
+  if (res[1]!=0) res[1][16]=a17;
+  a17=(a41?a62:0);
+  a62=(a34?a62:0);
+  a17=(a17+a62);
+  if (res[1]!=0) res[1][17]=a17;
+  a41=(a41?a64:0);
+  a34=(a34?a64:0);
+  a41=(a41+a34);
+  if (res[1]!=0) res[1][18]=a41;
+  a41=(a39==a15);
+  a15=(a41?a15:0);
+  a41=(!a41);
+  a39=(a39==a24);
+  a34=4.;
+  a39=(a39?a34:0);
+  a41=(a41?a39:0);
+  a15=(a15+a41);
+  a15=(a40?a15:0);
+  a40=(!a40);
+  a41=3.;
+  a40=(a40?a41:0);
+  a15=(a15+a40);
+  a15=(a26?a15:0);
+  a26=(!a26);
+  a26=(a26?a24:0);
+  a15=(a15+a26);
+  a15=(a11?a15:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a15=(a15+a11);
+  if (res[2]!=0) res[2][0]=a15;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a48;
+  if (res[3]!=0) res[3][3]=a46;
+  if (res[3]!=0) res[3][4]=a50;
+  if (res[3]!=0) res[3][5]=a56;
+  if (res[3]!=0) res[3][6]=a44;
+  if (res[3]!=0) res[3][7]=a53;
+  if (res[3]!=0) res[3][8]=a30;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f29(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_ctc_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_lqr_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a03=(a03/a15);
+  a01=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a01=(a01-a15);
+  a01=casadi_fabs(a01);
+  a16=(a16/a07);
+  a14=(a14*a16);
+  a22=(a22/a07);
+  a13=(a13*a22);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a01+a14);
+  a01=(a01-a14);
+  a01=casadi_fabs(a01);
+  a13=(a13-a01);
+  a01=2.;
+  a13=(a13/a01);
+  a08=(a08/a24);
+  a10=(a10*a08);
+  a12=(a12/a24);
+  a09=(a09*a12);
+  a10=(a10-a09);
+  a10=casadi_fabs(a10);
+  a09=(a13+a10);
+  a13=(a13-a10);
+  a13=casadi_fabs(a13);
+  a09=(a09-a13);
+  a09=(a09/a01);
+  a26=(a26<=a09);
+  a13=arg[5]? arg[5][3] : 0;
+  a10=1.;
+  a24=3.3333333333333331e-01;
+  a14=casadi_sq(a03);
+  a07=casadi_sq(a06);
+  a14=(a14-a07);
+  a07=casadi_sq(a16);
+  a15=casadi_sq(a22);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a07=casadi_sq(a08);
+  a15=casadi_sq(a12);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a14=casadi_sq(a14);
+  a07=(2.*a03);
+  a07=(a07*a06);
+  a15=(2.*a16);
+  a15=(a15*a22);
+  a07=(a07+a15);
+  a15=(2.*a08);
+  a15=(a15*a12);
+  a07=(a07+a15);
+  a07=casadi_sq(a07);
+  a14=(a14+a07);
+  a14=sqrt(a14);
+  a24=(a24*a14);
+  a24=(a10-a24);
+  a14=casadi_fabs(a24);
+  a24=(a24+a14);
+  a04=(a04*a24);
+  a04=sqrt(a04);
+  a13=(a13<=a04);
+  a26=(a26&&a13);
+  a03=(a17*a03);
+  a19=(a19*a03);
+  a06=(a00*a06);
+  a02=(a17*a02);
+  a02=(a06*a02);
+  a19=(a19-a02);
+  a03=(a03/a19);
+  a06=(a06/a19);
+  a19=casadi_sq(a06);
+  a22=(a00*a22);
+  a16=(a17*a16);
+  a20=(a20*a16);
+  a18=(a22*a18);
+  a20=(a20-a18);
+  a22=(a22/a20);
+  a18=casadi_sq(a22);
+  a19=(a19+a18);
+  a00=(a00*a12);
+  a17=(a17*a08);
+  a25=(a25*a17);
+  a23=(a00*a23);
+  a25=(a25-a23);
+  a00=(a00/a25);
+  a23=casadi_sq(a00);
+  a19=(a19+a23);
+  a23=arg[7]? arg[7][0] : 0;
+  a08=arg[6]? arg[6][0] : 0;
+  a12=arg[2]? arg[2][0] : 0;
+  a18=(a21-a12);
+  a08=(a08*a18);
+  a02=arg[6]? arg[6][1] : 0;
+  a13=arg[2]? arg[2][1] : 0;
+  a24=(a05-a13);
+  a02=(a02*a24);
+  a08=(a08+a02);
+  a02=arg[6]? arg[6][2] : 0;
+  a14=arg[0]? arg[0][2] : 0;
+  a07=arg[5]? arg[5][1] : 0;
+  a15=arg[0]? arg[0][0] : 0;
+  a27=(a21-a15);
+  a28=arg[5]? arg[5][0] : 0;
+  a27=(a27/a28);
+  a27=(a27-a14);
+  a27=(a07*a27);
+  a27=(a14+a27);
+  a29=arg[3]? arg[3][0] : 0;
+  a30=(a27-a29);
+  a02=(a02*a30);
+  a08=(a08+a02);
+  a02=arg[6]? arg[6][3] : 0;
+  a31=arg[0]? arg[0][3] : 0;
+  a32=arg[0]? arg[0][1] : 0;
+  a33=(a05-a32);
+  a33=(a33/a28);
+  a33=(a33-a31);
+  a07=(a07*a33);
+  a07=(a31+a07);
+  a33=arg[3]? arg[3][1] : 0;
+  a28=(a07-a33);
+  a02=(a02*a28);
+  a08=(a08+a02);
+  a23=(a23-a08);
+  a08=(a03*a23);
+  a16=(a16/a20);
+  a20=arg[7]? arg[7][1] : 0;
+  a02=arg[6]? arg[6][4] : 0;
+  a02=(a02*a18);
+  a34=arg[6]? arg[6][5] : 0;
+  a34=(a34*a24);
+  a02=(a02+a34);
+  a34=arg[6]? arg[6][6] : 0;
+  a34=(a34*a30);
+  a02=(a02+a34);
+  a34=arg[6]? arg[6][7] : 0;
+  a34=(a34*a28);
+  a02=(a02+a34);
+  a20=(a20-a02);
+  a02=(a16*a20);
+  a08=(a08+a02);
+  a17=(a17/a25);
+  a25=arg[7]? arg[7][2] : 0;
+  a02=arg[6]? arg[6][8] : 0;
+  a02=(a02*a18);
+  a18=arg[6]? arg[6][9] : 0;
+  a18=(a18*a24);
+  a02=(a02+a18);
+  a18=arg[6]? arg[6][10] : 0;
+  a18=(a18*a30);
+  a02=(a02+a18);
+  a18=arg[6]? arg[6][11] : 0;
+  a18=(a18*a28);
+  a02=(a02+a18);
+  a25=(a25-a02);
+  a02=(a17*a25);
+  a08=(a08+a02);
+  a02=(a19*a08);
+  a18=(a03*a06);
+  a28=(a16*a22);
+  a18=(a18+a28);
+  a28=(a17*a00);
+  a18=(a18+a28);
+  a23=(a06*a23);
+  a20=(a22*a20);
+  a23=(a23+a20);
+  a25=(a00*a25);
+  a23=(a23+a25);
+  a25=(a18*a23);
+  a02=(a02-a25);
+  a25=casadi_sq(a03);
+  a20=casadi_sq(a16);
+  a25=(a25+a20);
+  a20=casadi_sq(a17);
+  a25=(a25+a20);
+  a19=(a25*a19);
+  a20=(a06*a03);
+  a28=(a22*a16);
+  a20=(a20+a28);
+  a28=(a00*a17);
+  a20=(a20+a28);
+  a18=(a18*a20);
+  a19=(a19-a18);
+  a02=(a02/a19);
+  a03=(a03*a02);
+  a20=(a20*a08);
+  a25=(a25*a23);
+  a20=(a20-a25);
+  a20=(a20/a19);
+  a06=(a06*a20);
+  a03=(a03-a06);
+  a16=(a16*a02);
+  a22=(a22*a20);
+  a16=(a16-a22);
+  a22=(a03+a16);
+  a17=(a17*a02);
+  a00=(a00*a20);
+  a17=(a17-a00);
+  a22=(a22+a17);
+  a00=arg[0]? arg[0][4] : 0;
+  a22=(a22+a00);
+  a20=arg[0]? arg[0][5] : 0;
+  a22=(a22+a20);
+  a02=arg[0]? arg[0][6] : 0;
+  a22=(a22+a02);
+  a06=arg[0]? arg[0][7] : 0;
+  a22=(a22+a06);
+  a19=arg[0]? arg[0][8] : 0;
+  a22=(a22+a19);
+  a25=arg[0]? arg[0][9] : 0;
+  a22=(a22+a25);
+  a23=arg[0]? arg[0][10] : 0;
+  a22=(a22+a23);
+  a08=arg[0]? arg[0][11] : 0;
+  a22=(a22+a08);
+  a18=arg[0]? arg[0][12] : 0;
+  a22=(a22+a18);
+  a28=arg[0]? arg[0][13] : 0;
+  a22=(a22+a28);
+  a30=arg[0]? arg[0][14] : 0;
+  a22=(a22+a30);
+  a24=arg[0]? arg[0][15] : 0;
+  a22=(a22+a24);
+  a34=arg[0]? arg[0][16] : 0;
+  a22=(a22+a34);
+  a35=arg[0]? arg[0][17] : 0;
+  a22=(a22+a35);
+  a36=arg[0]? arg[0][18] : 0;
+  a22=(a22+a36);
+  a22=(a22+a21);
+  a22=(a22+a05);
+  a22=(a22+a27);
+  a22=(a22+a07);
+  a22=casadi_fabs(a22);
+  a37=casadi_inf;
+  a22=(a22<a37);
+  a37=(a26&&a22);
+  a37=(a11&&a37);
+  a38=arg[5]? arg[5][4] : 0;
+  a39=(-a38);
+  a39=casadi_fmax(a03,a39);
+  a39=casadi_fmin(a39,a38);
+  a39=(a37?a39:0);
+  if (res[0]!=0) res[0][0]=a39;
+  a39=arg[5]? arg[5][5] : 0;
+  a40=(-a39);
+  a40=casadi_fmax(a16,a40);
+  a40=casadi_fmin(a40,a39);
+  a40=(a37?a40:0);
+  if (res[0]!=0) res[0][1]=a40;
+  a40=arg[5]? arg[5][6] : 0;
+  a41=(-a40);
+  a41=casadi_fmax(a17,a41);
+  a41=casadi_fmin(a41,a40);
+  a41=(a37?a41:0);
+  if (res[0]!=0) res[0][2]=a41;
+  a41=(a11&&a22);
+  a42=(a41?a21:0);
+  a43=(!a41);
+  a15=(a43?a15:0);
+  a42=(a42+a15);
+  if (res[1]!=0) res[1][0]=a42;
+  a42=(a41?a05:0);
+  a32=(a43?a32:0);
+  a42=(a42+a32);
+  if (res[1]!=0) res[1][1]=a42;
+  a42=(a41?a27:0);
+  a14=(a43?a14:0);
+  a42=(a42+a14);
+  if (res[1]!=0) res[1][2]=a42;
+  a41=(a41?a07:0);
+  a43=(a43?a31:0);
+  a41=(a41+a43);
+  if (res[1]!=0) res[1][3]=a41;
+  a41=(a37?a00:0);
+  a43=(!a37);
+  a00=(a43?a00:0);
+  a41=(a41+a00);
+  if (res[1]!=0) res[1][4]=a41;
+  a41=(a37?a20:0);
+  a20=(a43?a20:0);
+  a41=(a41+a20);
+  if (res[1]!=0) res[1][5]=a41;
+  a41=(a37?a02:0);
+  a02=(a43?a02:0);
+  a41=(a41+a02);
+  if (res[1]!=0) res[1][6]=a41;
+  a41=(a37?a06:0);
+  a06=(a43?a06:0);
+  a41=(a41+a06);
+  if (res[1]!=0) res[1][7]=a41;
+  a41=(a37?a19:0);
+  a19=(a43?a19:0);
+  a41=(a41+a19);
+  if (res[1]!=0) res[1][8]=a41;
+  a41=(a37?a25:0);
+  a25=(a43?a25:0);
+  a41=(a41+a25);
+  if (res[1]!=0) res[1][9]=a41;
+  a41=(a37?a23:0);
+  a23=(a43?a23:0);
+  a41=(a41+a23);
+  if (res[1]!=0) res[1][10]=a41;
+  a41=(a37?a08:0);
+  a08=(a43?a08:0);
+  a41=(a41+a08);
+  if (res[1]!=0) res[1][11]=a41;
+  a41=(a37?a18:0);
+  a18=(a43?a18:0);
+  a41=(a41+a18);
+  if (res[1]!=0) res[1][12]=a41;
+  a41=(a37?a28:0);
+  a28=(a43?a28:0);
+  a41=(a41+a28);
+  if (res[1]!=0) res[1][13]=a41;
+  a41=(a37?a30:0);
+  a30=(a43?a30:0);
+  a41=(a41+a30);
+  if (res[1]!=0) res[1][14]=a41;
+  a41=(a37?a24:0);
+  a24=(a43?a24:0);
+  a41=(a41+a24);
+  if (res[1]!=0) res[1][15]=a41;
+  a41=(a37?a34:0);
+  a34=(a43?a34:0);
+  a41=(a41+a34);
+  if (res[1]!=0) res[1][16]=a41;
+  a41=(a37?a35:0);
+  a35=(a43?a35:0);
+  a41=(a41+a35);
+  if (res[1]!=0) res[1][17]=a41;
+  a37=(a37?a36:0);
+  a43=(a43?a36:0);
+  a37=(a37+a43);
+  if (res[1]!=0) res[1][18]=a37;
+  a37=0.;
+  a03=casadi_fabs(a03);
+  a03=(a03-a38);
+  a16=casadi_fabs(a16);
+  a16=(a16-a39);
+  a03=casadi_fmax(a03,a16);
+  a17=casadi_fabs(a17);
+  a17=(a17-a40);
+  a03=casadi_fmax(a03,a17);
+  a37=(a37<a03);
+  a37=(a37?a01:0);
+  a37=(a22?a37:0);
+  a22=(!a22);
+  a01=3.;
+  a22=(a22?a01:0);
+  a37=(a37+a22);
+  a37=(a26?a37:0);
+  a26=(!a26);
+  a26=(a26?a10:0);
+  a37=(a37+a26);
+  a37=(a11?a37:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a37=(a37+a11);
+  if (res[2]!=0) res[2][0]=a37;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a27;
+  if (res[3]!=0) res[3][3]=a07;
+  a12=(a12-a21);
+  if (res[3]!=0) res[3][4]=a12;
+  a13=(a13-a05);
+  if (res[3]!=0) res[3][5]=a13;
+  a29=(a29-a27);
+  if (res[3]!=0) res[3][6]=a29;
+  a33=(a33-a07);
+  if (res[3]!=0) res[3][7]=a33;
+  if (res[3]!=0) res[3][8]=a09;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f30(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_lqr_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_lqr_minmax_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a03=(a03/a15);
+  a01=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a01=(a01-a15);
+  a01=casadi_fabs(a01);
+  a16=(a16/a07);
+  a14=(a14*a16);
+  a22=(a22/a07);
+  a13=(a13*a22);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a01+a14);
+  a01=(a01-a14);
+  a01=casadi_fabs(a01);
+  a13=(a13-a01);
+  a01=2.;
+  a13=(a13/a01);
+  a08=(a08/a24);
+  a10=(a10*a08);
+  a12=(a12/a24);
+  a09=(a09*a12);
+  a10=(a10-a09);
+  a10=casadi_fabs(a10);
+  a09=(a13+a10);
+  a13=(a13-a10);
+  a13=casadi_fabs(a13);
+  a09=(a09-a13);
+  a09=(a09/a01);
+  a26=(a26<=a09);
+  a13=arg[5]? arg[5][3] : 0;
+  a10=1.;
+  a24=3.3333333333333331e-01;
+  a14=casadi_sq(a03);
+  a07=casadi_sq(a06);
+  a14=(a14-a07);
+  a07=casadi_sq(a16);
+  a15=casadi_sq(a22);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a07=casadi_sq(a08);
+  a15=casadi_sq(a12);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a14=casadi_sq(a14);
+  a07=(2.*a03);
+  a07=(a07*a06);
+  a15=(2.*a16);
+  a15=(a15*a22);
+  a07=(a07+a15);
+  a15=(2.*a08);
+  a15=(a15*a12);
+  a07=(a07+a15);
+  a07=casadi_sq(a07);
+  a14=(a14+a07);
+  a14=sqrt(a14);
+  a24=(a24*a14);
+  a24=(a10-a24);
+  a14=casadi_fabs(a24);
+  a24=(a24+a14);
+  a04=(a04*a24);
+  a04=sqrt(a04);
+  a13=(a13<=a04);
+  a26=(a26&&a13);
+  a13=arg[5]? arg[5][4] : 0;
+  a03=(a17*a03);
+  a19=(a19*a03);
+  a06=(a00*a06);
+  a02=(a17*a02);
+  a02=(a06*a02);
+  a19=(a19-a02);
+  a03=(a03/a19);
+  a02=(a13*a03);
+  a24=0.;
+  a14=arg[7]? arg[7][0] : 0;
+  a07=arg[6]? arg[6][0] : 0;
+  a15=arg[2]? arg[2][0] : 0;
+  a27=(a21-a15);
+  a07=(a07*a27);
+  a28=arg[6]? arg[6][1] : 0;
+  a29=arg[2]? arg[2][1] : 0;
+  a30=(a05-a29);
+  a28=(a28*a30);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][2] : 0;
+  a31=arg[0]? arg[0][2] : 0;
+  a32=arg[5]? arg[5][1] : 0;
+  a33=arg[0]? arg[0][0] : 0;
+  a34=(a21-a33);
+  a35=arg[5]? arg[5][0] : 0;
+  a34=(a34/a35);
+  a34=(a34-a31);
+  a34=(a32*a34);
+  a34=(a31+a34);
+  a36=arg[3]? arg[3][0] : 0;
+  a37=(a34-a36);
+  a28=(a28*a37);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][3] : 0;
+  a38=arg[0]? arg[0][3] : 0;
+  a39=arg[0]? arg[0][1] : 0;
+  a40=(a05-a39);
+  a40=(a40/a35);
+  a40=(a40-a38);
+  a32=(a32*a40);
+  a32=(a38+a32);
+  a40=arg[3]? arg[3][1] : 0;
+  a35=(a32-a40);
+  a28=(a28*a35);
+  a07=(a07+a28);
+  a14=(a14-a07);
+  a03=(a03*a14);
+  a16=(a17*a16);
+  a20=(a20*a16);
+  a22=(a00*a22);
+  a18=(a22*a18);
+  a20=(a20-a18);
+  a16=(a16/a20);
+  a18=arg[7]? arg[7][1] : 0;
+  a07=arg[6]? arg[6][4] : 0;
+  a07=(a07*a27);
+  a28=arg[6]? arg[6][5] : 0;
+  a28=(a28*a30);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][6] : 0;
+  a28=(a28*a37);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][7] : 0;
+  a28=(a28*a35);
+  a07=(a07+a28);
+  a18=(a18-a07);
+  a07=(a16*a18);
+  a03=(a03+a07);
+  a17=(a17*a08);
+  a25=(a25*a17);
+  a00=(a00*a12);
+  a23=(a00*a23);
+  a25=(a25-a23);
+  a17=(a17/a25);
+  a23=arg[7]? arg[7][2] : 0;
+  a12=arg[6]? arg[6][8] : 0;
+  a12=(a12*a27);
+  a27=arg[6]? arg[6][9] : 0;
+  a27=(a27*a30);
+  a12=(a12+a27);
+  a27=arg[6]? arg[6][10] : 0;
+  a27=(a27*a37);
+  a12=(a12+a27);
+  a27=arg[6]? arg[6][11] : 0;
+  a27=(a27*a35);
+  a12=(a12+a27);
+  a23=(a23-a12);
+  a12=(a17*a23);
+  a03=(a03+a12);
+  a06=(a06/a19);
+  a19=(a13*a06);
+  a12=(a03*a19);
+  a06=(a06*a14);
+  a22=(a22/a20);
+  a18=(a22*a18);
+  a06=(a06+a18);
+  a00=(a00/a25);
+  a23=(a00*a23);
+  a06=(a06+a23);
+  a23=(a06*a02);
+  a12=(a12-a23);
+  a12=casadi_fabs(a12);
+  a24=(a24<a12);
+  a23=arg[5]? arg[5][5] : 0;
+  a22=(a23*a22);
+  a25=(a02*a22);
+  a16=(a23*a16);
+  a18=(a19*a16);
+  a25=(a25-a18);
+  a25=casadi_fabs(a25);
+  a18=arg[5]? arg[5][6] : 0;
+  a17=(a18*a17);
+  a20=(a17*a22);
+  a00=(a18*a00);
+  a14=(a00*a16);
+  a20=(a20-a14);
+  a20=casadi_fabs(a20);
+  a25=(a25+a20);
+  a20=(a12*a25);
+  a20=(a24?a20:0);
+  a14=(a03*a22);
+  a27=(a06*a16);
+  a14=(a14-a27);
+  a14=casadi_fabs(a14);
+  a27=(a16*a19);
+  a35=(a22*a02);
+  a27=(a27-a35);
+  a27=casadi_fabs(a27);
+  a35=(a17*a19);
+  a37=(a00*a02);
+  a35=(a35-a37);
+  a35=casadi_fabs(a35);
+  a27=(a27+a35);
+  a27=(a24?a27:0);
+  a35=(!a24);
+  a37=(a35?a10:0);
+  a27=(a27+a37);
+  a37=(a14*a27);
+  a20=(a20<a37);
+  a14=(a20?a14:0);
+  a37=(!a20);
+  a12=(a24?a12:0);
+  a12=(a37?a12:0);
+  a14=(a14+a12);
+  a12=(a02*a00);
+  a30=(a19*a17);
+  a12=(a12-a30);
+  a12=casadi_fabs(a12);
+  a30=(a16*a00);
+  a08=(a22*a17);
+  a30=(a30-a08);
+  a30=casadi_fabs(a30);
+  a12=(a12+a30);
+  a30=(a14*a12);
+  a08=(a03*a00);
+  a07=(a06*a17);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a25=(a20?a25:0);
+  a27=(a37?a27:0);
+  a25=(a25+a27);
+  a27=(a08*a25);
+  a30=(a30<a27);
+  a27=(a30?a00:0);
+  a07=(!a30);
+  a28=(a20?a22:0);
+  a41=(a24?a19:0);
+  a42=(a35?a19:0);
+  a41=(a41+a42);
+  a41=(a37?a41:0);
+  a28=(a28+a41);
+  a28=(a07?a28:0);
+  a27=(a27+a28);
+  a28=(a03*a27);
+  a41=(a30?a17:0);
+  a20=(a20?a16:0);
+  a24=(a24?a02:0);
+  a35=(a35?a02:0);
+  a24=(a24+a35);
+  a37=(a37?a24:0);
+  a20=(a20+a37);
+  a20=(a07?a20:0);
+  a41=(a41+a20);
+  a20=(a06*a41);
+  a28=(a28-a20);
+  a28=casadi_sign(a28);
+  a20=(a27*a28);
+  a37=(a02*a20);
+  a28=(a41*a28);
+  a24=(a19*a28);
+  a37=(a37-a24);
+  a24=casadi_sq(a37);
+  a35=9.9999999999999992e-25;
+  a42=casadi_sq(a02);
+  a43=casadi_sq(a19);
+  a42=(a42+a43);
+  a42=(a35*a42);
+  a43=casadi_sq(a27);
+  a44=casadi_sq(a41);
+  a43=(a43+a44);
+  a42=(a42*a43);
+  a24=(a24<=a42);
+  a42=(a02*a41);
+  a44=(a19*a27);
+  a42=(a42+a44);
+  a44=casadi_sign(a42);
+  a45=(!a24);
+  a08=(a30?a08:0);
+  a14=(a07?a14:0);
+  a08=(a08+a14);
+  a30=(a30?a12:0);
+  a07=(a07?a25:0);
+  a30=(a30+a07);
+  a08=(a08/a30);
+  a37=casadi_sign(a37);
+  a37=(a08*a37);
+  a02=(a37*a02);
+  a02=(a45?a02:0);
+  a30=(a16*a20);
+  a07=(a22*a28);
+  a30=(a30-a07);
+  a07=casadi_sq(a30);
+  a25=casadi_sq(a16);
+  a12=casadi_sq(a22);
+  a25=(a25+a12);
+  a25=(a35*a25);
+  a25=(a25*a43);
+  a07=(a07<=a25);
+  a25=(!a07);
+  a30=casadi_sign(a30);
+  a30=(a08*a30);
+  a12=(a30*a16);
+  a12=(a25?a12:0);
+  a02=(a02+a12);
+  a20=(a17*a20);
+  a28=(a00*a28);
+  a20=(a20-a28);
+  a28=casadi_sq(a20);
+  a12=casadi_sq(a17);
+  a14=casadi_sq(a00);
+  a12=(a12+a14);
+  a35=(a35*a12);
+  a35=(a35*a43);
+  a28=(a28<=a35);
+  a35=(!a28);
+  a20=casadi_sign(a20);
+  a20=(a08*a20);
+  a43=(a20*a17);
+  a43=(a35?a43:0);
+  a02=(a02+a43);
+  a03=(a03-a02);
+  a03=(a03*a41);
+  a19=(a37*a19);
+  a19=(-a19);
+  a19=(a45?a19:0);
+  a02=(a30*a22);
+  a02=(-a02);
+  a02=(a25?a02:0);
+  a19=(a19+a02);
+  a02=(a20*a00);
+  a02=(-a02);
+  a02=(a35?a02:0);
+  a19=(a19+a02);
+  a06=(a06+a19);
+  a06=(a06*a27);
+  a03=(a03+a06);
+  a42=casadi_fabs(a42);
+  a42=(a24?a42:0);
+  a16=(a16*a41);
+  a22=(a22*a27);
+  a16=(a16+a22);
+  a22=casadi_fabs(a16);
+  a22=(a07?a22:0);
+  a42=(a42+a22);
+  a17=(a17*a41);
+  a00=(a00*a27);
+  a17=(a17+a00);
+  a00=casadi_fabs(a17);
+  a00=(a28?a00:0);
+  a42=(a42+a00);
+  a03=(a03/a42);
+  a44=(a44*a03);
+  a24=(a24?a44:0);
+  a37=(a45?a37:0);
+  a45=(a45?a37:0);
+  a24=(a24+a45);
+  a24=(a13*a24);
+  a16=casadi_sign(a16);
+  a16=(a16*a03);
+  a07=(a07?a16:0);
+  a30=(a25?a30:0);
+  a25=(a25?a30:0);
+  a07=(a07+a25);
+  a07=(a23*a07);
+  a25=(a24+a07);
+  a17=casadi_sign(a17);
+  a17=(a17*a03);
+  a28=(a28?a17:0);
+  a20=(a35?a20:0);
+  a35=(a35?a20:0);
+  a28=(a28+a35);
+  a28=(a18*a28);
+  a25=(a25+a28);
+  a35=arg[0]? arg[0][4] : 0;
+  a25=(a25+a35);
+  a20=arg[0]? arg[0][5] : 0;
+  a25=(a25+a20);
+  a17=arg[0]? arg[0][6] : 0;
+  a25=(a25+a17);
+  a03=arg[0]? arg[0][7] : 0;
+  a25=(a25+a03);
+  a30=arg[0]? arg[0][8] : 0;
+  a25=(a25+a30);
+  a16=arg[0]? arg[0][9] : 0;
+  a25=(a25+a16);
+  a45=arg[0]? arg[0][10] : 0;
+  a25=(a25+a45);
+  a37=arg[0]? arg[0][11] : 0;
+  a25=(a25+a37);
+  a44=arg[0]? arg[0][12] : 0;
+  a25=(a25+a44);
+  a42=arg[0]? arg[0][13] : 0;
+  a25=(a25+a42);
+  a00=arg[0]? arg[0][14] : 0;
+  a25=(a25+a00);
+  a27=arg[0]? arg[0][15] : 0;
+  a25=(a25+a27);
+  a41=arg[0]? arg[0][16] : 0;
+  a25=(a25+a41);
+  a22=arg[0]? arg[0][17] : 0;
+  a25=(a25+a22);
+  a06=arg[0]? arg[0][18] : 0;
+  a25=(a25+a06);
+  a25=(a25+a21);
+  a25=(a25+a05);
+  a25=(a25+a34);
+  a25=(a25+a32);
+  a25=casadi_fabs(a25);
+  a19=casadi_inf;
+  a25=(a25<a19);
+  a19=(a26&&a25);
+  a19=(a11&&a19);
+  a02=(-a13);
+  a24=casadi_fmax(a24,a02);
+  a24=casadi_fmin(a24,a13);
+  a24=(a19?a24:0);
+  if (res[0]!=0) res[0][0]=a24;
+  a24=(-a23);
+  a07=casadi_fmax(a07,a24);
+  a07=casadi_fmin(a07,a23);
+  a07=(a19?a07:0);
+  if (res[0]!=0) res[0][1]=a07;
+  a07=(-a18);
+  a28=casadi_fmax(a28,a07);
+  a28=casadi_fmin(a28,a18);
+  a28=(a19?a28:0);
+  if (res[0]!=0) res[0][2]=a28;
+  a28=(a11&&a25);
+  a18=(a28?a21:0);
+  a07=(!a28);
+  a33=(a07?a33:0);
+  a18=(a18+a33);
+  if (res[1]!=0) res[1][0]=a18;
+  a18=(a28?a05:0);
+  a39=(a07?a39:0);
+  a18=(a18+a39);
+  if (res[1]!=0) res[1][1]=a18;
+  a18=(a28?a34:0);
+  a31=(a07?a31:0);
+  a18=(a18+a31);
+  if (res[1]!=0) res[1][2]=a18;
+  a28=(a28?a32:0);
+  a07=(a07?a38:0);
+  a28=(a28+a07);
+  if (res[1]!=0) res[1][3]=a28;
+  a28=(a19?a35:0);
+  a07=(!a19);
+  a35=(a07?a35:0);
+  a28=(a28+a35);
+  if (res[1]!=0) res[1][4]=a28;
+  a28=(a19?a20:0);
+  a20=(a07?a20:0);
+  a28=(a28+a20);
+  if (res[1]!=0) res[1][5]=a28;
+  a28=(a19?a17:0);
+  a17=(a07?a17:0);
+  a28=(a28+a17);
+  if (res[1]!=0) res[1][6]=a28;
+  a28=(a19?a03:0);
+  a03=(a07?a03:0);
+  a28=(a28+a03);
+  if (res[1]!=0) res[1][7]=a28;
+  a28=(a19?a30:0);
+  a30=(a07?a30:0);
+  a28=(a28+a30);
+  if (res[1]!=0) res[1][8]=a28;
+  a28=(a19?a16:0);
+  a16=(a07?a16:0);
+  a28=(a28+a16);
+  if (res[1]!=0) res[1][9]=a28;
+  a28=(a19?a45:0);
+  a45=(a07?a45:0);
+  a28=(a28+a45);
+  if (res[1]!=0) res[1][10]=a28;
+  a28=(a19?a37:0);
+  a37=(a07?a37:0);
+  a28=(a28+a37);
+  if (res[1]!=0) res[1][11]=a28;
+  a28=(a19?a44:0);
+  a44=(a07?a44:0);
+  a28=(a28+a44);
+  if (res[1]!=0) res[1][12]=a28;
+  a28=(a19?a42:0);
+  a42=(a07?a42:0);
+  a28=(a28+a42);
+  if (res[1]!=0) res[1][13]=a28;
+  a28=(a19?a00:0);
+  a00=(a07?a00:0);
+  a28=(a28+a00);
+  if (res[1]!=0) res[1][14]=a28;
+  a28=(a19?a27:0);
+  a27=(a07?a27:0);
+  a28=(a28+a27);
+  if (res[1]!=0) res[1][15]=a28;
+  a28=(a19?a41:0);
+  a41=(a07?a41:0);
+  a28=(a28+a41);
+  if (res[1]!=0) res[1][16]=a28;
+  a28=(a19?a22:0);
+  a22=(a07?a22:0);
+  a28=(a28+a22);
+  if (res[1]!=0) res[1][17]=a28;
+  a19=(a19?a06:0);
+  a07=(a07?a06:0);
+  a19=(a19+a07);
+  if (res[1]!=0) res[1][18]=a19;
+  a08=(a10<a08);
+  a08=(a08?a01:0);
+  a08=(a25?a08:0);
+  a25=(!a25);
+  a01=3.;
+  a25=(a25?a01:0);
+  a08=(a08+a25);
+  a08=(a26?a08:0);
+  a26=(!a26);
+  a26=(a26?a10:0);
+  a08=(a08+a26);
+  a08=(a11?a08:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a08=(a08+a11);
+  if (res[2]!=0) res[2][0]=a08;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a34;
+  if (res[3]!=0) res[3][3]=a32;
+  a15=(a15-a21);
+  if (res[3]!=0) res[3][4]=a15;
+  a29=(a29-a05);
+  if (res[3]!=0) res[3][5]=a29;
+  a36=(a36-a34);
+  if (res[3]!=0) res[3][6]=a36;
+  a40=(a40-a32);
+  if (res[3]!=0) res[3][7]=a40;
+  if (res[3]!=0) res[3][8]=a09;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f31(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_minmax_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_lqr_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_lqr_preload_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a03=(a03/a15);
+  a01=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a01=(a01-a15);
+  a01=casadi_fabs(a01);
+  a16=(a16/a07);
+  a14=(a14*a16);
+  a22=(a22/a07);
+  a13=(a13*a22);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a01+a14);
+  a01=(a01-a14);
+  a01=casadi_fabs(a01);
+  a13=(a13-a01);
+  a01=2.;
+  a13=(a13/a01);
+  a08=(a08/a24);
+  a10=(a10*a08);
+  a12=(a12/a24);
+  a09=(a09*a12);
+  a10=(a10-a09);
+  a10=casadi_fabs(a10);
+  a09=(a13+a10);
+  a13=(a13-a10);
+  a13=casadi_fabs(a13);
+  a09=(a09-a13);
+  a09=(a09/a01);
+  a26=(a26<=a09);
+  a13=arg[5]? arg[5][3] : 0;
+  a10=1.;
+  a24=3.3333333333333331e-01;
+  a14=casadi_sq(a03);
+  a07=casadi_sq(a06);
+  a14=(a14-a07);
+  a07=casadi_sq(a16);
+  a15=casadi_sq(a22);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a07=casadi_sq(a08);
+  a15=casadi_sq(a12);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a14=casadi_sq(a14);
+  a07=(2.*a03);
+  a07=(a07*a06);
+  a15=(2.*a16);
+  a15=(a15*a22);
+  a07=(a07+a15);
+  a15=(2.*a08);
+  a15=(a15*a12);
+  a07=(a07+a15);
+  a07=casadi_sq(a07);
+  a14=(a14+a07);
+  a14=sqrt(a14);
+  a24=(a24*a14);
+  a24=(a10-a24);
+  a14=casadi_fabs(a24);
+  a24=(a24+a14);
+  a04=(a04*a24);
+  a04=sqrt(a04);
+  a13=(a13<=a04);
+  a26=(a26&&a13);
+  a03=(a17*a03);
+  a19=(a19*a03);
+  a06=(a00*a06);
+  a02=(a17*a02);
+  a02=(a06*a02);
+  a19=(a19-a02);
+  a03=(a03/a19);
+  a16=(a17*a16);
+  a20=(a20*a16);
+  a22=(a00*a22);
+  a18=(a22*a18);
+  a20=(a20-a18);
+  a16=(a16/a20);
+  a17=(a17*a08);
+  a25=(a25*a17);
+  a12=(a00*a12);
+  a23=(a12*a23);
+  a25=(a25-a23);
+  a17=(a17/a25);
+  a06=(a06/a19);
+  a19=(-a06);
+  a22=(a22/a20);
+  a20=(-a22);
+  a12=(a12/a25);
+  a25=(-a12);
+  a23=arg[7]? arg[7][0] : 0;
+  a08=arg[6]? arg[6][0] : 0;
+  a18=arg[2]? arg[2][0] : 0;
+  a02=(a21-a18);
+  a08=(a08*a02);
+  a13=arg[6]? arg[6][1] : 0;
+  a24=arg[2]? arg[2][1] : 0;
+  a14=(a05-a24);
+  a13=(a13*a14);
+  a08=(a08+a13);
+  a13=arg[6]? arg[6][2] : 0;
+  a07=arg[0]? arg[0][2] : 0;
+  a15=arg[5]? arg[5][1] : 0;
+  a27=arg[0]? arg[0][0] : 0;
+  a28=(a21-a27);
+  a29=arg[5]? arg[5][0] : 0;
+  a28=(a28/a29);
+  a28=(a28-a07);
+  a28=(a15*a28);
+  a28=(a07+a28);
+  a30=arg[3]? arg[3][0] : 0;
+  a31=(a28-a30);
+  a13=(a13*a31);
+  a08=(a08+a13);
+  a13=arg[6]? arg[6][3] : 0;
+  a32=arg[0]? arg[0][3] : 0;
+  a33=arg[0]? arg[0][1] : 0;
+  a34=(a05-a33);
+  a34=(a34/a29);
+  a34=(a34-a32);
+  a15=(a15*a34);
+  a15=(a32+a15);
+  a34=arg[3]? arg[3][1] : 0;
+  a29=(a15-a34);
+  a13=(a13*a29);
+  a08=(a08+a13);
+  a23=(a23-a08);
+  a08=(a03*a23);
+  a13=arg[7]? arg[7][1] : 0;
+  a35=arg[6]? arg[6][4] : 0;
+  a35=(a35*a02);
+  a36=arg[6]? arg[6][5] : 0;
+  a36=(a36*a14);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][6] : 0;
+  a36=(a36*a31);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][7] : 0;
+  a36=(a36*a29);
+  a35=(a35+a36);
+  a13=(a13-a35);
+  a35=(a16*a13);
+  a08=(a08+a35);
+  a35=arg[7]? arg[7][2] : 0;
+  a36=arg[6]? arg[6][8] : 0;
+  a36=(a36*a02);
+  a02=arg[6]? arg[6][9] : 0;
+  a02=(a02*a14);
+  a36=(a36+a02);
+  a02=arg[6]? arg[6][10] : 0;
+  a02=(a02*a31);
+  a36=(a36+a02);
+  a02=arg[6]? arg[6][11] : 0;
+  a02=(a02*a29);
+  a36=(a36+a02);
+  a35=(a35-a36);
+  a36=(a17*a35);
+  a08=(a08+a36);
+  a06=(a06*a23);
+  a22=(a22*a13);
+  a06=(a06+a22);
+  a12=(a12*a35);
+  a06=(a06+a12);
+  a06=(-a06);
+  a12=arg[5]? arg[5][4] : 0;
+  a35=arg[5]? arg[5][5] : 0;
+  a22=arg[5]? arg[5][6] : 0;
+  arg[8]=w+0;
+  arg[9]=w+6;
+  arg[10] = arg[5]? arg[5] + 4 : 0;
+  arg[11] = arg[5]? arg[5] + 7 : 0;
+  arg[12] = arg[5]? arg[5] + 10 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a03;
+  w[1] = a16;
+  w[2] = a17;
+  w[3] = a19;
+  w[4] = a20;
+  w[5] = a25;
+  w[6] = a08;
+  w[7] = a06;
+  if (casadi_f16(arg+8, res+4, iw, w+21, 0)) return 1;
+  a03 = w[17];
+  a16 = w[18];
+  a17 = w[19];
+  a19 = w[20];
+  a20=(a03+a16);
+  a20=(a20+a17);
+  a25=arg[0]? arg[0][4] : 0;
+  a20=(a20+a25);
+  a08=arg[0]? arg[0][5] : 0;
+  a20=(a20+a08);
+  a06=arg[0]? arg[0][6] : 0;
+  a20=(a20+a06);
+  a13=arg[0]? arg[0][7] : 0;
+  a20=(a20+a13);
+  a23=arg[0]? arg[0][8] : 0;
+  a20=(a20+a23);
+  a36=arg[0]? arg[0][9] : 0;
+  a20=(a20+a36);
+  a02=arg[0]? arg[0][10] : 0;
+  a20=(a20+a02);
+  a29=arg[0]? arg[0][11] : 0;
+  a20=(a20+a29);
+  a31=arg[0]? arg[0][12] : 0;
+  a20=(a20+a31);
+  a14=arg[0]? arg[0][13] : 0;
+  a20=(a20+a14);
+  a37=arg[0]? arg[0][14] : 0;
+  a20=(a20+a37);
+  a38=arg[0]? arg[0][15] : 0;
+  a20=(a20+a38);
+  a39=arg[0]? arg[0][16] : 0;
+  a20=(a20+a39);
+  a40=arg[0]? arg[0][17] : 0;
+  a20=(a20+a40);
+  a41=arg[0]? arg[0][18] : 0;
+  a20=(a20+a41);
+  a20=(a20+a21);
+  a20=(a20+a05);
+  a20=(a20+a28);
+  a20=(a20+a15);
+  a20=casadi_fabs(a20);
+  a42=casadi_inf;
+  a20=(a20<a42);
+  a42=(a26&&a20);
+  a42=(a11&&a42);
+  a43=(-a12);
+  a03=casadi_fmax(a03,a43);
+  a03=casadi_fmin(a03,a12);
+  a03=(a42?a03:0);
+  if (res[0]!=0) res[0][0]=a03;
+  a03=(-a35);
+  a16=casadi_fmax(a16,a03);
+  a16=casadi_fmin(a16,a35);
+  a16=(a42?a16:0);
+  if (res[0]!=0) res[0][1]=a16;
+  a16=(-a22);
+  a17=casadi_fmax(a17,a16);
+  a17=casadi_fmin(a17,a22);
+  a17=(a42?a17:0);
+  if (res[0]!=0) res[0][2]=a17;
+  a17=(a11&&a20);
+  a22=(a17?a21:0);
+  a16=(!a17);
+  a27=(a16?a27:0);
+  a22=(a22+a27);
+  if (res[1]!=0) res[1][0]=a22;
+  a22=(a17?a05:0);
+  a33=(a16?a33:0);
+  a22=(a22+a33);
+  if (res[1]!=0) res[1][1]=a22;
+  a22=(a17?a28:0);
+  a07=(a16?a07:0);
+  a22=(a22+a07);
+  if (res[1]!=0) res[1][2]=a22;
+  a17=(a17?a15:0);
+  a16=(a16?a32:0);
+  a17=(a17+a16);
+  if (res[1]!=0) res[1][3]=a17;
+  a17=(a42?a25:0);
+  a16=(!a42);
+  a25=(a16?a25:0);
+  a17=(a17+a25);
+  if (res[1]!=0) res[1][4]=a17;
+  a17=(a42?a08:0);
+  a08=(a16?a08:0);
+  a17=(a17+a08);
+  if (res[1]!=0) res[1][5]=a17;
+  a17=(a42?a06:0);
+  a06=(a16?a06:0);
+  a17=(a17+a06);
+  if (res[1]!=0) res[1][6]=a17;
+  a17=(a42?a13:0);
+  a13=(a16?a13:0);
+  a17=(a17+a13);
+  if (res[1]!=0) res[1][7]=a17;
+  a17=(a42?a23:0);
+  a23=(a16?a23:0);
+  a17=(a17+a23);
+  if (res[1]!=0) res[1][8]=a17;
+  a17=(a42?a36:0);
+  a36=(a16?a36:0);
+  a17=(a17+a36);
+  if (res[1]!=0) res[1][9]=a17;
+  a17=(a42?a02:0);
+  a02=(a16?a02:0);
+  a17=(a17+a02);
+  if (res[1]!=0) res[1][10]=a17;
+  a17=(a42?a29:0);
+  a29=(a16?a29:0);
+  a17=(a17+a29);
+  if (res[1]!=0) res[1][11]=a17;
+  a17=(a42?a31:0);
+  a31=(a16?a31:0);
+  a17=(a17+a31);
+  if (res[1]!=0) res[1][12]=a17;
+  a17=(a42?a14:0);
+  a14=(a16?a14:0);
+  a17=(a17+a14);
+  if (res[1]!=0) res[1][13]=a17;
+  a17=(a42?a37:0);
+  a37=(a16?a37:0);
+  a17=(a17+a37);
+  if (res[1]!=0) res[1][14]=a17;
+  a17=(a42?a38:0);
+  a38=(a16?a38:0);
+  a17=(a17+a38);
+  if (res[1]!=0) res[1][15]=a17;
+  a17=(a42?a39:0);
+  a39=(a16?a39:0);
+  a17=(a17+a39);
+  if (res[1]!=0) res[1][16]=a17;
+  a17=(a42?a40:0);
+  a40=(a16?a40:0);
+  a17=(a17+a40);
+  if (res[1]!=0) res[1][17]=a17;
+  a42=(a42?a41:0);
+  a16=(a16?a41:0);
+  a42=(a42+a16);
+  if (res[1]!=0) res[1][18]=a42;
+  a42=(a19==a01);
+  a01=(a42?a01:0);
+  a42=(!a42);
+  a19=(a19==a10);
+  a16=4.;
+  a19=(a19?a16:0);
+  a42=(a42?a19:0);
+  a01=(a01+a42);
+  a01=(a20?a01:0);
+  a20=(!a20);
+  a42=3.;
+  a20=(a20?a42:0);
+  a01=(a01+a20);
+  a01=(a26?a01:0);
+  a26=(!a26);
+  a26=(a26?a10:0);
+  a01=(a01+a26);
+  a01=(a11?a01:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a01=(a01+a11);
+  if (res[2]!=0) res[2][0]=a01;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a28;
+  if (res[3]!=0) res[3][3]=a15;
+  a18=(a18-a21);
+  if (res[3]!=0) res[3][4]=a18;
+  a24=(a24-a05);
+  if (res[3]!=0) res[3][5]=a24;
+  a30=(a30-a28);
+  if (res[3]!=0) res[3][6]=a30;
+  a34=(a34-a15);
+  if (res[3]!=0) res[3][7]=a34;
+  if (res[3]!=0) res[3][8]=a09;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f32(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_preload_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_lqr_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -17024,7 +21696,7 @@ static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f27(arg, res, iw, w, mem);
+  return casadi_f33(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_plant_xedd_checkout(void) {
@@ -17072,7 +21744,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_plant_xedd_sparsity_in(casadi_i
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s2;
-    case 3: return casadi_s14;
+    case 3: return casadi_s15;
     default: return 0;
   }
 }
@@ -17101,7 +21773,7 @@ CASADI_SYMBOL_EXPORT int shang2010_plant_xedd_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* shang2010_plant_step:(x[4],tau_a[3],plant[21],h)->(x_next[4]) */
-static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -18768,7 +23440,7 @@ static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f28(arg, res, iw, w, mem);
+  return casadi_f34(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_plant_step_checkout(void) {
@@ -18815,7 +23487,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_plant_step_sparsity_in(casadi_i
   switch (i) {
     case 0: return casadi_s3;
     case 1: return casadi_s2;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     case 3: return casadi_s9;
     default: return 0;
   }
@@ -18845,7 +23517,7 @@ CASADI_SYMBOL_EXPORT int shang2010_plant_step_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* shang2010_measure:(xe[2],plant[21])->(qa[3]) */
-static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15;
   a00=0.;
@@ -18945,7 +23617,7 @@ static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f29(arg, res, iw, w, mem);
+  return casadi_f35(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_measure_checkout(void) {
@@ -18989,7 +23661,7 @@ CASADI_SYMBOL_EXPORT const char* shang2010_measure_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s14;
+    case 1: return casadi_s15;
     default: return 0;
   }
 }
@@ -19018,7 +23690,7 @@ CASADI_SYMBOL_EXPORT int shang2010_measure_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* shang2010_na_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -19035,7 +23707,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19060,19 +23732,19 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19085,7 +23757,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f30(arg, res, iw, w, mem);
+  return casadi_f36(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_closed_loop_checkout(void) {
@@ -19130,17 +23802,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_na_closed_loop_name_out(casadi_int i)
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19162,7 +23834,7 @@ CASADI_SYMBOL_EXPORT int shang2010_na_closed_loop_work_bytes(casadi_int *sz_arg,
 }
 
 /* shang2010_na_minmax_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -19179,7 +23851,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19204,19 +23876,19 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19229,7 +23901,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f31(arg, res, iw, w, mem);
+  return casadi_f37(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_minmax_closed_loop_checkout(void) {
@@ -19274,17 +23946,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_na_minmax_closed_loop_name_out(casadi
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19306,7 +23978,7 @@ CASADI_SYMBOL_EXPORT int shang2010_na_minmax_closed_loop_work_bytes(casadi_int *
 }
 
 /* shang2010_na_preload_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+256, *w07=w+260, *w08=w+263, *w09=w+269, *w10=w+271, *w11=w+273, *w13=w+275, *w14=w+278, w15, w16;
   casadi_real w17, *w18=w+297, *w19=w+301;
@@ -19323,7 +23995,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19348,19 +24020,19 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19373,7 +24045,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f32(arg, res, iw, w, mem);
+  return casadi_f38(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_preload_closed_loop_checkout(void) {
@@ -19418,17 +24090,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_na_preload_closed_loop_name_out(casad
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19450,7 +24122,7 @@ CASADI_SYMBOL_EXPORT int shang2010_na_preload_closed_loop_work_bytes(casadi_int 
 }
 
 /* shang2010_na_proj_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -19467,7 +24139,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19492,19 +24164,19 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19517,7 +24189,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f33(arg, res, iw, w, mem);
+  return casadi_f39(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_proj_closed_loop_checkout(void) {
@@ -19562,17 +24234,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_na_proj_closed_loop_name_out(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19594,7 +24266,7 @@ CASADI_SYMBOL_EXPORT int shang2010_na_proj_closed_loop_work_bytes(casadi_int *sz
 }
 
 /* shang2010_na_proj_minmax_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -19611,7 +24283,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19636,19 +24308,19 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19661,7 +24333,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f34(arg, res, iw, w, mem);
+  return casadi_f40(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_proj_minmax_closed_loop_checkout(void) {
@@ -19706,17 +24378,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_na_proj_minmax_closed_loop_name_out(c
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19738,7 +24410,7 @@ CASADI_SYMBOL_EXPORT int shang2010_na_proj_minmax_closed_loop_work_bytes(casadi_
 }
 
 /* shang2010_na_proj_preload_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+257, *w07=w+261, *w08=w+264, *w09=w+270, *w10=w+272, *w11=w+274, *w13=w+276, *w14=w+279, w15, w16;
   casadi_real w17, *w18=w+298, *w19=w+302;
@@ -19755,7 +24427,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19780,19 +24452,19 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19805,7 +24477,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f35(arg, res, iw, w, mem);
+  return casadi_f41(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_na_proj_preload_closed_loop_checkout(void) {
@@ -19850,17 +24522,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_na_proj_preload_closed_loop_name_out(
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19882,7 +24554,7 @@ CASADI_SYMBOL_EXPORT int shang2010_na_proj_preload_closed_loop_work_bytes(casadi
 }
 
 /* shang2010_apd_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -19899,7 +24571,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19924,19 +24596,19 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19949,7 +24621,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f36(arg, res, iw, w, mem);
+  return casadi_f42(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_apd_closed_loop_checkout(void) {
@@ -19994,17 +24666,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_apd_closed_loop_name_out(casadi_int i
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20026,7 +24698,7 @@ CASADI_SYMBOL_EXPORT int shang2010_apd_closed_loop_work_bytes(casadi_int *sz_arg
 }
 
 /* shang2010_apd_minmax_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -20043,7 +24715,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20068,19 +24740,19 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20093,7 +24765,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f37(arg, res, iw, w, mem);
+  return casadi_f43(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_apd_minmax_closed_loop_checkout(void) {
@@ -20138,17 +24810,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_apd_minmax_closed_loop_name_out(casad
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20170,7 +24842,7 @@ CASADI_SYMBOL_EXPORT int shang2010_apd_minmax_closed_loop_work_bytes(casadi_int 
 }
 
 /* shang2010_apd_preload_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+247, *w07=w+251, *w08=w+254, *w09=w+260, *w10=w+262, *w11=w+264, *w13=w+266, *w14=w+269, w15, w16;
   casadi_real w17, *w18=w+288, *w19=w+292;
@@ -20187,7 +24859,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20212,19 +24884,19 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20237,7 +24909,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f38(arg, res, iw, w, mem);
+  return casadi_f44(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_apd_preload_closed_loop_checkout(void) {
@@ -20282,17 +24954,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_apd_preload_closed_loop_name_out(casa
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20313,8 +24985,884 @@ CASADI_SYMBOL_EXPORT int shang2010_apd_preload_closed_loop_work_bytes(casadi_int
   return 0;
 }
 
+/* shang2010_ctc_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f45(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
+  casadi_real w17, *w18=w+137, *w19=w+141;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f27(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f45(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_ctc_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 156;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 156*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_ctc_minmax_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f46(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
+  casadi_real w17, *w18=w+137, *w19=w+141;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f46(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_ctc_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 156;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 156*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_ctc_preload_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f47(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+243, *w07=w+247, *w08=w+250, *w09=w+256, *w10=w+258, *w11=w+260, *w13=w+262, *w14=w+265, w15, w16;
+  casadi_real w17, *w18=w+284, *w19=w+288;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f47(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_ctc_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_ctc_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_ctc_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_ctc_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 303;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 303*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_lqr_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f48(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w15=w+103, *w16=w+106, w17, w18, w19, *w20=w+125, *w21=w+129;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f30(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f48(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_lqr_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 144;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 144*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_lqr_minmax_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f49(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w15=w+103, *w16=w+106, w17, w18, w19, *w20=w+125, *w21=w+129;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f31(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f49(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_lqr_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 144;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 144*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_lqr_preload_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f50(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+215, *w07=w+219, *w15=w+222, *w16=w+225, w17, w18, w19, *w20=w+244, *w21=w+248;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f32(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f50(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_lqr_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_lqr_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_lqr_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_lqr_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 263;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 263*sizeof(casadi_real);
+  return 0;
+}
+
 /* shang2010_path_coefficients:(p[2],dp[2],ddp[2],theta[15],tau_max[3])->(a[2],b[2],S[6],v1[3],N_min_norm[6],h_min_norm[3],N_min_max[6],h_min_max[3],sing[2]) */
-static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f51(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -20908,7 +26456,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_coefficients(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f39(arg, res, iw, w, mem);
+  return casadi_f51(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_coefficients_checkout(void) {
@@ -21003,7 +26551,7 @@ CASADI_SYMBOL_EXPORT int shang2010_path_coefficients_work_bytes(casadi_int *sz_a
 }
 
 /* shang2010_path_mvc:(stage[27],params[16])->(x_mvc) */
-static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f52(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -22855,7 +28403,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_mvc(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f40(arg, res, iw, w, mem);
+  return casadi_f52(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_mvc_checkout(void) {
@@ -22898,8 +28446,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_path_mvc_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_path_mvc_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s18;
-    case 1: return casadi_s19;
+    case 0: return casadi_s20;
+    case 1: return casadi_s21;
     default: return 0;
   }
 }
@@ -22928,7 +28476,7 @@ CASADI_SYMBOL_EXPORT int shang2010_path_mvc_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* shang2010_path_backward:(x_next_max,pair[55],params[16])->(x_max,y) */
-static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f53(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -25509,7 +31057,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_backward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f41(arg, res, iw, w, mem);
+  return casadi_f53(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_backward_checkout(void) {
@@ -25555,8 +31103,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_path_backward_name_out(casadi_int i) 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_path_backward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s9;
-    case 1: return casadi_s20;
-    case 2: return casadi_s19;
+    case 1: return casadi_s22;
+    case 2: return casadi_s21;
     default: return 0;
   }
 }
@@ -25586,7 +31134,7 @@ CASADI_SYMBOL_EXPORT int shang2010_path_backward_work_bytes(casadi_int *sz_arg, 
 }
 
 /* shang2010_path_forward:(x,input[56],params[16])->(x_next,y[6]) */
-static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f54(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -26346,7 +31894,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f42(arg, res, iw, w, mem);
+  return casadi_f54(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_forward_checkout(void) {
@@ -26392,8 +31940,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_path_forward_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_path_forward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s9;
-    case 1: return casadi_s21;
-    case 2: return casadi_s19;
+    case 1: return casadi_s23;
+    case 2: return casadi_s21;
     default: return 0;
   }
 }
@@ -26423,7 +31971,7 @@ CASADI_SYMBOL_EXPORT int shang2010_path_forward_work_bytes(casadi_int *sz_arg, c
 }
 
 /* shang2010_path_torques:(stage[27],sd,sdd,params[16],tau_max[3])->(u[2],tau_min_norm[3],tau_min_max[3],min_max_ratio) */
-static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f55(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27;
@@ -26757,7 +32305,7 @@ static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f43(arg, res, iw, w, mem);
+  return casadi_f55(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_path_torques_checkout(void) {
@@ -26806,10 +32354,10 @@ CASADI_SYMBOL_EXPORT const char* shang2010_path_torques_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_path_torques_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s18;
+    case 0: return casadi_s20;
     case 1: return casadi_s9;
     case 2: return casadi_s9;
-    case 3: return casadi_s19;
+    case 3: return casadi_s21;
     case 4: return casadi_s2;
     default: return 0;
   }
@@ -26838,6 +32386,5899 @@ CASADI_SYMBOL_EXPORT int shang2010_path_torques_work_bytes(casadi_int *sz_arg, c
   if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_forward_dynamics_jacobians:(xe[2],xed[2],tau_a[3],theta[15])->(xedd[2],d_xe[4],d_xed[4],d_tau_a[6],d_theta[30],sing[2]) */
+static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
+  casadi_real a120, a121, a122, a123, a124, a125, a126, a127, a128, a129, a130, a131;
+  casadi_real a132, a133, a134, a135, a136, a137, a138, a139, a140, a141, a142, a143;
+  casadi_real a144, a145, a146, a147, a148, a149, a150, a151, a152, a153, a154, a155;
+  casadi_real a156, a157, a158, a159, a160, a161, a162, a163, a164, a165, a166, a167;
+  casadi_real a168, a169, a170, a171, a172, a173, a174, a175, a176, a177, a178, a179;
+  casadi_real a180, a181, a182, a183, a184, a185, a186, a187, a188, a189, a190, a191;
+  casadi_real a192, a193, a194, a195, a196, a197, a198, a199, a200, a201, a202, a203;
+  casadi_real a204, a205, a206, a207, a208, a209, a210, a211, a212, a213, a214, a215;
+  casadi_real a216, a217, a218, a219, a220, a221, a222, a223, a224, a225, a226, a227;
+  casadi_real a228, a229, a230, a231, a232, a233, a234, a235, a236, a237, a238, a239;
+  casadi_real a240, a241, a242, a243;
+  a000=-2.4399999999999999e-01;
+  a001=-5.1229508196721307e-01;
+  a002=2.0491803278688523e+00;
+  a003=arg[0]? arg[0][1] : 0;
+  a004=(a002*a003);
+  a001=(a001+a004);
+  a005=arg[0]? arg[0][0] : 0;
+  a006=casadi_sq(a005);
+  a007=-2.5000000000000000e-01;
+  a007=(a007+a003);
+  a008=casadi_sq(a007);
+  a009=(a006+a008);
+  a009=sqrt(a009);
+  a010=(a005/a009);
+  a011=1.;
+  a012=-4.1991400161246979e+00;
+  a006=(a012*a006);
+  a006=(a011+a006);
+  a008=(a012*a008);
+  a006=(a006+a008);
+  a006=sqrt(a006);
+  a010=(a010*a006);
+  a008=(a001-a010);
+  a013=(a000*a008);
+  a014=2.4399999999999999e-01;
+  a002=(a002*a005);
+  a006=(a006/a009);
+  a006=(a006*a007);
+  a007=(a002-a006);
+  a009=(a014*a007);
+  a015=(a013*a009);
+  a001=(a001+a010);
+  a010=(a000*a001);
+  a006=(a002+a006);
+  a016=(a014*a006);
+  a017=(a010*a016);
+  a015=(a015-a017);
+  a017=(a013/a015);
+  a018=arg[3]? arg[3][6] : 0;
+  a019=(a017*a018);
+  a020=(a010/a015);
+  a021=arg[3]? arg[3][3] : 0;
+  a022=(a006*a007);
+  a023=(a008*a001);
+  a022=(a022+a023);
+  a023=(a021*a022);
+  a024=(a020*a023);
+  a019=(a019-a024);
+  a024=(a019*a017);
+  a025=(a017*a023);
+  a026=arg[3]? arg[3][0] : 0;
+  a027=(a020*a026);
+  a025=(a025-a027);
+  a027=(a025*a020);
+  a028=casadi_sq(a003);
+  a029=(a012*a028);
+  a029=(a011+a029);
+  a030=-4.3300000000000000e-01;
+  a030=(a030+a005);
+  a005=casadi_sq(a030);
+  a031=(a012*a005);
+  a029=(a029+a031);
+  a029=sqrt(a029);
+  a028=(a028+a005);
+  a028=sqrt(a028);
+  a032=(a029/a028);
+  a032=(a032*a030);
+  a033=(a004-a032);
+  a034=(a000*a033);
+  a035=-8.8729508196721307e-01;
+  a035=(a035+a002);
+  a028=(a003/a028);
+  a028=(a028*a029);
+  a029=(a035-a028);
+  a002=(a014*a029);
+  a036=(a034*a002);
+  a032=(a004+a032);
+  a037=(a000*a032);
+  a028=(a035+a028);
+  a038=(a014*a028);
+  a039=(a037*a038);
+  a036=(a036-a039);
+  a039=(a034/a036);
+  a040=arg[3]? arg[3][4] : 0;
+  a041=(a028*a029);
+  a042=(a033*a032);
+  a041=(a041+a042);
+  a042=(a040*a041);
+  a043=(a039*a042);
+  a044=(a037/a036);
+  a045=arg[3]? arg[3][1] : 0;
+  a046=(a044*a045);
+  a043=(a043-a046);
+  a046=(a043*a044);
+  a027=(a027+a046);
+  a046=-1.0245901639344261e+00;
+  a046=(a046+a004);
+  a031=(a011+a031);
+  a004=-5.0000000000000000e-01;
+  a004=(a004+a003);
+  a003=casadi_sq(a004);
+  a012=(a012*a003);
+  a031=(a031+a012);
+  a031=sqrt(a031);
+  a005=(a005+a003);
+  a005=sqrt(a005);
+  a031=(a031/a005);
+  a030=(a031*a030);
+  a005=(a046-a030);
+  a003=(a000*a005);
+  a031=(a031*a004);
+  a004=(a035-a031);
+  a012=(a014*a004);
+  a047=(a003*a012);
+  a046=(a046+a030);
+  a030=(a000*a046);
+  a035=(a035+a031);
+  a031=(a014*a035);
+  a048=(a030*a031);
+  a047=(a047-a048);
+  a048=(a003/a047);
+  a049=arg[3]? arg[3][5] : 0;
+  a050=(a035*a004);
+  a051=(a005*a046);
+  a050=(a050+a051);
+  a051=(a049*a050);
+  a052=(a048*a051);
+  a053=(a030/a047);
+  a054=arg[3]? arg[3][2] : 0;
+  a055=(a053*a054);
+  a052=(a052-a055);
+  a055=(a052*a053);
+  a027=(a027+a055);
+  a024=(a024-a027);
+  a027=arg[3]? arg[3][7] : 0;
+  a055=(a039*a027);
+  a056=(a044*a042);
+  a055=(a055-a056);
+  a056=(a055*a039);
+  a024=(a024+a056);
+  a056=arg[3]? arg[3][8] : 0;
+  a057=(a048*a056);
+  a058=(a053*a051);
+  a057=(a057-a058);
+  a058=(a057*a048);
+  a024=(a024+a058);
+  a058=(a009/a015);
+  a059=arg[2]? arg[2][0] : 0;
+  a060=(a058*a059);
+  a061=(a002/a036);
+  a062=arg[2]? arg[2][1] : 0;
+  a063=(a061*a062);
+  a060=(a060+a063);
+  a063=(a012/a047);
+  a064=arg[2]? arg[2][2] : 0;
+  a065=(a063*a064);
+  a060=(a060+a065);
+  a065=arg[1]? arg[1][0] : 0;
+  a066=(a058*a065);
+  a067=arg[1]? arg[1][1] : 0;
+  a068=(a020*a067);
+  a066=(a066-a068);
+  a068=(a000*a066);
+  a069=(a068*a008);
+  a070=(a069*a066);
+  a071=(a017*a067);
+  a072=(a016/a015);
+  a073=(a072*a065);
+  a071=(a071-a073);
+  a073=(a000*a071);
+  a074=(a073*a001);
+  a075=(a074*a071);
+  a070=(a070+a075);
+  a075=(a020*a070);
+  a076=(a068*a006);
+  a077=(a076*a066);
+  a078=(a073*a007);
+  a079=(a078*a071);
+  a077=(a077+a079);
+  a079=(a058*a077);
+  a075=(a075-a079);
+  a079=(a026*a075);
+  a080=(a072*a077);
+  a081=(a017*a070);
+  a080=(a080-a081);
+  a081=(a023*a080);
+  a079=(a079+a081);
+  a081=(a021*a071);
+  a082=(a008*a007);
+  a083=(a006*a001);
+  a082=(a082-a083);
+  a083=(a081*a082);
+  a084=(a083*a071);
+  a079=(a079+a084);
+  a084=(a058*a079);
+  a085=(a061*a065);
+  a086=(a044*a067);
+  a085=(a085-a086);
+  a086=(a000*a085);
+  a087=(a086*a033);
+  a088=(a087*a085);
+  a089=(a039*a067);
+  a090=(a038/a036);
+  a091=(a090*a065);
+  a089=(a089-a091);
+  a091=(a000*a089);
+  a092=(a091*a032);
+  a093=(a092*a089);
+  a088=(a088+a093);
+  a093=(a044*a088);
+  a094=(a086*a028);
+  a095=(a094*a085);
+  a096=(a091*a029);
+  a097=(a096*a089);
+  a095=(a095+a097);
+  a097=(a061*a095);
+  a093=(a093-a097);
+  a097=(a045*a093);
+  a098=(a090*a095);
+  a099=(a039*a088);
+  a098=(a098-a099);
+  a099=(a042*a098);
+  a097=(a097+a099);
+  a099=(a040*a089);
+  a100=(a033*a029);
+  a101=(a028*a032);
+  a100=(a100-a101);
+  a101=(a099*a100);
+  a102=(a101*a089);
+  a097=(a097+a102);
+  a102=(a061*a097);
+  a084=(a084+a102);
+  a102=(a063*a065);
+  a103=(a053*a067);
+  a102=(a102-a103);
+  a103=(a000*a102);
+  a104=(a103*a005);
+  a105=(a104*a102);
+  a106=(a048*a067);
+  a107=(a031/a047);
+  a108=(a107*a065);
+  a106=(a106-a108);
+  a108=(a000*a106);
+  a109=(a108*a046);
+  a110=(a109*a106);
+  a105=(a105+a110);
+  a110=(a053*a105);
+  a111=(a103*a035);
+  a112=(a111*a102);
+  a113=(a108*a004);
+  a114=(a113*a106);
+  a112=(a112+a114);
+  a114=(a063*a112);
+  a110=(a110-a114);
+  a114=(a054*a110);
+  a115=(a107*a112);
+  a116=(a048*a105);
+  a115=(a115-a116);
+  a116=(a051*a115);
+  a114=(a114+a116);
+  a116=(a049*a106);
+  a117=(a005*a004);
+  a118=(a035*a046);
+  a117=(a117-a118);
+  a118=(a116*a117);
+  a119=(a118*a106);
+  a114=(a114+a119);
+  a119=(a063*a114);
+  a084=(a084+a119);
+  a119=(a023*a075);
+  a120=(a018*a080);
+  a119=(a119+a120);
+  a120=(a021*a066);
+  a121=(a120*a082);
+  a122=(a121*a066);
+  a119=(a119-a122);
+  a122=(a072*a119);
+  a084=(a084-a122);
+  a122=(a042*a093);
+  a123=(a027*a098);
+  a122=(a122+a123);
+  a123=(a040*a085);
+  a124=(a123*a100);
+  a125=(a124*a085);
+  a122=(a122-a125);
+  a125=(a090*a122);
+  a084=(a084-a125);
+  a125=(a051*a110);
+  a126=(a056*a115);
+  a125=(a125+a126);
+  a126=(a049*a102);
+  a127=(a126*a117);
+  a128=(a127*a102);
+  a125=(a125-a128);
+  a128=(a107*a125);
+  a084=(a084-a128);
+  a060=(a060-a084);
+  a084=arg[3]? arg[3][12] : 0;
+  a128=0.;
+  a129=(a128<=a066);
+  a130=(a129?a011:0);
+  a129=(!a129);
+  a131=-1.;
+  a129=(a129?a131:0);
+  a130=(a130+a129);
+  a084=(a084*a130);
+  a129=arg[3]? arg[3][9] : 0;
+  a132=(a129*a066);
+  a084=(a084+a132);
+  a132=(a058*a084);
+  a133=arg[3]? arg[3][13] : 0;
+  a134=(a128<=a085);
+  a135=(a134?a011:0);
+  a134=(!a134);
+  a134=(a134?a131:0);
+  a135=(a135+a134);
+  a133=(a133*a135);
+  a134=arg[3]? arg[3][10] : 0;
+  a136=(a134*a085);
+  a133=(a133+a136);
+  a136=(a061*a133);
+  a132=(a132+a136);
+  a136=arg[3]? arg[3][14] : 0;
+  a128=(a128<=a102);
+  a137=(a128?a011:0);
+  a128=(!a128);
+  a128=(a128?a131:0);
+  a137=(a137+a128);
+  a136=(a136*a137);
+  a128=arg[3]? arg[3][11] : 0;
+  a131=(a128*a102);
+  a136=(a136+a131);
+  a131=(a063*a136);
+  a132=(a132+a131);
+  a060=(a060-a132);
+  a132=(a024*a060);
+  a131=(a058*a023);
+  a138=(a072*a018);
+  a131=(a131-a138);
+  a138=(a131*a017);
+  a139=(a058*a026);
+  a140=(a072*a023);
+  a139=(a139-a140);
+  a140=(a139*a020);
+  a141=(a061*a045);
+  a142=(a090*a042);
+  a141=(a141-a142);
+  a142=(a141*a044);
+  a140=(a140+a142);
+  a142=(a063*a054);
+  a143=(a107*a051);
+  a142=(a142-a143);
+  a143=(a142*a053);
+  a140=(a140+a143);
+  a138=(a138-a140);
+  a140=(a061*a042);
+  a143=(a090*a027);
+  a140=(a140-a143);
+  a143=(a140*a039);
+  a138=(a138+a143);
+  a143=(a063*a051);
+  a144=(a107*a056);
+  a143=(a143-a144);
+  a144=(a143*a048);
+  a138=(a138+a144);
+  a144=(a020*a084);
+  a145=(a044*a133);
+  a144=(a144+a145);
+  a145=(a053*a136);
+  a144=(a144+a145);
+  a145=(a020*a059);
+  a146=(a044*a062);
+  a145=(a145+a146);
+  a146=(a053*a064);
+  a145=(a145+a146);
+  a146=(a017*a119);
+  a147=(a020*a079);
+  a148=(a044*a097);
+  a147=(a147+a148);
+  a148=(a053*a114);
+  a147=(a147+a148);
+  a146=(a146-a147);
+  a147=(a039*a122);
+  a146=(a146+a147);
+  a147=(a048*a125);
+  a146=(a146+a147);
+  a145=(a145+a146);
+  a144=(a144-a145);
+  a145=(a138*a144);
+  a132=(a132-a145);
+  a145=(a139*a058);
+  a146=(a141*a061);
+  a145=(a145+a146);
+  a146=(a142*a063);
+  a145=(a145+a146);
+  a146=(a131*a072);
+  a145=(a145-a146);
+  a146=(a140*a090);
+  a145=(a145-a146);
+  a146=(a143*a107);
+  a145=(a145-a146);
+  a146=(a145*a024);
+  a147=(a025*a058);
+  a148=(a043*a061);
+  a147=(a147+a148);
+  a148=(a052*a063);
+  a147=(a147+a148);
+  a148=(a019*a072);
+  a147=(a147-a148);
+  a148=(a055*a090);
+  a147=(a147-a148);
+  a148=(a057*a107);
+  a147=(a147-a148);
+  a148=(a138*a147);
+  a146=(a146-a148);
+  a132=(a132/a146);
+  if (res[0]!=0) res[0][0]=a132;
+  a148=(a145*a144);
+  a149=(a147*a060);
+  a148=(a148-a149);
+  a148=(a148/a146);
+  if (res[0]!=0) res[0][1]=a148;
+  a149=(a138/a146);
+  a150=(a017*a149);
+  a151=(a024/a146);
+  a152=(a072*a151);
+  a150=(a150+a152);
+  a152=(a018*a150);
+  a153=(a020*a149);
+  a154=(a058*a151);
+  a153=(a153+a154);
+  a154=(a023*a153);
+  a152=(a152-a154);
+  a154=(a072*a152);
+  a155=(a023*a150);
+  a156=(a026*a153);
+  a155=(a155-a156);
+  a156=(a058*a155);
+  a154=(a154-a156);
+  a156=(a071*a154);
+  a157=(a073*a156);
+  a158=(a066*a150);
+  a159=(a120*a158);
+  a160=(a071*a153);
+  a161=(a081*a160);
+  a159=(a159+a161);
+  a161=(a008*a159);
+  a157=(a157-a161);
+  a132=(a132/a146);
+  a161=(a024*a132);
+  a162=(a058*a161);
+  a163=(a147*a132);
+  a144=(a144/a146);
+  a163=(a163-a144);
+  a164=(a020*a163);
+  a162=(a162+a164);
+  a164=(a072*a162);
+  a165=(a072*a161);
+  a166=(a017*a163);
+  a165=(a165+a166);
+  a166=(a058*a165);
+  a164=(a164+a166);
+  a166=(a075*a150);
+  a164=(a164+a166);
+  a166=(a080*a153);
+  a164=(a164-a166);
+  a166=(a138*a132);
+  a167=(a058*a166);
+  a060=(a060/a146);
+  a132=(a145*a132);
+  a132=(a060-a132);
+  a168=(a020*a132);
+  a167=(a167-a168);
+  a168=(a017*a167);
+  a164=(a164+a168);
+  a168=(a017*a132);
+  a169=(a072*a166);
+  a168=(a168-a169);
+  a169=(a020*a168);
+  a164=(a164-a169);
+  a169=(a021*a164);
+  a170=(a006*a169);
+  a157=(a157+a170);
+  a170=(a025*a166);
+  a171=(a139*a161);
+  a170=(a170-a171);
+  a171=(a026*a162);
+  a170=(a170-a171);
+  a171=(a023*a165);
+  a170=(a170+a171);
+  a171=(a084*a151);
+  a170=(a170-a171);
+  a171=(a129*a153);
+  a172=(a065*a171);
+  a170=(a170-a172);
+  a172=(a079*a151);
+  a170=(a170-a172);
+  a172=(a077*a155);
+  a170=(a170-a172);
+  a172=(a076*a154);
+  a173=(a020*a155);
+  a174=(a017*a152);
+  a173=(a173-a174);
+  a174=(a069*a173);
+  a172=(a172+a174);
+  a174=(a065*a172);
+  a170=(a170+a174);
+  a174=(a066*a154);
+  a175=(a006*a174);
+  a175=(a000*a175);
+  a176=(a121*a150);
+  a158=(a082*a158);
+  a177=(a021*a158);
+  a176=(a176+a177);
+  a175=(a175-a176);
+  a176=(a066*a173);
+  a177=(a008*a176);
+  a177=(a000*a177);
+  a175=(a175+a177);
+  a177=(a065*a175);
+  a170=(a170+a177);
+  a177=(a059*a151);
+  a170=(a170+a177);
+  a177=(a170/a015);
+  a178=(a072/a015);
+  a179=(a131*a161);
+  a180=(a019*a166);
+  a179=(a179-a180);
+  a180=(a023*a162);
+  a179=(a179+a180);
+  a180=(a018*a165);
+  a179=(a179-a180);
+  a180=(a119*a151);
+  a179=(a179+a180);
+  a180=(a077*a152);
+  a179=(a179+a180);
+  a154=(a078*a154);
+  a180=(a074*a173);
+  a154=(a154+a180);
+  a180=(a065*a154);
+  a179=(a179-a180);
+  a156=(a007*a156);
+  a156=(a000*a156);
+  a180=(a083*a153);
+  a160=(a082*a160);
+  a181=(a021*a160);
+  a180=(a180+a181);
+  a156=(a156-a180);
+  a173=(a071*a173);
+  a180=(a001*a173);
+  a180=(a000*a180);
+  a156=(a156+a180);
+  a180=(a065*a156);
+  a179=(a179-a180);
+  a180=(a178*a179);
+  a181=(a058/a015);
+  a170=(a181*a170);
+  a180=(a180+a170);
+  a170=(a020/a015);
+  a182=(a059*a149);
+  a183=(a079*a149);
+  a182=(a182-a183);
+  a183=(a084*a149);
+  a182=(a182-a183);
+  a183=(a139*a163);
+  a182=(a182-a183);
+  a183=(a067*a171);
+  a182=(a182+a183);
+  a155=(a070*a155);
+  a182=(a182+a155);
+  a155=(a067*a172);
+  a182=(a182-a155);
+  a155=(a067*a175);
+  a182=(a182-a155);
+  a155=(a025*a132);
+  a182=(a182-a155);
+  a155=(a026*a167);
+  a182=(a182-a155);
+  a155=(a023*a168);
+  a182=(a182-a155);
+  a155=(a170*a182);
+  a180=(a180+a155);
+  a155=(a017/a015);
+  a183=(a119*a149);
+  a184=(a131*a163);
+  a183=(a183+a184);
+  a152=(a070*a152);
+  a183=(a183-a152);
+  a152=(a067*a154);
+  a183=(a183+a152);
+  a152=(a067*a156);
+  a183=(a183+a152);
+  a152=(a023*a167);
+  a183=(a183+a152);
+  a152=(a019*a132);
+  a183=(a183+a152);
+  a152=(a018*a168);
+  a183=(a183+a152);
+  a152=(a155*a183);
+  a180=(a180+a152);
+  a152=(a013*a180);
+  a177=(a177-a152);
+  a177=(a014*a177);
+  a157=(a157+a177);
+  a177=(a001*a072);
+  a152=(a157*a177);
+  a184=(a001*a159);
+  a174=(a068*a174);
+  a184=(a184+a174);
+  a174=(a007*a169);
+  a184=(a184+a174);
+  a179=(a179/a015);
+  a174=(a010*a180);
+  a179=(a179+a174);
+  a179=(a014*a179);
+  a184=(a184+a179);
+  a179=(a008*a058);
+  a174=(a184*a179);
+  a185=(a039*a149);
+  a186=(a090*a151);
+  a185=(a185+a186);
+  a186=(a085*a185);
+  a187=(a123*a186);
+  a188=(a044*a149);
+  a189=(a061*a151);
+  a188=(a188+a189);
+  a189=(a089*a188);
+  a190=(a099*a189);
+  a187=(a187+a190);
+  a190=(a032*a187);
+  a191=(a027*a185);
+  a192=(a042*a188);
+  a191=(a191-a192);
+  a192=(a090*a191);
+  a193=(a042*a185);
+  a194=(a045*a188);
+  a193=(a193-a194);
+  a194=(a061*a193);
+  a192=(a192-a194);
+  a194=(a085*a192);
+  a195=(a086*a194);
+  a190=(a190+a195);
+  a195=(a090*a161);
+  a196=(a039*a163);
+  a195=(a195+a196);
+  a196=(a061*a195);
+  a197=(a061*a161);
+  a198=(a044*a163);
+  a197=(a197+a198);
+  a198=(a090*a197);
+  a196=(a196+a198);
+  a198=(a093*a185);
+  a196=(a196+a198);
+  a198=(a098*a188);
+  a196=(a196-a198);
+  a198=(a039*a132);
+  a199=(a090*a166);
+  a198=(a198-a199);
+  a199=(a044*a198);
+  a196=(a196-a199);
+  a199=(a061*a166);
+  a200=(a044*a132);
+  a199=(a199-a200);
+  a200=(a039*a199);
+  a196=(a196+a200);
+  a200=(a040*a196);
+  a201=(a029*a200);
+  a190=(a190+a201);
+  a201=(a140*a161);
+  a202=(a055*a166);
+  a201=(a201-a202);
+  a202=(a027*a195);
+  a201=(a201-a202);
+  a202=(a042*a197);
+  a201=(a201+a202);
+  a202=(a122*a151);
+  a201=(a201+a202);
+  a202=(a095*a191);
+  a201=(a201+a202);
+  a202=(a096*a192);
+  a203=(a044*a193);
+  a204=(a039*a191);
+  a203=(a203-a204);
+  a204=(a092*a203);
+  a202=(a202+a204);
+  a204=(a065*a202);
+  a201=(a201-a204);
+  a204=(a089*a192);
+  a205=(a029*a204);
+  a205=(a000*a205);
+  a206=(a101*a188);
+  a189=(a100*a189);
+  a207=(a040*a189);
+  a206=(a206+a207);
+  a205=(a205-a206);
+  a206=(a089*a203);
+  a207=(a032*a206);
+  a207=(a000*a207);
+  a205=(a205+a207);
+  a207=(a065*a205);
+  a201=(a201-a207);
+  a207=(a201/a036);
+  a208=(a090/a036);
+  a201=(a208*a201);
+  a209=(a061/a036);
+  a210=(a043*a166);
+  a211=(a141*a161);
+  a210=(a210-a211);
+  a211=(a042*a195);
+  a210=(a210+a211);
+  a211=(a045*a197);
+  a210=(a210-a211);
+  a211=(a133*a151);
+  a210=(a210-a211);
+  a211=(a134*a188);
+  a212=(a065*a211);
+  a210=(a210-a212);
+  a212=(a097*a151);
+  a210=(a210-a212);
+  a212=(a095*a193);
+  a210=(a210-a212);
+  a192=(a094*a192);
+  a212=(a087*a203);
+  a192=(a192+a212);
+  a212=(a065*a192);
+  a210=(a210+a212);
+  a194=(a028*a194);
+  a194=(a000*a194);
+  a212=(a124*a185);
+  a186=(a100*a186);
+  a213=(a040*a186);
+  a212=(a212+a213);
+  a194=(a194-a212);
+  a203=(a085*a203);
+  a212=(a033*a203);
+  a212=(a000*a212);
+  a194=(a194+a212);
+  a212=(a065*a194);
+  a210=(a210+a212);
+  a212=(a062*a151);
+  a210=(a210+a212);
+  a212=(a209*a210);
+  a201=(a201+a212);
+  a212=(a044/a036);
+  a213=(a062*a149);
+  a214=(a097*a149);
+  a213=(a213-a214);
+  a214=(a133*a149);
+  a213=(a213-a214);
+  a214=(a141*a163);
+  a213=(a213-a214);
+  a214=(a067*a211);
+  a213=(a213+a214);
+  a193=(a088*a193);
+  a213=(a213+a193);
+  a193=(a067*a192);
+  a213=(a213-a193);
+  a193=(a067*a194);
+  a213=(a213-a193);
+  a193=(a042*a198);
+  a213=(a213-a193);
+  a193=(a043*a132);
+  a213=(a213-a193);
+  a193=(a045*a199);
+  a213=(a213-a193);
+  a193=(a212*a213);
+  a201=(a201+a193);
+  a193=(a039/a036);
+  a214=(a122*a149);
+  a215=(a140*a163);
+  a214=(a214+a215);
+  a191=(a088*a191);
+  a214=(a214-a191);
+  a191=(a067*a202);
+  a214=(a214+a191);
+  a191=(a067*a205);
+  a214=(a214+a191);
+  a191=(a055*a132);
+  a214=(a214+a191);
+  a191=(a027*a198);
+  a214=(a214+a191);
+  a191=(a042*a199);
+  a214=(a214+a191);
+  a191=(a193*a214);
+  a201=(a201+a191);
+  a191=(a037*a201);
+  a207=(a207+a191);
+  a207=(a014*a207);
+  a190=(a190+a207);
+  a207=(a033*a061);
+  a191=(a190*a207);
+  a174=(a174+a191);
+  a191=(a048*a149);
+  a215=(a107*a151);
+  a191=(a191+a215);
+  a215=(a102*a191);
+  a216=(a126*a215);
+  a217=(a053*a149);
+  a218=(a063*a151);
+  a217=(a217+a218);
+  a218=(a106*a217);
+  a219=(a116*a218);
+  a216=(a216+a219);
+  a219=(a046*a216);
+  a220=(a056*a191);
+  a221=(a051*a217);
+  a220=(a220-a221);
+  a221=(a107*a220);
+  a222=(a051*a191);
+  a223=(a054*a217);
+  a222=(a222-a223);
+  a223=(a063*a222);
+  a221=(a221-a223);
+  a223=(a102*a221);
+  a224=(a103*a223);
+  a219=(a219+a224);
+  a224=(a107*a161);
+  a225=(a048*a163);
+  a224=(a224+a225);
+  a225=(a063*a224);
+  a226=(a063*a161);
+  a227=(a053*a163);
+  a226=(a226+a227);
+  a227=(a107*a226);
+  a225=(a225+a227);
+  a227=(a110*a191);
+  a225=(a225+a227);
+  a227=(a115*a217);
+  a225=(a225-a227);
+  a227=(a048*a132);
+  a228=(a107*a166);
+  a227=(a227-a228);
+  a228=(a053*a227);
+  a225=(a225-a228);
+  a228=(a063*a166);
+  a229=(a053*a132);
+  a228=(a228-a229);
+  a229=(a048*a228);
+  a225=(a225+a229);
+  a229=(a049*a225);
+  a230=(a004*a229);
+  a219=(a219+a230);
+  a230=(a143*a161);
+  a231=(a057*a166);
+  a230=(a230-a231);
+  a231=(a056*a224);
+  a230=(a230-a231);
+  a231=(a051*a226);
+  a230=(a230+a231);
+  a231=(a125*a151);
+  a230=(a230+a231);
+  a231=(a112*a220);
+  a230=(a230+a231);
+  a231=(a113*a221);
+  a232=(a053*a222);
+  a233=(a048*a220);
+  a232=(a232-a233);
+  a233=(a109*a232);
+  a231=(a231+a233);
+  a233=(a065*a231);
+  a230=(a230-a233);
+  a233=(a106*a221);
+  a234=(a004*a233);
+  a234=(a000*a234);
+  a235=(a118*a217);
+  a218=(a117*a218);
+  a236=(a049*a218);
+  a235=(a235+a236);
+  a234=(a234-a235);
+  a235=(a106*a232);
+  a236=(a046*a235);
+  a236=(a000*a236);
+  a234=(a234+a236);
+  a236=(a065*a234);
+  a230=(a230-a236);
+  a236=(a230/a047);
+  a237=(a107/a047);
+  a230=(a237*a230);
+  a238=(a063/a047);
+  a166=(a052*a166);
+  a161=(a142*a161);
+  a166=(a166-a161);
+  a161=(a051*a224);
+  a166=(a166+a161);
+  a161=(a054*a226);
+  a166=(a166-a161);
+  a161=(a136*a151);
+  a166=(a166-a161);
+  a161=(a128*a217);
+  a239=(a065*a161);
+  a166=(a166-a239);
+  a239=(a114*a151);
+  a166=(a166-a239);
+  a239=(a112*a222);
+  a166=(a166-a239);
+  a221=(a111*a221);
+  a239=(a104*a232);
+  a221=(a221+a239);
+  a239=(a065*a221);
+  a166=(a166+a239);
+  a223=(a035*a223);
+  a223=(a000*a223);
+  a239=(a127*a191);
+  a215=(a117*a215);
+  a240=(a049*a215);
+  a239=(a239+a240);
+  a223=(a223-a239);
+  a232=(a102*a232);
+  a239=(a005*a232);
+  a239=(a000*a239);
+  a223=(a223+a239);
+  a239=(a065*a223);
+  a166=(a166+a239);
+  a151=(a064*a151);
+  a166=(a166+a151);
+  a151=(a238*a166);
+  a230=(a230+a151);
+  a151=(a053/a047);
+  a239=(a064*a149);
+  a240=(a114*a149);
+  a239=(a239-a240);
+  a240=(a136*a149);
+  a239=(a239-a240);
+  a240=(a142*a163);
+  a239=(a239-a240);
+  a240=(a067*a161);
+  a239=(a239+a240);
+  a222=(a105*a222);
+  a239=(a239+a222);
+  a222=(a067*a221);
+  a239=(a239-a222);
+  a222=(a067*a223);
+  a239=(a239-a222);
+  a222=(a051*a227);
+  a239=(a239-a222);
+  a222=(a052*a132);
+  a239=(a239-a222);
+  a222=(a054*a228);
+  a239=(a239-a222);
+  a222=(a151*a239);
+  a230=(a230+a222);
+  a222=(a048/a047);
+  a149=(a125*a149);
+  a163=(a143*a163);
+  a149=(a149+a163);
+  a220=(a105*a220);
+  a149=(a149-a220);
+  a220=(a067*a231);
+  a149=(a149+a220);
+  a220=(a067*a234);
+  a149=(a149+a220);
+  a132=(a057*a132);
+  a149=(a149+a132);
+  a132=(a056*a227);
+  a149=(a149+a132);
+  a132=(a051*a228);
+  a149=(a149+a132);
+  a132=(a222*a149);
+  a230=(a230+a132);
+  a132=(a030*a230);
+  a236=(a236+a132);
+  a236=(a014*a236);
+  a219=(a219+a236);
+  a236=(a005*a063);
+  a132=(a219*a236);
+  a174=(a174+a132);
+  a152=(a152-a174);
+  a204=(a091*a204);
+  a174=(a033*a187);
+  a204=(a204-a174);
+  a174=(a028*a200);
+  a204=(a204+a174);
+  a210=(a210/a036);
+  a174=(a034*a201);
+  a210=(a210-a174);
+  a210=(a014*a210);
+  a204=(a204+a210);
+  a210=(a032*a090);
+  a174=(a204*a210);
+  a152=(a152+a174);
+  a233=(a108*a233);
+  a174=(a005*a216);
+  a233=(a233-a174);
+  a174=(a035*a229);
+  a233=(a233+a174);
+  a166=(a166/a047);
+  a174=(a003*a230);
+  a166=(a166-a174);
+  a166=(a014*a166);
+  a233=(a233+a166);
+  a166=(a046*a107);
+  a174=(a233*a166);
+  a152=(a152+a174);
+  a176=(a068*a176);
+  a174=(a007*a159);
+  a176=(a176-a174);
+  a174=(a001*a169);
+  a176=(a176+a174);
+  a183=(a183/a015);
+  a174=(a009*a180);
+  a183=(a183-a174);
+  a183=(a000*a183);
+  a176=(a176+a183);
+  a183=(a006*a058);
+  a174=(a176*a183);
+  a203=(a086*a203);
+  a132=(a029*a187);
+  a203=(a203-a132);
+  a132=(a032*a200);
+  a203=(a203+a132);
+  a214=(a214/a036);
+  a132=(a002*a201);
+  a214=(a214-a132);
+  a214=(a000*a214);
+  a203=(a203+a214);
+  a214=(a028*a061);
+  a132=(a203*a214);
+  a174=(a174+a132);
+  a232=(a103*a232);
+  a132=(a004*a216);
+  a232=(a232-a132);
+  a132=(a046*a229);
+  a232=(a232+a132);
+  a149=(a149/a047);
+  a132=(a012*a230);
+  a149=(a149-a132);
+  a149=(a000*a149);
+  a232=(a232+a149);
+  a149=(a035*a063);
+  a132=(a232*a149);
+  a174=(a174+a132);
+  a159=(a006*a159);
+  a173=(a073*a173);
+  a159=(a159+a173);
+  a169=(a008*a169);
+  a159=(a159+a169);
+  a182=(a182/a015);
+  a180=(a016*a180);
+  a182=(a182+a180);
+  a182=(a000*a182);
+  a159=(a159+a182);
+  a182=(a007*a072);
+  a180=(a159*a182);
+  a174=(a174-a180);
+  a187=(a028*a187);
+  a206=(a091*a206);
+  a187=(a187+a206);
+  a200=(a033*a200);
+  a187=(a187+a200);
+  a213=(a213/a036);
+  a201=(a038*a201);
+  a213=(a213+a201);
+  a213=(a000*a213);
+  a187=(a187+a213);
+  a213=(a029*a090);
+  a201=(a187*a213);
+  a174=(a174-a201);
+  a216=(a035*a216);
+  a235=(a108*a235);
+  a216=(a216+a235);
+  a229=(a005*a229);
+  a216=(a216+a229);
+  a239=(a239/a047);
+  a230=(a031*a230);
+  a239=(a239+a230);
+  a239=(a000*a239);
+  a216=(a216+a239);
+  a239=(a004*a107);
+  a230=(a216*a239);
+  a174=(a174-a230);
+  a152=(a152+a174);
+  if (res[1]!=0) res[1][0]=a152;
+  a152=(a008*a020);
+  a184=(a184*a152);
+  a174=(a033*a044);
+  a190=(a190*a174);
+  a184=(a184+a190);
+  a190=(a005*a053);
+  a219=(a219*a190);
+  a184=(a184+a219);
+  a219=(a001*a017);
+  a157=(a157*a219);
+  a184=(a184-a157);
+  a157=(a032*a039);
+  a204=(a204*a157);
+  a184=(a184-a204);
+  a204=(a046*a048);
+  a233=(a233*a204);
+  a184=(a184-a233);
+  a233=(a007*a017);
+  a159=(a159*a233);
+  a230=(a006*a020);
+  a176=(a176*a230);
+  a229=(a028*a044);
+  a203=(a203*a229);
+  a176=(a176+a203);
+  a203=(a035*a053);
+  a232=(a232*a203);
+  a176=(a176+a232);
+  a159=(a159-a176);
+  a176=(a029*a039);
+  a187=(a187*a176);
+  a159=(a159+a187);
+  a187=(a004*a048);
+  a216=(a216*a187);
+  a159=(a159+a216);
+  a184=(a184+a159);
+  if (res[1]!=0) res[1][1]=a184;
+  a184=(a145/a146);
+  a159=(a017*a184);
+  a216=(a147/a146);
+  a232=(a072*a216);
+  a159=(a159+a232);
+  a232=(a066*a159);
+  a120=(a120*a232);
+  a235=(a020*a184);
+  a201=(a058*a216);
+  a235=(a235+a201);
+  a201=(a071*a235);
+  a081=(a081*a201);
+  a120=(a120+a081);
+  a081=(a008*a120);
+  a200=(a023*a235);
+  a206=(a018*a159);
+  a200=(a200-a206);
+  a206=(a072*a200);
+  a180=(a026*a235);
+  a169=(a023*a159);
+  a180=(a180-a169);
+  a169=(a058*a180);
+  a206=(a206-a169);
+  a169=(a071*a206);
+  a173=(a073*a169);
+  a081=(a081+a173);
+  a148=(a148/a146);
+  a147=(a147*a148);
+  a146=(a017*a147);
+  a024=(a024*a148);
+  a144=(a144-a024);
+  a024=(a072*a144);
+  a146=(a146-a024);
+  a024=(a058*a146);
+  a173=(a058*a144);
+  a132=(a020*a147);
+  a173=(a173-a132);
+  a132=(a072*a173);
+  a024=(a024-a132);
+  a132=(a075*a159);
+  a024=(a024-a132);
+  a132=(a080*a235);
+  a024=(a024+a132);
+  a138=(a138*a148);
+  a138=(a138-a060);
+  a060=(a058*a138);
+  a145=(a145*a148);
+  a148=(a020*a145);
+  a060=(a060+a148);
+  a148=(a017*a060);
+  a024=(a024+a148);
+  a148=(a072*a138);
+  a132=(a017*a145);
+  a148=(a148+a132);
+  a132=(a020*a148);
+  a024=(a024+a132);
+  a132=(a021*a024);
+  a220=(a006*a132);
+  a081=(a081+a220);
+  a220=(a025*a138);
+  a163=(a139*a144);
+  a220=(a220+a163);
+  a163=(a026*a173);
+  a220=(a220+a163);
+  a163=(a023*a146);
+  a220=(a220+a163);
+  a163=(a084*a216);
+  a220=(a220+a163);
+  a129=(a129*a235);
+  a163=(a065*a129);
+  a220=(a220+a163);
+  a163=(a079*a216);
+  a220=(a220+a163);
+  a163=(a077*a180);
+  a220=(a220-a163);
+  a076=(a076*a206);
+  a163=(a020*a180);
+  a240=(a017*a200);
+  a163=(a163-a240);
+  a069=(a069*a163);
+  a076=(a076+a069);
+  a069=(a065*a076);
+  a220=(a220+a069);
+  a121=(a121*a159);
+  a232=(a082*a232);
+  a069=(a021*a232);
+  a121=(a121+a069);
+  a069=(a066*a206);
+  a240=(a006*a069);
+  a240=(a000*a240);
+  a121=(a121+a240);
+  a240=(a066*a163);
+  a241=(a008*a240);
+  a241=(a000*a241);
+  a121=(a121+a241);
+  a241=(a065*a121);
+  a220=(a220+a241);
+  a241=(a059*a216);
+  a220=(a220-a241);
+  a241=(a220/a015);
+  a077=(a077*a200);
+  a242=(a019*a138);
+  a243=(a131*a144);
+  a242=(a242+a243);
+  a243=(a023*a173);
+  a242=(a242+a243);
+  a243=(a018*a146);
+  a242=(a242+a243);
+  a243=(a119*a216);
+  a242=(a242+a243);
+  a077=(a077-a242);
+  a078=(a078*a206);
+  a074=(a074*a163);
+  a078=(a078+a074);
+  a074=(a065*a078);
+  a077=(a077-a074);
+  a083=(a083*a235);
+  a201=(a082*a201);
+  a021=(a021*a201);
+  a083=(a083+a021);
+  a169=(a007*a169);
+  a169=(a000*a169);
+  a083=(a083+a169);
+  a163=(a071*a163);
+  a169=(a001*a163);
+  a169=(a000*a169);
+  a083=(a083+a169);
+  a169=(a065*a083);
+  a077=(a077-a169);
+  a178=(a178*a077);
+  a181=(a181*a220);
+  a178=(a178+a181);
+  a079=(a079*a184);
+  a059=(a059*a184);
+  a079=(a079-a059);
+  a084=(a084*a184);
+  a079=(a079+a084);
+  a139=(a139*a147);
+  a079=(a079-a139);
+  a139=(a067*a129);
+  a079=(a079-a139);
+  a180=(a070*a180);
+  a079=(a079+a180);
+  a180=(a067*a076);
+  a079=(a079-a180);
+  a180=(a067*a121);
+  a079=(a079-a180);
+  a025=(a025*a145);
+  a079=(a079+a025);
+  a026=(a026*a060);
+  a079=(a079-a026);
+  a026=(a023*a148);
+  a079=(a079+a026);
+  a170=(a170*a079);
+  a178=(a178+a170);
+  a131=(a131*a147);
+  a119=(a119*a184);
+  a131=(a131-a119);
+  a070=(a070*a200);
+  a131=(a131-a070);
+  a070=(a067*a078);
+  a131=(a131+a070);
+  a070=(a067*a083);
+  a131=(a131+a070);
+  a023=(a023*a060);
+  a131=(a131+a023);
+  a019=(a019*a145);
+  a131=(a131-a019);
+  a018=(a018*a148);
+  a131=(a131-a018);
+  a155=(a155*a131);
+  a178=(a178+a155);
+  a013=(a013*a178);
+  a241=(a241-a013);
+  a241=(a014*a241);
+  a081=(a081+a241);
+  a177=(a081*a177);
+  a069=(a068*a069);
+  a241=(a001*a120);
+  a069=(a069-a241);
+  a241=(a007*a132);
+  a069=(a069+a241);
+  a077=(a077/a015);
+  a010=(a010*a178);
+  a077=(a077+a010);
+  a077=(a014*a077);
+  a069=(a069+a077);
+  a179=(a069*a179);
+  a077=(a044*a184);
+  a010=(a061*a216);
+  a077=(a077+a010);
+  a010=(a042*a077);
+  a241=(a039*a184);
+  a013=(a090*a216);
+  a241=(a241+a013);
+  a013=(a027*a241);
+  a010=(a010-a013);
+  a013=(a090*a010);
+  a155=(a045*a077);
+  a018=(a042*a241);
+  a155=(a155-a018);
+  a018=(a061*a155);
+  a013=(a013-a018);
+  a018=(a085*a013);
+  a019=(a086*a018);
+  a023=(a085*a241);
+  a123=(a123*a023);
+  a070=(a089*a077);
+  a099=(a099*a070);
+  a123=(a123+a099);
+  a099=(a032*a123);
+  a019=(a019-a099);
+  a099=(a039*a147);
+  a200=(a090*a144);
+  a099=(a099-a200);
+  a200=(a061*a099);
+  a119=(a061*a144);
+  a170=(a044*a147);
+  a119=(a119-a170);
+  a170=(a090*a119);
+  a200=(a200-a170);
+  a170=(a093*a241);
+  a200=(a200-a170);
+  a170=(a098*a077);
+  a200=(a200+a170);
+  a170=(a090*a138);
+  a026=(a039*a145);
+  a170=(a170+a026);
+  a026=(a044*a170);
+  a200=(a200+a026);
+  a026=(a061*a138);
+  a025=(a044*a145);
+  a026=(a026+a025);
+  a025=(a039*a026);
+  a200=(a200+a025);
+  a025=(a040*a200);
+  a180=(a029*a025);
+  a019=(a019+a180);
+  a180=(a095*a010);
+  a139=(a055*a138);
+  a084=(a140*a144);
+  a139=(a139+a084);
+  a084=(a027*a099);
+  a139=(a139+a084);
+  a084=(a042*a119);
+  a139=(a139+a084);
+  a084=(a122*a216);
+  a139=(a139+a084);
+  a180=(a180-a139);
+  a096=(a096*a013);
+  a139=(a044*a155);
+  a084=(a039*a010);
+  a139=(a139-a084);
+  a092=(a092*a139);
+  a096=(a096+a092);
+  a092=(a065*a096);
+  a180=(a180-a092);
+  a101=(a101*a077);
+  a070=(a100*a070);
+  a092=(a040*a070);
+  a101=(a101+a092);
+  a092=(a089*a013);
+  a084=(a029*a092);
+  a084=(a000*a084);
+  a101=(a101+a084);
+  a084=(a089*a139);
+  a059=(a032*a084);
+  a059=(a000*a059);
+  a101=(a101+a059);
+  a059=(a065*a101);
+  a180=(a180-a059);
+  a059=(a180/a036);
+  a208=(a208*a180);
+  a180=(a043*a138);
+  a181=(a141*a144);
+  a180=(a180+a181);
+  a181=(a042*a099);
+  a180=(a180+a181);
+  a181=(a045*a119);
+  a180=(a180+a181);
+  a181=(a133*a216);
+  a180=(a180+a181);
+  a134=(a134*a077);
+  a181=(a065*a134);
+  a180=(a180+a181);
+  a181=(a097*a216);
+  a180=(a180+a181);
+  a095=(a095*a155);
+  a180=(a180-a095);
+  a094=(a094*a013);
+  a087=(a087*a139);
+  a094=(a094+a087);
+  a087=(a065*a094);
+  a180=(a180+a087);
+  a124=(a124*a241);
+  a023=(a100*a023);
+  a040=(a040*a023);
+  a124=(a124+a040);
+  a018=(a028*a018);
+  a018=(a000*a018);
+  a124=(a124+a018);
+  a139=(a085*a139);
+  a018=(a033*a139);
+  a018=(a000*a018);
+  a124=(a124+a018);
+  a018=(a065*a124);
+  a180=(a180+a018);
+  a018=(a062*a216);
+  a180=(a180-a018);
+  a209=(a209*a180);
+  a208=(a208+a209);
+  a097=(a097*a184);
+  a062=(a062*a184);
+  a097=(a097-a062);
+  a133=(a133*a184);
+  a097=(a097+a133);
+  a141=(a141*a147);
+  a097=(a097-a141);
+  a141=(a067*a134);
+  a097=(a097-a141);
+  a155=(a088*a155);
+  a097=(a097+a155);
+  a155=(a067*a094);
+  a097=(a097-a155);
+  a155=(a067*a124);
+  a097=(a097-a155);
+  a155=(a042*a170);
+  a097=(a097+a155);
+  a043=(a043*a145);
+  a097=(a097+a043);
+  a045=(a045*a026);
+  a097=(a097-a045);
+  a212=(a212*a097);
+  a208=(a208+a212);
+  a140=(a140*a147);
+  a122=(a122*a184);
+  a140=(a140-a122);
+  a088=(a088*a010);
+  a140=(a140-a088);
+  a088=(a067*a096);
+  a140=(a140+a088);
+  a088=(a067*a101);
+  a140=(a140+a088);
+  a055=(a055*a145);
+  a140=(a140-a055);
+  a027=(a027*a170);
+  a140=(a140-a027);
+  a042=(a042*a026);
+  a140=(a140+a042);
+  a193=(a193*a140);
+  a208=(a208+a193);
+  a037=(a037*a208);
+  a059=(a059+a037);
+  a059=(a014*a059);
+  a019=(a019+a059);
+  a207=(a019*a207);
+  a179=(a179+a207);
+  a207=(a053*a184);
+  a059=(a063*a216);
+  a207=(a207+a059);
+  a059=(a051*a207);
+  a037=(a048*a184);
+  a193=(a107*a216);
+  a037=(a037+a193);
+  a193=(a056*a037);
+  a059=(a059-a193);
+  a193=(a107*a059);
+  a042=(a054*a207);
+  a027=(a051*a037);
+  a042=(a042-a027);
+  a027=(a063*a042);
+  a193=(a193-a027);
+  a027=(a102*a193);
+  a055=(a103*a027);
+  a088=(a102*a037);
+  a126=(a126*a088);
+  a010=(a106*a207);
+  a116=(a116*a010);
+  a126=(a126+a116);
+  a116=(a046*a126);
+  a055=(a055-a116);
+  a116=(a048*a147);
+  a122=(a107*a144);
+  a116=(a116-a122);
+  a122=(a063*a116);
+  a212=(a063*a144);
+  a045=(a053*a147);
+  a212=(a212-a045);
+  a045=(a107*a212);
+  a122=(a122-a045);
+  a045=(a110*a037);
+  a122=(a122-a045);
+  a045=(a115*a207);
+  a122=(a122+a045);
+  a045=(a107*a138);
+  a043=(a048*a145);
+  a045=(a045+a043);
+  a043=(a053*a045);
+  a122=(a122+a043);
+  a043=(a063*a138);
+  a155=(a053*a145);
+  a043=(a043+a155);
+  a155=(a048*a043);
+  a122=(a122+a155);
+  a155=(a049*a122);
+  a141=(a004*a155);
+  a055=(a055+a141);
+  a141=(a112*a059);
+  a133=(a057*a138);
+  a062=(a143*a144);
+  a133=(a133+a062);
+  a062=(a056*a116);
+  a133=(a133+a062);
+  a062=(a051*a212);
+  a133=(a133+a062);
+  a062=(a125*a216);
+  a133=(a133+a062);
+  a141=(a141-a133);
+  a113=(a113*a193);
+  a133=(a053*a042);
+  a062=(a048*a059);
+  a133=(a133-a062);
+  a109=(a109*a133);
+  a113=(a113+a109);
+  a109=(a065*a113);
+  a141=(a141-a109);
+  a118=(a118*a207);
+  a010=(a117*a010);
+  a109=(a049*a010);
+  a118=(a118+a109);
+  a109=(a106*a193);
+  a062=(a004*a109);
+  a062=(a000*a062);
+  a118=(a118+a062);
+  a062=(a106*a133);
+  a209=(a046*a062);
+  a209=(a000*a209);
+  a118=(a118+a209);
+  a209=(a065*a118);
+  a141=(a141-a209);
+  a209=(a141/a047);
+  a237=(a237*a141);
+  a138=(a052*a138);
+  a144=(a142*a144);
+  a138=(a138+a144);
+  a144=(a051*a116);
+  a138=(a138+a144);
+  a144=(a054*a212);
+  a138=(a138+a144);
+  a144=(a136*a216);
+  a138=(a138+a144);
+  a128=(a128*a207);
+  a144=(a065*a128);
+  a138=(a138+a144);
+  a144=(a114*a216);
+  a138=(a138+a144);
+  a112=(a112*a042);
+  a138=(a138-a112);
+  a111=(a111*a193);
+  a104=(a104*a133);
+  a111=(a111+a104);
+  a104=(a065*a111);
+  a138=(a138+a104);
+  a127=(a127*a037);
+  a088=(a117*a088);
+  a049=(a049*a088);
+  a127=(a127+a049);
+  a027=(a035*a027);
+  a027=(a000*a027);
+  a127=(a127+a027);
+  a133=(a102*a133);
+  a027=(a005*a133);
+  a027=(a000*a027);
+  a127=(a127+a027);
+  a065=(a065*a127);
+  a138=(a138+a065);
+  a216=(a064*a216);
+  a138=(a138-a216);
+  a238=(a238*a138);
+  a237=(a237+a238);
+  a114=(a114*a184);
+  a064=(a064*a184);
+  a114=(a114-a064);
+  a136=(a136*a184);
+  a114=(a114+a136);
+  a142=(a142*a147);
+  a114=(a114-a142);
+  a142=(a067*a128);
+  a114=(a114-a142);
+  a042=(a105*a042);
+  a114=(a114+a042);
+  a042=(a067*a111);
+  a114=(a114-a042);
+  a042=(a067*a127);
+  a114=(a114-a042);
+  a042=(a051*a045);
+  a114=(a114+a042);
+  a052=(a052*a145);
+  a114=(a114+a052);
+  a054=(a054*a043);
+  a114=(a114-a054);
+  a151=(a151*a114);
+  a237=(a237+a151);
+  a143=(a143*a147);
+  a125=(a125*a184);
+  a143=(a143-a125);
+  a105=(a105*a059);
+  a143=(a143-a105);
+  a105=(a067*a113);
+  a143=(a143+a105);
+  a067=(a067*a118);
+  a143=(a143+a067);
+  a057=(a057*a145);
+  a143=(a143-a057);
+  a056=(a056*a045);
+  a143=(a143-a056);
+  a051=(a051*a043);
+  a143=(a143+a051);
+  a222=(a222*a143);
+  a237=(a237+a222);
+  a030=(a030*a237);
+  a209=(a209+a030);
+  a209=(a014*a209);
+  a055=(a055+a209);
+  a236=(a055*a236);
+  a179=(a179+a236);
+  a177=(a177-a179);
+  a179=(a033*a123);
+  a092=(a091*a092);
+  a179=(a179+a092);
+  a092=(a028*a025);
+  a179=(a179+a092);
+  a180=(a180/a036);
+  a034=(a034*a208);
+  a180=(a180-a034);
+  a180=(a014*a180);
+  a179=(a179+a180);
+  a210=(a179*a210);
+  a177=(a177+a210);
+  a210=(a005*a126);
+  a109=(a108*a109);
+  a210=(a210+a109);
+  a109=(a035*a155);
+  a210=(a210+a109);
+  a138=(a138/a047);
+  a003=(a003*a237);
+  a138=(a138-a003);
+  a014=(a014*a138);
+  a210=(a210+a014);
+  a166=(a210*a166);
+  a177=(a177+a166);
+  a166=(a007*a120);
+  a068=(a068*a240);
+  a166=(a166+a068);
+  a068=(a001*a132);
+  a166=(a166+a068);
+  a131=(a131/a015);
+  a009=(a009*a178);
+  a131=(a131-a009);
+  a131=(a000*a131);
+  a166=(a166+a131);
+  a183=(a166*a183);
+  a131=(a029*a123);
+  a086=(a086*a139);
+  a131=(a131+a086);
+  a086=(a032*a025);
+  a131=(a131+a086);
+  a140=(a140/a036);
+  a002=(a002*a208);
+  a140=(a140-a002);
+  a140=(a000*a140);
+  a131=(a131+a140);
+  a214=(a131*a214);
+  a183=(a183+a214);
+  a214=(a004*a126);
+  a103=(a103*a133);
+  a214=(a214+a103);
+  a103=(a046*a155);
+  a214=(a214+a103);
+  a143=(a143/a047);
+  a012=(a012*a237);
+  a143=(a143-a012);
+  a143=(a000*a143);
+  a214=(a214+a143);
+  a149=(a214*a149);
+  a183=(a183+a149);
+  a073=(a073*a163);
+  a006=(a006*a120);
+  a073=(a073-a006);
+  a008=(a008*a132);
+  a073=(a073+a008);
+  a079=(a079/a015);
+  a016=(a016*a178);
+  a079=(a079+a016);
+  a079=(a000*a079);
+  a073=(a073+a079);
+  a182=(a073*a182);
+  a183=(a183-a182);
+  a091=(a091*a084);
+  a028=(a028*a123);
+  a091=(a091-a028);
+  a033=(a033*a025);
+  a091=(a091+a033);
+  a097=(a097/a036);
+  a038=(a038*a208);
+  a097=(a097+a038);
+  a097=(a000*a097);
+  a091=(a091+a097);
+  a213=(a091*a213);
+  a183=(a183-a213);
+  a108=(a108*a062);
+  a035=(a035*a126);
+  a108=(a108-a035);
+  a005=(a005*a155);
+  a108=(a108+a005);
+  a114=(a114/a047);
+  a031=(a031*a237);
+  a114=(a114+a031);
+  a000=(a000*a114);
+  a108=(a108+a000);
+  a239=(a108*a239);
+  a183=(a183-a239);
+  a177=(a177+a183);
+  if (res[1]!=0) res[1][2]=a177;
+  a069=(a069*a152);
+  a019=(a019*a174);
+  a069=(a069+a019);
+  a055=(a055*a190);
+  a069=(a069+a055);
+  a081=(a081*a219);
+  a069=(a069-a081);
+  a179=(a179*a157);
+  a069=(a069-a179);
+  a210=(a210*a204);
+  a069=(a069-a210);
+  a073=(a073*a233);
+  a166=(a166*a230);
+  a131=(a131*a229);
+  a166=(a166+a131);
+  a214=(a214*a203);
+  a166=(a166+a214);
+  a073=(a073-a166);
+  a091=(a091*a176);
+  a073=(a073+a091);
+  a108=(a108*a187);
+  a073=(a073+a108);
+  a069=(a069+a073);
+  if (res[1]!=0) res[1][3]=a069;
+  a069=(a063*a221);
+  a073=(a063*a161);
+  a108=(a061*a211);
+  a073=(a073+a108);
+  a108=(a058*a171);
+  a073=(a073+a108);
+  a108=(a107*a231);
+  a073=(a073+a108);
+  a108=(a107*a234);
+  a073=(a073+a108);
+  a069=(a069-a073);
+  a073=(a063*a223);
+  a069=(a069+a073);
+  a073=(a090*a202);
+  a069=(a069-a073);
+  a073=(a090*a205);
+  a069=(a069-a073);
+  a073=(a061*a192);
+  a069=(a069+a073);
+  a073=(a061*a194);
+  a069=(a069+a073);
+  a073=(a072*a154);
+  a069=(a069-a073);
+  a073=(a072*a156);
+  a069=(a069-a073);
+  a073=(a058*a172);
+  a069=(a069+a073);
+  a073=(a058*a175);
+  a069=(a069+a073);
+  if (res[2]!=0) res[2][0]=a069;
+  a161=(a053*a161);
+  a211=(a044*a211);
+  a161=(a161+a211);
+  a171=(a020*a171);
+  a161=(a161+a171);
+  a231=(a048*a231);
+  a161=(a161+a231);
+  a234=(a048*a234);
+  a161=(a161+a234);
+  a221=(a053*a221);
+  a161=(a161-a221);
+  a223=(a053*a223);
+  a161=(a161-a223);
+  a202=(a039*a202);
+  a161=(a161+a202);
+  a205=(a039*a205);
+  a161=(a161+a205);
+  a192=(a044*a192);
+  a161=(a161-a192);
+  a194=(a044*a194);
+  a161=(a161-a194);
+  a154=(a017*a154);
+  a161=(a161+a154);
+  a156=(a017*a156);
+  a161=(a161+a156);
+  a172=(a020*a172);
+  a161=(a161-a172);
+  a175=(a020*a175);
+  a161=(a161-a175);
+  if (res[2]!=0) res[2][1]=a161;
+  a161=(a063*a128);
+  a175=(a061*a134);
+  a161=(a161+a175);
+  a175=(a058*a129);
+  a161=(a161+a175);
+  a175=(a107*a113);
+  a161=(a161-a175);
+  a175=(a107*a118);
+  a161=(a161-a175);
+  a175=(a063*a111);
+  a161=(a161+a175);
+  a175=(a063*a127);
+  a161=(a161+a175);
+  a175=(a090*a096);
+  a161=(a161-a175);
+  a175=(a090*a101);
+  a161=(a161-a175);
+  a175=(a061*a094);
+  a161=(a161+a175);
+  a175=(a061*a124);
+  a161=(a161+a175);
+  a175=(a072*a078);
+  a161=(a161-a175);
+  a175=(a072*a083);
+  a161=(a161-a175);
+  a175=(a058*a076);
+  a161=(a161+a175);
+  a175=(a058*a121);
+  a161=(a161+a175);
+  if (res[2]!=0) res[2][2]=a161;
+  a113=(a048*a113);
+  a128=(a053*a128);
+  a134=(a044*a134);
+  a128=(a128+a134);
+  a129=(a020*a129);
+  a128=(a128+a129);
+  a113=(a113-a128);
+  a118=(a048*a118);
+  a113=(a113+a118);
+  a111=(a053*a111);
+  a113=(a113-a111);
+  a127=(a053*a127);
+  a113=(a113-a127);
+  a096=(a039*a096);
+  a113=(a113+a096);
+  a101=(a039*a101);
+  a113=(a113+a101);
+  a094=(a044*a094);
+  a113=(a113-a094);
+  a124=(a044*a124);
+  a113=(a113-a124);
+  a078=(a017*a078);
+  a113=(a113+a078);
+  a083=(a017*a083);
+  a113=(a113+a083);
+  a076=(a020*a076);
+  a113=(a113-a076);
+  a121=(a020*a121);
+  a113=(a113-a121);
+  if (res[2]!=0) res[2][3]=a113;
+  if (res[3]!=0) res[3][0]=a153;
+  if (res[3]!=0) res[3][1]=a188;
+  if (res[3]!=0) res[3][2]=a217;
+  a113=(-a235);
+  if (res[3]!=0) res[3][3]=a113;
+  a113=(-a077);
+  if (res[3]!=0) res[3][4]=a113;
+  a113=(-a207);
+  if (res[3]!=0) res[3][5]=a113;
+  a162=(a058*a162);
+  a113=(a075*a153);
+  a162=(a162+a113);
+  a167=(a020*a167);
+  a162=(a162+a167);
+  a162=(-a162);
+  if (res[4]!=0) res[4][0]=a162;
+  a197=(a061*a197);
+  a162=(a093*a188);
+  a197=(a197+a162);
+  a199=(a044*a199);
+  a197=(a197+a199);
+  a197=(-a197);
+  if (res[4]!=0) res[4][1]=a197;
+  a226=(a063*a226);
+  a197=(a110*a217);
+  a226=(a226+a197);
+  a228=(a053*a228);
+  a226=(a226+a228);
+  a226=(-a226);
+  if (res[4]!=0) res[4][2]=a226;
+  a164=(a022*a164);
+  a158=(a066*a158);
+  a160=(a071*a160);
+  a158=(a158+a160);
+  a164=(a164-a158);
+  if (res[4]!=0) res[4][3]=a164;
+  a196=(a041*a196);
+  a186=(a085*a186);
+  a189=(a089*a189);
+  a186=(a186+a189);
+  a196=(a196-a186);
+  if (res[4]!=0) res[4][4]=a196;
+  a225=(a050*a225);
+  a215=(a102*a215);
+  a218=(a106*a218);
+  a215=(a215+a218);
+  a225=(a225-a215);
+  if (res[4]!=0) res[4][5]=a225;
+  a150=(a080*a150);
+  a165=(a072*a165);
+  a150=(a150-a165);
+  a168=(a017*a168);
+  a150=(a150+a168);
+  if (res[4]!=0) res[4][6]=a150;
+  a185=(a098*a185);
+  a195=(a090*a195);
+  a185=(a185-a195);
+  a198=(a039*a198);
+  a185=(a185+a198);
+  if (res[4]!=0) res[4][7]=a185;
+  a191=(a115*a191);
+  a224=(a107*a224);
+  a191=(a191-a224);
+  a227=(a048*a227);
+  a191=(a191+a227);
+  if (res[4]!=0) res[4][8]=a191;
+  a191=(a066*a153);
+  a191=(-a191);
+  if (res[4]!=0) res[4][9]=a191;
+  a191=(a085*a188);
+  a191=(-a191);
+  if (res[4]!=0) res[4][10]=a191;
+  a191=(a102*a217);
+  a191=(-a191);
+  if (res[4]!=0) res[4][11]=a191;
+  a153=(a130*a153);
+  a153=(-a153);
+  if (res[4]!=0) res[4][12]=a153;
+  a188=(a135*a188);
+  a188=(-a188);
+  if (res[4]!=0) res[4][13]=a188;
+  a217=(a137*a217);
+  a217=(-a217);
+  if (res[4]!=0) res[4][14]=a217;
+  a058=(a058*a173);
+  a075=(a075*a235);
+  a058=(a058+a075);
+  a020=(a020*a060);
+  a058=(a058-a020);
+  if (res[4]!=0) res[4][15]=a058;
+  a061=(a061*a119);
+  a093=(a093*a077);
+  a061=(a061+a093);
+  a044=(a044*a026);
+  a061=(a061-a044);
+  if (res[4]!=0) res[4][16]=a061;
+  a063=(a063*a212);
+  a110=(a110*a207);
+  a063=(a063+a110);
+  a053=(a053*a043);
+  a063=(a063-a053);
+  if (res[4]!=0) res[4][17]=a063;
+  a232=(a066*a232);
+  a071=(a071*a201);
+  a232=(a232+a071);
+  a022=(a022*a024);
+  a232=(a232+a022);
+  if (res[4]!=0) res[4][18]=a232;
+  a023=(a085*a023);
+  a089=(a089*a070);
+  a023=(a023+a089);
+  a041=(a041*a200);
+  a023=(a023+a041);
+  if (res[4]!=0) res[4][19]=a023;
+  a088=(a102*a088);
+  a106=(a106*a010);
+  a088=(a088+a106);
+  a050=(a050*a122);
+  a088=(a088+a050);
+  if (res[4]!=0) res[4][20]=a088;
+  a072=(a072*a146);
+  a080=(a080*a159);
+  a072=(a072+a080);
+  a017=(a017*a148);
+  a072=(a072+a017);
+  a072=(-a072);
+  if (res[4]!=0) res[4][21]=a072;
+  a090=(a090*a099);
+  a098=(a098*a241);
+  a090=(a090+a098);
+  a039=(a039*a170);
+  a090=(a090+a039);
+  a090=(-a090);
+  if (res[4]!=0) res[4][22]=a090;
+  a107=(a107*a116);
+  a115=(a115*a037);
+  a107=(a107+a115);
+  a048=(a048*a045);
+  a107=(a107+a048);
+  a107=(-a107);
+  if (res[4]!=0) res[4][23]=a107;
+  a066=(a066*a235);
+  if (res[4]!=0) res[4][24]=a066;
+  a085=(a085*a077);
+  if (res[4]!=0) res[4][25]=a085;
+  a102=(a102*a207);
+  if (res[4]!=0) res[4][26]=a102;
+  a130=(a130*a235);
+  if (res[4]!=0) res[4][27]=a130;
+  a135=(a135*a077);
+  if (res[4]!=0) res[4][28]=a135;
+  a137=(a137*a207);
+  if (res[4]!=0) res[4][29]=a137;
+  a082=casadi_fabs(a082);
+  a100=casadi_fabs(a100);
+  a137=(a082+a100);
+  a082=(a082-a100);
+  a082=casadi_fabs(a082);
+  a137=(a137-a082);
+  a082=2.;
+  a137=(a137/a082);
+  a117=casadi_fabs(a117);
+  a100=(a137+a117);
+  a137=(a137-a117);
+  a137=casadi_fabs(a137);
+  a100=(a100-a137);
+  a100=(a100/a082);
+  if (res[5]!=0) res[5][0]=a100;
+  a100=5.0000000000000000e-01;
+  a082=3.3333333333333331e-01;
+  a137=casadi_sq(a007);
+  a117=casadi_sq(a001);
+  a137=(a137-a117);
+  a117=casadi_sq(a029);
+  a207=casadi_sq(a032);
+  a117=(a117-a207);
+  a137=(a137+a117);
+  a117=casadi_sq(a004);
+  a207=casadi_sq(a046);
+  a117=(a117-a207);
+  a137=(a137+a117);
+  a137=casadi_sq(a137);
+  a007=(2.*a007);
+  a007=(a007*a001);
+  a029=(2.*a029);
+  a029=(a029*a032);
+  a007=(a007+a029);
+  a004=(2.*a004);
+  a004=(a004*a046);
+  a007=(a007+a004);
+  a007=casadi_sq(a007);
+  a137=(a137+a007);
+  a137=sqrt(a137);
+  a082=(a082*a137);
+  a011=(a011-a082);
+  a082=casadi_fabs(a011);
+  a011=(a011+a082);
+  a100=(a100*a011);
+  a100=sqrt(a100);
+  if (res[5]!=0) res[5][1]=a100;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f56(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_forward_dynamics_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_forward_dynamics_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_forward_dynamics_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_forward_dynamics_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_forward_dynamics_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_forward_dynamics_jacobians_n_out(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_forward_dynamics_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_forward_dynamics_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "tau_a";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_forward_dynamics_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xedd";
+    case 1: return "d_xe";
+    case 2: return "d_xed";
+    case 3: return "d_tau_a";
+    case 4: return "d_theta";
+    case 5: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_forward_dynamics_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s2;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_forward_dynamics_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s3;
+    case 2: return casadi_s3;
+    case 3: return casadi_s1;
+    case 4: return casadi_s8;
+    case 5: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_forward_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_forward_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_inverse_dynamics:(xe[2],xed[2],xedd[2],theta[15])->(u[2],sing[2]) */
+static int casadi_f57(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52;
+  a00=2.4399999999999999e-01;
+  a01=2.0491803278688523e+00;
+  a02=arg[0]? arg[0][0] : 0;
+  a03=(a01*a02);
+  a04=1.;
+  a05=-4.1991400161246979e+00;
+  a06=casadi_sq(a02);
+  a07=(a05*a06);
+  a07=(a04+a07);
+  a08=-2.5000000000000000e-01;
+  a09=arg[0]? arg[0][1] : 0;
+  a08=(a08+a09);
+  a10=casadi_sq(a08);
+  a11=(a05*a10);
+  a07=(a07+a11);
+  a07=sqrt(a07);
+  a06=(a06+a10);
+  a06=sqrt(a06);
+  a10=(a07/a06);
+  a10=(a10*a08);
+  a08=(a03-a10);
+  a11=(a00*a08);
+  a12=-2.4399999999999999e-01;
+  a13=-5.1229508196721307e-01;
+  a01=(a01*a09);
+  a13=(a13+a01);
+  a06=(a02/a06);
+  a06=(a06*a07);
+  a07=(a13-a06);
+  a14=(a12*a07);
+  a15=(a14*a11);
+  a13=(a13+a06);
+  a06=(a12*a13);
+  a10=(a03+a10);
+  a16=(a00*a10);
+  a17=(a06*a16);
+  a15=(a15-a17);
+  a11=(a11/a15);
+  a17=arg[3]? arg[3][0] : 0;
+  a18=(a11*a17);
+  a16=(a16/a15);
+  a19=arg[3]? arg[3][3] : 0;
+  a20=(a10*a08);
+  a21=(a07*a13);
+  a20=(a20+a21);
+  a20=(a19*a20);
+  a21=(a16*a20);
+  a18=(a18-a21);
+  a21=(a18*a11);
+  a22=-8.8729508196721307e-01;
+  a22=(a22+a03);
+  a03=casadi_sq(a09);
+  a23=-4.3300000000000000e-01;
+  a23=(a23+a02);
+  a02=casadi_sq(a23);
+  a24=(a03+a02);
+  a24=sqrt(a24);
+  a25=(a09/a24);
+  a03=(a05*a03);
+  a03=(a04+a03);
+  a26=(a05*a02);
+  a03=(a03+a26);
+  a03=sqrt(a03);
+  a25=(a25*a03);
+  a27=(a22-a25);
+  a28=(a00*a27);
+  a03=(a03/a24);
+  a03=(a03*a23);
+  a24=(a01-a03);
+  a29=(a12*a24);
+  a30=(a29*a28);
+  a03=(a01+a03);
+  a31=(a12*a03);
+  a25=(a22+a25);
+  a32=(a00*a25);
+  a33=(a31*a32);
+  a30=(a30-a33);
+  a28=(a28/a30);
+  a33=arg[3]? arg[3][1] : 0;
+  a34=(a28*a33);
+  a32=(a32/a30);
+  a35=arg[3]? arg[3][4] : 0;
+  a36=(a25*a27);
+  a37=(a24*a03);
+  a36=(a36+a37);
+  a36=(a35*a36);
+  a37=(a32*a36);
+  a34=(a34-a37);
+  a37=(a34*a28);
+  a21=(a21+a37);
+  a26=(a04+a26);
+  a37=-5.0000000000000000e-01;
+  a37=(a37+a09);
+  a09=casadi_sq(a37);
+  a05=(a05*a09);
+  a26=(a26+a05);
+  a26=sqrt(a26);
+  a02=(a02+a09);
+  a02=sqrt(a02);
+  a26=(a26/a02);
+  a37=(a26*a37);
+  a02=(a22-a37);
+  a09=(a00*a02);
+  a05=-1.0245901639344261e+00;
+  a05=(a05+a01);
+  a26=(a26*a23);
+  a23=(a05-a26);
+  a01=(a12*a23);
+  a38=(a01*a09);
+  a05=(a05+a26);
+  a26=(a12*a05);
+  a22=(a22+a37);
+  a00=(a00*a22);
+  a37=(a26*a00);
+  a38=(a38-a37);
+  a09=(a09/a38);
+  a37=arg[3]? arg[3][2] : 0;
+  a39=(a09*a37);
+  a00=(a00/a38);
+  a40=arg[3]? arg[3][5] : 0;
+  a41=(a22*a02);
+  a42=(a23*a05);
+  a41=(a41+a42);
+  a41=(a40*a41);
+  a42=(a00*a41);
+  a39=(a39-a42);
+  a42=(a39*a09);
+  a21=(a21+a42);
+  a42=(a11*a20);
+  a43=arg[3]? arg[3][6] : 0;
+  a44=(a16*a43);
+  a42=(a42-a44);
+  a44=(a42*a16);
+  a21=(a21-a44);
+  a44=(a28*a36);
+  a45=arg[3]? arg[3][7] : 0;
+  a46=(a32*a45);
+  a44=(a44-a46);
+  a46=(a44*a32);
+  a21=(a21-a46);
+  a46=(a09*a41);
+  a47=arg[3]? arg[3][8] : 0;
+  a48=(a00*a47);
+  a46=(a46-a48);
+  a48=(a46*a00);
+  a21=(a21-a48);
+  a48=arg[2]? arg[2][0] : 0;
+  a21=(a21*a48);
+  a14=(a14/a15);
+  a42=(a42*a14);
+  a06=(a06/a15);
+  a18=(a18*a06);
+  a31=(a31/a30);
+  a34=(a34*a31);
+  a18=(a18+a34);
+  a26=(a26/a38);
+  a39=(a39*a26);
+  a18=(a18+a39);
+  a42=(a42-a18);
+  a29=(a29/a30);
+  a44=(a44*a29);
+  a42=(a42+a44);
+  a01=(a01/a38);
+  a46=(a46*a01);
+  a42=(a42+a46);
+  a46=arg[2]? arg[2][1] : 0;
+  a42=(a42*a46);
+  a21=(a21+a42);
+  a42=arg[1]? arg[1][0] : 0;
+  a38=(a11*a42);
+  a44=arg[1]? arg[1][1] : 0;
+  a30=(a06*a44);
+  a38=(a38-a30);
+  a30=(a12*a38);
+  a18=(a30*a07);
+  a18=(a18*a38);
+  a39=(a14*a44);
+  a34=(a16*a42);
+  a39=(a39-a34);
+  a34=(a12*a39);
+  a15=(a34*a13);
+  a15=(a15*a39);
+  a18=(a18+a15);
+  a15=(a06*a18);
+  a30=(a30*a10);
+  a30=(a30*a38);
+  a34=(a34*a08);
+  a34=(a34*a39);
+  a30=(a30+a34);
+  a34=(a11*a30);
+  a15=(a15-a34);
+  a34=(a17*a15);
+  a30=(a16*a30);
+  a18=(a14*a18);
+  a30=(a30-a18);
+  a18=(a20*a30);
+  a34=(a34+a18);
+  a18=(a19*a39);
+  a07=(a07*a08);
+  a10=(a10*a13);
+  a07=(a07-a10);
+  a18=(a18*a07);
+  a18=(a18*a39);
+  a34=(a34+a18);
+  a18=(a11*a34);
+  a39=(a28*a42);
+  a10=(a31*a44);
+  a39=(a39-a10);
+  a10=(a12*a39);
+  a49=(a10*a24);
+  a49=(a49*a39);
+  a50=(a29*a44);
+  a51=(a32*a42);
+  a50=(a50-a51);
+  a51=(a12*a50);
+  a52=(a51*a03);
+  a52=(a52*a50);
+  a49=(a49+a52);
+  a52=(a31*a49);
+  a10=(a10*a25);
+  a10=(a10*a39);
+  a51=(a51*a27);
+  a51=(a51*a50);
+  a10=(a10+a51);
+  a51=(a28*a10);
+  a52=(a52-a51);
+  a51=(a33*a52);
+  a10=(a32*a10);
+  a49=(a29*a49);
+  a10=(a10-a49);
+  a49=(a36*a10);
+  a51=(a51+a49);
+  a49=(a35*a50);
+  a24=(a24*a27);
+  a25=(a25*a03);
+  a24=(a24-a25);
+  a49=(a49*a24);
+  a49=(a49*a50);
+  a51=(a51+a49);
+  a49=(a28*a51);
+  a18=(a18+a49);
+  a49=(a09*a42);
+  a50=(a26*a44);
+  a49=(a49-a50);
+  a50=(a12*a49);
+  a25=(a50*a23);
+  a25=(a25*a49);
+  a44=(a01*a44);
+  a42=(a00*a42);
+  a44=(a44-a42);
+  a12=(a12*a44);
+  a42=(a12*a05);
+  a42=(a42*a44);
+  a25=(a25+a42);
+  a42=(a26*a25);
+  a50=(a50*a22);
+  a50=(a50*a49);
+  a12=(a12*a02);
+  a12=(a12*a44);
+  a50=(a50+a12);
+  a12=(a09*a50);
+  a42=(a42-a12);
+  a12=(a37*a42);
+  a50=(a00*a50);
+  a25=(a01*a25);
+  a50=(a50-a25);
+  a25=(a41*a50);
+  a12=(a12+a25);
+  a25=(a40*a44);
+  a23=(a23*a02);
+  a22=(a22*a05);
+  a23=(a23-a22);
+  a25=(a25*a23);
+  a25=(a25*a44);
+  a12=(a12+a25);
+  a25=(a09*a12);
+  a18=(a18+a25);
+  a15=(a20*a15);
+  a30=(a43*a30);
+  a15=(a15+a30);
+  a19=(a19*a38);
+  a19=(a19*a07);
+  a19=(a19*a38);
+  a15=(a15-a19);
+  a19=(a16*a15);
+  a18=(a18-a19);
+  a52=(a36*a52);
+  a10=(a45*a10);
+  a52=(a52+a10);
+  a35=(a35*a39);
+  a35=(a35*a24);
+  a35=(a35*a39);
+  a52=(a52-a35);
+  a35=(a32*a52);
+  a18=(a18-a35);
+  a42=(a41*a42);
+  a50=(a47*a50);
+  a42=(a42+a50);
+  a40=(a40*a49);
+  a40=(a40*a23);
+  a40=(a40*a49);
+  a42=(a42-a40);
+  a40=(a00*a42);
+  a18=(a18-a40);
+  a21=(a21+a18);
+  a18=arg[3]? arg[3][12] : 0;
+  a40=0.;
+  a50=(a40<=a38);
+  a35=(a50?a04:0);
+  a50=(!a50);
+  a10=-1.;
+  a50=(a50?a10:0);
+  a35=(a35+a50);
+  a18=(a18*a35);
+  a35=arg[3]? arg[3][9] : 0;
+  a35=(a35*a38);
+  a18=(a18+a35);
+  a35=(a11*a18);
+  a38=arg[3]? arg[3][13] : 0;
+  a50=(a40<=a39);
+  a19=(a50?a04:0);
+  a50=(!a50);
+  a50=(a50?a10:0);
+  a19=(a19+a50);
+  a38=(a38*a19);
+  a19=arg[3]? arg[3][10] : 0;
+  a19=(a19*a39);
+  a38=(a38+a19);
+  a19=(a28*a38);
+  a35=(a35+a19);
+  a19=arg[3]? arg[3][14] : 0;
+  a40=(a40<=a49);
+  a39=(a40?a04:0);
+  a40=(!a40);
+  a40=(a40?a10:0);
+  a39=(a39+a40);
+  a19=(a19*a39);
+  a39=arg[3]? arg[3][11] : 0;
+  a39=(a39*a49);
+  a19=(a19+a39);
+  a39=(a09*a19);
+  a35=(a35+a39);
+  a21=(a21+a35);
+  if (res[0]!=0) res[0][0]=a21;
+  a21=(a14*a20);
+  a17=(a06*a17);
+  a21=(a21-a17);
+  a11=(a21*a11);
+  a17=(a29*a36);
+  a33=(a31*a33);
+  a17=(a17-a33);
+  a28=(a17*a28);
+  a11=(a11+a28);
+  a28=(a01*a41);
+  a37=(a26*a37);
+  a28=(a28-a37);
+  a09=(a28*a09);
+  a11=(a11+a09);
+  a43=(a14*a43);
+  a20=(a06*a20);
+  a43=(a43-a20);
+  a16=(a43*a16);
+  a11=(a11-a16);
+  a45=(a29*a45);
+  a36=(a31*a36);
+  a45=(a45-a36);
+  a32=(a45*a32);
+  a11=(a11-a32);
+  a47=(a01*a47);
+  a41=(a26*a41);
+  a47=(a47-a41);
+  a00=(a47*a00);
+  a11=(a11-a00);
+  a11=(a11*a48);
+  a43=(a43*a14);
+  a21=(a21*a06);
+  a17=(a17*a31);
+  a21=(a21+a17);
+  a28=(a28*a26);
+  a21=(a21+a28);
+  a43=(a43-a21);
+  a45=(a45*a29);
+  a43=(a43+a45);
+  a47=(a47*a01);
+  a43=(a43+a47);
+  a43=(a43*a46);
+  a11=(a11+a43);
+  a14=(a14*a15);
+  a34=(a06*a34);
+  a51=(a31*a51);
+  a34=(a34+a51);
+  a12=(a26*a12);
+  a34=(a34+a12);
+  a14=(a14-a34);
+  a29=(a29*a52);
+  a14=(a14+a29);
+  a01=(a01*a42);
+  a14=(a14+a01);
+  a11=(a11+a14);
+  a06=(a06*a18);
+  a31=(a31*a38);
+  a06=(a06+a31);
+  a26=(a26*a19);
+  a06=(a06+a26);
+  a11=(a11-a06);
+  if (res[0]!=0) res[0][1]=a11;
+  a07=casadi_fabs(a07);
+  a24=casadi_fabs(a24);
+  a11=(a07+a24);
+  a07=(a07-a24);
+  a07=casadi_fabs(a07);
+  a11=(a11-a07);
+  a07=2.;
+  a11=(a11/a07);
+  a23=casadi_fabs(a23);
+  a24=(a11+a23);
+  a11=(a11-a23);
+  a11=casadi_fabs(a11);
+  a24=(a24-a11);
+  a24=(a24/a07);
+  if (res[1]!=0) res[1][0]=a24;
+  a24=5.0000000000000000e-01;
+  a07=3.3333333333333331e-01;
+  a11=casadi_sq(a08);
+  a23=casadi_sq(a13);
+  a11=(a11-a23);
+  a23=casadi_sq(a27);
+  a06=casadi_sq(a03);
+  a23=(a23-a06);
+  a11=(a11+a23);
+  a23=casadi_sq(a02);
+  a06=casadi_sq(a05);
+  a23=(a23-a06);
+  a11=(a11+a23);
+  a11=casadi_sq(a11);
+  a08=(2.*a08);
+  a08=(a08*a13);
+  a27=(2.*a27);
+  a27=(a27*a03);
+  a08=(a08+a27);
+  a02=(2.*a02);
+  a02=(a02*a05);
+  a08=(a08+a02);
+  a08=casadi_sq(a08);
+  a11=(a11+a08);
+  a11=sqrt(a11);
+  a07=(a07*a11);
+  a04=(a04-a07);
+  a07=casadi_fabs(a04);
+  a04=(a04+a07);
+  a24=(a24*a04);
+  a24=sqrt(a24);
+  if (res[1]!=0) res[1][1]=a24;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f57(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_inverse_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_inverse_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_inverse_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_inverse_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_inverse_dynamics_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_inverse_dynamics_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_inverse_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_inverse_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "xedd";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_inverse_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "u";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_inverse_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_inverse_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_inverse_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_inverse_dynamics_jacobians:(xe[2],xed[2],xedd[2],theta[15])->(u[2],d_xe[4],d_xed[4],sing[2]) */
+static int casadi_f58(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
+  casadi_real a120, a121, a122, a123, a124, a125, a126, a127, a128, a129, a130, a131;
+  casadi_real a132, a133, a134, a135, a136, a137, a138, a139, a140, a141, a142, a143;
+  casadi_real a144, a145, a146, a147, a148, a149, a150, a151, a152, a153, a154, a155;
+  casadi_real a156, a157, a158, a159, a160, a161, a162, a163, a164, a165, a166, a167;
+  casadi_real a168, a169, a170, a171, a172, a173, a174, a175, a176, a177, a178, a179;
+  casadi_real a180, a181, a182, a183, a184, a185, a186, a187, a188, a189, a190, a191;
+  casadi_real a192, a193, a194, a195, a196, a197, a198, a199, a200, a201, a202, a203;
+  casadi_real a204, a205, a206, a207;
+  a000=2.4399999999999999e-01;
+  a001=2.0491803278688523e+00;
+  a002=arg[0]? arg[0][0] : 0;
+  a003=(a001*a002);
+  a004=1.;
+  a005=-4.1991400161246979e+00;
+  a006=casadi_sq(a002);
+  a007=(a005*a006);
+  a007=(a004+a007);
+  a008=-2.5000000000000000e-01;
+  a009=arg[0]? arg[0][1] : 0;
+  a008=(a008+a009);
+  a010=casadi_sq(a008);
+  a011=(a005*a010);
+  a007=(a007+a011);
+  a007=sqrt(a007);
+  a006=(a006+a010);
+  a006=sqrt(a006);
+  a010=(a007/a006);
+  a010=(a010*a008);
+  a008=(a003-a010);
+  a011=(a000*a008);
+  a012=-2.4399999999999999e-01;
+  a013=-5.1229508196721307e-01;
+  a001=(a001*a009);
+  a013=(a013+a001);
+  a006=(a002/a006);
+  a006=(a006*a007);
+  a007=(a013-a006);
+  a014=(a012*a007);
+  a015=(a014*a011);
+  a013=(a013+a006);
+  a006=(a012*a013);
+  a010=(a003+a010);
+  a016=(a000*a010);
+  a017=(a006*a016);
+  a015=(a015-a017);
+  a017=(a011/a015);
+  a018=arg[3]? arg[3][0] : 0;
+  a019=(a017*a018);
+  a020=(a016/a015);
+  a021=arg[3]? arg[3][3] : 0;
+  a022=(a010*a008);
+  a023=(a007*a013);
+  a022=(a022+a023);
+  a022=(a021*a022);
+  a023=(a020*a022);
+  a019=(a019-a023);
+  a023=(a019*a017);
+  a024=-8.8729508196721307e-01;
+  a024=(a024+a003);
+  a003=casadi_sq(a009);
+  a025=-4.3300000000000000e-01;
+  a025=(a025+a002);
+  a002=casadi_sq(a025);
+  a026=(a003+a002);
+  a026=sqrt(a026);
+  a027=(a009/a026);
+  a003=(a005*a003);
+  a003=(a004+a003);
+  a028=(a005*a002);
+  a003=(a003+a028);
+  a003=sqrt(a003);
+  a027=(a027*a003);
+  a029=(a024-a027);
+  a030=(a000*a029);
+  a003=(a003/a026);
+  a003=(a003*a025);
+  a026=(a001-a003);
+  a031=(a012*a026);
+  a032=(a031*a030);
+  a003=(a001+a003);
+  a033=(a012*a003);
+  a027=(a024+a027);
+  a034=(a000*a027);
+  a035=(a033*a034);
+  a032=(a032-a035);
+  a035=(a030/a032);
+  a036=arg[3]? arg[3][1] : 0;
+  a037=(a035*a036);
+  a038=(a034/a032);
+  a039=arg[3]? arg[3][4] : 0;
+  a040=(a027*a029);
+  a041=(a026*a003);
+  a040=(a040+a041);
+  a040=(a039*a040);
+  a041=(a038*a040);
+  a037=(a037-a041);
+  a041=(a037*a035);
+  a023=(a023+a041);
+  a028=(a004+a028);
+  a041=-5.0000000000000000e-01;
+  a041=(a041+a009);
+  a009=casadi_sq(a041);
+  a005=(a005*a009);
+  a028=(a028+a005);
+  a028=sqrt(a028);
+  a002=(a002+a009);
+  a002=sqrt(a002);
+  a028=(a028/a002);
+  a041=(a028*a041);
+  a002=(a024-a041);
+  a009=(a000*a002);
+  a005=-1.0245901639344261e+00;
+  a005=(a005+a001);
+  a028=(a028*a025);
+  a025=(a005-a028);
+  a001=(a012*a025);
+  a042=(a001*a009);
+  a005=(a005+a028);
+  a028=(a012*a005);
+  a024=(a024+a041);
+  a041=(a000*a024);
+  a043=(a028*a041);
+  a042=(a042-a043);
+  a043=(a009/a042);
+  a044=arg[3]? arg[3][2] : 0;
+  a045=(a043*a044);
+  a046=(a041/a042);
+  a047=arg[3]? arg[3][5] : 0;
+  a048=(a024*a002);
+  a049=(a025*a005);
+  a048=(a048+a049);
+  a048=(a047*a048);
+  a049=(a046*a048);
+  a045=(a045-a049);
+  a049=(a045*a043);
+  a023=(a023+a049);
+  a049=(a017*a022);
+  a050=arg[3]? arg[3][6] : 0;
+  a051=(a020*a050);
+  a049=(a049-a051);
+  a051=(a049*a020);
+  a023=(a023-a051);
+  a051=(a035*a040);
+  a052=arg[3]? arg[3][7] : 0;
+  a053=(a038*a052);
+  a051=(a051-a053);
+  a053=(a051*a038);
+  a023=(a023-a053);
+  a053=(a043*a048);
+  a054=arg[3]? arg[3][8] : 0;
+  a055=(a046*a054);
+  a053=(a053-a055);
+  a055=(a053*a046);
+  a023=(a023-a055);
+  a055=arg[2]? arg[2][0] : 0;
+  a023=(a023*a055);
+  a056=(a014/a015);
+  a057=(a049*a056);
+  a058=(a006/a015);
+  a059=(a019*a058);
+  a060=(a033/a032);
+  a061=(a037*a060);
+  a059=(a059+a061);
+  a061=(a028/a042);
+  a062=(a045*a061);
+  a059=(a059+a062);
+  a057=(a057-a059);
+  a059=(a031/a032);
+  a062=(a051*a059);
+  a057=(a057+a062);
+  a062=(a001/a042);
+  a063=(a053*a062);
+  a057=(a057+a063);
+  a063=arg[2]? arg[2][1] : 0;
+  a057=(a057*a063);
+  a023=(a023+a057);
+  a057=arg[1]? arg[1][0] : 0;
+  a064=(a017*a057);
+  a065=arg[1]? arg[1][1] : 0;
+  a066=(a058*a065);
+  a064=(a064-a066);
+  a066=(a012*a064);
+  a067=(a066*a007);
+  a068=(a067*a064);
+  a069=(a056*a065);
+  a070=(a020*a057);
+  a069=(a069-a070);
+  a070=(a012*a069);
+  a071=(a070*a013);
+  a072=(a071*a069);
+  a068=(a068+a072);
+  a072=(a058*a068);
+  a073=(a066*a010);
+  a074=(a073*a064);
+  a075=(a070*a008);
+  a076=(a075*a069);
+  a074=(a074+a076);
+  a076=(a017*a074);
+  a072=(a072-a076);
+  a076=(a018*a072);
+  a077=(a020*a074);
+  a078=(a056*a068);
+  a077=(a077-a078);
+  a078=(a022*a077);
+  a076=(a076+a078);
+  a078=(a021*a069);
+  a079=(a007*a008);
+  a080=(a010*a013);
+  a079=(a079-a080);
+  a080=(a078*a079);
+  a081=(a080*a069);
+  a076=(a076+a081);
+  a081=(a017*a076);
+  a082=(a035*a057);
+  a083=(a060*a065);
+  a082=(a082-a083);
+  a083=(a012*a082);
+  a084=(a083*a026);
+  a085=(a084*a082);
+  a086=(a059*a065);
+  a087=(a038*a057);
+  a086=(a086-a087);
+  a087=(a012*a086);
+  a088=(a087*a003);
+  a089=(a088*a086);
+  a085=(a085+a089);
+  a089=(a060*a085);
+  a090=(a083*a027);
+  a091=(a090*a082);
+  a092=(a087*a029);
+  a093=(a092*a086);
+  a091=(a091+a093);
+  a093=(a035*a091);
+  a089=(a089-a093);
+  a093=(a036*a089);
+  a094=(a038*a091);
+  a095=(a059*a085);
+  a094=(a094-a095);
+  a095=(a040*a094);
+  a093=(a093+a095);
+  a095=(a039*a086);
+  a096=(a026*a029);
+  a097=(a027*a003);
+  a096=(a096-a097);
+  a097=(a095*a096);
+  a098=(a097*a086);
+  a093=(a093+a098);
+  a098=(a035*a093);
+  a081=(a081+a098);
+  a098=(a043*a057);
+  a099=(a061*a065);
+  a098=(a098-a099);
+  a099=(a012*a098);
+  a100=(a099*a025);
+  a101=(a100*a098);
+  a102=(a062*a065);
+  a103=(a046*a057);
+  a102=(a102-a103);
+  a103=(a012*a102);
+  a104=(a103*a005);
+  a105=(a104*a102);
+  a101=(a101+a105);
+  a105=(a061*a101);
+  a106=(a099*a024);
+  a107=(a106*a098);
+  a108=(a103*a002);
+  a109=(a108*a102);
+  a107=(a107+a109);
+  a109=(a043*a107);
+  a105=(a105-a109);
+  a109=(a044*a105);
+  a110=(a046*a107);
+  a111=(a062*a101);
+  a110=(a110-a111);
+  a111=(a048*a110);
+  a109=(a109+a111);
+  a111=(a047*a102);
+  a112=(a025*a002);
+  a113=(a024*a005);
+  a112=(a112-a113);
+  a113=(a111*a112);
+  a114=(a113*a102);
+  a109=(a109+a114);
+  a114=(a043*a109);
+  a081=(a081+a114);
+  a114=(a022*a072);
+  a115=(a050*a077);
+  a114=(a114+a115);
+  a115=(a021*a064);
+  a116=(a115*a079);
+  a117=(a116*a064);
+  a114=(a114-a117);
+  a117=(a020*a114);
+  a081=(a081-a117);
+  a117=(a040*a089);
+  a118=(a052*a094);
+  a117=(a117+a118);
+  a118=(a039*a082);
+  a119=(a118*a096);
+  a120=(a119*a082);
+  a117=(a117-a120);
+  a120=(a038*a117);
+  a081=(a081-a120);
+  a120=(a048*a105);
+  a121=(a054*a110);
+  a120=(a120+a121);
+  a121=(a047*a098);
+  a122=(a121*a112);
+  a123=(a122*a098);
+  a120=(a120-a123);
+  a123=(a046*a120);
+  a081=(a081-a123);
+  a023=(a023+a081);
+  a081=arg[3]? arg[3][12] : 0;
+  a123=0.;
+  a124=(a123<=a064);
+  a125=(a124?a004:0);
+  a124=(!a124);
+  a126=-1.;
+  a124=(a124?a126:0);
+  a125=(a125+a124);
+  a081=(a081*a125);
+  a125=arg[3]? arg[3][9] : 0;
+  a124=(a125*a064);
+  a081=(a081+a124);
+  a124=(a017*a081);
+  a127=arg[3]? arg[3][13] : 0;
+  a128=(a123<=a082);
+  a129=(a128?a004:0);
+  a128=(!a128);
+  a128=(a128?a126:0);
+  a129=(a129+a128);
+  a127=(a127*a129);
+  a129=arg[3]? arg[3][10] : 0;
+  a128=(a129*a082);
+  a127=(a127+a128);
+  a128=(a035*a127);
+  a124=(a124+a128);
+  a128=arg[3]? arg[3][14] : 0;
+  a123=(a123<=a098);
+  a130=(a123?a004:0);
+  a123=(!a123);
+  a123=(a123?a126:0);
+  a130=(a130+a123);
+  a128=(a128*a130);
+  a130=arg[3]? arg[3][11] : 0;
+  a123=(a130*a098);
+  a128=(a128+a123);
+  a123=(a043*a128);
+  a124=(a124+a123);
+  a023=(a023+a124);
+  if (res[0]!=0) res[0][0]=a023;
+  a023=(a056*a022);
+  a124=(a058*a018);
+  a023=(a023-a124);
+  a124=(a023*a017);
+  a123=(a059*a040);
+  a126=(a060*a036);
+  a123=(a123-a126);
+  a126=(a123*a035);
+  a124=(a124+a126);
+  a126=(a062*a048);
+  a131=(a061*a044);
+  a126=(a126-a131);
+  a131=(a126*a043);
+  a124=(a124+a131);
+  a131=(a056*a050);
+  a132=(a058*a022);
+  a131=(a131-a132);
+  a132=(a131*a020);
+  a124=(a124-a132);
+  a132=(a059*a052);
+  a133=(a060*a040);
+  a132=(a132-a133);
+  a133=(a132*a038);
+  a124=(a124-a133);
+  a133=(a062*a054);
+  a134=(a061*a048);
+  a133=(a133-a134);
+  a134=(a133*a046);
+  a124=(a124-a134);
+  a124=(a124*a055);
+  a134=(a131*a056);
+  a135=(a023*a058);
+  a136=(a123*a060);
+  a135=(a135+a136);
+  a136=(a126*a061);
+  a135=(a135+a136);
+  a134=(a134-a135);
+  a135=(a132*a059);
+  a134=(a134+a135);
+  a135=(a133*a062);
+  a134=(a134+a135);
+  a134=(a134*a063);
+  a124=(a124+a134);
+  a134=(a056*a114);
+  a135=(a058*a076);
+  a136=(a060*a093);
+  a135=(a135+a136);
+  a136=(a061*a109);
+  a135=(a135+a136);
+  a134=(a134-a135);
+  a135=(a059*a117);
+  a134=(a134+a135);
+  a135=(a062*a120);
+  a134=(a134+a135);
+  a124=(a124+a134);
+  a134=(a058*a081);
+  a135=(a060*a127);
+  a134=(a134+a135);
+  a135=(a061*a128);
+  a134=(a134+a135);
+  a124=(a124-a134);
+  if (res[0]!=0) res[0][1]=a124;
+  a124=(a064*a020);
+  a134=(a115*a124);
+  a135=(a069*a017);
+  a136=(a078*a135);
+  a134=(a134+a136);
+  a136=(a007*a134);
+  a137=(a022*a017);
+  a138=(a050*a020);
+  a137=(a137-a138);
+  a138=(a020*a137);
+  a139=(a018*a017);
+  a140=(a022*a020);
+  a139=(a139-a140);
+  a140=(a017*a139);
+  a138=(a138-a140);
+  a140=(a069*a138);
+  a141=(a070*a140);
+  a136=(a136+a141);
+  a141=(a077*a017);
+  a142=(a072*a020);
+  a141=(a141-a142);
+  a142=(a056*a063);
+  a143=(a020*a055);
+  a142=(a142-a143);
+  a143=(a017*a142);
+  a141=(a141+a143);
+  a143=(a017*a055);
+  a144=(a058*a063);
+  a143=(a143-a144);
+  a144=(a020*a143);
+  a141=(a141-a144);
+  a141=(a021*a141);
+  a144=(a010*a141);
+  a136=(a136+a144);
+  a144=(a125*a017);
+  a145=(a057*a144);
+  a145=(a081+a145);
+  a145=(a145+a076);
+  a146=(a074*a139);
+  a145=(a145-a146);
+  a146=(a073*a138);
+  a147=(a058*a139);
+  a148=(a056*a137);
+  a147=(a147-a148);
+  a148=(a067*a147);
+  a146=(a146+a148);
+  a148=(a057*a146);
+  a145=(a145+a148);
+  a148=(a116*a020);
+  a124=(a079*a124);
+  a124=(a021*a124);
+  a148=(a148+a124);
+  a124=(a064*a138);
+  a149=(a010*a124);
+  a149=(a012*a149);
+  a148=(a148+a149);
+  a149=(a064*a147);
+  a150=(a007*a149);
+  a150=(a012*a150);
+  a148=(a148+a150);
+  a150=(a057*a148);
+  a145=(a145+a150);
+  a150=(a022*a142);
+  a145=(a145+a150);
+  a151=(a019*a055);
+  a145=(a145+a151);
+  a151=(a018*a143);
+  a145=(a145+a151);
+  a152=(a145/a015);
+  a153=(a058/a015);
+  a139=(a068*a139);
+  a154=(a065*a144);
+  a139=(a139-a154);
+  a154=(a065*a146);
+  a139=(a139-a154);
+  a154=(a065*a148);
+  a139=(a139-a154);
+  a019=(a019*a063);
+  a139=(a139-a019);
+  a019=(a153*a139);
+  a154=(a056/a015);
+  a138=(a075*a138);
+  a155=(a071*a147);
+  a138=(a138+a155);
+  a155=(a065*a138);
+  a156=(a068*a137);
+  a155=(a155-a156);
+  a156=(a080*a017);
+  a135=(a079*a135);
+  a135=(a021*a135);
+  a156=(a156+a135);
+  a140=(a008*a140);
+  a140=(a012*a140);
+  a156=(a156+a140);
+  a147=(a069*a147);
+  a140=(a013*a147);
+  a140=(a012*a140);
+  a156=(a156+a140);
+  a140=(a065*a156);
+  a155=(a155+a140);
+  a140=(a049*a063);
+  a155=(a155+a140);
+  a140=(a154*a155);
+  a019=(a019+a140);
+  a140=(a020/a015);
+  a137=(a074*a137);
+  a137=(a137-a114);
+  a135=(a057*a138);
+  a137=(a137-a135);
+  a135=(a057*a156);
+  a137=(a137-a135);
+  a049=(a049*a055);
+  a137=(a137-a049);
+  a049=(a050*a142);
+  a137=(a137-a049);
+  a135=(a022*a143);
+  a137=(a137-a135);
+  a157=(a140*a137);
+  a019=(a019+a157);
+  a157=(a017/a015);
+  a145=(a157*a145);
+  a019=(a019+a145);
+  a145=(a014*a019);
+  a152=(a152-a145);
+  a152=(a000*a152);
+  a136=(a136+a152);
+  a152=(a013*a020);
+  a145=(a136*a152);
+  a124=(a066*a124);
+  a158=(a013*a134);
+  a124=(a124-a158);
+  a158=(a008*a141);
+  a124=(a124+a158);
+  a137=(a137/a015);
+  a158=(a006*a019);
+  a137=(a137+a158);
+  a137=(a000*a137);
+  a124=(a124+a137);
+  a137=(a007*a017);
+  a158=(a124*a137);
+  a159=(a040*a035);
+  a160=(a052*a038);
+  a159=(a159-a160);
+  a160=(a038*a159);
+  a161=(a036*a035);
+  a162=(a040*a038);
+  a161=(a161-a162);
+  a162=(a035*a161);
+  a160=(a160-a162);
+  a162=(a082*a160);
+  a163=(a083*a162);
+  a164=(a082*a038);
+  a165=(a118*a164);
+  a166=(a086*a035);
+  a167=(a095*a166);
+  a165=(a165+a167);
+  a167=(a003*a165);
+  a163=(a163-a167);
+  a167=(a094*a035);
+  a168=(a089*a038);
+  a167=(a167-a168);
+  a168=(a059*a063);
+  a169=(a038*a055);
+  a168=(a168-a169);
+  a169=(a035*a168);
+  a167=(a167+a169);
+  a169=(a035*a055);
+  a170=(a060*a063);
+  a169=(a169-a170);
+  a170=(a038*a169);
+  a167=(a167-a170);
+  a167=(a039*a167);
+  a170=(a029*a167);
+  a163=(a163+a170);
+  a170=(a091*a159);
+  a170=(a170-a117);
+  a171=(a092*a160);
+  a172=(a060*a161);
+  a173=(a059*a159);
+  a172=(a172-a173);
+  a173=(a088*a172);
+  a171=(a171+a173);
+  a173=(a057*a171);
+  a170=(a170-a173);
+  a173=(a097*a035);
+  a166=(a096*a166);
+  a166=(a039*a166);
+  a173=(a173+a166);
+  a166=(a086*a160);
+  a174=(a029*a166);
+  a174=(a012*a174);
+  a173=(a173+a174);
+  a174=(a086*a172);
+  a175=(a003*a174);
+  a175=(a012*a175);
+  a173=(a173+a175);
+  a175=(a057*a173);
+  a170=(a170-a175);
+  a175=(a051*a055);
+  a170=(a170-a175);
+  a175=(a052*a168);
+  a170=(a170-a175);
+  a176=(a040*a169);
+  a170=(a170-a176);
+  a177=(a170/a032);
+  a178=(a059/a032);
+  a179=(a065*a171);
+  a159=(a085*a159);
+  a179=(a179-a159);
+  a159=(a065*a173);
+  a179=(a179+a159);
+  a051=(a051*a063);
+  a179=(a179+a051);
+  a051=(a178*a179);
+  a159=(a060/a032);
+  a180=(a085*a161);
+  a181=(a129*a035);
+  a182=(a065*a181);
+  a180=(a180-a182);
+  a160=(a090*a160);
+  a182=(a084*a172);
+  a160=(a160+a182);
+  a182=(a065*a160);
+  a180=(a180-a182);
+  a182=(a119*a038);
+  a164=(a096*a164);
+  a164=(a039*a164);
+  a182=(a182+a164);
+  a162=(a027*a162);
+  a162=(a012*a162);
+  a182=(a182+a162);
+  a172=(a082*a172);
+  a162=(a026*a172);
+  a162=(a012*a162);
+  a182=(a182+a162);
+  a162=(a065*a182);
+  a180=(a180-a162);
+  a162=(a037*a063);
+  a180=(a180-a162);
+  a162=(a159*a180);
+  a051=(a051+a162);
+  a162=(a038/a032);
+  a170=(a162*a170);
+  a051=(a051+a170);
+  a170=(a035/a032);
+  a164=(a057*a181);
+  a164=(a127+a164);
+  a164=(a164+a093);
+  a161=(a091*a161);
+  a164=(a164-a161);
+  a161=(a057*a160);
+  a164=(a164+a161);
+  a161=(a057*a182);
+  a164=(a164+a161);
+  a161=(a040*a168);
+  a164=(a164+a161);
+  a037=(a037*a055);
+  a164=(a164+a037);
+  a037=(a036*a169);
+  a164=(a164+a037);
+  a183=(a170*a164);
+  a051=(a051+a183);
+  a183=(a033*a051);
+  a177=(a177+a183);
+  a177=(a000*a177);
+  a163=(a163+a177);
+  a177=(a026*a035);
+  a183=(a163*a177);
+  a158=(a158+a183);
+  a183=(a048*a043);
+  a184=(a054*a046);
+  a183=(a183-a184);
+  a184=(a046*a183);
+  a185=(a044*a043);
+  a186=(a048*a046);
+  a185=(a185-a186);
+  a186=(a043*a185);
+  a184=(a184-a186);
+  a186=(a098*a184);
+  a187=(a099*a186);
+  a188=(a098*a046);
+  a189=(a121*a188);
+  a190=(a102*a043);
+  a191=(a111*a190);
+  a189=(a189+a191);
+  a191=(a005*a189);
+  a187=(a187-a191);
+  a191=(a110*a043);
+  a192=(a105*a046);
+  a191=(a191-a192);
+  a192=(a062*a063);
+  a193=(a046*a055);
+  a192=(a192-a193);
+  a193=(a043*a192);
+  a191=(a191+a193);
+  a193=(a043*a055);
+  a194=(a061*a063);
+  a193=(a193-a194);
+  a194=(a046*a193);
+  a191=(a191-a194);
+  a191=(a047*a191);
+  a194=(a002*a191);
+  a187=(a187+a194);
+  a194=(a107*a183);
+  a194=(a194-a120);
+  a195=(a108*a184);
+  a196=(a061*a185);
+  a197=(a062*a183);
+  a196=(a196-a197);
+  a197=(a104*a196);
+  a195=(a195+a197);
+  a197=(a057*a195);
+  a194=(a194-a197);
+  a197=(a113*a043);
+  a190=(a112*a190);
+  a190=(a047*a190);
+  a197=(a197+a190);
+  a190=(a102*a184);
+  a198=(a002*a190);
+  a198=(a012*a198);
+  a197=(a197+a198);
+  a198=(a102*a196);
+  a199=(a005*a198);
+  a199=(a012*a199);
+  a197=(a197+a199);
+  a199=(a057*a197);
+  a194=(a194-a199);
+  a199=(a053*a055);
+  a194=(a194-a199);
+  a199=(a054*a192);
+  a194=(a194-a199);
+  a200=(a048*a193);
+  a194=(a194-a200);
+  a201=(a194/a042);
+  a202=(a062/a042);
+  a203=(a065*a195);
+  a183=(a101*a183);
+  a203=(a203-a183);
+  a183=(a065*a197);
+  a203=(a203+a183);
+  a053=(a053*a063);
+  a203=(a203+a053);
+  a053=(a202*a203);
+  a183=(a061/a042);
+  a204=(a101*a185);
+  a205=(a130*a043);
+  a206=(a065*a205);
+  a204=(a204-a206);
+  a184=(a106*a184);
+  a206=(a100*a196);
+  a184=(a184+a206);
+  a206=(a065*a184);
+  a204=(a204-a206);
+  a206=(a122*a046);
+  a188=(a112*a188);
+  a188=(a047*a188);
+  a206=(a206+a188);
+  a186=(a024*a186);
+  a186=(a012*a186);
+  a206=(a206+a186);
+  a196=(a098*a196);
+  a186=(a025*a196);
+  a186=(a012*a186);
+  a206=(a206+a186);
+  a186=(a065*a206);
+  a204=(a204-a186);
+  a186=(a045*a063);
+  a204=(a204-a186);
+  a186=(a183*a204);
+  a053=(a053+a186);
+  a186=(a046/a042);
+  a194=(a186*a194);
+  a053=(a053+a194);
+  a194=(a043/a042);
+  a188=(a057*a205);
+  a188=(a128+a188);
+  a188=(a188+a109);
+  a185=(a107*a185);
+  a188=(a188-a185);
+  a185=(a057*a184);
+  a188=(a188+a185);
+  a185=(a057*a206);
+  a188=(a188+a185);
+  a185=(a048*a192);
+  a188=(a188+a185);
+  a045=(a045*a055);
+  a188=(a188+a045);
+  a045=(a044*a193);
+  a188=(a188+a045);
+  a207=(a194*a188);
+  a053=(a053+a207);
+  a207=(a028*a053);
+  a201=(a201+a207);
+  a201=(a000*a201);
+  a187=(a187+a201);
+  a201=(a025*a043);
+  a207=(a187*a201);
+  a158=(a158+a207);
+  a145=(a145-a158);
+  a158=(a026*a165);
+  a166=(a087*a166);
+  a158=(a158+a166);
+  a166=(a027*a167);
+  a158=(a158+a166);
+  a164=(a164/a032);
+  a166=(a031*a051);
+  a164=(a164-a166);
+  a164=(a000*a164);
+  a158=(a158+a164);
+  a164=(a003*a038);
+  a166=(a158*a164);
+  a145=(a145+a166);
+  a166=(a025*a189);
+  a190=(a103*a190);
+  a166=(a166+a190);
+  a190=(a024*a191);
+  a166=(a166+a190);
+  a188=(a188/a042);
+  a190=(a001*a053);
+  a188=(a188-a190);
+  a188=(a000*a188);
+  a166=(a166+a188);
+  a188=(a005*a046);
+  a190=(a166*a188);
+  a145=(a145+a190);
+  a190=(a008*a134);
+  a149=(a066*a149);
+  a190=(a190+a149);
+  a149=(a013*a141);
+  a190=(a190+a149);
+  a155=(a155/a015);
+  a149=(a011*a019);
+  a155=(a155-a149);
+  a155=(a012*a155);
+  a190=(a190+a155);
+  a155=(a010*a017);
+  a149=(a190*a155);
+  a207=(a029*a165);
+  a172=(a083*a172);
+  a207=(a207+a172);
+  a172=(a003*a167);
+  a207=(a207+a172);
+  a179=(a179/a032);
+  a172=(a030*a051);
+  a179=(a179-a172);
+  a179=(a012*a179);
+  a207=(a207+a179);
+  a179=(a027*a035);
+  a172=(a207*a179);
+  a149=(a149+a172);
+  a172=(a002*a189);
+  a196=(a099*a196);
+  a172=(a172+a196);
+  a196=(a005*a191);
+  a172=(a172+a196);
+  a203=(a203/a042);
+  a196=(a009*a053);
+  a203=(a203-a196);
+  a203=(a012*a203);
+  a172=(a172+a203);
+  a203=(a024*a043);
+  a196=(a172*a203);
+  a149=(a149+a196);
+  a147=(a070*a147);
+  a134=(a010*a134);
+  a147=(a147-a134);
+  a141=(a007*a141);
+  a147=(a147+a141);
+  a139=(a139/a015);
+  a019=(a016*a019);
+  a139=(a139+a019);
+  a139=(a012*a139);
+  a147=(a147+a139);
+  a139=(a008*a020);
+  a019=(a147*a139);
+  a149=(a149-a019);
+  a174=(a087*a174);
+  a165=(a027*a165);
+  a174=(a174-a165);
+  a167=(a026*a167);
+  a174=(a174+a167);
+  a180=(a180/a032);
+  a051=(a034*a051);
+  a180=(a180+a051);
+  a180=(a012*a180);
+  a174=(a174+a180);
+  a180=(a029*a038);
+  a051=(a174*a180);
+  a149=(a149-a051);
+  a198=(a103*a198);
+  a189=(a024*a189);
+  a198=(a198-a189);
+  a191=(a025*a191);
+  a198=(a198+a191);
+  a204=(a204/a042);
+  a053=(a041*a053);
+  a204=(a204+a053);
+  a204=(a012*a204);
+  a198=(a198+a204);
+  a204=(a002*a046);
+  a053=(a198*a204);
+  a149=(a149-a053);
+  a145=(a145+a149);
+  if (res[1]!=0) res[1][0]=a145;
+  a145=(a007*a058);
+  a124=(a124*a145);
+  a149=(a026*a060);
+  a163=(a163*a149);
+  a124=(a124+a163);
+  a163=(a025*a061);
+  a187=(a187*a163);
+  a124=(a124+a187);
+  a187=(a013*a056);
+  a136=(a136*a187);
+  a124=(a124-a136);
+  a136=(a003*a059);
+  a158=(a158*a136);
+  a124=(a124-a158);
+  a158=(a005*a062);
+  a166=(a166*a158);
+  a124=(a124-a166);
+  a166=(a008*a056);
+  a147=(a147*a166);
+  a053=(a010*a058);
+  a190=(a190*a053);
+  a191=(a027*a060);
+  a207=(a207*a191);
+  a190=(a190+a207);
+  a207=(a024*a061);
+  a172=(a172*a207);
+  a190=(a190+a172);
+  a147=(a147-a190);
+  a190=(a029*a059);
+  a174=(a174*a190);
+  a147=(a147+a174);
+  a174=(a002*a062);
+  a198=(a198*a174);
+  a147=(a147+a198);
+  a124=(a124+a147);
+  if (res[1]!=0) res[1][1]=a124;
+  a050=(a050*a056);
+  a124=(a022*a058);
+  a050=(a050-a124);
+  a124=(a020*a050);
+  a022=(a022*a056);
+  a018=(a018*a058);
+  a022=(a022-a018);
+  a018=(a017*a022);
+  a124=(a124-a018);
+  a018=(a069*a124);
+  a147=(a070*a018);
+  a198=(a064*a056);
+  a115=(a115*a198);
+  a172=(a069*a058);
+  a078=(a078*a172);
+  a115=(a115+a078);
+  a078=(a007*a115);
+  a147=(a147-a078);
+  a143=(a056*a143);
+  a142=(a058*a142);
+  a143=(a143-a142);
+  a072=(a072*a056);
+  a143=(a143+a072);
+  a077=(a077*a058);
+  a143=(a143-a077);
+  a143=(a021*a143);
+  a077=(a010*a143);
+  a147=(a147+a077);
+  a077=(a023*a055);
+  a125=(a125*a058);
+  a072=(a057*a125);
+  a077=(a077-a072);
+  a072=(a074*a022);
+  a077=(a077-a072);
+  a073=(a073*a124);
+  a072=(a058*a022);
+  a142=(a056*a050);
+  a072=(a072-a142);
+  a067=(a067*a072);
+  a073=(a073+a067);
+  a067=(a057*a073);
+  a077=(a077+a067);
+  a067=(a064*a124);
+  a142=(a010*a067);
+  a142=(a012*a142);
+  a116=(a116*a056);
+  a198=(a079*a198);
+  a198=(a021*a198);
+  a116=(a116+a198);
+  a142=(a142-a116);
+  a064=(a064*a072);
+  a116=(a007*a064);
+  a116=(a012*a116);
+  a142=(a142+a116);
+  a116=(a057*a142);
+  a077=(a077+a116);
+  a116=(a077/a015);
+  a198=(a065*a125);
+  a081=(a081+a076);
+  a023=(a023*a063);
+  a081=(a081+a023);
+  a081=(a081+a150);
+  a081=(a081+a151);
+  a198=(a198-a081);
+  a022=(a068*a022);
+  a198=(a198+a022);
+  a022=(a065*a073);
+  a198=(a198-a022);
+  a022=(a065*a142);
+  a198=(a198-a022);
+  a153=(a153*a198);
+  a022=(a131*a063);
+  a114=(a114+a022);
+  a114=(a114+a049);
+  a114=(a114+a135);
+  a068=(a068*a050);
+  a114=(a114-a068);
+  a075=(a075*a124);
+  a071=(a071*a072);
+  a075=(a075+a071);
+  a071=(a065*a075);
+  a114=(a114+a071);
+  a018=(a008*a018);
+  a018=(a012*a018);
+  a080=(a080*a058);
+  a172=(a079*a172);
+  a021=(a021*a172);
+  a080=(a080+a021);
+  a018=(a018-a080);
+  a069=(a069*a072);
+  a072=(a013*a069);
+  a072=(a012*a072);
+  a018=(a018+a072);
+  a072=(a065*a018);
+  a114=(a114+a072);
+  a154=(a154*a114);
+  a153=(a153+a154);
+  a074=(a074*a050);
+  a131=(a131*a055);
+  a074=(a074-a131);
+  a131=(a057*a075);
+  a074=(a074-a131);
+  a131=(a057*a018);
+  a074=(a074-a131);
+  a140=(a140*a074);
+  a153=(a153+a140);
+  a157=(a157*a077);
+  a153=(a153+a157);
+  a014=(a014*a153);
+  a116=(a116-a014);
+  a116=(a000*a116);
+  a147=(a147+a116);
+  a152=(a147*a152);
+  a116=(a013*a115);
+  a067=(a066*a067);
+  a116=(a116+a067);
+  a067=(a008*a143);
+  a116=(a116+a067);
+  a074=(a074/a015);
+  a006=(a006*a153);
+  a074=(a074+a006);
+  a074=(a000*a074);
+  a116=(a116+a074);
+  a137=(a116*a137);
+  a074=(a082*a059);
+  a118=(a118*a074);
+  a006=(a086*a060);
+  a095=(a095*a006);
+  a118=(a118+a095);
+  a095=(a003*a118);
+  a052=(a052*a059);
+  a067=(a040*a060);
+  a052=(a052-a067);
+  a067=(a038*a052);
+  a040=(a040*a059);
+  a036=(a036*a060);
+  a040=(a040-a036);
+  a036=(a035*a040);
+  a067=(a067-a036);
+  a036=(a082*a067);
+  a014=(a083*a036);
+  a095=(a095+a014);
+  a169=(a059*a169);
+  a168=(a060*a168);
+  a169=(a169-a168);
+  a089=(a089*a059);
+  a169=(a169+a089);
+  a094=(a094*a060);
+  a169=(a169-a094);
+  a169=(a039*a169);
+  a094=(a029*a169);
+  a095=(a095+a094);
+  a094=(a091*a052);
+  a089=(a132*a055);
+  a094=(a094-a089);
+  a092=(a092*a067);
+  a089=(a060*a040);
+  a168=(a059*a052);
+  a089=(a089-a168);
+  a088=(a088*a089);
+  a092=(a092+a088);
+  a088=(a057*a092);
+  a094=(a094-a088);
+  a088=(a086*a067);
+  a168=(a029*a088);
+  a168=(a012*a168);
+  a097=(a097*a060);
+  a006=(a096*a006);
+  a006=(a039*a006);
+  a097=(a097+a006);
+  a168=(a168-a097);
+  a086=(a086*a089);
+  a097=(a003*a086);
+  a097=(a012*a097);
+  a168=(a168+a097);
+  a097=(a057*a168);
+  a094=(a094-a097);
+  a097=(a094/a032);
+  a132=(a132*a063);
+  a117=(a117+a132);
+  a117=(a117+a175);
+  a117=(a117+a176);
+  a052=(a085*a052);
+  a117=(a117-a052);
+  a052=(a065*a092);
+  a117=(a117+a052);
+  a052=(a065*a168);
+  a117=(a117+a052);
+  a178=(a178*a117);
+  a129=(a129*a060);
+  a052=(a065*a129);
+  a127=(a127+a093);
+  a093=(a123*a063);
+  a127=(a127+a093);
+  a127=(a127+a161);
+  a127=(a127+a037);
+  a052=(a052-a127);
+  a085=(a085*a040);
+  a052=(a052+a085);
+  a090=(a090*a067);
+  a084=(a084*a089);
+  a090=(a090+a084);
+  a084=(a065*a090);
+  a052=(a052-a084);
+  a036=(a027*a036);
+  a036=(a012*a036);
+  a119=(a119*a059);
+  a074=(a096*a074);
+  a039=(a039*a074);
+  a119=(a119+a039);
+  a036=(a036-a119);
+  a082=(a082*a089);
+  a089=(a026*a082);
+  a089=(a012*a089);
+  a036=(a036+a089);
+  a089=(a065*a036);
+  a052=(a052-a089);
+  a159=(a159*a052);
+  a178=(a178+a159);
+  a162=(a162*a094);
+  a178=(a178+a162);
+  a123=(a123*a055);
+  a162=(a057*a129);
+  a123=(a123-a162);
+  a091=(a091*a040);
+  a123=(a123-a091);
+  a091=(a057*a090);
+  a123=(a123+a091);
+  a091=(a057*a036);
+  a123=(a123+a091);
+  a170=(a170*a123);
+  a178=(a178+a170);
+  a033=(a033*a178);
+  a097=(a097+a033);
+  a097=(a000*a097);
+  a095=(a095+a097);
+  a177=(a095*a177);
+  a137=(a137+a177);
+  a177=(a098*a062);
+  a121=(a121*a177);
+  a097=(a102*a061);
+  a111=(a111*a097);
+  a121=(a121+a111);
+  a111=(a005*a121);
+  a054=(a054*a062);
+  a033=(a048*a061);
+  a054=(a054-a033);
+  a033=(a046*a054);
+  a048=(a048*a062);
+  a044=(a044*a061);
+  a048=(a048-a044);
+  a044=(a043*a048);
+  a033=(a033-a044);
+  a044=(a098*a033);
+  a170=(a099*a044);
+  a111=(a111+a170);
+  a193=(a062*a193);
+  a192=(a061*a192);
+  a193=(a193-a192);
+  a105=(a105*a062);
+  a193=(a193+a105);
+  a110=(a110*a061);
+  a193=(a193-a110);
+  a193=(a047*a193);
+  a110=(a002*a193);
+  a111=(a111+a110);
+  a110=(a107*a054);
+  a105=(a133*a055);
+  a110=(a110-a105);
+  a108=(a108*a033);
+  a105=(a061*a048);
+  a192=(a062*a054);
+  a105=(a105-a192);
+  a104=(a104*a105);
+  a108=(a108+a104);
+  a104=(a057*a108);
+  a110=(a110-a104);
+  a104=(a102*a033);
+  a192=(a002*a104);
+  a192=(a012*a192);
+  a113=(a113*a061);
+  a097=(a112*a097);
+  a097=(a047*a097);
+  a113=(a113+a097);
+  a192=(a192-a113);
+  a102=(a102*a105);
+  a113=(a005*a102);
+  a113=(a012*a113);
+  a192=(a192+a113);
+  a113=(a057*a192);
+  a110=(a110-a113);
+  a113=(a110/a042);
+  a133=(a133*a063);
+  a120=(a120+a133);
+  a120=(a120+a199);
+  a120=(a120+a200);
+  a054=(a101*a054);
+  a120=(a120-a054);
+  a054=(a065*a108);
+  a120=(a120+a054);
+  a054=(a065*a192);
+  a120=(a120+a054);
+  a202=(a202*a120);
+  a130=(a130*a061);
+  a054=(a065*a130);
+  a128=(a128+a109);
+  a063=(a126*a063);
+  a128=(a128+a063);
+  a128=(a128+a185);
+  a128=(a128+a045);
+  a054=(a054-a128);
+  a101=(a101*a048);
+  a054=(a054+a101);
+  a106=(a106*a033);
+  a100=(a100*a105);
+  a106=(a106+a100);
+  a100=(a065*a106);
+  a054=(a054-a100);
+  a044=(a024*a044);
+  a044=(a012*a044);
+  a122=(a122*a062);
+  a177=(a112*a177);
+  a047=(a047*a177);
+  a122=(a122+a047);
+  a044=(a044-a122);
+  a098=(a098*a105);
+  a105=(a025*a098);
+  a105=(a012*a105);
+  a044=(a044+a105);
+  a065=(a065*a044);
+  a054=(a054-a065);
+  a183=(a183*a054);
+  a202=(a202+a183);
+  a186=(a186*a110);
+  a202=(a202+a186);
+  a126=(a126*a055);
+  a055=(a057*a130);
+  a126=(a126-a055);
+  a107=(a107*a048);
+  a126=(a126-a107);
+  a107=(a057*a106);
+  a126=(a126+a107);
+  a057=(a057*a044);
+  a126=(a126+a057);
+  a194=(a194*a126);
+  a202=(a202+a194);
+  a028=(a028*a202);
+  a113=(a113+a028);
+  a113=(a000*a113);
+  a111=(a111+a113);
+  a201=(a111*a201);
+  a137=(a137+a201);
+  a152=(a152-a137);
+  a088=(a087*a088);
+  a137=(a026*a118);
+  a088=(a088-a137);
+  a137=(a027*a169);
+  a088=(a088+a137);
+  a123=(a123/a032);
+  a031=(a031*a178);
+  a123=(a123-a031);
+  a123=(a000*a123);
+  a088=(a088+a123);
+  a164=(a088*a164);
+  a152=(a152+a164);
+  a104=(a103*a104);
+  a164=(a025*a121);
+  a104=(a104-a164);
+  a164=(a024*a193);
+  a104=(a104+a164);
+  a126=(a126/a042);
+  a001=(a001*a202);
+  a126=(a126-a001);
+  a000=(a000*a126);
+  a104=(a104+a000);
+  a188=(a104*a188);
+  a152=(a152+a188);
+  a066=(a066*a064);
+  a064=(a008*a115);
+  a066=(a066-a064);
+  a064=(a013*a143);
+  a066=(a066+a064);
+  a114=(a114/a015);
+  a011=(a011*a153);
+  a114=(a114-a011);
+  a114=(a012*a114);
+  a066=(a066+a114);
+  a155=(a066*a155);
+  a083=(a083*a082);
+  a082=(a029*a118);
+  a083=(a083-a082);
+  a082=(a003*a169);
+  a083=(a083+a082);
+  a117=(a117/a032);
+  a030=(a030*a178);
+  a117=(a117-a030);
+  a117=(a012*a117);
+  a083=(a083+a117);
+  a179=(a083*a179);
+  a155=(a155+a179);
+  a099=(a099*a098);
+  a098=(a002*a121);
+  a099=(a099-a098);
+  a098=(a005*a193);
+  a099=(a099+a098);
+  a120=(a120/a042);
+  a009=(a009*a202);
+  a120=(a120-a009);
+  a120=(a012*a120);
+  a099=(a099+a120);
+  a203=(a099*a203);
+  a155=(a155+a203);
+  a010=(a010*a115);
+  a070=(a070*a069);
+  a010=(a010+a070);
+  a007=(a007*a143);
+  a010=(a010+a007);
+  a198=(a198/a015);
+  a016=(a016*a153);
+  a198=(a198+a016);
+  a198=(a012*a198);
+  a010=(a010+a198);
+  a139=(a010*a139);
+  a155=(a155-a139);
+  a027=(a027*a118);
+  a087=(a087*a086);
+  a027=(a027+a087);
+  a026=(a026*a169);
+  a027=(a027+a026);
+  a052=(a052/a032);
+  a034=(a034*a178);
+  a052=(a052+a034);
+  a052=(a012*a052);
+  a027=(a027+a052);
+  a180=(a027*a180);
+  a155=(a155-a180);
+  a024=(a024*a121);
+  a103=(a103*a102);
+  a024=(a024+a103);
+  a025=(a025*a193);
+  a024=(a024+a025);
+  a054=(a054/a042);
+  a041=(a041*a202);
+  a054=(a054+a041);
+  a012=(a012*a054);
+  a024=(a024+a012);
+  a204=(a024*a204);
+  a155=(a155-a204);
+  a152=(a152+a155);
+  if (res[1]!=0) res[1][2]=a152;
+  a116=(a116*a145);
+  a095=(a095*a149);
+  a116=(a116+a095);
+  a111=(a111*a163);
+  a116=(a116+a111);
+  a147=(a147*a187);
+  a116=(a116-a147);
+  a088=(a088*a136);
+  a116=(a116-a088);
+  a104=(a104*a158);
+  a116=(a116-a104);
+  a010=(a010*a166);
+  a066=(a066*a053);
+  a083=(a083*a191);
+  a066=(a066+a083);
+  a099=(a099*a207);
+  a066=(a066+a099);
+  a010=(a010-a066);
+  a027=(a027*a190);
+  a010=(a010+a027);
+  a024=(a024*a174);
+  a010=(a010+a024);
+  a116=(a116+a010);
+  if (res[1]!=0) res[1][3]=a116;
+  a116=(a043*a205);
+  a010=(a035*a181);
+  a116=(a116+a010);
+  a010=(a017*a144);
+  a116=(a116+a010);
+  a010=(a046*a195);
+  a116=(a116-a010);
+  a010=(a046*a197);
+  a116=(a116-a010);
+  a010=(a043*a184);
+  a116=(a116+a010);
+  a010=(a043*a206);
+  a116=(a116+a010);
+  a010=(a038*a171);
+  a116=(a116-a010);
+  a010=(a038*a173);
+  a116=(a116-a010);
+  a010=(a035*a160);
+  a116=(a116+a010);
+  a010=(a035*a182);
+  a116=(a116+a010);
+  a010=(a020*a138);
+  a116=(a116-a010);
+  a010=(a020*a156);
+  a116=(a116-a010);
+  a010=(a017*a146);
+  a116=(a116+a010);
+  a010=(a017*a148);
+  a116=(a116+a010);
+  if (res[2]!=0) res[2][0]=a116;
+  a195=(a062*a195);
+  a205=(a061*a205);
+  a181=(a060*a181);
+  a205=(a205+a181);
+  a144=(a058*a144);
+  a205=(a205+a144);
+  a195=(a195-a205);
+  a197=(a062*a197);
+  a195=(a195+a197);
+  a184=(a061*a184);
+  a195=(a195-a184);
+  a206=(a061*a206);
+  a195=(a195-a206);
+  a171=(a059*a171);
+  a195=(a195+a171);
+  a173=(a059*a173);
+  a195=(a195+a173);
+  a160=(a060*a160);
+  a195=(a195-a160);
+  a182=(a060*a182);
+  a195=(a195-a182);
+  a138=(a056*a138);
+  a195=(a195+a138);
+  a156=(a056*a156);
+  a195=(a195+a156);
+  a146=(a058*a146);
+  a195=(a195-a146);
+  a148=(a058*a148);
+  a195=(a195-a148);
+  if (res[2]!=0) res[2][1]=a195;
+  a195=(a043*a106);
+  a148=(a043*a130);
+  a146=(a035*a129);
+  a148=(a148+a146);
+  a146=(a017*a125);
+  a148=(a148+a146);
+  a146=(a046*a108);
+  a148=(a148+a146);
+  a046=(a046*a192);
+  a148=(a148+a046);
+  a195=(a195-a148);
+  a043=(a043*a044);
+  a195=(a195+a043);
+  a043=(a038*a092);
+  a195=(a195-a043);
+  a038=(a038*a168);
+  a195=(a195-a038);
+  a038=(a035*a090);
+  a195=(a195+a038);
+  a035=(a035*a036);
+  a195=(a195+a035);
+  a035=(a020*a075);
+  a195=(a195-a035);
+  a020=(a020*a018);
+  a195=(a195-a020);
+  a020=(a017*a073);
+  a195=(a195+a020);
+  a017=(a017*a142);
+  a195=(a195+a017);
+  if (res[2]!=0) res[2][2]=a195;
+  a130=(a061*a130);
+  a129=(a060*a129);
+  a130=(a130+a129);
+  a125=(a058*a125);
+  a130=(a130+a125);
+  a108=(a062*a108);
+  a130=(a130+a108);
+  a062=(a062*a192);
+  a130=(a130+a062);
+  a106=(a061*a106);
+  a130=(a130-a106);
+  a061=(a061*a044);
+  a130=(a130-a061);
+  a092=(a059*a092);
+  a130=(a130+a092);
+  a059=(a059*a168);
+  a130=(a130+a059);
+  a090=(a060*a090);
+  a130=(a130-a090);
+  a060=(a060*a036);
+  a130=(a130-a060);
+  a075=(a056*a075);
+  a130=(a130+a075);
+  a056=(a056*a018);
+  a130=(a130+a056);
+  a073=(a058*a073);
+  a130=(a130-a073);
+  a058=(a058*a142);
+  a130=(a130-a058);
+  if (res[2]!=0) res[2][3]=a130;
+  a079=casadi_fabs(a079);
+  a096=casadi_fabs(a096);
+  a130=(a079+a096);
+  a079=(a079-a096);
+  a079=casadi_fabs(a079);
+  a130=(a130-a079);
+  a079=2.;
+  a130=(a130/a079);
+  a112=casadi_fabs(a112);
+  a096=(a130+a112);
+  a130=(a130-a112);
+  a130=casadi_fabs(a130);
+  a096=(a096-a130);
+  a096=(a096/a079);
+  if (res[3]!=0) res[3][0]=a096;
+  a096=5.0000000000000000e-01;
+  a079=3.3333333333333331e-01;
+  a130=casadi_sq(a008);
+  a112=casadi_sq(a013);
+  a130=(a130-a112);
+  a112=casadi_sq(a029);
+  a058=casadi_sq(a003);
+  a112=(a112-a058);
+  a130=(a130+a112);
+  a112=casadi_sq(a002);
+  a058=casadi_sq(a005);
+  a112=(a112-a058);
+  a130=(a130+a112);
+  a130=casadi_sq(a130);
+  a008=(2.*a008);
+  a008=(a008*a013);
+  a029=(2.*a029);
+  a029=(a029*a003);
+  a008=(a008+a029);
+  a002=(2.*a002);
+  a002=(a002*a005);
+  a008=(a008+a002);
+  a008=casadi_sq(a008);
+  a130=(a130+a008);
+  a130=sqrt(a130);
+  a079=(a079*a130);
+  a004=(a004-a079);
+  a079=casadi_fabs(a004);
+  a004=(a004+a079);
+  a096=(a096*a004);
+  a096=sqrt(a096);
+  if (res[3]!=0) res[3][1]=a096;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f58(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_inverse_dynamics_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_inverse_dynamics_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_inverse_dynamics_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_inverse_dynamics_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_inverse_dynamics_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_inverse_dynamics_jacobians_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_inverse_dynamics_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_inverse_dynamics_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "xedd";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_inverse_dynamics_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "u";
+    case 1: return "d_xe";
+    case 2: return "d_xed";
+    case 3: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_inverse_dynamics_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_inverse_dynamics_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s3;
+    case 2: return casadi_s3;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_inverse_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_inverse_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_sampled_step_xedd:(xe[2],xed[2],tau_a[3],theta[15])->(xedd[2],sing[2]) */
+static int casadi_f60(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61;
+  a00=-2.4399999999999999e-01;
+  a01=-5.1229508196721307e-01;
+  a02=2.0491803278688523e+00;
+  a03=arg[0]? arg[0][1] : 0;
+  a04=(a02*a03);
+  a01=(a01+a04);
+  a05=arg[0]? arg[0][0] : 0;
+  a06=casadi_sq(a05);
+  a07=-2.5000000000000000e-01;
+  a07=(a07+a03);
+  a08=casadi_sq(a07);
+  a09=(a06+a08);
+  a09=sqrt(a09);
+  a10=(a05/a09);
+  a11=1.;
+  a12=-4.1991400161246979e+00;
+  a06=(a12*a06);
+  a06=(a11+a06);
+  a08=(a12*a08);
+  a06=(a06+a08);
+  a06=sqrt(a06);
+  a10=(a10*a06);
+  a08=(a01-a10);
+  a13=(a00*a08);
+  a14=2.4399999999999999e-01;
+  a02=(a02*a05);
+  a06=(a06/a09);
+  a06=(a06*a07);
+  a07=(a02-a06);
+  a09=(a14*a07);
+  a15=(a13*a09);
+  a01=(a01+a10);
+  a10=(a00*a01);
+  a06=(a02+a06);
+  a16=(a14*a06);
+  a17=(a10*a16);
+  a15=(a15-a17);
+  a13=(a13/a15);
+  a17=arg[3]? arg[3][6] : 0;
+  a18=(a13*a17);
+  a10=(a10/a15);
+  a19=arg[3]? arg[3][3] : 0;
+  a20=(a06*a07);
+  a21=(a08*a01);
+  a20=(a20+a21);
+  a20=(a19*a20);
+  a21=(a10*a20);
+  a18=(a18-a21);
+  a21=(a18*a13);
+  a22=(a13*a20);
+  a23=arg[3]? arg[3][0] : 0;
+  a24=(a10*a23);
+  a22=(a22-a24);
+  a24=(a22*a10);
+  a25=casadi_sq(a03);
+  a26=(a12*a25);
+  a26=(a11+a26);
+  a27=-4.3300000000000000e-01;
+  a27=(a27+a05);
+  a05=casadi_sq(a27);
+  a28=(a12*a05);
+  a26=(a26+a28);
+  a26=sqrt(a26);
+  a25=(a25+a05);
+  a25=sqrt(a25);
+  a29=(a26/a25);
+  a29=(a29*a27);
+  a30=(a04-a29);
+  a31=(a00*a30);
+  a32=-8.8729508196721307e-01;
+  a32=(a32+a02);
+  a25=(a03/a25);
+  a25=(a25*a26);
+  a26=(a32-a25);
+  a02=(a14*a26);
+  a33=(a31*a02);
+  a29=(a04+a29);
+  a34=(a00*a29);
+  a25=(a32+a25);
+  a35=(a14*a25);
+  a36=(a34*a35);
+  a33=(a33-a36);
+  a31=(a31/a33);
+  a36=arg[3]? arg[3][4] : 0;
+  a37=(a25*a26);
+  a38=(a30*a29);
+  a37=(a37+a38);
+  a37=(a36*a37);
+  a38=(a31*a37);
+  a34=(a34/a33);
+  a39=arg[3]? arg[3][1] : 0;
+  a40=(a34*a39);
+  a38=(a38-a40);
+  a40=(a38*a34);
+  a24=(a24+a40);
+  a40=-1.0245901639344261e+00;
+  a40=(a40+a04);
+  a28=(a11+a28);
+  a04=-5.0000000000000000e-01;
+  a04=(a04+a03);
+  a03=casadi_sq(a04);
+  a12=(a12*a03);
+  a28=(a28+a12);
+  a28=sqrt(a28);
+  a05=(a05+a03);
+  a05=sqrt(a05);
+  a28=(a28/a05);
+  a27=(a28*a27);
+  a05=(a40-a27);
+  a03=(a00*a05);
+  a28=(a28*a04);
+  a04=(a32-a28);
+  a12=(a14*a04);
+  a41=(a03*a12);
+  a40=(a40+a27);
+  a27=(a00*a40);
+  a32=(a32+a28);
+  a14=(a14*a32);
+  a28=(a27*a14);
+  a41=(a41-a28);
+  a03=(a03/a41);
+  a28=arg[3]? arg[3][5] : 0;
+  a42=(a32*a04);
+  a43=(a05*a40);
+  a42=(a42+a43);
+  a42=(a28*a42);
+  a43=(a03*a42);
+  a27=(a27/a41);
+  a44=arg[3]? arg[3][2] : 0;
+  a45=(a27*a44);
+  a43=(a43-a45);
+  a45=(a43*a27);
+  a24=(a24+a45);
+  a21=(a21-a24);
+  a24=arg[3]? arg[3][7] : 0;
+  a45=(a31*a24);
+  a46=(a34*a37);
+  a45=(a45-a46);
+  a46=(a45*a31);
+  a21=(a21+a46);
+  a46=arg[3]? arg[3][8] : 0;
+  a47=(a03*a46);
+  a48=(a27*a42);
+  a47=(a47-a48);
+  a48=(a47*a03);
+  a21=(a21+a48);
+  a09=(a09/a15);
+  a48=arg[2]? arg[2][0] : 0;
+  a49=(a09*a48);
+  a02=(a02/a33);
+  a50=arg[2]? arg[2][1] : 0;
+  a51=(a02*a50);
+  a49=(a49+a51);
+  a12=(a12/a41);
+  a51=arg[2]? arg[2][2] : 0;
+  a52=(a12*a51);
+  a49=(a49+a52);
+  a52=arg[1]? arg[1][0] : 0;
+  a53=(a09*a52);
+  a54=arg[1]? arg[1][1] : 0;
+  a55=(a10*a54);
+  a53=(a53-a55);
+  a55=(a00*a53);
+  a56=(a55*a08);
+  a56=(a56*a53);
+  a57=(a13*a54);
+  a16=(a16/a15);
+  a15=(a16*a52);
+  a57=(a57-a15);
+  a15=(a00*a57);
+  a58=(a15*a01);
+  a58=(a58*a57);
+  a56=(a56+a58);
+  a58=(a10*a56);
+  a55=(a55*a06);
+  a55=(a55*a53);
+  a15=(a15*a07);
+  a15=(a15*a57);
+  a55=(a55+a15);
+  a15=(a09*a55);
+  a58=(a58-a15);
+  a15=(a23*a58);
+  a55=(a16*a55);
+  a56=(a13*a56);
+  a55=(a55-a56);
+  a56=(a20*a55);
+  a15=(a15+a56);
+  a56=(a19*a57);
+  a08=(a08*a07);
+  a06=(a06*a01);
+  a08=(a08-a06);
+  a56=(a56*a08);
+  a56=(a56*a57);
+  a15=(a15+a56);
+  a56=(a09*a15);
+  a57=(a02*a52);
+  a06=(a34*a54);
+  a57=(a57-a06);
+  a06=(a00*a57);
+  a59=(a06*a30);
+  a59=(a59*a57);
+  a60=(a31*a54);
+  a35=(a35/a33);
+  a33=(a35*a52);
+  a60=(a60-a33);
+  a33=(a00*a60);
+  a61=(a33*a29);
+  a61=(a61*a60);
+  a59=(a59+a61);
+  a61=(a34*a59);
+  a06=(a06*a25);
+  a06=(a06*a57);
+  a33=(a33*a26);
+  a33=(a33*a60);
+  a06=(a06+a33);
+  a33=(a02*a06);
+  a61=(a61-a33);
+  a33=(a39*a61);
+  a06=(a35*a06);
+  a59=(a31*a59);
+  a06=(a06-a59);
+  a59=(a37*a06);
+  a33=(a33+a59);
+  a59=(a36*a60);
+  a30=(a30*a26);
+  a25=(a25*a29);
+  a30=(a30-a25);
+  a59=(a59*a30);
+  a59=(a59*a60);
+  a33=(a33+a59);
+  a59=(a02*a33);
+  a56=(a56+a59);
+  a59=(a12*a52);
+  a60=(a27*a54);
+  a59=(a59-a60);
+  a60=(a00*a59);
+  a25=(a60*a05);
+  a25=(a25*a59);
+  a54=(a03*a54);
+  a14=(a14/a41);
+  a52=(a14*a52);
+  a54=(a54-a52);
+  a00=(a00*a54);
+  a52=(a00*a40);
+  a52=(a52*a54);
+  a25=(a25+a52);
+  a52=(a27*a25);
+  a60=(a60*a32);
+  a60=(a60*a59);
+  a00=(a00*a04);
+  a00=(a00*a54);
+  a60=(a60+a00);
+  a00=(a12*a60);
+  a52=(a52-a00);
+  a00=(a44*a52);
+  a60=(a14*a60);
+  a25=(a03*a25);
+  a60=(a60-a25);
+  a25=(a42*a60);
+  a00=(a00+a25);
+  a25=(a28*a54);
+  a05=(a05*a04);
+  a32=(a32*a40);
+  a05=(a05-a32);
+  a25=(a25*a05);
+  a25=(a25*a54);
+  a00=(a00+a25);
+  a25=(a12*a00);
+  a56=(a56+a25);
+  a58=(a20*a58);
+  a55=(a17*a55);
+  a58=(a58+a55);
+  a19=(a19*a53);
+  a19=(a19*a08);
+  a19=(a19*a53);
+  a58=(a58-a19);
+  a19=(a16*a58);
+  a56=(a56-a19);
+  a61=(a37*a61);
+  a06=(a24*a06);
+  a61=(a61+a06);
+  a36=(a36*a57);
+  a36=(a36*a30);
+  a36=(a36*a57);
+  a61=(a61-a36);
+  a36=(a35*a61);
+  a56=(a56-a36);
+  a52=(a42*a52);
+  a60=(a46*a60);
+  a52=(a52+a60);
+  a28=(a28*a59);
+  a28=(a28*a05);
+  a28=(a28*a59);
+  a52=(a52-a28);
+  a28=(a14*a52);
+  a56=(a56-a28);
+  a49=(a49-a56);
+  a56=arg[3]? arg[3][12] : 0;
+  a28=0.;
+  a60=(a28<=a53);
+  a36=(a60?a11:0);
+  a60=(!a60);
+  a06=-1.;
+  a60=(a60?a06:0);
+  a36=(a36+a60);
+  a56=(a56*a36);
+  a36=arg[3]? arg[3][9] : 0;
+  a36=(a36*a53);
+  a56=(a56+a36);
+  a36=(a09*a56);
+  a53=arg[3]? arg[3][13] : 0;
+  a60=(a28<=a57);
+  a19=(a60?a11:0);
+  a60=(!a60);
+  a60=(a60?a06:0);
+  a19=(a19+a60);
+  a53=(a53*a19);
+  a19=arg[3]? arg[3][10] : 0;
+  a19=(a19*a57);
+  a53=(a53+a19);
+  a19=(a02*a53);
+  a36=(a36+a19);
+  a19=arg[3]? arg[3][14] : 0;
+  a28=(a28<=a59);
+  a57=(a28?a11:0);
+  a28=(!a28);
+  a28=(a28?a06:0);
+  a57=(a57+a28);
+  a19=(a19*a57);
+  a57=arg[3]? arg[3][11] : 0;
+  a57=(a57*a59);
+  a19=(a19+a57);
+  a57=(a12*a19);
+  a36=(a36+a57);
+  a49=(a49-a36);
+  a36=(a21*a49);
+  a57=(a09*a20);
+  a17=(a16*a17);
+  a57=(a57-a17);
+  a17=(a57*a13);
+  a23=(a09*a23);
+  a20=(a16*a20);
+  a23=(a23-a20);
+  a20=(a23*a10);
+  a39=(a02*a39);
+  a59=(a35*a37);
+  a39=(a39-a59);
+  a59=(a39*a34);
+  a20=(a20+a59);
+  a44=(a12*a44);
+  a59=(a14*a42);
+  a44=(a44-a59);
+  a59=(a44*a27);
+  a20=(a20+a59);
+  a17=(a17-a20);
+  a37=(a02*a37);
+  a24=(a35*a24);
+  a37=(a37-a24);
+  a24=(a37*a31);
+  a17=(a17+a24);
+  a42=(a12*a42);
+  a46=(a14*a46);
+  a42=(a42-a46);
+  a46=(a42*a03);
+  a17=(a17+a46);
+  a56=(a10*a56);
+  a53=(a34*a53);
+  a56=(a56+a53);
+  a19=(a27*a19);
+  a56=(a56+a19);
+  a48=(a10*a48);
+  a50=(a34*a50);
+  a48=(a48+a50);
+  a51=(a27*a51);
+  a48=(a48+a51);
+  a13=(a13*a58);
+  a10=(a10*a15);
+  a34=(a34*a33);
+  a10=(a10+a34);
+  a27=(a27*a00);
+  a10=(a10+a27);
+  a13=(a13-a10);
+  a31=(a31*a61);
+  a13=(a13+a31);
+  a03=(a03*a52);
+  a13=(a13+a03);
+  a48=(a48+a13);
+  a56=(a56-a48);
+  a48=(a17*a56);
+  a36=(a36-a48);
+  a23=(a23*a09);
+  a39=(a39*a02);
+  a23=(a23+a39);
+  a44=(a44*a12);
+  a23=(a23+a44);
+  a57=(a57*a16);
+  a23=(a23-a57);
+  a37=(a37*a35);
+  a23=(a23-a37);
+  a42=(a42*a14);
+  a23=(a23-a42);
+  a21=(a23*a21);
+  a22=(a22*a09);
+  a38=(a38*a02);
+  a22=(a22+a38);
+  a43=(a43*a12);
+  a22=(a22+a43);
+  a18=(a18*a16);
+  a22=(a22-a18);
+  a45=(a45*a35);
+  a22=(a22-a45);
+  a47=(a47*a14);
+  a22=(a22-a47);
+  a17=(a17*a22);
+  a21=(a21-a17);
+  a36=(a36/a21);
+  if (res[0]!=0) res[0][0]=a36;
+  a23=(a23*a56);
+  a22=(a22*a49);
+  a23=(a23-a22);
+  a23=(a23/a21);
+  if (res[0]!=0) res[0][1]=a23;
+  a08=casadi_fabs(a08);
+  a30=casadi_fabs(a30);
+  a23=(a08+a30);
+  a08=(a08-a30);
+  a08=casadi_fabs(a08);
+  a23=(a23-a08);
+  a08=2.;
+  a23=(a23/a08);
+  a05=casadi_fabs(a05);
+  a30=(a23+a05);
+  a23=(a23-a05);
+  a23=casadi_fabs(a23);
+  a30=(a30-a23);
+  a30=(a30/a08);
+  if (res[1]!=0) res[1][0]=a30;
+  a30=5.0000000000000000e-01;
+  a08=3.3333333333333331e-01;
+  a23=casadi_sq(a07);
+  a05=casadi_sq(a01);
+  a23=(a23-a05);
+  a05=casadi_sq(a26);
+  a21=casadi_sq(a29);
+  a05=(a05-a21);
+  a23=(a23+a05);
+  a05=casadi_sq(a04);
+  a21=casadi_sq(a40);
+  a05=(a05-a21);
+  a23=(a23+a05);
+  a23=casadi_sq(a23);
+  a07=(2.*a07);
+  a07=(a07*a01);
+  a26=(2.*a26);
+  a26=(a26*a29);
+  a07=(a07+a26);
+  a04=(2.*a04);
+  a04=(a04*a40);
+  a07=(a07+a04);
+  a07=casadi_sq(a07);
+  a23=(a23+a07);
+  a23=sqrt(a23);
+  a08=(a08*a23);
+  a11=(a11-a08);
+  a08=casadi_fabs(a11);
+  a11=(a11+a08);
+  a30=(a30*a11);
+  a30=sqrt(a30);
+  if (res[1]!=0) res[1][1]=a30;
+  return 0;
+}
+
+/* shang2010_sampled_step:(x[4],tau_a[3],theta[15],T)->(x_next[4],sing[2]) */
+static int casadi_f59(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w00=w+62, w01, w02, *w03=w+66, *w04=w+68, *w05=w+70, *w06=w+72, *w08=w+75, *w09=w+77, *w10=w+79;
+  casadi_real w11, *w12=w+83, *w13=w+87;
+  const casadi_real **arg1=arg+4, *cr, *cs, *wr07;
+  casadi_copy(arg[0], 4, w00);
+  w01 = arg[3] ? arg[3][0] : 0;
+  w02 = 3.;
+  w01 /= w02;
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  casadi_copy(arg[1], 3, w06);
+  wr07 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w09;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  casadi_copy(w00, 4, res[0]);
+  casadi_copy(w09, 2, res[1]);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f59(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_sampled_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_sampled_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_sampled_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_sampled_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_sampled_step_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_sampled_step_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_sampled_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_sampled_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_a";
+    case 2: return "theta";
+    case 3: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_sampled_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_sampled_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s2;
+    case 2: return casadi_s6;
+    case 3: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_sampled_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_sampled_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 91;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 91*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_sampled_step_jacobians:(x[4],tau_a[3],theta[15],T)->(x_next[4],d_x[16],d_tau_a[12],sing[2]) */
+static int casadi_f61(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i, j;
+  casadi_real **res1=res+4, *rr, *w00=w+244, w01, w02, *w03=w+248, *w04=w+250, *w05=w+252, *w06=w+254, *w08=w+257, *w09=w+259, *w10=w+263;
+  casadi_real *w11=w+267, *w12=w+273, *w13=w+275, w14, *w15=w+279, *w16=w+283, *w17=w+287, *w18=w+293, *w19=w+297, *w20=w+301, *w21=w+307, *w22=w+311;
+  casadi_real *w23=w+315, *w24=w+321, *w25=w+325, *w26=w+331, *w27=w+335, *w28=w+339, *w29=w+343, *w30=w+349, *w31=w+353, *w32=w+357, *w33=w+363, *w34=w+367;
+  casadi_real *w35=w+371, *w36=w+377, *w37=w+381, *w38=w+387, *w39=w+391, *w40=w+395, *w41=w+399, *w42=w+405, *w43=w+409, *w44=w+413, *w45=w+419, *w46=w+423;
+  casadi_real *w47=w+427, *w48=w+433, *w49=w+437, *w50=w+449, *w51=w+465, *w52=w+493, *w53=w+501, *w54=w+509, *w55=w+523, *w56=w+529, *w57=w+543, *w58=w+565;
+  casadi_real *w59=w+587, *w60=w+615, *w61=w+639, *w62=w+663, *w63=w+677, *w64=w+705, *w65=w+733, *w66=w+749;
+  const casadi_int *cii;
+  const casadi_real **arg1=arg+4, *cr, *cs, *ct, *wr07;
+  casadi_copy(arg[0], 4, w00);
+  w01 = arg[3] ? arg[3][0] : 0;
+  w02 = 3.;
+  w01 /= w02;
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  casadi_copy(arg[1], 3, w06);
+  wr07 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w09;
+  res1[2]=w10;
+  res1[3]=w11;
+  res1[4]=0;
+  res1[5]=w12;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w13;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w15, cs=w13; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w15, cr=w00, cs=w15; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w15+2; cs!=w15+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w15+0; cs!=w15+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w15+2; cs!=w15+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w15;
+  res1[2]=w16;
+  res1[3]=w17;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w18;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w19, cs=w18; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w13, cs=w19; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w18, cs=w18; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w18, cr=w00, cs=w18; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w18+2; cs!=w18+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w18+0; cs!=w18+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w18+2; cs!=w18+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w18;
+  res1[2]=w19;
+  res1[3]=w20;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w21;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w22, cs=w21; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w13, cs=w22; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w21, cs=w21; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w21, cr=w00, cs=w21; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w21+2; cs!=w21+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w21+0; cs!=w21+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w21+2; cs!=w21+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w21;
+  res1[2]=w22;
+  res1[3]=w23;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w24;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w24; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w13, cs=w13; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w13;
+  res1[2]=w24;
+  res1[3]=w25;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w26;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w27, cs=w26; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w27, cr=w00, cs=w27; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w27+2; cs!=w27+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w27+0; cs!=w27+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w27+2; cs!=w27+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w27;
+  res1[2]=w28;
+  res1[3]=w29;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w30;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w31, cs=w30; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w26, cs=w31; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w30, cs=w30; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w30, cr=w00, cs=w30; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w30+2; cs!=w30+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w30+0; cs!=w30+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w30+2; cs!=w30+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w30;
+  res1[2]=w31;
+  res1[3]=w32;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w33;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w34, cs=w33; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w26, cs=w34; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w33, cs=w33; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w33, cr=w00, cs=w33; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w33+2; cs!=w33+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w33+0; cs!=w33+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w33+2; cs!=w33+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w33;
+  res1[2]=w34;
+  res1[3]=w35;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w36;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w26, cs=w36; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w26, cs=w26; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w26; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w26;
+  res1[2]=w36;
+  res1[3]=w37;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w38;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w39, cs=w38; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w39, cr=w00, cs=w39; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w39+2; cs!=w39+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w39+0; cs!=w39+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w39+2; cs!=w39+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w39;
+  res1[2]=w40;
+  res1[3]=w41;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w42;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w43, cs=w42; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w38, cs=w43; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w42, cs=w42; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w42, cr=w00, cs=w42; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w42+2; cs!=w42+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w42+0; cs!=w42+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w42+2; cs!=w42+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w42;
+  res1[2]=w43;
+  res1[3]=w44;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w45;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w46, cs=w45; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w38, cs=w46; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w45, cs=w45; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w45, cr=w00, cs=w45; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w45+2; cs!=w45+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w45+0; cs!=w45+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w45+2; cs!=w45+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w45;
+  res1[2]=w46;
+  res1[3]=w47;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w48;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w38, cs=w48; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w38, cs=w38; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w38; i<4; ++i) (*rr++) += (*cs++);
+  casadi_copy(w00, 4, res[0]);
+  casadi_fill(w00, 4, 1.);
+  casadi_clear(w49, 12);
+  rr=w50;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w49; i<12; ++i) *rr++ = *cs++;
+  casadi_densify(w50, casadi_s24, w51, 0);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w52, cs=w50+0; cs!=w50+16; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  casadi_trans(w52,casadi_s26, w53, casadi_s25, iw);
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w52;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense_sparse(w52, 2, w50, casadi_s24, w54);
+  casadi_clear(w52, 8);
+  for (i=0, rr=w55, cs=w11; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w52; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w57;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  casadi_trans(w57,casadi_s28, w58, casadi_s27, iw);
+  casadi_densify(w58, casadi_s27, w59, 0);
+  casadi_project(w50, casadi_s24, w60, casadi_s29, w);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w58, cs=w58; i<22; ++i) (*rr++)  = (w14*(*cs++));
+  casadi_project(w58, casadi_s27, w61, casadi_s29, w);
+  for (i=0, rr=w60, cs=w61; i<24; ++i) (*rr++) += (*cs++);
+  for (cii=casadi_s30, rr=w56, cs=w60; cii!=casadi_s30+14; ++cii) *rr++ = cs[*cii];
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w15, cs=w16; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense_sparse(w53, 2, w60, casadi_s29, w56);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w17; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  casadi_densify(w50, casadi_s24, w63, 0);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  for (rr=w54, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w18; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w18, cs=w19; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w18; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w63, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w20; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  casadi_densify(w50, casadi_s24, w63, 0);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  for (rr=w62, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w56, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w62, 14);
+  for (i=0, rr=w00, cs=w21; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w21, cs=w22; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w21; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w63, 7, w62, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w23; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w54;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w54; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w54, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w59, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w59, cs=w59; i<28; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w56, cs=w51+0; cs!=w51+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w13; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w13, cs=w24; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w13; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w51, 7, w56, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w25; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w59, cs=w64; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w59, cr=w51, cs=w59; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w54, cs=w59+0; cs!=w59+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w27; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w27, cs=w28; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w27; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w59, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w29; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w59, cs=w63; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w64, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w63, cs=w63; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w63, cr=w51, cs=w63; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w62, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w56, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w62, 14);
+  for (i=0, rr=w00, cs=w30; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w30, cs=w31; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w30; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w63, 7, w62, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w32; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w54;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w54; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w54, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w59, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w59; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w64, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w59, cs=w59; i<28; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w59, cr=w51, cs=w59; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w56, cs=w59+0; cs!=w59+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w33; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w33, cs=w34; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w33; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w59, 7, w56, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w35; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w64, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w54, cs=w51+0; cs!=w51+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w26; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w26, cs=w36; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w26; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w51, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w37; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w64;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w64; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w64, cs=w63; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w64, cr=w51, cs=w64; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w62, cs=w64+0; cs!=w64+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w56, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w62, 14);
+  for (i=0, rr=w00, cs=w39; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w39, cs=w40; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w39; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w64, 7, w62, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w41; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w54;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w54; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w54, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w64;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w59, cs=w64; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w64, cs=w59; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w59, cs=w59; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w59, cr=w51, cs=w59; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w56, cs=w59+0; cs!=w59+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w42; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w42, cs=w43; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w42; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w59, 7, w56, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w44; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w59, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w63, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w64, cr=w51, cs=w64; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w54, cs=w64+0; cs!=w64+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w45; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w45, cs=w46; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w45; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w64, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w47; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w64;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w59, cs=w64; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w63, cs=w63; i<28; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  for (rr=w50, cs=w51+0; cs!=w51+16; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w65, cs=w50; i<4; ++i) for (j=0; j<4; ++j) rr[i+j*4] = *cs++;
+  casadi_copy(w65, 16, res[1]);
+  for (rr=w49, cs=w51+16; cs!=w51+28; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w66, cs=w49; i<3; ++i) for (j=0; j<4; ++j) rr[i+j*3] = *cs++;
+  casadi_copy(w66, 12, res[2]);
+  casadi_copy(w12, 2, res[3]);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f61(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_sampled_step_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_sampled_step_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_sampled_step_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_sampled_step_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_sampled_step_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_sampled_step_jacobians_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_sampled_step_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_sampled_step_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_a";
+    case 2: return "theta";
+    case 3: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_sampled_step_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "d_x";
+    case 2: return "d_tau_a";
+    case 3: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_sampled_step_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s2;
+    case 2: return casadi_s6;
+    case 3: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_sampled_step_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s21;
+    case 2: return casadi_s5;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_sampled_step_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 10;
+  if (sz_iw) *sz_iw = 8;
+  if (sz_w) *sz_w = 761;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 10*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 8*sizeof(casadi_int);
+  if (sz_w) *sz_w = 761*sizeof(casadi_real);
   return 0;
 }
 

@@ -29,7 +29,9 @@ extern "C" {
 #endif
 
 /* Add prefix to internal symbols */
+#define casadi_clear CASADI_PREFIX(clear)
 #define casadi_copy CASADI_PREFIX(copy)
+#define casadi_densify CASADI_PREFIX(densify)
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f10 CASADI_PREFIX(f10)
@@ -69,14 +71,36 @@ extern "C" {
 #define casadi_f41 CASADI_PREFIX(f41)
 #define casadi_f42 CASADI_PREFIX(f42)
 #define casadi_f43 CASADI_PREFIX(f43)
+#define casadi_f44 CASADI_PREFIX(f44)
+#define casadi_f45 CASADI_PREFIX(f45)
+#define casadi_f46 CASADI_PREFIX(f46)
+#define casadi_f47 CASADI_PREFIX(f47)
+#define casadi_f48 CASADI_PREFIX(f48)
+#define casadi_f49 CASADI_PREFIX(f49)
 #define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f50 CASADI_PREFIX(f50)
+#define casadi_f51 CASADI_PREFIX(f51)
+#define casadi_f52 CASADI_PREFIX(f52)
+#define casadi_f53 CASADI_PREFIX(f53)
+#define casadi_f54 CASADI_PREFIX(f54)
+#define casadi_f55 CASADI_PREFIX(f55)
+#define casadi_f56 CASADI_PREFIX(f56)
+#define casadi_f57 CASADI_PREFIX(f57)
+#define casadi_f58 CASADI_PREFIX(f58)
+#define casadi_f59 CASADI_PREFIX(f59)
 #define casadi_f6 CASADI_PREFIX(f6)
+#define casadi_f60 CASADI_PREFIX(f60)
+#define casadi_f61 CASADI_PREFIX(f61)
 #define casadi_f7 CASADI_PREFIX(f7)
 #define casadi_f8 CASADI_PREFIX(f8)
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
+#define casadi_fill CASADI_PREFIX(fill)
 #define casadi_fmax CASADI_PREFIX(fmax)
 #define casadi_fmin CASADI_PREFIX(fmin)
+#define casadi_mtimes_dense CASADI_PREFIX(mtimes_dense)
+#define casadi_mtimes_dense_sparse CASADI_PREFIX(mtimes_dense_sparse)
+#define casadi_project CASADI_PREFIX(project)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s10 CASADI_PREFIX(s10)
@@ -92,7 +116,16 @@ extern "C" {
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s20 CASADI_PREFIX(s20)
 #define casadi_s21 CASADI_PREFIX(s21)
+#define casadi_s22 CASADI_PREFIX(s22)
+#define casadi_s23 CASADI_PREFIX(s23)
+#define casadi_s24 CASADI_PREFIX(s24)
+#define casadi_s25 CASADI_PREFIX(s25)
+#define casadi_s26 CASADI_PREFIX(s26)
+#define casadi_s27 CASADI_PREFIX(s27)
+#define casadi_s28 CASADI_PREFIX(s28)
+#define casadi_s29 CASADI_PREFIX(s29)
 #define casadi_s3 CASADI_PREFIX(s3)
+#define casadi_s30 CASADI_PREFIX(s30)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_s6 CASADI_PREFIX(s6)
@@ -101,6 +134,7 @@ extern "C" {
 #define casadi_s9 CASADI_PREFIX(s9)
 #define casadi_sign CASADI_PREFIX(sign)
 #define casadi_sq CASADI_PREFIX(sq)
+#define casadi_trans CASADI_PREFIX(trans)
 #define casadi_zeros CASADI_PREFIX(zeros)
 
 /* Symbol visibility in DLLs */
@@ -164,6 +198,115 @@ void casadi_copy(const casadi_real* x, casadi_int n, casadi_real* y) {
   }
 }
 
+void casadi_fill(casadi_real* x, casadi_int n, casadi_real alpha) {
+  casadi_int i;
+  if (x) {
+    for (i=0; i<n; ++i) *x++ = alpha;
+  }
+}
+
+void casadi_clear(casadi_real* x, casadi_int n) {
+  casadi_int i;
+  if (x) {
+    for (i=0; i<n; ++i) *x++ = 0;
+  }
+}
+
+#define CASADI_CAST(x,y) ((x) y)
+
+void casadi_densify(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, casadi_int tr) {
+  casadi_int nrow_x, ncol_x, i, el;
+  const casadi_int *colind_x, *row_x;
+  if (!y) return;
+  nrow_x = sp_x[0]; ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x+ncol_x+3;
+  casadi_clear(y, nrow_x*ncol_x);
+  if (!x) return;
+  if (tr) {
+    for (i=0; i<ncol_x; ++i) {
+      for (el=colind_x[i]; el!=colind_x[i+1]; ++el) {
+        y[i + row_x[el]*ncol_x] = CASADI_CAST(casadi_real, *x++);
+      }
+    }
+  } else {
+    for (i=0; i<ncol_x; ++i) {
+      for (el=colind_x[i]; el!=colind_x[i+1]; ++el) {
+        y[row_x[el]] = CASADI_CAST(casadi_real, *x++);
+      }
+      y += nrow_x;
+    }
+  }
+}
+
+void casadi_trans(const casadi_real* x, const casadi_int* sp_x, casadi_real* y,
+    const casadi_int* sp_y, casadi_int* tmp) {
+  casadi_int ncol_x, nnz_x, ncol_y, k;
+  const casadi_int* row_x, *colind_y;
+  ncol_x = sp_x[1];
+  nnz_x = sp_x[2 + ncol_x];
+  row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2;
+  for (k=0; k<ncol_y; ++k) tmp[k] = colind_y[k];
+  for (k=0; k<nnz_x; ++k) {
+    y[tmp[row_x[k]]++] = x[k];
+  }
+}
+
+void casadi_mtimes_dense_sparse(const casadi_real* x, casadi_int nrow_x,
+    const casadi_real* y, const casadi_int* sp_y, casadi_real* z) {
+  casadi_int j, kk, i, ncol_y;
+  const casadi_int *colind_y, *row_y;
+  ncol_y = sp_y[1];
+  colind_y = sp_y + 2;
+  row_y = sp_y + 2 + ncol_y + 1;
+  for (j = 0; j < ncol_y; ++j) {
+    casadi_real* zj = z + j * nrow_x;
+    for (kk = colind_y[j]; kk < colind_y[j + 1]; ++kk) {
+      casadi_int rr = row_y[kk];
+      casadi_real yk = y[kk];
+      const casadi_real* x_col = x + rr * nrow_x;
+      for (i = 0; i < nrow_x; ++i) zj[i] += x_col[i] * yk;
+    }
+  }
+}
+
+void casadi_project(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, const casadi_int* sp_y, casadi_real* w) {
+  casadi_int ncol_x, ncol_y, i, el;
+  const casadi_int *colind_x, *row_x, *colind_y, *row_y;
+  ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2; row_y = sp_y + 2 + ncol_y+1;
+  for (i=0; i<ncol_x; ++i) {
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) w[row_y[el]] = 0;
+    for (el=colind_x[i]; el<colind_x[i+1]; ++el) w[row_x[el]] = x[el];
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) y[el] = w[row_y[el]];
+  }
+}
+
+void casadi_mtimes_dense(const casadi_real* x, casadi_int nrow_x, casadi_int ncol_x,
+    const casadi_real* y, casadi_int ncol_y, casadi_real* z, casadi_int tr) {
+  casadi_int i, j, k;
+  if (tr) {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<ncol_x; ++j) {
+        for (k=0; k<nrow_x; ++k) {
+          z[j + i*ncol_x] += x[k + j*nrow_x] * y[k + i*nrow_x];
+        }
+      }
+    }
+  } else {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<nrow_x; ++j) {
+        for (k=0; k<ncol_x; ++k) {
+          z[j + i*nrow_x] += x[j + k*nrow_x] * y[k + i*ncol_x];
+        }
+      }
+    }
+  }
+}
+
 /* Configuration this file was compiled with */
 CASADI_SYMBOL_EXPORT void shang2010_smooth_casadi_version(int* major, int* minor, int* patch) {
   *major = 3;
@@ -187,14 +330,47 @@ static const casadi_int casadi_s10[3] = {19, 1, 1};
 static const casadi_int casadi_s11[3] = {33, 1, 1};
 static const casadi_int casadi_s12[3] = {10, 1, 1};
 static const casadi_int casadi_s13[3] = {18, 1, 1};
-static const casadi_int casadi_s14[3] = {21, 1, 1};
-static const casadi_int casadi_s15[3] = {23, 1, 1};
-static const casadi_int casadi_s16[3] = {54, 1, 1};
-static const casadi_int casadi_s17[3] = {39, 1, 1};
-static const casadi_int casadi_s18[3] = {27, 1, 1};
-static const casadi_int casadi_s19[3] = {16, 1, 1};
-static const casadi_int casadi_s20[3] = {55, 1, 1};
-static const casadi_int casadi_s21[3] = {56, 1, 1};
+static const casadi_int casadi_s14[3] = {14, 1, 1};
+static const casadi_int casadi_s15[3] = {21, 1, 1};
+static const casadi_int casadi_s16[3] = {23, 1, 1};
+static const casadi_int casadi_s17[3] = {54, 1, 1};
+static const casadi_int casadi_s18[3] = {39, 1, 1};
+static const casadi_int casadi_s19[3] = {35, 1, 1};
+static const casadi_int casadi_s20[3] = {27, 1, 1};
+static const casadi_int casadi_s21[3] = {16, 1, 1};
+static const casadi_int casadi_s22[3] = {55, 1, 1};
+static const casadi_int casadi_s23[3] = {56, 1, 1};
+static const casadi_int casadi_s24[26] = 
+  {4, 7, 0, 1, 2, 3, 4, 8,
+  12, 16, 0, 1, 2, 3, 0, 1,
+  2, 3, 0, 1, 2, 3, 0, 1,
+  2, 3};
+static const casadi_int casadi_s25[13] = 
+  {7, 2, 0, 4, 8, 2, 4, 5,
+  6, 3, 4, 5, 6};
+static const casadi_int casadi_s26[18] = 
+  {2, 7, 0, 0, 0, 1, 2, 4,
+  6, 8, 0, 1, 0, 1, 0, 1,
+  0, 1};
+static const casadi_int casadi_s27[32] = 
+  {4, 7, 0, 2, 4, 7, 10, 14,
+  18, 22, 2, 3, 2, 3, 0, 2,
+  3, 1, 2, 3, 0, 1, 2, 3,
+  0, 1, 2, 3, 0, 1, 2, 3};
+static const casadi_int casadi_s28[29] = 
+  {7, 4, 0, 4, 8, 15, 22, 2,
+  4, 5, 6, 3, 4, 5, 6, 0,
+  1, 2, 3, 4, 5, 6, 0, 1,
+  2, 3, 4, 5, 6};
+static const casadi_int casadi_s29[34] = 
+  {4, 7, 0, 3, 6, 9, 12, 16,
+  20, 24, 0, 2, 3, 1, 2, 3,
+  0, 2, 3, 1, 2, 3, 0, 1,
+  2, 3, 0, 1, 2, 3, 0, 1,
+  2, 3};
+static const casadi_int casadi_s30[14] = 
+  {1, 2, 4, 5, 7, 8, 10, 11,
+  14, 15, 18, 19, 22, 23};
 
 static const casadi_real casadi_zeros[54] = 
   {0.};
@@ -16542,8 +16718,4485 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_preload_step_work_bytes(casadi_int
   return 0;
 }
 
-/* shang2010_smooth_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+/* shang2010_smooth_ctc_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
 static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][17] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][6] : 0;
+  a03=(a03/a15);
+  a27=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a27=(a27-a15);
+  a15=casadi_fabs(a27);
+  a16=(a16/a07);
+  a28=(a14*a16);
+  a22=(a22/a07);
+  a07=(a13*a22);
+  a28=(a28-a07);
+  a07=casadi_fabs(a28);
+  a29=(a15+a07);
+  a15=(a15-a07);
+  a15=casadi_fabs(a15);
+  a29=(a29-a15);
+  a15=2.;
+  a29=(a29/a15);
+  a08=(a08/a24);
+  a07=(a10*a08);
+  a12=(a12/a24);
+  a24=(a09*a12);
+  a07=(a07-a24);
+  a24=casadi_fabs(a07);
+  a30=(a29+a24);
+  a29=(a29-a24);
+  a29=casadi_fabs(a29);
+  a30=(a30-a29);
+  a30=(a30/a15);
+  a26=(a26<=a30);
+  a29=arg[5]? arg[5][7] : 0;
+  a24=1.;
+  a31=3.3333333333333331e-01;
+  a32=casadi_sq(a03);
+  a33=casadi_sq(a06);
+  a32=(a32-a33);
+  a33=casadi_sq(a16);
+  a34=casadi_sq(a22);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a33=casadi_sq(a08);
+  a34=casadi_sq(a12);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a32=casadi_sq(a32);
+  a33=(2.*a03);
+  a33=(a33*a06);
+  a34=(2.*a16);
+  a34=(a34*a22);
+  a33=(a33+a34);
+  a34=(2.*a08);
+  a34=(a34*a12);
+  a33=(a33+a34);
+  a33=casadi_sq(a33);
+  a32=(a32+a33);
+  a32=sqrt(a32);
+  a31=(a31*a32);
+  a31=(a24-a31);
+  a32=casadi_fabs(a31);
+  a31=(a31+a32);
+  a04=(a04*a31);
+  a04=sqrt(a04);
+  a29=(a29<=a04);
+  a26=(a26&&a29);
+  a29=(a17*a03);
+  a31=(a19*a29);
+  a32=(a00*a06);
+  a33=(a17*a02);
+  a34=(a32*a33);
+  a31=(a31-a34);
+  a29=(a29/a31);
+  a32=(a32/a31);
+  a34=casadi_sq(a32);
+  a35=(a00*a22);
+  a36=(a17*a16);
+  a37=(a20*a36);
+  a38=(a35*a18);
+  a37=(a37-a38);
+  a35=(a35/a37);
+  a38=casadi_sq(a35);
+  a34=(a34+a38);
+  a38=(a00*a12);
+  a17=(a17*a08);
+  a39=(a25*a17);
+  a40=(a38*a23);
+  a39=(a39-a40);
+  a38=(a38/a39);
+  a40=casadi_sq(a38);
+  a34=(a34+a40);
+  a40=arg[4]? arg[4][0] : 0;
+  a41=arg[5]? arg[5][2] : 0;
+  a42=arg[3]? arg[3][0] : 0;
+  a43=arg[0]? arg[0][2] : 0;
+  a44=arg[5]? arg[5][5] : 0;
+  a45=arg[0]? arg[0][0] : 0;
+  a46=(a21-a45);
+  a47=arg[5]? arg[5][4] : 0;
+  a46=(a46/a47);
+  a46=(a46-a43);
+  a46=(a44*a46);
+  a46=(a43+a46);
+  a42=(a42-a46);
+  a41=(a41*a42);
+  a40=(a40+a41);
+  a41=arg[5]? arg[5][0] : 0;
+  a48=arg[2]? arg[2][0] : 0;
+  a48=(a48-a21);
+  a41=(a41*a48);
+  a40=(a40+a41);
+  a41=(a29*a40);
+  a49=arg[4]? arg[4][1] : 0;
+  a50=arg[5]? arg[5][3] : 0;
+  a51=arg[3]? arg[3][1] : 0;
+  a52=arg[0]? arg[0][3] : 0;
+  a53=arg[0]? arg[0][1] : 0;
+  a54=(a05-a53);
+  a54=(a54/a47);
+  a54=(a54-a52);
+  a44=(a44*a54);
+  a44=(a52+a44);
+  a51=(a51-a44);
+  a50=(a50*a51);
+  a49=(a49+a50);
+  a50=arg[5]? arg[5][1] : 0;
+  a54=arg[2]? arg[2][1] : 0;
+  a54=(a54-a05);
+  a50=(a50*a54);
+  a49=(a49+a50);
+  a50=(a32*a49);
+  a41=(a41-a50);
+  a50=(a29*a46);
+  a47=(a32*a44);
+  a50=(a50-a47);
+  a47=(a00*a50);
+  a55=(a47*a01);
+  a55=(a55*a50);
+  a19=(a19/a31);
+  a56=(a19*a44);
+  a33=(a33/a31);
+  a31=(a33*a46);
+  a56=(a56-a31);
+  a31=(a00*a56);
+  a57=(a31*a06);
+  a57=(a57*a56);
+  a55=(a55+a57);
+  a57=(a32*a55);
+  a47=(a47*a02);
+  a47=(a47*a50);
+  a31=(a31*a03);
+  a31=(a31*a56);
+  a47=(a47+a31);
+  a31=(a29*a47);
+  a57=(a57-a31);
+  a41=(a41+a57);
+  a57=(a29*a41);
+  a31=arg[0]? arg[0][4] : 0;
+  a57=(a57*a31);
+  a36=(a36/a37);
+  a58=(a36*a40);
+  a59=(a35*a49);
+  a58=(a58-a59);
+  a59=(a36*a46);
+  a60=(a35*a44);
+  a59=(a59-a60);
+  a60=(a00*a59);
+  a61=(a60*a14);
+  a61=(a61*a59);
+  a20=(a20/a37);
+  a62=(a20*a44);
+  a18=(a18/a37);
+  a37=(a18*a46);
+  a62=(a62-a37);
+  a37=(a00*a62);
+  a63=(a37*a22);
+  a63=(a63*a62);
+  a61=(a61+a63);
+  a63=(a35*a61);
+  a60=(a60*a13);
+  a60=(a60*a59);
+  a37=(a37*a16);
+  a37=(a37*a62);
+  a60=(a60+a37);
+  a37=(a36*a60);
+  a63=(a63-a37);
+  a58=(a58+a63);
+  a63=(a36*a58);
+  a37=arg[0]? arg[0][5] : 0;
+  a63=(a63*a37);
+  a57=(a57+a63);
+  a17=(a17/a39);
+  a63=(a17*a40);
+  a64=(a38*a49);
+  a63=(a63-a64);
+  a64=(a17*a46);
+  a65=(a38*a44);
+  a64=(a64-a65);
+  a65=(a00*a64);
+  a66=(a65*a10);
+  a66=(a66*a64);
+  a25=(a25/a39);
+  a67=(a25*a44);
+  a23=(a23/a39);
+  a39=(a23*a46);
+  a67=(a67-a39);
+  a00=(a00*a67);
+  a39=(a00*a12);
+  a39=(a39*a67);
+  a66=(a66+a39);
+  a39=(a38*a66);
+  a65=(a65*a09);
+  a65=(a65*a64);
+  a00=(a00*a08);
+  a00=(a00*a67);
+  a65=(a65+a00);
+  a00=(a17*a65);
+  a39=(a39-a00);
+  a63=(a63+a39);
+  a39=(a17*a63);
+  a00=arg[0]? arg[0][6] : 0;
+  a39=(a39*a00);
+  a57=(a57+a39);
+  a39=(a19*a49);
+  a68=(a33*a40);
+  a39=(a39-a68);
+  a47=(a33*a47);
+  a55=(a19*a55);
+  a47=(a47-a55);
+  a39=(a39+a47);
+  a02=(a02*a03);
+  a01=(a01*a06);
+  a02=(a02+a01);
+  a01=(a39*a02);
+  a56=casadi_sq(a56);
+  a56=(a56*a27);
+  a01=(a01+a56);
+  a56=(a29*a01);
+  a02=(a41*a02);
+  a06=casadi_sq(a50);
+  a27=(a06*a27);
+  a02=(a02-a27);
+  a27=(a33*a02);
+  a56=(a56-a27);
+  a27=arg[0]? arg[0][7] : 0;
+  a56=(a56*a27);
+  a57=(a57+a56);
+  a56=(a20*a49);
+  a03=(a18*a40);
+  a56=(a56-a03);
+  a60=(a18*a60);
+  a61=(a20*a61);
+  a60=(a60-a61);
+  a56=(a56+a60);
+  a13=(a13*a16);
+  a14=(a14*a22);
+  a13=(a13+a14);
+  a14=(a56*a13);
+  a62=casadi_sq(a62);
+  a62=(a62*a28);
+  a14=(a14+a62);
+  a62=(a36*a14);
+  a13=(a58*a13);
+  a22=casadi_sq(a59);
+  a28=(a22*a28);
+  a13=(a13-a28);
+  a28=(a18*a13);
+  a62=(a62-a28);
+  a28=arg[0]? arg[0][8] : 0;
+  a62=(a62*a28);
+  a57=(a57+a62);
+  a49=(a25*a49);
+  a40=(a23*a40);
+  a49=(a49-a40);
+  a65=(a23*a65);
+  a66=(a25*a66);
+  a65=(a65-a66);
+  a49=(a49+a65);
+  a09=(a09*a08);
+  a10=(a10*a12);
+  a09=(a09+a10);
+  a10=(a49*a09);
+  a67=casadi_sq(a67);
+  a67=(a67*a07);
+  a10=(a10+a67);
+  a67=(a17*a10);
+  a09=(a63*a09);
+  a12=casadi_sq(a64);
+  a07=(a12*a07);
+  a09=(a09-a07);
+  a07=(a23*a09);
+  a67=(a67-a07);
+  a07=arg[0]? arg[0][9] : 0;
+  a67=(a67*a07);
+  a57=(a57+a67);
+  a33=(a33*a39);
+  a67=arg[0]? arg[0][10] : 0;
+  a33=(a33*a67);
+  a57=(a57-a33);
+  a18=(a18*a56);
+  a33=arg[0]? arg[0][11] : 0;
+  a18=(a18*a33);
+  a57=(a57-a18);
+  a23=(a23*a49);
+  a18=arg[0]? arg[0][12] : 0;
+  a23=(a23*a18);
+  a57=(a57-a23);
+  a23=(a29*a50);
+  a08=arg[0]? arg[0][13] : 0;
+  a23=(a23*a08);
+  a57=(a57+a23);
+  a23=(a36*a59);
+  a65=arg[0]? arg[0][14] : 0;
+  a23=(a23*a65);
+  a57=(a57+a23);
+  a23=(a17*a64);
+  a66=arg[0]? arg[0][15] : 0;
+  a23=(a23*a66);
+  a57=(a57+a23);
+  a23=1.0000000000000000e-04;
+  a06=(a23+a06);
+  a06=sqrt(a06);
+  a06=(a50/a06);
+  a40=(a29*a06);
+  a62=arg[0]? arg[0][16] : 0;
+  a40=(a40*a62);
+  a57=(a57+a40);
+  a22=(a23+a22);
+  a22=sqrt(a22);
+  a22=(a59/a22);
+  a40=(a36*a22);
+  a16=arg[0]? arg[0][17] : 0;
+  a40=(a40*a16);
+  a57=(a57+a40);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a23=(a64/a23);
+  a12=(a17*a23);
+  a40=arg[0]? arg[0][18] : 0;
+  a12=(a12*a40);
+  a57=(a57+a12);
+  a12=(a34*a57);
+  a60=(a29*a32);
+  a61=(a36*a35);
+  a60=(a60+a61);
+  a61=(a17*a38);
+  a60=(a60+a61);
+  a02=(a19*a02);
+  a01=(a32*a01);
+  a02=(a02-a01);
+  a02=(a02*a27);
+  a41=(a32*a41);
+  a41=(a41*a31);
+  a58=(a35*a58);
+  a58=(a58*a37);
+  a41=(a41+a58);
+  a63=(a38*a63);
+  a63=(a63*a00);
+  a41=(a41+a63);
+  a02=(a02-a41);
+  a13=(a20*a13);
+  a14=(a35*a14);
+  a13=(a13-a14);
+  a13=(a13*a28);
+  a02=(a02+a13);
+  a09=(a25*a09);
+  a10=(a38*a10);
+  a09=(a09-a10);
+  a09=(a09*a07);
+  a02=(a02+a09);
+  a19=(a19*a39);
+  a19=(a19*a67);
+  a02=(a02+a19);
+  a20=(a20*a56);
+  a20=(a20*a33);
+  a02=(a02+a20);
+  a25=(a25*a49);
+  a25=(a25*a18);
+  a02=(a02+a25);
+  a50=(a32*a50);
+  a50=(a50*a08);
+  a02=(a02-a50);
+  a59=(a35*a59);
+  a59=(a59*a65);
+  a02=(a02-a59);
+  a64=(a38*a64);
+  a64=(a64*a66);
+  a02=(a02-a64);
+  a06=(a32*a06);
+  a06=(a06*a62);
+  a02=(a02-a06);
+  a22=(a35*a22);
+  a22=(a22*a16);
+  a02=(a02-a22);
+  a23=(a38*a23);
+  a23=(a23*a40);
+  a02=(a02-a23);
+  a23=(a60*a02);
+  a12=(a12+a23);
+  a23=casadi_sq(a29);
+  a22=casadi_sq(a36);
+  a23=(a23+a22);
+  a22=casadi_sq(a17);
+  a23=(a23+a22);
+  a34=(a23*a34);
+  a22=(a32*a29);
+  a06=(a35*a36);
+  a22=(a22+a06);
+  a06=(a38*a17);
+  a22=(a22+a06);
+  a60=(a60*a22);
+  a34=(a34-a60);
+  a12=(a12/a34);
+  a29=(a29*a12);
+  a23=(a23*a02);
+  a22=(a22*a57);
+  a23=(a23+a22);
+  a23=(a23/a34);
+  a32=(a32*a23);
+  a29=(a29-a32);
+  a36=(a36*a12);
+  a35=(a35*a23);
+  a36=(a36-a35);
+  a35=(a29+a36);
+  a17=(a17*a12);
+  a38=(a38*a23);
+  a17=(a17-a38);
+  a35=(a35+a17);
+  a35=(a35+a31);
+  a35=(a35+a37);
+  a35=(a35+a00);
+  a35=(a35+a27);
+  a35=(a35+a28);
+  a35=(a35+a07);
+  a35=(a35+a67);
+  a35=(a35+a33);
+  a35=(a35+a18);
+  a35=(a35+a08);
+  a35=(a35+a65);
+  a35=(a35+a66);
+  a35=(a35+a62);
+  a35=(a35+a16);
+  a35=(a35+a40);
+  a35=(a35+a21);
+  a35=(a35+a05);
+  a35=(a35+a46);
+  a35=(a35+a44);
+  a35=casadi_fabs(a35);
+  a38=casadi_inf;
+  a35=(a35<a38);
+  a38=(a26&&a35);
+  a38=(a11&&a38);
+  a23=arg[5]? arg[5][8] : 0;
+  a12=(-a23);
+  a12=casadi_fmax(a29,a12);
+  a12=casadi_fmin(a12,a23);
+  a12=(a38?a12:0);
+  if (res[0]!=0) res[0][0]=a12;
+  a12=arg[5]? arg[5][9] : 0;
+  a32=(-a12);
+  a32=casadi_fmax(a36,a32);
+  a32=casadi_fmin(a32,a12);
+  a32=(a38?a32:0);
+  if (res[0]!=0) res[0][1]=a32;
+  a32=arg[5]? arg[5][10] : 0;
+  a34=(-a32);
+  a34=casadi_fmax(a17,a34);
+  a34=casadi_fmin(a34,a32);
+  a34=(a38?a34:0);
+  if (res[0]!=0) res[0][2]=a34;
+  a34=(a11&&a35);
+  a22=(a34?a21:0);
+  a57=(!a34);
+  a45=(a57?a45:0);
+  a22=(a22+a45);
+  if (res[1]!=0) res[1][0]=a22;
+  a22=(a34?a05:0);
+  a53=(a57?a53:0);
+  a22=(a22+a53);
+  if (res[1]!=0) res[1][1]=a22;
+  a22=(a34?a46:0);
+  a43=(a57?a43:0);
+  a22=(a22+a43);
+  if (res[1]!=0) res[1][2]=a22;
+  a34=(a34?a44:0);
+  a57=(a57?a52:0);
+  a34=(a34+a57);
+  if (res[1]!=0) res[1][3]=a34;
+  a34=(a38?a31:0);
+  a57=(!a38);
+  a31=(a57?a31:0);
+  a34=(a34+a31);
+  if (res[1]!=0) res[1][4]=a34;
+  a34=(a38?a37:0);
+  a37=(a57?a37:0);
+  a34=(a34+a37);
+  if (res[1]!=0) res[1][5]=a34;
+  a34=(a38?a00:0);
+  a00=(a57?a00:0);
+  a34=(a34+a00);
+  if (res[1]!=0) res[1][6]=a34;
+  a34=(a38?a27:0);
+  a27=(a57?a27:0);
+  a34=(a34+a27);
+  if (res[1]!=0) res[1][7]=a34;
+  a34=(a38?a28:0);
+  a28=(a57?a28:0);
+  a34=(a34+a28);
+  if (res[1]!=0) res[1][8]=a34;
+  a34=(a38?a07:0);
+  a07=(a57?a07:0);
+  a34=(a34+a07);
+  if (res[1]!=0) res[1][9]=a34;
+  a34=(a38?a67:0);
+  a67=(a57?a67:0);
+  a34=(a34+a67);
+  if (res[1]!=0) res[1][10]=a34;
+  a34=(a38?a33:0);
+  a33=(a57?a33:0);
+  a34=(a34+a33);
+  if (res[1]!=0) res[1][11]=a34;
+  a34=(a38?a18:0);
+  a18=(a57?a18:0);
+  a34=(a34+a18);
+  if (res[1]!=0) res[1][12]=a34;
+  a34=(a38?a08:0);
+  a08=(a57?a08:0);
+  a34=(a34+a08);
+  if (res[1]!=0) res[1][13]=a34;
+  a34=(a38?a65:0);
+  a65=(a57?a65:0);
+  a34=(a34+a65);
+  if (res[1]!=0) res[1][14]=a34;
+  a34=(a38?a66:0);
+  a66=(a57?a66:0);
+  a34=(a34+a66);
+  if (res[1]!=0) res[1][15]=a34;
+  a34=(a38?a62:0);
+  a62=(a57?a62:0);
+  a34=(a34+a62);
+  if (res[1]!=0) res[1][16]=a34;
+  a34=(a38?a16:0);
+  a16=(a57?a16:0);
+  a34=(a34+a16);
+  if (res[1]!=0) res[1][17]=a34;
+  a38=(a38?a40:0);
+  a57=(a57?a40:0);
+  a38=(a38+a57);
+  if (res[1]!=0) res[1][18]=a38;
+  a38=0.;
+  a29=casadi_fabs(a29);
+  a29=(a29-a23);
+  a36=casadi_fabs(a36);
+  a36=(a36-a12);
+  a29=casadi_fmax(a29,a36);
+  a17=casadi_fabs(a17);
+  a17=(a17-a32);
+  a29=casadi_fmax(a29,a17);
+  a38=(a38<a29);
+  a38=(a38?a15:0);
+  a38=(a35?a38:0);
+  a35=(!a35);
+  a15=3.;
+  a35=(a35?a15:0);
+  a38=(a38+a35);
+  a38=(a26?a38:0);
+  a26=(!a26);
+  a26=(a26?a24:0);
+  a38=(a38+a26);
+  a38=(a11?a38:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a38=(a38+a11);
+  if (res[2]!=0) res[2][0]=a38;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a46;
+  if (res[3]!=0) res[3][3]=a44;
+  if (res[3]!=0) res[3][4]=a48;
+  if (res[3]!=0) res[3][5]=a54;
+  if (res[3]!=0) res[3][6]=a42;
+  if (res[3]!=0) res[3][7]=a51;
+  if (res[3]!=0) res[3][8]=a30;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f27(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_ctc_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_ctc_minmax_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][17] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][6] : 0;
+  a03=(a03/a15);
+  a27=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a27=(a27-a15);
+  a15=casadi_fabs(a27);
+  a16=(a16/a07);
+  a28=(a14*a16);
+  a22=(a22/a07);
+  a07=(a13*a22);
+  a28=(a28-a07);
+  a07=casadi_fabs(a28);
+  a29=(a15+a07);
+  a15=(a15-a07);
+  a15=casadi_fabs(a15);
+  a29=(a29-a15);
+  a15=2.;
+  a29=(a29/a15);
+  a08=(a08/a24);
+  a07=(a10*a08);
+  a12=(a12/a24);
+  a24=(a09*a12);
+  a07=(a07-a24);
+  a24=casadi_fabs(a07);
+  a30=(a29+a24);
+  a29=(a29-a24);
+  a29=casadi_fabs(a29);
+  a30=(a30-a29);
+  a30=(a30/a15);
+  a26=(a26<=a30);
+  a29=arg[5]? arg[5][7] : 0;
+  a24=1.;
+  a31=3.3333333333333331e-01;
+  a32=casadi_sq(a03);
+  a33=casadi_sq(a06);
+  a32=(a32-a33);
+  a33=casadi_sq(a16);
+  a34=casadi_sq(a22);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a33=casadi_sq(a08);
+  a34=casadi_sq(a12);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a32=casadi_sq(a32);
+  a33=(2.*a03);
+  a33=(a33*a06);
+  a34=(2.*a16);
+  a34=(a34*a22);
+  a33=(a33+a34);
+  a34=(2.*a08);
+  a34=(a34*a12);
+  a33=(a33+a34);
+  a33=casadi_sq(a33);
+  a32=(a32+a33);
+  a32=sqrt(a32);
+  a31=(a31*a32);
+  a31=(a24-a31);
+  a32=casadi_fabs(a31);
+  a31=(a31+a32);
+  a04=(a04*a31);
+  a04=sqrt(a04);
+  a29=(a29<=a04);
+  a26=(a26&&a29);
+  a29=arg[5]? arg[5][8] : 0;
+  a31=(a17*a03);
+  a32=(a19*a31);
+  a33=(a00*a06);
+  a34=(a17*a02);
+  a35=(a33*a34);
+  a32=(a32-a35);
+  a31=(a31/a32);
+  a35=(a29*a31);
+  a36=0.;
+  a37=arg[4]? arg[4][0] : 0;
+  a38=arg[5]? arg[5][2] : 0;
+  a39=arg[3]? arg[3][0] : 0;
+  a40=arg[0]? arg[0][2] : 0;
+  a41=arg[5]? arg[5][5] : 0;
+  a42=arg[0]? arg[0][0] : 0;
+  a43=(a21-a42);
+  a44=arg[5]? arg[5][4] : 0;
+  a43=(a43/a44);
+  a43=(a43-a40);
+  a43=(a41*a43);
+  a43=(a40+a43);
+  a39=(a39-a43);
+  a38=(a38*a39);
+  a37=(a37+a38);
+  a38=arg[5]? arg[5][0] : 0;
+  a45=arg[2]? arg[2][0] : 0;
+  a45=(a45-a21);
+  a38=(a38*a45);
+  a37=(a37+a38);
+  a38=(a31*a37);
+  a33=(a33/a32);
+  a46=arg[4]? arg[4][1] : 0;
+  a47=arg[5]? arg[5][3] : 0;
+  a48=arg[3]? arg[3][1] : 0;
+  a49=arg[0]? arg[0][3] : 0;
+  a50=arg[0]? arg[0][1] : 0;
+  a51=(a05-a50);
+  a51=(a51/a44);
+  a51=(a51-a49);
+  a41=(a41*a51);
+  a41=(a49+a41);
+  a48=(a48-a41);
+  a47=(a47*a48);
+  a46=(a46+a47);
+  a47=arg[5]? arg[5][1] : 0;
+  a51=arg[2]? arg[2][1] : 0;
+  a51=(a51-a05);
+  a47=(a47*a51);
+  a46=(a46+a47);
+  a47=(a33*a46);
+  a38=(a38-a47);
+  a47=(a31*a43);
+  a44=(a33*a41);
+  a47=(a47-a44);
+  a44=(a00*a47);
+  a52=(a44*a01);
+  a52=(a52*a47);
+  a19=(a19/a32);
+  a53=(a19*a41);
+  a34=(a34/a32);
+  a32=(a34*a43);
+  a53=(a53-a32);
+  a32=(a00*a53);
+  a54=(a32*a06);
+  a54=(a54*a53);
+  a52=(a52+a54);
+  a54=(a33*a52);
+  a44=(a44*a02);
+  a44=(a44*a47);
+  a32=(a32*a03);
+  a32=(a32*a53);
+  a44=(a44+a32);
+  a32=(a31*a44);
+  a54=(a54-a32);
+  a38=(a38+a54);
+  a54=(a31*a38);
+  a32=arg[0]? arg[0][4] : 0;
+  a54=(a54*a32);
+  a55=(a17*a16);
+  a56=(a20*a55);
+  a57=(a00*a22);
+  a58=(a57*a18);
+  a56=(a56-a58);
+  a55=(a55/a56);
+  a58=(a55*a37);
+  a57=(a57/a56);
+  a59=(a57*a46);
+  a58=(a58-a59);
+  a59=(a55*a43);
+  a60=(a57*a41);
+  a59=(a59-a60);
+  a60=(a00*a59);
+  a61=(a60*a14);
+  a61=(a61*a59);
+  a20=(a20/a56);
+  a62=(a20*a41);
+  a18=(a18/a56);
+  a56=(a18*a43);
+  a62=(a62-a56);
+  a56=(a00*a62);
+  a63=(a56*a22);
+  a63=(a63*a62);
+  a61=(a61+a63);
+  a63=(a57*a61);
+  a60=(a60*a13);
+  a60=(a60*a59);
+  a56=(a56*a16);
+  a56=(a56*a62);
+  a60=(a60+a56);
+  a56=(a55*a60);
+  a63=(a63-a56);
+  a58=(a58+a63);
+  a63=(a55*a58);
+  a56=arg[0]? arg[0][5] : 0;
+  a63=(a63*a56);
+  a54=(a54+a63);
+  a17=(a17*a08);
+  a63=(a25*a17);
+  a64=(a00*a12);
+  a65=(a64*a23);
+  a63=(a63-a65);
+  a17=(a17/a63);
+  a65=(a17*a37);
+  a64=(a64/a63);
+  a66=(a64*a46);
+  a65=(a65-a66);
+  a66=(a17*a43);
+  a67=(a64*a41);
+  a66=(a66-a67);
+  a67=(a00*a66);
+  a68=(a67*a10);
+  a68=(a68*a66);
+  a25=(a25/a63);
+  a69=(a25*a41);
+  a23=(a23/a63);
+  a63=(a23*a43);
+  a69=(a69-a63);
+  a00=(a00*a69);
+  a63=(a00*a12);
+  a63=(a63*a69);
+  a68=(a68+a63);
+  a63=(a64*a68);
+  a67=(a67*a09);
+  a67=(a67*a66);
+  a00=(a00*a08);
+  a00=(a00*a69);
+  a67=(a67+a00);
+  a00=(a17*a67);
+  a63=(a63-a00);
+  a65=(a65+a63);
+  a63=(a17*a65);
+  a00=arg[0]? arg[0][6] : 0;
+  a63=(a63*a00);
+  a54=(a54+a63);
+  a63=(a19*a46);
+  a70=(a34*a37);
+  a63=(a63-a70);
+  a44=(a34*a44);
+  a52=(a19*a52);
+  a44=(a44-a52);
+  a63=(a63+a44);
+  a02=(a02*a03);
+  a01=(a01*a06);
+  a02=(a02+a01);
+  a01=(a63*a02);
+  a53=casadi_sq(a53);
+  a53=(a53*a27);
+  a01=(a01+a53);
+  a53=(a31*a01);
+  a02=(a38*a02);
+  a06=casadi_sq(a47);
+  a27=(a06*a27);
+  a02=(a02-a27);
+  a27=(a34*a02);
+  a53=(a53-a27);
+  a27=arg[0]? arg[0][7] : 0;
+  a53=(a53*a27);
+  a54=(a54+a53);
+  a53=(a20*a46);
+  a03=(a18*a37);
+  a53=(a53-a03);
+  a60=(a18*a60);
+  a61=(a20*a61);
+  a60=(a60-a61);
+  a53=(a53+a60);
+  a13=(a13*a16);
+  a14=(a14*a22);
+  a13=(a13+a14);
+  a14=(a53*a13);
+  a62=casadi_sq(a62);
+  a62=(a62*a28);
+  a14=(a14+a62);
+  a62=(a55*a14);
+  a13=(a58*a13);
+  a22=casadi_sq(a59);
+  a28=(a22*a28);
+  a13=(a13-a28);
+  a28=(a18*a13);
+  a62=(a62-a28);
+  a28=arg[0]? arg[0][8] : 0;
+  a62=(a62*a28);
+  a54=(a54+a62);
+  a46=(a25*a46);
+  a37=(a23*a37);
+  a46=(a46-a37);
+  a67=(a23*a67);
+  a68=(a25*a68);
+  a67=(a67-a68);
+  a46=(a46+a67);
+  a09=(a09*a08);
+  a10=(a10*a12);
+  a09=(a09+a10);
+  a10=(a46*a09);
+  a69=casadi_sq(a69);
+  a69=(a69*a07);
+  a10=(a10+a69);
+  a69=(a17*a10);
+  a09=(a65*a09);
+  a12=casadi_sq(a66);
+  a07=(a12*a07);
+  a09=(a09-a07);
+  a07=(a23*a09);
+  a69=(a69-a07);
+  a07=arg[0]? arg[0][9] : 0;
+  a69=(a69*a07);
+  a54=(a54+a69);
+  a34=(a34*a63);
+  a69=arg[0]? arg[0][10] : 0;
+  a34=(a34*a69);
+  a54=(a54-a34);
+  a18=(a18*a53);
+  a34=arg[0]? arg[0][11] : 0;
+  a18=(a18*a34);
+  a54=(a54-a18);
+  a23=(a23*a46);
+  a18=arg[0]? arg[0][12] : 0;
+  a23=(a23*a18);
+  a54=(a54-a23);
+  a23=(a31*a47);
+  a08=arg[0]? arg[0][13] : 0;
+  a23=(a23*a08);
+  a54=(a54+a23);
+  a23=(a55*a59);
+  a67=arg[0]? arg[0][14] : 0;
+  a23=(a23*a67);
+  a54=(a54+a23);
+  a23=(a17*a66);
+  a68=arg[0]? arg[0][15] : 0;
+  a23=(a23*a68);
+  a54=(a54+a23);
+  a23=1.0000000000000000e-04;
+  a06=(a23+a06);
+  a06=sqrt(a06);
+  a06=(a47/a06);
+  a31=(a31*a06);
+  a37=arg[0]? arg[0][16] : 0;
+  a31=(a31*a37);
+  a54=(a54+a31);
+  a22=(a23+a22);
+  a22=sqrt(a22);
+  a22=(a59/a22);
+  a31=(a55*a22);
+  a62=arg[0]? arg[0][17] : 0;
+  a31=(a31*a62);
+  a54=(a54+a31);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a23=(a66/a23);
+  a12=(a17*a23);
+  a31=arg[0]? arg[0][18] : 0;
+  a12=(a12*a31);
+  a54=(a54+a12);
+  a12=(a29*a33);
+  a16=(a54*a12);
+  a02=(a19*a02);
+  a01=(a33*a01);
+  a02=(a02-a01);
+  a02=(a02*a27);
+  a38=(a33*a38);
+  a38=(a38*a32);
+  a58=(a57*a58);
+  a58=(a58*a56);
+  a38=(a38+a58);
+  a65=(a64*a65);
+  a65=(a65*a00);
+  a38=(a38+a65);
+  a02=(a02-a38);
+  a13=(a20*a13);
+  a14=(a57*a14);
+  a13=(a13-a14);
+  a13=(a13*a28);
+  a02=(a02+a13);
+  a09=(a25*a09);
+  a10=(a64*a10);
+  a09=(a09-a10);
+  a09=(a09*a07);
+  a02=(a02+a09);
+  a19=(a19*a63);
+  a19=(a19*a69);
+  a02=(a02+a19);
+  a20=(a20*a53);
+  a20=(a20*a34);
+  a02=(a02+a20);
+  a25=(a25*a46);
+  a25=(a25*a18);
+  a02=(a02+a25);
+  a47=(a33*a47);
+  a47=(a47*a08);
+  a02=(a02-a47);
+  a59=(a57*a59);
+  a59=(a59*a67);
+  a02=(a02-a59);
+  a66=(a64*a66);
+  a66=(a66*a68);
+  a02=(a02-a66);
+  a33=(a33*a06);
+  a33=(a33*a37);
+  a02=(a02-a33);
+  a22=(a57*a22);
+  a22=(a22*a62);
+  a02=(a02-a22);
+  a23=(a64*a23);
+  a23=(a23*a31);
+  a02=(a02-a23);
+  a23=(a02*a35);
+  a16=(a16+a23);
+  a16=casadi_fabs(a16);
+  a36=(a36<a16);
+  a23=arg[5]? arg[5][9] : 0;
+  a57=(a23*a57);
+  a22=(a35*a57);
+  a55=(a23*a55);
+  a33=(a12*a55);
+  a22=(a22-a33);
+  a22=casadi_fabs(a22);
+  a33=arg[5]? arg[5][10] : 0;
+  a17=(a33*a17);
+  a06=(a17*a57);
+  a64=(a33*a64);
+  a66=(a64*a55);
+  a06=(a06-a66);
+  a06=casadi_fabs(a06);
+  a22=(a22+a06);
+  a06=(a16*a22);
+  a06=(a36?a06:0);
+  a66=(a54*a57);
+  a59=(a02*a55);
+  a66=(a66+a59);
+  a66=casadi_fabs(a66);
+  a59=(a55*a12);
+  a47=(a57*a35);
+  a59=(a59-a47);
+  a59=casadi_fabs(a59);
+  a47=(a17*a12);
+  a25=(a64*a35);
+  a47=(a47-a25);
+  a47=casadi_fabs(a47);
+  a59=(a59+a47);
+  a59=(a36?a59:0);
+  a47=(!a36);
+  a25=(a47?a24:0);
+  a59=(a59+a25);
+  a25=(a66*a59);
+  a06=(a06<a25);
+  a66=(a06?a66:0);
+  a25=(!a06);
+  a16=(a36?a16:0);
+  a16=(a25?a16:0);
+  a66=(a66+a16);
+  a16=(a35*a64);
+  a46=(a12*a17);
+  a16=(a16-a46);
+  a16=casadi_fabs(a16);
+  a46=(a55*a64);
+  a20=(a57*a17);
+  a46=(a46-a20);
+  a46=casadi_fabs(a46);
+  a16=(a16+a46);
+  a46=(a66*a16);
+  a20=(a54*a64);
+  a53=(a02*a17);
+  a20=(a20+a53);
+  a20=casadi_fabs(a20);
+  a22=(a06?a22:0);
+  a59=(a25?a59:0);
+  a22=(a22+a59);
+  a59=(a20*a22);
+  a46=(a46<a59);
+  a59=(a46?a64:0);
+  a53=(!a46);
+  a19=(a06?a57:0);
+  a63=(a36?a12:0);
+  a09=(a47?a12:0);
+  a63=(a63+a09);
+  a63=(a25?a63:0);
+  a19=(a19+a63);
+  a19=(a53?a19:0);
+  a59=(a59+a19);
+  a19=(a54*a59);
+  a63=(a46?a17:0);
+  a06=(a06?a55:0);
+  a36=(a36?a35:0);
+  a47=(a47?a35:0);
+  a36=(a36+a47);
+  a25=(a25?a36:0);
+  a06=(a06+a25);
+  a06=(a53?a06:0);
+  a63=(a63+a06);
+  a06=(a02*a63);
+  a19=(a19+a06);
+  a19=casadi_sign(a19);
+  a06=(a59*a19);
+  a25=(a35*a06);
+  a19=(a63*a19);
+  a36=(a12*a19);
+  a25=(a25-a36);
+  a36=casadi_sq(a25);
+  a47=9.9999999999999992e-25;
+  a09=casadi_sq(a35);
+  a10=casadi_sq(a12);
+  a09=(a09+a10);
+  a09=(a47*a09);
+  a10=casadi_sq(a59);
+  a13=casadi_sq(a63);
+  a10=(a10+a13);
+  a09=(a09*a10);
+  a36=(a36<=a09);
+  a09=(a35*a63);
+  a13=(a12*a59);
+  a09=(a09+a13);
+  a13=casadi_sign(a09);
+  a14=(!a36);
+  a20=(a46?a20:0);
+  a66=(a53?a66:0);
+  a20=(a20+a66);
+  a46=(a46?a16:0);
+  a53=(a53?a22:0);
+  a46=(a46+a53);
+  a20=(a20/a46);
+  a25=casadi_sign(a25);
+  a25=(a20*a25);
+  a35=(a25*a35);
+  a35=(a14?a35:0);
+  a46=(a55*a06);
+  a53=(a57*a19);
+  a46=(a46-a53);
+  a53=casadi_sq(a46);
+  a22=casadi_sq(a55);
+  a16=casadi_sq(a57);
+  a22=(a22+a16);
+  a22=(a47*a22);
+  a22=(a22*a10);
+  a53=(a53<=a22);
+  a22=(!a53);
+  a46=casadi_sign(a46);
+  a46=(a20*a46);
+  a16=(a46*a55);
+  a16=(a22?a16:0);
+  a35=(a35+a16);
+  a06=(a17*a06);
+  a19=(a64*a19);
+  a06=(a06-a19);
+  a19=casadi_sq(a06);
+  a16=casadi_sq(a17);
+  a66=casadi_sq(a64);
+  a16=(a16+a66);
+  a47=(a47*a16);
+  a47=(a47*a10);
+  a19=(a19<=a47);
+  a47=(!a19);
+  a06=casadi_sign(a06);
+  a06=(a20*a06);
+  a10=(a06*a17);
+  a10=(a47?a10:0);
+  a35=(a35+a10);
+  a54=(a54-a35);
+  a54=(a54*a63);
+  a12=(a25*a12);
+  a12=(-a12);
+  a12=(a14?a12:0);
+  a35=(a46*a57);
+  a35=(-a35);
+  a35=(a22?a35:0);
+  a12=(a12+a35);
+  a35=(a06*a64);
+  a35=(-a35);
+  a35=(a47?a35:0);
+  a12=(a12+a35);
+  a02=(a02-a12);
+  a02=(a02*a59);
+  a54=(a54-a02);
+  a09=casadi_fabs(a09);
+  a09=(a36?a09:0);
+  a55=(a55*a63);
+  a57=(a57*a59);
+  a55=(a55+a57);
+  a57=casadi_fabs(a55);
+  a57=(a53?a57:0);
+  a09=(a09+a57);
+  a17=(a17*a63);
+  a64=(a64*a59);
+  a17=(a17+a64);
+  a64=casadi_fabs(a17);
+  a64=(a19?a64:0);
+  a09=(a09+a64);
+  a54=(a54/a09);
+  a13=(a13*a54);
+  a36=(a36?a13:0);
+  a25=(a14?a25:0);
+  a14=(a14?a25:0);
+  a36=(a36+a14);
+  a36=(a29*a36);
+  a55=casadi_sign(a55);
+  a55=(a55*a54);
+  a53=(a53?a55:0);
+  a46=(a22?a46:0);
+  a22=(a22?a46:0);
+  a53=(a53+a22);
+  a53=(a23*a53);
+  a22=(a36+a53);
+  a17=casadi_sign(a17);
+  a17=(a17*a54);
+  a19=(a19?a17:0);
+  a06=(a47?a06:0);
+  a47=(a47?a06:0);
+  a19=(a19+a47);
+  a19=(a33*a19);
+  a22=(a22+a19);
+  a22=(a22+a32);
+  a22=(a22+a56);
+  a22=(a22+a00);
+  a22=(a22+a27);
+  a22=(a22+a28);
+  a22=(a22+a07);
+  a22=(a22+a69);
+  a22=(a22+a34);
+  a22=(a22+a18);
+  a22=(a22+a08);
+  a22=(a22+a67);
+  a22=(a22+a68);
+  a22=(a22+a37);
+  a22=(a22+a62);
+  a22=(a22+a31);
+  a22=(a22+a21);
+  a22=(a22+a05);
+  a22=(a22+a43);
+  a22=(a22+a41);
+  a22=casadi_fabs(a22);
+  a47=casadi_inf;
+  a22=(a22<a47);
+  a47=(a26&&a22);
+  a47=(a11&&a47);
+  a06=(-a29);
+  a36=casadi_fmax(a36,a06);
+  a36=casadi_fmin(a36,a29);
+  a36=(a47?a36:0);
+  if (res[0]!=0) res[0][0]=a36;
+  a36=(-a23);
+  a53=casadi_fmax(a53,a36);
+  a53=casadi_fmin(a53,a23);
+  a53=(a47?a53:0);
+  if (res[0]!=0) res[0][1]=a53;
+  a53=(-a33);
+  a19=casadi_fmax(a19,a53);
+  a19=casadi_fmin(a19,a33);
+  a19=(a47?a19:0);
+  if (res[0]!=0) res[0][2]=a19;
+  a19=(a11&&a22);
+  a33=(a19?a21:0);
+  a53=(!a19);
+  a42=(a53?a42:0);
+  a33=(a33+a42);
+  if (res[1]!=0) res[1][0]=a33;
+  a33=(a19?a05:0);
+  a50=(a53?a50:0);
+  a33=(a33+a50);
+  if (res[1]!=0) res[1][1]=a33;
+  a33=(a19?a43:0);
+  a40=(a53?a40:0);
+  a33=(a33+a40);
+  if (res[1]!=0) res[1][2]=a33;
+  a19=(a19?a41:0);
+  a53=(a53?a49:0);
+  a19=(a19+a53);
+  if (res[1]!=0) res[1][3]=a19;
+  a19=(a47?a32:0);
+  a53=(!a47);
+  a32=(a53?a32:0);
+  a19=(a19+a32);
+  if (res[1]!=0) res[1][4]=a19;
+  a19=(a47?a56:0);
+  a56=(a53?a56:0);
+  a19=(a19+a56);
+  if (res[1]!=0) res[1][5]=a19;
+  a19=(a47?a00:0);
+  a00=(a53?a00:0);
+  a19=(a19+a00);
+  if (res[1]!=0) res[1][6]=a19;
+  a19=(a47?a27:0);
+  a27=(a53?a27:0);
+  a19=(a19+a27);
+  if (res[1]!=0) res[1][7]=a19;
+  a19=(a47?a28:0);
+  a28=(a53?a28:0);
+  a19=(a19+a28);
+  if (res[1]!=0) res[1][8]=a19;
+  a19=(a47?a07:0);
+  a07=(a53?a07:0);
+  a19=(a19+a07);
+  if (res[1]!=0) res[1][9]=a19;
+  a19=(a47?a69:0);
+  a69=(a53?a69:0);
+  a19=(a19+a69);
+  if (res[1]!=0) res[1][10]=a19;
+  a19=(a47?a34:0);
+  a34=(a53?a34:0);
+  a19=(a19+a34);
+  if (res[1]!=0) res[1][11]=a19;
+  a19=(a47?a18:0);
+  a18=(a53?a18:0);
+  a19=(a19+a18);
+  if (res[1]!=0) res[1][12]=a19;
+  a19=(a47?a08:0);
+  a08=(a53?a08:0);
+  a19=(a19+a08);
+  if (res[1]!=0) res[1][13]=a19;
+  a19=(a47?a67:0);
+  a67=(a53?a67:0);
+  a19=(a19+a67);
+  if (res[1]!=0) res[1][14]=a19;
+  a19=(a47?a68:0);
+  a68=(a53?a68:0);
+  a19=(a19+a68);
+  if (res[1]!=0) res[1][15]=a19;
+  a19=(a47?a37:0);
+  a37=(a53?a37:0);
+  a19=(a19+a37);
+  if (res[1]!=0) res[1][16]=a19;
+  a19=(a47?a62:0);
+  a62=(a53?a62:0);
+  a19=(a19+a62);
+  if (res[1]!=0) res[1][17]=a19;
+  a47=(a47?a31:0);
+  a53=(a53?a31:0);
+  a47=(a47+a53);
+  if (res[1]!=0) res[1][18]=a47;
+  a20=(a24<a20);
+  a20=(a20?a15:0);
+  a20=(a22?a20:0);
+  a22=(!a22);
+  a15=3.;
+  a22=(a22?a15:0);
+  a20=(a20+a22);
+  a20=(a26?a20:0);
+  a26=(!a26);
+  a26=(a26?a24:0);
+  a20=(a20+a26);
+  a20=(a11?a20:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a20=(a20+a11);
+  if (res[2]!=0) res[2][0]=a20;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a43;
+  if (res[3]!=0) res[3][3]=a41;
+  if (res[3]!=0) res[3][4]=a45;
+  if (res[3]!=0) res[3][5]=a51;
+  if (res[3]!=0) res[3][6]=a39;
+  if (res[3]!=0) res[3][7]=a48;
+  if (res[3]!=0) res[3][8]=a30;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f28(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_ctc_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_ctc_preload_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][17] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][6] : 0;
+  a03=(a03/a15);
+  a27=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a27=(a27-a15);
+  a15=casadi_fabs(a27);
+  a16=(a16/a07);
+  a28=(a14*a16);
+  a22=(a22/a07);
+  a07=(a13*a22);
+  a28=(a28-a07);
+  a07=casadi_fabs(a28);
+  a29=(a15+a07);
+  a15=(a15-a07);
+  a15=casadi_fabs(a15);
+  a29=(a29-a15);
+  a15=2.;
+  a29=(a29/a15);
+  a08=(a08/a24);
+  a07=(a10*a08);
+  a12=(a12/a24);
+  a24=(a09*a12);
+  a07=(a07-a24);
+  a24=casadi_fabs(a07);
+  a30=(a29+a24);
+  a29=(a29-a24);
+  a29=casadi_fabs(a29);
+  a30=(a30-a29);
+  a30=(a30/a15);
+  a26=(a26<=a30);
+  a29=arg[5]? arg[5][7] : 0;
+  a24=1.;
+  a31=3.3333333333333331e-01;
+  a32=casadi_sq(a03);
+  a33=casadi_sq(a06);
+  a32=(a32-a33);
+  a33=casadi_sq(a16);
+  a34=casadi_sq(a22);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a33=casadi_sq(a08);
+  a34=casadi_sq(a12);
+  a33=(a33-a34);
+  a32=(a32+a33);
+  a32=casadi_sq(a32);
+  a33=(2.*a03);
+  a33=(a33*a06);
+  a34=(2.*a16);
+  a34=(a34*a22);
+  a33=(a33+a34);
+  a34=(2.*a08);
+  a34=(a34*a12);
+  a33=(a33+a34);
+  a33=casadi_sq(a33);
+  a32=(a32+a33);
+  a32=sqrt(a32);
+  a31=(a31*a32);
+  a31=(a24-a31);
+  a32=casadi_fabs(a31);
+  a31=(a31+a32);
+  a04=(a04*a31);
+  a04=sqrt(a04);
+  a29=(a29<=a04);
+  a26=(a26&&a29);
+  a29=(a17*a03);
+  a31=(a19*a29);
+  a32=(a00*a06);
+  a33=(a17*a02);
+  a34=(a32*a33);
+  a31=(a31-a34);
+  a29=(a29/a31);
+  a34=(a17*a16);
+  a35=(a20*a34);
+  a36=(a00*a22);
+  a37=(a36*a18);
+  a35=(a35-a37);
+  a34=(a34/a35);
+  a17=(a17*a08);
+  a37=(a25*a17);
+  a38=(a00*a12);
+  a39=(a38*a23);
+  a37=(a37-a39);
+  a17=(a17/a37);
+  a32=(a32/a31);
+  a39=(-a32);
+  a36=(a36/a35);
+  a40=(-a36);
+  a38=(a38/a37);
+  a41=(-a38);
+  a42=arg[4]? arg[4][0] : 0;
+  a43=arg[5]? arg[5][2] : 0;
+  a44=arg[3]? arg[3][0] : 0;
+  a45=arg[0]? arg[0][2] : 0;
+  a46=arg[5]? arg[5][5] : 0;
+  a47=arg[0]? arg[0][0] : 0;
+  a48=(a21-a47);
+  a49=arg[5]? arg[5][4] : 0;
+  a48=(a48/a49);
+  a48=(a48-a45);
+  a48=(a46*a48);
+  a48=(a45+a48);
+  a44=(a44-a48);
+  a43=(a43*a44);
+  a42=(a42+a43);
+  a43=arg[5]? arg[5][0] : 0;
+  a50=arg[2]? arg[2][0] : 0;
+  a50=(a50-a21);
+  a43=(a43*a50);
+  a42=(a42+a43);
+  a43=(a29*a42);
+  a51=arg[4]? arg[4][1] : 0;
+  a52=arg[5]? arg[5][3] : 0;
+  a53=arg[3]? arg[3][1] : 0;
+  a54=arg[0]? arg[0][3] : 0;
+  a55=arg[0]? arg[0][1] : 0;
+  a56=(a05-a55);
+  a56=(a56/a49);
+  a56=(a56-a54);
+  a46=(a46*a56);
+  a46=(a54+a46);
+  a53=(a53-a46);
+  a52=(a52*a53);
+  a51=(a51+a52);
+  a52=arg[5]? arg[5][1] : 0;
+  a56=arg[2]? arg[2][1] : 0;
+  a56=(a56-a05);
+  a52=(a52*a56);
+  a51=(a51+a52);
+  a52=(a32*a51);
+  a43=(a43-a52);
+  a52=(a29*a48);
+  a49=(a32*a46);
+  a52=(a52-a49);
+  a49=(a00*a52);
+  a57=(a49*a01);
+  a57=(a57*a52);
+  a19=(a19/a31);
+  a58=(a19*a46);
+  a33=(a33/a31);
+  a31=(a33*a48);
+  a58=(a58-a31);
+  a31=(a00*a58);
+  a59=(a31*a06);
+  a59=(a59*a58);
+  a57=(a57+a59);
+  a59=(a32*a57);
+  a49=(a49*a02);
+  a49=(a49*a52);
+  a31=(a31*a03);
+  a31=(a31*a58);
+  a49=(a49+a31);
+  a31=(a29*a49);
+  a59=(a59-a31);
+  a43=(a43+a59);
+  a59=(a29*a43);
+  a31=arg[0]? arg[0][4] : 0;
+  a59=(a59*a31);
+  a60=(a34*a42);
+  a61=(a36*a51);
+  a60=(a60-a61);
+  a61=(a34*a48);
+  a62=(a36*a46);
+  a61=(a61-a62);
+  a62=(a00*a61);
+  a63=(a62*a14);
+  a63=(a63*a61);
+  a20=(a20/a35);
+  a64=(a20*a46);
+  a18=(a18/a35);
+  a35=(a18*a48);
+  a64=(a64-a35);
+  a35=(a00*a64);
+  a65=(a35*a22);
+  a65=(a65*a64);
+  a63=(a63+a65);
+  a65=(a36*a63);
+  a62=(a62*a13);
+  a62=(a62*a61);
+  a35=(a35*a16);
+  a35=(a35*a64);
+  a62=(a62+a35);
+  a35=(a34*a62);
+  a65=(a65-a35);
+  a60=(a60+a65);
+  a65=(a34*a60);
+  a35=arg[0]? arg[0][5] : 0;
+  a65=(a65*a35);
+  a59=(a59+a65);
+  a65=(a17*a42);
+  a66=(a38*a51);
+  a65=(a65-a66);
+  a66=(a17*a48);
+  a67=(a38*a46);
+  a66=(a66-a67);
+  a67=(a00*a66);
+  a68=(a67*a10);
+  a68=(a68*a66);
+  a25=(a25/a37);
+  a69=(a25*a46);
+  a23=(a23/a37);
+  a37=(a23*a48);
+  a69=(a69-a37);
+  a37=(a00*a69);
+  a70=(a37*a12);
+  a70=(a70*a69);
+  a68=(a68+a70);
+  a70=(a38*a68);
+  a67=(a67*a09);
+  a67=(a67*a66);
+  a37=(a37*a08);
+  a37=(a37*a69);
+  a67=(a67+a37);
+  a37=(a17*a67);
+  a70=(a70-a37);
+  a65=(a65+a70);
+  a70=(a17*a65);
+  a37=arg[0]? arg[0][6] : 0;
+  a70=(a70*a37);
+  a59=(a59+a70);
+  a70=(a19*a51);
+  a71=(a33*a42);
+  a70=(a70-a71);
+  a49=(a33*a49);
+  a57=(a19*a57);
+  a49=(a49-a57);
+  a70=(a70+a49);
+  a02=(a02*a03);
+  a01=(a01*a06);
+  a02=(a02+a01);
+  a01=(a70*a02);
+  a58=casadi_sq(a58);
+  a58=(a58*a27);
+  a01=(a01+a58);
+  a58=(a29*a01);
+  a02=(a43*a02);
+  a06=casadi_sq(a52);
+  a27=(a06*a27);
+  a02=(a02-a27);
+  a27=(a33*a02);
+  a58=(a58-a27);
+  a27=arg[0]? arg[0][7] : 0;
+  a58=(a58*a27);
+  a59=(a59+a58);
+  a58=(a20*a51);
+  a03=(a18*a42);
+  a58=(a58-a03);
+  a62=(a18*a62);
+  a63=(a20*a63);
+  a62=(a62-a63);
+  a58=(a58+a62);
+  a13=(a13*a16);
+  a14=(a14*a22);
+  a13=(a13+a14);
+  a14=(a58*a13);
+  a64=casadi_sq(a64);
+  a64=(a64*a28);
+  a14=(a14+a64);
+  a64=(a34*a14);
+  a13=(a60*a13);
+  a22=casadi_sq(a61);
+  a28=(a22*a28);
+  a13=(a13-a28);
+  a28=(a18*a13);
+  a64=(a64-a28);
+  a28=arg[0]? arg[0][8] : 0;
+  a64=(a64*a28);
+  a59=(a59+a64);
+  a51=(a25*a51);
+  a42=(a23*a42);
+  a51=(a51-a42);
+  a67=(a23*a67);
+  a68=(a25*a68);
+  a67=(a67-a68);
+  a51=(a51+a67);
+  a09=(a09*a08);
+  a10=(a10*a12);
+  a09=(a09+a10);
+  a10=(a51*a09);
+  a69=casadi_sq(a69);
+  a69=(a69*a07);
+  a10=(a10+a69);
+  a69=(a17*a10);
+  a09=(a65*a09);
+  a12=casadi_sq(a66);
+  a07=(a12*a07);
+  a09=(a09-a07);
+  a07=(a23*a09);
+  a69=(a69-a07);
+  a07=arg[0]? arg[0][9] : 0;
+  a69=(a69*a07);
+  a59=(a59+a69);
+  a33=(a33*a70);
+  a69=arg[0]? arg[0][10] : 0;
+  a33=(a33*a69);
+  a59=(a59-a33);
+  a18=(a18*a58);
+  a33=arg[0]? arg[0][11] : 0;
+  a18=(a18*a33);
+  a59=(a59-a18);
+  a23=(a23*a51);
+  a18=arg[0]? arg[0][12] : 0;
+  a23=(a23*a18);
+  a59=(a59-a23);
+  a23=(a29*a52);
+  a08=arg[0]? arg[0][13] : 0;
+  a23=(a23*a08);
+  a59=(a59+a23);
+  a23=(a34*a61);
+  a67=arg[0]? arg[0][14] : 0;
+  a23=(a23*a67);
+  a59=(a59+a23);
+  a23=(a17*a66);
+  a68=arg[0]? arg[0][15] : 0;
+  a23=(a23*a68);
+  a59=(a59+a23);
+  a23=1.0000000000000000e-04;
+  a06=(a23+a06);
+  a06=sqrt(a06);
+  a06=(a52/a06);
+  a42=(a29*a06);
+  a64=arg[0]? arg[0][16] : 0;
+  a42=(a42*a64);
+  a59=(a59+a42);
+  a22=(a23+a22);
+  a22=sqrt(a22);
+  a22=(a61/a22);
+  a42=(a34*a22);
+  a16=arg[0]? arg[0][17] : 0;
+  a42=(a42*a16);
+  a59=(a59+a42);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a23=(a66/a23);
+  a12=(a17*a23);
+  a42=arg[0]? arg[0][18] : 0;
+  a12=(a12*a42);
+  a59=(a59+a12);
+  a02=(a19*a02);
+  a01=(a32*a01);
+  a02=(a02-a01);
+  a02=(a02*a27);
+  a43=(a32*a43);
+  a43=(a43*a31);
+  a60=(a36*a60);
+  a60=(a60*a35);
+  a43=(a43+a60);
+  a65=(a38*a65);
+  a65=(a65*a37);
+  a43=(a43+a65);
+  a02=(a02-a43);
+  a13=(a20*a13);
+  a14=(a36*a14);
+  a13=(a13-a14);
+  a13=(a13*a28);
+  a02=(a02+a13);
+  a09=(a25*a09);
+  a10=(a38*a10);
+  a09=(a09-a10);
+  a09=(a09*a07);
+  a02=(a02+a09);
+  a19=(a19*a70);
+  a19=(a19*a69);
+  a02=(a02+a19);
+  a20=(a20*a58);
+  a20=(a20*a33);
+  a02=(a02+a20);
+  a25=(a25*a51);
+  a25=(a25*a18);
+  a02=(a02+a25);
+  a52=(a32*a52);
+  a52=(a52*a08);
+  a02=(a02-a52);
+  a61=(a36*a61);
+  a61=(a61*a67);
+  a02=(a02-a61);
+  a66=(a38*a66);
+  a66=(a66*a68);
+  a02=(a02-a66);
+  a32=(a32*a06);
+  a32=(a32*a64);
+  a02=(a02-a32);
+  a36=(a36*a22);
+  a36=(a36*a16);
+  a02=(a02-a36);
+  a38=(a38*a23);
+  a38=(a38*a42);
+  a02=(a02-a38);
+  a38=arg[5]? arg[5][8] : 0;
+  a23=arg[5]? arg[5][9] : 0;
+  a36=arg[5]? arg[5][10] : 0;
+  arg[6]=w+0;
+  arg[7]=w+6;
+  arg[8] = arg[5]? arg[5] + 8 : 0;
+  arg[9] = arg[5]? arg[5] + 11 : 0;
+  arg[10] = arg[5]? arg[5] + 14 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a29;
+  w[1] = a34;
+  w[2] = a17;
+  w[3] = a39;
+  w[4] = a40;
+  w[5] = a41;
+  w[6] = a59;
+  w[7] = a02;
+  if (casadi_f16(arg+6, res+4, iw, w+21, 0)) return 1;
+  a29 = w[17];
+  a34 = w[18];
+  a17 = w[19];
+  a39 = w[20];
+  a40=(a29+a34);
+  a40=(a40+a17);
+  a40=(a40+a31);
+  a40=(a40+a35);
+  a40=(a40+a37);
+  a40=(a40+a27);
+  a40=(a40+a28);
+  a40=(a40+a07);
+  a40=(a40+a69);
+  a40=(a40+a33);
+  a40=(a40+a18);
+  a40=(a40+a08);
+  a40=(a40+a67);
+  a40=(a40+a68);
+  a40=(a40+a64);
+  a40=(a40+a16);
+  a40=(a40+a42);
+  a40=(a40+a21);
+  a40=(a40+a05);
+  a40=(a40+a48);
+  a40=(a40+a46);
+  a40=casadi_fabs(a40);
+  a41=casadi_inf;
+  a40=(a40<a41);
+  a41=(a26&&a40);
+  a41=(a11&&a41);
+  a59=(-a38);
+  a29=casadi_fmax(a29,a59);
+  a29=casadi_fmin(a29,a38);
+  a29=(a41?a29:0);
+  if (res[0]!=0) res[0][0]=a29;
+  a29=(-a23);
+  a34=casadi_fmax(a34,a29);
+  a34=casadi_fmin(a34,a23);
+  a34=(a41?a34:0);
+  if (res[0]!=0) res[0][1]=a34;
+  a34=(-a36);
+  a17=casadi_fmax(a17,a34);
+  a17=casadi_fmin(a17,a36);
+  a17=(a41?a17:0);
+  if (res[0]!=0) res[0][2]=a17;
+  a17=(a11&&a40);
+  a36=(a17?a21:0);
+  a34=(!a17);
+  a47=(a34?a47:0);
+  a36=(a36+a47);
+  if (res[1]!=0) res[1][0]=a36;
+  a36=(a17?a05:0);
+  a55=(a34?a55:0);
+  a36=(a36+a55);
+  if (res[1]!=0) res[1][1]=a36;
+  a36=(a17?a48:0);
+  a45=(a34?a45:0);
+  a36=(a36+a45);
+  if (res[1]!=0) res[1][2]=a36;
+  a17=(a17?a46:0);
+  a34=(a34?a54:0);
+  a17=(a17+a34);
+  if (res[1]!=0) res[1][3]=a17;
+  a17=(a41?a31:0);
+  a34=(!a41);
+  a31=(a34?a31:0);
+  a17=(a17+a31);
+  if (res[1]!=0) res[1][4]=a17;
+  a17=(a41?a35:0);
+  a35=(a34?a35:0);
+  a17=(a17+a35);
+  if (res[1]!=0) res[1][5]=a17;
+  a17=(a41?a37:0);
+  a37=(a34?a37:0);
+  a17=(a17+a37);
+  if (res[1]!=0) res[1][6]=a17;
+  a17=(a41?a27:0);
+  a27=(a34?a27:0);
+  a17=(a17+a27);
+  if (res[1]!=0) res[1][7]=a17;
+  a17=(a41?a28:0);
+  a28=(a34?a28:0);
+  a17=(a17+a28);
+  if (res[1]!=0) res[1][8]=a17;
+  a17=(a41?a07:0);
+  a07=(a34?a07:0);
+  a17=(a17+a07);
+  if (res[1]!=0) res[1][9]=a17;
+  a17=(a41?a69:0);
+  a69=(a34?a69:0);
+  a17=(a17+a69);
+  if (res[1]!=0) res[1][10]=a17;
+  a17=(a41?a33:0);
+  a33=(a34?a33:0);
+  a17=(a17+a33);
+  if (res[1]!=0) res[1][11]=a17;
+  a17=(a41?a18:0);
+  a18=(a34?a18:0);
+  a17=(a17+a18);
+  if (res[1]!=0) res[1][12]=a17;
+  a17=(a41?a08:0);
+  a08=(a34?a08:0);
+  a17=(a17+a08);
+  if (res[1]!=0) res[1][13]=a17;
+  a17=(a41?a67:0);
+  a67=(a34?a67:0);
+  a17=(a17+a67);
+  if (res[1]!=0) res[1][14]=a17;
+  a17=(a41?a68:0);
+  a68=(a34?a68:0);
+  a17=(a17+a68);
+  if (res[1]!=0) res[1][15]=a17;
+  a17=(a41?a64:0);
+  a64=(a34?a64:0);
+  a17=(a17+a64);
+  if (res[1]!=0) res[1][16]=a17;
+  a17=(a41?a16:0);
+  a16=(a34?a16:0);
+  a17=(a17+a16);
+  if (res[1]!=0) res[1][17]=a17;
+  a41=(a41?a42:0);
+  a34=(a34?a42:0);
+  a41=(a41+a34);
+  if (res[1]!=0) res[1][18]=a41;
+  a41=(a39==a15);
+  a15=(a41?a15:0);
+  a41=(!a41);
+  a39=(a39==a24);
+  a34=4.;
+  a39=(a39?a34:0);
+  a41=(a41?a39:0);
+  a15=(a15+a41);
+  a15=(a40?a15:0);
+  a40=(!a40);
+  a41=3.;
+  a40=(a40?a41:0);
+  a15=(a15+a40);
+  a15=(a26?a15:0);
+  a26=(!a26);
+  a26=(a26?a24:0);
+  a15=(a15+a26);
+  a15=(a11?a15:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a15=(a15+a11);
+  if (res[2]!=0) res[2][0]=a15;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a48;
+  if (res[3]!=0) res[3][3]=a46;
+  if (res[3]!=0) res[3][4]=a50;
+  if (res[3]!=0) res[3][5]=a56;
+  if (res[3]!=0) res[3][6]=a44;
+  if (res[3]!=0) res[3][7]=a53;
+  if (res[3]!=0) res[3][8]=a30;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f29(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_ctc_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_lqr_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a03=(a03/a15);
+  a01=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a01=(a01-a15);
+  a01=casadi_fabs(a01);
+  a16=(a16/a07);
+  a14=(a14*a16);
+  a22=(a22/a07);
+  a13=(a13*a22);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a01+a14);
+  a01=(a01-a14);
+  a01=casadi_fabs(a01);
+  a13=(a13-a01);
+  a01=2.;
+  a13=(a13/a01);
+  a08=(a08/a24);
+  a10=(a10*a08);
+  a12=(a12/a24);
+  a09=(a09*a12);
+  a10=(a10-a09);
+  a10=casadi_fabs(a10);
+  a09=(a13+a10);
+  a13=(a13-a10);
+  a13=casadi_fabs(a13);
+  a09=(a09-a13);
+  a09=(a09/a01);
+  a26=(a26<=a09);
+  a13=arg[5]? arg[5][3] : 0;
+  a10=1.;
+  a24=3.3333333333333331e-01;
+  a14=casadi_sq(a03);
+  a07=casadi_sq(a06);
+  a14=(a14-a07);
+  a07=casadi_sq(a16);
+  a15=casadi_sq(a22);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a07=casadi_sq(a08);
+  a15=casadi_sq(a12);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a14=casadi_sq(a14);
+  a07=(2.*a03);
+  a07=(a07*a06);
+  a15=(2.*a16);
+  a15=(a15*a22);
+  a07=(a07+a15);
+  a15=(2.*a08);
+  a15=(a15*a12);
+  a07=(a07+a15);
+  a07=casadi_sq(a07);
+  a14=(a14+a07);
+  a14=sqrt(a14);
+  a24=(a24*a14);
+  a24=(a10-a24);
+  a14=casadi_fabs(a24);
+  a24=(a24+a14);
+  a04=(a04*a24);
+  a04=sqrt(a04);
+  a13=(a13<=a04);
+  a26=(a26&&a13);
+  a03=(a17*a03);
+  a19=(a19*a03);
+  a06=(a00*a06);
+  a02=(a17*a02);
+  a02=(a06*a02);
+  a19=(a19-a02);
+  a03=(a03/a19);
+  a06=(a06/a19);
+  a19=casadi_sq(a06);
+  a22=(a00*a22);
+  a16=(a17*a16);
+  a20=(a20*a16);
+  a18=(a22*a18);
+  a20=(a20-a18);
+  a22=(a22/a20);
+  a18=casadi_sq(a22);
+  a19=(a19+a18);
+  a00=(a00*a12);
+  a17=(a17*a08);
+  a25=(a25*a17);
+  a23=(a00*a23);
+  a25=(a25-a23);
+  a00=(a00/a25);
+  a23=casadi_sq(a00);
+  a19=(a19+a23);
+  a23=arg[7]? arg[7][0] : 0;
+  a08=arg[6]? arg[6][0] : 0;
+  a12=arg[2]? arg[2][0] : 0;
+  a18=(a21-a12);
+  a08=(a08*a18);
+  a02=arg[6]? arg[6][1] : 0;
+  a13=arg[2]? arg[2][1] : 0;
+  a24=(a05-a13);
+  a02=(a02*a24);
+  a08=(a08+a02);
+  a02=arg[6]? arg[6][2] : 0;
+  a14=arg[0]? arg[0][2] : 0;
+  a07=arg[5]? arg[5][1] : 0;
+  a15=arg[0]? arg[0][0] : 0;
+  a27=(a21-a15);
+  a28=arg[5]? arg[5][0] : 0;
+  a27=(a27/a28);
+  a27=(a27-a14);
+  a27=(a07*a27);
+  a27=(a14+a27);
+  a29=arg[3]? arg[3][0] : 0;
+  a30=(a27-a29);
+  a02=(a02*a30);
+  a08=(a08+a02);
+  a02=arg[6]? arg[6][3] : 0;
+  a31=arg[0]? arg[0][3] : 0;
+  a32=arg[0]? arg[0][1] : 0;
+  a33=(a05-a32);
+  a33=(a33/a28);
+  a33=(a33-a31);
+  a07=(a07*a33);
+  a07=(a31+a07);
+  a33=arg[3]? arg[3][1] : 0;
+  a28=(a07-a33);
+  a02=(a02*a28);
+  a08=(a08+a02);
+  a23=(a23-a08);
+  a08=(a03*a23);
+  a16=(a16/a20);
+  a20=arg[7]? arg[7][1] : 0;
+  a02=arg[6]? arg[6][4] : 0;
+  a02=(a02*a18);
+  a34=arg[6]? arg[6][5] : 0;
+  a34=(a34*a24);
+  a02=(a02+a34);
+  a34=arg[6]? arg[6][6] : 0;
+  a34=(a34*a30);
+  a02=(a02+a34);
+  a34=arg[6]? arg[6][7] : 0;
+  a34=(a34*a28);
+  a02=(a02+a34);
+  a20=(a20-a02);
+  a02=(a16*a20);
+  a08=(a08+a02);
+  a17=(a17/a25);
+  a25=arg[7]? arg[7][2] : 0;
+  a02=arg[6]? arg[6][8] : 0;
+  a02=(a02*a18);
+  a18=arg[6]? arg[6][9] : 0;
+  a18=(a18*a24);
+  a02=(a02+a18);
+  a18=arg[6]? arg[6][10] : 0;
+  a18=(a18*a30);
+  a02=(a02+a18);
+  a18=arg[6]? arg[6][11] : 0;
+  a18=(a18*a28);
+  a02=(a02+a18);
+  a25=(a25-a02);
+  a02=(a17*a25);
+  a08=(a08+a02);
+  a02=(a19*a08);
+  a18=(a03*a06);
+  a28=(a16*a22);
+  a18=(a18+a28);
+  a28=(a17*a00);
+  a18=(a18+a28);
+  a23=(a06*a23);
+  a20=(a22*a20);
+  a23=(a23+a20);
+  a25=(a00*a25);
+  a23=(a23+a25);
+  a25=(a18*a23);
+  a02=(a02-a25);
+  a25=casadi_sq(a03);
+  a20=casadi_sq(a16);
+  a25=(a25+a20);
+  a20=casadi_sq(a17);
+  a25=(a25+a20);
+  a19=(a25*a19);
+  a20=(a06*a03);
+  a28=(a22*a16);
+  a20=(a20+a28);
+  a28=(a00*a17);
+  a20=(a20+a28);
+  a18=(a18*a20);
+  a19=(a19-a18);
+  a02=(a02/a19);
+  a03=(a03*a02);
+  a20=(a20*a08);
+  a25=(a25*a23);
+  a20=(a20-a25);
+  a20=(a20/a19);
+  a06=(a06*a20);
+  a03=(a03-a06);
+  a16=(a16*a02);
+  a22=(a22*a20);
+  a16=(a16-a22);
+  a22=(a03+a16);
+  a17=(a17*a02);
+  a00=(a00*a20);
+  a17=(a17-a00);
+  a22=(a22+a17);
+  a00=arg[0]? arg[0][4] : 0;
+  a22=(a22+a00);
+  a20=arg[0]? arg[0][5] : 0;
+  a22=(a22+a20);
+  a02=arg[0]? arg[0][6] : 0;
+  a22=(a22+a02);
+  a06=arg[0]? arg[0][7] : 0;
+  a22=(a22+a06);
+  a19=arg[0]? arg[0][8] : 0;
+  a22=(a22+a19);
+  a25=arg[0]? arg[0][9] : 0;
+  a22=(a22+a25);
+  a23=arg[0]? arg[0][10] : 0;
+  a22=(a22+a23);
+  a08=arg[0]? arg[0][11] : 0;
+  a22=(a22+a08);
+  a18=arg[0]? arg[0][12] : 0;
+  a22=(a22+a18);
+  a28=arg[0]? arg[0][13] : 0;
+  a22=(a22+a28);
+  a30=arg[0]? arg[0][14] : 0;
+  a22=(a22+a30);
+  a24=arg[0]? arg[0][15] : 0;
+  a22=(a22+a24);
+  a34=arg[0]? arg[0][16] : 0;
+  a22=(a22+a34);
+  a35=arg[0]? arg[0][17] : 0;
+  a22=(a22+a35);
+  a36=arg[0]? arg[0][18] : 0;
+  a22=(a22+a36);
+  a22=(a22+a21);
+  a22=(a22+a05);
+  a22=(a22+a27);
+  a22=(a22+a07);
+  a22=casadi_fabs(a22);
+  a37=casadi_inf;
+  a22=(a22<a37);
+  a37=(a26&&a22);
+  a37=(a11&&a37);
+  a38=arg[5]? arg[5][4] : 0;
+  a39=(-a38);
+  a39=casadi_fmax(a03,a39);
+  a39=casadi_fmin(a39,a38);
+  a39=(a37?a39:0);
+  if (res[0]!=0) res[0][0]=a39;
+  a39=arg[5]? arg[5][5] : 0;
+  a40=(-a39);
+  a40=casadi_fmax(a16,a40);
+  a40=casadi_fmin(a40,a39);
+  a40=(a37?a40:0);
+  if (res[0]!=0) res[0][1]=a40;
+  a40=arg[5]? arg[5][6] : 0;
+  a41=(-a40);
+  a41=casadi_fmax(a17,a41);
+  a41=casadi_fmin(a41,a40);
+  a41=(a37?a41:0);
+  if (res[0]!=0) res[0][2]=a41;
+  a41=(a11&&a22);
+  a42=(a41?a21:0);
+  a43=(!a41);
+  a15=(a43?a15:0);
+  a42=(a42+a15);
+  if (res[1]!=0) res[1][0]=a42;
+  a42=(a41?a05:0);
+  a32=(a43?a32:0);
+  a42=(a42+a32);
+  if (res[1]!=0) res[1][1]=a42;
+  a42=(a41?a27:0);
+  a14=(a43?a14:0);
+  a42=(a42+a14);
+  if (res[1]!=0) res[1][2]=a42;
+  a41=(a41?a07:0);
+  a43=(a43?a31:0);
+  a41=(a41+a43);
+  if (res[1]!=0) res[1][3]=a41;
+  a41=(a37?a00:0);
+  a43=(!a37);
+  a00=(a43?a00:0);
+  a41=(a41+a00);
+  if (res[1]!=0) res[1][4]=a41;
+  a41=(a37?a20:0);
+  a20=(a43?a20:0);
+  a41=(a41+a20);
+  if (res[1]!=0) res[1][5]=a41;
+  a41=(a37?a02:0);
+  a02=(a43?a02:0);
+  a41=(a41+a02);
+  if (res[1]!=0) res[1][6]=a41;
+  a41=(a37?a06:0);
+  a06=(a43?a06:0);
+  a41=(a41+a06);
+  if (res[1]!=0) res[1][7]=a41;
+  a41=(a37?a19:0);
+  a19=(a43?a19:0);
+  a41=(a41+a19);
+  if (res[1]!=0) res[1][8]=a41;
+  a41=(a37?a25:0);
+  a25=(a43?a25:0);
+  a41=(a41+a25);
+  if (res[1]!=0) res[1][9]=a41;
+  a41=(a37?a23:0);
+  a23=(a43?a23:0);
+  a41=(a41+a23);
+  if (res[1]!=0) res[1][10]=a41;
+  a41=(a37?a08:0);
+  a08=(a43?a08:0);
+  a41=(a41+a08);
+  if (res[1]!=0) res[1][11]=a41;
+  a41=(a37?a18:0);
+  a18=(a43?a18:0);
+  a41=(a41+a18);
+  if (res[1]!=0) res[1][12]=a41;
+  a41=(a37?a28:0);
+  a28=(a43?a28:0);
+  a41=(a41+a28);
+  if (res[1]!=0) res[1][13]=a41;
+  a41=(a37?a30:0);
+  a30=(a43?a30:0);
+  a41=(a41+a30);
+  if (res[1]!=0) res[1][14]=a41;
+  a41=(a37?a24:0);
+  a24=(a43?a24:0);
+  a41=(a41+a24);
+  if (res[1]!=0) res[1][15]=a41;
+  a41=(a37?a34:0);
+  a34=(a43?a34:0);
+  a41=(a41+a34);
+  if (res[1]!=0) res[1][16]=a41;
+  a41=(a37?a35:0);
+  a35=(a43?a35:0);
+  a41=(a41+a35);
+  if (res[1]!=0) res[1][17]=a41;
+  a37=(a37?a36:0);
+  a43=(a43?a36:0);
+  a37=(a37+a43);
+  if (res[1]!=0) res[1][18]=a37;
+  a37=0.;
+  a03=casadi_fabs(a03);
+  a03=(a03-a38);
+  a16=casadi_fabs(a16);
+  a16=(a16-a39);
+  a03=casadi_fmax(a03,a16);
+  a17=casadi_fabs(a17);
+  a17=(a17-a40);
+  a03=casadi_fmax(a03,a17);
+  a37=(a37<a03);
+  a37=(a37?a01:0);
+  a37=(a22?a37:0);
+  a22=(!a22);
+  a01=3.;
+  a22=(a22?a01:0);
+  a37=(a37+a22);
+  a37=(a26?a37:0);
+  a26=(!a26);
+  a26=(a26?a10:0);
+  a37=(a37+a26);
+  a37=(a11?a37:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a37=(a37+a11);
+  if (res[2]!=0) res[2][0]=a37;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a27;
+  if (res[3]!=0) res[3][3]=a07;
+  a12=(a12-a21);
+  if (res[3]!=0) res[3][4]=a12;
+  a13=(a13-a05);
+  if (res[3]!=0) res[3][5]=a13;
+  a29=(a29-a27);
+  if (res[3]!=0) res[3][6]=a29;
+  a33=(a33-a07);
+  if (res[3]!=0) res[3][7]=a33;
+  if (res[3]!=0) res[3][8]=a09;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f30(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_lqr_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_lqr_minmax_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a03=(a03/a15);
+  a01=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a01=(a01-a15);
+  a01=casadi_fabs(a01);
+  a16=(a16/a07);
+  a14=(a14*a16);
+  a22=(a22/a07);
+  a13=(a13*a22);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a01+a14);
+  a01=(a01-a14);
+  a01=casadi_fabs(a01);
+  a13=(a13-a01);
+  a01=2.;
+  a13=(a13/a01);
+  a08=(a08/a24);
+  a10=(a10*a08);
+  a12=(a12/a24);
+  a09=(a09*a12);
+  a10=(a10-a09);
+  a10=casadi_fabs(a10);
+  a09=(a13+a10);
+  a13=(a13-a10);
+  a13=casadi_fabs(a13);
+  a09=(a09-a13);
+  a09=(a09/a01);
+  a26=(a26<=a09);
+  a13=arg[5]? arg[5][3] : 0;
+  a10=1.;
+  a24=3.3333333333333331e-01;
+  a14=casadi_sq(a03);
+  a07=casadi_sq(a06);
+  a14=(a14-a07);
+  a07=casadi_sq(a16);
+  a15=casadi_sq(a22);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a07=casadi_sq(a08);
+  a15=casadi_sq(a12);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a14=casadi_sq(a14);
+  a07=(2.*a03);
+  a07=(a07*a06);
+  a15=(2.*a16);
+  a15=(a15*a22);
+  a07=(a07+a15);
+  a15=(2.*a08);
+  a15=(a15*a12);
+  a07=(a07+a15);
+  a07=casadi_sq(a07);
+  a14=(a14+a07);
+  a14=sqrt(a14);
+  a24=(a24*a14);
+  a24=(a10-a24);
+  a14=casadi_fabs(a24);
+  a24=(a24+a14);
+  a04=(a04*a24);
+  a04=sqrt(a04);
+  a13=(a13<=a04);
+  a26=(a26&&a13);
+  a13=arg[5]? arg[5][4] : 0;
+  a03=(a17*a03);
+  a19=(a19*a03);
+  a06=(a00*a06);
+  a02=(a17*a02);
+  a02=(a06*a02);
+  a19=(a19-a02);
+  a03=(a03/a19);
+  a02=(a13*a03);
+  a24=0.;
+  a14=arg[7]? arg[7][0] : 0;
+  a07=arg[6]? arg[6][0] : 0;
+  a15=arg[2]? arg[2][0] : 0;
+  a27=(a21-a15);
+  a07=(a07*a27);
+  a28=arg[6]? arg[6][1] : 0;
+  a29=arg[2]? arg[2][1] : 0;
+  a30=(a05-a29);
+  a28=(a28*a30);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][2] : 0;
+  a31=arg[0]? arg[0][2] : 0;
+  a32=arg[5]? arg[5][1] : 0;
+  a33=arg[0]? arg[0][0] : 0;
+  a34=(a21-a33);
+  a35=arg[5]? arg[5][0] : 0;
+  a34=(a34/a35);
+  a34=(a34-a31);
+  a34=(a32*a34);
+  a34=(a31+a34);
+  a36=arg[3]? arg[3][0] : 0;
+  a37=(a34-a36);
+  a28=(a28*a37);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][3] : 0;
+  a38=arg[0]? arg[0][3] : 0;
+  a39=arg[0]? arg[0][1] : 0;
+  a40=(a05-a39);
+  a40=(a40/a35);
+  a40=(a40-a38);
+  a32=(a32*a40);
+  a32=(a38+a32);
+  a40=arg[3]? arg[3][1] : 0;
+  a35=(a32-a40);
+  a28=(a28*a35);
+  a07=(a07+a28);
+  a14=(a14-a07);
+  a03=(a03*a14);
+  a16=(a17*a16);
+  a20=(a20*a16);
+  a22=(a00*a22);
+  a18=(a22*a18);
+  a20=(a20-a18);
+  a16=(a16/a20);
+  a18=arg[7]? arg[7][1] : 0;
+  a07=arg[6]? arg[6][4] : 0;
+  a07=(a07*a27);
+  a28=arg[6]? arg[6][5] : 0;
+  a28=(a28*a30);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][6] : 0;
+  a28=(a28*a37);
+  a07=(a07+a28);
+  a28=arg[6]? arg[6][7] : 0;
+  a28=(a28*a35);
+  a07=(a07+a28);
+  a18=(a18-a07);
+  a07=(a16*a18);
+  a03=(a03+a07);
+  a17=(a17*a08);
+  a25=(a25*a17);
+  a00=(a00*a12);
+  a23=(a00*a23);
+  a25=(a25-a23);
+  a17=(a17/a25);
+  a23=arg[7]? arg[7][2] : 0;
+  a12=arg[6]? arg[6][8] : 0;
+  a12=(a12*a27);
+  a27=arg[6]? arg[6][9] : 0;
+  a27=(a27*a30);
+  a12=(a12+a27);
+  a27=arg[6]? arg[6][10] : 0;
+  a27=(a27*a37);
+  a12=(a12+a27);
+  a27=arg[6]? arg[6][11] : 0;
+  a27=(a27*a35);
+  a12=(a12+a27);
+  a23=(a23-a12);
+  a12=(a17*a23);
+  a03=(a03+a12);
+  a06=(a06/a19);
+  a19=(a13*a06);
+  a12=(a03*a19);
+  a06=(a06*a14);
+  a22=(a22/a20);
+  a18=(a22*a18);
+  a06=(a06+a18);
+  a00=(a00/a25);
+  a23=(a00*a23);
+  a06=(a06+a23);
+  a23=(a06*a02);
+  a12=(a12-a23);
+  a12=casadi_fabs(a12);
+  a24=(a24<a12);
+  a23=arg[5]? arg[5][5] : 0;
+  a22=(a23*a22);
+  a25=(a02*a22);
+  a16=(a23*a16);
+  a18=(a19*a16);
+  a25=(a25-a18);
+  a25=casadi_fabs(a25);
+  a18=arg[5]? arg[5][6] : 0;
+  a17=(a18*a17);
+  a20=(a17*a22);
+  a00=(a18*a00);
+  a14=(a00*a16);
+  a20=(a20-a14);
+  a20=casadi_fabs(a20);
+  a25=(a25+a20);
+  a20=(a12*a25);
+  a20=(a24?a20:0);
+  a14=(a03*a22);
+  a27=(a06*a16);
+  a14=(a14-a27);
+  a14=casadi_fabs(a14);
+  a27=(a16*a19);
+  a35=(a22*a02);
+  a27=(a27-a35);
+  a27=casadi_fabs(a27);
+  a35=(a17*a19);
+  a37=(a00*a02);
+  a35=(a35-a37);
+  a35=casadi_fabs(a35);
+  a27=(a27+a35);
+  a27=(a24?a27:0);
+  a35=(!a24);
+  a37=(a35?a10:0);
+  a27=(a27+a37);
+  a37=(a14*a27);
+  a20=(a20<a37);
+  a14=(a20?a14:0);
+  a37=(!a20);
+  a12=(a24?a12:0);
+  a12=(a37?a12:0);
+  a14=(a14+a12);
+  a12=(a02*a00);
+  a30=(a19*a17);
+  a12=(a12-a30);
+  a12=casadi_fabs(a12);
+  a30=(a16*a00);
+  a08=(a22*a17);
+  a30=(a30-a08);
+  a30=casadi_fabs(a30);
+  a12=(a12+a30);
+  a30=(a14*a12);
+  a08=(a03*a00);
+  a07=(a06*a17);
+  a08=(a08-a07);
+  a08=casadi_fabs(a08);
+  a25=(a20?a25:0);
+  a27=(a37?a27:0);
+  a25=(a25+a27);
+  a27=(a08*a25);
+  a30=(a30<a27);
+  a27=(a30?a00:0);
+  a07=(!a30);
+  a28=(a20?a22:0);
+  a41=(a24?a19:0);
+  a42=(a35?a19:0);
+  a41=(a41+a42);
+  a41=(a37?a41:0);
+  a28=(a28+a41);
+  a28=(a07?a28:0);
+  a27=(a27+a28);
+  a28=(a03*a27);
+  a41=(a30?a17:0);
+  a20=(a20?a16:0);
+  a24=(a24?a02:0);
+  a35=(a35?a02:0);
+  a24=(a24+a35);
+  a37=(a37?a24:0);
+  a20=(a20+a37);
+  a20=(a07?a20:0);
+  a41=(a41+a20);
+  a20=(a06*a41);
+  a28=(a28-a20);
+  a28=casadi_sign(a28);
+  a20=(a27*a28);
+  a37=(a02*a20);
+  a28=(a41*a28);
+  a24=(a19*a28);
+  a37=(a37-a24);
+  a24=casadi_sq(a37);
+  a35=9.9999999999999992e-25;
+  a42=casadi_sq(a02);
+  a43=casadi_sq(a19);
+  a42=(a42+a43);
+  a42=(a35*a42);
+  a43=casadi_sq(a27);
+  a44=casadi_sq(a41);
+  a43=(a43+a44);
+  a42=(a42*a43);
+  a24=(a24<=a42);
+  a42=(a02*a41);
+  a44=(a19*a27);
+  a42=(a42+a44);
+  a44=casadi_sign(a42);
+  a45=(!a24);
+  a08=(a30?a08:0);
+  a14=(a07?a14:0);
+  a08=(a08+a14);
+  a30=(a30?a12:0);
+  a07=(a07?a25:0);
+  a30=(a30+a07);
+  a08=(a08/a30);
+  a37=casadi_sign(a37);
+  a37=(a08*a37);
+  a02=(a37*a02);
+  a02=(a45?a02:0);
+  a30=(a16*a20);
+  a07=(a22*a28);
+  a30=(a30-a07);
+  a07=casadi_sq(a30);
+  a25=casadi_sq(a16);
+  a12=casadi_sq(a22);
+  a25=(a25+a12);
+  a25=(a35*a25);
+  a25=(a25*a43);
+  a07=(a07<=a25);
+  a25=(!a07);
+  a30=casadi_sign(a30);
+  a30=(a08*a30);
+  a12=(a30*a16);
+  a12=(a25?a12:0);
+  a02=(a02+a12);
+  a20=(a17*a20);
+  a28=(a00*a28);
+  a20=(a20-a28);
+  a28=casadi_sq(a20);
+  a12=casadi_sq(a17);
+  a14=casadi_sq(a00);
+  a12=(a12+a14);
+  a35=(a35*a12);
+  a35=(a35*a43);
+  a28=(a28<=a35);
+  a35=(!a28);
+  a20=casadi_sign(a20);
+  a20=(a08*a20);
+  a43=(a20*a17);
+  a43=(a35?a43:0);
+  a02=(a02+a43);
+  a03=(a03-a02);
+  a03=(a03*a41);
+  a19=(a37*a19);
+  a19=(-a19);
+  a19=(a45?a19:0);
+  a02=(a30*a22);
+  a02=(-a02);
+  a02=(a25?a02:0);
+  a19=(a19+a02);
+  a02=(a20*a00);
+  a02=(-a02);
+  a02=(a35?a02:0);
+  a19=(a19+a02);
+  a06=(a06+a19);
+  a06=(a06*a27);
+  a03=(a03+a06);
+  a42=casadi_fabs(a42);
+  a42=(a24?a42:0);
+  a16=(a16*a41);
+  a22=(a22*a27);
+  a16=(a16+a22);
+  a22=casadi_fabs(a16);
+  a22=(a07?a22:0);
+  a42=(a42+a22);
+  a17=(a17*a41);
+  a00=(a00*a27);
+  a17=(a17+a00);
+  a00=casadi_fabs(a17);
+  a00=(a28?a00:0);
+  a42=(a42+a00);
+  a03=(a03/a42);
+  a44=(a44*a03);
+  a24=(a24?a44:0);
+  a37=(a45?a37:0);
+  a45=(a45?a37:0);
+  a24=(a24+a45);
+  a24=(a13*a24);
+  a16=casadi_sign(a16);
+  a16=(a16*a03);
+  a07=(a07?a16:0);
+  a30=(a25?a30:0);
+  a25=(a25?a30:0);
+  a07=(a07+a25);
+  a07=(a23*a07);
+  a25=(a24+a07);
+  a17=casadi_sign(a17);
+  a17=(a17*a03);
+  a28=(a28?a17:0);
+  a20=(a35?a20:0);
+  a35=(a35?a20:0);
+  a28=(a28+a35);
+  a28=(a18*a28);
+  a25=(a25+a28);
+  a35=arg[0]? arg[0][4] : 0;
+  a25=(a25+a35);
+  a20=arg[0]? arg[0][5] : 0;
+  a25=(a25+a20);
+  a17=arg[0]? arg[0][6] : 0;
+  a25=(a25+a17);
+  a03=arg[0]? arg[0][7] : 0;
+  a25=(a25+a03);
+  a30=arg[0]? arg[0][8] : 0;
+  a25=(a25+a30);
+  a16=arg[0]? arg[0][9] : 0;
+  a25=(a25+a16);
+  a45=arg[0]? arg[0][10] : 0;
+  a25=(a25+a45);
+  a37=arg[0]? arg[0][11] : 0;
+  a25=(a25+a37);
+  a44=arg[0]? arg[0][12] : 0;
+  a25=(a25+a44);
+  a42=arg[0]? arg[0][13] : 0;
+  a25=(a25+a42);
+  a00=arg[0]? arg[0][14] : 0;
+  a25=(a25+a00);
+  a27=arg[0]? arg[0][15] : 0;
+  a25=(a25+a27);
+  a41=arg[0]? arg[0][16] : 0;
+  a25=(a25+a41);
+  a22=arg[0]? arg[0][17] : 0;
+  a25=(a25+a22);
+  a06=arg[0]? arg[0][18] : 0;
+  a25=(a25+a06);
+  a25=(a25+a21);
+  a25=(a25+a05);
+  a25=(a25+a34);
+  a25=(a25+a32);
+  a25=casadi_fabs(a25);
+  a19=casadi_inf;
+  a25=(a25<a19);
+  a19=(a26&&a25);
+  a19=(a11&&a19);
+  a02=(-a13);
+  a24=casadi_fmax(a24,a02);
+  a24=casadi_fmin(a24,a13);
+  a24=(a19?a24:0);
+  if (res[0]!=0) res[0][0]=a24;
+  a24=(-a23);
+  a07=casadi_fmax(a07,a24);
+  a07=casadi_fmin(a07,a23);
+  a07=(a19?a07:0);
+  if (res[0]!=0) res[0][1]=a07;
+  a07=(-a18);
+  a28=casadi_fmax(a28,a07);
+  a28=casadi_fmin(a28,a18);
+  a28=(a19?a28:0);
+  if (res[0]!=0) res[0][2]=a28;
+  a28=(a11&&a25);
+  a18=(a28?a21:0);
+  a07=(!a28);
+  a33=(a07?a33:0);
+  a18=(a18+a33);
+  if (res[1]!=0) res[1][0]=a18;
+  a18=(a28?a05:0);
+  a39=(a07?a39:0);
+  a18=(a18+a39);
+  if (res[1]!=0) res[1][1]=a18;
+  a18=(a28?a34:0);
+  a31=(a07?a31:0);
+  a18=(a18+a31);
+  if (res[1]!=0) res[1][2]=a18;
+  a28=(a28?a32:0);
+  a07=(a07?a38:0);
+  a28=(a28+a07);
+  if (res[1]!=0) res[1][3]=a28;
+  a28=(a19?a35:0);
+  a07=(!a19);
+  a35=(a07?a35:0);
+  a28=(a28+a35);
+  if (res[1]!=0) res[1][4]=a28;
+  a28=(a19?a20:0);
+  a20=(a07?a20:0);
+  a28=(a28+a20);
+  if (res[1]!=0) res[1][5]=a28;
+  a28=(a19?a17:0);
+  a17=(a07?a17:0);
+  a28=(a28+a17);
+  if (res[1]!=0) res[1][6]=a28;
+  a28=(a19?a03:0);
+  a03=(a07?a03:0);
+  a28=(a28+a03);
+  if (res[1]!=0) res[1][7]=a28;
+  a28=(a19?a30:0);
+  a30=(a07?a30:0);
+  a28=(a28+a30);
+  if (res[1]!=0) res[1][8]=a28;
+  a28=(a19?a16:0);
+  a16=(a07?a16:0);
+  a28=(a28+a16);
+  if (res[1]!=0) res[1][9]=a28;
+  a28=(a19?a45:0);
+  a45=(a07?a45:0);
+  a28=(a28+a45);
+  if (res[1]!=0) res[1][10]=a28;
+  a28=(a19?a37:0);
+  a37=(a07?a37:0);
+  a28=(a28+a37);
+  if (res[1]!=0) res[1][11]=a28;
+  a28=(a19?a44:0);
+  a44=(a07?a44:0);
+  a28=(a28+a44);
+  if (res[1]!=0) res[1][12]=a28;
+  a28=(a19?a42:0);
+  a42=(a07?a42:0);
+  a28=(a28+a42);
+  if (res[1]!=0) res[1][13]=a28;
+  a28=(a19?a00:0);
+  a00=(a07?a00:0);
+  a28=(a28+a00);
+  if (res[1]!=0) res[1][14]=a28;
+  a28=(a19?a27:0);
+  a27=(a07?a27:0);
+  a28=(a28+a27);
+  if (res[1]!=0) res[1][15]=a28;
+  a28=(a19?a41:0);
+  a41=(a07?a41:0);
+  a28=(a28+a41);
+  if (res[1]!=0) res[1][16]=a28;
+  a28=(a19?a22:0);
+  a22=(a07?a22:0);
+  a28=(a28+a22);
+  if (res[1]!=0) res[1][17]=a28;
+  a19=(a19?a06:0);
+  a07=(a07?a06:0);
+  a19=(a19+a07);
+  if (res[1]!=0) res[1][18]=a19;
+  a08=(a10<a08);
+  a08=(a08?a01:0);
+  a08=(a25?a08:0);
+  a25=(!a25);
+  a01=3.;
+  a25=(a25?a01:0);
+  a08=(a08+a25);
+  a08=(a26?a08:0);
+  a26=(!a26);
+  a26=(a26?a10:0);
+  a08=(a08+a26);
+  a08=(a11?a08:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a08=(a08+a11);
+  if (res[2]!=0) res[2][0]=a08;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a34;
+  if (res[3]!=0) res[3][3]=a32;
+  a15=(a15-a21);
+  if (res[3]!=0) res[3][4]=a15;
+  a29=(a29-a05);
+  if (res[3]!=0) res[3][5]=a29;
+  a36=(a36-a34);
+  if (res[3]!=0) res[3][6]=a36;
+  a40=(a40-a32);
+  if (res[3]!=0) res[3][7]=a40;
+  if (res[3]!=0) res[3][8]=a09;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f31(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_minmax_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_lqr_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_lqr_preload_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43;
+  a00=-2.4399999999999999e-01;
+  a01=arg[1]? arg[1][0] : 0;
+  a02=cos(a01);
+  a03=(a00*a02);
+  a04=5.0000000000000000e-01;
+  a05=-4.8799999999999999e-01;
+  a01=sin(a01);
+  a06=(a05*a01);
+  a07=(a04+a06);
+  a08=4.8799999999999999e-01;
+  a09=arg[1]? arg[1][2] : 0;
+  a10=sin(a09);
+  a11=(a08*a10);
+  a07=(a07+a11);
+  a11=casadi_sq(a07);
+  a12=-5.0000000000000000e-01;
+  a06=(a12+a06);
+  a13=arg[1]? arg[1][1] : 0;
+  a14=sin(a13);
+  a15=(a08*a14);
+  a06=(a06+a15);
+  a15=casadi_sq(a06);
+  a11=(a11+a15);
+  a15=8.6599999999999999e-01;
+  a05=(a05*a02);
+  a15=(a15+a05);
+  a13=cos(a13);
+  a05=(a08*a13);
+  a05=(a15+a05);
+  a16=4.3300000000000000e-01;
+  a17=2.4399999999999999e-01;
+  a18=(a17*a13);
+  a19=(a16+a18);
+  a19=casadi_sq(a19);
+  a20=2.5000000000000000e-01;
+  a21=(a17*a01);
+  a20=(a20+a21);
+  a20=casadi_sq(a20);
+  a19=(a19-a20);
+  a21=-5.9535999999999999e-02;
+  a22=casadi_sq(a02);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a22=5.9535999999999999e-02;
+  a23=casadi_sq(a14);
+  a22=(a22*a23);
+  a19=(a19+a22);
+  a22=(a05*a19);
+  a09=cos(a09);
+  a08=(a08*a09);
+  a15=(a15+a08);
+  a08=(a17*a10);
+  a08=(a04+a08);
+  a08=casadi_sq(a08);
+  a23=(a17*a09);
+  a16=(a16+a23);
+  a16=casadi_sq(a16);
+  a08=(a08+a16);
+  a08=(a08-a20);
+  a08=(a08+a21);
+  a21=(a15*a08);
+  a22=(a22+a21);
+  a21=(a11*a22);
+  a20=(a07*a15);
+  a16=(a06*a05);
+  a20=(a20+a16);
+  a07=(a07*a08);
+  a06=(a06*a19);
+  a07=(a07+a06);
+  a06=(a20*a07);
+  a21=(a21-a06);
+  a05=casadi_sq(a05);
+  a15=casadi_sq(a15);
+  a05=(a05+a15);
+  a11=(a11*a05);
+  a15=casadi_sq(a20);
+  a11=(a11-a15);
+  a21=(a21/a11);
+  a03=(a03+a21);
+  a15=casadi_sq(a03);
+  a06=-2.5000000000000000e-01;
+  a19=(a00*a01);
+  a06=(a06+a19);
+  a05=(a05*a07);
+  a20=(a20*a22);
+  a05=(a05-a20);
+  a05=(a05/a11);
+  a06=(a06+a05);
+  a11=casadi_sq(a06);
+  a15=(a15+a11);
+  a15=sqrt(a15);
+  a11=(a00+a15);
+  a11=casadi_fabs(a11);
+  a20=(a00*a14);
+  a22=(a20+a05);
+  a07=casadi_sq(a22);
+  a08=-4.3300000000000000e-01;
+  a16=(a00*a13);
+  a16=(a08+a16);
+  a16=(a16+a21);
+  a24=casadi_sq(a16);
+  a07=(a07+a24);
+  a07=sqrt(a07);
+  a24=(a00+a07);
+  a24=casadi_fabs(a24);
+  a11=casadi_fmax(a11,a24);
+  a24=(a00*a09);
+  a08=(a08+a24);
+  a08=(a08+a21);
+  a24=casadi_sq(a08);
+  a25=(a00*a10);
+  a12=(a12+a25);
+  a12=(a12+a05);
+  a26=casadi_sq(a12);
+  a24=(a24+a26);
+  a24=sqrt(a24);
+  a26=(a00+a24);
+  a26=casadi_fabs(a26);
+  a11=casadi_fmax(a11,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a11=(a11<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a03=(a03/a15);
+  a01=(a01*a03);
+  a06=(a06/a15);
+  a15=(a02*a06);
+  a01=(a01-a15);
+  a01=casadi_fabs(a01);
+  a16=(a16/a07);
+  a14=(a14*a16);
+  a22=(a22/a07);
+  a13=(a13*a22);
+  a14=(a14-a13);
+  a14=casadi_fabs(a14);
+  a13=(a01+a14);
+  a01=(a01-a14);
+  a01=casadi_fabs(a01);
+  a13=(a13-a01);
+  a01=2.;
+  a13=(a13/a01);
+  a08=(a08/a24);
+  a10=(a10*a08);
+  a12=(a12/a24);
+  a09=(a09*a12);
+  a10=(a10-a09);
+  a10=casadi_fabs(a10);
+  a09=(a13+a10);
+  a13=(a13-a10);
+  a13=casadi_fabs(a13);
+  a09=(a09-a13);
+  a09=(a09/a01);
+  a26=(a26<=a09);
+  a13=arg[5]? arg[5][3] : 0;
+  a10=1.;
+  a24=3.3333333333333331e-01;
+  a14=casadi_sq(a03);
+  a07=casadi_sq(a06);
+  a14=(a14-a07);
+  a07=casadi_sq(a16);
+  a15=casadi_sq(a22);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a07=casadi_sq(a08);
+  a15=casadi_sq(a12);
+  a07=(a07-a15);
+  a14=(a14+a07);
+  a14=casadi_sq(a14);
+  a07=(2.*a03);
+  a07=(a07*a06);
+  a15=(2.*a16);
+  a15=(a15*a22);
+  a07=(a07+a15);
+  a15=(2.*a08);
+  a15=(a15*a12);
+  a07=(a07+a15);
+  a07=casadi_sq(a07);
+  a14=(a14+a07);
+  a14=sqrt(a14);
+  a24=(a24*a14);
+  a24=(a10-a24);
+  a14=casadi_fabs(a24);
+  a24=(a24+a14);
+  a04=(a04*a24);
+  a04=sqrt(a04);
+  a13=(a13<=a04);
+  a26=(a26&&a13);
+  a03=(a17*a03);
+  a19=(a19*a03);
+  a06=(a00*a06);
+  a02=(a17*a02);
+  a02=(a06*a02);
+  a19=(a19-a02);
+  a03=(a03/a19);
+  a16=(a17*a16);
+  a20=(a20*a16);
+  a22=(a00*a22);
+  a18=(a22*a18);
+  a20=(a20-a18);
+  a16=(a16/a20);
+  a17=(a17*a08);
+  a25=(a25*a17);
+  a12=(a00*a12);
+  a23=(a12*a23);
+  a25=(a25-a23);
+  a17=(a17/a25);
+  a06=(a06/a19);
+  a19=(-a06);
+  a22=(a22/a20);
+  a20=(-a22);
+  a12=(a12/a25);
+  a25=(-a12);
+  a23=arg[7]? arg[7][0] : 0;
+  a08=arg[6]? arg[6][0] : 0;
+  a18=arg[2]? arg[2][0] : 0;
+  a02=(a21-a18);
+  a08=(a08*a02);
+  a13=arg[6]? arg[6][1] : 0;
+  a24=arg[2]? arg[2][1] : 0;
+  a14=(a05-a24);
+  a13=(a13*a14);
+  a08=(a08+a13);
+  a13=arg[6]? arg[6][2] : 0;
+  a07=arg[0]? arg[0][2] : 0;
+  a15=arg[5]? arg[5][1] : 0;
+  a27=arg[0]? arg[0][0] : 0;
+  a28=(a21-a27);
+  a29=arg[5]? arg[5][0] : 0;
+  a28=(a28/a29);
+  a28=(a28-a07);
+  a28=(a15*a28);
+  a28=(a07+a28);
+  a30=arg[3]? arg[3][0] : 0;
+  a31=(a28-a30);
+  a13=(a13*a31);
+  a08=(a08+a13);
+  a13=arg[6]? arg[6][3] : 0;
+  a32=arg[0]? arg[0][3] : 0;
+  a33=arg[0]? arg[0][1] : 0;
+  a34=(a05-a33);
+  a34=(a34/a29);
+  a34=(a34-a32);
+  a15=(a15*a34);
+  a15=(a32+a15);
+  a34=arg[3]? arg[3][1] : 0;
+  a29=(a15-a34);
+  a13=(a13*a29);
+  a08=(a08+a13);
+  a23=(a23-a08);
+  a08=(a03*a23);
+  a13=arg[7]? arg[7][1] : 0;
+  a35=arg[6]? arg[6][4] : 0;
+  a35=(a35*a02);
+  a36=arg[6]? arg[6][5] : 0;
+  a36=(a36*a14);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][6] : 0;
+  a36=(a36*a31);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][7] : 0;
+  a36=(a36*a29);
+  a35=(a35+a36);
+  a13=(a13-a35);
+  a35=(a16*a13);
+  a08=(a08+a35);
+  a35=arg[7]? arg[7][2] : 0;
+  a36=arg[6]? arg[6][8] : 0;
+  a36=(a36*a02);
+  a02=arg[6]? arg[6][9] : 0;
+  a02=(a02*a14);
+  a36=(a36+a02);
+  a02=arg[6]? arg[6][10] : 0;
+  a02=(a02*a31);
+  a36=(a36+a02);
+  a02=arg[6]? arg[6][11] : 0;
+  a02=(a02*a29);
+  a36=(a36+a02);
+  a35=(a35-a36);
+  a36=(a17*a35);
+  a08=(a08+a36);
+  a06=(a06*a23);
+  a22=(a22*a13);
+  a06=(a06+a22);
+  a12=(a12*a35);
+  a06=(a06+a12);
+  a06=(-a06);
+  a12=arg[5]? arg[5][4] : 0;
+  a35=arg[5]? arg[5][5] : 0;
+  a22=arg[5]? arg[5][6] : 0;
+  arg[8]=w+0;
+  arg[9]=w+6;
+  arg[10] = arg[5]? arg[5] + 4 : 0;
+  arg[11] = arg[5]? arg[5] + 7 : 0;
+  arg[12] = arg[5]? arg[5] + 10 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a03;
+  w[1] = a16;
+  w[2] = a17;
+  w[3] = a19;
+  w[4] = a20;
+  w[5] = a25;
+  w[6] = a08;
+  w[7] = a06;
+  if (casadi_f16(arg+8, res+4, iw, w+21, 0)) return 1;
+  a03 = w[17];
+  a16 = w[18];
+  a17 = w[19];
+  a19 = w[20];
+  a20=(a03+a16);
+  a20=(a20+a17);
+  a25=arg[0]? arg[0][4] : 0;
+  a20=(a20+a25);
+  a08=arg[0]? arg[0][5] : 0;
+  a20=(a20+a08);
+  a06=arg[0]? arg[0][6] : 0;
+  a20=(a20+a06);
+  a13=arg[0]? arg[0][7] : 0;
+  a20=(a20+a13);
+  a23=arg[0]? arg[0][8] : 0;
+  a20=(a20+a23);
+  a36=arg[0]? arg[0][9] : 0;
+  a20=(a20+a36);
+  a02=arg[0]? arg[0][10] : 0;
+  a20=(a20+a02);
+  a29=arg[0]? arg[0][11] : 0;
+  a20=(a20+a29);
+  a31=arg[0]? arg[0][12] : 0;
+  a20=(a20+a31);
+  a14=arg[0]? arg[0][13] : 0;
+  a20=(a20+a14);
+  a37=arg[0]? arg[0][14] : 0;
+  a20=(a20+a37);
+  a38=arg[0]? arg[0][15] : 0;
+  a20=(a20+a38);
+  a39=arg[0]? arg[0][16] : 0;
+  a20=(a20+a39);
+  a40=arg[0]? arg[0][17] : 0;
+  a20=(a20+a40);
+  a41=arg[0]? arg[0][18] : 0;
+  a20=(a20+a41);
+  a20=(a20+a21);
+  a20=(a20+a05);
+  a20=(a20+a28);
+  a20=(a20+a15);
+  a20=casadi_fabs(a20);
+  a42=casadi_inf;
+  a20=(a20<a42);
+  a42=(a26&&a20);
+  a42=(a11&&a42);
+  a43=(-a12);
+  a03=casadi_fmax(a03,a43);
+  a03=casadi_fmin(a03,a12);
+  a03=(a42?a03:0);
+  if (res[0]!=0) res[0][0]=a03;
+  a03=(-a35);
+  a16=casadi_fmax(a16,a03);
+  a16=casadi_fmin(a16,a35);
+  a16=(a42?a16:0);
+  if (res[0]!=0) res[0][1]=a16;
+  a16=(-a22);
+  a17=casadi_fmax(a17,a16);
+  a17=casadi_fmin(a17,a22);
+  a17=(a42?a17:0);
+  if (res[0]!=0) res[0][2]=a17;
+  a17=(a11&&a20);
+  a22=(a17?a21:0);
+  a16=(!a17);
+  a27=(a16?a27:0);
+  a22=(a22+a27);
+  if (res[1]!=0) res[1][0]=a22;
+  a22=(a17?a05:0);
+  a33=(a16?a33:0);
+  a22=(a22+a33);
+  if (res[1]!=0) res[1][1]=a22;
+  a22=(a17?a28:0);
+  a07=(a16?a07:0);
+  a22=(a22+a07);
+  if (res[1]!=0) res[1][2]=a22;
+  a17=(a17?a15:0);
+  a16=(a16?a32:0);
+  a17=(a17+a16);
+  if (res[1]!=0) res[1][3]=a17;
+  a17=(a42?a25:0);
+  a16=(!a42);
+  a25=(a16?a25:0);
+  a17=(a17+a25);
+  if (res[1]!=0) res[1][4]=a17;
+  a17=(a42?a08:0);
+  a08=(a16?a08:0);
+  a17=(a17+a08);
+  if (res[1]!=0) res[1][5]=a17;
+  a17=(a42?a06:0);
+  a06=(a16?a06:0);
+  a17=(a17+a06);
+  if (res[1]!=0) res[1][6]=a17;
+  a17=(a42?a13:0);
+  a13=(a16?a13:0);
+  a17=(a17+a13);
+  if (res[1]!=0) res[1][7]=a17;
+  a17=(a42?a23:0);
+  a23=(a16?a23:0);
+  a17=(a17+a23);
+  if (res[1]!=0) res[1][8]=a17;
+  a17=(a42?a36:0);
+  a36=(a16?a36:0);
+  a17=(a17+a36);
+  if (res[1]!=0) res[1][9]=a17;
+  a17=(a42?a02:0);
+  a02=(a16?a02:0);
+  a17=(a17+a02);
+  if (res[1]!=0) res[1][10]=a17;
+  a17=(a42?a29:0);
+  a29=(a16?a29:0);
+  a17=(a17+a29);
+  if (res[1]!=0) res[1][11]=a17;
+  a17=(a42?a31:0);
+  a31=(a16?a31:0);
+  a17=(a17+a31);
+  if (res[1]!=0) res[1][12]=a17;
+  a17=(a42?a14:0);
+  a14=(a16?a14:0);
+  a17=(a17+a14);
+  if (res[1]!=0) res[1][13]=a17;
+  a17=(a42?a37:0);
+  a37=(a16?a37:0);
+  a17=(a17+a37);
+  if (res[1]!=0) res[1][14]=a17;
+  a17=(a42?a38:0);
+  a38=(a16?a38:0);
+  a17=(a17+a38);
+  if (res[1]!=0) res[1][15]=a17;
+  a17=(a42?a39:0);
+  a39=(a16?a39:0);
+  a17=(a17+a39);
+  if (res[1]!=0) res[1][16]=a17;
+  a17=(a42?a40:0);
+  a40=(a16?a40:0);
+  a17=(a17+a40);
+  if (res[1]!=0) res[1][17]=a17;
+  a42=(a42?a41:0);
+  a16=(a16?a41:0);
+  a42=(a42+a16);
+  if (res[1]!=0) res[1][18]=a42;
+  a42=(a19==a01);
+  a01=(a42?a01:0);
+  a42=(!a42);
+  a19=(a19==a10);
+  a16=4.;
+  a19=(a19?a16:0);
+  a42=(a42?a19:0);
+  a01=(a01+a42);
+  a01=(a20?a01:0);
+  a20=(!a20);
+  a42=3.;
+  a20=(a20?a42:0);
+  a01=(a01+a20);
+  a01=(a26?a01:0);
+  a26=(!a26);
+  a26=(a26?a10:0);
+  a01=(a01+a26);
+  a01=(a11?a01:0);
+  a11=(!a11);
+  a26=5.;
+  a11=(a11?a26:0);
+  a01=(a01+a11);
+  if (res[2]!=0) res[2][0]=a01;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a05;
+  if (res[3]!=0) res[3][2]=a28;
+  if (res[3]!=0) res[3][3]=a15;
+  a18=(a18-a21);
+  if (res[3]!=0) res[3][4]=a18;
+  a24=(a24-a05);
+  if (res[3]!=0) res[3][5]=a24;
+  a30=(a30-a28);
+  if (res[3]!=0) res[3][6]=a30;
+  a34=(a34-a15);
+  if (res[3]!=0) res[3][7]=a34;
+  if (res[3]!=0) res[3][8]=a09;
+  if (res[3]!=0) res[3][9]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f32(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_preload_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_lqr_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -16984,7 +21637,7 @@ static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f27(arg, res, iw, w, mem);
+  return casadi_f33(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_plant_xedd_checkout(void) {
@@ -17032,7 +21685,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_plant_xedd_sparsity_in(c
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s2;
-    case 3: return casadi_s14;
+    case 3: return casadi_s15;
     default: return 0;
   }
 }
@@ -17061,7 +21714,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_plant_xedd_work_bytes(casadi_int *sz_a
 }
 
 /* shang2010_smooth_plant_step:(x[4],tau_a[3],plant[21],h)->(x_next[4]) */
-static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -18728,7 +23381,7 @@ static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f28(arg, res, iw, w, mem);
+  return casadi_f34(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_plant_step_checkout(void) {
@@ -18775,7 +23428,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_plant_step_sparsity_in(c
   switch (i) {
     case 0: return casadi_s3;
     case 1: return casadi_s2;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     case 3: return casadi_s9;
     default: return 0;
   }
@@ -18805,7 +23458,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_plant_step_work_bytes(casadi_int *sz_a
 }
 
 /* shang2010_smooth_measure:(xe[2],plant[21])->(qa[3]) */
-static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15;
   a00=0.;
@@ -18905,7 +23558,7 @@ static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f29(arg, res, iw, w, mem);
+  return casadi_f35(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_measure_checkout(void) {
@@ -18949,7 +23602,7 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_measure_name_out(casadi_int i)
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s14;
+    case 1: return casadi_s15;
     default: return 0;
   }
 }
@@ -18978,7 +23631,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_measure_work_bytes(casadi_int *sz_arg,
 }
 
 /* shang2010_smooth_na_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -18995,7 +23648,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19020,19 +23673,19 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19045,7 +23698,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f30(arg, res, iw, w, mem);
+  return casadi_f36(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_closed_loop_checkout(void) {
@@ -19090,17 +23743,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_na_closed_loop_name_out(casadi
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19122,7 +23775,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_na_closed_loop_work_bytes(casadi_int *
 }
 
 /* shang2010_smooth_na_minmax_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -19139,7 +23792,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19164,19 +23817,19 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19189,7 +23842,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f31(arg, res, iw, w, mem);
+  return casadi_f37(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_minmax_closed_loop_checkout(void) {
@@ -19234,17 +23887,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_na_minmax_closed_loop_name_out
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19266,7 +23919,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_na_minmax_closed_loop_work_bytes(casad
 }
 
 /* shang2010_smooth_na_preload_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+256, *w07=w+260, *w08=w+263, *w09=w+269, *w10=w+271, *w11=w+273, *w13=w+275, *w14=w+278, w15, w16;
   casadi_real w17, *w18=w+297, *w19=w+301;
@@ -19283,7 +23936,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19308,19 +23961,19 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19333,7 +23986,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f32(arg, res, iw, w, mem);
+  return casadi_f38(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_preload_closed_loop_checkout(void) {
@@ -19378,17 +24031,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_na_preload_closed_loop_name_ou
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19410,7 +24063,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_na_preload_closed_loop_work_bytes(casa
 }
 
 /* shang2010_smooth_na_proj_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -19427,7 +24080,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19452,19 +24105,19 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19477,7 +24130,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f33(arg, res, iw, w, mem);
+  return casadi_f39(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_proj_closed_loop_checkout(void) {
@@ -19522,17 +24175,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_na_proj_closed_loop_name_out(c
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19554,7 +24207,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_na_proj_closed_loop_work_bytes(casadi_
 }
 
 /* shang2010_smooth_na_proj_minmax_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -19571,7 +24224,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19596,19 +24249,19 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19621,7 +24274,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f34(arg, res, iw, w, mem);
+  return casadi_f40(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_proj_minmax_closed_loop_checkout(void) {
@@ -19666,17 +24319,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_na_proj_minmax_closed_loop_nam
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19698,7 +24351,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_na_proj_minmax_closed_loop_work_bytes(
 }
 
 /* shang2010_smooth_na_proj_preload_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+256, *w07=w+260, *w08=w+263, *w09=w+269, *w10=w+271, *w11=w+273, *w13=w+275, *w14=w+278, w15, w16;
   casadi_real w17, *w18=w+297, *w19=w+301;
@@ -19715,7 +24368,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19740,19 +24393,19 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19765,7 +24418,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f35(arg, res, iw, w, mem);
+  return casadi_f41(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_na_proj_preload_closed_loop_checkout(void) {
@@ -19810,17 +24463,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_na_proj_preload_closed_loop_na
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19842,7 +24495,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_na_proj_preload_closed_loop_work_bytes
 }
 
 /* shang2010_smooth_apd_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -19859,7 +24512,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19884,19 +24537,19 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19909,7 +24562,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f36(arg, res, iw, w, mem);
+  return casadi_f42(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_closed_loop_checkout(void) {
@@ -19954,17 +24607,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_apd_closed_loop_name_out(casad
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -19986,7 +24639,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_closed_loop_work_bytes(casadi_int 
 }
 
 /* shang2010_smooth_apd_minmax_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
   casadi_real w17, *w18=w+137, *w19=w+141;
@@ -20003,7 +24656,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20028,19 +24681,19 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20053,7 +24706,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f37(arg, res, iw, w, mem);
+  return casadi_f43(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_minmax_closed_loop_checkout(void) {
@@ -20098,17 +24751,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_apd_minmax_closed_loop_name_ou
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20130,7 +24783,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_minmax_closed_loop_work_bytes(casa
 }
 
 /* shang2010_smooth_apd_preload_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+247, *w07=w+251, *w08=w+254, *w09=w+260, *w10=w+262, *w11=w+264, *w13=w+266, *w14=w+269, w15, w16;
   casadi_real w17, *w18=w+288, *w19=w+292;
@@ -20147,7 +24800,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20172,19 +24825,19 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20197,7 +24850,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f38(arg, res, iw, w, mem);
+  return casadi_f44(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_preload_closed_loop_checkout(void) {
@@ -20242,17 +24895,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_apd_preload_closed_loop_name_o
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20273,8 +24926,884 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_apd_preload_closed_loop_work_bytes(cas
   return 0;
 }
 
+/* shang2010_smooth_ctc_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f45(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
+  casadi_real w17, *w18=w+137, *w19=w+141;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f27(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f45(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_ctc_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 156;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 156*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_ctc_minmax_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f46(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
+  casadi_real w17, *w18=w+137, *w19=w+141;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f46(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_ctc_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 156;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 156*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_ctc_preload_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f47(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+243, *w07=w+247, *w08=w+250, *w09=w+256, *w10=w+258, *w11=w+260, *w13=w+262, *w14=w+265, w15, w16;
+  casadi_real w17, *w18=w+284, *w19=w+288;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f47(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_ctc_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_ctc_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_ctc_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_ctc_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 303;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 303*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_lqr_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f48(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w15=w+103, *w16=w+106, w17, w18, w19, *w20=w+125, *w21=w+129;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f30(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f48(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_lqr_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 144;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 144*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_lqr_minmax_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f49(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w15=w+103, *w16=w+106, w17, w18, w19, *w20=w+125, *w21=w+129;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f31(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f49(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_lqr_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 144;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 144*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_lqr_preload_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f50(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+215, *w07=w+219, *w15=w+222, *w16=w+225, w17, w18, w19, *w20=w+244, *w21=w+248;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f32(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f50(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_lqr_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_lqr_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_lqr_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_lqr_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 263;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 263*sizeof(casadi_real);
+  return 0;
+}
+
 /* shang2010_smooth_path_coefficients:(p[2],dp[2],ddp[2],theta[15],tau_max[3])->(a[2],b[2],S[6],v1[3],N_min_norm[6],h_min_norm[3],N_min_max[6],h_min_max[3],sing[2]) */
-static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f51(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -20868,7 +26397,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_coefficients(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f39(arg, res, iw, w, mem);
+  return casadi_f51(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_coefficients_checkout(void) {
@@ -20963,7 +26492,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_path_coefficients_work_bytes(casadi_in
 }
 
 /* shang2010_smooth_path_mvc:(stage[27],params[16])->(x_mvc) */
-static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f52(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -23612,7 +29141,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_mvc(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f40(arg, res, iw, w, mem);
+  return casadi_f52(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_mvc_checkout(void) {
@@ -23655,8 +29184,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_path_mvc_name_out(casadi_int i
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_path_mvc_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s18;
-    case 1: return casadi_s19;
+    case 0: return casadi_s20;
+    case 1: return casadi_s21;
     default: return 0;
   }
 }
@@ -23685,7 +29214,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_path_mvc_work_bytes(casadi_int *sz_arg
 }
 
 /* shang2010_smooth_path_backward:(x_next_max,pair[55],params[16])->(x_max,y) */
-static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f53(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -27207,7 +32736,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_backward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f41(arg, res, iw, w, mem);
+  return casadi_f53(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_backward_checkout(void) {
@@ -27253,8 +32782,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_path_backward_name_out(casadi_
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_path_backward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s9;
-    case 1: return casadi_s20;
-    case 2: return casadi_s19;
+    case 1: return casadi_s22;
+    case 2: return casadi_s21;
     default: return 0;
   }
 }
@@ -27284,7 +32813,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_path_backward_work_bytes(casadi_int *s
 }
 
 /* shang2010_smooth_path_forward:(x,input[56],params[16])->(x_next,y[6]) */
-static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f54(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -28129,7 +33658,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f42(arg, res, iw, w, mem);
+  return casadi_f54(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_forward_checkout(void) {
@@ -28175,8 +33704,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_path_forward_name_out(casadi_i
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_path_forward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s9;
-    case 1: return casadi_s21;
-    case 2: return casadi_s19;
+    case 1: return casadi_s23;
+    case 2: return casadi_s21;
     default: return 0;
   }
 }
@@ -28206,7 +33735,7 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_path_forward_work_bytes(casadi_int *sz
 }
 
 /* shang2010_smooth_path_torques:(stage[27],sd,sdd,params[16],tau_max[3])->(u[2],tau_min_norm[3],tau_min_max[3],min_max_ratio) */
-static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f55(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27;
@@ -28537,7 +34066,7 @@ static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f43(arg, res, iw, w, mem);
+  return casadi_f55(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int shang2010_smooth_path_torques_checkout(void) {
@@ -28586,10 +34115,10 @@ CASADI_SYMBOL_EXPORT const char* shang2010_smooth_path_torques_name_out(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_path_torques_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s18;
+    case 0: return casadi_s20;
     case 1: return casadi_s9;
     case 2: return casadi_s9;
-    case 3: return casadi_s19;
+    case 3: return casadi_s21;
     case 4: return casadi_s2;
     default: return 0;
   }
@@ -28618,6 +34147,5987 @@ CASADI_SYMBOL_EXPORT int shang2010_smooth_path_torques_work_bytes(casadi_int *sz
   if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_forward_dynamics_jacobians:(xe[2],xed[2],tau_a[3],theta[15])->(xedd[2],d_xe[4],d_xed[4],d_tau_a[6],d_theta[30],sing[2]) */
+static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
+  casadi_real a120, a121, a122, a123, a124, a125, a126, a127, a128, a129, a130, a131;
+  casadi_real a132, a133, a134, a135, a136, a137, a138, a139, a140, a141, a142, a143;
+  casadi_real a144, a145, a146, a147, a148, a149, a150, a151, a152, a153, a154, a155;
+  casadi_real a156, a157, a158, a159, a160, a161, a162, a163, a164, a165, a166, a167;
+  casadi_real a168, a169, a170, a171, a172, a173, a174, a175, a176, a177, a178, a179;
+  casadi_real a180, a181, a182, a183, a184, a185, a186, a187, a188, a189, a190, a191;
+  casadi_real a192, a193, a194, a195, a196, a197, a198, a199, a200, a201, a202, a203;
+  casadi_real a204, a205, a206, a207, a208, a209, a210, a211, a212, a213, a214, a215;
+  casadi_real a216, a217, a218, a219, a220, a221, a222, a223, a224, a225, a226, a227;
+  casadi_real a228, a229, a230, a231, a232, a233, a234, a235, a236, a237, a238, a239;
+  casadi_real a240, a241, a242, a243, a244, a245, a246, a247, a248, a249, a250, a251;
+  casadi_real a252, a253, a254, a255;
+  a000=-2.4399999999999999e-01;
+  a001=-5.1229508196721307e-01;
+  a002=2.0491803278688523e+00;
+  a003=arg[0]? arg[0][1] : 0;
+  a004=(a002*a003);
+  a001=(a001+a004);
+  a005=arg[0]? arg[0][0] : 0;
+  a006=casadi_sq(a005);
+  a007=-2.5000000000000000e-01;
+  a007=(a007+a003);
+  a008=casadi_sq(a007);
+  a009=(a006+a008);
+  a009=sqrt(a009);
+  a010=(a005/a009);
+  a011=1.;
+  a012=-4.1991400161246979e+00;
+  a006=(a012*a006);
+  a006=(a011+a006);
+  a008=(a012*a008);
+  a006=(a006+a008);
+  a006=sqrt(a006);
+  a010=(a010*a006);
+  a008=(a001-a010);
+  a013=(a000*a008);
+  a014=2.4399999999999999e-01;
+  a002=(a002*a005);
+  a006=(a006/a009);
+  a006=(a006*a007);
+  a007=(a002-a006);
+  a009=(a014*a007);
+  a015=(a013*a009);
+  a001=(a001+a010);
+  a010=(a000*a001);
+  a006=(a002+a006);
+  a016=(a014*a006);
+  a017=(a010*a016);
+  a015=(a015-a017);
+  a017=(a013/a015);
+  a018=arg[3]? arg[3][6] : 0;
+  a019=(a017*a018);
+  a020=(a010/a015);
+  a021=arg[3]? arg[3][3] : 0;
+  a022=(a006*a007);
+  a023=(a008*a001);
+  a022=(a022+a023);
+  a023=(a021*a022);
+  a024=(a020*a023);
+  a019=(a019-a024);
+  a024=(a019*a017);
+  a025=(a017*a023);
+  a026=arg[3]? arg[3][0] : 0;
+  a027=(a020*a026);
+  a025=(a025-a027);
+  a027=(a025*a020);
+  a028=casadi_sq(a003);
+  a029=(a012*a028);
+  a029=(a011+a029);
+  a030=-4.3300000000000000e-01;
+  a030=(a030+a005);
+  a005=casadi_sq(a030);
+  a031=(a012*a005);
+  a029=(a029+a031);
+  a029=sqrt(a029);
+  a028=(a028+a005);
+  a028=sqrt(a028);
+  a032=(a029/a028);
+  a032=(a032*a030);
+  a033=(a004-a032);
+  a034=(a000*a033);
+  a035=-8.8729508196721307e-01;
+  a035=(a035+a002);
+  a028=(a003/a028);
+  a028=(a028*a029);
+  a029=(a035-a028);
+  a002=(a014*a029);
+  a036=(a034*a002);
+  a032=(a004+a032);
+  a037=(a000*a032);
+  a028=(a035+a028);
+  a038=(a014*a028);
+  a039=(a037*a038);
+  a036=(a036-a039);
+  a039=(a034/a036);
+  a040=arg[3]? arg[3][4] : 0;
+  a041=(a028*a029);
+  a042=(a033*a032);
+  a041=(a041+a042);
+  a042=(a040*a041);
+  a043=(a039*a042);
+  a044=(a037/a036);
+  a045=arg[3]? arg[3][1] : 0;
+  a046=(a044*a045);
+  a043=(a043-a046);
+  a046=(a043*a044);
+  a027=(a027+a046);
+  a046=-1.0245901639344261e+00;
+  a046=(a046+a004);
+  a031=(a011+a031);
+  a004=-5.0000000000000000e-01;
+  a004=(a004+a003);
+  a003=casadi_sq(a004);
+  a012=(a012*a003);
+  a031=(a031+a012);
+  a031=sqrt(a031);
+  a005=(a005+a003);
+  a005=sqrt(a005);
+  a031=(a031/a005);
+  a030=(a031*a030);
+  a005=(a046-a030);
+  a003=(a000*a005);
+  a031=(a031*a004);
+  a004=(a035-a031);
+  a012=(a014*a004);
+  a047=(a003*a012);
+  a046=(a046+a030);
+  a030=(a000*a046);
+  a035=(a035+a031);
+  a031=(a014*a035);
+  a048=(a030*a031);
+  a047=(a047-a048);
+  a048=(a003/a047);
+  a049=arg[3]? arg[3][5] : 0;
+  a050=(a035*a004);
+  a051=(a005*a046);
+  a050=(a050+a051);
+  a051=(a049*a050);
+  a052=(a048*a051);
+  a053=(a030/a047);
+  a054=arg[3]? arg[3][2] : 0;
+  a055=(a053*a054);
+  a052=(a052-a055);
+  a055=(a052*a053);
+  a027=(a027+a055);
+  a024=(a024-a027);
+  a027=arg[3]? arg[3][7] : 0;
+  a055=(a039*a027);
+  a056=(a044*a042);
+  a055=(a055-a056);
+  a056=(a055*a039);
+  a024=(a024+a056);
+  a056=arg[3]? arg[3][8] : 0;
+  a057=(a048*a056);
+  a058=(a053*a051);
+  a057=(a057-a058);
+  a058=(a057*a048);
+  a024=(a024+a058);
+  a058=(a009/a015);
+  a059=arg[2]? arg[2][0] : 0;
+  a060=(a058*a059);
+  a061=(a002/a036);
+  a062=arg[2]? arg[2][1] : 0;
+  a063=(a061*a062);
+  a060=(a060+a063);
+  a063=(a012/a047);
+  a064=arg[2]? arg[2][2] : 0;
+  a065=(a063*a064);
+  a060=(a060+a065);
+  a065=arg[1]? arg[1][0] : 0;
+  a066=(a058*a065);
+  a067=arg[1]? arg[1][1] : 0;
+  a068=(a020*a067);
+  a066=(a066-a068);
+  a068=(a000*a066);
+  a069=(a068*a008);
+  a070=(a069*a066);
+  a071=(a017*a067);
+  a072=(a016/a015);
+  a073=(a072*a065);
+  a071=(a071-a073);
+  a073=(a000*a071);
+  a074=(a073*a001);
+  a075=(a074*a071);
+  a070=(a070+a075);
+  a075=(a020*a070);
+  a076=(a068*a006);
+  a077=(a076*a066);
+  a078=(a073*a007);
+  a079=(a078*a071);
+  a077=(a077+a079);
+  a079=(a058*a077);
+  a075=(a075-a079);
+  a079=(a026*a075);
+  a080=(a072*a077);
+  a081=(a017*a070);
+  a080=(a080-a081);
+  a081=(a023*a080);
+  a079=(a079+a081);
+  a081=(a021*a071);
+  a082=(a008*a007);
+  a083=(a006*a001);
+  a082=(a082-a083);
+  a083=(a081*a082);
+  a084=(a083*a071);
+  a079=(a079+a084);
+  a084=(a058*a079);
+  a085=(a061*a065);
+  a086=(a044*a067);
+  a085=(a085-a086);
+  a086=(a000*a085);
+  a087=(a086*a033);
+  a088=(a087*a085);
+  a089=(a039*a067);
+  a090=(a038/a036);
+  a091=(a090*a065);
+  a089=(a089-a091);
+  a091=(a000*a089);
+  a092=(a091*a032);
+  a093=(a092*a089);
+  a088=(a088+a093);
+  a093=(a044*a088);
+  a094=(a086*a028);
+  a095=(a094*a085);
+  a096=(a091*a029);
+  a097=(a096*a089);
+  a095=(a095+a097);
+  a097=(a061*a095);
+  a093=(a093-a097);
+  a097=(a045*a093);
+  a098=(a090*a095);
+  a099=(a039*a088);
+  a098=(a098-a099);
+  a099=(a042*a098);
+  a097=(a097+a099);
+  a099=(a040*a089);
+  a100=(a033*a029);
+  a101=(a028*a032);
+  a100=(a100-a101);
+  a101=(a099*a100);
+  a102=(a101*a089);
+  a097=(a097+a102);
+  a102=(a061*a097);
+  a084=(a084+a102);
+  a102=(a063*a065);
+  a103=(a053*a067);
+  a102=(a102-a103);
+  a103=(a000*a102);
+  a104=(a103*a005);
+  a105=(a104*a102);
+  a106=(a048*a067);
+  a107=(a031/a047);
+  a108=(a107*a065);
+  a106=(a106-a108);
+  a108=(a000*a106);
+  a109=(a108*a046);
+  a110=(a109*a106);
+  a105=(a105+a110);
+  a110=(a053*a105);
+  a111=(a103*a035);
+  a112=(a111*a102);
+  a113=(a108*a004);
+  a114=(a113*a106);
+  a112=(a112+a114);
+  a114=(a063*a112);
+  a110=(a110-a114);
+  a114=(a054*a110);
+  a115=(a107*a112);
+  a116=(a048*a105);
+  a115=(a115-a116);
+  a116=(a051*a115);
+  a114=(a114+a116);
+  a116=(a049*a106);
+  a117=(a005*a004);
+  a118=(a035*a046);
+  a117=(a117-a118);
+  a118=(a116*a117);
+  a119=(a118*a106);
+  a114=(a114+a119);
+  a119=(a063*a114);
+  a084=(a084+a119);
+  a119=(a023*a075);
+  a120=(a018*a080);
+  a119=(a119+a120);
+  a120=(a021*a066);
+  a121=(a120*a082);
+  a122=(a121*a066);
+  a119=(a119-a122);
+  a122=(a072*a119);
+  a084=(a084-a122);
+  a122=(a042*a093);
+  a123=(a027*a098);
+  a122=(a122+a123);
+  a123=(a040*a085);
+  a124=(a123*a100);
+  a125=(a124*a085);
+  a122=(a122-a125);
+  a125=(a090*a122);
+  a084=(a084-a125);
+  a125=(a051*a110);
+  a126=(a056*a115);
+  a125=(a125+a126);
+  a126=(a049*a102);
+  a127=(a126*a117);
+  a128=(a127*a102);
+  a125=(a125-a128);
+  a128=(a107*a125);
+  a084=(a084-a128);
+  a060=(a060-a084);
+  a084=arg[3]? arg[3][9] : 0;
+  a128=(a084*a066);
+  a129=arg[3]? arg[3][12] : 0;
+  a130=(a129*a066);
+  a131=1.0000000000000000e-04;
+  a132=casadi_sq(a066);
+  a132=(a131+a132);
+  a132=sqrt(a132);
+  a130=(a130/a132);
+  a128=(a128+a130);
+  a133=(a058*a128);
+  a134=arg[3]? arg[3][10] : 0;
+  a135=(a134*a085);
+  a136=arg[3]? arg[3][13] : 0;
+  a137=(a136*a085);
+  a138=casadi_sq(a085);
+  a138=(a131+a138);
+  a138=sqrt(a138);
+  a137=(a137/a138);
+  a135=(a135+a137);
+  a139=(a061*a135);
+  a133=(a133+a139);
+  a139=arg[3]? arg[3][11] : 0;
+  a140=(a139*a102);
+  a141=arg[3]? arg[3][14] : 0;
+  a142=(a141*a102);
+  a143=casadi_sq(a102);
+  a131=(a131+a143);
+  a131=sqrt(a131);
+  a142=(a142/a131);
+  a140=(a140+a142);
+  a143=(a063*a140);
+  a133=(a133+a143);
+  a060=(a060-a133);
+  a133=(a024*a060);
+  a143=(a058*a023);
+  a144=(a072*a018);
+  a143=(a143-a144);
+  a144=(a143*a017);
+  a145=(a058*a026);
+  a146=(a072*a023);
+  a145=(a145-a146);
+  a146=(a145*a020);
+  a147=(a061*a045);
+  a148=(a090*a042);
+  a147=(a147-a148);
+  a148=(a147*a044);
+  a146=(a146+a148);
+  a148=(a063*a054);
+  a149=(a107*a051);
+  a148=(a148-a149);
+  a149=(a148*a053);
+  a146=(a146+a149);
+  a144=(a144-a146);
+  a146=(a061*a042);
+  a149=(a090*a027);
+  a146=(a146-a149);
+  a149=(a146*a039);
+  a144=(a144+a149);
+  a149=(a063*a051);
+  a150=(a107*a056);
+  a149=(a149-a150);
+  a150=(a149*a048);
+  a144=(a144+a150);
+  a150=(a020*a128);
+  a151=(a044*a135);
+  a150=(a150+a151);
+  a151=(a053*a140);
+  a150=(a150+a151);
+  a151=(a020*a059);
+  a152=(a044*a062);
+  a151=(a151+a152);
+  a152=(a053*a064);
+  a151=(a151+a152);
+  a152=(a017*a119);
+  a153=(a020*a079);
+  a154=(a044*a097);
+  a153=(a153+a154);
+  a154=(a053*a114);
+  a153=(a153+a154);
+  a152=(a152-a153);
+  a153=(a039*a122);
+  a152=(a152+a153);
+  a153=(a048*a125);
+  a152=(a152+a153);
+  a151=(a151+a152);
+  a150=(a150-a151);
+  a151=(a144*a150);
+  a133=(a133-a151);
+  a151=(a145*a058);
+  a152=(a147*a061);
+  a151=(a151+a152);
+  a152=(a148*a063);
+  a151=(a151+a152);
+  a152=(a143*a072);
+  a151=(a151-a152);
+  a152=(a146*a090);
+  a151=(a151-a152);
+  a152=(a149*a107);
+  a151=(a151-a152);
+  a152=(a151*a024);
+  a153=(a025*a058);
+  a154=(a043*a061);
+  a153=(a153+a154);
+  a154=(a052*a063);
+  a153=(a153+a154);
+  a154=(a019*a072);
+  a153=(a153-a154);
+  a154=(a055*a090);
+  a153=(a153-a154);
+  a154=(a057*a107);
+  a153=(a153-a154);
+  a154=(a144*a153);
+  a152=(a152-a154);
+  a133=(a133/a152);
+  if (res[0]!=0) res[0][0]=a133;
+  a154=(a151*a150);
+  a155=(a153*a060);
+  a154=(a154-a155);
+  a154=(a154/a152);
+  if (res[0]!=0) res[0][1]=a154;
+  a155=(a144/a152);
+  a156=(a017*a155);
+  a157=(a024/a152);
+  a158=(a072*a157);
+  a156=(a156+a158);
+  a158=(a018*a156);
+  a159=(a020*a155);
+  a160=(a058*a157);
+  a159=(a159+a160);
+  a160=(a023*a159);
+  a158=(a158-a160);
+  a160=(a072*a158);
+  a161=(a023*a156);
+  a162=(a026*a159);
+  a161=(a161-a162);
+  a162=(a058*a161);
+  a160=(a160-a162);
+  a162=(a071*a160);
+  a163=(a073*a162);
+  a164=(a066*a156);
+  a165=(a120*a164);
+  a166=(a071*a159);
+  a167=(a081*a166);
+  a165=(a165+a167);
+  a167=(a008*a165);
+  a163=(a163-a167);
+  a133=(a133/a152);
+  a167=(a024*a133);
+  a168=(a058*a167);
+  a169=(a153*a133);
+  a150=(a150/a152);
+  a169=(a169-a150);
+  a170=(a020*a169);
+  a168=(a168+a170);
+  a170=(a072*a168);
+  a171=(a072*a167);
+  a172=(a017*a169);
+  a171=(a171+a172);
+  a172=(a058*a171);
+  a170=(a170+a172);
+  a172=(a075*a156);
+  a170=(a170+a172);
+  a172=(a080*a159);
+  a170=(a170-a172);
+  a172=(a144*a133);
+  a173=(a058*a172);
+  a060=(a060/a152);
+  a133=(a151*a133);
+  a133=(a060-a133);
+  a174=(a020*a133);
+  a173=(a173-a174);
+  a174=(a017*a173);
+  a170=(a170+a174);
+  a174=(a017*a133);
+  a175=(a072*a172);
+  a174=(a174-a175);
+  a175=(a020*a174);
+  a170=(a170-a175);
+  a175=(a021*a170);
+  a176=(a006*a175);
+  a163=(a163+a176);
+  a176=(a025*a172);
+  a177=(a145*a167);
+  a176=(a176-a177);
+  a177=(a026*a168);
+  a176=(a176-a177);
+  a177=(a023*a171);
+  a176=(a176+a177);
+  a177=(a128*a157);
+  a176=(a176-a177);
+  a177=(2.*a066);
+  a130=(a130/a132);
+  a178=(a130*a159);
+  a179=(2.*a132);
+  a178=(a178/a179);
+  a178=(a177*a178);
+  a180=(a159/a132);
+  a181=(a129*a180);
+  a178=(a178-a181);
+  a181=(a084*a159);
+  a178=(a178-a181);
+  a181=(a065*a178);
+  a176=(a176+a181);
+  a181=(a079*a157);
+  a176=(a176-a181);
+  a181=(a077*a161);
+  a176=(a176-a181);
+  a181=(a076*a160);
+  a182=(a020*a161);
+  a183=(a017*a158);
+  a182=(a182-a183);
+  a183=(a069*a182);
+  a181=(a181+a183);
+  a183=(a065*a181);
+  a176=(a176+a183);
+  a183=(a066*a160);
+  a184=(a006*a183);
+  a184=(a000*a184);
+  a185=(a121*a156);
+  a164=(a082*a164);
+  a186=(a021*a164);
+  a185=(a185+a186);
+  a184=(a184-a185);
+  a185=(a066*a182);
+  a186=(a008*a185);
+  a186=(a000*a186);
+  a184=(a184+a186);
+  a186=(a065*a184);
+  a176=(a176+a186);
+  a186=(a059*a157);
+  a176=(a176+a186);
+  a186=(a176/a015);
+  a187=(a072/a015);
+  a188=(a143*a167);
+  a189=(a019*a172);
+  a188=(a188-a189);
+  a189=(a023*a168);
+  a188=(a188+a189);
+  a189=(a018*a171);
+  a188=(a188-a189);
+  a189=(a119*a157);
+  a188=(a188+a189);
+  a189=(a077*a158);
+  a188=(a188+a189);
+  a160=(a078*a160);
+  a189=(a074*a182);
+  a160=(a160+a189);
+  a189=(a065*a160);
+  a188=(a188-a189);
+  a162=(a007*a162);
+  a162=(a000*a162);
+  a189=(a083*a159);
+  a166=(a082*a166);
+  a190=(a021*a166);
+  a189=(a189+a190);
+  a162=(a162-a189);
+  a182=(a071*a182);
+  a189=(a001*a182);
+  a189=(a000*a189);
+  a162=(a162+a189);
+  a189=(a065*a162);
+  a188=(a188-a189);
+  a189=(a187*a188);
+  a190=(a058/a015);
+  a176=(a190*a176);
+  a189=(a189+a176);
+  a176=(a020/a015);
+  a191=(a059*a155);
+  a192=(a079*a155);
+  a191=(a191-a192);
+  a192=(a128*a155);
+  a191=(a191-a192);
+  a192=(a145*a169);
+  a191=(a191-a192);
+  a192=(a067*a178);
+  a191=(a191-a192);
+  a161=(a070*a161);
+  a191=(a191+a161);
+  a161=(a067*a181);
+  a191=(a191-a161);
+  a161=(a067*a184);
+  a191=(a191-a161);
+  a161=(a025*a133);
+  a191=(a191-a161);
+  a161=(a026*a173);
+  a191=(a191-a161);
+  a161=(a023*a174);
+  a191=(a191-a161);
+  a161=(a176*a191);
+  a189=(a189+a161);
+  a161=(a017/a015);
+  a192=(a119*a155);
+  a193=(a143*a169);
+  a192=(a192+a193);
+  a158=(a070*a158);
+  a192=(a192-a158);
+  a158=(a067*a160);
+  a192=(a192+a158);
+  a158=(a067*a162);
+  a192=(a192+a158);
+  a158=(a023*a173);
+  a192=(a192+a158);
+  a158=(a019*a133);
+  a192=(a192+a158);
+  a158=(a018*a174);
+  a192=(a192+a158);
+  a158=(a161*a192);
+  a189=(a189+a158);
+  a158=(a013*a189);
+  a186=(a186-a158);
+  a186=(a014*a186);
+  a163=(a163+a186);
+  a186=(a001*a072);
+  a158=(a163*a186);
+  a193=(a001*a165);
+  a183=(a068*a183);
+  a193=(a193+a183);
+  a183=(a007*a175);
+  a193=(a193+a183);
+  a188=(a188/a015);
+  a183=(a010*a189);
+  a188=(a188+a183);
+  a188=(a014*a188);
+  a193=(a193+a188);
+  a188=(a008*a058);
+  a183=(a193*a188);
+  a194=(a039*a155);
+  a195=(a090*a157);
+  a194=(a194+a195);
+  a195=(a085*a194);
+  a196=(a123*a195);
+  a197=(a044*a155);
+  a198=(a061*a157);
+  a197=(a197+a198);
+  a198=(a089*a197);
+  a199=(a099*a198);
+  a196=(a196+a199);
+  a199=(a032*a196);
+  a200=(a027*a194);
+  a201=(a042*a197);
+  a200=(a200-a201);
+  a201=(a090*a200);
+  a202=(a042*a194);
+  a203=(a045*a197);
+  a202=(a202-a203);
+  a203=(a061*a202);
+  a201=(a201-a203);
+  a203=(a085*a201);
+  a204=(a086*a203);
+  a199=(a199+a204);
+  a204=(a090*a167);
+  a205=(a039*a169);
+  a204=(a204+a205);
+  a205=(a061*a204);
+  a206=(a061*a167);
+  a207=(a044*a169);
+  a206=(a206+a207);
+  a207=(a090*a206);
+  a205=(a205+a207);
+  a207=(a093*a194);
+  a205=(a205+a207);
+  a207=(a098*a197);
+  a205=(a205-a207);
+  a207=(a039*a133);
+  a208=(a090*a172);
+  a207=(a207-a208);
+  a208=(a044*a207);
+  a205=(a205-a208);
+  a208=(a061*a172);
+  a209=(a044*a133);
+  a208=(a208-a209);
+  a209=(a039*a208);
+  a205=(a205+a209);
+  a209=(a040*a205);
+  a210=(a029*a209);
+  a199=(a199+a210);
+  a210=(a146*a167);
+  a211=(a055*a172);
+  a210=(a210-a211);
+  a211=(a027*a204);
+  a210=(a210-a211);
+  a211=(a042*a206);
+  a210=(a210+a211);
+  a211=(a122*a157);
+  a210=(a210+a211);
+  a211=(a095*a200);
+  a210=(a210+a211);
+  a211=(a096*a201);
+  a212=(a044*a202);
+  a213=(a039*a200);
+  a212=(a212-a213);
+  a213=(a092*a212);
+  a211=(a211+a213);
+  a213=(a065*a211);
+  a210=(a210-a213);
+  a213=(a089*a201);
+  a214=(a029*a213);
+  a214=(a000*a214);
+  a215=(a101*a197);
+  a198=(a100*a198);
+  a216=(a040*a198);
+  a215=(a215+a216);
+  a214=(a214-a215);
+  a215=(a089*a212);
+  a216=(a032*a215);
+  a216=(a000*a216);
+  a214=(a214+a216);
+  a216=(a065*a214);
+  a210=(a210-a216);
+  a216=(a210/a036);
+  a217=(a090/a036);
+  a210=(a217*a210);
+  a218=(a061/a036);
+  a219=(a043*a172);
+  a220=(a147*a167);
+  a219=(a219-a220);
+  a220=(a042*a204);
+  a219=(a219+a220);
+  a220=(a045*a206);
+  a219=(a219-a220);
+  a220=(a135*a157);
+  a219=(a219-a220);
+  a220=(2.*a085);
+  a137=(a137/a138);
+  a221=(a137*a197);
+  a222=(2.*a138);
+  a221=(a221/a222);
+  a221=(a220*a221);
+  a223=(a197/a138);
+  a224=(a136*a223);
+  a221=(a221-a224);
+  a224=(a134*a197);
+  a221=(a221-a224);
+  a224=(a065*a221);
+  a219=(a219+a224);
+  a224=(a097*a157);
+  a219=(a219-a224);
+  a224=(a095*a202);
+  a219=(a219-a224);
+  a201=(a094*a201);
+  a224=(a087*a212);
+  a201=(a201+a224);
+  a224=(a065*a201);
+  a219=(a219+a224);
+  a203=(a028*a203);
+  a203=(a000*a203);
+  a224=(a124*a194);
+  a195=(a100*a195);
+  a225=(a040*a195);
+  a224=(a224+a225);
+  a203=(a203-a224);
+  a212=(a085*a212);
+  a224=(a033*a212);
+  a224=(a000*a224);
+  a203=(a203+a224);
+  a224=(a065*a203);
+  a219=(a219+a224);
+  a224=(a062*a157);
+  a219=(a219+a224);
+  a224=(a218*a219);
+  a210=(a210+a224);
+  a224=(a044/a036);
+  a225=(a062*a155);
+  a226=(a097*a155);
+  a225=(a225-a226);
+  a226=(a135*a155);
+  a225=(a225-a226);
+  a226=(a147*a169);
+  a225=(a225-a226);
+  a226=(a067*a221);
+  a225=(a225-a226);
+  a202=(a088*a202);
+  a225=(a225+a202);
+  a202=(a067*a201);
+  a225=(a225-a202);
+  a202=(a067*a203);
+  a225=(a225-a202);
+  a202=(a042*a207);
+  a225=(a225-a202);
+  a202=(a043*a133);
+  a225=(a225-a202);
+  a202=(a045*a208);
+  a225=(a225-a202);
+  a202=(a224*a225);
+  a210=(a210+a202);
+  a202=(a039/a036);
+  a226=(a122*a155);
+  a227=(a146*a169);
+  a226=(a226+a227);
+  a200=(a088*a200);
+  a226=(a226-a200);
+  a200=(a067*a211);
+  a226=(a226+a200);
+  a200=(a067*a214);
+  a226=(a226+a200);
+  a200=(a055*a133);
+  a226=(a226+a200);
+  a200=(a027*a207);
+  a226=(a226+a200);
+  a200=(a042*a208);
+  a226=(a226+a200);
+  a200=(a202*a226);
+  a210=(a210+a200);
+  a200=(a037*a210);
+  a216=(a216+a200);
+  a216=(a014*a216);
+  a199=(a199+a216);
+  a216=(a033*a061);
+  a200=(a199*a216);
+  a183=(a183+a200);
+  a200=(a048*a155);
+  a227=(a107*a157);
+  a200=(a200+a227);
+  a227=(a102*a200);
+  a228=(a126*a227);
+  a229=(a053*a155);
+  a230=(a063*a157);
+  a229=(a229+a230);
+  a230=(a106*a229);
+  a231=(a116*a230);
+  a228=(a228+a231);
+  a231=(a046*a228);
+  a232=(a056*a200);
+  a233=(a051*a229);
+  a232=(a232-a233);
+  a233=(a107*a232);
+  a234=(a051*a200);
+  a235=(a054*a229);
+  a234=(a234-a235);
+  a235=(a063*a234);
+  a233=(a233-a235);
+  a235=(a102*a233);
+  a236=(a103*a235);
+  a231=(a231+a236);
+  a236=(a107*a167);
+  a237=(a048*a169);
+  a236=(a236+a237);
+  a237=(a063*a236);
+  a238=(a063*a167);
+  a239=(a053*a169);
+  a238=(a238+a239);
+  a239=(a107*a238);
+  a237=(a237+a239);
+  a239=(a110*a200);
+  a237=(a237+a239);
+  a239=(a115*a229);
+  a237=(a237-a239);
+  a239=(a048*a133);
+  a240=(a107*a172);
+  a239=(a239-a240);
+  a240=(a053*a239);
+  a237=(a237-a240);
+  a240=(a063*a172);
+  a241=(a053*a133);
+  a240=(a240-a241);
+  a241=(a048*a240);
+  a237=(a237+a241);
+  a241=(a049*a237);
+  a242=(a004*a241);
+  a231=(a231+a242);
+  a242=(a149*a167);
+  a243=(a057*a172);
+  a242=(a242-a243);
+  a243=(a056*a236);
+  a242=(a242-a243);
+  a243=(a051*a238);
+  a242=(a242+a243);
+  a243=(a125*a157);
+  a242=(a242+a243);
+  a243=(a112*a232);
+  a242=(a242+a243);
+  a243=(a113*a233);
+  a244=(a053*a234);
+  a245=(a048*a232);
+  a244=(a244-a245);
+  a245=(a109*a244);
+  a243=(a243+a245);
+  a245=(a065*a243);
+  a242=(a242-a245);
+  a245=(a106*a233);
+  a246=(a004*a245);
+  a246=(a000*a246);
+  a247=(a118*a229);
+  a230=(a117*a230);
+  a248=(a049*a230);
+  a247=(a247+a248);
+  a246=(a246-a247);
+  a247=(a106*a244);
+  a248=(a046*a247);
+  a248=(a000*a248);
+  a246=(a246+a248);
+  a248=(a065*a246);
+  a242=(a242-a248);
+  a248=(a242/a047);
+  a249=(a107/a047);
+  a242=(a249*a242);
+  a250=(a063/a047);
+  a172=(a052*a172);
+  a167=(a148*a167);
+  a172=(a172-a167);
+  a167=(a051*a236);
+  a172=(a172+a167);
+  a167=(a054*a238);
+  a172=(a172-a167);
+  a167=(a140*a157);
+  a172=(a172-a167);
+  a167=(2.*a102);
+  a142=(a142/a131);
+  a251=(a142*a229);
+  a252=(2.*a131);
+  a251=(a251/a252);
+  a251=(a167*a251);
+  a253=(a229/a131);
+  a254=(a141*a253);
+  a251=(a251-a254);
+  a254=(a139*a229);
+  a251=(a251-a254);
+  a254=(a065*a251);
+  a172=(a172+a254);
+  a254=(a114*a157);
+  a172=(a172-a254);
+  a254=(a112*a234);
+  a172=(a172-a254);
+  a233=(a111*a233);
+  a254=(a104*a244);
+  a233=(a233+a254);
+  a254=(a065*a233);
+  a172=(a172+a254);
+  a235=(a035*a235);
+  a235=(a000*a235);
+  a254=(a127*a200);
+  a227=(a117*a227);
+  a255=(a049*a227);
+  a254=(a254+a255);
+  a235=(a235-a254);
+  a244=(a102*a244);
+  a254=(a005*a244);
+  a254=(a000*a254);
+  a235=(a235+a254);
+  a254=(a065*a235);
+  a172=(a172+a254);
+  a157=(a064*a157);
+  a172=(a172+a157);
+  a157=(a250*a172);
+  a242=(a242+a157);
+  a157=(a053/a047);
+  a254=(a064*a155);
+  a255=(a114*a155);
+  a254=(a254-a255);
+  a255=(a140*a155);
+  a254=(a254-a255);
+  a255=(a148*a169);
+  a254=(a254-a255);
+  a255=(a067*a251);
+  a254=(a254-a255);
+  a234=(a105*a234);
+  a254=(a254+a234);
+  a234=(a067*a233);
+  a254=(a254-a234);
+  a234=(a067*a235);
+  a254=(a254-a234);
+  a234=(a051*a239);
+  a254=(a254-a234);
+  a234=(a052*a133);
+  a254=(a254-a234);
+  a234=(a054*a240);
+  a254=(a254-a234);
+  a234=(a157*a254);
+  a242=(a242+a234);
+  a234=(a048/a047);
+  a155=(a125*a155);
+  a169=(a149*a169);
+  a155=(a155+a169);
+  a232=(a105*a232);
+  a155=(a155-a232);
+  a232=(a067*a243);
+  a155=(a155+a232);
+  a232=(a067*a246);
+  a155=(a155+a232);
+  a133=(a057*a133);
+  a155=(a155+a133);
+  a133=(a056*a239);
+  a155=(a155+a133);
+  a133=(a051*a240);
+  a155=(a155+a133);
+  a133=(a234*a155);
+  a242=(a242+a133);
+  a133=(a030*a242);
+  a248=(a248+a133);
+  a248=(a014*a248);
+  a231=(a231+a248);
+  a248=(a005*a063);
+  a133=(a231*a248);
+  a183=(a183+a133);
+  a158=(a158-a183);
+  a213=(a091*a213);
+  a183=(a033*a196);
+  a213=(a213-a183);
+  a183=(a028*a209);
+  a213=(a213+a183);
+  a219=(a219/a036);
+  a183=(a034*a210);
+  a219=(a219-a183);
+  a219=(a014*a219);
+  a213=(a213+a219);
+  a219=(a032*a090);
+  a183=(a213*a219);
+  a158=(a158+a183);
+  a245=(a108*a245);
+  a183=(a005*a228);
+  a245=(a245-a183);
+  a183=(a035*a241);
+  a245=(a245+a183);
+  a172=(a172/a047);
+  a183=(a003*a242);
+  a172=(a172-a183);
+  a172=(a014*a172);
+  a245=(a245+a172);
+  a172=(a046*a107);
+  a183=(a245*a172);
+  a158=(a158+a183);
+  a185=(a068*a185);
+  a183=(a007*a165);
+  a185=(a185-a183);
+  a183=(a001*a175);
+  a185=(a185+a183);
+  a192=(a192/a015);
+  a183=(a009*a189);
+  a192=(a192-a183);
+  a192=(a000*a192);
+  a185=(a185+a192);
+  a192=(a006*a058);
+  a183=(a185*a192);
+  a212=(a086*a212);
+  a133=(a029*a196);
+  a212=(a212-a133);
+  a133=(a032*a209);
+  a212=(a212+a133);
+  a226=(a226/a036);
+  a133=(a002*a210);
+  a226=(a226-a133);
+  a226=(a000*a226);
+  a212=(a212+a226);
+  a226=(a028*a061);
+  a133=(a212*a226);
+  a183=(a183+a133);
+  a244=(a103*a244);
+  a133=(a004*a228);
+  a244=(a244-a133);
+  a133=(a046*a241);
+  a244=(a244+a133);
+  a155=(a155/a047);
+  a133=(a012*a242);
+  a155=(a155-a133);
+  a155=(a000*a155);
+  a244=(a244+a155);
+  a155=(a035*a063);
+  a133=(a244*a155);
+  a183=(a183+a133);
+  a165=(a006*a165);
+  a182=(a073*a182);
+  a165=(a165+a182);
+  a175=(a008*a175);
+  a165=(a165+a175);
+  a191=(a191/a015);
+  a189=(a016*a189);
+  a191=(a191+a189);
+  a191=(a000*a191);
+  a165=(a165+a191);
+  a191=(a007*a072);
+  a189=(a165*a191);
+  a183=(a183-a189);
+  a196=(a028*a196);
+  a215=(a091*a215);
+  a196=(a196+a215);
+  a209=(a033*a209);
+  a196=(a196+a209);
+  a225=(a225/a036);
+  a210=(a038*a210);
+  a225=(a225+a210);
+  a225=(a000*a225);
+  a196=(a196+a225);
+  a225=(a029*a090);
+  a210=(a196*a225);
+  a183=(a183-a210);
+  a228=(a035*a228);
+  a247=(a108*a247);
+  a228=(a228+a247);
+  a241=(a005*a241);
+  a228=(a228+a241);
+  a254=(a254/a047);
+  a242=(a031*a242);
+  a254=(a254+a242);
+  a254=(a000*a254);
+  a228=(a228+a254);
+  a254=(a004*a107);
+  a242=(a228*a254);
+  a183=(a183-a242);
+  a158=(a158+a183);
+  if (res[1]!=0) res[1][0]=a158;
+  a158=(a008*a020);
+  a193=(a193*a158);
+  a183=(a033*a044);
+  a199=(a199*a183);
+  a193=(a193+a199);
+  a199=(a005*a053);
+  a231=(a231*a199);
+  a193=(a193+a231);
+  a231=(a001*a017);
+  a163=(a163*a231);
+  a193=(a193-a163);
+  a163=(a032*a039);
+  a213=(a213*a163);
+  a193=(a193-a213);
+  a213=(a046*a048);
+  a245=(a245*a213);
+  a193=(a193-a245);
+  a245=(a007*a017);
+  a165=(a165*a245);
+  a242=(a006*a020);
+  a185=(a185*a242);
+  a241=(a028*a044);
+  a212=(a212*a241);
+  a185=(a185+a212);
+  a212=(a035*a053);
+  a244=(a244*a212);
+  a185=(a185+a244);
+  a165=(a165-a185);
+  a185=(a029*a039);
+  a196=(a196*a185);
+  a165=(a165+a196);
+  a196=(a004*a048);
+  a228=(a228*a196);
+  a165=(a165+a228);
+  a193=(a193+a165);
+  if (res[1]!=0) res[1][1]=a193;
+  a193=(a151/a152);
+  a165=(a017*a193);
+  a228=(a153/a152);
+  a244=(a072*a228);
+  a165=(a165+a244);
+  a244=(a066*a165);
+  a120=(a120*a244);
+  a247=(a020*a193);
+  a210=(a058*a228);
+  a247=(a247+a210);
+  a210=(a071*a247);
+  a081=(a081*a210);
+  a120=(a120+a081);
+  a081=(a008*a120);
+  a209=(a023*a247);
+  a215=(a018*a165);
+  a209=(a209-a215);
+  a215=(a072*a209);
+  a189=(a026*a247);
+  a175=(a023*a165);
+  a189=(a189-a175);
+  a175=(a058*a189);
+  a215=(a215-a175);
+  a175=(a071*a215);
+  a182=(a073*a175);
+  a081=(a081+a182);
+  a154=(a154/a152);
+  a153=(a153*a154);
+  a152=(a017*a153);
+  a024=(a024*a154);
+  a150=(a150-a024);
+  a024=(a072*a150);
+  a152=(a152-a024);
+  a024=(a058*a152);
+  a182=(a058*a150);
+  a133=(a020*a153);
+  a182=(a182-a133);
+  a133=(a072*a182);
+  a024=(a024-a133);
+  a133=(a075*a165);
+  a024=(a024-a133);
+  a133=(a080*a247);
+  a024=(a024+a133);
+  a144=(a144*a154);
+  a144=(a144-a060);
+  a060=(a058*a144);
+  a151=(a151*a154);
+  a154=(a020*a151);
+  a060=(a060+a154);
+  a154=(a017*a060);
+  a024=(a024+a154);
+  a154=(a072*a144);
+  a133=(a017*a151);
+  a154=(a154+a133);
+  a133=(a020*a154);
+  a024=(a024+a133);
+  a133=(a021*a024);
+  a232=(a006*a133);
+  a081=(a081+a232);
+  a232=(a025*a144);
+  a169=(a145*a150);
+  a232=(a232+a169);
+  a169=(a026*a182);
+  a232=(a232+a169);
+  a169=(a023*a152);
+  a232=(a232+a169);
+  a169=(a128*a228);
+  a232=(a232+a169);
+  a132=(a247/a132);
+  a129=(a129*a132);
+  a130=(a130*a247);
+  a130=(a130/a179);
+  a177=(a177*a130);
+  a129=(a129-a177);
+  a084=(a084*a247);
+  a129=(a129+a084);
+  a084=(a065*a129);
+  a232=(a232+a084);
+  a084=(a079*a228);
+  a232=(a232+a084);
+  a084=(a077*a189);
+  a232=(a232-a084);
+  a076=(a076*a215);
+  a084=(a020*a189);
+  a177=(a017*a209);
+  a084=(a084-a177);
+  a069=(a069*a084);
+  a076=(a076+a069);
+  a069=(a065*a076);
+  a232=(a232+a069);
+  a121=(a121*a165);
+  a244=(a082*a244);
+  a069=(a021*a244);
+  a121=(a121+a069);
+  a069=(a066*a215);
+  a177=(a006*a069);
+  a177=(a000*a177);
+  a121=(a121+a177);
+  a177=(a066*a084);
+  a130=(a008*a177);
+  a130=(a000*a130);
+  a121=(a121+a130);
+  a130=(a065*a121);
+  a232=(a232+a130);
+  a130=(a059*a228);
+  a232=(a232-a130);
+  a130=(a232/a015);
+  a077=(a077*a209);
+  a179=(a019*a144);
+  a169=(a143*a150);
+  a179=(a179+a169);
+  a169=(a023*a182);
+  a179=(a179+a169);
+  a169=(a018*a152);
+  a179=(a179+a169);
+  a169=(a119*a228);
+  a179=(a179+a169);
+  a077=(a077-a179);
+  a078=(a078*a215);
+  a074=(a074*a084);
+  a078=(a078+a074);
+  a074=(a065*a078);
+  a077=(a077-a074);
+  a083=(a083*a247);
+  a210=(a082*a210);
+  a021=(a021*a210);
+  a083=(a083+a021);
+  a175=(a007*a175);
+  a175=(a000*a175);
+  a083=(a083+a175);
+  a084=(a071*a084);
+  a175=(a001*a084);
+  a175=(a000*a175);
+  a083=(a083+a175);
+  a175=(a065*a083);
+  a077=(a077-a175);
+  a187=(a187*a077);
+  a190=(a190*a232);
+  a187=(a187+a190);
+  a079=(a079*a193);
+  a059=(a059*a193);
+  a079=(a079-a059);
+  a128=(a128*a193);
+  a079=(a079+a128);
+  a145=(a145*a153);
+  a079=(a079-a145);
+  a145=(a067*a129);
+  a079=(a079-a145);
+  a189=(a070*a189);
+  a079=(a079+a189);
+  a189=(a067*a076);
+  a079=(a079-a189);
+  a189=(a067*a121);
+  a079=(a079-a189);
+  a025=(a025*a151);
+  a079=(a079+a025);
+  a026=(a026*a060);
+  a079=(a079-a026);
+  a026=(a023*a154);
+  a079=(a079+a026);
+  a176=(a176*a079);
+  a187=(a187+a176);
+  a143=(a143*a153);
+  a119=(a119*a193);
+  a143=(a143-a119);
+  a070=(a070*a209);
+  a143=(a143-a070);
+  a070=(a067*a078);
+  a143=(a143+a070);
+  a070=(a067*a083);
+  a143=(a143+a070);
+  a023=(a023*a060);
+  a143=(a143+a023);
+  a019=(a019*a151);
+  a143=(a143-a019);
+  a018=(a018*a154);
+  a143=(a143-a018);
+  a161=(a161*a143);
+  a187=(a187+a161);
+  a013=(a013*a187);
+  a130=(a130-a013);
+  a130=(a014*a130);
+  a081=(a081+a130);
+  a186=(a081*a186);
+  a069=(a068*a069);
+  a130=(a001*a120);
+  a069=(a069-a130);
+  a130=(a007*a133);
+  a069=(a069+a130);
+  a077=(a077/a015);
+  a010=(a010*a187);
+  a077=(a077+a010);
+  a077=(a014*a077);
+  a069=(a069+a077);
+  a188=(a069*a188);
+  a077=(a044*a193);
+  a010=(a061*a228);
+  a077=(a077+a010);
+  a010=(a042*a077);
+  a130=(a039*a193);
+  a013=(a090*a228);
+  a130=(a130+a013);
+  a013=(a027*a130);
+  a010=(a010-a013);
+  a013=(a090*a010);
+  a161=(a045*a077);
+  a018=(a042*a130);
+  a161=(a161-a018);
+  a018=(a061*a161);
+  a013=(a013-a018);
+  a018=(a085*a013);
+  a019=(a086*a018);
+  a023=(a085*a130);
+  a123=(a123*a023);
+  a070=(a089*a077);
+  a099=(a099*a070);
+  a123=(a123+a099);
+  a099=(a032*a123);
+  a019=(a019-a099);
+  a099=(a039*a153);
+  a209=(a090*a150);
+  a099=(a099-a209);
+  a209=(a061*a099);
+  a119=(a061*a150);
+  a176=(a044*a153);
+  a119=(a119-a176);
+  a176=(a090*a119);
+  a209=(a209-a176);
+  a176=(a093*a130);
+  a209=(a209-a176);
+  a176=(a098*a077);
+  a209=(a209+a176);
+  a176=(a090*a144);
+  a026=(a039*a151);
+  a176=(a176+a026);
+  a026=(a044*a176);
+  a209=(a209+a026);
+  a026=(a061*a144);
+  a025=(a044*a151);
+  a026=(a026+a025);
+  a025=(a039*a026);
+  a209=(a209+a025);
+  a025=(a040*a209);
+  a189=(a029*a025);
+  a019=(a019+a189);
+  a189=(a095*a010);
+  a145=(a055*a144);
+  a128=(a146*a150);
+  a145=(a145+a128);
+  a128=(a027*a099);
+  a145=(a145+a128);
+  a128=(a042*a119);
+  a145=(a145+a128);
+  a128=(a122*a228);
+  a145=(a145+a128);
+  a189=(a189-a145);
+  a096=(a096*a013);
+  a145=(a044*a161);
+  a128=(a039*a010);
+  a145=(a145-a128);
+  a092=(a092*a145);
+  a096=(a096+a092);
+  a092=(a065*a096);
+  a189=(a189-a092);
+  a101=(a101*a077);
+  a070=(a100*a070);
+  a092=(a040*a070);
+  a101=(a101+a092);
+  a092=(a089*a013);
+  a128=(a029*a092);
+  a128=(a000*a128);
+  a101=(a101+a128);
+  a128=(a089*a145);
+  a059=(a032*a128);
+  a059=(a000*a059);
+  a101=(a101+a059);
+  a059=(a065*a101);
+  a189=(a189-a059);
+  a059=(a189/a036);
+  a217=(a217*a189);
+  a189=(a043*a144);
+  a190=(a147*a150);
+  a189=(a189+a190);
+  a190=(a042*a099);
+  a189=(a189+a190);
+  a190=(a045*a119);
+  a189=(a189+a190);
+  a190=(a135*a228);
+  a189=(a189+a190);
+  a138=(a077/a138);
+  a136=(a136*a138);
+  a137=(a137*a077);
+  a137=(a137/a222);
+  a220=(a220*a137);
+  a136=(a136-a220);
+  a134=(a134*a077);
+  a136=(a136+a134);
+  a134=(a065*a136);
+  a189=(a189+a134);
+  a134=(a097*a228);
+  a189=(a189+a134);
+  a095=(a095*a161);
+  a189=(a189-a095);
+  a094=(a094*a013);
+  a087=(a087*a145);
+  a094=(a094+a087);
+  a087=(a065*a094);
+  a189=(a189+a087);
+  a124=(a124*a130);
+  a023=(a100*a023);
+  a040=(a040*a023);
+  a124=(a124+a040);
+  a018=(a028*a018);
+  a018=(a000*a018);
+  a124=(a124+a018);
+  a145=(a085*a145);
+  a018=(a033*a145);
+  a018=(a000*a018);
+  a124=(a124+a018);
+  a018=(a065*a124);
+  a189=(a189+a018);
+  a018=(a062*a228);
+  a189=(a189-a018);
+  a218=(a218*a189);
+  a217=(a217+a218);
+  a097=(a097*a193);
+  a062=(a062*a193);
+  a097=(a097-a062);
+  a135=(a135*a193);
+  a097=(a097+a135);
+  a147=(a147*a153);
+  a097=(a097-a147);
+  a147=(a067*a136);
+  a097=(a097-a147);
+  a161=(a088*a161);
+  a097=(a097+a161);
+  a161=(a067*a094);
+  a097=(a097-a161);
+  a161=(a067*a124);
+  a097=(a097-a161);
+  a161=(a042*a176);
+  a097=(a097+a161);
+  a043=(a043*a151);
+  a097=(a097+a043);
+  a045=(a045*a026);
+  a097=(a097-a045);
+  a224=(a224*a097);
+  a217=(a217+a224);
+  a146=(a146*a153);
+  a122=(a122*a193);
+  a146=(a146-a122);
+  a088=(a088*a010);
+  a146=(a146-a088);
+  a088=(a067*a096);
+  a146=(a146+a088);
+  a088=(a067*a101);
+  a146=(a146+a088);
+  a055=(a055*a151);
+  a146=(a146-a055);
+  a027=(a027*a176);
+  a146=(a146-a027);
+  a042=(a042*a026);
+  a146=(a146+a042);
+  a202=(a202*a146);
+  a217=(a217+a202);
+  a037=(a037*a217);
+  a059=(a059+a037);
+  a059=(a014*a059);
+  a019=(a019+a059);
+  a216=(a019*a216);
+  a188=(a188+a216);
+  a216=(a053*a193);
+  a059=(a063*a228);
+  a216=(a216+a059);
+  a059=(a051*a216);
+  a037=(a048*a193);
+  a202=(a107*a228);
+  a037=(a037+a202);
+  a202=(a056*a037);
+  a059=(a059-a202);
+  a202=(a107*a059);
+  a042=(a054*a216);
+  a027=(a051*a037);
+  a042=(a042-a027);
+  a027=(a063*a042);
+  a202=(a202-a027);
+  a027=(a102*a202);
+  a055=(a103*a027);
+  a088=(a102*a037);
+  a126=(a126*a088);
+  a010=(a106*a216);
+  a116=(a116*a010);
+  a126=(a126+a116);
+  a116=(a046*a126);
+  a055=(a055-a116);
+  a116=(a048*a153);
+  a122=(a107*a150);
+  a116=(a116-a122);
+  a122=(a063*a116);
+  a224=(a063*a150);
+  a045=(a053*a153);
+  a224=(a224-a045);
+  a045=(a107*a224);
+  a122=(a122-a045);
+  a045=(a110*a037);
+  a122=(a122-a045);
+  a045=(a115*a216);
+  a122=(a122+a045);
+  a045=(a107*a144);
+  a043=(a048*a151);
+  a045=(a045+a043);
+  a043=(a053*a045);
+  a122=(a122+a043);
+  a043=(a063*a144);
+  a161=(a053*a151);
+  a043=(a043+a161);
+  a161=(a048*a043);
+  a122=(a122+a161);
+  a161=(a049*a122);
+  a147=(a004*a161);
+  a055=(a055+a147);
+  a147=(a112*a059);
+  a135=(a057*a144);
+  a062=(a149*a150);
+  a135=(a135+a062);
+  a062=(a056*a116);
+  a135=(a135+a062);
+  a062=(a051*a224);
+  a135=(a135+a062);
+  a062=(a125*a228);
+  a135=(a135+a062);
+  a147=(a147-a135);
+  a113=(a113*a202);
+  a135=(a053*a042);
+  a062=(a048*a059);
+  a135=(a135-a062);
+  a109=(a109*a135);
+  a113=(a113+a109);
+  a109=(a065*a113);
+  a147=(a147-a109);
+  a118=(a118*a216);
+  a010=(a117*a010);
+  a109=(a049*a010);
+  a118=(a118+a109);
+  a109=(a106*a202);
+  a062=(a004*a109);
+  a062=(a000*a062);
+  a118=(a118+a062);
+  a062=(a106*a135);
+  a218=(a046*a062);
+  a218=(a000*a218);
+  a118=(a118+a218);
+  a218=(a065*a118);
+  a147=(a147-a218);
+  a218=(a147/a047);
+  a249=(a249*a147);
+  a144=(a052*a144);
+  a150=(a148*a150);
+  a144=(a144+a150);
+  a150=(a051*a116);
+  a144=(a144+a150);
+  a150=(a054*a224);
+  a144=(a144+a150);
+  a150=(a140*a228);
+  a144=(a144+a150);
+  a131=(a216/a131);
+  a141=(a141*a131);
+  a142=(a142*a216);
+  a142=(a142/a252);
+  a167=(a167*a142);
+  a141=(a141-a167);
+  a139=(a139*a216);
+  a141=(a141+a139);
+  a139=(a065*a141);
+  a144=(a144+a139);
+  a139=(a114*a228);
+  a144=(a144+a139);
+  a112=(a112*a042);
+  a144=(a144-a112);
+  a111=(a111*a202);
+  a104=(a104*a135);
+  a111=(a111+a104);
+  a104=(a065*a111);
+  a144=(a144+a104);
+  a127=(a127*a037);
+  a088=(a117*a088);
+  a049=(a049*a088);
+  a127=(a127+a049);
+  a027=(a035*a027);
+  a027=(a000*a027);
+  a127=(a127+a027);
+  a135=(a102*a135);
+  a027=(a005*a135);
+  a027=(a000*a027);
+  a127=(a127+a027);
+  a065=(a065*a127);
+  a144=(a144+a065);
+  a228=(a064*a228);
+  a144=(a144-a228);
+  a250=(a250*a144);
+  a249=(a249+a250);
+  a114=(a114*a193);
+  a064=(a064*a193);
+  a114=(a114-a064);
+  a140=(a140*a193);
+  a114=(a114+a140);
+  a148=(a148*a153);
+  a114=(a114-a148);
+  a148=(a067*a141);
+  a114=(a114-a148);
+  a042=(a105*a042);
+  a114=(a114+a042);
+  a042=(a067*a111);
+  a114=(a114-a042);
+  a042=(a067*a127);
+  a114=(a114-a042);
+  a042=(a051*a045);
+  a114=(a114+a042);
+  a052=(a052*a151);
+  a114=(a114+a052);
+  a054=(a054*a043);
+  a114=(a114-a054);
+  a157=(a157*a114);
+  a249=(a249+a157);
+  a149=(a149*a153);
+  a125=(a125*a193);
+  a149=(a149-a125);
+  a105=(a105*a059);
+  a149=(a149-a105);
+  a105=(a067*a113);
+  a149=(a149+a105);
+  a067=(a067*a118);
+  a149=(a149+a067);
+  a057=(a057*a151);
+  a149=(a149-a057);
+  a056=(a056*a045);
+  a149=(a149-a056);
+  a051=(a051*a043);
+  a149=(a149+a051);
+  a234=(a234*a149);
+  a249=(a249+a234);
+  a030=(a030*a249);
+  a218=(a218+a030);
+  a218=(a014*a218);
+  a055=(a055+a218);
+  a248=(a055*a248);
+  a188=(a188+a248);
+  a186=(a186-a188);
+  a188=(a033*a123);
+  a092=(a091*a092);
+  a188=(a188+a092);
+  a092=(a028*a025);
+  a188=(a188+a092);
+  a189=(a189/a036);
+  a034=(a034*a217);
+  a189=(a189-a034);
+  a189=(a014*a189);
+  a188=(a188+a189);
+  a219=(a188*a219);
+  a186=(a186+a219);
+  a219=(a005*a126);
+  a109=(a108*a109);
+  a219=(a219+a109);
+  a109=(a035*a161);
+  a219=(a219+a109);
+  a144=(a144/a047);
+  a003=(a003*a249);
+  a144=(a144-a003);
+  a014=(a014*a144);
+  a219=(a219+a014);
+  a172=(a219*a172);
+  a186=(a186+a172);
+  a172=(a007*a120);
+  a068=(a068*a177);
+  a172=(a172+a068);
+  a068=(a001*a133);
+  a172=(a172+a068);
+  a143=(a143/a015);
+  a009=(a009*a187);
+  a143=(a143-a009);
+  a143=(a000*a143);
+  a172=(a172+a143);
+  a192=(a172*a192);
+  a143=(a029*a123);
+  a086=(a086*a145);
+  a143=(a143+a086);
+  a086=(a032*a025);
+  a143=(a143+a086);
+  a146=(a146/a036);
+  a002=(a002*a217);
+  a146=(a146-a002);
+  a146=(a000*a146);
+  a143=(a143+a146);
+  a226=(a143*a226);
+  a192=(a192+a226);
+  a226=(a004*a126);
+  a103=(a103*a135);
+  a226=(a226+a103);
+  a103=(a046*a161);
+  a226=(a226+a103);
+  a149=(a149/a047);
+  a012=(a012*a249);
+  a149=(a149-a012);
+  a149=(a000*a149);
+  a226=(a226+a149);
+  a155=(a226*a155);
+  a192=(a192+a155);
+  a073=(a073*a084);
+  a006=(a006*a120);
+  a073=(a073-a006);
+  a008=(a008*a133);
+  a073=(a073+a008);
+  a079=(a079/a015);
+  a016=(a016*a187);
+  a079=(a079+a016);
+  a079=(a000*a079);
+  a073=(a073+a079);
+  a191=(a073*a191);
+  a192=(a192-a191);
+  a091=(a091*a128);
+  a028=(a028*a123);
+  a091=(a091-a028);
+  a033=(a033*a025);
+  a091=(a091+a033);
+  a097=(a097/a036);
+  a038=(a038*a217);
+  a097=(a097+a038);
+  a097=(a000*a097);
+  a091=(a091+a097);
+  a225=(a091*a225);
+  a192=(a192-a225);
+  a108=(a108*a062);
+  a035=(a035*a126);
+  a108=(a108-a035);
+  a005=(a005*a161);
+  a108=(a108+a005);
+  a114=(a114/a047);
+  a031=(a031*a249);
+  a114=(a114+a031);
+  a000=(a000*a114);
+  a108=(a108+a000);
+  a254=(a108*a254);
+  a192=(a192-a254);
+  a186=(a186+a192);
+  if (res[1]!=0) res[1][2]=a186;
+  a069=(a069*a158);
+  a019=(a019*a183);
+  a069=(a069+a019);
+  a055=(a055*a199);
+  a069=(a069+a055);
+  a081=(a081*a231);
+  a069=(a069-a081);
+  a188=(a188*a163);
+  a069=(a069-a188);
+  a219=(a219*a213);
+  a069=(a069-a219);
+  a073=(a073*a245);
+  a172=(a172*a242);
+  a143=(a143*a241);
+  a172=(a172+a143);
+  a226=(a226*a212);
+  a172=(a172+a226);
+  a073=(a073-a172);
+  a091=(a091*a185);
+  a073=(a073+a091);
+  a108=(a108*a196);
+  a073=(a073+a108);
+  a069=(a069+a073);
+  if (res[1]!=0) res[1][3]=a069;
+  a069=(a063*a251);
+  a073=(a061*a221);
+  a069=(a069+a073);
+  a073=(a058*a178);
+  a069=(a069+a073);
+  a073=(a107*a243);
+  a069=(a069-a073);
+  a073=(a107*a246);
+  a069=(a069-a073);
+  a073=(a063*a233);
+  a069=(a069+a073);
+  a073=(a063*a235);
+  a069=(a069+a073);
+  a073=(a090*a211);
+  a069=(a069-a073);
+  a073=(a090*a214);
+  a069=(a069-a073);
+  a073=(a061*a201);
+  a069=(a069+a073);
+  a073=(a061*a203);
+  a069=(a069+a073);
+  a073=(a072*a160);
+  a069=(a069-a073);
+  a073=(a072*a162);
+  a069=(a069-a073);
+  a073=(a058*a181);
+  a069=(a069+a073);
+  a073=(a058*a184);
+  a069=(a069+a073);
+  if (res[2]!=0) res[2][0]=a069;
+  a243=(a048*a243);
+  a251=(a053*a251);
+  a221=(a044*a221);
+  a251=(a251+a221);
+  a178=(a020*a178);
+  a251=(a251+a178);
+  a243=(a243-a251);
+  a246=(a048*a246);
+  a243=(a243+a246);
+  a233=(a053*a233);
+  a243=(a243-a233);
+  a235=(a053*a235);
+  a243=(a243-a235);
+  a211=(a039*a211);
+  a243=(a243+a211);
+  a214=(a039*a214);
+  a243=(a243+a214);
+  a201=(a044*a201);
+  a243=(a243-a201);
+  a203=(a044*a203);
+  a243=(a243-a203);
+  a160=(a017*a160);
+  a243=(a243+a160);
+  a162=(a017*a162);
+  a243=(a243+a162);
+  a181=(a020*a181);
+  a243=(a243-a181);
+  a184=(a020*a184);
+  a243=(a243-a184);
+  if (res[2]!=0) res[2][1]=a243;
+  a243=(a063*a141);
+  a184=(a061*a136);
+  a243=(a243+a184);
+  a184=(a058*a129);
+  a243=(a243+a184);
+  a184=(a107*a113);
+  a243=(a243-a184);
+  a184=(a107*a118);
+  a243=(a243-a184);
+  a184=(a063*a111);
+  a243=(a243+a184);
+  a184=(a063*a127);
+  a243=(a243+a184);
+  a184=(a090*a096);
+  a243=(a243-a184);
+  a184=(a090*a101);
+  a243=(a243-a184);
+  a184=(a061*a094);
+  a243=(a243+a184);
+  a184=(a061*a124);
+  a243=(a243+a184);
+  a184=(a072*a078);
+  a243=(a243-a184);
+  a184=(a072*a083);
+  a243=(a243-a184);
+  a184=(a058*a076);
+  a243=(a243+a184);
+  a184=(a058*a121);
+  a243=(a243+a184);
+  if (res[2]!=0) res[2][2]=a243;
+  a113=(a048*a113);
+  a141=(a053*a141);
+  a136=(a044*a136);
+  a141=(a141+a136);
+  a129=(a020*a129);
+  a141=(a141+a129);
+  a113=(a113-a141);
+  a118=(a048*a118);
+  a113=(a113+a118);
+  a111=(a053*a111);
+  a113=(a113-a111);
+  a127=(a053*a127);
+  a113=(a113-a127);
+  a096=(a039*a096);
+  a113=(a113+a096);
+  a101=(a039*a101);
+  a113=(a113+a101);
+  a094=(a044*a094);
+  a113=(a113-a094);
+  a124=(a044*a124);
+  a113=(a113-a124);
+  a078=(a017*a078);
+  a113=(a113+a078);
+  a083=(a017*a083);
+  a113=(a113+a083);
+  a076=(a020*a076);
+  a113=(a113-a076);
+  a121=(a020*a121);
+  a113=(a113-a121);
+  if (res[2]!=0) res[2][3]=a113;
+  if (res[3]!=0) res[3][0]=a159;
+  if (res[3]!=0) res[3][1]=a197;
+  if (res[3]!=0) res[3][2]=a229;
+  a113=(-a247);
+  if (res[3]!=0) res[3][3]=a113;
+  a113=(-a077);
+  if (res[3]!=0) res[3][4]=a113;
+  a113=(-a216);
+  if (res[3]!=0) res[3][5]=a113;
+  a168=(a058*a168);
+  a113=(a075*a159);
+  a168=(a168+a113);
+  a173=(a020*a173);
+  a168=(a168+a173);
+  a168=(-a168);
+  if (res[4]!=0) res[4][0]=a168;
+  a206=(a061*a206);
+  a168=(a093*a197);
+  a206=(a206+a168);
+  a208=(a044*a208);
+  a206=(a206+a208);
+  a206=(-a206);
+  if (res[4]!=0) res[4][1]=a206;
+  a238=(a063*a238);
+  a206=(a110*a229);
+  a238=(a238+a206);
+  a240=(a053*a240);
+  a238=(a238+a240);
+  a238=(-a238);
+  if (res[4]!=0) res[4][2]=a238;
+  a170=(a022*a170);
+  a164=(a066*a164);
+  a166=(a071*a166);
+  a164=(a164+a166);
+  a170=(a170-a164);
+  if (res[4]!=0) res[4][3]=a170;
+  a205=(a041*a205);
+  a195=(a085*a195);
+  a198=(a089*a198);
+  a195=(a195+a198);
+  a205=(a205-a195);
+  if (res[4]!=0) res[4][4]=a205;
+  a237=(a050*a237);
+  a227=(a102*a227);
+  a230=(a106*a230);
+  a227=(a227+a230);
+  a237=(a237-a227);
+  if (res[4]!=0) res[4][5]=a237;
+  a156=(a080*a156);
+  a171=(a072*a171);
+  a156=(a156-a171);
+  a174=(a017*a174);
+  a156=(a156+a174);
+  if (res[4]!=0) res[4][6]=a156;
+  a194=(a098*a194);
+  a204=(a090*a204);
+  a194=(a194-a204);
+  a207=(a039*a207);
+  a194=(a194+a207);
+  if (res[4]!=0) res[4][7]=a194;
+  a200=(a115*a200);
+  a236=(a107*a236);
+  a200=(a200-a236);
+  a239=(a048*a239);
+  a200=(a200+a239);
+  if (res[4]!=0) res[4][8]=a200;
+  a159=(a066*a159);
+  a159=(-a159);
+  if (res[4]!=0) res[4][9]=a159;
+  a197=(a085*a197);
+  a197=(-a197);
+  if (res[4]!=0) res[4][10]=a197;
+  a229=(a102*a229);
+  a229=(-a229);
+  if (res[4]!=0) res[4][11]=a229;
+  a180=(a066*a180);
+  a180=(-a180);
+  if (res[4]!=0) res[4][12]=a180;
+  a223=(a085*a223);
+  a223=(-a223);
+  if (res[4]!=0) res[4][13]=a223;
+  a253=(a102*a253);
+  a253=(-a253);
+  if (res[4]!=0) res[4][14]=a253;
+  a058=(a058*a182);
+  a075=(a075*a247);
+  a058=(a058+a075);
+  a020=(a020*a060);
+  a058=(a058-a020);
+  if (res[4]!=0) res[4][15]=a058;
+  a061=(a061*a119);
+  a093=(a093*a077);
+  a061=(a061+a093);
+  a044=(a044*a026);
+  a061=(a061-a044);
+  if (res[4]!=0) res[4][16]=a061;
+  a063=(a063*a224);
+  a110=(a110*a216);
+  a063=(a063+a110);
+  a053=(a053*a043);
+  a063=(a063-a053);
+  if (res[4]!=0) res[4][17]=a063;
+  a244=(a066*a244);
+  a071=(a071*a210);
+  a244=(a244+a071);
+  a022=(a022*a024);
+  a244=(a244+a022);
+  if (res[4]!=0) res[4][18]=a244;
+  a023=(a085*a023);
+  a089=(a089*a070);
+  a023=(a023+a089);
+  a041=(a041*a209);
+  a023=(a023+a041);
+  if (res[4]!=0) res[4][19]=a023;
+  a088=(a102*a088);
+  a106=(a106*a010);
+  a088=(a088+a106);
+  a050=(a050*a122);
+  a088=(a088+a050);
+  if (res[4]!=0) res[4][20]=a088;
+  a072=(a072*a152);
+  a080=(a080*a165);
+  a072=(a072+a080);
+  a017=(a017*a154);
+  a072=(a072+a017);
+  a072=(-a072);
+  if (res[4]!=0) res[4][21]=a072;
+  a090=(a090*a099);
+  a098=(a098*a130);
+  a090=(a090+a098);
+  a039=(a039*a176);
+  a090=(a090+a039);
+  a090=(-a090);
+  if (res[4]!=0) res[4][22]=a090;
+  a107=(a107*a116);
+  a115=(a115*a037);
+  a107=(a107+a115);
+  a048=(a048*a045);
+  a107=(a107+a048);
+  a107=(-a107);
+  if (res[4]!=0) res[4][23]=a107;
+  a247=(a066*a247);
+  if (res[4]!=0) res[4][24]=a247;
+  a077=(a085*a077);
+  if (res[4]!=0) res[4][25]=a077;
+  a216=(a102*a216);
+  if (res[4]!=0) res[4][26]=a216;
+  a066=(a066*a132);
+  if (res[4]!=0) res[4][27]=a066;
+  a085=(a085*a138);
+  if (res[4]!=0) res[4][28]=a085;
+  a102=(a102*a131);
+  if (res[4]!=0) res[4][29]=a102;
+  a082=casadi_fabs(a082);
+  a100=casadi_fabs(a100);
+  a102=(a082+a100);
+  a082=(a082-a100);
+  a082=casadi_fabs(a082);
+  a102=(a102-a082);
+  a082=2.;
+  a102=(a102/a082);
+  a117=casadi_fabs(a117);
+  a100=(a102+a117);
+  a102=(a102-a117);
+  a102=casadi_fabs(a102);
+  a100=(a100-a102);
+  a100=(a100/a082);
+  if (res[5]!=0) res[5][0]=a100;
+  a100=5.0000000000000000e-01;
+  a082=3.3333333333333331e-01;
+  a102=casadi_sq(a007);
+  a117=casadi_sq(a001);
+  a102=(a102-a117);
+  a117=casadi_sq(a029);
+  a131=casadi_sq(a032);
+  a117=(a117-a131);
+  a102=(a102+a117);
+  a117=casadi_sq(a004);
+  a131=casadi_sq(a046);
+  a117=(a117-a131);
+  a102=(a102+a117);
+  a102=casadi_sq(a102);
+  a007=(2.*a007);
+  a007=(a007*a001);
+  a029=(2.*a029);
+  a029=(a029*a032);
+  a007=(a007+a029);
+  a004=(2.*a004);
+  a004=(a004*a046);
+  a007=(a007+a004);
+  a007=casadi_sq(a007);
+  a102=(a102+a007);
+  a102=sqrt(a102);
+  a082=(a082*a102);
+  a011=(a011-a082);
+  a082=casadi_fabs(a011);
+  a011=(a011+a082);
+  a100=(a100*a011);
+  a100=sqrt(a100);
+  if (res[5]!=0) res[5][1]=a100;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f56(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_forward_dynamics_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_forward_dynamics_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_forward_dynamics_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_forward_dynamics_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_forward_dynamics_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_forward_dynamics_jacobians_n_out(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_forward_dynamics_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_forward_dynamics_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "tau_a";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_forward_dynamics_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xedd";
+    case 1: return "d_xe";
+    case 2: return "d_xed";
+    case 3: return "d_tau_a";
+    case 4: return "d_theta";
+    case 5: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_forward_dynamics_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s2;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_forward_dynamics_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s3;
+    case 2: return casadi_s3;
+    case 3: return casadi_s1;
+    case 4: return casadi_s8;
+    case 5: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_forward_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_forward_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_inverse_dynamics:(xe[2],xed[2],xedd[2],theta[15])->(u[2],sing[2]) */
+static int casadi_f57(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52;
+  a00=2.4399999999999999e-01;
+  a01=2.0491803278688523e+00;
+  a02=arg[0]? arg[0][0] : 0;
+  a03=(a01*a02);
+  a04=1.;
+  a05=-4.1991400161246979e+00;
+  a06=casadi_sq(a02);
+  a07=(a05*a06);
+  a07=(a04+a07);
+  a08=-2.5000000000000000e-01;
+  a09=arg[0]? arg[0][1] : 0;
+  a08=(a08+a09);
+  a10=casadi_sq(a08);
+  a11=(a05*a10);
+  a07=(a07+a11);
+  a07=sqrt(a07);
+  a06=(a06+a10);
+  a06=sqrt(a06);
+  a10=(a07/a06);
+  a10=(a10*a08);
+  a08=(a03-a10);
+  a11=(a00*a08);
+  a12=-2.4399999999999999e-01;
+  a13=-5.1229508196721307e-01;
+  a01=(a01*a09);
+  a13=(a13+a01);
+  a06=(a02/a06);
+  a06=(a06*a07);
+  a07=(a13-a06);
+  a14=(a12*a07);
+  a15=(a14*a11);
+  a13=(a13+a06);
+  a06=(a12*a13);
+  a10=(a03+a10);
+  a16=(a00*a10);
+  a17=(a06*a16);
+  a15=(a15-a17);
+  a11=(a11/a15);
+  a17=arg[3]? arg[3][0] : 0;
+  a18=(a11*a17);
+  a16=(a16/a15);
+  a19=arg[3]? arg[3][3] : 0;
+  a20=(a10*a08);
+  a21=(a07*a13);
+  a20=(a20+a21);
+  a20=(a19*a20);
+  a21=(a16*a20);
+  a18=(a18-a21);
+  a21=(a18*a11);
+  a22=-8.8729508196721307e-01;
+  a22=(a22+a03);
+  a03=casadi_sq(a09);
+  a23=-4.3300000000000000e-01;
+  a23=(a23+a02);
+  a02=casadi_sq(a23);
+  a24=(a03+a02);
+  a24=sqrt(a24);
+  a25=(a09/a24);
+  a03=(a05*a03);
+  a03=(a04+a03);
+  a26=(a05*a02);
+  a03=(a03+a26);
+  a03=sqrt(a03);
+  a25=(a25*a03);
+  a27=(a22-a25);
+  a28=(a00*a27);
+  a03=(a03/a24);
+  a03=(a03*a23);
+  a24=(a01-a03);
+  a29=(a12*a24);
+  a30=(a29*a28);
+  a03=(a01+a03);
+  a31=(a12*a03);
+  a25=(a22+a25);
+  a32=(a00*a25);
+  a33=(a31*a32);
+  a30=(a30-a33);
+  a28=(a28/a30);
+  a33=arg[3]? arg[3][1] : 0;
+  a34=(a28*a33);
+  a32=(a32/a30);
+  a35=arg[3]? arg[3][4] : 0;
+  a36=(a25*a27);
+  a37=(a24*a03);
+  a36=(a36+a37);
+  a36=(a35*a36);
+  a37=(a32*a36);
+  a34=(a34-a37);
+  a37=(a34*a28);
+  a21=(a21+a37);
+  a26=(a04+a26);
+  a37=-5.0000000000000000e-01;
+  a37=(a37+a09);
+  a09=casadi_sq(a37);
+  a05=(a05*a09);
+  a26=(a26+a05);
+  a26=sqrt(a26);
+  a02=(a02+a09);
+  a02=sqrt(a02);
+  a26=(a26/a02);
+  a37=(a26*a37);
+  a02=(a22-a37);
+  a09=(a00*a02);
+  a05=-1.0245901639344261e+00;
+  a05=(a05+a01);
+  a26=(a26*a23);
+  a23=(a05-a26);
+  a01=(a12*a23);
+  a38=(a01*a09);
+  a05=(a05+a26);
+  a26=(a12*a05);
+  a22=(a22+a37);
+  a00=(a00*a22);
+  a37=(a26*a00);
+  a38=(a38-a37);
+  a09=(a09/a38);
+  a37=arg[3]? arg[3][2] : 0;
+  a39=(a09*a37);
+  a00=(a00/a38);
+  a40=arg[3]? arg[3][5] : 0;
+  a41=(a22*a02);
+  a42=(a23*a05);
+  a41=(a41+a42);
+  a41=(a40*a41);
+  a42=(a00*a41);
+  a39=(a39-a42);
+  a42=(a39*a09);
+  a21=(a21+a42);
+  a42=(a11*a20);
+  a43=arg[3]? arg[3][6] : 0;
+  a44=(a16*a43);
+  a42=(a42-a44);
+  a44=(a42*a16);
+  a21=(a21-a44);
+  a44=(a28*a36);
+  a45=arg[3]? arg[3][7] : 0;
+  a46=(a32*a45);
+  a44=(a44-a46);
+  a46=(a44*a32);
+  a21=(a21-a46);
+  a46=(a09*a41);
+  a47=arg[3]? arg[3][8] : 0;
+  a48=(a00*a47);
+  a46=(a46-a48);
+  a48=(a46*a00);
+  a21=(a21-a48);
+  a48=arg[2]? arg[2][0] : 0;
+  a21=(a21*a48);
+  a14=(a14/a15);
+  a42=(a42*a14);
+  a06=(a06/a15);
+  a18=(a18*a06);
+  a31=(a31/a30);
+  a34=(a34*a31);
+  a18=(a18+a34);
+  a26=(a26/a38);
+  a39=(a39*a26);
+  a18=(a18+a39);
+  a42=(a42-a18);
+  a29=(a29/a30);
+  a44=(a44*a29);
+  a42=(a42+a44);
+  a01=(a01/a38);
+  a46=(a46*a01);
+  a42=(a42+a46);
+  a46=arg[2]? arg[2][1] : 0;
+  a42=(a42*a46);
+  a21=(a21+a42);
+  a42=arg[1]? arg[1][0] : 0;
+  a38=(a11*a42);
+  a44=arg[1]? arg[1][1] : 0;
+  a30=(a06*a44);
+  a38=(a38-a30);
+  a30=(a12*a38);
+  a18=(a30*a07);
+  a18=(a18*a38);
+  a39=(a14*a44);
+  a34=(a16*a42);
+  a39=(a39-a34);
+  a34=(a12*a39);
+  a15=(a34*a13);
+  a15=(a15*a39);
+  a18=(a18+a15);
+  a15=(a06*a18);
+  a30=(a30*a10);
+  a30=(a30*a38);
+  a34=(a34*a08);
+  a34=(a34*a39);
+  a30=(a30+a34);
+  a34=(a11*a30);
+  a15=(a15-a34);
+  a34=(a17*a15);
+  a30=(a16*a30);
+  a18=(a14*a18);
+  a30=(a30-a18);
+  a18=(a20*a30);
+  a34=(a34+a18);
+  a18=(a19*a39);
+  a07=(a07*a08);
+  a10=(a10*a13);
+  a07=(a07-a10);
+  a18=(a18*a07);
+  a18=(a18*a39);
+  a34=(a34+a18);
+  a18=(a11*a34);
+  a39=(a28*a42);
+  a10=(a31*a44);
+  a39=(a39-a10);
+  a10=(a12*a39);
+  a49=(a10*a24);
+  a49=(a49*a39);
+  a50=(a29*a44);
+  a51=(a32*a42);
+  a50=(a50-a51);
+  a51=(a12*a50);
+  a52=(a51*a03);
+  a52=(a52*a50);
+  a49=(a49+a52);
+  a52=(a31*a49);
+  a10=(a10*a25);
+  a10=(a10*a39);
+  a51=(a51*a27);
+  a51=(a51*a50);
+  a10=(a10+a51);
+  a51=(a28*a10);
+  a52=(a52-a51);
+  a51=(a33*a52);
+  a10=(a32*a10);
+  a49=(a29*a49);
+  a10=(a10-a49);
+  a49=(a36*a10);
+  a51=(a51+a49);
+  a49=(a35*a50);
+  a24=(a24*a27);
+  a25=(a25*a03);
+  a24=(a24-a25);
+  a49=(a49*a24);
+  a49=(a49*a50);
+  a51=(a51+a49);
+  a49=(a28*a51);
+  a18=(a18+a49);
+  a49=(a09*a42);
+  a50=(a26*a44);
+  a49=(a49-a50);
+  a50=(a12*a49);
+  a25=(a50*a23);
+  a25=(a25*a49);
+  a44=(a01*a44);
+  a42=(a00*a42);
+  a44=(a44-a42);
+  a12=(a12*a44);
+  a42=(a12*a05);
+  a42=(a42*a44);
+  a25=(a25+a42);
+  a42=(a26*a25);
+  a50=(a50*a22);
+  a50=(a50*a49);
+  a12=(a12*a02);
+  a12=(a12*a44);
+  a50=(a50+a12);
+  a12=(a09*a50);
+  a42=(a42-a12);
+  a12=(a37*a42);
+  a50=(a00*a50);
+  a25=(a01*a25);
+  a50=(a50-a25);
+  a25=(a41*a50);
+  a12=(a12+a25);
+  a25=(a40*a44);
+  a23=(a23*a02);
+  a22=(a22*a05);
+  a23=(a23-a22);
+  a25=(a25*a23);
+  a25=(a25*a44);
+  a12=(a12+a25);
+  a25=(a09*a12);
+  a18=(a18+a25);
+  a15=(a20*a15);
+  a30=(a43*a30);
+  a15=(a15+a30);
+  a19=(a19*a38);
+  a19=(a19*a07);
+  a19=(a19*a38);
+  a15=(a15-a19);
+  a19=(a16*a15);
+  a18=(a18-a19);
+  a52=(a36*a52);
+  a10=(a45*a10);
+  a52=(a52+a10);
+  a35=(a35*a39);
+  a35=(a35*a24);
+  a35=(a35*a39);
+  a52=(a52-a35);
+  a35=(a32*a52);
+  a18=(a18-a35);
+  a42=(a41*a42);
+  a50=(a47*a50);
+  a42=(a42+a50);
+  a40=(a40*a49);
+  a40=(a40*a23);
+  a40=(a40*a49);
+  a42=(a42-a40);
+  a40=(a00*a42);
+  a18=(a18-a40);
+  a21=(a21+a18);
+  a18=arg[3]? arg[3][9] : 0;
+  a18=(a18*a38);
+  a40=arg[3]? arg[3][12] : 0;
+  a40=(a40*a38);
+  a50=1.0000000000000000e-04;
+  a38=casadi_sq(a38);
+  a38=(a50+a38);
+  a38=sqrt(a38);
+  a40=(a40/a38);
+  a18=(a18+a40);
+  a40=(a11*a18);
+  a38=arg[3]? arg[3][10] : 0;
+  a38=(a38*a39);
+  a35=arg[3]? arg[3][13] : 0;
+  a35=(a35*a39);
+  a39=casadi_sq(a39);
+  a39=(a50+a39);
+  a39=sqrt(a39);
+  a35=(a35/a39);
+  a38=(a38+a35);
+  a35=(a28*a38);
+  a40=(a40+a35);
+  a35=arg[3]? arg[3][11] : 0;
+  a35=(a35*a49);
+  a39=arg[3]? arg[3][14] : 0;
+  a39=(a39*a49);
+  a49=casadi_sq(a49);
+  a50=(a50+a49);
+  a50=sqrt(a50);
+  a39=(a39/a50);
+  a35=(a35+a39);
+  a39=(a09*a35);
+  a40=(a40+a39);
+  a21=(a21+a40);
+  if (res[0]!=0) res[0][0]=a21;
+  a21=(a14*a20);
+  a17=(a06*a17);
+  a21=(a21-a17);
+  a11=(a21*a11);
+  a17=(a29*a36);
+  a33=(a31*a33);
+  a17=(a17-a33);
+  a28=(a17*a28);
+  a11=(a11+a28);
+  a28=(a01*a41);
+  a37=(a26*a37);
+  a28=(a28-a37);
+  a09=(a28*a09);
+  a11=(a11+a09);
+  a43=(a14*a43);
+  a20=(a06*a20);
+  a43=(a43-a20);
+  a16=(a43*a16);
+  a11=(a11-a16);
+  a45=(a29*a45);
+  a36=(a31*a36);
+  a45=(a45-a36);
+  a32=(a45*a32);
+  a11=(a11-a32);
+  a47=(a01*a47);
+  a41=(a26*a41);
+  a47=(a47-a41);
+  a00=(a47*a00);
+  a11=(a11-a00);
+  a11=(a11*a48);
+  a43=(a43*a14);
+  a21=(a21*a06);
+  a17=(a17*a31);
+  a21=(a21+a17);
+  a28=(a28*a26);
+  a21=(a21+a28);
+  a43=(a43-a21);
+  a45=(a45*a29);
+  a43=(a43+a45);
+  a47=(a47*a01);
+  a43=(a43+a47);
+  a43=(a43*a46);
+  a11=(a11+a43);
+  a14=(a14*a15);
+  a34=(a06*a34);
+  a51=(a31*a51);
+  a34=(a34+a51);
+  a12=(a26*a12);
+  a34=(a34+a12);
+  a14=(a14-a34);
+  a29=(a29*a52);
+  a14=(a14+a29);
+  a01=(a01*a42);
+  a14=(a14+a01);
+  a11=(a11+a14);
+  a06=(a06*a18);
+  a31=(a31*a38);
+  a06=(a06+a31);
+  a26=(a26*a35);
+  a06=(a06+a26);
+  a11=(a11-a06);
+  if (res[0]!=0) res[0][1]=a11;
+  a07=casadi_fabs(a07);
+  a24=casadi_fabs(a24);
+  a11=(a07+a24);
+  a07=(a07-a24);
+  a07=casadi_fabs(a07);
+  a11=(a11-a07);
+  a07=2.;
+  a11=(a11/a07);
+  a23=casadi_fabs(a23);
+  a24=(a11+a23);
+  a11=(a11-a23);
+  a11=casadi_fabs(a11);
+  a24=(a24-a11);
+  a24=(a24/a07);
+  if (res[1]!=0) res[1][0]=a24;
+  a24=5.0000000000000000e-01;
+  a07=3.3333333333333331e-01;
+  a11=casadi_sq(a08);
+  a23=casadi_sq(a13);
+  a11=(a11-a23);
+  a23=casadi_sq(a27);
+  a06=casadi_sq(a03);
+  a23=(a23-a06);
+  a11=(a11+a23);
+  a23=casadi_sq(a02);
+  a06=casadi_sq(a05);
+  a23=(a23-a06);
+  a11=(a11+a23);
+  a11=casadi_sq(a11);
+  a08=(2.*a08);
+  a08=(a08*a13);
+  a27=(2.*a27);
+  a27=(a27*a03);
+  a08=(a08+a27);
+  a02=(2.*a02);
+  a02=(a02*a05);
+  a08=(a08+a02);
+  a08=casadi_sq(a08);
+  a11=(a11+a08);
+  a11=sqrt(a11);
+  a07=(a07*a11);
+  a04=(a04-a07);
+  a07=casadi_fabs(a04);
+  a04=(a04+a07);
+  a24=(a24*a04);
+  a24=sqrt(a24);
+  if (res[1]!=0) res[1][1]=a24;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f57(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_inverse_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_inverse_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_inverse_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_inverse_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_inverse_dynamics_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_inverse_dynamics_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_inverse_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_inverse_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "xedd";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_inverse_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "u";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_inverse_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_inverse_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_inverse_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_inverse_dynamics_jacobians:(xe[2],xed[2],xedd[2],theta[15])->(u[2],d_xe[4],d_xed[4],sing[2]) */
+static int casadi_f58(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
+  casadi_real a120, a121, a122, a123, a124, a125, a126, a127, a128, a129, a130, a131;
+  casadi_real a132, a133, a134, a135, a136, a137, a138, a139, a140, a141, a142, a143;
+  casadi_real a144, a145, a146, a147, a148, a149, a150, a151, a152, a153, a154, a155;
+  casadi_real a156, a157, a158, a159, a160, a161, a162, a163, a164, a165, a166, a167;
+  casadi_real a168, a169, a170, a171, a172, a173, a174, a175, a176, a177, a178, a179;
+  casadi_real a180, a181, a182, a183, a184, a185, a186, a187, a188, a189, a190, a191;
+  casadi_real a192, a193, a194, a195, a196, a197, a198, a199, a200, a201, a202, a203;
+  casadi_real a204, a205, a206, a207, a208, a209, a210, a211, a212, a213, a214, a215;
+  casadi_real a216, a217, a218, a219, a220, a221, a222;
+  a000=2.4399999999999999e-01;
+  a001=2.0491803278688523e+00;
+  a002=arg[0]? arg[0][0] : 0;
+  a003=(a001*a002);
+  a004=1.;
+  a005=-4.1991400161246979e+00;
+  a006=casadi_sq(a002);
+  a007=(a005*a006);
+  a007=(a004+a007);
+  a008=-2.5000000000000000e-01;
+  a009=arg[0]? arg[0][1] : 0;
+  a008=(a008+a009);
+  a010=casadi_sq(a008);
+  a011=(a005*a010);
+  a007=(a007+a011);
+  a007=sqrt(a007);
+  a006=(a006+a010);
+  a006=sqrt(a006);
+  a010=(a007/a006);
+  a010=(a010*a008);
+  a008=(a003-a010);
+  a011=(a000*a008);
+  a012=-2.4399999999999999e-01;
+  a013=-5.1229508196721307e-01;
+  a001=(a001*a009);
+  a013=(a013+a001);
+  a006=(a002/a006);
+  a006=(a006*a007);
+  a007=(a013-a006);
+  a014=(a012*a007);
+  a015=(a014*a011);
+  a013=(a013+a006);
+  a006=(a012*a013);
+  a010=(a003+a010);
+  a016=(a000*a010);
+  a017=(a006*a016);
+  a015=(a015-a017);
+  a017=(a011/a015);
+  a018=arg[3]? arg[3][0] : 0;
+  a019=(a017*a018);
+  a020=(a016/a015);
+  a021=arg[3]? arg[3][3] : 0;
+  a022=(a010*a008);
+  a023=(a007*a013);
+  a022=(a022+a023);
+  a022=(a021*a022);
+  a023=(a020*a022);
+  a019=(a019-a023);
+  a023=(a019*a017);
+  a024=-8.8729508196721307e-01;
+  a024=(a024+a003);
+  a003=casadi_sq(a009);
+  a025=-4.3300000000000000e-01;
+  a025=(a025+a002);
+  a002=casadi_sq(a025);
+  a026=(a003+a002);
+  a026=sqrt(a026);
+  a027=(a009/a026);
+  a003=(a005*a003);
+  a003=(a004+a003);
+  a028=(a005*a002);
+  a003=(a003+a028);
+  a003=sqrt(a003);
+  a027=(a027*a003);
+  a029=(a024-a027);
+  a030=(a000*a029);
+  a003=(a003/a026);
+  a003=(a003*a025);
+  a026=(a001-a003);
+  a031=(a012*a026);
+  a032=(a031*a030);
+  a003=(a001+a003);
+  a033=(a012*a003);
+  a027=(a024+a027);
+  a034=(a000*a027);
+  a035=(a033*a034);
+  a032=(a032-a035);
+  a035=(a030/a032);
+  a036=arg[3]? arg[3][1] : 0;
+  a037=(a035*a036);
+  a038=(a034/a032);
+  a039=arg[3]? arg[3][4] : 0;
+  a040=(a027*a029);
+  a041=(a026*a003);
+  a040=(a040+a041);
+  a040=(a039*a040);
+  a041=(a038*a040);
+  a037=(a037-a041);
+  a041=(a037*a035);
+  a023=(a023+a041);
+  a028=(a004+a028);
+  a041=-5.0000000000000000e-01;
+  a041=(a041+a009);
+  a009=casadi_sq(a041);
+  a005=(a005*a009);
+  a028=(a028+a005);
+  a028=sqrt(a028);
+  a002=(a002+a009);
+  a002=sqrt(a002);
+  a028=(a028/a002);
+  a041=(a028*a041);
+  a002=(a024-a041);
+  a009=(a000*a002);
+  a005=-1.0245901639344261e+00;
+  a005=(a005+a001);
+  a028=(a028*a025);
+  a025=(a005-a028);
+  a001=(a012*a025);
+  a042=(a001*a009);
+  a005=(a005+a028);
+  a028=(a012*a005);
+  a024=(a024+a041);
+  a041=(a000*a024);
+  a043=(a028*a041);
+  a042=(a042-a043);
+  a043=(a009/a042);
+  a044=arg[3]? arg[3][2] : 0;
+  a045=(a043*a044);
+  a046=(a041/a042);
+  a047=arg[3]? arg[3][5] : 0;
+  a048=(a024*a002);
+  a049=(a025*a005);
+  a048=(a048+a049);
+  a048=(a047*a048);
+  a049=(a046*a048);
+  a045=(a045-a049);
+  a049=(a045*a043);
+  a023=(a023+a049);
+  a049=(a017*a022);
+  a050=arg[3]? arg[3][6] : 0;
+  a051=(a020*a050);
+  a049=(a049-a051);
+  a051=(a049*a020);
+  a023=(a023-a051);
+  a051=(a035*a040);
+  a052=arg[3]? arg[3][7] : 0;
+  a053=(a038*a052);
+  a051=(a051-a053);
+  a053=(a051*a038);
+  a023=(a023-a053);
+  a053=(a043*a048);
+  a054=arg[3]? arg[3][8] : 0;
+  a055=(a046*a054);
+  a053=(a053-a055);
+  a055=(a053*a046);
+  a023=(a023-a055);
+  a055=arg[2]? arg[2][0] : 0;
+  a023=(a023*a055);
+  a056=(a014/a015);
+  a057=(a049*a056);
+  a058=(a006/a015);
+  a059=(a019*a058);
+  a060=(a033/a032);
+  a061=(a037*a060);
+  a059=(a059+a061);
+  a061=(a028/a042);
+  a062=(a045*a061);
+  a059=(a059+a062);
+  a057=(a057-a059);
+  a059=(a031/a032);
+  a062=(a051*a059);
+  a057=(a057+a062);
+  a062=(a001/a042);
+  a063=(a053*a062);
+  a057=(a057+a063);
+  a063=arg[2]? arg[2][1] : 0;
+  a057=(a057*a063);
+  a023=(a023+a057);
+  a057=arg[1]? arg[1][0] : 0;
+  a064=(a017*a057);
+  a065=arg[1]? arg[1][1] : 0;
+  a066=(a058*a065);
+  a064=(a064-a066);
+  a066=(a012*a064);
+  a067=(a066*a007);
+  a068=(a067*a064);
+  a069=(a056*a065);
+  a070=(a020*a057);
+  a069=(a069-a070);
+  a070=(a012*a069);
+  a071=(a070*a013);
+  a072=(a071*a069);
+  a068=(a068+a072);
+  a072=(a058*a068);
+  a073=(a066*a010);
+  a074=(a073*a064);
+  a075=(a070*a008);
+  a076=(a075*a069);
+  a074=(a074+a076);
+  a076=(a017*a074);
+  a072=(a072-a076);
+  a076=(a018*a072);
+  a077=(a020*a074);
+  a078=(a056*a068);
+  a077=(a077-a078);
+  a078=(a022*a077);
+  a076=(a076+a078);
+  a078=(a021*a069);
+  a079=(a007*a008);
+  a080=(a010*a013);
+  a079=(a079-a080);
+  a080=(a078*a079);
+  a081=(a080*a069);
+  a076=(a076+a081);
+  a081=(a017*a076);
+  a082=(a035*a057);
+  a083=(a060*a065);
+  a082=(a082-a083);
+  a083=(a012*a082);
+  a084=(a083*a026);
+  a085=(a084*a082);
+  a086=(a059*a065);
+  a087=(a038*a057);
+  a086=(a086-a087);
+  a087=(a012*a086);
+  a088=(a087*a003);
+  a089=(a088*a086);
+  a085=(a085+a089);
+  a089=(a060*a085);
+  a090=(a083*a027);
+  a091=(a090*a082);
+  a092=(a087*a029);
+  a093=(a092*a086);
+  a091=(a091+a093);
+  a093=(a035*a091);
+  a089=(a089-a093);
+  a093=(a036*a089);
+  a094=(a038*a091);
+  a095=(a059*a085);
+  a094=(a094-a095);
+  a095=(a040*a094);
+  a093=(a093+a095);
+  a095=(a039*a086);
+  a096=(a026*a029);
+  a097=(a027*a003);
+  a096=(a096-a097);
+  a097=(a095*a096);
+  a098=(a097*a086);
+  a093=(a093+a098);
+  a098=(a035*a093);
+  a081=(a081+a098);
+  a098=(a043*a057);
+  a099=(a061*a065);
+  a098=(a098-a099);
+  a099=(a012*a098);
+  a100=(a099*a025);
+  a101=(a100*a098);
+  a102=(a062*a065);
+  a103=(a046*a057);
+  a102=(a102-a103);
+  a103=(a012*a102);
+  a104=(a103*a005);
+  a105=(a104*a102);
+  a101=(a101+a105);
+  a105=(a061*a101);
+  a106=(a099*a024);
+  a107=(a106*a098);
+  a108=(a103*a002);
+  a109=(a108*a102);
+  a107=(a107+a109);
+  a109=(a043*a107);
+  a105=(a105-a109);
+  a109=(a044*a105);
+  a110=(a046*a107);
+  a111=(a062*a101);
+  a110=(a110-a111);
+  a111=(a048*a110);
+  a109=(a109+a111);
+  a111=(a047*a102);
+  a112=(a025*a002);
+  a113=(a024*a005);
+  a112=(a112-a113);
+  a113=(a111*a112);
+  a114=(a113*a102);
+  a109=(a109+a114);
+  a114=(a043*a109);
+  a081=(a081+a114);
+  a114=(a022*a072);
+  a115=(a050*a077);
+  a114=(a114+a115);
+  a115=(a021*a064);
+  a116=(a115*a079);
+  a117=(a116*a064);
+  a114=(a114-a117);
+  a117=(a020*a114);
+  a081=(a081-a117);
+  a117=(a040*a089);
+  a118=(a052*a094);
+  a117=(a117+a118);
+  a118=(a039*a082);
+  a119=(a118*a096);
+  a120=(a119*a082);
+  a117=(a117-a120);
+  a120=(a038*a117);
+  a081=(a081-a120);
+  a120=(a048*a105);
+  a121=(a054*a110);
+  a120=(a120+a121);
+  a121=(a047*a098);
+  a122=(a121*a112);
+  a123=(a122*a098);
+  a120=(a120-a123);
+  a123=(a046*a120);
+  a081=(a081-a123);
+  a023=(a023+a081);
+  a081=arg[3]? arg[3][9] : 0;
+  a123=(a081*a064);
+  a124=arg[3]? arg[3][12] : 0;
+  a125=(a124*a064);
+  a126=1.0000000000000000e-04;
+  a127=casadi_sq(a064);
+  a127=(a126+a127);
+  a127=sqrt(a127);
+  a125=(a125/a127);
+  a123=(a123+a125);
+  a128=(a017*a123);
+  a129=arg[3]? arg[3][10] : 0;
+  a130=(a129*a082);
+  a131=arg[3]? arg[3][13] : 0;
+  a132=(a131*a082);
+  a133=casadi_sq(a082);
+  a133=(a126+a133);
+  a133=sqrt(a133);
+  a132=(a132/a133);
+  a130=(a130+a132);
+  a134=(a035*a130);
+  a128=(a128+a134);
+  a134=arg[3]? arg[3][11] : 0;
+  a135=(a134*a098);
+  a136=arg[3]? arg[3][14] : 0;
+  a137=(a136*a098);
+  a138=casadi_sq(a098);
+  a126=(a126+a138);
+  a126=sqrt(a126);
+  a137=(a137/a126);
+  a135=(a135+a137);
+  a138=(a043*a135);
+  a128=(a128+a138);
+  a023=(a023+a128);
+  if (res[0]!=0) res[0][0]=a023;
+  a023=(a056*a022);
+  a128=(a058*a018);
+  a023=(a023-a128);
+  a128=(a023*a017);
+  a138=(a059*a040);
+  a139=(a060*a036);
+  a138=(a138-a139);
+  a139=(a138*a035);
+  a128=(a128+a139);
+  a139=(a062*a048);
+  a140=(a061*a044);
+  a139=(a139-a140);
+  a140=(a139*a043);
+  a128=(a128+a140);
+  a140=(a056*a050);
+  a141=(a058*a022);
+  a140=(a140-a141);
+  a141=(a140*a020);
+  a128=(a128-a141);
+  a141=(a059*a052);
+  a142=(a060*a040);
+  a141=(a141-a142);
+  a142=(a141*a038);
+  a128=(a128-a142);
+  a142=(a062*a054);
+  a143=(a061*a048);
+  a142=(a142-a143);
+  a143=(a142*a046);
+  a128=(a128-a143);
+  a128=(a128*a055);
+  a143=(a140*a056);
+  a144=(a023*a058);
+  a145=(a138*a060);
+  a144=(a144+a145);
+  a145=(a139*a061);
+  a144=(a144+a145);
+  a143=(a143-a144);
+  a144=(a141*a059);
+  a143=(a143+a144);
+  a144=(a142*a062);
+  a143=(a143+a144);
+  a143=(a143*a063);
+  a128=(a128+a143);
+  a143=(a056*a114);
+  a144=(a058*a076);
+  a145=(a060*a093);
+  a144=(a144+a145);
+  a145=(a061*a109);
+  a144=(a144+a145);
+  a143=(a143-a144);
+  a144=(a059*a117);
+  a143=(a143+a144);
+  a144=(a062*a120);
+  a143=(a143+a144);
+  a128=(a128+a143);
+  a143=(a058*a123);
+  a144=(a060*a130);
+  a143=(a143+a144);
+  a144=(a061*a135);
+  a143=(a143+a144);
+  a128=(a128-a143);
+  if (res[0]!=0) res[0][1]=a128;
+  a128=(a064*a020);
+  a143=(a115*a128);
+  a144=(a069*a017);
+  a145=(a078*a144);
+  a143=(a143+a145);
+  a145=(a007*a143);
+  a146=(a022*a017);
+  a147=(a050*a020);
+  a146=(a146-a147);
+  a147=(a020*a146);
+  a148=(a018*a017);
+  a149=(a022*a020);
+  a148=(a148-a149);
+  a149=(a017*a148);
+  a147=(a147-a149);
+  a149=(a069*a147);
+  a150=(a070*a149);
+  a145=(a145+a150);
+  a150=(a077*a017);
+  a151=(a072*a020);
+  a150=(a150-a151);
+  a151=(a056*a063);
+  a152=(a020*a055);
+  a151=(a151-a152);
+  a152=(a017*a151);
+  a150=(a150+a152);
+  a152=(a017*a055);
+  a153=(a058*a063);
+  a152=(a152-a153);
+  a153=(a020*a152);
+  a150=(a150-a153);
+  a150=(a021*a150);
+  a153=(a010*a150);
+  a145=(a145+a153);
+  a153=(a017/a127);
+  a153=(a124*a153);
+  a154=(2.*a064);
+  a125=(a125/a127);
+  a155=(a125*a017);
+  a156=(2.*a127);
+  a155=(a155/a156);
+  a155=(a154*a155);
+  a153=(a153-a155);
+  a155=(a081*a017);
+  a153=(a153+a155);
+  a155=(a057*a153);
+  a155=(a123+a155);
+  a155=(a155+a076);
+  a157=(a074*a148);
+  a155=(a155-a157);
+  a157=(a073*a147);
+  a158=(a058*a148);
+  a159=(a056*a146);
+  a158=(a158-a159);
+  a159=(a067*a158);
+  a157=(a157+a159);
+  a159=(a057*a157);
+  a155=(a155+a159);
+  a159=(a116*a020);
+  a128=(a079*a128);
+  a128=(a021*a128);
+  a159=(a159+a128);
+  a128=(a064*a147);
+  a160=(a010*a128);
+  a160=(a012*a160);
+  a159=(a159+a160);
+  a160=(a064*a158);
+  a161=(a007*a160);
+  a161=(a012*a161);
+  a159=(a159+a161);
+  a161=(a057*a159);
+  a155=(a155+a161);
+  a161=(a022*a151);
+  a155=(a155+a161);
+  a162=(a019*a055);
+  a155=(a155+a162);
+  a162=(a018*a152);
+  a155=(a155+a162);
+  a163=(a155/a015);
+  a164=(a058/a015);
+  a148=(a068*a148);
+  a165=(a065*a153);
+  a148=(a148-a165);
+  a165=(a065*a157);
+  a148=(a148-a165);
+  a165=(a065*a159);
+  a148=(a148-a165);
+  a019=(a019*a063);
+  a148=(a148-a019);
+  a019=(a164*a148);
+  a165=(a056/a015);
+  a147=(a075*a147);
+  a166=(a071*a158);
+  a147=(a147+a166);
+  a166=(a065*a147);
+  a167=(a068*a146);
+  a166=(a166-a167);
+  a167=(a080*a017);
+  a144=(a079*a144);
+  a144=(a021*a144);
+  a167=(a167+a144);
+  a149=(a008*a149);
+  a149=(a012*a149);
+  a167=(a167+a149);
+  a158=(a069*a158);
+  a149=(a013*a158);
+  a149=(a012*a149);
+  a167=(a167+a149);
+  a149=(a065*a167);
+  a166=(a166+a149);
+  a149=(a049*a063);
+  a166=(a166+a149);
+  a149=(a165*a166);
+  a019=(a019+a149);
+  a149=(a020/a015);
+  a146=(a074*a146);
+  a146=(a146-a114);
+  a144=(a057*a147);
+  a146=(a146-a144);
+  a144=(a057*a167);
+  a146=(a146-a144);
+  a049=(a049*a055);
+  a146=(a146-a049);
+  a049=(a050*a151);
+  a146=(a146-a049);
+  a144=(a022*a152);
+  a146=(a146-a144);
+  a168=(a149*a146);
+  a019=(a019+a168);
+  a168=(a017/a015);
+  a155=(a168*a155);
+  a019=(a019+a155);
+  a155=(a014*a019);
+  a163=(a163-a155);
+  a163=(a000*a163);
+  a145=(a145+a163);
+  a163=(a013*a020);
+  a155=(a145*a163);
+  a128=(a066*a128);
+  a169=(a013*a143);
+  a128=(a128-a169);
+  a169=(a008*a150);
+  a128=(a128+a169);
+  a146=(a146/a015);
+  a169=(a006*a019);
+  a146=(a146+a169);
+  a146=(a000*a146);
+  a128=(a128+a146);
+  a146=(a007*a017);
+  a169=(a128*a146);
+  a170=(a040*a035);
+  a171=(a052*a038);
+  a170=(a170-a171);
+  a171=(a038*a170);
+  a172=(a036*a035);
+  a173=(a040*a038);
+  a172=(a172-a173);
+  a173=(a035*a172);
+  a171=(a171-a173);
+  a173=(a082*a171);
+  a174=(a083*a173);
+  a175=(a082*a038);
+  a176=(a118*a175);
+  a177=(a086*a035);
+  a178=(a095*a177);
+  a176=(a176+a178);
+  a178=(a003*a176);
+  a174=(a174-a178);
+  a178=(a094*a035);
+  a179=(a089*a038);
+  a178=(a178-a179);
+  a179=(a059*a063);
+  a180=(a038*a055);
+  a179=(a179-a180);
+  a180=(a035*a179);
+  a178=(a178+a180);
+  a180=(a035*a055);
+  a181=(a060*a063);
+  a180=(a180-a181);
+  a181=(a038*a180);
+  a178=(a178-a181);
+  a178=(a039*a178);
+  a181=(a029*a178);
+  a174=(a174+a181);
+  a181=(a091*a170);
+  a181=(a181-a117);
+  a182=(a092*a171);
+  a183=(a060*a172);
+  a184=(a059*a170);
+  a183=(a183-a184);
+  a184=(a088*a183);
+  a182=(a182+a184);
+  a184=(a057*a182);
+  a181=(a181-a184);
+  a184=(a097*a035);
+  a177=(a096*a177);
+  a177=(a039*a177);
+  a184=(a184+a177);
+  a177=(a086*a171);
+  a185=(a029*a177);
+  a185=(a012*a185);
+  a184=(a184+a185);
+  a185=(a086*a183);
+  a186=(a003*a185);
+  a186=(a012*a186);
+  a184=(a184+a186);
+  a186=(a057*a184);
+  a181=(a181-a186);
+  a186=(a051*a055);
+  a181=(a181-a186);
+  a186=(a052*a179);
+  a181=(a181-a186);
+  a187=(a040*a180);
+  a181=(a181-a187);
+  a188=(a181/a032);
+  a189=(a059/a032);
+  a190=(a065*a182);
+  a170=(a085*a170);
+  a190=(a190-a170);
+  a170=(a065*a184);
+  a190=(a190+a170);
+  a051=(a051*a063);
+  a190=(a190+a051);
+  a051=(a189*a190);
+  a170=(a060/a032);
+  a191=(a085*a172);
+  a192=(a035/a133);
+  a192=(a131*a192);
+  a193=(2.*a082);
+  a132=(a132/a133);
+  a194=(a132*a035);
+  a195=(2.*a133);
+  a194=(a194/a195);
+  a194=(a193*a194);
+  a192=(a192-a194);
+  a194=(a129*a035);
+  a192=(a192+a194);
+  a194=(a065*a192);
+  a191=(a191-a194);
+  a171=(a090*a171);
+  a194=(a084*a183);
+  a171=(a171+a194);
+  a194=(a065*a171);
+  a191=(a191-a194);
+  a194=(a119*a038);
+  a175=(a096*a175);
+  a175=(a039*a175);
+  a194=(a194+a175);
+  a173=(a027*a173);
+  a173=(a012*a173);
+  a194=(a194+a173);
+  a183=(a082*a183);
+  a173=(a026*a183);
+  a173=(a012*a173);
+  a194=(a194+a173);
+  a173=(a065*a194);
+  a191=(a191-a173);
+  a173=(a037*a063);
+  a191=(a191-a173);
+  a173=(a170*a191);
+  a051=(a051+a173);
+  a173=(a038/a032);
+  a181=(a173*a181);
+  a051=(a051+a181);
+  a181=(a035/a032);
+  a175=(a057*a192);
+  a175=(a130+a175);
+  a175=(a175+a093);
+  a172=(a091*a172);
+  a175=(a175-a172);
+  a172=(a057*a171);
+  a175=(a175+a172);
+  a172=(a057*a194);
+  a175=(a175+a172);
+  a172=(a040*a179);
+  a175=(a175+a172);
+  a037=(a037*a055);
+  a175=(a175+a037);
+  a037=(a036*a180);
+  a175=(a175+a037);
+  a196=(a181*a175);
+  a051=(a051+a196);
+  a196=(a033*a051);
+  a188=(a188+a196);
+  a188=(a000*a188);
+  a174=(a174+a188);
+  a188=(a026*a035);
+  a196=(a174*a188);
+  a169=(a169+a196);
+  a196=(a048*a043);
+  a197=(a054*a046);
+  a196=(a196-a197);
+  a197=(a046*a196);
+  a198=(a044*a043);
+  a199=(a048*a046);
+  a198=(a198-a199);
+  a199=(a043*a198);
+  a197=(a197-a199);
+  a199=(a098*a197);
+  a200=(a099*a199);
+  a201=(a098*a046);
+  a202=(a121*a201);
+  a203=(a102*a043);
+  a204=(a111*a203);
+  a202=(a202+a204);
+  a204=(a005*a202);
+  a200=(a200-a204);
+  a204=(a110*a043);
+  a205=(a105*a046);
+  a204=(a204-a205);
+  a205=(a062*a063);
+  a206=(a046*a055);
+  a205=(a205-a206);
+  a206=(a043*a205);
+  a204=(a204+a206);
+  a206=(a043*a055);
+  a207=(a061*a063);
+  a206=(a206-a207);
+  a207=(a046*a206);
+  a204=(a204-a207);
+  a204=(a047*a204);
+  a207=(a002*a204);
+  a200=(a200+a207);
+  a207=(a107*a196);
+  a207=(a207-a120);
+  a208=(a108*a197);
+  a209=(a061*a198);
+  a210=(a062*a196);
+  a209=(a209-a210);
+  a210=(a104*a209);
+  a208=(a208+a210);
+  a210=(a057*a208);
+  a207=(a207-a210);
+  a210=(a113*a043);
+  a203=(a112*a203);
+  a203=(a047*a203);
+  a210=(a210+a203);
+  a203=(a102*a197);
+  a211=(a002*a203);
+  a211=(a012*a211);
+  a210=(a210+a211);
+  a211=(a102*a209);
+  a212=(a005*a211);
+  a212=(a012*a212);
+  a210=(a210+a212);
+  a212=(a057*a210);
+  a207=(a207-a212);
+  a212=(a053*a055);
+  a207=(a207-a212);
+  a212=(a054*a205);
+  a207=(a207-a212);
+  a213=(a048*a206);
+  a207=(a207-a213);
+  a214=(a207/a042);
+  a215=(a062/a042);
+  a216=(a065*a208);
+  a196=(a101*a196);
+  a216=(a216-a196);
+  a196=(a065*a210);
+  a216=(a216+a196);
+  a053=(a053*a063);
+  a216=(a216+a053);
+  a053=(a215*a216);
+  a196=(a061/a042);
+  a217=(a101*a198);
+  a218=(a043/a126);
+  a218=(a136*a218);
+  a219=(2.*a098);
+  a137=(a137/a126);
+  a220=(a137*a043);
+  a221=(2.*a126);
+  a220=(a220/a221);
+  a220=(a219*a220);
+  a218=(a218-a220);
+  a220=(a134*a043);
+  a218=(a218+a220);
+  a220=(a065*a218);
+  a217=(a217-a220);
+  a197=(a106*a197);
+  a220=(a100*a209);
+  a197=(a197+a220);
+  a220=(a065*a197);
+  a217=(a217-a220);
+  a220=(a122*a046);
+  a201=(a112*a201);
+  a201=(a047*a201);
+  a220=(a220+a201);
+  a199=(a024*a199);
+  a199=(a012*a199);
+  a220=(a220+a199);
+  a209=(a098*a209);
+  a199=(a025*a209);
+  a199=(a012*a199);
+  a220=(a220+a199);
+  a199=(a065*a220);
+  a217=(a217-a199);
+  a199=(a045*a063);
+  a217=(a217-a199);
+  a199=(a196*a217);
+  a053=(a053+a199);
+  a199=(a046/a042);
+  a207=(a199*a207);
+  a053=(a053+a207);
+  a207=(a043/a042);
+  a201=(a057*a218);
+  a201=(a135+a201);
+  a201=(a201+a109);
+  a198=(a107*a198);
+  a201=(a201-a198);
+  a198=(a057*a197);
+  a201=(a201+a198);
+  a198=(a057*a220);
+  a201=(a201+a198);
+  a198=(a048*a205);
+  a201=(a201+a198);
+  a045=(a045*a055);
+  a201=(a201+a045);
+  a045=(a044*a206);
+  a201=(a201+a045);
+  a222=(a207*a201);
+  a053=(a053+a222);
+  a222=(a028*a053);
+  a214=(a214+a222);
+  a214=(a000*a214);
+  a200=(a200+a214);
+  a214=(a025*a043);
+  a222=(a200*a214);
+  a169=(a169+a222);
+  a155=(a155-a169);
+  a169=(a026*a176);
+  a177=(a087*a177);
+  a169=(a169+a177);
+  a177=(a027*a178);
+  a169=(a169+a177);
+  a175=(a175/a032);
+  a177=(a031*a051);
+  a175=(a175-a177);
+  a175=(a000*a175);
+  a169=(a169+a175);
+  a175=(a003*a038);
+  a177=(a169*a175);
+  a155=(a155+a177);
+  a177=(a025*a202);
+  a203=(a103*a203);
+  a177=(a177+a203);
+  a203=(a024*a204);
+  a177=(a177+a203);
+  a201=(a201/a042);
+  a203=(a001*a053);
+  a201=(a201-a203);
+  a201=(a000*a201);
+  a177=(a177+a201);
+  a201=(a005*a046);
+  a203=(a177*a201);
+  a155=(a155+a203);
+  a203=(a008*a143);
+  a160=(a066*a160);
+  a203=(a203+a160);
+  a160=(a013*a150);
+  a203=(a203+a160);
+  a166=(a166/a015);
+  a160=(a011*a019);
+  a166=(a166-a160);
+  a166=(a012*a166);
+  a203=(a203+a166);
+  a166=(a010*a017);
+  a160=(a203*a166);
+  a222=(a029*a176);
+  a183=(a083*a183);
+  a222=(a222+a183);
+  a183=(a003*a178);
+  a222=(a222+a183);
+  a190=(a190/a032);
+  a183=(a030*a051);
+  a190=(a190-a183);
+  a190=(a012*a190);
+  a222=(a222+a190);
+  a190=(a027*a035);
+  a183=(a222*a190);
+  a160=(a160+a183);
+  a183=(a002*a202);
+  a209=(a099*a209);
+  a183=(a183+a209);
+  a209=(a005*a204);
+  a183=(a183+a209);
+  a216=(a216/a042);
+  a209=(a009*a053);
+  a216=(a216-a209);
+  a216=(a012*a216);
+  a183=(a183+a216);
+  a216=(a024*a043);
+  a209=(a183*a216);
+  a160=(a160+a209);
+  a158=(a070*a158);
+  a143=(a010*a143);
+  a158=(a158-a143);
+  a150=(a007*a150);
+  a158=(a158+a150);
+  a148=(a148/a015);
+  a019=(a016*a019);
+  a148=(a148+a019);
+  a148=(a012*a148);
+  a158=(a158+a148);
+  a148=(a008*a020);
+  a019=(a158*a148);
+  a160=(a160-a019);
+  a185=(a087*a185);
+  a176=(a027*a176);
+  a185=(a185-a176);
+  a178=(a026*a178);
+  a185=(a185+a178);
+  a191=(a191/a032);
+  a051=(a034*a051);
+  a191=(a191+a051);
+  a191=(a012*a191);
+  a185=(a185+a191);
+  a191=(a029*a038);
+  a051=(a185*a191);
+  a160=(a160-a051);
+  a211=(a103*a211);
+  a202=(a024*a202);
+  a211=(a211-a202);
+  a204=(a025*a204);
+  a211=(a211+a204);
+  a217=(a217/a042);
+  a053=(a041*a053);
+  a217=(a217+a053);
+  a217=(a012*a217);
+  a211=(a211+a217);
+  a217=(a002*a046);
+  a053=(a211*a217);
+  a160=(a160-a053);
+  a155=(a155+a160);
+  if (res[1]!=0) res[1][0]=a155;
+  a155=(a007*a058);
+  a128=(a128*a155);
+  a160=(a026*a060);
+  a174=(a174*a160);
+  a128=(a128+a174);
+  a174=(a025*a061);
+  a200=(a200*a174);
+  a128=(a128+a200);
+  a200=(a013*a056);
+  a145=(a145*a200);
+  a128=(a128-a145);
+  a145=(a003*a059);
+  a169=(a169*a145);
+  a128=(a128-a169);
+  a169=(a005*a062);
+  a177=(a177*a169);
+  a128=(a128-a177);
+  a177=(a008*a056);
+  a158=(a158*a177);
+  a053=(a010*a058);
+  a203=(a203*a053);
+  a204=(a027*a060);
+  a222=(a222*a204);
+  a203=(a203+a222);
+  a222=(a024*a061);
+  a183=(a183*a222);
+  a203=(a203+a183);
+  a158=(a158-a203);
+  a203=(a029*a059);
+  a185=(a185*a203);
+  a158=(a158+a185);
+  a185=(a002*a062);
+  a211=(a211*a185);
+  a158=(a158+a211);
+  a128=(a128+a158);
+  if (res[1]!=0) res[1][1]=a128;
+  a050=(a050*a056);
+  a128=(a022*a058);
+  a050=(a050-a128);
+  a128=(a020*a050);
+  a022=(a022*a056);
+  a018=(a018*a058);
+  a022=(a022-a018);
+  a018=(a017*a022);
+  a128=(a128-a018);
+  a018=(a069*a128);
+  a158=(a070*a018);
+  a211=(a064*a056);
+  a115=(a115*a211);
+  a183=(a069*a058);
+  a078=(a078*a183);
+  a115=(a115+a078);
+  a078=(a007*a115);
+  a158=(a158-a078);
+  a152=(a056*a152);
+  a151=(a058*a151);
+  a152=(a152-a151);
+  a072=(a072*a056);
+  a152=(a152+a072);
+  a077=(a077*a058);
+  a152=(a152-a077);
+  a152=(a021*a152);
+  a077=(a010*a152);
+  a158=(a158+a077);
+  a077=(a023*a055);
+  a125=(a125*a058);
+  a125=(a125/a156);
+  a154=(a154*a125);
+  a127=(a058/a127);
+  a124=(a124*a127);
+  a154=(a154-a124);
+  a081=(a081*a058);
+  a154=(a154-a081);
+  a081=(a057*a154);
+  a077=(a077+a081);
+  a081=(a074*a022);
+  a077=(a077-a081);
+  a073=(a073*a128);
+  a081=(a058*a022);
+  a124=(a056*a050);
+  a081=(a081-a124);
+  a067=(a067*a081);
+  a073=(a073+a067);
+  a067=(a057*a073);
+  a077=(a077+a067);
+  a067=(a064*a128);
+  a124=(a010*a067);
+  a124=(a012*a124);
+  a116=(a116*a056);
+  a211=(a079*a211);
+  a211=(a021*a211);
+  a116=(a116+a211);
+  a124=(a124-a116);
+  a064=(a064*a081);
+  a116=(a007*a064);
+  a116=(a012*a116);
+  a124=(a124+a116);
+  a116=(a057*a124);
+  a077=(a077+a116);
+  a116=(a077/a015);
+  a022=(a068*a022);
+  a123=(a123+a076);
+  a023=(a023*a063);
+  a123=(a123+a023);
+  a123=(a123+a161);
+  a123=(a123+a162);
+  a162=(a065*a154);
+  a123=(a123+a162);
+  a022=(a022-a123);
+  a123=(a065*a073);
+  a022=(a022-a123);
+  a123=(a065*a124);
+  a022=(a022-a123);
+  a164=(a164*a022);
+  a123=(a140*a063);
+  a114=(a114+a123);
+  a114=(a114+a049);
+  a114=(a114+a144);
+  a068=(a068*a050);
+  a114=(a114-a068);
+  a075=(a075*a128);
+  a071=(a071*a081);
+  a075=(a075+a071);
+  a071=(a065*a075);
+  a114=(a114+a071);
+  a018=(a008*a018);
+  a018=(a012*a018);
+  a080=(a080*a058);
+  a183=(a079*a183);
+  a021=(a021*a183);
+  a080=(a080+a021);
+  a018=(a018-a080);
+  a069=(a069*a081);
+  a081=(a013*a069);
+  a081=(a012*a081);
+  a018=(a018+a081);
+  a081=(a065*a018);
+  a114=(a114+a081);
+  a165=(a165*a114);
+  a164=(a164+a165);
+  a074=(a074*a050);
+  a140=(a140*a055);
+  a074=(a074-a140);
+  a140=(a057*a075);
+  a074=(a074-a140);
+  a140=(a057*a018);
+  a074=(a074-a140);
+  a149=(a149*a074);
+  a164=(a164+a149);
+  a168=(a168*a077);
+  a164=(a164+a168);
+  a014=(a014*a164);
+  a116=(a116-a014);
+  a116=(a000*a116);
+  a158=(a158+a116);
+  a163=(a158*a163);
+  a116=(a013*a115);
+  a067=(a066*a067);
+  a116=(a116+a067);
+  a067=(a008*a152);
+  a116=(a116+a067);
+  a074=(a074/a015);
+  a006=(a006*a164);
+  a074=(a074+a006);
+  a074=(a000*a074);
+  a116=(a116+a074);
+  a146=(a116*a146);
+  a074=(a082*a059);
+  a118=(a118*a074);
+  a006=(a086*a060);
+  a095=(a095*a006);
+  a118=(a118+a095);
+  a095=(a003*a118);
+  a052=(a052*a059);
+  a067=(a040*a060);
+  a052=(a052-a067);
+  a067=(a038*a052);
+  a040=(a040*a059);
+  a036=(a036*a060);
+  a040=(a040-a036);
+  a036=(a035*a040);
+  a067=(a067-a036);
+  a036=(a082*a067);
+  a014=(a083*a036);
+  a095=(a095+a014);
+  a180=(a059*a180);
+  a179=(a060*a179);
+  a180=(a180-a179);
+  a089=(a089*a059);
+  a180=(a180+a089);
+  a094=(a094*a060);
+  a180=(a180-a094);
+  a180=(a039*a180);
+  a094=(a029*a180);
+  a095=(a095+a094);
+  a094=(a091*a052);
+  a089=(a141*a055);
+  a094=(a094-a089);
+  a092=(a092*a067);
+  a089=(a060*a040);
+  a179=(a059*a052);
+  a089=(a089-a179);
+  a088=(a088*a089);
+  a092=(a092+a088);
+  a088=(a057*a092);
+  a094=(a094-a088);
+  a088=(a086*a067);
+  a179=(a029*a088);
+  a179=(a012*a179);
+  a097=(a097*a060);
+  a006=(a096*a006);
+  a006=(a039*a006);
+  a097=(a097+a006);
+  a179=(a179-a097);
+  a086=(a086*a089);
+  a097=(a003*a086);
+  a097=(a012*a097);
+  a179=(a179+a097);
+  a097=(a057*a179);
+  a094=(a094-a097);
+  a097=(a094/a032);
+  a141=(a141*a063);
+  a117=(a117+a141);
+  a117=(a117+a186);
+  a117=(a117+a187);
+  a052=(a085*a052);
+  a117=(a117-a052);
+  a052=(a065*a092);
+  a117=(a117+a052);
+  a052=(a065*a179);
+  a117=(a117+a052);
+  a189=(a189*a117);
+  a085=(a085*a040);
+  a130=(a130+a093);
+  a093=(a138*a063);
+  a130=(a130+a093);
+  a130=(a130+a172);
+  a130=(a130+a037);
+  a132=(a132*a060);
+  a132=(a132/a195);
+  a193=(a193*a132);
+  a133=(a060/a133);
+  a131=(a131*a133);
+  a193=(a193-a131);
+  a129=(a129*a060);
+  a193=(a193-a129);
+  a129=(a065*a193);
+  a130=(a130+a129);
+  a085=(a085-a130);
+  a090=(a090*a067);
+  a084=(a084*a089);
+  a090=(a090+a084);
+  a084=(a065*a090);
+  a085=(a085-a084);
+  a036=(a027*a036);
+  a036=(a012*a036);
+  a119=(a119*a059);
+  a074=(a096*a074);
+  a039=(a039*a074);
+  a119=(a119+a039);
+  a036=(a036-a119);
+  a082=(a082*a089);
+  a089=(a026*a082);
+  a089=(a012*a089);
+  a036=(a036+a089);
+  a089=(a065*a036);
+  a085=(a085-a089);
+  a170=(a170*a085);
+  a189=(a189+a170);
+  a173=(a173*a094);
+  a189=(a189+a173);
+  a138=(a138*a055);
+  a173=(a057*a193);
+  a138=(a138+a173);
+  a091=(a091*a040);
+  a138=(a138-a091);
+  a091=(a057*a090);
+  a138=(a138+a091);
+  a091=(a057*a036);
+  a138=(a138+a091);
+  a181=(a181*a138);
+  a189=(a189+a181);
+  a033=(a033*a189);
+  a097=(a097+a033);
+  a097=(a000*a097);
+  a095=(a095+a097);
+  a188=(a095*a188);
+  a146=(a146+a188);
+  a188=(a098*a062);
+  a121=(a121*a188);
+  a097=(a102*a061);
+  a111=(a111*a097);
+  a121=(a121+a111);
+  a111=(a005*a121);
+  a054=(a054*a062);
+  a033=(a048*a061);
+  a054=(a054-a033);
+  a033=(a046*a054);
+  a048=(a048*a062);
+  a044=(a044*a061);
+  a048=(a048-a044);
+  a044=(a043*a048);
+  a033=(a033-a044);
+  a044=(a098*a033);
+  a181=(a099*a044);
+  a111=(a111+a181);
+  a206=(a062*a206);
+  a205=(a061*a205);
+  a206=(a206-a205);
+  a105=(a105*a062);
+  a206=(a206+a105);
+  a110=(a110*a061);
+  a206=(a206-a110);
+  a206=(a047*a206);
+  a110=(a002*a206);
+  a111=(a111+a110);
+  a110=(a107*a054);
+  a105=(a142*a055);
+  a110=(a110-a105);
+  a108=(a108*a033);
+  a105=(a061*a048);
+  a205=(a062*a054);
+  a105=(a105-a205);
+  a104=(a104*a105);
+  a108=(a108+a104);
+  a104=(a057*a108);
+  a110=(a110-a104);
+  a104=(a102*a033);
+  a205=(a002*a104);
+  a205=(a012*a205);
+  a113=(a113*a061);
+  a097=(a112*a097);
+  a097=(a047*a097);
+  a113=(a113+a097);
+  a205=(a205-a113);
+  a102=(a102*a105);
+  a113=(a005*a102);
+  a113=(a012*a113);
+  a205=(a205+a113);
+  a113=(a057*a205);
+  a110=(a110-a113);
+  a113=(a110/a042);
+  a142=(a142*a063);
+  a120=(a120+a142);
+  a120=(a120+a212);
+  a120=(a120+a213);
+  a054=(a101*a054);
+  a120=(a120-a054);
+  a054=(a065*a108);
+  a120=(a120+a054);
+  a054=(a065*a205);
+  a120=(a120+a054);
+  a215=(a215*a120);
+  a101=(a101*a048);
+  a135=(a135+a109);
+  a063=(a139*a063);
+  a135=(a135+a063);
+  a135=(a135+a198);
+  a135=(a135+a045);
+  a137=(a137*a061);
+  a137=(a137/a221);
+  a219=(a219*a137);
+  a126=(a061/a126);
+  a136=(a136*a126);
+  a219=(a219-a136);
+  a134=(a134*a061);
+  a219=(a219-a134);
+  a134=(a065*a219);
+  a135=(a135+a134);
+  a101=(a101-a135);
+  a106=(a106*a033);
+  a100=(a100*a105);
+  a106=(a106+a100);
+  a100=(a065*a106);
+  a101=(a101-a100);
+  a044=(a024*a044);
+  a044=(a012*a044);
+  a122=(a122*a062);
+  a188=(a112*a188);
+  a047=(a047*a188);
+  a122=(a122+a047);
+  a044=(a044-a122);
+  a098=(a098*a105);
+  a105=(a025*a098);
+  a105=(a012*a105);
+  a044=(a044+a105);
+  a065=(a065*a044);
+  a101=(a101-a065);
+  a196=(a196*a101);
+  a215=(a215+a196);
+  a199=(a199*a110);
+  a215=(a215+a199);
+  a139=(a139*a055);
+  a055=(a057*a219);
+  a139=(a139+a055);
+  a107=(a107*a048);
+  a139=(a139-a107);
+  a107=(a057*a106);
+  a139=(a139+a107);
+  a057=(a057*a044);
+  a139=(a139+a057);
+  a207=(a207*a139);
+  a215=(a215+a207);
+  a028=(a028*a215);
+  a113=(a113+a028);
+  a113=(a000*a113);
+  a111=(a111+a113);
+  a214=(a111*a214);
+  a146=(a146+a214);
+  a163=(a163-a146);
+  a088=(a087*a088);
+  a146=(a026*a118);
+  a088=(a088-a146);
+  a146=(a027*a180);
+  a088=(a088+a146);
+  a138=(a138/a032);
+  a031=(a031*a189);
+  a138=(a138-a031);
+  a138=(a000*a138);
+  a088=(a088+a138);
+  a175=(a088*a175);
+  a163=(a163+a175);
+  a104=(a103*a104);
+  a175=(a025*a121);
+  a104=(a104-a175);
+  a175=(a024*a206);
+  a104=(a104+a175);
+  a139=(a139/a042);
+  a001=(a001*a215);
+  a139=(a139-a001);
+  a000=(a000*a139);
+  a104=(a104+a000);
+  a201=(a104*a201);
+  a163=(a163+a201);
+  a066=(a066*a064);
+  a064=(a008*a115);
+  a066=(a066-a064);
+  a064=(a013*a152);
+  a066=(a066+a064);
+  a114=(a114/a015);
+  a011=(a011*a164);
+  a114=(a114-a011);
+  a114=(a012*a114);
+  a066=(a066+a114);
+  a166=(a066*a166);
+  a083=(a083*a082);
+  a082=(a029*a118);
+  a083=(a083-a082);
+  a082=(a003*a180);
+  a083=(a083+a082);
+  a117=(a117/a032);
+  a030=(a030*a189);
+  a117=(a117-a030);
+  a117=(a012*a117);
+  a083=(a083+a117);
+  a190=(a083*a190);
+  a166=(a166+a190);
+  a099=(a099*a098);
+  a098=(a002*a121);
+  a099=(a099-a098);
+  a098=(a005*a206);
+  a099=(a099+a098);
+  a120=(a120/a042);
+  a009=(a009*a215);
+  a120=(a120-a009);
+  a120=(a012*a120);
+  a099=(a099+a120);
+  a216=(a099*a216);
+  a166=(a166+a216);
+  a010=(a010*a115);
+  a070=(a070*a069);
+  a010=(a010+a070);
+  a007=(a007*a152);
+  a010=(a010+a007);
+  a022=(a022/a015);
+  a016=(a016*a164);
+  a022=(a022+a016);
+  a022=(a012*a022);
+  a010=(a010+a022);
+  a148=(a010*a148);
+  a166=(a166-a148);
+  a027=(a027*a118);
+  a087=(a087*a086);
+  a027=(a027+a087);
+  a026=(a026*a180);
+  a027=(a027+a026);
+  a085=(a085/a032);
+  a034=(a034*a189);
+  a085=(a085+a034);
+  a085=(a012*a085);
+  a027=(a027+a085);
+  a191=(a027*a191);
+  a166=(a166-a191);
+  a024=(a024*a121);
+  a103=(a103*a102);
+  a024=(a024+a103);
+  a025=(a025*a206);
+  a024=(a024+a025);
+  a101=(a101/a042);
+  a041=(a041*a215);
+  a101=(a101+a041);
+  a012=(a012*a101);
+  a024=(a024+a012);
+  a217=(a024*a217);
+  a166=(a166-a217);
+  a163=(a163+a166);
+  if (res[1]!=0) res[1][2]=a163;
+  a116=(a116*a155);
+  a095=(a095*a160);
+  a116=(a116+a095);
+  a111=(a111*a174);
+  a116=(a116+a111);
+  a158=(a158*a200);
+  a116=(a116-a158);
+  a088=(a088*a145);
+  a116=(a116-a088);
+  a104=(a104*a169);
+  a116=(a116-a104);
+  a010=(a010*a177);
+  a066=(a066*a053);
+  a083=(a083*a204);
+  a066=(a066+a083);
+  a099=(a099*a222);
+  a066=(a066+a099);
+  a010=(a010-a066);
+  a027=(a027*a203);
+  a010=(a010+a027);
+  a024=(a024*a185);
+  a010=(a010+a024);
+  a116=(a116+a010);
+  if (res[1]!=0) res[1][3]=a116;
+  a116=(a043*a218);
+  a010=(a035*a192);
+  a116=(a116+a010);
+  a010=(a017*a153);
+  a116=(a116+a010);
+  a010=(a046*a208);
+  a116=(a116-a010);
+  a010=(a046*a210);
+  a116=(a116-a010);
+  a010=(a043*a197);
+  a116=(a116+a010);
+  a010=(a043*a220);
+  a116=(a116+a010);
+  a010=(a038*a182);
+  a116=(a116-a010);
+  a010=(a038*a184);
+  a116=(a116-a010);
+  a010=(a035*a171);
+  a116=(a116+a010);
+  a010=(a035*a194);
+  a116=(a116+a010);
+  a010=(a020*a147);
+  a116=(a116-a010);
+  a010=(a020*a167);
+  a116=(a116-a010);
+  a010=(a017*a157);
+  a116=(a116+a010);
+  a010=(a017*a159);
+  a116=(a116+a010);
+  if (res[2]!=0) res[2][0]=a116;
+  a208=(a062*a208);
+  a218=(a061*a218);
+  a192=(a060*a192);
+  a218=(a218+a192);
+  a153=(a058*a153);
+  a218=(a218+a153);
+  a208=(a208-a218);
+  a210=(a062*a210);
+  a208=(a208+a210);
+  a197=(a061*a197);
+  a208=(a208-a197);
+  a220=(a061*a220);
+  a208=(a208-a220);
+  a182=(a059*a182);
+  a208=(a208+a182);
+  a184=(a059*a184);
+  a208=(a208+a184);
+  a171=(a060*a171);
+  a208=(a208-a171);
+  a194=(a060*a194);
+  a208=(a208-a194);
+  a147=(a056*a147);
+  a208=(a208+a147);
+  a167=(a056*a167);
+  a208=(a208+a167);
+  a157=(a058*a157);
+  a208=(a208-a157);
+  a159=(a058*a159);
+  a208=(a208-a159);
+  if (res[2]!=0) res[2][1]=a208;
+  a208=(a043*a219);
+  a159=(a035*a193);
+  a208=(a208+a159);
+  a159=(a017*a154);
+  a208=(a208+a159);
+  a159=(a046*a108);
+  a208=(a208-a159);
+  a046=(a046*a205);
+  a208=(a208-a046);
+  a046=(a043*a106);
+  a208=(a208+a046);
+  a043=(a043*a044);
+  a208=(a208+a043);
+  a043=(a038*a092);
+  a208=(a208-a043);
+  a038=(a038*a179);
+  a208=(a208-a038);
+  a038=(a035*a090);
+  a208=(a208+a038);
+  a035=(a035*a036);
+  a208=(a208+a035);
+  a035=(a020*a075);
+  a208=(a208-a035);
+  a020=(a020*a018);
+  a208=(a208-a020);
+  a020=(a017*a073);
+  a208=(a208+a020);
+  a017=(a017*a124);
+  a208=(a208+a017);
+  if (res[2]!=0) res[2][2]=a208;
+  a108=(a062*a108);
+  a219=(a061*a219);
+  a193=(a060*a193);
+  a219=(a219+a193);
+  a154=(a058*a154);
+  a219=(a219+a154);
+  a108=(a108-a219);
+  a062=(a062*a205);
+  a108=(a108+a062);
+  a106=(a061*a106);
+  a108=(a108-a106);
+  a061=(a061*a044);
+  a108=(a108-a061);
+  a092=(a059*a092);
+  a108=(a108+a092);
+  a059=(a059*a179);
+  a108=(a108+a059);
+  a090=(a060*a090);
+  a108=(a108-a090);
+  a060=(a060*a036);
+  a108=(a108-a060);
+  a075=(a056*a075);
+  a108=(a108+a075);
+  a056=(a056*a018);
+  a108=(a108+a056);
+  a073=(a058*a073);
+  a108=(a108-a073);
+  a058=(a058*a124);
+  a108=(a108-a058);
+  if (res[2]!=0) res[2][3]=a108;
+  a079=casadi_fabs(a079);
+  a096=casadi_fabs(a096);
+  a108=(a079+a096);
+  a079=(a079-a096);
+  a079=casadi_fabs(a079);
+  a108=(a108-a079);
+  a079=2.;
+  a108=(a108/a079);
+  a112=casadi_fabs(a112);
+  a096=(a108+a112);
+  a108=(a108-a112);
+  a108=casadi_fabs(a108);
+  a096=(a096-a108);
+  a096=(a096/a079);
+  if (res[3]!=0) res[3][0]=a096;
+  a096=5.0000000000000000e-01;
+  a079=3.3333333333333331e-01;
+  a108=casadi_sq(a008);
+  a112=casadi_sq(a013);
+  a108=(a108-a112);
+  a112=casadi_sq(a029);
+  a058=casadi_sq(a003);
+  a112=(a112-a058);
+  a108=(a108+a112);
+  a112=casadi_sq(a002);
+  a058=casadi_sq(a005);
+  a112=(a112-a058);
+  a108=(a108+a112);
+  a108=casadi_sq(a108);
+  a008=(2.*a008);
+  a008=(a008*a013);
+  a029=(2.*a029);
+  a029=(a029*a003);
+  a008=(a008+a029);
+  a002=(2.*a002);
+  a002=(a002*a005);
+  a008=(a008+a002);
+  a008=casadi_sq(a008);
+  a108=(a108+a008);
+  a108=sqrt(a108);
+  a079=(a079*a108);
+  a004=(a004-a079);
+  a079=casadi_fabs(a004);
+  a004=(a004+a079);
+  a096=(a096*a004);
+  a096=sqrt(a096);
+  if (res[3]!=0) res[3][1]=a096;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f58(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_inverse_dynamics_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_inverse_dynamics_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_inverse_dynamics_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_inverse_dynamics_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_inverse_dynamics_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_inverse_dynamics_jacobians_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_inverse_dynamics_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_inverse_dynamics_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "xedd";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_inverse_dynamics_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "u";
+    case 1: return "d_xe";
+    case 2: return "d_xed";
+    case 3: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_inverse_dynamics_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_inverse_dynamics_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s3;
+    case 2: return casadi_s3;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_inverse_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_inverse_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_sampled_step_xedd:(xe[2],xed[2],tau_a[3],theta[15])->(xedd[2],sing[2]) */
+static int casadi_f60(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61;
+  a00=-2.4399999999999999e-01;
+  a01=-5.1229508196721307e-01;
+  a02=2.0491803278688523e+00;
+  a03=arg[0]? arg[0][1] : 0;
+  a04=(a02*a03);
+  a01=(a01+a04);
+  a05=arg[0]? arg[0][0] : 0;
+  a06=casadi_sq(a05);
+  a07=-2.5000000000000000e-01;
+  a07=(a07+a03);
+  a08=casadi_sq(a07);
+  a09=(a06+a08);
+  a09=sqrt(a09);
+  a10=(a05/a09);
+  a11=1.;
+  a12=-4.1991400161246979e+00;
+  a06=(a12*a06);
+  a06=(a11+a06);
+  a08=(a12*a08);
+  a06=(a06+a08);
+  a06=sqrt(a06);
+  a10=(a10*a06);
+  a08=(a01-a10);
+  a13=(a00*a08);
+  a14=2.4399999999999999e-01;
+  a02=(a02*a05);
+  a06=(a06/a09);
+  a06=(a06*a07);
+  a07=(a02-a06);
+  a09=(a14*a07);
+  a15=(a13*a09);
+  a01=(a01+a10);
+  a10=(a00*a01);
+  a06=(a02+a06);
+  a16=(a14*a06);
+  a17=(a10*a16);
+  a15=(a15-a17);
+  a13=(a13/a15);
+  a17=arg[3]? arg[3][6] : 0;
+  a18=(a13*a17);
+  a10=(a10/a15);
+  a19=arg[3]? arg[3][3] : 0;
+  a20=(a06*a07);
+  a21=(a08*a01);
+  a20=(a20+a21);
+  a20=(a19*a20);
+  a21=(a10*a20);
+  a18=(a18-a21);
+  a21=(a18*a13);
+  a22=(a13*a20);
+  a23=arg[3]? arg[3][0] : 0;
+  a24=(a10*a23);
+  a22=(a22-a24);
+  a24=(a22*a10);
+  a25=casadi_sq(a03);
+  a26=(a12*a25);
+  a26=(a11+a26);
+  a27=-4.3300000000000000e-01;
+  a27=(a27+a05);
+  a05=casadi_sq(a27);
+  a28=(a12*a05);
+  a26=(a26+a28);
+  a26=sqrt(a26);
+  a25=(a25+a05);
+  a25=sqrt(a25);
+  a29=(a26/a25);
+  a29=(a29*a27);
+  a30=(a04-a29);
+  a31=(a00*a30);
+  a32=-8.8729508196721307e-01;
+  a32=(a32+a02);
+  a25=(a03/a25);
+  a25=(a25*a26);
+  a26=(a32-a25);
+  a02=(a14*a26);
+  a33=(a31*a02);
+  a29=(a04+a29);
+  a34=(a00*a29);
+  a25=(a32+a25);
+  a35=(a14*a25);
+  a36=(a34*a35);
+  a33=(a33-a36);
+  a31=(a31/a33);
+  a36=arg[3]? arg[3][4] : 0;
+  a37=(a25*a26);
+  a38=(a30*a29);
+  a37=(a37+a38);
+  a37=(a36*a37);
+  a38=(a31*a37);
+  a34=(a34/a33);
+  a39=arg[3]? arg[3][1] : 0;
+  a40=(a34*a39);
+  a38=(a38-a40);
+  a40=(a38*a34);
+  a24=(a24+a40);
+  a40=-1.0245901639344261e+00;
+  a40=(a40+a04);
+  a28=(a11+a28);
+  a04=-5.0000000000000000e-01;
+  a04=(a04+a03);
+  a03=casadi_sq(a04);
+  a12=(a12*a03);
+  a28=(a28+a12);
+  a28=sqrt(a28);
+  a05=(a05+a03);
+  a05=sqrt(a05);
+  a28=(a28/a05);
+  a27=(a28*a27);
+  a05=(a40-a27);
+  a03=(a00*a05);
+  a28=(a28*a04);
+  a04=(a32-a28);
+  a12=(a14*a04);
+  a41=(a03*a12);
+  a40=(a40+a27);
+  a27=(a00*a40);
+  a32=(a32+a28);
+  a14=(a14*a32);
+  a28=(a27*a14);
+  a41=(a41-a28);
+  a03=(a03/a41);
+  a28=arg[3]? arg[3][5] : 0;
+  a42=(a32*a04);
+  a43=(a05*a40);
+  a42=(a42+a43);
+  a42=(a28*a42);
+  a43=(a03*a42);
+  a27=(a27/a41);
+  a44=arg[3]? arg[3][2] : 0;
+  a45=(a27*a44);
+  a43=(a43-a45);
+  a45=(a43*a27);
+  a24=(a24+a45);
+  a21=(a21-a24);
+  a24=arg[3]? arg[3][7] : 0;
+  a45=(a31*a24);
+  a46=(a34*a37);
+  a45=(a45-a46);
+  a46=(a45*a31);
+  a21=(a21+a46);
+  a46=arg[3]? arg[3][8] : 0;
+  a47=(a03*a46);
+  a48=(a27*a42);
+  a47=(a47-a48);
+  a48=(a47*a03);
+  a21=(a21+a48);
+  a09=(a09/a15);
+  a48=arg[2]? arg[2][0] : 0;
+  a49=(a09*a48);
+  a02=(a02/a33);
+  a50=arg[2]? arg[2][1] : 0;
+  a51=(a02*a50);
+  a49=(a49+a51);
+  a12=(a12/a41);
+  a51=arg[2]? arg[2][2] : 0;
+  a52=(a12*a51);
+  a49=(a49+a52);
+  a52=arg[1]? arg[1][0] : 0;
+  a53=(a09*a52);
+  a54=arg[1]? arg[1][1] : 0;
+  a55=(a10*a54);
+  a53=(a53-a55);
+  a55=(a00*a53);
+  a56=(a55*a08);
+  a56=(a56*a53);
+  a57=(a13*a54);
+  a16=(a16/a15);
+  a15=(a16*a52);
+  a57=(a57-a15);
+  a15=(a00*a57);
+  a58=(a15*a01);
+  a58=(a58*a57);
+  a56=(a56+a58);
+  a58=(a10*a56);
+  a55=(a55*a06);
+  a55=(a55*a53);
+  a15=(a15*a07);
+  a15=(a15*a57);
+  a55=(a55+a15);
+  a15=(a09*a55);
+  a58=(a58-a15);
+  a15=(a23*a58);
+  a55=(a16*a55);
+  a56=(a13*a56);
+  a55=(a55-a56);
+  a56=(a20*a55);
+  a15=(a15+a56);
+  a56=(a19*a57);
+  a08=(a08*a07);
+  a06=(a06*a01);
+  a08=(a08-a06);
+  a56=(a56*a08);
+  a56=(a56*a57);
+  a15=(a15+a56);
+  a56=(a09*a15);
+  a57=(a02*a52);
+  a06=(a34*a54);
+  a57=(a57-a06);
+  a06=(a00*a57);
+  a59=(a06*a30);
+  a59=(a59*a57);
+  a60=(a31*a54);
+  a35=(a35/a33);
+  a33=(a35*a52);
+  a60=(a60-a33);
+  a33=(a00*a60);
+  a61=(a33*a29);
+  a61=(a61*a60);
+  a59=(a59+a61);
+  a61=(a34*a59);
+  a06=(a06*a25);
+  a06=(a06*a57);
+  a33=(a33*a26);
+  a33=(a33*a60);
+  a06=(a06+a33);
+  a33=(a02*a06);
+  a61=(a61-a33);
+  a33=(a39*a61);
+  a06=(a35*a06);
+  a59=(a31*a59);
+  a06=(a06-a59);
+  a59=(a37*a06);
+  a33=(a33+a59);
+  a59=(a36*a60);
+  a30=(a30*a26);
+  a25=(a25*a29);
+  a30=(a30-a25);
+  a59=(a59*a30);
+  a59=(a59*a60);
+  a33=(a33+a59);
+  a59=(a02*a33);
+  a56=(a56+a59);
+  a59=(a12*a52);
+  a60=(a27*a54);
+  a59=(a59-a60);
+  a60=(a00*a59);
+  a25=(a60*a05);
+  a25=(a25*a59);
+  a54=(a03*a54);
+  a14=(a14/a41);
+  a52=(a14*a52);
+  a54=(a54-a52);
+  a00=(a00*a54);
+  a52=(a00*a40);
+  a52=(a52*a54);
+  a25=(a25+a52);
+  a52=(a27*a25);
+  a60=(a60*a32);
+  a60=(a60*a59);
+  a00=(a00*a04);
+  a00=(a00*a54);
+  a60=(a60+a00);
+  a00=(a12*a60);
+  a52=(a52-a00);
+  a00=(a44*a52);
+  a60=(a14*a60);
+  a25=(a03*a25);
+  a60=(a60-a25);
+  a25=(a42*a60);
+  a00=(a00+a25);
+  a25=(a28*a54);
+  a05=(a05*a04);
+  a32=(a32*a40);
+  a05=(a05-a32);
+  a25=(a25*a05);
+  a25=(a25*a54);
+  a00=(a00+a25);
+  a25=(a12*a00);
+  a56=(a56+a25);
+  a58=(a20*a58);
+  a55=(a17*a55);
+  a58=(a58+a55);
+  a19=(a19*a53);
+  a19=(a19*a08);
+  a19=(a19*a53);
+  a58=(a58-a19);
+  a19=(a16*a58);
+  a56=(a56-a19);
+  a61=(a37*a61);
+  a06=(a24*a06);
+  a61=(a61+a06);
+  a36=(a36*a57);
+  a36=(a36*a30);
+  a36=(a36*a57);
+  a61=(a61-a36);
+  a36=(a35*a61);
+  a56=(a56-a36);
+  a52=(a42*a52);
+  a60=(a46*a60);
+  a52=(a52+a60);
+  a28=(a28*a59);
+  a28=(a28*a05);
+  a28=(a28*a59);
+  a52=(a52-a28);
+  a28=(a14*a52);
+  a56=(a56-a28);
+  a49=(a49-a56);
+  a56=arg[3]? arg[3][9] : 0;
+  a56=(a56*a53);
+  a28=arg[3]? arg[3][12] : 0;
+  a28=(a28*a53);
+  a60=1.0000000000000000e-04;
+  a53=casadi_sq(a53);
+  a53=(a60+a53);
+  a53=sqrt(a53);
+  a28=(a28/a53);
+  a56=(a56+a28);
+  a28=(a09*a56);
+  a53=arg[3]? arg[3][10] : 0;
+  a53=(a53*a57);
+  a36=arg[3]? arg[3][13] : 0;
+  a36=(a36*a57);
+  a57=casadi_sq(a57);
+  a57=(a60+a57);
+  a57=sqrt(a57);
+  a36=(a36/a57);
+  a53=(a53+a36);
+  a36=(a02*a53);
+  a28=(a28+a36);
+  a36=arg[3]? arg[3][11] : 0;
+  a36=(a36*a59);
+  a57=arg[3]? arg[3][14] : 0;
+  a57=(a57*a59);
+  a59=casadi_sq(a59);
+  a60=(a60+a59);
+  a60=sqrt(a60);
+  a57=(a57/a60);
+  a36=(a36+a57);
+  a57=(a12*a36);
+  a28=(a28+a57);
+  a49=(a49-a28);
+  a28=(a21*a49);
+  a57=(a09*a20);
+  a17=(a16*a17);
+  a57=(a57-a17);
+  a17=(a57*a13);
+  a23=(a09*a23);
+  a20=(a16*a20);
+  a23=(a23-a20);
+  a20=(a23*a10);
+  a39=(a02*a39);
+  a60=(a35*a37);
+  a39=(a39-a60);
+  a60=(a39*a34);
+  a20=(a20+a60);
+  a44=(a12*a44);
+  a60=(a14*a42);
+  a44=(a44-a60);
+  a60=(a44*a27);
+  a20=(a20+a60);
+  a17=(a17-a20);
+  a37=(a02*a37);
+  a24=(a35*a24);
+  a37=(a37-a24);
+  a24=(a37*a31);
+  a17=(a17+a24);
+  a42=(a12*a42);
+  a46=(a14*a46);
+  a42=(a42-a46);
+  a46=(a42*a03);
+  a17=(a17+a46);
+  a56=(a10*a56);
+  a53=(a34*a53);
+  a56=(a56+a53);
+  a36=(a27*a36);
+  a56=(a56+a36);
+  a48=(a10*a48);
+  a50=(a34*a50);
+  a48=(a48+a50);
+  a51=(a27*a51);
+  a48=(a48+a51);
+  a13=(a13*a58);
+  a10=(a10*a15);
+  a34=(a34*a33);
+  a10=(a10+a34);
+  a27=(a27*a00);
+  a10=(a10+a27);
+  a13=(a13-a10);
+  a31=(a31*a61);
+  a13=(a13+a31);
+  a03=(a03*a52);
+  a13=(a13+a03);
+  a48=(a48+a13);
+  a56=(a56-a48);
+  a48=(a17*a56);
+  a28=(a28-a48);
+  a23=(a23*a09);
+  a39=(a39*a02);
+  a23=(a23+a39);
+  a44=(a44*a12);
+  a23=(a23+a44);
+  a57=(a57*a16);
+  a23=(a23-a57);
+  a37=(a37*a35);
+  a23=(a23-a37);
+  a42=(a42*a14);
+  a23=(a23-a42);
+  a21=(a23*a21);
+  a22=(a22*a09);
+  a38=(a38*a02);
+  a22=(a22+a38);
+  a43=(a43*a12);
+  a22=(a22+a43);
+  a18=(a18*a16);
+  a22=(a22-a18);
+  a45=(a45*a35);
+  a22=(a22-a45);
+  a47=(a47*a14);
+  a22=(a22-a47);
+  a17=(a17*a22);
+  a21=(a21-a17);
+  a28=(a28/a21);
+  if (res[0]!=0) res[0][0]=a28;
+  a23=(a23*a56);
+  a22=(a22*a49);
+  a23=(a23-a22);
+  a23=(a23/a21);
+  if (res[0]!=0) res[0][1]=a23;
+  a08=casadi_fabs(a08);
+  a30=casadi_fabs(a30);
+  a23=(a08+a30);
+  a08=(a08-a30);
+  a08=casadi_fabs(a08);
+  a23=(a23-a08);
+  a08=2.;
+  a23=(a23/a08);
+  a05=casadi_fabs(a05);
+  a30=(a23+a05);
+  a23=(a23-a05);
+  a23=casadi_fabs(a23);
+  a30=(a30-a23);
+  a30=(a30/a08);
+  if (res[1]!=0) res[1][0]=a30;
+  a30=5.0000000000000000e-01;
+  a08=3.3333333333333331e-01;
+  a23=casadi_sq(a07);
+  a05=casadi_sq(a01);
+  a23=(a23-a05);
+  a05=casadi_sq(a26);
+  a21=casadi_sq(a29);
+  a05=(a05-a21);
+  a23=(a23+a05);
+  a05=casadi_sq(a04);
+  a21=casadi_sq(a40);
+  a05=(a05-a21);
+  a23=(a23+a05);
+  a23=casadi_sq(a23);
+  a07=(2.*a07);
+  a07=(a07*a01);
+  a26=(2.*a26);
+  a26=(a26*a29);
+  a07=(a07+a26);
+  a04=(2.*a04);
+  a04=(a04*a40);
+  a07=(a07+a04);
+  a07=casadi_sq(a07);
+  a23=(a23+a07);
+  a23=sqrt(a23);
+  a08=(a08*a23);
+  a11=(a11-a08);
+  a08=casadi_fabs(a11);
+  a11=(a11+a08);
+  a30=(a30*a11);
+  a30=sqrt(a30);
+  if (res[1]!=0) res[1][1]=a30;
+  return 0;
+}
+
+/* shang2010_smooth_sampled_step:(x[4],tau_a[3],theta[15],T)->(x_next[4],sing[2]) */
+static int casadi_f59(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w00=w+62, w01, w02, *w03=w+66, *w04=w+68, *w05=w+70, *w06=w+72, *w08=w+75, *w09=w+77, *w10=w+79;
+  casadi_real w11, *w12=w+83, *w13=w+87;
+  const casadi_real **arg1=arg+4, *cr, *cs, *wr07;
+  casadi_copy(arg[0], 4, w00);
+  w01 = arg[3] ? arg[3][0] : 0;
+  w02 = 3.;
+  w01 /= w02;
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  casadi_copy(arg[1], 3, w06);
+  wr07 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w09;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  casadi_copy(w00, 4, res[0]);
+  casadi_copy(w09, 2, res[1]);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f59(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_sampled_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_sampled_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_sampled_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_sampled_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_sampled_step_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_sampled_step_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_sampled_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_sampled_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_a";
+    case 2: return "theta";
+    case 3: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_sampled_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_sampled_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s2;
+    case 2: return casadi_s6;
+    case 3: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_sampled_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_sampled_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 91;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 91*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_smooth_sampled_step_jacobians:(x[4],tau_a[3],theta[15],T)->(x_next[4],d_x[16],d_tau_a[12],sing[2]) */
+static int casadi_f61(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i, j;
+  casadi_real **res1=res+4, *rr, *w00=w+256, w01, w02, *w03=w+260, *w04=w+262, *w05=w+264, *w06=w+266, *w08=w+269, *w09=w+271, *w10=w+275;
+  casadi_real *w11=w+279, *w12=w+285, *w13=w+287, w14, *w15=w+291, *w16=w+295, *w17=w+299, *w18=w+305, *w19=w+309, *w20=w+313, *w21=w+319, *w22=w+323;
+  casadi_real *w23=w+327, *w24=w+333, *w25=w+337, *w26=w+343, *w27=w+347, *w28=w+351, *w29=w+355, *w30=w+361, *w31=w+365, *w32=w+369, *w33=w+375, *w34=w+379;
+  casadi_real *w35=w+383, *w36=w+389, *w37=w+393, *w38=w+399, *w39=w+403, *w40=w+407, *w41=w+411, *w42=w+417, *w43=w+421, *w44=w+425, *w45=w+431, *w46=w+435;
+  casadi_real *w47=w+439, *w48=w+445, *w49=w+449, *w50=w+461, *w51=w+477, *w52=w+505, *w53=w+513, *w54=w+521, *w55=w+535, *w56=w+541, *w57=w+555, *w58=w+577;
+  casadi_real *w59=w+599, *w60=w+627, *w61=w+651, *w62=w+675, *w63=w+689, *w64=w+717, *w65=w+745, *w66=w+761;
+  const casadi_int *cii;
+  const casadi_real **arg1=arg+4, *cr, *cs, *ct, *wr07;
+  casadi_copy(arg[0], 4, w00);
+  w01 = arg[3] ? arg[3][0] : 0;
+  w02 = 3.;
+  w01 /= w02;
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  casadi_copy(arg[1], 3, w06);
+  wr07 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w09;
+  res1[2]=w10;
+  res1[3]=w11;
+  res1[4]=0;
+  res1[5]=w12;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w13;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w15, cs=w13; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w15, cr=w00, cs=w15; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w15+2; cs!=w15+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w15+0; cs!=w15+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w15+2; cs!=w15+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w15;
+  res1[2]=w16;
+  res1[3]=w17;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w18;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w19, cs=w18; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w13, cs=w19; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w18, cs=w18; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w18, cr=w00, cs=w18; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w18+2; cs!=w18+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w18+0; cs!=w18+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w18+2; cs!=w18+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w18;
+  res1[2]=w19;
+  res1[3]=w20;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w21;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w22, cs=w21; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w13, cs=w22; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w21, cs=w21; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w21, cr=w00, cs=w21; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w21+2; cs!=w21+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w21+0; cs!=w21+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w21+2; cs!=w21+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w21;
+  res1[2]=w22;
+  res1[3]=w23;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w24;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w24; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w13, cs=w13; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w13;
+  res1[2]=w24;
+  res1[3]=w25;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w26;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w27, cs=w26; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w27, cr=w00, cs=w27; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w27+2; cs!=w27+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w27+0; cs!=w27+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w27+2; cs!=w27+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w27;
+  res1[2]=w28;
+  res1[3]=w29;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w30;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w31, cs=w30; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w26, cs=w31; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w30, cs=w30; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w30, cr=w00, cs=w30; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w30+2; cs!=w30+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w30+0; cs!=w30+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w30+2; cs!=w30+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w30;
+  res1[2]=w31;
+  res1[3]=w32;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w33;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w34, cs=w33; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w26, cs=w34; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w33, cs=w33; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w33, cr=w00, cs=w33; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w33+2; cs!=w33+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w33+0; cs!=w33+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w33+2; cs!=w33+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w33;
+  res1[2]=w34;
+  res1[3]=w35;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w36;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w26, cs=w36; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w26, cs=w26; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w26; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w26;
+  res1[2]=w36;
+  res1[3]=w37;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w38;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w39, cs=w38; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w39, cr=w00, cs=w39; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w39+2; cs!=w39+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w39+0; cs!=w39+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w39+2; cs!=w39+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w39;
+  res1[2]=w40;
+  res1[3]=w41;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w42;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w43, cs=w42; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w38, cs=w43; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w42, cs=w42; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w42, cr=w00, cs=w42; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w42+2; cs!=w42+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w42+0; cs!=w42+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w42+2; cs!=w42+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w42;
+  res1[2]=w43;
+  res1[3]=w44;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w45;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w46, cs=w45; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w38, cs=w46; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w45, cs=w45; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w45, cr=w00, cs=w45; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w45+2; cs!=w45+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w45+0; cs!=w45+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w45+2; cs!=w45+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w45;
+  res1[2]=w46;
+  res1[3]=w47;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w48;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w38, cs=w48; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w38, cs=w38; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w38; i<4; ++i) (*rr++) += (*cs++);
+  casadi_copy(w00, 4, res[0]);
+  casadi_fill(w00, 4, 1.);
+  casadi_clear(w49, 12);
+  rr=w50;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w49; i<12; ++i) *rr++ = *cs++;
+  casadi_densify(w50, casadi_s24, w51, 0);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w52, cs=w50+0; cs!=w50+16; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  casadi_trans(w52,casadi_s26, w53, casadi_s25, iw);
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w52;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense_sparse(w52, 2, w50, casadi_s24, w54);
+  casadi_clear(w52, 8);
+  for (i=0, rr=w55, cs=w11; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w52; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w57;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  casadi_trans(w57,casadi_s28, w58, casadi_s27, iw);
+  casadi_densify(w58, casadi_s27, w59, 0);
+  casadi_project(w50, casadi_s24, w60, casadi_s29, w);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w58, cs=w58; i<22; ++i) (*rr++)  = (w14*(*cs++));
+  casadi_project(w58, casadi_s27, w61, casadi_s29, w);
+  for (i=0, rr=w60, cs=w61; i<24; ++i) (*rr++) += (*cs++);
+  for (cii=casadi_s30, rr=w56, cs=w60; cii!=casadi_s30+14; ++cii) *rr++ = cs[*cii];
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w15, cs=w16; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense_sparse(w53, 2, w60, casadi_s29, w56);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w17; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  casadi_densify(w50, casadi_s24, w63, 0);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  for (rr=w54, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w18; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w18, cs=w19; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w18; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w63, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w20; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  casadi_densify(w50, casadi_s24, w63, 0);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  for (rr=w62, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w56, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w62, 14);
+  for (i=0, rr=w00, cs=w21; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w21, cs=w22; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w21; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w63, 7, w62, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w23; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w54;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w54; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w54, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w59, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w59, cs=w59; i<28; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w56, cs=w51+0; cs!=w51+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w13; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w13, cs=w24; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w13; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w51, 7, w56, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w25; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w59, cs=w64; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w59, cr=w51, cs=w59; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w54, cs=w59+0; cs!=w59+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w27; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w27, cs=w28; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w27; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w59, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w29; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w59, cs=w63; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w64, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w63, cs=w63; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w63, cr=w51, cs=w63; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w62, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w56, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w62, 14);
+  for (i=0, rr=w00, cs=w30; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w30, cs=w31; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w30; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w63, 7, w62, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w32; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w54;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w54; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w54, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w59, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w59; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w64, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w59, cs=w59; i<28; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w59, cr=w51, cs=w59; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w56, cs=w59+0; cs!=w59+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w33; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w33, cs=w34; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w33; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w59, 7, w56, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w35; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w64, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w54, cs=w51+0; cs!=w51+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w26; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w26, cs=w36; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w26; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w51, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w37; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w64;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w64; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w64, cs=w63; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w64, cr=w51, cs=w64; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w62, cs=w64+0; cs!=w64+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w56, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w62, 14);
+  for (i=0, rr=w00, cs=w39; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w39, cs=w40; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w39; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w64, 7, w62, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w41; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w54;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w54; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w54, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w64;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w59, cs=w64; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w64, cs=w59; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w59, cs=w59; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w59, cr=w51, cs=w59; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w56, cs=w59+0; cs!=w59+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w42; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w42, cs=w43; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w42; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w59, 7, w56, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w44; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w59, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w63, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w64, cr=w51, cs=w64; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w54, cs=w64+0; cs!=w64+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w45; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w45, cs=w46; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w45; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w64, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w47; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w64;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w59, cs=w64; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w63, cs=w63; i<28; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  for (rr=w50, cs=w51+0; cs!=w51+16; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w65, cs=w50; i<4; ++i) for (j=0; j<4; ++j) rr[i+j*4] = *cs++;
+  casadi_copy(w65, 16, res[1]);
+  for (rr=w49, cs=w51+16; cs!=w51+28; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w66, cs=w49; i<3; ++i) for (j=0; j<4; ++j) rr[i+j*3] = *cs++;
+  casadi_copy(w66, 12, res[2]);
+  casadi_copy(w12, 2, res[3]);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f61(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_sampled_step_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_sampled_step_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_sampled_step_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_smooth_sampled_step_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_sampled_step_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_smooth_sampled_step_jacobians_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_smooth_sampled_step_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_sampled_step_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_a";
+    case 2: return "theta";
+    case 3: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_smooth_sampled_step_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "d_x";
+    case 2: return "d_tau_a";
+    case 3: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_sampled_step_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s2;
+    case 2: return casadi_s6;
+    case 3: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_smooth_sampled_step_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s21;
+    case 2: return casadi_s5;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_sampled_step_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 10;
+  if (sz_iw) *sz_iw = 8;
+  if (sz_w) *sz_w = 773;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_smooth_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 10*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 8*sizeof(casadi_int);
+  if (sz_w) *sz_w = 773*sizeof(casadi_real);
   return 0;
 }
 

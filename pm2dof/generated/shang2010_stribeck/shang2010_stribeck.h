@@ -40,6 +40,12 @@
  *   shang2010_stribeck_apd_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[22], status[1], diag[10])
  *   shang2010_stribeck_apd_minmax_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[22], status[1], diag[10])
  *   shang2010_stribeck_apd_preload_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_stribeck_ctc_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_stribeck_ctc_minmax_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_stribeck_ctc_preload_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_stribeck_lqr_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[14], K[12], tau_ff[3]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_stribeck_lqr_minmax_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[14], K[12], tau_ff[3]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_stribeck_lqr_preload_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[14], K[12], tau_ff[3]) -> (tau_a[3], state_next[22], status[1], diag[10])
  *   shang2010_stribeck_plant_xedd(xe[2], xed[2], tau_a[3], plant[21]) -> (xedd[2])
  *   shang2010_stribeck_plant_step(x[4], tau_a[3], plant[21], h[1]) -> (x_next[4])
  *   shang2010_stribeck_measure(xe[2], plant[21]) -> (qa[3])
@@ -52,19 +58,33 @@
  *   shang2010_stribeck_apd_closed_loop(x[26], u[6], p[39]) -> (x_next[26], y[26])
  *   shang2010_stribeck_apd_minmax_closed_loop(x[26], u[6], p[39]) -> (x_next[26], y[26])
  *   shang2010_stribeck_apd_preload_closed_loop(x[26], u[6], p[39]) -> (x_next[26], y[26])
+ *   shang2010_stribeck_ctc_closed_loop(x[26], u[6], p[39]) -> (x_next[26], y[26])
+ *   shang2010_stribeck_ctc_minmax_closed_loop(x[26], u[6], p[39]) -> (x_next[26], y[26])
+ *   shang2010_stribeck_ctc_preload_closed_loop(x[26], u[6], p[39]) -> (x_next[26], y[26])
+ *   shang2010_stribeck_lqr_closed_loop(x[26], u[21], p[35]) -> (x_next[26], y[26])
+ *   shang2010_stribeck_lqr_minmax_closed_loop(x[26], u[21], p[35]) -> (x_next[26], y[26])
+ *   shang2010_stribeck_lqr_preload_closed_loop(x[26], u[21], p[35]) -> (x_next[26], y[26])
  *   shang2010_stribeck_path_coefficients(p[2], dp[2], ddp[2], theta[18], tau_max[3]) -> (a[2], b[2], S[6], v1[3], N_min_norm[6], h_min_norm[3], N_min_max[6], h_min_max[3], sing[2])
  *   shang2010_stribeck_path_mvc(stage[27], params[19]) -> (x_mvc[1])
  *   shang2010_stribeck_path_backward(x_next_max[1], pair[55], params[19]) -> (x_max[1], y[1])
  *   shang2010_stribeck_path_forward(x[1], input[56], params[19]) -> (x_next[1], y[6])
  *   shang2010_stribeck_path_torques(stage[27], sd[1], sdd[1], params[19], tau_max[3]) -> (u[2], tau_min_norm[3], tau_min_max[3], min_max_ratio[1])
+ *   shang2010_stribeck_forward_dynamics_jacobians(xe[2], xed[2], tau_a[3], theta[18]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[6], d_theta[36], sing[2])
+ *   shang2010_stribeck_inverse_dynamics(xe[2], xed[2], xedd[2], theta[18]) -> (u[2], sing[2])
+ *   shang2010_stribeck_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[18]) -> (u[2], d_xe[4], d_xed[4], sing[2])
+ *   shang2010_stribeck_sampled_step(x[4], tau_a[3], theta[18], T[1]) -> (x_next[4], sing[2])
+ *   shang2010_stribeck_sampled_step_jacobians(x[4], tau_a[3], theta[18], T[1]) -> (x_next[4], d_x[16], d_tau_a[12], sing[2])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[18]
  *   na_params: Kd[2], Q[2], Gamma[18], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
+ *   ctc_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
+ *   lqr_params: T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   cl_state: xe[2], xed[2], ctrl_state[22]
  *   cl_input: xd[2], xd_dot[2], xd_ddot[2]
  *   cl_output: xe[2], xed[2], tau_a[3], status[1], theta_hat[18]
+ *   lqr_cl_input: xd[2], xd_dot[2], xd_ddot[2], K[12], tau_ff[3]
  *   plant: alpha[3], beta[3], gamma[3], fv[3], fc[3], fs[3], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[6], h[3], a[2], b[2], S[6], v1[3], rho[3], delta[1], x_cap[1]
  *   path_pair: stage[27], next[27], next_cap[1]
@@ -560,6 +580,114 @@ int shang2010_stribeck_apd_preload_step_work_bytes(casadi_int *sz_arg, casadi_in
 #define shang2010_stribeck_apd_preload_step_SZ_RES 6
 #define shang2010_stribeck_apd_preload_step_SZ_IW 0
 #define shang2010_stribeck_apd_preload_step_SZ_W 171
+int shang2010_stribeck_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_ctc_step_checkout(void);
+void shang2010_stribeck_ctc_step_release(int mem);
+void shang2010_stribeck_ctc_step_incref(void);
+void shang2010_stribeck_ctc_step_decref(void);
+casadi_int shang2010_stribeck_ctc_step_n_in(void);
+casadi_int shang2010_stribeck_ctc_step_n_out(void);
+casadi_real shang2010_stribeck_ctc_step_default_in(casadi_int i);
+const char* shang2010_stribeck_ctc_step_name_in(casadi_int i);
+const char* shang2010_stribeck_ctc_step_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_step_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_step_sparsity_out(casadi_int i);
+int shang2010_stribeck_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_ctc_step_SZ_ARG 6
+#define shang2010_stribeck_ctc_step_SZ_RES 4
+#define shang2010_stribeck_ctc_step_SZ_IW 0
+#define shang2010_stribeck_ctc_step_SZ_W 0
+int shang2010_stribeck_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_ctc_minmax_step_checkout(void);
+void shang2010_stribeck_ctc_minmax_step_release(int mem);
+void shang2010_stribeck_ctc_minmax_step_incref(void);
+void shang2010_stribeck_ctc_minmax_step_decref(void);
+casadi_int shang2010_stribeck_ctc_minmax_step_n_in(void);
+casadi_int shang2010_stribeck_ctc_minmax_step_n_out(void);
+casadi_real shang2010_stribeck_ctc_minmax_step_default_in(casadi_int i);
+const char* shang2010_stribeck_ctc_minmax_step_name_in(casadi_int i);
+const char* shang2010_stribeck_ctc_minmax_step_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_minmax_step_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_minmax_step_sparsity_out(casadi_int i);
+int shang2010_stribeck_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_ctc_minmax_step_SZ_ARG 6
+#define shang2010_stribeck_ctc_minmax_step_SZ_RES 4
+#define shang2010_stribeck_ctc_minmax_step_SZ_IW 0
+#define shang2010_stribeck_ctc_minmax_step_SZ_W 0
+int shang2010_stribeck_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_ctc_preload_step_checkout(void);
+void shang2010_stribeck_ctc_preload_step_release(int mem);
+void shang2010_stribeck_ctc_preload_step_incref(void);
+void shang2010_stribeck_ctc_preload_step_decref(void);
+casadi_int shang2010_stribeck_ctc_preload_step_n_in(void);
+casadi_int shang2010_stribeck_ctc_preload_step_n_out(void);
+casadi_real shang2010_stribeck_ctc_preload_step_default_in(casadi_int i);
+const char* shang2010_stribeck_ctc_preload_step_name_in(casadi_int i);
+const char* shang2010_stribeck_ctc_preload_step_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_preload_step_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_preload_step_sparsity_out(casadi_int i);
+int shang2010_stribeck_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_ctc_preload_step_SZ_ARG 11
+#define shang2010_stribeck_ctc_preload_step_SZ_RES 6
+#define shang2010_stribeck_ctc_preload_step_SZ_IW 0
+#define shang2010_stribeck_ctc_preload_step_SZ_W 171
+int shang2010_stribeck_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_lqr_step_checkout(void);
+void shang2010_stribeck_lqr_step_release(int mem);
+void shang2010_stribeck_lqr_step_incref(void);
+void shang2010_stribeck_lqr_step_decref(void);
+casadi_int shang2010_stribeck_lqr_step_n_in(void);
+casadi_int shang2010_stribeck_lqr_step_n_out(void);
+casadi_real shang2010_stribeck_lqr_step_default_in(casadi_int i);
+const char* shang2010_stribeck_lqr_step_name_in(casadi_int i);
+const char* shang2010_stribeck_lqr_step_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_step_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_step_sparsity_out(casadi_int i);
+int shang2010_stribeck_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_lqr_step_SZ_ARG 8
+#define shang2010_stribeck_lqr_step_SZ_RES 4
+#define shang2010_stribeck_lqr_step_SZ_IW 0
+#define shang2010_stribeck_lqr_step_SZ_W 0
+int shang2010_stribeck_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_lqr_minmax_step_checkout(void);
+void shang2010_stribeck_lqr_minmax_step_release(int mem);
+void shang2010_stribeck_lqr_minmax_step_incref(void);
+void shang2010_stribeck_lqr_minmax_step_decref(void);
+casadi_int shang2010_stribeck_lqr_minmax_step_n_in(void);
+casadi_int shang2010_stribeck_lqr_minmax_step_n_out(void);
+casadi_real shang2010_stribeck_lqr_minmax_step_default_in(casadi_int i);
+const char* shang2010_stribeck_lqr_minmax_step_name_in(casadi_int i);
+const char* shang2010_stribeck_lqr_minmax_step_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_minmax_step_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_minmax_step_sparsity_out(casadi_int i);
+int shang2010_stribeck_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_lqr_minmax_step_SZ_ARG 8
+#define shang2010_stribeck_lqr_minmax_step_SZ_RES 4
+#define shang2010_stribeck_lqr_minmax_step_SZ_IW 0
+#define shang2010_stribeck_lqr_minmax_step_SZ_W 0
+int shang2010_stribeck_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_lqr_preload_step_checkout(void);
+void shang2010_stribeck_lqr_preload_step_release(int mem);
+void shang2010_stribeck_lqr_preload_step_incref(void);
+void shang2010_stribeck_lqr_preload_step_decref(void);
+casadi_int shang2010_stribeck_lqr_preload_step_n_in(void);
+casadi_int shang2010_stribeck_lqr_preload_step_n_out(void);
+casadi_real shang2010_stribeck_lqr_preload_step_default_in(casadi_int i);
+const char* shang2010_stribeck_lqr_preload_step_name_in(casadi_int i);
+const char* shang2010_stribeck_lqr_preload_step_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_preload_step_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_preload_step_sparsity_out(casadi_int i);
+int shang2010_stribeck_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_lqr_preload_step_SZ_ARG 13
+#define shang2010_stribeck_lqr_preload_step_SZ_RES 6
+#define shang2010_stribeck_lqr_preload_step_SZ_IW 0
+#define shang2010_stribeck_lqr_preload_step_SZ_W 171
 int shang2010_stribeck_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_stribeck_plant_xedd_checkout(void);
 void shang2010_stribeck_plant_xedd_release(int mem);
@@ -776,6 +904,114 @@ int shang2010_stribeck_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, ca
 #define shang2010_stribeck_apd_preload_closed_loop_SZ_RES 8
 #define shang2010_stribeck_apd_preload_closed_loop_SZ_IW 0
 #define shang2010_stribeck_apd_preload_closed_loop_SZ_W 313
+int shang2010_stribeck_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_ctc_closed_loop_checkout(void);
+void shang2010_stribeck_ctc_closed_loop_release(int mem);
+void shang2010_stribeck_ctc_closed_loop_incref(void);
+void shang2010_stribeck_ctc_closed_loop_decref(void);
+casadi_int shang2010_stribeck_ctc_closed_loop_n_in(void);
+casadi_int shang2010_stribeck_ctc_closed_loop_n_out(void);
+casadi_real shang2010_stribeck_ctc_closed_loop_default_in(casadi_int i);
+const char* shang2010_stribeck_ctc_closed_loop_name_in(casadi_int i);
+const char* shang2010_stribeck_ctc_closed_loop_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_closed_loop_sparsity_out(casadi_int i);
+int shang2010_stribeck_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_ctc_closed_loop_SZ_ARG 9
+#define shang2010_stribeck_ctc_closed_loop_SZ_RES 6
+#define shang2010_stribeck_ctc_closed_loop_SZ_IW 0
+#define shang2010_stribeck_ctc_closed_loop_SZ_W 162
+int shang2010_stribeck_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_ctc_minmax_closed_loop_checkout(void);
+void shang2010_stribeck_ctc_minmax_closed_loop_release(int mem);
+void shang2010_stribeck_ctc_minmax_closed_loop_incref(void);
+void shang2010_stribeck_ctc_minmax_closed_loop_decref(void);
+casadi_int shang2010_stribeck_ctc_minmax_closed_loop_n_in(void);
+casadi_int shang2010_stribeck_ctc_minmax_closed_loop_n_out(void);
+casadi_real shang2010_stribeck_ctc_minmax_closed_loop_default_in(casadi_int i);
+const char* shang2010_stribeck_ctc_minmax_closed_loop_name_in(casadi_int i);
+const char* shang2010_stribeck_ctc_minmax_closed_loop_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_minmax_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_minmax_closed_loop_sparsity_out(casadi_int i);
+int shang2010_stribeck_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_ctc_minmax_closed_loop_SZ_ARG 9
+#define shang2010_stribeck_ctc_minmax_closed_loop_SZ_RES 6
+#define shang2010_stribeck_ctc_minmax_closed_loop_SZ_IW 0
+#define shang2010_stribeck_ctc_minmax_closed_loop_SZ_W 162
+int shang2010_stribeck_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_ctc_preload_closed_loop_checkout(void);
+void shang2010_stribeck_ctc_preload_closed_loop_release(int mem);
+void shang2010_stribeck_ctc_preload_closed_loop_incref(void);
+void shang2010_stribeck_ctc_preload_closed_loop_decref(void);
+casadi_int shang2010_stribeck_ctc_preload_closed_loop_n_in(void);
+casadi_int shang2010_stribeck_ctc_preload_closed_loop_n_out(void);
+casadi_real shang2010_stribeck_ctc_preload_closed_loop_default_in(casadi_int i);
+const char* shang2010_stribeck_ctc_preload_closed_loop_name_in(casadi_int i);
+const char* shang2010_stribeck_ctc_preload_closed_loop_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_preload_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_ctc_preload_closed_loop_sparsity_out(casadi_int i);
+int shang2010_stribeck_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_ctc_preload_closed_loop_SZ_ARG 14
+#define shang2010_stribeck_ctc_preload_closed_loop_SZ_RES 8
+#define shang2010_stribeck_ctc_preload_closed_loop_SZ_IW 0
+#define shang2010_stribeck_ctc_preload_closed_loop_SZ_W 309
+int shang2010_stribeck_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_lqr_closed_loop_checkout(void);
+void shang2010_stribeck_lqr_closed_loop_release(int mem);
+void shang2010_stribeck_lqr_closed_loop_incref(void);
+void shang2010_stribeck_lqr_closed_loop_decref(void);
+casadi_int shang2010_stribeck_lqr_closed_loop_n_in(void);
+casadi_int shang2010_stribeck_lqr_closed_loop_n_out(void);
+casadi_real shang2010_stribeck_lqr_closed_loop_default_in(casadi_int i);
+const char* shang2010_stribeck_lqr_closed_loop_name_in(casadi_int i);
+const char* shang2010_stribeck_lqr_closed_loop_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_closed_loop_sparsity_out(casadi_int i);
+int shang2010_stribeck_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_lqr_closed_loop_SZ_ARG 11
+#define shang2010_stribeck_lqr_closed_loop_SZ_RES 6
+#define shang2010_stribeck_lqr_closed_loop_SZ_IW 0
+#define shang2010_stribeck_lqr_closed_loop_SZ_W 150
+int shang2010_stribeck_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_lqr_minmax_closed_loop_checkout(void);
+void shang2010_stribeck_lqr_minmax_closed_loop_release(int mem);
+void shang2010_stribeck_lqr_minmax_closed_loop_incref(void);
+void shang2010_stribeck_lqr_minmax_closed_loop_decref(void);
+casadi_int shang2010_stribeck_lqr_minmax_closed_loop_n_in(void);
+casadi_int shang2010_stribeck_lqr_minmax_closed_loop_n_out(void);
+casadi_real shang2010_stribeck_lqr_minmax_closed_loop_default_in(casadi_int i);
+const char* shang2010_stribeck_lqr_minmax_closed_loop_name_in(casadi_int i);
+const char* shang2010_stribeck_lqr_minmax_closed_loop_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_minmax_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_minmax_closed_loop_sparsity_out(casadi_int i);
+int shang2010_stribeck_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_lqr_minmax_closed_loop_SZ_ARG 11
+#define shang2010_stribeck_lqr_minmax_closed_loop_SZ_RES 6
+#define shang2010_stribeck_lqr_minmax_closed_loop_SZ_IW 0
+#define shang2010_stribeck_lqr_minmax_closed_loop_SZ_W 150
+int shang2010_stribeck_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_lqr_preload_closed_loop_checkout(void);
+void shang2010_stribeck_lqr_preload_closed_loop_release(int mem);
+void shang2010_stribeck_lqr_preload_closed_loop_incref(void);
+void shang2010_stribeck_lqr_preload_closed_loop_decref(void);
+casadi_int shang2010_stribeck_lqr_preload_closed_loop_n_in(void);
+casadi_int shang2010_stribeck_lqr_preload_closed_loop_n_out(void);
+casadi_real shang2010_stribeck_lqr_preload_closed_loop_default_in(casadi_int i);
+const char* shang2010_stribeck_lqr_preload_closed_loop_name_in(casadi_int i);
+const char* shang2010_stribeck_lqr_preload_closed_loop_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_preload_closed_loop_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_lqr_preload_closed_loop_sparsity_out(casadi_int i);
+int shang2010_stribeck_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_lqr_preload_closed_loop_SZ_ARG 16
+#define shang2010_stribeck_lqr_preload_closed_loop_SZ_RES 8
+#define shang2010_stribeck_lqr_preload_closed_loop_SZ_IW 0
+#define shang2010_stribeck_lqr_preload_closed_loop_SZ_W 272
 int shang2010_stribeck_path_coefficients(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_stribeck_path_coefficients_checkout(void);
 void shang2010_stribeck_path_coefficients_release(int mem);
@@ -866,6 +1102,96 @@ int shang2010_stribeck_path_torques_work_bytes(casadi_int *sz_arg, casadi_int* s
 #define shang2010_stribeck_path_torques_SZ_RES 4
 #define shang2010_stribeck_path_torques_SZ_IW 0
 #define shang2010_stribeck_path_torques_SZ_W 0
+int shang2010_stribeck_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_forward_dynamics_jacobians_checkout(void);
+void shang2010_stribeck_forward_dynamics_jacobians_release(int mem);
+void shang2010_stribeck_forward_dynamics_jacobians_incref(void);
+void shang2010_stribeck_forward_dynamics_jacobians_decref(void);
+casadi_int shang2010_stribeck_forward_dynamics_jacobians_n_in(void);
+casadi_int shang2010_stribeck_forward_dynamics_jacobians_n_out(void);
+casadi_real shang2010_stribeck_forward_dynamics_jacobians_default_in(casadi_int i);
+const char* shang2010_stribeck_forward_dynamics_jacobians_name_in(casadi_int i);
+const char* shang2010_stribeck_forward_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_forward_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_forward_dynamics_jacobians_sparsity_out(casadi_int i);
+int shang2010_stribeck_forward_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_forward_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_forward_dynamics_jacobians_SZ_ARG 4
+#define shang2010_stribeck_forward_dynamics_jacobians_SZ_RES 6
+#define shang2010_stribeck_forward_dynamics_jacobians_SZ_IW 0
+#define shang2010_stribeck_forward_dynamics_jacobians_SZ_W 0
+int shang2010_stribeck_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_inverse_dynamics_checkout(void);
+void shang2010_stribeck_inverse_dynamics_release(int mem);
+void shang2010_stribeck_inverse_dynamics_incref(void);
+void shang2010_stribeck_inverse_dynamics_decref(void);
+casadi_int shang2010_stribeck_inverse_dynamics_n_in(void);
+casadi_int shang2010_stribeck_inverse_dynamics_n_out(void);
+casadi_real shang2010_stribeck_inverse_dynamics_default_in(casadi_int i);
+const char* shang2010_stribeck_inverse_dynamics_name_in(casadi_int i);
+const char* shang2010_stribeck_inverse_dynamics_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_inverse_dynamics_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_inverse_dynamics_sparsity_out(casadi_int i);
+int shang2010_stribeck_inverse_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_inverse_dynamics_SZ_ARG 4
+#define shang2010_stribeck_inverse_dynamics_SZ_RES 2
+#define shang2010_stribeck_inverse_dynamics_SZ_IW 0
+#define shang2010_stribeck_inverse_dynamics_SZ_W 0
+int shang2010_stribeck_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_inverse_dynamics_jacobians_checkout(void);
+void shang2010_stribeck_inverse_dynamics_jacobians_release(int mem);
+void shang2010_stribeck_inverse_dynamics_jacobians_incref(void);
+void shang2010_stribeck_inverse_dynamics_jacobians_decref(void);
+casadi_int shang2010_stribeck_inverse_dynamics_jacobians_n_in(void);
+casadi_int shang2010_stribeck_inverse_dynamics_jacobians_n_out(void);
+casadi_real shang2010_stribeck_inverse_dynamics_jacobians_default_in(casadi_int i);
+const char* shang2010_stribeck_inverse_dynamics_jacobians_name_in(casadi_int i);
+const char* shang2010_stribeck_inverse_dynamics_jacobians_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_inverse_dynamics_jacobians_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_inverse_dynamics_jacobians_sparsity_out(casadi_int i);
+int shang2010_stribeck_inverse_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_inverse_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_inverse_dynamics_jacobians_SZ_ARG 4
+#define shang2010_stribeck_inverse_dynamics_jacobians_SZ_RES 4
+#define shang2010_stribeck_inverse_dynamics_jacobians_SZ_IW 0
+#define shang2010_stribeck_inverse_dynamics_jacobians_SZ_W 0
+int shang2010_stribeck_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_sampled_step_checkout(void);
+void shang2010_stribeck_sampled_step_release(int mem);
+void shang2010_stribeck_sampled_step_incref(void);
+void shang2010_stribeck_sampled_step_decref(void);
+casadi_int shang2010_stribeck_sampled_step_n_in(void);
+casadi_int shang2010_stribeck_sampled_step_n_out(void);
+casadi_real shang2010_stribeck_sampled_step_default_in(casadi_int i);
+const char* shang2010_stribeck_sampled_step_name_in(casadi_int i);
+const char* shang2010_stribeck_sampled_step_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_sampled_step_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_sampled_step_sparsity_out(casadi_int i);
+int shang2010_stribeck_sampled_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_sampled_step_SZ_ARG 8
+#define shang2010_stribeck_sampled_step_SZ_RES 4
+#define shang2010_stribeck_sampled_step_SZ_IW 0
+#define shang2010_stribeck_sampled_step_SZ_W 91
+int shang2010_stribeck_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_sampled_step_jacobians_checkout(void);
+void shang2010_stribeck_sampled_step_jacobians_release(int mem);
+void shang2010_stribeck_sampled_step_jacobians_incref(void);
+void shang2010_stribeck_sampled_step_jacobians_decref(void);
+casadi_int shang2010_stribeck_sampled_step_jacobians_n_in(void);
+casadi_int shang2010_stribeck_sampled_step_jacobians_n_out(void);
+casadi_real shang2010_stribeck_sampled_step_jacobians_default_in(casadi_int i);
+const char* shang2010_stribeck_sampled_step_jacobians_name_in(casadi_int i);
+const char* shang2010_stribeck_sampled_step_jacobians_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_sampled_step_jacobians_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_sampled_step_jacobians_sparsity_out(casadi_int i);
+int shang2010_stribeck_sampled_step_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_sampled_step_jacobians_SZ_ARG 8
+#define shang2010_stribeck_sampled_step_jacobians_SZ_RES 10
+#define shang2010_stribeck_sampled_step_jacobians_SZ_IW 8
+#define shang2010_stribeck_sampled_step_jacobians_SZ_W 772
 void shang2010_stribeck_casadi_version(int* major, int* minor, int* patch);
 int shang2010_stribeck_casadi_int_size(void);
 int shang2010_stribeck_casadi_real_size(void);

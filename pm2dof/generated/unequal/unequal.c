@@ -29,7 +29,9 @@ extern "C" {
 #endif
 
 /* Add prefix to internal symbols */
+#define casadi_clear CASADI_PREFIX(clear)
 #define casadi_copy CASADI_PREFIX(copy)
+#define casadi_densify CASADI_PREFIX(densify)
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f10 CASADI_PREFIX(f10)
@@ -69,14 +71,36 @@ extern "C" {
 #define casadi_f41 CASADI_PREFIX(f41)
 #define casadi_f42 CASADI_PREFIX(f42)
 #define casadi_f43 CASADI_PREFIX(f43)
+#define casadi_f44 CASADI_PREFIX(f44)
+#define casadi_f45 CASADI_PREFIX(f45)
+#define casadi_f46 CASADI_PREFIX(f46)
+#define casadi_f47 CASADI_PREFIX(f47)
+#define casadi_f48 CASADI_PREFIX(f48)
+#define casadi_f49 CASADI_PREFIX(f49)
 #define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f50 CASADI_PREFIX(f50)
+#define casadi_f51 CASADI_PREFIX(f51)
+#define casadi_f52 CASADI_PREFIX(f52)
+#define casadi_f53 CASADI_PREFIX(f53)
+#define casadi_f54 CASADI_PREFIX(f54)
+#define casadi_f55 CASADI_PREFIX(f55)
+#define casadi_f56 CASADI_PREFIX(f56)
+#define casadi_f57 CASADI_PREFIX(f57)
+#define casadi_f58 CASADI_PREFIX(f58)
+#define casadi_f59 CASADI_PREFIX(f59)
 #define casadi_f6 CASADI_PREFIX(f6)
+#define casadi_f60 CASADI_PREFIX(f60)
+#define casadi_f61 CASADI_PREFIX(f61)
 #define casadi_f7 CASADI_PREFIX(f7)
 #define casadi_f8 CASADI_PREFIX(f8)
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
+#define casadi_fill CASADI_PREFIX(fill)
 #define casadi_fmax CASADI_PREFIX(fmax)
 #define casadi_fmin CASADI_PREFIX(fmin)
+#define casadi_mtimes_dense CASADI_PREFIX(mtimes_dense)
+#define casadi_mtimes_dense_sparse CASADI_PREFIX(mtimes_dense_sparse)
+#define casadi_project CASADI_PREFIX(project)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s10 CASADI_PREFIX(s10)
@@ -92,7 +116,16 @@ extern "C" {
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s20 CASADI_PREFIX(s20)
 #define casadi_s21 CASADI_PREFIX(s21)
+#define casadi_s22 CASADI_PREFIX(s22)
+#define casadi_s23 CASADI_PREFIX(s23)
+#define casadi_s24 CASADI_PREFIX(s24)
+#define casadi_s25 CASADI_PREFIX(s25)
+#define casadi_s26 CASADI_PREFIX(s26)
+#define casadi_s27 CASADI_PREFIX(s27)
+#define casadi_s28 CASADI_PREFIX(s28)
+#define casadi_s29 CASADI_PREFIX(s29)
 #define casadi_s3 CASADI_PREFIX(s3)
+#define casadi_s30 CASADI_PREFIX(s30)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_s6 CASADI_PREFIX(s6)
@@ -101,6 +134,7 @@ extern "C" {
 #define casadi_s9 CASADI_PREFIX(s9)
 #define casadi_sign CASADI_PREFIX(sign)
 #define casadi_sq CASADI_PREFIX(sq)
+#define casadi_trans CASADI_PREFIX(trans)
 #define casadi_zeros CASADI_PREFIX(zeros)
 
 /* Symbol visibility in DLLs */
@@ -164,6 +198,115 @@ void casadi_copy(const casadi_real* x, casadi_int n, casadi_real* y) {
   }
 }
 
+void casadi_fill(casadi_real* x, casadi_int n, casadi_real alpha) {
+  casadi_int i;
+  if (x) {
+    for (i=0; i<n; ++i) *x++ = alpha;
+  }
+}
+
+void casadi_clear(casadi_real* x, casadi_int n) {
+  casadi_int i;
+  if (x) {
+    for (i=0; i<n; ++i) *x++ = 0;
+  }
+}
+
+#define CASADI_CAST(x,y) ((x) y)
+
+void casadi_densify(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, casadi_int tr) {
+  casadi_int nrow_x, ncol_x, i, el;
+  const casadi_int *colind_x, *row_x;
+  if (!y) return;
+  nrow_x = sp_x[0]; ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x+ncol_x+3;
+  casadi_clear(y, nrow_x*ncol_x);
+  if (!x) return;
+  if (tr) {
+    for (i=0; i<ncol_x; ++i) {
+      for (el=colind_x[i]; el!=colind_x[i+1]; ++el) {
+        y[i + row_x[el]*ncol_x] = CASADI_CAST(casadi_real, *x++);
+      }
+    }
+  } else {
+    for (i=0; i<ncol_x; ++i) {
+      for (el=colind_x[i]; el!=colind_x[i+1]; ++el) {
+        y[row_x[el]] = CASADI_CAST(casadi_real, *x++);
+      }
+      y += nrow_x;
+    }
+  }
+}
+
+void casadi_trans(const casadi_real* x, const casadi_int* sp_x, casadi_real* y,
+    const casadi_int* sp_y, casadi_int* tmp) {
+  casadi_int ncol_x, nnz_x, ncol_y, k;
+  const casadi_int* row_x, *colind_y;
+  ncol_x = sp_x[1];
+  nnz_x = sp_x[2 + ncol_x];
+  row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2;
+  for (k=0; k<ncol_y; ++k) tmp[k] = colind_y[k];
+  for (k=0; k<nnz_x; ++k) {
+    y[tmp[row_x[k]]++] = x[k];
+  }
+}
+
+void casadi_mtimes_dense_sparse(const casadi_real* x, casadi_int nrow_x,
+    const casadi_real* y, const casadi_int* sp_y, casadi_real* z) {
+  casadi_int j, kk, i, ncol_y;
+  const casadi_int *colind_y, *row_y;
+  ncol_y = sp_y[1];
+  colind_y = sp_y + 2;
+  row_y = sp_y + 2 + ncol_y + 1;
+  for (j = 0; j < ncol_y; ++j) {
+    casadi_real* zj = z + j * nrow_x;
+    for (kk = colind_y[j]; kk < colind_y[j + 1]; ++kk) {
+      casadi_int rr = row_y[kk];
+      casadi_real yk = y[kk];
+      const casadi_real* x_col = x + rr * nrow_x;
+      for (i = 0; i < nrow_x; ++i) zj[i] += x_col[i] * yk;
+    }
+  }
+}
+
+void casadi_project(const casadi_real* x, const casadi_int* sp_x, casadi_real* y, const casadi_int* sp_y, casadi_real* w) {
+  casadi_int ncol_x, ncol_y, i, el;
+  const casadi_int *colind_x, *row_x, *colind_y, *row_y;
+  ncol_x = sp_x[1];
+  colind_x = sp_x+2; row_x = sp_x + 2 + ncol_x+1;
+  ncol_y = sp_y[1];
+  colind_y = sp_y+2; row_y = sp_y + 2 + ncol_y+1;
+  for (i=0; i<ncol_x; ++i) {
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) w[row_y[el]] = 0;
+    for (el=colind_x[i]; el<colind_x[i+1]; ++el) w[row_x[el]] = x[el];
+    for (el=colind_y[i]; el<colind_y[i+1]; ++el) y[el] = w[row_y[el]];
+  }
+}
+
+void casadi_mtimes_dense(const casadi_real* x, casadi_int nrow_x, casadi_int ncol_x,
+    const casadi_real* y, casadi_int ncol_y, casadi_real* z, casadi_int tr) {
+  casadi_int i, j, k;
+  if (tr) {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<ncol_x; ++j) {
+        for (k=0; k<nrow_x; ++k) {
+          z[j + i*ncol_x] += x[k + j*nrow_x] * y[k + i*nrow_x];
+        }
+      }
+    }
+  } else {
+    for (i=0; i<ncol_y; ++i) {
+      for (j=0; j<nrow_x; ++j) {
+        for (k=0; k<ncol_x; ++k) {
+          z[j + i*nrow_x] += x[j + k*nrow_x] * y[k + i*ncol_x];
+        }
+      }
+    }
+  }
+}
+
 /* Configuration this file was compiled with */
 CASADI_SYMBOL_EXPORT void unequal_casadi_version(int* major, int* minor, int* patch) {
   *major = 3;
@@ -187,14 +330,47 @@ static const casadi_int casadi_s10[3] = {19, 1, 1};
 static const casadi_int casadi_s11[3] = {33, 1, 1};
 static const casadi_int casadi_s12[3] = {10, 1, 1};
 static const casadi_int casadi_s13[3] = {18, 1, 1};
-static const casadi_int casadi_s14[3] = {21, 1, 1};
-static const casadi_int casadi_s15[3] = {23, 1, 1};
-static const casadi_int casadi_s16[3] = {54, 1, 1};
-static const casadi_int casadi_s17[3] = {39, 1, 1};
-static const casadi_int casadi_s18[3] = {27, 1, 1};
-static const casadi_int casadi_s19[3] = {16, 1, 1};
-static const casadi_int casadi_s20[3] = {55, 1, 1};
-static const casadi_int casadi_s21[3] = {56, 1, 1};
+static const casadi_int casadi_s14[3] = {14, 1, 1};
+static const casadi_int casadi_s15[3] = {21, 1, 1};
+static const casadi_int casadi_s16[3] = {23, 1, 1};
+static const casadi_int casadi_s17[3] = {54, 1, 1};
+static const casadi_int casadi_s18[3] = {39, 1, 1};
+static const casadi_int casadi_s19[3] = {35, 1, 1};
+static const casadi_int casadi_s20[3] = {27, 1, 1};
+static const casadi_int casadi_s21[3] = {16, 1, 1};
+static const casadi_int casadi_s22[3] = {55, 1, 1};
+static const casadi_int casadi_s23[3] = {56, 1, 1};
+static const casadi_int casadi_s24[26] = 
+  {4, 7, 0, 1, 2, 3, 4, 8,
+  12, 16, 0, 1, 2, 3, 0, 1,
+  2, 3, 0, 1, 2, 3, 0, 1,
+  2, 3};
+static const casadi_int casadi_s25[13] = 
+  {7, 2, 0, 4, 8, 2, 4, 5,
+  6, 3, 4, 5, 6};
+static const casadi_int casadi_s26[18] = 
+  {2, 7, 0, 0, 0, 1, 2, 4,
+  6, 8, 0, 1, 0, 1, 0, 1,
+  0, 1};
+static const casadi_int casadi_s27[32] = 
+  {4, 7, 0, 2, 4, 7, 10, 14,
+  18, 22, 2, 3, 2, 3, 0, 2,
+  3, 1, 2, 3, 0, 1, 2, 3,
+  0, 1, 2, 3, 0, 1, 2, 3};
+static const casadi_int casadi_s28[29] = 
+  {7, 4, 0, 4, 8, 15, 22, 2,
+  4, 5, 6, 3, 4, 5, 6, 0,
+  1, 2, 3, 4, 5, 6, 0, 1,
+  2, 3, 4, 5, 6};
+static const casadi_int casadi_s29[34] = 
+  {4, 7, 0, 3, 6, 9, 12, 16,
+  20, 24, 0, 2, 3, 1, 2, 3,
+  0, 2, 3, 1, 2, 3, 0, 1,
+  2, 3, 0, 1, 2, 3, 0, 1,
+  2, 3};
+static const casadi_int casadi_s30[14] = 
+  {1, 2, 4, 5, 7, 8, 10, 11,
+  14, 15, 18, 19, 22, 23};
 
 static const casadi_real casadi_zeros[54] = 
   {0.};
@@ -17051,8 +17227,4606 @@ CASADI_SYMBOL_EXPORT int unequal_apd_preload_step_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* unequal_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+/* unequal_ctc_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
 static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a30=(a26*a10);
+  a29=(a29+a30);
+  a29=(a29+a21);
+  a30=casadi_sq(a29);
+  a28=(a28+a30);
+  a28=sqrt(a28);
+  a30=(a17+a28);
+  a30=casadi_fabs(a30);
+  a12=casadi_fmax(a12,a30);
+  a30=arg[5]? arg[5][17] : 0;
+  a12=(a12<=a30);
+  a30=arg[5]? arg[5][6] : 0;
+  a04=(a04/a23);
+  a31=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a31=(a31-a23);
+  a23=casadi_fabs(a31);
+  a06=(a06/a09);
+  a32=(a15*a06);
+  a08=(a08/a09);
+  a09=(a14*a08);
+  a32=(a32-a09);
+  a09=casadi_fabs(a32);
+  a33=(a23+a09);
+  a23=(a23-a09);
+  a23=casadi_fabs(a23);
+  a33=(a33-a23);
+  a23=2.;
+  a33=(a33/a23);
+  a29=(a29/a28);
+  a09=(a11*a29);
+  a24=(a24/a28);
+  a28=(a10*a24);
+  a09=(a09-a28);
+  a28=casadi_fabs(a09);
+  a34=(a33+a28);
+  a33=(a33-a28);
+  a33=casadi_fabs(a33);
+  a34=(a34-a33);
+  a34=(a34/a23);
+  a30=(a30<=a34);
+  a33=arg[5]? arg[5][7] : 0;
+  a28=1.;
+  a35=3.3333333333333331e-01;
+  a36=casadi_sq(a04);
+  a37=casadi_sq(a13);
+  a36=(a36-a37);
+  a37=casadi_sq(a06);
+  a38=casadi_sq(a08);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a37=casadi_sq(a29);
+  a38=casadi_sq(a24);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a36=casadi_sq(a36);
+  a37=(2.*a04);
+  a37=(a37*a13);
+  a38=(2.*a06);
+  a38=(a38*a08);
+  a37=(a37+a38);
+  a38=(2.*a29);
+  a38=(a38*a24);
+  a37=(a37+a38);
+  a37=casadi_sq(a37);
+  a36=(a36+a37);
+  a36=sqrt(a36);
+  a35=(a35*a36);
+  a35=(a28-a35);
+  a36=casadi_fabs(a35);
+  a35=(a35+a36);
+  a05=(a05*a35);
+  a05=sqrt(a05);
+  a33=(a33<=a05);
+  a30=(a30&&a33);
+  a33=2.3499999999999999e-01;
+  a33=(a33*a04);
+  a35=(a07*a33);
+  a36=(a00*a13);
+  a37=(a20*a03);
+  a38=(a36*a37);
+  a35=(a35-a38);
+  a33=(a33/a35);
+  a36=(a36/a35);
+  a38=casadi_sq(a36);
+  a39=(a01*a08);
+  a20=(a20*a06);
+  a40=(a22*a20);
+  a41=(a39*a19);
+  a40=(a40-a41);
+  a39=(a39/a40);
+  a41=casadi_sq(a39);
+  a38=(a38+a41);
+  a41=(a17*a24);
+  a18=(a18*a29);
+  a42=(a27*a18);
+  a43=(a41*a25);
+  a42=(a42-a43);
+  a41=(a41/a42);
+  a43=casadi_sq(a41);
+  a38=(a38+a43);
+  a43=arg[4]? arg[4][0] : 0;
+  a44=arg[5]? arg[5][2] : 0;
+  a45=arg[3]? arg[3][0] : 0;
+  a46=arg[0]? arg[0][2] : 0;
+  a47=arg[5]? arg[5][5] : 0;
+  a48=arg[0]? arg[0][0] : 0;
+  a49=(a21-a48);
+  a50=arg[5]? arg[5][4] : 0;
+  a49=(a49/a50);
+  a49=(a49-a46);
+  a49=(a47*a49);
+  a49=(a46+a49);
+  a45=(a45-a49);
+  a44=(a44*a45);
+  a43=(a43+a44);
+  a44=arg[5]? arg[5][0] : 0;
+  a51=arg[2]? arg[2][0] : 0;
+  a51=(a51-a21);
+  a44=(a44*a51);
+  a43=(a43+a44);
+  a44=(a33*a43);
+  a52=arg[4]? arg[4][1] : 0;
+  a53=arg[5]? arg[5][3] : 0;
+  a54=arg[3]? arg[3][1] : 0;
+  a55=arg[0]? arg[0][3] : 0;
+  a56=arg[0]? arg[0][1] : 0;
+  a57=(a16-a56);
+  a57=(a57/a50);
+  a57=(a57-a55);
+  a47=(a47*a57);
+  a47=(a55+a47);
+  a54=(a54-a47);
+  a53=(a53*a54);
+  a52=(a52+a53);
+  a53=arg[5]? arg[5][1] : 0;
+  a57=arg[2]? arg[2][1] : 0;
+  a57=(a57-a16);
+  a53=(a53*a57);
+  a52=(a52+a53);
+  a53=(a36*a52);
+  a44=(a44-a53);
+  a53=(a33*a49);
+  a50=(a36*a47);
+  a53=(a53-a50);
+  a50=(a01*a53);
+  a58=(a50*a02);
+  a58=(a58*a53);
+  a07=(a07/a35);
+  a59=(a07*a47);
+  a37=(a37/a35);
+  a35=(a37*a49);
+  a59=(a59-a35);
+  a00=(a00*a59);
+  a35=(a00*a13);
+  a35=(a35*a59);
+  a58=(a58+a35);
+  a35=(a36*a58);
+  a50=(a50*a03);
+  a50=(a50*a53);
+  a00=(a00*a04);
+  a00=(a00*a59);
+  a50=(a50+a00);
+  a00=(a33*a50);
+  a35=(a35-a00);
+  a44=(a44+a35);
+  a35=(a33*a44);
+  a00=arg[0]? arg[0][4] : 0;
+  a35=(a35*a00);
+  a20=(a20/a40);
+  a60=(a20*a43);
+  a61=(a39*a52);
+  a60=(a60-a61);
+  a61=(a20*a49);
+  a62=(a39*a47);
+  a61=(a61-a62);
+  a62=(a17*a61);
+  a63=(a62*a15);
+  a63=(a63*a61);
+  a22=(a22/a40);
+  a64=(a22*a47);
+  a19=(a19/a40);
+  a40=(a19*a49);
+  a64=(a64-a40);
+  a01=(a01*a64);
+  a40=(a01*a08);
+  a40=(a40*a64);
+  a63=(a63+a40);
+  a40=(a39*a63);
+  a62=(a62*a14);
+  a62=(a62*a61);
+  a01=(a01*a06);
+  a01=(a01*a64);
+  a62=(a62+a01);
+  a01=(a20*a62);
+  a40=(a40-a01);
+  a60=(a60+a40);
+  a40=(a20*a60);
+  a01=arg[0]? arg[0][5] : 0;
+  a40=(a40*a01);
+  a35=(a35+a40);
+  a18=(a18/a42);
+  a40=(a18*a43);
+  a65=(a41*a52);
+  a40=(a40-a65);
+  a65=(a18*a49);
+  a66=(a41*a47);
+  a65=(a65-a66);
+  a26=(a26*a65);
+  a66=(a26*a11);
+  a66=(a66*a65);
+  a27=(a27/a42);
+  a67=(a27*a47);
+  a25=(a25/a42);
+  a42=(a25*a49);
+  a67=(a67-a42);
+  a17=(a17*a67);
+  a42=(a17*a24);
+  a42=(a42*a67);
+  a66=(a66+a42);
+  a42=(a41*a66);
+  a26=(a26*a10);
+  a26=(a26*a65);
+  a17=(a17*a29);
+  a17=(a17*a67);
+  a26=(a26+a17);
+  a17=(a18*a26);
+  a42=(a42-a17);
+  a40=(a40+a42);
+  a42=(a18*a40);
+  a17=arg[0]? arg[0][6] : 0;
+  a42=(a42*a17);
+  a35=(a35+a42);
+  a42=(a07*a52);
+  a68=(a37*a43);
+  a42=(a42-a68);
+  a50=(a37*a50);
+  a58=(a07*a58);
+  a50=(a50-a58);
+  a42=(a42+a50);
+  a03=(a03*a04);
+  a02=(a02*a13);
+  a03=(a03+a02);
+  a02=(a42*a03);
+  a59=casadi_sq(a59);
+  a59=(a59*a31);
+  a02=(a02+a59);
+  a59=(a33*a02);
+  a03=(a44*a03);
+  a13=casadi_sq(a53);
+  a13=(a13*a31);
+  a03=(a03-a13);
+  a13=(a37*a03);
+  a59=(a59-a13);
+  a13=arg[0]? arg[0][7] : 0;
+  a59=(a59*a13);
+  a35=(a35+a59);
+  a59=(a22*a52);
+  a31=(a19*a43);
+  a59=(a59-a31);
+  a62=(a19*a62);
+  a63=(a22*a63);
+  a62=(a62-a63);
+  a59=(a59+a62);
+  a14=(a14*a06);
+  a15=(a15*a08);
+  a14=(a14+a15);
+  a15=(a59*a14);
+  a64=casadi_sq(a64);
+  a64=(a64*a32);
+  a15=(a15+a64);
+  a64=(a20*a15);
+  a14=(a60*a14);
+  a08=casadi_sq(a61);
+  a08=(a08*a32);
+  a14=(a14-a08);
+  a08=(a19*a14);
+  a64=(a64-a08);
+  a08=arg[0]? arg[0][8] : 0;
+  a64=(a64*a08);
+  a35=(a35+a64);
+  a52=(a27*a52);
+  a43=(a25*a43);
+  a52=(a52-a43);
+  a26=(a25*a26);
+  a66=(a27*a66);
+  a26=(a26-a66);
+  a52=(a52+a26);
+  a10=(a10*a29);
+  a11=(a11*a24);
+  a10=(a10+a11);
+  a11=(a52*a10);
+  a67=casadi_sq(a67);
+  a67=(a67*a09);
+  a11=(a11+a67);
+  a67=(a18*a11);
+  a10=(a40*a10);
+  a24=casadi_sq(a65);
+  a24=(a24*a09);
+  a10=(a10-a24);
+  a24=(a25*a10);
+  a67=(a67-a24);
+  a24=arg[0]? arg[0][9] : 0;
+  a67=(a67*a24);
+  a35=(a35+a67);
+  a37=(a37*a42);
+  a67=arg[0]? arg[0][10] : 0;
+  a37=(a37*a67);
+  a35=(a35-a37);
+  a19=(a19*a59);
+  a37=arg[0]? arg[0][11] : 0;
+  a19=(a19*a37);
+  a35=(a35-a19);
+  a25=(a25*a52);
+  a19=arg[0]? arg[0][12] : 0;
+  a25=(a25*a19);
+  a35=(a35-a25);
+  a25=(a33*a53);
+  a09=arg[0]? arg[0][13] : 0;
+  a25=(a25*a09);
+  a35=(a35+a25);
+  a25=(a20*a61);
+  a29=arg[0]? arg[0][14] : 0;
+  a25=(a25*a29);
+  a35=(a35+a25);
+  a25=(a18*a65);
+  a26=arg[0]? arg[0][15] : 0;
+  a25=(a25*a26);
+  a35=(a35+a25);
+  a25=0.;
+  a66=(a25<=a53);
+  a43=(a66?a28:0);
+  a66=(!a66);
+  a64=-1.;
+  a66=(a66?a64:0);
+  a43=(a43+a66);
+  a66=(a33*a43);
+  a32=arg[0]? arg[0][16] : 0;
+  a66=(a66*a32);
+  a35=(a35+a66);
+  a66=(a25<=a61);
+  a06=(a66?a28:0);
+  a66=(!a66);
+  a66=(a66?a64:0);
+  a06=(a06+a66);
+  a66=(a20*a06);
+  a62=arg[0]? arg[0][17] : 0;
+  a66=(a66*a62);
+  a35=(a35+a66);
+  a66=(a25<=a65);
+  a63=(a66?a28:0);
+  a66=(!a66);
+  a66=(a66?a64:0);
+  a63=(a63+a66);
+  a66=(a18*a63);
+  a64=arg[0]? arg[0][18] : 0;
+  a66=(a66*a64);
+  a35=(a35+a66);
+  a66=(a38*a35);
+  a31=(a33*a36);
+  a04=(a20*a39);
+  a31=(a31+a04);
+  a04=(a18*a41);
+  a31=(a31+a04);
+  a03=(a07*a03);
+  a02=(a36*a02);
+  a03=(a03-a02);
+  a03=(a03*a13);
+  a44=(a36*a44);
+  a44=(a44*a00);
+  a60=(a39*a60);
+  a60=(a60*a01);
+  a44=(a44+a60);
+  a40=(a41*a40);
+  a40=(a40*a17);
+  a44=(a44+a40);
+  a03=(a03-a44);
+  a14=(a22*a14);
+  a15=(a39*a15);
+  a14=(a14-a15);
+  a14=(a14*a08);
+  a03=(a03+a14);
+  a10=(a27*a10);
+  a11=(a41*a11);
+  a10=(a10-a11);
+  a10=(a10*a24);
+  a03=(a03+a10);
+  a07=(a07*a42);
+  a07=(a07*a67);
+  a03=(a03+a07);
+  a22=(a22*a59);
+  a22=(a22*a37);
+  a03=(a03+a22);
+  a27=(a27*a52);
+  a27=(a27*a19);
+  a03=(a03+a27);
+  a53=(a36*a53);
+  a53=(a53*a09);
+  a03=(a03-a53);
+  a61=(a39*a61);
+  a61=(a61*a29);
+  a03=(a03-a61);
+  a65=(a41*a65);
+  a65=(a65*a26);
+  a03=(a03-a65);
+  a43=(a36*a43);
+  a43=(a43*a32);
+  a03=(a03-a43);
+  a06=(a39*a06);
+  a06=(a06*a62);
+  a03=(a03-a06);
+  a63=(a41*a63);
+  a63=(a63*a64);
+  a03=(a03-a63);
+  a63=(a31*a03);
+  a66=(a66+a63);
+  a63=casadi_sq(a33);
+  a06=casadi_sq(a20);
+  a63=(a63+a06);
+  a06=casadi_sq(a18);
+  a63=(a63+a06);
+  a38=(a63*a38);
+  a06=(a36*a33);
+  a43=(a39*a20);
+  a06=(a06+a43);
+  a43=(a41*a18);
+  a06=(a06+a43);
+  a31=(a31*a06);
+  a38=(a38-a31);
+  a66=(a66/a38);
+  a33=(a33*a66);
+  a63=(a63*a03);
+  a06=(a06*a35);
+  a63=(a63+a06);
+  a63=(a63/a38);
+  a36=(a36*a63);
+  a33=(a33-a36);
+  a20=(a20*a66);
+  a39=(a39*a63);
+  a20=(a20-a39);
+  a39=(a33+a20);
+  a18=(a18*a66);
+  a41=(a41*a63);
+  a18=(a18-a41);
+  a39=(a39+a18);
+  a39=(a39+a00);
+  a39=(a39+a01);
+  a39=(a39+a17);
+  a39=(a39+a13);
+  a39=(a39+a08);
+  a39=(a39+a24);
+  a39=(a39+a67);
+  a39=(a39+a37);
+  a39=(a39+a19);
+  a39=(a39+a09);
+  a39=(a39+a29);
+  a39=(a39+a26);
+  a39=(a39+a32);
+  a39=(a39+a62);
+  a39=(a39+a64);
+  a39=(a39+a21);
+  a39=(a39+a16);
+  a39=(a39+a49);
+  a39=(a39+a47);
+  a39=casadi_fabs(a39);
+  a41=casadi_inf;
+  a39=(a39<a41);
+  a41=(a30&&a39);
+  a41=(a12&&a41);
+  a63=arg[5]? arg[5][8] : 0;
+  a66=(-a63);
+  a66=casadi_fmax(a33,a66);
+  a66=casadi_fmin(a66,a63);
+  a66=(a41?a66:0);
+  if (res[0]!=0) res[0][0]=a66;
+  a66=arg[5]? arg[5][9] : 0;
+  a36=(-a66);
+  a36=casadi_fmax(a20,a36);
+  a36=casadi_fmin(a36,a66);
+  a36=(a41?a36:0);
+  if (res[0]!=0) res[0][1]=a36;
+  a36=arg[5]? arg[5][10] : 0;
+  a38=(-a36);
+  a38=casadi_fmax(a18,a38);
+  a38=casadi_fmin(a38,a36);
+  a38=(a41?a38:0);
+  if (res[0]!=0) res[0][2]=a38;
+  a38=(a12&&a39);
+  a06=(a38?a21:0);
+  a35=(!a38);
+  a48=(a35?a48:0);
+  a06=(a06+a48);
+  if (res[1]!=0) res[1][0]=a06;
+  a06=(a38?a16:0);
+  a56=(a35?a56:0);
+  a06=(a06+a56);
+  if (res[1]!=0) res[1][1]=a06;
+  a06=(a38?a49:0);
+  a46=(a35?a46:0);
+  a06=(a06+a46);
+  if (res[1]!=0) res[1][2]=a06;
+  a38=(a38?a47:0);
+  a35=(a35?a55:0);
+  a38=(a38+a35);
+  if (res[1]!=0) res[1][3]=a38;
+  a38=(a41?a00:0);
+  a35=(!a41);
+  a00=(a35?a00:0);
+  a38=(a38+a00);
+  if (res[1]!=0) res[1][4]=a38;
+  a38=(a41?a01:0);
+  a01=(a35?a01:0);
+  a38=(a38+a01);
+  if (res[1]!=0) res[1][5]=a38;
+  a38=(a41?a17:0);
+  a17=(a35?a17:0);
+  a38=(a38+a17);
+  if (res[1]!=0) res[1][6]=a38;
+  a38=(a41?a13:0);
+  a13=(a35?a13:0);
+  a38=(a38+a13);
+  if (res[1]!=0) res[1][7]=a38;
+  a38=(a41?a08:0);
+  a08=(a35?a08:0);
+  a38=(a38+a08);
+  if (res[1]!=0) res[1][8]=a38;
+  a38=(a41?a24:0);
+  a24=(a35?a24:0);
+  a38=(a38+a24);
+  if (res[1]!=0) res[1][9]=a38;
+  a38=(a41?a67:0);
+  a67=(a35?a67:0);
+  a38=(a38+a67);
+  if (res[1]!=0) res[1][10]=a38;
+  a38=(a41?a37:0);
+  a37=(a35?a37:0);
+  a38=(a38+a37);
+  if (res[1]!=0) res[1][11]=a38;
+  a38=(a41?a19:0);
+  a19=(a35?a19:0);
+  a38=(a38+a19);
+  if (res[1]!=0) res[1][12]=a38;
+  a38=(a41?a09:0);
+  a09=(a35?a09:0);
+  a38=(a38+a09);
+  if (res[1]!=0) res[1][13]=a38;
+  a38=(a41?a29:0);
+  a29=(a35?a29:0);
+  a38=(a38+a29);
+  if (res[1]!=0) res[1][14]=a38;
+  a38=(a41?a26:0);
+  a26=(a35?a26:0);
+  a38=(a38+a26);
+  if (res[1]!=0) res[1][15]=a38;
+  a38=(a41?a32:0);
+  a32=(a35?a32:0);
+  a38=(a38+a32);
+  if (res[1]!=0) res[1][16]=a38;
+  a38=(a41?a62:0);
+  a62=(a35?a62:0);
+  a38=(a38+a62);
+  if (res[1]!=0) res[1][17]=a38;
+  a41=(a41?a64:0);
+  a35=(a35?a64:0);
+  a41=(a41+a35);
+  if (res[1]!=0) res[1][18]=a41;
+  a33=casadi_fabs(a33);
+  a33=(a33-a63);
+  a20=casadi_fabs(a20);
+  a20=(a20-a66);
+  a33=casadi_fmax(a33,a20);
+  a18=casadi_fabs(a18);
+  a18=(a18-a36);
+  a33=casadi_fmax(a33,a18);
+  a25=(a25<a33);
+  a25=(a25?a23:0);
+  a25=(a39?a25:0);
+  a39=(!a39);
+  a23=3.;
+  a39=(a39?a23:0);
+  a25=(a25+a39);
+  a25=(a30?a25:0);
+  a30=(!a30);
+  a30=(a30?a28:0);
+  a25=(a25+a30);
+  a25=(a12?a25:0);
+  a12=(!a12);
+  a30=5.;
+  a12=(a12?a30:0);
+  a25=(a25+a12);
+  if (res[2]!=0) res[2][0]=a25;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a49;
+  if (res[3]!=0) res[3][3]=a47;
+  if (res[3]!=0) res[3][4]=a51;
+  if (res[3]!=0) res[3][5]=a57;
+  if (res[3]!=0) res[3][6]=a45;
+  if (res[3]!=0) res[3][7]=a54;
+  if (res[3]!=0) res[3][8]=a34;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f27(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_ctc_minmax_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a30=(a26*a10);
+  a29=(a29+a30);
+  a29=(a29+a21);
+  a30=casadi_sq(a29);
+  a28=(a28+a30);
+  a28=sqrt(a28);
+  a30=(a17+a28);
+  a30=casadi_fabs(a30);
+  a12=casadi_fmax(a12,a30);
+  a30=arg[5]? arg[5][17] : 0;
+  a12=(a12<=a30);
+  a30=arg[5]? arg[5][6] : 0;
+  a04=(a04/a23);
+  a31=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a31=(a31-a23);
+  a23=casadi_fabs(a31);
+  a06=(a06/a09);
+  a32=(a15*a06);
+  a08=(a08/a09);
+  a09=(a14*a08);
+  a32=(a32-a09);
+  a09=casadi_fabs(a32);
+  a33=(a23+a09);
+  a23=(a23-a09);
+  a23=casadi_fabs(a23);
+  a33=(a33-a23);
+  a23=2.;
+  a33=(a33/a23);
+  a29=(a29/a28);
+  a09=(a11*a29);
+  a24=(a24/a28);
+  a28=(a10*a24);
+  a09=(a09-a28);
+  a28=casadi_fabs(a09);
+  a34=(a33+a28);
+  a33=(a33-a28);
+  a33=casadi_fabs(a33);
+  a34=(a34-a33);
+  a34=(a34/a23);
+  a30=(a30<=a34);
+  a33=arg[5]? arg[5][7] : 0;
+  a28=1.;
+  a35=3.3333333333333331e-01;
+  a36=casadi_sq(a04);
+  a37=casadi_sq(a13);
+  a36=(a36-a37);
+  a37=casadi_sq(a06);
+  a38=casadi_sq(a08);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a37=casadi_sq(a29);
+  a38=casadi_sq(a24);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a36=casadi_sq(a36);
+  a37=(2.*a04);
+  a37=(a37*a13);
+  a38=(2.*a06);
+  a38=(a38*a08);
+  a37=(a37+a38);
+  a38=(2.*a29);
+  a38=(a38*a24);
+  a37=(a37+a38);
+  a37=casadi_sq(a37);
+  a36=(a36+a37);
+  a36=sqrt(a36);
+  a35=(a35*a36);
+  a35=(a28-a35);
+  a36=casadi_fabs(a35);
+  a35=(a35+a36);
+  a05=(a05*a35);
+  a05=sqrt(a05);
+  a33=(a33<=a05);
+  a30=(a30&&a33);
+  a33=arg[5]? arg[5][8] : 0;
+  a35=2.3499999999999999e-01;
+  a35=(a35*a04);
+  a36=(a07*a35);
+  a37=(a00*a13);
+  a38=(a20*a03);
+  a39=(a37*a38);
+  a36=(a36-a39);
+  a35=(a35/a36);
+  a39=(a33*a35);
+  a40=0.;
+  a41=arg[4]? arg[4][0] : 0;
+  a42=arg[5]? arg[5][2] : 0;
+  a43=arg[3]? arg[3][0] : 0;
+  a44=arg[0]? arg[0][2] : 0;
+  a45=arg[5]? arg[5][5] : 0;
+  a46=arg[0]? arg[0][0] : 0;
+  a47=(a21-a46);
+  a48=arg[5]? arg[5][4] : 0;
+  a47=(a47/a48);
+  a47=(a47-a44);
+  a47=(a45*a47);
+  a47=(a44+a47);
+  a43=(a43-a47);
+  a42=(a42*a43);
+  a41=(a41+a42);
+  a42=arg[5]? arg[5][0] : 0;
+  a49=arg[2]? arg[2][0] : 0;
+  a49=(a49-a21);
+  a42=(a42*a49);
+  a41=(a41+a42);
+  a42=(a35*a41);
+  a37=(a37/a36);
+  a50=arg[4]? arg[4][1] : 0;
+  a51=arg[5]? arg[5][3] : 0;
+  a52=arg[3]? arg[3][1] : 0;
+  a53=arg[0]? arg[0][3] : 0;
+  a54=arg[0]? arg[0][1] : 0;
+  a55=(a16-a54);
+  a55=(a55/a48);
+  a55=(a55-a53);
+  a45=(a45*a55);
+  a45=(a53+a45);
+  a52=(a52-a45);
+  a51=(a51*a52);
+  a50=(a50+a51);
+  a51=arg[5]? arg[5][1] : 0;
+  a55=arg[2]? arg[2][1] : 0;
+  a55=(a55-a16);
+  a51=(a51*a55);
+  a50=(a50+a51);
+  a51=(a37*a50);
+  a42=(a42-a51);
+  a51=(a35*a47);
+  a48=(a37*a45);
+  a51=(a51-a48);
+  a48=(a01*a51);
+  a56=(a48*a02);
+  a56=(a56*a51);
+  a07=(a07/a36);
+  a57=(a07*a45);
+  a38=(a38/a36);
+  a36=(a38*a47);
+  a57=(a57-a36);
+  a00=(a00*a57);
+  a36=(a00*a13);
+  a36=(a36*a57);
+  a56=(a56+a36);
+  a36=(a37*a56);
+  a48=(a48*a03);
+  a48=(a48*a51);
+  a00=(a00*a04);
+  a00=(a00*a57);
+  a48=(a48+a00);
+  a00=(a35*a48);
+  a36=(a36-a00);
+  a42=(a42+a36);
+  a36=(a35*a42);
+  a00=arg[0]? arg[0][4] : 0;
+  a36=(a36*a00);
+  a20=(a20*a06);
+  a58=(a22*a20);
+  a59=(a01*a08);
+  a60=(a59*a19);
+  a58=(a58-a60);
+  a20=(a20/a58);
+  a60=(a20*a41);
+  a59=(a59/a58);
+  a61=(a59*a50);
+  a60=(a60-a61);
+  a61=(a20*a47);
+  a62=(a59*a45);
+  a61=(a61-a62);
+  a62=(a17*a61);
+  a63=(a62*a15);
+  a63=(a63*a61);
+  a22=(a22/a58);
+  a64=(a22*a45);
+  a19=(a19/a58);
+  a58=(a19*a47);
+  a64=(a64-a58);
+  a01=(a01*a64);
+  a58=(a01*a08);
+  a58=(a58*a64);
+  a63=(a63+a58);
+  a58=(a59*a63);
+  a62=(a62*a14);
+  a62=(a62*a61);
+  a01=(a01*a06);
+  a01=(a01*a64);
+  a62=(a62+a01);
+  a01=(a20*a62);
+  a58=(a58-a01);
+  a60=(a60+a58);
+  a58=(a20*a60);
+  a01=arg[0]? arg[0][5] : 0;
+  a58=(a58*a01);
+  a36=(a36+a58);
+  a18=(a18*a29);
+  a58=(a27*a18);
+  a65=(a17*a24);
+  a66=(a65*a25);
+  a58=(a58-a66);
+  a18=(a18/a58);
+  a66=(a18*a41);
+  a65=(a65/a58);
+  a67=(a65*a50);
+  a66=(a66-a67);
+  a67=(a18*a47);
+  a68=(a65*a45);
+  a67=(a67-a68);
+  a26=(a26*a67);
+  a68=(a26*a11);
+  a68=(a68*a67);
+  a27=(a27/a58);
+  a69=(a27*a45);
+  a25=(a25/a58);
+  a58=(a25*a47);
+  a69=(a69-a58);
+  a17=(a17*a69);
+  a58=(a17*a24);
+  a58=(a58*a69);
+  a68=(a68+a58);
+  a58=(a65*a68);
+  a26=(a26*a10);
+  a26=(a26*a67);
+  a17=(a17*a29);
+  a17=(a17*a69);
+  a26=(a26+a17);
+  a17=(a18*a26);
+  a58=(a58-a17);
+  a66=(a66+a58);
+  a58=(a18*a66);
+  a17=arg[0]? arg[0][6] : 0;
+  a58=(a58*a17);
+  a36=(a36+a58);
+  a58=(a07*a50);
+  a70=(a38*a41);
+  a58=(a58-a70);
+  a48=(a38*a48);
+  a56=(a07*a56);
+  a48=(a48-a56);
+  a58=(a58+a48);
+  a03=(a03*a04);
+  a02=(a02*a13);
+  a03=(a03+a02);
+  a02=(a58*a03);
+  a57=casadi_sq(a57);
+  a57=(a57*a31);
+  a02=(a02+a57);
+  a57=(a35*a02);
+  a03=(a42*a03);
+  a13=casadi_sq(a51);
+  a13=(a13*a31);
+  a03=(a03-a13);
+  a13=(a38*a03);
+  a57=(a57-a13);
+  a13=arg[0]? arg[0][7] : 0;
+  a57=(a57*a13);
+  a36=(a36+a57);
+  a57=(a22*a50);
+  a31=(a19*a41);
+  a57=(a57-a31);
+  a62=(a19*a62);
+  a63=(a22*a63);
+  a62=(a62-a63);
+  a57=(a57+a62);
+  a14=(a14*a06);
+  a15=(a15*a08);
+  a14=(a14+a15);
+  a15=(a57*a14);
+  a64=casadi_sq(a64);
+  a64=(a64*a32);
+  a15=(a15+a64);
+  a64=(a20*a15);
+  a14=(a60*a14);
+  a08=casadi_sq(a61);
+  a08=(a08*a32);
+  a14=(a14-a08);
+  a08=(a19*a14);
+  a64=(a64-a08);
+  a08=arg[0]? arg[0][8] : 0;
+  a64=(a64*a08);
+  a36=(a36+a64);
+  a50=(a27*a50);
+  a41=(a25*a41);
+  a50=(a50-a41);
+  a26=(a25*a26);
+  a68=(a27*a68);
+  a26=(a26-a68);
+  a50=(a50+a26);
+  a10=(a10*a29);
+  a11=(a11*a24);
+  a10=(a10+a11);
+  a11=(a50*a10);
+  a69=casadi_sq(a69);
+  a69=(a69*a09);
+  a11=(a11+a69);
+  a69=(a18*a11);
+  a10=(a66*a10);
+  a24=casadi_sq(a67);
+  a24=(a24*a09);
+  a10=(a10-a24);
+  a24=(a25*a10);
+  a69=(a69-a24);
+  a24=arg[0]? arg[0][9] : 0;
+  a69=(a69*a24);
+  a36=(a36+a69);
+  a38=(a38*a58);
+  a69=arg[0]? arg[0][10] : 0;
+  a38=(a38*a69);
+  a36=(a36-a38);
+  a19=(a19*a57);
+  a38=arg[0]? arg[0][11] : 0;
+  a19=(a19*a38);
+  a36=(a36-a19);
+  a25=(a25*a50);
+  a19=arg[0]? arg[0][12] : 0;
+  a25=(a25*a19);
+  a36=(a36-a25);
+  a25=(a35*a51);
+  a09=arg[0]? arg[0][13] : 0;
+  a25=(a25*a09);
+  a36=(a36+a25);
+  a25=(a20*a61);
+  a29=arg[0]? arg[0][14] : 0;
+  a25=(a25*a29);
+  a36=(a36+a25);
+  a25=(a18*a67);
+  a26=arg[0]? arg[0][15] : 0;
+  a25=(a25*a26);
+  a36=(a36+a25);
+  a25=(a40<=a51);
+  a68=(a25?a28:0);
+  a25=(!a25);
+  a41=-1.;
+  a25=(a25?a41:0);
+  a68=(a68+a25);
+  a35=(a35*a68);
+  a25=arg[0]? arg[0][16] : 0;
+  a35=(a35*a25);
+  a36=(a36+a35);
+  a35=(a40<=a61);
+  a64=(a35?a28:0);
+  a35=(!a35);
+  a35=(a35?a41:0);
+  a64=(a64+a35);
+  a35=(a20*a64);
+  a32=arg[0]? arg[0][17] : 0;
+  a35=(a35*a32);
+  a36=(a36+a35);
+  a35=(a40<=a67);
+  a06=(a35?a28:0);
+  a35=(!a35);
+  a35=(a35?a41:0);
+  a06=(a06+a35);
+  a35=(a18*a06);
+  a41=arg[0]? arg[0][18] : 0;
+  a35=(a35*a41);
+  a36=(a36+a35);
+  a35=(a33*a37);
+  a62=(a36*a35);
+  a03=(a07*a03);
+  a02=(a37*a02);
+  a03=(a03-a02);
+  a03=(a03*a13);
+  a42=(a37*a42);
+  a42=(a42*a00);
+  a60=(a59*a60);
+  a60=(a60*a01);
+  a42=(a42+a60);
+  a66=(a65*a66);
+  a66=(a66*a17);
+  a42=(a42+a66);
+  a03=(a03-a42);
+  a14=(a22*a14);
+  a15=(a59*a15);
+  a14=(a14-a15);
+  a14=(a14*a08);
+  a03=(a03+a14);
+  a10=(a27*a10);
+  a11=(a65*a11);
+  a10=(a10-a11);
+  a10=(a10*a24);
+  a03=(a03+a10);
+  a07=(a07*a58);
+  a07=(a07*a69);
+  a03=(a03+a07);
+  a22=(a22*a57);
+  a22=(a22*a38);
+  a03=(a03+a22);
+  a27=(a27*a50);
+  a27=(a27*a19);
+  a03=(a03+a27);
+  a51=(a37*a51);
+  a51=(a51*a09);
+  a03=(a03-a51);
+  a61=(a59*a61);
+  a61=(a61*a29);
+  a03=(a03-a61);
+  a67=(a65*a67);
+  a67=(a67*a26);
+  a03=(a03-a67);
+  a37=(a37*a68);
+  a37=(a37*a25);
+  a03=(a03-a37);
+  a64=(a59*a64);
+  a64=(a64*a32);
+  a03=(a03-a64);
+  a06=(a65*a06);
+  a06=(a06*a41);
+  a03=(a03-a06);
+  a06=(a03*a39);
+  a62=(a62+a06);
+  a62=casadi_fabs(a62);
+  a40=(a40<a62);
+  a06=arg[5]? arg[5][9] : 0;
+  a59=(a06*a59);
+  a64=(a39*a59);
+  a20=(a06*a20);
+  a37=(a35*a20);
+  a64=(a64-a37);
+  a64=casadi_fabs(a64);
+  a37=arg[5]? arg[5][10] : 0;
+  a18=(a37*a18);
+  a68=(a18*a59);
+  a65=(a37*a65);
+  a67=(a65*a20);
+  a68=(a68-a67);
+  a68=casadi_fabs(a68);
+  a64=(a64+a68);
+  a68=(a62*a64);
+  a68=(a40?a68:0);
+  a67=(a36*a59);
+  a61=(a03*a20);
+  a67=(a67+a61);
+  a67=casadi_fabs(a67);
+  a61=(a20*a35);
+  a51=(a59*a39);
+  a61=(a61-a51);
+  a61=casadi_fabs(a61);
+  a51=(a18*a35);
+  a27=(a65*a39);
+  a51=(a51-a27);
+  a51=casadi_fabs(a51);
+  a61=(a61+a51);
+  a61=(a40?a61:0);
+  a51=(!a40);
+  a27=(a51?a28:0);
+  a61=(a61+a27);
+  a27=(a67*a61);
+  a68=(a68<a27);
+  a67=(a68?a67:0);
+  a27=(!a68);
+  a62=(a40?a62:0);
+  a62=(a27?a62:0);
+  a67=(a67+a62);
+  a62=(a39*a65);
+  a50=(a35*a18);
+  a62=(a62-a50);
+  a62=casadi_fabs(a62);
+  a50=(a20*a65);
+  a22=(a59*a18);
+  a50=(a50-a22);
+  a50=casadi_fabs(a50);
+  a62=(a62+a50);
+  a50=(a67*a62);
+  a22=(a36*a65);
+  a57=(a03*a18);
+  a22=(a22+a57);
+  a22=casadi_fabs(a22);
+  a64=(a68?a64:0);
+  a61=(a27?a61:0);
+  a64=(a64+a61);
+  a61=(a22*a64);
+  a50=(a50<a61);
+  a61=(a50?a65:0);
+  a57=(!a50);
+  a07=(a68?a59:0);
+  a58=(a40?a35:0);
+  a10=(a51?a35:0);
+  a58=(a58+a10);
+  a58=(a27?a58:0);
+  a07=(a07+a58);
+  a07=(a57?a07:0);
+  a61=(a61+a07);
+  a07=(a36*a61);
+  a58=(a50?a18:0);
+  a68=(a68?a20:0);
+  a40=(a40?a39:0);
+  a51=(a51?a39:0);
+  a40=(a40+a51);
+  a27=(a27?a40:0);
+  a68=(a68+a27);
+  a68=(a57?a68:0);
+  a58=(a58+a68);
+  a68=(a03*a58);
+  a07=(a07+a68);
+  a07=casadi_sign(a07);
+  a68=(a61*a07);
+  a27=(a39*a68);
+  a07=(a58*a07);
+  a40=(a35*a07);
+  a27=(a27-a40);
+  a40=casadi_sq(a27);
+  a51=9.9999999999999992e-25;
+  a10=casadi_sq(a39);
+  a11=casadi_sq(a35);
+  a10=(a10+a11);
+  a10=(a51*a10);
+  a11=casadi_sq(a61);
+  a14=casadi_sq(a58);
+  a11=(a11+a14);
+  a10=(a10*a11);
+  a40=(a40<=a10);
+  a10=(a39*a58);
+  a14=(a35*a61);
+  a10=(a10+a14);
+  a14=casadi_sign(a10);
+  a15=(!a40);
+  a22=(a50?a22:0);
+  a67=(a57?a67:0);
+  a22=(a22+a67);
+  a50=(a50?a62:0);
+  a57=(a57?a64:0);
+  a50=(a50+a57);
+  a22=(a22/a50);
+  a27=casadi_sign(a27);
+  a27=(a22*a27);
+  a39=(a27*a39);
+  a39=(a15?a39:0);
+  a50=(a20*a68);
+  a57=(a59*a07);
+  a50=(a50-a57);
+  a57=casadi_sq(a50);
+  a64=casadi_sq(a20);
+  a62=casadi_sq(a59);
+  a64=(a64+a62);
+  a64=(a51*a64);
+  a64=(a64*a11);
+  a57=(a57<=a64);
+  a64=(!a57);
+  a50=casadi_sign(a50);
+  a50=(a22*a50);
+  a62=(a50*a20);
+  a62=(a64?a62:0);
+  a39=(a39+a62);
+  a68=(a18*a68);
+  a07=(a65*a07);
+  a68=(a68-a07);
+  a07=casadi_sq(a68);
+  a62=casadi_sq(a18);
+  a67=casadi_sq(a65);
+  a62=(a62+a67);
+  a51=(a51*a62);
+  a51=(a51*a11);
+  a07=(a07<=a51);
+  a51=(!a07);
+  a68=casadi_sign(a68);
+  a68=(a22*a68);
+  a11=(a68*a18);
+  a11=(a51?a11:0);
+  a39=(a39+a11);
+  a36=(a36-a39);
+  a36=(a36*a58);
+  a35=(a27*a35);
+  a35=(-a35);
+  a35=(a15?a35:0);
+  a39=(a50*a59);
+  a39=(-a39);
+  a39=(a64?a39:0);
+  a35=(a35+a39);
+  a39=(a68*a65);
+  a39=(-a39);
+  a39=(a51?a39:0);
+  a35=(a35+a39);
+  a03=(a03-a35);
+  a03=(a03*a61);
+  a36=(a36-a03);
+  a10=casadi_fabs(a10);
+  a10=(a40?a10:0);
+  a20=(a20*a58);
+  a59=(a59*a61);
+  a20=(a20+a59);
+  a59=casadi_fabs(a20);
+  a59=(a57?a59:0);
+  a10=(a10+a59);
+  a18=(a18*a58);
+  a65=(a65*a61);
+  a18=(a18+a65);
+  a65=casadi_fabs(a18);
+  a65=(a07?a65:0);
+  a10=(a10+a65);
+  a36=(a36/a10);
+  a14=(a14*a36);
+  a40=(a40?a14:0);
+  a27=(a15?a27:0);
+  a15=(a15?a27:0);
+  a40=(a40+a15);
+  a40=(a33*a40);
+  a20=casadi_sign(a20);
+  a20=(a20*a36);
+  a57=(a57?a20:0);
+  a50=(a64?a50:0);
+  a64=(a64?a50:0);
+  a57=(a57+a64);
+  a57=(a06*a57);
+  a64=(a40+a57);
+  a18=casadi_sign(a18);
+  a18=(a18*a36);
+  a07=(a07?a18:0);
+  a68=(a51?a68:0);
+  a51=(a51?a68:0);
+  a07=(a07+a51);
+  a07=(a37*a07);
+  a64=(a64+a07);
+  a64=(a64+a00);
+  a64=(a64+a01);
+  a64=(a64+a17);
+  a64=(a64+a13);
+  a64=(a64+a08);
+  a64=(a64+a24);
+  a64=(a64+a69);
+  a64=(a64+a38);
+  a64=(a64+a19);
+  a64=(a64+a09);
+  a64=(a64+a29);
+  a64=(a64+a26);
+  a64=(a64+a25);
+  a64=(a64+a32);
+  a64=(a64+a41);
+  a64=(a64+a21);
+  a64=(a64+a16);
+  a64=(a64+a47);
+  a64=(a64+a45);
+  a64=casadi_fabs(a64);
+  a51=casadi_inf;
+  a64=(a64<a51);
+  a51=(a30&&a64);
+  a51=(a12&&a51);
+  a68=(-a33);
+  a40=casadi_fmax(a40,a68);
+  a40=casadi_fmin(a40,a33);
+  a40=(a51?a40:0);
+  if (res[0]!=0) res[0][0]=a40;
+  a40=(-a06);
+  a57=casadi_fmax(a57,a40);
+  a57=casadi_fmin(a57,a06);
+  a57=(a51?a57:0);
+  if (res[0]!=0) res[0][1]=a57;
+  a57=(-a37);
+  a07=casadi_fmax(a07,a57);
+  a07=casadi_fmin(a07,a37);
+  a07=(a51?a07:0);
+  if (res[0]!=0) res[0][2]=a07;
+  a07=(a12&&a64);
+  a37=(a07?a21:0);
+  a57=(!a07);
+  a46=(a57?a46:0);
+  a37=(a37+a46);
+  if (res[1]!=0) res[1][0]=a37;
+  a37=(a07?a16:0);
+  a54=(a57?a54:0);
+  a37=(a37+a54);
+  if (res[1]!=0) res[1][1]=a37;
+  a37=(a07?a47:0);
+  a44=(a57?a44:0);
+  a37=(a37+a44);
+  if (res[1]!=0) res[1][2]=a37;
+  a07=(a07?a45:0);
+  a57=(a57?a53:0);
+  a07=(a07+a57);
+  if (res[1]!=0) res[1][3]=a07;
+  a07=(a51?a00:0);
+  a57=(!a51);
+  a00=(a57?a00:0);
+  a07=(a07+a00);
+  if (res[1]!=0) res[1][4]=a07;
+  a07=(a51?a01:0);
+  a01=(a57?a01:0);
+  a07=(a07+a01);
+  if (res[1]!=0) res[1][5]=a07;
+  a07=(a51?a17:0);
+  a17=(a57?a17:0);
+  a07=(a07+a17);
+  if (res[1]!=0) res[1][6]=a07;
+  a07=(a51?a13:0);
+  a13=(a57?a13:0);
+  a07=(a07+a13);
+  if (res[1]!=0) res[1][7]=a07;
+  a07=(a51?a08:0);
+  a08=(a57?a08:0);
+  a07=(a07+a08);
+  if (res[1]!=0) res[1][8]=a07;
+  a07=(a51?a24:0);
+  a24=(a57?a24:0);
+  a07=(a07+a24);
+  if (res[1]!=0) res[1][9]=a07;
+  a07=(a51?a69:0);
+  a69=(a57?a69:0);
+  a07=(a07+a69);
+  if (res[1]!=0) res[1][10]=a07;
+  a07=(a51?a38:0);
+  a38=(a57?a38:0);
+  a07=(a07+a38);
+  if (res[1]!=0) res[1][11]=a07;
+  a07=(a51?a19:0);
+  a19=(a57?a19:0);
+  a07=(a07+a19);
+  if (res[1]!=0) res[1][12]=a07;
+  a07=(a51?a09:0);
+  a09=(a57?a09:0);
+  a07=(a07+a09);
+  if (res[1]!=0) res[1][13]=a07;
+  a07=(a51?a29:0);
+  a29=(a57?a29:0);
+  a07=(a07+a29);
+  if (res[1]!=0) res[1][14]=a07;
+  a07=(a51?a26:0);
+  a26=(a57?a26:0);
+  a07=(a07+a26);
+  if (res[1]!=0) res[1][15]=a07;
+  a07=(a51?a25:0);
+  a25=(a57?a25:0);
+  a07=(a07+a25);
+  if (res[1]!=0) res[1][16]=a07;
+  a07=(a51?a32:0);
+  a32=(a57?a32:0);
+  a07=(a07+a32);
+  if (res[1]!=0) res[1][17]=a07;
+  a51=(a51?a41:0);
+  a57=(a57?a41:0);
+  a51=(a51+a57);
+  if (res[1]!=0) res[1][18]=a51;
+  a22=(a28<a22);
+  a22=(a22?a23:0);
+  a22=(a64?a22:0);
+  a64=(!a64);
+  a23=3.;
+  a64=(a64?a23:0);
+  a22=(a22+a64);
+  a22=(a30?a22:0);
+  a30=(!a30);
+  a30=(a30?a28:0);
+  a22=(a22+a30);
+  a22=(a12?a22:0);
+  a12=(!a12);
+  a30=5.;
+  a12=(a12?a30:0);
+  a22=(a22+a12);
+  if (res[2]!=0) res[2][0]=a22;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a47;
+  if (res[3]!=0) res[3][3]=a45;
+  if (res[3]!=0) res[3][4]=a49;
+  if (res[3]!=0) res[3][5]=a55;
+  if (res[3]!=0) res[3][6]=a43;
+  if (res[3]!=0) res[3][7]=a52;
+  if (res[3]!=0) res[3][8]=a34;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f28(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_minmax_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 6*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_ctc_preload_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[18])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a30=(a26*a10);
+  a29=(a29+a30);
+  a29=(a29+a21);
+  a30=casadi_sq(a29);
+  a28=(a28+a30);
+  a28=sqrt(a28);
+  a30=(a17+a28);
+  a30=casadi_fabs(a30);
+  a12=casadi_fmax(a12,a30);
+  a30=arg[5]? arg[5][17] : 0;
+  a12=(a12<=a30);
+  a30=arg[5]? arg[5][6] : 0;
+  a04=(a04/a23);
+  a31=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a31=(a31-a23);
+  a23=casadi_fabs(a31);
+  a06=(a06/a09);
+  a32=(a15*a06);
+  a08=(a08/a09);
+  a09=(a14*a08);
+  a32=(a32-a09);
+  a09=casadi_fabs(a32);
+  a33=(a23+a09);
+  a23=(a23-a09);
+  a23=casadi_fabs(a23);
+  a33=(a33-a23);
+  a23=2.;
+  a33=(a33/a23);
+  a29=(a29/a28);
+  a09=(a11*a29);
+  a24=(a24/a28);
+  a28=(a10*a24);
+  a09=(a09-a28);
+  a28=casadi_fabs(a09);
+  a34=(a33+a28);
+  a33=(a33-a28);
+  a33=casadi_fabs(a33);
+  a34=(a34-a33);
+  a34=(a34/a23);
+  a30=(a30<=a34);
+  a33=arg[5]? arg[5][7] : 0;
+  a28=1.;
+  a35=3.3333333333333331e-01;
+  a36=casadi_sq(a04);
+  a37=casadi_sq(a13);
+  a36=(a36-a37);
+  a37=casadi_sq(a06);
+  a38=casadi_sq(a08);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a37=casadi_sq(a29);
+  a38=casadi_sq(a24);
+  a37=(a37-a38);
+  a36=(a36+a37);
+  a36=casadi_sq(a36);
+  a37=(2.*a04);
+  a37=(a37*a13);
+  a38=(2.*a06);
+  a38=(a38*a08);
+  a37=(a37+a38);
+  a38=(2.*a29);
+  a38=(a38*a24);
+  a37=(a37+a38);
+  a37=casadi_sq(a37);
+  a36=(a36+a37);
+  a36=sqrt(a36);
+  a35=(a35*a36);
+  a35=(a28-a35);
+  a36=casadi_fabs(a35);
+  a35=(a35+a36);
+  a05=(a05*a35);
+  a05=sqrt(a05);
+  a33=(a33<=a05);
+  a30=(a30&&a33);
+  a33=2.3499999999999999e-01;
+  a33=(a33*a04);
+  a35=(a07*a33);
+  a36=(a00*a13);
+  a37=(a20*a03);
+  a38=(a36*a37);
+  a35=(a35-a38);
+  a33=(a33/a35);
+  a20=(a20*a06);
+  a38=(a22*a20);
+  a39=(a01*a08);
+  a40=(a39*a19);
+  a38=(a38-a40);
+  a20=(a20/a38);
+  a18=(a18*a29);
+  a40=(a27*a18);
+  a41=(a17*a24);
+  a42=(a41*a25);
+  a40=(a40-a42);
+  a18=(a18/a40);
+  a36=(a36/a35);
+  a42=(-a36);
+  a39=(a39/a38);
+  a43=(-a39);
+  a41=(a41/a40);
+  a44=(-a41);
+  a45=arg[4]? arg[4][0] : 0;
+  a46=arg[5]? arg[5][2] : 0;
+  a47=arg[3]? arg[3][0] : 0;
+  a48=arg[0]? arg[0][2] : 0;
+  a49=arg[5]? arg[5][5] : 0;
+  a50=arg[0]? arg[0][0] : 0;
+  a51=(a21-a50);
+  a52=arg[5]? arg[5][4] : 0;
+  a51=(a51/a52);
+  a51=(a51-a48);
+  a51=(a49*a51);
+  a51=(a48+a51);
+  a47=(a47-a51);
+  a46=(a46*a47);
+  a45=(a45+a46);
+  a46=arg[5]? arg[5][0] : 0;
+  a53=arg[2]? arg[2][0] : 0;
+  a53=(a53-a21);
+  a46=(a46*a53);
+  a45=(a45+a46);
+  a46=(a33*a45);
+  a54=arg[4]? arg[4][1] : 0;
+  a55=arg[5]? arg[5][3] : 0;
+  a56=arg[3]? arg[3][1] : 0;
+  a57=arg[0]? arg[0][3] : 0;
+  a58=arg[0]? arg[0][1] : 0;
+  a59=(a16-a58);
+  a59=(a59/a52);
+  a59=(a59-a57);
+  a49=(a49*a59);
+  a49=(a57+a49);
+  a56=(a56-a49);
+  a55=(a55*a56);
+  a54=(a54+a55);
+  a55=arg[5]? arg[5][1] : 0;
+  a59=arg[2]? arg[2][1] : 0;
+  a59=(a59-a16);
+  a55=(a55*a59);
+  a54=(a54+a55);
+  a55=(a36*a54);
+  a46=(a46-a55);
+  a55=(a33*a51);
+  a52=(a36*a49);
+  a55=(a55-a52);
+  a52=(a01*a55);
+  a60=(a52*a02);
+  a60=(a60*a55);
+  a07=(a07/a35);
+  a61=(a07*a49);
+  a37=(a37/a35);
+  a35=(a37*a51);
+  a61=(a61-a35);
+  a35=(a00*a61);
+  a62=(a35*a13);
+  a62=(a62*a61);
+  a60=(a60+a62);
+  a62=(a36*a60);
+  a52=(a52*a03);
+  a52=(a52*a55);
+  a35=(a35*a04);
+  a35=(a35*a61);
+  a52=(a52+a35);
+  a35=(a33*a52);
+  a62=(a62-a35);
+  a46=(a46+a62);
+  a62=(a33*a46);
+  a35=arg[0]? arg[0][4] : 0;
+  a62=(a62*a35);
+  a63=(a20*a45);
+  a64=(a39*a54);
+  a63=(a63-a64);
+  a64=(a20*a51);
+  a65=(a39*a49);
+  a64=(a64-a65);
+  a65=(a17*a64);
+  a66=(a65*a15);
+  a66=(a66*a64);
+  a22=(a22/a38);
+  a67=(a22*a49);
+  a19=(a19/a38);
+  a38=(a19*a51);
+  a67=(a67-a38);
+  a01=(a01*a67);
+  a38=(a01*a08);
+  a38=(a38*a67);
+  a66=(a66+a38);
+  a38=(a39*a66);
+  a65=(a65*a14);
+  a65=(a65*a64);
+  a01=(a01*a06);
+  a01=(a01*a67);
+  a65=(a65+a01);
+  a01=(a20*a65);
+  a38=(a38-a01);
+  a63=(a63+a38);
+  a38=(a20*a63);
+  a01=arg[0]? arg[0][5] : 0;
+  a38=(a38*a01);
+  a62=(a62+a38);
+  a38=(a18*a45);
+  a68=(a41*a54);
+  a38=(a38-a68);
+  a68=(a18*a51);
+  a69=(a41*a49);
+  a68=(a68-a69);
+  a26=(a26*a68);
+  a69=(a26*a11);
+  a69=(a69*a68);
+  a27=(a27/a40);
+  a70=(a27*a49);
+  a25=(a25/a40);
+  a40=(a25*a51);
+  a70=(a70-a40);
+  a17=(a17*a70);
+  a40=(a17*a24);
+  a40=(a40*a70);
+  a69=(a69+a40);
+  a40=(a41*a69);
+  a26=(a26*a10);
+  a26=(a26*a68);
+  a17=(a17*a29);
+  a17=(a17*a70);
+  a26=(a26+a17);
+  a17=(a18*a26);
+  a40=(a40-a17);
+  a38=(a38+a40);
+  a40=(a18*a38);
+  a17=arg[0]? arg[0][6] : 0;
+  a40=(a40*a17);
+  a62=(a62+a40);
+  a40=(a07*a54);
+  a71=(a37*a45);
+  a40=(a40-a71);
+  a52=(a37*a52);
+  a60=(a07*a60);
+  a52=(a52-a60);
+  a40=(a40+a52);
+  a03=(a03*a04);
+  a02=(a02*a13);
+  a03=(a03+a02);
+  a02=(a40*a03);
+  a61=casadi_sq(a61);
+  a61=(a61*a31);
+  a02=(a02+a61);
+  a61=(a33*a02);
+  a03=(a46*a03);
+  a13=casadi_sq(a55);
+  a13=(a13*a31);
+  a03=(a03-a13);
+  a13=(a37*a03);
+  a61=(a61-a13);
+  a13=arg[0]? arg[0][7] : 0;
+  a61=(a61*a13);
+  a62=(a62+a61);
+  a61=(a22*a54);
+  a31=(a19*a45);
+  a61=(a61-a31);
+  a65=(a19*a65);
+  a66=(a22*a66);
+  a65=(a65-a66);
+  a61=(a61+a65);
+  a14=(a14*a06);
+  a15=(a15*a08);
+  a14=(a14+a15);
+  a15=(a61*a14);
+  a67=casadi_sq(a67);
+  a67=(a67*a32);
+  a15=(a15+a67);
+  a67=(a20*a15);
+  a14=(a63*a14);
+  a08=casadi_sq(a64);
+  a08=(a08*a32);
+  a14=(a14-a08);
+  a08=(a19*a14);
+  a67=(a67-a08);
+  a08=arg[0]? arg[0][8] : 0;
+  a67=(a67*a08);
+  a62=(a62+a67);
+  a54=(a27*a54);
+  a45=(a25*a45);
+  a54=(a54-a45);
+  a26=(a25*a26);
+  a69=(a27*a69);
+  a26=(a26-a69);
+  a54=(a54+a26);
+  a10=(a10*a29);
+  a11=(a11*a24);
+  a10=(a10+a11);
+  a11=(a54*a10);
+  a70=casadi_sq(a70);
+  a70=(a70*a09);
+  a11=(a11+a70);
+  a70=(a18*a11);
+  a10=(a38*a10);
+  a24=casadi_sq(a68);
+  a24=(a24*a09);
+  a10=(a10-a24);
+  a24=(a25*a10);
+  a70=(a70-a24);
+  a24=arg[0]? arg[0][9] : 0;
+  a70=(a70*a24);
+  a62=(a62+a70);
+  a37=(a37*a40);
+  a70=arg[0]? arg[0][10] : 0;
+  a37=(a37*a70);
+  a62=(a62-a37);
+  a19=(a19*a61);
+  a37=arg[0]? arg[0][11] : 0;
+  a19=(a19*a37);
+  a62=(a62-a19);
+  a25=(a25*a54);
+  a19=arg[0]? arg[0][12] : 0;
+  a25=(a25*a19);
+  a62=(a62-a25);
+  a25=(a33*a55);
+  a09=arg[0]? arg[0][13] : 0;
+  a25=(a25*a09);
+  a62=(a62+a25);
+  a25=(a20*a64);
+  a29=arg[0]? arg[0][14] : 0;
+  a25=(a25*a29);
+  a62=(a62+a25);
+  a25=(a18*a68);
+  a26=arg[0]? arg[0][15] : 0;
+  a25=(a25*a26);
+  a62=(a62+a25);
+  a25=0.;
+  a69=(a25<=a55);
+  a45=(a69?a28:0);
+  a69=(!a69);
+  a67=-1.;
+  a69=(a69?a67:0);
+  a45=(a45+a69);
+  a69=(a33*a45);
+  a32=arg[0]? arg[0][16] : 0;
+  a69=(a69*a32);
+  a62=(a62+a69);
+  a69=(a25<=a64);
+  a06=(a69?a28:0);
+  a69=(!a69);
+  a69=(a69?a67:0);
+  a06=(a06+a69);
+  a69=(a20*a06);
+  a65=arg[0]? arg[0][17] : 0;
+  a69=(a69*a65);
+  a62=(a62+a69);
+  a25=(a25<=a68);
+  a69=(a25?a28:0);
+  a25=(!a25);
+  a25=(a25?a67:0);
+  a69=(a69+a25);
+  a25=(a18*a69);
+  a67=arg[0]? arg[0][18] : 0;
+  a25=(a25*a67);
+  a62=(a62+a25);
+  a03=(a07*a03);
+  a02=(a36*a02);
+  a03=(a03-a02);
+  a03=(a03*a13);
+  a46=(a36*a46);
+  a46=(a46*a35);
+  a63=(a39*a63);
+  a63=(a63*a01);
+  a46=(a46+a63);
+  a38=(a41*a38);
+  a38=(a38*a17);
+  a46=(a46+a38);
+  a03=(a03-a46);
+  a14=(a22*a14);
+  a15=(a39*a15);
+  a14=(a14-a15);
+  a14=(a14*a08);
+  a03=(a03+a14);
+  a10=(a27*a10);
+  a11=(a41*a11);
+  a10=(a10-a11);
+  a10=(a10*a24);
+  a03=(a03+a10);
+  a07=(a07*a40);
+  a07=(a07*a70);
+  a03=(a03+a07);
+  a22=(a22*a61);
+  a22=(a22*a37);
+  a03=(a03+a22);
+  a27=(a27*a54);
+  a27=(a27*a19);
+  a03=(a03+a27);
+  a55=(a36*a55);
+  a55=(a55*a09);
+  a03=(a03-a55);
+  a64=(a39*a64);
+  a64=(a64*a29);
+  a03=(a03-a64);
+  a68=(a41*a68);
+  a68=(a68*a26);
+  a03=(a03-a68);
+  a36=(a36*a45);
+  a36=(a36*a32);
+  a03=(a03-a36);
+  a39=(a39*a06);
+  a39=(a39*a65);
+  a03=(a03-a39);
+  a41=(a41*a69);
+  a41=(a41*a67);
+  a03=(a03-a41);
+  a41=arg[5]? arg[5][8] : 0;
+  a69=arg[5]? arg[5][9] : 0;
+  a39=arg[5]? arg[5][10] : 0;
+  arg[6]=w+0;
+  arg[7]=w+6;
+  arg[8] = arg[5]? arg[5] + 8 : 0;
+  arg[9] = arg[5]? arg[5] + 11 : 0;
+  arg[10] = arg[5]? arg[5] + 14 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a33;
+  w[1] = a20;
+  w[2] = a18;
+  w[3] = a42;
+  w[4] = a43;
+  w[5] = a44;
+  w[6] = a62;
+  w[7] = a03;
+  if (casadi_f16(arg+6, res+4, iw, w+21, 0)) return 1;
+  a33 = w[17];
+  a20 = w[18];
+  a18 = w[19];
+  a42 = w[20];
+  a43=(a33+a20);
+  a43=(a43+a18);
+  a43=(a43+a35);
+  a43=(a43+a01);
+  a43=(a43+a17);
+  a43=(a43+a13);
+  a43=(a43+a08);
+  a43=(a43+a24);
+  a43=(a43+a70);
+  a43=(a43+a37);
+  a43=(a43+a19);
+  a43=(a43+a09);
+  a43=(a43+a29);
+  a43=(a43+a26);
+  a43=(a43+a32);
+  a43=(a43+a65);
+  a43=(a43+a67);
+  a43=(a43+a21);
+  a43=(a43+a16);
+  a43=(a43+a51);
+  a43=(a43+a49);
+  a43=casadi_fabs(a43);
+  a44=casadi_inf;
+  a43=(a43<a44);
+  a44=(a30&&a43);
+  a44=(a12&&a44);
+  a62=(-a41);
+  a33=casadi_fmax(a33,a62);
+  a33=casadi_fmin(a33,a41);
+  a33=(a44?a33:0);
+  if (res[0]!=0) res[0][0]=a33;
+  a33=(-a69);
+  a20=casadi_fmax(a20,a33);
+  a20=casadi_fmin(a20,a69);
+  a20=(a44?a20:0);
+  if (res[0]!=0) res[0][1]=a20;
+  a20=(-a39);
+  a18=casadi_fmax(a18,a20);
+  a18=casadi_fmin(a18,a39);
+  a18=(a44?a18:0);
+  if (res[0]!=0) res[0][2]=a18;
+  a18=(a12&&a43);
+  a39=(a18?a21:0);
+  a20=(!a18);
+  a50=(a20?a50:0);
+  a39=(a39+a50);
+  if (res[1]!=0) res[1][0]=a39;
+  a39=(a18?a16:0);
+  a58=(a20?a58:0);
+  a39=(a39+a58);
+  if (res[1]!=0) res[1][1]=a39;
+  a39=(a18?a51:0);
+  a48=(a20?a48:0);
+  a39=(a39+a48);
+  if (res[1]!=0) res[1][2]=a39;
+  a18=(a18?a49:0);
+  a20=(a20?a57:0);
+  a18=(a18+a20);
+  if (res[1]!=0) res[1][3]=a18;
+  a18=(a44?a35:0);
+  a20=(!a44);
+  a35=(a20?a35:0);
+  a18=(a18+a35);
+  if (res[1]!=0) res[1][4]=a18;
+  a18=(a44?a01:0);
+  a01=(a20?a01:0);
+  a18=(a18+a01);
+  if (res[1]!=0) res[1][5]=a18;
+  a18=(a44?a17:0);
+  a17=(a20?a17:0);
+  a18=(a18+a17);
+  if (res[1]!=0) res[1][6]=a18;
+  a18=(a44?a13:0);
+  a13=(a20?a13:0);
+  a18=(a18+a13);
+  if (res[1]!=0) res[1][7]=a18;
+  a18=(a44?a08:0);
+  a08=(a20?a08:0);
+  a18=(a18+a08);
+  if (res[1]!=0) res[1][8]=a18;
+  a18=(a44?a24:0);
+  a24=(a20?a24:0);
+  a18=(a18+a24);
+  if (res[1]!=0) res[1][9]=a18;
+  a18=(a44?a70:0);
+  a70=(a20?a70:0);
+  a18=(a18+a70);
+  if (res[1]!=0) res[1][10]=a18;
+  a18=(a44?a37:0);
+  a37=(a20?a37:0);
+  a18=(a18+a37);
+  if (res[1]!=0) res[1][11]=a18;
+  a18=(a44?a19:0);
+  a19=(a20?a19:0);
+  a18=(a18+a19);
+  if (res[1]!=0) res[1][12]=a18;
+  a18=(a44?a09:0);
+  a09=(a20?a09:0);
+  a18=(a18+a09);
+  if (res[1]!=0) res[1][13]=a18;
+  a18=(a44?a29:0);
+  a29=(a20?a29:0);
+  a18=(a18+a29);
+  if (res[1]!=0) res[1][14]=a18;
+  a18=(a44?a26:0);
+  a26=(a20?a26:0);
+  a18=(a18+a26);
+  if (res[1]!=0) res[1][15]=a18;
+  a18=(a44?a32:0);
+  a32=(a20?a32:0);
+  a18=(a18+a32);
+  if (res[1]!=0) res[1][16]=a18;
+  a18=(a44?a65:0);
+  a65=(a20?a65:0);
+  a18=(a18+a65);
+  if (res[1]!=0) res[1][17]=a18;
+  a44=(a44?a67:0);
+  a20=(a20?a67:0);
+  a44=(a44+a20);
+  if (res[1]!=0) res[1][18]=a44;
+  a44=(a42==a23);
+  a23=(a44?a23:0);
+  a44=(!a44);
+  a42=(a42==a28);
+  a20=4.;
+  a42=(a42?a20:0);
+  a44=(a44?a42:0);
+  a23=(a23+a44);
+  a23=(a43?a23:0);
+  a43=(!a43);
+  a44=3.;
+  a43=(a43?a44:0);
+  a23=(a23+a43);
+  a23=(a30?a23:0);
+  a30=(!a30);
+  a30=(a30?a28:0);
+  a23=(a23+a30);
+  a23=(a12?a23:0);
+  a12=(!a12);
+  a30=5.;
+  a12=(a12?a30:0);
+  a23=(a23+a12);
+  if (res[2]!=0) res[2][0]=a23;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a51;
+  if (res[3]!=0) res[3][3]=a49;
+  if (res[3]!=0) res[3][4]=a53;
+  if (res[3]!=0) res[3][5]=a59;
+  if (res[3]!=0) res[3][6]=a47;
+  if (res[3]!=0) res[3][7]=a56;
+  if (res[3]!=0) res[3][8]=a34;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f29(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_preload_step_n_in(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s13;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a26=(a26*a10);
+  a29=(a29+a26);
+  a29=(a29+a21);
+  a26=casadi_sq(a29);
+  a28=(a28+a26);
+  a28=sqrt(a28);
+  a26=(a17+a28);
+  a26=casadi_fabs(a26);
+  a12=casadi_fmax(a12,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a12=(a12<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a04=(a04/a23);
+  a02=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a02=(a02-a23);
+  a02=casadi_fabs(a02);
+  a06=(a06/a09);
+  a15=(a15*a06);
+  a08=(a08/a09);
+  a14=(a14*a08);
+  a15=(a15-a14);
+  a15=casadi_fabs(a15);
+  a14=(a02+a15);
+  a02=(a02-a15);
+  a02=casadi_fabs(a02);
+  a14=(a14-a02);
+  a02=2.;
+  a14=(a14/a02);
+  a29=(a29/a28);
+  a11=(a11*a29);
+  a24=(a24/a28);
+  a10=(a10*a24);
+  a11=(a11-a10);
+  a11=casadi_fabs(a11);
+  a10=(a14+a11);
+  a14=(a14-a11);
+  a14=casadi_fabs(a14);
+  a10=(a10-a14);
+  a10=(a10/a02);
+  a26=(a26<=a10);
+  a14=arg[5]? arg[5][3] : 0;
+  a11=1.;
+  a28=3.3333333333333331e-01;
+  a15=casadi_sq(a04);
+  a09=casadi_sq(a13);
+  a15=(a15-a09);
+  a09=casadi_sq(a06);
+  a23=casadi_sq(a08);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a09=casadi_sq(a29);
+  a23=casadi_sq(a24);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a15=casadi_sq(a15);
+  a09=(2.*a04);
+  a09=(a09*a13);
+  a23=(2.*a06);
+  a23=(a23*a08);
+  a09=(a09+a23);
+  a23=(2.*a29);
+  a23=(a23*a24);
+  a09=(a09+a23);
+  a09=casadi_sq(a09);
+  a15=(a15+a09);
+  a15=sqrt(a15);
+  a28=(a28*a15);
+  a28=(a11-a28);
+  a15=casadi_fabs(a28);
+  a28=(a28+a15);
+  a05=(a05*a28);
+  a05=sqrt(a05);
+  a14=(a14<=a05);
+  a26=(a26&&a14);
+  a14=2.3499999999999999e-01;
+  a14=(a14*a04);
+  a07=(a07*a14);
+  a00=(a00*a13);
+  a03=(a20*a03);
+  a03=(a00*a03);
+  a07=(a07-a03);
+  a14=(a14/a07);
+  a00=(a00/a07);
+  a07=casadi_sq(a00);
+  a01=(a01*a08);
+  a20=(a20*a06);
+  a22=(a22*a20);
+  a19=(a01*a19);
+  a22=(a22-a19);
+  a01=(a01/a22);
+  a19=casadi_sq(a01);
+  a07=(a07+a19);
+  a17=(a17*a24);
+  a18=(a18*a29);
+  a27=(a27*a18);
+  a25=(a17*a25);
+  a27=(a27-a25);
+  a17=(a17/a27);
+  a25=casadi_sq(a17);
+  a07=(a07+a25);
+  a25=arg[7]? arg[7][0] : 0;
+  a29=arg[6]? arg[6][0] : 0;
+  a24=arg[2]? arg[2][0] : 0;
+  a19=(a21-a24);
+  a29=(a29*a19);
+  a06=arg[6]? arg[6][1] : 0;
+  a08=arg[2]? arg[2][1] : 0;
+  a03=(a16-a08);
+  a06=(a06*a03);
+  a29=(a29+a06);
+  a06=arg[6]? arg[6][2] : 0;
+  a13=arg[0]? arg[0][2] : 0;
+  a04=arg[5]? arg[5][1] : 0;
+  a28=arg[0]? arg[0][0] : 0;
+  a15=(a21-a28);
+  a09=arg[5]? arg[5][0] : 0;
+  a15=(a15/a09);
+  a15=(a15-a13);
+  a15=(a04*a15);
+  a15=(a13+a15);
+  a23=arg[3]? arg[3][0] : 0;
+  a30=(a15-a23);
+  a06=(a06*a30);
+  a29=(a29+a06);
+  a06=arg[6]? arg[6][3] : 0;
+  a31=arg[0]? arg[0][3] : 0;
+  a32=arg[0]? arg[0][1] : 0;
+  a33=(a16-a32);
+  a33=(a33/a09);
+  a33=(a33-a31);
+  a04=(a04*a33);
+  a04=(a31+a04);
+  a33=arg[3]? arg[3][1] : 0;
+  a09=(a04-a33);
+  a06=(a06*a09);
+  a29=(a29+a06);
+  a25=(a25-a29);
+  a29=(a14*a25);
+  a20=(a20/a22);
+  a22=arg[7]? arg[7][1] : 0;
+  a06=arg[6]? arg[6][4] : 0;
+  a06=(a06*a19);
+  a34=arg[6]? arg[6][5] : 0;
+  a34=(a34*a03);
+  a06=(a06+a34);
+  a34=arg[6]? arg[6][6] : 0;
+  a34=(a34*a30);
+  a06=(a06+a34);
+  a34=arg[6]? arg[6][7] : 0;
+  a34=(a34*a09);
+  a06=(a06+a34);
+  a22=(a22-a06);
+  a06=(a20*a22);
+  a29=(a29+a06);
+  a18=(a18/a27);
+  a27=arg[7]? arg[7][2] : 0;
+  a06=arg[6]? arg[6][8] : 0;
+  a06=(a06*a19);
+  a19=arg[6]? arg[6][9] : 0;
+  a19=(a19*a03);
+  a06=(a06+a19);
+  a19=arg[6]? arg[6][10] : 0;
+  a19=(a19*a30);
+  a06=(a06+a19);
+  a19=arg[6]? arg[6][11] : 0;
+  a19=(a19*a09);
+  a06=(a06+a19);
+  a27=(a27-a06);
+  a06=(a18*a27);
+  a29=(a29+a06);
+  a06=(a07*a29);
+  a19=(a14*a00);
+  a09=(a20*a01);
+  a19=(a19+a09);
+  a09=(a18*a17);
+  a19=(a19+a09);
+  a25=(a00*a25);
+  a22=(a01*a22);
+  a25=(a25+a22);
+  a27=(a17*a27);
+  a25=(a25+a27);
+  a27=(a19*a25);
+  a06=(a06-a27);
+  a27=casadi_sq(a14);
+  a22=casadi_sq(a20);
+  a27=(a27+a22);
+  a22=casadi_sq(a18);
+  a27=(a27+a22);
+  a07=(a27*a07);
+  a22=(a00*a14);
+  a09=(a01*a20);
+  a22=(a22+a09);
+  a09=(a17*a18);
+  a22=(a22+a09);
+  a19=(a19*a22);
+  a07=(a07-a19);
+  a06=(a06/a07);
+  a14=(a14*a06);
+  a22=(a22*a29);
+  a27=(a27*a25);
+  a22=(a22-a27);
+  a22=(a22/a07);
+  a00=(a00*a22);
+  a14=(a14-a00);
+  a20=(a20*a06);
+  a01=(a01*a22);
+  a20=(a20-a01);
+  a01=(a14+a20);
+  a18=(a18*a06);
+  a17=(a17*a22);
+  a18=(a18-a17);
+  a01=(a01+a18);
+  a17=arg[0]? arg[0][4] : 0;
+  a01=(a01+a17);
+  a22=arg[0]? arg[0][5] : 0;
+  a01=(a01+a22);
+  a06=arg[0]? arg[0][6] : 0;
+  a01=(a01+a06);
+  a00=arg[0]? arg[0][7] : 0;
+  a01=(a01+a00);
+  a07=arg[0]? arg[0][8] : 0;
+  a01=(a01+a07);
+  a27=arg[0]? arg[0][9] : 0;
+  a01=(a01+a27);
+  a25=arg[0]? arg[0][10] : 0;
+  a01=(a01+a25);
+  a29=arg[0]? arg[0][11] : 0;
+  a01=(a01+a29);
+  a19=arg[0]? arg[0][12] : 0;
+  a01=(a01+a19);
+  a09=arg[0]? arg[0][13] : 0;
+  a01=(a01+a09);
+  a30=arg[0]? arg[0][14] : 0;
+  a01=(a01+a30);
+  a03=arg[0]? arg[0][15] : 0;
+  a01=(a01+a03);
+  a34=arg[0]? arg[0][16] : 0;
+  a01=(a01+a34);
+  a35=arg[0]? arg[0][17] : 0;
+  a01=(a01+a35);
+  a36=arg[0]? arg[0][18] : 0;
+  a01=(a01+a36);
+  a01=(a01+a21);
+  a01=(a01+a16);
+  a01=(a01+a15);
+  a01=(a01+a04);
+  a01=casadi_fabs(a01);
+  a37=casadi_inf;
+  a01=(a01<a37);
+  a37=(a26&&a01);
+  a37=(a12&&a37);
+  a38=arg[5]? arg[5][4] : 0;
+  a39=(-a38);
+  a39=casadi_fmax(a14,a39);
+  a39=casadi_fmin(a39,a38);
+  a39=(a37?a39:0);
+  if (res[0]!=0) res[0][0]=a39;
+  a39=arg[5]? arg[5][5] : 0;
+  a40=(-a39);
+  a40=casadi_fmax(a20,a40);
+  a40=casadi_fmin(a40,a39);
+  a40=(a37?a40:0);
+  if (res[0]!=0) res[0][1]=a40;
+  a40=arg[5]? arg[5][6] : 0;
+  a41=(-a40);
+  a41=casadi_fmax(a18,a41);
+  a41=casadi_fmin(a41,a40);
+  a41=(a37?a41:0);
+  if (res[0]!=0) res[0][2]=a41;
+  a41=(a12&&a01);
+  a42=(a41?a21:0);
+  a43=(!a41);
+  a28=(a43?a28:0);
+  a42=(a42+a28);
+  if (res[1]!=0) res[1][0]=a42;
+  a42=(a41?a16:0);
+  a32=(a43?a32:0);
+  a42=(a42+a32);
+  if (res[1]!=0) res[1][1]=a42;
+  a42=(a41?a15:0);
+  a13=(a43?a13:0);
+  a42=(a42+a13);
+  if (res[1]!=0) res[1][2]=a42;
+  a41=(a41?a04:0);
+  a43=(a43?a31:0);
+  a41=(a41+a43);
+  if (res[1]!=0) res[1][3]=a41;
+  a41=(a37?a17:0);
+  a43=(!a37);
+  a17=(a43?a17:0);
+  a41=(a41+a17);
+  if (res[1]!=0) res[1][4]=a41;
+  a41=(a37?a22:0);
+  a22=(a43?a22:0);
+  a41=(a41+a22);
+  if (res[1]!=0) res[1][5]=a41;
+  a41=(a37?a06:0);
+  a06=(a43?a06:0);
+  a41=(a41+a06);
+  if (res[1]!=0) res[1][6]=a41;
+  a41=(a37?a00:0);
+  a00=(a43?a00:0);
+  a41=(a41+a00);
+  if (res[1]!=0) res[1][7]=a41;
+  a41=(a37?a07:0);
+  a07=(a43?a07:0);
+  a41=(a41+a07);
+  if (res[1]!=0) res[1][8]=a41;
+  a41=(a37?a27:0);
+  a27=(a43?a27:0);
+  a41=(a41+a27);
+  if (res[1]!=0) res[1][9]=a41;
+  a41=(a37?a25:0);
+  a25=(a43?a25:0);
+  a41=(a41+a25);
+  if (res[1]!=0) res[1][10]=a41;
+  a41=(a37?a29:0);
+  a29=(a43?a29:0);
+  a41=(a41+a29);
+  if (res[1]!=0) res[1][11]=a41;
+  a41=(a37?a19:0);
+  a19=(a43?a19:0);
+  a41=(a41+a19);
+  if (res[1]!=0) res[1][12]=a41;
+  a41=(a37?a09:0);
+  a09=(a43?a09:0);
+  a41=(a41+a09);
+  if (res[1]!=0) res[1][13]=a41;
+  a41=(a37?a30:0);
+  a30=(a43?a30:0);
+  a41=(a41+a30);
+  if (res[1]!=0) res[1][14]=a41;
+  a41=(a37?a03:0);
+  a03=(a43?a03:0);
+  a41=(a41+a03);
+  if (res[1]!=0) res[1][15]=a41;
+  a41=(a37?a34:0);
+  a34=(a43?a34:0);
+  a41=(a41+a34);
+  if (res[1]!=0) res[1][16]=a41;
+  a41=(a37?a35:0);
+  a35=(a43?a35:0);
+  a41=(a41+a35);
+  if (res[1]!=0) res[1][17]=a41;
+  a37=(a37?a36:0);
+  a43=(a43?a36:0);
+  a37=(a37+a43);
+  if (res[1]!=0) res[1][18]=a37;
+  a37=0.;
+  a14=casadi_fabs(a14);
+  a14=(a14-a38);
+  a20=casadi_fabs(a20);
+  a20=(a20-a39);
+  a14=casadi_fmax(a14,a20);
+  a18=casadi_fabs(a18);
+  a18=(a18-a40);
+  a14=casadi_fmax(a14,a18);
+  a37=(a37<a14);
+  a37=(a37?a02:0);
+  a37=(a01?a37:0);
+  a01=(!a01);
+  a02=3.;
+  a01=(a01?a02:0);
+  a37=(a37+a01);
+  a37=(a26?a37:0);
+  a26=(!a26);
+  a26=(a26?a11:0);
+  a37=(a37+a26);
+  a37=(a12?a37:0);
+  a12=(!a12);
+  a26=5.;
+  a12=(a12?a26:0);
+  a37=(a37+a12);
+  if (res[2]!=0) res[2][0]=a37;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a15;
+  if (res[3]!=0) res[3][3]=a04;
+  a24=(a24-a21);
+  if (res[3]!=0) res[3][4]=a24;
+  a08=(a08-a16);
+  if (res[3]!=0) res[3][5]=a08;
+  a23=(a23-a15);
+  if (res[3]!=0) res[3][6]=a23;
+  a33=(a33-a04);
+  if (res[3]!=0) res[3][7]=a33;
+  if (res[3]!=0) res[3][8]=a10;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f30(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_minmax_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a26=(a26*a10);
+  a29=(a29+a26);
+  a29=(a29+a21);
+  a26=casadi_sq(a29);
+  a28=(a28+a26);
+  a28=sqrt(a28);
+  a26=(a17+a28);
+  a26=casadi_fabs(a26);
+  a12=casadi_fmax(a12,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a12=(a12<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a04=(a04/a23);
+  a02=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a02=(a02-a23);
+  a02=casadi_fabs(a02);
+  a06=(a06/a09);
+  a15=(a15*a06);
+  a08=(a08/a09);
+  a14=(a14*a08);
+  a15=(a15-a14);
+  a15=casadi_fabs(a15);
+  a14=(a02+a15);
+  a02=(a02-a15);
+  a02=casadi_fabs(a02);
+  a14=(a14-a02);
+  a02=2.;
+  a14=(a14/a02);
+  a29=(a29/a28);
+  a11=(a11*a29);
+  a24=(a24/a28);
+  a10=(a10*a24);
+  a11=(a11-a10);
+  a11=casadi_fabs(a11);
+  a10=(a14+a11);
+  a14=(a14-a11);
+  a14=casadi_fabs(a14);
+  a10=(a10-a14);
+  a10=(a10/a02);
+  a26=(a26<=a10);
+  a14=arg[5]? arg[5][3] : 0;
+  a11=1.;
+  a28=3.3333333333333331e-01;
+  a15=casadi_sq(a04);
+  a09=casadi_sq(a13);
+  a15=(a15-a09);
+  a09=casadi_sq(a06);
+  a23=casadi_sq(a08);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a09=casadi_sq(a29);
+  a23=casadi_sq(a24);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a15=casadi_sq(a15);
+  a09=(2.*a04);
+  a09=(a09*a13);
+  a23=(2.*a06);
+  a23=(a23*a08);
+  a09=(a09+a23);
+  a23=(2.*a29);
+  a23=(a23*a24);
+  a09=(a09+a23);
+  a09=casadi_sq(a09);
+  a15=(a15+a09);
+  a15=sqrt(a15);
+  a28=(a28*a15);
+  a28=(a11-a28);
+  a15=casadi_fabs(a28);
+  a28=(a28+a15);
+  a05=(a05*a28);
+  a05=sqrt(a05);
+  a14=(a14<=a05);
+  a26=(a26&&a14);
+  a14=arg[5]? arg[5][4] : 0;
+  a28=2.3499999999999999e-01;
+  a28=(a28*a04);
+  a07=(a07*a28);
+  a00=(a00*a13);
+  a03=(a20*a03);
+  a03=(a00*a03);
+  a07=(a07-a03);
+  a28=(a28/a07);
+  a03=(a14*a28);
+  a13=0.;
+  a04=arg[7]? arg[7][0] : 0;
+  a15=arg[6]? arg[6][0] : 0;
+  a09=arg[2]? arg[2][0] : 0;
+  a23=(a21-a09);
+  a15=(a15*a23);
+  a30=arg[6]? arg[6][1] : 0;
+  a31=arg[2]? arg[2][1] : 0;
+  a32=(a16-a31);
+  a30=(a30*a32);
+  a15=(a15+a30);
+  a30=arg[6]? arg[6][2] : 0;
+  a33=arg[0]? arg[0][2] : 0;
+  a34=arg[5]? arg[5][1] : 0;
+  a35=arg[0]? arg[0][0] : 0;
+  a36=(a21-a35);
+  a37=arg[5]? arg[5][0] : 0;
+  a36=(a36/a37);
+  a36=(a36-a33);
+  a36=(a34*a36);
+  a36=(a33+a36);
+  a38=arg[3]? arg[3][0] : 0;
+  a39=(a36-a38);
+  a30=(a30*a39);
+  a15=(a15+a30);
+  a30=arg[6]? arg[6][3] : 0;
+  a40=arg[0]? arg[0][3] : 0;
+  a41=arg[0]? arg[0][1] : 0;
+  a42=(a16-a41);
+  a42=(a42/a37);
+  a42=(a42-a40);
+  a34=(a34*a42);
+  a34=(a40+a34);
+  a42=arg[3]? arg[3][1] : 0;
+  a37=(a34-a42);
+  a30=(a30*a37);
+  a15=(a15+a30);
+  a04=(a04-a15);
+  a28=(a28*a04);
+  a20=(a20*a06);
+  a22=(a22*a20);
+  a01=(a01*a08);
+  a19=(a01*a19);
+  a22=(a22-a19);
+  a20=(a20/a22);
+  a19=arg[7]? arg[7][1] : 0;
+  a08=arg[6]? arg[6][4] : 0;
+  a08=(a08*a23);
+  a06=arg[6]? arg[6][5] : 0;
+  a06=(a06*a32);
+  a08=(a08+a06);
+  a06=arg[6]? arg[6][6] : 0;
+  a06=(a06*a39);
+  a08=(a08+a06);
+  a06=arg[6]? arg[6][7] : 0;
+  a06=(a06*a37);
+  a08=(a08+a06);
+  a19=(a19-a08);
+  a08=(a20*a19);
+  a28=(a28+a08);
+  a18=(a18*a29);
+  a27=(a27*a18);
+  a17=(a17*a24);
+  a25=(a17*a25);
+  a27=(a27-a25);
+  a18=(a18/a27);
+  a25=arg[7]? arg[7][2] : 0;
+  a24=arg[6]? arg[6][8] : 0;
+  a24=(a24*a23);
+  a23=arg[6]? arg[6][9] : 0;
+  a23=(a23*a32);
+  a24=(a24+a23);
+  a23=arg[6]? arg[6][10] : 0;
+  a23=(a23*a39);
+  a24=(a24+a23);
+  a23=arg[6]? arg[6][11] : 0;
+  a23=(a23*a37);
+  a24=(a24+a23);
+  a25=(a25-a24);
+  a24=(a18*a25);
+  a28=(a28+a24);
+  a00=(a00/a07);
+  a07=(a14*a00);
+  a24=(a28*a07);
+  a00=(a00*a04);
+  a01=(a01/a22);
+  a19=(a01*a19);
+  a00=(a00+a19);
+  a17=(a17/a27);
+  a25=(a17*a25);
+  a00=(a00+a25);
+  a25=(a00*a03);
+  a24=(a24-a25);
+  a24=casadi_fabs(a24);
+  a13=(a13<a24);
+  a25=arg[5]? arg[5][5] : 0;
+  a01=(a25*a01);
+  a27=(a03*a01);
+  a20=(a25*a20);
+  a19=(a07*a20);
+  a27=(a27-a19);
+  a27=casadi_fabs(a27);
+  a19=arg[5]? arg[5][6] : 0;
+  a18=(a19*a18);
+  a22=(a18*a01);
+  a17=(a19*a17);
+  a04=(a17*a20);
+  a22=(a22-a04);
+  a22=casadi_fabs(a22);
+  a27=(a27+a22);
+  a22=(a24*a27);
+  a22=(a13?a22:0);
+  a04=(a28*a01);
+  a23=(a00*a20);
+  a04=(a04-a23);
+  a04=casadi_fabs(a04);
+  a23=(a20*a07);
+  a37=(a01*a03);
+  a23=(a23-a37);
+  a23=casadi_fabs(a23);
+  a37=(a18*a07);
+  a39=(a17*a03);
+  a37=(a37-a39);
+  a37=casadi_fabs(a37);
+  a23=(a23+a37);
+  a23=(a13?a23:0);
+  a37=(!a13);
+  a39=(a37?a11:0);
+  a23=(a23+a39);
+  a39=(a04*a23);
+  a22=(a22<a39);
+  a04=(a22?a04:0);
+  a39=(!a22);
+  a24=(a13?a24:0);
+  a24=(a39?a24:0);
+  a04=(a04+a24);
+  a24=(a03*a17);
+  a32=(a07*a18);
+  a24=(a24-a32);
+  a24=casadi_fabs(a24);
+  a32=(a20*a17);
+  a29=(a01*a18);
+  a32=(a32-a29);
+  a32=casadi_fabs(a32);
+  a24=(a24+a32);
+  a32=(a04*a24);
+  a29=(a28*a17);
+  a08=(a00*a18);
+  a29=(a29-a08);
+  a29=casadi_fabs(a29);
+  a27=(a22?a27:0);
+  a23=(a39?a23:0);
+  a27=(a27+a23);
+  a23=(a29*a27);
+  a32=(a32<a23);
+  a23=(a32?a17:0);
+  a08=(!a32);
+  a06=(a22?a01:0);
+  a15=(a13?a07:0);
+  a30=(a37?a07:0);
+  a15=(a15+a30);
+  a15=(a39?a15:0);
+  a06=(a06+a15);
+  a06=(a08?a06:0);
+  a23=(a23+a06);
+  a06=(a28*a23);
+  a15=(a32?a18:0);
+  a22=(a22?a20:0);
+  a13=(a13?a03:0);
+  a37=(a37?a03:0);
+  a13=(a13+a37);
+  a39=(a39?a13:0);
+  a22=(a22+a39);
+  a22=(a08?a22:0);
+  a15=(a15+a22);
+  a22=(a00*a15);
+  a06=(a06-a22);
+  a06=casadi_sign(a06);
+  a22=(a23*a06);
+  a39=(a03*a22);
+  a06=(a15*a06);
+  a13=(a07*a06);
+  a39=(a39-a13);
+  a13=casadi_sq(a39);
+  a37=9.9999999999999992e-25;
+  a30=casadi_sq(a03);
+  a43=casadi_sq(a07);
+  a30=(a30+a43);
+  a30=(a37*a30);
+  a43=casadi_sq(a23);
+  a44=casadi_sq(a15);
+  a43=(a43+a44);
+  a30=(a30*a43);
+  a13=(a13<=a30);
+  a30=(a03*a15);
+  a44=(a07*a23);
+  a30=(a30+a44);
+  a44=casadi_sign(a30);
+  a45=(!a13);
+  a29=(a32?a29:0);
+  a04=(a08?a04:0);
+  a29=(a29+a04);
+  a32=(a32?a24:0);
+  a08=(a08?a27:0);
+  a32=(a32+a08);
+  a29=(a29/a32);
+  a39=casadi_sign(a39);
+  a39=(a29*a39);
+  a03=(a39*a03);
+  a03=(a45?a03:0);
+  a32=(a20*a22);
+  a08=(a01*a06);
+  a32=(a32-a08);
+  a08=casadi_sq(a32);
+  a27=casadi_sq(a20);
+  a24=casadi_sq(a01);
+  a27=(a27+a24);
+  a27=(a37*a27);
+  a27=(a27*a43);
+  a08=(a08<=a27);
+  a27=(!a08);
+  a32=casadi_sign(a32);
+  a32=(a29*a32);
+  a24=(a32*a20);
+  a24=(a27?a24:0);
+  a03=(a03+a24);
+  a22=(a18*a22);
+  a06=(a17*a06);
+  a22=(a22-a06);
+  a06=casadi_sq(a22);
+  a24=casadi_sq(a18);
+  a04=casadi_sq(a17);
+  a24=(a24+a04);
+  a37=(a37*a24);
+  a37=(a37*a43);
+  a06=(a06<=a37);
+  a37=(!a06);
+  a22=casadi_sign(a22);
+  a22=(a29*a22);
+  a43=(a22*a18);
+  a43=(a37?a43:0);
+  a03=(a03+a43);
+  a28=(a28-a03);
+  a28=(a28*a15);
+  a07=(a39*a07);
+  a07=(-a07);
+  a07=(a45?a07:0);
+  a03=(a32*a01);
+  a03=(-a03);
+  a03=(a27?a03:0);
+  a07=(a07+a03);
+  a03=(a22*a17);
+  a03=(-a03);
+  a03=(a37?a03:0);
+  a07=(a07+a03);
+  a00=(a00+a07);
+  a00=(a00*a23);
+  a28=(a28+a00);
+  a30=casadi_fabs(a30);
+  a30=(a13?a30:0);
+  a20=(a20*a15);
+  a01=(a01*a23);
+  a20=(a20+a01);
+  a01=casadi_fabs(a20);
+  a01=(a08?a01:0);
+  a30=(a30+a01);
+  a18=(a18*a15);
+  a17=(a17*a23);
+  a18=(a18+a17);
+  a17=casadi_fabs(a18);
+  a17=(a06?a17:0);
+  a30=(a30+a17);
+  a28=(a28/a30);
+  a44=(a44*a28);
+  a13=(a13?a44:0);
+  a39=(a45?a39:0);
+  a45=(a45?a39:0);
+  a13=(a13+a45);
+  a13=(a14*a13);
+  a20=casadi_sign(a20);
+  a20=(a20*a28);
+  a08=(a08?a20:0);
+  a32=(a27?a32:0);
+  a27=(a27?a32:0);
+  a08=(a08+a27);
+  a08=(a25*a08);
+  a27=(a13+a08);
+  a18=casadi_sign(a18);
+  a18=(a18*a28);
+  a06=(a06?a18:0);
+  a22=(a37?a22:0);
+  a37=(a37?a22:0);
+  a06=(a06+a37);
+  a06=(a19*a06);
+  a27=(a27+a06);
+  a37=arg[0]? arg[0][4] : 0;
+  a27=(a27+a37);
+  a22=arg[0]? arg[0][5] : 0;
+  a27=(a27+a22);
+  a18=arg[0]? arg[0][6] : 0;
+  a27=(a27+a18);
+  a28=arg[0]? arg[0][7] : 0;
+  a27=(a27+a28);
+  a32=arg[0]? arg[0][8] : 0;
+  a27=(a27+a32);
+  a20=arg[0]? arg[0][9] : 0;
+  a27=(a27+a20);
+  a45=arg[0]? arg[0][10] : 0;
+  a27=(a27+a45);
+  a39=arg[0]? arg[0][11] : 0;
+  a27=(a27+a39);
+  a44=arg[0]? arg[0][12] : 0;
+  a27=(a27+a44);
+  a30=arg[0]? arg[0][13] : 0;
+  a27=(a27+a30);
+  a17=arg[0]? arg[0][14] : 0;
+  a27=(a27+a17);
+  a23=arg[0]? arg[0][15] : 0;
+  a27=(a27+a23);
+  a15=arg[0]? arg[0][16] : 0;
+  a27=(a27+a15);
+  a01=arg[0]? arg[0][17] : 0;
+  a27=(a27+a01);
+  a00=arg[0]? arg[0][18] : 0;
+  a27=(a27+a00);
+  a27=(a27+a21);
+  a27=(a27+a16);
+  a27=(a27+a36);
+  a27=(a27+a34);
+  a27=casadi_fabs(a27);
+  a07=casadi_inf;
+  a27=(a27<a07);
+  a07=(a26&&a27);
+  a07=(a12&&a07);
+  a03=(-a14);
+  a13=casadi_fmax(a13,a03);
+  a13=casadi_fmin(a13,a14);
+  a13=(a07?a13:0);
+  if (res[0]!=0) res[0][0]=a13;
+  a13=(-a25);
+  a08=casadi_fmax(a08,a13);
+  a08=casadi_fmin(a08,a25);
+  a08=(a07?a08:0);
+  if (res[0]!=0) res[0][1]=a08;
+  a08=(-a19);
+  a06=casadi_fmax(a06,a08);
+  a06=casadi_fmin(a06,a19);
+  a06=(a07?a06:0);
+  if (res[0]!=0) res[0][2]=a06;
+  a06=(a12&&a27);
+  a19=(a06?a21:0);
+  a08=(!a06);
+  a35=(a08?a35:0);
+  a19=(a19+a35);
+  if (res[1]!=0) res[1][0]=a19;
+  a19=(a06?a16:0);
+  a41=(a08?a41:0);
+  a19=(a19+a41);
+  if (res[1]!=0) res[1][1]=a19;
+  a19=(a06?a36:0);
+  a33=(a08?a33:0);
+  a19=(a19+a33);
+  if (res[1]!=0) res[1][2]=a19;
+  a06=(a06?a34:0);
+  a08=(a08?a40:0);
+  a06=(a06+a08);
+  if (res[1]!=0) res[1][3]=a06;
+  a06=(a07?a37:0);
+  a08=(!a07);
+  a37=(a08?a37:0);
+  a06=(a06+a37);
+  if (res[1]!=0) res[1][4]=a06;
+  a06=(a07?a22:0);
+  a22=(a08?a22:0);
+  a06=(a06+a22);
+  if (res[1]!=0) res[1][5]=a06;
+  a06=(a07?a18:0);
+  a18=(a08?a18:0);
+  a06=(a06+a18);
+  if (res[1]!=0) res[1][6]=a06;
+  a06=(a07?a28:0);
+  a28=(a08?a28:0);
+  a06=(a06+a28);
+  if (res[1]!=0) res[1][7]=a06;
+  a06=(a07?a32:0);
+  a32=(a08?a32:0);
+  a06=(a06+a32);
+  if (res[1]!=0) res[1][8]=a06;
+  a06=(a07?a20:0);
+  a20=(a08?a20:0);
+  a06=(a06+a20);
+  if (res[1]!=0) res[1][9]=a06;
+  a06=(a07?a45:0);
+  a45=(a08?a45:0);
+  a06=(a06+a45);
+  if (res[1]!=0) res[1][10]=a06;
+  a06=(a07?a39:0);
+  a39=(a08?a39:0);
+  a06=(a06+a39);
+  if (res[1]!=0) res[1][11]=a06;
+  a06=(a07?a44:0);
+  a44=(a08?a44:0);
+  a06=(a06+a44);
+  if (res[1]!=0) res[1][12]=a06;
+  a06=(a07?a30:0);
+  a30=(a08?a30:0);
+  a06=(a06+a30);
+  if (res[1]!=0) res[1][13]=a06;
+  a06=(a07?a17:0);
+  a17=(a08?a17:0);
+  a06=(a06+a17);
+  if (res[1]!=0) res[1][14]=a06;
+  a06=(a07?a23:0);
+  a23=(a08?a23:0);
+  a06=(a06+a23);
+  if (res[1]!=0) res[1][15]=a06;
+  a06=(a07?a15:0);
+  a15=(a08?a15:0);
+  a06=(a06+a15);
+  if (res[1]!=0) res[1][16]=a06;
+  a06=(a07?a01:0);
+  a01=(a08?a01:0);
+  a06=(a06+a01);
+  if (res[1]!=0) res[1][17]=a06;
+  a07=(a07?a00:0);
+  a08=(a08?a00:0);
+  a07=(a07+a08);
+  if (res[1]!=0) res[1][18]=a07;
+  a29=(a11<a29);
+  a29=(a29?a02:0);
+  a29=(a27?a29:0);
+  a27=(!a27);
+  a02=3.;
+  a27=(a27?a02:0);
+  a29=(a29+a27);
+  a29=(a26?a29:0);
+  a26=(!a26);
+  a26=(a26?a11:0);
+  a29=(a29+a26);
+  a29=(a12?a29:0);
+  a12=(!a12);
+  a26=5.;
+  a12=(a12?a26:0);
+  a29=(a29+a12);
+  if (res[2]!=0) res[2][0]=a29;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a36;
+  if (res[3]!=0) res[3][3]=a34;
+  a09=(a09-a21);
+  if (res[3]!=0) res[3][4]=a09;
+  a31=(a31-a16);
+  if (res[3]!=0) res[3][5]=a31;
+  a38=(a38-a36);
+  if (res[3]!=0) res[3][6]=a38;
+  a42=(a42-a34);
+  if (res[3]!=0) res[3][7]=a42;
+  if (res[3]!=0) res[3][8]=a10;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f31(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_minmax_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_minmax_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_minmax_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_minmax_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_minmax_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_minmax_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_minmax_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_preload_step:(state[19],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[14],K[12],tau_ff[3])->(tau_a[3],state_next[19],status,diag[10]) */
+static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43;
+  a00=-2.3499999999999999e-01;
+  a01=-2.5000000000000000e-01;
+  a02=arg[1]? arg[1][0] : 0;
+  a03=cos(a02);
+  a04=(a01*a03);
+  a05=5.0000000000000000e-01;
+  a06=-5.0000000000000000e-01;
+  a02=sin(a02);
+  a07=(a06*a02);
+  a08=(a05+a07);
+  a09=4.8999999999999999e-01;
+  a10=arg[1]? arg[1][2] : 0;
+  a11=sin(a10);
+  a12=(a09*a11);
+  a08=(a08+a12);
+  a12=casadi_sq(a08);
+  a13=-5.2000000000000002e-01;
+  a13=(a13+a07);
+  a07=4.7999999999999998e-01;
+  a14=arg[1]? arg[1][1] : 0;
+  a15=sin(a14);
+  a16=(a07*a15);
+  a13=(a13+a16);
+  a16=casadi_sq(a13);
+  a12=(a12+a16);
+  a16=8.8000000000000000e-01;
+  a06=(a06*a03);
+  a16=(a16+a06);
+  a14=cos(a14);
+  a07=(a07*a14);
+  a16=(a16+a07);
+  a07=-7.2750000000000002e-03;
+  a17=4.4000000000000000e-01;
+  a18=2.3999999999999999e-01;
+  a19=(a18*a14);
+  a17=(a17+a19);
+  a17=casadi_sq(a17);
+  a07=(a07+a17);
+  a17=2.6000000000000001e-01;
+  a20=2.5000000000000000e-01;
+  a21=(a20*a02);
+  a17=(a17+a21);
+  a17=casadi_sq(a17);
+  a07=(a07-a17);
+  a21=-6.2500000000000000e-02;
+  a22=casadi_sq(a03);
+  a21=(a21*a22);
+  a07=(a07+a21);
+  a22=5.7599999999999998e-02;
+  a23=casadi_sq(a15);
+  a22=(a22*a23);
+  a07=(a07+a22);
+  a22=(a16*a07);
+  a23=8.5999999999999999e-01;
+  a23=(a23+a06);
+  a10=cos(a10);
+  a09=(a09*a10);
+  a23=(a23+a09);
+  a09=-2.3749999999999999e-03;
+  a06=4.2999999999999999e-01;
+  a24=2.4500000000000000e-01;
+  a25=(a24*a10);
+  a06=(a06+a25);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a06=5.1000000000000001e-01;
+  a24=(a24*a11);
+  a06=(a06+a24);
+  a06=casadi_sq(a06);
+  a09=(a09+a06);
+  a09=(a09-a17);
+  a09=(a09+a21);
+  a21=(a23*a09);
+  a22=(a22+a21);
+  a21=(a12*a22);
+  a17=(a08*a23);
+  a06=(a13*a16);
+  a17=(a17+a06);
+  a08=(a08*a09);
+  a13=(a13*a07);
+  a08=(a08+a13);
+  a13=(a17*a08);
+  a21=(a21-a13);
+  a16=casadi_sq(a16);
+  a23=casadi_sq(a23);
+  a16=(a16+a23);
+  a12=(a12*a16);
+  a23=casadi_sq(a17);
+  a12=(a12-a23);
+  a21=(a21/a12);
+  a04=(a04+a21);
+  a23=casadi_sq(a04);
+  a13=-2.6000000000000001e-01;
+  a07=(a01*a02);
+  a13=(a13+a07);
+  a16=(a16*a08);
+  a17=(a17*a22);
+  a16=(a16-a17);
+  a16=(a16/a12);
+  a13=(a13+a16);
+  a12=casadi_sq(a13);
+  a23=(a23+a12);
+  a23=sqrt(a23);
+  a12=(a00+a23);
+  a12=casadi_fabs(a12);
+  a17=-2.3999999999999999e-01;
+  a22=(a17*a15);
+  a08=(a22+a16);
+  a09=casadi_sq(a08);
+  a06=-4.4000000000000000e-01;
+  a24=(a17*a14);
+  a06=(a06+a24);
+  a06=(a06+a21);
+  a24=casadi_sq(a06);
+  a09=(a09+a24);
+  a09=sqrt(a09);
+  a24=(a01+a09);
+  a24=casadi_fabs(a24);
+  a12=casadi_fmax(a12,a24);
+  a24=-5.1000000000000001e-01;
+  a26=-2.4500000000000000e-01;
+  a27=(a26*a11);
+  a24=(a24+a27);
+  a24=(a24+a16);
+  a28=casadi_sq(a24);
+  a29=-4.2999999999999999e-01;
+  a26=(a26*a10);
+  a29=(a29+a26);
+  a29=(a29+a21);
+  a26=casadi_sq(a29);
+  a28=(a28+a26);
+  a28=sqrt(a28);
+  a26=(a17+a28);
+  a26=casadi_fabs(a26);
+  a12=casadi_fmax(a12,a26);
+  a26=arg[5]? arg[5][13] : 0;
+  a12=(a12<=a26);
+  a26=arg[5]? arg[5][2] : 0;
+  a04=(a04/a23);
+  a02=(a02*a04);
+  a13=(a13/a23);
+  a23=(a03*a13);
+  a02=(a02-a23);
+  a02=casadi_fabs(a02);
+  a06=(a06/a09);
+  a15=(a15*a06);
+  a08=(a08/a09);
+  a14=(a14*a08);
+  a15=(a15-a14);
+  a15=casadi_fabs(a15);
+  a14=(a02+a15);
+  a02=(a02-a15);
+  a02=casadi_fabs(a02);
+  a14=(a14-a02);
+  a02=2.;
+  a14=(a14/a02);
+  a29=(a29/a28);
+  a11=(a11*a29);
+  a24=(a24/a28);
+  a10=(a10*a24);
+  a11=(a11-a10);
+  a11=casadi_fabs(a11);
+  a10=(a14+a11);
+  a14=(a14-a11);
+  a14=casadi_fabs(a14);
+  a10=(a10-a14);
+  a10=(a10/a02);
+  a26=(a26<=a10);
+  a14=arg[5]? arg[5][3] : 0;
+  a11=1.;
+  a28=3.3333333333333331e-01;
+  a15=casadi_sq(a04);
+  a09=casadi_sq(a13);
+  a15=(a15-a09);
+  a09=casadi_sq(a06);
+  a23=casadi_sq(a08);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a09=casadi_sq(a29);
+  a23=casadi_sq(a24);
+  a09=(a09-a23);
+  a15=(a15+a09);
+  a15=casadi_sq(a15);
+  a09=(2.*a04);
+  a09=(a09*a13);
+  a23=(2.*a06);
+  a23=(a23*a08);
+  a09=(a09+a23);
+  a23=(2.*a29);
+  a23=(a23*a24);
+  a09=(a09+a23);
+  a09=casadi_sq(a09);
+  a15=(a15+a09);
+  a15=sqrt(a15);
+  a28=(a28*a15);
+  a28=(a11-a28);
+  a15=casadi_fabs(a28);
+  a28=(a28+a15);
+  a05=(a05*a28);
+  a05=sqrt(a05);
+  a14=(a14<=a05);
+  a26=(a26&&a14);
+  a14=2.3499999999999999e-01;
+  a14=(a14*a04);
+  a07=(a07*a14);
+  a13=(a00*a13);
+  a03=(a20*a03);
+  a03=(a13*a03);
+  a07=(a07-a03);
+  a14=(a14/a07);
+  a20=(a20*a06);
+  a22=(a22*a20);
+  a01=(a01*a08);
+  a19=(a01*a19);
+  a22=(a22-a19);
+  a20=(a20/a22);
+  a18=(a18*a29);
+  a27=(a27*a18);
+  a17=(a17*a24);
+  a25=(a17*a25);
+  a27=(a27-a25);
+  a18=(a18/a27);
+  a13=(a13/a07);
+  a07=(-a13);
+  a01=(a01/a22);
+  a22=(-a01);
+  a17=(a17/a27);
+  a27=(-a17);
+  a25=arg[7]? arg[7][0] : 0;
+  a24=arg[6]? arg[6][0] : 0;
+  a29=arg[2]? arg[2][0] : 0;
+  a19=(a21-a29);
+  a24=(a24*a19);
+  a08=arg[6]? arg[6][1] : 0;
+  a06=arg[2]? arg[2][1] : 0;
+  a03=(a16-a06);
+  a08=(a08*a03);
+  a24=(a24+a08);
+  a08=arg[6]? arg[6][2] : 0;
+  a04=arg[0]? arg[0][2] : 0;
+  a28=arg[5]? arg[5][1] : 0;
+  a15=arg[0]? arg[0][0] : 0;
+  a09=(a21-a15);
+  a23=arg[5]? arg[5][0] : 0;
+  a09=(a09/a23);
+  a09=(a09-a04);
+  a09=(a28*a09);
+  a09=(a04+a09);
+  a30=arg[3]? arg[3][0] : 0;
+  a31=(a09-a30);
+  a08=(a08*a31);
+  a24=(a24+a08);
+  a08=arg[6]? arg[6][3] : 0;
+  a32=arg[0]? arg[0][3] : 0;
+  a33=arg[0]? arg[0][1] : 0;
+  a34=(a16-a33);
+  a34=(a34/a23);
+  a34=(a34-a32);
+  a28=(a28*a34);
+  a28=(a32+a28);
+  a34=arg[3]? arg[3][1] : 0;
+  a23=(a28-a34);
+  a08=(a08*a23);
+  a24=(a24+a08);
+  a25=(a25-a24);
+  a24=(a14*a25);
+  a08=arg[7]? arg[7][1] : 0;
+  a35=arg[6]? arg[6][4] : 0;
+  a35=(a35*a19);
+  a36=arg[6]? arg[6][5] : 0;
+  a36=(a36*a03);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][6] : 0;
+  a36=(a36*a31);
+  a35=(a35+a36);
+  a36=arg[6]? arg[6][7] : 0;
+  a36=(a36*a23);
+  a35=(a35+a36);
+  a08=(a08-a35);
+  a35=(a20*a08);
+  a24=(a24+a35);
+  a35=arg[7]? arg[7][2] : 0;
+  a36=arg[6]? arg[6][8] : 0;
+  a36=(a36*a19);
+  a19=arg[6]? arg[6][9] : 0;
+  a19=(a19*a03);
+  a36=(a36+a19);
+  a19=arg[6]? arg[6][10] : 0;
+  a19=(a19*a31);
+  a36=(a36+a19);
+  a19=arg[6]? arg[6][11] : 0;
+  a19=(a19*a23);
+  a36=(a36+a19);
+  a35=(a35-a36);
+  a36=(a18*a35);
+  a24=(a24+a36);
+  a13=(a13*a25);
+  a01=(a01*a08);
+  a13=(a13+a01);
+  a17=(a17*a35);
+  a13=(a13+a17);
+  a13=(-a13);
+  a17=arg[5]? arg[5][4] : 0;
+  a35=arg[5]? arg[5][5] : 0;
+  a01=arg[5]? arg[5][6] : 0;
+  arg[8]=w+0;
+  arg[9]=w+6;
+  arg[10] = arg[5]? arg[5] + 4 : 0;
+  arg[11] = arg[5]? arg[5] + 7 : 0;
+  arg[12] = arg[5]? arg[5] + 10 : 0;
+  res[4]=w+17;
+  res[5]=w+20;
+  w[0] = a14;
+  w[1] = a20;
+  w[2] = a18;
+  w[3] = a07;
+  w[4] = a22;
+  w[5] = a27;
+  w[6] = a24;
+  w[7] = a13;
+  if (casadi_f16(arg+8, res+4, iw, w+21, 0)) return 1;
+  a14 = w[17];
+  a20 = w[18];
+  a18 = w[19];
+  a07 = w[20];
+  a22=(a14+a20);
+  a22=(a22+a18);
+  a27=arg[0]? arg[0][4] : 0;
+  a22=(a22+a27);
+  a24=arg[0]? arg[0][5] : 0;
+  a22=(a22+a24);
+  a13=arg[0]? arg[0][6] : 0;
+  a22=(a22+a13);
+  a08=arg[0]? arg[0][7] : 0;
+  a22=(a22+a08);
+  a25=arg[0]? arg[0][8] : 0;
+  a22=(a22+a25);
+  a36=arg[0]? arg[0][9] : 0;
+  a22=(a22+a36);
+  a19=arg[0]? arg[0][10] : 0;
+  a22=(a22+a19);
+  a23=arg[0]? arg[0][11] : 0;
+  a22=(a22+a23);
+  a31=arg[0]? arg[0][12] : 0;
+  a22=(a22+a31);
+  a03=arg[0]? arg[0][13] : 0;
+  a22=(a22+a03);
+  a37=arg[0]? arg[0][14] : 0;
+  a22=(a22+a37);
+  a38=arg[0]? arg[0][15] : 0;
+  a22=(a22+a38);
+  a39=arg[0]? arg[0][16] : 0;
+  a22=(a22+a39);
+  a40=arg[0]? arg[0][17] : 0;
+  a22=(a22+a40);
+  a41=arg[0]? arg[0][18] : 0;
+  a22=(a22+a41);
+  a22=(a22+a21);
+  a22=(a22+a16);
+  a22=(a22+a09);
+  a22=(a22+a28);
+  a22=casadi_fabs(a22);
+  a42=casadi_inf;
+  a22=(a22<a42);
+  a42=(a26&&a22);
+  a42=(a12&&a42);
+  a43=(-a17);
+  a14=casadi_fmax(a14,a43);
+  a14=casadi_fmin(a14,a17);
+  a14=(a42?a14:0);
+  if (res[0]!=0) res[0][0]=a14;
+  a14=(-a35);
+  a20=casadi_fmax(a20,a14);
+  a20=casadi_fmin(a20,a35);
+  a20=(a42?a20:0);
+  if (res[0]!=0) res[0][1]=a20;
+  a20=(-a01);
+  a18=casadi_fmax(a18,a20);
+  a18=casadi_fmin(a18,a01);
+  a18=(a42?a18:0);
+  if (res[0]!=0) res[0][2]=a18;
+  a18=(a12&&a22);
+  a01=(a18?a21:0);
+  a20=(!a18);
+  a15=(a20?a15:0);
+  a01=(a01+a15);
+  if (res[1]!=0) res[1][0]=a01;
+  a01=(a18?a16:0);
+  a33=(a20?a33:0);
+  a01=(a01+a33);
+  if (res[1]!=0) res[1][1]=a01;
+  a01=(a18?a09:0);
+  a04=(a20?a04:0);
+  a01=(a01+a04);
+  if (res[1]!=0) res[1][2]=a01;
+  a18=(a18?a28:0);
+  a20=(a20?a32:0);
+  a18=(a18+a20);
+  if (res[1]!=0) res[1][3]=a18;
+  a18=(a42?a27:0);
+  a20=(!a42);
+  a27=(a20?a27:0);
+  a18=(a18+a27);
+  if (res[1]!=0) res[1][4]=a18;
+  a18=(a42?a24:0);
+  a24=(a20?a24:0);
+  a18=(a18+a24);
+  if (res[1]!=0) res[1][5]=a18;
+  a18=(a42?a13:0);
+  a13=(a20?a13:0);
+  a18=(a18+a13);
+  if (res[1]!=0) res[1][6]=a18;
+  a18=(a42?a08:0);
+  a08=(a20?a08:0);
+  a18=(a18+a08);
+  if (res[1]!=0) res[1][7]=a18;
+  a18=(a42?a25:0);
+  a25=(a20?a25:0);
+  a18=(a18+a25);
+  if (res[1]!=0) res[1][8]=a18;
+  a18=(a42?a36:0);
+  a36=(a20?a36:0);
+  a18=(a18+a36);
+  if (res[1]!=0) res[1][9]=a18;
+  a18=(a42?a19:0);
+  a19=(a20?a19:0);
+  a18=(a18+a19);
+  if (res[1]!=0) res[1][10]=a18;
+  a18=(a42?a23:0);
+  a23=(a20?a23:0);
+  a18=(a18+a23);
+  if (res[1]!=0) res[1][11]=a18;
+  a18=(a42?a31:0);
+  a31=(a20?a31:0);
+  a18=(a18+a31);
+  if (res[1]!=0) res[1][12]=a18;
+  a18=(a42?a03:0);
+  a03=(a20?a03:0);
+  a18=(a18+a03);
+  if (res[1]!=0) res[1][13]=a18;
+  a18=(a42?a37:0);
+  a37=(a20?a37:0);
+  a18=(a18+a37);
+  if (res[1]!=0) res[1][14]=a18;
+  a18=(a42?a38:0);
+  a38=(a20?a38:0);
+  a18=(a18+a38);
+  if (res[1]!=0) res[1][15]=a18;
+  a18=(a42?a39:0);
+  a39=(a20?a39:0);
+  a18=(a18+a39);
+  if (res[1]!=0) res[1][16]=a18;
+  a18=(a42?a40:0);
+  a40=(a20?a40:0);
+  a18=(a18+a40);
+  if (res[1]!=0) res[1][17]=a18;
+  a42=(a42?a41:0);
+  a20=(a20?a41:0);
+  a42=(a42+a20);
+  if (res[1]!=0) res[1][18]=a42;
+  a42=(a07==a02);
+  a02=(a42?a02:0);
+  a42=(!a42);
+  a07=(a07==a11);
+  a20=4.;
+  a07=(a07?a20:0);
+  a42=(a42?a07:0);
+  a02=(a02+a42);
+  a02=(a22?a02:0);
+  a22=(!a22);
+  a42=3.;
+  a22=(a22?a42:0);
+  a02=(a02+a22);
+  a02=(a26?a02:0);
+  a26=(!a26);
+  a26=(a26?a11:0);
+  a02=(a02+a26);
+  a02=(a12?a02:0);
+  a12=(!a12);
+  a26=5.;
+  a12=(a12?a26:0);
+  a02=(a02+a12);
+  if (res[2]!=0) res[2][0]=a02;
+  if (res[3]!=0) res[3][0]=a21;
+  if (res[3]!=0) res[3][1]=a16;
+  if (res[3]!=0) res[3][2]=a09;
+  if (res[3]!=0) res[3][3]=a28;
+  a29=(a29-a21);
+  if (res[3]!=0) res[3][4]=a29;
+  a06=(a06-a16);
+  if (res[3]!=0) res[3][5]=a06;
+  a30=(a30-a09);
+  if (res[3]!=0) res[3][6]=a30;
+  a34=(a34-a28);
+  if (res[3]!=0) res[3][7]=a34;
+  if (res[3]!=0) res[3][8]=a10;
+  if (res[3]!=0) res[3][9]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f32(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_preload_step_n_in(void) { return 8;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_preload_step_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_preload_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_preload_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "state";
+    case 1: return "qa";
+    case 2: return "xd";
+    case 3: return "xd_dot";
+    case 4: return "xd_ddot";
+    case 5: return "params";
+    case 6: return "K";
+    case 7: return "tau_ff";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_preload_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "tau_a";
+    case 1: return "state_next";
+    case 2: return "status";
+    case 3: return "diag";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_preload_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s10;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s0;
+    case 4: return casadi_s0;
+    case 5: return casadi_s14;
+    case 6: return casadi_s5;
+    case 7: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_preload_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s10;
+    case 2: return casadi_s9;
+    case 3: return casadi_s12;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 13*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_plant_xedd:(xe[2],xed[2],tau_a[3],plant[21])->(xedd[2]) */
+static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -17592,7 +22366,7 @@ static int casadi_f27(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_plant_xedd(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f27(arg, res, iw, w, mem);
+  return casadi_f33(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_plant_xedd_checkout(void) {
@@ -17640,7 +22414,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* unequal_plant_xedd_sparsity_in(casadi_int
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s2;
-    case 3: return casadi_s14;
+    case 3: return casadi_s15;
     default: return 0;
   }
 }
@@ -17669,7 +22443,7 @@ CASADI_SYMBOL_EXPORT int unequal_plant_xedd_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* unequal_plant_step:(x[4],tau_a[3],plant[21],h)->(x_next[4]) */
-static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -19653,7 +24427,7 @@ static int casadi_f28(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_plant_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f28(arg, res, iw, w, mem);
+  return casadi_f34(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_plant_step_checkout(void) {
@@ -19700,7 +24474,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* unequal_plant_step_sparsity_in(casadi_int
   switch (i) {
     case 0: return casadi_s3;
     case 1: return casadi_s2;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     case 3: return casadi_s9;
     default: return 0;
   }
@@ -19730,7 +24504,7 @@ CASADI_SYMBOL_EXPORT int unequal_plant_step_work_bytes(casadi_int *sz_arg, casad
 }
 
 /* unequal_measure:(xe[2],plant[21])->(qa[3]) */
-static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14;
   a00=0.;
@@ -19856,7 +24630,7 @@ static int casadi_f29(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_measure(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f29(arg, res, iw, w, mem);
+  return casadi_f35(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_measure_checkout(void) {
@@ -19900,7 +24674,7 @@ CASADI_SYMBOL_EXPORT const char* unequal_measure_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s14;
+    case 1: return casadi_s15;
     default: return 0;
   }
 }
@@ -19929,7 +24703,7 @@ CASADI_SYMBOL_EXPORT int unequal_measure_work_bytes(casadi_int *sz_arg, casadi_i
 }
 
 /* unequal_na_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -19946,7 +24720,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -19971,19 +24745,19 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -19996,7 +24770,7 @@ static int casadi_f30(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f30(arg, res, iw, w, mem);
+  return casadi_f36(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_closed_loop_checkout(void) {
@@ -20041,17 +24815,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_closed_loop_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20073,7 +24847,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_closed_loop_work_bytes(casadi_int *sz_arg, c
 }
 
 /* unequal_na_minmax_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20090,7 +24864,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20115,19 +24889,19 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20140,7 +24914,7 @@ static int casadi_f31(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f31(arg, res, iw, w, mem);
+  return casadi_f37(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_minmax_closed_loop_checkout(void) {
@@ -20185,17 +24959,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_minmax_closed_loop_name_out(casadi_i
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20217,7 +24991,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_minmax_closed_loop_work_bytes(casadi_int *sz
 }
 
 /* unequal_na_preload_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+256, *w07=w+260, *w08=w+263, *w09=w+269, *w10=w+271, *w11=w+273, *w13=w+275, *w14=w+278, w15, w16;
   casadi_real w17, *w18=w+297, *w19=w+301;
@@ -20234,7 +25008,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20259,19 +25033,19 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20284,7 +25058,7 @@ static int casadi_f32(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f32(arg, res, iw, w, mem);
+  return casadi_f38(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_preload_closed_loop_checkout(void) {
@@ -20329,17 +25103,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_preload_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20361,7 +25135,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_preload_closed_loop_work_bytes(casadi_int *s
 }
 
 /* unequal_na_proj_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20378,7 +25152,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20403,19 +25177,19 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20428,7 +25202,7 @@ static int casadi_f33(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f33(arg, res, iw, w, mem);
+  return casadi_f39(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_closed_loop_checkout(void) {
@@ -20473,17 +25247,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_proj_closed_loop_name_out(casadi_int
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20505,7 +25279,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_proj_closed_loop_work_bytes(casadi_int *sz_a
 }
 
 /* unequal_na_proj_minmax_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20522,7 +25296,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20547,19 +25321,19 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20572,7 +25346,7 @@ static int casadi_f34(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f34(arg, res, iw, w, mem);
+  return casadi_f40(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_minmax_closed_loop_checkout(void) {
@@ -20617,17 +25391,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_proj_minmax_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20649,7 +25423,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_proj_minmax_closed_loop_work_bytes(casadi_in
 }
 
 /* unequal_na_proj_preload_closed_loop:(x[23],u[6],p[54])->(x_next[23],y[23]) */
-static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+257, *w07=w+261, *w08=w+264, *w09=w+270, *w10=w+272, *w11=w+274, *w13=w+276, *w14=w+279, w15, w16;
   casadi_real w17, *w18=w+298, *w19=w+302;
@@ -20666,7 +25440,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20691,19 +25465,19 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20716,7 +25490,7 @@ static int casadi_f35(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f35(arg, res, iw, w, mem);
+  return casadi_f41(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_na_proj_preload_closed_loop_checkout(void) {
@@ -20761,17 +25535,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_na_proj_preload_closed_loop_name_out(ca
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20793,7 +25567,7 @@ CASADI_SYMBOL_EXPORT int unequal_na_proj_preload_closed_loop_work_bytes(casadi_i
 }
 
 /* unequal_apd_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20810,7 +25584,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20835,19 +25609,19 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -20860,7 +25634,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f36(arg, res, iw, w, mem);
+  return casadi_f42(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_closed_loop_checkout(void) {
@@ -20905,17 +25679,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_apd_closed_loop_name_out(casadi_int i) 
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -20937,7 +25711,7 @@ CASADI_SYMBOL_EXPORT int unequal_apd_closed_loop_work_bytes(casadi_int *sz_arg, 
 }
 
 /* unequal_apd_minmax_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
   casadi_real w17, *w18=w+164, *w19=w+168;
@@ -20954,7 +25728,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -20979,19 +25753,19 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -21004,7 +25778,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f37(arg, res, iw, w, mem);
+  return casadi_f43(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_minmax_closed_loop_checkout(void) {
@@ -21049,17 +25823,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_apd_minmax_closed_loop_name_out(casadi_
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -21081,7 +25855,7 @@ CASADI_SYMBOL_EXPORT int unequal_apd_minmax_closed_loop_work_bytes(casadi_int *s
 }
 
 /* unequal_apd_preload_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
-static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f44(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+247, *w07=w+251, *w08=w+254, *w09=w+260, *w10=w+262, *w11=w+264, *w13=w+266, *w14=w+269, w15, w16;
   casadi_real w17, *w18=w+288, *w19=w+292;
@@ -21098,7 +25872,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
-  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(arg[1], 6, w08);
   for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
   for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
@@ -21123,19 +25897,19 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w18;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w03;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   arg1[0]=w03;
   arg1[1]=w13;
   arg1[2]=wr06;
   arg1[3]=(&w16);
   res1[0]=w18;
-  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
   casadi_copy(w18, 4, res[0]);
   if (res[0]) casadi_copy(w14, 19, res[0]+4);
   casadi_copy(wr01, 2, res[1]);
@@ -21148,7 +25922,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f38(arg, res, iw, w, mem);
+  return casadi_f44(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_apd_preload_closed_loop_checkout(void) {
@@ -21193,17 +25967,17 @@ CASADI_SYMBOL_EXPORT const char* unequal_apd_preload_closed_loop_name_out(casadi
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
+    case 0: return casadi_s16;
     case 1: return casadi_s1;
-    case 2: return casadi_s17;
+    case 2: return casadi_s18;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s15;
-    case 1: return casadi_s15;
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
     default: return 0;
   }
 }
@@ -21224,8 +25998,884 @@ CASADI_SYMBOL_EXPORT int unequal_apd_preload_closed_loop_work_bytes(casadi_int *
   return 0;
 }
 
+/* unequal_ctc_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f45(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
+  casadi_real w17, *w18=w+164, *w19=w+168;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f27(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f45(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 183;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 183*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_ctc_minmax_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f46(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w08=w+130, *w09=w+136, *w10=w+138, *w11=w+140, *w13=w+142, *w14=w+145, w15, w16;
+  casadi_real w17, *w18=w+164, *w19=w+168;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f28(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f46(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 183;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 183*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_ctc_preload_closed_loop:(x[23],u[6],p[39])->(x_next[23],y[23]) */
+static int casadi_f47(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+243, *w07=w+247, *w08=w+250, *w09=w+256, *w10=w+258, *w11=w+260, *w13=w+262, *w14=w+265, w15, w16;
+  casadi_real w17, *w18=w+284, *w19=w+288;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+18;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(arg[1], 6, w08);
+  for (rr=w09, cs=w08+0; cs!=w08+2; cs+=1) *rr++ = *cs;
+  for (rr=w10, cs=w08+2; cs!=w08+4; cs+=1) *rr++ = *cs;
+  for (rr=w11, cs=w08+4; cs!=w08+6; cs+=1) *rr++ = *cs;
+  wr12 = wr05+0;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=w09;
+  arg1[3]=w10;
+  arg1[4]=w11;
+  arg1[5]=wr12;
+  res1[0]=w13;
+  res1[1]=w14;
+  res1[2]=(&w15);
+  res1[3]=0;
+  if (casadi_f29(arg1, res1, iw, w, 0)) return 1;
+  w16 = wr05[4];
+  w17 = 3.;
+  w16 /= w17;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w18;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w13;
+  arg1[2]=wr06;
+  arg1[3]=(&w16);
+  res1[0]=w18;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w18, 4, res[0]);
+  if (res[0]) casadi_copy(w14, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w13, 3, res[1]+4);
+  if (res[1]) res[1][7] = w15;
+  for (rr=w19, cs=w14+4; cs!=w14+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w19, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f47(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_ctc_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_ctc_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_ctc_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_ctc_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s1;
+    case 2: return casadi_s18;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 303;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 14*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 303*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f48(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w15=w+130, *w16=w+133, w17, w18, w19, *w20=w+152, *w21=w+156;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f30(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f48(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_minmax_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f49(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+123, *w07=w+127, *w15=w+130, *w16=w+133, w17, w18, w19, *w20=w+152, *w21=w+156;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f31(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f49(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_minmax_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_minmax_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_minmax_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_minmax_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_minmax_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_minmax_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 171;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 11*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 171*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_lqr_preload_closed_loop:(x[23],u[21],p[35])->(x_next[23],y[23]) */
+static int casadi_f50(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w03=w+215, *w07=w+219, *w15=w+222, *w16=w+225, w17, w18, w19, *w20=w+244, *w21=w+248;
+  const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr08, *wr09, *wr10, *wr11;
+  const casadi_real *wr12, *wr13, *wr14;
+  wr00 = arg[0] ? arg[0] : casadi_zeros;
+  wr01 = wr00+0;
+  wr02 = wr00+2;
+  rr=w03;
+  for (i=0, cs=wr01; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
+  wr04 = wr00+4;
+  wr05 = arg[2] ? arg[2] : casadi_zeros;
+  wr06 = wr05+14;
+  arg1[0]=wr01;
+  arg1[1]=wr06;
+  res1[0]=w07;
+  if (casadi_f35(arg1, res1, iw, w, 0)) return 1;
+  wr08 = arg[1] ? arg[1] : casadi_zeros;
+  wr09 = wr08+0;
+  wr10 = wr08+2;
+  wr11 = wr08+4;
+  wr12 = wr05+0;
+  wr13 = wr08+6;
+  wr14 = wr08+18;
+  arg1[0]=wr04;
+  arg1[1]=w07;
+  arg1[2]=wr09;
+  arg1[3]=wr10;
+  arg1[4]=wr11;
+  arg1[5]=wr12;
+  arg1[6]=wr13;
+  arg1[7]=wr14;
+  res1[0]=w15;
+  res1[1]=w16;
+  res1[2]=(&w17);
+  res1[3]=0;
+  if (casadi_f32(arg1, res1, iw, w, 0)) return 1;
+  w18 = wr05[0];
+  w19 = 3.;
+  w18 /= w19;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w20;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w03;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  arg1[0]=w03;
+  arg1[1]=w15;
+  arg1[2]=wr06;
+  arg1[3]=(&w18);
+  res1[0]=w20;
+  if (casadi_f34(arg1, res1, iw, w, 0)) return 1;
+  casadi_copy(w20, 4, res[0]);
+  if (res[0]) casadi_copy(w16, 19, res[0]+4);
+  casadi_copy(wr01, 2, res[1]);
+  if (res[1]) casadi_copy(wr02, 2, res[1]+2);
+  if (res[1]) casadi_copy(w15, 3, res[1]+4);
+  if (res[1]) res[1][7] = w17;
+  for (rr=w21, cs=w16+4; cs!=w16+19; cs+=1) *rr++ = *cs;
+  if (res[1]) casadi_copy(w21, 15, res[1]+8);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f50(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_closed_loop_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_closed_loop_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_closed_loop_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_lqr_preload_closed_loop_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_preload_closed_loop_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_lqr_preload_closed_loop_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_lqr_preload_closed_loop_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_preload_closed_loop_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "u";
+    case 2: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_lqr_preload_closed_loop_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "y";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s16;
+    case 1: return casadi_s16;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_closed_loop_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16;
+  if (sz_res) *sz_res = 8;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 263;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 16*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 8*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 263*sizeof(casadi_real);
+  return 0;
+}
+
 /* unequal_path_coefficients:(p[2],dp[2],ddp[2],theta[15],tau_max[3])->(a[2],b[2],S[6],v1[3],N_min_norm[6],h_min_norm[3],N_min_max[6],h_min_max[3],sing[2]) */
-static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f51(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -21917,7 +27567,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_coefficients(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f39(arg, res, iw, w, mem);
+  return casadi_f51(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_coefficients_checkout(void) {
@@ -22012,7 +27662,7 @@ CASADI_SYMBOL_EXPORT int unequal_path_coefficients_work_bytes(casadi_int *sz_arg
 }
 
 /* unequal_path_mvc:(stage[27],params[16])->(x_mvc) */
-static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f52(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -23864,7 +29514,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_mvc(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f40(arg, res, iw, w, mem);
+  return casadi_f52(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_mvc_checkout(void) {
@@ -23907,8 +29557,8 @@ CASADI_SYMBOL_EXPORT const char* unequal_path_mvc_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_path_mvc_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s18;
-    case 1: return casadi_s19;
+    case 0: return casadi_s20;
+    case 1: return casadi_s21;
     default: return 0;
   }
 }
@@ -23937,7 +29587,7 @@ CASADI_SYMBOL_EXPORT int unequal_path_mvc_work_bytes(casadi_int *sz_arg, casadi_
 }
 
 /* unequal_path_backward:(x_next_max,pair[55],params[16])->(x_max,y) */
-static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f53(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -26518,7 +32168,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_backward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f41(arg, res, iw, w, mem);
+  return casadi_f53(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_backward_checkout(void) {
@@ -26564,8 +32214,8 @@ CASADI_SYMBOL_EXPORT const char* unequal_path_backward_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_path_backward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s9;
-    case 1: return casadi_s20;
-    case 2: return casadi_s19;
+    case 1: return casadi_s22;
+    case 2: return casadi_s21;
     default: return 0;
   }
 }
@@ -26595,7 +32245,7 @@ CASADI_SYMBOL_EXPORT int unequal_path_backward_work_bytes(casadi_int *sz_arg, ca
 }
 
 /* unequal_path_forward:(x,input[56],params[16])->(x_next,y[6]) */
-static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f54(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -27355,7 +33005,7 @@ static int casadi_f42(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f42(arg, res, iw, w, mem);
+  return casadi_f54(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_forward_checkout(void) {
@@ -27401,8 +33051,8 @@ CASADI_SYMBOL_EXPORT const char* unequal_path_forward_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_path_forward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s9;
-    case 1: return casadi_s21;
-    case 2: return casadi_s19;
+    case 1: return casadi_s23;
+    case 2: return casadi_s21;
     default: return 0;
   }
 }
@@ -27432,7 +33082,7 @@ CASADI_SYMBOL_EXPORT int unequal_path_forward_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* unequal_path_torques:(stage[27],sd,sdd,params[16],tau_max[3])->(u[2],tau_min_norm[3],tau_min_max[3],min_max_ratio) */
-static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f55(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27;
@@ -27766,7 +33416,7 @@ static int casadi_f43(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f43(arg, res, iw, w, mem);
+  return casadi_f55(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int unequal_path_torques_checkout(void) {
@@ -27815,10 +33465,10 @@ CASADI_SYMBOL_EXPORT const char* unequal_path_torques_name_out(casadi_int i) {
 
 CASADI_SYMBOL_EXPORT const casadi_int* unequal_path_torques_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s18;
+    case 0: return casadi_s20;
     case 1: return casadi_s9;
     case 2: return casadi_s9;
-    case 3: return casadi_s19;
+    case 3: return casadi_s21;
     case 4: return casadi_s2;
     default: return 0;
   }
@@ -27847,6 +33497,6291 @@ CASADI_SYMBOL_EXPORT int unequal_path_torques_work_bytes(casadi_int *sz_arg, cas
   if (sz_res) *sz_res = 4*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_forward_dynamics_jacobians:(xe[2],xed[2],tau_a[3],theta[15])->(xedd[2],d_xe[4],d_xed[4],d_tau_a[6],d_theta[30],sing[2]) */
+static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
+  casadi_real a120, a121, a122, a123, a124, a125, a126, a127, a128, a129, a130, a131;
+  casadi_real a132, a133, a134, a135, a136, a137, a138, a139, a140, a141, a142, a143;
+  casadi_real a144, a145, a146, a147, a148, a149, a150, a151, a152, a153, a154, a155;
+  casadi_real a156, a157, a158, a159, a160, a161, a162, a163, a164, a165, a166, a167;
+  casadi_real a168, a169, a170, a171, a172, a173, a174, a175, a176, a177, a178, a179;
+  casadi_real a180, a181, a182, a183, a184, a185, a186, a187, a188, a189, a190, a191;
+  casadi_real a192, a193, a194, a195, a196, a197, a198, a199, a200, a201, a202, a203;
+  casadi_real a204, a205, a206, a207, a208, a209, a210, a211, a212, a213, a214, a215;
+  casadi_real a216, a217, a218, a219, a220, a221, a222, a223, a224, a225, a226, a227;
+  casadi_real a228, a229, a230, a231, a232, a233, a234, a235, a236, a237, a238, a239;
+  casadi_real a240, a241, a242, a243, a244, a245, a246, a247, a248, a249, a250;
+  a000=-2.5000000000000000e-01;
+  a001=2.;
+  a002=arg[0]? arg[0][0] : 0;
+  a003=casadi_sq(a002);
+  a004=-2.6000000000000001e-01;
+  a005=arg[0]? arg[0][1] : 0;
+  a004=(a004+a005);
+  a006=casadi_sq(a004);
+  a007=(a003+a006);
+  a008=(a001/a007);
+  a008=(a008*a004);
+  a009=7.2750000000000002e-03;
+  a009=(a009+a003);
+  a009=(a009+a006);
+  a008=(a008*a009);
+  a006=1.;
+  a003=-4.;
+  a003=(a003/a007);
+  a010=casadi_sq(a009);
+  a003=(a003*a010);
+  a003=(a006+a003);
+  a003=sqrt(a003);
+  a010=(a002*a003);
+  a011=sqrt(a007);
+  a010=(a010/a011);
+  a008=(a008-a010);
+  a010=(a000*a008);
+  a012=2.3499999999999999e-01;
+  a013=4.2553191489361701e+00;
+  a014=(a013*a002);
+  a015=-2.1276595744680851e+00;
+  a016=(a015*a002);
+  a016=(a016/a007);
+  a016=(a016*a009);
+  a014=(a014+a016);
+  a016=-1.0638297872340425e+00;
+  a016=(a016*a003);
+  a016=(a016/a011);
+  a016=(a016*a004);
+  a014=(a014+a016);
+  a016=(a012*a014);
+  a017=(a010*a016);
+  a018=-2.3499999999999999e-01;
+  a019=-1.1063829787234043e+00;
+  a013=(a013*a005);
+  a019=(a019+a013);
+  a015=(a015/a007);
+  a015=(a015*a004);
+  a015=(a015*a009);
+  a019=(a019+a015);
+  a015=1.0638297872340425e+00;
+  a015=(a015*a002);
+  a015=(a015*a003);
+  a015=(a015/a011);
+  a019=(a019+a015);
+  a015=(a018*a019);
+  a013=2.5000000000000000e-01;
+  a003=(a003/a011);
+  a003=(a003*a004);
+  a004=(2.*a002);
+  a004=(a004/a007);
+  a004=(a004*a009);
+  a003=(a003+a004);
+  a004=(a013*a003);
+  a009=(a015*a004);
+  a017=(a017-a009);
+  a009=(a010/a017);
+  a007=arg[3]? arg[3][6] : 0;
+  a011=(a009*a007);
+  a020=(a015/a017);
+  a021=arg[3]? arg[3][3] : 0;
+  a022=(a003*a014);
+  a023=(a008*a019);
+  a022=(a022+a023);
+  a023=(a021*a022);
+  a024=(a020*a023);
+  a011=(a011-a024);
+  a024=(a011*a009);
+  a025=(a009*a023);
+  a026=arg[3]? arg[3][0] : 0;
+  a027=(a020*a026);
+  a025=(a025-a027);
+  a027=(a025*a020);
+  a028=-2.3999999999999999e-01;
+  a029=2.0833333333333335e+00;
+  a030=(a029*a005);
+  a031=casadi_sq(a005);
+  a032=-4.4000000000000000e-01;
+  a032=(a032+a002);
+  a033=casadi_sq(a032);
+  a034=(a031+a033);
+  a030=(a030/a034);
+  a035=-4.8999999999999998e-03;
+  a035=(a035+a031);
+  a035=(a035+a033);
+  a030=(a030*a035);
+  a033=-4.3402777777777777e+00;
+  a033=(a033/a034);
+  a031=casadi_sq(a035);
+  a033=(a033*a031);
+  a033=(a006+a033);
+  a033=sqrt(a033);
+  a031=sqrt(a034);
+  a036=(a033/a031);
+  a036=(a036*a032);
+  a030=(a030-a036);
+  a036=(a028*a030);
+  a037=-1.7600000000000000e+00;
+  a038=4.;
+  a039=(a038*a002);
+  a037=(a037+a039);
+  a039=-2.;
+  a040=(a039/a034);
+  a040=(a040*a032);
+  a040=(a040*a035);
+  a037=(a037+a040);
+  a040=-9.5999999999999996e-01;
+  a040=(a040*a005);
+  a040=(a040*a033);
+  a040=(a040/a031);
+  a037=(a037+a040);
+  a040=(a013*a037);
+  a041=(a036*a040);
+  a038=(a038*a005);
+  a039=(a039*a005);
+  a039=(a039/a034);
+  a039=(a039*a035);
+  a038=(a038+a039);
+  a039=9.5999999999999996e-01;
+  a039=(a039*a033);
+  a039=(a039/a031);
+  a039=(a039*a032);
+  a038=(a038+a039);
+  a039=(a000*a038);
+  a042=2.3999999999999999e-01;
+  a033=(a005*a033);
+  a033=(a033/a031);
+  a029=(a029/a034);
+  a029=(a029*a032);
+  a029=(a029*a035);
+  a033=(a033+a029);
+  a029=(a042*a033);
+  a035=(a039*a029);
+  a041=(a041-a035);
+  a035=(a036/a041);
+  a032=arg[3]? arg[3][4] : 0;
+  a034=(a033*a037);
+  a031=(a030*a038);
+  a034=(a034+a031);
+  a031=(a032*a034);
+  a043=(a035*a031);
+  a044=(a039/a041);
+  a045=arg[3]? arg[3][1] : 0;
+  a046=(a044*a045);
+  a043=(a043-a046);
+  a046=(a043*a044);
+  a027=(a027+a046);
+  a046=-2.4500000000000000e-01;
+  a047=2.0408163265306123e+00;
+  a048=-5.1000000000000001e-01;
+  a048=(a048+a005);
+  a049=casadi_sq(a048);
+  a050=-4.2999999999999999e-01;
+  a050=(a050+a002);
+  a051=casadi_sq(a050);
+  a052=(a049+a051);
+  a047=(a047/a052);
+  a053=(a047*a048);
+  a054=2.4250000000000001e-03;
+  a054=(a054+a049);
+  a054=(a054+a051);
+  a053=(a053*a054);
+  a051=-4.1649312786339028e+00;
+  a051=(a051/a052);
+  a049=casadi_sq(a054);
+  a051=(a051*a049);
+  a051=(a006+a051);
+  a051=sqrt(a051);
+  a049=sqrt(a052);
+  a055=(a051/a049);
+  a056=(a055*a050);
+  a053=(a053-a056);
+  a056=(a046*a053);
+  a057=-1.7916666666666667e+00;
+  a058=4.1666666666666670e+00;
+  a002=(a058*a002);
+  a057=(a057+a002);
+  a002=-1.0208333333333333e+00;
+  a002=(a002*a051);
+  a002=(a002/a049);
+  a002=(a002*a048);
+  a057=(a057+a002);
+  a002=-2.0833333333333335e+00;
+  a002=(a002/a052);
+  a052=(a002*a050);
+  a052=(a052*a054);
+  a057=(a057+a052);
+  a052=(a042*a057);
+  a059=(a056*a052);
+  a060=-2.1250000000000000e+00;
+  a058=(a058*a005);
+  a060=(a060+a058);
+  a002=(a002*a048);
+  a002=(a002*a054);
+  a060=(a060+a002);
+  a002=1.0208333333333333e+00;
+  a002=(a002*a051);
+  a002=(a002/a049);
+  a002=(a002*a050);
+  a060=(a060+a002);
+  a002=(a028*a060);
+  a049=2.4500000000000000e-01;
+  a055=(a055*a048);
+  a047=(a047*a050);
+  a047=(a047*a054);
+  a055=(a055+a047);
+  a047=(a049*a055);
+  a054=(a002*a047);
+  a059=(a059-a054);
+  a054=(a056/a059);
+  a050=arg[3]? arg[3][5] : 0;
+  a048=(a055*a057);
+  a051=(a053*a060);
+  a048=(a048+a051);
+  a051=(a050*a048);
+  a058=(a054*a051);
+  a005=(a002/a059);
+  a061=arg[3]? arg[3][2] : 0;
+  a062=(a005*a061);
+  a058=(a058-a062);
+  a062=(a058*a005);
+  a027=(a027+a062);
+  a024=(a024-a027);
+  a027=arg[3]? arg[3][7] : 0;
+  a062=(a035*a027);
+  a063=(a044*a031);
+  a062=(a062-a063);
+  a063=(a062*a035);
+  a024=(a024+a063);
+  a063=arg[3]? arg[3][8] : 0;
+  a064=(a054*a063);
+  a065=(a005*a051);
+  a064=(a064-a065);
+  a065=(a064*a054);
+  a024=(a024+a065);
+  a065=(a016/a017);
+  a066=arg[2]? arg[2][0] : 0;
+  a067=(a065*a066);
+  a068=(a040/a041);
+  a069=arg[2]? arg[2][1] : 0;
+  a070=(a068*a069);
+  a067=(a067+a070);
+  a070=(a052/a059);
+  a071=arg[2]? arg[2][2] : 0;
+  a072=(a070*a071);
+  a067=(a067+a072);
+  a072=arg[1]? arg[1][0] : 0;
+  a073=(a065*a072);
+  a074=arg[1]? arg[1][1] : 0;
+  a075=(a020*a074);
+  a073=(a073-a075);
+  a075=(a000*a073);
+  a076=(a075*a008);
+  a077=(a076*a073);
+  a078=(a009*a074);
+  a079=(a004/a017);
+  a080=(a079*a072);
+  a078=(a078-a080);
+  a080=(a018*a078);
+  a081=(a080*a019);
+  a082=(a081*a078);
+  a077=(a077+a082);
+  a082=(a020*a077);
+  a083=(a075*a003);
+  a084=(a083*a073);
+  a085=(a080*a014);
+  a086=(a085*a078);
+  a084=(a084+a086);
+  a086=(a065*a084);
+  a082=(a082-a086);
+  a086=(a026*a082);
+  a087=(a079*a084);
+  a088=(a009*a077);
+  a087=(a087-a088);
+  a088=(a023*a087);
+  a086=(a086+a088);
+  a088=(a021*a078);
+  a089=(a008*a014);
+  a090=(a003*a019);
+  a089=(a089-a090);
+  a090=(a088*a089);
+  a091=(a090*a078);
+  a086=(a086+a091);
+  a091=(a065*a086);
+  a092=(a068*a072);
+  a093=(a044*a074);
+  a092=(a092-a093);
+  a093=(a028*a092);
+  a094=(a093*a030);
+  a095=(a094*a092);
+  a096=(a035*a074);
+  a097=(a029/a041);
+  a098=(a097*a072);
+  a096=(a096-a098);
+  a098=(a000*a096);
+  a099=(a098*a038);
+  a100=(a099*a096);
+  a095=(a095+a100);
+  a100=(a044*a095);
+  a101=(a093*a033);
+  a102=(a101*a092);
+  a103=(a098*a037);
+  a104=(a103*a096);
+  a102=(a102+a104);
+  a104=(a068*a102);
+  a100=(a100-a104);
+  a104=(a045*a100);
+  a105=(a097*a102);
+  a106=(a035*a095);
+  a105=(a105-a106);
+  a106=(a031*a105);
+  a104=(a104+a106);
+  a106=(a032*a096);
+  a107=(a030*a037);
+  a108=(a033*a038);
+  a107=(a107-a108);
+  a108=(a106*a107);
+  a109=(a108*a096);
+  a104=(a104+a109);
+  a109=(a068*a104);
+  a091=(a091+a109);
+  a109=(a070*a072);
+  a110=(a005*a074);
+  a109=(a109-a110);
+  a110=(a046*a109);
+  a111=(a110*a053);
+  a112=(a111*a109);
+  a113=(a054*a074);
+  a114=(a047/a059);
+  a115=(a114*a072);
+  a113=(a113-a115);
+  a115=(a028*a113);
+  a116=(a115*a060);
+  a117=(a116*a113);
+  a112=(a112+a117);
+  a117=(a005*a112);
+  a118=(a110*a055);
+  a119=(a118*a109);
+  a120=(a115*a057);
+  a121=(a120*a113);
+  a119=(a119+a121);
+  a121=(a070*a119);
+  a117=(a117-a121);
+  a121=(a061*a117);
+  a122=(a114*a119);
+  a123=(a054*a112);
+  a122=(a122-a123);
+  a123=(a051*a122);
+  a121=(a121+a123);
+  a123=(a050*a113);
+  a124=(a053*a057);
+  a125=(a055*a060);
+  a124=(a124-a125);
+  a125=(a123*a124);
+  a126=(a125*a113);
+  a121=(a121+a126);
+  a126=(a070*a121);
+  a091=(a091+a126);
+  a126=(a023*a082);
+  a127=(a007*a087);
+  a126=(a126+a127);
+  a127=(a021*a073);
+  a128=(a127*a089);
+  a129=(a128*a073);
+  a126=(a126-a129);
+  a129=(a079*a126);
+  a091=(a091-a129);
+  a129=(a031*a100);
+  a130=(a027*a105);
+  a129=(a129+a130);
+  a130=(a032*a092);
+  a131=(a130*a107);
+  a132=(a131*a092);
+  a129=(a129-a132);
+  a132=(a097*a129);
+  a091=(a091-a132);
+  a132=(a051*a117);
+  a133=(a063*a122);
+  a132=(a132+a133);
+  a133=(a050*a109);
+  a134=(a133*a124);
+  a135=(a134*a109);
+  a132=(a132-a135);
+  a135=(a114*a132);
+  a091=(a091-a135);
+  a067=(a067-a091);
+  a091=arg[3]? arg[3][12] : 0;
+  a135=0.;
+  a136=(a135<=a073);
+  a137=(a136?a006:0);
+  a136=(!a136);
+  a138=-1.;
+  a136=(a136?a138:0);
+  a137=(a137+a136);
+  a091=(a091*a137);
+  a136=arg[3]? arg[3][9] : 0;
+  a139=(a136*a073);
+  a091=(a091+a139);
+  a139=(a065*a091);
+  a140=arg[3]? arg[3][13] : 0;
+  a141=(a135<=a092);
+  a142=(a141?a006:0);
+  a141=(!a141);
+  a141=(a141?a138:0);
+  a142=(a142+a141);
+  a140=(a140*a142);
+  a141=arg[3]? arg[3][10] : 0;
+  a143=(a141*a092);
+  a140=(a140+a143);
+  a143=(a068*a140);
+  a139=(a139+a143);
+  a143=arg[3]? arg[3][14] : 0;
+  a135=(a135<=a109);
+  a144=(a135?a006:0);
+  a135=(!a135);
+  a135=(a135?a138:0);
+  a144=(a144+a135);
+  a143=(a143*a144);
+  a135=arg[3]? arg[3][11] : 0;
+  a138=(a135*a109);
+  a143=(a143+a138);
+  a138=(a070*a143);
+  a139=(a139+a138);
+  a067=(a067-a139);
+  a139=(a024*a067);
+  a138=(a065*a023);
+  a145=(a079*a007);
+  a138=(a138-a145);
+  a145=(a138*a009);
+  a146=(a065*a026);
+  a147=(a079*a023);
+  a146=(a146-a147);
+  a147=(a146*a020);
+  a148=(a068*a045);
+  a149=(a097*a031);
+  a148=(a148-a149);
+  a149=(a148*a044);
+  a147=(a147+a149);
+  a149=(a070*a061);
+  a150=(a114*a051);
+  a149=(a149-a150);
+  a150=(a149*a005);
+  a147=(a147+a150);
+  a145=(a145-a147);
+  a147=(a068*a031);
+  a150=(a097*a027);
+  a147=(a147-a150);
+  a150=(a147*a035);
+  a145=(a145+a150);
+  a150=(a070*a051);
+  a151=(a114*a063);
+  a150=(a150-a151);
+  a151=(a150*a054);
+  a145=(a145+a151);
+  a151=(a020*a091);
+  a152=(a044*a140);
+  a151=(a151+a152);
+  a152=(a005*a143);
+  a151=(a151+a152);
+  a152=(a020*a066);
+  a153=(a044*a069);
+  a152=(a152+a153);
+  a153=(a005*a071);
+  a152=(a152+a153);
+  a153=(a009*a126);
+  a154=(a020*a086);
+  a155=(a044*a104);
+  a154=(a154+a155);
+  a155=(a005*a121);
+  a154=(a154+a155);
+  a153=(a153-a154);
+  a154=(a035*a129);
+  a153=(a153+a154);
+  a154=(a054*a132);
+  a153=(a153+a154);
+  a152=(a152+a153);
+  a151=(a151-a152);
+  a152=(a145*a151);
+  a139=(a139-a152);
+  a152=(a146*a065);
+  a153=(a148*a068);
+  a152=(a152+a153);
+  a153=(a149*a070);
+  a152=(a152+a153);
+  a153=(a138*a079);
+  a152=(a152-a153);
+  a153=(a147*a097);
+  a152=(a152-a153);
+  a153=(a150*a114);
+  a152=(a152-a153);
+  a153=(a152*a024);
+  a154=(a025*a065);
+  a155=(a043*a068);
+  a154=(a154+a155);
+  a155=(a058*a070);
+  a154=(a154+a155);
+  a155=(a011*a079);
+  a154=(a154-a155);
+  a155=(a062*a097);
+  a154=(a154-a155);
+  a155=(a064*a114);
+  a154=(a154-a155);
+  a155=(a145*a154);
+  a153=(a153-a155);
+  a139=(a139/a153);
+  if (res[0]!=0) res[0][0]=a139;
+  a155=(a152*a151);
+  a156=(a154*a067);
+  a155=(a155-a156);
+  a155=(a155/a153);
+  if (res[0]!=0) res[0][1]=a155;
+  a156=(a145/a153);
+  a157=(a009*a156);
+  a158=(a024/a153);
+  a159=(a079*a158);
+  a157=(a157+a159);
+  a159=(a007*a157);
+  a160=(a020*a156);
+  a161=(a065*a158);
+  a160=(a160+a161);
+  a161=(a023*a160);
+  a159=(a159-a161);
+  a161=(a079*a159);
+  a162=(a023*a157);
+  a163=(a026*a160);
+  a162=(a162-a163);
+  a163=(a065*a162);
+  a161=(a161-a163);
+  a163=(a078*a161);
+  a164=(a080*a163);
+  a165=(a073*a157);
+  a166=(a127*a165);
+  a167=(a078*a160);
+  a168=(a088*a167);
+  a166=(a166+a168);
+  a168=(a008*a166);
+  a164=(a164-a168);
+  a139=(a139/a153);
+  a168=(a024*a139);
+  a169=(a065*a168);
+  a170=(a154*a139);
+  a151=(a151/a153);
+  a170=(a170-a151);
+  a171=(a020*a170);
+  a169=(a169+a171);
+  a171=(a079*a169);
+  a172=(a079*a168);
+  a173=(a009*a170);
+  a172=(a172+a173);
+  a173=(a065*a172);
+  a171=(a171+a173);
+  a173=(a082*a157);
+  a171=(a171+a173);
+  a173=(a087*a160);
+  a171=(a171-a173);
+  a173=(a145*a139);
+  a174=(a065*a173);
+  a067=(a067/a153);
+  a139=(a152*a139);
+  a139=(a067-a139);
+  a175=(a020*a139);
+  a174=(a174-a175);
+  a175=(a009*a174);
+  a171=(a171+a175);
+  a175=(a009*a139);
+  a176=(a079*a173);
+  a175=(a175-a176);
+  a176=(a020*a175);
+  a171=(a171-a176);
+  a176=(a021*a171);
+  a177=(a003*a176);
+  a164=(a164+a177);
+  a177=(a025*a173);
+  a178=(a146*a168);
+  a177=(a177-a178);
+  a178=(a026*a169);
+  a177=(a177-a178);
+  a178=(a023*a172);
+  a177=(a177+a178);
+  a178=(a091*a158);
+  a177=(a177-a178);
+  a178=(a136*a160);
+  a179=(a072*a178);
+  a177=(a177-a179);
+  a179=(a086*a158);
+  a177=(a177-a179);
+  a179=(a084*a162);
+  a177=(a177-a179);
+  a179=(a083*a161);
+  a180=(a020*a162);
+  a181=(a009*a159);
+  a180=(a180-a181);
+  a181=(a076*a180);
+  a179=(a179+a181);
+  a181=(a072*a179);
+  a177=(a177+a181);
+  a181=(a073*a161);
+  a182=(a003*a181);
+  a182=(a000*a182);
+  a183=(a128*a157);
+  a165=(a089*a165);
+  a184=(a021*a165);
+  a183=(a183+a184);
+  a182=(a182-a183);
+  a183=(a073*a180);
+  a184=(a008*a183);
+  a184=(a000*a184);
+  a182=(a182+a184);
+  a184=(a072*a182);
+  a177=(a177+a184);
+  a184=(a066*a158);
+  a177=(a177+a184);
+  a184=(a177/a017);
+  a185=(a079/a017);
+  a186=(a138*a168);
+  a187=(a011*a173);
+  a186=(a186-a187);
+  a187=(a023*a169);
+  a186=(a186+a187);
+  a187=(a007*a172);
+  a186=(a186-a187);
+  a187=(a126*a158);
+  a186=(a186+a187);
+  a187=(a084*a159);
+  a186=(a186+a187);
+  a161=(a085*a161);
+  a187=(a081*a180);
+  a161=(a161+a187);
+  a187=(a072*a161);
+  a186=(a186-a187);
+  a163=(a014*a163);
+  a163=(a018*a163);
+  a187=(a090*a160);
+  a167=(a089*a167);
+  a188=(a021*a167);
+  a187=(a187+a188);
+  a163=(a163-a187);
+  a180=(a078*a180);
+  a187=(a019*a180);
+  a187=(a018*a187);
+  a163=(a163+a187);
+  a187=(a072*a163);
+  a186=(a186-a187);
+  a187=(a185*a186);
+  a188=(a065/a017);
+  a177=(a188*a177);
+  a187=(a187+a177);
+  a177=(a020/a017);
+  a189=(a066*a156);
+  a190=(a086*a156);
+  a189=(a189-a190);
+  a190=(a091*a156);
+  a189=(a189-a190);
+  a190=(a146*a170);
+  a189=(a189-a190);
+  a190=(a074*a178);
+  a189=(a189+a190);
+  a162=(a077*a162);
+  a189=(a189+a162);
+  a162=(a074*a179);
+  a189=(a189-a162);
+  a162=(a074*a182);
+  a189=(a189-a162);
+  a162=(a025*a139);
+  a189=(a189-a162);
+  a162=(a026*a174);
+  a189=(a189-a162);
+  a162=(a023*a175);
+  a189=(a189-a162);
+  a162=(a177*a189);
+  a187=(a187+a162);
+  a162=(a009/a017);
+  a190=(a126*a156);
+  a191=(a138*a170);
+  a190=(a190+a191);
+  a159=(a077*a159);
+  a190=(a190-a159);
+  a159=(a074*a161);
+  a190=(a190+a159);
+  a159=(a074*a163);
+  a190=(a190+a159);
+  a159=(a023*a174);
+  a190=(a190+a159);
+  a159=(a011*a139);
+  a190=(a190+a159);
+  a159=(a007*a175);
+  a190=(a190+a159);
+  a159=(a162*a190);
+  a187=(a187+a159);
+  a159=(a010*a187);
+  a184=(a184-a159);
+  a184=(a012*a184);
+  a164=(a164+a184);
+  a184=(a019*a079);
+  a159=(a164*a184);
+  a191=(a019*a166);
+  a181=(a075*a181);
+  a191=(a191+a181);
+  a181=(a014*a176);
+  a191=(a191+a181);
+  a186=(a186/a017);
+  a181=(a015*a187);
+  a186=(a186+a181);
+  a186=(a013*a186);
+  a191=(a191+a186);
+  a186=(a008*a065);
+  a181=(a191*a186);
+  a192=(a035*a156);
+  a193=(a097*a158);
+  a192=(a192+a193);
+  a193=(a092*a192);
+  a194=(a130*a193);
+  a195=(a044*a156);
+  a196=(a068*a158);
+  a195=(a195+a196);
+  a196=(a096*a195);
+  a197=(a106*a196);
+  a194=(a194+a197);
+  a197=(a038*a194);
+  a198=(a027*a192);
+  a199=(a031*a195);
+  a198=(a198-a199);
+  a199=(a097*a198);
+  a200=(a031*a192);
+  a201=(a045*a195);
+  a200=(a200-a201);
+  a201=(a068*a200);
+  a199=(a199-a201);
+  a201=(a092*a199);
+  a202=(a093*a201);
+  a197=(a197+a202);
+  a202=(a097*a168);
+  a203=(a035*a170);
+  a202=(a202+a203);
+  a203=(a068*a202);
+  a204=(a068*a168);
+  a205=(a044*a170);
+  a204=(a204+a205);
+  a205=(a097*a204);
+  a203=(a203+a205);
+  a205=(a100*a192);
+  a203=(a203+a205);
+  a205=(a105*a195);
+  a203=(a203-a205);
+  a205=(a035*a139);
+  a206=(a097*a173);
+  a205=(a205-a206);
+  a206=(a044*a205);
+  a203=(a203-a206);
+  a206=(a068*a173);
+  a207=(a044*a139);
+  a206=(a206-a207);
+  a207=(a035*a206);
+  a203=(a203+a207);
+  a207=(a032*a203);
+  a208=(a037*a207);
+  a197=(a197+a208);
+  a208=(a147*a168);
+  a209=(a062*a173);
+  a208=(a208-a209);
+  a209=(a027*a202);
+  a208=(a208-a209);
+  a209=(a031*a204);
+  a208=(a208+a209);
+  a209=(a129*a158);
+  a208=(a208+a209);
+  a209=(a102*a198);
+  a208=(a208+a209);
+  a209=(a103*a199);
+  a210=(a044*a200);
+  a211=(a035*a198);
+  a210=(a210-a211);
+  a211=(a099*a210);
+  a209=(a209+a211);
+  a211=(a072*a209);
+  a208=(a208-a211);
+  a211=(a096*a199);
+  a212=(a037*a211);
+  a212=(a000*a212);
+  a213=(a108*a195);
+  a196=(a107*a196);
+  a214=(a032*a196);
+  a213=(a213+a214);
+  a212=(a212-a213);
+  a213=(a096*a210);
+  a214=(a038*a213);
+  a214=(a000*a214);
+  a212=(a212+a214);
+  a214=(a072*a212);
+  a208=(a208-a214);
+  a214=(a208/a041);
+  a215=(a097/a041);
+  a208=(a215*a208);
+  a216=(a068/a041);
+  a217=(a043*a173);
+  a218=(a148*a168);
+  a217=(a217-a218);
+  a218=(a031*a202);
+  a217=(a217+a218);
+  a218=(a045*a204);
+  a217=(a217-a218);
+  a218=(a140*a158);
+  a217=(a217-a218);
+  a218=(a141*a195);
+  a219=(a072*a218);
+  a217=(a217-a219);
+  a219=(a104*a158);
+  a217=(a217-a219);
+  a219=(a102*a200);
+  a217=(a217-a219);
+  a199=(a101*a199);
+  a219=(a094*a210);
+  a199=(a199+a219);
+  a219=(a072*a199);
+  a217=(a217+a219);
+  a201=(a033*a201);
+  a201=(a028*a201);
+  a219=(a131*a192);
+  a193=(a107*a193);
+  a220=(a032*a193);
+  a219=(a219+a220);
+  a201=(a201-a219);
+  a210=(a092*a210);
+  a219=(a030*a210);
+  a219=(a028*a219);
+  a201=(a201+a219);
+  a219=(a072*a201);
+  a217=(a217+a219);
+  a219=(a069*a158);
+  a217=(a217+a219);
+  a219=(a216*a217);
+  a208=(a208+a219);
+  a219=(a044/a041);
+  a220=(a069*a156);
+  a221=(a104*a156);
+  a220=(a220-a221);
+  a221=(a140*a156);
+  a220=(a220-a221);
+  a221=(a148*a170);
+  a220=(a220-a221);
+  a221=(a074*a218);
+  a220=(a220+a221);
+  a200=(a095*a200);
+  a220=(a220+a200);
+  a200=(a074*a199);
+  a220=(a220-a200);
+  a200=(a074*a201);
+  a220=(a220-a200);
+  a200=(a031*a205);
+  a220=(a220-a200);
+  a200=(a043*a139);
+  a220=(a220-a200);
+  a200=(a045*a206);
+  a220=(a220-a200);
+  a200=(a219*a220);
+  a208=(a208+a200);
+  a200=(a035/a041);
+  a221=(a129*a156);
+  a222=(a147*a170);
+  a221=(a221+a222);
+  a198=(a095*a198);
+  a221=(a221-a198);
+  a198=(a074*a209);
+  a221=(a221+a198);
+  a198=(a074*a212);
+  a221=(a221+a198);
+  a198=(a062*a139);
+  a221=(a221+a198);
+  a198=(a027*a205);
+  a221=(a221+a198);
+  a198=(a031*a206);
+  a221=(a221+a198);
+  a198=(a200*a221);
+  a208=(a208+a198);
+  a198=(a039*a208);
+  a214=(a214+a198);
+  a214=(a042*a214);
+  a197=(a197+a214);
+  a214=(a030*a068);
+  a198=(a197*a214);
+  a181=(a181+a198);
+  a198=(a054*a156);
+  a222=(a114*a158);
+  a198=(a198+a222);
+  a222=(a109*a198);
+  a223=(a133*a222);
+  a224=(a005*a156);
+  a225=(a070*a158);
+  a224=(a224+a225);
+  a225=(a113*a224);
+  a226=(a123*a225);
+  a223=(a223+a226);
+  a226=(a060*a223);
+  a227=(a063*a198);
+  a228=(a051*a224);
+  a227=(a227-a228);
+  a228=(a114*a227);
+  a229=(a051*a198);
+  a230=(a061*a224);
+  a229=(a229-a230);
+  a230=(a070*a229);
+  a228=(a228-a230);
+  a230=(a109*a228);
+  a231=(a110*a230);
+  a226=(a226+a231);
+  a231=(a114*a168);
+  a232=(a054*a170);
+  a231=(a231+a232);
+  a232=(a070*a231);
+  a233=(a070*a168);
+  a234=(a005*a170);
+  a233=(a233+a234);
+  a234=(a114*a233);
+  a232=(a232+a234);
+  a234=(a117*a198);
+  a232=(a232+a234);
+  a234=(a122*a224);
+  a232=(a232-a234);
+  a234=(a054*a139);
+  a235=(a114*a173);
+  a234=(a234-a235);
+  a235=(a005*a234);
+  a232=(a232-a235);
+  a235=(a070*a173);
+  a236=(a005*a139);
+  a235=(a235-a236);
+  a236=(a054*a235);
+  a232=(a232+a236);
+  a236=(a050*a232);
+  a237=(a057*a236);
+  a226=(a226+a237);
+  a237=(a150*a168);
+  a238=(a064*a173);
+  a237=(a237-a238);
+  a238=(a063*a231);
+  a237=(a237-a238);
+  a238=(a051*a233);
+  a237=(a237+a238);
+  a238=(a132*a158);
+  a237=(a237+a238);
+  a238=(a119*a227);
+  a237=(a237+a238);
+  a238=(a120*a228);
+  a239=(a005*a229);
+  a240=(a054*a227);
+  a239=(a239-a240);
+  a240=(a116*a239);
+  a238=(a238+a240);
+  a240=(a072*a238);
+  a237=(a237-a240);
+  a240=(a113*a228);
+  a241=(a057*a240);
+  a241=(a028*a241);
+  a242=(a125*a224);
+  a225=(a124*a225);
+  a243=(a050*a225);
+  a242=(a242+a243);
+  a241=(a241-a242);
+  a242=(a113*a239);
+  a243=(a060*a242);
+  a243=(a028*a243);
+  a241=(a241+a243);
+  a243=(a072*a241);
+  a237=(a237-a243);
+  a243=(a237/a059);
+  a244=(a114/a059);
+  a237=(a244*a237);
+  a245=(a070/a059);
+  a173=(a058*a173);
+  a168=(a149*a168);
+  a173=(a173-a168);
+  a168=(a051*a231);
+  a173=(a173+a168);
+  a168=(a061*a233);
+  a173=(a173-a168);
+  a168=(a143*a158);
+  a173=(a173-a168);
+  a168=(a135*a224);
+  a246=(a072*a168);
+  a173=(a173-a246);
+  a246=(a121*a158);
+  a173=(a173-a246);
+  a246=(a119*a229);
+  a173=(a173-a246);
+  a228=(a118*a228);
+  a246=(a111*a239);
+  a228=(a228+a246);
+  a246=(a072*a228);
+  a173=(a173+a246);
+  a230=(a055*a230);
+  a230=(a046*a230);
+  a246=(a134*a198);
+  a222=(a124*a222);
+  a247=(a050*a222);
+  a246=(a246+a247);
+  a230=(a230-a246);
+  a239=(a109*a239);
+  a246=(a053*a239);
+  a246=(a046*a246);
+  a230=(a230+a246);
+  a246=(a072*a230);
+  a173=(a173+a246);
+  a158=(a071*a158);
+  a173=(a173+a158);
+  a158=(a245*a173);
+  a237=(a237+a158);
+  a158=(a005/a059);
+  a246=(a071*a156);
+  a247=(a121*a156);
+  a246=(a246-a247);
+  a247=(a143*a156);
+  a246=(a246-a247);
+  a247=(a149*a170);
+  a246=(a246-a247);
+  a247=(a074*a168);
+  a246=(a246+a247);
+  a229=(a112*a229);
+  a246=(a246+a229);
+  a229=(a074*a228);
+  a246=(a246-a229);
+  a229=(a074*a230);
+  a246=(a246-a229);
+  a229=(a051*a234);
+  a246=(a246-a229);
+  a229=(a058*a139);
+  a246=(a246-a229);
+  a229=(a061*a235);
+  a246=(a246-a229);
+  a229=(a158*a246);
+  a237=(a237+a229);
+  a229=(a054/a059);
+  a156=(a132*a156);
+  a170=(a150*a170);
+  a156=(a156+a170);
+  a227=(a112*a227);
+  a156=(a156-a227);
+  a227=(a074*a238);
+  a156=(a156+a227);
+  a227=(a074*a241);
+  a156=(a156+a227);
+  a139=(a064*a139);
+  a156=(a156+a139);
+  a139=(a063*a234);
+  a156=(a156+a139);
+  a139=(a051*a235);
+  a156=(a156+a139);
+  a139=(a229*a156);
+  a237=(a237+a139);
+  a139=(a002*a237);
+  a243=(a243+a139);
+  a243=(a049*a243);
+  a226=(a226+a243);
+  a243=(a053*a070);
+  a139=(a226*a243);
+  a181=(a181+a139);
+  a159=(a159-a181);
+  a211=(a098*a211);
+  a181=(a030*a194);
+  a211=(a211-a181);
+  a181=(a033*a207);
+  a211=(a211+a181);
+  a217=(a217/a041);
+  a181=(a036*a208);
+  a217=(a217-a181);
+  a217=(a013*a217);
+  a211=(a211+a217);
+  a217=(a038*a097);
+  a181=(a211*a217);
+  a159=(a159+a181);
+  a240=(a115*a240);
+  a181=(a053*a223);
+  a240=(a240-a181);
+  a181=(a055*a236);
+  a240=(a240+a181);
+  a173=(a173/a059);
+  a181=(a056*a237);
+  a173=(a173-a181);
+  a173=(a042*a173);
+  a240=(a240+a173);
+  a173=(a060*a114);
+  a181=(a240*a173);
+  a159=(a159+a181);
+  a183=(a075*a183);
+  a181=(a014*a166);
+  a183=(a183-a181);
+  a181=(a019*a176);
+  a183=(a183+a181);
+  a190=(a190/a017);
+  a181=(a016*a187);
+  a190=(a190-a181);
+  a190=(a000*a190);
+  a183=(a183+a190);
+  a190=(a003*a065);
+  a181=(a183*a190);
+  a210=(a093*a210);
+  a139=(a037*a194);
+  a210=(a210-a139);
+  a139=(a038*a207);
+  a210=(a210+a139);
+  a221=(a221/a041);
+  a139=(a040*a208);
+  a221=(a221-a139);
+  a221=(a028*a221);
+  a210=(a210+a221);
+  a221=(a033*a068);
+  a139=(a210*a221);
+  a181=(a181+a139);
+  a239=(a110*a239);
+  a139=(a057*a223);
+  a239=(a239-a139);
+  a139=(a060*a236);
+  a239=(a239+a139);
+  a156=(a156/a059);
+  a139=(a052*a237);
+  a156=(a156-a139);
+  a156=(a046*a156);
+  a239=(a239+a156);
+  a156=(a055*a070);
+  a139=(a239*a156);
+  a181=(a181+a139);
+  a166=(a003*a166);
+  a180=(a080*a180);
+  a166=(a166+a180);
+  a176=(a008*a176);
+  a166=(a166+a176);
+  a189=(a189/a017);
+  a187=(a004*a187);
+  a189=(a189+a187);
+  a189=(a018*a189);
+  a166=(a166+a189);
+  a189=(a014*a079);
+  a187=(a166*a189);
+  a181=(a181-a187);
+  a194=(a033*a194);
+  a213=(a098*a213);
+  a194=(a194+a213);
+  a207=(a030*a207);
+  a194=(a194+a207);
+  a220=(a220/a041);
+  a208=(a029*a208);
+  a220=(a220+a208);
+  a220=(a000*a220);
+  a194=(a194+a220);
+  a220=(a037*a097);
+  a208=(a194*a220);
+  a181=(a181-a208);
+  a223=(a055*a223);
+  a242=(a115*a242);
+  a223=(a223+a242);
+  a236=(a053*a236);
+  a223=(a223+a236);
+  a246=(a246/a059);
+  a237=(a047*a237);
+  a246=(a246+a237);
+  a246=(a028*a246);
+  a223=(a223+a246);
+  a246=(a057*a114);
+  a237=(a223*a246);
+  a181=(a181-a237);
+  a159=(a159+a181);
+  if (res[1]!=0) res[1][0]=a159;
+  a159=(a008*a020);
+  a191=(a191*a159);
+  a181=(a030*a044);
+  a197=(a197*a181);
+  a191=(a191+a197);
+  a197=(a053*a005);
+  a226=(a226*a197);
+  a191=(a191+a226);
+  a226=(a019*a009);
+  a164=(a164*a226);
+  a191=(a191-a164);
+  a164=(a038*a035);
+  a211=(a211*a164);
+  a191=(a191-a211);
+  a211=(a060*a054);
+  a240=(a240*a211);
+  a191=(a191-a240);
+  a240=(a014*a009);
+  a166=(a166*a240);
+  a237=(a003*a020);
+  a183=(a183*a237);
+  a236=(a033*a044);
+  a210=(a210*a236);
+  a183=(a183+a210);
+  a210=(a055*a005);
+  a239=(a239*a210);
+  a183=(a183+a239);
+  a166=(a166-a183);
+  a183=(a037*a035);
+  a194=(a194*a183);
+  a166=(a166+a194);
+  a194=(a057*a054);
+  a223=(a223*a194);
+  a166=(a166+a223);
+  a191=(a191+a166);
+  if (res[1]!=0) res[1][1]=a191;
+  a191=(a152/a153);
+  a166=(a009*a191);
+  a223=(a154/a153);
+  a239=(a079*a223);
+  a166=(a166+a239);
+  a239=(a073*a166);
+  a127=(a127*a239);
+  a242=(a020*a191);
+  a208=(a065*a223);
+  a242=(a242+a208);
+  a208=(a078*a242);
+  a088=(a088*a208);
+  a127=(a127+a088);
+  a088=(a008*a127);
+  a207=(a023*a242);
+  a213=(a007*a166);
+  a207=(a207-a213);
+  a213=(a079*a207);
+  a187=(a026*a242);
+  a176=(a023*a166);
+  a187=(a187-a176);
+  a176=(a065*a187);
+  a213=(a213-a176);
+  a176=(a078*a213);
+  a180=(a080*a176);
+  a088=(a088+a180);
+  a155=(a155/a153);
+  a154=(a154*a155);
+  a153=(a009*a154);
+  a024=(a024*a155);
+  a151=(a151-a024);
+  a024=(a079*a151);
+  a153=(a153-a024);
+  a024=(a065*a153);
+  a180=(a065*a151);
+  a139=(a020*a154);
+  a180=(a180-a139);
+  a139=(a079*a180);
+  a024=(a024-a139);
+  a139=(a082*a166);
+  a024=(a024-a139);
+  a139=(a087*a242);
+  a024=(a024+a139);
+  a145=(a145*a155);
+  a145=(a145-a067);
+  a067=(a065*a145);
+  a152=(a152*a155);
+  a155=(a020*a152);
+  a067=(a067+a155);
+  a155=(a009*a067);
+  a024=(a024+a155);
+  a155=(a079*a145);
+  a139=(a009*a152);
+  a155=(a155+a139);
+  a139=(a020*a155);
+  a024=(a024+a139);
+  a139=(a021*a024);
+  a227=(a003*a139);
+  a088=(a088+a227);
+  a227=(a025*a145);
+  a170=(a146*a151);
+  a227=(a227+a170);
+  a170=(a026*a180);
+  a227=(a227+a170);
+  a170=(a023*a153);
+  a227=(a227+a170);
+  a170=(a091*a223);
+  a227=(a227+a170);
+  a136=(a136*a242);
+  a170=(a072*a136);
+  a227=(a227+a170);
+  a170=(a086*a223);
+  a227=(a227+a170);
+  a170=(a084*a187);
+  a227=(a227-a170);
+  a083=(a083*a213);
+  a170=(a020*a187);
+  a247=(a009*a207);
+  a170=(a170-a247);
+  a076=(a076*a170);
+  a083=(a083+a076);
+  a076=(a072*a083);
+  a227=(a227+a076);
+  a128=(a128*a166);
+  a239=(a089*a239);
+  a076=(a021*a239);
+  a128=(a128+a076);
+  a076=(a073*a213);
+  a247=(a003*a076);
+  a247=(a000*a247);
+  a128=(a128+a247);
+  a247=(a073*a170);
+  a248=(a008*a247);
+  a248=(a000*a248);
+  a128=(a128+a248);
+  a248=(a072*a128);
+  a227=(a227+a248);
+  a248=(a066*a223);
+  a227=(a227-a248);
+  a248=(a227/a017);
+  a084=(a084*a207);
+  a249=(a011*a145);
+  a250=(a138*a151);
+  a249=(a249+a250);
+  a250=(a023*a180);
+  a249=(a249+a250);
+  a250=(a007*a153);
+  a249=(a249+a250);
+  a250=(a126*a223);
+  a249=(a249+a250);
+  a084=(a084-a249);
+  a085=(a085*a213);
+  a081=(a081*a170);
+  a085=(a085+a081);
+  a081=(a072*a085);
+  a084=(a084-a081);
+  a090=(a090*a242);
+  a208=(a089*a208);
+  a021=(a021*a208);
+  a090=(a090+a021);
+  a176=(a014*a176);
+  a176=(a018*a176);
+  a090=(a090+a176);
+  a170=(a078*a170);
+  a176=(a019*a170);
+  a176=(a018*a176);
+  a090=(a090+a176);
+  a176=(a072*a090);
+  a084=(a084-a176);
+  a185=(a185*a084);
+  a188=(a188*a227);
+  a185=(a185+a188);
+  a086=(a086*a191);
+  a066=(a066*a191);
+  a086=(a086-a066);
+  a091=(a091*a191);
+  a086=(a086+a091);
+  a146=(a146*a154);
+  a086=(a086-a146);
+  a146=(a074*a136);
+  a086=(a086-a146);
+  a187=(a077*a187);
+  a086=(a086+a187);
+  a187=(a074*a083);
+  a086=(a086-a187);
+  a187=(a074*a128);
+  a086=(a086-a187);
+  a025=(a025*a152);
+  a086=(a086+a025);
+  a026=(a026*a067);
+  a086=(a086-a026);
+  a026=(a023*a155);
+  a086=(a086+a026);
+  a177=(a177*a086);
+  a185=(a185+a177);
+  a138=(a138*a154);
+  a126=(a126*a191);
+  a138=(a138-a126);
+  a077=(a077*a207);
+  a138=(a138-a077);
+  a077=(a074*a085);
+  a138=(a138+a077);
+  a077=(a074*a090);
+  a138=(a138+a077);
+  a023=(a023*a067);
+  a138=(a138+a023);
+  a011=(a011*a152);
+  a138=(a138-a011);
+  a007=(a007*a155);
+  a138=(a138-a007);
+  a162=(a162*a138);
+  a185=(a185+a162);
+  a010=(a010*a185);
+  a248=(a248-a010);
+  a012=(a012*a248);
+  a088=(a088+a012);
+  a184=(a088*a184);
+  a076=(a075*a076);
+  a012=(a019*a127);
+  a076=(a076-a012);
+  a012=(a014*a139);
+  a076=(a076+a012);
+  a084=(a084/a017);
+  a015=(a015*a185);
+  a084=(a084+a015);
+  a084=(a013*a084);
+  a076=(a076+a084);
+  a186=(a076*a186);
+  a084=(a044*a191);
+  a015=(a068*a223);
+  a084=(a084+a015);
+  a015=(a031*a084);
+  a012=(a035*a191);
+  a248=(a097*a223);
+  a012=(a012+a248);
+  a248=(a027*a012);
+  a015=(a015-a248);
+  a248=(a097*a015);
+  a010=(a045*a084);
+  a162=(a031*a012);
+  a010=(a010-a162);
+  a162=(a068*a010);
+  a248=(a248-a162);
+  a162=(a092*a248);
+  a007=(a093*a162);
+  a011=(a092*a012);
+  a130=(a130*a011);
+  a023=(a096*a084);
+  a106=(a106*a023);
+  a130=(a130+a106);
+  a106=(a038*a130);
+  a007=(a007-a106);
+  a106=(a035*a154);
+  a077=(a097*a151);
+  a106=(a106-a077);
+  a077=(a068*a106);
+  a207=(a068*a151);
+  a126=(a044*a154);
+  a207=(a207-a126);
+  a126=(a097*a207);
+  a077=(a077-a126);
+  a126=(a100*a012);
+  a077=(a077-a126);
+  a126=(a105*a084);
+  a077=(a077+a126);
+  a126=(a097*a145);
+  a177=(a035*a152);
+  a126=(a126+a177);
+  a177=(a044*a126);
+  a077=(a077+a177);
+  a177=(a068*a145);
+  a026=(a044*a152);
+  a177=(a177+a026);
+  a026=(a035*a177);
+  a077=(a077+a026);
+  a026=(a032*a077);
+  a025=(a037*a026);
+  a007=(a007+a025);
+  a025=(a102*a015);
+  a187=(a062*a145);
+  a146=(a147*a151);
+  a187=(a187+a146);
+  a146=(a027*a106);
+  a187=(a187+a146);
+  a146=(a031*a207);
+  a187=(a187+a146);
+  a146=(a129*a223);
+  a187=(a187+a146);
+  a025=(a025-a187);
+  a103=(a103*a248);
+  a187=(a044*a010);
+  a146=(a035*a015);
+  a187=(a187-a146);
+  a099=(a099*a187);
+  a103=(a103+a099);
+  a099=(a072*a103);
+  a025=(a025-a099);
+  a108=(a108*a084);
+  a023=(a107*a023);
+  a099=(a032*a023);
+  a108=(a108+a099);
+  a099=(a096*a248);
+  a146=(a037*a099);
+  a146=(a000*a146);
+  a108=(a108+a146);
+  a146=(a096*a187);
+  a091=(a038*a146);
+  a091=(a000*a091);
+  a108=(a108+a091);
+  a091=(a072*a108);
+  a025=(a025-a091);
+  a091=(a025/a041);
+  a215=(a215*a025);
+  a025=(a043*a145);
+  a066=(a148*a151);
+  a025=(a025+a066);
+  a066=(a031*a106);
+  a025=(a025+a066);
+  a066=(a045*a207);
+  a025=(a025+a066);
+  a066=(a140*a223);
+  a025=(a025+a066);
+  a141=(a141*a084);
+  a066=(a072*a141);
+  a025=(a025+a066);
+  a066=(a104*a223);
+  a025=(a025+a066);
+  a102=(a102*a010);
+  a025=(a025-a102);
+  a101=(a101*a248);
+  a094=(a094*a187);
+  a101=(a101+a094);
+  a094=(a072*a101);
+  a025=(a025+a094);
+  a131=(a131*a012);
+  a011=(a107*a011);
+  a032=(a032*a011);
+  a131=(a131+a032);
+  a162=(a033*a162);
+  a162=(a028*a162);
+  a131=(a131+a162);
+  a187=(a092*a187);
+  a162=(a030*a187);
+  a162=(a028*a162);
+  a131=(a131+a162);
+  a162=(a072*a131);
+  a025=(a025+a162);
+  a162=(a069*a223);
+  a025=(a025-a162);
+  a216=(a216*a025);
+  a215=(a215+a216);
+  a104=(a104*a191);
+  a069=(a069*a191);
+  a104=(a104-a069);
+  a140=(a140*a191);
+  a104=(a104+a140);
+  a148=(a148*a154);
+  a104=(a104-a148);
+  a148=(a074*a141);
+  a104=(a104-a148);
+  a010=(a095*a010);
+  a104=(a104+a010);
+  a010=(a074*a101);
+  a104=(a104-a010);
+  a010=(a074*a131);
+  a104=(a104-a010);
+  a010=(a031*a126);
+  a104=(a104+a010);
+  a043=(a043*a152);
+  a104=(a104+a043);
+  a045=(a045*a177);
+  a104=(a104-a045);
+  a219=(a219*a104);
+  a215=(a215+a219);
+  a147=(a147*a154);
+  a129=(a129*a191);
+  a147=(a147-a129);
+  a095=(a095*a015);
+  a147=(a147-a095);
+  a095=(a074*a103);
+  a147=(a147+a095);
+  a095=(a074*a108);
+  a147=(a147+a095);
+  a062=(a062*a152);
+  a147=(a147-a062);
+  a027=(a027*a126);
+  a147=(a147-a027);
+  a031=(a031*a177);
+  a147=(a147+a031);
+  a200=(a200*a147);
+  a215=(a215+a200);
+  a039=(a039*a215);
+  a091=(a091+a039);
+  a091=(a042*a091);
+  a007=(a007+a091);
+  a214=(a007*a214);
+  a186=(a186+a214);
+  a214=(a005*a191);
+  a091=(a070*a223);
+  a214=(a214+a091);
+  a091=(a051*a214);
+  a039=(a054*a191);
+  a200=(a114*a223);
+  a039=(a039+a200);
+  a200=(a063*a039);
+  a091=(a091-a200);
+  a200=(a114*a091);
+  a031=(a061*a214);
+  a027=(a051*a039);
+  a031=(a031-a027);
+  a027=(a070*a031);
+  a200=(a200-a027);
+  a027=(a109*a200);
+  a062=(a110*a027);
+  a095=(a109*a039);
+  a133=(a133*a095);
+  a015=(a113*a214);
+  a123=(a123*a015);
+  a133=(a133+a123);
+  a123=(a060*a133);
+  a062=(a062-a123);
+  a123=(a054*a154);
+  a129=(a114*a151);
+  a123=(a123-a129);
+  a129=(a070*a123);
+  a219=(a070*a151);
+  a045=(a005*a154);
+  a219=(a219-a045);
+  a045=(a114*a219);
+  a129=(a129-a045);
+  a045=(a117*a039);
+  a129=(a129-a045);
+  a045=(a122*a214);
+  a129=(a129+a045);
+  a045=(a114*a145);
+  a043=(a054*a152);
+  a045=(a045+a043);
+  a043=(a005*a045);
+  a129=(a129+a043);
+  a043=(a070*a145);
+  a010=(a005*a152);
+  a043=(a043+a010);
+  a010=(a054*a043);
+  a129=(a129+a010);
+  a010=(a050*a129);
+  a148=(a057*a010);
+  a062=(a062+a148);
+  a148=(a119*a091);
+  a140=(a064*a145);
+  a069=(a150*a151);
+  a140=(a140+a069);
+  a069=(a063*a123);
+  a140=(a140+a069);
+  a069=(a051*a219);
+  a140=(a140+a069);
+  a069=(a132*a223);
+  a140=(a140+a069);
+  a148=(a148-a140);
+  a120=(a120*a200);
+  a140=(a005*a031);
+  a069=(a054*a091);
+  a140=(a140-a069);
+  a116=(a116*a140);
+  a120=(a120+a116);
+  a116=(a072*a120);
+  a148=(a148-a116);
+  a125=(a125*a214);
+  a015=(a124*a015);
+  a116=(a050*a015);
+  a125=(a125+a116);
+  a116=(a113*a200);
+  a069=(a057*a116);
+  a069=(a028*a069);
+  a125=(a125+a069);
+  a069=(a113*a140);
+  a216=(a060*a069);
+  a216=(a028*a216);
+  a125=(a125+a216);
+  a216=(a072*a125);
+  a148=(a148-a216);
+  a216=(a148/a059);
+  a244=(a244*a148);
+  a145=(a058*a145);
+  a151=(a149*a151);
+  a145=(a145+a151);
+  a151=(a051*a123);
+  a145=(a145+a151);
+  a151=(a061*a219);
+  a145=(a145+a151);
+  a151=(a143*a223);
+  a145=(a145+a151);
+  a135=(a135*a214);
+  a151=(a072*a135);
+  a145=(a145+a151);
+  a151=(a121*a223);
+  a145=(a145+a151);
+  a119=(a119*a031);
+  a145=(a145-a119);
+  a118=(a118*a200);
+  a111=(a111*a140);
+  a118=(a118+a111);
+  a111=(a072*a118);
+  a145=(a145+a111);
+  a134=(a134*a039);
+  a095=(a124*a095);
+  a050=(a050*a095);
+  a134=(a134+a050);
+  a027=(a055*a027);
+  a027=(a046*a027);
+  a134=(a134+a027);
+  a140=(a109*a140);
+  a027=(a053*a140);
+  a027=(a046*a027);
+  a134=(a134+a027);
+  a072=(a072*a134);
+  a145=(a145+a072);
+  a223=(a071*a223);
+  a145=(a145-a223);
+  a245=(a245*a145);
+  a244=(a244+a245);
+  a121=(a121*a191);
+  a071=(a071*a191);
+  a121=(a121-a071);
+  a143=(a143*a191);
+  a121=(a121+a143);
+  a149=(a149*a154);
+  a121=(a121-a149);
+  a149=(a074*a135);
+  a121=(a121-a149);
+  a031=(a112*a031);
+  a121=(a121+a031);
+  a031=(a074*a118);
+  a121=(a121-a031);
+  a031=(a074*a134);
+  a121=(a121-a031);
+  a031=(a051*a045);
+  a121=(a121+a031);
+  a058=(a058*a152);
+  a121=(a121+a058);
+  a061=(a061*a043);
+  a121=(a121-a061);
+  a158=(a158*a121);
+  a244=(a244+a158);
+  a150=(a150*a154);
+  a132=(a132*a191);
+  a150=(a150-a132);
+  a112=(a112*a091);
+  a150=(a150-a112);
+  a112=(a074*a120);
+  a150=(a150+a112);
+  a074=(a074*a125);
+  a150=(a150+a074);
+  a064=(a064*a152);
+  a150=(a150-a064);
+  a063=(a063*a045);
+  a150=(a150-a063);
+  a051=(a051*a043);
+  a150=(a150+a051);
+  a229=(a229*a150);
+  a244=(a244+a229);
+  a002=(a002*a244);
+  a216=(a216+a002);
+  a049=(a049*a216);
+  a062=(a062+a049);
+  a243=(a062*a243);
+  a186=(a186+a243);
+  a184=(a184-a186);
+  a186=(a030*a130);
+  a099=(a098*a099);
+  a186=(a186+a099);
+  a099=(a033*a026);
+  a186=(a186+a099);
+  a025=(a025/a041);
+  a036=(a036*a215);
+  a025=(a025-a036);
+  a013=(a013*a025);
+  a186=(a186+a013);
+  a217=(a186*a217);
+  a184=(a184+a217);
+  a217=(a053*a133);
+  a116=(a115*a116);
+  a217=(a217+a116);
+  a116=(a055*a010);
+  a217=(a217+a116);
+  a145=(a145/a059);
+  a056=(a056*a244);
+  a145=(a145-a056);
+  a042=(a042*a145);
+  a217=(a217+a042);
+  a173=(a217*a173);
+  a184=(a184+a173);
+  a173=(a014*a127);
+  a075=(a075*a247);
+  a173=(a173+a075);
+  a075=(a019*a139);
+  a173=(a173+a075);
+  a138=(a138/a017);
+  a016=(a016*a185);
+  a138=(a138-a016);
+  a138=(a000*a138);
+  a173=(a173+a138);
+  a190=(a173*a190);
+  a138=(a037*a130);
+  a093=(a093*a187);
+  a138=(a138+a093);
+  a093=(a038*a026);
+  a138=(a138+a093);
+  a147=(a147/a041);
+  a040=(a040*a215);
+  a147=(a147-a040);
+  a147=(a028*a147);
+  a138=(a138+a147);
+  a221=(a138*a221);
+  a190=(a190+a221);
+  a221=(a057*a133);
+  a110=(a110*a140);
+  a221=(a221+a110);
+  a110=(a060*a010);
+  a221=(a221+a110);
+  a150=(a150/a059);
+  a052=(a052*a244);
+  a150=(a150-a052);
+  a046=(a046*a150);
+  a221=(a221+a046);
+  a156=(a221*a156);
+  a190=(a190+a156);
+  a080=(a080*a170);
+  a003=(a003*a127);
+  a080=(a080-a003);
+  a008=(a008*a139);
+  a080=(a080+a008);
+  a086=(a086/a017);
+  a004=(a004*a185);
+  a086=(a086+a004);
+  a018=(a018*a086);
+  a080=(a080+a018);
+  a189=(a080*a189);
+  a190=(a190-a189);
+  a098=(a098*a146);
+  a033=(a033*a130);
+  a098=(a098-a033);
+  a030=(a030*a026);
+  a098=(a098+a030);
+  a104=(a104/a041);
+  a029=(a029*a215);
+  a104=(a104+a029);
+  a000=(a000*a104);
+  a098=(a098+a000);
+  a220=(a098*a220);
+  a190=(a190-a220);
+  a115=(a115*a069);
+  a055=(a055*a133);
+  a115=(a115-a055);
+  a053=(a053*a010);
+  a115=(a115+a053);
+  a121=(a121/a059);
+  a047=(a047*a244);
+  a121=(a121+a047);
+  a028=(a028*a121);
+  a115=(a115+a028);
+  a246=(a115*a246);
+  a190=(a190-a246);
+  a184=(a184+a190);
+  if (res[1]!=0) res[1][2]=a184;
+  a076=(a076*a159);
+  a007=(a007*a181);
+  a076=(a076+a007);
+  a062=(a062*a197);
+  a076=(a076+a062);
+  a088=(a088*a226);
+  a076=(a076-a088);
+  a186=(a186*a164);
+  a076=(a076-a186);
+  a217=(a217*a211);
+  a076=(a076-a217);
+  a080=(a080*a240);
+  a173=(a173*a237);
+  a138=(a138*a236);
+  a173=(a173+a138);
+  a221=(a221*a210);
+  a173=(a173+a221);
+  a080=(a080-a173);
+  a098=(a098*a183);
+  a080=(a080+a098);
+  a115=(a115*a194);
+  a080=(a080+a115);
+  a076=(a076+a080);
+  if (res[1]!=0) res[1][3]=a076;
+  a076=(a070*a228);
+  a080=(a070*a168);
+  a115=(a068*a218);
+  a080=(a080+a115);
+  a115=(a065*a178);
+  a080=(a080+a115);
+  a115=(a114*a238);
+  a080=(a080+a115);
+  a115=(a114*a241);
+  a080=(a080+a115);
+  a076=(a076-a080);
+  a080=(a070*a230);
+  a076=(a076+a080);
+  a080=(a097*a209);
+  a076=(a076-a080);
+  a080=(a097*a212);
+  a076=(a076-a080);
+  a080=(a068*a199);
+  a076=(a076+a080);
+  a080=(a068*a201);
+  a076=(a076+a080);
+  a080=(a079*a161);
+  a076=(a076-a080);
+  a080=(a079*a163);
+  a076=(a076-a080);
+  a080=(a065*a179);
+  a076=(a076+a080);
+  a080=(a065*a182);
+  a076=(a076+a080);
+  if (res[2]!=0) res[2][0]=a076;
+  a168=(a005*a168);
+  a218=(a044*a218);
+  a168=(a168+a218);
+  a178=(a020*a178);
+  a168=(a168+a178);
+  a238=(a054*a238);
+  a168=(a168+a238);
+  a241=(a054*a241);
+  a168=(a168+a241);
+  a228=(a005*a228);
+  a168=(a168-a228);
+  a230=(a005*a230);
+  a168=(a168-a230);
+  a209=(a035*a209);
+  a168=(a168+a209);
+  a212=(a035*a212);
+  a168=(a168+a212);
+  a199=(a044*a199);
+  a168=(a168-a199);
+  a201=(a044*a201);
+  a168=(a168-a201);
+  a161=(a009*a161);
+  a168=(a168+a161);
+  a163=(a009*a163);
+  a168=(a168+a163);
+  a179=(a020*a179);
+  a168=(a168-a179);
+  a182=(a020*a182);
+  a168=(a168-a182);
+  if (res[2]!=0) res[2][1]=a168;
+  a168=(a070*a135);
+  a182=(a068*a141);
+  a168=(a168+a182);
+  a182=(a065*a136);
+  a168=(a168+a182);
+  a182=(a114*a120);
+  a168=(a168-a182);
+  a182=(a114*a125);
+  a168=(a168-a182);
+  a182=(a070*a118);
+  a168=(a168+a182);
+  a182=(a070*a134);
+  a168=(a168+a182);
+  a182=(a097*a103);
+  a168=(a168-a182);
+  a182=(a097*a108);
+  a168=(a168-a182);
+  a182=(a068*a101);
+  a168=(a168+a182);
+  a182=(a068*a131);
+  a168=(a168+a182);
+  a182=(a079*a085);
+  a168=(a168-a182);
+  a182=(a079*a090);
+  a168=(a168-a182);
+  a182=(a065*a083);
+  a168=(a168+a182);
+  a182=(a065*a128);
+  a168=(a168+a182);
+  if (res[2]!=0) res[2][2]=a168;
+  a120=(a054*a120);
+  a135=(a005*a135);
+  a141=(a044*a141);
+  a135=(a135+a141);
+  a136=(a020*a136);
+  a135=(a135+a136);
+  a120=(a120-a135);
+  a125=(a054*a125);
+  a120=(a120+a125);
+  a118=(a005*a118);
+  a120=(a120-a118);
+  a134=(a005*a134);
+  a120=(a120-a134);
+  a103=(a035*a103);
+  a120=(a120+a103);
+  a108=(a035*a108);
+  a120=(a120+a108);
+  a101=(a044*a101);
+  a120=(a120-a101);
+  a131=(a044*a131);
+  a120=(a120-a131);
+  a085=(a009*a085);
+  a120=(a120+a085);
+  a090=(a009*a090);
+  a120=(a120+a090);
+  a083=(a020*a083);
+  a120=(a120-a083);
+  a128=(a020*a128);
+  a120=(a120-a128);
+  if (res[2]!=0) res[2][3]=a120;
+  if (res[3]!=0) res[3][0]=a160;
+  if (res[3]!=0) res[3][1]=a195;
+  if (res[3]!=0) res[3][2]=a224;
+  a120=(-a242);
+  if (res[3]!=0) res[3][3]=a120;
+  a120=(-a084);
+  if (res[3]!=0) res[3][4]=a120;
+  a120=(-a214);
+  if (res[3]!=0) res[3][5]=a120;
+  a169=(a065*a169);
+  a120=(a082*a160);
+  a169=(a169+a120);
+  a174=(a020*a174);
+  a169=(a169+a174);
+  a169=(-a169);
+  if (res[4]!=0) res[4][0]=a169;
+  a204=(a068*a204);
+  a169=(a100*a195);
+  a204=(a204+a169);
+  a206=(a044*a206);
+  a204=(a204+a206);
+  a204=(-a204);
+  if (res[4]!=0) res[4][1]=a204;
+  a233=(a070*a233);
+  a204=(a117*a224);
+  a233=(a233+a204);
+  a235=(a005*a235);
+  a233=(a233+a235);
+  a233=(-a233);
+  if (res[4]!=0) res[4][2]=a233;
+  a171=(a022*a171);
+  a165=(a073*a165);
+  a167=(a078*a167);
+  a165=(a165+a167);
+  a171=(a171-a165);
+  if (res[4]!=0) res[4][3]=a171;
+  a203=(a034*a203);
+  a193=(a092*a193);
+  a196=(a096*a196);
+  a193=(a193+a196);
+  a203=(a203-a193);
+  if (res[4]!=0) res[4][4]=a203;
+  a232=(a048*a232);
+  a222=(a109*a222);
+  a225=(a113*a225);
+  a222=(a222+a225);
+  a232=(a232-a222);
+  if (res[4]!=0) res[4][5]=a232;
+  a157=(a087*a157);
+  a172=(a079*a172);
+  a157=(a157-a172);
+  a175=(a009*a175);
+  a157=(a157+a175);
+  if (res[4]!=0) res[4][6]=a157;
+  a192=(a105*a192);
+  a202=(a097*a202);
+  a192=(a192-a202);
+  a205=(a035*a205);
+  a192=(a192+a205);
+  if (res[4]!=0) res[4][7]=a192;
+  a198=(a122*a198);
+  a231=(a114*a231);
+  a198=(a198-a231);
+  a234=(a054*a234);
+  a198=(a198+a234);
+  if (res[4]!=0) res[4][8]=a198;
+  a198=(a073*a160);
+  a198=(-a198);
+  if (res[4]!=0) res[4][9]=a198;
+  a198=(a092*a195);
+  a198=(-a198);
+  if (res[4]!=0) res[4][10]=a198;
+  a198=(a109*a224);
+  a198=(-a198);
+  if (res[4]!=0) res[4][11]=a198;
+  a160=(a137*a160);
+  a160=(-a160);
+  if (res[4]!=0) res[4][12]=a160;
+  a195=(a142*a195);
+  a195=(-a195);
+  if (res[4]!=0) res[4][13]=a195;
+  a224=(a144*a224);
+  a224=(-a224);
+  if (res[4]!=0) res[4][14]=a224;
+  a065=(a065*a180);
+  a082=(a082*a242);
+  a065=(a065+a082);
+  a020=(a020*a067);
+  a065=(a065-a020);
+  if (res[4]!=0) res[4][15]=a065;
+  a068=(a068*a207);
+  a100=(a100*a084);
+  a068=(a068+a100);
+  a044=(a044*a177);
+  a068=(a068-a044);
+  if (res[4]!=0) res[4][16]=a068;
+  a070=(a070*a219);
+  a117=(a117*a214);
+  a070=(a070+a117);
+  a005=(a005*a043);
+  a070=(a070-a005);
+  if (res[4]!=0) res[4][17]=a070;
+  a239=(a073*a239);
+  a078=(a078*a208);
+  a239=(a239+a078);
+  a022=(a022*a024);
+  a239=(a239+a022);
+  if (res[4]!=0) res[4][18]=a239;
+  a011=(a092*a011);
+  a096=(a096*a023);
+  a011=(a011+a096);
+  a034=(a034*a077);
+  a011=(a011+a034);
+  if (res[4]!=0) res[4][19]=a011;
+  a095=(a109*a095);
+  a113=(a113*a015);
+  a095=(a095+a113);
+  a048=(a048*a129);
+  a095=(a095+a048);
+  if (res[4]!=0) res[4][20]=a095;
+  a079=(a079*a153);
+  a087=(a087*a166);
+  a079=(a079+a087);
+  a009=(a009*a155);
+  a079=(a079+a009);
+  a079=(-a079);
+  if (res[4]!=0) res[4][21]=a079;
+  a097=(a097*a106);
+  a105=(a105*a012);
+  a097=(a097+a105);
+  a035=(a035*a126);
+  a097=(a097+a035);
+  a097=(-a097);
+  if (res[4]!=0) res[4][22]=a097;
+  a114=(a114*a123);
+  a122=(a122*a039);
+  a114=(a114+a122);
+  a054=(a054*a045);
+  a114=(a114+a054);
+  a114=(-a114);
+  if (res[4]!=0) res[4][23]=a114;
+  a073=(a073*a242);
+  if (res[4]!=0) res[4][24]=a073;
+  a092=(a092*a084);
+  if (res[4]!=0) res[4][25]=a092;
+  a109=(a109*a214);
+  if (res[4]!=0) res[4][26]=a109;
+  a137=(a137*a242);
+  if (res[4]!=0) res[4][27]=a137;
+  a142=(a142*a084);
+  if (res[4]!=0) res[4][28]=a142;
+  a144=(a144*a214);
+  if (res[4]!=0) res[4][29]=a144;
+  a089=casadi_fabs(a089);
+  a107=casadi_fabs(a107);
+  a144=(a089+a107);
+  a089=(a089-a107);
+  a089=casadi_fabs(a089);
+  a144=(a144-a089);
+  a144=(a144/a001);
+  a124=casadi_fabs(a124);
+  a089=(a144+a124);
+  a144=(a144-a124);
+  a144=casadi_fabs(a144);
+  a089=(a089-a144);
+  a089=(a089/a001);
+  if (res[5]!=0) res[5][0]=a089;
+  a089=5.0000000000000000e-01;
+  a001=3.3333333333333331e-01;
+  a144=casadi_sq(a014);
+  a124=casadi_sq(a019);
+  a144=(a144-a124);
+  a124=casadi_sq(a037);
+  a107=casadi_sq(a038);
+  a124=(a124-a107);
+  a144=(a144+a124);
+  a124=casadi_sq(a057);
+  a107=casadi_sq(a060);
+  a124=(a124-a107);
+  a144=(a144+a124);
+  a144=casadi_sq(a144);
+  a014=(2.*a014);
+  a014=(a014*a019);
+  a037=(2.*a037);
+  a037=(a037*a038);
+  a014=(a014+a037);
+  a057=(2.*a057);
+  a057=(a057*a060);
+  a014=(a014+a057);
+  a014=casadi_sq(a014);
+  a144=(a144+a014);
+  a144=sqrt(a144);
+  a001=(a001*a144);
+  a006=(a006-a001);
+  a001=casadi_fabs(a006);
+  a006=(a006+a001);
+  a089=(a089*a006);
+  a089=sqrt(a089);
+  if (res[5]!=0) res[5][1]=a089;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f56(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_forward_dynamics_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_forward_dynamics_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_forward_dynamics_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_forward_dynamics_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_forward_dynamics_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_forward_dynamics_jacobians_n_out(void) { return 6;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_forward_dynamics_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_forward_dynamics_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "tau_a";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_forward_dynamics_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xedd";
+    case 1: return "d_xe";
+    case 2: return "d_xed";
+    case 3: return "d_tau_a";
+    case 4: return "d_theta";
+    case 5: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_forward_dynamics_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s2;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_forward_dynamics_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s3;
+    case 2: return casadi_s3;
+    case 3: return casadi_s1;
+    case 4: return casadi_s8;
+    case 5: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_forward_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 6;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_forward_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_inverse_dynamics:(xe[2],xed[2],xedd[2],theta[15])->(u[2],sing[2]) */
+static int casadi_f57(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54;
+  a00=2.3499999999999999e-01;
+  a01=4.2553191489361701e+00;
+  a02=arg[0]? arg[0][0] : 0;
+  a03=(a01*a02);
+  a04=-2.1276595744680851e+00;
+  a05=(a04*a02);
+  a06=casadi_sq(a02);
+  a07=-2.6000000000000001e-01;
+  a08=arg[0]? arg[0][1] : 0;
+  a07=(a07+a08);
+  a09=casadi_sq(a07);
+  a10=(a06+a09);
+  a05=(a05/a10);
+  a11=7.2750000000000002e-03;
+  a11=(a11+a06);
+  a11=(a11+a09);
+  a05=(a05*a11);
+  a03=(a03+a05);
+  a05=-1.0638297872340425e+00;
+  a09=1.;
+  a06=-4.;
+  a06=(a06/a10);
+  a12=casadi_sq(a11);
+  a06=(a06*a12);
+  a06=(a09+a06);
+  a06=sqrt(a06);
+  a05=(a05*a06);
+  a12=sqrt(a10);
+  a05=(a05/a12);
+  a05=(a05*a07);
+  a03=(a03+a05);
+  a00=(a00*a03);
+  a05=-2.5000000000000000e-01;
+  a13=2.;
+  a14=(a13/a10);
+  a14=(a14*a07);
+  a14=(a14*a11);
+  a15=(a02*a06);
+  a15=(a15/a12);
+  a14=(a14-a15);
+  a15=(a05*a14);
+  a16=(a15*a00);
+  a17=-2.3499999999999999e-01;
+  a18=-1.1063829787234043e+00;
+  a01=(a01*a08);
+  a18=(a18+a01);
+  a04=(a04/a10);
+  a04=(a04*a07);
+  a04=(a04*a11);
+  a18=(a18+a04);
+  a04=1.0638297872340425e+00;
+  a04=(a04*a02);
+  a04=(a04*a06);
+  a04=(a04/a12);
+  a18=(a18+a04);
+  a04=(a17*a18);
+  a01=2.5000000000000000e-01;
+  a06=(a06/a12);
+  a06=(a06*a07);
+  a07=(2.*a02);
+  a07=(a07/a10);
+  a07=(a07*a11);
+  a06=(a06+a07);
+  a07=(a01*a06);
+  a11=(a04*a07);
+  a16=(a16-a11);
+  a00=(a00/a16);
+  a11=arg[3]? arg[3][0] : 0;
+  a10=(a00*a11);
+  a07=(a07/a16);
+  a12=arg[3]? arg[3][3] : 0;
+  a19=(a06*a03);
+  a20=(a14*a18);
+  a19=(a19+a20);
+  a19=(a12*a19);
+  a20=(a07*a19);
+  a10=(a10-a20);
+  a20=(a10*a00);
+  a21=-1.7600000000000000e+00;
+  a22=4.;
+  a23=(a22*a02);
+  a21=(a21+a23);
+  a23=-2.;
+  a24=casadi_sq(a08);
+  a25=-4.4000000000000000e-01;
+  a25=(a25+a02);
+  a26=casadi_sq(a25);
+  a27=(a24+a26);
+  a28=(a23/a27);
+  a28=(a28*a25);
+  a29=-4.8999999999999998e-03;
+  a29=(a29+a24);
+  a29=(a29+a26);
+  a28=(a28*a29);
+  a21=(a21+a28);
+  a28=-9.5999999999999996e-01;
+  a28=(a28*a08);
+  a26=-4.3402777777777777e+00;
+  a26=(a26/a27);
+  a24=casadi_sq(a29);
+  a26=(a26*a24);
+  a26=(a09+a26);
+  a26=sqrt(a26);
+  a28=(a28*a26);
+  a24=sqrt(a27);
+  a28=(a28/a24);
+  a21=(a21+a28);
+  a01=(a01*a21);
+  a28=-2.3999999999999999e-01;
+  a30=2.0833333333333335e+00;
+  a31=(a30*a08);
+  a31=(a31/a27);
+  a31=(a31*a29);
+  a32=(a26/a24);
+  a32=(a32*a25);
+  a31=(a31-a32);
+  a32=(a28*a31);
+  a33=(a32*a01);
+  a22=(a22*a08);
+  a23=(a23*a08);
+  a23=(a23/a27);
+  a23=(a23*a29);
+  a22=(a22+a23);
+  a23=9.5999999999999996e-01;
+  a23=(a23*a26);
+  a23=(a23/a24);
+  a23=(a23*a25);
+  a22=(a22+a23);
+  a23=(a05*a22);
+  a34=2.3999999999999999e-01;
+  a26=(a08*a26);
+  a26=(a26/a24);
+  a30=(a30/a27);
+  a30=(a30*a25);
+  a30=(a30*a29);
+  a26=(a26+a30);
+  a30=(a34*a26);
+  a29=(a23*a30);
+  a33=(a33-a29);
+  a01=(a01/a33);
+  a29=arg[3]? arg[3][1] : 0;
+  a25=(a01*a29);
+  a30=(a30/a33);
+  a27=arg[3]? arg[3][4] : 0;
+  a24=(a26*a21);
+  a35=(a31*a22);
+  a24=(a24+a35);
+  a24=(a27*a24);
+  a35=(a30*a24);
+  a25=(a25-a35);
+  a35=(a25*a01);
+  a20=(a20+a35);
+  a35=-1.7916666666666667e+00;
+  a36=4.1666666666666670e+00;
+  a37=(a36*a02);
+  a35=(a35+a37);
+  a37=-1.0208333333333333e+00;
+  a38=-4.1649312786339028e+00;
+  a39=-5.1000000000000001e-01;
+  a39=(a39+a08);
+  a40=casadi_sq(a39);
+  a41=-4.2999999999999999e-01;
+  a41=(a41+a02);
+  a02=casadi_sq(a41);
+  a42=(a40+a02);
+  a38=(a38/a42);
+  a43=2.4250000000000001e-03;
+  a43=(a43+a40);
+  a43=(a43+a02);
+  a02=casadi_sq(a43);
+  a38=(a38*a02);
+  a38=(a09+a38);
+  a38=sqrt(a38);
+  a37=(a37*a38);
+  a02=sqrt(a42);
+  a37=(a37/a02);
+  a37=(a37*a39);
+  a35=(a35+a37);
+  a37=-2.0833333333333335e+00;
+  a37=(a37/a42);
+  a40=(a37*a41);
+  a40=(a40*a43);
+  a35=(a35+a40);
+  a34=(a34*a35);
+  a40=-2.4500000000000000e-01;
+  a44=2.0408163265306123e+00;
+  a44=(a44/a42);
+  a42=(a44*a39);
+  a42=(a42*a43);
+  a45=(a38/a02);
+  a46=(a45*a41);
+  a42=(a42-a46);
+  a46=(a40*a42);
+  a47=(a46*a34);
+  a48=-2.1250000000000000e+00;
+  a36=(a36*a08);
+  a48=(a48+a36);
+  a37=(a37*a39);
+  a37=(a37*a43);
+  a48=(a48+a37);
+  a37=1.0208333333333333e+00;
+  a37=(a37*a38);
+  a37=(a37/a02);
+  a37=(a37*a41);
+  a48=(a48+a37);
+  a37=(a28*a48);
+  a02=2.4500000000000000e-01;
+  a45=(a45*a39);
+  a44=(a44*a41);
+  a44=(a44*a43);
+  a45=(a45+a44);
+  a02=(a02*a45);
+  a44=(a37*a02);
+  a47=(a47-a44);
+  a34=(a34/a47);
+  a44=arg[3]? arg[3][2] : 0;
+  a43=(a34*a44);
+  a02=(a02/a47);
+  a41=arg[3]? arg[3][5] : 0;
+  a39=(a45*a35);
+  a38=(a42*a48);
+  a39=(a39+a38);
+  a39=(a41*a39);
+  a38=(a02*a39);
+  a43=(a43-a38);
+  a38=(a43*a34);
+  a20=(a20+a38);
+  a38=(a00*a19);
+  a36=arg[3]? arg[3][6] : 0;
+  a08=(a07*a36);
+  a38=(a38-a08);
+  a08=(a38*a07);
+  a20=(a20-a08);
+  a08=(a01*a24);
+  a49=arg[3]? arg[3][7] : 0;
+  a50=(a30*a49);
+  a08=(a08-a50);
+  a50=(a08*a30);
+  a20=(a20-a50);
+  a50=(a34*a39);
+  a51=arg[3]? arg[3][8] : 0;
+  a52=(a02*a51);
+  a50=(a50-a52);
+  a52=(a50*a02);
+  a20=(a20-a52);
+  a52=arg[2]? arg[2][0] : 0;
+  a20=(a20*a52);
+  a15=(a15/a16);
+  a38=(a38*a15);
+  a04=(a04/a16);
+  a10=(a10*a04);
+  a23=(a23/a33);
+  a25=(a25*a23);
+  a10=(a10+a25);
+  a37=(a37/a47);
+  a43=(a43*a37);
+  a10=(a10+a43);
+  a38=(a38-a10);
+  a32=(a32/a33);
+  a08=(a08*a32);
+  a38=(a38+a08);
+  a46=(a46/a47);
+  a50=(a50*a46);
+  a38=(a38+a50);
+  a50=arg[2]? arg[2][1] : 0;
+  a38=(a38*a50);
+  a20=(a20+a38);
+  a38=arg[1]? arg[1][0] : 0;
+  a47=(a00*a38);
+  a08=arg[1]? arg[1][1] : 0;
+  a33=(a04*a08);
+  a47=(a47-a33);
+  a33=(a05*a47);
+  a10=(a33*a14);
+  a10=(a10*a47);
+  a43=(a15*a08);
+  a25=(a07*a38);
+  a43=(a43-a25);
+  a17=(a17*a43);
+  a25=(a17*a18);
+  a25=(a25*a43);
+  a10=(a10+a25);
+  a25=(a04*a10);
+  a33=(a33*a06);
+  a33=(a33*a47);
+  a17=(a17*a03);
+  a17=(a17*a43);
+  a33=(a33+a17);
+  a17=(a00*a33);
+  a25=(a25-a17);
+  a17=(a11*a25);
+  a33=(a07*a33);
+  a10=(a15*a10);
+  a33=(a33-a10);
+  a10=(a19*a33);
+  a17=(a17+a10);
+  a10=(a12*a43);
+  a14=(a14*a03);
+  a06=(a06*a18);
+  a14=(a14-a06);
+  a10=(a10*a14);
+  a10=(a10*a43);
+  a17=(a17+a10);
+  a10=(a00*a17);
+  a43=(a01*a38);
+  a06=(a23*a08);
+  a43=(a43-a06);
+  a06=(a28*a43);
+  a16=(a06*a31);
+  a16=(a16*a43);
+  a53=(a32*a08);
+  a54=(a30*a38);
+  a53=(a53-a54);
+  a05=(a05*a53);
+  a54=(a05*a22);
+  a54=(a54*a53);
+  a16=(a16+a54);
+  a54=(a23*a16);
+  a06=(a06*a26);
+  a06=(a06*a43);
+  a05=(a05*a21);
+  a05=(a05*a53);
+  a06=(a06+a05);
+  a05=(a01*a06);
+  a54=(a54-a05);
+  a05=(a29*a54);
+  a06=(a30*a06);
+  a16=(a32*a16);
+  a06=(a06-a16);
+  a16=(a24*a06);
+  a05=(a05+a16);
+  a16=(a27*a53);
+  a31=(a31*a21);
+  a26=(a26*a22);
+  a31=(a31-a26);
+  a16=(a16*a31);
+  a16=(a16*a53);
+  a05=(a05+a16);
+  a16=(a01*a05);
+  a10=(a10+a16);
+  a16=(a34*a38);
+  a53=(a37*a08);
+  a16=(a16-a53);
+  a40=(a40*a16);
+  a53=(a40*a42);
+  a53=(a53*a16);
+  a08=(a46*a08);
+  a38=(a02*a38);
+  a08=(a08-a38);
+  a28=(a28*a08);
+  a38=(a28*a48);
+  a38=(a38*a08);
+  a53=(a53+a38);
+  a38=(a37*a53);
+  a40=(a40*a45);
+  a40=(a40*a16);
+  a28=(a28*a35);
+  a28=(a28*a08);
+  a40=(a40+a28);
+  a28=(a34*a40);
+  a38=(a38-a28);
+  a28=(a44*a38);
+  a40=(a02*a40);
+  a53=(a46*a53);
+  a40=(a40-a53);
+  a53=(a39*a40);
+  a28=(a28+a53);
+  a53=(a41*a08);
+  a42=(a42*a35);
+  a45=(a45*a48);
+  a42=(a42-a45);
+  a53=(a53*a42);
+  a53=(a53*a08);
+  a28=(a28+a53);
+  a53=(a34*a28);
+  a10=(a10+a53);
+  a25=(a19*a25);
+  a33=(a36*a33);
+  a25=(a25+a33);
+  a12=(a12*a47);
+  a12=(a12*a14);
+  a12=(a12*a47);
+  a25=(a25-a12);
+  a12=(a07*a25);
+  a10=(a10-a12);
+  a54=(a24*a54);
+  a06=(a49*a06);
+  a54=(a54+a06);
+  a27=(a27*a43);
+  a27=(a27*a31);
+  a27=(a27*a43);
+  a54=(a54-a27);
+  a27=(a30*a54);
+  a10=(a10-a27);
+  a38=(a39*a38);
+  a40=(a51*a40);
+  a38=(a38+a40);
+  a41=(a41*a16);
+  a41=(a41*a42);
+  a41=(a41*a16);
+  a38=(a38-a41);
+  a41=(a02*a38);
+  a10=(a10-a41);
+  a20=(a20+a10);
+  a10=arg[3]? arg[3][12] : 0;
+  a41=0.;
+  a40=(a41<=a47);
+  a27=(a40?a09:0);
+  a40=(!a40);
+  a06=-1.;
+  a40=(a40?a06:0);
+  a27=(a27+a40);
+  a10=(a10*a27);
+  a27=arg[3]? arg[3][9] : 0;
+  a27=(a27*a47);
+  a10=(a10+a27);
+  a27=(a00*a10);
+  a47=arg[3]? arg[3][13] : 0;
+  a40=(a41<=a43);
+  a12=(a40?a09:0);
+  a40=(!a40);
+  a40=(a40?a06:0);
+  a12=(a12+a40);
+  a47=(a47*a12);
+  a12=arg[3]? arg[3][10] : 0;
+  a12=(a12*a43);
+  a47=(a47+a12);
+  a12=(a01*a47);
+  a27=(a27+a12);
+  a12=arg[3]? arg[3][14] : 0;
+  a41=(a41<=a16);
+  a43=(a41?a09:0);
+  a41=(!a41);
+  a41=(a41?a06:0);
+  a43=(a43+a41);
+  a12=(a12*a43);
+  a43=arg[3]? arg[3][11] : 0;
+  a43=(a43*a16);
+  a12=(a12+a43);
+  a43=(a34*a12);
+  a27=(a27+a43);
+  a20=(a20+a27);
+  if (res[0]!=0) res[0][0]=a20;
+  a20=(a15*a19);
+  a11=(a04*a11);
+  a20=(a20-a11);
+  a00=(a20*a00);
+  a11=(a32*a24);
+  a29=(a23*a29);
+  a11=(a11-a29);
+  a01=(a11*a01);
+  a00=(a00+a01);
+  a01=(a46*a39);
+  a44=(a37*a44);
+  a01=(a01-a44);
+  a34=(a01*a34);
+  a00=(a00+a34);
+  a36=(a15*a36);
+  a19=(a04*a19);
+  a36=(a36-a19);
+  a07=(a36*a07);
+  a00=(a00-a07);
+  a49=(a32*a49);
+  a24=(a23*a24);
+  a49=(a49-a24);
+  a30=(a49*a30);
+  a00=(a00-a30);
+  a51=(a46*a51);
+  a39=(a37*a39);
+  a51=(a51-a39);
+  a02=(a51*a02);
+  a00=(a00-a02);
+  a00=(a00*a52);
+  a36=(a36*a15);
+  a20=(a20*a04);
+  a11=(a11*a23);
+  a20=(a20+a11);
+  a01=(a01*a37);
+  a20=(a20+a01);
+  a36=(a36-a20);
+  a49=(a49*a32);
+  a36=(a36+a49);
+  a51=(a51*a46);
+  a36=(a36+a51);
+  a36=(a36*a50);
+  a00=(a00+a36);
+  a15=(a15*a25);
+  a17=(a04*a17);
+  a05=(a23*a05);
+  a17=(a17+a05);
+  a28=(a37*a28);
+  a17=(a17+a28);
+  a15=(a15-a17);
+  a32=(a32*a54);
+  a15=(a15+a32);
+  a46=(a46*a38);
+  a15=(a15+a46);
+  a00=(a00+a15);
+  a04=(a04*a10);
+  a23=(a23*a47);
+  a04=(a04+a23);
+  a37=(a37*a12);
+  a04=(a04+a37);
+  a00=(a00-a04);
+  if (res[0]!=0) res[0][1]=a00;
+  a14=casadi_fabs(a14);
+  a31=casadi_fabs(a31);
+  a00=(a14+a31);
+  a14=(a14-a31);
+  a14=casadi_fabs(a14);
+  a00=(a00-a14);
+  a00=(a00/a13);
+  a42=casadi_fabs(a42);
+  a14=(a00+a42);
+  a00=(a00-a42);
+  a00=casadi_fabs(a00);
+  a14=(a14-a00);
+  a14=(a14/a13);
+  if (res[1]!=0) res[1][0]=a14;
+  a14=5.0000000000000000e-01;
+  a13=3.3333333333333331e-01;
+  a00=casadi_sq(a03);
+  a42=casadi_sq(a18);
+  a00=(a00-a42);
+  a42=casadi_sq(a21);
+  a31=casadi_sq(a22);
+  a42=(a42-a31);
+  a00=(a00+a42);
+  a42=casadi_sq(a35);
+  a31=casadi_sq(a48);
+  a42=(a42-a31);
+  a00=(a00+a42);
+  a00=casadi_sq(a00);
+  a03=(2.*a03);
+  a03=(a03*a18);
+  a21=(2.*a21);
+  a21=(a21*a22);
+  a03=(a03+a21);
+  a35=(2.*a35);
+  a35=(a35*a48);
+  a03=(a03+a35);
+  a03=casadi_sq(a03);
+  a00=(a00+a03);
+  a00=sqrt(a00);
+  a13=(a13*a00);
+  a09=(a09-a13);
+  a13=casadi_fabs(a09);
+  a09=(a09+a13);
+  a14=(a14*a09);
+  a14=sqrt(a14);
+  if (res[1]!=0) res[1][1]=a14;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f57(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_inverse_dynamics_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_inverse_dynamics_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_inverse_dynamics_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_inverse_dynamics_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_inverse_dynamics_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_inverse_dynamics_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_inverse_dynamics_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "xedd";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_inverse_dynamics_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "u";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_inverse_dynamics_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_inverse_dynamics_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_inverse_dynamics_jacobians:(xe[2],xed[2],xedd[2],theta[15])->(u[2],d_xe[4],d_xed[4],sing[2]) */
+static int casadi_f58(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
+  casadi_real a120, a121, a122, a123, a124, a125, a126, a127, a128, a129, a130, a131;
+  casadi_real a132, a133, a134, a135, a136, a137, a138, a139, a140, a141, a142, a143;
+  casadi_real a144, a145, a146, a147, a148, a149, a150, a151, a152, a153, a154, a155;
+  casadi_real a156, a157, a158, a159, a160, a161, a162, a163, a164, a165, a166, a167;
+  casadi_real a168, a169, a170, a171, a172, a173, a174, a175, a176, a177, a178, a179;
+  casadi_real a180, a181, a182, a183, a184, a185, a186, a187, a188, a189, a190, a191;
+  casadi_real a192, a193, a194, a195, a196, a197, a198, a199, a200, a201, a202, a203;
+  casadi_real a204, a205, a206, a207, a208, a209, a210, a211, a212, a213, a214;
+  a000=2.3499999999999999e-01;
+  a001=4.2553191489361701e+00;
+  a002=arg[0]? arg[0][0] : 0;
+  a003=(a001*a002);
+  a004=-2.1276595744680851e+00;
+  a005=(a004*a002);
+  a006=casadi_sq(a002);
+  a007=-2.6000000000000001e-01;
+  a008=arg[0]? arg[0][1] : 0;
+  a007=(a007+a008);
+  a009=casadi_sq(a007);
+  a010=(a006+a009);
+  a005=(a005/a010);
+  a011=7.2750000000000002e-03;
+  a011=(a011+a006);
+  a011=(a011+a009);
+  a005=(a005*a011);
+  a003=(a003+a005);
+  a005=-1.0638297872340425e+00;
+  a009=1.;
+  a006=-4.;
+  a006=(a006/a010);
+  a012=casadi_sq(a011);
+  a006=(a006*a012);
+  a006=(a009+a006);
+  a006=sqrt(a006);
+  a005=(a005*a006);
+  a012=sqrt(a010);
+  a005=(a005/a012);
+  a005=(a005*a007);
+  a003=(a003+a005);
+  a005=(a000*a003);
+  a013=-2.5000000000000000e-01;
+  a014=2.;
+  a015=(a014/a010);
+  a015=(a015*a007);
+  a015=(a015*a011);
+  a016=(a002*a006);
+  a016=(a016/a012);
+  a015=(a015-a016);
+  a016=(a013*a015);
+  a017=(a016*a005);
+  a018=-2.3499999999999999e-01;
+  a019=-1.1063829787234043e+00;
+  a001=(a001*a008);
+  a019=(a019+a001);
+  a004=(a004/a010);
+  a004=(a004*a007);
+  a004=(a004*a011);
+  a019=(a019+a004);
+  a004=1.0638297872340425e+00;
+  a004=(a004*a002);
+  a004=(a004*a006);
+  a004=(a004/a012);
+  a019=(a019+a004);
+  a004=(a018*a019);
+  a001=2.5000000000000000e-01;
+  a006=(a006/a012);
+  a006=(a006*a007);
+  a007=(2.*a002);
+  a007=(a007/a010);
+  a007=(a007*a011);
+  a006=(a006+a007);
+  a007=(a001*a006);
+  a011=(a004*a007);
+  a017=(a017-a011);
+  a011=(a005/a017);
+  a010=arg[3]? arg[3][0] : 0;
+  a012=(a011*a010);
+  a020=(a007/a017);
+  a021=arg[3]? arg[3][3] : 0;
+  a022=(a006*a003);
+  a023=(a015*a019);
+  a022=(a022+a023);
+  a022=(a021*a022);
+  a023=(a020*a022);
+  a012=(a012-a023);
+  a023=(a012*a011);
+  a024=-1.7600000000000000e+00;
+  a025=4.;
+  a026=(a025*a002);
+  a024=(a024+a026);
+  a026=-2.;
+  a027=casadi_sq(a008);
+  a028=-4.4000000000000000e-01;
+  a028=(a028+a002);
+  a029=casadi_sq(a028);
+  a030=(a027+a029);
+  a031=(a026/a030);
+  a031=(a031*a028);
+  a032=-4.8999999999999998e-03;
+  a032=(a032+a027);
+  a032=(a032+a029);
+  a031=(a031*a032);
+  a024=(a024+a031);
+  a031=-9.5999999999999996e-01;
+  a031=(a031*a008);
+  a029=-4.3402777777777777e+00;
+  a029=(a029/a030);
+  a027=casadi_sq(a032);
+  a029=(a029*a027);
+  a029=(a009+a029);
+  a029=sqrt(a029);
+  a031=(a031*a029);
+  a027=sqrt(a030);
+  a031=(a031/a027);
+  a024=(a024+a031);
+  a031=(a001*a024);
+  a033=-2.3999999999999999e-01;
+  a034=2.0833333333333335e+00;
+  a035=(a034*a008);
+  a035=(a035/a030);
+  a035=(a035*a032);
+  a036=(a029/a027);
+  a036=(a036*a028);
+  a035=(a035-a036);
+  a036=(a033*a035);
+  a037=(a036*a031);
+  a025=(a025*a008);
+  a026=(a026*a008);
+  a026=(a026/a030);
+  a026=(a026*a032);
+  a025=(a025+a026);
+  a026=9.5999999999999996e-01;
+  a026=(a026*a029);
+  a026=(a026/a027);
+  a026=(a026*a028);
+  a025=(a025+a026);
+  a026=(a013*a025);
+  a038=2.3999999999999999e-01;
+  a029=(a008*a029);
+  a029=(a029/a027);
+  a034=(a034/a030);
+  a034=(a034*a028);
+  a034=(a034*a032);
+  a029=(a029+a034);
+  a034=(a038*a029);
+  a032=(a026*a034);
+  a037=(a037-a032);
+  a032=(a031/a037);
+  a028=arg[3]? arg[3][1] : 0;
+  a030=(a032*a028);
+  a027=(a034/a037);
+  a039=arg[3]? arg[3][4] : 0;
+  a040=(a029*a024);
+  a041=(a035*a025);
+  a040=(a040+a041);
+  a040=(a039*a040);
+  a041=(a027*a040);
+  a030=(a030-a041);
+  a041=(a030*a032);
+  a023=(a023+a041);
+  a041=-1.7916666666666667e+00;
+  a042=4.1666666666666670e+00;
+  a043=(a042*a002);
+  a041=(a041+a043);
+  a043=-1.0208333333333333e+00;
+  a044=-4.1649312786339028e+00;
+  a045=-5.1000000000000001e-01;
+  a045=(a045+a008);
+  a046=casadi_sq(a045);
+  a047=-4.2999999999999999e-01;
+  a047=(a047+a002);
+  a002=casadi_sq(a047);
+  a048=(a046+a002);
+  a044=(a044/a048);
+  a049=2.4250000000000001e-03;
+  a049=(a049+a046);
+  a049=(a049+a002);
+  a002=casadi_sq(a049);
+  a044=(a044*a002);
+  a044=(a009+a044);
+  a044=sqrt(a044);
+  a043=(a043*a044);
+  a002=sqrt(a048);
+  a043=(a043/a002);
+  a043=(a043*a045);
+  a041=(a041+a043);
+  a043=-2.0833333333333335e+00;
+  a043=(a043/a048);
+  a046=(a043*a047);
+  a046=(a046*a049);
+  a041=(a041+a046);
+  a046=(a038*a041);
+  a050=-2.4500000000000000e-01;
+  a051=2.0408163265306123e+00;
+  a051=(a051/a048);
+  a048=(a051*a045);
+  a048=(a048*a049);
+  a052=(a044/a002);
+  a053=(a052*a047);
+  a048=(a048-a053);
+  a053=(a050*a048);
+  a054=(a053*a046);
+  a055=-2.1250000000000000e+00;
+  a042=(a042*a008);
+  a055=(a055+a042);
+  a043=(a043*a045);
+  a043=(a043*a049);
+  a055=(a055+a043);
+  a043=1.0208333333333333e+00;
+  a043=(a043*a044);
+  a043=(a043/a002);
+  a043=(a043*a047);
+  a055=(a055+a043);
+  a043=(a033*a055);
+  a002=2.4500000000000000e-01;
+  a052=(a052*a045);
+  a051=(a051*a047);
+  a051=(a051*a049);
+  a052=(a052+a051);
+  a051=(a002*a052);
+  a049=(a043*a051);
+  a054=(a054-a049);
+  a049=(a046/a054);
+  a047=arg[3]? arg[3][2] : 0;
+  a045=(a049*a047);
+  a044=(a051/a054);
+  a042=arg[3]? arg[3][5] : 0;
+  a008=(a052*a041);
+  a056=(a048*a055);
+  a008=(a008+a056);
+  a008=(a042*a008);
+  a056=(a044*a008);
+  a045=(a045-a056);
+  a056=(a045*a049);
+  a023=(a023+a056);
+  a056=(a011*a022);
+  a057=arg[3]? arg[3][6] : 0;
+  a058=(a020*a057);
+  a056=(a056-a058);
+  a058=(a056*a020);
+  a023=(a023-a058);
+  a058=(a032*a040);
+  a059=arg[3]? arg[3][7] : 0;
+  a060=(a027*a059);
+  a058=(a058-a060);
+  a060=(a058*a027);
+  a023=(a023-a060);
+  a060=(a049*a008);
+  a061=arg[3]? arg[3][8] : 0;
+  a062=(a044*a061);
+  a060=(a060-a062);
+  a062=(a060*a044);
+  a023=(a023-a062);
+  a062=arg[2]? arg[2][0] : 0;
+  a023=(a023*a062);
+  a063=(a016/a017);
+  a064=(a056*a063);
+  a065=(a004/a017);
+  a066=(a012*a065);
+  a067=(a026/a037);
+  a068=(a030*a067);
+  a066=(a066+a068);
+  a068=(a043/a054);
+  a069=(a045*a068);
+  a066=(a066+a069);
+  a064=(a064-a066);
+  a066=(a036/a037);
+  a069=(a058*a066);
+  a064=(a064+a069);
+  a069=(a053/a054);
+  a070=(a060*a069);
+  a064=(a064+a070);
+  a070=arg[2]? arg[2][1] : 0;
+  a064=(a064*a070);
+  a023=(a023+a064);
+  a064=arg[1]? arg[1][0] : 0;
+  a071=(a011*a064);
+  a072=arg[1]? arg[1][1] : 0;
+  a073=(a065*a072);
+  a071=(a071-a073);
+  a073=(a013*a071);
+  a074=(a073*a015);
+  a075=(a074*a071);
+  a076=(a063*a072);
+  a077=(a020*a064);
+  a076=(a076-a077);
+  a077=(a018*a076);
+  a078=(a077*a019);
+  a079=(a078*a076);
+  a075=(a075+a079);
+  a079=(a065*a075);
+  a080=(a073*a006);
+  a081=(a080*a071);
+  a082=(a077*a003);
+  a083=(a082*a076);
+  a081=(a081+a083);
+  a083=(a011*a081);
+  a079=(a079-a083);
+  a083=(a010*a079);
+  a084=(a020*a081);
+  a085=(a063*a075);
+  a084=(a084-a085);
+  a085=(a022*a084);
+  a083=(a083+a085);
+  a085=(a021*a076);
+  a086=(a015*a003);
+  a087=(a006*a019);
+  a086=(a086-a087);
+  a087=(a085*a086);
+  a088=(a087*a076);
+  a083=(a083+a088);
+  a088=(a011*a083);
+  a089=(a032*a064);
+  a090=(a067*a072);
+  a089=(a089-a090);
+  a090=(a033*a089);
+  a091=(a090*a035);
+  a092=(a091*a089);
+  a093=(a066*a072);
+  a094=(a027*a064);
+  a093=(a093-a094);
+  a094=(a013*a093);
+  a095=(a094*a025);
+  a096=(a095*a093);
+  a092=(a092+a096);
+  a096=(a067*a092);
+  a097=(a090*a029);
+  a098=(a097*a089);
+  a099=(a094*a024);
+  a100=(a099*a093);
+  a098=(a098+a100);
+  a100=(a032*a098);
+  a096=(a096-a100);
+  a100=(a028*a096);
+  a101=(a027*a098);
+  a102=(a066*a092);
+  a101=(a101-a102);
+  a102=(a040*a101);
+  a100=(a100+a102);
+  a102=(a039*a093);
+  a103=(a035*a024);
+  a104=(a029*a025);
+  a103=(a103-a104);
+  a104=(a102*a103);
+  a105=(a104*a093);
+  a100=(a100+a105);
+  a105=(a032*a100);
+  a088=(a088+a105);
+  a105=(a049*a064);
+  a106=(a068*a072);
+  a105=(a105-a106);
+  a106=(a050*a105);
+  a107=(a106*a048);
+  a108=(a107*a105);
+  a109=(a069*a072);
+  a110=(a044*a064);
+  a109=(a109-a110);
+  a110=(a033*a109);
+  a111=(a110*a055);
+  a112=(a111*a109);
+  a108=(a108+a112);
+  a112=(a068*a108);
+  a113=(a106*a052);
+  a114=(a113*a105);
+  a115=(a110*a041);
+  a116=(a115*a109);
+  a114=(a114+a116);
+  a116=(a049*a114);
+  a112=(a112-a116);
+  a116=(a047*a112);
+  a117=(a044*a114);
+  a118=(a069*a108);
+  a117=(a117-a118);
+  a118=(a008*a117);
+  a116=(a116+a118);
+  a118=(a042*a109);
+  a119=(a048*a041);
+  a120=(a052*a055);
+  a119=(a119-a120);
+  a120=(a118*a119);
+  a121=(a120*a109);
+  a116=(a116+a121);
+  a121=(a049*a116);
+  a088=(a088+a121);
+  a121=(a022*a079);
+  a122=(a057*a084);
+  a121=(a121+a122);
+  a122=(a021*a071);
+  a123=(a122*a086);
+  a124=(a123*a071);
+  a121=(a121-a124);
+  a124=(a020*a121);
+  a088=(a088-a124);
+  a124=(a040*a096);
+  a125=(a059*a101);
+  a124=(a124+a125);
+  a125=(a039*a089);
+  a126=(a125*a103);
+  a127=(a126*a089);
+  a124=(a124-a127);
+  a127=(a027*a124);
+  a088=(a088-a127);
+  a127=(a008*a112);
+  a128=(a061*a117);
+  a127=(a127+a128);
+  a128=(a042*a105);
+  a129=(a128*a119);
+  a130=(a129*a105);
+  a127=(a127-a130);
+  a130=(a044*a127);
+  a088=(a088-a130);
+  a023=(a023+a088);
+  a088=arg[3]? arg[3][12] : 0;
+  a130=0.;
+  a131=(a130<=a071);
+  a132=(a131?a009:0);
+  a131=(!a131);
+  a133=-1.;
+  a131=(a131?a133:0);
+  a132=(a132+a131);
+  a088=(a088*a132);
+  a132=arg[3]? arg[3][9] : 0;
+  a131=(a132*a071);
+  a088=(a088+a131);
+  a131=(a011*a088);
+  a134=arg[3]? arg[3][13] : 0;
+  a135=(a130<=a089);
+  a136=(a135?a009:0);
+  a135=(!a135);
+  a135=(a135?a133:0);
+  a136=(a136+a135);
+  a134=(a134*a136);
+  a136=arg[3]? arg[3][10] : 0;
+  a135=(a136*a089);
+  a134=(a134+a135);
+  a135=(a032*a134);
+  a131=(a131+a135);
+  a135=arg[3]? arg[3][14] : 0;
+  a130=(a130<=a105);
+  a137=(a130?a009:0);
+  a130=(!a130);
+  a130=(a130?a133:0);
+  a137=(a137+a130);
+  a135=(a135*a137);
+  a137=arg[3]? arg[3][11] : 0;
+  a130=(a137*a105);
+  a135=(a135+a130);
+  a130=(a049*a135);
+  a131=(a131+a130);
+  a023=(a023+a131);
+  if (res[0]!=0) res[0][0]=a023;
+  a023=(a063*a022);
+  a131=(a065*a010);
+  a023=(a023-a131);
+  a131=(a023*a011);
+  a130=(a066*a040);
+  a133=(a067*a028);
+  a130=(a130-a133);
+  a133=(a130*a032);
+  a131=(a131+a133);
+  a133=(a069*a008);
+  a138=(a068*a047);
+  a133=(a133-a138);
+  a138=(a133*a049);
+  a131=(a131+a138);
+  a138=(a063*a057);
+  a139=(a065*a022);
+  a138=(a138-a139);
+  a139=(a138*a020);
+  a131=(a131-a139);
+  a139=(a066*a059);
+  a140=(a067*a040);
+  a139=(a139-a140);
+  a140=(a139*a027);
+  a131=(a131-a140);
+  a140=(a069*a061);
+  a141=(a068*a008);
+  a140=(a140-a141);
+  a141=(a140*a044);
+  a131=(a131-a141);
+  a131=(a131*a062);
+  a141=(a138*a063);
+  a142=(a023*a065);
+  a143=(a130*a067);
+  a142=(a142+a143);
+  a143=(a133*a068);
+  a142=(a142+a143);
+  a141=(a141-a142);
+  a142=(a139*a066);
+  a141=(a141+a142);
+  a142=(a140*a069);
+  a141=(a141+a142);
+  a141=(a141*a070);
+  a131=(a131+a141);
+  a141=(a063*a121);
+  a142=(a065*a083);
+  a143=(a067*a100);
+  a142=(a142+a143);
+  a143=(a068*a116);
+  a142=(a142+a143);
+  a141=(a141-a142);
+  a142=(a066*a124);
+  a141=(a141+a142);
+  a142=(a069*a127);
+  a141=(a141+a142);
+  a131=(a131+a141);
+  a141=(a065*a088);
+  a142=(a067*a134);
+  a141=(a141+a142);
+  a142=(a068*a135);
+  a141=(a141+a142);
+  a131=(a131-a141);
+  if (res[0]!=0) res[0][1]=a131;
+  a131=(a071*a020);
+  a141=(a122*a131);
+  a142=(a076*a011);
+  a143=(a085*a142);
+  a141=(a141+a143);
+  a143=(a015*a141);
+  a144=(a022*a011);
+  a145=(a057*a020);
+  a144=(a144-a145);
+  a145=(a020*a144);
+  a146=(a010*a011);
+  a147=(a022*a020);
+  a146=(a146-a147);
+  a147=(a011*a146);
+  a145=(a145-a147);
+  a147=(a076*a145);
+  a148=(a077*a147);
+  a143=(a143+a148);
+  a148=(a084*a011);
+  a149=(a079*a020);
+  a148=(a148-a149);
+  a149=(a063*a070);
+  a150=(a020*a062);
+  a149=(a149-a150);
+  a150=(a011*a149);
+  a148=(a148+a150);
+  a150=(a011*a062);
+  a151=(a065*a070);
+  a150=(a150-a151);
+  a151=(a020*a150);
+  a148=(a148-a151);
+  a148=(a021*a148);
+  a151=(a006*a148);
+  a143=(a143+a151);
+  a151=(a132*a011);
+  a152=(a064*a151);
+  a152=(a088+a152);
+  a152=(a152+a083);
+  a153=(a081*a146);
+  a152=(a152-a153);
+  a153=(a080*a145);
+  a154=(a065*a146);
+  a155=(a063*a144);
+  a154=(a154-a155);
+  a155=(a074*a154);
+  a153=(a153+a155);
+  a155=(a064*a153);
+  a152=(a152+a155);
+  a155=(a123*a020);
+  a131=(a086*a131);
+  a131=(a021*a131);
+  a155=(a155+a131);
+  a131=(a071*a145);
+  a156=(a006*a131);
+  a156=(a013*a156);
+  a155=(a155+a156);
+  a156=(a071*a154);
+  a157=(a015*a156);
+  a157=(a013*a157);
+  a155=(a155+a157);
+  a157=(a064*a155);
+  a152=(a152+a157);
+  a157=(a022*a149);
+  a152=(a152+a157);
+  a158=(a012*a062);
+  a152=(a152+a158);
+  a158=(a010*a150);
+  a152=(a152+a158);
+  a159=(a152/a017);
+  a160=(a065/a017);
+  a146=(a075*a146);
+  a161=(a072*a151);
+  a146=(a146-a161);
+  a161=(a072*a153);
+  a146=(a146-a161);
+  a161=(a072*a155);
+  a146=(a146-a161);
+  a012=(a012*a070);
+  a146=(a146-a012);
+  a012=(a160*a146);
+  a161=(a063/a017);
+  a145=(a082*a145);
+  a162=(a078*a154);
+  a145=(a145+a162);
+  a162=(a072*a145);
+  a163=(a075*a144);
+  a162=(a162-a163);
+  a163=(a087*a011);
+  a142=(a086*a142);
+  a142=(a021*a142);
+  a163=(a163+a142);
+  a147=(a003*a147);
+  a147=(a018*a147);
+  a163=(a163+a147);
+  a154=(a076*a154);
+  a147=(a019*a154);
+  a147=(a018*a147);
+  a163=(a163+a147);
+  a147=(a072*a163);
+  a162=(a162+a147);
+  a147=(a056*a070);
+  a162=(a162+a147);
+  a147=(a161*a162);
+  a012=(a012+a147);
+  a147=(a020/a017);
+  a144=(a081*a144);
+  a144=(a144-a121);
+  a142=(a064*a145);
+  a144=(a144-a142);
+  a142=(a064*a163);
+  a144=(a144-a142);
+  a056=(a056*a062);
+  a144=(a144-a056);
+  a056=(a057*a149);
+  a144=(a144-a056);
+  a142=(a022*a150);
+  a144=(a144-a142);
+  a164=(a147*a144);
+  a012=(a012+a164);
+  a164=(a011/a017);
+  a152=(a164*a152);
+  a012=(a012+a152);
+  a152=(a016*a012);
+  a159=(a159-a152);
+  a159=(a000*a159);
+  a143=(a143+a159);
+  a159=(a019*a020);
+  a152=(a143*a159);
+  a131=(a073*a131);
+  a165=(a019*a141);
+  a131=(a131-a165);
+  a165=(a003*a148);
+  a131=(a131+a165);
+  a144=(a144/a017);
+  a165=(a004*a012);
+  a144=(a144+a165);
+  a144=(a001*a144);
+  a131=(a131+a144);
+  a144=(a015*a011);
+  a165=(a131*a144);
+  a166=(a040*a032);
+  a167=(a059*a027);
+  a166=(a166-a167);
+  a167=(a027*a166);
+  a168=(a028*a032);
+  a169=(a040*a027);
+  a168=(a168-a169);
+  a169=(a032*a168);
+  a167=(a167-a169);
+  a169=(a089*a167);
+  a170=(a090*a169);
+  a171=(a089*a027);
+  a172=(a125*a171);
+  a173=(a093*a032);
+  a174=(a102*a173);
+  a172=(a172+a174);
+  a174=(a025*a172);
+  a170=(a170-a174);
+  a174=(a101*a032);
+  a175=(a096*a027);
+  a174=(a174-a175);
+  a175=(a066*a070);
+  a176=(a027*a062);
+  a175=(a175-a176);
+  a176=(a032*a175);
+  a174=(a174+a176);
+  a176=(a032*a062);
+  a177=(a067*a070);
+  a176=(a176-a177);
+  a177=(a027*a176);
+  a174=(a174-a177);
+  a174=(a039*a174);
+  a177=(a024*a174);
+  a170=(a170+a177);
+  a177=(a098*a166);
+  a177=(a177-a124);
+  a178=(a099*a167);
+  a179=(a067*a168);
+  a180=(a066*a166);
+  a179=(a179-a180);
+  a180=(a095*a179);
+  a178=(a178+a180);
+  a180=(a064*a178);
+  a177=(a177-a180);
+  a180=(a104*a032);
+  a173=(a103*a173);
+  a173=(a039*a173);
+  a180=(a180+a173);
+  a173=(a093*a167);
+  a181=(a024*a173);
+  a181=(a013*a181);
+  a180=(a180+a181);
+  a181=(a093*a179);
+  a182=(a025*a181);
+  a182=(a013*a182);
+  a180=(a180+a182);
+  a182=(a064*a180);
+  a177=(a177-a182);
+  a182=(a058*a062);
+  a177=(a177-a182);
+  a182=(a059*a175);
+  a177=(a177-a182);
+  a183=(a040*a176);
+  a177=(a177-a183);
+  a184=(a177/a037);
+  a185=(a066/a037);
+  a186=(a072*a178);
+  a166=(a092*a166);
+  a186=(a186-a166);
+  a166=(a072*a180);
+  a186=(a186+a166);
+  a058=(a058*a070);
+  a186=(a186+a058);
+  a058=(a185*a186);
+  a166=(a067/a037);
+  a187=(a092*a168);
+  a188=(a136*a032);
+  a189=(a072*a188);
+  a187=(a187-a189);
+  a167=(a097*a167);
+  a189=(a091*a179);
+  a167=(a167+a189);
+  a189=(a072*a167);
+  a187=(a187-a189);
+  a189=(a126*a027);
+  a171=(a103*a171);
+  a171=(a039*a171);
+  a189=(a189+a171);
+  a169=(a029*a169);
+  a169=(a033*a169);
+  a189=(a189+a169);
+  a179=(a089*a179);
+  a169=(a035*a179);
+  a169=(a033*a169);
+  a189=(a189+a169);
+  a169=(a072*a189);
+  a187=(a187-a169);
+  a169=(a030*a070);
+  a187=(a187-a169);
+  a169=(a166*a187);
+  a058=(a058+a169);
+  a169=(a027/a037);
+  a177=(a169*a177);
+  a058=(a058+a177);
+  a177=(a032/a037);
+  a171=(a064*a188);
+  a171=(a134+a171);
+  a171=(a171+a100);
+  a168=(a098*a168);
+  a171=(a171-a168);
+  a168=(a064*a167);
+  a171=(a171+a168);
+  a168=(a064*a189);
+  a171=(a171+a168);
+  a168=(a040*a175);
+  a171=(a171+a168);
+  a030=(a030*a062);
+  a171=(a171+a030);
+  a030=(a028*a176);
+  a171=(a171+a030);
+  a190=(a177*a171);
+  a058=(a058+a190);
+  a190=(a026*a058);
+  a184=(a184+a190);
+  a184=(a038*a184);
+  a170=(a170+a184);
+  a184=(a035*a032);
+  a190=(a170*a184);
+  a165=(a165+a190);
+  a190=(a008*a049);
+  a191=(a061*a044);
+  a190=(a190-a191);
+  a191=(a044*a190);
+  a192=(a047*a049);
+  a193=(a008*a044);
+  a192=(a192-a193);
+  a193=(a049*a192);
+  a191=(a191-a193);
+  a193=(a105*a191);
+  a194=(a106*a193);
+  a195=(a105*a044);
+  a196=(a128*a195);
+  a197=(a109*a049);
+  a198=(a118*a197);
+  a196=(a196+a198);
+  a198=(a055*a196);
+  a194=(a194-a198);
+  a198=(a117*a049);
+  a199=(a112*a044);
+  a198=(a198-a199);
+  a199=(a069*a070);
+  a200=(a044*a062);
+  a199=(a199-a200);
+  a200=(a049*a199);
+  a198=(a198+a200);
+  a200=(a049*a062);
+  a201=(a068*a070);
+  a200=(a200-a201);
+  a201=(a044*a200);
+  a198=(a198-a201);
+  a198=(a042*a198);
+  a201=(a041*a198);
+  a194=(a194+a201);
+  a201=(a114*a190);
+  a201=(a201-a127);
+  a202=(a115*a191);
+  a203=(a068*a192);
+  a204=(a069*a190);
+  a203=(a203-a204);
+  a204=(a111*a203);
+  a202=(a202+a204);
+  a204=(a064*a202);
+  a201=(a201-a204);
+  a204=(a120*a049);
+  a197=(a119*a197);
+  a197=(a042*a197);
+  a204=(a204+a197);
+  a197=(a109*a191);
+  a205=(a041*a197);
+  a205=(a033*a205);
+  a204=(a204+a205);
+  a205=(a109*a203);
+  a206=(a055*a205);
+  a206=(a033*a206);
+  a204=(a204+a206);
+  a206=(a064*a204);
+  a201=(a201-a206);
+  a206=(a060*a062);
+  a201=(a201-a206);
+  a206=(a061*a199);
+  a201=(a201-a206);
+  a207=(a008*a200);
+  a201=(a201-a207);
+  a208=(a201/a054);
+  a209=(a069/a054);
+  a210=(a072*a202);
+  a190=(a108*a190);
+  a210=(a210-a190);
+  a190=(a072*a204);
+  a210=(a210+a190);
+  a060=(a060*a070);
+  a210=(a210+a060);
+  a060=(a209*a210);
+  a190=(a068/a054);
+  a211=(a108*a192);
+  a212=(a137*a049);
+  a213=(a072*a212);
+  a211=(a211-a213);
+  a191=(a113*a191);
+  a213=(a107*a203);
+  a191=(a191+a213);
+  a213=(a072*a191);
+  a211=(a211-a213);
+  a213=(a129*a044);
+  a195=(a119*a195);
+  a195=(a042*a195);
+  a213=(a213+a195);
+  a193=(a052*a193);
+  a193=(a050*a193);
+  a213=(a213+a193);
+  a203=(a105*a203);
+  a193=(a048*a203);
+  a193=(a050*a193);
+  a213=(a213+a193);
+  a193=(a072*a213);
+  a211=(a211-a193);
+  a193=(a045*a070);
+  a211=(a211-a193);
+  a193=(a190*a211);
+  a060=(a060+a193);
+  a193=(a044/a054);
+  a201=(a193*a201);
+  a060=(a060+a201);
+  a201=(a049/a054);
+  a195=(a064*a212);
+  a195=(a135+a195);
+  a195=(a195+a116);
+  a192=(a114*a192);
+  a195=(a195-a192);
+  a192=(a064*a191);
+  a195=(a195+a192);
+  a192=(a064*a213);
+  a195=(a195+a192);
+  a192=(a008*a199);
+  a195=(a195+a192);
+  a045=(a045*a062);
+  a195=(a195+a045);
+  a045=(a047*a200);
+  a195=(a195+a045);
+  a214=(a201*a195);
+  a060=(a060+a214);
+  a214=(a043*a060);
+  a208=(a208+a214);
+  a208=(a002*a208);
+  a194=(a194+a208);
+  a208=(a048*a049);
+  a214=(a194*a208);
+  a165=(a165+a214);
+  a152=(a152-a165);
+  a165=(a035*a172);
+  a173=(a094*a173);
+  a165=(a165+a173);
+  a173=(a029*a174);
+  a165=(a165+a173);
+  a171=(a171/a037);
+  a173=(a036*a058);
+  a171=(a171-a173);
+  a171=(a001*a171);
+  a165=(a165+a171);
+  a171=(a025*a027);
+  a173=(a165*a171);
+  a152=(a152+a173);
+  a173=(a048*a196);
+  a197=(a110*a197);
+  a173=(a173+a197);
+  a197=(a052*a198);
+  a173=(a173+a197);
+  a195=(a195/a054);
+  a197=(a053*a060);
+  a195=(a195-a197);
+  a195=(a038*a195);
+  a173=(a173+a195);
+  a195=(a055*a044);
+  a197=(a173*a195);
+  a152=(a152+a197);
+  a197=(a003*a141);
+  a156=(a073*a156);
+  a197=(a197+a156);
+  a156=(a019*a148);
+  a197=(a197+a156);
+  a162=(a162/a017);
+  a156=(a005*a012);
+  a162=(a162-a156);
+  a162=(a013*a162);
+  a197=(a197+a162);
+  a162=(a006*a011);
+  a156=(a197*a162);
+  a214=(a024*a172);
+  a179=(a090*a179);
+  a214=(a214+a179);
+  a179=(a025*a174);
+  a214=(a214+a179);
+  a186=(a186/a037);
+  a179=(a031*a058);
+  a186=(a186-a179);
+  a186=(a033*a186);
+  a214=(a214+a186);
+  a186=(a029*a032);
+  a179=(a214*a186);
+  a156=(a156+a179);
+  a179=(a041*a196);
+  a203=(a106*a203);
+  a179=(a179+a203);
+  a203=(a055*a198);
+  a179=(a179+a203);
+  a210=(a210/a054);
+  a203=(a046*a060);
+  a210=(a210-a203);
+  a210=(a050*a210);
+  a179=(a179+a210);
+  a210=(a052*a049);
+  a203=(a179*a210);
+  a156=(a156+a203);
+  a154=(a077*a154);
+  a141=(a006*a141);
+  a154=(a154-a141);
+  a148=(a015*a148);
+  a154=(a154+a148);
+  a146=(a146/a017);
+  a012=(a007*a012);
+  a146=(a146+a012);
+  a146=(a018*a146);
+  a154=(a154+a146);
+  a146=(a003*a020);
+  a012=(a154*a146);
+  a156=(a156-a012);
+  a181=(a094*a181);
+  a172=(a029*a172);
+  a181=(a181-a172);
+  a174=(a035*a174);
+  a181=(a181+a174);
+  a187=(a187/a037);
+  a058=(a034*a058);
+  a187=(a187+a058);
+  a187=(a013*a187);
+  a181=(a181+a187);
+  a187=(a024*a027);
+  a058=(a181*a187);
+  a156=(a156-a058);
+  a205=(a110*a205);
+  a196=(a052*a196);
+  a205=(a205-a196);
+  a198=(a048*a198);
+  a205=(a205+a198);
+  a211=(a211/a054);
+  a060=(a051*a060);
+  a211=(a211+a060);
+  a211=(a033*a211);
+  a205=(a205+a211);
+  a211=(a041*a044);
+  a060=(a205*a211);
+  a156=(a156-a060);
+  a152=(a152+a156);
+  if (res[1]!=0) res[1][0]=a152;
+  a152=(a015*a065);
+  a131=(a131*a152);
+  a156=(a035*a067);
+  a170=(a170*a156);
+  a131=(a131+a170);
+  a170=(a048*a068);
+  a194=(a194*a170);
+  a131=(a131+a194);
+  a194=(a019*a063);
+  a143=(a143*a194);
+  a131=(a131-a143);
+  a143=(a025*a066);
+  a165=(a165*a143);
+  a131=(a131-a165);
+  a165=(a055*a069);
+  a173=(a173*a165);
+  a131=(a131-a173);
+  a173=(a003*a063);
+  a154=(a154*a173);
+  a060=(a006*a065);
+  a197=(a197*a060);
+  a198=(a029*a067);
+  a214=(a214*a198);
+  a197=(a197+a214);
+  a214=(a052*a068);
+  a179=(a179*a214);
+  a197=(a197+a179);
+  a154=(a154-a197);
+  a197=(a024*a066);
+  a181=(a181*a197);
+  a154=(a154+a181);
+  a181=(a041*a069);
+  a205=(a205*a181);
+  a154=(a154+a205);
+  a131=(a131+a154);
+  if (res[1]!=0) res[1][1]=a131;
+  a057=(a057*a063);
+  a131=(a022*a065);
+  a057=(a057-a131);
+  a131=(a020*a057);
+  a022=(a022*a063);
+  a010=(a010*a065);
+  a022=(a022-a010);
+  a010=(a011*a022);
+  a131=(a131-a010);
+  a010=(a076*a131);
+  a154=(a077*a010);
+  a205=(a071*a063);
+  a122=(a122*a205);
+  a179=(a076*a065);
+  a085=(a085*a179);
+  a122=(a122+a085);
+  a085=(a015*a122);
+  a154=(a154-a085);
+  a150=(a063*a150);
+  a149=(a065*a149);
+  a150=(a150-a149);
+  a079=(a079*a063);
+  a150=(a150+a079);
+  a084=(a084*a065);
+  a150=(a150-a084);
+  a150=(a021*a150);
+  a084=(a006*a150);
+  a154=(a154+a084);
+  a084=(a023*a062);
+  a132=(a132*a065);
+  a079=(a064*a132);
+  a084=(a084-a079);
+  a079=(a081*a022);
+  a084=(a084-a079);
+  a080=(a080*a131);
+  a079=(a065*a022);
+  a149=(a063*a057);
+  a079=(a079-a149);
+  a074=(a074*a079);
+  a080=(a080+a074);
+  a074=(a064*a080);
+  a084=(a084+a074);
+  a074=(a071*a131);
+  a149=(a006*a074);
+  a149=(a013*a149);
+  a123=(a123*a063);
+  a205=(a086*a205);
+  a205=(a021*a205);
+  a123=(a123+a205);
+  a149=(a149-a123);
+  a071=(a071*a079);
+  a123=(a015*a071);
+  a123=(a013*a123);
+  a149=(a149+a123);
+  a123=(a064*a149);
+  a084=(a084+a123);
+  a123=(a084/a017);
+  a205=(a072*a132);
+  a088=(a088+a083);
+  a023=(a023*a070);
+  a088=(a088+a023);
+  a088=(a088+a157);
+  a088=(a088+a158);
+  a205=(a205-a088);
+  a022=(a075*a022);
+  a205=(a205+a022);
+  a022=(a072*a080);
+  a205=(a205-a022);
+  a022=(a072*a149);
+  a205=(a205-a022);
+  a160=(a160*a205);
+  a022=(a138*a070);
+  a121=(a121+a022);
+  a121=(a121+a056);
+  a121=(a121+a142);
+  a075=(a075*a057);
+  a121=(a121-a075);
+  a082=(a082*a131);
+  a078=(a078*a079);
+  a082=(a082+a078);
+  a078=(a072*a082);
+  a121=(a121+a078);
+  a010=(a003*a010);
+  a010=(a018*a010);
+  a087=(a087*a065);
+  a179=(a086*a179);
+  a021=(a021*a179);
+  a087=(a087+a021);
+  a010=(a010-a087);
+  a076=(a076*a079);
+  a079=(a019*a076);
+  a079=(a018*a079);
+  a010=(a010+a079);
+  a079=(a072*a010);
+  a121=(a121+a079);
+  a161=(a161*a121);
+  a160=(a160+a161);
+  a081=(a081*a057);
+  a138=(a138*a062);
+  a081=(a081-a138);
+  a138=(a064*a082);
+  a081=(a081-a138);
+  a138=(a064*a010);
+  a081=(a081-a138);
+  a147=(a147*a081);
+  a160=(a160+a147);
+  a164=(a164*a084);
+  a160=(a160+a164);
+  a016=(a016*a160);
+  a123=(a123-a016);
+  a000=(a000*a123);
+  a154=(a154+a000);
+  a159=(a154*a159);
+  a000=(a019*a122);
+  a074=(a073*a074);
+  a000=(a000+a074);
+  a074=(a003*a150);
+  a000=(a000+a074);
+  a081=(a081/a017);
+  a004=(a004*a160);
+  a081=(a081+a004);
+  a081=(a001*a081);
+  a000=(a000+a081);
+  a144=(a000*a144);
+  a081=(a089*a066);
+  a125=(a125*a081);
+  a004=(a093*a067);
+  a102=(a102*a004);
+  a125=(a125+a102);
+  a102=(a025*a125);
+  a059=(a059*a066);
+  a074=(a040*a067);
+  a059=(a059-a074);
+  a074=(a027*a059);
+  a040=(a040*a066);
+  a028=(a028*a067);
+  a040=(a040-a028);
+  a028=(a032*a040);
+  a074=(a074-a028);
+  a028=(a089*a074);
+  a123=(a090*a028);
+  a102=(a102+a123);
+  a176=(a066*a176);
+  a175=(a067*a175);
+  a176=(a176-a175);
+  a096=(a096*a066);
+  a176=(a176+a096);
+  a101=(a101*a067);
+  a176=(a176-a101);
+  a176=(a039*a176);
+  a101=(a024*a176);
+  a102=(a102+a101);
+  a101=(a098*a059);
+  a096=(a139*a062);
+  a101=(a101-a096);
+  a099=(a099*a074);
+  a096=(a067*a040);
+  a175=(a066*a059);
+  a096=(a096-a175);
+  a095=(a095*a096);
+  a099=(a099+a095);
+  a095=(a064*a099);
+  a101=(a101-a095);
+  a095=(a093*a074);
+  a175=(a024*a095);
+  a175=(a013*a175);
+  a104=(a104*a067);
+  a004=(a103*a004);
+  a004=(a039*a004);
+  a104=(a104+a004);
+  a175=(a175-a104);
+  a093=(a093*a096);
+  a104=(a025*a093);
+  a104=(a013*a104);
+  a175=(a175+a104);
+  a104=(a064*a175);
+  a101=(a101-a104);
+  a104=(a101/a037);
+  a139=(a139*a070);
+  a124=(a124+a139);
+  a124=(a124+a182);
+  a124=(a124+a183);
+  a059=(a092*a059);
+  a124=(a124-a059);
+  a059=(a072*a099);
+  a124=(a124+a059);
+  a059=(a072*a175);
+  a124=(a124+a059);
+  a185=(a185*a124);
+  a136=(a136*a067);
+  a059=(a072*a136);
+  a134=(a134+a100);
+  a100=(a130*a070);
+  a134=(a134+a100);
+  a134=(a134+a168);
+  a134=(a134+a030);
+  a059=(a059-a134);
+  a092=(a092*a040);
+  a059=(a059+a092);
+  a097=(a097*a074);
+  a091=(a091*a096);
+  a097=(a097+a091);
+  a091=(a072*a097);
+  a059=(a059-a091);
+  a028=(a029*a028);
+  a028=(a033*a028);
+  a126=(a126*a066);
+  a081=(a103*a081);
+  a039=(a039*a081);
+  a126=(a126+a039);
+  a028=(a028-a126);
+  a089=(a089*a096);
+  a096=(a035*a089);
+  a096=(a033*a096);
+  a028=(a028+a096);
+  a096=(a072*a028);
+  a059=(a059-a096);
+  a166=(a166*a059);
+  a185=(a185+a166);
+  a169=(a169*a101);
+  a185=(a185+a169);
+  a130=(a130*a062);
+  a169=(a064*a136);
+  a130=(a130-a169);
+  a098=(a098*a040);
+  a130=(a130-a098);
+  a098=(a064*a097);
+  a130=(a130+a098);
+  a098=(a064*a028);
+  a130=(a130+a098);
+  a177=(a177*a130);
+  a185=(a185+a177);
+  a026=(a026*a185);
+  a104=(a104+a026);
+  a104=(a038*a104);
+  a102=(a102+a104);
+  a184=(a102*a184);
+  a144=(a144+a184);
+  a184=(a105*a069);
+  a128=(a128*a184);
+  a104=(a109*a068);
+  a118=(a118*a104);
+  a128=(a128+a118);
+  a118=(a055*a128);
+  a061=(a061*a069);
+  a026=(a008*a068);
+  a061=(a061-a026);
+  a026=(a044*a061);
+  a008=(a008*a069);
+  a047=(a047*a068);
+  a008=(a008-a047);
+  a047=(a049*a008);
+  a026=(a026-a047);
+  a047=(a105*a026);
+  a177=(a106*a047);
+  a118=(a118+a177);
+  a200=(a069*a200);
+  a199=(a068*a199);
+  a200=(a200-a199);
+  a112=(a112*a069);
+  a200=(a200+a112);
+  a117=(a117*a068);
+  a200=(a200-a117);
+  a200=(a042*a200);
+  a117=(a041*a200);
+  a118=(a118+a117);
+  a117=(a114*a061);
+  a112=(a140*a062);
+  a117=(a117-a112);
+  a115=(a115*a026);
+  a112=(a068*a008);
+  a199=(a069*a061);
+  a112=(a112-a199);
+  a111=(a111*a112);
+  a115=(a115+a111);
+  a111=(a064*a115);
+  a117=(a117-a111);
+  a111=(a109*a026);
+  a199=(a041*a111);
+  a199=(a033*a199);
+  a120=(a120*a068);
+  a104=(a119*a104);
+  a104=(a042*a104);
+  a120=(a120+a104);
+  a199=(a199-a120);
+  a109=(a109*a112);
+  a120=(a055*a109);
+  a120=(a033*a120);
+  a199=(a199+a120);
+  a120=(a064*a199);
+  a117=(a117-a120);
+  a120=(a117/a054);
+  a140=(a140*a070);
+  a127=(a127+a140);
+  a127=(a127+a206);
+  a127=(a127+a207);
+  a061=(a108*a061);
+  a127=(a127-a061);
+  a061=(a072*a115);
+  a127=(a127+a061);
+  a061=(a072*a199);
+  a127=(a127+a061);
+  a209=(a209*a127);
+  a137=(a137*a068);
+  a061=(a072*a137);
+  a135=(a135+a116);
+  a070=(a133*a070);
+  a135=(a135+a070);
+  a135=(a135+a192);
+  a135=(a135+a045);
+  a061=(a061-a135);
+  a108=(a108*a008);
+  a061=(a061+a108);
+  a113=(a113*a026);
+  a107=(a107*a112);
+  a113=(a113+a107);
+  a107=(a072*a113);
+  a061=(a061-a107);
+  a047=(a052*a047);
+  a047=(a050*a047);
+  a129=(a129*a069);
+  a184=(a119*a184);
+  a042=(a042*a184);
+  a129=(a129+a042);
+  a047=(a047-a129);
+  a105=(a105*a112);
+  a112=(a048*a105);
+  a112=(a050*a112);
+  a047=(a047+a112);
+  a072=(a072*a047);
+  a061=(a061-a072);
+  a190=(a190*a061);
+  a209=(a209+a190);
+  a193=(a193*a117);
+  a209=(a209+a193);
+  a133=(a133*a062);
+  a062=(a064*a137);
+  a133=(a133-a062);
+  a114=(a114*a008);
+  a133=(a133-a114);
+  a114=(a064*a113);
+  a133=(a133+a114);
+  a064=(a064*a047);
+  a133=(a133+a064);
+  a201=(a201*a133);
+  a209=(a209+a201);
+  a043=(a043*a209);
+  a120=(a120+a043);
+  a002=(a002*a120);
+  a118=(a118+a002);
+  a208=(a118*a208);
+  a144=(a144+a208);
+  a159=(a159-a144);
+  a095=(a094*a095);
+  a144=(a035*a125);
+  a095=(a095-a144);
+  a144=(a029*a176);
+  a095=(a095+a144);
+  a130=(a130/a037);
+  a036=(a036*a185);
+  a130=(a130-a036);
+  a001=(a001*a130);
+  a095=(a095+a001);
+  a171=(a095*a171);
+  a159=(a159+a171);
+  a111=(a110*a111);
+  a171=(a048*a128);
+  a111=(a111-a171);
+  a171=(a052*a200);
+  a111=(a111+a171);
+  a133=(a133/a054);
+  a053=(a053*a209);
+  a133=(a133-a053);
+  a038=(a038*a133);
+  a111=(a111+a038);
+  a195=(a111*a195);
+  a159=(a159+a195);
+  a073=(a073*a071);
+  a071=(a003*a122);
+  a073=(a073-a071);
+  a071=(a019*a150);
+  a073=(a073+a071);
+  a121=(a121/a017);
+  a005=(a005*a160);
+  a121=(a121-a005);
+  a121=(a013*a121);
+  a073=(a073+a121);
+  a162=(a073*a162);
+  a090=(a090*a089);
+  a089=(a024*a125);
+  a090=(a090-a089);
+  a089=(a025*a176);
+  a090=(a090+a089);
+  a124=(a124/a037);
+  a031=(a031*a185);
+  a124=(a124-a031);
+  a124=(a033*a124);
+  a090=(a090+a124);
+  a186=(a090*a186);
+  a162=(a162+a186);
+  a106=(a106*a105);
+  a105=(a041*a128);
+  a106=(a106-a105);
+  a105=(a055*a200);
+  a106=(a106+a105);
+  a127=(a127/a054);
+  a046=(a046*a209);
+  a127=(a127-a046);
+  a050=(a050*a127);
+  a106=(a106+a050);
+  a210=(a106*a210);
+  a162=(a162+a210);
+  a006=(a006*a122);
+  a077=(a077*a076);
+  a006=(a006+a077);
+  a015=(a015*a150);
+  a006=(a006+a015);
+  a205=(a205/a017);
+  a007=(a007*a160);
+  a205=(a205+a007);
+  a018=(a018*a205);
+  a006=(a006+a018);
+  a146=(a006*a146);
+  a162=(a162-a146);
+  a029=(a029*a125);
+  a094=(a094*a093);
+  a029=(a029+a094);
+  a035=(a035*a176);
+  a029=(a029+a035);
+  a059=(a059/a037);
+  a034=(a034*a185);
+  a059=(a059+a034);
+  a013=(a013*a059);
+  a029=(a029+a013);
+  a187=(a029*a187);
+  a162=(a162-a187);
+  a052=(a052*a128);
+  a110=(a110*a109);
+  a052=(a052+a110);
+  a048=(a048*a200);
+  a052=(a052+a048);
+  a061=(a061/a054);
+  a051=(a051*a209);
+  a061=(a061+a051);
+  a033=(a033*a061);
+  a052=(a052+a033);
+  a211=(a052*a211);
+  a162=(a162-a211);
+  a159=(a159+a162);
+  if (res[1]!=0) res[1][2]=a159;
+  a000=(a000*a152);
+  a102=(a102*a156);
+  a000=(a000+a102);
+  a118=(a118*a170);
+  a000=(a000+a118);
+  a154=(a154*a194);
+  a000=(a000-a154);
+  a095=(a095*a143);
+  a000=(a000-a095);
+  a111=(a111*a165);
+  a000=(a000-a111);
+  a006=(a006*a173);
+  a073=(a073*a060);
+  a090=(a090*a198);
+  a073=(a073+a090);
+  a106=(a106*a214);
+  a073=(a073+a106);
+  a006=(a006-a073);
+  a029=(a029*a197);
+  a006=(a006+a029);
+  a052=(a052*a181);
+  a006=(a006+a052);
+  a000=(a000+a006);
+  if (res[1]!=0) res[1][3]=a000;
+  a000=(a049*a212);
+  a006=(a032*a188);
+  a000=(a000+a006);
+  a006=(a011*a151);
+  a000=(a000+a006);
+  a006=(a044*a202);
+  a000=(a000-a006);
+  a006=(a044*a204);
+  a000=(a000-a006);
+  a006=(a049*a191);
+  a000=(a000+a006);
+  a006=(a049*a213);
+  a000=(a000+a006);
+  a006=(a027*a178);
+  a000=(a000-a006);
+  a006=(a027*a180);
+  a000=(a000-a006);
+  a006=(a032*a167);
+  a000=(a000+a006);
+  a006=(a032*a189);
+  a000=(a000+a006);
+  a006=(a020*a145);
+  a000=(a000-a006);
+  a006=(a020*a163);
+  a000=(a000-a006);
+  a006=(a011*a153);
+  a000=(a000+a006);
+  a006=(a011*a155);
+  a000=(a000+a006);
+  if (res[2]!=0) res[2][0]=a000;
+  a202=(a069*a202);
+  a212=(a068*a212);
+  a188=(a067*a188);
+  a212=(a212+a188);
+  a151=(a065*a151);
+  a212=(a212+a151);
+  a202=(a202-a212);
+  a204=(a069*a204);
+  a202=(a202+a204);
+  a191=(a068*a191);
+  a202=(a202-a191);
+  a213=(a068*a213);
+  a202=(a202-a213);
+  a178=(a066*a178);
+  a202=(a202+a178);
+  a180=(a066*a180);
+  a202=(a202+a180);
+  a167=(a067*a167);
+  a202=(a202-a167);
+  a189=(a067*a189);
+  a202=(a202-a189);
+  a145=(a063*a145);
+  a202=(a202+a145);
+  a163=(a063*a163);
+  a202=(a202+a163);
+  a153=(a065*a153);
+  a202=(a202-a153);
+  a155=(a065*a155);
+  a202=(a202-a155);
+  if (res[2]!=0) res[2][1]=a202;
+  a202=(a049*a113);
+  a155=(a049*a137);
+  a153=(a032*a136);
+  a155=(a155+a153);
+  a153=(a011*a132);
+  a155=(a155+a153);
+  a153=(a044*a115);
+  a155=(a155+a153);
+  a044=(a044*a199);
+  a155=(a155+a044);
+  a202=(a202-a155);
+  a049=(a049*a047);
+  a202=(a202+a049);
+  a049=(a027*a099);
+  a202=(a202-a049);
+  a027=(a027*a175);
+  a202=(a202-a027);
+  a027=(a032*a097);
+  a202=(a202+a027);
+  a032=(a032*a028);
+  a202=(a202+a032);
+  a032=(a020*a082);
+  a202=(a202-a032);
+  a020=(a020*a010);
+  a202=(a202-a020);
+  a020=(a011*a080);
+  a202=(a202+a020);
+  a011=(a011*a149);
+  a202=(a202+a011);
+  if (res[2]!=0) res[2][2]=a202;
+  a137=(a068*a137);
+  a136=(a067*a136);
+  a137=(a137+a136);
+  a132=(a065*a132);
+  a137=(a137+a132);
+  a115=(a069*a115);
+  a137=(a137+a115);
+  a069=(a069*a199);
+  a137=(a137+a069);
+  a113=(a068*a113);
+  a137=(a137-a113);
+  a068=(a068*a047);
+  a137=(a137-a068);
+  a099=(a066*a099);
+  a137=(a137+a099);
+  a066=(a066*a175);
+  a137=(a137+a066);
+  a097=(a067*a097);
+  a137=(a137-a097);
+  a067=(a067*a028);
+  a137=(a137-a067);
+  a082=(a063*a082);
+  a137=(a137+a082);
+  a063=(a063*a010);
+  a137=(a137+a063);
+  a080=(a065*a080);
+  a137=(a137-a080);
+  a065=(a065*a149);
+  a137=(a137-a065);
+  if (res[2]!=0) res[2][3]=a137;
+  a086=casadi_fabs(a086);
+  a103=casadi_fabs(a103);
+  a137=(a086+a103);
+  a086=(a086-a103);
+  a086=casadi_fabs(a086);
+  a137=(a137-a086);
+  a137=(a137/a014);
+  a119=casadi_fabs(a119);
+  a086=(a137+a119);
+  a137=(a137-a119);
+  a137=casadi_fabs(a137);
+  a086=(a086-a137);
+  a086=(a086/a014);
+  if (res[3]!=0) res[3][0]=a086;
+  a086=5.0000000000000000e-01;
+  a014=3.3333333333333331e-01;
+  a137=casadi_sq(a003);
+  a119=casadi_sq(a019);
+  a137=(a137-a119);
+  a119=casadi_sq(a024);
+  a103=casadi_sq(a025);
+  a119=(a119-a103);
+  a137=(a137+a119);
+  a119=casadi_sq(a041);
+  a103=casadi_sq(a055);
+  a119=(a119-a103);
+  a137=(a137+a119);
+  a137=casadi_sq(a137);
+  a003=(2.*a003);
+  a003=(a003*a019);
+  a024=(2.*a024);
+  a024=(a024*a025);
+  a003=(a003+a024);
+  a041=(2.*a041);
+  a041=(a041*a055);
+  a003=(a003+a041);
+  a003=casadi_sq(a003);
+  a137=(a137+a003);
+  a137=sqrt(a137);
+  a014=(a014*a137);
+  a009=(a009-a014);
+  a014=casadi_fabs(a009);
+  a009=(a009+a014);
+  a086=(a086*a009);
+  a086=sqrt(a086);
+  if (res[3]!=0) res[3][1]=a086;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f58(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_inverse_dynamics_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_inverse_dynamics_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_inverse_dynamics_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_inverse_dynamics_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_inverse_dynamics_jacobians_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_inverse_dynamics_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_inverse_dynamics_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "xedd";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_inverse_dynamics_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "u";
+    case 1: return "d_xe";
+    case 2: return "d_xed";
+    case 3: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_inverse_dynamics_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    case 3: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_inverse_dynamics_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s3;
+    case 2: return casadi_s3;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_inverse_dynamics_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_sampled_step_xedd:(xe[2],xed[2],tau_a[3],theta[15])->(xedd[2],sing[2]) */
+static int casadi_f60(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63;
+  a00=-2.5000000000000000e-01;
+  a01=2.;
+  a02=arg[0]? arg[0][0] : 0;
+  a03=casadi_sq(a02);
+  a04=-2.6000000000000001e-01;
+  a05=arg[0]? arg[0][1] : 0;
+  a04=(a04+a05);
+  a06=casadi_sq(a04);
+  a07=(a03+a06);
+  a08=(a01/a07);
+  a08=(a08*a04);
+  a09=7.2750000000000002e-03;
+  a09=(a09+a03);
+  a09=(a09+a06);
+  a08=(a08*a09);
+  a06=1.;
+  a03=-4.;
+  a03=(a03/a07);
+  a10=casadi_sq(a09);
+  a03=(a03*a10);
+  a03=(a06+a03);
+  a03=sqrt(a03);
+  a10=(a02*a03);
+  a11=sqrt(a07);
+  a10=(a10/a11);
+  a08=(a08-a10);
+  a10=(a00*a08);
+  a12=2.3499999999999999e-01;
+  a13=4.2553191489361701e+00;
+  a14=(a13*a02);
+  a15=-2.1276595744680851e+00;
+  a16=(a15*a02);
+  a16=(a16/a07);
+  a16=(a16*a09);
+  a14=(a14+a16);
+  a16=-1.0638297872340425e+00;
+  a16=(a16*a03);
+  a16=(a16/a11);
+  a16=(a16*a04);
+  a14=(a14+a16);
+  a12=(a12*a14);
+  a16=(a10*a12);
+  a17=-2.3499999999999999e-01;
+  a18=-1.1063829787234043e+00;
+  a13=(a13*a05);
+  a18=(a18+a13);
+  a15=(a15/a07);
+  a15=(a15*a04);
+  a15=(a15*a09);
+  a18=(a18+a15);
+  a15=1.0638297872340425e+00;
+  a15=(a15*a02);
+  a15=(a15*a03);
+  a15=(a15/a11);
+  a18=(a18+a15);
+  a15=(a17*a18);
+  a13=2.5000000000000000e-01;
+  a03=(a03/a11);
+  a03=(a03*a04);
+  a04=(2.*a02);
+  a04=(a04/a07);
+  a04=(a04*a09);
+  a03=(a03+a04);
+  a04=(a13*a03);
+  a09=(a15*a04);
+  a16=(a16-a09);
+  a10=(a10/a16);
+  a09=arg[3]? arg[3][6] : 0;
+  a07=(a10*a09);
+  a15=(a15/a16);
+  a11=arg[3]? arg[3][3] : 0;
+  a19=(a03*a14);
+  a20=(a08*a18);
+  a19=(a19+a20);
+  a19=(a11*a19);
+  a20=(a15*a19);
+  a07=(a07-a20);
+  a20=(a07*a10);
+  a21=(a10*a19);
+  a22=arg[3]? arg[3][0] : 0;
+  a23=(a15*a22);
+  a21=(a21-a23);
+  a23=(a21*a15);
+  a24=-2.3999999999999999e-01;
+  a25=2.0833333333333335e+00;
+  a26=(a25*a05);
+  a27=casadi_sq(a05);
+  a28=-4.4000000000000000e-01;
+  a28=(a28+a02);
+  a29=casadi_sq(a28);
+  a30=(a27+a29);
+  a26=(a26/a30);
+  a31=-4.8999999999999998e-03;
+  a31=(a31+a27);
+  a31=(a31+a29);
+  a26=(a26*a31);
+  a29=-4.3402777777777777e+00;
+  a29=(a29/a30);
+  a27=casadi_sq(a31);
+  a29=(a29*a27);
+  a29=(a06+a29);
+  a29=sqrt(a29);
+  a27=sqrt(a30);
+  a32=(a29/a27);
+  a32=(a32*a28);
+  a26=(a26-a32);
+  a32=(a24*a26);
+  a33=-1.7600000000000000e+00;
+  a34=4.;
+  a35=(a34*a02);
+  a33=(a33+a35);
+  a35=-2.;
+  a36=(a35/a30);
+  a36=(a36*a28);
+  a36=(a36*a31);
+  a33=(a33+a36);
+  a36=-9.5999999999999996e-01;
+  a36=(a36*a05);
+  a36=(a36*a29);
+  a36=(a36/a27);
+  a33=(a33+a36);
+  a13=(a13*a33);
+  a36=(a32*a13);
+  a34=(a34*a05);
+  a35=(a35*a05);
+  a35=(a35/a30);
+  a35=(a35*a31);
+  a34=(a34+a35);
+  a35=9.5999999999999996e-01;
+  a35=(a35*a29);
+  a35=(a35/a27);
+  a35=(a35*a28);
+  a34=(a34+a35);
+  a35=(a00*a34);
+  a37=2.3999999999999999e-01;
+  a29=(a05*a29);
+  a29=(a29/a27);
+  a25=(a25/a30);
+  a25=(a25*a28);
+  a25=(a25*a31);
+  a29=(a29+a25);
+  a25=(a37*a29);
+  a31=(a35*a25);
+  a36=(a36-a31);
+  a32=(a32/a36);
+  a31=arg[3]? arg[3][4] : 0;
+  a28=(a29*a33);
+  a30=(a26*a34);
+  a28=(a28+a30);
+  a28=(a31*a28);
+  a30=(a32*a28);
+  a35=(a35/a36);
+  a27=arg[3]? arg[3][1] : 0;
+  a38=(a35*a27);
+  a30=(a30-a38);
+  a38=(a30*a35);
+  a23=(a23+a38);
+  a38=-2.4500000000000000e-01;
+  a39=2.0408163265306123e+00;
+  a40=-5.1000000000000001e-01;
+  a40=(a40+a05);
+  a41=casadi_sq(a40);
+  a42=-4.2999999999999999e-01;
+  a42=(a42+a02);
+  a43=casadi_sq(a42);
+  a44=(a41+a43);
+  a39=(a39/a44);
+  a45=(a39*a40);
+  a46=2.4250000000000001e-03;
+  a46=(a46+a41);
+  a46=(a46+a43);
+  a45=(a45*a46);
+  a43=-4.1649312786339028e+00;
+  a43=(a43/a44);
+  a41=casadi_sq(a46);
+  a43=(a43*a41);
+  a43=(a06+a43);
+  a43=sqrt(a43);
+  a41=sqrt(a44);
+  a47=(a43/a41);
+  a48=(a47*a42);
+  a45=(a45-a48);
+  a48=(a38*a45);
+  a49=-1.7916666666666667e+00;
+  a50=4.1666666666666670e+00;
+  a02=(a50*a02);
+  a49=(a49+a02);
+  a02=-1.0208333333333333e+00;
+  a02=(a02*a43);
+  a02=(a02/a41);
+  a02=(a02*a40);
+  a49=(a49+a02);
+  a02=-2.0833333333333335e+00;
+  a02=(a02/a44);
+  a44=(a02*a42);
+  a44=(a44*a46);
+  a49=(a49+a44);
+  a37=(a37*a49);
+  a44=(a48*a37);
+  a51=-2.1250000000000000e+00;
+  a50=(a50*a05);
+  a51=(a51+a50);
+  a02=(a02*a40);
+  a02=(a02*a46);
+  a51=(a51+a02);
+  a02=1.0208333333333333e+00;
+  a02=(a02*a43);
+  a02=(a02/a41);
+  a02=(a02*a42);
+  a51=(a51+a02);
+  a02=(a24*a51);
+  a41=2.4500000000000000e-01;
+  a47=(a47*a40);
+  a39=(a39*a42);
+  a39=(a39*a46);
+  a47=(a47+a39);
+  a41=(a41*a47);
+  a39=(a02*a41);
+  a44=(a44-a39);
+  a48=(a48/a44);
+  a39=arg[3]? arg[3][5] : 0;
+  a46=(a47*a49);
+  a42=(a45*a51);
+  a46=(a46+a42);
+  a46=(a39*a46);
+  a42=(a48*a46);
+  a02=(a02/a44);
+  a40=arg[3]? arg[3][2] : 0;
+  a43=(a02*a40);
+  a42=(a42-a43);
+  a43=(a42*a02);
+  a23=(a23+a43);
+  a20=(a20-a23);
+  a23=arg[3]? arg[3][7] : 0;
+  a43=(a32*a23);
+  a50=(a35*a28);
+  a43=(a43-a50);
+  a50=(a43*a32);
+  a20=(a20+a50);
+  a50=arg[3]? arg[3][8] : 0;
+  a05=(a48*a50);
+  a52=(a02*a46);
+  a05=(a05-a52);
+  a52=(a05*a48);
+  a20=(a20+a52);
+  a12=(a12/a16);
+  a52=arg[2]? arg[2][0] : 0;
+  a53=(a12*a52);
+  a13=(a13/a36);
+  a54=arg[2]? arg[2][1] : 0;
+  a55=(a13*a54);
+  a53=(a53+a55);
+  a37=(a37/a44);
+  a55=arg[2]? arg[2][2] : 0;
+  a56=(a37*a55);
+  a53=(a53+a56);
+  a56=arg[1]? arg[1][0] : 0;
+  a57=(a12*a56);
+  a58=arg[1]? arg[1][1] : 0;
+  a59=(a15*a58);
+  a57=(a57-a59);
+  a59=(a00*a57);
+  a60=(a59*a08);
+  a60=(a60*a57);
+  a61=(a10*a58);
+  a04=(a04/a16);
+  a16=(a04*a56);
+  a61=(a61-a16);
+  a17=(a17*a61);
+  a16=(a17*a18);
+  a16=(a16*a61);
+  a60=(a60+a16);
+  a16=(a15*a60);
+  a59=(a59*a03);
+  a59=(a59*a57);
+  a17=(a17*a14);
+  a17=(a17*a61);
+  a59=(a59+a17);
+  a17=(a12*a59);
+  a16=(a16-a17);
+  a17=(a22*a16);
+  a59=(a04*a59);
+  a60=(a10*a60);
+  a59=(a59-a60);
+  a60=(a19*a59);
+  a17=(a17+a60);
+  a60=(a11*a61);
+  a08=(a08*a14);
+  a03=(a03*a18);
+  a08=(a08-a03);
+  a60=(a60*a08);
+  a60=(a60*a61);
+  a17=(a17+a60);
+  a60=(a12*a17);
+  a61=(a13*a56);
+  a03=(a35*a58);
+  a61=(a61-a03);
+  a03=(a24*a61);
+  a62=(a03*a26);
+  a62=(a62*a61);
+  a63=(a32*a58);
+  a25=(a25/a36);
+  a36=(a25*a56);
+  a63=(a63-a36);
+  a00=(a00*a63);
+  a36=(a00*a34);
+  a36=(a36*a63);
+  a62=(a62+a36);
+  a36=(a35*a62);
+  a03=(a03*a29);
+  a03=(a03*a61);
+  a00=(a00*a33);
+  a00=(a00*a63);
+  a03=(a03+a00);
+  a00=(a13*a03);
+  a36=(a36-a00);
+  a00=(a27*a36);
+  a03=(a25*a03);
+  a62=(a32*a62);
+  a03=(a03-a62);
+  a62=(a28*a03);
+  a00=(a00+a62);
+  a62=(a31*a63);
+  a26=(a26*a33);
+  a29=(a29*a34);
+  a26=(a26-a29);
+  a62=(a62*a26);
+  a62=(a62*a63);
+  a00=(a00+a62);
+  a62=(a13*a00);
+  a60=(a60+a62);
+  a62=(a37*a56);
+  a63=(a02*a58);
+  a62=(a62-a63);
+  a38=(a38*a62);
+  a63=(a38*a45);
+  a63=(a63*a62);
+  a58=(a48*a58);
+  a41=(a41/a44);
+  a56=(a41*a56);
+  a58=(a58-a56);
+  a24=(a24*a58);
+  a56=(a24*a51);
+  a56=(a56*a58);
+  a63=(a63+a56);
+  a56=(a02*a63);
+  a38=(a38*a47);
+  a38=(a38*a62);
+  a24=(a24*a49);
+  a24=(a24*a58);
+  a38=(a38+a24);
+  a24=(a37*a38);
+  a56=(a56-a24);
+  a24=(a40*a56);
+  a38=(a41*a38);
+  a63=(a48*a63);
+  a38=(a38-a63);
+  a63=(a46*a38);
+  a24=(a24+a63);
+  a63=(a39*a58);
+  a45=(a45*a49);
+  a47=(a47*a51);
+  a45=(a45-a47);
+  a63=(a63*a45);
+  a63=(a63*a58);
+  a24=(a24+a63);
+  a63=(a37*a24);
+  a60=(a60+a63);
+  a16=(a19*a16);
+  a59=(a09*a59);
+  a16=(a16+a59);
+  a11=(a11*a57);
+  a11=(a11*a08);
+  a11=(a11*a57);
+  a16=(a16-a11);
+  a11=(a04*a16);
+  a60=(a60-a11);
+  a36=(a28*a36);
+  a03=(a23*a03);
+  a36=(a36+a03);
+  a31=(a31*a61);
+  a31=(a31*a26);
+  a31=(a31*a61);
+  a36=(a36-a31);
+  a31=(a25*a36);
+  a60=(a60-a31);
+  a56=(a46*a56);
+  a38=(a50*a38);
+  a56=(a56+a38);
+  a39=(a39*a62);
+  a39=(a39*a45);
+  a39=(a39*a62);
+  a56=(a56-a39);
+  a39=(a41*a56);
+  a60=(a60-a39);
+  a53=(a53-a60);
+  a60=arg[3]? arg[3][12] : 0;
+  a39=0.;
+  a38=(a39<=a57);
+  a31=(a38?a06:0);
+  a38=(!a38);
+  a03=-1.;
+  a38=(a38?a03:0);
+  a31=(a31+a38);
+  a60=(a60*a31);
+  a31=arg[3]? arg[3][9] : 0;
+  a31=(a31*a57);
+  a60=(a60+a31);
+  a31=(a12*a60);
+  a57=arg[3]? arg[3][13] : 0;
+  a38=(a39<=a61);
+  a11=(a38?a06:0);
+  a38=(!a38);
+  a38=(a38?a03:0);
+  a11=(a11+a38);
+  a57=(a57*a11);
+  a11=arg[3]? arg[3][10] : 0;
+  a11=(a11*a61);
+  a57=(a57+a11);
+  a11=(a13*a57);
+  a31=(a31+a11);
+  a11=arg[3]? arg[3][14] : 0;
+  a39=(a39<=a62);
+  a61=(a39?a06:0);
+  a39=(!a39);
+  a39=(a39?a03:0);
+  a61=(a61+a39);
+  a11=(a11*a61);
+  a61=arg[3]? arg[3][11] : 0;
+  a61=(a61*a62);
+  a11=(a11+a61);
+  a61=(a37*a11);
+  a31=(a31+a61);
+  a53=(a53-a31);
+  a31=(a20*a53);
+  a61=(a12*a19);
+  a09=(a04*a09);
+  a61=(a61-a09);
+  a09=(a61*a10);
+  a22=(a12*a22);
+  a19=(a04*a19);
+  a22=(a22-a19);
+  a19=(a22*a15);
+  a27=(a13*a27);
+  a62=(a25*a28);
+  a27=(a27-a62);
+  a62=(a27*a35);
+  a19=(a19+a62);
+  a40=(a37*a40);
+  a62=(a41*a46);
+  a40=(a40-a62);
+  a62=(a40*a02);
+  a19=(a19+a62);
+  a09=(a09-a19);
+  a28=(a13*a28);
+  a23=(a25*a23);
+  a28=(a28-a23);
+  a23=(a28*a32);
+  a09=(a09+a23);
+  a46=(a37*a46);
+  a50=(a41*a50);
+  a46=(a46-a50);
+  a50=(a46*a48);
+  a09=(a09+a50);
+  a60=(a15*a60);
+  a57=(a35*a57);
+  a60=(a60+a57);
+  a11=(a02*a11);
+  a60=(a60+a11);
+  a52=(a15*a52);
+  a54=(a35*a54);
+  a52=(a52+a54);
+  a55=(a02*a55);
+  a52=(a52+a55);
+  a10=(a10*a16);
+  a15=(a15*a17);
+  a35=(a35*a00);
+  a15=(a15+a35);
+  a02=(a02*a24);
+  a15=(a15+a02);
+  a10=(a10-a15);
+  a32=(a32*a36);
+  a10=(a10+a32);
+  a48=(a48*a56);
+  a10=(a10+a48);
+  a52=(a52+a10);
+  a60=(a60-a52);
+  a52=(a09*a60);
+  a31=(a31-a52);
+  a22=(a22*a12);
+  a27=(a27*a13);
+  a22=(a22+a27);
+  a40=(a40*a37);
+  a22=(a22+a40);
+  a61=(a61*a04);
+  a22=(a22-a61);
+  a28=(a28*a25);
+  a22=(a22-a28);
+  a46=(a46*a41);
+  a22=(a22-a46);
+  a20=(a22*a20);
+  a21=(a21*a12);
+  a30=(a30*a13);
+  a21=(a21+a30);
+  a42=(a42*a37);
+  a21=(a21+a42);
+  a07=(a07*a04);
+  a21=(a21-a07);
+  a43=(a43*a25);
+  a21=(a21-a43);
+  a05=(a05*a41);
+  a21=(a21-a05);
+  a09=(a09*a21);
+  a20=(a20-a09);
+  a31=(a31/a20);
+  if (res[0]!=0) res[0][0]=a31;
+  a22=(a22*a60);
+  a21=(a21*a53);
+  a22=(a22-a21);
+  a22=(a22/a20);
+  if (res[0]!=0) res[0][1]=a22;
+  a08=casadi_fabs(a08);
+  a26=casadi_fabs(a26);
+  a22=(a08+a26);
+  a08=(a08-a26);
+  a08=casadi_fabs(a08);
+  a22=(a22-a08);
+  a22=(a22/a01);
+  a45=casadi_fabs(a45);
+  a08=(a22+a45);
+  a22=(a22-a45);
+  a22=casadi_fabs(a22);
+  a08=(a08-a22);
+  a08=(a08/a01);
+  if (res[1]!=0) res[1][0]=a08;
+  a08=5.0000000000000000e-01;
+  a01=3.3333333333333331e-01;
+  a22=casadi_sq(a14);
+  a45=casadi_sq(a18);
+  a22=(a22-a45);
+  a45=casadi_sq(a33);
+  a26=casadi_sq(a34);
+  a45=(a45-a26);
+  a22=(a22+a45);
+  a45=casadi_sq(a49);
+  a26=casadi_sq(a51);
+  a45=(a45-a26);
+  a22=(a22+a45);
+  a22=casadi_sq(a22);
+  a14=(2.*a14);
+  a14=(a14*a18);
+  a33=(2.*a33);
+  a33=(a33*a34);
+  a14=(a14+a33);
+  a49=(2.*a49);
+  a49=(a49*a51);
+  a14=(a14+a49);
+  a14=casadi_sq(a14);
+  a22=(a22+a14);
+  a22=sqrt(a22);
+  a01=(a01*a22);
+  a06=(a06-a01);
+  a01=casadi_fabs(a06);
+  a06=(a06+a01);
+  a08=(a08*a06);
+  a08=sqrt(a08);
+  if (res[1]!=0) res[1][1]=a08;
+  return 0;
+}
+
+/* unequal_sampled_step:(x[4],tau_a[3],theta[15],T)->(x_next[4],sing[2]) */
+static int casadi_f59(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i;
+  casadi_real **res1=res+2, *rr, *w00=w+64, w01, w02, *w03=w+68, *w04=w+70, *w05=w+72, *w06=w+74, *w08=w+77, *w09=w+79, *w10=w+81;
+  casadi_real w11, *w12=w+85, *w13=w+89;
+  const casadi_real **arg1=arg+4, *cr, *cs, *wr07;
+  casadi_copy(arg[0], 4, w00);
+  w01 = arg[3] ? arg[3][0] : 0;
+  w02 = 3.;
+  w01 /= w02;
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  casadi_copy(arg[1], 3, w06);
+  wr07 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w09;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w10;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w10; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w11 = 2.;
+  w11  = (w01/w11);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w11*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w12; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w10, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w12, cs=w12; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w12, cr=w00, cs=w12; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w12+0; cs!=w12+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w12+2; cs!=w12+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=0;
+  if (casadi_f60(arg1, res1, iw, w, 0)) return 1;
+  rr=w12;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w10, cs=w12; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w10, cs=w10; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w10; i<4; ++i) (*rr++) += (*cs++);
+  casadi_copy(w00, 4, res[0]);
+  casadi_copy(w09, 2, res[1]);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f59(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_sampled_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_sampled_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_sampled_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_sampled_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_sampled_step_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_sampled_step_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_sampled_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_sampled_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_a";
+    case 2: return "theta";
+    case 3: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_sampled_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_sampled_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s2;
+    case 2: return casadi_s6;
+    case 3: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_sampled_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_sampled_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 93;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 93*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_sampled_step_jacobians:(x[4],tau_a[3],theta[15],T)->(x_next[4],d_x[16],d_tau_a[12],sing[2]) */
+static int casadi_f61(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_int i, j;
+  casadi_real **res1=res+4, *rr, *w00=w+251, w01, w02, *w03=w+255, *w04=w+257, *w05=w+259, *w06=w+261, *w08=w+264, *w09=w+266, *w10=w+270;
+  casadi_real *w11=w+274, *w12=w+280, *w13=w+282, w14, *w15=w+286, *w16=w+290, *w17=w+294, *w18=w+300, *w19=w+304, *w20=w+308, *w21=w+314, *w22=w+318;
+  casadi_real *w23=w+322, *w24=w+328, *w25=w+332, *w26=w+338, *w27=w+342, *w28=w+346, *w29=w+350, *w30=w+356, *w31=w+360, *w32=w+364, *w33=w+370, *w34=w+374;
+  casadi_real *w35=w+378, *w36=w+384, *w37=w+388, *w38=w+394, *w39=w+398, *w40=w+402, *w41=w+406, *w42=w+412, *w43=w+416, *w44=w+420, *w45=w+426, *w46=w+430;
+  casadi_real *w47=w+434, *w48=w+440, *w49=w+444, *w50=w+456, *w51=w+472, *w52=w+500, *w53=w+508, *w54=w+516, *w55=w+530, *w56=w+536, *w57=w+550, *w58=w+572;
+  casadi_real *w59=w+594, *w60=w+622, *w61=w+646, *w62=w+670, *w63=w+684, *w64=w+712, *w65=w+740, *w66=w+756;
+  const casadi_int *cii;
+  const casadi_real **arg1=arg+4, *cr, *cs, *ct, *wr07;
+  casadi_copy(arg[0], 4, w00);
+  w01 = arg[3] ? arg[3][0] : 0;
+  w02 = 3.;
+  w01 /= w02;
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  casadi_copy(arg[1], 3, w06);
+  wr07 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w09;
+  res1[2]=w10;
+  res1[3]=w11;
+  res1[4]=0;
+  res1[5]=w12;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w13;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w15, cs=w13; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w15, cr=w00, cs=w15; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w15+2; cs!=w15+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w15+0; cs!=w15+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w15+2; cs!=w15+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w15;
+  res1[2]=w16;
+  res1[3]=w17;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w18;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w19, cs=w18; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w13, cs=w19; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w18, cs=w18; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w18, cr=w00, cs=w18; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w18+2; cs!=w18+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w18+0; cs!=w18+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w18+2; cs!=w18+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w18;
+  res1[2]=w19;
+  res1[3]=w20;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w21;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w22, cs=w21; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w13, cs=w22; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w21, cs=w21; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w21, cr=w00, cs=w21; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w21+2; cs!=w21+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w21+0; cs!=w21+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w21+2; cs!=w21+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w21;
+  res1[2]=w22;
+  res1[3]=w23;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w24;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w13, cs=w24; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w13, cs=w13; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w13; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w13;
+  res1[2]=w24;
+  res1[3]=w25;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w26;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w27, cs=w26; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w27, cr=w00, cs=w27; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w27+2; cs!=w27+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w27+0; cs!=w27+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w27+2; cs!=w27+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w27;
+  res1[2]=w28;
+  res1[3]=w29;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w30;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w31, cs=w30; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w26, cs=w31; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w30, cs=w30; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w30, cr=w00, cs=w30; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w30+2; cs!=w30+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w30+0; cs!=w30+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w30+2; cs!=w30+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w30;
+  res1[2]=w31;
+  res1[3]=w32;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w33;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w34, cs=w33; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w26, cs=w34; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w33, cs=w33; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w33, cr=w00, cs=w33; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w33+2; cs!=w33+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w33+0; cs!=w33+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w33+2; cs!=w33+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w33;
+  res1[2]=w34;
+  res1[3]=w35;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w36;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w26, cs=w36; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w26, cs=w26; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w26; i<4; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w03, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w00+0; cs!=w00+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w00+2; cs!=w00+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w26;
+  res1[2]=w36;
+  res1[3]=w37;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w38;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w39, cs=w38; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w39, cr=w00, cs=w39; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w39+2; cs!=w39+4; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w39+0; cs!=w39+2; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w39+2; cs!=w39+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w04;
+  arg1[1]=w05;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w08;
+  res1[1]=w39;
+  res1[2]=w40;
+  res1[3]=w41;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w42;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w43, cs=w42; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w38, cs=w43; i<4; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w42, cs=w42; i<4; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w42, cr=w00, cs=w42; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w42+2; cs!=w42+4; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w42+0; cs!=w42+2; cs+=1) *rr++ = *cs;
+  for (rr=w04, cs=w42+2; cs!=w42+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w08;
+  arg1[1]=w04;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w05;
+  res1[1]=w42;
+  res1[2]=w43;
+  res1[3]=w44;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w45;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w46, cs=w45; i<4; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w38, cs=w46; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w45, cs=w45; i<4; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w45, cr=w00, cs=w45; i<4; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w03, cs=w45+2; cs!=w45+4; cs+=1) *rr++ = *cs;
+  for (rr=w05, cs=w45+0; cs!=w45+2; cs+=1) *rr++ = *cs;
+  for (rr=w08, cs=w45+2; cs!=w45+4; cs+=1) *rr++ = *cs;
+  arg1[0]=w05;
+  arg1[1]=w08;
+  arg1[2]=w06;
+  arg1[3]=wr07;
+  res1[0]=w04;
+  res1[1]=w45;
+  res1[2]=w46;
+  res1[3]=w47;
+  res1[4]=0;
+  res1[5]=0;
+  if (casadi_f56(arg1, res1, iw, w, 0)) return 1;
+  rr=w48;
+  for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
+  for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
+  for (i=0, rr=w38, cs=w48; i<4; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w38, cs=w38; i<4; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w00, cs=w38; i<4; ++i) (*rr++) += (*cs++);
+  casadi_copy(w00, 4, res[0]);
+  casadi_fill(w00, 4, 1.);
+  casadi_clear(w49, 12);
+  rr=w50;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w49; i<12; ++i) *rr++ = *cs++;
+  casadi_densify(w50, casadi_s24, w51, 0);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w52, cs=w50+0; cs!=w50+16; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  casadi_trans(w52,casadi_s26, w53, casadi_s25, iw);
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w52;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense_sparse(w52, 2, w50, casadi_s24, w54);
+  casadi_clear(w52, 8);
+  for (i=0, rr=w55, cs=w11; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w52; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w57;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  casadi_trans(w57,casadi_s28, w58, casadi_s27, iw);
+  casadi_densify(w58, casadi_s27, w59, 0);
+  casadi_project(w50, casadi_s24, w60, casadi_s29, w);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w58, cs=w58; i<22; ++i) (*rr++)  = (w14*(*cs++));
+  casadi_project(w58, casadi_s27, w61, casadi_s29, w);
+  for (i=0, rr=w60, cs=w61; i<24; ++i) (*rr++) += (*cs++);
+  for (cii=casadi_s30, rr=w56, cs=w60; cii!=casadi_s30+14; ++cii) *rr++ = cs[*cii];
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w15, cs=w16; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense_sparse(w53, 2, w60, casadi_s29, w56);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w17; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  casadi_densify(w50, casadi_s24, w63, 0);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  for (rr=w54, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w18; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w18, cs=w19; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w18; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w63, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w20; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  casadi_densify(w50, casadi_s24, w63, 0);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  for (rr=w62, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w56, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w62, 14);
+  for (i=0, rr=w00, cs=w21; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w21, cs=w22; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w21; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w63, 7, w62, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w23; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w54;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w54; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w54, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w59, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w59, cs=w59; i<28; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w56, cs=w51+0; cs!=w51+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w13; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w13, cs=w24; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w13; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w51, 7, w56, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w25; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w59, cs=w64; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w59, cr=w51, cs=w59; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w54, cs=w59+0; cs!=w59+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w27; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w27, cs=w28; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w27; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w59, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w29; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w59, cs=w63; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w64, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w63, cs=w63; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w63, cr=w51, cs=w63; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w62, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w56, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w62, 14);
+  for (i=0, rr=w00, cs=w30; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w30, cs=w31; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w30; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w63, 7, w62, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w32; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w54;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w54; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w54, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w63;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w59, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w59; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w64, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w59, cs=w59; i<28; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w59, cr=w51, cs=w59; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w56, cs=w59+0; cs!=w59+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w33; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w33, cs=w34; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w33; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w59, 7, w56, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w35; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w64, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  w02 = 6.;
+  w02  = (w01/w02);
+  for (rr=w54, cs=w51+0; cs!=w51+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w26; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w26, cs=w36; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w26; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w51, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w37; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w64;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w63, cs=w64; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w64, cs=w63; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w64, cr=w51, cs=w64; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w62, cs=w64+0; cs!=w64+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w56, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w62, 14);
+  for (i=0, rr=w00, cs=w39; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w39, cs=w40; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w39; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w64, 7, w62, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w41; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w54;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w62, cs=w54; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w54, cs=w62; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w64;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w59, cs=w64; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w64, cs=w59; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
+  w14 = 2.;
+  w14  = (w01/w14);
+  for (i=0, rr=w59, cs=w59; i<28; ++i) (*rr++)  = (w14*(*cs++));
+  for (i=0, rr=w59, cr=w51, cs=w59; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w56, cs=w59+0; cs!=w59+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w56, 14);
+  for (i=0, rr=w00, cs=w42; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w42, cs=w43; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w42; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w59, 7, w56, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w44; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w62;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w56, cs=w62; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w62, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w59;
+  for (i=0, cs=w54; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w64, cs=w59; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w59, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
+  for (i=0, rr=w63, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w01*(*cs++));
+  for (i=0, rr=w64, cr=w51, cs=w64; i<28; ++i) (*rr++)  = ((*cr++)+(*cs++));
+  for (rr=w54, cs=w64+0; cs!=w64+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
+  for (i=0, rr=w62, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  casadi_clear(w54, 14);
+  for (i=0, rr=w00, cs=w45; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  for (i=0, rr=w45, cs=w46; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
+  rr=w53;
+  for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
+  for (i=0, cs=w45; i<4; ++i) *rr++ = *cs++;
+  casadi_mtimes_dense(w53, 2, 4, w64, 7, w54, 0);
+  casadi_clear(w53, 8);
+  for (i=0, rr=w55, cs=w47; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
+  rr=w56;
+  for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
+  for (i=0, cs=w55; i<6; ++i) *rr++ = *cs++;
+  for (i=0, rr=w54, cs=w56; i<14; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w56, cs=w54; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
+  rr=w64;
+  for (i=0, cs=w62; i<14; ++i) *rr++ = *cs++;
+  for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
+  for (i=0, rr=w59, cs=w64; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
+  for (i=0, rr=w63, cs=w59; i<28; ++i) (*rr++) += (*cs++);
+  for (i=0, rr=w63, cs=w63; i<28; ++i) (*rr++)  = (w02*(*cs++));
+  for (i=0, rr=w51, cs=w63; i<28; ++i) (*rr++) += (*cs++);
+  for (rr=w50, cs=w51+0; cs!=w51+16; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w65, cs=w50; i<4; ++i) for (j=0; j<4; ++j) rr[i+j*4] = *cs++;
+  casadi_copy(w65, 16, res[1]);
+  for (rr=w49, cs=w51+16; cs!=w51+28; cs+=1) *rr++ = *cs;
+  for (i=0, rr=w66, cs=w49; i<3; ++i) for (j=0; j<4; ++j) rr[i+j*3] = *cs++;
+  casadi_copy(w66, 12, res[2]);
+  casadi_copy(w12, 2, res[3]);
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f61(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_sampled_step_jacobians_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_sampled_step_jacobians_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_sampled_step_jacobians_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_sampled_step_jacobians_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_sampled_step_jacobians_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_sampled_step_jacobians_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_sampled_step_jacobians_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_sampled_step_jacobians_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "x";
+    case 1: return "tau_a";
+    case 2: return "theta";
+    case 3: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_sampled_step_jacobians_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "x_next";
+    case 1: return "d_x";
+    case 2: return "d_tau_a";
+    case 3: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_sampled_step_jacobians_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s2;
+    case 2: return casadi_s6;
+    case 3: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_sampled_step_jacobians_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    case 1: return casadi_s21;
+    case 2: return casadi_s5;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_sampled_step_jacobians_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8;
+  if (sz_res) *sz_res = 10;
+  if (sz_iw) *sz_iw = 8;
+  if (sz_w) *sz_w = 768;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 8*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 10*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 8*sizeof(casadi_int);
+  if (sz_w) *sz_w = 768*sizeof(casadi_real);
   return 0;
 }
 

@@ -1,0 +1,219 @@
+# Model methods of the generated derivatives: Jacobians, the sampled step, inverse dynamics,
+# linearisation.
+"""Derivatives of the dynamics, bound from the generated C (``derive/derivatives.py``).
+
+:class:`DerivativeMethods` is a base of :class:`pm2dof.Model`; every method is one call into
+the generated C, takes ``out=`` to write into arrays you own, and refuses bad input like the
+model functions: :class:`~pm2dof.SingularityError` at a pose closer to a singularity of either
+kind than its threshold (a pose out of reach: :class:`~pm2dof.WorkspaceError` naming the leg),
+:class:`~pm2dof.ArgumentError` for a NaN or a wrong length, :class:`~pm2dof.NonFiniteError`
+for a non-finite result from finite inputs.
+
+Friction's sign(v) (eq. 2) is piecewise constant; its derivative is taken as 0. Every
+Jacobian here is that of the smooth part of the dynamics: exact wherever no actuated joint's
+velocity S xed is zero, and one-sided nowhere (a central difference across v = 0 sees the
+jump 2 fc, the Jacobian does not).
+"""
+from typing import NamedTuple
+
+import numpy as np
+
+from .errors import ArgumentError
+
+__all__ = ["DerivativeMethods", "ForwardDynamicsJacobians", "SampledStepJacobians",
+           "InverseDynamicsJacobians", "DERIVATIVE_FUNCTIONS"]
+
+#: the generated functions bound here (``<model>_<name>``)
+DERIVATIVE_FUNCTIONS = ("forward_dynamics_jacobians", "sampled_step", "sampled_step_jacobians",
+                        "inverse_dynamics", "inverse_dynamics_jacobians")
+
+
+class ForwardDynamicsJacobians(NamedTuple):
+    """Jacobians of xedd (eqs. 10-12) at one state: d_xe (2, 2) 1/s^2, d_xed (2, 2) 1/s,
+    d_tau_a (2, n) m/(s^2 N m), d_theta (2, p) in theta's units."""
+    d_xe: np.ndarray
+    d_xed: np.ndarray
+    d_tau_a: np.ndarray
+    d_theta: np.ndarray
+
+
+class SampledStepJacobians(NamedTuple):
+    """Jacobians of one sampled step x_next(x, tau_a): d_x (4, 4), d_tau_a (4, n)."""
+    d_x: np.ndarray
+    d_tau_a: np.ndarray
+
+
+class InverseDynamicsJacobians(NamedTuple):
+    """Jacobians of the task force u (eqs. 10-12): d_xe (2, 2) N/m, d_xed (2, 2) N s/m."""
+    d_xe: np.ndarray
+    d_xed: np.ndarray
+
+
+class DerivativeMethods:
+    """The derivative methods of :class:`pm2dof.Model` (see the module docstring)."""
+
+    __slots__ = ()
+
+    def _outs(self, kind, shapes, out):
+        """The output arrays: new ones, or ``out`` checked (a tuple of float64 C-contiguous
+        arrays of ``shapes``, e.g. a previous result)."""
+        if out is None:
+            return kind(*[np.empty(s) for s in shapes])
+        if not isinstance(out, tuple) or len(out) != len(shapes) or not all(
+                type(a) is np.ndarray and a.shape == s and a.dtype == np.float64
+                and a.flags.c_contiguous for a, s in zip(out, shapes)):
+            raise ArgumentError(
+                f"out must be a tuple of {len(shapes)} C-contiguous float64 arrays of shapes "
+                f"{list(shapes)} ({', '.join(kind._fields)}), e.g. an earlier result, got "
+                f"{[getattr(a, 'shape', type(a).__name__) for a in out] if isinstance(out, tuple) else type(out).__name__}")
+        return out if type(out) is kind else kind(*out)
+
+    def _eval_jacobians(self, short, kind, shapes, out, args):
+        """``<name>_<short>``: its first output (the value) skipped, the Jacobians written into
+        ``out``, its last output the singularity measures.
+
+        Fast path: an earlier result as ``out`` and float64 arguments go straight to the C;
+        anything the binding refuses, and a singular pose, take the model functions' checked
+        path (:meth:`Model._checked_call`), which converts, retries and raises the typed error.
+        """
+        res = out if type(out) is kind else self._outs(kind, shapes, out)
+        f, sing = self._f[short], self._sing
+        try:
+            f(*args, None, *res, sing)
+        except (TypeError, ValueError):
+            self._checked_call(short, f, args, (None, *res, sing), sing)
+            return res
+        if not (sing[0] >= self._sing_thr[0] and sing[1] >= self._sing_thr[1]):
+            self._checked_call(short, f, args, (None, *res, sing), sing)
+        return res
+
+    def forward_dynamics_jacobians(self, xe, xed, tau_a, theta, out=None):
+        """Jacobians of the task-space acceleration xedd (eqs. 10-12, eq. 2 friction).
+
+        xedd = Me^-1 (S^T tau_a - Ce xed - S^T f_a) at the pose ``xe`` (2,) m, velocity ``xed``
+        (2,) m/s, torques ``tau_a`` (n,) N*m and parameters ``theta`` (p,) (as
+        :meth:`forward_dynamics`), differentiated by CasADi's reverse-mode AD in the generated
+        C. Friction's sign(v) contributes 0 (the Jacobian of the smooth part).
+
+        Parameters
+        ----------
+        out : tuple of 4 ndarrays, optional
+            Arrays of shapes (2, 2), (2, 2), (2, n), (2, p) to write into (e.g. an earlier
+            result): no allocation.
+
+        Returns
+        -------
+        ForwardDynamicsJacobians
+            ``d_xe`` (2, 2) 1/s^2, ``d_xed`` (2, 2) 1/s, ``d_tau_a`` (2, n) = Me^-1 S^T,
+            ``d_theta`` (2, p) (columns in :attr:`param_names` order).
+
+        Examples
+        --------
+        >>> import numpy as np, pm2dof
+        >>> m = pm2dof.load_model()
+        >>> J = m.forward_dynamics_jacobians([0.245, 0.265], [0.1, -0.2], np.zeros(3),
+        ...                                  m.theta_nominal)
+        >>> q = m.ik([0.245, 0.265])
+        >>> bool(np.allclose(J.d_tau_a, np.linalg.solve(m.Me(q, m.theta_nominal), m.S(q).T)))
+        True
+        """
+        n, p = self.n_legs, len(self.param_names)
+        return self._eval_jacobians("forward_dynamics_jacobians", ForwardDynamicsJacobians,
+                                    ((2, 2), (2, 2), (2, n), (2, p)), out,
+                                    (xe, xed, tau_a, theta))
+
+    def _period(self, period):
+        T = self.spec.sensing["sample_period"] if period is None else period
+        if not (isinstance(T, (int, float, np.floating, np.integer)) and 0 < T < np.inf):
+            raise ArgumentError(f"period must be a finite number of seconds > 0, got {period!r}")
+        return float(T)
+
+    def sampled_step(self, x, tau_a, theta, period=None, out=None):
+        """One sample of the model's dynamics with ``theta`` under a zero-order hold.
+
+        ``rk4_substeps`` (model file) classical RK4 steps of period / rk4_substeps of
+        d/dt [xe, xed] = [xed, xedd(xe, xed, tau_a, theta)] (eqs. 10-12), ``tau_a`` (n,) N*m
+        held constant; ``x`` = [xe, xed] (4,) m, m/s; ``period`` s (default ``[sensing]
+        sample_period``). The model's own dynamics (eq. 2 friction), not the plant's truth
+        (``pm2dof.plant_truth``). Raises SingularityError when x's pose is singular; a
+        stage that leaves the workspace gives NonFiniteError.
+
+        Returns
+        -------
+        x_next : ndarray (4,)
+        """
+        return self._eval("sampled_step", (4,), out, x, tau_a, theta, self._period(period))
+
+    def sampled_step_jacobians(self, x, tau_a, theta, period=None, out=None):
+        """Jacobians of :meth:`sampled_step` w.r.t. the state x = [xe, xed] and the held
+        torque, by forward-mode AD of the RK4 stages (each stage's Jacobian from
+        :meth:`forward_dynamics_jacobians`' generated code).
+
+        Returns
+        -------
+        SampledStepJacobians
+            ``d_x`` (4, 4), ``d_tau_a`` (4, n) (the discrete-time A and B at x, tau_a).
+            ``out=``: a tuple of two such arrays.
+        """
+        return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians,
+                                    ((4, 4), (4, self.n_legs)), out,
+                                    (x, tau_a, theta, self._period(period)))
+
+    def inverse_dynamics(self, xe, xed, xedd, theta, out=None):
+        """The task force u = Me xedd + Ce xed + S^T f_a (2,), N (eqs. 10-12, eq. 2 friction)
+        that gives the acceleration ``xedd`` (2,) m/s^2 at the pose ``xe`` and velocity
+        ``xed``. Actuator torques: any tau_a with S^T tau_a = u (:meth:`torque_splits`)."""
+        return self._eval("inverse_dynamics", (2,), out, xe, xed, xedd, theta)
+
+    def inverse_dynamics_jacobians(self, xe, xed, xedd, theta, out=None):
+        """Jacobians of :meth:`inverse_dynamics` w.r.t. the state (reverse-mode AD; friction's
+        sign contributes 0). d u / d xedd is Me.
+
+        Returns
+        -------
+        InverseDynamicsJacobians
+            ``d_xe`` (2, 2) N/m, ``d_xed`` (2, 2) N s/m.
+        """
+        return self._eval_jacobians("inverse_dynamics_jacobians", InverseDynamicsJacobians,
+                                    ((2, 2), (2, 2)), out, (xe, xed, xedd, theta))
+
+    def linearize(self, xe, xed, tau_a, theta=None, discrete=False, period=None):
+        """The linearisation (A, B) of the dynamics at the state [xe, xed] and torque tau_a.
+
+        Continuous (``discrete=False``): d/dt dx = A dx + B dtau with
+        A = [[0, I], [d xedd/d xe, d xedd/d xed]] (4, 4), B = [[0], [d xedd/d tau_a]] (4, n)
+        (:meth:`forward_dynamics_jacobians`). Discrete (``discrete=True``): dx_{k+1} = A dx_k
+        + B dtau_k for one sample of ``period`` s (default ``[sensing] sample_period``) under
+        the zero-order hold (:meth:`sampled_step_jacobians`). State order [x, y, xd, yd] (m,
+        m/s), input order tau_1..tau_n (N*m); ``theta`` defaults to :attr:`theta_nominal`.
+
+        Returns
+        -------
+        A : ndarray (4, 4)
+        B : ndarray (4, n)
+
+        Examples
+        --------
+        >>> import numpy as np, pm2dof
+        >>> m = pm2dof.load_model()
+        >>> A, B = m.linearize([0.245, 0.265], [0.0, 0.0], np.zeros(3))
+        >>> A.shape, B.shape
+        ((4, 4), (4, 3))
+        """
+        theta = self.theta_nominal if theta is None else theta
+        if discrete:
+            x = np.concatenate([np.ravel(np.asarray(xe, dtype=float)),
+                                np.ravel(np.asarray(xed, dtype=float))])
+            if x.shape != (4,):
+                raise ArgumentError(f"linearize: xe and xed must have 2 entries each, got "
+                                    f"{np.shape(xe)} and {np.shape(xed)}")
+            J = self.sampled_step_jacobians(x, tau_a, theta, period)
+            return J.d_x, J.d_tau_a
+        J = self.forward_dynamics_jacobians(xe, xed, tau_a, theta)
+        n = self.n_legs
+        A = np.zeros((4, 4))
+        A[0:2, 2:4] = np.eye(2)
+        A[2:4, 0:2], A[2:4, 2:4] = J.d_xe, J.d_xed
+        B = np.zeros((4, n))
+        B[2:4] = J.d_tau_a
+        return A, B

@@ -1,0 +1,61 @@
+# python-control state space of the linearised robot, named states and inputs.
+"""``statespace(model, xe, xed, tau_a)``: a ``control.StateSpace`` of the linearisation.
+
+python-control is an optional dependency (the ``control`` extra), imported when called.
+"""
+import numpy as np
+
+__all__ = ["statespace", "STATE_NAMES"]
+
+#: the state of every linearisation: [xe, xed] (m, m/s)
+STATE_NAMES = ("x", "y", "xd", "yd")
+
+
+def _control():
+    try:
+        import control
+    except ModuleNotFoundError as exc:
+        raise ModuleNotFoundError(
+            f"pm2dof.statespace needs python-control, which is not installed: "
+            f"pip install 'pm2dof[control]' ({exc})", name="control") from None
+    return control
+
+
+def statespace(model, xe, xed, tau_a, theta=None, *, discrete=False, period=None):
+    """The linearisation of the robot at [xe, xed], tau_a as a python-control ``StateSpace``.
+
+    States ``x, y, xd, yd`` (m, m/s), inputs ``tau1..taun`` (N*m), outputs the states (C = I,
+    D = 0). Continuous by default; ``discrete=True``: the sampled step over ``period`` s
+    (default ``[sensing] sample_period``), a discrete-time system with ``dt = period``.
+    (A, B) are :meth:`pm2dof.Model.linearize`'s.
+
+    Parameters
+    ----------
+    model : Model
+    xe, xed : array_like (2,)
+        The operating state, m and m/s.
+    tau_a : array_like (n,)
+        The operating torques, N*m (e.g. from :meth:`Model.inverse_dynamics` and
+        :meth:`Model.torque_splits`).
+    theta : array_like (p,), optional
+        Default Tables 1-2.
+
+    Returns
+    -------
+    control.StateSpace
+
+    Examples
+    --------
+    >>> import numpy as np, pm2dof
+    >>> m = pm2dof.load_model()
+    >>> sys = pm2dof.statespace(m, [0.245, 0.265], [0.0, 0.0], np.zeros(3), discrete=True)
+    >>> sys.dt, sys.input_labels
+    (0.002, ['tau1', 'tau2', 'tau3'])
+    """
+    control = _control()
+    T = model.spec.sensing["sample_period"] if period is None else period
+    A, B = model.linearize(xe, xed, tau_a, theta, discrete=discrete, period=T)
+    n = model.n_legs
+    return control.ss(A, B, np.eye(4), np.zeros((4, n)), dt=float(T) if discrete else 0,
+                      states=list(STATE_NAMES), inputs=[f"tau{i + 1}" for i in range(n)],
+                      outputs=list(STATE_NAMES), name=f"{model.name}_linearised")
