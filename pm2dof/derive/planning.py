@@ -37,15 +37,16 @@ Functions (prefix ``<name>_``), all per grid point:
   (TOPP-RA's recursion, exact in the friction) over the interval [s_k, s_k+1], whose ``pair``
   holds the facets leaving s_k and arriving at s_k+1 (the path's left limit there) and the
   arrival facets' maximum-velocity curve: from x, the largest s_d^2 at s_k+1 from which the
-  end can be reached, to the largest s_d^2 at s_k with a feasible s_dd that lands at or below
-  it with the arrival facets holding there too, capped at ``x_cap`` (-1: none);
+  end can be reached, to the largest s_d^2 at s_k with a feasible s_dd that lands between rest
+  and it (s_d^2 in [0, x]) with the arrival facets holding there too, capped at ``x_cap``
+  (-1: none);
 * ``path_forward(x, input, params) -> x_next, y``: one forward step from s_d^2 = x at s_k, the
   greatest s_dd feasible leaving s_k that keeps s_d^2 at s_k+1 within the controllable bound
-  (``x_next_max``), capped by the arrival facets' U at the landing speed (a fixed point,
-  :data:`ARRIVAL_ITERATIONS` steps); y (layout ``path_forward_output``) = [x, s_dd, L, U, Z,
-  arrival_ok] (L, U: the feasible s_dd leaving s_k; Z >= 0: the facets parallel to a hold;
-  arrival_ok: 1 if the arrival facets hold too, 0 where both ends cannot, where the departing
-  ones are kept);
+  (``x_next_max``) and that the arrival facets' U allows at its own landing speed (the
+  :data:`ARRIVAL_STEPS` regula falsi steps), never landing below rest; y (layout
+  ``path_forward_output``) = [x, s_dd, L, U, Z, arrival_ok] (L, U: the feasible s_dd leaving
+  s_k; Z >= 0: the facets parallel to a hold; arrival_ok: 1 if the arrival facets hold too, 0
+  where both ends cannot, where the departing ones are kept);
 * ``path_torques(stage, sd, sdd, params, tau_max) -> u, tau_min_norm, tau_min_max, ratio``.
 
 The largest s_d with a non-empty interval is found by bisection with :data:`BISECTIONS`
@@ -67,7 +68,7 @@ from .symbols import sgn
 from .to_casadi import Converter
 
 __all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS", "MVC_BISECTIONS",
-           "HINT_SPAN", "HINT_FLOOR"]
+           "HINT_SPAN", "HINT_FLOOR", "ARRIVAL_STEPS"]
 
 #: halvings of the bisection for the largest controllable s_d, on a bracket of +-10 % around
 #: a hint (braking onto the next point's bound; resolution 5e-8 of it) or, where that does not
@@ -77,8 +78,10 @@ __all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS", "MVC
 BISECTIONS = 22
 MVC_BISECTIONS = 20
 HINT_SPAN, HINT_FLOOR = 0.1, 1e-3
-#: fixed-point steps of the forward pass for the arrival facets' bound at the landing speed
-ARRIVAL_ITERATIONS = 3
+#: steps of the forward pass's search (Illinois regula falsi, on the allowed side) for the
+#: greatest s_dd that the arrival facets allow at its own landing speed, on the bracket [U there
+#: at the uncapped landing, the uncapped s_dd]
+ARRIVAL_STEPS = 6
 _PARALLEL = 1e-12   # |N_j . a| <= _PARALLEL |a|: facet j does not bound s_dd (it bounds s_d only)
 
 
@@ -274,9 +277,15 @@ def path_functions(d, prefix):
     xl = ca.fmin(x, PR["next_cap"])             # ... and where the arrival facets allow
     L_next = nxt.bounds(ca.sqrt(ca.fmax(xl, 0)))[0]
 
-    def reaches(sd):       # a feasible s_dd lands at or below xl, feasible there too
-        ok, L = own.feasible(sd)
-        return ca.logic_and(ok, sd * sd + 2 * delta * ca.fmax(L, L_next) <= xl)
+    def reaches(sd):       # a feasible s_dd lands in [0, xl], feasible there too
+        L, U, Z = own.bounds(sd)
+        ok = ca.logic_and(L <= U, Z >= 0)
+        # braking as hard as both ends allow lands at or below xl, and accelerating as hard as
+        # s_k allows lands at or above rest (s_d^2 >= 0): near a coarse grid's maximum-velocity
+        # curve viscous friction drives U far below 0 and every feasible s_dd would stop the
+        # robot before s_k+1
+        return ca.logic_and(ca.logic_and(ok, sd * sd + 2 * delta * ca.fmax(L, L_next) <= xl),
+                            sd * sd + 2 * delta * U >= 0)
     # the hint: braking from xl at the arrival end's deceleration (exact where that binds)
     hint = ca.sqrt(ca.fmin(ca.fmax(xl - 2 * delta * L_next, 0), 4 * ca.fmax(xl, 0) + 1))
     y_b, ok0 = own.largest(v_top, reaches, BISECTIONS, hint=hint)
@@ -292,10 +301,35 @@ def path_functions(d, prefix):
     xk = ca.SX.sym("x")
     L, U, Z = fown.bounds(ca.sqrt(ca.fmax(xk, 0)))
     dlt = fown.st["delta"]
-    sdd = ca.fmin(U, (ca.fmin(F["x_next_max"], PF["next_cap"]) - xk) / (2 * dlt))
-    for _ in range(ARRIVAL_ITERATIONS):         # the arrival facets' U at the landing speed
-        sdd = ca.fmin(sdd, fnxt.bounds(ca.sqrt(ca.fmax(xk + 2 * dlt * sdd, 0)))[1])
-    sdd = ca.fmax(sdd, L)      # where both ends cannot hold (riding a coarse grid's MVC): own
+    top = ca.fmin(U, (ca.fmin(F["x_next_max"], PF["next_cap"]) - xk) / (2 * dlt))
+    floor = ca.fmax(L, -xk / (2 * dlt))     # the least s_dd: own facets, landing at rest or above
+
+    def room(sdd):         # the arrival facets' U at the landing speed, less sdd (>= 0: allowed)
+        return fnxt.bounds(ca.sqrt(ca.fmax(xk + 2 * dlt * sdd, 0)))[1] - sdd
+    # the greatest sdd in [floor, top] under the arrival facets' U at its own landing speed:
+    # U falls with the speed (viscous friction, b s_d^2), so its value at ``top``'s landing
+    # brackets the answer from below; the Illinois variant of regula falsi keeps a bracket
+    # [a (allowed), b (not)] and returns a. (Capping sdd by U at the landing speed of the
+    # previous guess instead undershoots by the fall of U across the interval: on a coarse
+    # grid below -s_d^2 / (2 delta), landing at s_d^2 < 0.)
+    f_top = room(top)
+    guess = ca.fmax(floor, ca.fmin(top, f_top + top))
+    f_guess = room(guess)
+    ok_guess = f_guess >= 0
+    a, fa = ca.if_else(ok_guess, guess, floor), ca.if_else(ok_guess, f_guess, room(floor))
+    b, fb = top, f_top
+    side = ca.SX(0)
+    for _ in range(ARRIVAL_STEPS):
+        c = ca.fmin(ca.fmax((a * fb - b * fa) / (fb - fa), a), b)
+        fc = room(c)
+        left = fc >= 0                          # c is allowed: the bracket's low end moves
+        a, fa = ca.if_else(left, c, a), ca.if_else(left, fc, fa)
+        b, fb = ca.if_else(left, b, c), ca.if_else(left, fb, fc)
+        fb = ca.if_else(ca.logic_and(left, side > 0), 0.5 * fb, fb)     # Illinois: halve the
+        fa = ca.if_else(ca.logic_and(left == 0, side < 0), 0.5 * fa, fa)  # end that stays
+        side = ca.if_else(left, 1, -1)
+    sdd = ca.if_else(f_top >= 0, top, ca.if_else(fa >= 0, a, floor))
+    sdd = ca.fmax(sdd, floor)  # where both ends cannot hold (riding a coarse grid's MVC): own
     Ln, Un, Zn = fnxt.bounds(ca.sqrt(ca.fmax(xk + 2 * dlt * sdd, 0)))
     scale = ca.fmax(1, ca.fabs(sdd))
     arrival_ok = ca.logic_and(ca.logic_and(sdd >= Ln - 1e-9 * scale, sdd <= Un + 1e-9 * scale),

@@ -6,6 +6,9 @@
 * ``plan_<name>_torques.png``: the actuator torques against time of each time-optimal plan
   (inverse dynamics at the 2 ms samples, the generated C) with the limits;
 * ``plan_<name>_map.png``: the path over the min-max force-capability map of the workspace.
+
+Each legend is outside the axes (:func:`pm2dof.figures.style.legend_outside`): the curves and
+the map fill their axes; tests/figures/test_figures_layout.py checks the three.
 """
 from pathlib import Path
 
@@ -16,6 +19,7 @@ from ..analysis.results import save_figure
 from ..planning.torques import path_torques
 from .experiment import _plt
 from .maps import draw_robot_frame
+from .style import legend_outside
 
 __all__ = ["plan_figures"]
 
@@ -23,7 +27,7 @@ _COLORS = {"min_norm": "tab:blue", "min_max": "tab:red", "kinematic": "tab:gray"
 
 
 def _phase(plt, name, plans):
-    fig, ax = plt.subplots(figsize=(7, 4))
+    fig, ax = plt.subplots(figsize=(7, 4.6), layout="constrained")
     for key, p in plans.items():
         c = _COLORS.get(key, "k")
         label = (f"kinematic S-curve ({p.duration:.3f} s)" if key == "kinematic" else
@@ -38,45 +42,43 @@ def _phase(plt, name, plans):
     ax.set_xlabel("arc length s (m)")
     ax.set_ylabel("path speed ds/dt (m/s)")
     ax.set_title(f"{name}: phase plane", fontsize=9)
-    ax.legend(fontsize=7, loc="upper right")
-    fig.tight_layout()
+    legend_outside(fig, [ax], "lower", ncol=2, fontsize=7)
     return fig
 
 
 def _torques(plt, model, name, plans, w):
     opt = {k: p for k, p in plans.items() if k != "kinematic"}
-    fig, axes = plt.subplots(len(opt), 1, figsize=(7, 2.6 * len(opt)), squeeze=False)
+    fig, axes = plt.subplots(len(opt), 1, figsize=(7, 2.6 * len(opt) + 0.5), squeeze=False,
+                             sharex=True, layout="constrained")
     for ax, (key, p) in zip(axes[:, 0], opt.items()):
         tr = p.trajectory
         s, sd, sdd = tr.profile.evaluate(tr.t)
         tau = path_torques(model, p.path, s, sd, sdd, p.info.get("theta"), w)[key]
         for i in range(model.n_legs):
             ax.plot(tr.t, tau[:, i], lw=1.2, label=f"tau_{i + 1}")
-            ax.axhline(w[i], color="k", lw=0.6, ls="--")
+        for i in range(model.n_legs):
+            ax.axhline(w[i], color="k", lw=0.6, ls="--", label="+-tau_max" if i == 0 else None)
             ax.axhline(-w[i], color="k", lw=0.6, ls="--")
         ax.set_ylabel("torque (N m)")
-        ax.set_title(f"{name}, time-optimal with {key}: {p.duration:.3f} s (dashed: tau_max)",
-                     fontsize=9)
-        ax.legend(fontsize=7, ncol=model.n_legs, loc="lower right")
+        ax.set_title(f"{name}, time-optimal with {key}: {p.duration:.3f} s", fontsize=9)
     axes[-1, 0].set_xlabel("time (s)")
-    fig.tight_layout()
+    legend_outside(fig, axes[:1, 0], "lower", ncol=model.n_legs + 1, fontsize=7)
     return fig
 
 
 def _map(plt, model, name, path, maps):
-    fig, ax = plt.subplots(figsize=(5.6, 4.8))
+    fig, ax = plt.subplots(figsize=(5.6, 5.2), layout="constrained")
     X, Y = np.meshgrid(maps["x"], maps["y"])
     Z = np.ma.masked_invalid(maps["force_min_max"])
     pc = ax.pcolormesh(X, Y, Z, shading="auto", cmap="viridis",
                        vmax=float(np.percentile(Z.compressed(), 95)))
-    fig.colorbar(pc, ax=ax, shrink=0.8, label="N")
+    fig.colorbar(pc, ax=ax, shrink=0.8, label="force (N)")
     draw_robot_frame(ax, model, maps)
     p = path.evaluate(np.linspace(0, path.length, 400))[0]
     ax.plot(p[:, 0], p[:, 1], "-", color="w", lw=3.5)
-    ax.plot(p[:, 0], p[:, 1], "-", color="tab:orange", lw=1.6, label=name)
-    ax.legend(fontsize=7, loc="upper right")
+    ax.plot(p[:, 0], p[:, 1], "-", color="tab:orange", lw=1.6, label=f"path {name}")
     ax.set_title("force in every direction within tau_max, min-max split", fontsize=8)
-    fig.tight_layout()
+    legend_outside(fig, [ax], "lower", fontsize=7)
     return fig
 
 

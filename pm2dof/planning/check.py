@@ -1,12 +1,36 @@
 # Is a path inside the workspace and clear of both singularities? Errors name the arc length and point.
-"""``check_path(model, path)``: the planner's first question, asked of the generated C."""
+"""``check_path(model, path)``: the planner's first question, asked of the generated C (ik and
+the singularity measures) and answered by the control layer's test of a desired motion
+(:func:`pm2dof.control.simulate.poses_clear`: the thresholds with the same slack), so that a
+path the planner accepts is one ``simulate`` accepts."""
 import numpy as np
 
-from ..core.errors import PlanError, SingularityError, WorkspaceError
+from ..control.simulate import poses_clear
+from ..core.errors import ArgumentTypeError, PlanError, SingularityError, WorkspaceError
+from ..core.model import Model
+from .paths import TaskPath
 
-__all__ = ["check_path", "raise_at"]
+__all__ = ["check_path", "raise_at", "first_bad", "require", "STEP", "STEP_MIN", "STEP_MAX",
+           "SAMPLES_MAX"]
 
-STEP = 5e-4   # m: default sample spacing of check_path
+STEP = 5e-4         # m: default sample spacing of check_path
+STEP_MIN = 1e-6     # m: the finest spacing check_path takes
+STEP_MAX = 1e-2     # m: the coarsest (coarser could step over a singular region)
+SAMPLES_MAX = 1_000_000    # samples along one path (the step is refused beyond)
+
+
+_UNSET = object()
+
+
+def require(model=_UNSET, path=_UNSET):
+    """ArgumentTypeError unless ``model`` is a :class:`pm2dof.Model` and ``path`` a
+    :class:`pm2dof.TaskPath` (each checked when given)."""
+    if model is not _UNSET and not isinstance(model, Model):
+        raise ArgumentTypeError(f"model must be a pm2dof.Model (pm2dof.load_model()), got "
+                                f"{type(model).__name__}")
+    if path is not _UNSET and not isinstance(path, TaskPath):
+        raise ArgumentTypeError(f"path must be a pm2dof.TaskPath (TaskPath.line, .arc, "
+                                f".polyline, .spline, .concat), got {type(path).__name__}")
 
 
 def _where(s, p):
@@ -28,9 +52,9 @@ def raise_at(model, s, p, sing=None):
 
 
 def first_bad(model, sing):
-    """Index of the first row of ``sing`` (k, 2) that is NaN or below a threshold, or None."""
-    ok = (sing[:, 0] >= model.singularity_threshold) & \
-         (sing[:, 1] >= model.parallel_singularity_threshold)
+    """Index of the first row of ``sing`` (k, 2) (the generated measures) that is NaN or below
+    a threshold, or None."""
+    ok = poses_clear(model, sing[:, 0], sing[:, 1])
     return None if ok.all() else int(np.argmin(ok))
 
 
@@ -43,7 +67,9 @@ def check_path(model, path, step=STEP):
     model : Model
     path : TaskPath
     step : float
-        Sample spacing along the path, m (default 0.5 mm); the breakpoints are sampled too.
+        Sample spacing along the path, m (default 0.5 mm), from STEP_MIN = 1e-6 m to
+        STEP_MAX = 0.01 m and at most SAMPLES_MAX = 10^6 samples along the path; the
+        breakpoints are sampled too.
 
     Raises
     ------
@@ -52,20 +78,29 @@ def check_path(model, path, step=STEP):
     SingularityError
         At the first sample closer to a type I or type II singularity than its threshold
         (names the arc length, the point, the kind, the measure and the ``[limits]`` key).
+    PlanError
+        A step outside its bounds.
+    ArgumentTypeError
+        ``model`` not a Model or ``path`` not a TaskPath.
     """
+    require(model, path)
     try:
         h = float(step)
     except (TypeError, ValueError):
         h = float("nan")
-    if not h > 0 or not np.isfinite(h):
-        raise PlanError(f"step must be a finite length > 0 m, got {step!r}")
+    if not STEP_MIN <= h <= STEP_MAX:
+        raise PlanError(f"step must be a length from {STEP_MIN:g} m to {STEP_MAX:g} m, got "
+                        f"{step!r}")
     n = max(2, int(np.ceil(path.length / h)) + 1)
+    if n > SAMPLES_MAX:
+        raise PlanError(f"step {h:g} m gives {n} samples along the {path.length:.6g} m path, "
+                        f"more than {SAMPLES_MAX}: use step >= {path.length / SAMPLES_MAX:.3g} m")
     s = np.union1d(np.linspace(0.0, path.length, n), path.breakpoints)
     p = np.ascontiguousarray(path.evaluate(s)[0])
     K, nq = len(s), 2 * model.n_legs
     q = np.empty((K, nq))
-    model.function("ik").map(K, p, q)
-    sing = np.full((K, 2), np.nan)      # ik's NaN rows: out of reach (or the other mode)
+    model.function("ik").map(K, p, q)   # NaN rows: out of reach, or the other assembly mode
+    sing = np.full((K, 2), np.nan)
     ok = np.isfinite(q).all(axis=1)
     if ok.any():
         sing_ok = np.empty((int(ok.sum()), 2))

@@ -11,6 +11,7 @@ import numpy as np
 
 from ..control.trajectory import SCurve, Trajectory, TrajectoryError, _positive
 from ..core.errors import PlanError
+from .check import require
 from .plan import Plan
 
 __all__ = ["plan_kinematic", "SCurveChain"]
@@ -63,6 +64,13 @@ def plan_kinematic(path, v_max, a_max, j_max, period=0.002):
         model: ``pm2dof.planning.torques.path_torques`` gives its torques),
         ``max_velocity`` v_max; ``s``, ``sdot``, ``sddot``, ``t`` at the trajectory's samples.
 
+    Raises
+    ------
+    PlanError
+        A limit or the period not a finite number > 0.
+    ArgumentTypeError
+        ``path`` not a TaskPath.
+
     Examples
     --------
     >>> import numpy as np, pm2dof
@@ -73,6 +81,7 @@ def plan_kinematic(path, v_max, a_max, j_max, period=0.002):
     (0.2164, True)
     """
     t0 = time.perf_counter()
+    require(path=path)
     try:
         period = _positive("period (s)", period)
         stops = path.stops

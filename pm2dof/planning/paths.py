@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from ..core.errors import PlanError
+from ..core.errors import ArgumentTypeError, PlanError
 from .spline import SplinePiece
 
 __all__ = ["TaskPath"]
@@ -67,6 +67,9 @@ class _Arc:
         return self.c + self.r * e, tangent, -e / self.r
 
 
+_PIECES = (_Line, _Arc, SplinePiece)
+
+
 class TaskPath:
     """A path in the task plane, parameterised by arc length. Immutable; build it with
     :meth:`line`, :meth:`arc`, :meth:`polyline`, :meth:`spline` or :meth:`concat`.
@@ -97,13 +100,34 @@ class TaskPath:
     __slots__ = ("_pieces", "_ends", "_stops")
 
     def __init__(self, pieces, stop_junctions=()):
-        """``pieces``: line/arc/spline pieces in order; ``stop_junctions``: indices j of the
-        junctions (arc length ``breakpoints[j]``) where the robot must rest."""
-        object.__setattr__(self, "_pieces", tuple(pieces))
+        """``pieces``: one or more line/arc/spline pieces in order (as the constructors make
+        them); ``stop_junctions``: indices j of the junctions (arc length ``breakpoints[j]``)
+        where the robot must rest. PlanError for no pieces or a junction index out of range,
+        ArgumentTypeError for anything else than pieces."""
+        try:
+            pieces = tuple(pieces)
+        except TypeError:
+            pieces = (pieces,)
+        if not pieces:
+            raise PlanError("a TaskPath needs one or more pieces, got none: build paths with "
+                            "TaskPath.line, .arc, .polyline, .spline or .concat")
+        bad = [type(pc).__name__ for pc in pieces if not isinstance(pc, _PIECES)]
+        if bad:
+            raise ArgumentTypeError(f"TaskPath pieces must be lines, arcs or splines as "
+                                    f"TaskPath.line, .arc, .polyline, .spline make them, got "
+                                    f"{bad}")
+        try:
+            junctions = np.asarray(stop_junctions, dtype=int).ravel()
+        except (TypeError, ValueError):
+            junctions = np.array([-1])
+        if ((junctions < 0) | (junctions > len(pieces))).any():
+            raise PlanError(f"stop_junctions must be junction indices from 0 to {len(pieces)}, "
+                            f"got {stop_junctions!r}")
+        object.__setattr__(self, "_pieces", pieces)
         ends = np.concatenate([[0.0], np.cumsum([pc.length for pc in pieces])])
         ends.setflags(write=False)
         object.__setattr__(self, "_ends", ends)
-        st = np.unique(np.concatenate([[0, len(pieces)], np.asarray(stop_junctions, dtype=int)]))
+        st = np.unique(np.concatenate([[0, len(pieces)], junctions]))
         object.__setattr__(self, "_stops", st)
 
     def __setattr__(self, key, value):
@@ -137,7 +161,10 @@ class TaskPath:
         p, dp, ddp : ndarray (k, 2)
             Position (m), unit tangent (1) and curvature vector p'' (1/m).
         """
-        s = np.atleast_1d(np.asarray(s, dtype=float))
+        try:
+            s = np.atleast_1d(np.asarray(s, dtype=float))
+        except (TypeError, ValueError):
+            raise PlanError(f"arc lengths s must be finite numbers (m), got {s!r}") from None
         L = self.length
         if s.ndim != 1 or not np.isfinite(s).all():
             raise PlanError(f"arc lengths s must be a finite 1-D array, got shape {s.shape}")

@@ -8,6 +8,7 @@ split's torques as CSV; :func:`format_report` renders all of it.
 """
 import numpy as np
 
+from ..analysis.results import provenance
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from .kinematic import plan_kinematic
@@ -15,7 +16,8 @@ from .stages import limits
 from .topp import plan_time_optimal
 from .torques import path_torques
 
-__all__ = ["plan_paths", "closed_loop", "csv_text", "format_report", "model_moves"]
+__all__ = ["plan_paths", "closed_loop", "csv_text", "format_report", "model_moves",
+           "plan_provenance", "CSV_KEYS"]
 
 
 def model_moves(model):
@@ -45,12 +47,13 @@ def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_n
     Returns
     -------
     (dict, dict)
-        The JSON-able results ``{"tau_max", "margin", "grid", "paths": [...]}`` and the Plan
-        objects ``{(name, method_or_split): Plan}``.
+        The JSON-able results ``{"model", "tau_max", "margin", "grid", "provenance", "paths":
+        [...]}`` (``provenance``: :func:`plan_provenance`) and the Plan objects
+        ``{(name, method_or_split): Plan}``.
     """
     w = limits(model, tau_max, 1.0)
     res = {"model": model.name, "tau_max": w.tolist(), "margin": float(margin), "grid": int(grid),
-           "paths": []}
+           "provenance": plan_provenance(model, w, margin, splits, theta), "paths": []}
     plans = {}
     for item in items:
         path = item["path"]
@@ -64,6 +67,7 @@ def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_n
             row["kinematic"] = {**kin, "duration_s": kp.duration, "tau_peak": peaks,
                                 "within_limits": {sp: bool(np.all(np.array(v) <= w))
                                                   for sp, v in peaks.items()}}
+            kp.info["tau_max_actuators"] = w.tolist()     # the limits its CSV reports
             plans[item["name"], "kinematic"] = kp
         for split in splits:
             p = plan_time_optimal(model, path, tau_max, split, theta, margin, grid)
@@ -115,20 +119,46 @@ def closed_loop(model, path, tau_max=None, split="min_max", margins=(1.0, 0.9), 
     return out
 
 
-def csv_text(model, plan):
-    """``plan``'s trajectory as CSV text: ``# key = value`` lines, then the columns t, s, sdot,
-    sddot, x, y, vx, vy, ax, ay and the actuator torques of its split (inverse dynamics at the
-    samples with the plan's theta), tau1..taun; units s, m, m/s, m/s^2, N m."""
+def plan_provenance(model, tau_max, margin, splits, theta=None, base=None):
+    """Where a plan came from: ``base`` or :func:`pm2dof.analysis.results.provenance` (the
+    pm2dof version, the model file, the generated folder, hashes, git commit, command line)
+    with the planning inputs: ``tau_max`` (n,) N m (the actuators' limits, before the margin),
+    ``margin``, the ``splits`` and ``theta`` ("nominal": the model's Tables 1-2, else the 5n
+    values)."""
+    th = model.theta_nominal if theta is None else np.asarray(theta, dtype=float)
+    nominal = np.array_equal(th, model.theta_nominal)
+    return {**(base or provenance(model)), "tau_max": np.asarray(tau_max, dtype=float).tolist(),
+            "margin": float(margin), "splits": list(splits),
+            "theta": "nominal" if nominal else np.asarray(th, dtype=float).tolist()}
+
+
+#: the provenance keys a CSV's header lines carry, in order
+CSV_KEYS = ("model", "model_file", "model_file_sha256", "generated", "pm2dof", "git_commit",
+            "tau_max", "margin", "split", "theta")
+
+
+def csv_text(model, plan, prov=None):
+    """``plan``'s trajectory as CSV text: ``# key = value`` lines (the provenance: model, model
+    file and its hash, generated folder, pm2dof version, git commit, tau_max (the actuators'
+    limits), margin, split, theta ("nominal" or the values); then method, duration,
+    sample_period, units), the column names, then the columns t, s, sdot, sddot, x, y, vx, vy,
+    ax, ay and the actuator torques of its split (inverse dynamics at the samples with the
+    plan's theta), tau1..taun; units s, m, m/s, m/s^2, N m. ``prov``: :func:`provenance`'s dict
+    if the caller has it (else computed). Read it with ``np.loadtxt(f, delimiter=",",
+    skiprows=1 + the number of ``#`` lines)`` or any CSV reader that skips ``#`` comments."""
     tr = plan.trajectory
     s, sd, sdd = _at_samples(plan)
     split = plan.split or "min_norm"
-    tau = path_torques(model, plan.path, s, sd, sdd, plan.info.get("theta"), plan.tau_max)[split]
+    theta = plan.info.get("theta")
+    tau = path_torques(model, plan.path, s, sd, sdd, theta, plan.tau_max)[split]
     n = model.n_legs
     cols = np.column_stack([tr.t, s, sd, sdd, tr.xd, tr.xd_dot, tr.xd_ddot, tau])
     head = "t,s,sdot,sddot,x,y,vx,vy,ax,ay," + ",".join(f"tau{i + 1}" for i in range(n))
-    meta = (f"# model = {model.name}\n# method = {plan.method}\n# split = {split}\n"
-            f"# duration = {plan.duration!r}\n# sample_period = {tr.period!r}\n"
-            f"# units: s, m, m/s, m/s^2, N m\n")
+    w = plan.info.get("tau_max_actuators", model.spec.limits["tau_max"])
+    info = {**plan_provenance(model, w, plan.margin, [split], theta, prov), "split": split}
+    meta = "".join(f"# {k} = {info[k]}\n" for k in CSV_KEYS)
+    meta += (f"# method = {plan.method}\n# duration = {plan.duration!r}\n"
+             f"# sample_period = {tr.period!r}\n# units: s, m, m/s, m/s^2, N m\n")
     import io
     buf = io.StringIO()
     np.savetxt(buf, cols, delimiter=",", fmt="%.17g")

@@ -18,18 +18,21 @@ g(y) = S^T f_a(S p' y) the friction force. For a friction law affine in the spee
 g_k is evaluated exactly from the generated ``path_torques``; otherwise the same C function
 enters through ``casadi.external`` with finite-difference derivatives.
 """
+import numbers
 import time
 
 import numpy as np
 
 from ..core.errors import PlanError
+from .check import require
 from .plan import Plan, PathProfile, grid_times, sample
-from .stages import grid_points, limits, params, stages
+from .stages import limits, params, stages
 from .topp import plan_time_optimal
 
-__all__ = ["plan_smooth", "RISE_TIME"]
+__all__ = ["plan_smooth", "RISE_TIME", "MAX_ITER"]
 
 RISE_TIME = 0.02   # s: the default tau_rate lets each torque swing 0 -> tau_max in 20 ms
+MAX_ITER = 100_000  # the most IPOPT iterations max_iter may ask for
 
 
 def _friction(model, stage, prm, w, speeds):
@@ -53,10 +56,10 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     model, path, tau_max, split, theta, margin, grid
         As :func:`plan_time_optimal` (grid: fewer points, IPOPT's cost grows with it).
     tau_rate : float or array_like (n,), optional
-        Largest |d tau_i / dt|, N m/s (default tau_max * margin / RISE_TIME: a full swing in
-        20 ms).
+        Largest |d tau_i / dt|, N m/s, > 0 (default tau_max * margin / RISE_TIME: a full swing
+        in 20 ms).
     max_iter : int
-        IPOPT's iteration limit.
+        IPOPT's iteration limit, 1 to MAX_ITER = 100000.
 
     Returns
     -------
@@ -67,18 +70,27 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     Raises
     ------
     PlanError
-        Bad arguments (as :func:`plan_time_optimal`), or IPOPT finds no solution.
+        Bad arguments (as :func:`plan_time_optimal`; a max_iter or tau_rate out of range,
+        checked before IPOPT runs), or IPOPT finds no solution.
     """
     t0 = time.perf_counter()
-    import casadi as ca
-    strict = plan_time_optimal(model, path, tau_max, split, theta, margin, grid)
-    w = strict.tau_max
+    require(model, path)
+    if isinstance(max_iter, bool) or not isinstance(max_iter, numbers.Integral) or \
+            not 1 <= max_iter <= MAX_ITER:
+        raise PlanError(f"max_iter must be a whole number of IPOPT iterations from 1 to "
+                        f"{MAX_ITER}, got {max_iter!r}")
+    w = limits(model, tau_max, margin)
     n = model.n_legs
-    rate = w / RISE_TIME if tau_rate is None else np.broadcast_to(
-        np.asarray(tau_rate, dtype=float), (n,)).copy()
-    if not (np.isfinite(rate).all() and (rate > 0).all()):
+    try:
+        rate = (w / RISE_TIME if tau_rate is None
+                else np.array(tau_rate, dtype=float).ravel() * np.ones(n))
+    except (TypeError, ValueError):
+        rate = np.full(n, np.nan)
+    if rate.shape != (n,) or not (np.isfinite(rate).all() and (rate > 0).all()):
         raise PlanError(f"tau_rate must be one value or {n} finite rates > 0 N m/s, got "
                         f"{tau_rate!r}")
+    import casadi as ca
+    strict = plan_time_optimal(model, path, tau_max, split, theta, margin, grid)
     s = strict.s
     prm, th = params(model, strict.info["theta"])
     stops = np.searchsorted(s, path.stops)
@@ -163,6 +175,7 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
                 tau_peak=np.abs(tau_v).max(axis=0), tau_max=w, margin=float(margin),
                 trajectory=traj, compute_time_s=time.perf_counter() - t0,
                 info={"grid": K, "theta": th.tolist(), "strict_duration": strict.duration,
+                      "tau_max_actuators": strict.info["tau_max_actuators"],
                       "ipopt_status": str(status), "iterations": int(stats.get("iter_count", -1)),
                       "solve_time_s": solve_s, "tau_rate": rate.tolist(),
                       "friction": "affine, exact" if affine else "casadi.external, FD"})

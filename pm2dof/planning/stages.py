@@ -11,13 +11,16 @@ import numbers
 
 import numpy as np
 
+from ..control.simulate import theta_vector
 from ..core.errors import PlanError
 from .check import first_bad, raise_at
 
-__all__ = ["SPLITS", "grid_points", "limits", "stages", "params"]
+__all__ = ["SPLITS", "GRID_MAX", "grid_points", "limits", "stages", "point_stages", "params"]
 
 SPLITS = ("min_norm", "min_max")
 V_TOP = 100.0   # m/s: the bisection's upper bracket; a maximum-velocity curve above it reads V_TOP
+#: the most grid points a plan may ask for (about 40 MB of stage vectors; a plan takes ~0.3 s)
+GRID_MAX = 100_000
 
 
 RAMP = 0.15    # fraction of each rest-to-rest segment, at either end, graded quadratically
@@ -40,8 +43,10 @@ def grid_points(path, grid):
     """About ``grid`` arc lengths (m): each rest-to-rest segment graded by :func:`_graded`
     (fine near the stops, where the speed changes fastest), every breakpoint a grid point (no
     interval straddles a jump of curvature)."""
-    if isinstance(grid, bool) or not isinstance(grid, numbers.Integral) or grid < 2:
-        raise PlanError(f"grid must be a whole number of grid points >= 2, got {grid!r}")
+    if isinstance(grid, bool) or not isinstance(grid, numbers.Integral) or \
+            not 2 <= grid <= GRID_MAX:
+        raise PlanError(f"grid must be a whole number of grid points from 2 to {GRID_MAX}, got "
+                        f"{grid!r}")
     stops, L = path.stops, path.length
     pts = []
     for a, b in zip(stops[:-1], stops[1:]):
@@ -62,15 +67,17 @@ def grid_points(path, grid):
 
 
 def limits(model, tau_max, margin):
-    """The torque limits the plan may use, tau_max * margin (n,), N m, checked."""
+    """The torque limits the plan may use, tau_max * margin (n,), N m, checked: tau_max
+    positive and finite, 0 < margin <= 1 (a margin above 1 would plan beyond the motors'
+    limits: pass a larger tau_max instead)."""
     n = model.n_legs
     try:
         m = float(margin)
     except (TypeError, ValueError):
         m = math.nan
-    if not (math.isfinite(m) and m > 0):
-        raise PlanError(f"margin must be a finite number > 0 (a fraction of tau_max), got "
-                        f"{margin!r}")
+    if not (math.isfinite(m) and 0 < m <= 1):
+        raise PlanError(f"margin must be a number in (0, 1], the fraction of tau_max the plan "
+                        f"may use (< 1 leaves headroom for feedback), got {margin!r}")
     w = model.spec.limits["tau_max"] if tau_max is None else tau_max
     try:
         w = np.array(w, dtype=float).ravel()
@@ -85,13 +92,9 @@ def limits(model, tau_max, margin):
 
 
 def params(model, theta):
-    """The ``path_params`` vector: v_top and theta (default the model's nominal, Tables 1-2)."""
-    th = model.theta_nominal if theta is None else theta
-    th = np.asarray(th, dtype=float).ravel()
-    p = len(model.param_names)
-    if th.shape != (p,) or not np.isfinite(th).all():
-        raise PlanError(f"theta must be {p} finite numbers ({', '.join(model.param_names)}), "
-                        f"got {np.asarray(theta).tolist()}")
+    """The ``path_params`` vector and theta (5n,), default the model's nominal (Tables 1-2);
+    ArgumentError unless 5n finite numbers (the controllers' check)."""
+    th = theta_vector(model, theta)
     return model.layout("path_params").pack(v_top=V_TOP, theta=th), th
 
 
@@ -112,6 +115,29 @@ def _fill(model, stage, outs, split):
     st["N"][:], st["h"][:] = outs[f"N_{split}"], outs[f"h_{split}"]
     for key in ("a", "b", "S", "v1"):
         st[key][:] = outs[key]
+
+
+def point_stages(model, s, evaluated, theta, w, split, check=True):
+    """The ``path_stage`` vectors (K, size) at the arc lengths ``s`` (K,) with their
+    ``path.evaluate(s)`` (p, dp, ddp): the facets and coefficients of each point alone (rho,
+    delta and x_cap unset: zero), with the outputs of ``path_coefficients`` (dict). With
+    ``check``, raises WorkspaceError or SingularityError at the first point out of reach or too
+    close to a singularity (the thresholds of :func:`pm2dof.control.simulate.poses_clear`);
+    without, such rows are NaN."""
+    if split not in SPLITS:
+        raise PlanError(f"split must be one of {list(SPLITS)}, got {split!r}")
+    p, dp, ddp = (np.ascontiguousarray(x) for x in evaluated)
+    outs = _coefficients(model, p, dp, ddp, theta, w, split)
+    if check:
+        sing = outs["sing"]
+        k = first_bad(model, sing)
+        bad = ~np.isfinite(outs["a"]).all(axis=1) | ~np.isfinite(outs["b"]).all(axis=1)
+        if k is not None or bad.any():
+            k = k if k is not None else int(np.argmax(bad))
+            raise_at(model, s[k], p[k], sing[k])
+    stage = np.zeros((len(s), model.layout("path_stage").size))
+    _fill(model, stage, outs, split)
+    return stage, outs
 
 
 def stages(model, path, s, w, theta, split, stops=(), evaluated=None):
@@ -145,20 +171,11 @@ def stages(model, path, s, w, theta, split, stops=(), evaluated=None):
     WorkspaceError, SingularityError
         At the first grid point out of reach or too close to a singularity.
     """
-    if split not in SPLITS:
-        raise PlanError(f"split must be one of {list(SPLITS)}, got {split!r}")
     p, dp, ddp = (np.ascontiguousarray(x) for x in (evaluated or path.evaluate(s)))
     K, n = len(s), model.n_legs
-    outs = _coefficients(model, p, dp, ddp, theta, w, split)
+    stage, outs = point_stages(model, s, (p, dp, ddp), theta, w, split)
     sing = outs["sing"]
-    k = first_bad(model, sing)
-    bad = ~np.isfinite(outs["a"]).all(axis=1) | ~np.isfinite(outs["b"]).all(axis=1)
-    if k is not None or bad.any():
-        k = k if k is not None else int(np.argmax(bad))
-        raise_at(model, s[k], p[k], sing[k])
     lay = model.layout("path_stage")
-    stage = np.empty((K, lay.size))
-    _fill(model, stage, outs, split)
     st = lay.unpack(stage)
     sign = np.where(outs["v1"] >= 0, 1.0, -1.0)       # sgn(0) = +1, the model's convention
     st["rho"][:-1] = sign[:-1] != sign[1:]             # a joint reverses on [s_k, s_k+1]

@@ -16,7 +16,8 @@ from pm2dof.analysis.experiment import repeated_runs, table3
 from pm2dof.control.trajectory import model_move
 from pm2dof.analysis.maps import workspace_maps
 from pm2dof.analysis.splits import tau_max_sweep
-from pm2dof.figures import animate, experiment, maps, splits, studies
+from pm2dof.figures import animate, experiment, maps, planning, splits, studies
+from pm2dof.planning.pathfile import read_path_file
 from pm2dof.studies import SHIPPED_STUDIES, read_study, run_chunk
 from pm2dof.studies.report import summarise
 from pm2dof.studies.spec import GRID_KEYS
@@ -321,3 +322,20 @@ def test_animation_frames(coulomb_viscous_model, plt):
         problems = layout_problems(fig)
         assert not problems, f"{model.name}, frame {j}:\n  " + "\n  ".join(problems)
     plt.close(fig)
+
+
+@pytest.mark.parametrize("name", ["pick_and_place", "curve"])
+def test_planning_figures(paper, plt, name):
+    """The three figures of `pm2dof plan --out` for each shipped path at 6 N m (both splits and
+    the kinematic S-curve): the legends once covered base A3, the map and hundreds of pixels
+    of the torque curves."""
+    m = paper[0]
+    path = read_path_file(name)["path"]
+    w = np.full(m.n_legs, 6.0)
+    plans = {sp: pm2dof.plan_time_optimal(m, path, tau_max=w, split=sp, grid=300)
+             for sp in ("min_norm", "min_max")}
+    plans["kinematic"] = pm2dof.plan_kinematic(path, 0.5, 10.0, 400.0)
+    _check(planning._phase(plt, name, plans), f"plan_{name}_phase.png")
+    _check(planning._torques(plt, m, name, plans, w), f"plan_{name}_torques.png")
+    _check(planning._map(plt, m, name, path, workspace_maps(m, 41, tau_max=w)),
+           f"plan_{name}_map.png")

@@ -4,8 +4,11 @@ import json
 import numpy as np
 import pytest
 
+import pm2dof
 from pm2dof.cli import main
 from pm2dof.planning.pathfile import read_path_file, shipped_paths
+from pm2dof.planning.report import CSV_KEYS, csv_text
+from pm2dof.planning.topp import BETWEEN_TOL
 
 
 def test_plan_the_model_moves_as_json(capsys):
@@ -16,6 +19,21 @@ def test_plan_the_model_moves_as_json(capsys):
     assert row["kinematic"]["duration_s"] == pytest.approx(0.2164, abs=1e-4)
     assert row["min_max"]["duration_s"] <= row["min_norm"]["duration_s"]
     assert row["saving_min_max_percent"] > 0
+    prov = res["provenance"]                    # issue 18: every results file says its source
+    assert prov["pm2dof"] == pm2dof.__version__ and prov["model"] == "shang2010"
+    assert prov["model_file"].endswith("shang2010.toml") and prov["generated"]
+    assert prov["tau_max"] == [6.0, 6.0, 6.0] and prov["margin"] == 1.0
+    assert prov["splits"] == ["min_norm", "min_max"] and prov["theta"] == "nominal"
+    assert prov["command_line"][:2] == ["pm2dof", "plan"]
+
+
+def _csv(path):
+    """({key: value} of the '# key = value' lines, column names, data) of a plan CSV."""
+    lines = path.read_text().splitlines()
+    meta = dict(ln[2:].split(" = ", 1) for ln in lines if ln.startswith("# ") and " = " in ln)
+    n_comments = sum(ln.startswith("#") for ln in lines)
+    head = lines[n_comments].split(",")
+    return meta, head, np.loadtxt(path, delimiter=",", skiprows=n_comments + 1)
 
 
 def test_plan_a_path_file_writes_csv_and_figures(tmp_path, capsys):
@@ -24,13 +42,41 @@ def test_plan_a_path_file_writes_csv_and_figures(tmp_path, capsys):
                  "--out", str(out)]) == 0
     text = capsys.readouterr().out
     assert "pick_and_place" in text and "time-optimal, min_max" in text
-    csv = out / "plan_pick_and_place_min_max.csv"
-    head = [ln for ln in csv.read_text().splitlines() if ln.startswith("t,")][0]
-    data = np.loadtxt(csv, delimiter=",", comments="#", skiprows=7)
-    assert head.split(",")[-3:] == ["tau1", "tau2", "tau3"] and np.isfinite(data).all()
-    assert np.abs(data[:, -3:]).max() <= 30.0 * 1.04      # the discretisation error (README)
+    meta, head, data = _csv(out / "plan_pick_and_place_min_max.csv")
+    assert head[-3:] == ["tau1", "tau2", "tau3"] and np.isfinite(data).all()
+    # the CSV's torques are the inverse dynamics at the 2 ms samples, between the grid points:
+    # the planner holds every interval's midpoint to tau_max (1 + BETWEEN_TOL), and the
+    # feasibility check measures at most 0.08 % at 10 points per interval on this path at 1000
+    # points; measured here 29.9997 N m
+    assert np.abs(data[:, -3:]).max() <= 30.0 * (1 + BETWEEN_TOL)
     for kind in ("phase", "torques", "map"):
         assert (out / f"plan_pick_and_place_{kind}.png").stat().st_size > 10_000
+
+
+def test_plan_csv_says_where_it_came_from(tmp_path, capsys):
+    """Provenance in every CSV (issue 18): pm2dof version, model file and its hash, generated
+    folder, git commit, tau_max (the actuators' limits), margin, split, theta."""
+    from pm2dof.analysis.results import provenance
+    out = tmp_path / "out"
+    assert main(["plan", "--move", "high", "--tau-max", "6", "--margin", "0.9", "--grid", "200",
+                 "--split", "min_norm", "--out", str(out)]) == 0
+    capsys.readouterr()
+    m = pm2dof.load_model()
+    prov = provenance(m)
+    meta, _, _ = _csv(out / "plan_high_min_norm.csv")
+    assert list(meta)[:len(CSV_KEYS)] == list(CSV_KEYS)
+    assert meta["pm2dof"] == pm2dof.__version__ and meta["model"] == "shang2010"
+    assert meta["model_file"] == str(prov["model_file"]) and meta["generated"] == prov["generated"]
+    assert meta["model_file_sha256"] == prov["model_file_sha256"]
+    assert meta["tau_max"] == "[6.0, 6.0, 6.0]" and meta["margin"] == "0.9"
+    assert meta["split"] == "min_norm" and meta["theta"] == "nominal"
+    kin, _, _ = _csv(out / "plan_high_kinematic.csv")
+    assert kin["method"] == "kinematic" and kin["tau_max"] == "[6.0, 6.0, 6.0]"
+    th = m.theta_nominal * 1.1                            # an identified theta is written out
+    plan = pm2dof.plan_time_optimal(m, pm2dof.TaskPath.line([0.22, 0.29], [0.27, 0.24]),
+                                    grid=100, theta=th)
+    text = csv_text(m, plan, prov)
+    assert f"# theta = {th.tolist()}" in text and "# tau_max = [30.0, 30.0, 30.0]" in text
 
 
 def test_path_file_errors(tmp_path, capsys):

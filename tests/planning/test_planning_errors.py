@@ -5,9 +5,10 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof import PlanError, SingularityError, TaskPath, WorkspaceError
-from pm2dof.planning import check_path, plan_kinematic, plan_time_optimal
-from pm2dof.planning.stages import grid_points, params, stages
+from pm2dof import (ArgumentError, ArgumentTypeError, PlanError, SingularityError, TaskPath,
+                    WorkspaceError)
+from pm2dof.planning import check_path, plan_kinematic, plan_smooth, plan_time_optimal
+from pm2dof.planning.stages import GRID_MAX, grid_points, params, stages
 
 LINE = TaskPath.line([0.22, 0.29], [0.27, 0.24])
 
@@ -94,16 +95,28 @@ def test_limits_too_low_somewhere_in_the_middle(m):
 @pytest.mark.parametrize("kw, match", [
     ({"grid": 0}, "grid"), ({"grid": 1}, "grid"), ({"grid": -5}, "grid"),
     ({"grid": 2.5}, "grid"), ({"grid": True}, "grid"), ({"grid": "1000"}, "grid"),
+    ({"grid": GRID_MAX + 1}, f"from 2 to {GRID_MAX}"), ({"grid": 10 ** 9}, "grid"),
     ({"margin": 0.0}, "margin"), ({"margin": -0.5}, "margin"),
     ({"margin": float("nan")}, "margin"), ({"margin": "x"}, "margin"),
+    ({"margin": 2.0}, r"margin must be a number in \(0, 1\]"),
+    ({"margin": 1.0000001}, "margin"),
     ({"tau_max": [1.0, 2.0]}, "tau_max"), ({"tau_max": -1.0}, "tau_max"),
     ({"tau_max": [6.0, float("inf"), 6.0]}, "tau_max"), ({"tau_max": "six"}, "tau_max"),
-    ({"theta": np.zeros(3)}, "theta"), ({"theta": np.full(15, np.nan)}, "theta"),
     ({"split": "preload"}, "split"),
 ])
 def test_bad_arguments(m, kw, match):
+    """Refused before any work (grid 10^9 was killed for its memory; margin 2 planned at twice
+    the motors' limits)."""
     with pytest.raises(PlanError, match=match):
         plan_time_optimal(m, LINE, **kw)
+
+
+@pytest.mark.parametrize("theta", [np.zeros(3), np.full(15, np.nan), "x", np.ones((3, 5))])
+def test_bad_theta_is_the_controllers_error(m, theta):
+    """theta is checked by the control layer's validator (one implementation): ArgumentError
+    naming theta and the parameters."""
+    with pytest.raises(ArgumentError, match=r"theta must be 15 finite numbers \(alpha1"):
+        plan_time_optimal(m, LINE, theta=theta)
 
 
 def test_bad_kinematic_limits_and_step():
@@ -126,3 +139,104 @@ def test_nothing_comes_back_nan(m):
         tr = plan.trajectory
         assert all(np.isfinite(getattr(tr, k)).all() for k in ("t", "xd", "xd_dot", "xd_ddot"))
         assert np.isfinite(plan.duration) and plan.duration > 0
+
+
+# --------------------------------------------------------------------------------------
+# Arguments that crashed with a plain Python error (issue 20 review, item 4)
+# --------------------------------------------------------------------------------------
+
+def test_an_empty_or_foreign_task_path_is_refused():
+    with pytest.raises(PlanError, match="one or more pieces, got none"):
+        TaskPath([])                                        # planned as IndexError before
+    with pytest.raises(ArgumentTypeError, match=r"got \['int'\]"):
+        TaskPath([1])
+    with pytest.raises(PlanError, match="stop_junctions must be junction indices from 0 to 1"):
+        TaskPath(LINE._pieces, [5])
+    with pytest.raises(PlanError, match="arc lengths s must be finite numbers"):
+        LINE.evaluate("a")                                  # ValueError before
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda m: check_path(m, [0, 1]), "path must be a pm2dof.TaskPath"),
+    (lambda m: check_path("shang2010", LINE), "model must be a pm2dof.Model"),
+    (lambda m: plan_time_optimal(m, [0, 1]), "path must be a pm2dof.TaskPath"),
+    (lambda m: plan_time_optimal(None, LINE), "model must be a pm2dof.Model"),
+    (lambda m: plan_kinematic([1], 0.5, 10.0, 400.0), r"path must be a pm2dof.TaskPath .*list"),
+    (lambda m: plan_smooth(m, "line"), "path must be a pm2dof.TaskPath"),
+])
+def test_a_wrong_argument_type_is_named(m, call, match):
+    """AttributeError before; now ArgumentTypeError naming the argument and the type."""
+    with pytest.raises(ArgumentTypeError, match=match):
+        call(m)
+
+
+def test_check_path_step_bounds(m):
+    """The step has documented bounds: STEP_MIN 1e-6 m, STEP_MAX 0.01 m, and at most
+    SAMPLES_MAX samples (a tiny step once ran out of memory)."""
+    from pm2dof.planning.check import SAMPLES_MAX, STEP_MAX, STEP_MIN
+    for step in (0.0, -1.0, float("nan"), STEP_MIN / 2, STEP_MAX * 1.5, "x", None):
+        with pytest.raises(PlanError, match="step must be a length from 1e-06 m to 0.01 m"):
+            check_path(m, LINE, step=step)
+    check_path(m, LINE, step=STEP_MIN)                 # 7e4 samples: accepted
+    check_path(m, LINE, step=STEP_MAX)
+    square = [[0.2, 0.22], [0.3, 0.22], [0.3, 0.3], [0.2, 0.3]]
+    cycle = TaskPath.polyline(square * 3 + [[0.2, 0.23]], 0.01)          # three laps, 1.03 m
+    assert cycle.length / STEP_MIN > SAMPLES_MAX
+    with pytest.raises(PlanError, match=r"more than 1000000: use step >= 1\.\d+e-06 m"):
+        check_path(m, cycle, step=STEP_MIN)
+
+
+@pytest.mark.parametrize("kw, match", [
+    ({"max_iter": -1}, "max_iter must be a whole number of IPOPT iterations from 1 to 100000"),
+    ({"max_iter": 0}, "max_iter"), ({"max_iter": 2.5}, "max_iter"), ({"max_iter": True},
+                                                                      "max_iter"),
+    ({"max_iter": 10 ** 6}, "max_iter"),
+    ({"tau_rate": [1.0, 2.0]}, "tau_rate must be one value or 3"), ({"tau_rate": -1.0},
+                                                                     "tau_rate"),
+    ({"tau_rate": "x"}, "tau_rate"), ({"tau_rate": float("inf")}, "tau_rate"),
+    ({"margin": 1.5}, "margin"), ({"grid": 1}, "grid"),
+])
+def test_plan_smooth_checks_its_options_before_ipopt(m, kw, match, capfd):
+    """A negative max_iter reached IPOPT, which printed its own text on stdout and raised a
+    CasADi RuntimeError; now PlanError before any solver runs, and nothing is printed."""
+    with pytest.raises(PlanError, match=match):
+        plan_smooth(m, LINE, **kw)
+    out = capfd.readouterr()
+    assert out.out == "" and out.err == ""
+
+
+def test_check_path_and_check_trajectory_are_one_check(m):
+    """check_path uses the control layer's test (pm2dof.control.simulate.poses_clear, with its
+    1e-12 relative slack for rounding), so a path ends where simulate's check_trajectory would
+    end it: a line ending where the type I measure is 5e-13 below its threshold (within the
+    slack) is accepted by both, one ending 1e-9 below by both refused."""
+    from pm2dof.control.simulate import check_trajectory, pose_measures
+    thr = m.singularity_threshold
+    a, b = np.array([0.25, 0.25]), np.array([0.02, 0.25])     # towards base A1: leg 1 folds
+
+    def measure(lam):
+        return float(pose_measures(m, [a + lam * (b - a)])[0][0])
+    lo, hi = 0.0, 1.0
+    for _ in range(200):                                      # the crossing of the threshold
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if measure(mid) >= thr else (lo, mid)
+
+    def end_at(rel):                    # the point on the line where measure = thr (1 - rel)
+        l0, l1 = lo, 1.0
+        for _ in range(200):
+            mid = 0.5 * (l0 + l1)
+            l0, l1 = (mid, l1) if measure(mid) >= thr * (1 - rel) else (l0, mid)
+        return a + l0 * (b - a)
+    near, beyond = end_at(5e-13), end_at(1e-9)
+    assert thr * (1 - 1e-12) <= measure(np.hypot(*(near - a)) / np.hypot(*(b - a))) < thr
+    for end, ok in ((near, True), (beyond, False)):
+        path = TaskPath.line(a, end)
+        traj = pm2dof.plan_kinematic(path, 0.5, 10.0, 400.0).trajectory
+        if ok:
+            check_path(m, path)
+            check_trajectory(m, traj)
+        else:
+            with pytest.raises(SingularityError):
+                check_path(m, path)
+            with pytest.raises(SingularityError):
+                check_trajectory(m, traj)
