@@ -15,6 +15,7 @@ The package is layered; imports only point down (tests/test_layers.py checks it)
 =================  ==========================================================================
 ``core/``          1. the thin runtime: model file, ``Model``, the C binding. NumPy only.
 ``control/``       2. controllers, trajectories, closed-loop rollouts (one call into C each).
+``linear/``        3. linearisation along a trajectory, python-control state spaces, LQR.
 ``analysis/``      3. the paper's experiment, reports, result files.
 ``identification/`` 3. logs, excitations, the least-squares fit of theta (``pm2dof identify``).
 ``bench/``         3. the step-time benchmark.

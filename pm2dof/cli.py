@@ -36,6 +36,44 @@ from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
 __all__ = ["main", "build_parser"]
 
 
+def _number(low=None, high=None, *, low_inclusive=False, high_inclusive=True):
+    """An argparse type: a finite float within (low, high] (bounds as given), else a usage
+    error naming the range (argparse prints it with the option's name, exit 2)."""
+    import math
+
+    def convert(text):
+        try:
+            x = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+        below = low is not None and (x < low if low_inclusive else x <= low)
+        above = high is not None and (x > high if high_inclusive else x >= high)
+        if not math.isfinite(x) or below or above:
+            lo = "" if low is None else f"{'>=' if low_inclusive else '>'} {low:g}"
+            hi = "" if high is None else f"{'<=' if high_inclusive else '<'} {high:g}"
+            raise argparse.ArgumentTypeError(
+                f"must be a finite number {' and '.join(b for b in (lo, hi) if b)}, got {text}")
+        return x
+    return convert
+
+
+def _count(low, high):
+    """An argparse type: a whole number in [low, high]."""
+    def convert(text):
+        try:
+            k = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+        if not low <= k <= high:
+            raise argparse.ArgumentTypeError(f"must be in [{low}, {high}], got {k}")
+        return k
+    return convert
+
+
+_POSITIVE = _number(0.0)
+_NONNEGATIVE = _number(0.0, low_inclusive=True)
+
+
 #: where long jobs report (stage lines; bars on a terminal); main() makes it quiet on --quiet
 _progress = Progress()
 
@@ -63,14 +101,18 @@ def cmd_models(args):
 def cmd_models_copy(args):
     import shutil
     from .core.paths import resolve_model
+    from .core.errors import OutputError
     src = resolve_model(args.copy[0])
     dest = Path(args.copy[1]).expanduser()
-    if dest.is_dir():
+    if dest.suffix != ".toml":      # a folder (created if need be), as in `--copy NAME ~/robots`
         dest = dest / src.name
     if dest.exists():
         raise ArgumentError(f"{dest} exists; not overwritten (choose another folder or remove it)")
-    dest.parent.mkdir(parents=True, exist_ok=True)
-    shutil.copyfile(src, dest)
+    try:
+        dest.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(src, dest)
+    except OSError as exc:
+        raise OutputError(f"cannot write {dest}: {exc.strerror or exc}") from None
     print(f"wrote {dest}. Edit it (keep or change [model].name), then: pm2dof derive {dest}")
     return 0
 
@@ -231,7 +273,7 @@ def _identify_parser(sub, common):
     def excitation_options(r, what):
         r.add_argument("--excitation", metavar="FILE", help=f"excitation file to {what} "
                        "(written by `pm2dof identify design`); its model is the default")
-        r.add_argument("--duration", type=float, metavar="S", help="without --excitation: "
+        r.add_argument("--duration", type=_number(0.0, 3600.0), metavar="S", help="without --excitation: "
                        "length of the default multi-sine, s (default 4)")
 
     def simulated_options(r, when=""):
@@ -288,11 +330,12 @@ def _identify_parser(sub, common):
     r.add_argument("--json", action="store_true", help="print the results as JSON")
     r.add_argument("--seed-na", action="store_true",
                    help="also Table 3 with APD and NA using the identified theta")
-    r.add_argument("--cutoff", type=float, metavar="HZ",
+    r.add_argument("--cutoff", type=_POSITIVE, metavar="HZ",
                    help="low-pass cutoff (default 10 x the excitation band)")
-    r.add_argument("--time-tolerance", type=float, default=1e-3, metavar="FRACTION",
+    r.add_argument("--time-tolerance", type=_number(0.0, 1.0, low_inclusive=True,
+                   high_inclusive=False), default=1e-3, metavar="FRACTION",
                    help="largest allowed |t_k+1 - t_k - T| / T of LOG (default 1e-3)")
-    r.add_argument("--min-joint-speed", type=float, metavar="RAD_S",
+    r.add_argument("--min-joint-speed", type=_NONNEGATIVE, metavar="RAD_S",
                    help="leave out samples with a slower active joint (default 0.1; 0 keeps all)")
     excitation_options(r, "simulate without LOG")
     simulated_options(r, "without LOG: ")
@@ -322,7 +365,7 @@ def _identify_parser(sub, common):
                     "and compares with the truth.",
                     ["pm2dof identify monte-carlo 50 --excitation exc.toml"],
                     cmd_identify_monte_carlo)
-    r.add_argument("seeds", type=int, metavar="N", help="number of seeds")
+    r.add_argument("seeds", type=_count(1, 100000), metavar="N", help="number of seeds")
     r.add_argument("--json", action="store_true", help="print the results as JSON")
     excitation_options(r, "run")
 
@@ -473,7 +516,7 @@ def _study_parser(sub):
                    "pm2dof installed, with the model file at the same path)")
     r.add_argument("--quick", action="store_true",
                    help="the study file's [quick] size: seconds, for a first look and the tests")
-    r.add_argument("--timeout", type=float, default=10.0, metavar="S",
+    r.add_argument("--timeout", type=_POSITIVE, default=10.0, metavar="S",
                    help="seconds to wait for the scheduler and its workers (default 10)")
     r.add_argument("--quiet", "--no-progress", action="store_true", dest="quiet",
                    help="no progress output (bars are drawn only on a terminal anyway)")
@@ -578,7 +621,8 @@ def build_parser():
                        "--copy NAME DIR, copy one into a folder of yours as a starting point "
                        "for your own robot.")
     p.add_argument("--copy", nargs=2, metavar=("NAME", "DIR"),
-                   help="copy shipped model NAME's file into DIR (then edit and pm2dof derive it)")
+                   help="copy shipped model NAME's file into the folder DIR (created if need be; "
+                   "or to DIR if it ends in .toml), then edit and `pm2dof derive` it")
     p.set_defaults(func=lambda a: cmd_models_copy(a) if a.copy else cmd_models(a))
 
     p = sub.add_parser("report", parents=[common], help="model report over the workspace",
@@ -592,7 +636,8 @@ def build_parser():
                        "paper's measured numbers, repeat the high-speed move carrying theta_hat "
                        "over, and write figures and results.json into --out.")
     p.add_argument("--out", default="out", help="folder for figures and results (default out/)")
-    p.add_argument("--runs", type=int, default=40, help="repeated runs (default 40; 0: none)")
+    p.add_argument("--runs", type=_count(0, 100000), default=40,
+                   help="repeated runs (default 40; 0: none)")
     p.set_defaults(func=cmd_demo)
     p = sub.add_parser("table3", parents=[common], help="Table 3: RMSE of APD and NA, simulated",
                        description="Simulate APD, NA and NA with Gamma = 0 (same gains, no "
@@ -615,7 +660,8 @@ def build_parser():
                        "repeated_runs.png into --out. Each PNG carries its provenance in its "
                        "text chunks.")
     p.add_argument("--out", required=True, help="output folder")
-    p.add_argument("--runs", type=int, default=40, help="repeated runs for repeated_runs.png")
+    p.add_argument("--runs", type=_count(0, 100000), default=40,
+                   help="repeated runs for repeated_runs.png")
     p.set_defaults(func=cmd_figures)
     _identify_parser(sub, common)
     p = sub.add_parser("splits", parents=[common], help="torque splits compared in closed loop",
@@ -629,9 +675,9 @@ def build_parser():
                        "high-speed move, min-max near 7.1 N m). With --out, also sweep the limit "
                        "and plot RMSE and clipped samples against it (splits_high.png).",
                        epilog="example: pm2dof splits --tau-max 6.0 --preload 1.0 --out out")
-    p.add_argument("--tau-max", type=float, metavar="NM",
+    p.add_argument("--tau-max", type=_POSITIVE, metavar="NM",
                    help="torque limit of every actuator, N m (default: [limits].tau_max)")
-    p.add_argument("--preload", type=float, metavar="NM",
+    p.add_argument("--preload", type=_NONNEGATIVE, metavar="NM",
                    help="least |tau_i| of the preload split, N m (default: [control].preload)")
     p.add_argument("--preload-sign", type=float, nargs="+", metavar="S",
                    help="sign (+1/-1) each actuator keeps under the preload split "
@@ -648,11 +694,11 @@ def build_parser():
                        "{S^T tau : |tau_i| <= tau_max_i}) and their ratio, and the same for "
                        "acceleration at rest through Me (Tables 1-2). The model's moves are "
                        "drawn on every map. Writes maps_*.png and maps.json into --out.",
-                       epilog="example: pm2dof maps --model models/fivebar.toml --out out/maps")
+                       epilog="example: pm2dof maps --model fivebar --out out/maps")
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the PNGs and maps.json")
     p.add_argument("--resolution", type=int, default=121, metavar="N",
                    help="grid points per axis (default 121; about 1 s per 10^4 points)")
-    p.add_argument("--tau-max", type=float, nargs="+", metavar="NM",
+    p.add_argument("--tau-max", type=_POSITIVE, nargs="+", metavar="NM",
                    help="actuator limits, N m: one value for all or one per actuator "
                    "(default: [limits].tau_max)")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
@@ -670,7 +716,7 @@ def build_parser():
     p.add_argument("--split", choices=["min_norm", "min_max", "preload"],
                    help="torque split (default: [control].split)")
     p.add_argument("--out", default="move.gif", help="GIF to write (default move.gif)")
-    p.add_argument("--magnify", type=float, help="error magnification (default: a power of ten "
+    p.add_argument("--magnify", type=_POSITIVE, help="error magnification (default: a power of ten "
                    "that keeps the error below 0.3 of the move's length)")
     p.add_argument("--fps", type=int, default=20, help="GIF frames per second (default 20)")
     p.add_argument("--every", type=int, default=2,
@@ -687,24 +733,24 @@ def build_parser():
                        "--path pick_and_place --out out/plan")
     p.add_argument("--path", metavar="NAME|FILE", help="a path file (default: the moves)")
     p.add_argument("--move", help="only this move of the model file (default: every move)")
-    p.add_argument("--tau-max", type=float, nargs="+", metavar="NM",
+    p.add_argument("--tau-max", type=_POSITIVE, nargs="+", metavar="NM",
                    help="actuator limits, N m: one value for all or one per actuator "
                    "(default: [limits].tau_max)")
-    p.add_argument("--margin", type=float, default=1.0,
+    p.add_argument("--margin", type=_number(0.0, 1.0), default=1.0,
                    help="plan with tau_max * margin (default 1.0)")
-    p.add_argument("--grid", type=int, default=1000, help="grid points (default 1000)")
+    p.add_argument("--grid", type=_count(2, 100000), default=1000, help="grid points (default 1000)")
     p.add_argument("--split", choices=["both", "min_norm", "min_max"], default="both",
                    help="torque split(s) to plan with (default both)")
     for flag, what in (("--v-max", "m/s"), ("--a-max", "m/s^2"), ("--j-max", "m/s^3")):
-        p.add_argument(flag, type=float, help=f"kinematic S-curve limit, {what} (default: the "
+        p.add_argument(flag, type=_POSITIVE, help=f"kinematic S-curve limit, {what} (default: the "
                        "move's, the path file's [kinematic], else the model's last move's)")
     p.add_argument("--smooth", action="store_true", help="also the torque-rate-limited "
                    "near-time-optimal plan (CasADi + IPOPT; needs casadi)")
-    p.add_argument("--tau-rate", type=float, metavar="NM_PER_S",
+    p.add_argument("--tau-rate", type=_POSITIVE, metavar="NM_PER_S",
                    help="--smooth: largest |dtau/dt| (default tau_max / 20 ms)")
     p.add_argument("--closed-loop", action="store_true",
                    help="simulate NA and APD tracking the time-optimal plan at --margins")
-    p.add_argument("--margins", type=float, nargs="+", default=[1.0, 0.9],
+    p.add_argument("--margins", type=_number(0.0, 1.0), nargs="+", default=[1.0, 0.9],
                    help="--closed-loop: the margins to plan with (default 1.0 0.9)")
     p.add_argument("--out", metavar="DIR", help="write each plan's trajectory (CSV) and the "
                    "figures (phase plane, torques, path on the force map) here")

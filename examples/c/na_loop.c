@@ -35,7 +35,7 @@
 #define PI 3.14159265358979323846
 
 /* ---------------------------------------------------------------------------------------
- * Model data, hard-coded from models/shang2010.toml (keep in sync with that file).
+ * Model data, hard-coded from pm2dof/models/shang2010.toml (keep in sync with that file).
  * The flat-vector layouts are those of pm2dof/generated/shang2010/manifest.json ("layouts");
  * main() checks the vector sizes against the generated code before running.
  * theta order: alpha1..3, beta1..3, gamma1..3, fv1..3, fc1..3 (header of shang2010.h).

@@ -147,10 +147,7 @@ class _Controller:
         if not (math.isfinite(fc) and fc >= 0):
             raise ArgumentError(f"velocity_filter_hz must be >= 0 (0: no filter), got {fc}")
         self.sample_period = T
-        self.theta0 = np.array(spec.theta_nominal if theta0 is None else theta0, dtype=float)
-        if self.theta0.shape != (len(model.param_names),) or not np.isfinite(self.theta0).all():
-            raise ArgumentError(f"theta0 must be {len(model.param_names)} finite numbers "
-                             f"({', '.join(model.param_names)}), got {self.theta0.tolist()}")
+        self.theta0 = model.checked_theta(theta0, "theta0")
         n = model.n_legs
         tau_max = _vector("tau_max", spec.limits["tau_max"] if tau_max is None else tau_max, n)
         preload = _vector("preload", ctl["preload"] if preload is None else preload, n)

@@ -21,12 +21,25 @@ import numpy as np
 from .errors import ArgumentError
 
 __all__ = ["DerivativeMethods", "ForwardDynamicsJacobians", "SampledStepJacobians",
-           "InverseDynamicsJacobians", "DERIVATIVE_FUNCTIONS"]
+           "InverseDynamicsJacobians", "DERIVATIVE_FUNCTIONS", "continuous_AB"]
 
 #: the generated functions bound here (``<model>_<name>``)
 DERIVATIVE_FUNCTIONS = ("forward_dynamics_jacobians", "sampled_step", "sampled_step_jacobians",
                         "inverse_dynamics", "inverse_dynamics_jacobians")
 
+
+
+def continuous_AB(d_xe, d_xed, d_tau_a):
+    """(A, B) of d/dt [xe, xed] = [xed, xedd]: A = [[0, I], [d_xe, d_xed]], B = [[0], [d_tau_a]].
+    Works on one point ((2, 2), (2, 2), (2, n)) or a batch ((K, 2, 2), ...)."""
+    d_xe, d_xed, d_tau_a = (np.asarray(a, dtype=float) for a in (d_xe, d_xed, d_tau_a))
+    lead = d_xe.shape[:-2]
+    A = np.zeros(lead + (4, 4))
+    A[..., 0:2, 2:4] = np.eye(2)
+    A[..., 2:4, 0:2], A[..., 2:4, 2:4] = d_xe, d_xed
+    B = np.zeros(lead + (4, d_tau_a.shape[-1]))
+    B[..., 2:4, :] = d_tau_a
+    return A, B
 
 class ForwardDynamicsJacobians(NamedTuple):
     """Jacobians of xedd (eqs. 10-12) at one state: d_xe (2, 2) 1/s^2, d_xed (2, 2) 1/s,
@@ -210,10 +223,4 @@ class DerivativeMethods:
             J = self.sampled_step_jacobians(x, tau_a, theta, period)
             return J.d_x, J.d_tau_a
         J = self.forward_dynamics_jacobians(xe, xed, tau_a, theta)
-        n = self.n_legs
-        A = np.zeros((4, 4))
-        A[0:2, 2:4] = np.eye(2)
-        A[2:4, 0:2], A[2:4, 2:4] = J.d_xe, J.d_xed
-        B = np.zeros((4, n))
-        B[2:4] = J.d_tau_a
-        return A, B
+        return continuous_AB(J.d_xe, J.d_xed, J.d_tau_a)

@@ -182,6 +182,22 @@ class Model(DerivativeMethods):
         b.setflags(write=False)
         return b
 
+    def checked_theta(self, theta=None, name="theta"):
+        """A parameter vector as a new float64 array (p,): ``theta``, or Tables 1-2 for None.
+
+        Raises ArgumentError naming ``name``, the expected order (:attr:`param_names`) and the
+        value, for a wrong length or a non-finite entry.
+        """
+        p = len(self.param_names)
+        try:
+            th = np.array(self.theta_nominal if theta is None else theta, dtype=float)
+        except (TypeError, ValueError):
+            th = None
+        if th is None or th.shape != (p,) or not np.isfinite(th).all():
+            raise ArgumentError(f"{name} must be {p} finite numbers ({', '.join(self.param_names)})"
+                                f", got {theta!r}")
+        return th
+
     def function(self, short_name):
         """The bound generated function ``<name>_<short_name>`` (for benchmarks and tools)."""
         return self._f[short_name]

@@ -362,7 +362,7 @@ def read_model_file(path):
     Parameters
     ----------
     path : str or pathlib.Path
-        A TOML model file (see ``models/shang2010.toml`` for the documented format).
+        A TOML model file (see ``pm2dof/models/shang2010.toml``, or docs/model-file.md, for the format).
 
     Returns
     -------

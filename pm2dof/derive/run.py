@@ -13,7 +13,7 @@ from pathlib import Path
 import casadi as ca
 
 from pm2dof.core import paths
-from pm2dof.core.errors import ModelFileError
+from pm2dof.core.errors import ModelFileError, OutputError
 from pm2dof.core.model_file import read_model_file
 
 from .controllers import STATUS, controller_functions, controller_layouts
@@ -98,6 +98,11 @@ def derive(model, out=None, *, force=False, build=True, progress=print):
     out = (Path(out).expanduser().absolute() if out is not None
            else paths.default_generated_dir(model_path))
     _check_out(model_path, out, force)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"cannot create the output folder {out}: {exc.strerror or exc}") \
+            from None
     say(f"model {spec.name!r} ({model_path}): {spec.n_legs} legs, {len(spec.param_names)} "
         f"parameters, friction {spec.friction!r}")
     d = Derivation(spec)

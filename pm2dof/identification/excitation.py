@@ -30,6 +30,10 @@ __all__ = ["multisine", "excite", "measured_angles", "excitation_trajectory", "s
 DEFAULT_DURATION = 4.0
 
 
+#: the longest excitation run, s (an hour: 1.8 million samples at 2 ms)
+MAX_DURATION = 3600.0
+
+
 def multisine(model, duration=DEFAULT_DURATION, amplitude=0.02, seed=1, harmonics=4,
               base_hz=0.75):
     """A smooth multi-sine motion around the middle of the model's first move, starting at rest.
@@ -42,6 +46,10 @@ def multisine(model, duration=DEFAULT_DURATION, amplitude=0.02, seed=1, harmonic
     object with t (N,), xd, xd_dot, xd_ddot (N, 2), period (s) and max_hz (the highest
     harmonic, Hz), like a Trajectory.
     """
+    if not (isinstance(duration, (int, float)) and np.isfinite(duration)
+            and 0 < duration <= MAX_DURATION):
+        raise ArgumentError(f"duration must be a number of seconds in (0, {MAX_DURATION:g}], "
+                            f"got {duration!r}")
     rng = np.random.default_rng(seed)
     T = model.spec.sensing["sample_period"]
     t = np.arange(int(round(duration / T)) + 1) * T

@@ -5,6 +5,9 @@ python-control is an optional dependency (the ``control`` extra), imported when 
 """
 import numpy as np
 
+from ..core.errors import ArgumentTypeError
+from ..core.model import Model
+
 __all__ = ["statespace", "STATE_NAMES"]
 
 #: the state of every linearisation: [xe, xed] (m, m/s)
@@ -52,8 +55,11 @@ def statespace(model, xe, xed, tau_a, theta=None, *, discrete=False, period=None
     >>> sys.dt, sys.input_labels
     (0.002, ['tau1', 'tau2', 'tau3'])
     """
+    if not isinstance(model, Model):
+        raise ArgumentTypeError(f"model must be a pm2dof.Model (pm2dof.load_model(...)), got "
+                                f"{type(model).__name__}")
     control = _control()
-    T = model.spec.sensing["sample_period"] if period is None else period
+    T = model._period(period)
     A, B = model.linearize(xe, xed, tau_a, theta, discrete=discrete, period=T)
     n = model.n_legs
     return control.ss(A, B, np.eye(4), np.zeros((4, n)), dt=float(T) if discrete else 0,

@@ -14,7 +14,11 @@ import numpy as np
 
 from ..control.controllers import SPLITS
 from ..control.simulate import check_trajectory
-from ..core.errors import ArgumentError, SingularityError
+from ..control.trajectory import Trajectory
+from ..core import _cbind
+from ..core.derivatives import continuous_AB
+from ..core.errors import ArgumentError, ArgumentTypeError, NonFiniteError, SingularityError
+from ..core.model import Model
 
 __all__ = ["linearize_trajectory", "LinearTrajectory"]
 
@@ -63,7 +67,9 @@ def _map(model, short, K, inputs, sizes_out):
     outs = [np.empty((K, k)) for k in sizes_out]
     try:
         f.map(K, *inputs, *outs)
-    except ValueError as exc:       # a non-finite output names its point
+    except _cbind.NonFiniteOutputError as exc:   # finite inputs, a non-finite result
+        raise NonFiniteError(f"linearize_trajectory: {exc}") from None
+    except ValueError as exc:                    # an input the binding refuses, named
         raise ArgumentError(f"linearize_trajectory: {exc}") from None
     return outs
 
@@ -114,13 +120,13 @@ def linearize_trajectory(model, trajectory, theta=None, *, discrete=True, split=
     split = ctl["split"] if split is None else split
     if split not in SPLITS:
         raise ArgumentError(f"split must be one of {list(SPLITS)}, got {split!r}")
-    theta = np.array(model.theta_nominal if theta is None else theta, dtype=float)
-    if theta.shape != (len(model.param_names),) or not np.isfinite(theta).all():
-        raise ArgumentError(f"theta must be {len(model.param_names)} finite numbers, got "
-                            f"{theta.tolist()}")
-    T = float(trajectory.period if period is None else period)
-    if not 0 < T < np.inf:
-        raise ArgumentError(f"period must be a finite number of seconds > 0, got {period!r}")
+    if not isinstance(model, Model):
+        raise ArgumentTypeError(f"model must be a pm2dof.Model, got {type(model).__name__}")
+    if not isinstance(trajectory, Trajectory):
+        raise ArgumentTypeError(f"trajectory must be a pm2dof.Trajectory, got "
+                                f"{type(trajectory).__name__}")
+    theta = model.checked_theta(theta)
+    T = model._period(trajectory.period if period is None else period)
     check_trajectory(model, trajectory)
     xd, xd_dot, xd_ddot = trajectory.xd, trajectory.xd_dot, trajectory.xd_ddot
     K = len(xd)
@@ -144,9 +150,8 @@ def linearize_trajectory(model, trajectory, theta=None, *, discrete=True, split=
         _, dxe, dxed, dtau, _, sing = _map(model, "forward_dynamics_jacobians", K,
                                            (xd, xd_dot, tau, theta),
                                            (2, 4, 4, 2 * n, 2 * len(theta), 2))
-        A[:, 0:2, 2:4] = np.eye(2)
-        A[:, 2:4, 0:2], A[:, 2:4, 2:4] = dxe.reshape(K, 2, 2), dxed.reshape(K, 2, 2)
-        B[:, 2:4] = dtau.reshape(K, 2, n)
+        A[:], B[:] = continuous_AB(dxe.reshape(K, 2, 2), dxed.reshape(K, 2, 2),
+                                   dtau.reshape(K, 2, n))
     _check_sing(model, sing, "jacobians")
     for a in (A, B, x, tau, u, theta):
         a.setflags(write=False)

@@ -207,3 +207,15 @@ def test_a_study_names_its_model_and_generated_folder_relative_to_itself(tmp_pat
     cols = run_chunk(s, 0)
     assert len(cols["rollout"]) > 0 and np.all(np.isfinite(cols["rmse"]))
     assert read_study("robustness").name == "robustness"       # a shipped study by name
+
+
+def test_models_copy_creates_the_folder_and_refuses_what_it_cannot_write(tmp_path):
+    r = subprocess.run([*PM2DOF, "models", "--copy", "shang2010", str(tmp_path / "robots")],
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0 and (tmp_path / "robots" / "shang2010.toml").is_file(), r.stderr
+    (tmp_path / "afile").write_text("")
+    r = subprocess.run([*PM2DOF, "models", "--copy", "fivebar", str(tmp_path / "afile" / "zz")],
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2 and r.stderr.startswith("pm2dof: error: cannot write"), r.stderr
+    rc, out = _derive("--model", "fivebar", "--out", tmp_path / "afile" / "g")
+    assert rc == 2 and "cannot create the output folder" in out and "Traceback" not in out, out

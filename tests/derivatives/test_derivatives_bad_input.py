@@ -95,3 +95,20 @@ def test_nan_and_wrong_shape_name_the_argument(m, arg, first_point):
         m.sampled_step(x, good[2], th, period=-1.0)
     with pytest.raises(pm2dof.ArgumentError, match="'xedd'"):
         m.inverse_dynamics_jacobians(good[0], good[1], [np.nan, 0.0], th)
+
+
+def test_linear_layer_refuses_bad_arguments_typed():
+    """Review findings: wrong types and hopeless weights give Pm2dofErrors, and a non-finite
+    result from finite inputs is a NonFiniteError (as from the Model's own methods)."""
+    m = pm2dof.load_model()
+    traj = pm2dof.paper_move("high")
+    with pytest.raises(pm2dof.ArgumentTypeError, match="model must be a pm2dof.Model"):
+        pm2dof.statespace("shang2010", [0.245, 0.265], [0.0, 0.0], np.zeros(3))
+    with pytest.raises(pm2dof.ArgumentTypeError, match="trajectory must be a pm2dof.Trajectory"):
+        pm2dof.linearize_trajectory(m, [1, 2, 3])
+    with pytest.raises(pm2dof.NonFiniteError, match="not finite"):
+        pm2dof.linearize_trajectory(m, traj, period=1e6)
+    with pytest.raises(pm2dof.ArgumentError, match="lqr_gains"):
+        pm2dof.LQRController(m, traj, Q_position=1e300)
+    with pytest.raises(pm2dof.ArgumentError, match=r"theta must be 15 finite numbers \(alpha1"):
+        pm2dof.linearize_trajectory(m, traj, theta=[1.0, 2.0])

@@ -204,3 +204,29 @@ def test_importing_identification_loads_no_heavy_library():
             "'pyarrow'}))")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert r.returncode == 0 and r.stdout.strip() == "[]", r.stdout + r.stderr
+
+
+@pytest.mark.parametrize("args", [
+    ["excite", "--out", "x.csv", "--duration", "-1"],
+    ["excite", "--out", "x.csv", "--duration", "nan"],
+    ["excite", "--out", "x.csv", "--duration", "0"],
+    ["excite", "--out", "x.csv", "--duration", "1e9"],
+    ["fit", "x.csv", "--time-tolerance", "-1"],
+    ["monte-carlo", "0"],
+])
+def test_bad_numbers_are_usage_errors_naming_the_option(tmp_path, args):
+    """A number outside its range is refused by the parser (exit 2, one line naming the option
+    and the range), never a traceback or a NaN on screen."""
+    r = subprocess.run([sys.executable, "-m", "pm2dof", "identify", *args], cwd=tmp_path,
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2 and "Traceback" not in r.stderr, r.stderr
+    last = r.stderr.strip().splitlines()[-1]
+    assert re.search(r"error: argument (--duration|--time-tolerance|N|seeds)", last), last
+
+
+def test_multisine_refuses_a_bad_duration():
+    from pm2dof.identification.excitation import multisine
+    m = pm2dof.load_model()
+    for bad in (-1.0, 0.0, float("nan"), 1e9):
+        with pytest.raises(pm2dof.ArgumentError, match="duration must be a number of seconds"):
+            multisine(m, duration=bad)
