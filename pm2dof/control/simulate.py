@@ -21,7 +21,7 @@ from ..core.status import Status
 
 __all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "plant_truth",
            "plant_vector", "rmse", "theta_truth", "check_trajectory", "pose_measures",
-           "poses_clear", "theta_vector", "rollout_inputs", "batch_inputs"]
+           "poses_clear", "rollout_inputs", "batch_inputs"]
 
 
 def plant_truth(model, **overrides):
@@ -242,20 +242,6 @@ def poses_clear(model, type1, type2, side=1.0):
     thr1, thr2 = model.singularity_threshold, model.parallel_singularity_threshold
     return (np.asarray(type1) >= thr1 * (1 - 1e-12)) & \
         (np.asarray(type2) >= thr2 * (1 - 1e-12)) & (np.asarray(side) > 0)
-
-
-def theta_vector(model, theta, name="theta"):
-    """``theta`` (5n,) as a new float array, the model's nominal (Tables 1-2) when None;
-    ArgumentError naming ``name`` and the parameters unless it is 5n finite numbers."""
-    p = len(model.param_names)
-    try:
-        th = np.array(model.theta_nominal if theta is None else theta, dtype=float)
-    except (TypeError, ValueError):
-        th = np.array([np.nan])
-    if th.shape != (p,) or not np.isfinite(th).all():
-        raise ArgumentError(f"{name} must be {p} finite numbers ({', '.join(model.param_names)})"
-                            f", got {theta!r}")
-    return th
 
 
 def check_trajectory(model, trajectory):

@@ -81,7 +81,7 @@ HINT_SPAN, HINT_FLOOR = 0.1, 1e-3
 #: steps of the forward pass's search (Illinois regula falsi, on the allowed side) for the
 #: greatest s_dd that the arrival facets allow at its own landing speed, on the bracket [U there
 #: at the uncapped landing, the uncapped s_dd]
-ARRIVAL_STEPS = 6
+ARRIVAL_STEPS = 4
 _PARALLEL = 1e-12   # |N_j . a| <= _PARALLEL |a|: facet j does not bound s_dd (it bounds s_d only)
 
 
@@ -315,7 +315,7 @@ def path_functions(d, prefix):
     f_top = room(top)
     guess = ca.fmax(floor, ca.fmin(top, f_top + top))
     f_guess = room(guess)
-    ok_guess = f_guess >= 0
+    ok_guess = f_guess >= 0          # else U rises with the speed here: search from floor
     a, fa = ca.if_else(ok_guess, guess, floor), ca.if_else(ok_guess, f_guess, room(floor))
     b, fb = top, f_top
     side = ca.SX(0)

@@ -11,7 +11,6 @@ import numbers
 
 import numpy as np
 
-from ..control.simulate import theta_vector
 from ..core.errors import PlanError
 from .check import first_bad, raise_at
 
@@ -93,8 +92,8 @@ def limits(model, tau_max, margin):
 
 def params(model, theta):
     """The ``path_params`` vector and theta (5n,), default the model's nominal (Tables 1-2);
-    ArgumentError unless 5n finite numbers (the controllers' check)."""
-    th = theta_vector(model, theta)
+    ArgumentError unless 5n finite numbers (:meth:`pm2dof.Model.checked_theta`, the one check)."""
+    th = model.checked_theta(theta)
     return model.layout("path_params").pack(v_top=V_TOP, theta=th), th
 
 

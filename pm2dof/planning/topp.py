@@ -10,13 +10,16 @@ polytopes; every set the recursion needs is one-dimensional, though, and is comp
 (to 2.3e-8 m/s) by bisection in generated C (pm2dof/derive/planning.py):
 
 1. the maximum-velocity curve: the largest s_d at each point with a feasible s_dd (``map``);
-2. backward from rest at the end: the largest x_k from which a feasible u_k lands at
-   x_k+1,max (or below) where the arrival facets hold too (one ``accumulate`` call);
-3. forward from rest at the start: the greatest feasible u_k that stays below x_k+1,max,
-   capped by the arrival facets at the landing speed (a fixed point, 3 steps; one
-   ``accumulate`` call). Each x_k is the largest reachable and controllable value: the
-   time-optimal profile of the discrete problem, where the arrival facets bind when braking
-   (landing on the bound) and accelerating (the fixed point).
+2. backward from rest at the end: the largest x_k from which a feasible u_k lands in
+   [0, x_k+1,max] where the arrival facets hold too (one ``accumulate`` call);
+3. forward from rest at the start: the greatest feasible u_k that stays below x_k+1,max and
+   that the arrival facets allow at its own landing speed (regula falsi on the allowed side;
+   one ``accumulate`` call). Each x_k is the largest reachable and controllable value: the
+   time-optimal profile of the discrete problem (agreeing with toppra and with IPOPT on it),
+   where the arrival facets bind when braking (landing on the bound) and accelerating.
+
+Around the passes (:func:`plan_time_optimal`) the grid is refined until it resolves the path
+(RESOLUTION) and the torques between the grid points (BETWEEN_TOL at each midpoint).
 """
 import time
 
@@ -213,22 +216,36 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         Dynamic parameters (default the model's nominal theta, Tables 1-2); friction, viscous
         and Coulomb, is the model's own law with these coefficients.
     margin : float
-        The plan uses tau_max * margin (< 1 leaves headroom for feedback).
+        In (0, 1]: the plan uses tau_max * margin (< 1 leaves headroom for feedback; for more
+        torque pass a larger ``tau_max``).
     grid : int
-        Grid points along the path (graded towards the stops, breakpoints included); where an
-        interval's torque facets cannot hold at both its ends, it and its neighbours are split
-        in 8 and the plan rerun (at most twice): ``plan.info["grid"]`` is the final count.
+        Grid points along the path, 2 to GRID_MAX = 100000 (graded towards the stops,
+        breakpoints included). The grid is then refined until it resolves the path and the
+        plan: every interval over which an active joint or the tangent turns by more than
+        RESOLUTION = 0.05 rad is halved; where an interval's torque facets cannot hold at both
+        its ends, it and its neighbours are split in 8 and the plan rerun (at most twice); and
+        where the torques at an interval's midpoint exceed the limits by more than
+        BETWEEN_TOL = 0.1 %, it is halved and the plan rerun (ROUNDS = 12 rounds in all).
+        A coarse grid gives a feasible plan, longer than a fine one.
 
     Returns
     -------
     Plan
-        ``method`` "time_optimal"; torques at the grid points from the generated C.
+        ``method`` "time_optimal"; torques at the grid points from the generated C;
+        ``info``: ``grid`` (the final count), ``refinements``, ``midpoint_excess`` (the largest
+        excess over the limits at an interval's midpoint, a fraction of tau_max),
+        ``arrival_relaxed`` (arc lengths where only the departing facets hold), ``stops``,
+        ``theta``, ``tau_max_actuators`` (tau_max before the margin).
 
     Raises
     ------
     PlanError
-        A non-positive grid or margin, bad limits or theta, or limits too low to follow the
-        path (names the arc length and the point).
+        A grid or margin out of range, bad limits, limits too low to follow the path (names the
+        arc length and the point), a path that turns too fast to resolve on GRID_MAX points.
+    ArgumentError
+        theta not 5n finite numbers (:meth:`pm2dof.Model.checked_theta`).
+    ArgumentTypeError
+        ``model`` not a Model or ``path`` not a TaskPath.
     WorkspaceError, SingularityError
         The path leaves the workspace or comes closer to a singularity than its threshold
         (:func:`check_path`, every 0.5 mm; names s and the point).

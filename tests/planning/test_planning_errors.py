@@ -113,8 +113,8 @@ def test_bad_arguments(m, kw, match):
 
 @pytest.mark.parametrize("theta", [np.zeros(3), np.full(15, np.nan), "x", np.ones((3, 5))])
 def test_bad_theta_is_the_controllers_error(m, theta):
-    """theta is checked by the control layer's validator (one implementation): ArgumentError
-    naming theta and the parameters."""
+    """theta is checked by Model.checked_theta (the one check, as the controllers'):
+    ArgumentError naming theta and the parameters."""
     with pytest.raises(ArgumentError, match=r"theta must be 15 finite numbers \(alpha1"):
         plan_time_optimal(m, LINE, theta=theta)
 

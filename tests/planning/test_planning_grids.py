@@ -61,6 +61,7 @@ def test_any_grid_gives_a_feasible_conservative_plan(m, name):
 
 @pytest.mark.parametrize("name, grid, tau_max, split", [
     ("line", 2, 30.0, "min_max"), ("line", 3, 30.0, "min_norm"),
+    ("reviewer_line", 2, 30.0, "min_max"), ("reviewer_line", 3, 30.0, "min_norm"),
     ("pick_and_place", 100, 30.0, "min_max"), ("pick_and_place", 20, 30.0, "min_norm"),
     ("pick_and_place", 160, 6.0, "min_max"), ("curve", 20, 30.0, "min_max"),
     ("curve", 15, 6.0, "min_max"), ("curve", 40, 30.0, "min_norm")])
@@ -68,7 +69,7 @@ def test_the_passes_on_the_reviewers_coarse_grids(m, name, grid, tau_max, split)
     """The generated passes alone on the grids that failed (no refinement by the planner):
     each interval's s_dd lies in its feasible interval [L, U] leaving s_k and lands at or above
     rest, and every s_d^2 is finite, >= 0 and 0 at the stops."""
-    path = PATHS[name]
+    path = PATHS.get(name) or TaskPath.line([0.2, 0.25], [0.3, 0.25])
     s = grid_points(path, grid)
     w = limits(m, tau_max, 1.0)
     prm, th = params(m, None)
