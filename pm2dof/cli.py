@@ -749,7 +749,9 @@ def build_parser():
     p.add_argument("--tau-rate", type=_POSITIVE, metavar="NM_PER_S",
                    help="--smooth: largest |dtau/dt| (default tau_max / 20 ms)")
     p.add_argument("--closed-loop", action="store_true",
-                   help="simulate NA and APD tracking the time-optimal plan at --margins")
+                   help="simulate NA and APD, with the same split, tracking the time-optimal "
+                   "plan of the last split --split names (min-max for the default both, "
+                   "min-norm with --split min_norm) at each of --margins")
     p.add_argument("--margins", type=_number(0.0, 1.0), nargs="+", default=[1.0, 0.9],
                    help="--closed-loop: the margins to plan with (default 1.0 0.9)")
     p.add_argument("--out", metavar="DIR", help="write each plan's trajectory (CSV) and the "

@@ -334,14 +334,9 @@ def batch_inputs(model, controller, traj, plants, theta_hat0=None):
         C["xe_prev"][k] = model.fk(qa0)
     C["theta_hat"][:] = controller.theta0
     if theta_hat0 is not None:
-        p = len(model.param_names)
         for k, th in enumerate(theta_hat0):
             if th is not None:
-                th = np.asarray(th, dtype=float)
-                if th.shape != (p,) or not np.isfinite(th).all():
-                    raise ArgumentError(f"theta_hat0 must be {p} finite numbers "
-                                     f"({', '.join(model.param_names)}), got {th.tolist()}")
-                C["theta_hat"][k] = th
+                C["theta_hat"][k] = model.checked_theta(th, "theta_hat0")
     u = controller.closed_loop_inputs(traj)
     return f, X, u, P, model.layout("cl_output")
 
