@@ -147,3 +147,16 @@ def _random_theta_fixture():
 @pytest.fixture(scope="session", name="param_index")
 def _param_index_fixture():
     return param_index
+
+
+def sci(x, digits=2):
+    """4.93e-5: a number as the README and the docs pages print it (no zero-padded exponent);
+    the tests that find the pages' numbers format theirs with it."""
+    mant, exp = f"{x:.{digits}e}".split("e")
+    return f"{mant}e{int(exp)}"
+
+
+@pytest.fixture(scope="module")
+def paper_model():
+    """The paper's robot (shang2010), loaded once per module."""
+    return pm2dof.load_model()

@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 import pm2dof
+from conftest import sci
 from pm2dof.analysis.experiment import table3, table3_json
 from pm2dof.analysis.maps import maps_summary, workspace_maps
 from pm2dof.analysis.report import model_report
@@ -20,15 +21,10 @@ README = (ROOT / "README.md").read_text()
 DOCS = {p.stem: p.read_text() for p in (ROOT / "docs").glob("*.md")}
 
 
-def sci(x, digits=2):
-    """4.93e-5 (the pages' format: no zero-padded exponent)."""
-    mant, exp = f"{x:.{digits}e}".split("e")
-    return f"{mant}e{int(exp)}"
-
 
 @pytest.fixture(scope="module")
-def m():
-    return pm2dof.load_model()
+def m(paper_model):
+    return paper_model
 
 
 @pytest.fixture(scope="module")

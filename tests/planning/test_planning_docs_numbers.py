@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 import pm2dof
+from conftest import sci
 from pm2dof.planning.pathfile import read_path_file
 from pm2dof.planning.report import closed_loop, plan_paths
 
@@ -19,15 +20,10 @@ ROWS = [("line", 30.0), ("line", 6.0), ("pick_and_place", 30.0), ("pick_and_plac
         ("curve", 30.0), ("curve", 6.0)]
 
 
-def sci(x, digits=2):
-    """5.16e-4 (the page's format: no zero-padded exponent)."""
-    mant, exp = f"{x:.{digits}e}".split("e")
-    return f"{mant}e{int(exp)}"
-
 
 @pytest.fixture(scope="module")
-def m():
-    return pm2dof.load_model()
+def m(paper_model):
+    return paper_model
 
 
 def _item(m, name):
