@@ -149,11 +149,18 @@ def _param_index_fixture():
     return param_index
 
 
-def sci(x, digits=2):
-    """4.93e-5: a number as the README and the docs pages print it (no zero-padded exponent);
-    the tests that find the pages' numbers format theirs with it."""
+def _sci(x, digits=2):
+    """4.93e-5: a number as the README and the docs pages print it (no zero-padded exponent)."""
     mant, exp = f"{x:.{digits}e}".split("e")
     return f"{mant}e{int(exp)}"
+
+
+@pytest.fixture(scope="session")
+def sci():
+    """The pages' number format (``_sci``), for the tests that find the pages' numbers. A
+    fixture, not an import: ``from conftest import ...`` resolves to whichever conftest was
+    imported first under that name (tests/derivatives has its own)."""
+    return _sci
 
 
 @pytest.fixture(scope="module")

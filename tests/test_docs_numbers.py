@@ -11,7 +11,6 @@ from pathlib import Path
 import pytest
 
 import pm2dof
-from conftest import sci
 from pm2dof.analysis.experiment import table3, table3_json
 from pm2dof.analysis.maps import maps_summary, workspace_maps
 from pm2dof.analysis.report import model_report
@@ -32,7 +31,7 @@ def t3(m):
     return table3_json(table3(m))
 
 
-def test_table3_rows(t3):
+def test_table3_rows(t3, sci):
     page = DOCS["results-paper"]
     for speed in ("low", "high"):
         r = t3[speed]
@@ -42,7 +41,7 @@ def test_table3_rows(t3):
                          f"{r['rpe_percent']:.1f} %"], (speed, cells)
 
 
-def test_readme_tour_numbers(t3):
+def test_readme_tour_numbers(t3, sci):
     h = t3["high"]
     want = (f"RMSE of {sci(h['na_rmse'])} m against APD's {sci(h['apd_rmse'])} m, a "
             f"{h['rpe_percent']:.1f} % reduction")

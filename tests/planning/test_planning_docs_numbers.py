@@ -9,7 +9,6 @@ import numpy as np
 import pytest
 
 import pm2dof
-from conftest import sci
 from pm2dof.planning.pathfile import read_path_file
 from pm2dof.planning.report import closed_loop, plan_paths
 
@@ -79,7 +78,7 @@ def test_the_numbers_quoted_beside_the_table(table):
     assert round(kin / line30["min_max"]["duration_s"]) == 4 and "made 4× faster" in FLAT
 
 
-def test_the_closed_loop_numbers(m):
+def test_the_closed_loop_numbers(m, sci):
     """The table at 6 N m on the paper's line (NA and APD, min-max, margins 1.0 0.9 0.8), the
     errors at 30 N m, and NA on the pick-and-place cycle at 6 N m."""
     line = _item(m, "line")["path"]
