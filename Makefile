@@ -32,7 +32,7 @@ $(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
 
 define LIB_RULE
 $(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c $(STAMP)
-	$(PY) -m pm2dof.core.build $$< $$@
+	$(PY) pm2dof/core/build.py $$< $$@
 endef
 $(foreach d,$(MODEL_DIRS),$(eval $(call LIB_RULE,$(d))))
 

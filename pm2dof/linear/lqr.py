@@ -55,14 +55,16 @@ def lqr_gains(A, B, Q, R):
     Q, R = np.asarray(Q, dtype=float), np.asarray(R, dtype=float)
     N = len(A)
     P = np.empty((N + 1,) + Q.shape)
+    # an overflow is reported below as a typed error, not as NumPy's warnings on the way
     try:
-        P[N] = solve_discrete_are(A[-1], B[-1], Q, R)
-        K = np.empty((N, B.shape[2], A.shape[1]))
-        for k in range(N - 1, -1, -1):
-            BtP = B[k].T @ P[k + 1]
-            K[k] = np.linalg.solve(R + BtP @ B[k], BtP @ A[k])
-            P[k] = Q + A[k].T @ P[k + 1] @ (A[k] - B[k] @ K[k])
-            P[k] = (P[k] + P[k].T) / 2          # keep it symmetric against rounding
+        with np.errstate(all="ignore"):
+            P[N] = solve_discrete_are(A[-1], B[-1], Q, R)
+            K = np.empty((N, B.shape[2], A.shape[1]))
+            for k in range(N - 1, -1, -1):
+                BtP = B[k].T @ P[k + 1]
+                K[k] = np.linalg.solve(R + BtP @ B[k], BtP @ A[k])
+                P[k] = Q + A[k].T @ P[k + 1] @ (A[k] - B[k] @ K[k])
+                P[k] = (P[k] + P[k].T) / 2          # keep it symmetric against rounding
     except (np.linalg.LinAlgError, ValueError) as exc:   # SciPy's LinAlgError is NumPy's
         raise ArgumentError(f"lqr_gains: no stabilising solution for these weights ({exc}); "
                             f"Q and R must be positive definite and of moderate scale") from None
