@@ -20,7 +20,7 @@ from .derivatives import DERIVATIVE_FUNCTIONS, DerivativeMethods
 from .errors import (ArgumentError, ArgumentTypeError, ClosureError, NonFiniteError,
                      SingularityError, StaleGeneratedCodeError, WorkspaceError)
 from .layout import Layout
-from .model_file import read_model_file
+from .model_file import inertia_problem, read_model_file
 from .status import Status
 
 try:
@@ -182,11 +182,14 @@ class Model(DerivativeMethods):
         b.setflags(write=False)
         return b
 
-    def checked_theta(self, theta=None, name="theta"):
+    def checked_theta(self, theta=None, name="theta", physical=False):
         """A parameter vector as a new float64 array (p,): ``theta``, or Tables 1-2 for None.
 
         Raises ArgumentError naming ``name``, the expected order (:attr:`param_names`) and the
-        value, for a wrong length or a non-finite entry.
+        value, for a wrong length or a non-finite entry. With ``physical=True`` also unless
+        theta is physical by the model file's rule for ``[nominal]``: every leg's M_i (eq. 1)
+        positive definite (so Me = W^T M W, eq. 12, is at every non-singular pose) and every
+        friction coefficient >= 0.
         """
         p = len(self.param_names)
         try:
@@ -196,6 +199,16 @@ class Model(DerivativeMethods):
         if th is None or th.shape != (p,) or not np.isfinite(th).all():
             raise ArgumentError(f"{name} must be {p} finite numbers ({', '.join(self.param_names)})"
                                 f", got {theta!r}")
+        if physical:
+            n = self.n_legs
+            rows = th.reshape(-1, n)          # alpha, beta, gamma, then each friction coefficient
+            for i in range(n):
+                why = inertia_problem(*rows[:3, i])
+                if why is not None:
+                    raise ArgumentError(f"{name} is not physical: leg {i + 1} {why}")
+            for j in np.flatnonzero(th[3 * n:] < 0):
+                raise ArgumentError(f"{name} is not physical: {self.param_names[3 * n + j]} = "
+                                    f"{th[3 * n + j]:.6g} < 0 (friction must dissipate)")
         return th
 
     def function(self, short_name):

@@ -163,16 +163,26 @@ def _read_leg(pr, i, leg):
     return Leg(base=base, la=la, lb=lb, elbow=elbow)
 
 
+def inertia_problem(alpha, beta, gamma):
+    """Why one leg's M_i (eq. 1) is not positive definite for every c_i, or None: the rule for
+    [nominal] and for any theta a plan takes (alpha, gamma > 0, beta^2 < alpha gamma)."""
+    if not (alpha > 0 and gamma > 0):
+        return f"alpha and gamma must be > 0, got alpha = {alpha:.6g}, gamma = {gamma:.6g}"
+    if beta * beta >= alpha * gamma:
+        return (f"inertia is not positive definite: beta^2 = {beta * beta:.6g} >= "
+                f"alpha*gamma = {alpha * gamma:.6g}")
+    return None
+
+
 def _check_inertia(pr, section, values, n):
-    """M_i positive definite: beta_i^2 < alpha_i gamma_i (alpha, gamma > 0 are checked apart)."""
+    """M_i positive definite (alpha, gamma > 0 are checked apart, so only beta^2 < alpha gamma
+    can still fail here)."""
     if any(values.get(k) is None for k in INERTIAL):
         return
     for i in range(n):
-        a, b, g = (float(values[k][i]) for k in INERTIAL)
-        if b * b >= a * g:
-            pr.add(entry(f"{section}.beta", f"leg {i + 1}"),
-                   f"leg {i + 1} inertia is not positive definite: beta^2 = {b * b:.6g} >= "
-                   f"alpha*gamma = {a * g:.6g}")
+        why = inertia_problem(*(float(values[k][i]) for k in INERTIAL))
+        if why is not None:
+            pr.add(entry(f"{section}.beta", f"leg {i + 1}"), f"leg {i + 1} {why}")
 
 
 def _read_nominal(pr, nominal, n, friction):

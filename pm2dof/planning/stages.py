@@ -92,8 +92,9 @@ def limits(model, tau_max, margin):
 
 def params(model, theta):
     """The ``path_params`` vector and theta (5n,), default the model's nominal (Tables 1-2);
-    ArgumentError unless 5n finite numbers (:meth:`pm2dof.Model.checked_theta`, the one check)."""
-    th = model.checked_theta(theta)
+    ArgumentError unless 5n finite numbers and physical (:meth:`pm2dof.Model.checked_theta`,
+    the one check): a plan needs Me positive definite and friction that dissipates."""
+    th = model.checked_theta(theta, physical=True)
     return model.layout("path_params").pack(v_top=V_TOP, theta=th), th
 
 

@@ -214,7 +214,9 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         with S^T tau = u within the limits (the force zonotope, exactly).
     theta : array_like (5n,), optional
         Dynamic parameters (default the model's nominal theta, Tables 1-2); friction, viscous
-        and Coulomb, is the model's own law with these coefficients.
+        and Coulomb, is the model's own law with these coefficients. Must be physical, by the
+        model file's rule for ``[nominal]``: every leg's M_i (eq. 1) positive definite and
+        friction >= 0 (an identified theta: the physically consistent one of ``identify fit``).
     margin : float
         In (0, 1]: the plan uses tau_max * margin (< 1 leaves headroom for feedback; for more
         torque pass a larger ``tau_max``).
@@ -243,7 +245,7 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         A grid or margin out of range, bad limits, limits too low to follow the path (names the
         arc length and the point), a path that turns too fast to resolve on GRID_MAX points.
     ArgumentError
-        theta not 5n finite numbers (:meth:`pm2dof.Model.checked_theta`).
+        theta not 5n finite numbers, or not physical (:meth:`pm2dof.Model.checked_theta`).
     ArgumentTypeError
         ``model`` not a Model or ``path`` not a TaskPath.
     WorkspaceError, SingularityError

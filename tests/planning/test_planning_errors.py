@@ -119,6 +119,40 @@ def test_bad_theta_is_the_controllers_error(m, theta):
         plan_time_optimal(m, LINE, theta=theta)
 
 
+def _edited(m, **entries):
+    th = m.theta_nominal.copy()
+    for name, value in entries.items():
+        th[m.param_names.index(name)] = value
+    return th
+
+
+@pytest.mark.parametrize("edit, match", [
+    ("negated", r"leg 1 alpha and gamma must be > 0, got alpha = -0.0932"),
+    ("zero", r"leg 1 alpha and gamma must be > 0, got alpha = 0,"),
+    ({"beta2": 0.05}, r"leg 2 inertia is not positive definite: beta\^2 = 0.0025 >= "),
+    ({"gamma3": -1e-3}, r"leg 3 alpha and gamma must be > 0"),
+    ({"fv2": -0.1}, r"fv2 = -0.1 < 0 \(friction must dissipate\)"),
+    ({"fc3": -1e-9}, r"fc3 = -1e-09 < 0"),
+])
+def test_unphysical_theta_is_refused(m, edit, match):
+    """A plan needs Me positive definite (every leg's M_i, eq. 1) and friction that dissipates.
+    Before this check -theta planned the same duration as theta (u is odd in theta, the torque
+    box symmetric) and theta = 0 planned 0.7 ms: answers for a robot that cannot exist."""
+    th = {"negated": -m.theta_nominal, "zero": 0.0 * m.theta_nominal}.get(edit) \
+        if isinstance(edit, str) else _edited(m, **edit)
+    with pytest.raises(ArgumentError, match="theta is not physical: " + match):
+        plan_time_optimal(m, LINE, theta=th)
+
+
+def test_physical_edge_is_accepted(m):
+    """The rule is the model file's: friction 0 is physical (a frictionless robot), and an
+    inertia matrix just inside positive definiteness plans."""
+    a, g = m.theta_nominal[m.param_names.index("alpha2")], m.theta_nominal[m.param_names.index("gamma2")]
+    th = _edited(m, fv1=0.0, fc1=0.0, beta2=0.999 * np.sqrt(a * g))
+    plan = plan_time_optimal(m, LINE, theta=th, grid=200)
+    assert np.isfinite(plan.duration) and plan.duration > 0
+
+
 def test_bad_kinematic_limits_and_step():
     with pytest.raises(PlanError, match="v_max"):
         plan_kinematic(LINE, 0.0, 10.0, 400.0)
