@@ -807,6 +807,21 @@ _COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies",
                    "table3": "control"}     # table3 --include lqr: SciPy's Riccati solver
 
 
+#: commands whose --out names a folder (the others' --out, and every --save, name a file)
+_OUT_FOLDERS = {"demo", "figures", "splits", "maps", "plan", "study"}
+
+
+def _check_outputs(args):
+    """Refuse an output that cannot be written before any work: a --save or file --out that is
+    a folder or lies under a file, a folder --out that is a file (OutputError)."""
+    from .analysis.results import output_folder, output_path
+    if getattr(args, "save", None):
+        output_path(args.save)
+    out = getattr(args, "out", None)
+    if out and args.command != "derive":          # derive checks its own --out
+        (output_folder if args.command in _OUT_FOLDERS else output_path)(out)
+
+
 def main(argv=None):
     from .analysis import results
     ap = build_parser()
@@ -822,6 +837,7 @@ def main(argv=None):
         ap.print_help()
         return 2
     try:
+        _check_outputs(args)
         with warnings.catch_warnings():   # each rollout that did not complete: one line
             warnings.simplefilter("always", OutcomeWarning)
             warnings.showwarning = _show_warning

@@ -11,7 +11,7 @@ import numpy as np
 
 from ..core.errors import OutputError
 
-__all__ = ["provenance", "write_atomic", "write_json", "dumps", "save_figure"]
+__all__ = ["provenance", "output_path", "output_folder", "write_atomic", "write_json", "dumps", "save_figure"]
 
 REPO = Path(__file__).resolve().parents[2]   # the source checkout, when pm2dof runs from one
 
@@ -55,11 +55,44 @@ def provenance(model):
     }
 
 
-def write_atomic(path, data):
-    """Write bytes to ``path`` through a temporary file in the same folder and a rename."""
+def output_path(path):
+    """``path`` as a Path whose folder exists (created if missing), ready to be written.
+
+    Raises OutputError naming the problem: ``path`` is a folder, a part of its folder is a
+    file, or the folder cannot be created.
+    """
     path = Path(path)
+    if path.is_dir():
+        raise OutputError(f"cannot write {path}: it is a folder (name a file in it)")
+    for parent in path.parents:
+        if parent.exists():
+            if not parent.is_dir():
+                raise OutputError(f"cannot write {path}: {parent} is a file, not a folder")
+            break
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"cannot write {path}: {exc.strerror or exc}") from None
+    return path
+
+
+def output_folder(path):
+    """``path`` as a Path that is, or can become, a folder (nothing is created): OutputError
+    if it or a part of it is a file. Commands check their ``--out DIR`` with it before any work."""
+    path = Path(path)
+    for part in (path, *path.parents):
+        if part.exists():
+            if not part.is_dir():
+                raise OutputError(f"cannot write into {path}: {part} is a file, not a folder")
+            break
+    return path
+
+
+def write_atomic(path, data):
+    """Write bytes to ``path`` through a temporary file in the same folder and a rename
+    (OutputError if it cannot: :func:`output_path`, or the disk refuses)."""
+    path = output_path(path)
+    try:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
     except OSError as exc:
         raise OutputError(f"cannot write {path}: {exc.strerror or exc}") from None
@@ -70,9 +103,11 @@ def write_atomic(path, data):
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)  # as a plain open() would (mkstemp makes it 0600)
         os.replace(tmp, path)
-    except BaseException:
+    except BaseException as exc:
         if os.path.exists(tmp):
             os.unlink(tmp)
+        if isinstance(exc, OSError):
+            raise OutputError(f"cannot write {path}: {exc.strerror or exc}") from None
         raise
     return path
 

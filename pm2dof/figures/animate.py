@@ -3,7 +3,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import ArgumentError
+from ..analysis.results import output_path
+from ..core.errors import ArgumentError, OutputError
 from ..control.trajectory import model_move
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
@@ -61,6 +62,9 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
         raise ArgumentError(f"controller must be one of {sorted(CONTROLLERS)}, got {controller!r}")
     if not (isinstance(every, int) and every >= 1 and isinstance(fps, int) and fps >= 1):
         raise ArgumentError(f"every and fps must be integers >= 1, got {every}, {fps}")
+    if Path(out).suffix.lower() != ".gif":
+        raise ArgumentError(f"out must name a .gif file (the animation is a GIF), got {out}")
+    out = output_path(out)                  # before any work: a folder, a file in the way
     plt = _plt()
     traj = model_move(model, speed)
     r = simulate(model, CONTROLLERS[controller](model, split=split), traj,
@@ -77,11 +81,13 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
     if progress:
         progress(f"{n_frames} frames of {speed}-speed {controller}, error x{magnify:g}")
     anim = animation.FuncAnimation(fig, draw, frames=n_frames, blit=False)
-    out = Path(out)
-    out.parent.mkdir(parents=True, exist_ok=True)
     tmp = out.with_name(f".{out.name}.tmp.gif")
-    anim.save(tmp, writer=_gif_writer(animation)(fps=fps), dpi=DPI)
-    tmp.replace(out)                             # atomic: never a half-written GIF
+    try:
+        anim.save(tmp, writer=_gif_writer(animation)(fps=fps), dpi=DPI)
+        tmp.replace(out)                         # atomic: never a half-written GIF
+    except OSError as exc:
+        tmp.unlink(missing_ok=True)
+        raise OutputError(f"cannot write {out}: {exc.strerror or exc}") from None
     plt.close(fig)
     return out, r
 
