@@ -18,6 +18,7 @@ import numpy as np
 from ..core.errors import (ArgumentError, ArgumentTypeError, GainError, ModelMismatchError,
                            SingularityError)
 from ..core.layout import Layout
+from ..core.model import require_model
 from ..core.status import STATUS_NAMES, Status
 
 __all__ = ["NAController", "APDController", "CTCController", "STATUS_NAMES", "Status",
@@ -127,6 +128,7 @@ class _Controller:
 
     def __init__(self, model, base, gains, theta0, sample_period, velocity_filter_hz, tau_max,
                  on_singular, split, preload, preload_sign):
+        require_model(model)
         if on_singular not in ("raise", "zero"):
             raise ArgumentError(f"on_singular must be 'raise' or 'zero', got {on_singular!r}")
         self.on_singular = on_singular
@@ -299,6 +301,9 @@ class NAController(_Controller):
     def __init__(self, model, *, Kd=None, Q=None, Gamma=None, theta0=None, sample_period=None,
                  velocity_filter_hz=None, tau_max=None, project=False, on_singular="raise",
                  split=None, preload=None, preload_sign=None):
+        require_model(model)
+        if not isinstance(project, (bool, np.bool_)):
+            raise ArgumentTypeError(f"project must be True or False, got {project!r}")
         self.project = bool(project)
         g = model.spec.gains["na"]
         super().__init__(model, "na_proj" if self.project else "na",
@@ -326,6 +331,7 @@ class APDController(_Controller):
     def __init__(self, model, *, Kp=None, Kv=None, theta0=None, sample_period=None,
                  velocity_filter_hz=None, tau_max=None, on_singular="raise", split=None,
                  preload=None, preload_sign=None):
+        require_model(model)
         g = model.spec.gains["apd"]
         super().__init__(model, "apd", {"Kp": g["Kp"] if Kp is None else Kp,
                                         "Kv": g["Kv"] if Kv is None else Kv},
@@ -361,6 +367,7 @@ class CTCController(_Controller):
     def __init__(self, model, *, Kp=None, Kv=None, theta0=None, sample_period=None,
                  velocity_filter_hz=None, tau_max=None, on_singular="raise", split=None,
                  preload=None, preload_sign=None):
+        require_model(model)
         g = model.spec.gains.get("ctc") or CTC_DEFAULT_GAINS
         super().__init__(model, "ctc", {"Kp": g["Kp"] if Kp is None else Kp,
                                         "Kv": g["Kv"] if Kv is None else Kv},

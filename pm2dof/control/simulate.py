@@ -9,12 +9,14 @@ constant (zero-order hold). The loop over samples runs in C (``_cbind.Function.a
 import functools
 import math
 import warnings
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from .controllers import _Controller, check_same_model
 from .outcome import OUTCOMES, classify_failure
+from .trajectory import _positive, require_trajectory
 from ..core.errors import (ArgumentError, ArgumentTypeError, OutcomeWarning, SingularityError,
                            WorkspaceError)
 from ..core.status import Status
@@ -66,8 +68,16 @@ def plant_vector(model, truth=None, quantise=True, encoder_counts_per_rev=None):
             and float(counts).is_integer()):
         raise ArgumentError(f"encoder_counts_per_rev must be a whole number >= 0, got {counts!r}")
     truth = plant_truth(model) if truth is None else truth
-    return model.layout("plant").pack(
-        **truth, encoder_step=(2 * math.pi / counts) if (quantise and counts > 0) else 0.0)
+    if not isinstance(truth, Mapping):
+        raise ArgumentTypeError(f"truth must be a dict like pm2dof.plant_truth(model) (fields "
+                                f"{sorted(plant_truth(model))}), got {type(truth).__name__}; "
+                                f"plant_truth(model, alpha=..., fv=...) makes one")
+    try:
+        vec = model.layout("plant").pack(
+            **truth, encoder_step=(2 * math.pi / counts) if (quantise and counts > 0) else 0.0)
+    except (TypeError, ValueError) as exc:
+        raise ArgumentError(f"truth: {exc}") from None
+    return vec
 
 
 def theta_truth(model, truth=None):
@@ -251,13 +261,16 @@ def check_trajectory(model, trajectory):
     otherwise) and keep both singularity measures at or above their thresholds,
     ``limits.singularity_threshold`` (type I, legs) and
     ``limits.parallel_singularity_threshold`` (type II, actuation) (SingularityError naming
-    the kind), and the samples must be finite. The error names the sample, its time and
-    position.
+    the kind), and every sample of xd, xd_dot and xd_ddot must be finite (ArgumentError). The
+    error names the sample, its time and position.
     """
+    for name, what in (("xd", "position"), ("xd_dot", "velocity"), ("xd_ddot", "acceleration")):
+        v = np.asarray(getattr(trajectory, name), dtype=float)
+        if not np.isfinite(v).all():
+            k = int(np.argwhere(~np.isfinite(v))[0, 0])
+            raise ArgumentError(f"desired {what} ({name}) at sample {k} (t = "
+                                f"{trajectory.t[k]:.4f} s) is not finite: {v[k].tolist()}")
     xd = np.asarray(trajectory.xd, dtype=float)
-    if not np.isfinite(xd).all():
-        k = int(np.argwhere(~np.isfinite(xd))[0, 0])
-        raise ArgumentError(f"desired position at sample {k} is not finite: {xd[k].tolist()}")
     thr1, thr2 = model.singularity_threshold, model.parallel_singularity_threshold
     type1, type2, side = pose_measures(model, xd)
     # the first offending sample is re-checked with the generated ik for its message
@@ -384,6 +397,8 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
         raise ArgumentTypeError(f"controller must be an NAController, APDController, "
                                 f"CTCController, LQRController or a PythonController, got "
                                 f"{type(controller).__name__}")
+    require_trajectory(trajectory)
+    ts = _positive("settle_time (s)", settle_time, zero_ok=True)
     T = controller.sample_period
     if abs(trajectory.period - T) > 1e-12 * T:
         raise ArgumentError(f"trajectory period {trajectory.period} s differs from the "
@@ -391,7 +406,7 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     check_same_model(model, controller)
     check_trajectory(model, trajectory)
     n_move = len(trajectory.t)
-    traj = trajectory.extended(settle_time) if settle_time > 0 else trajectory
+    traj = trajectory.extended(ts) if ts > 0 else trajectory
     plant = plant_vector(model, truth, quantise, encoder_counts_per_rev)
     if isinstance(controller, PythonController):   # one Python step per sample
         x, y, ylay = python_rollout(model, controller, traj, plant, theta_hat0)

@@ -7,11 +7,11 @@ from types import MappingProxyType
 
 import numpy as np
 
-from ..core.errors import Pm2dofError
+from ..core.errors import ArgumentTypeError, Pm2dofError
 from ..core.model_file import read_model_file
 from ..core.paths import DEFAULT_MODEL_NAME, SHIPPED_MODELS
 
-__all__ = ["TrajectoryError", "SCurve", "Trajectory", "line", "model_move", "line_moves",
+__all__ = ["TrajectoryError", "SCurve", "Trajectory", "require_trajectory", "line", "model_move", "line_moves",
            "PAPER_MOVES",
            "paper_move"]
 
@@ -159,12 +159,21 @@ class Trajectory:
 
     def __post_init__(self):  # store read-only float64 C-contiguous copies
         n = np.size(self.t)
+        if n == 0:
+            raise TrajectoryError("a trajectory needs at least one sample (t is empty)")
         for name, shape in [("t", (n,)), ("xd", (n, 2)), ("xd_dot", (n, 2)), ("xd_ddot", (n, 2))]:
             arr = np.array(getattr(self, name), dtype=np.float64, order="C")
             if arr.shape != shape:
                 raise TrajectoryError(f"{name} must have shape {shape}, got {arr.shape}")
             arr.setflags(write=False)
             object.__setattr__(self, name, arr)
+        period = _positive("period (s)", self.period)
+        gaps = np.diff(self.t)                    # simulate and the controllers use period only
+        bad = np.flatnonzero(~(np.abs(gaps - period) <= 1e-9 * period))
+        if bad.size:
+            k = int(bad[0])
+            raise TrajectoryError(f"t must be sampled every period = {period} s; t[{k + 1}] - "
+                                  f"t[{k}] = {gaps[k]:.9g} s")
 
     @property
     def duration(self):
@@ -186,6 +195,22 @@ class Trajectory:
                           np.vstack([self.xd, np.broadcast_to(self.end, (k, 2))]),
                           np.vstack([self.xd_dot, zeros]), np.vstack([self.xd_ddot, zeros]),
                           self.period, self.start, self.end, self.profile)
+
+
+#: what simulate, the controllers and the linearisation read of a trajectory
+TRAJECTORY_FIELDS = ("t", "xd", "xd_dot", "xd_ddot", "period")
+
+
+def require_trajectory(trajectory):
+    """``trajectory``, or ArgumentTypeError unless it is a :class:`Trajectory` or has its
+    sampled fields (:data:`TRAJECTORY_FIELDS`, as identification's excitations do): the one
+    check of every function that takes one."""
+    if not isinstance(trajectory, Trajectory) and not all(
+            hasattr(trajectory, f) for f in TRAJECTORY_FIELDS):
+        raise ArgumentTypeError(f"trajectory must be a pm2dof.Trajectory (pm2dof.paper_move, "
+                                f"pm2dof.model_move, a Plan's .trajectory), got "
+                                f"{type(trajectory).__name__}")
+    return trajectory
 
 
 def _point(name, p):

@@ -31,7 +31,7 @@ except ImportError:  # a source tree whose C extension was never built
         f"{Path(__file__).parent}; build it with `pip install -e .` (or `make install`) in the "
         f"source tree") from None
 
-__all__ = ["Model", "load_model"]
+__all__ = ["Model", "load_model", "require_model"]
 
 
 # controller steps and closed loops: <law><split>_step, <law><split>_closed_loop
@@ -490,6 +490,15 @@ class Model(DerivativeMethods):
         return self._eval("forward_dynamics", (2,), out, xe, xed, tau_a, theta)
 
 
+def require_model(model, name="model"):
+    """``model``, or ArgumentTypeError unless it is a :class:`Model` (the one check of every
+    function and controller that takes one)."""
+    if not isinstance(model, Model):
+        raise ArgumentTypeError(f"{name} must be a pm2dof.Model (pm2dof.load_model(...)), got "
+                                f"{type(model).__name__}")
+    return model
+
+
 def load_model(model=None, generated=None):
     """Load a model file and bind its generated, compiled C.
 
@@ -529,4 +538,8 @@ def load_model(model=None, generated=None):
     >>> pm2dof.load_model("fivebar").n_legs
     2
     """
+    for name, value in (("model", model), ("generated", generated)):
+        if value is not None and not isinstance(value, (str, Path)):
+            raise ArgumentTypeError(f"load_model: {name} must be a name or a path (str or "
+                                    f"pathlib.Path), got {type(value).__name__}")
     return Model(read_model_file(paths.resolve_model(model)), generated)

@@ -18,6 +18,7 @@ inverse dynamics' torque) enter the C as per-sample inputs; nothing is solved pe
 import numpy as np
 
 from ..control.controllers import _Controller, diagonal_gain
+from ..control.trajectory import require_trajectory
 from ..core.errors import ArgumentError
 from .trajectory import linearize_trajectory
 
@@ -109,6 +110,7 @@ class LQRController(_Controller):
     def __init__(self, model, trajectory, *, Q_position=None, Q_velocity=None, R=None,
                  theta0=None, sample_period=None, velocity_filter_hz=None, tau_max=None,
                  on_singular="raise", split=None, preload=None, preload_sign=None):
+        require_trajectory(trajectory)
         super().__init__(model, "lqr", {}, theta0, sample_period, velocity_filter_hz, tau_max,
                          on_singular, split, preload, preload_sign)
         if abs(trajectory.period - self.sample_period) > 1e-12 * self.sample_period:

@@ -5,8 +5,7 @@ python-control is an optional dependency (the ``control`` extra), imported when 
 """
 import numpy as np
 
-from ..core.errors import ArgumentTypeError
-from ..core.model import Model
+from ..core.model import require_model
 
 __all__ = ["statespace", "STATE_NAMES"]
 
@@ -55,9 +54,7 @@ def statespace(model, xe, xed, tau_a, theta=None, *, discrete=False, period=None
     >>> sys.dt, sys.input_labels
     (0.002, ['tau1', 'tau2', 'tau3'])
     """
-    if not isinstance(model, Model):
-        raise ArgumentTypeError(f"model must be a pm2dof.Model (pm2dof.load_model(...)), got "
-                                f"{type(model).__name__}")
+    require_model(model)
     control = _control()
     T = model._period(period)
     A, B = model.linearize(xe, xed, tau_a, theta, discrete=discrete, period=T)

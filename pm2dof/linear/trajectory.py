@@ -14,11 +14,11 @@ import numpy as np
 
 from ..control.controllers import SPLITS
 from ..control.simulate import check_trajectory
-from ..control.trajectory import Trajectory
+from ..control.trajectory import require_trajectory
 from ..core import _cbind
 from ..core.derivatives import continuous_AB
-from ..core.errors import ArgumentError, ArgumentTypeError, NonFiniteError, SingularityError
-from ..core.model import Model
+from ..core.errors import ArgumentError, NonFiniteError, SingularityError
+from ..core.model import require_model
 
 __all__ = ["linearize_trajectory", "LinearTrajectory"]
 
@@ -116,15 +116,12 @@ def linearize_trajectory(model, trajectory, theta=None, *, discrete=True, split=
     >>> lin.A.shape[1:], lin.B.shape[1:]
     ((4, 4), (4, 3))
     """
+    require_model(model)
+    require_trajectory(trajectory)
     ctl, n = model.spec.control, model.n_legs
     split = ctl["split"] if split is None else split
     if split not in SPLITS:
         raise ArgumentError(f"split must be one of {list(SPLITS)}, got {split!r}")
-    if not isinstance(model, Model):
-        raise ArgumentTypeError(f"model must be a pm2dof.Model, got {type(model).__name__}")
-    if not isinstance(trajectory, Trajectory):
-        raise ArgumentTypeError(f"trajectory must be a pm2dof.Trajectory, got "
-                                f"{type(trajectory).__name__}")
     theta = model.checked_theta(theta)
     T = model._period(trajectory.period if period is None else period)
     check_trajectory(model, trajectory)

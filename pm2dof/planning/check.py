@@ -7,7 +7,7 @@ import numpy as np
 
 from ..control.simulate import poses_clear
 from ..core.errors import ArgumentTypeError, PlanError, SingularityError, WorkspaceError
-from ..core.model import Model
+from ..core.model import require_model
 from .paths import TaskPath
 
 __all__ = ["check_path", "raise_at", "first_bad", "require", "STEP", "STEP_MIN", "STEP_MAX",
@@ -25,9 +25,8 @@ _UNSET = object()
 def require(model=_UNSET, path=_UNSET):
     """ArgumentTypeError unless ``model`` is a :class:`pm2dof.Model` and ``path`` a
     :class:`pm2dof.TaskPath` (each checked when given)."""
-    if model is not _UNSET and not isinstance(model, Model):
-        raise ArgumentTypeError(f"model must be a pm2dof.Model (pm2dof.load_model()), got "
-                                f"{type(model).__name__}")
+    if model is not _UNSET:
+        require_model(model)
     if path is not _UNSET and not isinstance(path, TaskPath):
         raise ArgumentTypeError(f"path must be a pm2dof.TaskPath (TaskPath.line, .arc, "
                                 f".polyline, .spline, .concat), got {type(path).__name__}")
