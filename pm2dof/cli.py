@@ -552,6 +552,8 @@ def _study_parser(sub):
 def cmd_plan(args):
     from .analysis.results import dumps, provenance, write_atomic
     from .planning.report import closed_loop, csv_text, format_report, model_moves, plan_paths
+    if args.tau_rate is not None and not args.smooth:
+        raise ArgumentError("--tau-rate limits the smoothed plan's torque rate: add --smooth")
     m = _model(args)
     tau_max = None if args.tau_max is None else _per_actuator(args.tau_max, m.n_legs, "--tau-max")
     if args.path:

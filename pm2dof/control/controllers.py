@@ -37,9 +37,17 @@ def velocity_filter_alpha(sample_period, cutoff_hz):
 
 
 def _vector(name, value, n):
-    v = np.array(value, dtype=float)
-    if v.shape != (n,) or not np.isfinite(v).all():
-        raise ArgumentError(f"{name} must be {n} finite numbers, got {value!r}")
+    """``value`` as (n,) floats: n numbers, or one for every actuator (as the planner and the
+    CLI take it)."""
+    try:
+        v = np.array(value, dtype=float)
+    except (TypeError, ValueError):
+        v = None
+    if v is not None and v.ndim == 0:
+        v = np.full(n, float(v))
+    if v is None or v.shape != (n,) or not np.isfinite(v).all():
+        raise ArgumentError(f"{name} must be one finite number or {n} (one per actuator), got "
+                            f"{value!r}")
     return v
 
 
@@ -279,8 +287,8 @@ class NAController(_Controller):
         s (default ``[sensing].sample_period``, 0.002).
     velocity_filter_hz : float, optional
         Cutoff of the velocity low-pass, Hz; 0 for the raw backward difference.
-    tau_max : array_like (n,), optional
-        Torque limits, N*m (default ``[limits].tau_max``).
+    tau_max : float or array_like (n,), optional
+        Torque limits, N*m, one for every actuator or one each (default ``[limits].tau_max``).
     project : bool
         Project theta_hat after each update onto physical values (alpha, gamma > 0,
         beta^2 <= alpha gamma, friction >= 0). Off by default, as in the paper.
@@ -293,7 +301,7 @@ class NAController(_Controller):
         least 2-norm (against backlash), else the largest worst-case preload the limits allow
         (status "preload_infeasible"). Every split gives the same S^T tau_a to rounding. Each
         is an exact optimum, generated as its own C step (docs/results-redundancy.md).
-    preload, preload_sign : array_like (n,), optional
+    preload, preload_sign : float or array_like (n,), optional
         The "preload" split's least |tau_i|, N*m, and signs +-1 (default ``[control]``).
     """
     _law = "na"

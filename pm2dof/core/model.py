@@ -105,7 +105,10 @@ class Model(DerivativeMethods):
     1-2), ``singularity_threshold`` (type I), ``parallel_singularity_threshold`` (type II),
     ``manifest``, ``generated`` (the folder of the generated C), ``library`` (path of the
     compiled C).
-    Angles in rad, lengths in m; q = [qa_1..qa_n, qb_1..qb_n].
+    Angles in rad, lengths in m; q = [qa_1..qa_n, qb_1..qb_n]. The functions of q take it as
+    given: q must close every loop (eq. 5), as :meth:`ik` returns it; :meth:`H` gives the
+    closure residual, and :meth:`fk` refuses active angles that do not close
+    (:class:`ClosureError`).
 
     Two kinds of singularity are guarded (:meth:`singularity_measures`): type I, a leg
     stretched or folded (min_i |sin(qb_i - qa_i)| -> 0, W unbounded), and type II, the
@@ -228,16 +231,18 @@ class Model(DerivativeMethods):
         out = []
         for name, size, x in zip(f.names_in, f.sizes_in, args):
             try:
+                if x is None:
+                    raise TypeError("None is not a number")
                 if np.iscomplexobj(x):
                     raise TypeError("complex values are not allowed")
-                a = np.ascontiguousarray(x, dtype=np.float64)
+                a = np.asarray(x, dtype=np.float64)
             except (TypeError, ValueError) as exc:
                 raise ArgumentTypeError(f"{f.name}: input '{name}' must be an array of {size} "
                                         f"real numbers, got {type(x).__name__}: {exc}") from None
             if a.shape != (size,) and not (size == 1 and a.ndim == 0):
                 raise ArgumentError(f"{f.name}: input '{name}' must have shape ({size},), got "
                                     f"shape {a.shape}")
-            out.append(a)
+            out.append(np.ascontiguousarray(a).reshape(size))
         return out
 
     def _call(self, f, args, outs):
@@ -486,6 +491,13 @@ class Model(DerivativeMethods):
 
         Solves Me xedd = S^T tau_a - Ce xed - S^T f_a at the pose ``xe`` (2,) m, velocity
         ``xed`` (2,) m/s, actuator torques ``tau_a`` (n,) N*m and parameters ``theta``.
+
+        Friction is the model file's law with sign(0) = +1 (docs/model-file.md), so at exact
+        rest the Coulomb term acts as if every joint moved forward: with tau_a = 0 and
+        xed = 0 the result is not zero (:meth:`linearize` and the Jacobians inherit this).
+        The simulated plant of :func:`pm2dof.simulate` has its own friction, the Coulomb
+        term smoothed over ``[plant] coulomb_smoothing_velocity`` and zero at rest; neither
+        models stiction.
         """
         return self._eval("forward_dynamics", (2,), out, xe, xed, tau_a, theta)
 

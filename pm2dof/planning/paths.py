@@ -33,8 +33,8 @@ def _number(name, x, positive=False, nonnegative=False):
     except (TypeError, ValueError):
         v = math.nan
     if not math.isfinite(v) or (positive and v <= 0) or (nonnegative and v < 0):
-        want = "> 0" if positive else ">= 0" if nonnegative else "finite"
-        raise PlanError(f"{name} must be a finite number {want}, got {x!r}")
+        want = " > 0" if positive else " >= 0" if nonnegative else ""
+        raise PlanError(f"{name} must be a finite number{want}, got {x!r}")
     return v
 
 
@@ -166,12 +166,16 @@ class TaskPath:
         except (TypeError, ValueError):
             raise PlanError(f"arc lengths s must be finite numbers (m), got {s!r}") from None
         L = self.length
-        if s.ndim != 1 or not np.isfinite(s).all():
-            raise PlanError(f"arc lengths s must be a finite 1-D array, got shape {s.shape}")
+        if s.ndim != 1:
+            raise PlanError(f"arc lengths s must be a 1-D array, got shape {s.shape}")
+        if not np.isfinite(s).all():
+            k = int(np.flatnonzero(~np.isfinite(s))[0])
+            raise PlanError(f"arc lengths s must be finite, got s[{k}] = {float(s[k])}")
         tol = 1e-9 * max(L, 1.0)
         bad = (s < -tol) | (s > L + tol)
         if bad.any():
-            raise PlanError(f"arc length s = {s[bad][0]!r} m is outside the path [0, {L!r}] m")
+            raise PlanError(f"arc length s = {float(s[bad][0]):.9g} m is outside the path "
+                            f"[0, {L:.9g}] m")
         if side not in ("right", "left"):
             raise PlanError(f"side must be 'right' or 'left', got {side!r}")
         s = np.clip(s, 0.0, L)

@@ -11,6 +11,7 @@ import numpy as np
 from ..analysis.results import provenance
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
+from ..core.errors import PlanError
 from .kinematic import plan_kinematic
 from .stages import limits
 from .topp import plan_time_optimal
@@ -69,18 +70,27 @@ def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_n
                                                   for sp, v in peaks.items()}}
             kp.info["tau_max_actuators"] = w.tolist()     # the limits its CSV reports
             plans[item["name"], "kinematic"] = kp
+        feasible, refused = [], []
         for split in splits:
-            p = plan_time_optimal(model, path, tau_max, split, theta, margin, grid)
+            try:
+                p = plan_time_optimal(model, path, tau_max, split, theta, margin, grid)
+            except PlanError as exc:      # with both splits, one may be feasible alone
+                refused.append(exc)
+                row[split] = {"infeasible": str(exc)}
+                continue
+            feasible.append(split)
             plans[item["name"], split] = p
             row[split] = {"duration_s": p.duration, "tau_peak": p.tau_peak.tolist(),
                           "compute_ms": p.compute_time_s * 1e3, "grid": p.info["grid"],
                           "max_speed_m_s": float(p.sdot.max())}
-        if "min_norm" in row and "min_max" in row:
+        if not feasible:
+            raise refused[0]
+        if all(sp in feasible for sp in ("min_norm", "min_max")):
             row["saving_min_max_percent"] = 100 * (1 - row["min_max"]["duration_s"]
                                                    / row["min_norm"]["duration_s"])
         if smooth:
             from .smooth import plan_smooth
-            for split in splits:
+            for split in feasible:
                 sp = plan_smooth(model, path, tau_max, split, theta, margin, tau_rate=tau_rate)
                 plans[item["name"], f"smooth_{split}"] = sp
                 row[f"smooth_{split}"] = {
@@ -180,8 +190,10 @@ def format_report(res, loops=None):
                          f"{k['j_max']:g} m/s^3): {k['duration_s']:.4f} s; peak |tau| "
                          f"{max(k['tau_peak']['min_norm']):.3f} N m min-norm ({lim})")
         for split in ("min_norm", "min_max"):
-            if split in row:
-                r = row[split]
+            r = row.get(split)
+            if r and "infeasible" in r:
+                lines.append(f"  time-optimal, {split:8s}: infeasible: {r['infeasible']}")
+            elif r:
                 lines.append(f"  time-optimal, {split:8s}: {r['duration_s']:.4f} s (peak |tau| "
                              f"{max(r['tau_peak']):.3f} N m, top speed {r['max_speed_m_s']:.3f}"
                              f" m/s; {r['compute_ms']:.1f} ms, {r['grid']} grid points)")

@@ -182,7 +182,9 @@ def solve_profile(model, stage, prm, s, coef):
     if hi[0] < 0:
         k = int(np.flatnonzero(hi < 0)[-1])
         raise PlanError(f"the robot cannot reach the end of the path at rest from "
-                        f"{_at(coef, s, k)} with these torque limits: no feasible deceleration")
+                        f"{_at(coef, s, k)} with these torque limits: no feasible deceleration "
+                        f"(even near rest the motors must balance the Coulomb friction; a larger "
+                        f"tau_max, or the min_max split, leaves more room)")
     # forward: greedy from rest at the start
     inp[:, fin.slices["x_next_max"]] = hi[1:, None]
     out = model.layout("path_forward_output")

@@ -86,3 +86,24 @@ def test_load_model_needs_a_name_or_a_path():
 def test_project_is_a_bool(m, project):
     with pytest.raises(ArgumentTypeError, match="project must be True or False"):
         NAController(m, project=project)
+
+
+def test_tau_max_one_value_for_every_actuator(m):
+    """One limit for every actuator, as plan_time_optimal and the CLI take it; zero or negative
+    is refused naming the condition (the message used to say '3 finite numbers' for 0.01)."""
+    assert NAController(m, tau_max=6.0).params_layout.unpack(
+        NAController(m, tau_max=6.0).params)["tau_max"].tolist() == [6.0, 6.0, 6.0]
+    for bad in (0.0, -1.0):
+        with pytest.raises(ArgumentError, match=r"tau_max > 0"):
+            NAController(m, tau_max=bad)
+    with pytest.raises(ArgumentError, match=r"tau_max must be one finite number or 3 \(one per "
+                                            r"actuator\), got \[1.0, 2.0\]"):
+        NAController(m, tau_max=[1.0, 2.0])
+
+
+def test_model_inputs_name_what_was_passed(m):
+    with pytest.raises(ArgumentTypeError, match=r"input 'xe' must be an array of 2 real numbers"
+                                                r", got NoneType"):
+        m.ik(None)
+    with pytest.raises(ArgumentError, match=r"input 'xe' must have shape \(2,\), got shape \(\)"):
+        m.ik(0.3)

@@ -221,7 +221,8 @@ def test_saturated_min_max_reports_saturation_not_preload():
 
 @pytest.mark.parametrize("kwargs,match", [
     (dict(split="minmax"), "split must be one of"),
-    (dict(split="preload", preload=[1.0, 1.0]), "preload must be 3 finite"),
+    (dict(split="preload", preload=[1.0, 1.0]),
+     r"preload must be one finite number or 3 \(one per actuator\)"),
     (dict(split="preload", preload=[40.0, 1.0, 1.0]), "preload < tau_max"),
     (dict(split="preload", preload_sign=[1.0, 0.0, 1.0]), "preload_sign entries must be"),
     (dict(tau_max=[30.0, -1.0, 30.0]), "tau_max > 0"),

@@ -108,3 +108,25 @@ def test_shipped_paths_read():
     for name in shipped_paths():
         r = read_path_file(name)
         assert r["path"].length > 0 and r["kinematic"]
+
+
+def test_both_splits_report_the_feasible_one(tmp_path, capsys):
+    """At 0.5 N m min-norm cannot even balance the Coulomb friction near rest, min-max can:
+    `plan` prints the min-max plan and names min-norm infeasible (it used to fail whole)."""
+    assert main(["plan", "--move", "high", "--tau-max", "0.5", "--grid", "300", "--json",
+                 "--out", str(tmp_path)]) == 0
+    row = json.loads(capsys.readouterr().out)["paths"][0]
+    assert "Coulomb friction" in row["min_norm"]["infeasible"]
+    assert row["min_max"]["duration_s"] > 1.0
+    assert max(row["min_max"]["tau_peak"]) <= 0.5 * (1 + 1e-6)
+    assert "saving_min_max_percent" not in row
+    assert sorted(p.name for p in tmp_path.glob("*.csv")) == ["plan_high_kinematic.csv",
+                                                              "plan_high_min_max.csv"]
+    # one split asked for, and infeasible: the error, as before
+    assert main(["plan", "--move", "high", "--tau-max", "0.5", "--split", "min_norm"]) == 2
+    assert "no feasible deceleration" in capsys.readouterr().err
+
+
+def test_tau_rate_needs_smooth(capsys):
+    assert main(["plan", "--move", "high", "--tau-rate", "5"]) == 2
+    assert "add --smooth" in capsys.readouterr().err

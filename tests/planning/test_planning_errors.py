@@ -274,3 +274,14 @@ def test_check_path_and_check_trajectory_are_one_check(m):
                 check_path(m, path)
             with pytest.raises(SingularityError):
                 check_trajectory(m, traj)
+
+
+def test_path_messages_name_the_value():
+    with pytest.raises(PlanError, match=r"angle1 \(rad\) must be a finite number, got nan"):
+        TaskPath.arc([0.25, 0.26], 0.02, 0.0, np.nan)
+    with pytest.raises(PlanError, match=r"radius \(m\) must be a finite number > 0, got -1"):
+        TaskPath.arc([0.25, 0.26], -1, 0.0, 1.0)
+    with pytest.raises(PlanError, match=r"arc lengths s must be finite, got s\[1\] = nan"):
+        LINE.evaluate([0.0, np.nan])
+    with pytest.raises(PlanError, match=r"arc length s = -1 m is outside the path \[0, 0.07071"):
+        LINE.evaluate([-1.0, 10.0])
