@@ -268,6 +268,38 @@ def weak_directions(cov, estimate, names, rel=0.1):
     return out
 
 
+#: a logged torque this many times the model's tau_max is a units or limits mistake
+TORQUE_SCALE_LIMIT = 2.0
+
+
+def _check_torque_scale(model, log):
+    """LogError if a logged torque exceeds tau_max by more than TORQUE_SCALE_LIMIT: the drives
+    cannot apply it, so the log's units (mN m?) or the model file's [limits] are wrong."""
+    w = np.asarray(model.spec.limits["tau_max"], dtype=float)
+    peak = np.abs(log.tau).max(axis=0)
+    i = int(np.argmax(peak / w))
+    if peak[i] > TORQUE_SCALE_LIMIT * w[i]:
+        raise LogError(f"{log.source}: column tau{i + 1} reaches {peak[i]:.4g}, "
+                       f"{peak[i] / w[i]:.3g} times the model's tau_max of {w[i]:g} N m: torques "
+                       f"must be in N m (a log in mN m is 1000 times too large), or the model "
+                       f"file's [limits] tau_max is not this robot's")
+
+
+def _check_signs(src, ls, nominal_base, names):
+    """LogError if every well-determined base parameter (|estimate| > 2 sigma) has the opposite
+    sign of the nominal model's: a reversed torque (or angle) convention, not a robot."""
+    est, std = ls["estimate"], ls["std"]
+    sure = (np.abs(est) > 2 * std) & (nominal_base != 0)
+    flipped = np.sign(est) == -np.sign(nominal_base)
+    if sure.sum() >= 3 and flipped[sure].all():
+        raise LogError(f"{src}: every well-determined base parameter ({int(sure.sum())} of "
+                       f"{len(est)}, e.g. {names[int(np.argmax(sure))]} = "
+                       f"{est[int(np.argmax(sure))]:.4g} against the nominal "
+                       f"{nominal_base[int(np.argmax(sure))]:.4g}) has the opposite sign of "
+                       f"the model's: the torques' sign convention is probably reversed "
+                       f"(tau_i must be positive in the direction of increasing qa_i)")
+
+
 def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
                  decimate=None, min_joint_speed=MIN_JOINT_SPEED, consistent=True):
     """The whole pipeline on one log: base parameters with ±2 sigma, and a physical theta.
@@ -310,6 +342,7 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
     base = base_parameters(model) if base is None else base
     inames = base.independent_names
     xe, _ = log_poses(model, log)
+    _check_torque_scale(model, log)
     if cutoff_hz is None:
         cutoff_hz, band, how = choose_cutoff(log, xe, factor)
     else:
@@ -334,6 +367,7 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
                        f"{sv[0] / max(sv[-1], 1e-300):.3g}; not seen: {', '.join(unseen)}")
     ls = weighted_ls(st["Phi"], st["u"])
     nominal = model.theta_nominal
+    _check_signs(src, ls, base.fold(nominal), inames)
     theta_ls = base.unfold(ls["estimate"], nominal)
     warnings = []
     if log.ignored:

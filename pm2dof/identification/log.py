@@ -26,6 +26,7 @@ both singularity thresholds, encoders consistent with the geometry). Both raise
 """
 import csv
 import io
+import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -131,10 +132,12 @@ def _from_columns(cols, meta, source, time_tolerance):
         missing.append("qa1..qan")
     if "tau" not in fam:
         missing.append("tau1..taun")
+    unknown = (f"; not recognised: {', '.join(extra)} (names are lower case, no separator: "
+               f"qa1, tau1, qb1)" if extra else "")
     if missing:
         raise LogError(f"{source}: missing column(s) {', '.join(missing)} (have "
                        f"{', '.join(cols) or 'none'}; the format is t, qa1..qan, tau1..taun, "
-                       f"optionally qb1..qbn)")
+                       f"optionally qb1..qbn){unknown}")
     n = max(fam["qa"])
     for name, idx in fam.items():
         want = set(range(1, n + 1))
@@ -142,7 +145,7 @@ def _from_columns(cols, meta, source, time_tolerance):
             gap = sorted(want - set(idx)) or sorted(set(idx) - want)
             raise LogError(f"{source}: columns {name}1..{name}{n} expected (qa1..qa{n} give {n} "
                            f"legs), but {name}{gap[0]} is "
-                           f"{'missing' if gap[0] <= n else 'extra'}")
+                           f"{'missing' if gap[0] <= n else 'extra'}{unknown}")
     ncol = {k: np.asarray(v, dtype=float) for k, v in cols.items()}
     N = len(ncol["t"])
     names = ["t"] + [f"{f}{i}" for f in ("qa", "tau", "qb") if f in fam for i in range(1, n + 1)]
@@ -164,6 +167,13 @@ def _from_columns(cols, meta, source, time_tolerance):
                        f"has t = {t[k - 1]:.6g} s ({bad.size} such row(s)); sort the log or "
                        f"remove repeated samples")
     T = float(np.median(dt))
+    try:
+        T_meta = float(meta.get("sample_period", "nan"))
+    except ValueError:
+        T_meta = math.nan
+    if math.isfinite(T_meta) and T_meta > 0 and abs(T / T_meta - 1) > 0.01:
+        raise LogError(f"{source}: column t steps {T:.6g} s (median) but the log's sample_period "
+                       f"is {T_meta:g} s: t must be in s (a log in ms steps 1000 times too far)")
     dev = np.abs(dt - T) / T
     bad = np.flatnonzero(dev > time_tolerance)
     if bad.size:
@@ -182,7 +192,7 @@ def _from_columns(cols, meta, source, time_tolerance):
 
 
 def _read_csv(path):
-    text = Path(path).read_text()
+    text = Path(path).read_text(encoding="utf-8-sig")    # a BOM (Excel's "CSV UTF-8") dropped
     meta, lines = {}, text.splitlines()
     k = 0
     while k < len(lines) and (lines[k].startswith("#") or not lines[k].strip()):

@@ -7,10 +7,13 @@ rollouts and an interruption loses at most the chunks in flight. Dask reruns the
 lost worker (``retries`` on top of its own rescheduling). Rows do not depend on the worker
 count, the cluster or the order in which chunks finish.
 """
+import contextlib
 import importlib.util
 import logging
 import os
+import signal
 import sys
+import threading
 import time
 
 from ..analysis.progress import Progress
@@ -41,6 +44,22 @@ class StudyRunError(Pm2dofError, RuntimeError):
     """The study could not run: no scheduler at the address, no workers, a failing chunk."""
 
 
+@contextlib.contextmanager
+def _workers_ignore_sigint():
+    """SIGINT ignored while the LocalCluster starts its worker processes, which inherit that
+    (an ignored signal stays ignored across exec, and Python then installs no handler): a
+    terminal's Ctrl-C, sent to the whole process group, reaches only this process, which
+    stops the run and closes the cluster, instead of each worker printing its traceback."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
 def connect(workers=None, scheduler=None, timeout=10.0, echo=None):
     """A ``distributed.Client``: to ``scheduler`` (an address such as ``tcp://10.0.0.5:8786``),
     else to a new ``LocalCluster`` of ``workers`` single-threaded worker processes (default: one
@@ -66,7 +85,7 @@ def connect(workers=None, scheduler=None, timeout=10.0, echo=None):
     if n < 1:
         raise ArgumentError(f"--workers must be >= 1, got {n}")
     import dask
-    with dask.config.set(QUIET_WORKERS):
+    with dask.config.set(QUIET_WORKERS), _workers_ignore_sigint():
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                                dashboard_address=":0", silence_logs=logging.ERROR)
     client = Client(cluster, timeout=timeout)

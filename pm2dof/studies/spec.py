@@ -372,25 +372,29 @@ def _study_table(pr, path, st, q):
     if st is None:
         return {}
     pr.keys("study", st, _STUDY_KEYS, ("name", "model", "moves", "seed", "draws"))
-    if q is not None:
-        st = {**st, **{k: v for k, v in q.items() if k in _QUICK_KEYS - {"grid_points"}}}
-    out = {"description": pr.text("study.description", st.get("description", "")),
-           "runs": pr.number("study.runs", st.get("runs", 1), integer=True, low=1),
-           "chunk": pr.number("study.chunk", st.get("chunk", 256), integer=True, low=1),
-           "settle_time": pr.number("study.settle_time", st.get("settle_time", 0.0), low=0.0),
-           "quantise": pr.boolean("study.quantise", st.get("quantise", True))}
+    quick = {k: v for k, v in (q or {}).items() if k in _QUICK_KEYS - {"grid_points"}}
+    st = {**st, **quick}
+
+    def at(key):       # where a value came from, for its message: [quick] overrides [study]
+        return f"{'quick' if key in quick else 'study'}.{key}"
+
+    out = {"description": pr.text(at("description"), st.get("description", "")),
+           "runs": pr.number(at("runs"), st.get("runs", 1), integer=True, low=1),
+           "chunk": pr.number(at("chunk"), st.get("chunk", 256), integer=True, low=1),
+           "settle_time": pr.number(at("settle_time"), st.get("settle_time", 0.0), low=0.0),
+           "quantise": pr.boolean(at("quantise"), st.get("quantise", True))}
     if "name" in st:
-        out["name"] = pr.text("study.name", st["name"], nonempty=True)
+        out["name"] = pr.text(at("name"), st["name"], nonempty=True)
     if "model" in st:
         out["model_path"] = _model_path(pr, path, st["model"])
-    if "generated" in st and pr.text("study.generated", st["generated"], nonempty=True):
+    if "generated" in st and pr.text(at("generated"), st["generated"], nonempty=True):
         out["generated_path"] = str((path.parent / Path(st["generated"]).expanduser()).resolve())
     if "moves" in st:
         out["moves"] = _moves(pr, st["moves"])
     if "seed" in st:
-        out["seed"] = pr.number("study.seed", st["seed"], integer=True, low=0)
+        out["seed"] = pr.number(at("seed"), st["seed"], integer=True, low=0)
     if "draws" in st:
-        out["draws"] = pr.number("study.draws", st["draws"], integer=True, low=1)
+        out["draws"] = pr.number(at("draws"), st["draws"], integer=True, low=1)
     return out
 
 

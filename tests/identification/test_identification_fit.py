@@ -286,3 +286,33 @@ def test_weak_excitation_is_flagged(m, base):
     log = excite(m, multisine(m, duration=3.0))
     res = identify_log(m, log, base=base, consistent=False)
     assert any("do not determine" in w and "beta" in w for w in res["warnings"]), res["warnings"]
+
+
+@pytest.fixture(scope="module")
+def simulated_log(m):
+    """A 4 s multi-sine on the simulated plant, as `identify excite` logs it."""
+    return excite(m, multisine(m, duration=4.0))
+
+
+def test_torques_far_beyond_tau_max_are_a_units_error(m, simulated_log):
+    """A log in mN m (x1000) fitted to 1000 times the nominal with exit 0 and a 'physical'
+    theta0 (review finding): no drive applies 100 times its limit, so the log is refused."""
+    log = simulated_log
+    scaled = IdentLog(t=log.t, qa=log.qa, tau=1000 * log.tau, meta=log.meta)
+    with pytest.raises(LogError, match=r"column tau\d reaches .* times the model's tau_max of "
+                                       r"30 N m: torques must be in N m"):
+        identify_log(m, scaled)
+    assert np.abs(log.tau).max() <= 30.0 + 1e-9        # the log itself is within the limits
+
+
+def test_reversed_torque_sign_is_named(m, simulated_log):
+    """Negated torques gave negative inertia in every direction and a usable-looking theta0."""
+    log = simulated_log
+    flipped = IdentLog(t=log.t, qa=log.qa, tau=-log.tau, meta=log.meta)
+    with pytest.raises(LogError, match=r"every well-determined base parameter .* has the "
+                                       r"opposite sign of the model's: the torques' sign"):
+        identify_log(m, flipped, consistent=False)
+    res = identify_log(m, log, consistent=False)        # the log as logged: fitted, and its
+    sure = np.abs(res["estimate"]) > 2 * res["std"]     # well-determined ones agree in sign
+    assert sure.sum() >= 3
+    assert np.all(np.sign(res["estimate"][sure]) == np.sign(res["nominal"][sure]))

@@ -164,3 +164,30 @@ def test_an_encoder_offset_is_named(m, good):
     qb[:, 0] *= -1                        # passive angle with the wrong sign
     with pytest.raises(LogError, match=r"column qb1 disagrees"):
         log_poses(m, IdentLog(t=good.t, qa=good.qa, tau=good.tau, qb=qb))
+
+
+def test_a_utf8_bom_is_read_as_the_same_log(tmp_path, good):
+    """Excel's "CSV UTF-8" starts with a BOM: it hid the first comment line (taken as the
+    header) or showed as '\\ufefft' in 'missing column(s) t'."""
+    p = _csv(tmp_path, good)
+    bom = tmp_path / "bom.csv"
+    bom.write_bytes(b"\xef\xbb\xbf" + p.read_bytes())
+    back = read_log(bom)
+    assert np.array_equal(back.t, good.t) and np.array_equal(back.tau, good.tau)
+    assert back.meta == read_log(p).meta
+
+
+def test_a_misspelled_column_is_named(tmp_path, good):
+    def rename(lines):
+        h = _header_index(lines)
+        lines[h] = lines[h].replace("qa2", "qa_2")
+    with pytest.raises(LogError, match=r"qa2 is missing; not recognised: qa_2 \(names are "
+                                       r"lower case"):
+        read_log(_csv(tmp_path, good, rename))
+
+
+def test_time_in_ms_is_named_against_the_sample_period(tmp_path, good):
+    ms = IdentLog(t=1000 * good.t, qa=good.qa, tau=good.tau, qb=good.qb, meta=good.meta)
+    with pytest.raises(LogError, match=r"column t steps 2 s \(median\) but the log's "
+                                       r"sample_period is 0.002 s: t must be in s"):
+        read_log(_csv(tmp_path, ms))

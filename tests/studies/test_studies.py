@@ -108,6 +108,17 @@ def test_bad_study_files_name_the_key(tmp_path, edit, key, reason):
     assert any(pr.key == key and reason in pr.reason for pr in problems), problems
 
 
+def test_a_bad_quick_value_is_named_under_quick(tmp_path):
+    """[quick] overrides [study] under --quick; a bad value there was reported as
+    [study.draws] (review finding), where the value is fine."""
+    p = _write(tmp_path, BASE + "\n[quick]\ndraws = -1\n")
+    read_study(p)                                          # without --quick: not used
+    with pytest.raises(StudyFileError) as exc:
+        read_study(p, quick=True)
+    assert [(pr.key, pr.reason) for pr in exc.value.problems] == [("quick.draws",
+                                                                   "must be >= 1, got -1")]
+
+
 def test_not_toml_and_missing_file(tmp_path):
     with pytest.raises(StudyFileError, match="not valid TOML"):
         read_study(_write(tmp_path, "[study\nname="))
