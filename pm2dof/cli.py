@@ -93,8 +93,8 @@ def cmd_models(args):
     w = max(len(r[0]) for r in rows)
     for name, legs, desc in rows:
         print(f"{name:{w}s}  {legs}  {desc}")
-    print(f"\nLoad one with --model NAME or pm2dof.load_model(NAME). To start your own robot, "
-          f"copy one (pm2dof models --copy NAME DIR) and run pm2dof derive DIR/NAME.toml.")
+    print("\nLoad one with --model NAME or pm2dof.load_model(NAME). To start your own robot, "
+          "copy one (pm2dof models --copy NAME DIR) and run pm2dof derive DIR/NAME.toml.")
     return 0
 
 

@@ -1,7 +1,6 @@
 # Baselines and workloads of the benchmark: the NumPy reference and SymPy-lambdify steps, the
 # operating point, random step inputs and the long rollout trajectory.
 import math
-import sys
 import time
 
 import numpy as np

@@ -42,7 +42,7 @@ def derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes):
     missing; ``notes`` says why)."""
     res = {}
     xe, xed, tau, th = _state(model, traj, len(traj.t) // 2)
-    n, p = model.n_legs, len(th)
+    n = model.n_legs
     x = np.concatenate([xe, xed])
     T = float(model.spec.sensing["sample_period"])
     outs = {k: [np.empty(s) for s in model.function(k).sizes_out] for k in

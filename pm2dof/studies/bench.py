@@ -20,7 +20,6 @@ import statistics
 import tempfile
 import time
 import tracemalloc
-from pathlib import Path
 
 from ..control.simulate import simulate
 from .evaluate import rollout_setup, run_chunk

@@ -12,7 +12,6 @@ import importlib.util
 import logging
 import os
 import signal
-import sys
 import threading
 import time
 

@@ -20,7 +20,7 @@ from ..analysis.results import provenance, write_atomic, write_json
 from ..core.errors import Pm2dofError
 from .spec import StudyFileError
 
-__all__ = ["StudyOutError", "prepare_out", "finished_chunks", "write_chunk", "finish_out",
+__all__ = ["StudyOutError", "prepare_out", "write_chunk", "finish_out",
            "read_results", "chunk_path"]
 
 _NULLABLE = ("theta_error",)   # null where it does not apply (APD) or the rollout diverged
