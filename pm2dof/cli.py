@@ -437,11 +437,16 @@ def cmd_study_run(args):
         print(f"\npm2dof: interrupted; the finished chunks are in {args.out}/results. Run the "
               f"same command again to continue where it stopped.", file=sys.stderr)
         return 130
+    if res["skipped"] == res["chunks"]:
+        print(f"{res['rows']} rows in {args.out}/results: all {res['chunks']} chunks were already "
+              f"there, nothing to run. Next: pm2dof study report {args.out}")
+        return 0
     print(f"{res['rows']} rows in {args.out}/results ({res['skipped']} of {res['chunks']} chunks "
           f"were already there). Wall time {res['seconds']:.1f} s, {res['rollouts_per_s']:,.0f} "
           f"rollouts/s, including {res['cluster_seconds']:.1f} s to set up and close the cluster; "
           f"running the rollouts {res['run_seconds']:.1f} s, {res['run_rollouts_per_s']:,.0f} "
-          f"rollouts/s (the progress line's rate). Next: pm2dof study report {args.out}")
+          f"rollouts/s (the rate the progress bar shows on a terminal). Next: pm2dof study "
+          f"report {args.out}")
     return 0
 
 

@@ -127,6 +127,10 @@ def test_interrupted_or_killed_run_resumes_to_the_same_dataset(tmp_path, study_f
         r = subprocess.run(cmd, capture_output=True, text=True, timeout=DEADLINE, cwd=ROOT)
         assert r.returncode == 0, r.stderr
         assert f"{n_before} chunk(s) already in" in r.stdout
+        again = subprocess.run(cmd, capture_output=True, text=True, timeout=DEADLINE, cwd=ROOT)
+        assert again.returncode == 0, again.stderr       # finished: no cluster, no 0 rollouts/s
+        assert (f"all {study.n_chunks} chunks were already there, nothing to run"
+                in again.stdout and "rollouts/s" not in again.stdout), again.stdout
     finally:
         _stop(procs)
     _assert_same(out, _reference(study))
