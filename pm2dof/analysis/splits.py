@@ -17,8 +17,7 @@ actuator reversed its sign or fell short of its preload, by that much).
 """
 import numpy as np
 
-from ..core.errors import ArgumentError
-from ..control.controllers import SPLITS, APDController, NAController
+from ..control.controllers import SPLITS, APDController, NAController, per_actuator
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
 from .progress import bar
@@ -48,14 +47,7 @@ def preload_settings(model, preload=None, preload_sign=None):
     n, ctl = model.n_legs, model.spec.control
     pre = ctl["preload"] if preload is None else preload
     sgn = ctl["preload_sign"] if preload_sign is None else preload_sign
-    out = []
-    for name, value in (("preload", pre), ("preload_sign", sgn)):
-        v = np.asarray(value, dtype=float).ravel()
-        if v.size not in (1, n):
-            raise ArgumentError(f"{name} must be one value or {n} (one per actuator), got "
-                                f"{v.size}: {v.tolist()}")
-        out.append(np.broadcast_to(v, (n,)).copy())
-    return tuple(out)
+    return per_actuator("preload", pre, n), per_actuator("preload_sign", sgn, n)
 
 
 def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speeds=None,

@@ -36,9 +36,9 @@ def velocity_filter_alpha(sample_period, cutoff_hz):
     return sample_period / (sample_period + 1.0 / (2.0 * math.pi * cutoff_hz))
 
 
-def _vector(name, value, n):
-    """``value`` as (n,) floats: n numbers, or one for every actuator (as the planner and the
-    CLI take it)."""
+def per_actuator(name, value, n):
+    """``value`` as (n,) floats: n finite numbers, or one for every actuator (as the planner
+    and the CLI take it); ArgumentError naming ``name`` otherwise."""
     try:
         v = np.array(value, dtype=float)
     except (TypeError, ValueError):
@@ -159,9 +159,10 @@ class _Controller:
         self.sample_period = T
         self.theta0 = model.checked_theta(theta0, "theta0")
         n = model.n_legs
-        tau_max = _vector("tau_max", spec.limits["tau_max"] if tau_max is None else tau_max, n)
-        preload = _vector("preload", ctl["preload"] if preload is None else preload, n)
-        preload_sign = _vector("preload_sign", ctl["preload_sign"] if preload_sign is None
+        tau_max = per_actuator("tau_max", spec.limits["tau_max"] if tau_max is None else tau_max,
+                               n)
+        preload = per_actuator("preload", ctl["preload"] if preload is None else preload, n)
+        preload_sign = per_actuator("preload_sign", ctl["preload_sign"] if preload_sign is None
                                else preload_sign, n)
         if np.any(tau_max <= 0) or np.any(preload < 0) or np.any(preload >= tau_max):
             raise ArgumentError(f"need 0 <= preload < tau_max and tau_max > 0, got preload "
