@@ -10,7 +10,7 @@
 * ``simulate`` of :meth:`pm2dof.Trajectory.hold` with the model's quantised encoders keeps
   every actuated joint within one encoder count (2 pi / [sensing] encoder_counts_per_rev rad,
   measured at the joints: the true qa = ik(xe) against its start) for NA and APD. With
-  sign(0) = +1 the paper's robot drifted 1.7 (NA) and 2.7 (APD) counts.
+  sign(0) = +1 the paper's robot drifted up to 1.7 (NA) and 4.0 (APD) counts.
 """
 import numpy as np
 import pytest
