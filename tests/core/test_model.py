@@ -617,8 +617,9 @@ def test_Y_friction_uses_sign_zero_zero(m, speed):
 def test_Y_friction_perpendicular_xed_generic_poses(m, sample_xe):
     """xed = c * perp(S[i]) at generic poses: qd_ai = 0 up to rounding of the C's own S xed.
 
-    The exact-zero case is above; here the fc_i column must be +-S[i] (a sign) and the fv_i
-    column ~0, i.e. the perpendicular direction really makes leg i's active joint still.
+    The exact-zero case is above; here the fc_i column must be +-S[i] (qd_ai rounds to a tiny
+    nonzero: its sign) or exactly 0 (qd_ai rounds to 0: sign(0) = 0), and the fv_i column ~0,
+    i.e. the perpendicular direction really makes leg i's active joint still.
     """
     for k, xe in enumerate(sample_xe(m, 13, 10)):
         q = m.ik(xe)
@@ -629,7 +630,9 @@ def test_Y_friction_perpendicular_xed_generic_poses(m, sample_xe):
             info = fmt(xe=xe, leg=i + 1, xed=xed)
             check(f"Y fv{i + 1} column at perp xed", Yq[:, 9 + i], np.zeros(2), TOL_EXACT,
                   maxabs(S[i]) ** 2 * maxabs(xed), info, m)
-            assert np.allclose(np.abs(Yq[:, 12 + i]), np.abs(S[i]), rtol=0, atol=1e-15 * maxabs(S[i])), info
+            fc = Yq[:, 12 + i]
+            assert (np.allclose(np.abs(fc), np.abs(S[i]), rtol=0, atol=1e-15 * maxabs(S[i]))
+                    or not np.any(fc)), info
 
 
 # --------------------------------------------------------------------------------------
