@@ -31,7 +31,6 @@ are imported on first use, so a real-time process never pays for them.
 """
 import importlib
 
-from . import _moved
 from .control.controllers import (STATUS_NAMES, APDController, CTCController, NAController,
                                   Status)
 from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
@@ -112,5 +111,3 @@ def __getattr__(name):
 def __dir__():
     return sorted(set(globals()) | set(__all__))
 
-
-_moved.install()

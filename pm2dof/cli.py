@@ -222,22 +222,6 @@ def cmd_identify_without_subcommand(args):
                         "report, and pm2dof identify fit)")
 
 
-#: the flags that chose a mode of `pm2dof identify` before it had sub-commands -> the command
-#: that replaced each, and whether the flag took a value
-_IDENTIFY_REPLACED = {"--report": ("pm2dof identify report", 0),
-                      "--excite": ("pm2dof identify excite --out LOG", 0),
-                      "--data": ("pm2dof identify fit LOG", "?"),
-                      "--design-excitation": ("pm2dof identify design --out FILE", 0),
-                      "--monte-carlo": ("pm2dof identify monte-carlo N", "?")}
-
-
-class _Replaced(argparse.Action):
-    """A removed option: refused while parsing, naming the command that replaced it."""
-
-    def __call__(self, parser, namespace, values, option_string=None):
-        raise ArgumentError(f"pm2dof identify {option_string} was replaced by: {self.const}")
-
-
 def _wrap(text):
     """A description wrapped for a parser whose epilog keeps its line breaks."""
     import textwrap
@@ -263,8 +247,6 @@ def _identify_parser(sub, common):
                            "  pm2dof identify excite --excitation exc.toml --out run.csv\n"
                            "  pm2dof identify fit run.csv --save theta.json --seed-na\n"
                            "  pm2dof identify monte-carlo 50 --excitation exc.toml"))
-    for flag, (new, nargs) in _IDENTIFY_REPLACED.items():
-        p.add_argument(flag, action=_Replaced, nargs=nargs, const=new, help=argparse.SUPPRESS)
     for flag in ("--model", "--generated"):   # before the sub-command: as after it
         p.add_argument(flag, dest=f"identify_{flag[2:]}", help=argparse.SUPPRESS)
     p.set_defaults(func=cmd_identify_without_subcommand)

@@ -34,15 +34,14 @@ ALLOWED = {
     "figures": _RUNTIME | {"analysis", "studies", "figures", "planning", "linear"},   # 4
     "cli": _RUNTIME | {"analysis", "identification", "bench", "studies", "figures", "cli",
                        "derive", "planning", "linear"},                         # 4
-    "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
+    "__init__": _RUNTIME,                               # the public API (lazy names aside)
     "__main__": {"cli"},
-    "_moved": set(),
 }
 # sub-package -> third-party top-level modules it may import (besides the standard library)
 _HEAVY = {"sympy", "casadi", "matplotlib", "dask", "distributed", "pyarrow", "scipy"}
 THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
-    "__main__": set(), "_moved": set(),
+    "__main__": set(),
     "analysis": {"numpy", "tqdm"},
     "identification": {"numpy", "scipy", "casadi", "pyarrow"},   # the ident extra; lazily
     "linear": {"numpy", "scipy", "control"},            # the [control] extra (python-control)
