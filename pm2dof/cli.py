@@ -30,7 +30,7 @@ import sys
 import warnings
 from pathlib import Path
 
-from .analysis.progress import Progress
+from .infra.progress import Progress
 from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
 
 __all__ = ["main", "build_parser"]
@@ -190,12 +190,14 @@ def cmd_identify_excite(args):
 
 
 def cmd_identify_fit(args):
+    from .analysis.experiment import seeded_table3
     from .identification.report import run_fit
     run_fit(args.log, model=args.model, generated=args.generated,
             excitation_file=args.excitation, duration=args.duration,
             quantise=not args.exact_encoders, controller=args.controller, save=args.save,
             as_json=args.json, cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
-            time_tolerance=args.time_tolerance, seed=args.seed_na,
+            time_tolerance=args.time_tolerance,
+            seed=seeded_table3 if args.seed_na else None,
             progress=_ident_progress(args))
     return 0
 
@@ -373,7 +375,7 @@ def _per_actuator(values, n, flag):
 
 
 def cmd_maps(args):
-    from .analysis.results import dumps
+    from .infra.results import dumps
     from .figures.maps import maps_figures
     m = _model(args)
     tau_max = None if args.tau_max is None else _per_actuator(args.tau_max, m.n_legs, "--tau-max")
@@ -458,7 +460,7 @@ def cmd_study_report(args):
 
 
 def cmd_study_bench(args):
-    from .analysis.results import dumps
+    from .infra.results import dumps
     from .studies.bench import format_study_bench, study_bench
     res = study_bench(quick=args.quick, progress=None if args.json else _progress)
     print(dumps(res) if args.json else format_study_bench(res))
@@ -537,7 +539,7 @@ def _study_parser(sub):
 
 
 def cmd_plan(args):
-    from .analysis.results import dumps, provenance, write_atomic
+    from .infra.results import dumps, provenance, write_atomic
     from .planning.report import closed_loop, csv_text, format_report, model_moves, plan_paths
     if args.tau_rate is not None and not args.smooth:
         raise ArgumentError("--tau-rate limits the smoothed plan's torque rate: add --smooth")
@@ -581,7 +583,7 @@ def cmd_plan(args):
 
 
 def cmd_bench(args):
-    from .analysis.results import dumps
+    from .infra.results import dumps
     from .bench import format_bench, run_bench
     res = run_bench(_model(args), quick=args.quick, progress=None if args.json else _progress)
     print(dumps(res) if args.json else format_bench(res))
@@ -803,7 +805,7 @@ _OUT_FOLDERS = {"demo", "figures", "splits", "maps", "plan", "study"}
 def _check_outputs(args):
     """Refuse an output that cannot be written before any work: a --save or file --out that is
     a folder or lies under a file, a folder --out that is a file (OutputError)."""
-    from .analysis.results import output_folder, output_path
+    from .infra.results import output_folder, output_path
     if getattr(args, "save", None):
         output_path(args.save)
     out = getattr(args, "out", None)
@@ -812,7 +814,7 @@ def _check_outputs(args):
 
 
 def main(argv=None):
-    from .analysis import results
+    from .infra import results
     ap = build_parser()
     try:
         args = ap.parse_args(argv)

@@ -25,15 +25,16 @@ ALLOWED = {
     "derive": {"core", "derive"},                       # build time: SymPy, CasADi -> C
     "control": {"core", "control"},                     # 2: controllers, rollouts
     "reference": {"core", "reference"},                 # beside: NumPy formulations
+    "infra": {"core", "infra"},                         # below 3: result files, progress
     "linear": _RUNTIME | {"linear"},                    # 3: linearisation, LQR (SciPy)
-    "analysis": _RUNTIME | {"analysis", "linear"},      # 3: experiment, reports, results
-    "identification": _RUNTIME | {"analysis", "identification"},   # 3: logs, excitation, fit
-    "planning": _RUNTIME | {"analysis", "planning"},    # 3: motion planning (issue 20)
-    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive", "planning", "linear"},
-    "studies": _RUNTIME | {"analysis", "identification", "studies", "linear"},   # 3: Dask
-    "figures": _RUNTIME | {"analysis", "studies", "figures", "planning", "linear"},   # 4
-    "cli": _RUNTIME | {"analysis", "identification", "bench", "studies", "figures", "cli",
-                       "derive", "planning", "linear"},                         # 4
+    "analysis": _RUNTIME | {"infra", "analysis", "linear"},   # 3: experiment, reports, maps
+    "identification": _RUNTIME | {"infra", "identification"},   # 3: logs, excitation, fit
+    "planning": _RUNTIME | {"infra", "planning"},       # 3: motion planning (issue 20)
+    "bench": _RUNTIME | {"infra", "reference", "bench", "derive", "planning", "linear"},
+    "studies": _RUNTIME | {"infra", "identification", "studies", "linear"},   # 3: Dask
+    "figures": _RUNTIME | {"infra", "analysis", "studies", "figures", "planning", "linear"},  # 4
+    "cli": _RUNTIME | {"infra", "analysis", "identification", "bench", "studies", "figures",
+                       "cli", "derive", "planning", "linear"},                  # 4
     "__init__": _RUNTIME,                               # the public API (lazy names aside)
     "__main__": {"cli"},
 }
@@ -42,13 +43,14 @@ _HEAVY = {"sympy", "casadi", "matplotlib", "dask", "distributed", "pyarrow", "sc
 THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
     "__main__": set(),
-    "analysis": {"numpy", "tqdm"},
+    "infra": {"numpy", "tqdm"},                         # tqdm: the progress bars
+    "analysis": {"numpy"},
     "identification": {"numpy", "scipy", "casadi", "pyarrow"},   # the ident extra; lazily
     "linear": {"numpy", "scipy", "control"},            # the [control] extra (python-control)
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
     "bench": {"numpy", "casadi", "sympy", "toppra", "pinocchio"},  # baselines; each optional
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
-    "planning": {"numpy", "casadi", "tqdm"},            # CasADi only in plan_smooth (lazily)
+    "planning": {"numpy", "casadi"},                    # CasADi only in plan_smooth (lazily)
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},
     "cli": set(),
 }
@@ -89,8 +91,8 @@ def test_every_sub_package_has_a_declared_layer():
     units = {_unit(p) for p in MODULES}
     assert units <= set(ALLOWED), f"undeclared sub-packages: {sorted(units - set(ALLOWED))}"
     assert units <= set(THIRD_PARTY)
-    assert {"core", "control", "analysis", "identification", "bench", "figures", "reference", "cli",
-            "derive"} <= units
+    assert {"core", "control", "infra", "analysis", "identification", "bench", "figures",
+            "reference", "cli", "derive"} <= units
 
 
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))
@@ -115,7 +117,7 @@ def test_the_checker_sees_relative_and_function_level_imports(tmp_path):
     found = {m for _, m in _imports(src)}
     assert {"pm2dof.core._cbind", "pm2dof.core.errors", "numpy"} <= found, found
     found = {m for _, m in _imports(PKG / "figures" / "experiment.py")}
-    assert "matplotlib" in found and "pm2dof.analysis.results" in found, found
+    assert "matplotlib" in found and "pm2dof.infra.results" in found, found
 
 
 _PROBE = r"""

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..core.errors import ArgumentError, WorkspaceError
 from ..control.simulate import pose_measures
-from .progress import bar
+from ..infra.progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
            "maps_summary", "format_maps_summary", "FIELDS"]

@@ -3,7 +3,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.results import provenance, save_figure
+from ..infra.results import provenance, save_figure
 from ..analysis.splits import split_comparison, tau_max_sweep
 from .experiment import COLORS, LABELS, _plt
 from .style import legend_outside, log_ticks

@@ -33,7 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.results import write_atomic
+from ..infra.results import write_atomic
 from ..core.errors import ClosureError, Pm2dofError, WorkspaceError
 from .model_ref import mismatch, rebase
 

@@ -15,8 +15,8 @@ import signal
 import threading
 import time
 
-from ..analysis.progress import Progress
-from ..analysis.progress import bar as progress_bar
+from ..infra.progress import Progress
+from ..infra.progress import bar as progress_bar
 from ..core.errors import ArgumentError, Pm2dofError
 from ..core.model import load_model
 from .evaluate import check_study, run_chunk
@@ -114,7 +114,7 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
         generated code, and the model file at the same path.
     client : distributed.Client, optional
         Use this client (not closed here) instead of ``workers`` / ``scheduler``.
-    progress : bool or pm2dof.analysis.progress.Progress
+    progress : bool or pm2dof.infra.progress.Progress
         True: a bar on stderr when it is a terminal (rollouts done, the rate since the first
         task, ETA), nothing otherwise; a Progress: its bar; False: none.
 

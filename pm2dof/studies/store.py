@@ -16,7 +16,7 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from ..analysis.results import provenance, write_atomic, write_json
+from ..infra.results import provenance, write_atomic, write_json
 from ..core.errors import Pm2dofError
 from .spec import StudyFileError
 
