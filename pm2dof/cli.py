@@ -30,8 +30,8 @@ import sys
 import warnings
 from pathlib import Path
 
-from .infra.progress import Progress
 from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
+from .infra.progress import Progress
 
 __all__ = ["main", "build_parser"]
 
@@ -375,8 +375,8 @@ def _per_actuator(values, n, flag):
 
 
 def cmd_maps(args):
-    from .infra.results import dumps
     from .figures.maps import maps_figures
+    from .infra.results import dumps
     m = _model(args)
     tau_max = None if args.tau_max is None else _per_actuator(args.tau_max, m.n_legs, "--tau-max")
     summary, paths = maps_figures(m, args.out, args.resolution, tau_max=tau_max,
@@ -583,8 +583,8 @@ def cmd_plan(args):
 
 
 def cmd_bench(args):
-    from .infra.results import dumps
     from .bench import format_bench, run_bench
+    from .infra.results import dumps
     res = run_bench(_model(args), quick=args.quick, progress=None if args.json else _progress)
     print(dumps(res) if args.json else format_bench(res))
     return 0

@@ -39,10 +39,23 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, include
            **controller_options):
     """Run APD, NA and NA with Gamma = 0 on each move. Returns {speed: {name: SimResult}}.
 
-    ``controller_options`` (e.g. ``velocity_filter_hz``) go to all the controllers alike;
-    ``truth`` replaces the plant truth (see :func:`pm2dof.plant_truth`); ``include`` adds
-    model-based controllers of :data:`EXTRA_CONTROLLERS` ("ctc": computed torque, "lqr":
-    time-varying LQR along each move), each with the nominal model (Tables 1-2).
+    Parameters
+    ----------
+    model : Model
+        The robot; its line moves are the moves, its ``[plant]`` the simulated plant.
+    speeds : list of str, optional
+        The moves to run (default: every line move of the model, the paper's "low", "high").
+    quantise : bool
+        Encoder quantisation in the rollouts (``pm2dof table3 --exact-encoders``: False).
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        Stage lines; a ``Progress`` also draws a bar over the rollouts.
+    truth : dict, optional
+        Replaces the plant truth (see :func:`pm2dof.plant_truth`).
+    include : sequence of str
+        Model-based controllers of :data:`EXTRA_CONTROLLERS` to add ("ctc": computed torque,
+        "lqr": time-varying LQR along each move), each with the nominal model (Tables 1-2).
+    **controller_options
+        Go to all the controllers alike (e.g. ``velocity_filter_hz``).
     """
     speeds = list(line_moves(model)) if speeds is None else speeds
     unknown = sorted(set(include) - set(EXTRA_CONTROLLERS))

@@ -65,6 +65,14 @@ def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speed
         of 0 still keeps the signs.
     speeds : list of str, optional
         Moves of ``[trajectories]`` (default: all).
+    splits : sequence of str
+        The torque splits to compare (default: all, ``pm2dof.control.controllers.SPLITS``).
+    controllers : sequence of str
+        "apd", "na" or both.
+    quantise : bool
+        Encoder quantisation in the rollouts.
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        Stage lines; a ``Progress`` also draws a bar over the rollouts.
 
     Returns
     -------

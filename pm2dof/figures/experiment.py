@@ -2,8 +2,8 @@
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from ..infra.results import save_figure
 from ..control.trajectory import line_moves
+from ..infra.results import save_figure
 from .style import kind_of, legend_outside, param_styles, place_legend, tex_name
 
 __all__ = ["write_figures", "experiment_figures"]

@@ -57,8 +57,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..infra.progress import bar
 from ..core.errors import Pm2dofError
+from ..infra.progress import bar
 from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED
 from .model_ref import mismatch, model_entries

@@ -20,9 +20,9 @@ import math
 
 import numpy as np
 
-from ..infra.progress import bar
 from ..control.simulate import plant_truth, theta_truth
 from ..core.errors import ArgumentError
+from ..infra.progress import bar
 from .base import base_parameters, inertial_mask, region_center
 from .excitation import excite
 from .fit import identify_log

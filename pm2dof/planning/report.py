@@ -8,10 +8,10 @@ split's torques as CSV; :func:`format_report` renders all of it.
 """
 import numpy as np
 
-from ..infra.results import provenance
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from ..core.errors import PlanError
+from ..infra.results import provenance
 from .kinematic import plan_kinematic
 from .stages import limits
 from .topp import plan_time_optimal
