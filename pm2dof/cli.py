@@ -816,11 +816,7 @@ def _check_outputs(args):
 def main(argv=None):
     from .infra import results
     ap = build_parser()
-    try:
-        args = ap.parse_args(argv)
-    except Pm2dofError as exc:  # an option refused while parsing (a replaced one)
-        print(f"pm2dof: error: {exc}", file=sys.stderr)
-        return 2
+    args = ap.parse_args(argv)
     results.COMMAND_LINE = ["pm2dof", *(sys.argv[1:] if argv is None else argv)]
     global _progress
     _progress = Progress(quiet=getattr(args, "quiet", False))
