@@ -8,8 +8,9 @@
   those of each page of the documentation site (docs/*.md, one interpreter per page); every
   ``pm2dof ...`` command line in their shell blocks parses with the real CLI parser, and every
   ``make`` target they name exists. So neither the README nor the docs can drift from the code.
-* The README's links into docs/ exist, and the API reference page (docs/api.md) documents
-  exactly the names of ``pm2dof.__all__``, each from the module that holds it.
+* The README's links into docs/ exist, the home page (docs/index.md) links every page, and
+  the API reference page (docs/api.md) documents exactly the names of ``pm2dof.__all__``,
+  each from the module that holds it.
 """
 import importlib
 import os
@@ -160,6 +161,14 @@ def test_readme_links_into_the_docs_exist():
     assert len(links) >= 5, links
     missing = [link for link in links if not (REPO / link).is_file()]
     assert not missing, f"README links to missing files: {missing}"
+
+
+def test_the_home_page_links_every_page():
+    """docs/index.md links every other page of the site (every results page among them)."""
+    links = set(re.findall(r"\]\(([\w-]+\.md)", (DOCS / "index.md").read_text()))
+    pages = {p.name for p in DOC_PAGES} - {"index.md"}
+    assert pages <= links, f"not linked from docs/index.md: {sorted(pages - links)}"
+    assert {p for p in pages if p.startswith("results-")} and links <= pages | {"index.md"}
 
 
 def test_api_page_documents_exactly_all():

@@ -4,6 +4,8 @@
 * Static: every import statement of every module (top level and inside functions, absolute or
   relative) is resolved, and a module of one sub-package may import only the sub-packages and
   third-party libraries its layer allows (:data:`ALLOWED`, :data:`THIRD_PARTY`).
+* docs/developing.md's table of the layers says the same as :data:`ALLOWED` and
+  :data:`THIRD_PARTY`.
 * Dynamic: in a fresh interpreter, ``import pm2dof`` (and its core and control layers, and a
   controller step and a rollout) loads none of SymPy, CasADi, matplotlib, Dask, pyarrow, SciPy.
 
@@ -158,3 +160,19 @@ def test_importing_an_unbuilt_source_tree_says_what_is_missing(tmp_path):
                     f"missing from {tmp_path / 'pm2dof' / 'core'}; build it with `pip install "
                     f"-e .` (or `make install`) in the source tree"), r.stderr
     assert "circular import" not in r.stderr
+
+
+def test_the_developing_page_lists_every_layer_as_here():
+    """docs/developing.md's table of the layers is ALLOWED and THIRD_PARTY, row for row."""
+    import re
+    page = (PKG.parent / "docs" / "developing.md").read_text()
+    rows = {}
+    for line in page.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == 5 and re.fullmatch(r"`\w+`", cells[0]):
+            rows[cells[0].strip("`")] = (set(re.findall(r"`(\w+)`", cells[3])),
+                                         set(re.findall(r"`(\w+)`", cells[4])))
+    assert set(rows) == set(ALLOWED), sorted(set(rows) ^ set(ALLOWED))
+    for unit, (pm2dof, third) in rows.items():
+        assert pm2dof == ALLOWED[unit], (unit, sorted(pm2dof ^ ALLOWED[unit]))
+        assert third == THIRD_PARTY[unit], (unit, sorted(third ^ THIRD_PARTY[unit]))
