@@ -110,6 +110,14 @@ class DerivativeMethods:
 
         Parameters
         ----------
+        xe : array_like (2,)
+            The pose, m.
+        xed : array_like (2,)
+            The velocity, m/s.
+        tau_a : array_like (n,)
+            The actuator torques, N*m.
+        theta : array_like (p,)
+            The dynamic parameters (:attr:`param_names` order).
         out : tuple of 4 ndarrays, optional
             Arrays of shapes (2, 2), (2, 2), (2, n), (2, p) to write into (e.g. an earlier
             result): no allocation.
@@ -151,6 +159,19 @@ class DerivativeMethods:
         (``pm2dof.plant_truth``). Raises SingularityError when x's pose is singular; a
         stage that leaves the workspace gives NonFiniteError.
 
+        Parameters
+        ----------
+        x : array_like (4,)
+            The state [xe, xed], m, m/s.
+        tau_a : array_like (n,)
+            The held actuator torques, N*m.
+        theta : array_like (p,)
+            The dynamic parameters (:attr:`param_names` order).
+        period : float, optional
+            The sample period, s (default ``[sensing] sample_period``).
+        out : ndarray (4,), optional
+            Written into and returned (no allocation).
+
         Returns
         -------
         x_next : ndarray (4,)
@@ -162,11 +183,17 @@ class DerivativeMethods:
         torque, by forward-mode AD of the RK4 stages (each stage's Jacobian from
         :meth:`forward_dynamics_jacobians`' generated code).
 
+        Parameters
+        ----------
+        x, tau_a, theta, period :
+            As :meth:`sampled_step`.
+        out : tuple of 2 ndarrays, optional
+            Arrays of shapes (4, 4), (4, n) to write into (no allocation).
+
         Returns
         -------
         SampledStepJacobians
             ``d_x`` (4, 4), ``d_tau_a`` (4, n) (the discrete-time A and B at x, tau_a).
-            ``out=``: a tuple of two such arrays.
         """
         return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians,
                                     ((4, 4), (4, self.n_legs)), out,
@@ -175,12 +202,29 @@ class DerivativeMethods:
     def inverse_dynamics(self, xe, xed, xedd, theta, out=None):
         """The task force u = Me xedd + Ce xed + S^T f_a (2,), N (eqs. 10-12, eq. 2 friction)
         that gives the acceleration ``xedd`` (2,) m/s^2 at the pose ``xe`` and velocity
-        ``xed``. Actuator torques: any tau_a with S^T tau_a = u (:meth:`torque_splits`)."""
+        ``xed``. Actuator torques: any tau_a with S^T tau_a = u (:meth:`torque_splits`).
+
+        Parameters
+        ----------
+        xe, xed, theta :
+            The state and the parameters, as :meth:`forward_dynamics_jacobians`.
+        xedd : array_like (2,)
+            The acceleration, m/s^2.
+        out : ndarray (2,), optional
+            Written into and returned (no allocation).
+        """
         return self._eval("inverse_dynamics", (2,), out, xe, xed, xedd, theta)
 
     def inverse_dynamics_jacobians(self, xe, xed, xedd, theta, out=None):
         """Jacobians of :meth:`inverse_dynamics` w.r.t. the state (reverse-mode AD; friction's
         sign contributes 0). d u / d xedd is Me.
+
+        Parameters
+        ----------
+        xe, xed, xedd, theta :
+            As :meth:`inverse_dynamics`.
+        out : tuple of 2 ndarrays, optional
+            Arrays of shapes (2, 2), (2, 2) to write into (no allocation).
 
         Returns
         -------
@@ -198,7 +242,18 @@ class DerivativeMethods:
         (:meth:`forward_dynamics_jacobians`). Discrete (``discrete=True``): dx_{k+1} = A dx_k
         + B dtau_k for one sample of ``period`` s (default ``[sensing] sample_period``) under
         the zero-order hold (:meth:`sampled_step_jacobians`). State order [x, y, xd, yd] (m,
-        m/s), input order tau_1..tau_n (N*m); ``theta`` defaults to :attr:`theta_nominal`.
+        m/s), input order tau_1..tau_n (N*m).
+
+        Parameters
+        ----------
+        xe, xed, tau_a :
+            The state and the torques, as :meth:`forward_dynamics_jacobians`.
+        theta : array_like (p,), optional
+            The dynamic parameters (default :attr:`theta_nominal`).
+        discrete : bool
+            The sampled (zero-order hold) linearisation instead of the continuous one.
+        period : float, optional
+            The sample period of the discrete one, s (default ``[sensing] sample_period``).
 
         Returns
         -------
