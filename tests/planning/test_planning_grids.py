@@ -18,7 +18,8 @@ from pm2dof.planning import TaskPath, plan_time_optimal
 from pm2dof.planning.pathfile import read_path_file
 from pm2dof.derive.planning import MVC_BISECTIONS
 from pm2dof.planning.stages import V_TOP, grid_points, limits, params, stages
-from pm2dof.planning.topp import BETWEEN_TOL, RESOLUTION, _check_forward, solve_profile
+from pm2dof.planning.grid import _check_forward
+from pm2dof.planning.topp import BETWEEN_TOL, RESOLUTION, solve_profile
 from pm2dof.planning.torques import plan_torques
 
 PATHS = {"line": TaskPath.line([0.22, 0.29], [0.27, 0.24]),            # the paper's line
@@ -91,7 +92,7 @@ def test_a_forward_failure_names_the_condition_that_failed():
     h, mvc = np.ones(2), np.ones(3)
     ok = dict(x=np.array([0.0, 0.5, 0.0]), sdd=np.array([2.5, -2.5]), L=np.array([-9.0, -9.0]),
               U=np.array([9.0, 9.0]), Z=np.array([1.0, 1.0]))
-    _check_forward(coef, s, h=h, x_mvc=mvc, **ok)                        # consistent: silent
+    _check_forward(coef["p"], s, h=h, x_mvc=mvc, **ok)                        # consistent: silent
     cases = [(dict(x=np.array([0.0, 0.5, -0.1])), r"lands at s_d\^2 = -0.1 < 0 at s = 0.2 m"),
              (dict(sdd=np.array([2.5, -9.5])), r"s_dd = -9.5 m/s\^2 is outside its feasible "
                                                r"interval \[-9, 9\]"),
@@ -99,7 +100,7 @@ def test_a_forward_failure_names_the_condition_that_failed():
              (dict(Z=np.array([1.0, -0.25])), r"parallel to the path.s acceleration .* \(by 0.25 N\)")]
     for change, match in cases:
         with pytest.raises(pm2dof.PlanError, match=match) as e:
-            _check_forward(coef, s, h=h, x_mvc=mvc, **{**ok, **change})
+            _check_forward(coef["p"], s, h=h, x_mvc=mvc, **{**ok, **change})
         assert "interval leaving s = " in str(e.value)
 
 
