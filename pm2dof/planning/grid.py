@@ -16,7 +16,14 @@ inputs):
   are the previous ones, with the same inputs: the same bounds); the forward pass (from the
   start) from the first interval whose input (or controllable bound) changed to the end, from
   the speed the previous pass reached there. Each is one ``accumulate`` call over its
-  sub-range;
+  sub-range, whose rows carry the previous pass's step over the same interval: where the new
+  pass arrives with the previous state (it met the previous pass again), the generated step
+  returns the previous result without evaluating anything (pm2dof/derive/planning.py,
+  ``_reusing``). The passes meet again where a change has died out: the backward pass's
+  bisection keeps to a lattice (its result does not depend on the last bits of the bound it
+  starts from) and the forward pass lands on the controllable bound exactly, so a pass is
+  evaluated over the stretch an added point really changes (an acceleration or braking arc
+  through it), not to the end of the grid;
 * an interval's midpoint check is recomputed where the interval is new or its speeds or
   acceleration changed.
 
@@ -94,11 +101,21 @@ def passes(model, stage, arrive, prm, s, p, prev=None):
         src = np.where(prev["s"][j] == s, j, -1)
     old = src >= 0
     js = np.where(old, src, 0)
+    # a stage row depends on its point and the next (rho, delta; the last row on the last
+    # interval), an arrive row on its stage row and the previous one's rho: rows whose
+    # interval(s) are the previous grid's are the previous rows; the other old rows are compared
+    kept = old[:-1] & (src[1:] == src[:-1] + 1)         # intervals of the previous grid
+    same_st = np.append(kept, kept[-1:] & old[-1:])
+    same_ar = same_st.copy()
+    same_ar[1:] &= kept
+    for same_rows, rows, key in ((same_st, stage, "stage"), (same_ar, arrive, "arrive")):
+        check = np.flatnonzero(old & ~same_rows)
+        if check.size:
+            same_rows[check] = _same_rows(rows[check], prev[key][src[check]])
     # the maximum-velocity curve, of the rows that changed
     x_mvc = np.empty(K)
-    keep = old & _same_rows(stage, prev["stage"][js]) if prev else old
-    x_mvc[keep] = prev["x_mvc"][js[keep]] if prev else 0.0
-    fresh = np.flatnonzero(~keep)
+    x_mvc[same_st] = prev["x_mvc"][src[same_st]] if prev else 0.0
+    fresh = np.flatnonzero(~same_st)
     x_mvc[fresh] = _mvc(model, stage[fresh], prm)
     bad = np.flatnonzero(x_mvc < 0)
     if bad.size:
@@ -116,30 +133,38 @@ def passes(model, stage, arrive, prm, s, p, prev=None):
     # the arrival facets' own maximum-velocity curve where they differ from the point's own
     cap = x_mvc.copy()
     other = np.any(arrive != stage, axis=1)
-    kept = other & old & _same_rows(arrive, prev["arrive"][js]) if prev else np.zeros(K, bool)
-    cap[kept] = prev["cap"][js[kept]] if prev else 0.0
-    todo = np.flatnonzero(other & ~kept)
+    reuse = other & same_ar & same_st
+    cap[reuse] = prev["cap"][src[reuse]] if prev else 0.0
+    todo = np.flatnonzero(other & ~reuse)
     cap[todo] = _mvc(model, arrive[todo], prm)
     fin = model.layout("path_forward_input")
-    inp = np.empty((K - 1, fin.size))             # per interval: pair, then x_next_max
+    inp = np.zeros((K - 1, fin.size))             # per interval: pair, x_next_max, memo
+    F = fin.unpack(inp)
     P = inp[:, fin.slices["pair"]]
     pair = model.layout("path_pair").unpack(P)
     pair["stage"][:], pair["next"][:], pair["next_cap"][:, 0] = stage[:-1], arrive[1:], cap[1:]
-    if prev:    # intervals of the previous grid with the same input
-        same = old[:-1] & (src[1:] == src[:-1] + 1) & _same_rows(P, prev["pair"][js[:-1]])
-    else:
-        same = np.zeros(K - 1, dtype=bool)
+    # intervals of the previous grid with the same input (pair)
+    same = kept & same_st[:-1] & same_ar[1:] & same_st[1:]
     changed = np.flatnonzero(~same)
-    # backward: controllable bounds, from rest at the end (the intervals above the last
-    # changed one are the previous grid's, with its bounds)
+    # backward: controllable bounds, from rest at the end, from the last interval whose input
+    # changed (the ones above are the previous grid's, with its bounds); below it, where the
+    # pass meets the previous one again, the C returns the previous bounds
     hi = np.empty(K)
     top = int(changed[-1]) if changed.size else -1
     hi[top + 1:] = prev["hi"][js[top + 1:]] if prev else 0.0
     hi[-1] = 0.0
     if top >= 0:
+        bl = model.layout("path_backward_input")
+        rows = np.zeros((top + 1, bl.size))
+        B = bl.unpack(rows)
+        rows[:, bl.slices["pair"]] = P[top::-1]
+        if prev:
+            r = slice(top, None, -1)
+            B["same"][:, 0] = same[r]
+            B["x_in"][:, 0] = prev["hi"][js[1:top + 2]][::-1]
+            B["x_out"][:, 0] = prev["hi"][js[:top + 1]][::-1]
         back = np.empty(top + 1)
-        model.function("path_backward").accumulate(
-            np.array([hi[top + 1]]), np.ascontiguousarray(P[top::-1]), prm, back)
+        model.function("path_backward").accumulate(np.array([hi[top + 1]]), rows, prm, back)
         hi[:top + 1] = back[::-1]
     if hi[0] < 0:
         k = int(np.flatnonzero(hi < 0)[-1])
@@ -147,13 +172,18 @@ def passes(model, stage, arrive, prm, s, p, prev=None):
                         f"{at(p, s, k)} with these torque limits: no feasible deceleration "
                         f"(even near rest the motors must balance the Coulomb friction; a larger "
                         f"tau_max, or the min_max split, leaves more room)")
-    # forward: greedy from rest at the start (the intervals before the first whose input or
-    # controllable bound changed are the previous grid's)
-    inp[:, fin.slices["x_next_max"]] = hi[1:, None]
+    # forward: greedy from rest at the start, from the first interval whose input or
+    # controllable bound changed (the ones before are the previous grid's)
+    F["x_next_max"][:, 0] = hi[1:]
+    out = model.layout("path_forward_output")
+    evaluated = [top + 1, 0]
     if prev:
         same &= hi[1:] == prev["hi"][js[1:]]
+        evaluated[0] -= int(np.count_nonzero(same[:top + 1]))   # met again: reused
+        F["same"][:, 0] = same
+        F["x_in"][:, 0] = prev["x_raw"][js[:-1]]
+        F["x_out"][:, 0] = prev["x_raw"][js[1:]]
     first = int(np.argmin(same)) if not same.all() else K - 1
-    out = model.layout("path_forward_output")
     y = np.empty((K - 1, out.size))
     x_raw = np.empty(K)
     if first:
@@ -166,6 +196,13 @@ def passes(model, stage, arrive, prm, s, p, prev=None):
         model.function("path_forward").accumulate(xf, inp[first:], prm, y[first:])
         x_raw[first:-1] = y[first:, out.slices["x"]][:, 0]
         x_raw[-1] = xf[0]
+        if prev:        # the steps that met the previous pass: its y
+            met = first + np.flatnonzero(same[first:] & (x_raw[first:-1] == F["x_in"][first:, 0]))
+            y[met] = prev["y"][js[met]]
+            x_raw[met] = prev["x_raw"][js[met]]
+            evaluated[1] = K - 1 - first - met.size
+        else:
+            evaluated[1] = K - 1 - first
     Y = {k: v[:, 0] for k, v in out.unpack(y).items()}
     sdd, L, U, Z = Y["sdd"], Y["L"], Y["U"], Y["Z"]
     relaxed = np.flatnonzero(Y["arrival_ok"] == 0)  # the arrival facets do not hold there
@@ -173,8 +210,8 @@ def passes(model, stage, arrive, prm, s, p, prev=None):
     x = np.maximum(x_raw, 0.0)
     x[x_cap == 0] = 0.0
     memo = {"s": s, "stage": stage, "arrive": arrive, "x_mvc": x_mvc, "cap": cap,
-            "pair": np.ascontiguousarray(P), "hi": hi, "y": y, "x_raw": x_raw,
-            "rerun": (top + 1, K - 1 - first, fresh.size)}   # intervals of each pass, MVC rows
+            "hi": hi, "y": y, "x_raw": x_raw,
+            "evaluated": (*evaluated, fresh.size)}   # steps of each pass, MVC rows
     return x, np.concatenate([sdd, sdd[-1:]]), x_mvc, relaxed, memo
 
 

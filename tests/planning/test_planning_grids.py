@@ -25,7 +25,9 @@ from pm2dof.planning.torques import plan_torques
 PATHS = {"line": TaskPath.line([0.22, 0.29], [0.27, 0.24]),            # the paper's line
          "arc": TaskPath.arc([0.245, 0.265], 0.04, -0.5, 1.5),
          "pick_and_place": read_path_file("pick_and_place")["path"],
-         "curve": read_path_file("curve")["path"]}
+         "curve": read_path_file("curve")["path"],
+         # issue 28 item 11: a user's spline (coarse grids were not ordered on it)
+         "spline28": TaskPath.spline([(0.18, 0.20), (0.22, 0.13), (0.27, 0.21), (0.31, 0.15)])}
 GRIDS = (2, 3, 4, 6, 10, 20, 40, 100, 250, 1000)
 #: between the grid points: the planner holds every interval's midpoint to BETWEEN_TOL (1e-3)
 #: of tau_max; elsewhere in an interval this sweep measures at most 1.1e-3 (10 points per
