@@ -285,7 +285,7 @@ def bench_planning(model, quick=False, progress=None):
         res["toppra_given_duration_s"] = _toppra_duration(sd_g, s)
         res["plan_vs_toppra_rel_diff"] = abs(res["toppra_duration_s"] / pl.duration - 1)
 
-    rows, summary = bench_refinement(model, path, 3 if quick else 7, say)
+    rows, summary = bench_refinement(model, path, 1 if quick else 7, say)
     res["plan_paths"] = rows
     res.update(summary)
 
