@@ -19,7 +19,10 @@ polytopes; every set the recursion needs is one-dimensional, though, and is comp
    where the arrival facets bind when braking (landing on the bound) and accelerating.
 
 Around the passes (:func:`plan_time_optimal`) the grid is refined until it resolves the path
-(RESOLUTION) and the torques between the grid points (BETWEEN_TOL at each midpoint).
+(RESOLUTION) and the torques between the grid points (BETWEEN_TOL at each midpoint,
+SAMPLE_TOL at each sample of the trajectory), in place: each round recomputes only what the
+added points change (:class:`pm2dof.planning.grid.Grid`), equal bit for bit to the whole
+computation on the refined grid.
 """
 import time
 
@@ -101,8 +104,10 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         RESOLUTION = 0.05 rad is halved; where an interval's torque facets cannot hold at both
         its ends, it and its neighbours are split in 8 and the plan rerun (at most twice); and
         where the torques at an interval's midpoint exceed the limits by more than
-        BETWEEN_TOL = 0.1 %, it is halved and the plan rerun (ROUNDS = 12 rounds in all).
-        A coarse grid gives a feasible plan, longer than a fine one.
+        BETWEEN_TOL = 0.1 %, or at a sample of the trajectory by more than SAMPLE_TOL =
+        0.01 %, it is halved and the plan rerun (ROUNDS = 16 rounds in all). A coarse grid
+        gives a feasible plan, no shorter than the 1000-point one on the paths tested (two
+        coarse grids are not ordered: docs/results-planning.md).
 
     Returns
     -------
@@ -110,6 +115,7 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         ``method`` "time_optimal"; torques at the grid points from the generated C;
         ``info``: ``grid`` (the final count), ``refinements``, ``midpoint_excess`` (the largest
         excess over the limits at an interval's midpoint, a fraction of tau_max),
+        ``sample_excess`` (the same at the trajectory's samples, <= SAMPLE_TOL),
         ``arrival_relaxed`` (arc lengths where only the departing facets hold), ``stops``,
         ``theta``, ``tau_max_actuators`` (tau_max before the margin).
 
