@@ -37,8 +37,9 @@ from .stages import GRID_MAX, grid_points, limits, params
 __all__ = ["plan_time_optimal", "plan_on_grid", "solve_profile"]
 
 #: where an interval's facets cannot hold at both ends (riding a steep maximum-velocity curve),
-#: it and its neighbours are split into SPLIT_INTO parts and the passes rerun, REFINE times
-REFINE, SPLIT_INTO = 2, 8
+#: it is split into SPLIT_INTO^2 parts and its neighbours into SPLIT_INTO, and the passes
+#: rerun, REFINE times (once: splitting in 8, twice, took a second round for about the same)
+REFINE, SPLIT_INTO = 1, 8
 #: no joint angle and no tangent may turn by more than RESOLUTION rad over a grid interval:
 #: a coarser grid is refined (halving, RESOLVE_ROUNDS times at most) before the passes
 RESOLUTION, RESOLVE_ROUNDS = 0.05, 40
@@ -102,7 +103,7 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         breakpoints included). The grid is then refined until it resolves the path and the
         plan: every interval over which an active joint or the tangent turns by more than
         RESOLUTION = 0.05 rad is halved; where an interval's torque facets cannot hold at both
-        its ends, it and its neighbours are split in 8 and the plan rerun (at most twice); and
+        its ends, it is split in 64 and its neighbours in 8 and the plan rerun (once); and
         where the torques at an interval's midpoint exceed the limits by more than
         BETWEEN_TOL = 0.1 %, or at a sample of the trajectory by more than SAMPLE_TOL =
         0.01 %, it is halved and the plan rerun (ROUNDS = 16 rounds in all). A coarse grid
@@ -186,10 +187,11 @@ def _plan(model, path, tau_max, split, theta, margin, grid, given):
         x, sdd, x_mvc, relaxed = g.solve()
         s = g.s
         if refine and relaxed.size and attempt < REFINE:   # split where the arrival facets fail
-            ks = np.unique(np.clip(np.concatenate([relaxed - 1, relaxed, relaxed + 1]), 0,
-                                   len(s) - 2))
-            g.insert((s[ks, None] + np.diff(s)[ks, None]
-                      * (np.arange(1, SPLIT_INTO) / SPLIT_INTO)).ravel())
+            nb = np.setdiff1d(np.clip(np.concatenate([relaxed - 1, relaxed + 1]), 0,
+                                      len(s) - 2), relaxed)
+            parts = [(relaxed, SPLIT_INTO ** 2), (nb, SPLIT_INTO)]
+            g.insert(np.concatenate([(s[ks, None] + np.diff(s)[ks, None]
+                                      * (np.arange(1, n) / n)).ravel() for ks, n in parts]))
             continue
         mid, ev_mid, excess = g.between(x, sdd)
         over = np.flatnonzero(excess > BETWEEN_TOL)
