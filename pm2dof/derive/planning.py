@@ -39,14 +39,16 @@ Functions (prefix ``<name>_``), all per grid point:
   arrival facets' maximum-velocity curve: from x, the largest s_d^2 at s_k+1 from which the
   end can be reached, to the largest s_d^2 at s_k with a feasible s_dd that lands between rest
   and it (s_d^2 in [0, x]) with the arrival facets holding there too, capped at ``x_cap``
-  (-1: none);
+  (-1: none); its input (layout ``path_backward_input``) is the pair and a previous pass's
+  step over the same interval (``same``, ``x_in``, ``x_out``: :func:`_reusing`);
 * ``path_forward(x, input, params) -> x_next, y``: one forward step from s_d^2 = x at s_k, the
   greatest s_dd feasible leaving s_k that keeps s_d^2 at s_k+1 within the controllable bound
   (``x_next_max``) and that the arrival facets' U allows at its own landing speed (the
   :data:`ARRIVAL_STEPS` regula falsi steps), never landing below rest; y (layout
   ``path_forward_output``) = [x, s_dd, L, U, Z, arrival_ok] (L, U: the feasible s_dd leaving
   s_k; Z >= 0: the facets parallel to a hold; arrival_ok: 1 if the arrival facets hold too, 0
-  where both ends cannot, where the departing ones are kept);
+  where both ends cannot, where the departing ones are kept); landing on the bound lands on
+  it exactly; a previous pass's step is reused as in ``path_backward``;
 * ``path_torques(stage, sd, sdd, params, tau_max) -> u, tau_min_norm, tau_min_max, ratio``.
 
 The largest s_d with a non-empty interval is found by bisection with :data:`BISECTIONS`
@@ -57,6 +59,8 @@ law affine in |v| (Coulomb + viscous, eq. 2) each facet is a quadratic in s_d wh
 coefficients are computed once per point; other laws (Stribeck, smooth sign) are evaluated at
 every halving.
 """
+import math
+
 import casadi as ca
 import sympy as sp
 
@@ -68,15 +72,17 @@ from .symbols import sgn
 from .to_casadi import Converter
 
 __all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS", "MVC_BISECTIONS",
-           "HINT_SPAN", "HINT_FLOOR", "ARRIVAL_STEPS"]
+           "HINT_SPAN", "HINT_FLOOR", "ARRIVAL_STEPS", "LATTICE_BITS"]
 
 #: halvings of the bisection for the largest controllable s_d, on a bracket of +-10 % around
-#: a hint (braking onto the next point's bound; resolution 5e-8 of it) or, where that does not
-#: bracket the answer (a jump of the maximum-velocity curve), on [0, v_top] (2.4e-5 m/s at
-#: 100 m/s, on the feasible side); and for the maximum-velocity curve (a
-#: diagnostic the passes use only at breakpoints): v_top 2^-20, 1e-4 m/s at 100 m/s
-BISECTIONS = 22
+#: a hint (braking onto the next point's bound), on a lattice of 2^-LATTICE_BITS of the hint's
+#: power of two (resolution 6e-8 to 1.2e-7 of it; converged for hints above HINT_FLOOR) or,
+#: where that does not bracket the answer (a jump of the maximum-velocity curve), on
+#: [0, v_top] (3e-6 m/s at 100 m/s, on the feasible side); and for the maximum-velocity curve
+#: (a diagnostic the passes use only at breakpoints): v_top 2^-20, 1e-4 m/s at 100 m/s
+BISECTIONS = 25
 MVC_BISECTIONS = 20
+LATTICE_BITS = 24
 HINT_SPAN, HINT_FLOOR = 0.1, 1e-3
 #: steps of the forward pass's search (Illinois regula falsi, on the allowed side) for the
 #: greatest s_dd that the arrival facets allow at its own landing speed, on the bracket [U there
@@ -92,12 +98,18 @@ def path_layouts(n, p):
     # an interval: the point's own stage, the next point's arrival stage (the path's left limit
     # there, the interval's rho) and the largest s_d^2 its facets allow (its MVC)
     pair = Layout([("stage", stage.size), ("next", stage.size), ("next_cap", 1)])
-    forward = Layout([("pair", pair.size), ("x_next_max", 1)])
     forward_out = Layout([("x", 1), ("sdd", 1), ("L", 1), ("U", 1), ("Z", 1),
                           ("arrival_ok", 1)])
+    # a step of a previous pass over the same interval with the same input (same = 1): where
+    # it started from x_in too, its result x_out is the step's, and is returned (with y = [x,
+    # 0, ...]: the caller has the previous y)
+    backward = Layout([("pair", pair.size), ("same", 1), ("x_in", 1), ("x_out", 1)])
+    forward = Layout([("pair", pair.size), ("x_next_max", 1), ("same", 1), ("x_in", 1),
+                      ("x_out", 1)])
     params = Layout([("v_top", 1), ("theta", p)])
-    return {"path_stage": stage, "path_pair": pair, "path_forward_input": forward,
-            "path_forward_output": forward_out, "path_params": params}
+    return {"path_stage": stage, "path_pair": pair, "path_backward_input": backward,
+            "path_forward_input": forward, "path_forward_output": forward_out,
+            "path_params": params}
 
 
 def force_polygon(S, w):
@@ -223,18 +235,51 @@ class _Stage:
     def largest(self, v_top, predicate, halvings, hint=None):
         """(largest sd in [0, v_top] where predicate(sd) holds, holds at 0), by bisection; with
         a ``hint``, on [hint (1 - r), hint (1 + r) + c] (r = HINT_SPAN, c = HINT_FLOOR m/s)
-        when that brackets the answer, else on [0, v_top]."""
+        when that brackets the answer, else on [0, v_top]. The bisection keeps to a lattice,
+        multiples of q = v_top 2^-halvings on [0, v_top], of q = 2^(e - LATTICE_BITS) on the
+        hint's bracket (2^e <= hint < 2^(e+1)), rounded outwards onto it: where it converges
+        (the bracket at most 2^halvings steps: any hint above HINT_FLOOR) the result is the
+        largest lattice point where the predicate holds, whatever the hint's exact value (a
+        pass whose bound changed in its last bits meets the unchanged one again)."""
         ok0, okt = predicate(ca.SX(0)), predicate(v_top)
-        lo, hi = ca.SX(0), v_top
+        lo, hi, q = ca.SX(0), v_top, v_top * 2.0 ** -halvings
         if hint is not None:
-            a, b = hint * (1 - HINT_SPAN), hint * (1 + HINT_SPAN) + HINT_FLOOR
+            h = ca.fmax(hint, 1e-300)
+            qh = 2 ** (ca.floor(ca.log(h) / math.log(2)) - LATTICE_BITS)
+            a = ca.floor(h * (1 - HINT_SPAN) / qh) * qh
+            b = ca.ceil((h * (1 + HINT_SPAN) + HINT_FLOOR) / qh) * qh
             use = ca.logic_and(predicate(a), ca.logic_not(predicate(b)))
-            lo, hi = ca.if_else(use, a, lo), ca.if_else(use, b, hi)
+            lo, hi, q = ca.if_else(use, a, lo), ca.if_else(use, b, hi), ca.if_else(use, qh, q)
         for _ in range(halvings):
-            mid = 0.5 * (lo + hi)
+            mid = lo + ca.floor((hi - lo) / (2 * q)) * q
             c = predicate(mid)
             lo, hi = ca.if_else(c, mid, lo), ca.if_else(c, hi, mid)
         return ca.if_else(okt, v_top, lo), ok0
+
+
+def _reusing(name, step, layout, names_in, names_out):
+    """``step`` (x, input, params) -> outputs (``input``: the layout's ``pair``, or the whole
+    layout) as a Function of (x, layout, params) that returns a previous pass's result where
+    the layout says the interval and its input are the same (``same``) and the pass arrives
+    with the same state (x == x_in): x_next = x_out, the step's own result, bit for bit,
+    without evaluating it (a CasADi switch: the generated C evaluates one branch), and y =
+    [x, 0, ...] (the caller has the previous one). Outputs (x_next, y)."""
+    sx = [ca.SX.sym(f"a{i}", n) for i, n in enumerate((step.size1_in(0), layout.size,
+                                                         step.size1_in(2)))]
+    U = layout.split(sx[1])
+    arg = sx[1] if step.size1_in(1) == layout.size else U["pair"]
+    full = step(sx[0], arg, sx[2])
+    if isinstance(full, (list, tuple)):        # (x_next, y): y's first entry x, the rest 0
+        kept = [U["x_out"], ca.vertcat(sx[0], ca.SX.zeros(full[1].numel() - 1))]
+    else:                                       # x_next, which is y too
+        full, kept = [full, full], [U["x_out"], U["x_out"]]
+    switch = ca.Function.conditional(f"{name}_switch",
+                                     [ca.Function(f"{name}_reuse", sx, kept)],
+                                     ca.Function(f"{name}_full", sx, full))
+    x, u, prm = (ca.MX.sym(f"m{i}", s.numel()) for i, s in enumerate(sx))
+    Um = layout.split(u)
+    case = ca.if_else(ca.logic_and(Um["same"] != 0, x == Um["x_in"]), 0, 1)
+    return ca.Function(name, [x, u, prm], switch(case, x, u, prm), names_in, names_out)
 
 
 def path_functions(d, prefix):
@@ -293,8 +338,9 @@ def path_functions(d, prefix):
     hint = ca.sqrt(ca.fmin(ca.fmax(xl - 2 * delta * L_next, 0), 4 * ca.fmax(xl, 0) + 1))
     y_b, ok0 = own.largest(v_top, reaches, BISECTIONS, hint=hint)
     x_b = ca.if_else(ca.logic_and(ok0, xl >= 0), ca.fmin(y_b * y_b, own.st["x_cap"]), -1)
-    out.append(ca.Function(f"{prefix}_path_backward", [x, pair_v, prm], [x_b, x_b],
-                           ["x_next_max", "pair", "params"], ["x_max", "y"]))
+    step = ca.Function(f"{prefix}_path_backward_step", [x, pair_v, prm], [x_b])
+    out.append(_reusing(f"{prefix}_path_backward", step, lays["path_backward_input"],
+                        ["x_next_max", "input", "params"], ["x_max", "y"]))
 
     fin = ca.SX.sym("input", lays["path_forward_input"].size)
     F = lays["path_forward_input"].split(fin)
@@ -304,7 +350,9 @@ def path_functions(d, prefix):
     xk = ca.SX.sym("x")
     L, U, Z = fown.bounds(ca.sqrt(ca.fmax(xk, 0)))
     dlt = fown.st["delta"]
-    top = ca.fmin(U, (ca.fmin(F["x_next_max"], PF["next_cap"]) - xk) / (2 * dlt))
+    x_land = ca.fmin(F["x_next_max"], PF["next_cap"])
+    on_bound = (x_land - xk) / (2 * dlt)     # the s_dd landing on the controllable bound
+    top = ca.fmin(U, on_bound)
     floor = ca.fmax(L, -xk / (2 * dlt))     # the least s_dd: own facets, landing at rest or above
 
     def room(sdd):         # the arrival facets' U at the landing speed, less sdd (>= 0: allowed)
@@ -338,8 +386,12 @@ def path_functions(d, prefix):
     arrival_ok = ca.logic_and(ca.logic_and(sdd >= Ln - 1e-9 * scale, sdd <= Un + 1e-9 * scale),
                               Zn >= -1e-9 * ca.mmax(fnxt.h))
     y = lays["path_forward_output"].pack(x=xk, sdd=sdd, L=L, U=U, Z=Z, arrival_ok=arrival_ok)
-    out.append(ca.Function(f"{prefix}_path_forward", [xk, fin, prm], [xk + 2 * dlt * sdd, y],
-                           ["x", "input", "params"], ["x_next", "y"]))
+    # landing on the bound lands on it exactly (not within a rounding of it, which would depend
+    # on x_k): a forward pass whose speed changed somewhere meets the unchanged one there
+    x_next = ca.if_else(sdd == on_bound, x_land, xk + 2 * dlt * sdd)
+    step = ca.Function(f"{prefix}_path_forward_step", [xk, fin, prm], [x_next, y])
+    out.append(_reusing(f"{prefix}_path_forward", step, lays["path_forward_input"],
+                        ["x", "input", "params"], ["x_next", "y"]))
 
     sd, sdd = ca.SX.sym("sd"), ca.SX.sym("sdd")
     S2 = st.S

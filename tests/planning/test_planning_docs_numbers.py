@@ -119,3 +119,15 @@ def test_the_smoothed_variant(m):
             f"{c.info['strict_duration']:.4f} s on its {c.info['grid']}-point grid "
             f"(+{pct(c):.1f} %" in FLAT)
     assert np.isfinite([p.duration for p in got.values()]).all()
+
+
+def test_what_a_coarse_grid_gives_is_stated_with_its_numbers(m):
+    """Issue 28 item 11: the page said "a coarse grid gives a longer plan, never a shorter one",
+    which two coarse grids of a user's spline contradicted; it now states what holds and the
+    counterexample, recomputed here (the statement itself: test_planning_refine.py)."""
+    assert "never a shorter one" not in FLAT
+    spline = pm2dof.TaskPath.spline([(0.18, 0.20), (0.22, 0.13), (0.27, 0.21), (0.31, 0.15)])
+    d2, d5 = (pm2dof.plan_time_optimal(m, spline, 5.0, "min_max", grid=g).duration
+              for g in (2, 5))
+    assert d2 < d5
+    assert f"2 points give {d2:.4f} s and 5 points {d5:.4f} s" in FLAT

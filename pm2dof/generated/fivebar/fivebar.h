@@ -66,8 +66,8 @@
  *   fivebar_lqr_preload_closed_loop(x[18], u[16], p[26]) -> (x_next[18], y[17])
  *   fivebar_path_coefficients(p[2], dp[2], ddp[2], theta[10], tau_max[2]) -> (a[2], b[2], S[4], v1[2], N_min_norm[4], h_min_norm[2], N_min_max[4], h_min_max[2], sing[2])
  *   fivebar_path_mvc(stage[20], params[11]) -> (x_mvc[1])
- *   fivebar_path_backward(x_next_max[1], pair[41], params[11]) -> (x_max[1], y[1])
- *   fivebar_path_forward(x[1], input[42], params[11]) -> (x_next[1], y[6])
+ *   fivebar_path_backward(x_next_max[1], input[44], params[11]) -> (x_max[1], y[1])
+ *   fivebar_path_forward(x[1], input[45], params[11]) -> (x_next[1], y[6])
  *   fivebar_path_torques(stage[20], sd[1], sdd[1], params[11], tau_max[2]) -> (u[2], tau_min_norm[2], tau_min_max[2], min_max_ratio[1])
  *   fivebar_forward_dynamics_jacobians(xe[2], xed[2], tau_a[2], theta[10]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[4], d_theta[20], sing[2])
  *   fivebar_inverse_dynamics(xe[2], xed[2], xedd[2], theta[10]) -> (u[2], sing[2])
@@ -88,7 +88,8 @@
  *   plant: alpha[2], beta[2], gamma[2], fv[2], fc[2], fs[2], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[4], h[2], a[2], b[2], S[4], v1[2], rho[2], delta[1], x_cap[1]
  *   path_pair: stage[20], next[20], next_cap[1]
- *   path_forward_input: pair[41], x_next_max[1]
+ *   path_backward_input: pair[41], same[1], x_in[1], x_out[1]
+ *   path_forward_input: pair[41], x_next_max[1], same[1], x_in[1], x_out[1]
  *   path_forward_output: x[1], sdd[1], L[1], U[1], Z[1], arrival_ok[1]
  *   path_params: v_top[1], theta[10]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
@@ -1062,10 +1063,10 @@ const casadi_int* fivebar_path_backward_sparsity_in(casadi_int i);
 const casadi_int* fivebar_path_backward_sparsity_out(casadi_int i);
 int fivebar_path_backward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fivebar_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define fivebar_path_backward_SZ_ARG 3
-#define fivebar_path_backward_SZ_RES 2
+#define fivebar_path_backward_SZ_ARG 10
+#define fivebar_path_backward_SZ_RES 6
 #define fivebar_path_backward_SZ_IW 0
-#define fivebar_path_backward_SZ_W 0
+#define fivebar_path_backward_SZ_W 73
 int fivebar_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_path_forward_checkout(void);
 void fivebar_path_forward_release(int mem);
@@ -1080,10 +1081,10 @@ const casadi_int* fivebar_path_forward_sparsity_in(casadi_int i);
 const casadi_int* fivebar_path_forward_sparsity_out(casadi_int i);
 int fivebar_path_forward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fivebar_path_forward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define fivebar_path_forward_SZ_ARG 3
-#define fivebar_path_forward_SZ_RES 2
+#define fivebar_path_forward_SZ_ARG 10
+#define fivebar_path_forward_SZ_RES 6
 #define fivebar_path_forward_SZ_IW 0
-#define fivebar_path_forward_SZ_W 0
+#define fivebar_path_forward_SZ_W 63
 int fivebar_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_path_torques_checkout(void);
 void fivebar_path_torques_release(int mem);

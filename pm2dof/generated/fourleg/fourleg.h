@@ -66,8 +66,8 @@
  *   fourleg_lqr_preload_closed_loop(x[28], u[26], p[44]) -> (x_next[28], y[29])
  *   fourleg_path_coefficients(p[2], dp[2], ddp[2], theta[20], tau_max[4]) -> (a[2], b[2], S[8], v1[4], N_min_norm[8], h_min_norm[4], N_min_max[8], h_min_max[4], sing[2])
  *   fourleg_path_mvc(stage[34], params[21]) -> (x_mvc[1])
- *   fourleg_path_backward(x_next_max[1], pair[69], params[21]) -> (x_max[1], y[1])
- *   fourleg_path_forward(x[1], input[70], params[21]) -> (x_next[1], y[6])
+ *   fourleg_path_backward(x_next_max[1], input[72], params[21]) -> (x_max[1], y[1])
+ *   fourleg_path_forward(x[1], input[73], params[21]) -> (x_next[1], y[6])
  *   fourleg_path_torques(stage[34], sd[1], sdd[1], params[21], tau_max[4]) -> (u[2], tau_min_norm[4], tau_min_max[4], min_max_ratio[1])
  *   fourleg_forward_dynamics_jacobians(xe[2], xed[2], tau_a[4], theta[20]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[8], d_theta[40], sing[2])
  *   fourleg_inverse_dynamics(xe[2], xed[2], xedd[2], theta[20]) -> (u[2], sing[2])
@@ -88,7 +88,8 @@
  *   plant: alpha[4], beta[4], gamma[4], fv[4], fc[4], fs[4], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[8], h[4], a[2], b[2], S[8], v1[4], rho[4], delta[1], x_cap[1]
  *   path_pair: stage[34], next[34], next_cap[1]
- *   path_forward_input: pair[69], x_next_max[1]
+ *   path_backward_input: pair[69], same[1], x_in[1], x_out[1]
+ *   path_forward_input: pair[69], x_next_max[1], same[1], x_in[1], x_out[1]
  *   path_forward_output: x[1], sdd[1], L[1], U[1], Z[1], arrival_ok[1]
  *   path_params: v_top[1], theta[20]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
@@ -1062,10 +1063,10 @@ const casadi_int* fourleg_path_backward_sparsity_in(casadi_int i);
 const casadi_int* fourleg_path_backward_sparsity_out(casadi_int i);
 int fourleg_path_backward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fourleg_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define fourleg_path_backward_SZ_ARG 3
-#define fourleg_path_backward_SZ_RES 2
+#define fourleg_path_backward_SZ_ARG 10
+#define fourleg_path_backward_SZ_RES 6
 #define fourleg_path_backward_SZ_IW 0
-#define fourleg_path_backward_SZ_W 0
+#define fourleg_path_backward_SZ_W 140
 int fourleg_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_path_forward_checkout(void);
 void fourleg_path_forward_release(int mem);
@@ -1080,10 +1081,10 @@ const casadi_int* fourleg_path_forward_sparsity_in(casadi_int i);
 const casadi_int* fourleg_path_forward_sparsity_out(casadi_int i);
 int fourleg_path_forward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fourleg_path_forward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define fourleg_path_forward_SZ_ARG 3
-#define fourleg_path_forward_SZ_RES 2
+#define fourleg_path_forward_SZ_ARG 10
+#define fourleg_path_forward_SZ_RES 6
 #define fourleg_path_forward_SZ_IW 0
-#define fourleg_path_forward_SZ_W 0
+#define fourleg_path_forward_SZ_W 113
 int fourleg_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_path_torques_checkout(void);
 void fourleg_path_torques_release(int mem);
