@@ -1,0 +1,142 @@
+# What the exported test compares with: pm2dof's own closed loops on the model's move, as C data.
+"""Reference data of an export: ``tests/<name>_reference.h``.
+
+The move (the model file's ``[trajectories.high]``, else its first line move), the plant's
+truth, and for each exported controller with a reference (NA, APD, CTC) the RMSE (eq. 41),
+the torques and the encoder readings of :func:`pm2dof.simulate`. LQR's gains come from a
+Riccati solver (the ``control`` extra), so its reference is one step of the generated
+``<name>_lqr_step`` with fixed gains, evaluated by pm2dof. Values are written with 17
+significant digits: read back they are the same doubles.
+"""
+import numpy as np
+
+from ..control.controllers import APDController, CTCController, NAController
+from ..control.simulate import plant_vector, simulate
+from ..control.trajectory import line_moves, model_move
+
+__all__ = ["REFERENCE_LAWS", "reference_move", "reference_data", "reference_header"]
+
+#: the controllers with a closed-loop reference, in the order of the exported example
+REFERENCE_LAWS = {"na": NAController, "apd": APDController, "ctc": CTCController}
+
+
+def reference_move(model):
+    """(name, Trajectory): the model file's "high" move, else its first line move."""
+    moves = line_moves(model)
+    name = "high" if "high" in moves else moves[0]
+    return name, model_move(model, name)
+
+
+def _measure(model, plant, xe):
+    """The encoder readings (N, n) of the true poses ``xe`` (N, 2)."""
+    f = model.function("measure")
+    qa = np.empty((len(xe), model.n_legs))
+    for k, x in enumerate(xe):
+        f(np.ascontiguousarray(x), plant, qa[k])
+    return qa
+
+
+def _lqr_step(model, move, plant, params):
+    """One LQR step from rest at the move's start, with fixed gains (no Riccati solver)."""
+    n = model.n_legs
+    qa0 = _measure(model, plant, move.xd[:1])[0]
+    lay = model.layout("ctrl_state")
+    state = np.zeros(lay.size)
+    s = lay.unpack(state)
+    s["xe_prev"][:] = model.fk(qa0)
+    s["theta_hat"][:] = model.theta_nominal
+    # gains of plausible size (N m per m, per m/s) and a feedforward, all entries distinct
+    K = np.ascontiguousarray(np.arange(1, 4 * n + 1, dtype=float) * 10.0)
+    tau_ff = np.linspace(0.1, 0.3, n)
+    qa1 = qa0 + 2 * np.pi / 131072 * np.arange(1, n + 1)       # the next reading: a few counts
+    tau, st1, status, diag = np.empty(n), np.empty(lay.size), np.empty(1), np.empty(10)
+    model.function("lqr_step")(state, qa1, np.ascontiguousarray(move.xd[1]),
+                               np.ascontiguousarray(move.xd_dot[1]),
+                               np.ascontiguousarray(move.xd_ddot[1]), params, K, tau_ff,
+                               tau, st1, status, diag)
+    return {"qa0": qa0, "qa1": qa1, "K": K, "tau_ff": tau_ff, "tau": tau,
+            "status": float(status[0])}
+
+
+def reference_data(model, laws, lqr_params=None):
+    """The reference of ``laws`` (a subset of na, apd, ctc, lqr), as arrays (module doc).
+    ``lqr_params``: LQR's parameter vector (``lqr_params`` layout)."""
+    name, move = reference_move(model)
+    plant = plant_vector(model)
+    out = {"move": name, "trajectory": move, "plant": plant, "laws": [], "rmse": [],
+           "tau": [], "qa": []}
+    for law in laws:
+        if law not in REFERENCE_LAWS:
+            continue
+        r = simulate(model, REFERENCE_LAWS[law](model, on_singular="zero"), move)
+        out["laws"].append(law)
+        out["rmse"].append(r.rmse)
+        out["tau"].append(r.tau_a)
+        out["qa"].append(_measure(model, plant, r.xe))
+    if "lqr" in laws:
+        out["lqr"] = _lqr_step(model, move, plant, lqr_params)
+    return out
+
+
+def _c_array(name, values, dims=None):
+    v = np.asarray(values, dtype=float)
+    if dims is not None and len(dims) == 2:        # rows in braces
+        body = ",\n    ".join("{" + ", ".join(repr(float(x)) for x in row) + "}"
+                              for row in v.reshape(v.shape[0], -1))
+    else:
+        body = ", ".join(repr(float(x)) for x in v.ravel())
+    shape = "".join(f"[{d}]" for d in (dims or [v.size]))
+    return f"static const double {name}{shape} REF_UNUSED = {{{body}}};\n"
+
+
+def reference_header(model, ref, precision):
+    """``tests/<name>_reference.h``: the reference as C (doubles, whatever the precision)."""
+    move, n = ref["trajectory"], model.n_legs
+    N = len(move.t)
+    single = precision == "single"
+    lines = [
+        f"/* {model.name}_reference.h: what pm2dof computed at export, for the test and the\n"
+        f" * example. The move \"{ref['move']}\" of the model file, {N} samples; the plant's\n"
+        f" * truth ([plant], payload booked in: pm2dof.plant_vector); per controller the RMSE\n"
+        f" * over the move (eq. 41), the torques and the encoder readings of pm2dof.simulate.\n"
+        f" * Doubles with 17 significant digits (exact). */\n",
+        f"#ifndef {model.name.upper()}_REFERENCE_H\n#define {model.name.upper()}_REFERENCE_H\n",
+        "#if defined(__GNUC__)\n#define REF_UNUSED __attribute__((unused))\n#else\n"
+        "#define REF_UNUSED\n#endif\n",
+        f"#define REF_N {N}\n#define REF_PERIOD {move.period!r}\n"
+        f"#define REF_RK4_SUBSTEPS {model.spec.rk4_substeps}\n",
+        f"#define REF_N_LAWS {len(ref['laws'])}\n",
+    ]
+    if single:
+        # the bounds of a single-precision build against pm2dof's double results: see
+        # docs/deploying.md (measured: NA's RMSE within 0.2 %, torques within 0.05 N m)
+        lines.append("/* single precision: the closed loop differs from pm2dof's double one;\n"
+                     " * the bounds measured and explained in docs/deploying.md */\n"
+                     "#define REF_RMSE_RTOL 2e-2\n#define REF_TAU_ATOL 0.5\n"
+                     "#define REF_FK_ATOL 1e-5\n")
+    else:
+        lines.append("/* double precision: the same generated arithmetic as pm2dof */\n"
+                     "#define REF_RMSE_RTOL 1e-12\n#define REF_TAU_ATOL 1e-12\n"
+                     "#define REF_FK_ATOL 1e-12\n")
+    lines += [_c_array("ref_xd", move.xd, ["REF_N", 2]),
+              _c_array("ref_xd_dot", move.xd_dot, ["REF_N", 2]),
+              _c_array("ref_xd_ddot", move.xd_ddot, ["REF_N", 2]),
+              _c_array("ref_plant", ref["plant"])]
+    k = max(len(ref["laws"]), 1)
+    pad = np.zeros((k - len(ref["laws"]), N * n))
+    lines += [f"/* in the order {', '.join(ref['laws']) or '(none)'} */\n",
+              _c_array("ref_rmse", ref["rmse"] or [0.0]),
+              _c_array("ref_tau", np.vstack([np.reshape(t, (1, -1)) for t in ref["tau"]]
+                                            + [pad]) if ref["laws"] else pad,
+                       [k, f"REF_N * {n}"]),
+              _c_array("ref_qa", np.vstack([np.reshape(t, (1, -1)) for t in ref["qa"]]
+                                           + [pad]) if ref["laws"] else pad,
+                       [k, f"REF_N * {n}"])]
+    if "lqr" in ref:
+        q = ref["lqr"]
+        lines += ["/* LQR: one step from rest, fixed gains, by pm2dof's generated lqr_step */\n"]
+        lines += [_c_array(f"ref_lqr_{key}", q[key]) for key in ("qa0", "qa1", "K", "tau_ff",
+                                                                 "tau")]
+        lines.append(f"#define ref_lqr_status {q['status']!r}\n")
+    lines.append("#endif\n")
+    return "".join(lines)
