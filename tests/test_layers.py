@@ -30,10 +30,11 @@ ALLOWED = {
     "identification": _RUNTIME | {"analysis", "identification"},   # 3: logs, excitation, fit
     "planning": _RUNTIME | {"analysis", "planning"},    # 3: motion planning (issue 20)
     "bench": _RUNTIME | {"analysis", "reference", "bench", "derive", "planning", "linear"},
+    "export": _RUNTIME | {"export"},                    # beside bench: C projects (issue 27)
     "studies": _RUNTIME | {"analysis", "identification", "studies", "linear"},   # 3: Dask
     "figures": _RUNTIME | {"analysis", "studies", "figures", "planning", "linear"},   # 4
     "cli": _RUNTIME | {"analysis", "identification", "bench", "studies", "figures", "cli",
-                       "derive", "planning", "linear"},                         # 4
+                       "derive", "planning", "linear", "export"},                         # 4
     "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
     "__main__": {"cli"},
     "_moved": set(),
@@ -49,7 +50,8 @@ THIRD_PARTY = {
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
     "bench": {"numpy", "casadi", "sympy", "toppra", "pinocchio"},  # baselines; each optional
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
-    "planning": {"numpy", "casadi", "tqdm"},            # CasADi only in plan_smooth (lazily)
+    "planning": {"numpy", "casadi", "tqdm"},
+    "export": {"numpy"},                                # copies generated C: no CasADi            # CasADi only in plan_smooth (lazily)
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},
     "cli": set(),
 }

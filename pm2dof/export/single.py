@@ -6,8 +6,9 @@ CasADi writes ``casadi_real`` (``double`` unless defined) for every value, doubl
 ``casadi_real`` as ``float`` alone would store floats but compute every literal product and
 every math call in double (and emulate it in software on a single-precision FPU such as the
 Cortex-M4F's). :func:`to_single` therefore rewrites a copy: ``casadi_real`` is ``float``, the
-literals carry an ``f`` suffix, and ``<tgmath.h>`` turns ``sin`` into ``sinf`` for a float
-argument (C99's type-generic math).
+literals carry an ``f`` suffix, and each call of a math function calls its float version
+(``sin(`` -> ``sinf(``; C99's ``<tgmath.h>`` would do the same, but newlib's does not compile
+with GCC's ``__builtin_tgmath``).
 
 Where float is not enough, :func:`single_problems` says so and the export refuses:
 
@@ -36,6 +37,14 @@ THRESHOLD_ULPS = 1024
 _LITERAL = re.compile(r"(?<![\w.])(\d+\.\d*(?:[eE][+-]?\d+)?|\d+[eE][+-]?\d+)(?![\w.])")
 
 
+#: the <math.h> functions that have float versions (name + "f"), as CasADi may call them
+_MATH = ("sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "asinh",
+         "acosh", "atanh", "exp", "expm1", "log", "log1p", "log10", "pow", "sqrt", "cbrt",
+         "floor", "ceil", "fabs", "fmin", "fmax", "fmod", "copysign", "erf", "erfc", "hypot",
+         "round", "trunc")
+_CALL = re.compile(r"(?<![\w.])(" + "|".join(_MATH) + r")\(")
+
+
 def _literals(text):
     return [m.group(1) for m in _LITERAL.finditer(text)]
 
@@ -43,10 +52,9 @@ def _literals(text):
 def to_single(c_text):
     """The generated C file (or header) ``c_text`` rewritten for float (module doc)."""
     out = c_text.replace("#define casadi_real double", "#define casadi_real float")
-    if "#include <math.h>" in out:
-        out = out.replace("#include <math.h>", "#include <math.h>\n#include <tgmath.h>", 1)
     if "casadi_real casadi_sq(" in out or "casadi_f0(" in out:    # code, not the header
         out = _LITERAL.sub(lambda m: m.group(1) + "f", out)
+        out = _CALL.sub(lambda m: m.group(1) + "f(", out)
     return out
 
 

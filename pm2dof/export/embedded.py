@@ -1,0 +1,201 @@
+# make embedded: the exported step cross-compiled for Cortex-M4F and M7, run under QEMU.
+"""``python -m pm2dof.export.embedded [--out DIR] [--model NAME]`` (what ``make embedded`` runs).
+
+For double and single precision: export the model, build ``embedded/replay.c`` for the host
+and for a Cortex-M4F (QEMU ``mps2-an386``) and a Cortex-M7 (``mps2-an500``) with
+arm-none-eabi-gcc and newlib, run the three, and report:
+
+* whether the torques along the move equal the host build's, bit for bit, else the largest
+  difference;
+* the code and data size of the controller (the ``<name>_`` symbols kept in the linked ELF)
+  and of the whole test program (arm-none-eabi-size);
+* the deepest stack a step used (the stack painted before the steps, read after) and the
+  largest frame of the step's own functions (-fstack-usage);
+* the instructions per step: QEMU with ``-icount`` advances its virtual clock by 2^shift ns
+  per instruction, and SysTick counts that clock, so the ticks count instructions -- not
+  cycles. The cycle estimate is a range of cycles per instruction (CPI) at a stated clock.
+"""
+import argparse
+import json
+import re
+import shutil
+import struct
+import subprocess
+import sys
+from pathlib import Path
+
+from .project import export_project
+
+__all__ = ["run_embedded", "TARGETS", "CPI", "CLOCK_HZ"]
+
+TARGETS = {"m4f": "Cortex-M4F (mps2-an386)", "m7": "Cortex-M7 (mps2-an500)"}
+ICOUNT_SHIFT = 6              # embedded/Makefile: one instruction = 2^6 ns of virtual time
+SYSTICK_HZ = 25e6             # the MPS2 boards' SysTick clock in QEMU
+#: cycles per instruction assumed for the estimate (low, high): the M4F issues one
+#: instruction per cycle at best, loads and branches take 2-3, VDIV/VSQRT 14, flash wait
+#: states add more; the M7 dual-issues (below 1) but stalls on cache misses
+CPI = {"m4f": (1.0, 2.0), "m7": (0.7, 1.5)}
+#: clocks of common parts: STM32F407 (M4F) 168 MHz, STM32F767 (M7) 216 MHz
+CLOCK_HZ = {"m4f": 168e6, "m7": 216e6}
+BUDGET_S = 0.002
+TOOLS = ("arm-none-eabi-gcc", "arm-none-eabi-size", "arm-none-eabi-nm", "qemu-system-arm")
+INSTALL = "apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm"
+
+
+def _torques(path, single):
+    """{law: [(status, (bits, ...)), ...]} and the S/K lines of a replay output."""
+    tau, stats, stack = {}, {}, {}
+    for line in Path(path).read_text().splitlines():
+        f = line.split()
+        if f[:1] == ["T"]:
+            tau.setdefault(f[1], []).append((int(f[3]), tuple(f[4:])))
+        elif f[:1] == ["S"]:
+            stats[f[1]] = tuple(int(x) for x in f[2:5])
+        elif f[:1] == ["K"]:
+            stack[f[1]] = int(f[2])
+    return tau, stats, stack
+
+
+def _value(bits, single):
+    return struct.unpack(">f" if single else ">d", bytes.fromhex(bits))[0]
+
+
+def _compare(host, target, single):
+    """(bit-identical samples, samples, largest |difference| N m, statuses equal)."""
+    same = total = 0
+    worst = 0.0
+    statuses = True
+    for law, rows in host.items():
+        for (s0, b0), (s1, b1) in zip(rows, target.get(law, [])):
+            total += 1
+            same += b0 == b1
+            statuses &= s0 == s1
+            for x, y in zip(b0, b1):
+                worst = max(worst, abs(_value(x, single) - _value(y, single)))
+        statuses &= len(rows) == len(target.get(law, []))
+    return same, total, worst, statuses
+
+
+def _symbol_sizes(elf, name):
+    """Bytes of code and of read-only/initialised data of the ``<name>_`` symbols in ``elf``."""
+    out = subprocess.run(["arm-none-eabi-nm", "--print-size", str(elf)], capture_output=True,
+                         text=True, check=True).stdout
+    code = data = 0
+    for line in out.splitlines():
+        f = line.split()
+        if len(f) == 4 and f[3].startswith(f"{name}_"):
+            size = int(f[1], 16)
+            if f[2] in "tT":
+                code += size
+            else:
+                data += size
+    return code, data
+
+
+def _elf_size(elf):
+    out = subprocess.run(["arm-none-eabi-size", str(elf)], capture_output=True, text=True,
+                         check=True).stdout.splitlines()[1].split()
+    return {"text": int(out[0]), "data": int(out[1]), "bss": int(out[2])}
+
+
+def _largest_frame(build, name):
+    """The largest -fstack-usage frame among the API's and the generated code's functions."""
+    worst = ("", 0)
+    for su in Path(build).glob("*.su"):
+        if su.stem not in (name, f"{name}_pm2dof"):
+            continue
+        for line in su.read_text().splitlines():
+            parts = line.split("\t")
+            if len(parts) >= 2 and int(parts[1]) > worst[1]:
+                worst = (parts[0].split(":")[-1], int(parts[1]))
+    return worst
+
+
+def run_embedded(out, model="shang2010", jobs=2, progress=print):
+    """Build and run everything (module doc); returns the results as a dict."""
+    missing = [t for t in TOOLS if shutil.which(t) is None]
+    if missing:
+        raise SystemExit(f"make embedded needs {', '.join(missing)}: {INSTALL} (Debian)")
+    out = Path(out)
+    results = {"model": model, "icount_shift": ICOUNT_SHIFT, "cpi": CPI, "clock_hz": CLOCK_HZ,
+               "budget_s": BUDGET_S, "runs": {}}
+    for precision in ("double", "single"):
+        single = precision == "single"
+        proj = export_project(model, out / precision, precision=precision, force=True)
+        name = json.loads((proj / "pm2dof_export.json").read_text())["model"]
+        progress(f"{precision}: building and running the replay for the host, M4F and M7 "
+                 f"(QEMU) in {proj / 'embedded'}")
+        subprocess.run(["make", "-s", "-j", str(jobs), "-C", str(proj / "embedded"), "run"],
+                       check=True, stdout=subprocess.DEVNULL)
+        build = proj / "embedded" / "build"
+        host, _, _ = _torques(build / "host" / "replay.txt", single)
+        for target in TARGETS:
+            tau, stats, stack = _torques(build / target / "replay.txt", single)
+            same, total, worst, statuses = _compare(host, tau, single)
+            code, data = _symbol_sizes(build / target / "replay.elf", name)
+            steps = {}
+            for law, (lo, hi, tot) in stats.items():
+                n = len(tau[law])
+                per_tick = 2 ** ICOUNT_SHIFT * SYSTICK_HZ / 1e9    # ticks per instruction
+                steps[law] = {"min": lo / per_tick, "max": hi / per_tick,
+                              "mean": tot / per_tick / n}
+            results["runs"][f"{target}-{precision}"] = {
+                "target": TARGETS[target], "precision": precision,
+                "bit_identical": same, "samples": total, "max_abs_diff_Nm": worst,
+                "statuses_equal": statuses, "controller_code_bytes": code,
+                "controller_data_bytes": data, "elf": _elf_size(build / target / "replay.elf"),
+                "stack_painted_bytes": max(stack.values()) if stack else None,
+                "largest_frame": _largest_frame(build / target, name),
+                "instructions_per_step": steps}
+    return results
+
+
+def format_results(res):
+    """The results as the table of docs/deploying.md."""
+    lines = ["| target | precision | torques = host | controller code / data | stack (painted) "
+             "| NA step: instructions (mean, max) | cycles at the clock | time vs 2 ms |",
+             "|---|---|---|---|---|---|---|---|"]
+    for key, r in res["runs"].items():
+        target = key.split("-")[0]
+        na = r["instructions_per_step"].get("na") or next(iter(r["instructions_per_step"]
+                                                                .values()))
+        lo, hi = CPI[target]
+        c_lo, c_hi = na["max"] * lo, na["max"] * hi
+        clock = CLOCK_HZ[target]
+        agree = ("bit-identical" if r["bit_identical"] == r["samples"] else
+                 f"{r['bit_identical']}/{r['samples']} identical, max {r['max_abs_diff_Nm']:.2g}"
+                 f" N m")
+        lines.append(
+            f"| {r['target']} | {r['precision']} | {agree} | {r['controller_code_bytes'] / 1024:.1f}"
+            f" KiB / {r['controller_data_bytes'] / 1024:.1f} KiB | {r['stack_painted_bytes']} B "
+            f"| {na['mean']:.0f}, {na['max']:.0f} | {c_lo:.0f}-{c_hi:.0f} at "
+            f"{clock / 1e6:.0f} MHz | {c_lo / clock * 1e6:.0f}-{c_hi / clock * 1e6:.0f} us "
+            f"({c_hi / clock / BUDGET_S * 100:.1f} % of the budget at most) |")
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog="python -m pm2dof.export.embedded",
+                                 description=__doc__.split("\n\n")[0])
+    ap.add_argument("--out", default="build/embedded", help="work folder")
+    ap.add_argument("--model", default="shang2010")
+    ap.add_argument("--json", metavar="FILE", help="also write the results as JSON")
+    args = ap.parse_args(argv)
+    res = run_embedded(args.out, args.model, progress=lambda m: print(m, flush=True))
+    print("QEMU counts instructions, not cycles: the cycles are an estimate, a range of "
+          "cycles per instruction (M4F 1.0-2.0, M7 0.7-1.5) at a stated clock.")
+    print(format_results(res))
+    if args.json:
+        Path(args.json).write_text(json.dumps(res, indent=1) + "\n")
+    bad = [k for k, r in res["runs"].items()
+           if not r["statuses_equal"] or (r["precision"] == "double" and r["max_abs_diff_Nm"]
+                                          > 1e-9) or r["max_abs_diff_Nm"] > 1e-3]
+    if bad:
+        print(f"make embedded: the torques of {', '.join(bad)} differ from the host's beyond "
+              f"the bound (double 1e-9 N m, single 1e-3 N m)", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
