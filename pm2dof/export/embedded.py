@@ -38,13 +38,21 @@ CPI = {"m4f": (1.0, 2.0), "m7": (0.7, 1.5)}
 #: clocks of common parts: STM32F407 (M4F) 168 MHz, STM32F767 (M7) 216 MHz
 CLOCK_HZ = {"m4f": 168e6, "m7": 216e6}
 BUDGET_S = 0.002
+#: largest |torque difference| from the host build along the move, N m. IEEE arithmetic is the
+#: same on both sides (no FMA: -ffp-contract=off; the M4F emulates double exactly in libgcc);
+#: the math library is not: newlib's sin/cos/atan2 (fdlibm) differ from glibc's by an ulp now
+#: and then, and on the M4F (no double FPU) newlib's sinf/cosf are fdlibm's float routines, not
+#: the correctly rounded ones of glibc (and of newlib on the M7). An ulp of xe becomes ulp/T of
+#: velocity estimate and K_d ulp/T of force (double: 5e-12 N per ulp at 0.5 m; float: 3e-3 N),
+#: and the state (v, theta_hat) carries it on: bounds of a few hundred ulps' worth
+BOUND_NM = {"double": 1e-9, "single": 0.05}
 TOOLS = ("arm-none-eabi-gcc", "arm-none-eabi-size", "arm-none-eabi-nm", "qemu-system-arm")
 INSTALL = "apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm"
 
 
 def _torques(path, single):
     """{law: [(status, (bits, ...)), ...]} and the S/K lines of a replay output."""
-    tau, stats, stack = {}, {}, {}
+    tau, stats, stack, host_ns = {}, {}, {}, {}
     for line in Path(path).read_text().splitlines():
         f = line.split()
         if f[:1] == ["T"]:
@@ -53,7 +61,9 @@ def _torques(path, single):
             stats[f[1]] = tuple(int(x) for x in f[2:5])
         elif f[:1] == ["K"]:
             stack[f[1]] = int(f[2])
-    return tau, stats, stack
+        elif f[:1] == ["H"]:
+            host_ns[f[1]] = float(f[2])
+    return tau, stats, stack, host_ns
 
 
 def _value(bits, single):
@@ -98,17 +108,33 @@ def _elf_size(elf):
     return {"text": int(out[0]), "data": int(out[1]), "bss": int(out[2])}
 
 
-def _largest_frame(build, name):
-    """The largest -fstack-usage frame among the API's and the generated code's functions."""
-    worst = ("", 0)
-    for su in Path(build).glob("*.su"):
-        if su.stem not in (name, f"{name}_pm2dof"):
+def _step_chain(c_text, name, gen):
+    """The functions a step runs through in the generated code: ``<name>_<gen>`` and the
+    ``casadi_f<k>`` it calls, recursively (their symbols are ``<name>_f<k>``)."""
+    m = re.search(rf"int {name}_{gen}\([^)]*\)\s*{{\s*return casadi_(f\d+)\(", c_text)
+    chain, todo = [f"{name}_{gen}"], [m.group(1)] if m else []
+    while todo:
+        f = todo.pop()
+        if f"{name}_{f}" in chain:
             continue
+        chain.append(f"{name}_{f}")
+        body = re.search(rf"static int casadi_{f}\(.*?\n}}\n", c_text, re.S)
+        todo += re.findall(r"casadi_(f\d+)\(", body.group(0)[20:]) if body else []
+    return chain
+
+
+def _static_stack(build, name, law, c_text, gen):
+    """Bytes of stack of a step's call chain by -fstack-usage: the API's step, its core, the
+    generated step and the functions it calls (the math library's frames are not in it)."""
+    frames = {}
+    for su in Path(build).glob("*.su"):
         for line in su.read_text().splitlines():
             parts = line.split("\t")
-            if len(parts) >= 2 and int(parts[1]) > worst[1]:
-                worst = (parts[0].split(":")[-1], int(parts[1]))
-    return worst
+            if len(parts) >= 2:
+                fn = parts[0].split(":")[-1].split(".")[0]
+                frames[fn] = max(frames.get(fn, 0), int(parts[1]))
+    chain = [f"{name}_pm2dof_{law}_step", "core_step", *_step_chain(c_text, name, gen)]
+    return sum(frames.get(f, 0) for f in chain)
 
 
 def run_embedded(out, model="shang2010", jobs=2, progress=print):
@@ -122,15 +148,19 @@ def run_embedded(out, model="shang2010", jobs=2, progress=print):
     for precision in ("double", "single"):
         single = precision == "single"
         proj = export_project(model, out / precision, precision=precision, force=True)
-        name = json.loads((proj / "pm2dof_export.json").read_text())["model"]
+        record = json.loads((proj / "pm2dof_export.json").read_text())
+        name = record["model"]
+        c_text = (proj / "src" / f"{name}.c").read_text()
         progress(f"{precision}: building and running the replay for the host, M4F and M7 "
                  f"(QEMU) in {proj / 'embedded'}")
         subprocess.run(["make", "-s", "-j", str(jobs), "-C", str(proj / "embedded"), "run"],
                        check=True, stdout=subprocess.DEVNULL)
         build = proj / "embedded" / "build"
-        host, _, _ = _torques(build / "host" / "replay.txt", single)
+        host, _, _, host_ns = _torques(build / "host" / "replay.txt", single)
+        results["runs"][f"host-{precision}"] = {"target": "host (x86-64, cc -O2)",
+                                                "precision": precision, "step_ns": host_ns}
         for target in TARGETS:
-            tau, stats, stack = _torques(build / target / "replay.txt", single)
+            tau, stats, stack, _ = _torques(build / target / "replay.txt", single)
             same, total, worst, statuses = _compare(host, tau, single)
             code, data = _symbol_sizes(build / target / "replay.elf", name)
             steps = {}
@@ -145,7 +175,8 @@ def run_embedded(out, model="shang2010", jobs=2, progress=print):
                 "statuses_equal": statuses, "controller_code_bytes": code,
                 "controller_data_bytes": data, "elf": _elf_size(build / target / "replay.elf"),
                 "stack_painted_bytes": max(stack.values()) if stack else None,
-                "largest_frame": _largest_frame(build / target, name),
+                "stack_static_bytes_na": _static_stack(build / target, name, "na", c_text,
+                                                       "na_step"),
                 "instructions_per_step": steps}
     return results
 
@@ -157,6 +188,11 @@ def format_results(res):
              "|---|---|---|---|---|---|---|---|"]
     for key, r in res["runs"].items():
         target = key.split("-")[0]
+        if target == "host":
+            ns = r["step_ns"].get("na") or next(iter(r["step_ns"].values()))
+            lines.append(f"| {r['target']} | {r['precision']} | (the reference) | | | | | "
+                         f"{ns:.0f} ns measured (mean over replays) |")
+            continue
         na = r["instructions_per_step"].get("na") or next(iter(r["instructions_per_step"]
                                                                 .values()))
         lo, hi = CPI[target]
@@ -187,12 +223,11 @@ def main(argv=None):
     print(format_results(res))
     if args.json:
         Path(args.json).write_text(json.dumps(res, indent=1) + "\n")
-    bad = [k for k, r in res["runs"].items()
-           if not r["statuses_equal"] or (r["precision"] == "double" and r["max_abs_diff_Nm"]
-                                          > 1e-9) or r["max_abs_diff_Nm"] > 1e-3]
+    bad = [k for k, r in res["runs"].items() if "samples" in r and (
+        not r["statuses_equal"] or r["max_abs_diff_Nm"] > BOUND_NM[r["precision"]])]
     if bad:
         print(f"make embedded: the torques of {', '.join(bad)} differ from the host's beyond "
-              f"the bound (double 1e-9 N m, single 1e-3 N m)", file=sys.stderr)
+              f"the bound ({BOUND_NM} N m)", file=sys.stderr)
         return 1
     return 0
 
