@@ -154,7 +154,8 @@ def _layout_defines(prefix, tag, layout, law=None, defaults=None):
             val = f"; default {vals}" if size <= 4 else f"; default {{{vals}}}"
         lines.append(f"#define {prefix}_{tag}_{field.upper()} {sl.start}  /* [{size}] {doc}"
                      f"{val} */")
-    lines.append(f"#define {prefix}_{tag}_{'PARAMS_SIZE' if law else 'SIZE'} {layout.size}")
+    if law:                 # (STATE_SIZE and DIAG_SIZE are among the sizes above)
+        lines.append(f"#define {prefix}_{tag}_PARAMS_SIZE {layout.size}")
     return "\n".join(lines) + "\n"
 
 
@@ -280,7 +281,11 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
                                         for s in Status),
                   LAW_DECLS="".join(law_decls), LAW_DEFS="".join(law_defs),
                   LAW_DEFAULTS="".join(law_defaults),
-                  THETA_NOMINAL=_c_list(m.theta_nominal, fsuffix))
+                  THETA_NOMINAL=_c_list(m.theta_nominal, fsuffix),
+                  SPLITS_NOTE=(" In single precision only min_norm is reliable: the min-max and"
+                               "\n * preload splits choose among candidates with tolerances of "
+                               "1e-10, below float's\n * resolution." if precision == "single"
+                               else ""))
     files = {}
     files[f"include/{name}_pm2dof.h"] = _render(_template("include/api.h.in"), values)
     files[f"src/{name}_pm2dof.c"] = _render(_template("src/api.c.in"), values)
