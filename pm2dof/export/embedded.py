@@ -1,8 +1,9 @@
 # make embedded: the exported step cross-compiled for Cortex-M4F and M7, run under QEMU.
 """``python -m pm2dof.export.embedded [--out DIR] [--model NAME]`` (what ``make embedded`` runs).
 
-For double and single precision: export the model, build ``embedded/replay.c`` for the host
-and for a Cortex-M4F (QEMU ``mps2-an386``) and a Cortex-M7 (``mps2-an500``) with
+For double and single precision: export the model (single precision: build it with CMake and
+run its ctest on the host, the checks of docs/deploying.md), build ``embedded/replay.c`` for
+the host and for a Cortex-M4F (QEMU ``mps2-an386``) and a Cortex-M7 (``mps2-an500``) with
 arm-none-eabi-gcc and newlib, run the three, and report:
 
 * whether the torques along the move equal the host build's, bit for bit, else the largest
@@ -155,6 +156,13 @@ def run_embedded(out, model="shang2010", jobs=2, progress=print):
                  f"(QEMU) in {proj / 'embedded'}")
         subprocess.run(["make", "-s", "-j", str(jobs), "-C", str(proj / "embedded"), "run"],
                        check=True, stdout=subprocess.DEVNULL)
+        if single and shutil.which("cmake"):    # double's ctest runs in tests/export
+            progress(f"single: the exported project's ctest on the host (CMake, {proj})")
+            for cmd in (["cmake", "-S", proj, "-B", proj / "build",
+                         f"-D{name.upper()}_PM2DOF_WERROR=ON"],
+                        ["cmake", "--build", proj / "build", "-j", str(jobs)],
+                        ["ctest", "--test-dir", proj / "build", "--output-on-failure"]):
+                subprocess.run([str(c) for c in cmd], check=True, stdout=subprocess.DEVNULL)
         build = proj / "embedded" / "build"
         host, _, _, host_ns = _torques(build / "host" / "replay.txt", single)
         results["runs"][f"host-{precision}"] = {"target": "host (x86-64, cc -O2)",
