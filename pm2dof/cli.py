@@ -814,16 +814,17 @@ def build_parser():
     p = sub.add_parser(
         "export", parents=[common], help="the controllers as a standalone C99 library (CMake)",
         formatter_class=argparse.RawDescriptionHelpFormatter,
-        description="Write a self-contained C99 project for MODEL's controllers into --out: its "
-        "generated C (copied, not re-derived), the API header include/<name>_pm2dof.h (fixed-"
-        "size structs; init, reset and one step per controller taking the encoder angles and "
-        "the reference and returning the torques and a status, the codes of pm2dof.Status; "
-        "fk, ik, the torque splits; the parameters' layout with the model file's values as "
-        "defaults), a CMakeLists.txt building a static library with a package config "
-        "(find_package(<name>_pm2dof)), a closed-loop example against the generated plant, a "
-        "ctest comparing the C closed loop with pm2dof.simulate, and embedded/ (Cortex-M4F and "
-        "M7 under QEMU). No heap, no global state, only the standard math functions; no Python "
-        "on the target.",
+        description=_wrap(
+            "Write a self-contained C99 project for MODEL's controllers into --out: its "
+            "generated C (copied, not re-derived), the API header include/<name>_pm2dof.h (fixed-"
+            "size structs; init, reset and one step per controller taking the encoder angles and "
+            "the reference and returning the torques and a status, the codes of pm2dof.Status; "
+            "fk, ik, the torque splits; the parameters' layout with the model file's values as "
+            "defaults), a CMakeLists.txt building a static library with a package config "
+            "(find_package(<name>_pm2dof)), a closed-loop example against the generated plant, a "
+            "ctest comparing the C closed loop with pm2dof.simulate, and embedded/ (Cortex-M4F and "
+            "M7 under QEMU). No heap, no global state, only the standard math functions; no Python "
+            "on the target."),
         epilog="examples:\n"
                "  pm2dof export shang2010 --out robot_c\n"
                "  cmake -S robot_c -B robot_c/build && cmake --build robot_c/build && "

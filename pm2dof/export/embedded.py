@@ -191,8 +191,8 @@ def run_embedded(out, model="shang2010", jobs=2, progress=print):
 
 def format_results(res):
     """The results as the table of docs/deploying.md."""
-    lines = ["| target | precision | torques = host | controller code / data | stack (painted) "
-             "| NA step: instructions (mean, max) | cycles at the clock | time vs 2 ms |",
+    lines = ["| target | precision | torques = host | controller code | stack (painted / "
+             "static) | NA step: instructions (mean, max) | cycles at the clock | time vs 2 ms |",
              "|---|---|---|---|---|---|---|---|"]
     for key, r in res["runs"].items():
         target = key.split("-")[0]
@@ -210,9 +210,10 @@ def format_results(res):
                  f"{r['bit_identical']}/{r['samples']} identical, max {r['max_abs_diff_Nm']:.2g}"
                  f" N m")
         lines.append(
-            f"| {r['target']} | {r['precision']} | {agree} | {r['controller_code_bytes'] / 1024:.1f}"
-            f" KiB / {r['controller_data_bytes'] / 1024:.1f} KiB | {r['stack_painted_bytes']} B "
-            f"| {na['mean']:.0f}, {na['max']:.0f} | {c_lo:.0f}-{c_hi:.0f} at "
+            f"| {r['target']} | {r['precision']} | {agree} | "
+            f"{r['controller_code_bytes'] / 1024:.1f} KiB | {r['stack_painted_bytes']} B / "
+            f"{r['stack_static_bytes_na']} B | {na['mean']:.0f}, {na['max']:.0f} | "
+            f"{c_lo:.0f}-{c_hi:.0f} at "
             f"{clock / 1e6:.0f} MHz | {c_lo / clock * 1e6:.0f}-{c_hi / clock * 1e6:.0f} us "
             f"({c_hi / clock / BUDGET_S * 100:.1f} % of the budget at most) |")
     return "\n".join(lines)

@@ -1,10 +1,11 @@
 # pm2dof export (issue 27): the exported C project builds, passes its ctest, links beside another
 # model's library, and bad requests are refused with one clear line.
-"""One CMake build for the module (at -O0: the compile time) (a super-project holding two exports, shang2010 and fivebar,
-with warnings as errors on the hand-written files): its ctest compares each C closed loop with
-pm2dof.simulate (RMSE to 1e-12 relative in double, torques bit for bit, NaN encoder angles),
-then it is installed and a third project finds both libraries with find_package and links them
-into one program (no symbol clashes). The bad-input tests need no compiler.
+"""One CMake build for the module, at -O0 for the compile time: a super-project holding two
+exports, shang2010 and fivebar, with warnings as errors on the hand-written files. Its ctest
+compares each C closed loop with pm2dof.simulate (RMSE to 1e-12 relative in double, torques
+bit for bit, NaN encoder angles); then it is installed and a third project finds both
+libraries with find_package and links them into one program (no symbol clashes). The
+bad-input tests need no compiler.
 """
 import json
 import re
