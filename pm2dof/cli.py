@@ -614,7 +614,7 @@ def cmd_export(args):
                             f"{args.model!r}, not both")
     out = export_project(args.path or args.model, args.out, precision=args.precision,
                          controllers=args.controllers, force=args.force,
-                         generated=args.generated)
+                         generated=args.generated, move=args.move)
     print(f"wrote {out}: build and test it with\n  cmake -S {out} -B {out}/build && cmake "
           f"--build {out}/build && ctest --test-dir {out}/build\n(docs/deploying.md: the API, "
           f"a 2 ms interrupt, make -C {out}/embedded run for a Cortex-M under QEMU)")
@@ -844,6 +844,8 @@ def build_parser():
                    "gains are inputs of its step)")
     p.add_argument("--force", action="store_true", help="write into a non-empty --out (a "
                    "previous export's files are replaced)")
+    p.add_argument("--move", metavar="NAME", help="the model file's move the example and the "
+                   "ctest run (default high)")
     p.set_defaults(func=cmd_export)
     return ap
 

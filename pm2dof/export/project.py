@@ -174,7 +174,7 @@ def _law_params(model):
 
 
 def export_project(model=None, out=None, *, precision="double", controllers=LAWS, force=False,
-                   generated=None):
+                   generated=None, move=None):
     """Write the C project of ``model``'s controllers into the folder ``out``.
 
     Parameters
@@ -191,6 +191,9 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
         Write into a non-empty folder (a previous export's files are replaced).
     generated : str or Path, optional
         The folder of the model's generated C (default as :func:`pm2dof.load_model`).
+    move : str, optional
+        The model file's move that the example and the test run (default "high", else the
+        file's first line move).
 
     Returns
     -------
@@ -212,6 +215,7 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     if out is None:
         raise ArgumentError("export_project: give the output folder (out=...)")
     m = load_model(model, generated)
+    move_name = reference.reference_move(m, move)[0]     # an unknown move: refused here
     c_text, h_text = _generated_sources(m)
     name, n, p = m.name, m.n_legs, len(m.param_names)
     split = m.spec.control["split"]
@@ -243,7 +247,7 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
               "CLOSURE_TOL": repr(m.closure_tolerance),
               "SING_THRESHOLD": repr(m.singularity_threshold) + fsuffix,
               "PARALLEL_SING_THRESHOLD": repr(m.parallel_singularity_threshold) + fsuffix,
-              "MOVE": reference.reference_move(m)[0], "RK4": m.spec.rk4_substeps}
+              "MOVE": move_name, "RK4": m.spec.rk4_substeps}
 
     theta_doc = "\n".join(f" *   [{i:2d}] {nm:8s} nominal {v:.6g}" for i, (nm, v) in
                           enumerate(zip(m.param_names, m.theta_nominal)))
@@ -309,7 +313,7 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
         f"int SIM_MEASURE(const double **arg, double **res, long long *iw, double *w, int mem);\n"
         f"int SIM_PLANT_STEP(const double **arg, double **res, long long *iw, double *w, "
         f"int mem);\n#endif\n")
-    ref = reference.reference_data(m, laws, defaults["lqr"])
+    ref = reference.reference_data(m, laws, defaults["lqr"], move_name)
     files[f"tests/{name}_reference.h"] = reference.reference_header(m, ref, precision)
     ops, ctls = [], []
     for law in ref["laws"]:

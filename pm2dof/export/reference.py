@@ -1,7 +1,8 @@
 # What the exported test compares with: pm2dof's own closed loops on the model's move, as C data.
 """Reference data of an export: ``tests/<name>_reference.h``.
 
-The move (the model file's ``[trajectories.high]``, else its first line move), the plant's
+The move (the model file's ``[trajectories.high]``, else its first line move, or the one
+named), the plant's
 truth, and for each exported controller with a reference (NA, APD, CTC) the RMSE (eq. 41),
 the torques and the encoder readings of :func:`pm2dof.simulate`. LQR's gains come from a
 Riccati solver (the ``control`` extra), so its reference is one step of the generated
@@ -41,10 +42,12 @@ SINGLE_BOUNDS = """/* single precision against pm2dof's double results:
 """
 
 
-def reference_move(model):
-    """(name, Trajectory): the model file's "high" move, else its first line move."""
+def reference_move(model, name=None):
+    """(name, Trajectory): the model file's move ``name``; default its "high" move, else its
+    first line move (TrajectoryError naming the moves for an unknown name)."""
     moves = line_moves(model)
-    name = "high" if "high" in moves else moves[0]
+    if name is None:
+        name = "high" if "high" in moves else moves[0]
     return name, model_move(model, name)
 
 
@@ -79,10 +82,11 @@ def _lqr_step(model, move, plant, params):
             "status": float(status[0])}
 
 
-def reference_data(model, laws, lqr_params=None):
-    """The reference of ``laws`` (a subset of na, apd, ctc, lqr), as arrays (module doc).
-    ``lqr_params``: LQR's parameter vector (``lqr_params`` layout)."""
-    name, move = reference_move(model)
+def reference_data(model, laws, lqr_params=None, move=None):
+    """The reference of ``laws`` (a subset of na, apd, ctc, lqr) along the model file's move
+    ``move`` (default as :func:`reference_move`), as arrays (module doc). ``lqr_params``:
+    LQR's parameter vector (``lqr_params`` layout)."""
+    name, move = reference_move(model, move)
     plant = plant_vector(model)
     out = {"move": name, "trajectory": move, "plant": plant, "laws": [], "rmse": [],
            "tau": [], "qa": []}
