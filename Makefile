@@ -10,7 +10,7 @@ OUT    ?= out
 MODEL_DIRS := $(patsubst %/manifest.json,%,$(wildcard pm2dof/generated/*/manifest.json))
 LIBS := $(foreach d,$(MODEL_DIRS),$(d)/lib$(notdir $(d)).so)
 
-.PHONY: install derive derive-all libs test lint docs check-install dist demo bench c-example clean help
+.PHONY: install derive derive-all libs test lint docs check-install dist demo bench c-example embedded clean help
 
 help:
 	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
@@ -23,6 +23,7 @@ help:
 	@echo "make docs     build the documentation site into site/ (mkdocs build --strict)"
 	@echo "make bench    controller step-time benchmark"
 	@echo "make c-example  standalone C: NA against the compiled plant, paced at 2 ms"
+	@echo "make embedded   pm2dof export cross-compiled for Cortex-M4F and M7, run under QEMU"
 	@echo "make install  only create .venv, install pm2dof (editable) and compile the generated C"
 
 $(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
@@ -76,6 +77,26 @@ bench: install
 
 c-example: install
 	$(MAKE) -C examples/c run
+
+# pm2dof export's project cross-compiled for a Cortex-M4F and a Cortex-M7 (single and double),
+# run under QEMU against the host build (docs/deploying.md). The Debian packages are installed
+# when missing and this user may (root, or password-less sudo); otherwise it says what to install.
+EMBEDDED_PKGS := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
+EMBEDDED_OUT  ?= build/embedded
+embedded: install
+	@have() { command -v arm-none-eabi-gcc >/dev/null && command -v qemu-system-arm >/dev/null \
+	    && test -f "$$(arm-none-eabi-gcc -print-file-name=libc.a)"; }; \
+	if ! have; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(EMBEDDED_PKGS); \
+	  elif command -v apt-get >/dev/null && sudo -n true 2>/dev/null; then \
+	    sudo apt-get update -qq && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(EMBEDDED_PKGS); \
+	  fi; \
+	  have || { echo "make embedded needs arm-none-eabi-gcc with newlib and qemu-system-arm;" \
+	    "install them (Debian/Ubuntu: sudo apt-get install $(EMBEDDED_PKGS))"; exit 1; }; \
+	fi
+	@mkdir -p $(EMBEDDED_OUT)
+	$(PY) -m pm2dof.export.embedded --out $(EMBEDDED_OUT) --json $(EMBEDDED_OUT)/results.json
 
 clean:
 	rm -rf $(VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT) site

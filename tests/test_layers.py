@@ -33,10 +33,11 @@ ALLOWED = {
     "identification": _RUNTIME | {"infra", "identification"},   # 3: logs, excitation, fit
     "planning": _RUNTIME | {"infra", "planning"},       # 3: motion planning (issue 20)
     "bench": _RUNTIME | {"infra", "reference", "bench", "derive", "planning", "linear"},
+    "export": _RUNTIME | {"export"},                    # beside bench: C projects (issue 27)
     "studies": _RUNTIME | {"infra", "identification", "studies", "linear"},   # 3: Dask
     "figures": _RUNTIME | {"infra", "analysis", "studies", "figures", "planning", "linear"},  # 4
     "cli": _RUNTIME | {"infra", "analysis", "identification", "bench", "studies", "figures",
-                       "cli", "derive", "planning", "linear"},                  # 4
+                       "cli", "derive", "planning", "linear", "export"},                  # 4
     "__init__": _RUNTIME,                               # the public API (lazy names aside)
     "__main__": {"cli"},
 }
@@ -53,6 +54,7 @@ THIRD_PARTY = {
     "bench": {"numpy", "casadi", "sympy", "toppra", "pinocchio"},  # baselines; each optional
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
     "planning": {"numpy", "casadi"},                    # CasADi only in plan_smooth (lazily)
+    "export": {"numpy"},                                # copies generated C: no CasADi
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},
     "cli": set(),
 }
