@@ -182,8 +182,20 @@ class Trajectory:
 
     @classmethod
     def from_samples(cls, xd, xd_dot, xd_ddot, period):
-        """A plain sampled reference: ``xd``, ``xd_dot``, ``xd_ddot`` (N, m) arrays (m, m/s,
-        m/s^2) at t = k * period, k = 0 .. N-1, of any task dimension m (from ``xd``).
+        """A plain sampled reference of any task dimension m (taken from ``xd``).
+
+        Parameters
+        ----------
+        xd, xd_dot, xd_ddot : array_like, shape (N, m)
+            Desired pose (m; rad for an orientation), velocity (m/s) and acceleration (m/s^2)
+            at t = k * period, k = 0 .. N-1.
+        period : float
+            Sampling period, s (> 0).
+
+        Returns
+        -------
+        Trajectory
+            With ``start``, ``end`` and ``profile`` None.
 
         Raises TrajectoryError for a bad period, mismatched shapes or a non-finite sample.
         """
@@ -204,8 +216,18 @@ class Trajectory:
 
     @classmethod
     def hold(cls, x, duration, period):
-        """Hold the pose ``x`` (m,) m for at least ``duration`` s (>= 0): ceil(duration /
-        period) + 1 samples at t = k * period, zero velocity and acceleration."""
+        """Hold one pose: ceil(duration / period) + 1 samples at t = k * period, zero velocity
+        and acceleration.
+
+        Parameters
+        ----------
+        x : array_like, shape (m,)
+            The pose held, m (rad for an orientation).
+        duration : float
+            How long, s (>= 0).
+        period : float
+            Sampling period, s (> 0).
+        """
         try:
             x = np.asarray(x, dtype=np.float64)
         except (TypeError, ValueError):

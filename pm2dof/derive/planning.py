@@ -244,7 +244,7 @@ class _Stage:
         ok0, okt = predicate(ca.SX(0)), predicate(v_top)
         lo, hi, q = ca.SX(0), v_top, v_top * 2.0 ** -halvings
         if hint is not None:
-            h = ca.fmax(hint, 1e-300)
+            h = ca.fmax(hint, 1e-30)      # a speed, m/s; 1e-30: a normal float (pm2dof export --precision single)
             qh = 2 ** (ca.floor(ca.log(h) / math.log(2)) - LATTICE_BITS)
             a = ca.floor(h * (1 - HINT_SPAN) / qh) * qh
             b = ca.ceil((h * (1 + HINT_SPAN) + HINT_FLOOR) / qh) * qh

@@ -19718,7 +19718,7 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a24=(a24+a09);
   a25=casadi_fmin(a25,a24);
   a25=sqrt(a25);
-  a24=1.0000000000000000e-300;
+  a24=1.0000000000000001e-30;
   a25=casadi_fmax(a25,a24);
   a22=(a22*a25);
   a24=2.;

@@ -52157,7 +52157,7 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a037=(a037+a009);
   a043=casadi_fmin(a043,a037);
   a043=sqrt(a043);
-  a037=1.0000000000000000e-300;
+  a037=1.0000000000000001e-30;
   a043=casadi_fmax(a043,a037);
   a040=(a040*a043);
   a037=2.;

@@ -29896,7 +29896,7 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a04=(a04+a45);
   a63=casadi_fmin(a63,a04);
   a63=sqrt(a63);
-  a04=1.0000000000000000e-300;
+  a04=1.0000000000000001e-30;
   a63=casadi_fmax(a63,a04);
   a67=(a67*a63);
   a04=2.;

@@ -30711,7 +30711,7 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a067=(a067+a009);
   a031=casadi_fmin(a031,a067);
   a031=sqrt(a031);
-  a067=1.0000000000000000e-300;
+  a067=1.0000000000000001e-30;
   a031=casadi_fmax(a031,a067);
   a065=(a065*a031);
   a067=2.;

@@ -30130,7 +30130,7 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a028=(a028+a009);
   a034=casadi_fmin(a034,a028);
   a034=sqrt(a034);
-  a028=1.0000000000000000e-300;
+  a028=1.0000000000000001e-30;
   a034=casadi_fmax(a034,a028);
   a031=(a031*a034);
   a028=2.;
