@@ -24,6 +24,13 @@ go through it alike. Each step is a function below; :func:`identify_log` runs th
    1/sigma of its residual; a Newey-West (Bartlett) covariance, since filtered residuals
    are correlated; ±2 sigma per base parameter; warnings for directions the data cannot
    determine.
+7. The model error (:func:`model_error`): the pipeline is run again with each of its free
+   choices changed (the cutoff halved, the joint-speed threshold doubled, every second sample
+   dropped). With the right model these move the estimate by noise only; discretisation
+   (the filter acting on a nonlinear regressor, finite differences) and friction outside
+   eq. 2 (Stribeck) move it by their bias. The printed interval is ±(2 sigma + the sum of the
+   three shifts): 2 sigma alone covers the noise, not these biases, and with the optimised
+   excitation it missed the truth in up to 80 % of the Monte Carlo seeds.
 """
 import math
 
@@ -34,7 +41,8 @@ from .base import inertial_mask
 from .log import LogError, log_poses
 
 __all__ = ["lowpass", "choose_cutoff", "differentiate", "stack_regressor", "weighted_ls",
-           "weak_directions", "identify_log", "CUTOFF_FACTOR", "MIN_JOINT_SPEED"]
+           "weak_directions", "model_error", "identify_log", "CUTOFF_FACTOR", "MIN_JOINT_SPEED",
+           "MODEL_ERROR_CHOICES"]
 
 #: cutoff of the low-pass = CUTOFF_FACTOR x the highest excitation frequency. A 4th-order
 #: Butterworth applied forward and backward passes f/fc = 0.1 with gain 1 - 1e-8: the
@@ -268,6 +276,42 @@ def weak_directions(cov, estimate, names, rel=0.1):
     return out
 
 
+#: the free choices :func:`model_error` changes, as printed
+MODEL_ERROR_CHOICES = ("cutoff halved", "joint-speed threshold doubled", "sample rate halved")
+
+
+def _half_rate(t, xe, tau):
+    """Every second sample; the torque averaged over the two hold intervals it covers (the
+    torque applied over [t_2j, t_2j+2))."""
+    n = (len(t) - 1) // 2
+    return t[0:2 * n:2], xe[0:2 * n:2], 0.5 * (tau[0:2 * n:2] + tau[1:2 * n:2])
+
+
+def model_error(model, base, t, xe, tau, cutoff_hz, min_joint_speed, estimate):
+    """Shifts of the base-parameter estimate when the pipeline's free choices change.
+
+    Each of :data:`MODEL_ERROR_CHOICES` (cutoff / 2, ``min_joint_speed`` x 2, sample period
+    x 2) is applied alone and the weighted least squares solved again. None of them should
+    matter if eq. 2 with the filtered differences were exact: what they move is the bias
+    of discretisation and of friction outside eq. 2, which the residuals' sigma misses.
+
+    Returns
+    -------
+    ndarray (3, r)
+        Estimate with the choice changed minus ``estimate``; a row of zeros where the changed
+        pipeline has too few samples.
+    """
+    runs = [(t, xe, tau, 0.5 * cutoff_hz, min_joint_speed),
+            (t, xe, tau, cutoff_hz, 2.0 * min_joint_speed),
+            (*_half_rate(np.asarray(t), xe, np.asarray(tau)), cutoff_hz, min_joint_speed)]
+    out = np.zeros((len(runs), base.r))
+    for k, (tk, xk, uk, fc, v) in enumerate(runs):
+        st = stack_regressor(model, base, tk, xk, uk, fc, min_joint_speed=v)
+        if 2 * len(st["t"]) > 2 * base.r:
+            out[k] = weighted_ls(st["Phi"], st["u"])["estimate"] - estimate
+    return out
+
+
 #: a logged torque this many times the model's tau_max is a units or limits mistake
 TORQUE_SCALE_LIMIT = 2.0
 
@@ -325,7 +369,8 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
     dict
         ``base`` (the :class:`~pm2dof.identification.base.BaseParameters`), ``names`` (base
         parameters, readable), ``independent_names``, ``estimate`` (r,),
-        ``std`` (r,) 1 sigma, ``nominal`` (r,) Tables 1-2 folded, ``theta_ls`` (p,) full theta
+        ``std`` (r,) 1 sigma, ``model_error`` (3, r) (:func:`model_error`), ``interval`` (r,)
+        the half-width 2 sigma + sum |model_error|, ``nominal`` (r,) Tables 1-2 folded, ``theta_ls`` (p,) full theta
         with the dependent parameters at nominal, ``consistent`` (dict of
         :func:`pm2dof.identification.consistent.consistent_theta`, or None), ``theta0`` (p,) the
         theta to use (consistent if computed), ``cutoff_hz``, ``band_hz``, ``band_from``,
@@ -369,6 +414,8 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
     nominal = model.theta_nominal
     _check_signs(src, ls, base.fold(nominal), inames)
     theta_ls = base.unfold(ls["estimate"], nominal)
+    shifts = model_error(model, base, log.t, xe, log.tau, cutoff_hz, min_joint_speed,
+                         ls["estimate"])
     warnings = []
     if log.ignored:
         warnings.append(f"columns not used: {', '.join(log.ignored)}")
@@ -387,6 +434,7 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
                         f"applied one")
     out = {"base": base, "names": base.labels(), "independent_names": inames,
            "estimate": ls["estimate"], "std": ls["std"], "cov": ls["cov"],
+           "model_error": shifts, "interval": 2 * ls["std"] + np.abs(shifts).sum(axis=0),
            "nominal": base.fold(nominal), "theta_ls": theta_ls,
            "cutoff_hz": float(cutoff_hz), "band_hz": band, "band_from": how,
            "decimate": st["decimate"], "samples": K, "left_out_slow": st["n_slow"],

@@ -1,0 +1,98 @@
+# What identify fit's output may be read as: the --seed-na comparison, honest intervals, the band.
+"""Issue 28, the wrong conclusions:
+
+1. ``fit LOG --seed-na`` simulates Table 3 on the model file's ``[plant]``; for a log of
+   another robot it says so, and warns in one line when the identified theta is outside
+   [plant]'s interval on well-determined base parameters.
+2. The printed interval (2 sigma + the model-error shifts) covers the truth in >= 90 % of the
+   Monte Carlo seeds for every base parameter with the optimised excitation; where it does
+   not (the weak default multi-sine), the Monte Carlo output names the parameter and why.
+3. Without metadata, the excitation band of a measured multi-sine or periodic excitation is
+   found within 20 %.
+"""
+import dataclasses
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pm2dof
+from pm2dof import cli
+from pm2dof.control.simulate import plant_truth
+from pm2dof.identification.design import load_excitation, trajectory_of
+from pm2dof.identification.excitation import excite, multisine
+from pm2dof.identification.fit import choose_cutoff
+from pm2dof.identification.log import log_poses, write_log
+from pm2dof.identification.monte_carlo import TARGETS, format_monte_carlo, monte_carlo
+
+EXCITATION = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
+
+
+@pytest.fixture(scope="module")
+def m():
+    return pm2dof.load_model()
+
+
+@pytest.fixture(scope="module")
+def designed(m):
+    return trajectory_of(m, load_excitation(EXCITATION, m))
+
+
+def _other_robot(m):
+    """The issue's 'true' robot: inertias +15 %, friction doubled."""
+    p = m.spec.plant
+    return plant_truth(m, **{k: [1.15 * v for v in p[k]] for k in ("alpha", "beta", "gamma")},
+                       **{k: [2.0 * v for v in p[k]] for k in ("fv", "fc")})
+
+
+def _fit_seeded(tmp_path, log, capsys, name):
+    path = write_log(tmp_path / name, dataclasses.replace(log, meta={
+        k: v for k, v in log.meta.items() if k != "source"}))
+    assert cli.main(["identify", "fit", str(path), "--seed-na"]) == 0
+    return capsys.readouterr().out
+
+
+def test_seed_na_names_its_robot_and_warns_for_another(tmp_path, m, designed, capsys):
+    out = _fit_seeded(tmp_path, excite(m, designed, truth=_other_robot(m)), capsys, "other.csv")
+    assert "Table 3 runs on the model file's [plant], not on the robot that wrote" in out
+    warn = [ln for ln in out.splitlines() if ln.startswith("warning: the identified theta is "
+                                                           "outside")]
+    assert len(warn) == 1 and "no verdict on the identification" in warn[0], out
+    # the log of [plant] itself: the same sentence, no warning
+    out = _fit_seeded(tmp_path, excite(m, designed), capsys, "plant.csv")
+    assert "not on the robot that wrote" in out and "outside its interval" not in out, out
+
+
+def test_the_printed_interval_is_labelled(tmp_path, m, capsys):
+    assert cli.main(["identify", "fit", "--duration", "3"]) == 0
+    out = capsys.readouterr().out
+    assert "+-interval" in out and "+-2 sigma" not in out
+    assert "+-interval: 2 sigma (noise; Newey-West) + the shifts" in out
+    assert cli.main(["identify", "fit", "--duration", "3", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert np.all(np.array(d["interval"]) >= np.array(d["two_sigma"]))
+    assert set(d["model_error"]) == {"cutoff halved", "joint-speed threshold doubled",
+                                     "sample rate halved"}
+
+
+def test_interval_covers_the_truth_with_the_optimised_excitation(m, designed):
+    """Before: 2 sigma alone covered alpha1 + gamma2 + gamma3 in 20-30 % of the seeds, fv2 in
+    75-82 %, fc2 in 80-84 % (50 seeds: 7 of 13 parameters >= 90 %)."""
+    mc = monte_carlo(m, designed, 12)
+    low = {n: c for n, c in zip(mc["names"], mc["coverage"]) if c < TARGETS["coverage"]}
+    assert not low, low
+    assert mc["untrusted"] == {}
+
+
+def test_monte_carlo_names_the_intervals_it_cannot_trust(m):
+    """The default multi-sine is slow: the plant's Stribeck excess biases friction beyond the
+    interval. The output names each such parameter and the cause."""
+    mc = monte_carlo(m, multisine(m, duration=10.0), 8)
+    low = [n for n, c in zip(mc["names"], mc["coverage"]) if c < TARGETS["coverage"]]
+    assert low and set(low) == set(mc["untrusted"])
+    text = format_monte_carlo(mc)
+    for n in low:
+        line = next(ln for ln in text.splitlines() if ln.startswith(f"untrusted interval: {n}:"))
+        assert "a bias" in line or "scatter" in line
+        assert "Do not trust this interval" in line
