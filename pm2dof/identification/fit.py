@@ -40,7 +40,7 @@ from ..core.errors import ArgumentError
 from .base import inertial_mask
 from .log import LogError, log_poses
 
-__all__ = ["lowpass", "choose_cutoff", "differentiate", "stack_regressor", "weighted_ls",
+__all__ = ["lowpass", "choose_cutoff", "excitation_band", "differentiate", "stack_regressor", "weighted_ls",
            "weak_directions", "model_error", "identify_log", "CUTOFF_FACTOR", "MIN_JOINT_SPEED",
            "MODEL_ERROR_CHOICES"]
 
@@ -81,29 +81,73 @@ def zero_phase(sos, x):
     return signal.sosfiltfilt(sos, x, axis=0)
 
 
+#: a spectral line belongs to the excitation if its power is within this of the largest line
+#: (amplitude 1 %: a tracking loop's harmonics lie 55-70 dB down) ...
+LINE_DB = 40.0
+#: ... and this far above the noise floor (the median of the spectrum); see excitation_band
+FLOOR_DB = 20.0
+
+
+def _hann_leak(d):
+    """Envelope of the Hann window's amplitude response d bins from a line (1 at d = 0):
+    1 / (pi d |1 - d^2|) outside the main lobe (|d| >= 2), 1 inside it."""
+    d = np.abs(d)
+    return np.where(d >= 2, 1.0 / (np.pi * np.maximum(d, 2) * np.abs(1 - np.maximum(d, 2) ** 2)),
+                    1.0)
+
+
+def excitation_band(x, T):
+    """The highest frequency, Hz, of a measured multi-sine or periodic motion ``x`` (N, d).
+
+    The Hann-windowed power spectrum, summed over the axes. A plain FFT leaks a line's power
+    far up the spectrum when the record is not a whole number of periods (the default
+    multi-sine's 3.39 Hz read as 11-16 Hz from 99.99 % of the power). Its lines are the local
+    maxima within :data:`LINE_DB` of the largest, :data:`FLOOR_DB` above the median (the noise
+    floor) and 10 dB above the window's sidelobes of every stronger line (lines two bins apart,
+    a periodic excitation of two periods, are told apart). The band is the highest line.
+    """
+    x = np.asarray(x, dtype=float)
+    x = x - np.mean(x, axis=0)
+    P = np.sum(np.abs(np.fft.rfft(x * np.hanning(len(x))[:, None], axis=0)) ** 2, axis=1)
+    f = np.fft.rfftfreq(len(x), T)
+    k = 1 + np.flatnonzero((P[1:-1] > P[:-2]) & (P[1:-1] >= P[2:]))
+    if not k.size:
+        return 0.0
+    k = k[(P[k] >= P[k].max() * 10 ** (-LINE_DB / 10))
+          & (P[k] >= np.median(P) * 10 ** (FLOOR_DB / 10))]
+    lines = [j for j in k if all(P[j] >= 10 * P[i] * _hann_leak(j - i) ** 2
+                                 for i in k if P[i] > P[j])]
+    return float(f[max(lines)]) if lines else 0.0
+
+
 def choose_cutoff(log, xe=None, factor=CUTOFF_FACTOR):
     """The low-pass cutoff for ``log``: ``factor`` x the highest excitation frequency.
 
     The band is the log's metadata ``excitation_max_hz`` (written by ``excite``); else it
-    is estimated from the data: the frequency below which 99.99 % of the power of the
-    positions xe (N, 2) (mean removed) lies. Capped at 0.4 of the Nyquist frequency.
+    is estimated from the positions xe (N, 2) (:func:`excitation_band`: the highest line of
+    their spectrum). Capped at 0.4 of the Nyquist frequency.
 
     Returns
     -------
     cutoff_hz, band_hz : float
     how : str
         Where the band came from (for the printed report).
+
+    Raises
+    ------
+    LogError
+        No excitation band: the positions do not move (names the log and ``--cutoff``).
     """
     T = log.period
     if "excitation_max_hz" in log.meta:
         band, how = float(log.meta["excitation_max_hz"]), "excitation_max_hz in the log"
     else:
-        x = np.asarray(xe, dtype=float) - np.mean(xe, axis=0)
-        P = np.sum(np.abs(np.fft.rfft(x, axis=0)) ** 2, axis=1)
-        f = np.fft.rfftfreq(len(x), T)
-        c = np.cumsum(P) / np.sum(P)
-        band = float(f[np.searchsorted(c, 0.9999)])
-        how = "estimated from the spectrum of fk(qa) (99.99 % of its power)"
+        band = excitation_band(xe, T)
+        how = "estimated: the highest line of the spectrum of fk(qa)"
+    if not band > 0:
+        raise LogError(f"{log.source}: the log shows no motion to identify from (no line in the "
+                       f"spectrum of fk(qa)); the filter's cutoff cannot be chosen from it (give "
+                       f"--cutoff HZ if the motion is there)")
     cap = 0.4 * 0.5 / T
     return min(factor * band, cap), band, how
 
