@@ -442,9 +442,12 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
     r = base.r
     src = log.source
     if 2 * K <= r:
+        ms = (f"; the median step of t is {log.period:g} s: if t is in ms, it must be in s"
+              if log.period >= 0.05 else "")
         raise LogError(f"{src}: too short to determine the {r} base parameters: {K} usable "
                        f"samples after the filter's edges ({st['edge']} samples each end), "
-                       f"decimation by {st['decimate']} and {st['n_slow']} slow samples left out")
+                       f"decimation by {st['decimate']} and {st['n_slow']} slow samples left out "
+                       f"(a joint slower than {min_joint_speed:g} rad/s){ms}")
     Phi2 = st["Phi"].reshape(-1, r)
     cs = np.linalg.norm(Phi2, axis=0)
     sv = np.linalg.svd(Phi2 / np.where(cs > 0, cs, 1.0), compute_uv=False)

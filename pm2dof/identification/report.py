@@ -185,12 +185,17 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
                                 f"which fit runs only without a LOG (got LOG {log})")
         path = log
         log = read_log(path, time_tolerance=time_tolerance)
+        assumed = model is None and "model" not in log.meta
         model = model_for(log.meta, log_folder(log), str(path), model=model, generated=generated,
                           error=LogError)
+        if assumed:
+            assumed = (f"model {model.name!r} ({model.spec.path}) assumed: {path} records no "
+                       f"model and no --model was given")
         if progress:
             progress(f"read {path}: {len(log.t)} rows; filtering, stacking the base regressor, "
                      f"weighted and physically constrained least squares")
     else:
+        assumed = False
         model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
         log = simulated_log(model, excitation_file,
                             DEFAULT_DURATION if duration is None else duration,
@@ -198,9 +203,16 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
         if progress:
             progress(f"{len(log.t)} rows; filtering, stacking the base regressor, weighted and "
                      f"physically constrained least squares")
-    res = identify_log(model, log, cutoff_hz=cutoff_hz,
-                       min_joint_speed=MIN_JOINT_SPEED if min_joint_speed is None
-                       else min_joint_speed)
+    try:
+        res = identify_log(model, log, cutoff_hz=cutoff_hz,
+                           min_joint_speed=MIN_JOINT_SPEED if min_joint_speed is None
+                           else min_joint_speed)
+    except LogError as exc:
+        if assumed:
+            raise LogError(f"{exc} ({assumed})") from None
+        raise
+    if assumed:
+        res["warnings"].insert(0, assumed)
     s = summary(model, log, res)
     seeded = ""
     if seed:

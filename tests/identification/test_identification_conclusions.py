@@ -145,3 +145,32 @@ def test_motionless_log_names_the_file_and_cutoff(m):
                    source="still.csv")
     with pytest.raises(LogError, match=r"still.csv: the log shows no motion .* --cutoff"):
         identify_log(m, log)
+
+
+def test_messages_about_logs_name_units_option_and_model(tmp_path, m, capsys):
+    """Issue 28 item 7: t in ms, timestamp jitter, a log that names no model."""
+    from pm2dof.identification.fit import identify_log
+    from pm2dof.identification.log import LogError, read_log
+    log = _without_metadata(excite(m, multisine(m, duration=2.0)))
+    in_ms = dataclasses.replace(log, t=1000 * log.t, source="ms.csv")
+    with pytest.raises(LogError, match=r"ms.csv: too short .* the median step of t is 2 s: if t "
+                                       r"is in ms, it must be in s"):
+        identify_log(m, in_ms, consistent=False)
+    jitter = dataclasses.replace(log, t=log.t + 0.005 * 0.002 * np.random.default_rng(1)
+                                 .uniform(-1, 1, len(log.t)))
+    path = write_log(tmp_path / "jitter.csv", jitter)
+    with pytest.raises(LogError, match=r"--time-tolerance"):
+        read_log(path)
+    assert read_log(path, time_tolerance=0.02).n_legs == 3
+    # no model recorded, no --model: the report says which model was assumed
+    path = write_log(tmp_path / "nomodel.csv", log)
+    assert cli.main(["identify", "fit", str(path), "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["warnings"][0].startswith("model 'shang2010' (") and "assumed" in d["warnings"][0]
+    other = pm2dof.load_model("fivebar")
+    q = np.array([other.ik(x) for x in multisine(other, duration=0.5).xd])
+    five = dataclasses.replace(log, t=log.t[:len(q)], qa=q[:, :2], tau=np.zeros((len(q), 2)))
+    path = write_log(tmp_path / "fivebar.csv", five)   # a two-leg log: it cannot be shang2010
+    assert cli.main(["identify", "fit", str(path)]) != 0
+    err = capsys.readouterr().err
+    assert "model 'shang2010'" in err and "assumed" in err and "--model" in err, err
