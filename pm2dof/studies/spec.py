@@ -304,7 +304,7 @@ class Study:
 
     def canonical(self):
         """What defines the rows (not the file's comments or layout): JSON-able dict."""
-        return {"name": self.name, "model_sha256": _sha(Path(self.model_path)),
+        return {"name": self.name, "model_values": model_values(self.model_path),
                 "moves": self.moves, "seed": self.seed, "draws": self.draws, "runs": self.runs,
                 "chunk": self.chunk, "settle_time": self.settle_time, "quantise": self.quantise,
                 "variants": [(v.name, v.law, v.options) for v in self.variants],
@@ -317,8 +317,12 @@ class Study:
         return hashlib.sha256(json.dumps(self.canonical(), sort_keys=True).encode()).hexdigest()
 
 
-def _sha(p):
-    return hashlib.sha256(p.read_bytes()).hexdigest()
+def model_values(path):
+    """{table: sha256} of a model file's values, per top-level table (``[plant]``, ``[[legs]]``,
+    ...): what enters a study's rows. Comments, layout and the order of keys do not count."""
+    d = tomllib.loads(Path(path).read_text(encoding="utf-8"))
+    return {k: hashlib.sha256(json.dumps(v, sort_keys=True, default=str).encode()).hexdigest()
+            for k, v in sorted(d.items())}
 
 
 def resolve_study(ref):

@@ -336,7 +336,8 @@ def test_out_folder_resume_refusal_and_unwritable(tmp_path):
     assert not list((out / "results").glob(".chunk-*"))
     assert finish_out(out, s) == len(s.chunk_units(2)) * s.runs
     other = dataclasses.replace(s, seed=s.seed + 1)
-    with pytest.raises(StudyOutError, match=r"holds 1 chunk\(s\) of another study"):
+    with pytest.raises(StudyOutError, match=r"holds 1 chunk\(s\) of this study .* the study's "
+                                            r"seed"):
         prepare_out(out, other, m)
     blocker = tmp_path / "a_file"
     blocker.write_text("x")
@@ -344,6 +345,32 @@ def test_out_folder_resume_refusal_and_unwritable(tmp_path):
         prepare_out(blocker / "sub", s, m)
     with pytest.raises(StudyFileError, match="no study.json"):
         read_results(tmp_path / "empty")
+
+
+def test_resume_follows_the_values_not_the_bytes_and_names_the_change(tmp_path):
+    """A comment added to the model file blocked resuming, and the message called the study's
+    own file 'another study' (issue 28). The identity is the model file's parsed values."""
+    s0 = read_study(STUDIES / "robustness.toml", quick=True)
+    model_file = tmp_path / "robot.toml"
+    model_file.write_text(Path(s0.model_path).read_text())
+    m = pm2dof.load_model(s0.model_path)                 # (for the provenance only)
+    s = dataclasses.replace(s0, model_path=str(model_file))
+    assert s.identity == s0.identity                     # the same values: the same rows
+    out = tmp_path / "out"
+    prepare_out(out, s, m)
+    write_chunk(out, 0, run_chunk(s0, 0), s)
+    model_file.write_text("# operator's note: same robot\n" + model_file.read_text() + "\n# end\n")
+    assert prepare_out(out, s, m) == {0}                 # resumed: the values are the same
+    text = model_file.read_text()
+    i = text.index("[plant]")
+    j = text.index("payload_mass", i)
+    k = text.index("\n", j)
+    model_file.write_text(text[:j] + "payload_mass = 0.123" + text[k:])
+    with pytest.raises(StudyOutError, match=r"holds 1 chunk\(s\) of this study .* other inputs: "
+                                            r"the model file's values in \[plant\]\. Use"):
+        prepare_out(out, s, m)
+    with pytest.raises(StudyOutError, match=r"the study's seed \(\d+ then, \d+ now\)"):
+        prepare_out(out, dataclasses.replace(s, seed=s.seed + 1), m)
 
 
 # --------------------------------------------------------------------------------------
