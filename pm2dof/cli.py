@@ -852,8 +852,8 @@ def main(argv=None):
     except Pm2dofError as exc:  # a typed error: the input is refused, not a bug
         print(f"pm2dof: error: {exc}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print("\npm2dof: interrupted", file=sys.stderr)
+    except KeyboardInterrupt as exc:
+        print(f"\npm2dof: interrupted{f' ({exc})' if str(exc) else ''}", file=sys.stderr)
         return 130
     except ModuleNotFoundError as exc:
         module = (exc.name or "").split(".")[0]
