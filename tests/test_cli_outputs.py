@@ -52,3 +52,41 @@ def test_preload_settings_broadcast_one_value_and_refuse_a_wrong_count():
     assert pre.tolist() == [2.0, 2.0, 2.0] and sgn.tolist() == [1.0, -1.0, 1.0]
     with pytest.raises(pm2dof.ArgumentError, match="preload must be one finite number or 3"):
         preload_settings(m, preload=[1.0, 2.0])
+
+
+def _moved_model(tmp_path):
+    """The paper's robot with its moves elsewhere (trajectories are not in the formulation, so
+    the shipped generated code serves it)."""
+    from pm2dof.core.paths import SHIPPED_MODELS
+    text = (SHIPPED_MODELS / "shang2010.toml").read_text()
+    text = text.replace("start = [0.22, 0.29]", "start = [0.30, 0.20]").replace(
+        "end = [0.27, 0.24]", "end = [0.32, 0.22]")
+    path = tmp_path / "moved.toml"
+    path.write_text(text)
+    return str(path), str(SHIPPED_MODELS.parent / "generated" / "shang2010")
+
+
+def test_report_evaluates_at_a_pose_of_the_models_own(tmp_path, capsys, monkeypatch):
+    """It used the paper's path midpoint (0.245, 0.265) for every model (issue 28)."""
+    path, gen = _moved_model(tmp_path)
+    assert cli.main(["report", "--model", path, "--generated", gen]) == 0
+    out = capsys.readouterr().out
+    assert "at xe = [0.31, 0.21] m (midpoint of the model's move 'low')" in out
+    from pm2dof.analysis import report
+    m = pm2dof.load_model()
+    monkeypatch.setattr(report, "line_moves", lambda m: ())     # a model with path moves only
+    xe, what = report.report_pose(m)
+    assert what == "the grid point farthest from both singularities"
+    sing = m.singularity_measures(m.ik(xe))
+    assert sing[0] > m.singularity_threshold and sing[1] > m.parallel_singularity_threshold
+
+
+def test_table3_prints_the_papers_columns_only_for_the_papers_robot():
+    from pm2dof.analysis.experiment import format_table3, is_paper_robot
+    numbers = {s: {"apd_rmse": 1e-4, "na_rmse": 5e-5, "na_no_adaptation_rmse": 6e-5,
+                   "rpe_percent": 50.0} for s in ("low", "high")}
+    assert is_paper_robot(pm2dof.load_model()) and not is_paper_robot(pm2dof.load_model("fivebar"))
+    assert not is_paper_robot(pm2dof.load_model("unequal"))
+    assert "APD paper" in format_table3(numbers) and "1.3738e-04" in format_table3(numbers)
+    other = format_table3(numbers, paper=False)
+    assert "APD paper" not in other and "1.3738e-04" not in other and "not shown" in other
