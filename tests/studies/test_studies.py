@@ -403,3 +403,20 @@ def test_report_numbers_match_direct_computation(tmp_path):
         assert r["pairs"] == len(rpe) == s.draws
         assert r["median"] == pytest.approx(np.median(rpe), rel=1e-12)
         assert r["share_better"] == np.mean(np.array(rpe) > 0)
+
+
+def test_study_file_doc_lists_every_law_and_its_keys():
+    """docs/study-file.md listed the laws as apd/na; the parser accepts ctc and lqr too."""
+    import re
+    from pm2dof.studies.spec import LAWS
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "study-file.md").read_text()
+    law_row = next(ln for ln in doc.splitlines() if ln.startswith("| `law` |"))
+    assert set(re.findall(r'`"(\w+)"`', law_row)) == set(LAWS)
+    for key in {k for keys in LAWS.values() for k in keys}:
+        row = next(ln for ln in doc.splitlines()
+                   if ln.startswith("|") and f"`{key}`" in ln.split("|")[1])
+        laws = row.split("|")[3].strip()
+        want = {law for law, keys in LAWS.items() if key in keys}
+        assert (laws == "all") == (want == set(LAWS)), (key, laws)
+        if laws != "all":
+            assert {w.strip() for w in laws.split(",")} == want, (key, laws)
