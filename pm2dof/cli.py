@@ -421,15 +421,8 @@ def cmd_study_run(args):
     if args.workers is not None and args.scheduler:
         raise ArgumentError("give --workers (an embedded cluster) or --scheduler (an existing "
                          "one), not both: an existing cluster's workers are started with it")
-    study = read_study(resolve_study(args.study), quick=args.quick)
-    if args.model is not None or args.generated is not None:  # override the study file's
-        import dataclasses
-        from .core.paths import resolve_model
-        study = dataclasses.replace(
-            study, model_path=(study.model_path if args.model is None
-                               else str(resolve_model(args.model).resolve())),
-            generated_path=(study.generated_path if args.generated is None
-                            else str(Path(args.generated).expanduser().resolve())))
+    study = read_study(resolve_study(args.study), quick=args.quick, model=args.model,
+                       generated=args.generated)       # --model, --generated: the file's replaced
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
                         timeout=args.timeout, progress=_progress)

@@ -131,7 +131,7 @@ def test_not_toml_and_missing_file(tmp_path):
 def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any_rollout(tmp_path):
     far = BASE.replace('moves = ["high"]', 'moves = ["high", {name = "far", start = [0.24, 0.27], '
                        'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
-    s = read_study(_write(tmp_path, far))
+    s = read_study(_write(tmp_path, far), check=False)
     m = pm2dof.load_model(MODEL)
     with pytest.raises(StudyFileError, match=r"\[study\.moves \(entry 2, 'far'\)\] trajectory sample "
                        r"\d+ .*(singularity|reach)"):
@@ -146,14 +146,33 @@ def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any
     text = BASE.replace(str(MODEL), str(five)).replace(
         'moves = ["high"]', 'moves = [{name = "across", start = [0.4366773, 0.19502559], '
         'end = [0.274602, 0.000219374], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
-    s = read_study(_write(tmp_path, text, "five.toml"))
+    s = read_study(_write(tmp_path, text, "five.toml"), check=False)
     with pytest.raises(StudyFileError, match=r"\[study\.moves \(entry 1, 'across'\)\] trajectory sample "
                        r"\d+ .*(assembly mode|singular)"):
         check_study(s, pm2dof.load_model(five))
     bad = read_study(_write(tmp_path, BASE.replace('law = "apd"', 'law = "apd"\nsplit = "fair"'),
-                            "bad.toml"))
+                            "bad.toml"), check=False)
     with pytest.raises(StudyFileError, match=r"\[controllers \(entry 1, 'apd'\)\] split must be one of"):
         check_study(bad, m)
+
+
+def test_the_file_and_the_model_checks_in_one_pass(tmp_path, capsys):
+    """A study file's own problems came first, and those that need the model (an unreachable
+    move, a split the controller refuses) only after they were fixed: 6 problems, then 2 more
+    (issue 28). Now one error lists them all, entries numbered from 1."""
+    text = (BASE.replace("draws = 3", "draws = 0")
+            .replace('moves = ["high"]', 'moves = ["high", {name = "far", start = [0.24, 0.27], '
+                     'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
+            .replace('law = "apd"', 'law = "apd"\nsplit = "fair"'))
+    p = _write(tmp_path, text)
+    with pytest.raises(StudyFileError) as exc:
+        read_study(p)
+    keys = [pr.key for pr in exc.value.problems]
+    assert keys == ["study.draws", "controllers (entry 1, 'apd')", "study.moves (entry 2, 'far')"]
+    from pm2dof import cli
+    assert cli.main(["study", "run", str(p), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert f"{p}: 3 problems:" in err and not (tmp_path / "out").exists()
 
 
 def test_every_problem_of_a_study_file_in_one_error(tmp_path):
@@ -214,7 +233,7 @@ def test_check_study_lists_every_refused_variant_and_move_by_its_entry(tmp_path)
                         'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]').replace(
         'law = "apd"', 'law = "apd"\nKp = {grid = [30000.0, 35000.0, 40000.0]}\n\n'
         '[[controllers]]\nname = "na"\nlaw = "na"\nsplit = "fair"')
-    s = read_study(_write(tmp_path, text))
+    s = read_study(_write(tmp_path, text), check=False)
     assert [v.name for v in s.variants] == ["apd", "apd", "apd", "na"]
     with pytest.raises(StudyFileError) as exc:
         check_study(s, pm2dof.load_model(MODEL))
