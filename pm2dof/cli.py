@@ -128,6 +128,13 @@ def cmd_derive(args):
     if args.path and args.model and args.path != args.model:
         raise ArgumentError(f"give the model once: positional {args.path!r} or --model "
                          f"{args.model!r}, not both")
+    from .core.generated import derive_is_current
+    out, current, _ = derive_is_current(args.path or args.model, args.out,
+                                        library=not args.no_build)
+    if current and not args.force:     # no SymPy, no CasADi: well under a second
+        print(f"{out} is up to date (its manifest matches the model file, the derivation and "
+              f"its compiled library); --force derives again")
+        return 0
     from .derive.run import derive  # needs the [derive] extra (SymPy, CasADi); main() says so
     derive(args.path or args.model, args.out, force=args.force, build=not args.no_build,
            progress=lambda msg: print(msg, flush=True))
@@ -775,8 +782,10 @@ def build_parser():
                        "libMODEL.so go into --out, by default generated/<stem>/ beside the model "
                        "file (~/robots/myrobot.toml -> ~/robots/generated/myrobot/), where "
                        "load_model and --model find them. A folder generated from another model "
-                       "file is not overwritten without --force. Needs the derivation extra: "
-                       "pip install 'pm2dof[derive]'.",
+                       "file is not overwritten without --force. When the folder is up to date "
+                       "(the manifest matches the model file, the derivation's sources, SymPy "
+                       "and CasADi, and the library its C), it says so and stops; --force "
+                       "derives again. Needs the derivation extra: pip install 'pm2dof[derive]'.",
                        formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
                            "examples:\n"
                            "  pm2dof models --copy shang2010 ~/robots   # a model file to edit\n"
@@ -786,7 +795,8 @@ def build_parser():
     p.add_argument("--out", metavar="DIR", help="folder for the generated code (default: "
                    "generated/<stem>/ beside the model file)")
     p.add_argument("--force", action="store_true",
-                   help="overwrite a folder that holds code generated from another model file")
+                   help="derive even if the folder is up to date, and overwrite a folder that "
+                        "holds code generated from another model file")
     p.add_argument("--no-build", action="store_true", help="generate C but do not compile it")
     p.set_defaults(func=cmd_derive)
     return ap
