@@ -128,6 +128,10 @@ def cmd_derive(args):
     if args.path and args.model and args.path != args.model:
         raise ArgumentError(f"give the model once: positional {args.path!r} or --model "
                          f"{args.model!r}, not both")
+    if not (args.path or args.model):
+        raise ArgumentError("pm2dof derive needs a model file: copy a shipped one with `pm2dof "
+                            "models --copy shang2010 ~/robots`, edit it, then `pm2dof derive "
+                            "~/robots/shang2010.toml` (`pm2dof models` lists them)")
     from .core.generated import derive_is_current
     out, current, _ = derive_is_current(args.path or args.model, args.out,
                                         library=not args.no_build)

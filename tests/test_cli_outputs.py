@@ -90,3 +90,76 @@ def test_table3_prints_the_papers_columns_only_for_the_papers_robot():
     assert "APD paper" in format_table3(numbers) and "1.3738e-04" in format_table3(numbers)
     other = format_table3(numbers, paper=False)
     assert "APD paper" not in other and "1.3738e-04" not in other and "not shown" in other
+
+
+def test_make_dist_needs_only_the_build_frontend():
+    """`make dist` installed the whole dev extra first (3 min, issue 28): now every command it
+    runs installs the build frontend only (python -m build brings the backend itself)."""
+    import shutil
+    import subprocess
+    from pathlib import Path
+    if shutil.which("make") is None:
+        pytest.skip("no make")
+    root = Path(__file__).resolve().parent.parent
+    r = subprocess.run(["make", "-n", "-B", "dist"], cwd=root, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    installs = [ln for ln in lines if "pip install" in ln]
+    assert installs and all("'build>=1.0'" in ln and "[dev]" not in ln and " -e " not in ln
+                            for ln in installs), lines
+    assert any("-m build --outdir dist" in ln for ln in lines)
+
+
+# ---- issue 28, "Smaller" ----
+
+def test_derive_without_a_model_suggests_models_copy(capsys):
+    assert cli.main(["derive"]) == 2
+    err = capsys.readouterr().err
+    assert "pm2dof models --copy shang2010" in err and len(err.strip().splitlines()) == 1
+
+
+def test_no_generated_code_mentions_generated(tmp_path):
+    from pm2dof.core.paths import SHIPPED_MODELS
+    copy = tmp_path / "robot.toml"
+    copy.write_text((SHIPPED_MODELS / "shang2010.toml").read_text())
+    with pytest.raises(pm2dof.StaleGeneratedCodeError, match=r"pass --generated DIR"):
+        pm2dof.load_model(copy)
+
+
+def test_version_prints_what_getting_started_says(capsys):
+    from pathlib import Path
+    from pm2dof.core.version import __version__
+    with pytest.raises(SystemExit):
+        cli.main(["--version"])
+    assert capsys.readouterr().out.strip() == f"pm2dof {__version__}"
+    doc = (Path(__file__).resolve().parent.parent / "docs" / "getting-started.md").read_text()
+    assert f"`pm2dof --version` prints the version (`pm2dof {__version__}`)" in doc
+
+
+def test_installed_package_outputs_omit_git_commit(monkeypatch):
+    from pm2dof.analysis import results
+    monkeypatch.setattr(results, "_git_commit", lambda: None)
+    prov = results.provenance(pm2dof.load_model())
+    assert "git_commit" not in prov and prov["pm2dof"]
+
+
+def test_plan_csv_writes_shortest_decimals_and_json_names_the_unit(tmp_path):
+    from pm2dof.planning.report import csv_text, plan_paths
+    m = pm2dof.load_model()
+    path = pm2dof.TaskPath.line([0.22, 0.29], [0.27, 0.24])
+    plan = pm2dof.plan_time_optimal(m, path, grid=100)
+    rows = [ln for ln in csv_text(m, plan).splitlines() if ln and not ln.startswith("#")][1:]
+    fields = [f for ln in rows for f in ln.split(",")]
+    assert fields and all(f == repr(float(f)) for f in fields)          # was %.17g
+    assert any(len(f) < 17 for f in fields)
+    res, _ = plan_paths(m, [{"name": "line", "path": path}], grid=100)
+    row = res["paths"][0]
+    assert "tau_peak" not in row["min_norm"] and len(row["min_norm"]["tau_peak_N_m"]) == 3
+
+
+def test_save_and_out_both_create_missing_folders(tmp_path, capsys):
+    save = tmp_path / "a" / "b" / "t.json"
+    out = tmp_path / "c" / "d" / "run.csv"
+    assert cli.main(["table3", "--save", str(save)]) == 0
+    assert cli.main(["identify", "excite", "--duration", "0.5", "--out", str(out)]) == 0
+    assert save.is_file() and out.is_file()

@@ -141,7 +141,7 @@ def test_both_splits_report_the_feasible_one(tmp_path, capsys):
     row = json.loads(capsys.readouterr().out)["paths"][0]
     assert "Coulomb friction" in row["min_norm"]["infeasible"]
     assert row["min_max"]["duration_s"] > 1.0
-    assert max(row["min_max"]["tau_peak"]) <= 0.5 * (1 + 1e-6)
+    assert max(row["min_max"]["tau_peak_N_m"]) <= 0.5 * (1 + 1e-6)
     assert "saving_min_max_percent" not in row
     assert sorted(p.name for p in tmp_path.glob("*.csv")) == ["plan_high_kinematic.csv",
                                                               "plan_high_min_max.csv"]
