@@ -26,7 +26,6 @@ A shipped path is named by its stem (``pm2dof plan --path pick_and_place``); any
 :class:`pm2dof.PlanError`) naming the file and listing every problem, each with its key and
 reason, segments numbered from 1, as model and study files (:class:`pm2dof.core.validate.Problems`).
 """
-import tomllib
 from pathlib import Path
 
 from ..core.errors import InputFileError, PlanError
@@ -85,16 +84,7 @@ def read_path_file(ref, relative_to=None):
     """
     path = resolve_path_file(ref, relative_to)
     pr = Problems(path, PathFileError)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        pr.stop(None, f"cannot read the path file: {exc.strerror or exc}")
-    except UnicodeDecodeError as exc:
-        pr.stop(None, f"not a text (UTF-8) file: {exc.reason} at byte {exc.start}")
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        pr.stop(None, f"not valid TOML: {exc}")
+    _, data = pr.read_toml("path file")
     pr.keys("", data, {"path", "kinematic", "segments"})
     head = pr.table("path", data.get("path"), required=False) or {}
     pr.keys("path", head, {"name", "description"})

@@ -346,16 +346,8 @@ def read_study(path, quick=False, *, model=None, generated=None, check=True):
     """
     path = resolve_study(path)
     pr = Problems(path, StudyFileError)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        pr.stop(None, f"cannot read the study file: {exc.strerror}")
-    except UnicodeDecodeError as exc:
-        pr.stop(None, f"not a text (UTF-8) file: {exc.reason} at byte {exc.start}")
-    try:
-        doc = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        pr.stop(None, f"not valid TOML: {exc}")
+    raw, doc = pr.read_toml("study file")
+    text = raw.decode("utf-8")
     pr.keys("", doc, _TOP_KEYS)
     q = pr.table("quick", doc.get("quick"), required=False) or {}
     pr.keys("quick", q, _QUICK_KEYS)
