@@ -133,8 +133,11 @@ def cmd_derive(args):
                             "models --copy shang2010 ~/robots`, edit it, then `pm2dof derive "
                             "~/robots/shang2010.toml` (`pm2dof models` lists them)")
     from .core.generated import derive_is_current
-    out, current, _ = derive_is_current(args.path or args.model, args.out,
-                                        library=not args.no_build)
+    try:
+        out, current, _ = derive_is_current(args.path or args.model, args.out,
+                                            library=not args.no_build)
+    except Pm2dofError:                 # a bad model file or folder: derive says what is wrong
+        current = False
     if current and not args.force:     # no SymPy, no CasADi: well under a second
         print(f"{out} is up to date (its manifest matches the model file, the derivation and "
               f"its compiled library); --force derives again")
