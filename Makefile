@@ -62,9 +62,19 @@ docs: $(STAMP)
 	! grep -l -E ':(func|class|meth|attr|mod|data|exc):' site/api.html || \
 		{ echo "make docs: Sphinx roles left in site/api.html (docs/_ext/sphinx_roles.py)"; exit 1; }
 
-dist: $(STAMP)
+# the wheel and sdist need only the build frontend: `python -m build` installs the backend
+# ([build-system] requires: setuptools, wheel) into an isolated environment of its own
+BUILD_VENV  := .venv-build
+BUILD_STAMP := $(BUILD_VENV)/.installed-stamp
+
+$(BUILD_STAMP):
+	test -x $(BUILD_VENV)/bin/python || $(PYTHON) -m venv $(BUILD_VENV)
+	$(BUILD_VENV)/bin/python -m pip install --quiet 'build>=1.0'
+	touch $@
+
+dist: $(BUILD_STAMP)
 	rm -rf dist
-	$(PY) -m build --outdir dist .
+	$(BUILD_VENV)/bin/python -m build --outdir dist .
 
 check-install: dist
 	bash tests/install/smoke.sh dist
@@ -99,4 +109,4 @@ embedded: install
 	$(PY) -m pm2dof.export.embedded --out $(EMBEDDED_OUT) --json $(EMBEDDED_OUT)/results.json
 
 clean:
-	rm -rf $(VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT) site
+	rm -rf $(VENV) $(BUILD_VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT) site

@@ -129,6 +129,20 @@ def cmd_derive(args):
     if args.path and args.model and args.path != args.model:
         raise ArgumentError(f"give the model once: positional {args.path!r} or --model "
                          f"{args.model!r}, not both")
+    if not (args.path or args.model):
+        raise ArgumentError("pm2dof derive needs a model file: copy a shipped one with `pm2dof "
+                            "models --copy shang2010 ~/robots`, edit it, then `pm2dof derive "
+                            "~/robots/shang2010.toml` (`pm2dof models` lists them)")
+    from .core.generated import derive_is_current
+    try:
+        out, current, _ = derive_is_current(args.path or args.model, args.out,
+                                            library=not args.no_build)
+    except Pm2dofError:                 # a bad model file or folder: derive says what is wrong
+        current = False
+    if current and not args.force:     # no SymPy, no CasADi: well under a second
+        print(f"{out} is up to date (its manifest matches the model file, the derivation and "
+              f"its compiled library); --force derives again")
+        return 0
     from .derive.run import derive  # needs the [derive] extra (SymPy, CasADi); main() says so
     derive(args.path or args.model, args.out, force=args.force, build=not args.no_build,
            progress=lambda msg: print(msg, flush=True))
@@ -406,15 +420,8 @@ def cmd_study_run(args):
     if args.workers is not None and args.scheduler:
         raise ArgumentError("give --workers (an embedded cluster) or --scheduler (an existing "
                          "one), not both: an existing cluster's workers are started with it")
-    study = read_study(resolve_study(args.study), quick=args.quick)
-    if args.model is not None or args.generated is not None:  # override the study file's
-        import dataclasses
-        from .core.paths import resolve_model
-        study = dataclasses.replace(
-            study, model_path=(study.model_path if args.model is None
-                               else str(resolve_model(args.model).resolve())),
-            generated_path=(study.generated_path if args.generated is None
-                            else str(Path(args.generated).expanduser().resolve())))
+    study = read_study(resolve_study(args.study), quick=args.quick, model=args.model,
+                       generated=args.generated)       # --model, --generated: the file's replaced
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
                         timeout=args.timeout, progress=_progress)
@@ -781,8 +788,10 @@ def build_parser():
                        "libMODEL.so go into --out, by default generated/<stem>/ beside the model "
                        "file (~/robots/myrobot.toml -> ~/robots/generated/myrobot/), where "
                        "load_model and --model find them. A folder generated from another model "
-                       "file is not overwritten without --force. Needs the derivation extra: "
-                       "pip install 'pm2dof[derive]'.",
+                       "file is not overwritten without --force. When the folder is up to date "
+                       "(the manifest matches the model file, the derivation's sources, SymPy "
+                       "and CasADi, and the library its C), it says so and stops; --force "
+                       "derives again. Needs the derivation extra: pip install 'pm2dof[derive]'.",
                        formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
                            "examples:\n"
                            "  pm2dof models --copy shang2010 ~/robots   # a model file to edit\n"
@@ -792,7 +801,8 @@ def build_parser():
     p.add_argument("--out", metavar="DIR", help="folder for the generated code (default: "
                    "generated/<stem>/ beside the model file)")
     p.add_argument("--force", action="store_true",
-                   help="overwrite a folder that holds code generated from another model file")
+                   help="derive even if the folder is up to date, and overwrite a folder that "
+                        "holds code generated from another model file")
     p.add_argument("--no-build", action="store_true", help="generate C but do not compile it")
     p.set_defaults(func=cmd_derive)
     p = sub.add_parser(
@@ -883,8 +893,8 @@ def main(argv=None):
     except Pm2dofError as exc:  # a typed error: the input is refused, not a bug
         print(f"pm2dof: error: {exc}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print("\npm2dof: interrupted", file=sys.stderr)
+    except KeyboardInterrupt as exc:
+        print(f"\npm2dof: interrupted{f' ({exc})' if str(exc) else ''}", file=sys.stderr)
         return 130
     except ModuleNotFoundError as exc:
         module = (exc.name or "").split(".")[0]

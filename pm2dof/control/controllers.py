@@ -164,9 +164,12 @@ class _Controller:
         preload = per_actuator("preload", ctl["preload"] if preload is None else preload, n)
         preload_sign = per_actuator("preload_sign", ctl["preload_sign"] if preload_sign is None
                                else preload_sign, n)
-        if np.any(tau_max <= 0) or np.any(preload < 0) or np.any(preload >= tau_max):
-            raise ArgumentError(f"need 0 <= preload < tau_max and tau_max > 0, got preload "
-                             f"{preload.tolist()}, tau_max {tau_max.tolist()} N*m")
+        if np.any(tau_max <= 0):
+            raise ArgumentError(f"need tau_max > 0 (the drives' torque limit, N*m), got tau_max "
+                                f"{tau_max.tolist()}")
+        if np.any(preload < 0) or np.any(preload >= tau_max):
+            raise ArgumentError(f"need 0 <= preload < tau_max, got preload {preload.tolist()}, "
+                                f"tau_max {tau_max.tolist()} N*m")
         if not np.all(np.isin(preload_sign, (1.0, -1.0))):
             raise ArgumentError(f"preload_sign entries must be +1 or -1, got {preload_sign.tolist()}")
         xy = ("x", "y")

@@ -72,7 +72,8 @@ def _check_generated(spec, gen_dir):
     manifest_path = gen_dir / "manifest.json"
     if not manifest_path.is_file():
         _stale(spec, gen_dir, f"no generated code for model file {spec.path} in {gen_dir} "
-                              f"({manifest_path.name} is missing)")
+                              f"({manifest_path.name} is missing; if it was derived into another "
+                              f"folder, pass --generated DIR, or load_model(..., generated=DIR))")
     manifest = json.loads(manifest_path.read_text())
     if manifest.get("formulation_sha256") != spec.formulation_sha256:
         _stale(spec, gen_dir,

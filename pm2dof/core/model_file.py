@@ -10,7 +10,6 @@ staleness. This module is pure Python and is shared by ``derive/`` and the runti
 import hashlib
 import json
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -423,16 +422,4 @@ def read_model_file(path):
 
 def _read_toml(pr, path):
     """The file's bytes and its TOML document; unreadable or undecodable content stops here."""
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        pr.stop(None, f"cannot read model file: {exc.strerror or exc}")
-    nul = raw.find(b"\x00")
-    if nul >= 0:
-        pr.stop(None, f"binary content (NUL byte at offset {nul}), not a TOML model file")
-    try:
-        return raw, tomllib.loads(raw.decode("utf-8"))
-    except UnicodeDecodeError as exc:
-        pr.stop(None, f"not a text (UTF-8) file: {exc.reason} at byte {exc.start}")
-    except tomllib.TOMLDecodeError as exc:
-        pr.stop(None, f"not valid TOML: {exc}")
+    return pr.read_toml("model file")
