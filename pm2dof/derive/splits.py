@@ -144,7 +144,7 @@ def _min_max_3d(g, u):
     """min |y|_inf s.t. sum_i y_i g_i = u for 3-vectors g_i (see :func:`min_max`): (y, t*).
 
     The dual optimum l is a facet normal g_i x g_j of the zonotope (pairs of parallel
-    generators give l = 0 and are never taken). The free generators (g_k.l = 0: i, j and any
+    generators, |l| <= _FREE |g_i| |g_j|, are never taken). The free generators (g_k.l = 0: i, j and any
     coplanar with them) carry the rest r, which lies in the plane l^perp; there it is the 2-D
     problem in the basis e1 = g_i / |g_i|, e2 = l x e1 / |l|. u = 0 gives tau = 0."""
     n = len(g)
@@ -155,7 +155,9 @@ def _min_max_3d(g, u):
             l = _cross(g[i], g[j])                           # a facet normal, |g_i| |g_j| sin
             num = ca.fabs(_dot(u, l))
             den = sum(ca.fabs(_dot(g[k], l)) for k in range(n) if k not in (i, j))
-            take = num * best_den > best_num * den           # t_ij > t_best; first of equals
+            # t_ij > t_best (first of equals); a parallel pair's l is rounding noise: no facet
+            facet = _dot(l, l) > _FREE ** 2 * _dot(g[i], g[i]) * _dot(g[j], g[j])
+            take = ca.logic_and(facet, num * best_den > best_num * den)
             best_num = ca.if_else(take, num, best_num)
             best_den = ca.if_else(take, den, best_den)
             best_l = ca.if_else(take, l, best_l)
