@@ -8,7 +8,7 @@ from .splits import min_max, min_norm, preload_function
 from .symbols import Symbols
 from .to_casadi import Converter
 
-__all__ = ["Derivation", "model_functions"]
+__all__ = ["Derivation", "model_functions", "energy_functions", "assembly_guard"]
 
 
 class Derivation:
@@ -177,6 +177,7 @@ def model_functions(d, prefix):
 
     Matrices are returned flattened row-major. ``sing`` holds the two singularity measures at the
     pose, [type I (legs), type II (actuation)] (:meth:`Derivation.singularity_measures`).
+    Task-space inputs and outputs have the task dimension m (see also :func:`energy_functions`).
     """
     n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
     sym, kin, dyn = d.sym, d.kin, d.dyn
@@ -228,3 +229,29 @@ def model_functions(d, prefix):
     add("forward_dynamics", [("xe", xe), ("xed", xed), ("tau_a", tau_a), ("theta", theta)],
         [("xedd", cfd(dyn.xedd)), ("sing", d.singularity_measures(cfd))])       # eqs. 10-12
     return f
+
+
+def energy_functions(d, prefix):
+    """``<prefix>_Ge(q, theta) -> (Ge, sing)``: the gravity term of eq. 10 (zero in a horizontal
+    plane); ``<prefix>_kinetic_energy(xe, xed, theta) -> T`` = 1/2 xed^T Me xed and
+    ``<prefix>_potential_energy(xe, theta) -> V`` (zero without gravity): the derivation's own
+    energies. (Generated after every other function, so adding them appended to the C.)"""
+    n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
+    sym, kin, dyn = d.sym, d.kin, d.dyn
+    q, xe, xed, theta = d.sx("q", 2 * n), d.sx("xe", m), d.sx("xed", m), d.sx("theta", p)
+    cq = d.converter_q(q, [(sym.theta, theta)])
+    ce = d.converter_xe(xe, [(sym.xed, xed), (sym.theta, theta)])
+    ce = ce.extended([(sym.qd, ca.reshape(ce(kin.W), m, 2 * n).T @ xed)])    # qd = W xed, eq. 7
+    V = getattr(dyn, "V", sp.Integer(0))
+    return [ca.Function(f"{prefix}_Ge", [q, theta], [cq(_gravity_term(d)), d.singularity_measures(cq)],
+                        ["q", "theta"], ["Ge", "sing"]),
+            ca.Function(f"{prefix}_kinetic_energy", [xe, xed, theta], [ce(dyn.T)],
+                        ["xe", "xed", "theta"], ["T"]),
+            ca.Function(f"{prefix}_potential_energy", [xe, theta], [ce(V)],
+                        ["xe", "theta"], ["V"])]
+
+
+def _gravity_term(d):
+    """Ge (m,): the gravity term of the task-space dynamics, zero without gravity."""
+    Ge = getattr(d.dyn, "Ge", None)
+    return sp.zeros(d.m, 1) if Ge is None else Ge

@@ -20,7 +20,7 @@ from .controllers import STATUS, controller_functions, controller_layouts
 from .derivatives import derivative_functions
 from .export import MANIFEST, export
 from .factored import has_gravity
-from .model_functions import Derivation, model_functions
+from .model_functions import Derivation, energy_functions, model_functions
 from .planning import path_functions, path_layouts
 from .plant import closed_loop_functions, closed_loop_layouts, model_plant_layout, plant_functions
 
@@ -138,6 +138,7 @@ def derive_functions(d, spec):
     functions = [_finalize(f) for f in model_functions(d, spec.name)] + ctrl + plant + loops
     functions += [_finalize(f) for f in path_functions(d, spec.name)]       # motion planning
     functions += derivative_functions(d, spec.name, spec.rk4_substeps, _finalize)
+    functions += [_finalize(f) for f in energy_functions(d, spec.name)]    # Ge, T, V
     return functions
 
 
