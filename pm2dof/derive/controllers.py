@@ -18,7 +18,7 @@ STATUS = Status.codes()
 PROJECTION_FLOOR = 1e-6
 
 
-def controller_layouts(n, p, m=2):
+def controller_layouts(n, p, m):
     """Flat-vector layouts: the controller state and each controller's parameters (task-space
     vectors and gains have the task dimension m)."""
     state = Layout([("xe_prev", m), ("v", m), ("theta_hat", p)])
@@ -38,7 +38,7 @@ def controller_layouts(n, p, m=2):
 #: per-sample inputs of a law's step after its params (name, size for n legs, task dimension
 #: m): LQR's gain K_k (n x 2m, row-major) and feedforward torque tau_ff_k (n), planned along
 #: the trajectory
-def per_sample_inputs(law, n, m=2):
+def per_sample_inputs(law, n, m):
     return [("K", 2 * m * n), ("tau_ff", n)] if law == "lqr" else []
 
 

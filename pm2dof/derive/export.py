@@ -39,6 +39,16 @@ def _task_line(task_names):
             f"its rates and accelerations")
 
 
+def _sing_lines(n, m):
+    """The header's lines on theta's units and the singularity measures."""
+    if m == 2:
+        return [" *         (alpha, beta, gamma in kg*m^2; fv in N*m*s/rad; fc, fs in N*m)",
+                " * sing  = [min_i |sin(qb_i - qa_i)| (type I, legs), sqrt(1 - |sum_i exp(2 i qb_i)| / n)",
+                " *         (type II, actuation: sigma_min of S with unit rows over sqrt(n/2))]"]
+    return [" * sing  = [the legs' type I measure (min over the legs), sigma_min of S with unit rows",
+            f" *         over sqrt(n/{m}) (type II, actuation)]"]
+
+
 def _header_doc(spec, functions, layouts, status_codes, task_names=("x", "y")):
     """A comment block for the top of the generated header: argument order and layouts."""
     n = spec.n_legs
@@ -54,9 +64,7 @@ def _header_doc(spec, functions, layouts, status_codes, task_names=("x", "y")):
         f" * qa    = [qa_1..qa_{n}]  measured active angles, rad",
         _task_line(task_names),
         f" * theta = [{', '.join(spec.param_names)}]",
-        " *         (alpha, beta, gamma in kg*m^2; fv in N*m*s/rad; fc, fs in N*m)",
-        " * sing  = [min_i |sin(qb_i - qa_i)| (type I, legs), sqrt(1 - |sum_i exp(2 i qb_i)| / n)",
-        " *         (type II, actuation: sigma_min of S with unit rows over sqrt(n/2))]",
+        *_sing_lines(n, len(task_names)),
         " *",
         " * Functions (inputs -> outputs, element counts):",
     ]

@@ -94,7 +94,7 @@ def facet_count(n, m):
     return n if m == 2 else max(n, n * (n - 1) // 2)
 
 
-def path_layouts(n, p, m=2, gravity=False):
+def path_layouts(n, p, m, gravity=False):
     """Per-grid-point vectors of the path functions (manifest layouts), task dimension m; a
     model with gravity has its gravity force g in the stage."""
     F = facet_count(n, m)
@@ -214,7 +214,7 @@ class _Stage:
     """The facets of one grid point as functions of s_d (SX), from a ``path_stage`` vector:
     n actuators, task dimension m, F facets (:func:`facet_count`)."""
 
-    def __init__(self, n, st, friction, m=2):
+    def __init__(self, n, st, friction, m):
         F = facet_count(n, m)
         self.n, self.F, self.st, self.friction = n, F, st, friction
         N = ca.reshape(st["N"], m, F).T

@@ -27,12 +27,10 @@ def _field_index(name):
     return base, (int(name[len(base):]) - 1 if len(base) < len(name) else 0)
 
 
-def plant_layout(n, param_names=None, friction_names=("fv", "fc", "fs")):
-    """Plant truth: the model's inertial parameters (default the RR legs' alpha, beta, gamma),
-    payload-augmented; friction with a Stribeck part."""
-    inertial = ([("alpha", n), ("beta", n), ("gamma", n)] if param_names is None
-                else inertial_fields(param_names, friction_names))
-    return Layout(inertial + [("fv", n), ("fc", n), ("fs", n),
+def plant_layout(n, param_names, friction_names):
+    """Plant truth: the model's inertial parameters (:func:`inertial_fields`; the RR legs'
+    alpha, beta, gamma), payload-augmented; friction with a Stribeck part."""
+    return Layout(inertial_fields(param_names, friction_names) + [("fv", n), ("fc", n), ("fs", n),
                               ("stribeck_velocity", 1), ("coulomb_smoothing_velocity", 1),
                               ("encoder_step", 1)])
 
@@ -43,7 +41,7 @@ def model_plant_layout(spec):
     return plant_layout(spec.n_legs, spec.param_names, FRICTION_MODELS[spec.friction])
 
 
-def closed_loop_layouts(n, p, m=2):
+def closed_loop_layouts(n, p, m):
     """cl_state, cl_input (the desired motion), cl_output, and ``<law>_cl_input`` for a law
     whose step takes per-sample inputs (the desired motion, then those); task dimension m."""
     ctrl = controller_layouts(n, p, m)

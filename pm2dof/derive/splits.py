@@ -286,7 +286,7 @@ def preload(S, u, w, sigma, p):
     return tau, mode
 
 
-def preload_function(n, prefix, m=2):
+def preload_function(n, prefix, m):
     """``preload`` as one CasADi Function (S (n, m), u, w, sigma, p) -> (tau, mode), for call
     nodes that are never inlined: its enumeration (up to a few hundred candidates for four legs)
     then appears once in the generated C, shared by every step that uses it."""

@@ -368,3 +368,24 @@ def test_paper_energies_and_no_gravity(paper):
         assert float(fs["potential_energy"](xe, theta)) == 0
         assert np.all(_v(fs["Ge"](q, theta)[0]) == 0)
 
+
+
+def test_type_two_measure_in_three_dimensions(toy):
+    """The least eigenvalue of a symmetric 3 x 3 matrix in closed form (the platform's type II
+    measure) against LAPACK, isotropic and NaN matrices included; the toy's measures lie in
+    [0, 1]."""
+    from pm2dof.derive.model_functions import _least_eigenvalue
+    G = ca.SX.sym("G", 3, 3)
+    f = ca.Function("lam", [G], [_least_eigenvalue(G)])
+    rng = np.random.default_rng(5)
+    for k in range(200):
+        U = rng.normal(size=(4, 3))
+        if k % 3 == 0:
+            U[:, 2] = U[:, 0] * rng.normal() + U[:, 1] * rng.normal()   # singular: lambda = 0
+        A = U.T @ U
+        assert float(f(A)) == pytest.approx(np.linalg.eigvalsh(A)[0], abs=1e-9 * np.trace(A))
+    assert float(f(np.eye(3) * 2.5)) == pytest.approx(2.5, rel=1e-15)
+    assert np.isnan(float(f(np.full((3, 3), np.nan))))
+    d, fs, _ = toy
+    sing = _v(fs["singularity_measures"](_Ref(d).q(XE)))
+    assert np.all((sing > 0) & (sing <= 1)), sing
