@@ -60,8 +60,10 @@ class _TrigForm:
     AD then differentiates w.r.t. c, s and r, and the pose enters by the chain rule through
     q(xe): d c_k / d xe = -s_k W[k, :], d s_k / d xe = c_k W[k, :], d r_k / d xe = W[k, :],
     since d q / d xe = W (eq. 7). This skips differentiating the inverse kinematics' geometry
-    (square roots, divisions), about 15 % cheaper than AD through it. :meth:`at_pose` binds
-    c, s, r to their values at xe (unit vectors from geometry, as the model functions).
+    (square roots, divisions), about 15 % cheaper than AD through it. Where the matrices also
+    name the pose itself (a platform's own inertia, in phi), it is a variable ``pose`` whose
+    partial derivative adds to the chain rule's. :meth:`at_pose` binds c, s, r and the pose
+    to their values at xe (unit vectors from geometry, as the model functions).
     """
 
     def __init__(self, d, xed, theta):
@@ -73,7 +75,10 @@ class _TrigForm:
         na = len(self.angles)
         self.c, self.s = ca.SX.sym("c", na), ca.SX.sym("s", na)
         self.r = ca.SX.sym("r", len(self.lengths))
-        conv = Converter({sym.q[k]: self.r[j] for j, k in enumerate(self.lengths)},
+        self.pose = ca.SX.sym("pose", d.m)
+        values = {sym.q[k]: self.r[j] for j, k in enumerate(self.lengths)}
+        values.update(zip(sym.xe, ca.vertsplit(self.pose)))
+        conv = Converter(values,
                          {sym.q[k]: (self.c[j], self.s[j]) for j, k in enumerate(self.angles)})
         self.Me, self.Ce_v, self.S, self.W = task_inertia_coriolis(d, conv, xed,
                                                                    [(sym.theta, theta)])
@@ -86,13 +91,18 @@ class _TrigForm:
         cs = ca.vertcat(self.c, self.s)
         if self.lengths:
             cs = ca.vertcat(cs, self.r)
+        direct = ca.depends_on(y, self.pose)          # the pose named outside q (a platform)
+        if direct:
+            cs = ca.vertcat(cs, self.pose)
         J = ca.jtimes(y, ca.vertcat(cs, others), ca.SX.eye(y.numel()), True).T
         k = self.c.numel()
         Wa = self.W if not self.lengths else self.W[self.angles, :]
         d_xe = (J[:, :k] @ (-ca.diag(self.s) @ Wa) + J[:, k:2 * k] @ (ca.diag(self.c) @ Wa))
-        if self.lengths:
-            nr = len(self.lengths)
+        nr = len(self.lengths)
+        if nr:
             d_xe = d_xe + J[:, 2 * k:2 * k + nr] @ self.W[self.lengths, :]
+        if direct:
+            d_xe = d_xe + J[:, 2 * k + nr:2 * k + nr + self.pose.numel()]
         return d_xe, J[:, cs.numel():]
 
     def at_pose(self, exprs, xe):
@@ -106,6 +116,9 @@ class _TrigForm:
         if self.lengths:
             old.append(self.r)
             new.append(ca.vertcat(*[conv.symbols[sym.q[k]] for k in self.lengths]))
+        if any(ca.depends_on(e, self.pose) for e in exprs):
+            old.append(self.pose)
+            new.append(xe)
         return ca.substitute(exprs, old, new), self.d.singularity_measures(conv)
 
 

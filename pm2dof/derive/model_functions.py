@@ -36,6 +36,14 @@ class Derivation:
         #: coordinates, m) enter as values
         self.angular = list(getattr(self.kin, "angular", [True] * len(self.sym.q)))
         self._preload = None
+        self._pose = None
+
+    def pose_of_qa(self):
+        """{task symbol: its expression by fk in the active coordinates}: where a matrix of q
+        (W, Me, ...) also names the pose (a platform's phi), converters bind it on first use."""
+        if self._pose is None:
+            self._pose = dict(zip(self.sym.xe, self.kin.fk()))
+        return self._pose
 
     def preload(self, S, u, w, sigma, p):
         """The preload split (derive/splits.py) as a call of one shared, never-inlined
@@ -59,7 +67,7 @@ class Derivation:
         trig = {s: (ca.cos(symbols[s]), ca.sin(symbols[s])) for s in self._angles(sym.q)}
         for syms, value in extra:
             symbols.update(zip(syms, ca.vertsplit(value)))
-        return Converter(symbols, trig)
+        return Converter(symbols, trig, self.pose_of_qa())
 
     def converter_xe(self, xe, extra=()):
         """Converter for functions of the task pose: joint directions from geometry, no trig;
@@ -92,7 +100,7 @@ class Derivation:
             at_O = base.extended([(sym.xe, base(O))])
             ik = dict(zip(sym.q, self.kin.ik()))
             symbols.update({s: at_O(ik[s]) for s in lengths})
-        return Converter(symbols, trig)
+        return Converter(symbols, trig, self.pose_of_qa())
 
     def singularity_measures(self, conv):
         """[type I, type II] singularity measures at the pose, each 0 at its singularity:

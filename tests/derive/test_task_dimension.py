@@ -12,6 +12,9 @@ function, and :func:`pm2dof.derive.run.derive_layouts`), as CasADi functions (no
   differences of the functions they differentiate;
 * T + V is conserved along the generated forward dynamics with torque and friction zero
   (RK4, h = 1 ms: drift ~h^4), which ties the gravity term, Ce and the energies together.
+
+The toy's platform terms name the pose phi directly (not only through q), so functions of q
+(``Me``, ``Ge``) bind it by fk and the Jacobians add its partial derivative.
 """
 import casadi as ca
 import numpy as np
@@ -140,9 +143,9 @@ class _Ref:
 
     def __init__(self, d):
         sym, kin, dyn = d.sym, d.kin, d.dyn
-        args = list(sym.q) + list(sym.xed) + list(sym.theta) + list(sym.tau_a)
+        args = list(sym.q) + list(sym.xe) + list(sym.xed) + list(sym.theta) + list(sym.tau_a)
         self.d = d
-        mods = [{"sgn": lambda v: np.where(np.asarray(v) >= 0, 1.0, -1.0)}, "numpy"]
+        mods = [{"sgn": np.sign}, "numpy"]
         self._ik = sp.lambdify(list(sym.xe), kin.ik(), mods)
         self._f = {name: sp.lambdify(args, expr, mods) for name, expr in
                    (("Me", dyn.Me), ("Ce", dyn.Ce), ("Ge", dyn.Ge), ("StF", dyn.StF),
@@ -155,7 +158,7 @@ class _Ref:
 
     def __call__(self, name, xe, xed, theta, tau=np.zeros(toy_platform.N_LEGS)):
         f = {"T": self._T, "V": self._V}.get(name) or self._f[name]
-        return np.asarray(f(*self.q(xe), *xed, *theta, *tau), dtype=float)
+        return np.asarray(f(*self.q(xe), *xe, *xed, *theta, *tau), dtype=float)
 
     def task_force(self, xe, xed, xedd, theta):
         """Me xedd + Ce xed + S^T f_a + Ge (eqs. 10-12 with gravity)."""
@@ -168,7 +171,7 @@ def _theta(d, friction=True, seed=0):
     out = []
     for name in d.spec.param_names:
         base = name.rstrip("0123456789")
-        out.append({"alpha": 0.2, "gamma": 0.1, "beta": 0.05, "mp": 2.0, "Ip": 0.3}.get(base)
+        out.append({"alpha": 0.2, "gamma": 0.1, "beta": 0.05, "mp": 2.0, "mx": 0.2, "Ip": 0.3}.get(base)
                    or (rng.uniform(-0.2, 0.2) if base == "lg" else
                        rng.uniform(0.1, 1.0) * friction))
     return np.array(out, dtype=float)

@@ -7,10 +7,13 @@ derivation's mechanics code: it has the interface of ``derive.symbols.Symbols``,
 Four legs, q = [qa_1..qa_4, qb_1..qb_4]: qa_1 = x and qa_2 = y are prismatic (sliders), the
 others are angles given in closed form by the pose (``IK``); fk solves the first three for the
 pose, the fourth actuator is redundant. Kinetic energy: the legs' joint-space RR/PR form of
-eq. 1 plus the platform's 1/2 (mp (xd^2 + yd^2) + Ip phid^2); potential energy
-V = g (mp y + sum_i lg_i sin qb_i) (gravity along -y). Every task-space quantity follows from
-T and V exactly as eq. 12 builds it (Me = W^T M W + Mp, Ce = W^T (M Wdot + C W), Ge = W^T dV/dq),
-so T + V is conserved along the forward dynamics without torque and friction.
+eq. 1 plus the platform's, whose centre of mass is off its origin (first moment mx along the
+platform's x axis): 1/2 mp (xd^2 + yd^2) + mx phid (-sin(phi) xd + cos(phi) yd) + 1/2 Ip phid^2;
+potential energy V = g (mp y + mx sin(phi) + sum_i lg_i sin qb_i) (gravity along -y). The
+platform's terms name the pose phi itself (not only q), as a platform's derivation may. Every
+task-space quantity follows from T and V as eq. 12 builds it (Me = W^T M W + Mp(phi),
+Ce = W^T (M Wdot + C W) + Cp, Ge = W^T dV/dq + dV/dxe), so T + V is conserved along the forward
+dynamics without torque and friction.
 """
 import sympy as sp
 
@@ -19,7 +22,7 @@ from pm2dof.derive.model_functions import Derivation
 
 N_LEGS, GRAVITY = 4, sp.Rational(981, 100)
 PARAMS = tuple(f"{b}{i}" for b in ("alpha", "beta", "gamma", "fv", "fc", "lg")
-               for i in range(1, N_LEGS + 1)) + ("mp", "Ip")
+               for i in range(1, N_LEGS + 1)) + ("mp", "mx", "Ip")
 
 
 class Spec:
@@ -111,11 +114,13 @@ class Dynamics:
             alpha, beta, gamma = sym.leg_params(i, ("alpha", "beta", "gamma"))
             c = sp.cos(q[n + i]) if not kin.angular[i] else sp.cos(q[i] - q[n + i])
             T_legs += alpha * qd[i] ** 2 / 2 + beta * c * qd[i] * qd[n + i] + gamma * qd[n + i] ** 2 / 2
-        mp, Ip = sym.param["mp"], sym.param["Ip"]
-        xd = sym.xed
-        self.T = T_legs + (mp * (xd[0] ** 2 + xd[1] ** 2) + Ip * xd[2] ** 2) / 2
-        self.V = GRAVITY * (mp * q[1] + sum(sym.param[f"lg{i + 1}"] * sp.sin(q[n + i])
-                                            for i in range(n)))
+        mp, mx, Ip = sym.param["mp"], sym.param["mx"], sym.param["Ip"]
+        xd, phi = sym.xed, sym.xe[2]
+        Mp = sp.Matrix([[mp, 0, -mx * sp.sin(phi)], [0, mp, mx * sp.cos(phi)],
+                        [-mx * sp.sin(phi), mx * sp.cos(phi), Ip]])
+        self.T = T_legs + (xd.T * Mp * xd)[0] / 2
+        self.V = GRAVITY * (mp * q[1] + mx * sp.sin(phi)
+                            + sum(sym.param[f"lg{i + 1}"] * sp.sin(q[n + i]) for i in range(n)))
         self.M = sp.hessian(T_legs, qd)
         N = len(q)
         dM = [self.M.diff(q[i]) for i in range(N)]
@@ -125,9 +130,14 @@ class Dynamics:
         on_motion = dict(zip(qd, W * sym.xed))
         self.f_a = sp.Matrix([_friction(spec.friction, qd[i], sym.leg_params(i, ("fv", "fc")), {})
                               for i in range(n)])
-        self.Me = W.T * self.M * W + sp.diag(mp, mp, Ip)
-        self.Ce = W.T * (self.M * Wdot + self.C.subs(on_motion) * W)
-        self.Ge = W.T * sp.Matrix([sp.diff(self.V, s) for s in q])
+        x = sym.xe
+        dMp = [Mp.diff(x[i]) for i in range(3)]
+        Cp = sp.Matrix(3, 3, lambda k, j: sum(
+            (dMp[i][k, j] + dMp[j][k, i] - dMp[k][i, j]) * xd[i] / 2 for i in range(3)))
+        self.Me = W.T * self.M * W + Mp
+        self.Ce = W.T * (self.M * Wdot + self.C.subs(on_motion) * W) + Cp
+        self.Ge = W.T * sp.Matrix([sp.diff(self.V, s) for s in q]) + sp.Matrix(
+            [sp.diff(self.V, s) for s in x])
         self.StF = S.T * self.f_a.subs(on_motion)
         tau = self.Me * sym.xrdd + self.Ce * sym.xrd + self.StF + self.Ge
         self.Y = tau.jacobian(sym.theta)
