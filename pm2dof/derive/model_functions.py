@@ -251,7 +251,8 @@ def energy_functions(d, prefix):
     ce = d.converter_xe(xe, [(sym.xed, xed), (sym.theta, theta)])
     ce = ce.extended([(sym.qd, ca.reshape(ce(kin.W), m, 2 * n).T @ xed)])    # qd = W xed, eq. 7
     V = getattr(dyn, "V", sp.Integer(0))
-    return [ca.Function(f"{prefix}_Ge", [q, theta], [cq(_gravity_term(d)), d.singularity_measures(cq)],
+    return [ca.Function(f"{prefix}_Ge", [q, theta],
+                        [cq(_gravity_term(d)), d.singularity_measures(cq)],
                         ["q", "theta"], ["Ge", "sing"]),
             ca.Function(f"{prefix}_kinetic_energy", [xe, xed, theta], [ce(dyn.T)],
                         ["xe", "xed", "theta"], ["T"]),

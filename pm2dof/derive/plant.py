@@ -6,7 +6,8 @@ from .controllers import LAWS, controller_layouts, per_sample_inputs
 from .factored import solve_small, task_gravity, task_inertia_coriolis
 from .layouts import Layout
 
-__all__ = ["plant_layout", "model_plant_layout", "inertial_fields", "plant_functions", "closed_loop_layouts", "closed_loop_functions"]
+__all__ = ["plant_layout", "model_plant_layout", "inertial_fields", "plant_functions",
+           "closed_loop_layouts", "closed_loop_functions"]
 
 
 def inertial_fields(param_names, friction_names):
@@ -30,9 +31,9 @@ def _field_index(name):
 def plant_layout(n, param_names, friction_names):
     """Plant truth: the model's inertial parameters (:func:`inertial_fields`; the RR legs'
     alpha, beta, gamma), payload-augmented; friction with a Stribeck part."""
-    return Layout(inertial_fields(param_names, friction_names) + [("fv", n), ("fc", n), ("fs", n),
-                              ("stribeck_velocity", 1), ("coulomb_smoothing_velocity", 1),
-                              ("encoder_step", 1)])
+    friction = [("fv", n), ("fc", n), ("fs", n), ("stribeck_velocity", 1),
+                ("coulomb_smoothing_velocity", 1), ("encoder_step", 1)]
+    return Layout(inertial_fields(param_names, friction_names) + friction)
 
 
 def model_plant_layout(spec):
