@@ -29,7 +29,8 @@ __all__ = ["derive", "DeriveError"]
 
 class DeriveError(ModelFileError):
     """Derivation refused: the output folder belongs to another model file or to the installed
-    package (the message names both files, or what to do instead)."""
+    package (the message names both files, or what to do instead), or the model's task
+    dimension is neither 2 nor 3."""
 
 
 def _finalize(f):
@@ -131,7 +132,12 @@ def task_names(d):
 
 
 def derive_functions(d, spec):
-    """Every generated function of a derivation, finalized, in the order of the C file."""
+    """Every generated function of a derivation, finalized, in the order of the C file.
+    Refuses (DeriveError) a task dimension other than 2 (a point) or 3 (a platform's x, y,
+    phi): the closed-form splits, solves and singularity measures exist for those."""
+    if d.m not in (2, 3):
+        raise DeriveError(f"model {spec.name!r}: task dimension {d.m} (task coordinates "
+                          f"{task_names(d)}); pm2dof derives 2 (x, y) or 3 (x, y, phi)")
     ctrl = [_finalize(f) for f in controller_functions(d, spec.name)]
     plant = [_finalize(f) for f in plant_functions(d, spec.name)]
     loops = closed_loop_functions(d, spec.name, ctrl, plant, spec.rk4_substeps)

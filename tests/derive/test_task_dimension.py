@@ -392,3 +392,12 @@ def test_type_two_measure_in_three_dimensions(toy):
     d, fs, _ = toy
     sing = _v(fs["singularity_measures"](_Ref(d).q(XE)))
     assert np.all((sing > 0) & (sing <= 1)), sing
+
+
+def test_other_task_dimensions_are_refused():
+    import types
+    from pm2dof.derive.run import DeriveError
+    spec = types.SimpleNamespace(name="four", task_names=("x", "y", "z", "phi"))
+    with pytest.raises(DeriveError, match="'four': task dimension 4"):
+        derive_functions(types.SimpleNamespace(m=4, spec=spec), spec)
+
