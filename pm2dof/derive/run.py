@@ -113,7 +113,8 @@ def derive(model, out=None, *, force=False, build=True, progress=print):
     say(f"CasADi: {len(functions)} functions, "
         f"{sum(f.n_instructions() for f in functions)} instructions")
     extra = {"layouts": {k: v.to_json() for k, v in derive_layouts(d).items()},
-             "status_codes": STATUS, "rk4_substeps": spec.rk4_substeps}
+             "status_codes": STATUS, "rk4_substeps": spec.rk4_substeps,
+             "task_names": list(task_names(d))}      # the task dimension m and its coordinates
     # the model file as seen from the output folder, so the pair can be moved together
     label = Path(os.path.relpath(model_path.resolve(), out.resolve())).as_posix()
     manifest = export(spec, functions, out, label, extra, task_names(d))

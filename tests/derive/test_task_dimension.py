@@ -401,3 +401,12 @@ def test_other_task_dimensions_are_refused():
     with pytest.raises(DeriveError, match="'four': task dimension 4"):
         derive_functions(types.SimpleNamespace(m=4, spec=spec), spec)
 
+
+
+def test_manifest_names_the_task_coordinates(toy):
+    import json
+    from pm2dof.core.paths import SHIPPED_GENERATED
+    from pm2dof.derive.run import task_names
+    assert task_names(toy[0]) == ("x", "y", "phi")
+    for path in sorted(SHIPPED_GENERATED.glob("*/manifest.json")):
+        assert json.loads(path.read_text())["task_names"] == ["x", "y"], path
