@@ -97,7 +97,10 @@ extern "C" {
 #define casadi_f65 CASADI_PREFIX(f65)
 #define casadi_f66 CASADI_PREFIX(f66)
 #define casadi_f67 CASADI_PREFIX(f67)
+#define casadi_f68 CASADI_PREFIX(f68)
+#define casadi_f69 CASADI_PREFIX(f69)
 #define casadi_f7 CASADI_PREFIX(f7)
+#define casadi_f70 CASADI_PREFIX(f70)
 #define casadi_f8 CASADI_PREFIX(f8)
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
@@ -27297,6 +27300,431 @@ CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians_work_bytes(casadi_int *s
   if (sz_res) *sz_res = 10*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 7*sizeof(casadi_int);
   if (sz_w) *sz_w = 621*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_Ge:(q[4],theta[10])->(Ge[2],sing[2]) */
+static int casadi_f68(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
+  a0=0.;
+  if (res[0]!=0) res[0][0]=a0;
+  if (res[0]!=0) res[0][1]=a0;
+  a0=arg[0]? arg[0][0] : 0;
+  a1=sin(a0);
+  a2=arg[0]? arg[0][2] : 0;
+  a3=cos(a2);
+  a1=(a1*a3);
+  a0=cos(a0);
+  a2=sin(a2);
+  a0=(a0*a2);
+  a1=(a1-a0);
+  a1=casadi_fabs(a1);
+  a0=arg[0]? arg[0][1] : 0;
+  a4=sin(a0);
+  a5=arg[0]? arg[0][3] : 0;
+  a6=cos(a5);
+  a4=(a4*a6);
+  a0=cos(a0);
+  a5=sin(a5);
+  a0=(a0*a5);
+  a4=(a4-a0);
+  a4=casadi_fabs(a4);
+  a0=(a1+a4);
+  a1=(a1-a4);
+  a1=casadi_fabs(a1);
+  a0=(a0-a1);
+  a1=2.;
+  a0=(a0/a1);
+  if (res[1]!=0) res[1][0]=a0;
+  a0=5.0000000000000000e-01;
+  a1=1.;
+  a4=casadi_sq(a3);
+  a7=casadi_sq(a2);
+  a4=(a4-a7);
+  a7=casadi_sq(a6);
+  a8=casadi_sq(a5);
+  a7=(a7-a8);
+  a4=(a4+a7);
+  a4=casadi_sq(a4);
+  a3=(2.*a3);
+  a3=(a3*a2);
+  a6=(2.*a6);
+  a6=(a6*a5);
+  a3=(a3+a6);
+  a3=casadi_sq(a3);
+  a4=(a4+a3);
+  a4=sqrt(a4);
+  a4=(a0*a4);
+  a1=(a1-a4);
+  a4=casadi_fabs(a1);
+  a1=(a1+a4);
+  a0=(a0*a1);
+  a0=sqrt(a0);
+  if (res[1]!=0) res[1][1]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f68(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_Ge_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_Ge_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_Ge_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_Ge_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_Ge_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_Ge_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_Ge_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_Ge_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_Ge_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "Ge";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Ge_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_Ge_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_kinetic_energy:(xe[2],xed[2],theta[10])->(T) */
+static int casadi_f69(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22;
+  a00=5.0000000000000000e-01;
+  a01=arg[2]? arg[2][0] : 0;
+  a01=(a00*a01);
+  a02=2.4399999999999999e-01;
+  a03=-5.9535999999999999e-02;
+  a04=2.0491803278688523e+00;
+  a05=arg[0]? arg[0][0] : 0;
+  a06=(a04*a05);
+  a07=1.;
+  a08=-4.1991400161246979e+00;
+  a09=casadi_sq(a05);
+  a10=(a08*a09);
+  a10=(a07+a10);
+  a11=-2.5000000000000000e-01;
+  a12=arg[0]? arg[0][1] : 0;
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a08*a13);
+  a10=(a10+a14);
+  a10=sqrt(a10);
+  a09=(a09+a13);
+  a09=sqrt(a09);
+  a13=(a10/a09);
+  a13=(a13*a11);
+  a11=(a06-a13);
+  a14=(a03*a11);
+  a15=-5.1229508196721307e-01;
+  a04=(a04*a12);
+  a15=(a15+a04);
+  a09=(a05/a09);
+  a09=(a09*a10);
+  a10=(a15-a09);
+  a14=(a14*a10);
+  a16=5.9535999999999999e-02;
+  a13=(a06+a13);
+  a17=(a16*a13);
+  a15=(a15+a09);
+  a17=(a17*a15);
+  a14=(a14+a17);
+  a17=(a02/a14);
+  a09=(a17*a11);
+  a18=arg[1]? arg[1][0] : 0;
+  a09=(a09*a18);
+  a17=(a17*a15);
+  a19=arg[1]? arg[1][1] : 0;
+  a17=(a17*a19);
+  a09=(a09+a17);
+  a17=casadi_sq(a09);
+  a01=(a01*a17);
+  a17=arg[2]? arg[2][1] : 0;
+  a17=(a00*a17);
+  a20=-8.8729508196721307e-01;
+  a20=(a20+a06);
+  a06=casadi_sq(a12);
+  a21=-4.3300000000000000e-01;
+  a21=(a21+a05);
+  a05=casadi_sq(a21);
+  a22=(a06+a05);
+  a22=sqrt(a22);
+  a12=(a12/a22);
+  a06=(a08*a06);
+  a07=(a07+a06);
+  a08=(a08*a05);
+  a07=(a07+a08);
+  a07=sqrt(a07);
+  a12=(a12*a07);
+  a08=(a20-a12);
+  a03=(a03*a08);
+  a07=(a07/a22);
+  a07=(a07*a21);
+  a21=(a04-a07);
+  a03=(a03*a21);
+  a20=(a20+a12);
+  a16=(a16*a20);
+  a04=(a04+a07);
+  a16=(a16*a04);
+  a03=(a03+a16);
+  a02=(a02/a03);
+  a16=(a02*a08);
+  a16=(a16*a18);
+  a02=(a02*a04);
+  a02=(a02*a19);
+  a16=(a16+a02);
+  a02=casadi_sq(a16);
+  a17=(a17*a02);
+  a01=(a01+a17);
+  a17=arg[2]? arg[2][4] : 0;
+  a17=(a00*a17);
+  a02=-2.4399999999999999e-01;
+  a14=(a02/a14);
+  a07=(a14*a13);
+  a07=(a07*a18);
+  a14=(a14*a10);
+  a14=(a14*a19);
+  a07=(a07+a14);
+  a14=casadi_sq(a07);
+  a17=(a17*a14);
+  a01=(a01+a17);
+  a17=arg[2]? arg[2][5] : 0;
+  a00=(a00*a17);
+  a02=(a02/a03);
+  a03=(a02*a20);
+  a03=(a03*a18);
+  a02=(a02*a21);
+  a02=(a02*a19);
+  a03=(a03+a02);
+  a02=casadi_sq(a03);
+  a00=(a00*a02);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][2] : 0;
+  a00=(a00*a09);
+  a00=(a00*a07);
+  a13=(a13*a11);
+  a10=(a10*a15);
+  a13=(a13+a10);
+  a00=(a00*a13);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][3] : 0;
+  a00=(a00*a16);
+  a00=(a00*a03);
+  a20=(a20*a08);
+  a21=(a21*a04);
+  a20=(a20+a21);
+  a00=(a00*a20);
+  a01=(a01+a00);
+  if (res[0]!=0) res[0][0]=a01;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f69(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_kinetic_energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_kinetic_energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_kinetic_energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_kinetic_energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_kinetic_energy_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_kinetic_energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_kinetic_energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_kinetic_energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_kinetic_energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_kinetic_energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_kinetic_energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fivebar_potential_energy:(xe[2],theta[10])->(V) */
+static int casadi_f70(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=0.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f70(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_potential_energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_potential_energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_potential_energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fivebar_potential_energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_potential_energy_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int fivebar_potential_energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real fivebar_potential_energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_potential_energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fivebar_potential_energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "V";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_potential_energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fivebar_potential_energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fivebar_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
 }
 

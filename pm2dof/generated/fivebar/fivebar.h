@@ -74,6 +74,9 @@
  *   fivebar_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[10]) -> (u[2], d_xe[4], d_xed[4], sing[2])
  *   fivebar_sampled_step(x[4], tau_a[2], theta[10], T[1]) -> (x_next[4], sing[2])
  *   fivebar_sampled_step_jacobians(x[4], tau_a[2], theta[10], T[1]) -> (x_next[4], d_x[16], d_tau_a[8], sing[2])
+ *   fivebar_Ge(q[4], theta[10]) -> (Ge[2], sing[2])
+ *   fivebar_kinetic_energy(xe[2], xed[2], theta[10]) -> (T[1])
+ *   fivebar_potential_energy(xe[2], theta[10]) -> (V[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[10]
@@ -1193,6 +1196,60 @@ int fivebar_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fivebar_sampled_step_jacobians_SZ_RES 10
 #define fivebar_sampled_step_jacobians_SZ_IW 7
 #define fivebar_sampled_step_jacobians_SZ_W 621
+int fivebar_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_Ge_checkout(void);
+void fivebar_Ge_release(int mem);
+void fivebar_Ge_incref(void);
+void fivebar_Ge_decref(void);
+casadi_int fivebar_Ge_n_in(void);
+casadi_int fivebar_Ge_n_out(void);
+casadi_real fivebar_Ge_default_in(casadi_int i);
+const char* fivebar_Ge_name_in(casadi_int i);
+const char* fivebar_Ge_name_out(casadi_int i);
+const casadi_int* fivebar_Ge_sparsity_in(casadi_int i);
+const casadi_int* fivebar_Ge_sparsity_out(casadi_int i);
+int fivebar_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_Ge_SZ_ARG 2
+#define fivebar_Ge_SZ_RES 2
+#define fivebar_Ge_SZ_IW 0
+#define fivebar_Ge_SZ_W 0
+int fivebar_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_kinetic_energy_checkout(void);
+void fivebar_kinetic_energy_release(int mem);
+void fivebar_kinetic_energy_incref(void);
+void fivebar_kinetic_energy_decref(void);
+casadi_int fivebar_kinetic_energy_n_in(void);
+casadi_int fivebar_kinetic_energy_n_out(void);
+casadi_real fivebar_kinetic_energy_default_in(casadi_int i);
+const char* fivebar_kinetic_energy_name_in(casadi_int i);
+const char* fivebar_kinetic_energy_name_out(casadi_int i);
+const casadi_int* fivebar_kinetic_energy_sparsity_in(casadi_int i);
+const casadi_int* fivebar_kinetic_energy_sparsity_out(casadi_int i);
+int fivebar_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_kinetic_energy_SZ_ARG 3
+#define fivebar_kinetic_energy_SZ_RES 1
+#define fivebar_kinetic_energy_SZ_IW 0
+#define fivebar_kinetic_energy_SZ_W 0
+int fivebar_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_potential_energy_checkout(void);
+void fivebar_potential_energy_release(int mem);
+void fivebar_potential_energy_incref(void);
+void fivebar_potential_energy_decref(void);
+casadi_int fivebar_potential_energy_n_in(void);
+casadi_int fivebar_potential_energy_n_out(void);
+casadi_real fivebar_potential_energy_default_in(casadi_int i);
+const char* fivebar_potential_energy_name_in(casadi_int i);
+const char* fivebar_potential_energy_name_out(casadi_int i);
+const casadi_int* fivebar_potential_energy_sparsity_in(casadi_int i);
+const casadi_int* fivebar_potential_energy_sparsity_out(casadi_int i);
+int fivebar_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_potential_energy_SZ_ARG 2
+#define fivebar_potential_energy_SZ_RES 1
+#define fivebar_potential_energy_SZ_IW 0
+#define fivebar_potential_energy_SZ_W 0
 void fivebar_casadi_version(int* major, int* minor, int* patch);
 int fivebar_casadi_int_size(void);
 int fivebar_casadi_real_size(void);

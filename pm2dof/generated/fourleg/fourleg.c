@@ -97,7 +97,10 @@ extern "C" {
 #define casadi_f65 CASADI_PREFIX(f65)
 #define casadi_f66 CASADI_PREFIX(f66)
 #define casadi_f67 CASADI_PREFIX(f67)
+#define casadi_f68 CASADI_PREFIX(f68)
+#define casadi_f69 CASADI_PREFIX(f69)
 #define casadi_f7 CASADI_PREFIX(f7)
+#define casadi_f70 CASADI_PREFIX(f70)
 #define casadi_f8 CASADI_PREFIX(f8)
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
@@ -65060,6 +65063,584 @@ CASADI_SYMBOL_EXPORT int fourleg_sampled_step_jacobians_work_bytes(casadi_int *s
   if (sz_res) *sz_res = 10*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 9*sizeof(casadi_int);
   if (sz_w) *sz_w = 869*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_Ge:(q[8],theta[20])->(Ge[2],sing[2]) */
+static int casadi_f68(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13;
+  a00=0.;
+  if (res[0]!=0) res[0][0]=a00;
+  if (res[0]!=0) res[0][1]=a00;
+  a00=arg[0]? arg[0][0] : 0;
+  a01=sin(a00);
+  a02=arg[0]? arg[0][4] : 0;
+  a03=cos(a02);
+  a01=(a01*a03);
+  a00=cos(a00);
+  a02=sin(a02);
+  a00=(a00*a02);
+  a01=(a01-a00);
+  a01=casadi_fabs(a01);
+  a00=arg[0]? arg[0][1] : 0;
+  a04=sin(a00);
+  a05=arg[0]? arg[0][5] : 0;
+  a06=cos(a05);
+  a04=(a04*a06);
+  a00=cos(a00);
+  a05=sin(a05);
+  a00=(a00*a05);
+  a04=(a04-a00);
+  a04=casadi_fabs(a04);
+  a00=(a01+a04);
+  a01=(a01-a04);
+  a01=casadi_fabs(a01);
+  a00=(a00-a01);
+  a01=2.;
+  a00=(a00/a01);
+  a04=arg[0]? arg[0][2] : 0;
+  a07=sin(a04);
+  a08=arg[0]? arg[0][6] : 0;
+  a09=cos(a08);
+  a07=(a07*a09);
+  a04=cos(a04);
+  a08=sin(a08);
+  a04=(a04*a08);
+  a07=(a07-a04);
+  a07=casadi_fabs(a07);
+  a04=(a00+a07);
+  a00=(a00-a07);
+  a00=casadi_fabs(a00);
+  a04=(a04-a00);
+  a04=(a04/a01);
+  a00=arg[0]? arg[0][3] : 0;
+  a07=sin(a00);
+  a10=arg[0]? arg[0][7] : 0;
+  a11=cos(a10);
+  a07=(a07*a11);
+  a00=cos(a00);
+  a10=sin(a10);
+  a00=(a00*a10);
+  a07=(a07-a00);
+  a07=casadi_fabs(a07);
+  a00=(a04+a07);
+  a04=(a04-a07);
+  a04=casadi_fabs(a04);
+  a00=(a00-a04);
+  a00=(a00/a01);
+  if (res[1]!=0) res[1][0]=a00;
+  a00=5.0000000000000000e-01;
+  a01=1.;
+  a04=2.5000000000000000e-01;
+  a07=casadi_sq(a03);
+  a12=casadi_sq(a02);
+  a07=(a07-a12);
+  a12=casadi_sq(a06);
+  a13=casadi_sq(a05);
+  a12=(a12-a13);
+  a07=(a07+a12);
+  a12=casadi_sq(a09);
+  a13=casadi_sq(a08);
+  a12=(a12-a13);
+  a07=(a07+a12);
+  a12=casadi_sq(a11);
+  a13=casadi_sq(a10);
+  a12=(a12-a13);
+  a07=(a07+a12);
+  a07=casadi_sq(a07);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a06=(2.*a06);
+  a06=(a06*a05);
+  a03=(a03+a06);
+  a09=(2.*a09);
+  a09=(a09*a08);
+  a03=(a03+a09);
+  a11=(2.*a11);
+  a11=(a11*a10);
+  a03=(a03+a11);
+  a03=casadi_sq(a03);
+  a07=(a07+a03);
+  a07=sqrt(a07);
+  a04=(a04*a07);
+  a01=(a01-a04);
+  a04=casadi_fabs(a01);
+  a01=(a01+a04);
+  a00=(a00*a01);
+  a00=sqrt(a00);
+  if (res[1]!=0) res[1][1]=a00;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f68(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_Ge_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_Ge_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_Ge_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_Ge_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_Ge_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_Ge_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_Ge_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_Ge_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_Ge_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "Ge";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_Ge_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_Ge_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_kinetic_energy:(xe[2],xed[2],theta[20])->(T) */
+static int casadi_f69(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  a00=5.0000000000000000e-01;
+  a01=arg[2]? arg[2][0] : 0;
+  a01=(a00*a01);
+  a02=2.4399999999999999e-01;
+  a03=-5.9535999999999999e-02;
+  a04=2.0491803278688523e+00;
+  a05=arg[0]? arg[0][0] : 0;
+  a06=(a04*a05);
+  a07=1.;
+  a08=-4.1991400161246979e+00;
+  a09=casadi_sq(a05);
+  a10=(a08*a09);
+  a10=(a07+a10);
+  a11=-2.5000000000000000e-01;
+  a12=arg[0]? arg[0][1] : 0;
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a08*a13);
+  a10=(a10+a14);
+  a10=sqrt(a10);
+  a09=(a09+a13);
+  a09=sqrt(a09);
+  a15=(a10/a09);
+  a15=(a15*a11);
+  a16=(a06-a15);
+  a17=(a03*a16);
+  a18=-5.1229508196721307e-01;
+  a04=(a04*a12);
+  a18=(a18+a04);
+  a09=(a05/a09);
+  a09=(a09*a10);
+  a10=(a18-a09);
+  a17=(a17*a10);
+  a19=5.9535999999999999e-02;
+  a15=(a06+a15);
+  a20=(a19*a15);
+  a09=(a18+a09);
+  a20=(a20*a09);
+  a17=(a17+a20);
+  a20=(a02/a17);
+  a21=(a20*a16);
+  a22=arg[1]? arg[1][0] : 0;
+  a21=(a21*a22);
+  a20=(a20*a09);
+  a23=arg[1]? arg[1][1] : 0;
+  a20=(a20*a23);
+  a21=(a21+a20);
+  a20=casadi_sq(a21);
+  a01=(a01*a20);
+  a20=arg[2]? arg[2][1] : 0;
+  a20=(a00*a20);
+  a24=-8.8729508196721307e-01;
+  a24=(a24+a06);
+  a25=casadi_sq(a12);
+  a26=-4.3300000000000000e-01;
+  a26=(a26+a05);
+  a27=casadi_sq(a26);
+  a28=(a25+a27);
+  a28=sqrt(a28);
+  a29=(a12/a28);
+  a25=(a08*a25);
+  a25=(a07+a25);
+  a30=(a08*a27);
+  a25=(a25+a30);
+  a25=sqrt(a25);
+  a29=(a29*a25);
+  a31=(a24-a29);
+  a32=(a03*a31);
+  a25=(a25/a28);
+  a25=(a25*a26);
+  a28=(a04-a25);
+  a32=(a32*a28);
+  a29=(a24+a29);
+  a33=(a19*a29);
+  a25=(a04+a25);
+  a33=(a33*a25);
+  a32=(a32+a33);
+  a33=(a02/a32);
+  a34=(a33*a31);
+  a34=(a34*a22);
+  a33=(a33*a25);
+  a33=(a33*a23);
+  a34=(a34+a33);
+  a33=casadi_sq(a34);
+  a20=(a20*a33);
+  a01=(a01+a20);
+  a20=arg[2]? arg[2][2] : 0;
+  a20=(a00*a20);
+  a30=(a07+a30);
+  a33=-5.0000000000000000e-01;
+  a33=(a33+a12);
+  a12=casadi_sq(a33);
+  a35=(a08*a12);
+  a30=(a30+a35);
+  a30=sqrt(a30);
+  a27=(a27+a12);
+  a27=sqrt(a27);
+  a30=(a30/a27);
+  a33=(a30*a33);
+  a27=(a24-a33);
+  a12=(a03*a27);
+  a35=-1.0245901639344261e+00;
+  a35=(a35+a04);
+  a30=(a30*a26);
+  a26=(a35-a30);
+  a12=(a12*a26);
+  a24=(a24+a33);
+  a33=(a19*a24);
+  a35=(a35+a30);
+  a33=(a33*a35);
+  a12=(a12+a33);
+  a33=(a02/a12);
+  a30=(a33*a27);
+  a30=(a30*a22);
+  a33=(a33*a35);
+  a33=(a33*a23);
+  a30=(a30+a33);
+  a33=casadi_sq(a30);
+  a20=(a20*a33);
+  a01=(a01+a20);
+  a20=arg[2]? arg[2][3] : 0;
+  a20=(a00*a20);
+  a33=-1.2295081967213115e+00;
+  a33=(a33+a06);
+  a06=-5.9999999999999998e-01;
+  a06=(a06+a05);
+  a05=casadi_sq(a06);
+  a08=(a08*a05);
+  a07=(a07+a08);
+  a07=(a07+a14);
+  a07=sqrt(a07);
+  a05=(a05+a13);
+  a05=sqrt(a05);
+  a07=(a07/a05);
+  a11=(a07*a11);
+  a05=(a33-a11);
+  a03=(a03*a05);
+  a07=(a07*a06);
+  a06=(a18-a07);
+  a03=(a03*a06);
+  a33=(a33+a11);
+  a19=(a19*a33);
+  a18=(a18+a07);
+  a19=(a19*a18);
+  a03=(a03+a19);
+  a02=(a02/a03);
+  a19=(a02*a05);
+  a19=(a19*a22);
+  a02=(a02*a18);
+  a02=(a02*a23);
+  a19=(a19+a02);
+  a02=casadi_sq(a19);
+  a20=(a20*a02);
+  a01=(a01+a20);
+  a20=arg[2]? arg[2][8] : 0;
+  a20=(a00*a20);
+  a02=-2.4399999999999999e-01;
+  a17=(a02/a17);
+  a07=(a17*a15);
+  a07=(a07*a22);
+  a17=(a17*a10);
+  a17=(a17*a23);
+  a07=(a07+a17);
+  a17=casadi_sq(a07);
+  a20=(a20*a17);
+  a01=(a01+a20);
+  a20=arg[2]? arg[2][9] : 0;
+  a20=(a00*a20);
+  a32=(a02/a32);
+  a17=(a32*a29);
+  a17=(a17*a22);
+  a32=(a32*a28);
+  a32=(a32*a23);
+  a17=(a17+a32);
+  a32=casadi_sq(a17);
+  a20=(a20*a32);
+  a01=(a01+a20);
+  a20=arg[2]? arg[2][10] : 0;
+  a20=(a00*a20);
+  a12=(a02/a12);
+  a32=(a12*a24);
+  a32=(a32*a22);
+  a12=(a12*a26);
+  a12=(a12*a23);
+  a32=(a32+a12);
+  a12=casadi_sq(a32);
+  a20=(a20*a12);
+  a01=(a01+a20);
+  a20=arg[2]? arg[2][11] : 0;
+  a00=(a00*a20);
+  a02=(a02/a03);
+  a03=(a02*a33);
+  a03=(a03*a22);
+  a02=(a02*a06);
+  a02=(a02*a23);
+  a03=(a03+a02);
+  a02=casadi_sq(a03);
+  a00=(a00*a02);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][4] : 0;
+  a00=(a00*a21);
+  a00=(a00*a07);
+  a15=(a15*a16);
+  a10=(a10*a09);
+  a15=(a15+a10);
+  a00=(a00*a15);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][5] : 0;
+  a00=(a00*a34);
+  a00=(a00*a17);
+  a29=(a29*a31);
+  a28=(a28*a25);
+  a29=(a29+a28);
+  a00=(a00*a29);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][6] : 0;
+  a00=(a00*a30);
+  a00=(a00*a32);
+  a24=(a24*a27);
+  a26=(a26*a35);
+  a24=(a24+a26);
+  a00=(a00*a24);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][7] : 0;
+  a00=(a00*a19);
+  a00=(a00*a03);
+  a33=(a33*a05);
+  a06=(a06*a18);
+  a33=(a33+a06);
+  a00=(a00*a33);
+  a01=(a01+a00);
+  if (res[0]!=0) res[0][0]=a01;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f69(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_kinetic_energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_kinetic_energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_kinetic_energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_kinetic_energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_kinetic_energy_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_kinetic_energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_kinetic_energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_kinetic_energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_kinetic_energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_kinetic_energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_kinetic_energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* fourleg_potential_energy:(xe[2],theta[20])->(V) */
+static int casadi_f70(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=0.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f70(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_potential_energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_potential_energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_potential_energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void fourleg_potential_energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_potential_energy_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int fourleg_potential_energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real fourleg_potential_energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_potential_energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* fourleg_potential_energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "V";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_potential_energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* fourleg_potential_energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int fourleg_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
 }
 

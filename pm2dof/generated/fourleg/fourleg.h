@@ -74,6 +74,9 @@
  *   fourleg_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[20]) -> (u[2], d_xe[4], d_xed[4], sing[2])
  *   fourleg_sampled_step(x[4], tau_a[4], theta[20], T[1]) -> (x_next[4], sing[2])
  *   fourleg_sampled_step_jacobians(x[4], tau_a[4], theta[20], T[1]) -> (x_next[4], d_x[16], d_tau_a[16], sing[2])
+ *   fourleg_Ge(q[8], theta[20]) -> (Ge[2], sing[2])
+ *   fourleg_kinetic_energy(xe[2], xed[2], theta[20]) -> (T[1])
+ *   fourleg_potential_energy(xe[2], theta[20]) -> (V[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[20]
@@ -1193,6 +1196,60 @@ int fourleg_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fourleg_sampled_step_jacobians_SZ_RES 10
 #define fourleg_sampled_step_jacobians_SZ_IW 9
 #define fourleg_sampled_step_jacobians_SZ_W 869
+int fourleg_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_Ge_checkout(void);
+void fourleg_Ge_release(int mem);
+void fourleg_Ge_incref(void);
+void fourleg_Ge_decref(void);
+casadi_int fourleg_Ge_n_in(void);
+casadi_int fourleg_Ge_n_out(void);
+casadi_real fourleg_Ge_default_in(casadi_int i);
+const char* fourleg_Ge_name_in(casadi_int i);
+const char* fourleg_Ge_name_out(casadi_int i);
+const casadi_int* fourleg_Ge_sparsity_in(casadi_int i);
+const casadi_int* fourleg_Ge_sparsity_out(casadi_int i);
+int fourleg_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_Ge_SZ_ARG 2
+#define fourleg_Ge_SZ_RES 2
+#define fourleg_Ge_SZ_IW 0
+#define fourleg_Ge_SZ_W 0
+int fourleg_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_kinetic_energy_checkout(void);
+void fourleg_kinetic_energy_release(int mem);
+void fourleg_kinetic_energy_incref(void);
+void fourleg_kinetic_energy_decref(void);
+casadi_int fourleg_kinetic_energy_n_in(void);
+casadi_int fourleg_kinetic_energy_n_out(void);
+casadi_real fourleg_kinetic_energy_default_in(casadi_int i);
+const char* fourleg_kinetic_energy_name_in(casadi_int i);
+const char* fourleg_kinetic_energy_name_out(casadi_int i);
+const casadi_int* fourleg_kinetic_energy_sparsity_in(casadi_int i);
+const casadi_int* fourleg_kinetic_energy_sparsity_out(casadi_int i);
+int fourleg_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_kinetic_energy_SZ_ARG 3
+#define fourleg_kinetic_energy_SZ_RES 1
+#define fourleg_kinetic_energy_SZ_IW 0
+#define fourleg_kinetic_energy_SZ_W 0
+int fourleg_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_potential_energy_checkout(void);
+void fourleg_potential_energy_release(int mem);
+void fourleg_potential_energy_incref(void);
+void fourleg_potential_energy_decref(void);
+casadi_int fourleg_potential_energy_n_in(void);
+casadi_int fourleg_potential_energy_n_out(void);
+casadi_real fourleg_potential_energy_default_in(casadi_int i);
+const char* fourleg_potential_energy_name_in(casadi_int i);
+const char* fourleg_potential_energy_name_out(casadi_int i);
+const casadi_int* fourleg_potential_energy_sparsity_in(casadi_int i);
+const casadi_int* fourleg_potential_energy_sparsity_out(casadi_int i);
+int fourleg_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_potential_energy_SZ_ARG 2
+#define fourleg_potential_energy_SZ_RES 1
+#define fourleg_potential_energy_SZ_IW 0
+#define fourleg_potential_energy_SZ_W 0
 void fourleg_casadi_version(int* major, int* minor, int* patch);
 int fourleg_casadi_int_size(void);
 int fourleg_casadi_real_size(void);

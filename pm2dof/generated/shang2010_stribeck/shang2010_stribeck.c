@@ -97,7 +97,10 @@ extern "C" {
 #define casadi_f65 CASADI_PREFIX(f65)
 #define casadi_f66 CASADI_PREFIX(f66)
 #define casadi_f67 CASADI_PREFIX(f67)
+#define casadi_f68 CASADI_PREFIX(f68)
+#define casadi_f69 CASADI_PREFIX(f69)
 #define casadi_f7 CASADI_PREFIX(f7)
+#define casadi_f70 CASADI_PREFIX(f70)
 #define casadi_f8 CASADI_PREFIX(f8)
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
@@ -42552,6 +42555,508 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_sampled_step_jacobians_work_bytes(ca
   if (sz_res) *sz_res = 10*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 8*sizeof(casadi_int);
   if (sz_w) *sz_w = 772*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_Ge:(q[6],theta[18])->(Ge[2],sing[2]) */
+static int casadi_f68(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  a00=0.;
+  if (res[0]!=0) res[0][0]=a00;
+  if (res[0]!=0) res[0][1]=a00;
+  a00=arg[0]? arg[0][0] : 0;
+  a01=sin(a00);
+  a02=arg[0]? arg[0][3] : 0;
+  a03=cos(a02);
+  a01=(a01*a03);
+  a00=cos(a00);
+  a02=sin(a02);
+  a00=(a00*a02);
+  a01=(a01-a00);
+  a01=casadi_fabs(a01);
+  a00=arg[0]? arg[0][1] : 0;
+  a04=sin(a00);
+  a05=arg[0]? arg[0][4] : 0;
+  a06=cos(a05);
+  a04=(a04*a06);
+  a00=cos(a00);
+  a05=sin(a05);
+  a00=(a00*a05);
+  a04=(a04-a00);
+  a04=casadi_fabs(a04);
+  a00=(a01+a04);
+  a01=(a01-a04);
+  a01=casadi_fabs(a01);
+  a00=(a00-a01);
+  a01=2.;
+  a00=(a00/a01);
+  a04=arg[0]? arg[0][2] : 0;
+  a07=sin(a04);
+  a08=arg[0]? arg[0][5] : 0;
+  a09=cos(a08);
+  a07=(a07*a09);
+  a04=cos(a04);
+  a08=sin(a08);
+  a04=(a04*a08);
+  a07=(a07-a04);
+  a07=casadi_fabs(a07);
+  a04=(a00+a07);
+  a00=(a00-a07);
+  a00=casadi_fabs(a00);
+  a04=(a04-a00);
+  a04=(a04/a01);
+  if (res[1]!=0) res[1][0]=a04;
+  a04=5.0000000000000000e-01;
+  a01=1.;
+  a00=3.3333333333333331e-01;
+  a07=casadi_sq(a03);
+  a10=casadi_sq(a02);
+  a07=(a07-a10);
+  a10=casadi_sq(a06);
+  a11=casadi_sq(a05);
+  a10=(a10-a11);
+  a07=(a07+a10);
+  a10=casadi_sq(a09);
+  a11=casadi_sq(a08);
+  a10=(a10-a11);
+  a07=(a07+a10);
+  a07=casadi_sq(a07);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a06=(2.*a06);
+  a06=(a06*a05);
+  a03=(a03+a06);
+  a09=(2.*a09);
+  a09=(a09*a08);
+  a03=(a03+a09);
+  a03=casadi_sq(a03);
+  a07=(a07+a03);
+  a07=sqrt(a07);
+  a00=(a00*a07);
+  a01=(a01-a00);
+  a00=casadi_fabs(a01);
+  a01=(a01+a00);
+  a04=(a04*a01);
+  a04=sqrt(a04);
+  if (res[1]!=0) res[1][1]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f68(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_Ge_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_Ge_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_Ge_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_Ge_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_Ge_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_Ge_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_Ge_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_Ge_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_Ge_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "Ge";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_Ge_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_Ge_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_kinetic_energy:(xe[2],xed[2],theta[18])->(T) */
+static int casadi_f69(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28;
+  a00=5.0000000000000000e-01;
+  a01=arg[2]? arg[2][0] : 0;
+  a01=(a00*a01);
+  a02=2.4399999999999999e-01;
+  a03=-5.9535999999999999e-02;
+  a04=2.0491803278688523e+00;
+  a05=arg[0]? arg[0][0] : 0;
+  a06=(a04*a05);
+  a07=1.;
+  a08=-4.1991400161246979e+00;
+  a09=casadi_sq(a05);
+  a10=(a08*a09);
+  a10=(a07+a10);
+  a11=-2.5000000000000000e-01;
+  a12=arg[0]? arg[0][1] : 0;
+  a11=(a11+a12);
+  a13=casadi_sq(a11);
+  a14=(a08*a13);
+  a10=(a10+a14);
+  a10=sqrt(a10);
+  a09=(a09+a13);
+  a09=sqrt(a09);
+  a13=(a10/a09);
+  a13=(a13*a11);
+  a11=(a06-a13);
+  a14=(a03*a11);
+  a15=-5.1229508196721307e-01;
+  a04=(a04*a12);
+  a15=(a15+a04);
+  a09=(a05/a09);
+  a09=(a09*a10);
+  a10=(a15-a09);
+  a14=(a14*a10);
+  a16=5.9535999999999999e-02;
+  a13=(a06+a13);
+  a17=(a16*a13);
+  a15=(a15+a09);
+  a17=(a17*a15);
+  a14=(a14+a17);
+  a17=(a02/a14);
+  a09=(a17*a11);
+  a18=arg[1]? arg[1][0] : 0;
+  a09=(a09*a18);
+  a17=(a17*a15);
+  a19=arg[1]? arg[1][1] : 0;
+  a17=(a17*a19);
+  a09=(a09+a17);
+  a17=casadi_sq(a09);
+  a01=(a01*a17);
+  a17=arg[2]? arg[2][1] : 0;
+  a17=(a00*a17);
+  a20=-8.8729508196721307e-01;
+  a20=(a20+a06);
+  a06=casadi_sq(a12);
+  a21=-4.3300000000000000e-01;
+  a21=(a21+a05);
+  a05=casadi_sq(a21);
+  a22=(a06+a05);
+  a22=sqrt(a22);
+  a23=(a12/a22);
+  a06=(a08*a06);
+  a06=(a07+a06);
+  a24=(a08*a05);
+  a06=(a06+a24);
+  a06=sqrt(a06);
+  a23=(a23*a06);
+  a25=(a20-a23);
+  a26=(a03*a25);
+  a06=(a06/a22);
+  a06=(a06*a21);
+  a22=(a04-a06);
+  a26=(a26*a22);
+  a23=(a20+a23);
+  a27=(a16*a23);
+  a06=(a04+a06);
+  a27=(a27*a06);
+  a26=(a26+a27);
+  a27=(a02/a26);
+  a28=(a27*a25);
+  a28=(a28*a18);
+  a27=(a27*a06);
+  a27=(a27*a19);
+  a28=(a28+a27);
+  a27=casadi_sq(a28);
+  a17=(a17*a27);
+  a01=(a01+a17);
+  a17=arg[2]? arg[2][2] : 0;
+  a17=(a00*a17);
+  a07=(a07+a24);
+  a24=-5.0000000000000000e-01;
+  a24=(a24+a12);
+  a12=casadi_sq(a24);
+  a08=(a08*a12);
+  a07=(a07+a08);
+  a07=sqrt(a07);
+  a05=(a05+a12);
+  a05=sqrt(a05);
+  a07=(a07/a05);
+  a24=(a07*a24);
+  a05=(a20-a24);
+  a03=(a03*a05);
+  a12=-1.0245901639344261e+00;
+  a12=(a12+a04);
+  a07=(a07*a21);
+  a21=(a12-a07);
+  a03=(a03*a21);
+  a20=(a20+a24);
+  a16=(a16*a20);
+  a12=(a12+a07);
+  a16=(a16*a12);
+  a03=(a03+a16);
+  a02=(a02/a03);
+  a16=(a02*a05);
+  a16=(a16*a18);
+  a02=(a02*a12);
+  a02=(a02*a19);
+  a16=(a16+a02);
+  a02=casadi_sq(a16);
+  a17=(a17*a02);
+  a01=(a01+a17);
+  a17=arg[2]? arg[2][6] : 0;
+  a17=(a00*a17);
+  a02=-2.4399999999999999e-01;
+  a14=(a02/a14);
+  a07=(a14*a13);
+  a07=(a07*a18);
+  a14=(a14*a10);
+  a14=(a14*a19);
+  a07=(a07+a14);
+  a14=casadi_sq(a07);
+  a17=(a17*a14);
+  a01=(a01+a17);
+  a17=arg[2]? arg[2][7] : 0;
+  a17=(a00*a17);
+  a26=(a02/a26);
+  a14=(a26*a23);
+  a14=(a14*a18);
+  a26=(a26*a22);
+  a26=(a26*a19);
+  a14=(a14+a26);
+  a26=casadi_sq(a14);
+  a17=(a17*a26);
+  a01=(a01+a17);
+  a17=arg[2]? arg[2][8] : 0;
+  a00=(a00*a17);
+  a02=(a02/a03);
+  a03=(a02*a20);
+  a03=(a03*a18);
+  a02=(a02*a21);
+  a02=(a02*a19);
+  a03=(a03+a02);
+  a02=casadi_sq(a03);
+  a00=(a00*a02);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][3] : 0;
+  a00=(a00*a09);
+  a00=(a00*a07);
+  a13=(a13*a11);
+  a10=(a10*a15);
+  a13=(a13+a10);
+  a00=(a00*a13);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][4] : 0;
+  a00=(a00*a28);
+  a00=(a00*a14);
+  a23=(a23*a25);
+  a22=(a22*a06);
+  a23=(a23+a22);
+  a00=(a00*a23);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][5] : 0;
+  a00=(a00*a16);
+  a00=(a00*a03);
+  a20=(a20*a05);
+  a21=(a21*a12);
+  a20=(a20+a21);
+  a00=(a00*a20);
+  a01=(a01+a00);
+  if (res[0]!=0) res[0][0]=a01;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f69(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_kinetic_energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_kinetic_energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_kinetic_energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_kinetic_energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_kinetic_energy_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_kinetic_energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_kinetic_energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_kinetic_energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_kinetic_energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_kinetic_energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_kinetic_energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* shang2010_stribeck_potential_energy:(xe[2],theta[18])->(V) */
+static int casadi_f70(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=0.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f70(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_potential_energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_potential_energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_potential_energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void shang2010_stribeck_potential_energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_potential_energy_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int shang2010_stribeck_potential_energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real shang2010_stribeck_potential_energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_potential_energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_potential_energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "V";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_potential_energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_potential_energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s8;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int shang2010_stribeck_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
 }
 

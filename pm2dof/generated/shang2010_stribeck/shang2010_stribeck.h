@@ -74,6 +74,9 @@
  *   shang2010_stribeck_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[18]) -> (u[2], d_xe[4], d_xed[4], sing[2])
  *   shang2010_stribeck_sampled_step(x[4], tau_a[3], theta[18], T[1]) -> (x_next[4], sing[2])
  *   shang2010_stribeck_sampled_step_jacobians(x[4], tau_a[3], theta[18], T[1]) -> (x_next[4], d_x[16], d_tau_a[12], sing[2])
+ *   shang2010_stribeck_Ge(q[6], theta[18]) -> (Ge[2], sing[2])
+ *   shang2010_stribeck_kinetic_energy(xe[2], xed[2], theta[18]) -> (T[1])
+ *   shang2010_stribeck_potential_energy(xe[2], theta[18]) -> (V[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[18]
@@ -1193,6 +1196,60 @@ int shang2010_stribeck_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, cas
 #define shang2010_stribeck_sampled_step_jacobians_SZ_RES 10
 #define shang2010_stribeck_sampled_step_jacobians_SZ_IW 8
 #define shang2010_stribeck_sampled_step_jacobians_SZ_W 772
+int shang2010_stribeck_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_Ge_checkout(void);
+void shang2010_stribeck_Ge_release(int mem);
+void shang2010_stribeck_Ge_incref(void);
+void shang2010_stribeck_Ge_decref(void);
+casadi_int shang2010_stribeck_Ge_n_in(void);
+casadi_int shang2010_stribeck_Ge_n_out(void);
+casadi_real shang2010_stribeck_Ge_default_in(casadi_int i);
+const char* shang2010_stribeck_Ge_name_in(casadi_int i);
+const char* shang2010_stribeck_Ge_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_Ge_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_Ge_sparsity_out(casadi_int i);
+int shang2010_stribeck_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_Ge_SZ_ARG 2
+#define shang2010_stribeck_Ge_SZ_RES 2
+#define shang2010_stribeck_Ge_SZ_IW 0
+#define shang2010_stribeck_Ge_SZ_W 0
+int shang2010_stribeck_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_kinetic_energy_checkout(void);
+void shang2010_stribeck_kinetic_energy_release(int mem);
+void shang2010_stribeck_kinetic_energy_incref(void);
+void shang2010_stribeck_kinetic_energy_decref(void);
+casadi_int shang2010_stribeck_kinetic_energy_n_in(void);
+casadi_int shang2010_stribeck_kinetic_energy_n_out(void);
+casadi_real shang2010_stribeck_kinetic_energy_default_in(casadi_int i);
+const char* shang2010_stribeck_kinetic_energy_name_in(casadi_int i);
+const char* shang2010_stribeck_kinetic_energy_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_kinetic_energy_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_kinetic_energy_sparsity_out(casadi_int i);
+int shang2010_stribeck_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_kinetic_energy_SZ_ARG 3
+#define shang2010_stribeck_kinetic_energy_SZ_RES 1
+#define shang2010_stribeck_kinetic_energy_SZ_IW 0
+#define shang2010_stribeck_kinetic_energy_SZ_W 0
+int shang2010_stribeck_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_stribeck_potential_energy_checkout(void);
+void shang2010_stribeck_potential_energy_release(int mem);
+void shang2010_stribeck_potential_energy_incref(void);
+void shang2010_stribeck_potential_energy_decref(void);
+casadi_int shang2010_stribeck_potential_energy_n_in(void);
+casadi_int shang2010_stribeck_potential_energy_n_out(void);
+casadi_real shang2010_stribeck_potential_energy_default_in(casadi_int i);
+const char* shang2010_stribeck_potential_energy_name_in(casadi_int i);
+const char* shang2010_stribeck_potential_energy_name_out(casadi_int i);
+const casadi_int* shang2010_stribeck_potential_energy_sparsity_in(casadi_int i);
+const casadi_int* shang2010_stribeck_potential_energy_sparsity_out(casadi_int i);
+int shang2010_stribeck_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_stribeck_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_stribeck_potential_energy_SZ_ARG 2
+#define shang2010_stribeck_potential_energy_SZ_RES 1
+#define shang2010_stribeck_potential_energy_SZ_IW 0
+#define shang2010_stribeck_potential_energy_SZ_W 0
 void shang2010_stribeck_casadi_version(int* major, int* minor, int* patch);
 int shang2010_stribeck_casadi_int_size(void);
 int shang2010_stribeck_casadi_real_size(void);

@@ -97,7 +97,10 @@ extern "C" {
 #define casadi_f65 CASADI_PREFIX(f65)
 #define casadi_f66 CASADI_PREFIX(f66)
 #define casadi_f67 CASADI_PREFIX(f67)
+#define casadi_f68 CASADI_PREFIX(f68)
+#define casadi_f69 CASADI_PREFIX(f69)
 #define casadi_f7 CASADI_PREFIX(f7)
+#define casadi_f70 CASADI_PREFIX(f70)
 #define casadi_f8 CASADI_PREFIX(f8)
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
@@ -40794,6 +40797,609 @@ CASADI_SYMBOL_EXPORT int unequal_sampled_step_jacobians_work_bytes(casadi_int *s
   if (sz_res) *sz_res = 10*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 8*sizeof(casadi_int);
   if (sz_w) *sz_w = 768*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_Ge:(q[6],theta[15])->(Ge[2],sing[2]) */
+static int casadi_f68(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  a00=0.;
+  if (res[0]!=0) res[0][0]=a00;
+  if (res[0]!=0) res[0][1]=a00;
+  a00=arg[0]? arg[0][0] : 0;
+  a01=sin(a00);
+  a02=arg[0]? arg[0][3] : 0;
+  a03=cos(a02);
+  a01=(a01*a03);
+  a00=cos(a00);
+  a02=sin(a02);
+  a00=(a00*a02);
+  a01=(a01-a00);
+  a01=casadi_fabs(a01);
+  a00=arg[0]? arg[0][1] : 0;
+  a04=sin(a00);
+  a05=arg[0]? arg[0][4] : 0;
+  a06=cos(a05);
+  a04=(a04*a06);
+  a00=cos(a00);
+  a05=sin(a05);
+  a00=(a00*a05);
+  a04=(a04-a00);
+  a04=casadi_fabs(a04);
+  a00=(a01+a04);
+  a01=(a01-a04);
+  a01=casadi_fabs(a01);
+  a00=(a00-a01);
+  a01=2.;
+  a00=(a00/a01);
+  a04=arg[0]? arg[0][2] : 0;
+  a07=sin(a04);
+  a08=arg[0]? arg[0][5] : 0;
+  a09=cos(a08);
+  a07=(a07*a09);
+  a04=cos(a04);
+  a08=sin(a08);
+  a04=(a04*a08);
+  a07=(a07-a04);
+  a07=casadi_fabs(a07);
+  a04=(a00+a07);
+  a00=(a00-a07);
+  a00=casadi_fabs(a00);
+  a04=(a04-a00);
+  a04=(a04/a01);
+  if (res[1]!=0) res[1][0]=a04;
+  a04=5.0000000000000000e-01;
+  a01=1.;
+  a00=3.3333333333333331e-01;
+  a07=casadi_sq(a03);
+  a10=casadi_sq(a02);
+  a07=(a07-a10);
+  a10=casadi_sq(a06);
+  a11=casadi_sq(a05);
+  a10=(a10-a11);
+  a07=(a07+a10);
+  a10=casadi_sq(a09);
+  a11=casadi_sq(a08);
+  a10=(a10-a11);
+  a07=(a07+a10);
+  a07=casadi_sq(a07);
+  a03=(2.*a03);
+  a03=(a03*a02);
+  a06=(2.*a06);
+  a06=(a06*a05);
+  a03=(a03+a06);
+  a09=(2.*a09);
+  a09=(a09*a08);
+  a03=(a03+a09);
+  a03=casadi_sq(a03);
+  a07=(a07+a03);
+  a07=sqrt(a07);
+  a00=(a00*a07);
+  a01=(a01-a00);
+  a00=casadi_fabs(a01);
+  a01=(a01+a00);
+  a04=(a04*a01);
+  a04=sqrt(a04);
+  if (res[1]!=0) res[1][1]=a04;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f68(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_Ge_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_Ge_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_Ge_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_Ge_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_Ge_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_Ge_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_Ge_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_Ge_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "q";
+    case 1: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_Ge_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "Ge";
+    case 1: return "sing";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_Ge_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_Ge_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_kinetic_energy:(xe[2],xed[2],theta[15])->(T) */
+static int casadi_f69(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31;
+  a00=5.0000000000000000e-01;
+  a01=arg[2]? arg[2][0] : 0;
+  a01=(a00*a01);
+  a02=2.3499999999999999e-01;
+  a03=-5.8749999999999997e-02;
+  a04=4.2553191489361701e+00;
+  a05=arg[0]? arg[0][0] : 0;
+  a06=(a04*a05);
+  a07=-2.1276595744680851e+00;
+  a08=(a07*a05);
+  a09=casadi_sq(a05);
+  a10=-2.6000000000000001e-01;
+  a11=arg[0]? arg[0][1] : 0;
+  a10=(a10+a11);
+  a12=casadi_sq(a10);
+  a13=(a09+a12);
+  a08=(a08/a13);
+  a14=7.2750000000000002e-03;
+  a14=(a14+a09);
+  a14=(a14+a12);
+  a08=(a08*a14);
+  a06=(a06+a08);
+  a08=-1.0638297872340425e+00;
+  a12=1.;
+  a09=-4.;
+  a09=(a09/a13);
+  a15=casadi_sq(a14);
+  a09=(a09*a15);
+  a09=(a12+a09);
+  a09=sqrt(a09);
+  a08=(a08*a09);
+  a15=sqrt(a13);
+  a08=(a08/a15);
+  a08=(a08*a10);
+  a06=(a06+a08);
+  a03=(a03*a06);
+  a08=2.;
+  a08=(a08/a13);
+  a08=(a08*a10);
+  a08=(a08*a14);
+  a16=(a05*a09);
+  a16=(a16/a15);
+  a08=(a08-a16);
+  a03=(a03*a08);
+  a16=5.8749999999999997e-02;
+  a17=(a09/a15);
+  a17=(a17*a10);
+  a18=(2.*a05);
+  a18=(a18/a13);
+  a18=(a18*a14);
+  a17=(a17+a18);
+  a16=(a16*a17);
+  a18=-1.1063829787234043e+00;
+  a04=(a04*a11);
+  a18=(a18+a04);
+  a07=(a07/a13);
+  a07=(a07*a10);
+  a07=(a07*a14);
+  a18=(a18+a07);
+  a07=1.0638297872340425e+00;
+  a07=(a07*a05);
+  a07=(a07*a09);
+  a07=(a07/a15);
+  a18=(a18+a07);
+  a16=(a16*a18);
+  a03=(a03+a16);
+  a02=(a02/a03);
+  a16=(a02*a06);
+  a07=arg[1]? arg[1][0] : 0;
+  a16=(a16*a07);
+  a02=(a02*a18);
+  a15=arg[1]? arg[1][1] : 0;
+  a02=(a02*a15);
+  a16=(a16+a02);
+  a02=casadi_sq(a16);
+  a01=(a01*a02);
+  a02=arg[2]? arg[2][1] : 0;
+  a02=(a00*a02);
+  a09=2.5000000000000000e-01;
+  a14=-5.9999999999999998e-02;
+  a10=-1.7600000000000000e+00;
+  a13=4.;
+  a04=(a13*a05);
+  a10=(a10+a04);
+  a04=-2.;
+  a19=casadi_sq(a11);
+  a20=-4.4000000000000000e-01;
+  a20=(a20+a05);
+  a21=casadi_sq(a20);
+  a22=(a19+a21);
+  a23=(a04/a22);
+  a23=(a23*a20);
+  a24=-4.8999999999999998e-03;
+  a24=(a24+a19);
+  a24=(a24+a21);
+  a23=(a23*a24);
+  a10=(a10+a23);
+  a23=-9.5999999999999996e-01;
+  a23=(a23*a11);
+  a21=-4.3402777777777777e+00;
+  a21=(a21/a22);
+  a19=casadi_sq(a24);
+  a21=(a21*a19);
+  a21=(a12+a21);
+  a21=sqrt(a21);
+  a23=(a23*a21);
+  a19=sqrt(a22);
+  a23=(a23/a19);
+  a10=(a10+a23);
+  a14=(a14*a10);
+  a23=2.0833333333333335e+00;
+  a25=(a23*a11);
+  a25=(a25/a22);
+  a25=(a25*a24);
+  a26=(a21/a19);
+  a26=(a26*a20);
+  a25=(a25-a26);
+  a14=(a14*a25);
+  a26=5.9999999999999998e-02;
+  a27=(a11*a21);
+  a27=(a27/a19);
+  a23=(a23/a22);
+  a23=(a23*a20);
+  a23=(a23*a24);
+  a27=(a27+a23);
+  a26=(a26*a27);
+  a13=(a13*a11);
+  a04=(a04*a11);
+  a04=(a04/a22);
+  a04=(a04*a24);
+  a13=(a13+a04);
+  a04=9.5999999999999996e-01;
+  a04=(a04*a21);
+  a04=(a04/a19);
+  a04=(a04*a20);
+  a13=(a13+a04);
+  a26=(a26*a13);
+  a14=(a14+a26);
+  a09=(a09/a14);
+  a26=(a09*a10);
+  a26=(a26*a07);
+  a09=(a09*a13);
+  a09=(a09*a15);
+  a26=(a26+a09);
+  a09=casadi_sq(a26);
+  a02=(a02*a09);
+  a01=(a01+a02);
+  a02=arg[2]? arg[2][2] : 0;
+  a02=(a00*a02);
+  a09=2.3999999999999999e-01;
+  a04=-5.8799999999999998e-02;
+  a20=-1.7916666666666667e+00;
+  a19=4.1666666666666670e+00;
+  a21=(a19*a05);
+  a20=(a20+a21);
+  a21=-1.0208333333333333e+00;
+  a24=-4.1649312786339028e+00;
+  a22=-5.1000000000000001e-01;
+  a22=(a22+a11);
+  a23=casadi_sq(a22);
+  a28=-4.2999999999999999e-01;
+  a28=(a28+a05);
+  a05=casadi_sq(a28);
+  a29=(a23+a05);
+  a24=(a24/a29);
+  a30=2.4250000000000001e-03;
+  a30=(a30+a23);
+  a30=(a30+a05);
+  a05=casadi_sq(a30);
+  a24=(a24*a05);
+  a12=(a12+a24);
+  a12=sqrt(a12);
+  a21=(a21*a12);
+  a24=sqrt(a29);
+  a21=(a21/a24);
+  a21=(a21*a22);
+  a20=(a20+a21);
+  a21=-2.0833333333333335e+00;
+  a21=(a21/a29);
+  a05=(a21*a28);
+  a05=(a05*a30);
+  a20=(a20+a05);
+  a04=(a04*a20);
+  a05=2.0408163265306123e+00;
+  a05=(a05/a29);
+  a29=(a05*a22);
+  a29=(a29*a30);
+  a23=(a12/a24);
+  a31=(a23*a28);
+  a29=(a29-a31);
+  a04=(a04*a29);
+  a31=5.8799999999999998e-02;
+  a23=(a23*a22);
+  a05=(a05*a28);
+  a05=(a05*a30);
+  a23=(a23+a05);
+  a31=(a31*a23);
+  a05=-2.1250000000000000e+00;
+  a19=(a19*a11);
+  a05=(a05+a19);
+  a21=(a21*a22);
+  a21=(a21*a30);
+  a05=(a05+a21);
+  a21=1.0208333333333333e+00;
+  a21=(a21*a12);
+  a21=(a21/a24);
+  a21=(a21*a28);
+  a05=(a05+a21);
+  a31=(a31*a05);
+  a04=(a04+a31);
+  a09=(a09/a04);
+  a31=(a09*a20);
+  a31=(a31*a07);
+  a09=(a09*a05);
+  a09=(a09*a15);
+  a31=(a31+a09);
+  a09=casadi_sq(a31);
+  a02=(a02*a09);
+  a01=(a01+a02);
+  a02=arg[2]? arg[2][6] : 0;
+  a02=(a00*a02);
+  a09=-2.5000000000000000e-01;
+  a09=(a09/a03);
+  a03=(a09*a17);
+  a03=(a03*a07);
+  a09=(a09*a08);
+  a09=(a09*a15);
+  a03=(a03+a09);
+  a09=casadi_sq(a03);
+  a02=(a02*a09);
+  a01=(a01+a02);
+  a02=arg[2]? arg[2][7] : 0;
+  a02=(a00*a02);
+  a09=-2.3999999999999999e-01;
+  a09=(a09/a14);
+  a14=(a09*a27);
+  a14=(a14*a07);
+  a09=(a09*a25);
+  a09=(a09*a15);
+  a14=(a14+a09);
+  a09=casadi_sq(a14);
+  a02=(a02*a09);
+  a01=(a01+a02);
+  a02=arg[2]? arg[2][8] : 0;
+  a00=(a00*a02);
+  a02=-2.4500000000000000e-01;
+  a02=(a02/a04);
+  a04=(a02*a23);
+  a04=(a04*a07);
+  a02=(a02*a29);
+  a02=(a02*a15);
+  a04=(a04+a02);
+  a02=casadi_sq(a04);
+  a00=(a00*a02);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][3] : 0;
+  a00=(a00*a16);
+  a00=(a00*a03);
+  a17=(a17*a06);
+  a08=(a08*a18);
+  a17=(a17+a08);
+  a00=(a00*a17);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][4] : 0;
+  a00=(a00*a26);
+  a00=(a00*a14);
+  a27=(a27*a10);
+  a25=(a25*a13);
+  a27=(a27+a25);
+  a00=(a00*a27);
+  a01=(a01+a00);
+  a00=arg[2]? arg[2][5] : 0;
+  a00=(a00*a31);
+  a00=(a00*a04);
+  a23=(a23*a20);
+  a29=(a29*a05);
+  a23=(a23+a29);
+  a00=(a00*a23);
+  a01=(a01+a00);
+  if (res[0]!=0) res[0][0]=a01;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f69(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_kinetic_energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_kinetic_energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_kinetic_energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_kinetic_energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_kinetic_energy_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_kinetic_energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_kinetic_energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_kinetic_energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "xed";
+    case 2: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_kinetic_energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "T";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_kinetic_energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    case 2: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_kinetic_energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* unequal_potential_energy:(xe[2],theta[15])->(V) */
+static int casadi_f70(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=0.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f70(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int unequal_potential_energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void unequal_potential_energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_potential_energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void unequal_potential_energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_potential_energy_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int unequal_potential_energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real unequal_potential_energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_potential_energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xe";
+    case 1: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* unequal_potential_energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "V";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_potential_energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* unequal_potential_energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s9;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int unequal_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int unequal_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
 }
 

@@ -74,6 +74,9 @@
  *   unequal_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[15]) -> (u[2], d_xe[4], d_xed[4], sing[2])
  *   unequal_sampled_step(x[4], tau_a[3], theta[15], T[1]) -> (x_next[4], sing[2])
  *   unequal_sampled_step_jacobians(x[4], tau_a[3], theta[15], T[1]) -> (x_next[4], d_x[16], d_tau_a[12], sing[2])
+ *   unequal_Ge(q[6], theta[15]) -> (Ge[2], sing[2])
+ *   unequal_kinetic_energy(xe[2], xed[2], theta[15]) -> (T[1])
+ *   unequal_potential_energy(xe[2], theta[15]) -> (V[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[15]
@@ -1193,6 +1196,60 @@ int unequal_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define unequal_sampled_step_jacobians_SZ_RES 10
 #define unequal_sampled_step_jacobians_SZ_IW 8
 #define unequal_sampled_step_jacobians_SZ_W 768
+int unequal_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int unequal_Ge_checkout(void);
+void unequal_Ge_release(int mem);
+void unequal_Ge_incref(void);
+void unequal_Ge_decref(void);
+casadi_int unequal_Ge_n_in(void);
+casadi_int unequal_Ge_n_out(void);
+casadi_real unequal_Ge_default_in(casadi_int i);
+const char* unequal_Ge_name_in(casadi_int i);
+const char* unequal_Ge_name_out(casadi_int i);
+const casadi_int* unequal_Ge_sparsity_in(casadi_int i);
+const casadi_int* unequal_Ge_sparsity_out(casadi_int i);
+int unequal_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int unequal_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define unequal_Ge_SZ_ARG 2
+#define unequal_Ge_SZ_RES 2
+#define unequal_Ge_SZ_IW 0
+#define unequal_Ge_SZ_W 0
+int unequal_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int unequal_kinetic_energy_checkout(void);
+void unequal_kinetic_energy_release(int mem);
+void unequal_kinetic_energy_incref(void);
+void unequal_kinetic_energy_decref(void);
+casadi_int unequal_kinetic_energy_n_in(void);
+casadi_int unequal_kinetic_energy_n_out(void);
+casadi_real unequal_kinetic_energy_default_in(casadi_int i);
+const char* unequal_kinetic_energy_name_in(casadi_int i);
+const char* unequal_kinetic_energy_name_out(casadi_int i);
+const casadi_int* unequal_kinetic_energy_sparsity_in(casadi_int i);
+const casadi_int* unequal_kinetic_energy_sparsity_out(casadi_int i);
+int unequal_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int unequal_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define unequal_kinetic_energy_SZ_ARG 3
+#define unequal_kinetic_energy_SZ_RES 1
+#define unequal_kinetic_energy_SZ_IW 0
+#define unequal_kinetic_energy_SZ_W 0
+int unequal_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int unequal_potential_energy_checkout(void);
+void unequal_potential_energy_release(int mem);
+void unequal_potential_energy_incref(void);
+void unequal_potential_energy_decref(void);
+casadi_int unequal_potential_energy_n_in(void);
+casadi_int unequal_potential_energy_n_out(void);
+casadi_real unequal_potential_energy_default_in(casadi_int i);
+const char* unequal_potential_energy_name_in(casadi_int i);
+const char* unequal_potential_energy_name_out(casadi_int i);
+const casadi_int* unequal_potential_energy_sparsity_in(casadi_int i);
+const casadi_int* unequal_potential_energy_sparsity_out(casadi_int i);
+int unequal_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int unequal_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define unequal_potential_energy_SZ_ARG 2
+#define unequal_potential_energy_SZ_RES 1
+#define unequal_potential_energy_SZ_IW 0
+#define unequal_potential_energy_SZ_W 0
 void unequal_casadi_version(int* major, int* minor, int* patch);
 int unequal_casadi_int_size(void);
 int unequal_casadi_real_size(void);
