@@ -10,11 +10,12 @@ OUT    ?= out
 MODEL_DIRS := $(patsubst %/manifest.json,%,$(wildcard pm2dof/generated/*/manifest.json))
 LIBS := $(foreach d,$(MODEL_DIRS),$(d)/lib$(notdir $(d)).so)
 
-.PHONY: install derive derive-all libs test docs check-install dist demo bench c-example clean help
+.PHONY: install derive derive-all libs test lint docs check-install dist demo bench c-example clean help
 
 help:
 	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
 	@echo "make test     set up .venv, build, run the test suite"
+	@echo "make lint     ruff check pm2dof tests (pyflakes, import order, bugbear; pyproject.toml)"
 	@echo "make derive   re-derive $(MODEL) into pm2dof/generated/<name>/ and compile it (MODEL=path)"
 	@echo "make derive-all  re-derive every shipped model (after a change to pm2dof/derive/)"
 	@echo "make dist     build the sdist and the wheel into dist/"
@@ -48,6 +49,10 @@ derive-all: $(STAMP)
 
 test: install
 	$(PY) -m pytest -q
+
+# pyflakes (F), import order (I), bugbear (B): [tool.ruff] in pyproject.toml
+lint: $(STAMP)
+	$(VENV)/bin/ruff check pm2dof tests
 
 # the documentation site: docs/*.md and the docstrings, warnings are errors (mkdocs.yml).
 # NO_MKDOCS_2_WARNING silences the Material theme's banner about MkDocs 2 (pinned < 2).

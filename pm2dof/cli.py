@@ -30,8 +30,8 @@ import sys
 import warnings
 from pathlib import Path
 
-from .analysis.progress import Progress
 from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
+from .infra.progress import Progress
 
 __all__ = ["main", "build_parser"]
 
@@ -190,12 +190,14 @@ def cmd_identify_excite(args):
 
 
 def cmd_identify_fit(args):
+    from .analysis.experiment import seeded_table3
     from .identification.report import run_fit
     run_fit(args.log, model=args.model, generated=args.generated,
             excitation_file=args.excitation, duration=args.duration,
             quantise=not args.exact_encoders, controller=args.controller, save=args.save,
             as_json=args.json, cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
-            time_tolerance=args.time_tolerance, seed=args.seed_na,
+            time_tolerance=args.time_tolerance,
+            seed=seeded_table3 if args.seed_na else None,
             progress=_ident_progress(args))
     return 0
 
@@ -220,22 +222,6 @@ def cmd_identify_without_subcommand(args):
     raise ArgumentError("pm2dof identify needs a sub-command: report, excite, fit, design or "
                         "monte-carlo (plain `pm2dof identify` was replaced by: pm2dof identify "
                         "report, and pm2dof identify fit)")
-
-
-#: the flags that chose a mode of `pm2dof identify` before it had sub-commands -> the command
-#: that replaced each, and whether the flag took a value
-_IDENTIFY_REPLACED = {"--report": ("pm2dof identify report", 0),
-                      "--excite": ("pm2dof identify excite --out LOG", 0),
-                      "--data": ("pm2dof identify fit LOG", "?"),
-                      "--design-excitation": ("pm2dof identify design --out FILE", 0),
-                      "--monte-carlo": ("pm2dof identify monte-carlo N", "?")}
-
-
-class _Replaced(argparse.Action):
-    """A removed option: refused while parsing, naming the command that replaced it."""
-
-    def __call__(self, parser, namespace, values, option_string=None):
-        raise ArgumentError(f"pm2dof identify {option_string} was replaced by: {self.const}")
 
 
 def _wrap(text):
@@ -263,8 +249,6 @@ def _identify_parser(sub, common):
                            "  pm2dof identify excite --excitation exc.toml --out run.csv\n"
                            "  pm2dof identify fit run.csv --save theta.json --seed-na\n"
                            "  pm2dof identify monte-carlo 50 --excitation exc.toml"))
-    for flag, (new, nargs) in _IDENTIFY_REPLACED.items():
-        p.add_argument(flag, action=_Replaced, nargs=nargs, const=new, help=argparse.SUPPRESS)
     for flag in ("--model", "--generated"):   # before the sub-command: as after it
         p.add_argument(flag, dest=f"identify_{flag[2:]}", help=argparse.SUPPRESS)
     p.set_defaults(func=cmd_identify_without_subcommand)
@@ -391,8 +375,8 @@ def _per_actuator(values, n, flag):
 
 
 def cmd_maps(args):
-    from .analysis.results import dumps
     from .figures.maps import maps_figures
+    from .infra.results import dumps
     m = _model(args)
     tau_max = None if args.tau_max is None else _per_actuator(args.tau_max, m.n_legs, "--tau-max")
     summary, paths = maps_figures(m, args.out, args.resolution, tau_max=tau_max,
@@ -476,7 +460,7 @@ def cmd_study_report(args):
 
 
 def cmd_study_bench(args):
-    from .analysis.results import dumps
+    from .infra.results import dumps
     from .studies.bench import format_study_bench, study_bench
     res = study_bench(quick=args.quick, progress=None if args.json else _progress)
     print(dumps(res) if args.json else format_study_bench(res))
@@ -555,7 +539,7 @@ def _study_parser(sub):
 
 
 def cmd_plan(args):
-    from .analysis.results import dumps, provenance, write_atomic
+    from .infra.results import dumps, provenance, write_atomic
     from .planning.report import closed_loop, csv_text, format_report, model_moves, plan_paths
     if args.tau_rate is not None and not args.smooth:
         raise ArgumentError("--tau-rate limits the smoothed plan's torque rate: add --smooth")
@@ -599,8 +583,8 @@ def cmd_plan(args):
 
 
 def cmd_bench(args):
-    from .analysis.results import dumps
     from .bench import format_bench, run_bench
+    from .infra.results import dumps
     res = run_bench(_model(args), quick=args.quick, progress=None if args.json else _progress)
     print(dumps(res) if args.json else format_bench(res))
     return 0
@@ -821,7 +805,7 @@ _OUT_FOLDERS = {"demo", "figures", "splits", "maps", "plan", "study"}
 def _check_outputs(args):
     """Refuse an output that cannot be written before any work: a --save or file --out that is
     a folder or lies under a file, a folder --out that is a file (OutputError)."""
-    from .analysis.results import output_folder, output_path
+    from .infra.results import output_folder, output_path
     if getattr(args, "save", None):
         output_path(args.save)
     out = getattr(args, "out", None)
@@ -830,13 +814,9 @@ def _check_outputs(args):
 
 
 def main(argv=None):
-    from .analysis import results
+    from .infra import results
     ap = build_parser()
-    try:
-        args = ap.parse_args(argv)
-    except Pm2dofError as exc:  # an option refused while parsing (a replaced one)
-        print(f"pm2dof: error: {exc}", file=sys.stderr)
-        return 2
+    args = ap.parse_args(argv)
     results.COMMAND_LINE = ["pm2dof", *(sys.argv[1:] if argv is None else argv)]
     global _progress
     _progress = Progress(quiet=getattr(args, "quiet", False))

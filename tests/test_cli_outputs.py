@@ -5,8 +5,8 @@ import pytest
 
 import pm2dof
 from pm2dof import cli
-from pm2dof.analysis.results import output_folder, output_path, write_atomic
 from pm2dof.analysis.splits import preload_settings
+from pm2dof.infra.results import output_folder, output_path, write_atomic
 
 
 @pytest.fixture

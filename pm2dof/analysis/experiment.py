@@ -4,9 +4,9 @@ import numpy as np
 from ..control.controllers import APDController, CTCController, NAController
 from ..control.simulate import simulate, theta_truth
 from ..control.trajectory import line_moves, model_move
-from .progress import bar
+from ..infra.progress import bar
 
-__all__ = ["PAPER_TABLE3", "table3", "table3_json", "format_table3",
+__all__ = ["PAPER_TABLE3", "table3", "table3_json", "seeded_table3", "format_table3",
            "run_table3", "repeated_runs", "sensitivity", "format_sensitivity"]
 
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
@@ -39,10 +39,23 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, include
            **controller_options):
     """Run APD, NA and NA with Gamma = 0 on each move. Returns {speed: {name: SimResult}}.
 
-    ``controller_options`` (e.g. ``velocity_filter_hz``) go to all the controllers alike;
-    ``truth`` replaces the plant truth (see :func:`pm2dof.plant_truth`); ``include`` adds
-    model-based controllers of :data:`EXTRA_CONTROLLERS` ("ctc": computed torque, "lqr":
-    time-varying LQR along each move), each with the nominal model (Tables 1-2).
+    Parameters
+    ----------
+    model : Model
+        The robot; its line moves are the moves, its ``[plant]`` the simulated plant.
+    speeds : list of str, optional
+        The moves to run (default: every line move of the model, the paper's "low", "high").
+    quantise : bool
+        Encoder quantisation in the rollouts (``pm2dof table3 --exact-encoders``: False).
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        Stage lines; a ``Progress`` also draws a bar over the rollouts.
+    truth : dict, optional
+        Replaces the plant truth (see :func:`pm2dof.plant_truth`).
+    include : sequence of str
+        Model-based controllers of :data:`EXTRA_CONTROLLERS` to add ("ctc": computed torque,
+        "lqr": time-varying LQR along each move), each with the nominal model (Tables 1-2).
+    **controller_options
+        Go to all the controllers alike (e.g. ``velocity_filter_hz``).
     """
     speeds = list(line_moves(model)) if speeds is None else speeds
     unknown = sorted(set(include) - set(EXTRA_CONTROLLERS))
@@ -90,6 +103,31 @@ def table3_json(results):
     return out
 
 
+def seeded_table3(model, theta):
+    """Table 3 with the controllers' model = Tables 1-2 and = ``theta`` (identified).
+
+    ``pm2dof identify fit --seed-na`` passes it to
+    :func:`pm2dof.identification.report.run_fit` (identification does not import the paper's
+    experiment).
+
+    Parameters
+    ----------
+    model : Model
+        The robot; its ``[plant]`` is the simulated plant.
+    theta : array_like, shape (p,)
+        The controllers' model of theta, e.g. an identified ``theta0``.
+
+    Returns
+    -------
+    dict
+        {speed: {"nominal": table3 numbers, "identified": table3 numbers}} (RMSE in m,
+        RPE in percent; see :func:`table3_json`).
+    """
+    nominal = table3_json(table3(model))
+    identified = table3_json(table3(model, theta0=np.asarray(theta, dtype=float)))
+    return {s: {"nominal": nominal[s], "identified": identified[s]} for s in nominal}
+
+
 def format_table3(numbers):
     """A text table like the paper's Table 3, simulated beside measured."""
     extra = [x for x in EXTRA_CONTROLLERS if all(f"{x}_rmse" in r for r in numbers.values())]
@@ -129,7 +167,7 @@ def run_table3(model, *, as_json=False, exact_encoders=False, save=None, echo=pr
     ``save`` is a path for the numbers and their provenance (JSON); ``include`` adds
     controllers (:data:`EXTRA_CONTROLLERS`). Returns the numbers.
     """
-    from .results import dumps, provenance, write_json
+    from ..infra.results import dumps, provenance, write_json
     numbers = table3_json(table3(model, quantise=not exact_encoders,
                                  progress=None if as_json else progress, include=include))
     echo(dumps(numbers) if as_json else format_table3(numbers))

@@ -27,7 +27,7 @@ import numpy as np
 from ..core.errors import ArgumentError, WorkspaceError
 from ..core.task import require_rr_point
 from ..control.simulate import pose_measures
-from .progress import bar
+from ..infra.progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
            "maps_summary", "format_maps_summary", "FIELDS"]
@@ -99,8 +99,22 @@ def capability(model, q, theta=None, tau_max=None):
     """Force and acceleration capability at the pose ``q`` (2n,), also inside the singularity
     thresholds (the measure of a map, not a controller's pose).
 
-    Returns a dict of force_min_norm, force_min_max (N), accel_min_norm, accel_min_max
-    (m/s^2, at rest, with Me of ``theta``, default Tables 1-2) and cond_StS.
+    Parameters
+    ----------
+    model : Model
+        The robot.
+    q : array_like (2n,)
+        The pose: every joint angle, rad.
+    theta : array_like (5n,), optional
+        Parameters for Me (default Tables 1-2).
+    tau_max : array_like (n,), optional
+        Actuator limits, N*m (default ``[limits].tau_max``).
+
+    Returns
+    -------
+    dict
+        force_min_norm, force_min_max (N), accel_min_norm, accel_min_max (m/s^2, at rest,
+        with Me of ``theta``) and cond_StS.
     """
     theta = model.theta_nominal if theta is None else theta
     w = np.asarray(model.spec.limits["tau_max"] if tau_max is None else tau_max, dtype=float)
@@ -135,12 +149,16 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
 
     Parameters
     ----------
+    model : Model
+        The robot.
     resolution : int
         Grid points per axis over the box where every leg can reach.
     theta : array_like (5n,), optional
         Parameters for Me (default Tables 1-2, the controllers' nominal model).
     tau_max : array_like (n,), optional
         Actuator limits, N*m (default ``[limits].tau_max``).
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        Stage lines; a ``Progress`` also draws a bar over the poses.
 
     Returns
     -------

@@ -24,6 +24,15 @@ def _grid(m, n=41):
 def model_report(m, seed=0, samples=200):
     """A text report: parameters, Me at the path's midpoint, cond(S^T S) and rank of Y.
 
+    Parameters
+    ----------
+    m : Model
+        The robot.
+    seed : int
+        Seed of the random states over which Y is stacked.
+    samples : int
+        How many grid points (at most) Y is stacked at, one random state each.
+
     Returns
     -------
     str

@@ -32,9 +32,21 @@ def plant_truth(model, **overrides):
 
     The payload m at the tip of leg j's distal link (j = ``payload_leg``, counted from 1 as in
     the paper) adds m la^2, m la lb, m lb^2 to alpha_j, beta_j, gamma_j (its kinetic energy
+<<<<<<< HEAD
     1/2 m |tip velocity|^2 in the leg's angles). ``overrides`` replace fields of ``[plant]``
     (e.g. ``payload_mass=0``); a ``payload_leg`` outside 1..n raises ValueError. The booking
     is that of an RR leg's tip: other mechanisms are refused (UnsupportedMechanismError).
+=======
+    1/2 m |tip velocity|^2 in the leg's angles).
+
+    Parameters
+    ----------
+    model : Model
+        The robot; its model file's ``[plant]`` is the truth.
+    **overrides
+        Replace fields of ``[plant]`` (e.g. ``payload_mass=0``); a ``payload_leg`` outside
+        1..n raises ValueError.
+>>>>>>> main
     """
     require_rr_point(model, "plant_truth's payload booking (m la^2, m la lb, m lb^2 on an RR "
                             "leg's alpha, beta, gamma)")
@@ -91,6 +103,13 @@ def theta_truth(model, truth=None):
     The paper's model (eq. 2) has no coordinate for the Stribeck excess; it is left out.
     Smooth-sign or Stribeck shapes of the controller's model differ from the plant's, so
     only the coefficients are compared.
+
+    Parameters
+    ----------
+    model : Model
+        The robot.
+    truth : dict, optional
+        A plant truth (:func:`plant_truth`'s dict); default the model file's ``[plant]``.
     """
     t = plant_truth(model) if truth is None else truth
     return np.array([t[base][i] for base, i in _param_index(model.param_names)])
@@ -123,6 +142,7 @@ def rmse(xd, xe):
 
 @dataclass(frozen=True)
 class SimResult:
+<<<<<<< HEAD
     """One rollout. Arrays have one row per control sample k (t_k = k T).
 
     t (N,) s; xd, xd_dot (N, m) desired; xe, xed (N, m) true pose and velocity at t_k (m =
@@ -131,12 +151,46 @@ class SimResult:
     2 saturated, 3 non-finite, 4 preload infeasible, 5 inconsistent encoders); theta_hat
     (N, p) after the update at t_k. ``n_move`` is the number of samples of the desired
     trajectory proper (eq. 41's N) in the arrays; later rows are settling. No field is ever
+=======
+    """One rollout. Arrays have one row per control sample k (t_k = k T). No field is ever
+>>>>>>> main
     NaN.
 
-    ``outcome`` says how the run ended (:data:`pm2dof.control.outcome.OUTCOMES`):
-    "completed", or "left_workspace" / "diverged" when the true pose left the workspace or
-    the state stopped being finite during sample ``failed_sample`` (over [t_k, t_k + T]), at
-    ``failed_time`` s (``outcome_reason`` says where and why; both None for a completed run).
+    Attributes
+    ----------
+    controller : str
+        The controller's law ("na", "apd", ...).
+    t : ndarray (N,)
+        The sample times t_k, s.
+    xd, xd_dot : ndarray (N, 2)
+        Desired position, m, and velocity, m/s.
+    xe, xed : ndarray (N, 2)
+        True position, m, and velocity, m/s, at t_k.
+    tau_a : ndarray (N, n)
+        Torques applied over [t_k, t_k+T], N*m.
+    status : ndarray (N,) int
+        0 ok, 1 singular, 2 saturated, 3 non-finite, 4 preload infeasible, 5 inconsistent
+        encoders.
+    theta_hat : ndarray (N, 5n)
+        The estimate after the update at t_k.
+    n_move : int
+        The number of samples of the desired trajectory proper (eq. 41's N) in the arrays;
+        later rows are settling.
+    final_state : ndarray
+        The closed loop's state after the last sample (``cl_state`` layout).
+    outcome : str
+        How the run ended (:data:`pm2dof.control.outcome.OUTCOMES`): "completed", or
+        "left_workspace" / "diverged" when the true pose left the workspace or the state
+        stopped being finite during sample ``failed_sample`` (over [t_k, t_k + T]).
+    failed_sample : int or None
+        That sample; None for a completed run.
+    failed_time : float or None
+        When it happened, s; None for a completed run.
+    outcome_reason : str
+        Where and why.
+
+    Notes
+    -----
     A run that did not complete ends there: its arrays hold samples 0..failed_sample (each
     one finite and in the workspace), ``n_move`` is clipped to that length, ``final_state``
     (the closed loop's state after the last sample, ``cl_state`` layout) is None, and
@@ -184,7 +238,13 @@ class SimResult:
                 f"{self.outcome_reason}")
 
     def count(self, status):
-        """Samples of the run with the given :class:`~pm2dof.Status` (or its label)."""
+        """Samples of the run with the given status.
+
+        Parameters
+        ----------
+        status : pm2dof.Status, int or str
+            A :class:`~pm2dof.Status`, its code or its label ("singular", ...).
+        """
         code = Status[status.upper()] if isinstance(status, str) else Status(status)
         return int(np.sum(self.status == code))
 
@@ -287,9 +347,21 @@ def check_trajectory(model, trajectory):
     otherwise) and keep both singularity measures at or above their thresholds,
     ``limits.singularity_threshold`` (type I, legs) and
     ``limits.parallel_singularity_threshold`` (type II, actuation) (SingularityError naming
+<<<<<<< HEAD
     the kind), and every sample of xd, xd_dot and xd_ddot must be finite (ArgumentError) with
     the model's task dimension m columns (ArgumentError naming m). The error names the sample,
     its time and position.
+=======
+    the kind), and every sample of xd, xd_dot and xd_ddot must be finite (ArgumentError). The
+    error names the sample, its time and position.
+
+    Parameters
+    ----------
+    model : Model
+        The robot.
+    trajectory : Trajectory
+        The desired trajectory (``t``, ``xd``, ``xd_dot``, ``xd_ddot``).
+>>>>>>> main
     """
     m = model.dof
     for name in ("xd", "xd_dot", "xd_ddot"):

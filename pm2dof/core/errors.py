@@ -57,6 +57,16 @@ class InputFileError(Pm2dofError, ValueError):
     """
 
     def __init__(self, message, problems=None, path=None):
+        """
+        Parameters
+        ----------
+        message : str
+            The whole message: the file and every problem, one per line.
+        problems : iterable of Problem, optional
+            The problems (default: one, the message).
+        path : str or Path, optional
+            The file.
+        """
         super().__init__(message)
         self.path = None if path is None else str(path)
         self.problems = (tuple(problems) if problems is not None

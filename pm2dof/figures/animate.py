@@ -3,7 +3,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.results import output_path
+from ..infra.results import output_path
 from ..core.errors import ArgumentError, OutputError
 from ..control.trajectory import model_move
 from ..control.controllers import APDController, NAController

@@ -2,7 +2,7 @@
 from pathlib import Path
 
 from ..analysis.experiment import format_sensitivity, format_table3, sensitivity, table3_json
-from ..analysis.results import provenance, write_json
+from ..infra.results import provenance, write_json
 from .experiment import experiment_figures
 
 __all__ = ["run_demo"]

@@ -57,8 +57,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..analysis.progress import bar
 from ..core.errors import Pm2dofError
+from ..infra.progress import bar
 from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED
 from .model_ref import mismatch, model_entries
@@ -353,8 +353,8 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         concave here).
     max_iter : int
         IPOPT's iteration limit (its other options: :data:`IPOPT_OPTIONS`).
-    progress : callable(str) or pm2dof.analysis.progress.Progress, optional
-        Stage lines; a :class:`~pm2dof.analysis.progress.Progress` also draws a bar of IPOPT's
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        Stage lines; a :class:`~pm2dof.infra.progress.Progress` also draws a bar of IPOPT's
         iterations with the objective's log det as its postfix.
 
     Returns
@@ -532,7 +532,7 @@ def write_excitation(path, exc, model):
     path relative to ``path``'s folder, and the coefficients; ``[design]`` its ``info``, a dict
     value such as ``ipopt`` or ``provenance`` as the sub-table ``[design.<key>]``),
     atomically. The text is a function of ``exc``, the model and the file's folder only."""
-    from ..analysis.results import write_atomic
+    from ..infra.results import write_atomic
     entries = model_entries(model, Path(path).parent)
     lines = ["# pm2dof excitation: periodic finite Fourier series in task space (Swevers et al. "
              "1997)",

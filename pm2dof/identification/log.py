@@ -33,8 +33,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.results import write_atomic
 from ..core.errors import ClosureError, Pm2dofError, WorkspaceError
+from ..infra.results import write_atomic
 from .model_ref import mismatch, rebase
 
 __all__ = ["LogError", "IdentLog", "read_log", "write_log", "log_poses", "log_folder",

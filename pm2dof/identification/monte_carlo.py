@@ -20,15 +20,15 @@ import math
 
 import numpy as np
 
-from ..analysis.progress import bar
 from ..control.simulate import plant_truth, theta_truth
 from ..core.errors import ArgumentError
+from ..infra.progress import bar
 from .base import base_parameters, inertial_mask, region_center
 from .excitation import excite
 from .fit import identify_log
 
 __all__ = ["random_truth", "plant_task_force", "torque_error", "monte_carlo",
-           "format_monte_carlo", "substep_sensitivity", "seeded_table3", "format_seeded_table3",
+           "format_monte_carlo", "substep_sensitivity", "format_seeded_table3",
            "run_monte_carlo", "TARGETS"]
 
 #: the issue's targets: inertial vector, each large inertial parameter, friction, torque, coverage
@@ -118,8 +118,8 @@ def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", iden
         only the encoder noise differs).
     noise_counts : float
         Encoder noise added to the logged angles, counts rms (0: quantisation only).
-    progress : callable(str) or pm2dof.analysis.progress.Progress, optional
-        A :class:`~pm2dof.analysis.progress.Progress` draws a bar over the seeds.
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        A :class:`~pm2dof.infra.progress.Progress` draws a bar over the seeds.
 
     Returns
     -------
@@ -198,21 +198,6 @@ def substep_sensitivity(model, other, traj, seeds=10, *, noise_counts=0.5, ident
     return {"names": base.labels(), "change": np.array(changes), "max_large": np.array(worst)}
 
 
-def seeded_table3(model, theta):
-    """Table 3 with the controllers' model = Tables 1-2 and = ``theta`` (identified).
-
-    Returns
-    -------
-    dict
-        {speed: {"nominal": table3 numbers, "identified": table3 numbers}} (RMSE in m,
-        RPE in percent; see :func:`pm2dof.analysis.experiment.table3_json`).
-    """
-    from ..analysis.experiment import table3, table3_json
-    nominal = table3_json(table3(model))
-    identified = table3_json(table3(model, theta0=np.asarray(theta, dtype=float)))
-    return {s: {"nominal": nominal[s], "identified": identified[s]} for s in nominal}
-
-
 def format_seeded_table3(tab):
     lines = ["Table 3 (RMSE, eq. 41, m) with the controllers' model from Tables 1-2 and from the "
              "identified theta:",
@@ -231,7 +216,7 @@ def run_monte_carlo(seeds, *, model=None, generated=None, excitation_file=None,
     """``pm2dof identify monte-carlo N [--excitation FILE]``: the targets table. The model is
     the one the excitation file records unless ``model`` is given (then it must be that one);
     without a file the default multi-sine of ``duration`` s runs on ``model``."""
-    from ..analysis.results import dumps
+    from ..infra.results import dumps
     from .excitation import DEFAULT_DURATION, excitation_trajectory, model_of_excitation
     if seeds < 1:
         raise ArgumentError(f"monte-carlo needs N >= 1 seeds, got {seeds}")

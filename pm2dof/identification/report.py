@@ -101,7 +101,7 @@ def format_identification(model, log, res):
 
 def run_fit(log=None, *, model=None, generated=None, excitation_file=None, duration=None,
             quantise=True, controller=None, save=None, as_json=False, cutoff_hz=None,
-            min_joint_speed=None, time_tolerance=1e-3, seed=False, echo=print, progress=None):
+            min_joint_speed=None, time_tolerance=1e-3, seed=None, echo=print, progress=None):
     """``pm2dof identify fit [LOG]``: identify, print (text or JSON), optionally save.
 
     Parameters
@@ -117,8 +117,10 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
         ``--model`` (a name, a model file or a Model), ``--generated``.
     save : path, optional
         Write ``{"param_names", "theta0", ...}`` and the provenance as JSON.
-    seed : bool
-        Also Table 3 with APD and NA using the identified theta.
+    seed : callable(model, theta) -> dict, optional
+        Also Table 3 with APD and NA using the identified theta: the CLI's ``--seed-na``
+        passes :func:`pm2dof.analysis.experiment.seeded_table3` (identification does not
+        import the paper's experiment).
     cutoff_hz, min_joint_speed, time_tolerance :
         See :func:`~pm2dof.identification.fit.identify_log` and ``read_log``.
 
@@ -127,7 +129,7 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
     dict
         :func:`~pm2dof.identification.fit.identify_log`'s result.
     """
-    from ..analysis.results import dumps, provenance, write_json
+    from ..infra.results import dumps, provenance, write_json
     from .excitation import DEFAULT_DURATION, model_of_excitation, simulated_log
     from .fit import MIN_JOINT_SPEED
     from .model_ref import model_for
@@ -159,10 +161,10 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
                        else min_joint_speed)
     s = summary(model, log, res)
     if seed:
-        from .monte_carlo import format_seeded_table3, seeded_table3
+        from .monte_carlo import format_seeded_table3
         if progress:
             progress("Table 3 with Tables 1-2 and with the identified theta")
-        s["table3"] = seeded_table3(model, res["theta0"])
+        s["table3"] = seed(model, res["theta0"])
     echo(dumps(s) if as_json else format_identification(model, log, res)
          + ("\n\n" + format_seeded_table3(s["table3"]) if seed else ""))
     if save:

@@ -156,8 +156,14 @@ class LQRController(_Controller):
 
     def closed_loop_inputs(self, trajectory):
         """[xd, xd_dot, xd_ddot, K_k, tau_ff,k] per sample (``lqr_cl_input``) along
-        ``trajectory``: the planned one, or it followed by rest at its end point (the last
-        gain then holds the end). Another trajectory raises ArgumentError."""
+        ``trajectory``.
+
+        Parameters
+        ----------
+        trajectory : Trajectory
+            The planned one, or it followed by rest at its end point (the last gain then
+            holds the end). Another trajectory raises ArgumentError.
+        """
         plan = self.trajectory
         N = len(plan.t)
         t = trajectory

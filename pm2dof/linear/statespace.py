@@ -34,10 +34,8 @@ def statespace(model, xe, xed, tau_a, theta=None, *, discrete=False, period=None
     """The linearisation of the robot at [xe, xed], tau_a as a python-control ``StateSpace``.
 
     States [xe, xed] (:func:`state_names`: ``x, y, xd, yd``, m and m/s, for a point;
-    ``x, y, phi, xd, yd, phid`` for a platform), inputs ``tau1..taun`` (N*m), outputs the states (C = I,
-    D = 0). Continuous by default; ``discrete=True``: the sampled step over ``period`` s
-    (default ``[sensing] sample_period``), a discrete-time system with ``dt = period``.
-    (A, B) are :meth:`pm2dof.Model.linearize`'s.
+    ``x, y, phi, xd, yd, phid`` for a platform), inputs ``tau1..taun`` (N*m), outputs the
+    states (C = I, D = 0). (A, B) are :meth:`pm2dof.Model.linearize`'s.
 
     Parameters
     ----------
@@ -49,6 +47,11 @@ def statespace(model, xe, xed, tau_a, theta=None, *, discrete=False, period=None
         :meth:`Model.torque_splits`).
     theta : array_like (p,), optional
         Default Tables 1-2.
+    discrete : bool
+        False (default): continuous. True: the sampled step over ``period``, a discrete-time
+        system with ``dt = period``.
+    period : float, optional
+        The sample period, s (default ``[sensing] sample_period``).
 
     Returns
     -------

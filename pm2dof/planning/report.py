@@ -8,10 +8,10 @@ split's torques as CSV; :func:`format_report` renders all of it.
 """
 import numpy as np
 
-from ..analysis.results import provenance
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from ..core.errors import PlanError
+from ..infra.results import provenance
 from .kinematic import plan_kinematic
 from .stages import limits
 from .topp import plan_time_optimal
@@ -130,7 +130,7 @@ def closed_loop(model, path, tau_max=None, split="min_max", margins=(1.0, 0.9), 
 
 
 def plan_provenance(model, tau_max, margin, splits, theta=None, base=None):
-    """Where a plan came from: ``base`` or :func:`pm2dof.analysis.results.provenance` (the
+    """Where a plan came from: ``base`` or :func:`pm2dof.infra.results.provenance` (the
     pm2dof version, the model file, the generated folder, hashes, git commit, command line)
     with the planning inputs: ``tau_max`` (n,) N m (the actuators' limits, before the margin),
     ``margin``, the ``splits`` and ``theta`` ("nominal": the model's Tables 1-2, else the 5n

@@ -16,8 +16,8 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from ..analysis.results import provenance, write_atomic, write_json
 from ..core.errors import Pm2dofError
+from ..infra.results import provenance, write_atomic, write_json
 from .spec import StudyFileError
 
 __all__ = ["StudyOutError", "prepare_out", "write_chunk", "finish_out",

@@ -14,7 +14,7 @@ from pm2dof.identification.design import (IPOPT_OPTIONS, ExcitationError,
                                                load_excitation, objective_logdet, random_start,
                                                regressor_condition, sample_function,
                                                trajectory_of, write_excitation)
-from pm2dof.analysis.progress import Progress
+from pm2dof.infra.progress import Progress
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.excitation import multisine
 from pm2dof.identification.log import read_log

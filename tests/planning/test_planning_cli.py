@@ -56,7 +56,7 @@ def test_plan_a_path_file_writes_csv_and_figures(tmp_path, capsys):
 def test_plan_csv_says_where_it_came_from(tmp_path, capsys):
     """Provenance in every CSV (issue 18): pm2dof version, model file and its hash, generated
     folder, git commit, tau_max (the actuators' limits), margin, split, theta."""
-    from pm2dof.analysis.results import provenance
+    from pm2dof.infra.results import provenance
     out = tmp_path / "out"
     assert main(["plan", "--move", "high", "--tau-max", "6", "--margin", "0.9", "--grid", "200",
                  "--split", "min_norm", "--out", str(out)]) == 0

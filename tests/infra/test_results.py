@@ -1,5 +1,5 @@
 # Results the CLI writes: atomic writes (temp file + rename) and provenance in JSON and PNG.
-"""Tests of :mod:`pm2dof.results` and of the files the CLI writes.
+"""Tests of :mod:`pm2dof.infra.results` and of the files the CLI writes.
 
 * ``write_atomic``: the target holds either its old content or the complete new content, never
   a partial file, and no temporary file is left behind, whether the failure comes from the
@@ -25,9 +25,9 @@ import pytest
 import pm2dof
 from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof import cli
-from pm2dof.analysis import results
+from pm2dof.infra import results
 from pm2dof.core.model_file import read_model_file
-from pm2dof.analysis.results import provenance, save_figure, write_atomic, write_json
+from pm2dof.infra.results import provenance, save_figure, write_atomic, write_json
 
 REPO = Path(__file__).resolve().parents[2]
 PAPER = SHIPPED_MODELS / "shang2010.toml"

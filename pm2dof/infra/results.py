@@ -35,8 +35,8 @@ COMMAND_LINE = None  # set by pm2dof.cli.main to the command it runs; else sys.a
 def provenance(model):
     """Where a result came from: the pm2dof version, the model file and the generated code
     (paths, hashes, whether shipped with pm2dof), git commit, versions, command line."""
-    from ..core.version import __version__
     from ..core.paths import is_shipped
+    from ..core.version import __version__
     return {
         "model": model.name,
         "model_file": model.spec.path,
