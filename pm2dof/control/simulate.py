@@ -32,11 +32,6 @@ def plant_truth(model, **overrides):
 
     The payload m at the tip of leg j's distal link (j = ``payload_leg``, counted from 1 as in
     the paper) adds m la^2, m la lb, m lb^2 to alpha_j, beta_j, gamma_j (its kinetic energy
-<<<<<<< HEAD
-    1/2 m |tip velocity|^2 in the leg's angles). ``overrides`` replace fields of ``[plant]``
-    (e.g. ``payload_mass=0``); a ``payload_leg`` outside 1..n raises ValueError. The booking
-    is that of an RR leg's tip: other mechanisms are refused (UnsupportedMechanismError).
-=======
     1/2 m |tip velocity|^2 in the leg's angles).
 
     Parameters
@@ -45,8 +40,8 @@ def plant_truth(model, **overrides):
         The robot; its model file's ``[plant]`` is the truth.
     **overrides
         Replace fields of ``[plant]`` (e.g. ``payload_mass=0``); a ``payload_leg`` outside
-        1..n raises ValueError.
->>>>>>> main
+        1..n raises ValueError. The booking is that of an RR leg's tip: other
+        mechanisms are refused (UnsupportedMechanismError).
     """
     require_rr_point(model, "plant_truth's payload booking (m la^2, m la lb, m lb^2 on an RR "
                             "leg's alpha, beta, gamma)")
@@ -142,18 +137,7 @@ def rmse(xd, xe):
 
 @dataclass(frozen=True)
 class SimResult:
-<<<<<<< HEAD
-    """One rollout. Arrays have one row per control sample k (t_k = k T).
-
-    t (N,) s; xd, xd_dot (N, m) desired; xe, xed (N, m) true pose and velocity at t_k (m =
-    ``model.dof``, columns ``model.task_names``: x, y in m, m/s; a platform's phi in rad,
-    rad/s); tau_a (N, n) N*m applied over [t_k, t_k+T]; status (N,) int (0 ok, 1 singular,
-    2 saturated, 3 non-finite, 4 preload infeasible, 5 inconsistent encoders); theta_hat
-    (N, p) after the update at t_k. ``n_move`` is the number of samples of the desired
-    trajectory proper (eq. 41's N) in the arrays; later rows are settling. No field is ever
-=======
     """One rollout. Arrays have one row per control sample k (t_k = k T). No field is ever
->>>>>>> main
     NaN.
 
     Attributes
@@ -162,16 +146,17 @@ class SimResult:
         The controller's law ("na", "apd", ...).
     t : ndarray (N,)
         The sample times t_k, s.
-    xd, xd_dot : ndarray (N, 2)
-        Desired position, m, and velocity, m/s.
-    xe, xed : ndarray (N, 2)
-        True position, m, and velocity, m/s, at t_k.
+    xd, xd_dot : ndarray (N, m)
+        Desired pose and velocity (m = ``model.dof``, columns ``model.task_names``: x, y in
+        m, m/s; a platform's phi in rad, rad/s).
+    xe, xed : ndarray (N, m)
+        True pose and velocity at t_k.
     tau_a : ndarray (N, n)
         Torques applied over [t_k, t_k+T], N*m.
     status : ndarray (N,) int
         0 ok, 1 singular, 2 saturated, 3 non-finite, 4 preload infeasible, 5 inconsistent
         encoders.
-    theta_hat : ndarray (N, 5n)
+    theta_hat : ndarray (N, p)
         The estimate after the update at t_k.
     n_move : int
         The number of samples of the desired trajectory proper (eq. 41's N) in the arrays;
@@ -347,13 +332,9 @@ def check_trajectory(model, trajectory):
     otherwise) and keep both singularity measures at or above their thresholds,
     ``limits.singularity_threshold`` (type I, legs) and
     ``limits.parallel_singularity_threshold`` (type II, actuation) (SingularityError naming
-<<<<<<< HEAD
     the kind), and every sample of xd, xd_dot and xd_ddot must be finite (ArgumentError) with
     the model's task dimension m columns (ArgumentError naming m). The error names the sample,
     its time and position.
-=======
-    the kind), and every sample of xd, xd_dot and xd_ddot must be finite (ArgumentError). The
-    error names the sample, its time and position.
 
     Parameters
     ----------
@@ -361,7 +342,6 @@ def check_trajectory(model, trajectory):
         The robot.
     trajectory : Trajectory
         The desired trajectory (``t``, ``xd``, ``xd_dot``, ``xd_ddot``).
->>>>>>> main
     """
     m = model.dof
     for name in ("xd", "xd_dot", "xd_ddot"):

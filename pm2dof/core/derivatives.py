@@ -110,9 +110,9 @@ class DerivativeMethods:
 
         Parameters
         ----------
-        xe : array_like (2,)
+        xe : array_like (m,)
             The pose, m.
-        xed : array_like (2,)
+        xed : array_like (m,)
             The velocity, m/s.
         tau_a : array_like (n,)
             The actuator torques, N*m.
@@ -161,7 +161,7 @@ class DerivativeMethods:
 
         Parameters
         ----------
-        x : array_like (4,)
+        x : array_like (2m,)
             The state [xe, xed], m, m/s.
         tau_a : array_like (n,)
             The held actuator torques, N*m.
@@ -169,7 +169,7 @@ class DerivativeMethods:
             The dynamic parameters (:attr:`param_names` order).
         period : float, optional
             The sample period, s (default ``[sensing] sample_period``).
-        out : ndarray (4,), optional
+        out : ndarray (2m,), optional
             Written into and returned (no allocation).
 
         Returns
@@ -188,17 +188,12 @@ class DerivativeMethods:
         x, tau_a, theta, period :
             As :meth:`sampled_step`.
         out : tuple of 2 ndarrays, optional
-            Arrays of shapes (4, 4), (4, n) to write into (no allocation).
+            Arrays of shapes (2m, 2m), (2m, n) to write into (no allocation).
 
         Returns
         -------
         SampledStepJacobians
-<<<<<<< HEAD
             ``d_x`` (2m, 2m), ``d_tau_a`` (2m, n) (the discrete-time A and B at x, tau_a).
-            ``out=``: a tuple of two such arrays.
-=======
-            ``d_x`` (4, 4), ``d_tau_a`` (4, n) (the discrete-time A and B at x, tau_a).
->>>>>>> main
         """
         k = 2 * self._m
         return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians,
@@ -206,28 +201,21 @@ class DerivativeMethods:
                                     (x, tau_a, theta, self._period(period)))
 
     def inverse_dynamics(self, xe, xed, xedd, theta, out=None):
-<<<<<<< HEAD
         """The task force u = Me xedd + Ce xed + S^T f_a (m,), N (N m for phi) (eqs. 10-12,
         eq. 2 friction) that gives the acceleration ``xedd`` (m,) m/s^2 at the pose ``xe`` and
         velocity ``xed``. Actuator torques: any tau_a with S^T tau_a = u
-        (:meth:`torque_splits`)."""
-        return self._eval("inverse_dynamics", (self._m,), out, xe, xed, xedd, theta)
-=======
-        """The task force u = Me xedd + Ce xed + S^T f_a (2,), N (eqs. 10-12, eq. 2 friction)
-        that gives the acceleration ``xedd`` (2,) m/s^2 at the pose ``xe`` and velocity
-        ``xed``. Actuator torques: any tau_a with S^T tau_a = u (:meth:`torque_splits`).
+        (:meth:`torque_splits`).
 
         Parameters
         ----------
         xe, xed, theta :
             The state and the parameters, as :meth:`forward_dynamics_jacobians`.
-        xedd : array_like (2,)
+        xedd : array_like (m,)
             The acceleration, m/s^2.
-        out : ndarray (2,), optional
+        out : ndarray (m,), optional
             Written into and returned (no allocation).
         """
-        return self._eval("inverse_dynamics", (2,), out, xe, xed, xedd, theta)
->>>>>>> main
+        return self._eval("inverse_dynamics", (self._m,), out, xe, xed, xedd, theta)
 
     def inverse_dynamics_jacobians(self, xe, xed, xedd, theta, out=None):
         """Jacobians of :meth:`inverse_dynamics` w.r.t. the state (reverse-mode AD; friction's
@@ -238,7 +226,7 @@ class DerivativeMethods:
         xe, xed, xedd, theta :
             As :meth:`inverse_dynamics`.
         out : tuple of 2 ndarrays, optional
-            Arrays of shapes (2, 2), (2, 2) to write into (no allocation).
+            Arrays of shapes (m, m), (m, m) to write into (no allocation).
 
         Returns
         -------
@@ -256,12 +244,9 @@ class DerivativeMethods:
         A = [[0, I], [d xedd/d xe, d xedd/d xed]] (2m, 2m), B = [[0], [d xedd/d tau_a]] (2m, n)
         (:meth:`forward_dynamics_jacobians`). Discrete (``discrete=True``): dx_{k+1} = A dx_k
         + B dtau_k for one sample of ``period`` s (default ``[sensing] sample_period``) under
-<<<<<<< HEAD
         the zero-order hold (:meth:`sampled_step_jacobians`). State order [xe, xed] in
-        :attr:`task_names` order ([x, y, xd, yd], m, m/s, for a point), input order tau_1..tau_n (N*m); ``theta`` defaults to :attr:`theta_nominal`.
-=======
-        the zero-order hold (:meth:`sampled_step_jacobians`). State order [x, y, xd, yd] (m,
-        m/s), input order tau_1..tau_n (N*m).
+        :attr:`task_names` order ([x, y, xd, yd], m, m/s, for a point), input order
+        tau_1..tau_n (N*m).
 
         Parameters
         ----------
@@ -273,7 +258,6 @@ class DerivativeMethods:
             The sampled (zero-order hold) linearisation instead of the continuous one.
         period : float, optional
             The sample period of the discrete one, s (default ``[sensing] sample_period``).
->>>>>>> main
 
         Returns
         -------

@@ -530,9 +530,24 @@ class Model(DerivativeMethods):
         return self._eval("forward_dynamics", (self._m,), out, xe, xed, tau_a, theta)
 
     def Ge(self, q, theta, out=None):
-        """Gravity term Ge = W^T dV/dq (+ the platform's own) (m,), N (N m for phi), of eq. 10:
-        Me xedd + Ce xed + Ge + S^T f_a = S^T tau_a. Zero in a horizontal plane. Raises
-        StaleGeneratedCodeError if the generated code predates it (re-derive the model)."""
+        """Gravity term Ge (m,) of eq. 10, N (N m for phi): Me xedd + Ce xed + Ge + S^T f_a =
+        S^T tau_a, Ge = W^T dV/dq (+ the platform's own). Zero in a horizontal plane.
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa, qb] closing every loop (as :meth:`ik` returns them).
+        theta : array_like (p,)
+            Parameters, in :attr:`param_names` order.
+        out : ndarray (m,), optional
+            Written into and returned (no allocation).
+
+        Raises
+        ------
+        StaleGeneratedCodeError
+            The generated code predates the gravity term: re-derive the model (the message
+            names the command).
+        """
         require_generated(self, "Ge")
         return self._eval("Ge", (self._m,), out, q, theta)
 
@@ -540,24 +555,55 @@ class Model(DerivativeMethods):
     def kinetic_energy(self, xe, xed, theta=None):
         """Kinetic energy T = 1/2 xed^T Me(xe) xed of the whole mechanism, J.
 
-        ``xe`` (m,) the pose and ``xed`` (m,) its rate in :attr:`task_names` order (m, m/s;
-        phi in rad, rad/s), ``theta`` (p,) (default :attr:`theta_nominal`). Generated from the
-        same derivation as Me (``<name>_kinetic_energy``). Raises
-        :class:`~pm2dof.core.errors.StaleGeneratedCodeError` if the model's generated code
-        predates it (re-derive the model), WorkspaceError for a pose out of reach.
+        Generated from the same derivation as Me (``<name>_kinetic_energy``).
+
+        Parameters
+        ----------
+        xe : array_like (m,)
+            The pose in :attr:`task_names` order, m (phi in rad).
+        xed : array_like (m,)
+            Its rate, m/s (phi: rad/s).
+        theta : array_like (p,), optional
+            Parameters (default :attr:`theta_nominal`).
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        StaleGeneratedCodeError
+            The model's generated code predates the energies: re-derive the model (the
+            message names the command).
+        WorkspaceError
+            A pose some leg cannot reach.
         """
         return self._energy("kinetic_energy", xe, xed, theta)
 
     def potential_energy(self, xe, theta=None):
-        """Potential energy V(xe) of the links and the payload in the model's gravity, J
-        (zero in a horizontal plane, the model file's default; V = 0 at the base frame's
-        origin height).
+        """Potential energy V(xe) of the links and the payload in the model's gravity, J.
 
-        ``xe`` (m,) the pose (m; phi in rad), ``theta`` (p,) (default :attr:`theta_nominal`);
-        generated (``<name>_potential_energy``). T + V is conserved along the model's
-        forward dynamics with zero torque and zero friction. Raises
-        :class:`~pm2dof.core.errors.StaleGeneratedCodeError` if the model's generated code
-        predates it (re-derive the model).
+        Zero in a horizontal plane (the model file's default); V = 0 at the height of the
+        base frame's origin. Generated (``<name>_potential_energy``); T + V is conserved along
+        the model's forward dynamics with zero torque and zero friction.
+
+        Parameters
+        ----------
+        xe : array_like (m,)
+            The pose in :attr:`task_names` order, m (phi in rad).
+        theta : array_like (p,), optional
+            Parameters (default :attr:`theta_nominal`).
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        StaleGeneratedCodeError
+            The model's generated code predates the energies: re-derive the model.
+        WorkspaceError
+            A pose some leg cannot reach.
         """
         return self._energy("potential_energy", xe, theta)
 
