@@ -16,10 +16,18 @@ Any other column is refused (a misspelt ``x_dd`` would otherwise be silently dif
 """
 import numpy as np
 
+from ..control.controllers import APDController, NAController
+from ..control.simulate import simulate
 from ..control.trajectory import Trajectory, TrajectoryError
+from ..core.model import require_model
 from ..infra.tables import read_columns
+from .experiment import _extra_controller
 
-__all__ = ["read_trajectory", "ReferenceFileError", "TASK_COLUMNS", "PERIOD_TOLERANCE"]
+__all__ = ["read_trajectory", "ReferenceFileError", "TASK_COLUMNS", "PERIOD_TOLERANCE",
+           "simulate_reference", "reference_summary", "LAWS"]
+
+#: the controllers ``pm2dof simulate`` runs: the paper's two, computed torque, LQR
+LAWS = ("na", "apd", "ctc", "lqr")
 
 #: the task coordinates a reference may have: (x, y) for a point, (x, y, phi) for a platform
 TASK_COLUMNS = ("x", "y", "phi")
@@ -66,8 +74,8 @@ def _grid(path, t):
         k = int(bad[0])
         raise ReferenceFileError(
             f"{path}: row {k + 2}, column t: t must increase by one period every row (period "
-            f"(t_last - t_first) / (N - 1) = {T:.9g} s), but t[{k + 2}] - t[{k + 1}] = "
-            f"{steps[k]:.9g} s")
+            f"(t_last - t_first) / (N - 1) = {T:.9g} s), but it increases by {steps[k]:.9g} s "
+            f"from row {k + 1}")
     return float(T)
 
 
@@ -120,3 +128,69 @@ def read_trajectory(path):
         levels.append(np.stack([cols[f"{c}{suffix}"] for c in names], axis=1) if have
                       else _derivative(levels[-1], T))
     return Trajectory.from_samples(*levels, T)
+
+
+def simulate_reference(model, path, laws=("na", "apd"), *, split=None, settle_time=0.0,
+                       quantise=True):
+    """Each controller of ``laws`` along the reference file ``path``: {law: SimResult}.
+
+    Parameters
+    ----------
+    model : Model
+        The robot; the file's task coordinates must be its ``task_names`` and its time step
+        its ``[sensing] sample_period``.
+    path : str or pathlib.Path
+        The reference (:func:`read_trajectory`).
+    laws : sequence of str
+        Of :data:`LAWS`: "na", "apd" (gains of the model file), "ctc", "lqr" (the LQR is
+        planned along the reference; python-control and SciPy, the control extra).
+    split : {"min_norm", "min_max", "preload"}, optional
+        The torque split of every controller (default ``[control] split``).
+    settle_time : float
+        Seconds of rest at the last sample after the reference (not in the RMSE).
+    quantise : bool
+        Quantise the encoders (``[sensing] encoder_counts_per_rev``).
+
+    Raises
+    ------
+    ReferenceFileError
+        The file cannot be read, or its task coordinates or time step are not the model's.
+    """
+    require_model(model)
+    unknown = [x for x in laws if x not in LAWS]
+    if unknown or not laws:
+        raise ReferenceFileError(f"laws must be some of {list(LAWS)}, got {list(laws)}")
+    traj = read_trajectory(path)
+    m, T = traj.xd.shape[1], model.spec.sensing["sample_period"]
+    if m != model.dof:
+        raise ReferenceFileError(
+            f"{path}: a reference in ({', '.join(TASK_COLUMNS[:m])}), model {model.name!r} has "
+            f"task dimension m = {model.dof} ({', '.join(model.task_names)})")
+    if abs(traj.period - T) > 1e-9 * T:
+        raise ReferenceFileError(
+            f"{path}: time step {traj.period:.9g} s, but model {model.name!r}'s controllers run "
+            f"at [sensing] sample_period = {T:g} s: resample the reference to that period")
+    kw = {} if split is None else {"split": split}
+    out = {}
+    for law in laws:
+        ctrl = ({"na": NAController, "apd": APDController}[law](model, **kw) if law in
+                ("na", "apd") else _extra_controller(model, law, traj, kw))
+        out[law] = simulate(model, ctrl, traj, settle_time=settle_time, quantise=quantise)
+    return out
+
+
+def reference_summary(results):
+    """The numbers of :func:`simulate_reference`, {law: {...}}: ``rmse_m`` (eq. 41, position),
+    ``max_error_m`` (largest position error), ``max_phi_error_rad`` (a platform), ``peak_tau``
+    and the status counts, ``samples``, ``outcome`` (SimResult's, with its message)."""
+    out = {}
+    for law, r in results.items():
+        e = r.e[:r.n_move]
+        row = {"rmse_m": r.rmse, "max_error_m": float(np.max(np.hypot(e[:, 0], e[:, 1]))),
+               "peak_tau": r.peak_tau, "n_saturated": r.n_saturated,
+               "n_singular": r.n_singular, "samples": r.n_move, "outcome": r.outcome,
+               "outcome_message": r.outcome_message}
+        if e.shape[1] == 3:
+            row["max_phi_error_rad"] = float(np.max(np.abs(e[:, 2])))
+        out[law] = row
+    return out

@@ -95,6 +95,6 @@ def read_columns(path, error):
         bad = np.flatnonzero(~np.isfinite(cols[h]))
         if bad.size:
             r = int(bad[0])
-            raise error(f"{path}: row {r + 1}, column {h}: {cols[h][r]!r} is not a finite "
+            raise error(f"{path}: row {r + 1}, column {h}: {float(cols[h][r])} is not a finite "
                         f"number")
     return header, cols
