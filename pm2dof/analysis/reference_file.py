@@ -31,7 +31,7 @@ LAWS = ("na", "apd", "ctc", "lqr")
 
 #: the task coordinates a reference may have: (x, y) for a point, (x, y, phi) for a platform
 TASK_COLUMNS = ("x", "y", "phi")
-#: largest relative deviation of a time step from the file's period (t[-1] - t[0]) / (N - 1)
+#: largest relative deviation of a time step from the first one
 PERIOD_TOLERANCE = 1e-6
 
 
@@ -63,20 +63,20 @@ def _task(path, cols):
 
 
 def _grid(path, t):
-    """The period of the regular time grid ``t``, s."""
+    """The period of the regular time grid ``t``, s: (t_last - t_first) / (N - 1), once every
+    step is the first one within :data:`PERIOD_TOLERANCE`."""
     if len(t) < 2:
         raise ReferenceFileError(f"{path}: one row: a reference needs two or more samples "
                                  f"(the period is their time step)")
-    T = (t[-1] - t[0]) / (len(t) - 1)
     steps = np.diff(t)
-    bad = np.flatnonzero(~(np.abs(steps - T) <= PERIOD_TOLERANCE * T)) if T > 0 else [0]
+    T0 = steps[0]
+    bad = np.flatnonzero(~(np.abs(steps - T0) <= PERIOD_TOLERANCE * T0)) if T0 > 0 else [0]
     if len(bad):
         k = int(bad[0])
         raise ReferenceFileError(
-            f"{path}: row {k + 2}, column t: t must increase by one period every row (period "
-            f"(t_last - t_first) / (N - 1) = {T:.9g} s), but it increases by {steps[k]:.9g} s "
-            f"from row {k + 1}")
-    return float(T)
+            f"{path}: row {k + 2}, column t: t must increase by one period every row (the "
+            f"first step is {T0:.9g} s), but it increases by {steps[k]:.9g} s from row {k + 1}")
+    return float((t[-1] - t[0]) / (len(t) - 1))
 
 
 def read_trajectory(path):
