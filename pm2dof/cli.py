@@ -144,6 +144,7 @@ def cmd_table3(args):
 
 def cmd_simulate(args):
     import json
+
     from .analysis.reference_file import reference_summary, simulate_reference
     res = reference_summary(simulate_reference(_model(args), args.reference, args.controller,
                                                split=args.split, settle_time=args.settle))

@@ -311,7 +311,7 @@ def line(start, end, v_max, a_max, j_max, period=0.002, orientation_length=None)
             raise TrajectoryError("a line in (x, y, phi) needs orientation_length, the length in "
                                   "m that turns phi into arc length (docs/planning.md)")
         scale += (_positive("orientation_length (m)", orientation_length),)
-    L = math.hypot(*((b - a) * w for a, b, w in zip(p0, p1, scale)))
+    L = math.hypot(*((b - a) * w for a, b, w in zip(p0, p1, scale, strict=True)))
     if L == 0.0:
         raise TrajectoryError(f"start and end coincide at {p0}: zero path length")
     prof = SCurve.plan(L, v_max, a_max, j_max)

@@ -106,15 +106,16 @@ class Model(DerivativeMethods):
 
     Build with :func:`load_model`. Attributes: ``name``, ``spec`` (the validated model file),
     ``n_legs``, ``dof`` (m, the task dimension: 2 for a point end effector, 3 for a platform),
-    ``task_names`` (``("x", "y")`` or ``("x", "y", "phi")``), ``bases`` (n, 2) m, ``param_names`` (5n,), ``theta_nominal`` (5n,) (Tables
-    1-2), ``singularity_threshold`` (type I), ``parallel_singularity_threshold`` (type II),
+    ``task_names`` (``("x", "y")`` or ``("x", "y", "phi")``), ``bases`` (n, 2) m,
+    ``param_names`` (p,), ``theta_nominal`` (p,) (Tables 1-2; p = 5n for the paper's
+    family), ``singularity_threshold`` (type I), ``parallel_singularity_threshold`` (type II),
     ``manifest``, ``generated`` (the folder of the generated C), ``library`` (path of the
     compiled C).
     Angles in rad, lengths in m; q = [qa_1..qa_n, qb_1..qb_n]. Task-space arrays have m
-    entries in the order of ``task_names`` (x, y in m; phi, the platform's orientation, in rad). The functions of q take it as
-    given: q must close every loop (eq. 5), as :meth:`ik` returns it; :meth:`H` gives the
-    closure residual, and :meth:`fk` refuses active angles that do not close
-    (:class:`ClosureError`).
+    entries in the order of ``task_names`` (x, y in m; phi, the platform's orientation, in
+    rad). The functions of q take it as given: q must close every loop (eq. 5), as
+    :meth:`ik` returns it; :meth:`H` gives the closure residual, and :meth:`fk` refuses active
+    angles that do not close (:class:`ClosureError`).
 
     Two kinds of singularity are guarded (:meth:`singularity_measures`): type I, a leg
     stretched or folded (min_i |sin(qb_i - qa_i)| -> 0, W unbounded), and type II, the

@@ -28,11 +28,11 @@ def _csv_columns(path, error):
     rows = list(csv.reader(io.StringIO("\n".join(line for _, line in body))))
     header = [h.strip() for h in rows[0]]
     cols = {h: [] for h in header}
-    for r, ((line_no, _), row) in enumerate(zip(body[1:], rows[1:]), start=1):
+    for r, ((line_no, _), row) in enumerate(zip(body[1:], rows[1:], strict=False), start=1):
         if len(row) != len(header):
             raise error(f"{path}: row {r} (line {line_no}) has {len(row)} fields, the header "
                         f"{len(header)}")
-        for h, cell in zip(header, row):
+        for h, cell in zip(header, row, strict=True):
             try:
                 cols[h].append(float(cell))
             except ValueError:

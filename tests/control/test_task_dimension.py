@@ -23,8 +23,12 @@ import pytest
 import pm2dof
 from pm2dof.analysis.maps import zonotope_inradius
 from pm2dof.analysis.reference_file import ReferenceFileError, read_trajectory
-from pm2dof.core.errors import (ArgumentError, PlanError, StaleGeneratedCodeError,
-                                UnsupportedMechanismError)
+from pm2dof.core.errors import (
+    ArgumentError,
+    PlanError,
+    StaleGeneratedCodeError,
+    UnsupportedMechanismError,
+)
 from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.core.task import orientation_length, require_rr_point, task_vector
 from pm2dof.planning import TaskPath
