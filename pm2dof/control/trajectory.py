@@ -186,10 +186,21 @@ class Trajectory:
 
     @classmethod
     def from_samples(cls, xd, xd_dot, xd_ddot, period):
-        """A plain sampled reference: ``xd``, ``xd_dot``, ``xd_ddot`` (N, m) arrays (m, m/s,
-        m/s^2) at t = k * period, k = 0 .. N-1, of any task dimension m (from ``xd``).
+        """A plain sampled reference at t = k * period, k = 0 .. N-1, of any task dimension m
+        (from ``xd``).
 
-        Raises TrajectoryError for a bad period, mismatched shapes or a non-finite sample.
+        Parameters
+        ----------
+        xd, xd_dot, xd_ddot : array_like (N, m)
+            Desired pose (m; phi in rad), velocity (m/s) and acceleration (m/s^2).
+        period : float
+            Sampling period, s (> 0).
+
+        Raises
+        ------
+        TrajectoryError
+            A bad period, mismatched shapes or a non-finite sample (names the array and the
+            sample).
         """
         period = _positive("period (s)", period)
         arrays = []
@@ -208,8 +219,18 @@ class Trajectory:
 
     @classmethod
     def hold(cls, x, duration, period):
-        """Hold the pose ``x`` (m,) m for at least ``duration`` s (>= 0): ceil(duration /
-        period) + 1 samples at t = k * period, zero velocity and acceleration."""
+        """Hold one pose: ceil(duration / period) + 1 samples at t = k * period, zero velocity
+        and acceleration.
+
+        Parameters
+        ----------
+        x : array_like (m,)
+            The pose, m (phi in rad).
+        duration : float
+            At least this long, s (>= 0).
+        period : float
+            Sampling period, s (> 0).
+        """
         try:
             x = np.asarray(x, dtype=np.float64)
         except (TypeError, ValueError):
@@ -303,7 +324,8 @@ def line(start, end, v_max, a_max, j_max, period=0.002, orientation_length=None)
     """
     p0, p1 = _point("start", start), _point("end", end)
     if len(p0) != len(p1):
-        raise TrajectoryError(f"start {p0} and end {p1} must both be (x, y) or both (x, y, phi)")
+        raise TrajectoryError(f"start {p0} of shape ({len(p0)},) and end {p1} of shape "
+                              f"({len(p1)},) must both be (x, y) or both (x, y, phi)")
     period = _positive("period (s)", period)
     scale = (1.0, 1.0)                         # arc length: phi in units of orientation_length
     if len(p0) == 3:
