@@ -152,8 +152,8 @@ class Model(DerivativeMethods):
                                       f"says {want}")
             # model functions never hand back NaN/inf silently; ik and fk turn NaN into a
             # WorkspaceError themselves; controller steps and the plant report by status
-            f.check_outputs = short not in _STEPPING + _PATH + _OPTIONAL and short not in ("ik",
-                                                                                        "fk")
+            # (and the energies check theirs: a pose out of reach is a WorkspaceError)
+            f.check_outputs = short not in _STEPPING + _PATH + ENERGY_FUNCTIONS + ("ik", "fk")
             funcs[short] = f
         m = funcs["ik"].sizes_in[0]          # the task dimension of the generated code
         task_names = spec_task_names(spec, m)
