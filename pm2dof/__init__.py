@@ -41,7 +41,7 @@ from .core.build import BuildError
 from .core.errors import (ArgumentError, ArgumentTypeError, ClosureError, GainError,
                           InputFileError, ModelFileError, ModelMismatchError, NonFiniteError,
                           OutcomeWarning, OutputError, Pm2dofError, PlanError, SingularityError,
-                          StaleGeneratedCodeError, WorkspaceError)
+                          StaleGeneratedCodeError, UnsupportedMechanismError, WorkspaceError)
 from .core.model import Model, load_model
 from .core.version import __version__
 
@@ -68,6 +68,9 @@ _LAZY = {
     "identify_log": "pm2dof.identification.fit",
     "design_excitation": "pm2dof.identification.design",
     "load_excitation": "pm2dof.identification.design",
+    # a reference trajectory sampled elsewhere (issue 26)
+    "read_trajectory": "pm2dof.analysis.reference_file",
+    "ReferenceFileError": "pm2dof.analysis.reference_file",
     # motion planning (issue 20)
     "TaskPath": "pm2dof.planning",
     "check_path": "pm2dof.planning",
@@ -95,7 +98,7 @@ __all__ = [
     "InputFileError",
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError", "TrajectoryError", "GainError", "ModelMismatchError", "BuildError",
-    "OutcomeWarning", "PlanError",
+    "OutcomeWarning", "PlanError", "UnsupportedMechanismError",
     # layer 3 (imported on first use)
     *_LAZY,
 ]

@@ -4,6 +4,7 @@
 Typical use:
   pm2dof demo                 the main job: Table 3 simulated, figures, repeated runs
   pm2dof table3 [--json]      the paper's Table 3: APD vs NA (and NA with Gamma = 0)
+  pm2dof simulate --reference F   controllers tracking a reference file (CSV or Parquet)
   pm2dof figures --out DIR    error, torque, theta_hat and repeated-run figures (PNG)
   pm2dof report               what the compiled model says (Me, cond(S^T S), rank of Y)
   pm2dof identify report      identifiable parameters (base parameters, null space)
@@ -153,6 +154,23 @@ def cmd_table3(args):
     from .analysis.experiment import run_table3
     run_table3(_model(args), as_json=args.json, exact_encoders=args.exact_encoders,
                save=args.save, progress=_progress, include=tuple(args.include))
+    return 0
+
+
+def cmd_simulate(args):
+    import json
+
+    from .analysis.reference_file import reference_summary, simulate_reference
+    res = reference_summary(simulate_reference(_model(args), args.reference, args.controller,
+                                               split=args.split, settle_time=args.settle))
+    if args.json:
+        print(json.dumps(res, indent=1))
+        return 0
+    print(f"{'law':5s} {'RMSE m':>11s} {'max err m':>11s} {'peak tau':>9s} {'saturated':>9s}  "
+          f"outcome")
+    for law, r in res.items():
+        print(f"{law:5s} {r['rmse_m']:11.4e} {r['max_error_m']:11.4e} {r['peak_tau']:9.4g} "
+              f"{r['n_saturated']:9d}  {r['outcome_message']}")
     return 0
 
 
@@ -667,6 +685,24 @@ def build_parser():
                    help="also run these model-based controllers with Tables 1-2: ctc (computed "
                    "torque), lqr (time-varying LQR along each move; needs the control extra)")
     p.set_defaults(func=cmd_table3)
+    p = sub.add_parser("simulate", parents=[common], help="run controllers on a reference file",
+                       description="Simulate controllers (default NA and APD, gains of the model "
+                       "file) tracking a reference trajectory read from a CSV or Parquet file "
+                       "(columns t, x, y[, phi] and optionally their _dot and _ddot: "
+                       "docs/reference-format.md), and print RMSE (eq. 41), largest error, "
+                       "peak torque and saturated samples.",
+                       epilog="example: pm2dof simulate --reference ref.csv --controller na ctc")
+    p.add_argument("--reference", required=True, metavar="FILE",
+                   help="the reference, .csv or .parquet, sampled at the model's period")
+    p.add_argument("--controller", nargs="+", default=["na", "apd"],
+                   choices=["na", "apd", "ctc", "lqr"], metavar="LAW",
+                   help="na, apd, ctc, lqr (default: na apd)")
+    p.add_argument("--split", choices=["min_norm", "min_max", "preload"],
+                   help="torque split (default: [control].split)")
+    p.add_argument("--settle", type=_NONNEGATIVE, default=0.0, metavar="S",
+                   help="seconds of rest at the last sample after the reference (default 0)")
+    p.add_argument("--json", action="store_true", help="print the numbers as JSON")
+    p.set_defaults(func=cmd_simulate)
     p = sub.add_parser("figures", parents=[common], help="write the figures as PNG",
                        description="Write errors_<speed>.png (x and y error against time, APD "
                        "and NA, like the paper's Figs. 4-5), torques.png, theta_hat.png and "
@@ -856,7 +892,8 @@ def _show_warning(message, category, filename, lineno, file=None, line=None,
 _EXTRAS = {"sympy": "derive", "casadi": "derive", "dask": "studies", "distributed": "studies",
            "pyarrow": "studies", "scipy": "ident", "control": "control"}
 _COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies",
-                   "table3": "control"}     # table3 --include lqr: SciPy's Riccati solver
+                   "table3": "control",     # table3 --include lqr: SciPy's Riccati solver
+                   "simulate": "control"}   # simulate --controller lqr: the same
 
 
 #: commands whose --out names a folder (the others' --out, and every --save, name a file)

@@ -46,7 +46,8 @@ _HEAVY = {"sympy", "casadi", "matplotlib", "dask", "distributed", "pyarrow", "sc
 THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
     "__main__": set(),
-    "infra": {"numpy", "tqdm"},                         # tqdm: the progress bars
+    "infra": {"numpy", "tqdm", "pyarrow"},     # tqdm: the progress bars; pyarrow: Parquet tables,
+    #                                            lazily (infra/tables.py)
     "analysis": {"numpy"},
     "identification": {"numpy", "scipy", "casadi", "pyarrow"},   # the ident extra; lazily
     "linear": {"numpy", "scipy", "control"},            # the [control] extra (python-control)

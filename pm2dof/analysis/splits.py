@@ -32,7 +32,7 @@ def _row(r, preload=None, preload_sign=None):
     """The numbers of one run; with ``preload`` and ``preload_sign`` (n,) also
     ``preload_margin`` = min over the move's samples and actuators of sigma_i tau_i - p_i, N*m."""
     e = r.e[:r.n_move]
-    row = {"rmse": r.rmse, "max_error": float(np.max(np.hypot(e[:, 0], e[:, 1]))),
+    row = {"rmse": r.rmse, "max_error": float(np.max(np.hypot(e[:, 0], e[:, 1]))),   # (x, y)
            "n_saturated": r.n_saturated, "n_preload_infeasible": r.n_preload_infeasible,
            "n_singular": r.n_singular, "peak_tau": r.peak_tau,
            "rms_tau": float(np.sqrt(np.mean(r.tau_a[:r.n_move] ** 2)))}

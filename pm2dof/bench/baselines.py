@@ -11,9 +11,7 @@ __all__ = ["reference_geometry", "operating_point", "random_cases", "c_step", "l
 
 def reference_geometry(model):
     from ..reference.model import Geometry
-    legs = model.spec.legs
-    return Geometry(bases=model.bases, la=[l.la for l in legs], lb=[l.lb for l in legs],
-                    elbow=[l.elbow for l in legs], fk_branch=model.spec.fk_branch)
+    return Geometry.of_model(model)      # RR legs at a point only: others refused, saying why
 
 
 def operating_point(model, ctrl, traj, k):

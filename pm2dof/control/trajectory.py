@@ -12,6 +12,7 @@ import numpy as np
 from ..core.errors import ArgumentTypeError, Pm2dofError
 from ..core.model_file import read_model_file
 from ..core.paths import DEFAULT_MODEL_NAME, SHIPPED_MODELS
+from ..core.task import orientation_length
 
 __all__ = ["TrajectoryError", "SCurve", "Trajectory", "require_trajectory", "line", "model_move", "line_moves",
            "PAPER_MOVES",
@@ -165,7 +166,10 @@ class Trajectory:
         n = np.size(self.t)
         if n == 0:
             raise TrajectoryError("a trajectory needs at least one sample (t is empty)")
-        m = np.shape(self.xd)[1] if np.ndim(self.xd) == 2 else 2   # the task dimension
+        if np.ndim(self.xd) != 2:
+            raise TrajectoryError(f"xd must have shape (N, m), m the task dimension, got "
+                                  f"{np.shape(self.xd)}")
+        m = np.shape(self.xd)[1]                                   # the task dimension
         for name, shape in [("t", (n,)), ("xd", (n, m)), ("xd_dot", (n, m)), ("xd_ddot", (n, m))]:
             arr = np.array(getattr(self, name), dtype=np.float64, order="C")
             if arr.shape != shape:
@@ -197,7 +201,11 @@ class Trajectory:
         Trajectory
             With ``start``, ``end`` and ``profile`` None.
 
-        Raises TrajectoryError for a bad period, mismatched shapes or a non-finite sample.
+        Raises
+        ------
+        TrajectoryError
+            A bad period, mismatched shapes or a non-finite sample (names the array and the
+            sample).
         """
         period = _positive("period (s)", period)
         arrays = []
@@ -284,27 +292,34 @@ def require_trajectory(trajectory):
 
 
 def _point(name, p):
-    """Validate a 2-D point, returning it as a tuple of floats (m)."""
+    """Validate a task point (x, y) or (x, y, phi), returning it as a tuple of floats."""
     try:
         arr = np.asarray(p, dtype=np.float64)
     except (TypeError, ValueError):
         raise TrajectoryError(f"{name} must be a point (x, y) in m, got {p!r}") from None
-    if arr.shape != (2,) or not np.all(np.isfinite(arr)):
-        raise TrajectoryError(f"{name} must be a finite point (x, y) in m of shape (2,), got {p!r}")
-    return (float(arr[0]), float(arr[1]))
+    if arr.shape not in ((2,), (3,)) or not np.all(np.isfinite(arr)):
+        raise TrajectoryError(f"{name} must be a finite point (x, y) in m of shape (2,), or "
+                              f"(x, y, phi) of shape (3,) for a platform, got {p!r}")
+    return tuple(float(v) for v in arr)
 
 
-def line(start, end, v_max, a_max, j_max, period=0.002):
+def line(start, end, v_max, a_max, j_max, period=0.002, orientation_length=None):
     """S-curve motion along the straight segment from ``start`` to ``end``.
 
     Parameters
     ----------
-    start, end : array_like, shape (2,)
-        End points, m; they must differ.
+    start, end : array_like, shape (m,)
+        End points (x, y) in m, or (x, y, phi) for a platform (phi in rad); they must differ.
     v_max, a_max, j_max : float
         Limits along the path: m/s, m/s^2, m/s^3.
     period : float, optional
         Sampling period, s (default 2 ms).
+    orientation_length : float, optional
+        For (x, y, phi) points only, and required there: the length l, m, that turns phi into
+        arc length, L = sqrt(|p1 - p0|^2 + (l dphi)^2) (the arc length of
+        :class:`pm2dof.TaskPath`, docs/planning.md; :func:`model_move` takes the model's
+        :func:`pm2dof.core.task.orientation_length`). phi moves in proportion to x and y, and
+        an equal (x, y) gives a pure rotation.
 
     Returns
     -------
@@ -313,8 +328,17 @@ def line(start, end, v_max, a_max, j_max, period=0.002):
         one is at rest at ``end`` exactly.
     """
     p0, p1 = _point("start", start), _point("end", end)
+    if len(p0) != len(p1):
+        raise TrajectoryError(f"start {p0} of shape ({len(p0)},) and end {p1} of shape "
+                              f"({len(p1)},) must both be (x, y) or both (x, y, phi)")
     period = _positive("period (s)", period)
-    L = math.hypot(p1[0] - p0[0], p1[1] - p0[1])
+    scale = (1.0, 1.0)                         # arc length: phi in units of orientation_length
+    if len(p0) == 3:
+        if orientation_length is None:
+            raise TrajectoryError("a line in (x, y, phi) needs orientation_length, the length in "
+                                  "m that turns phi into arc length (docs/planning.md)")
+        scale += (_positive("orientation_length (m)", orientation_length),)
+    L = math.hypot(*((b - a) * w for a, b, w in zip(p0, p1, scale, strict=True)))
     if L == 0.0:
         raise TrajectoryError(f"start and end coincide at {p0}: zero path length")
     prof = SCurve.plan(L, v_max, a_max, j_max)
@@ -375,7 +399,8 @@ def model_move(model, name, period=None):
     """
     spec = getattr(model, "spec", model)
     return line(**_move_arguments(spec, name),
-                period=spec.sensing["sample_period"] if period is None else period)
+                period=spec.sensing["sample_period"] if period is None else period,
+                orientation_length=orientation_length(spec))
 
 
 def _paper_moves():

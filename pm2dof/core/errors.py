@@ -5,7 +5,7 @@ __all__ = ["Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError"
            "Problem",
            "InputFileError", "ModelFileError", "StaleGeneratedCodeError", "WorkspaceError",
            "ClosureError", "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning",
-           "PlanError"]
+           "PlanError", "UnsupportedMechanismError"]
 
 
 class Pm2dofError(Exception):
@@ -124,3 +124,9 @@ class PlanError(Pm2dofError, ValueError):
     """A path or a motion plan that cannot be built (names what and where: the argument and its
     value, or the arc length and point of the path): bad path geometry, a non-positive grid or
     margin, torque limits too low to follow the path at any speed."""
+
+
+class UnsupportedMechanismError(Pm2dofError, ValueError):
+    """A capability that cannot apply to this model's mechanism (its leg kinds, its end effector
+    or its task dimension m): names the capability, the mechanism and why, e.g. the Python
+    reference formulation, which covers RR legs meeting at a point only."""

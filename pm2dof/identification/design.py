@@ -58,7 +58,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.errors import Pm2dofError
+from ..core.errors import Pm2dofError, UnsupportedMechanismError
 from ..infra.progress import bar
 from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED
@@ -397,6 +397,10 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         the same coefficients and ``info`` bit for bit (no wall time in it).
     """
     import casadi as ca
+    if model.dof != 2:    # the Fourier excitation has an x and a y series (issue 26: not phi yet)
+        raise UnsupportedMechanismError(
+            f"design_excitation plans Fourier series for x and y only; model {model.name!r} "
+            f"has task {model.task_names}: use pm2dof.identification.excitation.multisine")
     if not (base_hz > 0 and harmonics >= 1 and periods >= 1 and v_max > 0 and a_max > 0
             and 0 < tau_fraction <= 1 and radius > 0):
         raise ExcitationError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "

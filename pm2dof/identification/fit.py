@@ -174,8 +174,8 @@ def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
         The base columns (:func:`pm2dof.identification.base.base_parameters`).
     t : ndarray (N,)
         Sample times, s (regular).
-    xe : ndarray (N, 2)
-        Measured positions fk(qa), m.
+    xe : ndarray (N, m)
+        Measured poses fk(qa), m (phi in rad; m = ``model.dof``).
     tau : ndarray (N, n)
         Torque applied over [t_k, t_k+1), N*m.
     cutoff_hz : float
@@ -187,8 +187,8 @@ def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
     Returns
     -------
     dict
-        ``Phi`` (K, 2, r) filtered base regressor rows, ``u`` (K, 2) filtered S^T tau, N;
-        ``t`` (K,) their times; ``xe``, ``xed``, ``xedd`` (N, 2) the filtered motion;
+        ``Phi`` (K, m, r) filtered base regressor rows, ``u`` (K, m) filtered S^T tau, N;
+        ``t`` (K,) their times; ``xe``, ``xed``, ``xedd`` (N, m) the filtered motion;
         ``decimate``, ``edge`` (samples dropped at each end), ``n_slow`` (decimated samples
         left out as slow).
     """
@@ -201,11 +201,12 @@ def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
     tau_mid = np.empty_like(tau)
     tau_mid[0] = tau[0]
     tau_mid[1:] = 0.5 * (tau[1:] + tau[:-1])   # the hold intervals before and after t_k
-    Y = np.empty((N, 2, len(I)))
-    u = np.empty((N, 2))
+    m = model.dof
+    Y = np.empty((N, m, len(I)))
+    u = np.empty((N, m))
     slow = np.zeros(N, dtype=bool)
-    Yk = np.empty((2, len(model.param_names)))
-    S = np.empty((model.n_legs, 2))
+    Yk = np.empty((m, len(model.param_names)))
+    S = np.empty((model.n_legs, m))
     q = np.empty(2 * model.n_legs)
     for k in range(N):
         model.ik(xf[k], out=q)
@@ -228,7 +229,7 @@ def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
 
 
 def weighted_ls(Phi, u, lags=None):
-    """Weighted least squares for Phi (K, 2, r) theta_b = u (K, 2).
+    """Weighted least squares for Phi (K, m, r) theta_b = u (K, m), m task axes.
 
     Ordinary least squares first; then each task axis weighted by 1 / sigma of its OLS
     residual and solved again. Columns are scaled to unit norm for the solve (units differ).
@@ -239,14 +240,14 @@ def weighted_ls(Phi, u, lags=None):
     Returns
     -------
     dict
-        ``estimate`` (r,), ``std`` (r,) 1 sigma, ``cov`` (r, r), ``weights`` (2,) 1/N,
-        ``residual`` (K, 2) N (unweighted), ``A`` (2K, r) and ``b`` (2K,) the weighted system,
-        ``rms`` (2,) N, ``r2`` (2,), ``lag1`` (lag-1 autocorrelation of the weighted
+        ``estimate`` (r,), ``std`` (r,) 1 sigma, ``cov`` (r, r), ``weights`` (m,) 1/N,
+        ``residual`` (K, m) N (unweighted), ``A`` (mK, r) and ``b`` (mK,) the weighted system,
+        ``rms`` (m,) N, ``r2`` (m,), ``lag1`` (lag-1 autocorrelation of the weighted
         residual), ``lags``, ``inflation`` (Newey-West over plain variance, geometric mean).
     """
-    K, _, r = Phi.shape
-    if 2 * K <= r:
-        raise LogError(f"too short: {K} usable samples give {2 * K} equations for {r} base "
+    K, m, r = Phi.shape
+    if m * K <= r:
+        raise LogError(f"too short: {K} usable samples give {m * K} equations for {r} base "
                        f"parameters")
 
     def solve(w):
@@ -257,13 +258,13 @@ def weighted_ls(Phi, u, lags=None):
         x, *_ = np.linalg.lstsq(A / scale, b, rcond=None)
         return A, b, x / scale
 
-    _, _, x0 = solve(np.ones(2))
+    _, _, x0 = solve(np.ones(m))
     res0 = u - Phi @ x0
     sig = np.sqrt(np.mean(res0 ** 2, axis=0))
     w = 1.0 / np.maximum(sig, 1e-300)
     A, b, x = solve(w)
     res = u - Phi @ x
-    rw = res * w                                            # (K, 2), ~unit variance
+    rw = res * w                                            # (K, m), ~unit variance
     Ak = Phi * w[None, :, None]
     g = np.einsum("kir,ki->kr", Ak, rw)                      # scores (K, r)
     L = int(math.floor(4 * (K / 100.0) ** (2.0 / 9.0))) if lags is None else int(lags)
@@ -274,8 +275,8 @@ def weighted_ls(Phi, u, lags=None):
     scale = np.linalg.norm(A, axis=0)
     H = (A / scale).T @ (A / scale)
     Hi = np.linalg.inv(H) / np.outer(scale, scale)          # (A^T A)^-1
-    dof = 2 * K - r
-    cov = (2 * K / dof) * Hi @ Sg @ Hi                        # sandwich, small-sample factor
+    dof = m * K - r
+    cov = (m * K / dof) * Hi @ Sg @ Hi                        # sandwich, small-sample factor
     plain = (np.sum(rw ** 2) / dof) * Hi
     std = np.sqrt(np.diag(cov))
     tss = np.sum((u - u.mean(axis=0)) ** 2, axis=0)
@@ -442,7 +443,7 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
     K = len(st["t"])
     r = base.r
     src = log.source
-    if 2 * K <= r:
+    if model.dof * K <= r:
         ms = (f"; the median step of t is {log.period:g} s: if t is in ms, it must be in s"
               if log.period >= 0.05 else "")
         raise LogError(f"{src}: too short to determine the {r} base parameters: {K} usable "

@@ -348,8 +348,8 @@ def log_poses(model, log, *, encoder_tolerance=2e-3):
 
     Returns
     -------
-    xe : ndarray (N, 2)
-        fk of each row's measured active angles, m.
+    xe : ndarray (N, m)
+        fk of each row's measured active angles, m (phi in rad; m = ``model.dof``).
     q : ndarray (N, 2n)
         ik of xe: [qa, qb] consistent with the geometry, rad.
 
@@ -368,7 +368,7 @@ def log_poses(model, log, *, encoder_tolerance=2e-3):
     if msg:
         raise LogError(msg)
     N = len(log.t)
-    xe, q = np.empty((N, 2)), np.empty((N, 2 * n))
+    xe, q = np.empty((N, model.dof)), np.empty((N, 2 * n))
     sing = np.empty(2)
     for k in range(N):
         where = f"{src}: {_row(log.t, k)}"

@@ -30,6 +30,7 @@ from pathlib import Path
 
 from ..core.errors import InputFileError, PlanError
 from ..core.validate import Problems, entry
+from ..core.task import orientation_length
 from .paths import TaskPath
 
 __all__ = ["SHIPPED_PATHS", "shipped_paths", "resolve_path_file", "read_path_file",
@@ -143,8 +144,8 @@ def model_move_path(model, name):
     mv = moves[name]
     lim = {k: float(mv[k]) for k in ("v_max", "a_max", "j_max") if k in mv}
     if "path" not in mv:
-        return {"name": name, "path": TaskPath.line(mv["start"], mv["end"]), "kinematic": lim,
-                "file": None}
+        line = TaskPath.line(mv["start"], mv["end"], orientation_length(spec))   # (x, y[, phi])
+        return {"name": name, "path": line, "kinematic": lim, "file": None}
     f = read_path_file(mv["path"], relative_to=Path(spec.path).parent)
     kin = lim if len(lim) == 3 else ({**(f["kinematic"] or {}), **lim} or None)
     if kin is not None and len(kin) != 3:

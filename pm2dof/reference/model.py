@@ -38,6 +38,8 @@ from typing import Any
 
 import numpy as np
 
+from ..core.task import require_rr_point
+
 __all__ = [
     "Geometry",
     "ik",
@@ -148,6 +150,18 @@ class Geometry:
     def n(self) -> int:
         """Number of legs."""
         return int(self.bases.shape[0])
+
+    @classmethod
+    def of_model(cls, model: Any) -> "Geometry":
+        """The geometry of a :class:`pm2dof.Model` (or its spec). This formulation is of RR
+        legs meeting at a point (eqs. 1-13 as the paper writes them): any other mechanism
+        (prismatic legs, a platform) raises
+        :class:`~pm2dof.core.errors.UnsupportedMechanismError` saying so."""
+        require_rr_point(model, "the Python reference formulation (pm2dof.reference)")
+        spec = getattr(model, "spec", model)
+        legs = spec.legs
+        return cls(bases=spec.bases, la=[leg.la for leg in legs], lb=[leg.lb for leg in legs],
+                   elbow=[leg.elbow for leg in legs], fk_branch=spec.fk_branch)
 
     @classmethod
     def paper(cls) -> "Geometry":

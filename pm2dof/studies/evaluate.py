@@ -149,7 +149,7 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
             Y = np.empty((K, len(traj.t), ylay.size))
         f.accumulate_batch(X, u, P, Y)
         Yf = ylay.unpack(Y.reshape(K * len(traj.t), ylay.size))
-        xe = Yf["xe"].reshape(K, -1, 2)
+        xe = Yf["xe"].reshape(K, -1, model.dof)
         tau = Yf["tau_a"].reshape(K, -1, model.n_legs)
         status = Yf["status"].reshape(K, -1)
         th = Yf["theta_hat"].reshape(K, len(traj.t), -1)
@@ -176,8 +176,9 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
 def _metrics(out, rows, xd, xe, tau, status, n_move, n_ok):
     """SimResult's metrics, one row per rollout: rmse (eq. 41) and max |e| over the move's
     samples, m (``inf`` for a run that did not complete: ``diverged``); peak |tau_a| N*m and
-    the status counts over the samples the run completed (the first ``n_ok`` (K,))."""
-    e = xd[:n_move] - xe[:, :n_move]
+    the status counts over the samples the run completed (the first ``n_ok`` (K,)). The error
+    is the position's (x, y), as :attr:`pm2dof.SimResult.rmse` (a platform's phi left out)."""
+    e = xd[:n_move, :2] - xe[:, :n_move, :2]
     e2 = np.sum(e * e, axis=-1)
     diverged = n_ok < xe.shape[1]                     # SimResult.outcome != "completed"
     held = np.arange(xe.shape[1]) < n_ok[:, None]     # the samples a SimResult holds
