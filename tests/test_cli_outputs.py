@@ -137,7 +137,7 @@ def test_version_prints_what_getting_started_says(capsys):
 
 
 def test_installed_package_outputs_omit_git_commit(monkeypatch):
-    from pm2dof.analysis import results
+    from pm2dof.infra import results
     monkeypatch.setattr(results, "_git_commit", lambda: None)
     prov = results.provenance(pm2dof.load_model())
     assert "git_commit" not in prov and prov["pm2dof"]

@@ -76,7 +76,8 @@ def _expected(name, arg, d, lay):
             return own[arg]
     if name.startswith("path_"):
         own = {"stage": size["path_stage"], "pair": size["path_pair"],
-               "input": size["path_forward_input"], "params": size["path_params"],
+               "input": size[f"{name}_input"] if name in ("path_backward", "path_forward")
+               else size["path_forward_input"], "params": size["path_params"],
                "p": m, "x": 1, "x_next": 1, "x_next_max": 1, "x_max": 1, "x_mvc": 1,
                "y": size["path_forward_output"] if name == "path_forward" else 1,
                "u": m, "S": n * m}
