@@ -18,6 +18,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from . import _cbind
 from .errors import ArgumentError
 
 __all__ = ["DerivativeMethods", "ForwardDynamicsJacobians", "SampledStepJacobians",
@@ -81,23 +82,14 @@ class DerivativeMethods:
                 f"{[getattr(a, 'shape', type(a).__name__) for a in out] if isinstance(out, tuple) else type(out).__name__}")
         return out if type(out) is kind else kind(*out)
 
-    def _eval_jacobians(self, short, kind, shapes, out, args):
-        """``<name>_<short>``: its first output (the value) skipped, the Jacobians written into
-        ``out``, its last output the singularity measures.
-
-        Fast path: an earlier result as ``out`` and float64 arguments go straight to the C;
-        anything the binding refuses, and a singular pose, take the model functions' checked
-        path (:meth:`Model._checked_call`), which converts, retries and raises the typed error.
-        """
-        res = out if type(out) is kind else self._outs(kind, shapes, out)
-        f, sing = self._f[short], self._sing
-        try:
-            f(*args, None, *res, sing)
-        except (TypeError, ValueError):
-            self._checked_call(short, f, args, (None, *res, sing), sing)
-            return res
-        if not (sing[0] >= self._sing_thr[0] and sing[1] >= self._sing_thr[1]):
-            self._checked_call(short, f, args, (None, *res, sing), sing)
+    def _eval_jacobians(self, short, kind, out, args):
+        """The checked path of a derivative method (its fast path, ``self._m[short]``, refused
+        the call): ``<name>_<short>`` with its first output (the value) skipped, the Jacobians
+        written into ``out`` (:meth:`_outs`), its last output the singularity measures;
+        converts the arguments if need be and raises the typed error
+        (:meth:`Model._checked_call`)."""
+        res = self._outs(kind, self._shapes[short], out)
+        self._checked_call(short, self._f[short], args, (None, *res, self._sing), self._sing)
         return res
 
     def forward_dynamics_jacobians(self, xe, xed, tau_a, theta, out=None):
@@ -130,10 +122,11 @@ class DerivativeMethods:
         >>> bool(np.allclose(J.d_tau_a, np.linalg.solve(m.Me(q, m.theta_nominal), m.S(q).T)))
         True
         """
-        n, p = self.n_legs, len(self.param_names)
-        return self._eval_jacobians("forward_dynamics_jacobians", ForwardDynamicsJacobians,
-                                    ((2, 2), (2, 2), (2, n), (2, p)), out,
-                                    (xe, xed, tau_a, theta))
+        try:
+            return self._m["forward_dynamics_jacobians"](xe, xed, tau_a, theta, out)
+        except _cbind.Refused:
+            return self._eval_jacobians("forward_dynamics_jacobians", ForwardDynamicsJacobians,
+                                        out, (xe, xed, tau_a, theta))
 
     def _period(self, period):
         T = self.spec.sensing["sample_period"] if period is None else period
@@ -155,7 +148,11 @@ class DerivativeMethods:
         -------
         x_next : ndarray (4,)
         """
-        return self._eval("sampled_step", (4,), out, x, tau_a, theta, self._period(period))
+        T = self._period(period)
+        try:
+            return self._m["sampled_step"](x, tau_a, theta, T, out)
+        except _cbind.Refused:
+            return self._eval("sampled_step", out, x, tau_a, theta, T)
 
     def sampled_step_jacobians(self, x, tau_a, theta, period=None, out=None):
         """Jacobians of :meth:`sampled_step` w.r.t. the state x = [xe, xed] and the held
@@ -168,15 +165,21 @@ class DerivativeMethods:
             ``d_x`` (4, 4), ``d_tau_a`` (4, n) (the discrete-time A and B at x, tau_a).
             ``out=``: a tuple of two such arrays.
         """
-        return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians,
-                                    ((4, 4), (4, self.n_legs)), out,
-                                    (x, tau_a, theta, self._period(period)))
+        T = self._period(period)
+        try:
+            return self._m["sampled_step_jacobians"](x, tau_a, theta, T, out)
+        except _cbind.Refused:
+            return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians, out,
+                                        (x, tau_a, theta, T))
 
     def inverse_dynamics(self, xe, xed, xedd, theta, out=None):
         """The task force u = Me xedd + Ce xed + S^T f_a (2,), N (eqs. 10-12, eq. 2 friction)
         that gives the acceleration ``xedd`` (2,) m/s^2 at the pose ``xe`` and velocity
         ``xed``. Actuator torques: any tau_a with S^T tau_a = u (:meth:`torque_splits`)."""
-        return self._eval("inverse_dynamics", (2,), out, xe, xed, xedd, theta)
+        try:
+            return self._m["inverse_dynamics"](xe, xed, xedd, theta, out)
+        except _cbind.Refused:
+            return self._eval("inverse_dynamics", out, xe, xed, xedd, theta)
 
     def inverse_dynamics_jacobians(self, xe, xed, xedd, theta, out=None):
         """Jacobians of :meth:`inverse_dynamics` w.r.t. the state (reverse-mode AD; friction's
@@ -187,8 +190,11 @@ class DerivativeMethods:
         InverseDynamicsJacobians
             ``d_xe`` (2, 2) N/m, ``d_xed`` (2, 2) N s/m.
         """
-        return self._eval_jacobians("inverse_dynamics_jacobians", InverseDynamicsJacobians,
-                                    ((2, 2), (2, 2)), out, (xe, xed, xedd, theta))
+        try:
+            return self._m["inverse_dynamics_jacobians"](xe, xed, xedd, theta, out)
+        except _cbind.Refused:
+            return self._eval_jacobians("inverse_dynamics_jacobians", InverseDynamicsJacobians,
+                                        out, (xe, xed, xedd, theta))
 
     def linearize(self, xe, xed, tau_a, theta=None, discrete=False, period=None):
         """The linearisation (A, B) of the dynamics at the state [xe, xed] and torque tau_a.

@@ -7,7 +7,6 @@ generated C. Inputs are float arrays of the documented length (lists and other d
 converted, on a slower path); outputs are new arrays unless ``out=`` is given, in which case
 the result is written there (no allocation) and returned.
 """
-import array
 import json
 import sys
 import types
@@ -16,7 +15,8 @@ from pathlib import Path
 import numpy as np
 
 from . import build, paths
-from .derivatives import DERIVATIVE_FUNCTIONS, DerivativeMethods
+from .derivatives import (DERIVATIVE_FUNCTIONS, DerivativeMethods, ForwardDynamicsJacobians,
+                          InverseDynamicsJacobians, SampledStepJacobians)
 from .errors import (ArgumentError, ArgumentTypeError, ClosureError, NonFiniteError,
                      SingularityError, StaleGeneratedCodeError, WorkspaceError)
 from .layout import Layout
@@ -97,6 +97,43 @@ def _check_generated(spec, gen_dir):
     return manifest, lib
 
 
+def _shapes(n, p):
+    """The returned shape(s) of each Model method bound by :func:`_methods` (n legs, p
+    parameters); a tuple of shapes for the derivative methods (their NamedTuple's fields)."""
+    return {"ik": (2 * n,), "fk": (2,), "H": (2 * (n - 1),), "A": (2 * (n - 1), 2 * n),
+            "singularity": (n,), "singularity_measures": (2,), "W": (2 * n, 2), "S": (n, 2),
+            "Wdot": (2 * n, 2), "M": (2 * n, 2 * n), "C": (2 * n, 2 * n), "Me": (2, 2),
+            "Ce": (2, 2), "StF": (2,), "Y": (2, p), "forward_dynamics": (2,),
+            "sampled_step": (4,), "inverse_dynamics": (2,),
+            "forward_dynamics_jacobians": ((2, 2), (2, 2), (2, n), (2, p)),
+            "sampled_step_jacobians": ((4, 4), (4, n)),
+            "inverse_dynamics_jacobians": ((2, 2), (2, 2))}
+
+
+def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
+    """The fast path of each Model method: one :class:`_cbind.Method` (one C call that binds,
+    evaluates and checks) per entry of ``shapes``. It refuses (``_cbind.Refused``) what it does
+    not accept: a bad argument, a non-finite result, a singular pose, fk's loops not closing;
+    the method then takes its checked path, which names the problem in a typed error."""
+    kinds = {"forward_dynamics_jacobians": ForwardDynamicsJacobians,
+             "sampled_step_jacobians": SampledStepJacobians,
+             "inverse_dynamics_jacobians": InverseDynamicsJacobians}
+    out = {}
+    for short, shape in shapes.items():
+        f, kind = funcs[short], kinds.get(short)
+        outs = list(kind and (None, *shape) or (shape,))   # the Jacobians skip the value
+        guard = None
+        if len(outs) < f.n_out and f.names_out[-1] == "sing":   # the pose's measures, checked
+            outs.append(sing)
+            guard = (f.n_out - 1, "at_least", sing_thr)
+        elif short == "fk":                                     # the closure residuals
+            outs.append(residual)
+            guard = (1, "abs_at_most", closure_tol)
+        out[short] = _cbind.Method(f, (None,) * f.n_in, tuple(outs), empty=np.empty, kind=kind,
+                                   finite=True, guard=guard)
+    return out
+
+
 class Model(DerivativeMethods):
     """A planar RR parallel manipulator with its compiled model functions. Immutable.
 
@@ -120,8 +157,8 @@ class Model(DerivativeMethods):
     at once; load one Model per thread.
     """
 
-    __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_layouts", "_sing_thr",
-                 "_sing", "_residual", "__weakref__")
+    __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_m", "_shapes",
+                 "_layouts", "_sing_thr", "_sing", "_residual", "__weakref__")
 
     #: names of the two singularity measures, in the order of :meth:`singularity_measures`
     SINGULARITY_KINDS = ("type I (a leg's links aligned)",
@@ -146,15 +183,19 @@ class Model(DerivativeMethods):
             # WorkspaceError themselves; controller steps and the plant report by status
             f.check_outputs = short not in _STEPPING + _PATH and short not in ("ik", "fk")
             funcs[short] = f
+        sing_thr = (spec.limits["singularity_threshold"],
+                    spec.limits["parallel_singularity_threshold"])
+        shapes = _shapes(spec.n_legs, len(spec.param_names))
+        sing, residual = np.zeros(2), np.zeros(spec.n_legs)
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
                      ("generated", str(gen_dir)),
                      ("_lib", lib), ("_f", types.MappingProxyType(funcs)),
+                     ("_m", _methods(funcs, shapes, sing, sing_thr, residual,
+                                     spec.sensing["closure_tolerance"])),
+                     ("_shapes", shapes),
                      ("_layouts", types.MappingProxyType(
                          {name: Layout(name, fl) for name, fl in manifest["layouts"].items()})),
-                     ("_sing_thr", (spec.limits["singularity_threshold"],
-                                    spec.limits["parallel_singularity_threshold"])),
-                     ("_sing", array.array("d", [0.0, 0.0])),   # array: [0] ~3x faster than numpy
-                     ("_residual", np.zeros(spec.n_legs))):
+                     ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual)):
             object.__setattr__(self, k, v)
 
     def __setattr__(self, key, value):
@@ -224,9 +265,12 @@ class Model(DerivativeMethods):
         return self._layouts[name]
 
     # --- argument handling ---------------------------------------------------------------
-    # Fast path: the arguments go straight to the C binding, which checks the dtype (float64),
-    # contiguity, element count and finiteness of every one. Only if it rejects an argument
-    # are the arguments converted (lists, ints, float32 ...) and the call retried.
+    # Fast path: each method is one call of its _cbind.Method (self._m, built by _methods):
+    # in C it checks every argument's dtype (float64), contiguity, element count and
+    # finiteness and out's type and shape, evaluates, and checks the result (finite, the
+    # pose not singular, fk's loops closed). Whatever it refuses takes the checked path
+    # below: the arguments converted (lists, ints, float32 ...), the call retried and every
+    # problem named in a typed error.
     def _coerce(self, f, args):
         out = []
         for name, size, x in zip(f.names_in, f.sizes_in, args):
@@ -274,9 +318,11 @@ class Model(DerivativeMethods):
                                 f"got {type(out).__name__} {getattr(out, 'shape', '')}")
         return out
 
-    def _eval(self, short, shape, out, *args):
-        """Evaluate ``<name>_<short>(*args) -> out [, sing]``; raise on a singular pose."""
-        out = self._out(out, shape)
+    def _eval(self, short, out, *args):
+        """The checked path of a method: evaluate ``<name>_<short>(*args) -> out [, sing]``,
+        converting the arguments if need be; raise the typed error of a bad argument, a
+        singular pose or a non-finite result."""
+        out = self._out(out, self._shapes[short])
         f = self._f[short]
         sing = self._sing if f.n_out == 2 else None
         outs = (out, sing) if sing is not None else (out,)
@@ -326,7 +372,11 @@ class Model(DerivativeMethods):
             if the pose at ``xe`` is not in the model's assembly mode (``fk_branch``): ``fk``
             could not return to it. So ``fk(ik(xe)[:n]) == xe`` wherever ``ik`` answers.
         """
-        out = self._eval("ik", (2 * self.n_legs,), out, xe)
+        try:
+            return self._m["ik"](xe, out)      # refuses a non-finite q: named below
+        except _cbind.Refused:
+            pass
+        out = self._eval("ik", out, xe)
         if not np.isfinite(out).all():
             xe = np.asarray(xe, dtype=float).ravel()
             for i, leg in enumerate(self.spec.legs):
@@ -375,6 +425,10 @@ class Model(DerivativeMethods):
             freedom, the extra legs are a check of the measurement; the message names the leg
             and its residual in m.
         """
+        try:
+            return self._m["fk"](qa, out)      # refuses a residual beyond tol: named below
+        except _cbind.Refused:
+            pass
         out = self._out(out, (2,))
         (qa,), _ = self._call(self._f["fk"], (qa,), (out, self._residual))
         r = self._residual
@@ -393,16 +447,24 @@ class Model(DerivativeMethods):
 
     def H(self, q, out=None):
         """Loop-closure constraints H(q) (2(n-1),), m (eq. 5)."""
-        return self._eval("H", (2 * (self.n_legs - 1),), out, q)
+        try:
+            return self._m["H"](q, out)
+        except _cbind.Refused:
+            return self._eval("H", out, q)
 
     def A(self, q, out=None):
         """Constraint Jacobian A = dH/dq (2(n-1), 2n) (eq. 6)."""
-        n = self.n_legs
-        return self._eval("A", (2 * (n - 1), 2 * n), out, q)
+        try:
+            return self._m["A"](q, out)
+        except _cbind.Refused:
+            return self._eval("A", out, q)
 
     def singularity(self, q, out=None):
         """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0."""
-        return self._eval("singularity", (self.n_legs,), out, q)
+        try:
+            return self._m["singularity"](q, out)
+        except _cbind.Refused:
+            return self._eval("singularity", out, q)
 
     def singularity_measures(self, q, out=None):
         """The two singularity measures at the pose q (2n,), each in [0, 1], 0 when singular.
@@ -414,49 +476,77 @@ class Model(DerivativeMethods):
         distal links are parallel; compared with ``limits.parallel_singularity_threshold``.
         Never raises on a singular pose: it is the measure.
         """
-        return self._eval("singularity_measures", (2,), out, q)
+        try:
+            return self._m["singularity_measures"](q, out)
+        except _cbind.Refused:
+            return self._eval("singularity_measures", out, q)
 
     def W(self, q, out=None):
         """W (2n, 2) with qd = W xed (eq. 7). Raises SingularityError near singular poses."""
-        return self._eval("W", (2 * self.n_legs, 2), out, q)
+        try:
+            return self._m["W"](q, out)
+        except _cbind.Refused:
+            return self._eval("W", out, q)
 
     def S(self, q, out=None):
         """S (n, 2), the actuated rows of W: qd_a = S xed (eq. 8)."""
-        return self._eval("S", (self.n_legs, 2), out, q)
+        try:
+            return self._m["S"](q, out)
+        except _cbind.Refused:
+            return self._eval("S", out, q)
 
     def Wdot(self, q, xed, out=None):
         """dW/dt (2n, 2) along qd = W xed, with xed (2,) in m/s (eq. 9), 1/s per m."""
-        return self._eval("Wdot", (2 * self.n_legs, 2), out, q, xed)
+        try:
+            return self._m["Wdot"](q, xed, out)
+        except _cbind.Refused:
+            return self._eval("Wdot", out, q, xed)
 
     # --- dynamics ------------------------------------------------------------------------
     def M(self, q, theta, out=None):
         """Open-chain joint-space inertia M (2n, 2n), kg*m^2 (eq. 3)."""
-        n = self.n_legs
-        return self._eval("M", (2 * n, 2 * n), out, q, theta)
+        try:
+            return self._m["M"](q, theta, out)
+        except _cbind.Refused:
+            return self._eval("M", out, q, theta)
 
     def C(self, q, qd, theta, out=None):
         """Open-chain Coriolis/centrifugal matrix C (2n, 2n) at joint velocity qd (eq. 3)."""
-        n = self.n_legs
-        return self._eval("C", (2 * n, 2 * n), out, q, qd, theta)
+        try:
+            return self._m["C"](q, qd, theta, out)
+        except _cbind.Refused:
+            return self._eval("C", out, q, qd, theta)
 
     def Me(self, q, theta, out=None):
         """Task-space inertia Me = W^T M W (2, 2), kg (eq. 12)."""
-        return self._eval("Me", (2, 2), out, q, theta)
+        try:
+            return self._m["Me"](q, theta, out)
+        except _cbind.Refused:
+            return self._eval("Me", out, q, theta)
 
     def Ce(self, q, xed, theta, out=None):
         """Task-space Coriolis matrix Ce = W^T (M Wdot + C W) (2, 2), kg/s (eq. 12)."""
-        return self._eval("Ce", (2, 2), out, q, xed, theta)
+        try:
+            return self._m["Ce"](q, xed, theta, out)
+        except _cbind.Refused:
+            return self._eval("Ce", out, q, xed, theta)
 
     def StF(self, q, xed, theta, out=None):
         """Friction in task space S^T f_a(S xed) (2,), N (eqs. 2, 10)."""
-        return self._eval("StF", (2,), out, q, xed, theta)
+        try:
+            return self._m["StF"](q, xed, theta, out)
+        except _cbind.Refused:
+            return self._eval("StF", out, q, xed, theta)
 
     def Y(self, q, xed, xrd, xrdd, out=None):
         """Regressor Y (2, 5n): Y theta = Me xrdd + Ce(q, W xed) xrd + S^T f_a(S xed) (eq. 13).
 
         Columns follow :attr:`param_names`; friction uses sign(0) = +1.
         """
-        return self._eval("Y", (2, len(self.param_names)), out, q, xed, xrd, xrdd)
+        try:
+            return self._m["Y"](q, xed, xrd, xrdd, out)
+        except _cbind.Refused:
+            return self._eval("Y", out, q, xed, xrd, xrdd)
 
     def torque_splits(self, q, u, tau_max=None, preload=None, preload_sign=None):
         """The actuator torques of every split for the task force ``u`` (2,), N, at pose q (2n,).
@@ -499,7 +589,10 @@ class Model(DerivativeMethods):
         term smoothed over ``[plant] coulomb_smoothing_velocity`` and zero at rest; neither
         models stiction.
         """
-        return self._eval("forward_dynamics", (2,), out, xe, xed, tau_a, theta)
+        try:
+            return self._m["forward_dynamics"](xe, xed, tau_a, theta, out)
+        except _cbind.Refused:
+            return self._eval("forward_dynamics", out, xe, xed, tau_a, theta)
 
 
 def require_model(model, name="model"):
