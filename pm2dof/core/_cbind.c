@@ -1771,6 +1771,61 @@ guard_passes(MethodObject *m, const double *p, Py_ssize_t n)
     }
 }
 
+/* Whether p[0..n) is all finite: an exponent field of all ones is inf or NaN. Branch-free,
+   so the compiler may vectorise it (the error path finds the index). */
+static inline int
+all_finite(const double *p, Py_ssize_t n)
+{
+    /* (b & exponent) + one exponent step carries into the sign bit only from all ones */
+    uint64_t bad = 0;
+    for (Py_ssize_t k = 0; k < n; k++) {
+        uint64_t b;
+        memcpy(&b, p + k, sizeof b);
+        bad |= (b & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+    }
+    return (bad >> 63) == 0;
+}
+
+/*
+ * The Method's binding when every argument is an ndarray the numpy fast path takes (else -1,
+ * nothing bound: bind_all then does it all, with its messages). Presets were checked once,
+ * when the Method was built: they are not re-checked for finiteness (a controller's
+ * parameters are read-only and its state is written only by its own step, which keeps the
+ * state when a result is not finite), nor for overlap (private arrays). The caller's inputs
+ * must be finite, and the caller's out must not share memory with them.
+ */
+static int
+method_bind_fast(MethodObject *m, Work *w, PyObject *const *argv, int caller_out)
+{
+    FunctionObject *f = m->f;
+    const Py_ssize_t n_in = f->n_in, n_out = f->n_out;
+    for (Py_ssize_t k = 0; k < n_in + n_out; k++) {
+        PyObject *o = argv[k];
+        const int is_out = k >= n_in;
+        double *p = NULL;
+        if (o != Py_None) {
+            if (Py_TYPE(o) != np_type || (p = np_fast(o, is_out, f->nnz[k], f->vec[k])) == NULL)
+                return -1;
+        }
+        if (is_out)
+            w->res[k - n_in] = p;
+        else
+            w->arg[k] = p;
+    }
+    for (Py_ssize_t i = 0; i < n_in; i++)
+        if (m->tmpl[i] == NULL && !all_finite(w->arg[i], f->nnz[i]))
+            return 1;
+    if (caller_out)
+        for (Py_ssize_t r = 0; r < m->n_ret; r++) {
+            const Py_ssize_t j = m->ret_out[r];
+            for (Py_ssize_t i = 0; i < n_in; i++)
+                if (m->tmpl[i] == NULL &&
+                    overlaps(w->res[j], f->nnz[n_in + j], w->arg[i], f->nnz[i]))
+                    return 1;
+        }
+    return 0;
+}
+
 static PyObject *
 Method_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject *kwnames)
 {
@@ -1828,7 +1883,8 @@ Method_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject
         bad = -1;
         goto done;
     }
-    if (bind_all(f, w, argv, 1, NULL, &held) < 0) {
+    int fast = method_bind_fast(m, w, argv, out != Py_None);
+    if (fast > 0 || (fast < 0 && bind_all(f, w, argv, 1, NULL, &held) < 0)) {
         bad = 1;
         goto release;
     }
