@@ -1803,7 +1803,7 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *argv, int caller_out
         PyObject *o = argv[k];
         const int is_out = k >= n_in;
         double *p = NULL;
-        if (o != Py_None) {
+        if (o != Py_None || !is_out) { /* None: an output not computed; an input never */
             if (Py_TYPE(o) != np_type || (p = np_fast(o, is_out, f->nnz[k], f->vec[k])) == NULL)
                 return -1;
         }
