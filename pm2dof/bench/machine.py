@@ -15,6 +15,7 @@ def build_record(library):
     (``lib<name>.so.json``, :func:`pm2dof.core.build.stamp_path`): (compiler, flags, where
     they come from); (None, None, why) without a readable record."""
     import json
+
     from ..core.build import stamp_path
     path = stamp_path(library)
     try:

@@ -25,7 +25,7 @@ MAX_IMPEDANCE = 0.9999
 
 def _mjcf(model, theta, impedance):
     legs = []
-    for i, (leg, body) in enumerate(zip(model.spec.legs, leg_bodies(model, theta))):
+    for i, (leg, body) in enumerate(zip(model.spec.legs, leg_bodies(model, theta), strict=True)):
         mb, rb, Ia, Ib = (float(v) for v in body)
         # rotations about x, y are impossible for a hinge about z: those inertias are
         # irrelevant, and set equal to the z one (MuJoCo asks A + B >= C)

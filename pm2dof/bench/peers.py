@@ -97,22 +97,23 @@ def peer_bench(model, na, op, qa_prev, state, repeats, batch_s, c_inner, notes):
     def med(values):
         return stats(values)["median"]
 
-    res["fd_python_interleaved_ns"], res["fd_c_interleaved_ns"] = med(t["fd"]), med(t["fd_c"])
-    res["na_step_python_interleaved_ns"] = med(t["na"])
-    res["na_step_c_interleaved_ns"] = med(t["na_c"])
+    for key, run in (("fd_python_interleaved_ns", "fd"), ("fd_c_interleaved_ns", "fd_c"),
+                     ("na_step_python_interleaved_ns", "na"),
+                     ("na_step_c_interleaved_ns", "na_c")):
+        res[key], res[key + "_min"] = med(t[run]), min(t[run])
     # the binding's overhead per call: Python time minus C time, over the C time (paired)
-    res["fd_binding_overhead_ns"] = med([p - c for p, c in zip(t["fd"], t["fd_c"])])
-    res["fd_binding_overhead_over_c"] = med([(p - c) / c for p, c in zip(t["fd"], t["fd_c"])])
-    res["na_step_binding_overhead_ns"] = med([p - c for p, c in zip(t["na"], t["na_c"])])
+    res["fd_binding_overhead_ns"] = med([p - c for p, c in zip(t["fd"], t["fd_c"], strict=True)])
+    res["fd_binding_overhead_over_c"] = med([(p - c) / c for p, c in zip(t["fd"], t["fd_c"], strict=True)])
+    res["na_step_binding_overhead_ns"] = med([p - c for p, c in zip(t["na"], t["na_c"], strict=True)])
     res["na_step_binding_overhead_over_c"] = med([(p - c) / c for p, c in
-                                                  zip(t["na"], t["na_c"])])
+                                                  zip(t["na"], t["na_c"], strict=True)])
     res["na_step_binding_overhead_over_fd_c"] = med([(p - c) / f for p, c, f in
-                                                     zip(t["na"], t["na_c"], t["fd_c"])])
+                                                     zip(t["na"], t["na_c"], t["fd_c"], strict=True)])
     for peer, key, ratio in (("pinocchio", "pinocchio_forward_dynamics_python_us",
                               "speedup_fd_vs_pinocchio"),
                              ("mujoco", "mujoco_forward_python_us", "speedup_fd_vs_mujoco")):
         res[key] = res[ratio] = None
         if peer in t:
             res[key], res[key + "_min"] = med(t[peer]) / 1e3, min(t[peer]) / 1e3
-            res[ratio] = med([p / f for p, f in zip(t[peer], t["fd"])])
+            res[ratio] = med([p / f for p, f in zip(t[peer], t["fd"], strict=True)])
     return res

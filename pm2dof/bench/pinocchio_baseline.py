@@ -57,8 +57,8 @@ class PinocchioRobot:
         self.pin, self.m = pin, model
         pm = pin.Model()
         self.tips = []
-        for i, (leg, (mb, rb, Ia, Ib)) in enumerate(zip(model.spec.legs,
-                                                        leg_bodies(model, theta))):
+        bodies = leg_bodies(model, theta)
+        for i, (leg, (mb, rb, Ia, Ib)) in enumerate(zip(model.spec.legs, bodies, strict=True)):
             ja = pm.addJoint(0, pin.JointModelRZ(),
                              pin.SE3(np.eye(3), np.array([*leg.base, 0.0])), f"qa{i + 1}")
             pm.appendBodyToJoint(ja, pin.Inertia(1e-9, np.zeros(3), np.diag([1e-6, 1e-6, Ia])),

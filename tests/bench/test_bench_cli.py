@@ -4,9 +4,9 @@ import json
 
 import pytest
 
+import pm2dof.bench as bench_pkg
 from pm2dof import cli, load_model
 from pm2dof.bench import machine as bench_machine
-import pm2dof.bench as bench_pkg
 from pm2dof.core import build
 
 

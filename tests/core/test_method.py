@@ -111,7 +111,7 @@ def test_several_outputs_come_back_as_the_kind(m):
     again = m.forward_dynamics_jacobians(*_args(m), out=J)
     assert again is J
     ref = m._eval_jacobians("forward_dynamics_jacobians", type(J), None, _args(m))
-    assert all(np.array_equal(a, b) for a, b in zip(J, ref))
+    assert all(np.array_equal(a, b) for a, b in zip(J, ref, strict=True))
 
 
 @pytest.mark.parametrize("kw, match", [
