@@ -18,8 +18,12 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import _cbind
 from .errors import ArgumentError
+
+try:
+    from . import _cbind
+except ImportError:  # a source tree never built: importing pm2dof.core.model says what to do
+    _cbind = None
 
 __all__ = ["DerivativeMethods", "ForwardDynamicsJacobians", "SampledStepJacobians",
            "InverseDynamicsJacobians", "DERIVATIVE_FUNCTIONS", "continuous_AB"]
