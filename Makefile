@@ -10,11 +10,12 @@ OUT    ?= out
 MODEL_DIRS := $(patsubst %/manifest.json,%,$(wildcard pm2dof/generated/*/manifest.json))
 LIBS := $(foreach d,$(MODEL_DIRS),$(d)/lib$(notdir $(d)).so)
 
-.PHONY: install derive derive-all libs test docs check-install dist demo bench c-example clean help
+.PHONY: install derive derive-all libs test lint docs check-install dist demo bench c-example embedded clean help
 
 help:
 	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
 	@echo "make test     set up .venv, build, run the test suite"
+	@echo "make lint     ruff check pm2dof tests (pyflakes, import order, bugbear; pyproject.toml)"
 	@echo "make derive   re-derive $(MODEL) into pm2dof/generated/<name>/ and compile it (MODEL=path)"
 	@echo "make derive-all  re-derive every shipped model (after a change to pm2dof/derive/)"
 	@echo "make dist     build the sdist and the wheel into dist/"
@@ -22,6 +23,7 @@ help:
 	@echo "make docs     build the documentation site into site/ (mkdocs build --strict)"
 	@echo "make bench    controller step-time benchmark"
 	@echo "make c-example  standalone C: NA against the compiled plant, paced at 2 ms"
+	@echo "make embedded   pm2dof export cross-compiled for Cortex-M4F and M7, run under QEMU"
 	@echo "make install  only create .venv, install pm2dof (editable) and compile the generated C"
 
 $(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
@@ -49,6 +51,10 @@ derive-all: $(STAMP)
 test: install
 	$(PY) -m pytest -q
 
+# pyflakes (F), import order (I), bugbear (B): [tool.ruff] in pyproject.toml
+lint: $(STAMP)
+	$(VENV)/bin/ruff check pm2dof tests
+
 # the documentation site: docs/*.md and the docstrings, warnings are errors (mkdocs.yml).
 # NO_MKDOCS_2_WARNING silences the Material theme's banner about MkDocs 2 (pinned < 2).
 docs: $(STAMP)
@@ -56,9 +62,19 @@ docs: $(STAMP)
 	! grep -l -E ':(func|class|meth|attr|mod|data|exc):' site/api.html || \
 		{ echo "make docs: Sphinx roles left in site/api.html (docs/_ext/sphinx_roles.py)"; exit 1; }
 
-dist: $(STAMP)
+# the wheel and sdist need only the build frontend: `python -m build` installs the backend
+# ([build-system] requires: setuptools, wheel) into an isolated environment of its own
+BUILD_VENV  := .venv-build
+BUILD_STAMP := $(BUILD_VENV)/.installed-stamp
+
+$(BUILD_STAMP):
+	test -x $(BUILD_VENV)/bin/python || $(PYTHON) -m venv $(BUILD_VENV)
+	$(BUILD_VENV)/bin/python -m pip install --quiet 'build>=1.0'
+	touch $@
+
+dist: $(BUILD_STAMP)
 	rm -rf dist
-	$(PY) -m build --outdir dist .
+	$(BUILD_VENV)/bin/python -m build --outdir dist .
 
 check-install: dist
 	bash tests/install/smoke.sh dist
@@ -72,5 +88,25 @@ bench: install
 c-example: install
 	$(MAKE) -C examples/c run
 
+# pm2dof export's project cross-compiled for a Cortex-M4F and a Cortex-M7 (single and double),
+# run under QEMU against the host build (docs/deploying.md). The Debian packages are installed
+# when missing and this user may (root, or password-less sudo); otherwise it says what to install.
+EMBEDDED_PKGS := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
+EMBEDDED_OUT  ?= build/embedded
+embedded: install
+	@have() { command -v arm-none-eabi-gcc >/dev/null && command -v qemu-system-arm >/dev/null \
+	    && test -f "$$(arm-none-eabi-gcc -print-file-name=libc.a)"; }; \
+	if ! have; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(EMBEDDED_PKGS); \
+	  elif command -v apt-get >/dev/null && sudo -n true 2>/dev/null; then \
+	    sudo apt-get update -qq && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $(EMBEDDED_PKGS); \
+	  fi; \
+	  have || { echo "make embedded needs arm-none-eabi-gcc with newlib and qemu-system-arm;" \
+	    "install them (Debian/Ubuntu: sudo apt-get install $(EMBEDDED_PKGS))"; exit 1; }; \
+	fi
+	@mkdir -p $(EMBEDDED_OUT)
+	$(PY) -m pm2dof.export.embedded --out $(EMBEDDED_OUT) --json $(EMBEDDED_OUT)/results.json
+
 clean:
-	rm -rf $(VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT) site
+	rm -rf $(VENV) $(BUILD_VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT) site

@@ -15,8 +15,9 @@ The package is layered; imports only point down (tests/test_layers.py checks it)
 =================  ==========================================================================
 ``core/``          1. the thin runtime: model file, ``Model``, the C binding. NumPy only.
 ``control/``       2. controllers, trajectories, closed-loop rollouts (one call into C each).
+``infra/``         result files with their provenance, progress bars (below the analyses).
 ``linear/``        3. linearisation along a trajectory, python-control state spaces, LQR.
-``analysis/``      3. the paper's experiment, reports, result files.
+``analysis/``      3. the paper's experiment, reports, splits, maps.
 ``identification/`` 3. logs, excitations, the least-squares fit of theta (``pm2dof identify``).
 ``bench/``         3. the step-time benchmark.
 ``studies/``       3. many-rollout studies on Dask, results in Parquet.
@@ -31,7 +32,6 @@ are imported on first use, so a real-time process never pays for them.
 """
 import importlib
 
-from . import _moved
 from .control.controllers import (STATUS_NAMES, APDController, CTCController, NAController,
                                   Status)
 from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
@@ -41,7 +41,7 @@ from .core.build import BuildError
 from .core.errors import (ArgumentError, ArgumentTypeError, ClosureError, GainError,
                           InputFileError, ModelFileError, ModelMismatchError, NonFiniteError,
                           OutcomeWarning, OutputError, Pm2dofError, PlanError, SingularityError,
-                          StaleGeneratedCodeError, WorkspaceError)
+                          StaleGeneratedCodeError, UnsupportedMechanismError, WorkspaceError)
 from .core.model import Model, load_model
 from .core.version import __version__
 
@@ -68,6 +68,9 @@ _LAZY = {
     "identify_log": "pm2dof.identification.fit",
     "design_excitation": "pm2dof.identification.design",
     "load_excitation": "pm2dof.identification.design",
+    # a reference trajectory sampled elsewhere (issue 26)
+    "read_trajectory": "pm2dof.analysis.reference_file",
+    "ReferenceFileError": "pm2dof.analysis.reference_file",
     # motion planning (issue 20)
     "TaskPath": "pm2dof.planning",
     "check_path": "pm2dof.planning",
@@ -95,7 +98,7 @@ __all__ = [
     "InputFileError",
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError", "TrajectoryError", "GainError", "ModelMismatchError", "BuildError",
-    "OutcomeWarning", "PlanError",
+    "OutcomeWarning", "PlanError", "UnsupportedMechanismError",
     # layer 3 (imported on first use)
     *_LAZY,
 ]
@@ -112,5 +115,3 @@ def __getattr__(name):
 def __dir__():
     return sorted(set(globals()) | set(__all__))
 
-
-_moved.install()

@@ -4,6 +4,7 @@
 Typical use:
   pm2dof demo                 the main job: Table 3 simulated, figures, repeated runs
   pm2dof table3 [--json]      the paper's Table 3: APD vs NA (and NA with Gamma = 0)
+  pm2dof simulate --reference F   controllers tracking a reference file (CSV or Parquet)
   pm2dof figures --out DIR    error, torque, theta_hat and repeated-run figures (PNG)
   pm2dof report               what the compiled model says (Me, cond(S^T S), rank of Y)
   pm2dof identify report      identifiable parameters (base parameters, null space)
@@ -17,6 +18,7 @@ Typical use:
   pm2dof bench [--json]       controller step time: C, Python binding, CasADi, NumPy, SymPy
   pm2dof models               the shipped models, with their descriptions
   pm2dof derive MYROBOT.toml  derive your own model file: C into generated/MYROBOT/ beside it
+  pm2dof export MODEL --out DIR   the controllers as a standalone C99 library (CMake)
 
 The model: every command that uses one takes --model NAME|PATH, a shipped model's name
 (`pm2dof models` lists them) or your model file (default: shang2010, the paper's robot), and
@@ -30,8 +32,8 @@ import sys
 import warnings
 from pathlib import Path
 
-from .analysis.progress import Progress
 from .core.errors import ArgumentError, OutcomeWarning, Pm2dofError
+from .infra.progress import Progress
 
 __all__ = ["main", "build_parser"]
 
@@ -128,6 +130,20 @@ def cmd_derive(args):
     if args.path and args.model and args.path != args.model:
         raise ArgumentError(f"give the model once: positional {args.path!r} or --model "
                          f"{args.model!r}, not both")
+    if not (args.path or args.model):
+        raise ArgumentError("pm2dof derive needs a model file: copy a shipped one with `pm2dof "
+                            "models --copy shang2010 ~/robots`, edit it, then `pm2dof derive "
+                            "~/robots/shang2010.toml` (`pm2dof models` lists them)")
+    from .core.generated import derive_is_current
+    try:
+        out, current, _ = derive_is_current(args.path or args.model, args.out,
+                                            library=not args.no_build)
+    except Pm2dofError:                 # a bad model file or folder: derive says what is wrong
+        current = False
+    if current and not args.force:     # no SymPy, no CasADi: well under a second
+        print(f"{out} is up to date (its manifest matches the model file, the derivation and "
+              f"its compiled library); --force derives again")
+        return 0
     from .derive.run import derive  # needs the [derive] extra (SymPy, CasADi); main() says so
     derive(args.path or args.model, args.out, force=args.force, build=not args.no_build,
            progress=lambda msg: print(msg, flush=True))
@@ -138,6 +154,23 @@ def cmd_table3(args):
     from .analysis.experiment import run_table3
     run_table3(_model(args), as_json=args.json, exact_encoders=args.exact_encoders,
                save=args.save, progress=_progress, include=tuple(args.include))
+    return 0
+
+
+def cmd_simulate(args):
+    import json
+
+    from .analysis.reference_file import reference_summary, simulate_reference
+    res = reference_summary(simulate_reference(_model(args), args.reference, args.controller,
+                                               split=args.split, settle_time=args.settle))
+    if args.json:
+        print(json.dumps(res, indent=1))
+        return 0
+    print(f"{'law':5s} {'RMSE m':>11s} {'max err m':>11s} {'peak tau':>9s} {'saturated':>9s}  "
+          f"outcome")
+    for law, r in res.items():
+        print(f"{law:5s} {r['rmse_m']:11.4e} {r['max_error_m']:11.4e} {r['peak_tau']:9.4g} "
+              f"{r['n_saturated']:9d}  {r['outcome_message']}")
     return 0
 
 
@@ -190,12 +223,14 @@ def cmd_identify_excite(args):
 
 
 def cmd_identify_fit(args):
+    from .analysis.experiment import seeded_table3
     from .identification.report import run_fit
     run_fit(args.log, model=args.model, generated=args.generated,
             excitation_file=args.excitation, duration=args.duration,
             quantise=not args.exact_encoders, controller=args.controller, save=args.save,
             as_json=args.json, cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
-            time_tolerance=args.time_tolerance, seed=args.seed_na,
+            time_tolerance=args.time_tolerance,
+            seed=seeded_table3 if args.seed_na else None,
             progress=_ident_progress(args))
     return 0
 
@@ -220,22 +255,6 @@ def cmd_identify_without_subcommand(args):
     raise ArgumentError("pm2dof identify needs a sub-command: report, excite, fit, design or "
                         "monte-carlo (plain `pm2dof identify` was replaced by: pm2dof identify "
                         "report, and pm2dof identify fit)")
-
-
-#: the flags that chose a mode of `pm2dof identify` before it had sub-commands -> the command
-#: that replaced each, and whether the flag took a value
-_IDENTIFY_REPLACED = {"--report": ("pm2dof identify report", 0),
-                      "--excite": ("pm2dof identify excite --out LOG", 0),
-                      "--data": ("pm2dof identify fit LOG", "?"),
-                      "--design-excitation": ("pm2dof identify design --out FILE", 0),
-                      "--monte-carlo": ("pm2dof identify monte-carlo N", "?")}
-
-
-class _Replaced(argparse.Action):
-    """A removed option: refused while parsing, naming the command that replaced it."""
-
-    def __call__(self, parser, namespace, values, option_string=None):
-        raise ArgumentError(f"pm2dof identify {option_string} was replaced by: {self.const}")
 
 
 def _wrap(text):
@@ -263,8 +282,6 @@ def _identify_parser(sub, common):
                            "  pm2dof identify excite --excitation exc.toml --out run.csv\n"
                            "  pm2dof identify fit run.csv --save theta.json --seed-na\n"
                            "  pm2dof identify monte-carlo 50 --excitation exc.toml"))
-    for flag, (new, nargs) in _IDENTIFY_REPLACED.items():
-        p.add_argument(flag, action=_Replaced, nargs=nargs, const=new, help=argparse.SUPPRESS)
     for flag in ("--model", "--generated"):   # before the sub-command: as after it
         p.add_argument(flag, dest=f"identify_{flag[2:]}", help=argparse.SUPPRESS)
     p.set_defaults(func=cmd_identify_without_subcommand)
@@ -391,8 +408,8 @@ def _per_actuator(values, n, flag):
 
 
 def cmd_maps(args):
-    from .analysis.results import dumps
     from .figures.maps import maps_figures
+    from .infra.results import dumps
     m = _model(args)
     tau_max = None if args.tau_max is None else _per_actuator(args.tau_max, m.n_legs, "--tau-max")
     summary, paths = maps_figures(m, args.out, args.resolution, tau_max=tau_max,
@@ -421,15 +438,8 @@ def cmd_study_run(args):
     if args.workers is not None and args.scheduler:
         raise ArgumentError("give --workers (an embedded cluster) or --scheduler (an existing "
                          "one), not both: an existing cluster's workers are started with it")
-    study = read_study(resolve_study(args.study), quick=args.quick)
-    if args.model is not None or args.generated is not None:  # override the study file's
-        import dataclasses
-        from .core.paths import resolve_model
-        study = dataclasses.replace(
-            study, model_path=(study.model_path if args.model is None
-                               else str(resolve_model(args.model).resolve())),
-            generated_path=(study.generated_path if args.generated is None
-                            else str(Path(args.generated).expanduser().resolve())))
+    study = read_study(resolve_study(args.study), quick=args.quick, model=args.model,
+                       generated=args.generated)       # --model, --generated: the file's replaced
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
                         timeout=args.timeout, progress=_progress)
@@ -476,7 +486,7 @@ def cmd_study_report(args):
 
 
 def cmd_study_bench(args):
-    from .analysis.results import dumps
+    from .infra.results import dumps
     from .studies.bench import format_study_bench, study_bench
     res = study_bench(quick=args.quick, progress=None if args.json else _progress)
     print(dumps(res) if args.json else format_study_bench(res))
@@ -555,7 +565,7 @@ def _study_parser(sub):
 
 
 def cmd_plan(args):
-    from .analysis.results import dumps, provenance, write_atomic
+    from .infra.results import dumps, provenance, write_atomic
     from .planning.report import closed_loop, csv_text, format_report, model_moves, plan_paths
     if args.tau_rate is not None and not args.smooth:
         raise ArgumentError("--tau-rate limits the smoothed plan's torque rate: add --smooth")
@@ -599,8 +609,8 @@ def cmd_plan(args):
 
 
 def cmd_bench(args):
-    from .analysis.results import dumps
     from .bench import format_bench, run_bench
+    from .infra.results import dumps
     res = run_bench(_model(args), quick=args.quick, progress=None if args.json else _progress)
     print(dumps(res) if args.json else format_bench(res))
     missed = [k for k, t in res["targets"].items() if t["pass"] is False]
@@ -608,6 +618,20 @@ def cmd_bench(args):
         print(f"pm2dof bench --strict: {len(missed)} target(s) missed: {', '.join(missed)}",
               file=sys.stderr)
         return 1
+    return 0
+
+
+def cmd_export(args):
+    from .export import export_project
+    if args.path and args.model and args.path != args.model:
+        raise ArgumentError(f"give the model once: positional {args.path!r} or --model "
+                            f"{args.model!r}, not both")
+    out = export_project(args.path or args.model, args.out, precision=args.precision,
+                         controllers=args.controllers, force=args.force,
+                         generated=args.generated, move=args.move)
+    print(f"wrote {out}: build and test it with\n  cmake -S {out} -B {out}/build && cmake "
+          f"--build {out}/build && ctest --test-dir {out}/build\n(docs/deploying.md: the API, "
+          f"a 2 ms interrupt, make -C {out}/embedded run for a Cortex-M under QEMU)")
     return 0
 
 
@@ -666,6 +690,24 @@ def build_parser():
                    help="also run these model-based controllers with Tables 1-2: ctc (computed "
                    "torque), lqr (time-varying LQR along each move; needs the control extra)")
     p.set_defaults(func=cmd_table3)
+    p = sub.add_parser("simulate", parents=[common], help="run controllers on a reference file",
+                       description="Simulate controllers (default NA and APD, gains of the model "
+                       "file) tracking a reference trajectory read from a CSV or Parquet file "
+                       "(columns t, x, y[, phi] and optionally their _dot and _ddot: "
+                       "docs/reference-format.md), and print RMSE (eq. 41), largest error, "
+                       "peak torque and saturated samples.",
+                       epilog="example: pm2dof simulate --reference ref.csv --controller na ctc")
+    p.add_argument("--reference", required=True, metavar="FILE",
+                   help="the reference, .csv or .parquet, sampled at the model's period")
+    p.add_argument("--controller", nargs="+", default=["na", "apd"],
+                   choices=["na", "apd", "ctc", "lqr"], metavar="LAW",
+                   help="na, apd, ctc, lqr (default: na apd)")
+    p.add_argument("--split", choices=["min_norm", "min_max", "preload"],
+                   help="torque split (default: [control].split)")
+    p.add_argument("--settle", type=_NONNEGATIVE, default=0.0, metavar="S",
+                   help="seconds of rest at the last sample after the reference (default 0)")
+    p.add_argument("--json", action="store_true", help="print the numbers as JSON")
+    p.set_defaults(func=cmd_simulate)
     p = sub.add_parser("figures", parents=[common], help="write the figures as PNG",
                        description="Write errors_<speed>.png (x and y error against time, APD "
                        "and NA, like the paper's Figs. 4-5), torques.png, theta_hat.png and "
@@ -792,8 +834,10 @@ def build_parser():
                        "libMODEL.so go into --out, by default generated/<stem>/ beside the model "
                        "file (~/robots/myrobot.toml -> ~/robots/generated/myrobot/), where "
                        "load_model and --model find them. A folder generated from another model "
-                       "file is not overwritten without --force. Needs the derivation extra: "
-                       "pip install 'pm2dof[derive]'.",
+                       "file is not overwritten without --force. When the folder is up to date "
+                       "(the manifest matches the model file, the derivation's sources, SymPy "
+                       "and CasADi, and the library its C), it says so and stops; --force "
+                       "derives again. Needs the derivation extra: pip install 'pm2dof[derive]'.",
                        formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
                            "examples:\n"
                            "  pm2dof models --copy shang2010 ~/robots   # a model file to edit\n"
@@ -803,9 +847,46 @@ def build_parser():
     p.add_argument("--out", metavar="DIR", help="folder for the generated code (default: "
                    "generated/<stem>/ beside the model file)")
     p.add_argument("--force", action="store_true",
-                   help="overwrite a folder that holds code generated from another model file")
+                   help="derive even if the folder is up to date, and overwrite a folder that "
+                        "holds code generated from another model file")
     p.add_argument("--no-build", action="store_true", help="generate C but do not compile it")
     p.set_defaults(func=cmd_derive)
+    p = sub.add_parser(
+        "export", parents=[common], help="the controllers as a standalone C99 library (CMake)",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        description=_wrap(
+            "Write a self-contained C99 project for MODEL's controllers into --out: its "
+            "generated C (copied, not re-derived), the API header include/<name>_pm2dof.h (fixed-"
+            "size structs; init, reset and one step per controller taking the encoder angles and "
+            "the reference and returning the torques and a status, the codes of pm2dof.Status; "
+            "fk, ik, the torque splits; the parameters' layout with the model file's values as "
+            "defaults), a CMakeLists.txt building a static library with a package config "
+            "(find_package(<name>_pm2dof)), a closed-loop example against the generated plant, a "
+            "ctest comparing the C closed loop with pm2dof.simulate, and embedded/ (Cortex-M4F and "
+            "M7 under QEMU). No heap, no global state, only the standard math functions; no Python "
+            "on the target."),
+        epilog="examples:\n"
+               "  pm2dof export shang2010 --out robot_c\n"
+               "  cmake -S robot_c -B robot_c/build && cmake --build robot_c/build && "
+               "ctest --test-dir robot_c/build\n"
+               "  pm2dof export ~/robots/myrobot.toml --out myrobot_c --precision single "
+               "--controllers na,apd\n"
+               "docs/deploying.md: the API, the sizes and times, a 2 ms interrupt")
+    p.add_argument("path", nargs="?", metavar="MODEL", help="a shipped model's name or your "
+                   "model file (the same as --model; default shang2010)")
+    p.add_argument("--out", required=True, metavar="DIR", help="the project folder (new or "
+                   "empty, unless --force)")
+    p.add_argument("--precision", default="double", metavar="double|single",
+                   help="double (default; equals pm2dof to the bit) or single: the same code "
+                   "with float, refused with the reason where float is not enough")
+    p.add_argument("--controllers", default="na,apd,ctc,lqr", metavar="LIST",
+                   help="comma-separated subset of na,apd,ctc,lqr (default all four; LQR's "
+                   "gains are inputs of its step)")
+    p.add_argument("--force", action="store_true", help="write into a non-empty --out (a "
+                   "previous export's files are replaced)")
+    p.add_argument("--move", metavar="NAME", help="the model file's move the example and the "
+                   "ctest run (default high)")
+    p.set_defaults(func=cmd_export)
     return ap
 
 
@@ -821,17 +902,18 @@ def _show_warning(message, category, filename, lineno, file=None, line=None,
 _EXTRAS = {"sympy": "derive", "casadi": "derive", "dask": "studies", "distributed": "studies",
            "pyarrow": "studies", "scipy": "ident", "control": "control"}
 _COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies",
-                   "table3": "control"}     # table3 --include lqr: SciPy's Riccati solver
+                   "table3": "control",     # table3 --include lqr: SciPy's Riccati solver
+                   "simulate": "control"}   # simulate --controller lqr: the same
 
 
 #: commands whose --out names a folder (the others' --out, and every --save, name a file)
-_OUT_FOLDERS = {"demo", "figures", "splits", "maps", "plan", "study"}
+_OUT_FOLDERS = {"demo", "figures", "splits", "maps", "plan", "study", "export"}
 
 
 def _check_outputs(args):
     """Refuse an output that cannot be written before any work: a --save or file --out that is
     a folder or lies under a file, a folder --out that is a file (OutputError)."""
-    from .analysis.results import output_folder, output_path
+    from .infra.results import output_folder, output_path
     if getattr(args, "save", None):
         output_path(args.save)
     out = getattr(args, "out", None)
@@ -840,13 +922,9 @@ def _check_outputs(args):
 
 
 def main(argv=None):
-    from .analysis import results
+    from .infra import results
     ap = build_parser()
-    try:
-        args = ap.parse_args(argv)
-    except Pm2dofError as exc:  # an option refused while parsing (a replaced one)
-        print(f"pm2dof: error: {exc}", file=sys.stderr)
-        return 2
+    args = ap.parse_args(argv)
     results.COMMAND_LINE = ["pm2dof", *(sys.argv[1:] if argv is None else argv)]
     global _progress
     _progress = Progress(quiet=getattr(args, "quiet", False))
@@ -862,8 +940,8 @@ def main(argv=None):
     except Pm2dofError as exc:  # a typed error: the input is refused, not a bug
         print(f"pm2dof: error: {exc}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print("\npm2dof: interrupted", file=sys.stderr)
+    except KeyboardInterrupt as exc:
+        print(f"\npm2dof: interrupted{f' ({exc})' if str(exc) else ''}", file=sys.stderr)
         return 130
     except ModuleNotFoundError as exc:
         module = (exc.name or "").split(".")[0]

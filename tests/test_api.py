@@ -1,16 +1,16 @@
-# The public API: every name in pm2dof.__all__, old import paths, and the README's code kept honest.
+# The public API: every name in pm2dof.__all__, and the README's code kept honest.
 """The contract with users.
 
 * Every name in ``pm2dof.__all__`` imports from ``pm2dof`` (the lazy ones too) and is the
   object of its home module.
 * The names the controllers issue promised exist exactly there (``pm2dof.NAController``...).
-* Old module paths of pm2dof 0.1 fail with a ModuleNotFoundError naming the new place.
 * The README's Python blocks run, in order, in one namespace (a fresh interpreter), and so do
   those of each page of the documentation site (docs/*.md, one interpreter per page); every
   ``pm2dof ...`` command line in their shell blocks parses with the real CLI parser, and every
   ``make`` target they name exists. So neither the README nor the docs can drift from the code.
-* The README's links into docs/ exist, and the API reference page (docs/api.md) documents
-  exactly the names of ``pm2dof.__all__``, each from the module that holds it.
+* The README's links into docs/ exist, the home page (docs/index.md) links every page, and
+  the API reference page (docs/api.md) documents exactly the names of ``pm2dof.__all__``,
+  each from the module that holds it.
 """
 import importlib
 import os
@@ -25,7 +25,6 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof._moved import MOVED
 
 REPO = Path(__file__).resolve().parent.parent
 README = REPO / "README.md"
@@ -67,29 +66,6 @@ def test_lazy_names_resolve_to_their_home_objects():
     assert pm2dof.table3 is table3 and pm2dof.run_bench is run_bench
     with pytest.raises(AttributeError, match="no attribute 'no_such_name'"):
         pm2dof.no_such_name  # noqa: B018
-
-
-@pytest.mark.parametrize("old", sorted(MOVED))
-def test_old_module_paths_fail_naming_the_new_place(old):
-    new, hint = MOVED[old][:2]
-    with pytest.raises(ModuleNotFoundError) as info:
-        importlib.import_module(old)
-    msg = str(info.value)
-    assert new in msg and hint in msg, msg
-    importlib.import_module(new)  # the new place exists
-    hinted = re.match(r"from (\S+) import (.+)$", hint)
-    if hinted:  # and the hint is right: what it names imports
-        mod = importlib.import_module(hinted.group(1))
-        for name in hinted.group(2).split(", "):
-            assert hasattr(mod, name.strip()), (hint, name)
-
-
-def test_old_from_import_form_fails_the_same_way():
-    with pytest.raises(ModuleNotFoundError, match=r"pm2dof\.control\.controllers"):
-        exec("from pm2dof.controllers import NAController", {})  # noqa: S102
-    with pytest.raises(ModuleNotFoundError, match=r"pm2dof\.control\.simulate"):
-        exec("from pm2dof.simulate import simulate", {})  # noqa: S102
-    assert callable(pm2dof.simulate)  # the failed import did not replace the function
 
 
 def test_controller_step_refuses_a_wrong_shape():
@@ -185,6 +161,14 @@ def test_readme_links_into_the_docs_exist():
     assert len(links) >= 5, links
     missing = [link for link in links if not (REPO / link).is_file()]
     assert not missing, f"README links to missing files: {missing}"
+
+
+def test_the_home_page_links_every_page():
+    """docs/index.md links every other page of the site (every results page among them)."""
+    links = set(re.findall(r"\]\(([\w-]+\.md)", (DOCS / "index.md").read_text()))
+    pages = {p.name for p in DOC_PAGES} - {"index.md"}
+    assert pages <= links, f"not linked from docs/index.md: {sorted(pages - links)}"
+    assert {p for p in pages if p.startswith("results-")} and links <= pages | {"index.md"}
 
 
 def test_api_page_documents_exactly_all():

@@ -70,3 +70,15 @@ def test_type2_minimum_and_capability_ratio_on_both_grids(m):
                if line.startswith("| ratio min-max / min-norm"))
     assert [c.strip().strip("*") for c in row.split("|")[2:5]] == \
         [f"{ratio[k]:.3f}" for k in ("min", "median", "max")], row
+
+
+def test_deploying_double_rmse_is_simulates(m):
+    """docs/deploying.md's single-precision table: its double column is pm2dof.simulate's
+    (the exported C equals it to 1e-12, tests/export); the single column comes from a C build
+    (`pm2dof export --precision single`, its ctest) and is regenerated with it."""
+    page = DOCS["deploying"]
+    for speed in ("high", "low"):
+        for law, cls in (("NA", pm2dof.NAController), ("APD", pm2dof.APDController),
+                         ("CTC", pm2dof.CTCController)):
+            r = pm2dof.simulate(m, cls(m), pm2dof.paper_move(speed)).rmse
+            assert f"| {speed} | {law} | {r:.4e} m |" in page, (speed, law, f"{r:.4e}")

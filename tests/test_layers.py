@@ -4,6 +4,8 @@
 * Static: every import statement of every module (top level and inside functions, absolute or
   relative) is resolved, and a module of one sub-package may import only the sub-packages and
   third-party libraries its layer allows (:data:`ALLOWED`, :data:`THIRD_PARTY`).
+* docs/developing.md's table of the layers says the same as :data:`ALLOWED` and
+  :data:`THIRD_PARTY`.
 * Dynamic: in a fresh interpreter, ``import pm2dof`` (and its core and control layers, and a
   controller step and a rollout) loads none of SymPy, CasADi, matplotlib, Dask, pyarrow, SciPy.
 
@@ -25,31 +27,35 @@ ALLOWED = {
     "derive": {"core", "derive"},                       # build time: SymPy, CasADi -> C
     "control": {"core", "control"},                     # 2: controllers, rollouts
     "reference": {"core", "reference"},                 # beside: NumPy formulations
+    "infra": {"core", "infra"},                         # below 3: result files, progress
     "linear": _RUNTIME | {"linear"},                    # 3: linearisation, LQR (SciPy)
-    "analysis": _RUNTIME | {"analysis", "linear"},      # 3: experiment, reports, results
-    "identification": _RUNTIME | {"analysis", "identification"},   # 3: logs, excitation, fit
-    "planning": _RUNTIME | {"analysis", "planning"},    # 3: motion planning (issue 20)
-    "bench": _RUNTIME | {"analysis", "reference", "bench", "derive", "planning", "linear"},
-    "studies": _RUNTIME | {"analysis", "identification", "studies", "linear"},   # 3: Dask
-    "figures": _RUNTIME | {"analysis", "studies", "figures", "planning", "linear"},   # 4
-    "cli": _RUNTIME | {"analysis", "identification", "bench", "studies", "figures", "cli",
-                       "derive", "planning", "linear"},                         # 4
-    "__init__": _RUNTIME | {"_moved"},                  # the public API (lazy names aside)
+    "analysis": _RUNTIME | {"infra", "analysis", "linear"},   # 3: experiment, reports, maps
+    "identification": _RUNTIME | {"infra", "identification"},   # 3: logs, excitation, fit
+    "planning": _RUNTIME | {"infra", "planning"},       # 3: motion planning (issue 20)
+    "bench": _RUNTIME | {"infra", "reference", "bench", "derive", "planning", "linear"},
+    "export": _RUNTIME | {"export"},                    # beside bench: C projects (issue 27)
+    "studies": _RUNTIME | {"infra", "identification", "studies", "linear"},   # 3: Dask
+    "figures": _RUNTIME | {"infra", "analysis", "studies", "figures", "planning", "linear"},  # 4
+    "cli": _RUNTIME | {"infra", "analysis", "identification", "bench", "studies", "figures",
+                       "cli", "derive", "planning", "linear", "export"},                  # 4
+    "__init__": _RUNTIME,                               # the public API (lazy names aside)
     "__main__": {"cli"},
-    "_moved": set(),
 }
 # sub-package -> third-party top-level modules it may import (besides the standard library)
 _HEAVY = {"sympy", "casadi", "matplotlib", "dask", "distributed", "pyarrow", "scipy"}
 THIRD_PARTY = {
     "core": {"numpy"}, "control": {"numpy"}, "reference": {"numpy"}, "__init__": set(),
-    "__main__": set(), "_moved": set(),
-    "analysis": {"numpy", "tqdm"},
+    "__main__": set(),
+    "infra": {"numpy", "tqdm", "pyarrow"},     # tqdm: the progress bars; pyarrow: Parquet tables,
+    #                                            lazily (infra/tables.py)
+    "analysis": {"numpy"},
     "identification": {"numpy", "scipy", "casadi", "pyarrow"},   # the ident extra; lazily
     "linear": {"numpy", "scipy", "control"},            # the [control] extra (python-control)
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
     "bench": {"numpy", "casadi", "sympy", "toppra", "pinocchio", "mujoco"},  # optional baselines
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
-    "planning": {"numpy", "casadi", "tqdm"},            # CasADi only in plan_smooth (lazily)
+    "planning": {"numpy", "casadi"},                    # CasADi only in plan_smooth (lazily)
+    "export": {"numpy"},                                # copies generated C: no CasADi
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},
     "cli": set(),
 }
@@ -90,8 +96,8 @@ def test_every_sub_package_has_a_declared_layer():
     units = {_unit(p) for p in MODULES}
     assert units <= set(ALLOWED), f"undeclared sub-packages: {sorted(units - set(ALLOWED))}"
     assert units <= set(THIRD_PARTY)
-    assert {"core", "control", "analysis", "identification", "bench", "figures", "reference", "cli",
-            "derive"} <= units
+    assert {"core", "control", "infra", "analysis", "identification", "bench", "figures",
+            "reference", "cli", "derive"} <= units
 
 
 @pytest.mark.parametrize("path", MODULES, ids=lambda p: str(p.relative_to(PKG)))
@@ -116,7 +122,7 @@ def test_the_checker_sees_relative_and_function_level_imports(tmp_path):
     found = {m for _, m in _imports(src)}
     assert {"pm2dof.core._cbind", "pm2dof.core.errors", "numpy"} <= found, found
     found = {m for _, m in _imports(PKG / "figures" / "experiment.py")}
-    assert "matplotlib" in found and "pm2dof.analysis.results" in found, found
+    assert "matplotlib" in found and "pm2dof.infra.results" in found, found
 
 
 _PROBE = r"""
@@ -157,3 +163,19 @@ def test_importing_an_unbuilt_source_tree_says_what_is_missing(tmp_path):
                     f"missing from {tmp_path / 'pm2dof' / 'core'}; build it with `pip install "
                     f"-e .` (or `make install`) in the source tree"), r.stderr
     assert "circular import" not in r.stderr
+
+
+def test_the_developing_page_lists_every_layer_as_here():
+    """docs/developing.md's table of the layers is ALLOWED and THIRD_PARTY, row for row."""
+    import re
+    page = (PKG.parent / "docs" / "developing.md").read_text()
+    rows = {}
+    for line in page.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == 5 and re.fullmatch(r"`\w+`", cells[0]):
+            rows[cells[0].strip("`")] = (set(re.findall(r"`(\w+)`", cells[3])),
+                                         set(re.findall(r"`(\w+)`", cells[4])))
+    assert set(rows) == set(ALLOWED), sorted(set(rows) ^ set(ALLOWED))
+    for unit, (pm2dof, third) in rows.items():
+        assert pm2dof == ALLOWED[unit], (unit, sorted(pm2dof ^ ALLOWED[unit]))
+        assert third == THIRD_PARTY[unit], (unit, sorted(third ^ THIRD_PARTY[unit]))

@@ -4,9 +4,10 @@ import numpy as np
 from ..control.controllers import APDController, CTCController, NAController
 from ..control.simulate import simulate, theta_truth
 from ..control.trajectory import line_moves, model_move
-from .progress import bar
+from ..infra.progress import bar
 
-__all__ = ["PAPER_TABLE3", "table3", "table3_json", "format_table3",
+__all__ = ["PAPER_TABLE3", "is_paper_robot", "table3", "table3_json", "seeded_table3",
+           "format_table3",
            "run_table3", "repeated_runs", "sensitivity", "format_sensitivity"]
 
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
@@ -14,6 +15,16 @@ PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percen
                 "high": {"apd_rmse": 4.7136e-4, "na_rmse": 2.8299e-4, "rpe_percent": 39.96}}
 """Table 3 of the paper, measured on the real robot: {move: {"apd_rmse", "na_rmse" (eq. 41, m),
 "rpe_percent" (100 (APD - NA) / APD)}} for the moves "low" and "high"."""
+
+
+def is_paper_robot(model):
+    """Whether ``model`` has the geometry of the paper's robot (the shipped shang2010's legs:
+    bases, link lengths, elbows); only then is Table 3's measured column a comparison."""
+    from ..core.model_file import read_model_file
+    from ..core.paths import SHIPPED_MODELS
+    paper = read_model_file(SHIPPED_MODELS / "shang2010.toml").legs
+    return [(tuple(l.base), l.la, l.lb, l.elbow) for l in model.spec.legs] == \
+        [(tuple(l.base), l.la, l.lb, l.elbow) for l in paper]
 
 
 def rpe(apd_rmse, na_rmse):
@@ -39,10 +50,23 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, include
            **controller_options):
     """Run APD, NA and NA with Gamma = 0 on each move. Returns {speed: {name: SimResult}}.
 
-    ``controller_options`` (e.g. ``velocity_filter_hz``) go to all the controllers alike;
-    ``truth`` replaces the plant truth (see :func:`pm2dof.plant_truth`); ``include`` adds
-    model-based controllers of :data:`EXTRA_CONTROLLERS` ("ctc": computed torque, "lqr":
-    time-varying LQR along each move), each with the nominal model (Tables 1-2).
+    Parameters
+    ----------
+    model : Model
+        The robot; its line moves are the moves, its ``[plant]`` the simulated plant.
+    speeds : list of str, optional
+        The moves to run (default: every line move of the model, the paper's "low", "high").
+    quantise : bool
+        Encoder quantisation in the rollouts (``pm2dof table3 --exact-encoders``: False).
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        Stage lines; a ``Progress`` also draws a bar over the rollouts.
+    truth : dict, optional
+        Replaces the plant truth (see :func:`pm2dof.plant_truth`).
+    include : sequence of str
+        Model-based controllers of :data:`EXTRA_CONTROLLERS` to add ("ctc": computed torque,
+        "lqr": time-varying LQR along each move), each with the nominal model (Tables 1-2).
+    **controller_options
+        Go to all the controllers alike (e.g. ``velocity_filter_hz``).
     """
     speeds = list(line_moves(model)) if speeds is None else speeds
     unknown = sorted(set(include) - set(EXTRA_CONTROLLERS))
@@ -90,27 +114,56 @@ def table3_json(results):
     return out
 
 
-def format_table3(numbers):
-    """A text table like the paper's Table 3, simulated beside measured."""
+def seeded_table3(model, theta):
+    """Table 3 with the controllers' model = Tables 1-2 and = ``theta`` (identified).
+
+    ``pm2dof identify fit --seed-na`` passes it to
+    :func:`pm2dof.identification.report.run_fit` (identification does not import the paper's
+    experiment).
+
+    Parameters
+    ----------
+    model : Model
+        The robot; its ``[plant]`` is the simulated plant.
+    theta : array_like, shape (p,)
+        The controllers' model of theta, e.g. an identified ``theta0``.
+
+    Returns
+    -------
+    dict
+        {speed: {"nominal": table3 numbers, "identified": table3 numbers}} (RMSE in m,
+        RPE in percent; see :func:`table3_json`).
+    """
+    nominal = table3_json(table3(model))
+    identified = table3_json(table3(model, theta0=np.asarray(theta, dtype=float)))
+    return {s: {"nominal": nominal[s], "identified": identified[s]} for s in nominal}
+
+
+def format_table3(numbers, paper=True):
+    """A text table like the paper's Table 3, simulated beside measured (``paper``: the model
+    is the paper's robot, :func:`is_paper_robot`; for another robot the measured columns are
+    left out, they are not its numbers)."""
     extra = [x for x in EXTRA_CONTROLLERS if all(f"{x}_rmse" in r for r in numbers.values())]
     lines = ["RMSE of the end-effector position (eq. 41), m. Simulated here | measured in the "
-             "paper (Table 3).",
+             "paper (Table 3)." if paper else
+             "RMSE of the end-effector position (eq. 41), m, simulated (the paper's measured "
+             "Table 3 is of its own robot, not this one: not shown).",
              f"{'speed':6s} {'APD sim':>11s} {'NA sim':>11s} {'NA G=0 sim':>11s} {'RPE sim':>8s}"
-             f" | {'APD paper':>11s} {'NA paper':>11s} {'RPE paper':>9s}"
+             + (f" | {'APD paper':>11s} {'NA paper':>11s} {'RPE paper':>9s}" if paper else "")
              + "".join(f" | {x.upper() + ' sim':>11s}" for x in extra)]
     def cell(x, width, spec, none="-"):   # None: no paper number, or a run that failed
         return f"{x:{width}{spec}}" if x is not None and np.isfinite(x) else f"{none:>{width}s}"
 
     failed = []
     for speed, r in numbers.items():
-        paper = PAPER_TABLE3.get(speed, {})
+        measured = PAPER_TABLE3.get(speed, {})
         lines.append(f"{speed:6s} {cell(r['apd_rmse'], 11, '.4e', 'failed')} "
                      f"{cell(r['na_rmse'], 11, '.4e', 'failed')} "
                      f"{cell(r['na_no_adaptation_rmse'], 11, '.4e', 'failed')} "
-                     f"{cell(r['rpe_percent'], 7, '.2f', 'n/a')}% | "
-                     f"{cell(paper.get('apd_rmse'), 11, '.4e')} "
-                     f"{cell(paper.get('na_rmse'), 11, '.4e')} "
-                     f"{cell(paper.get('rpe_percent'), 8, '.2f')}%"
+                     f"{cell(r['rpe_percent'], 7, '.2f', 'n/a')}%"
+                     + (f" | {cell(measured.get('apd_rmse'), 11, '.4e')} "
+                        f"{cell(measured.get('na_rmse'), 11, '.4e')} "
+                        f"{cell(measured.get('rpe_percent'), 8, '.2f')}%" if paper else "")
                      + "".join(f" | {cell(r[f'{x}_rmse'], 11, '.4e', 'failed')}" for x in extra))
         failed += [f"  {speed} {k}: {msg}" for k, msg in r.get("outcomes", {}).items()]
     lines.append("RPE = 100 (APD - NA) / APD: positive when NA tracks better.")
@@ -129,10 +182,10 @@ def run_table3(model, *, as_json=False, exact_encoders=False, save=None, echo=pr
     ``save`` is a path for the numbers and their provenance (JSON); ``include`` adds
     controllers (:data:`EXTRA_CONTROLLERS`). Returns the numbers.
     """
-    from .results import dumps, provenance, write_json
+    from ..infra.results import dumps, provenance, write_json
     numbers = table3_json(table3(model, quantise=not exact_encoders,
                                  progress=None if as_json else progress, include=include))
-    echo(dumps(numbers) if as_json else format_table3(numbers))
+    echo(dumps(numbers) if as_json else format_table3(numbers, is_paper_robot(model)))
     if save:
         write_json(save, {**numbers, "provenance": provenance(model)})
         if not as_json:

@@ -14,12 +14,20 @@ s_i of S scaled by tau_max,i. The largest force available in *every* direction i
 r_mm >= r_mn always; their ratio is the gain from using the redundancy properly. The same at
 rest for accelerations, xedd = Me^-1 f (eq. 12 with xed = 0, friction aside): the zonotope's
 generators become Me^-1 s_i tau_max,i and the min-norm rows (P Me)_i.
+
+In a task space of m = 3 (a platform: force x, y and moment phi, N and N m) the zonotope's
+facets are spanned by pairs of generators, with normals g_i x g_j (as the generated min-max
+split, derive/splits.py); the radius is then that of the largest ball in the (x, y, phi)
+coordinates as they are (N and N m taken alike). The grid of :func:`workspace_maps` is over
+(x, y), from the reach discs of RR legs meeting at a point: other mechanisms are refused
+(UnsupportedMechanismError) until a reach box is defined for their legs.
 """
 import numpy as np
 
 from ..core.errors import ArgumentError, WorkspaceError
+from ..core.task import require_rr_point
 from ..control.simulate import pose_measures
-from .progress import bar
+from ..infra.progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
            "maps_summary", "format_maps_summary", "FIELDS"]
@@ -38,26 +46,45 @@ FIELDS = {
 }
 
 
-def zonotope_inradius(G):
-    """Radius of the largest origin-centred circle inside the zonotope sum_i [-1, 1] g_i.
+def _facet_normals(G):
+    """Unit normals of the facets of the zonotope sum_i [-1, 1] g_i, ``G`` (k, m) nonzero rows:
+    m = 2, each generator's perpendicular; m = 3, g_i x g_j of each non-parallel pair."""
+    m = G.shape[1]
+    if m == 2:
+        return np.stack([-G[:, 1], G[:, 0]], axis=1) / np.hypot(G[:, 0], G[:, 1])[:, None]
+    if m != 3:
+        raise ArgumentError(f"zonotope_inradius: generators of dimension 2 or 3, got {m}")
+    i, j = np.triu_indices(len(G), 1)
+    N = np.cross(G[i], G[j])
+    size = np.linalg.norm(N, axis=1)
+    keep = size > 1e-12 * np.linalg.norm(G[i], axis=1) * np.linalg.norm(G[j], axis=1)
+    return N[keep] / size[keep, None]       # a parallel pair spans no facet (rounding noise)
 
-    ``G`` (n, 2): the generators g_i as rows. Zero for n < 2 or rank < 2 (the zonotope is flat).
+
+def zonotope_inradius(G):
+    """Radius of the largest origin-centred circle (ball, in 3-D) inside the zonotope
+    sum_i [-1, 1] g_i.
+
+    ``G`` (n, m), m = 2 or 3: the generators g_i as rows. Zero for n < m or rank < m (the
+    zonotope is flat).
     """
     G = np.asarray(G, dtype=float)
-    norms = np.hypot(G[:, 0], G[:, 1])
-    keep = norms > 0
-    G, norms = G[keep], norms[keep]
-    if len(G) < 2:
+    G = G[np.linalg.norm(G, axis=1) > 0]
+    if len(G) < G.shape[1]:
         return 0.0
-    perp = np.stack([-G[:, 1], G[:, 0]], axis=1) / norms[:, None]   # unit edge normals
+    perp = _facet_normals(G)                                        # unit facet normals
+    if len(perp) == 0:
+        return 0.0
     support = np.abs(G @ perp.T).sum(axis=0)                         # h(perp_j) = sum_i |g_i.n_j|
     return float(support.min())
 
 
 def min_norm_radius(P, tau_max):
-    """Largest |f| with |(P f)_i| <= tau_max,i for every direction of f: min_i tau_max,i/|P_i|."""
+    """Largest |f| with |(P f)_i| <= tau_max,i for every direction of f: min_i tau_max,i/|P_i|
+    (``P`` (n, m))."""
     P = np.asarray(P, dtype=float)
-    return float(np.min(np.asarray(tau_max, dtype=float) / np.hypot(P[:, 0], P[:, 1])))
+    norms = np.hypot(P[:, 0], P[:, 1]) if P.shape[1] == 2 else np.linalg.norm(P, axis=1)
+    return float(np.min(np.asarray(tau_max, dtype=float) / norms))
 
 
 def _unchecked(model, short, shape, *args):
@@ -72,15 +99,29 @@ def capability(model, q, theta=None, tau_max=None):
     """Force and acceleration capability at the pose ``q`` (2n,), also inside the singularity
     thresholds (the measure of a map, not a controller's pose).
 
-    Returns a dict of force_min_norm, force_min_max (N), accel_min_norm, accel_min_max
-    (m/s^2, at rest, with Me of ``theta``, default Tables 1-2) and cond_StS.
+    Parameters
+    ----------
+    model : Model
+        The robot.
+    q : array_like (2n,)
+        The pose: every joint angle, rad.
+    theta : array_like (5n,), optional
+        Parameters for Me (default Tables 1-2).
+    tau_max : array_like (n,), optional
+        Actuator limits, N*m (default ``[limits].tau_max``).
+
+    Returns
+    -------
+    dict
+        force_min_norm, force_min_max (N), accel_min_norm, accel_min_max (m/s^2, at rest,
+        with Me of ``theta``) and cond_StS.
     """
     theta = model.theta_nominal if theta is None else theta
     w = np.asarray(model.spec.limits["tau_max"] if tau_max is None else tau_max, dtype=float)
-    n = model.n_legs
+    n, m = model.n_legs, model.dof
     q = np.ascontiguousarray(q, dtype=float)
-    S = _unchecked(model, "S", (n, 2), q)
-    Me = _unchecked(model, "Me", (2, 2), q, np.ascontiguousarray(theta, dtype=float))
+    S = _unchecked(model, "S", (n, m), q)
+    Me = _unchecked(model, "Me", (m, m), q, np.ascontiguousarray(theta, dtype=float))
     StS = S.T @ S
     P = S @ np.linalg.inv(StS)                     # eq. 21: tau = S (S^T S)^-1 f
     Mi = np.linalg.inv(Me)
@@ -94,6 +135,7 @@ def capability(model, q, theta=None, tau_max=None):
 
 
 def _grid(model, resolution):
+    require_rr_point(model, "workspace_maps' grid (the box of the RR legs' reach discs)")
     legs = model.spec.legs
     lo = np.max([np.asarray(l.base) - (l.la + l.lb) for l in legs], axis=0)
     hi = np.min([np.asarray(l.base) + (l.la + l.lb) for l in legs], axis=0)
@@ -107,12 +149,16 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
 
     Parameters
     ----------
+    model : Model
+        The robot.
     resolution : int
         Grid points per axis over the box where every leg can reach.
     theta : array_like (5n,), optional
         Parameters for Me (default Tables 1-2, the controllers' nominal model).
     tau_max : array_like (n,), optional
         Actuator limits, N*m (default ``[limits].tau_max``).
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        Stage lines; a ``Progress`` also draws a bar over the poses.
 
     Returns
     -------

@@ -1,9 +1,10 @@
 # Model report: what the compiled model says about the robot over its workspace (pm2dof report).
 import numpy as np
 
+from ..control.trajectory import line_moves
 from ..core.errors import SingularityError, WorkspaceError
 
-__all__ = ["model_report"]
+__all__ = ["model_report", "report_pose"]
 
 
 def _grid(m, n=41):
@@ -21,8 +22,40 @@ def _grid(m, n=41):
     return pts
 
 
+def report_pose(m, pts=None):
+    """(xe (2,), what) where the report evaluates Me: the midpoint of the model's first line
+    move, or without one (or outside the workspace) the grid point of :func:`_grid` farthest
+    from both singularities."""
+    for name in line_moves(m):
+        t = m.spec.trajectories[name]
+        xe = (np.asarray(t["start"], float) + np.asarray(t["end"], float)) / 2
+        try:
+            m.W(m.ik(xe))
+            return xe, f"midpoint of the model's move {name!r}"
+        except (WorkspaceError, SingularityError):
+            break
+    pts = _grid(m) if pts is None else pts
+    if not pts:
+        raise WorkspaceError(f"model {m.name!r}: no grid point between its bases is inside "
+                             f"its workspace and clear of both singularities")
+    best = max(pts, key=lambda p: (np.asarray(m.singularity_measures(p[2])) /
+                                   [m.singularity_threshold,
+                                    m.parallel_singularity_threshold]).min())
+    return np.array(best[:2]), "the grid point farthest from both singularities"
+
+
 def model_report(m, seed=0, samples=200):
-    """A text report: parameters, Me at the path's midpoint, cond(S^T S) and rank of Y.
+    """A text report: parameters, Me at the model's own pose (:func:`report_pose`),
+    cond(S^T S) and rank of Y.
+
+    Parameters
+    ----------
+    m : Model
+        The robot.
+    seed : int
+        Seed of the random states over which Y is stacked.
+    samples : int
+        How many grid points (at most) Y is stacked at, one random state each.
 
     Returns
     -------
@@ -34,14 +67,14 @@ def model_report(m, seed=0, samples=200):
     lines.append("  theta_nominal (Tables 1-2):")
     for name, value in zip(m.param_names, m.theta_nominal):
         lines.append(f"    {name:8s} {value:9.4f}")
-    xe = np.array([0.245, 0.265])  # midpoint of the paper's path (0.22,0.29) -> (0.27,0.24)
+    pts = _grid(m)
+    xe, what = report_pose(m, pts)
     q = m.ik(xe)
     Me = m.Me(q, m.theta_nominal)
-    lines.append(f"  at xe = {xe.tolist()} m (midpoint of the paper's path):")
+    lines.append(f"  at xe = {np.round(xe, 6).tolist()} m ({what}):")
     lines.append(f"    q  = {np.round(q, 4).tolist()} rad")
     lines.append(f"    Me = [[{Me[0, 0]:.4f}, {Me[0, 1]:.4f}], [{Me[1, 0]:.4f}, {Me[1, 1]:.4f}]] kg, "
                  f"eigenvalues {np.round(np.linalg.eigvalsh(Me), 4).tolist()}")
-    pts = _grid(m)
     conds, sings = [], []
     Ys = []
     for x, y, qq in pts:

@@ -20,7 +20,7 @@ import numpy as np
 from ..control.controllers import SPLITS, APDController, NAController, per_actuator
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
-from .progress import bar
+from ..infra.progress import bar
 
 __all__ = ["split_comparison", "format_split_comparison", "tau_max_sweep", "run_splits",
            "preload_settings"]
@@ -32,7 +32,7 @@ def _row(r, preload=None, preload_sign=None):
     """The numbers of one run; with ``preload`` and ``preload_sign`` (n,) also
     ``preload_margin`` = min over the move's samples and actuators of sigma_i tau_i - p_i, N*m."""
     e = r.e[:r.n_move]
-    row = {"rmse": r.rmse, "max_error": float(np.max(np.hypot(e[:, 0], e[:, 1]))),
+    row = {"rmse": r.rmse, "max_error": float(np.max(np.hypot(e[:, 0], e[:, 1]))),   # (x, y)
            "n_saturated": r.n_saturated, "n_preload_infeasible": r.n_preload_infeasible,
            "n_singular": r.n_singular, "peak_tau": r.peak_tau,
            "rms_tau": float(np.sqrt(np.mean(r.tau_a[:r.n_move] ** 2)))}
@@ -65,6 +65,14 @@ def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speed
         of 0 still keeps the signs.
     speeds : list of str, optional
         Moves of ``[trajectories]`` (default: all).
+    splits : sequence of str
+        The torque splits to compare (default: all, ``pm2dof.control.controllers.SPLITS``).
+    controllers : sequence of str
+        "apd", "na" or both.
+    quantise : bool
+        Encoder quantisation in the rollouts.
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        Stage lines; a ``Progress`` also draws a bar over the rollouts.
 
     Returns
     -------
@@ -165,7 +173,7 @@ def format_split_comparison(numbers, tau_max, preload, preload_sign):
 def run_splits(model, tau_max=None, preload=None, preload_sign=None, as_json=False,
                progress=None):
     """The ``pm2dof splits`` command: the table (or JSON) at one limit. Returns the numbers."""
-    from .results import dumps
+    from ..infra.results import dumps
     n = model.n_legs
     w = model.spec.limits["tau_max"] if tau_max is None else np.broadcast_to(
         np.asarray(tau_max, dtype=float), (n,))

@@ -11,9 +11,7 @@ __all__ = ["reference_geometry", "operating_point", "random_cases", "c_step", "l
 
 def reference_geometry(model):
     from ..reference.model import Geometry
-    legs = model.spec.legs
-    return Geometry(bases=model.bases, la=[l.la for l in legs], lb=[l.lb for l in legs],
-                    elbow=[l.elbow for l in legs], fk_branch=model.spec.fk_branch)
+    return Geometry.of_model(model)      # RR legs at a point only: others refused, saying why
 
 
 def operating_point(model, ctrl, traj, k):
@@ -85,7 +83,7 @@ def lambdify_step(model, layouts):
     sym, kin, dyn = d.sym, d.kin, d.dyn
     n = model.n_legs
     qa_s, q_s = list(sym.qa), list(sym.q)
-    modules = [{"sgn": lambda v: 1.0 if v >= 0 else -1.0}, "numpy"]  # sgn(0) = +1, as the C
+    modules = [{"sgn": np.sign}, "numpy"]  # sgn(0) = 0, as the C
 
     def lam(args, expr):
         return sp.lambdify(args, expr, modules, cse=True)

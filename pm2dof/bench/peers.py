@@ -18,6 +18,7 @@ acceleration is reported. A peer that is not installed (``pip install pin mujoco
 """
 import numpy as np
 
+from ..core.task import is_rr_point
 from .timing import rel_diff, stats, time_interleaved
 
 __all__ = ["peer_bench"]
@@ -31,7 +32,7 @@ def peer_bench(model, na, op, qa_prev, state, repeats, batch_s, c_inner, notes):
     xe, xed, tau, th = state
     n = model.n_legs
     fd, f_fd = model.forward_dynamics, model.function("forward_dynamics")
-    buf, fd_outs = np.empty(2), [np.empty(s) for s in f_fd.sizes_out]
+    buf, fd_outs = np.empty(model.dof), [np.empty(s) for s in f_fd.sizes_out]
     state0, qa, xd, xd_dot, xd_ddot = op
     f_na = model.function("na_step")
     na_outs = [np.empty(s) for s in f_na.sizes_out]
@@ -57,13 +58,24 @@ def peer_bench(model, na, op, qa_prev, state, repeats, batch_s, c_inner, notes):
     th0 = np.array(th, dtype=float)
     th0[3 * n:] = 0.0                                    # the peers have no friction
     ours0 = model.forward_dynamics(xe, xed, tau, th0)
-    try:
-        from .pinocchio_baseline import PinocchioRobot
-        pin = PinocchioRobot(model, th0)
-    except ImportError as exc:
-        notes["pinocchio_forward_dynamics_python_us"] = (
-            f"pinocchio is not importable ({exc}); `pip install pin` adds the baseline")
+    pin = mj = None
+    if not is_rr_point(model.spec):
+        why = f"model {model.name!r} is not RR legs with a point end effector (the peers' robot)"
+        notes["pinocchio_forward_dynamics_python_us"] = notes["mujoco_forward_python_us"] = why
     else:
+        try:
+            from .pinocchio_baseline import PinocchioRobot
+            pin = PinocchioRobot(model, th0)
+        except ImportError as exc:
+            notes["pinocchio_forward_dynamics_python_us"] = (
+                f"pinocchio is not importable ({exc}); `pip install pin` adds the baseline")
+        try:
+            from .mujoco_baseline import MujocoRobot
+            mj = MujocoRobot(model, th0)
+        except ImportError as exc:
+            notes["mujoco_forward_python_us"] = (
+                f"mujoco is not importable ({exc}); `pip install mujoco` adds the baseline")
+    if pin is not None:
         q, v, tq = pin.state(xe, xed, tau)
         res["agreement_pinocchio_forward_dynamics"] = rel_diff(pin.tip_acceleration(q, v, tq),
                                                                ours0)
@@ -73,13 +85,7 @@ def peer_bench(model, na, op, qa_prev, state, repeats, batch_s, c_inner, notes):
             for _ in range(k):
                 pin_fd(q, v, tq)
         runs["pinocchio"] = run_pin
-    try:
-        from .mujoco_baseline import MujocoRobot
-        mj = MujocoRobot(model, th0)
-    except ImportError as exc:
-        notes["mujoco_forward_python_us"] = (
-            f"mujoco is not importable ({exc}); `pip install mujoco` adds the baseline")
-    else:
+    if mj is not None:
         mj.set_state(xe, xed, tau)
         mj.forward()
         res["agreement_mujoco_forward_dynamics"] = rel_diff(mj.tip_acceleration(), ours0)

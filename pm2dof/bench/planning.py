@@ -27,7 +27,8 @@ from ..planning.smooth import plan_smooth
 from ..planning.stages import grid_points, limits, params, stages
 from .timing import stats
 
-__all__ = ["bench_planning", "ToppraPath", "friction_free"]
+__all__ = ["bench_planning", "bench_refinement", "bench_paths", "toppra_runner", "ToppraPath",
+           "friction_free"]
 
 
 def friction_free(model):
@@ -85,11 +86,128 @@ def _toppra_duration(sd, s):
     return float(np.sum(2 * np.diff(s) / (sd[:-1] + sd[1:])))
 
 
+#: the paths of the refinement rows (issue 25): besides the model's fastest move, a half circle
+#: and the spline of issue 28 (the paper's workspace), and the shipped path files
+ARC = dict(center=[0.245, 0.265], radius=0.03, angle0=0.0, angle1=np.pi)
+SPLINE = [[0.18, 0.20], [0.22, 0.13], [0.27, 0.21], [0.31, 0.15]]
+SHIPPED = ("pick_and_place", "curve")
+
+
+def bench_paths(model, line):
+    """{name: TaskPath} of the refinement rows that the model can follow (the extra paths are
+    sized for the paper's robot: another model gets the ones inside its workspace)."""
+    from ..planning import check_path
+    from ..planning.pathfile import read_path_file
+    out = {"line": line, "half_circle": TaskPath.arc(**ARC),
+           "spline": TaskPath.spline(SPLINE)}
+    out.update({k: read_path_file(k)["path"] for k in SHIPPED})
+    usable = {}
+    for name, path in out.items():
+        try:
+            check_path(model, path)
+        except Exception:   # noqa: BLE001 (WorkspaceError, SingularityError: not this robot's)
+            continue
+        usable[name] = path
+    return usable
+
+
+def toppra_runner(model, path, s, split, theta):
+    """A function running toppra end to end (its SecondOrderConstraint with the generated Me,
+    Ce and the split's polygon at both ends of every interval) on the grid ``s``, returning
+    toppra's s_d (K,)."""
+    import toppra
+    import toppra.algorithm
+    w = limits(model, None, 1.0)
+    f_pc, n = model.function("path_coefficients"), model.n_legs
+    bufs = [np.empty(k) for k in (2, 2, 2 * n, n, 2 * n, n, 2 * n, n, 2)]
+    unit, zero = np.array([1.0, 0.0]), np.zeros(2)
+    j = 6 if split == "min_max" else 4
+
+    def F_of(p):     # the split's force polygon at p: one call into the generated C
+        f_pc(np.ascontiguousarray(p), unit, zero, theta, w, *bufs)
+        Nk = bufs[j].reshape(n, 2)
+        return np.vstack([Nk, -Nk])
+
+    def g_of(p):
+        f_pc(np.ascontiguousarray(p), unit, zero, theta, w, *bufs)
+        return np.concatenate([bufs[j + 1], bufs[j + 1]])
+
+    tpath = ToppraPath(path)
+
+    def run():
+        cons = _toppra_constraints(model, theta, F_of, g_of)
+        algo = toppra.algorithm.TOPPRA([cons], tpath, gridpoints=s, solver_wrapper="seidel")
+        return algo.compute_parameterization(0, 0, return_data=True)[1]
+    return run
+
+
+def bench_refinement(model, line, repeats, say):
+    """Refined plans beside unrefined ones of the same grid and beside toppra (issue 25): on
+    each path of :func:`bench_paths`, both splits, with friction (the nominal theta) and
+    without, ``plan_time_optimal`` at 1,000 points (refined as it needs) and
+    :func:`pm2dof.planning.topp.plan_on_grid` on the refined plan's final grid (the passes and
+    checks once, the same grid size); without friction, toppra end to end on the initial
+    1,000-point grid. All interleaved, medians. Returns (rows, summary): rows[path][case] =
+    {grid, refinements, refined_ms, unrefined_ms, refined_over_unrefined, toppra_ms,
+    speedup_vs_toppra}; the summary's worst ratios are the targets' values."""
+    from ..planning.topp import plan_on_grid
+    try:
+        import toppra
+        toppra.setup_logging("WARNING") if hasattr(toppra, "setup_logging") else None
+    except ImportError:
+        toppra = None
+    rows, th0 = {}, friction_free(model)
+    for name, path in bench_paths(model, line).items():
+        say(f"planning: refined and unrefined plans on {name}" +
+            (", and toppra" if toppra else ""))
+        rows[name] = {}
+        for split in ("min_norm", "min_max"):
+            for friction, theta in (("friction", None), ("friction_free", th0)):
+                plan = plan_time_optimal(model, path, split=split, theta=theta)
+                run_t = None
+                if toppra is not None and theta is not None:
+                    s0 = grid_points(path, 1000)
+                    run_t = toppra_runner(model, path, s0, split, params(model, theta)[1])
+                    run_t()
+                times = {"refined": [], "unrefined": [], "toppra": []}
+                for _ in range(repeats):
+                    t0 = time.perf_counter()
+                    plan_time_optimal(model, path, split=split, theta=theta)
+                    times["refined"].append(time.perf_counter() - t0)
+                    t0 = time.perf_counter()
+                    plan_on_grid(model, path, plan.s, split=split, theta=theta)
+                    times["unrefined"].append(time.perf_counter() - t0)
+                    if run_t is not None:
+                        t0 = time.perf_counter()
+                        run_t()
+                        times["toppra"].append(time.perf_counter() - t0)
+                med = {k: stats([1e3 * x for x in v])["median"] if v else None
+                       for k, v in times.items()}
+                rows[name][f"{split}_{friction}"] = {
+                    "grid": plan.info["grid"], "refinements": plan.info["refinements"],
+                    "refined_ms": med["refined"], "unrefined_ms": med["unrefined"],
+                    "refined_over_unrefined": med["refined"] / med["unrefined"],
+                    "toppra_ms": med["toppra"],
+                    "speedup_vs_toppra": (med["toppra"] / med["refined"]
+                                          if med["toppra"] is not None else None)}
+    cases = [c for r in rows.values() for c in r.values()]
+    refined = [c for c in cases if c["refinements"] > 0]
+    speed = [c["speedup_vs_toppra"] for c in cases if c["speedup_vs_toppra"] is not None]
+    summary = {
+        "plan_refined_over_unrefined_max": max(
+            (c["refined_over_unrefined"] for c in refined), default=None),
+        "plan_refined_cases": len(refined),
+        "speedup_vs_toppra_min": min(speed) if speed else None}
+    return rows, summary
+
+
 def bench_planning(model, quick=False, progress=None):
     """Time ``plan_time_optimal`` (1,000 grid points) and toppra on the same friction-free
     problem, interleaved, plus the smoothed variant's IPOPT solve. Returns a JSON-able dict
     (``plan_time_optimal_ms`` median, ``toppra_ms``, ``toppra_solve_ms``, ``speedup_vs_toppra``
-    and ``speedup_vs_toppra_solve``, the durations each finds, ``plan_smooth_*``, ``notes``)."""
+    and ``speedup_vs_toppra_solve``, the durations each finds, ``plan_smooth_*``, ``notes``;
+    ``plan_paths``, ``plan_refined_over_unrefined_max`` and ``speedup_vs_toppra_min`` from
+    :func:`bench_refinement`)."""
     say = progress or (lambda msg: None)
     repeats = 3 if quick else 7
     moves = {k: model.spec.trajectories[k] for k in line_moves(model)}
@@ -130,33 +248,20 @@ def bench_planning(model, quick=False, progress=None):
         toppra.setup_logging("WARNING") if hasattr(toppra, "setup_logging") else None
         w = limits(model, None, 1.0)
         s = grid_points(path, grid)
-        prm, th = params(model, th0)
-        stage, coef = stages(model, path, s, w, th, "min_max")
-        N, h = coef["N"], coef["h"]
-        f_pc, n = model.function("path_coefficients"), model.n_legs
-        bufs = [np.empty(k) for k in (2, 2, 2 * n, n, 2 * n, n, 2 * n, n, 2)]
-        unit, zero = np.array([1.0, 0.0]), np.zeros(2)
-
-        def F_of(p):     # the min-max force polygon at p: one call into the generated C
-            f_pc(np.ascontiguousarray(p), unit, zero, th, w, *bufs)
-            Nk = bufs[6].reshape(n, 2)
-            return np.vstack([Nk, -Nk])
-
-        def g_of(p):
-            f_pc(np.ascontiguousarray(p), unit, zero, th, w, *bufs)
-            return np.concatenate([bufs[7], bufs[7]])
-
+        th = params(model, th0)[1]
+        coef = stages(model, path, s, w, th, "min_max")[1]
         tpath = ToppraPath(path)
         a, b = coef["a"], coef["b"]
-        F = np.concatenate([N, -N], axis=1)
-        g = np.concatenate([h, h], axis=1)
-        pre = (a, b, np.zeros_like(a), F, g)
+        F = np.concatenate([coef["N"], -coef["N"]], axis=1)
+        g = np.concatenate([coef["h"], coef["h"]], axis=1)
+        end_to_end = toppra_runner(model, path, s, "min_max", th)
 
         def run_toppra(given):
-            cons = _toppra_constraints(model, th0, F_of, g_of, pre if given else None)
+            if not given:
+                return end_to_end()
+            cons = _toppra_constraints(model, th0, None, None, (a, b, np.zeros_like(a), F, g))
             algo = toppra.algorithm.TOPPRA([cons], tpath, gridpoints=s, solver_wrapper="seidel")
-            sdd, sd, _, _ = algo.compute_parameterization(0, 0, return_data=True)
-            return sd
+            return algo.compute_parameterization(0, 0, return_data=True)[1]
 
         per = {"toppra": [], "toppra_solve": [], "pm2dof": []}
         sd_t = run_toppra(False)
@@ -179,6 +284,10 @@ def bench_planning(model, quick=False, progress=None):
         res["toppra_duration_s"] = _toppra_duration(sd_t, s)
         res["toppra_given_duration_s"] = _toppra_duration(sd_g, s)
         res["plan_vs_toppra_rel_diff"] = abs(res["toppra_duration_s"] / pl.duration - 1)
+
+    rows, summary = bench_refinement(model, path, 1 if quick else 7, say)
+    res["plan_paths"] = rows
+    res.update(summary)
 
     say("planning: the smoothed variant (IPOPT, 200 grid points)")
     keys = ("plan_smooth_total_s", "plan_smooth_solve_s", "plan_smooth_iterations",

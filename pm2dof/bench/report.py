@@ -93,6 +93,17 @@ def format_bench(results):
             lines.append(f"  durations found: pm2dof {r['plan_duration_friction_free_s']:.7f} s, "
                          f"toppra {r['toppra_duration_s']:.7f} s (rel. diff. "
                          f"{r['plan_vs_toppra_rel_diff']:.1e})")
+        paths = r.get("plan_paths") or {}
+        if paths:
+            lines.append("  refined plans (1000 points asked; ms, medians): path, case, grid "
+                         "(rounds): refined / unrefined of that grid = ratio; toppra (x)")
+            for name, cases in paths.items():
+                for case, c in cases.items():
+                    tp = (f"; toppra {_fmt(c['toppra_ms'])} ms ({c['speedup_vs_toppra']:.1f}x)"
+                          if c.get("toppra_ms") is not None else "")
+                    lines.append(f"    {name:15s} {case:23s} {c['grid']:5d} ({c['refinements']})"
+                                 f" {_fmt(c['refined_ms']):>7s} / {_fmt(c['unrefined_ms']):>7s}"
+                                 f" = {c['refined_over_unrefined']:.2f}{tp}")
         if r.get("plan_smooth_solve_s") is not None:
             lines.append(f"  smoothed plan (IPOPT, 200 points): {r['plan_smooth_solve_s']:.3f} s "
                          f"solve, {r['plan_smooth_iterations']} iterations; "
@@ -105,6 +116,8 @@ def format_bench(results):
             ("NA step: preload / min_norm split", "na_preload_over_min_norm", "x"),
             ("plan_time_optimal vs toppra, end to end", "speedup_vs_toppra", "x"),
             ("plan_time_optimal vs toppra's solver alone", "speedup_vs_toppra_solve", "x"),
+            ("refined / unrefined plan, worst path", "plan_refined_over_unrefined_max", "x"),
+            ("plan_time_optimal vs toppra, worst path", "speedup_vs_toppra_min", "x"),
             ("C step vs NumPy reference", "speedup_c_vs_numpy", "x"),
             ("C step vs SymPy lambdify", "speedup_c_vs_lambdify", "x"),
             ("NAController.step vs casadi.Function", "speedup_binding_vs_casadi_function", "x"),

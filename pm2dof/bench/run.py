@@ -45,6 +45,10 @@ TARGETS = (
     ("na_min_max_over_min_norm", "<=", 1.3, "x", "NA step, min_max split / min_norm split"),
     ("plan_time_optimal_ms", "<=", 5.0, "ms", "plan_time_optimal, 1000 grid points"),
     ("speedup_vs_toppra", ">=", 10.0, "x", "plan_time_optimal vs toppra, friction-free"),
+    # issue 25: refined plans (bench/planning.py, bench_refinement), worst case over the paths
+    ("plan_refined_over_unrefined_max", "<=", 1.3, "x",
+     "refined plan / unrefined plan of its grid size, worst path"),
+    ("speedup_vs_toppra_min", ">=", 12.0, "x", "plan_time_optimal vs toppra, worst path"),
     # issue 21: derivatives and the model-based steps (bench/derivatives.py)
     ("fd_jacobians_over_fd_c", "<=", 3.0, "x", "forward-dynamics Jacobians / forward dynamics, C"),
     ("fd_jacobians_python_us", "<=", 1.5, "us",

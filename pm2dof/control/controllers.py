@@ -75,10 +75,11 @@ GAIN_CONDITIONS = {
     "LQRController.Q_velocity": (True, "the LQR needs positive state weights Q"),
     "LQRController.R": (True, "the LQR needs positive definite torque weights R"),
 }
-#: CTCController's gains when the model file has no [gains.ctc]: per axis a critically damped
-#: pair at omega = 2 pi 20 Hz (Kp = omega^2 1/s^2, Kv = 2 omega 1/s), a tenth of the 2 ms
-#: sample rate, like APD's Kp, Kv over the paper robot's Me (about 1 kg)
-CTC_DEFAULT_GAINS = {"Kp": [(2 * math.pi * 20) ** 2] * 2, "Kv": [2 * (2 * math.pi * 20)] * 2}
+#: CTCController's gains when the model file has no [gains.ctc]: on every task axis a
+#: critically damped pair at omega = 2 pi 20 Hz (Kp = omega^2 1/s^2, Kv = 2 omega 1/s), a tenth
+#: of the 2 ms sample rate, like APD's Kp, Kv over the paper robot's Me (about 1 kg); scalars,
+#: so they apply to any task dimension m
+CTC_DEFAULT_GAINS = {"Kp": (2 * math.pi * 20) ** 2, "Kv": 2 * (2 * math.pi * 20)}
 
 
 def diagonal_gain(law, name, value, labels):
@@ -168,14 +169,16 @@ class _Controller:
         preload = per_actuator("preload", ctl["preload"] if preload is None else preload, n)
         preload_sign = per_actuator("preload_sign", ctl["preload_sign"] if preload_sign is None
                                else preload_sign, n)
-        if np.any(tau_max <= 0) or np.any(preload < 0) or np.any(preload >= tau_max):
-            raise ArgumentError(f"need 0 <= preload < tau_max and tau_max > 0, got preload "
-                             f"{preload.tolist()}, tau_max {tau_max.tolist()} N*m")
+        if np.any(tau_max <= 0):
+            raise ArgumentError(f"need tau_max > 0 (the drives' torque limit, N*m), got tau_max "
+                                f"{tau_max.tolist()}")
+        if np.any(preload < 0) or np.any(preload >= tau_max):
+            raise ArgumentError(f"need 0 <= preload < tau_max, got preload {preload.tolist()}, "
+                                f"tau_max {tau_max.tolist()} N*m")
         if not np.all(np.isin(preload_sign, (1.0, -1.0))):
             raise ArgumentError(f"preload_sign entries must be +1 or -1, got {preload_sign.tolist()}")
-        xy = ("x", "y")
         labels = {"Gamma": model.param_names}
-        gains = {k: diagonal_gain(type(self).__name__, k, v, labels.get(k, xy))
+        gains = {k: diagonal_gain(type(self).__name__, k, v, labels.get(k, model.task_names))
                  for k, v in gains.items()}
         self.params = self.params_layout.pack(
             **gains, T=T, vel_alpha=velocity_filter_alpha(T, fc),
@@ -189,7 +192,7 @@ class _Controller:
                                          np.zeros(self.state_layout.size))
         self._n = n
         self._status = np.zeros(1)
-        self._diag = np.zeros(10)
+        self._diag = np.zeros(4 * model.dof + 2)   # xe, v, e, edot (m each), sing, sing_parallel
         self._extra = ()      # the per-sample inputs of a law that has them (LQR's K_k, tau_ff_k)
         # the step's fast path, one C call: state and params bound here (checked once, now),
         # state <- state_next after the evaluation, a singular status reported (GuardTripped)
@@ -202,7 +205,7 @@ class _Controller:
         self._run = self._not_reset
 
     def closed_loop_inputs(self, trajectory):
-        """The closed loop's per-sample inputs along ``trajectory``: (N, 6) rows [xd, xd_dot,
+        """The closed loop's per-sample inputs along ``trajectory``: (N, 3m) rows [xd, xd_dot,
         xd_ddot] (a law with per-sample gains appends them, ``<law>_cl_input`` layout)."""
         return np.ascontiguousarray(np.hstack([trajectory.xd, trajectory.xd_dot,
                                                trajectory.xd_ddot]))
@@ -210,7 +213,7 @@ class _Controller:
     def reset(self, qa0, theta_hat=None):
         """Start at rest at the measured active angles ``qa0`` (n,), rad.
 
-        ``theta_hat`` (5n,) replaces the initial estimate (default: ``theta0``, Tables 1-2).
+        ``theta_hat`` (p,) replaces the initial estimate (default: ``theta0``, Tables 1-2).
         """
         th = self.theta0 if theta_hat is None else np.array(theta_hat, dtype=float)
         if th.shape != self.theta0.shape or not np.isfinite(th).all():
@@ -239,8 +242,9 @@ class _Controller:
         self._method.guard_on = value == "raise"
 
     def step(self, qa_meas, xd, xd_dot, xd_ddot, out=None):
-        """One control sample: measured active angles (n,) rad and the desired position (2,) m,
-        velocity (2,) m/s and acceleration (2,) m/s^2 -> actuator torques tau_a (n,) N*m.
+        """One control sample: measured active angles (n,) rad and the desired pose (m,) m,
+        velocity (m,) m/s and acceleration (m,) m/s^2 (m = ``model.dof``, in
+        ``model.task_names`` order; phi in rad) -> actuator torques tau_a (n,) N*m.
 
         Returns a new array, or writes into ``out`` (n,) and returns it (no allocation).
         Non-finite inputs raise ArgumentError (a ValueError) and leave the controller unchanged. At a pose
@@ -276,7 +280,7 @@ class _Controller:
 
     def _singular_error(self):
         return SingularityError(
-            f"controller step: {self.model.singularity_message(self._diag[8:10])}; "
+            f"controller step: {self.model.singularity_message(self._diag[-2:])}; "
             f"theta_hat was not updated and the safe torque is zero (on_singular='zero' "
             f"returns it instead of raising)")
 
@@ -289,17 +293,17 @@ class _Controller:
 
     @property
     def state(self):
-        """Copy of the controller state: dict of xe_prev (2,), v (2,), theta_hat (5n,)."""
+        """Copy of the controller state: dict of xe_prev (m,), v (m,), theta_hat (p,)."""
         return {k: v.copy() for k, v in self.state_layout.unpack(self._state).items()}
 
     @property
     def diag(self):
-        """Last step's signal processing: dict of xe (2,) m, v (2,) m/s, e (2,) m, edot (2,) m/s,
+        """Last step's signal processing: dict of xe (m,) m, v (m,) m/s, e (m,) m, edot (m,) m/s,
         sing (type I measure min_i |sin(qb_i - qa_i)|) and sing_parallel (type II measure, see
         :meth:`pm2dof.Model.singularity_measures`)."""
-        d = self._diag.copy()
-        return {"xe": d[0:2], "v": d[2:4], "e": d[4:6], "edot": d[6:8], "sing": float(d[8]),
-                "sing_parallel": float(d[9])}
+        d, m = self._diag.copy(), self.model.dof
+        return {"xe": d[0:m], "v": d[m:2 * m], "e": d[2 * m:3 * m], "edot": d[3 * m:4 * m],
+                "sing": float(d[4 * m]), "sing_parallel": float(d[4 * m + 1])}
 
 
 class NAController(_Controller):
@@ -308,15 +312,15 @@ class NAController(_Controller):
     Parameters
     ----------
     model : Model
-    Kd, Q : float or array_like (2,) or (2, 2), optional
+    Kd, Q : float or array_like (m,) or (m, m), optional
         Diagonal gains K_d (N*s/m) and Q (1/s), each entry > 0 (positive definite, as the
-        Lyapunov argument of Sect. 4 needs): a scalar, the diagonal [x, y] or a diagonal
-        matrix (default: ``[gains.na]`` of the model file).
-    Gamma : float or array_like (5n,) or (5n, 5n), optional
+        Lyapunov argument of Sect. 4 needs): a scalar, the diagonal in ``model.task_names``
+        order ([x, y] for a point) or a diagonal matrix (default: ``[gains.na]`` of the model file).
+    Gamma : float or array_like (p,) or (p, p), optional
         Diagonal adaptation gain in ``model.param_names`` order, each entry >= 0 (positive
         semi-definite); zeros switch adaptation off. Gains outside these conditions, non-finite
         or of the wrong shape raise :class:`pm2dof.GainError` naming the gain and the entry.
-    theta0 : array_like (5n,), optional
+    theta0 : array_like (p,), optional
         Initial estimate theta_hat (default: Tables 1-2, ``model.theta_nominal``).
     sample_period : float, optional
         s (default ``[sensing].sample_period``, 0.002).
@@ -357,7 +361,7 @@ class NAController(_Controller):
 
     @property
     def theta_hat(self):
-        """Current estimate theta_hat (5n,), in ``model.param_names`` order (a copy)."""
+        """Current estimate theta_hat (p,), in ``model.param_names`` order (a copy)."""
         return self.state["theta_hat"]
 
 
@@ -394,13 +398,13 @@ class CTCController(_Controller):
     Parameters
     ----------
     model : Model
-    Kp : float or array_like (2,) or (2, 2), optional
+    Kp : float or array_like (m,) or (m, m), optional
         Diagonal stiffness of the error dynamics, 1/s^2, each entry > 0 (default
         ``[gains.ctc]`` of the model file, else :data:`CTC_DEFAULT_GAINS`).
-    Kv : float or array_like (2,) or (2, 2), optional
+    Kv : float or array_like (m,) or (m, m), optional
         Diagonal damping, 1/s, each entry > 0. Gains outside these conditions raise
         :class:`pm2dof.GainError` naming the gain and the entry.
-    theta0 : array_like (5n,), optional
+    theta0 : array_like (p,), optional
         The model inside the law (default Tables 1-2); never updated.
     sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign
         As for :class:`NAController`.

@@ -27,7 +27,7 @@ OUTCOMES = {
 
 
 def _at_pose(model, xe):
-    """(outcome, reason) at the pose ``xe`` (2,) m: "left_workspace" if some leg cannot reach
+    """(outcome, reason) at the pose ``xe`` (m,): "left_workspace" if some leg cannot reach
     it, else "diverged" (the reason says what the pose is like)."""
     if not np.isfinite(xe).all():
         return "diverged", f"the state overflowed (xe = {xe.tolist()} m)"
@@ -47,8 +47,8 @@ def classify_failure(model, xe, xed, tau_a, plant, period, substeps, t0):
     Parameters
     ----------
     model : Model
-    xe, xed : ndarray (2,)
-        The true pose (m) and velocity (m/s) at the start of the sample, finite.
+    xe, xed : ndarray (m,)
+        The true pose (m; phi in rad) and velocity (m/s; rad/s) at the start of the sample, finite.
     tau_a : ndarray (n,)
         The torque held over the sample, N*m.
     plant : ndarray
@@ -72,13 +72,14 @@ def classify_failure(model, xe, xed, tau_a, plant, period, substeps, t0):
     step, accel = model.function("plant_step"), model.function("plant_xedd")
     h = period / substeps
     hv = np.array([h])
-    z, nxt, a = np.concatenate([xe, xed]), np.empty(4), np.empty(2)
+    m = model.dof
+    z, nxt, a = np.concatenate([xe, xed]), np.empty(2 * m), np.empty(m)
     tau_a, plant = np.ascontiguousarray(tau_a, dtype=float), np.ascontiguousarray(plant)
     for j in range(substeps):
         step(z, tau_a, plant, hv, nxt)
         if not np.isfinite(nxt).all():
             break
-        outcome, reason = _at_pose(model, nxt[:2])
+        outcome, reason = _at_pose(model, nxt[:m])
         if outcome == "left_workspace":      # a finite step that lands out of reach
             return outcome, t0 + (j + 1) * h, reason
         z = nxt.copy()
@@ -89,11 +90,11 @@ def classify_failure(model, xe, xed, tau_a, plant, period, substeps, t0):
     s = z
     for c, w in ((0.0, 0.5), (0.5, 0.5), (0.5, 1.0), (1.0, None)):
         if np.isfinite(s).all():
-            accel(np.ascontiguousarray(s[:2]), np.ascontiguousarray(s[2:]), tau_a, plant, a)
+            accel(np.ascontiguousarray(s[:m]), np.ascontiguousarray(s[m:]), tau_a, plant, a)
         if not (np.isfinite(s).all() and np.isfinite(a).all()):
-            outcome, reason = _at_pose(model, s[:2])
+            outcome, reason = _at_pose(model, s[:m])
             return outcome, t0 + (j + c) * h, reason
-        acc = np.concatenate([s[2:], a])
+        acc = np.concatenate([s[m:], a])
         if w is not None:
             s = z + w * h * acc
     return "diverged", t0 + (j + 1) * h, "the RK4 step overflowed"

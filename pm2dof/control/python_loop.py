@@ -47,7 +47,7 @@ def python_rollout(model, controller, traj, plant, theta_hat0=None):
     """One rollout of a :class:`PythonController`: (None: no closed-loop state to report, y
     (N, ny) rows of ``cl_output``, its Layout). A sample whose plant state stops being finite
     ends the run (later rows NaN, as the C closed loops leave them)."""
-    n, substeps = model.n_legs, model.spec.rk4_substeps
+    n, m, substeps = model.n_legs, model.dof, model.spec.rk4_substeps
     T = controller.sample_period
     ylay = model.layout("cl_output")
     measure, step = model.function("measure"), model.function("plant_step")
@@ -55,19 +55,19 @@ def python_rollout(model, controller, traj, plant, theta_hat0=None):
     theta = controller.theta0 if theta_hat0 is None else np.asarray(theta_hat0, dtype=float)
     y = np.full((len(traj.t), ylay.size), np.nan)
     Y = ylay.unpack(y)
-    z, nxt, qa = np.concatenate([traj.xd[0], np.zeros(2)]), np.empty(4), np.empty(n)
+    z, nxt, qa = np.concatenate([traj.xd[0], np.zeros(m)]), np.empty(2 * m), np.empty(n)
     h = np.array([T / substeps])
     measure(np.ascontiguousarray(traj.xd[0]), plant, qa)
     controller.reset(qa.copy(), traj)
     for k in range(len(traj.t)):
-        measure(z[:2].copy(), plant, qa)
+        measure(z[:m].copy(), plant, qa)
         tau = np.asarray(controller.step(k, qa.copy(), traj.xd[k], traj.xd_dot[k],
                                          traj.xd_ddot[k]), dtype=float)
         status = controller.status
         if np.any(np.abs(tau) > tau_max) and status == Status.OK:
             status = Status.SATURATED
         tau = np.clip(tau, -tau_max, tau_max)
-        Y["xe"][k], Y["xed"][k], Y["tau_a"][k] = z[:2], z[2:], tau
+        Y["xe"][k], Y["xed"][k], Y["tau_a"][k] = z[:m], z[m:], tau
         Y["status"][k], Y["theta_hat"][k] = int(status), theta
         for _ in range(substeps):
             step(z, tau, plant, h, nxt)

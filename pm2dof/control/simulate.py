@@ -20,6 +20,7 @@ from .trajectory import _positive, require_trajectory
 from ..core.errors import (ArgumentError, ArgumentTypeError, OutcomeWarning, SingularityError,
                            WorkspaceError)
 from ..core.status import Status
+from ..core.task import is_rr_point, require_rr_point
 
 __all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "plant_truth",
            "plant_vector", "rmse", "theta_truth", "check_trajectory", "pose_measures",
@@ -31,9 +32,19 @@ def plant_truth(model, **overrides):
 
     The payload m at the tip of leg j's distal link (j = ``payload_leg``, counted from 1 as in
     the paper) adds m la^2, m la lb, m lb^2 to alpha_j, beta_j, gamma_j (its kinetic energy
-    1/2 m |tip velocity|^2 in the leg's angles). ``overrides`` replace fields of ``[plant]``
-    (e.g. ``payload_mass=0``); a ``payload_leg`` outside 1..n raises ValueError.
+    1/2 m |tip velocity|^2 in the leg's angles).
+
+    Parameters
+    ----------
+    model : Model
+        The robot; its model file's ``[plant]`` is the truth.
+    **overrides
+        Replace fields of ``[plant]`` (e.g. ``payload_mass=0``); a ``payload_leg`` outside
+        1..n raises ValueError. The booking is that of an RR leg's tip: other
+        mechanisms are refused (UnsupportedMechanismError).
     """
+    require_rr_point(model, "plant_truth's payload booking (m la^2, m la lb, m lb^2 on an RR "
+                            "leg's alpha, beta, gamma)")
     p = dict(model.spec.plant)
     unknown = sorted(set(overrides) - set(p))
     if unknown:
@@ -87,6 +98,13 @@ def theta_truth(model, truth=None):
     The paper's model (eq. 2) has no coordinate for the Stribeck excess; it is left out.
     Smooth-sign or Stribeck shapes of the controller's model differ from the plant's, so
     only the coefficients are compared.
+
+    Parameters
+    ----------
+    model : Model
+        The robot.
+    truth : dict, optional
+        A plant truth (:func:`plant_truth`'s dict); default the model file's ``[plant]``.
     """
     t = plant_truth(model) if truth is None else truth
     return np.array([t[base][i] for base, i in _param_index(model.param_names)])
@@ -108,27 +126,56 @@ def rmse(xd, xe):
     Parameters
     ----------
     xd, xe : array_like (N, 2)
-        Desired and actual positions, m.
+        Desired and actual positions, m. Only the position (x, y) enters eq. 41: for a
+        platform (N, 3) the orientation phi (rad, another unit) is left out; its error is
+        ``SimResult.e[:, 2]``.
     """
+    xd, xe = np.asarray(xd, dtype=float)[..., :2], np.asarray(xe, dtype=float)[..., :2]
     d = np.asarray(xd, dtype=float) - np.asarray(xe, dtype=float)
     return float(np.sqrt(np.mean(np.sum(d * d, axis=-1))))
 
 
 @dataclass(frozen=True)
 class SimResult:
-    """One rollout. Arrays have one row per control sample k (t_k = k T).
-
-    t (N,) s; xd, xd_dot (N, 2) desired; xe, xed (N, 2) true position m and velocity m/s at
-    t_k; tau_a (N, n) N*m applied over [t_k, t_k+T]; status (N,) int (0 ok, 1 singular,
-    2 saturated, 3 non-finite, 4 preload infeasible, 5 inconsistent encoders); theta_hat
-    (N, 5n) after the update at t_k. ``n_move`` is the number of samples of the desired
-    trajectory proper (eq. 41's N) in the arrays; later rows are settling. No field is ever
+    """One rollout. Arrays have one row per control sample k (t_k = k T). No field is ever
     NaN.
 
-    ``outcome`` says how the run ended (:data:`pm2dof.control.outcome.OUTCOMES`):
-    "completed", or "left_workspace" / "diverged" when the true pose left the workspace or
-    the state stopped being finite during sample ``failed_sample`` (over [t_k, t_k + T]), at
-    ``failed_time`` s (``outcome_reason`` says where and why; both None for a completed run).
+    Attributes
+    ----------
+    controller : str
+        The controller's law ("na", "apd", ...).
+    t : ndarray (N,)
+        The sample times t_k, s.
+    xd, xd_dot : ndarray (N, m)
+        Desired pose and velocity (m = ``model.dof``, columns ``model.task_names``: x, y in
+        m, m/s; a platform's phi in rad, rad/s).
+    xe, xed : ndarray (N, m)
+        True pose and velocity at t_k.
+    tau_a : ndarray (N, n)
+        Torques applied over [t_k, t_k+T], N*m.
+    status : ndarray (N,) int
+        0 ok, 1 singular, 2 saturated, 3 non-finite, 4 preload infeasible, 5 inconsistent
+        encoders.
+    theta_hat : ndarray (N, p)
+        The estimate after the update at t_k.
+    n_move : int
+        The number of samples of the desired trajectory proper (eq. 41's N) in the arrays;
+        later rows are settling.
+    final_state : ndarray
+        The closed loop's state after the last sample (``cl_state`` layout).
+    outcome : str
+        How the run ended (:data:`pm2dof.control.outcome.OUTCOMES`): "completed", or
+        "left_workspace" / "diverged" when the true pose left the workspace or the state
+        stopped being finite during sample ``failed_sample`` (over [t_k, t_k + T]).
+    failed_sample : int or None
+        That sample; None for a completed run.
+    failed_time : float or None
+        When it happened, s; None for a completed run.
+    outcome_reason : str
+        Where and why.
+
+    Notes
+    -----
     A run that did not complete ends there: its arrays hold samples 0..failed_sample (each
     one finite and in the workspace), ``n_move`` is clipped to that length, ``final_state``
     (the closed loop's state after the last sample, ``cl_state`` layout) is None, and
@@ -154,7 +201,7 @@ class SimResult:
 
     @property
     def e(self):
-        """Position error xd - xe (N, 2), m."""
+        """Pose error xd - xe (N, m), m (rad for phi)."""
         return self.xd - self.xe
 
     @property
@@ -176,7 +223,13 @@ class SimResult:
                 f"{self.outcome_reason}")
 
     def count(self, status):
-        """Samples of the run with the given :class:`~pm2dof.Status` (or its label)."""
+        """Samples of the run with the given status.
+
+        Parameters
+        ----------
+        status : pm2dof.Status, int or str
+            A :class:`~pm2dof.Status`, its code or its label ("singular", ...).
+        """
         code = Status[status.upper()] if isinstance(status, str) else Status(status)
         return int(np.sum(self.status == code))
 
@@ -199,17 +252,33 @@ class SimResult:
         return float(np.max(np.abs(self.tau_a)))
 
 
-def pose_measures(model, xd):
-    """Both singularity measures and, for two legs, the assembly side of every position.
+def _generated_measures(model, xd):
+    """:func:`pose_measures` by the generated ik and singularity_measures, sample by sample:
+    any mechanism (NaN where ik has no solution)."""
+    type1, type2 = np.full(len(xd), np.nan), np.full(len(xd), np.nan)
+    q, sing = np.empty(2 * model.n_legs), np.empty(2)
+    for k, x in enumerate(xd):
+        try:
+            model.ik(x, out=q)
+        except WorkspaceError:
+            continue
+        model.singularity_measures(q, out=sing)
+        type1[k], type2[k] = sing
+    return type1, type2, np.ones(len(xd))
 
-    Vectorised NumPy geometry of ``ik`` (law of cosines per leg, the model's elbows), used to
-    check a whole trajectory at once; the generated ``ik`` and ``singularity_measures`` remain
-    the reference and word the errors.
+
+def pose_measures(model, xd):
+    """Both singularity measures and, for two legs, the assembly side of every pose.
+
+    For RR legs meeting at a point: vectorised NumPy geometry of ``ik`` (law of cosines per
+    leg, the model's elbows), used to check a whole trajectory at once; the generated ``ik``
+    and ``singularity_measures`` remain the reference and word the errors. Other mechanisms
+    (prismatic legs, a platform): the generated functions at every pose.
 
     Parameters
     ----------
-    xd : array_like (N, 2)
-        Task positions, m.
+    xd : array_like (N, m)
+        Task poses (m = ``model.dof``), m (phi in rad).
 
     Returns
     -------
@@ -218,7 +287,9 @@ def pose_measures(model, xd):
         where some leg cannot reach; ``side`` = fk_branch * cross(B2 - B1, O - B1) for two legs
         (> 0 in the model's assembly mode), +1 for more legs.
     """
-    xd = np.asarray(xd, dtype=float).reshape(-1, 2)
+    xd = np.asarray(xd, dtype=float).reshape(-1, model.dof)
+    if not is_rr_point(model.spec):
+        return _generated_measures(model, xd)
     legs = model.spec.legs
     type1 = np.full(len(xd), np.inf)
     z = np.zeros(len(xd), dtype=complex)
@@ -261,9 +332,24 @@ def check_trajectory(model, trajectory):
     otherwise) and keep both singularity measures at or above their thresholds,
     ``limits.singularity_threshold`` (type I, legs) and
     ``limits.parallel_singularity_threshold`` (type II, actuation) (SingularityError naming
-    the kind), and every sample of xd, xd_dot and xd_ddot must be finite (ArgumentError). The
-    error names the sample, its time and position.
+    the kind), and every sample of xd, xd_dot and xd_ddot must be finite (ArgumentError) with
+    the model's task dimension m columns (ArgumentError naming m). The error names the sample,
+    its time and position.
+
+    Parameters
+    ----------
+    model : Model
+        The robot.
+    trajectory : Trajectory
+        The desired trajectory (``t``, ``xd``, ``xd_dot``, ``xd_ddot``).
     """
+    m = model.dof
+    for name in ("xd", "xd_dot", "xd_ddot"):
+        shape = np.shape(getattr(trajectory, name))
+        if len(shape) != 2 or shape[1] != m:
+            raise ArgumentError(
+                f"trajectory {name} has shape {shape}: model {model.name!r} has task dimension "
+                f"m = {m} ({', '.join(model.task_names)}), so it must be (N, {m})")
     for name, what in (("xd", "position"), ("xd_dot", "velocity"), ("xd_ddot", "acceleration")):
         v = np.asarray(getattr(trajectory, name), dtype=float)
         if not np.isfinite(v).all():
@@ -287,35 +373,51 @@ def check_trajectory(model, trajectory):
             raise SingularityError(f"{where}: {model.singularity_message(sing)}")
 
 
+def _reachable(model, xe):
+    """(K,) bool: the poses ``xe`` (K, m) every leg reaches (RR legs at a point: |la - lb| <=
+    |xe - A_i| <= la + lb; other mechanisms: the generated ik has a solution)."""
+    if not is_rr_point(model.spec):
+        q, ok = np.empty(2 * model.n_legs), np.zeros(len(xe), dtype=bool)
+        for k, x in enumerate(xe):
+            try:
+                model.ik(x, out=q)
+                ok[k] = True
+            except (WorkspaceError, ArgumentError):     # out of reach, or not finite
+                pass
+        return ok
+    reach = np.ones(len(xe), dtype=bool)
+    for leg in model.spec.legs:
+        d = np.hypot(xe[:, 0] - leg.base[0], xe[:, 1] - leg.base[1])
+        reach &= (abs(leg.la - leg.lb) <= d) & (d <= leg.la + leg.lb)
+    return reach
+
+
 def completed_samples(model, y, ylay):
     """How many leading samples of rollouts exist: (...,) int, from their outputs ``y``
     (..., N, ny) in the Layout ``ylay`` (``cl_output``).
 
     A sample exists when its whole row is finite and its true pose xe is in reach of every
-    leg (|la - lb| <= |xe - A_i| <= la + lb). The plant's dynamics go through the inverse
+    leg (RR legs: |la - lb| <= |xe - A_i| <= la + lb). The plant's dynamics go through the inverse
     kinematics, so a pose out of reach makes every later row non-finite: only the last finite
     row can hold one, and only it is checked. ``N`` for a run that completed; else the first
     sample that does not exist.
     """
     N, ny = y.shape[-2:]
-    if y.ndim == 2 and np.isfinite(y).all():    # one finite rollout (simulate): its last pose
-        x, z = y[-1, ylay.slices["xe"]].tolist()
+    if y.ndim == 2 and np.isfinite(y).all() and is_rr_point(model.spec):
+        x, z = y[-1, ylay.slices["xe"]].tolist()   # one finite rollout (simulate): its last pose
         return N - (not all(abs(g.la - g.lb) <= math.hypot(x - g.base[0], z - g.base[1])
                             <= g.la + g.lb for g in model.spec.legs))
     yy = y.reshape(-1, N, ny)
     bad = ~np.isfinite(yy).all(axis=-1)
     n = np.where(bad.any(axis=-1), bad.argmax(axis=-1), N)
-    last = yy[np.arange(len(yy)), np.maximum(n - 1, 0), ylay.slices["xe"]]     # (K, 2)
-    reach = n > 0
-    for leg in model.spec.legs:
-        d = np.hypot(last[:, 0] - leg.base[0], last[:, 1] - leg.base[1])
-        reach &= (abs(leg.la - leg.lb) <= d) & (d <= leg.la + leg.lb)
+    last = yy[np.arange(len(yy)), np.maximum(n - 1, 0), ylay.slices["xe"]]     # (K, m)
+    reach = (n > 0) & _reachable(model, last)
     return np.where((n > 0) & ~reach, n - 1, n).reshape(y.shape[:-2])
 
 
 def rollout_inputs(model, controller, traj, plant, theta_hat0=None):
     """What one rollout's C call takes: (closed-loop function, initial state x (nx,), inputs u
-    (N, 6), parameters p (np,), output Layout). The robot starts at rest at traj's first point,
+    (N, 3m), parameters p (np,), output Layout). The robot starts at rest at traj's first point,
     the controller's estimate of xe from the first (quantised) measurement, theta_hat(0) =
     ``theta_hat0`` or the controller's theta0. ``plant`` is a :func:`plant_vector`."""
     f, X, u, P, ylay = batch_inputs(model, controller, traj, np.asarray(plant)[None],
@@ -326,7 +428,7 @@ def rollout_inputs(model, controller, traj, plant, theta_hat0=None):
 def batch_inputs(model, controller, traj, plants, theta_hat0=None):
     """:func:`rollout_inputs` for K rollouts at once, for ``Function.accumulate_batch``:
     ``plants`` (K, n_plant) rows of :func:`plant_vector`, ``theta_hat0`` None or K rows (a row
-    None: the controller's theta0). Returns (f, X (K, nx), u (N, 6), P (K, np), output Layout).
+    None: the controller's theta0). Returns (f, X (K, nx), u (N, 3m), P (K, np), output Layout).
     """
     check_same_model(model, controller)
     plants = np.asarray(plants, dtype=float)
@@ -375,7 +477,7 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
         Quantise the encoders to ``[sensing].encoder_counts_per_rev`` (False: exact angles).
     encoder_counts_per_rev : int, optional
         Replaces the model file's encoder resolution (0: exact angles).
-    theta_hat0 : array_like (5n,), optional
+    theta_hat0 : array_like (p,), optional
         Initial estimate (default: the controller's ``theta0``).
     settle_time : float
         Seconds of rest at the end point simulated after the move (not in the RMSE).

@@ -1,6 +1,8 @@
-# Desired task-space motion: time-optimal jerk-limited (S-curve) rest-to-rest straight-line moves.
+# Desired task-space motion: time-optimal jerk-limited (S-curve) rest-to-rest straight-line moves,
+# plain sampled references and holds.
 """Time-optimal rest-to-rest S-curve (jerk ``+j, 0, -j, 0, -j, 0, +j``) along a
-straight segment, sampled at the controller period. SI units (m, s)."""
+straight segment, sampled at the controller period; a plain sampled reference
+(:meth:`Trajectory.from_samples`) or a held pose (:meth:`Trajectory.hold`). SI units (m, s)."""
 import math
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -10,6 +12,7 @@ import numpy as np
 from ..core.errors import ArgumentTypeError, Pm2dofError
 from ..core.model_file import read_model_file
 from ..core.paths import DEFAULT_MODEL_NAME, SHIPPED_MODELS
+from ..core.task import orientation_length
 
 __all__ = ["TrajectoryError", "SCurve", "Trajectory", "require_trajectory", "line", "model_move", "line_moves",
            "PAPER_MOVES",
@@ -138,14 +141,16 @@ class Trajectory:
     ----------
     t : ndarray, shape (N,)
         Sample times ``k * period``, s.
-    xd, xd_dot, xd_ddot : ndarray, shape (N, 2)
-        Desired position (m), velocity (m/s) and acceleration (m/s^2).
+    xd, xd_dot, xd_ddot : ndarray, shape (N, m)
+        Desired position (m), velocity (m/s) and acceleration (m/s^2); m (the task
+        dimension) is taken from ``xd``.
     period : float
         Sampling period, s.
-    start, end : tuple of float
-        End points of the straight segment, m.
-    profile : SCurve
-        Profile of the arc length along the segment.
+    start, end : tuple of float or None
+        End points of the straight segment, m; None for a sampled reference
+        (:meth:`from_samples`, :meth:`hold`).
+    profile : SCurve or None
+        Profile of the arc length along the segment; None for a sampled reference.
     """
 
     t: np.ndarray = field(repr=False)
@@ -153,15 +158,19 @@ class Trajectory:
     xd_dot: np.ndarray = field(repr=False)
     xd_ddot: np.ndarray = field(repr=False)
     period: float
-    start: tuple
-    end: tuple
-    profile: SCurve = field(repr=False)
+    start: tuple = None
+    end: tuple = None
+    profile: SCurve = field(default=None, repr=False)
 
     def __post_init__(self):  # store read-only float64 C-contiguous copies
         n = np.size(self.t)
         if n == 0:
             raise TrajectoryError("a trajectory needs at least one sample (t is empty)")
-        for name, shape in [("t", (n,)), ("xd", (n, 2)), ("xd_dot", (n, 2)), ("xd_ddot", (n, 2))]:
+        if np.ndim(self.xd) != 2:
+            raise TrajectoryError(f"xd must have shape (N, m), m the task dimension, got "
+                                  f"{np.shape(self.xd)}")
+        m = np.shape(self.xd)[1]                                   # the task dimension
+        for name, shape in [("t", (n,)), ("xd", (n, m)), ("xd_dot", (n, m)), ("xd_ddot", (n, m))]:
             arr = np.array(getattr(self, name), dtype=np.float64, order="C")
             if arr.shape != shape:
                 raise TrajectoryError(f"{name} must have shape {shape}, got {arr.shape}")
@@ -175,13 +184,81 @@ class Trajectory:
             raise TrajectoryError(f"t must be sampled every period = {period} s; t[{k + 1}] - "
                                   f"t[{k}] = {gaps[k]:.9g} s")
 
+    @classmethod
+    def from_samples(cls, xd, xd_dot, xd_ddot, period):
+        """A plain sampled reference of any task dimension m (taken from ``xd``).
+
+        Parameters
+        ----------
+        xd, xd_dot, xd_ddot : array_like, shape (N, m)
+            Desired pose (m; rad for an orientation), velocity (m/s) and acceleration (m/s^2)
+            at t = k * period, k = 0 .. N-1.
+        period : float
+            Sampling period, s (> 0).
+
+        Returns
+        -------
+        Trajectory
+            With ``start``, ``end`` and ``profile`` None.
+
+        Raises
+        ------
+        TrajectoryError
+            A bad period, mismatched shapes or a non-finite sample (names the array and the
+            sample).
+        """
+        period = _positive("period (s)", period)
+        arrays = []
+        for name, a in (("xd", xd), ("xd_dot", xd_dot), ("xd_ddot", xd_ddot)):
+            try:
+                a = np.asarray(a, dtype=np.float64)
+            except (TypeError, ValueError):
+                raise TrajectoryError(f"{name} must be an (N, m) array of numbers") from None
+            if a.ndim != 2 or a.shape[1] == 0:
+                raise TrajectoryError(f"{name} must have shape (N, m), got {a.shape}")
+            if not np.all(np.isfinite(a)):
+                k = int(np.flatnonzero(~np.all(np.isfinite(a), axis=1))[0])
+                raise TrajectoryError(f"{name} must be finite; sample {k} is {a[k].tolist()}")
+            arrays.append(a)
+        return cls(np.arange(len(arrays[0])) * period, *arrays, period)
+
+    @classmethod
+    def hold(cls, x, duration, period):
+        """Hold one pose: ceil(duration / period) + 1 samples at t = k * period, zero velocity
+        and acceleration.
+
+        Parameters
+        ----------
+        x : array_like, shape (m,)
+            The pose held, m (rad for an orientation).
+        duration : float
+            How long, s (>= 0).
+        period : float
+            Sampling period, s (> 0).
+        """
+        try:
+            x = np.asarray(x, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise TrajectoryError(f"x must be a point of the task space, m, got {x!r}") from None
+        if x.ndim != 1 or x.size == 0 or not np.all(np.isfinite(x)):
+            raise TrajectoryError(f"x must be a finite point (m,) of the task space, m, got "
+                                  f"{x.tolist()}")
+        period = _positive("period (s)", period)
+        k = math.ceil(_positive("duration (s)", duration, zero_ok=True) / period - 1e-9)
+        zeros = np.zeros((k + 1, x.size))
+        return cls.from_samples(np.broadcast_to(x, zeros.shape), zeros, zeros, period)
+
     @property
     def duration(self):
-        """Duration of the move itself (``profile.duration``), s."""
+        """Duration of the move itself (``profile.duration``; (N - 1) * period for a sampled
+        reference), s."""
+        if self.profile is None:
+            return (len(self.t) - 1) * self.period
         return self.profile.duration
 
     def extended(self, settle_time):
-        """Copy with rest samples at ``end`` appended for at least ``settle_time`` s.
+        """Copy with rest samples at ``end`` (the last sample for a sampled reference)
+        appended for at least ``settle_time`` s.
 
         Parameters
         ----------
@@ -190,9 +267,10 @@ class Trajectory:
         """
         ts = _positive("settle_time (s)", settle_time, zero_ok=True)
         k = math.ceil(ts / self.period - 1e-9)  # tolerate 0.1/0.002 = 50.000000000000004
-        zeros = np.zeros((k, 2))
+        rest = self.xd[-1] if self.end is None else self.end
+        zeros = np.zeros((k, self.xd.shape[1]))
         return Trajectory(np.arange(len(self.t) + k) * self.period,
-                          np.vstack([self.xd, np.broadcast_to(self.end, (k, 2))]),
+                          np.vstack([self.xd, np.broadcast_to(rest, zeros.shape)]),
                           np.vstack([self.xd_dot, zeros]), np.vstack([self.xd_ddot, zeros]),
                           self.period, self.start, self.end, self.profile)
 
@@ -214,27 +292,34 @@ def require_trajectory(trajectory):
 
 
 def _point(name, p):
-    """Validate a 2-D point, returning it as a tuple of floats (m)."""
+    """Validate a task point (x, y) or (x, y, phi), returning it as a tuple of floats."""
     try:
         arr = np.asarray(p, dtype=np.float64)
     except (TypeError, ValueError):
         raise TrajectoryError(f"{name} must be a point (x, y) in m, got {p!r}") from None
-    if arr.shape != (2,) or not np.all(np.isfinite(arr)):
-        raise TrajectoryError(f"{name} must be a finite point (x, y) in m of shape (2,), got {p!r}")
-    return (float(arr[0]), float(arr[1]))
+    if arr.shape not in ((2,), (3,)) or not np.all(np.isfinite(arr)):
+        raise TrajectoryError(f"{name} must be a finite point (x, y) in m of shape (2,), or "
+                              f"(x, y, phi) of shape (3,) for a platform, got {p!r}")
+    return tuple(float(v) for v in arr)
 
 
-def line(start, end, v_max, a_max, j_max, period=0.002):
+def line(start, end, v_max, a_max, j_max, period=0.002, orientation_length=None):
     """S-curve motion along the straight segment from ``start`` to ``end``.
 
     Parameters
     ----------
-    start, end : array_like, shape (2,)
-        End points, m; they must differ.
+    start, end : array_like, shape (m,)
+        End points (x, y) in m, or (x, y, phi) for a platform (phi in rad); they must differ.
     v_max, a_max, j_max : float
         Limits along the path: m/s, m/s^2, m/s^3.
     period : float, optional
         Sampling period, s (default 2 ms).
+    orientation_length : float, optional
+        For (x, y, phi) points only, and required there: the length l, m, that turns phi into
+        arc length, L = sqrt(|p1 - p0|^2 + (l dphi)^2) (the arc length of
+        :class:`pm2dof.TaskPath`, docs/planning.md; :func:`model_move` takes the model's
+        :func:`pm2dof.core.task.orientation_length`). phi moves in proportion to x and y, and
+        an equal (x, y) gives a pure rotation.
 
     Returns
     -------
@@ -243,8 +328,17 @@ def line(start, end, v_max, a_max, j_max, period=0.002):
         one is at rest at ``end`` exactly.
     """
     p0, p1 = _point("start", start), _point("end", end)
+    if len(p0) != len(p1):
+        raise TrajectoryError(f"start {p0} of shape ({len(p0)},) and end {p1} of shape "
+                              f"({len(p1)},) must both be (x, y) or both (x, y, phi)")
     period = _positive("period (s)", period)
-    L = math.hypot(p1[0] - p0[0], p1[1] - p0[1])
+    scale = (1.0, 1.0)                         # arc length: phi in units of orientation_length
+    if len(p0) == 3:
+        if orientation_length is None:
+            raise TrajectoryError("a line in (x, y, phi) needs orientation_length, the length in "
+                                  "m that turns phi into arc length (docs/planning.md)")
+        scale += (_positive("orientation_length (m)", orientation_length),)
+    L = math.hypot(*((b - a) * w for a, b, w in zip(p0, p1, scale, strict=True)))
     if L == 0.0:
         raise TrajectoryError(f"start and end coincide at {p0}: zero path length")
     prof = SCurve.plan(L, v_max, a_max, j_max)
@@ -305,7 +399,8 @@ def model_move(model, name, period=None):
     """
     spec = getattr(model, "spec", model)
     return line(**_move_arguments(spec, name),
-                period=spec.sensing["sample_period"] if period is None else period)
+                period=spec.sensing["sample_period"] if period is None else period,
+                orientation_length=orientation_length(spec))
 
 
 def _paper_moves():

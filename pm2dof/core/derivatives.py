@@ -36,19 +36,19 @@ DERIVATIVE_FUNCTIONS = ("forward_dynamics_jacobians", "sampled_step", "sampled_s
 
 def continuous_AB(d_xe, d_xed, d_tau_a):
     """(A, B) of d/dt [xe, xed] = [xed, xedd]: A = [[0, I], [d_xe, d_xed]], B = [[0], [d_tau_a]].
-    Works on one point ((2, 2), (2, 2), (2, n)) or a batch ((K, 2, 2), ...)."""
+    Works on one point ((m, m), (m, m), (m, n)) or a batch ((K, m, m), ...); m from d_xe."""
     d_xe, d_xed, d_tau_a = (np.asarray(a, dtype=float) for a in (d_xe, d_xed, d_tau_a))
-    lead = d_xe.shape[:-2]
-    A = np.zeros(lead + (4, 4))
-    A[..., 0:2, 2:4] = np.eye(2)
-    A[..., 2:4, 0:2], A[..., 2:4, 2:4] = d_xe, d_xed
-    B = np.zeros(lead + (4, d_tau_a.shape[-1]))
-    B[..., 2:4, :] = d_tau_a
+    lead, m = d_xe.shape[:-2], d_xe.shape[-1]
+    A = np.zeros(lead + (2 * m, 2 * m))
+    A[..., :m, m:] = np.eye(m)
+    A[..., m:, :m], A[..., m:, m:] = d_xe, d_xed
+    B = np.zeros(lead + (2 * m, d_tau_a.shape[-1]))
+    B[..., m:, :] = d_tau_a
     return A, B
 
 class ForwardDynamicsJacobians(NamedTuple):
-    """Jacobians of xedd (eqs. 10-12) at one state: d_xe (2, 2) 1/s^2, d_xed (2, 2) 1/s,
-    d_tau_a (2, n) m/(s^2 N m), d_theta (2, p) in theta's units."""
+    """Jacobians of xedd (eqs. 10-12) at one state: d_xe (m, m) 1/s^2, d_xed (m, m) 1/s,
+    d_tau_a (m, n) m/(s^2 N m), d_theta (m, p) in theta's units (m = ``Model.dof``)."""
     d_xe: np.ndarray
     d_xed: np.ndarray
     d_tau_a: np.ndarray
@@ -56,13 +56,13 @@ class ForwardDynamicsJacobians(NamedTuple):
 
 
 class SampledStepJacobians(NamedTuple):
-    """Jacobians of one sampled step x_next(x, tau_a): d_x (4, 4), d_tau_a (4, n)."""
+    """Jacobians of one sampled step x_next(x, tau_a): d_x (2m, 2m), d_tau_a (2m, n)."""
     d_x: np.ndarray
     d_tau_a: np.ndarray
 
 
 class InverseDynamicsJacobians(NamedTuple):
-    """Jacobians of the task force u (eqs. 10-12): d_xe (2, 2) N/m, d_xed (2, 2) N s/m."""
+    """Jacobians of the task force u (eqs. 10-12): d_xe (m, m) N/m, d_xed (m, m) N s/m."""
     d_xe: np.ndarray
     d_xed: np.ndarray
 
@@ -86,35 +86,43 @@ class DerivativeMethods:
                 f"{[getattr(a, 'shape', type(a).__name__) for a in out] if isinstance(out, tuple) else type(out).__name__}")
         return out if type(out) is kind else kind(*out)
 
-    def _eval_jacobians(self, short, kind, out, args):
-        """The checked path of a derivative method (its fast path, ``self._m[short]``, refused
-        the call): ``<name>_<short>`` with its first output (the value) skipped, the Jacobians
-        written into ``out`` (:meth:`_outs`), its last output the singularity measures;
-        converts the arguments if need be and raises the typed error
+    def _eval_jacobians(self, short, kind, shapes, out, args):
+        """The checked path of a derivative method (its fast path, ``self._fast[short]``,
+        refused the call): ``<name>_<short>`` with its first output (the value) skipped, the
+        Jacobians written into ``out`` (:meth:`_outs`), its last output the singularity
+        measures; converts the arguments if need be and raises the typed error
         (:meth:`Model._checked_call`)."""
-        res = self._outs(kind, self._shapes[short], out)
+        res = self._outs(kind, shapes, out)
         self._checked_call(short, self._f[short], args, (None, *res, self._sing), self._sing)
         return res
 
     def forward_dynamics_jacobians(self, xe, xed, tau_a, theta, out=None):
         """Jacobians of the task-space acceleration xedd (eqs. 10-12, eq. 2 friction).
 
-        xedd = Me^-1 (S^T tau_a - Ce xed - S^T f_a) at the pose ``xe`` (2,) m, velocity ``xed``
-        (2,) m/s, torques ``tau_a`` (n,) N*m and parameters ``theta`` (p,) (as
+        xedd = Me^-1 (S^T tau_a - Ce xed - S^T f_a) at the pose ``xe`` (m,) m, velocity ``xed``
+        (m,) m/s (rad, rad/s for phi), torques ``tau_a`` (n,) N*m and parameters ``theta`` (p,) (as
         :meth:`forward_dynamics`), differentiated by CasADi's reverse-mode AD in the generated
         C. Friction's sign(v) contributes 0 (the Jacobian of the smooth part).
 
         Parameters
         ----------
+        xe : array_like (m,)
+            The pose, m.
+        xed : array_like (m,)
+            The velocity, m/s.
+        tau_a : array_like (n,)
+            The actuator torques, N*m.
+        theta : array_like (p,)
+            The dynamic parameters (:attr:`param_names` order).
         out : tuple of 4 ndarrays, optional
-            Arrays of shapes (2, 2), (2, 2), (2, n), (2, p) to write into (e.g. an earlier
+            Arrays of shapes (m, m), (m, m), (m, n), (m, p) to write into (e.g. an earlier
             result): no allocation.
 
         Returns
         -------
         ForwardDynamicsJacobians
-            ``d_xe`` (2, 2) 1/s^2, ``d_xed`` (2, 2) 1/s, ``d_tau_a`` (2, n) = Me^-1 S^T,
-            ``d_theta`` (2, p) (columns in :attr:`param_names` order).
+            ``d_xe`` (m, m) 1/s^2, ``d_xed`` (m, m) 1/s, ``d_tau_a`` (m, n) = Me^-1 S^T,
+            ``d_theta`` (m, p) (columns in :attr:`param_names` order).
 
         Examples
         --------
@@ -127,10 +135,12 @@ class DerivativeMethods:
         True
         """
         try:
-            return self._m["forward_dynamics_jacobians"](xe, xed, tau_a, theta, out)
+            return self._fast["forward_dynamics_jacobians"](xe, xed, tau_a, theta, out)
         except _cbind.Refused:
+            n, p, m = self.n_legs, len(self.param_names), self._m
             return self._eval_jacobians("forward_dynamics_jacobians", ForwardDynamicsJacobians,
-                                        out, (xe, xed, tau_a, theta))
+                                        ((m, m), (m, m), (m, n), (m, p)), out,
+                                        (xe, xed, tau_a, theta))
 
     def _period(self, period):
         T = self.spec.sensing["sample_period"] if period is None else period
@@ -143,77 +153,127 @@ class DerivativeMethods:
 
         ``rk4_substeps`` (model file) classical RK4 steps of period / rk4_substeps of
         d/dt [xe, xed] = [xed, xedd(xe, xed, tau_a, theta)] (eqs. 10-12), ``tau_a`` (n,) N*m
-        held constant; ``x`` = [xe, xed] (4,) m, m/s; ``period`` s (default ``[sensing]
+        held constant; ``x`` = [xe, xed] (2m,) m, m/s; ``period`` s (default ``[sensing]
         sample_period``). The model's own dynamics (eq. 2 friction), not the plant's truth
         (``pm2dof.plant_truth``). Raises SingularityError when x's pose is singular; a
         stage that leaves the workspace gives NonFiniteError.
 
+        Parameters
+        ----------
+        x : array_like (2m,)
+            The state [xe, xed], m, m/s.
+        tau_a : array_like (n,)
+            The held actuator torques, N*m.
+        theta : array_like (p,)
+            The dynamic parameters (:attr:`param_names` order).
+        period : float, optional
+            The sample period, s (default ``[sensing] sample_period``).
+        out : ndarray (2m,), optional
+            Written into and returned (no allocation).
+
         Returns
         -------
-        x_next : ndarray (4,)
+        x_next : ndarray (2m,)
         """
         T = self._period(period)
         try:
-            return self._m["sampled_step"](x, tau_a, theta, T, out)
+            return self._fast["sampled_step"](x, tau_a, theta, T, out)
         except _cbind.Refused:
-            return self._eval("sampled_step", out, x, tau_a, theta, T)
+            return self._eval("sampled_step", (2 * self._m,), out, x, tau_a, theta, T)
 
     def sampled_step_jacobians(self, x, tau_a, theta, period=None, out=None):
         """Jacobians of :meth:`sampled_step` w.r.t. the state x = [xe, xed] and the held
         torque, by forward-mode AD of the RK4 stages (each stage's Jacobian from
         :meth:`forward_dynamics_jacobians`' generated code).
 
+        Parameters
+        ----------
+        x, tau_a, theta, period :
+            As :meth:`sampled_step`.
+        out : tuple of 2 ndarrays, optional
+            Arrays of shapes (2m, 2m), (2m, n) to write into (no allocation).
+
         Returns
         -------
         SampledStepJacobians
-            ``d_x`` (4, 4), ``d_tau_a`` (4, n) (the discrete-time A and B at x, tau_a).
-            ``out=``: a tuple of two such arrays.
+            ``d_x`` (2m, 2m), ``d_tau_a`` (2m, n) (the discrete-time A and B at x, tau_a).
         """
-        T = self._period(period)
+        T, k = self._period(period), 2 * self._m
         try:
-            return self._m["sampled_step_jacobians"](x, tau_a, theta, T, out)
+            return self._fast["sampled_step_jacobians"](x, tau_a, theta, T, out)
         except _cbind.Refused:
-            return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians, out,
-                                        (x, tau_a, theta, T))
+            return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians,
+                                        ((k, k), (k, self.n_legs)), out, (x, tau_a, theta, T))
 
     def inverse_dynamics(self, xe, xed, xedd, theta, out=None):
-        """The task force u = Me xedd + Ce xed + S^T f_a (2,), N (eqs. 10-12, eq. 2 friction)
-        that gives the acceleration ``xedd`` (2,) m/s^2 at the pose ``xe`` and velocity
-        ``xed``. Actuator torques: any tau_a with S^T tau_a = u (:meth:`torque_splits`)."""
+        """The task force u = Me xedd + Ce xed + S^T f_a (m,), N (N m for phi) (eqs. 10-12,
+        eq. 2 friction) that gives the acceleration ``xedd`` (m,) m/s^2 at the pose ``xe`` and
+        velocity ``xed``. Actuator torques: any tau_a with S^T tau_a = u
+        (:meth:`torque_splits`).
+
+        Parameters
+        ----------
+        xe, xed, theta :
+            The state and the parameters, as :meth:`forward_dynamics_jacobians`.
+        xedd : array_like (m,)
+            The acceleration, m/s^2.
+        out : ndarray (m,), optional
+            Written into and returned (no allocation).
+        """
         try:
-            return self._m["inverse_dynamics"](xe, xed, xedd, theta, out)
+            return self._fast["inverse_dynamics"](xe, xed, xedd, theta, out)
         except _cbind.Refused:
-            return self._eval("inverse_dynamics", out, xe, xed, xedd, theta)
+            return self._eval("inverse_dynamics", (self._m,), out, xe, xed, xedd, theta)
 
     def inverse_dynamics_jacobians(self, xe, xed, xedd, theta, out=None):
         """Jacobians of :meth:`inverse_dynamics` w.r.t. the state (reverse-mode AD; friction's
         sign contributes 0). d u / d xedd is Me.
 
+        Parameters
+        ----------
+        xe, xed, xedd, theta :
+            As :meth:`inverse_dynamics`.
+        out : tuple of 2 ndarrays, optional
+            Arrays of shapes (m, m), (m, m) to write into (no allocation).
+
         Returns
         -------
         InverseDynamicsJacobians
-            ``d_xe`` (2, 2) N/m, ``d_xed`` (2, 2) N s/m.
+            ``d_xe`` (m, m) N/m, ``d_xed`` (m, m) N s/m.
         """
         try:
-            return self._m["inverse_dynamics_jacobians"](xe, xed, xedd, theta, out)
+            return self._fast["inverse_dynamics_jacobians"](xe, xed, xedd, theta, out)
         except _cbind.Refused:
+            m = self._m
             return self._eval_jacobians("inverse_dynamics_jacobians", InverseDynamicsJacobians,
-                                        out, (xe, xed, xedd, theta))
+                                        ((m, m), (m, m)), out, (xe, xed, xedd, theta))
 
     def linearize(self, xe, xed, tau_a, theta=None, discrete=False, period=None):
         """The linearisation (A, B) of the dynamics at the state [xe, xed] and torque tau_a.
 
         Continuous (``discrete=False``): d/dt dx = A dx + B dtau with
-        A = [[0, I], [d xedd/d xe, d xedd/d xed]] (4, 4), B = [[0], [d xedd/d tau_a]] (4, n)
+        A = [[0, I], [d xedd/d xe, d xedd/d xed]] (2m, 2m), B = [[0], [d xedd/d tau_a]] (2m, n)
         (:meth:`forward_dynamics_jacobians`). Discrete (``discrete=True``): dx_{k+1} = A dx_k
         + B dtau_k for one sample of ``period`` s (default ``[sensing] sample_period``) under
-        the zero-order hold (:meth:`sampled_step_jacobians`). State order [x, y, xd, yd] (m,
-        m/s), input order tau_1..tau_n (N*m); ``theta`` defaults to :attr:`theta_nominal`.
+        the zero-order hold (:meth:`sampled_step_jacobians`). State order [xe, xed] in
+        :attr:`task_names` order ([x, y, xd, yd], m, m/s, for a point), input order
+        tau_1..tau_n (N*m).
+
+        Parameters
+        ----------
+        xe, xed, tau_a :
+            The state and the torques, as :meth:`forward_dynamics_jacobians`.
+        theta : array_like (p,), optional
+            The dynamic parameters (default :attr:`theta_nominal`).
+        discrete : bool
+            The sampled (zero-order hold) linearisation instead of the continuous one.
+        period : float, optional
+            The sample period of the discrete one, s (default ``[sensing] sample_period``).
 
         Returns
         -------
-        A : ndarray (4, 4)
-        B : ndarray (4, n)
+        A : ndarray (2m, 2m)
+        B : ndarray (2m, n)
 
         Examples
         --------
@@ -227,9 +287,10 @@ class DerivativeMethods:
         if discrete:
             x = np.concatenate([np.ravel(np.asarray(xe, dtype=float)),
                                 np.ravel(np.asarray(xed, dtype=float))])
-            if x.shape != (4,):
-                raise ArgumentError(f"linearize: xe and xed must have 2 entries each, got "
-                                    f"{np.shape(xe)} and {np.shape(xed)}")
+            if x.shape != (2 * self._m,):
+                raise ArgumentError(f"linearize: xe and xed must have m = {self._m} entries each "
+                                    f"({', '.join(self.task_names)}), got {np.shape(xe)} and "
+                                    f"{np.shape(xed)}")
             J = self.sampled_step_jacobians(x, tau_a, theta, period)
             return J.d_x, J.d_tau_a
         J = self.forward_dynamics_jacobians(xe, xed, tau_a, theta)

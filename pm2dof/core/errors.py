@@ -5,7 +5,7 @@ __all__ = ["Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError"
            "Problem",
            "InputFileError", "ModelFileError", "StaleGeneratedCodeError", "WorkspaceError",
            "ClosureError", "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning",
-           "PlanError"]
+           "PlanError", "UnsupportedMechanismError"]
 
 
 class Pm2dofError(Exception):
@@ -57,6 +57,16 @@ class InputFileError(Pm2dofError, ValueError):
     """
 
     def __init__(self, message, problems=None, path=None):
+        """
+        Parameters
+        ----------
+        message : str
+            The whole message: the file and every problem, one per line.
+        problems : iterable of Problem, optional
+            The problems (default: one, the message).
+        path : str or Path, optional
+            The file.
+        """
         super().__init__(message)
         self.path = None if path is None else str(path)
         self.problems = (tuple(problems) if problems is not None
@@ -114,3 +124,9 @@ class PlanError(Pm2dofError, ValueError):
     """A path or a motion plan that cannot be built (names what and where: the argument and its
     value, or the arc length and point of the path): bad path geometry, a non-positive grid or
     margin, torque limits too low to follow the path at any speed."""
+
+
+class UnsupportedMechanismError(Pm2dofError, ValueError):
+    """A capability that cannot apply to this model's mechanism (its leg kinds, its end effector
+    or its task dimension m): names the capability, the mechanism and why, e.g. the Python
+    reference formulation, which covers RR legs meeting at a point only."""

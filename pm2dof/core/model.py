@@ -1,5 +1,5 @@
 # The runtime Model: a frozen model file plus its compiled generated C, bound through pm2dof.core._cbind.
-"""The runtime model of an n-leg planar RR parallel manipulator.
+"""The runtime model of an n-leg planar parallel manipulator with task dimension m.
 
 :func:`load_model` reads a model file, checks that ``generated/<name>/`` was derived from it
 (``manifest.json``) and binds the compiled functions. Every method is one call into the
@@ -19,6 +19,8 @@ from .derivatives import (DERIVATIVE_FUNCTIONS, DerivativeMethods, ForwardDynami
                           InverseDynamicsJacobians, SampledStepJacobians)
 from .errors import (ArgumentError, ArgumentTypeError, ClosureError, NonFiniteError,
                      SingularityError, StaleGeneratedCodeError, WorkspaceError)
+from .task import (ENERGY_FUNCTIONS, is_rr_point, require_generated, require_rr_point,
+                   spec_task_names)
 from .layout import Layout
 from .model_file import inertia_problem, read_model_file
 from .status import Status
@@ -45,6 +47,8 @@ _FUNCTIONS = ("ik", "fk", "H", "A", "singularity", "singularity_measures", "W", 
               "M", "C", "Me", "Ce", "StF", "Y", "torque_splits", "forward_dynamics") + _STEPPING \
     + _PATH
 _FUNCTIONS += DERIVATIVE_FUNCTIONS     # core/derivatives.py: Jacobians, sampled step, inverse dyn.
+# bound when the manifest lists them (issue 26's derivation adds them; older code lacks them)
+_OPTIONAL = ("Ge",) + ENERGY_FUNCTIONS
 
 
 def _freeze(obj):
@@ -72,7 +76,8 @@ def _check_generated(spec, gen_dir):
     manifest_path = gen_dir / "manifest.json"
     if not manifest_path.is_file():
         _stale(spec, gen_dir, f"no generated code for model file {spec.path} in {gen_dir} "
-                              f"({manifest_path.name} is missing)")
+                              f"({manifest_path.name} is missing; if it was derived into another "
+                              f"folder, pass --generated DIR, or load_model(..., generated=DIR))")
     manifest = json.loads(manifest_path.read_text())
     if manifest.get("formulation_sha256") != spec.formulation_sha256:
         _stale(spec, gen_dir,
@@ -97,17 +102,18 @@ def _check_generated(spec, gen_dir):
     return manifest, lib
 
 
-def _shapes(n, p):
-    """The returned shape(s) of each Model method bound by :func:`_methods` (n legs, p
-    parameters); a tuple of shapes for the derivative methods (their NamedTuple's fields)."""
-    return {"ik": (2 * n,), "fk": (2,), "H": (2 * (n - 1),), "A": (2 * (n - 1), 2 * n),
-            "singularity": (n,), "singularity_measures": (2,), "W": (2 * n, 2), "S": (n, 2),
-            "Wdot": (2 * n, 2), "M": (2 * n, 2 * n), "C": (2 * n, 2 * n), "Me": (2, 2),
-            "Ce": (2, 2), "StF": (2,), "Y": (2, p), "forward_dynamics": (2,),
-            "sampled_step": (4,), "inverse_dynamics": (2,),
-            "forward_dynamics_jacobians": ((2, 2), (2, 2), (2, n), (2, p)),
-            "sampled_step_jacobians": ((4, 4), (4, n)),
-            "inverse_dynamics_jacobians": ((2, 2), (2, 2))}
+def _shapes(n, m, p):
+    """The returned shape(s) of each Model method bound by :func:`_methods` (n legs, task
+    dimension m, p parameters); a tuple of shapes for the derivative methods (their
+    NamedTuple's fields)."""
+    return {"ik": (2 * n,), "fk": (m,), "H": (2 * n - m,), "A": (2 * n - m, 2 * n),
+            "singularity": (n,), "singularity_measures": (2,), "W": (2 * n, m), "S": (n, m),
+            "Wdot": (2 * n, m), "M": (2 * n, 2 * n), "C": (2 * n, 2 * n), "Me": (m, m),
+            "Ce": (m, m), "StF": (m,), "Y": (m, p), "forward_dynamics": (m,),
+            "sampled_step": (2 * m,), "inverse_dynamics": (m,),
+            "forward_dynamics_jacobians": ((m, m), (m, m), (m, n), (m, p)),
+            "sampled_step_jacobians": ((2 * m, 2 * m), (2 * m, n)),
+            "inverse_dynamics_jacobians": ((m, m), (m, m))}
 
 
 def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
@@ -121,7 +127,7 @@ def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
     out = {}
     for short, shape in shapes.items():
         f, kind = funcs[short], kinds.get(short)
-        outs = list(kind and (None, *shape) or (shape,))   # the Jacobians skip the value
+        outs = list((None, *shape) if kind else (shape,))   # the Jacobians skip the value
         guard = None
         if len(outs) < f.n_out and f.names_out[-1] == "sing":   # the pose's measures, checked
             outs.append(sing)
@@ -135,17 +141,20 @@ def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
 
 
 class Model(DerivativeMethods):
-    """A planar RR parallel manipulator with its compiled model functions. Immutable.
+    """A planar parallel manipulator with its compiled model functions. Immutable.
 
     Build with :func:`load_model`. Attributes: ``name``, ``spec`` (the validated model file),
-    ``n_legs``, ``bases`` (n, 2) m, ``param_names`` (5n,), ``theta_nominal`` (5n,) (Tables
-    1-2), ``singularity_threshold`` (type I), ``parallel_singularity_threshold`` (type II),
+    ``n_legs``, ``dof`` (m, the task dimension: 2 for a point end effector, 3 for a platform),
+    ``task_names`` (``("x", "y")`` or ``("x", "y", "phi")``), ``bases`` (n, 2) m,
+    ``param_names`` (p,), ``theta_nominal`` (p,) (Tables 1-2; p = 5n for the paper's
+    family), ``singularity_threshold`` (type I), ``parallel_singularity_threshold`` (type II),
     ``manifest``, ``generated`` (the folder of the generated C), ``library`` (path of the
     compiled C).
-    Angles in rad, lengths in m; q = [qa_1..qa_n, qb_1..qb_n]. The functions of q take it as
-    given: q must close every loop (eq. 5), as :meth:`ik` returns it; :meth:`H` gives the
-    closure residual, and :meth:`fk` refuses active angles that do not close
-    (:class:`ClosureError`).
+    Angles in rad, lengths in m; q = [qa_1..qa_n, qb_1..qb_n]. Task-space arrays have m
+    entries in the order of ``task_names`` (x, y in m; phi, the platform's orientation, in
+    rad). The functions of q take it as given: q must close every loop (eq. 5), as
+    :meth:`ik` returns it; :meth:`H` gives the closure residual, and :meth:`fk` refuses active
+    angles that do not close (:class:`ClosureError`).
 
     Two kinds of singularity are guarded (:meth:`singularity_measures`): type I, a leg
     stretched or folded (min_i |sin(qb_i - qa_i)| -> 0, W unbounded), and type II, the
@@ -157,8 +166,8 @@ class Model(DerivativeMethods):
     at once; load one Model per thread.
     """
 
-    __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_m", "_shapes",
-                 "_layouts", "_sing_thr", "_sing", "_residual", "__weakref__")
+    __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_fast", "_layouts",
+                 "_sing_thr", "_sing", "_residual", "_m", "_task_names", "__weakref__")
 
     #: names of the two singularity measures, in the order of :meth:`singularity_measures`
     SINGULARITY_KINDS = ("type I (a leg's links aligned)",
@@ -171,7 +180,8 @@ class Model(DerivativeMethods):
         manifest, lib_path = _check_generated(spec, gen_dir)
         lib = _cbind.Library(str(lib_path))
         funcs = {}
-        for short in _FUNCTIONS:
+        for short in _FUNCTIONS + tuple(s for s in _OPTIONAL
+                                        if f"{spec.name}_{s}" in manifest["functions"]):
             f = _cbind.Function(lib, f"{spec.name}_{short}")
             want = manifest["functions"].get(f.name)
             have = {"inputs": [[a, k] for a, k in zip(f.names_in, f.sizes_in)],
@@ -181,21 +191,26 @@ class Model(DerivativeMethods):
                                       f"says {want}")
             # model functions never hand back NaN/inf silently; ik and fk turn NaN into a
             # WorkspaceError themselves; controller steps and the plant report by status
-            f.check_outputs = short not in _STEPPING + _PATH and short not in ("ik", "fk")
+            # (and the energies check theirs: a pose out of reach is a WorkspaceError)
+            f.check_outputs = short not in _STEPPING + _PATH + ENERGY_FUNCTIONS + ("ik", "fk")
             funcs[short] = f
+        m = funcs["ik"].sizes_in[0]          # the task dimension of the generated code
+        task_names = spec_task_names(spec, m)
+        if len(task_names) != m:
+            _stale(spec, gen_dir, f"{lib_path} has task dimension {m}, the model file "
+                                  f"{len(task_names)} ({', '.join(task_names)})")
         sing_thr = (spec.limits["singularity_threshold"],
                     spec.limits["parallel_singularity_threshold"])
-        shapes = _shapes(spec.n_legs, len(spec.param_names))
         sing, residual = np.zeros(2), np.zeros(spec.n_legs)
+        fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names)), sing, sing_thr,
+                        residual, spec.sensing["closure_tolerance"])
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
                      ("generated", str(gen_dir)),
-                     ("_lib", lib), ("_f", types.MappingProxyType(funcs)),
-                     ("_m", _methods(funcs, shapes, sing, sing_thr, residual,
-                                     spec.sensing["closure_tolerance"])),
-                     ("_shapes", shapes),
+                     ("_lib", lib), ("_f", types.MappingProxyType(funcs)), ("_fast", fast),
                      ("_layouts", types.MappingProxyType(
                          {name: Layout(name, fl) for name, fl in manifest["layouts"].items()})),
-                     ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual)):
+                     ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual),
+                     ("_m", m), ("_task_names", task_names)):
             object.__setattr__(self, k, v)
 
     def __setattr__(self, key, value):
@@ -211,6 +226,11 @@ class Model(DerivativeMethods):
     # --- description ---------------------------------------------------------------------
     name = property(lambda self: self.spec.name)
     n_legs = property(lambda self: self.spec.n_legs, doc="number of legs (= actuators)")
+    dof = property(lambda self: self._m,
+                   doc="m, the task dimension: 2 (x, y) for a point end effector, 3 (x, y, phi) "
+                       "for a platform; every task-space array has m entries")
+    task_names = property(lambda self: self._task_names,
+                          doc='names of the task coordinates, ("x", "y") or ("x", "y", "phi")')
     param_names = property(lambda self: self.spec.param_names, doc="names of theta, in order")
     theta_nominal = property(lambda self: self.spec.theta_nominal, doc="(5n,) Tables 1-2")
     singularity_threshold = property(lambda self: self._sing_thr[0],
@@ -243,7 +263,8 @@ class Model(DerivativeMethods):
         if th is None or th.shape != (p,) or not np.isfinite(th).all():
             raise ArgumentError(f"{name} must be {p} finite numbers ({', '.join(self.param_names)})"
                                 f", got {theta!r}")
-        if physical:
+        if physical:       # theta = [alpha, beta, gamma, friction] per leg: RR legs only
+            require_rr_point(self, "the physical check of theta (M_i of eq. 1 per RR leg)")
             n = self.n_legs
             rows = th.reshape(-1, n)          # alpha, beta, gamma, then each friction coefficient
             for i in range(n):
@@ -265,7 +286,7 @@ class Model(DerivativeMethods):
         return self._layouts[name]
 
     # --- argument handling ---------------------------------------------------------------
-    # Fast path: each method is one call of its _cbind.Method (self._m, built by _methods):
+    # Fast path: each method is one call of its _cbind.Method (self._fast, built by _methods):
     # in C it checks every argument's dtype (float64), contiguity, element count and
     # finiteness and out's type and shape, evaluates, and checks the result (finite, the
     # pose not singular, fk's loops closed). Whatever it refuses takes the checked path
@@ -318,11 +339,9 @@ class Model(DerivativeMethods):
                                 f"got {type(out).__name__} {getattr(out, 'shape', '')}")
         return out
 
-    def _eval(self, short, out, *args):
-        """The checked path of a method: evaluate ``<name>_<short>(*args) -> out [, sing]``,
-        converting the arguments if need be; raise the typed error of a bad argument, a
-        singular pose or a non-finite result."""
-        out = self._out(out, self._shapes[short])
+    def _eval(self, short, shape, out, *args):
+        """Evaluate ``<name>_<short>(*args) -> out [, sing]``; raise on a singular pose."""
+        out = self._out(out, shape)
         f = self._f[short]
         sing = self._sing if f.n_out == 2 else None
         outs = (out, sing) if sing is not None else (out,)
@@ -337,7 +356,7 @@ class Model(DerivativeMethods):
         if sing is not None and not (sing[0] >= self._sing_thr[0] and
                                      sing[1] >= self._sing_thr[1]):
             if sing[0] != sing[0] and f.names_in[0] in ("xe", "x"):
-                self.ik(args[0][:2])  # NaN measure: some leg cannot reach xe; ik names it
+                self.ik(args[0][:self._m])  # NaN measure: some leg cannot reach xe; ik names it
             raise SingularityError(f"{short}: {self.singularity_message(sing)}")
         if nonfinite is not None:
             raise NonFiniteError(str(nonfinite)) from None
@@ -357,8 +376,9 @@ class Model(DerivativeMethods):
 
         Parameters
         ----------
-        xe : array_like (2,)
-            End-effector position [x, y], m.
+        xe : array_like (m,)
+            End-effector pose in :attr:`task_names` order: [x, y] m (a platform: [x, y, phi],
+            phi in rad).
 
         Returns
         -------
@@ -373,12 +393,15 @@ class Model(DerivativeMethods):
             could not return to it. So ``fk(ik(xe)[:n]) == xe`` wherever ``ik`` answers.
         """
         try:
-            return self._m["ik"](xe, out)      # refuses a non-finite q: named below
+            return self._fast["ik"](xe, out)      # refuses a non-finite q: named below
         except _cbind.Refused:
             pass
-        out = self._eval("ik", out, xe)
+        out = self._eval("ik", (2 * self.n_legs,), out, xe)
         if not np.isfinite(out).all():
             xe = np.asarray(xe, dtype=float).ravel()
+            if not is_rr_point(self.spec):   # the per-leg reach below is an RR leg's annulus
+                raise WorkspaceError(f"xe = {xe.tolist()} is out of reach of some leg: inverse "
+                                     f"kinematics has no real solution there")
             for i, leg in enumerate(self.spec.legs):
                 dist = float(np.hypot(*(xe - leg.base)))
                 lo, hi = abs(leg.la - leg.lb), leg.la + leg.lb
@@ -410,8 +433,8 @@ class Model(DerivativeMethods):
 
         Returns
         -------
-        xe : ndarray (2,)
-            End-effector position O, m: for n >= 3 legs the least-squares point of the n
+        xe : ndarray (m,)
+            End-effector pose (a point: position O, m): for n >= 3 legs the least-squares point of the n
             elbow circles (B_i = A_i + la_i u(qa_i), radius lb_i), for two legs their
             intersection on the ``fk_branch`` side.
 
@@ -426,10 +449,10 @@ class Model(DerivativeMethods):
             and its residual in m.
         """
         try:
-            return self._m["fk"](qa, out)      # refuses a residual beyond tol: named below
+            return self._fast["fk"](qa, out)      # refuses a residual beyond tol: named below
         except _cbind.Refused:
             pass
-        out = self._out(out, (2,))
+        out = self._out(out, (self._m,))
         (qa,), _ = self._call(self._f["fk"], (qa,), (out, self._residual))
         r = self._residual
         tol = self.spec.sensing["closure_tolerance"]
@@ -446,25 +469,26 @@ class Model(DerivativeMethods):
         return out
 
     def H(self, q, out=None):
-        """Loop-closure constraints H(q) (2(n-1),), m (eq. 5)."""
+        """Loop-closure constraints H(q) (2n - m,), m (eq. 5; 2(n-1) for a point)."""
         try:
-            return self._m["H"](q, out)
+            return self._fast["H"](q, out)
         except _cbind.Refused:
-            return self._eval("H", out, q)
+            return self._eval("H", (2 * self.n_legs - self._m,), out, q)
 
     def A(self, q, out=None):
-        """Constraint Jacobian A = dH/dq (2(n-1), 2n) (eq. 6)."""
+        """Constraint Jacobian A = dH/dq (2n - m, 2n) (eq. 6)."""
         try:
-            return self._m["A"](q, out)
+            return self._fast["A"](q, out)
         except _cbind.Refused:
-            return self._eval("A", out, q)
+            n = self.n_legs
+            return self._eval("A", (2 * n - self._m, 2 * n), out, q)
 
     def singularity(self, q, out=None):
         """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0."""
         try:
-            return self._m["singularity"](q, out)
+            return self._fast["singularity"](q, out)
         except _cbind.Refused:
-            return self._eval("singularity", out, q)
+            return self._eval("singularity", (self.n_legs,), out, q)
 
     def singularity_measures(self, q, out=None):
         """The two singularity measures at the pose q (2n,), each in [0, 1], 0 when singular.
@@ -477,79 +501,84 @@ class Model(DerivativeMethods):
         Never raises on a singular pose: it is the measure.
         """
         try:
-            return self._m["singularity_measures"](q, out)
+            return self._fast["singularity_measures"](q, out)
         except _cbind.Refused:
-            return self._eval("singularity_measures", out, q)
+            return self._eval("singularity_measures", (2,), out, q)
 
     def W(self, q, out=None):
-        """W (2n, 2) with qd = W xed (eq. 7). Raises SingularityError near singular poses."""
+        """W (2n, m) with qd = W xed (eq. 7). Raises SingularityError near singular poses."""
         try:
-            return self._m["W"](q, out)
+            return self._fast["W"](q, out)
         except _cbind.Refused:
-            return self._eval("W", out, q)
+            return self._eval("W", (2 * self.n_legs, self._m), out, q)
 
     def S(self, q, out=None):
-        """S (n, 2), the actuated rows of W: qd_a = S xed (eq. 8)."""
+        """S (n, m), the actuated rows of W: qd_a = S xed (eq. 8)."""
         try:
-            return self._m["S"](q, out)
+            return self._fast["S"](q, out)
         except _cbind.Refused:
-            return self._eval("S", out, q)
+            return self._eval("S", (self.n_legs, self._m), out, q)
 
     def Wdot(self, q, xed, out=None):
-        """dW/dt (2n, 2) along qd = W xed, with xed (2,) in m/s (eq. 9), 1/s per m."""
+        """dW/dt (2n, m) along qd = W xed, with xed (m,) in m/s (rad/s for phi) (eq. 9)."""
         try:
-            return self._m["Wdot"](q, xed, out)
+            return self._fast["Wdot"](q, xed, out)
         except _cbind.Refused:
-            return self._eval("Wdot", out, q, xed)
+            return self._eval("Wdot", (2 * self.n_legs, self._m), out, q, xed)
 
     # --- dynamics ------------------------------------------------------------------------
     def M(self, q, theta, out=None):
         """Open-chain joint-space inertia M (2n, 2n), kg*m^2 (eq. 3)."""
         try:
-            return self._m["M"](q, theta, out)
+            return self._fast["M"](q, theta, out)
         except _cbind.Refused:
-            return self._eval("M", out, q, theta)
+            n = self.n_legs
+            return self._eval("M", (2 * n, 2 * n), out, q, theta)
 
     def C(self, q, qd, theta, out=None):
         """Open-chain Coriolis/centrifugal matrix C (2n, 2n) at joint velocity qd (eq. 3)."""
         try:
-            return self._m["C"](q, qd, theta, out)
+            return self._fast["C"](q, qd, theta, out)
         except _cbind.Refused:
-            return self._eval("C", out, q, qd, theta)
+            n = self.n_legs
+            return self._eval("C", (2 * n, 2 * n), out, q, qd, theta)
 
     def Me(self, q, theta, out=None):
-        """Task-space inertia Me = W^T M W (2, 2), kg (eq. 12)."""
+        """Task-space inertia Me = W^T M W (m, m), kg (kg m, kg m^2 in phi's row and column)
+        (eq. 12)."""
         try:
-            return self._m["Me"](q, theta, out)
+            return self._fast["Me"](q, theta, out)
         except _cbind.Refused:
-            return self._eval("Me", out, q, theta)
+            return self._eval("Me", (self._m, self._m), out, q, theta)
 
     def Ce(self, q, xed, theta, out=None):
-        """Task-space Coriolis matrix Ce = W^T (M Wdot + C W) (2, 2), kg/s (eq. 12)."""
+        """Task-space Coriolis matrix Ce = W^T (M Wdot + C W) (m, m), kg/s (eq. 12)."""
         try:
-            return self._m["Ce"](q, xed, theta, out)
+            return self._fast["Ce"](q, xed, theta, out)
         except _cbind.Refused:
-            return self._eval("Ce", out, q, xed, theta)
+            return self._eval("Ce", (self._m, self._m), out, q, xed, theta)
 
     def StF(self, q, xed, theta, out=None):
-        """Friction in task space S^T f_a(S xed) (2,), N (eqs. 2, 10)."""
+        """Friction in task space S^T f_a(S xed) (m,), N (N m for phi) (eqs. 2, 10)."""
         try:
-            return self._m["StF"](q, xed, theta, out)
+            return self._fast["StF"](q, xed, theta, out)
         except _cbind.Refused:
-            return self._eval("StF", out, q, xed, theta)
+            return self._eval("StF", (self._m,), out, q, xed, theta)
 
     def Y(self, q, xed, xrd, xrdd, out=None):
-        """Regressor Y (2, 5n): Y theta = Me xrdd + Ce(q, W xed) xrd + S^T f_a(S xed) (eq. 13).
+        """Regressor Y (m, p): Y theta = Me xrdd + Ce(q, W xed) xrd + S^T f_a(S xed) (eq. 13).
 
-        Columns follow :attr:`param_names`; friction uses sign(0) = +1.
+        Columns follow :attr:`param_names`; friction uses sign(0) = 0 (an actuated joint at
+        rest contributes no Coulomb column).
         """
         try:
-            return self._m["Y"](q, xed, xrd, xrdd, out)
+            return self._fast["Y"](q, xed, xrd, xrdd, out)
         except _cbind.Refused:
-            return self._eval("Y", out, q, xed, xrd, xrdd)
+            return self._eval("Y", (self._m, len(self.param_names)), out, q, xed, xrd, xrdd)
 
     def torque_splits(self, q, u, tau_max=None, preload=None, preload_sign=None):
-        """The actuator torques of every split for the task force ``u`` (2,), N, at pose q (2n,).
+        """The actuator torques of every split for the task force ``u`` (m,), N (N m for phi),
+        at pose q (2n,).
 
         All satisfy S^T tau = u (eqs. 10, 21) to rounding; ``tau_max`` (n,) N*m defaults to
         ``[limits]``, ``preload`` (n,) N*m and ``preload_sign`` (n,) +-1 to ``[control]``. No
@@ -577,22 +606,111 @@ class Model(DerivativeMethods):
                 "preload": outs[3], "preload_mode": int(outs[4][0])}
 
     def forward_dynamics(self, xe, xed, tau_a, theta, out=None):
-        """Task-space acceleration xedd (2,), m/s^2, from eq. 12 with eq. 2 friction.
+        """Task-space acceleration xedd (m,), m/s^2 (rad/s^2 for phi), from eq. 12 with eq. 2
+        friction.
 
-        Solves Me xedd = S^T tau_a - Ce xed - S^T f_a at the pose ``xe`` (2,) m, velocity
-        ``xed`` (2,) m/s, actuator torques ``tau_a`` (n,) N*m and parameters ``theta``.
+        Solves Me xedd = S^T tau_a - Ce xed - S^T f_a at the pose ``xe`` (m,), velocity
+        ``xed`` (m,), actuator forces/torques ``tau_a`` (n,) and parameters ``theta``.
 
-        Friction is the model file's law with sign(0) = +1 (docs/model-file.md), so at exact
-        rest the Coulomb term acts as if every joint moved forward: with tau_a = 0 and
-        xed = 0 the result is not zero (:meth:`linearize` and the Jacobians inherit this).
-        The simulated plant of :func:`pm2dof.simulate` has its own friction, the Coulomb
+        Friction is the model file's law with sign(0) = 0 (docs/model-file.md): a joint at
+        exact rest has no Coulomb force, so with tau_a = 0 and xed = 0 the result is zero
+        (every pose at rest is an equilibrium of this planar model; :meth:`linearize` is
+        taken at one). The simulated plant of :func:`pm2dof.simulate` has its own friction, the Coulomb
         term smoothed over ``[plant] coulomb_smoothing_velocity`` and zero at rest; neither
         models stiction.
         """
         try:
-            return self._m["forward_dynamics"](xe, xed, tau_a, theta, out)
+            return self._fast["forward_dynamics"](xe, xed, tau_a, theta, out)
         except _cbind.Refused:
-            return self._eval("forward_dynamics", out, xe, xed, tau_a, theta)
+            return self._eval("forward_dynamics", (self._m,), out, xe, xed, tau_a, theta)
+
+    def Ge(self, q, theta, out=None):
+        """Gravity term Ge (m,) of eq. 10, N (N m for phi): Me xedd + Ce xed + Ge + S^T f_a =
+        S^T tau_a, Ge = W^T dV/dq (+ the platform's own). Zero in a horizontal plane.
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa, qb] closing every loop (as :meth:`ik` returns them).
+        theta : array_like (p,)
+            Parameters, in :attr:`param_names` order.
+        out : ndarray (m,), optional
+            Written into and returned (no allocation).
+
+        Raises
+        ------
+        StaleGeneratedCodeError
+            The generated code predates the gravity term: re-derive the model (the message
+            names the command).
+        """
+        require_generated(self, "Ge")
+        return self._eval("Ge", (self._m,), out, q, theta)
+
+    # --- energy --------------------------------------------------------------------------
+    def kinetic_energy(self, xe, xed, theta=None):
+        """Kinetic energy T = 1/2 xed^T Me(xe) xed of the whole mechanism, J.
+
+        Generated from the same derivation as Me (``<name>_kinetic_energy``).
+
+        Parameters
+        ----------
+        xe : array_like (m,)
+            The pose in :attr:`task_names` order, m (phi in rad).
+        xed : array_like (m,)
+            Its rate, m/s (phi: rad/s).
+        theta : array_like (p,), optional
+            Parameters (default :attr:`theta_nominal`).
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        StaleGeneratedCodeError
+            The model's generated code predates the energies: re-derive the model (the
+            message names the command).
+        WorkspaceError
+            A pose some leg cannot reach.
+        """
+        return self._energy("kinetic_energy", xe, xed, theta)
+
+    def potential_energy(self, xe, theta=None):
+        """Potential energy V(xe) of the links and the payload in the model's gravity, J.
+
+        Zero in a horizontal plane (the model file's default); V = 0 at the height of the
+        base frame's origin. Generated (``<name>_potential_energy``); T + V is conserved along
+        the model's forward dynamics with zero torque and zero friction.
+
+        Parameters
+        ----------
+        xe : array_like (m,)
+            The pose in :attr:`task_names` order, m (phi in rad).
+        theta : array_like (p,), optional
+            Parameters (default :attr:`theta_nominal`).
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        StaleGeneratedCodeError
+            The model's generated code predates the energies: re-derive the model.
+        WorkspaceError
+            A pose some leg cannot reach.
+        """
+        return self._energy("potential_energy", xe, theta)
+
+    def _energy(self, short, *args):
+        require_generated(self, short)
+        *pose, theta = args
+        out = self._eval(short, (1,), None, *pose, self.checked_theta(theta))
+        if not np.isfinite(out[0]):        # a pose some leg cannot reach: ik names the leg
+            self.ik(pose[0])
+            raise NonFiniteError(f"{short}: not finite at xe = {np.ravel(pose[0]).tolist()}, "
+                                 f"xed = {np.ravel(pose[1:2]).tolist()}")
+        return float(out[0])
 
 
 def require_model(model, name="model"):

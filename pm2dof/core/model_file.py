@@ -10,7 +10,6 @@ staleness. This module is pure Python and is shared by ``derive/`` and the runti
 import hashlib
 import json
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -23,7 +22,7 @@ __all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS"]
 
 # friction model -> its per-leg parameters after the inertial ones (eq. 2 and extensions)
 FRICTION_MODELS = {
-    "coulomb_viscous": ("fv", "fc"),                 # eq. 2, sign(0) = +1
+    "coulomb_viscous": ("fv", "fc"),                 # eq. 2, sign(0) = 0
     "coulomb_viscous_stribeck": ("fv", "fc", "fs"),  # + fs sign(v) / (1 + (v/vs)^2)
     "smooth_sign": ("fv", "fc"),                     # sign(v) -> v / sqrt(v^2 + eps^2)
 }
@@ -423,16 +422,4 @@ def read_model_file(path):
 
 def _read_toml(pr, path):
     """The file's bytes and its TOML document; unreadable or undecodable content stops here."""
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        pr.stop(None, f"cannot read model file: {exc.strerror or exc}")
-    nul = raw.find(b"\x00")
-    if nul >= 0:
-        pr.stop(None, f"binary content (NUL byte at offset {nul}), not a TOML model file")
-    try:
-        return raw, tomllib.loads(raw.decode("utf-8"))
-    except UnicodeDecodeError as exc:
-        pr.stop(None, f"not a text (UTF-8) file: {exc.reason} at byte {exc.start}")
-    except tomllib.TOMLDecodeError as exc:
-        pr.stop(None, f"not valid TOML: {exc}")
+    return pr.read_toml("model file")

@@ -1,4 +1,4 @@
-# Input-file validation shared by model files and study files: collect every problem, then raise.
+# Input-file validation shared by model, study and path files: collect every problem, then raise.
 """Checks of a user's input file that collect problems instead of raising at the first one.
 
 A :class:`Problems` collector belongs to one file. Its typed checks (:meth:`~Problems.number`,
@@ -15,6 +15,8 @@ A :class:`Problems` collector belongs to one file. Its typed checks (:meth:`~Pro
 Entries of arrays are numbered from 1, as the paper numbers legs: :func:`entry`.
 """
 import math
+import tomllib
+from pathlib import Path
 
 from .errors import InputFileError, Problem
 
@@ -70,6 +72,24 @@ class Problems:
         if self.found:
             raise self.error(format_problems(self.path, self.found), problems=self.found,
                              path=self.path) from None
+
+    def read_toml(self, kind):
+        """(bytes, TOML document) of the file at ``path``: one reader for model, study and path
+        files. Unreadable, binary (a NUL byte), non-UTF-8 or non-TOML content stops here, named;
+        ``kind`` ("model file") is how messages call the file."""
+        try:
+            raw = Path(self.path).read_bytes()
+        except OSError as exc:
+            self.stop(None, f"cannot read the {kind}: {exc.strerror or exc}")
+        nul = raw.find(b"\x00")
+        if nul >= 0:
+            self.stop(None, f"binary content (NUL byte at offset {nul}), not a TOML {kind}")
+        try:
+            return raw, tomllib.loads(raw.decode("utf-8"))
+        except UnicodeDecodeError as exc:
+            self.stop(None, f"not a text (UTF-8) file: {exc.reason} at byte {exc.start}")
+        except tomllib.TOMLDecodeError as exc:
+            self.stop(None, f"not valid TOML: {exc}")
 
     # ---- typed checks: each returns the checked value, or None after recording a problem ----
 

@@ -18,26 +18,28 @@ STATUS = Status.codes()
 PROJECTION_FLOOR = 1e-6
 
 
-def controller_layouts(n, p):
-    """Flat-vector layouts: the controller state and each controller's parameters."""
-    state = Layout([("xe_prev", 2), ("v", 2), ("theta_hat", p)])
+def controller_layouts(n, p, m):
+    """Flat-vector layouts: the controller state and each controller's parameters (task-space
+    vectors and gains have the task dimension m)."""
+    state = Layout([("xe_prev", m), ("v", m), ("theta_hat", p)])
     # sing_threshold: type I (legs), parallel_sing_threshold: type II (actuation)
     # preload_sign, preload: the "preload" split's sign per actuator (+-1) and least |tau|, N*m
     # closure_tol: largest |O - B_i| - lb_i of the measured pose, m ([sensing] closure_tolerance)
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
               ("tau_max", n), ("preload_sign", n), ("preload", n), ("closure_tol", 1)]
-    na = Layout([("Kd", 2), ("Q", 2), ("Gamma", p)] + common)
-    apd = Layout([("Kp", 2), ("Kv", 2)] + common)
-    ctc = Layout([("Kp", 2), ("Kv", 2)] + common)       # 1/s^2, 1/s: Me multiplies them
+    na = Layout([("Kd", m), ("Q", m), ("Gamma", p)] + common)
+    apd = Layout([("Kp", m), ("Kv", m)] + common)
+    ctc = Layout([("Kp", m), ("Kv", m)] + common)       # 1/s^2, 1/s: Me multiplies them
     lqr = Layout(common)                                 # its gains are per-sample inputs
     return {"ctrl_state": state, "na_params": na, "apd_params": apd, "ctc_params": ctc,
             "lqr_params": lqr}
 
 
-#: per-sample inputs of a law's step after its params (name, size for n legs): LQR's gain
-#: K_k (n x 4, row-major) and feedforward torque tau_ff_k (n), planned along the trajectory
-def per_sample_inputs(law, n):
-    return [("K", 4 * n), ("tau_ff", n)] if law == "lqr" else []
+#: per-sample inputs of a law's step after its params (name, size for n legs, task dimension
+#: m): LQR's gain K_k (n x 2m, row-major) and feedforward torque tau_ff_k (n), planned along
+#: the trajectory
+def per_sample_inputs(law, n, m):
+    return [("K", 2 * m * n), ("tau_ff", n)] if law == "lqr" else []
 
 
 #: the controller steps: (function name, law, theta_hat projected after the update)
@@ -45,19 +47,22 @@ LAWS = (("na", "na", False), ("na_proj", "na", True), ("apd", "apd", False),
         ("ctc", "ctc", False), ("lqr", "lqr", False))
 
 
-def _project(theta, param_names, n):
+def _project(theta, param_names, n, friction_names):
     """theta_hat onto physically consistent values: alpha, gamma >= PROJECTION_FLOOR,
-    beta^2 <= alpha gamma (each leg's inertia block PSD), friction parameters >= 0."""
+    beta^2 <= alpha gamma (each RR leg's inertia block PSD), friction parameters >= 0; the
+    other parameters (e.g. first moments, which gravity makes signed) are left as they are."""
     idx = {name: k for k, name in enumerate(param_names)}
     out = [theta[k] for k in range(theta.numel())]
     for i in range(1, n + 1):
+        if not all(f"{b}{i}" in idx for b in ("alpha", "beta", "gamma")):
+            continue
         a = ca.fmax(theta[idx[f"alpha{i}"]], PROJECTION_FLOOR)
         g = ca.fmax(theta[idx[f"gamma{i}"]], PROJECTION_FLOOR)
         bmax = ca.sqrt(a * g)
         out[idx[f"alpha{i}"]], out[idx[f"gamma{i}"]] = a, g
         out[idx[f"beta{i}"]] = ca.fmin(ca.fmax(theta[idx[f"beta{i}"]], -bmax), bmax)
     for name, k in idx.items():
-        if not name.startswith(("alpha", "beta", "gamma")):
+        if name.rstrip("0123456789") in friction_names:
             out[k] = ca.fmax(theta[k], 0)
     return ca.vertcat(*out)
 
@@ -84,7 +89,7 @@ def _split(d, split, S, u, P):
 
 
 def _law(d, law, base, P, theta, xe, v, e, edot, xd, xd_dot, xd_ddot, extra):
-    """The task force u = S^T tau_a of one law, theta_hat after the sample, and S (n, 2).
+    """The task force u = S^T tau_a of one law, theta_hat after the sample, and S (n, m).
 
     na (eqs. 15-17, 28-29), apd (eq. 40), ctc (computed torque with the model's theta:
     u = Me (xd_ddot + Kv edot + Kp e) + Ce xed + S^T f_a, i.e. Y(q, v, v, a) theta, eq. 13),
@@ -94,9 +99,9 @@ def _law(d, law, base, P, theta, xe, v, e, edot, xd, xd_dot, xd_ddot, extra):
     if law == "lqr":
         W, _ = joint_W(d, base)                          # eq. 7 at the measured pose
         S = W[:n, :]
-        x_err = ca.vertcat(xe - xd, v - xd_dot)          # state error [x, y, xd, yd]
+        x_err = ca.vertcat(xe - xd, v - xd_dot)          # state error [xe; xed] - [xd; xd_dot]
         ex = dict(extra)
-        K = ca.reshape(ex["K"], 4, n).T                  # (n, 4), row-major input
+        K = ca.reshape(ex["K"], 2 * d.m, n).T            # (n, 2m), row-major input
         return S.T @ (ex["tau_ff"] - K @ x_err), theta, S
     if law == "na":
         xrd = xd_dot + P["Q"] * e                        # eq. 16: reference velocity
@@ -123,26 +128,28 @@ def controller_functions(d, prefix):
 
     Inputs: state (xe_prev, v, theta_hat), qa (measured active angles), xd, xd_dot, xd_ddot
     (desired position, velocity, acceleration), params (see controller_layouts), and for lqr
-    the sample's K (n x 4, row-major) and tau_ff (n) (:func:`per_sample_inputs`).
-    Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot, sing (2):
+    the sample's K (n x 2m, row-major) and tau_ff (n) (:func:`per_sample_inputs`); task-space
+    vectors have the task dimension m.
+    Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot (m each), sing (2):
     type I, type II].
     A bad sample (encoders that do not close the loops, a singular pose, or any non-finite
     intermediate) gives the safe torque zero and leaves theta_hat unchanged; inconsistent
     encoders and a non-finite sample also keep xe_prev and v (a wrong pose is not carried on).
     """
-    n, p = d.spec.n_legs, len(d.spec.param_names)
+    from pm2dof.core.model_file import FRICTION_MODELS
+    n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
     kin = d.kin
-    lay = controller_layouts(n, p)
+    lay = controller_layouts(n, p, m)
     state = ca.SX.sym("state", lay["ctrl_state"].size)
     qa = ca.SX.sym("qa", n)
-    xd, xd_dot, xd_ddot = ca.SX.sym("xd", 2), ca.SX.sym("xd_dot", 2), ca.SX.sym("xd_ddot", 2)
+    xd, xd_dot, xd_ddot = ca.SX.sym("xd", m), ca.SX.sym("xd_dot", m), ca.SX.sym("xd_ddot", m)
     st = lay["ctrl_state"].split(state)
     functions = []
 
     for (name, law, project), (split, suffix) in itertools.product(LAWS, SPLITS.items()):
         params = ca.SX.sym("params", lay[f"{law}_params"].size)
         P = lay[f"{law}_params"].split(params)
-        extra = [(k, ca.SX.sym(k, size)) for k, size in per_sample_inputs(law, n)]
+        extra = [(k, ca.SX.sym(k, size)) for k, size in per_sample_inputs(law, n, m)]
         # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
         # low-pass on the backward difference, passive joints from geometry (unit vectors)
         base = d.converter_qa(qa)
@@ -157,7 +164,8 @@ def controller_functions(d, prefix):
         u, theta_next, S = _law(d, law, base, P, theta, xe, v, e, edot, xd, xd_dot, xd_ddot,
                                 extra)
         if project:  # <prefix>_na_proj_step: optional, off by default (as in the paper)
-            theta_next = _project(theta_next, d.spec.param_names, n)
+            theta_next = _project(theta_next, d.spec.param_names, n,
+                                  FRICTION_MODELS[d.spec.friction])
         conv = base
         tau, saturated, unpreloaded = _split(d, split, S, u, P)       # eq. 21 or another split
         tau_sat = ca.fmin(ca.fmax(tau, -P["tau_max"]), P["tau_max"])

@@ -31,7 +31,25 @@ def _signature(f):
             "outputs": side(f.n_out(), f.name_out, f.sparsity_out)}
 
 
-def _header_doc(spec, functions, layouts, status_codes):
+def _task_line(task_names):
+    """The header's line on the task coordinates xe."""
+    if tuple(task_names) == ("x", "y"):
+        return " * xe    = [x, y] end-effector position, m;  xed, xrd, xrdd: velocities m/s, accel. m/s^2"
+    return (f" * xe    = [{', '.join(task_names)}] pose (m, angles in rad);  xed, xrd, xrdd: "
+            f"its rates and accelerations")
+
+
+def _sing_lines(n, m):
+    """The header's lines on theta's units and the singularity measures."""
+    if m == 2:
+        return [" *         (alpha, beta, gamma in kg*m^2; fv in N*m*s/rad; fc, fs in N*m)",
+                " * sing  = [min_i |sin(qb_i - qa_i)| (type I, legs), sqrt(1 - |sum_i exp(2 i qb_i)| / n)",
+                " *         (type II, actuation: sigma_min of S with unit rows over sqrt(n/2))]"]
+    return [" * sing  = [the legs' type I measure (min over the legs), sigma_min of S with unit rows",
+            f" *         over sqrt(n/{m}) (type II, actuation)]"]
+
+
+def _header_doc(spec, functions, layouts, status_codes, task_names=("x", "y")):
     """A comment block for the top of the generated header: argument order and layouts."""
     n = spec.n_legs
     lines = [
@@ -44,11 +62,9 @@ def _header_doc(spec, functions, layouts, status_codes):
         " *",
         f" * q     = [qa_1..qa_{n}, qb_1..qb_{n}]  absolute joint angles, rad (eq. 3 order)",
         f" * qa    = [qa_1..qa_{n}]  measured active angles, rad",
-        " * xe    = [x, y] end-effector position, m;  xed, xrd, xrdd: velocities m/s, accel. m/s^2",
+        _task_line(task_names),
         f" * theta = [{', '.join(spec.param_names)}]",
-        " *         (alpha, beta, gamma in kg*m^2; fv in N*m*s/rad; fc, fs in N*m)",
-        " * sing  = [min_i |sin(qb_i - qa_i)| (type I, legs), sqrt(1 - |sum_i exp(2 i qb_i)| / n)",
-        " *         (type II, actuation: sigma_min of S with unit rows over sqrt(n/2))]",
+        *_sing_lines(n, len(task_names)),
         " *",
         " * Functions (inputs -> outputs, element counts):",
     ]
@@ -68,7 +84,7 @@ def _header_doc(spec, functions, layouts, status_codes):
     return "\n".join(lines) + "\n"
 
 
-def export(spec, functions, out_dir, model_file_label, extra=None):
+def export(spec, functions, out_dir, model_file_label, extra=None, task_names=("x", "y")):
     """Generate C for ``functions`` into ``out_dir`` and write the manifest.
 
     Parameters
@@ -82,6 +98,8 @@ def export(spec, functions, out_dir, model_file_label, extra=None):
         How the manifest names the model file (repository-relative when possible).
     extra : dict, optional
         More manifest entries (vector layouts, status codes).
+    task_names : tuple of str
+        The task coordinates xe (the model's ``task_names``), for the header's comment.
 
     Returns
     -------
@@ -95,7 +113,8 @@ def export(spec, functions, out_dir, model_file_label, extra=None):
     cg.generate(str(out_dir) + "/")
     header = out_dir / f"{spec.name}.h"
     header.write_text(_header_doc(spec, functions, (extra or {}).get("layouts", {}),
-                                  (extra or {}).get("status_codes", {})) + header.read_text())
+                                  (extra or {}).get("status_codes", {}), task_names)
+                      + header.read_text())
     manifest = {
         "model": spec.name,
         "model_file": model_file_label,

@@ -8,7 +8,7 @@ from .splits import min_max, min_norm, preload_function
 from .symbols import Symbols
 from .to_casadi import Converter
 
-__all__ = ["Derivation", "model_functions"]
+__all__ = ["Derivation", "model_functions", "energy_functions", "assembly_guard"]
 
 
 class Derivation:
@@ -19,48 +19,88 @@ class Derivation:
         self.sym = Symbols(spec.n_legs, spec.param_names)
         self.kin = Kinematics(spec, self.sym)
         self.dyn = Dynamics(spec, self.sym, self.kin)
+        self._setup()
+
+    @classmethod
+    def from_parts(cls, spec, sym, kin, dyn):
+        """A derivation of given symbols, kinematics and dynamics (e.g. a test's own mechanism)."""
+        d = cls.__new__(cls)
+        d.spec, d.sym, d.kin, d.dyn = spec, sym, kin, dyn
+        d._setup()
+        return d
+
+    def _setup(self):
+        #: task dimension m (2: a point end effector, 3: a platform's x, y, phi)
+        self.m = len(self.sym.xe)
+        #: which of q = [qa; qb] are angles (cos/sin from a table); the others (prismatic
+        #: coordinates, m) enter as values
+        self.angular = list(getattr(self.kin, "angular", [True] * len(self.sym.q)))
         self._preload = None
+        self._pose = None
+
+    def pose_of_qa(self):
+        """{task symbol: its expression by fk in the active coordinates}: where a matrix of q
+        (W, Me, ...) also names the pose (a platform's phi), converters bind it on first use."""
+        if self._pose is None:
+            self._pose = dict(zip(self.sym.xe, self.kin.fk()))
+        return self._pose
 
     def preload(self, S, u, w, sigma, p):
         """The preload split (derive/splits.py) as a call of one shared, never-inlined
         function of this model: (tau, mode)."""
         if self._preload is None:
-            self._preload = preload_function(self.spec.n_legs, self.spec.name)
+            self._preload = preload_function(self.spec.n_legs, self.spec.name, self.m)
         return self._preload.call([S, u, w, sigma, p], False, True)
 
     def sx(self, name, n):
         return ca.SX.sym(name, n)
 
+    def _angles(self, syms):
+        """The angles among ``syms`` (entries of q)."""
+        index = {s: k for k, s in enumerate(self.sym.q)}
+        return [s for s in syms if self.angular[index[s]]]
+
     def converter_q(self, q, extra=()):
-        """Converter for functions of the joint angles q: one cos/sin per angle."""
+        """Converter for functions of the joint coordinates q: one cos/sin per angle."""
         sym = self.sym
         symbols = dict(zip(sym.q, ca.vertsplit(q)))
-        trig = {s: (ca.cos(v), ca.sin(v)) for s, v in symbols.items()}
+        trig = {s: (ca.cos(symbols[s]), ca.sin(symbols[s])) for s in self._angles(sym.q)}
         for syms, value in extra:
             symbols.update(zip(syms, ca.vertsplit(value)))
-        return Converter(symbols, trig)
+        return Converter(symbols, trig, self.pose_of_qa())
 
     def converter_xe(self, xe, extra=()):
-        """Converter for functions of the task position: joint directions from geometry, no trig."""
+        """Converter for functions of the task pose: joint directions from geometry, no trig;
+        prismatic coordinates from the inverse kinematics."""
         symbols = dict(zip(self.sym.xe, ca.vertsplit(xe)))
         for syms, value in extra:
             symbols.update(zip(syms, ca.vertsplit(value)))
         base = Converter(symbols)
         trig = {s: (base(c), base(si)) for s, (c, si) in self.kin.unit_vectors_from_xe().items()}
+        lengths = [s for s in self.sym.q if s not in self._angles([s])]
+        if lengths:
+            ik = dict(zip(self.sym.q, self.kin.ik()))
+            symbols.update({s: base(ik[s]) for s in lengths})
         return Converter(symbols, trig)
 
     def converter_qa(self, qa, extra=()):
-        """Converter for functions of the measured active angles: trig of qa, passive from fk."""
+        """Converter for functions of the measured active coordinates: trig of the active
+        angles, passive coordinates from the pose fk(qa)."""
         sym = self.sym
         symbols = dict(zip(sym.qa, ca.vertsplit(qa)))
         for syms, value in extra:
             symbols.update(zip(syms, ca.vertsplit(value)))
-        trig = {s: (ca.cos(v), ca.sin(v)) for s, v in zip(sym.qa, ca.vertsplit(qa))}
+        trig = {s: (ca.cos(symbols[s]), ca.sin(symbols[s])) for s in self._angles(sym.qa)}
         base = Converter(symbols, trig)
         O = self.kin.fk()
         trig.update({s: (base(c), base(si)) for s, (c, si)
                      in self.kin.unit_vectors_from_qa(O).items()})
-        return Converter(symbols, trig)
+        lengths = [s for s in sym.qb if s not in self._angles([s])]
+        if lengths:   # passive prismatic coordinates: the inverse kinematics at the pose O
+            at_O = base.extended([(sym.xe, base(O))])
+            ik = dict(zip(sym.q, self.kin.ik()))
+            symbols.update({s: at_O(ik[s]) for s in lengths})
+        return Converter(symbols, trig, self.pose_of_qa())
 
     def singularity_measures(self, conv):
         """[type I, type II] singularity measures at the pose, each 0 at its singularity:
@@ -76,6 +116,12 @@ class Derivation:
           sigma_min(U)^2 = (n - |z|)/2, so the measure is sqrt(1 - |z|/n) in [0, 1]: 1 for
           isotropic directions, sqrt(1 - |cos(qb_1 - qb_2)|) for a five-bar.
 
+        For a platform (m = 3) the type II measure is the same sigma_min of S with unit rows
+        over its largest possible value sqrt(n/m), from the least eigenvalue of U^T U (3 x 3,
+        closed form, :func:`_least_eigenvalue`); S's columns are first divided by the
+        kinematics' ``task_scale`` (reference lengths of x, y, phi; default 1) so that force
+        and moment directions compare.
+
         NaN propagates through both (a pose out of reach stays NaN).
         """
         n, sym = self.spec.n_legs, self.sym
@@ -83,6 +129,8 @@ class Derivation:
         type1 = values[0]
         for v in values[1:]:  # min(a, b) = (a + b - |a - b|) / 2: unlike C's fmin, keeps NaN
             type1 = (type1 + v - ca.fabs(type1 - v)) / 2
+        if self.m != 2:
+            return ca.vertcat(type1, self._type2_general(conv))
         re, im = 0, 0
         for i in range(n):
             c, s = conv(sp.cos(sym.qb[i])), conv(sp.sin(sym.qb[i]))
@@ -91,17 +139,58 @@ class Derivation:
         type2 = ca.sqrt((a + ca.fabs(a)) * 0.5)                 # max(a, 0), keeping NaN
         return ca.vertcat(type1, type2)
 
+    def _type2_general(self, conv):
+        """sigma_min(U) / sqrt(n/m), U = S (columns over ``task_scale``) with unit rows."""
+        n, m = self.spec.n_legs, self.m
+        S = ca.reshape(conv(self.kin.S), m, n).T
+        scale = getattr(self.kin, "task_scale", None)
+        if scale is not None:
+            S = S @ ca.diag(ca.DM([1.0 / float(c) for c in scale]))
+        U = ca.vertcat(*[S[i, :] / ca.sqrt(ca.sumsqr(S[i, :])) for i in range(n)])
+        lam = _least_eigenvalue(U.T @ U)
+        return ca.sqrt((lam + ca.fabs(lam)) * 0.5 * (m / n))      # max(lam, 0), keeping NaN
+
+
+def _least_eigenvalue(G):
+    """The least eigenvalue of a symmetric 3 x 3 G in closed form (the trigonometric solution
+    of its characteristic cubic); NaN in G gives NaN."""
+    if G.shape[0] != 3:
+        raise NotImplementedError(f"type II singularity measure for task dimension "
+                                  f"{G.shape[0]}: only 2 and 3 are derived")
+    q = (G[0, 0] + G[1, 1] + G[2, 2]) / 3
+    off = G[0, 1] ** 2 + G[0, 2] ** 2 + G[1, 2] ** 2
+    p = ca.sqrt(((G[0, 0] - q) ** 2 + (G[1, 1] - q) ** 2 + (G[2, 2] - q) ** 2 + 2 * off) / 6)
+    B = G - q * ca.SX.eye(3)
+    det = (B[0, 0] * (B[1, 1] * B[2, 2] - B[1, 2] * B[2, 1])
+           - B[0, 1] * (B[1, 0] * B[2, 2] - B[1, 2] * B[2, 0])
+           + B[0, 2] * (B[1, 0] * B[2, 1] - B[1, 1] * B[2, 0]))
+    r = ca.if_else(p > 0, det / (2 * p ** 3), 0)                  # isotropic G: p = 0
+    phi = ca.acos(ca.fmin(ca.fmax(r, -1), 1)) / 3
+    return q + 2 * p * ca.cos(phi + 2 * ca.pi / 3)
+
+
+def assembly_guard(d, conv, value, size):
+    """``value`` where the pose ``conv`` binds is in the model's assembly mode, else NaN (size
+    entries). Only a non-redundant robot (n = m) has other modes that fk cannot reach; its
+    kinematics says which side it is on with ``assembly_side`` (the five-bar's: the sign of
+    cross(B2 - B1, O - B1) against ``fk_branch``). Other robots: ``value`` unchanged."""
+    if d.spec.n_legs != d.m or not hasattr(d.kin, "assembly_side"):
+        return value
+    return ca.if_else(conv(d.kin.assembly_side()) * d.spec.fk_branch > 0, value,
+                      ca.DM.nan(size))
+
 
 def model_functions(d, prefix):
     """The model-level functions of the runtime API, each named and with named inputs/outputs.
 
     Matrices are returned flattened row-major. ``sing`` holds the two singularity measures at the
     pose, [type I (legs), type II (actuation)] (:meth:`Derivation.singularity_measures`).
+    Task-space inputs and outputs have the task dimension m (see also :func:`energy_functions`).
     """
-    n, p = d.spec.n_legs, len(d.spec.param_names)
+    n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
     sym, kin, dyn = d.sym, d.kin, d.dyn
-    q, xe, qa = d.sx("q", 2 * n), d.sx("xe", 2), d.sx("qa", n)
-    xed, xrd, xrdd = d.sx("xed", 2), d.sx("xrd", 2), d.sx("xrdd", 2)
+    q, xe, qa = d.sx("q", 2 * n), d.sx("xe", m), d.sx("qa", n)
+    xed, xrd, xrdd = d.sx("xed", m), d.sx("xrd", m), d.sx("xrdd", m)
     qd, theta, tau_a = d.sx("qd", 2 * n), d.sx("theta", p), d.sx("tau_a", n)
     f = []
 
@@ -110,10 +199,7 @@ def model_functions(d, prefix):
                              [k for k, _ in ins], [k for k, _ in outs]))
 
     cv = Converter(dict(zip(sym.xe, ca.vertsplit(xe))))
-    q_ik = cv(kin.ik())
-    if n == 2:  # five-bar: refuse (NaN) a pose of the other assembly mode, which fk cannot reach
-        q_ik = ca.if_else(cv(kin.assembly_side()) * d.spec.fk_branch > 0, q_ik, ca.DM.nan(2 * n))
-    add("ik", [("xe", xe)], [("q", q_ik)])
+    add("ik", [("xe", xe)], [("q", assembly_guard(d, cv, cv(kin.ik()), 2 * n))])
     cqa = d.converter_qa(qa)
     O = kin.fk()
     add("fk", [("qa", qa)], [("xe", cqa(O)), ("residual", cqa(kin.closure_residuals(O)))])
@@ -139,8 +225,8 @@ def model_functions(d, prefix):
     cy = d.converter_q(q, [(sym.xed, xed), (sym.xrd, xrd), (sym.xrdd, xrdd)])
     add("Y", [("q", q), ("xed", xed), ("xrd", xrd), ("xrdd", xrdd)],
         [("Y", cy(dyn.Y)), ("sing", sing)])                                     # eq. 13
-    u, w, sgn, pre = d.sx("u", 2), d.sx("tau_max", n), d.sx("preload_sign", n), d.sx("preload", n)
-    S = ca.reshape(cq(kin.S), 2, n).T                                           # eq. 8
+    u, w, sgn, pre = d.sx("u", m), d.sx("tau_max", n), d.sx("preload_sign", n), d.sx("preload", n)
+    S = ca.reshape(cq(kin.S), m, n).T                                           # eq. 8
     t_mm, ratio = min_max(S, u, w)
     t_pl, mode = d.preload(S, u, w, sgn, pre)
     add("torque_splits", [("q", q), ("u", u), ("tau_max", w), ("preload_sign", sgn),
@@ -151,3 +237,30 @@ def model_functions(d, prefix):
     add("forward_dynamics", [("xe", xe), ("xed", xed), ("tau_a", tau_a), ("theta", theta)],
         [("xedd", cfd(dyn.xedd)), ("sing", d.singularity_measures(cfd))])       # eqs. 10-12
     return f
+
+
+def energy_functions(d, prefix):
+    """``<prefix>_Ge(q, theta) -> (Ge, sing)``: the gravity term of eq. 10 (zero in a horizontal
+    plane); ``<prefix>_kinetic_energy(xe, xed, theta) -> T`` = 1/2 xed^T Me xed and
+    ``<prefix>_potential_energy(xe, theta) -> V`` (zero without gravity): the derivation's own
+    energies. (Generated after every other function, so adding them appended to the C.)"""
+    n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
+    sym, kin, dyn = d.sym, d.kin, d.dyn
+    q, xe, xed, theta = d.sx("q", 2 * n), d.sx("xe", m), d.sx("xed", m), d.sx("theta", p)
+    cq = d.converter_q(q, [(sym.theta, theta)])
+    ce = d.converter_xe(xe, [(sym.xed, xed), (sym.theta, theta)])
+    ce = ce.extended([(sym.qd, ca.reshape(ce(kin.W), m, 2 * n).T @ xed)])    # qd = W xed, eq. 7
+    V = getattr(dyn, "V", sp.Integer(0))
+    return [ca.Function(f"{prefix}_Ge", [q, theta],
+                        [cq(_gravity_term(d)), d.singularity_measures(cq)],
+                        ["q", "theta"], ["Ge", "sing"]),
+            ca.Function(f"{prefix}_kinetic_energy", [xe, xed, theta], [ce(dyn.T)],
+                        ["xe", "xed", "theta"], ["T"]),
+            ca.Function(f"{prefix}_potential_energy", [xe, theta], [ce(V)],
+                        ["xe", "theta"], ["V"])]
+
+
+def _gravity_term(d):
+    """Ge (m,): the gravity term of the task-space dynamics, zero without gravity."""
+    Ge = getattr(d.dyn, "Ge", None)
+    return sp.zeros(d.m, 1) if Ge is None else Ge

@@ -1,23 +1,26 @@
 # Generated path dynamics for motion planning: coefficients along a path, TOPP passes, torques.
 """The generated C of the time-optimal path parameterisation (pm2dof.planning).
 
-Along a path p(s) (arc length s, m) the task-space dynamics (eqs. 10-12, 2) become
+Along a path p(s) in the model's task space (m = 2: the point's x, y; m = 3: a platform's
+x, y, phi; s the path parameter the planner chooses, arc length for a point) the task-space
+dynamics (eqs. 10-12, 2) become
 
-    u(s, s_d, s_dd) = a(s) s_dd + b(s) s_d^2 + S^T f_a(S p' s_d),
-    a = Me p',   b = Me p'' + Ce(q, p') p',
+    u(s, s_d, s_dd) = a(s) s_dd + b(s) s_d^2 + S^T f_a(S p' s_d) + g(s),
+    a = Me p',   b = Me p'' + Ce(q, p') p',   g = Ge (gravity; absent in a horizontal plane),
 
 and an actuator split must deliver S^T tau = u with |tau_i| <= tau_max,i. For either split the
-feasible forces form a centrally symmetric polygon {u : |N_j . u| <= h_j, j = 1..n}
-(:func:`force_polygon`, unit normals N_j):
+feasible forces form a centrally symmetric polytope {u : |N_j . u| <= h_j, j = 1..F}
+(:func:`force_polygon`, unit normals N_j; F = n facet pairs for m = 2, F = max(n, n (n - 1) / 2)
+for m = 3, a split with fewer repeating its first facet):
 
 * ``min_norm`` (eq. 21): tau = P u, P = S (S^T S)^-1; N_j = P_j / |P_j|, h_j = tau_max,j / |P_j|;
-* ``min_max`` (any tau with S^T tau = u): the zonotope {S^T tau : |tau_i| <= tau_max,i}, whose
-  edges are parallel to its generators g_j = tau_max,j s_j (s_j row j of S): N_j = perp(g_j) /
-  |g_j|, h_j = sum_i |g_i . N_j| (its support function; the least h_j is the inradius of
-  pm2dof.analysis.maps).
+* ``min_max`` (any tau with S^T tau = u): the zonotope {S^T tau : |tau_i| <= tau_max,i} of the
+  generators g_j = tau_max,j s_j (s_j row j of S), whose facets are normal to perp(g_j) for
+  m = 2 and to g_i x g_j for m = 3: N_j that unit normal, h_j = sum_i |g_i . N_j| (its support
+  function; the least h_j is the inradius of pm2dof.analysis.maps).
 
 Facet j reads |A_j s_dd + m_j(s_d)| <= h_j - e_j(s_d) with A_j = N_j . a and
-m_j = N_j . b s_d^2 + sum_i sigma_i (N_j . s_i) f+_i(|v1_i| s_d): at each (s, s_d) the feasible
+m_j = N_j . b s_d^2 + sum_i sigma_i (N_j . s_i) f+_i(|v1_i| s_d) (+ N_j . g): at each (s, s_d) the feasible
 s_dd is an interval [L, U] of linear inequalities, exactly, whatever the friction law. v1 = S p'
 (rad/m) is the joint velocity per unit path speed; for s_d > 0 (the path is followed forwards)
 joint i moves with sign sigma_i = sgn(v1_i), and every friction law of the model files is odd,
@@ -29,8 +32,8 @@ e_j = sum_i |N_j . s_i| f+_i, which tightens both sides of the facet.
 Functions (prefix ``<name>_``), all per grid point:
 
 * ``path_coefficients(p, dp, ddp, theta, tau_max) -> a, b, S, v1, N_min_norm, h_min_norm,
-  N_min_max, h_min_max, sing``; NaN sing at a point out of reach (or, for two legs, in the
-  other assembly mode);
+  N_min_max, h_min_max, sing`` (and ``g`` after ``b`` with gravity); NaN sing at a point out
+  of reach (or, without redundancy, in the other assembly mode);
 * ``path_mvc(stage, params) -> x_mvc``: the maximum-velocity curve squared, the largest s_d^2 at
   which [L, U] is not empty (-1: not even at rest);
 * ``path_backward(x, pair, params) -> x_next, y``: one backward step of the controllable sets
@@ -39,14 +42,16 @@ Functions (prefix ``<name>_``), all per grid point:
   arrival facets' maximum-velocity curve: from x, the largest s_d^2 at s_k+1 from which the
   end can be reached, to the largest s_d^2 at s_k with a feasible s_dd that lands between rest
   and it (s_d^2 in [0, x]) with the arrival facets holding there too, capped at ``x_cap``
-  (-1: none);
+  (-1: none); its input (layout ``path_backward_input``) is the pair and a previous pass's
+  step over the same interval (``same``, ``x_in``, ``x_out``: :func:`_reusing`);
 * ``path_forward(x, input, params) -> x_next, y``: one forward step from s_d^2 = x at s_k, the
   greatest s_dd feasible leaving s_k that keeps s_d^2 at s_k+1 within the controllable bound
   (``x_next_max``) and that the arrival facets' U allows at its own landing speed (the
   :data:`ARRIVAL_STEPS` regula falsi steps), never landing below rest; y (layout
   ``path_forward_output``) = [x, s_dd, L, U, Z, arrival_ok] (L, U: the feasible s_dd leaving
   s_k; Z >= 0: the facets parallel to a hold; arrival_ok: 1 if the arrival facets hold too, 0
-  where both ends cannot, where the departing ones are kept);
+  where both ends cannot, where the departing ones are kept); landing on the bound lands on
+  it exactly; a previous pass's step is reused as in ``path_backward``;
 * ``path_torques(stage, sd, sdd, params, tau_max) -> u, tau_min_norm, tau_min_max, ratio``.
 
 The largest s_d with a non-empty interval is found by bisection with :data:`BISECTIONS`
@@ -57,26 +62,31 @@ law affine in |v| (Coulomb + viscous, eq. 2) each facet is a quadratic in s_d wh
 coefficients are computed once per point; other laws (Stribeck, smooth sign) are evaluated at
 every halving.
 """
+import math
+
 import casadi as ca
 import sympy as sp
 
 from .dynamics import _friction
-from .factored import task_inertia_coriolis
+from .factored import solve_small, task_gravity, task_inertia_coriolis
+from .model_functions import assembly_guard
 from .layouts import Layout
-from .splits import min_max, min_norm
+from .splits import _cross, _dot, min_max, min_norm
 from .symbols import sgn
 from .to_casadi import Converter
 
 __all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS", "MVC_BISECTIONS",
-           "HINT_SPAN", "HINT_FLOOR", "ARRIVAL_STEPS"]
+           "HINT_SPAN", "HINT_FLOOR", "ARRIVAL_STEPS", "LATTICE_BITS"]
 
 #: halvings of the bisection for the largest controllable s_d, on a bracket of +-10 % around
-#: a hint (braking onto the next point's bound; resolution 5e-8 of it) or, where that does not
-#: bracket the answer (a jump of the maximum-velocity curve), on [0, v_top] (2.4e-5 m/s at
-#: 100 m/s, on the feasible side); and for the maximum-velocity curve (a
-#: diagnostic the passes use only at breakpoints): v_top 2^-20, 1e-4 m/s at 100 m/s
-BISECTIONS = 22
+#: a hint (braking onto the next point's bound), on a lattice of 2^-LATTICE_BITS of the hint's
+#: power of two (resolution 6e-8 to 1.2e-7 of it; converged for hints above HINT_FLOOR) or,
+#: where that does not bracket the answer (a jump of the maximum-velocity curve), on
+#: [0, v_top] (3e-6 m/s at 100 m/s, on the feasible side); and for the maximum-velocity curve
+#: (a diagnostic the passes use only at breakpoints): v_top 2^-20, 1e-4 m/s at 100 m/s
+BISECTIONS = 25
 MVC_BISECTIONS = 20
+LATTICE_BITS = 24
 HINT_SPAN, HINT_FLOOR = 0.1, 1e-3
 #: steps of the forward pass's search (Illinois regula falsi, on the allowed side) for the
 #: greatest s_dd that the arrival facets allow at its own landing speed, on the bracket [U there
@@ -85,25 +95,42 @@ ARRIVAL_STEPS = 4
 _PARALLEL = 1e-12   # |N_j . a| <= _PARALLEL |a|: facet j does not bound s_dd (it bounds s_d only)
 
 
-def path_layouts(n, p):
-    """Per-grid-point vectors of the path functions (manifest layouts)."""
-    stage = Layout([("N", 2 * n), ("h", n), ("a", 2), ("b", 2), ("S", 2 * n), ("v1", n),
+def facet_count(n, m):
+    """F, the facet pairs of a stage's force polytope (both splits padded to the larger)."""
+    return n if m == 2 else max(n, n * (n - 1) // 2)
+
+
+def path_layouts(n, p, m, gravity=False):
+    """Per-grid-point vectors of the path functions (manifest layouts), task dimension m; a
+    model with gravity has its gravity force g in the stage."""
+    F = facet_count(n, m)
+    g = [("g", m)] if gravity else []
+    stage = Layout([("N", m * F), ("h", F), ("a", m), ("b", m)] + g + [("S", m * n), ("v1", n),
                     ("rho", n), ("delta", 1), ("x_cap", 1)])
     # an interval: the point's own stage, the next point's arrival stage (the path's left limit
     # there, the interval's rho) and the largest s_d^2 its facets allow (its MVC)
     pair = Layout([("stage", stage.size), ("next", stage.size), ("next_cap", 1)])
-    forward = Layout([("pair", pair.size), ("x_next_max", 1)])
     forward_out = Layout([("x", 1), ("sdd", 1), ("L", 1), ("U", 1), ("Z", 1),
                           ("arrival_ok", 1)])
+    # a step of a previous pass over the same interval with the same input (same = 1): where
+    # it started from x_in too, its result x_out is the step's, and is returned (with y = [x,
+    # 0, ...]: the caller has the previous y)
+    backward = Layout([("pair", pair.size), ("same", 1), ("x_in", 1), ("x_out", 1)])
+    forward = Layout([("pair", pair.size), ("x_next_max", 1), ("same", 1), ("x_in", 1),
+                      ("x_out", 1)])
     params = Layout([("v_top", 1), ("theta", p)])
-    return {"path_stage": stage, "path_pair": pair, "path_forward_input": forward,
-            "path_forward_output": forward_out, "path_params": params}
+    return {"path_stage": stage, "path_pair": pair, "path_backward_input": backward,
+            "path_forward_input": forward, "path_forward_output": forward_out,
+            "path_params": params}
 
 
 def force_polygon(S, w):
-    """The feasible task forces {u : |N_j . u| <= h_j} of both splits at a pose, for S (n, 2)
-    and limits w (n,): (N_mn (n, 2) row-major as 2n SX, h_mn (n,), N_mm, h_mm)."""
-    n = S.shape[0]
+    """The feasible task forces {u : |N_j . u| <= h_j} of both splits at a pose, for S (n, m)
+    and limits w (n,): (N_mn (F, m) row-major as F m SX, h_mn (F,), N_mm, h_mm), F facets
+    (:func:`facet_count`)."""
+    n, m = S.shape
+    if m != 2:
+        return _force_polytope(S, w)
     G = S.T @ S
     P = S @ ca.vertcat(ca.horzcat(G[1, 1], -G[0, 1]), ca.horzcat(-G[1, 0], G[0, 0])) / (
         G[0, 0] * G[1, 1] - G[0, 1] * G[1, 0])                       # S (S^T S)^-1, eq. 21
@@ -119,6 +146,42 @@ def force_polygon(S, w):
         mm += list(nj)
         hmm.append(sum(ca.fabs(g[i][0] * nj[0] + g[i][1] * nj[1]) for i in range(n)))
     return ca.vertcat(*mn), ca.vertcat(*hmn), ca.vertcat(*mm), ca.vertcat(*hmm)
+
+
+def _force_polytope(S, w):
+    """:func:`force_polygon` for m = 3: the min-norm slabs of P = S (S^T S)^-1 and the
+    zonotope's facets, normal to g_i x g_j (i < j). Where g_i and g_j are parallel that normal
+    is undefined and the pair's facet is another facet's duplicate; its place holds the
+    zonotope's supporting slab normal to g_i (valid, never cutting). Padding to F repeats the
+    first facet."""
+    n, m = S.shape
+    F = facet_count(n, m)
+    P = S @ ca.horzcat(*[solve_small(S.T @ S, ca.DM.eye(m)[:, k]) for k in range(m)])  # eq. 21
+    mn, hmn = [], []
+    for i in range(n):
+        norm = ca.sqrt(ca.sumsqr(P[i, :]))
+        mn.append(P[i, :].T / norm)
+        hmn.append(w[i] / norm)
+    g = [w[i] * S[i, :].T for i in range(n)]
+    mm, hmm = [], []
+    for i in range(n):
+        for j in range(i + 1, n):
+            l = _cross(g[i], g[j])
+            ln, gn = ca.sqrt(_dot(l, l)), ca.sqrt(_dot(g[i], g[i]) * _dot(g[j], g[j]))
+            N = ca.if_else(ln > _PARALLEL * gn, l / ln, g[i] / ca.sqrt(_dot(g[i], g[i])))
+            mm.append(N)
+            hmm.append(sum(ca.fabs(_dot(g[k], N)) for k in range(n)))   # support function
+    mn, hmn = mn + [mn[0]] * (F - len(mn)), hmn + [hmn[0]] * (F - len(hmn))
+    mm, hmm = mm + [mm[0]] * (F - len(mm)), hmm + [hmm[0]] * (F - len(hmm))
+    return ca.vertcat(*mn), ca.vertcat(*hmn), ca.vertcat(*mm), ca.vertcat(*hmm)
+
+
+def _norm(v, m):
+    """|v| of an m-vector (for m = 2 as sqrt(v0^2 + v1^2))."""
+    out = v[0] ** 2
+    for k in range(1, m):
+        out = out + v[k] ** 2
+    return ca.sqrt(out)
 
 
 class _PathFriction:
@@ -160,52 +223,61 @@ class _PathFriction:
 
 
 class _Stage:
-    """The facets of one grid point as functions of s_d (SX), from a ``path_stage`` vector."""
+    """The facets of one grid point as functions of s_d (SX), from a ``path_stage`` vector:
+    n actuators, task dimension m, F facets (:func:`facet_count`)."""
 
-    def __init__(self, n, st, friction):
-        self.n, self.st, self.friction = n, st, friction
-        N = ca.reshape(st["N"], 2, n).T
-        S = ca.reshape(st["S"], 2, n).T
+    def __init__(self, n, st, friction, m):
+        F = facet_count(n, m)
+        self.n, self.F, self.st, self.friction = n, F, st, friction
+        N = ca.reshape(st["N"], m, F).T
+        S = ca.reshape(st["S"], m, n).T
         self.S = S
         v1, rho = st["v1"], st["rho"]
-        self.sigma = ca.vertcat(*[ca.if_else(v1[i] >= 0, 1, -1) for i in range(n)])  # sgn(0)=+1
+        # sigma_i: the direction joint i moves on the interval ahead (s_d > 0), not the model's
+        # sign of a velocity (sign(0) = 0): v1_i = 0 counts as forward, and a neighbour with
+        # the other sign makes the interval a reversal (rho_i = 1, both signs; stages.py)
+        self.sigma = ca.vertcat(*[ca.if_else(v1[i] >= 0, 1, -1) for i in range(n)])
         self.abs_v1 = ca.fabs(v1)
         A, self.B = N @ st["a"], N @ st["b"]
-        Cf = N @ S.T                                  # (n, n): facet j's weight of f_a,i
-        an = ca.sqrt(st["a"][0] ** 2 + st["a"][1] ** 2)
-        free = [ca.fabs(A[j]) <= _PARALLEL * an for j in range(n)]     # does not bound s_dd
-        self.I = [ca.if_else(free[j], 0, 1 / A[j]) for j in range(n)]
+        Cf = N @ S.T                                  # (F, n): facet j's weight of f_a,i
+        an = _norm(st["a"], m)
+        free = [ca.fabs(A[j]) <= _PARALLEL * an for j in range(F)]     # does not bound s_dd
+        self.I = [ca.if_else(free[j], 0, 1 / A[j]) for j in range(F)]
         self.aI = [ca.fabs(x) for x in self.I]
-        self.pen = [ca.if_else(free[j], ca.inf, 0) for j in range(n)]     # L, U: unbounded
-        self.zpen = [ca.if_else(free[j], 0, ca.inf) for j in range(n)]    # Z: only free ones
+        self.pen = [ca.if_else(free[j], ca.inf, 0) for j in range(F)]     # L, U: unbounded
+        self.zpen = [ca.if_else(free[j], 0, ca.inf) for j in range(F)]    # Z: only free ones
         self.h = st["h"]
+        self.G = N @ st["g"] if "g" in st else None   # facet j's share of gravity, N_j . g
         moving = [1 - rho[i] for i in range(n)]
-        self.Wm = [[moving[i] * self.sigma[i] * Cf[j, i] for i in range(n)] for j in range(n)]
-        self.We = [[rho[i] * ca.fabs(Cf[j, i]) for i in range(n)] for j in range(n)]
+        self.Wm = [[moving[i] * self.sigma[i] * Cf[j, i] for i in range(n)] for j in range(F)]
+        self.We = [[rho[i] * ca.fabs(Cf[j, i]) for i in range(n)] for j in range(F)]
         if friction.affine:   # m_j = B_j sd^2 + m1_j sd + m0_j, e_j = e1_j sd + e0_j
             f0, f1 = friction.f0, friction.f1 * self.abs_v1
             dot = lambda W, f: sum(W[i] * f[i] for i in range(n))
-            self.m1 = [dot(self.Wm[j], f1) for j in range(n)]
-            self.m0 = [dot(self.Wm[j], f0) for j in range(n)]
-            self.e1 = [dot(self.We[j], f1) for j in range(n)]
-            self.e0 = [dot(self.We[j], f0) for j in range(n)]
+            self.m1 = [dot(self.Wm[j], f1) for j in range(F)]
+            self.m0 = [dot(self.Wm[j], f0) for j in range(F)]
+            if self.G is not None:
+                self.m0 = [self.m0[j] + self.G[j] for j in range(F)]
+            self.e1 = [dot(self.We[j], f1) for j in range(F)]
+            self.e0 = [dot(self.We[j], f0) for j in range(F)]
 
     def _m_e(self, sd):
-        n = self.n
+        n, F = self.n, self.F
         if self.friction.affine:
-            return ([self.B[j] * sd * sd + self.m1[j] * sd + self.m0[j] for j in range(n)],
-                    [self.e1[j] * sd + self.e0[j] for j in range(n)])
+            return ([self.B[j] * sd * sd + self.m1[j] * sd + self.m0[j] for j in range(F)],
+                    [self.e1[j] * sd + self.e0[j] for j in range(F)])
         f = self.friction.positive(self.abs_v1 * sd)
-        return ([self.B[j] * sd * sd + sum(self.Wm[j][i] * f[i] for i in range(n))
-                 for j in range(n)],
-                [sum(self.We[j][i] * f[i] for i in range(n)) for j in range(n)])
+        m = [self.B[j] * sd * sd + sum(self.Wm[j][i] * f[i] for i in range(n)) for j in range(F)]
+        if self.G is not None:
+            m = [m[j] + self.G[j] for j in range(F)]
+        return m, [sum(self.We[j][i] * f[i] for i in range(n)) for j in range(F)]
 
     def bounds(self, sd):
         """(L, U, Z) at speed sd: s_dd in [L, U] is feasible, and the facets parallel to a
         need Z >= 0 (-inf / +inf where nothing bounds that side)."""
         m, e = self._m_e(sd)
         L, U, Z = -ca.inf, ca.inf, ca.inf
-        for j in range(self.n):
+        for j in range(self.F):
             hh = self.h[j] - e[j]
             c = -m[j] * self.I[j]
             L = ca.fmax(L, c - hh * self.aI[j] - self.pen[j])
@@ -220,46 +292,81 @@ class _Stage:
     def largest(self, v_top, predicate, halvings, hint=None):
         """(largest sd in [0, v_top] where predicate(sd) holds, holds at 0), by bisection; with
         a ``hint``, on [hint (1 - r), hint (1 + r) + c] (r = HINT_SPAN, c = HINT_FLOOR m/s)
-        when that brackets the answer, else on [0, v_top]."""
+        when that brackets the answer, else on [0, v_top]. The bisection keeps to a lattice,
+        multiples of q = v_top 2^-halvings on [0, v_top], of q = 2^(e - LATTICE_BITS) on the
+        hint's bracket (2^e <= hint < 2^(e+1)), rounded outwards onto it: where it converges
+        (the bracket at most 2^halvings steps: any hint above HINT_FLOOR) the result is the
+        largest lattice point where the predicate holds, whatever the hint's exact value (a
+        pass whose bound changed in its last bits meets the unchanged one again)."""
         ok0, okt = predicate(ca.SX(0)), predicate(v_top)
-        lo, hi = ca.SX(0), v_top
+        lo, hi, q = ca.SX(0), v_top, v_top * 2.0 ** -halvings
         if hint is not None:
-            a, b = hint * (1 - HINT_SPAN), hint * (1 + HINT_SPAN) + HINT_FLOOR
+            h = ca.fmax(hint, 1e-30)      # a speed, m/s; 1e-30: a normal float (pm2dof export --precision single)
+            qh = 2 ** (ca.floor(ca.log(h) / math.log(2)) - LATTICE_BITS)
+            a = ca.floor(h * (1 - HINT_SPAN) / qh) * qh
+            b = ca.ceil((h * (1 + HINT_SPAN) + HINT_FLOOR) / qh) * qh
             use = ca.logic_and(predicate(a), ca.logic_not(predicate(b)))
-            lo, hi = ca.if_else(use, a, lo), ca.if_else(use, b, hi)
+            lo, hi, q = ca.if_else(use, a, lo), ca.if_else(use, b, hi), ca.if_else(use, qh, q)
         for _ in range(halvings):
-            mid = 0.5 * (lo + hi)
+            mid = lo + ca.floor((hi - lo) / (2 * q)) * q
             c = predicate(mid)
             lo, hi = ca.if_else(c, mid, lo), ca.if_else(c, hi, mid)
         return ca.if_else(okt, v_top, lo), ok0
 
 
+def _reusing(name, step, layout, names_in, names_out):
+    """``step`` (x, input, params) -> outputs (``input``: the layout's ``pair``, or the whole
+    layout) as a Function of (x, layout, params) that returns a previous pass's result where
+    the layout says the interval and its input are the same (``same``) and the pass arrives
+    with the same state (x == x_in): x_next = x_out, the step's own result, bit for bit,
+    without evaluating it (a CasADi switch: the generated C evaluates one branch), and y =
+    [x, 0, ...] (the caller has the previous one). Outputs (x_next, y)."""
+    sx = [ca.SX.sym(f"a{i}", n) for i, n in enumerate((step.size1_in(0), layout.size,
+                                                         step.size1_in(2)))]
+    U = layout.split(sx[1])
+    arg = sx[1] if step.size1_in(1) == layout.size else U["pair"]
+    full = step(sx[0], arg, sx[2])
+    if isinstance(full, (list, tuple)):        # (x_next, y): y's first entry x, the rest 0
+        kept = [U["x_out"], ca.vertcat(sx[0], ca.SX.zeros(full[1].numel() - 1))]
+    else:                                       # x_next, which is y too
+        full, kept = [full, full], [U["x_out"], U["x_out"]]
+    switch = ca.Function.conditional(f"{name}_switch",
+                                     [ca.Function(f"{name}_reuse", sx, kept)],
+                                     ca.Function(f"{name}_full", sx, full))
+    x, u, prm = (ca.MX.sym(f"m{i}", s.numel()) for i, s in enumerate(sx))
+    Um = layout.split(u)
+    case = ca.if_else(ca.logic_and(Um["same"] != 0, x == Um["x_in"]), 0, 1)
+    return ca.Function(name, [x, u, prm], switch(case, x, u, prm), names_in, names_out)
+
+
 def path_functions(d, prefix):
     """``<prefix>_path_coefficients``, ``_path_mvc``, ``_path_backward``, ``_path_forward`` and
     ``_path_torques`` (see the module docstring); each named, with named inputs and outputs."""
-    n, p = d.spec.n_legs, len(d.spec.param_names)
+    n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
     sym = d.sym
-    lays = path_layouts(n, p)
-    pos, dp, ddp = ca.SX.sym("p", 2), ca.SX.sym("dp", 2), ca.SX.sym("ddp", 2)
+    pos, dp, ddp = ca.SX.sym("p", m), ca.SX.sym("dp", m), ca.SX.sym("ddp", m)
     theta, w = ca.SX.sym("theta", p), ca.SX.sym("tau_max", n)
     conv = d.converter_xe(pos)
     Me, Ce_v, S, _ = task_inertia_coriolis(d, conv, dp, [(sym.theta, theta)])   # eq. 12
+    g = task_gravity(d, conv, [(sym.theta, theta)])                             # eq. 10
+    lays = path_layouts(n, p, m, gravity=g is not None)
     sing = d.singularity_measures(conv)
-    if n == 2:  # five-bar: the other assembly mode is out of the workspace (model.ik refuses it)
-        sing = ca.if_else(conv(d.kin.assembly_side()) * d.spec.fk_branch > 0, sing,
-                          ca.DM.nan(2))
+    # without redundancy the other assembly mode is out of the workspace (model.ik refuses it)
+    sing = assembly_guard(d, conv, sing, 2)
     N_mn, h_mn, N_mm, h_mm = force_polygon(S, w)
+    gravity = [] if g is None else [("g", g)]
+    outs = [("a", Me @ dp), ("b", Me @ ddp + Ce_v)] + gravity + [
+        ("S", ca.vec(S.T)), ("v1", S @ dp), ("N_min_norm", N_mn), ("h_min_norm", h_mn),
+        ("N_min_max", N_mm), ("h_min_max", h_mm), ("sing", sing)]
     out = [ca.Function(
-        f"{prefix}_path_coefficients", [pos, dp, ddp, theta, w],
-        [Me @ dp, Me @ ddp + Ce_v, ca.vec(S.T), S @ dp, N_mn, h_mn, N_mm, h_mm, sing],
-        ["p", "dp", "ddp", "theta", "tau_max"],
-        ["a", "b", "S", "v1", "N_min_norm", "h_min_norm", "N_min_max", "h_min_max", "sing"])]
+        f"{prefix}_path_coefficients", [pos, dp, ddp, theta, w], [v for _, v in outs],
+        ["p", "dp", "ddp", "theta", "tau_max"], [k for k, _ in outs])]
 
     prm = ca.SX.sym("params", lays["path_params"].size)
     P = lays["path_params"].split(prm)
     friction = _PathFriction(d, P["theta"])
     stage_v = ca.SX.sym("stage", lays["path_stage"].size)
-    st = _Stage(n, lays["path_stage"].split(stage_v), friction)
+    st = _Stage(n, lays["path_stage"].split(stage_v), friction, m)
     v_top = P["v_top"]
 
     y_mvc, ok0 = st.largest(v_top, lambda sd: st.feasible(sd)[0], MVC_BISECTIONS)
@@ -269,8 +376,8 @@ def path_functions(d, prefix):
     # one interval [s_k, s_k+1]: the own facets at s_k and the arrival facets at s_k+1
     pair_v = ca.SX.sym("pair", lays["path_pair"].size)
     PR = lays["path_pair"].split(pair_v)
-    own = _Stage(n, lays["path_stage"].split(PR["stage"]), friction)
-    nxt = _Stage(n, lays["path_stage"].split(PR["next"]), friction)
+    own = _Stage(n, lays["path_stage"].split(PR["stage"]), friction, m)
+    nxt = _Stage(n, lays["path_stage"].split(PR["next"]), friction, m)
     delta = own.st["delta"]
 
     x = ca.SX.sym("x_next_max")                 # controllable bound at s_k+1
@@ -290,18 +397,21 @@ def path_functions(d, prefix):
     hint = ca.sqrt(ca.fmin(ca.fmax(xl - 2 * delta * L_next, 0), 4 * ca.fmax(xl, 0) + 1))
     y_b, ok0 = own.largest(v_top, reaches, BISECTIONS, hint=hint)
     x_b = ca.if_else(ca.logic_and(ok0, xl >= 0), ca.fmin(y_b * y_b, own.st["x_cap"]), -1)
-    out.append(ca.Function(f"{prefix}_path_backward", [x, pair_v, prm], [x_b, x_b],
-                           ["x_next_max", "pair", "params"], ["x_max", "y"]))
+    step = ca.Function(f"{prefix}_path_backward_step", [x, pair_v, prm], [x_b])
+    out.append(_reusing(f"{prefix}_path_backward", step, lays["path_backward_input"],
+                        ["x_next_max", "input", "params"], ["x_max", "y"]))
 
     fin = ca.SX.sym("input", lays["path_forward_input"].size)
     F = lays["path_forward_input"].split(fin)
     PF = lays["path_pair"].split(F["pair"])
-    fown = _Stage(n, lays["path_stage"].split(PF["stage"]), friction)
-    fnxt = _Stage(n, lays["path_stage"].split(PF["next"]), friction)
+    fown = _Stage(n, lays["path_stage"].split(PF["stage"]), friction, m)
+    fnxt = _Stage(n, lays["path_stage"].split(PF["next"]), friction, m)
     xk = ca.SX.sym("x")
     L, U, Z = fown.bounds(ca.sqrt(ca.fmax(xk, 0)))
     dlt = fown.st["delta"]
-    top = ca.fmin(U, (ca.fmin(F["x_next_max"], PF["next_cap"]) - xk) / (2 * dlt))
+    x_land = ca.fmin(F["x_next_max"], PF["next_cap"])
+    on_bound = (x_land - xk) / (2 * dlt)     # the s_dd landing on the controllable bound
+    top = ca.fmin(U, on_bound)
     floor = ca.fmax(L, -xk / (2 * dlt))     # the least s_dd: own facets, landing at rest or above
 
     def room(sdd):         # the arrival facets' U at the landing speed, less sdd (>= 0: allowed)
@@ -335,13 +445,19 @@ def path_functions(d, prefix):
     arrival_ok = ca.logic_and(ca.logic_and(sdd >= Ln - 1e-9 * scale, sdd <= Un + 1e-9 * scale),
                               Zn >= -1e-9 * ca.mmax(fnxt.h))
     y = lays["path_forward_output"].pack(x=xk, sdd=sdd, L=L, U=U, Z=Z, arrival_ok=arrival_ok)
-    out.append(ca.Function(f"{prefix}_path_forward", [xk, fin, prm], [xk + 2 * dlt * sdd, y],
-                           ["x", "input", "params"], ["x_next", "y"]))
+    # landing on the bound lands on it exactly (not within a rounding of it, which would depend
+    # on x_k): a forward pass whose speed changed somewhere meets the unchanged one there
+    x_next = ca.if_else(sdd == on_bound, x_land, xk + 2 * dlt * sdd)
+    step = ca.Function(f"{prefix}_path_forward_step", [xk, fin, prm], [x_next, y])
+    out.append(_reusing(f"{prefix}_path_forward", step, lays["path_forward_input"],
+                        ["x", "input", "params"], ["x_next", "y"]))
 
     sd, sdd = ca.SX.sym("sd"), ca.SX.sym("sdd")
     S2 = st.S
     u = st.st["a"] * sdd + st.st["b"] * sd * sd \
         + S2.T @ friction.signed(st.st["v1"] * sd, st.sigma)
+    if "g" in st.st:                                   # gravity (eq. 10)
+        u = u + st.st["g"]
     t_mm, ratio = min_max(S2, u, w)
     out.append(ca.Function(f"{prefix}_path_torques", [stage_v, sd, sdd, prm, w],
                            [u, min_norm(S2, u), t_mm, ratio],

@@ -19,16 +19,18 @@ from pm2dof.core.model_file import read_model_file
 from .controllers import STATUS, controller_functions, controller_layouts
 from .derivatives import derivative_functions
 from .export import MANIFEST, export
-from .model_functions import Derivation, model_functions
+from .factored import has_gravity
+from .model_functions import Derivation, energy_functions, model_functions
 from .planning import path_functions, path_layouts
-from .plant import closed_loop_functions, closed_loop_layouts, plant_functions, plant_layout
+from .plant import closed_loop_functions, closed_loop_layouts, model_plant_layout, plant_functions
 
 __all__ = ["derive", "DeriveError"]
 
 
 class DeriveError(ModelFileError):
     """Derivation refused: the output folder belongs to another model file or to the installed
-    package (the message names both files, or what to do instead)."""
+    package (the message names both files, or what to do instead), or the model's task
+    dimension is neither 2 nor 3."""
 
 
 def _finalize(f):
@@ -107,25 +109,48 @@ def derive(model, out=None, *, force=False, build=True, progress=print):
         f"parameters, friction {spec.friction!r}")
     d = Derivation(spec)
     say("SymPy: H, A, W, Wdot, S, M, C, Me, Ce, S^T f_a, Y, forward dynamics derived")
-    n, p = spec.n_legs, len(spec.param_names)
-    ctrl = [_finalize(f) for f in controller_functions(d, spec.name)]
-    plant = [_finalize(f) for f in plant_functions(d, spec.name)]
-    loops = closed_loop_functions(d, spec.name, ctrl, plant, spec.rk4_substeps)
-    functions = [_finalize(f) for f in model_functions(d, spec.name)] + ctrl + plant + loops
-    functions += [_finalize(f) for f in path_functions(d, spec.name)]       # motion planning
-    functions += derivative_functions(d, spec.name, spec.rk4_substeps, _finalize)
+    functions = derive_functions(d, spec)
     say(f"CasADi: {len(functions)} functions, "
         f"{sum(f.n_instructions() for f in functions)} instructions")
-    layouts = {**controller_layouts(n, p), **closed_loop_layouts(n, p), "plant": plant_layout(n),
-               **path_layouts(n, p)}
-    extra = {"layouts": {k: v.to_json() for k, v in layouts.items()}, "status_codes": STATUS,
-             "rk4_substeps": spec.rk4_substeps}
+    extra = {"layouts": {k: v.to_json() for k, v in derive_layouts(d).items()},
+             "status_codes": STATUS, "rk4_substeps": spec.rk4_substeps,
+             "task_names": list(task_names(d))}      # the task dimension m and its coordinates
     # the model file as seen from the output folder, so the pair can be moved together
     label = Path(os.path.relpath(model_path.resolve(), out.resolve())).as_posix()
-    manifest = export(spec, functions, out, label, extra)
+    manifest = export(spec, functions, out, label, extra, task_names(d))
     say(f"wrote {', '.join(manifest['files'])}, {MANIFEST} in {out}")
     if build:
         from pm2dof.core.build import compile_library
         lib = compile_library(out / f"{spec.name}.c", out / f"lib{spec.name}.so")
         say(f"compiled {lib}")
     return out
+
+
+def task_names(d):
+    """The names of the task coordinates: the model's ``task_names``, else by dimension."""
+    names = getattr(d.spec, "task_names", None)
+    return tuple(names) if names else ("x", "y", "phi")[:d.m]
+
+
+def derive_functions(d, spec):
+    """Every generated function of a derivation, finalized, in the order of the C file.
+    Refuses (DeriveError) a task dimension other than 2 (a point) or 3 (a platform's x, y,
+    phi): the closed-form splits, solves and singularity measures exist for those."""
+    if d.m not in (2, 3):
+        raise DeriveError(f"model {spec.name!r}: task dimension {d.m} (task coordinates "
+                          f"{task_names(d)}); pm2dof derives 2 (x, y) or 3 (x, y, phi)")
+    ctrl = [_finalize(f) for f in controller_functions(d, spec.name)]
+    plant = [_finalize(f) for f in plant_functions(d, spec.name)]
+    loops = closed_loop_functions(d, spec.name, ctrl, plant, spec.rk4_substeps)
+    functions = [_finalize(f) for f in model_functions(d, spec.name)] + ctrl + plant + loops
+    functions += [_finalize(f) for f in path_functions(d, spec.name)]       # motion planning
+    functions += derivative_functions(d, spec.name, spec.rk4_substeps, _finalize)
+    functions += [_finalize(f) for f in energy_functions(d, spec.name)]    # Ge, T, V
+    return functions
+
+
+def derive_layouts(d):
+    """The manifest's flat-vector layouts of a derivation (task dimension d.m)."""
+    n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
+    return {**controller_layouts(n, p, m), **closed_loop_layouts(n, p, m),
+            "plant": model_plant_layout(d.spec), **path_layouts(n, p, m, has_gravity(d))}

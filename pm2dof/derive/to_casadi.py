@@ -21,17 +21,22 @@ class Converter:
         (cos, sin) of joint angles. sin/cos of a sum or difference of such angles is expanded
         by the angle-sum identities, so a whole model costs one sin/cos per angle (or none,
         when the table comes from geometry as unit vectors).
+    lazy : dict {sympy.Symbol: sympy expression}, optional
+        Symbols not in ``symbols`` that stand for an expression of the others, converted on
+        first use (e.g. a platform's pose in a function of the joint angles: fk). Unused, they
+        add nothing to the graph.
     """
 
-    def __init__(self, symbols, trig=None):
+    def __init__(self, symbols, trig=None, lazy=None):
         self.symbols = dict(symbols)
         self.trig = dict(trig or {})
+        self.lazy = dict(lazy or {})
         self.cache = {}
 
     def extended(self, pairs):
         """A converter with more symbols bound ((sympy symbols, SX vector) pairs). It shares the
         trig table and starts from a copy of this cache, so common pieces convert once."""
-        out = Converter(self.symbols, self.trig)
+        out = Converter(self.symbols, self.trig, self.lazy)
         out.cache = dict(self.cache)
         for syms, value in pairs:
             out.symbols.update(zip(syms, ca.vertsplit(value)))
@@ -60,6 +65,8 @@ class Converter:
 
     def _convert(self, e):
         if e.is_Symbol:
+            if e not in self.symbols and e in self.lazy:
+                self.symbols[e] = self(self.lazy[e])
             if e not in self.symbols:
                 raise KeyError(f"no CasADi value for symbol {e}")
             return self.symbols[e]
@@ -98,8 +105,8 @@ class Converter:
             return (ca.cos if isinstance(e, sp.cos) else ca.sin)(self(e.args[0]))
         if isinstance(e, sp.atan2):
             return ca.atan2(self(e.args[0]), self(e.args[1]))
-        if isinstance(e, sgn):  # sgn(0) = +1
-            return ca.if_else(self(e.args[0]) >= 0, 1, -1)
+        if isinstance(e, sgn):  # sgn(0) = 0 (eq. 2); its derivative is 0
+            return ca.sign(self(e.args[0]))
         for fn, cfn in _UNARY.items():
             if isinstance(e, fn):
                 return cfn(self(e.args[0]))

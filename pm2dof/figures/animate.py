@@ -3,7 +3,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.results import output_path
+from ..infra.results import output_path
 from ..core.errors import ArgumentError, OutputError
 from ..control.trajectory import model_move
 from ..control.controllers import APDController, NAController
@@ -11,7 +11,7 @@ from ..control.simulate import simulate
 from .experiment import COLORS, LABELS, _plt, sci
 from .style import label_bases, legend_outside
 
-__all__ = ["animate_move", "animation_figure"]
+__all__ = ["animate_move", "animation_figure", "render_frames"]
 
 DPI = 80    # of the GIF: about 960 x 380 px
 
@@ -57,7 +57,6 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
     -------
     (Path, SimResult)
     """
-    from matplotlib import animation
     if controller not in CONTROLLERS:
         raise ArgumentError(f"controller must be one of {sorted(CONTROLLERS)}, got {controller!r}")
     if not (isinstance(every, int) and every >= 1 and isinstance(fps, int) and fps >= 1):
@@ -80,42 +79,59 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
                                            fps=fps, every=every)
     if progress:
         progress(f"{n_frames} frames of {speed}-speed {controller}, error x{magnify:g}")
-    anim = animation.FuncAnimation(fig, draw, frames=n_frames, blit=False)
+    frames = render_frames(fig, draw, n_frames)
+    plt.close(fig)
     tmp = out.with_name(f".{out.name}.tmp.gif")
     try:
-        anim.save(tmp, writer=_gif_writer(animation)(fps=fps), dpi=DPI)
+        _save_gif(frames, tmp, fps)
         tmp.replace(out)                         # atomic: never a half-written GIF
     except OSError as exc:
         tmp.unlink(missing_ok=True)
         raise OutputError(f"cannot write {out}: {exc.strerror or exc}") from None
-    plt.close(fig)
     return out, r
 
 
-def _gif_writer(animation):
-    """matplotlib's PillowWriter with one palette for every frame, taken from the first, and no
+def render_frames(fig, draw, n_frames):
+    """The frames as RGB images: the figure drawn once without the artists ``draw`` moves
+    (marked animated), then per frame that background restored and only those artists drawn
+    on it (blitting). A full redraw per frame (matplotlib's FuncAnimation.save: 244 redraws for
+    80 frames) re-rendered every axis, tick and legend each time for the same pixels."""
+    from PIL import Image
+    moving = draw(0)
+    for a in moving:
+        a.set_animated(True)
+    canvas = fig.canvas
+    canvas.draw()
+    background = canvas.copy_from_bbox(fig.bbox)
+    out = []
+    for j in range(n_frames):
+        canvas.restore_region(background)
+        for a in draw(j):
+            fig.draw_artist(a)
+        out.append(Image.frombuffer("RGBA", canvas.get_width_height(), canvas.buffer_rgba(),
+                                    "raw", "RGBA", 0, 1).convert("RGB"))
+    return out
+
+
+def _save_gif(frames, path, fps):
+    """An animated GIF with one palette for every frame, taken from the first, and no
     dithering: frames then differ only where something moved, and Pillow stores only that
     (a third of the size of independently dithered frames)."""
     from PIL import Image
-
-    class SharedPaletteGIF(animation.PillowWriter):
-        def finish(self):
-            first = self._frames[0].convert("RGB").quantize(
-                colors=128, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
-            frames = [first] + [f.convert("RGB").quantize(palette=first,
-                                                          dither=Image.Dither.NONE)
-                                for f in self._frames[1:]]
-            frames[0].save(self.outfile, save_all=True, append_images=frames[1:],
-                           duration=int(1000 / self.fps), loop=0)
-
-    return SharedPaletteGIF
+    first = frames[0].quantize(colors=128, method=Image.Quantize.MEDIANCUT,
+                               dither=Image.Dither.NONE)
+    rest = [f.quantize(palette=first, dither=Image.Dither.NONE) for f in frames[1:]]
+    first.save(path, format="GIF", save_all=True, append_images=rest,
+               duration=int(1000 / fps), loop=0)
 
 
 def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2):
     """The animation's figure for the rollout ``r`` (a :class:`SimResult`), and its frames.
 
     Returns (fig, draw, n_frames): ``draw(j)`` sets the figure to frame j (sample ``j * every``
-    of ``r``). The layout is fixed at frame 0, so that nothing moves between frames.
+    of ``r``) and returns the artists it changed (the same objects every frame: their data
+    is updated, nothing is created). The layout is fixed at frame 0, so that nothing moves
+    between frames.
     """
     e = r.xe - r.xd
     shown = r.xd + magnify * e
@@ -183,7 +199,7 @@ def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2)
         ref.set_data([r.xd[k, 0]], [r.xd[k, 1]])
         cursor.set_xdata([r.t[k], r.t[k]])
         ae.set_title(f"t = {r.t[k]:.3f} s, |xd - xe| = {err_mm[k]:.4f} mm", fontsize=9)
-        return [*legs, trace_true, trace, tip, ref, cursor]
+        return [trace_true, *legs, trace, tip, ref, cursor, ae.title]   # as drawn: in order
 
     draw(0)
     fig.set_dpi(DPI)

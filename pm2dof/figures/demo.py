@@ -1,8 +1,9 @@
 # The main job (`make demo`, `pm2dof demo`): the paper's experiment, its figures and results.json.
 from pathlib import Path
 
-from ..analysis.experiment import format_sensitivity, format_table3, sensitivity, table3_json
-from ..analysis.results import provenance, write_json
+from ..analysis.experiment import (format_sensitivity, format_table3, is_paper_robot,
+                                   sensitivity, table3_json)
+from ..infra.results import provenance, write_json
 from .experiment import experiment_figures
 
 __all__ = ["run_demo"]
@@ -19,7 +20,7 @@ def run_demo(model, out="out", runs=40, echo=print, progress=None):
          f"model {m.name!r} from {m.spec.path}; generated C {m.library}\n")
     results, rep, paths = experiment_figures(m, out, runs, progress)
     numbers = table3_json(results)
-    echo(format_table3(numbers))
+    echo(format_table3(numbers, is_paper_robot(m)))
     sens = sensitivity(m)
     echo("\nSensitivity: the same table under other assumptions of the simulation (RMSE, m):")
     echo(format_sensitivity(sens))

@@ -2,8 +2,8 @@
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from ..analysis.results import save_figure
 from ..control.trajectory import line_moves
+from ..infra.results import save_figure
 from .style import kind_of, legend_outside, param_styles, place_legend, tex_name
 
 __all__ = ["write_figures", "experiment_figures"]
@@ -137,7 +137,7 @@ def experiment_figures(model, out, runs=40, progress=None):
     Returns (table3 results, repeated-runs dict or None, list of PNG paths).
     """
     from ..analysis.experiment import repeated_runs, table3
-    from ..analysis.results import provenance
+    from ..infra.results import provenance
     results = table3(model, progress=progress)
     rep = None
     if runs > 0:

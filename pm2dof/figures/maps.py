@@ -5,7 +5,7 @@ import numpy as np
 
 from ..control.trajectory import line_moves, model_move
 from ..analysis.maps import maps_summary, workspace_maps
-from ..analysis.results import provenance, save_figure, write_json
+from ..infra.results import provenance, save_figure, write_json
 from .experiment import _plt
 from .style import label_bases, log_ticks, wrap
 

@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from ..analysis.maps import workspace_maps
-from ..analysis.results import save_figure
+from ..infra.results import save_figure
 from ..planning.torques import path_torques
 from .experiment import _plt
 from .maps import draw_robot_frame

@@ -3,8 +3,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.results import provenance, save_figure
 from ..analysis.splits import split_comparison, tau_max_sweep
+from ..infra.results import provenance, save_figure
 from .experiment import COLORS, LABELS, _plt
 from .style import legend_outside, log_ticks
 

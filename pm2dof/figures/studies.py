@@ -4,7 +4,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from ..analysis.results import save_figure
+from ..infra.results import save_figure
 from .experiment import _plt
 from .style import legend_outside, log_ticks, with_unit
 

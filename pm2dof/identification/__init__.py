@@ -14,7 +14,7 @@ One module per job (``pm2dof identify SUBCOMMAND`` in brackets):
 * :mod:`.monte_carlo` -- the accuracy targets over random plants and encoder noise
   (``monte-carlo``).
 
-May import :mod:`pm2dof.core`, :mod:`pm2dof.control`, :mod:`pm2dof.analysis`, NumPy and, inside
+May import :mod:`pm2dof.core`, :mod:`pm2dof.control`, :mod:`pm2dof.infra`, NumPy and, inside
 the functions that need them, SciPy, CasADi and pyarrow (the ``ident`` extra): importing a
 module of this package loads none of them.
 """

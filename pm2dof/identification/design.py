@@ -50,6 +50,7 @@ together with the model file.
 import contextlib
 import json
 import platform
+import threading
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -57,8 +58,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..analysis.progress import bar
-from ..core.errors import Pm2dofError
+from ..core.errors import Pm2dofError, UnsupportedMechanismError
+from ..infra.progress import bar
 from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED
 from .model_ref import mismatch, model_entries
@@ -164,7 +165,8 @@ def check_excitation(model, exc, *, v_max, a_max, tau_limit, sing_min, radius, s
     dict
         ``speed`` (max |xd|, m/s), ``acceleration`` (max |xdd|, m/s^2), ``torque`` (max |tau_i|
         of the min-norm split with Tables 1-2, N m), ``sing`` (min of both singularity measures),
-        ``radius`` (max |x - center|, m), ``rest`` (|xd|, |xdd| at t = 0), each with ``ok``.
+        ``radius`` (max |x - center|, m), ``rest`` (|xd|, |xdd| at t = 0); ``failed`` the
+        names of those beyond their limit, ``ok`` none.
     """
     t = np.arange(int(round(1.0 / (exc.base_hz * step))) + 1) * step
     x, v, a = exc.evaluate(t)
@@ -180,8 +182,12 @@ def check_excitation(model, exc, *, v_max, a_max, tau_limit, sing_min, radius, s
            "torque": tau, "sing": sing,
            "radius": float(np.max(np.hypot(*(x - region_center(model)).T))),
            "rest": float(np.abs(np.concatenate([v[0], a[0]])).max())}
-    out["ok"] = (out["speed"] <= v_max and out["acceleration"] <= a_max and tau <= tau_limit
-                 and sing >= sing_min and out["radius"] <= radius and out["rest"] < 1e-9)
+    out["failed"] = [k for k, met in (("speed", out["speed"] <= v_max),
+                                      ("acceleration", out["acceleration"] <= a_max),
+                                      ("torque", tau <= tau_limit), ("sing", sing >= sing_min),
+                                      ("radius", out["radius"] <= radius),
+                                      ("rest", out["rest"] < 1e-9)) if not met]
+    out["ok"] = not out["failed"]
     return out
 
 
@@ -294,6 +300,30 @@ def _single_thread_blas():
         lib.openblas_set_num_threads(before)
 
 
+@contextlib.contextmanager
+def _noticing_ctrl_c():
+    """A list that records a Ctrl-C during the block, instead of a KeyboardInterrupt: raised
+    inside IPOPT, CasADi caught it, printed a warning and returned (NonIpopt_Exception_Thrown
+    or User_Requested_Stop) as if the design had finished. The iteration callback stops IPOPT
+    when the list is not empty and the caller raises KeyboardInterrupt. Left alone where
+    Python does not own SIGINT (ignored, another handler, not the main thread)."""
+    import signal
+    hit = []
+
+    def handler(signum, frame):
+        hit.append(signum)
+
+    if (threading.current_thread() is not threading.main_thread()
+            or signal.getsignal(signal.SIGINT) is not signal.default_int_handler):
+        yield hit
+        return
+    signal.signal(signal.SIGINT, handler)
+    try:
+        yield hit
+    finally:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
 def design_provenance(model):
     """What a design's result depends on besides its arguments: versions, the model's hashes and
     the machine's arithmetic (CPU, C library). Deterministic for one machine and install."""
@@ -353,8 +383,8 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         concave here).
     max_iter : int
         IPOPT's iteration limit (its other options: :data:`IPOPT_OPTIONS`).
-    progress : callable(str) or pm2dof.analysis.progress.Progress, optional
-        Stage lines; a :class:`~pm2dof.analysis.progress.Progress` also draws a bar of IPOPT's
+    progress : callable(str) or pm2dof.infra.progress.Progress, optional
+        Stage lines; a :class:`~pm2dof.infra.progress.Progress` also draws a bar of IPOPT's
         iterations with the objective's log det as its postfix.
 
     Returns
@@ -367,6 +397,10 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         the same coefficients and ``info`` bit for bit (no wall time in it).
     """
     import casadi as ca
+    if model.dof != 2:    # the Fourier excitation has an x and a y series (issue 26: not phi yet)
+        raise UnsupportedMechanismError(
+            f"design_excitation plans Fourier series for x and y only; model {model.name!r} "
+            f"has task {model.task_names}: use pm2dof.identification.excitation.multisine")
     if not (base_hz > 0 and harmonics >= 1 and periods >= 1 and v_max > 0 and a_max > 0
             and 0 < tau_fraction <= 1 and radius > 0):
         raise ExcitationError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
@@ -427,18 +461,22 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         progress(f"IPOPT: {4 * L + 2} coefficients, objective log det(Phi^T Phi / K) over "
                  f"{samples} samples per period, {len(lbg)} constraints at {constraint_samples} "
                  f"samples per period")
-    with bar(progress, int(max_iter), "IPOPT", unit="it") as iterations:
-        # IPOPT's iterations shown as they happen (about a minute in all)
-        opts = ({"iteration_callback": _IterationProgress(z.numel(), len(lbg), iterations,
-                                                          to_logdet)} if progress else {})
+    with bar(progress, int(max_iter), "IPOPT", unit="it") as iterations, \
+            _noticing_ctrl_c() as ctrl_c:
+        # IPOPT's iterations shown as they happen (about a minute in all); the callback also
+        # stops IPOPT at the iteration after a Ctrl-C
+        callback = _IterationProgress(z.numel(), len(lbg), iterations, to_logdet, ctrl_c)
         solver = ca.nlpsol("excitation", "ipopt", {"x": z, "f": objective, "g": ca.vertcat(*g)},
-                           {**opts, "ipopt.print_level": 0, "print_time": False,
-                            "ipopt.sb": "yes", "ipopt.max_iter": int(max_iter),
+                           {"iteration_callback": callback, "ipopt.print_level": 0,
+                            "print_time": False, "ipopt.sb": "yes",
+                            "ipopt.max_iter": int(max_iter),
                             **{f"ipopt.{k}": v for k, v in IPOPT_OPTIONS.items()}})
         with _single_thread_blas() as blas_threads:
             sol = solver(x0=z0, lbg=lbg, ubg=ubg)
     zs = np.array(sol["x"]).ravel()
     stats = solver.stats()
+    if ctrl_c or stats["return_status"] == "User_Requested_Stop":
+        raise KeyboardInterrupt(f"IPOPT stopped after {stats['iter_count']} iterations")
     exc = _with_rest(FourierExcitation(base_hz, periods, zs[4 * L:], zs[:2 * L].reshape(2, L),
                                        zs[2 * L:4 * L].reshape(2, L)))
     before = regressor_condition(model, base, trajectory_of(model, start))
@@ -461,11 +499,12 @@ def _iteration_progress_class():
     class IterationProgress(ca.Callback):
         """CasADi iteration callback: one step of the bar ``iterations`` per IPOPT iteration,
         its postfix log det(Phi^T Phi / K) = -f + ``to_logdet`` (f IPOPT's objective,
-        column-scaled)."""
+        column-scaled); stops IPOPT (User_Requested_Stop) once ``stop`` is not empty."""
 
-        def __init__(self, nx, ng, iterations, to_logdet):
+        def __init__(self, nx, ng, iterations, to_logdet, stop=()):
             ca.Callback.__init__(self)
             self.nx, self.ng, self.iterations, self.to_logdet = nx, ng, iterations, to_logdet
+            self.stop = stop
             self.construct("excitation_progress", {})
 
         def get_n_in(self):
@@ -495,7 +534,7 @@ def _iteration_progress_class():
             logdet = -float(arg[1]) + self.to_logdet
             self.iterations.set_postfix_str(f"objective log det {logdet:.3f}", refresh=False)
             self.iterations.update(1)
-            return [0]
+            return [1 if self.stop else 0]
 
     return IterationProgress
 
@@ -532,7 +571,7 @@ def write_excitation(path, exc, model):
     path relative to ``path``'s folder, and the coefficients; ``[design]`` its ``info``, a dict
     value such as ``ipopt`` or ``provenance`` as the sub-table ``[design.<key>]``),
     atomically. The text is a function of ``exc``, the model and the file's folder only."""
-    from ..analysis.results import write_atomic
+    from ..infra.results import write_atomic
     entries = model_entries(model, Path(path).parent)
     lines = ["# pm2dof excitation: periodic finite Fourier series in task space (Swevers et al. "
              "1997)",
@@ -617,16 +656,19 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
     """``pm2dof identify design --out FILE``: design, check at 1 ms, write."""
     from .excitation import multisine
     t0 = time.perf_counter()
-    exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
-                            v_max=v_max, a_max=a_max, tau_fraction=tau_fraction, seed=seed,
-                            progress=progress)
+    try:
+        exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
+                                v_max=v_max, a_max=a_max, tau_fraction=tau_fraction, seed=seed,
+                                progress=progress)
+    except KeyboardInterrupt as stop:          # an interrupted design is not written
+        raise KeyboardInterrupt(f"{str(stop) + '; ' if str(stop) else ''}{out} not "
+                                f"written") from None
     seconds = time.perf_counter() - t0
     i = exc.info
+    sing_min = max(model.singularity_threshold, model.parallel_singularity_threshold) + 0.1
     chk = check_excitation(model, exc, v_max=v_max, a_max=a_max,
                            tau_limit=tau_fraction * np.max(model.spec.limits["tau_max"]),
-                           sing_min=max(model.singularity_threshold,
-                                        model.parallel_singularity_threshold) + 0.1,
-                           radius=i["radius"])
+                           sing_min=sing_min, radius=i["radius"])
     default = regressor_condition(model, base_parameters(model),
                                   multisine(model, duration=exc.duration))
     write_excitation(out, exc, model)
@@ -641,9 +683,15 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
     echo(f"condition number of the column-scaled base regressor on the run's samples: "
          f"{i['cond_before']:.4g} at the start -> {i['cond_after']:.4g} optimised (the default "
          f"multi-sine of excite: {default[0]:.4g})")
-    echo(f"checked every 1 ms: speed {chk['speed']:.3f} <= {v_max:g} m/s, acceleration "
-         f"{chk['acceleration']:.2f} <= {a_max:g} m/s^2, torque (Tables 1-2, min-norm) "
-         f"{chk['torque']:.2f} N m, singularity measures >= {chk['sing']:.3f}, "
-         f"|x - c0| <= {chk['radius'] * 1e3:.1f} mm, starts and ends at rest: "
-         f"{'all met' if chk['ok'] else 'NOT MET'}")
+    def met(key):
+        return " NOT MET" if key in chk["failed"] else ""
+
+    tau_limit = tau_fraction * np.max(model.spec.limits["tau_max"])
+    echo(f"checked every 1 ms: speed {chk['speed']:.3f} <= {v_max:g} m/s{met('speed')}, "
+         f"acceleration {chk['acceleration']:.2f} <= {a_max:g} m/s^2{met('acceleration')}, "
+         f"torque (Tables 1-2, min-norm) {chk['torque']:.2f} <= {tau_limit:g} N m"
+         f"{met('torque')}, singularity measures {chk['sing']:.3f} >= {sing_min:.3f}"
+         f"{met('sing')}, |x - c0| {chk['radius'] * 1e3:.1f} <= {i['radius'] * 1e3:.1f} mm"
+         f"{met('radius')}, starts and ends at rest{met('rest')}: "
+         f"{'all met' if chk['ok'] else 'NOT MET: ' + ', '.join(chk['failed'])}")
     return exc, chk

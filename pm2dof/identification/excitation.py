@@ -19,6 +19,7 @@ import numpy as np
 from ..control.controllers import APDController, NAController
 from ..control.simulate import plant_vector, simulate
 from ..core.errors import ArgumentError
+from ..core.task import orientation_length
 from .base import region_center
 from .log import IdentLog
 from .model_ref import model_entries
@@ -38,12 +39,13 @@ def multisine(model, duration=DEFAULT_DURATION, amplitude=0.02, seed=1, harmonic
               base_hz=0.75):
     """A smooth multi-sine motion around the middle of the model's first move, starting at rest.
 
-    x(t) = c + sum_k a_k (1 - cos(w_k t)) per axis (the y axis' frequencies 13 % higher);
-    velocity is zero at t = 0.
+    x(t) = c + sum_k a_k (1 - cos(w_k t)) per task axis (each axis' frequencies 13 % higher
+    than the previous one's); velocity is zero at t = 0. A platform's phi moves by amplitude /
+    l rad (l its orientation length, :func:`pm2dof.core.task.orientation_length`).
 
     Returns
     -------
-    object with t (N,), xd, xd_dot, xd_ddot (N, 2), period (s) and max_hz (the highest
+    object with t (N,), xd, xd_dot, xd_ddot (N, m), period (s) and max_hz (the highest
     harmonic, Hz), like a Trajectory.
     """
     if not (isinstance(duration, (int, float)) and np.isfinite(duration)
@@ -54,21 +56,25 @@ def multisine(model, duration=DEFAULT_DURATION, amplitude=0.02, seed=1, harmonic
     T = model.spec.sensing["sample_period"]
     t = np.arange(int(round(duration / T)) + 1) * T
     c = region_center(model)
-    xd, xd_dot, xd_ddot = (np.zeros((len(t), 2)) for _ in range(3))
-    for axis in range(2):
+    m = model.dof
+    scale = np.ones(m)                         # m per m of amplitude; phi: rad per m
+    if m == 3:
+        scale[2] = 1.0 / orientation_length(model)
+    xd, xd_dot, xd_ddot = (np.zeros((len(t), m)) for _ in range(3))
+    for axis in range(m):
         for k in range(1, harmonics + 1):
             w = 2 * np.pi * base_hz * k * (1.0 + 0.13 * axis)
-            a = amplitude / harmonics * rng.uniform(0.5, 1.0) * rng.choice([-1, 1])
+            a = amplitude / harmonics * rng.uniform(0.5, 1.0) * rng.choice([-1, 1]) * scale[axis]
             xd[:, axis] += a * (1 - np.cos(w * t))
             xd_dot[:, axis] += a * w * np.sin(w * t)
             xd_ddot[:, axis] += a * w * w * np.cos(w * t)
-    xd += c - amplitude / 2
+    xd += c - amplitude / 2 * scale
     return SimpleNamespace(t=t, xd=xd, xd_dot=xd_dot, xd_ddot=xd_ddot, period=T,
-                           max_hz=base_hz * harmonics * 1.13)  # highest harmonic, Hz
+                           max_hz=base_hz * harmonics * (1.0 + 0.13 * (m - 1)))  # Hz
 
 
 def measured_angles(model, xe, quantise=True, truth=None):
-    """The encoder readings (N, n), rad, of true positions ``xe`` (N, 2): the generated
+    """The encoder readings (N, n), rad, of true poses ``xe`` (N, m): the generated
     ``measure`` (quantised to ``[sensing].encoder_counts_per_rev`` unless ``quantise`` is
     false), exactly what the controller read."""
     plant = plant_vector(model, truth, quantise)
@@ -85,7 +91,7 @@ def excite(model, trajectory, *, truth=None, quantise=True, controller="apd"):
     Parameters
     ----------
     model : Model
-    trajectory : object with t, xd, xd_dot, xd_ddot (N, 2) and period
+    trajectory : object with t, xd, xd_dot, xd_ddot (N, m) and period
         The excitation, e.g. :func:`multisine` or
         :func:`pm2dof.identification.design.trajectory_of`; the robot starts at rest at its
         first point. Its ``max_hz`` (highest frequency, Hz), if it has one, is written into the

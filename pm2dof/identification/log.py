@@ -33,8 +33,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..analysis.results import write_atomic
 from ..core.errors import ClosureError, Pm2dofError, WorkspaceError
+from ..infra.results import write_atomic
 from .model_ref import mismatch, rebase
 
 __all__ = ["LogError", "IdentLog", "read_log", "write_log", "log_poses", "log_folder",
@@ -181,7 +181,8 @@ def _from_columns(cols, meta, source, time_tolerance):
         raise LogError(f"{source}: column t is irregular at {_row(t, k)}: step "
                        f"{dt[k - 1]:.6g} s against the median period {T:.6g} s ({bad.size} "
                        f"irregular step(s), largest {dev.max():.3g} T; allowed "
-                       f"{time_tolerance:g} T). The filter and the differences need a regular "
+                       f"{time_tolerance:g} T; --time-tolerance, or read_log(time_tolerance=...), "
+                       f"allows more). The filter and the differences need a regular "
                        f"grid: resample the log, or cut it at the gap")
     log = IdentLog(t=t, qa=np.column_stack([ncol[f"qa{i}"] for i in range(1, n + 1)]),
                    tau=np.column_stack([ncol[f"tau{i}"] for i in range(1, n + 1)]),
@@ -191,8 +192,30 @@ def _from_columns(cols, meta, source, time_tolerance):
     return log
 
 
+def _decode(path, raw):
+    """The text of a CSV log: UTF-8 (a BOM, Excel's "CSV UTF-8", dropped). A ``#`` comment line
+    in another encoding (a logger's Latin-1 ``# operator = Müller``) is read as Latin-1; any
+    other byte that is not UTF-8 (binary junk) is a LogError naming the line."""
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        pass
+    lines = raw.split(b"\n")
+    for no, line in enumerate(lines):
+        try:
+            lines[no] = line.decode("utf-8-sig" if no == 0 else "utf-8")
+        except UnicodeDecodeError as exc:
+            if line.lstrip().startswith(b"#"):
+                lines[no] = line.decode("latin-1")
+                continue
+            raise LogError(f"{path}: line {no + 1} is not text (byte 0x{line[exc.start]:02x} at "
+                           f"column {exc.start + 1} is not UTF-8): a log is a UTF-8 CSV or a "
+                           f"Parquet file") from None
+    return "\n".join(lines)
+
+
 def _read_csv(path):
-    text = Path(path).read_text(encoding="utf-8-sig")    # a BOM (Excel's "CSV UTF-8") dropped
+    text = _decode(path, Path(path).read_bytes())
     meta, lines = {}, text.splitlines()
     k = 0
     while k < len(lines) and (lines[k].startswith("#") or not lines[k].strip()):
@@ -325,8 +348,8 @@ def log_poses(model, log, *, encoder_tolerance=2e-3):
 
     Returns
     -------
-    xe : ndarray (N, 2)
-        fk of each row's measured active angles, m.
+    xe : ndarray (N, m)
+        fk of each row's measured active angles, m (phi in rad; m = ``model.dof``).
     q : ndarray (N, 2n)
         ik of xe: [qa, qb] consistent with the geometry, rad.
 
@@ -345,7 +368,7 @@ def log_poses(model, log, *, encoder_tolerance=2e-3):
     if msg:
         raise LogError(msg)
     N = len(log.t)
-    xe, q = np.empty((N, 2)), np.empty((N, 2 * n))
+    xe, q = np.empty((N, model.dof)), np.empty((N, 2 * n))
     sing = np.empty(2)
     for k in range(N):
         where = f"{src}: {_row(log.t, k)}"

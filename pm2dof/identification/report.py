@@ -6,13 +6,54 @@ import numpy as np
 
 from ..control.simulate import theta_truth
 from ..core.errors import ArgumentError
-from .fit import identify_log
+from .fit import MODEL_ERROR_CHOICES, identify_log
 from .log import LogError, log_folder, read_log
 
-__all__ = ["format_identification", "summary", "run_fit", "load_theta", "SIMULATED_SOURCE"]
+__all__ = ["format_identification", "summary", "run_fit", "load_theta", "plant_comparison",
+           "SIMULATED_SOURCE", "INTERVAL_NOTE"]
 
 #: metadata ``source`` of a log simulated with the model file's [plant] (then the truth is known)
 SIMULATED_SOURCE = "simulated plant ([plant] of the model file)"
+
+
+#: what the printed interval is (the line under the table)
+INTERVAL_NOTE = ("+-interval: 2 sigma (noise; Newey-West) + the shifts of the estimate when the "
+                 "cutoff is halved, the joint-speed threshold doubled and the sample rate halved "
+                 "(discretisation and friction outside eq. 2, which 2 sigma misses); how often it "
+                 "covers the truth for an excitation: pm2dof identify monte-carlo")
+
+
+def plant_comparison(model, log, res):
+    """What ``fit --seed-na``'s Table 3 compares, and whether it can be read as a verdict.
+
+    Table 3 runs on the model file's ``[plant]``. For a log simulated with that plant it is the
+    robot that wrote the log; for any other log it is a guess, and the table says how the
+    identified theta controls *that* robot, not the log's.
+
+    Returns
+    -------
+    (str, str or None)
+        The line saying what the comparison is; a one-line warning when the identified theta
+        is outside [plant]'s interval on a well-determined base parameter (|estimate| > its
+        interval), else None.
+    """
+    plant = res["base"].fold(theta_truth(model))
+    est, half = res["estimate"], res["interval"]
+    if log.meta.get("source") == SIMULATED_SOURCE:
+        return ("Table 3 runs on the model file's [plant], the robot this log was simulated "
+                "with", None)
+    what = (f"Table 3 runs on the model file's [plant], not on the robot that wrote {log.source}: "
+            f"it shows how each theta controls [plant], which is only a guess of that robot")
+    sure = np.abs(est) > half
+    far = sure & (np.abs(est - plant) > half)
+    if not far.any():
+        return what, None
+    k = int(np.argmax(np.where(far, np.abs(est - plant) / half, -np.inf)))
+    return what, (f"the identified theta is outside its interval of [plant]'s on {int(far.sum())} "
+                  f"of {int(sure.sum())} well-determined base parameters (e.g. "
+                  f"{res['names'][k]}: {est[k]:.4g} +- {half[k]:.2g}, [plant] {plant[k]:.4g}): "
+                  f"the log's robot is not [plant], so Table 3 is no verdict on the "
+                  f"identification")
 
 
 def summary(model, log, res):
@@ -30,7 +71,9 @@ def summary(model, log, res):
            "residual_rms_N": res["rms"], "r2": res["r2"], "residual_lag1": res["lag1"],
            "condition_number": res["condition_number"],
            "base_parameters": res["names"], "estimate": res["estimate"],
-           "two_sigma": 2 * res["std"], "nominal": res["nominal"],
+           "two_sigma": 2 * res["std"], "interval": res["interval"],
+           "model_error": {c: d for c, d in zip(MODEL_ERROR_CHOICES, res["model_error"])},
+           "nominal": res["nominal"],
            "param_names": list(model.param_names), "theta0": res["theta0"],
            "theta_least_squares": res["theta_ls"], "warnings": res["warnings"]}
     if c is not None:
@@ -64,19 +107,20 @@ def format_identification(model, log, res):
     ]
     truth = s.get("truth")
     phys = s.get("physical")
-    head = f"{'base parameter':38s} {'estimate':>10s} {'+-2 sigma':>10s} {'nominal':>10s}"
+    head = f"{'base parameter':38s} {'estimate':>10s} {'+-interval':>10s} {'nominal':>10s}"
     head += f" {'physical':>10s}" if phys else ""
     head += f" {'truth':>10s}" if truth is not None else ""
     lines.append(head)
     for k, name in enumerate(s["base_parameters"]):
-        row = (f"{name[:38]:38s} {s['estimate'][k]:10.5f} {s['two_sigma'][k]:10.5f} "
+        row = (f"{name[:38]:38s} {s['estimate'][k]:10.5f} {s['interval'][k]:10.5f} "
                f"{s['nominal'][k]:10.5f}")
         row += f" {phys['base'][k]:10.5f}" if phys else ""
         if truth is not None:
             row += f" {truth[k]:10.5f}"
-            if abs(s["estimate"][k] - truth[k]) > s["two_sigma"][k]:
-                row += "  (truth outside +-2 sigma)"
+            if abs(s["estimate"][k] - truth[k]) > s["interval"][k]:
+                row += "  (truth outside the interval)"
         lines.append(row)
+    lines.append(INTERVAL_NOTE)
     if truth is not None:
         lines.append("truth: the simulated plant's ([plant] of the model file, payload booked to "
                      "its leg), shown because this log says it was simulated; the Stribeck "
@@ -101,7 +145,7 @@ def format_identification(model, log, res):
 
 def run_fit(log=None, *, model=None, generated=None, excitation_file=None, duration=None,
             quantise=True, controller=None, save=None, as_json=False, cutoff_hz=None,
-            min_joint_speed=None, time_tolerance=1e-3, seed=False, echo=print, progress=None):
+            min_joint_speed=None, time_tolerance=1e-3, seed=None, echo=print, progress=None):
     """``pm2dof identify fit [LOG]``: identify, print (text or JSON), optionally save.
 
     Parameters
@@ -117,8 +161,10 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
         ``--model`` (a name, a model file or a Model), ``--generated``.
     save : path, optional
         Write ``{"param_names", "theta0", ...}`` and the provenance as JSON.
-    seed : bool
-        Also Table 3 with APD and NA using the identified theta.
+    seed : callable(model, theta) -> dict, optional
+        Also Table 3 with APD and NA using the identified theta: the CLI's ``--seed-na``
+        passes :func:`pm2dof.analysis.experiment.seeded_table3` (identification does not
+        import the paper's experiment).
     cutoff_hz, min_joint_speed, time_tolerance :
         See :func:`~pm2dof.identification.fit.identify_log` and ``read_log``.
 
@@ -127,7 +173,7 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
     dict
         :func:`~pm2dof.identification.fit.identify_log`'s result.
     """
-    from ..analysis.results import dumps, provenance, write_json
+    from ..infra.results import dumps, provenance, write_json
     from .excitation import DEFAULT_DURATION, model_of_excitation, simulated_log
     from .fit import MIN_JOINT_SPEED
     from .model_ref import model_for
@@ -141,12 +187,17 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
                                 f"which fit runs only without a LOG (got LOG {log})")
         path = log
         log = read_log(path, time_tolerance=time_tolerance)
+        assumed = model is None and "model" not in log.meta
         model = model_for(log.meta, log_folder(log), str(path), model=model, generated=generated,
                           error=LogError)
+        if assumed:
+            assumed = (f"model {model.name!r} ({model.spec.path}) assumed: {path} records no "
+                       f"model and no --model was given")
         if progress:
             progress(f"read {path}: {len(log.t)} rows; filtering, stacking the base regressor, "
                      f"weighted and physically constrained least squares")
     else:
+        assumed = False
         model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
         log = simulated_log(model, excitation_file,
                             DEFAULT_DURATION if duration is None else duration,
@@ -154,17 +205,30 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
         if progress:
             progress(f"{len(log.t)} rows; filtering, stacking the base regressor, weighted and "
                      f"physically constrained least squares")
-    res = identify_log(model, log, cutoff_hz=cutoff_hz,
-                       min_joint_speed=MIN_JOINT_SPEED if min_joint_speed is None
-                       else min_joint_speed)
+    try:
+        res = identify_log(model, log, cutoff_hz=cutoff_hz,
+                           min_joint_speed=MIN_JOINT_SPEED if min_joint_speed is None
+                           else min_joint_speed)
+    except LogError as exc:
+        if assumed:
+            raise LogError(f"{exc} ({assumed})") from None
+        raise
+    if assumed:
+        res["warnings"].insert(0, assumed)
     s = summary(model, log, res)
+    seeded = ""
     if seed:
-        from .monte_carlo import format_seeded_table3, seeded_table3
+        from .monte_carlo import format_seeded_table3
         if progress:
             progress("Table 3 with Tables 1-2 and with the identified theta")
-        s["table3"] = seeded_table3(model, res["theta0"])
-    echo(dumps(s) if as_json else format_identification(model, log, res)
-         + ("\n\n" + format_seeded_table3(s["table3"]) if seed else ""))
+        s["table3"] = seed(model, res["theta0"])
+        what, warn = plant_comparison(model, log, res)
+        s["table3_comparison"] = what
+        if warn:
+            s["warnings"] = [*s["warnings"], warn]
+        seeded = "\n\n" + "\n".join([format_seeded_table3(s["table3"]), what]
+                                     + ([f"warning: {warn}"] if warn else []))
+    echo(dumps(s) if as_json else format_identification(model, log, res) + seeded)
     if save:
         write_json(save, {**s, "provenance": provenance(model)})
         if not as_json:

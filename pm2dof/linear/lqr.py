@@ -85,7 +85,7 @@ class LQRController(_Controller):
     trajectory : pm2dof.Trajectory
         The motion the gains are planned for; :func:`pm2dof.simulate` accepts it and its
         ``extended(settle_time)`` copies (the last sample's gain holds the end point).
-    Q_position, Q_velocity : float or array_like (2,), optional
+    Q_position, Q_velocity : float or array_like (m,), optional
         Diagonal state weights on the position error (1/m^2) and the velocity error
         (s^2/m^2), each > 0 (default ``[gains.lqr]`` of the model file, else
         :data:`LQR_DEFAULT_WEIGHTS`).
@@ -100,8 +100,8 @@ class LQRController(_Controller):
 
     Attributes
     ----------
-    K : ndarray (N, n, 4)
-        The gains, N*m per [m, m, m/s, m/s].
+    K : ndarray (N, n, 2m)
+        The gains, N*m per [xe, xed] ([m, m, m/s, m/s] for a point).
     tau_ff : ndarray (N, n)
         The feedforward torques, N*m.
     linearization : LinearTrajectory
@@ -120,9 +120,9 @@ class LQRController(_Controller):
         g = model.spec.gains.get("lqr") or LQR_DEFAULT_WEIGHTS
         name, n = type(self).__name__, model.n_legs
         qp = diagonal_gain(name, "Q_position", g["Q_position"] if Q_position is None
-                           else Q_position, ("x", "y"))
+                           else Q_position, model.task_names)
         qv = diagonal_gain(name, "Q_velocity", g["Q_velocity"] if Q_velocity is None
-                           else Q_velocity, ("xd", "yd"))
+                           else Q_velocity, tuple(f"{c}d" for c in model.task_names))
         r = diagonal_gain(name, "R", g["R"] if R is None else R,
                           tuple(f"tau{i + 1}" for i in range(n)))
         self.weights = {"Q": np.diag(np.concatenate([qp, qv])), "R": np.diag(r)}
@@ -132,7 +132,7 @@ class LQRController(_Controller):
                                                         period=self.sample_period)
         K, _ = lqr_gains(lin.A, lin.B, self.weights["Q"], self.weights["R"])
         self.K, self.tau_ff = K, lin.tau_a
-        # the C's per-sample inputs: K_k row-major (n x 4), tau_ff_k
+        # the C's per-sample inputs: K_k row-major (n x 2m), tau_ff_k
         self._rows = np.ascontiguousarray(np.hstack([K.reshape(len(K), -1), lin.tau_a]))
         for a in (self.K, self._rows):
             a.setflags(write=False)
@@ -140,8 +140,8 @@ class LQRController(_Controller):
 
     def _row(self, k):
         r = self._rows[min(k, len(self._rows) - 1)]
-        n4 = 4 * self.model.n_legs
-        return r[:n4], r[n4:]
+        nk = 2 * self.model.dof * self.model.n_legs
+        return r[:nk], r[nk:]
 
     def reset(self, qa0, theta_hat=None):
         super().reset(qa0, theta_hat)
@@ -160,8 +160,14 @@ class LQRController(_Controller):
 
     def closed_loop_inputs(self, trajectory):
         """[xd, xd_dot, xd_ddot, K_k, tau_ff,k] per sample (``lqr_cl_input``) along
-        ``trajectory``: the planned one, or it followed by rest at its end point (the last
-        gain then holds the end). Another trajectory raises ArgumentError."""
+        ``trajectory``.
+
+        Parameters
+        ----------
+        trajectory : Trajectory
+            The planned one, or it followed by rest at its end point (the last gain then
+            holds the end). Another trajectory raises ArgumentError.
+        """
         plan = self.trajectory
         N = len(plan.t)
         t = trajectory

@@ -29,16 +29,16 @@ class LinearTrajectory:
 
     Attributes
     ----------
-    A : ndarray (K, 4, 4)
+    A : ndarray (K, 2m, 2m)
         d x_{k+1} / d x_k (discrete) or d xdot / d x (continuous) at sample k; state
-        [x, y, xd, yd] (m, m/s).
-    B : ndarray (K, 4, n)
+        [xe, xed] (m = ``model.dof``; [x, y, xd, yd], m and m/s, for a point).
+    B : ndarray (K, 2m, n)
         The same w.r.t. the torques tau_1..tau_n (N*m).
-    x : ndarray (K, 4)
+    x : ndarray (K, 2m)
         The operating states [xd_k, xd_dot_k].
     tau_a : ndarray (K, n)
         The operating torques: the inverse dynamics' task force split by ``split``, N*m.
-    u : ndarray (K, 2)
+    u : ndarray (K, m)
         The task force S^T tau_a of the inverse dynamics (eqs. 10-12), N.
     theta : ndarray (p,)
         The parameters of the model linearised.
@@ -118,7 +118,7 @@ def linearize_trajectory(model, trajectory, theta=None, *, discrete=True, split=
     """
     require_model(model)
     require_trajectory(trajectory)
-    ctl, n = model.spec.control, model.n_legs
+    ctl, n, m = model.spec.control, model.n_legs, model.dof
     split = ctl["split"] if split is None else split
     if split not in SPLITS:
         raise ArgumentError(f"split must be one of {list(SPLITS)}, got {split!r}")
@@ -128,7 +128,7 @@ def linearize_trajectory(model, trajectory, theta=None, *, discrete=True, split=
     xd, xd_dot, xd_ddot = trajectory.xd, trajectory.xd_dot, trajectory.xd_ddot
     K = len(xd)
     q, = _map(model, "ik", K, (xd,), (2 * n,))
-    u, sing = _map(model, "inverse_dynamics", K, (xd, xd_dot, xd_ddot, theta), (2, 2))
+    u, sing = _map(model, "inverse_dynamics", K, (xd, xd_dot, xd_ddot, theta), (m, 2))
     _check_sing(model, sing, "inverse_dynamics")
     lim = model.spec.limits
     t_mn, t_mm, _, t_pl, _, _ = _map(
@@ -137,18 +137,18 @@ def linearize_trajectory(model, trajectory, theta=None, *, discrete=True, split=
                                     np.asarray(ctl["preload"], float)), (n, n, 1, n, 1, 2))
     tau = {"min_norm": t_mn, "min_max": t_mm, "preload": t_pl}[split]
     x = np.ascontiguousarray(np.hstack([xd, xd_dot]))
-    A = np.zeros((K, 4, 4))
-    B = np.zeros((K, 4, n))
+    A = np.zeros((K, 2 * m, 2 * m))
+    B = np.zeros((K, 2 * m, n))
     if discrete:
         _, dx, dtau, sing = _map(model, "sampled_step_jacobians", K, (x, tau, theta, T),
-                                 (4, 16, 4 * n, 2))
-        A[:], B[:] = dx.reshape(K, 4, 4), dtau.reshape(K, 4, n)
+                                 (2 * m, 4 * m * m, 2 * m * n, 2))
+        A[:], B[:] = dx.reshape(K, 2 * m, 2 * m), dtau.reshape(K, 2 * m, n)
     else:
         _, dxe, dxed, dtau, _, sing = _map(model, "forward_dynamics_jacobians", K,
                                            (xd, xd_dot, tau, theta),
-                                           (2, 4, 4, 2 * n, 2 * len(theta), 2))
-        A[:], B[:] = continuous_AB(dxe.reshape(K, 2, 2), dxed.reshape(K, 2, 2),
-                                   dtau.reshape(K, 2, n))
+                                           (m, m * m, m * m, m * n, m * len(theta), 2))
+        A[:], B[:] = continuous_AB(dxe.reshape(K, m, m), dxed.reshape(K, m, m),
+                                   dtau.reshape(K, m, n))
     _check_sing(model, sing, "jacobians")
     for a in (A, B, x, tau, u, theta):
         a.setflags(write=False)

@@ -5,8 +5,8 @@
   length (:mod:`.spline` the spline piece);
 * :mod:`.check` -- :func:`check_path`: workspace and singularities along a path;
 * :mod:`.kinematic` -- :func:`plan_kinematic`: the S-curve of pm2dof.control along a path;
-* :mod:`.stages`, :mod:`.topp` -- :func:`plan_time_optimal`: time-optimal under torque limits,
-  friction included, in generated C;
+* :mod:`.stages`, :mod:`.grid`, :mod:`.topp` -- :func:`plan_time_optimal`: time-optimal under
+  torque limits, friction included, in generated C (:mod:`.grid`: the grid refined in place);
 * :mod:`.smooth` -- :func:`plan_smooth`: torque-rate-limited near-time-optimal (CasADi/IPOPT);
 * :mod:`.plan` -- :class:`Plan`, the sampled :class:`pm2dof.Trajectory`;
 * :mod:`.torques` -- inverse dynamics along a timed path (Me, Ce, StF, then the split);

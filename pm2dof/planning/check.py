@@ -24,12 +24,17 @@ _UNSET = object()
 
 def require(model=_UNSET, path=_UNSET):
     """ArgumentTypeError unless ``model`` is a :class:`pm2dof.Model` and ``path`` a
-    :class:`pm2dof.TaskPath` (each checked when given)."""
+    :class:`pm2dof.TaskPath` (each checked when given); PlanError unless the path's dimension
+    is the model's task dimension m (both given)."""
     if model is not _UNSET:
         require_model(model)
     if path is not _UNSET and not isinstance(path, TaskPath):
         raise ArgumentTypeError(f"path must be a pm2dof.TaskPath (TaskPath.line, .arc, "
                                 f".polyline, .spline, .concat), got {type(path).__name__}")
+    if model is not _UNSET and path is not _UNSET and path.dim != model.dof:
+        raise PlanError(f"the path has task dimension {path.dim}, model {model.name!r} m = "
+                        f"{model.dof} ({', '.join(model.task_names)}): a path's points must "
+                        f"have the model's task coordinates")
 
 
 def _where(s, p):

@@ -22,17 +22,19 @@
     kind = "spline"                  # waypoints (C2, through every point)
 
 A shipped path is named by its stem (``pm2dof plan --path pick_and_place``); anything with a
-``/`` or ending in ``.toml`` is a file. Errors are :class:`pm2dof.PlanError` naming the file,
-the key and the reason.
+``/`` or ending in ``.toml`` is a file. A bad file is one :class:`PathFileError` (a
+:class:`pm2dof.PlanError`) naming the file and listing every problem, each with its key and
+reason, segments numbered from 1, as model and study files (:class:`pm2dof.core.validate.Problems`).
 """
-import tomllib
 from pathlib import Path
 
-from ..core.errors import PlanError
+from ..core.errors import InputFileError, PlanError
+from ..core.validate import Problems, entry
+from ..core.task import orientation_length
 from .paths import TaskPath
 
 __all__ = ["SHIPPED_PATHS", "shipped_paths", "resolve_path_file", "read_path_file",
-           "model_move_path"]
+           "model_move_path", "PathFileError"]
 
 SHIPPED_PATHS = Path(__file__).resolve().parent / "shipped"
 _SEGMENTS = {"line": ("start", "end"), "arc": ("center", "radius", "angle0", "angle1"),
@@ -59,14 +61,12 @@ def resolve_path_file(ref, relative_to=None):
     return p if p.is_absolute() or relative_to is None else Path(relative_to) / p
 
 
-def _fail(path, key, reason):
-    raise PlanError(f"{path}: {key}: {reason}")
+class PathFileError(PlanError, InputFileError):
+    """A path file that cannot be used: every problem of the file, one line each, naming the
+    key (segments numbered from 1, ``segments.end (segment 2)``), as model and study files."""
 
 
-def _unknown(path, where, table, allowed):
-    extra = sorted(set(table) - set(allowed))
-    if extra:
-        _fail(path, f"{where}{extra[0]}", f"unknown key; allowed here: {sorted(allowed)}")
+_KINEMATIC = ("v_max", "a_max", "j_max")
 
 
 def read_path_file(ref, relative_to=None):
@@ -77,55 +77,55 @@ def read_path_file(ref, relative_to=None):
     dict
         ``name``, ``description``, ``path`` (TaskPath), ``kinematic`` (dict of v_max, a_max,
         j_max, or None), ``file`` (pathlib.Path).
+
+    Raises
+    ------
+    PathFileError
+        (a PlanError and an InputFileError) listing every problem of the file at once.
     """
     path = resolve_path_file(ref, relative_to)
-    try:
-        data = tomllib.loads(path.read_text())
-    except OSError as exc:
-        raise PlanError(f"cannot read path file {path}: {exc.strerror or exc}") from None
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise PlanError(f"{path}: not valid TOML: {exc}") from None
-    _unknown(path, "", data, {"path", "kinematic", "segments"})
-    head = data.get("path", {})
-    if not isinstance(head, dict):
-        _fail(path, "path", "must be a table")
-    _unknown(path, "path.", head, {"name", "description"})
-    kin = data.get("kinematic")
+    pr = Problems(path, PathFileError)
+    _, data = pr.read_toml("path file")
+    pr.keys("", data, {"path", "kinematic", "segments"})
+    head = pr.table("path", data.get("path"), required=False) or {}
+    pr.keys("path", head, {"name", "description"})
+    name = pr.text("path.name", head.get("name", path.stem), nonempty=True)
+    description = pr.text("path.description", head.get("description", ""))
+    kin = pr.table("kinematic", data.get("kinematic"), required=False)
     if kin is not None:
-        if not isinstance(kin, dict):
-            _fail(path, "kinematic", "must be a table")
-        _unknown(path, "kinematic.", kin, {"v_max", "a_max", "j_max"})
-        for key in ("v_max", "a_max", "j_max"):
-            v = kin.get(key)
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not v > 0:
-                _fail(path, f"kinematic.{key}", f"must be a number > 0, got {v!r}")
-        kin = {k: float(kin[k]) for k in ("v_max", "a_max", "j_max")}
+        pr.keys("kinematic", kin, _KINEMATIC, _KINEMATIC)
+        kin = {k: pr.number(f"kinematic.{k}", kin[k], low=0.0, low_ok=False)
+               for k in _KINEMATIC if k in kin}
     segs = data.get("segments")
     if not isinstance(segs, list) or not segs:
-        _fail(path, "segments", "need at least one [[segments]] table")
+        pr.add("segments", "need at least one [[segments]] table")
+        segs = []
     parts = []
     for i, seg in enumerate(segs):
-        where = f"segments[{i}]"
+        label = f"segment {i + 1}"
         if not isinstance(seg, dict):
-            _fail(path, where, "must be a table")
-        kind = seg.get("kind")
-        if kind not in _SEGMENTS:
-            _fail(path, f"{where}.kind", f"must be one of {sorted(_SEGMENTS)}, got {kind!r}")
+            pr.add(entry("segments", label), "must be a table")
+            continue
+        kind = pr.choice(entry("segments.kind", label), seg.get("kind"),
+                         {k: k for k in _SEGMENTS})
+        if kind is None:
+            continue
         keys = _SEGMENTS[kind]
-        _unknown(path, f"{where}.", seg, {"kind", *keys})
-        missing = [k for k in keys if k not in seg and k not in _OPTIONAL]
-        if missing:
-            _fail(path, f"{where}.{missing[0]}", f"missing (a {kind} needs {list(keys)})")
+        if not pr.keys("segments", seg, {"kind", *keys},
+                       [k for k in keys if k not in _OPTIONAL], label=label):
+            continue
         try:
             parts.append(getattr(TaskPath, kind)(*[seg[k] for k in keys if k in seg]))
         except PlanError as exc:
-            _fail(path, where, str(exc))
-    try:
-        joined = TaskPath.concat(*parts)
-    except PlanError as exc:
-        _fail(path, "segments", str(exc))
-    return {"name": str(head.get("name", path.stem)), "description": str(head.get("description", "")),
-            "path": joined, "kinematic": kin, "file": path}
+            pr.add(entry("segments", label), str(exc))
+    if parts and len(parts) == len(segs):
+        try:
+            joined = TaskPath.concat(*parts)
+        except PlanError as exc:
+            pr.add("segments", str(exc))
+    pr.raise_if_any()
+    return {"name": str(name), "description": str(description), "path": joined,
+            "kinematic": kin, "file": path}
 
 
 def model_move_path(model, name):
@@ -144,8 +144,8 @@ def model_move_path(model, name):
     mv = moves[name]
     lim = {k: float(mv[k]) for k in ("v_max", "a_max", "j_max") if k in mv}
     if "path" not in mv:
-        return {"name": name, "path": TaskPath.line(mv["start"], mv["end"]), "kinematic": lim,
-                "file": None}
+        line = TaskPath.line(mv["start"], mv["end"], orientation_length(spec))   # (x, y[, phi])
+        return {"name": name, "path": line, "kinematic": lim, "file": None}
     f = read_path_file(mv["path"], relative_to=Path(spec.path).parent)
     kin = lim if len(lim) == 3 else ({**(f["kinematic"] or {}), **lim} or None)
     if kin is not None and len(kin) != 3:

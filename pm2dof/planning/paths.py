@@ -1,4 +1,5 @@
-# Task-plane paths parameterised by arc length: lines, arcs, blended polylines, C2 splines, joins.
+# Task-space paths parameterised by arc length: lines, arcs, blended polylines, C2 splines, joins,
+# and for a platform the orientation along them.
 """Geometric paths p(s) of the end-effector, s the arc length (m), 0 <= s <= ``length``.
 
 A :class:`TaskPath` is a chain of pieces (line, circular arc, C2 spline); ``evaluate(s)``
@@ -6,6 +7,17 @@ returns p(s), p'(s) (unit tangent) and p''(s) (curvature vector). Where two piec
 different tangents the robot must be at rest: those arc lengths are the path's ``stops``
 (the ends always are). ``breakpoints`` are all piece junctions: the planner puts a grid point
 on each, so no grid interval straddles a jump of curvature.
+
+A path has the task dimension ``dim`` of its points: 2 (x, y) for a point end effector, 3
+(x, y, phi) for a platform. **Arc length with an orientation** (docs/planning.md): s is the
+length in the metric ds^2 = dx^2 + dy^2 + (l dphi)^2, where l (m, ``orientation_length``)
+turns an angle into a length; for a model, :func:`pm2dof.core.task.orientation_length` (the
+platform's radius, the largest distance of an attachment point from the platform frame's
+origin: ds/dt then bounds every attachment point's speed within a factor sqrt(2)). Along each
+piece phi is linear in the position's arc length, so a piece of planar length L_p turning by
+dphi has length sqrt(L_p^2 + (l dphi)^2), and a pure rotation (L_p = 0) has length l |dphi|.
+The tangent p'(s) is a unit vector in that metric; p'' (x, y rows 1/m, phi row 1/m^2) is the
+planar piece's curvature scaled by (L_p / L)^2.
 """
 import math
 
@@ -20,11 +32,21 @@ GAP = 1e-9          # m: largest gap between pieces that concat() accepts
 _TANGENT = 1e-9     # |t_out - t_in| above this: a corner (a stop)
 
 
-def _point(name, p):
+def _point(name, p, dims=(2,)):
     a = np.asarray(p, dtype=float) if not isinstance(p, str) else np.array([])
-    if a.shape != (2,) or not np.isfinite(a).all():
-        raise PlanError(f"{name} must be a finite point (x, y) in m, got {p!r}")
+    if a.ndim != 1 or a.size not in dims or not np.isfinite(a).all():
+        what = " or (x, y, phi), m and rad" if 3 in dims else " in m"
+        raise PlanError(f"{name} must be a finite point (x, y){what}, got {p!r}")
     return a
+
+
+def _orientation_length(value):
+    """The length l (m) that converts phi to arc length: required for a path with phi."""
+    if value is None:
+        raise PlanError("a path with an orientation (x, y, phi) needs orientation_length, the "
+                        "length l in m that turns phi into arc length (ds^2 = dx^2 + dy^2 + "
+                        "(l dphi)^2); for a model: pm2dof.core.task.orientation_length(model)")
+    return _number("orientation_length (m)", value, positive=True)
 
 
 def _number(name, x, positive=False, nonnegative=False):
@@ -67,7 +89,39 @@ class _Arc:
         return self.c + self.r * e, tangent, -e / self.r
 
 
-_PIECES = (_Line, _Arc, SplinePiece)
+class _Oriented:
+    """A planar piece (or a fixed point, for a pure rotation) with phi linear in its planar arc
+    length, parameterised by the metric arc length of the module docstring."""
+
+    def __init__(self, planar, point, phi0, phi1, ell):
+        self.planar, self.point, self.phi0, self.dphi = planar, point, phi0, phi1 - phi0
+        self.kind = planar.kind if planar is not None else "rotation"
+        lp = planar.length if planar is not None else 0.0
+        self.length = math.hypot(lp, ell * self.dphi)
+        self.c = lp / self.length                       # d(planar arc length) / ds
+
+    def evaluate(self, s):
+        k = len(s)
+        p, dp, ddp = np.empty((k, 3)), np.empty((k, 3)), np.zeros((k, 3))
+        if self.planar is None:
+            p[:, :2], dp[:, :2] = self.point, 0.0
+        else:
+            p[:, :2], dp[:, :2], ddp[:, :2] = self.planar.evaluate(self.c * s)
+            dp[:, :2] *= self.c
+            ddp[:, :2] *= self.c * self.c
+        p[:, 2] = self.phi0 + self.dphi * (s / self.length)
+        dp[:, 2] = self.dphi / self.length
+        return p, dp, ddp
+
+
+_PIECES = (_Line, _Arc, SplinePiece, _Oriented)
+
+
+def _oriented(planar, point, phi0, phi1, orientation_length):
+    """The piece with orientation: phi from phi0 to phi1 along ``planar`` (None: a rotation
+    at ``point``)."""
+    ell = _orientation_length(orientation_length)
+    return _Oriented(planar, point, float(phi0), float(phi1), ell)
 
 
 class TaskPath:
@@ -78,8 +132,11 @@ class TaskPath:
     ----------
     length : float
         Arc length, m.
-    start, end : ndarray (2,)
-        First and last point, m.
+    dim : int
+        Task dimension of the points: 2 (x, y) or 3 (x, y, phi; arc length as in the module
+        docstring).
+    start, end : ndarray (dim,)
+        First and last point, m (phi in rad).
     breakpoints : ndarray
         Arc lengths of the piece junctions, 0 and ``length`` included, m.
     stops : ndarray
@@ -116,6 +173,10 @@ class TaskPath:
             raise ArgumentTypeError(f"TaskPath pieces must be lines, arcs or splines as "
                                     f"TaskPath.line, .arc, .polyline, .spline make them, got "
                                     f"{bad}")
+        dims = sorted({3 if isinstance(pc, _Oriented) else 2 for pc in pieces})
+        if len(dims) > 1:
+            raise PlanError("a TaskPath's pieces must all have an orientation (x, y, phi) or "
+                            "none (x, y), got both")
         try:
             junctions = np.asarray(stop_junctions, dtype=int).ravel()
         except (TypeError, ValueError):
@@ -138,6 +199,8 @@ class TaskPath:
     stops = property(lambda self: self._ends[self._stops],
                      doc="arc lengths where the robot must rest, m")
     kinds = property(lambda self: tuple(pc.kind for pc in self._pieces))
+    dim = property(lambda self: 3 if isinstance(self._pieces[0], _Oriented) else 2,
+                   doc="task dimension of the points: 2 (x, y) or 3 (x, y, phi)")
     start = property(lambda self: self.evaluate(np.zeros(1))[0][0])
     end = property(lambda self: self.evaluate(np.array([self.length]))[0][0])
 
@@ -158,8 +221,9 @@ class TaskPath:
 
         Returns
         -------
-        p, dp, ddp : ndarray (k, 2)
-            Position (m), unit tangent (1) and curvature vector p'' (1/m).
+        p, dp, ddp : ndarray (k, dim)
+            Position (m; phi in rad), unit tangent (1; phi's entry rad/m) and curvature
+            vector p'' (1/m).
         """
         try:
             s = np.atleast_1d(np.asarray(s, dtype=float))
@@ -180,7 +244,7 @@ class TaskPath:
             raise PlanError(f"side must be 'right' or 'left', got {side!r}")
         s = np.clip(s, 0.0, L)
         idx = np.clip(np.searchsorted(self._ends, s, side=side) - 1, 0, len(self._pieces) - 1)
-        out = [np.empty((len(s), 2)) for _ in range(3)]
+        out = [np.empty((len(s), self.dim)) for _ in range(3)]
         for i, pc in enumerate(self._pieces):
             sel = idx == i
             if sel.all():
@@ -192,35 +256,60 @@ class TaskPath:
 
     # --- constructors -----------------------------------------------------------------
     @classmethod
-    def line(cls, p0, p1):
-        """The straight segment from ``p0`` to ``p1`` (each (2,), m; distinct)."""
-        a, b = _point("p0", p0), _point("p1", p1)
-        if np.hypot(*(b - a)) == 0.0:
+    def line(cls, p0, p1, orientation_length=None):
+        """The straight segment from ``p0`` to ``p1`` (each (2,), m; distinct).
+
+        With an orientation, each is (x, y, phi) (m, rad) and ``orientation_length`` l (m) is
+        required: phi turns linearly along the segment; equal positions give a pure rotation
+        about (x, y) of length l |phi1 - phi0| (module docstring)."""
+        a, b = _point("p0", p0, (2, 3)), _point("p1", p1, (2, 3))
+        if a.size != b.size:
+            raise PlanError(f"line: p0 {a.tolist()} and p1 {b.tolist()} must both be (x, y) or "
+                            f"both (x, y, phi)")
+        if np.array_equal(a, b):
             raise PlanError(f"line: p0 and p1 coincide at {a.tolist()}: zero length")
+        if a.size == 3:
+            planar = _Line(a[:2], b[:2]) if not np.array_equal(a[:2], b[:2]) else None
+            return cls([_oriented(planar, a[:2], a[2], b[2], orientation_length)])
         return cls([_Line(a, b)])
 
     @classmethod
-    def arc(cls, center, radius, angle0, angle1):
+    def arc(cls, center, radius, angle0, angle1, phi=None, orientation_length=None):
         """The circular arc around ``center`` (2,) m of ``radius`` m from ``angle0`` to
-        ``angle1`` (rad, from +x; counter-clockwise if angle1 > angle0, else clockwise)."""
+        ``angle1`` (rad, from +x; counter-clockwise if angle1 > angle0, else clockwise).
+
+        ``phi`` = (phi0, phi1), rad: a platform's orientation, linear along the arc (then
+        ``orientation_length`` is required, see :meth:`line`)."""
         c = _point("center", center)
         r = _number("radius (m)", radius, positive=True)
         a0, a1 = _number("angle0 (rad)", angle0), _number("angle1 (rad)", angle1)
         if a0 == a1:
             raise PlanError(f"arc: angle0 == angle1 == {a0}: zero length")
-        return cls([_Arc(c, r, a0, a1)])
+        if phi is None:
+            return cls([_Arc(c, r, a0, a1)])
+        f0, f1 = _point("phi (phi0, phi1)", phi)
+        return cls([_oriented(_Arc(c, r, a0, a1), None, f0, f1, orientation_length)])
 
     @classmethod
-    def polyline(cls, points, blend_radius=0.0):
+    def polyline(cls, points, blend_radius=0.0, orientation_length=None):
         """Straight segments through ``points`` (m, 2), m >= 2, each corner blended by a
         circular arc of ``blend_radius`` m tangent to both segments (C1; the curvature jumps
         at the tangent points). ``blend_radius = 0``: sharp corners, where the robot stops.
+
+        Points (m, 3) (x, y, phi) give segments with orientation (:meth:`line`, which needs
+        ``orientation_length``), each corner a stop: blending is for (x, y) paths only.
 
         Raises PlanError for repeated points, a blend that does not fit between two corners
         (names the segment and the largest radius that fits) or a corner that turns back
         (180 degrees: no arc is tangent to both; stop there with blend_radius 0).
         """
         P = np.asarray(points, dtype=float) if not isinstance(points, str) else np.array([])
+        if P.ndim == 2 and P.shape[1] == 3 and len(P) >= 2:
+            if _number("blend_radius (m)", blend_radius, nonnegative=True) != 0.0:
+                raise PlanError("polyline: blend_radius applies to (x, y) points only; with an "
+                                "orientation (x, y, phi) use blend_radius=0 (stops at corners)")
+            return cls.concat(*[cls.line(P[i], P[i + 1], orientation_length)
+                                for i in range(len(P) - 1)])
         if P.ndim != 2 or P.shape[1:] != (2,) or len(P) < 2 or not np.isfinite(P).all():
             raise PlanError(f"polyline: points must be a finite (m, 2) array with m >= 2, got "
                             f"{points!r}")
@@ -267,8 +356,14 @@ class TaskPath:
     @classmethod
     def spline(cls, waypoints):
         """A C2 cubic spline through ``waypoints`` (m, 2), m >= 2 (natural: no curvature at
-        the ends; two points give the line). See :mod:`pm2dof.planning.spline`."""
+        the ends; two points give the line). See :mod:`pm2dof.planning.spline`. Planar only:
+        waypoints with an orientation (x, y, phi) are refused (PlanError; use
+        :meth:`polyline`)."""
         P = np.asarray(waypoints, dtype=float) if not isinstance(waypoints, str) else np.array([])
+        if P.ndim == 2 and P.shape[1:] == (3,):
+            raise PlanError("spline: a C2 spline is planar (x, y); waypoints with an orientation "
+                            "(x, y, phi) have no spline yet: use TaskPath.polyline (lines with "
+                            "phi, stops at the corners)")
         if P.ndim != 2 or P.shape[1:] != (2,) or len(P) < 2 or not np.isfinite(P).all():
             raise PlanError(f"spline: waypoints must be a finite (m, 2) array with m >= 2, got "
                             f"{waypoints!r}")
@@ -287,17 +382,20 @@ class TaskPath:
         if not paths or not all(isinstance(p, TaskPath) for p in paths):
             raise PlanError(f"concat takes one or more TaskPath, got "
                             f"{[type(p).__name__ for p in paths]}")
+        if len({p.dim for p in paths}) > 1:
+            raise PlanError(f"concat: the paths must all be (x, y) or all (x, y, phi), got "
+                            f"dimensions {[p.dim for p in paths]}")
         pieces, stops = [], []
         for k, path in enumerate(paths):
             if k:
                 prev = paths[k - 1]
                 _, t_out, _ = prev.evaluate(np.array([prev.length]))
                 p_in, t_in, _ = path.evaluate(np.zeros(1))
-                gap = float(np.hypot(*(p_in[0] - prev.end)))
+                gap = float(np.linalg.norm(p_in[0] - prev.end))
                 if gap > GAP:
                     raise PlanError(f"concat: path {k} starts at {p_in[0].tolist()}, {gap:.3g} m "
                                     f"from where path {k - 1} ends ({prev.end.tolist()})")
-                if np.hypot(*(t_out[0] - t_in[0])) > _TANGENT:
+                if np.linalg.norm(t_out[0] - t_in[0]) > _TANGENT:
                     stops.append(len(pieces))
             stops += [len(pieces) + j for j in path._stops[1:-1]]
             pieces += path._pieces

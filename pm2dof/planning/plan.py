@@ -17,7 +17,7 @@ import numpy as np
 from ..control.trajectory import Trajectory
 from ..core.errors import PlanError
 
-__all__ = ["Plan", "PathProfile", "sample", "grid_times"]
+__all__ = ["Plan", "PathProfile", "sample", "sampled", "grid_times"]
 
 
 def grid_times(s, sdot):
@@ -64,6 +64,12 @@ class PathProfile:
 def sample(path, profile, period):
     """The :class:`pm2dof.Trajectory` of ``profile`` along ``path`` at ``period`` s: samples at
     k * period, k = 0 .. ceil(duration / period); the last one at rest at the end."""
+    return sampled(path, profile, period)[0]
+
+
+def sampled(path, profile, period):
+    """:func:`sample`'s trajectory, with the profile at its samples, (s, s_d, s_dd), and the
+    path there, (p, p', p'')."""
     n = math.ceil(profile.duration / period)
     n += int(n * period < profile.duration)
     t = np.arange(n + 1) * period
@@ -71,8 +77,9 @@ def sample(path, profile, period):
     p, dp, ddp = path.evaluate(s)
     xd_dot = dp * sd[:, None] + 0.0
     xd_ddot = dp * sdd[:, None] + ddp * (sd * sd)[:, None] + 0.0
-    return Trajectory(t, p, xd_dot, xd_ddot, period, tuple(path.start.tolist()),
+    traj = Trajectory(t, p, xd_dot, xd_ddot, period, tuple(path.start.tolist()),
                       tuple(path.end.tolist()), profile)
+    return traj, (s, sd, sdd), (p, dp, ddp)
 
 
 @dataclass(frozen=True, eq=False)

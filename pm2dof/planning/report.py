@@ -8,10 +8,10 @@ split's torques as CSV; :func:`format_report` renders all of it.
 """
 import numpy as np
 
-from ..analysis.results import provenance
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from ..core.errors import PlanError
+from ..infra.results import provenance
 from .kinematic import plan_kinematic
 from .stages import limits
 from .topp import plan_time_optimal
@@ -65,7 +65,7 @@ def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_n
             kp = plan_kinematic(path, kin["v_max"], kin["a_max"], kin["j_max"],
                                 model.spec.sensing["sample_period"])
             peaks = _peaks(model, kp, w)
-            row["kinematic"] = {**kin, "duration_s": kp.duration, "tau_peak": peaks,
+            row["kinematic"] = {**kin, "duration_s": kp.duration, "tau_peak_N_m": peaks,
                                 "within_limits": {sp: bool(np.all(np.array(v) <= w))
                                                   for sp, v in peaks.items()}}
             kp.info["tau_max_actuators"] = w.tolist()     # the limits its CSV reports
@@ -80,7 +80,7 @@ def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_n
                 continue
             feasible.append(split)
             plans[item["name"], split] = p
-            row[split] = {"duration_s": p.duration, "tau_peak": p.tau_peak.tolist(),
+            row[split] = {"duration_s": p.duration, "tau_peak_N_m": p.tau_peak.tolist(),
                           "compute_ms": p.compute_time_s * 1e3, "grid": p.info["grid"],
                           "max_speed_m_s": float(p.sdot.max())}
         if not feasible:
@@ -111,7 +111,7 @@ def closed_loop(model, path, tau_max=None, split="min_max", margins=(1.0, 0.9), 
     -------
     list of dict
         One per margin: ``margin``, ``duration_s`` and for ``na``/``apd``: ``rmse_m``,
-        ``max_error_m``, ``tau_peak`` (N m), ``saturated`` (samples clipped), ``outcome``.
+        ``max_error_m``, ``tau_peak_N_m``, ``saturated`` (samples clipped), ``outcome``.
     """
     w = limits(model, tau_max, 1.0)
     out = []
@@ -123,14 +123,14 @@ def closed_loop(model, path, tau_max=None, split="min_max", margins=(1.0, 0.9), 
             r = simulate(model, ctrl, plan.trajectory, settle_time=settle_time)
             n = r.n_move
             row[law] = {"rmse_m": float(r.rmse), "max_error_m": float(np.max(np.hypot(
-                *(r.xd[:n] - r.xe[:n]).T))), "tau_peak": np.abs(r.tau_a).max(axis=0).tolist(),
+                *(r.xd[:n] - r.xe[:n]).T))), "tau_peak_N_m": np.abs(r.tau_a).max(axis=0).tolist(),
                 "saturated": int(r.n_saturated), "outcome": r.outcome}
         out.append(row)
     return out
 
 
 def plan_provenance(model, tau_max, margin, splits, theta=None, base=None):
-    """Where a plan came from: ``base`` or :func:`pm2dof.analysis.results.provenance` (the
+    """Where a plan came from: ``base`` or :func:`pm2dof.infra.results.provenance` (the
     pm2dof version, the model file, the generated folder, hashes, git commit, command line)
     with the planning inputs: ``tau_max`` (n,) N m (the actuators' limits, before the margin),
     ``margin``, the ``splits`` and ``theta`` ("nominal": the model's Tables 1-2, else the 5n
@@ -166,13 +166,11 @@ def csv_text(model, plan, prov=None):
     head = "t,s,sdot,sddot,x,y,vx,vy,ax,ay," + ",".join(f"tau{i + 1}" for i in range(n))
     w = plan.info.get("tau_max_actuators", model.spec.limits["tau_max"])
     info = {**plan_provenance(model, w, plan.margin, [split], theta, prov), "split": split}
-    meta = "".join(f"# {k} = {info[k]}\n" for k in CSV_KEYS)
+    meta = "".join(f"# {k} = {info[k]}\n" for k in CSV_KEYS if k in info)
     meta += (f"# method = {plan.method}\n# duration = {plan.duration!r}\n"
              f"# sample_period = {tr.period!r}\n# units: s, m, m/s, m/s^2, N m\n")
-    import io
-    buf = io.StringIO()
-    np.savetxt(buf, cols, delimiter=",", fmt="%.17g")
-    return meta + head + "\n" + buf.getvalue()
+    rows = "".join(",".join(repr(float(x)) for x in row) + "\n" for row in cols)
+    return meta + head + "\n" + rows        # the shortest exact decimals, as logs write them
 
 
 def format_report(res, loops=None):
@@ -188,14 +186,14 @@ def format_report(res, loops=None):
                             for sp, ok in k["within_limits"].items())
             lines.append(f"  kinematic S-curve ({k['v_max']:g} m/s, {k['a_max']:g} m/s^2, "
                          f"{k['j_max']:g} m/s^3): {k['duration_s']:.4f} s; peak |tau| "
-                         f"{max(k['tau_peak']['min_norm']):.3f} N m min-norm ({lim})")
+                         f"{max(k['tau_peak_N_m']['min_norm']):.3f} N m min-norm ({lim})")
         for split in ("min_norm", "min_max"):
             r = row.get(split)
             if r and "infeasible" in r:
                 lines.append(f"  time-optimal, {split:8s}: infeasible: {r['infeasible']}")
             elif r:
                 lines.append(f"  time-optimal, {split:8s}: {r['duration_s']:.4f} s (peak |tau| "
-                             f"{max(r['tau_peak']):.3f} N m, top speed {r['max_speed_m_s']:.3f}"
+                             f"{max(r['tau_peak_N_m']):.3f} N m, top speed {r['max_speed_m_s']:.3f}"
                              f" m/s; {r['compute_ms']:.1f} ms, {r['grid']} grid points)")
         if "saving_min_max_percent" in row:
             lines.append(f"  the redundancy (min-max over min-norm) saves "
@@ -216,6 +214,6 @@ def format_report(res, loops=None):
                 c = r[law]
                 lines.append(f"  margin {r['margin']:.2f} ({r['duration_s']:.4f} s) "
                              f"{law.upper():3s}: RMSE {c['rmse_m']:.3e} m, max error "
-                             f"{c['max_error_m']:.3e} m, peak |tau| {max(c['tau_peak']):.3f} "
+                             f"{c['max_error_m']:.3e} m, peak |tau| {max(c['tau_peak_N_m']):.3f} "
                              f"N m, {c['saturated']} saturated samples, {c['outcome']}")
     return "\n".join(lines)

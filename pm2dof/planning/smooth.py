@@ -36,11 +36,11 @@ MAX_ITER = 100_000  # the most IPOPT iterations max_iter may ask for
 
 
 def _friction(model, stage, prm, w, speeds):
-    """g(y) (K, 2) at each grid point for each speed in ``speeds`` (list of (K,) arrays)."""
+    """g(y) (K, m) at each grid point for each speed in ``speeds`` (list of (K,) arrays)."""
     K = len(stage)
     out = []
     for y in speeds:
-        u = np.empty((K, 2))
+        u = np.empty((K, model.dof))
         model.function("path_torques").map(K, stage, np.ascontiguousarray(y), 0.0, prm, w, u,
                                            None, None, None)
         out.append(u)
@@ -80,7 +80,7 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
         raise PlanError(f"max_iter must be a whole number of IPOPT iterations from 1 to "
                         f"{MAX_ITER}, got {max_iter!r}")
     w = limits(model, tau_max, margin)
-    n = model.n_legs
+    n, m = model.n_legs, model.dof
     try:
         rate = (w / RISE_TIME if tau_rate is None
                 else np.array(tau_rate, dtype=float).ravel() * np.ones(n))
@@ -115,24 +115,24 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     taus = []
     for rows, yk in zip(ends, (y[:-1], y[1:])):
         R = lay.unpack(rows)
-        a, b, S = R["a"], R["b"], R["S"].reshape(K - 1, n, 2)
+        a, b, S = R["a"], R["b"], R["S"].reshape(K - 1, n, m)
         if affine:
             g0, g1 = _friction(model, rows, prm, w, [np.zeros(K - 1), np.ones(K - 1)])
-            fr = [ca.DM(g0[:, i]) + ca.DM(g1[:, i] - b[:, i] - g0[:, i]) * yk for i in range(2)]
+            fr = [ca.DM(g0[:, i]) + ca.DM(g1[:, i] - b[:, i] - g0[:, i]) * yk for i in range(m)]
         else:
             ext = ca.external(f"{model.name}_path_torques", model.library,
                               {"enable_fd": True, "fd_method": "central"}).map(K - 1)
             U = ext(ca.DM(rows.T), yk.T, ca.DM.zeros(1, K - 1), ca.DM(prm), ca.DM(w))[0]
-            fr = [U[i, :].T - ca.DM(b[:, i]) * yk * yk for i in range(2)]
-        force = [ca.DM(a[:, i]) * u + ca.DM(b[:, i]) * yk * yk + fr[i] for i in range(2)]
+            fr = [U[i, :].T - ca.DM(b[:, i]) * yk * yk for i in range(m)]
+        force = [ca.DM(a[:, i]) * u + ca.DM(b[:, i]) * yk * yk + fr[i] for i in range(m)]
         if split == "min_max":
             tau = opti.variable(K - 1, n)
-            for i in range(2):
+            for i in range(m):
                 opti.subject_to(sum(ca.DM(S[:, j, i]) * tau[:, j] for j in range(n)) == force[i])
         else:
             P = np.einsum("kij,kjl->kil", S, np.linalg.inv(np.einsum("kji,kjl->kil", S, S)))
-            tau = ca.horzcat(*[ca.DM(P[:, j, 0]) * force[0] + ca.DM(P[:, j, 1]) * force[1]
-                               for j in range(n)])
+            tau = ca.horzcat(*[sum((ca.DM(P[:, j, i]) * force[i] for i in range(1, m)),
+                                   ca.DM(P[:, j, 0]) * force[0]) for j in range(n)])
         for j in range(n):
             opti.subject_to(opti.bounded(-w[j], tau[:, j], w[j]))
         taus.append(tau)

@@ -14,7 +14,8 @@ import numpy as np
 from ..core.errors import PlanError
 from .check import first_bad, raise_at
 
-__all__ = ["SPLITS", "GRID_MAX", "grid_points", "limits", "stages", "point_stages", "params"]
+__all__ = ["SPLITS", "GRID_MAX", "grid_points", "limits", "stages", "point_stages", "params",
+           "junction_left", "link"]
 
 SPLITS = ("min_norm", "min_max")
 V_TOP = 100.0   # m/s: the bisection's upper bracket; a maximum-velocity curve above it reads V_TOP
@@ -173,11 +174,36 @@ def stages(model, path, s, w, theta, split, stops=(), evaluated=None):
     """
     p, dp, ddp = (np.ascontiguousarray(x) for x in (evaluated or path.evaluate(s)))
     K, n = len(s), model.n_legs
-    stage, outs = point_stages(model, s, (p, dp, ddp), theta, w, split)
-    sing = outs["sing"]
+    base, outs = point_stages(model, s, (p, dp, ddp), theta, w, split)
+    left = junction_left(model, path, theta, w, split)
+    stage, arrive = link(model, path, s, base, outs["v1"], stops, left, split)
+    coef = {"a": outs["a"], "b": outs["b"], "S": outs["S"].reshape(K, n, 2), "v1": outs["v1"],
+            "N": outs[f"N_{split}"].reshape(K, n, 2), "h": outs[f"h_{split}"],
+            "sing": outs["sing"], "p": p, "dp": dp, "ddp": ddp, "arrive": arrive}
+    return stage, coef
+
+
+def junction_left(model, path, theta, w, split):
+    """The ``path_coefficients`` outputs (dict) at the path's interior breakpoints with the
+    preceding piece (the path's left limit there), in order; None if it has none."""
+    bp = path.breakpoints[1:-1]
+    if not bp.size:
+        return None
+    pl, dpl, ddpl = (np.ascontiguousarray(x) for x in path.evaluate(bp, "left"))
+    return _coefficients(model, pl, dpl, ddpl, theta, w, split)
+
+
+def link(model, path, s, base, v1, stops, left, split):
+    """The ``path_stage`` rows of the grid ``s`` (K,) from its points' own rows ``base`` (K,
+    size; :func:`point_stages`) and their v1 (K, n): (stage, arrive), both (K, size). stage:
+    rho (a joint reverses on [s_k, s_k+1]), delta = s_k+1 - s_k and x_cap (0 at the grid indices
+    ``stops``) set; arrive: the facets at each point for the interval that ends there (that
+    interval's rho; at an interior breakpoint the preceding piece's, ``left`` of
+    :func:`junction_left`). Every row depends on its point and its neighbours alone."""
     lay = model.layout("path_stage")
+    stage = base.copy()
     st = lay.unpack(stage)
-    sign = np.where(outs["v1"] >= 0, 1.0, -1.0)       # sgn(0) = +1, the model's convention
+    sign = np.where(v1 >= 0, 1.0, -1.0)       # direction of motion, as path_stage's sigma
     st["rho"][:-1] = sign[:-1] != sign[1:]             # a joint reverses on [s_k, s_k+1]
     st["rho"][-1] = 0.0
     st["delta"][:-1, 0] = np.diff(s)
@@ -186,14 +212,11 @@ def stages(model, path, s, w, theta, split, stops=(), evaluated=None):
     st["x_cap"][list(stops)] = 0.0
     arrive = stage.copy()
     lay.unpack(arrive)["rho"][1:] = st["rho"][:-1]
-    junction = np.flatnonzero(np.isin(s, path.breakpoints[1:-1]))
-    if junction.size:                   # arriving at a breakpoint: the preceding piece
-        pl, dpl, ddpl = (np.ascontiguousarray(x) for x in path.evaluate(s[junction], "left"))
-        left = _coefficients(model, pl, dpl, ddpl, theta, w, split)
+    bp = path.breakpoints[1:-1]
+    junction = np.flatnonzero(np.isin(s, bp))
+    if left is not None and junction.size:      # arriving at a breakpoint: the preceding piece
+        which = np.searchsorted(bp, s[junction])
         part = arrive[junction]
-        _fill(model, part, left, split)
+        _fill(model, part, {k: None if v is None else v[which] for k, v in left.items()}, split)
         arrive[junction] = part
-    coef = {"a": outs["a"], "b": outs["b"], "S": outs["S"].reshape(K, n, 2), "v1": outs["v1"],
-            "N": outs[f"N_{split}"].reshape(K, n, 2), "h": outs[f"h_{split}"],
-            "sing": sing, "p": p, "dp": dp, "ddp": ddp, "arrive": arrive}
-    return stage, coef
+    return stage, arrive

@@ -19,7 +19,10 @@ polytopes; every set the recursion needs is one-dimensional, though, and is comp
    where the arrival facets bind when braking (landing on the bound) and accelerating.
 
 Around the passes (:func:`plan_time_optimal`) the grid is refined until it resolves the path
-(RESOLUTION) and the torques between the grid points (BETWEEN_TOL at each midpoint).
+(RESOLUTION) and the torques between the grid points (BETWEEN_TOL at each midpoint,
+SAMPLE_TOL at each sample of the trajectory), in place: each round recomputes only what the
+added points change (:class:`pm2dof.planning.grid.Grid`), equal bit for bit to the whole
+computation on the refined grid.
 """
 import time
 
@@ -27,178 +30,51 @@ import numpy as np
 
 from ..core.errors import PlanError
 from .check import check_path, require
-from .plan import Plan, PathProfile, grid_times, sample
-from .stages import GRID_MAX, grid_points, limits, params, point_stages, stages
+from .grid import Grid, at, passes
+from .plan import Plan
+from .stages import GRID_MAX, grid_points, limits, params
 
-__all__ = ["plan_time_optimal", "solve_profile"]
+__all__ = ["plan_time_optimal", "plan_on_grid", "solve_profile"]
 
-_TOL = 1e-9   # relative slack of the forward pass's own checks (rounding)
 #: where an interval's facets cannot hold at both ends (riding a steep maximum-velocity curve),
-#: it and its neighbours are split into SPLIT_INTO parts and the passes rerun, REFINE times
-REFINE, SPLIT_INTO = 2, 8
+#: it is split into SPLIT_INTO^2 parts and its neighbours into SPLIT_INTO, and the passes
+#: rerun, REFINE times (once: splitting in 8, twice, took a second round for about the same)
+REFINE, SPLIT_INTO = 1, 8
 #: no joint angle and no tangent may turn by more than RESOLUTION rad over a grid interval:
 #: a coarser grid is refined (halving, RESOLVE_ROUNDS times at most) before the passes
 RESOLUTION, RESOLVE_ROUNDS = 0.05, 40
 #: between the grid points the torques may exceed the limits by BETWEEN_TOL of tau_max at an
-#: interval's midpoint: an interval beyond is halved and the passes rerun, ROUNDS times at most
-BETWEEN_TOL, ROUNDS = 1e-3, 12
-
-
-def _at(coef, s, k):
-    p = coef["p"][k]
-    return f"s = {s[k]:.6g} m, point ({p[0]:.6g}, {p[1]:.6g}) m"
-
-
-def _stop_indices(path, s):
-    return np.searchsorted(s, path.stops) if len(path.stops) else np.array([], dtype=int)
-
-
-def _merge(s, ev, new, ev_new):
-    """The grid ``s`` with the points ``new`` added, and their evaluations, in order."""
-    order = np.argsort(np.concatenate([s, new]), kind="stable")
-    return (np.concatenate([s, new])[order],
-            tuple(np.concatenate([e, f])[order] for e, f in zip(ev, ev_new)))
-
-
-def _resolved(model, path, s, ev, w, theta, split):
-    """``stages`` on the grid ``s`` (K,) with its ``ev`` = path.evaluate(s), after halving every
-    interval over which an active joint or the tangent turns by more than RESOLUTION rad
-    (|S p'| (rad/m) and |p''| (1/m), the larger of both ends, times the length): the path's
-    dynamics must not change much between two grid points, where no limit is imposed.
-    Returns (s, ev, stops, stage, coef)."""
-    for _ in range(RESOLVE_ROUNDS):
-        stops = _stop_indices(path, s)
-        stage, coef = stages(model, path, s, w, theta, split, stops, ev)
-        rate = np.maximum(np.abs(coef["v1"]).max(axis=1), np.hypot(*coef["ddp"].T))
-        wide = np.maximum(rate[:-1], rate[1:]) * np.diff(s)
-        bad = np.flatnonzero(wide > RESOLUTION)
-        if not bad.size:
-            return s, ev, stops, stage, coef
-        if len(s) + bad.size > GRID_MAX:
-            break
-        new = 0.5 * (s[bad] + s[bad + 1])
-        s, ev = _merge(s, ev, new, path.evaluate(new))
-    k = int(bad[np.argmax(wide[bad])])
-    raise PlanError(f"the path turns too fast for a grid of at most {GRID_MAX} points near "
-                    f"{_at(coef, s, k)}: a joint or the tangent turns by {wide[k]:.3g} rad "
-                    f"over {s[k + 1] - s[k]:.3g} m after {RESOLVE_ROUNDS} halvings")
-
-
-def _between(model, path, s, x, sdd, theta, w, split, prm, cache):
-    """The plan between its grid points: each interval's midpoint (K-1,), its p, p', p'' (the
-    ``cache`` (midpoints, evaluations) of the previous round reused where they match) and the
-    excess of the split's torques over the limits there, max_i |tau_i| / w_i - 1 (K-1,), at
-    s_d^2 = (x_k + x_k+1) / 2 (linear in s on the interval) and the interval's s_dd."""
-    mid = 0.5 * (s[:-1] + s[1:])
-    old, old_ev = cache
-    j = np.minimum(np.searchsorted(old, mid), max(len(old) - 1, 0))
-    hit = (old[j] == mid) if len(old) else np.zeros(len(mid), dtype=bool)
-    ev = tuple(np.empty((len(mid), 2)) for _ in range(3))
-    if hit.any():
-        for e, o in zip(ev, old_ev):
-            e[hit] = o[j[hit]]
-    if not hit.all():
-        for e, f in zip(ev, path.evaluate(mid[~hit])):
-            e[~hit] = f
-    stage = point_stages(model, mid, ev, theta, w, split, check=False)[0]
-    M, n = len(mid), model.n_legs
-    sd = np.sqrt(np.maximum(0.5 * (x[:-1] + x[1:]), 0.0))
-    tau_mn, ratio = np.empty((M, n)), np.empty(M)
-    model.function("path_torques").map(M, stage, sd, np.ascontiguousarray(sdd[:-1]), prm, w,
-                                        None, tau_mn, None, ratio)
-    if split == "min_norm":
-        ratio = np.abs(tau_mn / w).max(axis=1)
-    excess = ratio - 1.0
-    excess[~np.isfinite(excess)] = np.inf   # out of reach between two grid points: refined,
-    return mid, ev, excess                  # and the new grid point's check names it
-
-
-def _check_forward(coef, s, x, sdd, L, U, Z, h, x_mvc):
-    """PlanError naming the first interval where the forward pass broke one of its own
-    conditions (rounding aside; none is known to happen since the backward pass keeps every
-    landing at or above rest): s_dd within [L, U] leaving s_k, the facets that do not bound
-    s_dd held (Z >= 0), s_d^2 >= 0 at s_k+1."""
-    scale = np.maximum(1.0, np.abs(sdd))
-    below, above = sdd < L - _TOL * scale, sdd > U + _TOL * scale
-    held = Z < -_TOL * h
-    landed = x[1:] < -_TOL * np.maximum(x_mvc[1:], 1e-12)
-    wrong = below | above | held | landed
-    if not wrong.any():
-        return
-    k = int(np.argmax(wrong))
-    if landed[k]:
-        what = (f"its path acceleration s_dd = {sdd[k]:.6g} m/s^2 from s_d^2 = {x[k]:.6g} "
-                f"m^2/s^2 lands at s_d^2 = {x[k + 1]:.6g} < 0 at s = {s[k + 1]:.6g} m (the "
-                f"robot would stop inside the interval)")
-    elif held[k]:
-        what = (f"a torque facet parallel to the path's acceleration is violated at s_d^2 = "
-                f"{x[k]:.6g} m^2/s^2 (by {-Z[k]:.6g} N)")
-    else:
-        what = (f"s_dd = {sdd[k]:.6g} m/s^2 is outside its feasible interval "
-                f"[{L[k]:.6g}, {U[k]:.6g}] m/s^2 at s_d^2 = {x[k]:.6g} m^2/s^2")
-    raise PlanError(f"the time-optimal forward pass failed on the interval leaving "
-                    f"{_at(coef, s, k)}: {what}; a finer grid may avoid it")
+#: interval's midpoint, and by SAMPLE_TOL at a sample of the trajectory (the model's period:
+#: what simulate receives): an interval beyond is halved and the passes rerun, ROUNDS times
+BETWEEN_TOL, SAMPLE_TOL, ROUNDS = 1e-3, 1e-4, 16
 
 
 def solve_profile(model, stage, prm, s, coef):
-    """The three passes over one grid. Returns (x (K,), sdd (K,), x_mvc (K,), relaxed): the
-    intervals whose arrival facets could not hold together with the departing ones (only the
-    departing ones are met there: collocation's O(delta) error)."""
-    K = len(s)
-    x_mvc = np.empty(K)
-    mvc = model.function("path_mvc")
-    mvc.map(K, stage, prm, x_mvc)
-    bad = np.flatnonzero(x_mvc < 0)
-    if bad.size:
-        k = int(bad[0])
-        raise PlanError(f"the torque limits cannot move the robot along the path at "
-                        f"{_at(coef, s, k)}: even at rest no path acceleration keeps every "
-                        f"|tau_i| within tau_max (Coulomb friction and the split's force "
-                        f"polygon leave no feasible force along the path)")
-    sl = model.layout("path_stage").slices
-    x_cap = stage[:, sl["x_cap"]].ravel()
-    interior = np.flatnonzero((x_mvc <= 0) & (x_cap > 0))
-    if interior.size:
-        k = int(interior[0])
-        raise PlanError(f"zero feasible velocity at {_at(coef, s, k)}: the torque limits hold "
-                        f"the path there only at rest (the maximum-velocity curve touches 0)")
-    arrive = coef["arrive"]
-    cap = x_mvc.copy()                      # the arrival facets' own maximum-velocity curve
-    other = np.flatnonzero(np.any(arrive != stage, axis=1))
-    if other.size:
-        part = np.empty(other.size)
-        mvc.map(other.size, np.ascontiguousarray(arrive[other]), prm, part)
-        cap[other] = part
-    fin = model.layout("path_forward_input")
-    inp = np.empty((K - 1, fin.size))             # per interval: pair, then x_next_max
-    pair = model.layout("path_pair").unpack(inp[:, fin.slices["pair"]])
-    pair["stage"][:], pair["next"][:], pair["next_cap"][:, 0] = stage[:-1], arrive[1:], cap[1:]
-    # backward: controllable bounds, from rest at the end
-    back = np.empty(K - 1)
-    xb = np.zeros(1)
-    model.function("path_backward").accumulate(
-        xb, np.ascontiguousarray(inp[::-1, fin.slices["pair"]]), prm, back)
-    hi = np.concatenate([back[::-1], [0.0]])
-    if hi[0] < 0:
-        k = int(np.flatnonzero(hi < 0)[-1])
-        raise PlanError(f"the robot cannot reach the end of the path at rest from "
-                        f"{_at(coef, s, k)} with these torque limits: no feasible deceleration "
-                        f"(even near rest the motors must balance the Coulomb friction; a larger "
-                        f"tau_max, or the min_max split, leaves more room)")
-    # forward: greedy from rest at the start
-    inp[:, fin.slices["x_next_max"]] = hi[1:, None]
-    out = model.layout("path_forward_output")
-    y = np.empty((K - 1, out.size))
-    xf = np.zeros(1)
-    model.function("path_forward").accumulate(xf, inp, prm, y)
-    Y = {k: v[:, 0] for k, v in out.unpack(y).items()}
-    x = np.concatenate([Y["x"], xf])
-    sdd, L, U, Z = Y["sdd"], Y["L"], Y["U"], Y["Z"]
-    relaxed = np.flatnonzero(Y["arrival_ok"] == 0)  # the arrival facets do not hold there
-    _check_forward(coef, s, x, sdd, L, U, Z, stage[:-1, sl["h"]].max(axis=1), x_mvc)
-    x = np.maximum(x, 0.0)
-    x[x_cap == 0] = 0.0
-    return x, np.concatenate([sdd, sdd[-1:]]), x_mvc, relaxed
+    """The three passes over one whole grid (``stage``, ``coef``: :func:`pm2dof.planning.stages.stages`). Returns
+    (x (K,), sdd (K,), x_mvc (K,), relaxed): the intervals whose arrival facets could not hold
+    together with the departing ones (only the departing ones are met there)."""
+    return passes(model, stage, coef["arrive"], prm, s, coef["p"])[:4]
+
+
+def _resolve(grid):
+    """Halve every interval over which an active joint or the tangent turns by more than
+    RESOLUTION rad (|S p'| (rad/m) and |p''| (1/m), the larger of both ends, times the
+    length): the path's dynamics must not change much between two grid points, where no limit
+    is imposed."""
+    for _ in range(RESOLVE_ROUNDS):
+        s = grid.s
+        rate = np.maximum(np.abs(grid.v1).max(axis=1), np.hypot(*grid.ev[2].T))
+        wide = np.maximum(rate[:-1], rate[1:]) * np.diff(s)
+        bad = np.flatnonzero(wide > RESOLUTION)
+        if not bad.size:
+            return
+        if len(s) + bad.size > GRID_MAX:
+            break
+        grid.insert(0.5 * (s[bad] + s[bad + 1]))
+    k = int(bad[np.argmax(wide[bad])])
+    raise PlanError(f"the path turns too fast for a grid of at most {GRID_MAX} points near "
+                    f"{at(grid.ev[0], s, k)}: a joint or the tangent turns by {wide[k]:.3g} rad "
+                    f"over {s[k + 1] - s[k]:.3g} m after {RESOLVE_ROUNDS} halvings")
 
 
 def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, margin=1.0,
@@ -227,10 +103,12 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         breakpoints included). The grid is then refined until it resolves the path and the
         plan: every interval over which an active joint or the tangent turns by more than
         RESOLUTION = 0.05 rad is halved; where an interval's torque facets cannot hold at both
-        its ends, it and its neighbours are split in 8 and the plan rerun (at most twice); and
+        its ends, it is split in 64 and its neighbours in 8 and the plan rerun (once); and
         where the torques at an interval's midpoint exceed the limits by more than
-        BETWEEN_TOL = 0.1 %, it is halved and the plan rerun (ROUNDS = 12 rounds in all).
-        A coarse grid gives a feasible plan, longer than a fine one.
+        BETWEEN_TOL = 0.1 %, or at a sample of the trajectory by more than SAMPLE_TOL =
+        0.01 %, it is halved and the plan rerun (ROUNDS = 16 rounds in all). A coarse grid
+        gives a feasible plan, no shorter than the 1000-point one on the paths tested (two
+        coarse grids are not ordered: docs/results-planning.md).
 
     Returns
     -------
@@ -238,6 +116,7 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         ``method`` "time_optimal"; torques at the grid points from the generated C;
         ``info``: ``grid`` (the final count), ``refinements``, ``midpoint_excess`` (the largest
         excess over the limits at an interval's midpoint, a fraction of tau_max),
+        ``sample_excess`` (the same at the trajectory's samples, <= SAMPLE_TOL),
         ``arrival_relaxed`` (arc lengths where only the departing facets hold), ``stops``,
         ``theta``, ``tau_max_actuators`` (tau_max before the margin).
 
@@ -263,51 +142,82 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
     >>> bool(0.1 < plan.duration < 0.216), bool((plan.tau_peak <= 6.0 + 1e-9).all())
     (True, True)
     """
+    return _plan(model, path, tau_max, split, theta, margin, grid, None)
+
+
+def plan_on_grid(model, path, s, tau_max=None, split="min_max", theta=None, margin=1.0):
+    """:func:`plan_time_optimal` on the grid ``s`` (arc lengths, increasing, the path's
+    breakpoints among them) as it is: the passes and the checks between the grid points once,
+    nothing refined (``info["midpoint_excess"]`` and ``["sample_excess"]`` say what the
+    refinement would have fixed). The cost of one unrefined plan of a grid, for the bench."""
+    return _plan(model, path, tau_max, split, theta, margin, None, np.asarray(s, dtype=float))
+
+
+def _unresolved(s, mid, ev_mid, excess, over, attempt):
+    """PlanError: the limits could not be held between the grid points (the intervals
+    ``over``: at their midpoints beyond BETWEEN_TOL, or at a sample beyond SAMPLE_TOL)."""
+    worst = excess[over].max()
+    if worst > BETWEEN_TOL:
+        k = int(over[np.argmax(excess[over])])
+        what = f"by {100 * worst:.3g} % at {at(ev_mid[0], mid, k)}"
+        tol = BETWEEN_TOL
+    else:
+        k = int(over[0])
+        what = "at a sample of the trajectory"
+        tol = SAMPLE_TOL
+    raise PlanError(f"the torques exceed tau_max {what}, between the grid points s = "
+                    f"{s[k]:.6g} and {s[k + 1]:.6g} m, after {attempt} refinements ({len(s)} "
+                    f"grid points): the limits cannot be held there within {100 * tol:g} % on a "
+                    f"grid of at most {GRID_MAX} points")
+
+
+def _plan(model, path, tau_max, split, theta, margin, grid, given):
     t0 = time.perf_counter()
     require(model, path)
     w = limits(model, tau_max, margin)
-    s = grid_points(path, grid)
+    s = grid_points(path, grid) if given is None else given
     prm, th = params(model, theta)
     check_path(model, path)             # every 0.5 mm, between the grid points too
-    ev = path.evaluate(s)
-    cache = (np.empty(0), None)             # midpoints already evaluated, and their p, p', p''
+    g = Grid(model, path, s, path.evaluate(s), w, th, split, prm)
+    period = model.spec.sensing["sample_period"]
+    refine = given is None
     for attempt in range(ROUNDS + 1):
-        s, ev, stops, stage, coef = _resolved(model, path, s, ev, w, th, split)
-        x, sdd, x_mvc, relaxed = solve_profile(model, stage, prm, s, coef)
-        if relaxed.size and attempt < REFINE:   # split where the arrival facets failed
-            ks = np.unique(np.clip(np.concatenate([relaxed - 1, relaxed, relaxed + 1]), 0,
-                                   len(s) - 2))
-            new = (s[ks, None] + np.diff(s)[ks, None]
-                   * (np.arange(1, SPLIT_INTO) / SPLIT_INTO)).ravel()
-            s, ev = _merge(s, ev, new, path.evaluate(new))
+        if refine:
+            _resolve(g)
+        x, sdd, x_mvc, relaxed = g.solve()
+        s = g.s
+        if refine and relaxed.size and attempt < REFINE:   # split where the arrival facets fail
+            nb = np.setdiff1d(np.clip(np.concatenate([relaxed - 1, relaxed + 1]), 0,
+                                      len(s) - 2), relaxed)
+            parts = [(relaxed, SPLIT_INTO ** 2), (nb, SPLIT_INTO)]
+            g.insert(np.concatenate([(s[ks, None] + np.diff(s)[ks, None]
+                                      * (np.arange(1, n) / n)).ravel() for ks, n in parts]))
             continue
-        mid, ev_mid, excess = _between(model, path, s, x, sdd, th, w, split, prm, cache)
-        cache = (mid, ev_mid)
+        mid, ev_mid, excess = g.between(x, sdd)
         over = np.flatnonzero(excess > BETWEEN_TOL)
+        if not over.size or not refine:
+            profile, traj, sample_excess, interval = g.samples(x, sdd, period)
         if not over.size:
+            over = np.unique(interval[sample_excess > SAMPLE_TOL])
+        if not over.size or not refine:
             break
         if attempt == ROUNDS or len(s) + over.size > GRID_MAX:
-            k = int(over[np.argmax(excess[over])])
-            raise PlanError(f"the torques exceed tau_max by {100 * excess[k]:.3g} % between "
-                            f"the grid points s = {s[k]:.6g} and {s[k + 1]:.6g} m (at "
-                            f"{_at({'p': ev_mid[0]}, mid, k)}) after {attempt} refinements "
-                            f"({len(s)} grid points): the limits cannot be held there within "
-                            f"{100 * BETWEEN_TOL:g} % on a grid of at most {GRID_MAX} points")
-        s, ev = _merge(s, ev, mid[over], tuple(e[over] for e in ev_mid))   # halve them
-    sdot = np.sqrt(x)
-    t = grid_times(s, sdot)
+            _unresolved(s, mid, ev_mid, excess, over, attempt)
+        g.insert(mid[over], tuple(e[over] for e in ev_mid))   # halve them
+    sdot = profile.sdot
     K, n = len(s), model.n_legs
     outs = (np.empty((K, 2)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
     sdd_pt = np.concatenate([sdd[:-1], sdd[-2:-1]])
-    model.function("path_torques").map(K, stage, sdot, sdd_pt, prm, w, *outs)
+    model.function("path_torques").map(K, g.stage, sdot, sdd_pt, prm, w, *outs)
     tau = outs[1] if split == "min_norm" else outs[2]
-    profile = PathProfile(s, sdot, sdd, t)
-    traj = sample(path, profile, model.spec.sensing["sample_period"])
-    return Plan(path=path, method="time_optimal", split=split, duration=float(t[-1]), s=s,
-                sdot=sdot, sddot=sdd, t=t, max_velocity=np.sqrt(np.maximum(x_mvc, 0.0)),
-                tau=tau, tau_peak=np.abs(tau).max(axis=0), tau_max=w, margin=float(margin),
+    stops = g.stops()
+    return Plan(path=path, method="time_optimal", split=split, duration=profile.duration, s=s,
+                sdot=sdot, sddot=sdd, t=profile.t,
+                max_velocity=np.sqrt(np.maximum(x_mvc, 0.0)), tau=tau,
+                tau_peak=np.abs(tau).max(axis=0), tau_max=w, margin=float(margin),
                 trajectory=traj, compute_time_s=time.perf_counter() - t0,
                 info={"grid": K, "stops": s[stops].tolist(), "theta": th.tolist(),
                       "tau_max_actuators": limits(model, tau_max, 1.0).tolist(),
                       "arrival_relaxed": s[relaxed].tolist(), "refinements": attempt,
-                      "midpoint_excess": float(max(excess.max(), 0.0))})
+                      "midpoint_excess": float(max(excess.max(), 0.0)),
+                      "sample_excess": float(max(sample_excess.max(initial=0.0), 0.0))})

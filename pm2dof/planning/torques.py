@@ -20,14 +20,15 @@ def path_torques(model, path, s, sd, sdd, theta=None, tau_max=None):
     Returns
     -------
     dict
-        ``u`` (K, 2) N; ``min_norm``, ``min_max`` (K, n) N m; ``min_max_ratio`` (K,) (the
+        ``u`` (K, m) N (N m for phi), with the gravity term Ge of a model with gravity;
+        ``min_norm``, ``min_max`` (K, n) N m; ``min_max_ratio`` (K,) (the
         min-max split's max_i |tau_i| / tau_max,i; ``tau_max`` default ``[limits]``).
     """
     th = np.ascontiguousarray(model.theta_nominal if theta is None else theta, dtype=float)
     w = np.ascontiguousarray(model.spec.limits["tau_max"] if tau_max is None else tau_max,
                              dtype=float)
     s, sd, sdd = (np.ascontiguousarray(a, dtype=float).ravel() for a in (s, sd, sdd))
-    K, n = len(s), model.n_legs
+    K, n, m = len(s), model.n_legs, model.dof
     p, dp, ddp = path.evaluate(s)
     q = np.empty((K, 2 * n))
     model.function("ik").map(K, np.ascontiguousarray(p), q)
@@ -36,15 +37,19 @@ def path_torques(model, path, s, sd, sdd, theta=None, tau_max=None):
         raise PlanError(f"s = {s[k]:.6g} m, point {p[k].tolist()} is out of reach")
     v = np.ascontiguousarray(dp * np.maximum(sd, REST)[:, None])
     acc = np.ascontiguousarray(dp * sdd[:, None] + ddp * (sd * sd)[:, None])
-    Me, Ce, F = np.empty((K, 4)), np.empty((K, 4)), np.empty((K, 2))
+    Me, Ce, F = np.empty((K, m * m)), np.empty((K, m * m)), np.empty((K, m))
     model.function("Me").map(K, q, th, Me, None)
     model.function("Ce").map(K, q, v, th, Ce, None)
     model.function("StF").map(K, q, v, th, F, None)
-    u = np.einsum("kij,kj->ki", Me.reshape(K, 2, 2), acc) \
-        + np.einsum("kij,kj->ki", Ce.reshape(K, 2, 2), v * (sd > 0)[:, None]) + F
+    u = np.einsum("kij,kj->ki", Me.reshape(K, m, m), acc) \
+        + np.einsum("kij,kj->ki", Ce.reshape(K, m, m), v * (sd > 0)[:, None]) + F
+    if getattr(model.spec, "has_gravity", False):       # eq. 10's gravity term (issue 26)
+        G = np.empty((K, m))
+        model.function("Ge").map(K, q, th, G, None)
+        u += G
     u = np.ascontiguousarray(u)
     outs = (np.empty((K, n)), np.empty((K, n)), np.empty(K), np.empty((K, n)), np.empty(K),
-            np.empty((K, 2)))
+            np.empty((K, 2)))                         # the last: the two singularity measures
     ctl = model.spec.control
     model.function("torque_splits").map(K, q, u, w, np.asarray(ctl["preload_sign"], float),
                                         np.asarray(ctl["preload"], float), *outs)

@@ -5,7 +5,9 @@
 * :mod:`.control` -- the controller steps, truth plant, encoder and rollout.
 
 Never used at run time: clarity over speed (a reference step is ~10^4 times slower than
-the C). Imports NumPy and :mod:`pm2dof.core.layout` only.
+the C). Imports NumPy, :mod:`pm2dof.core.layout` and :mod:`pm2dof.core.task` only. RR legs
+meeting at a point only: :meth:`.model.Geometry.of_model` refuses other mechanisms
+(UnsupportedMechanismError).
 """
 from . import control
 from .model import (A, C, Ce, Geometry, H, M, Me, S, W, Wdot, Y, fk, forward_dynamics,

@@ -149,7 +149,7 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
             Y = np.empty((K, len(traj.t), ylay.size))
         f.accumulate_batch(X, u, P, Y)
         Yf = ylay.unpack(Y.reshape(K * len(traj.t), ylay.size))
-        xe = Yf["xe"].reshape(K, -1, 2)
+        xe = Yf["xe"].reshape(K, -1, model.dof)
         tau = Yf["tau_a"].reshape(K, -1, model.n_legs)
         status = Yf["status"].reshape(K, -1)
         th = Yf["theta_hat"].reshape(K, len(traj.t), -1)
@@ -176,8 +176,9 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
 def _metrics(out, rows, xd, xe, tau, status, n_move, n_ok):
     """SimResult's metrics, one row per rollout: rmse (eq. 41) and max |e| over the move's
     samples, m (``inf`` for a run that did not complete: ``diverged``); peak |tau_a| N*m and
-    the status counts over the samples the run completed (the first ``n_ok`` (K,))."""
-    e = xd[:n_move] - xe[:, :n_move]
+    the status counts over the samples the run completed (the first ``n_ok`` (K,)). The error
+    is the position's (x, y), as :attr:`pm2dof.SimResult.rmse` (a platform's phi left out)."""
+    e = xd[:n_move, :2] - xe[:, :n_move, :2]
     e2 = np.sum(e * e, axis=-1)
     diverged = n_ok < xe.shape[1]                     # SimResult.outcome != "completed"
     held = np.arange(xe.shape[1]) < n_ok[:, None]     # the samples a SimResult holds
@@ -195,19 +196,30 @@ def check_study(study, model):
     """Everything that needs the model, before any rollout: each controller variant is accepted
     by its controller, each move is reachable and clear of both singularity kinds. Raises
     :class:`StudyFileError` listing every refused variant and move (``[[controllers]]`` and
-    ``study.moves`` entries numbered from 1)."""
-    from ..core.errors import SingularityError, WorkspaceError
-    from ..core.validate import Problems, entry
-    from ..control.trajectory import TrajectoryError
+    ``study.moves`` entries numbered from 1). :func:`pm2dof.studies.read_study` makes these
+    checks too, in the same pass as the file's own."""
+    from ..core.validate import Problems
     from .spec import StudyFileError
     pr = Problems(study.path, StudyFileError)
-    entries = list(dict.fromkeys(v.name for v in study.variants))   # one name per [[controllers]]
+    model_problems(pr, model, study.variants, study.moves)
+    pr.raise_if_any()
+
+
+def model_problems(pr, model, variants, moves):
+    """Record in ``pr`` (a :class:`~pm2dof.core.validate.Problems`) every controller variant
+    its controller refuses and every move that is unreachable or singular on ``model``.
+    ``variants`` None: the [[controllers]] entries had problems of their own (not checked)."""
+    from ..core.errors import SingularityError, WorkspaceError
+    from ..core.validate import entry
+    from ..control.trajectory import TrajectoryError
+    T = model.spec.sensing["sample_period"]
     try:   # an LQR variant is checked on the first move (a bad move is reported below)
-        first = make_trajectory(model, study.moves[0], model.spec.sensing["sample_period"])
+        first = make_trajectory(model, moves[0], T)
         check_trajectory(model, first)
     except (WorkspaceError, SingularityError, TrajectoryError):
         first = None
-    for v in study.variants:
+    entries = list(dict.fromkeys(v.name for v in variants or ()))   # one per [[controllers]]
+    for v in variants or ():
         if v.law == "lqr" and first is None:
             continue
         try:
@@ -216,9 +228,8 @@ def check_study(study, model):
             point = f"at grid point {dict(v.grid)}: " if v.grid else ""
             pr.add(entry("controllers", f"entry {entries.index(v.name) + 1}, {v.name!r}"),
                    f"{point}{exc}")
-    for i, mv in enumerate(study.moves):
+    for i, mv in enumerate(moves):
         try:
-            check_trajectory(model, make_trajectory(model, mv, model.spec.sensing["sample_period"]))
+            check_trajectory(model, make_trajectory(model, mv, T))
         except (WorkspaceError, SingularityError, TrajectoryError) as exc:
             pr.add(entry("study.moves", f"entry {i + 1}, {mv[0]!r}"), str(exc))
-    pr.raise_if_any()

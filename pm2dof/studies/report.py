@@ -215,7 +215,7 @@ def run_report(out, *, as_json=False, echo=print):
 
     Returns (summary dict, {column: ndarray}, study.json dict) for the figures."""
     from pathlib import Path
-    from ..analysis.results import dumps, write_json
+    from ..infra.results import dumps, write_json
     from .spec import GRID_KEYS, StudyFileError
     info, table = read_results(out)
     cols = columns_of(table)

@@ -15,10 +15,10 @@ import signal
 import threading
 import time
 
-from ..analysis.progress import Progress
-from ..analysis.progress import bar as progress_bar
 from ..core.errors import ArgumentError, Pm2dofError
 from ..core.model import load_model
+from ..infra.progress import Progress
+from ..infra.progress import bar as progress_bar
 from .evaluate import check_study, run_chunk
 from .store import finish_out, prepare_out, write_chunk
 
@@ -105,6 +105,8 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
 
     Parameters
     ----------
+    study : Study
+        The study (:func:`~pm2dof.studies.spec.read_study`).
     out : path
         Output folder (created); a rerun with the same study skips its finished chunks.
     workers : int, optional
@@ -114,9 +116,13 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
         generated code, and the model file at the same path.
     client : distributed.Client, optional
         Use this client (not closed here) instead of ``workers`` / ``scheduler``.
-    progress : bool or pm2dof.analysis.progress.Progress
+    timeout : float
+        Seconds to wait for the scheduler and its first worker (StudyRunError after that).
+    progress : bool or pm2dof.infra.progress.Progress
         True: a bar on stderr when it is a terminal (rollouts done, the rate since the first
         task, ETA), nothing otherwise; a Progress: its bar; False: none.
+    echo : callable(str)
+        Where the lines saying what runs go (default ``print``).
 
     Returns
     -------

@@ -304,7 +304,7 @@ class Study:
 
     def canonical(self):
         """What defines the rows (not the file's comments or layout): JSON-able dict."""
-        return {"name": self.name, "model_sha256": _sha(Path(self.model_path)),
+        return {"name": self.name, "model_values": model_values(self.model_path),
                 "moves": self.moves, "seed": self.seed, "draws": self.draws, "runs": self.runs,
                 "chunk": self.chunk, "settle_time": self.settle_time, "quantise": self.quantise,
                 "variants": [(v.name, v.law, v.options) for v in self.variants],
@@ -317,8 +317,12 @@ class Study:
         return hashlib.sha256(json.dumps(self.canonical(), sort_keys=True).encode()).hexdigest()
 
 
-def _sha(p):
-    return hashlib.sha256(p.read_bytes()).hexdigest()
+def model_values(path):
+    """{table: sha256} of a model file's values, per top-level table (``[plant]``, ``[[legs]]``,
+    ...): what enters a study's rows. Comments, layout and the order of keys do not count."""
+    d = tomllib.loads(Path(path).read_text(encoding="utf-8"))
+    return {k: hashlib.sha256(json.dumps(v, sort_keys=True, default=str).encode()).hexdigest()
+            for k, v in sorted(d.items())}
 
 
 def resolve_study(ref):
@@ -329,28 +333,21 @@ def resolve_study(ref):
     return Path(s).expanduser()
 
 
-def read_study(path, quick=False):
+def read_study(path, quick=False, *, model=None, generated=None, check=True):
     """Read and validate a study file (TOML), or a shipped study by name (``"robustness"``).
     ``quick``: apply its ``[quick]`` table.
 
     Paths in the file (``study.model``, ``study.generated``) are relative to the study file's
-    folder. Raises
+    folder; ``model`` and ``generated`` (``--model``, ``--generated``) replace them. Raises
     :class:`StudyFileError` listing every problem of the file, each naming the key and the
-    reason. Checks that need the model (moves reachable and clear of singularities, gains
-    accepted by the controllers) are made by :func:`pm2dof.studies.check_study`.
+    reason, in one pass: with ``check``, also those that need the model (moves reachable and
+    clear of singularities, gains accepted by the controllers:
+    :func:`pm2dof.studies.evaluate.model_problems`) once the model loads.
     """
     path = resolve_study(path)
     pr = Problems(path, StudyFileError)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        pr.stop(None, f"cannot read the study file: {exc.strerror}")
-    except UnicodeDecodeError as exc:
-        pr.stop(None, f"not a text (UTF-8) file: {exc.reason} at byte {exc.start}")
-    try:
-        doc = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        pr.stop(None, f"not valid TOML: {exc}")
+    raw, doc = pr.read_toml("study file")
+    text = raw.decode("utf-8")
     pr.keys("", doc, _TOP_KEYS)
     q = pr.table("quick", doc.get("quick"), required=False) or {}
     pr.keys("quick", q, _QUICK_KEYS)
@@ -362,6 +359,12 @@ def read_study(path, quick=False):
     variants = _variants(pr, doc.get("controllers"), grid_points)
     payload_change = _payload_change(pr, doc.get("payload_change"), fields.get("runs"),
                                      quick and "runs" in q)
+    if model is not None:
+        fields["model_path"] = _model_path(pr, Path.cwd(), str(model), "--model")
+    if generated is not None:
+        fields["generated_path"] = str(Path(generated).expanduser().resolve())
+    if check:
+        _check_with_model(pr, fields, variants)
     pr.raise_if_any()
     return Study(path=str(path.resolve()), text=text, **fields, variants=variants,
                  uncertainty=uncertainty, payload_change=payload_change, quick=bool(quick))
@@ -386,7 +389,7 @@ def _study_table(pr, path, st, q):
     if "name" in st:
         out["name"] = pr.text(at("name"), st["name"], nonempty=True)
     if "model" in st:
-        out["model_path"] = _model_path(pr, path, st["model"])
+        out["model_path"] = _model_path(pr, path.parent, st["model"])
     if "generated" in st and pr.text(at("generated"), st["generated"], nonempty=True):
         out["generated_path"] = str((path.parent / Path(st["generated"]).expanduser()).resolve())
     if "moves" in st:
@@ -398,18 +401,37 @@ def _study_table(pr, path, st, q):
     return out
 
 
-def _model_path(pr, path, ref):
-    """study.model: a shipped model's name or a path relative to the study file's folder."""
-    if pr.text("study.model", ref, nonempty=True) is None:
+def _model_path(pr, folder, ref, key="study.model"):
+    """study.model: a shipped model's name or a path relative to the study file's ``folder``
+    (``--model``: to the working directory)."""
+    if pr.text(key, ref, nonempty=True) is None:
         return None
     try:
-        model_path = resolve_model(ref, relative_to=path.parent).resolve()
+        model_path = resolve_model(ref, relative_to=folder).resolve()
     except ModelFileError as exc:
-        return pr.add("study.model", str(exc))
+        return pr.add(key, str(exc))
     if not model_path.is_file():
-        return pr.add("study.model", f"no model file at {model_path} (a shipped model's name, "
+        return pr.add(key, f"no model file at {model_path} (a shipped model's name, "
                       f"or a path relative to the study file's folder)")
     return str(model_path)
+
+
+def _check_with_model(pr, fields, variants):
+    """The checks that need the model, into the same collector: moves (unless study.moves
+    had problems of its own) and controller variants (unless [[controllers]] had)."""
+    keys = [str(p.key) for p in pr.found]
+    if not fields.get("model_path") or not fields.get("moves") or any(
+            k.startswith("study.moves") for k in keys):
+        return
+    from ..core.errors import Pm2dofError
+    from ..core.model import load_model
+    from .evaluate import model_problems
+    try:
+        model = load_model(fields["model_path"], fields.get("generated_path"))
+    except Pm2dofError as exc:
+        return pr.add("study.model", str(exc))
+    ok = variants is not None and not any(k.startswith("controllers") for k in keys)
+    model_problems(pr, model, variants if ok else None, fields["moves"])
 
 
 def _uncertainty(pr, unc):

@@ -16,11 +16,11 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 
-from ..analysis.results import provenance, write_atomic, write_json
 from ..core.errors import Pm2dofError
+from ..infra.results import provenance, write_atomic, write_json
 from .spec import StudyFileError
 
-__all__ = ["StudyOutError", "prepare_out", "write_chunk", "finish_out",
+__all__ = ["StudyOutError", "prepare_out", "write_chunk", "finish_out", "changed_inputs",
            "read_results", "chunk_path"]
 
 _NULLABLE = ("theta_error",)   # null where it does not apply (APD) or the rollout diverged
@@ -59,9 +59,11 @@ def prepare_out(out, study, model):
                                 f"folder") from None
         if old.get("identity") != study.identity and have:
             raise StudyOutError(
-                f"--out {out} holds {len(have)} chunk(s) of another study ({old.get('name')!r}, "
-                f"from {old.get('study_file')}); the study file, its [quick] choice or the model "
-                f"file differ. Use an empty --out, or delete {out} to start over")
+                f"--out {out} holds {len(have)} chunk(s) of "
+                f"{'this study' if old.get('study_file') == study.path else 'another study'} "
+                f"({old.get('name')!r}, from {old.get('study_file')}) made with other inputs: "
+                f"{changed_inputs(old.get('inputs'), study.canonical())}. Use an empty --out, "
+                f"or delete {out} to start over")
     elif have:
         raise StudyOutError(f"--out {out} holds results but no study.json; use an empty folder")
     for tmp in results.glob(".chunk-*"):      # an interrupted write
@@ -77,11 +79,32 @@ def prepare_out(out, study, model):
             raise StudyOutError(f"{p} belongs to another study; use an empty --out")
         done.add(int(p.stem.split("-")[1]))
     write_json(meta, {"name": study.name, "identity": study.identity,
+                      "inputs": study.canonical(),
                       "study_file": study.path, "study_text": study.text, "quick": study.quick,
                       "rollouts": study.n_rollouts, "chunks": study.n_chunks,
                       "runs": study.runs, "payload_change": study.payload_change,
                       "complete": False, "rows": None, "provenance": provenance(model)})
     return done
+
+
+def changed_inputs(old, new):
+    """What differs between two studies' inputs (:meth:`Study.canonical`), in words."""
+    if not isinstance(old, dict):
+        return ("the study file, its [quick] choice or the model file's values differ (the "
+                "folder's study.json does not record which)")
+    out = []
+    for k in sorted(set(old) | set(new)):
+        a, b = old.get(k), json.loads(json.dumps(new.get(k)))
+        if a == b:
+            continue
+        if k == "model_values" and isinstance(a, dict):
+            tables = sorted(t for t in set(a) | set(b) if a.get(t) != b.get(t))
+            out.append("the model file's values in " + ", ".join(f"[{t}]" for t in tables))
+        elif k == "quick":
+            out.append(f"the [quick] choice ({a} then, {b} now)")
+        else:
+            out.append(f"the study's {k} ({a!r} then, {b!r} now)")
+    return "; ".join(out) or "the study's inputs"
 
 
 def _table(columns, study):

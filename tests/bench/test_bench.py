@@ -90,6 +90,26 @@ def test_targets_and_machine(results):
     assert m["python"] and m["compiler_flags"] and m["cores"] >= 1
 
 
+def test_refined_plans_beside_unrefined_ones_and_toppra(results):
+    """Issue 25 section 3: refined plans on the model's fastest move, a half circle, the
+    spline of issue 28 and both shipped paths, both splits, with and without friction, timed
+    beside an unrefined plan of the same final grid and (friction-free) toppra; the worst
+    ratios are the targets' values."""
+    rows = results["plan_paths"]
+    assert set(rows) == {"line", "half_circle", "spline", "pick_and_place", "curve"}
+    cases = [c for r in rows.values() for c in r.values()]
+    assert len(cases) == 20 and results["plan_refined_cases"] >= 8
+    for c in cases:
+        assert _positive_finite(c["refined_ms"]) and _positive_finite(c["unrefined_ms"])
+        assert c["grid"] >= 1000
+    worst = max(c["refined_over_unrefined"] for c in cases if c["refinements"])
+    assert results["plan_refined_over_unrefined_max"] == worst
+    if results["toppra_ms"] is not None:
+        speed = [c["speedup_vs_toppra"] for c in cases if c["toppra_ms"] is not None]
+        assert len(speed) == 10 and results["speedup_vs_toppra_min"] == min(speed)
+    assert "refined / unrefined of that grid" in bench.format_bench(results)
+
+
 def test_json_and_format(results):
     text = json.dumps({k: v for k, v in results.items() if k != "_messages"})
     assert "na_step_c_ns" in text

@@ -172,7 +172,7 @@ def test_a_missing_extra_is_named(tmp_path):
 
 
 def test_provenance_records_version_model_file_and_generated_folder():
-    from pm2dof.analysis.results import provenance
+    from pm2dof.infra.results import provenance
     m = pm2dof.load_model("fivebar")
     p = provenance(m)
     assert p["pm2dof"] == pm2dof.__version__ and p["model_shipped"] is True

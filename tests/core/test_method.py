@@ -110,7 +110,9 @@ def test_several_outputs_come_back_as_the_kind(m):
     assert type(J).__name__ == "ForwardDynamicsJacobians" and J.d_tau_a.shape == (2, m.n_legs)
     again = m.forward_dynamics_jacobians(*_args(m), out=J)
     assert again is J
-    ref = m._eval_jacobians("forward_dynamics_jacobians", type(J), None, _args(m))
+    n, p = m.n_legs, len(m.param_names)
+    ref = m._eval_jacobians("forward_dynamics_jacobians", type(J),
+                            ((2, 2), (2, 2), (2, n), (2, p)), None, _args(m))
     assert all(np.array_equal(a, b) for a, b in zip(J, ref, strict=True))
 
 

@@ -24,7 +24,7 @@ from pm2dof.studies.spec import GRID_KEYS
 
 
 TOL = 1.0        # px
-PNG_DPI = 110    # pm2dof.analysis.results.save_figure
+PNG_DPI = 110    # pm2dof.infra.results.save_figure
 
 
 # --------------------------------------------------------------------------------------

@@ -1,8 +1,8 @@
-# pm2dof identify's sub-commands: old flags named, one pipeline, files naming their model by path.
+# pm2dof identify's sub-commands: one pipeline, files naming their model by path.
 """The command line of identification (issue 19) and the model its files record (issue 18).
 
-* Every flag that chose a mode of ``pm2dof identify`` fails with one line naming the
-  sub-command that replaced it (exit 2); each sub-command has its own help with an example.
+* ``pm2dof identify`` without a sub-command fails with one line naming them (exit 2); each
+  sub-command has its own help with an example.
 * One pipeline: ``fit`` without a log is the fit of the same simulated log written to a file.
 * A log (``excite``) and an excitation file record their model: a shipped model by name, a
   model file by its path relative to themselves. ``fit`` and ``excite`` use it when no
@@ -27,37 +27,15 @@ from pm2dof.identification.log import IdentLog, read_log, write_log
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
 
-OLD_FLAGS = {
-    ("--report",): "pm2dof identify --report was replaced by: pm2dof identify report",
-    ("--excite", "--out", "run.csv"):
-        "pm2dof identify --excite was replaced by: pm2dof identify excite --out LOG",
-    ("--data", "run.csv", "--save", "theta.json"):
-        "pm2dof identify --data was replaced by: pm2dof identify fit LOG",
-    ("--design-excitation", "--out", "exc.toml"):
-        "pm2dof identify --design-excitation was replaced by: pm2dof identify design --out FILE",
-    ("--monte-carlo", "50", "--excitation", "exc.toml"):
-        "pm2dof identify --monte-carlo was replaced by: pm2dof identify monte-carlo N",
-    ("--model", "fivebar", "--report"):
-        "pm2dof identify --report was replaced by: pm2dof identify report",
-    (): "pm2dof identify needs a sub-command: report, excite, fit, design or monte-carlo "
-        "(plain `pm2dof identify` was replaced by: pm2dof identify report, and pm2dof identify "
-        "fit)",
-}
+NO_SUBCOMMAND = ("pm2dof identify needs a sub-command: report, excite, fit, design or "
+                 "monte-carlo (plain `pm2dof identify` was replaced by: pm2dof identify report, "
+                 "and pm2dof identify fit)")
 
 
-@pytest.mark.parametrize("argv", list(OLD_FLAGS), ids=lambda a: " ".join(a) or "plain")
-def test_old_flags_name_the_new_command(argv, capsys):
-    assert cli.main(["identify", *argv]) == 2
+def test_identify_without_a_sub_command_names_them(capsys):
+    assert cli.main(["identify"]) == 2
     out, err = capsys.readouterr()
-    assert out == "" and err == f"pm2dof: error: {OLD_FLAGS[argv]}\n"
-
-
-def test_old_flag_is_one_line_and_exit_2_from_the_shell():
-    r = subprocess.run([sys.executable, "-m", "pm2dof", "identify", "--data", "run.csv"],
-                       capture_output=True, text=True, timeout=120)
-    assert r.returncode == 2 and r.stdout == ""
-    assert r.stderr == ("pm2dof: error: pm2dof identify --data was replaced by: pm2dof identify "
-                        "fit LOG\n")
+    assert out == "" and err == f"pm2dof: error: {NO_SUBCOMMAND}\n"
 
 
 @pytest.mark.parametrize("sub", ["report", "excite", "fit", "design", "monte-carlo"])

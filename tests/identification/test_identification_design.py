@@ -14,7 +14,7 @@ from pm2dof.identification.design import (IPOPT_OPTIONS, ExcitationError,
                                                load_excitation, objective_logdet, random_start,
                                                regressor_condition, sample_function,
                                                trajectory_of, write_excitation)
-from pm2dof.analysis.progress import Progress
+from pm2dof.infra.progress import Progress
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.excitation import multisine
 from pm2dof.identification.log import read_log
@@ -245,3 +245,46 @@ def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
                                         m.parallel_singularity_threshold)
                            + info["singularity_margin"], radius=info["radius"])
     assert chk["ok"], chk
+
+
+def test_ctrl_c_during_design_writes_nothing_and_exits_130(tmp_path):
+    """IPOPT catches SIGINT and returns User_Requested_Stop: the design used to write that
+    half-made excitation and exit 0 (issue 28)."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+    out = tmp_path / "exc.toml"
+    env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
+    p = subprocess.Popen([sys.executable, "-m", "pm2dof", "identify", "design", "--out", str(out)],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    err = ""
+    while "IPOPT:" not in err:                  # the stage line printed as IPOPT starts
+        line = p.stderr.readline()
+        assert line, "the design ended before IPOPT started"
+        err += line
+    time.sleep(3.0)
+    p.send_signal(signal.SIGINT)
+    stdout, rest = p.communicate(timeout=300)
+    assert p.returncode == 130, (stdout, rest)
+    assert not out.exists() and not list(tmp_path.iterdir())
+    assert rest.strip().splitlines()[-1].startswith("pm2dof: interrupted (IPOPT stopped after ")
+    assert rest.strip().splitlines()[-1].endswith(f"{out} not written)")
+    assert "wrote" not in stdout
+    assert "WARNING" not in rest and "Traceback" not in rest, rest   # CasADi printed one
+
+
+def test_not_met_stands_next_to_the_limit_that_failed(tmp_path, m, monkeypatch, capsys):
+    """The shipped excitation reaches 58.8 mm from c0: with a 30 mm region that limit fails,
+    and the printed check says so there (it read as 'does not start at rest')."""
+    from pm2dof.identification import design
+    exc = load_excitation(SHIPPED, m)
+    exc = FourierExcitation(exc.base_hz, exc.periods, exc.center, exc.a, exc.b,
+                            {**exc.info, "radius": 0.03})
+    monkeypatch.setattr(design, "design_excitation", lambda *a, **k: exc)
+    design.run_design(m, tmp_path / "e.toml")
+    line = next(ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("checked"))
+    assert re.search(r"\|x - c0\| 58\.\d <= 30\.0 mm NOT MET, starts and ends at rest: "
+                     r"NOT MET: radius$", line), line
+    assert line.count("NOT MET") == 2

@@ -265,7 +265,7 @@ def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, base
     excess): the issue's accuracy targets, and both controllers track better with the result."""
     from pathlib import Path
     from pm2dof.identification.design import load_excitation, trajectory_of
-    from pm2dof.identification.monte_carlo import seeded_table3
+    from pm2dof.analysis.experiment import seeded_table3
     path = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
     log = excite(m, trajectory_of(m, load_excitation(path, m)))
     res = identify_log(m, log, base=base)

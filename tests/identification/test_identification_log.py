@@ -191,3 +191,26 @@ def test_time_in_ms_is_named_against_the_sample_period(tmp_path, good):
     with pytest.raises(LogError, match=r"column t steps 2 s \(median\) but the log's "
                                        r"sample_period is 0.002 s: t must be in s"):
         read_log(_csv(tmp_path, ms))
+
+
+def test_latin1_comment_is_read_and_binary_junk_is_one_line(tmp_path, good, capsys):
+    """Both were a UnicodeDecodeError traceback from read_log and identify fit (issue 28)."""
+    p = write_log(tmp_path / "log.csv", good)
+    raw = p.read_bytes()
+    latin = tmp_path / "latin.csv"
+    latin.write_bytes("# operator = Müller, 25 °C\n".encode("latin-1") + raw)
+    back = read_log(latin)
+    assert back.meta["operator"] == "Müller, 25 °C"
+    assert np.array_equal(back.qa, good.qa)
+    junk = tmp_path / "junk.csv"
+    lines = raw.split(b"\n")
+    k = next(i for i, ln in enumerate(lines) if not ln.startswith(b"#")) + 3
+    lines[k] = b"\x00\xff\xfe" + lines[k]
+    junk.write_bytes(b"\n".join(lines))
+    with pytest.raises(LogError, match=rf"junk.csv: line {k + 1} is not text \(byte 0xff at "
+                                       r"column 2 is not UTF-8\)"):
+        read_log(junk)
+    from pm2dof import cli
+    assert cli.main(["identify", "fit", str(junk)]) != 0
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and len(err.strip().splitlines()) == 1, err

@@ -40,4 +40,18 @@ echo "sdist without extras: pm2dof derive says: $(cat "$tmp/derive.out")"
 grep -q "Robustness study skipped: it needs" "$tmp/demo.out"
 test -s "$tmp/demo/results.json" && test -s "$tmp/demo/move_high_na.gif"
 echo "sdist without extras: pm2dof demo ran (the robustness study skipped, naming the extra)"
+# pm2dof export without the [derive] extra: the generated C is copied, not re-derived. The
+# user's model (derived above in the first venv) is exported, built with warnings as errors and
+# tested (ctest: the C closed loop equals pm2dof.simulate's); a shipped model is exported too.
+"$tmp/venv2/bin/pm2dof" export shang2010 --out "$tmp/export_shang2010" --controllers na,apd
+"$tmp/venv2/bin/pm2dof" export "$tmp/work/myrobot.toml" --out "$tmp/export_myrobot"
+if command -v cmake > /dev/null; then
+    cmake -S "$tmp/export_myrobot" -B "$tmp/export_myrobot/build" -DMYROBOT_PM2DOF_WERROR=ON \
+        > /dev/null
+    cmake --build "$tmp/export_myrobot/build" -j 2 > /dev/null
+    ctest --test-dir "$tmp/export_myrobot/build" --output-on-failure | tail -3
+    echo "sdist without extras: pm2dof export of the user's model builds and passes its ctest"
+else
+    echo "sdist without extras: pm2dof export wrote the projects (no cmake here: not built)"
+fi
 step "install check passed"

@@ -56,7 +56,7 @@ def test_plan_a_path_file_writes_csv_and_figures(tmp_path, capsys):
 def test_plan_csv_says_where_it_came_from(tmp_path, capsys):
     """Provenance in every CSV (issue 18): pm2dof version, model file and its hash, generated
     folder, git commit, tau_max (the actuators' limits), margin, split, theta."""
-    from pm2dof.analysis.results import provenance
+    from pm2dof.infra.results import provenance
     out = tmp_path / "out"
     assert main(["plan", "--move", "high", "--tau-max", "6", "--margin", "0.9", "--grid", "200",
                  "--split", "min_norm", "--out", str(out)]) == 0
@@ -82,10 +82,10 @@ def test_plan_csv_says_where_it_came_from(tmp_path, capsys):
 def test_path_file_errors(tmp_path, capsys):
     bad = tmp_path / "bad.toml"
     cases = {
-        '[[segments]]\nkind = "circle"\n': "segments[0].kind",
-        '[[segments]]\nkind = "line"\nstart = [0.2, 0.2]\n': "segments[0].end: missing",
+        '[[segments]]\nkind = "circle"\n': "[segments.kind (segment 1)] must be one of",
+        '[[segments]]\nkind = "line"\nstart = [0.2, 0.2]\n': "[segments.end (segment 1)] missing",
         '[[segments]]\nkind = "line"\nstart = [0.2, 0.2]\nend = [0.3, 0.2]\nspeed = 1\n':
-            "segments[0].speed: unknown key",
+            "[segments.speed (segment 1)] unknown key",
         '[[segments]]\nkind = "line"\nstart = [0.2, 0.2]\nend = [0.3, 0.2]\n'
         '[[segments]]\nkind = "line"\nstart = [0.3, 0.3]\nend = [0.3, 0.4]\n': "path 1 starts at",
         '[kinematic]\nv_max = -1\n[[segments]]\nkind = "line"\nstart = [0, 0]\nend = [1, 0]\n':
@@ -104,6 +104,29 @@ def test_path_file_errors(tmp_path, capsys):
     assert "moves are" in capsys.readouterr().err
 
 
+def test_path_file_problems_are_counted_from_1_and_listed_at_once(tmp_path):
+    """Path files counted segments from 0 and stopped at the first problem; model and study
+    files count from 1 and list every problem (issue 28): one reader for all three."""
+    from pm2dof.core.errors import InputFileError, PlanError
+    bad = tmp_path / "bad.toml"
+    bad.write_text('colour = "red"\n[kinematic]\nv_max = -1\na_max = 10.0\n'
+                   '[[segments]]\nkind = "line"\nstart = [0.22, 0.29]\nend = [0.27, 0.24]\n'
+                   '[[segments]]\nkind = "circle"\n'
+                   '[[segments]]\nkind = "line"\nstart = [0.2, 0.2]\nspeed = 3\n')
+    with pytest.raises(PlanError) as exc:
+        read_path_file(bad)
+    assert isinstance(exc.value, InputFileError)
+    assert [tuple(p) for p in exc.value.problems] == [
+        ("colour", "unknown key; allowed here: ['kinematic', 'path', 'segments']"),
+        ("kinematic.j_max", "missing (required)"),
+        ("kinematic.v_max", "must be > 0, got -1"),
+        ("segments.kind (segment 2)",
+         "must be one of ['arc', 'line', 'polyline', 'spline'], got 'circle'"),
+        ("segments.speed (segment 3)", "unknown key; allowed here: ['end', 'kind', 'start']"),
+        ("segments.end (segment 3)", "missing (required)")]
+    assert str(exc.value).splitlines()[0] == f"{bad}: 6 problems:"
+
+
 def test_shipped_paths_read():
     for name in shipped_paths():
         r = read_path_file(name)
@@ -118,7 +141,7 @@ def test_both_splits_report_the_feasible_one(tmp_path, capsys):
     row = json.loads(capsys.readouterr().out)["paths"][0]
     assert "Coulomb friction" in row["min_norm"]["infeasible"]
     assert row["min_max"]["duration_s"] > 1.0
-    assert max(row["min_max"]["tau_peak"]) <= 0.5 * (1 + 1e-6)
+    assert max(row["min_max"]["tau_peak_N_m"]) <= 0.5 * (1 + 1e-6)
     assert "saving_min_max_percent" not in row
     assert sorted(p.name for p in tmp_path.glob("*.csv")) == ["plan_high_kinematic.csv",
                                                               "plan_high_min_max.csv"]

@@ -18,13 +18,16 @@ from pm2dof.planning import TaskPath, plan_time_optimal
 from pm2dof.planning.pathfile import read_path_file
 from pm2dof.derive.planning import MVC_BISECTIONS
 from pm2dof.planning.stages import V_TOP, grid_points, limits, params, stages
-from pm2dof.planning.topp import BETWEEN_TOL, RESOLUTION, _check_forward, solve_profile
+from pm2dof.planning.grid import _check_forward
+from pm2dof.planning.topp import BETWEEN_TOL, RESOLUTION, solve_profile
 from pm2dof.planning.torques import plan_torques
 
 PATHS = {"line": TaskPath.line([0.22, 0.29], [0.27, 0.24]),            # the paper's line
          "arc": TaskPath.arc([0.245, 0.265], 0.04, -0.5, 1.5),
          "pick_and_place": read_path_file("pick_and_place")["path"],
-         "curve": read_path_file("curve")["path"]}
+         "curve": read_path_file("curve")["path"],
+         # issue 28 item 11: a user's spline (coarse grids were not ordered on it)
+         "spline28": TaskPath.spline([(0.18, 0.20), (0.22, 0.13), (0.27, 0.21), (0.31, 0.15)])}
 GRIDS = (2, 3, 4, 6, 10, 20, 40, 100, 250, 1000)
 #: between the grid points: the planner holds every interval's midpoint to BETWEEN_TOL (1e-3)
 #: of tau_max; elsewhere in an interval this sweep measures at most 1.1e-3 (10 points per
@@ -91,7 +94,7 @@ def test_a_forward_failure_names_the_condition_that_failed():
     h, mvc = np.ones(2), np.ones(3)
     ok = dict(x=np.array([0.0, 0.5, 0.0]), sdd=np.array([2.5, -2.5]), L=np.array([-9.0, -9.0]),
               U=np.array([9.0, 9.0]), Z=np.array([1.0, 1.0]))
-    _check_forward(coef, s, h=h, x_mvc=mvc, **ok)                        # consistent: silent
+    _check_forward(coef["p"], s, h=h, x_mvc=mvc, **ok)                        # consistent: silent
     cases = [(dict(x=np.array([0.0, 0.5, -0.1])), r"lands at s_d\^2 = -0.1 < 0 at s = 0.2 m"),
              (dict(sdd=np.array([2.5, -9.5])), r"s_dd = -9.5 m/s\^2 is outside its feasible "
                                                r"interval \[-9, 9\]"),
@@ -99,7 +102,7 @@ def test_a_forward_failure_names_the_condition_that_failed():
              (dict(Z=np.array([1.0, -0.25])), r"parallel to the path.s acceleration .* \(by 0.25 N\)")]
     for change, match in cases:
         with pytest.raises(pm2dof.PlanError, match=match) as e:
-            _check_forward(coef, s, h=h, x_mvc=mvc, **{**ok, **change})
+            _check_forward(coef["p"], s, h=h, x_mvc=mvc, **{**ok, **change})
         assert "interval leaving s = " in str(e.value)
 
 

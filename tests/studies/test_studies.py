@@ -131,7 +131,7 @@ def test_not_toml_and_missing_file(tmp_path):
 def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any_rollout(tmp_path):
     far = BASE.replace('moves = ["high"]', 'moves = ["high", {name = "far", start = [0.24, 0.27], '
                        'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
-    s = read_study(_write(tmp_path, far))
+    s = read_study(_write(tmp_path, far), check=False)
     m = pm2dof.load_model(MODEL)
     with pytest.raises(StudyFileError, match=r"\[study\.moves \(entry 2, 'far'\)\] trajectory sample "
                        r"\d+ .*(singularity|reach)"):
@@ -146,14 +146,33 @@ def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any
     text = BASE.replace(str(MODEL), str(five)).replace(
         'moves = ["high"]', 'moves = [{name = "across", start = [0.4366773, 0.19502559], '
         'end = [0.274602, 0.000219374], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
-    s = read_study(_write(tmp_path, text, "five.toml"))
+    s = read_study(_write(tmp_path, text, "five.toml"), check=False)
     with pytest.raises(StudyFileError, match=r"\[study\.moves \(entry 1, 'across'\)\] trajectory sample "
                        r"\d+ .*(assembly mode|singular)"):
         check_study(s, pm2dof.load_model(five))
     bad = read_study(_write(tmp_path, BASE.replace('law = "apd"', 'law = "apd"\nsplit = "fair"'),
-                            "bad.toml"))
+                            "bad.toml"), check=False)
     with pytest.raises(StudyFileError, match=r"\[controllers \(entry 1, 'apd'\)\] split must be one of"):
         check_study(bad, m)
+
+
+def test_the_file_and_the_model_checks_in_one_pass(tmp_path, capsys):
+    """A study file's own problems came first, and those that need the model (an unreachable
+    move, a split the controller refuses) only after they were fixed: 6 problems, then 2 more
+    (issue 28). Now one error lists them all, entries numbered from 1."""
+    text = (BASE.replace("draws = 3", "draws = 0")
+            .replace('moves = ["high"]', 'moves = ["high", {name = "far", start = [0.24, 0.27], '
+                     'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
+            .replace('law = "apd"', 'law = "apd"\nsplit = "fair"'))
+    p = _write(tmp_path, text)
+    with pytest.raises(StudyFileError) as exc:
+        read_study(p)
+    keys = [pr.key for pr in exc.value.problems]
+    assert keys == ["study.draws", "controllers (entry 1, 'apd')", "study.moves (entry 2, 'far')"]
+    from pm2dof import cli
+    assert cli.main(["study", "run", str(p), "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert f"{p}: 3 problems:" in err and not (tmp_path / "out").exists()
 
 
 def test_every_problem_of_a_study_file_in_one_error(tmp_path):
@@ -214,7 +233,7 @@ def test_check_study_lists_every_refused_variant_and_move_by_its_entry(tmp_path)
                         'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]').replace(
         'law = "apd"', 'law = "apd"\nKp = {grid = [30000.0, 35000.0, 40000.0]}\n\n'
         '[[controllers]]\nname = "na"\nlaw = "na"\nsplit = "fair"')
-    s = read_study(_write(tmp_path, text))
+    s = read_study(_write(tmp_path, text), check=False)
     assert [v.name for v in s.variants] == ["apd", "apd", "apd", "na"]
     with pytest.raises(StudyFileError) as exc:
         check_study(s, pm2dof.load_model(MODEL))
@@ -336,7 +355,8 @@ def test_out_folder_resume_refusal_and_unwritable(tmp_path):
     assert not list((out / "results").glob(".chunk-*"))
     assert finish_out(out, s) == len(s.chunk_units(2)) * s.runs
     other = dataclasses.replace(s, seed=s.seed + 1)
-    with pytest.raises(StudyOutError, match=r"holds 1 chunk\(s\) of another study"):
+    with pytest.raises(StudyOutError, match=r"holds 1 chunk\(s\) of this study .* the study's "
+                                            r"seed"):
         prepare_out(out, other, m)
     blocker = tmp_path / "a_file"
     blocker.write_text("x")
@@ -344,6 +364,32 @@ def test_out_folder_resume_refusal_and_unwritable(tmp_path):
         prepare_out(blocker / "sub", s, m)
     with pytest.raises(StudyFileError, match="no study.json"):
         read_results(tmp_path / "empty")
+
+
+def test_resume_follows_the_values_not_the_bytes_and_names_the_change(tmp_path):
+    """A comment added to the model file blocked resuming, and the message called the study's
+    own file 'another study' (issue 28). The identity is the model file's parsed values."""
+    s0 = read_study(STUDIES / "robustness.toml", quick=True)
+    model_file = tmp_path / "robot.toml"
+    model_file.write_text(Path(s0.model_path).read_text())
+    m = pm2dof.load_model(s0.model_path)                 # (for the provenance only)
+    s = dataclasses.replace(s0, model_path=str(model_file))
+    assert s.identity == s0.identity                     # the same values: the same rows
+    out = tmp_path / "out"
+    prepare_out(out, s, m)
+    write_chunk(out, 0, run_chunk(s0, 0), s)
+    model_file.write_text("# operator's note: same robot\n" + model_file.read_text() + "\n# end\n")
+    assert prepare_out(out, s, m) == {0}                 # resumed: the values are the same
+    text = model_file.read_text()
+    i = text.index("[plant]")
+    j = text.index("payload_mass", i)
+    k = text.index("\n", j)
+    model_file.write_text(text[:j] + "payload_mass = 0.123" + text[k:])
+    with pytest.raises(StudyOutError, match=r"holds 1 chunk\(s\) of this study .* other inputs: "
+                                            r"the model file's values in \[plant\]\. Use"):
+        prepare_out(out, s, m)
+    with pytest.raises(StudyOutError, match=r"the study's seed \(\d+ then, \d+ now\)"):
+        prepare_out(out, dataclasses.replace(s, seed=s.seed + 1), m)
 
 
 # --------------------------------------------------------------------------------------
@@ -376,3 +422,20 @@ def test_report_numbers_match_direct_computation(tmp_path):
         assert r["pairs"] == len(rpe) == s.draws
         assert r["median"] == pytest.approx(np.median(rpe), rel=1e-12)
         assert r["share_better"] == np.mean(np.array(rpe) > 0)
+
+
+def test_study_file_doc_lists_every_law_and_its_keys():
+    """docs/study-file.md listed the laws as apd/na; the parser accepts ctc and lqr too."""
+    import re
+    from pm2dof.studies.spec import LAWS
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "study-file.md").read_text()
+    law_row = next(ln for ln in doc.splitlines() if ln.startswith("| `law` |"))
+    assert set(re.findall(r'`"(\w+)"`', law_row)) == set(LAWS)
+    for key in {k for keys in LAWS.values() for k in keys}:
+        row = next(ln for ln in doc.splitlines()
+                   if ln.startswith("|") and f"`{key}`" in ln.split("|")[1])
+        laws = row.split("|")[3].strip()
+        want = {law for law, keys in LAWS.items() if key in keys}
+        assert (laws == "all") == (want == set(LAWS)), (key, laws)
+        if laws != "all":
+            assert {w.strip() for w in laws.split(",")} == want, (key, laws)

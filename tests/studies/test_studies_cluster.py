@@ -166,7 +166,7 @@ def test_real_scheduler_two_workers_one_killed_mid_run(tmp_path, study_file):
 
 def test_embedded_cluster_equals_in_process_rows_and_report_runs(tmp_path, study_file):
     import io
-    from pm2dof.analysis.progress import Progress
+    from pm2dof.infra.progress import Progress
     study = read_study(SHIPPED_STUDIES / "adaptation.toml", quick=True)
     out = tmp_path / "a"
     stream = io.StringIO()                 # a bar drawn as on a terminal, into a buffer

@@ -66,14 +66,17 @@
  *   fivebar_lqr_preload_closed_loop(x[18], u[16], p[26]) -> (x_next[18], y[17])
  *   fivebar_path_coefficients(p[2], dp[2], ddp[2], theta[10], tau_max[2]) -> (a[2], b[2], S[4], v1[2], N_min_norm[4], h_min_norm[2], N_min_max[4], h_min_max[2], sing[2])
  *   fivebar_path_mvc(stage[20], params[11]) -> (x_mvc[1])
- *   fivebar_path_backward(x_next_max[1], pair[41], params[11]) -> (x_max[1], y[1])
- *   fivebar_path_forward(x[1], input[42], params[11]) -> (x_next[1], y[6])
+ *   fivebar_path_backward(x_next_max[1], input[44], params[11]) -> (x_max[1], y[1])
+ *   fivebar_path_forward(x[1], input[45], params[11]) -> (x_next[1], y[6])
  *   fivebar_path_torques(stage[20], sd[1], sdd[1], params[11], tau_max[2]) -> (u[2], tau_min_norm[2], tau_min_max[2], min_max_ratio[1])
  *   fivebar_forward_dynamics_jacobians(xe[2], xed[2], tau_a[2], theta[10]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[4], d_theta[20], sing[2])
  *   fivebar_inverse_dynamics(xe[2], xed[2], xedd[2], theta[10]) -> (u[2], sing[2])
  *   fivebar_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[10]) -> (u[2], d_xe[4], d_xed[4], sing[2])
  *   fivebar_sampled_step(x[4], tau_a[2], theta[10], T[1]) -> (x_next[4], sing[2])
  *   fivebar_sampled_step_jacobians(x[4], tau_a[2], theta[10], T[1]) -> (x_next[4], d_x[16], d_tau_a[8], sing[2])
+ *   fivebar_Ge(q[4], theta[10]) -> (Ge[2], sing[2])
+ *   fivebar_kinetic_energy(xe[2], xed[2], theta[10]) -> (T[1])
+ *   fivebar_potential_energy(xe[2], theta[10]) -> (V[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[10]
@@ -88,7 +91,8 @@
  *   plant: alpha[2], beta[2], gamma[2], fv[2], fc[2], fs[2], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[4], h[2], a[2], b[2], S[4], v1[2], rho[2], delta[1], x_cap[1]
  *   path_pair: stage[20], next[20], next_cap[1]
- *   path_forward_input: pair[41], x_next_max[1]
+ *   path_backward_input: pair[41], same[1], x_in[1], x_out[1]
+ *   path_forward_input: pair[41], x_next_max[1], same[1], x_in[1], x_out[1]
  *   path_forward_output: x[1], sdd[1], L[1], U[1], Z[1], arrival_ok[1]
  *   path_params: v_top[1], theta[10]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
@@ -849,7 +853,7 @@ int fivebar_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define fivebar_na_proj_preload_closed_loop_SZ_ARG 14
 #define fivebar_na_proj_preload_closed_loop_SZ_RES 8
 #define fivebar_na_proj_preload_closed_loop_SZ_IW 0
-#define fivebar_na_proj_preload_closed_loop_SZ_W 165
+#define fivebar_na_proj_preload_closed_loop_SZ_W 164
 int fivebar_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_apd_closed_loop_checkout(void);
 void fivebar_apd_closed_loop_release(int mem);
@@ -1062,10 +1066,10 @@ const casadi_int* fivebar_path_backward_sparsity_in(casadi_int i);
 const casadi_int* fivebar_path_backward_sparsity_out(casadi_int i);
 int fivebar_path_backward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fivebar_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define fivebar_path_backward_SZ_ARG 3
-#define fivebar_path_backward_SZ_RES 2
+#define fivebar_path_backward_SZ_ARG 10
+#define fivebar_path_backward_SZ_RES 6
 #define fivebar_path_backward_SZ_IW 0
-#define fivebar_path_backward_SZ_W 0
+#define fivebar_path_backward_SZ_W 73
 int fivebar_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_path_forward_checkout(void);
 void fivebar_path_forward_release(int mem);
@@ -1080,10 +1084,10 @@ const casadi_int* fivebar_path_forward_sparsity_in(casadi_int i);
 const casadi_int* fivebar_path_forward_sparsity_out(casadi_int i);
 int fivebar_path_forward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fivebar_path_forward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define fivebar_path_forward_SZ_ARG 3
-#define fivebar_path_forward_SZ_RES 2
+#define fivebar_path_forward_SZ_ARG 10
+#define fivebar_path_forward_SZ_RES 6
 #define fivebar_path_forward_SZ_IW 0
-#define fivebar_path_forward_SZ_W 0
+#define fivebar_path_forward_SZ_W 63
 int fivebar_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_path_torques_checkout(void);
 void fivebar_path_torques_release(int mem);
@@ -1192,6 +1196,60 @@ int fivebar_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fivebar_sampled_step_jacobians_SZ_RES 10
 #define fivebar_sampled_step_jacobians_SZ_IW 7
 #define fivebar_sampled_step_jacobians_SZ_W 621
+int fivebar_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_Ge_checkout(void);
+void fivebar_Ge_release(int mem);
+void fivebar_Ge_incref(void);
+void fivebar_Ge_decref(void);
+casadi_int fivebar_Ge_n_in(void);
+casadi_int fivebar_Ge_n_out(void);
+casadi_real fivebar_Ge_default_in(casadi_int i);
+const char* fivebar_Ge_name_in(casadi_int i);
+const char* fivebar_Ge_name_out(casadi_int i);
+const casadi_int* fivebar_Ge_sparsity_in(casadi_int i);
+const casadi_int* fivebar_Ge_sparsity_out(casadi_int i);
+int fivebar_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_Ge_SZ_ARG 2
+#define fivebar_Ge_SZ_RES 2
+#define fivebar_Ge_SZ_IW 0
+#define fivebar_Ge_SZ_W 0
+int fivebar_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_kinetic_energy_checkout(void);
+void fivebar_kinetic_energy_release(int mem);
+void fivebar_kinetic_energy_incref(void);
+void fivebar_kinetic_energy_decref(void);
+casadi_int fivebar_kinetic_energy_n_in(void);
+casadi_int fivebar_kinetic_energy_n_out(void);
+casadi_real fivebar_kinetic_energy_default_in(casadi_int i);
+const char* fivebar_kinetic_energy_name_in(casadi_int i);
+const char* fivebar_kinetic_energy_name_out(casadi_int i);
+const casadi_int* fivebar_kinetic_energy_sparsity_in(casadi_int i);
+const casadi_int* fivebar_kinetic_energy_sparsity_out(casadi_int i);
+int fivebar_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_kinetic_energy_SZ_ARG 3
+#define fivebar_kinetic_energy_SZ_RES 1
+#define fivebar_kinetic_energy_SZ_IW 0
+#define fivebar_kinetic_energy_SZ_W 0
+int fivebar_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fivebar_potential_energy_checkout(void);
+void fivebar_potential_energy_release(int mem);
+void fivebar_potential_energy_incref(void);
+void fivebar_potential_energy_decref(void);
+casadi_int fivebar_potential_energy_n_in(void);
+casadi_int fivebar_potential_energy_n_out(void);
+casadi_real fivebar_potential_energy_default_in(casadi_int i);
+const char* fivebar_potential_energy_name_in(casadi_int i);
+const char* fivebar_potential_energy_name_out(casadi_int i);
+const casadi_int* fivebar_potential_energy_sparsity_in(casadi_int i);
+const casadi_int* fivebar_potential_energy_sparsity_out(casadi_int i);
+int fivebar_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fivebar_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fivebar_potential_energy_SZ_ARG 2
+#define fivebar_potential_energy_SZ_RES 1
+#define fivebar_potential_energy_SZ_IW 0
+#define fivebar_potential_energy_SZ_W 0
 void fivebar_casadi_version(int* major, int* minor, int* patch);
 int fivebar_casadi_int_size(void);
 int fivebar_casadi_real_size(void);

@@ -66,14 +66,17 @@
  *   fourleg_lqr_preload_closed_loop(x[28], u[26], p[44]) -> (x_next[28], y[29])
  *   fourleg_path_coefficients(p[2], dp[2], ddp[2], theta[20], tau_max[4]) -> (a[2], b[2], S[8], v1[4], N_min_norm[8], h_min_norm[4], N_min_max[8], h_min_max[4], sing[2])
  *   fourleg_path_mvc(stage[34], params[21]) -> (x_mvc[1])
- *   fourleg_path_backward(x_next_max[1], pair[69], params[21]) -> (x_max[1], y[1])
- *   fourleg_path_forward(x[1], input[70], params[21]) -> (x_next[1], y[6])
+ *   fourleg_path_backward(x_next_max[1], input[72], params[21]) -> (x_max[1], y[1])
+ *   fourleg_path_forward(x[1], input[73], params[21]) -> (x_next[1], y[6])
  *   fourleg_path_torques(stage[34], sd[1], sdd[1], params[21], tau_max[4]) -> (u[2], tau_min_norm[4], tau_min_max[4], min_max_ratio[1])
  *   fourleg_forward_dynamics_jacobians(xe[2], xed[2], tau_a[4], theta[20]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[8], d_theta[40], sing[2])
  *   fourleg_inverse_dynamics(xe[2], xed[2], xedd[2], theta[20]) -> (u[2], sing[2])
  *   fourleg_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[20]) -> (u[2], d_xe[4], d_xed[4], sing[2])
  *   fourleg_sampled_step(x[4], tau_a[4], theta[20], T[1]) -> (x_next[4], sing[2])
  *   fourleg_sampled_step_jacobians(x[4], tau_a[4], theta[20], T[1]) -> (x_next[4], d_x[16], d_tau_a[16], sing[2])
+ *   fourleg_Ge(q[8], theta[20]) -> (Ge[2], sing[2])
+ *   fourleg_kinetic_energy(xe[2], xed[2], theta[20]) -> (T[1])
+ *   fourleg_potential_energy(xe[2], theta[20]) -> (V[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[20]
@@ -88,7 +91,8 @@
  *   plant: alpha[4], beta[4], gamma[4], fv[4], fc[4], fs[4], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[8], h[4], a[2], b[2], S[8], v1[4], rho[4], delta[1], x_cap[1]
  *   path_pair: stage[34], next[34], next_cap[1]
- *   path_forward_input: pair[69], x_next_max[1]
+ *   path_backward_input: pair[69], same[1], x_in[1], x_out[1]
+ *   path_forward_input: pair[69], x_next_max[1], same[1], x_in[1], x_out[1]
  *   path_forward_output: x[1], sdd[1], L[1], U[1], Z[1], arrival_ok[1]
  *   path_params: v_top[1], theta[20]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
@@ -849,7 +853,7 @@ int fourleg_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define fourleg_na_proj_preload_closed_loop_SZ_ARG 14
 #define fourleg_na_proj_preload_closed_loop_SZ_RES 8
 #define fourleg_na_proj_preload_closed_loop_SZ_IW 0
-#define fourleg_na_proj_preload_closed_loop_SZ_W 1146
+#define fourleg_na_proj_preload_closed_loop_SZ_W 1145
 int fourleg_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_apd_closed_loop_checkout(void);
 void fourleg_apd_closed_loop_release(int mem);
@@ -1062,10 +1066,10 @@ const casadi_int* fourleg_path_backward_sparsity_in(casadi_int i);
 const casadi_int* fourleg_path_backward_sparsity_out(casadi_int i);
 int fourleg_path_backward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fourleg_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define fourleg_path_backward_SZ_ARG 3
-#define fourleg_path_backward_SZ_RES 2
+#define fourleg_path_backward_SZ_ARG 10
+#define fourleg_path_backward_SZ_RES 6
 #define fourleg_path_backward_SZ_IW 0
-#define fourleg_path_backward_SZ_W 0
+#define fourleg_path_backward_SZ_W 140
 int fourleg_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_path_forward_checkout(void);
 void fourleg_path_forward_release(int mem);
@@ -1080,10 +1084,10 @@ const casadi_int* fourleg_path_forward_sparsity_in(casadi_int i);
 const casadi_int* fourleg_path_forward_sparsity_out(casadi_int i);
 int fourleg_path_forward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int fourleg_path_forward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define fourleg_path_forward_SZ_ARG 3
-#define fourleg_path_forward_SZ_RES 2
+#define fourleg_path_forward_SZ_ARG 10
+#define fourleg_path_forward_SZ_RES 6
 #define fourleg_path_forward_SZ_IW 0
-#define fourleg_path_forward_SZ_W 0
+#define fourleg_path_forward_SZ_W 113
 int fourleg_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_path_torques_checkout(void);
 void fourleg_path_torques_release(int mem);
@@ -1192,6 +1196,60 @@ int fourleg_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fourleg_sampled_step_jacobians_SZ_RES 10
 #define fourleg_sampled_step_jacobians_SZ_IW 9
 #define fourleg_sampled_step_jacobians_SZ_W 869
+int fourleg_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_Ge_checkout(void);
+void fourleg_Ge_release(int mem);
+void fourleg_Ge_incref(void);
+void fourleg_Ge_decref(void);
+casadi_int fourleg_Ge_n_in(void);
+casadi_int fourleg_Ge_n_out(void);
+casadi_real fourleg_Ge_default_in(casadi_int i);
+const char* fourleg_Ge_name_in(casadi_int i);
+const char* fourleg_Ge_name_out(casadi_int i);
+const casadi_int* fourleg_Ge_sparsity_in(casadi_int i);
+const casadi_int* fourleg_Ge_sparsity_out(casadi_int i);
+int fourleg_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_Ge_SZ_ARG 2
+#define fourleg_Ge_SZ_RES 2
+#define fourleg_Ge_SZ_IW 0
+#define fourleg_Ge_SZ_W 0
+int fourleg_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_kinetic_energy_checkout(void);
+void fourleg_kinetic_energy_release(int mem);
+void fourleg_kinetic_energy_incref(void);
+void fourleg_kinetic_energy_decref(void);
+casadi_int fourleg_kinetic_energy_n_in(void);
+casadi_int fourleg_kinetic_energy_n_out(void);
+casadi_real fourleg_kinetic_energy_default_in(casadi_int i);
+const char* fourleg_kinetic_energy_name_in(casadi_int i);
+const char* fourleg_kinetic_energy_name_out(casadi_int i);
+const casadi_int* fourleg_kinetic_energy_sparsity_in(casadi_int i);
+const casadi_int* fourleg_kinetic_energy_sparsity_out(casadi_int i);
+int fourleg_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_kinetic_energy_SZ_ARG 3
+#define fourleg_kinetic_energy_SZ_RES 1
+#define fourleg_kinetic_energy_SZ_IW 0
+#define fourleg_kinetic_energy_SZ_W 0
+int fourleg_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int fourleg_potential_energy_checkout(void);
+void fourleg_potential_energy_release(int mem);
+void fourleg_potential_energy_incref(void);
+void fourleg_potential_energy_decref(void);
+casadi_int fourleg_potential_energy_n_in(void);
+casadi_int fourleg_potential_energy_n_out(void);
+casadi_real fourleg_potential_energy_default_in(casadi_int i);
+const char* fourleg_potential_energy_name_in(casadi_int i);
+const char* fourleg_potential_energy_name_out(casadi_int i);
+const casadi_int* fourleg_potential_energy_sparsity_in(casadi_int i);
+const casadi_int* fourleg_potential_energy_sparsity_out(casadi_int i);
+int fourleg_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int fourleg_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define fourleg_potential_energy_SZ_ARG 2
+#define fourleg_potential_energy_SZ_RES 1
+#define fourleg_potential_energy_SZ_IW 0
+#define fourleg_potential_energy_SZ_W 0
 void fourleg_casadi_version(int* major, int* minor, int* patch);
 int fourleg_casadi_int_size(void);
 int fourleg_casadi_real_size(void);

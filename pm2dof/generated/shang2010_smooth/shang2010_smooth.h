@@ -66,14 +66,17 @@
  *   shang2010_smooth_lqr_preload_closed_loop(x[23], u[21], p[35]) -> (x_next[23], y[23])
  *   shang2010_smooth_path_coefficients(p[2], dp[2], ddp[2], theta[15], tau_max[3]) -> (a[2], b[2], S[6], v1[3], N_min_norm[6], h_min_norm[3], N_min_max[6], h_min_max[3], sing[2])
  *   shang2010_smooth_path_mvc(stage[27], params[16]) -> (x_mvc[1])
- *   shang2010_smooth_path_backward(x_next_max[1], pair[55], params[16]) -> (x_max[1], y[1])
- *   shang2010_smooth_path_forward(x[1], input[56], params[16]) -> (x_next[1], y[6])
+ *   shang2010_smooth_path_backward(x_next_max[1], input[58], params[16]) -> (x_max[1], y[1])
+ *   shang2010_smooth_path_forward(x[1], input[59], params[16]) -> (x_next[1], y[6])
  *   shang2010_smooth_path_torques(stage[27], sd[1], sdd[1], params[16], tau_max[3]) -> (u[2], tau_min_norm[3], tau_min_max[3], min_max_ratio[1])
  *   shang2010_smooth_forward_dynamics_jacobians(xe[2], xed[2], tau_a[3], theta[15]) -> (xedd[2], d_xe[4], d_xed[4], d_tau_a[6], d_theta[30], sing[2])
  *   shang2010_smooth_inverse_dynamics(xe[2], xed[2], xedd[2], theta[15]) -> (u[2], sing[2])
  *   shang2010_smooth_inverse_dynamics_jacobians(xe[2], xed[2], xedd[2], theta[15]) -> (u[2], d_xe[4], d_xed[4], sing[2])
  *   shang2010_smooth_sampled_step(x[4], tau_a[3], theta[15], T[1]) -> (x_next[4], sing[2])
  *   shang2010_smooth_sampled_step_jacobians(x[4], tau_a[3], theta[15], T[1]) -> (x_next[4], d_x[16], d_tau_a[12], sing[2])
+ *   shang2010_smooth_Ge(q[6], theta[15]) -> (Ge[2], sing[2])
+ *   shang2010_smooth_kinetic_energy(xe[2], xed[2], theta[15]) -> (T[1])
+ *   shang2010_smooth_potential_energy(xe[2], theta[15]) -> (V[1])
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[15]
@@ -88,7 +91,8 @@
  *   plant: alpha[3], beta[3], gamma[3], fv[3], fc[3], fs[3], stribeck_velocity[1], coulomb_smoothing_velocity[1], encoder_step[1]
  *   path_stage: N[6], h[3], a[2], b[2], S[6], v1[3], rho[3], delta[1], x_cap[1]
  *   path_pair: stage[27], next[27], next_cap[1]
- *   path_forward_input: pair[55], x_next_max[1]
+ *   path_backward_input: pair[55], same[1], x_in[1], x_out[1]
+ *   path_forward_input: pair[55], x_next_max[1], same[1], x_in[1], x_out[1]
  *   path_forward_output: x[1], sdd[1], L[1], U[1], Z[1], arrival_ok[1]
  *   path_params: v_top[1], theta[15]
  *   status of a controller step: 0 ok, 1 singular, 2 saturated, 3 non_finite, 4 preload_infeasible, 5 inconsistent_encoders
@@ -1062,10 +1066,10 @@ const casadi_int* shang2010_smooth_path_backward_sparsity_in(casadi_int i);
 const casadi_int* shang2010_smooth_path_backward_sparsity_out(casadi_int i);
 int shang2010_smooth_path_backward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int shang2010_smooth_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define shang2010_smooth_path_backward_SZ_ARG 3
-#define shang2010_smooth_path_backward_SZ_RES 2
+#define shang2010_smooth_path_backward_SZ_ARG 10
+#define shang2010_smooth_path_backward_SZ_RES 6
 #define shang2010_smooth_path_backward_SZ_IW 0
-#define shang2010_smooth_path_backward_SZ_W 0
+#define shang2010_smooth_path_backward_SZ_W 80
 int shang2010_smooth_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_path_forward_checkout(void);
 void shang2010_smooth_path_forward_release(int mem);
@@ -1080,10 +1084,10 @@ const casadi_int* shang2010_smooth_path_forward_sparsity_in(casadi_int i);
 const casadi_int* shang2010_smooth_path_forward_sparsity_out(casadi_int i);
 int shang2010_smooth_path_forward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int shang2010_smooth_path_forward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define shang2010_smooth_path_forward_SZ_ARG 3
-#define shang2010_smooth_path_forward_SZ_RES 2
+#define shang2010_smooth_path_forward_SZ_ARG 10
+#define shang2010_smooth_path_forward_SZ_RES 6
 #define shang2010_smooth_path_forward_SZ_IW 0
-#define shang2010_smooth_path_forward_SZ_W 0
+#define shang2010_smooth_path_forward_SZ_W 98
 int shang2010_smooth_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_smooth_path_torques_checkout(void);
 void shang2010_smooth_path_torques_release(int mem);
@@ -1192,6 +1196,60 @@ int shang2010_smooth_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casad
 #define shang2010_smooth_sampled_step_jacobians_SZ_RES 10
 #define shang2010_smooth_sampled_step_jacobians_SZ_IW 8
 #define shang2010_smooth_sampled_step_jacobians_SZ_W 773
+int shang2010_smooth_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_smooth_Ge_checkout(void);
+void shang2010_smooth_Ge_release(int mem);
+void shang2010_smooth_Ge_incref(void);
+void shang2010_smooth_Ge_decref(void);
+casadi_int shang2010_smooth_Ge_n_in(void);
+casadi_int shang2010_smooth_Ge_n_out(void);
+casadi_real shang2010_smooth_Ge_default_in(casadi_int i);
+const char* shang2010_smooth_Ge_name_in(casadi_int i);
+const char* shang2010_smooth_Ge_name_out(casadi_int i);
+const casadi_int* shang2010_smooth_Ge_sparsity_in(casadi_int i);
+const casadi_int* shang2010_smooth_Ge_sparsity_out(casadi_int i);
+int shang2010_smooth_Ge_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_smooth_Ge_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_smooth_Ge_SZ_ARG 2
+#define shang2010_smooth_Ge_SZ_RES 2
+#define shang2010_smooth_Ge_SZ_IW 0
+#define shang2010_smooth_Ge_SZ_W 0
+int shang2010_smooth_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_smooth_kinetic_energy_checkout(void);
+void shang2010_smooth_kinetic_energy_release(int mem);
+void shang2010_smooth_kinetic_energy_incref(void);
+void shang2010_smooth_kinetic_energy_decref(void);
+casadi_int shang2010_smooth_kinetic_energy_n_in(void);
+casadi_int shang2010_smooth_kinetic_energy_n_out(void);
+casadi_real shang2010_smooth_kinetic_energy_default_in(casadi_int i);
+const char* shang2010_smooth_kinetic_energy_name_in(casadi_int i);
+const char* shang2010_smooth_kinetic_energy_name_out(casadi_int i);
+const casadi_int* shang2010_smooth_kinetic_energy_sparsity_in(casadi_int i);
+const casadi_int* shang2010_smooth_kinetic_energy_sparsity_out(casadi_int i);
+int shang2010_smooth_kinetic_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_smooth_kinetic_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_smooth_kinetic_energy_SZ_ARG 3
+#define shang2010_smooth_kinetic_energy_SZ_RES 1
+#define shang2010_smooth_kinetic_energy_SZ_IW 0
+#define shang2010_smooth_kinetic_energy_SZ_W 0
+int shang2010_smooth_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
+int shang2010_smooth_potential_energy_checkout(void);
+void shang2010_smooth_potential_energy_release(int mem);
+void shang2010_smooth_potential_energy_incref(void);
+void shang2010_smooth_potential_energy_decref(void);
+casadi_int shang2010_smooth_potential_energy_n_in(void);
+casadi_int shang2010_smooth_potential_energy_n_out(void);
+casadi_real shang2010_smooth_potential_energy_default_in(casadi_int i);
+const char* shang2010_smooth_potential_energy_name_in(casadi_int i);
+const char* shang2010_smooth_potential_energy_name_out(casadi_int i);
+const casadi_int* shang2010_smooth_potential_energy_sparsity_in(casadi_int i);
+const casadi_int* shang2010_smooth_potential_energy_sparsity_out(casadi_int i);
+int shang2010_smooth_potential_energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+int shang2010_smooth_potential_energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
+#define shang2010_smooth_potential_energy_SZ_ARG 2
+#define shang2010_smooth_potential_energy_SZ_RES 1
+#define shang2010_smooth_potential_energy_SZ_IW 0
+#define shang2010_smooth_potential_energy_SZ_W 0
 void shang2010_smooth_casadi_version(int* major, int* minor, int* patch);
 int shang2010_smooth_casadi_int_size(void);
 int shang2010_smooth_casadi_real_size(void);

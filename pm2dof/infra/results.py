@@ -34,10 +34,11 @@ COMMAND_LINE = None  # set by pm2dof.cli.main to the command it runs; else sys.a
 
 def provenance(model):
     """Where a result came from: the pm2dof version, the model file and the generated code
-    (paths, hashes, whether shipped with pm2dof), git commit, versions, command line."""
+    (paths, hashes, whether shipped with pm2dof), git commit (only from a checkout), versions,
+    command line."""
     from ..core.version import __version__
     from ..core.paths import is_shipped
-    return {
+    out = {
         "model": model.name,
         "model_file": model.spec.path,
         "model_shipped": is_shipped(model.spec.path),
@@ -53,6 +54,9 @@ def provenance(model):
         "machine": f"{platform.machine()} {platform.system()}, {os.cpu_count()} cores",
         "command_line": list(COMMAND_LINE) if COMMAND_LINE is not None else sys.argv,
     }
+    if out["git_commit"] is None:    # an installed package: no checkout, no key
+        del out["git_commit"]
+    return out
 
 
 def output_path(path):

@@ -1,0 +1,326 @@
+# The planner's grid and what the passes found on it, recomputed only where points were added.
+"""The time-optimal planner's grid, refined in place: :class:`Grid`.
+
+A refinement adds points inside some intervals. What the plan needs is recomputed only where
+an added point can change it, and equals what the whole computation on the refined grid gives,
+bit for bit (every generated function is evaluated per point or per interval, with the same
+inputs):
+
+* each point's coefficients (``path_coefficients``) depend on its arc length alone: only the
+  new points are evaluated;
+* a point's ``path_stage`` row depends on it and its neighbours (rho, delta): the rows are
+  relinked over the whole grid (NumPy, cheap), and the maximum-velocity curve is evaluated
+  only at the rows that changed;
+* the backward pass (from the end) runs from the last interval whose input changed down to the
+  start, from the bound the previous pass found at that interval's end (the intervals above
+  are the previous ones, with the same inputs: the same bounds); the forward pass (from the
+  start) from the first interval whose input (or controllable bound) changed to the end, from
+  the speed the previous pass reached there. Each is one ``accumulate`` call over its
+  sub-range, whose rows carry the previous pass's step over the same interval: where the new
+  pass arrives with the previous state (it met the previous pass again), the generated step
+  returns the previous result without evaluating anything (pm2dof/derive/planning.py,
+  ``_reusing``). The passes meet again where a change has died out: the backward pass's
+  bisection keeps to a lattice (its result does not depend on the last bits of the bound it
+  starts from) and the forward pass lands on the controllable bound exactly, so a pass is
+  evaluated over the stretch an added point really changes (an acceleration or braking arc
+  through it), not to the end of the grid;
+* an interval's midpoint check is recomputed where the interval is new or its speeds or
+  acceleration changed.
+
+:func:`passes` with no previous solve is the whole computation (``solve_profile``).
+"""
+import numpy as np
+
+from ..core.errors import PlanError
+from .plan import PathProfile, grid_times, sampled
+from .stages import junction_left, link, point_stages
+
+__all__ = ["Grid", "passes"]
+
+_TOL = 1e-9   # relative slack of the forward pass's own checks (rounding)
+
+
+def at(p, s, k):
+    """Where grid point ``k`` is, for messages: its arc length and point."""
+    return f"s = {s[k]:.6g} m, point ({p[k][0]:.6g}, {p[k][1]:.6g}) m"
+
+
+def _same_rows(a, b):
+    return (a == b).all(axis=1)
+
+
+def _check_forward(p, s, x, sdd, L, U, Z, h, x_mvc):
+    """PlanError naming the first interval where the forward pass broke one of its own
+    conditions (rounding aside; none is known to happen since the backward pass keeps every
+    landing at or above rest): s_dd within [L, U] leaving s_k, the facets that do not bound
+    s_dd held (Z >= 0), s_d^2 >= 0 at s_k+1."""
+    scale = np.maximum(1.0, np.abs(sdd))
+    below, above = sdd < L - _TOL * scale, sdd > U + _TOL * scale
+    held = Z < -_TOL * h
+    landed = x[1:] < -_TOL * np.maximum(x_mvc[1:], 1e-12)
+    wrong = below | above | held | landed
+    if not wrong.any():
+        return
+    k = int(np.argmax(wrong))
+    if landed[k]:
+        what = (f"its path acceleration s_dd = {sdd[k]:.6g} m/s^2 from s_d^2 = {x[k]:.6g} "
+                f"m^2/s^2 lands at s_d^2 = {x[k + 1]:.6g} < 0 at s = {s[k + 1]:.6g} m (the "
+                f"robot would stop inside the interval)")
+    elif held[k]:
+        what = (f"a torque facet parallel to the path's acceleration is violated at s_d^2 = "
+                f"{x[k]:.6g} m^2/s^2 (by {-Z[k]:.6g} N)")
+    else:
+        what = (f"s_dd = {sdd[k]:.6g} m/s^2 is outside its feasible interval "
+                f"[{L[k]:.6g}, {U[k]:.6g}] m/s^2 at s_d^2 = {x[k]:.6g} m^2/s^2")
+    raise PlanError(f"the time-optimal forward pass failed on the interval leaving "
+                    f"{at(p, s, k)}: {what}; a finer grid may avoid it")
+
+
+def _mvc(model, rows, prm):
+    out = np.empty(len(rows))
+    if len(rows):
+        model.function("path_mvc").map(len(rows), np.ascontiguousarray(rows), prm, out)
+    return out
+
+
+def passes(model, stage, arrive, prm, s, p, prev=None):
+    """The maximum-velocity curve and the backward and forward passes over the grid ``s`` (K,)
+    (``stage``, ``arrive``: :func:`pm2dof.planning.stages.link`; ``p`` (K, 2) its points, for
+    messages). ``prev``: what this returned as ``memo`` for an earlier grid of which ``s`` is a
+    refinement (its points a subset), or None: everything computed.
+
+    Returns (x (K,), sdd (K,), x_mvc (K,), relaxed, memo): relaxed the intervals whose arrival
+    facets could not hold together with the departing ones (only the departing ones are met
+    there: collocation's O(delta) error)."""
+    K = len(s)
+    sl = model.layout("path_stage").slices
+    if prev is None:
+        src = np.full(K, -1)
+    else:
+        j = np.minimum(np.searchsorted(prev["s"], s), len(prev["s"]) - 1)
+        src = np.where(prev["s"][j] == s, j, -1)
+    old = src >= 0
+    js = np.where(old, src, 0)
+    # a stage row depends on its point and the next (rho, delta; the last row on the last
+    # interval), an arrive row on its stage row and the previous one's rho: rows whose
+    # interval(s) are the previous grid's are the previous rows; the other old rows are compared
+    kept = old[:-1] & (src[1:] == src[:-1] + 1)         # intervals of the previous grid
+    same_st = np.append(kept, kept[-1:] & old[-1:])
+    same_ar = same_st.copy()
+    same_ar[1:] &= kept
+    for same_rows, rows, key in ((same_st, stage, "stage"), (same_ar, arrive, "arrive")):
+        check = np.flatnonzero(old & ~same_rows)
+        if check.size:
+            same_rows[check] = _same_rows(rows[check], prev[key][src[check]])
+    # the maximum-velocity curve, of the rows that changed
+    x_mvc = np.empty(K)
+    x_mvc[same_st] = prev["x_mvc"][src[same_st]] if prev else 0.0
+    fresh = np.flatnonzero(~same_st)
+    x_mvc[fresh] = _mvc(model, stage[fresh], prm)
+    bad = np.flatnonzero(x_mvc < 0)
+    if bad.size:
+        k = int(bad[0])
+        raise PlanError(f"the torque limits cannot move the robot along the path at "
+                        f"{at(p, s, k)}: even at rest no path acceleration keeps every "
+                        f"|tau_i| within tau_max (Coulomb friction and the split's force "
+                        f"polygon leave no feasible force along the path)")
+    x_cap = stage[:, sl["x_cap"]].ravel()
+    interior = np.flatnonzero((x_mvc <= 0) & (x_cap > 0))
+    if interior.size:
+        k = int(interior[0])
+        raise PlanError(f"zero feasible velocity at {at(p, s, k)}: the torque limits hold "
+                        f"the path there only at rest (the maximum-velocity curve touches 0)")
+    # the arrival facets' own maximum-velocity curve where they differ from the point's own
+    cap = x_mvc.copy()
+    other = np.any(arrive != stage, axis=1)
+    reuse = other & same_ar & same_st
+    cap[reuse] = prev["cap"][src[reuse]] if prev else 0.0
+    todo = np.flatnonzero(other & ~reuse)
+    cap[todo] = _mvc(model, arrive[todo], prm)
+    fin = model.layout("path_forward_input")
+    inp = np.zeros((K - 1, fin.size))             # per interval: pair, x_next_max, memo
+    F = fin.unpack(inp)
+    P = inp[:, fin.slices["pair"]]
+    pair = model.layout("path_pair").unpack(P)
+    pair["stage"][:], pair["next"][:], pair["next_cap"][:, 0] = stage[:-1], arrive[1:], cap[1:]
+    # intervals of the previous grid with the same input (pair)
+    same = kept & same_st[:-1] & same_ar[1:] & same_st[1:]
+    changed = np.flatnonzero(~same)
+    # backward: controllable bounds, from rest at the end, from the last interval whose input
+    # changed (the ones above are the previous grid's, with its bounds); below it, where the
+    # pass meets the previous one again, the C returns the previous bounds
+    hi = np.empty(K)
+    top = int(changed[-1]) if changed.size else -1
+    hi[top + 1:] = prev["hi"][js[top + 1:]] if prev else 0.0
+    hi[-1] = 0.0
+    if top >= 0:
+        bl = model.layout("path_backward_input")
+        rows = np.zeros((top + 1, bl.size))
+        B = bl.unpack(rows)
+        rows[:, bl.slices["pair"]] = P[top::-1]
+        if prev:
+            r = slice(top, None, -1)
+            B["same"][:, 0] = same[r]
+            B["x_in"][:, 0] = prev["hi"][js[1:top + 2]][::-1]
+            B["x_out"][:, 0] = prev["hi"][js[:top + 1]][::-1]
+        back = np.empty(top + 1)
+        model.function("path_backward").accumulate(np.array([hi[top + 1]]), rows, prm, back)
+        hi[:top + 1] = back[::-1]
+    if hi[0] < 0:
+        k = int(np.flatnonzero(hi < 0)[-1])
+        raise PlanError(f"the robot cannot reach the end of the path at rest from "
+                        f"{at(p, s, k)} with these torque limits: no feasible deceleration "
+                        f"(even near rest the motors must balance the Coulomb friction; a larger "
+                        f"tau_max, or the min_max split, leaves more room)")
+    # forward: greedy from rest at the start, from the first interval whose input or
+    # controllable bound changed (the ones before are the previous grid's)
+    F["x_next_max"][:, 0] = hi[1:]
+    out = model.layout("path_forward_output")
+    evaluated = [top + 1, 0]
+    if prev:
+        same &= hi[1:] == prev["hi"][js[1:]]
+        evaluated[0] -= int(np.count_nonzero(same[:top + 1]))   # met again: reused
+        F["same"][:, 0] = same
+        F["x_in"][:, 0] = prev["x_raw"][js[:-1]]
+        F["x_out"][:, 0] = prev["x_raw"][js[1:]]
+    first = int(np.argmin(same)) if not same.all() else K - 1
+    y = np.empty((K - 1, out.size))
+    x_raw = np.empty(K)
+    if first:
+        y[:first] = prev["y"][js[:first]]
+        x_raw[:first + 1] = prev["x_raw"][js[:first + 1]]
+    else:
+        x_raw[0] = 0.0
+    if first < K - 1:
+        xf = np.array([x_raw[first]])
+        model.function("path_forward").accumulate(xf, inp[first:], prm, y[first:])
+        x_raw[first:-1] = y[first:, out.slices["x"]][:, 0]
+        x_raw[-1] = xf[0]
+        if prev:        # the steps that met the previous pass: its y
+            met = first + np.flatnonzero(same[first:] & (x_raw[first:-1] == F["x_in"][first:, 0]))
+            y[met] = prev["y"][js[met]]
+            x_raw[met] = prev["x_raw"][js[met]]
+            evaluated[1] = K - 1 - first - met.size
+        else:
+            evaluated[1] = K - 1 - first
+    Y = {k: v[:, 0] for k, v in out.unpack(y).items()}
+    sdd, L, U, Z = Y["sdd"], Y["L"], Y["U"], Y["Z"]
+    relaxed = np.flatnonzero(Y["arrival_ok"] == 0)  # the arrival facets do not hold there
+    _check_forward(p, s, x_raw, sdd, L, U, Z, stage[:-1, sl["h"]].max(axis=1), x_mvc)
+    x = np.maximum(x_raw, 0.0)
+    x[x_cap == 0] = 0.0
+    memo = {"s": s, "stage": stage, "arrive": arrive, "x_mvc": x_mvc, "cap": cap,
+            "hi": hi, "y": y, "x_raw": x_raw,
+            "evaluated": (*evaluated, fresh.size)}   # steps of each pass, MVC rows
+    return x, np.concatenate([sdd, sdd[-1:]]), x_mvc, relaxed, memo
+
+
+class Grid:
+    """The planner's grid of ``path`` (arc lengths ``s`` with ``ev`` = path.evaluate(s)) and
+    each point's coefficients; :meth:`insert` adds points, :meth:`solve` runs the passes,
+    :meth:`between` checks the intervals' midpoints and :meth:`samples` the trajectory, each
+    recomputing only what the points added since its previous call can change."""
+
+    def __init__(self, model, path, s, ev, w, theta, split, prm):
+        self.model, self.path, self.w, self.theta, self.split, self.prm = \
+            model, path, w, theta, split, prm
+        self.s, self.ev = s, tuple(np.ascontiguousarray(e) for e in ev)
+        self.base, outs = point_stages(model, s, self.ev, theta, w, split)
+        self.v1 = outs["v1"]
+        self.left = junction_left(model, path, theta, w, split)
+        self.memo = self.mid = None
+        self.stage = self.arrive = None
+
+    def insert(self, new, ev_new=None):
+        """Add the arc lengths ``new`` (each inside an interval; ``ev_new`` their
+        path.evaluate, if known). Raises WorkspaceError or SingularityError at one that is not
+        clear (:func:`point_stages`)."""
+        ev_new = tuple(np.ascontiguousarray(e) for e in (ev_new or self.path.evaluate(new)))
+        base, outs = point_stages(self.model, new, ev_new, self.theta, self.w, self.split)
+        order = np.argsort(np.concatenate([self.s, new]), kind="stable")
+        self.s = np.concatenate([self.s, new])[order]
+        self.ev = tuple(np.concatenate([e, f])[order] for e, f in zip(self.ev, ev_new))
+        self.base = np.concatenate([self.base, base])[order]
+        self.v1 = np.concatenate([self.v1, outs["v1"]])[order]
+
+    def stops(self):
+        return np.searchsorted(self.s, self.path.stops) if len(self.path.stops) else \
+            np.array([], dtype=int)
+
+    def solve(self):
+        """The passes on the current grid (:func:`passes`, from the previous solve's results):
+        (x, sdd, x_mvc, relaxed)."""
+        self.stage, self.arrive = link(self.model, self.path, self.s, self.base, self.v1,
+                                       self.stops(), self.left, self.split)
+        x, sdd, x_mvc, relaxed, self.memo = passes(self.model, self.stage, self.arrive,
+                                                   self.prm, self.s, self.ev[0], self.memo)
+        return x, sdd, x_mvc, relaxed
+
+    def _ratio(self, stage, sd, sdd):
+        """max_i |tau_i| / tau_max,i of the split at the rows ``stage`` (M, size)."""
+        M, n = len(stage), self.model.n_legs
+        tau_mn, ratio = np.empty((M, n)), np.empty(M)
+        if M:
+            self.model.function("path_torques").map(M, np.ascontiguousarray(stage), sd,
+                                                    np.ascontiguousarray(sdd), self.prm,
+                                                    self.w, None, tau_mn, None, ratio)
+        if self.split == "min_norm":
+            ratio = np.abs(tau_mn / self.w).max(axis=1)
+        return ratio
+
+    def between(self, x, sdd):
+        """The plan between its grid points: each interval's midpoint (K-1,), its p, p', p''
+        and the excess of the split's torques over the limits there, max_i |tau_i| / w_i - 1
+        (K-1,), at s_d^2 = (x_k + x_k+1) / 2 (linear in s on the interval) and the interval's
+        s_dd. Intervals of the previous call reuse its midpoint's coefficients, and its excess
+        where their speeds and acceleration are the same."""
+        s = self.s
+        a, b = s[:-1], s[1:]
+        mid = 0.5 * (a + b)
+        key = np.column_stack([x[:-1], x[1:], sdd[:-1]])
+        M = len(mid)
+        c = self.mid
+        if c is not None:
+            j = np.minimum(np.searchsorted(c["a"], a), len(c["a"]) - 1)
+            hit = (c["a"][j] == a) & (c["b"][j] == b)
+        else:
+            j, hit = np.zeros(M, dtype=int), np.zeros(M, dtype=bool)
+        ev = tuple(np.empty((M, 2)) for _ in range(3))
+        stage = np.empty((M, self.base.shape[1]))
+        if hit.any():
+            for e, o in zip(ev, c["ev"]):
+                e[hit] = o[j[hit]]
+            stage[hit] = c["stage"][j[hit]]
+        miss = np.flatnonzero(~hit)
+        if miss.size:
+            ev_miss = self.path.evaluate(mid[miss])
+            for e, f in zip(ev, ev_miss):
+                e[miss] = f
+            stage[miss] = point_stages(self.model, mid[miss], ev_miss, self.theta, self.w,
+                                       self.split, check=False)[0]
+        excess = np.empty(M)
+        same = hit & _same_rows(key, c["key"][j]) if c is not None else hit
+        excess[same] = c["excess"][j[same]] if c is not None else 0.0
+        todo = np.flatnonzero(~same)
+        sd = np.sqrt(np.maximum(0.5 * (key[todo, 0] + key[todo, 1]), 0.0))
+        excess[todo] = self._ratio(stage[todo], sd, key[todo, 2]) - 1.0
+        excess[~np.isfinite(excess)] = np.inf   # out of reach between two grid points: refined,
+        self.mid = {"a": a, "b": b, "ev": ev, "stage": stage, "key": key,   # and the new grid
+                    "excess": excess}                                       # point names it
+        return mid, ev, excess
+
+    def samples(self, x, sdd, period):
+        """The trajectory at ``period`` (what ``simulate`` receives) and its torques: (profile,
+        trajectory, excess (N,) of the split's torques over the limits at each sample before
+        the end, interval (N,) the grid interval of each)."""
+        sdot = np.sqrt(x)
+        profile = PathProfile(self.s, sdot, sdd, grid_times(self.s, sdot))
+        traj, (s, sd, u), ev = sampled(self.path, profile, period)
+        moving = np.flatnonzero(traj.t < profile.duration)
+        st = point_stages(self.model, s[moving], tuple(e[moving] for e in ev), self.theta,
+                          self.w, self.split, check=False)[0]
+        excess = self._ratio(st, sd[moving], u[moving]) - 1.0
+        excess[~np.isfinite(excess)] = np.inf
+        k = np.clip(np.searchsorted(profile.t, traj.t[moving], side="right") - 1, 0,
+                    len(self.s) - 2)
+        return profile, traj, excess, k
