@@ -52,7 +52,7 @@ THIRD_PARTY = {
     "identification": {"numpy", "scipy", "casadi", "pyarrow"},   # the ident extra; lazily
     "linear": {"numpy", "scipy", "control"},            # the [control] extra (python-control)
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
-    "bench": {"numpy", "casadi", "sympy", "toppra", "pinocchio"},  # baselines; each optional
+    "bench": {"numpy", "casadi", "sympy", "toppra", "pinocchio", "mujoco"},  # optional baselines
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
     "planning": {"numpy", "casadi"},                    # CasADi only in plan_smooth (lazily)
     "export": {"numpy"},                                # copies generated C: no CasADi

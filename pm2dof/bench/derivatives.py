@@ -13,7 +13,7 @@ from ..linear.lqr import LQRController
 from ..control.controllers import CTCController
 from .timing import rel_diff, stats, time_batches
 
-__all__ = ["derivative_bench"]
+__all__ = ["derivative_bench", "dynamics_state"]
 
 
 def _interleaved_c(fns, repeats, c_inner):
@@ -26,7 +26,7 @@ def _interleaved_c(fns, repeats, c_inner):
     return {k: stats(v) for k, v in per.items()}, per
 
 
-def _state(model, traj, k):
+def dynamics_state(model, traj, k):
     """The desired state of sample k and its model torque (inverse dynamics, the split)."""
     th = np.array(model.theta_nominal)
     xe, xed, xedd = (np.ascontiguousarray(a[k]) for a in (traj.xd, traj.xd_dot, traj.xd_ddot))
@@ -41,7 +41,7 @@ def derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes):
     a dict of ``*_c_ns``, ``*_python_us``, ratios and agreements (None where a baseline is
     missing; ``notes`` says why)."""
     res = {}
-    xe, xed, tau, th = _state(model, traj, len(traj.t) // 2)
+    xe, xed, tau, th = dynamics_state(model, traj, len(traj.t) // 2)
     n = model.n_legs
     x = np.concatenate([xe, xed])
     T = float(model.spec.sensing["sample_period"])

@@ -13,7 +13,40 @@ constrained forward dynamics into the tip's acceleration, to compare with pm2dof
 """
 import numpy as np
 
-__all__ = ["PinocchioRobot"]
+__all__ = ["PinocchioRobot", "leg_bodies", "chain_state"]
+
+
+def leg_bodies(model, theta):
+    """Per leg (m_b, r_b, I_a, I_b): the two bodies whose kinetic energy is eq. 1's with
+    ``theta``'s alpha, beta, gamma (the distal link a mass m_b = beta / (la r_b) at r_b = lb / 2
+    with inertia I_b = gamma - m_b r_b^2 about it, the active link I_a = alpha - m_b la^2 about
+    its joint). ValueError where no such bodies exist."""
+    n = model.n_legs
+    th = np.asarray(theta, dtype=float)
+    alpha, beta, gamma = th[:n], th[n:2 * n], th[2 * n:3 * n]
+    out = []
+    for i, leg in enumerate(model.spec.legs):
+        rb = leg.lb / 2
+        mb = beta[i] / (leg.la * rb)
+        Ib, Ia = gamma[i] - mb * rb ** 2, alpha[i] - mb * leg.la ** 2
+        if not (mb > 0 and Ib > 0 and Ia > 0):
+            raise ValueError(f"leg {i + 1}: alpha, beta, gamma are not those of two links "
+                             f"with a distal centre at lb/2 (m_b {mb}, I_a {Ia}, I_b {Ib})")
+        out.append((mb, rb, Ia, Ib))
+    return out
+
+
+def chain_state(model, xe, xed, tau_a):
+    """The legs as open chains: (q, v, tau) (2n,) ordered leg by leg [qa_i, qb_i - qa_i] (the
+    distal joint relative to the active link) at the pose xe, velocity xed, torques tau_a."""
+    n = model.n_legs
+    qq = model.ik(xe)
+    qd = model.W(qq) @ np.asarray(xed, dtype=float)
+    q, v, tau = np.empty(2 * n), np.empty(2 * n), np.zeros(2 * n)
+    q[0::2], q[1::2] = qq[:n], qq[n:] - qq[:n]
+    v[0::2], v[1::2] = qd[:n], qd[n:] - qd[:n]
+    tau[0::2] = tau_a
+    return q, v, tau
 
 
 class PinocchioRobot:
@@ -22,18 +55,10 @@ class PinocchioRobot:
     def __init__(self, model, theta):
         import pinocchio as pin
         self.pin, self.m = pin, model
-        n = model.n_legs
-        th = np.asarray(theta, dtype=float)
-        alpha, beta, gamma = th[:n], th[n:2 * n], th[2 * n:3 * n]
         pm = pin.Model()
         self.tips = []
-        for i, leg in enumerate(model.spec.legs):
-            rb = leg.lb / 2
-            mb = beta[i] / (leg.la * rb)
-            Ib, Ia = gamma[i] - mb * rb ** 2, alpha[i] - mb * leg.la ** 2
-            if not (mb > 0 and Ib > 0 and Ia > 0):
-                raise ValueError(f"leg {i + 1}: alpha, beta, gamma are not those of two links "
-                                 f"with a distal centre at lb/2 (m_b {mb}, I_a {Ia}, I_b {Ib})")
+        bodies = leg_bodies(model, theta)
+        for i, (leg, (mb, rb, Ia, Ib)) in enumerate(zip(model.spec.legs, bodies, strict=True)):
             ja = pm.addJoint(0, pin.JointModelRZ(),
                              pin.SE3(np.eye(3), np.array([*leg.base, 0.0])), f"qa{i + 1}")
             pm.appendBodyToJoint(ja, pin.Inertia(1e-9, np.zeros(3), np.diag([1e-6, 1e-6, Ia])),
@@ -57,14 +82,7 @@ class PinocchioRobot:
 
     def state(self, xe, xed, tau_a):
         """Pinocchio's (q, v, tau) of the pose xe, velocity xed and actuator torques tau_a."""
-        n = self.m.n_legs
-        qq = self.m.ik(xe)
-        qd = self.m.W(qq) @ np.asarray(xed, dtype=float)
-        q, v, tau = np.empty(2 * n), np.empty(2 * n), np.zeros(2 * n)
-        q[0::2], q[1::2] = qq[:n], qq[n:] - qq[:n]
-        v[0::2], v[1::2] = qd[:n], qd[n:] - qd[:n]
-        tau[0::2] = tau_a
-        return q, v, tau
+        return chain_state(self.m, xe, xed, tau_a)
 
     def forward_dynamics_with_derivatives(self, q, v, tau):
         """constraintDynamics then computeConstraintDynamicsDerivatives (what one gets the
@@ -75,6 +93,11 @@ class PinocchioRobot:
         pin.computeConstraintDynamicsDerivatives(self.model, self.data, self.cms, self.cds,
                                                  self.prox)
         return ddq
+
+    def forward_dynamics(self, q, v, tau):
+        """Pinocchio's constrained forward dynamics alone (``constraintDynamics``): ddq."""
+        return self.pin.constraintDynamics(self.model, self.data, q, v, tau, self.cms, self.cds,
+                                           self.prox)
 
     def tip_acceleration(self, q, v, tau):
         """The tip's acceleration (2,) m/s^2 from Pinocchio's constrained ddq."""

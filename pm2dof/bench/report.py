@@ -64,6 +64,12 @@ def format_bench(results):
         "us")
     row("Pinocchio constraintDynamics + derivatives", "pinocchio_constraint_derivatives_python_us",
         "us")
+    row("forward dynamics, Model method (interleaved)", "fd_python_interleaved_ns", "ns")
+    row("forward dynamics, C loop (interleaved)", "fd_c_interleaved_ns", "ns")
+    row("NA step, NAController.step (interleaved)", "na_step_python_interleaved_ns", "ns")
+    row("NA step, C loop (interleaved)", "na_step_c_interleaved_ns", "ns")
+    row("Pinocchio constraintDynamics, Python", "pinocchio_forward_dynamics_python_us", "us")
+    row("MuJoCo mj_forward, Python", "mujoco_forward_python_us", "us")
     row(f"rollout, accumulate ({r.get('rollout_samples')} samples)", "rollout_steps_per_s",
         "steps/s", min_key="rollout_steps_per_s_best")
     row("rollout, end to end (simulate())", "rollout_end_to_end_steps_per_s", "steps/s",
@@ -128,6 +134,14 @@ def format_bench(results):
             ("FD Jacobians vs central differences", "agreement_fd_jacobians_vs_finite_differences",
              "rel"),
             ("Pinocchio vs pm2dof tip acceleration", "agreement_pinocchio_tip_acceleration",
+             "rel"),
+            ("forward dynamics vs Pinocchio, Python", "speedup_fd_vs_pinocchio", "x"),
+            ("forward dynamics vs MuJoCo, Python", "speedup_fd_vs_mujoco", "x"),
+            ("forward dynamics: (Python - C) / C", "fd_binding_overhead_over_c", "x"),
+            ("NA step: (Python - C) / C", "na_step_binding_overhead_over_c", "x"),
+            ("NA step: (Python - C) / forward dynamics C",
+             "na_step_binding_overhead_over_fd_c", "x"),
+            ("MuJoCo vs pm2dof tip acceleration (soft)", "agreement_mujoco_forward_dynamics",
              "rel")):
         t = tg.get(key)
         tgt = f"{t['op']} {_fmt(t['target'], t['unit'])}" if t else ""
@@ -138,6 +152,10 @@ def format_bench(results):
         lines.append(f"  the NA step in C takes {100 * r['na_step_budget_fraction']:.4f} % of "
                      f"the sample period; NAController.step adds "
                      f"{_fmt(r.get('python_overhead_us'))} us of Python")
+    if r.get("fd_binding_overhead_ns") is not None:
+        lines.append(f"  the binding's overhead per call (Python - C, paired rounds): "
+                     f"forward_dynamics {_fmt(r['fd_binding_overhead_ns'])} ns, "
+                     f"NAController.step {_fmt(r.get('na_step_binding_overhead_ns'))} ns")
     ops = r.get("op_counts")
     if ops:
         lines.append("")
@@ -157,7 +175,7 @@ def format_bench(results):
         lines.append(f"machine: {m.get('cpu')}, {m.get('cores')} cores "
                      f"({m.get('cores_available')} available), {m.get('platform')}")
         lines.append(f"compiler: {m.get('compiler_version') or m.get('compiler')}; flags: "
-                     f"{m.get('compiler_flags')}")
+                     f"{m.get('compiler_flags')} ({m.get('compiler_flags_source')})")
         lines.append(f"python {m.get('python')}, numpy {m.get('numpy')}"
                      + (f", casadi {r['casadi_version']}" if r.get("casadi_version") else ""))
     if "elapsed_s" in r:

@@ -18,7 +18,8 @@ from ..core.layout import Layout
 from ..core.model import load_model
 from ..core.status import Status
 from ..reference import control as rc
-from .derivatives import derivative_bench
+from .derivatives import derivative_bench, dynamics_state
+from .peers import peer_bench
 from .baselines import (c_step, lambdify_step, long_trajectory, operating_point, random_cases,
                         reference_geometry)
 from .machine import machine
@@ -54,6 +55,13 @@ TARGETS = (
      "forward-dynamics Jacobians from Python (Model.forward_dynamics_jacobians, out=)"),
     ("ctc_step_c_ns", "<=", 300.0, "ns", "CTC step in C (C loop)"),
     ("lqr_step_c_ns", "<=", 300.0, "ns", "LQR step in C (C loop)"),
+    # issue 25: the Python calls (bench/peers.py), ratios of interleaved rounds
+    ("speedup_fd_vs_pinocchio", ">=", 4.0, "x",
+     "Model.forward_dynamics vs Pinocchio constraintDynamics, from Python"),
+    ("speedup_fd_vs_mujoco", ">=", 4.0, "x", "Model.forward_dynamics vs MuJoCo mj_forward, "
+     "from Python"),
+    ("fd_binding_overhead_over_c", "<=", 4.0, "x",
+     "forward dynamics: binding overhead (Python - C) / C"),
 )
 #: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 BENCH_SPLITS = ("min_norm", "min_max", "preload")
@@ -310,6 +318,12 @@ def run_bench(model=None, quick=False, progress=None):
         "differences); CTC and LQR steps")
     res.update(derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes))
 
+    # --- the binding's overhead and the peers (bench/peers.py) -----------------------------
+    say("binding overhead (Python - C) of forward_dynamics and NAController.step; forward "
+        "dynamics beside Pinocchio and MuJoCo, interleaved rounds")
+    fd_state = dynamics_state(model, traj, len(traj.t) // 2)
+    res.update(peer_bench(model, na, op, qa_prev, fd_state, repeats, batch_s, c_inner, notes))
+
     # --- motion planning (issue 20): plan_time_optimal beside toppra ----------------------
     from .planning import bench_planning
     planning = bench_planning(model, quick, say)
@@ -349,6 +363,6 @@ def run_bench(model=None, quick=False, progress=None):
                         "pass": ok}
     res["targets"] = targets
     res["all_targets_pass"] = all(t["pass"] for t in targets.values())
-    res["machine"] = machine()
+    res["machine"] = machine(model.library)
     res["elapsed_s"] = time.perf_counter() - t_start
     return res

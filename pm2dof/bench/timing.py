@@ -5,7 +5,7 @@ import time
 
 import numpy as np
 
-__all__ = ["stats", "time_batches", "rel_diff"]
+__all__ = ["stats", "time_batches", "time_interleaved", "rel_diff"]
 
 
 def stats(per_call):
@@ -46,3 +46,24 @@ def rel_diff(a, b):
     d = float(np.max(np.abs(a - b)))
     s = float(np.max(np.abs(b)))
     return d / s if s > 0 else d
+
+
+def time_interleaved(runs, repeats, batch_s):
+    """Per-call ns of each ``runs[name](n)`` in ``repeats`` rounds, the runs' batches
+    interleaved in every round (the same machine state for each: ratios of one round are
+    paired). Each batch size is calibrated once to about ``batch_s`` seconds; gc is off.
+    Returns {name: [ns per call, one per round]}."""
+    sizes = {k: time_batches(run, 1, batch_s)[1] for k, run in runs.items()}
+    out = {k: [] for k in runs}
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        for _ in range(repeats):
+            for k, run in runs.items():
+                t0 = time.perf_counter_ns()
+                run(sizes[k])
+                out[k].append((time.perf_counter_ns() - t0) / sizes[k])
+    finally:
+        if enabled:
+            gc.enable()
+    return out

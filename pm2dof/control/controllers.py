@@ -10,11 +10,11 @@ parameter update (eq. 28, explicit Euler over the sample period). Torques are cl
 type II, the actuation) the step outputs the safe torque zero and leaves theta_hat unchanged
 (see ``status``).
 """
-import array
 import math
 
 import numpy as np
 
+from ..core import _cbind
 from ..core.errors import (ArgumentError, ArgumentTypeError, GainError, ModelMismatchError,
                            SingularityError)
 from ..core.layout import Layout
@@ -34,6 +34,12 @@ def velocity_filter_alpha(sample_period, cutoff_hz):
     if cutoff_hz == 0:
         return 1.0
     return sample_period / (sample_period + 1.0 / (2.0 * math.pi * cutoff_hz))
+
+
+def _checked_on_singular(value):
+    if value not in ("raise", "zero"):
+        raise ArgumentError(f"on_singular must be 'raise' or 'zero', got {value!r}")
+    return value
 
 
 def per_actuator(name, value, n):
@@ -138,9 +144,7 @@ class _Controller:
     def __init__(self, model, base, gains, theta0, sample_period, velocity_filter_hz, tau_max,
                  on_singular, split, preload, preload_sign):
         require_model(model)
-        if on_singular not in ("raise", "zero"):
-            raise ArgumentError(f"on_singular must be 'raise' or 'zero', got {on_singular!r}")
-        self.on_singular = on_singular
+        self._on_singular = _checked_on_singular(on_singular)
         spec = model.spec
         ctl = spec.control
         self.split = ctl["split"] if split is None else split
@@ -183,13 +187,22 @@ class _Controller:
             tau_max=tau_max, preload_sign=preload_sign, preload=preload,
             closure_tol=model.closure_tolerance)
         self.params.setflags(write=False)
-        self._f = model.function(f"{self.function_name}_step")
-        self._states = (np.zeros(self.state_layout.size), np.zeros(self.state_layout.size))
+        self._f = f = model.function(f"{self.function_name}_step")
+        self._state, self._state_next = (np.zeros(self.state_layout.size),
+                                         np.zeros(self.state_layout.size))
         self._n = n
-        self._status = array.array("d", [0.0])  # array: reading [0] is ~3x cheaper than numpy
+        self._status = np.zeros(1)
         self._diag = np.zeros(4 * model.dof + 2)   # xe, v, e, edot (m each), sing, sing_parallel
-        self._extra = ()
-        self._ready = False
+        self._extra = ()      # the per-sample inputs of a law that has them (LQR's K_k, tau_ff_k)
+        # the step's fast path, one C call: state and params bound here (checked once, now),
+        # state <- state_next after the evaluation, a singular status reported (GuardTripped)
+        # when on_singular is "raise"; what it refuses takes _refused's checked path
+        self._method = _cbind.Method(
+            f, (self._state, None, None, None, None, self.params) + (None,) * (f.n_in - 6),
+            ((n,), self._state_next, self._status, self._diag), empty=np.empty,
+            guard=(2, "not_equal", _SINGULAR), feedback=(1, 0))
+        self._method.guard_on = on_singular == "raise"
+        self._run = self._not_reset
 
     def closed_loop_inputs(self, trajectory):
         """The closed loop's per-sample inputs along ``trajectory``: (N, 3m) rows [xd, xd_dot,
@@ -207,11 +220,26 @@ class _Controller:
             raise ArgumentError(f"theta_hat must be {len(th)} finite numbers "
                              f"({', '.join(self.model.param_names)}), got {th.tolist()}")
         xe = self.model.fk(qa0)
-        s = self.state_layout.unpack(self._states[0])
+        s = self.state_layout.unpack(self._state)
         s["xe_prev"][:] = xe
         s["v"][:] = 0.0
         s["theta_hat"][:] = th
-        self._ready = True
+        self._run = self._method
+
+    @staticmethod
+    def _not_reset(*args):
+        raise RuntimeError("call reset(qa0) before the first step")
+
+    @property
+    def on_singular(self):
+        """What ``step`` does at a singular pose: "raise" SingularityError, or "zero" (return
+        the safe torque zero)."""
+        return self._on_singular
+
+    @on_singular.setter
+    def on_singular(self, value):
+        self._on_singular = _checked_on_singular(value)
+        self._method.guard_on = value == "raise"
 
     def step(self, qa_meas, xd, xd_dot, xd_ddot, out=None):
         """One control sample: measured active angles (n,) rad and the desired pose (m,) m,
@@ -230,25 +258,31 @@ class _Controller:
         once, and a wrong length raises ArgumentError (a ValueError) naming the input. C-contiguous float64
         arrays go straight to the C (the fast path, no conversion).
         """
-        if not self._ready:
-            raise RuntimeError("call reset(qa0) before the first step")
-        s0, s1 = self._states
+        try:
+            return self._run(qa_meas, xd, xd_dot, xd_ddot, out)
+        except _cbind.Refused as exc:
+            return self._refused(exc, (qa_meas, xd, xd_dot, xd_ddot), out)
+
+    def _refused(self, exc, given, out):
+        """After the fast path refused a step: at a singular pose (GuardTripped: the step ran,
+        theta_hat kept) raise SingularityError; otherwise nothing ran, so take the checked
+        path: the inputs ``given`` converted once and the step run, what the binding refuses
+        raised as ArgumentError."""
+        if isinstance(exc, _cbind.GuardTripped):
+            raise self._singular_error() from None
         tau = np.empty(self._n) if out is None else out  # the C checks out's dtype and size
-        # _extra: the per-sample inputs of a law that has them (LQR's K_k, tau_ff_k)
-        try:                              # the fast path: float64 arrays straight to the C
-            self._f(s0, qa_meas, xd, xd_dot, xd_ddot, self.params, *self._extra, tau, s1,
-                    self._status, self._diag)
-        except (TypeError, ValueError):   # array-likes converted once and the call retried;
-            self.model._call(             # what the binding refuses -> ArgumentError
-                self._f, (s0, qa_meas, xd, xd_dot, xd_ddot, self.params, *self._extra),
-                (tau, s1, self._status, self._diag))
-        self._states = (s1, s0)
-        if self._status[0] == _SINGULAR and self.on_singular == "raise":
-            raise SingularityError(
-                f"controller step: {self.model.singularity_message(self._diag[-2:])}; "
-                f"theta_hat was not updated and the safe torque is zero (on_singular='zero' "
-                f"returns it instead of raising)")
+        self.model._call(self._f, (self._state, *given, self.params, *self._extra),
+                         (tau, self._state_next, self._status, self._diag))
+        self._state[:] = self._state_next
+        if self._status[0] == _SINGULAR and self._on_singular == "raise":
+            raise self._singular_error()
         return tau
+
+    def _singular_error(self):
+        return SingularityError(
+            f"controller step: {self.model.singularity_message(self._diag[-2:])}; "
+            f"theta_hat was not updated and the safe torque is zero (on_singular='zero' "
+            f"returns it instead of raising)")
 
     @property
     def status(self):
@@ -260,7 +294,7 @@ class _Controller:
     @property
     def state(self):
         """Copy of the controller state: dict of xe_prev (m,), v (m,), theta_hat (p,)."""
-        return {k: v.copy() for k, v in self.state_layout.unpack(self._states[0]).items()}
+        return {k: v.copy() for k, v in self.state_layout.unpack(self._state).items()}
 
     @property
     def diag(self):

@@ -1674,6 +1674,518 @@ static PyTypeObject FunctionType = {
 };
 
 /* ------------------------------------------------------------------------------------ */
+/* Method                                                                               */
+/* ------------------------------------------------------------------------------------ */
+
+/*
+ * Method(function, inputs, outputs, *, empty, kind=None, finite=False, guard=None,
+ *        feedback=None)
+ *
+ * The fast path of one pm2dof call (a Model method, a controller step) as a single C call:
+ * preset inputs (a controller's state and parameters) are bound by the Method, the caller
+ * gives the others and one `out` argument; the returned outputs are the caller's arrays,
+ * checked for type and exact shape, or new ones from empty(shape); the other outputs are
+ * skipped (None) or the Method's own scratch arrays; after the evaluation the outputs can be
+ * checked for finiteness and one scratch output against a guard, and one output copied
+ * back into a preset input (a controller's state: state <- state_next).
+ *
+ * Anything the fast path does not accept raises Refused with no message and no side
+ * effect: a bad argument (the binding's own refusal), a non-finite output (finite=True) or
+ * a failed guard. The caller then takes its checked path, which converts, re-evaluates and
+ * raises the typed error with its message. With feedback, a failed guard raises
+ * GuardTripped (a Refused) after the copy: the step happened, only its status is reported.
+ */
+
+#define METHOD_MAX_ARGS 64
+#define METHOD_MAX_RET 8
+#define METHOD_MAX_ND 4
+
+enum { GUARD_NONE, GUARD_AT_LEAST, GUARD_ABS_AT_MOST, GUARD_NOT_EQUAL };
+
+static PyObject *Refused;
+static PyObject *GuardTripped;
+
+typedef struct {
+    PyObject_HEAD
+    vectorcallfunc vectorcall;
+    FunctionObject *f;
+    PyObject **tmpl;     /* n_in + n_out: preset input / NULL (caller's); output: None,
+                            scratch array, or NULL (returned) */
+    Py_ssize_t n_given;  /* inputs the caller gives */
+    Py_ssize_t n_ret;    /* returned outputs */
+    Py_ssize_t ret_out[METHOD_MAX_RET];         /* their output indices */
+    PyObject *ret_shape[METHOD_MAX_RET];        /* shape tuples, for empty() */
+    int ret_nd[METHOD_MAX_RET];
+    Py_ssize_t ret_dims[METHOD_MAX_RET][METHOD_MAX_ND];
+    PyObject *empty;     /* numpy.empty */
+    PyObject *kind;      /* type of the result when n_ret > 1 (a tuple subclass), or NULL */
+    char finite;         /* every computed output must be finite */
+    char guard_on;       /* writable: the guard is checked */
+    int guard_kind;
+    Py_ssize_t guard_out;
+    double guard_v[2];
+    Py_ssize_t fb_out, fb_in; /* feedback: output fb_out copied into input fb_in (-1: none) */
+} MethodObject;
+
+static PyObject *
+refuse(void)
+{
+    PyErr_Clear();
+    PyErr_SetNone(Refused);
+    return NULL;
+}
+
+/* An exact ndarray of the returned output r's shape (dtype etc. are checked by binding). */
+static inline int
+ret_shape_ok(MethodObject *m, PyObject *o, Py_ssize_t r)
+{
+    if (!np_is_ndarray(o))
+        return 0;
+    const NpArray *a = (const NpArray *)o;
+    if (a->nd != m->ret_nd[r])
+        return 0;
+    for (int k = 0; k < a->nd; k++)
+        if (a->dimensions[k] != m->ret_dims[r][k])
+            return 0;
+    return 1;
+}
+
+static inline int
+guard_passes(MethodObject *m, const double *p, Py_ssize_t n)
+{
+    switch (m->guard_kind) {
+    case GUARD_AT_LEAST:
+        for (Py_ssize_t k = 0; k < n && k < 2; k++)
+            if (!(p[k] >= m->guard_v[k])) /* NaN fails */
+                return 0;
+        return 1;
+    case GUARD_ABS_AT_MOST:
+        for (Py_ssize_t k = 0; k < n; k++)
+            if (!(fabs(p[k]) <= m->guard_v[0]))
+                return 0;
+        return 1;
+    case GUARD_NOT_EQUAL:
+        return !(n > 0 && p[0] == m->guard_v[0]);
+    default:
+        return 1;
+    }
+}
+
+/* Whether p[0..n) is all finite: an exponent field of all ones is inf or NaN. Branch-free,
+   so the compiler may vectorise it (the error path finds the index). */
+static inline int
+all_finite(const double *p, Py_ssize_t n)
+{
+    /* (b & exponent) + one exponent step carries into the sign bit only from all ones */
+    uint64_t bad = 0;
+    for (Py_ssize_t k = 0; k < n; k++) {
+        uint64_t b;
+        memcpy(&b, p + k, sizeof b);
+        bad |= (b & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+    }
+    return (bad >> 63) == 0;
+}
+
+/*
+ * The Method's binding when every argument is an ndarray the numpy fast path takes (else -1,
+ * nothing bound: bind_all then does it all, with its messages). Presets were checked once,
+ * when the Method was built: they are not re-checked for finiteness (a controller's
+ * parameters are read-only and its state is written only by its own step, which keeps the
+ * state when a result is not finite), nor for overlap (private arrays). The caller's inputs
+ * must be finite, and the caller's out must not share memory with them.
+ */
+static int
+method_bind_fast(MethodObject *m, Work *w, PyObject *const *argv, int caller_out)
+{
+    FunctionObject *f = m->f;
+    const Py_ssize_t n_in = f->n_in, n_out = f->n_out;
+    for (Py_ssize_t k = 0; k < n_in + n_out; k++) {
+        PyObject *o = argv[k];
+        const int is_out = k >= n_in;
+        double *p = NULL;
+        if (o != Py_None || !is_out) { /* None: an output not computed; an input never */
+            if (Py_TYPE(o) != np_type || (p = np_fast(o, is_out, f->nnz[k], f->vec[k])) == NULL)
+                return -1;
+        }
+        if (is_out)
+            w->res[k - n_in] = p;
+        else
+            w->arg[k] = p;
+    }
+    for (Py_ssize_t i = 0; i < n_in; i++)
+        if (m->tmpl[i] == NULL && !all_finite(w->arg[i], f->nnz[i]))
+            return 1;
+    if (caller_out)
+        for (Py_ssize_t r = 0; r < m->n_ret; r++) {
+            const Py_ssize_t j = m->ret_out[r];
+            for (Py_ssize_t i = 0; i < n_in; i++)
+                if (m->tmpl[i] == NULL &&
+                    overlaps(w->res[j], f->nnz[n_in + j], w->arg[i], f->nnz[i]))
+                    return 1;
+        }
+    return 0;
+}
+
+static PyObject *
+Method_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject *kwnames)
+{
+    MethodObject *m = (MethodObject *)self;
+    FunctionObject *f = m->f;
+    const Py_ssize_t nargs = PyVectorcall_NARGS(nargsf);
+    if ((kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0) || nargs != m->n_given + 1) {
+        PyErr_Format(PyExc_TypeError, "Method of %U takes %zd positional arguments (%zd "
+                     "inputs, out), got %zd", f->name, m->n_given + 1, m->n_given, nargs);
+        return NULL;
+    }
+    PyObject *out = args[nargs - 1];
+    PyObject *ret[METHOD_MAX_RET];
+    PyObject *argv[METHOD_MAX_ARGS];
+    const Py_ssize_t n_in = f->n_in, n_out = f->n_out;
+    Py_ssize_t r;
+
+    /* the returned outputs: the caller's (exact type and shape), or new arrays */
+    if (out == Py_None) {
+        for (r = 0; r < m->n_ret; r++) {
+            ret[r] = PyObject_CallOneArg(m->empty, m->ret_shape[r]);
+            if (ret[r] == NULL) {
+                while (r-- > 0)
+                    Py_DECREF(ret[r]);
+                return NULL;
+            }
+        }
+    }
+    else if (m->kind == NULL) {
+        if (!ret_shape_ok(m, out, 0))
+            return refuse();
+        ret[0] = Py_NewRef(out);
+    }
+    else {
+        if (Py_TYPE(out) != (PyTypeObject *)m->kind || PyTuple_GET_SIZE(out) != m->n_ret)
+            return refuse();
+        for (r = 0; r < m->n_ret; r++)
+            if (!ret_shape_ok(m, PyTuple_GET_ITEM(out, r), r))
+                return refuse();
+        for (r = 0; r < m->n_ret; r++)
+            ret[r] = Py_NewRef(PyTuple_GET_ITEM(out, r));
+    }
+
+    Py_ssize_t g = 0;
+    for (Py_ssize_t i = 0; i < n_in; i++)
+        argv[i] = m->tmpl[i] ? m->tmpl[i] : args[g++];
+    for (Py_ssize_t j = 0, rr = 0; j < n_out; j++)
+        argv[n_in + j] = m->tmpl[n_in + j] ? m->tmpl[n_in + j] : ret[rr++];
+
+    Work tmp;
+    Work *w = work_acquire(f, &tmp);
+    Py_ssize_t held = 0;
+    int rc = 0, bad = 0, tripped = 0;
+    if (w == NULL) {
+        bad = -1;
+        goto done;
+    }
+    int fast = method_bind_fast(m, w, argv, out != Py_None);
+    if (fast > 0 || (fast < 0 && bind_all(f, w, argv, 1, NULL, &held) < 0)) {
+        bad = 1;
+        goto release;
+    }
+    rc = f->eval(w->arg, w->res, w->iw, w->w, w->mem);
+    if (rc != 0) {
+        bad = 1;
+        goto release;
+    }
+    if (m->finite) {
+        for (Py_ssize_t j = 0; j < n_out && !bad; j++)
+            if (w->res[j] && first_nonfinite(w->res[j], f->nnz[n_in + j]) >= 0)
+                bad = 1;
+        if (bad)
+            goto release;
+    }
+    if (m->fb_out >= 0)
+        memcpy((double *)w->arg[m->fb_in], w->res[m->fb_out],
+               (size_t)f->nnz[m->fb_in] * sizeof(double));
+    if (m->guard_on && m->guard_kind != GUARD_NONE &&
+        !guard_passes(m, w->res[m->guard_out], f->nnz[n_in + m->guard_out]))
+        tripped = 1;
+release:
+    work_done(f, w, held);
+done:
+    if (bad || tripped) {
+        for (r = 0; r < m->n_ret; r++)
+            Py_DECREF(ret[r]);
+        if (bad < 0)
+            return NULL;
+        if (bad)
+            return refuse();
+        PyErr_Clear();
+        PyErr_SetNone(m->fb_out >= 0 ? GuardTripped : Refused);
+        return NULL;
+    }
+    if (out != Py_None) {
+        for (r = 0; r < m->n_ret; r++)
+            Py_DECREF(ret[r]);
+        return Py_NewRef(out);
+    }
+    if (m->kind == NULL)
+        return ret[0];
+    PyObject *items = PyTuple_New(m->n_ret);
+    if (items == NULL) {
+        for (r = 0; r < m->n_ret; r++)
+            Py_DECREF(ret[r]);
+        return NULL;
+    }
+    for (r = 0; r < m->n_ret; r++)
+        PyTuple_SET_ITEM(items, r, ret[r]); /* steals */
+    PyObject *targs = PyTuple_Pack(1, items);
+    Py_DECREF(items);
+    if (targs == NULL)
+        return NULL;
+    /* tuple.__new__(kind, items): a NamedTuple without calling its Python __new__ */
+    PyObject *res = PyTuple_Type.tp_new((PyTypeObject *)m->kind, targs, NULL);
+    Py_DECREF(targs);
+    return res;
+}
+
+static int
+Method_traverse(MethodObject *m, visitproc visit, void *arg)
+{
+    Py_VISIT(m->f);
+    Py_VISIT(m->empty);
+    Py_VISIT(m->kind);
+    if (m->f && m->tmpl)
+        for (Py_ssize_t k = 0; k < m->f->n_in + m->f->n_out; k++)
+            Py_VISIT(m->tmpl[k]);
+    return 0;
+}
+
+static int
+Method_clear(MethodObject *m)
+{
+    if (m->tmpl && m->f)
+        for (Py_ssize_t k = 0; k < m->f->n_in + m->f->n_out; k++)
+            Py_CLEAR(m->tmpl[k]);
+    for (Py_ssize_t r = 0; r < METHOD_MAX_RET; r++)
+        Py_CLEAR(m->ret_shape[r]);
+    Py_CLEAR(m->empty);
+    Py_CLEAR(m->kind);
+    return 0;
+}
+
+static void
+Method_dealloc(MethodObject *m)
+{
+    PyObject_GC_UnTrack(m);
+    Method_clear(m);
+    PyMem_Free(m->tmpl);
+    Py_CLEAR(m->f);
+    Py_TYPE(m)->tp_free((PyObject *)m);
+}
+
+/* A preset argument: an ndarray the fast path takes (float64, C-contiguous, the element
+   count; writable for an output or a feedback target). */
+static int
+preset_ok(FunctionObject *f, PyObject *o, Py_ssize_t k, int writable, const char *what)
+{
+    if (np_is_ndarray(o) && np_fast(o, writable, f->nnz[k], 0) != NULL)
+        return 1;
+    PyErr_Format(PyExc_ValueError, "Method of %U: %s #%zd must be a %sC-contiguous float64 "
+                 "ndarray of %zd elements", f->name, what, k < f->n_in ? k : k - f->n_in,
+                 writable ? "writable " : "", f->nnz[k]);
+    return 0;
+}
+
+static PyObject *
+Method_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
+{
+    static char *kwlist[] = {"function", "inputs", "outputs", "empty", "kind", "finite",
+                             "guard", "feedback", NULL};
+    PyObject *fo, *inputs, *outputs, *empty = NULL, *kind = Py_None, *guard = Py_None,
+                                             *feedback = Py_None;
+    int finite = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kwds, "O!O!O!|$OOpOO:Method", kwlist, &FunctionType,
+                                     &fo, &PyTuple_Type, &inputs, &PyTuple_Type, &outputs,
+                                     &empty, &kind, &finite, &guard, &feedback))
+        return NULL;
+    FunctionObject *f = (FunctionObject *)fo;
+    if (PyTuple_GET_SIZE(inputs) != f->n_in || PyTuple_GET_SIZE(outputs) != f->n_out) {
+        PyErr_Format(PyExc_ValueError, "Method of %U: inputs and outputs must have %zd and "
+                     "%zd entries", f->name, f->n_in, f->n_out);
+        return NULL;
+    }
+    if (f->n_in + f->n_out > METHOD_MAX_ARGS) {
+        PyErr_Format(PyExc_ValueError, "Method of %U: more than %d arguments", f->name,
+                     METHOD_MAX_ARGS);
+        return NULL;
+    }
+    if (empty == NULL || !PyCallable_Check(empty) || (kind != Py_None && !(PyType_Check(kind) &&
+                                                          PyType_IsSubtype((PyTypeObject *)kind,
+                                                                           &PyTuple_Type)))) {
+        PyErr_SetString(PyExc_TypeError, "Method: empty must be callable (numpy.empty), kind "
+                        "None or a tuple subclass");
+        return NULL;
+    }
+    MethodObject *m = (MethodObject *)type->tp_alloc(type, 0);
+    if (m == NULL)
+        return NULL;
+    m->vectorcall = Method_vectorcall;
+    m->f = (FunctionObject *)Py_NewRef(fo);
+    m->empty = Py_NewRef(empty);
+    m->fb_out = m->fb_in = -1;
+    m->guard_on = 1;
+    m->finite = (char)finite;
+    const Py_ssize_t nio = f->n_in + f->n_out;
+    m->tmpl = PyMem_Calloc((size_t)nio + 1, sizeof(PyObject *));
+    if (m->tmpl == NULL) {
+        PyErr_NoMemory();
+        goto fail;
+    }
+    for (Py_ssize_t i = 0; i < f->n_in; i++) {
+        PyObject *o = PyTuple_GET_ITEM(inputs, i);
+        if (o == Py_None) {
+            m->n_given++;
+            continue;
+        }
+        if (!preset_ok(f, o, i, 0, "input"))
+            goto fail;
+        m->tmpl[i] = Py_NewRef(o);
+    }
+    for (Py_ssize_t j = 0; j < f->n_out; j++) {
+        PyObject *o = PyTuple_GET_ITEM(outputs, j);
+        if (PyTuple_Check(o)) { /* a returned output: its shape */
+            Py_ssize_t r = m->n_ret, nd = PyTuple_GET_SIZE(o), count = 1;
+            if (r >= METHOD_MAX_RET || nd > METHOD_MAX_ND) {
+                PyErr_Format(PyExc_ValueError, "Method of %U: too many returned outputs or "
+                             "dimensions", f->name);
+                goto fail;
+            }
+            for (Py_ssize_t k = 0; k < nd; k++) {
+                Py_ssize_t d = PyLong_AsSsize_t(PyTuple_GET_ITEM(o, k));
+                if (d < 0) {
+                    if (!PyErr_Occurred())
+                        PyErr_SetString(PyExc_ValueError, "Method: negative dimension");
+                    goto fail;
+                }
+                m->ret_dims[r][k] = d;
+                count *= d;
+            }
+            if (count != f->nnz[f->n_in + j]) {
+                PyErr_Format(PyExc_ValueError, "Method of %U: output #%zd has %zd elements, "
+                             "shape %R has %zd", f->name, j, f->nnz[f->n_in + j], o, count);
+                goto fail;
+            }
+            m->ret_nd[r] = (int)nd;
+            m->ret_shape[r] = Py_NewRef(o);
+            m->ret_out[r] = j;
+            m->n_ret++;
+        }
+        else if (o == Py_None) {
+            m->tmpl[f->n_in + j] = Py_NewRef(o);
+        }
+        else {
+            if (!preset_ok(f, o, f->n_in + j, 1, "output"))
+                goto fail;
+            m->tmpl[f->n_in + j] = Py_NewRef(o);
+        }
+    }
+    if (m->n_ret < 1 || (m->n_ret > 1) != (kind != Py_None)) {
+        PyErr_Format(PyExc_ValueError, "Method of %U: at least one returned output (a shape "
+                     "tuple), and kind exactly when there are several", f->name);
+        goto fail;
+    }
+    if (kind != Py_None)
+        m->kind = Py_NewRef(kind);
+    if (guard != Py_None) {
+        Py_ssize_t j;
+        const char *how;
+        PyObject *val;
+        if (!PyArg_ParseTuple(guard, "nsO:guard", &j, &how, &val))
+            goto fail;
+        if (j < 0 || j >= f->n_out || m->tmpl[f->n_in + j] == NULL ||
+            m->tmpl[f->n_in + j] == Py_None) {
+            PyErr_Format(PyExc_ValueError, "Method of %U: the guard's output #%zd must be a "
+                         "scratch output", f->name, j);
+            goto fail;
+        }
+        m->guard_out = j;
+        if (strcmp(how, "at_least") == 0) {
+            m->guard_kind = GUARD_AT_LEAST;
+            if (!PyArg_ParseTuple(val, "dd:guard", &m->guard_v[0], &m->guard_v[1]))
+                goto fail;
+        }
+        else if (strcmp(how, "abs_at_most") == 0 || strcmp(how, "not_equal") == 0) {
+            m->guard_kind = how[0] == 'a' ? GUARD_ABS_AT_MOST : GUARD_NOT_EQUAL;
+            m->guard_v[0] = PyFloat_AsDouble(val);
+            if (m->guard_v[0] == -1.0 && PyErr_Occurred())
+                goto fail;
+        }
+        else {
+            PyErr_Format(PyExc_ValueError, "Method: unknown guard '%s'", how);
+            goto fail;
+        }
+    }
+    if (feedback != Py_None) {
+        Py_ssize_t j, i;
+        if (!PyArg_ParseTuple(feedback, "nn:feedback", &j, &i))
+            goto fail;
+        if (j < 0 || j >= f->n_out || i < 0 || i >= f->n_in || m->tmpl[i] == NULL ||
+            m->tmpl[f->n_in + j] == NULL || m->tmpl[f->n_in + j] == Py_None ||
+            f->nnz[i] != f->nnz[f->n_in + j] || !preset_ok(f, m->tmpl[i], i, 1, "input")) {
+            if (!PyErr_Occurred())
+                PyErr_Format(PyExc_ValueError, "Method of %U: feedback needs a scratch output "
+                             "and a preset writable input of the same size", f->name);
+            goto fail;
+        }
+        m->fb_out = j;
+        m->fb_in = i;
+    }
+    return (PyObject *)m;
+
+fail:
+    Py_DECREF(m);
+    return NULL;
+}
+
+static PyMemberDef Method_members[] = {
+    {"function", T_OBJECT_EX, offsetof(MethodObject, f), READONLY, "The bound Function."},
+    {"guard_on", T_BOOL, offsetof(MethodObject, guard_on), 0,
+     "Whether the guard is checked (default true)."},
+    {"finite", T_BOOL, offsetof(MethodObject, finite), READONLY,
+     "Whether every computed output must be finite."},
+    {NULL, 0, 0, 0, NULL},
+};
+
+PyDoc_STRVAR(Method_doc,
+"Method(function, inputs, outputs, *, empty, kind=None, finite=False, guard=None,\n"
+"       feedback=None)\n"
+"--\n\n"
+"The fast path of one call as a single C call: m(*given_inputs, out).\n\n"
+"inputs: per input of function, None (the caller gives it, in order) or a preset\n"
+"C-contiguous float64 ndarray bound at every call. outputs: per output, a shape tuple\n"
+"(returned: the caller's out, an ndarray of exactly that shape, or a new array from\n"
+"empty(shape)), None (not computed) or a preset scratch ndarray. With several returned\n"
+"outputs the result is a kind instance (a tuple subclass) and out is None or one.\n"
+"finite: every computed output must be finite. guard: (j, 'at_least', (a, b)),\n"
+"(j, 'abs_at_most', tol) or (j, 'not_equal', v) on scratch output j. feedback: (j, i)\n"
+"copies output j into preset input i after the evaluation.\n\n"
+"Raises Refused (no message, nothing changed) when the fast path does not accept the\n"
+"call: a bad argument, a non-finite output, a failed guard; the caller then takes its\n"
+"checked path. With feedback a failed guard raises GuardTripped after the copy.");
+
+static PyTypeObject MethodType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "pm2dof.core._cbind.Method",
+    .tp_basicsize = sizeof(MethodObject),
+    .tp_dealloc = (destructor)Method_dealloc,
+    .tp_vectorcall_offset = offsetof(MethodObject, vectorcall),
+    .tp_call = PyVectorcall_Call,
+    .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_HAVE_VECTORCALL | Py_TPFLAGS_HAVE_GC,
+    .tp_doc = Method_doc,
+    .tp_traverse = (traverseproc)Method_traverse,
+    .tp_clear = (inquiry)Method_clear,
+    .tp_members = Method_members,
+    .tp_new = Method_new,
+};
+
+/* ------------------------------------------------------------------------------------ */
 /* Module                                                                               */
 /* ------------------------------------------------------------------------------------ */
 
@@ -1692,7 +2204,8 @@ static struct PyModuleDef cbind_module = {
 PyMODINIT_FUNC
 PyInit__cbind(void)
 {
-    if (PyType_Ready(&LibraryType) < 0 || PyType_Ready(&FunctionType) < 0)
+    if (PyType_Ready(&LibraryType) < 0 || PyType_Ready(&FunctionType) < 0 ||
+        PyType_Ready(&MethodType) < 0)
         return NULL;
     PyObject *m = PyModule_Create(&cbind_module);
     if (m == NULL)
@@ -1705,6 +2218,20 @@ PyInit__cbind(void)
         "pm2dof.core._cbind.NonFiniteOutputError",
         "A call with finite inputs left a NaN or inf in an output (check_outputs).",
         PyExc_ValueError, NULL);
+    Refused = PyErr_NewExceptionWithDoc(
+        "pm2dof.core._cbind.Refused",
+        "A Method's fast path did not accept the call (no message, nothing changed): take "
+        "the checked path.", PyExc_Exception, NULL);
+    GuardTripped = Refused == NULL ? NULL : PyErr_NewExceptionWithDoc(
+        "pm2dof.core._cbind.GuardTripped",
+        "A Method with feedback ran and copied its state, and its guard failed.", Refused,
+        NULL);
+    if (Refused == NULL || PyModule_AddObjectRef(m, "Refused", Refused) < 0 ||
+        GuardTripped == NULL || PyModule_AddObjectRef(m, "GuardTripped", GuardTripped) < 0 ||
+        PyModule_AddObjectRef(m, "Method", (PyObject *)&MethodType) < 0) {
+        Py_DECREF(m);
+        return NULL;
+    }
     if (EvalError == NULL || PyModule_AddObjectRef(m, "EvalError", EvalError) < 0 ||
         NonFiniteOutputError == NULL ||
         PyModule_AddObjectRef(m, "NonFiniteOutputError", NonFiniteOutputError) < 0 ||

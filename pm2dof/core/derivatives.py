@@ -20,6 +20,11 @@ import numpy as np
 
 from .errors import ArgumentError
 
+try:
+    from . import _cbind
+except ImportError:  # a source tree never built: importing pm2dof.core.model says what to do
+    _cbind = None
+
 __all__ = ["DerivativeMethods", "ForwardDynamicsJacobians", "SampledStepJacobians",
            "InverseDynamicsJacobians", "DERIVATIVE_FUNCTIONS", "continuous_AB"]
 
@@ -82,22 +87,13 @@ class DerivativeMethods:
         return out if type(out) is kind else kind(*out)
 
     def _eval_jacobians(self, short, kind, shapes, out, args):
-        """``<name>_<short>``: its first output (the value) skipped, the Jacobians written into
-        ``out``, its last output the singularity measures.
-
-        Fast path: an earlier result as ``out`` and float64 arguments go straight to the C;
-        anything the binding refuses, and a singular pose, take the model functions' checked
-        path (:meth:`Model._checked_call`), which converts, retries and raises the typed error.
-        """
-        res = out if type(out) is kind else self._outs(kind, shapes, out)
-        f, sing = self._f[short], self._sing
-        try:
-            f(*args, None, *res, sing)
-        except (TypeError, ValueError):
-            self._checked_call(short, f, args, (None, *res, sing), sing)
-            return res
-        if not (sing[0] >= self._sing_thr[0] and sing[1] >= self._sing_thr[1]):
-            self._checked_call(short, f, args, (None, *res, sing), sing)
+        """The checked path of a derivative method (its fast path, ``self._fast[short]``,
+        refused the call): ``<name>_<short>`` with its first output (the value) skipped, the
+        Jacobians written into ``out`` (:meth:`_outs`), its last output the singularity
+        measures; converts the arguments if need be and raises the typed error
+        (:meth:`Model._checked_call`)."""
+        res = self._outs(kind, shapes, out)
+        self._checked_call(short, self._f[short], args, (None, *res, self._sing), self._sing)
         return res
 
     def forward_dynamics_jacobians(self, xe, xed, tau_a, theta, out=None):
@@ -138,10 +134,13 @@ class DerivativeMethods:
         >>> bool(np.allclose(J.d_tau_a, np.linalg.solve(m.Me(q, m.theta_nominal), m.S(q).T)))
         True
         """
-        n, p, m = self.n_legs, len(self.param_names), self._m
-        return self._eval_jacobians("forward_dynamics_jacobians", ForwardDynamicsJacobians,
-                                    ((m, m), (m, m), (m, n), (m, p)), out,
-                                    (xe, xed, tau_a, theta))
+        try:
+            return self._fast["forward_dynamics_jacobians"](xe, xed, tau_a, theta, out)
+        except _cbind.Refused:
+            n, p, m = self.n_legs, len(self.param_names), self._m
+            return self._eval_jacobians("forward_dynamics_jacobians", ForwardDynamicsJacobians,
+                                        ((m, m), (m, m), (m, n), (m, p)), out,
+                                        (xe, xed, tau_a, theta))
 
     def _period(self, period):
         T = self.spec.sensing["sample_period"] if period is None else period
@@ -176,7 +175,11 @@ class DerivativeMethods:
         -------
         x_next : ndarray (2m,)
         """
-        return self._eval("sampled_step", (2 * self._m,), out, x, tau_a, theta, self._period(period))
+        T = self._period(period)
+        try:
+            return self._fast["sampled_step"](x, tau_a, theta, T, out)
+        except _cbind.Refused:
+            return self._eval("sampled_step", (2 * self._m,), out, x, tau_a, theta, T)
 
     def sampled_step_jacobians(self, x, tau_a, theta, period=None, out=None):
         """Jacobians of :meth:`sampled_step` w.r.t. the state x = [xe, xed] and the held
@@ -195,10 +198,12 @@ class DerivativeMethods:
         SampledStepJacobians
             ``d_x`` (2m, 2m), ``d_tau_a`` (2m, n) (the discrete-time A and B at x, tau_a).
         """
-        k = 2 * self._m
-        return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians,
-                                    ((k, k), (k, self.n_legs)), out,
-                                    (x, tau_a, theta, self._period(period)))
+        T, k = self._period(period), 2 * self._m
+        try:
+            return self._fast["sampled_step_jacobians"](x, tau_a, theta, T, out)
+        except _cbind.Refused:
+            return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians,
+                                        ((k, k), (k, self.n_legs)), out, (x, tau_a, theta, T))
 
     def inverse_dynamics(self, xe, xed, xedd, theta, out=None):
         """The task force u = Me xedd + Ce xed + S^T f_a (m,), N (N m for phi) (eqs. 10-12,
@@ -215,7 +220,10 @@ class DerivativeMethods:
         out : ndarray (m,), optional
             Written into and returned (no allocation).
         """
-        return self._eval("inverse_dynamics", (self._m,), out, xe, xed, xedd, theta)
+        try:
+            return self._fast["inverse_dynamics"](xe, xed, xedd, theta, out)
+        except _cbind.Refused:
+            return self._eval("inverse_dynamics", (self._m,), out, xe, xed, xedd, theta)
 
     def inverse_dynamics_jacobians(self, xe, xed, xedd, theta, out=None):
         """Jacobians of :meth:`inverse_dynamics` w.r.t. the state (reverse-mode AD; friction's
@@ -233,9 +241,12 @@ class DerivativeMethods:
         InverseDynamicsJacobians
             ``d_xe`` (m, m) N/m, ``d_xed`` (m, m) N s/m.
         """
-        m = self._m
-        return self._eval_jacobians("inverse_dynamics_jacobians", InverseDynamicsJacobians,
-                                    ((m, m), (m, m)), out, (xe, xed, xedd, theta))
+        try:
+            return self._fast["inverse_dynamics_jacobians"](xe, xed, xedd, theta, out)
+        except _cbind.Refused:
+            m = self._m
+            return self._eval_jacobians("inverse_dynamics_jacobians", InverseDynamicsJacobians,
+                                        ((m, m), (m, m)), out, (xe, xed, xedd, theta))
 
     def linearize(self, xe, xed, tau_a, theta=None, discrete=False, period=None):
         """The linearisation (A, B) of the dynamics at the state [xe, xed] and torque tau_a.

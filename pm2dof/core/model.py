@@ -7,7 +7,6 @@ generated C. Inputs are float arrays of the documented length (lists and other d
 converted, on a slower path); outputs are new arrays unless ``out=`` is given, in which case
 the result is written there (no allocation) and returned.
 """
-import array
 import json
 import sys
 import types
@@ -16,7 +15,8 @@ from pathlib import Path
 import numpy as np
 
 from . import build, paths
-from .derivatives import DERIVATIVE_FUNCTIONS, DerivativeMethods
+from .derivatives import (DERIVATIVE_FUNCTIONS, DerivativeMethods, ForwardDynamicsJacobians,
+                          InverseDynamicsJacobians, SampledStepJacobians)
 from .errors import (ArgumentError, ArgumentTypeError, ClosureError, NonFiniteError,
                      SingularityError, StaleGeneratedCodeError, WorkspaceError)
 from .task import (ENERGY_FUNCTIONS, is_rr_point, require_generated, require_rr_point,
@@ -102,6 +102,44 @@ def _check_generated(spec, gen_dir):
     return manifest, lib
 
 
+def _shapes(n, m, p):
+    """The returned shape(s) of each Model method bound by :func:`_methods` (n legs, task
+    dimension m, p parameters); a tuple of shapes for the derivative methods (their
+    NamedTuple's fields)."""
+    return {"ik": (2 * n,), "fk": (m,), "H": (2 * n - m,), "A": (2 * n - m, 2 * n),
+            "singularity": (n,), "singularity_measures": (2,), "W": (2 * n, m), "S": (n, m),
+            "Wdot": (2 * n, m), "M": (2 * n, 2 * n), "C": (2 * n, 2 * n), "Me": (m, m),
+            "Ce": (m, m), "StF": (m,), "Y": (m, p), "forward_dynamics": (m,),
+            "sampled_step": (2 * m,), "inverse_dynamics": (m,),
+            "forward_dynamics_jacobians": ((m, m), (m, m), (m, n), (m, p)),
+            "sampled_step_jacobians": ((2 * m, 2 * m), (2 * m, n)),
+            "inverse_dynamics_jacobians": ((m, m), (m, m))}
+
+
+def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
+    """The fast path of each Model method: one :class:`_cbind.Method` (one C call that binds,
+    evaluates and checks) per entry of ``shapes``. It refuses (``_cbind.Refused``) what it does
+    not accept: a bad argument, a non-finite result, a singular pose, fk's loops not closing;
+    the method then takes its checked path, which names the problem in a typed error."""
+    kinds = {"forward_dynamics_jacobians": ForwardDynamicsJacobians,
+             "sampled_step_jacobians": SampledStepJacobians,
+             "inverse_dynamics_jacobians": InverseDynamicsJacobians}
+    out = {}
+    for short, shape in shapes.items():
+        f, kind = funcs[short], kinds.get(short)
+        outs = list((None, *shape) if kind else (shape,))   # the Jacobians skip the value
+        guard = None
+        if len(outs) < f.n_out and f.names_out[-1] == "sing":   # the pose's measures, checked
+            outs.append(sing)
+            guard = (f.n_out - 1, "at_least", sing_thr)
+        elif short == "fk":                                     # the closure residuals
+            outs.append(residual)
+            guard = (1, "abs_at_most", closure_tol)
+        out[short] = _cbind.Method(f, (None,) * f.n_in, tuple(outs), empty=np.empty, kind=kind,
+                                   finite=True, guard=guard)
+    return out
+
+
 class Model(DerivativeMethods):
     """A planar parallel manipulator with its compiled model functions. Immutable.
 
@@ -128,8 +166,8 @@ class Model(DerivativeMethods):
     at once; load one Model per thread.
     """
 
-    __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_layouts", "_sing_thr",
-                 "_sing", "_residual", "_m", "_task_names", "__weakref__")
+    __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_fast", "_layouts",
+                 "_sing_thr", "_sing", "_residual", "_m", "_task_names", "__weakref__")
 
     #: names of the two singularity measures, in the order of :meth:`singularity_measures`
     SINGULARITY_KINDS = ("type I (a leg's links aligned)",
@@ -161,16 +199,18 @@ class Model(DerivativeMethods):
         if len(task_names) != m:
             _stale(spec, gen_dir, f"{lib_path} has task dimension {m}, the model file "
                                   f"{len(task_names)} ({', '.join(task_names)})")
+        sing_thr = (spec.limits["singularity_threshold"],
+                    spec.limits["parallel_singularity_threshold"])
+        sing, residual = np.zeros(2), np.zeros(spec.n_legs)
+        fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names)), sing, sing_thr,
+                        residual, spec.sensing["closure_tolerance"])
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
                      ("generated", str(gen_dir)),
-                     ("_lib", lib), ("_f", types.MappingProxyType(funcs)),
+                     ("_lib", lib), ("_f", types.MappingProxyType(funcs)), ("_fast", fast),
                      ("_layouts", types.MappingProxyType(
                          {name: Layout(name, fl) for name, fl in manifest["layouts"].items()})),
-                     ("_sing_thr", (spec.limits["singularity_threshold"],
-                                    spec.limits["parallel_singularity_threshold"])),
-                     ("_sing", array.array("d", [0.0, 0.0])),   # array: [0] ~3x faster than numpy
-                     ("_residual", np.zeros(spec.n_legs)), ("_m", m),
-                     ("_task_names", task_names)):
+                     ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual),
+                     ("_m", m), ("_task_names", task_names)):
             object.__setattr__(self, k, v)
 
     def __setattr__(self, key, value):
@@ -246,9 +286,12 @@ class Model(DerivativeMethods):
         return self._layouts[name]
 
     # --- argument handling ---------------------------------------------------------------
-    # Fast path: the arguments go straight to the C binding, which checks the dtype (float64),
-    # contiguity, element count and finiteness of every one. Only if it rejects an argument
-    # are the arguments converted (lists, ints, float32 ...) and the call retried.
+    # Fast path: each method is one call of its _cbind.Method (self._fast, built by _methods):
+    # in C it checks every argument's dtype (float64), contiguity, element count and
+    # finiteness and out's type and shape, evaluates, and checks the result (finite, the
+    # pose not singular, fk's loops closed). Whatever it refuses takes the checked path
+    # below: the arguments converted (lists, ints, float32 ...), the call retried and every
+    # problem named in a typed error.
     def _coerce(self, f, args):
         out = []
         for name, size, x in zip(f.names_in, f.sizes_in, args):
@@ -349,6 +392,10 @@ class Model(DerivativeMethods):
             if the pose at ``xe`` is not in the model's assembly mode (``fk_branch``): ``fk``
             could not return to it. So ``fk(ik(xe)[:n]) == xe`` wherever ``ik`` answers.
         """
+        try:
+            return self._fast["ik"](xe, out)      # refuses a non-finite q: named below
+        except _cbind.Refused:
+            pass
         out = self._eval("ik", (2 * self.n_legs,), out, xe)
         if not np.isfinite(out).all():
             xe = np.asarray(xe, dtype=float).ravel()
@@ -401,6 +448,10 @@ class Model(DerivativeMethods):
             freedom, the extra legs are a check of the measurement; the message names the leg
             and its residual in m.
         """
+        try:
+            return self._fast["fk"](qa, out)      # refuses a residual beyond tol: named below
+        except _cbind.Refused:
+            pass
         out = self._out(out, (self._m,))
         (qa,), _ = self._call(self._f["fk"], (qa,), (out, self._residual))
         r = self._residual
@@ -419,16 +470,25 @@ class Model(DerivativeMethods):
 
     def H(self, q, out=None):
         """Loop-closure constraints H(q) (2n - m,), m (eq. 5; 2(n-1) for a point)."""
-        return self._eval("H", (2 * self.n_legs - self._m,), out, q)
+        try:
+            return self._fast["H"](q, out)
+        except _cbind.Refused:
+            return self._eval("H", (2 * self.n_legs - self._m,), out, q)
 
     def A(self, q, out=None):
         """Constraint Jacobian A = dH/dq (2n - m, 2n) (eq. 6)."""
-        n = self.n_legs
-        return self._eval("A", (2 * n - self._m, 2 * n), out, q)
+        try:
+            return self._fast["A"](q, out)
+        except _cbind.Refused:
+            n = self.n_legs
+            return self._eval("A", (2 * n - self._m, 2 * n), out, q)
 
     def singularity(self, q, out=None):
         """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0."""
-        return self._eval("singularity", (self.n_legs,), out, q)
+        try:
+            return self._fast["singularity"](q, out)
+        except _cbind.Refused:
+            return self._eval("singularity", (self.n_legs,), out, q)
 
     def singularity_measures(self, q, out=None):
         """The two singularity measures at the pose q (2n,), each in [0, 1], 0 when singular.
@@ -440,43 +500,70 @@ class Model(DerivativeMethods):
         distal links are parallel; compared with ``limits.parallel_singularity_threshold``.
         Never raises on a singular pose: it is the measure.
         """
-        return self._eval("singularity_measures", (2,), out, q)
+        try:
+            return self._fast["singularity_measures"](q, out)
+        except _cbind.Refused:
+            return self._eval("singularity_measures", (2,), out, q)
 
     def W(self, q, out=None):
         """W (2n, m) with qd = W xed (eq. 7). Raises SingularityError near singular poses."""
-        return self._eval("W", (2 * self.n_legs, self._m), out, q)
+        try:
+            return self._fast["W"](q, out)
+        except _cbind.Refused:
+            return self._eval("W", (2 * self.n_legs, self._m), out, q)
 
     def S(self, q, out=None):
         """S (n, m), the actuated rows of W: qd_a = S xed (eq. 8)."""
-        return self._eval("S", (self.n_legs, self._m), out, q)
+        try:
+            return self._fast["S"](q, out)
+        except _cbind.Refused:
+            return self._eval("S", (self.n_legs, self._m), out, q)
 
     def Wdot(self, q, xed, out=None):
         """dW/dt (2n, m) along qd = W xed, with xed (m,) in m/s (rad/s for phi) (eq. 9)."""
-        return self._eval("Wdot", (2 * self.n_legs, self._m), out, q, xed)
+        try:
+            return self._fast["Wdot"](q, xed, out)
+        except _cbind.Refused:
+            return self._eval("Wdot", (2 * self.n_legs, self._m), out, q, xed)
 
     # --- dynamics ------------------------------------------------------------------------
     def M(self, q, theta, out=None):
         """Open-chain joint-space inertia M (2n, 2n), kg*m^2 (eq. 3)."""
-        n = self.n_legs
-        return self._eval("M", (2 * n, 2 * n), out, q, theta)
+        try:
+            return self._fast["M"](q, theta, out)
+        except _cbind.Refused:
+            n = self.n_legs
+            return self._eval("M", (2 * n, 2 * n), out, q, theta)
 
     def C(self, q, qd, theta, out=None):
         """Open-chain Coriolis/centrifugal matrix C (2n, 2n) at joint velocity qd (eq. 3)."""
-        n = self.n_legs
-        return self._eval("C", (2 * n, 2 * n), out, q, qd, theta)
+        try:
+            return self._fast["C"](q, qd, theta, out)
+        except _cbind.Refused:
+            n = self.n_legs
+            return self._eval("C", (2 * n, 2 * n), out, q, qd, theta)
 
     def Me(self, q, theta, out=None):
         """Task-space inertia Me = W^T M W (m, m), kg (kg m, kg m^2 in phi's row and column)
         (eq. 12)."""
-        return self._eval("Me", (self._m, self._m), out, q, theta)
+        try:
+            return self._fast["Me"](q, theta, out)
+        except _cbind.Refused:
+            return self._eval("Me", (self._m, self._m), out, q, theta)
 
     def Ce(self, q, xed, theta, out=None):
         """Task-space Coriolis matrix Ce = W^T (M Wdot + C W) (m, m), kg/s (eq. 12)."""
-        return self._eval("Ce", (self._m, self._m), out, q, xed, theta)
+        try:
+            return self._fast["Ce"](q, xed, theta, out)
+        except _cbind.Refused:
+            return self._eval("Ce", (self._m, self._m), out, q, xed, theta)
 
     def StF(self, q, xed, theta, out=None):
         """Friction in task space S^T f_a(S xed) (m,), N (N m for phi) (eqs. 2, 10)."""
-        return self._eval("StF", (self._m,), out, q, xed, theta)
+        try:
+            return self._fast["StF"](q, xed, theta, out)
+        except _cbind.Refused:
+            return self._eval("StF", (self._m,), out, q, xed, theta)
 
     def Y(self, q, xed, xrd, xrdd, out=None):
         """Regressor Y (m, p): Y theta = Me xrdd + Ce(q, W xed) xrd + S^T f_a(S xed) (eq. 13).
@@ -484,7 +571,10 @@ class Model(DerivativeMethods):
         Columns follow :attr:`param_names`; friction uses sign(0) = 0 (an actuated joint at
         rest contributes no Coulomb column).
         """
-        return self._eval("Y", (self._m, len(self.param_names)), out, q, xed, xrd, xrdd)
+        try:
+            return self._fast["Y"](q, xed, xrd, xrdd, out)
+        except _cbind.Refused:
+            return self._eval("Y", (self._m, len(self.param_names)), out, q, xed, xrd, xrdd)
 
     def torque_splits(self, q, u, tau_max=None, preload=None, preload_sign=None):
         """The actuator torques of every split for the task force ``u`` (m,), N (N m for phi),
@@ -529,7 +619,10 @@ class Model(DerivativeMethods):
         term smoothed over ``[plant] coulomb_smoothing_velocity`` and zero at rest; neither
         models stiction.
         """
-        return self._eval("forward_dynamics", (self._m,), out, xe, xed, tau_a, theta)
+        try:
+            return self._fast["forward_dynamics"](xe, xed, tau_a, theta, out)
+        except _cbind.Refused:
+            return self._eval("forward_dynamics", (self._m,), out, xe, xed, tau_a, theta)
 
     def Ge(self, q, theta, out=None):
         """Gravity term Ge (m,) of eq. 10, N (N m for phi): Me xedd + Ce xed + Ge + S^T f_a =

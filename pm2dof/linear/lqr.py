@@ -19,6 +19,7 @@ import numpy as np
 
 from ..control.controllers import _Controller, diagonal_gain
 from ..control.trajectory import require_trajectory
+from ..core import _cbind
 from ..core.errors import ArgumentError
 from .trajectory import linearize_trajectory
 
@@ -149,8 +150,11 @@ class LQRController(_Controller):
     def step(self, qa_meas, xd, xd_dot, xd_ddot, out=None):
         """As :meth:`pm2dof.NAController.step`, at the next sample of the plan (its K_k,
         tau_ff,k; the last ones after the plan's end)."""
-        self._extra = self._row(self._k)
-        tau = super().step(qa_meas, xd, xd_dot, xd_ddot, out)
+        self._extra = K_k, tau_ff_k = self._row(self._k)
+        try:
+            tau = self._run(qa_meas, xd, xd_dot, xd_ddot, K_k, tau_ff_k, out)
+        except _cbind.Refused as exc:
+            tau = self._refused(exc, (qa_meas, xd, xd_dot, xd_ddot), out)
         self._k += 1
         return tau
 
