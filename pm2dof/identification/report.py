@@ -174,7 +174,8 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
         :func:`~pm2dof.identification.fit.identify_log`'s result.
     """
     from ..infra.results import dumps, provenance, write_json
-    from .excitation import DEFAULT_DURATION, model_of_excitation, simulated_log
+    from .excitation import model_of_excitation, simulated_log
+    from .signals import DEFAULT_DURATION
     from .fit import MIN_JOINT_SPEED
     from .model_ref import model_for
     if log is not None:
