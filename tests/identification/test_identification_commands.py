@@ -22,7 +22,7 @@ import pytest
 import pm2dof
 from pm2dof import cli
 from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
-from pm2dof.identification.design import load_excitation, write_excitation
+from pm2dof.identification.signals import load_excitation, write_excitation
 from pm2dof.identification.log import IdentLog, read_log, write_log
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
@@ -203,7 +203,7 @@ def test_bad_numbers_are_usage_errors_naming_the_option(tmp_path, args):
 
 
 def test_multisine_refuses_a_bad_duration():
-    from pm2dof.identification.excitation import multisine
+    from pm2dof.identification.signals import multisine
     m = pm2dof.load_model()
     for bad in (-1.0, 0.0, float("nan"), 1e9):
         with pytest.raises(pm2dof.ArgumentError, match="duration must be a number of seconds"):

@@ -24,7 +24,8 @@ import pm2dof
 from pm2dof import cli
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.consistent import consistent_theta, physical_constraints
-from pm2dof.identification.excitation import excite, measured_angles, multisine
+from pm2dof.identification.excitation import excite, measured_angles
+from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
 from pm2dof.identification.fit import identify_log, lowpass, weighted_ls, zero_phase
 from pm2dof.identification.log import IdentLog, LogError, read_log
 from pm2dof.control.simulate import plant_truth, plant_vector, simulate, theta_truth
@@ -85,7 +86,7 @@ def _exact_state_regression(m, base, r, truth):
 @pytest.fixture(scope="module")
 def noise_free(m, base):
     truth = _plant_class_truth(m)
-    exc = multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5)
+    exc = trajectory_of(m, multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5))
     r = simulate(m, pm2dof.APDController(m), exc, truth=truth, quantise=False)
     return r, truth, base.fold(theta_truth(m, truth))
 
@@ -108,13 +109,8 @@ def test_exact_states_recover_the_base_parameters_to_1e_8(m, base, noise_free):
 
 
 def _pipeline_error(m, base, T, truth, pi):
-    from types import SimpleNamespace
-    ex = multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5)
-    # the same analytic excitation sampled at T (multisine() samples at the model's period)
-    t = np.arange(int(round(3.0 / T)) + 1) * T
-    exT = SimpleNamespace(t=t, period=T, **{k: np.column_stack([
-        np.interp(t, ex.t, getattr(ex, k)[:, i]) for i in range(2)]) for k in
-        ("xd", "xd_dot", "xd_ddot")})
+    # the analytic excitation sampled at T
+    exT = multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5).trajectory(T)
     r = simulate(m, pm2dof.APDController(m, sample_period=T), exT, truth=truth, quantise=False)
     log = IdentLog(t=r.t, qa=measured_angles(m, r.xe, False, truth), tau=r.tau_a)
     res = identify_log(m, log, base=base, cutoff_hz=0.2 / T, consistent=False)
@@ -223,7 +219,8 @@ def test_round_trip_simulated_robot_log_identify(tmp_path, m, capsys):
 def test_excite_writes_the_applied_torques(m):
     exc = multisine(m, duration=0.5)
     log = excite(m, exc, quantise=False)
-    r = simulate(m, pm2dof.APDController(m, on_singular="zero"), exc, quantise=False)
+    r = simulate(m, pm2dof.APDController(m, on_singular="zero"), trajectory_of(m, exc),
+                 quantise=False)
     assert np.array_equal(log.tau, r.tau_a) and np.array_equal(log.t, r.t)
     assert np.allclose([m.fk(a) for a in log.qa], r.xe, rtol=0, atol=1e-12)
 
@@ -264,10 +261,9 @@ def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, base
     """examples/excitation_shang2010.toml on the model file's plant (17-bit encoders, Stribeck
     excess): the issue's accuracy targets, and both controllers track better with the result."""
     from pathlib import Path
-    from pm2dof.identification.design import load_excitation, trajectory_of
     from pm2dof.analysis.experiment import seeded_table3
     path = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
-    log = excite(m, trajectory_of(m, load_excitation(path, m)))
+    log = excite(m, load_excitation(path, m))
     res = identify_log(m, log, base=base)
     pi = base.fold(theta_truth(m))
     err = res["estimate"] - pi

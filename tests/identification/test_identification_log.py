@@ -4,7 +4,7 @@ import pytest
 
 import pm2dof
 from pm2dof.identification.log import MIN_ROWS, IdentLog, LogError, log_poses, read_log, write_log
-from pm2dof.identification.excitation import multisine
+from pm2dof.identification.signals import multisine, trajectory_of
 
 
 @pytest.fixture(scope="module")
@@ -15,7 +15,7 @@ def m():
 @pytest.fixture(scope="module")
 def good(m):
     """A consistent log: angles of a smooth motion (ik), arbitrary torques, passive angles."""
-    ex = multisine(m, duration=0.4)
+    ex = trajectory_of(m, multisine(m, duration=0.4))
     q = np.array([m.ik(x) for x in ex.xd])
     rng = np.random.default_rng(0)
     return IdentLog(t=ex.t, qa=q[:, :3], tau=rng.normal(0, 2, (len(ex.t), 3)), qb=q[:, 3:],
