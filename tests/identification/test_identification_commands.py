@@ -177,7 +177,7 @@ def test_importing_identification_loads_no_heavy_library():
             "pm2dof.identification.excitation, pm2dof.identification.fit, "
             "pm2dof.identification.consistent, pm2dof.identification.design, "
             "pm2dof.identification.report, pm2dof.identification.monte_carlo, "
-            "pm2dof.identification.model_ref\n"
+            "pm2dof.identification.model_ref, pm2dof.identification.signals\n"
             "print(sorted({k.split('.')[0] for k in sys.modules} & {'scipy', 'casadi', "
             "'pyarrow'}))")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
