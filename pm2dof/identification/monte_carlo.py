@@ -96,15 +96,15 @@ def _one(model, base, traj, truth, rng, noise_counts, identify_kw):
     res = identify_log(model, log, base=base, **identify_kw)
     pi = base.fold(theta_truth(model, truth))
     inert = base.inertial
-    err = res["estimate"] - pi
+    err = res.estimate - pi
     large = inert & (np.abs(pi) > 0.1 * np.abs(pi[inert]).max())
-    return {"estimate": res["estimate"], "truth": pi, "std": res["std"],
-            "interval": res["interval"],
+    return {"estimate": res.estimate, "truth": pi, "std": res.std,
+            "interval": res.interval,
             "inertial_vector": float(np.linalg.norm(err[inert]) / np.linalg.norm(pi[inert])),
             "inertial_each": float(np.max(np.abs(err[large] / pi[large]))),
             "friction": float(np.max(np.abs(err[~inert] / pi[~inert]))),
-            "torque": torque_error(model, res["theta0"], truth),
-            "covered": np.abs(err) <= res["interval"], "theta0": res["theta0"],
+            "torque": torque_error(model, res.theta0, truth),
+            "covered": np.abs(err) <= res.interval, "theta0": res.theta0,
             "large": large}
 
 

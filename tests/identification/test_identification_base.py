@@ -118,12 +118,12 @@ def test_fit_of_the_simulated_multisine_recovers_viscous_friction(m, ident):
     discretisation of the derivatives bias the rest)."""
     res = identify_log(m, simulated_log(m, quantise=False), base=ident.base, consistent=False)
     truth = ident.base.fold(theta_truth(m))
-    for k, name in enumerate(res["independent_names"]):
+    for k, name in enumerate(res.independent_names):
         if name.startswith("fv"):
-            assert abs(res["estimate"][k] - truth[k]) < 0.02 * truth[k], (name, res["estimate"][k])
+            assert abs(res.estimate[k] - truth[k]) < 0.02 * truth[k], (name, res.estimate[k])
     # the full theta keeps the dependent parameters at nominal and folds into the estimate
-    th = res["theta0"]
+    th = res.theta0
     assert th.shape == (15,) and np.isfinite(th).all()
-    assert np.allclose(ident.base.fold(th), res["estimate"], rtol=1e-12, atol=1e-14)
+    assert np.allclose(ident.base.fold(th), res.estimate, rtol=1e-12, atol=1e-14)
     # the truth used for comparison is the plant's, not the nominal one
     assert not np.allclose(theta_truth(m), m.theta_nominal)

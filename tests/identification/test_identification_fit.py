@@ -14,6 +14,7 @@
   IPOPT's multipliers, it agrees with SciPy's SLSQP, and it is the plain least squares when
   that is already physical.
 """
+import dataclasses
 import json
 
 import numpy as np
@@ -26,7 +27,8 @@ from pm2dof.identification.base import base_parameters
 from pm2dof.identification.consistent import consistent_theta, physical_constraints
 from pm2dof.identification.excitation import excite, measured_angles
 from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
-from pm2dof.identification.fit import identify_log, lowpass, weighted_ls, zero_phase
+from pm2dof.identification.fit import (Identification, identify_log, lowpass, weighted_ls,
+                                      zero_phase)
 from pm2dof.identification.log import IdentLog, LogError, read_log
 from pm2dof.control.simulate import plant_truth, plant_vector, simulate, theta_truth
 
@@ -114,7 +116,7 @@ def _pipeline_error(m, base, T, truth, pi):
     r = simulate(m, pm2dof.APDController(m, sample_period=T), exT, truth=truth, quantise=False)
     log = IdentLog(t=r.t, qa=measured_angles(m, r.xe, False, truth), tau=r.tau_a)
     res = identify_log(m, log, base=base, cutoff_hz=0.2 / T, consistent=False)
-    err = res["estimate"] - pi
+    err = res.estimate - pi
     return np.linalg.norm(err[:7]) / np.linalg.norm(pi[:7]), np.abs(err[7:] / pi[7:]).max()
 
 
@@ -208,8 +210,12 @@ def test_round_trip_simulated_robot_log_identify(tmp_path, m, capsys):
     assert saved["param_names"] == list(m.param_names)
     assert np.array_equal(saved["theta0"], printed["theta0"])
     api = identify_log(m, log)
-    assert np.allclose(printed["estimate"], api["estimate"], rtol=1e-12, atol=0)
-    assert np.allclose(printed["theta0"], api["theta0"], rtol=1e-9, atol=1e-12)
+    assert isinstance(api, Identification)          # a frozen dataclass (issue 29), not a dict
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        api.theta0 = None
+    assert isinstance(api.warnings, tuple) and api.names == printed["base_parameters"]
+    assert np.allclose(printed["estimate"], api.estimate, rtol=1e-12, atol=0)
+    assert np.allclose(printed["theta0"], api.theta0, rtol=1e-9, atol=1e-12)
     # the saved theta0 seeds NA and APD (the interface of today's --save)
     na = pm2dof.NAController(m, theta0=saved["theta0"])
     assert np.isfinite(pm2dof.simulate(m, na, pm2dof.paper_move("low")).rmse)
@@ -266,14 +272,14 @@ def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, base
     log = excite(m, load_excitation(path, m))
     res = identify_log(m, log, base=base)
     pi = base.fold(theta_truth(m))
-    err = res["estimate"] - pi
+    err = res.estimate - pi
     inert = base.inertial
     large = inert & (np.abs(pi) > 0.1 * np.abs(pi[inert]).max())
     assert np.linalg.norm(err[inert]) < 0.05 * np.linalg.norm(pi[inert])       # issue: 5 %
     assert np.all(np.abs(err[large]) < 0.05 * np.abs(pi[large]))              # issue: 5 %
     assert np.all(np.abs(err[~inert]) < 0.03 * np.abs(pi[~inert]))            # issue: 3 %
-    assert not any("do not determine" in w for w in res["warnings"]), res["warnings"]
-    for speed, d in seeded_table3(m, res["theta0"]).items():
+    assert not any("do not determine" in w for w in res.warnings), res.warnings
+    for speed, d in seeded_table3(m, res.theta0).items():
         assert d["identified"]["apd_rmse"] < d["nominal"]["apd_rmse"], speed
         assert d["identified"]["na_rmse"] < d["nominal"]["na_rmse"], speed
 
@@ -281,7 +287,7 @@ def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, base
 def test_weak_excitation_is_flagged(m, base):
     log = excite(m, multisine(m, duration=3.0))
     res = identify_log(m, log, base=base, consistent=False)
-    assert any("do not determine" in w and "beta" in w for w in res["warnings"]), res["warnings"]
+    assert any("do not determine" in w and "beta" in w for w in res.warnings), res.warnings
 
 
 @pytest.fixture(scope="module")
@@ -309,6 +315,6 @@ def test_reversed_torque_sign_is_named(m, simulated_log):
                                        r"opposite sign of the model's: the torques' sign"):
         identify_log(m, flipped, consistent=False)
     res = identify_log(m, log, consistent=False)        # the log as logged: fitted, and its
-    sure = np.abs(res["estimate"]) > 2 * res["std"]     # well-determined ones agree in sign
+    sure = np.abs(res.estimate) > 2 * res.std     # well-determined ones agree in sign
     assert sure.sum() >= 3
-    assert np.all(np.sign(res["estimate"][sure]) == np.sign(res["nominal"][sure]))
+    assert np.all(np.sign(res.estimate[sure]) == np.sign(res.nominal[sure]))
