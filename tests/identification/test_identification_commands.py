@@ -208,3 +208,25 @@ def test_multisine_refuses_a_bad_duration():
     for bad in (-1.0, 0.0, float("nan"), 1e9):
         with pytest.raises(pm2dof.ArgumentError, match="duration must be a number of seconds"):
             multisine(m, duration=bad)
+
+
+def test_an_excitation_file_lists_every_problem(tmp_path):
+    """Read like model and study files (core.validate): every problem at once, each with its key
+    (issue 29); before, the first missing key stopped the reading."""
+    from pm2dof.identification.signals import ExcitationError
+    text = EXAMPLE.read_text()
+    lines = [ln for ln in text.splitlines() if not ln.startswith("b_y")]
+    lines = [("periods = 0" if ln.startswith("periods") else
+              "a_x = [0.1, nan]" if ln.startswith("a_x") else ln) for ln in lines]
+    lines.insert(lines.index("[excitation]") + 1, "speed = 2")
+    bad = tmp_path / "bad.toml"
+    bad.write_text("\n".join(lines) + "\n")
+    with pytest.raises(ExcitationError) as info:
+        load_excitation(bad)
+    err = info.value
+    assert isinstance(err, pm2dof.InputFileError) and err.path == str(bad)
+    assert [p.key for p in err.problems] == [
+        "excitation.speed", "excitation.b_y", "excitation.periods",
+        "excitation.a_x (harmonic 2)"], err.problems
+    assert str(err).startswith(f"{bad}: 4 problems:\n  [excitation.speed] unknown key")
+    assert "[excitation.b_y] missing (required)" in str(err)
