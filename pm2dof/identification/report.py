@@ -178,9 +178,9 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
     """
     from ..infra.results import dumps, provenance, write_json
     from .excitation import model_of_excitation, simulated_log
-    from .signals import DEFAULT_DURATION
     from .fit import MIN_JOINT_SPEED
     from .model_ref import model_for
+    from .signals import DEFAULT_DURATION
     if log is not None:
         simulated = {"--excitation": excitation_file is not None,
                      "--duration": duration is not None, "--exact-encoders": not quantise,

@@ -70,9 +70,9 @@ def test_bad_samples_name_what_is_wrong(call, words):
 def test_an_object_with_a_trajectorys_fields_is_not_a_trajectory():
     """The duck-typing branch went with identification's pseudo-trajectories (issue 29): an
     object with t, xd, xd_dot, xd_ddot and period is refused, naming what to build instead."""
-    import pm2dof
     from types import SimpleNamespace
 
+    import pm2dof
     from pm2dof.control.trajectory import require_trajectory
     real = Trajectory.hold([0.25, 0.26], 0.01, 0.002)
     duck = SimpleNamespace(**{k: getattr(real, k) for k in ("t", "xd", "xd_dot", "xd_ddot",

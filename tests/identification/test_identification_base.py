@@ -6,8 +6,8 @@ import pm2dof
 from pm2dof import theta_truth
 from pm2dof.identification.base import BaseParameters, identifiability
 from pm2dof.identification.excitation import simulated_log
-from pm2dof.identification.signals import multisine, trajectory_of
 from pm2dof.identification.fit import identify_log
+from pm2dof.identification.signals import multisine, trajectory_of
 
 
 @pytest.fixture(scope="module")

@@ -22,8 +22,8 @@ import pytest
 import pm2dof
 from pm2dof import cli
 from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
-from pm2dof.identification.signals import load_excitation, write_excitation
 from pm2dof.identification.log import IdentLog, read_log, write_log
+from pm2dof.identification.signals import load_excitation, write_excitation
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
 

@@ -21,10 +21,10 @@ import pm2dof
 from pm2dof import cli
 from pm2dof.control.simulate import plant_truth
 from pm2dof.identification.excitation import excite
-from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
 from pm2dof.identification.fit import choose_cutoff
 from pm2dof.identification.log import log_poses, write_log
 from pm2dof.identification.monte_carlo import TARGETS, format_monte_carlo, monte_carlo
+from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
 
 EXCITATION = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
 
