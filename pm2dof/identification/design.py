@@ -335,7 +335,7 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     if model.dof != 2:    # the Fourier excitation has an x and a y series (issue 26: not phi yet)
         raise UnsupportedMechanismError(
             f"design_excitation plans Fourier series for x and y only; model {model.name!r} "
-            f"has task {model.task_names}: use pm2dof.identification.excitation.multisine")
+            f"has task {model.task_names}: use pm2dof.identification.signals.multisine")
     if not (base_hz > 0 and harmonics >= 1 and periods >= 1 and v_max > 0 and a_max > 0
             and 0 < tau_fraction <= 1 and radius > 0):
         raise ArgumentError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
