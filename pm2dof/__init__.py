@@ -67,7 +67,7 @@ _LAZY = {
     "excite": "pm2dof.identification.excitation",
     "identify_log": "pm2dof.identification.fit",
     "design_excitation": "pm2dof.identification.design",
-    "load_excitation": "pm2dof.identification.design",
+    "load_excitation": "pm2dof.identification.signals",
     # a reference trajectory sampled elsewhere (issue 26)
     "read_trajectory": "pm2dof.analysis.reference_file",
     "ReferenceFileError": "pm2dof.analysis.reference_file",

@@ -20,7 +20,8 @@ from pm2dof.core.paths import SHIPPED_GENERATED
 BUILTIN = (ValueError, TypeError, RuntimeError, OSError, ImportError)
 MODULES = ["pm2dof.core.errors", "pm2dof.core.build", "pm2dof.control.trajectory",
            "pm2dof.studies.spec", "pm2dof.studies.store", "pm2dof.studies.runner",
-           "pm2dof.identification.log", "pm2dof.identification.design", "pm2dof.derive.run"]
+           "pm2dof.identification.log", "pm2dof.identification.signals", "pm2dof.derive.run",
+           "pm2dof.planning.pathfile", "pm2dof.analysis.reference_file"]
 
 
 def _error_classes():
@@ -39,6 +40,22 @@ def test_every_typed_error_is_a_pm2dof_error_with_a_builtin_base():
            if not (issubclass(c, pm2dof.Pm2dofError) and issubclass(c, BUILTIN))
            and c is not pm2dof.Pm2dofError]
     assert not bad, f"not a Pm2dofError with a builtin base: {bad}"
+
+
+def test_every_error_of_a_users_input_file_is_an_input_file_error():
+    """One family (issue 29): each lists the file's problems (``.problems``, ``.path``). A
+    TrajectoryError is not in it: it refuses a request (a limit, a period, a move's name), and
+    only its ReferenceFileError, raised for a file, is."""
+    from pm2dof.analysis.reference_file import ReferenceFileError
+    from pm2dof.identification.log import LogError
+    from pm2dof.identification.signals import ExcitationError
+    from pm2dof.planning.pathfile import PathFileError
+    from pm2dof.studies import StudyFileError
+    for cls in (pm2dof.ModelFileError, StudyFileError, PathFileError, LogError, ExcitationError,
+                ReferenceFileError):
+        assert issubclass(cls, pm2dof.InputFileError), cls.__name__
+    assert not issubclass(pm2dof.TrajectoryError, pm2dof.InputFileError)
+    assert issubclass(ReferenceFileError, pm2dof.TrajectoryError)
 
 
 def test_public_errors_are_exported():

@@ -19,6 +19,7 @@ import numpy as np
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from ..control.trajectory import Trajectory, TrajectoryError
+from ..core.errors import InputFileError
 from ..core.model import require_model
 from ..infra.tables import read_columns
 from .experiment import _extra_controller
@@ -35,9 +36,12 @@ TASK_COLUMNS = ("x", "y", "phi")
 PERIOD_TOLERANCE = 1e-6
 
 
-class ReferenceFileError(TrajectoryError):
+class ReferenceFileError(TrajectoryError, InputFileError):
     """A reference trajectory file that cannot be read: one line naming the file and, where it
-    applies, the row (1-based, data rows) and the column."""
+    applies, the row (1-based, data rows) and the column. A TrajectoryError (the reference it
+    would have been) and an InputFileError (a user's file, as model, study, path, log and
+    excitation files): its first problem stops the reading, since each one (a missing column,
+    a bad cell, an irregular grid) leaves nothing further to check."""
 
 
 def _derivative(values, T):
@@ -100,7 +104,7 @@ def read_trajectory(path):
     Raises
     ------
     ReferenceFileError
-        (a :class:`pm2dof.TrajectoryError`) One line naming the file and, where it applies,
+        (a :class:`pm2dof.TrajectoryError` and a :class:`pm2dof.InputFileError`) One line naming the file and, where it applies,
         the row and the column: not CSV or Parquet, a missing or unknown column, a rate or
         acceleration column missing for some coordinate, a cell that is not a finite number,
         ragged rows, t not on a regular grid.

@@ -275,19 +275,13 @@ class Trajectory:
                           self.period, self.start, self.end, self.profile)
 
 
-#: what simulate, the controllers and the linearisation read of a trajectory
-TRAJECTORY_FIELDS = ("t", "xd", "xd_dot", "xd_ddot", "period")
-
-
 def require_trajectory(trajectory):
-    """``trajectory``, or ArgumentTypeError unless it is a :class:`Trajectory` or has its
-    sampled fields (:data:`TRAJECTORY_FIELDS`, as identification's excitations do): the one
-    check of every function that takes one."""
-    if not isinstance(trajectory, Trajectory) and not all(
-            hasattr(trajectory, f) for f in TRAJECTORY_FIELDS):
+    """``trajectory``, or ArgumentTypeError unless it is a :class:`Trajectory`: the one check
+    of every function that takes one."""
+    if not isinstance(trajectory, Trajectory):
         raise ArgumentTypeError(f"trajectory must be a pm2dof.Trajectory (pm2dof.paper_move, "
-                                f"pm2dof.model_move, a Plan's .trajectory), got "
-                                f"{type(trajectory).__name__}")
+                                f"pm2dof.model_move, Trajectory.from_samples, a Plan's "
+                                f".trajectory), got {type(trajectory).__name__}")
     return trajectory
 
 

@@ -5,9 +5,11 @@ One module per job (``pm2dof identify SUBCOMMAND`` in brackets):
 
 * :mod:`.base` -- identifiability: the base parameters and the null space (``report``);
 * :mod:`.log` -- the log format: read, write, check against a model (:class:`.log.LogError`);
-* :mod:`.excitation` -- the default multi-sine, and an excitation run on the simulated robot,
-  recorded as a log (``excite``);
-* :mod:`.design` -- the D-optimal Fourier excitation, CasADi + IPOPT, and its file (``design``);
+* :mod:`.signals` -- what an excitation is: the default multi-sine, the Fourier series and
+  its file, each sampled as a :class:`pm2dof.Trajectory`;
+* :mod:`.excitation` -- an excitation run on the simulated robot, recorded as a log
+  (``excite``);
+* :mod:`.design` -- the D-optimal Fourier excitation, CasADi + IPOPT (``design``);
 * :mod:`.fit` -- the least-squares pipeline: filter, regressor, weighted least squares (``fit``);
 * :mod:`.consistent` -- the physically consistent theta (CasADi + IPOPT);
 * :mod:`.report` -- the printed and JSON report of a fit, ``--save``;

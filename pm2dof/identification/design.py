@@ -1,16 +1,10 @@
 # Optimal excitation: a periodic finite Fourier series in task space (Swevers et al. 1997), IPOPT.
 """Excitation trajectories for identification, designed by optimisation.
 
-The motion is a periodic finite Fourier series per task axis j (x, y) (Swevers, Ganseman,
-Bilgin, De Schutter & Van Brussel, 1997), w_l = 2 pi l f0, l = 1..L:
-
-    x_j(t)   = c_j + sum_l ( a_jl / w_l sin(w_l t) - b_jl / w_l cos(w_l t) )
-    xd_j(t)  = sum_l ( a_jl cos(w_l t) + b_jl sin(w_l t) )
-    xdd_j(t) = sum_l w_l ( -a_jl sin(w_l t) + b_jl cos(w_l t) )
-
-with sum_l a_jl = 0 and sum_l w_l b_jl = 0, so the motion starts and ends (after whole
-periods) at rest. :func:`design_excitation` chooses a, b, c with CasADi and IPOPT to
-maximise log det(Phi^T Phi), Phi the base regressor stacked over one period (D-optimality),
+The motion is a periodic finite Fourier series per task axis
+(:class:`~pm2dof.identification.signals.FourierExcitation`, Swevers et al. 1997), starting and
+ending at rest. :func:`design_excitation` chooses its coefficients a, b, c with CasADi and IPOPT
+to maximise log det(Phi^T Phi), Phi the base regressor stacked over one period (D-optimality),
 subject to the workspace and a singularity margin, speed, acceleration and torque limits at
 dense samples.
 
@@ -44,28 +38,24 @@ measured 308 iterations with them switched off) still moves the result: a design
 reproducible bit for bit on the same machine and install, which the file records
 (``[design.provenance]``).
 
-The file records its model relative to itself (:mod:`.model_ref`), so that it can be moved
-together with the model file.
+The file (:func:`~pm2dof.identification.signals.write_excitation`) records its model relative
+to itself (:mod:`.model_ref`), so that it can be moved together with the model file.
 """
 import contextlib
-import json
 import platform
 import threading
 import time
-from dataclasses import dataclass, field
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 
-from ..core.errors import Pm2dofError, UnsupportedMechanismError
+from ..core.errors import ArgumentError, UnsupportedMechanismError
 from ..infra.progress import bar
 from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED
-from .model_ref import mismatch, model_entries
+from .signals import FourierExcitation, multisine, trajectory_of, write_excitation
 
-__all__ = ["ExcitationError", "FourierExcitation", "design_excitation", "load_excitation",
-           "write_excitation", "trajectory_of", "regressor_condition", "check_excitation",
+__all__ = ["design_excitation", "regressor_condition", "check_excitation",
            "sample_function", "run_design", "objective_logdet", "random_start",
            "IPOPT_OPTIONS", "design_provenance"]
 
@@ -73,61 +63,6 @@ __all__ = ["ExcitationError", "FourierExcitation", "design_excitation", "load_ex
 #: written to the file's ``[design.ipopt]``.
 IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "tol": 1e-6, "acceptable_tol": 1e-4,
                  "acceptable_iter": 10, "acceptable_obj_change_tol": 1e-7}
-
-
-class ExcitationError(Pm2dofError, ValueError):
-    """An excitation file or design request that cannot be used (names the key and value)."""
-
-
-@dataclass(frozen=True)
-class FourierExcitation:
-    """A periodic finite Fourier series in task space (see the module docstring).
-
-    Attributes
-    ----------
-    base_hz : float
-        f0, Hz (the period is 1 / f0).
-    periods : int
-        Whole periods the run lasts.
-    center : ndarray (2,)
-        c, m.
-    a, b : ndarray (2, L)
-        Coefficients, m/s, per axis (x, y) and harmonic.
-    info : dict
-        What the design reported (limits, objective, condition numbers), for the file.
-    model : dict
-        The model a file records (``model``, ``model_name``, ``formulation_sha256``:
-        :mod:`.model_ref`) as read by :func:`load_excitation`; empty for a design in memory.
-    """
-    base_hz: float
-    periods: int
-    center: np.ndarray
-    a: np.ndarray
-    b: np.ndarray
-    info: dict = field(default_factory=dict)
-    model: dict = field(default_factory=dict)
-
-    harmonics = property(lambda self: self.a.shape[1])
-    max_hz = property(lambda self: self.base_hz * self.harmonics, doc="highest harmonic, Hz")
-    duration = property(lambda self: self.periods / self.base_hz, doc="s")
-
-    def evaluate(self, t):
-        """Position (N, 2) m, velocity (N, 2) m/s, acceleration (N, 2) m/s^2 at times t (N,)."""
-        t = np.asarray(t, dtype=float)[:, None]
-        w = 2 * np.pi * self.base_hz * np.arange(1, self.harmonics + 1)
-        s, c = np.sin(w * t), np.cos(w * t)
-        x = self.center + (s / w) @ self.a.T - (c / w) @ self.b.T
-        return x, c @ self.a.T + s @ self.b.T, (-s * w) @ self.a.T + (c * w) @ self.b.T
-
-
-def trajectory_of(model, exc, period=None):
-    """The excitation sampled at the controller period (default ``[sensing].sample_period``):
-    an object with t, xd, xd_dot, xd_ddot (N, 2), period and max_hz, for ``simulate`` and
-    :func:`pm2dof.identification.excitation.excite`."""
-    T = model.spec.sensing["sample_period"] if period is None else float(period)
-    t = np.arange(int(round(exc.duration / T)) + 1) * T
-    x, v, a = exc.evaluate(t)
-    return SimpleNamespace(t=t, xd=x, xd_dot=v, xd_ddot=a, period=T, max_hz=exc.max_hz)
 
 
 def _basis(f0, L, t):
@@ -400,11 +335,11 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     if model.dof != 2:    # the Fourier excitation has an x and a y series (issue 26: not phi yet)
         raise UnsupportedMechanismError(
             f"design_excitation plans Fourier series for x and y only; model {model.name!r} "
-            f"has task {model.task_names}: use pm2dof.identification.excitation.multisine")
+            f"has task {model.task_names}: use pm2dof.identification.signals.multisine")
     if not (base_hz > 0 and harmonics >= 1 and periods >= 1 and v_max > 0 and a_max > 0
             and 0 < tau_fraction <= 1 and radius > 0):
-        raise ExcitationError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
-                              "a_max > 0, 0 < tau_fraction <= 1, radius > 0")
+        raise ArgumentError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
+                            "a_max > 0, 0 < tau_fraction <= 1, radius > 0")
     args = {"base_hz": base_hz, "harmonics": int(harmonics), "periods": int(periods),
             "v_max": v_max, "a_max": a_max, "tau_fraction": tau_fraction,
             "singularity_margin": singularity_margin, "radius": radius, "samples": int(samples),
@@ -552,109 +487,9 @@ def _with_rest(exc):
                              exc.info)
 
 
-def _toml_list(v):
-    return "[" + ", ".join(format(float(x), ".17g") for x in np.ravel(v)) + "]"
-
-
-def _toml_value(v):
-    if isinstance(v, str):
-        return json.dumps(v)            # a TOML basic string
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, (list, tuple, np.ndarray)):
-        return _toml_list(v)
-    return repr(int(v)) if isinstance(v, (int, np.integer)) else repr(float(v))
-
-
-def write_excitation(path, exc, model):
-    """Write ``exc`` as TOML (``[excitation]``: the model, :mod:`.model_ref`, a model file by its
-    path relative to ``path``'s folder, and the coefficients; ``[design]`` its ``info``, a dict
-    value such as ``ipopt`` or ``provenance`` as the sub-table ``[design.<key>]``),
-    atomically. The text is a function of ``exc``, the model and the file's folder only."""
-    from ..infra.results import write_atomic
-    entries = model_entries(model, Path(path).parent)
-    lines = ["# pm2dof excitation: periodic finite Fourier series in task space (Swevers et al. "
-             "1997)",
-             "# x_j(t) = center_j + sum_l a_jl/w_l sin(w_l t) - b_jl/w_l cos(w_l t), "
-             "w_l = 2 pi l base_hz; j = x, y",
-             "# run it: pm2dof identify excite --excitation THIS_FILE --out run.csv", "",
-             "[excitation]", *(f"{k} = {_toml_value(v)}" for k, v in entries.items()),
-             f"base_hz = {exc.base_hz!r}",
-             f"periods = {int(exc.periods)}", f"center = {_toml_list(exc.center)}   # m",
-             f"a_x = {_toml_list(exc.a[0])}   # m/s", f"a_y = {_toml_list(exc.a[1])}",
-             f"b_x = {_toml_list(exc.b[0])}   # m/s", f"b_y = {_toml_list(exc.b[1])}", ""]
-    if exc.info:
-        tables = {k: v for k, v in exc.info.items() if isinstance(v, dict)}
-        lines.append("[design]")
-        lines += [f"{k} = {_toml_value(v)}" for k, v in exc.info.items() if k not in tables]
-        for name, table in tables.items():
-            lines += ["", f"[design.{name}]"] + [f"{k} = {_toml_value(v)}"
-                                                 for k, v in table.items()]
-    write_atomic(path, ("\n".join(lines) + "\n").encode())
-    return path
-
-
-def load_excitation(path, model=None):
-    """Read an excitation file (TOML, as :func:`write_excitation` writes it).
-
-    Parameters
-    ----------
-    path : str or Path
-    model : Model, optional
-        Check that the file was made for this model (:func:`.model_ref.mismatch`: by name and,
-        if recorded, formulation hash; files that name their model by name only are checked
-        by name).
-
-    Returns
-    -------
-    FourierExcitation
-        Its ``model``: the model entries the file records.
-
-    Raises
-    ------
-    ExcitationError
-        Unreadable file, a missing or malformed key (named), another model's file, or
-        coefficients that do not start at rest.
-    """
-    import tomllib
-    try:
-        with open(path, "rb") as fh:
-            d = tomllib.load(fh)
-    except (OSError, tomllib.TOMLDecodeError) as exc:
-        raise ExcitationError(f"{path}: cannot read the excitation file ({exc})") from None
-    e = d.get("excitation")
-    if not isinstance(e, dict):
-        raise ExcitationError(f"{path}: no [excitation] table")
-    try:
-        f0, periods = float(e["base_hz"]), int(e["periods"])
-        center = np.array(e["center"], dtype=float)
-        a = np.array([e["a_x"], e["a_y"]], dtype=float)
-        b = np.array([e["b_x"], e["b_y"]], dtype=float)
-    except KeyError as exc:
-        raise ExcitationError(f"{path}: [excitation] misses key {exc.args[0]!r}") from None
-    except (TypeError, ValueError) as exc:
-        raise ExcitationError(f"{path}: [excitation] has a malformed value ({exc})") from None
-    entries = {k: str(e[k]) for k in ("model", "model_name", "formulation_sha256") if k in e}
-    msg = None if model is None else mismatch(model, entries, Path(path).parent, str(path))
-    if msg:
-        raise ExcitationError(msg)
-    if not (f0 > 0 and periods >= 1 and center.shape == (2,) and a.shape == b.shape
-            and a.shape[1] >= 1 and np.isfinite(a).all() and np.isfinite(b).all()
-            and np.isfinite(center).all()):
-        raise ExcitationError(f"{path}: need base_hz > 0, periods >= 1, center of 2 numbers and "
-                              f"a_x, a_y, b_x, b_y of one finite number per harmonic")
-    exc = FourierExcitation(f0, periods, center, a, b, dict(d.get("design", {})), entries)
-    _, v, acc = exc.evaluate([0.0])
-    if np.abs(np.concatenate([v[0], acc[0]])).max() > 1e-9 * (1 + np.abs(a).max() * f0):
-        raise ExcitationError(f"{path}: the motion does not start at rest (sum of a_x, a_y and "
-                              f"of w_l b_x, w_l b_y must be 0)")
-    return exc
-
-
 def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
                tau_fraction=0.5, seed=0, echo=print, progress=None):
     """``pm2dof identify design --out FILE``: design, check at 1 ms, write."""
-    from .excitation import multisine
     t0 = time.perf_counter()
     try:
         exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
@@ -670,7 +505,7 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
                            tau_limit=tau_fraction * np.max(model.spec.limits["tau_max"]),
                            sing_min=sing_min, radius=i["radius"])
     default = regressor_condition(model, base_parameters(model),
-                                  multisine(model, duration=exc.duration))
+                                  trajectory_of(model, multisine(model, duration=exc.duration)))
     write_excitation(out, exc, model)
     echo(f"wrote {out}: {exc.harmonics} harmonics of {exc.base_hz:g} Hz (up to {exc.max_hz:g} "
          f"Hz), {exc.periods} periods = {exc.duration:g} s; IPOPT {i['ipopt_status']} after "

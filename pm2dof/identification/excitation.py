@@ -1,8 +1,8 @@
 # Excite the simulated plant and record what a real set-up would log: encoder angles and torques.
 """Excitation runs on the simulated robot, recorded as logs (``pm2dof identify excite``).
 
-* :func:`multisine` is the default excitation: a smooth multi-sine around the middle of the
-  model's first move. :mod:`.design` makes better ones.
+* The excitations themselves (the default multi-sine, the Fourier series :mod:`.design` makes,
+  its file) are :mod:`.signals`.
 * :func:`excite` runs an excitation on the simulated plant. The plant runs with its truth
   (``[plant]`` of the model file, or ``truth``), its encoders quantise the active angles, and a
   controller with the nominal model (Tables 1-2) tracks the excitation. The log holds only what
@@ -12,66 +12,19 @@
   fit`` without a log fits.
 """
 import dataclasses
-from types import SimpleNamespace
 
 import numpy as np
 
 from ..control.controllers import APDController, NAController
 from ..control.simulate import plant_vector, simulate
+from ..control.trajectory import require_trajectory
 from ..core.errors import ArgumentError
-from ..core.task import orientation_length
-from .base import region_center
 from .log import IdentLog
 from .model_ref import model_entries
+from .signals import DEFAULT_DURATION, Signal, load_excitation, multisine, trajectory_of
 
-__all__ = ["multisine", "excite", "measured_angles", "excitation_trajectory", "simulated_log",
-           "model_of_excitation", "run_excite", "DEFAULT_DURATION"]
-
-#: s: the default multi-sine's length (``--duration``)
-DEFAULT_DURATION = 4.0
-
-
-#: the longest excitation run, s (an hour: 1.8 million samples at 2 ms)
-MAX_DURATION = 3600.0
-
-
-def multisine(model, duration=DEFAULT_DURATION, amplitude=0.02, seed=1, harmonics=4,
-              base_hz=0.75):
-    """A smooth multi-sine motion around the middle of the model's first move, starting at rest.
-
-    x(t) = c + sum_k a_k (1 - cos(w_k t)) per task axis (each axis' frequencies 13 % higher
-    than the previous one's); velocity is zero at t = 0. A platform's phi moves by amplitude /
-    l rad (l its orientation length, :func:`pm2dof.core.task.orientation_length`).
-
-    Returns
-    -------
-    object with t (N,), xd, xd_dot, xd_ddot (N, m), period (s) and max_hz (the highest
-    harmonic, Hz), like a Trajectory.
-    """
-    if not (isinstance(duration, (int, float)) and np.isfinite(duration)
-            and 0 < duration <= MAX_DURATION):
-        raise ArgumentError(f"duration must be a number of seconds in (0, {MAX_DURATION:g}], "
-                            f"got {duration!r}")
-    rng = np.random.default_rng(seed)
-    T = model.spec.sensing["sample_period"]
-    t = np.arange(int(round(duration / T)) + 1) * T
-    c = region_center(model)
-    m = model.dof
-    scale = np.ones(m)                         # m per m of amplitude; phi: rad per m
-    if m == 3:
-        scale[2] = 1.0 / orientation_length(model)
-    xd, xd_dot, xd_ddot = (np.zeros((len(t), m)) for _ in range(3))
-    for axis in range(m):
-        for k in range(1, harmonics + 1):
-            w = 2 * np.pi * base_hz * k * (1.0 + 0.13 * axis)
-            a = amplitude / harmonics * rng.uniform(0.5, 1.0) * rng.choice([-1, 1]) * scale[axis]
-            xd[:, axis] += a * (1 - np.cos(w * t))
-            xd_dot[:, axis] += a * w * np.sin(w * t)
-            xd_ddot[:, axis] += a * w * w * np.cos(w * t)
-    xd += c - amplitude / 2 * scale
-    return SimpleNamespace(t=t, xd=xd, xd_dot=xd_dot, xd_ddot=xd_ddot, period=T,
-                           max_hz=base_hz * harmonics * (1.0 + 0.13 * (m - 1)))  # Hz
-
+__all__ = ["excite", "measured_angles", "excitation_signal", "simulated_log",
+           "model_of_excitation", "run_excite"]
 
 def measured_angles(model, xe, quantise=True, truth=None):
     """The encoder readings (N, n), rad, of true poses ``xe`` (N, m): the generated
@@ -85,18 +38,19 @@ def measured_angles(model, xe, quantise=True, truth=None):
     return qa
 
 
-def excite(model, trajectory, *, truth=None, quantise=True, controller="apd"):
-    """Run ``trajectory`` on the simulated plant and return its log.
+def excite(model, excitation, *, truth=None, quantise=True, controller="apd"):
+    """Run ``excitation`` on the simulated plant and return its log.
 
     Parameters
     ----------
     model : Model
-    trajectory : object with t, xd, xd_dot, xd_ddot (N, m) and period
-        The excitation, e.g. :func:`multisine` or
-        :func:`pm2dof.identification.design.trajectory_of`; the robot starts at rest at its
-        first point. Its ``max_hz`` (highest frequency, Hz), if it has one, is written into the
-        log's metadata (``excitation_max_hz``) for the filter of
-        :func:`pm2dof.identification.fit.identify_log`.
+    excitation : Signal or Trajectory
+        An excitation signal (:mod:`.signals`: :func:`~.signals.multisine`, a
+        :class:`~.signals.FourierExcitation`), sampled at the model's period, its ``max_hz``
+        (highest frequency, Hz) written into the log's metadata (``excitation_max_hz``) for the
+        filter of :func:`pm2dof.identification.fit.identify_log`; or a
+        :class:`pm2dof.Trajectory`, run as it is, its band not recorded. The robot starts at
+        rest at its first point.
     truth : dict, optional
         Plant truth (default :func:`pm2dof.plant_truth`).
     quantise : bool
@@ -114,6 +68,10 @@ def excite(model, trajectory, *, truth=None, quantise=True, controller="apd"):
     if controller not in ("apd", "na"):
         raise ArgumentError(f"controller must be 'apd' or 'na', got {controller!r}")
     ctrl = (APDController if controller == "apd" else NAController)(model, on_singular="zero")
+    if isinstance(excitation, Signal):
+        trajectory, max_hz = trajectory_of(model, excitation), excitation.max_hz
+    else:
+        trajectory, max_hz = require_trajectory(excitation), None
     r = simulate(model, ctrl, trajectory, truth=truth, quantise=quantise)
     if r.n_singular or r.n_non_finite:
         raise ArgumentError(f"the excitation run left the safe region ({r.n_singular} singular, "
@@ -126,35 +84,34 @@ def excite(model, trajectory, *, truth=None, quantise=True, controller="apd"):
             "encoders": f"{int(counts)} counts/rev" if (quantise and counts > 0) else "exact",
             "saturated_samples": r.n_saturated,
             "tracking_rmse_m": f"{r.rmse:.4g}"}
-    if getattr(trajectory, "max_hz", None):
-        meta["excitation_max_hz"] = f"{trajectory.max_hz:.6g}"
+    if max_hz:
+        meta["excitation_max_hz"] = f"{max_hz:.6g}"
     return IdentLog(t=r.t, qa=measured_angles(model, r.xe, quantise, truth), tau=r.tau_a,
                     meta=meta)
 
 
-def excitation_trajectory(model, excitation=None, duration=DEFAULT_DURATION):
-    """(trajectory, description): an excitation (a :class:`~.design.FourierExcitation`, or the
-    path of its file) sampled at the model's period, or without one the default
-    :func:`multisine` lasting ``duration`` s."""
+def excitation_signal(model, excitation=None, duration=DEFAULT_DURATION):
+    """(signal, description): an excitation (a :class:`~.signals.FourierExcitation`, or the
+    path of its file, read for ``model``), or without one the default
+    :func:`~.signals.multisine` lasting ``duration`` s."""
     if excitation is None:
         return multisine(model, duration=duration), f"the default {duration:g} s multi-sine"
-    from .design import load_excitation, trajectory_of
     if isinstance(excitation, (str, bytes)) or hasattr(excitation, "__fspath__"):
-        return trajectory_of(model, load_excitation(excitation, model)), str(excitation)
-    return trajectory_of(model, excitation), "the excitation"
+        return load_excitation(excitation, model), str(excitation)
+    return excitation, "the excitation"
 
 
 def simulated_log(model, excitation=None, duration=DEFAULT_DURATION, *, quantise=True,
                   controller="apd", progress=None):
     """An excitation run on the simulated plant, as a log (:func:`excite`); its ``source``
-    says what ran. ``excitation``, ``duration``: :func:`excitation_trajectory`."""
-    traj, what = excitation_trajectory(model, excitation, duration)
+    says what ran. ``excitation``, ``duration``: :func:`excitation_signal`."""
+    signal, what = excitation_signal(model, excitation, duration)
     if progress:
         counts = model.spec.sensing["encoder_counts_per_rev"]
         progress(f"running {what} on the simulated plant ({controller.upper()} tracking, "
                  f"{f'{int(counts)} counts/rev' if quantise and counts > 0 else 'exact'} "
                  f"encoders)")
-    log = excite(model, traj, quantise=quantise, controller=controller)
+    log = excite(model, signal, quantise=quantise, controller=controller)
     return dataclasses.replace(log, source=f"<simulated run of {what}>")
 
 
@@ -171,7 +128,7 @@ def model_of_excitation(excitation_file=None, duration=None, *, model=None, gene
     if duration is not None:
         raise ArgumentError("--duration is the length of the default multi-sine: not with "
                             "--excitation (the file sets its duration)")
-    from .design import ExcitationError, load_excitation
+    from .signals import ExcitationError
     return model_for(load_excitation(excitation_file).model, Path(excitation_file).parent,
                      str(excitation_file), model=model, generated=generated,
                      error=ExcitationError)
@@ -182,7 +139,7 @@ def run_excite(out, *, model=None, generated=None, excitation_file=None, duratio
     """``pm2dof identify excite --out LOG``: run an excitation on the simulated plant and
     write its log (CSV or Parquet by the suffix of ``out``), the model recorded relative to it.
 
-    Without ``excitation_file`` the default :func:`multisine` (``duration`` s, default
+    Without ``excitation_file`` the default :func:`~.signals.multisine` (``duration`` s, default
     :data:`DEFAULT_DURATION`) runs on ``model`` (default the paper's robot); with one, see
     :func:`model_of_excitation`. ``controller``: "apd" (default) or "na".
     """

@@ -33,6 +33,7 @@ go through it alike. Each step is a function below; :func:`identify_log` runs th
    excitation it missed the truth in up to 80 % of the Monte Carlo seeds.
 """
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -41,7 +42,7 @@ from .base import inertial_mask
 from .log import LogError, log_poses
 
 __all__ = ["lowpass", "choose_cutoff", "excitation_band", "differentiate", "stack_regressor", "weighted_ls",
-           "weak_directions", "model_error", "identify_log", "CUTOFF_FACTOR", "MIN_JOINT_SPEED",
+           "weak_directions", "model_error", "identify_log", "Identification", "CUTOFF_FACTOR", "MIN_JOINT_SPEED",
            "MODEL_ERROR_CHOICES"]
 
 #: cutoff of the low-pass = CUTOFF_FACTOR x the highest excitation frequency. A 4th-order
@@ -390,6 +391,89 @@ def _check_signs(src, ls, nominal_base, names):
                        f"(tau_i must be positive in the direction of increasing qa_i)")
 
 
+@dataclass(frozen=True, eq=False)
+class Identification:
+    """What :func:`identify_log` found in one log (r base parameters, p model parameters).
+
+    Attributes
+    ----------
+    base : BaseParameters
+        :func:`pm2dof.identification.base.base_parameters`.
+    names : list of str
+        The base parameters, readable (``alpha1 + 1 gamma2 + 1 gamma3``).
+    independent_names : list of str
+        The independent column each base parameter is named after.
+    param_names : list of str
+        The model's p parameter names.
+    estimate, std : ndarray (r,)
+        Weighted least squares and its 1 sigma (Newey-West).
+    cov : ndarray (r, r)
+        Its covariance.
+    model_error : ndarray (3, r)
+        :func:`model_error`: the shifts for :data:`MODEL_ERROR_CHOICES`.
+    interval : ndarray (r,)
+        The half-width 2 sigma + sum |model_error|.
+    nominal : ndarray (r,)
+        Tables 1-2, folded.
+    theta_ls : ndarray (p,)
+        Full theta from the estimate, the dependent parameters at nominal.
+    consistent : dict or None
+        :func:`pm2dof.identification.consistent.consistent_theta`, when computed.
+    theta0 : ndarray (p,)
+        The theta to use: the consistent one if computed, else ``theta_ls``.
+    cutoff_hz : float
+        Low-pass cutoff.
+    band_hz : float or None
+        The excitation band (None for a given cutoff); ``band_from`` says how it was found.
+    band_from : str
+    decimate : int
+        Every r-th filtered sample kept.
+    samples : int
+        Samples used (equations / m).
+    left_out_slow : int
+        Samples left out for a joint slower than ``min_joint_speed`` (rad/s).
+    min_joint_speed : float
+    rms, r2 : ndarray (m,)
+        Residual rms (N) and R^2 per task axis.
+    lag1 : float
+        Lag-1 autocorrelation of the residual.
+    inflation : float
+        Newey-West variance / OLS variance.
+    condition_number : float
+        Of the column-scaled regressor.
+    duration_s : float
+        The log's duration, s.
+    warnings : tuple of str
+    """
+    base: object
+    names: list
+    independent_names: list
+    param_names: list
+    estimate: np.ndarray
+    std: np.ndarray
+    cov: np.ndarray
+    model_error: np.ndarray
+    interval: np.ndarray
+    nominal: np.ndarray
+    theta_ls: np.ndarray
+    consistent: dict
+    theta0: np.ndarray
+    cutoff_hz: float
+    band_hz: float
+    band_from: str
+    decimate: int
+    samples: int
+    left_out_slow: int
+    min_joint_speed: float
+    rms: np.ndarray
+    r2: np.ndarray
+    lag1: float
+    inflation: float
+    condition_number: float
+    duration_s: float
+    warnings: tuple
+
+
 def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
                  decimate=None, min_joint_speed=MIN_JOINT_SPEED, consistent=True):
     """The whole pipeline on one log: base parameters with ±2 sigma, and a physical theta.
@@ -412,16 +496,9 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
 
     Returns
     -------
-    dict
-        ``base`` (the :class:`~pm2dof.identification.base.BaseParameters`), ``names`` (base
-        parameters, readable), ``independent_names``, ``estimate`` (r,),
-        ``std`` (r,) 1 sigma, ``model_error`` (3, r) (:func:`model_error`), ``interval`` (r,)
-        the half-width 2 sigma + sum |model_error|, ``nominal`` (r,) Tables 1-2 folded, ``theta_ls`` (p,) full theta
-        with the dependent parameters at nominal, ``consistent`` (dict of
-        :func:`pm2dof.identification.consistent.consistent_theta`, or None), ``theta0`` (p,) the
-        theta to use (consistent if computed), ``cutoff_hz``, ``band_hz``, ``band_from``,
-        ``decimate``, ``samples`` (equations / 2), ``left_out_slow``, residual statistics
-        ``rms`` (2,) N, ``r2`` (2,), ``lag1``, ``inflation``; ``warnings`` (list of str).
+    Identification
+        The estimate with its intervals, the physical theta (``theta0``), the filter, the
+        residual statistics and the warnings.
 
     Raises
     ------
@@ -481,23 +558,20 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
         warnings.append(f"{int(sat.any(axis=1).sum())} rows have a torque at its limit "
                         f"(tau_max): if the drive clipped it, the logged torque is not the "
                         f"applied one")
-    out = {"base": base, "names": base.labels(), "independent_names": inames,
-           "estimate": ls["estimate"], "std": ls["std"], "cov": ls["cov"],
-           "model_error": shifts, "interval": 2 * ls["std"] + np.abs(shifts).sum(axis=0),
-           "nominal": base.fold(nominal), "theta_ls": theta_ls,
-           "cutoff_hz": float(cutoff_hz), "band_hz": band, "band_from": how,
-           "decimate": st["decimate"], "samples": K, "left_out_slow": st["n_slow"],
-           "min_joint_speed": min_joint_speed, "rms": ls["rms"], "r2": ls["r2"],
-           "lag1": ls["lag1"], "inflation": ls["inflation"],
-           "condition_number": float(sv[0] / sv[-1]), "duration_s": log.duration,
-           "warnings": warnings, "consistent": None, "theta0": theta_ls,
-           "param_names": list(base.names)}
+    c = None
     if consistent:
         from .consistent import consistent_theta
         c = consistent_theta(ls["A"], ls["b"], base, nominal)
-        out["consistent"] = c
-        out["theta0"] = c["theta"]
         if any(not s.startswith(("Solve_Succeeded", "Solved_To_Acceptable", "not needed"))
                for s in c["status"]):
             warnings.append(f"IPOPT: {c['status']}: the physical theta may not be optimal")
-    return out
+    return Identification(
+        base=base, names=base.labels(), independent_names=inames, param_names=list(base.names),
+        estimate=ls["estimate"], std=ls["std"], cov=ls["cov"], model_error=shifts,
+        interval=2 * ls["std"] + np.abs(shifts).sum(axis=0), nominal=base.fold(nominal),
+        theta_ls=theta_ls, consistent=c, theta0=theta_ls if c is None else c["theta"],
+        cutoff_hz=float(cutoff_hz), band_hz=band, band_from=how, decimate=st["decimate"],
+        samples=K, left_out_slow=st["n_slow"], min_joint_speed=min_joint_speed, rms=ls["rms"],
+        r2=ls["r2"], lag1=ls["lag1"], inflation=ls["inflation"],
+        condition_number=float(sv[0] / sv[-1]), duration_s=log.duration,
+        warnings=tuple(warnings))

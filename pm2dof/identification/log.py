@@ -33,7 +33,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import ClosureError, Pm2dofError, WorkspaceError
+from ..core.errors import ClosureError, InputFileError, WorkspaceError
+from ..core.validate import Problems
 from ..infra.results import write_atomic
 from .model_ref import mismatch, rebase
 
@@ -45,8 +46,12 @@ MIN_ROWS = 50
 _FAMILY = re.compile(r"(qa|qb|tau)(\d+)$")
 
 
-class LogError(Pm2dofError, ValueError):
-    """A log that cannot be used: names the file, the row (1-based data row) and the column."""
+class LogError(InputFileError):
+    """A log that cannot be used: names the file, the row (1-based data row) and the column.
+
+    A log file's format problems are listed all at once (one per line, as model and study
+    files list theirs: :class:`~pm2dof.core.errors.InputFileError`), up to a problem that makes
+    the rest meaningless (no such file, a row that does not parse, missing columns)."""
 
 
 @dataclass(frozen=True)
@@ -120,7 +125,9 @@ def _row(log_t, k):
 
 
 def _from_columns(cols, meta, source, time_tolerance):
-    """Build and check an IdentLog from name -> float array; every error names the column."""
+    """Build and check an IdentLog from name -> float array; every problem names the column,
+    and every problem found is raised at once (one :class:`LogError`)."""
+    pr = Problems(source, LogError)
     fam = {}
     for name in cols:
         m = _FAMILY.fullmatch(name)
@@ -135,17 +142,17 @@ def _from_columns(cols, meta, source, time_tolerance):
     unknown = (f"; not recognised: {', '.join(extra)} (names are lower case, no separator: "
                f"qa1, tau1, qb1)" if extra else "")
     if missing:
-        raise LogError(f"{source}: missing column(s) {', '.join(missing)} (have "
-                       f"{', '.join(cols) or 'none'}; the format is t, qa1..qan, tau1..taun, "
-                       f"optionally qb1..qbn){unknown}")
+        pr.stop(None, f"missing column(s) {', '.join(missing)} (have "
+                      f"{', '.join(cols) or 'none'}; the format is t, qa1..qan, tau1..taun, "
+                      f"optionally qb1..qbn){unknown}")
     n = max(fam["qa"])
     for name, idx in fam.items():
         want = set(range(1, n + 1))
         if set(idx) != want:
             gap = sorted(want - set(idx)) or sorted(set(idx) - want)
-            raise LogError(f"{source}: columns {name}1..{name}{n} expected (qa1..qa{n} give {n} "
-                           f"legs), but {name}{gap[0]} is "
-                           f"{'missing' if gap[0] <= n else 'extra'}{unknown}")
+            pr.add(None, f"columns {name}1..{name}{n} expected (qa1..qa{n} give {n} legs), but "
+                         f"{name}{gap[0]} is {'missing' if gap[0] <= n else 'extra'}{unknown}")
+    pr.raise_if_any()
     ncol = {k: np.asarray(v, dtype=float) for k, v in cols.items()}
     N = len(ncol["t"])
     names = ["t"] + [f"{f}{i}" for f in ("qa", "tau", "qb") if f in fam for i in range(1, n + 1)]
@@ -153,43 +160,50 @@ def _from_columns(cols, meta, source, time_tolerance):
         bad = np.flatnonzero(~np.isfinite(ncol[c]))
         if bad.size:
             k = int(bad[0])
-            raise LogError(f"{source}: column {c} is not finite at row {k + 1} "
-                           f"({float(ncol[c][k])!r}; {bad.size} such row(s)): NaN rows cannot be used, "
-                           f"cut the log or fill the gap before identifying")
+            pr.add(None, f"column {c} is not finite at row {k + 1} ({float(ncol[c][k])!r}; "
+                         f"{bad.size} such row(s)): NaN rows cannot be used, cut the log or "
+                         f"fill the gap before identifying")
     if N < MIN_ROWS:
-        raise LogError(f"{source}: too short: {N} rows, need at least {MIN_ROWS}")
+        pr.add(None, f"too short: {N} rows, need at least {MIN_ROWS}")
     t = ncol["t"]
-    dt = np.diff(t)
-    bad = np.flatnonzero(dt <= 0)
-    if bad.size:
-        k = int(bad[0]) + 1
-        raise LogError(f"{source}: column t is not increasing at {_row(t, k)}: the row before "
-                       f"has t = {t[k - 1]:.6g} s ({bad.size} such row(s)); sort the log or "
-                       f"remove repeated samples")
-    T = float(np.median(dt))
-    try:
-        T_meta = float(meta.get("sample_period", "nan"))
-    except ValueError:
-        T_meta = math.nan
-    if math.isfinite(T_meta) and T_meta > 0 and abs(T / T_meta - 1) > 0.01:
-        raise LogError(f"{source}: column t steps {T:.6g} s (median) but the log's sample_period "
-                       f"is {T_meta:g} s: t must be in s (a log in ms steps 1000 times too far)")
-    dev = np.abs(dt - T) / T
-    bad = np.flatnonzero(dev > time_tolerance)
-    if bad.size:
-        k = int(bad[0]) + 1
-        raise LogError(f"{source}: column t is irregular at {_row(t, k)}: step "
-                       f"{dt[k - 1]:.6g} s against the median period {T:.6g} s ({bad.size} "
-                       f"irregular step(s), largest {dev.max():.3g} T; allowed "
-                       f"{time_tolerance:g} T; --time-tolerance, or read_log(time_tolerance=...), "
-                       f"allows more). The filter and the differences need a regular "
-                       f"grid: resample the log, or cut it at the gap")
+    if N >= 2 and np.isfinite(t).all():
+        _check_time(pr, t, meta, time_tolerance)
+    pr.raise_if_any()
     log = IdentLog(t=t, qa=np.column_stack([ncol[f"qa{i}"] for i in range(1, n + 1)]),
                    tau=np.column_stack([ncol[f"tau{i}"] for i in range(1, n + 1)]),
                    qb=(np.column_stack([ncol[f"qb{i}"] for i in range(1, n + 1)])
                        if "qb" in fam else None),
                    meta=meta, source=source, ignored=tuple(extra))
     return log
+
+
+def _check_time(pr, t, meta, time_tolerance):
+    """Record in ``pr`` a column t that is not increasing, not in s (against the log's
+    ``sample_period``) or irregular beyond ``time_tolerance``."""
+    dt = np.diff(t)
+    bad = np.flatnonzero(dt <= 0)
+    if bad.size:
+        k = int(bad[0]) + 1
+        return pr.add(None, f"column t is not increasing at {_row(t, k)}: the row before has "
+                            f"t = {t[k - 1]:.6g} s ({bad.size} such row(s)); sort the log or "
+                            f"remove repeated samples")
+    T = float(np.median(dt))
+    try:
+        T_meta = float(meta.get("sample_period", "nan"))
+    except ValueError:
+        T_meta = math.nan
+    if math.isfinite(T_meta) and T_meta > 0 and abs(T / T_meta - 1) > 0.01:
+        pr.add(None, f"column t steps {T:.6g} s (median) but the log's sample_period is "
+                     f"{T_meta:g} s: t must be in s (a log in ms steps 1000 times too far)")
+    dev = np.abs(dt - T) / T
+    bad = np.flatnonzero(dev > time_tolerance)
+    if bad.size:
+        k = int(bad[0]) + 1
+        pr.add(None, f"column t is irregular at {_row(t, k)}: step {dt[k - 1]:.6g} s against "
+                     f"the median period {T:.6g} s ({bad.size} irregular step(s), largest "
+                     f"{dev.max():.3g} T; allowed {time_tolerance:g} T; --time-tolerance, or "
+                     f"read_log(time_tolerance=...), allows more). The filter and the "
+                     f"differences need a regular grid: resample the log, or cut it at the gap")
 
 
 def _decode(path, raw):
@@ -208,13 +222,14 @@ def _decode(path, raw):
             if line.lstrip().startswith(b"#"):
                 lines[no] = line.decode("latin-1")
                 continue
-            raise LogError(f"{path}: line {no + 1} is not text (byte 0x{line[exc.start]:02x} at "
-                           f"column {exc.start + 1} is not UTF-8): a log is a UTF-8 CSV or a "
-                           f"Parquet file") from None
+            Problems(path, LogError).stop(
+                None, f"line {no + 1} is not text (byte 0x{line[exc.start]:02x} at column "
+                      f"{exc.start + 1} is not UTF-8): a log is a UTF-8 CSV or a Parquet file")
     return "\n".join(lines)
 
 
 def _read_csv(path):
+    pr = Problems(path, LogError)
     text = _decode(path, Path(path).read_bytes())
     meta, lines = {}, text.splitlines()
     k = 0
@@ -227,32 +242,33 @@ def _read_csv(path):
     try:
         header = [h.strip() for h in next(reader)]
     except StopIteration:
-        raise LogError(f"{path}: no header row (expected t, qa1..qan, tau1..taun)") from None
+        pr.stop(None, "no header row (expected t, qa1..qan, tau1..taun)")
     if len(set(header)) != len(header):
         dup = sorted({h for h in header if header.count(h) > 1})
-        raise LogError(f"{path}: column(s) {', '.join(dup)} appear more than once")
+        pr.stop(None, f"column(s) {', '.join(dup)} appear more than once")
     cols = {h: [] for h in header}
     for r, row in enumerate(reader):
         if not row or all(not c.strip() for c in row):
             continue
         if len(row) != len(header):
-            raise LogError(f"{path}: row {r + 1} (line {k + r + 2}) has {len(row)} fields, the "
-                           f"header {len(header)}")
+            pr.stop(None, f"row {r + 1} (line {k + r + 2}) has {len(row)} fields, the header "
+                          f"{len(header)}")
         for h, c in zip(header, row):
             try:
                 cols[h].append(float(c))
             except ValueError:
-                raise LogError(f"{path}: row {r + 1} (line {k + r + 2}), column {h}: "
-                               f"{c!r} is not a number") from None
+                pr.stop(None, f"row {r + 1} (line {k + r + 2}), column {h}: {c!r} is not a "
+                              f"number")
     return cols, meta
 
 
 def _read_parquet(path):
     import pyarrow.parquet as pq
+    pr = Problems(path, LogError)
     try:
         table = pq.read_table(path)
     except Exception as exc:  # pyarrow raises its own types for corrupt files
-        raise LogError(f"{path}: not a readable Parquet file ({exc})") from None
+        pr.stop(None, f"not a readable Parquet file ({exc})")
     meta = {k.decode()[len("pm2dof."):]: v.decode()
             for k, v in (table.schema.metadata or {}).items() if k.startswith(b"pm2dof.")}
     cols = {}
@@ -261,7 +277,8 @@ def _read_parquet(path):
             cols[name] = np.asarray(table.column(name).to_numpy(zero_copy_only=False),
                                     dtype=float)
         except (TypeError, ValueError) as exc:
-            raise LogError(f"{path}: column {name} is not numeric ({exc})") from None
+            pr.add(None, f"column {name} is not numeric ({exc})")
+    pr.raise_if_any()
     return cols, meta
 
 
@@ -288,14 +305,15 @@ def read_log(path, *, time_tolerance=1e-3):
     """
     path = Path(path)
     if not path.is_file():
-        raise LogError(f"{path}: no such log file")
+        Problems(path, LogError).stop(None, "no such log file")
     suffix = path.suffix.lower()
     if suffix == ".csv":
         cols, meta = _read_csv(path)
     elif suffix in (".parquet", ".pq"):
         cols, meta = _read_parquet(path)
     else:
-        raise LogError(f"{path}: unknown log format {suffix!r} (use .csv or .parquet)")
+        Problems(path, LogError).stop(None, f"unknown log format {suffix!r} (use .csv or "
+                                            f".parquet)")
     return _from_columns(cols, meta, str(path), time_tolerance)
 
 

@@ -96,15 +96,15 @@ def _one(model, base, traj, truth, rng, noise_counts, identify_kw):
     res = identify_log(model, log, base=base, **identify_kw)
     pi = base.fold(theta_truth(model, truth))
     inert = base.inertial
-    err = res["estimate"] - pi
+    err = res.estimate - pi
     large = inert & (np.abs(pi) > 0.1 * np.abs(pi[inert]).max())
-    return {"estimate": res["estimate"], "truth": pi, "std": res["std"],
-            "interval": res["interval"],
+    return {"estimate": res.estimate, "truth": pi, "std": res.std,
+            "interval": res.interval,
             "inertial_vector": float(np.linalg.norm(err[inert]) / np.linalg.norm(pi[inert])),
             "inertial_each": float(np.max(np.abs(err[large] / pi[large]))),
             "friction": float(np.max(np.abs(err[~inert] / pi[~inert]))),
-            "torque": torque_error(model, res["theta0"], truth),
-            "covered": np.abs(err) <= res["interval"], "theta0": res["theta0"],
+            "torque": torque_error(model, res.theta0, truth),
+            "covered": np.abs(err) <= res.interval, "theta0": res.theta0,
             "large": large}
 
 
@@ -114,8 +114,9 @@ def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", iden
 
     Parameters
     ----------
-    traj : trajectory-like (t, xd, xd_dot, xd_ddot, period, max_hz)
-        The excitation (e.g. :func:`pm2dof.identification.design.trajectory_of`).
+    traj : Signal or Trajectory
+        The excitation, as :func:`pm2dof.identification.excitation.excite` takes it (a
+        :mod:`~pm2dof.identification.signals` signal records its band in the logs).
     truth : "random" or "model"
         A fresh :func:`random_truth` per seed, or the model file's [plant] every time (then
         only the encoder noise differs).
@@ -252,12 +253,13 @@ def run_monte_carlo(seeds, *, model=None, generated=None, excitation_file=None,
     the one the excitation file records unless ``model`` is given (then it must be that one);
     without a file the default multi-sine of ``duration`` s runs on ``model``."""
     from ..infra.results import dumps
-    from .excitation import DEFAULT_DURATION, excitation_trajectory, model_of_excitation
+    from .excitation import excitation_signal, model_of_excitation
+    from .signals import DEFAULT_DURATION
     if seeds < 1:
         raise ArgumentError(f"monte-carlo needs N >= 1 seeds, got {seeds}")
     model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
-    traj, what = excitation_trajectory(model, excitation_file,
-                                       DEFAULT_DURATION if duration is None else duration)
+    traj, what = excitation_signal(model, excitation_file,
+                                   DEFAULT_DURATION if duration is None else duration)
     if progress:
         progress(f"{seeds} seeds of {what}: random plant truth and encoder noise, excite, "
                  f"identify")

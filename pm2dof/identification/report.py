@@ -2,6 +2,8 @@
 """Text and JSON reports of :func:`pm2dof.identification.fit.identify_log`, and
 ``pm2dof identify fit``: a log read from a file and a simulated excitation run go through the
 same pipeline and the same report."""
+import dataclasses
+
 import numpy as np
 
 from ..control.simulate import theta_truth
@@ -37,8 +39,8 @@ def plant_comparison(model, log, res):
         is outside [plant]'s interval on a well-determined base parameter (|estimate| > its
         interval), else None.
     """
-    plant = res["base"].fold(theta_truth(model))
-    est, half = res["estimate"], res["interval"]
+    plant = res.base.fold(theta_truth(model))
+    est, half = res.estimate, res.interval
     if log.meta.get("source") == SIMULATED_SOURCE:
         return ("Table 3 runs on the model file's [plant], the robot this log was simulated "
                 "with", None)
@@ -51,7 +53,7 @@ def plant_comparison(model, log, res):
     k = int(np.argmax(np.where(far, np.abs(est - plant) / half, -np.inf)))
     return what, (f"the identified theta is outside its interval of [plant]'s on {int(far.sum())} "
                   f"of {int(sure.sum())} well-determined base parameters (e.g. "
-                  f"{res['names'][k]}: {est[k]:.4g} +- {half[k]:.2g}, [plant] {plant[k]:.4g}): "
+                  f"{res.names[k]}: {est[k]:.4g} +- {half[k]:.2g}, [plant] {plant[k]:.4g}): "
                   f"the log's robot is not [plant], so Table 3 is no verdict on the "
                   f"identification")
 
@@ -60,28 +62,28 @@ def summary(model, log, res):
     """JSON-ready numbers of one identification (the base parameters, the physical theta,
     the filter and the residual statistics; the plant truth if the log is simulated with the
     model file's [plant])."""
-    c = res["consistent"]
+    c = res.consistent
     out = {"log": log.source, "model": model.name, "rows": len(log.t),
            "duration_s": log.duration, "sample_period_s": log.period,
            "filter": {"kind": "Butterworth, zero-phase (scipy.signal.sosfiltfilt)",
-                      "order": 4, "cutoff_hz": res["cutoff_hz"], "band_hz": res["band_hz"],
-                      "band_from": res["band_from"], "decimate": res["decimate"]},
-           "samples_used": res["samples"], "samples_left_out_slow": res["left_out_slow"],
-           "min_joint_speed_rad_s": res["min_joint_speed"],
-           "residual_rms_N": res["rms"], "r2": res["r2"], "residual_lag1": res["lag1"],
-           "condition_number": res["condition_number"],
-           "base_parameters": res["names"], "estimate": res["estimate"],
-           "two_sigma": 2 * res["std"], "interval": res["interval"],
-           "model_error": {c: d for c, d in zip(MODEL_ERROR_CHOICES, res["model_error"])},
-           "nominal": res["nominal"],
-           "param_names": list(model.param_names), "theta0": res["theta0"],
-           "theta_least_squares": res["theta_ls"], "warnings": res["warnings"]}
+                      "order": 4, "cutoff_hz": res.cutoff_hz, "band_hz": res.band_hz,
+                      "band_from": res.band_from, "decimate": res.decimate},
+           "samples_used": res.samples, "samples_left_out_slow": res.left_out_slow,
+           "min_joint_speed_rad_s": res.min_joint_speed,
+           "residual_rms_N": res.rms, "r2": res.r2, "residual_lag1": res.lag1,
+           "condition_number": res.condition_number,
+           "base_parameters": res.names, "estimate": res.estimate,
+           "two_sigma": 2 * res.std, "interval": res.interval,
+           "model_error": {c: d for c, d in zip(MODEL_ERROR_CHOICES, res.model_error)},
+           "nominal": res.nominal,
+           "param_names": list(model.param_names), "theta0": res.theta0,
+           "theta_least_squares": res.theta_ls, "warnings": list(res.warnings)}
     if c is not None:
         out["physical"] = {"base": c["base"], "active_constraints": c["active"],
                            "ipopt_status": list(c["status"]),
                            "objective_increase": c["objective"] - c["unconstrained_objective"]}
     if log.meta.get("source") == SIMULATED_SOURCE:
-        out["truth"] = res["base"].fold(theta_truth(model))
+        out["truth"] = res.base.fold(theta_truth(model))
     return out
 
 
@@ -170,13 +172,15 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
 
     Returns
     -------
-    dict
-        :func:`~pm2dof.identification.fit.identify_log`'s result.
+    Identification
+        :func:`~pm2dof.identification.fit.identify_log`'s result (with the warning that the
+        model was assumed, if it was).
     """
     from ..infra.results import dumps, provenance, write_json
-    from .excitation import DEFAULT_DURATION, model_of_excitation, simulated_log
+    from .excitation import model_of_excitation, simulated_log
     from .fit import MIN_JOINT_SPEED
     from .model_ref import model_for
+    from .signals import DEFAULT_DURATION
     if log is not None:
         simulated = {"--excitation": excitation_file is not None,
                      "--duration": duration is not None, "--exact-encoders": not quantise,
@@ -214,14 +218,14 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
             raise LogError(f"{exc} ({assumed})") from None
         raise
     if assumed:
-        res["warnings"].insert(0, assumed)
+        res = dataclasses.replace(res, warnings=(assumed, *res.warnings))
     s = summary(model, log, res)
     seeded = ""
     if seed:
         from .monte_carlo import format_seeded_table3
         if progress:
             progress("Table 3 with Tables 1-2 and with the identified theta")
-        s["table3"] = seed(model, res["theta0"])
+        s["table3"] = seed(model, res.theta0)
         what, warn = plant_comparison(model, log, res)
         s["table3_comparison"] = what
         if warn:

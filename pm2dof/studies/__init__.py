@@ -5,8 +5,8 @@
 into Parquet by store) -> ``study_report`` (report). ``pm2dof study run|report|bench`` are the
 commands. Nothing here is imported by ``import pm2dof`` until used.
 """
-from .spec import SHIPPED_STUDIES, Study, StudyFileError, read_study, resolve_study
-from .evaluate import check_study, rollout_setup, run_chunk
+from .spec import SHIPPED_STUDIES, Study, StudyFileError, check_study, read_study, resolve_study
+from .evaluate import rollout_setup, run_chunk
 from .store import StudyOutError, read_results
 from .runner import StudyRunError, run_study
 

@@ -21,7 +21,7 @@ from ..core.model import load_model
 from ..core.status import Status
 from .draws import draw_columns, plant_of, sample_draw
 
-__all__ = ["run_chunk", "check_study", "make_controller", "make_trajectory", "rollout_setup",
+__all__ = ["run_chunk", "make_controller", "make_trajectory", "rollout_setup",
            "METRICS", "columns"]
 
 #: metric columns of every row (units in docs/study-file.md, "The results folder")
@@ -190,19 +190,6 @@ def _metrics(out, rows, xd, xe, tau, status, n_move, n_ok):
     out["n_saturated"][rows] = np.sum(held & (status == Status.SATURATED), axis=1)
     out["n_non_finite"][rows] = np.sum(held & (status == Status.NON_FINITE), axis=1)
     out["diverged"][rows] = diverged
-
-
-def check_study(study, model):
-    """Everything that needs the model, before any rollout: each controller variant is accepted
-    by its controller, each move is reachable and clear of both singularity kinds. Raises
-    :class:`StudyFileError` listing every refused variant and move (``[[controllers]]`` and
-    ``study.moves`` entries numbered from 1). :func:`pm2dof.studies.read_study` makes these
-    checks too, in the same pass as the file's own."""
-    from ..core.validate import Problems
-    from .spec import StudyFileError
-    pr = Problems(study.path, StudyFileError)
-    model_problems(pr, model, study.variants, study.moves)
-    pr.raise_if_any()
 
 
 def model_problems(pr, model, variants, moves):

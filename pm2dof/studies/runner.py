@@ -19,7 +19,8 @@ from ..core.errors import ArgumentError, Pm2dofError
 from ..core.model import load_model
 from ..infra.progress import Progress
 from ..infra.progress import bar as progress_bar
-from .evaluate import check_study, run_chunk
+from .evaluate import run_chunk
+from .spec import check_study
 from .store import finish_out, prepare_out, write_chunk
 
 __all__ = ["StudyRunError", "run_study", "connect", "Progress"]

@@ -27,8 +27,8 @@ from ..core.errors import InputFileError, ModelFileError
 from ..core.paths import resolve_model
 from ..core.validate import Problems, entry
 
-__all__ = ["StudyFileError", "Study", "Variant", "Distribution", "read_study", "UNCERTAINTY",
-           "LAWS"]
+__all__ = ["StudyFileError", "check_study", "Study", "Variant", "Distribution", "read_study",
+           "UNCERTAINTY", "LAWS"]
 
 
 class StudyFileError(InputFileError):
@@ -414,6 +414,18 @@ def _model_path(pr, folder, ref, key="study.model"):
         return pr.add(key, f"no model file at {model_path} (a shipped model's name, "
                       f"or a path relative to the study file's folder)")
     return str(model_path)
+
+
+def check_study(study, model):
+    """Everything that needs the model, before any rollout: each controller variant is accepted
+    by its controller, each move is reachable and clear of both singularity kinds. Raises
+    :class:`StudyFileError` listing every refused variant and move (``[[controllers]]`` and
+    ``study.moves`` entries numbered from 1). :func:`pm2dof.studies.read_study` makes these
+    checks too, in the same pass as the file's own."""
+    from .evaluate import model_problems
+    pr = Problems(study.path, StudyFileError)
+    model_problems(pr, model, study.variants, study.moves)
+    pr.raise_if_any()
 
 
 def _check_with_model(pr, fields, variants):

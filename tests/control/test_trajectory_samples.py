@@ -65,3 +65,22 @@ def test_bad_samples_name_what_is_wrong(call, words):
     with pytest.raises(TrajectoryError) as exc:
         call()
     assert words in str(exc.value)
+
+
+def test_an_object_with_a_trajectorys_fields_is_not_a_trajectory():
+    """The duck-typing branch went with identification's pseudo-trajectories (issue 29): an
+    object with t, xd, xd_dot, xd_ddot and period is refused, naming what to build instead."""
+    from types import SimpleNamespace
+
+    import pm2dof
+    from pm2dof.control.trajectory import require_trajectory
+    real = Trajectory.hold([0.25, 0.26], 0.01, 0.002)
+    duck = SimpleNamespace(**{k: getattr(real, k) for k in ("t", "xd", "xd_dot", "xd_ddot",
+                                                            "period")})
+    assert require_trajectory(real) is real
+    with pytest.raises(pm2dof.ArgumentTypeError, match=r"trajectory must be a pm2dof.Trajectory "
+                       r"\(.*Trajectory.from_samples.*\), got SimpleNamespace"):
+        require_trajectory(duck)
+    m = pm2dof.load_model()
+    with pytest.raises(pm2dof.ArgumentTypeError, match="got SimpleNamespace"):
+        pm2dof.simulate(m, pm2dof.APDController(m), duck)

@@ -5,8 +5,9 @@ import pytest
 import pm2dof
 from pm2dof import theta_truth
 from pm2dof.identification.base import BaseParameters, identifiability
-from pm2dof.identification.excitation import multisine, simulated_log
+from pm2dof.identification.excitation import simulated_log
 from pm2dof.identification.fit import identify_log
+from pm2dof.identification.signals import multisine, trajectory_of
 
 
 @pytest.fixture(scope="module")
@@ -103,7 +104,7 @@ def test_base_parameters_are_frozen_and_checked(m, ident):
 
 
 def test_multisine_starts_at_rest_and_is_consistent(m):
-    ex = multisine(m, duration=1.0)
+    ex = trajectory_of(m, multisine(m, duration=1.0))
     assert np.allclose(ex.xd_dot[0], 0.0, atol=1e-15)
     T = ex.period
     # central differences of the analytic signal match its derivatives to O(T^2 w^3 a)
@@ -117,12 +118,12 @@ def test_fit_of_the_simulated_multisine_recovers_viscous_friction(m, ident):
     discretisation of the derivatives bias the rest)."""
     res = identify_log(m, simulated_log(m, quantise=False), base=ident.base, consistent=False)
     truth = ident.base.fold(theta_truth(m))
-    for k, name in enumerate(res["independent_names"]):
+    for k, name in enumerate(res.independent_names):
         if name.startswith("fv"):
-            assert abs(res["estimate"][k] - truth[k]) < 0.02 * truth[k], (name, res["estimate"][k])
+            assert abs(res.estimate[k] - truth[k]) < 0.02 * truth[k], (name, res.estimate[k])
     # the full theta keeps the dependent parameters at nominal and folds into the estimate
-    th = res["theta0"]
+    th = res.theta0
     assert th.shape == (15,) and np.isfinite(th).all()
-    assert np.allclose(ident.base.fold(th), res["estimate"], rtol=1e-12, atol=1e-14)
+    assert np.allclose(ident.base.fold(th), res.estimate, rtol=1e-12, atol=1e-14)
     # the truth used for comparison is the plant's, not the nominal one
     assert not np.allclose(theta_truth(m), m.theta_nominal)

@@ -22,8 +22,8 @@ import pytest
 import pm2dof
 from pm2dof import cli
 from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
-from pm2dof.identification.design import load_excitation, write_excitation
 from pm2dof.identification.log import IdentLog, read_log, write_log
+from pm2dof.identification.signals import load_excitation, write_excitation
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
 
@@ -177,7 +177,7 @@ def test_importing_identification_loads_no_heavy_library():
             "pm2dof.identification.excitation, pm2dof.identification.fit, "
             "pm2dof.identification.consistent, pm2dof.identification.design, "
             "pm2dof.identification.report, pm2dof.identification.monte_carlo, "
-            "pm2dof.identification.model_ref\n"
+            "pm2dof.identification.model_ref, pm2dof.identification.signals\n"
             "print(sorted({k.split('.')[0] for k in sys.modules} & {'scipy', 'casadi', "
             "'pyarrow'}))")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
@@ -203,8 +203,30 @@ def test_bad_numbers_are_usage_errors_naming_the_option(tmp_path, args):
 
 
 def test_multisine_refuses_a_bad_duration():
-    from pm2dof.identification.excitation import multisine
+    from pm2dof.identification.signals import multisine
     m = pm2dof.load_model()
     for bad in (-1.0, 0.0, float("nan"), 1e9):
         with pytest.raises(pm2dof.ArgumentError, match="duration must be a number of seconds"):
             multisine(m, duration=bad)
+
+
+def test_an_excitation_file_lists_every_problem(tmp_path):
+    """Read like model and study files (core.validate): every problem at once, each with its key
+    (issue 29); before, the first missing key stopped the reading."""
+    from pm2dof.identification.signals import ExcitationError
+    text = EXAMPLE.read_text()
+    lines = [ln for ln in text.splitlines() if not ln.startswith("b_y")]
+    lines = [("periods = 0" if ln.startswith("periods") else
+              "a_x = [0.1, nan]" if ln.startswith("a_x") else ln) for ln in lines]
+    lines.insert(lines.index("[excitation]") + 1, "speed = 2")
+    bad = tmp_path / "bad.toml"
+    bad.write_text("\n".join(lines) + "\n")
+    with pytest.raises(ExcitationError) as info:
+        load_excitation(bad)
+    err = info.value
+    assert isinstance(err, pm2dof.InputFileError) and err.path == str(bad)
+    assert [p.key for p in err.problems] == [
+        "excitation.speed", "excitation.b_y", "excitation.periods",
+        "excitation.a_x (harmonic 2)"], err.problems
+    assert str(err).startswith(f"{bad}: 4 problems:\n  [excitation.speed] unknown key")
+    assert "[excitation.b_y] missing (required)" in str(err)

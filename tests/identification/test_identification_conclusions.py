@@ -20,11 +20,11 @@ import pytest
 import pm2dof
 from pm2dof import cli
 from pm2dof.control.simulate import plant_truth
-from pm2dof.identification.design import load_excitation, trajectory_of
-from pm2dof.identification.excitation import excite, multisine
+from pm2dof.identification.excitation import excite
 from pm2dof.identification.fit import choose_cutoff
 from pm2dof.identification.log import log_poses, write_log
 from pm2dof.identification.monte_carlo import TARGETS, format_monte_carlo, monte_carlo
+from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
 
 EXCITATION = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
 
@@ -36,7 +36,7 @@ def m():
 
 @pytest.fixture(scope="module")
 def designed(m):
-    return trajectory_of(m, load_excitation(EXCITATION, m))
+    return load_excitation(EXCITATION, m)
 
 
 def _other_robot(m):
@@ -168,7 +168,7 @@ def test_messages_about_logs_name_units_option_and_model(tmp_path, m, capsys):
     d = json.loads(capsys.readouterr().out)
     assert d["warnings"][0].startswith("model 'shang2010' (") and "assumed" in d["warnings"][0]
     other = pm2dof.load_model("fivebar")
-    q = np.array([other.ik(x) for x in multisine(other, duration=0.5).xd])
+    q = np.array([other.ik(x) for x in trajectory_of(other, multisine(other, duration=0.5)).xd])
     five = dataclasses.replace(log, t=log.t[:len(q)], qa=q[:, :2], tau=np.zeros((len(q), 2)))
     path = write_log(tmp_path / "fivebar.csv", five)   # a two-leg log: it cannot be shang2010
     assert cli.main(["identify", "fit", str(path)]) != 0

@@ -8,15 +8,13 @@ import pytest
 
 import pm2dof
 from pm2dof import cli
-from pm2dof.identification.design import (IPOPT_OPTIONS, ExcitationError,
-                                               FourierExcitation, _casadi_openblas,
-                                               check_excitation, design_excitation,
-                                               load_excitation, objective_logdet, random_start,
-                                               regressor_condition, sample_function,
-                                               trajectory_of, write_excitation)
+from pm2dof.identification.design import (IPOPT_OPTIONS, _casadi_openblas, check_excitation,
+                                          design_excitation, objective_logdet, random_start,
+                                          regressor_condition, sample_function)
+from pm2dof.identification.signals import (ExcitationError, FourierExcitation, load_excitation,
+                                           multisine, trajectory_of, write_excitation)
 from pm2dof.infra.progress import Progress
 from pm2dof.identification.base import base_parameters
-from pm2dof.identification.excitation import multisine
 from pm2dof.identification.log import read_log
 
 LIMITS = {"v_max": 0.4, "a_max": 6.0, "tau_fraction": 0.3}
@@ -145,7 +143,7 @@ def test_file_round_trip_and_bad_files(tmp_path, m, designed):
     with pytest.raises(ExcitationError, match=r"written for model 'fivebar'.*not 'shang2010'"):
         load_excitation(bad, m)
     bad.write_text("\n".join(l for l in text.splitlines() if not l.startswith("b_y")))
-    with pytest.raises(ExcitationError, match="misses key 'b_y'"):
+    with pytest.raises(ExcitationError, match=r"\[excitation.b_y\] missing \(required\)"):
         load_excitation(bad, m)
     moving = FourierExcitation(0.5, 1, designed.center, designed.a + 0.01, designed.b)
     write_excitation(bad, moving, m)
@@ -164,7 +162,8 @@ def test_excite_runs_the_file(tmp_path, m, designed, capsys):
     # the optimised motion is better conditioned than the default multi-sine of excite
     base = base_parameters(m)
     assert (regressor_condition(m, base, traj)[0]
-            < regressor_condition(m, base, multisine(m, duration=designed.duration))[0])
+            < regressor_condition(m, base, trajectory_of(
+                m, multisine(m, duration=designed.duration)))[0])
 
 
 def test_design_is_deterministic_and_runs_ipopt_blas_on_one_thread(m, designed):

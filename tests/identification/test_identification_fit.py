@@ -14,6 +14,7 @@
   IPOPT's multipliers, it agrees with SciPy's SLSQP, and it is the plain least squares when
   that is already physical.
 """
+import dataclasses
 import json
 
 import numpy as np
@@ -24,8 +25,10 @@ import pm2dof
 from pm2dof import cli
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.consistent import consistent_theta, physical_constraints
-from pm2dof.identification.excitation import excite, measured_angles, multisine
-from pm2dof.identification.fit import identify_log, lowpass, weighted_ls, zero_phase
+from pm2dof.identification.excitation import excite, measured_angles
+from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
+from pm2dof.identification.fit import (Identification, identify_log, lowpass, weighted_ls,
+                                      zero_phase)
 from pm2dof.identification.log import IdentLog, LogError, read_log
 from pm2dof.control.simulate import plant_truth, plant_vector, simulate, theta_truth
 
@@ -85,7 +88,7 @@ def _exact_state_regression(m, base, r, truth):
 @pytest.fixture(scope="module")
 def noise_free(m, base):
     truth = _plant_class_truth(m)
-    exc = multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5)
+    exc = trajectory_of(m, multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5))
     r = simulate(m, pm2dof.APDController(m), exc, truth=truth, quantise=False)
     return r, truth, base.fold(theta_truth(m, truth))
 
@@ -108,17 +111,12 @@ def test_exact_states_recover_the_base_parameters_to_1e_8(m, base, noise_free):
 
 
 def _pipeline_error(m, base, T, truth, pi):
-    from types import SimpleNamespace
-    ex = multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5)
-    # the same analytic excitation sampled at T (multisine() samples at the model's period)
-    t = np.arange(int(round(3.0 / T)) + 1) * T
-    exT = SimpleNamespace(t=t, period=T, **{k: np.column_stack([
-        np.interp(t, ex.t, getattr(ex, k)[:, i]) for i in range(2)]) for k in
-        ("xd", "xd_dot", "xd_ddot")})
+    # the analytic excitation sampled at T
+    exT = multisine(m, duration=3.0, amplitude=0.08, harmonics=8, base_hz=0.5).trajectory(T)
     r = simulate(m, pm2dof.APDController(m, sample_period=T), exT, truth=truth, quantise=False)
     log = IdentLog(t=r.t, qa=measured_angles(m, r.xe, False, truth), tau=r.tau_a)
     res = identify_log(m, log, base=base, cutoff_hz=0.2 / T, consistent=False)
-    err = res["estimate"] - pi
+    err = res.estimate - pi
     return np.linalg.norm(err[:7]) / np.linalg.norm(pi[:7]), np.abs(err[7:] / pi[7:]).max()
 
 
@@ -212,8 +210,12 @@ def test_round_trip_simulated_robot_log_identify(tmp_path, m, capsys):
     assert saved["param_names"] == list(m.param_names)
     assert np.array_equal(saved["theta0"], printed["theta0"])
     api = identify_log(m, log)
-    assert np.allclose(printed["estimate"], api["estimate"], rtol=1e-12, atol=0)
-    assert np.allclose(printed["theta0"], api["theta0"], rtol=1e-9, atol=1e-12)
+    assert isinstance(api, Identification)          # a frozen dataclass (issue 29), not a dict
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        api.theta0 = None
+    assert isinstance(api.warnings, tuple) and api.names == printed["base_parameters"]
+    assert np.allclose(printed["estimate"], api.estimate, rtol=1e-12, atol=0)
+    assert np.allclose(printed["theta0"], api.theta0, rtol=1e-9, atol=1e-12)
     # the saved theta0 seeds NA and APD (the interface of today's --save)
     na = pm2dof.NAController(m, theta0=saved["theta0"])
     assert np.isfinite(pm2dof.simulate(m, na, pm2dof.paper_move("low")).rmse)
@@ -223,7 +225,8 @@ def test_round_trip_simulated_robot_log_identify(tmp_path, m, capsys):
 def test_excite_writes_the_applied_torques(m):
     exc = multisine(m, duration=0.5)
     log = excite(m, exc, quantise=False)
-    r = simulate(m, pm2dof.APDController(m, on_singular="zero"), exc, quantise=False)
+    r = simulate(m, pm2dof.APDController(m, on_singular="zero"), trajectory_of(m, exc),
+                 quantise=False)
     assert np.array_equal(log.tau, r.tau_a) and np.array_equal(log.t, r.t)
     assert np.allclose([m.fk(a) for a in log.qa], r.xe, rtol=0, atol=1e-12)
 
@@ -264,20 +267,19 @@ def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, base
     """examples/excitation_shang2010.toml on the model file's plant (17-bit encoders, Stribeck
     excess): the issue's accuracy targets, and both controllers track better with the result."""
     from pathlib import Path
-    from pm2dof.identification.design import load_excitation, trajectory_of
     from pm2dof.analysis.experiment import seeded_table3
     path = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
-    log = excite(m, trajectory_of(m, load_excitation(path, m)))
+    log = excite(m, load_excitation(path, m))
     res = identify_log(m, log, base=base)
     pi = base.fold(theta_truth(m))
-    err = res["estimate"] - pi
+    err = res.estimate - pi
     inert = base.inertial
     large = inert & (np.abs(pi) > 0.1 * np.abs(pi[inert]).max())
     assert np.linalg.norm(err[inert]) < 0.05 * np.linalg.norm(pi[inert])       # issue: 5 %
     assert np.all(np.abs(err[large]) < 0.05 * np.abs(pi[large]))              # issue: 5 %
     assert np.all(np.abs(err[~inert]) < 0.03 * np.abs(pi[~inert]))            # issue: 3 %
-    assert not any("do not determine" in w for w in res["warnings"]), res["warnings"]
-    for speed, d in seeded_table3(m, res["theta0"]).items():
+    assert not any("do not determine" in w for w in res.warnings), res.warnings
+    for speed, d in seeded_table3(m, res.theta0).items():
         assert d["identified"]["apd_rmse"] < d["nominal"]["apd_rmse"], speed
         assert d["identified"]["na_rmse"] < d["nominal"]["na_rmse"], speed
 
@@ -285,7 +287,7 @@ def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, base
 def test_weak_excitation_is_flagged(m, base):
     log = excite(m, multisine(m, duration=3.0))
     res = identify_log(m, log, base=base, consistent=False)
-    assert any("do not determine" in w and "beta" in w for w in res["warnings"]), res["warnings"]
+    assert any("do not determine" in w and "beta" in w for w in res.warnings), res.warnings
 
 
 @pytest.fixture(scope="module")
@@ -313,6 +315,6 @@ def test_reversed_torque_sign_is_named(m, simulated_log):
                                        r"opposite sign of the model's: the torques' sign"):
         identify_log(m, flipped, consistent=False)
     res = identify_log(m, log, consistent=False)        # the log as logged: fitted, and its
-    sure = np.abs(res["estimate"]) > 2 * res["std"]     # well-determined ones agree in sign
+    sure = np.abs(res.estimate) > 2 * res.std     # well-determined ones agree in sign
     assert sure.sum() >= 3
-    assert np.all(np.sign(res["estimate"][sure]) == np.sign(res["nominal"][sure]))
+    assert np.all(np.sign(res.estimate[sure]) == np.sign(res.nominal[sure]))

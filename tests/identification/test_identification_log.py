@@ -4,7 +4,7 @@ import pytest
 
 import pm2dof
 from pm2dof.identification.log import MIN_ROWS, IdentLog, LogError, log_poses, read_log, write_log
-from pm2dof.identification.excitation import multisine
+from pm2dof.identification.signals import multisine, trajectory_of
 
 
 @pytest.fixture(scope="module")
@@ -15,7 +15,7 @@ def m():
 @pytest.fixture(scope="module")
 def good(m):
     """A consistent log: angles of a smooth motion (ik), arbitrary torques, passive angles."""
-    ex = multisine(m, duration=0.4)
+    ex = trajectory_of(m, multisine(m, duration=0.4))
     q = np.array([m.ik(x) for x in ex.xd])
     rng = np.random.default_rng(0)
     return IdentLog(t=ex.t, qa=q[:, :3], tau=rng.normal(0, 2, (len(ex.t), 3)), qb=q[:, 3:],
@@ -73,6 +73,25 @@ def test_nan_row_is_named(tmp_path, good):
     tau[17, 1] = np.nan
     with pytest.raises(LogError, match=r"column tau2 is not finite at row 18 .*1 such row"):
         read_log(_csv(tmp_path, IdentLog(t=good.t, qa=good.qa, tau=tau)))
+
+
+def test_every_problem_of_a_log_file_is_listed_at_once(tmp_path, good):
+    """A LogError is an InputFileError like a model file's: the file, then one line per problem
+    (issue 29); before, only the first (the NaN) was named."""
+    from pm2dof.core.errors import InputFileError
+    t, tau = good.t.copy(), good.tau.copy()
+    tau[17, 1] = np.nan
+    t[30] = t[28]
+    p = _csv(tmp_path, IdentLog(t=t, qa=good.qa, tau=tau))
+    with pytest.raises(LogError) as info:
+        read_log(p)
+    err = info.value
+    assert isinstance(err, InputFileError) and err.path == str(p) and len(err.problems) == 2
+    assert str(err).splitlines() == [
+        f"{p}: 2 problems:",
+        f"  {err.problems[0].reason}", f"  {err.problems[1].reason}"]
+    assert err.problems[0].reason.startswith("column tau2 is not finite at row 18 ")
+    assert err.problems[1].reason.startswith("column t is not increasing at row 31 ")
 
 
 def test_text_in_a_number_field_is_named(tmp_path, good):
