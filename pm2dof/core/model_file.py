@@ -21,7 +21,8 @@ from .errors import ModelFileError
 from .validate import RULES, Problems, entry
 
 __all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS", "LEG_KINDS",
-           "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem"]
+           "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem", "attachment_points",
+           "theta_groups"]
 
 # friction model -> its per-leg parameters after the inertial ones (eq. 2 and extensions)
 FRICTION_MODELS = {
@@ -301,7 +302,8 @@ def _stroke(pr, key, value):
 
 
 def leg_reach_problem(leg, point):
-    """Why ``leg`` cannot put its tip at ``point`` (x, y) in m in its configured branch, or None.
+    """Why ``leg`` cannot put its tip at ``point`` (x, y) in m in its configured branch (a
+    phrase that follows "leg i"), or None.
 
     RRR: |point - A| within [|la - lb|, la + lb]. PRR: within lb of the rail's line, with the
     slider of the chosen branch on the rail (0 <= qa <= its length). RPR: |point - A| within
@@ -311,21 +313,21 @@ def leg_reach_problem(leg, point):
     if leg.kind == "RRR":
         lo, hi = abs(leg.la - leg.lb), leg.la + leg.lb
         if not lo <= dist <= hi:
-            return f"{dist:.4g} m from its base, its reach is [{lo:.4g}, {hi:.4g}] m"
+            return f"is {dist:.4g} m from its base, its reach is [{lo:.4g}, {hi:.4g}] m"
         return None
     if leg.kind == "RPR":
         lo, hi = leg.stroke
         if not lo <= dist <= hi:
-            return f"{dist:.4g} m from its base, its stroke is [{lo:.4g}, {hi:.4g}] m"
+            return f"is {dist:.4g} m from its base, its stroke is [{lo:.4g}, {hi:.4g}] m"
         return None
     length = leg.rail_length
     d = ((leg.rail_end[0] - leg.base[0]) / length, (leg.rail_end[1] - leg.base[1]) / length)
     h = d[0] * e[1] - d[1] * e[0]                        # signed distance from the rail's line
     if abs(h) > leg.lb:
-        return f"{abs(h):.4g} m from its rail's line, farther than its link lb = {leg.lb:.4g} m"
+        return f"is {abs(h):.4g} m from its rail's line, farther than its link lb = {leg.lb:.4g} m"
     s = d[0] * e[0] + d[1] * e[1] + leg.elbow * math.sqrt(leg.lb ** 2 - h ** 2)
     if not 0.0 <= s <= length:
-        return (f"its slider would be at {s:.4g} m along the rail, which runs from 0 to "
+        return (f"would need its slider at {s:.4g} m along its rail, which runs from 0 to "
                 f"{length:.4g} m")
     return None
 
@@ -602,7 +604,7 @@ def _check_reach(pr, key, legs, pose):
         why = leg_reach_problem(leg, point)
         if why is not None:
             what = "the legs cannot meet" if len(pose) == 2 else "the platform is out of reach"
-            pr.add(key, f"{what} at {pose}: leg {i + 1} ({leg.kind}) is {why}")
+            pr.add(key, f"{what} at {pose}: leg {i + 1} ({leg.kind}) {why}")
 
 
 def _read_platform(pr, doc, effector, legs):
@@ -681,7 +683,8 @@ def read_model_file(path):
     model = pr.table("model", doc.get("model"))
     name, friction, constants, fk_branch, substeps, effector, gravity = _read_model(pr, model)
     effector = effector or "point"
-    gravity = gravity or (0.0, 0.0)
+    if gravity is None:  # invalid (reported): theta's names as with gravity, for the checks
+        gravity = (math.nan, math.nan)
     m = len(END_EFFECTORS[effector])
     legs_raw = doc.get("legs")
     if not isinstance(legs_raw, list) or len(legs_raw) < m:

@@ -15,13 +15,12 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from pm2dof.core import paths
 from pm2dof.core.model_file import Leg, read_model_file, theta_groups
 from pm2dof.derive.dynamics import Dynamics
 from pm2dof.derive.kinematics import FK_NEWTON_STEPS, Kinematics
 from pm2dof.derive.symbols import Symbols
-
 from tests.mechanisms.independent import Mechanism, lumped_theta, random_links
+from tests.mechanisms.models import model_path
 
 G = (0.0, -9.81)
 
@@ -44,9 +43,9 @@ def _rpr_point(spec):
 
 def _mixed_platform(spec):
     """One leg of each kind on a platform, with gravity."""
-    rrr = read_model_file(paths.resolve_model("rrr3_platform")).legs[0]
-    prr = read_model_file(paths.resolve_model("prr3_platform")).legs[1]
-    rpr = read_model_file(paths.resolve_model("rpr3_platform")).legs[2]
+    rrr = read_model_file(model_path("rrr3_platform")).legs[0]
+    prr = read_model_file(model_path("prr3_platform")).legs[1]
+    rpr = read_model_file(model_path("rpr3_platform")).legs[2]
     return _with(spec, legs=(rrr, prr, rpr), gravity=G)
 
 
@@ -127,7 +126,7 @@ class Lambdified:
 @functools.lru_cache(maxsize=None)
 def _case(name):
     model, change = CASES[name]
-    spec = read_model_file(paths.resolve_model(model))
+    spec = read_model_file(model_path(model))
     if change is not None:
         spec = change(spec)
     return Lambdified(spec)
@@ -319,3 +318,28 @@ def test_energy_conserved_along_the_forward_dynamics(name):
     assert moved > 1e-4                               # the robot did move
     T0 = max(abs(E[0]), float(lam.T(lam.q(xe0), xe0, xed0, theta=th).ravel()[0]))
     assert np.abs(E - E[0]).max() < 1e-9 * max(T0, 1e-3)
+
+
+PLATFORMS = ["rrr3_platform", "rrr4_platform", "prr3_platform_gravity", "rpr3_platform"]
+
+
+@pytest.mark.parametrize("name", PLATFORMS)
+def test_platform_fk_converges_from_a_seed_within_5cm_and_0p2rad(name):
+    """FK_NEWTON_STEPS Gauss-Newton steps reach rounding from seeds 0.05 m and 0.2 rad away
+    (the previous sample is ~1e-3 m away); a seed too far off leaves a closure residual."""
+    s = Setup(name, seed=7)
+    lam = s.lam
+    for _ in range(20):
+        xe, q, _ = s.state()
+        d = s.rng.normal(size=2)
+        seed = xe + np.r_[0.05 * d / np.linalg.norm(d), 0.2 * s.rng.choice([-1, 1])]
+        x = lam.fk(q[:lam.n], seed)
+        np.testing.assert_allclose(x, xe, rtol=0, atol=1e-12)
+    # non-convergence is reported: from far off the residual is far from zero
+    xe, q, _ = s.state()
+    x = lam.fk(q[:lam.n], xe + np.array([0.3, -0.3, 2.0]))
+    with np.errstate(invalid="ignore"):
+        res = np.array(lam.residual(x, q[:lam.n]), dtype=float)
+    if np.allclose(x, xe, atol=1e-9):
+        pytest.skip("the far seed happened to converge")
+    assert not np.all(np.abs(res) < 1e-6)
