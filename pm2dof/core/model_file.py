@@ -22,7 +22,7 @@ from .validate import RULES, Problems, entry
 
 __all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS", "LEG_KINDS",
            "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem", "attachment_points",
-           "theta_groups"]
+           "theta_groups", "payload_increments"]
 
 # friction model -> its per-leg parameters after the inertial ones (eq. 2 and extensions)
 FRICTION_MODELS = {
@@ -330,6 +330,22 @@ def leg_reach_problem(leg, point):
         return (f"would need its slider at {s:.4g} m along its rail, which runs from 0 to "
                 f"{length:.4g} m")
     return None
+
+
+def payload_increments(leg, end_effector, mass):
+    """What a point payload of ``mass`` kg adds to theta's inertial entries: {name: increment},
+    names without the leg's number. A platform carries it at its origin (m_p += mass); a point
+    end effector books it to the tip of ``leg`` (docs/model-file.md, [plant]): RRR alpha
+    += m la^2, beta += m la lb, gamma += m lb^2, kappa += m la; PRR alpha += m, beta += m lb,
+    gamma += m lb^2; RPR alpha += m (a mass at the leg's length qa from its base)."""
+    if end_effector == "platform":
+        return {"m_p": mass}
+    if leg.kind == "RRR":
+        return {"alpha": mass * leg.la ** 2, "beta": mass * leg.la * leg.lb,
+                "gamma": mass * leg.lb ** 2, FIRST_MOMENT: mass * leg.la}
+    if leg.kind == "PRR":
+        return {"alpha": mass, "beta": mass * leg.lb, "gamma": mass * leg.lb ** 2}
+    return {"alpha": mass}
 
 
 def attachment_points(spec_legs, pose):

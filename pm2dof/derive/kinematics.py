@@ -133,6 +133,21 @@ class Kinematics:
             W[n + i, :] = Jinv[1, :]
         return W
 
+    def pose_from_q(self):
+        """The task pose as a function of all joint coordinates q (the legs' tips): a point is
+        tip_1; a platform's angle is that of tip_2 - tip_1 less that of a_2 - a_1, its origin
+        tip_1 - R(phi) a_1. Functions of q that also depend on the pose (a platform's W,
+        Me, ...) bind xe to this."""
+        t1, t2 = self.tips[0], self.tips[1]
+        if not self.platform:
+            return t1
+        a1, a2 = ([_exact(c) for c in self.spec.legs[i].attach] for i in (0, 1))
+        da = sp.Matrix([a2[0] - a1[0], a2[1] - a1[1]])
+        dt = t2 - t1
+        phi = sp.atan2(_cross(da, dt), (da.T * dt)[0])
+        c, s = sp.cos(phi), sp.sin(phi)
+        return sp.Matrix([t1[0] - (c * a1[0] - s * a1[1]), t1[1] - (s * a1[0] + c * a1[1]), phi])
+
     # ---- singularity measures ----
 
     def sin_ab(self, i):

@@ -77,9 +77,11 @@ class Mechanism:
     platform : dict or None
         ``m, c (2,), I`` (mass, com in the platform frame, inertia about the com).
     gravity : (2,)
+    payload : (int, float) or None
+        A point mass (kg) at the tip of leg j (0-based).
     """
 
-    def __init__(self, legs, links, platform=None, gravity=(0.0, 0.0)):
+    def __init__(self, legs, links, platform=None, gravity=(0.0, 0.0), payload=None):
         n = len(legs)
         self.n, self.m = n, 3 if platform is not None else 2
         self.nz = nz = 2 * n + self.m
@@ -118,6 +120,9 @@ class Mechanism:
                 a = np.asarray(leg["attach"], float)
                 self.attach.append(_Point([0.0, 0.0], origin + [
                     _Term(nz, np.hypot(*a), a0=np.arctan2(a[1], a[0]), ga=ephi)]))
+        if payload is not None:   # (leg j, mass): a point mass at leg j's tip
+            j, mass = payload
+            self.bodies.append((mass, 0.0, self.tips[j], np.zeros(nz)))
         if platform is not None:
             c = np.asarray(platform["c"], float)
             com = _Point([0.0, 0.0], [_Term(nz, gc=ex), _Term(nz, gc=ey, a0=np.pi / 2),

@@ -85,6 +85,7 @@ class Lambdified:
                      list(sym.tau_a), list(sym.theta)]
         f = self._f
         self.ik = sp.lambdify([list(sym.xe)], kin.ik(), "numpy")
+        self.pose = sp.lambdify([list(sym.q)], kin.pose_from_q(), "numpy")
         self.W, self.Wdot = f(kin.W), f(kin.Wdot)
         self.Me, self.Ce, self.Ge, self.StF = f(dyn.Me), f(dyn.Ce), f(dyn.Ge), f(dyn.StF)
         self.xedd, self.Y = f(dyn.xedd), f(dyn.Y)
@@ -195,6 +196,7 @@ def test_ik_closes_the_loops_and_W_is_its_derivative(name):
         xe, q, _ = s.state()
         z = np.concatenate([q, xe])
         assert np.abs(s.mech.closure(z)).max() < 1e-12
+        np.testing.assert_allclose(np.array(lam.pose(q), float).ravel(), xe, rtol=0, atol=1e-13)
         W = lam.W(q, xe)
         N = s.mech.null_space(z)
         np.testing.assert_allclose(W, N[:2 * lam.n], rtol=1e-10, atol=1e-10 * np.abs(W).max())
@@ -343,3 +345,77 @@ def test_platform_fk_converges_from_a_seed_within_5cm_and_0p2rad(name):
     if np.allclose(x, xe, atol=1e-9):
         pytest.skip("the far seed happened to converge")
     assert not np.all(np.abs(res) < 1e-6)
+
+
+@pytest.mark.parametrize("name", ["shang2010_vertical", "prr_point_gravity", "rpr_point_gravity"])
+def test_payload_booked_to_a_leg_is_a_point_mass_at_its_tip(name):
+    """payload_increments: theta + the increments is the mechanism with a point mass at the tip
+    (Me, Ce xed and the gravity term of the independent formulation)."""
+    from pm2dof.core.model_file import payload_increments
+    s = Setup(name, seed=8)
+    lam, spec = s.lam, s.lam.spec
+    legs = _legs(spec)
+    links, _ = random_links(s.rng, legs, False)
+    j, mass = 1, 0.7
+    mech = Mechanism(legs, links, None, spec.gravity, payload=(j, mass))
+    th = lumped_theta(legs, links, None, spec.has_gravity)
+    for key, inc in payload_increments(spec.legs[j], spec.end_effector, mass).items():
+        if f"{key}{j + 1}" in th:
+            th[f"{key}{j + 1}"] += inc
+    theta = np.array([th.get(k, 0.0) for k in spec.param_names])
+    xe, q, xed = s.state()
+    z = np.concatenate([q, xe])
+    Me_i, Cx_i, Ge_i, _ = mech.task_terms(z, xed)
+    np.testing.assert_allclose(lam.Me(q, xe, theta=theta), Me_i, rtol=1e-10)
+    np.testing.assert_allclose(lam.Ce(q, xe, xed, theta=theta) @ xed, Cx_i, rtol=1e-9,
+                               atol=1e-12)
+    np.testing.assert_allclose(lam.Ge(q, xe, theta=theta).ravel(), Ge_i, rtol=1e-10)
+
+
+class _DuckModel:
+    """What pm2dof.identification.base.identifiability asks of a Model, from the derivation."""
+
+    def __init__(self, lam):
+        from pm2dof.core.errors import WorkspaceError
+        self.lam, self.spec, self.param_names = lam, lam.spec, lam.spec.param_names
+        self._error = WorkspaceError
+
+    def ik(self, xe):
+        with np.errstate(invalid="ignore"):
+            q = self.lam.q(xe)
+        if not np.all(np.isfinite(q)):
+            raise self._error("out of reach")
+        return q
+
+    def _xe(self, q):
+        return np.array(self.lam.pose(q), float).ravel()
+
+    def W(self, q):
+        return self.lam.W(q, self._xe(q))
+
+    def Y(self, q, v, vr, ar):
+        return self.lam.Y(q, self._xe(q), v, vr, ar)
+
+
+@pytest.mark.parametrize("name", ["shang2010_vertical", "prr_point_gravity", "rrr3_platform_gravity",
+                                  "rpr3_platform_gravity"])
+def test_base_parameters_identifiable_from_a_simulated_excitation(name):
+    """pm2dof.identification.base on the new theta: the base parameters pi = P theta of random
+    states' stacked Y are recovered exactly by least squares from the torques Y theta, and
+    they reproduce every torque; the null space changes none."""
+    from pm2dof.identification.base import _random_states, identifiability, region_center
+    s = Setup(name, seed=9)
+    model = _DuckModel(s.lam)
+    ident = identifiability(model, samples=60, seed=1, radius=0.01)
+    base = ident.base
+    assert ident.rank == base.r < len(model.param_names)
+    # a fresh excitation: torques from the true theta, fit on the independent columns
+    states = _random_states(model, 80, np.random.default_rng(2), region_center(model), 0.01)
+    Phi = np.vstack([model.Y(*st) for st in states])
+    u = Phi @ s.theta
+    pi, *_ = np.linalg.lstsq(Phi[:, list(base.independent)], u, rcond=None)
+    np.testing.assert_allclose(pi, base.fold(s.theta), rtol=1e-7, atol=1e-9)
+    np.testing.assert_allclose(Phi[:, list(base.independent)] @ base.fold(s.theta), u,
+                               rtol=1e-9, atol=1e-9 * np.abs(u).max())
+    np.testing.assert_allclose(Phi @ ident.null_space, 0, atol=1e-8 * np.abs(Phi).max())
+    assert base.inertial.sum() == sum(not n.startswith(("fv", "fc")) for n in base.independent_names)
