@@ -22,7 +22,8 @@ from .validate import RULES, Problems, entry
 
 __all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS", "LEG_KINDS",
            "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem", "attachment_points",
-           "theta_groups", "payload_increments"]
+           "theta_groups", "payload_increments", "LINK_BODIES", "lumped_from_links",
+           "platform_from_body"]
 
 # friction model -> its per-leg parameters after the inertial ones (eq. 2 and extensions)
 FRICTION_MODELS = {
@@ -442,13 +443,122 @@ def _flatten(groups, values):
             for j in (range(len(idx)) if idx is not None else [0])]
 
 
-def _read_nominal(pr, nominal, groups):
+#: the bodies of each leg kind in [[nominal.links]] / [[plant.links]], and their keys: mass (kg),
+#: com (m, the centre of mass's distance along the body from its joint; RPR rod: back from the
+#: platform's joint), inertia (kg m^2, about the centre of mass). A slider has a mass only.
+LINK_BODIES = {"RRR": {"proximal": ("mass", "com", "inertia"),
+                       "distal": ("mass", "com", "inertia")},
+               "PRR": {"slider": ("mass",), "link": ("mass", "com", "inertia")},
+               "RPR": {"cylinder": ("mass", "com", "inertia"), "rod": ("mass", "com", "inertia")}}
+_BODY_RULES = {"mass": "pos", "com": "any", "inertia": "nonneg"}
+
+
+def lumped_from_links(leg, bodies):
+    """{alpha, beta, gamma, kappa} of one leg from its bodies ({body: {mass, com, inertia}},
+    LINK_BODIES), by the rule of docs/model-file.md ("From the links to theta"); PRR legs
+    have no kappa."""
+    if leg.kind == "RRR":
+        a, b = bodies["proximal"], bodies["distal"]
+        return {"alpha": a["inertia"] + a["mass"] * a["com"] ** 2 + b["mass"] * leg.la ** 2,
+                "beta": b["mass"] * leg.la * b["com"],
+                "gamma": b["inertia"] + b["mass"] * b["com"] ** 2,
+                FIRST_MOMENT: a["mass"] * a["com"] + b["mass"] * leg.la}
+    if leg.kind == "PRR":
+        sl, b = bodies["slider"], bodies["link"]
+        return {"alpha": sl["mass"] + b["mass"], "beta": b["mass"] * b["com"],
+                "gamma": b["inertia"] + b["mass"] * b["com"] ** 2}
+    c, r = bodies["cylinder"], bodies["rod"]
+    return {"alpha": r["mass"], "beta": r["mass"] * r["com"],
+            "gamma": c["inertia"] + c["mass"] * c["com"] ** 2 + r["inertia"] + r["mass"] * r["com"] ** 2,
+            FIRST_MOMENT: c["mass"] * c["com"]}
+
+
+def platform_from_body(mass, com, inertia):
+    """(m_p, mx_p, my_p, I_p) of a platform of ``mass`` kg, centre of mass ``com`` (platform
+    frame, m) and ``inertia`` about it (kg m^2)."""
+    return mass, mass * com[0], mass * com[1], inertia + mass * (com[0] ** 2 + com[1] ** 2)
+
+
+def _read_bodies(pr, where, kind, raw):
+    """One leg's bodies {body: {key: float}} from its [[<section>.links]] table, or None."""
+    if not isinstance(raw, dict):
+        return pr.add(where, f"must be a table of the leg's bodies {sorted(LINK_BODIES[kind])}, "
+                             f"got {type(raw).__name__}")
+    if not pr.keys(where, raw, LINK_BODIES[kind], LINK_BODIES[kind]):
+        return None
+    out = {}
+    for body, keys in LINK_BODIES[kind].items():
+        table = raw[body]
+        if not isinstance(table, dict):
+            return pr.add(f"{where}.{body}", f"must be a table {{ {', '.join(keys)} }}, got "
+                                             f"{table!r}")
+        if not pr.keys(f"{where}.{body}", table, keys, keys):
+            return None
+        values = {k: pr.number(f"{where}.{body}.{k}", table[k], **RULES[_BODY_RULES[k]])
+                  for k in keys}
+        if None in values.values():
+            return None
+        out[body] = values
+    return out
+
+
+def _expand_links(pr, section, table, legs, groups):
+    """``table`` with [[<section>.links]] (one table per leg) and [<section>.platform] (mass,
+    com, inertia) replaced by theta's inertial entries they give (lumped_from_links,
+    platform_from_body), and the keys they claim but could not give (invalid bodies, reported).
+    Giving an entry both ways is a problem."""
+    if not isinstance(table, dict) or not ({"links", "platform"} & set(table)):
+        return table, set()
+    out, claimed = dict(table), set()
+    per_leg = [k for k, idx in groups if idx is not None and k in INERTIAL + (FIRST_MOMENT,)]
+    scalars = [k for k, idx in groups if idx is None]
+    if "links" in out:
+        links = out.pop("links")
+        claimed.update(per_leg)
+        given = [k for k in per_leg if k in out]
+        for k in given:   # reported once; the links' value is checked
+            out.pop(k)
+            pr.add(f"{section}.{k}", f"given twice: by this key and by [[{section}.links]]")
+        if not (isinstance(links, list) and len(links) == len(legs)):
+            pr.add(f"{section}.links", f"must be one [[{section}.links]] table per leg (the file "
+                                       f"has {len(legs)} [[legs]]), got {links!r}"[:300])
+        elif None not in legs:   # (an invalid leg is reported already)
+            bodies = [_read_bodies(pr, entry(f"{section}.links", f"leg {i + 1}"), leg.kind, raw)
+                      for i, (leg, raw) in enumerate(zip(legs, links))]
+            if None not in bodies:
+                lumped = [lumped_from_links(leg, b) for leg, b in zip(legs, bodies)]
+                for key, idx in groups:
+                    if key in per_leg:
+                        out[key] = [lumped[i][key] for i in idx]
+    if "platform" in out and scalars:
+        body = out.pop("platform")
+        claimed.update(scalars)
+        where = f"{section}.platform"
+        for k in scalars:
+            if k in out:
+                out.pop(k)
+                pr.add(f"{section}.{k}", f"given twice: by this key and by [{where}]")
+        if isinstance(body, dict) and pr.keys(where, body, ("mass", "com", "inertia"),
+                                              ("mass", "com", "inertia")):
+            mass = pr.number(f"{where}.mass", body["mass"], **RULES["pos"])
+            com = pr.point(f"{where}.com", body["com"])
+            inertia = pr.number(f"{where}.inertia", body["inertia"], **RULES["pos"])
+            if None not in (mass, com, inertia):
+                out.update(zip(PLATFORM_PARAMS, platform_from_body(mass, com, inertia)))
+        elif not isinstance(body, dict):
+            pr.add(where, f"must be a table {{ mass, com, inertia }}, got {body!r}")
+    # keys the links claim but could not give (their problems are reported): not "missing"
+    return out, claimed - set(out)
+
+
+def _read_nominal(pr, nominal, groups, legs):
     """[nominal]: theta's names and values (None when invalid)."""
     param_names = _names(groups)
     if nominal is None:
         return param_names, None
+    nominal, unknown = _expand_links(pr, "nominal", nominal, legs, groups)
     keys = [key for key, _ in groups]
-    pr.keys("nominal", nominal, keys, keys)
+    pr.keys("nominal", nominal, keys, set(keys) - unknown)
     values = _read_theta(pr, "nominal", nominal, groups)
     if any(values.get(key) is None for key in keys):
         return param_names, None
@@ -559,11 +669,12 @@ def _read_runtime(pr, doc, n, param_names, legs, groups, effector):
             gains[law] = _read_section(
                 pr, f"gains.{law}", pr.table(f"gains.{law}", gains_raw.get(law), required=False),
                 _SCHEMA[f"gains.{law}"], n, param_names, task)
-    plant = _read_plant(pr, pr.table("plant", doc.get("plant")), n, param_names, groups, effector)
+    plant = _read_plant(pr, pr.table("plant", doc.get("plant")), n, param_names, groups, effector,
+                        legs)
     return sensing, gains, plant
 
 
-def _read_plant(pr, raw, n, param_names, groups, effector):
+def _read_plant(pr, raw, n, param_names, groups, effector, legs):
     """[plant]: theta's inertial entries (the truth), the payload and the plant's friction.
     A platform carries its payload at its origin; a point end effector books it to a leg."""
     schema = dict(_SCHEMA["plant"])
@@ -571,8 +682,9 @@ def _read_plant(pr, raw, n, param_names, groups, effector):
         del schema["payload_leg"]
     inertial = [(key, idx) for key, idx in groups if key not in FRICTION_MODELS[
         "coulomb_viscous_stribeck"]]
+    raw, unknown = _expand_links(pr, "plant", raw, legs, inertial)
     plant = _read_section(pr, "plant", raw, schema, n, param_names,
-                          extra=[key for key, _ in inertial])
+                          extra=[key for key, _ in inertial if key not in unknown])
     if plant is None:
         return None
     values = _read_theta(pr, "plant", raw, inertial, plant=True)
@@ -719,7 +831,7 @@ def read_model_file(path):
         table.get("kind", "RRR")) if isinstance(table, dict) else "RRR")
         for leg, table in zip(legs, legs_raw)]
     groups = theta_groups(kinds, effector, gravity, friction)
-    param_names, theta = _read_nominal(pr, pr.table("nominal", doc.get("nominal")), groups)
+    param_names, theta = _read_nominal(pr, pr.table("nominal", doc.get("nominal")), groups, legs)
     limits = _read_limits(pr, doc, n, param_names)
     sensing, gains, plant = _read_runtime(pr, doc, n, param_names, legs, groups, effector)
     home = _read_platform(pr, doc, effector, legs)

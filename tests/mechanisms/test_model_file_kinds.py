@@ -135,3 +135,68 @@ def test_platform_inertia_must_be_a_rigid_body(tmp_path):
     text = _text("rpr3_platform").replace("mx_p = 0.0\n", "mx_p = 0.1\n", 1)
     path, msg = _error(tmp_path, text)
     _one_line(msg, path, "nominal.I_p", "centre of mass")
+
+
+def _links_text(model, links, platform=None):
+    """``model``'s file with [nominal]'s lumped inertial keys replaced by [[nominal.links]]."""
+    text = _text(model)
+    for key in ("alpha", "beta", "gamma", "kappa", "m_p", "mx_p", "my_p", "I_p"):
+        text = re.sub(rf"(\[nominal\][^\[]*?)\n{key}\s*=[^\n]*", r"\1", text, count=1)
+    extra = "".join("\n[[nominal.links]]\n" + "".join(f"{body} = {{ {fields} }}\n"
+                                                      for body, fields in leg.items())
+                    for leg in links)
+    if platform:
+        extra += f"\n[nominal.platform]\n{platform}\n"
+    return text.replace("\n[limits]", extra + "\n[limits]", 1)
+
+
+def test_links_give_theta_by_the_documented_rule(tmp_path):
+    """[[nominal.links]]: each body's mass, com and inertia; theta computed by the rule
+    (written again, independently, in tests/mechanisms/independent.lumped_theta)."""
+    from tests.mechanisms.independent import lumped_theta
+    rrr = {"proximal": "mass = 0.6, com = 0.1, inertia = 0.002",
+           "distal": "mass = 0.4, com = 0.1, inertia = 0.0013333"}
+    path = tmp_path / "robot.toml"
+    path.write_text(_links_text("rrr3_platform", [rrr] * 3,
+                                "mass = 0.5\ncom = [0.01, -0.02]\ninertia = 3.125e-4"))
+    spec = read_model_file(path)
+    legs = [dict(kind="RRR", la=0.2, lb=0.2)] * 3
+    links = [dict(ma=0.6, ca=0.1, Ia=0.002, mb=0.4, cb=0.1, Ib=0.0013333)] * 3
+    import numpy as np
+    want = lumped_theta(legs, links, dict(m=0.5, c=np.array([0.01, -0.02]), I=3.125e-4), False)
+    got = dict(zip(spec.param_names, spec.theta_nominal))
+    for k, v in want.items():
+        assert got[k] == pytest.approx(v, rel=1e-14), k
+    # the shipped file's lumped values are these links' (its comments show the arithmetic)
+    shipped = read_model_file(model_path("rrr3_platform"))
+    for k in ("alpha1", "beta1", "gamma1"):
+        assert dict(zip(shipped.param_names, shipped.theta_nominal))[k] == pytest.approx(
+            got[k], rel=1e-4)
+
+
+@pytest.mark.parametrize("model, bodies", [
+    ("prr_point", {"slider": "mass = 1.0", "link": "mass = 0.3, com = 0.15, inertia = 0.00225"}),
+    ("rpr3_platform", {"cylinder": "mass = 1.0, com = 0.1, inertia = 0.004",
+                       "rod": "mass = 0.4, com = 0.1, inertia = 0.0012"}),
+])
+def test_links_of_prismatic_kinds_match_the_shipped_lumped_values(tmp_path, model, bodies):
+    path = tmp_path / "robot.toml"
+    platform = "mass = 0.5\ncom = [0.0, 0.0]\ninertia = 8e-4" if "platform" in model else None
+    path.write_text(_links_text(model, [bodies] * 3, platform))
+    got = read_model_file(path)
+    shipped = read_model_file(model_path(model))
+    assert got.param_names == shipped.param_names
+    assert got.theta_nominal == pytest.approx(shipped.theta_nominal, rel=1e-12)
+
+
+def test_links_and_lumped_keys_together_are_refused(tmp_path):
+    rrr = {"proximal": "mass = 0.6, com = 0.1, inertia = 0.002",
+           "distal": "mass = 0.4, com = 0.1, inertia = 0.0013333"}
+    text = _links_text("rrr3_platform", [rrr] * 3,
+                       "mass = 0.5\ncom = [0.0, 0.0]\ninertia = 3.125e-4")
+    path, msg = _error(tmp_path, text.replace("[nominal]\n", "[nominal]\nbeta = [0.1, 0.1, 0.1]\n", 1))
+    _one_line(msg, path, "nominal.beta", "given twice")
+    bad = {"proximal": "mass = 0.6, com = 0.1", "distal": rrr["distal"]}
+    path, msg = _error(tmp_path, _links_text("rrr3_platform", [rrr, bad, rrr],
+                                             "mass = 0.5\ncom = [0.0, 0.0]\ninertia = 3.125e-4"))
+    _one_line(msg, path, "nominal.links (leg 2).proximal.inertia", "missing")
