@@ -61,54 +61,49 @@ def test_today_formulation_hash_unchanged():
         assert spec.formulation_sha256 == manifest["formulation_sha256"], model
 
 
-def test_platform_without_attachment_point(tmp_path):
-    text = _text("rrr3_platform")
-    text = text.replace("attach = [0.0433, -0.025]\n", "", 1)
-    path, msg = _error(tmp_path, text)
-    _one_line(msg, path, "legs.attach (leg 2)", "missing")
+# (model, text replaced, replacement, key named, words of the reason): the bad inputs
+BAD = {
+    "platform_without_attachment_point": (
+        "rrr3_platform", "attach = [0.0433, -0.025]\n", "", "legs.attach (leg 2)", ("missing",)),
+    "point_leg_with_attachment_point": (
+        "prr_point", 'branch = "behind"\n', 'branch = "behind"\nattach = [0.0, 0.0]\n',
+        "legs.attach (leg 1)", ("platform",)),
+    "rail_of_zero_length": (
+        "prr3_platform", "rail = [[0.0905, -0.2832], [0.2905, 0.0632]]",
+        "rail = [[0.0905, -0.2832], [0.0905, -0.2832]]", "legs.rail (leg 2)", ("zero length",)),
+    "rrr_leg_cannot_reach": (
+        "rrr3_platform", "end = [0.04, 0.03, 0.2]", "end = [0.04, -0.2, 0.2]",
+        "trajectories.low.end", ("leg 3 (RRR)", "its reach is")),
+    "prr_leg_cannot_reach": (
+        "prr3_platform", "end = [0.02, 0.01, 0.1]", "end = [0.05, 0.0, 0.0]",
+        "trajectories.low.end", ("leg 1 (PRR)", "from its rail's line")),
+    "rpr_leg_cannot_reach": (
+        "rpr3_platform", "end = [0.04, 0.03, 0.2]", "end = [0.0, -0.2, 0.0]",
+        "trajectories.low.end", ("leg 3 (RPR)", "stroke")),
+    "point_prr_leg_cannot_reach": (
+        "prr_point", "start = [0.22, 0.28]", "start = [0.4, 0.25]",
+        "trajectories.low.start", ("leg 3 (PRR)", "rail")),
+    "platform_home_out_of_stroke": (
+        "rpr3_platform", "home = [0.0, 0.0, 0.0]", "home = [0.0, -0.2, 0.0]",
+        "platform.home", ("leg 3 (RPR)", "stroke")),
+    "gravity_with_nan": (
+        "shang2010_vertical", "gravity = [0.0, -9.81]", "gravity = [nan, -9.81]",
+        "model.gravity (x)", ("finite", "nan")),
+    "prismatic_actuators_need_a_linear_resolution": (
+        "prr_point", "linear_encoder_resolution = 1e-6", "", "sensing.linear_encoder_resolution",
+        ("prismatic",)),
+    "platform_inertia_must_be_a_rigid_body": (
+        "rpr3_platform", "mx_p = 0.0\n", "mx_p = 0.1\n", "nominal.I_p", ("centre of mass",)),
+}
 
 
-def test_point_leg_with_attachment_point(tmp_path):
-    text = _text("prr_point").replace('branch = "behind"\n', 'branch = "behind"\nattach = [0.0, 0.0]\n', 1)
-    path, msg = _error(tmp_path, text)
-    _one_line(msg, path, "legs.attach (leg 1)", "platform")
-
-
-def test_rail_of_zero_length(tmp_path):
-    text = _text("prr3_platform").replace("rail = [[0.0905, -0.2832], [0.2905, 0.0632]]",
-                                          "rail = [[0.0905, -0.2832], [0.0905, -0.2832]]")
-    path, msg = _error(tmp_path, text)
-    _one_line(msg, path, "legs.rail (leg 2)", "zero length")
-
-
-@pytest.mark.parametrize("model, old, new, key, words", [
-    ("rrr3_platform", "end = [0.04, 0.03, 0.2]", "end = [0.04, -0.2, 0.2]",
-     "trajectories.low.end", ("leg 3 (RRR)", "its reach is")),
-    ("prr3_platform", "end = [0.02, 0.01, 0.1]", "end = [0.05, 0.0, 0.0]",
-     "trajectories.low.end", ("leg 1 (PRR)", "from its rail's line")),
-    ("rpr3_platform", "end = [0.04, 0.03, 0.2]", "end = [0.0, -0.2, 0.0]",
-     "trajectories.low.end", ("leg 3 (RPR)", "stroke")),
-    ("prr_point", "start = [0.22, 0.28]", "start = [0.4, 0.25]",
-     "trajectories.low.start", ("leg 3 (PRR)", "rail")),
-])
-def test_leg_that_cannot_reach(tmp_path, model, old, new, key, words):
+@pytest.mark.parametrize("case", BAD)
+def test_one_bad_key_is_one_line_naming_file_table_key(tmp_path, case):
+    model, old, new, key, words = BAD[case]
     text = _text(model)
     assert old in text
-    text = text.replace(old, new, 1)
-    path, msg = _error(tmp_path, text)
+    path, msg = _error(tmp_path, text.replace(old, new, 1))
     _one_line(msg, path, key, *words)
-
-
-def test_platform_home_out_of_stroke(tmp_path):
-    text = _text("rpr3_platform").replace("home = [0.0, 0.0, 0.0]", "home = [0.0, -0.2, 0.0]")
-    path, msg = _error(tmp_path, text)
-    _one_line(msg, path, "platform.home", "leg 3 (RPR)", "stroke")
-
-
-def test_gravity_with_nan(tmp_path):
-    text = _text("shang2010_vertical").replace("gravity = [0.0, -9.81]", "gravity = [nan, -9.81]")
-    path, msg = _error(tmp_path, text)
-    _one_line(msg, path, "model.gravity (x)", "finite", "nan")
 
 
 def test_gravity_adds_kappa_to_nominal(tmp_path):
@@ -119,22 +114,13 @@ def test_gravity_adds_kappa_to_nominal(tmp_path):
     assert "gains.na.Gamma" in msg and "kappa1" in msg, msg
 
 
-def test_platform_needs_three_legs_and_a_home(tmp_path):
+def test_platform_needs_a_home_and_three_legs(tmp_path):
     text = _text("rrr3_platform")
     path, msg = _error(tmp_path, re.sub(r"\[platform\]\nhome = [^\n]*\n", "", text))
     _one_line(msg, path, "platform", "missing")
-
-
-def test_prismatic_actuators_need_a_linear_resolution(tmp_path):
-    text = re.sub(r"linear_encoder_resolution = [^\n]*\n", "", _text("prr_point"))
-    path, msg = _error(tmp_path, text)
-    _one_line(msg, path, "sensing.linear_encoder_resolution", "prismatic")
-
-
-def test_platform_inertia_must_be_a_rigid_body(tmp_path):
-    text = _text("rpr3_platform").replace("mx_p = 0.0\n", "mx_p = 0.1\n", 1)
-    path, msg = _error(tmp_path, text)
-    _one_line(msg, path, "nominal.I_p", "centre of mass")
+    two_legs = text[:text.index("[[legs]]", text.index("[[legs]]") + 1)] + text[text.index("[platform]"):]
+    path, msg = _error(tmp_path, two_legs)
+    _one_line(msg, path, "legs", "at least three")
 
 
 def _links_text(model, links, platform=None):
