@@ -50,18 +50,15 @@ def _mixed_platform(spec):
 
 
 # name -> (shipped model, change); every kind at a point and on a platform, with and
-# without gravity
+# without gravity (the derivation of each takes 5-20 s: a case more is a minute more)
 CASES = {
     "shang2010": ("shang2010", None),
-    "fivebar": ("fivebar", None),
     "shang2010_vertical": ("shang2010_vertical", None),
     "rrr3_platform": ("rrr3_platform", None),
-    "rrr3_platform_gravity": ("rrr3_platform", lambda s: _with(s, gravity=G)),
     "rrr4_platform": ("rrr4_platform", None),
     "prr3_platform_gravity": ("prr3_platform", lambda s: _with(s, gravity=G)),
     "prr_point": ("prr_point", None),
     "prr_point_gravity": ("prr_point", lambda s: _with(s, gravity=(3.0, -9.81))),
-    "rpr3_platform": ("rpr3_platform", None),
     "rpr3_platform_gravity": ("rpr3_platform", lambda s: _with(s, gravity=(2.0, -9.81))),
     "rpr_point_gravity": ("shang2010", _rpr_point),
     "mixed_platform_gravity": ("rrr3_platform", _mixed_platform),
@@ -86,7 +83,7 @@ class Lambdified:
         f = self._f
         self.ik = sp.lambdify([list(sym.xe)], kin.ik(), "numpy")
         self.pose = sp.lambdify([list(sym.q)], kin.pose_from_q(), "numpy")
-        self.W, self.Wdot = f(kin.W), f(kin.Wdot)
+        self.W = f(kin.W)
         self.Me, self.Ce, self.Ge, self.StF = f(dyn.Me), f(dyn.Ce), f(dyn.Ge), f(dyn.StF)
         self.xedd, self.Y = f(dyn.xedd), f(dyn.Y)
         self.T, self.V = f(sp.Matrix([dyn.kinetic_energy])), f(sp.Matrix([dyn.potential_energy]))
@@ -322,7 +319,7 @@ def test_energy_conserved_along_the_forward_dynamics(name):
     assert np.abs(E - E[0]).max() < 1e-9 * max(T0, 1e-3)
 
 
-PLATFORMS = ["rrr3_platform", "rrr4_platform", "prr3_platform_gravity", "rpr3_platform"]
+PLATFORMS = ["rrr3_platform", "rrr4_platform", "prr3_platform_gravity", "rpr3_platform_gravity"]
 
 
 @pytest.mark.parametrize("name", PLATFORMS)
@@ -397,7 +394,7 @@ class _DuckModel:
         return self.lam.Y(q, self._xe(q), v, vr, ar)
 
 
-@pytest.mark.parametrize("name", ["shang2010_vertical", "prr_point_gravity", "rrr3_platform_gravity",
+@pytest.mark.parametrize("name", ["shang2010_vertical", "prr_point_gravity", "rrr3_platform",
                                   "rpr3_platform_gravity"])
 def test_base_parameters_identifiable_from_a_simulated_excitation(name):
     """pm2dof.identification.base on the new theta: the base parameters pi = P theta of random
