@@ -181,6 +181,33 @@ class Kinematics:
             rows.append(row)
         return sp.Matrix(rows)
 
+    def moment_length(self):
+        """L, m: the platform's characteristic length, the RMS distance of its attachment points
+        from its origin. Type II scales moments by 1/L to compare them with forces."""
+        a2 = [leg.attach[0] ** 2 + leg.attach[1] ** 2 for leg in self.spec.legs]
+        return _exact((sum(a2) / len(a2)) ** 0.5)   # a scale: its rounding does not matter
+
+    def parallel_measure(self):
+        """A platform's type II measure in [0, 1]: (det U^T U)^(1/3) / (n/3), U (n, 3) the
+        wrench lines (wrench_lines) with moments over moment_length() and each row of unit
+        length. trace U^T U = n, so the measure is 1 for isotropic lines and 0 exactly when S
+        loses rank (lines concurrent or all parallel). (A point end effector keeps the closed
+        form sqrt(1 - |z|/n) of model_functions.singularity_measures.)"""
+        if not self.platform:
+            raise ValueError("parallel_measure is a platform's; a point's is closed-form")
+        L, rows = self.moment_length(), []
+        for i in range(self.spec.n_legs):
+            u = self.wrench_lines()[i, :]
+            r = sp.Matrix([[u[0], u[1], u[2] / L]])
+            rows.append(r / sp.sqrt(1 + (u[2] / L) ** 2))   # |u[:2]| = 1
+        U = sp.Matrix.vstack(*rows)
+        G = U.T * U
+        det = (G[0, 0] * (G[1, 1] * G[2, 2] - G[1, 2] * G[2, 1])
+               - G[0, 1] * (G[1, 0] * G[2, 2] - G[1, 2] * G[2, 0])
+               + G[0, 2] * (G[1, 0] * G[2, 1] - G[1, 1] * G[2, 0]))
+        # max(det, 0) keeping NaN (rounding can leave -1e-17 at a singularity)
+        return ((det + sp.Abs(det)) / 2) ** sp.Rational(1, 3) * sp.Rational(3, self.spec.n_legs)
+
     # ---- inverse kinematics ----
 
     def _leg_ik(self, i):

@@ -37,6 +37,7 @@ def test_expressions_convert_and_agree(name):
              "residual": kin.fk_residual()}
     if kin.platform:
         exprs["newton"] = kin.fk_newton_step()
+        exprs["parallel_measure"] = sp.Matrix([kin.parallel_measure()])
     else:
         exprs["fk"] = kin.fk()
     for what, e in exprs.items():

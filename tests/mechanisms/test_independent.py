@@ -416,3 +416,40 @@ def test_base_parameters_identifiable_from_a_simulated_excitation(name):
                                rtol=1e-9, atol=1e-9 * np.abs(u).max())
     np.testing.assert_allclose(Phi @ ident.null_space, 0, atol=1e-8 * np.abs(Phi).max())
     assert base.inertial.sum() == sum(not n.startswith(("fv", "fc")) for n in base.independent_names)
+
+
+@pytest.mark.parametrize("name", ["rrr3_platform", "rrr4_platform", "prr3_platform_gravity",
+                                  "rpr3_platform_gravity"])
+def test_platform_parallel_measure(name):
+    """Type II of a platform: (det U^T U)^(1/3) / (n/3) of S's rows (the independent null
+    space's), moments over L, rows normalised; in (0, 1] away from singularities."""
+    s = Setup(name, seed=11)
+    lam, kin = s.lam, s.lam.kin
+    f = sp.lambdify([list(lam.sym.q), list(lam.sym.xe)], kin.parallel_measure(), "numpy",
+                    cse=True)
+    L = float(kin.moment_length())
+    for _ in range(3):
+        xe, q, _ = s.state()
+        S = s.mech.null_space(np.concatenate([q, xe]))[:lam.n]
+        U = S * np.array([1, 1, 1 / L])          # rows of S, moments over L
+        U /= np.linalg.norm(U, axis=1, keepdims=True)
+        want = np.linalg.det(U.T @ U) ** (1 / 3) / (lam.n / 3)
+        assert 0 < want <= 1
+        np.testing.assert_allclose(float(f(q, xe)), want, rtol=1e-10)
+
+
+def test_platform_parallel_measure_is_zero_where_the_lines_meet():
+    """A 3-RPR whose legs all point at the platform's origin (attachments on the bases' rays):
+    the three lines meet there, S loses rank, the measure is 0."""
+    lam = _case("rpr3_platform_gravity")
+    spec = lam.spec
+    legs = tuple(dataclasses.replace(leg, attach=(0.05 * leg.base[0] / np.hypot(*leg.base),
+                                                  0.05 * leg.base[1] / np.hypot(*leg.base)))
+                 for leg in spec.legs)
+    radial = Lambdified(_with(spec, legs=legs))
+    f = sp.lambdify([list(radial.sym.q), list(radial.sym.xe)], radial.kin.parallel_measure(),
+                    "numpy", cse=True)
+    xe = np.zeros(3)
+    q = radial.q(xe)
+    assert abs(float(f(q, xe))) < 1e-5
+    assert float(f(radial.q(xe + [0, 0, 0.3]), xe + [0, 0, 0.3])) > 0.05
