@@ -283,10 +283,17 @@ def check_spec_invariants(spec, where):
     assert th.shape == (len(spec.param_names),) and np.isfinite(th).all(), where
     a, b, g = th[0:n], th[n:2 * n], th[2 * n:3 * n]
     assert (a > 0).all() and (g > 0).all() and (b * b < a * g).all(), f"{where}: theta {th}"
-    assert (th[3 * n:] >= 0).all(), f"{where}: negative friction in {th}"
-    for leg in spec.legs:
-        assert leg.la > 0 and leg.lb > 0 and leg.elbow in (1, -1), where
+    friction = np.array([k.startswith(("fv", "fc", "fs")) for k in spec.param_names])
+    assert (th[friction] >= 0).all(), f"{where}: negative friction in {th}"
+    for leg in spec.legs:   # by kind (docs/model-file.md)
         assert all(math.isfinite(c) for c in leg.base), where
+        if leg.kind == "RRR":
+            assert leg.la > 0 and leg.lb > 0 and leg.elbow in (1, -1), where
+        elif leg.kind == "PRR":
+            assert leg.rail_length > 0 and leg.lb > 0 and leg.elbow in (1, -1), where
+        else:
+            assert 0 < leg.stroke[0] < leg.stroke[1], where
+        assert (leg.attach is not None) == (spec.end_effector == "platform"), where
     assert 0 < spec.limits["singularity_threshold"] < 1, where
     assert (np.asarray(spec.limits["tau_max"]) > 0).all(), where
     assert spec.sensing["sample_period"] > 0, where

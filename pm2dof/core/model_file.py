@@ -1,9 +1,10 @@
 # Model files (TOML): read, validate, and split into the derivation's formulation and run-time data.
 """Read and validate a pm2dof model file.
 
-A model file describes one planar parallel manipulator made of RR legs (``[[legs]]``), its
-friction model, its nominal parameters (the paper's Tables 1-2) and run-time data (limits,
-gains, plant truth, trajectories). Only ``[model]`` and ``[[legs]]`` enter the generated C;
+A model file describes one planar parallel manipulator: legs of kind RRR, PRR or RPR
+(``[[legs]]``) joined at a point or at a moving platform (``[model] end_effector``), an optional
+gravity vector, its friction model, its nominal parameters (the paper's Tables 1-2) and run-time
+data (limits, gains, plant truth, trajectories). docs/model-file.md is the reference. Only ``[model]`` and ``[[legs]]`` enter the generated C;
 their canonical hash (:attr:`ModelSpec.formulation_sha256`) guards generated code against
 staleness. This module is pure Python and is shared by ``derive/`` and the runtime.
 """
@@ -18,7 +19,10 @@ import numpy as np
 from .errors import ModelFileError
 from .validate import RULES, Problems, entry
 
-__all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS"]
+__all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS", "LEG_KINDS",
+           "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem", "attachment_points",
+           "theta_groups", "payload_increments", "LINK_BODIES", "lumped_from_links",
+           "platform_from_body"]
 
 # friction model -> its per-leg parameters after the inertial ones (eq. 2 and extensions)
 FRICTION_MODELS = {
@@ -32,6 +36,18 @@ FRICTION_CONSTANTS = {  # formulation constants each friction model needs in [mo
     "smooth_sign": ("sign_smoothing_velocity",),
 }
 INERTIAL = ("alpha", "beta", "gamma")
+#: the first moment of a leg's links in the gravity term (kg m), for the kinds that need one
+FIRST_MOMENT = "kappa"
+#: the platform's parameters in theta: mass (kg), first moments m c_x, m c_y in the platform
+#: frame (kg m), inertia about the platform's origin, the task point (kg m^2)
+PLATFORM_PARAMS = ("m_p", "mx_p", "my_p", "I_p")
+#: leg kinds: actuated joint first (R revolute, P prismatic); see docs/model-file.md
+LEG_KINDS = ("RRR", "PRR", "RPR")
+#: end effectors: task coordinates and their count m
+END_EFFECTORS = {"point": ("x", "y"), "platform": ("x", "y", "phi")}
+#: PRR branch: the slider ahead of (+1) or behind (-1) the foot of the perpendicular from the
+#: attachment point onto the rail, along the rail's direction
+PRR_BRANCHES = {"ahead": 1, "behind": -1}
 #: [limits] parallel_singularity_threshold when a model file does not set it (type II measure,
 #: see Model.singularity_measures; 0.1 is about 8 degrees between a five-bar's distal links)
 DEFAULT_PARALLEL_THRESHOLD = 0.1
@@ -41,21 +57,58 @@ CLOSURE_FLOOR = 1e-6
 FK_BRANCHES = {"left": 1, "right": -1}
 
 _MODEL_KEYS = {"name", "description", "friction", "fk_branch", "stribeck_velocity",
-               "sign_smoothing_velocity", "rk4_substeps"}
-_LEG_KEYS = {"base", "la", "lb", "elbow"}
+               "sign_smoothing_velocity", "rk4_substeps", "end_effector", "gravity"}
+# per leg kind: (required keys, optional keys); "attach" is required on a platform
+_LEG_KEYS = {"RRR": ({"base", "la", "lb", "elbow"}, {"kind", "attach"}),
+             "PRR": ({"kind", "rail", "lb", "branch"}, {"attach"}),
+             "RPR": ({"kind", "base", "stroke"}, {"attach"})}
 _TOP_KEYS = {"model", "legs", "nominal", "limits", "sensing", "gains", "plant", "trajectories",
-             "control"}
+             "control", "platform"}
 #: torque distributions among the actuators (S^T tau_a = u; derive/splits.py)
 SPLITS = ("min_norm", "min_max", "preload")
 
 
 @dataclass(frozen=True)
 class Leg:
-    """One RR leg: base ``A`` (2,) in m, link lengths ``la``, ``lb`` in m, elbow +1 left / -1 right."""
+    """One leg. ``kind`` "RRR" (today's leg): base ``A`` (2,) in m, link lengths ``la``, ``lb`` in
+    m, elbow +1 left / -1 right. "PRR": rail from ``base`` to ``rail_end`` (the slider's
+    coordinate qa runs from 0 at ``base`` to the rail's length), link ``lb``, ``elbow`` the
+    branch (+1 "ahead", -1 "behind"), ``la`` None. "RPR": ``base`` the passive base pivot,
+    ``stroke`` (min, max) of the actuated length qa, ``la``, ``lb``, ``elbow`` None.
+    ``attach``: the attachment point in the platform frame (a platform's legs), else None."""
     base: tuple
-    la: float
-    lb: float
-    elbow: int
+    la: object
+    lb: object
+    elbow: object
+    kind: str = "RRR"
+    attach: object = None
+    rail_end: object = None
+    stroke: object = None
+
+    @property
+    def actuator(self):
+        """"revolute" (RRR: qa an angle, rad) or "prismatic" (PRR, RPR: qa a length, m)."""
+        return "revolute" if self.kind == "RRR" else "prismatic"
+
+    @property
+    def rail_length(self):
+        """PRR: the rail's length, m (None for other kinds)."""
+        if self.rail_end is None:
+            return None
+        return math.hypot(self.rail_end[0] - self.base[0], self.rail_end[1] - self.base[1])
+
+    def formulation(self):
+        """This leg's entry of :meth:`ModelSpec.formulation` (today's RRR point legs: unchanged)."""
+        if self.kind == "RRR":
+            out = {"base": list(self.base), "la": self.la, "lb": self.lb, "elbow": self.elbow}
+        elif self.kind == "PRR":
+            out = {"kind": "PRR", "rail": [list(self.base), list(self.rail_end)], "lb": self.lb,
+                   "branch": self.elbow}
+        else:
+            out = {"kind": "RPR", "base": list(self.base), "stroke": list(self.stroke)}
+        if self.attach is not None:
+            out["attach"] = list(self.attach)
+        return out
 
 
 @dataclass(frozen=True)
@@ -79,10 +132,27 @@ class ModelSpec:
     control: dict = field(repr=False, default_factory=dict)  # split, preload, preload_sign
     file_sha256: str = ""
     formulation_sha256: str = ""
+    end_effector: str = "point"
+    gravity: tuple = (0.0, 0.0)             # m/s^2 in the base frame; (0, 0): horizontal plane
+    home: object = None                     # platform: the fk seed pose (x, y, phi), else None
 
     @property
     def n_legs(self):
         return len(self.legs)
+
+    @property
+    def task_names(self):
+        """("x", "y") for a point end effector, ("x", "y", "phi") for a platform."""
+        return END_EFFECTORS[self.end_effector]
+
+    @property
+    def dof(self):
+        """m, the task-space dimension: 2 (point) or 3 (platform)."""
+        return len(self.task_names)
+
+    @property
+    def has_gravity(self):
+        return any(g != 0.0 for g in self.gravity)
 
     @property
     def bases(self):
@@ -90,15 +160,20 @@ class ModelSpec:
 
     def formulation(self):
         """The part of the model that enters the generated code, as canonical JSON-able data."""
-        return {
+        out = {
             "name": self.name,
             "friction": self.friction,
             "friction_constants": dict(sorted(self.friction_constants.items())),
             "fk_branch": self.fk_branch,
             "rk4_substeps": self.rk4_substeps,
-            "legs": [{"base": list(l.base), "la": l.la, "lb": l.lb, "elbow": l.elbow}
-                     for l in self.legs],
+            "legs": [leg.formulation() for leg in self.legs],
         }
+        # keys with their default value stay out, so today's files keep their hash
+        if self.end_effector != "point":
+            out["end_effector"] = self.end_effector
+        if self.has_gravity:
+            out["gravity"] = list(self.gravity)
+        return out
 
 
 def _frozen(values):
@@ -108,22 +183,26 @@ def _frozen(values):
     return out
 
 
-def _size(length, n, param_names):
+def _size(length, n, param_names, task_names=("x", "y")):
     """Labels and message text of an array of ``length``: "n" per leg (legs numbered from 1,
-    as in the paper), "p" per parameter, or 2 (a task-space pair x, y)."""
+    as in the paper), "p" per parameter, "m" per task coordinate (x, y or x, y, phi), or 2
+    (a pair x, y)."""
     if length == "n":
         return [f"leg {i + 1}" for i in range(n)], f", one per leg (the file has {n} [[legs]])"
     if length == "p":
         return ([f"entry {k + 1}, {name}" for k, name in enumerate(param_names)],
                 f", one per parameter of theta, in the order of param_names: "
                 f"{', '.join(param_names)}")
+    if length == "m":
+        return list(task_names), f" [{', '.join(task_names)}]"
     return ["x", "y"], " [x, y]"
 
 
 def _read_model(pr, model):
-    """[model]: name, friction and its constants, fk_branch, rk4_substeps (None where invalid)."""
+    """[model]: name, friction and its constants, fk_branch, rk4_substeps, end_effector and
+    gravity (None where invalid)."""
     if model is None:
-        return None, None, {}, None, None
+        return None, None, {}, None, None, "point", (0.0, 0.0)
     pr.keys("model", model, _MODEL_KEYS, ("name", "friction"))
     name = model.get("name")
     if "name" in model and not (isinstance(name, str) and name.isidentifier() and name.isascii()):
@@ -143,23 +222,140 @@ def _read_model(pr, model):
     substeps = model.get("rk4_substeps", 4)
     if isinstance(substeps, bool) or not isinstance(substeps, int) or not 1 <= substeps <= 100:
         substeps = pr.add("model.rk4_substeps", f"must be an integer in [1, 100], got {substeps!r}")
-    return name, friction, constants, fk_branch, substeps
+    effector = pr.choice("model.end_effector", model.get("end_effector", "point"),
+                         {k: k for k in END_EFFECTORS})
+    gravity = pr.vector("model.gravity", model.get("gravity", [0.0, 0.0]), ["x", "y"],
+                        meaning=" [g_x, g_y] in m/s^2, in the base frame")
+    return name, friction, constants, fk_branch, substeps, effector, gravity
 
 
-def _read_leg(pr, i, leg):
-    """One [[legs]] table (leg i + 1): a Leg, or None."""
+def _read_leg(pr, i, leg, effector):
+    """One [[legs]] table (leg i + 1) of a mechanism with this end effector: a Leg, or None."""
     label = f"leg {i + 1}"
     if not isinstance(leg, dict):
         return pr.add(entry("legs", label), f"each [[legs]] entry must be a table, got "
                                             f"{type(leg).__name__}")
-    ok = pr.keys("legs", leg, _LEG_KEYS, _LEG_KEYS, label=label)
-    base = pr.point(entry("legs.base", label), leg["base"]) if "base" in leg else None
-    la, lb = (pr.number(entry(f"legs.{k}", label), leg[k], **RULES["pos"]) if k in leg else None
-              for k in ("la", "lb"))
-    elbow = pr.choice(entry("legs.elbow", label), leg["elbow"], ELBOWS) if "elbow" in leg else None
-    if not ok or None in (base, la, lb, elbow):
+    kind = pr.choice(entry("legs.kind", label), leg.get("kind", "RRR"), {k: k for k in LEG_KINDS})
+    if kind is None:
         return None
-    return Leg(base=base, la=la, lb=lb, elbow=elbow)
+    required, optional = _LEG_KEYS[kind]
+    if effector == "platform":
+        required = required | {"attach"}
+    ok = pr.keys("legs", leg, required | optional, required, label=label)
+    if effector == "point" and "attach" in leg:
+        ok = pr.add(entry("legs.attach", label), "only a platform's legs have an attachment point "
+                                                 "(set [model] end_effector = \"platform\")")
+    at = {k: entry(f"legs.{k}", label) for k in leg}
+    attach = pr.point(at["attach"], leg["attach"]) if "attach" in leg else None
+    if kind == "RRR":
+        base = pr.point(at["base"], leg["base"]) if "base" in leg else None
+        la, lb = (pr.number(at[k], leg[k], **RULES["pos"]) if k in leg else None
+                  for k in ("la", "lb"))
+        elbow = pr.choice(at["elbow"], leg["elbow"], ELBOWS) if "elbow" in leg else None
+        if not ok or None in (base, la, lb, elbow):
+            return None
+        return Leg(base=base, la=la, lb=lb, elbow=elbow, attach=attach)
+    if kind == "PRR":
+        rail = _rail(pr, at.get("rail"), leg.get("rail"))
+        lb = pr.number(at["lb"], leg["lb"], **RULES["pos"]) if "lb" in leg else None
+        branch = pr.choice(at["branch"], leg["branch"], PRR_BRANCHES) if "branch" in leg else None
+        if not ok or None in (rail, lb, branch):
+            return None
+        return Leg(base=rail[0], la=None, lb=lb, elbow=branch, kind="PRR", attach=attach,
+                   rail_end=rail[1])
+    base = pr.point(at["base"], leg["base"]) if "base" in leg else None
+    stroke = _stroke(pr, at.get("stroke"), leg.get("stroke"))
+    if not ok or None in (base, stroke):
+        return None
+    return Leg(base=base, la=None, lb=None, elbow=None, kind="RPR", attach=attach, stroke=stroke)
+
+
+def _rail(pr, key, value):
+    """A PRR rail [[x0, y0], [x1, y1]] in m, of positive length: (start, end), or None."""
+    if value is None:
+        return None
+    if not (isinstance(value, list) and len(value) == 2):
+        return pr.add(key, f"must be [[x0, y0], [x1, y1]], the rail's two ends in m, got "
+                           f"{value!r}")
+    ends = [pr.point(key, v) for v in value]
+    if None in ends:
+        return None
+    if ends[0] == ends[1]:
+        return pr.add(key, f"the rail has zero length (both ends at {list(ends[0])}): the slider "
+                           f"has no direction to move in")
+    return tuple(ends)
+
+
+def _stroke(pr, key, value):
+    """An RPR stroke [min, max] of the leg's length in m, 0 < min < max: a tuple, or None."""
+    if value is None:
+        return None
+    if not (isinstance(value, list) and len(value) == 2):
+        return pr.add(key, f"must be [min, max], the leg's shortest and longest length in m, got "
+                           f"{value!r}")
+    lo, hi = (pr.number(key, v, **RULES["pos"]) for v in value)
+    if None in (lo, hi):
+        return None
+    if not lo < hi:
+        return pr.add(key, f"the shortest length must be below the longest, got [{lo}, {hi}]")
+    return (lo, hi)
+
+
+def leg_reach_problem(leg, point):
+    """Why ``leg`` cannot put its tip at ``point`` (x, y) in m in its configured branch (a
+    phrase that follows "leg i"), or None.
+
+    RRR: |point - A| within [|la - lb|, la + lb]. PRR: within lb of the rail's line, with the
+    slider of the chosen branch on the rail (0 <= qa <= its length). RPR: |point - A| within
+    the stroke."""
+    e = (point[0] - leg.base[0], point[1] - leg.base[1])
+    dist = math.hypot(*e)
+    if leg.kind == "RRR":
+        lo, hi = abs(leg.la - leg.lb), leg.la + leg.lb
+        if not lo <= dist <= hi:
+            return f"is {dist:.4g} m from its base, its reach is [{lo:.4g}, {hi:.4g}] m"
+        return None
+    if leg.kind == "RPR":
+        lo, hi = leg.stroke
+        if not lo <= dist <= hi:
+            return f"is {dist:.4g} m from its base, its stroke is [{lo:.4g}, {hi:.4g}] m"
+        return None
+    length = leg.rail_length
+    d = ((leg.rail_end[0] - leg.base[0]) / length, (leg.rail_end[1] - leg.base[1]) / length)
+    h = d[0] * e[1] - d[1] * e[0]                        # signed distance from the rail's line
+    if abs(h) > leg.lb:
+        return f"is {abs(h):.4g} m from its rail's line, farther than its link lb = {leg.lb:.4g} m"
+    s = d[0] * e[0] + d[1] * e[1] + leg.elbow * math.sqrt(leg.lb ** 2 - h ** 2)
+    if not 0.0 <= s <= length:
+        return (f"would need its slider at {s:.4g} m along its rail, which runs from 0 to "
+                f"{length:.4g} m")
+    return None
+
+
+def payload_increments(leg, end_effector, mass):
+    """What a point payload of ``mass`` kg adds to theta's inertial entries: {name: increment},
+    names without the leg's number. A platform carries it at its origin (m_p += mass); a point
+    end effector books it to the tip of ``leg`` (docs/model-file.md, [plant]): RRR alpha
+    += m la^2, beta += m la lb, gamma += m lb^2, kappa += m la; PRR alpha += m, beta += m lb,
+    gamma += m lb^2; RPR alpha += m (a mass at the leg's length qa from its base)."""
+    if end_effector == "platform":
+        return {"m_p": mass}
+    if leg.kind == "RRR":
+        return {"alpha": mass * leg.la ** 2, "beta": mass * leg.la * leg.lb,
+                "gamma": mass * leg.lb ** 2, FIRST_MOMENT: mass * leg.la}
+    if leg.kind == "PRR":
+        return {"alpha": mass, "beta": mass * leg.lb, "gamma": mass * leg.lb ** 2}
+    return {"alpha": mass}
+
+
+def attachment_points(spec_legs, pose):
+    """The legs' attachment points in the base frame at a task pose: (x, y) for a point, the
+    platform's p + R(phi) a_i for a pose (x, y, phi)."""
+    if len(pose) == 2:
+        return [tuple(pose)] * len(spec_legs)
+    c, s = math.cos(pose[2]), math.sin(pose[2])
+    return [(pose[0] + c * lg.attach[0] - s * lg.attach[1],
+             pose[1] + s * lg.attach[0] + c * lg.attach[1]) for lg in spec_legs]
 
 
 def inertia_problem(alpha, beta, gamma):
@@ -173,36 +369,203 @@ def inertia_problem(alpha, beta, gamma):
     return None
 
 
-def _check_inertia(pr, section, values, n):
-    """M_i positive definite (alpha, gamma > 0 are checked apart, so only beta^2 < alpha gamma
-    can still fail here)."""
-    if any(values.get(k) is None for k in INERTIAL):
-        return
-    for i in range(n):
-        why = inertia_problem(*(float(values[k][i]) for k in INERTIAL))
+def platform_inertia_problem(m, mx, my, inertia):
+    """Why the platform's parameters (m_p, mx_p, my_p, I_p) are not a rigid body's, or None:
+    m > 0 and I_p - (mx^2 + my^2) / m > 0 (the inertia about the centre of mass)."""
+    if not m > 0:
+        return f"m_p must be > 0, got {m:.6g}"
+    if not inertia * m > mx * mx + my * my:
+        return (f"the inertia about the centre of mass, I_p - (mx_p^2 + my_p^2) / m_p = "
+                f"{inertia - (mx * mx + my * my) / m:.6g}, must be > 0")
+    return None
+
+
+def theta_groups(legs, effector, gravity, friction):
+    """theta's layout: (key, legs) pairs in order, ``legs`` the 0-based legs of a per-leg
+    array, None for a scalar. alpha, beta, gamma for every leg; kappa (the gravity term's first
+    moment, docs/model-file.md) for the RRR and RPR legs when there is gravity; the platform's
+    m_p, mx_p, my_p, I_p; then the friction parameters of every leg."""
+    every = list(range(len(legs)))
+    groups = [(key, every) for key in INERTIAL]
+    if any(g != 0.0 for g in gravity):
+        moments = [i for i, leg in enumerate(legs) if leg.kind in ("RRR", "RPR")]
+        if moments:
+            groups.append((FIRST_MOMENT, moments))
+    if effector == "platform":
+        groups += [(key, None) for key in PLATFORM_PARAMS]
+    return groups + [(key, every) for key in FRICTION_MODELS[friction]]
+
+
+def _names(groups):
+    return tuple(key if idx is None else f"{key}{i + 1}" for key, idx in groups
+                 for i in (idx if idx is not None else [0]))
+
+
+#: bound of each theta key in [nominal] and [plant] (validate.RULES)
+_THETA_RULES = {"alpha": ("pos", "pos"), "beta": ("pos", "any"), "gamma": ("pos", "pos"),
+                "kappa": ("any", "any"), "m_p": ("pos", "pos"), "mx_p": ("any", "any"),
+                "my_p": ("any", "any"), "I_p": ("pos", "pos")}
+
+
+def _read_theta(pr, section, table, groups, plant=False):
+    """The theta entries of ``groups`` from [nominal] or [plant]: {key: tuple or float}, the
+    valid ones only; every leg's M_i and the platform checked positive definite."""
+    values = {}
+    for key, idx in groups:
+        if key not in table:
+            continue
+        rule = _THETA_RULES.get(key, ("nonneg", "nonneg"))[plant]
+        if idx is None:
+            values[key] = pr.number(f"{section}.{key}", table[key], **RULES[rule])
+        else:
+            labels = [f"leg {i + 1}" for i in idx]
+            meaning = (f", one per leg (the file has {len(idx)} [[legs]])" if len(idx) ==
+                       max(len(g[1]) for g in groups if g[1] is not None)
+                       else f", one per leg that has one: {', '.join(labels)}")
+            values[key] = pr.vector(f"{section}.{key}", table[key], labels, meaning=meaning,
+                                    **RULES[rule])
+    if all(values.get(k) is not None for k in INERTIAL):
+        for i in range(len(values["alpha"])):
+            why = inertia_problem(*(float(values[k][i]) for k in INERTIAL))
+            if why is not None:
+                pr.add(entry(f"{section}.beta", f"leg {i + 1}"), f"leg {i + 1} {why}")
+    if all(values.get(k) is not None for k in PLATFORM_PARAMS) and any(
+            idx is None for _, idx in groups):
+        why = platform_inertia_problem(*(values[k] for k in PLATFORM_PARAMS))
         if why is not None:
-            pr.add(entry(f"{section}.beta", f"leg {i + 1}"), f"leg {i + 1} {why}")
+            pr.add(f"{section}.I_p", why)
+    return {k: v for k, v in values.items() if v is not None}
 
 
-def _read_nominal(pr, nominal, n, friction):
+def _flatten(groups, values):
+    return [values[key] if idx is None else values[key][j] for key, idx in groups
+            for j in (range(len(idx)) if idx is not None else [0])]
+
+
+#: the bodies of each leg kind in [[nominal.links]] / [[plant.links]], and their keys: mass (kg),
+#: com (m, the centre of mass's distance along the body from its joint; RPR rod: back from the
+#: platform's joint), inertia (kg m^2, about the centre of mass). A slider has a mass only.
+LINK_BODIES = {"RRR": {"proximal": ("mass", "com", "inertia"),
+                       "distal": ("mass", "com", "inertia")},
+               "PRR": {"slider": ("mass",), "link": ("mass", "com", "inertia")},
+               "RPR": {"cylinder": ("mass", "com", "inertia"), "rod": ("mass", "com", "inertia")}}
+_BODY_RULES = {"mass": "pos", "com": "any", "inertia": "nonneg"}
+
+
+def lumped_from_links(leg, bodies):
+    """{alpha, beta, gamma, kappa} of one leg from its bodies ({body: {mass, com, inertia}},
+    LINK_BODIES), by the rule of docs/model-file.md ("From the links to theta"); PRR legs
+    have no kappa."""
+    if leg.kind == "RRR":
+        a, b = bodies["proximal"], bodies["distal"]
+        return {"alpha": a["inertia"] + a["mass"] * a["com"] ** 2 + b["mass"] * leg.la ** 2,
+                "beta": b["mass"] * leg.la * b["com"],
+                "gamma": b["inertia"] + b["mass"] * b["com"] ** 2,
+                FIRST_MOMENT: a["mass"] * a["com"] + b["mass"] * leg.la}
+    if leg.kind == "PRR":
+        sl, b = bodies["slider"], bodies["link"]
+        return {"alpha": sl["mass"] + b["mass"], "beta": b["mass"] * b["com"],
+                "gamma": b["inertia"] + b["mass"] * b["com"] ** 2}
+    c, r = bodies["cylinder"], bodies["rod"]
+    return {"alpha": r["mass"], "beta": r["mass"] * r["com"],
+            "gamma": c["inertia"] + c["mass"] * c["com"] ** 2 + r["inertia"] + r["mass"] * r["com"] ** 2,
+            FIRST_MOMENT: c["mass"] * c["com"]}
+
+
+def platform_from_body(mass, com, inertia):
+    """(m_p, mx_p, my_p, I_p) of a platform of ``mass`` kg, centre of mass ``com`` (platform
+    frame, m) and ``inertia`` about it (kg m^2)."""
+    return mass, mass * com[0], mass * com[1], inertia + mass * (com[0] ** 2 + com[1] ** 2)
+
+
+def _read_bodies(pr, where, kind, raw):
+    """One leg's bodies {body: {key: float}} from its [[<section>.links]] table, or None."""
+    if not isinstance(raw, dict):
+        return pr.add(where, f"must be a table of the leg's bodies {sorted(LINK_BODIES[kind])}, "
+                             f"got {type(raw).__name__}")
+    if not pr.keys(where, raw, LINK_BODIES[kind], LINK_BODIES[kind]):
+        return None
+    out = {}
+    for body, keys in LINK_BODIES[kind].items():
+        table = raw[body]
+        if not isinstance(table, dict):
+            return pr.add(f"{where}.{body}", f"must be a table {{ {', '.join(keys)} }}, got "
+                                             f"{table!r}")
+        if not pr.keys(f"{where}.{body}", table, keys, keys):
+            return None
+        values = {k: pr.number(f"{where}.{body}.{k}", table[k], **RULES[_BODY_RULES[k]])
+                  for k in keys}
+        if None in values.values():
+            return None
+        out[body] = values
+    return out
+
+
+def _expand_links(pr, section, table, legs, groups):
+    """``table`` with [[<section>.links]] (one table per leg) and [<section>.platform] (mass,
+    com, inertia) replaced by theta's inertial entries they give (lumped_from_links,
+    platform_from_body), and the keys they claim but could not give (invalid bodies, reported).
+    Giving an entry both ways is a problem."""
+    if not isinstance(table, dict) or not ({"links", "platform"} & set(table)):
+        return table, set()
+    out, claimed = dict(table), set()
+    per_leg = [k for k, idx in groups if idx is not None and k in INERTIAL + (FIRST_MOMENT,)]
+    scalars = [k for k, idx in groups if idx is None]
+    if "links" in out:
+        links = out.pop("links")
+        claimed.update(per_leg)
+        given = [k for k in per_leg if k in out]
+        for k in given:   # reported once; the links' value is checked
+            out.pop(k)
+            pr.add(f"{section}.{k}", f"given twice: by this key and by [[{section}.links]]")
+        if not (isinstance(links, list) and len(links) == len(legs)):
+            pr.add(f"{section}.links", f"must be one [[{section}.links]] table per leg (the file "
+                                       f"has {len(legs)} [[legs]]), got {links!r}"[:300])
+        elif None not in legs:   # (an invalid leg is reported already)
+            bodies = [_read_bodies(pr, entry(f"{section}.links", f"leg {i + 1}"), leg.kind, raw)
+                      for i, (leg, raw) in enumerate(zip(legs, links))]
+            if None not in bodies:
+                lumped = [lumped_from_links(leg, b) for leg, b in zip(legs, bodies)]
+                for key, idx in groups:
+                    if key in per_leg:
+                        out[key] = [lumped[i][key] for i in idx]
+    if "platform" in out and scalars:
+        body = out.pop("platform")
+        claimed.update(scalars)
+        where = f"{section}.platform"
+        for k in scalars:
+            if k in out:
+                out.pop(k)
+                pr.add(f"{section}.{k}", f"given twice: by this key and by [{where}]")
+        if isinstance(body, dict) and pr.keys(where, body, ("mass", "com", "inertia"),
+                                              ("mass", "com", "inertia")):
+            mass = pr.number(f"{where}.mass", body["mass"], **RULES["pos"])
+            com = pr.point(f"{where}.com", body["com"])
+            inertia = pr.number(f"{where}.inertia", body["inertia"], **RULES["pos"])
+            if None not in (mass, com, inertia):
+                out.update(zip(PLATFORM_PARAMS, platform_from_body(mass, com, inertia)))
+        elif not isinstance(body, dict):
+            pr.add(where, f"must be a table {{ mass, com, inertia }}, got {body!r}")
+    # keys the links claim but could not give (their problems are reported): not "missing"
+    return out, claimed - set(out)
+
+
+def _read_nominal(pr, nominal, groups, legs):
     """[nominal]: theta's names and values (None when invalid)."""
-    names = INERTIAL + FRICTION_MODELS[friction]
-    param_names = tuple(f"{key}{i + 1}" for key in names for i in range(n))
+    param_names = _names(groups)
     if nominal is None:
         return param_names, None
-    pr.keys("nominal", nominal, names, names)
-    labels, meaning = _size("n", n, param_names)
-    values = {key: pr.vector(f"nominal.{key}", nominal[key], labels, meaning=meaning,
-                             **RULES["pos" if key in INERTIAL else "nonneg"])
-              for key in names if key in nominal}
-    _check_inertia(pr, "nominal", values, n)
-    if any(values.get(key) is None for key in names):
+    nominal, unknown = _expand_links(pr, "nominal", nominal, legs, groups)
+    keys = [key for key, _ in groups]
+    pr.keys("nominal", nominal, keys, set(keys) - unknown)
+    values = _read_theta(pr, "nominal", nominal, groups)
+    if any(values.get(key) is None for key in keys):
         return param_names, None
-    return param_names, _frozen([values[key][i] for key in names for i in range(n)])
+    return param_names, _frozen(_flatten(groups, values))
 
 
-# run-time sections: key -> (length: None for a scalar, "n" per leg, "p" per parameter, or 2
-#                             for a task-space pair; rule: a validate.RULES key;
+# run-time sections: key -> (length: None for a scalar, "n" per leg, "p" per parameter, "m"
+#                             per task coordinate; rule: a validate.RULES key;
 #                             default: a third entry makes the key optional, None: the
 #                             caller fills it in)
 _SCHEMA = {
@@ -210,17 +573,20 @@ _SCHEMA = {
                "parallel_singularity_threshold": (None, "pos", DEFAULT_PARALLEL_THRESHOLD)},
     "sensing": {"sample_period": (None, "pos"), "encoder_counts_per_rev": (None, "nonneg"),
                 "velocity_filter_hz": (None, "nonneg"),
-                "closure_tolerance": (None, "pos", None)},   # default: default_closure_tolerance
-    "gains.na": {"Kd": (2, "pos"), "Q": (2, "pos"), "Gamma": ("p", "nonneg")},
-    "gains.apd": {"Kp": (2, "pos"), "Kv": (2, "pos")},
+                "closure_tolerance": (None, "pos", None),    # default: default_closure_tolerance
+                # m per count of the prismatic actuators' encoders (0: exact); required when a
+                # leg has one (PRR, RPR)
+                "linear_encoder_resolution": (None, "nonneg", None)},
+    "gains.na": {"Kd": ("m", "pos"), "Q": ("m", "pos"), "Gamma": ("p", "nonneg")},
+    "gains.apd": {"Kp": ("m", "pos"), "Kv": ("m", "pos")},
     # optional: computed torque (1/s^2, 1/s) and the LQR's weights (1/m^2, s^2/m^2, 1/(N m)^2)
-    "gains.ctc": {"Kp": (2, "pos"), "Kv": (2, "pos")},
-    "gains.lqr": {"Q_position": (2, "pos"), "Q_velocity": (2, "pos"), "R": ("n", "pos")},
-    "plant": {"alpha": ("n", "pos"), "beta": ("n", "any"), "gamma": ("n", "pos"),
-              "payload_mass": (None, "nonneg"), "payload_leg": (None, "pos"),
+    "gains.ctc": {"Kp": ("m", "pos"), "Kv": ("m", "pos")},
+    "gains.lqr": {"Q_position": ("m", "pos"), "Q_velocity": ("m", "pos"), "R": ("n", "pos")},
+    # and theta's inertial entries (theta_groups, read by _read_theta)
+    "plant": {"payload_mass": (None, "nonneg"), "payload_leg": (None, "pos"),
               "fv": ("n", "nonneg"), "fc": ("n", "nonneg"), "fs": ("n", "nonneg"),
               "stribeck_velocity": (None, "pos"), "coulomb_smoothing_velocity": (None, "pos")},
-    "trajectory": {"start": (2, "any"), "end": (2, "any"), "v_max": (None, "pos"),
+    "trajectory": {"start": ("m", "any"), "end": ("m", "any"), "v_max": (None, "pos"),
                    "a_max": (None, "pos"), "j_max": (None, "pos")},
     # a move along a path file (pm2dof.planning): the kinematic limits are optional (default:
     # the path file's [kinematic]); `path` is read separately (a string)
@@ -229,12 +595,14 @@ _SCHEMA = {
 }
 
 
-def _read_section(pr, where, table, schema, n, param_names):
+def _read_section(pr, where, table, schema, n, param_names, task=("x", "y"), extra=()):
     """A table of numbers and arrays by ``schema``: {key: float or read-only array}, holding
-    only the valid entries (and the defaults of absent optional ones); None for no table."""
+    only the valid entries (and the defaults of absent optional ones); None for no table.
+    ``task``: the task coordinates' names; ``extra``: more keys, required, read by the caller."""
     if table is None:
         return None
-    pr.keys(where, table, schema, {k for k, spec in schema.items() if len(spec) == 2})
+    pr.keys(where, table, set(schema) | set(extra),
+            {k for k, spec in schema.items() if len(spec) == 2} | set(extra))
     out = {}
     for key, (length, rule, *default) in schema.items():
         if key not in table:
@@ -244,7 +612,7 @@ def _read_section(pr, where, table, schema, n, param_names):
         if length is None:
             value = pr.number(f"{where}.{key}", table[key], **RULES[rule])
         else:
-            labels, meaning = _size(length, n, param_names)
+            labels, meaning = _size(length, n, param_names, task)
             value = pr.vector(f"{where}.{key}", table[key], labels, meaning=meaning, **RULES[rule])
             value = None if value is None else _frozen(value)
         if value is not None:
@@ -261,28 +629,35 @@ def _read_limits(pr, doc, n, param_names):
     return limits
 
 
-def default_closure_tolerance(legs, encoder_counts_per_rev):
+def default_closure_tolerance(legs, encoder_counts_per_rev, linear_resolution=0.0):
     """[sensing] closure_tolerance when a model file does not set it, m: five encoder steps at
     the longest active link, at least 1 um. (One step moves an elbow by la * 2 pi / counts;
     quantised angles over the paper robot's workspace give residuals up to 0.8 of that, and
-    up to 1.3 with a full step of error: tests/core/test_closure.py measures it.)"""
-    if encoder_counts_per_rev <= 0:
-        return CLOSURE_FLOOR
-    step = 2 * math.pi / encoder_counts_per_rev
-    return max(CLOSURE_FLOOR, 5 * max(leg.la for leg in legs) * step)
+    up to 1.3 with a full step of error: tests/core/test_closure.py measures it.) A prismatic
+    actuator's step moves its joint by ``linear_resolution`` m."""
+    step = 2 * math.pi / encoder_counts_per_rev if encoder_counts_per_rev > 0 else 0.0
+    moves = [leg.la * step if leg.actuator == "revolute" else linear_resolution or 0.0
+             for leg in legs]
+    return max(CLOSURE_FLOOR, 5 * max(moves))
 
 
-def _read_runtime(pr, doc, n, param_names, legs):
+def _read_runtime(pr, doc, n, param_names, legs, groups, effector):
     """The run-time sections [sensing], [gains.*], [plant]."""
+    task = END_EFFECTORS.get(effector, ("x", "y"))
     sensing_raw = pr.table("sensing", doc.get("sensing"))
     sensing = _read_section(pr, "sensing", sensing_raw, _SCHEMA["sensing"], n, param_names)
     counts = (sensing or {}).get("encoder_counts_per_rev")
     if counts is not None and counts != int(counts):
         counts = pr.add("sensing.encoder_counts_per_rev", f"must be a whole number (0: no "
                                                           f"quantisation), got {counts}")
+    linear = (sensing or {}).get("linear_encoder_resolution")
+    prismatic = [i + 1 for i, leg in enumerate(legs) if leg is not None and leg.actuator != "revolute"]
+    if sensing is not None and prismatic and "linear_encoder_resolution" not in sensing_raw:
+        pr.add("sensing.linear_encoder_resolution",
+               f"required: legs {prismatic} have prismatic actuators (m per count, 0: exact)")
     if (sensing is not None and "closure_tolerance" not in sensing_raw and counts is not None
-            and None not in legs):
-        sensing["closure_tolerance"] = default_closure_tolerance(legs, counts)
+            and None not in legs and (linear is not None or not prismatic)):
+        sensing["closure_tolerance"] = default_closure_tolerance(legs, counts, linear)
     gains_raw = pr.table("gains", doc.get("gains"))
     gains = {}
     if gains_raw is not None:
@@ -292,19 +667,35 @@ def _read_runtime(pr, doc, n, param_names, legs):
                 continue
             gains[law] = _read_section(
                 pr, f"gains.{law}", pr.table(f"gains.{law}", gains_raw.get(law), required=False),
-                _SCHEMA[f"gains.{law}"], n, param_names)
-    plant = _read_section(pr, "plant", pr.table("plant", doc.get("plant")), _SCHEMA["plant"], n,
-                          param_names)
-    leg = (plant or {}).get("payload_leg")
-    if leg is not None and (leg != int(leg) or not 1 <= leg <= n):
-        pr.add("plant.payload_leg", f"must be a leg number 1..{n} (1-based), got {leg}")
-    if plant is not None:
-        _check_inertia(pr, "plant", plant, n)
+                _SCHEMA[f"gains.{law}"], n, param_names, task)
+    plant = _read_plant(pr, pr.table("plant", doc.get("plant")), n, param_names, groups, effector,
+                        legs)
     return sensing, gains, plant
 
 
-def _read_trajectories(pr, doc, n, param_names, legs):
-    """[trajectories.<name>]: at least one move, whose end points every leg reaches."""
+def _read_plant(pr, raw, n, param_names, groups, effector, legs):
+    """[plant]: theta's inertial entries (the truth), the payload and the plant's friction.
+    A platform carries its payload at its origin; a point end effector books it to a leg."""
+    schema = dict(_SCHEMA["plant"])
+    if effector == "platform":
+        del schema["payload_leg"]
+    inertial = [(key, idx) for key, idx in groups if key not in FRICTION_MODELS[
+        "coulomb_viscous_stribeck"]]
+    raw, unknown = _expand_links(pr, "plant", raw, legs, inertial)
+    plant = _read_section(pr, "plant", raw, schema, n, param_names,
+                          extra=[key for key, _ in inertial if key not in unknown])
+    if plant is None:
+        return None
+    values = _read_theta(pr, "plant", raw, inertial, plant=True)
+    plant.update({k: v if isinstance(v, float) else _frozen(v) for k, v in values.items()})
+    leg = plant.get("payload_leg")
+    if leg is not None and (leg != int(leg) or not 1 <= leg <= n):
+        pr.add("plant.payload_leg", f"must be a leg number 1..{n} (1-based), got {leg}")
+    return plant
+
+
+def _read_trajectories(pr, doc, n, param_names, legs, task):
+    """[trajectories.<name>]: at least one move, whose end poses every leg reaches."""
     raw = pr.table("trajectories", doc.get("trajectories"))
     if raw is None:
         return None
@@ -316,26 +707,51 @@ def _read_trajectories(pr, doc, n, param_names, legs):
         if isinstance(t, dict) and "path" in t:   # a path file, planned by pm2dof.planning
             rest = {k: v for k, v in t.items() if k != "path"}
             move = _read_section(pr, f"trajectories.{name}", rest, _SCHEMA["path_move"], n,
-                                 param_names)
+                                 param_names, task)
             ref = pr.text(f"trajectories.{name}.path", t["path"], nonempty=True)
             trajs[name] = None if move is None or ref is None else {**move, "path": ref}
             continue
         trajs[name] = _read_section(pr, f"trajectories.{name}", t, _SCHEMA["trajectory"], n,
-                                    param_names)
-    for name, t in trajs.items():  # the legs must meet: every end point within every leg's reach
+                                    param_names, task)
+    for name, t in trajs.items():  # the legs must meet: every end pose within every leg's reach
         for end in ("start", "end"):
-            if t is None or end not in t or None in legs:
-                continue
-            for i, lg in enumerate(legs):
-                dist = float(np.hypot(*(t[end] - np.asarray(lg.base))))
-                lo, hi = abs(lg.la - lg.lb), lg.la + lg.lb
-                if not lo <= dist <= hi:
-                    pr.add(f"trajectories.{name}.{end}",
-                           f"the legs cannot meet at {t[end].tolist()}: leg {i + 1} is "
-                           f"{dist:.4g} m from its base, its reach is [{lo:.4g}, {hi:.4g}] m")
+            if t is not None and end in t:
+                _check_reach(pr, f"trajectories.{name}.{end}", legs, t[end])
         if t is not None and "start" in t and "end" in t and np.array_equal(t["start"], t["end"]):
             pr.add(f"trajectories.{name}", "start and end are the same point")
     return trajs
+
+
+def _check_reach(pr, key, legs, pose):
+    """One problem per leg that cannot reach the task pose (x, y) or (x, y, phi)."""
+    if None in legs or (len(pose) == 3 and any(leg.attach is None for leg in legs)):
+        return
+    pose = [float(v) for v in pose]
+    for i, (leg, point) in enumerate(zip(legs, attachment_points(legs, pose))):
+        why = leg_reach_problem(leg, point)
+        if why is not None:
+            what = "the legs cannot meet" if len(pose) == 2 else "the platform is out of reach"
+            pr.add(key, f"{what} at {pose}: leg {i + 1} ({leg.kind}) {why}")
+
+
+def _read_platform(pr, doc, effector, legs):
+    """[platform] (a platform only): ``home``, the pose (x, y, phi) that seeds fk."""
+    raw = doc.get("platform")
+    if effector != "platform":
+        if raw is not None:
+            pr.add("platform", "only for [model] end_effector = \"platform\"")
+        return None
+    raw = pr.table("platform", raw)
+    if raw is None:
+        return None
+    pr.keys("platform", raw, ("home",), ("home",))
+    if "home" not in raw:
+        return None
+    home = pr.vector("platform.home", raw["home"], ["x", "y", "phi"],
+                     meaning=" [x, y, phi] in m, m, rad")
+    if home is not None:
+        _check_reach(pr, "platform.home", legs, home)
+    return home
 
 
 def _read_control(pr, doc, n, tau_max):
@@ -392,21 +808,33 @@ def read_model_file(path):
     raw, doc = _read_toml(pr, path)
     pr.keys("", doc, _TOP_KEYS)
     model = pr.table("model", doc.get("model"))
-    name, friction, constants, fk_branch, substeps = _read_model(pr, model)
+    name, friction, constants, fk_branch, substeps, effector, gravity = _read_model(pr, model)
+    effector = effector or "point"
+    if gravity is None:  # invalid (reported): theta's names as with gravity, for the checks
+        gravity = (math.nan, math.nan)
+    m = len(END_EFFECTORS[effector])
     legs_raw = doc.get("legs")
-    if not isinstance(legs_raw, list) or len(legs_raw) < 2:
-        pr.stop("legs", "needs at least two [[legs]] tables (a planar 2-DOF mechanism)")
+    if not isinstance(legs_raw, list) or len(legs_raw) < m:
+        what = ("two [[legs]] tables (a planar 2-DOF mechanism)" if m == 2 else
+                "three [[legs]] tables (a platform has 3 degrees of freedom)")
+        pr.stop("legs", f"needs at least {what}")
     n = len(legs_raw)
-    legs = tuple(_read_leg(pr, i, leg) for i, leg in enumerate(legs_raw))
-    if n == 2 and model is not None and "fk_branch" not in model:
+    legs = tuple(_read_leg(pr, i, leg, effector) for i, leg in enumerate(legs_raw))
+    if n == 2 and m == 2 and model is not None and "fk_branch" not in model:
         pr.add("model.fk_branch", "a two-leg mechanism must choose its forward-kinematics branch "
                                   "('left' or 'right' of the line B1 -> B2)")
     if friction is None:  # theta's names and size depend on it
         pr.raise_if_any()
-    param_names, theta = _read_nominal(pr, pr.table("nominal", doc.get("nominal")), n, friction)
+    # theta's names depend on the legs' kinds (an invalid leg: the kind its table names)
+    kinds = [leg if leg is not None else Leg(None, None, None, None, kind=str(
+        table.get("kind", "RRR")) if isinstance(table, dict) else "RRR")
+        for leg, table in zip(legs, legs_raw)]
+    groups = theta_groups(kinds, effector, gravity, friction)
+    param_names, theta = _read_nominal(pr, pr.table("nominal", doc.get("nominal")), groups, legs)
     limits = _read_limits(pr, doc, n, param_names)
-    sensing, gains, plant = _read_runtime(pr, doc, n, param_names, legs)
-    trajs = _read_trajectories(pr, doc, n, param_names, legs)
+    sensing, gains, plant = _read_runtime(pr, doc, n, param_names, legs, groups, effector)
+    home = _read_platform(pr, doc, effector, legs)
+    trajs = _read_trajectories(pr, doc, n, param_names, legs, END_EFFECTORS[effector])
     control = _read_control(pr, doc, n, (limits or {}).get("tau_max"))
     pr.raise_if_any()
     spec = ModelSpec(
@@ -414,7 +842,8 @@ def read_model_file(path):
         friction=friction, friction_constants=constants, fk_branch=fk_branch,
         rk4_substeps=substeps, legs=legs, param_names=param_names, theta_nominal=theta,
         limits=limits, sensing=sensing, gains=gains, plant=plant, trajectories=trajs,
-        control=control, file_sha256=hashlib.sha256(raw).hexdigest())
+        control=control, file_sha256=hashlib.sha256(raw).hexdigest(), end_effector=effector,
+        gravity=tuple(gravity), home=None if home is None else tuple(home))
     formulation = json.dumps(spec.formulation(), sort_keys=True, separators=(",", ":"))
     object.__setattr__(spec, "formulation_sha256", hashlib.sha256(formulation.encode()).hexdigest())
     return spec

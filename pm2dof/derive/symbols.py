@@ -1,13 +1,29 @@
 # The symbols of the derivation: joint angles, task-space quantities, parameters, and sgn().
 import sympy as sp
 
-__all__ = ["Symbols", "sgn", "solve2"]
+__all__ = ["Symbols", "sgn", "solve2", "solve_small"]
 
 
 def solve2(A, b):
     """A^-1 b for a 2x2 A by Cramer's rule (SymPy's generic det/adjugate simplify and crawl)."""
     det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
     return sp.Matrix([A[1, 1] * b[0] - A[0, 1] * b[1], A[0, 0] * b[1] - A[1, 0] * b[0]]) / det
+
+
+def solve_small(A, b):
+    """A^-1 b for a 2x2 or 3x3 A by Cramer's rule, unsimplified (2x2: exactly solve2's
+    expressions, so today's models derive to the same code)."""
+    if A.shape == (2, 2):
+        return solve2(A, b)
+    if A.shape != (3, 3):
+        raise ValueError(f"solve_small takes a 2x2 or 3x3 matrix, got {A.shape}")
+
+    def det3(c0, c1, c2):  # det [c0 c1 c2] by columns
+        return (c0[0] * (c1[1] * c2[2] - c1[2] * c2[1]) - c1[0] * (c0[1] * c2[2] - c0[2] * c2[1])
+                + c2[0] * (c0[1] * c1[2] - c0[2] * c1[1]))
+    cols = [A[:, k] for k in range(3)]
+    det = det3(*cols)
+    return sp.Matrix([det3(*[b if k == j else cols[k] for k in range(3)]) for j in range(3)]) / det
 
 
 class sgn(sp.Function):
@@ -28,16 +44,19 @@ class sgn(sp.Function):
 class Symbols:
     """All symbols for an n-leg model; names follow the paper (q = [qa; qb], theta, ...)."""
 
-    def __init__(self, n_legs, param_names):
+    def __init__(self, n_legs, param_names, task_names=("x", "y")):
         n = n_legs
-        self.n = n
+        self.n, self.m = n, len(task_names)       # legs, task-space dimension
         self.qa = sp.Matrix(sp.symbols(f"qa1:{n + 1}", real=True))
         self.qb = sp.Matrix(sp.symbols(f"qb1:{n + 1}", real=True))
         self.q = self.qa.col_join(self.qb)                      # eq. 3 ordering
-        self.xe = sp.Matrix(sp.symbols("x y", real=True))       # task coordinates q_e
-        self.xed = sp.Matrix(sp.symbols("xd yd", real=True))    # measured qd_e
-        self.xrd = sp.Matrix(sp.symbols("xrd yrd", real=True))  # reference velocity qd_e^r
-        self.xrdd = sp.Matrix(sp.symbols("xrdd yrdd", real=True))  # reference acceleration
+
+        def task(suffix):
+            return sp.Matrix(sp.symbols(" ".join(f"{t}{suffix}" for t in task_names), real=True))
+        self.xe = task("")          # task coordinates q_e: x, y (and phi for a platform)
+        self.xed = task("d")        # measured qd_e
+        self.xrd = task("rd")       # reference velocity qd_e^r
+        self.xrdd = task("rdd")     # reference acceleration
         self.tau_a = sp.Matrix(sp.symbols(f"tau_a1:{n + 1}", real=True))
         # joint-space velocities: measured qd, reference qd^r = W xrd, qdd^r = W xrdd + Wdot xrd
         self.qd = sp.Matrix(sp.symbols(f"qda1:{n + 1}", real=True) + sp.symbols(f"qdb1:{n + 1}", real=True))

@@ -17,14 +17,17 @@ from ..core.errors import ArgumentError, SingularityError, WorkspaceError
 __all__ = ["BaseParameters", "Identifiability", "identifiability", "base_parameters",
            "format_identifiability", "inertial_mask", "region_center", "INERTIAL"]
 
-#: name prefixes of the inertial parameters of a leg (eq. 5: alpha_i, beta_i, gamma_i);
-#: every other parameter is a friction coefficient
+#: name prefixes of the inertial parameters of a leg (eq. 5: alpha_i, beta_i, gamma_i)
 INERTIAL = ("alpha", "beta", "gamma")
+#: name prefixes of the friction coefficients (eq. 2 and its extensions); every other
+#: parameter (a leg's alpha, beta, gamma, kappa, the platform's m_p, mx_p, my_p, I_p) is inertial
+FRICTION = ("fv", "fc", "fs")
 
 
 def inertial_mask(names):
-    """Boolean array: which of ``names`` (parameters or base parameters) are inertial."""
-    return np.array([str(n).startswith(INERTIAL) for n in names], dtype=bool)
+    """Boolean array: which of ``names`` (parameters or base parameters) are inertial (not
+    friction)."""
+    return np.array([not str(n).startswith(FRICTION) for n in names], dtype=bool)
 
 
 def region_center(model):
@@ -139,16 +142,16 @@ class Identifiability:
 
 
 def _random_states(model, n, rng, center, radius):
-    out = []
+    out, m = [], len(center)   # the task dimension (2, or 3 for a platform: x, y, phi)
     while len(out) < n:
-        xe = center + rng.uniform(-radius, radius, 2)
+        xe = center + rng.uniform(-radius, radius, m)
         try:
             q = model.ik(xe)
             model.W(q)
         except (WorkspaceError, SingularityError):
             continue
-        v = rng.normal(0, 0.3, 2)
-        out.append((q, v, rng.normal(0, 0.3, 2), rng.normal(0, 5.0, 2)))
+        v = rng.normal(0, 0.3, m)
+        out.append((q, v, rng.normal(0, 0.3, m), rng.normal(0, 5.0, m)))
     return out
 
 

@@ -5,7 +5,9 @@ The data determine only the base parameters pi = P theta (P: (r, p), the identit
 independent columns plus the folding ``beta`` of the dependent ones:
 :meth:`pm2dof.identification.base.BaseParameters.matrix`). A theta is physical when every leg's
 inertia matrix [[alpha_i, beta_i], [beta_i, gamma_i]] is positive semidefinite (alpha_i >= 0,
-gamma_i >= 0, alpha_i gamma_i - beta_i^2 >= 0) and every friction coefficient is >= 0.
+gamma_i >= 0, alpha_i gamma_i - beta_i^2 >= 0; the same condition for every leg kind), a
+platform's m_p, I_p >= 0 and m_p I_p >= mx_p^2 + my_p^2, and every friction coefficient is
+>= 0 (first moments kappa_i are free).
 
 Two stages, each solved by IPOPT:
 
@@ -44,7 +46,8 @@ def physical_constraints(theta, names):
 
     Returns
     -------
-    list of 3n + (number of friction coefficients) expressions, and their labels
+    list of 3n (+ 3 for a platform) + (number of friction coefficients) expressions, and
+    their labels
     """
     legs, friction = _legs(names)
     g, labels = [], []
@@ -52,6 +55,10 @@ def physical_constraints(theta, names):
         g += [theta[a], theta[c], theta[a] * theta[c] - theta[b] * theta[b]]
         labels += [f"alpha{i + 1} >= 0", f"gamma{i + 1} >= 0",
                    f"alpha{i + 1} gamma{i + 1} - beta{i + 1}^2 >= 0"]
+    if "m_p" in names:   # the platform: m >= 0, its inertia about its centre of mass >= 0
+        m, mx, my, inertia = (theta[names.index(k)] for k in ("m_p", "mx_p", "my_p", "I_p"))
+        g += [m, inertia, m * inertia - mx * mx - my * my]
+        labels += ["m_p >= 0", "I_p >= 0", "m_p I_p - mx_p^2 - my_p^2 >= 0"]
     for j in friction:
         g.append(theta[j])
         labels.append(f"{names[j]} >= 0")
