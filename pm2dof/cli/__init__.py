@@ -12,7 +12,8 @@ Typical use:
   pm2dof splits [--tau-max X] torque splits (min-norm, min-max, preload) in closed loop
   pm2dof maps --out DIR       singularities, conditioning, force/acceleration capability maps
   pm2dof animate --out F.gif  the move as an animation: legs to scale, error magnified
-  pm2dof study run S.toml --out DIR   many rollouts on Dask (robustness, gains, adaptation)
+  pm2dof study run S.toml --out DIR   many rollouts on Dask (robustness, gains, adaptation,
+                              model_based)
   pm2dof study report DIR     summary tables and figures of a study's results
   pm2dof plan [--path P]      time-optimal motion along a path, with either torque split
   pm2dof bench [--json]       controller step time: C, Python binding, CasADi, NumPy, SymPy

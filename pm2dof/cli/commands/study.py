@@ -29,10 +29,10 @@ def add_parser(sub, common):
                         "study on a non-empty DIR is refused. Rows depend only on the study file "
                         "(seed, draw), not on the workers or the cluster. Every key of a study "
                         "file is listed in docs/study-file.md; the shipped studies "
-                        "(robustness, gains, adaptation) are commented examples: see them with "
+                        "(robustness, gains, adaptation, model_based) are commented examples: see them with "
                         "`pm2dof study show NAME`.")
     r.add_argument("study", help="study file (TOML), or a shipped study's name: robustness, "
-                   "gains, adaptation")
+                   "gains, adaptation, model_based")
     r.add_argument("--model", metavar="NAME|PATH", help="run the study on this model instead of "
                    "the one its file names")
     r.add_argument("--generated", metavar="DIR", help="the model's generated C, when not in "
@@ -53,7 +53,8 @@ def add_parser(sub, common):
                         description="Print a shipped study file, or list them without NAME. "
                         "Start your own: pm2dof study show robustness > my_study.toml, edit its "
                         "model key (a shipped model's name or a path relative to the study file)")
-    r.add_argument("name", nargs="?", metavar="NAME", help="robustness, gains or adaptation")
+    r.add_argument("name", nargs="?", metavar="NAME", help="robustness, gains, adaptation or "
+                   "model_based")
     r = ssub.add_parser("report", help="summary tables and figures of a study's results",
                         description="Read DIR/results and print: RMSE (eq. 41) per controller "
                         "and move; the RPE of every NA variant over APD on the same plants; the "
