@@ -1,4 +1,4 @@
-# `pm2dof identify SUBCOMMAND`: identification of theta (report, excite, fit, design, monte-carlo).
+# `pm2dof identify SUBCOMMAND`: identification of theta (report, excite, fit, design, ...).
 import argparse
 
 from ...core.errors import ArgumentError
@@ -31,8 +31,9 @@ def add_parser(sub, common):
     def excitation_options(r, what):
         r.add_argument("--excitation", metavar="FILE", help=f"excitation file to {what} "
                        "(written by `pm2dof identify design`); its model is the default")
-        r.add_argument("--duration", type=number(0.0, 3600.0), metavar="S", help="without --excitation: "
-                       "length of the default multi-sine, s (default 4)")
+        r.add_argument("--duration", type=number(0.0, 3600.0), metavar="S",
+                       help="without --excitation: length of the default multi-sine, s "
+                       "(default 4)")
 
     def simulated_options(r, when=""):
         r.add_argument("--exact-encoders", action="store_true",

@@ -29,8 +29,8 @@ def add_parser(sub, common):
                         "study on a non-empty DIR is refused. Rows depend only on the study file "
                         "(seed, draw), not on the workers or the cluster. Every key of a study "
                         "file is listed in docs/study-file.md; the shipped studies "
-                        "(robustness, gains, adaptation, model_based) are commented examples: see them with "
-                        "`pm2dof study show NAME`.")
+                        "(robustness, gains, adaptation, model_based) are commented examples: "
+                        "see them with `pm2dof study show NAME`.")
     r.add_argument("study", help="study file (TOML), or a shipped study's name: robustness, "
                    "gains, adaptation, model_based")
     r.add_argument("--model", metavar="NAME|PATH", help="run the study on this model instead of "
