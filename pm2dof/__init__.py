@@ -23,7 +23,7 @@ The package is layered; imports only point down (tests/test_layers.py checks it)
 ``studies/``       3. many-rollout studies on Dask, results in Parquet.
 ``planning/``      3. paths in the task plane, time-optimal and kinematic timing.
 ``figures/``       4. matplotlib figures and the demo.
-``cli.py``         4. ``pm2dof COMMAND``: parses arguments and dispatches, nothing else.
+``cli/``          4. ``pm2dof COMMAND``: one module per command, each parses and prints.
 ``reference/``     beside the layers: independent NumPy formulations for tests and the bench.
 =================  ==========================================================================
 

@@ -175,21 +175,18 @@ def format_table3(numbers, paper=True):
     return "\n".join(lines)
 
 
-def run_table3(model, *, as_json=False, exact_encoders=False, save=None, echo=print,
-               progress=None, include=()):
-    """``pm2dof table3``: run :func:`table3`, print it (text or JSON), optionally save it.
+def run_table3(model, *, exact_encoders=False, save=None, progress=None, include=()):
+    """``pm2dof table3``: run :func:`table3`, optionally save it; returns the numbers
+    (:func:`table3_json`; the text: :func:`format_table3`).
 
     ``save`` is a path for the numbers and their provenance (JSON); ``include`` adds
-    controllers (:data:`EXTRA_CONTROLLERS`). Returns the numbers.
+    controllers (:data:`EXTRA_CONTROLLERS`).
     """
-    from ..infra.results import dumps, provenance, write_json
-    numbers = table3_json(table3(model, quantise=not exact_encoders,
-                                 progress=None if as_json else progress, include=include))
-    echo(dumps(numbers) if as_json else format_table3(numbers, is_paper_robot(model)))
+    from ..infra.results import provenance, write_json
+    numbers = table3_json(table3(model, quantise=not exact_encoders, progress=progress,
+                                 include=include))
     if save:
         write_json(save, {**numbers, "provenance": provenance(model)})
-        if not as_json:
-            echo(f"saved {save}")
     return numbers
 
 

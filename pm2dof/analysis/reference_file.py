@@ -25,7 +25,7 @@ from ..infra.tables import read_columns
 from .experiment import _extra_controller
 
 __all__ = ["read_trajectory", "ReferenceFileError", "TASK_COLUMNS", "PERIOD_TOLERANCE",
-           "simulate_reference", "reference_summary", "LAWS"]
+           "simulate_reference", "reference_summary", "format_reference_summary", "LAWS"]
 
 #: the controllers ``pm2dof simulate`` runs: the paper's two, computed torque, LQR
 LAWS = ("na", "apd", "ctc", "lqr")
@@ -198,3 +198,13 @@ def reference_summary(results):
             row["max_phi_error_rad"] = float(np.max(np.abs(e[:, 2])))
         out[law] = row
     return out
+
+
+def format_reference_summary(summary):
+    """:func:`reference_summary` as the table ``pm2dof simulate`` prints."""
+    lines = [f"{'law':5s} {'RMSE m':>11s} {'max err m':>11s} {'peak tau':>9s} {'saturated':>9s}  "
+             f"outcome"]
+    for law, r in summary.items():
+        lines.append(f"{law:5s} {r['rmse_m']:11.4e} {r['max_error_m']:11.4e} "
+                     f"{r['peak_tau']:9.4g} {r['n_saturated']:9d}  {r['outcome_message']}")
+    return "\n".join(lines)

@@ -23,7 +23,7 @@ from ..control.trajectory import line_moves, model_move
 from ..infra.progress import bar
 
 __all__ = ["split_comparison", "format_split_comparison", "tau_max_sweep", "run_splits",
-           "preload_settings"]
+           "format_splits", "preload_settings"]
 
 CONTROLLERS = {"apd": APDController, "na": NAController}
 
@@ -170,17 +170,18 @@ def format_split_comparison(numbers, tau_max, preload, preload_sign):
     return "\n".join(lines)
 
 
-def run_splits(model, tau_max=None, preload=None, preload_sign=None, as_json=False,
-               progress=None):
-    """The ``pm2dof splits`` command: the table (or JSON) at one limit. Returns the numbers."""
-    from ..infra.results import dumps
+def run_splits(model, tau_max=None, preload=None, preload_sign=None, progress=None):
+    """The ``pm2dof splits`` command's numbers at one limit: ``{"tau_max", "preload",
+    "preload_sign", "results"}`` (its ``--json``; the text: :func:`format_splits`)."""
     n = model.n_legs
     w = model.spec.limits["tau_max"] if tau_max is None else np.broadcast_to(
         np.asarray(tau_max, dtype=float), (n,))
     pre, sgn = preload_settings(model, preload, preload_sign)
     numbers = split_comparison(model, w, pre, sgn, progress=progress)
-    if as_json:
-        print(dumps({"tau_max": w, "preload": pre, "preload_sign": sgn, "results": numbers}))
-    else:
-        print(format_split_comparison(numbers, w, pre, sgn))
-    return numbers
+    return {"tau_max": w, "preload": pre, "preload_sign": sgn, "results": numbers}
+
+
+def format_splits(res):
+    """:func:`run_splits`'s result as the table ``pm2dof splits`` prints."""
+    return format_split_comparison(res["results"], res["tau_max"], res["preload"],
+                                   res["preload_sign"])

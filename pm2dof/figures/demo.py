@@ -1,4 +1,5 @@
 # The main job (`make demo`, `pm2dof demo`): the paper's experiment, its figures and results.json.
+from dataclasses import dataclass
 from pathlib import Path
 
 from ..analysis.experiment import (format_sensitivity, format_table3, is_paper_robot,
@@ -6,29 +7,41 @@ from ..analysis.experiment import (format_sensitivity, format_table3, is_paper_r
 from ..infra.results import provenance, write_json
 from .experiment import experiment_figures
 
-__all__ = ["run_demo"]
+__all__ = ["run_demo", "DemoResult", "demo_header", "format_demo"]
 
 
-def run_demo(model, out="out", runs=40, echo=print, progress=None):
-    """Simulate the experiment of Sect. 5, print Table 3 beside the paper's and a sensitivity
-    table, repeat the move ``runs`` times, and write figures and ``results.json`` to ``out``.
+@dataclass(frozen=True)
+class DemoResult:
+    """What :func:`run_demo` did: ``data`` (written to ``json_path``, results.json), the
+    figures ``paths``, and what :func:`format_demo` prints besides: whether the model is the
+    paper's robot, the sensitivity rows, the repeated runs, the quick robustness study's size
+    (``study_draws``) or the module it lacked (``study_skipped``)."""
+    data: dict
+    paths: tuple
+    json_path: object
+    paper_robot: bool
+    sensitivity: tuple
+    repeated: object = None
+    study_draws: object = None
+    study_skipped: object = None
 
-    Returns the dict written to ``results.json``.
+
+def demo_header(model):
+    """The lines ``pm2dof demo`` prints before it starts."""
+    return (f"pm2dof demo: the experiment of Shang & Cong (2010), Sect. 5, in simulation\n"
+            f"model {model.name!r} from {model.spec.path}; generated C {model.library}\n")
+
+
+def run_demo(model, out="out", runs=40, progress=None):
+    """Simulate the experiment of Sect. 5 (Table 3 and a sensitivity table), repeat the move
+    ``runs`` times, and write figures and ``results.json`` to ``out``.
+
+    Returns a :class:`DemoResult` (its text: :func:`format_demo`).
     """
     m = model
-    echo(f"pm2dof demo: the experiment of Shang & Cong (2010), Sect. 5, in simulation\n"
-         f"model {m.name!r} from {m.spec.path}; generated C {m.library}\n")
     results, rep, paths = experiment_figures(m, out, runs, progress)
     numbers = table3_json(results)
-    echo(format_table3(numbers, is_paper_robot(m)))
     sens = sensitivity(m)
-    echo("\nSensitivity: the same table under other assumptions of the simulation (RMSE, m):")
-    echo(format_sensitivity(sens))
-    if rep is not None:
-        r = rep["rmse"]
-        echo(f"\nSame {rep['speed']}-speed move repeated {len(r)} times, theta_hat carried over:"
-             f" NA RMSE {r[0]:.3e} m (run 1) -> {r[-1]:.3e} m (run {len(r)}); "
-             f"APD {rep['apd_rmse']:.3e} m.")
     data = {"table3": numbers, "sensitivity": dict(sens), "provenance": provenance(m)}
     if rep is not None:
         data["repeated_runs"] = {"speed": rep["speed"], "rmse": rep["rmse"],
@@ -39,33 +52,59 @@ def run_demo(model, out="out", runs=40, echo=print, progress=None):
     from .maps import maps_figures
     from .splits import splits_figure
     maps, map_paths = maps_figures(m, Path(out) / "maps", progress=progress)
-    w = maps["over_clear_workspace"]["force_ratio"]
-    echo(f"\nCapability maps (maps/): the min-max split's force in every direction is "
-         f"{w['min']:.3f}-{w['max']:.3f}x (median {w['median']:.3f}x) the minimum-norm split's "
-         f"over the workspace clear of singularities.")
     paths += map_paths
     if "high" in m.spec.trajectories:
         split_path, _ = splits_figure(m, out, "high", progress=progress)
         gif, _ = animate_move(m, Path(out) / "move_high_na.gif", progress=progress)
         paths += [split_path, gif]
     data["maps"] = maps
+    draws = skipped = None
     try:
-        study = _demo_study(m, Path(out) / "study_robustness", echo, progress)
+        study = _demo_study(m, Path(out) / "study_robustness", progress)
     except ModuleNotFoundError as exc:     # Dask / pyarrow: the [studies] extra
-        echo(f"\nRobustness study skipped: it needs {exc.name}, which is not installed "
-             f"(pip install 'pm2dof[studies]').")
-        study = None
+        skipped, study = exc.name, None
     if study is not None:
         data["study_robustness_quick"] = study[0]
         paths += study[1]
+        draws = study[2]
     json_path = write_json(Path(out) / "results.json", data)
-    echo(f"\nfigures: {', '.join(str(p) for p in paths)}\nnumbers: {json_path}")
-    return data
+    return DemoResult(data, tuple(paths), json_path, is_paper_robot(m), tuple(sens), rep,
+                      draws, skipped)
 
 
-def _demo_study(m, out, echo, progress):
+def format_demo(r):
+    """A :class:`DemoResult` as ``pm2dof demo`` prints it (after :func:`demo_header`)."""
+    lines = [format_table3(r.data["table3"], r.paper_robot),
+             "\nSensitivity: the same table under other assumptions of the simulation (RMSE, m):",
+             format_sensitivity(r.sensitivity)]
+    if r.repeated is not None:
+        rep, rmse = r.repeated, r.repeated["rmse"]
+        lines.append(f"\nSame {rep['speed']}-speed move repeated {len(rmse)} times, theta_hat "
+                     f"carried over: NA RMSE {rmse[0]:.3e} m (run 1) -> {rmse[-1]:.3e} m (run "
+                     f"{len(rmse)}); APD {rep['apd_rmse']:.3e} m.")
+    w = r.data["maps"]["over_clear_workspace"]["force_ratio"]
+    lines.append(f"\nCapability maps (maps/): the min-max split's force in every direction is "
+                 f"{w['min']:.3f}-{w['max']:.3f}x (median {w['median']:.3f}x) the minimum-norm "
+                 f"split's over the workspace clear of singularities.")
+    if r.study_skipped is not None:
+        lines.append(f"\nRobustness study skipped: it needs {r.study_skipped}, which is not "
+                     f"installed (pip install 'pm2dof[studies]').")
+    elif "study_robustness_quick" in r.data:
+        lines.append(f"\nRobustness study, quick size ({r.study_draws} random plants; the full "
+                     f"study is `pm2dof study run robustness --out DIR`): RPE over APD on the "
+                     f"same plants, median [5th, 95th percentile]:")
+        for s in r.data["study_robustness_quick"]:
+            lines.append(f"  {s['controller']:18s} {s['move']:5s} {s['median']:5.1f} % "
+                         f"[{s['p05']:5.1f}, {s['p95']:5.1f}], better on "
+                         f"{100 * s['share_better']:.0f} % of the plants")
+    lines.append(f"\nfigures: {', '.join(str(p) for p in r.paths)}\nnumbers: {r.json_path}")
+    return "\n".join(lines)
+
+
+def _demo_study(m, out, progress):
     """The robustness study at its --quick size (a local Dask cluster, a few seconds), when
-    the study file's model is the demo's. Returns (RPE rows, figure paths) or None."""
+    the study file's model is the demo's. Returns (RPE rows, figure paths, random plants) or
+    None."""
     import shutil
     from ..studies import read_study, resolve_study, run_study
     from ..studies.report import columns_of, summarise
@@ -78,15 +117,8 @@ def _demo_study(m, out, echo, progress):
     if progress:
         progress(f"study {study.name!r} --quick: {study.n_rollouts} rollouts on a local Dask "
                  f"cluster")
-    run_study(study, out, progress=False, echo=lambda *a: None)
+    run_study(study, out, progress=False)
     info, table = read_results(out)
     cols = columns_of(table)
     s = summarise(cols, {**info, "grid_keys": []})
-    echo(f"\nRobustness study, quick size ({study.draws} random plants; the full study is "
-         f"`pm2dof study run robustness --out DIR`): RPE over APD on the same "
-         f"plants, median [5th, 95th percentile]:")
-    for r in s["rpe"]:
-        echo(f"  {r['controller']:18s} {r['move']:5s} {r['median']:5.1f} % "
-             f"[{r['p05']:5.1f}, {r['p95']:5.1f}], better on {100 * r['share_better']:.0f} % of "
-             f"the plants")
-    return s["rpe"], study_figures(cols, s, out / "figures", info["provenance"])
+    return s["rpe"], study_figures(cols, s, out / "figures", info["provenance"]), study.draws

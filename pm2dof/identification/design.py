@@ -45,6 +45,7 @@ import contextlib
 import platform
 import threading
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -56,8 +57,8 @@ from .fit import MIN_JOINT_SPEED
 from .signals import FourierExcitation, multisine, trajectory_of, write_excitation
 
 __all__ = ["design_excitation", "regressor_condition", "check_excitation",
-           "sample_function", "run_design", "objective_logdet", "random_start",
-           "IPOPT_OPTIONS", "design_provenance"]
+           "sample_function", "run_design", "DesignReport", "format_design", "objective_logdet",
+           "random_start", "IPOPT_OPTIONS", "design_provenance"]
 
 #: IPOPT's options of the design (``max_iter`` is an argument of :func:`design_excitation`);
 #: written to the file's ``[design.ipopt]``.
@@ -487,9 +488,29 @@ def _with_rest(exc):
                              exc.info)
 
 
+@dataclass(frozen=True)
+class DesignReport:
+    """What ``pm2dof identify design`` did (:func:`run_design`; its text: :func:`format_design`).
+
+    ``excitation`` is the design written to ``out``; ``check`` is :func:`check_excitation`'s
+    result against the limits ``v_max``, ``a_max``, ``tau_limit`` and ``sing_min``;
+    ``default_cond`` the base regressor's condition number on the default multi-sine of the
+    same length; ``seconds`` the design's wall time."""
+    out: object
+    excitation: object
+    check: dict
+    seconds: float
+    default_cond: float
+    v_max: float
+    a_max: float
+    tau_limit: float
+    sing_min: float
+
+
 def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
-               tau_fraction=0.5, seed=0, echo=print, progress=None):
-    """``pm2dof identify design --out FILE``: design, check at 1 ms, write."""
+               tau_fraction=0.5, seed=0, progress=None):
+    """``pm2dof identify design --out FILE``: design, check at 1 ms, write; returns a
+    :class:`DesignReport`."""
     t0 = time.perf_counter()
     try:
         exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
@@ -499,34 +520,39 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
         raise KeyboardInterrupt(f"{str(stop) + '; ' if str(stop) else ''}{out} not "
                                 f"written") from None
     seconds = time.perf_counter() - t0
-    i = exc.info
     sing_min = max(model.singularity_threshold, model.parallel_singularity_threshold) + 0.1
-    chk = check_excitation(model, exc, v_max=v_max, a_max=a_max,
-                           tau_limit=tau_fraction * np.max(model.spec.limits["tau_max"]),
-                           sing_min=sing_min, radius=i["radius"])
+    tau_limit = tau_fraction * np.max(model.spec.limits["tau_max"])
+    chk = check_excitation(model, exc, v_max=v_max, a_max=a_max, tau_limit=tau_limit,
+                           sing_min=sing_min, radius=exc.info["radius"])
     default = regressor_condition(model, base_parameters(model),
                                   trajectory_of(model, multisine(model, duration=exc.duration)))
     write_excitation(out, exc, model)
-    echo(f"wrote {out}: {exc.harmonics} harmonics of {exc.base_hz:g} Hz (up to {exc.max_hz:g} "
-         f"Hz), {exc.periods} periods = {exc.duration:g} s; IPOPT {i['ipopt_status']} after "
-         f"{i['ipopt_iterations']} iterations, {seconds:.0f} s")
-    echo(f"objective: {i['objective']}")
-    echo(f"log det(Phi^T Phi / K) at the start -> optimised: {i['objective_logdet_before']:.2f} "
-         f"-> {i['objective_logdet_after']:.2f} on the objective's samples ({i['samples']} per "
-         f"period, Coulomb smoothed: the progress bar), {i['logdet_before']:.2f} -> "
-         f"{i['logdet_after']:.2f} on the run's (every 5th sample, exact sign)")
-    echo(f"condition number of the column-scaled base regressor on the run's samples: "
-         f"{i['cond_before']:.4g} at the start -> {i['cond_after']:.4g} optimised (the default "
-         f"multi-sine of excite: {default[0]:.4g})")
+    return DesignReport(out, exc, chk, seconds, default[0], v_max, a_max, tau_limit, sing_min)
+
+
+def format_design(r):
+    """The lines ``pm2dof identify design`` prints of a :class:`DesignReport`."""
+    exc, i, chk = r.excitation, r.excitation.info, r.check
+
     def met(key):
         return " NOT MET" if key in chk["failed"] else ""
 
-    tau_limit = tau_fraction * np.max(model.spec.limits["tau_max"])
-    echo(f"checked every 1 ms: speed {chk['speed']:.3f} <= {v_max:g} m/s{met('speed')}, "
-         f"acceleration {chk['acceleration']:.2f} <= {a_max:g} m/s^2{met('acceleration')}, "
-         f"torque (Tables 1-2, min-norm) {chk['torque']:.2f} <= {tau_limit:g} N m"
-         f"{met('torque')}, singularity measures {chk['sing']:.3f} >= {sing_min:.3f}"
-         f"{met('sing')}, |x - c0| {chk['radius'] * 1e3:.1f} <= {i['radius'] * 1e3:.1f} mm"
-         f"{met('radius')}, starts and ends at rest{met('rest')}: "
-         f"{'all met' if chk['ok'] else 'NOT MET: ' + ', '.join(chk['failed'])}")
-    return exc, chk
+    return "\n".join([
+        f"wrote {r.out}: {exc.harmonics} harmonics of {exc.base_hz:g} Hz (up to "
+        f"{exc.max_hz:g} Hz), {exc.periods} periods = {exc.duration:g} s; IPOPT "
+        f"{i['ipopt_status']} after {i['ipopt_iterations']} iterations, {r.seconds:.0f} s",
+        f"objective: {i['objective']}",
+        f"log det(Phi^T Phi / K) at the start -> optimised: {i['objective_logdet_before']:.2f} "
+        f"-> {i['objective_logdet_after']:.2f} on the objective's samples ({i['samples']} per "
+        f"period, Coulomb smoothed: the progress bar), {i['logdet_before']:.2f} -> "
+        f"{i['logdet_after']:.2f} on the run's (every 5th sample, exact sign)",
+        f"condition number of the column-scaled base regressor on the run's samples: "
+        f"{i['cond_before']:.4g} at the start -> {i['cond_after']:.4g} optimised (the default "
+        f"multi-sine of excite: {r.default_cond:.4g})",
+        f"checked every 1 ms: speed {chk['speed']:.3f} <= {r.v_max:g} m/s{met('speed')}, "
+        f"acceleration {chk['acceleration']:.2f} <= {r.a_max:g} m/s^2{met('acceleration')}, "
+        f"torque (Tables 1-2, min-norm) {chk['torque']:.2f} <= {r.tau_limit:g} N m"
+        f"{met('torque')}, singularity measures {chk['sing']:.3f} >= {r.sing_min:.3f}"
+        f"{met('sing')}, |x - c0| {chk['radius'] * 1e3:.1f} <= {i['radius'] * 1e3:.1f} mm"
+        f"{met('radius')}, starts and ends at rest{met('rest')}: "
+        f"{'all met' if chk['ok'] else 'NOT MET: ' + ', '.join(chk['failed'])}"])

@@ -24,7 +24,8 @@ from .model_ref import model_entries
 from .signals import DEFAULT_DURATION, Signal, load_excitation, multisine, trajectory_of
 
 __all__ = ["excite", "measured_angles", "excitation_signal", "simulated_log",
-           "model_of_excitation", "run_excite"]
+           "model_of_excitation", "run_excite",
+           "format_excite"]
 
 def measured_angles(model, xe, quantise=True, truth=None):
     """The encoder readings (N, n), rad, of true poses ``xe`` (N, m): the generated
@@ -135,22 +136,27 @@ def model_of_excitation(excitation_file=None, duration=None, *, model=None, gene
 
 
 def run_excite(out, *, model=None, generated=None, excitation_file=None, duration=None,
-               quantise=True, controller=None, echo=print, progress=None):
+               quantise=True, controller=None, progress=None):
     """``pm2dof identify excite --out LOG``: run an excitation on the simulated plant and
     write its log (CSV or Parquet by the suffix of ``out``), the model recorded relative to it.
 
     Without ``excitation_file`` the default :func:`~.signals.multisine` (``duration`` s, default
     :data:`DEFAULT_DURATION`) runs on ``model`` (default the paper's robot); with one, see
-    :func:`model_of_excitation`. ``controller``: "apd" (default) or "na".
+    :func:`model_of_excitation`. ``controller``: "apd" (default) or "na". Returns the log
+    (:func:`format_excite`: what the command prints of it).
     """
     from .log import write_log
     model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
     log = simulated_log(model, excitation_file, DEFAULT_DURATION if duration is None else duration,
                         quantise=quantise, controller=controller or "apd", progress=progress)
     write_log(out, log)
-    echo(f"wrote {out}: {len(log.t)} samples, {log.duration:.3f} s at T = {log.period * 1e3:g} ms, "
-         f"{model.n_legs} legs; peak |tau| {np.abs(log.tau).max():.3f} N m "
-         f"({log.meta['saturated_samples']} saturated samples), tracking RMSE "
-         f"{log.meta['tracking_rmse_m']} m, excitation up to "
-         f"{log.meta.get('excitation_max_hz', '?')} Hz")
     return log
+
+
+def format_excite(out, log):
+    """The line ``pm2dof identify excite`` prints of the simulated ``log`` written to ``out``."""
+    return (f"wrote {out}: {len(log.t)} samples, {log.duration:.3f} s at T = "
+            f"{log.period * 1e3:g} ms, {log.qa.shape[1]} legs; peak |tau| "
+            f"{np.abs(log.tau).max():.3f} N m ({log.meta['saturated_samples']} saturated "
+            f"samples), tracking RMSE {log.meta['tracking_rmse_m']} m, excitation up to "
+            f"{log.meta.get('excitation_max_hz', '?')} Hz")

@@ -31,7 +31,7 @@ from .fit import identify_log
 
 __all__ = ["random_truth", "plant_task_force", "torque_error", "monte_carlo",
            "format_monte_carlo", "substep_sensitivity", "format_seeded_table3",
-           "run_monte_carlo", "untrusted", "TARGETS"]
+           "run_monte_carlo", "monte_carlo_json", "untrusted", "TARGETS"]
 
 #: the issue's targets: inertial vector, each large inertial parameter, friction, torque, coverage
 TARGETS = {"inertial_vector": 0.05, "inertial_each": 0.05, "friction": 0.03, "torque": 0.05,
@@ -248,11 +248,11 @@ def format_seeded_table3(tab):
 
 
 def run_monte_carlo(seeds, *, model=None, generated=None, excitation_file=None,
-                    duration=None, as_json=False, echo=print, progress=None):
-    """``pm2dof identify monte-carlo N [--excitation FILE]``: the targets table. The model is
-    the one the excitation file records unless ``model`` is given (then it must be that one);
-    without a file the default multi-sine of ``duration`` s runs on ``model``."""
-    from ..infra.results import dumps
+                    duration=None, progress=None):
+    """``pm2dof identify monte-carlo N [--excitation FILE]``: :func:`monte_carlo`'s result
+    (its text: :func:`format_monte_carlo`; its ``--json``: :func:`monte_carlo_json`). The model
+    is the one the excitation file records unless ``model`` is given (then it must be that
+    one); without a file the default multi-sine of ``duration`` s runs on ``model``."""
     from .excitation import excitation_signal, model_of_excitation
     from .signals import DEFAULT_DURATION
     if seeds < 1:
@@ -263,9 +263,9 @@ def run_monte_carlo(seeds, *, model=None, generated=None, excitation_file=None,
     if progress:
         progress(f"{seeds} seeds of {what}: random plant truth and encoder noise, excite, "
                  f"identify")
-    mc = monte_carlo(model, traj, seeds, progress=progress)
-    if as_json:
-        echo(dumps({k: v for k, v in mc.items() if k != "large_inertial"}))
-    else:
-        echo(format_monte_carlo(mc))
-    return mc
+    return monte_carlo(model, traj, seeds, progress=progress)
+
+
+def monte_carlo_json(mc):
+    """What ``pm2dof identify monte-carlo --json`` prints of :func:`monte_carlo`'s result."""
+    return {k: v for k, v in mc.items() if k != "large_inertial"}

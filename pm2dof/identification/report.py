@@ -3,6 +3,7 @@
 ``pm2dof identify fit``: a log read from a file and a simulated excitation run go through the
 same pipeline and the same report."""
 import dataclasses
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -11,8 +12,8 @@ from ..core.errors import ArgumentError
 from .fit import MODEL_ERROR_CHOICES, identify_log
 from .log import LogError, log_folder, read_log
 
-__all__ = ["format_identification", "summary", "run_fit", "load_theta", "plant_comparison",
-           "SIMULATED_SOURCE", "INTERVAL_NOTE"]
+__all__ = ["format_identification", "summary", "run_fit", "FitReport", "format_fit",
+           "load_theta", "plant_comparison", "SIMULATED_SOURCE", "INTERVAL_NOTE"]
 
 #: metadata ``source`` of a log simulated with the model file's [plant] (then the truth is known)
 SIMULATED_SOURCE = "simulated plant ([plant] of the model file)"
@@ -145,10 +146,35 @@ def format_identification(model, log, res):
     return "\n".join(lines)
 
 
+@dataclass(frozen=True)
+class FitReport:
+    """What ``pm2dof identify fit`` found (:func:`run_fit`; its text: :func:`format_fit`).
+
+    ``result`` is :func:`~pm2dof.identification.fit.identify_log`'s, ``summary`` the
+    command's ``--json`` (:func:`summary`, with Table 3 when seeded), ``seed_warning`` the
+    warning of the seeded Table 3's comparison, if any."""
+    model: object
+    log: object
+    result: dict
+    summary: dict
+    seed_warning: object = None
+
+
+def format_fit(r):
+    """A :class:`FitReport` as ``pm2dof identify fit`` prints it."""
+    from .monte_carlo import format_seeded_table3
+    text = format_identification(r.model, r.log, r.result)
+    if "table3" in r.summary:
+        text += "\n\n" + "\n".join([format_seeded_table3(r.summary["table3"]),
+                                      r.summary["table3_comparison"]]
+                                     + ([f"warning: {r.seed_warning}"] if r.seed_warning else []))
+    return text
+
+
 def run_fit(log=None, *, model=None, generated=None, excitation_file=None, duration=None,
-            quantise=True, controller=None, save=None, as_json=False, cutoff_hz=None,
-            min_joint_speed=None, time_tolerance=1e-3, seed=None, echo=print, progress=None):
-    """``pm2dof identify fit [LOG]``: identify, print (text or JSON), optionally save.
+            quantise=True, controller=None, save=None, cutoff_hz=None,
+            min_joint_speed=None, time_tolerance=1e-3, seed=None, progress=None):
+    """``pm2dof identify fit [LOG]``: identify, optionally save; returns a :class:`FitReport`.
 
     Parameters
     ----------
@@ -172,11 +198,10 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
 
     Returns
     -------
-    Identification
-        :func:`~pm2dof.identification.fit.identify_log`'s result (with the warning that the
-        model was assumed, if it was).
+    FitReport
+        :func:`~pm2dof.identification.fit.identify_log`'s result and the summary.
     """
-    from ..infra.results import dumps, provenance, write_json
+    from ..infra.results import provenance, write_json
     from .excitation import model_of_excitation, simulated_log
     from .fit import MIN_JOINT_SPEED
     from .model_ref import model_for
@@ -220,24 +245,17 @@ def run_fit(log=None, *, model=None, generated=None, excitation_file=None, durat
     if assumed:
         res = dataclasses.replace(res, warnings=(assumed, *res.warnings))
     s = summary(model, log, res)
-    seeded = ""
+    warn = None
     if seed:
-        from .monte_carlo import format_seeded_table3
         if progress:
             progress("Table 3 with Tables 1-2 and with the identified theta")
         s["table3"] = seed(model, res.theta0)
-        what, warn = plant_comparison(model, log, res)
-        s["table3_comparison"] = what
+        s["table3_comparison"], warn = plant_comparison(model, log, res)
         if warn:
             s["warnings"] = [*s["warnings"], warn]
-        seeded = "\n\n" + "\n".join([format_seeded_table3(s["table3"]), what]
-                                     + ([f"warning: {warn}"] if warn else []))
-    echo(dumps(s) if as_json else format_identification(model, log, res) + seeded)
     if save:
         write_json(save, {**s, "provenance": provenance(model)})
-        if not as_json:
-            echo(f"saved {save} (theta0: use it with NAController(model, theta0=...))")
-    return res
+    return FitReport(model, log, res, s, warn)
 
 
 def load_theta(path, model):

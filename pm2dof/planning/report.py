@@ -10,7 +10,7 @@ import numpy as np
 
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
-from ..core.errors import PlanError
+from ..core.errors import ArgumentError, PlanError
 from ..infra.results import provenance
 from .kinematic import plan_kinematic
 from .stages import limits
@@ -18,7 +18,7 @@ from .topp import plan_time_optimal
 from .torques import path_torques
 
 __all__ = ["plan_paths", "closed_loop", "csv_text", "format_report", "model_moves",
-           "plan_provenance", "CSV_KEYS"]
+           "plan_provenance", "run_plan", "write_plan_csvs", "CSV_KEYS"]
 
 
 def model_moves(model):
@@ -217,3 +217,52 @@ def format_report(res, loops=None):
                              f"{c['max_error_m']:.3e} m, peak |tau| {max(c['tau_peak_N_m']):.3f} "
                              f"N m, {c['saturated']} saturated samples, {c['outcome']}")
     return "\n".join(lines)
+
+
+def run_plan(model, *, path=None, move=None, tau_max=None, margin=1.0, grid=1000,
+             splits=("min_norm", "min_max"), kinematic=None, smooth=False, tau_rate=None,
+             closed_loop_margins=None):
+    """``pm2dof plan``: plan a path file (``path``: a shipped name or a TOML file) or the model
+    file's moves (``move``: only that one), with the kinematic limits ``kinematic`` ({v_max,
+    a_max, j_max}, None for the path's own) overriding the paths' (the model's last move's
+    where a path has none), and with ``closed_loop_margins``, NA and APD tracking the plan of
+    the last split at each margin (:func:`closed_loop`).
+
+    Returns
+    -------
+    (dict, dict, dict)
+        :func:`plan_paths`' results (with ``closed_loop``: {path name: rows} when simulated)
+        and plans, and the closed-loop rows by path name (for :func:`format_report`).
+    """
+    if path:
+        from .pathfile import read_path_file
+        items = [read_path_file(path)]
+    else:
+        items = [mv for mv in model_moves(model) if move in (None, mv["name"])]
+        if not items:
+            raise ArgumentError(f"--move {move!r}: the model file's moves are "
+                                f"{sorted(model.spec.trajectories)}")
+    kin = kinematic or {}
+    for it in items:
+        if any(v is not None for v in kin.values()):
+            base = it["kinematic"] or dict(model_moves(model)[-1]["kinematic"])
+            it["kinematic"] = {k: (base[k] if v is None else v) for k, v in kin.items()}
+    res, plans = plan_paths(model, items, tau_max, margin, grid, splits, smooth=smooth,
+                            tau_rate=tau_rate)
+    loops = {}
+    if closed_loop_margins is not None:
+        for it in items:
+            loops[it["name"]] = closed_loop(model, it["path"], tau_max, splits[-1],
+                                            closed_loop_margins, grid)
+        res["closed_loop"] = loops
+    return res, plans, loops
+
+
+def write_plan_csvs(out, model, plans):
+    """Each plan of :func:`run_plan` as ``out/plan_<path>_<split>.csv`` (:func:`csv_text`);
+    returns the paths written."""
+    from pathlib import Path
+
+    from ..infra.results import write_atomic
+    return [write_atomic(Path(out) / f"plan_{name}_{key}.csv", csv_text(model, p).encode())
+            for (name, key), p in plans.items()]

@@ -102,8 +102,7 @@ def study_bench(quick=False, progress=None):
                     s = bench_study(size, chunk=max(1, size // 10))
                     with tempfile.TemporaryDirectory() as tmp:
                         tracemalloc.start()
-                        r = run_study(s, tmp, client=client, progress=False,
-                                      echo=lambda *a: None)
+                        r = run_study(s, tmp, client=client, progress=False)
                         peak = tracemalloc.get_traced_memory()[1]
                         tracemalloc.stop()
                     res[f"rollouts_per_s_study_run_2_workers_{size}"] = r["rollouts_per_s"]

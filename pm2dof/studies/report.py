@@ -210,12 +210,13 @@ def format_report(s):
     return "\n".join(lines)
 
 
-def run_report(out, *, as_json=False, echo=print):
-    """``pm2dof study report DIR``: print the summary and write it to DIR/summary.json.
+def run_report(out):
+    """``pm2dof study report DIR``: the summary, also written to DIR/summary.json.
 
-    Returns (summary dict, {column: ndarray}, study.json dict) for the figures."""
+    Returns (summary dict, {column: ndarray}, study.json dict): the summary is the command's
+    ``--json`` (the text: :func:`format_report`), the rest is for the figures."""
     from pathlib import Path
-    from ..infra.results import dumps, write_json
+    from ..infra.results import write_json
     from .spec import GRID_KEYS, StudyFileError
     info, table = read_results(out)
     cols = columns_of(table)
@@ -223,6 +224,5 @@ def run_report(out, *, as_json=False, echo=print):
         raise StudyFileError(f"{out}: no rows yet; run `pm2dof study run` with --out {out}")
     info = {**info, "grid_keys": [k for k in cols if k in GRID_KEYS]}
     s = summarise(cols, info)
-    echo(dumps(s) if as_json else format_report(s))
     write_json(Path(out) / "summary.json", {**s, "provenance": info.get("provenance")})
     return s, cols, info

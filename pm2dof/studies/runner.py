@@ -23,7 +23,7 @@ from .evaluate import run_chunk
 from .spec import check_study
 from .store import finish_out, prepare_out, write_chunk
 
-__all__ = ["StudyRunError", "run_study", "connect", "Progress"]
+__all__ = ["StudyRunError", "run_study", "format_notice", "format_run", "connect", "Progress"]
 
 
 #: Dask settings of the embedded cluster, throughput over introspection. Each of the worker's
@@ -60,7 +60,7 @@ def _workers_ignore_sigint():
         signal.signal(signal.SIGINT, previous)
 
 
-def connect(workers=None, scheduler=None, timeout=10.0, echo=None):
+def connect(workers=None, scheduler=None, timeout=10.0):
     """A ``distributed.Client``: to ``scheduler`` (an address such as ``tcp://10.0.0.5:8786``),
     else to a new ``LocalCluster`` of ``workers`` single-threaded worker processes (default: one
     per core). Raises StudyRunError within ``timeout`` s when the scheduler cannot be reached or
@@ -101,7 +101,7 @@ def _close(client):
 
 
 def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=10.0,
-              progress=True, echo=print):
+              progress=True, notify=None):
     """Run every rollout of ``study`` (a :class:`~pm2dof.studies.spec.Study`) into ``out``.
 
     Parameters
@@ -122,8 +122,11 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     progress : bool or pm2dof.infra.progress.Progress
         True: a bar on stderr when it is a terminal (rollouts done, the rate since the first
         task, ETA), nothing otherwise; a Progress: its bar; False: none.
-    echo : callable(str)
-        Where the lines saying what runs go (default ``print``).
+    notify : callable(dict), optional
+        Told what runs, as it starts (:func:`format_notice` words it): once the folder is
+        ready, ``{"study", "rollouts", "chunks", "skipped", "out"}`` (``skipped``: chunks
+        already there); then, once the cluster is up, ``{"where", "dashboard"}``
+        (``dashboard``: its link, or None).
 
     Returns
     -------
@@ -146,8 +149,9 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     done = prepare_out(out, study, model)
     todo = [i for i in range(study.n_chunks) if i not in done]
     rows_done = sum(len(study.chunk_units(i)) for i in done) * study.runs
-    echo(f"study {study.name!r}: {study.n_rollouts} rollouts in {study.n_chunks} chunks"
-         + (f"; {len(done)} chunk(s) already in {out}, skipped" if done else ""))
+    notify = notify or (lambda notice: None)
+    notify({"study": study.name, "rollouts": study.n_rollouts, "chunks": study.n_chunks,
+            "skipped": len(done), "out": out})
     t0 = time.perf_counter()
     if not todo:
         return {"rows": finish_out(out, study), "chunks": study.n_chunks, "skipped": len(done),
@@ -163,8 +167,8 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     try:
         nthreads = sum(client.nthreads().values()) or 1
         where = scheduler or f"a local cluster of {nthreads} worker process(es)"
-        echo(f"running on {where}" + (f"; dashboard {client.dashboard_link}"
-                                      if _has_dashboard(client) else ""))
+        notify({"where": where,
+                "dashboard": client.dashboard_link if _has_dashboard(client) else None})
         pending = iter(todo)
         ac, index = as_completed(), {}
 
@@ -199,6 +203,29 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     return {"rows": finish_out(out, study), "chunks": study.n_chunks, "skipped": len(done),
             "seconds": dt, "rollouts_per_s": n / dt, "run_seconds": run_dt,
             "run_rollouts_per_s": n / run_dt, "cluster_seconds": dt - run_dt}
+
+
+def format_notice(notice):
+    """A line of what :func:`run_study` says it runs (its ``notify``'s argument)."""
+    if "where" in notice:
+        return f"running on {notice['where']}" + (f"; dashboard {notice['dashboard']}"
+                                                   if notice["dashboard"] else "")
+    return (f"study {notice['study']!r}: {notice['rollouts']} rollouts in {notice['chunks']} "
+            f"chunks" + (f"; {notice['skipped']} chunk(s) already in {notice['out']}, skipped"
+                         if notice["skipped"] else ""))
+
+
+def format_run(res, out):
+    """What ``pm2dof study run`` prints of :func:`run_study`'s result ``res`` into ``out``."""
+    if res["skipped"] == res["chunks"]:
+        return (f"{res['rows']} rows in {out}/results: all {res['chunks']} chunks were already "
+                f"there, nothing to run. Next: pm2dof study report {out}")
+    return (f"{res['rows']} rows in {out}/results ({res['skipped']} of {res['chunks']} chunks "
+            f"were already there). Wall time {res['seconds']:.1f} s, "
+            f"{res['rollouts_per_s']:,.0f} rollouts/s, including {res['cluster_seconds']:.1f} s "
+            f"to set up and close the cluster; running the rollouts {res['run_seconds']:.1f} s, "
+            f"{res['run_rollouts_per_s']:,.0f} rollouts/s (the rate the progress bar shows on a "
+            f"terminal). Next: pm2dof study report {out}")
 
 
 def _has_dashboard(client):

@@ -61,7 +61,7 @@ LAWS = {
 GRID_KEYS = ("Kp", "Kv", "Kd", "Q", "Gamma_scale", "velocity_filter_hz")
 _STUDY_KEYS = {"name", "description", "model", "generated", "moves", "seed", "draws", "runs",
                "chunk", "settle_time", "quantise"}
-#: the study files that come with pm2dof (robustness, gains, adaptation): by name
+#: the study files that come with pm2dof (robustness, gains, adaptation, model_based): by name
 SHIPPED_STUDIES = Path(__file__).resolve().parent / "shipped"
 _QUICK_KEYS = {"moves", "draws", "runs", "chunk", "grid_points"}
 _TOP_KEYS = {"study", "quick", "controllers", "uncertainty", "payload_change"}

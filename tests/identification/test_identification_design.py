@@ -274,7 +274,7 @@ def test_ctrl_c_during_design_writes_nothing_and_exits_130(tmp_path):
     assert "WARNING" not in rest and "Traceback" not in rest, rest   # CasADi printed one
 
 
-def test_not_met_stands_next_to_the_limit_that_failed(tmp_path, m, monkeypatch, capsys):
+def test_not_met_stands_next_to_the_limit_that_failed(tmp_path, m, monkeypatch):
     """The shipped excitation reaches 58.8 mm from c0: with a 30 mm region that limit fails,
     and the printed check says so there (it read as 'does not start at rest')."""
     from pm2dof.identification import design
@@ -282,8 +282,8 @@ def test_not_met_stands_next_to_the_limit_that_failed(tmp_path, m, monkeypatch, 
     exc = FourierExcitation(exc.base_hz, exc.periods, exc.center, exc.a, exc.b,
                             {**exc.info, "radius": 0.03})
     monkeypatch.setattr(design, "design_excitation", lambda *a, **k: exc)
-    design.run_design(m, tmp_path / "e.toml")
-    line = next(ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("checked"))
+    text = design.format_design(design.run_design(m, tmp_path / "e.toml"))
+    line = next(ln for ln in text.splitlines() if ln.startswith("checked"))
     assert re.search(r"\|x - c0\| 58\.\d <= 30\.0 mm NOT MET, starts and ends at rest: "
                      r"NOT MET: radius$", line), line
     assert line.count("NOT MET") == 2

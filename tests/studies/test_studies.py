@@ -139,7 +139,7 @@ def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any
     out = tmp_path / "out"
     from pm2dof.studies import run_study
     with pytest.raises(StudyFileError, match=r"\[study\.moves \(entry 2, 'far'\)\]"):
-        run_study(s, out, progress=False, echo=lambda *a: None)
+        run_study(s, out, progress=False)
     assert not out.exists()                     # refused before the folder or a cluster
     # the five-bar: a line across its parallel-singular curve
     five = SHIPPED_MODELS / "fivebar.toml"

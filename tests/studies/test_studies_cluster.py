@@ -170,8 +170,7 @@ def test_embedded_cluster_equals_in_process_rows_and_report_runs(tmp_path, study
     study = read_study(SHIPPED_STUDIES / "adaptation.toml", quick=True)
     out = tmp_path / "a"
     stream = io.StringIO()                 # a bar drawn as on a terminal, into a buffer
-    res = run_study(study, out, workers=2, progress=Progress(stream, bars=True),
-                    echo=lambda *a: None)
+    res = run_study(study, out, workers=2, progress=Progress(stream, bars=True))
     assert res["rows"] == study.n_rollouts and res["skipped"] == 0
     # the two rates (issue 22, item 10): the progress bar's is the summary's run rate, the
     # wall-time rate also counts the cluster's start and stop
@@ -183,7 +182,7 @@ def test_embedded_cluster_equals_in_process_rows_and_report_runs(tmp_path, study
     assert 0 < res["run_seconds"] < res["seconds"], res
     assert res["rollouts_per_s"] == pytest.approx(study.n_rollouts / res["seconds"])
     _assert_same(out, _reference(study))
-    again = run_study(study, out, workers=2, progress=False, echo=lambda *a: None)
+    again = run_study(study, out, workers=2, progress=False)
     assert again["skipped"] == study.n_chunks and again["rows"] == study.n_rollouts
     r = subprocess.run([*PM2DOF, "study", "report", str(out), "--json"], capture_output=True,
                        text=True, timeout=DEADLINE, cwd=ROOT)
@@ -201,8 +200,7 @@ def test_unreachable_scheduler_fails_clearly_within_the_timeout(tmp_path):
     t0 = time.monotonic()
     with pytest.raises(StudyRunError, match=rf"cannot reach the Dask scheduler at {addr} "
                        r"within 2 s"):
-        run_study(study, tmp_path / "out", scheduler=addr, timeout=2, progress=False,
-                  echo=lambda *a: None)
+        run_study(study, tmp_path / "out", scheduler=addr, timeout=2, progress=False)
     assert time.monotonic() - t0 < 20
     r = subprocess.run([*PM2DOF, "study", "run", str(SHIPPED_STUDIES / "robustness.toml"),
                         "--quick", "--out", str(tmp_path / "o2"), "--scheduler", addr,

@@ -1,0 +1,201 @@
+# `pm2dof identify SUBCOMMAND`: identification of theta (report, excite, fit, design, ...).
+import argparse
+
+from ...core.errors import ArgumentError
+from ..options import NONNEGATIVE, POSITIVE, count, model, number, progress, wrap
+
+
+def add_parser(sub, common):
+    p = sub.add_parser("identify", help="identification of theta: report, excite, fit, design, "
+                       "monte-carlo",
+                       description=wrap("Identify the dynamic parameters theta (eq. 13: S^T "
+                       "tau_a = Y theta) from logs of encoder angles and commanded torques: which "
+                       "combinations of theta the data can determine (report), an excitation "
+                       "to run (design), a run of it on the simulated robot written as a log "
+                       "(excite), and least squares from a log or a simulated run (fit). Logs "
+                       "and excitation files record their model (a shipped model's name or the "
+                       "model file's path relative to themselves): that model is the default "
+                       "of fit, excite and monte-carlo, and --model must match it. The results: "
+                       "docs/results-identification.md."),
+                       formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
+                           "examples:\n"
+                           "  pm2dof identify report\n"
+                           "  pm2dof identify design --out exc.toml\n"
+                           "  pm2dof identify excite --excitation exc.toml --out run.csv\n"
+                           "  pm2dof identify fit run.csv --save theta.json --seed-na\n"
+                           "  pm2dof identify monte-carlo 50 --excitation exc.toml"))
+    for flag in ("--model", "--generated"):   # before the sub-command: as after it
+        p.add_argument(flag, dest=f"identify_{flag[2:]}", help=argparse.SUPPRESS)
+    isub = p.add_subparsers(dest="identify_command", metavar="SUBCOMMAND")
+
+    def excitation_options(r, what):
+        r.add_argument("--excitation", metavar="FILE", help=f"excitation file to {what} "
+                       "(written by `pm2dof identify design`); its model is the default")
+        r.add_argument("--duration", type=number(0.0, 3600.0), metavar="S",
+                       help="without --excitation: length of the default multi-sine, s "
+                       "(default 4)")
+
+    def simulated_options(r, when=""):
+        r.add_argument("--exact-encoders", action="store_true",
+                       help=f"{when}no encoder quantisation (a noise-free log)")
+        r.add_argument("--controller", choices=["apd", "na"],
+                       help=f"{when}controller tracking the excitation, with Tables 1-2 "
+                       "(default apd)")
+
+    def sub_command(name, help, description, examples):
+        return isub.add_parser(name, parents=[common], help=help, description=wrap(description),
+                               formatter_class=argparse.RawDescriptionHelpFormatter,
+                               epilog="examples:\n" + "\n".join(f"  {e}" for e in examples))
+
+    sub_command("report", "identifiable parameters: base parameters, null space",
+                "Stack the regressor Y over random states around the middle of the model's "
+                "first move and print its rank, the identifiable base parameters (each "
+                "independent column of Y with the dependent ones folded in) and the directions "
+                "of theta no motion can show (the null space of Y).",
+                ["pm2dof identify report --model fivebar"])
+
+    r = sub_command("excite", "run an excitation on the simulated robot and write its log",
+                    "Run an excitation on the simulated plant (its truth: [plant] of the model "
+                    "file; quantised encoders; a controller with Tables 1-2 tracking) and write "
+                    "what a real set-up logs, encoder angles and commanded torques, to --out "
+                    "(CSV or Parquet by the suffix; the format: docs/log-format.md). The log "
+                    "records its model relative to itself.",
+                    ["pm2dof identify excite --excitation exc.toml --out run.csv",
+                     "pm2dof identify excite --duration 10 --out run.parquet"])
+    r.add_argument("--out", required=True, metavar="LOG", help="log to write (.csv or .parquet)")
+    excitation_options(r, "run")
+    simulated_options(r)
+
+    r = sub_command("fit", "least squares for theta from a log (or a simulated run)",
+                    "Identify the base parameters from LOG (t, qa1..qan, tau1..taun, optional "
+                    "qb1..qbn; the format: docs/log-format.md): fk of the encoder angles, a "
+                    "zero-phase Butterworth low-pass, central differences, the same filter on "
+                    "the regressor and on S^T tau, weighted least squares with a Newey-West "
+                    "covariance (+-2 sigma), then a physically consistent full theta (CasADi + "
+                    "IPOPT). The model is the one the log records unless --model is given. "
+                    "Without LOG, an excitation first runs on the simulated plant (as "
+                    "`identify excite` does) and its log goes through the same pipeline and "
+                    "the same report, with the plant's truth beside the estimate.",
+                    ["pm2dof identify fit run.csv --save theta.json --seed-na",
+                     "pm2dof identify fit --json       # the default 4 s multi-sine, simulated"])
+    r.add_argument("log", nargs="?", metavar="LOG", help="log file (.csv or .parquet); without "
+                   "it, a simulated excitation run")
+    r.add_argument("--save", metavar="FILE", help="write the estimate, a full theta0 and the "
+                   "provenance as JSON")
+    r.add_argument("--json", action="store_true", help="print the results as JSON")
+    r.add_argument("--seed-na", action="store_true",
+                   help="also Table 3 with APD and NA using the identified theta")
+    r.add_argument("--cutoff", type=POSITIVE, metavar="HZ",
+                   help="low-pass cutoff (default 10 x the excitation band)")
+    r.add_argument("--time-tolerance", type=number(0.0, 1.0, low_inclusive=True,
+                   high_inclusive=False), default=1e-3, metavar="FRACTION",
+                   help="largest allowed |t_k+1 - t_k - T| / T of LOG (default 1e-3)")
+    r.add_argument("--min-joint-speed", type=NONNEGATIVE, metavar="RAD_S",
+                   help="leave out samples with a slower active joint (default 0.1; 0 keeps all)")
+    excitation_options(r, "simulate without LOG")
+    simulated_options(r, "without LOG: ")
+
+    r = sub_command("design", "design a D-optimal excitation (1-2 minutes)",
+                    "Design a periodic excitation (a finite Fourier series in task space, "
+                    "Swevers et al. 1997) that maximises log det of the base regressor's "
+                    "information matrix, with CasADi + IPOPT (1-2 minutes), within speed, "
+                    "acceleration, torque, singularity and region limits checked every 1 ms, and "
+                    "write it as TOML to --out (the model recorded relative to the file).",
+                    ["pm2dof identify design --out exc.toml"])
+    r.add_argument("--out", required=True, metavar="FILE", help="excitation file to write (TOML)")
+    for flag, kind, default, text in (
+            ("--base-hz", float, 0.2, "base frequency f0, Hz (default 0.2: 5 s period)"),
+            ("--harmonics", int, 10, "harmonics of f0 (default 10: up to 2 Hz)"),
+            ("--periods", int, 2, "periods per run (default 2: 10 s)"),
+            ("--v-max", float, 0.5, "task speed limit, m/s (default 0.5)"),
+            ("--a-max", float, 10.0, "task acceleration limit, m/s^2 (default 10)"),
+            ("--tau-fraction", float, 0.5, "torque limit / tau_max (default 0.5)"),
+            ("--seed", int, 0, "seed of IPOPT's random start (default 0)")):
+        r.add_argument(flag, type=kind, default=default, help=text)
+
+    r = sub_command("monte-carlo", "the identification targets measured over N seeds",
+                    "Measure the identification targets over N seeds: each draws a plant truth "
+                    "around [plant] (inertia and friction x (1 + 0.1 N(0, 1)), payload 0-0.5 kg) "
+                    "and encoder noise, runs the excitation on it, identifies from the log alone "
+                    "and compares with the truth.",
+                    ["pm2dof identify monte-carlo 50 --excitation exc.toml"])
+    r.add_argument("seeds", type=count(1, 100000), metavar="N", help="number of seeds")
+    r.add_argument("--json", action="store_true", help="print the results as JSON")
+    excitation_options(r, "run")
+    return p
+
+
+def run(args):
+    """The sub-command, with --model/--generated given before it taken as given after it."""
+    for key in ("model", "generated"):
+        before = getattr(args, f"identify_{key}", None)
+        if before is not None:
+            if getattr(args, key) not in (None, before):
+                raise ArgumentError(f"--{key} given twice ({before!r} before the "
+                                    f"sub-command, {getattr(args, key)!r} after it)")
+            setattr(args, key, before)
+    if args.identify_command is None:
+        raise ArgumentError("pm2dof identify needs a sub-command: report, excite, fit, design "
+                            "or monte-carlo (plain `pm2dof identify` was replaced by: pm2dof "
+                            "identify report, and pm2dof identify fit)")
+    return _SUBCOMMANDS[args.identify_command](args)
+
+
+def _progress(args):
+    """Stage lines and bars on stderr (--quiet aside); none with --json."""
+    return None if getattr(args, "json", False) else progress(args)
+
+
+def _report(args):
+    from ...identification.base import format_identifiability, identifiability
+    print(format_identifiability(identifiability(model(args))))
+    return 0
+
+
+def _excite(args):
+    from ...identification.excitation import format_excite, run_excite
+    log = run_excite(args.out, model=args.model, generated=args.generated,
+                     excitation_file=args.excitation, duration=args.duration,
+                     quantise=not args.exact_encoders, controller=args.controller,
+                     progress=_progress(args))
+    print(format_excite(args.out, log))
+    return 0
+
+
+def _fit(args):
+    from ...analysis.experiment import seeded_table3
+    from ...identification.report import format_fit, run_fit
+    from ...infra.results import dumps
+    r = run_fit(args.log, model=args.model, generated=args.generated,
+                excitation_file=args.excitation, duration=args.duration,
+                quantise=not args.exact_encoders, controller=args.controller, save=args.save,
+                cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
+                time_tolerance=args.time_tolerance,
+                seed=seeded_table3 if args.seed_na else None, progress=_progress(args))
+    print(dumps(r.summary) if args.json else format_fit(r))
+    if args.save and not args.json:
+        print(f"saved {args.save} (theta0: use it with NAController(model, theta0=...))")
+    return 0
+
+
+def _design(args):
+    from ...identification.design import format_design, run_design
+    print(format_design(run_design(
+        model(args), args.out, base_hz=args.base_hz, harmonics=args.harmonics,
+        periods=args.periods, v_max=args.v_max, a_max=args.a_max,
+        tau_fraction=args.tau_fraction, seed=args.seed, progress=_progress(args))))
+    return 0
+
+
+def _monte_carlo(args):
+    from ...identification.monte_carlo import format_monte_carlo, monte_carlo_json, run_monte_carlo
+    from ...infra.results import dumps
+    mc = run_monte_carlo(args.seeds, model=args.model, generated=args.generated,
+                         excitation_file=args.excitation, duration=args.duration,
+                         progress=_progress(args))
+    print(dumps(monte_carlo_json(mc)) if args.json else format_monte_carlo(mc))
+    return 0
+
+
+_SUBCOMMANDS = {"report": _report, "excite": _excite, "fit": _fit, "design": _design,
+                "monte-carlo": _monte_carlo}
