@@ -46,8 +46,10 @@ derive: $(STAMP)
 derive-all: $(STAMP)
 	for m in pm2dof/models/*.toml; do $(VENV)/bin/pm2dof derive $$m || exit 1; done
 
+# -n auto: one pytest worker per core; --dist loadscope keeps a module's tests (and its
+# module-scoped fixtures: built models, derivations, studies) on one worker
 test: install
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q -n auto --dist loadscope
 
 # the documentation site: docs/*.md and the docstrings, warnings are errors (mkdocs.yml).
 # NO_MKDOCS_2_WARNING silences the Material theme's banner about MkDocs 2 (pinned < 2).
