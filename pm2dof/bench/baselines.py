@@ -85,7 +85,7 @@ def lambdify_step(model, layouts):
     sym, kin, dyn = d.sym, d.kin, d.dyn
     n = model.n_legs
     qa_s, q_s = list(sym.qa), list(sym.q)
-    modules = [{"sgn": lambda v: 1.0 if v >= 0 else -1.0}, "numpy"]  # sgn(0) = +1, as the C
+    modules = [{"sgn": np.sign}, "numpy"]  # sgn(0) = 0, as the C
 
     def lam(args, expr):
         return sp.lambdify(args, expr, modules, cse=True)

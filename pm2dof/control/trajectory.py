@@ -1,6 +1,8 @@
-# Desired task-space motion: time-optimal jerk-limited (S-curve) rest-to-rest straight-line moves.
+# Desired task-space motion: time-optimal jerk-limited (S-curve) rest-to-rest straight-line moves,
+# plain sampled references and holds.
 """Time-optimal rest-to-rest S-curve (jerk ``+j, 0, -j, 0, -j, 0, +j``) along a
-straight segment, sampled at the controller period. SI units (m, s)."""
+straight segment, sampled at the controller period; a plain sampled reference
+(:meth:`Trajectory.from_samples`) or a held pose (:meth:`Trajectory.hold`). SI units (m, s)."""
 import math
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -138,14 +140,16 @@ class Trajectory:
     ----------
     t : ndarray, shape (N,)
         Sample times ``k * period``, s.
-    xd, xd_dot, xd_ddot : ndarray, shape (N, 2)
-        Desired position (m), velocity (m/s) and acceleration (m/s^2).
+    xd, xd_dot, xd_ddot : ndarray, shape (N, m)
+        Desired position (m), velocity (m/s) and acceleration (m/s^2); m (the task
+        dimension) is taken from ``xd``.
     period : float
         Sampling period, s.
-    start, end : tuple of float
-        End points of the straight segment, m.
-    profile : SCurve
-        Profile of the arc length along the segment.
+    start, end : tuple of float or None
+        End points of the straight segment, m; None for a sampled reference
+        (:meth:`from_samples`, :meth:`hold`).
+    profile : SCurve or None
+        Profile of the arc length along the segment; None for a sampled reference.
     """
 
     t: np.ndarray = field(repr=False)
@@ -153,15 +157,16 @@ class Trajectory:
     xd_dot: np.ndarray = field(repr=False)
     xd_ddot: np.ndarray = field(repr=False)
     period: float
-    start: tuple
-    end: tuple
-    profile: SCurve = field(repr=False)
+    start: tuple = None
+    end: tuple = None
+    profile: SCurve = field(default=None, repr=False)
 
     def __post_init__(self):  # store read-only float64 C-contiguous copies
         n = np.size(self.t)
         if n == 0:
             raise TrajectoryError("a trajectory needs at least one sample (t is empty)")
-        for name, shape in [("t", (n,)), ("xd", (n, 2)), ("xd_dot", (n, 2)), ("xd_ddot", (n, 2))]:
+        m = np.shape(self.xd)[1] if np.ndim(self.xd) == 2 else 2   # the task dimension
+        for name, shape in [("t", (n,)), ("xd", (n, m)), ("xd_dot", (n, m)), ("xd_ddot", (n, m))]:
             arr = np.array(getattr(self, name), dtype=np.float64, order="C")
             if arr.shape != shape:
                 raise TrajectoryError(f"{name} must have shape {shape}, got {arr.shape}")
@@ -175,13 +180,55 @@ class Trajectory:
             raise TrajectoryError(f"t must be sampled every period = {period} s; t[{k + 1}] - "
                                   f"t[{k}] = {gaps[k]:.9g} s")
 
+    @classmethod
+    def from_samples(cls, xd, xd_dot, xd_ddot, period):
+        """A plain sampled reference: ``xd``, ``xd_dot``, ``xd_ddot`` (N, m) arrays (m, m/s,
+        m/s^2) at t = k * period, k = 0 .. N-1, of any task dimension m (from ``xd``).
+
+        Raises TrajectoryError for a bad period, mismatched shapes or a non-finite sample.
+        """
+        period = _positive("period (s)", period)
+        arrays = []
+        for name, a in (("xd", xd), ("xd_dot", xd_dot), ("xd_ddot", xd_ddot)):
+            try:
+                a = np.asarray(a, dtype=np.float64)
+            except (TypeError, ValueError):
+                raise TrajectoryError(f"{name} must be an (N, m) array of numbers") from None
+            if a.ndim != 2 or a.shape[1] == 0:
+                raise TrajectoryError(f"{name} must have shape (N, m), got {a.shape}")
+            if not np.all(np.isfinite(a)):
+                k = int(np.flatnonzero(~np.all(np.isfinite(a), axis=1))[0])
+                raise TrajectoryError(f"{name} must be finite; sample {k} is {a[k].tolist()}")
+            arrays.append(a)
+        return cls(np.arange(len(arrays[0])) * period, *arrays, period)
+
+    @classmethod
+    def hold(cls, x, duration, period):
+        """Hold the pose ``x`` (m,) m for at least ``duration`` s (>= 0): ceil(duration /
+        period) + 1 samples at t = k * period, zero velocity and acceleration."""
+        try:
+            x = np.asarray(x, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise TrajectoryError(f"x must be a point of the task space, m, got {x!r}") from None
+        if x.ndim != 1 or x.size == 0 or not np.all(np.isfinite(x)):
+            raise TrajectoryError(f"x must be a finite point (m,) of the task space, m, got "
+                                  f"{x.tolist()}")
+        period = _positive("period (s)", period)
+        k = math.ceil(_positive("duration (s)", duration, zero_ok=True) / period - 1e-9)
+        zeros = np.zeros((k + 1, x.size))
+        return cls.from_samples(np.broadcast_to(x, zeros.shape), zeros, zeros, period)
+
     @property
     def duration(self):
-        """Duration of the move itself (``profile.duration``), s."""
+        """Duration of the move itself (``profile.duration``; (N - 1) * period for a sampled
+        reference), s."""
+        if self.profile is None:
+            return (len(self.t) - 1) * self.period
         return self.profile.duration
 
     def extended(self, settle_time):
-        """Copy with rest samples at ``end`` appended for at least ``settle_time`` s.
+        """Copy with rest samples at ``end`` (the last sample for a sampled reference)
+        appended for at least ``settle_time`` s.
 
         Parameters
         ----------
@@ -190,9 +237,10 @@ class Trajectory:
         """
         ts = _positive("settle_time (s)", settle_time, zero_ok=True)
         k = math.ceil(ts / self.period - 1e-9)  # tolerate 0.1/0.002 = 50.000000000000004
-        zeros = np.zeros((k, 2))
+        rest = self.xd[-1] if self.end is None else self.end
+        zeros = np.zeros((k, self.xd.shape[1]))
         return Trajectory(np.arange(len(self.t) + k) * self.period,
-                          np.vstack([self.xd, np.broadcast_to(self.end, (k, 2))]),
+                          np.vstack([self.xd, np.broadcast_to(rest, zeros.shape)]),
                           np.vstack([self.xd_dot, zeros]), np.vstack([self.xd_ddot, zeros]),
                           self.period, self.start, self.end, self.profile)
 

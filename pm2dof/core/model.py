@@ -454,7 +454,8 @@ class Model(DerivativeMethods):
     def Y(self, q, xed, xrd, xrdd, out=None):
         """Regressor Y (2, 5n): Y theta = Me xrdd + Ce(q, W xed) xrd + S^T f_a(S xed) (eq. 13).
 
-        Columns follow :attr:`param_names`; friction uses sign(0) = +1.
+        Columns follow :attr:`param_names`; friction uses sign(0) = 0 (an actuated joint at
+        rest contributes no Coulomb column).
         """
         return self._eval("Y", (2, len(self.param_names)), out, q, xed, xrd, xrdd)
 
@@ -492,10 +493,10 @@ class Model(DerivativeMethods):
         Solves Me xedd = S^T tau_a - Ce xed - S^T f_a at the pose ``xe`` (2,) m, velocity
         ``xed`` (2,) m/s, actuator torques ``tau_a`` (n,) N*m and parameters ``theta``.
 
-        Friction is the model file's law with sign(0) = +1 (docs/model-file.md), so at exact
-        rest the Coulomb term acts as if every joint moved forward: with tau_a = 0 and
-        xed = 0 the result is not zero (:meth:`linearize` and the Jacobians inherit this).
-        The simulated plant of :func:`pm2dof.simulate` has its own friction, the Coulomb
+        Friction is the model file's law with sign(0) = 0 (docs/model-file.md): a joint at
+        exact rest has no Coulomb force, so with tau_a = 0 and xed = 0 the result is zero
+        (every pose at rest is an equilibrium of this planar model; :meth:`linearize` is
+        taken at one). The simulated plant of :func:`pm2dof.simulate` has its own friction, the Coulomb
         term smoothed over ``[plant] coulomb_smoothing_velocity`` and zero at rest; neither
         models stiction.
         """

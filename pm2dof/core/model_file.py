@@ -23,7 +23,7 @@ __all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS"]
 
 # friction model -> its per-leg parameters after the inertial ones (eq. 2 and extensions)
 FRICTION_MODELS = {
-    "coulomb_viscous": ("fv", "fc"),                 # eq. 2, sign(0) = +1
+    "coulomb_viscous": ("fv", "fc"),                 # eq. 2, sign(0) = 0
     "coulomb_viscous_stribeck": ("fv", "fc", "fs"),  # + fs sign(v) / (1 + (v/vs)^2)
     "smooth_sign": ("fv", "fc"),                     # sign(v) -> v / sqrt(v^2 + eps^2)
 }

@@ -7,7 +7,7 @@ Me, Ce xed and S of :func:`pm2dof.derive.factored.task_inertia_coriolis`, the fr
 eq. 2 from :class:`pm2dof.derive.dynamics.Dynamics`); nothing is differentiated by hand.
 Matrices are flattened ROW-MAJOR, as every other output of the generated code.
 
-Friction's sign(v) is piecewise constant: its derivative is taken as 0 (CasADi's if_else has
+Friction's sign(v) is piecewise constant: its derivative is taken as 0 (CasADi's sign has
 none), so each Jacobian is that of the smooth part of the dynamics, exact wherever no actuated
 joint's velocity is zero. ``sing`` is [type I, type II] at the pose (the model functions' rule).
 

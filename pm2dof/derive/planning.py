@@ -168,7 +168,10 @@ class _Stage:
         S = ca.reshape(st["S"], 2, n).T
         self.S = S
         v1, rho = st["v1"], st["rho"]
-        self.sigma = ca.vertcat(*[ca.if_else(v1[i] >= 0, 1, -1) for i in range(n)])  # sgn(0)=+1
+        # sigma_i: the direction joint i moves on the interval ahead (s_d > 0), not the model's
+        # sign of a velocity (sign(0) = 0): v1_i = 0 counts as forward, and a neighbour with
+        # the other sign makes the interval a reversal (rho_i = 1, both signs; stages.py)
+        self.sigma = ca.vertcat(*[ca.if_else(v1[i] >= 0, 1, -1) for i in range(n)])
         self.abs_v1 = ca.fabs(v1)
         A, self.B = N @ st["a"], N @ st["b"]
         Cf = N @ S.T                                  # (n, n): facet j's weight of f_a,i

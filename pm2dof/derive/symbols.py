@@ -11,12 +11,14 @@ def solve2(A, b):
 
 
 class sgn(sp.Function):
-    """sign with sgn(0) = +1 (the paper's U_ij convention, eq. 13); exported as v >= 0 ? 1 : -1."""
+    """The mathematical sign, sgn(0) = 0, of eq. 2's Coulomb term (a joint at rest has no
+    Coulomb force); exported as CasADi's sign (NaN in, NaN out). The paper prints U_ij (eq. 13)
+    with sign(0) = +1, which pushes a robot at rest; eq. 2 means the sign."""
 
     @classmethod
     def eval(cls, v):
         if v.is_extended_real and v.is_number:
-            return sp.Integer(1) if v >= 0 else sp.Integer(-1)
+            return sp.Integer(int(v > 0) - int(v < 0))
         return None
 
     def _eval_derivative(self, x):  # piecewise constant: zero almost everywhere

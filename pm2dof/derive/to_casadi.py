@@ -98,8 +98,8 @@ class Converter:
             return (ca.cos if isinstance(e, sp.cos) else ca.sin)(self(e.args[0]))
         if isinstance(e, sp.atan2):
             return ca.atan2(self(e.args[0]), self(e.args[1]))
-        if isinstance(e, sgn):  # sgn(0) = +1
-            return ca.if_else(self(e.args[0]) >= 0, 1, -1)
+        if isinstance(e, sgn):  # sgn(0) = 0 (eq. 2); its derivative is 0
+            return ca.sign(self(e.args[0]))
         for fn, cfn in _UNARY.items():
             if isinstance(e, fn):
                 return cfn(self(e.args[0]))

@@ -143,7 +143,8 @@ def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
     T = float(np.median(np.diff(t)))
     N, I = len(t), list(base.independent)
     sos = lowpass(cutoff_hz, T, order)
-    xf = zero_phase(sos, xe)
+    xf = xe[0] + zero_phase(sos, xe - xe[0])   # about the first sample: a log at rest stays
+    #                                            exactly at rest (xed = 0, sign(0) = 0: no fc)
     v, a = differentiate(xf, T)
     tau_mid = np.empty_like(tau)
     tau_mid[0] = tau[0]

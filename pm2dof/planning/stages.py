@@ -177,7 +177,7 @@ def stages(model, path, s, w, theta, split, stops=(), evaluated=None):
     sing = outs["sing"]
     lay = model.layout("path_stage")
     st = lay.unpack(stage)
-    sign = np.where(outs["v1"] >= 0, 1.0, -1.0)       # sgn(0) = +1, the model's convention
+    sign = np.where(outs["v1"] >= 0, 1.0, -1.0)       # direction of motion, as path_stage's sigma
     st["rho"][:-1] = sign[:-1] != sign[1:]             # a joint reverses on [s_k, s_k+1]
     st["rho"][-1] = 0.0
     st["delta"][:-1, 0] = np.diff(s)

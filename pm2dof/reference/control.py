@@ -6,7 +6,7 @@
 # and derive/plant.py; it favours clarity over speed.
 #
 # Equation numbers refer to the paper as restated in docs/paper.md of the pm2dof repository:
-#   eq. 2   friction f_ai = sign(qd_ai) fc_i + fv_i qd_ai (sign(0) = +1)
+#   eq. 2   friction f_ai = sign(qd_ai) fc_i + fv_i qd_ai (sign(0) = 0)
 #   eq. 10  Me xedd + Ce xed + S^T f_a = S^T tau_a
 #   eq. 13  Y(q, qd, xrd, xrdd) theta = Me xrdd + Ce xrd + S^T f_a
 #   eqs. 14-17  e = xd - xe, s = edot + Q e, xrd = xd_dot + Q e, xrdd = xd_ddot + Q edot

@@ -22,7 +22,7 @@
 # * elbow_i = +1: elbow B_i = A_i + la_i u(qa_i) lies LEFT of the directed line
 #   A_i -> O; -1: right.
 # * theta (5n,) = (alpha_1..n, beta_1..n, gamma_1..n, fv_1..n, fc_1..n).
-# * sign(0) = +1 in the Coulomb friction term.
+# * sign(0) = 0 in the Coulomb friction term (a joint at rest has none).
 # * Units: lengths m, angles rad, alpha/beta/gamma kg m^2, fv N m s/rad,
 #   fc N m, torques N m.
 """Plain-NumPy reference kinematics and dynamics of the n-leg planar PM.
@@ -558,11 +558,11 @@ def friction(g: Any, qd_a: np.ndarray, theta: np.ndarray) -> np.ndarray:
     Returns
     -------
     f_a : ndarray, shape (n,), N m
-        sign(qd_ai) fc_i + fv_i qd_ai, with sign(0) = +1.
+        sign(qd_ai) fc_i + fv_i qd_ai, with sign(0) = 0.
     """
     _, _, _, fv, fc = _theta(g, theta)
     qd_a = np.asarray(qd_a, dtype=float)
-    sgn = np.where(qd_a >= 0.0, 1.0, -1.0)
+    sgn = np.sign(qd_a)
     return sgn * fc + fv * qd_a  # eq. 2
 
 

@@ -10,20 +10,29 @@ from pm2dof.cli import main
 
 
 def test_min_max_uses_less_peak_torque_and_delays_saturation():
+    """Min-max is the least peak per sample (tests/control/test_splits.py), not over a closed
+    loop: each sample's torques change the tracking and so the later samples' demands. On the
+    high move APD's min-max run peaks lower (6.90 against 7.11 N m, docs/results-redundancy.md),
+    NA's higher (7.56 against 7.41 N m). Where it peaks lower, a limit between the two peaks
+    clips min-norm and not min-max."""
     m = pm2dof.load_model()
     free = split_comparison(m, speeds=["high"], splits=("min_norm", "min_max"))["high"]
     for ctrl in ("apd", "na"):
         mn, mm = free[ctrl]["min_norm"], free[ctrl]["min_max"]
         assert mn["n_saturated"] == mm["n_saturated"] == 0
-        assert mm["peak_tau"] < mn["peak_tau"]
-    # a limit between the two peaks: min-norm must clip, min-max need not
-    na = free["na"]
-    level = 0.5 * (na["min_norm"]["peak_tau"] + na["min_max"]["peak_tau"])
-    r = split_comparison(m, level, speeds=["high"], splits=("min_norm", "min_max"),
-                         controllers=("na",))["high"]["na"]
-    assert r["min_norm"]["n_saturated"] > 0
-    assert r["min_max"]["n_saturated"] == 0
-    assert r["min_max"]["peak_tau"] <= level
+    lower = [c for c in ("apd", "na")
+             if free[c]["min_max"]["peak_tau"] < free[c]["min_norm"]["peak_tau"]]
+    assert "apd" in lower, {c: (free[c]["min_norm"]["peak_tau"], free[c]["min_max"]["peak_tau"])
+                            for c in free}
+    for ctrl in lower:
+        # a limit between the two peaks: min-norm must clip, min-max need not
+        c = free[ctrl]
+        level = 0.5 * (c["min_norm"]["peak_tau"] + c["min_max"]["peak_tau"])
+        r = split_comparison(m, level, speeds=["high"], splits=("min_norm", "min_max"),
+                             controllers=(ctrl,))["high"][ctrl]
+        assert r["min_norm"]["n_saturated"] > 0, ctrl
+        assert r["min_max"]["n_saturated"] == 0, ctrl
+        assert r["min_max"]["peak_tau"] <= level, ctrl
 
 
 def test_preload_keeps_its_floor_and_costs_torque():

@@ -85,7 +85,8 @@ def _kkt_residual(S, tau, lo, hi, w):
     """Optimality certificate of tau for min |tau|^2 s.t. S^T tau = u, lo <= tau <= hi: the
     smallest |2 tau - S nu - sum_lower l_i e_i + sum_upper l_i e_i| over free nu and l >= 0
     (bounded least squares). Zero (to rounding) exactly when tau satisfies the KKT conditions,
-    which for this convex QP means tau is the optimum."""
+    which for this convex QP means tau is the optimum. Relative to |2 tau|, absolute at tau = 0
+    (u = 0 with no preload, e.g. at rest: sign(0) = 0 leaves no friction to resist)."""
     n = len(tau)
     at_lo = tau <= lo + 1e-9 * w
     at_hi = tau >= hi - 1e-9 * w
@@ -94,7 +95,7 @@ def _kkt_residual(S, tau, lo, hi, w):
     bounds = ([-np.inf] * 2 + [0.0] * int(at_lo.sum() + at_hi.sum()),
               [np.inf] * (2 + int(at_lo.sum() + at_hi.sum())))
     r = lsq_linear(A, 2 * tau, bounds=bounds, method="bvls", tol=1e-14)
-    return np.abs(A @ r.x - 2 * tau).max() / (2 * np.abs(tau).max())
+    return np.abs(A @ r.x - 2 * tau).max() / (2 * np.abs(tau).max() or 1.0)
 
 
 def test_splits_are_exact_against_independent_solvers(redundant):

@@ -24,7 +24,7 @@ MODELS = ("shang2010", "fivebar")
 
 
 def _sgn(v):
-    return 1 if v >= 0 else -1   # derive.symbols.sgn; its derivative is 0 (symbols.sgn)
+    return int(v > 0) - int(v < 0)   # derive.symbols.sgn, sgn(0) = 0; its derivative is 0
 
 
 @pytest.fixture(scope="module", params=MODELS)

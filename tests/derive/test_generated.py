@@ -8,7 +8,7 @@ model names), except where marked paper-only (``m``, ``shang2010``):
   30 significant digits (so the reference carries no rounding error at double precision):
   this isolates the CasADi conversion, the code generation and the C compiler. 6 poses for
   the paper's robot, 3 for every other model (the cost is the per-model SymPy derivation
-  and lambdify, ~1.5-3.5 s each, not the poses). Paper-only: sign(0) = +1 at an exact zero.
+  and lambdify, ~1.5-3.5 s each, not the poses). Paper-only: sign(0) = 0 at an exact zero.
 * Regenerating into a temporary folder gives byte-identical files for every model (the
   ``python -m pm2dof.derive --no-build`` subprocesses run in parallel, one per CPU); for the paper's
   robot twice, with different hash seeds (deterministic output).
@@ -91,7 +91,7 @@ def gen_files(model):
 # --------------------------------------------------------------------------------------
 
 def _sgn(v):
-    return 1 if v >= 0 else -1  # derive.symbols.sgn: sign with sgn(0) = +1
+    return int(v > 0) - int(v < 0)  # derive.symbols.sgn: sign with sgn(0) = 0
 
 
 _LAMBDIFIED: dict = {}
@@ -220,7 +220,7 @@ def test_C_matches_sympy_at_30_digits(model, mp, sample_xe, random_theta):
 
 
 def test_C_matches_sympy_sign_zero(m):
-    """Paper only: at qd_a1 = 0 exactly (qb_1 = 0, xed along y) both sides use sgn(0) = +1."""
+    """Paper only: at qd_a1 = 0 exactly (qb_1 = 0, xed along y) both sides use sgn(0) = 0."""
     mp = _sympy_functions(m.spec)
     mpmath.mp.dps = DPS
     L, A1 = 0.244, np.array([0.0, 0.25])

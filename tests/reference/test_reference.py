@@ -369,8 +369,8 @@ def test_friction_eq2():
     n = 3
     theta = np.concatenate([np.zeros(9), [1.0, 2.0, 3.0], [0.5, 0.25, 0.125]])
     f = ref.friction(PAPER, np.array([2.0, -1.0, 0.0]), theta)
-    # sign(0) = +1 -> third entry is +fc_3
-    np.testing.assert_allclose(f, [0.5 + 2.0, -0.25 - 2.0, 0.125], rtol=0, atol=1e-15)
+    # sign(0) = 0 -> third entry has no Coulomb term
+    np.testing.assert_allclose(f, [0.5 + 2.0, -0.25 - 2.0, 0.0], rtol=0, atol=1e-15)
     assert f.shape == (n,)
 
 
@@ -416,7 +416,7 @@ def test_Y_times_theta_equals_expression(g):
 
 
 def test_Y_friction_columns_paper():
-    """The fc columns of Y are S^T sign(S xed) e_i (sign(0)=+1) and the fv
+    """The fc columns of Y are S^T sign(S xed) e_i (sign(0) = 0) and the fv
     columns S^T (S xed)_i e_i; independent of the reference signals."""
     g = PAPER
     q = ref.ik(g, np.array([0.25, 0.25]))
@@ -425,11 +425,11 @@ def test_Y_friction_columns_paper():
     Yq = ref.Y(g, q, xed, np.array([1.0, 2.0]), np.array([3.0, 4.0]))
     qda = Sq @ xed
     np.testing.assert_allclose(Yq[:, 9:12], Sq.T * qda, rtol=1e-12)
-    np.testing.assert_allclose(Yq[:, 12:15], Sq.T * np.where(qda >= 0, 1.0, -1.0), rtol=1e-12)
-    # at rest every fc column still carries +S^T e_i (sign(0) = +1)
+    np.testing.assert_allclose(Yq[:, 12:15], Sq.T * np.sign(qda), rtol=1e-12)
+    assert np.all(qda != 0.0)
+    # at rest no fc column (sign(0) = 0): the whole row is zero with zero reference signals
     Y0 = ref.Y(g, q, np.zeros(2), np.zeros(2), np.zeros(2))
-    np.testing.assert_allclose(Y0[:, 12:15], Sq.T, rtol=1e-12)
-    assert not np.any(Y0[:, :12])
+    assert not np.any(Y0)
 
 
 @geoms

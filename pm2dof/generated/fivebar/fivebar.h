@@ -849,7 +849,7 @@ int fivebar_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define fivebar_na_proj_preload_closed_loop_SZ_ARG 14
 #define fivebar_na_proj_preload_closed_loop_SZ_RES 8
 #define fivebar_na_proj_preload_closed_loop_SZ_IW 0
-#define fivebar_na_proj_preload_closed_loop_SZ_W 165
+#define fivebar_na_proj_preload_closed_loop_SZ_W 164
 int fivebar_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_apd_closed_loop_checkout(void);
 void fivebar_apd_closed_loop_release(int mem);

@@ -849,7 +849,7 @@ int fourleg_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define fourleg_na_proj_preload_closed_loop_SZ_ARG 14
 #define fourleg_na_proj_preload_closed_loop_SZ_RES 8
 #define fourleg_na_proj_preload_closed_loop_SZ_IW 0
-#define fourleg_na_proj_preload_closed_loop_SZ_W 1146
+#define fourleg_na_proj_preload_closed_loop_SZ_W 1145
 int fourleg_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_apd_closed_loop_checkout(void);
 void fourleg_apd_closed_loop_release(int mem);

@@ -849,7 +849,7 @@ int shang2010_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_
 #define shang2010_na_proj_preload_closed_loop_SZ_ARG 14
 #define shang2010_na_proj_preload_closed_loop_SZ_RES 8
 #define shang2010_na_proj_preload_closed_loop_SZ_IW 0
-#define shang2010_na_proj_preload_closed_loop_SZ_W 317
+#define shang2010_na_proj_preload_closed_loop_SZ_W 316
 int shang2010_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_apd_closed_loop_checkout(void);
 void shang2010_apd_closed_loop_release(int mem);

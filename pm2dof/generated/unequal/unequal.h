@@ -849,7 +849,7 @@ int unequal_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define unequal_na_proj_preload_closed_loop_SZ_ARG 14
 #define unequal_na_proj_preload_closed_loop_SZ_RES 8
 #define unequal_na_proj_preload_closed_loop_SZ_IW 0
-#define unequal_na_proj_preload_closed_loop_SZ_W 317
+#define unequal_na_proj_preload_closed_loop_SZ_W 316
 int unequal_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int unequal_apd_closed_loop_checkout(void);
 void unequal_apd_closed_loop_release(int mem);
