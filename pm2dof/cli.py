@@ -575,22 +575,26 @@ def cmd_plan(args):
         from .planning.pathfile import read_path_file
         items = [read_path_file(args.path)]
     else:
-        items = [mv for mv in model_moves(m) if args.move in (None, mv["name"])]
+        items = [mv for mv in model_moves(m) if args.move in (None, mv.name)]
         if not items:
             raise ArgumentError(f"--move {args.move!r}: the model file's moves are "
                                 f"{sorted(m.spec.trajectories)}")
     kin = {k: getattr(args, k) for k in ("v_max", "a_max", "j_max")}
-    for it in items:
-        if any(v is not None for v in kin.values()):
-            base = it["kinematic"] or dict(model_moves(m)[-1]["kinematic"])
-            it["kinematic"] = {k: (base[k] if v is None else v) for k, v in kin.items()}
+    if any(v is not None for v in kin.values()):     # the options override the item's limits
+        from dataclasses import replace
+
+        def given(it):
+            base = it.kinematic or model_moves(m)[-1].kinematic
+            return replace(it, kinematic={k: (base[k] if v is None else v)
+                                          for k, v in kin.items()})
+        items = [given(it) for it in items]
     splits = ("min_norm", "min_max") if args.split == "both" else (args.split,)
     res, plans = plan_paths(m, items, tau_max, args.margin, args.grid, splits,
                             smooth=args.smooth, tau_rate=args.tau_rate)
     loops = {}
     if args.closed_loop:
         for it in items:
-            loops[it["name"]] = closed_loop(m, it["path"], tau_max, splits[-1], args.margins,
+            loops[it.name] = closed_loop(m, it.path, tau_max, splits[-1], args.margins,
                                             args.grid)
         res["closed_loop"] = loops
     print(dumps(res) if args.json else format_report(res, loops))
