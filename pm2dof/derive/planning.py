@@ -57,7 +57,9 @@ Functions (prefix ``<name>_``), all per grid point:
 The largest s_d with a non-empty interval is found by bisection with :data:`BISECTIONS`
 halvings (:data:`MVC_BISECTIONS` for the maximum-velocity curve): the stage sets are intervals
 [0, s_d*] for these robots, and the bisection keeps the feasible end, so the result never
-exceeds the true bound. For a friction
+exceeds the true bound. The backward step reads the bisection's result off its lattice next to
+an estimate (Newton steps from the hint) where 4 evaluations show it there, and bisects only
+where they do not (:meth:`_Stage.at_hint`, a CasADi switch). For a friction
 law affine in |v| (Coulomb + viscous, eq. 2) each facet is a quadratic in s_d whose
 coefficients are computed once per point; other laws (Stribeck, smooth sign) are evaluated at
 every halving.
