@@ -330,7 +330,7 @@ def test_planning_figures(paper, plt, name):
     the kinematic S-curve): the legends once covered base A3, the map and hundreds of pixels
     of the torque curves."""
     m = paper[0]
-    path = read_path_file(name)["path"]
+    path = read_path_file(name).path
     w = np.full(m.n_legs, 6.0)
     plans = {sp: pm2dof.plan_time_optimal(m, path, tau_max=w, split=sp, grid=300)
              for sp in ("min_norm", "min_max")}
