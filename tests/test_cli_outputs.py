@@ -128,6 +128,7 @@ def test_no_generated_code_mentions_generated(tmp_path):
 
 def test_version_prints_what_getting_started_says(capsys):
     from pathlib import Path
+
     from pm2dof.core.version import __version__
     with pytest.raises(SystemExit):
         cli.main(["--version"])

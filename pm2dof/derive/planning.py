@@ -71,8 +71,8 @@ import sympy as sp
 
 from .dynamics import _friction
 from .factored import solve_small, task_gravity, task_inertia_coriolis
-from .model_functions import assembly_guard
 from .layouts import Layout
+from .model_functions import assembly_guard
 from .splits import _cross, _dot, min_max, min_norm
 from .symbols import sgn
 from .to_casadi import Converter
@@ -198,7 +198,7 @@ class _PathFriction:
         sigma = sp.symbols(f"psigma1:{n + 1}", real=True)
         names = FRICTION_MODELS[spec.friction]
         exprs = [_friction(spec.friction, v[i], sym.leg_params(i, names),
-                           spec.friction_constants).replace(sgn, lambda *_: sigma[i])
+                           spec.friction_constants).replace(sgn, lambda *_: sigma[i])  # noqa: B023
                  for i in range(n)]
         for i, e in enumerate(exprs):
             odd = sp.simplify(e + e.subs({v[i]: -v[i], sigma[i]: -sigma[i]}, simultaneous=True))

@@ -30,8 +30,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..core.errors import InputFileError, PlanError
-from ..core.validate import Problems, entry
 from ..core.task import orientation_length
+from ..core.validate import Problems, entry
 from .paths import TaskPath
 
 __all__ = ["SHIPPED_PATHS", "shipped_paths", "resolve_path_file", "read_path_file",

@@ -25,7 +25,7 @@ import numpy as np
 
 from ..core.errors import PlanError
 from .check import require
-from .plan import Plan, PathProfile, grid_times, sample
+from .plan import PathProfile, Plan, grid_times, sample
 from .problem import PlanProblem
 from .stages import limits, params, stages
 from .topp import plan_time_optimal

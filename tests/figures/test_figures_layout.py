@@ -13,15 +13,14 @@ import pytest
 
 import pm2dof
 from pm2dof.analysis.experiment import repeated_runs, table3
-from pm2dof.control.trajectory import model_move
 from pm2dof.analysis.maps import workspace_maps
 from pm2dof.analysis.splits import tau_max_sweep
+from pm2dof.control.trajectory import model_move
 from pm2dof.figures import animate, experiment, maps, planning, splits, studies
 from pm2dof.planning.pathfile import read_path_file
 from pm2dof.studies import SHIPPED_STUDIES, read_study, run_chunk
 from pm2dof.studies.report import summarise
 from pm2dof.studies.spec import GRID_KEYS
-
 
 TOL = 1.0        # px
 PNG_DPI = 110    # pm2dof.infra.results.save_figure

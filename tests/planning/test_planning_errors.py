@@ -5,8 +5,14 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof import (ArgumentError, ArgumentTypeError, PlanError, SingularityError, TaskPath,
-                    WorkspaceError)
+from pm2dof import (
+    ArgumentError,
+    ArgumentTypeError,
+    PlanError,
+    SingularityError,
+    TaskPath,
+    WorkspaceError,
+)
 from pm2dof.planning import check_path, plan_kinematic, plan_smooth, plan_time_optimal
 from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import GRID_MAX, grid_points, params, stages

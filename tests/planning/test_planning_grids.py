@@ -14,12 +14,12 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.planning import TaskPath, plan_time_optimal
-from pm2dof.planning.pathfile import read_path_file
 from pm2dof.derive.planning import MVC_BISECTIONS
+from pm2dof.planning import TaskPath, plan_time_optimal
+from pm2dof.planning.grid import _check_forward
+from pm2dof.planning.pathfile import read_path_file
 from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import V_TOP, grid_points, limits, params, stages
-from pm2dof.planning.grid import _check_forward
 from pm2dof.planning.topp import BETWEEN_TOL, RESOLUTION, solve_profile
 from pm2dof.planning.torques import plan_torques
 
