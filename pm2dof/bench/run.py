@@ -14,7 +14,8 @@ from pathlib import Path
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.simulate import plant_vector, simulate
+from ..control.plant import plant_vector
+from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
 from ..core.layout import Layout
 from ..core.model import load_model

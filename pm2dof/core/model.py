@@ -33,6 +33,7 @@ from .errors import (
 )
 from .layout import Layout
 from .model_file import inertia_problem, read_model_file
+from .poses import PoseMethods
 from .status import Status
 from .task import (
     ENERGY_FUNCTIONS,
@@ -157,7 +158,7 @@ def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
     return out
 
 
-class Model(DerivativeMethods):
+class Model(DerivativeMethods, PoseMethods):
     """A planar parallel manipulator with its compiled model functions. Immutable.
 
     Build with :func:`load_model`. Attributes: ``name``, ``spec`` (the validated model file),
