@@ -33,7 +33,8 @@ are imported on first use, so a real-time process never pays for them.
 import importlib
 
 from .control.controllers import STATUS_NAMES, APDController, CTCController, NAController, Status
-from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
+from .control.plant import plant_truth, theta_truth
+from .control.simulate import SimResult, check_trajectory, rmse, simulate
 from .control.trajectory import (
     PAPER_MOVES,
     Trajectory,

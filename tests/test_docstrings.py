@@ -12,8 +12,6 @@
 * Documented means named in a "Parameters" or "Other Parameters" section: a line at the
   section's indent ``name : type`` or ``name1, name2 : type`` (``*args`` and ``**kwargs`` by
   that name). ``self`` and ``cls`` are not parameters.
-* :data:`BEING_EDITED`: functions in files that other branches are editing, expected to fail
-  (strict: one that passes must leave the list). The lead empties the list after merging.
 """
 import dataclasses
 import importlib
@@ -27,44 +25,6 @@ import pm2dof
 #: identification's stable public names (module -> names), beyond those in pm2dof.__all__
 IDENTIFICATION = {"pm2dof.identification.base": ["identifiability", "BaseParameters",
                                                  "Identifiability", "base_parameters"]}
-
-EDITED = "being edited on another branch, lead fixes at merge"
-#: qualified name -> why it may fail for now: in files other branches are editing (issue 29:
-#: core/model.py, control/controllers.py, identification/, planning/, studies/spec.py). The
-#: lead documents these after merging and empties the list.
-BEING_EDITED = dict.fromkeys([
-    # control/controllers.py (LQRController's reset and step inherit its docstrings)
-    "pm2dof.control.controllers.APDController",
-    "pm2dof.control.controllers._Controller.closed_loop_inputs",
-    "pm2dof.control.controllers._Controller.reset", "pm2dof.control.controllers._Controller.step",
-    "pm2dof.linear.lqr.LQRController.reset", "pm2dof.linear.lqr.LQRController.step",
-    # core/model.py
-    "pm2dof.core.model.Model", "pm2dof.core.model.Model.A", "pm2dof.core.model.Model.C",
-    "pm2dof.core.model.Model.Ce", "pm2dof.core.model.Model.H", "pm2dof.core.model.Model.M",
-    "pm2dof.core.model.Model.Me", "pm2dof.core.model.Model.S", "pm2dof.core.model.Model.StF",
-    "pm2dof.core.model.Model.W", "pm2dof.core.model.Model.Wdot", "pm2dof.core.model.Model.Y",
-    "pm2dof.core.model.Model.checked_theta", "pm2dof.core.model.Model.fk",
-    "pm2dof.core.model.Model.forward_dynamics", "pm2dof.core.model.Model.function",
-    "pm2dof.core.model.Model.ik", "pm2dof.core.model.Model.layout",
-    "pm2dof.core.model.Model.singularity", "pm2dof.core.model.Model.singularity_measures",
-    "pm2dof.core.model.Model.singularity_message", "pm2dof.core.model.Model.torque_splits",
-    # identification/
-    "pm2dof.identification.base.BaseParameters.fold",
-    "pm2dof.identification.base.BaseParameters.unfold",
-    "pm2dof.identification.base.base_parameters",
-    "pm2dof.identification.design.design_excitation",
-    "pm2dof.identification.fit.identify_log",
-    "pm2dof.identification.log.write_log",
-    # planning/
-    "pm2dof.planning.pathfile.model_move_path",
-    "pm2dof.planning.paths.TaskPath", "pm2dof.planning.paths.TaskPath.arc",
-    "pm2dof.planning.paths.TaskPath.concat", "pm2dof.planning.paths.TaskPath.line",
-    "pm2dof.planning.paths.TaskPath.polyline", "pm2dof.planning.paths.TaskPath.spline",
-    "pm2dof.planning.plan.PathProfile", "pm2dof.planning.plan.PathProfile.evaluate",
-    # studies/spec.py
-    "pm2dof.studies.spec.read_study",
-], EDITED)
-
 
 def _api():
     """Every checked public function and class, once each."""
@@ -154,24 +114,12 @@ def undocumented(func, docs, sections=PARAMETERS):
 TARGETS = targets()
 
 
-def _cases():
-    for key in sorted(TARGETS):
-        marks = [pytest.mark.xfail(reason=BEING_EDITED[key], strict=True)] \
-            if key in BEING_EDITED else []
-        yield pytest.param(key, id=key, marks=marks)
-
-
-@pytest.mark.parametrize("key", list(_cases()))
+@pytest.mark.parametrize("key", sorted(TARGETS))
 def test_every_parameter_is_documented(key):
     func, docs, sections = TARGETS[key]
     missing = undocumented(func, docs, sections)
     assert not missing, (f"{key}: parameters missing from the docstring's "
                          f"{' or '.join(repr(s) for s in sections)} section: {missing}")
-
-
-def test_the_allow_list_names_only_checked_functions():
-    assert set(BEING_EDITED) <= set(TARGETS), sorted(set(BEING_EDITED) - set(TARGETS))
-    assert all(why == EDITED for why in BEING_EDITED.values())
 
 
 def test_the_checker_finds_an_undocumented_parameter():

@@ -2,7 +2,8 @@
 import numpy as np
 
 from ..control.controllers import APDController, CTCController, NAController
-from ..control.simulate import simulate, theta_truth
+from ..control.plant import theta_truth
+from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
 from ..infra.progress import bar
 
@@ -232,7 +233,7 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
 
 def _nominal_truth(model):
     """A plant whose truth is exactly the controllers' nominal model (no payload, no Stribeck)."""
-    from ..control.simulate import plant_truth
+    from ..control.plant import plant_truth
     n = model.n_legs
     th = model.theta_nominal
     base = plant_truth(model)

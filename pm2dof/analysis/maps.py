@@ -24,7 +24,6 @@ coordinates as they are (N and N m taken alike). The grid of :func:`workspace_ma
 """
 import numpy as np
 
-from ..control.simulate import pose_measures
 from ..core.errors import ArgumentError, WorkspaceError
 from ..core.task import require_rr_point
 from ..infra.progress import bar
@@ -173,7 +172,7 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
     x, y = _grid(model, resolution)
     X, Y = np.meshgrid(x, y)
     pts = np.stack([X.ravel(), Y.ravel()], axis=1)
-    type1, type2, side = pose_measures(model, pts)
+    type1, type2, side = model.pose_measures(pts)
     reach = np.isfinite(type1) & np.isfinite(type2) & (side > 0)
     out = {k: np.full(len(pts), np.nan) for k in FIELDS}
     out["type1"] = np.where(reach, type1, np.nan)
@@ -224,7 +223,7 @@ def maps_summary(model, maps, theta=None, tau_max=None):
         xd = model_move(model, speed).xd
         pts = xd[np.linspace(0, len(xd) - 1, 201).astype(int)]
         vals = {k: [] for k in FIELDS}
-        type1, type2, _ = pose_measures(model, pts)
+        type1, type2, _ = model.pose_measures(pts)
         for p, t1, t2 in zip(pts, type1, type2):
             vals["type1"].append(t1)
             vals["type2"].append(t2)

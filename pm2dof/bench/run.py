@@ -2,17 +2,20 @@
 # NumPy and SymPy-lambdify implementations of the same step; closed-loop rollout speed; op counts.
 """Benchmark of the generated controller step and closed-loop rollout.
 
-:func:`run_bench` measures everything in one run and returns a JSON-able dict;
-:func:`format_bench` renders it as a table with the project's targets. Used by
+:func:`run_bench` measures everything in one run and returns a JSON-able dict, assembled
+from one function per measurement (``bench_c_steps``, ``bench_splits``, ...), each returning
+its numbers; :func:`format_bench` renders it as a table with the project's targets. Used by
 ``pm2dof bench [--json] [--quick]``.
 """
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.simulate import plant_vector, simulate
+from ..control.plant import plant_vector
+from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
 from ..core.layout import Layout
 from ..core.model import load_model
@@ -124,17 +127,81 @@ def run_bench(model=None, quick=False, progress=None):
     """
     t_start = time.perf_counter()
     say = progress or (lambda msg: None)
-    model = load_model() if model is None else model
-    repeats = 3 if quick else 7
-    batch_s = 0.004 if quick else 0.05       # Python batches
-    c_inner = 2000 if quick else 20000       # C-loop batches (calls per batch)
-    n_roll = 2000 if quick else 20000        # rollout samples
-    n_agree = 3 if quick else 10
-
+    b = setup(load_model() if model is None else model, quick, say)
+    model, na = b.model, b.na
     res = {"model": model.name, "n_legs": model.n_legs, "quick": bool(quick),
-           "repeats": repeats, "notes": {}}
+           "repeats": b.repeats, "notes": {}}
     notes = res["notes"]
-    lays = {k: Layout(k, v) for k, v in model.manifest["layouts"].items()}
+    res["operating_point"] = {"trajectory": b.speed, "sample": b.k_op}
+    say(f"C loop: na_step and apd_step, {b.repeats} x {b.c_inner} calls")
+    res.update(bench_c_steps(b))
+    say(f"C loop: NA step per torque split {BENCH_SPLITS}, interleaved batches")
+    res.update(bench_splits(b))
+    say("Python: NAController.step (out= and allocating), bare binding call")
+    res.update(bench_python_steps(b))
+    say("casadi.Function: casadi.external on the compiled library")
+    res.update(bench_casadi_function(b, notes))
+    say("NumPy reference step (pm2dof.reference.control.na_step) and agreement")
+    res.update(bench_numpy_reference(b, notes))
+    say("SymPy: derive the expressions, lambdify fk, unit vectors, S, Y (numpy, cse)")
+    res.update(bench_lambdify(b, notes))
+    res.update(bench_rollout(b, say))
+
+    # --- derivatives and the CTC, LQR steps (bench/derivatives.py) -----------------------
+    say("derivatives: Jacobians, sampled step, inverse dynamics (C, Python, Pinocchio, finite "
+        "differences); CTC and LQR steps")
+    res.update(derivative_bench(model, b.traj, b.op, b.repeats, b.c_inner, b.batch_s, notes))
+
+    # --- the binding's overhead and the peers (bench/peers.py) -----------------------------
+    say("binding overhead (Python - C) of forward_dynamics and NAController.step; forward "
+        "dynamics beside Pinocchio and MuJoCo, interleaved rounds")
+    fd_state = dynamics_state(model, b.traj, len(b.traj.t) // 2)
+    res.update(peer_bench(model, na, b.op, b.qa_prev, fd_state, b.repeats, b.batch_s,
+                          b.c_inner, notes))
+
+    # --- motion planning (issue 20): plan_time_optimal beside toppra ----------------------
+    from .planning import bench_planning
+    planning = bench_planning(model, quick, say)
+    notes.update(planning.pop("notes"))
+    res.update(planning)
+
+    say("op counts from the generated C source")
+    res.update(bench_op_counts(model, notes))
+    res.update(ratios(res, na.sample_period))
+    res["targets"] = targets = check_targets(res)
+    res["all_targets_pass"] = all(t["pass"] for t in targets.values())
+    res["machine"] = machine(model.library)
+    res["elapsed_s"] = time.perf_counter() - t_start
+    return res
+
+
+@dataclass(frozen=True, eq=False)
+class BenchSetup:
+    """What the measurements share: the model, the sizes of the run, the NA and APD
+    controllers, the move and the NA operating point on it (sample ``k_op`` of ``traj``,
+    ``speed`` its name; ``qa_prev`` the active angles one sample before, rad), ``lays`` the
+    manifest's layouts and ``cases`` the step inputs the references are compared on."""
+
+    model: object
+    quick: bool
+    repeats: int          # batches per measurement
+    batch_s: float        # s per Python batch
+    c_inner: int          # calls per C-loop batch
+    n_roll: int           # rollout samples
+    lays: dict
+    na: NAController
+    apd: APDController
+    speed: str
+    traj: object
+    k_op: int
+    op: tuple             # (state, qa, xd, xd_dot, xd_ddot) of the NA step
+    qa_prev: np.ndarray
+    cases: list
+
+
+def setup(model, quick, say):
+    """The :class:`BenchSetup` of one run (``quick``: the short one of :func:`run_bench`)."""
+    repeats = 3 if quick else 7
     n = model.n_legs
     na, apd = NAController(model), APDController(model)
     moves = line_moves(model)
@@ -143,39 +210,62 @@ def run_bench(model=None, quick=False, progress=None):
     k_op = len(traj.t) // 2
     say(f"operating point: the NA controller along the {speed}-speed move to sample {k_op}")
     op = operating_point(model, na, traj, k_op)
-    res["operating_point"] = {"trajectory": speed, "sample": k_op}
+    rng = np.random.default_rng(20100101)
+    cases = [op] + random_cases(model, na, rng, 3 if quick else 10, traj.xd[k_op])
+    return BenchSetup(model, bool(quick), repeats, 0.004 if quick else 0.05,
+                      2000 if quick else 20000, 2000 if quick else 20000,
+                      {k: Layout(k, v) for k, v in model.manifest["layouts"].items()}, na, apd,
+                      speed, traj, k_op, op, model.ik(traj.xd[k_op - 1])[:n].copy(), cases)
 
-    # --- C loop ----------------------------------------------------------------------
-    say(f"C loop: na_step and apd_step, {repeats} x {c_inner} calls")
-    for law, ctrl in (("na", na), ("apd", apd)):
-        f = model.function(f"{law}_step")
-        outs = (np.empty(n), np.empty(len(op[0])), np.empty(1), np.empty(f.sizes_out[3]))
-        f.time_calls(max(1, c_inner // 10), 1, *op, ctrl.params, *outs)  # warm up
-        st = stats(f.time_calls(c_inner, repeats, *op, ctrl.params, *outs))
+
+def _c_step_outs(model, f, op):
+    """Preallocated outputs (tau, state_next, status, diagnostics) of a controller step."""
+    n = model.n_legs
+    return np.empty(n), np.empty(len(op[0])), np.empty(1), np.empty(f.sizes_out[3])
+
+
+def bench_c_steps(b):
+    """``na_step_c_ns``, ``apd_step_c_ns`` (and ``_min``): the generated steps in a C loop, ns."""
+    res = {}
+    for law, ctrl in (("na", b.na), ("apd", b.apd)):
+        f = b.model.function(f"{law}_step")
+        outs = _c_step_outs(b.model, f, b.op)
+        f.time_calls(max(1, b.c_inner // 10), 1, *b.op, ctrl.params, *outs)  # warm up
+        st = stats(f.time_calls(b.c_inner, b.repeats, *b.op, ctrl.params, *outs))
         res[f"{law}_step_c_ns"], res[f"{law}_step_c_ns_min"] = st["median"], st["min"]
+    return res
 
-    # --- C loop: the NA step of each torque split, batches interleaved -------------------
-    say(f"C loop: NA step per torque split {BENCH_SPLITS}, interleaved batches")
+
+def bench_splits(b):
+    """The NA step of each torque split in a C loop, batches interleaved: ``na_<split>_step_c_ns``
+    (and ``_min``), ns, and the paired ratios ``na_min_max_over_min_norm``,
+    ``na_preload_over_min_norm``."""
+    model, n = b.model, b.model.n_legs
     ctrls = {s: NAController(model, split=s, preload=np.full(n, BENCH_PRELOAD))
              for s in BENCH_SPLITS}
     per = {s: [] for s in BENCH_SPLITS}
-    for _ in range(repeats):
+    for _ in range(b.repeats):
         for s, c in ctrls.items():
             f = model.function(f"{c.function_name}_step")
-            outs = (np.empty(n), np.empty(len(op[0])), np.empty(1), np.empty(f.sizes_out[3]))
-            per[s] += f.time_calls(c_inner, 1, *op, c.params, *outs)
+            outs = _c_step_outs(model, f, b.op)
+            per[s] += f.time_calls(b.c_inner, 1, *b.op, c.params, *outs)
+    res = {}
     for s, times in per.items():
         st = stats(times)
         res[f"na_{s}_step_c_ns"], res[f"na_{s}_step_c_ns_min"] = st["median"], st["min"]
-    ratios = [a / b for a, b in zip(per["min_max"], per["min_norm"])]  # paired, same round
-    res["na_min_max_over_min_norm"] = stats(ratios)["median"]
-    res["na_preload_over_min_norm"] = stats([a / b for a, b in
+    # ratios of batches paired in the same round
+    res["na_min_max_over_min_norm"] = stats([t / t0 for t, t0 in
+                                             zip(per["min_max"], per["min_norm"])])["median"]
+    res["na_preload_over_min_norm"] = stats([t / t0 for t, t0 in
                                              zip(per["preload"], per["min_norm"])])["median"]
+    return res
 
-    # --- Python: NAController.step, with and without out=, and the bare binding ------
-    say("Python: NAController.step (out= and allocating), bare binding call")
-    state0, qa, xd, xd_dot, xd_ddot = op
-    qa_prev = model.ik(traj.xd[k_op - 1])[:n].copy()
+
+def bench_python_steps(b):
+    """``NAController.step`` from Python with ``out=`` (``na_step_python_us``), allocating
+    (``na_step_python_alloc_us``) and the bare binding call (``na_step_binding_us``), us."""
+    na, n = b.na, b.model.n_legs
+    state0, qa, xd, xd_dot, xd_ddot = b.op
     buf = np.empty(n)
     step = na.step
 
@@ -187,7 +277,7 @@ def run_bench(model=None, quick=False, progress=None):
         for _ in range(k):
             step(qa, xd, xd_dot, xd_ddot)
 
-    fna = model.function("na_step")
+    fna = b.model.function("na_step")
     s1, tau, stat, dg = np.empty_like(state0), np.empty(n), np.empty(1), np.empty(fna.sizes_out[3])
     params = na.params
 
@@ -195,92 +285,118 @@ def run_bench(model=None, quick=False, progress=None):
         for _ in range(k):
             fna(state0, qa, xd, xd_dot, xd_ddot, params, tau, s1, stat, dg)
 
+    res = {}
     for key, run in (("na_step_python_us", run_out), ("na_step_python_alloc_us", run_alloc),
                      ("na_step_binding_us", run_binding)):
-        na.reset(qa_prev)
-        ns, _ = time_batches(run, repeats, batch_s)
+        na.reset(b.qa_prev)
+        ns, _ = time_batches(run, b.repeats, b.batch_s)
         st = stats(ns)
         res[key], res[key + "_min"] = st["median"] / 1e3, st["min"] / 1e3
+    return res
 
-    # --- casadi.Function (casadi.external on the compiled library) --------------------
-    say("casadi.Function: casadi.external on the compiled library")
+
+def bench_casadi_function(b, notes):
+    """The same compiled NA step as a ``casadi.Function`` (``casadi.external``) called with
+    NumPy arguments: ``na_step_casadi_function_us`` (None, with a note, without CasADi)."""
+    res = {}
     try:
         import casadi
     except ImportError as exc:
         casadi = None
         notes["na_step_casadi_function_us"] = f"casadi is not importable ({exc})"
     res["na_step_casadi_function_us"] = res["na_step_casadi_function_us_min"] = None
-    if casadi is not None:
-        cf = casadi.external(f"{model.name}_na_step", model.library)
-        cargs = (state0, qa, xd, xd_dot, xd_ddot, params)
-        tau_cf = np.asarray(cf(*cargs)[0]).ravel()
-        res["agreement_casadi_function_vs_c"] = rel_diff(tau_cf, c_step(fna, params, op, n)[0])
+    if casadi is None:
+        return res
+    model, params = b.model, b.na.params
+    state0, qa, xd, xd_dot, xd_ddot = b.op
+    cf = casadi.external(f"{model.name}_na_step", model.library)
+    cargs = (state0, qa, xd, xd_dot, xd_ddot, params)
+    tau_cf = np.asarray(cf(*cargs)[0]).ravel()
+    res["agreement_casadi_function_vs_c"] = rel_diff(
+        tau_cf, c_step(model.function("na_step"), params, b.op, model.n_legs)[0])
 
-        def run_cf(k):
-            for _ in range(k):
-                cf(state0, qa, xd, xd_dot, xd_ddot, params)
+    def run_cf(k):
+        for _ in range(k):
+            cf(state0, qa, xd, xd_dot, xd_ddot, params)
 
-        st = stats(time_batches(run_cf, repeats, batch_s * 2)[0])
-        res["na_step_casadi_function_us"] = st["median"] / 1e3
-        res["na_step_casadi_function_us_min"] = st["min"] / 1e3
-        res["casadi_version"] = casadi.__version__
+    st = stats(time_batches(run_cf, b.repeats, b.batch_s * 2)[0])
+    res["na_step_casadi_function_us"] = st["median"] / 1e3
+    res["na_step_casadi_function_us_min"] = st["min"] / 1e3
+    res["casadi_version"] = casadi.__version__
+    return res
 
-    # --- NumPy reference --------------------------------------------------------------
-    say("NumPy reference step (pm2dof.reference.control.na_step) and agreement")
+
+def bench_numpy_reference(b, notes):
+    """``pm2dof.reference.control.na_step`` (plain NumPy): ``na_step_numpy_us`` and its
+    agreement with the C step over ``b.cases`` (``agreement_c_vs_numpy``)."""
+    model, params, n = b.model, b.na.params, b.model.n_legs
     g = reference_geometry(model)
     ref_step = rc.na_step
+    state0, qa, xd, xd_dot, xd_ddot = b.op
 
     def run_np(k):
         for _ in range(k):
             ref_step(g, state0, qa, xd, xd_dot, xd_ddot, params)
 
-    st = stats(time_batches(run_np, repeats, batch_s * 2)[0])
+    res = {}
+    st = stats(time_batches(run_np, b.repeats, b.batch_s * 2)[0])
     res["na_step_numpy_us"], res["na_step_numpy_us_min"] = st["median"] / 1e3, st["min"] / 1e3
     notes["na_step_numpy_us"] = (
         "the NumPy reference is written for clarity: it builds Y column by column "
         f"({len(model.param_names)} evaluations of eq. 13's right side), so it is far slower "
         "than straight NumPy; the lambdify row is the plain-NumPy baseline")
-    rng = np.random.default_rng(20100101)
-    cases = [op] + random_cases(model, na, rng, n_agree, traj.xd[k_op])
+    fna = model.function("na_step")
     worst = 0.0
-    for case in cases:
+    for case in b.cases:
         tau_c, s_c, stat_c = c_step(fna, params, case, n)
         tau_r, s_r, stat_r, _ = ref_step(g, *case, params)
         worst = max(worst, rel_diff(tau_c, tau_r), rel_diff(s_c, s_r), float(stat_c != stat_r))
     res["agreement_c_vs_numpy"] = worst
-    res["agreement_cases"] = len(cases)
+    res["agreement_cases"] = len(b.cases)
+    return res
 
-    # --- SymPy lambdify ---------------------------------------------------------------
-    say("SymPy: derive the expressions, lambdify fk, unit vectors, S, Y (numpy, cse)")
-    res["na_step_lambdify_us"] = res["na_step_lambdify_us_min"] = None
+
+def bench_lambdify(b, notes):
+    """The step composed in NumPy from the SymPy expressions through ``sympy.lambdify``:
+    ``na_step_lambdify_us`` and ``agreement_c_vs_lambdify`` (None, with a note, without
+    SymPy or the derive package)."""
+    res = {"na_step_lambdify_us": None, "na_step_lambdify_us_min": None}
     try:
-        lstep, build_s = lambdify_step(model, lays)
+        lstep, build_s = lambdify_step(b.model, b.lays)
     except ImportError as exc:
-        lstep = None
         notes["na_step_lambdify_us"] = f"sympy or the derive package is not importable ({exc})"
-    if lstep is not None:
-        res["lambdify_build_s"] = build_s
-        worst = 0.0
-        for case in cases:
-            tau_c, s_c, stat_c = c_step(fna, params, case, n)
-            tau_l, s_l, stat_l = lstep(*case, params)
-            worst = max(worst, rel_diff(tau_c, tau_l), rel_diff(s_c, s_l), float(stat_c != stat_l))
-        res["agreement_c_vs_lambdify"] = worst
+        return res
+    model, params, n = b.model, b.na.params, b.model.n_legs
+    fna = model.function("na_step")
+    res["lambdify_build_s"] = build_s
+    worst = 0.0
+    for case in b.cases:
+        tau_c, s_c, stat_c = c_step(fna, params, case, n)
+        tau_l, s_l, stat_l = lstep(*case, params)
+        worst = max(worst, rel_diff(tau_c, tau_l), rel_diff(s_c, s_l), float(stat_c != stat_l))
+    res["agreement_c_vs_lambdify"] = worst
+    state0, qa, xd, xd_dot, xd_ddot = b.op
 
-        def run_lam(k):
-            for _ in range(k):
-                lstep(state0, qa, xd, xd_dot, xd_ddot, params)
+    def run_lam(k):
+        for _ in range(k):
+            lstep(state0, qa, xd, xd_dot, xd_ddot, params)
 
-        st = stats(time_batches(run_lam, repeats, batch_s * 2)[0])
-        res["na_step_lambdify_us"] = st["median"] / 1e3
-        res["na_step_lambdify_us_min"] = st["min"] / 1e3
+    st = stats(time_batches(run_lam, b.repeats, b.batch_s * 2)[0])
+    res["na_step_lambdify_us"] = st["median"] / 1e3
+    res["na_step_lambdify_us_min"] = st["min"] / 1e3
+    return res
 
-    # --- closed-loop rollout ----------------------------------------------------------
+
+def bench_rollout(b, say):
+    """The closed-loop rollout (encoder, NA step, the plant's RK4 substeps per sample) over
+    ``b.n_roll`` samples: the ``accumulate`` call alone (``rollout_steps_per_s``) and through
+    ``pm2dof.simulate`` (``rollout_end_to_end_steps_per_s``), control steps per second."""
+    model, na, lays, n_roll, n = b.model, b.na, b.lays, b.n_roll, b.model.n_legs
     long, speed_l = long_trajectory(model, n_roll)
     say(f"rollout: {n_roll} samples ({speed_l}-speed move back and forth), accumulate and "
         f"simulate()")
-    res["rollout_samples"] = n_roll
-    res["rk4_substeps"] = int(model.manifest.get("rk4_substeps", 0)) or None
+    res = {"rollout_samples": n_roll,
+           "rk4_substeps": int(model.manifest.get("rk4_substeps", 0)) or None}
     f_cl = model.function("na_closed_loop")
     plant = plant_vector(model)
     p = np.concatenate([na.params, plant])
@@ -305,7 +421,7 @@ def run_bench(model=None, quick=False, progress=None):
     status = y[:, lays["cl_output"].slices["status"]].ravel()
     res["rollout_singular_samples"] = int(np.sum(status == Status.SINGULAR))
     res["rollout_max_error_m"] = float(np.max(np.hypot(*(long.xd - y[:, 0:2]).T)))
-    acc = stats(time_batches(run_acc, repeats, 0.0 if quick else 0.05)[0])
+    acc = stats(time_batches(run_acc, b.repeats, 0.0 if b.quick else 0.05)[0])
     res["rollout_steps_per_s"] = n_roll * 1e9 / acc["median"]
     res["rollout_steps_per_s_best"] = n_roll * 1e9 / acc["min"]
     res["rollout_ns_per_step"] = acc["median"] / n_roll
@@ -314,61 +430,53 @@ def run_bench(model=None, quick=False, progress=None):
         for _ in range(k):
             simulate(model, na, long)
 
-    sim = stats(time_batches(run_sim, repeats, 0.0 if quick else 0.05)[0])
+    sim = stats(time_batches(run_sim, b.repeats, 0.0 if b.quick else 0.05)[0])
     res["rollout_end_to_end_steps_per_s"] = n_roll * 1e9 / sim["median"]
     res["rollout_end_to_end_steps_per_s_best"] = n_roll * 1e9 / sim["min"]
     res["rollout_python_overhead_us_per_step"] = (sim["median"] - acc["median"]) / n_roll / 1e3
+    return res
 
-    # --- derivatives and the CTC, LQR steps (bench/derivatives.py) -----------------------
-    say("derivatives: Jacobians, sampled step, inverse dynamics (C, Python, Pinocchio, finite "
-        "differences); CTC and LQR steps")
-    res.update(derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes))
 
-    # --- the binding's overhead and the peers (bench/peers.py) -----------------------------
-    say("binding overhead (Python - C) of forward_dynamics and NAController.step; forward "
-        "dynamics beside Pinocchio and MuJoCo, interleaved rounds")
-    fd_state = dynamics_state(model, traj, len(traj.t) // 2)
-    res.update(peer_bench(model, na, op, qa_prev, fd_state, repeats, batch_s, c_inner, notes))
-
-    # --- motion planning (issue 20): plan_time_optimal beside toppra ----------------------
-    from .planning import bench_planning
-    planning = bench_planning(model, quick, say)
-    notes.update(planning.pop("notes"))
-    res.update(planning)
-
-    # --- op counts --------------------------------------------------------------------
-    say("op counts from the generated C source")
+def bench_op_counts(model, notes):
+    """``op_counts``: operations of each generated function, parsed from the generated C
+    (None, with a note, where it cannot be read), and ``generated_c`` its path."""
     c_path = Path(model.library).with_name(f"{model.name}.c")
     try:
         ops = count_ops(c_path.read_text(), [f"{model.name}_{s}" for s in OPS_FUNCTIONS])
-        res["op_counts"] = {k[len(model.name) + 1:]: v for k, v in ops.items()}
+        res = {"op_counts": {k[len(model.name) + 1:]: v for k, v in ops.items()}}
     except (OSError, KeyError, RecursionError) as exc:
-        res["op_counts"] = None
+        res = {"op_counts": None}
         notes["op_counts"] = f"cannot read {c_path}: {exc}"
     res["generated_c"] = str(c_path)
+    return res
 
-    # --- ratios, targets, machine -----------------------------------------------------
+
+def ratios(res, sample_period):
+    """The speed-ups and overheads derived from the measurements ``res`` (None where one is
+    missing); ``sample_period`` s, the NA controller's."""
     def ratio(a, b):
         return a / b if (a is not None and b) else None
 
-    res["speedup_c_vs_numpy"] = ratio(res["na_step_numpy_us"] * 1e3, res["na_step_c_ns"])
-    res["speedup_c_vs_lambdify"] = ratio(
-        None if res["na_step_lambdify_us"] is None else res["na_step_lambdify_us"] * 1e3,
-        res["na_step_c_ns"])
-    res["speedup_binding_vs_casadi_function"] = ratio(res["na_step_casadi_function_us"],
-                                                      res["na_step_python_us"])
-    res["speedup_raw_binding_vs_casadi_function"] = ratio(res["na_step_casadi_function_us"],
-                                                          res["na_step_binding_us"])
-    res["python_overhead_us"] = res["na_step_python_us"] - res["na_step_c_ns"] / 1e3
-    res["na_step_budget_fraction"] = res["na_step_c_ns"] * 1e-9 / na.sample_period
+    return {
+        "speedup_c_vs_numpy": ratio(res["na_step_numpy_us"] * 1e3, res["na_step_c_ns"]),
+        "speedup_c_vs_lambdify": ratio(
+            None if res["na_step_lambdify_us"] is None else res["na_step_lambdify_us"] * 1e3,
+            res["na_step_c_ns"]),
+        "speedup_binding_vs_casadi_function": ratio(res["na_step_casadi_function_us"],
+                                                    res["na_step_python_us"]),
+        "speedup_raw_binding_vs_casadi_function": ratio(res["na_step_casadi_function_us"],
+                                                        res["na_step_binding_us"]),
+        "python_overhead_us": res["na_step_python_us"] - res["na_step_c_ns"] / 1e3,
+        "na_step_budget_fraction": res["na_step_c_ns"] * 1e-9 / sample_period,
+    }
+
+
+def check_targets(res):
+    """Each of :data:`TARGETS` against its value in ``res``: pass, fail, or None (no value)."""
     targets = {}
     for key, cmp, target, unit, what in TARGETS:
         v = res.get(key)
         ok = None if v is None else (v <= target if cmp == "<=" else v >= target)
         targets[key] = {"value": v, "target": target, "op": cmp, "unit": unit, "what": what,
                         "pass": ok}
-    res["targets"] = targets
-    res["all_targets_pass"] = all(t["pass"] for t in targets.values())
-    res["machine"] = machine(model.library)
-    res["elapsed_s"] = time.perf_counter() - t_start
-    return res
+    return targets

@@ -4,12 +4,14 @@
 * :mod:`.controllers` -- :class:`NAController` (eqs. 14-29), :class:`APDController` (eq. 40):
   one call into generated C per sample;
 * :mod:`.trajectory` -- jerk-limited straight-line moves (:func:`line`, :func:`paper_move`);
+* :mod:`.plant` -- the simulated robot's truth (:func:`plant_truth`, :func:`theta_truth`);
 * :mod:`.simulate` -- :func:`simulate`: a whole closed-loop rollout in one call into C.
 
 Imports :mod:`pm2dof.core`, the standard library and NumPy only.
 """
 from .controllers import STATUS_NAMES, APDController, NAController
-from .simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
+from .plant import plant_truth, theta_truth
+from .simulate import SimResult, check_trajectory, rmse, simulate
 from .trajectory import SCurve, Trajectory, TrajectoryError, line, paper_move
 
 __all__ = ["NAController", "APDController", "STATUS_NAMES", "simulate", "SimResult",

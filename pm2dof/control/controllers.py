@@ -211,7 +211,13 @@ class _Controller:
 
     def closed_loop_inputs(self, trajectory):
         """The closed loop's per-sample inputs along ``trajectory``: (N, 3m) rows [xd, xd_dot,
-        xd_ddot] (a law with per-sample gains appends them, ``<law>_cl_input`` layout)."""
+        xd_ddot] (a law with per-sample gains appends them, ``<law>_cl_input`` layout).
+
+        Parameters
+        ----------
+        trajectory : Trajectory
+            The desired motion, N samples of ``xd``, ``xd_dot``, ``xd_ddot`` (N, m) each.
+        """
         return np.ascontiguousarray(np.hstack([trajectory.xd, trajectory.xd_dot,
                                                trajectory.xd_ddot]))
 
@@ -219,6 +225,13 @@ class _Controller:
         """Start at rest at the measured active angles ``qa0`` (n,), rad.
 
         ``theta_hat`` (p,) replaces the initial estimate (default: ``theta0``, Tables 1-2).
+
+        Parameters
+        ----------
+        qa0 : array_like (n,)
+            Measured active angles, rad, closing every loop (``model.fk`` accepts them).
+        theta_hat : array_like (p,), optional
+            Initial parameter estimate, in ``model.param_names`` order; ``theta0`` when None.
         """
         th = self.theta0 if theta_hat is None else np.array(theta_hat, dtype=float)
         if th.shape != self.theta0.shape or not np.isfinite(th).all():
@@ -262,6 +275,19 @@ class _Controller:
         Inputs may be any array-likes of real numbers (lists, float32, ...): they are converted
         once, and a wrong length raises ArgumentError (a ValueError) naming the input. C-contiguous float64
         arrays go straight to the C (the fast path, no conversion).
+
+        Parameters
+        ----------
+        qa_meas : array_like (n,)
+            Measured active (encoder) angles, rad.
+        xd : array_like (m,)
+            Desired pose, m (rad for phi).
+        xd_dot : array_like (m,)
+            Desired velocity, m/s (rad/s for phi).
+        xd_ddot : array_like (m,)
+            Desired acceleration, m/s^2 (rad/s^2 for phi).
+        out : ndarray (n,), optional
+            Written into and returned (no allocation); a new array when None.
         """
         try:
             return self._run(qa_meas, xd, xd_dot, xd_ddot, out)
@@ -377,6 +403,20 @@ class APDController(_Controller):
     of the NA gains (diagonal, each entry > 0, else :class:`pm2dof.GainError`); ``theta0`` is
     the fixed model inside the feedforward; ``split``, ``preload`` and ``preload_sign`` as for
     NA.
+
+    Parameters
+    ----------
+    model : Model
+    Kp : float or array_like (m,) or (m, m), optional
+        Diagonal stiffness, N/m (N m/rad for phi), each entry > 0 (default ``[gains.apd]``
+        of the model file).
+    Kv : float or array_like (m,) or (m, m), optional
+        Diagonal damping, N*s/m (N m s/rad for phi), each entry > 0. Gains outside these
+        conditions raise :class:`pm2dof.GainError` naming the gain and the entry.
+    theta0 : array_like (p,), optional
+        The model inside the feedforward (default Tables 1-2); never updated.
+    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign
+        As for :class:`NAController`.
     """
     _law = "apd"
 

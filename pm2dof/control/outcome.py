@@ -52,7 +52,7 @@ def classify_failure(model, xe, xed, tau_a, plant, period, substeps, t0):
     tau_a : ndarray (n,)
         The torque held over the sample, N*m.
     plant : ndarray
-        The plant vector (:func:`pm2dof.control.simulate.plant_vector`).
+        The plant vector (:func:`pm2dof.control.plant.plant_vector`).
     period : float
         Sample period T, s; the sample has ``substeps`` RK4 steps of T / substeps.
     t0 : float

@@ -6,10 +6,8 @@ step computes tau_k from them and the desired motion at t_k, and the plant integ
 truth dynamics over [t_k, t_k + T] with ``rk4_substeps`` RK4 steps under that torque held
 constant (zero-order hold). The loop over samples runs in C (``_cbind.Function.accumulate``).
 """
-import functools
 import math
 import warnings
-from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -22,107 +20,14 @@ from ..core.errors import (
     WorkspaceError,
 )
 from ..core.status import Status
-from ..core.task import is_rr_point, require_rr_point
+from ..core.task import is_rr_point
 from .controllers import _Controller, check_same_model
 from .outcome import OUTCOMES, classify_failure
+from .plant import plant_vector
 from .trajectory import _positive, require_trajectory
 
-__all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "plant_truth",
-           "plant_vector", "rmse", "theta_truth", "check_trajectory", "pose_measures",
-           "poses_clear", "rollout_inputs", "batch_inputs"]
-
-
-def plant_truth(model, **overrides):
-    """The plant's truth as a dict: the model file's ``[plant]`` with the payload booked in.
-
-    The payload m at the tip of leg j's distal link (j = ``payload_leg``, counted from 1 as in
-    the paper) adds m la^2, m la lb, m lb^2 to alpha_j, beta_j, gamma_j (its kinetic energy
-    1/2 m |tip velocity|^2 in the leg's angles).
-
-    Parameters
-    ----------
-    model : Model
-        The robot; its model file's ``[plant]`` is the truth.
-    **overrides
-        Replace fields of ``[plant]`` (e.g. ``payload_mass=0``); a ``payload_leg`` outside
-        1..n raises ValueError. The booking is that of an RR leg's tip: other
-        mechanisms are refused (UnsupportedMechanismError).
-    """
-    require_rr_point(model, "plant_truth's payload booking (m la^2, m la lb, m lb^2 on an RR "
-                            "leg's alpha, beta, gamma)")
-    p = dict(model.spec.plant)
-    unknown = sorted(set(overrides) - set(p))
-    if unknown:
-        raise ArgumentTypeError(f"unknown plant field(s) {unknown}; fields are {sorted(p)}")
-    p.update(overrides)
-    leg_no = p["payload_leg"]
-    if not (isinstance(leg_no, (int, float, np.number)) and not isinstance(leg_no, bool)
-            and leg_no == int(leg_no) and 1 <= leg_no <= model.n_legs):
-        raise ArgumentError(f"payload_leg must be a leg number 1..{model.n_legs} (legs count from 1, "
-                         f"as in the paper), got {leg_no!r}")
-    j = int(leg_no) - 1
-    leg = model.spec.legs[j]
-    m = float(p["payload_mass"])
-    alpha, beta, gamma = (np.array(p[k], dtype=float) for k in ("alpha", "beta", "gamma"))
-    alpha[j] += m * leg.la ** 2
-    beta[j] += m * leg.la * leg.lb
-    gamma[j] += m * leg.lb ** 2
-    return {"alpha": alpha, "beta": beta, "gamma": gamma,
-            **{k: np.array(p[k], dtype=float) for k in ("fv", "fc", "fs")},
-            "stribeck_velocity": float(p["stribeck_velocity"]),
-            "coulomb_smoothing_velocity": float(p["coulomb_smoothing_velocity"])}
-
-
-def plant_vector(model, truth=None, quantise=True, encoder_counts_per_rev=None):
-    """The generated plant's parameter vector (manifest layout ``plant``): the truth (default
-    :func:`plant_truth`) and the encoder step 2 pi / encoder_counts_per_rev (0 when
-    ``quantise`` is false or the resolution is 0). ``encoder_counts_per_rev`` replaces the model
-    file's ``[sensing]`` value."""
-    counts = (model.spec.sensing["encoder_counts_per_rev"] if encoder_counts_per_rev is None
-              else encoder_counts_per_rev)
-    if not (isinstance(counts, (int, float, np.integer, np.floating)) and counts >= 0
-            and float(counts).is_integer()):
-        raise ArgumentError(f"encoder_counts_per_rev must be a whole number >= 0, got {counts!r}")
-    truth = plant_truth(model) if truth is None else truth
-    if not isinstance(truth, Mapping):
-        raise ArgumentTypeError(f"truth must be a dict like pm2dof.plant_truth(model) (fields "
-                                f"{sorted(plant_truth(model))}), got {type(truth).__name__}; "
-                                f"plant_truth(model, alpha=..., fv=...) makes one")
-    try:
-        vec = model.layout("plant").pack(
-            **truth, encoder_step=(2 * math.pi / counts) if (quantise and counts > 0) else 0.0)
-    except (TypeError, ValueError) as exc:
-        raise ArgumentError(f"truth: {exc}") from None
-    return vec
-
-
-def theta_truth(model, truth=None):
-    """The truth in theta's coordinates (``model.param_names`` order): inertias with payload,
-    fv, fc, and fs when the model's friction has a Stribeck term.
-
-    The paper's model (eq. 2) has no coordinate for the Stribeck excess; it is left out.
-    Smooth-sign or Stribeck shapes of the controller's model differ from the plant's, so
-    only the coefficients are compared.
-
-    Parameters
-    ----------
-    model : Model
-        The robot.
-    truth : dict, optional
-        A plant truth (:func:`plant_truth`'s dict); default the model file's ``[plant]``.
-    """
-    t = plant_truth(model) if truth is None else truth
-    return np.array([t[base][i] for base, i in _param_index(model.param_names)])
-
-
-@functools.lru_cache(maxsize=16)
-def _param_index(names):
-    """(field, leg index) of each parameter name, e.g. 'gamma3' -> ('gamma', 2)."""
-    out = []
-    for name in names:
-        base = name.rstrip("0123456789")
-        out.append((base, int(name[len(base):]) - 1))
-    return tuple(out)
+__all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "rmse",
+           "check_trajectory", "rollout_inputs", "batch_inputs"]
 
 
 def rmse(xd, xe):
@@ -257,79 +162,6 @@ class SimResult:
         return float(np.max(np.abs(self.tau_a)))
 
 
-def _generated_measures(model, xd):
-    """:func:`pose_measures` by the generated ik and singularity_measures, sample by sample:
-    any mechanism (NaN where ik has no solution)."""
-    type1, type2 = np.full(len(xd), np.nan), np.full(len(xd), np.nan)
-    q, sing = np.empty(2 * model.n_legs), np.empty(2)
-    for k, x in enumerate(xd):
-        try:
-            model.ik(x, out=q)
-        except WorkspaceError:
-            continue
-        model.singularity_measures(q, out=sing)
-        type1[k], type2[k] = sing
-    return type1, type2, np.ones(len(xd))
-
-
-def pose_measures(model, xd):
-    """Both singularity measures and, for two legs, the assembly side of every pose.
-
-    For RR legs meeting at a point: vectorised NumPy geometry of ``ik`` (law of cosines per
-    leg, the model's elbows), used to check a whole trajectory at once; the generated ``ik``
-    and ``singularity_measures`` remain the reference and word the errors. Other mechanisms
-    (prismatic legs, a platform): the generated functions at every pose.
-
-    Parameters
-    ----------
-    xd : array_like (N, m)
-        Task poses (m = ``model.dof``), m (phi in rad).
-
-    Returns
-    -------
-    type1, type2, side : ndarray (N,)
-        min_i |sin(qb_i - qa_i)|, the type II measure (see ``Model.singularity_measures``), NaN
-        where some leg cannot reach; ``side`` = fk_branch * cross(B2 - B1, O - B1) for two legs
-        (> 0 in the model's assembly mode), +1 for more legs.
-    """
-    xd = np.asarray(xd, dtype=float).reshape(-1, model.dof)
-    if not is_rr_point(model.spec):
-        return _generated_measures(model, xd)
-    legs = model.spec.legs
-    type1 = np.full(len(xd), np.inf)
-    z = np.zeros(len(xd), dtype=complex)
-    elbows = []
-    with np.errstate(invalid="ignore", divide="ignore"):
-        for leg in legs:
-            d = xd - np.asarray(leg.base)
-            dist = np.hypot(d[:, 0], d[:, 1])
-            c = (leg.la ** 2 + dist ** 2 - leg.lb ** 2) / (2 * leg.la * dist)
-            c[~(np.abs(c) <= 1)] = np.nan                       # out of reach: NaN
-            s = leg.elbow * np.sqrt(1 - c * c)
-            dh = d / dist[:, None]
-            ua = c[:, None] * dh + s[:, None] * np.stack([-dh[:, 1], dh[:, 0]], axis=1)
-            ub = (d - leg.la * ua) / leg.lb
-            type1 = np.minimum(type1, np.abs(ua[:, 0] * ub[:, 1] - ua[:, 1] * ub[:, 0]))
-            z += (ub[:, 0] + 1j * ub[:, 1]) ** 2                # e^(2 i qb)
-            elbows.append(np.asarray(leg.base) + leg.la * ua)
-        type2 = np.sqrt(np.maximum(1 - np.abs(z) / len(legs), 0)) + 0 * type1  # NaN stays
-        side = np.ones(len(xd))
-        if len(legs) == 2:
-            dB, e = elbows[1] - elbows[0], xd - elbows[0]
-            side = model.spec.fk_branch * (dB[:, 0] * e[:, 1] - dB[:, 1] * e[:, 0])
-    return type1, type2, side
-
-
-def poses_clear(model, type1, type2, side=1.0):
-    """(N,) bool: the poses a desired motion may use, from their measures (``pose_measures``
-    or the generated ``singularity_measures``, each (N,)): both at or above their thresholds
-    (``[limits]``; a relative slack of 1e-12 for rounding) and, for two legs, in the model's
-    assembly mode (``side`` > 0). NaN (out of reach) is not clear."""
-    thr1, thr2 = model.singularity_threshold, model.parallel_singularity_threshold
-    return (np.asarray(type1) >= thr1 * (1 - 1e-12)) & \
-        (np.asarray(type2) >= thr2 * (1 - 1e-12)) & (np.asarray(side) > 0)
-
-
 def check_trajectory(model, trajectory):
     """Check every sample of a desired trajectory before a run.
 
@@ -363,9 +195,9 @@ def check_trajectory(model, trajectory):
                                 f"{trajectory.t[k]:.4f} s) is not finite: {v[k].tolist()}")
     xd = np.asarray(trajectory.xd, dtype=float)
     thr1, thr2 = model.singularity_threshold, model.parallel_singularity_threshold
-    type1, type2, side = pose_measures(model, xd)
+    type1, type2, side = model.pose_measures(xd)
     # the first offending sample is re-checked with the generated ik for its message
-    ok = poses_clear(model, type1, type2, side)
+    ok = model.poses_clear(type1, type2, side)
     for k in np.flatnonzero(~ok)[:1]:
         x = xd[k]
         where = f"trajectory sample {k} (t = {trajectory.t[k]:.4f} s) at xe = {x.tolist()}"

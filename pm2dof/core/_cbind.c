@@ -960,20 +960,36 @@ rollout(FunctionObject *f, Work *w, double *x, const double *u, const double *p,
     return rc;
 }
 
+/* The two rollout methods share one body: accumulate is the K = 1 case of accumulate_batch,
+ * with its own argument names, a single p (a Python float when np == 1) and its messages. */
+typedef struct {
+    const char *method, *x, *p, *y; /* the method's name and its argument names */
+    int batch;                      /* 1: K rows of X and P; 0: one x and p (K = 1) */
+} Rollouts;
+
+static const Rollouts ONE = {"accumulate", "x", "p", "y_seq", 0},
+                      BATCH = {"accumulate_batch", "X", "P", "Y_seq", 1};
+
 static PyObject *
-Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
-                    PyObject *kwnames)
+rollouts(FunctionObject *f, const Rollouts *m, PyObject *const *args, Py_ssize_t nargs,
+         PyObject *kwnames)
 {
-    FunctionObject *f = (FunctionObject *)self;
     if (!f->acc_ok) {
         PyErr_Format(PyExc_TypeError,
-                     "%U.accumulate requires a function with 3 inputs (x[nx], u[nu], "
+                     "%U.%s requires a function with 3 inputs (x[nx], u[nu], "
                      "p[np]) and 2 outputs (x_next[nx], y[ny]) where x_next has as many "
                      "elements as x; %U does not fit",
-                     f->name, f->signature);
+                     f->name, m->method, f->signature);
         return NULL;
     }
-    if (kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0) {
+    const int kw = kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0;
+    if (m->batch && (kw || nargs != 4)) {
+        PyErr_Format(PyExc_TypeError,
+                     "%U.accumulate_batch(X, u_seq, P, Y_seq) takes 4 positional arguments",
+                     f->name);
+        return NULL;
+    }
+    if (kw) {
         PyErr_Format(PyExc_TypeError, "%U.accumulate() takes no keyword arguments", f->name);
         return NULL;
     }
@@ -984,6 +1000,10 @@ Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
         return NULL;
     }
     const Py_ssize_t nx = f->nnz[0], nu = f->nnz[1], np_ = f->nnz[2], ny = f->nnz[4];
+    if (m->batch && (nu == 0 || np_ == 0)) {
+        PyErr_Format(PyExc_ValueError, "%U.accumulate_batch: needs nu > 0 and np > 0", f->name);
+        return NULL;
+    }
     if (nu == 0) {
         PyErr_Format(PyExc_ValueError,
                      "%U.accumulate: input 'u' has 0 elements; the number of steps is "
@@ -991,26 +1011,33 @@ Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
                      f->name);
         return NULL;
     }
-
     Work tmp;
     Work *w = work_acquire(f, &tmp);
     if (w == NULL)
         return NULL;
-    Py_ssize_t held = 0, n;
-    double *x, *y;
-    const double *u, *p;
-    ArgCtx cx = {"accumulate", "x", 0, 0}, cu = {"accumulate", "u_seq", 0, 1},
-           cp = {"accumulate", "p", 0, 2}, cy = {"accumulate", "y_seq", 1, 1};
-
-    /* x: writable state, nx elements */
-    if (bind_output(f, w, args[0], &held, &cx, nx, 0, &x, &n) < 0)
+    Py_ssize_t held = 0, n, n_p = np_, n_u, K = 1;
+    double *X, *Y;
+    const double *u, *P;
+    ArgCtx cx = {m->method, m->x, 0, 0}, cu = {m->method, "u_seq", 0, 1},
+           cp = {m->method, m->p, 0, 2}, cy = {m->method, m->y, 1, 1};
+    if (m->batch) { /* P first: its rows give K */
+        if (bind_input(f, w, args[2], &held, &cp, -1, 0, &P, &n_p) < 0)
+            goto fail;
+        if (n_p == 0 || n_p % np_ != 0) {
+            arg_error(f, PyExc_ValueError, &cp, "must have K * %zd float64 elements with K >= 1, "
+                      "got %zd", np_, n_p);
+            goto fail;
+        }
+        K = n_p / np_;
+    }
+    /* X: writable states, K * nx elements */
+    if (bind_output(f, w, args[0], &held, &cx, K * nx, 0, &X, &n) < 0)
         goto fail;
-    if (x == NULL) {
+    if (X == NULL) {
         arg_error(f, PyExc_TypeError, &cx, "must be a writable float64 buffer, got None");
         goto fail;
     }
-    /* u_seq: N * nu elements */
-    Py_ssize_t n_u;
+    /* u_seq: N * nu elements, shared by every rollout */
     if (bind_input(f, w, args[1], &held, &cu, -1, 0, &u, &n_u) < 0)
         goto fail;
     if (n_u == 0 || n_u % nu != 0) {
@@ -1020,31 +1047,37 @@ Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
     }
     const Py_ssize_t steps = n_u / nu;
     /* p: np elements (or a Python float if np == 1) */
-    if (bind_input(f, w, args[2], &held, &cp, np_, 0, &p, &n) < 0)
+    if (!m->batch && bind_input(f, w, args[2], &held, &cp, np_, 0, &P, &n) < 0)
         goto fail;
-    /* y_seq: N * ny elements, or None (outputs y not computed) */
-    if (bind_output(f, w, args[3], &held, &cy, steps * ny, 0, &y, &n) < 0)
+    /* Y_seq: K * N * ny elements, or None (outputs y not computed) */
+    if (bind_output(f, w, args[3], &held, &cy, K * steps * ny, 0, &Y, &n) < 0)
         goto fail;
     /* Finiteness last: binding may run an exporter's code that changes earlier buffers. */
-    if (check_finite(f, x, nx, &cx) < 0 || check_finite(f, u, n_u, &cu) < 0 ||
-        check_finite(f, p, np_, &cp) < 0)
+    if (check_finite(f, X, K * nx, &cx) < 0 || check_finite(f, u, n_u, &cu) < 0 ||
+        check_finite(f, P, n_p, &cp) < 0)
         goto fail;
-    if (overlaps(x, nx, u, n_u) || overlaps(x, nx, p, np_) ||
-        (y && (overlaps(y, steps * ny, x, nx) || overlaps(y, steps * ny, u, n_u) ||
-               overlaps(y, steps * ny, p, np_)))) {
+    if (overlaps(X, K * nx, u, n_u) || overlaps(X, K * nx, P, n_p) ||
+        (Y && (overlaps(Y, K * steps * ny, X, K * nx) || overlaps(Y, K * steps * ny, u, n_u) ||
+               overlaps(Y, K * steps * ny, P, n_p)))) {
         PyErr_Format(PyExc_ValueError,
-                     "%U.accumulate: x and y_seq must not share memory with each other or "
-                     "with u_seq / p",
-                     f->name);
+                     "%U.%s: %s and %s must not share memory with each other or with "
+                     "u_seq / %s", f->name, m->method, m->x, m->y, m->p);
         goto fail;
     }
-
     int rc = 0;
-    Py_ssize_t k = 0;
+    Py_ssize_t r = 0, k = 0;
     Py_BEGIN_ALLOW_THREADS
-    rc = rollout(f, w, x, u, p, y, steps, &k);
+    for (r = 0; r < K && rc == 0; r++)
+        rc = rollout(f, w, X + r * nx, u, P + r * np_, Y ? Y + r * steps * ny : NULL, steps, &k);
     Py_END_ALLOW_THREADS
     work_done(f, w, held);
+    if (rc != 0 && m->batch) {
+        PyErr_Format(EvalError,
+                     "%U: CasADi function returned error code %d at step %zd of rollout %zd "
+                     "(row %zd of X holds the state before that step)",
+                     f->name, rc, k, r - 1, r - 1);
+        return NULL;
+    }
     if (rc != 0) {
         PyErr_Format(EvalError,
                      "%U: CasADi function returned error code %d at step %zd of %zd "
@@ -1057,6 +1090,24 @@ Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
 fail:
     work_done(f, w, held);
     return NULL;
+}
+
+/* f.accumulate(x, u_seq, p, y_seq): one rollout, the K = 1 case of accumulate_batch. */
+static PyObject *
+Function_accumulate(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
+                    PyObject *kwnames)
+{
+    return rollouts((FunctionObject *)self, &ONE, args, nargs, kwnames);
+}
+
+/* f.accumulate_batch(X, u_seq, P, Y_seq): K rollouts of the same input sequence with their
+ * own initial states (rows of X) and parameters (rows of P), all in one call with the GIL
+ * released. Studies run thousands of rollouts: one Python call per batch, not per rollout. */
+static PyObject *
+Function_accumulate_batch(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
+                          PyObject *kwnames)
+{
+    return rollouts((FunctionObject *)self, &BATCH, args, nargs, kwnames);
 }
 
 /* ---- construction ---- */
@@ -1369,97 +1420,6 @@ PyDoc_STRVAR(time_calls_doc,
 "back-to-back evaluations in a C loop (clock_gettime(CLOCK_MONOTONIC), GIL\n"
 "released). Returns nanoseconds per evaluation for each batch.");
 
-/* accumulate_batch(X, u_seq, P, Y_seq): K rollouts of the same input sequence with their own
- * initial states (rows of X) and parameters (rows of P), all in one call with the GIL released.
- * Studies run thousands of rollouts: one Python call per batch, not per rollout. */
-static PyObject *
-Function_accumulate_batch(PyObject *self, PyObject *const *args, Py_ssize_t nargs,
-                          PyObject *kwnames)
-{
-    FunctionObject *f = (FunctionObject *)self;
-    if (!f->acc_ok) {
-        PyErr_Format(PyExc_TypeError,
-                     "%U.accumulate_batch requires a function with 3 inputs (x[nx], u[nu], "
-                     "p[np]) and 2 outputs (x_next[nx], y[ny]) where x_next has as many "
-                     "elements as x; %U does not fit",
-                     f->name, f->signature);
-        return NULL;
-    }
-    if ((kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0) || nargs != 4) {
-        PyErr_Format(PyExc_TypeError,
-                     "%U.accumulate_batch(X, u_seq, P, Y_seq) takes 4 positional arguments",
-                     f->name);
-        return NULL;
-    }
-    const Py_ssize_t nx = f->nnz[0], nu = f->nnz[1], np_ = f->nnz[2], ny = f->nnz[4];
-    if (nu == 0 || np_ == 0) {
-        PyErr_Format(PyExc_ValueError, "%U.accumulate_batch: needs nu > 0 and np > 0", f->name);
-        return NULL;
-    }
-    Work tmp;
-    Work *w = work_acquire(f, &tmp);
-    if (w == NULL)
-        return NULL;
-    Py_ssize_t held = 0, n_x, n_u, n_p, n_y;
-    double *X, *Y;
-    const double *u, *P;
-    ArgCtx cx = {"accumulate_batch", "X", 0, 0}, cu = {"accumulate_batch", "u_seq", 0, 1},
-           cp = {"accumulate_batch", "P", 0, 2}, cy = {"accumulate_batch", "Y_seq", 1, 1};
-    if (bind_input(f, w, args[2], &held, &cp, -1, 0, &P, &n_p) < 0)
-        goto fail;
-    if (n_p == 0 || n_p % np_ != 0) {
-        arg_error(f, PyExc_ValueError, &cp, "must have K * %zd float64 elements with K >= 1, "
-                  "got %zd", np_, n_p);
-        goto fail;
-    }
-    const Py_ssize_t K = n_p / np_;
-    if (bind_output(f, w, args[0], &held, &cx, K * nx, 0, &X, &n_x) < 0)
-        goto fail;
-    if (X == NULL) {
-        arg_error(f, PyExc_TypeError, &cx, "must be a writable float64 buffer, got None");
-        goto fail;
-    }
-    if (bind_input(f, w, args[1], &held, &cu, -1, 0, &u, &n_u) < 0)
-        goto fail;
-    if (n_u == 0 || n_u % nu != 0) {
-        arg_error(f, PyExc_ValueError, &cu,
-                  "must have N * %zd float64 elements with N >= 1, got %zd", nu, n_u);
-        goto fail;
-    }
-    const Py_ssize_t steps = n_u / nu;
-    if (bind_output(f, w, args[3], &held, &cy, K * steps * ny, 0, &Y, &n_y) < 0)
-        goto fail;
-    if (check_finite(f, X, K * nx, &cx) < 0 || check_finite(f, u, n_u, &cu) < 0 ||
-        check_finite(f, P, n_p, &cp) < 0)
-        goto fail;
-    if (overlaps(X, K * nx, u, n_u) || overlaps(X, K * nx, P, n_p) ||
-        (Y && (overlaps(Y, K * steps * ny, X, K * nx) || overlaps(Y, K * steps * ny, u, n_u) ||
-               overlaps(Y, K * steps * ny, P, n_p)))) {
-        PyErr_Format(PyExc_ValueError,
-                     "%U.accumulate_batch: X and Y_seq must not share memory with each other "
-                     "or with u_seq / P", f->name);
-        goto fail;
-    }
-    int rc = 0;
-    Py_ssize_t r = 0, k = 0;
-    Py_BEGIN_ALLOW_THREADS
-    for (r = 0; r < K && rc == 0; r++)
-        rc = rollout(f, w, X + r * nx, u, P + r * np_, Y ? Y + r * steps * ny : NULL, steps, &k);
-    Py_END_ALLOW_THREADS
-    work_done(f, w, held);
-    if (rc != 0) {
-        PyErr_Format(EvalError,
-                     "%U: CasADi function returned error code %d at step %zd of rollout %zd "
-                     "(row %zd of X holds the state before that step)",
-                     f->name, rc, k, r - 1, r - 1);
-        return NULL;
-    }
-    Py_RETURN_NONE;
-
-fail:
-    work_done(f, w, held);
-    return NULL;
-}
 
 
 /* ---- f.map(K, *inputs, *outputs) ---- */

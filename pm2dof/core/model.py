@@ -33,6 +33,7 @@ from .errors import (
 )
 from .layout import Layout
 from .model_file import inertia_problem, read_model_file
+from .poses import PoseMethods
 from .status import Status
 from .task import (
     ENERGY_FUNCTIONS,
@@ -157,7 +158,7 @@ def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
     return out
 
 
-class Model(DerivativeMethods):
+class Model(DerivativeMethods, PoseMethods):
     """A planar parallel manipulator with its compiled model functions. Immutable.
 
     Build with :func:`load_model`. Attributes: ``name``, ``spec`` (the validated model file),
@@ -181,6 +182,14 @@ class Model(DerivativeMethods):
 
     A Model holds one small scratch buffer, so one Model must not be called from two threads
     at once; load one Model per thread.
+
+    Parameters
+    ----------
+    spec : pm2dof.core.model_file.ModelSpec
+        The validated model file (``pm2dof.core.model_file.read_model_file``).
+    gen_dir : str or Path, optional
+        Folder of the generated C and its manifest; the model's default folder
+        (``pm2dof/generated/<name>/``) when None.
     """
 
     __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_fast", "_layouts",
@@ -271,6 +280,16 @@ class Model(DerivativeMethods):
         theta is physical by the model file's rule for ``[nominal]``: every leg's M_i (eq. 1)
         positive definite (so Me = W^T M W, eq. 12, is at every non-singular pose) and every
         friction coefficient >= 0.
+
+        Parameters
+        ----------
+        theta : array_like (p,), optional
+            Parameters in :attr:`param_names` order (Tables 1-2 units); the nominal ones when
+            None.
+        name : str
+            What the caller calls the vector, for the error message.
+        physical : bool
+            Also require physical parameters (RR legs only).
         """
         p = len(self.param_names)
         try:
@@ -294,12 +313,24 @@ class Model(DerivativeMethods):
         return th
 
     def function(self, short_name):
-        """The bound generated function ``<name>_<short_name>`` (for benchmarks and tools)."""
+        """The bound generated function ``<name>_<short_name>`` (for benchmarks and tools).
+
+        Parameters
+        ----------
+        short_name : str
+            The function's name without the model's prefix, e.g. "ik", "Me", "na_step".
+        """
         return self._f[short_name]
 
     def layout(self, name):
         """The :class:`~pm2dof.core.layout.Layout` ``name`` of the manifest (e.g. "plant",
-        "cl_state"), built once."""
+        "cl_state"), built once.
+
+        Parameters
+        ----------
+        name : str
+            A layout of the manifest's ``layouts``.
+        """
         return self._layouts[name]
 
     # --- argument handling ---------------------------------------------------------------
@@ -380,7 +411,14 @@ class Model(DerivativeMethods):
 
     def singularity_message(self, sing):
         """Which kind of singularity the measures ``sing`` = [type I, type II] hit, with the
-        measure, its threshold and the model-file key (for error messages)."""
+        measure, its threshold and the model-file key (for error messages).
+
+        Parameters
+        ----------
+        sing : array_like (2,)
+            The measures [type I, type II] of :meth:`singularity_measures`, one of them
+            below its threshold.
+        """
         kind = 0 if not sing[0] >= self._sing_thr[0] else 1
         what = ("min_i |sin(qb_i - qa_i)|", "sigma_min(S with unit rows) / sqrt(n/2)")[kind]
         key = ("singularity_threshold", "parallel_singularity_threshold")[kind]
@@ -396,6 +434,8 @@ class Model(DerivativeMethods):
         xe : array_like (m,)
             End-effector pose in :attr:`task_names` order: [x, y] m (a platform: [x, y, phi],
             phi in rad).
+        out : ndarray (2n,), optional
+            Written into and returned (no allocation); a new array when None.
 
         Returns
         -------
@@ -447,6 +487,8 @@ class Model(DerivativeMethods):
         ----------
         qa : array_like (n,)
             Active (encoder) angles, rad, absolute from +x.
+        out : ndarray (m,), optional
+            Written into and returned (no allocation); a new array when None.
 
         Returns
         -------
@@ -486,14 +528,32 @@ class Model(DerivativeMethods):
         return out
 
     def H(self, q, out=None):
-        """Loop-closure constraints H(q) (2n - m,), m (eq. 5; 2(n-1) for a point)."""
+        """Loop-closure constraints H(q) (2n - m,), m (eq. 5; 2(n-1) for a point).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        out : ndarray (2n - m,), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["H"](q, out)
         except _cbind.Refused:
             return self._eval("H", (2 * self.n_legs - self._m,), out, q)
 
     def A(self, q, out=None):
-        """Constraint Jacobian A = dH/dq (2n - m, 2n) (eq. 6)."""
+        """Constraint Jacobian A = dH/dq (2n - m, 2n) (eq. 6).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        out : ndarray (2n - m, 2n), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["A"](q, out)
         except _cbind.Refused:
@@ -501,7 +561,16 @@ class Model(DerivativeMethods):
             return self._eval("A", (2 * n - self._m, 2 * n), out, q)
 
     def singularity(self, q, out=None):
-        """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0."""
+        """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0.
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        out : ndarray (n,), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["singularity"](q, out)
         except _cbind.Refused:
@@ -516,6 +585,14 @@ class Model(DerivativeMethods):
         largest possible value sqrt(n/2), i.e. sqrt(1 - |sum_i exp(2 i qb_i)| / n); 0 when all
         distal links are parallel; compared with ``limits.parallel_singularity_threshold``.
         Never raises on a singular pose: it is the measure.
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        out : ndarray (2,), optional
+            Written into and returned (no allocation); a new array when None.
         """
         try:
             return self._fast["singularity_measures"](q, out)
@@ -523,21 +600,50 @@ class Model(DerivativeMethods):
             return self._eval("singularity_measures", (2,), out, q)
 
     def W(self, q, out=None):
-        """W (2n, m) with qd = W xed (eq. 7). Raises SingularityError near singular poses."""
+        """W (2n, m) with qd = W xed (eq. 7). Raises SingularityError near singular poses.
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        out : ndarray (2n, m), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["W"](q, out)
         except _cbind.Refused:
             return self._eval("W", (2 * self.n_legs, self._m), out, q)
 
     def S(self, q, out=None):
-        """S (n, m), the actuated rows of W: qd_a = S xed (eq. 8)."""
+        """S (n, m), the actuated rows of W: qd_a = S xed (eq. 8).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        out : ndarray (n, m), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["S"](q, out)
         except _cbind.Refused:
             return self._eval("S", (self.n_legs, self._m), out, q)
 
     def Wdot(self, q, xed, out=None):
-        """dW/dt (2n, m) along qd = W xed, with xed (m,) in m/s (rad/s for phi) (eq. 9)."""
+        """dW/dt (2n, m) along qd = W xed, with xed (m,) in m/s (rad/s for phi) (eq. 9).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        xed : array_like (m,)
+            Task-space velocity, m/s (rad/s for phi).
+        out : ndarray (2n, m), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["Wdot"](q, xed, out)
         except _cbind.Refused:
@@ -545,7 +651,18 @@ class Model(DerivativeMethods):
 
     # --- dynamics ------------------------------------------------------------------------
     def M(self, q, theta, out=None):
-        """Open-chain joint-space inertia M (2n, 2n), kg*m^2 (eq. 3)."""
+        """Open-chain joint-space inertia M (2n, 2n), kg*m^2 (eq. 3).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        theta : array_like (p,)
+            Parameters, in :attr:`param_names` order (Tables 1-2 units).
+        out : ndarray (2n, 2n), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["M"](q, theta, out)
         except _cbind.Refused:
@@ -553,7 +670,20 @@ class Model(DerivativeMethods):
             return self._eval("M", (2 * n, 2 * n), out, q, theta)
 
     def C(self, q, qd, theta, out=None):
-        """Open-chain Coriolis/centrifugal matrix C (2n, 2n) at joint velocity qd (eq. 3)."""
+        """Open-chain Coriolis/centrifugal matrix C (2n, 2n) at joint velocity qd (eq. 3).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        qd : array_like (2n,)
+            Joint velocities [qad, qbd], rad/s.
+        theta : array_like (p,)
+            Parameters, in :attr:`param_names` order (Tables 1-2 units).
+        out : ndarray (2n, 2n), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["C"](q, qd, theta, out)
         except _cbind.Refused:
@@ -562,21 +692,58 @@ class Model(DerivativeMethods):
 
     def Me(self, q, theta, out=None):
         """Task-space inertia Me = W^T M W (m, m), kg (kg m, kg m^2 in phi's row and column)
-        (eq. 12)."""
+        (eq. 12).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        theta : array_like (p,)
+            Parameters, in :attr:`param_names` order (Tables 1-2 units).
+        out : ndarray (m, m), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["Me"](q, theta, out)
         except _cbind.Refused:
             return self._eval("Me", (self._m, self._m), out, q, theta)
 
     def Ce(self, q, xed, theta, out=None):
-        """Task-space Coriolis matrix Ce = W^T (M Wdot + C W) (m, m), kg/s (eq. 12)."""
+        """Task-space Coriolis matrix Ce = W^T (M Wdot + C W) (m, m), kg/s (eq. 12).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        xed : array_like (m,)
+            Task-space velocity, m/s (rad/s for phi).
+        theta : array_like (p,)
+            Parameters, in :attr:`param_names` order (Tables 1-2 units).
+        out : ndarray (m, m), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["Ce"](q, xed, theta, out)
         except _cbind.Refused:
             return self._eval("Ce", (self._m, self._m), out, q, xed, theta)
 
     def StF(self, q, xed, theta, out=None):
-        """Friction in task space S^T f_a(S xed) (m,), N (N m for phi) (eqs. 2, 10)."""
+        """Friction in task space S^T f_a(S xed) (m,), N (N m for phi) (eqs. 2, 10).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        xed : array_like (m,)
+            Task-space velocity, m/s (rad/s for phi).
+        theta : array_like (p,)
+            Parameters, in :attr:`param_names` order (Tables 1-2 units).
+        out : ndarray (m,), optional
+            Written into and returned (no allocation); a new array when None.
+        """
         try:
             return self._fast["StF"](q, xed, theta, out)
         except _cbind.Refused:
@@ -587,6 +754,20 @@ class Model(DerivativeMethods):
 
         Columns follow :attr:`param_names`; friction uses sign(0) = 0 (an actuated joint at
         rest contributes no Coulomb column).
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        xed : array_like (m,)
+            Task-space velocity, m/s (rad/s for phi).
+        xrd : array_like (m,)
+            Reference velocity xr_dot, m/s (rad/s for phi).
+        xrdd : array_like (m,)
+            Reference acceleration xr_ddot, m/s^2 (rad/s^2 for phi).
+        out : ndarray (m, p), optional
+            Written into and returned (no allocation); a new array when None.
         """
         try:
             return self._fast["Y"](q, xed, xrd, xrdd, out)
@@ -601,6 +782,20 @@ class Model(DerivativeMethods):
         ``[limits]``, ``preload`` (n,) N*m and ``preload_sign`` (n,) +-1 to ``[control]``. No
         clipping is applied here (the controller steps clip). Raises SingularityError at a pose
         too close to a singularity of either kind.
+
+        Parameters
+        ----------
+        q : array_like (2n,)
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
+            returns them).
+        u : array_like (m,)
+            Task-space force, N (N m for phi).
+        tau_max : array_like (n,), optional
+            Actuator limits, N*m; ``[limits] tau_max`` when None.
+        preload : array_like (n,), optional
+            Preload magnitudes, N*m; ``[control] preload`` when None.
+        preload_sign : array_like (n,), optional
+            Preload directions, +-1 per actuator; ``[control] preload_sign`` when None.
 
         Returns
         -------
@@ -635,6 +830,19 @@ class Model(DerivativeMethods):
         taken at one). The simulated plant of :func:`pm2dof.simulate` has its own friction, the Coulomb
         term smoothed over ``[plant] coulomb_smoothing_velocity`` and zero at rest; neither
         models stiction.
+
+        Parameters
+        ----------
+        xe : array_like (m,)
+            End-effector pose, m (rad for phi), in :attr:`task_names` order.
+        xed : array_like (m,)
+            Task-space velocity, m/s (rad/s for phi).
+        tau_a : array_like (n,)
+            Actuator torques, N*m.
+        theta : array_like (p,)
+            Parameters, in :attr:`param_names` order (Tables 1-2 units).
+        out : ndarray (m,), optional
+            Written into and returned (no allocation); a new array when None.
         """
         try:
             return self._fast["forward_dynamics"](xe, xed, tau_a, theta, out)

@@ -12,7 +12,8 @@ significant digits: read back they are the same doubles.
 import numpy as np
 
 from ..control.controllers import APDController, CTCController, NAController
-from ..control.simulate import plant_vector, simulate
+from ..control.plant import plant_vector
+from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
 
 __all__ = ["REFERENCE_LAWS", "reference_move", "reference_data", "reference_header"]

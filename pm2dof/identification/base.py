@@ -85,7 +85,13 @@ class BaseParameters:
                         doc="(r,) bool: which base parameters are inertial (else friction)")
 
     def fold(self, theta):
-        """Base parameters pi (r,) of a full theta (p,): theta[I] + beta @ theta[D]."""
+        """Base parameters pi (r,) of a full theta (p,): theta[I] + beta @ theta[D].
+
+        Parameters
+        ----------
+        theta : array_like (p,)
+            Full parameters, in ``names`` order (Tables 1-2 units).
+        """
         th = np.asarray(theta, dtype=float)
         if th.shape != (len(self.names),):
             raise ArgumentError(f"theta must have shape ({len(self.names)},), got {th.shape}")
@@ -93,7 +99,15 @@ class BaseParameters:
 
     def unfold(self, base, theta):
         """A full theta (p,) whose base parameters are ``base`` (r,) and whose dependent
-        entries are those of ``theta`` (e.g. Tables 1-2): fold(unfold(base, theta)) = base."""
+        entries are those of ``theta`` (e.g. Tables 1-2): fold(unfold(base, theta)) = base.
+
+        Parameters
+        ----------
+        base : array_like (r,)
+            Base parameters, in ``independent_names`` order.
+        theta : array_like (p,)
+            Full parameters giving the dependent entries, in ``names`` order.
+        """
         out = np.array(theta, dtype=float)
         out[list(self.independent)] = base - self.beta @ out[list(self.dependent)]
         return out
@@ -201,7 +215,12 @@ def identifiability(model, samples=400, seed=0, radius=0.04, rtol=1e-9):
 
 
 def base_parameters(model):
-    """The model's :class:`BaseParameters` (:func:`identifiability` with its defaults)."""
+    """The model's :class:`BaseParameters` (:func:`identifiability` with its defaults).
+
+    Parameters
+    ----------
+    model : Model
+    """
     return identifiability(model).base
 
 

@@ -314,6 +314,8 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         Samples per period of the objective and of the constraints. The constraints are
         imposed with the limits times ``safety`` (0.98), so that they hold between the
         samples too (:func:`check_excitation` checks every 1 ms).
+    safety : float
+        The fraction of every limit imposed at the samples (default 0.98), in (0, 1].
     seed : int
         Random start (:func:`random_start`; IPOPT finds a local optimum, log det is not
         concave here).

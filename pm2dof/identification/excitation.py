@@ -16,7 +16,8 @@ import dataclasses
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.simulate import plant_vector, simulate
+from ..control.plant import plant_vector
+from ..control.simulate import simulate
 from ..control.trajectory import require_trajectory
 from ..core.errors import ArgumentError
 from .log import IdentLog

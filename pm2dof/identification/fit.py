@@ -486,7 +486,10 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
     base : BaseParameters, optional
         :func:`pm2dof.identification.base.base_parameters` (computed if not given).
     cutoff_hz : float, optional
-        Low-pass cutoff (default :func:`choose_cutoff`: ``factor`` x the excitation band).
+        Low-pass cutoff, Hz (default :func:`choose_cutoff`: ``factor`` x the excitation band).
+    factor : float
+        The cutoff over the excitation's highest frequency when ``cutoff_hz`` is None
+        (default ``CUTOFF_FACTOR``, 10).
     decimate : int, optional
         Keep every r-th filtered sample (default: 1 / (r T) >= 4 cutoff).
     min_joint_speed : float

@@ -323,6 +323,13 @@ def write_log(path, log):
     Numbers are written as the shortest decimal that reads back as the same float64 (Python's
     repr), so reading the file gives the same values bit for bit. A model file recorded in the
     metadata (``model``) is written relative to the new file's folder (:mod:`.model_ref`).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The file to write: ``.csv`` or ``.parquet``.
+    log : IdentLog
+        The samples and their metadata.
     """
     path = Path(path)
     cols = log.columns()

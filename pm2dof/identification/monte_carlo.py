@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from ..control.simulate import plant_truth, theta_truth
+from ..control.plant import plant_truth, theta_truth
 from ..core.errors import ArgumentError
 from ..infra.progress import bar
 from .base import base_parameters, inertial_mask, region_center

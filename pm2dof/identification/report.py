@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..control.simulate import theta_truth
+from ..control.plant import theta_truth
 from ..core.errors import ArgumentError
 from .fit import MODEL_ERROR_CHOICES, identify_log
 from .log import LogError, log_folder, read_log

@@ -1,11 +1,10 @@
 # Is a path inside the workspace and clear of both singularities? Errors name the arc length and point.
 """``check_path(model, path)``: the planner's first question, asked of the generated C (ik and
-the singularity measures) and answered by the control layer's test of a desired motion
-(:func:`pm2dof.control.simulate.poses_clear`: the thresholds with the same slack), so that a
-path the planner accepts is one ``simulate`` accepts."""
+the singularity measures) and answered by the model's test of a desired motion
+(``Model.poses_clear``, which ``simulate``'s check uses: the thresholds with the same slack),
+so that a path the planner accepts is one ``simulate`` accepts."""
 import numpy as np
 
-from ..control.simulate import poses_clear
 from ..core.errors import ArgumentTypeError, PlanError, SingularityError, WorkspaceError
 from ..core.model import require_model
 from .paths import TaskPath
@@ -58,7 +57,7 @@ def raise_at(model, s, p, sing=None):
 def first_bad(model, sing):
     """Index of the first row of ``sing`` (k, 2) (the generated measures) that is NaN or below
     a threshold, or None."""
-    ok = poses_clear(model, sing[:, 0], sing[:, 1])
+    ok = model.poses_clear(sing[:, 0], sing[:, 1])
     return None if ok.all() else int(np.argmin(ok))
 
 

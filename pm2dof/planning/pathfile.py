@@ -158,6 +158,13 @@ def model_move_path(model, name):
     A line move (``start``, ``end``) is :meth:`TaskPath.line`; a path move (``path = "..."``: a
     shipped path's name or a path file relative to the model file) is that file's path, with
     the move's kinematic limits where it gives them, else the file's ``[kinematic]``.
+
+    Parameters
+    ----------
+    model : Model or pm2dof.core.model_file.ModelSpec
+        The model whose file holds the move (its ``spec`` is read).
+    name : str
+        The move's name, a key of the model file's ``[trajectories]``.
     """
     spec = getattr(model, "spec", model)
     moves = spec.trajectories

@@ -160,7 +160,16 @@ class TaskPath:
         """``pieces``: one or more line/arc/spline pieces in order (as the constructors make
         them); ``stop_junctions``: indices j of the junctions (arc length ``breakpoints[j]``)
         where the robot must rest. PlanError for no pieces or a junction index out of range,
-        ArgumentTypeError for anything else than pieces."""
+        ArgumentTypeError for anything else than pieces.
+
+        Parameters
+        ----------
+        pieces : sequence of pieces
+            The line, arc and spline pieces in order, each starting where the one before
+            ends.
+        stop_junctions : sequence of int, optional
+            Indices j of the junctions (between piece j and j + 1) where the robot rests.
+        """
         try:
             pieces = tuple(pieces)
         except TypeError:
@@ -261,7 +270,16 @@ class TaskPath:
 
         With an orientation, each is (x, y, phi) (m, rad) and ``orientation_length`` l (m) is
         required: phi turns linearly along the segment; equal positions give a pure rotation
-        about (x, y) of length l |phi1 - phi0| (module docstring)."""
+        about (x, y) of length l |phi1 - phi0| (module docstring).
+
+        Parameters
+        ----------
+        p0, p1 : array_like (2,) or (3,)
+            Start and end, (x, y) m or (x, y, phi) (m, rad).
+        orientation_length : float, optional
+            l, m: the length a turn of phi counts for in the arc length (s = l |dphi| for a
+            pure rotation); required with an orientation, else unused.
+        """
         a, b = _point("p0", p0, (2, 3)), _point("p1", p1, (2, 3))
         if a.size != b.size:
             raise PlanError(f"line: p0 {a.tolist()} and p1 {b.tolist()} must both be (x, y) or "
@@ -279,7 +297,23 @@ class TaskPath:
         ``angle1`` (rad, from +x; counter-clockwise if angle1 > angle0, else clockwise).
 
         ``phi`` = (phi0, phi1), rad: a platform's orientation, linear along the arc (then
-        ``orientation_length`` is required, see :meth:`line`)."""
+        ``orientation_length`` is required, see :meth:`line`).
+
+        Parameters
+        ----------
+        center : array_like (2,)
+            The arc's centre, m.
+        radius : float
+            m, > 0.
+        angle0, angle1 : float
+            Start and end angles, rad, from +x.
+        phi : array_like (2,), optional
+            (phi0, phi1), rad: the orientation at the start and the end; None for an (x, y)
+            path.
+        orientation_length : float, optional
+            l, m: the length a turn of phi counts for in the arc length (s = l |dphi| for a
+            pure rotation); required with an orientation, else unused.
+        """
         c = _point("center", center)
         r = _number("radius (m)", radius, positive=True)
         a0, a1 = _number("angle0 (rad)", angle0), _number("angle1 (rad)", angle1)
@@ -302,6 +336,16 @@ class TaskPath:
         Raises PlanError for repeated points, a blend that does not fit between two corners
         (names the segment and the largest radius that fits) or a corner that turns back
         (180 degrees: no arc is tangent to both; stop there with blend_radius 0).
+
+        Parameters
+        ----------
+        points : array_like (m, 2) or (m, 3)
+            The corners, (x, y) m or (x, y, phi) (m, rad), m >= 2.
+        blend_radius : float
+            Radius of the corner arcs, m, >= 0 (0: sharp corners, stops).
+        orientation_length : float, optional
+            l, m: the length a turn of phi counts for in the arc length (s = l |dphi| for a
+            pure rotation); required with an orientation, else unused.
         """
         P = np.asarray(points, dtype=float) if not isinstance(points, str) else np.array([])
         if P.ndim == 2 and P.shape[1] == 3 and len(P) >= 2:
@@ -358,7 +402,14 @@ class TaskPath:
         """A C2 cubic spline through ``waypoints`` (m, 2), m >= 2 (natural: no curvature at
         the ends; two points give the line). See :mod:`pm2dof.planning.spline`. Planar only:
         waypoints with an orientation (x, y, phi) are refused (PlanError; use
-        :meth:`polyline`)."""
+        :meth:`polyline`).
+
+        Parameters
+        ----------
+        waypoints : array_like (m, 2)
+            The points the spline passes through, in order, m; m >= 2, consecutive points
+            distinct.
+        """
         P = np.asarray(waypoints, dtype=float) if not isinstance(waypoints, str) else np.array([])
         if P.ndim == 2 and P.shape[1:] == (3,):
             raise PlanError("spline: a C2 spline is planar (x, y); waypoints with an orientation "
@@ -378,7 +429,13 @@ class TaskPath:
     @classmethod
     def concat(cls, *paths):
         """The paths one after the other. Each must start where the previous ends (within
-        1e-9 m); where the tangents differ the joined path has a stop."""
+        1e-9 m); where the tangents differ the joined path has a stop.
+
+        Parameters
+        ----------
+        *paths : TaskPath
+            One or more paths, all (x, y) or all (x, y, phi).
+        """
         if not paths or not all(isinstance(p, TaskPath) for p in paths):
             raise PlanError(f"concat takes one or more TaskPath, got "
                             f"{[type(p).__name__ for p in paths]}")

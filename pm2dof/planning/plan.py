@@ -34,7 +34,20 @@ def grid_times(s, sdot):
 @dataclass(frozen=True, eq=False)
 class PathProfile:
     """The timing of a path: ``s`` (K,) m, ``sdot`` (K,) m/s, ``sddot`` (K,) m/s^2 (interval k's
-    constant value; the last repeats the one before), ``t`` (K,) s. ``duration`` = t[-1]."""
+    constant value; the last repeats the one before), ``t`` (K,) s. ``duration`` = t[-1].
+
+    Attributes
+    ----------
+    s : ndarray (K,)
+        Arc length at the grid points, m, increasing from 0 to the path's length.
+    sdot : ndarray (K,)
+        Path speed at the grid points, m/s, >= 0.
+    sddot : ndarray (K,)
+        Path acceleration on interval k (constant there), m/s^2; the last repeats the one
+        before.
+    t : ndarray (K,)
+        Time at the grid points, s, from 0.
+    """
 
     s: np.ndarray = field(repr=False)
     sdot: np.ndarray = field(repr=False)
@@ -47,7 +60,13 @@ class PathProfile:
         return float(self.t[-1])
 
     def evaluate(self, t):
-        """s (m), s_d (m/s), s_dd (m/s^2) at times ``t`` (array), at rest outside [0, duration]."""
+        """s (m), s_d (m/s), s_dd (m/s^2) at times ``t`` (array), at rest outside [0, duration].
+
+        Parameters
+        ----------
+        t : array_like
+            Times, s, any shape; the three results have its shape.
+        """
         t = np.asarray(t, dtype=float)
         k = np.clip(np.searchsorted(self.t, t, side="right") - 1, 0, len(self.t) - 2)
         tau = np.clip(t - self.t[k], 0.0, self.t[k + 1] - self.t[k])

@@ -125,7 +125,7 @@ def point_stages(problem, s, evaluated, check=True):
     the arc lengths ``s`` (K,) with their ``path.evaluate(s)`` (p, dp, ddp): the facets and
     coefficients of each point alone (rho, delta and x_cap unset: zero), with the outputs of
     ``path_coefficients`` (dict). With ``check``, raises WorkspaceError or SingularityError at
-    the first point out of reach or too close to a singularity (the thresholds of :func:`pm2dof.control.simulate.poses_clear`);
+    the first point out of reach or too close to a singularity (the thresholds of ``Model.poses_clear``);
     without, such rows are NaN."""
     model, split = problem.model, problem.split
     if split not in SPLITS:

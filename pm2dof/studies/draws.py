@@ -10,7 +10,7 @@ import functools
 
 import numpy as np
 
-from ..control.simulate import plant_truth
+from ..control.plant import plant_truth
 from ..core.model_file import INERTIAL
 
 __all__ = ["sample_draw", "draw_columns", "plant_of"]

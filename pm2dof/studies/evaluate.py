@@ -14,13 +14,8 @@ Runs on the workers; imports no Dask or pyarrow (the client turns columns into P
 import numpy as np
 
 from ..control.controllers import APDController, CTCController, NAController
-from ..control.simulate import (
-    batch_inputs,
-    check_trajectory,
-    completed_samples,
-    plant_vector,
-    theta_truth,
-)
+from ..control.plant import plant_vector, theta_truth
+from ..control.simulate import batch_inputs, check_trajectory, completed_samples
 from ..control.trajectory import line, model_move
 from ..core.model import load_model
 from ..core.status import Status

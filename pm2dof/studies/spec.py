@@ -343,6 +343,20 @@ def read_study(path, quick=False, *, model=None, generated=None, check=True):
     reason, in one pass: with ``check``, also those that need the model (moves reachable and
     clear of singularities, gains accepted by the controllers:
     :func:`pm2dof.studies.evaluate.model_problems`) once the model loads.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The study file, or a shipped study's name (``pm2dof study list``).
+    quick : bool
+        Apply the file's ``[quick]`` table (fewer runs, a coarser grid).
+    model : str or pathlib.Path, optional
+        A model file or shipped model's name replacing ``study.model`` (``--model``).
+    generated : str or pathlib.Path, optional
+        The folder of the model's generated C, replacing ``study.generated``
+        (``--generated``).
+    check : bool
+        Also check what needs the model (moves, gains) once it loads.
     """
     path = resolve_study(path)
     pr = Problems(path, StudyFileError)

@@ -30,7 +30,8 @@ from pm2dof import (
     paper_move,
     simulate,
 )
-from pm2dof.control.simulate import plant_vector, rollout_inputs
+from pm2dof.control.plant import plant_vector
+from pm2dof.control.simulate import rollout_inputs
 
 M = pm2dof.load_model()
 N = M.n_legs

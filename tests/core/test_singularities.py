@@ -18,7 +18,6 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.control.simulate import pose_measures
 from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.reference import model as ref
 
@@ -37,7 +36,7 @@ def _reachable_points(m, count, seed, spread=0.3):
     rng = np.random.default_rng(seed)
     c = np.mean(m.bases, axis=0)
     X = c + rng.uniform(-spread, spread, (40 * count, 2))
-    t1, _, _ = pose_measures(m, X)
+    t1, _, _ = m.pose_measures(X)
     X = X[np.isfinite(t1) & (t1 > 1e-6)]
     assert len(X) >= count, f"{m.name}: only {len(X)} reachable points"
     return X[:count]
@@ -110,7 +109,7 @@ def _crossing(m, seed=3):
     for _ in range(20000):
         a, b = _reachable_points(m, 2, seed=int(rng.integers(1 << 30)), spread=0.25)
         seg = a + s * (b - a)
-        t1, _, side = pose_measures(m, seg)
+        t1, _, side = m.pose_measures(seg)
         if np.all(t1 > 0.3) and side[0] > 0 and side[-1] < 0 and np.hypot(*(b - a)) > 0.05:
             return a, b
     raise AssertionError("no crossing segment found")
@@ -121,7 +120,7 @@ def _on_curve(m, a, b):
     lo, hi = 0.0, 1.0
     for _ in range(80):
         mid = 0.5 * (lo + hi)
-        _, _, side = pose_measures(m, (a + mid * (b - a))[None, :])
+        _, _, side = m.pose_measures((a + mid * (b - a))[None, :])
         lo, hi = (mid, hi) if side[0] > 0 else (lo, mid)
     return a + lo * (b - a), (b - a) / np.hypot(*(b - a))
 
@@ -162,7 +161,7 @@ def test_redundant_models_have_no_parallel_singularity_in_reach(model):
     if model.n_legs == 2:
         pytest.skip("the five-bar has a singular curve inside its workspace")
     X = _reachable_points(model, 3000, seed=2, spread=0.4)
-    _, t2, _ = pose_measures(model, X)
+    _, t2, _ = model.pose_measures(X)
     assert np.nanmin(t2) > 3 * model.parallel_singularity_threshold, np.nanmin(t2)
 
 
@@ -175,7 +174,7 @@ def test_crossing_the_curve_is_refused_before_the_run(fivebar):
     with pytest.raises(pm2dof.SingularityError, match="type II"):
         pm2dof.simulate(m, pm2dof.APDController(m), traj)
     # the first refused sample is the first within the threshold of the curve
-    _, t2, side = pose_measures(m, traj.xd)
+    _, t2, side = m.pose_measures(traj.xd)
     k = int(np.flatnonzero(t2 < m.parallel_singularity_threshold)[0])
     assert np.all(side[:k + 1] > 0), "the check passed a sample of the other mode"
     msg = ""

@@ -19,7 +19,7 @@ import pytest
 
 import pm2dof
 from pm2dof import cli
-from pm2dof.control.simulate import plant_truth
+from pm2dof.control.plant import plant_truth
 from pm2dof.identification.excitation import excite
 from pm2dof.identification.fit import choose_cutoff
 from pm2dof.identification.log import log_poses, write_log

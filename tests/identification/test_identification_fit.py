@@ -23,7 +23,8 @@ from scipy import optimize, signal
 
 import pm2dof
 from pm2dof import cli
-from pm2dof.control.simulate import plant_truth, plant_vector, simulate, theta_truth
+from pm2dof.control.plant import plant_truth, plant_vector, theta_truth
+from pm2dof.control.simulate import simulate
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.consistent import consistent_theta, physical_constraints
 from pm2dof.identification.excitation import excite, measured_angles

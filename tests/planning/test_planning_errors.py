@@ -247,16 +247,16 @@ def test_plan_smooth_checks_its_options_before_ipopt(m, kw, match, capfd):
 
 
 def test_check_path_and_check_trajectory_are_one_check(m):
-    """check_path uses the control layer's test (pm2dof.control.simulate.poses_clear, with its
+    """check_path uses the model's test (Model.poses_clear, check_trajectory's too, with its
     1e-12 relative slack for rounding), so a path ends where simulate's check_trajectory would
     end it: a line ending where the type I measure is 5e-13 below its threshold (within the
     slack) is accepted by both, one ending 1e-9 below by both refused."""
-    from pm2dof.control.simulate import check_trajectory, pose_measures
+    from pm2dof.control.simulate import check_trajectory
     thr = m.singularity_threshold
     a, b = np.array([0.25, 0.25]), np.array([0.02, 0.25])     # towards base A1: leg 1 folds
 
     def measure(lam):
-        return float(pose_measures(m, [a + lam * (b - a)])[0][0])
+        return float(m.pose_measures([a + lam * (b - a)])[0][0])
     lo, hi = 0.0, 1.0
     for _ in range(200):                                      # the crossing of the threshold
         mid = 0.5 * (lo + hi)

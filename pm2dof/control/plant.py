@@ -1,0 +1,111 @@
+# The simulated robot's truth: the model file's [plant] with its payload, as the plant's vector.
+"""The plant of the closed-loop rollouts: what the simulated robot really is.
+
+The truth (:func:`plant_truth`) is the model file's ``[plant]`` with the payload booked into
+its leg's inertias; :func:`plant_vector` packs it with the encoder's step for the generated
+plant (manifest layout ``plant``); :func:`theta_truth` gives it in theta's coordinates, to
+compare with an estimate. :mod:`.simulate` runs the controllers against it.
+"""
+import functools
+import math
+from collections.abc import Mapping
+
+import numpy as np
+
+from ..core.errors import ArgumentError, ArgumentTypeError
+from ..core.task import require_rr_point
+
+__all__ = ["plant_truth", "plant_vector", "theta_truth"]
+
+
+def plant_truth(model, **overrides):
+    """The plant's truth as a dict: the model file's ``[plant]`` with the payload booked in.
+
+    The payload m at the tip of leg j's distal link (j = ``payload_leg``, counted from 1 as in
+    the paper) adds m la^2, m la lb, m lb^2 to alpha_j, beta_j, gamma_j (its kinetic energy
+    1/2 m |tip velocity|^2 in the leg's angles).
+
+    Parameters
+    ----------
+    model : Model
+        The robot; its model file's ``[plant]`` is the truth.
+    **overrides
+        Replace fields of ``[plant]`` (e.g. ``payload_mass=0``); a ``payload_leg`` outside
+        1..n raises ValueError. The booking is that of an RR leg's tip: other
+        mechanisms are refused (UnsupportedMechanismError).
+    """
+    require_rr_point(model, "plant_truth's payload booking (m la^2, m la lb, m lb^2 on an RR "
+                            "leg's alpha, beta, gamma)")
+    p = dict(model.spec.plant)
+    unknown = sorted(set(overrides) - set(p))
+    if unknown:
+        raise ArgumentTypeError(f"unknown plant field(s) {unknown}; fields are {sorted(p)}")
+    p.update(overrides)
+    leg_no = p["payload_leg"]
+    if not (isinstance(leg_no, (int, float, np.number)) and not isinstance(leg_no, bool)
+            and leg_no == int(leg_no) and 1 <= leg_no <= model.n_legs):
+        raise ArgumentError(f"payload_leg must be a leg number 1..{model.n_legs} (legs count from 1, "
+                         f"as in the paper), got {leg_no!r}")
+    j = int(leg_no) - 1
+    leg = model.spec.legs[j]
+    m = float(p["payload_mass"])
+    alpha, beta, gamma = (np.array(p[k], dtype=float) for k in ("alpha", "beta", "gamma"))
+    alpha[j] += m * leg.la ** 2
+    beta[j] += m * leg.la * leg.lb
+    gamma[j] += m * leg.lb ** 2
+    return {"alpha": alpha, "beta": beta, "gamma": gamma,
+            **{k: np.array(p[k], dtype=float) for k in ("fv", "fc", "fs")},
+            "stribeck_velocity": float(p["stribeck_velocity"]),
+            "coulomb_smoothing_velocity": float(p["coulomb_smoothing_velocity"])}
+
+
+def plant_vector(model, truth=None, quantise=True, encoder_counts_per_rev=None):
+    """The generated plant's parameter vector (manifest layout ``plant``): the truth (default
+    :func:`plant_truth`) and the encoder step 2 pi / encoder_counts_per_rev (0 when
+    ``quantise`` is false or the resolution is 0). ``encoder_counts_per_rev`` replaces the model
+    file's ``[sensing]`` value."""
+    counts = (model.spec.sensing["encoder_counts_per_rev"] if encoder_counts_per_rev is None
+              else encoder_counts_per_rev)
+    if not (isinstance(counts, (int, float, np.integer, np.floating)) and counts >= 0
+            and float(counts).is_integer()):
+        raise ArgumentError(f"encoder_counts_per_rev must be a whole number >= 0, got {counts!r}")
+    truth = plant_truth(model) if truth is None else truth
+    if not isinstance(truth, Mapping):
+        raise ArgumentTypeError(f"truth must be a dict like pm2dof.plant_truth(model) (fields "
+                                f"{sorted(plant_truth(model))}), got {type(truth).__name__}; "
+                                f"plant_truth(model, alpha=..., fv=...) makes one")
+    try:
+        vec = model.layout("plant").pack(
+            **truth, encoder_step=(2 * math.pi / counts) if (quantise and counts > 0) else 0.0)
+    except (TypeError, ValueError) as exc:
+        raise ArgumentError(f"truth: {exc}") from None
+    return vec
+
+
+def theta_truth(model, truth=None):
+    """The truth in theta's coordinates (``model.param_names`` order): inertias with payload,
+    fv, fc, and fs when the model's friction has a Stribeck term.
+
+    The paper's model (eq. 2) has no coordinate for the Stribeck excess; it is left out.
+    Smooth-sign or Stribeck shapes of the controller's model differ from the plant's, so
+    only the coefficients are compared.
+
+    Parameters
+    ----------
+    model : Model
+        The robot.
+    truth : dict, optional
+        A plant truth (:func:`plant_truth`'s dict); default the model file's ``[plant]``.
+    """
+    t = plant_truth(model) if truth is None else truth
+    return np.array([t[base][i] for base, i in _param_index(model.param_names)])
+
+
+@functools.lru_cache(maxsize=16)
+def _param_index(names):
+    """(field, leg index) of each parameter name, e.g. 'gamma3' -> ('gamma', 2)."""
+    out = []
+    for name in names:
+        base = name.rstrip("0123456789")
+        out.append((base, int(name[len(base):]) - 1))
+    return tuple(out)
