@@ -532,11 +532,9 @@ def test_line_out_of_reach_is_refused_naming_the_leg(start, end, k):
 def test_sample_jumping_out_of_reach_is_refused_naming_the_leg():
     """A sampled trajectory whose second sample is far out of reach (no singular sample in
     between to be caught first)."""
-    ref_traj = paper_move("low")
     far = (1.5, 0.29)
     traj = Trajectory(t=[0.0, 0.002], xd=[START, far], xd_dot=np.zeros((2, 2)),
-                      xd_ddot=np.zeros((2, 2)), period=0.002, start=START, end=far,
-                      profile=ref_traj.profile)
+                      xd_ddot=np.zeros((2, 2)), period=0.002)
     with pytest.raises(WorkspaceError) as info:
         check_trajectory(M, traj)
     msg = str(info.value)
@@ -549,8 +547,7 @@ def test_non_finite_trajectory_is_refused():
     good = paper_move("low")
     xd = np.array(good.xd)
     xd[5, 1] = np.nan
-    bad = Trajectory(good.t, xd, good.xd_dot, good.xd_ddot, good.period, good.start, good.end,
-                     good.profile)
+    bad = Trajectory(good.t, xd, good.xd_dot, good.xd_ddot, good.period)
     with pytest.raises(ValueError, match="sample 5"):
         check_trajectory(M, bad)
 

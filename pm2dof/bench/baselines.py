@@ -144,5 +144,4 @@ def long_trajectory(model, n_samples):
     xddd = np.vstack([tr.xd_ddot, tr.xd_ddot[::-1]])
     reps = math.ceil(n_samples / len(xd))
     xd, xdd, xddd = (np.tile(a, (reps, 1))[:n_samples] for a in (xd, xdd, xddd))
-    return Trajectory(np.arange(n_samples) * tr.period, xd, xdd, xddd, tr.period, tr.start,
-                      tr.end, tr.profile), speed
+    return Trajectory(np.arange(n_samples) * tr.period, xd, xdd, xddd, tr.period), speed

@@ -14,7 +14,8 @@ from ..core.model_file import read_model_file
 from ..core.paths import DEFAULT_MODEL_NAME, SHIPPED_MODELS
 from ..core.task import orientation_length
 
-__all__ = ["TrajectoryError", "SCurve", "Trajectory", "require_trajectory", "line", "model_move", "line_moves",
+__all__ = ["TrajectoryError", "SCurve", "Trajectory", "require_trajectory", "line", "line_profile",
+           "model_move", "line_moves",
            "PAPER_MOVES",
            "paper_move"]
 
@@ -146,11 +147,9 @@ class Trajectory:
         dimension) is taken from ``xd``.
     period : float
         Sampling period, s.
-    start, end : tuple of float or None
-        End points of the straight segment, m; None for a sampled reference
-        (:meth:`from_samples`, :meth:`hold`).
-    profile : SCurve or None
-        Profile of the arc length along the segment; None for a sampled reference.
+
+    Plain samples: a line's end points and S-curve belong to its plan (:func:`line_profile`,
+    a :class:`pm2dof.planning.Plan`'s ``path`` and ``profile``), not to its samples.
     """
 
     t: np.ndarray = field(repr=False)
@@ -158,9 +157,6 @@ class Trajectory:
     xd_dot: np.ndarray = field(repr=False)
     xd_ddot: np.ndarray = field(repr=False)
     period: float
-    start: tuple = None
-    end: tuple = None
-    profile: SCurve = field(default=None, repr=False)
 
     def __post_init__(self):  # store read-only float64 C-contiguous copies
         n = np.size(self.t)
@@ -199,7 +195,6 @@ class Trajectory:
         Returns
         -------
         Trajectory
-            With ``start``, ``end`` and ``profile`` None.
 
         Raises
         ------
@@ -250,15 +245,13 @@ class Trajectory:
 
     @property
     def duration(self):
-        """Duration of the move itself (``profile.duration``; (N - 1) * period for a sampled
-        reference), s."""
-        if self.profile is None:
-            return (len(self.t) - 1) * self.period
-        return self.profile.duration
+        """Time from the first sample to the last, (N - 1) * period, s (a line's S-curve may end
+        up to one period earlier: :func:`line_profile` gives its own duration)."""
+        return (len(self.t) - 1) * self.period
 
     def extended(self, settle_time):
-        """Copy with rest samples at ``end`` (the last sample for a sampled reference)
-        appended for at least ``settle_time`` s.
+        """Copy with rest samples at the last sample (a line's ``end``) appended for at least
+        ``settle_time`` s.
 
         Parameters
         ----------
@@ -267,12 +260,11 @@ class Trajectory:
         """
         ts = _positive("settle_time (s)", settle_time, zero_ok=True)
         k = math.ceil(ts / self.period - 1e-9)  # tolerate 0.1/0.002 = 50.000000000000004
-        rest = self.xd[-1] if self.end is None else self.end
         zeros = np.zeros((k, self.xd.shape[1]))
         return Trajectory(np.arange(len(self.t) + k) * self.period,
-                          np.vstack([self.xd, np.broadcast_to(rest, zeros.shape)]),
+                          np.vstack([self.xd, np.broadcast_to(self.xd[-1], zeros.shape)]),
                           np.vstack([self.xd_dot, zeros]), np.vstack([self.xd_ddot, zeros]),
-                          self.period, self.start, self.end, self.profile)
+                          self.period)
 
 
 def require_trajectory(trajectory):
@@ -297,6 +289,45 @@ def _point(name, p):
     return tuple(float(v) for v in arr)
 
 
+def _segment(start, end, v_max, a_max, j_max, orientation_length):
+    """The validated end points (tuples) and the :class:`SCurve` of the line from start to end."""
+    p0, p1 = _point("start", start), _point("end", end)
+    if len(p0) != len(p1):
+        raise TrajectoryError(f"start {p0} of shape ({len(p0)},) and end {p1} of shape "
+                              f"({len(p1)},) must both be (x, y) or both (x, y, phi)")
+    scale = (1.0, 1.0)                         # arc length: phi in units of orientation_length
+    if len(p0) == 3:
+        if orientation_length is None:
+            raise TrajectoryError("a line in (x, y, phi) needs orientation_length, the length in "
+                                  "m that turns phi into arc length (docs/planning.md)")
+        scale += (_positive("orientation_length (m)", orientation_length),)
+    L = math.hypot(*((b - a) * w for a, b, w in zip(p0, p1, scale, strict=True)))
+    if L == 0.0:
+        raise TrajectoryError(f"start and end coincide at {p0}: zero path length")
+    return p0, p1, SCurve.plan(L, v_max, a_max, j_max)
+
+
+def line_profile(start, end, v_max, a_max, j_max, orientation_length=None):
+    """The S-curve of the arc length that :func:`line` samples (its kinematic plan).
+
+    Parameters
+    ----------
+    start, end : array_like, shape (m,)
+        As :func:`line`.
+    v_max, a_max, j_max : float
+        As :func:`line`.
+    orientation_length : float, optional
+        As :func:`line`.
+
+    Returns
+    -------
+    SCurve
+        Its ``L`` is the segment's arc length (m) and its ``duration`` the move's own (s), which
+        the samples' last time ``ceil(duration / period) * period`` rounds up.
+    """
+    return _segment(start, end, v_max, a_max, j_max, orientation_length)[2]
+
+
 def line(start, end, v_max, a_max, j_max, period=0.002, orientation_length=None):
     """S-curve motion along the straight segment from ``start`` to ``end``.
 
@@ -319,23 +350,11 @@ def line(start, end, v_max, a_max, j_max, period=0.002, orientation_length=None)
     -------
     Trajectory
         Samples at ``k * period``, ``k = 0 .. ceil(duration / period)``; the last
-        one is at rest at ``end`` exactly.
+        one is at rest at ``end`` exactly. The S-curve itself: :func:`line_profile`.
     """
-    p0, p1 = _point("start", start), _point("end", end)
-    if len(p0) != len(p1):
-        raise TrajectoryError(f"start {p0} of shape ({len(p0)},) and end {p1} of shape "
-                              f"({len(p1)},) must both be (x, y) or both (x, y, phi)")
     period = _positive("period (s)", period)
-    scale = (1.0, 1.0)                         # arc length: phi in units of orientation_length
-    if len(p0) == 3:
-        if orientation_length is None:
-            raise TrajectoryError("a line in (x, y, phi) needs orientation_length, the length in "
-                                  "m that turns phi into arc length (docs/planning.md)")
-        scale += (_positive("orientation_length (m)", orientation_length),)
-    L = math.hypot(*((b - a) * w for a, b, w in zip(p0, p1, scale, strict=True)))
-    if L == 0.0:
-        raise TrajectoryError(f"start and end coincide at {p0}: zero path length")
-    prof = SCurve.plan(L, v_max, a_max, j_max)
+    p0, p1, prof = _segment(start, end, v_max, a_max, j_max, orientation_length)
+    L = prof.L
     n = math.ceil(prof.duration / period)
     n += int(n * period < prof.duration)  # guard against rounding in the division
     t = np.arange(n + 1) * period
@@ -345,7 +364,7 @@ def line(start, end, v_max, a_max, j_max, period=0.002, orientation_length=None)
     u = (b - a) / L
     xd = (1.0 - lam) * a + lam * b  # exact at both ends (lam = 0 and lam = 1)
     xd_dot, xd_ddot = sd[:, None] * u + 0.0, sdd[:, None] * u + 0.0  # + 0.0: no -0.0
-    return Trajectory(t, xd, xd_dot, xd_ddot, period, p0, p1, prof)
+    return Trajectory(t, xd, xd_dot, xd_ddot, period)
 
 
 def line_moves(model):

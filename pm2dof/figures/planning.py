@@ -52,7 +52,7 @@ def _torques(plt, model, name, plans, w):
                              sharex=True, layout="constrained")
     for ax, (key, p) in zip(axes[:, 0], opt.items()):
         tr = p.trajectory
-        s, sd, sdd = tr.profile.evaluate(tr.t)
+        s, sd, sdd = p.profile.evaluate(tr.t)
         tau = path_torques(model, p.path, s, sd, sdd, p.info.get("theta"), w)[key]
         for i in range(model.n_legs):
             ax.plot(tr.t, tau[:, i], lw=1.2, label=f"tau_{i + 1}")

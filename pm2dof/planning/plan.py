@@ -96,8 +96,7 @@ def sampled(path, profile, period):
     p, dp, ddp = path.evaluate(s)
     xd_dot = dp * sd[:, None] + 0.0
     xd_ddot = dp * sdd[:, None] + ddp * (sd * sd)[:, None] + 0.0
-    traj = Trajectory(t, p, xd_dot, xd_ddot, period, tuple(path.start.tolist()),
-                      tuple(path.end.tolist()), profile)
+    traj = Trajectory(t, p, xd_dot, xd_ddot, period)
     return traj, (s, sd, sdd), (p, dp, ddp)
 
 
@@ -129,11 +128,14 @@ class Plan:
     margin : float
     trajectory : Trajectory
         The motion sampled at ``trajectory.period`` (the model's), ready for ``simulate`` and
-        both controllers; its ``profile`` is the :class:`PathProfile`.
+        both controllers (plain samples: the timing is ``profile``).
     compute_time_s : float
         Wall time of the planner, s.
     info : dict
         Planner details (grid size, solver status, ...).
+    profile : PathProfile, SCurve or SCurveChain
+        The timing law s(t) that ``trajectory`` samples (``profile.evaluate(t)``); the
+        kinematic plan's S-curve (a chain of them for a path with stops).
     """
 
     path: object = field(repr=False)
@@ -152,6 +154,7 @@ class Plan:
     trajectory: Trajectory = field(repr=False)
     compute_time_s: float
     info: dict = field(repr=False, default_factory=dict)
+    profile: object = field(repr=False, default=None)
 
     def __post_init__(self):
         for name in ("s", "sdot", "sddot", "t", "max_velocity", "tau", "tau_peak", "tau_max"):
@@ -163,8 +166,3 @@ class Plan:
                 raise PlanError(f"Plan.{name} has non-finite values")   # never handed out
             a.setflags(write=False)
             object.__setattr__(self, name, a)
-
-    @property
-    def profile(self):
-        """The :class:`PathProfile` (the trajectory's)."""
-        return self.trajectory.profile

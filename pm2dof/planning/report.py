@@ -32,7 +32,7 @@ def _at_samples(plan):
     """(s, s_d, s_dd) of a plan at its trajectory's samples."""
     if plan.method == "kinematic":         # its profile arrays are the samples already
         return plan.s, plan.sdot, plan.sddot
-    return plan.trajectory.profile.evaluate(plan.trajectory.t)
+    return plan.profile.evaluate(plan.trajectory.t)
 
 
 def _peaks(model, plan, tau_lim):

@@ -175,7 +175,7 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     return Plan(path=path, method="smooth", split=split, duration=float(t[-1]), s=s, sdot=sdot,
                 sddot=sdd, t=t, max_velocity=strict.max_velocity, tau=tau_v,
                 tau_peak=np.abs(tau_v).max(axis=0), tau_max=tau_lim, margin=float(margin),
-                trajectory=traj, compute_time_s=time.perf_counter() - t0,
+                trajectory=traj, profile=profile, compute_time_s=time.perf_counter() - t0,
                 info={"grid": K, "theta": th.tolist(), "strict_duration": strict.duration,
                       "tau_max_actuators": strict.info["tau_max_actuators"],
                       "ipopt_status": str(status), "iterations": int(stats.get("iter_count", -1)),

@@ -219,7 +219,7 @@ def _plan(model, path, tau_max, split, theta, margin, grid, given):
                 max_velocity=np.sqrt(np.maximum(x_mvc, 0.0)), tau=tau_grid,
                 tau_peak=np.abs(tau_grid).max(axis=0), tau_max=problem.tau_max,
                 margin=float(margin),
-                trajectory=traj, compute_time_s=time.perf_counter() - t0,
+                trajectory=traj, profile=profile, compute_time_s=time.perf_counter() - t0,
                 info={"grid": K, "stops": s[stops].tolist(), "theta": th.tolist(),
                       "tau_max_actuators": limits(model, tau_max, 1.0).tolist(),
                       "arrival_relaxed": s[relaxed].tolist(), "refinements": attempt,

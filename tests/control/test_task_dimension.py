@@ -23,6 +23,7 @@ import pytest
 import pm2dof
 from pm2dof.analysis.maps import zonotope_inradius
 from pm2dof.analysis.reference_file import ReferenceFileError, read_trajectory
+from pm2dof.control.trajectory import line_profile
 from pm2dof.core.errors import (
     ArgumentError,
     PlanError,
@@ -157,7 +158,8 @@ def test_a_path_with_phi_has_a_unit_tangent_in_the_metric_and_consistent_derivat
 
 def test_line_in_x_y_phi_and_its_planar_case():
     tr = pm2dof.line([0.2, 0.3, 0.0], [0.25, 0.3, 0.5], 0.2, 5.0, 200.0, orientation_length=0.1)
-    assert tr.xd.shape[1] == 3 and tr.profile.L == pytest.approx(math.hypot(0.05, 0.05))
+    prof = line_profile([0.2, 0.3, 0.0], [0.25, 0.3, 0.5], 0.2, 5.0, 200.0, orientation_length=0.1)
+    assert tr.xd.shape[1] == 3 and prof.L == pytest.approx(math.hypot(0.05, 0.05))
     np.testing.assert_array_equal(tr.xd[-1], [0.25, 0.3, 0.5])
     np.testing.assert_allclose(tr.xd_dot[:, 2] * 0.1, tr.xd_dot[:, 0], atol=1e-15)  # phi with x
     rot = pm2dof.line([0.2, 0.3, 0.0], [0.2, 0.3, 0.5], 0.2, 5.0, 200.0, orientation_length=0.1)
@@ -214,7 +216,8 @@ def test_reference_round_trip_csv_and_parquet_simulates_as_the_move(m, low, tmp_
 def test_reference_positions_only_are_differentiated(m, low, tmp_path):
     _write_csv(tmp_path / "pos.csv", low, levels=1)
     tr = read_trajectory(tmp_path / "pos.csv")
-    vpeak, apeak = low.profile.v_peak, low.profile.a_peak
+    prof = line_profile(**pm2dof.PAPER_MOVES["low"])
+    vpeak, apeak = prof.v_peak, prof.a_peak
     # second-order differences of a jerk-limited profile: v within T^2 j / 3, a within T j
     assert np.abs(tr.xd_dot - low.xd_dot).max() <= 0.002 ** 2 * 200.0 / 3 + 1e-12 * vpeak
     assert np.abs(tr.xd_ddot - low.xd_ddot).max() <= 0.002 * 200.0 * 1.5

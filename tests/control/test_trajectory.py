@@ -10,6 +10,7 @@ from pm2dof.control.trajectory import (
     Trajectory,
     TrajectoryError,
     line,
+    line_profile,
     paper_move,
 )
 
@@ -225,15 +226,17 @@ def test_evaluate_is_vectorized_and_exact_closed_form():
 def test_paper_moves(speed, T_hand):
     tr = paper_move(speed)
     m = PAPER_MOVES[speed]
+    prof = line_profile(**m)                  # the move's kinematic plan
     start, end = np.array(m["start"]), np.array(m["end"])
-    assert tr.profile.L == pytest.approx(0.05 * math.sqrt(2), rel=1e-15), tr.profile.L
-    assert round(tr.profile.L, 4) == 0.0707
-    assert tr.duration == pytest.approx(T_hand, rel=1e-14), (speed, tr.duration, T_hand)
+    assert prof.L == pytest.approx(0.05 * math.sqrt(2), rel=1e-15), prof.L
+    assert round(prof.L, 4) == 0.0707
+    assert prof.duration == pytest.approx(T_hand, rel=1e-14), (speed, prof.duration, T_hand)
     N = math.ceil(T_hand / 0.002) + 1
     assert tr.t.shape == (N,) and tr.xd.shape == (N, 2), (speed, tr.t.shape, N)
     assert np.array_equal(tr.t, np.arange(N) * 0.002), speed
     assert np.allclose(np.diff(tr.t), 0.002, rtol=0, atol=1e-15), speed
-    assert tr.t[-2] < tr.duration <= tr.t[-1], (speed, tr.t[-2:], tr.duration)
+    assert tr.t[-2] < prof.duration <= tr.t[-1], (speed, tr.t[-2:], prof.duration)
+    assert tr.duration == tr.t[-1] == (N - 1) * 0.002, (speed, tr.duration)
     assert np.array_equal(tr.xd[0], start), (speed, tr.xd[0])
     assert np.array_equal(tr.xd[-1], end), (speed, tr.xd[-1])
     assert np.all(tr.xd_dot[[0, -1]] == 0) and np.all(tr.xd_ddot[[0, -1]] == 0), speed
@@ -244,21 +247,23 @@ def test_paper_moves(speed, T_hand):
     assert abs(cross).max() <= 1e-16, (speed, abs(cross).max())
     proj = rel @ u
     assert np.all(np.diff(proj) >= -1e-16) and proj.min() >= -1e-16, speed
-    assert proj.max() <= tr.profile.L + 1e-16, speed
+    assert proj.max() <= prof.L + 1e-16, speed
     # Velocity and acceleration along u with magnitude sd, |sdd| within the limits.
     speed_n = np.linalg.norm(tr.xd_dot, axis=1)
     assert speed_n.max() <= m["v_max"] + 1e-12, (speed, speed_n.max())
     assert np.linalg.norm(tr.xd_ddot, axis=1).max() <= m["a_max"] + 1e-12, speed
     assert abs(tr.xd_dot[:, 0] * u[1] - tr.xd_dot[:, 1] * u[0]).max() <= 1e-16, speed
-    _, sd, sdd, _ = tr.profile.evaluate(tr.t)
+    _, sd, sdd, _ = prof.evaluate(tr.t)
     assert np.allclose(tr.xd_dot, sd[:, None] * u, rtol=0, atol=1e-15), speed
     assert np.allclose(tr.xd_ddot, sdd[:, None] * u, rtol=0, atol=1e-13), speed
 
 
 def test_paper_durations_and_sample_counts():
     low, high = paper_move("low"), paper_move("high")
-    assert low.duration == pytest.approx(0.41855339059327373, rel=1e-14) and len(low.t) == 211
-    assert high.duration == pytest.approx(0.2164213562373095, rel=1e-14) and len(high.t) == 110
+    d_low, d_high = (line_profile(**PAPER_MOVES[k]).duration for k in ("low", "high"))
+    assert d_low == pytest.approx(0.41855339059327373, rel=1e-14) and len(low.t) == 211
+    assert d_high == pytest.approx(0.2164213562373095, rel=1e-14) and len(high.t) == 110
+    assert low.duration == pytest.approx(0.42, rel=1e-14) and high.duration == pytest.approx(0.218)
     assert PAPER_MOVES["low"]["start"] == (0.22, 0.29), PAPER_MOVES["low"]
     assert PAPER_MOVES["high"]["end"] == (0.27, 0.24), PAPER_MOVES["high"]
     with pytest.raises(TypeError):
@@ -281,16 +286,17 @@ def test_extended_appends_rest_samples():
     assert isinstance(ext, Trajectory) and len(ext.t) == n + 50, len(ext.t)
     assert np.array_equal(ext.t, np.arange(n + 50) * 0.002)
     assert np.array_equal(ext.xd[:n], tr.xd) and np.array_equal(ext.xd_dot[:n], tr.xd_dot)
-    assert np.all(ext.xd[n:] == tr.end), ext.xd[n:]
+    assert np.all(ext.xd[n:] == PAPER_MOVES["low"]["end"]), ext.xd[n:]
     assert np.all(ext.xd_dot[n:] == 0) and np.all(ext.xd_ddot[n:] == 0)
-    assert ext.profile is tr.profile and ext.duration == tr.duration and not ext.xd.flags.writeable
+    assert ext.duration == tr.duration + 0.1 and not ext.xd.flags.writeable
     assert len(tr.extended(0.0).t) == n and len(tr.extended(0.0011).t) == n + 1
 
 
 def test_other_period_and_generic_line():
     tr = line((0.0, 0.0), (0.3, -0.4), 0.5, 10.0, 400.0, period=0.001)
-    assert tr.period == 0.001 and tr.profile.L == pytest.approx(0.5, rel=1e-15)
-    assert np.array_equal(tr.xd[-1], (0.3, -0.4)) and tr.t[-1] >= tr.duration
+    prof = line_profile((0.0, 0.0), (0.3, -0.4), 0.5, 10.0, 400.0)
+    assert tr.period == 0.001 and prof.L == pytest.approx(0.5, rel=1e-15)
+    assert np.array_equal(tr.xd[-1], (0.3, -0.4)) and tr.t[-1] >= prof.duration
     assert tr.xd_dot[len(tr.t) // 2] == pytest.approx((0.3, -0.4), rel=1e-12), "mid-cruise velocity"
     # 0.7 + (0.1 - 0.7) != 0.1 in floating point: the end must still be hit exactly.
     tr = line((0.7, 0.22), (0.1, 0.05), 0.2, 5.0, 200.0)
@@ -341,8 +347,7 @@ def test_plan_errors(args, words):
 def test_trajectory_constructor_checks_shapes():
     tr = paper_move("low")
     with pytest.raises(TrajectoryError, match=r"xd_dot must have shape \(211, 2\), got \(211, 3\)"):
-        Trajectory(tr.t, tr.xd, np.zeros((211, 3)), tr.xd_ddot, tr.period, tr.start, tr.end,
-                   tr.profile)
+        Trajectory(tr.t, tr.xd, np.zeros((211, 3)), tr.xd_ddot, tr.period)
 
 
 def test_paper_move_and_extended_errors():

@@ -17,7 +17,7 @@ def test_from_samples_any_task_dimension(m):
         assert got.shape == (N, m) and got.dtype == np.float64 and got.flags.c_contiguous
         assert not got.flags.writeable
         np.testing.assert_array_equal(got, want)
-    assert tr.start is None and tr.end is None and tr.profile is None
+    assert not any(hasattr(tr, k) for k in ("start", "end", "profile"))    # plain samples
     assert tr.duration == (N - 1) * T
     ext = tr.extended(3 * T)                      # rest at the last sample
     assert ext.xd.shape == (N + 3, m) and ext.duration == (N + 2) * T
@@ -37,12 +37,13 @@ def test_hold():
     assert Trajectory.hold([1.0, 2.0, 3.0], 0.004, 0.002).xd.shape == (3, 3)
 
 
-def test_line_unchanged_by_the_optional_fields():
+def test_line_is_plain_samples():
     tr = pm2dof.paper_move("low")
-    assert tr.profile is not None and tr.duration == tr.profile.duration
+    assert not any(hasattr(tr, k) for k in ("start", "end", "profile"))
+    assert tr.duration == (len(tr.t) - 1) * tr.period
     ext = tr.extended(0.01)
-    np.testing.assert_array_equal(ext.xd[len(tr.t):], np.broadcast_to(tr.end, (5, 2)))
-    assert ext.start == tr.start and ext.end == tr.end and ext.profile is tr.profile
+    end = pm2dof.PAPER_MOVES["low"]["end"]
+    np.testing.assert_array_equal(ext.xd[len(tr.t) - 1:], np.broadcast_to(end, (6, 2)))
 
 
 @pytest.mark.parametrize("call, words", [

@@ -4,6 +4,7 @@ import pytest
 
 import pm2dof
 from pm2dof import TaskPath
+from pm2dof.control.trajectory import line_profile
 from pm2dof.planning import plan_kinematic, plan_smooth, plan_time_optimal
 
 
@@ -14,7 +15,8 @@ def test_kinematic_line_is_paper_move(speed):
     plan = plan_kinematic(TaskPath.line(mv["start"], mv["end"]), mv["v_max"], mv["a_max"],
                           mv["j_max"])
     ref = pm2dof.paper_move(speed)
-    assert plan.duration == ref.duration
+    assert plan.duration == line_profile(**mv).duration == plan.profile.duration
+    assert ref.duration == plan.trajectory.duration           # (N - 1) * period, both
     for k in ("t", "xd", "xd_dot", "xd_ddot"):
         a, b = getattr(plan.trajectory, k), getattr(ref, k)
         assert a.shape == b.shape and np.abs(a - b).max() <= 1e-15, k

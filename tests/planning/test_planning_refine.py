@@ -109,7 +109,7 @@ def test_the_trajectory_simulate_receives_respects_tau_max(m, split):
     for path, tau_max, grid in cases:
         plan = plan_time_optimal(m, path, tau_max, split, grid=grid)
         tr = plan.trajectory
-        s, sd, sdd = tr.profile.evaluate(tr.t)
+        s, sd, sdd = plan.profile.evaluate(tr.t)
         tau = path_torques(m, path, s, sd, sdd, None, plan.tau_max)[split]
         ratio = np.abs(tau / plan.tau_max).max(axis=1)
         assert ratio.max() <= 1 + SAMPLE_TOL + 1e-9, (grid, tau_max, ratio.max())

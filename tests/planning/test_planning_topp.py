@@ -247,7 +247,7 @@ def test_the_trajectory_is_the_profile(m):
     assert not tr.xd_dot[[0, -1]].any()
     k_stop = np.argmin(np.abs(plan.s - path.stops[1]))
     assert plan.sdot[k_stop] == 0.0
-    fine = plan.trajectory.profile.evaluate(np.linspace(0, plan.duration, 20001))
+    fine = plan.profile.evaluate(np.linspace(0, plan.duration, 20001))
     assert np.all(np.diff(fine[0]) >= -1e-15)            # s never goes back
     p, _, _ = path.evaluate(fine[0])
     t = np.linspace(0, plan.duration, 20001)
