@@ -102,11 +102,12 @@ def _check_generated(spec, gen_dir):
     return manifest, lib
 
 
-def _shapes(n, m, p):
+def _shapes(n, m, p, h):
     """The returned shape(s) of each Model method bound by :func:`_methods` (n legs, task
     dimension m, p parameters); a tuple of shapes for the derivative methods (their
-    NamedTuple's fields)."""
-    return {"ik": (2 * n,), "fk": (m,), "H": (2 * n - m,), "A": (2 * n - m, 2 * n),
+    NamedTuple's fields). H (eq. 5) has h rows: 2 (n - 1) for legs meeting at a point (tip_1
+    = tip_i), 2 n for a platform (tip_i = P_i(xe), xe from q)."""
+    return {"ik": (2 * n,), "fk": (m,), "H": (h,), "A": (h, 2 * n),
             "singularity": (n,), "singularity_measures": (2,), "W": (2 * n, m), "S": (n, m),
             "Wdot": (2 * n, m), "M": (2 * n, 2 * n), "C": (2 * n, 2 * n), "Me": (m, m),
             "Ce": (m, m), "StF": (m,), "Y": (m, p), "forward_dynamics": (m,),
@@ -202,8 +203,9 @@ class Model(DerivativeMethods):
         sing_thr = (spec.limits["singularity_threshold"],
                     spec.limits["parallel_singularity_threshold"])
         sing, residual = np.zeros(2), np.zeros(spec.n_legs)
-        fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names)), sing, sing_thr,
-                        residual, spec.sensing["closure_tolerance"])
+        h = funcs["H"].sizes_out[0]          # constraints: 2 (n - 1) at a point, 2 n a platform
+        fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names), h), sing,
+                        sing_thr, residual, spec.sensing["closure_tolerance"])
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
                      ("generated", str(gen_dir)),
                      ("_lib", lib), ("_f", types.MappingProxyType(funcs)), ("_fast", fast),
@@ -469,19 +471,20 @@ class Model(DerivativeMethods):
         return out
 
     def H(self, q, out=None):
-        """Loop-closure constraints H(q) (2n - m,), m (eq. 5; 2(n-1) for a point)."""
+        """Loop-closure constraints H(q), m (eq. 5): (2(n-1),) for legs meeting at a point,
+        (2n,) for a platform (tip_i(q) - P_i(xe), its pose xe from q)."""
         try:
             return self._fast["H"](q, out)
         except _cbind.Refused:
-            return self._eval("H", (2 * self.n_legs - self._m,), out, q)
+            return self._eval("H", (self._f["H"].sizes_out[0],), out, q)
 
     def A(self, q, out=None):
-        """Constraint Jacobian A = dH/dq (2n - m, 2n) (eq. 6)."""
+        """Constraint Jacobian A = dH/dq (rows of H, 2n) (eq. 6)."""
         try:
             return self._fast["A"](q, out)
         except _cbind.Refused:
             n = self.n_legs
-            return self._eval("A", (2 * n - self._m, 2 * n), out, q)
+            return self._eval("A", (self._f["H"].sizes_out[0], 2 * n), out, q)
 
     def singularity(self, q, out=None):
         """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0."""
