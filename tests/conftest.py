@@ -81,19 +81,20 @@ def box_centre(model):
 
 
 def sample_xe(model, seed, k, half_width=BOX_HALF_WIDTH, sing_min=SING_MIN):
-    """k xe (2,) in the box box_centre(model) +- half_width where every leg reaches (ik does not
-    raise WorkspaceError) and min_i |sin(qb_i - qa_i)| > sing_min. Fails (AssertionError) if
+    """k xe (m,) in the box box_centre(model) +- half_width (phi of a platform: +- half_width
+    rad) where every leg reaches (ik does not raise WorkspaceError) and the type I measure
+    (RRR legs: min_i |sin(qb_i - qa_i)|) > sing_min. Fails (AssertionError) if
     fewer than k are found in 100 k draws, so no check can pass on an empty sample."""
     rng = np.random.default_rng(seed)
     c = box_centre(model)
     out = []
     for _ in range(100 * k):
-        xe = c + rng.uniform(-half_width, half_width, 2)
+        xe = c + rng.uniform(-half_width, half_width, model.dof)
         try:
             q = model.ik(xe)
         except pm2dof.WorkspaceError:
             continue
-        if np.min(np.abs(model.singularity(q))) > sing_min:
+        if model.singularity_measures(q)[0] > sing_min:
             out.append(xe)
             if len(out) == k:
                 return out
@@ -105,10 +106,15 @@ _PARAM = re.compile(r"([A-Za-z_]+?)(\d+)$")
 
 
 def param_index(model):
-    """{(kind, leg 0-based): index in theta}, e.g. ("fc", 0) -> index of "fc1"."""
+    """{(kind, leg 0-based): index in theta}, e.g. ("fc", 0) -> index of "fc1"; a platform's
+    parameters (no leg number) as (name, None), e.g. ("m_p", None)."""
     out = {}
     for j, name in enumerate(model.param_names):
-        kind, leg = _PARAM.fullmatch(name).groups()
+        match = _PARAM.fullmatch(name)
+        if match is None:
+            out[name, None] = j
+            continue
+        kind, leg = match.groups()
         out[kind, int(leg) - 1] = j
     return out
 
@@ -116,14 +122,23 @@ def param_index(model):
 def random_theta(model, rng):
     """theta (p,) in param_names order with every leg's inertia block PD (alpha, gamma > 0,
     beta^2 < alpha gamma) and nonnegative friction parameters: fv in [0, 5] N m s/rad,
-    fc and every other friction parameter (e.g. fs) in [0, 1] N m."""
+    fc and every other friction parameter (e.g. fs) in [0, 1] N m; first moments kappa in
+    [0, 0.5] kg m; a platform's m_p in [0.2, 1] kg, mx_p, my_p in +-0.02 kg m and I_p above
+    (mx_p^2 + my_p^2) / m_p by [1e-4, 1e-3] kg m^2 (a rigid body)."""
     n, idx = model.n_legs, param_index(model)
     theta = np.empty(len(model.param_names))
     alpha = rng.uniform(0.005, 0.15, n)
     gamma = rng.uniform(0.005, 0.08, n)
     beta = rng.uniform(-0.95, 0.95, n) * np.sqrt(alpha * gamma)
+    m_p, mx_p, my_p = rng.uniform(0.2, 1.0), *rng.uniform(-0.02, 0.02, 2)
+    body = {"m_p": m_p, "mx_p": mx_p, "my_p": my_p,
+            "I_p": (mx_p ** 2 + my_p ** 2) / m_p + rng.uniform(1e-4, 1e-3)}
     for (kind, i), j in idx.items():
-        if kind in ("alpha", "beta", "gamma"):
+        if kind in body:
+            theta[j] = body[kind]
+        elif kind == "kappa":
+            theta[j] = rng.uniform(0.0, 0.5)
+        elif kind in ("alpha", "beta", "gamma"):
             theta[j] = {"alpha": alpha, "beta": beta, "gamma": gamma}[kind][i]
         elif kind == "fv":
             theta[j] = rng.uniform(0.0, 5.0)
