@@ -22,7 +22,8 @@ from .errors import (ArgumentError, ArgumentTypeError, ClosureError, NonFiniteEr
 from .task import (ENERGY_FUNCTIONS, is_rr_point, require_generated, require_rr_point,
                    spec_task_names)
 from .layout import Layout
-from .model_file import inertia_problem, read_model_file
+from .model_file import (FRICTION_MODELS, INERTIAL, PLATFORM_PARAMS, inertia_problem,
+                         platform_inertia_problem, read_model_file)
 from .status import Status
 
 try:
@@ -265,17 +266,21 @@ class Model(DerivativeMethods):
         if th is None or th.shape != (p,) or not np.isfinite(th).all():
             raise ArgumentError(f"{name} must be {p} finite numbers ({', '.join(self.param_names)})"
                                 f", got {theta!r}")
-        if physical:       # theta = [alpha, beta, gamma, friction] per leg: RR legs only
-            require_rr_point(self, "the physical check of theta (M_i of eq. 1 per RR leg)")
-            n = self.n_legs
-            rows = th.reshape(-1, n)          # alpha, beta, gamma, then each friction coefficient
-            for i in range(n):
-                why = inertia_problem(*rows[:3, i])
+        if physical:       # the model file's rule for [nominal], by parameter name
+            index = {name: j for j, name in enumerate(self.param_names)}
+            for i in range(self.n_legs):
+                why = inertia_problem(*(th[index[f"{k}{i + 1}"]] for k in INERTIAL))
                 if why is not None:
                     raise ArgumentError(f"{name} is not physical: leg {i + 1} {why}")
-            for j in np.flatnonzero(th[3 * n:] < 0):
-                raise ArgumentError(f"{name} is not physical: {self.param_names[3 * n + j]} = "
-                                    f"{th[3 * n + j]:.6g} < 0 (friction must dissipate)")
+            if all(k in index for k in PLATFORM_PARAMS):
+                why = platform_inertia_problem(*(th[index[k]] for k in PLATFORM_PARAMS))
+                if why is not None:
+                    raise ArgumentError(f"{name} is not physical: the platform's {why}")
+            friction = FRICTION_MODELS[self.spec.friction]
+            for j, pname in enumerate(self.param_names):
+                if pname.rstrip("0123456789") in friction and th[j] < 0:
+                    raise ArgumentError(f"{name} is not physical: {pname} = {th[j]:.6g} < 0 "
+                                        f"(friction must dissipate)")
         return th
 
     def function(self, short_name):

@@ -282,11 +282,14 @@ def energy_functions(d, prefix):
     cq = d.converter_q(q, [(sym.theta, theta)])
     ce = d.converter_xe(xe, [(sym.xed, xed), (sym.theta, theta)])
     ce = ce.extended([(sym.qd, ca.reshape(ce(kin.W), m, 2 * n).T @ xed)])    # qd = W xed, eq. 7
-    V = getattr(dyn, "V", sp.Integer(0))
+    # the legs' T in (q, qd) plus a platform's own T in xed; V of the legs and the platform
+    # (dynamics.py: potential_energy, zero in a horizontal plane)
+    T = dyn.T + getattr(dyn, "T_platform", sp.Integer(0))
+    V = getattr(dyn, "potential_energy", sp.Integer(0))
     return [ca.Function(f"{prefix}_Ge", [q, theta],
                         [cq(_gravity_term(d)), d.singularity_measures(cq)],
                         ["q", "theta"], ["Ge", "sing"]),
-            ca.Function(f"{prefix}_kinetic_energy", [xe, xed, theta], [ce(dyn.T)],
+            ca.Function(f"{prefix}_kinetic_energy", [xe, xed, theta], [ce(T)],
                         ["xe", "xed", "theta"], ["T"]),
             ca.Function(f"{prefix}_potential_energy", [xe, theta], [ce(V)],
                         ["xe", "theta"], ["V"])]

@@ -102,20 +102,21 @@ def params(model, theta):
 def _coefficients(model, p, dp, ddp, theta, w, split):
     """One ``path_coefficients`` map over the points: dict of its outputs (the other split's
     polygon not computed)."""
-    K, n = len(p), model.n_legs
-    sizes = (("a", 2), ("b", 2), ("S", 2 * n), ("v1", n), ("N_min_norm", 2 * n),
-             ("h_min_norm", n), ("N_min_max", 2 * n), ("h_min_max", n), ("sing", 2))
+    K, f = len(p), model.function("path_coefficients")
     other = "min_max" if split == "min_norm" else "min_norm"
-    outs = {k: (None if k.endswith(other) else np.empty((K, m))) for k, m in sizes}
-    model.function("path_coefficients").map(K, p, dp, ddp, theta, w, *outs.values())
+    # a, b (g with gravity) (m,), S (n m,), v1 (n,), the facets N (m F,), h (F,), sing (2,)
+    outs = {k: (None if k.endswith(other) else np.empty((K, size)))
+            for k, size in zip(f.names_out, f.sizes_out)}
+    f.map(K, p, dp, ddp, theta, w, *outs.values())
     return outs
 
 
 def _fill(model, stage, outs, split):
     st = model.layout("path_stage").unpack(stage)
     st["N"][:], st["h"][:] = outs[f"N_{split}"], outs[f"h_{split}"]
-    for key in ("a", "b", "S", "v1"):
-        st[key][:] = outs[key]
+    for key in ("a", "b", "g", "S", "v1"):
+        if key in st:                       # g: a model with gravity
+            st[key][:] = outs[key]
 
 
 def point_stages(model, s, evaluated, theta, w, split, check=True):
