@@ -285,7 +285,7 @@ class Grid:
             hit = (c["a"][j] == a) & (c["b"][j] == b)
         else:
             j, hit = np.zeros(M, dtype=int), np.zeros(M, dtype=bool)
-        ev = tuple(np.empty((M, 2)) for _ in range(3))
+        ev = tuple(np.empty((M, self.path.dim)) for _ in range(3))
         stage = np.empty((M, self.base.shape[1]))
         if hit.any():
             for e, o in zip(ev, c["ev"]):
