@@ -21,8 +21,8 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.core.model_file import read_model_file
+from pm2dof.core.paths import SHIPPED_MODELS
 
 REPO = Path(__file__).resolve().parent.parent
 MODEL_FILES = sorted(SHIPPED_MODELS.glob("*.toml"))

@@ -19,7 +19,7 @@ from .derivatives import (DERIVATIVE_FUNCTIONS, DerivativeMethods, ForwardDynami
                           InverseDynamicsJacobians, SampledStepJacobians)
 from .errors import (ArgumentError, ArgumentTypeError, ClosureError, NonFiniteError,
                      SingularityError, StaleGeneratedCodeError, WorkspaceError)
-from .task import (ENERGY_FUNCTIONS, is_rr_point, require_generated, require_rr_point,
+from .task import (ENERGY_FUNCTIONS, is_rr_point, require_generated,
                    spec_task_names)
 from .layout import Layout
 from .model_file import (FRICTION_MODELS, INERTIAL, PLATFORM_PARAMS, inertia_problem,
