@@ -231,6 +231,10 @@ for _name in ("test_round_trip_wherever_ik_answers", "test_measures_agree_with_a
     _NOT_RUN[f"core/test_singularities.py::{_name}"] = ("new", _NOT_YET)
 for _name in ("test_table3_runs_and_tracks_on_every_move",):
     _NOT_RUN[f"control/test_models_closed_loop.py::{_name}"] = ("new", _NOT_YET)
+_NOT_RUN["derive/test_generated.py::test_C_matches_sympy_at_30_digits"] = (
+    "platform", "its mpmath evaluation takes fk in closed form; a platform's fk is a "
+                "Gauss-Newton from a seed: not yet generalised (issue 26 follow-up); "
+                "tests/mechanisms/test_independent.py checks the platform's derivation")
 _NOT_RUN["control/test_task_dimension.py::test_dof_and_task_names_follow_the_generated_code"] = (
     "platform", "compares with a point's task (x, y): tests/mechanisms/test_capabilities.py "
                 "and tests/derive/test_derive_task_dimension.py cover m = 3")
