@@ -48,8 +48,10 @@ derive: $(STAMP)
 derive-all: $(STAMP)
 	for m in pm2dof/models/*.toml; do $(VENV)/bin/pm2dof derive $$m || exit 1; done
 
+# -n auto: one pytest worker per core; --dist loadscope keeps a module's tests (and its
+# module-scoped fixtures: built models, derivations, studies) on one worker
 test: install
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q -n auto --dist loadscope
 
 # pyflakes (F), import order (I), bugbear (B): [tool.ruff] in pyproject.toml
 lint: $(STAMP)

@@ -32,16 +32,35 @@ are imported on first use, so a real-time process never pays for them.
 """
 import importlib
 
-from .control.controllers import (STATUS_NAMES, APDController, CTCController, NAController,
-                                  Status)
+from .control.controllers import STATUS_NAMES, APDController, CTCController, NAController, Status
 from .control.simulate import SimResult, check_trajectory, plant_truth, rmse, simulate, theta_truth
-from .control.trajectory import (PAPER_MOVES, Trajectory, TrajectoryError, line, model_move,
-                                 paper_move)
+from .control.trajectory import (
+    PAPER_MOVES,
+    Trajectory,
+    TrajectoryError,
+    line,
+    model_move,
+    paper_move,
+)
 from .core.build import BuildError
-from .core.errors import (ArgumentError, ArgumentTypeError, ClosureError, GainError,
-                          InputFileError, ModelFileError, ModelMismatchError, NonFiniteError,
-                          OutcomeWarning, OutputError, Pm2dofError, PlanError, SingularityError,
-                          StaleGeneratedCodeError, UnsupportedMechanismError, WorkspaceError)
+from .core.errors import (
+    ArgumentError,
+    ArgumentTypeError,
+    ClosureError,
+    GainError,
+    InputFileError,
+    ModelFileError,
+    ModelMismatchError,
+    NonFiniteError,
+    OutcomeWarning,
+    OutputError,
+    PlanError,
+    Pm2dofError,
+    SingularityError,
+    StaleGeneratedCodeError,
+    UnsupportedMechanismError,
+    WorkspaceError,
+)
 from .core.model import Model, load_model
 from .core.version import __version__
 

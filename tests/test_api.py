@@ -47,8 +47,15 @@ def test_star_import_gives_exactly_all():
 
 def test_promised_names_are_at_the_top_level():
     """The controllers issue's API block: pm2dof.NAController(m), pm2dof.APDController(m)."""
-    from pm2dof import (STATUS_NAMES, APDController, NAController, SimResult, line,
-                        paper_move, simulate)
+    from pm2dof import (
+        STATUS_NAMES,
+        APDController,
+        NAController,
+        SimResult,
+        line,
+        paper_move,
+        simulate,
+    )
     m = pm2dof.load_model()
     na, apd = NAController(m), APDController(m)
     assert na.theta_hat.shape == (len(m.param_names),)

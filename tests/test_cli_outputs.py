@@ -128,6 +128,7 @@ def test_no_generated_code_mentions_generated(tmp_path):
 
 def test_version_prints_what_getting_started_says(capsys):
     from pathlib import Path
+
     from pm2dof.core.version import __version__
     with pytest.raises(SystemExit):
         cli.main(["--version"])
@@ -144,6 +145,7 @@ def test_installed_package_outputs_omit_git_commit(monkeypatch):
 
 
 def test_plan_csv_writes_shortest_decimals_and_json_names_the_unit(tmp_path):
+    from pm2dof.planning.pathfile import NamedPath
     from pm2dof.planning.report import csv_text, plan_paths
     m = pm2dof.load_model()
     path = pm2dof.TaskPath.line([0.22, 0.29], [0.27, 0.24])
@@ -152,7 +154,7 @@ def test_plan_csv_writes_shortest_decimals_and_json_names_the_unit(tmp_path):
     fields = [f for ln in rows for f in ln.split(",")]
     assert fields and all(f == repr(float(f)) for f in fields)          # was %.17g
     assert any(len(f) < 17 for f in fields)
-    res, _ = plan_paths(m, [{"name": "line", "path": path}], grid=100)
+    res, _ = plan_paths(m, [NamedPath("line", path, None, None)], grid=100)
     row = res["paths"][0]
     assert "tau_peak" not in row["min_norm"] and len(row["min_norm"]["tau_peak_N_m"]) == 3
 

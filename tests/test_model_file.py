@@ -30,9 +30,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import pm2dof
-from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
 from pm2dof.core.errors import ModelFileError, StaleGeneratedCodeError
 from pm2dof.core.model_file import ModelSpec, read_model_file
+from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
 
 REPO = Path(__file__).resolve().parent.parent
 PAPER = SHIPPED_MODELS / "shang2010.toml"

@@ -29,13 +29,18 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import pm2dof
-from pm2dof import SingularityError, WorkspaceError
-from pm2dof.reference import model as ref
-from pm2dof.reference import control as rc
-from pm2dof import APDController, NAController
-from pm2dof.core.layout import Layout
-from pm2dof import check_trajectory, simulate
+from pm2dof import (
+    APDController,
+    NAController,
+    SingularityError,
+    WorkspaceError,
+    check_trajectory,
+    simulate,
+)
 from pm2dof.control.trajectory import Trajectory, TrajectoryError, line, paper_move
+from pm2dof.core.layout import Layout
+from pm2dof.reference import control as rc
+from pm2dof.reference import model as ref
 
 M = pm2dof.load_model()
 N = M.n_legs

@@ -42,7 +42,7 @@ EXTRA_CONTROLLERS = ("ctc", "lqr")
 def _extra_controller(model, name, traj, kw):
     if name == "ctc":
         return CTCController(model, **kw)
-    from ..linear.lqr import LQRController     # SciPy (the control extra)
+    from ..linear.lqr import LQRController  # SciPy (the control extra)
     return LQRController(model, traj, **kw)
 
 
@@ -219,7 +219,7 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
     theta = ctrl.theta0.copy()
     rmses, thetas = [], []
     with bar(progress, runs, f"repeated {speed}-speed runs", unit="run") as b:
-        for k in range(runs):
+        for _k in range(runs):
             r = simulate(model, ctrl, traj, quantise=quantise, theta_hat0=theta)
             theta = r.theta_hat[-1].copy()
             rmses.append(r.rmse)

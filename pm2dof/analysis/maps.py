@@ -24,9 +24,9 @@ coordinates as they are (N and N m taken alike). The grid of :func:`workspace_ma
 """
 import numpy as np
 
+from ..control.simulate import pose_measures
 from ..core.errors import ArgumentError, WorkspaceError
 from ..core.task import require_rr_point
-from ..control.simulate import pose_measures
 from ..infra.progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
@@ -180,7 +180,7 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
     out["type2"] = np.where(reach, type2, np.nan)
     idx = np.flatnonzero(reach & (type1 > 1e-6) & (type2 > 1e-6))
     b = bar(progress, len(idx), "capability maps", unit="pose", miniters=200)
-    for j, k in enumerate(idx):
+    for _j, k in enumerate(idx):
         b.update()
         try:
             q = model.ik(pts[k])

@@ -77,7 +77,7 @@ def model_report(m, seed=0, samples=200):
                  f"eigenvalues {np.round(np.linalg.eigvalsh(Me), 4).tolist()}")
     conds, sings = [], []
     Ys = []
-    for x, y, qq in pts:
+    for _x, _y, qq in pts:
         S = m.S(qq)
         conds.append(np.linalg.cond(S.T @ S))
         sings.append(m.singularity_measures(qq))

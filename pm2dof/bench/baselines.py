@@ -135,8 +135,7 @@ def lambdify_step(model, layouts):
 
 def long_trajectory(model, n_samples):
     """The high-speed move forward and back (reversed in time), tiled to ``n_samples``."""
-    from ..control.trajectory import line_moves, model_move
-    from ..control.trajectory import Trajectory
+    from ..control.trajectory import Trajectory, line_moves, model_move
     moves = line_moves(model)
     speed = "high" if "high" in moves else moves[0]
     tr = model_move(model, speed)

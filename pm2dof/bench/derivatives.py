@@ -9,8 +9,8 @@ always central finite differences of ``Model.forward_dynamics`` (2 (4 + n + p) c
 """
 import numpy as np
 
-from ..linear.lqr import LQRController
 from ..control.controllers import CTCController
+from ..linear.lqr import LQRController
 from .timing import rel_diff, stats, time_batches
 
 __all__ = ["derivative_bench", "dynamics_state"]
@@ -105,6 +105,7 @@ def derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes):
     res["speedup_fd_jacobians_vs_pinocchio"] = None
     try:
         import pinocchio
+
         from .pinocchio_baseline import PinocchioRobot
     except ImportError as exc:
         notes["pinocchio_constraint_derivatives_python_us"] = (

@@ -23,6 +23,7 @@ import numpy as np
 
 from ..control.trajectory import line_moves
 from ..planning import TaskPath, plan_time_optimal
+from ..planning.problem import PlanProblem
 from ..planning.smooth import plan_smooth
 from ..planning.stages import grid_points, limits, params, stages
 from .timing import stats
@@ -100,7 +101,7 @@ def bench_paths(model, line):
     from ..planning.pathfile import read_path_file
     out = {"line": line, "half_circle": TaskPath.arc(**ARC),
            "spline": TaskPath.spline(SPLINE)}
-    out.update({k: read_path_file(k)["path"] for k in SHIPPED})
+    out.update({k: read_path_file(k).path for k in SHIPPED})
     usable = {}
     for name, path in out.items():
         try:
@@ -246,10 +247,10 @@ def bench_planning(model, quick=False, progress=None):
     if toppra is not None:
         say("planning: toppra on the same friction-free problem (interleaved with pm2dof)")
         toppra.setup_logging("WARNING") if hasattr(toppra, "setup_logging") else None
-        w = limits(model, None, 1.0)
+        problem = PlanProblem.create(model, path, None, "min_max", th0)
         s = grid_points(path, grid)
-        th = params(model, th0)[1]
-        coef = stages(model, path, s, w, th, "min_max")[1]
+        th = problem.theta
+        coef = stages(problem, s)[1]
         tpath = ToppraPath(path)
         a, b = coef["a"], coef["b"]
         F = np.concatenate([coef["N"], -coef["N"]], axis=1)

@@ -11,19 +11,25 @@ from pathlib import Path
 
 import numpy as np
 
-from ..control.trajectory import line_moves, model_move
 from ..control.controllers import APDController, NAController
 from ..control.simulate import plant_vector, simulate
+from ..control.trajectory import line_moves, model_move
 from ..core.layout import Layout
 from ..core.model import load_model
 from ..core.status import Status
 from ..reference import control as rc
+from .baselines import (
+    c_step,
+    lambdify_step,
+    long_trajectory,
+    operating_point,
+    random_cases,
+    reference_geometry,
+)
 from .derivatives import derivative_bench, dynamics_state
-from .peers import peer_bench
-from .baselines import (c_step, lambdify_step, long_trajectory, operating_point, random_cases,
-                        reference_geometry)
 from .machine import machine
 from .opcount import OPS_FUNCTIONS, count_ops
+from .peers import peer_bench
 from .timing import rel_diff, stats, time_batches
 
 __all__ = ["run_bench", "TARGETS", "REQUIRED_KEYS"]

@@ -15,8 +15,13 @@ import math
 import numpy as np
 
 from ..core import _cbind
-from ..core.errors import (ArgumentError, ArgumentTypeError, GainError, ModelMismatchError,
-                           SingularityError)
+from ..core.errors import (
+    ArgumentError,
+    ArgumentTypeError,
+    GainError,
+    ModelMismatchError,
+    SingularityError,
+)
 from ..core.layout import Layout
 from ..core.model import require_model
 from ..core.status import STATUS_NAMES, Status

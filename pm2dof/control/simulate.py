@@ -14,14 +14,19 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .controllers import _Controller, check_same_model
-from .outcome import OUTCOMES, classify_failure
-from .trajectory import _positive, require_trajectory
-from ..core.errors import (ArgumentError, ArgumentTypeError, OutcomeWarning, SingularityError,
-                           WorkspaceError)
+from ..core.errors import (
+    ArgumentError,
+    ArgumentTypeError,
+    OutcomeWarning,
+    SingularityError,
+    WorkspaceError,
+)
 from ..core.model_file import payload_increments
 from ..core.status import Status
 from ..core.task import is_rr_point
+from .controllers import _Controller, check_same_model
+from .outcome import OUTCOMES, classify_failure
+from .trajectory import _positive, require_trajectory
 
 __all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "plant_truth",
            "plant_vector", "rmse", "theta_truth", "check_trajectory", "pose_measures",

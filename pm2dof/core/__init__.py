@@ -13,8 +13,13 @@
 Imports the standard library and NumPy only: never SymPy, CasADi, matplotlib, Dask or
 pyarrow (tests/test_layers.py checks it).
 """
-from .errors import (ClosureError, ModelFileError, SingularityError, StaleGeneratedCodeError,
-                     WorkspaceError)
+from .errors import (
+                     ClosureError,
+                     ModelFileError,
+                     SingularityError,
+                     StaleGeneratedCodeError,
+                     WorkspaceError,
+)
 from .layout import Layout
 from .model import Model, load_model
 from .model_file import ModelSpec, read_model_file

@@ -15,16 +15,38 @@ from pathlib import Path
 import numpy as np
 
 from . import build, paths
-from .derivatives import (DERIVATIVE_FUNCTIONS, DerivativeMethods, ForwardDynamicsJacobians,
-                          InverseDynamicsJacobians, SampledStepJacobians)
-from .errors import (ArgumentError, ArgumentTypeError, ClosureError, NonFiniteError,
-                     SingularityError, StaleGeneratedCodeError, WorkspaceError)
-from .task import (ENERGY_FUNCTIONS, is_rr_point, require_generated,
-                   spec_task_names)
+from .derivatives import (
+    DERIVATIVE_FUNCTIONS,
+    DerivativeMethods,
+    ForwardDynamicsJacobians,
+    InverseDynamicsJacobians,
+    SampledStepJacobians,
+)
+from .errors import (
+    ArgumentError,
+    ArgumentTypeError,
+    ClosureError,
+    NonFiniteError,
+    SingularityError,
+    StaleGeneratedCodeError,
+    WorkspaceError,
+)
 from .layout import Layout
-from .model_file import (FRICTION_MODELS, INERTIAL, PLATFORM_PARAMS, inertia_problem,
-                         platform_inertia_problem, read_model_file)
+from .model_file import (
+    FRICTION_MODELS,
+    INERTIAL,
+    PLATFORM_PARAMS,
+    inertia_problem,
+    platform_inertia_problem,
+    read_model_file,
+)
 from .status import Status
+from .task import (
+    ENERGY_FUNCTIONS,
+    is_rr_point,
+    require_generated,
+    spec_task_names,
+)
 
 try:
     from . import _cbind

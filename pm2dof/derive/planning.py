@@ -57,7 +57,9 @@ Functions (prefix ``<name>_``), all per grid point:
 The largest s_d with a non-empty interval is found by bisection with :data:`BISECTIONS`
 halvings (:data:`MVC_BISECTIONS` for the maximum-velocity curve): the stage sets are intervals
 [0, s_d*] for these robots, and the bisection keeps the feasible end, so the result never
-exceeds the true bound. For a friction
+exceeds the true bound. The backward step reads the bisection's result off its lattice next to
+an estimate (Newton steps from the hint) where 4 evaluations show it there, and bisects only
+where they do not (:meth:`_Stage.at_hint`, a CasADi switch). For a friction
 law affine in |v| (Coulomb + viscous, eq. 2) each facet is a quadratic in s_d whose
 coefficients are computed once per point; other laws (Stribeck, smooth sign) are evaluated at
 every halving.
@@ -69,8 +71,8 @@ import sympy as sp
 
 from .dynamics import _friction
 from .factored import solve_small, task_gravity, task_inertia_coriolis
-from .model_functions import assembly_guard
 from .layouts import Layout
+from .model_functions import assembly_guard
 from .splits import _cross, _dot, min_max, min_norm
 from .symbols import sgn
 from .to_casadi import Converter
@@ -196,7 +198,7 @@ class _PathFriction:
         sigma = sp.symbols(f"psigma1:{n + 1}", real=True)
         names = FRICTION_MODELS[spec.friction]
         exprs = [_friction(spec.friction, v[i], sym.leg_params(i, names),
-                           spec.friction_constants).replace(sgn, lambda *_: sigma[i])
+                           spec.friction_constants).replace(sgn, lambda *_: sigma[i])  # noqa: B023
                  for i in range(n)]
         for i, e in enumerate(exprs):
             odd = sp.simplify(e + e.subs({v[i]: -v[i], sigma[i]: -sigma[i]}, simultaneous=True))
@@ -313,6 +315,41 @@ class _Stage:
             lo, hi = ca.if_else(c, mid, lo), ca.if_else(c, hi, mid)
         return ca.if_else(okt, v_top, lo), ok0
 
+    def at_hint(self, v_top, predicate, halvings, hint, estimate):
+        """:meth:`largest`'s result with a ``hint`` where it can be read off the lattice (of
+        the hint's bracket) next to ``estimate`` (a closer guess of the answer): r the largest
+        multiple of q at or below the estimate. Returns (found, sd, holds at 0): found where
+        the predicate holds at v_top (sd = v_top), or where the hint's bracket converges and
+        holds r' in {r - q, r, r + q} with the predicate true at r' and false at r' + q: for a
+        predicate true on [0, sd*] the largest lattice point where it holds, :meth:`largest`'s
+        bisection's own result, bit for bit, from 6 evaluations instead of halvings + 4."""
+        ok0, okt = predicate(ca.SX(0)), predicate(v_top)
+        h = ca.fmax(hint, 1e-30)
+        qh = 2 ** (ca.floor(ca.log(h) / math.log(2)) - LATTICE_BITS)
+        a = ca.floor(h * (1 - HINT_SPAN) / qh) * qh
+        b = ca.ceil((h * (1 + HINT_SPAN) + HINT_FLOOR) / qh) * qh
+        r = ca.floor(estimate / qh) * qh
+        p = [predicate(r + k * qh) for k in (-1, 0, 1, 2)]
+        inside = ca.logic_and(ca.logic_and(r - qh >= a, r + 2 * qh <= b),
+                              b - a <= 2.0 ** halvings * qh)
+        edge = [ca.logic_and(p[k], ca.logic_not(p[k + 1])) for k in range(3)]
+        sd = ca.if_else(edge[1], r, ca.if_else(edge[0], r - qh, r + qh))
+        hit = ca.logic_and(inside, ca.logic_or(ca.logic_or(edge[0], edge[1]), edge[2]))
+        return ca.logic_or(okt, hit), ca.if_else(okt, v_top, sd), ok0
+
+
+def _verified(name, fast, step):
+    """``step`` (x, input, params) -> x_next as an MX Function that first evaluates ``fast``
+    (same inputs) -> (found, x_next) and returns its x_next where found, else ``step``'s (a
+    CasADi switch: the generated C evaluates the full step only where the fast one failed)."""
+    sx = [ca.SX.sym(f"a{i}", step.size1_in(i)) for i in range(3)]
+    v = ca.SX.sym("v")
+    switch = ca.Function.conditional(f"{name}_or", [ca.Function(f"{name}_found", [v] + sx, [v])],
+                                     ca.Function(f"{name}_bisect", [v] + sx, [step(*sx)]))
+    mx = [ca.MX.sym(f"m{i}", step.size1_in(i)) for i in range(3)]
+    found, value = fast(*mx)
+    return ca.Function(name, mx, [switch(ca.if_else(found, 0, 1), value, *mx)])
+
 
 def _reusing(name, step, layout, names_in, names_out):
     """``step`` (x, input, params) -> outputs (``input``: the layout's ``pair``, or the whole
@@ -321,8 +358,10 @@ def _reusing(name, step, layout, names_in, names_out):
     with the same state (x == x_in): x_next = x_out, the step's own result, bit for bit,
     without evaluating it (a CasADi switch: the generated C evaluates one branch), and y =
     [x, 0, ...] (the caller has the previous one). Outputs (x_next, y)."""
-    sx = [ca.SX.sym(f"a{i}", n) for i, n in enumerate((step.size1_in(0), layout.size,
-                                                         step.size1_in(2)))]
+    mx = not step.is_a("SXFunction")
+    sym = ca.MX.sym if mx else ca.SX.sym
+    sx = [sym(f"a{i}", n) for i, n in enumerate((step.size1_in(0), layout.size,
+                                                   step.size1_in(2)))]
     U = layout.split(sx[1])
     arg = sx[1] if step.size1_in(1) == layout.size else U["pair"]
     full = step(sx[0], arg, sx[2])
@@ -396,8 +435,29 @@ def path_functions(d, prefix):
     # the hint: braking from xl at the arrival end's deceleration (exact where that binds)
     hint = ca.sqrt(ca.fmin(ca.fmax(xl - 2 * delta * L_next, 0), 4 * ca.fmax(xl, 0) + 1))
     y_b, ok0 = own.largest(v_top, reaches, BISECTIONS, hint=hint)
-    x_b = ca.if_else(ca.logic_and(ok0, xl >= 0), ca.fmin(y_b * y_b, own.st["x_cap"]), -1)
-    step = ca.Function(f"{prefix}_path_backward_step", [x, pair_v, prm], [x_b])
+
+    def landing(y, ok0):
+        return ca.if_else(ca.logic_and(ok0, xl >= 0), ca.fmin(y * y, own.st["x_cap"]), -1)
+    step = ca.Function(f"{prefix}_path_backward_step", [x, pair_v, prm], [landing(y_b, ok0)])
+    # the estimate: two Newton steps from the hint on braking as hard as both ends allow,
+    # landing on xl (where that binds: the own end's deceleration, which falls with the speed,
+    # binds as well as the arrival end's; elsewhere the fast step fails and bisects)
+    sdv = ca.SX.sym("sd")
+    brake = sdv * sdv + 2 * delta * ca.fmax(own.bounds(sdv)[0], L_next) - xl
+    newton = ca.Function("newton", [sdv, x, pair_v, prm],
+                         [sdv - brake / ca.jacobian(brake, sdv)])
+    estimate = newton(newton(hint, x, pair_v, prm), x, pair_v, prm)
+    # where the own facets' maximum-velocity curve binds below that (L > U there): two Newton
+    # steps on U - L from it
+    Lv, Uv = own.bounds(sdv)[:2]
+    room = ca.Function("room", [sdv, pair_v, prm],
+                       [Uv - Lv, sdv - (Uv - Lv) / ca.jacobian(Uv - Lv, sdv)])
+    gap, after = room(estimate, pair_v, prm)
+    estimate = ca.if_else(gap < 0, room(after, pair_v, prm)[1], estimate)
+    found, y_f, ok0_f = own.at_hint(v_top, reaches, BISECTIONS, hint, estimate)
+    fast = ca.Function(f"{prefix}_path_backward_hint", [x, pair_v, prm],
+                       [found, landing(y_f, ok0_f)])
+    step = _verified(f"{prefix}_path_backward_step", fast, step)
     out.append(_reusing(f"{prefix}_path_backward", step, lays["path_backward_input"],
                         ["x_next_max", "input", "params"], ["x_max", "y"]))
 

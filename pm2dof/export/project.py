@@ -14,7 +14,7 @@ import re
 from importlib import resources
 from pathlib import Path
 
-from ..control.controllers import APDController, CTCController, NAController, SPLITS
+from ..control.controllers import SPLITS, APDController, CTCController, NAController
 from ..core import paths
 from ..core.errors import ArgumentError, OutputError, StaleGeneratedCodeError
 from ..core.layout import Layout

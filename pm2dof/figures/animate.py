@@ -3,11 +3,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..infra.results import output_path
-from ..core.errors import ArgumentError, OutputError
-from ..control.trajectory import model_move
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
+from ..control.trajectory import model_move
+from ..core.errors import ArgumentError, OutputError
+from ..infra.results import output_path
 from .experiment import COLORS, LABELS, _plt, sci
 from .style import label_bases, legend_outside
 

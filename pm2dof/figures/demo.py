@@ -2,8 +2,13 @@
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..analysis.experiment import (format_sensitivity, format_table3, is_paper_robot,
-                                   sensitivity, table3_json)
+from ..analysis.experiment import (
+    format_sensitivity,
+    format_table3,
+    is_paper_robot,
+    sensitivity,
+    table3_json,
+)
 from ..infra.results import provenance, write_json
 from .experiment import experiment_figures
 
@@ -106,6 +111,7 @@ def _demo_study(m, out, progress):
     the study file's model is the demo's. Returns (RPE rows, figure paths, random plants) or
     None."""
     import shutil
+
     from ..studies import read_study, resolve_study, run_study
     from ..studies.report import columns_of, summarise
     from ..studies.store import read_results

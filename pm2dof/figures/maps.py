@@ -3,8 +3,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..control.trajectory import line_moves, model_move
 from ..analysis.maps import maps_summary, workspace_maps
+from ..control.trajectory import line_moves, model_move
 from ..infra.results import provenance, save_figure, write_json
 from .experiment import _plt
 from .style import label_bases, log_ticks, wrap

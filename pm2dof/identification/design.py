@@ -214,7 +214,7 @@ def _casadi_openblas():
         pass
     try:
         lib = ctypes.CDLL(str(path))
-        lib.openblas_get_num_threads, lib.openblas_set_num_threads
+        lib.openblas_get_num_threads, lib.openblas_set_num_threads  # noqa: B018
     except (OSError, AttributeError):
         return None
     return lib

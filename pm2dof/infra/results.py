@@ -36,8 +36,8 @@ def provenance(model):
     """Where a result came from: the pm2dof version, the model file and the generated code
     (paths, hashes, whether shipped with pm2dof), git commit (only from a checkout), versions,
     command line."""
-    from ..core.version import __version__
     from ..core.paths import is_shipped
+    from ..core.version import __version__
     out = {
         "model": model.name,
         "model_file": model.spec.path,

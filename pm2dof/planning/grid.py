@@ -76,23 +76,25 @@ def _check_forward(p, s, x, sdd, L, U, Z, h, x_mvc):
                     f"{at(p, s, k)}: {what}; a finer grid may avoid it")
 
 
-def _mvc(model, rows, prm):
+def _mvc(problem, rows):
     out = np.empty(len(rows))
     if len(rows):
-        model.function("path_mvc").map(len(rows), np.ascontiguousarray(rows), prm, out)
+        problem.model.function("path_mvc").map(len(rows), np.ascontiguousarray(rows),
+                                               problem.params, out)
     return out
 
 
-def passes(model, stage, arrive, prm, s, p, prev=None):
-    """The maximum-velocity curve and the backward and forward passes over the grid ``s`` (K,)
-    (``stage``, ``arrive``: :func:`pm2dof.planning.stages.link`; ``p`` (K, 2) its points, for
-    messages). ``prev``: what this returned as ``memo`` for an earlier grid of which ``s`` is a
-    refinement (its points a subset), or None: everything computed.
+def passes(problem, stage, arrive, s, p, prev=None):
+    """The maximum-velocity curve and the backward and forward passes of ``problem``
+    (:class:`.problem.PlanProblem`) over the grid ``s`` (K,) (``stage``, ``arrive``:
+    :func:`pm2dof.planning.stages.link`; ``p`` (K, m) its points, for messages). ``prev``:
+    what this returned as ``memo`` for an earlier grid of which ``s`` is a refinement (its
+    points a subset), or None: everything computed.
 
     Returns (x (K,), sdd (K,), x_mvc (K,), relaxed, memo): relaxed the intervals whose arrival
     facets could not hold together with the departing ones (only the departing ones are met
     there: collocation's O(delta) error)."""
-    K = len(s)
+    K, model, prm = len(s), problem.model, problem.params
     sl = model.layout("path_stage").slices
     if prev is None:
         src = np.full(K, -1)
@@ -116,7 +118,7 @@ def passes(model, stage, arrive, prm, s, p, prev=None):
     x_mvc = np.empty(K)
     x_mvc[same_st] = prev["x_mvc"][src[same_st]] if prev else 0.0
     fresh = np.flatnonzero(~same_st)
-    x_mvc[fresh] = _mvc(model, stage[fresh], prm)
+    x_mvc[fresh] = _mvc(problem, stage[fresh])
     bad = np.flatnonzero(x_mvc < 0)
     if bad.size:
         k = int(bad[0])
@@ -136,7 +138,7 @@ def passes(model, stage, arrive, prm, s, p, prev=None):
     reuse = other & same_ar & same_st
     cap[reuse] = prev["cap"][src[reuse]] if prev else 0.0
     todo = np.flatnonzero(other & ~reuse)
-    cap[todo] = _mvc(model, arrive[todo], prm)
+    cap[todo] = _mvc(problem, arrive[todo])
     fin = model.layout("path_forward_input")
     inp = np.zeros((K - 1, fin.size))             # per interval: pair, x_next_max, memo
     F = fin.unpack(inp)
@@ -216,18 +218,18 @@ def passes(model, stage, arrive, prm, s, p, prev=None):
 
 
 class Grid:
-    """The planner's grid of ``path`` (arc lengths ``s`` with ``ev`` = path.evaluate(s)) and
-    each point's coefficients; :meth:`insert` adds points, :meth:`solve` runs the passes,
-    :meth:`between` checks the intervals' midpoints and :meth:`samples` the trajectory, each
-    recomputing only what the points added since its previous call can change."""
+    """The planner's grid of ``problem``'s path (:class:`.problem.PlanProblem`; arc lengths
+    ``s`` with ``ev`` = path.evaluate(s)) and each point's coefficients; :meth:`insert` adds
+    points, :meth:`solve` runs the passes, :meth:`check_midpoints` checks the intervals'
+    midpoints and :meth:`check_samples` the trajectory, each recomputing only what the points
+    added since its previous call can change."""
 
-    def __init__(self, model, path, s, ev, w, theta, split, prm):
-        self.model, self.path, self.w, self.theta, self.split, self.prm = \
-            model, path, w, theta, split, prm
+    def __init__(self, problem, s, ev):
+        self.problem = problem
         self.s, self.ev = s, tuple(np.ascontiguousarray(e) for e in ev)
-        self.base, outs = point_stages(model, s, self.ev, theta, w, split)
+        self.base, outs = point_stages(problem, s, self.ev)
         self.v1 = outs["v1"]
-        self.left = junction_left(model, path, theta, w, split)
+        self.left = junction_left(problem)
         self.memo = self.mid = None
         self.stage = self.arrive = None
 
@@ -235,8 +237,9 @@ class Grid:
         """Add the arc lengths ``new`` (each inside an interval; ``ev_new`` their
         path.evaluate, if known). Raises WorkspaceError or SingularityError at one that is not
         clear (:func:`point_stages`)."""
-        ev_new = tuple(np.ascontiguousarray(e) for e in (ev_new or self.path.evaluate(new)))
-        base, outs = point_stages(self.model, new, ev_new, self.theta, self.w, self.split)
+        ev_new = tuple(np.ascontiguousarray(e)
+                       for e in (ev_new or self.problem.path.evaluate(new)))
+        base, outs = point_stages(self.problem, new, ev_new)
         order = np.argsort(np.concatenate([self.s, new]), kind="stable")
         self.s = np.concatenate([self.s, new])[order]
         self.ev = tuple(np.concatenate([e, f])[order] for e, f in zip(self.ev, ev_new))
@@ -244,33 +247,34 @@ class Grid:
         self.v1 = np.concatenate([self.v1, outs["v1"]])[order]
 
     def stops(self):
-        return np.searchsorted(self.s, self.path.stops) if len(self.path.stops) else \
-            np.array([], dtype=int)
+        stops = self.problem.path.stops
+        return np.searchsorted(self.s, stops) if len(stops) else np.array([], dtype=int)
 
     def solve(self):
         """The passes on the current grid (:func:`passes`, from the previous solve's results):
         (x, sdd, x_mvc, relaxed)."""
-        self.stage, self.arrive = link(self.model, self.path, self.s, self.base, self.v1,
-                                       self.stops(), self.left, self.split)
-        x, sdd, x_mvc, relaxed, self.memo = passes(self.model, self.stage, self.arrive,
-                                                   self.prm, self.s, self.ev[0], self.memo)
+        self.stage, self.arrive = link(self.problem, self.s, self.base, self.v1, self.stops(),
+                                       self.left)
+        x, sdd, x_mvc, relaxed, self.memo = passes(self.problem, self.stage, self.arrive,
+                                                   self.s, self.ev[0], self.memo)
         return x, sdd, x_mvc, relaxed
 
     def _ratio(self, stage, sd, sdd):
         """max_i |tau_i| / tau_max,i of the split at the rows ``stage`` (M, size)."""
-        M, n = len(stage), self.model.n_legs
+        pb = self.problem
+        M, n = len(stage), pb.model.n_legs
         tau_mn, ratio = np.empty((M, n)), np.empty(M)
         if M:
-            self.model.function("path_torques").map(M, np.ascontiguousarray(stage), sd,
-                                                    np.ascontiguousarray(sdd), self.prm,
-                                                    self.w, None, tau_mn, None, ratio)
-        if self.split == "min_norm":
-            ratio = np.abs(tau_mn / self.w).max(axis=1)
+            pb.model.function("path_torques").map(M, np.ascontiguousarray(stage), sd,
+                                                  np.ascontiguousarray(sdd), pb.params,
+                                                  pb.tau_max, None, tau_mn, None, ratio)
+        if pb.split == "min_norm":
+            ratio = np.abs(tau_mn / pb.tau_max).max(axis=1)
         return ratio
 
-    def between(self, x, sdd):
+    def check_midpoints(self, x, sdd):
         """The plan between its grid points: each interval's midpoint (K-1,), its p, p', p''
-        and the excess of the split's torques over the limits there, max_i |tau_i| / w_i - 1
+        and the excess of the split's torques over the limits there, max_i |tau_i| / tau_max,i - 1
         (K-1,), at s_d^2 = (x_k + x_k+1) / 2 (linear in s on the interval) and the interval's
         s_dd. Intervals of the previous call reuse its midpoint's coefficients, and its excess
         where their speeds and acceleration are the same."""
@@ -285,7 +289,7 @@ class Grid:
             hit = (c["a"][j] == a) & (c["b"][j] == b)
         else:
             j, hit = np.zeros(M, dtype=int), np.zeros(M, dtype=bool)
-        ev = tuple(np.empty((M, self.path.dim)) for _ in range(3))
+        ev = tuple(np.empty((M, e.shape[1])) for e in self.ev)
         stage = np.empty((M, self.base.shape[1]))
         if hit.any():
             for e, o in zip(ev, c["ev"]):
@@ -293,11 +297,10 @@ class Grid:
             stage[hit] = c["stage"][j[hit]]
         miss = np.flatnonzero(~hit)
         if miss.size:
-            ev_miss = self.path.evaluate(mid[miss])
+            ev_miss = self.problem.path.evaluate(mid[miss])
             for e, f in zip(ev, ev_miss):
                 e[miss] = f
-            stage[miss] = point_stages(self.model, mid[miss], ev_miss, self.theta, self.w,
-                                       self.split, check=False)[0]
+            stage[miss] = point_stages(self.problem, mid[miss], ev_miss, check=False)[0]
         excess = np.empty(M)
         same = hit & _same_rows(key, c["key"][j]) if c is not None else hit
         excess[same] = c["excess"][j[same]] if c is not None else 0.0
@@ -309,16 +312,15 @@ class Grid:
                     "excess": excess}                                       # point names it
         return mid, ev, excess
 
-    def samples(self, x, sdd, period):
+    def check_samples(self, x, sdd, period):
         """The trajectory at ``period`` (what ``simulate`` receives) and its torques: (profile,
         trajectory, excess (N,) of the split's torques over the limits at each sample before
         the end, interval (N,) the grid interval of each)."""
         sdot = np.sqrt(x)
         profile = PathProfile(self.s, sdot, sdd, grid_times(self.s, sdot))
-        traj, (s, sd, u), ev = sampled(self.path, profile, period)
+        traj, (s, sd, u), ev = sampled(self.problem.path, profile, period)
         moving = np.flatnonzero(traj.t < profile.duration)
-        st = point_stages(self.model, s[moving], tuple(e[moving] for e in ev), self.theta,
-                          self.w, self.split, check=False)[0]
+        st = point_stages(self.problem, s[moving], tuple(e[moving] for e in ev), check=False)[0]
         excess = self._ratio(st, sd[moving], u[moving]) - 1.0
         excess[~np.isfinite(excess)] = np.inf
         k = np.clip(np.searchsorted(profile.t, traj.t[moving], side="right") - 1, 0,

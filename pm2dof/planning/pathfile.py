@@ -26,15 +26,16 @@ A shipped path is named by its stem (``pm2dof plan --path pick_and_place``); any
 :class:`pm2dof.PlanError`) naming the file and listing every problem, each with its key and
 reason, segments numbered from 1, as model and study files (:class:`pm2dof.core.validate.Problems`).
 """
+from dataclasses import dataclass
 from pathlib import Path
 
 from ..core.errors import InputFileError, PlanError
-from ..core.validate import Problems, entry
 from ..core.task import orientation_length
+from ..core.validate import Problems, entry
 from .paths import TaskPath
 
 __all__ = ["SHIPPED_PATHS", "shipped_paths", "resolve_path_file", "read_path_file",
-           "model_move_path", "PathFileError"]
+           "model_move_path", "PathFileError", "NamedPath"]
 
 SHIPPED_PATHS = Path(__file__).resolve().parent / "shipped"
 _SEGMENTS = {"line": ("start", "end"), "arc": ("center", "radius", "angle0", "angle1"),
@@ -69,12 +70,35 @@ class PathFileError(PlanError, InputFileError):
 _KINEMATIC = ("v_max", "a_max", "j_max")
 
 
+@dataclass(frozen=True)
+class NamedPath:
+    """A path to plan, with its name and kinematic limits: what :func:`read_path_file` reads
+    from a path file and :func:`model_move_path` makes of a model file's move.
+
+    Attributes
+    ----------
+    name : str
+    path : TaskPath
+    kinematic : dict or None
+        v_max (m/s), a_max (m/s^2), j_max (m/s^3) of the kinematic S-curve, or None.
+    file : pathlib.Path or None
+        The path file (None: a model file's line move).
+    description : str
+    """
+
+    name: str
+    path: TaskPath
+    kinematic: object
+    file: object
+    description: str = ""
+
+
 def read_path_file(ref, relative_to=None):
     """Read a path file (``relative_to``: see :func:`resolve_path_file`).
 
     Returns
     -------
-    dict
+    NamedPath
         ``name``, ``description``, ``path`` (TaskPath), ``kinematic`` (dict of v_max, a_max,
         j_max, or None), ``file`` (pathlib.Path).
 
@@ -124,13 +148,12 @@ def read_path_file(ref, relative_to=None):
         except PlanError as exc:
             pr.add("segments", str(exc))
     pr.raise_if_any()
-    return {"name": str(name), "description": str(description), "path": joined,
-            "kinematic": kin, "file": path}
+    return NamedPath(str(name), joined, kin, path, str(description))
 
 
 def model_move_path(model, name):
-    """The model file's move ``[trajectories.<name>]`` as a path: ``{name, path (TaskPath),
-    kinematic (v_max, a_max, j_max, or None), file}``.
+    """The model file's move ``[trajectories.<name>]`` as a :class:`NamedPath` (``name``,
+    ``path``, ``kinematic``: v_max, a_max, j_max or None, ``file``: its path file or None).
 
     A line move (``start``, ``end``) is :meth:`TaskPath.line`; a path move (``path = "..."``: a
     shipped path's name or a path file relative to the model file) is that file's path, with
@@ -145,11 +168,11 @@ def model_move_path(model, name):
     lim = {k: float(mv[k]) for k in ("v_max", "a_max", "j_max") if k in mv}
     if "path" not in mv:
         line = TaskPath.line(mv["start"], mv["end"], orientation_length(spec))   # (x, y[, phi])
-        return {"name": name, "path": line, "kinematic": lim, "file": None}
+        return NamedPath(name, line, lim, None)
     f = read_path_file(mv["path"], relative_to=Path(spec.path).parent)
-    kin = lim if len(lim) == 3 else ({**(f["kinematic"] or {}), **lim} or None)
+    kin = lim if len(lim) == 3 else ({**(f.kinematic or {}), **lim} or None)
     if kin is not None and len(kin) != 3:
         raise PlanError(f"{spec.path}: [trajectories.{name}] gives {sorted(lim)} and its path "
-                        f"file {f['file']} no [kinematic] table: give all of v_max, a_max, "
+                        f"file {f.file} no [kinematic] table: give all of v_max, a_max, "
                         f"j_max")
-    return {"name": name, "path": f["path"], "kinematic": kin, "file": f["file"]}
+    return NamedPath(name, f.path, kin, f.file)

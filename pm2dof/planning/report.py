@@ -22,8 +22,8 @@ __all__ = ["plan_paths", "closed_loop", "csv_text", "format_report", "model_move
 
 
 def model_moves(model):
-    """The model file's moves as paths: [{name, path, kinematic}] (line moves as lines, path
-    moves from their path files)."""
+    """The model file's moves as paths: [:class:`.pathfile.NamedPath`] (line moves as lines,
+    path moves from their path files)."""
     from .pathfile import model_move_path
     return [model_move_path(model, name) for name in model.spec.trajectories]
 
@@ -35,15 +35,16 @@ def _at_samples(plan):
     return plan.trajectory.profile.evaluate(plan.trajectory.t)
 
 
-def _peaks(model, plan, w):
+def _peaks(model, plan, tau_lim):
     """Peak |tau_i| of a timed plan for each split by inverse dynamics at its samples."""
-    r = path_torques(model, plan.path, *_at_samples(plan), None, w)
+    r = path_torques(model, plan.path, *_at_samples(plan), None, tau_lim)
     return {sp: np.abs(r[sp]).max(axis=0).tolist() for sp in ("min_norm", "min_max")}
 
 
 def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_norm", "min_max"),
                theta=None, smooth=False, tau_rate=None):
-    """Plan every item ({name, path, kinematic}) kinematically and time-optimally.
+    """Plan every item (:class:`.pathfile.NamedPath`: name, path, kinematic limits)
+    kinematically and time-optimally.
 
     Returns
     -------
@@ -52,24 +53,25 @@ def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_n
         [...]}`` (``provenance``: :func:`plan_provenance`) and the Plan objects
         ``{(name, method_or_split): Plan}``.
     """
-    w = limits(model, tau_max, 1.0)
-    res = {"model": model.name, "tau_max": w.tolist(), "margin": float(margin), "grid": int(grid),
-           "provenance": plan_provenance(model, w, margin, splits, theta), "paths": []}
+    tau_lim = limits(model, tau_max, 1.0)
+    res = {"model": model.name, "tau_max": tau_lim.tolist(), "margin": float(margin),
+           "grid": int(grid),
+           "provenance": plan_provenance(model, tau_lim, margin, splits, theta), "paths": []}
     plans = {}
     for item in items:
-        path = item["path"]
-        row = {"name": item["name"], "length_m": path.length, "kinds": list(path.kinds),
+        path = item.path
+        row = {"name": item.name, "length_m": path.length, "kinds": list(path.kinds),
                "stops_m": path.stops.tolist()}
-        kin = item.get("kinematic")
+        kin = item.kinematic
         if kin:
             kp = plan_kinematic(path, kin["v_max"], kin["a_max"], kin["j_max"],
                                 model.spec.sensing["sample_period"])
-            peaks = _peaks(model, kp, w)
+            peaks = _peaks(model, kp, tau_lim)
             row["kinematic"] = {**kin, "duration_s": kp.duration, "tau_peak_N_m": peaks,
-                                "within_limits": {sp: bool(np.all(np.array(v) <= w))
+                                "within_limits": {sp: bool(np.all(np.array(v) <= tau_lim))
                                                   for sp, v in peaks.items()}}
-            kp.info["tau_max_actuators"] = w.tolist()     # the limits its CSV reports
-            plans[item["name"], "kinematic"] = kp
+            kp.info["tau_max_actuators"] = tau_lim.tolist()     # the limits its CSV reports
+            plans[item.name, "kinematic"] = kp
         feasible, refused = [], []
         for split in splits:
             try:
@@ -79,7 +81,7 @@ def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_n
                 row[split] = {"infeasible": str(exc)}
                 continue
             feasible.append(split)
-            plans[item["name"], split] = p
+            plans[item.name, split] = p
             row[split] = {"duration_s": p.duration, "tau_peak_N_m": p.tau_peak.tolist(),
                           "compute_ms": p.compute_time_s * 1e3, "grid": p.info["grid"],
                           "max_speed_m_s": float(p.sdot.max())}
@@ -92,7 +94,7 @@ def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_n
             from .smooth import plan_smooth
             for split in feasible:
                 sp = plan_smooth(model, path, tau_max, split, theta, margin, tau_rate=tau_rate)
-                plans[item["name"], f"smooth_{split}"] = sp
+                plans[item.name, f"smooth_{split}"] = sp
                 row[f"smooth_{split}"] = {
                     "duration_s": sp.duration, "strict_duration_s": sp.info["strict_duration"],
                     "grid": sp.info["grid"], "tau_rate": sp.info["tau_rate"],
@@ -113,13 +115,13 @@ def closed_loop(model, path, tau_max=None, split="min_max", margins=(1.0, 0.9), 
         One per margin: ``margin``, ``duration_s`` and for ``na``/``apd``: ``rmse_m``,
         ``max_error_m``, ``tau_peak_N_m``, ``saturated`` (samples clipped), ``outcome``.
     """
-    w = limits(model, tau_max, 1.0)
+    tau_lim = limits(model, tau_max, 1.0)
     out = []
     for m in margins:
-        plan = plan_time_optimal(model, path, w, split, None, m, grid)
+        plan = plan_time_optimal(model, path, tau_lim, split, None, m, grid)
         row = {"margin": float(m), "duration_s": plan.duration}
         for law, cls in (("na", NAController), ("apd", APDController)):
-            ctrl = cls(model, split=split, tau_max=w)
+            ctrl = cls(model, split=split, tau_max=tau_lim)
             r = simulate(model, ctrl, plan.trajectory, settle_time=settle_time)
             n = r.n_move
             row[law] = {"rmse_m": float(r.rmse), "max_error_m": float(np.max(np.hypot(
@@ -164,8 +166,8 @@ def csv_text(model, plan, prov=None):
     n = model.n_legs
     cols = np.column_stack([tr.t, s, sd, sdd, tr.xd, tr.xd_dot, tr.xd_ddot, tau])
     head = "t,s,sdot,sddot,x,y,vx,vy,ax,ay," + ",".join(f"tau{i + 1}" for i in range(n))
-    w = plan.info.get("tau_max_actuators", model.spec.limits["tau_max"])
-    info = {**plan_provenance(model, w, plan.margin, [split], theta, prov), "split": split}
+    tau_lim = plan.info.get("tau_max_actuators", model.spec.limits["tau_max"])
+    info = {**plan_provenance(model, tau_lim, plan.margin, [split], theta, prov), "split": split}
     meta = "".join(f"# {k} = {info[k]}\n" for k in CSV_KEYS if k in info)
     meta += (f"# method = {plan.method}\n# duration = {plan.duration!r}\n"
              f"# sample_period = {tr.period!r}\n# units: s, m, m/s, m/s^2, N m\n")
@@ -238,22 +240,26 @@ def run_plan(model, *, path=None, move=None, tau_max=None, margin=1.0, grid=1000
         from .pathfile import read_path_file
         items = [read_path_file(path)]
     else:
-        items = [mv for mv in model_moves(model) if move in (None, mv["name"])]
+        items = [mv for mv in model_moves(model) if move in (None, mv.name)]
         if not items:
             raise ArgumentError(f"--move {move!r}: the model file's moves are "
                                 f"{sorted(model.spec.trajectories)}")
     kin = kinematic or {}
-    for it in items:
-        if any(v is not None for v in kin.values()):
-            base = it["kinematic"] or dict(model_moves(model)[-1]["kinematic"])
-            it["kinematic"] = {k: (base[k] if v is None else v) for k, v in kin.items()}
+    if any(v is not None for v in kin.values()):     # the options override the item's limits
+        from dataclasses import replace
+
+        def given(it):
+            base = it.kinematic or model_moves(model)[-1].kinematic
+            return replace(it, kinematic={k: (base[k] if v is None else v)
+                                          for k, v in kin.items()})
+        items = [given(it) for it in items]
     res, plans = plan_paths(model, items, tau_max, margin, grid, splits, smooth=smooth,
                             tau_rate=tau_rate)
     loops = {}
     if closed_loop_margins is not None:
         for it in items:
-            loops[it["name"]] = closed_loop(model, it["path"], tau_max, splits[-1],
-                                            closed_loop_margins, grid)
+            loops[it.name] = closed_loop(model, it.path, tau_max, splits[-1],
+                                         closed_loop_margins, grid)
         res["closed_loop"] = loops
     return res, plans, loops
 

@@ -25,7 +25,8 @@ import numpy as np
 
 from ..core.errors import PlanError
 from .check import require
-from .plan import Plan, PathProfile, grid_times, sample
+from .plan import PathProfile, Plan, grid_times, sample
+from .problem import PlanProblem
 from .stages import limits, params, stages
 from .topp import plan_time_optimal
 
@@ -35,14 +36,14 @@ RISE_TIME = 0.02   # s: the default tau_rate lets each torque swing 0 -> tau_max
 MAX_ITER = 100_000  # the most IPOPT iterations max_iter may ask for
 
 
-def _friction(model, stage, prm, w, speeds):
+def _friction(problem, stage, speeds):
     """g(y) (K, m) at each grid point for each speed in ``speeds`` (list of (K,) arrays)."""
-    K = len(stage)
+    K, model = len(stage), problem.model
     out = []
     for y in speeds:
         u = np.empty((K, model.dof))
-        model.function("path_torques").map(K, stage, np.ascontiguousarray(y), 0.0, prm, w, u,
-                                           None, None, None)
+        model.function("path_torques").map(K, stage, np.ascontiguousarray(y), 0.0,
+                                           problem.params, problem.tau_max, u, None, None, None)
         out.append(u)
     return out
 
@@ -79,10 +80,10 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
             not 1 <= max_iter <= MAX_ITER:
         raise PlanError(f"max_iter must be a whole number of IPOPT iterations from 1 to "
                         f"{MAX_ITER}, got {max_iter!r}")
-    w = limits(model, tau_max, margin)
+    tau_lim = limits(model, tau_max, margin)
     n, m = model.n_legs, model.dof
     try:
-        rate = (w / RISE_TIME if tau_rate is None
+        rate = (tau_lim / RISE_TIME if tau_rate is None
                 else np.array(tau_rate, dtype=float).ravel() * np.ones(n))
     except (TypeError, ValueError):
         rate = np.full(n, np.nan)
@@ -93,16 +94,17 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     strict = plan_time_optimal(model, path, tau_max, split, theta, margin, grid)
     s = strict.s
     prm, th = params(model, strict.info["theta"])
+    problem = PlanProblem(model, path, tau_lim, th, split, prm)
     stops = np.searchsorted(s, path.stops)
-    stage, coef = stages(model, path, s, w, th, split, stops)
+    stage, coef = stages(problem, s, stops)
     K = len(s)
     delta = np.diff(s)
     lay = model.layout("path_stage")
     ends = (stage[:-1], coef["arrive"][1:])          # the facets leaving s_k, arriving s_k+1
     affine = True
     for rows in ends:
-        g0, g1, gh = _friction(model, rows, prm, w, [np.zeros(K - 1), np.ones(K - 1),
-                                                     np.full(K - 1, 0.5)])
+        g0, g1, gh = _friction(problem, rows, [np.zeros(K - 1), np.ones(K - 1),
+                                               np.full(K - 1, 0.5)])
         b = lay.unpack(rows)["b"]
         g1, gh = g1 - b, gh - 0.25 * b
         scale = max(1.0, float(np.abs(g1 - g0).max()))
@@ -117,12 +119,12 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
         R = lay.unpack(rows)
         a, b, S = R["a"], R["b"], R["S"].reshape(K - 1, n, m)
         if affine:
-            g0, g1 = _friction(model, rows, prm, w, [np.zeros(K - 1), np.ones(K - 1)])
+            g0, g1 = _friction(problem, rows, [np.zeros(K - 1), np.ones(K - 1)])
             fr = [ca.DM(g0[:, i]) + ca.DM(g1[:, i] - b[:, i] - g0[:, i]) * yk for i in range(m)]
         else:
             ext = ca.external(f"{model.name}_path_torques", model.library,
                               {"enable_fd": True, "fd_method": "central"}).map(K - 1)
-            U = ext(ca.DM(rows.T), yk.T, ca.DM.zeros(1, K - 1), ca.DM(prm), ca.DM(w))[0]
+            U = ext(ca.DM(rows.T), yk.T, ca.DM.zeros(1, K - 1), ca.DM(prm), ca.DM(tau_lim))[0]
             fr = [U[i, :].T - ca.DM(b[:, i]) * yk * yk for i in range(m)]
         force = [ca.DM(a[:, i]) * u + ca.DM(b[:, i]) * yk * yk + fr[i] for i in range(m)]
         if split == "min_max":
@@ -134,7 +136,7 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
             tau = ca.horzcat(*[sum((ca.DM(P[:, j, i]) * force[i] for i in range(1, m)),
                                    ca.DM(P[:, j, 0]) * force[0]) for j in range(n)])
         for j in range(n):
-            opti.subject_to(opti.bounded(-w[j], tau[:, j], w[j]))
+            opti.subject_to(opti.bounded(-tau_lim[j], tau[:, j], tau_lim[j]))
         taus.append(tau)
     if split == "min_max":
         opti.set_initial(taus[0], strict.tau[:-1])
@@ -172,7 +174,7 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     stats = opti.stats()
     return Plan(path=path, method="smooth", split=split, duration=float(t[-1]), s=s, sdot=sdot,
                 sddot=sdd, t=t, max_velocity=strict.max_velocity, tau=tau_v,
-                tau_peak=np.abs(tau_v).max(axis=0), tau_max=w, margin=float(margin),
+                tau_peak=np.abs(tau_v).max(axis=0), tau_max=tau_lim, margin=float(margin),
                 trajectory=traj, compute_time_s=time.perf_counter() - t0,
                 info={"grid": K, "theta": th.tolist(), "strict_duration": strict.duration,
                       "tau_max_actuators": strict.info["tau_max_actuators"],

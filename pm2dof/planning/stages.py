@@ -78,17 +78,17 @@ def limits(model, tau_max, margin):
     if not (math.isfinite(m) and 0 < m <= 1):
         raise PlanError(f"margin must be a number in (0, 1], the fraction of tau_max the plan "
                         f"may use (< 1 leaves headroom for feedback), got {margin!r}")
-    w = model.spec.limits["tau_max"] if tau_max is None else tau_max
+    tau = model.spec.limits["tau_max"] if tau_max is None else tau_max
     try:
-        w = np.array(w, dtype=float).ravel()
+        tau = np.array(tau, dtype=float).ravel()
     except (TypeError, ValueError):
         raise PlanError(f"tau_max must be {n} torques in N m, got {tau_max!r}") from None
-    if w.size == 1:
-        w = np.full(n, w[0])
-    if w.shape != (n,) or not np.isfinite(w).all() or (w <= 0).any():
+    if tau.size == 1:
+        tau = np.full(n, tau[0])
+    if tau.shape != (n,) or not np.isfinite(tau).all() or (tau <= 0).any():
         raise PlanError(f"tau_max must be one value or {n} finite torques > 0 N m (one per "
                         f"actuator), got {np.asarray(tau_max).tolist()}")
-    return w * m
+    return tau * m
 
 
 def params(model, theta):
@@ -99,15 +99,16 @@ def params(model, theta):
     return model.layout("path_params").pack(v_top=V_TOP, theta=th), th
 
 
-def _coefficients(model, p, dp, ddp, theta, w, split):
-    """One ``path_coefficients`` map over the points: dict of its outputs (the other split's
-    polygon not computed)."""
+def _coefficients(problem, p, dp, ddp):
+    """One ``path_coefficients`` map over the points of ``problem``'s path at (p, dp, ddp):
+    dict of its outputs (the other split's polygon not computed)."""
+    model, split = problem.model, problem.split
     K, f = len(p), model.function("path_coefficients")
     other = "min_max" if split == "min_norm" else "min_norm"
     # a, b (g with gravity) (m,), S (n m,), v1 (n,), the facets N (m F,), h (F,), sing (2,)
     outs = {k: (None if k.endswith(other) else np.empty((K, size)))
             for k, size in zip(f.names_out, f.sizes_out)}
-    f.map(K, p, dp, ddp, theta, w, *outs.values())
+    f.map(K, p, dp, ddp, problem.theta, problem.tau_max, *outs.values())
     return outs
 
 
@@ -119,17 +120,18 @@ def _fill(model, stage, outs, split):
             st[key][:] = outs[key]
 
 
-def point_stages(model, s, evaluated, theta, w, split, check=True):
-    """The ``path_stage`` vectors (K, size) at the arc lengths ``s`` (K,) with their
-    ``path.evaluate(s)`` (p, dp, ddp): the facets and coefficients of each point alone (rho,
-    delta and x_cap unset: zero), with the outputs of ``path_coefficients`` (dict). With
-    ``check``, raises WorkspaceError or SingularityError at the first point out of reach or too
-    close to a singularity (the thresholds of :func:`pm2dof.control.simulate.poses_clear`);
+def point_stages(problem, s, evaluated, check=True):
+    """The ``path_stage`` vectors (K, size) of ``problem`` (:class:`.problem.PlanProblem`) at
+    the arc lengths ``s`` (K,) with their ``path.evaluate(s)`` (p, dp, ddp): the facets and
+    coefficients of each point alone (rho, delta and x_cap unset: zero), with the outputs of
+    ``path_coefficients`` (dict). With ``check``, raises WorkspaceError or SingularityError at
+    the first point out of reach or too close to a singularity (the thresholds of :func:`pm2dof.control.simulate.poses_clear`);
     without, such rows are NaN."""
+    model, split = problem.model, problem.split
     if split not in SPLITS:
         raise PlanError(f"split must be one of {list(SPLITS)}, got {split!r}")
     p, dp, ddp = (np.ascontiguousarray(x) for x in evaluated)
-    outs = _coefficients(model, p, dp, ddp, theta, w, split)
+    outs = _coefficients(problem, p, dp, ddp)
     if check:
         sing = outs["sing"]
         k = first_bad(model, sing)
@@ -142,15 +144,16 @@ def point_stages(model, s, evaluated, theta, w, split, check=True):
     return stage, outs
 
 
-def stages(model, path, s, w, theta, split, stops=(), evaluated=None):
+def stages(problem, s, stops=(), evaluated=None):
     """Evaluate the path's dynamics at the arc lengths ``s`` (K,) in one C call.
 
     Parameters
     ----------
-    w : ndarray (n,)
-        Torque limits, N m (margin applied).
-    theta : ndarray (5n,)
-    split : {"min_norm", "min_max"}
+    problem : PlanProblem
+        The model, path, torque limits (margin applied), theta and split
+        (:class:`pm2dof.planning.problem.PlanProblem`).
+    s : ndarray (K,)
+        Arc lengths, m.
     stops : array_like of int
         Grid indices where the robot must be at rest (x_cap = 0).
     evaluated : tuple of ndarray, optional
@@ -173,34 +176,35 @@ def stages(model, path, s, w, theta, split, stops=(), evaluated=None):
     WorkspaceError, SingularityError
         At the first grid point out of reach or too close to a singularity.
     """
-    p, dp, ddp = (np.ascontiguousarray(x) for x in (evaluated or path.evaluate(s)))
-    K, n = len(s), model.n_legs
-    base, outs = point_stages(model, s, (p, dp, ddp), theta, w, split)
-    left = junction_left(model, path, theta, w, split)
-    stage, arrive = link(model, path, s, base, outs["v1"], stops, left, split)
+    p, dp, ddp = (np.ascontiguousarray(x) for x in (evaluated or problem.path.evaluate(s)))
+    K, n, split = len(s), problem.model.n_legs, problem.split
+    base, outs = point_stages(problem, s, (p, dp, ddp))
+    left = junction_left(problem)
+    stage, arrive = link(problem, s, base, outs["v1"], stops, left)
     coef = {"a": outs["a"], "b": outs["b"], "S": outs["S"].reshape(K, n, 2), "v1": outs["v1"],
             "N": outs[f"N_{split}"].reshape(K, n, 2), "h": outs[f"h_{split}"],
             "sing": outs["sing"], "p": p, "dp": dp, "ddp": ddp, "arrive": arrive}
     return stage, coef
 
 
-def junction_left(model, path, theta, w, split):
+def junction_left(problem):
     """The ``path_coefficients`` outputs (dict) at the path's interior breakpoints with the
     preceding piece (the path's left limit there), in order; None if it has none."""
-    bp = path.breakpoints[1:-1]
+    bp = problem.path.breakpoints[1:-1]
     if not bp.size:
         return None
-    pl, dpl, ddpl = (np.ascontiguousarray(x) for x in path.evaluate(bp, "left"))
-    return _coefficients(model, pl, dpl, ddpl, theta, w, split)
+    pl, dpl, ddpl = (np.ascontiguousarray(x) for x in problem.path.evaluate(bp, "left"))
+    return _coefficients(problem, pl, dpl, ddpl)
 
 
-def link(model, path, s, base, v1, stops, left, split):
+def link(problem, s, base, v1, stops, left):
     """The ``path_stage`` rows of the grid ``s`` (K,) from its points' own rows ``base`` (K,
     size; :func:`point_stages`) and their v1 (K, n): (stage, arrive), both (K, size). stage:
     rho (a joint reverses on [s_k, s_k+1]), delta = s_k+1 - s_k and x_cap (0 at the grid indices
     ``stops``) set; arrive: the facets at each point for the interval that ends there (that
     interval's rho; at an interior breakpoint the preceding piece's, ``left`` of
     :func:`junction_left`). Every row depends on its point and its neighbours alone."""
+    model = problem.model
     lay = model.layout("path_stage")
     stage = base.copy()
     st = lay.unpack(stage)
@@ -213,11 +217,12 @@ def link(model, path, s, base, v1, stops, left, split):
     st["x_cap"][list(stops)] = 0.0
     arrive = stage.copy()
     lay.unpack(arrive)["rho"][1:] = st["rho"][:-1]
-    bp = path.breakpoints[1:-1]
+    bp = problem.path.breakpoints[1:-1]
     junction = np.flatnonzero(np.isin(s, bp))
     if left is not None and junction.size:      # arriving at a breakpoint: the preceding piece
         which = np.searchsorted(bp, s[junction])
         part = arrive[junction]
-        _fill(model, part, {k: None if v is None else v[which] for k, v in left.items()}, split)
+        _fill(model, part, {k: None if v is None else v[which] for k, v in left.items()},
+              problem.split)
         arrive[junction] = part
     return stage, arrive

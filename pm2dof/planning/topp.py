@@ -32,6 +32,7 @@ from ..core.errors import PlanError
 from .check import check_path, require
 from .grid import Grid, at, passes
 from .plan import Plan
+from .problem import PlanProblem
 from .stages import GRID_MAX, grid_points, limits, params
 
 __all__ = ["plan_time_optimal", "plan_on_grid", "solve_profile"]
@@ -49,14 +50,15 @@ RESOLUTION, RESOLVE_ROUNDS = 0.05, 40
 BETWEEN_TOL, SAMPLE_TOL, ROUNDS = 1e-3, 1e-4, 16
 
 
-def solve_profile(model, stage, prm, s, coef):
-    """The three passes over one whole grid (``stage``, ``coef``: :func:`pm2dof.planning.stages.stages`). Returns
-    (x (K,), sdd (K,), x_mvc (K,), relaxed): the intervals whose arrival facets could not hold
-    together with the departing ones (only the departing ones are met there)."""
-    return passes(model, stage, coef["arrive"], prm, s, coef["p"])[:4]
+def solve_profile(problem, stage, s, coef):
+    """The three passes of ``problem`` (:class:`pm2dof.planning.problem.PlanProblem`) over one
+    whole grid (``stage``, ``coef``: :func:`pm2dof.planning.stages.stages`). Returns (x (K,),
+    sdd (K,), x_mvc (K,), relaxed): the intervals whose arrival facets could not hold together
+    with the departing ones (only the departing ones are met there)."""
+    return passes(problem, stage, coef["arrive"], s, coef["p"])[:4]
 
 
-def _resolve(grid):
+def _refine_until_resolved(grid):
     """Halve every interval over which an active joint or the tangent turns by more than
     RESOLUTION rad (|S p'| (rad/m) and |p''| (1/m), the larger of both ends, times the
     length): the path's dynamics must not change much between two grid points, where no limit
@@ -174,16 +176,17 @@ def _unresolved(s, mid, ev_mid, excess, over, attempt):
 def _plan(model, path, tau_max, split, theta, margin, grid, given):
     t0 = time.perf_counter()
     require(model, path)
-    w = limits(model, tau_max, margin)
+    tau = limits(model, tau_max, margin)
     s = grid_points(path, grid) if given is None else given
     prm, th = params(model, theta)
+    problem = PlanProblem(model, path, tau, th, split, prm)
     check_path(model, path)             # every 0.5 mm, between the grid points too
-    g = Grid(model, path, s, path.evaluate(s), w, th, split, prm)
+    g = Grid(problem, s, path.evaluate(s))
     period = model.spec.sensing["sample_period"]
     refine = given is None
     for attempt in range(ROUNDS + 1):
         if refine:
-            _resolve(g)
+            _refine_until_resolved(g)
         x, sdd, x_mvc, relaxed = g.solve()
         s = g.s
         if refine and relaxed.size and attempt < REFINE:   # split where the arrival facets fail
@@ -193,10 +196,10 @@ def _plan(model, path, tau_max, split, theta, margin, grid, given):
             g.insert(np.concatenate([(s[ks, None] + np.diff(s)[ks, None]
                                       * (np.arange(1, n) / n)).ravel() for ks, n in parts]))
             continue
-        mid, ev_mid, excess = g.between(x, sdd)
+        mid, ev_mid, excess = g.check_midpoints(x, sdd)
         over = np.flatnonzero(excess > BETWEEN_TOL)
         if not over.size or not refine:
-            profile, traj, sample_excess, interval = g.samples(x, sdd, period)
+            profile, traj, sample_excess, interval = g.check_samples(x, sdd, period)
         if not over.size:
             over = np.unique(interval[sample_excess > SAMPLE_TOL])
         if not over.size or not refine:
@@ -208,13 +211,14 @@ def _plan(model, path, tau_max, split, theta, margin, grid, given):
     K, n = len(s), model.n_legs
     outs = (np.empty((K, model.dof)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
     sdd_pt = np.concatenate([sdd[:-1], sdd[-2:-1]])
-    model.function("path_torques").map(K, g.stage, sdot, sdd_pt, prm, w, *outs)
-    tau = outs[1] if split == "min_norm" else outs[2]
+    model.function("path_torques").map(K, g.stage, sdot, sdd_pt, prm, tau, *outs)
+    tau_grid = outs[1] if split == "min_norm" else outs[2]
     stops = g.stops()
     return Plan(path=path, method="time_optimal", split=split, duration=profile.duration, s=s,
                 sdot=sdot, sddot=sdd, t=profile.t,
-                max_velocity=np.sqrt(np.maximum(x_mvc, 0.0)), tau=tau,
-                tau_peak=np.abs(tau).max(axis=0), tau_max=w, margin=float(margin),
+                max_velocity=np.sqrt(np.maximum(x_mvc, 0.0)), tau=tau_grid,
+                tau_peak=np.abs(tau_grid).max(axis=0), tau_max=problem.tau_max,
+                margin=float(margin),
                 trajectory=traj, compute_time_s=time.perf_counter() - t0,
                 info={"grid": K, "stops": s[stops].tolist(), "theta": th.tolist(),
                       "tau_max_actuators": limits(model, tau_max, 1.0).tolist(),

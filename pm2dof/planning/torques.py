@@ -25,8 +25,8 @@ def path_torques(model, path, s, sd, sdd, theta=None, tau_max=None):
         min-max split's max_i |tau_i| / tau_max,i; ``tau_max`` default ``[limits]``).
     """
     th = np.ascontiguousarray(model.theta_nominal if theta is None else theta, dtype=float)
-    w = np.ascontiguousarray(model.spec.limits["tau_max"] if tau_max is None else tau_max,
-                             dtype=float)
+    tau_lim = np.ascontiguousarray(model.spec.limits["tau_max"] if tau_max is None else tau_max,
+                                   dtype=float)
     s, sd, sdd = (np.ascontiguousarray(a, dtype=float).ravel() for a in (s, sd, sdd))
     K, n, m = len(s), model.n_legs, model.dof
     p, dp, ddp = path.evaluate(s)
@@ -51,7 +51,8 @@ def path_torques(model, path, s, sd, sdd, theta=None, tau_max=None):
     outs = (np.empty((K, n)), np.empty((K, n)), np.empty(K), np.empty((K, n)), np.empty(K),
             np.empty((K, 2)))                         # the last: the two singularity measures
     ctl = model.spec.control
-    model.function("torque_splits").map(K, q, u, w, np.asarray(ctl["preload_sign"], float),
+    model.function("torque_splits").map(K, q, u, tau_lim,
+                                        np.asarray(ctl["preload_sign"], float),
                                         np.asarray(ctl["preload"], float), *outs)
     return {"u": u, "min_norm": outs[0], "min_max": outs[1], "min_max_ratio": outs[2]}
 

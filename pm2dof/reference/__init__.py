@@ -10,8 +10,25 @@ meeting at a point only: :meth:`.model.Geometry.of_model` refuses other mechanis
 (UnsupportedMechanismError).
 """
 from . import control
-from .model import (A, C, Ce, Geometry, H, M, Me, S, W, Wdot, Y, fk, forward_dynamics,
-                    forward_dynamics_joint, friction, ik, task_friction)
+from .model import (
+                    A,
+                    C,
+                    Ce,
+                    Geometry,
+                    H,
+                    M,
+                    Me,
+                    S,
+                    W,
+                    Wdot,
+                    Y,
+                    fk,
+                    forward_dynamics,
+                    forward_dynamics_joint,
+                    friction,
+                    ik,
+                    task_friction,
+)
 
 __all__ = ["control", "Geometry", "ik", "fk", "H", "A", "W", "S", "Wdot", "M", "C", "friction",
            "Me", "Ce", "task_friction", "Y", "forward_dynamics", "forward_dynamics_joint"]

@@ -34,9 +34,9 @@ from typing import Any
 
 import numpy as np
 
-from . import model as ref
 from ..core.layout import Layout
 from ..core.status import Status
+from . import model as ref
 
 __all__ = [
     "STATUS",

@@ -5,10 +5,10 @@
 into Parquet by store) -> ``study_report`` (report). ``pm2dof study run|report|bench`` are the
 commands. Nothing here is imported by ``import pm2dof`` until used.
 """
-from .spec import SHIPPED_STUDIES, Study, StudyFileError, check_study, read_study, resolve_study
 from .evaluate import rollout_setup, run_chunk
-from .store import StudyOutError, read_results
 from .runner import StudyRunError, run_study
+from .spec import SHIPPED_STUDIES, Study, StudyFileError, check_study, read_study, resolve_study
+from .store import StudyOutError, read_results
 
 __all__ = ["Study", "StudyFileError", "StudyOutError", "StudyRunError", "read_study",
            "check_study", "run_study", "run_chunk", "rollout_setup", "read_results",

@@ -22,10 +22,10 @@ import time
 import tracemalloc
 
 from ..control.simulate import simulate
+from . import resolve_study
 from .evaluate import rollout_setup, run_chunk
 from .runner import _close, connect, run_study
 from .spec import read_study
-from . import resolve_study
 
 __all__ = ["study_bench", "format_study_bench", "bench_study"]
 
@@ -75,7 +75,7 @@ def study_bench(quick=False, progress=None):
 
     def plain():
         t0 = time.perf_counter()
-        for model, ctrl, traj, truth, counts, th0, _ in setups:
+        for model, ctrl, traj, truth, counts, _th0, _ in setups:
             simulate(model, ctrl, traj, truth=truth, encoder_counts_per_rev=counts)
         return n_plain / (time.perf_counter() - t0)
     res["rollouts_per_s_plain_loop"] = _median(plain, repeats)

@@ -14,8 +14,13 @@ Runs on the workers; imports no Dask or pyarrow (the client turns columns into P
 import numpy as np
 
 from ..control.controllers import APDController, CTCController, NAController
-from ..control.simulate import (batch_inputs, check_trajectory, completed_samples, plant_vector,
-                                theta_truth)
+from ..control.simulate import (
+    batch_inputs,
+    check_trajectory,
+    completed_samples,
+    plant_vector,
+    theta_truth,
+)
 from ..control.trajectory import line, model_move
 from ..core.model import load_model
 from ..core.status import Status
@@ -196,9 +201,9 @@ def model_problems(pr, model, variants, moves):
     """Record in ``pr`` (a :class:`~pm2dof.core.validate.Problems`) every controller variant
     its controller refuses and every move that is unreachable or singular on ``model``.
     ``variants`` None: the [[controllers]] entries had problems of their own (not checked)."""
+    from ..control.trajectory import TrajectoryError
     from ..core.errors import SingularityError, WorkspaceError
     from ..core.validate import entry
-    from ..control.trajectory import TrajectoryError
     T = model.spec.sensing["sample_period"]
     try:   # an LQR variant is checked on the first move (a bad move is reported below)
         first = make_trajectory(model, moves[0], T)

@@ -216,6 +216,7 @@ def run_report(out):
     Returns (summary dict, {column: ndarray}, study.json dict): the summary is the command's
     ``--json`` (the text: :func:`format_report`), the rest is for the figures."""
     from pathlib import Path
+
     from ..infra.results import write_json
     from .spec import GRID_KEYS, StudyFileError
     info, table = read_results(out)

@@ -6,8 +6,14 @@ import pytest
 from scipy.optimize import linprog
 
 import pm2dof
-from pm2dof.analysis.maps import (FIELDS, capability, maps_summary, min_norm_radius,
-                                  workspace_maps, zonotope_inradius)
+from pm2dof.analysis.maps import (
+    FIELDS,
+    capability,
+    maps_summary,
+    min_norm_radius,
+    workspace_maps,
+    zonotope_inradius,
+)
 from pm2dof.cli import main
 
 

@@ -4,9 +4,9 @@ import json
 import numpy as np
 
 import pm2dof
-from pm2dof.control.trajectory import model_move
 from pm2dof.analysis.splits import split_comparison, tau_max_sweep
 from pm2dof.cli import main
+from pm2dof.control.trajectory import model_move
 
 
 def test_min_max_uses_less_peak_torque_and_delays_saturation():

@@ -7,9 +7,8 @@ import math
 
 import pytest
 
-from pm2dof import bench
+from pm2dof import bench, load_model
 from pm2dof.bench import baselines
-from pm2dof import load_model
 
 
 @pytest.fixture(scope="module")

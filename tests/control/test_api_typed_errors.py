@@ -7,8 +7,16 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof import (ArgumentError, ArgumentTypeError, CTCController, LQRController,
-                    NAController, APDController, TrajectoryError, simulate)
+from pm2dof import (
+    APDController,
+    ArgumentError,
+    ArgumentTypeError,
+    CTCController,
+    LQRController,
+    NAController,
+    TrajectoryError,
+    simulate,
+)
 
 
 @pytest.fixture(scope="module")

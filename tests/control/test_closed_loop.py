@@ -40,12 +40,11 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.reference import model as ref
-from pm2dof.reference import control as rc
-from pm2dof import APDController, NAController
-from pm2dof.core.layout import Layout
-from pm2dof import SimResult, plant_truth, rmse, simulate, theta_truth
+from pm2dof import APDController, NAController, SimResult, plant_truth, rmse, simulate, theta_truth
 from pm2dof.control.trajectory import paper_move
+from pm2dof.core.layout import Layout
+from pm2dof.reference import control as rc
+from pm2dof.reference import model as ref
 
 G = ref.Geometry.paper()
 N_LEGS = 3

@@ -21,8 +21,15 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof import (APDController, GainError, ModelMismatchError, NAController, OutcomeWarning,
-                    paper_move, simulate)
+from pm2dof import (
+    APDController,
+    GainError,
+    ModelMismatchError,
+    NAController,
+    OutcomeWarning,
+    paper_move,
+    simulate,
+)
 from pm2dof.control.simulate import plant_vector, rollout_inputs
 
 M = pm2dof.load_model()

@@ -270,6 +270,7 @@ def test_min_max_with_parallel_legs_is_exact(n):
     direction), so two torques are free at the dual optimum. The derivation's min_max, as a
     CasADi function, against HiGHS; equal S^T tau and max |tau_i|/w_i = t* to rounding."""
     import casadi as ca
+
     from pm2dof.derive.splits import min_max
     Ssym, usym, wsym = ca.SX.sym("S", n, 2), ca.SX.sym("u", 2), ca.SX.sym("w", n)
     f = ca.Function("mm", [Ssym, usym, wsym], list(min_max(Ssym, usym, wsym)))

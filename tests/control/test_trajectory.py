@@ -4,8 +4,14 @@ import math
 import numpy as np
 import pytest
 
-from pm2dof.control.trajectory import (PAPER_MOVES, SCurve, Trajectory, TrajectoryError, line,
-                               paper_move)
+from pm2dof.control.trajectory import (
+    PAPER_MOVES,
+    SCurve,
+    Trajectory,
+    TrajectoryError,
+    line,
+    paper_move,
+)
 
 ruckig = pytest.importorskip("ruckig")  # test-only reference implementation
 

@@ -606,11 +606,11 @@ def test_non_finite_inputs(toy, value, text):
     ):
         toy(x, np.zeros(4), 1.0, out, None, None)
     np.testing.assert_array_equal(out, 5.0)  # nothing was evaluated
-    with pytest.raises(ValueError, match=rf"input 's' \(#2\) has a non-finite value at index 0"):
+    with pytest.raises(ValueError, match=r"input 's' \(#2\) has a non-finite value at index 0"):
         toy(np.zeros(3), np.zeros(4), value, out, None, None)
     y = np.zeros((2, 2))
     y[1, 1] = value
-    with pytest.raises(ValueError, match=rf"input 'y' \(#1\) has a non-finite value at index 3"):
+    with pytest.raises(ValueError, match=r"input 'y' \(#1\) has a non-finite value at index 3"):
         toy(np.zeros(3), y, 1.0, out, None, None)
 
 

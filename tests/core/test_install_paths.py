@@ -5,7 +5,6 @@ The full install (wheel and sdist in fresh virtual environments, used from an em
 ``tests/install/smoke.sh`` (``make check-install``, run by CI); these are the in-process parts.
 """
 import json
-import os
 import shutil
 import subprocess
 import sys

@@ -18,8 +18,8 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.control.simulate import pose_measures
+from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.reference import model as ref
 
 EPS = np.finfo(float).eps

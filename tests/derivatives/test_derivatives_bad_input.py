@@ -7,7 +7,6 @@ import pytest
 
 import pm2dof
 
-
 MODELS = ("shang2010", "fivebar")
 
 

@@ -11,7 +11,6 @@ import numpy as np
 import pytest
 
 import pm2dof
-
 from pm2dof.bench.baselines import random_cases, reference_geometry
 from pm2dof.linear import LQRController, lqr_gains
 from pm2dof.reference import control as rc

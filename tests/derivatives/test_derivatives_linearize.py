@@ -15,7 +15,6 @@ import pytest
 import pm2dof
 
 
-
 @pytest.fixture(scope="module")
 def m():
     return pm2dof.load_model()

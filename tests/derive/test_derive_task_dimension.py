@@ -20,14 +20,13 @@ import casadi as ca
 import numpy as np
 import pytest
 import sympy as sp
+import toy_platform
 
 from pm2dof.core.model_file import read_model_file
 from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.derive.model_functions import Derivation
 from pm2dof.derive.planning import facet_count
 from pm2dof.derive.run import derive_functions, derive_layouts
-
-import toy_platform
 
 XE = np.array([0.3, 0.4, 0.2])
 XED = np.array([0.2, -0.3, 0.5])
@@ -157,7 +156,8 @@ class _Ref:
     def q(self, xe):
         return np.asarray(self._ik(*xe), dtype=float).ravel()
 
-    def __call__(self, name, xe, xed, theta, tau=np.zeros(toy_platform.N_LEGS)):
+    def __call__(self, name, xe, xed, theta, tau=None):
+        tau = np.zeros(toy_platform.N_LEGS) if tau is None else tau
         f = {"T": self._T, "V": self._V}.get(name) or self._f[name]
         return np.asarray(f(*self.q(xe), *xe, *xed, *theta, *tau), dtype=float)
 
@@ -397,6 +397,7 @@ def test_type_two_measure_in_three_dimensions(toy):
 
 def test_other_task_dimensions_are_refused():
     import types
+
     from pm2dof.derive.run import DeriveError
     spec = types.SimpleNamespace(name="four", task_names=("x", "y", "z", "phi"))
     with pytest.raises(DeriveError, match="'four': task dimension 4"):
@@ -406,6 +407,7 @@ def test_other_task_dimensions_are_refused():
 
 def test_manifest_names_the_task_coordinates(toy):
     import json
+
     from pm2dof.core.paths import SHIPPED_GENERATED
     from pm2dof.derive.run import task_names
     assert task_names(toy[0]) == ("x", "y", "phi")

@@ -42,8 +42,8 @@ import pytest
 import sympy
 
 import pm2dof
-from pm2dof.core.paths import PACKAGE, SHIPPED_GENERATED, SHIPPED_MODELS
 from pm2dof.core.model_file import read_model_file
+from pm2dof.core.paths import PACKAGE, SHIPPED_GENERATED, SHIPPED_MODELS
 
 TOL = 1e-12
 DPS = 30

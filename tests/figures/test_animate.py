@@ -31,8 +31,10 @@ def test_frames_are_the_full_redraws_and_drawn_once(monkeypatch):
     background drawn once and only the moving artists per frame; each is the figure's full
     redraw to one grey level at a few antialiased text pixels."""
     import io
+
     import numpy as np
     from matplotlib.backends.backend_agg import FigureCanvasAgg
+
     from pm2dof.control.controllers import NAController
     from pm2dof.control.simulate import simulate
     from pm2dof.control.trajectory import model_move

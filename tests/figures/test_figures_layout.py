@@ -13,15 +13,14 @@ import pytest
 
 import pm2dof
 from pm2dof.analysis.experiment import repeated_runs, table3
-from pm2dof.control.trajectory import model_move
 from pm2dof.analysis.maps import workspace_maps
 from pm2dof.analysis.splits import tau_max_sweep
+from pm2dof.control.trajectory import model_move
 from pm2dof.figures import animate, experiment, maps, planning, splits, studies
 from pm2dof.planning.pathfile import read_path_file
 from pm2dof.studies import SHIPPED_STUDIES, read_study, run_chunk
 from pm2dof.studies.report import summarise
 from pm2dof.studies.spec import GRID_KEYS
-
 
 TOL = 1.0        # px
 PNG_DPI = 110    # pm2dof.infra.results.save_figure
@@ -330,7 +329,7 @@ def test_planning_figures(paper, plt, name):
     the kinematic S-curve): the legends once covered base A3, the map and hundreds of pixels
     of the torque curves."""
     m = paper[0]
-    path = read_path_file(name)["path"]
+    path = read_path_file(name).path
     w = np.full(m.n_legs, 6.0)
     plans = {sp: pm2dof.plan_time_optimal(m, path, tau_max=w, split=sp, grid=300)
              for sp in ("min_norm", "min_max")}

@@ -8,14 +8,27 @@ import pytest
 
 import pm2dof
 from pm2dof import cli
-from pm2dof.identification.design import (IPOPT_OPTIONS, _casadi_openblas, check_excitation,
-                                          design_excitation, objective_logdet, random_start,
-                                          regressor_condition, sample_function)
-from pm2dof.identification.signals import (ExcitationError, FourierExcitation, load_excitation,
-                                           multisine, trajectory_of, write_excitation)
-from pm2dof.infra.progress import Progress
 from pm2dof.identification.base import base_parameters
+from pm2dof.identification.design import (
+    IPOPT_OPTIONS,
+    _casadi_openblas,
+    check_excitation,
+    design_excitation,
+    objective_logdet,
+    random_start,
+    regressor_condition,
+    sample_function,
+)
 from pm2dof.identification.log import read_log
+from pm2dof.identification.signals import (
+    ExcitationError,
+    FourierExcitation,
+    load_excitation,
+    multisine,
+    trajectory_of,
+    write_excitation,
+)
+from pm2dof.infra.progress import Progress
 
 LIMITS = {"v_max": 0.4, "a_max": 6.0, "tau_fraction": 0.3}
 SMALL = dict(base_hz=0.5, harmonics=4, periods=1, samples=80, constraint_samples=200, **LIMITS)

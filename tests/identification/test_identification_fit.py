@@ -23,14 +23,13 @@ from scipy import optimize, signal
 
 import pm2dof
 from pm2dof import cli
+from pm2dof.control.simulate import plant_truth, plant_vector, simulate, theta_truth
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.consistent import consistent_theta, physical_constraints
 from pm2dof.identification.excitation import excite, measured_angles
-from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
-from pm2dof.identification.fit import (Identification, identify_log, lowpass, weighted_ls,
-                                      zero_phase)
+from pm2dof.identification.fit import Identification, identify_log, lowpass, weighted_ls, zero_phase
 from pm2dof.identification.log import IdentLog, LogError, read_log
-from pm2dof.control.simulate import plant_truth, plant_vector, simulate, theta_truth
+from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
 
 
 @pytest.fixture(scope="module")
@@ -267,6 +266,7 @@ def test_optimised_excitation_meets_the_issue_targets_on_the_model_plant(m, base
     """examples/excitation_shang2010.toml on the model file's plant (17-bit encoders, Stribeck
     excess): the issue's accuracy targets, and both controllers track better with the result."""
     from pathlib import Path
+
     from pm2dof.analysis.experiment import seeded_table3
     path = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
     log = excite(m, load_excitation(path, m))

@@ -23,10 +23,10 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof import cli
-from pm2dof.infra import results
 from pm2dof.core.model_file import read_model_file
+from pm2dof.core.paths import SHIPPED_MODELS
+from pm2dof.infra import results
 from pm2dof.infra.results import provenance, save_figure, write_atomic, write_json
 
 REPO = Path(__file__).resolve().parents[2]

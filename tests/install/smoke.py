@@ -13,7 +13,6 @@ Usage: python smoke.py TABLE3_OF_THE_CHECKOUT.json
 """
 import hashlib
 import json
-import os
 import subprocess
 import sys
 from pathlib import Path

@@ -130,7 +130,7 @@ def test_path_file_problems_are_counted_from_1_and_listed_at_once(tmp_path):
 def test_shipped_paths_read():
     for name in shipped_paths():
         r = read_path_file(name)
-        assert r["path"].length > 0 and r["kinematic"]
+        assert r.path.length > 0 and r.kinematic
 
 
 def test_both_splits_report_the_feasible_one(tmp_path, capsys):

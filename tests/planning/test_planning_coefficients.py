@@ -7,6 +7,7 @@ from scipy.spatial import ConvexHull
 import pm2dof
 from pm2dof.analysis.maps import zonotope_inradius
 from pm2dof.planning import TaskPath
+from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import V_TOP, params, stages
 from pm2dof.planning.torques import path_torques
 
@@ -100,7 +101,7 @@ def test_torques_along_a_path_match_inverse_dynamics(model, random_theta):
     w = np.full(model.n_legs, 20.0)
     s = np.linspace(0, path.length, 30)
     prm, th = params(model, th)
-    stage, _ = stages(model, path, s, w, th, "min_max")
+    stage, _ = stages(PlanProblem(model, path, w, th, "min_max", prm), s)
     sd, sdd = rng.uniform(0.01, 1.0, 30), rng.normal(0, 10, 30)
     K, n = len(s), model.n_legs
     outs = (np.empty((K, 2)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
@@ -152,7 +153,7 @@ def test_maximum_velocity_curve_by_brute_force(split):
     w = np.full(3, 8.0)
     s = np.linspace(0, path.length, 7)[1:-1]
     prm, th = params(m, None)
-    stage, coef = stages(m, path, s, w, th, split)
+    stage, coef = stages(PlanProblem(m, path, w, th, split, prm), s)
     stage[:, m.layout("path_stage").slices["rho"]] = 0.0    # each joint's own Coulomb sign
     x = np.empty(len(s))
     m.function("path_mvc").map(len(s), stage, prm, x)
@@ -178,7 +179,7 @@ def test_reversing_joint_is_flagged_and_costs_both_signs():
     s = np.linspace(0, path.length, 400)
     prm, th = params(m, None)
     w = np.full(3, 10.0)
-    stage, coef = stages(m, path, s, w, th, "min_max")
+    stage, coef = stages(PlanProblem(m, path, w, th, "min_max", prm), s)
     rho = stage[:, m.layout("path_stage").slices["rho"]]
     flips = np.diff(np.sign(coef["v1"]), axis=0) != 0
     assert flips.any(), "no joint reverses on this path"

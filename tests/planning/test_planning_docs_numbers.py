@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.planning.pathfile import read_path_file
+from pm2dof.planning.pathfile import NamedPath, read_path_file
 from pm2dof.planning.report import closed_loop, plan_paths
 
 PAGE = (Path(__file__).resolve().parents[2] / "docs" / "results-planning.md").read_text()
@@ -29,8 +29,7 @@ def _item(m, name):
     if name == "line":
         mv = m.spec.trajectories["high"]
         kin = {k: mv[k] for k in ("v_max", "a_max", "j_max")}
-        return {"name": name, "path": pm2dof.TaskPath.line(mv["start"], mv["end"]),
-                "kinematic": kin}
+        return NamedPath(name, pm2dof.TaskPath.line(mv["start"], mv["end"]), kin, None)
     return read_path_file(name)
 
 
@@ -81,7 +80,7 @@ def test_the_numbers_quoted_beside_the_table(table):
 def test_the_closed_loop_numbers(m, sci):
     """The table at 6 N m on the paper's line (NA and APD, min-max, margins 1.0 0.9 0.8), the
     errors at 30 N m, and NA on the pick-and-place cycle at 6 N m."""
-    line = _item(m, "line")["path"]
+    line = _item(m, "line").path
     rows = closed_loop(m, line, 6.0, "min_max", (1.0, 0.9, 0.8))
     for r in rows:
         na, apd = r["na"], r["apd"]
@@ -94,7 +93,7 @@ def test_the_closed_loop_numbers(m, sci):
     assert (f"At 30 N·m ({fast[0]['duration_s']:.4f} s) the errors are "
             f"{sci(fast[0]['na']['rmse_m'], 1)} m (margin 1.0) and "
             f"{sci(fast[1]['na']['rmse_m'], 1)} m (0.9)" in FLAT)
-    pick = closed_loop(m, read_path_file("pick_and_place")["path"], 6.0, "min_max", (1.0, 0.9))
+    pick = closed_loop(m, read_path_file("pick_and_place").path, 6.0, "min_max", (1.0, 0.9))
     assert (f"NA: {sci(pick[0]['na']['rmse_m'])} m at margin 1.0, "
             f"{sci(pick[1]['na']['rmse_m'])} m at 0.9" in FLAT)
 
@@ -102,8 +101,8 @@ def test_the_closed_loop_numbers(m, sci):
 def test_the_smoothed_variant(m):
     """plan_smooth (IPOPT, 200 requested points, the default tau_rate) against the strict plan
     on the same grid: the paper's line at 6 and 30 N m, the cycle at 6 N m."""
-    line = _item(m, "line")["path"]
-    cycle = read_path_file("pick_and_place")["path"]
+    line = _item(m, "line").path
+    cycle = read_path_file("pick_and_place").path
     got = {key: pm2dof.plan_smooth(m, path, tau, "min_max")
            for key, path, tau in (("line6", line, 6.0), ("line30", line, 30.0),
                                   ("cycle6", cycle, 6.0))}

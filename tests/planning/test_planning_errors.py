@@ -5,9 +5,16 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof import (ArgumentError, ArgumentTypeError, PlanError, SingularityError, TaskPath,
-                    WorkspaceError)
+from pm2dof import (
+    ArgumentError,
+    ArgumentTypeError,
+    PlanError,
+    SingularityError,
+    TaskPath,
+    WorkspaceError,
+)
 from pm2dof.planning import check_path, plan_kinematic, plan_smooth, plan_time_optimal
+from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import GRID_MAX, grid_points, params, stages
 
 LINE = TaskPath.line([0.22, 0.29], [0.27, 0.24])
@@ -70,10 +77,10 @@ def test_limits_too_low_somewhere_in_the_middle(m):
     """A limit that starts the move but cannot hold the path further on: the error names the
     first grid point where not even rest is feasible (found here by scaling the limits)."""
     from pm2dof.planning.pathfile import read_path_file
-    path = read_path_file("pick_and_place")["path"]
+    path = read_path_file("pick_and_place").path
     s = grid_points(path, 300)
     prm, th = params(m, None)
-    stage, _ = stages(m, path, s, np.ones(3), th, "min_norm")
+    stage, _ = stages(PlanProblem(m, path, np.ones(3), th, "min_norm", prm), s)
     h = m.layout("path_stage").slices["h"]
     lo, hi = np.zeros(len(s)), np.full(len(s), 10.0)   # least uniform limit feasible at rest
     x = np.empty(len(s))

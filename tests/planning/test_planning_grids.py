@@ -14,18 +14,19 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.planning import TaskPath, plan_time_optimal
-from pm2dof.planning.pathfile import read_path_file
 from pm2dof.derive.planning import MVC_BISECTIONS
-from pm2dof.planning.stages import V_TOP, grid_points, limits, params, stages
+from pm2dof.planning import TaskPath, plan_time_optimal
 from pm2dof.planning.grid import _check_forward
+from pm2dof.planning.pathfile import read_path_file
+from pm2dof.planning.problem import PlanProblem
+from pm2dof.planning.stages import V_TOP, grid_points, limits, params, stages
 from pm2dof.planning.topp import BETWEEN_TOL, RESOLUTION, solve_profile
 from pm2dof.planning.torques import plan_torques
 
 PATHS = {"line": TaskPath.line([0.22, 0.29], [0.27, 0.24]),            # the paper's line
          "arc": TaskPath.arc([0.245, 0.265], 0.04, -0.5, 1.5),
-         "pick_and_place": read_path_file("pick_and_place")["path"],
-         "curve": read_path_file("curve")["path"],
+         "pick_and_place": read_path_file("pick_and_place").path,
+         "curve": read_path_file("curve").path,
          # issue 28 item 11: a user's spline (coarse grids were not ordered on it)
          "spline28": TaskPath.spline([(0.18, 0.20), (0.22, 0.13), (0.27, 0.21), (0.31, 0.15)])}
 GRIDS = (2, 3, 4, 6, 10, 20, 40, 100, 250, 1000)
@@ -77,8 +78,9 @@ def test_the_passes_on_the_reviewers_coarse_grids(m, name, grid, tau_max, split)
     w = limits(m, tau_max, 1.0)
     prm, th = params(m, None)
     stops = np.searchsorted(s, path.stops)
-    stage, coef = stages(m, path, s, w, th, split, stops)
-    x, sdd, x_mvc, relaxed = solve_profile(m, stage, prm, s, coef)      # raised PlanError
+    problem = PlanProblem(m, path, w, th, split, prm)
+    stage, coef = stages(problem, s, stops)
+    x, sdd, x_mvc, relaxed = solve_profile(problem, stage, s, coef)      # raised PlanError
     assert np.isfinite(x).all() and (x >= 0).all() and (x[stops] == 0).all()
     land = x[:-1] + 2 * np.diff(s) * sdd[:-1]
     assert (land >= -1e-9 * np.maximum(x_mvc[1:], 1e-12)).all()

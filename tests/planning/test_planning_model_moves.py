@@ -34,12 +34,12 @@ def test_a_move_may_name_a_path_file(tmp_path):
         pm2dof.model_move(m, "cycle")
     cyc = model_move_path(m, "cycle")                       # the shipped file, its own limits
     ref = read_path_file("pick_and_place")
-    assert cyc["path"].length == pytest.approx(ref["path"].length, rel=0, abs=1e-15)
-    assert cyc["kinematic"] == ref["kinematic"]
+    assert cyc.path.length == pytest.approx(ref.path.length, rel=0, abs=1e-15)
+    assert cyc.kinematic == ref.kinematic
     mine = model_move_path(m, "mine")                       # relative to the model file
-    assert mine["file"] == tmp_path / "paths" / "mine.toml"
-    assert mine["kinematic"] == {"v_max": 0.3, "a_max": 5.0, "j_max": 200.0}
-    plan = pm2dof.plan_kinematic(mine["path"], **mine["kinematic"])
+    assert mine.file == tmp_path / "paths" / "mine.toml"
+    assert mine.kinematic == {"v_max": 0.3, "a_max": 5.0, "j_max": 200.0}
+    plan = pm2dof.plan_kinematic(mine.path, **mine.kinematic)
     r = pm2dof.simulate(m, pm2dof.NAController(m), plan.trajectory)
     assert r.outcome == "completed" and np.isfinite(r.rmse)
     assert set(pm2dof.table3(m)) == {"low", "high"}          # table3 runs the line moves

@@ -14,6 +14,7 @@ from pm2dof.bench.planning import friction_free
 from pm2dof.planning import TaskPath, plan_time_optimal
 from pm2dof.planning import grid as grid_module
 from pm2dof.planning.pathfile import read_path_file
+from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import limits, params, stages
 from pm2dof.planning.topp import SAMPLE_TOL, solve_profile
 from pm2dof.planning.torques import path_torques
@@ -21,8 +22,8 @@ from pm2dof.planning.torques import path_torques
 #: the user's spline of issue 28, item 11
 SPLINE = TaskPath.spline([(0.18, 0.20), (0.22, 0.13), (0.27, 0.21), (0.31, 0.15)])
 PATHS = {"half_circle": TaskPath.arc([0.245, 0.265], 0.03, 0.0, np.pi),
-         "pick_and_place": read_path_file("pick_and_place")["path"],
-         "curve": read_path_file("curve")["path"],
+         "pick_and_place": read_path_file("pick_and_place").path,
+         "curve": read_path_file("curve").path,
          "spline": SPLINE}
 
 
@@ -35,8 +36,9 @@ def _full(m, path, s, tau_max, split, theta):
     """The whole computation on the grid s: every point's stages, the three passes."""
     w = limits(m, tau_max, 1.0)
     prm, th = params(m, theta)
-    stage, coef = stages(m, path, s, w, th, split, np.searchsorted(s, path.stops))
-    return solve_profile(m, stage, prm, s, coef)
+    problem = PlanProblem(m, path, w, th, split, prm)
+    stage, coef = stages(problem, s, np.searchsorted(s, path.stops))
+    return solve_profile(problem, stage, s, coef)
 
 
 @pytest.mark.parametrize("name", list(PATHS))
@@ -70,14 +72,14 @@ def test_every_round_equals_the_whole_computation(m, name, monkeypatch):
 
     def counting(*args):
         out = passes(*args)
-        evaluated.append((len(args[4]), out[4]["evaluated"]))
+        evaluated.append((len(args[3]), out[4]["evaluated"]))
         return out
 
     monkeypatch.setattr(grid_module, "passes", counting)
     fast = plan_time_optimal(m, path, 6.0, "min_max", grid=400)
     later = evaluated[1:]
     assert later and all(b + f < 2 * (K - 1) for K, (b, f, _) in later), evaluated
-    solve, between = grid_module.Grid.solve, grid_module.Grid.between
+    solve, between = grid_module.Grid.solve, grid_module.Grid.check_midpoints
 
     def solve_afresh(self):
         self.memo = None
@@ -88,7 +90,7 @@ def test_every_round_equals_the_whole_computation(m, name, monkeypatch):
         return between(self, x, sdd)
 
     monkeypatch.setattr(grid_module.Grid, "solve", solve_afresh)
-    monkeypatch.setattr(grid_module.Grid, "between", between_afresh)
+    monkeypatch.setattr(grid_module.Grid, "check_midpoints", between_afresh)
     slow = plan_time_optimal(m, path, 6.0, "min_max", grid=400)
     assert fast.info["refinements"] == slow.info["refinements"] > 0
     for key in ("s", "sdot", "sddot", "t", "max_velocity", "tau"):

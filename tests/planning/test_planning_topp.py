@@ -191,7 +191,7 @@ def test_feasible_between_the_grid_points(m, name):
     from pm2dof.planning.pathfile import read_path_file
     path = {"line": LINE, "arc": ARC,
             "polyline": TaskPath.polyline([[0.2, 0.22], [0.3, 0.22], [0.28, 0.32]], 0.02)}.get(
-        name) or read_path_file(name)["path"]
+        name) or read_path_file(name).path
     w = np.full(3, 6.0)
     excess = []
     for grid in (1000, 4000):

@@ -148,7 +148,8 @@ def test_paper_geometry_values():
 
 def test_geometry_is_immutable_and_hashable():
     g = ref.Geometry.paper()
-    with pytest.raises(Exception):
+    import dataclasses
+    with pytest.raises(dataclasses.FrozenInstanceError):
         g.la = np.ones(3)  # frozen dataclass
     with pytest.raises(ValueError):
         g.la[0] = 1.0  # read-only array

@@ -15,8 +15,16 @@ import pytest
 
 import pm2dof
 from pm2dof.core.paths import SHIPPED_MODELS
-from pm2dof.studies import (SHIPPED_STUDIES, StudyFileError, StudyOutError, check_study, read_results,
-                            read_study, rollout_setup, run_chunk)
+from pm2dof.studies import (
+    SHIPPED_STUDIES,
+    StudyFileError,
+    StudyOutError,
+    check_study,
+    read_results,
+    read_study,
+    rollout_setup,
+    run_chunk,
+)
 from pm2dof.studies.draws import sample_draw
 from pm2dof.studies.report import columns_of, summarise
 from pm2dof.studies.store import finish_out, prepare_out, write_chunk
@@ -427,6 +435,7 @@ def test_report_numbers_match_direct_computation(tmp_path):
 def test_study_file_doc_lists_every_law_and_its_keys():
     """docs/study-file.md listed the laws as apd/na; the parser accepts ctc and lqr too."""
     import re
+
     from pm2dof.studies.spec import LAWS
     doc = (Path(__file__).resolve().parents[2] / "docs" / "study-file.md").read_text()
     law_row = next(ln for ln in doc.splitlines() if ln.startswith("| `law` |"))

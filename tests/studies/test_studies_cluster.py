@@ -18,8 +18,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pm2dof.studies import (SHIPPED_STUDIES, StudyRunError, read_results, read_study, run_chunk,
-                            run_study)
+from pm2dof.studies import (
+    SHIPPED_STUDIES,
+    StudyRunError,
+    read_results,
+    read_study,
+    run_chunk,
+    run_study,
+)
 from pm2dof.studies.report import columns_of
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -166,6 +172,7 @@ def test_real_scheduler_two_workers_one_killed_mid_run(tmp_path, study_file):
 
 def test_embedded_cluster_equals_in_process_rows_and_report_runs(tmp_path, study_file):
     import io
+
     from pm2dof.infra.progress import Progress
     study = read_study(SHIPPED_STUDIES / "adaptation.toml", quick=True)
     out = tmp_path / "a"

@@ -101,6 +101,11 @@ extern "C" {
 #define casadi_f69 CASADI_PREFIX(f69)
 #define casadi_f7 CASADI_PREFIX(f7)
 #define casadi_f70 CASADI_PREFIX(f70)
+#define casadi_f71 CASADI_PREFIX(f71)
+#define casadi_f72 CASADI_PREFIX(f72)
+#define casadi_f73 CASADI_PREFIX(f73)
+#define casadi_f74 CASADI_PREFIX(f74)
+#define casadi_f75 CASADI_PREFIX(f75)
 #define casadi_f8 CASADI_PREFIX(f8)
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
@@ -19305,22 +19310,23 @@ CASADI_SYMBOL_EXPORT int fivebar_path_mvc_work_bytes(casadi_int *sz_arg, casadi_
 
 /* fivebar_path_backward_reuse:(i0,i1[44],i2[11])->(o0,o1) */
 static int casadi_f55(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0;
-  a0=arg[1]? arg[1][43] : 0;
-  if (res[0]!=0) res[0][0]=a0;
-  if (res[1]!=0) res[1][0]=a0;
+  casadi_real w1;
+  const casadi_real *wr0;
+  wr0 = arg[1] ? arg[1] : casadi_zeros;
+  w1 = wr0[43];
+  if (res[0]) res[0][0] = w1;
+  if (res[1]) res[1][0] = w1;
   return 0;
 }
 
-/* fivebar_path_backward_full:(i0,i1[44],i2[11])->(o0,o1) */
-static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+/* fivebar_path_backward_hint:(i0,i1[41],i2[11])->(o0,o1) */
+static int casadi_f58(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
   casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
   casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
-  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
-  casadi_real a72;
+  casadi_real a60, a61, a62, a63, a64, a65;
   a00=arg[1]? arg[1][0] : 0;
   a01=arg[1]? arg[1][6] : 0;
   a02=(a00*a01);
@@ -19337,11 +19343,1029 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a08=(a06*a07);
   a05=(a05<=a08);
   a08=(!a05);
+  a09=arg[1]? arg[1][8] : 0;
+  a10=(a00*a09);
+  a11=arg[1]? arg[1][9] : 0;
+  a12=(a03*a11);
+  a10=(a10+a12);
+  a12=arg[2]? arg[2][0] : 0;
+  a13=(a10*a12);
+  a13=(a13*a12);
+  a14=1.;
+  a15=arg[1]? arg[1][16] : 0;
+  a16=(a14-a15);
+  a17=0.;
+  a18=arg[1]? arg[1][14] : 0;
+  a19=(a17<=a18);
+  a20=(a19?a14:0);
+  a19=(!a19);
+  a21=-1.;
+  a19=(a19?a21:0);
+  a20=(a20+a19);
+  a19=(a16*a20);
+  a22=arg[1]? arg[1][10] : 0;
+  a23=(a00*a22);
+  a24=arg[1]? arg[1][11] : 0;
+  a25=(a03*a24);
+  a23=(a23+a25);
+  a19=(a19*a23);
+  a25=arg[2]? arg[2][7] : 0;
+  a18=casadi_fabs(a18);
+  a18=(a25*a18);
+  a26=(a19*a18);
+  a27=arg[1]? arg[1][17] : 0;
+  a28=(a14-a27);
+  a29=arg[1]? arg[1][15] : 0;
+  a30=(a17<=a29);
+  a31=(a30?a14:0);
+  a30=(!a30);
+  a30=(a30?a21:0);
+  a31=(a31+a30);
+  a30=(a28*a31);
+  a32=arg[1]? arg[1][12] : 0;
+  a00=(a00*a32);
+  a33=arg[1]? arg[1][13] : 0;
+  a03=(a03*a33);
+  a00=(a00+a03);
+  a30=(a30*a00);
+  a03=arg[2]? arg[2][8] : 0;
+  a29=casadi_fabs(a29);
+  a29=(a03*a29);
+  a34=(a30*a29);
+  a26=(a26+a34);
+  a34=(a26*a12);
+  a13=(a13+a34);
+  a34=arg[2]? arg[2][9] : 0;
+  a19=(a19*a34);
+  a35=arg[2]? arg[2][10] : 0;
+  a30=(a30*a35);
+  a19=(a19+a30);
+  a13=(a13+a19);
+  a30=(a13/a02);
+  a30=(-a30);
+  a30=(a08?a30:0);
+  a36=arg[1]? arg[1][4] : 0;
+  a23=casadi_fabs(a23);
+  a23=(a15*a23);
+  a37=(a23*a18);
+  a00=casadi_fabs(a00);
+  a00=(a27*a00);
+  a38=(a00*a29);
+  a37=(a37+a38);
+  a38=(a37*a12);
+  a23=(a23*a34);
+  a00=(a00*a35);
+  a23=(a23+a00);
+  a38=(a38+a23);
+  a38=(a36-a38);
+  a00=(1./a02);
+  a00=(a08?a00:0);
+  a00=casadi_fabs(a00);
+  a39=(a38*a00);
+  a39=(a30-a39);
+  a40=casadi_inf;
+  a41=(a05?a40:0);
+  a39=(a39-a41);
+  a42=arg[1]? arg[1][2] : 0;
+  a01=(a42*a01);
+  a43=arg[1]? arg[1][3] : 0;
+  a04=(a43*a04);
+  a01=(a01+a04);
+  a04=casadi_fabs(a01);
+  a07=(a06*a07);
+  a04=(a04<=a07);
+  a07=(!a04);
+  a09=(a42*a09);
+  a11=(a43*a11);
+  a09=(a09+a11);
+  a11=(a09*a12);
+  a11=(a11*a12);
+  a16=(a16*a20);
+  a22=(a42*a22);
+  a24=(a43*a24);
+  a22=(a22+a24);
+  a16=(a16*a22);
+  a24=(a16*a18);
+  a28=(a28*a31);
+  a42=(a42*a32);
+  a43=(a43*a33);
+  a42=(a42+a43);
+  a28=(a28*a42);
+  a43=(a28*a29);
+  a24=(a24+a43);
+  a43=(a24*a12);
+  a11=(a11+a43);
+  a16=(a16*a34);
+  a28=(a28*a35);
+  a16=(a16+a28);
+  a11=(a11+a16);
+  a28=(a11/a01);
+  a28=(-a28);
+  a28=(a07?a28:0);
+  a43=arg[1]? arg[1][5] : 0;
+  a22=casadi_fabs(a22);
+  a15=(a15*a22);
+  a18=(a15*a18);
+  a42=casadi_fabs(a42);
+  a27=(a27*a42);
+  a29=(a27*a29);
+  a18=(a18+a29);
+  a29=(a18*a12);
+  a15=(a15*a34);
+  a27=(a27*a35);
+  a15=(a15+a27);
+  a29=(a29+a15);
+  a29=(a43-a29);
+  a27=(1./a01);
+  a27=(a07?a27:0);
+  a27=casadi_fabs(a27);
+  a42=(a29*a27);
+  a42=(a28-a42);
+  a22=(a04?a40:0);
+  a42=(a42-a22);
+  a39=casadi_fmax(a39,a42);
+  a42=(a38*a00);
+  a30=(a30+a42);
+  a30=(a30+a41);
+  a42=(a29*a27);
+  a28=(a28+a42);
+  a28=(a28+a22);
+  a30=casadi_fmin(a30,a28);
+  a28=(a39<=a30);
+  a13=casadi_fabs(a13);
+  a38=(a38-a13);
+  a05=(!a05);
+  a05=(a05?a40:0);
+  a38=(a38+a05);
+  a11=casadi_fabs(a11);
+  a29=(a29-a11);
+  a04=(!a04);
+  a04=(a04?a40:0);
+  a29=(a29+a04);
+  a38=casadi_fmin(a38,a29);
+  a38=(a17<=a38);
+  a28=(a28&&a38);
+  a38=casadi_sq(a12);
+  a29=arg[1]? arg[1][18] : 0;
+  a11=(2.*a29);
+  a13=arg[1]? arg[1][20] : 0;
+  a42=arg[1]? arg[1][26] : 0;
+  a33=(a13*a42);
+  a32=arg[1]? arg[1][21] : 0;
+  a31=arg[1]? arg[1][27] : 0;
+  a20=(a32*a31);
+  a33=(a33+a20);
+  a20=casadi_fabs(a33);
+  a44=casadi_sq(a42);
+  a45=casadi_sq(a31);
+  a44=(a44+a45);
+  a44=sqrt(a44);
+  a45=(a06*a44);
+  a20=(a20<=a45);
+  a45=(!a20);
+  a46=arg[1]? arg[1][28] : 0;
+  a47=(a13*a46);
+  a48=arg[1]? arg[1][29] : 0;
+  a49=(a32*a48);
+  a47=(a47+a49);
+  a49=arg[0]? arg[0][0] : 0;
+  a50=arg[1]? arg[1][40] : 0;
+  a49=casadi_fmin(a49,a50);
+  a50=casadi_fmax(a49,a17);
+  a50=sqrt(a50);
+  a47=(a47*a50);
+  a47=(a47*a50);
+  a51=arg[1]? arg[1][36] : 0;
+  a52=(a14-a51);
+  a53=arg[1]? arg[1][34] : 0;
+  a54=(a17<=a53);
+  a55=(a54?a14:0);
+  a54=(!a54);
+  a54=(a54?a21:0);
+  a55=(a55+a54);
+  a54=(a52*a55);
+  a56=arg[1]? arg[1][30] : 0;
+  a57=(a13*a56);
+  a58=arg[1]? arg[1][31] : 0;
+  a59=(a32*a58);
+  a57=(a57+a59);
+  a54=(a54*a57);
+  a53=casadi_fabs(a53);
+  a25=(a25*a53);
+  a53=(a54*a25);
+  a59=arg[1]? arg[1][37] : 0;
+  a60=(a14-a59);
+  a61=arg[1]? arg[1][35] : 0;
+  a62=(a17<=a61);
+  a63=(a62?a14:0);
+  a62=(!a62);
+  a62=(a62?a21:0);
+  a63=(a63+a62);
+  a62=(a60*a63);
+  a64=arg[1]? arg[1][32] : 0;
+  a13=(a13*a64);
+  a65=arg[1]? arg[1][33] : 0;
+  a32=(a32*a65);
+  a13=(a13+a32);
+  a62=(a62*a13);
+  a61=casadi_fabs(a61);
+  a03=(a03*a61);
+  a61=(a62*a03);
+  a53=(a53+a61);
+  a53=(a53*a50);
+  a47=(a47+a53);
+  a54=(a54*a34);
+  a62=(a62*a35);
+  a54=(a54+a62);
+  a47=(a47+a54);
+  a47=(a47/a33);
+  a47=(-a47);
+  a47=(a45?a47:0);
+  a54=arg[1]? arg[1][24] : 0;
+  a57=casadi_fabs(a57);
+  a57=(a51*a57);
+  a62=(a57*a25);
+  a13=casadi_fabs(a13);
+  a13=(a59*a13);
+  a53=(a13*a03);
+  a62=(a62+a53);
+  a62=(a62*a50);
+  a57=(a57*a34);
+  a13=(a13*a35);
+  a57=(a57+a13);
+  a62=(a62+a57);
+  a54=(a54-a62);
+  a33=(1./a33);
+  a45=(a45?a33:0);
+  a45=casadi_fabs(a45);
+  a54=(a54*a45);
+  a47=(a47-a54);
+  a20=(a20?a40:0);
+  a47=(a47-a20);
+  a20=arg[1]? arg[1][22] : 0;
+  a42=(a20*a42);
+  a54=arg[1]? arg[1][23] : 0;
+  a31=(a54*a31);
+  a42=(a42+a31);
+  a31=casadi_fabs(a42);
+  a06=(a06*a44);
+  a31=(a31<=a06);
+  a06=(!a31);
+  a46=(a20*a46);
+  a48=(a54*a48);
+  a46=(a46+a48);
+  a46=(a46*a50);
+  a46=(a46*a50);
+  a52=(a52*a55);
+  a56=(a20*a56);
+  a58=(a54*a58);
+  a56=(a56+a58);
+  a52=(a52*a56);
+  a58=(a52*a25);
+  a60=(a60*a63);
+  a20=(a20*a64);
+  a54=(a54*a65);
+  a20=(a20+a54);
+  a60=(a60*a20);
+  a54=(a60*a03);
+  a58=(a58+a54);
+  a58=(a58*a50);
+  a46=(a46+a58);
+  a52=(a52*a34);
+  a60=(a60*a35);
+  a52=(a52+a60);
+  a46=(a46+a52);
+  a46=(a46/a42);
+  a46=(-a46);
+  a46=(a06?a46:0);
+  a52=arg[1]? arg[1][25] : 0;
+  a56=casadi_fabs(a56);
+  a51=(a51*a56);
+  a25=(a51*a25);
+  a20=casadi_fabs(a20);
+  a59=(a59*a20);
+  a03=(a59*a03);
+  a25=(a25+a03);
+  a25=(a25*a50);
+  a51=(a51*a34);
+  a59=(a59*a35);
+  a51=(a51+a59);
+  a25=(a25+a51);
+  a52=(a52-a25);
+  a42=(1./a42);
+  a06=(a06?a42:0);
+  a06=casadi_fabs(a06);
+  a52=(a52*a06);
+  a46=(a46-a52);
+  a31=(a31?a40:0);
+  a46=(a46-a31);
+  a47=casadi_fmax(a47,a46);
+  a39=casadi_fmax(a39,a47);
+  a11=(a11*a39);
+  a38=(a38+a11);
+  a38=(a38<=a49);
+  a28=(a28&&a38);
+  a38=casadi_sq(a12);
+  a11=(2.*a29);
+  a11=(a11*a30);
+  a38=(a38+a11);
+  a38=(a17<=a38);
+  a28=(a28&&a38);
+  a38=9.0000000000000002e-01;
+  a11=(2.*a29);
+  a11=(a11*a47);
+  a11=(a49-a11);
+  a11=casadi_fmax(a11,a17);
+  a30=4.;
+  a39=casadi_fmax(a49,a17);
+  a30=(a30*a39);
+  a30=(a30+a14);
+  a11=casadi_fmin(a11,a30);
+  a30=sqrt(a11);
+  a14=1.0000000000000001e-30;
+  a14=casadi_fmax(a30,a14);
+  a38=(a38*a14);
+  a39=2.;
+  a46=log(a14);
+  a31=6.9314718055994529e-01;
+  a46=(a46/a31);
+  a46=floor(a46);
+  a31=24.;
+  a46=(a46-a31);
+  a39=pow(a39,a46);
+  a38=(a38/a39);
+  a38=floor(a38);
+  a38=(a38*a39);
+  a46=(2.*a29);
+  a31=(a10*a30);
+  a31=(a31*a30);
+  a40=(a26*a30);
+  a31=(a31+a40);
+  a31=(a31+a19);
+  a31=(a31/a02);
+  a31=(-a31);
+  a31=(a08?a31:0);
+  a40=(a37*a30);
+  a40=(a40+a23);
+  a40=(a36-a40);
+  a40=(a40*a00);
+  a31=(a31-a40);
+  a31=(a31-a41);
+  a40=(a09*a30);
+  a40=(a40*a30);
+  a52=(a24*a30);
+  a40=(a40+a52);
+  a40=(a40+a16);
+  a40=(a40/a01);
+  a40=(-a40);
+  a40=(a07?a40:0);
+  a52=(a18*a30);
+  a52=(a52+a15);
+  a52=(a43-a52);
+  a52=(a52*a27);
+  a40=(a40-a52);
+  a40=(a40-a22);
+  a52=casadi_fmax(a31,a40);
+  a06=casadi_fmax(a52,a47);
+  a06=(a46*a06);
+  a11=(a11+a06);
+  a11=(a11-a49);
+  a06=(2.*a30);
+  a42=(a47<=a52);
+  a52=(a52<=a47);
+  a52=(a42+a52);
+  a42=(a42/a52);
+  a52=(a40<=a31);
+  a31=(a31<=a40);
+  a40=(a52+a31);
+  a52=(a52/a40);
+  a25=(a30*a10);
+  a25=(2.*a25);
+  a25=(a25+a26);
+  a25=(a25/a02);
+  a25=(-a25);
+  a25=(a08?a25:0);
+  a51=(a00*a37);
+  a25=(a25+a51);
+  a52=(a52*a25);
+  a31=(a31/a40);
+  a40=(a30*a09);
+  a40=(2.*a40);
+  a40=(a40+a24);
+  a40=(a40/a01);
+  a40=(-a40);
+  a40=(a07?a40:0);
+  a25=(a27*a18);
+  a40=(a40+a25);
+  a31=(a31*a40);
+  a52=(a52+a31);
+  a42=(a42*a52);
+  a42=(a46*a42);
+  a06=(a06+a42);
+  a11=(a11/a06);
+  a30=(a30-a11);
+  a11=casadi_sq(a30);
+  a06=(a10*a30);
+  a06=(a06*a30);
+  a42=(a26*a30);
+  a06=(a06+a42);
+  a06=(a06+a19);
+  a06=(a06/a02);
+  a06=(-a06);
+  a06=(a08?a06:0);
+  a42=(a37*a30);
+  a42=(a42+a23);
+  a42=(a36-a42);
+  a42=(a42*a00);
+  a06=(a06-a42);
+  a06=(a06-a41);
+  a42=(a09*a30);
+  a42=(a42*a30);
+  a52=(a24*a30);
+  a42=(a42+a52);
+  a42=(a42+a16);
+  a42=(a42/a01);
+  a42=(-a42);
+  a42=(a07?a42:0);
+  a52=(a18*a30);
+  a52=(a52+a15);
+  a52=(a43-a52);
+  a52=(a52*a27);
+  a42=(a42-a52);
+  a42=(a42-a22);
+  a52=casadi_fmax(a06,a42);
+  a31=casadi_fmax(a52,a47);
+  a31=(a46*a31);
+  a11=(a11+a31);
+  a11=(a11-a49);
+  a31=(2.*a30);
+  a40=(a47<=a52);
+  a52=(a52<=a47);
+  a52=(a40+a52);
+  a40=(a40/a52);
+  a52=(a42<=a06);
+  a06=(a06<=a42);
+  a42=(a52+a06);
+  a52=(a52/a42);
+  a59=(a30*a10);
+  a59=(2.*a59);
+  a59=(a59+a26);
+  a59=(a59/a02);
+  a59=(-a59);
+  a59=(a08?a59:0);
+  a59=(a59+a51);
+  a52=(a52*a59);
+  a06=(a06/a42);
+  a42=(a30*a09);
+  a42=(2.*a42);
+  a42=(a42+a24);
+  a42=(a42/a01);
+  a42=(-a42);
+  a42=(a07?a42:0);
+  a42=(a42+a25);
+  a06=(a06*a42);
+  a52=(a52+a06);
+  a40=(a40*a52);
+  a46=(a46*a40);
+  a31=(a31+a46);
+  a11=(a11/a31);
+  a30=(a30-a11);
+  a11=(a10*a30);
+  a11=(a11*a30);
+  a31=(a26*a30);
+  a11=(a11+a31);
+  a11=(a11+a19);
+  a11=(a11/a02);
+  a11=(-a11);
+  a11=(a08?a11:0);
+  a31=(a37*a30);
+  a31=(a31+a23);
+  a31=(a36-a31);
+  a46=(a31*a00);
+  a46=(a11+a46);
+  a46=(a46+a41);
+  a40=(a09*a30);
+  a40=(a40*a30);
+  a52=(a24*a30);
+  a40=(a40+a52);
+  a40=(a40+a16);
+  a40=(a40/a01);
+  a40=(-a40);
+  a40=(a07?a40:0);
+  a52=(a18*a30);
+  a52=(a52+a15);
+  a52=(a43-a52);
+  a06=(a52*a27);
+  a06=(a40+a06);
+  a06=(a06+a22);
+  a42=casadi_fmin(a46,a06);
+  a31=(a31*a00);
+  a11=(a11-a31);
+  a11=(a11-a41);
+  a52=(a52*a27);
+  a40=(a40-a52);
+  a40=(a40-a22);
+  a52=casadi_fmax(a11,a40);
+  a31=(a42-a52);
+  a31=(a31<a17);
+  a42=(a42-a52);
+  a52=(a46<=a06);
+  a06=(a06<=a46);
+  a46=(a52+a06);
+  a52=(a52/a46);
+  a25=(a30*a10);
+  a25=(2.*a25);
+  a25=(a25+a26);
+  a25=(a25/a02);
+  a25=(-a25);
+  a59=(a08?a25:0);
+  a51=(a00*a37);
+  a59=(a59-a51);
+  a52=(a52*a59);
+  a06=(a06/a46);
+  a46=(a30*a09);
+  a46=(2.*a46);
+  a46=(a46+a24);
+  a46=(a46/a01);
+  a46=(-a46);
+  a59=(a07?a46:0);
+  a35=(a27*a18);
+  a59=(a59-a35);
+  a06=(a06*a59);
+  a52=(a52+a06);
+  a06=(a40<=a11);
+  a11=(a11<=a40);
+  a40=(a06+a11);
+  a06=(a06/a40);
+  a25=(a08?a25:0);
+  a59=(a00*a37);
+  a25=(a25+a59);
+  a06=(a06*a25);
+  a11=(a11/a40);
+  a46=(a07?a46:0);
+  a40=(a27*a18);
+  a46=(a46+a40);
+  a11=(a11*a46);
+  a06=(a06+a11);
+  a52=(a52-a06);
+  a42=(a42/a52);
+  a42=(a30-a42);
+  a52=(a10*a42);
+  a52=(a52*a42);
+  a06=(a26*a42);
+  a52=(a52+a06);
+  a52=(a52+a19);
+  a52=(a52/a02);
+  a52=(-a52);
+  a52=(a08?a52:0);
+  a06=(a37*a42);
+  a06=(a06+a23);
+  a06=(a36-a06);
+  a11=(a06*a00);
+  a11=(a52+a11);
+  a11=(a11+a41);
+  a46=(a09*a42);
+  a46=(a46*a42);
+  a25=(a24*a42);
+  a46=(a46+a25);
+  a46=(a46+a16);
+  a46=(a46/a01);
+  a46=(-a46);
+  a46=(a07?a46:0);
+  a25=(a18*a42);
+  a25=(a25+a15);
+  a25=(a43-a25);
+  a34=(a25*a27);
+  a34=(a46+a34);
+  a34=(a34+a22);
+  a50=casadi_fmin(a11,a34);
+  a06=(a06*a00);
+  a52=(a52-a06);
+  a52=(a52-a41);
+  a25=(a25*a27);
+  a46=(a46-a25);
+  a46=(a46-a22);
+  a25=casadi_fmax(a52,a46);
+  a50=(a50-a25);
+  a25=(a11<=a34);
+  a34=(a34<=a11);
+  a11=(a25+a34);
+  a25=(a25/a11);
+  a06=(a42*a10);
+  a06=(2.*a06);
+  a06=(a06+a26);
+  a06=(a06/a02);
+  a06=(-a06);
+  a03=(a08?a06:0);
+  a03=(a03-a51);
+  a25=(a25*a03);
+  a34=(a34/a11);
+  a11=(a42*a09);
+  a11=(2.*a11);
+  a11=(a11+a24);
+  a11=(a11/a01);
+  a11=(-a11);
+  a03=(a07?a11:0);
+  a03=(a03-a35);
+  a34=(a34*a03);
+  a25=(a25+a34);
+  a34=(a46<=a52);
+  a52=(a52<=a46);
+  a46=(a34+a52);
+  a34=(a34/a46);
+  a06=(a08?a06:0);
+  a06=(a06+a59);
+  a34=(a34*a06);
+  a52=(a52/a46);
+  a11=(a07?a11:0);
+  a11=(a11+a40);
+  a52=(a52*a11);
+  a34=(a34+a52);
+  a25=(a25-a34);
+  a50=(a50/a25);
+  a42=(a42-a50);
+  a42=(a31?a42:0);
+  a31=(!a31);
+  a31=(a31?a30:0);
+  a42=(a42+a31);
+  a42=(a42/a39);
+  a42=floor(a42);
+  a42=(a42*a39);
+  a31=(a42-a39);
+  a31=(a38<=a31);
+  a30=(2.*a39);
+  a30=(a42+a30);
+  a50=1.1000000000000001e+00;
+  a50=(a50*a14);
+  a14=1.0000000000000000e-03;
+  a50=(a50+a14);
+  a50=(a50/a39);
+  a50=ceil(a50);
+  a50=(a50*a39);
+  a30=(a30<=a50);
+  a31=(a31&&a30);
+  a50=(a50-a38);
+  a38=33554432.;
+  a38=(a38*a39);
+  a50=(a50<=a38);
+  a31=(a31&&a50);
+  a50=(a42-a39);
+  a38=(a10*a50);
+  a38=(a38*a50);
+  a30=(a26*a50);
+  a38=(a38+a30);
+  a38=(a38+a19);
+  a30=(a38/a02);
+  a30=(-a30);
+  a30=(a08?a30:0);
+  a14=(a37*a50);
+  a14=(a14+a23);
+  a14=(a36-a14);
+  a25=(a14*a00);
+  a25=(a30-a25);
+  a25=(a25-a41);
+  a34=(a09*a50);
+  a34=(a34*a50);
+  a52=(a24*a50);
+  a34=(a34+a52);
+  a34=(a34+a16);
+  a52=(a34/a01);
+  a52=(-a52);
+  a52=(a07?a52:0);
+  a11=(a18*a50);
+  a11=(a11+a15);
+  a11=(a43-a11);
+  a40=(a11*a27);
+  a40=(a52-a40);
+  a40=(a40-a22);
+  a25=casadi_fmax(a25,a40);
+  a40=(a14*a00);
+  a30=(a30+a40);
+  a30=(a30+a41);
+  a40=(a11*a27);
+  a52=(a52+a40);
+  a52=(a52+a22);
+  a30=casadi_fmin(a30,a52);
+  a52=(a25<=a30);
+  a38=casadi_fabs(a38);
+  a14=(a14-a38);
+  a14=(a14+a05);
+  a34=casadi_fabs(a34);
+  a11=(a11-a34);
+  a11=(a11+a04);
+  a14=casadi_fmin(a14,a11);
+  a14=(a17<=a14);
+  a52=(a52&&a14);
+  a14=casadi_sq(a50);
+  a11=(2.*a29);
+  a25=casadi_fmax(a25,a47);
+  a11=(a11*a25);
+  a14=(a14+a11);
+  a14=(a14<=a49);
+  a52=(a52&&a14);
+  a50=casadi_sq(a50);
+  a14=(2.*a29);
+  a14=(a14*a30);
+  a50=(a50+a14);
+  a50=(a17<=a50);
+  a52=(a52&&a50);
+  a50=(a10*a42);
+  a50=(a50*a42);
+  a14=(a26*a42);
+  a50=(a50+a14);
+  a50=(a50+a19);
+  a14=(a50/a02);
+  a14=(-a14);
+  a14=(a08?a14:0);
+  a30=(a37*a42);
+  a30=(a30+a23);
+  a30=(a36-a30);
+  a11=(a30*a00);
+  a11=(a14-a11);
+  a11=(a11-a41);
+  a25=(a09*a42);
+  a25=(a25*a42);
+  a34=(a24*a42);
+  a25=(a25+a34);
+  a25=(a25+a16);
+  a34=(a25/a01);
+  a34=(-a34);
+  a34=(a07?a34:0);
+  a38=(a18*a42);
+  a38=(a38+a15);
+  a38=(a43-a38);
+  a40=(a38*a27);
+  a40=(a34-a40);
+  a40=(a40-a22);
+  a11=casadi_fmax(a11,a40);
+  a40=(a30*a00);
+  a14=(a14+a40);
+  a14=(a14+a41);
+  a40=(a38*a27);
+  a34=(a34+a40);
+  a34=(a34+a22);
+  a14=casadi_fmin(a14,a34);
+  a34=(a11<=a14);
+  a50=casadi_fabs(a50);
+  a30=(a30-a50);
+  a30=(a30+a05);
+  a25=casadi_fabs(a25);
+  a38=(a38-a25);
+  a38=(a38+a04);
+  a30=casadi_fmin(a30,a38);
+  a30=(a17<=a30);
+  a34=(a34&&a30);
+  a30=casadi_sq(a42);
+  a38=(2.*a29);
+  a11=casadi_fmax(a11,a47);
+  a38=(a38*a11);
+  a30=(a30+a38);
+  a30=(a30<=a49);
+  a34=(a34&&a30);
+  a30=casadi_sq(a42);
+  a38=(2.*a29);
+  a38=(a38*a14);
+  a30=(a30+a38);
+  a30=(a17<=a30);
+  a34=(a34&&a30);
+  a30=(!a34);
+  a52=(a52&&a30);
+  a30=(a42+a39);
+  a38=(a10*a30);
+  a38=(a38*a30);
+  a14=(a26*a30);
+  a38=(a38+a14);
+  a38=(a38+a19);
+  a14=(a38/a02);
+  a14=(-a14);
+  a14=(a08?a14:0);
+  a11=(a37*a30);
+  a11=(a11+a23);
+  a11=(a36-a11);
+  a25=(a11*a00);
+  a25=(a14-a25);
+  a25=(a25-a41);
+  a50=(a09*a30);
+  a50=(a50*a30);
+  a40=(a24*a30);
+  a50=(a50+a40);
+  a50=(a50+a16);
+  a40=(a50/a01);
+  a40=(-a40);
+  a40=(a07?a40:0);
+  a46=(a18*a30);
+  a46=(a46+a15);
+  a46=(a43-a46);
+  a06=(a46*a27);
+  a06=(a40-a06);
+  a06=(a06-a22);
+  a25=casadi_fmax(a25,a06);
+  a06=(a11*a00);
+  a14=(a14+a06);
+  a14=(a14+a41);
+  a06=(a46*a27);
+  a40=(a40+a06);
+  a40=(a40+a22);
+  a14=casadi_fmin(a14,a40);
+  a40=(a25<=a14);
+  a38=casadi_fabs(a38);
+  a11=(a11-a38);
+  a11=(a11+a05);
+  a50=casadi_fabs(a50);
+  a46=(a46-a50);
+  a46=(a46+a04);
+  a11=casadi_fmin(a11,a46);
+  a11=(a17<=a11);
+  a40=(a40&&a11);
+  a11=casadi_sq(a30);
+  a46=(2.*a29);
+  a25=casadi_fmax(a25,a47);
+  a46=(a46*a25);
+  a11=(a11+a46);
+  a11=(a11<=a49);
+  a40=(a40&&a11);
+  a30=casadi_sq(a30);
+  a11=(2.*a29);
+  a11=(a11*a14);
+  a30=(a30+a11);
+  a30=(a17<=a30);
+  a40=(a40&&a30);
+  a30=(!a40);
+  a34=(a34&&a30);
+  a30=(a52||a34);
+  a11=(2.*a39);
+  a11=(a42+a11);
+  a10=(a10*a11);
+  a10=(a10*a11);
+  a26=(a26*a11);
+  a10=(a10+a26);
+  a10=(a10+a19);
+  a26=(a10/a02);
+  a26=(-a26);
+  a26=(a08?a26:0);
+  a37=(a37*a11);
+  a37=(a37+a23);
+  a37=(a36-a37);
+  a14=(a37*a00);
+  a14=(a26-a14);
+  a14=(a14-a41);
+  a09=(a09*a11);
+  a09=(a09*a11);
+  a24=(a24*a11);
+  a09=(a09+a24);
+  a09=(a09+a16);
+  a24=(a09/a01);
+  a24=(-a24);
+  a24=(a07?a24:0);
+  a18=(a18*a11);
+  a18=(a18+a15);
+  a18=(a43-a18);
+  a46=(a18*a27);
+  a46=(a24-a46);
+  a46=(a46-a22);
+  a14=casadi_fmax(a14,a46);
+  a46=(a37*a00);
+  a26=(a26+a46);
+  a26=(a26+a41);
+  a46=(a18*a27);
+  a24=(a24+a46);
+  a24=(a24+a22);
+  a26=casadi_fmin(a26,a24);
+  a24=(a14<=a26);
+  a10=casadi_fabs(a10);
+  a37=(a37-a10);
+  a37=(a37+a05);
+  a09=casadi_fabs(a09);
+  a18=(a18-a09);
+  a18=(a18+a04);
+  a37=casadi_fmin(a37,a18);
+  a37=(a17<=a37);
+  a24=(a24&&a37);
+  a37=casadi_sq(a11);
+  a18=(2.*a29);
+  a14=casadi_fmax(a14,a47);
+  a18=(a18*a14);
+  a37=(a37+a18);
+  a37=(a37<=a49);
+  a24=(a24&&a37);
+  a11=casadi_sq(a11);
+  a37=(2.*a29);
+  a37=(a37*a26);
+  a11=(a11+a37);
+  a11=(a17<=a11);
+  a24=(a24&&a11);
+  a24=(!a24);
+  a40=(a40&&a24);
+  a30=(a30||a40);
+  a31=(a31&&a30);
+  a31=(a28||a31);
+  if (res[0]!=0) res[0][0]=a31;
+  a02=(a19/a02);
+  a02=(-a02);
+  a08=(a08?a02:0);
+  a36=(a36-a23);
+  a23=(a36*a00);
+  a23=(a08-a23);
+  a23=(a23-a41);
+  a01=(a16/a01);
+  a01=(-a01);
+  a07=(a07?a01:0);
+  a43=(a43-a15);
+  a15=(a43*a27);
+  a15=(a07-a15);
+  a15=(a15-a22);
+  a23=casadi_fmax(a23,a15);
+  a00=(a36*a00);
+  a08=(a08+a00);
+  a08=(a08+a41);
+  a27=(a43*a27);
+  a07=(a07+a27);
+  a07=(a07+a22);
+  a08=casadi_fmin(a08,a07);
+  a07=(a23<=a08);
+  a19=casadi_fabs(a19);
+  a36=(a36-a19);
+  a36=(a36+a05);
+  a16=casadi_fabs(a16);
+  a43=(a43-a16);
+  a43=(a43+a04);
+  a36=casadi_fmin(a36,a43);
+  a36=(a17<=a36);
+  a07=(a07&&a36);
+  a36=(2.*a29);
+  a23=casadi_fmax(a23,a47);
+  a36=(a36*a23);
+  a36=(a36<=a49);
+  a07=(a07&&a36);
+  a29=(2.*a29);
+  a29=(a29*a08);
+  a29=(a17<=a29);
+  a07=(a07&&a29);
+  a17=(a17<=a49);
+  a07=(a07&&a17);
+  a12=(a28?a12:0);
+  a28=(!a28);
+  a17=(a34?a42:0);
+  a34=(!a34);
+  a49=(a42-a39);
+  a49=(a52?a49:0);
+  a52=(!a52);
+  a42=(a42+a39);
+  a52=(a52?a42:0);
+  a49=(a49+a52);
+  a34=(a34?a49:0);
+  a17=(a17+a34);
+  a28=(a28?a17:0);
+  a12=(a12+a28);
+  a12=casadi_sq(a12);
+  a28=arg[1]? arg[1][19] : 0;
+  a12=casadi_fmin(a12,a28);
+  a12=(a07?a12:0);
+  a07=(!a07);
+  a07=(a07?a21:0);
+  a12=(a12+a07);
+  if (res[1]!=0) res[1][0]=a12;
+  return 0;
+}
+
+/* fivebar_path_backward_step_found:(i0,i1,i2[41],i3[11])->(o0) */
+static int casadi_f60(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=arg[0]? arg[0][0] : 0;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+/* fivebar_path_backward_step_bisect:(i0,i1,i2[41],i3[11])->(o0) */
+static int casadi_f61(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  casadi_real a72;
+  a00=arg[2]? arg[2][0] : 0;
+  a01=arg[2]? arg[2][6] : 0;
+  a02=(a00*a01);
+  a03=arg[2]? arg[2][1] : 0;
+  a04=arg[2]? arg[2][7] : 0;
+  a05=(a03*a04);
+  a02=(a02+a05);
+  a05=casadi_fabs(a02);
+  a06=9.9999999999999998e-13;
+  a07=casadi_sq(a01);
+  a08=casadi_sq(a04);
+  a07=(a07+a08);
+  a07=sqrt(a07);
+  a08=(a06*a07);
+  a05=(a05<=a08);
+  a08=(!a05);
   a09=1.;
-  a10=arg[1]? arg[1][16] : 0;
+  a10=arg[2]? arg[2][16] : 0;
   a11=(a09-a10);
   a12=0.;
-  a13=arg[1]? arg[1][14] : 0;
+  a13=arg[2]? arg[2][14] : 0;
   a14=(a12<=a13);
   a15=(a14?a09:0);
   a14=(!a14);
@@ -19349,36 +20373,36 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a14=(a14?a16:0);
   a15=(a15+a14);
   a14=(a11*a15);
-  a17=arg[1]? arg[1][10] : 0;
+  a17=arg[2]? arg[2][10] : 0;
   a18=(a00*a17);
-  a19=arg[1]? arg[1][11] : 0;
+  a19=arg[2]? arg[2][11] : 0;
   a20=(a03*a19);
   a18=(a18+a20);
   a14=(a14*a18);
-  a20=arg[2]? arg[2][9] : 0;
+  a20=arg[3]? arg[3][9] : 0;
   a21=(a14*a20);
-  a22=arg[1]? arg[1][17] : 0;
+  a22=arg[2]? arg[2][17] : 0;
   a23=(a09-a22);
-  a24=arg[1]? arg[1][15] : 0;
+  a24=arg[2]? arg[2][15] : 0;
   a25=(a12<=a24);
   a26=(a25?a09:0);
   a25=(!a25);
   a25=(a25?a16:0);
   a26=(a26+a25);
   a25=(a23*a26);
-  a27=arg[1]? arg[1][12] : 0;
+  a27=arg[2]? arg[2][12] : 0;
   a28=(a00*a27);
-  a29=arg[1]? arg[1][13] : 0;
+  a29=arg[2]? arg[2][13] : 0;
   a30=(a03*a29);
   a28=(a28+a30);
   a25=(a25*a28);
-  a30=arg[2]? arg[2][10] : 0;
+  a30=arg[3]? arg[3][10] : 0;
   a31=(a25*a30);
   a21=(a21+a31);
   a31=(a21/a02);
   a31=(-a31);
   a31=(a08?a31:0);
-  a32=arg[1]? arg[1][4] : 0;
+  a32=arg[2]? arg[2][4] : 0;
   a18=casadi_fabs(a18);
   a18=(a10*a18);
   a33=(a18*a20);
@@ -19395,9 +20419,9 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a37=casadi_inf;
   a38=(a05?a37:0);
   a36=(a36-a38);
-  a39=arg[1]? arg[1][2] : 0;
+  a39=arg[2]? arg[2][2] : 0;
   a01=(a39*a01);
-  a40=arg[1]? arg[1][3] : 0;
+  a40=arg[2]? arg[2][3] : 0;
   a04=(a40*a04);
   a01=(a01+a04);
   a04=casadi_fabs(a01);
@@ -19420,7 +20444,7 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a29=(a19/a01);
   a29=(-a29);
   a29=(a07?a29:0);
-  a26=arg[1]? arg[1][5] : 0;
+  a26=arg[2]? arg[2][5] : 0;
   a17=casadi_fabs(a17);
   a10=(a10*a17);
   a17=(a10*a20);
@@ -19458,13 +20482,13 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a34=casadi_fmin(a34,a27);
   a34=(a12<=a34);
   a29=(a29&&a34);
-  a34=arg[1]? arg[1][18] : 0;
+  a34=arg[2]? arg[2][18] : 0;
   a27=(2.*a34);
-  a41=arg[1]? arg[1][20] : 0;
-  a43=arg[1]? arg[1][26] : 0;
+  a41=arg[2]? arg[2][20] : 0;
+  a43=arg[2]? arg[2][26] : 0;
   a44=(a41*a43);
-  a45=arg[1]? arg[1][21] : 0;
-  a46=arg[1]? arg[1][27] : 0;
+  a45=arg[2]? arg[2][21] : 0;
+  a46=arg[2]? arg[2][27] : 0;
   a47=(a45*a46);
   a44=(a44+a47);
   a47=casadi_fabs(a44);
@@ -19475,53 +20499,53 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a49=(a06*a48);
   a47=(a47<=a49);
   a49=(!a47);
-  a50=arg[1]? arg[1][28] : 0;
+  a50=arg[2]? arg[2][28] : 0;
   a51=(a41*a50);
-  a52=arg[1]? arg[1][29] : 0;
+  a52=arg[2]? arg[2][29] : 0;
   a53=(a45*a52);
   a51=(a51+a53);
-  a53=arg[0]? arg[0][0] : 0;
-  a54=arg[1]? arg[1][40] : 0;
+  a53=arg[1]? arg[1][0] : 0;
+  a54=arg[2]? arg[2][40] : 0;
   a53=casadi_fmin(a53,a54);
   a54=casadi_fmax(a53,a12);
   a54=sqrt(a54);
   a51=(a51*a54);
   a51=(a51*a54);
-  a55=arg[1]? arg[1][36] : 0;
+  a55=arg[2]? arg[2][36] : 0;
   a56=(a09-a55);
-  a57=arg[1]? arg[1][34] : 0;
+  a57=arg[2]? arg[2][34] : 0;
   a58=(a12<=a57);
   a59=(a58?a09:0);
   a58=(!a58);
   a58=(a58?a16:0);
   a59=(a59+a58);
   a58=(a56*a59);
-  a60=arg[1]? arg[1][30] : 0;
+  a60=arg[2]? arg[2][30] : 0;
   a61=(a41*a60);
-  a62=arg[1]? arg[1][31] : 0;
+  a62=arg[2]? arg[2][31] : 0;
   a63=(a45*a62);
   a61=(a61+a63);
   a58=(a58*a61);
-  a63=arg[2]? arg[2][7] : 0;
+  a63=arg[3]? arg[3][7] : 0;
   a57=casadi_fabs(a57);
   a57=(a63*a57);
   a64=(a58*a57);
-  a65=arg[1]? arg[1][37] : 0;
+  a65=arg[2]? arg[2][37] : 0;
   a66=(a09-a65);
-  a67=arg[1]? arg[1][35] : 0;
+  a67=arg[2]? arg[2][35] : 0;
   a68=(a12<=a67);
   a69=(a68?a09:0);
   a68=(!a68);
   a68=(a68?a16:0);
   a69=(a69+a68);
   a68=(a66*a69);
-  a70=arg[1]? arg[1][32] : 0;
+  a70=arg[2]? arg[2][32] : 0;
   a41=(a41*a70);
-  a71=arg[1]? arg[1][33] : 0;
+  a71=arg[2]? arg[2][33] : 0;
   a45=(a45*a71);
   a41=(a41+a45);
   a68=(a68*a41);
-  a45=arg[2]? arg[2][8] : 0;
+  a45=arg[3]? arg[3][8] : 0;
   a67=casadi_fabs(a67);
   a67=(a45*a67);
   a72=(a68*a67);
@@ -19535,7 +20559,7 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a51=(a51/a44);
   a51=(-a51);
   a51=(a49?a51:0);
-  a58=arg[1]? arg[1][24] : 0;
+  a58=arg[2]? arg[2][24] : 0;
   a61=casadi_fabs(a61);
   a61=(a55*a61);
   a68=(a61*a57);
@@ -19556,9 +20580,9 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a51=(a51-a58);
   a47=(a47?a37:0);
   a51=(a51-a47);
-  a47=arg[1]? arg[1][22] : 0;
+  a47=arg[2]? arg[2][22] : 0;
   a43=(a47*a43);
-  a58=arg[1]? arg[1][23] : 0;
+  a58=arg[2]? arg[2][23] : 0;
   a46=(a58*a46);
   a43=(a43+a46);
   a46=casadi_fabs(a43);
@@ -19592,7 +20616,7 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a50=(a50/a43);
   a50=(-a50);
   a50=(a06?a50:0);
-  a56=arg[1]? arg[1][25] : 0;
+  a56=arg[2]? arg[2][25] : 0;
   a60=casadi_fabs(a60);
   a55=(a55*a60);
   a57=(a55*a57);
@@ -19624,12 +20648,12 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a29=(a29&&a27);
   a27=(a12<=a53);
   a29=(a29&&a27);
-  a27=arg[1]? arg[1][8] : 0;
+  a27=arg[2]? arg[2][8] : 0;
   a00=(a00*a27);
-  a31=arg[1]? arg[1][9] : 0;
+  a31=arg[2]? arg[2][9] : 0;
   a03=(a03*a31);
   a00=(a00+a03);
-  a03=arg[2]? arg[2][0] : 0;
+  a03=arg[3]? arg[3][0] : 0;
   a36=(a00*a03);
   a36=(a36*a03);
   a13=casadi_fabs(a13);
@@ -21697,14 +22721,68 @@ static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a23=(a23?a36:0);
   a28=(a28+a23);
   a28=casadi_sq(a28);
-  a23=arg[1]? arg[1][19] : 0;
+  a23=arg[2]? arg[2][19] : 0;
   a28=casadi_fmin(a28,a23);
   a28=(a29?a28:0);
   a29=(!a29);
   a29=(a29?a16:0);
   a28=(a28+a29);
   if (res[0]!=0) res[0][0]=a28;
-  if (res[1]!=0) res[1][0]=a28;
+  return 0;
+}
+
+/* fivebar_path_backward_step_or:(i0,i1,i2,i3[41],i4[11])->(o0) */
+static int casadi_f59(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  if (arg[0] ? casadi_to_int(*arg[0]) : 0) {
+    if (casadi_f61(arg+1, res, iw, w, 0)) return 1;
+  } else {
+    if (casadi_f60(arg+1, res, iw, w, 0)) return 1;
+  }
+  return 0;
+}
+
+/* fivebar_path_backward_step:(i0,i1[41],i2[11])->(o0) */
+static int casadi_f57(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real **res1=res+1, w0, w3, w4, w5;
+  const casadi_real **arg1=arg+3, *wr1, *wr2;
+  w0 = arg[0] ? arg[0][0] : 0;
+  wr1 = arg[1] ? arg[1] : casadi_zeros;
+  wr2 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=(&w0);
+  arg1[1]=wr1;
+  arg1[2]=wr2;
+  res1[0]=(&w3);
+  res1[1]=(&w4);
+  if (casadi_f58(arg1, res1, iw, w, 0)) return 1;
+  w3 = (! w3 );
+  w5 = 1.;
+  w3  = (w3?w5:0);
+  arg1[0]=(&w3);
+  arg1[1]=(&w4);
+  arg1[2]=(&w0);
+  arg1[3]=wr1;
+  arg1[4]=wr2;
+  res1[0]=(&w5);
+  if (casadi_f59(arg1, res1, iw, w, 0)) return 1;
+  if (res[0]) res[0][0] = w5;
+  return 0;
+}
+
+/* fivebar_path_backward_full:(i0,i1[44],i2[11])->(o0,o1) */
+static int casadi_f56(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real **res1=res+2, w0, w4;
+  const casadi_real **arg1=arg+3, *wr1, *wr2, *wr3;
+  w0 = arg[0] ? arg[0][0] : 0;
+  wr1 = arg[1] ? arg[1] : casadi_zeros;
+  wr2 = wr1+0;
+  wr3 = arg[2] ? arg[2] : casadi_zeros;
+  arg1[0]=(&w0);
+  arg1[1]=wr2;
+  arg1[2]=wr3;
+  res1[0]=(&w4);
+  if (casadi_f57(arg1, res1, iw, w, 0)) return 1;
+  if (res[0]) res[0][0] = w4;
+  if (res[1]) res[1][0] = w4;
   return 0;
 }
 
@@ -21808,23 +22886,23 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_path_backward_sparsity_out(casadi
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_backward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 10;
-  if (sz_res) *sz_res = 6;
+  if (sz_arg) *sz_arg = 22;
+  if (sz_res) *sz_res = 9;
   if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 73;
+  if (sz_w) *sz_w = 227;
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 10*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 6*sizeof(casadi_real*);
+  if (sz_arg) *sz_arg = 22*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 9*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 73*sizeof(casadi_real);
+  if (sz_w) *sz_w = 227*sizeof(casadi_real);
   return 0;
 }
 
 /* fivebar_path_forward_reuse:(i0,i1[45],i2[11])->(o0,o1[6]) */
-static int casadi_f59(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f64(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0;
   a0=arg[1]? arg[1][44] : 0;
   if (res[0]!=0) res[0][0]=a0;
@@ -21840,7 +22918,7 @@ static int casadi_f59(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 /* fivebar_path_forward_full:(i0,i1[45],i2[11])->(o0,o1[6]) */
-static int casadi_f60(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -22645,17 +23723,17 @@ static int casadi_f60(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 /* fivebar_path_forward_switch:(i0,i1,i2[45],i3[11])->(o0,o1[6]) */
-static int casadi_f58(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f63(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   if (arg[0] ? casadi_to_int(*arg[0]) : 0) {
-    if (casadi_f60(arg+1, res, iw, w, 0)) return 1;
+    if (casadi_f65(arg+1, res, iw, w, 0)) return 1;
   } else {
-    if (casadi_f59(arg+1, res, iw, w, 0)) return 1;
+    if (casadi_f64(arg+1, res, iw, w, 0)) return 1;
   }
   return 0;
 }
 
 /* fivebar_path_forward:(x,input[45],params[11])->(x_next,y[6]) */
-static int casadi_f57(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f62(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real **res1=res+2, w0, w2, w3, *w5=w+57;
   const casadi_real **arg1=arg+3, *wr1, *wr4;
   w0 = 0.;
@@ -22676,14 +23754,14 @@ static int casadi_f57(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr4;
   res1[0]=(&w3);
   res1[1]=w5;
-  if (casadi_f58(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f63(arg1, res1, iw, w, 0)) return 1;
   if (res[0]) res[0][0] = w3;
   casadi_copy(w5, 6, res[1]);
   return 0;
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f57(arg, res, iw, w, mem);
+  return casadi_f62(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_forward_checkout(void) {
@@ -22760,7 +23838,7 @@ CASADI_SYMBOL_EXPORT int fivebar_path_forward_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* fivebar_path_torques:(stage[20],sd,sdd,params[11],tau_max[2])->(u[2],tau_min_norm[2],tau_min_max[2],min_max_ratio) */
-static int casadi_f61(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f66(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   a00=arg[0]? arg[0][6] : 0;
   a01=arg[2]? arg[2][0] : 0;
@@ -22862,7 +23940,7 @@ static int casadi_f61(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f61(arg, res, iw, w, mem);
+  return casadi_f66(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_path_torques_checkout(void) {
@@ -22947,7 +24025,7 @@ CASADI_SYMBOL_EXPORT int fivebar_path_torques_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* fivebar_forward_dynamics_jacobians:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],d_xe[4],d_xed[4],d_tau_a[4],d_theta[20],sing[2]) */
-static int casadi_f62(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -24358,7 +25436,7 @@ static int casadi_f62(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f62(arg, res, iw, w, mem);
+  return casadi_f67(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians_checkout(void) {
@@ -24445,7 +25523,7 @@ CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_jacobians_work_bytes(casadi_in
 }
 
 /* fivebar_inverse_dynamics:(xe[2],xed[2],xedd[2],theta[10])->(u[2],sing[2]) */
-static int casadi_f63(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f68(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -24756,7 +25834,7 @@ static int casadi_f63(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f63(arg, res, iw, w, mem);
+  return casadi_f68(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_checkout(void) {
@@ -24835,7 +25913,7 @@ CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_work_bytes(casadi_int *sz_arg,
 }
 
 /* fivebar_inverse_dynamics_jacobians:(xe[2],xed[2],xedd[2],theta[10])->(u[2],d_xe[4],d_xed[4],sing[2]) */
-static int casadi_f64(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f69(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -25910,7 +26988,7 @@ static int casadi_f64(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f64(arg, res, iw, w, mem);
+  return casadi_f69(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians_checkout(void) {
@@ -25993,7 +27071,7 @@ CASADI_SYMBOL_EXPORT int fivebar_inverse_dynamics_jacobians_work_bytes(casadi_in
 }
 
 /* fivebar_sampled_step_xedd:(xe[2],xed[2],tau_a[2],theta[10])->(xedd[2],sing[2]) */
-static int casadi_f66(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f71(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -26315,7 +27393,7 @@ static int casadi_f66(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 /* fivebar_sampled_step:(x[4],tau_a[2],theta[10],T)->(x_next[4],sing[2]) */
-static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f70(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w00=w+44, w01, w02, *w03=w+48, *w04=w+50, *w05=w+52, *w06=w+54, *w08=w+56, *w09=w+58, *w10=w+60;
   casadi_real w11, *w12=w+64, *w13=w+68;
@@ -26337,7 +27415,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=w09;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26354,7 +27432,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26373,7 +27451,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26390,7 +27468,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26408,7 +27486,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26425,7 +27503,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26444,7 +27522,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26461,7 +27539,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26479,7 +27557,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w10;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26496,7 +27574,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w08;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26515,7 +27593,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w05;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26532,7 +27610,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
   arg1[3]=wr07;
   res1[0]=w04;
   res1[1]=0;
-  if (casadi_f66(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f71(arg1, res1, iw, w, 0)) return 1;
   rr=w12;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26545,7 +27623,7 @@ static int casadi_f65(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_sampled_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f65(arg, res, iw, w, mem);
+  return casadi_f70(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_sampled_step_checkout(void) {
@@ -26624,7 +27702,7 @@ CASADI_SYMBOL_EXPORT int fivebar_sampled_step_work_bytes(casadi_int *sz_arg, cas
 }
 
 /* fivebar_sampled_step_jacobians:(x[4],tau_a[2],theta[10],T)->(x_next[4],d_x[16],d_tau_a[8],sing[2]) */
-static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i, j;
   casadi_real **res1=res+4, *rr, *w00=w+173, w01, w02, *w03=w+177, *w04=w+179, *w05=w+181, *w06=w+183, *w08=w+185, *w09=w+187, *w10=w+191;
   casadi_real *w11=w+195, *w12=w+199, *w13=w+201, w14, *w15=w+205, *w16=w+209, *w17=w+213, *w18=w+217, *w19=w+221, *w20=w+225, *w21=w+229, *w22=w+233;
@@ -26655,7 +27733,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w11;
   res1[4]=0;
   res1[5]=w12;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w13;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26676,7 +27754,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w17;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w18;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26699,7 +27777,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w20;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w21;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26720,7 +27798,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w23;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w24;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26742,7 +27820,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w25;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w26;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26763,7 +27841,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w29;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w30;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26786,7 +27864,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w32;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w33;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26807,7 +27885,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w35;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w36;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26829,7 +27907,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w37;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w38;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -26850,7 +27928,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w41;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w42;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w08; i<2; ++i) *rr++ = *cs++;
@@ -26873,7 +27951,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w44;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w45;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w05; i<2; ++i) *rr++ = *cs++;
@@ -26894,7 +27972,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[3]=w47;
   res1[4]=0;
   res1[5]=0;
-  if (casadi_f62(arg1, res1, iw, w, 0)) return 1;
+  if (casadi_f67(arg1, res1, iw, w, 0)) return 1;
   rr=w48;
   for (i=0, cs=w03; i<2; ++i) *rr++ = *cs++;
   for (i=0, cs=w04; i<2; ++i) *rr++ = *cs++;
@@ -27221,7 +28299,7 @@ static int casadi_f67(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f67(arg, res, iw, w, mem);
+  return casadi_f72(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians_checkout(void) {
@@ -27304,7 +28382,7 @@ CASADI_SYMBOL_EXPORT int fivebar_sampled_step_jacobians_work_bytes(casadi_int *s
 }
 
 /* fivebar_Ge:(q[4],theta[10])->(Ge[2],sing[2]) */
-static int casadi_f68(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f73(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -27365,7 +28443,7 @@ static int casadi_f68(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f68(arg, res, iw, w, mem);
+  return casadi_f73(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_Ge_checkout(void) {
@@ -27440,7 +28518,7 @@ CASADI_SYMBOL_EXPORT int fivebar_Ge_work_bytes(casadi_int *sz_arg, casadi_int* s
 }
 
 /* fivebar_kinetic_energy:(xe[2],xed[2],theta[10])->(T) */
-static int casadi_f69(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f74(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22;
   a00=5.0000000000000000e-01;
@@ -27573,7 +28651,7 @@ static int casadi_f69(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_kinetic_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f69(arg, res, iw, w, mem);
+  return casadi_f74(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_kinetic_energy_checkout(void) {
@@ -27648,7 +28726,7 @@ CASADI_SYMBOL_EXPORT int fivebar_kinetic_energy_work_bytes(casadi_int *sz_arg, c
 }
 
 /* fivebar_potential_energy:(xe[2],theta[10])->(V) */
-static int casadi_f70(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f75(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0;
   a0=0.;
   if (res[0]!=0) res[0][0]=a0;
@@ -27656,7 +28734,7 @@ static int casadi_f70(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_potential_energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f70(arg, res, iw, w, mem);
+  return casadi_f75(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int fivebar_potential_energy_checkout(void) {
