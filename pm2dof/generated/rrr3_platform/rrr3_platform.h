@@ -1065,10 +1065,10 @@ const casadi_int* rrr3_platform_path_backward_sparsity_in(casadi_int i);
 const casadi_int* rrr3_platform_path_backward_sparsity_out(casadi_int i);
 int rrr3_platform_path_backward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int rrr3_platform_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define rrr3_platform_path_backward_SZ_ARG 10
-#define rrr3_platform_path_backward_SZ_RES 6
+#define rrr3_platform_path_backward_SZ_ARG 22
+#define rrr3_platform_path_backward_SZ_RES 9
 #define rrr3_platform_path_backward_SZ_IW 0
-#define rrr3_platform_path_backward_SZ_W 114
+#define rrr3_platform_path_backward_SZ_W 376
 int rrr3_platform_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_path_forward_checkout(void);
 void rrr3_platform_path_forward_release(int mem);

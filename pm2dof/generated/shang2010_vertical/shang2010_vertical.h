@@ -1066,10 +1066,10 @@ const casadi_int* shang2010_vertical_path_backward_sparsity_in(casadi_int i);
 const casadi_int* shang2010_vertical_path_backward_sparsity_out(casadi_int i);
 int shang2010_vertical_path_backward_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
 int shang2010_vertical_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w);
-#define shang2010_vertical_path_backward_SZ_ARG 10
-#define shang2010_vertical_path_backward_SZ_RES 6
+#define shang2010_vertical_path_backward_SZ_ARG 22
+#define shang2010_vertical_path_backward_SZ_RES 9
 #define shang2010_vertical_path_backward_SZ_IW 0
-#define shang2010_vertical_path_backward_SZ_W 109
+#define shang2010_vertical_path_backward_SZ_W 333
 int shang2010_vertical_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_vertical_path_forward_checkout(void);
 void shang2010_vertical_path_forward_release(int mem);
