@@ -81,19 +81,20 @@ def box_centre(model):
 
 
 def sample_xe(model, seed, k, half_width=BOX_HALF_WIDTH, sing_min=SING_MIN):
-    """k xe (2,) in the box box_centre(model) +- half_width where every leg reaches (ik does not
-    raise WorkspaceError) and min_i |sin(qb_i - qa_i)| > sing_min. Fails (AssertionError) if
+    """k xe (m,) in the box box_centre(model) +- half_width (phi of a platform: +- half_width
+    rad) where every leg reaches (ik does not raise WorkspaceError) and the type I measure
+    (RRR legs: min_i |sin(qb_i - qa_i)|) > sing_min. Fails (AssertionError) if
     fewer than k are found in 100 k draws, so no check can pass on an empty sample."""
     rng = np.random.default_rng(seed)
     c = box_centre(model)
     out = []
     for _ in range(100 * k):
-        xe = c + rng.uniform(-half_width, half_width, 2)
+        xe = c + rng.uniform(-half_width, half_width, model.dof)
         try:
             q = model.ik(xe)
         except pm2dof.WorkspaceError:
             continue
-        if np.min(np.abs(model.singularity(q))) > sing_min:
+        if model.singularity_measures(q)[0] > sing_min:
             out.append(xe)
             if len(out) == k:
                 return out
@@ -105,10 +106,15 @@ _PARAM = re.compile(r"([A-Za-z_]+?)(\d+)$")
 
 
 def param_index(model):
-    """{(kind, leg 0-based): index in theta}, e.g. ("fc", 0) -> index of "fc1"."""
+    """{(kind, leg 0-based): index in theta}, e.g. ("fc", 0) -> index of "fc1"; a platform's
+    parameters (no leg number) as (name, None), e.g. ("m_p", None)."""
     out = {}
     for j, name in enumerate(model.param_names):
-        kind, leg = _PARAM.fullmatch(name).groups()
+        match = _PARAM.fullmatch(name)
+        if match is None:
+            out[name, None] = j
+            continue
+        kind, leg = match.groups()
         out[kind, int(leg) - 1] = j
     return out
 
@@ -116,14 +122,23 @@ def param_index(model):
 def random_theta(model, rng):
     """theta (p,) in param_names order with every leg's inertia block PD (alpha, gamma > 0,
     beta^2 < alpha gamma) and nonnegative friction parameters: fv in [0, 5] N m s/rad,
-    fc and every other friction parameter (e.g. fs) in [0, 1] N m."""
+    fc and every other friction parameter (e.g. fs) in [0, 1] N m; first moments kappa in
+    [0, 0.5] kg m; a platform's m_p in [0.2, 1] kg, mx_p, my_p in +-0.02 kg m and I_p above
+    (mx_p^2 + my_p^2) / m_p by [1e-4, 1e-3] kg m^2 (a rigid body)."""
     n, idx = model.n_legs, param_index(model)
     theta = np.empty(len(model.param_names))
     alpha = rng.uniform(0.005, 0.15, n)
     gamma = rng.uniform(0.005, 0.08, n)
     beta = rng.uniform(-0.95, 0.95, n) * np.sqrt(alpha * gamma)
+    m_p, mx_p, my_p = rng.uniform(0.2, 1.0), *rng.uniform(-0.02, 0.02, 2)
+    body = {"m_p": m_p, "mx_p": mx_p, "my_p": my_p,
+            "I_p": (mx_p ** 2 + my_p ** 2) / m_p + rng.uniform(1e-4, 1e-3)}
     for (kind, i), j in idx.items():
-        if kind in ("alpha", "beta", "gamma"):
+        if kind in body:
+            theta[j] = body[kind]
+        elif kind == "kappa":
+            theta[j] = rng.uniform(0.0, 0.5)
+        elif kind in ("alpha", "beta", "gamma"):
             theta[j] = {"alpha": alpha, "beta": beta, "gamma": gamma}[kind][i]
         elif kind == "fv":
             theta[j] = rng.uniform(0.0, 5.0)
@@ -167,3 +182,91 @@ def sci():
 def paper_model():
     """The paper's robot (shang2010), loaded once per module."""
     return pm2dof.load_model()
+
+
+# --------------------------------------------------------------------------------------
+# Issue 26's mechanisms in the tests written for the paper's family
+# --------------------------------------------------------------------------------------
+
+_REFERENCE = ("compares with pm2dof.reference or docs/paper.md, the paper's RRR legs at a point in "
+              "a horizontal plane; tests/mechanisms/test_independent.py checks this mechanism "
+              "against the independent Lagrange-multiplier formulation")
+_GRAVITY = ("holds in a horizontal plane only: under gravity the controllers hold the robot with "
+            "the gravity term (tests/mechanisms/test_capabilities.py runs the closed loop)")
+_NOT_YET = ("written for RRR legs at a point (2-D task arrays, the law of cosines, sin(qb - qa)): "
+            "not yet generalised to this mechanism (issue 26 follow-up); "
+            "tests/mechanisms/test_capabilities.py covers the capability on it")
+_PLATFORM_H = ("a platform's H is tip_i(q) - P_i(xe), A = dH/dq at fixed xe; Model.H binds xe "
+               "from q, so finite differences of Model.H are not A")
+#: (test file::function, which models) -> why the test does not run on them. "new": every
+#: model that is not RRR legs at a point; "gravity": models with gravity.
+_NOT_RUN = {
+    "core/test_model.py::test_C_agrees_with_numpy_reference": ("new gravity", _REFERENCE),
+    "core/test_model.py::test_M_C_typed_from_notes": ("new", _REFERENCE),
+    "core/test_model.py::test_forward_dynamics_matches_lagrange_multipliers": ("new gravity",
+                                                                              _REFERENCE),
+    "core/test_model.py::test_forward_dynamics_at_rest_without_torque_is_friction_only":
+        ("new gravity", _REFERENCE),
+    "core/test_closure.py::test_residual_of_the_generated_fk_equals_the_reference": ("new",
+                                                                                     _REFERENCE),
+    "core/test_model.py::test_A_is_the_jacobian_of_H": ("platform", _PLATFORM_H),
+    "control/test_at_rest.py::test_controllers_at_rest_command_zero_torque": ("gravity", _GRAVITY),
+    "control/test_at_rest.py::test_preload_split_at_rest_commands_only_the_preload": ("gravity",
+                                                                                      _GRAVITY),
+    "control/test_at_rest.py::test_simulated_hold_stays_within_one_encoder_count": ("gravity",
+                                                                                    _GRAVITY),
+    "control/test_models_closed_loop.py::test_one_step_torque_is_the_minimum_norm_resolution":
+        ("gravity new", _NOT_YET),
+}
+for _name in ("test_singular_pose_raises", "test_ik_elbows_are_on_the_side_the_model_file_chooses",
+              "test_ik_closes_loop_and_fk_inverts_it", "test_output_shapes",
+              "test_Wdot_is_the_time_derivative_of_W", "test_W_is_the_derivative_of_ik",
+              "test_StF_is_S_transpose_friction", "test_Medot_minus_2Ce_is_skew_symmetric",
+              "test_Mdot_minus_2C_is_skew_symmetric_joint_space", "test_A_W_is_zero",
+              "test_S_is_the_active_rows_of_W", "test_Me_symmetric_positive_definite",
+              "test_Y_theta_equals_the_dynamics"):
+    _NOT_RUN.setdefault(f"core/test_model.py::{_name}", ("new", _NOT_YET))
+for _name in ("test_round_trip_wherever_ik_answers", "test_measures_agree_with_an_svd_of_S",
+              "test_redundant_models_have_no_parallel_singularity_in_reach"):
+    _NOT_RUN[f"core/test_singularities.py::{_name}"] = ("new", _NOT_YET)
+for _name in ("test_table3_runs_and_tracks_on_every_move",):
+    _NOT_RUN[f"control/test_models_closed_loop.py::{_name}"] = ("new", _NOT_YET)
+_NOT_RUN["derive/test_generated.py::test_C_matches_sympy_at_30_digits"] = (
+    "platform", "its mpmath evaluation takes fk in closed form; a platform's fk is a "
+                "Gauss-Newton from a seed: not yet generalised (issue 26 follow-up); "
+                "tests/mechanisms/test_independent.py checks the platform's derivation")
+_NOT_RUN["control/test_task_dimension.py::test_dof_and_task_names_follow_the_generated_code"] = (
+    "platform", "compares with a point's task (x, y): tests/mechanisms/test_capabilities.py "
+                "and tests/derive/test_derive_task_dimension.py cover m = 3")
+
+
+def _kinds(spec):
+    """The groups of _NOT_RUN a model file belongs to."""
+    from pm2dof.core.task import is_rr_point
+    out = set()
+    if spec is None:
+        return out
+    if not is_rr_point(spec):
+        out.add("new")
+    if getattr(spec, "end_effector", "point") == "platform":
+        out.add("platform")
+    if getattr(spec, "has_gravity", False):
+        out.add("gravity")
+    return out
+
+
+_KINDS = {spec.name: _kinds(spec) for _, spec in _SPECS if spec is not None}
+
+
+def pytest_collection_modifyitems(config, items):
+    """Skip, with the reason, the (test, model) pairs of _NOT_RUN."""
+    for item in items:
+        path = item.nodeid.split("::", 1)[0].removeprefix("tests/")
+        rule = _NOT_RUN.get(f"{path}::{item.originalname}")
+        if rule is None or not hasattr(item, "callspec"):
+            continue
+        ids = set(item.callspec.id.split("-"))
+        groups, why = rule
+        for name in ids & set(_KINDS):
+            if _KINDS[name] & set(groups.split()):
+                item.add_marker(pytest.mark.skip(reason=f"{name}: {why}"))

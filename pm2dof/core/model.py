@@ -32,14 +32,20 @@ from .errors import (
     WorkspaceError,
 )
 from .layout import Layout
-from .model_file import inertia_problem, read_model_file
+from .model_file import (
+    FRICTION_MODELS,
+    INERTIAL,
+    PLATFORM_PARAMS,
+    inertia_problem,
+    platform_inertia_problem,
+    read_model_file,
+)
 from .poses import PoseMethods
 from .status import Status
 from .task import (
     ENERGY_FUNCTIONS,
     is_rr_point,
     require_generated,
-    require_rr_point,
     spec_task_names,
 )
 
@@ -120,11 +126,12 @@ def _check_generated(spec, gen_dir):
     return manifest, lib
 
 
-def _shapes(n, m, p):
+def _shapes(n, m, p, h):
     """The returned shape(s) of each Model method bound by :func:`_methods` (n legs, task
     dimension m, p parameters); a tuple of shapes for the derivative methods (their
-    NamedTuple's fields)."""
-    return {"ik": (2 * n,), "fk": (m,), "H": (2 * n - m,), "A": (2 * n - m, 2 * n),
+    NamedTuple's fields). H (eq. 5) has h rows: 2 (n - 1) for legs meeting at a point (tip_1
+    = tip_i), 2 n for a platform (tip_i = P_i(xe), xe from q)."""
+    return {"ik": (2 * n,), "fk": (m,), "H": (h,), "A": (h, 2 * n),
             "singularity": (n,), "singularity_measures": (2,), "W": (2 * n, m), "S": (n, m),
             "Wdot": (2 * n, m), "M": (2 * n, 2 * n), "C": (2 * n, 2 * n), "Me": (m, m),
             "Ce": (m, m), "StF": (m,), "Y": (m, p), "forward_dynamics": (m,),
@@ -228,8 +235,9 @@ class Model(DerivativeMethods, PoseMethods):
         sing_thr = (spec.limits["singularity_threshold"],
                     spec.limits["parallel_singularity_threshold"])
         sing, residual = np.zeros(2), np.zeros(spec.n_legs)
-        fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names)), sing, sing_thr,
-                        residual, spec.sensing["closure_tolerance"])
+        h = funcs["H"].sizes_out[0]          # constraints: 2 (n - 1) at a point, 2 n a platform
+        fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names), h), sing,
+                        sing_thr, residual, spec.sensing["closure_tolerance"])
         for k, v in (("spec", spec), ("manifest", _freeze(manifest)), ("library", str(lib_path)),
                      ("generated", str(gen_dir)),
                      ("_lib", lib), ("_f", types.MappingProxyType(funcs)), ("_fast", fast),
@@ -299,17 +307,21 @@ class Model(DerivativeMethods, PoseMethods):
         if th is None or th.shape != (p,) or not np.isfinite(th).all():
             raise ArgumentError(f"{name} must be {p} finite numbers ({', '.join(self.param_names)})"
                                 f", got {theta!r}")
-        if physical:       # theta = [alpha, beta, gamma, friction] per leg: RR legs only
-            require_rr_point(self, "the physical check of theta (M_i of eq. 1 per RR leg)")
-            n = self.n_legs
-            rows = th.reshape(-1, n)          # alpha, beta, gamma, then each friction coefficient
-            for i in range(n):
-                why = inertia_problem(*rows[:3, i])
+        if physical:       # the model file's rule for [nominal], by parameter name
+            index = {name: j for j, name in enumerate(self.param_names)}
+            for i in range(self.n_legs):
+                why = inertia_problem(*(th[index[f"{k}{i + 1}"]] for k in INERTIAL))
                 if why is not None:
                     raise ArgumentError(f"{name} is not physical: leg {i + 1} {why}")
-            for j in np.flatnonzero(th[3 * n:] < 0):
-                raise ArgumentError(f"{name} is not physical: {self.param_names[3 * n + j]} = "
-                                    f"{th[3 * n + j]:.6g} < 0 (friction must dissipate)")
+            if all(k in index for k in PLATFORM_PARAMS):
+                why = platform_inertia_problem(*(th[index[k]] for k in PLATFORM_PARAMS))
+                if why is not None:
+                    raise ArgumentError(f"{name} is not physical: the platform's {why}")
+            friction = FRICTION_MODELS[self.spec.friction]
+            for j, pname in enumerate(self.param_names):
+                if pname.rstrip("0123456789") in friction and th[j] < 0:
+                    raise ArgumentError(f"{name} is not physical: {pname} = {th[j]:.6g} < 0 "
+                                        f"(friction must dissipate)")
         return th
 
     def function(self, short_name):
@@ -528,37 +540,38 @@ class Model(DerivativeMethods, PoseMethods):
         return out
 
     def H(self, q, out=None):
-        """Loop-closure constraints H(q) (2n - m,), m (eq. 5; 2(n-1) for a point).
+        """Loop-closure constraints H(q), m (eq. 5): (2(n-1),) for legs meeting at a point,
+        (2n,) for a platform (tip_i(q) - P_i(xe), its pose xe from q).
 
         Parameters
         ----------
         q : array_like (2n,)
             Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
             returns them).
-        out : ndarray (2n - m,), optional
+        out : ndarray (rows of H,), optional
             Written into and returned (no allocation); a new array when None.
         """
         try:
             return self._fast["H"](q, out)
         except _cbind.Refused:
-            return self._eval("H", (2 * self.n_legs - self._m,), out, q)
+            return self._eval("H", (self._f["H"].sizes_out[0],), out, q)
 
     def A(self, q, out=None):
-        """Constraint Jacobian A = dH/dq (2n - m, 2n) (eq. 6).
+        """Constraint Jacobian A = dH/dq (rows of H, 2n) (eq. 6).
 
         Parameters
         ----------
         q : array_like (2n,)
             Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
             returns them).
-        out : ndarray (2n - m, 2n), optional
+        out : ndarray (rows of H, 2n), optional
             Written into and returned (no allocation); a new array when None.
         """
         try:
             return self._fast["A"](q, out)
         except _cbind.Refused:
             n = self.n_legs
-            return self._eval("A", (2 * n - self._m, 2 * n), out, q)
+            return self._eval("A", (self._f["H"].sizes_out[0], 2 * n), out, q)
 
     def singularity(self, q, out=None):
         """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0.

@@ -152,8 +152,8 @@ def controller_functions(d, prefix):
         extra = [(k, ca.SX.sym(k, size)) for k, size in per_sample_inputs(law, n, m)]
         # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
         # low-pass on the backward difference, passive joints from geometry (unit vectors)
-        base = d.converter_qa(qa)
-        O = kin.fk()
+        base = d.converter_qa(qa, seed=st["xe_prev"])  # a platform's fk from the last pose
+        O = d.fk_of_qa()
         xe = base(O)
         # the extra legs are a check: every leg's residual within tolerance (false for NaN)
         consistent = ca.mmax(ca.fabs(base(kin.closure_residuals(O)))) <= P["closure_tol"]

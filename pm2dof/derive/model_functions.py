@@ -16,7 +16,8 @@ class Derivation:
 
     def __init__(self, spec):
         self.spec = spec
-        self.sym = Symbols(spec.n_legs, spec.param_names)
+        self.sym = Symbols(spec.n_legs, spec.param_names,
+                           tuple(getattr(spec, "task_names", None) or ("x", "y")))
         self.kin = Kinematics(spec, self.sym)
         self.dyn = Dynamics(spec, self.sym, self.kin)
         self._setup()
@@ -41,9 +42,28 @@ class Derivation:
     def pose_of_qa(self):
         """{task symbol: its expression by fk in the active coordinates}: where a matrix of q
         (W, Me, ...) also names the pose (a platform's phi), converters bind it on first use."""
-        if self._pose is None:
-            self._pose = dict(zip(self.sym.xe, self.kin.fk()))
+        if self._pose is None:   # a platform: its pose from all of q (closed form)
+            self._pose = dict(zip(self.sym.xe, self.kin.pose_from_q()
+                                  if getattr(self.kin, "platform", False) else self.kin.fk()))
         return self._pose
+
+    def fk_of_qa(self):
+        """The pose fk(qa) as SymPy, for a converter from :meth:`converter_qa`: a point's closed
+        form (kin.fk()); a platform's task symbols xe, which converter_qa binds to its
+        Gauss-Newton fk."""
+        return self.sym.xe if getattr(self.kin, "platform", False) else self.kin.fk()
+
+    def _platform_fk(self, symbols, trig, seed):
+        """A platform's fk as CasADi: FK_NEWTON_STEPS Gauss-Newton steps
+        (kinematics.fk_newton_step) from ``seed`` (m,), in the measured qa of ``symbols``."""
+        from .kinematics import FK_NEWTON_STEPS
+        xe = ca.SX.sym("xe_newton", self.m)
+        conv = Converter({**symbols, **dict(zip(self.sym.xe, ca.vertsplit(xe)))}, dict(trig))
+        step = conv(self.kin.fk_newton_step())
+        O = seed
+        for _ in range(FK_NEWTON_STEPS):
+            O = ca.substitute(step, xe, O)
+        return O
 
     def preload(self, S, u, w, sigma, p):
         """The preload split (derive/splits.py) as a call of one shared, never-inlined
@@ -83,16 +103,21 @@ class Derivation:
             symbols.update({s: base(ik[s]) for s in lengths})
         return Converter(symbols, trig)
 
-    def converter_qa(self, qa, extra=()):
+    def converter_qa(self, qa, extra=(), seed=None):
         """Converter for functions of the measured active coordinates: trig of the active
-        angles, passive coordinates from the pose fk(qa)."""
+        angles, passive coordinates from the pose fk(qa) (a platform's from ``seed``, an SX
+        pose; default [platform] home)."""
         sym = self.sym
         symbols = dict(zip(sym.qa, ca.vertsplit(qa)))
         for syms, value in extra:
             symbols.update(zip(syms, ca.vertsplit(value)))
         trig = {s: (ca.cos(symbols[s]), ca.sin(symbols[s])) for s in self._angles(sym.qa)}
         base = Converter(symbols, trig)
-        O = self.kin.fk()
+        if getattr(self.kin, "platform", False):    # Gauss-Newton from the seed pose
+            seed = ca.DM(self.spec.home) if seed is None else seed
+            symbols.update(zip(sym.xe, ca.vertsplit(self._platform_fk(symbols, trig, seed))))
+            base = Converter(symbols, trig)
+        O = self.fk_of_qa()
         trig.update({s: (base(c), base(si)) for s, (c, si)
                      in self.kin.unit_vectors_from_qa(O).items()})
         lengths = [s for s in sym.qb if s not in self._angles([s])]
@@ -105,8 +130,9 @@ class Derivation:
     def singularity_measures(self, conv):
         """[type I, type II] singularity measures at the pose, each 0 at its singularity:
 
-        * type I (a leg): min_i |sin(qb_i - qa_i)|, zero where leg i's tip Jacobian is singular
-          (its links aligned);
+        * type I (a leg): min_i |leg_measure_i| (kinematics.leg_measure: an RRR leg's
+          sin(qb_i - qa_i), zero where its links align; a PRR leg's cosine between rail and
+          link; 1 for an RPR leg);
         * type II (the actuation, parallel): the smallest singular value of S with its rows
           normalised, divided by its largest possible value sqrt(n/2). Row i of S is
           u_bi^T / (la_i sin(qb_i - qa_i)) (eq. 8): normalising the rows removes the legs'
@@ -116,7 +142,9 @@ class Derivation:
           sigma_min(U)^2 = (n - |z|)/2, so the measure is sqrt(1 - |z|/n) in [0, 1]: 1 for
           isotropic directions, sqrt(1 - |cos(qb_1 - qb_2)|) for a five-bar.
 
-        For a platform (m = 3) the type II measure is the same sigma_min of S with unit rows
+        For a platform (m = 3) the type II measure is kinematics.parallel_measure,
+        (det U^T U)^(1/3) / (n/3) of the unit wrench lines. For another m = 3 kinematics (the
+        tests' toy platform) it is the same sigma_min of S with unit rows
         over its largest possible value sqrt(n/m), from the least eigenvalue of U^T U (3 x 3,
         closed form, :func:`_least_eigenvalue`); S's columns are first divided by the
         kinematics' ``task_scale`` (reference lengths of x, y, phi; default 1) so that force
@@ -125,10 +153,12 @@ class Derivation:
         NaN propagates through both (a pose out of reach stays NaN).
         """
         n, sym = self.spec.n_legs, self.sym
-        values = [ca.fabs(conv(self.kin.sin_ab(i))) for i in range(n)]
+        values = [ca.fabs(conv(self.kin.leg_measure(i))) for i in range(n)]
         type1 = values[0]
         for v in values[1:]:  # min(a, b) = (a + b - |a - b|) / 2: unlike C's fmin, keeps NaN
             type1 = (type1 + v - ca.fabs(type1 - v)) / 2
+        if self.m != 2 and getattr(self.kin, "platform", False):   # issue 26's platforms
+            return ca.vertcat(type1, conv(self.kin.parallel_measure()))
         if self.m != 2:
             return ca.vertcat(type1, self._type2_general(conv))
         re, im = 0, 0
@@ -173,8 +203,10 @@ def assembly_guard(d, conv, value, size):
     """``value`` where the pose ``conv`` binds is in the model's assembly mode, else NaN (size
     entries). Only a non-redundant robot (n = m) has other modes that fk cannot reach; its
     kinematics says which side it is on with ``assembly_side`` (the five-bar's: the sign of
-    cross(B2 - B1, O - B1) against ``fk_branch``). Other robots: ``value`` unchanged."""
-    if d.spec.n_legs != d.m or not hasattr(d.kin, "assembly_side"):
+    cross(B2 - B1, O - B1) against ``fk_branch``). Other robots: ``value`` unchanged (a
+    non-redundant platform's fk is a Gauss-Newton from a seed pose: it stays in the seed's
+    mode, and its wrench lines' measure vanishes between modes)."""
+    if d.spec.n_legs != d.m or d.m != 2 or not hasattr(d.kin, "assembly_side"):
         return value
     return ca.if_else(conv(d.kin.assembly_side()) * d.spec.fk_branch > 0, value,
                       ca.DM.nan(size))
@@ -201,7 +233,7 @@ def model_functions(d, prefix):
     cv = Converter(dict(zip(sym.xe, ca.vertsplit(xe))))
     add("ik", [("xe", xe)], [("q", assembly_guard(d, cv, cv(kin.ik()), 2 * n))])
     cqa = d.converter_qa(qa)
-    O = kin.fk()
+    O = d.fk_of_qa()
     add("fk", [("qa", qa)], [("xe", cqa(O)), ("residual", cqa(kin.closure_residuals(O)))])
     cq = d.converter_q(q)
     add("H", [("q", q)], [("H", cq(kin.H))])                                   # eq. 5
@@ -250,11 +282,14 @@ def energy_functions(d, prefix):
     cq = d.converter_q(q, [(sym.theta, theta)])
     ce = d.converter_xe(xe, [(sym.xed, xed), (sym.theta, theta)])
     ce = ce.extended([(sym.qd, ca.reshape(ce(kin.W), m, 2 * n).T @ xed)])    # qd = W xed, eq. 7
-    V = getattr(dyn, "V", sp.Integer(0))
+    # the legs' T in (q, qd) plus a platform's own T in xed; V of the legs and the platform
+    # (dynamics.py: potential_energy, zero in a horizontal plane)
+    T = dyn.T + getattr(dyn, "T_platform", sp.Integer(0))
+    V = getattr(dyn, "potential_energy", sp.Integer(0))
     return [ca.Function(f"{prefix}_Ge", [q, theta],
                         [cq(_gravity_term(d)), d.singularity_measures(cq)],
                         ["q", "theta"], ["Ge", "sing"]),
-            ca.Function(f"{prefix}_kinetic_energy", [xe, xed, theta], [ce(dyn.T)],
+            ca.Function(f"{prefix}_kinetic_energy", [xe, xed, theta], [ce(T)],
                         ["xe", "xed", "theta"], ["T"]),
             ca.Function(f"{prefix}_potential_energy", [xe, theta], [ce(V)],
                         ["xe", "theta"], ["V"])]

@@ -28,18 +28,22 @@ def _field_index(name):
     return base, (int(name[len(base):]) - 1 if len(base) < len(name) else 0)
 
 
-def plant_layout(n, param_names, friction_names):
+def plant_layout(n, param_names, friction_names, linear=False):
     """Plant truth: the model's inertial parameters (:func:`inertial_fields`; the RR legs'
-    alpha, beta, gamma), payload-augmented; friction with a Stribeck part."""
+    alpha, beta, gamma), payload-augmented; friction with a Stribeck part; the encoder step
+    of the angular actuators (rad) and, when some actuator is ``linear`` (PRR, RPR legs),
+    that of the linear encoders (m)."""
     friction = [("fv", n), ("fc", n), ("fs", n), ("stribeck_velocity", 1),
                 ("coulomb_smoothing_velocity", 1), ("encoder_step", 1)]
-    return Layout(inertial_fields(param_names, friction_names) + friction)
+    return Layout(inertial_fields(param_names, friction_names) + friction
+                  + ([("linear_encoder_step", 1)] if linear else []))
 
 
 def model_plant_layout(spec):
     """:func:`plant_layout` of a model: its own inertial parameters."""
     from pm2dof.core.model_file import FRICTION_MODELS
-    return plant_layout(spec.n_legs, spec.param_names, FRICTION_MODELS[spec.friction])
+    linear = any(getattr(leg, "kind", "RRR") != "RRR" for leg in spec.legs)
+    return plant_layout(spec.n_legs, spec.param_names, FRICTION_MODELS[spec.friction], linear)
 
 
 def closed_loop_layouts(n, p, m):
@@ -112,13 +116,18 @@ def plant_functions(d, prefix):
     f_step = ca.Function(f"{prefix}_plant_step", [x, tau, pp, h], [x_next],
                          ["x", "tau_a", "plant", "h"], ["x_next"])
     # encoder: the active coordinates of the true pose (angles from their unit vectors,
-    # prismatic ones from the inverse kinematics), quantised to encoder_step (0: exact)
+    # prismatic ones from the inverse kinematics), quantised to encoder_step, rad, or
+    # linear_encoder_step, m (0: exact)
     cik = d.converter_xe(xe)
     ua = kin.unit_vectors_from_xe()
-    qa = ca.vertcat(*[ca.atan2(cik(ua[sym.qa[i]][1]), cik(ua[sym.qa[i]][0])) if d.angular[i]
-                      else cik(sym.qa[i]) for i in range(n)])
-    step = P["encoder_step"]
-    qa_meas = ca.if_else(step > 0, step * ca.floor(qa / step + 0.5), qa)
+    qa_meas = []
+    for i in range(n):
+        if d.angular[i]:
+            q, step = ca.atan2(cik(ua[sym.qa[i]][1]), cik(ua[sym.qa[i]][0])), P["encoder_step"]
+        else:
+            q, step = cik(sym.qa[i]), P["linear_encoder_step"]
+        qa_meas.append(ca.if_else(step > 0, step * ca.floor(q / step + 0.5), q))
+    qa_meas = ca.vertcat(*qa_meas)
     f_meas = ca.Function(f"{prefix}_measure", [xe, pp], [qa_meas], ["xe", "plant"], ["qa"])
     return [f_xedd, f_step, f_meas]
 

@@ -29,6 +29,15 @@ __all__ = ["lqr_gains", "LQRController", "LQR_DEFAULT_WEIGHTS"]
 #: the square of what is acceptable): 0.1 mm of position error, 10 mm/s of velocity error,
 #: 2 N m of torque correction per actuator
 LQR_DEFAULT_WEIGHTS = {"Q_position": [1e8, 1e8], "Q_velocity": [1e4, 1e4], "R": 0.25}
+#: a platform's orientation phi, by the same rule: 1 mrad of error, 0.1 rad/s of rate error
+LQR_DEFAULT_PHI_WEIGHTS = {"Q_position": 1e6, "Q_velocity": 1e2}
+
+
+def _default_weights(model):
+    """LQR_DEFAULT_WEIGHTS in the model's task coordinates (phi's appended for a platform)."""
+    extra = [c for c in model.task_names if c not in ("x", "y")]
+    return {k: (list(v) + [LQR_DEFAULT_PHI_WEIGHTS[k]] * len(extra)
+                if k in LQR_DEFAULT_PHI_WEIGHTS else v) for k, v in LQR_DEFAULT_WEIGHTS.items()}
 
 
 def lqr_gains(A, B, Q, R):
@@ -117,7 +126,7 @@ class LQRController(_Controller):
         if abs(trajectory.period - self.sample_period) > 1e-12 * self.sample_period:
             raise ArgumentError(f"trajectory period {trajectory.period} s differs from the "
                                 f"controller's sample period {self.sample_period} s")
-        g = model.spec.gains.get("lqr") or LQR_DEFAULT_WEIGHTS
+        g = model.spec.gains.get("lqr") or _default_weights(model)
         name, n = type(self).__name__, model.n_legs
         qp = diagonal_gain(name, "Q_position", g["Q_position"] if Q_position is None
                            else Q_position, model.task_names)

@@ -103,21 +103,21 @@ def _coefficients(problem, p, dp, ddp):
     """One ``path_coefficients`` map over the points of ``problem``'s path at (p, dp, ddp):
     dict of its outputs (the other split's polygon not computed)."""
     model, split = problem.model, problem.split
-    K, n = len(p), model.n_legs
-    sizes = (("a", 2), ("b", 2), ("S", 2 * n), ("v1", n), ("N_min_norm", 2 * n),
-             ("h_min_norm", n), ("N_min_max", 2 * n), ("h_min_max", n), ("sing", 2))
+    K, f = len(p), model.function("path_coefficients")
     other = "min_max" if split == "min_norm" else "min_norm"
-    outs = {k: (None if k.endswith(other) else np.empty((K, m))) for k, m in sizes}
-    model.function("path_coefficients").map(K, p, dp, ddp, problem.theta, problem.tau_max,
-                                            *outs.values())
+    # a, b (g with gravity) (m,), S (n m,), v1 (n,), the facets N (m F,), h (F,), sing (2,)
+    outs = {k: (None if k.endswith(other) else np.empty((K, size)))
+            for k, size in zip(f.names_out, f.sizes_out)}
+    f.map(K, p, dp, ddp, problem.theta, problem.tau_max, *outs.values())
     return outs
 
 
 def _fill(model, stage, outs, split):
     st = model.layout("path_stage").unpack(stage)
     st["N"][:], st["h"][:] = outs[f"N_{split}"], outs[f"h_{split}"]
-    for key in ("a", "b", "S", "v1"):
-        st[key][:] = outs[key]
+    for key in ("a", "b", "g", "S", "v1"):
+        if key in st:                       # g: a model with gravity
+            st[key][:] = outs[key]
 
 
 def point_stages(problem, s, evaluated, check=True):

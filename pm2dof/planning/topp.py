@@ -209,7 +209,7 @@ def _plan(model, path, tau_max, split, theta, margin, grid, given):
         g.insert(mid[over], tuple(e[over] for e in ev_mid))   # halve them
     sdot = profile.sdot
     K, n = len(s), model.n_legs
-    outs = (np.empty((K, 2)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
+    outs = (np.empty((K, model.dof)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
     sdd_pt = np.concatenate([sdd[:-1], sdd[-2:-1]])
     model.function("path_torques").map(K, g.stage, sdot, sdd_pt, prm, tau, *outs)
     tau_grid = outs[1] if split == "min_norm" else outs[2]

@@ -41,7 +41,7 @@ def _at_rest(model, sample_xe):
 
 @pytest.mark.parametrize("split", SPLITS)
 def test_controllers_at_rest_command_zero_torque(model, sample_xe, split):
-    zero = np.zeros(2)
+    zero = np.zeros(model.dof)
     tol = 1e-9 * np.max(model.spec.limits["tau_max"])   # old convention: ~0.1 N m
     for qa, xd in _at_rest(model, sample_xe):
         for name, c in _controllers(model, xd, split).items():
@@ -56,7 +56,7 @@ def test_controllers_at_rest_command_zero_torque(model, sample_xe, split):
 def test_preload_split_at_rest_commands_only_the_preload(model, sample_xe):
     """With a preload the split's torque is an internal force: the model's preload split of
     u = 0 (S^T tau = 0; zero for two legs, which have none), nothing for friction."""
-    n, zero = model.n_legs, np.zeros(2)
+    n, zero = model.n_legs, np.zeros(model.dof)
     preload = 0.1 * np.asarray(model.spec.limits["tau_max"], dtype=float) * np.ones(n)
     sign = np.where(np.arange(n) % 2 == 0, 1.0, -1.0)
     for qa, xd in _at_rest(model, sample_xe):

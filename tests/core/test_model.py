@@ -355,9 +355,10 @@ def test_Y_theta_equals_the_dynamics(model, cases):
         Me, Ce, StF = model.Me(q, theta), model.Ce(q, xed, theta), model.StF(q, xed, theta)
         Yq = model.Y(q, xed, xrd, xrdd)
         assert Yq.shape == (2, p)
-        rhs = Me @ xrdd + Ce @ xrd + StF
+        Ge = model.Ge(q, theta)                  # the gravity term (zero in a horizontal plane)
+        rhs = Me @ xrdd + Ce @ xrd + StF + Ge
         # the scale is the size of the summed terms (cancellation must not tighten the check)
-        scale = maxabs(Me @ xrdd) + maxabs(Ce @ xrd) + maxabs(StF)
+        scale = maxabs(Me @ xrdd) + maxabs(Ce @ xrd) + maxabs(StF) + maxabs(Ge)
         check("Y theta vs Me xrdd + Ce xrd + StF", Yq @ theta, rhs, TOL_EXACT, scale,
               fmt(xe=xe, xed=xed, xrd=xrd, xrdd=xrdd, theta=theta), model)
 

@@ -388,11 +388,12 @@ def test_manifest_signatures_match_the_loaded_functions(model, manifest):
 # Stale generated code is refused
 # --------------------------------------------------------------------------------------
 
-_BASE_X = re.compile(r"(base\s*=\s*\[\s*)([-+0-9.eE]+)")
+_BASE_X = re.compile(r"(base\s*=\s*\[\s*|rail\s*=\s*\[\s*\[\s*)([-+0-9.eE]+)")  # PRR: rail start
 
 
 def test_edited_base_is_refused(model, tmp_path):
-    """Every model: a copy of its model file with leg 1's base moved 1 mm in x is stale."""
+    """Every model: a copy of its model file with leg 1's base (a PRR leg's rail start) moved
+    1 mm in x is stale."""
     text = Path(model.spec.path).read_text()
     match = _BASE_X.search(text)
     assert match, f"no `base = [x, y]` in {model.spec.path}"
@@ -473,9 +474,10 @@ def test_runtime_never_imports_sympy_casadi_derive():
         "    t = next(iter(m.spec.trajectories.values()))\n"
         "    xe = (np.asarray(t['start']) + np.asarray(t['end'])) / 2\n"
         "    q = m.ik(xe)\n"
-        "    Y = m.Y(q, [0.1, 0.2], [0.1, 0.0], [1.0, 0.0])\n"
-        "    m.forward_dynamics(xe, [0.1, 0.2], np.arange(1.0, n + 1), m.theta_nominal)\n"
-        "    assert Y.shape == (2, len(m.param_names))\n"
+        "    v, a = np.r_[0.1, 0.2, 0.3][:m.dof], np.r_[1.0, 0.0, 0.5][:m.dof]\n"
+        "    Y = m.Y(q, v, v, a)\n"
+        "    m.forward_dynamics(xe, v, np.arange(1.0, n + 1), m.theta_nominal)\n"
+        "    assert Y.shape == (m.dof, len(m.param_names))\n"
         "    done.append(m.name)\n"
         "bad = sorted(k for k in sys.modules if k.split('.')[0] in ('sympy', 'casadi')\n"
         "             or k.startswith('pm2dof.derive'))\n"
