@@ -4,13 +4,16 @@ import sympy as sp
 
 from .symbols import solve2, solve_small
 
-__all__ = ["Kinematics", "FK_NEWTON_STEPS"]
+__all__ = ["Kinematics", "FK_NEWTON_STEPS", "FK_NEWTON_TOL"]
 
 #: Gauss-Newton steps of a platform's fk from its seed pose (fk_newton_step). From the previous
 #: sample's pose (about 1 mm and 0.005 rad away at 0.5 m/s and 2 ms) 3 steps reach rounding;
 #: 8 reach it from seeds up to 0.05 m and 0.2 rad away on the shipped platforms; 0.1 m and
 #: 0.3 rad can diverge, which the closure residual reports (tests/mechanisms/test_independent.py)
 FK_NEWTON_STEPS = 8
+#: m (rad for phi): a Gauss-Newton step this small is not taken (converged); far below an
+#: encoder count's motion (~1e-5 m), far above rounding (~1e-17)
+FK_NEWTON_TOL = 1e-12
 
 
 def _exact(value):

@@ -56,13 +56,17 @@ class Derivation:
     def _platform_fk(self, symbols, trig, seed):
         """A platform's fk as CasADi: FK_NEWTON_STEPS Gauss-Newton steps
         (kinematics.fk_newton_step) from ``seed`` (m,), in the measured qa of ``symbols``."""
-        from .kinematics import FK_NEWTON_STEPS
+        from .kinematics import FK_NEWTON_STEPS, FK_NEWTON_TOL
         xe = ca.SX.sym("xe_newton", self.m)
         conv = Converter({**symbols, **dict(zip(self.sym.xe, ca.vertsplit(xe)))}, dict(trig))
         step = conv(self.kin.fk_newton_step())
         O = seed
         for _ in range(FK_NEWTON_STEPS):
-            O = ca.substitute(step, xe, O)
+            O_next = ca.substitute(step, xe, O)
+            # a converged step (|dO| <= FK_NEWTON_TOL) is not taken: unchanged encoder readings
+            # give the seed (the previous pose) back exactly, so a robot at rest measures zero
+            # velocity, not rounding noise that sign(v) of eq. 2 would turn into +-fc
+            O = ca.if_else(ca.norm_inf(O_next - O) > FK_NEWTON_TOL, O_next, O)
         return O
 
     def preload(self, S, u, w, sigma, p):

@@ -852,7 +852,7 @@ int prr3_platform_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, cas
 #define prr3_platform_na_proj_preload_closed_loop_SZ_ARG 14
 #define prr3_platform_na_proj_preload_closed_loop_SZ_RES 8
 #define prr3_platform_na_proj_preload_closed_loop_SZ_IW 0
-#define prr3_platform_na_proj_preload_closed_loop_SZ_W 317
+#define prr3_platform_na_proj_preload_closed_loop_SZ_W 318
 int prr3_platform_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int prr3_platform_apd_closed_loop_checkout(void);
 void prr3_platform_apd_closed_loop_release(int mem);

@@ -762,7 +762,7 @@ int rpr3_platform_na_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 #define rpr3_platform_na_closed_loop_SZ_ARG 9
 #define rpr3_platform_na_closed_loop_SZ_RES 6
 #define rpr3_platform_na_closed_loop_SZ_IW 0
-#define rpr3_platform_na_closed_loop_SZ_W 305
+#define rpr3_platform_na_closed_loop_SZ_W 306
 int rpr3_platform_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_na_minmax_closed_loop_checkout(void);
 void rpr3_platform_na_minmax_closed_loop_release(int mem);
@@ -816,7 +816,7 @@ int rpr3_platform_na_proj_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int*
 #define rpr3_platform_na_proj_closed_loop_SZ_ARG 9
 #define rpr3_platform_na_proj_closed_loop_SZ_RES 6
 #define rpr3_platform_na_proj_closed_loop_SZ_IW 0
-#define rpr3_platform_na_proj_closed_loop_SZ_W 305
+#define rpr3_platform_na_proj_closed_loop_SZ_W 306
 int rpr3_platform_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_na_proj_minmax_closed_loop_checkout(void);
 void rpr3_platform_na_proj_minmax_closed_loop_release(int mem);
@@ -834,7 +834,7 @@ int rpr3_platform_na_proj_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casa
 #define rpr3_platform_na_proj_minmax_closed_loop_SZ_ARG 9
 #define rpr3_platform_na_proj_minmax_closed_loop_SZ_RES 6
 #define rpr3_platform_na_proj_minmax_closed_loop_SZ_IW 0
-#define rpr3_platform_na_proj_minmax_closed_loop_SZ_W 305
+#define rpr3_platform_na_proj_minmax_closed_loop_SZ_W 306
 int rpr3_platform_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_na_proj_preload_closed_loop_checkout(void);
 void rpr3_platform_na_proj_preload_closed_loop_release(int mem);
@@ -852,7 +852,7 @@ int rpr3_platform_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, cas
 #define rpr3_platform_na_proj_preload_closed_loop_SZ_ARG 14
 #define rpr3_platform_na_proj_preload_closed_loop_SZ_RES 8
 #define rpr3_platform_na_proj_preload_closed_loop_SZ_IW 0
-#define rpr3_platform_na_proj_preload_closed_loop_SZ_W 376
+#define rpr3_platform_na_proj_preload_closed_loop_SZ_W 377
 int rpr3_platform_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_apd_closed_loop_checkout(void);
 void rpr3_platform_apd_closed_loop_release(int mem);
@@ -870,7 +870,7 @@ int rpr3_platform_apd_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 #define rpr3_platform_apd_closed_loop_SZ_ARG 9
 #define rpr3_platform_apd_closed_loop_SZ_RES 6
 #define rpr3_platform_apd_closed_loop_SZ_IW 0
-#define rpr3_platform_apd_closed_loop_SZ_W 283
+#define rpr3_platform_apd_closed_loop_SZ_W 284
 int rpr3_platform_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_apd_minmax_closed_loop_checkout(void);
 void rpr3_platform_apd_minmax_closed_loop_release(int mem);
@@ -924,7 +924,7 @@ int rpr3_platform_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 #define rpr3_platform_ctc_closed_loop_SZ_ARG 9
 #define rpr3_platform_ctc_closed_loop_SZ_RES 6
 #define rpr3_platform_ctc_closed_loop_SZ_IW 0
-#define rpr3_platform_ctc_closed_loop_SZ_W 287
+#define rpr3_platform_ctc_closed_loop_SZ_W 288
 int rpr3_platform_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_ctc_minmax_closed_loop_checkout(void);
 void rpr3_platform_ctc_minmax_closed_loop_release(int mem);

@@ -852,7 +852,7 @@ int rrr3_platform_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, cas
 #define rrr3_platform_na_proj_preload_closed_loop_SZ_ARG 14
 #define rrr3_platform_na_proj_preload_closed_loop_SZ_RES 8
 #define rrr3_platform_na_proj_preload_closed_loop_SZ_IW 0
-#define rrr3_platform_na_proj_preload_closed_loop_SZ_W 364
+#define rrr3_platform_na_proj_preload_closed_loop_SZ_W 365
 int rrr3_platform_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_apd_closed_loop_checkout(void);
 void rrr3_platform_apd_closed_loop_release(int mem);

@@ -762,7 +762,7 @@ int rrr4_platform_na_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 #define rrr4_platform_na_closed_loop_SZ_ARG 9
 #define rrr4_platform_na_closed_loop_SZ_RES 6
 #define rrr4_platform_na_closed_loop_SZ_IW 0
-#define rrr4_platform_na_closed_loop_SZ_W 365
+#define rrr4_platform_na_closed_loop_SZ_W 366
 int rrr4_platform_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr4_platform_na_minmax_closed_loop_checkout(void);
 void rrr4_platform_na_minmax_closed_loop_release(int mem);
@@ -816,7 +816,7 @@ int rrr4_platform_na_proj_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int*
 #define rrr4_platform_na_proj_closed_loop_SZ_ARG 9
 #define rrr4_platform_na_proj_closed_loop_SZ_RES 6
 #define rrr4_platform_na_proj_closed_loop_SZ_IW 0
-#define rrr4_platform_na_proj_closed_loop_SZ_W 365
+#define rrr4_platform_na_proj_closed_loop_SZ_W 366
 int rrr4_platform_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr4_platform_na_proj_minmax_closed_loop_checkout(void);
 void rrr4_platform_na_proj_minmax_closed_loop_release(int mem);
@@ -852,7 +852,7 @@ int rrr4_platform_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, cas
 #define rrr4_platform_na_proj_preload_closed_loop_SZ_ARG 14
 #define rrr4_platform_na_proj_preload_closed_loop_SZ_RES 8
 #define rrr4_platform_na_proj_preload_closed_loop_SZ_IW 0
-#define rrr4_platform_na_proj_preload_closed_loop_SZ_W 680
+#define rrr4_platform_na_proj_preload_closed_loop_SZ_W 681
 int rrr4_platform_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr4_platform_apd_closed_loop_checkout(void);
 void rrr4_platform_apd_closed_loop_release(int mem);
@@ -1014,7 +1014,7 @@ int rrr4_platform_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_
 #define rrr4_platform_lqr_preload_closed_loop_SZ_ARG 16
 #define rrr4_platform_lqr_preload_closed_loop_SZ_RES 8
 #define rrr4_platform_lqr_preload_closed_loop_SZ_IW 0
-#define rrr4_platform_lqr_preload_closed_loop_SZ_W 469
+#define rrr4_platform_lqr_preload_closed_loop_SZ_W 471
 int rrr4_platform_path_coefficients(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr4_platform_path_coefficients_checkout(void);
 void rrr4_platform_path_coefficients_release(int mem);
