@@ -84,7 +84,7 @@ def test_closed_loop_eigenvalues_predict_the_sampled_closed_loop(first_point):
     xd = np.tile(x0 + delta, (N, 1))
     xd[0] = x0
     z = np.zeros((N, 2))
-    traj = pm2dof.Trajectory(np.arange(N) * T, xd, z, z, T, tuple(x0), tuple(x0 + delta), None)
+    traj = pm2dof.Trajectory(np.arange(N) * T, xd, z, z, T)
     r = pm2dof.simulate(m, ctc, traj, truth=truth, quantise=False)
     # the linear closed loop: xi_k = [dxe, dxed, dxe_{k-1}] about the set point
     Ad, Bd = m.linearize(x0, [0, 0], np.zeros(n), th, discrete=True)

@@ -284,7 +284,8 @@ def test_toy_plant_and_encoder(toy):
         fields.setdefault(base, []).append(value)
     vec = P.pack(**{k: np.array(fields[k]) for k, _ in P.fields if k in fields and k not in ("fv", "fc")},
                  fv=np.zeros(4), fc=np.zeros(4), fs=np.zeros(4), stribeck_velocity=1.0,
-                 coulomb_smoothing_velocity=1.0, encoder_step=0.0)
+                 coulomb_smoothing_velocity=1.0, encoder_step=0.0,
+                 linear_encoder_step=0.0)
     tau = np.array([3.0, -2.0, 1.5, 0.5])
     np.testing.assert_allclose(_v(fs["plant_xedd"](XE, XED, tau, vec)),
                                _v(fs["forward_dynamics"](XE, XED, tau, th)[0]), rtol=1e-10)
@@ -411,5 +412,8 @@ def test_manifest_names_the_task_coordinates(toy):
     from pm2dof.core.paths import SHIPPED_GENERATED
     from pm2dof.derive.run import task_names
     assert task_names(toy[0]) == ("x", "y", "phi")
+    from pm2dof.core.model_file import read_model_file
+    from pm2dof.core.paths import SHIPPED_MODELS
     for path in sorted(SHIPPED_GENERATED.glob("*/manifest.json")):
-        assert json.loads(path.read_text())["task_names"] == ["x", "y"], path
+        spec = read_model_file(SHIPPED_MODELS / f"{path.parent.name}.toml")
+        assert json.loads(path.read_text())["task_names"] == list(spec.task_names), path

@@ -29,6 +29,8 @@ class Spec:
     name, n_legs, friction, friction_constants = "toy3", N_LEGS, "coulomb_viscous", {}
     fk_branch, rk4_substeps, dof, task_names = 1, 2, 3, ("x", "y", "phi")
     param_names = PARAMS
+    # the leg kinds the plant's layout reads: legs 1-2 actuated by lengths (angular False)
+    legs = tuple(type("Leg", (), {"kind": k})() for k in ["PRR"] * 2 + ["RRR"] * (N_LEGS - 2))
 
 
 class Symbols:
@@ -88,6 +90,9 @@ class Kinematics:
     def sin_ab(self, i):
         return sp.Rational(1, 2) + sp.cos(self.sym.qb[i]) / 4
 
+    def leg_measure(self, i):          # the derivation's type I measure of leg i
+        return self.sin_ab(i)
+
     def unit_vectors_from_xe(self):
         return {s: (sp.cos(e), sp.sin(e)) for s, e, a in zip(self.sym.q, self.IK, self.angular) if a}
 
@@ -142,6 +147,7 @@ class Dynamics:
         tau = self.Me * sym.xrdd + self.Ce * sym.xrd + self.StF + self.Ge
         self.Y = tau.jacobian(sym.theta)
         self.xedd = _solve3(self.Me, S.T * sym.tau_a - self.Ce * sym.xed - self.StF - self.Ge)
+        self.potential_energy = self.V      # the name the derivation reads (dynamics.py)
 
 
 def derivation():
