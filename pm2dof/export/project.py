@@ -16,7 +16,12 @@ from pathlib import Path
 
 from ..control.controllers import SPLITS, APDController, CTCController, NAController
 from ..core import paths
-from ..core.errors import ArgumentError, OutputError, StaleGeneratedCodeError
+from ..core.errors import (
+    ArgumentError,
+    OutputError,
+    StaleGeneratedCodeError,
+    UnsupportedMechanismError,
+)
 from ..core.layout import Layout
 from ..core.model import load_model
 from ..core.status import Status
@@ -208,6 +213,8 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
         An unknown precision or controller.
     OutputError
         ``out`` is a file, or a non-empty folder without ``force``.
+    UnsupportedMechanismError
+        A platform, prismatic legs or gravity (issue 26's kinds): not exported yet.
     """
     _check_choice("precision", precision, PRECISIONS)
     laws = parse_controllers(",".join(controllers) if not isinstance(controllers, str)
@@ -215,6 +222,15 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     if out is None:
         raise ArgumentError("export_project: give the output folder (out=...)")
     m = load_model(model, generated)
+    if m.dof != 2 or any(getattr(leg, "kind", "RRR") != "RRR" for leg in m.spec.legs) \
+            or getattr(m.spec, "has_gravity", False):
+        # the API header, the reference data and the example are written for (x, y) and RRR
+        # legs in a horizontal plane; the issue-26 kinds are not exported yet
+        raise UnsupportedMechanismError(
+            f"pm2dof export supports RRR legs meeting at a point in a horizontal plane so far; "
+            f"{m.name!r} has task {m.task_names}, legs "
+            f"{[getattr(leg, 'kind', 'RRR') for leg in m.spec.legs]} and gravity "
+            f"{list(getattr(m.spec, 'gravity', (0.0, 0.0)))}")
     move_name = reference.reference_move(m, move)[0]     # an unknown move: refused here
     c_text, h_text = _generated_sources(m)
     name, n, p = m.name, m.n_legs, len(m.param_names)
