@@ -25,6 +25,7 @@ from ..core.errors import (
 from ..core.layout import Layout
 from ..core.model import load_model
 from ..core.status import Status
+from ..core.task import require_rr_point
 from ..core.version import __version__
 from . import reference, single
 
@@ -222,15 +223,13 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     if out is None:
         raise ArgumentError("export_project: give the output folder (out=...)")
     m = load_model(model, generated)
-    if m.dof != 2 or any(getattr(leg, "kind", "RRR") != "RRR" for leg in m.spec.legs) \
-            or getattr(m.spec, "has_gravity", False):
-        # the API header, the reference data and the example are written for (x, y) and RRR
-        # legs in a horizontal plane; the issue-26 kinds are not exported yet
+    # the API header, the reference data and the example are written for (x, y), RRR legs and
+    # a horizontal plane: issue 26's other kinds are not exported yet
+    require_rr_point(m, "pm2dof export (its C API and reference data)")
+    if getattr(m.spec, "has_gravity", False):
         raise UnsupportedMechanismError(
-            f"pm2dof export supports RRR legs meeting at a point in a horizontal plane so far; "
-            f"{m.name!r} has task {m.task_names}, legs "
-            f"{[getattr(leg, 'kind', 'RRR') for leg in m.spec.legs]} and gravity "
-            f"{list(getattr(m.spec, 'gravity', (0.0, 0.0)))}")
+            f"pm2dof export covers a horizontal plane only; model {m.name!r} has gravity "
+            f"{list(m.spec.gravity)}")
     move_name = reference.reference_move(m, move)[0]     # an unknown move: refused here
     c_text, h_text = _generated_sources(m)
     name, n, p = m.name, m.n_legs, len(m.param_names)
