@@ -24,6 +24,7 @@ from ..core.task import is_rr_point
 from .controllers import _Controller, check_same_model
 from .outcome import OUTCOMES, classify_failure
 from .plant import plant_vector
+from .plant_step import check_plant_step
 from .trajectory import _positive, require_trajectory
 
 __all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "rmse",
@@ -347,6 +348,7 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
     n_move = len(trajectory.t)
     traj = trajectory.extended(ts) if ts > 0 else trajectory
     plant = plant_vector(model, truth, quantise, encoder_counts_per_rev)
+    check_plant_step(model, traj.xd, truth)
     if isinstance(controller, PythonController):   # one Python step per sample
         x, y, ylay = python_rollout(model, controller, traj, plant, theta_hat0)
     else:

@@ -15,6 +15,7 @@ import numpy as np
 
 from ..control.controllers import APDController, CTCController, NAController
 from ..control.plant import plant_vector, theta_truth
+from ..control.plant_step import check_plant_step
 from ..control.simulate import batch_inputs, check_trajectory, completed_samples
 from ..control.trajectory import line, model_move
 from ..core.model import load_model
@@ -140,6 +141,8 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
     Y = None
     for r in range(study.runs):
         rows = np.array([study.rollout(c, m, d, r) for d in draws]) - row0
+        for d in draws:                      # the plant's RK4 substep stable near rest
+            check_plant_step(model, traj.xd, plants[d][r][0])
         f, X, u, P, ylay = batch_inputs(model, ctrl, traj, [plants[d][r][3] for d in draws],
                                         theta)
         for k, d in enumerate(draws):

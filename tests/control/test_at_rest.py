@@ -71,10 +71,6 @@ def test_preload_split_at_rest_commands_only_the_preload(model, sample_xe):
                                        err_msg=f"{model.name} {name} at {xd.tolist()}")
 
 
-#: models whose hold drifts past one count (measured: rrr3_platform 0.9-2.9 counts, prr3_platform
-#: ~90-100, rpr3_platform ~340-560 and prr_point 12-22 counts of their 1e-6 m linear encoders): an open defect of the
-#: platforms' closed loop at rest (issue 26), kept visible as a strict xfail, not a pass
-HOLD_DRIFTS = {"rrr3_platform", "prr3_platform", "rpr3_platform", "prr_point"}
 
 
 @pytest.mark.parametrize("law", ["NA", "APD"])
@@ -94,7 +90,4 @@ def test_simulated_hold_stays_within_one_encoder_count(model, law):
     qa0 = model.ik(x0)[:model.n_legs]
     qa = np.array([model.ik(x)[:model.n_legs] for x in res.xe])
     drift = np.abs(qa - qa0).max(axis=0) / count
-    if model.name in HOLD_DRIFTS:                  # strict: a fixed model must leave the set
-        assert not np.all(drift <= 1.0), f"{model.name} {law} holds now: remove it from HOLD_DRIFTS"
-        pytest.xfail(f"{model.name} {law}: joints drift {drift} encoder counts (open defect)")
     assert np.all(drift <= 1.0), f"{model.name} {law}: joints drift {drift} encoder counts"

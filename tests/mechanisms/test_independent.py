@@ -180,7 +180,11 @@ class Setup:
         n = self.lam.n
         fv = np.array([self.fric[f"fv{i + 1}"] for i in range(n)])
         fc = np.array([self.fric[f"fc{i + 1}"] for i in range(n)])
-        assert self.lam.spec.friction == "coulomb_viscous"
+        law = self.lam.spec.friction
+        if law == "smooth_sign":            # sign(v) -> v / sqrt(v^2 + eps^2) (docs/model-file.md)
+            eps = self.lam.spec.friction_constants["sign_smoothing_velocity"]
+            return fc * qd_a / np.sqrt(qd_a**2 + eps**2) + fv * qd_a
+        assert law == "coulomb_viscous", law
         return fc * _sgn(qd_a) + fv * qd_a
 
 

@@ -1,4 +1,4 @@
-/* pm2dof generated code for model 'prr_point' (3 legs, friction 'coulomb_viscous').
+/* pm2dof generated code for model 'prr_point' (3 legs, friction 'smooth_sign').
  * Written by `pm2dof derive` from the model file; do not edit.
  *
  * Every function follows CasADi's C API: int f(const double** arg, double** res,
@@ -1069,7 +1069,7 @@ int prr_point_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, c
 #define prr_point_path_backward_SZ_ARG 22
 #define prr_point_path_backward_SZ_RES 9
 #define prr_point_path_backward_SZ_IW 0
-#define prr_point_path_backward_SZ_W 311
+#define prr_point_path_backward_SZ_W 304
 int prr_point_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int prr_point_path_forward_checkout(void);
 void prr_point_path_forward_release(int mem);
@@ -1087,7 +1087,7 @@ int prr_point_path_forward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, ca
 #define prr_point_path_forward_SZ_ARG 10
 #define prr_point_path_forward_SZ_RES 6
 #define prr_point_path_forward_SZ_IW 0
-#define prr_point_path_forward_SZ_W 87
+#define prr_point_path_forward_SZ_W 98
 int prr_point_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int prr_point_path_torques_checkout(void);
 void prr_point_path_torques_release(int mem);
@@ -1195,7 +1195,7 @@ int prr_point_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* 
 #define prr_point_sampled_step_jacobians_SZ_ARG 8
 #define prr_point_sampled_step_jacobians_SZ_RES 10
 #define prr_point_sampled_step_jacobians_SZ_IW 8
-#define prr_point_sampled_step_jacobians_SZ_W 674
+#define prr_point_sampled_step_jacobians_SZ_W 857
 int prr_point_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int prr_point_Ge_checkout(void);
 void prr_point_Ge_release(int mem);

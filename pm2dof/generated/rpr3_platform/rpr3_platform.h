@@ -1,4 +1,4 @@
-/* pm2dof generated code for model 'rpr3_platform' (3 legs, friction 'coulomb_viscous').
+/* pm2dof generated code for model 'rpr3_platform' (3 legs, friction 'smooth_sign').
  * Written by `pm2dof derive` from the model file; do not edit.
  *
  * Every function follows CasADi's C API: int f(const double** arg, double** res,
@@ -1068,7 +1068,7 @@ int rpr3_platform_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define rpr3_platform_path_backward_SZ_ARG 22
 #define rpr3_platform_path_backward_SZ_RES 9
 #define rpr3_platform_path_backward_SZ_IW 0
-#define rpr3_platform_path_backward_SZ_W 376
+#define rpr3_platform_path_backward_SZ_W 366
 int rpr3_platform_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_path_forward_checkout(void);
 void rpr3_platform_path_forward_release(int mem);
@@ -1086,7 +1086,7 @@ int rpr3_platform_path_forward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res
 #define rpr3_platform_path_forward_SZ_ARG 10
 #define rpr3_platform_path_forward_SZ_RES 6
 #define rpr3_platform_path_forward_SZ_IW 0
-#define rpr3_platform_path_forward_SZ_W 93
+#define rpr3_platform_path_forward_SZ_W 103
 int rpr3_platform_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_path_torques_checkout(void);
 void rpr3_platform_path_torques_release(int mem);
@@ -1194,7 +1194,7 @@ int rpr3_platform_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_i
 #define rpr3_platform_sampled_step_jacobians_SZ_ARG 8
 #define rpr3_platform_sampled_step_jacobians_SZ_RES 10
 #define rpr3_platform_sampled_step_jacobians_SZ_IW 10
-#define rpr3_platform_sampled_step_jacobians_SZ_W 1850
+#define rpr3_platform_sampled_step_jacobians_SZ_W 3056
 int rpr3_platform_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_Ge_checkout(void);
 void rpr3_platform_Ge_release(int mem);

@@ -1,4 +1,4 @@
-/* pm2dof generated code for model 'rrr3_platform' (3 legs, friction 'coulomb_viscous').
+/* pm2dof generated code for model 'rrr3_platform' (3 legs, friction 'smooth_sign').
  * Written by `pm2dof derive` from the model file; do not edit.
  *
  * Every function follows CasADi's C API: int f(const double** arg, double** res,
@@ -798,7 +798,7 @@ int rrr3_platform_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_i
 #define rrr3_platform_na_preload_closed_loop_SZ_ARG 14
 #define rrr3_platform_na_preload_closed_loop_SZ_RES 8
 #define rrr3_platform_na_preload_closed_loop_SZ_IW 0
-#define rrr3_platform_na_preload_closed_loop_SZ_W 364
+#define rrr3_platform_na_preload_closed_loop_SZ_W 367
 int rrr3_platform_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_na_proj_closed_loop_checkout(void);
 void rrr3_platform_na_proj_closed_loop_release(int mem);
@@ -852,7 +852,7 @@ int rrr3_platform_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, cas
 #define rrr3_platform_na_proj_preload_closed_loop_SZ_ARG 14
 #define rrr3_platform_na_proj_preload_closed_loop_SZ_RES 8
 #define rrr3_platform_na_proj_preload_closed_loop_SZ_IW 0
-#define rrr3_platform_na_proj_preload_closed_loop_SZ_W 365
+#define rrr3_platform_na_proj_preload_closed_loop_SZ_W 368
 int rrr3_platform_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_apd_closed_loop_checkout(void);
 void rrr3_platform_apd_closed_loop_release(int mem);
@@ -906,7 +906,7 @@ int rrr3_platform_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_
 #define rrr3_platform_apd_preload_closed_loop_SZ_ARG 14
 #define rrr3_platform_apd_preload_closed_loop_SZ_RES 8
 #define rrr3_platform_apd_preload_closed_loop_SZ_IW 0
-#define rrr3_platform_apd_preload_closed_loop_SZ_W 342
+#define rrr3_platform_apd_preload_closed_loop_SZ_W 345
 int rrr3_platform_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_ctc_closed_loop_checkout(void);
 void rrr3_platform_ctc_closed_loop_release(int mem);
@@ -960,7 +960,7 @@ int rrr3_platform_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_
 #define rrr3_platform_ctc_preload_closed_loop_SZ_ARG 14
 #define rrr3_platform_ctc_preload_closed_loop_SZ_RES 8
 #define rrr3_platform_ctc_preload_closed_loop_SZ_IW 0
-#define rrr3_platform_ctc_preload_closed_loop_SZ_W 349
+#define rrr3_platform_ctc_preload_closed_loop_SZ_W 352
 int rrr3_platform_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_lqr_closed_loop_checkout(void);
 void rrr3_platform_lqr_closed_loop_release(int mem);
@@ -1068,7 +1068,7 @@ int rrr3_platform_path_backward_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define rrr3_platform_path_backward_SZ_ARG 22
 #define rrr3_platform_path_backward_SZ_RES 9
 #define rrr3_platform_path_backward_SZ_IW 0
-#define rrr3_platform_path_backward_SZ_W 376
+#define rrr3_platform_path_backward_SZ_W 366
 int rrr3_platform_path_forward(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_path_forward_checkout(void);
 void rrr3_platform_path_forward_release(int mem);
@@ -1086,7 +1086,7 @@ int rrr3_platform_path_forward_work_bytes(casadi_int *sz_arg, casadi_int* sz_res
 #define rrr3_platform_path_forward_SZ_ARG 10
 #define rrr3_platform_path_forward_SZ_RES 6
 #define rrr3_platform_path_forward_SZ_IW 0
-#define rrr3_platform_path_forward_SZ_W 93
+#define rrr3_platform_path_forward_SZ_W 103
 int rrr3_platform_path_torques(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_path_torques_checkout(void);
 void rrr3_platform_path_torques_release(int mem);
@@ -1194,7 +1194,7 @@ int rrr3_platform_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_i
 #define rrr3_platform_sampled_step_jacobians_SZ_ARG 8
 #define rrr3_platform_sampled_step_jacobians_SZ_RES 10
 #define rrr3_platform_sampled_step_jacobians_SZ_IW 10
-#define rrr3_platform_sampled_step_jacobians_SZ_W 1957
+#define rrr3_platform_sampled_step_jacobians_SZ_W 1975
 int rrr3_platform_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_Ge_checkout(void);
 void rrr3_platform_Ge_release(int mem);
