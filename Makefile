@@ -57,12 +57,13 @@ test: install
 lint: $(STAMP)
 	$(VENV)/bin/ruff check pm2dof tests
 
-# the documentation site: docs/*.md and the docstrings, warnings are errors (mkdocs.yml).
+# the documentation site: docs/*.md and the docstrings, warnings are errors (mkdocs.yml); the
+# docstrings' Sphinx roles become cross-links of the API page (docs/_ext/sphinx_roles.py).
 # NO_MKDOCS_2_WARNING silences the Material theme's banner about MkDocs 2 (pinned < 2).
 docs: $(STAMP)
 	NO_MKDOCS_2_WARNING=1 $(VENV)/bin/mkdocs build --strict --site-dir site
-	! grep -l -E ':(func|class|meth|attr|mod|data|exc):' site/api.html || \
-		{ echo "make docs: Sphinx roles left in site/api.html (docs/_ext/sphinx_roles.py)"; exit 1; }
+	! grep -l -E ':(func|class|meth|attr|mod|data|exc):|autoref |&lt;autoref' site/api.html || \
+		{ echo "make docs: Sphinx roles or autoref markup left in site/api.html (docs/_ext/sphinx_roles.py)"; exit 1; }
 
 # the wheel and sdist need only the build frontend: `python -m build` installs the backend
 # ([build-system] requires: setuptools, wheel) into an isolated environment of its own

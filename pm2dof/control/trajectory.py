@@ -138,6 +138,9 @@ class SCurve:
 class Trajectory:
     """Sampled desired task-space motion.
 
+    Plain samples: a line's end points and S-curve belong to its plan (:func:`line_profile`,
+    a :class:`pm2dof.planning.Plan`'s ``path`` and ``profile``), not to its samples.
+
     Attributes
     ----------
     t : ndarray, shape (N,)
@@ -147,9 +150,6 @@ class Trajectory:
         dimension) is taken from ``xd``.
     period : float
         Sampling period, s.
-
-    Plain samples: a line's end points and S-curve belong to its plan (:func:`line_profile`,
-    a :class:`pm2dof.planning.Plan`'s ``path`` and ``profile``), not to its samples.
     """
 
     t: np.ndarray = field(repr=False)
