@@ -245,18 +245,6 @@ _NOT_RUN["control/test_task_dimension.py::test_dof_and_task_names_follow_the_gen
 #: in the full run after the models were shipped; the closing note of the stop lists them.
 _PLATFORMS = {"rrr3_platform", "rrr4_platform", "prr3_platform", "rpr3_platform"}
 _KNOWN_FAILING = {
-    **{f"derivatives/test_derivatives_jacobians.py::{t}": _PLATFORMS for t in (
-        "test_forward_dynamics_jacobians_match_central_differences",
-        "test_d_xedd_d_tau_is_Me_inverse_S_transpose", "test_d_xedd_d_theta_is_minus_Me_inverse_Y",
-        "test_inverse_dynamics_inverts_forward_dynamics_and_its_jacobians",
-        "test_sampled_step_and_its_jacobians", "test_continuous_linearisation_is_the_state_space_form",
-        "test_out_writes_into_the_callers_arrays")},
-    **{f"derivatives/test_at_rest_dynamics.py::{t}": _PLATFORMS | {"shang2010_vertical"} for t in (
-        "test_forward_dynamics_at_rest_has_no_friction",
-        "test_discrete_linearize_at_rest_is_an_equilibrium")},
-    "derivatives/test_at_rest_dynamics.py::"
-    "test_continuous_linearize_at_rest_matches_symmetric_differences":   # whole test ids
-        {f"{p}-{v}" for p in _PLATFORMS for v in ("zero", "random")} | {"shang2010_vertical-zero"},
     "planning/test_planning_coefficients.py::test_coefficients_match_the_model_functions":
         _PLATFORMS | {"shang2010_vertical"},
     "planning/test_planning_coefficients.py::test_torques_along_a_path_match_inverse_dynamics":

@@ -19,18 +19,31 @@ import pm2dof
 H_REL = 1e-6        # the step, relative to each variable's scale
 TOL = 1e-6          # of the block's largest entry (see the module docstring)
 SCALE = {"xe": 0.1, "xed": 0.2, "tau_a": 1.0, "theta": None, "x": None}
+# A platform's phi: 0.3 rad, and 0.6 rad/s (the same 0.5 s as 0.1 m -> 0.2 m/s). phi enters
+# through R(phi) (varies on ~1 rad) and moves an attachment point (r <= 0.08 m on the shipped
+# platforms) by r phi <= 0.024 m, within the 0.1 m of x, y: a smaller scale than the one phi
+# varies on, so the docstring's truncation bound holds, and its step (3e-7 rad) exceeds x's
+# (1e-7 m), so the rounding bound holds too. The shipped moves turn by 0.1-0.2 rad.
+PHI_SCALE = {"xe": 0.3, "xed": 0.6}
 N_STATES = 4
 
 
+def task_scale(model, key):
+    """(m,) the scale of each task coordinate of ``key`` ("xe" or "xed"), in task_names order."""
+    return np.array([PHI_SCALE[key] if name == "phi" else SCALE[key]
+                     for name in model.task_names])
+
+
 def states(model, sample_xe, random_theta, seed):
-    """(xe, xed, tau_a, theta) at admissible poses, every |S xed|_i >= 0.05 rad/s."""
+    """(xe, xed, tau_a, theta) at admissible poses, every |S xed|_i >= 0.05 (rad/s, or m/s for
+    a prismatic actuator); xed is a random unit direction of R^m times 0.5-2 task scales."""
     rng = np.random.default_rng(seed)
     out = []
     for xe in sample_xe(model, seed, 20 * N_STATES):
         q = model.ik(xe)
         S = model.S(q)
-        phi = rng.uniform(-np.pi, np.pi)
-        xed = rng.uniform(0.1, 0.4) * np.array([np.cos(phi), np.sin(phi)])
+        u = rng.normal(size=model.dof)
+        xed = rng.uniform(0.5, 2.0) * task_scale(model, "xed") * u / np.linalg.norm(u)
         if np.min(np.abs(S @ xed)) < 0.05:
             continue
         out.append((xe, xed, rng.uniform(-3, 3, model.n_legs), random_theta(model, rng)))
@@ -64,13 +77,15 @@ def test_forward_dynamics_jacobians_match_central_differences(model, sample_xe, 
         J = model.forward_dynamics_jacobians(xe, xed, tau, theta)
         args = {"xe": xe, "xed": xed, "tau_a": tau, "theta": theta}
         for key, got in zip(("xe", "xed", "tau_a", "theta"), J):
-            h = (np.full(len(args[key]), SCALE[key] * H_REL) if SCALE[key]
+            h = (task_scale(model, key) * H_REL if key in PHI_SCALE
+                 else np.full(len(args[key]), SCALE[key] * H_REL) if SCALE[key]
                  else H_REL * np.maximum(np.abs(theta), 1e-3))
 
             def f(v, key=key):
                 return model.forward_dynamics(**{**args, key: v})
             assert_close(f"d xedd / d {key}", got, central(f, args[key].copy(), h), info)
-        assert J.d_tau_a.shape == (2, n) and J.d_theta.shape == (2, len(theta))
+        m = model.dof
+        assert J.d_tau_a.shape == (m, n) and J.d_theta.shape == (m, len(theta))
 
 
 def test_d_xedd_d_tau_is_Me_inverse_S_transpose(model, sample_xe, random_theta):
@@ -111,28 +126,11 @@ def test_inverse_dynamics_inverts_forward_dynamics_and_its_jacobians(model, samp
 
             def f(v, key=key):
                 return model.inverse_dynamics(**{**args, key: v})
-            h = np.full(2, SCALE[key] * H_REL)
+            h = task_scale(model, key) * H_REL
             assert_close(f"d u / d {key}", got, central(f, args[key].copy(), h), info)
 
 
-def rk4_numpy(model, x, tau, theta, T):
-    """The sampled step written out in NumPy over model.forward_dynamics (independent of the
-    generated RK4)."""
-    s = model.spec.rk4_substeps
-    h = T / s
-
-    def f(z):
-        return np.concatenate([z[2:], model.forward_dynamics(z[:2], z[2:], tau, theta)])
-    for _ in range(s):
-        k1 = f(x)
-        k2 = f(x + h / 2 * k1)
-        k3 = f(x + h / 2 * k2)
-        k4 = f(x + h * k3)
-        x = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-    return x
-
-
-def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta):
+def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta, rk4_numpy):
     """x_next against RK4 in NumPy; d_x, d_tau_a (the discrete A, B) against central
     differences of the generated sampled step (steps as above; x_next's entries differ from x
     by O(T), so the same relative tolerance applies)."""
@@ -147,7 +145,7 @@ def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta):
         A, B = model.linearize(xe, xed, tau, theta, discrete=True)
         np.testing.assert_array_equal(A, J.d_x)
         np.testing.assert_array_equal(B, J.d_tau_a)
-        hx = np.array([0.1, 0.1, 0.2, 0.2]) * H_REL
+        hx = np.concatenate([task_scale(model, "xe"), task_scale(model, "xed")]) * H_REL
         assert_close("d x_next / d x", J.d_x,
                      central(lambda v: model.sampled_step(v, tau, theta), x.copy(), hx), info)
         assert_close("d x_next / d tau_a", J.d_tau_a,
@@ -156,12 +154,13 @@ def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta):
 
 
 def test_continuous_linearisation_is_the_state_space_form(model, sample_xe, random_theta):
+    m = model.dof
     for xe, xed, tau, theta in states(model, sample_xe, random_theta, 26):
         J = model.forward_dynamics_jacobians(xe, xed, tau, theta)
         A, B = model.linearize(xe, xed, tau, theta)
-        np.testing.assert_array_equal(A[:2], np.hstack([np.zeros((2, 2)), np.eye(2)]))
-        np.testing.assert_array_equal(A[2:], np.hstack([J.d_xe, J.d_xed]))
-        np.testing.assert_array_equal(B, np.vstack([np.zeros((2, model.n_legs)), J.d_tau_a]))
+        np.testing.assert_array_equal(A[:m], np.hstack([np.zeros((m, m)), np.eye(m)]))
+        np.testing.assert_array_equal(A[m:], np.hstack([J.d_xe, J.d_xed]))
+        np.testing.assert_array_equal(B, np.vstack([np.zeros((m, model.n_legs)), J.d_tau_a]))
     A0, _ = model.linearize(xe, xed, tau)     # theta defaults to Tables 1-2
     A1, _ = model.linearize(xe, xed, tau, model.theta_nominal)
     np.testing.assert_array_equal(A0, A1)
@@ -176,7 +175,8 @@ def test_out_writes_into_the_callers_arrays(model, sample_xe, random_theta):
     for a, b in zip(got, J):
         np.testing.assert_array_equal(a, b)
     x = np.concatenate([xe, xed])
-    buf = np.empty(4)
+    buf = np.empty(2 * model.dof)
     assert model.sampled_step(x, tau, theta, out=buf) is buf
     with pytest.raises(pm2dof.ArgumentError, match="out must be a tuple of 4"):
-        model.forward_dynamics_jacobians(xe, xed, tau, theta, out=(np.empty((2, 2)),) * 4)
+        model.forward_dynamics_jacobians(xe, xed, tau, theta,
+                                         out=(np.empty((model.dof, model.dof)),) * 4)
