@@ -19,22 +19,17 @@ import pm2dof
 H_REL = 1e-6        # the step, relative to each variable's scale
 TOL = 1e-6          # of the block's largest entry (see the module docstring)
 SCALE = {"xe": 0.1, "xed": 0.2, "tau_a": 1.0, "theta": None, "x": None}
-# A platform's phi: 0.3 rad, and 0.6 rad/s (the same 0.5 s as 0.1 m -> 0.2 m/s). phi enters
-# through R(phi) (varies on ~1 rad) and moves an attachment point (r <= 0.08 m on the shipped
-# platforms) by r phi <= 0.024 m, within the 0.1 m of x, y: a smaller scale than the one phi
-# varies on, so the docstring's truncation bound holds, and its step (3e-7 rad) exceeds x's
-# (1e-7 m), so the rounding bound holds too. The shipped moves turn by 0.1-0.2 rad.
-PHI_SCALE = {"xe": 0.3, "xed": 0.6}
 N_STATES = 4
 
 
-def task_scale(model, key):
-    """(m,) the scale of each task coordinate of ``key`` ("xe" or "xed"), in task_names order."""
-    return np.array([PHI_SCALE[key] if name == "phi" else SCALE[key]
-                     for name in model.task_names])
+def scales(model, task_scale, key):
+    """(m,) each task coordinate's scale of ``key`` ("xe" or "xed"): SCALE[key] for x, y;
+    phi as conftest.PHI_PER_M says (0.3 rad, 0.6 rad/s: smaller than the ~1 rad phi varies on,
+    so the truncation bound above holds, and a larger step than x's, so the rounding one)."""
+    return task_scale(model, SCALE[key])
 
 
-def states(model, sample_xe, random_theta, seed):
+def states(model, sample_xe, random_theta, task_scale, seed):
     """(xe, xed, tau_a, theta) at admissible poses, every |S xed|_i >= 0.05 (rad/s, or m/s for
     a prismatic actuator); xed is a random unit direction of R^m times 0.5-2 task scales."""
     rng = np.random.default_rng(seed)
@@ -43,7 +38,7 @@ def states(model, sample_xe, random_theta, seed):
         q = model.ik(xe)
         S = model.S(q)
         u = rng.normal(size=model.dof)
-        xed = rng.uniform(0.5, 2.0) * task_scale(model, "xed") * u / np.linalg.norm(u)
+        xed = rng.uniform(0.5, 2.0) * scales(model, task_scale, "xed") * u / np.linalg.norm(u)
         if np.min(np.abs(S @ xed)) < 0.05:
             continue
         out.append((xe, xed, rng.uniform(-3, 3, model.n_legs), random_theta(model, rng)))
@@ -70,14 +65,15 @@ def assert_close(name, got, want, info):
                                 f"{TOL:g} * {scale:.3e} at {info}\nAD=\n{got}\nFD=\n{want}")
 
 
-def test_forward_dynamics_jacobians_match_central_differences(model, sample_xe, random_theta):
+def test_forward_dynamics_jacobians_match_central_differences(model, sample_xe, random_theta,
+                                                              task_scale):
     n = model.n_legs
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 21):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 21):
         info = f"{model.name}: xe={xe.tolist()}, xed={xed.tolist()}, tau={tau.tolist()}"
         J = model.forward_dynamics_jacobians(xe, xed, tau, theta)
         args = {"xe": xe, "xed": xed, "tau_a": tau, "theta": theta}
         for key, got in zip(("xe", "xed", "tau_a", "theta"), J):
-            h = (task_scale(model, key) * H_REL if key in PHI_SCALE
+            h = (scales(model, task_scale, key) * H_REL if key in ("xe", "xed")
                  else np.full(len(args[key]), SCALE[key] * H_REL) if SCALE[key]
                  else H_REL * np.maximum(np.abs(theta), 1e-3))
 
@@ -88,9 +84,9 @@ def test_forward_dynamics_jacobians_match_central_differences(model, sample_xe, 
         assert J.d_tau_a.shape == (m, n) and J.d_theta.shape == (m, len(theta))
 
 
-def test_d_xedd_d_tau_is_Me_inverse_S_transpose(model, sample_xe, random_theta):
+def test_d_xedd_d_tau_is_Me_inverse_S_transpose(model, sample_xe, random_theta, task_scale):
     """Structural: xedd is affine in tau_a with slope Me^-1 S^T (eq. 10)."""
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 22):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 22):
         q = model.ik(xe)
         want = np.linalg.solve(model.Me(q, theta), model.S(q).T)
         got = model.forward_dynamics_jacobians(xe, xed, tau, theta).d_tau_a
@@ -98,10 +94,10 @@ def test_d_xedd_d_tau_is_Me_inverse_S_transpose(model, sample_xe, random_theta):
                                    err_msg=f"{model.name}: xe={xe.tolist()}")
 
 
-def test_d_xedd_d_theta_is_minus_Me_inverse_Y(model, sample_xe, random_theta):
+def test_d_xedd_d_theta_is_minus_Me_inverse_Y(model, sample_xe, random_theta, task_scale):
     """Structural: Y(q, xed, xed, xedd) theta = S^T tau_a for every theta (eqs. 10, 13), so
     Y + Me d xedd / d theta = 0."""
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 23):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 23):
         q = model.ik(xe)
         xedd = model.forward_dynamics(xe, xed, tau, theta)
         want = -np.linalg.solve(model.Me(q, theta), model.Y(q, xed, xed, xedd))
@@ -111,8 +107,8 @@ def test_d_xedd_d_theta_is_minus_Me_inverse_Y(model, sample_xe, random_theta):
 
 
 def test_inverse_dynamics_inverts_forward_dynamics_and_its_jacobians(model, sample_xe,
-                                                                      random_theta):
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 24):
+                                                                      random_theta, task_scale):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 24):
         info = f"{model.name}: xe={xe.tolist()}, xed={xed.tolist()}"
         q = model.ik(xe)
         xedd = model.forward_dynamics(xe, xed, tau, theta)
@@ -126,16 +122,16 @@ def test_inverse_dynamics_inverts_forward_dynamics_and_its_jacobians(model, samp
 
             def f(v, key=key):
                 return model.inverse_dynamics(**{**args, key: v})
-            h = task_scale(model, key) * H_REL
+            h = scales(model, task_scale, key) * H_REL
             assert_close(f"d u / d {key}", got, central(f, args[key].copy(), h), info)
 
 
-def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta, rk4_numpy):
+def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta, task_scale, rk4_numpy):
     """x_next against RK4 in NumPy; d_x, d_tau_a (the discrete A, B) against central
     differences of the generated sampled step (steps as above; x_next's entries differ from x
     by O(T), so the same relative tolerance applies)."""
     T = model.spec.sensing["sample_period"]
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 25):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 25):
         x = np.concatenate([xe, xed])
         info = f"{model.name}: x={x.tolist()}, tau={tau.tolist()}"
         x_next = model.sampled_step(x, tau, theta)
@@ -145,7 +141,8 @@ def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta, rk4_nump
         A, B = model.linearize(xe, xed, tau, theta, discrete=True)
         np.testing.assert_array_equal(A, J.d_x)
         np.testing.assert_array_equal(B, J.d_tau_a)
-        hx = np.concatenate([task_scale(model, "xe"), task_scale(model, "xed")]) * H_REL
+        hx = np.concatenate([scales(model, task_scale, "xe"),
+                             scales(model, task_scale, "xed")]) * H_REL
         assert_close("d x_next / d x", J.d_x,
                      central(lambda v: model.sampled_step(v, tau, theta), x.copy(), hx), info)
         assert_close("d x_next / d tau_a", J.d_tau_a,
@@ -153,9 +150,10 @@ def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta, rk4_nump
                              np.full(len(tau), H_REL)), info)
 
 
-def test_continuous_linearisation_is_the_state_space_form(model, sample_xe, random_theta):
+def test_continuous_linearisation_is_the_state_space_form(model, sample_xe, random_theta,
+                                                          task_scale):
     m = model.dof
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 26):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 26):
         J = model.forward_dynamics_jacobians(xe, xed, tau, theta)
         A, B = model.linearize(xe, xed, tau, theta)
         np.testing.assert_array_equal(A[:m], np.hstack([np.zeros((m, m)), np.eye(m)]))
@@ -166,8 +164,8 @@ def test_continuous_linearisation_is_the_state_space_form(model, sample_xe, rand
     np.testing.assert_array_equal(A0, A1)
 
 
-def test_out_writes_into_the_callers_arrays(model, sample_xe, random_theta):
-    xe, xed, tau, theta = states(model, sample_xe, random_theta, 27)[0]
+def test_out_writes_into_the_callers_arrays(model, sample_xe, random_theta, task_scale):
+    xe, xed, tau, theta = states(model, sample_xe, random_theta, task_scale, 27)[0]
     J = model.forward_dynamics_jacobians(xe, xed, tau, theta)
     mine = tuple(np.zeros_like(a) for a in J)
     got = model.forward_dynamics_jacobians(xe, xed, tau, theta, out=mine)
