@@ -53,6 +53,7 @@ import numpy as np
 import pytest
 
 import pm2dof
+from pm2dof.core.model_file import PLATFORM_PARAMS
 from pm2dof.reference import model as ref
 
 # --------------------------------------------------------------------------------------
@@ -113,21 +114,54 @@ def u(t):
     return np.array([np.cos(t), np.sin(t)])
 
 
+def rail_direction(leg):
+    """A PRR leg's rail direction d (2,), unit."""
+    d = np.asarray(leg.rail_end, float) - np.asarray(leg.base, float)
+    return d / np.hypot(*d)
+
+
+def typed_tips(model, q):
+    """(n, 2) leg i's tip, typed from docs/model-file.md ("Kinematics of every kind"):
+    A + la u(qa) + lb u(qb) (RRR), A + qa d + lb u(qb) (PRR), A + qa u(qb) (RPR)."""
+    n, out = model.n_legs, []
+    for i, leg in enumerate(model.spec.legs):
+        qa, qb, A = q[i], q[n + i], np.asarray(leg.base, float)
+        if leg.kind == "RRR":
+            out.append(A + leg.la * u(qa) + leg.lb * u(qb))
+        elif leg.kind == "PRR":
+            out.append(A + qa * rail_direction(leg) + leg.lb * u(qb))
+        else:
+            out.append(A + qa * u(qb))
+    return np.array(out)
+
+
+def attachment_points(model, xe):
+    """(n, 2) P_i(xe): xe itself for a point, p + R(phi) a_i for a platform (docs/model-file.md)."""
+    if model.spec.end_effector != "platform":
+        return np.tile(xe, (model.n_legs, 1))
+    c, s = np.cos(xe[2]), np.sin(xe[2])
+    return np.array([xe[:2] + np.array([[c, -s], [s, c]]) @ np.asarray(leg.attach, float)
+                     for leg in model.spec.legs])
+
+
 def up(t):
     return np.array([-np.sin(t), np.cos(t)])
 
 
 @pytest.fixture(scope="module")
-def cases(sample_xe, random_theta):
-    """cases(model, seed, k) -> iterator of (xe, xed, xrd, xrdd, theta, tau_a) with |xed| in
-    [0.05, 0.5] m/s (not ~0, so that Wdot, Ce are not vanishing and relative checks are
-    meaningful), random theta (conftest.random_theta) and tau_a in [-10, 10] N m."""
+def cases(sample_xe, random_theta, task_scale):
+    """cases(model, seed, k) -> iterator of (xe, xed, xrd, xrdd, theta, tau_a), task arrays of
+    m = model.dof: xed a random direction with |xed| in [0.05, 0.5] m/s for x, y (not ~0, so
+    that Wdot, Ce are not vanishing and relative checks are meaningful; phi's rate scaled by
+    conftest.PHI_PER_M), xrd in +-0.5, xrdd in +-10 (same scaling), random theta
+    (conftest.random_theta) and tau_a in [-10, 10] N m (N for a prismatic actuator)."""
     def gen(model, seed, k=N_POSES):
         rng = np.random.default_rng(seed + 7919)
+        w, m = task_scale(model, 1.0), model.dof
         for xe in sample_xe(model, seed, k):
-            phi = rng.uniform(-np.pi, np.pi)
-            xed = rng.uniform(0.05, 0.5) * np.array([np.cos(phi), np.sin(phi)])
-            yield (xe, xed, rng.uniform(-0.5, 0.5, 2), rng.uniform(-10.0, 10.0, 2),
+            d = rng.normal(size=m)
+            xed = rng.uniform(0.05, 0.5) * w * d / np.linalg.norm(d)
+            yield (xe, xed, rng.uniform(-0.5, 0.5, m) * w, rng.uniform(-10.0, 10.0, m) * w,
                    random_theta(model, rng), rng.uniform(-10.0, 10.0, model.n_legs))
     return gen
 
@@ -185,33 +219,42 @@ def friction_index(model, param_index):
 # --------------------------------------------------------------------------------------
 
 def test_ik_closes_loop_and_fk_inverts_it(model, sample_xe):
-    # H and xe are O(0.5 m) and computed from a few trig calls: rounding ~1e-16 m.
+    # H and xe are O(0.5 m) (phi O(1) rad) and computed from a few trig calls: rounding
+    # ~1e-16; a platform's fk is a Gauss-Newton iteration, converged to rounding.
     n = model.n_legs
-    bases, la, lb, _ = geometry(model)
+    rows = 2 * n if model.spec.end_effector == "platform" else 2 * (n - 1)   # eq. 5
     for xe in sample_xe(model, 1, N_POSES):
         q = model.ik(xe)
         info = fmt(xe=xe, q=q)
-        check("H(ik(x)) [m]", model.H(q), np.zeros(2 * (n - 1)), TOL_EXACT, 1.0, info, model)
+        check("H(ik(x)) [m]", model.H(q), np.zeros(rows), TOL_EXACT, 1.0, info, model)
         check("fk(ik(x)[:n]) - x [m]", model.fk(q[:n]), xe, TOL_EXACT, 1.0, info, model)
-        # the tips of all legs are at xe (typed from docs/paper.md, Sect. 1, per-leg lengths)
-        for i in range(n):
-            tip = bases[i] + la[i] * u(q[i]) + lb[i] * u(q[n + i])
-            check("tip_i(ik(x)) - x [m]", tip, xe, TOL_EXACT, 1.0, f"leg {i + 1}, {info}", model)
+        # every leg's tip is at its P_i(xe) (typed from docs/model-file.md, per kind)
+        check("tip_i(ik(x)) - P_i(x) [m]", typed_tips(model, q), attachment_points(model, xe),
+              TOL_EXACT, 1.0, info, model)
 
 
 def test_ik_elbows_are_on_the_side_the_model_file_chooses(model, sample_xe):
-    """elbow = "right" (-1): B_i lies right of A_i -> O; "left" (+1): left."""
-    n = model.n_legs
-    bases, la, _, elbow = geometry(model)
+    """RRR: elbow = "right" (-1): B_i lies right of A_i -> P_i; "left" (+1): left. PRR:
+    branch "ahead" (+1): the slider lies ahead of the foot of the perpendicular from P_i onto
+    the rail, along its direction; "behind" (-1) behind it. RPR has no branch."""
+    if all(leg.kind == "RPR" for leg in model.spec.legs):
+        pytest.skip(f"{model.name}: RPR legs have no branch to choose (docs/model-file.md)")
     for xe in sample_xe(model, 2, N_POSES):
         q = model.ik(xe)
-        for i in range(n):
-            d = xe - bases[i]
-            b = la[i] * u(q[i])
-            cross = d[0] * b[1] - d[1] * b[0]
-            # |cross| = |d| la |sin(angle at A_i)|, bounded away from 0 at admissible poses
-            assert np.sign(cross) == elbow[i], \
-                f"{model.name}: leg {i + 1} elbow on the wrong side: cross={cross} at {fmt(xe=xe, q=q)}"
+        P = attachment_points(model, xe)
+        for i, leg in enumerate(model.spec.legs):
+            d = P[i] - np.asarray(leg.base, float)
+            if leg.kind == "RRR":
+                b = leg.la * u(q[i])
+                # |side| = |d| la |sin(angle at A_i)|, bounded away from 0 at admissible poses
+                side = d[0] * b[1] - d[1] * b[0]
+            elif leg.kind == "PRR":
+                # qa - foot = lb |d . u(qb)|, the type I measure: away from 0 at these poses
+                side = q[i] - d @ rail_direction(leg)
+            else:
+                continue
+            assert np.sign(side) == leg.elbow, (f"{model.name}: leg {i + 1} ({leg.kind}) on "
+                                                f"the wrong side: {side} at {fmt(xe=xe, q=q)}")
 
 
 # --------------------------------------------------------------------------------------
@@ -223,11 +266,12 @@ def test_W_is_the_derivative_of_ik(model, sample_xe):
     for xe in sample_xe(model, 3, N_POSES):
         q = model.ik(xe)
         Wq = model.W(q)
-        fd = np.empty((2 * n, 2))
-        for j in range(2):
-            e = np.zeros(2)
+        fd = np.empty((2 * n, model.dof))
+        for j in range(model.dof):                 # phi's step H_FD is in rad
+            e = np.zeros(model.dof)
             e[j] = H_FD
-            # wrap: ik returns each angle modulo 2 pi (a branch cut must not look like a jump)
+            # wrap: ik returns each angle modulo 2 pi (a branch cut must not look like a jump;
+            # a prismatic qa's difference, ~1e-6 m, is left as it is)
             fd[:, j] = wrap(model.ik(xe + e) - model.ik(xe - e)) / (2 * H_FD)
         check("W vs FD of ik (rel. max|W|)", Wq, fd, TOL_FD, maxabs(Wq), fmt(xe=xe, q=q), model)
 
@@ -240,8 +284,8 @@ def test_A_W_is_zero(model, sample_xe):
         assert Aq.shape == (2 * (n - 1), 2 * n)
         # each entry of A W is a sum of 4 products of entries of A and W: rounding
         # <= 4 eps max|A| max|W|; the scale makes the check independent of units.
-        check("A W = 0 (rel. max|A| max|W|)", Aq @ Wq, np.zeros((2 * (n - 1), 2)), TOL_EXACT,
-              maxabs(Aq) * maxabs(Wq), fmt(xe=xe, q=q), model)
+        check("A W = 0 (rel. max|A| max|W|)", Aq @ Wq, np.zeros((2 * (n - 1), model.dof)),
+              TOL_EXACT, maxabs(Aq) * maxabs(Wq), fmt(xe=xe, q=q), model)
 
 
 def test_A_is_the_jacobian_of_H(model, sample_xe):
@@ -310,8 +354,8 @@ def test_Medot_minus_2Ce_is_skew_symmetric(model, cases):
                  - model.Me(model.ik(xe - H_FD * xed), theta)) / (2 * H_FD)
         N = Medot - 2 * Ce
         scale = maxabs(Medot) + 2 * maxabs(Ce)  # N is a difference of these two terms
-        check(f"Medot - 2Ce + (..)^T ({which}, FD)", N + N.T, np.zeros((2, 2)), TOL_FD, scale,
-              fmt(xe=xe, xed=xed, theta=theta), model)
+        check(f"Medot - 2Ce + (..)^T ({which}, FD)", N + N.T, np.zeros((model.dof,) * 2), TOL_FD,
+              scale, fmt(xe=xe, xed=xed, theta=theta), model)
 
 
 def test_Mdot_minus_2C_is_skew_symmetric_joint_space(model, random_theta):
@@ -354,7 +398,7 @@ def test_Y_theta_equals_the_dynamics(model, cases):
         q = model.ik(xe)
         Me, Ce, StF = model.Me(q, theta), model.Ce(q, xed, theta), model.StF(q, xed, theta)
         Yq = model.Y(q, xed, xrd, xrdd)
-        assert Yq.shape == (2, p)
+        assert Yq.shape == (model.dof, p)
         Ge = model.Ge(q, theta)                  # the gravity term (zero in a horizontal plane)
         rhs = Me @ xrdd + Ce @ xrd + StF + Ge
         # the scale is the size of the summed terms (cancellation must not tighten the check)
@@ -642,25 +686,39 @@ def test_Y_friction_perpendicular_xed_generic_poses(m, sample_xe):
 
 @pytest.fixture(scope="module")
 def singular_q(model, sample_xe):
-    """A q of the model with qb_1 = qa_1 (leg 1 stretched): sin(qb_1 - qa_1) = 0 exactly."""
+    """A q of the model with the first leg that has a type I singularity at it
+    (docs/model-file.md): RRR qb_i = qa_i (stretched, sin(qb_i - qa_i) = 0 exactly), PRR
+    qb_i across the rail (d . u(qb_i) = 0 to rounding); None if every leg is RPR (none)."""
+    n = model.n_legs
     q = model.ik(sample_xe(model, 0, 1)[0]).copy()
-    q[model.n_legs] = q[0]
-    return q
+    for i, leg in enumerate(model.spec.legs):
+        if leg.kind == "RRR":
+            q[n + i] = q[i]
+            return q
+        if leg.kind == "PRR":
+            d = rail_direction(leg)
+            q[n + i] = np.arctan2(d[1], d[0]) + np.pi / 2
+            return q
+    return None
 
 
 @pytest.mark.parametrize("call", [
-    lambda m, q: m.W(q),
-    lambda m, q: m.S(q),
-    lambda m, q: m.Wdot(q, [0.1, 0.2]),
-    lambda m, q: m.Me(q, m.theta_nominal),
-    lambda m, q: m.Ce(q, [0.1, 0.2], m.theta_nominal),
-    lambda m, q: m.StF(q, [0.1, 0.2], m.theta_nominal),
-    lambda m, q: m.Y(q, [0.1, 0.2], [0.1, 0.0], [1.0, 0.0]),
+    lambda m, q, v: m.W(q),
+    lambda m, q, v: m.S(q),
+    lambda m, q, v: m.Wdot(q, v),
+    lambda m, q, v: m.Me(q, m.theta_nominal),
+    lambda m, q, v: m.Ce(q, v, m.theta_nominal),
+    lambda m, q, v: m.StF(q, v, m.theta_nominal),
+    lambda m, q, v: m.Y(q, v, v[::-1], 10 * v),
 ], ids=["W", "S", "Wdot", "Me", "Ce", "StF", "Y"])
 def test_singular_pose_raises(model, singular_q, call):
-    """Every model (paper-independent: the runtime's singularity guard)."""
+    """Every model with a leg that can be singular (paper-independent: the runtime's
+    singularity guard); v (m,) a task velocity."""
+    if singular_q is None:
+        pytest.skip(f"{model.name}: RPR legs have no type I singularity (docs/model-file.md)")
+    v = np.linspace(0.1, 0.2, model.dof)
     with pytest.raises(pm2dof.SingularityError, match="singularity"):
-        call(model, singular_q)
+        call(model, singular_q, v)
 
 
 def test_singularity_threshold_is_enforced(m):
@@ -811,33 +869,40 @@ def test_geometry_attributes(m):
 
 
 def test_output_shapes(model, sample_xe, param_index):
-    n, p = model.n_legs, len(model.param_names)
+    n, p, m = model.n_legs, len(model.param_names), model.dof
+    assert m == len(model.task_names) == (3 if model.spec.end_effector == "platform" else 2)
+    h = 2 * n if model.spec.end_effector == "platform" else 2 * (n - 1)     # rows of H, eq. 5
     xe = sample_xe(model, 0, 1)[0]
     q = model.ik(xe)
     th = np.array(model.theta_nominal)
-    z2 = np.zeros(2)
+    z = np.zeros(m)
     shapes = {
         "ik": (model.ik(xe), (2 * n,)),
-        "fk": (model.fk(q[:n]), (2,)),
-        "H": (model.H(q), (2 * (n - 1),)),
-        "A": (model.A(q), (2 * (n - 1), 2 * n)),
+        "fk": (model.fk(q[:n]), (m,)),
+        "H": (model.H(q), (h,)),
+        "A": (model.A(q), (h, 2 * n)),
         "singularity": (model.singularity(q), (n,)),
-        "W": (model.W(q), (2 * n, 2)),
-        "Wdot": (model.Wdot(q, z2), (2 * n, 2)),
-        "S": (model.S(q), (n, 2)),
+        "W": (model.W(q), (2 * n, m)),
+        "Wdot": (model.Wdot(q, z), (2 * n, m)),
+        "S": (model.S(q), (n, m)),
         "M": (model.M(q, th), (2 * n, 2 * n)),
         "C": (model.C(q, np.zeros(2 * n), th), (2 * n, 2 * n)),
-        "Me": (model.Me(q, th), (2, 2)),
-        "Ce": (model.Ce(q, z2, th), (2, 2)),
-        "StF": (model.StF(q, z2, th), (2,)),
-        "Y": (model.Y(q, z2, z2, z2), (2, p)),
-        "forward_dynamics": (model.forward_dynamics(xe, z2, np.zeros(n), th), (2,)),
+        "Me": (model.Me(q, th), (m, m)),
+        "Ce": (model.Ce(q, z, th), (m, m)),
+        "StF": (model.StF(q, z, th), (m,)),
+        "Ge": (model.Ge(q, th), (m,)),
+        "Y": (model.Y(q, z, z, z), (m, p)),
+        "forward_dynamics": (model.forward_dynamics(xe, z, np.zeros(n), th), (m,)),
     }
-    # theta: one value of each kind (alpha, beta, gamma, friction ...) per leg
+    # theta: one value of each kind (alpha, beta, gamma, friction, a first moment kappa under
+    # gravity ...) per leg, and a platform's four body parameters (no leg number)
     idx = param_index(model)
-    kinds = {k for k, _ in idx}
-    assert {"alpha", "beta", "gamma"} <= kinds and len(th) == p == len(idx) == n * len(kinds)
-    assert set(idx) == {(k, i) for k in kinds for i in range(n)}
+    kinds = {k for k, i in idx if i is not None}
+    body = {k for k, i in idx if i is None}
+    assert body == (set(PLATFORM_PARAMS) if model.spec.end_effector == "platform" else set())
+    assert {"alpha", "beta", "gamma"} <= kinds and len(th) == p == len(idx)
+    assert p == n * len(kinds) + len(body)
+    assert set(idx) == {(k, i) for k in kinds for i in range(n)} | {(k, None) for k in body}
     for name, (val, shape) in shapes.items():
         assert isinstance(val, np.ndarray) and val.dtype == np.float64, f"{model.name}: {name}"
         assert val.shape == shape, f"{model.name}: {name}: shape {val.shape} != {shape}"

@@ -22,15 +22,23 @@ SCALE = {"xe": 0.1, "xed": 0.2, "tau_a": 1.0, "theta": None, "x": None}
 N_STATES = 4
 
 
-def states(model, sample_xe, random_theta, seed):
-    """(xe, xed, tau_a, theta) at admissible poses, every |S xed|_i >= 0.05 rad/s."""
+def scales(model, task_scale, key):
+    """(m,) each task coordinate's scale of ``key`` ("xe" or "xed"): SCALE[key] for x, y;
+    phi as conftest.PHI_PER_M says (0.3 rad, 0.6 rad/s: smaller than the ~1 rad phi varies on,
+    so the truncation bound above holds, and a larger step than x's, so the rounding one)."""
+    return task_scale(model, SCALE[key])
+
+
+def states(model, sample_xe, random_theta, task_scale, seed):
+    """(xe, xed, tau_a, theta) at admissible poses, every |S xed|_i >= 0.05 (rad/s, or m/s for
+    a prismatic actuator); xed is a random unit direction of R^m times 0.5-2 task scales."""
     rng = np.random.default_rng(seed)
     out = []
     for xe in sample_xe(model, seed, 20 * N_STATES):
         q = model.ik(xe)
         S = model.S(q)
-        phi = rng.uniform(-np.pi, np.pi)
-        xed = rng.uniform(0.1, 0.4) * np.array([np.cos(phi), np.sin(phi)])
+        u = rng.normal(size=model.dof)
+        xed = rng.uniform(0.5, 2.0) * scales(model, task_scale, "xed") * u / np.linalg.norm(u)
         if np.min(np.abs(S @ xed)) < 0.05:
             continue
         out.append((xe, xed, rng.uniform(-3, 3, model.n_legs), random_theta(model, rng)))
@@ -57,25 +65,28 @@ def assert_close(name, got, want, info):
                                 f"{TOL:g} * {scale:.3e} at {info}\nAD=\n{got}\nFD=\n{want}")
 
 
-def test_forward_dynamics_jacobians_match_central_differences(model, sample_xe, random_theta):
+def test_forward_dynamics_jacobians_match_central_differences(model, sample_xe, random_theta,
+                                                              task_scale):
     n = model.n_legs
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 21):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 21):
         info = f"{model.name}: xe={xe.tolist()}, xed={xed.tolist()}, tau={tau.tolist()}"
         J = model.forward_dynamics_jacobians(xe, xed, tau, theta)
         args = {"xe": xe, "xed": xed, "tau_a": tau, "theta": theta}
         for key, got in zip(("xe", "xed", "tau_a", "theta"), J):
-            h = (np.full(len(args[key]), SCALE[key] * H_REL) if SCALE[key]
+            h = (scales(model, task_scale, key) * H_REL if key in ("xe", "xed")
+                 else np.full(len(args[key]), SCALE[key] * H_REL) if SCALE[key]
                  else H_REL * np.maximum(np.abs(theta), 1e-3))
 
             def f(v, key=key):
                 return model.forward_dynamics(**{**args, key: v})
             assert_close(f"d xedd / d {key}", got, central(f, args[key].copy(), h), info)
-        assert J.d_tau_a.shape == (2, n) and J.d_theta.shape == (2, len(theta))
+        m = model.dof
+        assert J.d_tau_a.shape == (m, n) and J.d_theta.shape == (m, len(theta))
 
 
-def test_d_xedd_d_tau_is_Me_inverse_S_transpose(model, sample_xe, random_theta):
+def test_d_xedd_d_tau_is_Me_inverse_S_transpose(model, sample_xe, random_theta, task_scale):
     """Structural: xedd is affine in tau_a with slope Me^-1 S^T (eq. 10)."""
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 22):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 22):
         q = model.ik(xe)
         want = np.linalg.solve(model.Me(q, theta), model.S(q).T)
         got = model.forward_dynamics_jacobians(xe, xed, tau, theta).d_tau_a
@@ -83,10 +94,10 @@ def test_d_xedd_d_tau_is_Me_inverse_S_transpose(model, sample_xe, random_theta):
                                    err_msg=f"{model.name}: xe={xe.tolist()}")
 
 
-def test_d_xedd_d_theta_is_minus_Me_inverse_Y(model, sample_xe, random_theta):
+def test_d_xedd_d_theta_is_minus_Me_inverse_Y(model, sample_xe, random_theta, task_scale):
     """Structural: Y(q, xed, xed, xedd) theta = S^T tau_a for every theta (eqs. 10, 13), so
     Y + Me d xedd / d theta = 0."""
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 23):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 23):
         q = model.ik(xe)
         xedd = model.forward_dynamics(xe, xed, tau, theta)
         want = -np.linalg.solve(model.Me(q, theta), model.Y(q, xed, xed, xedd))
@@ -96,8 +107,8 @@ def test_d_xedd_d_theta_is_minus_Me_inverse_Y(model, sample_xe, random_theta):
 
 
 def test_inverse_dynamics_inverts_forward_dynamics_and_its_jacobians(model, sample_xe,
-                                                                      random_theta):
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 24):
+                                                                      random_theta, task_scale):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 24):
         info = f"{model.name}: xe={xe.tolist()}, xed={xed.tolist()}"
         q = model.ik(xe)
         xedd = model.forward_dynamics(xe, xed, tau, theta)
@@ -111,33 +122,16 @@ def test_inverse_dynamics_inverts_forward_dynamics_and_its_jacobians(model, samp
 
             def f(v, key=key):
                 return model.inverse_dynamics(**{**args, key: v})
-            h = np.full(2, SCALE[key] * H_REL)
+            h = scales(model, task_scale, key) * H_REL
             assert_close(f"d u / d {key}", got, central(f, args[key].copy(), h), info)
 
 
-def rk4_numpy(model, x, tau, theta, T):
-    """The sampled step written out in NumPy over model.forward_dynamics (independent of the
-    generated RK4)."""
-    s = model.spec.rk4_substeps
-    h = T / s
-
-    def f(z):
-        return np.concatenate([z[2:], model.forward_dynamics(z[:2], z[2:], tau, theta)])
-    for _ in range(s):
-        k1 = f(x)
-        k2 = f(x + h / 2 * k1)
-        k3 = f(x + h / 2 * k2)
-        k4 = f(x + h * k3)
-        x = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-    return x
-
-
-def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta):
+def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta, task_scale, rk4_numpy):
     """x_next against RK4 in NumPy; d_x, d_tau_a (the discrete A, B) against central
     differences of the generated sampled step (steps as above; x_next's entries differ from x
     by O(T), so the same relative tolerance applies)."""
     T = model.spec.sensing["sample_period"]
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 25):
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 25):
         x = np.concatenate([xe, xed])
         info = f"{model.name}: x={x.tolist()}, tau={tau.tolist()}"
         x_next = model.sampled_step(x, tau, theta)
@@ -147,7 +141,8 @@ def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta):
         A, B = model.linearize(xe, xed, tau, theta, discrete=True)
         np.testing.assert_array_equal(A, J.d_x)
         np.testing.assert_array_equal(B, J.d_tau_a)
-        hx = np.array([0.1, 0.1, 0.2, 0.2]) * H_REL
+        hx = np.concatenate([scales(model, task_scale, "xe"),
+                             scales(model, task_scale, "xed")]) * H_REL
         assert_close("d x_next / d x", J.d_x,
                      central(lambda v: model.sampled_step(v, tau, theta), x.copy(), hx), info)
         assert_close("d x_next / d tau_a", J.d_tau_a,
@@ -155,20 +150,22 @@ def test_sampled_step_and_its_jacobians(model, sample_xe, random_theta):
                              np.full(len(tau), H_REL)), info)
 
 
-def test_continuous_linearisation_is_the_state_space_form(model, sample_xe, random_theta):
-    for xe, xed, tau, theta in states(model, sample_xe, random_theta, 26):
+def test_continuous_linearisation_is_the_state_space_form(model, sample_xe, random_theta,
+                                                          task_scale):
+    m = model.dof
+    for xe, xed, tau, theta in states(model, sample_xe, random_theta, task_scale, 26):
         J = model.forward_dynamics_jacobians(xe, xed, tau, theta)
         A, B = model.linearize(xe, xed, tau, theta)
-        np.testing.assert_array_equal(A[:2], np.hstack([np.zeros((2, 2)), np.eye(2)]))
-        np.testing.assert_array_equal(A[2:], np.hstack([J.d_xe, J.d_xed]))
-        np.testing.assert_array_equal(B, np.vstack([np.zeros((2, model.n_legs)), J.d_tau_a]))
+        np.testing.assert_array_equal(A[:m], np.hstack([np.zeros((m, m)), np.eye(m)]))
+        np.testing.assert_array_equal(A[m:], np.hstack([J.d_xe, J.d_xed]))
+        np.testing.assert_array_equal(B, np.vstack([np.zeros((m, model.n_legs)), J.d_tau_a]))
     A0, _ = model.linearize(xe, xed, tau)     # theta defaults to Tables 1-2
     A1, _ = model.linearize(xe, xed, tau, model.theta_nominal)
     np.testing.assert_array_equal(A0, A1)
 
 
-def test_out_writes_into_the_callers_arrays(model, sample_xe, random_theta):
-    xe, xed, tau, theta = states(model, sample_xe, random_theta, 27)[0]
+def test_out_writes_into_the_callers_arrays(model, sample_xe, random_theta, task_scale):
+    xe, xed, tau, theta = states(model, sample_xe, random_theta, task_scale, 27)[0]
     J = model.forward_dynamics_jacobians(xe, xed, tau, theta)
     mine = tuple(np.zeros_like(a) for a in J)
     got = model.forward_dynamics_jacobians(xe, xed, tau, theta, out=mine)
@@ -176,7 +173,8 @@ def test_out_writes_into_the_callers_arrays(model, sample_xe, random_theta):
     for a, b in zip(got, J):
         np.testing.assert_array_equal(a, b)
     x = np.concatenate([xe, xed])
-    buf = np.empty(4)
+    buf = np.empty(2 * model.dof)
     assert model.sampled_step(x, tau, theta, out=buf) is buf
     with pytest.raises(pm2dof.ArgumentError, match="out must be a tuple of 4"):
-        model.forward_dynamics_jacobians(xe, xed, tau, theta, out=(np.empty((2, 2)),) * 4)
+        model.forward_dynamics_jacobians(xe, xed, tau, theta,
+                                         out=(np.empty((model.dof, model.dof)),) * 4)
