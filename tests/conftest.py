@@ -257,15 +257,6 @@ _KNOWN_FAILING = {
     "derivatives/test_at_rest_dynamics.py::"
     "test_continuous_linearize_at_rest_matches_symmetric_differences":   # whole test ids
         {f"{p}-{v}" for p in _PLATFORMS for v in ("zero", "random")} | {"shang2010_vertical-zero"},
-    "planning/test_planning_coefficients.py::test_coefficients_match_the_model_functions":
-        _PLATFORMS | {"shang2010_vertical"},
-    "planning/test_planning_coefficients.py::test_torques_along_a_path_match_inverse_dynamics":
-        _PLATFORMS,
-    "planning/test_planning_coefficients.py::test_force_polygons_are_the_splits_feasible_sets":
-        _PLATFORMS | {"shang2010_vertical"},
-    "planning/test_planning_coefficients.py::test_min_max_polygon_agrees_with_the_generated_split":
-        _PLATFORMS | {"shang2010_vertical"},
-    "planning/test_planning_topp.py::test_every_model_plans_its_first_move": _PLATFORMS,
     "figures/test_figures_layout.py::test_maps_figures": _PLATFORMS | {"prr_point"},
     "figures/test_figures_layout.py::test_animation_frames":
         {"prr3_platform", "rpr3_platform", "prr_point"},

@@ -5,7 +5,7 @@ import pytest
 
 import pm2dof
 from pm2dof.bench.planning import ToppraPath, friction_free
-from pm2dof.planning import TaskPath, plan_time_optimal
+from pm2dof.planning import TaskPath, model_move_path, plan_time_optimal
 from pm2dof.planning.torques import plan_torques
 
 try:                                  # the oracle of the friction-free checks (the dev extra)
@@ -223,13 +223,21 @@ def test_splits_limits_and_margin(m):
 
 
 def test_every_model_plans_its_first_move(model):
-    mv = next(iter(model.spec.trajectories.values()))
-    path = TaskPath.line(mv["start"], mv["end"])
+    """The model file's first move as a path in the model's task space (a platform's carries
+    phi: model_move_path), planned with both splits: finite, at rest at both ends, and within
+    the limits at the grid points by the planner's own torques and by inverse dynamics
+    (Model's Me, Ce, StF and Ge with gravity, then the split: pm2dof.planning.torques)."""
+    path = model_move_path(model, next(iter(model.spec.trajectories))).path
+    assert path.dim == model.dof and path.length > 0
     for split in ("min_norm", "min_max"):
         plan = plan_time_optimal(model, path, split=split, grid=200)
         assert np.isfinite(plan.duration) and plan.duration > 0
         assert (np.abs(plan.tau) <= plan.tau_max * (1 + 1e-9)).all()
         assert plan.sdot[0] == plan.sdot[-1] == 0
+        _, tau, ratio = plan_torques(model, plan, factor=1)      # at the grid points
+        assert ratio.max() <= 1 + 1e-9 and ratio.max() > 0.99, ratio.max()   # limits bind
+        assert np.allclose(tau, plan.tau, rtol=1e-9, atol=1e-9 * plan.tau_max.max())
+        assert plan.trajectory.xd.shape[1] == model.dof
 
 
 def test_the_trajectory_is_the_profile(m):
