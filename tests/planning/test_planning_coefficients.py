@@ -165,6 +165,8 @@ def _feasible_at(model, q, a, b, dp, y, w, split, theta):
     finds its least value; min-norm's actuator intervals are intersected exactly."""
     F = model.StF(q, dp * max(y, 1e-12), theta)
     u0 = b * y * y + F
+    if model.spec.has_gravity:
+        u0 = u0 + model.Ge(q, theta)                    # eq. 10's gravity term
     if split == "min_norm":
         S = model.S(q)
         P = S @ np.linalg.inv(S.T @ S)
@@ -191,12 +193,17 @@ def _feasible_at(model, q, a, b, dp, y, w, split, theta):
 
 
 @pytest.mark.parametrize("split", ["min_norm", "min_max"])
-def test_maximum_velocity_curve_by_brute_force(split):
+@pytest.mark.parametrize("name", ["shang2010", "shang2010_vertical", "rrr4_platform"])
+def test_maximum_velocity_curve_by_brute_force(name, split):
     """The generated maximum-velocity curve against a search over s_d with the model's own
-    inverse dynamics and split (friction included), at a few points of an arc."""
-    m = pm2dof.load_model()
-    path = TaskPath.arc([0.245, 0.265], 0.03, 0.0, 3.0)
-    w = np.full(3, 8.0)
+    inverse dynamics (gravity included: the paper's robot upright) and split (friction
+    included; a platform's 3-D zonotope), at a few points of an arc."""
+    m = pm2dof.load_model(name)
+    if m.dof == 2:
+        path = TaskPath.arc([0.245, 0.265], 0.03, 0.0, 3.0)
+    else:
+        path = _model_arc(m)
+    w = np.full(m.n_legs, 8.0)
     s = np.linspace(0, path.length, 7)[1:-1]
     prm, th = params(m, None)
     stage, coef = stages(PlanProblem(m, path, w, th, split, prm), s)
