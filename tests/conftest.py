@@ -260,15 +260,6 @@ _NOT_RUN["control/test_task_dimension.py::test_dof_and_task_names_follow_the_gen
 #: in the full run after the models were shipped; the closing note of the stop lists them.
 _PLATFORMS = {"rrr3_platform", "rrr4_platform", "prr3_platform", "rpr3_platform"}
 _KNOWN_FAILING = {
-    "planning/test_planning_coefficients.py::test_coefficients_match_the_model_functions":
-        _PLATFORMS | {"shang2010_vertical"},
-    "planning/test_planning_coefficients.py::test_torques_along_a_path_match_inverse_dynamics":
-        _PLATFORMS,
-    "planning/test_planning_coefficients.py::test_force_polygons_are_the_splits_feasible_sets":
-        _PLATFORMS | {"shang2010_vertical"},
-    "planning/test_planning_coefficients.py::test_min_max_polygon_agrees_with_the_generated_split":
-        _PLATFORMS | {"shang2010_vertical"},
-    "planning/test_planning_topp.py::test_every_model_plans_its_first_move": _PLATFORMS,
     "figures/test_figures_layout.py::test_maps_figures": _PLATFORMS | {"prr_point"},
     "figures/test_figures_layout.py::test_animation_frames":
         {"prr3_platform", "rpr3_platform", "prr_point"},

@@ -9,8 +9,8 @@ from ..core.errors import ArgumentTypeError, PlanError, SingularityError, Worksp
 from ..core.model import require_model
 from .paths import TaskPath
 
-__all__ = ["check_path", "raise_at", "first_bad", "require", "STEP", "STEP_MIN", "STEP_MAX",
-           "SAMPLES_MAX"]
+__all__ = ["check_path", "raise_at", "first_bad", "require", "point_text", "STEP", "STEP_MIN",
+           "STEP_MAX", "SAMPLES_MAX"]
 
 STEP = 5e-4         # m: default sample spacing of check_path
 STEP_MIN = 1e-6     # m: the finest spacing check_path takes
@@ -36,8 +36,13 @@ def require(model=_UNSET, path=_UNSET):
                         f"have the model's task coordinates")
 
 
+def point_text(p):
+    """A task point for messages: (x, y) m, or a platform's (x, y, phi) m, rad."""
+    return f"({', '.join(f'{v:.6g}' for v in p)}) m" + (", rad" if len(p) == 3 else "")
+
+
 def _where(s, p):
-    return f"s = {s:.6g} m, point ({p[0]:.6g}, {p[1]:.6g}) m"
+    return f"s = {s:.6g} m, point {point_text(p)}"
 
 
 def raise_at(model, s, p, sing=None):

@@ -32,6 +32,7 @@ inputs):
 import numpy as np
 
 from ..core.errors import PlanError
+from .check import point_text
 from .plan import PathProfile, grid_times, sampled
 from .stages import junction_left, link, point_stages
 
@@ -42,7 +43,7 @@ _TOL = 1e-9   # relative slack of the forward pass's own checks (rounding)
 
 def at(p, s, k):
     """Where grid point ``k`` is, for messages: its arc length and point."""
-    return f"s = {s[k]:.6g} m, point ({p[k][0]:.6g}, {p[k][1]:.6g}) m"
+    return f"s = {s[k]:.6g} m, point {point_text(p[k])}"
 
 
 def _same_rows(a, b):

@@ -9,7 +9,7 @@ different tangents the robot must be at rest: those arc lengths are the path's `
 on each, so no grid interval straddles a jump of curvature.
 
 A path has the task dimension ``dim`` of its points: 2 (x, y) for a point end effector, 3
-(x, y, phi) for a platform. **Arc length with an orientation** (docs/planning.md): s is the
+(x, y, phi) for a platform. **Arc length with an orientation** (docs/using-planning.md): s is the
 length in the metric ds^2 = dx^2 + dy^2 + (l dphi)^2, where l (m, ``orientation_length``)
 turns an angle into a length; for a model, :func:`pm2dof.core.task.orientation_length` (the
 platform's radius, the largest distance of an attachment point from the platform frame's

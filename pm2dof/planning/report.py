@@ -123,9 +123,9 @@ def closed_loop(model, path, tau_max=None, split="min_max", margins=(1.0, 0.9), 
         for law, cls in (("na", NAController), ("apd", APDController)):
             ctrl = cls(model, split=split, tau_max=tau_lim)
             r = simulate(model, ctrl, plan.trajectory, settle_time=settle_time)
-            n = r.n_move
+            e = r.xd[:r.n_move] - r.xe[:r.n_move]     # the position's error, as eq. 41's rmse
             row[law] = {"rmse_m": float(r.rmse), "max_error_m": float(np.max(np.hypot(
-                *(r.xd[:n] - r.xe[:n]).T))), "tau_peak_N_m": np.abs(r.tau_a).max(axis=0).tolist(),
+                e[:, 0], e[:, 1]))), "tau_peak_N_m": np.abs(r.tau_a).max(axis=0).tolist(),
                 "saturated": int(r.n_saturated), "outcome": r.outcome}
         out.append(row)
     return out

@@ -165,9 +165,11 @@ def stages(problem, s, stops=(), evaluated=None):
         The packed per-point vectors (see the manifest layout ``path_stage``): the facets of
         the interval that starts at each point.
     coef : dict
-        ``a``, ``b`` (K, 2) N per m/s^2 and per (m/s)^2, ``S`` (K, n, 2), ``v1`` (K, n)
-        rad/m, ``N`` (K, n, 2) and ``h`` (K, n) N: the split's force polygon |N_j . u| <= h_j,
-        ``sing`` (K, 2), ``p``, ``dp``, ``ddp``; and ``arrive`` (K, size of ``path_stage``):
+        ``a``, ``b`` (K, m) N per m/s^2 and per (m/s)^2 (phi's row N m), ``g`` (K, m) N, the
+        gravity term (a model with gravity only), ``S`` (K, n, m), ``v1`` (K, n) rad/m, ``N``
+        (K, F, m) and ``h`` (K, F) N: the split's force polytope |N_j . u| <= h_j (F facet
+        pairs: pm2dof.derive.planning.facet_count), ``sing`` (K, 2), ``p``, ``dp``, ``ddp``
+        (K, m); and ``arrive`` (K, size of ``path_stage``):
         the facets at each point for the interval that ends there (the path's left limit at a
         breakpoint, that interval's rho; row 0 unused).
 
@@ -177,13 +179,16 @@ def stages(problem, s, stops=(), evaluated=None):
         At the first grid point out of reach or too close to a singularity.
     """
     p, dp, ddp = (np.ascontiguousarray(x) for x in (evaluated or problem.path.evaluate(s)))
-    K, n, split = len(s), problem.model.n_legs, problem.split
+    K, n, m, split = len(s), problem.model.n_legs, problem.model.dof, problem.split
     base, outs = point_stages(problem, s, (p, dp, ddp))
     left = junction_left(problem)
     stage, arrive = link(problem, s, base, outs["v1"], stops, left)
-    coef = {"a": outs["a"], "b": outs["b"], "S": outs["S"].reshape(K, n, 2), "v1": outs["v1"],
-            "N": outs[f"N_{split}"].reshape(K, n, 2), "h": outs[f"h_{split}"],
+    h = outs[f"h_{split}"]
+    coef = {"a": outs["a"], "b": outs["b"], "S": outs["S"].reshape(K, n, m), "v1": outs["v1"],
+            "N": outs[f"N_{split}"].reshape(K, h.shape[1], m), "h": h,
             "sing": outs["sing"], "p": p, "dp": dp, "ddp": ddp, "arrive": arrive}
+    if "g" in outs:                                    # a model with gravity
+        coef["g"] = outs["g"]
     return stage, coef
 
 

@@ -65,7 +65,10 @@ def _refine_until_resolved(grid):
     is imposed."""
     for _ in range(RESOLVE_ROUNDS):
         s = grid.s
-        rate = np.maximum(np.abs(grid.v1).max(axis=1), np.hypot(*grid.ev[2].T))
+        # |p''| of the planar rows: phi is linear along every piece (p''_phi = 0, paths.py);
+        # np.hypot(*ev.T) of a platform's (K, 3) would take the phi row as ``out``, overwrite it
+        ddp = grid.ev[2]
+        rate = np.maximum(np.abs(grid.v1).max(axis=1), np.hypot(ddp[:, 0], ddp[:, 1]))
         wide = np.maximum(rate[:-1], rate[1:]) * np.diff(s)
         bad = np.flatnonzero(wide > RESOLUTION)
         if not bad.size:

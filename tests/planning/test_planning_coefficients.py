@@ -6,6 +6,7 @@ from scipy.spatial import ConvexHull
 
 import pm2dof
 from pm2dof.analysis.maps import zonotope_inradius
+from pm2dof.core.task import orientation_length
 from pm2dof.planning import TaskPath
 from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import V_TOP, params, stages
@@ -15,22 +16,33 @@ PAPER_LINE = ([0.22, 0.29], [0.27, 0.24])
 
 
 def _coefficients(model, xe, dp, ddp, theta, w):
-    n = model.n_legs
-    outs = [np.empty(k) for k in (2, 2, 2 * n, n, 2 * n, n, 2 * n, n, 2)]
-    model.function("path_coefficients")(np.asarray(xe, float), dp, ddp, theta, w, *outs)
-    return dict(zip(("a", "b", "S", "v1", "N_mn", "h_mn", "N_mm", "h_mm", "sing"), outs))
+    """The generated path_coefficients at one point: dict by output name (a, b, g with
+    gravity, S, v1, N_min_norm, h_min_norm, N_min_max, h_min_max, sing)."""
+    f = model.function("path_coefficients")
+    outs = [np.empty(k) for k in f.sizes_out]
+    f(np.asarray(xe, float), dp, ddp, theta, w, *outs)
+    return dict(zip(f.names_out, outs))
+
+
+def _facets(n, m):
+    """Facet pairs of a generic zonotope of n generators in R^m: n for m = 2, n (n - 1) / 2
+    for m = 3 (one per pair of generators); the generated polytopes pad min-norm's n slabs
+    (and a 3-RRR's 3) to the larger count."""
+    return n if m == 2 else max(n, n * (n - 1) // 2)
 
 
 def test_coefficients_match_the_model_functions(model, sample_xe, random_theta):
-    """a = Me p', b = Me p'' + Ce(q, p') p', S, v1 = S p' (eqs. 8, 12) at random poses,
-    directions, curvatures and parameters."""
+    """a = Me p', b = Me p'' + Ce(q, p') p', g = Ge (eq. 10, present exactly when the model has
+    gravity), S, v1 = S p' (eqs. 8, 12) at random poses, directions (m = model.dof: a
+    platform's p' has a phi row), curvatures and parameters."""
     rng = np.random.default_rng(20)
-    n = model.n_legs
+    n, m = model.n_legs, model.dof
+    gravity = model.spec.has_gravity
     for xe in sample_xe(model, 21, 5):
         th = random_theta(model, rng)
-        phi = rng.uniform(0, 2 * np.pi)
-        dp = np.array([np.cos(phi), np.sin(phi)])
-        ddp = rng.normal(0, 20, 2)
+        dp = rng.normal(size=m)
+        dp /= np.linalg.norm(dp)
+        ddp = rng.normal(0, 20, m)
         w = rng.uniform(1, 30, n)
         c = _coefficients(model, xe, dp, ddp, th, w)
         q = model.ik(xe)
@@ -38,73 +50,107 @@ def test_coefficients_match_the_model_functions(model, sample_xe, random_theta):
         assert np.allclose(c["a"], Me @ dp, rtol=1e-12, atol=1e-12 * np.abs(Me).max())
         assert np.allclose(c["b"], Me @ ddp + Ce @ dp, rtol=1e-11,
                            atol=1e-11 * (np.abs(Me).max() * 20 + np.abs(Ce).max()))
-        assert np.allclose(c["S"].reshape(n, 2), S, rtol=1e-13, atol=1e-13)
+        assert ("g" in c) == gravity
+        if gravity:
+            G = model.Ge(q, th)
+            assert np.abs(G).max() > 0.1, G          # the check can fail: gravity is there
+            assert np.allclose(c["g"], G, rtol=1e-12, atol=1e-12 * np.abs(G).max())
+        assert np.allclose(c["S"].reshape(n, m), S, rtol=1e-13, atol=1e-13)
         assert np.allclose(c["v1"], S @ dp, rtol=1e-12, atol=1e-12 * np.abs(S).max())
         assert np.allclose(c["sing"], model.singularity_measures(q), atol=1e-13)
 
 
 def test_force_polygons_are_the_splits_feasible_sets(coulomb_viscous_model, sample_xe):
     """min-norm: |N_j u| <= h_j is |(S (S^T S)^-1 u)_j| <= w_j; min-max: the facets of the convex
-    hull of the 2^n vertices sum_i +-w_i s_i (scipy's Qhull), and the least h is the inradius
-    of pm2dof.analysis.maps."""
+    hull of the 2^n vertices sum_i +-w_i s_i (scipy's Qhull; a polygon for m = 2, a 3-D
+    zonotope for a platform), every hull facet one of ours and each of ours a face of the hull
+    (at least m vertices on it), and the least h is the inradius of pm2dof.analysis.maps."""
     model = coulomb_viscous_model
     rng = np.random.default_rng(3)
-    n = model.n_legs
+    n, m = model.n_legs, model.dof
+    F = _facets(n, m)
     for xe in sample_xe(model, 5, 4):
         w = rng.uniform(2, 30, n)
-        c = _coefficients(model, xe, np.array([1.0, 0.0]), np.zeros(2), model.theta_nominal, w)
+        c = _coefficients(model, xe, np.eye(m)[0], np.zeros(m), model.theta_nominal, w)
         S = model.S(model.ik(xe))
         P = S @ np.linalg.inv(S.T @ S)
-        N, h = c["N_mn"].reshape(n, 2), c["h_mn"]
-        assert np.allclose(N * (w / h)[:, None], P, rtol=1e-12, atol=1e-12 * np.abs(P).max())
-        N, h = c["N_mm"].reshape(n, 2), c["h_mm"]
-        assert np.allclose(np.hypot(*N.T), 1.0, atol=1e-14)
+        N, h = c["N_min_norm"].reshape(F, m), c["h_min_norm"]
+        assert np.allclose(N[:n] * (w / h[:n])[:, None], P, rtol=1e-12,
+                           atol=1e-12 * np.abs(P).max())
+        assert np.array_equal(N[n:], np.repeat(N[:1], F - n, axis=0))     # padding: slab 1
+        assert np.array_equal(h[n:], np.repeat(h[:1], F - n))
+        N, h = c["N_min_max"].reshape(F, m), c["h_min_max"]
+        assert np.allclose(np.linalg.norm(N, axis=1), 1.0, atol=1e-14)
         G = S * w[:, None]
         signs = np.array(np.meshgrid(*[[-1, 1]] * n)).reshape(n, -1).T
-        hull = ConvexHull(signs @ G)
+        vertices = signs @ G
+        hull = ConvexHull(vertices)
         for eq in hull.equations:              # each hull facet is one of ours (up to sign)
-            normal, off = eq[:2], -eq[2]
-            match = [j for j in range(n) if abs(abs(N[j] @ normal) - 1) < 1e-9]
+            normal, off = eq[:m], -eq[m]
+            match = [j for j in range(F) if abs(abs(N[j] @ normal) - 1) < 1e-9]
             assert match and any(abs(h[j] - off) < 1e-9 * off for j in match), (eq, N, h)
+        for j in range(F):                     # ... and each of ours is a face of the hull
+            assert np.abs(vertices @ N[j]).max() == pytest.approx(h[j], rel=1e-12)
+            assert np.sum(np.abs(vertices @ N[j] - h[j]) < 1e-9 * h[j]) >= m, (j, N[j])
         assert h.min() == pytest.approx(zonotope_inradius(G), rel=1e-12)
 
 
 def test_min_max_polygon_agrees_with_the_generated_split(coulomb_viscous_model, sample_xe):
-    """u is inside the min-max polygon exactly when the generated min-max split needs no more
-    than tau_max (its ratio <= 1)."""
+    """u (m,) is inside the min-max polytope exactly when the generated min-max split needs no
+    more than tau_max (its ratio <= 1). u = sum_i t_i w_i s_i, t_i in [-1.5, 1.5]: both sides of
+    the boundary in every direction, whatever the units of the task rows (N, N m for phi)."""
     model = coulomb_viscous_model
     rng = np.random.default_rng(4)
-    n = model.n_legs
+    n, m = model.n_legs, model.dof
+    F = _facets(n, m)
     for xe in sample_xe(model, 6, 3):
         w = np.full(n, 10.0)
-        c = _coefficients(model, xe, np.array([0.0, 1.0]), np.zeros(2), model.theta_nominal, w)
-        N, h = c["N_mm"].reshape(n, 2), c["h_mm"]
+        c = _coefficients(model, xe, np.eye(m)[1], np.zeros(m), model.theta_nominal, w)
+        N, h = c["N_min_max"].reshape(F, m), c["h_min_max"]
         q = model.ik(xe)
+        G = model.S(q) * w[:, None]
+        inside_seen = outside_seen = 0
         for _ in range(40):
-            u = rng.normal(0, h.max(), 2)
+            u = G.T @ rng.uniform(-1.5, 1.5, n)
             inside = np.all(np.abs(N @ u) <= h)
             ratio = model.torque_splits(q, u, tau_max=w)["min_max_ratio"]
-            margin = np.min(h - np.abs(N @ u)) / h.max()
+            margin = np.min((h - np.abs(N @ u)) / h)
             if abs(margin) > 1e-9:
                 assert inside == (ratio <= 1), (u, ratio, margin)
+                inside_seen += inside
+                outside_seen += not inside
+        assert inside_seen and outside_seen      # both sides of the boundary were tested
+
+
+def _model_arc(model):
+    """An arc around the middle of the model file's first move, radius 0.3 of its planar
+    length; a platform's phi turns linearly from the move's start to its end along it."""
+    mv = next(iter(model.spec.trajectories.values()))
+    start, end = np.asarray(mv["start"], float), np.asarray(mv["end"], float)
+    c = (start + end) / 2
+    r = 0.3 * np.hypot(*(end - start)[:2])
+    if model.dof == 2:
+        return TaskPath.arc(c, r, 0.1, 2.0)
+    return TaskPath.arc(c[:2], r, 0.1, 2.0, phi=(start[2], end[2]),
+                        orientation_length=orientation_length(model))
 
 
 def test_torques_along_a_path_match_inverse_dynamics(model, random_theta):
-    """path_torques (planner's C) = Me (p' s_dd + p'' s_d^2) + Ce s_d p' s_d + StF, then each
-    split (torque_splits): pm2dof.planning.torques against the generated path_torques."""
+    """path_torques (planner's C) = Me (p' s_dd + p'' s_d^2) + Ce s_d p' s_d + StF (+ Ge with
+    gravity), then each split (torque_splits): pm2dof.planning.torques against the generated
+    path_torques, u (K, m) in the model's task space."""
     rng = np.random.default_rng(8)
-    mv = next(iter(model.spec.trajectories.values()))
-    start, end = np.asarray(mv["start"]), np.asarray(mv["end"])
-    c = (start + end) / 2
-    path = TaskPath.arc(c, 0.3 * np.hypot(*(end - start)), 0.1, 2.0)
+    path = _model_arc(model)
+    assert path.dim == model.dof
     th = random_theta(model, rng)
     w = np.full(model.n_legs, 20.0)
     s = np.linspace(0, path.length, 30)
     prm, th = params(model, th)
-    stage, _ = stages(PlanProblem(model, path, w, th, "min_max", prm), s)
+    stage, coef = stages(PlanProblem(model, path, w, th, "min_max", prm), s)
+    assert coef["S"].shape == (30, model.n_legs, model.dof)
     sd, sdd = rng.uniform(0.01, 1.0, 30), rng.normal(0, 10, 30)
     K, n = len(s), model.n_legs
-    outs = (np.empty((K, 2)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
+    outs = (np.empty((K, model.dof)), np.empty((K, n)), np.empty((K, n)), np.empty(K))
     model.function("path_torques").map(K, stage, sd, sdd, prm, w, *outs)
     ref = path_torques(model, path, s, sd, sdd, th, w)
     scale = np.abs(ref["u"]).max()
@@ -119,6 +165,8 @@ def _feasible_at(model, q, a, b, dp, y, w, split, theta):
     finds its least value; min-norm's actuator intervals are intersected exactly."""
     F = model.StF(q, dp * max(y, 1e-12), theta)
     u0 = b * y * y + F
+    if model.spec.has_gravity:
+        u0 = u0 + model.Ge(q, theta)                    # eq. 10's gravity term
     if split == "min_norm":
         S = model.S(q)
         P = S @ np.linalg.inv(S.T @ S)
@@ -145,12 +193,17 @@ def _feasible_at(model, q, a, b, dp, y, w, split, theta):
 
 
 @pytest.mark.parametrize("split", ["min_norm", "min_max"])
-def test_maximum_velocity_curve_by_brute_force(split):
+@pytest.mark.parametrize("name", ["shang2010", "shang2010_vertical", "rrr4_platform"])
+def test_maximum_velocity_curve_by_brute_force(name, split):
     """The generated maximum-velocity curve against a search over s_d with the model's own
-    inverse dynamics and split (friction included), at a few points of an arc."""
-    m = pm2dof.load_model()
-    path = TaskPath.arc([0.245, 0.265], 0.03, 0.0, 3.0)
-    w = np.full(3, 8.0)
+    inverse dynamics (gravity included: the paper's robot upright) and split (friction
+    included; a platform's 3-D zonotope), at a few points of an arc."""
+    m = pm2dof.load_model(name)
+    if m.dof == 2:
+        path = TaskPath.arc([0.245, 0.265], 0.03, 0.0, 3.0)
+    else:
+        path = _model_arc(m)
+    w = np.full(m.n_legs, 8.0)
     s = np.linspace(0, path.length, 7)[1:-1]
     prm, th = params(m, None)
     stage, coef = stages(PlanProblem(m, path, w, th, split, prm), s)
