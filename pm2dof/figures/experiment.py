@@ -116,7 +116,9 @@ def _repeated(plt, rep, names, speed):
     a2.axhline(1.0, color="k", lw=0.8)
     a2.set_xlabel("run (0: Tables 1-2)")
     a2.set_ylabel(THETA_HAT + " / truth at the end of the run")
-    a2.set_title("Where " + THETA_HAT + r" goes (truth: inertias with the payload, $f_v$, $f_c$)",
+    zero = [name for k, name in enumerate(names) if truth[k] == 0]
+    a2.set_title("Where " + THETA_HAT + r" goes (truth: inertias with the payload, $f_v$, $f_c$)"
+                 + (f"\n({', '.join(zero)}: truth 0, no ratio, not shown)" if zero else ""),
                  fontsize=9)
     a2.grid(alpha=0.3)
     a2.xaxis.set_major_locator(MaxNLocator(integer=True))
