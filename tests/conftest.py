@@ -212,8 +212,8 @@ _REFERENCE = ("compares with pm2dof.reference or docs/paper.md, the paper's RRR 
               "against the independent Lagrange-multiplier formulation")
 _GRAVITY = ("holds in a horizontal plane only: under gravity the controllers hold the robot with "
             "their model's gravity term, and the plant's differs (its payload): APD, without "
-            "integral action, settles at e = Kp^-1 (G_plant - G_model), 76 encoder counts on "
-            "shang2010_vertical, NA (adapting) at 38 after 0.6 s "
+            "integral action, settles at e = Kp^-1 (G_plant - G_model), 8.1 encoder counts on "
+            "shang2010_vertical, NA (adapting) at 5.1 after 0.6 s "
             "(tests/mechanisms/test_capabilities.py runs the closed loop)")
 _NOT_YET = ("written for RRR legs at a point (2-D task arrays, the law of cosines, sin(qb - qa)): "
             "not yet generalised to this mechanism (issue 26 follow-up); "
@@ -232,13 +232,8 @@ _NOT_RUN = {
     "core/test_closure.py::test_residual_of_the_generated_fk_equals_the_reference": ("new",
                                                                                      _REFERENCE),
     "core/test_model.py::test_A_is_the_jacobian_of_H": ("platform", _PLATFORM_H),
-    "control/test_at_rest.py::test_controllers_at_rest_command_zero_torque": ("gravity", _GRAVITY),
-    "control/test_at_rest.py::test_preload_split_at_rest_commands_only_the_preload": ("gravity",
-                                                                                      _GRAVITY),
     "control/test_at_rest.py::test_simulated_hold_stays_within_one_encoder_count": ("gravity",
                                                                                     _GRAVITY),
-    "control/test_models_closed_loop.py::test_one_step_torque_is_the_minimum_norm_resolution":
-        ("gravity new", _NOT_YET),
 }
 _NOT_RUN["core/test_model.py::test_A_W_is_zero"] = ("platform", _PLATFORM_H)
 for _name in ("test_round_trip_wherever_ik_answers", "test_measures_agree_with_an_svd_of_S",
