@@ -269,8 +269,6 @@ _KNOWN_FAILING = {
     "figures/test_figures_layout.py::test_maps_figures": _PLATFORMS | {"prr_point"},
     "figures/test_figures_layout.py::test_animation_frames":
         {"prr3_platform", "rpr3_platform", "prr_point"},
-    "identification/test_identification_rest.py::test_rest_samples_have_no_friction_columns":
-        _PLATFORMS | {"shang2010_vertical"},
 }
 
 
