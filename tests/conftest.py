@@ -266,9 +266,6 @@ _KNOWN_FAILING = {
     "planning/test_planning_coefficients.py::test_min_max_polygon_agrees_with_the_generated_split":
         _PLATFORMS | {"shang2010_vertical"},
     "planning/test_planning_topp.py::test_every_model_plans_its_first_move": _PLATFORMS,
-    "figures/test_figures_layout.py::test_maps_figures": _PLATFORMS | {"prr_point"},
-    "figures/test_figures_layout.py::test_animation_frames":
-        {"prr3_platform", "rpr3_platform", "prr_point"},
 }
 
 

@@ -6,6 +6,7 @@ horizontal plane so is the whole row (Me 0 + Ce 0 + S^T f_a(0) = 0); under gravi
 the gravity term's (eq. 10 at rest: Y theta = Ge = dV/dxe), column by column. The log is one held pose, stacked with every sample kept
 (``min_joint_speed=0``: by default slow samples are left out). Task arrays have m = model.dof."""
 import numpy as np
+import pytest
 
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.fit import stack_regressor
@@ -51,3 +52,33 @@ def test_rest_samples_have_no_friction_columns(model, random_theta):
     theta = random_theta(model, np.random.default_rng(7))
     g = Y @ theta
     np.testing.assert_allclose(g, model.Ge(q, theta), rtol=1e-12, atol=1e-12 * np.abs(g).max())
+
+
+
+def test_slow_threshold_is_in_each_actuators_unit(model):
+    """A short log from the model's start pose at a constant velocity that moves every linear
+    actuator at about 0.04 m/s, their speeds |S xed| (computed here from the generated S) all
+    between 0.02 and 0.1: above
+    their default threshold 0.1 x SPEED_LEVER = 0.01 m/s, so no sample is left out (the
+    revolute 0.1 taken as m/s left out some). Revolute actuators keep 0.1 rad/s (the 2-DOF
+    identification outputs pinned in tests/identification)."""
+    from pm2dof.identification.fit import MIN_JOINT_SPEED, SPEED_LEVER
+    linear = [i for i, leg in enumerate(model.spec.legs) if leg.actuator == "prismatic"]
+    if len(linear) < model.n_legs:
+        pytest.skip(f"{model.name}: revolute actuators (their threshold is unchanged)")
+    n, N = model.n_legs, 100
+    T = model.spec.sensing["sample_period"]
+    x0 = np.asarray(next(iter(model.spec.trajectories.values()))["start"], dtype=float)
+    t = np.arange(N) * T
+    xed = np.linalg.pinv(model.S(model.ik(x0))) @ np.full(n, 0.04)   # every actuator ~0.04
+    xe = x0 + np.outer(t, xed)
+    qd = np.array([np.abs(model.S(model.ik(x)) @ xed) for x in xe])
+    assert 0.02 < qd.min() and qd.min() < MIN_JOINT_SPEED, qd.min()
+    st = stack_regressor(model, base_parameters(model), t, xe,
+                         np.zeros((N, n)), 50.0, decimate=1)
+    assert qd.min() > MIN_JOINT_SPEED * SPEED_LEVER and st["n_slow"] == 0, st["n_slow"]
+    assert len(st["Phi"]) == st["n_candidates"] > 0
+    old = stack_regressor(model, base_parameters(model), t, xe,
+                          np.zeros((N, n)), 50.0, decimate=1,
+                          min_joint_speed=MIN_JOINT_SPEED / SPEED_LEVER)   # 0.1 m/s
+    assert old["n_slow"] > 0, (old["n_slow"], old["n_candidates"], qd.min(), qd.max())
