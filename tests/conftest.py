@@ -258,11 +258,6 @@ _NOT_RUN["control/test_task_dimension.py::test_dof_and_task_names_follow_the_gen
 #: in the full run after the models were shipped; the closing note of the stop lists them.
 _PLATFORMS = {"rrr3_platform", "rrr4_platform", "prr3_platform", "rpr3_platform"}
 _KNOWN_FAILING = {
-    "figures/test_figures_layout.py::test_maps_figures": _PLATFORMS | {"prr_point"},
-    "figures/test_figures_layout.py::test_animation_frames":
-        {"prr3_platform", "rpr3_platform", "prr_point"},
-    "identification/test_identification_rest.py::test_rest_samples_have_no_friction_columns":
-        _PLATFORMS | {"shang2010_vertical"},
 }
 
 
