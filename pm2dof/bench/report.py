@@ -45,8 +45,8 @@ def _model_rows(r, tg):
     out.append("  (NA/FD: the NA step and the forward dynamics; ovh: the binding's overhead, "
                "Python - C; plan: plan_time_optimal, min_max, 1000 points, the model's first "
                "move, a platform's carrying phi)")
-    out.append(f"  ratios to {paper}, paired per round: NA C, NA Py, NA ovh, FD C, FD Py, FD ovh, "
-               f"rollout time, plan time")
+    out.append(f"  ratios to {paper} (paired per round; ovh: of the medians): NA C, NA Py, NA ovh, "
+               "FD C, FD Py, FD ovh, rollout time, plan time")
     for name, x in rows.items():
         if name == paper:
             continue
