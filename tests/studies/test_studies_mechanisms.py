@@ -5,7 +5,8 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.studies import StudyFileError, check_study, read_results, read_study, run_chunk
+from pm2dof.studies import (SHIPPED_STUDIES, StudyFileError, check_study, read_results, read_study,
+                            run_chunk)
 from pm2dof.studies.report import columns_of, summarise
 from pm2dof.studies.store import finish_out, prepare_out, write_chunk
 
@@ -85,11 +86,18 @@ def test_quick_study_on_each_new_kind(tmp_path, name):
 
 
 @pytest.mark.parametrize("name", ["rrr3_platform", "prr_point"])
-def test_a_draw_too_stiff_for_the_plants_substeps_is_refused_before_any_rollout(name):
-    """The shipped robustness study scales Coulomb friction by up to 1.3 and the Stribeck
-    excess by up to 2: on these models some draw's plant is unstable at rest with the model's
-    RK4 substeps. check_study (run_study's first step) names the draw and the remedy."""
-    s = read_study("robustness", quick=True, model=name)
+def test_a_draw_too_stiff_for_the_plants_substeps_is_refused_before_any_rollout(name, tmp_path):
+    """The shipped robustness study with its Coulomb scale widened to 3x: some draw's plant is
+    unstable at rest with the model's RK4 substeps (the models take enough substeps for the
+    shipped studies' 1.3x). check_study (run_study's first step) names the draw and the
+    remedy."""
+    text = (SHIPPED_STUDIES / "robustness.toml").read_text()
+    assert "fc_scale = {uniform = [0.7, 1.3]}" in text
+    study = tmp_path / "stiff.toml"
+    study.write_text(text.replace("fc_scale = {uniform = [0.7, 1.3]}",
+                                  "fc_scale = {uniform = [2.9, 3.0]}"))
+    check_study(read_study("robustness", quick=True, model=name), pm2dof.load_model(name))
+    s = read_study(study, quick=True, model=name)
     with pytest.raises(StudyFileError, match=r"\[uncertainty \(draw \d+, run 0, move '\w+'\)\] "
                                              r"the draw's plant cannot be simulated.*"
                                              r"rk4_substeps >= \d+"):
