@@ -11,6 +11,7 @@ import pytest
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.fit import stack_regressor
 
+
 def _kind(name):
     return name.rstrip("0123456789")
 
