@@ -19,17 +19,17 @@ In a task space of m = 3 (a platform: force x, y and moment phi, N and N m) the 
 facets are spanned by pairs of generators, with normals g_i x g_j (as the generated min-max
 split, derive/splits.py); the radius is then that of the largest ball in the (x, y, phi)
 coordinates as they are (N and N m taken alike). The grid of :func:`workspace_maps` is over
-(x, y), from the reach discs of RR legs meeting at a point: other mechanisms are refused
-(UnsupportedMechanismError) until a reach box is defined for their legs.
+(x, y), in the box that every leg's reach allows (RRR: the disc la + lb about its base; PRR:
+its rail widened by its link; RPR: the disc of its longest stroke); a platform's maps are
+taken at one orientation phi, by default the home pose's, and say which.
 """
 import numpy as np
 
 from ..core.errors import ArgumentError, WorkspaceError
-from ..core.task import require_rr_point
 from ..infra.progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
-           "maps_summary", "format_maps_summary", "FIELDS"]
+           "maps_summary", "format_maps_summary", "map_orientation", "FIELDS"]
 
 # quantity -> (unit, description); every map of workspace_maps has these keys
 FIELDS = {
@@ -133,18 +133,54 @@ def capability(model, q, theta=None, tau_max=None):
             "accel_min_max": a_mm, "accel_ratio": a_mm / a_mn}
 
 
-def _grid(model, resolution):
-    require_rr_point(model, "workspace_maps' grid (the box of the RR legs' reach discs)")
-    legs = model.spec.legs
-    lo = np.max([np.asarray(l.base) - (l.la + l.lb) for l in legs], axis=0)
-    hi = np.min([np.asarray(l.base) + (l.la + l.lb) for l in legs], axis=0)
+def _reach_box(leg):
+    """(lo, hi) (2,) m: a box holding every point leg ``leg``'s tip reaches. RRR: the disc of
+    radius la + lb about A; PRR: the rail's segment widened by the link lb; RPR: the disc of
+    the longest stroke about the base pivot."""
+    a = np.asarray(leg.base, dtype=float)
+    if leg.kind == "PRR":
+        ends = np.stack([a, np.asarray(leg.rail_end, dtype=float)])
+        return ends.min(axis=0) - leg.lb, ends.max(axis=0) + leg.lb
+    r = max(leg.stroke) if leg.kind == "RPR" else leg.la + leg.lb
+    return a - r, a + r
+
+
+def map_orientation(model, phi=None):
+    """The orientation (rad) at which a platform's maps are taken: ``phi``, default the home
+    pose's (``[platform] home``); None for a point end effector (its maps need none)."""
+    if model.dof == 2:
+        if phi is not None:
+            raise ArgumentError(f"phi: model {model.name!r} has a point end effector (task x, y); "
+                                f"its maps take no orientation, got phi = {phi!r}")
+        return None
+    phi = model.spec.home[2] if phi is None else phi
+    if not (isinstance(phi, (int, float, np.floating)) and np.isfinite(phi)):
+        raise ArgumentError(f"phi must be a finite number (rad), got {phi!r}")
+    return float(phi)
+
+
+def _grid(model, resolution, phi):
+    """The grid's axes over the box every leg's reach box allows (a platform at the
+    orientation ``phi``: leg i's box shifted by -R(phi) a_i, from its attachment point to the
+    platform frame's origin)."""
+    lo, hi = np.full(2, -np.inf), np.full(2, np.inf)
+    for leg in model.spec.legs:
+        l, h = _reach_box(leg)
+        if phi is not None:
+            c, s = np.cos(phi), np.sin(phi)
+            ax, ay = leg.attach
+            off = np.array([c * ax - s * ay, s * ax + c * ay])
+            l, h = l - off, h - off
+        lo, hi = np.maximum(lo, l), np.minimum(hi, h)
     if np.any(hi <= lo):
-        raise WorkspaceError(f"model {model.name!r}: the legs' reach discs do not overlap")
+        raise WorkspaceError(f"model {model.name!r}: the legs' reach boxes do not overlap")
     return np.linspace(lo[0], hi[0], resolution), np.linspace(lo[1], hi[1], resolution)
 
 
-def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=None):
+def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=None, phi=None):
     """Every quantity of :data:`FIELDS` on a grid over the workspace, in the assembly mode.
+
+    The grid is over (x, y); a platform's maps are taken at one orientation ``phi``.
 
     Parameters
     ----------
@@ -158,20 +194,26 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
         Actuator limits, N*m (default ``[limits].tau_max``).
     progress : callable(str) or pm2dof.infra.progress.Progress, optional
         Stage lines; a ``Progress`` also draws a bar over the poses.
+    phi : float, optional
+        A platform's orientation over the whole map, rad (default its home orientation,
+        ``[platform] home``); refused (ArgumentError) for a point end effector.
 
     Returns
     -------
     dict
-        ``x`` (nx,), ``y`` (ny,) m; ``reachable`` (ny, nx) bool (every leg reaches, in the
+        ``x`` (nx,), ``y`` (ny,) m; ``phi`` the platform's orientation (rad; None for a
+        point); ``reachable`` (ny, nx) bool (every leg reaches, in the
         model's assembly mode); ``side`` (ny, nx) (two legs: > 0 in the assembly mode, its
         zero the parallel-singular curve); one (ny, nx) array per :data:`FIELDS` key, NaN
         outside the reachable set and where a pose is singular.
     """
     if not (isinstance(resolution, int) and resolution >= 5):
         raise ArgumentError(f"resolution must be an integer >= 5, got {resolution!r}")
-    x, y = _grid(model, resolution)
+    phi = map_orientation(model, phi)
+    x, y = _grid(model, resolution, phi)
     X, Y = np.meshgrid(x, y)
-    pts = np.stack([X.ravel(), Y.ravel()], axis=1)
+    pts = np.stack([X.ravel(), Y.ravel()] + ([] if phi is None else [np.full(X.size, phi)]),
+                   axis=1)
     type1, type2, side = model.pose_measures(pts)
     reach = np.isfinite(type1) & np.isfinite(type2) & (side > 0)
     out = {k: np.full(len(pts), np.nan) for k in FIELDS}
@@ -193,7 +235,7 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
     b.close()
     shape = X.shape
     res = {key: v.reshape(shape) for key, v in out.items()}
-    res.update(x=x, y=y, reachable=reach.reshape(shape), side=side.reshape(shape))
+    res.update(x=x, y=y, phi=phi, reachable=reach.reshape(shape), side=side.reshape(shape))
     return res
 
 
@@ -213,7 +255,8 @@ def maps_summary(model, maps, theta=None, tau_max=None):
     clear = (maps["reachable"] & (maps["type1"] >= model.singularity_threshold)
              & (maps["type2"] >= model.parallel_singularity_threshold))
     summary = {"grid": {"x": [float(maps["x"][0]), float(maps["x"][-1]), len(maps["x"])],
-                        "y": [float(maps["y"][0]), float(maps["y"][-1]), len(maps["y"])]},
+                        "y": [float(maps["y"][0]), float(maps["y"][-1]), len(maps["y"])],
+                        **({} if maps.get("phi") is None else {"phi": maps["phi"]})},
                "reachable_area_m2": float(maps["reachable"].sum() * dx * dy),
                "clear_area_m2": float(clear.sum() * dx * dy),
                "over_clear_workspace": {k: _stats(np.where(clear, maps[k], np.nan))
@@ -238,8 +281,10 @@ def maps_summary(model, maps, theta=None, tau_max=None):
 
 def format_maps_summary(summary):
     """A text table of :func:`maps_summary`."""
+    phi = summary["grid"].get("phi")
     lines = [f"reachable area {summary['reachable_area_m2']:.4f} m^2, clear of both singularity "
-             f"thresholds {summary['clear_area_m2']:.4f} m^2",
+             f"thresholds {summary['clear_area_m2']:.4f} m^2"
+             + ("" if phi is None else f" (the platform at phi = {phi:g} rad)"),
              f"{'quantity':16s} {'unit':6s} {'min':>10s} {'median':>10s} {'max':>10s}   "
              + "   ".join(f"worst on {s}" for s in summary["moves"])]
     for k, st in summary["over_clear_workspace"].items():

@@ -16,6 +16,55 @@ def _fmt(v, unit=""):
     return f"{v:.3g}"
 
 
+def _target_cells(t):
+    """(target, result) of a target entry, or blanks."""
+    if not t:
+        return "", ""
+    res = "n/a" if t["pass"] is None else ("PASS" if t["pass"] else "FAIL")
+    return f"{t['op']} {_fmt(t['target'], t['unit'])}", res
+
+
+def _model_rows(r, tg):
+    """The platforms beside the paper's robot (``model_rows``): one line per model, then the
+    paired ratios to the paper's robot and the two targets."""
+    rows = r.get("model_rows")
+    if not rows:
+        return []
+    paper = r.get("models_paper")
+    out = ["", f"the platforms beside the paper's robot ({paper}), interleaved rounds, medians; "
+           "ns unless named", f"  {'model':15s} {'legs':>4s} {'m':>2s} {'NA C':>8s} {'NA Py':>8s} "
+           f"{'NA ovh':>8s} {'FD C':>8s} {'FD Py':>8s} {'FD ovh':>8s} {'rollout/s':>11s} "
+           f"{'plan ms':>8s}"]
+    for name, x in rows.items():
+        out.append(f"  {name:15s} {x['n_legs']:4d} {x['dof']:2d} "
+                   + " ".join(f"{_fmt(x[k]):>8s}" for k in (
+                       "na_step_c_ns", "na_step_python_ns", "na_step_binding_overhead_ns",
+                       "forward_dynamics_c_ns", "forward_dynamics_python_ns",
+                       "forward_dynamics_binding_overhead_ns"))
+                   + f" {_fmt(x['rollout_steps_per_s']):>11s} {_fmt(x['plan_time_optimal_ms']):>8s}")
+    out.append("  (NA/FD: the NA step and the forward dynamics; ovh: the binding's overhead, "
+               "Python - C; plan: plan_time_optimal, min_max, 1000 points, the model's first "
+               "move, a platform's carrying phi)")
+    out.append(f"  ratios to {paper} (paired per round; ovh: of the medians): NA C, NA Py, NA ovh, "
+               "FD C, FD Py, FD ovh, rollout time, plan time")
+    for name, x in rows.items():
+        if name == paper:
+            continue
+        out.append(f"  {name:15s} " + " ".join(f"{_fmt(x[k]):>6s}" for k in (
+            "na_step_c_over_paper", "na_step_python_over_paper",
+            "na_step_binding_overhead_over_paper", "forward_dynamics_c_over_paper",
+            "forward_dynamics_python_over_paper", "forward_dynamics_binding_overhead_over_paper",
+            "rollout_time_over_paper", "plan_time_optimal_over_paper")))
+    for key, label in (("rrr4_na_step_c_over_paper", "NA step in C, 4-RRR / paper's robot"),
+                       ("platform_binding_overhead_over_paper_max",
+                        "binding overhead, platforms / paper's, worst call")):
+        tgt, res = _target_cells(tg.get(key))
+        out.append(f"  {label:52s} {_fmt(r.get(key), 'x'):>8s} x {tgt:>10s}  {res}")
+    out.append("  the peers (Pinocchio, MuJoCo) stay on the paper's robot: they model RR legs "
+               "meeting at a point")
+    return out
+
+
 def format_bench(results):
     """A readable report of :func:`run_bench`'s dict: timings, targets, ratios, op counts."""
     r = results
@@ -109,6 +158,7 @@ def format_bench(results):
                          f"solve, {r['plan_smooth_iterations']} iterations; "
                          f"{r['plan_smooth_duration_s']:.4f} s vs strict "
                          f"{r['plan_smooth_strict_duration_s']:.4f} s")
+    lines += _model_rows(r, tg)
     lines.append("")
     lines.append("ratios and agreement")
     for label, key, unit in (

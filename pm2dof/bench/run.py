@@ -14,7 +14,6 @@ from pathlib import Path
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.plant import plant_vector
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
 from ..core.layout import Layout
@@ -24,7 +23,6 @@ from ..reference import control as rc
 from .baselines import (
     c_step,
     lambdify_step,
-    long_trajectory,
     operating_point,
     random_cases,
     reference_geometry,
@@ -33,6 +31,7 @@ from .derivatives import derivative_bench, dynamics_state
 from .machine import machine
 from .opcount import OPS_FUNCTIONS, count_ops
 from .peers import peer_bench
+from .rollout import rollout_call
 from .timing import rel_diff, stats, time_batches
 
 __all__ = ["run_bench", "TARGETS", "REQUIRED_KEYS"]
@@ -71,13 +70,18 @@ TARGETS = (
      "from Python"),
     ("fd_binding_overhead_over_c", "<=", 4.0, "x",
      "forward dynamics: binding overhead (Python - C) / C"),
+    # issue 26: the 3-RRR and 4-RRR platforms beside the paper's robot (bench/models.py),
+    # ratios of interleaved rounds; measured when the platform rows run (``models``)
+    ("rrr4_na_step_c_over_paper", "<=", 3.0, "x", "NA step in C, 4-RRR / paper's robot"),
+    ("platform_binding_overhead_over_paper_max", "<=", 1.25, "x",
+     "binding overhead (Python - C), platform / paper's robot, worst call"),
 )
 #: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 BENCH_SPLITS = ("min_norm", "min_max", "preload")
 BENCH_PRELOAD = 1.0
 
 
-def run_bench(model=None, quick=False, progress=None):
+def run_bench(model=None, quick=False, progress=None, models=None):
     """Benchmark the generated NA step and closed-loop rollout, all in one run.
 
     A development tool: besides the runtime package it imports CasADi (to call the compiled
@@ -119,6 +123,11 @@ def run_bench(model=None, quick=False, progress=None):
         rollout) takes about 10 s, most of it the SymPy derivation and the NumPy reference.
     progress : callable(str), optional
         Called with a short message before each stage.
+    models : bool, optional
+        Also time the 3-RRR and 4-RRR platforms beside the paper's robot
+        (:func:`pm2dof.bench.models.models_bench`: ``model_rows`` and the two platform
+        targets; about 9 s in a full run, under 1 s in a quick one). Default: in the full
+        run, not in the quick one (then those targets are n/a).
 
     Returns
     -------
@@ -164,6 +173,16 @@ def run_bench(model=None, quick=False, progress=None):
     planning = bench_planning(model, quick, say)
     notes.update(planning.pop("notes"))
     res.update(planning)
+
+    # --- the platforms beside the paper's robot (issue 26): bench/models.py ----------------
+    if (not quick) if models is None else models:
+        from .models import models_bench
+        res.update(models_bench(b.repeats, b.batch_s, b.c_inner, b.n_roll, say))
+        notes["model_rows"] = ("the peers (Pinocchio, MuJoCo) are timed on the paper's robot "
+                               "only: they model RR legs meeting at a point, not a platform")
+    else:
+        res["rrr4_na_step_c_over_paper"] = res["platform_binding_overhead_over_paper_max"] = None
+        notes["model_rows"] = "the platforms were not timed (pm2dof bench --models adds them)"
 
     say("op counts from the generated C source")
     res.update(bench_op_counts(model, notes))
@@ -391,32 +410,12 @@ def bench_rollout(b, say):
     """The closed-loop rollout (encoder, NA step, the plant's RK4 substeps per sample) over
     ``b.n_roll`` samples: the ``accumulate`` call alone (``rollout_steps_per_s``) and through
     ``pm2dof.simulate`` (``rollout_end_to_end_steps_per_s``), control steps per second."""
-    model, na, lays, n_roll, n = b.model, b.na, b.lays, b.n_roll, b.model.n_legs
-    long, speed_l = long_trajectory(model, n_roll)
+    model, na, lays, n_roll = b.model, b.na, b.lays, b.n_roll
+    run_acc, y, long, speed_l = rollout_call(model, na, n_roll)
     say(f"rollout: {n_roll} samples ({speed_l}-speed move back and forth), accumulate and "
         f"simulate()")
     res = {"rollout_samples": n_roll,
            "rk4_substeps": int(model.manifest.get("rk4_substeps", 0)) or None}
-    f_cl = model.function("na_closed_loop")
-    plant = plant_vector(model)
-    p = np.concatenate([na.params, plant])
-    x0 = np.zeros(lays["cl_state"].size)
-    X = lays["cl_state"].unpack(x0)
-    X["xe"][:] = long.xd[0]
-    qa0 = np.empty(n)
-    model.function("measure")(long.xd[0], plant, qa0)
-    C0 = lays["ctrl_state"].unpack(X["ctrl_state"])
-    C0["xe_prev"][:] = model.fk(qa0)
-    C0["theta_hat"][:] = na.theta0
-    u = np.ascontiguousarray(np.hstack([long.xd, long.xd_dot, long.xd_ddot]))
-    y = np.empty((n_roll, lays["cl_output"].size))
-    x = x0.copy()
-
-    def run_acc(k):
-        for _ in range(k):
-            x[:] = x0
-            f_cl.accumulate(x, u, p, y)
-
     run_acc(1)
     status = y[:, lays["cl_output"].slices["status"]].ravel()
     res["rollout_singular_samples"] = int(np.sum(status == Status.SINGULAR))

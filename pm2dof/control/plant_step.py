@@ -17,7 +17,7 @@ import numpy as np
 from ..core.errors import ArgumentError
 from .plant import plant_truth, theta_truth
 
-__all__ = ["RK4_STABLE_Z", "rest_decay_rate", "check_plant_step"]
+__all__ = ["RK4_STABLE_Z", "rest_decay_rate", "check_plant_step", "rest_poses"]
 
 #: the largest h * lambda accepted: RK4's real stability bound 2.785, with 10 % margin
 RK4_STABLE_Z = 2.5
@@ -40,13 +40,32 @@ def rest_decay_rate(model, xe, truth=None):
         max eig(Me^-1 S^T diag(d) S), d_i = (fc_i + fs_i) / eps + fv_i (the slope at v = 0 of
         the plant's smoothed Coulomb + Stribeck + viscous law).
     """
+    (x, q, S), = rest_poses(model, [xe])
+    return _rates(model, truth, [(x, q, S)])[0][0]
+
+
+def _rates(model, truth, kin):
+    """[(rate, xe)] at each (xe, q, S) of ``kin`` under the plant ``truth``."""
     t = plant_truth(model) if truth is None else truth
     d = (np.asarray(t["fc"], float) + np.asarray(t["fs"], float)) \
         / float(t["coulomb_smoothing_velocity"]) + np.asarray(t["fv"], float)
-    q = model.ik(np.asarray(xe, dtype=float))
-    S = model.S(q)
-    Me = model.Me(q, theta_truth(model, t))
-    return float(np.linalg.eigvals(np.linalg.solve(Me, S.T @ (d[:, None] * S))).real.max())
+    theta = theta_truth(model, t)
+    return [(float(np.linalg.eigvals(np.linalg.solve(model.Me(q, theta),
+                                                     S.T @ (d[:, None] * S))).real.max()), x)
+            for x, q, S in kin]
+
+
+def rest_poses(model, poses):
+    """The poses :func:`check_plant_step` checks of ``poses`` (K, m): nine of them, the first
+    and the last included (the rate varies smoothly along a move), as [(xe, q, S)]: to check
+    many plant truths on the same move, compute them once."""
+    poses = np.atleast_2d(np.asarray(poses, dtype=float))
+    poses = poses[np.unique(np.linspace(0, len(poses) - 1, min(len(poses), 9)).astype(int))]
+    out = []
+    for x in poses:
+        q = model.ik(x)
+        out.append((x, q, model.S(q)))
+    return out
 
 
 def check_plant_step(model, poses, truth=None):
@@ -55,9 +74,9 @@ def check_plant_step(model, poses, truth=None):
     Parameters
     ----------
     model : Model
-    poses : array_like (K, m)
+    poses : array_like (K, m), or list
         Poses, e.g. a trajectory's samples: nine of them are checked, the first and the last
-        included (the rate varies smoothly along a move).
+        included (the rate varies smoothly along a move); or what :func:`rest_poses` returns.
     truth : dict, optional
         The plant truth (default :func:`pm2dof.plant_truth`).
 
@@ -69,10 +88,9 @@ def check_plant_step(model, poses, truth=None):
     """
     T = float(model.spec.sensing["sample_period"])
     substeps = int(model.spec.rk4_substeps)
-    poses = np.atleast_2d(np.asarray(poses, dtype=float))
-    poses = poses[np.unique(np.linspace(0, len(poses) - 1, min(len(poses), 9)).astype(int))]
-    lam, at = max(((rest_decay_rate(model, x, truth), x) for x in poses),
-                  key=lambda pair: pair[0])
+    if not isinstance(poses, list):
+        poses = rest_poses(model, poses)
+    lam, at = max(_rates(model, truth, poses), key=lambda pair: pair[0])
     z = lam * T / substeps
     if z > RK4_STABLE_Z:
         need = math.ceil(lam * T / RK4_STABLE_Z)

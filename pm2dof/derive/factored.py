@@ -8,7 +8,7 @@ pieces SymPy derived for one leg or in joint space, which is much cheaper:
   W        rows (i, n+i) = J_i^-1, J_i the tip Jacobian of leg i            (eq. 7)
   Wdot a   = -J_i^-1 Jdot_i(q, qd) (W a)_leg i                            (eq. 9)
   Y        = W^T Y_joint(q, qd, W xrd, W xrdd + Wdot xrd) + S^T Y_friction  (eq. 13)
-             + d Ge / d theta (the gravity term's regressor, when the model has gravity)
+             (with gravity Y_joint includes d g_q / d theta, so W^T Y_joint carries Ge's part)
   Me       = W^T M W,   Ce xed = W^T (M Wdot xed + C(q, qd) qd)            (eq. 12)
 with Y_joint = d(M qdd^r + C qd^r)/d theta and Y_friction = d f_a / d theta derived by SymPy.
 
@@ -121,10 +121,9 @@ def regressor(d, conv, v, xrd, xrdd):
     c = conv_qd.extended([(sym.qdr, W @ xrd), (sym.qddr, W @ xrdd + Wdot_xrd)])
     Y_joint = ca.reshape(c(dyn.Y_joint), p, 2 * n).T
     Y_fric = ca.reshape(c(dyn.Y_friction), p, n).T
+    # with gravity, Y_joint holds d g_q / d theta, and W^T g_q is Ge (derive/dynamics.py): the
+    # gravity term's regressor is in W^T Y_joint already (adding d Ge / d theta here doubled it)
     Y = W.T @ Y_joint + S.T @ Y_fric
-    Ge = _gravity(d)
-    if Ge is not None:                                  # eq. 13 with gravity: d Ge / d theta
-        Y = Y + _rows(c, Ge.jacobian(sym.theta), m, p)
     return Y, S, W
 
 

@@ -9,24 +9,14 @@ from ..control.trajectory import model_move
 from ..core.errors import ArgumentError, OutputError
 from ..infra.results import output_path
 from .experiment import COLORS, LABELS, _plt, sci
-from .style import label_bases, legend_outside
+from .robot import barrels, draw_fixed, fixed_key, fixed_points, leg_points, platform_polygon
+from .style import legend_outside
 
 __all__ = ["animate_move", "animation_figure", "render_frames"]
 
 DPI = 80    # of the GIF: about 960 x 380 px
 
 CONTROLLERS = {"na": NAController, "apd": APDController}
-
-
-def _links(model, q):
-    """(n, 3, 2) points base -> elbow -> tip of each leg at the pose q (2n,)."""
-    n, legs = model.n_legs, model.spec.legs
-    out = np.empty((n, 3, 2))
-    for i, leg in enumerate(legs):
-        a = np.asarray(leg.base)
-        b = a + leg.la * np.array([np.cos(q[i]), np.sin(q[i])])
-        out[i] = (a, b, b + leg.lb * np.array([np.cos(q[n + i]), np.sin(q[n + i])]))
-    return out
 
 
 def animate_move(model, out, speed="high", controller="na", split=None, magnify=None,
@@ -141,15 +131,24 @@ def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2)
     fig, (ax, az, ae) = plt.subplots(1, 3, figsize=(12, 4.8), layout="constrained",
                                      gridspec_kw={"width_ratios": [1.1, 1, 1]})
     color = COLORS[controller]
-    b = model.bases
-    links = np.array([_links(model, qs[k]) for k in frames])          # (frames, n, 3, 2)
-    pts = np.vstack([b, links.reshape(-1, 2)])
+    links = [leg_points(model, qs[k]) for k in frames]     # per frame, per leg (k, 2)
+    cyls = [barrels(model, qs[k]) for k in frames]         # RPR legs' cylinders
+    bodies = [platform_polygon(model, r.xe[k]) for k in frames]   # a platform's outline
+    pts = np.vstack([fixed_points(model)] + [p for f in links for p in f])
     lo, hi = pts.min(axis=0) - 0.07, pts.max(axis=0) + 0.07    # room for the labels
-    ax.plot(b[:, 0], b[:, 1], "k^", ms=8, label="bases A1, A2, ...")
-    label_bases(ax, b, fontsize=9, offset=9.0)
+    draw_fixed(ax, model, ms=8, fontsize=9, offset=9.0, label=fixed_key(model, marks=False))
     ax.plot(r.xd[:, 0], r.xd[:, 1], "-", color="0.6", lw=3, label="desired path")
     trace_true, = ax.plot([], [], "-", color=color, lw=1, label="actual path, true scale")
+    body = None
+    if bodies[0] is not None:                      # the platform as a body, under the legs
+        from matplotlib.patches import Polygon
+        body = ax.add_patch(Polygon(bodies[0], closed=True, fc="0.85", ec="0.25", lw=1.5,
+                                    zorder=1.9, label="platform"))
     legs = [ax.plot([], [], "-o", color="0.25", lw=2, ms=3)[0] for _ in range(model.n_legs)]
+    barrel = {i: ax.plot([], [], "-", color="tab:brown", lw=6, solid_capstyle="butt")[0]
+              for i in cyls[0]}                    # RPR: the cylinder, the rod slides out
+    slider = {i: ax.plot([], [], "s", color="0.1", ms=6)[0]
+              for i, leg in enumerate(model.spec.legs) if leg.kind == "PRR"}
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal")
@@ -181,7 +180,7 @@ def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2)
     ae.axvline(r.t[r.n_move - 1], color="0.5", ls=":", lw=1)
     cursor = ae.axvline(0.0, color="k", lw=1)
     ae.set_xlabel("time (s); dotted: end of the move")
-    ae.set_ylabel("|xd - xe| (mm)")
+    ae.set_ylabel("|xd - xe| (mm)" if model.dof == 2 else "|xd - xe| of (x, y) (mm)")
     ae.grid(alpha=0.3)
     slow = 1.0 / (fps * every * period)            # real seconds per GIF second
     fig.suptitle(f"{model.name}: {LABELS[controller]}, {speed}-speed move, RMSE (eq. 41) "
@@ -193,13 +192,20 @@ def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2)
         k = frames[j]
         for line, seg in zip(legs, links[j]):
             line.set_data(seg[:, 0], seg[:, 1])
+        for i, line in barrel.items():
+            line.set_data(cyls[j][i][:, 0], cyls[j][i][:, 1])
+        for i, mark in slider.items():
+            mark.set_data(links[j][i][:1, 0], links[j][i][:1, 1])
+        if body is not None:
+            body.set_xy(bodies[j])
         trace_true.set_data(r.xe[:k + 1, 0], r.xe[:k + 1, 1])
         trace.set_data(shown[:k + 1, 0], shown[:k + 1, 1])
         tip.set_data([shown[k, 0]], [shown[k, 1]])
         ref.set_data([r.xd[k, 0]], [r.xd[k, 1]])
         cursor.set_xdata([r.t[k], r.t[k]])
         ae.set_title(f"t = {r.t[k]:.3f} s, |xd - xe| = {err_mm[k]:.4f} mm", fontsize=9)
-        return [trace_true, *legs, trace, tip, ref, cursor, ae.title]   # as drawn: in order
+        return [*([body] if body is not None else []), trace_true, *legs, *barrel.values(),
+                *slider.values(), trace, tip, ref, cursor, ae.title]                      # as drawn: in order
 
     draw(0)
     fig.set_dpi(DPI)

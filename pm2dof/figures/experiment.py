@@ -26,8 +26,10 @@ def _plt():
     return plt
 
 
-def _errors(plt, results, speed):
-    fig, axes = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True, layout="constrained")
+def _errors(plt, results, speed, task_names=("x", "y")):
+    """One panel per task coordinate (a platform's phi in mrad, positions in mm)."""
+    fig, axes = plt.subplots(len(task_names), 1, figsize=(7, 0.5 + 2.5 * len(task_names)),
+                             sharex=True, layout="constrained")
     for name in ("apd", "na"):
         r = results[speed][name]
         n = r.n_move
@@ -35,10 +37,11 @@ def _errors(plt, results, speed):
             ax.plot(r.t[:n], 1e3 * r.e[:n, k], color=COLORS[name],
                     label=f"{LABELS[name]}, RMSE (eq. 41) {sci(r.rmse)} m")
     for k, ax in enumerate(axes):
-        ax.set_ylabel(f"{'xy'[k]}d - {'xy'[k]}e (mm)")
+        c = task_names[k]
+        ax.set_ylabel(f"{c}d - {c}e ({'mrad' if c == 'phi' else 'mm'})")
         ax.grid(alpha=0.3)
-    axes[1].set_xlabel("time (s)")
-    fig.suptitle(f"Position errors, {speed}-speed move (simulated; cf. the paper's Figs. 4-5)",
+    axes[-1].set_xlabel("time (s)")
+    fig.suptitle(f"Tracking errors, {speed}-speed move (simulated; cf. the paper's Figs. 4-5)",
                  fontsize=10)
     legend_outside(fig, axes[:1], "lower", ncol=1)
     return fig
@@ -71,10 +74,16 @@ def _theta(plt, results, names):
                              layout="constrained")
     for ax, speed in zip(axes[0], speeds):
         r = results[speed]["na"]
-        change = 100.0 * (r.theta_hat / r.theta_hat[0] - 1.0)
-        for k, name in enumerate(names):
-            ax.plot(r.t, change[:, k], lw=1, label=tex_name(name), **styles[name])
-        ax.set_title(f"NA's estimate during the {speed}-speed move", fontsize=9)
+        start = r.theta_hat[0]
+        shown = [k for k in range(len(names)) if start[k] != 0]   # a 0 has no relative change
+        for k in shown:
+            change = 100.0 * (r.theta_hat[:, k] / start[k] - 1.0)
+            ax.plot(r.t, change, lw=1, label=tex_name(names[k]), **styles[names[k]])
+        left = [names[k] for k in range(len(names)) if k not in shown]
+        ax.set_title(f"NA's estimate during the {speed}-speed move"
+                     + (f"\n({', '.join(left)} start at 0: no relative change, not shown)"
+                        if left else ""),
+                     fontsize=9)
         ax.set_xlabel("time (s)")
         ax.set_ylabel(THETA_HAT + r"$_k\,/\,$" + THETA_HAT + r"$_k(0) - 1$ (%)")
         ax.grid(alpha=0.3)
@@ -97,14 +106,19 @@ def _repeated(plt, rep, names, speed):
     a1.grid(alpha=0.3)
     a1.xaxis.set_major_locator(MaxNLocator(integer=True))
     theta = np.vstack([rep["theta0"], rep["theta_hat_end"]])
-    rel = theta / rep["theta_truth"]
+    truth = np.asarray(rep["theta_truth"], dtype=float)
+    rel = theta / np.where(truth != 0, truth, 1.0)
     styles = param_styles(names)
     for k, name in enumerate(names):
+        if truth[k] == 0:            # no ratio to a zero truth (a platform's centred mx_p, my_p)
+            continue
         a2.plot(np.arange(len(theta)), rel[:, k], lw=1, label=tex_name(name), **styles[name])
     a2.axhline(1.0, color="k", lw=0.8)
     a2.set_xlabel("run (0: Tables 1-2)")
     a2.set_ylabel(THETA_HAT + " / truth at the end of the run")
-    a2.set_title("Where " + THETA_HAT + r" goes (truth: inertias with the payload, $f_v$, $f_c$)",
+    zero = [name for k, name in enumerate(names) if truth[k] == 0]
+    a2.set_title("Where " + THETA_HAT + r" goes (truth: inertias with the payload, $f_v$, $f_c$)"
+                 + (f"\n({', '.join(zero)}: truth 0, no ratio, not shown)" if zero else ""),
                  fontsize=9)
     a2.grid(alpha=0.3)
     a2.xaxis.set_major_locator(MaxNLocator(integer=True))
@@ -120,7 +134,8 @@ def write_figures(model, results, repeated, out_dir, prov):
     out_dir = Path(out_dir)
     written = []
     names = list(model.param_names)
-    figs = [(f"errors_{speed}.png", _errors(plt, results, speed)) for speed in results]
+    figs = [(f"errors_{speed}.png", _errors(plt, results, speed, model.task_names))
+            for speed in results]
     figs.append(("torques.png", _torques(plt, results)))
     figs.append(("theta_hat.png", _theta(plt, results, names)))
     if repeated is not None:

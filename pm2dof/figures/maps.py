@@ -7,7 +7,8 @@ from ..analysis.maps import maps_summary, workspace_maps
 from ..control.trajectory import line_moves, model_move
 from ..infra.results import provenance, save_figure, write_json
 from .experiment import _plt
-from .style import label_bases, log_ticks, wrap
+from .robot import draw_fixed, fixed_key, fixed_points
+from .style import log_ticks, wrap
 
 __all__ = ["maps_figures", "maps_figure", "maps_note", "draw_robot_frame"]
 
@@ -26,7 +27,7 @@ def _extent(model, maps):
     reach = np.column_stack([X[maps["reachable"]], Y[maps["reachable"]]])
     if not len(reach):                                 # nothing reachable: the whole grid
         reach = np.array([[maps["x"][0], maps["y"][0]], [maps["x"][-1], maps["y"][-1]]])
-    b = model.bases
+    b = fixed_points(model)
     lo = np.minimum(b.min(axis=0), reach.min(axis=0))
     hi = np.maximum(b.max(axis=0), reach.max(axis=0))
     pad = 0.1 * float(np.max(hi - lo))
@@ -34,22 +35,21 @@ def _extent(model, maps):
 
 
 def draw_robot_frame(ax, model, maps):
-    """Bases, the reachable set's boundary, for two legs the parallel-singular curve, and the
-    model's moves, on an axis in metres."""
+    """Bases (and rails), the reachable set's boundary, for two legs the parallel-singular
+    curve, and the model's moves (a platform's: the path of its frame's origin), on an axis
+    in metres."""
     X, Y = np.meshgrid(maps["x"], maps["y"])
     ax.contour(X, Y, maps["reachable"].astype(float), levels=[0.5], colors="k", linewidths=0.8)
     if model.n_legs == 2:
         side = np.where(np.isfinite(maps["side"]), maps["side"], np.nan)
         ax.contour(X, Y, side, levels=[0.0], colors="m", linewidths=1.2, linestyles="-")
-    b = model.bases
-    ax.plot(b[:, 0], b[:, 1], "k^", ms=7)
-    label_bases(ax, b)
+    draw_fixed(ax, model)
     for speed in line_moves(model):
         xd = model_move(model, speed).xd
         ax.plot(xd[:, 0], xd[:, 1], "-", color="w", lw=3.5)
         ax.plot(xd[:, 0], xd[:, 1], "-", color="tab:red", lw=1.5)
-        ax.plot(*xd[0], "o", color="tab:red", ms=4)
-        ax.plot(*xd[-1], "s", color="tab:red", ms=4)
+        ax.plot(*xd[0, :2], "o", color="tab:red", ms=4)    # (x, y): a platform's xd has phi
+        ax.plot(*xd[-1, :2], "s", color="tab:red", ms=4)
     lo, hi = _extent(model, maps)
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
@@ -105,7 +105,7 @@ def _panel(plt, fig, ax, model, maps, key):
         ax.contour(X, Y, maps[key], levels=[thr[key]], colors="tab:orange", linewidths=1.2,
                    linestyles="--")
     draw_robot_frame(ax, model, maps)
-    ax.set_title(CBAR[key][1], fontsize=9)
+    ax.set_title(_title(model, key), fontsize=9)
 
 
 def maps_figure(plt, model, maps, keys, note):
@@ -114,35 +114,60 @@ def maps_figure(plt, model, maps, keys, note):
     aspect = float(np.clip((hi[1] - lo[1]) / (hi[0] - lo[0]), 0.5, 2.0))
     fig, axes = plt.subplots(1, len(keys), figsize=(0.6 + 5.0 * len(keys), 1.6 + 3.4 * aspect),
                              squeeze=False, layout="constrained")
+    text = wrap(fig, note, 8)
+    # the height above leaves room for a note of 3 lines (5 beside one narrow panel); a longer
+    # one (a platform's says its orientation) gets 0.25 in per line more
+    extra = text.count("\n") + 1 - (5 if len(keys) == 1 else 3)
+    if extra > 0:
+        fig.set_figheight(fig.get_figheight() + 0.25 * extra)
     for ax, key in zip(axes[0], keys):
         _panel(plt, fig, ax, model, maps, key)
-    fig.suptitle(wrap(fig, note, 8), fontsize=8)
+    fig.suptitle(text, fontsize=8)
     return fig
 
 
-def maps_note(model, tau_max=None):
-    """The key to the maps' figures: model, limits, and what each line and marker is."""
+def _title(model, key):
+    """A panel's title: the singularity measures written out for RRR legs at a point, else
+    named with where each kind's is defined."""
+    if key == "type1" and any(leg.kind != "RRR" for leg in model.spec.legs):
+        return "type I measure, min over the legs\n(each kind's: docs/model-file.md)"
+    if key == "type2" and model.dof == 3:
+        return "type II measure of the legs' lines\n(a platform's: docs/model-file.md)"
+    return CBAR[key][1]
+
+
+def maps_note(model, tau_max=None, phi=None):
+    """The key to the maps' figures: model, limits, a platform's orientation ``phi`` (rad; the
+    maps' ``phi``), and what each line and marker is."""
     w = model.spec.limits["tau_max"] if tau_max is None else np.asarray(tau_max, dtype=float)
-    return (f"Model {model.name!r}; tau_max = {', '.join(f'{v:g}' for v in w)} N m; Me from "
-            f"Tables 1-2. Force and acceleration maps: the 95th percentile and above share the "
-            f"top colour.\nBlack: the reachable set in the assembly mode; orange dashed: the "
+    units = {("revolute",): "N m", ("prismatic",): "N"}.get(
+        tuple({leg.actuator for leg in model.spec.legs}), "N m (revolute) or N (linear)")
+    pose = ("" if phi is None else
+            f"The platform at phi = {phi:g} rad (its home orientation unless given) over the "
+            f"whole map; force: the largest ball of (fx, fy, moment), N and N m alike; "
+            f"acceleration: m/s^2 and rad/s^2 alike; the moves drawn by their (x, y).\n")
+    return (f"Model {model.name!r}; tau_max = {', '.join(f'{v:g}' for v in w)} {units}; Me from "
+            f"Tables 1-2. {pose}Force and acceleration maps: the 95th percentile and above share "
+            f"the top colour.\nBlack: the reachable set in the assembly mode; orange dashed: the "
             f"singularity threshold; "
             + ("magenta: the parallel-singular curve; " if model.n_legs == 2 else "")
-            + "red: the moves (o start, square end); triangles: the bases A1, A2, ...")
+            + f"red: the moves (o start, square end); {fixed_key(model)}")
 
 
-def maps_figures(model, out_dir, resolution=121, theta=None, tau_max=None, progress=None):
-    """Compute :func:`workspace_maps`, write the PNGs of :data:`FIGURES` and ``maps.json`` (the
+def maps_figures(model, out_dir, resolution=121, theta=None, tau_max=None, progress=None,
+                 phi=None):
+    """Compute :func:`workspace_maps` (a platform at the orientation ``phi``, default its home
+    one), write the PNGs of :data:`FIGURES` and ``maps.json`` (the
     summary of :func:`maps_summary` and the provenance) into ``out_dir``.
 
     Returns (summary dict, list of written paths).
     """
     plt = _plt()
-    maps = workspace_maps(model, resolution, theta, tau_max, progress)
+    maps = workspace_maps(model, resolution, theta, tau_max, progress, phi)
     summary = maps_summary(model, maps, theta, tau_max)
     prov = provenance(model)
     out_dir = Path(out_dir)
-    note = maps_note(model, tau_max)
+    note = maps_note(model, tau_max, maps["phi"])
     paths = []
     for name, keys in FIGURES.items():
         fig = maps_figure(plt, model, maps, keys, note)

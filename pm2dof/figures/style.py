@@ -144,13 +144,20 @@ def wrap(fig, text, fontsize):
 
 _KIND = re.compile(r"([A-Za-z_]+?)(\d+)$")
 _KIND_COLORS = {"alpha": "tab:blue", "beta": "tab:orange", "gamma": "tab:green",
-                "fv": "tab:red", "fc": "tab:purple", "fs": "tab:brown"}
+                "kappa": "tab:olive", "fv": "tab:red", "fc": "tab:purple", "fs": "tab:brown",
+                "m_p": "tab:pink", "mx_p": "tab:cyan", "my_p": "tab:gray", "I_p": "k"}
+#: the platform's parameters (no leg number) and their symbols
+_PLATFORM_TEX = {"m_p": "$m_p$", "mx_p": "$m x_p$", "my_p": "$m y_p$", "I_p": "$I_p$"}
 _LEG_STYLES = ("-", "--", ":", "-.")
 
 
 def kind_of(name):
-    """("fv", 2) for "fv2": the kind of a parameter of theta and its leg (1-based)."""
-    kind, leg = _KIND.fullmatch(name).groups()
+    """("fv", 2) for "fv2": the kind of a parameter of theta and its leg (1-based); a
+    platform's parameter has no leg: ("m_p", 0)."""
+    match = _KIND.fullmatch(name)
+    if match is None:
+        return name, 0
+    kind, leg = match.groups()
     return kind, int(leg)
 
 
@@ -158,7 +165,9 @@ def tex_name(name):
     """The paper's symbol of a parameter of theta as mathtext: "alpha1" -> $\\alpha_{1}$,
     "fv2" -> $f_{v2}$."""
     kind, leg = kind_of(name)
-    if kind in ("alpha", "beta", "gamma"):
+    if name in _PLATFORM_TEX:
+        return _PLATFORM_TEX[name]
+    if kind in ("alpha", "beta", "gamma", "kappa"):
         return rf"$\{kind}_{{{leg}}}$"
     if len(kind) == 2 and kind[0] == "f":
         return rf"$f_{{{kind[1]}{leg}}}$"
@@ -172,5 +181,5 @@ def param_styles(names):
     for name in names:
         kind, leg = kind_of(name)
         out[name] = {"color": _KIND_COLORS.get(kind, "k"),
-                     "ls": _LEG_STYLES[(leg - 1) % len(_LEG_STYLES)]}
+                     "ls": _LEG_STYLES[max(leg - 1, 0) % len(_LEG_STYLES)]}
     return out

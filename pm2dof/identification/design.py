@@ -53,7 +53,7 @@ import numpy as np
 from ..core.errors import ArgumentError, UnsupportedMechanismError
 from ..infra.progress import bar
 from .base import base_parameters, region_center
-from .fit import MIN_JOINT_SPEED
+from .fit import MIN_JOINT_SPEED, joint_speed_floor
 from .signals import FourierExcitation, multisine, trajectory_of, write_excitation
 
 __all__ = ["design_excitation", "regressor_condition", "check_excitation",
@@ -133,8 +133,10 @@ def sample_function(model, independent, smooth_sign=None):
     built on the model's generated C (``casadi.external``, finite-difference derivatives).
 
     ``smooth_sign`` (rad/s): replace sign(qd_i) in the Coulomb (and Stribeck) columns by
-    tanh(qd_i / smooth_sign), so that the design's objective is differentiable (a sign
-    flipping at one sample would make it jump); None keeps the model's Y exactly.
+    tanh(qd_i / s_i), s_i = smooth_sign for a revolute actuator and smooth_sign x
+    ``SPEED_LEVER`` m/s for a linear one (:func:`~pm2dof.identification.fit.joint_speed_floor`),
+    so that the design's objective is differentiable (a sign flipping at one sample would make
+    it jump); None keeps the model's Y exactly.
     """
     import casadi as ca
     n, p = model.n_legs, len(model.param_names)
@@ -148,8 +150,9 @@ def sample_function(model, independent, smooth_sign=None):
         qd = ca.mtimes(S, v)                                    # eq. 8
         names = list(model.param_names)
         cols = [Yfull[:, j] for j in range(p)]
+        floor = joint_speed_floor(model, smooth_sign)
         for i in range(n):
-            sgn = ca.tanh(qd[i] / smooth_sign)
+            sgn = ca.tanh(qd[i] / floor[i])
             cols[names.index(f"fc{i + 1}")] = S[i, :].T * sgn   # S^T e_i sign(qd_i), eq. 2
             if f"fs{i + 1}" in names:
                 vs = model.spec.friction_constants["stribeck_velocity"]

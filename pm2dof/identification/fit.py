@@ -19,7 +19,9 @@ go through it alike. Each step is a function below; :func:`identify_log` runs th
    both sides.
 5. Samples where an active joint is slower than ``min_joint_speed`` (and their neighbours
    within the filter's reach) are left out: there eq. 2's sign(qd) jumps and real friction
-   (stiction, Stribeck) is not eq. 2.
+   (stiction, Stribeck) is not eq. 2. The threshold is in rad/s for a revolute actuator; a
+   linear one's (PRR, RPR legs: qd in m/s) is ``min_joint_speed * SPEED_LEVER`` m/s
+   (:func:`joint_speed_floor`).
 6. Weighted least squares (:func:`weighted_ls`): OLS, then each task axis weighted by
    1/sigma of its residual; a Newey-West (Bartlett) covariance, since filtered residuals
    are correlated; ±2 sigma per base parameter; warnings for directions the data cannot
@@ -43,7 +45,7 @@ from .log import LogError, log_poses
 
 __all__ = ["lowpass", "choose_cutoff", "excitation_band", "differentiate", "stack_regressor", "weighted_ls",
            "weak_directions", "model_error", "identify_log", "Identification", "CUTOFF_FACTOR", "MIN_JOINT_SPEED",
-           "MODEL_ERROR_CHOICES"]
+           "MODEL_ERROR_CHOICES", "SPEED_LEVER", "joint_speed_floor", "speed_phrase"]
 
 #: cutoff of the low-pass = CUTOFF_FACTOR x the highest excitation frequency. A 4th-order
 #: Butterworth applied forward and backward passes f/fc = 0.1 with gain 1 - 1e-8: the
@@ -52,6 +54,10 @@ __all__ = ["lowpass", "choose_cutoff", "excitation_band", "differentiate", "stac
 CUTOFF_FACTOR = 10.0
 #: rad/s: samples where |qd_a,i| is below this for some joint are not used (eq. 2 jumps there)
 MIN_JOINT_SPEED = 0.1
+#: m/rad: a linear actuator's speed threshold is the revolute one times this lever (0.1 rad/s
+#: -> 0.01 m/s): a revolute joint at 0.1 rad/s moves a point 0.1 m out at 0.01 m/s, and the
+#: shipped linear actuators move at a few cm/s in an excitation
+SPEED_LEVER = 0.1
 FILTER_ORDER = 4
 
 
@@ -164,6 +170,23 @@ def differentiate(x, T):
     return v, a
 
 
+def joint_speed_floor(model, min_joint_speed):
+    """(n,) the slow-sample threshold of each actuator in its own unit: ``min_joint_speed``
+    rad/s for a revolute actuator, ``min_joint_speed * SPEED_LEVER`` m/s for a linear one
+    (PRR, RPR legs)."""
+    return np.array([min_joint_speed * (1.0 if leg.actuator == "revolute" else SPEED_LEVER)
+                     for leg in model.spec.legs])
+
+
+def speed_phrase(model, min_joint_speed):
+    """The threshold in words for messages: "0.1 rad/s", "0.01 m/s", or both for mixed
+    actuators."""
+    kinds = {leg.actuator for leg in model.spec.legs}
+    parts = ([f"{min_joint_speed:g} rad/s"] if "revolute" in kinds else []) + (
+        [f"{min_joint_speed * SPEED_LEVER:g} m/s"] if "prismatic" in kinds else [])
+    return " (revolute) or ".join(parts) if len(parts) == 2 else parts[0]
+
+
 def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
                     min_joint_speed=MIN_JOINT_SPEED, order=FILTER_ORDER):
     """Steps 2-5 of the pipeline: the filtered, decimated base regressor and task force.
@@ -183,7 +206,8 @@ def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
     decimate : int, optional
         Keep every r-th sample (default: the largest r with 1 / (r T) >= 4 cutoff).
     min_joint_speed : float
-        rad/s (0: use every sample).
+        rad/s for a revolute actuator; a linear one's is this times :data:`SPEED_LEVER`, m/s
+        (0: use every sample).
 
     Returns
     -------
@@ -206,6 +230,7 @@ def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
     Y = np.empty((N, m, len(I)))
     u = np.empty((N, m))
     slow = np.zeros(N, dtype=bool)
+    floor = joint_speed_floor(model, min_joint_speed)
     Yk = np.empty((m, len(model.param_names)))
     S = np.empty((model.n_legs, m))
     q = np.empty(2 * model.n_legs)
@@ -215,7 +240,7 @@ def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
         model.Y(q, v[k], v[k], a[k], out=Yk)     # eq. 13 with xrd = xed, xrdd = xedd
         Y[k] = Yk[:, I]
         u[k] = S.T @ tau_mid[k]
-        slow[k] = np.min(np.abs(S @ v[k])) < min_joint_speed
+        slow[k] = np.any(np.abs(S @ v[k]) < floor)
     Yf, uf = zero_phase(sos, Y), zero_phase(sos, u)   # parallel filtering: the same filter
     edge = int(math.ceil(3.0 / (cutoff_hz * T)))       # filtfilt's start-up transients
     r = decimate or max(1, int(1.0 / (4.0 * cutoff_hz * T)))
@@ -431,7 +456,8 @@ class Identification:
     samples : int
         Samples used (equations / m).
     left_out_slow : int
-        Samples left out for a joint slower than ``min_joint_speed`` (rad/s).
+        Samples left out for a joint slower than ``min_joint_speed`` (rad/s; linear
+        actuators: times :data:`SPEED_LEVER`, m/s).
     min_joint_speed : float
     rms, r2 : ndarray (m,)
         Residual rms (N) and R^2 per task axis.
@@ -493,7 +519,8 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
     decimate : int, optional
         Keep every r-th filtered sample (default: 1 / (r T) >= 4 cutoff).
     min_joint_speed : float
-        rad/s; samples with a slower active joint are left out (0: keep all).
+        rad/s; samples with a slower active joint are left out (0: keep all). A linear
+        actuator's threshold is this times :data:`SPEED_LEVER`, m/s (0.01 m/s by default).
     consistent : bool
         Also solve for a physically consistent full theta (CasADi + IPOPT).
 
@@ -529,7 +556,7 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
         raise LogError(f"{src}: too short to determine the {r} base parameters: {K} usable "
                        f"samples after the filter's edges ({st['edge']} samples each end), "
                        f"decimation by {st['decimate']} and {st['n_slow']} slow samples left out "
-                       f"(a joint slower than {min_joint_speed:g} rad/s){ms}")
+                       f"(a joint slower than {speed_phrase(model, min_joint_speed)}){ms}")
     Phi2 = st["Phi"].reshape(-1, r)
     cs = np.linalg.norm(Phi2, axis=0)
     sv = np.linalg.svd(Phi2 / np.where(cs > 0, cs, 1.0), compute_uv=False)
@@ -554,7 +581,8 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
     frac_slow = st["n_slow"] / max(st["n_candidates"], 1)
     if frac_slow > 0.75:
         warnings.append(f"{100 * frac_slow:.0f} % of the samples were left out because a joint "
-                        f"moved slower than {min_joint_speed:g} rad/s: the estimate rests on "
+                        f"moved slower than {speed_phrase(model, min_joint_speed)}: the "
+                        f"estimate rests on "
                         f"few samples; a faster or richer excitation helps")
     sat = np.abs(log.tau) >= 0.999 * np.asarray(model.spec.limits["tau_max"])
     if sat.any():

@@ -9,7 +9,7 @@ import numpy as np
 
 from ..control.plant import theta_truth
 from ..core.errors import ArgumentError
-from .fit import MODEL_ERROR_CHOICES, identify_log
+from .fit import MODEL_ERROR_CHOICES, SPEED_LEVER, identify_log, speed_phrase
 from .log import LogError, log_folder, read_log
 
 __all__ = ["format_identification", "summary", "run_fit", "FitReport", "format_fit",
@@ -71,6 +71,8 @@ def summary(model, log, res):
                       "band_from": res.band_from, "decimate": res.decimate},
            "samples_used": res.samples, "samples_left_out_slow": res.left_out_slow,
            "min_joint_speed_rad_s": res.min_joint_speed,
+           **({"min_linear_speed_m_s": res.min_joint_speed * SPEED_LEVER}
+              if any(leg.actuator == "prismatic" for leg in model.spec.legs) else {}),
            "residual_rms_N": res.rms, "r2": res.r2, "residual_lag1": res.lag1,
            "condition_number": res.condition_number,
            "base_parameters": res.names, "estimate": res.estimate,
@@ -102,7 +104,7 @@ def format_identification(model, log, res):
         f"filter on every regressor column and on S^T tau, then decimated by {f['decimate']}",
         f"samples: {s['samples_used']} used ({2 * s['samples_used']} equations), "
         f"{s['samples_left_out_slow']} left out (a joint slower than "
-        f"{s['min_joint_speed_rad_s']:g} rad/s)",
+        f"{speed_phrase(model, s['min_joint_speed_rad_s'])})",
         f"residual: rms {s['residual_rms_N'][0]:.4g} N (x), {s['residual_rms_N'][1]:.4g} N (y); "
         f"R^2 {s['r2'][0]:.6f}, {s['r2'][1]:.6f}; lag-1 autocorrelation {s['residual_lag1']:.2f} "
         f"(sigma from a Newey-West covariance); condition number {s['condition_number']:.4g}",

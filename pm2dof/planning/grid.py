@@ -158,9 +158,10 @@ def passes(problem, stage, arrive, s, p, prev=None):
     hi[-1] = 0.0
     if top >= 0:
         bl = model.layout("path_backward_input")
-        rows = np.zeros((top + 1, bl.size))
+        rows = np.empty((top + 1, bl.size))     # every column written: pair, then the memo
         B = bl.unpack(rows)
         rows[:, bl.slices["pair"]] = P[top::-1]
+        rows[:, bl.slices["pair"].stop:] = 0.0
         if prev:
             r = slice(top, None, -1)
             B["same"][:, 0] = same[r]

@@ -73,6 +73,16 @@ class _Line:
         p = (1.0 - lam) * self.p0 + lam * self.p1    # as pm2dof.line: exact at both ends
         return p, np.broadcast_to(self.u, p.shape).copy(), np.zeros_like(p)
 
+    @staticmethod
+    def evaluate_many(pieces, j, s, out):
+        """:meth:`evaluate` of the line ``pieces[j[i]]`` at s[i], written into ``out`` (p, dp,
+        ddp): the same operations per element, for all of a path's lines in one go."""
+        length, p0, p1, u = (np.array([getattr(pc, a) for pc in pieces])
+                             for a in ("length", "p0", "p1", "u"))
+        lam = (s / length[j])[:, None]
+        out[0][:] = (1.0 - lam) * p0[j] + lam * p1[j]
+        out[1][:], out[2][:] = u[j], 0.0
+
 
 class _Arc:
     kind = "arc"
@@ -87,6 +97,18 @@ class _Arc:
         e = np.stack([np.cos(phi), np.sin(phi)], axis=1)
         tangent = self.d * np.stack([-e[:, 1], e[:, 0]], axis=1)
         return self.c + self.r * e, tangent, -e / self.r
+
+    @staticmethod
+    def evaluate_many(pieces, j, s, out):
+        """:meth:`evaluate` of the arc ``pieces[j[i]]`` at s[i] into ``out`` (as
+        :meth:`_Line.evaluate_many`)."""
+        c, r, a0, d = (np.array([getattr(pc, a) for pc in pieces]) for a in ("c", "r", "a0", "d"))
+        r, d = r[j], d[j]
+        phi = a0[j] + d * s / r
+        e = np.stack([np.cos(phi), np.sin(phi)], axis=1)
+        out[1][:, 0], out[1][:, 1] = d * -e[:, 1], d * e[:, 0]
+        r = r[:, None]
+        out[0][:], out[2][:] = c[j] + r * e, -e / r
 
 
 class _Oriented:
@@ -154,7 +176,7 @@ class TaskPath:
     ([[0.22, 0.29], [0.27, 0.24]], 0.070711)
     """
 
-    __slots__ = ("_pieces", "_ends", "_stops")
+    __slots__ = ("_pieces", "_ends", "_stops", "_groups")
 
     def __init__(self, pieces, stop_junctions=()):
         """``pieces``: one or more line/arc/spline pieces in order (as the constructors make
@@ -199,6 +221,12 @@ class TaskPath:
         object.__setattr__(self, "_ends", ends)
         st = np.unique(np.concatenate([[0, len(pieces)], junctions]))
         object.__setattr__(self, "_stops", st)
+        # evaluate's groups: each piece's length, kind (0 line, 1 arc, 2 other: one by one)
+        # and index among the pieces of its kind
+        kind = np.array([2 if type(pc) not in (_Line, _Arc) else int(type(pc) is _Arc)
+                         for pc in pieces])
+        j = np.array([int(np.count_nonzero(kind[:i] == kind[i])) for i in range(len(kind))])
+        object.__setattr__(self, "_groups", (np.array([pc.length for pc in pieces]), kind, j))
 
     def __setattr__(self, key, value):
         raise AttributeError(f"TaskPath is immutable (tried to set {key!r})")
@@ -253,13 +281,23 @@ class TaskPath:
             raise PlanError(f"side must be 'right' or 'left', got {side!r}")
         s = np.clip(s, 0.0, L)
         idx = np.clip(np.searchsorted(self._ends, s, side=side) - 1, 0, len(self._pieces) - 1)
+        lengths, kind, j = self._groups
+        if len(self._pieces) == 1:
+            return self._pieces[0].evaluate(np.clip(s - self._ends[0], 0.0, lengths[0]))
         out = [np.empty((len(s), self.dim)) for _ in range(3)]
-        for i, pc in enumerate(self._pieces):
+        local = np.clip(s - self._ends[idx], 0.0, lengths[idx])   # each piece's own s
+        for g, cls in enumerate((_Line, _Arc)):     # the lines together, the arcs together
+            sel = np.flatnonzero(kind[idx] == g)
+            if sel.size:
+                part = [np.empty((sel.size, self.dim)) for _ in range(3)]
+                cls.evaluate_many([pc for pc in self._pieces if type(pc) is cls], j[idx[sel]],
+                                  local[sel], part)
+                for o, v in zip(out, part):
+                    o[sel] = v
+        for i in np.flatnonzero(kind == 2):          # splines, oriented pieces: one by one
             sel = idx == i
-            if sel.all():
-                return pc.evaluate(np.clip(s - self._ends[i], 0.0, pc.length))
             if sel.any():
-                for o, v in zip(out, pc.evaluate(np.clip(s[sel] - self._ends[i], 0.0, pc.length))):
+                for o, v in zip(out, self._pieces[i].evaluate(local[sel])):
                     o[sel] = v
         return tuple(out)
 

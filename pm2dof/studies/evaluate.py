@@ -15,7 +15,7 @@ import numpy as np
 
 from ..control.controllers import APDController, CTCController, NAController
 from ..control.plant import plant_vector, theta_truth
-from ..control.plant_step import check_plant_step
+from ..control.plant_step import check_plant_step, rest_poses
 from ..control.simulate import batch_inputs, check_trajectory, completed_samples
 from ..control.trajectory import line, model_move
 from ..core.model import load_model
@@ -23,7 +23,7 @@ from ..core.status import Status
 from .draws import draw_columns, plant_of, sample_draw
 
 __all__ = ["run_chunk", "make_controller", "make_trajectory", "rollout_setup",
-           "METRICS", "columns"]
+           "METRICS", "columns", "plant_problems"]
 
 #: metric columns of every row (units in docs/study-file.md, "The results folder")
 METRICS = ("rmse", "max_error", "peak_tau", "n_saturated", "n_singular", "n_non_finite",
@@ -80,7 +80,8 @@ def _context(study):
         N = identifiability(model).null_space
         ctx = {"model": model, "ctrls": ctrls, "trajs": trajs,
                "P_id": np.eye(N.shape[0]) - N @ N.T,   # projector on the identifiable directions
-               "draw_cols": draw_columns(study, model.n_legs)}
+               "draw_cols": draw_columns(study, model.n_legs),
+               "rest_poses": [rest_poses(model, tr.xd) for tr, _ in trajs]}
         _CACHE.clear()
         _CACHE[key] = ctx
     return ctx
@@ -142,7 +143,7 @@ def _run_group(study, ctx, c, m, draws, plants, out, row0):
     for r in range(study.runs):
         rows = np.array([study.rollout(c, m, d, r) for d in draws]) - row0
         for d in draws:                      # the plant's RK4 substep stable near rest
-            check_plant_step(model, traj.xd, plants[d][r][0])
+            check_plant_step(model, ctx["rest_poses"][m], plants[d][r][0])
         f, X, u, P, ylay = batch_inputs(model, ctrl, traj, [plants[d][r][3] for d in draws],
                                         theta)
         for k, d in enumerate(draws):
@@ -223,3 +224,29 @@ def model_problems(pr, model, variants, moves):
             check_trajectory(model, make_trajectory(model, mv, T))
         except (WorkspaceError, SingularityError, TrajectoryError) as exc:
             pr.add(entry("study.moves", f"entry {i + 1}, {mv[0]!r}"), str(exc))
+
+
+def plant_problems(pr, model, study):
+    """Record in ``pr`` the first draw whose plant the closed loop cannot integrate stably at
+    rest on one of the study's moves (:func:`pm2dof.control.plant_step.check_plant_step`:
+    its friction, scaled by the draw, too stiff for the model's RK4 substeps), so that a study
+    is refused before any rollout rather than in a chunk. Every draw is checked in its first
+    run and, with a ``[payload_change]``, in the run the payload changes."""
+    from ..core.errors import ArgumentError
+    from ..core.validate import entry
+    T = model.spec.sensing["sample_period"]
+    runs = sorted({0, study.payload_change[0]} if study.payload_change else {0})
+    runs = [r for r in runs if r < study.runs]
+    poses = [rest_poses(model, make_trajectory(model, mv, T).xd) for mv in study.moves]
+    for d in range(study.draws):
+        values = sample_draw(study, d, model.n_legs)
+        for r in runs:
+            truth = plant_of(model, study, values, r)[0]
+            for mv, xd in zip(study.moves, poses):
+                try:
+                    check_plant_step(model, xd, truth)
+                except ArgumentError as exc:
+                    return pr.add(entry("uncertainty", f"draw {d}, run {r}, move {mv[0]!r}"),
+                                  f"the draw's plant cannot be simulated (narrow the friction "
+                                  f"scales, or raise the model's substeps): {exc}")
+    return None

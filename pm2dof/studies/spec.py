@@ -432,13 +432,17 @@ def _model_path(pr, folder, ref, key="study.model"):
 
 def check_study(study, model):
     """Everything that needs the model, before any rollout: each controller variant is accepted
-    by its controller, each move is reachable and clear of both singularity kinds. Raises
-    :class:`StudyFileError` listing every refused variant and move (``[[controllers]]`` and
-    ``study.moves`` entries numbered from 1). :func:`pm2dof.studies.read_study` makes these
-    checks too, in the same pass as the file's own."""
-    from .evaluate import model_problems
+    by its controller, each move is reachable and clear of both singularity kinds, and every
+    draw's plant can be integrated stably at rest (:func:`pm2dof.studies.evaluate.plant_problems`:
+    the first draw that cannot, under ``uncertainty``). Raises :class:`StudyFileError`
+    listing every refused variant and move (``[[controllers]]`` and ``study.moves`` entries
+    numbered from 1). :func:`pm2dof.studies.read_study` makes the first two checks too, in the
+    same pass as the file's own."""
+    from .evaluate import model_problems, plant_problems
     pr = Problems(study.path, StudyFileError)
     model_problems(pr, model, study.variants, study.moves)
+    if not pr.found:
+        plant_problems(pr, model, study)
     pr.raise_if_any()
 
 

@@ -186,3 +186,39 @@ CASADI_SYMBOL_EXPORT int m_g(const casadi_real** arg, casadi_real** res, casadi_
     assert f["flops"] == 6 and f["transcendental"] == 2
     assert g["calls"] == {"casadi_f0": 2}
     assert g["div"] == 2 * f["div"] + 1 and g["sin"] == 2
+
+
+def test_platform_rows_beside_the_paper_robot():
+    """Issue 26 "Speed": the 3-RRR and 4-RRR beside the paper's robot in one run (tiny
+    batches: the numbers are noise, their presence and the report's rows are checked)."""
+    from pm2dof.bench.models import BENCH_MODELS, PAPER_MODEL, models_bench
+    r = models_bench(repeats=2, batch_s=0.002, c_inner=200, n_roll=300)
+    rows = r["model_rows"]
+    assert list(rows) == list(BENCH_MODELS) and r["models_paper"] == PAPER_MODEL
+    assert [(x["n_legs"], x["dof"]) for x in rows.values()] == [(3, 2), (3, 3), (4, 3)]
+    for name, x in rows.items():
+        for key in ("na_step_c_ns", "na_step_python_ns", "forward_dynamics_c_ns",
+                    "forward_dynamics_python_ns", "rollout_steps_per_s", "plan_time_optimal_ms"):
+            assert _positive_finite(x[key]), (name, key)
+        for key in ("na_step_binding_overhead_ns", "forward_dynamics_binding_overhead_ns"):
+            assert math.isfinite(x[key]), (name, key)     # a difference: may be noise-negative
+        assert ("phi" in x["plan_path"]) == (x["dof"] == 3)
+        if name != PAPER_MODEL:
+            assert _positive_finite(x["na_step_c_over_paper"])
+            assert math.isfinite(x["na_step_binding_overhead_over_paper"])
+    assert r["rrr4_na_step_c_over_paper"] == rows["rrr4_platform"]["na_step_c_over_paper"]
+    worst = max(rows[n][f"{c}_binding_overhead_over_paper"] for n in BENCH_MODELS[1:]
+                for c in ("na_step", "forward_dynamics"))
+    assert r["platform_binding_overhead_over_paper_max"] == worst
+    res = {**r, "targets": bench.run.check_targets(r), "model": PAPER_MODEL}
+    assert res["targets"]["rrr4_na_step_c_over_paper"]["pass"] in (True, False)
+    table = bench.format_bench(res)
+    assert "the platforms beside the paper's robot" in table
+    assert "rrr4_platform" in table and "NA step in C, 4-RRR / paper's robot" in table
+    assert "Pinocchio, MuJoCo) stay on the paper's robot" in table
+
+
+def test_quick_run_leaves_the_platform_targets_unmeasured(results):
+    for key in ("rrr4_na_step_c_over_paper", "platform_binding_overhead_over_paper_max"):
+        assert results[key] is None and results["targets"][key]["pass"] is None
+    assert "model_rows" not in results and "--models" in results["notes"]["model_rows"]

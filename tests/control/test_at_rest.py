@@ -39,17 +39,29 @@ def _at_rest(model, sample_xe):
         yield qa, model.fk(qa)          # xd = fk(qa): the controller's own e is exactly zero
 
 
+def _holding(model, q, split, **kw):
+    """The torque that holds the robot at rest: the model's ``split`` of its gravity term
+    Ge(q, theta0) (eq. 10 at rest), zero in a horizontal plane."""
+    if not model.spec.has_gravity:
+        return np.zeros(model.n_legs)
+    return model.torque_splits(q, model.Ge(q, model.theta_nominal), **kw)[split]
+
+
 @pytest.mark.parametrize("split", SPLITS)
 def test_controllers_at_rest_command_zero_torque(model, sample_xe, split):
+    """... or, under gravity, exactly the torque that holds the robot (the gravity term once:
+    the generated controllers once added it twice, tau = 2 x the holding torque)."""
     zero = np.zeros(model.dof)
     tol = 1e-9 * np.max(model.spec.limits["tau_max"])   # old convention: ~0.1 N m
     for qa, xd in _at_rest(model, sample_xe):
+        hold = _holding(model, model.ik(xd), split)
         for name, c in _controllers(model, xd, split).items():
             c.reset(qa)
             for k in range(3):          # the first sample and two more, still at rest
                 tau = c.step(qa, xd, zero, zero)
-                assert np.abs(tau).max() <= tol, \
-                    f"{model.name} {name} {split} sample {k} at {xd.tolist()}: tau = {tau}"
+                assert np.abs(tau - hold).max() <= tol, \
+                    f"{model.name} {name} {split} sample {k} at {xd.tolist()}: tau = {tau}, " \
+                    f"holding torque {hold}"
                 assert c.status == "ok", (model.name, name, split, c.status)
 
 
@@ -61,8 +73,11 @@ def test_preload_split_at_rest_commands_only_the_preload(model, sample_xe):
     sign = np.where(np.arange(n) % 2 == 0, 1.0, -1.0)
     for qa, xd in _at_rest(model, sample_xe):
         q = model.ik(xd)
-        expected = model.torque_splits(q, zero, preload=preload, preload_sign=sign)["preload"]
-        assert np.abs(model.S(q).T @ expected).max() <= 1e-12 * preload.max()   # internal only
+        expected = _holding(model, q, "preload", preload=preload, preload_sign=sign)
+        if not model.spec.has_gravity:
+            expected = model.torque_splits(q, zero, preload=preload,
+                                           preload_sign=sign)["preload"]
+            assert np.abs(model.S(q).T @ expected).max() <= 1e-12 * preload.max()  # internal
         for name, c in _controllers(model, xd, "preload", preload=preload,
                                     preload_sign=sign).items():
             c.reset(qa)

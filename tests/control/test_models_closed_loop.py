@@ -89,28 +89,31 @@ def test_na_adapts_on_every_model(model, results):
 
 @pytest.mark.parametrize("law", ["apd", "na_gamma0"])
 def test_one_step_torque_is_the_minimum_norm_resolution(model, law):
-    n = model.n_legs
+    n, m = model.n_legs, model.dof
     traj = model_move(model, next(iter(model.spec.trajectories)))
     theta0 = np.array(model.theta_nominal)
     qa0 = model.ik(traj.xd[0])[:n]
     q = model.ik(model.fk(qa0))
     S = model.S(q)
-    assert S.shape == (n, 2)
+    assert S.shape == (n, m)
     cond = np.linalg.cond(S)
     assert cond < 1e3, f"{model.name}: S badly conditioned at the start ({cond:.3g})"
     xe = model.fk(qa0)
-    xd = xe + np.array([1e-4, -5e-5])  # a position error of ~0.1 mm, at rest
+    # a position error of ~0.1 mm (and 1 mrad of a platform's phi), at rest
+    xd = xe + np.array([1e-4, -5e-5, 1e-3][:m])
     e = xd - xe                         # the same rounding as the controller's e = xd - fk(qa)
-    fa0 = model.StF(q, np.zeros(2), theta0)  # S^T f_a(0), the model's own friction law
+    fa0 = model.StF(q, np.zeros(m), theta0)  # S^T f_a(0), the model's own friction law
+    # the gravity term at the pose, from the model function (eq. 10); 0 in a horizontal plane
+    g0 = model.Ge(q, theta0) if model.spec.has_gravity else np.zeros(m)
     if law == "apd":
         ctrl = APDController(model)
-        u = fa0 + model.spec.gains["apd"]["Kp"] * e
+        u = fa0 + g0 + model.spec.gains["apd"]["Kp"] * e
     else:
         ctrl = NAController(model, Gamma=np.zeros(len(theta0)))
         g = model.spec.gains["na"]
-        u = fa0 + g["Kd"] * (g["Q"] * e)
+        u = fa0 + g0 + g["Kd"] * (g["Q"] * e)
     ctrl.reset(qa0)
-    tau = ctrl.step(qa0, xd, np.zeros(2), np.zeros(2))
+    tau = ctrl.step(qa0, xd, np.zeros(m), np.zeros(m))
     where = f"{model.name}, {law}: tau={tau.tolist()}, u={u.tolist()}, S={S.tolist()}"
     assert ctrl.status == "ok", where
     np.testing.assert_allclose(ctrl.diag["e"], e, rtol=0, atol=1e-15, err_msg=where)
@@ -119,12 +122,12 @@ def test_one_step_torque_is_the_minimum_norm_resolution(model, law):
     _OBSERVED[f"{model.name} {law}: |S^T tau - u| / |u|"] = err
     assert err <= rel, f"S^T tau != u (relative {err:.3e} > {rel:.1e}): {where}"
     # minimum norm: tau = S z for some z (the component of tau outside range(S) vanishes;
-    # for n = 2 range(S) is the whole plane and this holds trivially)
+    # for n = m range(S) is the whole task space and this holds trivially)
     z = np.linalg.lstsq(S, tau, rcond=None)[0]
     err = np.max(np.abs(S @ z - tau)) / np.max(np.abs(tau))
     _OBSERVED[f"{model.name} {law}: |tau outside range(S)| / |tau|"] = err
     assert err <= rel, f"tau is not in range(S) (relative {err:.3e} > {rel:.1e}): {where}"
-    if n == 2:  # the non-redundant five-bar: S square, tau = S^-T u
+    if n == m:  # non-redundant (the five-bar, the 3-leg platforms): S square, tau = S^-T u
         want = np.linalg.solve(S.T, u)
         err = np.max(np.abs(tau - want)) / np.max(np.abs(want))
         _OBSERVED[f"{model.name} {law}: |tau - S^-T u| / |S^-T u|"] = err

@@ -279,10 +279,14 @@ def test_experiment_figures(paper, plt):
 
 def test_maps_figures(coulomb_viscous_model, plt):
     """Singularity, conditioning, force and acceleration maps of every geometry of the shipped models
-    (the other model files differ from these only by their friction model)."""
+    (the other model files differ from these only by their friction model); a platform's at its
+    home orientation, which the note names."""
     model = coulomb_viscous_model
     mp = workspace_maps(model, 41)
-    note = maps.maps_note(model)
+    assert mp["reachable"].any(), f"{model.name}: nothing reachable on the map's grid"
+    note = maps.maps_note(model, phi=mp["phi"])
+    if model.dof == 3:
+        assert mp["phi"] == model.spec.home[2] and f"phi = {mp['phi']:g} rad" in note, note
     for name, keys in maps.FIGURES.items():
         _check(maps.maps_figure(plt, model, mp, keys, note), f"{model.name}: {name}")
 

@@ -164,20 +164,21 @@ def test_base_parameters_identified_from_a_simulated_log(model):
     out)."""
     from pm2dof.control.plant import plant_truth, theta_truth
     from pm2dof.identification.excitation import excite
-    from pm2dof.identification.fit import MIN_JOINT_SPEED, identify_log
+    from pm2dof.identification.fit import MIN_JOINT_SPEED, SPEED_LEVER, identify_log
     from pm2dof.identification.signals import multisine
     truth = plant_truth(model, fs=[0.0] * model.n_legs)
     try:
         log = excite(model, multisine(model, duration=4.0), truth=truth, quantise=False)
-        # the default MIN_JOINT_SPEED (0.1, rad/s for revolute actuators) leaves out most of
-        # the 3-RPR's samples, whose cylinders move at a few cm/s: 0.01 m/s for linear ones
-        linear = any(leg.kind != "RRR" for leg in model.spec.legs)
-        speed = 0.01 if linear else MIN_JOINT_SPEED
-        # a smooth-sign model's law reaches 0.99 of the plant's settled Coulomb force at 7 eps
-        # only: slower samples would bias fc by the model's own smoothing, not by the fit
-        eps = model.spec.friction_constants.get("sign_smoothing_velocity")
+        # the default slow-sample threshold: 0.1 rad/s, 0.01 m/s for a linear actuator (the
+        # 3-RPR's cylinders move at a few cm/s). A smooth-sign model's law reaches 0.99 of the
+        # plant's settled Coulomb force only at 7 eps: slower samples would bias fc by the
+        # model's own smoothing, not by the fit (a linear actuator's threshold is
+        # min_joint_speed * SPEED_LEVER, m/s)
+        speed = MIN_JOINT_SPEED
         if model.spec.friction == "smooth_sign":
-            speed = max(speed, 7 * eps)
+            eps = model.spec.friction_constants["sign_smoothing_velocity"]
+            linear = any(leg.kind != "RRR" for leg in model.spec.legs)
+            speed = max(speed, 7 * eps / (SPEED_LEVER if linear else 1.0))
         ident = identify_log(model, log, min_joint_speed=speed)
     except UnsupportedMechanismError as exc:
         pytest.skip(str(exc))

@@ -91,7 +91,8 @@ def add_parser(sub, common):
                    high_inclusive=False), default=1e-3, metavar="FRACTION",
                    help="largest allowed |t_k+1 - t_k - T| / T of LOG (default 1e-3)")
     r.add_argument("--min-joint-speed", type=NONNEGATIVE, metavar="RAD_S",
-                   help="leave out samples with a slower active joint (default 0.1; 0 keeps all)")
+                   help="leave out samples with a slower active joint (default 0.1; 0 keeps all); "
+                   "a linear actuator's threshold is 0.1 x this, m/s")
     excitation_options(r, "simulate without LOG")
     simulated_options(r, "without LOG: ")
 

@@ -799,7 +799,7 @@ int shang2010_vertical_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, cas
 #define shang2010_vertical_na_preload_closed_loop_SZ_ARG 14
 #define shang2010_vertical_na_preload_closed_loop_SZ_RES 8
 #define shang2010_vertical_na_preload_closed_loop_SZ_IW 0
-#define shang2010_vertical_na_preload_closed_loop_SZ_W 345
+#define shang2010_vertical_na_preload_closed_loop_SZ_W 331
 int shang2010_vertical_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_vertical_na_proj_closed_loop_checkout(void);
 void shang2010_vertical_na_proj_closed_loop_release(int mem);
@@ -853,7 +853,7 @@ int shang2010_vertical_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg
 #define shang2010_vertical_na_proj_preload_closed_loop_SZ_ARG 14
 #define shang2010_vertical_na_proj_preload_closed_loop_SZ_RES 8
 #define shang2010_vertical_na_proj_preload_closed_loop_SZ_IW 0
-#define shang2010_vertical_na_proj_preload_closed_loop_SZ_W 345
+#define shang2010_vertical_na_proj_preload_closed_loop_SZ_W 331
 int shang2010_vertical_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_vertical_apd_closed_loop_checkout(void);
 void shang2010_vertical_apd_closed_loop_release(int mem);
@@ -907,7 +907,7 @@ int shang2010_vertical_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, ca
 #define shang2010_vertical_apd_preload_closed_loop_SZ_ARG 14
 #define shang2010_vertical_apd_preload_closed_loop_SZ_RES 8
 #define shang2010_vertical_apd_preload_closed_loop_SZ_IW 0
-#define shang2010_vertical_apd_preload_closed_loop_SZ_W 323
+#define shang2010_vertical_apd_preload_closed_loop_SZ_W 313
 int shang2010_vertical_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_vertical_ctc_closed_loop_checkout(void);
 void shang2010_vertical_ctc_closed_loop_release(int mem);
@@ -961,7 +961,7 @@ int shang2010_vertical_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, ca
 #define shang2010_vertical_ctc_preload_closed_loop_SZ_ARG 14
 #define shang2010_vertical_ctc_preload_closed_loop_SZ_RES 8
 #define shang2010_vertical_ctc_preload_closed_loop_SZ_IW 0
-#define shang2010_vertical_ctc_preload_closed_loop_SZ_W 324
+#define shang2010_vertical_ctc_preload_closed_loop_SZ_W 309
 int shang2010_vertical_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_vertical_lqr_closed_loop_checkout(void);
 void shang2010_vertical_lqr_closed_loop_release(int mem);
