@@ -301,9 +301,10 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
                  GAIN_RULE=_GAIN_RULE[law],
                  N_POSITIVE=_GAINS[law][0] * dim,
                  N_NONNEGATIVE=p if _GAINS[law][1] == "p" else 0,
-                 STEP_DOC=(f", the sample's gain K (LQR_K_SIZE = N_LEGS x 2 TASK_DIM, "
-                           f"row-major; {units.effort} per [xe - xd ({units.pos}), v - xd_dot "
-                           f"({units.vel})]) and feedforward tau_ff (N_LEGS, {units.effort})")
+                 STEP_DOC=("\n *   K         [LQR_K_SIZE = N_LEGS x 2 TASK_DIM] the sample's gain,"
+                           f" row-major,\n *             {units.effort} per [xe - xd "
+                           f"({units.pos}),\n *             v - xd_dot ({units.vel})]"
+                           f"\n *   tau_ff    [N_LEGS] the sample's feedforward, {units.effort}")
                  if lqr else "",
                  STEP_EXTRA_DECL=(f"\n                            const {name}_pm2dof_real "
                                   f"K[{uname}_LQR_K_SIZE],\n                            "

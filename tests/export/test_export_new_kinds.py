@@ -11,6 +11,7 @@ single precision is refused for prr_point with the reason.
 import re
 import shutil
 import subprocess
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -93,8 +94,10 @@ def test_the_exported_step_holds_the_vertical_robot_against_gravity():
 
 
 @pytest.mark.parametrize("name, dim, units", [
-    ("rrr3_platform", 3, ("m (x, y), rad (phi)", "(N_LEGS, rad)", "N m")),
-    ("prr_point", 2, ("(TASK_DIM, m)", "(N_LEGS, m)", "(N_LEGS, N)"))])
+    ("rrr3_platform", 3, ("poses           m (x, y), rad (phi)", "(N_LEGS, rad)",
+                          "efforts tau_a        N m (torques)", "N m s/rad (phi), K_d of eq. 29")),
+    ("prr_point", 2, ("(TASK_DIM, m)", "(N_LEGS, m)", "efforts tau_a        N (forces)",
+                      "[N_LEGS] out: the efforts, N,", "N, limit per actuator"))])
 def test_the_header_says_the_models_dimension_and_units(tmp_path, name, dim, units):
     out = export_project(name, tmp_path / name)
     header = (out / "include" / f"{name}_pm2dof.h").read_text()
@@ -105,6 +108,22 @@ def test_the_header_says_the_models_dimension_and_units(tmp_path, name, dim, uni
         assert text in header, (text, header[:3000])
     ref = (out / "tests" / f"{name}_reference.h").read_text()
     assert f"ref_xd[REF_N][{dim}]" in ref and f"ref_lqr_K[{2 * dim * 3}]" in ref
+
+
+def test_deploying_table_of_the_new_kinds_is_simulates():
+    """docs/deploying.md's table of the new kinds: its double column is pm2dof.simulate's NA
+    RMSE on the high-speed move (the exported C equals it, the ctests above)."""
+    page = (Path(__file__).resolve().parents[2] / "docs" / "deploying.md").read_text()
+    names = ("rrr3_platform", "rrr4_platform", "prr3_platform", "rpr3_platform", "prr_point",
+             "shang2010_vertical")
+    rows = [line for line in page.splitlines() if line.split("|")[1:2] and
+            line.split("|")[1].strip() in names]
+    assert len(rows) == 6, rows
+    for row in rows:
+        name = row.split("|")[1].strip()
+        m = pm2dof.load_model(name)
+        r = pm2dof.simulate(m, pm2dof.NAController(m), pm2dof.model_move(m, "high")).rmse
+        assert row.split("|")[3].strip() == f"{r:.4e} m", (name, f"{r:.4e}")
 
 
 def test_single_precision_is_refused_where_the_closure_check_needs_more(tmp_path):
