@@ -16,18 +16,14 @@ from pathlib import Path
 
 from ..control.controllers import SPLITS, APDController, CTCController, NAController
 from ..core import paths
-from ..core.errors import (
-    ArgumentError,
-    OutputError,
-    StaleGeneratedCodeError,
-    UnsupportedMechanismError,
-)
+from ..core.errors import ArgumentError, OutputError, StaleGeneratedCodeError
 from ..core.layout import Layout
 from ..core.model import load_model
 from ..core.status import Status
-from ..core.task import require_rr_point
+from ..core.task import mechanism
 from ..core.version import __version__
 from . import reference, single
+from .units import export_units
 
 __all__ = ["export_project", "LAWS", "PRECISIONS", "ExportError"]
 
@@ -46,27 +42,45 @@ _WHAT = {"na": "the NA law (eqs. 14-17, 29) and the update of theta_hat (eq. 28)
          "lqr": "u = S^T (tau_ff - K [xe - xd, v - xd_dot])"}
 _CLASS = {"na": "NAController", "apd": "APDController", "ctc": "CTCController",
           "lqr": "LQRController (its K and tau_ff are inputs of each step)"}
-#: leading gains that init requires > 0, then >= 0
-_GAINS = {"na": (4, "p"), "apd": (4, 0), "ctc": (4, 0), "lqr": (0, 0)}
+#: leading gain vectors (of m entries each) that init requires > 0, then NA's Gamma >= 0
+_GAINS = {"na": (2, "p"), "apd": (2, 0), "ctc": (2, 0), "lqr": (0, 0)}
 _GAIN_RULE = {"na": ", Kd and Q > 0, Gamma >= 0", "apd": ", Kp and Kv > 0",
               "ctc": ", Kp and Kv > 0", "lqr": ""}
-#: units and meaning of each parameter field; {law: {field: text}} overrides
-_FIELD_DOC = {
-    "Kd": "N s/m, K_d of eq. 29 (diagonal)", "Q": "1/s, Q of eqs. 15-17 (diagonal)",
-    "Gamma": "adaptation gain of eq. 28 (diagonal, theta order)",
-    "T": "s, sample period", "vel_alpha": "velocity low-pass gain a in (0, 1] (1: none)",
-    "sing_threshold": "type I singularity threshold (legs)",
-    "parallel_sing_threshold": "type II singularity threshold (actuation)",
-    "tau_max": "N m, torque limit per actuator", "preload_sign": "+-1, preload split only",
-    "preload": "N m, preload split only", "closure_tol": "m, largest closure residual",
-    "xe_prev": "m, last position estimate", "v": "m/s, velocity estimate",
-    "theta_hat": "theta estimate (theta order)", "xe": "m, position from fk",
-    "e": "m, e = xd - xe (eq. 14)", "edot": "m/s, xd_dot - v",
-    "sing": "type I, type II singularity measures",
-}
-_LAW_FIELD_DOC = {"apd": {"Kp": "N/m, eq. 40 (diagonal)", "Kv": "N s/m, eq. 40 (diagonal)"},
-                  "ctc": {"Kp": "1/s^2 (diagonal)", "Kv": "1/s (diagonal)"}}
-_DIAG = [("xe", 2), ("v", 2), ("e", 2), ("edot", 2), ("sing", 2)]
+
+
+def _field_docs(u):
+    """Units and meaning of each parameter and state field for the model's units ``u``
+    (:class:`.units.ExportUnits`): ({field: text}, {law: {field: text}} overrides)."""
+    fields = {
+        "Kd": f"{u.kd}, K_d of eq. 29 (diagonal)", "Q": "1/s, Q of eqs. 15-17 (diagonal)",
+        "Gamma": "adaptation gain of eq. 28 (diagonal, theta order)",
+        "T": "s, sample period", "vel_alpha": "velocity low-pass gain a in (0, 1] (1: none)",
+        "sing_threshold": "type I singularity threshold (legs)",
+        "parallel_sing_threshold": "type II singularity threshold (actuation)",
+        "tau_max": f"{u.effort}, limit per actuator", "preload_sign": "+-1, preload split only",
+        "preload": f"{u.effort}, preload split only", "closure_tol": "m, largest closure residual",
+        "xe_prev": f"{u.pos}, last pose estimate", "v": f"{u.vel}, velocity estimate",
+        "theta_hat": "theta estimate (theta order)", "xe": f"{u.pos}, pose from fk",
+        "e": f"{u.pos}, e = xd - xe (eq. 14)", "edot": f"{u.vel}, xd_dot - v",
+        "sing": "type I, type II singularity measures",
+    }
+    laws = {"apd": {"Kp": f"{u.kp}, eq. 40 (diagonal)", "Kv": f"{u.kd}, eq. 40 (diagonal)"},
+            "ctc": {"Kp": "1/s^2 (diagonal)", "Kv": "1/s (diagonal)"}}
+    return fields, laws
+
+
+def _diag_fields(dim):
+    """The diag layout of a step's signal processing, task dimension ``dim``."""
+    return [("xe", dim), ("v", dim), ("e", dim), ("edot", dim), ("sing", 2)]
+
+
+def _gravity_note(model):
+    """The header's sentence on gravity: the steps hold the gravity term (issue 26)."""
+    g = getattr(model.spec, "gravity", None)
+    if not getattr(model.spec, "has_gravity", False) or g is None:
+        return "a horizontal plane (no gravity)"
+    return (f"gravity {', '.join(f'{v:g}' for v in g)} m/s^2 in the base frame, compensated "
+            f"by the steps' gravity term (theta's first moments)")
 
 
 class ExportError(ArgumentError):
@@ -149,11 +163,12 @@ def _work_sizes(c_text, name, functions):
     return out
 
 
-def _layout_defines(prefix, tag, layout, law=None, defaults=None):
+def _layout_defines(prefix, tag, layout, docs, law=None, defaults=None):
+    fields, law_fields = docs
     lines = []
     for field, size in layout.fields:
         sl = layout.slices[field]
-        doc = (_LAW_FIELD_DOC.get(law, {}).get(field) or _FIELD_DOC.get(field) or field)
+        doc = (law_fields.get(law, {}).get(field) or fields.get(field) or field)
         val = ""
         if defaults is not None:
             vals = ", ".join(f"{v:.6g}" for v in defaults[sl])
@@ -214,8 +229,6 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
         An unknown precision or controller.
     OutputError
         ``out`` is a file, or a non-empty folder without ``force``.
-    UnsupportedMechanismError
-        A platform, prismatic legs or gravity (issue 26's kinds): not exported yet.
     """
     _check_choice("precision", precision, PRECISIONS)
     laws = parse_controllers(",".join(controllers) if not isinstance(controllers, str)
@@ -223,16 +236,12 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     if out is None:
         raise ArgumentError("export_project: give the output folder (out=...)")
     m = load_model(model, generated)
-    # the API header, the reference data and the example are written for (x, y), RRR legs and
-    # a horizontal plane: issue 26's other kinds are not exported yet
-    require_rr_point(m, "pm2dof export (its C API and reference data)")
-    if getattr(m.spec, "has_gravity", False):
-        raise UnsupportedMechanismError(
-            f"pm2dof export covers a horizontal plane only; model {m.name!r} has gravity "
-            f"{list(m.spec.gravity)}")
     move_name = reference.reference_move(m, move)[0]     # an unknown move: refused here
     c_text, h_text = _generated_sources(m)
-    name, n, p = m.name, m.n_legs, len(m.param_names)
+    name, n, p, dim = m.name, m.n_legs, len(m.param_names), m.dof
+    units = export_units(m)
+    docs = _field_docs(units)
+    diag = _diag_fields(dim)
     split = m.spec.control["split"]
     if precision == "single":
         problems = single.single_problems(c_text, m, split)
@@ -252,8 +261,8 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
               "CMAKE_VERSION": ".".join(re.findall(r"\d+", __version__)[:3]) or "0",
               "PRECISION": precision, "REAL": real, "SINGLE": int(precision == "single"),
               "MODEL_FILE": Path(m.spec.path).name, "FORMULATION": m.spec.formulation_sha256[:12],
-              "N": n, "NQ": 2 * n, "TASK_DIM": 2, "P": p,
-              "STATE_SIZE": lays["ctrl_state"].size, "DIAG_SIZE": sum(k for _, k in _DIAG),
+              "N": n, "NQ": 2 * n, "TASK_DIM": dim, "P": p,
+              "STATE_SIZE": lays["ctrl_state"].size, "DIAG_SIZE": sum(k for _, k in diag),
               "ARG_SIZE": max(s[0] for s in sizes.values()),
               "RES_SIZE": max(s[1] for s in sizes.values()),
               "IWORK_SIZE": max(s[2] for s in sizes.values()),
@@ -262,31 +271,46 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
               "CLOSURE_TOL": repr(m.closure_tolerance),
               "SING_THRESHOLD": repr(m.singularity_threshold) + fsuffix,
               "PARALLEL_SING_THRESHOLD": repr(m.parallel_singularity_threshold) + fsuffix,
-              "MOVE": move_name, "RK4": m.spec.rk4_substeps}
+              "MOVE": move_name, "RK4": m.spec.rk4_substeps,
+              "TASK_NAMES": units.task, "POS_UNIT": units.pos, "VEL_UNIT": units.vel,
+              "ACC_UNIT": units.acc, "FORCE_UNIT": units.force, "QA_UNIT": units.qa,
+              "EFFORT_UNIT": units.effort, "EFFORTS": units.efforts,
+              "MECHANISM": mechanism(m.spec), "GRAVITY_NOTE": _gravity_note(m),
+              # an RPR leg has a length for every pose: ik refuses a far pose only when some
+              # leg is RRR or PRR (pm2dof.Model.ik does not check an RPR leg's stroke)
+              "IK_BOUNDED": int(any(leg.kind != "RPR" for leg in m.spec.legs)),
+              "IK_NOTE": ("" if all(leg.kind != "RPR" for leg in m.spec.legs) else
+                          "\n * An RPR leg has a length for every pose; ik does not check its "
+                          "stroke (as pm2dof.Model.ik).")}
 
     theta_doc = "\n".join(f" *   [{i:2d}] {nm:8s} nominal {v:.6g}" for i, (nm, v) in
                           enumerate(zip(m.param_names, m.theta_nominal)))
     layout_defines = ("/* ctrl_state: what a controller carries between samples */\n"
-                      + _layout_defines(uname, "STATE", lays["ctrl_state"])
+                      + _layout_defines(uname, "STATE", lays["ctrl_state"], docs)
                       + "/* diag: the last step's signal processing */\n"
-                      + _layout_defines(uname, "DIAG", Layout("diag", _DIAG)))
+                      + _layout_defines(uname, "DIAG", Layout("diag", diag), docs))
     law_decls, law_defs, law_defaults = [], [], []
     for law in laws:
         lay = lays[f"{law}_params"]
         layout_defines += (f"/* {law}_params: the {law.upper()} controller's parameters */\n"
-                           + _layout_defines(uname, law.upper(), lay, law, defaults[law]))
+                           + _layout_defines(uname, law.upper(), lay, docs, law, defaults[law]))
         lqr = law == "lqr"
         v = dict(common, LAW=law, ULAW=law.upper(), GEN=f"{name}_{gen[law]}",
                  LAW_TITLE=_TITLES[law], LAW_WHAT=_WHAT[law], SPLIT=split, CLASS=_CLASS[law],
                  DEFAULTS_FROM=f"[gains.{law}], [limits], [sensing], [control]",
                  GAIN_RULE=_GAIN_RULE[law],
-                 N_POSITIVE=_GAINS[law][0], N_NONNEGATIVE=p if _GAINS[law][1] == "p" else 0,
-                 STEP_DOC=(", the sample's gain K (N_LEGS x 4 row-major, N m per [m, m, m/s, "
-                           "m/s]) and feedforward tau_ff (N_LEGS, N m)") if lqr else "",
+                 N_POSITIVE=_GAINS[law][0] * dim,
+                 N_NONNEGATIVE=p if _GAINS[law][1] == "p" else 0,
+                 STEP_DOC=("\n *   K         [LQR_K_SIZE = N_LEGS x 2 TASK_DIM] the sample's gain,"
+                           f" row-major,\n *             {units.effort} per [xe - xd "
+                           f"({units.pos}),\n *             v - xd_dot ({units.vel})]"
+                           f"\n *   tau_ff    [N_LEGS] the sample's feedforward, {units.effort}")
+                 if lqr else "",
                  STEP_EXTRA_DECL=(f"\n                            const {name}_pm2dof_real "
-                                  f"K[4 * {uname}_N_LEGS],\n                            const "
-                                  f"{name}_pm2dof_real tau_ff[{uname}_N_LEGS],") if lqr else "",
-                 STEP_EXTRA_CALL="K, 4 * N, tau_ff" if lqr else "NULL, 0, NULL")
+                                  f"K[{uname}_LQR_K_SIZE],\n                            "
+                                  f"const {name}_pm2dof_real tau_ff[{uname}_N_LEGS],")
+                 if lqr else "",
+                 STEP_EXTRA_CALL=f"K, {uname}_LQR_K_SIZE, tau_ff" if lqr else "NULL, 0, NULL")
         law_decls.append(_render(_template("include/law.h.in"), v))
         law_defs.append(_render(_template("src/law.c.in"), v))
         law_defaults.append(f"static const real {law}_defaults[{uname}_{law.upper()}_PARAMS_SIZE]"

@@ -15,8 +15,11 @@ from ..control.controllers import APDController, CTCController, NAController
 from ..control.plant import plant_vector
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
+from ..core.errors import Pm2dofError
+from ..core.status import Status
 
-__all__ = ["REFERENCE_LAWS", "reference_move", "reference_data", "reference_header"]
+__all__ = ["REFERENCE_LAWS", "reference_move", "reference_data", "reference_header",
+           "encoder_counts", "tip_moves"]
 
 #: the controllers with a closed-loop reference, in the order of the exported example
 REFERENCE_LAWS = {"na": NAController, "apd": APDController, "ctc": CTCController}
@@ -27,20 +30,33 @@ SINGLE_BOUNDS = """/* single precision against pm2dof's double results:
  * - replay (the step fed pm2dof's encoder readings): float keeps xe to 2^-24 of its size
  *   (3e-8 m at 0.5 m), the backward difference turns that into 1.5e-5 m/s over T = 2 ms, and
  *   K_d (195 N s/m) into 3e-3 N per ulp; measured on shang2010's high-speed move: at most
- *   0.010 N m (torques up to 7.4 N m); bound 0.05 N m;
+ *   0.010 N m (torques up to 7.4 N m); bound 0.05 N m, and 0.2 N for a linear actuator's
+ *   force (the same task force without the 0.244 m lever of shang2010's proximal link);
+ *   where an actuator is at rest its Coulomb sign may flip: ref_replay_flip below;
  * - closed loop: a rounding difference moves the robot by far less than an encoder count,
  *   but a reading that then falls into the next count changes the velocity estimate by one
  *   count per T (1.2e-5 m / 2 ms = 6e-3 m/s, 1.2 N of K_d s): the run is another run of the
  *   same loop, the torques are not compared sample by sample, and the RMSE may differ by a
  *   fraction of what one count moves the tip; measured on shang2010: 3.3e-7 m (high-speed
  *   move) and 4.6e-7 m (low-speed) for NA, below 8e-8 m for APD and CTC; bound a quarter
- *   count at the longest active link, {atol:.3g} m;
+ *   of the largest joint move of one encoder count (la times a count for a revolute
+ *   actuator, the linear resolution for a linear one), {atol:.3g} m;
  * - fk(ik(xe)) = xe to 1e-6 m (30 float ulps at 0.3 m). */
 #define REF_RMSE_RTOL 0.0
 #define REF_RMSE_ATOL {atol!r}
-#define REF_REPLAY_ATOL 0.05
+#define REF_REPLAY_ATOL {replay_atol!r}
 #define REF_FK_ATOL 1e-6
 """
+
+
+def tip_moves(model, plant):
+    """How far one encoder count of each actuator moves its leg's joint, m (n,): la times the
+    plant's encoder step for a revolute actuator, its linear step for a linear one."""
+    lay = model.layout("plant")
+    rad = plant[lay.slices["encoder_step"]][0]
+    lin = plant[lay.slices["linear_encoder_step"]][0] if "linear_encoder_step" in lay.slices else 0
+    return np.array([leg.la * rad if leg.actuator == "revolute" else lin
+                     for leg in model.spec.legs])
 
 
 def reference_move(model, name=None):
@@ -53,7 +69,7 @@ def reference_move(model, name=None):
 
 
 def _measure(model, plant, xe):
-    """The encoder readings (N, n) of the true poses ``xe`` (N, 2)."""
+    """The encoder readings (N, n) of the true poses ``xe`` (N, m)."""
     f = model.function("measure")
     qa = np.empty((len(xe), model.n_legs))
     for k, x in enumerate(xe):
@@ -61,24 +77,41 @@ def _measure(model, plant, xe):
     return qa
 
 
+def encoder_counts(model):
+    """One encoder count of each actuator (n,): 2 pi / ``encoder_counts_per_rev`` rad for a
+    revolute actuator, ``[sensing] linear_encoder_resolution`` m for a linear one (a
+    resolution of 0, exact encoders: 2 pi / 2^17 rad, 1e-6 m)."""
+    sensing = model.spec.sensing
+    counts = sensing["encoder_counts_per_rev"]
+    rad = 2 * np.pi / (counts if counts > 0 else 131072)
+    m = float(sensing.get("linear_encoder_resolution") or 0.0) or 1e-6
+    return np.array([rad if leg.actuator == "revolute" else m for leg in model.spec.legs])
+
+
 def _lqr_step(model, move, plant, params):
     """One LQR step from rest at the move's start, with fixed gains (no Riccati solver)."""
-    n = model.n_legs
+    n, dim = model.n_legs, model.dof
     qa0 = _measure(model, plant, move.xd[:1])[0]
     lay = model.layout("ctrl_state")
     state = np.zeros(lay.size)
     s = lay.unpack(state)
     s["xe_prev"][:] = model.fk(qa0)
     s["theta_hat"][:] = model.theta_nominal
-    # gains of plausible size (N m per m, per m/s) and a feedforward, all entries distinct
-    K = np.ascontiguousarray(np.arange(1, 4 * n + 1, dtype=float) * 10.0)
+    # gains of plausible size (N m or N per m, per m/s) and a feedforward, all entries
+    # distinct: K is n x 2m row-major (pm2dof.linear.lqr); scaled down by 10 while the step
+    # saturates (a clipped effort would not depend on K)
     tau_ff = np.linspace(0.1, 0.3, n)
-    qa1 = qa0 + 2 * np.pi / 131072 * np.arange(1, n + 1)       # the next reading: a few counts
-    tau, st1, status, diag = np.empty(n), np.empty(lay.size), np.empty(1), np.empty(10)
-    model.function("lqr_step")(state, qa1, np.ascontiguousarray(move.xd[1]),
-                               np.ascontiguousarray(move.xd_dot[1]),
-                               np.ascontiguousarray(move.xd_ddot[1]), params, K, tau_ff,
-                               tau, st1, status, diag)
+    qa1 = qa0 + encoder_counts(model) * np.arange(1, n + 1)     # the next reading: a few counts
+    tau, st1, status = np.empty(n), np.empty(lay.size), np.empty(1)
+    diag = np.empty(4 * dim + 2)
+    for scale in (10.0, 1.0, 0.1, 0.01):
+        K = np.ascontiguousarray(np.arange(1, 2 * dim * n + 1, dtype=float) * scale)
+        model.function("lqr_step")(state, qa1, np.ascontiguousarray(move.xd[1]),
+                                   np.ascontiguousarray(move.xd_dot[1]),
+                                   np.ascontiguousarray(move.xd_ddot[1]), params, K, tau_ff,
+                                   tau, st1, status, diag)
+        if status[0] != Status.SATURATED:
+            break
     return {"qa0": qa0, "qa1": qa1, "K": K, "tau_ff": tau_ff, "tau": tau,
             "status": float(status[0])}
 
@@ -90,17 +123,54 @@ def reference_data(model, laws, lqr_params=None, move=None):
     name, move = reference_move(model, move)
     plant = plant_vector(model)
     out = {"move": name, "trajectory": move, "plant": plant, "laws": [], "rmse": [],
-           "tau": [], "qa": []}
+           "tau": [], "qa": [], "theta_hat": [], "vel_alpha": []}
     for law in laws:
         if law not in REFERENCE_LAWS:
             continue
-        r = simulate(model, REFERENCE_LAWS[law](model, on_singular="zero"), move)
+        ctl = REFERENCE_LAWS[law](model, on_singular="zero")
+        r = simulate(model, ctl, move)
         out["laws"].append(law)
         out["rmse"].append(r.rmse)
         out["tau"].append(r.tau_a)
         out["qa"].append(_measure(model, plant, r.xe))
+        out["theta_hat"].append(r.theta_hat)
+        lay = model.layout(f"{law}_params")
+        out["vel_alpha"].append(float(ctl.params[lay.slices["vel_alpha"]][0]))
     if "lqr" in laws:
         out["lqr"] = _lqr_step(model, move, plant, lqr_params)
+    return out
+
+
+def coulomb_flip_bounds(model, qa, theta_hat, vel_alpha):
+    """Single precision's replay: the extra effort difference allowed at each sample (N,).
+
+    The regressor's Coulomb columns take the sign of each actuator's velocity estimate, the
+    joint part of W(xe) v. Where an actuator's reading has not moved, that estimate is only
+    what the other joints' counts leave through W, and float's rounding of fk (a few 1e-8 m)
+    can flip its sign: the effort then differs by the flipped Coulomb term, 2 (fc_i + fs_i)
+    of theta_hat, which the minimum-norm split (a projection, eq. 21) does not enlarge. A
+    sample gets that allowance, 2 ||fc + fs||_2 at its theta_hat, when some actuator's
+    velocity estimate is below a quarter of one encoder count per sample period (in double
+    the same arithmetic runs and no allowance is made)."""
+    T = model.spec.sensing["sample_period"]
+    slow = 0.25 * encoder_counts(model) / T
+    n = model.n_legs
+    # (n, p): row i sums actuator i's fc_i and fs_i out of theta
+    coulomb = np.array([[float(nm in (f"fc{i + 1}", f"fs{i + 1}")) for nm in model.param_names]
+                        for i in range(n)])
+    out = np.zeros(len(qa))
+    xe_prev, v = model.fk(qa[0]), np.zeros(model.dof)
+    for k in range(len(qa)):            # k = 0: at rest after reset, v = 0 in double
+        try:
+            xe = model.fk(qa[k])
+            qd = (model.W(model.ik(xe)) @ (v + vel_alpha * ((xe - xe_prev) / T - v)))[:n]
+        except Pm2dofError:     # a pose the step refuses: no allowance, the check stands
+            continue
+        v = v + vel_alpha * ((xe - xe_prev) / T - v)
+        xe_prev = xe
+        if np.any(np.abs(qd) < slow):       # theta_hat before and after the sample
+            th = np.maximum(np.abs(theta_hat[max(k - 1, 0)]), np.abs(theta_hat[k]))
+            out[k] = 2 * float(np.linalg.norm(coulomb @ th))
     return out
 
 
@@ -134,17 +204,18 @@ def reference_header(model, ref, precision):
         f"#define REF_N_LAWS {len(ref['laws'])}\n",
     ]
     if single:
-        count = ref["plant"][model.layout("plant").slices["encoder_step"]][0]
-        atol = float(0.25 * count * max(leg.la for leg in model.spec.legs))
-        lines.append(SINGLE_BOUNDS.format(atol=atol))
+        linear = any(leg.actuator != "revolute" for leg in model.spec.legs)
+        lines.append(SINGLE_BOUNDS.format(atol=float(0.25 * max(tip_moves(model, ref["plant"]))),
+                                          replay_atol=0.2 if linear else 0.05))
     else:
         lines.append("/* double precision: the same generated arithmetic as pm2dof */\n"
                      "#define REF_RMSE_RTOL 1e-12\n#define REF_RMSE_ATOL 0.0\n"
                      "#define REF_REPLAY_ATOL 1e-12\n"
                      "#define REF_FK_ATOL 1e-12\n")
-    lines += [_c_array("ref_xd", move.xd, ["REF_N", 2]),
-              _c_array("ref_xd_dot", move.xd_dot, ["REF_N", 2]),
-              _c_array("ref_xd_ddot", move.xd_ddot, ["REF_N", 2]),
+    dim = model.dof
+    lines += [_c_array("ref_xd", move.xd, ["REF_N", dim]),
+              _c_array("ref_xd_dot", move.xd_dot, ["REF_N", dim]),
+              _c_array("ref_xd_ddot", move.xd_ddot, ["REF_N", dim]),
               _c_array("ref_plant", ref["plant"])]
     k = max(len(ref["laws"]), 1)
     pad = np.zeros((k - len(ref["laws"]), N * n))
@@ -156,6 +227,14 @@ def reference_header(model, ref, precision):
               _c_array("ref_qa", np.vstack([np.reshape(t, (1, -1)) for t in ref["qa"]]
                                            + [pad]) if ref["laws"] else pad,
                        [k, f"REF_N * {n}"])]
+    if single:
+        bounds = [coulomb_flip_bounds(model, qa, th, a) for qa, th, a in
+                  zip(ref["qa"], ref["theta_hat"], ref["vel_alpha"])]
+        lines += ["/* single: per law and sample, the effort difference a flipped Coulomb sign "
+                  "may add\n * (pm2dof.export.reference.coulomb_flip_bounds) */\n",
+                  _c_array("ref_replay_flip", np.vstack(bounds + [np.zeros((k - len(bounds),
+                                                                            N))]),
+                           [k, "REF_N"])]
     if "lqr" in ref:
         q = ref["lqr"]
         lines += ["/* LQR: one step from rest, fixed gains, by pm2dof's generated lqr_step */\n"]

@@ -19,11 +19,12 @@ Where float is not enough, :func:`single_problems` says so and the export refuse
   eq. 21, is a closed form and has no tolerance);
 * a closure tolerance or a singularity threshold too small for float: the residual of the
   loop closure computed in float is a few FLT_EPSILON times the leg's reach, so a tolerance
-  below :data:`CLOSURE_ULPS` of those would reject good encoder readings.
+  below :data:`CLOSURE_ULPS` of those would reject good encoder readings (the reach of
+  :func:`leg_reach`).
 """
 import re
 
-__all__ = ["to_single", "single_problems", "FLT_EPSILON", "CLOSURE_ULPS"]
+__all__ = ["to_single", "single_problems", "leg_reach", "FLT_EPSILON", "CLOSURE_ULPS"]
 
 FLT_EPSILON = 2.0 ** -23        # float's resolution at 1
 FLT_MIN, FLT_MAX = 2.0 ** -126, (2 - 2.0 ** -23) * 2.0 ** 127
@@ -58,6 +59,17 @@ def to_single(c_text):
     return out
 
 
+def leg_reach(leg):
+    """How far a leg's tip can be from its base point, m: la + lb (RRR), the rail's length +
+    lb (PRR), the longest stroke (RPR). The loop closure's residual is computed from
+    coordinates of this size."""
+    if leg.kind == "PRR":
+        return leg.rail_length + leg.lb
+    if leg.kind == "RPR":
+        return max(leg.stroke)
+    return leg.la + leg.lb
+
+
 def single_problems(c_text, model, split):
     """What single precision would break for this model's exported code: a list of sentences
     (empty when float will do)."""
@@ -72,7 +84,7 @@ def single_problems(c_text, model, split):
                         f"among candidate optima with tolerances of 1e-10 relative, below "
                         f"float's resolution (1.2e-7); export the min_norm split (eq. 21) in "
                         f"single precision, or this split in double")
-    reach = max(leg.la + leg.lb for leg in model.spec.legs)
+    reach = max(leg_reach(leg) for leg in model.spec.legs)
     need = CLOSURE_ULPS * FLT_EPSILON * reach
     if model.closure_tolerance < need:
         problems.append(f"[sensing] closure_tolerance = {model.closure_tolerance:.3g} m is "
