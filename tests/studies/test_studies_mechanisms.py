@@ -5,8 +5,14 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.studies import (SHIPPED_STUDIES, StudyFileError, check_study, read_results, read_study,
-                            run_chunk)
+from pm2dof.studies import (
+    SHIPPED_STUDIES,
+    StudyFileError,
+    check_study,
+    read_results,
+    read_study,
+    run_chunk,
+)
 from pm2dof.studies.report import columns_of, summarise
 from pm2dof.studies.store import finish_out, prepare_out, write_chunk
 
