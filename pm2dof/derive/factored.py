@@ -5,17 +5,20 @@ The monolithic SymPy matrices (Dynamics.Y, .Me, .Ce) are the reference: the mode
 export them as they are, and the tests check them against mpmath and an independent NumPy
 formulation. For the per-sample hot paths the same quantities are composed in CasADi from
 pieces SymPy derived for one leg or in joint space, which is much cheaper:
-  W        rows (i, n+i) = J_i^-1, J_i the tip Jacobian of leg i            (eq. 7)
-  Wdot a   = -J_i^-1 Jdot_i(q, qd) (W a)_leg i                            (eq. 9)
-  Y        = W^T Y_joint(q, qd, W xrd, W xrdd + Wdot xrd) + S^T Y_friction  (eq. 13)
+  W        rows (i, n+i) = J_i^-1 G_i, J_i the tip Jacobian of leg i, G_i = d P_i / d xe
+           the rate of its attachment point (the identity for a point)           (eq. 7)
+  Wdot a   = J_i^-1 (Gdot_i(xed) a - Jdot_i(q, qd) (W a)_leg i)                   (eq. 9)
+  Y        = W^T Y_joint(q, qd, W xrd, W xrdd + Wdot xrd) + S^T Y_friction
+             + Y_platform(xe, xed, xrd, xrdd)                                    (eq. 13)
              (with gravity Y_joint includes d g_q / d theta, so W^T Y_joint carries Ge's part)
-  Me       = W^T M W,   Ce xed = W^T (M Wdot xed + C(q, qd) qd)            (eq. 12)
-with Y_joint = d(M qdd^r + C qd^r)/d theta and Y_friction = d f_a / d theta derived by SymPy.
+  Me       = W^T M W + Mp,   Ce xed = W^T (M Wdot xed + C(q, qd) qd) + Cp xed     (eq. 12)
+with Y_joint = d(M qdd^r + C qd^r)/d theta, Y_friction = d f_a / d theta and a platform's own
+Mp, Cp, Y_platform (zero for a point) derived by SymPy.
 
-The factoring holds for a point end effector (task dimension m = 2), where each leg's tip is
-the task point: :func:`factored`. Otherwise (a platform, m = 3, whose own inertia and pose
-enter Me beyond W^T M W) the same functions convert the monolithic W, Wdot, Me, Ce and Y,
-which are correct for any mechanism; a Dynamics may choose either with ``factored``.
+The factoring holds wherever the kinematics gives each leg's tip Jacobian ``kin.J`` (a point,
+m = 2, or a platform, whose dynamics also gives Y_platform): :func:`factored`. Otherwise (e.g.
+the tests' hand-built m = 3 mechanism) the same functions convert the monolithic W, Wdot, Me,
+Ce and Y, which are correct for any mechanism; a Dynamics may choose either with ``factored``.
 """
 import casadi as ca
 
@@ -44,13 +47,22 @@ def _inv2(J):
     return ca.vertcat(ca.horzcat(J[1, 1], -J[0, 1]), ca.horzcat(-J[1, 0], J[0, 0])) / det
 
 
+def _platform(d):
+    """True for a platform end effector (kinematics ``platform``: pose x, y, phi)."""
+    return bool(getattr(d.kin, "platform", False))
+
+
 def factored(d):
-    """True where the per-leg factored forms hold: a point end effector (m = 2) whose legs'
-    tip Jacobians ``kin.J`` the kinematics provides; a Dynamics may decide with ``factored``."""
+    """True where the per-leg factored forms hold: the kinematics provides the legs' tip
+    Jacobians ``kin.J`` and the task dimension is 2 (a point end effector), or it is a platform
+    whose dynamics gives its own part of Y (``Y_platform``); a Dynamics may decide with
+    ``factored``."""
     choice = getattr(d.dyn, "factored", None)
     if choice is not None:
         return bool(choice)
-    return d.m == 2 and hasattr(d.kin, "J")
+    if not hasattr(d.kin, "J"):
+        return False
+    return d.m == 2 or (_platform(d) and getattr(d.dyn, "Y_platform", None) is not None)
 
 
 def _rows(conv, expr, nrow, ncol):
@@ -59,29 +71,35 @@ def _rows(conv, expr, nrow, ncol):
 
 
 def joint_W(d, conv):
-    """W (2n, m) and the legs' J_i^-1 from each leg's tip Jacobian (eq. 7); (W, None) where
-    the forms are not factored (W converted as derived)."""
+    """W (2n, m) and each leg's (J_i^-1, rows (i, n+i) of W = J_i^-1 G_i) from the legs' tip
+    Jacobians (eq. 7); (W, None) where the forms are not factored (W converted as derived)."""
     n = d.spec.n_legs
     if not factored(d):
         return _rows(conv, d.kin.W, 2 * n, d.m), None
-    Jinv = [_inv2(ca.reshape(conv(J), 2, 2).T) for J in d.kin.J]
-    rows = [Jinv[i][0, :] for i in range(n)] + [Jinv[i][1, :] for i in range(n)]
-    return ca.vertcat(*rows), Jinv
-
-
-def Wdot_times(d, conv, Jinv, qd, a, v):
-    """Wdot a (2n,) along the joint velocity qd = W v, for a task vector a (eq. 9), and the
-    converter with qd (and the task velocity v) bound."""
-    n = d.spec.n_legs
-    conv_qd = conv.extended([(d.sym.qd, qd)])
-    if Jinv is None:   # Wdot as derived, along qd = W xed with xed = v
-        conv_qd = conv_qd.extended([(d.sym.xed, v)])
-        return _rows(conv_qd, d.kin.Wdot, 2 * n, d.m) @ a, conv_qd
-    W_a = ca.vertcat(*[Jinv[i] @ a for i in range(n)])  # per leg: (qa_i, qb_i) rates
-    out_a, out_b = [], []
+    legs = []
     for i in range(n):
+        Jinv = _inv2(ca.reshape(conv(d.kin.J[i]), 2, 2).T)
+        # a platform: qd_leg = J_i^-1 G_i xed; a point's G_i is the identity
+        legs.append((Jinv, Jinv @ _rows(conv, d.kin.G[i], 2, d.m) if _platform(d) else Jinv))
+    rows = [legs[i][1][0, :] for i in range(n)] + [legs[i][1][1, :] for i in range(n)]
+    return ca.vertcat(*rows), legs
+
+
+def Wdot_times(d, conv, legs, qd, a, v):
+    """Wdot a (2n,) along the joint velocity qd = W v, for a task vector a (eq. 9), and the
+    converter with qd and the task velocity v bound."""
+    n = d.spec.n_legs
+    conv_qd = conv.extended([(d.sym.qd, qd), (d.sym.xed, v)])
+    if legs is None:   # Wdot as derived, along qd = W xed with xed = v
+        return _rows(conv_qd, d.kin.Wdot, 2 * n, d.m) @ a, conv_qd
+    out_a, out_b = [], []
+    for i, (Jinv, W_leg) in enumerate(legs):
         Jdot = ca.reshape(conv_qd(d.kin.Jdot[i]), 2, 2).T
-        r = -Jinv[i] @ (Jdot @ W_a[2 * i:2 * i + 2])
+        rate = Jdot @ (W_leg @ a)                       # d/dt (J_i^-1) = -J_i^-1 Jdot_i J_i^-1
+        if _platform(d):                                # and d/dt G_i along xed = v
+            r = Jinv @ (_rows(conv_qd, d.kin.Gdot[i], 2, d.m) @ a - rate)
+        else:
+            r = -Jinv @ rate
         out_a.append(r[0])
         out_b.append(r[1])
     return ca.vertcat(*out_a, *out_b), conv_qd
@@ -111,19 +129,21 @@ def regressor(d, conv, v, xrd, xrdd):
     """Y (m, p), S (n, m) and W at the pose of ``conv`` (eq. 13), measured task velocity v."""
     n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
     sym, dyn = d.sym, d.dyn
-    W, Jinv = joint_W(d, conv)
+    W, legs = joint_W(d, conv)
     S = W[:n, :]
-    if Jinv is None:
+    if legs is None:
         c = conv.extended([(sym.xed, v), (sym.xrd, xrd), (sym.xrdd, xrdd)])
         return _rows(c, dyn.Y, m, p), S, W
     qd = W @ v
-    Wdot_xrd, conv_qd = Wdot_times(d, conv, Jinv, qd, xrd, v)
+    Wdot_xrd, conv_qd = Wdot_times(d, conv, legs, qd, xrd, v)
     c = conv_qd.extended([(sym.qdr, W @ xrd), (sym.qddr, W @ xrdd + Wdot_xrd)])
     Y_joint = ca.reshape(c(dyn.Y_joint), p, 2 * n).T
     Y_fric = ca.reshape(c(dyn.Y_friction), p, n).T
     # with gravity, Y_joint holds d g_q / d theta, and W^T g_q is Ge (derive/dynamics.py): the
     # gravity term's regressor is in W^T Y_joint already (adding d Ge / d theta here doubled it)
     Y = W.T @ Y_joint + S.T @ Y_fric
+    if _platform(d):   # the platform's own Mp xrdd + Cp xrd (+ g_p), in the task coordinates
+        Y = Y + _rows(c.extended([(sym.xrd, xrd), (sym.xrdd, xrdd)]), dyn.Y_platform, m, p)
     return Y, S, W
 
 
@@ -133,15 +153,18 @@ def task_inertia_coriolis(d, conv, v, theta_pairs):
     ``theta_pairs``: (sympy symbols, SX) pairs binding the inertial parameters.
     """
     n, m = d.spec.n_legs, d.m
-    W, Jinv = joint_W(d, conv)
-    if Jinv is None:
+    W, legs = joint_W(d, conv)
+    if legs is None:
         c = conv.extended([(d.sym.xed, v)] + list(theta_pairs))
         return _rows(c, d.dyn.Me, m, m), _rows(c, d.dyn.Ce, m, m) @ v, W[:n, :], W
     qd = W @ v
-    Wdot_v, conv_qd = Wdot_times(d, conv, Jinv, qd, v, v)
+    Wdot_v, conv_qd = Wdot_times(d, conv, legs, qd, v, v)
     c = conv_qd.extended(theta_pairs)
     M = ca.reshape(c(d.dyn.M), 2 * n, 2 * n).T
     C = ca.reshape(c(d.dyn.C), 2 * n, 2 * n).T
     Me = W.T @ M @ W
     Ce_v = W.T @ (M @ Wdot_v + C @ qd)
+    if _platform(d):   # the platform's own inertia and Coriolis terms (eq. 12)
+        Me = Me + _rows(c, d.dyn.Mp, m, m)
+        Ce_v = Ce_v + _rows(c, d.dyn.Cp, m, m) @ v
     return Me, Ce_v, W[:n, :], W

@@ -762,7 +762,7 @@ int rpr3_platform_na_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 #define rpr3_platform_na_closed_loop_SZ_ARG 9
 #define rpr3_platform_na_closed_loop_SZ_RES 6
 #define rpr3_platform_na_closed_loop_SZ_IW 0
-#define rpr3_platform_na_closed_loop_SZ_W 306
+#define rpr3_platform_na_closed_loop_SZ_W 203
 int rpr3_platform_na_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_na_minmax_closed_loop_checkout(void);
 void rpr3_platform_na_minmax_closed_loop_release(int mem);
@@ -780,7 +780,7 @@ int rpr3_platform_na_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_in
 #define rpr3_platform_na_minmax_closed_loop_SZ_ARG 9
 #define rpr3_platform_na_minmax_closed_loop_SZ_RES 6
 #define rpr3_platform_na_minmax_closed_loop_SZ_IW 0
-#define rpr3_platform_na_minmax_closed_loop_SZ_W 305
+#define rpr3_platform_na_minmax_closed_loop_SZ_W 203
 int rpr3_platform_na_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_na_preload_closed_loop_checkout(void);
 void rpr3_platform_na_preload_closed_loop_release(int mem);
@@ -798,7 +798,7 @@ int rpr3_platform_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_i
 #define rpr3_platform_na_preload_closed_loop_SZ_ARG 14
 #define rpr3_platform_na_preload_closed_loop_SZ_RES 8
 #define rpr3_platform_na_preload_closed_loop_SZ_IW 0
-#define rpr3_platform_na_preload_closed_loop_SZ_W 376
+#define rpr3_platform_na_preload_closed_loop_SZ_W 264
 int rpr3_platform_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_na_proj_closed_loop_checkout(void);
 void rpr3_platform_na_proj_closed_loop_release(int mem);
@@ -816,7 +816,7 @@ int rpr3_platform_na_proj_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int*
 #define rpr3_platform_na_proj_closed_loop_SZ_ARG 9
 #define rpr3_platform_na_proj_closed_loop_SZ_RES 6
 #define rpr3_platform_na_proj_closed_loop_SZ_IW 0
-#define rpr3_platform_na_proj_closed_loop_SZ_W 306
+#define rpr3_platform_na_proj_closed_loop_SZ_W 203
 int rpr3_platform_na_proj_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_na_proj_minmax_closed_loop_checkout(void);
 void rpr3_platform_na_proj_minmax_closed_loop_release(int mem);
@@ -834,7 +834,7 @@ int rpr3_platform_na_proj_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casa
 #define rpr3_platform_na_proj_minmax_closed_loop_SZ_ARG 9
 #define rpr3_platform_na_proj_minmax_closed_loop_SZ_RES 6
 #define rpr3_platform_na_proj_minmax_closed_loop_SZ_IW 0
-#define rpr3_platform_na_proj_minmax_closed_loop_SZ_W 306
+#define rpr3_platform_na_proj_minmax_closed_loop_SZ_W 203
 int rpr3_platform_na_proj_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_na_proj_preload_closed_loop_checkout(void);
 void rpr3_platform_na_proj_preload_closed_loop_release(int mem);
@@ -852,7 +852,7 @@ int rpr3_platform_na_proj_preload_closed_loop_work_bytes(casadi_int *sz_arg, cas
 #define rpr3_platform_na_proj_preload_closed_loop_SZ_ARG 14
 #define rpr3_platform_na_proj_preload_closed_loop_SZ_RES 8
 #define rpr3_platform_na_proj_preload_closed_loop_SZ_IW 0
-#define rpr3_platform_na_proj_preload_closed_loop_SZ_W 377
+#define rpr3_platform_na_proj_preload_closed_loop_SZ_W 265
 int rpr3_platform_apd_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_apd_closed_loop_checkout(void);
 void rpr3_platform_apd_closed_loop_release(int mem);
@@ -870,7 +870,7 @@ int rpr3_platform_apd_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 #define rpr3_platform_apd_closed_loop_SZ_ARG 9
 #define rpr3_platform_apd_closed_loop_SZ_RES 6
 #define rpr3_platform_apd_closed_loop_SZ_IW 0
-#define rpr3_platform_apd_closed_loop_SZ_W 284
+#define rpr3_platform_apd_closed_loop_SZ_W 203
 int rpr3_platform_apd_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_apd_minmax_closed_loop_checkout(void);
 void rpr3_platform_apd_minmax_closed_loop_release(int mem);
@@ -888,7 +888,7 @@ int rpr3_platform_apd_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_i
 #define rpr3_platform_apd_minmax_closed_loop_SZ_ARG 9
 #define rpr3_platform_apd_minmax_closed_loop_SZ_RES 6
 #define rpr3_platform_apd_minmax_closed_loop_SZ_IW 0
-#define rpr3_platform_apd_minmax_closed_loop_SZ_W 283
+#define rpr3_platform_apd_minmax_closed_loop_SZ_W 203
 int rpr3_platform_apd_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_apd_preload_closed_loop_checkout(void);
 void rpr3_platform_apd_preload_closed_loop_release(int mem);
@@ -906,7 +906,7 @@ int rpr3_platform_apd_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_
 #define rpr3_platform_apd_preload_closed_loop_SZ_ARG 14
 #define rpr3_platform_apd_preload_closed_loop_SZ_RES 8
 #define rpr3_platform_apd_preload_closed_loop_SZ_IW 0
-#define rpr3_platform_apd_preload_closed_loop_SZ_W 354
+#define rpr3_platform_apd_preload_closed_loop_SZ_W 231
 int rpr3_platform_ctc_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_ctc_closed_loop_checkout(void);
 void rpr3_platform_ctc_closed_loop_release(int mem);
@@ -924,7 +924,7 @@ int rpr3_platform_ctc_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 #define rpr3_platform_ctc_closed_loop_SZ_ARG 9
 #define rpr3_platform_ctc_closed_loop_SZ_RES 6
 #define rpr3_platform_ctc_closed_loop_SZ_IW 0
-#define rpr3_platform_ctc_closed_loop_SZ_W 288
+#define rpr3_platform_ctc_closed_loop_SZ_W 203
 int rpr3_platform_ctc_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_ctc_minmax_closed_loop_checkout(void);
 void rpr3_platform_ctc_minmax_closed_loop_release(int mem);
@@ -942,7 +942,7 @@ int rpr3_platform_ctc_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_i
 #define rpr3_platform_ctc_minmax_closed_loop_SZ_ARG 9
 #define rpr3_platform_ctc_minmax_closed_loop_SZ_RES 6
 #define rpr3_platform_ctc_minmax_closed_loop_SZ_IW 0
-#define rpr3_platform_ctc_minmax_closed_loop_SZ_W 287
+#define rpr3_platform_ctc_minmax_closed_loop_SZ_W 203
 int rpr3_platform_ctc_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_ctc_preload_closed_loop_checkout(void);
 void rpr3_platform_ctc_preload_closed_loop_release(int mem);
@@ -960,7 +960,7 @@ int rpr3_platform_ctc_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_
 #define rpr3_platform_ctc_preload_closed_loop_SZ_ARG 14
 #define rpr3_platform_ctc_preload_closed_loop_SZ_RES 8
 #define rpr3_platform_ctc_preload_closed_loop_SZ_IW 0
-#define rpr3_platform_ctc_preload_closed_loop_SZ_W 358
+#define rpr3_platform_ctc_preload_closed_loop_SZ_W 233
 int rpr3_platform_lqr_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_lqr_closed_loop_checkout(void);
 void rpr3_platform_lqr_closed_loop_release(int mem);
@@ -978,7 +978,7 @@ int rpr3_platform_lqr_closed_loop_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 #define rpr3_platform_lqr_closed_loop_SZ_ARG 11
 #define rpr3_platform_lqr_closed_loop_SZ_RES 6
 #define rpr3_platform_lqr_closed_loop_SZ_IW 0
-#define rpr3_platform_lqr_closed_loop_SZ_W 253
+#define rpr3_platform_lqr_closed_loop_SZ_W 203
 int rpr3_platform_lqr_minmax_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_lqr_minmax_closed_loop_checkout(void);
 void rpr3_platform_lqr_minmax_closed_loop_release(int mem);
@@ -996,7 +996,7 @@ int rpr3_platform_lqr_minmax_closed_loop_work_bytes(casadi_int *sz_arg, casadi_i
 #define rpr3_platform_lqr_minmax_closed_loop_SZ_ARG 11
 #define rpr3_platform_lqr_minmax_closed_loop_SZ_RES 6
 #define rpr3_platform_lqr_minmax_closed_loop_SZ_IW 0
-#define rpr3_platform_lqr_minmax_closed_loop_SZ_W 253
+#define rpr3_platform_lqr_minmax_closed_loop_SZ_W 203
 int rpr3_platform_lqr_preload_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_lqr_preload_closed_loop_checkout(void);
 void rpr3_platform_lqr_preload_closed_loop_release(int mem);
@@ -1014,7 +1014,7 @@ int rpr3_platform_lqr_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_
 #define rpr3_platform_lqr_preload_closed_loop_SZ_ARG 16
 #define rpr3_platform_lqr_preload_closed_loop_SZ_RES 8
 #define rpr3_platform_lqr_preload_closed_loop_SZ_IW 0
-#define rpr3_platform_lqr_preload_closed_loop_SZ_W 253
+#define rpr3_platform_lqr_preload_closed_loop_SZ_W 203
 int rpr3_platform_path_coefficients(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_path_coefficients_checkout(void);
 void rpr3_platform_path_coefficients_release(int mem);
@@ -1176,7 +1176,7 @@ int rpr3_platform_sampled_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res
 #define rpr3_platform_sampled_step_SZ_ARG 8
 #define rpr3_platform_sampled_step_SZ_RES 4
 #define rpr3_platform_sampled_step_SZ_IW 0
-#define rpr3_platform_sampled_step_SZ_W 178
+#define rpr3_platform_sampled_step_SZ_W 133
 int rpr3_platform_sampled_step_jacobians(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_sampled_step_jacobians_checkout(void);
 void rpr3_platform_sampled_step_jacobians_release(int mem);
@@ -1194,7 +1194,7 @@ int rpr3_platform_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_i
 #define rpr3_platform_sampled_step_jacobians_SZ_ARG 8
 #define rpr3_platform_sampled_step_jacobians_SZ_RES 10
 #define rpr3_platform_sampled_step_jacobians_SZ_IW 10
-#define rpr3_platform_sampled_step_jacobians_SZ_W 3704
+#define rpr3_platform_sampled_step_jacobians_SZ_W 3250
 int rpr3_platform_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_Ge_checkout(void);
 void rpr3_platform_Ge_release(int mem);
