@@ -7,6 +7,7 @@ import casadi as ca
 from pm2dof.core.status import Status
 
 from .factored import joint_W, regressor
+from .kinematics import FK_TRACKING_STEPS
 from .layouts import Layout
 from .splits import SPLITS, min_max, min_norm
 
@@ -152,7 +153,9 @@ def controller_functions(d, prefix):
         extra = [(k, ca.SX.sym(k, size)) for k, size in per_sample_inputs(law, n, m)]
         # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
         # low-pass on the backward difference, passive joints from geometry (unit vectors)
-        base = d.converter_qa(qa, seed=st["xe_prev"])  # a platform's fk from the last pose
+        # a platform's fk from the last pose (kinematics.FK_TRACKING_STEPS: from one sample
+        # away as exact as FK_NEWTON_STEPS from far)
+        base = d.converter_qa(qa, seed=st["xe_prev"], steps=FK_TRACKING_STEPS)
         O = d.fk_of_qa()
         xe = base(O)
         # the extra legs are a check: every leg's residual within tolerance (false for NaN)

@@ -4,13 +4,19 @@ import sympy as sp
 
 from .symbols import solve2, solve_small
 
-__all__ = ["Kinematics", "FK_NEWTON_STEPS", "FK_NEWTON_TOL"]
+__all__ = ["Kinematics", "FK_NEWTON_STEPS", "FK_TRACKING_STEPS", "FK_NEWTON_TOL"]
 
 #: Gauss-Newton steps of a platform's fk from its seed pose (fk_newton_step). From the previous
 #: sample's pose (about 1 mm and 0.005 rad away at 0.5 m/s and 2 ms) 3 steps reach rounding;
 #: 8 reach it from seeds up to 0.05 m and 0.2 rad away on the shipped platforms; 0.1 m and
 #: 0.3 rad can diverge, which the closure residual reports (tests/mechanisms/test_independent.py)
 FK_NEWTON_STEPS = 8
+#: Gauss-Newton steps of the controllers' fk from the previous sample's pose (Fig. 2 signal
+#: processing). Along every shipped platform's moves at both speeds (NA, APD, CTC in closed loop,
+#: exact and quantised encoders) at most 3 steps are larger than FK_NEWTON_TOL, so 5 give the
+#: same pose as FK_NEWTON_STEPS (the steps after the first one below the tolerance are not
+#: taken); 5 reach rounding from seeds 0.02 m and 0.08 rad off, 5x a sample's motion at 0.5 m/s
+FK_TRACKING_STEPS = 5
 #: m (rad for phi): a Gauss-Newton step this small is not taken (converged); far below an
 #: encoder count's motion (~1e-5 m), far above rounding (~1e-17)
 FK_NEWTON_TOL = 1e-12

@@ -53,15 +53,15 @@ class Derivation:
         Gauss-Newton fk."""
         return self.sym.xe if getattr(self.kin, "platform", False) else self.kin.fk()
 
-    def _platform_fk(self, symbols, trig, seed):
-        """A platform's fk as CasADi: FK_NEWTON_STEPS Gauss-Newton steps
-        (kinematics.fk_newton_step) from ``seed`` (m,), in the measured qa of ``symbols``."""
-        from .kinematics import FK_NEWTON_STEPS, FK_NEWTON_TOL
+    def _platform_fk(self, symbols, trig, seed, steps):
+        """A platform's fk as CasADi: ``steps`` Gauss-Newton steps (kinematics.fk_newton_step)
+        from ``seed`` (m,), in the measured qa of ``symbols``."""
+        from .kinematics import FK_NEWTON_TOL
         xe = ca.SX.sym("xe_newton", self.m)
         conv = Converter({**symbols, **dict(zip(self.sym.xe, ca.vertsplit(xe)))}, dict(trig))
         step = conv(self.kin.fk_newton_step())
         O = seed
-        for _ in range(FK_NEWTON_STEPS):
+        for _ in range(steps):
             O_next = ca.substitute(step, xe, O)
             # a converged step (|dO| <= FK_NEWTON_TOL) is not taken: unchanged encoder readings
             # give the seed (the previous pose) back exactly, so a robot at rest measures zero
@@ -107,10 +107,11 @@ class Derivation:
             symbols.update({s: base(ik[s]) for s in lengths})
         return Converter(symbols, trig)
 
-    def converter_qa(self, qa, extra=(), seed=None):
+    def converter_qa(self, qa, extra=(), seed=None, steps=None):
         """Converter for functions of the measured active coordinates: trig of the active
-        angles, passive coordinates from the pose fk(qa) (a platform's from ``seed``, an SX
-        pose; default [platform] home)."""
+        angles, passive coordinates from the pose fk(qa) (a platform's by ``steps`` Gauss-Newton
+        steps, default FK_NEWTON_STEPS, from ``seed``, an SX pose; default [platform] home)."""
+        from .kinematics import FK_NEWTON_STEPS
         sym = self.sym
         symbols = dict(zip(sym.qa, ca.vertsplit(qa)))
         for syms, value in extra:
@@ -119,7 +120,8 @@ class Derivation:
         base = Converter(symbols, trig)
         if getattr(self.kin, "platform", False):    # Gauss-Newton from the seed pose
             seed = ca.DM(self.spec.home) if seed is None else seed
-            symbols.update(zip(sym.xe, ca.vertsplit(self._platform_fk(symbols, trig, seed))))
+            symbols.update(zip(sym.xe, ca.vertsplit(self._platform_fk(
+                symbols, trig, seed, FK_NEWTON_STEPS if steps is None else steps))))
             base = Converter(symbols, trig)
         O = self.fk_of_qa()
         trig.update({s: (base(c), base(si)) for s, (c, si)
