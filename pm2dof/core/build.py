@@ -42,6 +42,12 @@ STALE_TMP_AGE_S = 600.0
 #: ``-fno-math-errno``
 #:     Math functions need not set ``errno``, so ``sqrt`` and friends compile to
 #:     single instructions; results are unchanged (IEEE semantics are kept).
+#: ``-fno-semantic-interposition``
+#:     CasADi writes its helpers (``casadi_sq``, ``casadi_fabs``, ``casadi_fmax``, ...) as
+#:     global functions; in position-independent code the compiler would otherwise call each
+#:     through the PLT (no inlining, every live register spilled around it: a 4-RRR NA step
+#:     made ~200 such calls). The library's own definitions are the ones used (nothing
+#:     interposes them), so they are inlined; results are unchanged (the same operations).
 #:
 #: ``-ffast-math`` is deliberately absent: it lets the compiler assume there are no
 #: NaNs or infinities (breaking ``isfinite`` checks) and reassociate arithmetic
@@ -53,6 +59,7 @@ FLAGS: tuple[str, ...] = (
     "-fPIC",
     "-shared",
     "-fno-math-errno",
+    "-fno-semantic-interposition",
 )
 
 #: :data:`FLAGS` without ``-march=native``: for libraries that travel to other machines (the
