@@ -456,13 +456,19 @@ def test_platform_parallel_measure_is_zero_where_the_lines_meet():
     legs = tuple(dataclasses.replace(leg, attach=(0.05 * leg.base[0] / np.hypot(*leg.base),
                                                   0.05 * leg.base[1] / np.hypot(*leg.base)))
                  for leg in spec.legs)
-    radial = Lambdified(_with(spec, legs=legs))
-    f = sp.lambdify([list(radial.sym.q), list(radial.sym.xe)], radial.kin.parallel_measure(),
-                    "numpy", cse=True)
+    radial = _with(spec, legs=legs)
+    # its kinematics only (the measure and ik): Lambdified would derive its dynamics too (~6 s)
+    sym = Symbols(radial.n_legs, radial.param_names, radial.task_names)
+    kin = Kinematics(radial, sym)
+    f = sp.lambdify([list(sym.q), list(sym.xe)], kin.parallel_measure(), "numpy", cse=True)
+    ik = sp.lambdify([list(sym.xe)], kin.ik(), "numpy")
+
+    def q_of(xe):
+        return np.array(ik(xe), dtype=float).ravel()      # as Lambdified.q
     xe = np.zeros(3)
-    q = radial.q(xe)
+    q = q_of(xe)
     assert abs(float(f(q, xe))) < 1e-5
-    assert float(f(radial.q(xe + [0, 0, 0.3]), xe + [0, 0, 0.3])) > 0.05
+    assert float(f(q_of(xe + [0, 0, 0.3]), xe + [0, 0, 0.3])) > 0.05
 
 
 # --- CasADi conversion (in this module: it reuses the cached derivations of _case) ----------
