@@ -49,7 +49,9 @@ derive-all: $(STAMP)
 	for m in pm2dof/models/*.toml; do $(VENV)/bin/pm2dof derive $$m || exit 1; done
 
 # -n auto: one pytest worker per core; --dist loadscope keeps a module's tests (and its
-# module-scoped fixtures: built models, derivations, studies) on one worker
+# module-scoped fixtures: built models, derivations, studies) on one worker; tests/conftest.py
+# (pytest_xdist_make_scheduler) hands out the longest modules first and keeps the modules that
+# share one SymPy derivation per model (tests/derivations.py) on one worker
 test: install
 	$(PY) -m pytest -q -n auto --dist loadscope
 

@@ -296,3 +296,61 @@ def pytest_collection_modifyitems(config, items):
         for name in ids & set(_KINDS):
             if _KINDS[name] & set(groups.split()):
                 item.add_marker(pytest.mark.skip(reason=f"{name}: {why}"))
+
+
+# --------------------------------------------------------------------------------------
+# pytest-xdist's schedule (make test: -n auto --dist loadscope)
+# --------------------------------------------------------------------------------------
+
+#: Modules that share per-process state (one SymPy derivation per model file,
+#: tests/derivations.py): one work unit, so one worker builds each derivation once.
+_SHARED_UNITS = dict.fromkeys(("tests/derive/test_generated.py",
+                               "tests/derive/test_derive_task_dimension.py",
+                               "tests/mechanisms/test_independent.py"), "derivations")
+#: The longest work units, longest first (CPU seconds of one run, Nov 2026, in brackets); the
+#: others follow in pytest-xdist's order (most tests first). Longest first keeps a long unit from
+#: starting last while the other worker idles; a stale list only costs time, never a test.
+_LONGEST_FIRST = (
+    "derivations",                                          # (97)
+    "tests/studies/test_studies_cluster.py",                # (27)
+    "tests/derivatives/test_derivatives_mpmath.py",         # (26)
+    "tests/core/test_install_paths.py",                     # (21)
+    "tests/figures/test_figures_layout.py",                 # (20)
+    "tests/identification/test_identification_conclusions.py",  # (18)
+    "tests/identification/test_identification_design.py",   # (15)
+    "tests/examples/test_c_example.py",                     # (9)
+    "tests/derive/test_splits_3d.py",                       # (8)
+    "tests/control/test_closed_loop.py",                    # (7)
+    "tests/identification/test_identification_commands.py",  # (7)
+    "tests/bench/test_bench.py",                            # (6)
+    "tests/export/test_export_project.py",                  # (6)
+)
+
+
+@pytest.hookimpl(tryfirst=True, optionalhook=True)
+def pytest_xdist_make_scheduler(config, log):
+    """--dist loadscope with a module per work unit (the modules of _SHARED_UNITS as one) and
+    the units of _LONGEST_FIRST handed out first; other --dist modes: pytest-xdist's own."""
+    if config.getvalue("dist") != "loadscope":
+        return None
+    from collections import OrderedDict
+
+    from xdist.scheduler import LoadScopeScheduling
+
+    rank = {unit: k for k, unit in enumerate(_LONGEST_FIRST)}
+
+    class Scheduling(LoadScopeScheduling):
+        _ordered = False
+
+        def _split_scope(self, nodeid):
+            module = nodeid.split("::", 1)[0]
+            return _SHARED_UNITS.get(module, module)
+
+        def _assign_work_unit(self, node):
+            if not self._ordered:          # the first assignment: the queue is complete
+                self._ordered = True
+                units = sorted(self.workqueue, key=lambda u: rank.get(u, len(rank)))  # stable
+                self.workqueue = OrderedDict((u, self.workqueue[u]) for u in units)
+            super()._assign_work_unit(node)
+
+    return Scheduling(config, log)

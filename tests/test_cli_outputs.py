@@ -20,7 +20,9 @@ def a_file(tmp_path):
     (["table3", "--save", "{dir}"], "cannot write {dir}: it is a folder"),
     (["identify", "excite", "--out", "{dir}"], "cannot write {dir}: it is a folder"),
     (["animate", "--out", "{file}/x.gif"], "cannot write {file}/x.gif: {file} is a file, not a folder"),
-    (["animate", "--out", "{dir}/x.png"], "out must name a .gif file"),
+    (["animate", "--out", "{dir}/x.jpg"], r"out must name a .gif file \(the animation\) or a "
+                                          r"\.png file"),
+    (["animate", "--out", "{file}/x.png"], "cannot write {file}/x.png: {file} is a file, not a folder"),
     (["maps", "--out", "{file}"], "cannot write into {file}: {file} is a file, not a folder"),
     (["plan", "--out", "{file}/sub"], "cannot write into {file}/sub: {file} is a file"),
     (["splits", "--preload-sign", "1", "1"], r"preload_sign must be one finite number or 3 "

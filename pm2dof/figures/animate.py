@@ -7,7 +7,7 @@ from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from ..control.trajectory import model_move
 from ..core.errors import ArgumentError, OutputError
-from ..infra.results import output_path
+from ..infra.results import output_path, provenance, save_figure
 from .experiment import COLORS, LABELS, _plt, sci
 from .robot import barrels, draw_fixed, fixed_key, fixed_points, leg_points, platform_polygon
 from .style import legend_outside
@@ -21,7 +21,8 @@ CONTROLLERS = {"na": NAController, "apd": APDController}
 
 def animate_move(model, out, speed="high", controller="na", split=None, magnify=None,
                  fps=20, every=2, settle_time=0.1, progress=None):
-    """Simulate one move and write it as an animated GIF (matplotlib animation, Pillow).
+    """Simulate one move and write it as an animated GIF (matplotlib animation, Pillow), or
+    as one PNG frame at the middle of the move when ``out`` ends in .png.
 
     The legs are drawn to scale at the true pose of every ``every``-th 2 ms sample. The tip's
     error e = xe - xd is invisible at that scale, so the actual path is drawn as
@@ -51,8 +52,10 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
         raise ArgumentError(f"controller must be one of {sorted(CONTROLLERS)}, got {controller!r}")
     if not (isinstance(every, int) and every >= 1 and isinstance(fps, int) and fps >= 1):
         raise ArgumentError(f"every and fps must be integers >= 1, got {every}, {fps}")
-    if Path(out).suffix.lower() != ".gif":
-        raise ArgumentError(f"out must name a .gif file (the animation is a GIF), got {out}")
+    still = Path(out).suffix.lower() == ".png"
+    if Path(out).suffix.lower() != ".gif" and not still:
+        raise ArgumentError(f"out must name a .gif file (the animation) or a .png file (one "
+                            f"frame, at the middle of the move), got {out}")
     out = output_path(out)                  # before any work: a folder, a file in the way
     plt = _plt()
     traj = model_move(model, speed)
@@ -60,13 +63,20 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
                  settle_time=settle_time)
     e = r.xe - r.xd
     emax = float(np.max(np.hypot(e[:, 0], e[:, 1])))
-    length = float(np.hypot(*(traj.xd[-1] - traj.xd[0])))
+    length = float(np.linalg.norm((traj.xd[-1] - traj.xd[0])[:2]))   # of the position (x, y)
     if magnify is None:
         magnify = 10.0 ** np.floor(np.log10(0.3 * length / max(emax, 1e-12)))
     if not (np.isfinite(magnify) and magnify > 0):
         raise ArgumentError(f"magnify must be > 0, got {magnify}")
     fig, draw, n_frames = animation_figure(plt, model, r, speed, controller, magnify,
                                            fps=fps, every=every)
+    if still:                                    # one frame: the middle of the move
+        draw(min(n_frames - 1, (r.n_move // 2) // every))
+        title = fig._suptitle.get_text()
+        fig.suptitle(title.split("; the GIF runs")[0], fontsize=10)   # no GIF speed on a PNG
+        save_figure(fig, out, provenance(model))
+        plt.close(fig)
+        return out, r
     if progress:
         progress(f"{n_frames} frames of {speed}-speed {controller}, error x{magnify:g}")
     frames = render_frames(fig, draw, n_frames)

@@ -1,12 +1,13 @@
 # Optimal excitation: a periodic finite Fourier series in task space (Swevers et al. 1997), IPOPT.
 """Excitation trajectories for identification, designed by optimisation.
 
-The motion is a periodic finite Fourier series per task axis
-(:class:`~pm2dof.identification.signals.FourierExcitation`, Swevers et al. 1997), starting and
-ending at rest. :func:`design_excitation` chooses its coefficients a, b, c with CasADi and IPOPT
+The motion is a periodic finite Fourier series per task axis: x and y, and a platform's phi
+(m = ``Model.dof`` series; :class:`~pm2dof.identification.signals.FourierExcitation`, Swevers
+et al. 1997), starting and ending at rest. :func:`design_excitation` chooses its coefficients a, b, c with CasADi and IPOPT
 to maximise log det(Phi^T Phi), Phi the base regressor stacked over one period (D-optimality),
 subject to the workspace and a singularity margin, speed, acceleration and torque limits at
-dense samples.
+dense samples. The speed, acceleration and radius limits are on (x, y); a platform's phi has its
+own (:func:`phi_limits`: angular speed, angular acceleration and a range about the centre's phi).
 
 Why log det and not the condition number: log det is smooth (IPOPT needs derivatives; the
 condition number is a ratio of extreme singular values, non-smooth where they cross), it is
@@ -50,7 +51,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import ArgumentError, UnsupportedMechanismError
+from ..control.trajectory import line_moves
+from ..core.errors import ArgumentError
+from ..core.task import orientation_length
 from ..infra.progress import bar
 from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED, joint_speed_floor
@@ -58,7 +61,7 @@ from .signals import FourierExcitation, multisine, trajectory_of, write_excitati
 
 __all__ = ["design_excitation", "regressor_condition", "check_excitation",
            "sample_function", "run_design", "DesignReport", "format_design", "objective_logdet",
-           "random_start", "IPOPT_OPTIONS", "design_provenance"]
+           "random_start", "IPOPT_OPTIONS", "design_provenance", "phi_limits"]
 
 #: IPOPT's options of the design (``max_iter`` is an argument of :func:`design_excitation`);
 #: written to the file's ``[design.ipopt]``.
@@ -72,6 +75,46 @@ def _basis(f0, L, t):
     t = np.asarray(t, dtype=float)[:, None]
     s, c = np.sin(w * t), np.cos(w * t)
     return s / w, -c / w, c, s, -s * w, c * w
+
+
+def _refuse_phi(model, given):
+    """ArgumentError when phi limits are given for a model without phi (a point end effector)."""
+    named = [k for k, v in given.items() if v is not None]
+    if model.dof != 3 and named:
+        raise ArgumentError(f"{', '.join(named)} limit a platform's orientation phi; model "
+                            f"{model.name!r} has task {model.task_names}, no phi")
+
+
+def phi_limits(model, *, v_max=0.5, a_max=10.0, radius=0.06, phi_v_max=None, phi_a_max=None,
+               phi_range=None):
+    """A platform's phi limits of the design, each as given or from the model, with l its
+    radius (:func:`~pm2dof.core.task.orientation_length`, the farthest attachment point):
+
+    * ``phi_v_max`` = v_max / l, rad/s, and ``phi_a_max`` = a_max / l, rad/s^2: the rotation
+      alone moves the attachment points at the (x, y) limits;
+    * ``phi_range`` = the largest phi excursion |phi_end - phi_start| of the model's moves, rad
+      (|phi - phi_c| <= phi_range about the centre's phi_c, so the excitation spans twice the
+      model's own turn); radius / l if no move turns.
+
+    Returns
+    -------
+    dict
+        ``phi_v_max``, ``phi_a_max``, ``phi_range``; empty for a point end effector (then giving
+        any of them is an ArgumentError: there is no phi).
+    """
+    given = {"phi_v_max": phi_v_max, "phi_a_max": phi_a_max, "phi_range": phi_range}
+    _refuse_phi(model, given)
+    if model.dof != 3:
+        return {}
+    l = orientation_length(model)
+    moves = [model.spec.trajectories[k] for k in line_moves(model)]
+    turn = max((abs(float(t["end"][2]) - float(t["start"][2])) for t in moves), default=0.0)
+    out = {"phi_v_max": v_max / l, "phi_a_max": a_max / l,
+           "phi_range": turn if turn > 0 else radius / l}
+    out.update({k: float(v) for k, v in given.items() if v is not None})
+    if not all(v > 0 for v in out.values()):
+        raise ArgumentError(f"need phi_v_max > 0, phi_a_max > 0, phi_range > 0, got {out}")
+    return out
 
 
 def regressor_condition(model, base, traj, every=5):
@@ -92,18 +135,27 @@ def regressor_condition(model, base, traj, every=5):
     return float(sv[0] / sv[-1]), float(logdet)
 
 
-def check_excitation(model, exc, *, v_max, a_max, tau_limit, sing_min, radius, step=1e-3):
+def check_excitation(model, exc, *, v_max, a_max, tau_limit, sing_min, radius, step=1e-3,
+                     phi_v_max=None, phi_a_max=None, phi_range=None):
     """The excitation's worst values at samples every ``step`` s over one period, against the
-    design's limits (``radius`` around the middle of the model's first move).
+    design's limits (``radius`` around the middle of the model's first move; a platform's
+    ``phi_v_max``, ``phi_a_max`` and ``phi_range``, required for it, as :func:`phi_limits`).
 
     Returns
     -------
     dict
-        ``speed`` (max |xd|, m/s), ``acceleration`` (max |xdd|, m/s^2), ``torque`` (max |tau_i|
-        of the min-norm split with Tables 1-2, N m), ``sing`` (min of both singularity measures),
-        ``radius`` (max |x - center|, m), ``rest`` (|xd|, |xdd| at t = 0); ``failed`` the
-        names of those beyond their limit, ``ok`` none.
+        ``speed`` (max |(xd, yd)|, m/s), ``acceleration`` (max |(xdd, ydd)|, m/s^2),
+        ``torque`` (max |tau_i| of the min-norm split with Tables 1-2, N m or N), ``sing`` (min
+        of both singularity measures), ``radius`` (max |(x, y) - center|, m), ``rest`` (|xd|,
+        |xdd| at t = 0); for a platform also ``phi_speed`` (max |phid|, rad/s),
+        ``phi_acceleration`` (max |phidd|, rad/s^2) and ``phi_range`` (max |phi - phi_c|, rad);
+        ``failed`` the names of those beyond their limit, ``ok`` none.
     """
+    phi = {"phi_v_max": phi_v_max, "phi_a_max": phi_a_max, "phi_range": phi_range}
+    _refuse_phi(model, phi)
+    if model.dof == 3 and None in phi.values():
+        raise ArgumentError(f"model {model.name!r} has a phi: check_excitation needs "
+                            f"phi_v_max, phi_a_max and phi_range, got {phi}")
     t = np.arange(int(round(1.0 / (exc.base_hz * step))) + 1) * step
     x, v, a = exc.evaluate(t)
     th = model.theta_nominal
@@ -114,23 +166,32 @@ def check_excitation(model, exc, *, v_max, a_max, tau_limit, sing_min, radius, s
         S = model.S(q)
         u = model.Y(q, vk, vk, ak) @ th
         tau = max(tau, float(np.abs(S @ np.linalg.solve(S.T @ S, u)).max()))
-    out = {"speed": float(np.max(np.hypot(*v.T))), "acceleration": float(np.max(np.hypot(*a.T))),
+    c0 = region_center(model)
+    out = {"speed": float(np.max(np.hypot(*v[:, :2].T))),
+           "acceleration": float(np.max(np.hypot(*a[:, :2].T))),
            "torque": tau, "sing": sing,
-           "radius": float(np.max(np.hypot(*(x - region_center(model)).T))),
+           "radius": float(np.max(np.hypot(*(x[:, :2] - c0[:2]).T))),
            "rest": float(np.abs(np.concatenate([v[0], a[0]])).max())}
-    out["failed"] = [k for k, met in (("speed", out["speed"] <= v_max),
-                                      ("acceleration", out["acceleration"] <= a_max),
-                                      ("torque", tau <= tau_limit), ("sing", sing >= sing_min),
-                                      ("radius", out["radius"] <= radius),
-                                      ("rest", out["rest"] < 1e-9)) if not met]
+    limits = [("speed", out["speed"] <= v_max), ("acceleration", out["acceleration"] <= a_max),
+              ("torque", tau <= tau_limit), ("sing", sing >= sing_min),
+              ("radius", out["radius"] <= radius)]
+    if model.dof == 3:
+        out.update(phi_speed=float(np.max(np.abs(v[:, 2]))),
+                   phi_acceleration=float(np.max(np.abs(a[:, 2]))),
+                   phi_range=float(np.max(np.abs(x[:, 2] - c0[2]))))
+        limits += [("phi_speed", out["phi_speed"] <= phi_v_max),
+                   ("phi_acceleration", out["phi_acceleration"] <= phi_a_max),
+                   ("phi_range", out["phi_range"] <= phi_range)]
+    out["failed"] = [k for k, met in (*limits, ("rest", out["rest"] < 1e-9)) if not met]
     out["ok"] = not out["failed"]
     return out
 
 
 def sample_function(model, independent, smooth_sign=None):
-    """CasADi function (x (2), xd (2), xdd (2)) -> (vec of Y[:, independent] (2r, column-major),
-    tau (n) of the min-norm split with Tables 1-2 (eq. 21), both singularity measures (2)),
-    built on the model's generated C (``casadi.external``, finite-difference derivatives).
+    """CasADi function (x (m), xd (m), xdd (m)) -> (vec of Y[:, independent] (m r,
+    column-major), tau (n) of the min-norm split with Tables 1-2 (eq. 21), both singularity
+    measures (2)), m = ``Model.dof``, built on the model's generated C (``casadi.external``,
+    finite-difference derivatives).
 
     ``smooth_sign`` (rad/s): replace sign(qd_i) in the Coulomb (and Stribeck) columns by
     tanh(qd_i / s_i), s_i = smooth_sign for a revolute actuator and smooth_sign x
@@ -139,13 +200,13 @@ def sample_function(model, independent, smooth_sign=None):
     it jump); None keeps the model's Y exactly.
     """
     import casadi as ca
-    n, p = model.n_legs, len(model.param_names)
+    n, p, m = model.n_legs, len(model.param_names), model.dof
     ext = {k: ca.external(f"{model.name}_{k}", model.library, {"enable_fd": True})
            for k in ("ik", "Y", "S", "singularity_measures")}
-    x, v, acc = ca.MX.sym("x", 2), ca.MX.sym("v", 2), ca.MX.sym("a", 2)
+    x, v, acc = ca.MX.sym("x", m), ca.MX.sym("v", m), ca.MX.sym("a", m)
     q = ext["ik"](x)
-    Yfull = ca.reshape(ext["Y"](q, v, v, acc)[0], p, 2).T       # the C writes Y row-major
-    S = ca.reshape(ext["S"](q)[0], 2, n).T
+    Yfull = ca.reshape(ext["Y"](q, v, v, acc)[0], p, m).T       # the C writes Y row-major
+    S = ca.reshape(ext["S"](q)[0], m, n).T
     if smooth_sign and model.spec.friction in ("coulomb_viscous", "coulomb_viscous_stribeck"):
         qd = ca.mtimes(S, v)                                    # eq. 8
         names = list(model.param_names)
@@ -165,21 +226,30 @@ def sample_function(model, independent, smooth_sign=None):
                         ext["singularity_measures"](q)])
 
 
-def random_start(model, *, base_hz, harmonics, periods, v_max, a_max, radius, seed):
+def random_start(model, *, base_hz, harmonics, periods, v_max, a_max, radius, seed,
+                 phi_v_max=None, phi_a_max=None, phi_range=None):
     """IPOPT's start: random coefficients (``numpy.random.default_rng(seed)``) with the rest
-    conditions, around the middle c0 of the model's first move, scaled to 30 % of the speed,
-    acceleration and radius limits. Returns a :class:`FourierExcitation`."""
-    L, c0 = int(harmonics), region_center(model)
+    conditions, around the middle c0 of the model's first move, the (x, y) series scaled to
+    30 % of the speed, acceleration and radius limits, a platform's phi series to 30 % of its
+    own (:func:`phi_limits`). Returns a :class:`FourierExcitation`."""
+    L, c0, m = int(harmonics), region_center(model), model.dof
+    phi = phi_limits(model, v_max=v_max, a_max=a_max, radius=radius, phi_v_max=phi_v_max,
+                     phi_a_max=phi_a_max, phi_range=phi_range)
     rng = np.random.default_rng(seed)
     w = 2 * np.pi * base_hz * np.arange(1, L + 1)
-    a0 = rng.normal(size=(2, L)) / np.arange(1, L + 1)
-    b0 = rng.normal(size=(2, L)) / np.arange(1, L + 1) ** 2
+    a0 = rng.normal(size=(m, L)) / np.arange(1, L + 1)
+    b0 = rng.normal(size=(m, L)) / np.arange(1, L + 1) ** 2
     a0 -= a0.mean(axis=1, keepdims=True)
     b0 -= np.outer(b0 @ w, w) / (w @ w)
     x_, v_, a_ = FourierExcitation(base_hz, periods, c0, a0, b0).evaluate(
         np.arange(2000) / (2000 * base_hz))
-    k = min(0.3 * v_max / np.max(np.hypot(*v_.T)), 0.3 * a_max / np.max(np.hypot(*a_.T)),
-            0.3 * radius / np.max(np.hypot(*(x_ - c0).T)))
+    k = np.full((m, 1), min(0.3 * v_max / np.max(np.hypot(*v_[:, :2].T)),
+                            0.3 * a_max / np.max(np.hypot(*a_[:, :2].T)),
+                            0.3 * radius / np.max(np.hypot(*(x_[:, :2] - c0[:2]).T))))
+    if phi:
+        k[2] = min(0.3 * phi["phi_v_max"] / np.max(np.abs(v_[:, 2])),
+                   0.3 * phi["phi_a_max"] / np.max(np.abs(a_[:, 2])),
+                   0.3 * phi["phi_range"] / np.max(np.abs(x_[:, 2] - c0[2])))
     return FourierExcitation(base_hz, periods, c0.copy(), k * a0, k * b0)
 
 
@@ -193,7 +263,7 @@ def objective_logdet(model, exc, samples=250, base=None):
     x, v, a = exc.evaluate(t)
     Yv = np.array(sample_function(model, I, smooth_sign=MIN_JOINT_SPEED).map(samples)(
         x.T, v.T, a.T)[0])
-    Phi = np.vstack([Yv[:, k].reshape(len(I), 2).T for k in range(samples)])
+    Phi = np.vstack([Yv[:, k].reshape(len(I), model.dof).T for k in range(samples)])
     return float(np.linalg.slogdet(Phi.T @ Phi / samples)[1])
 
 
@@ -288,9 +358,9 @@ def design_provenance(model):
 
 
 def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
-                      tau_fraction=0.5, singularity_margin=0.1, radius=0.06, samples=250,
-                      constraint_samples=1000, safety=0.98, seed=0, max_iter=500,
-                      progress=None):
+                      tau_fraction=0.5, singularity_margin=0.1, radius=0.06, phi_v_max=None,
+                      phi_a_max=None, phi_range=None, samples=250, constraint_samples=1000,
+                      safety=0.98, seed=0, max_iter=500, progress=None):
     """Design a D-optimal excitation (CasADi + IPOPT).
 
     Parameters
@@ -303,7 +373,7 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     periods : int
         Whole periods of the run (default 2: 10 s).
     v_max, a_max : float
-        Task-space speed (m/s) and acceleration (m/s^2) limits; defaults are those of the
+        Speed (m/s) and acceleration (m/s^2) limits of (x, y); defaults are those of the
         paper's high-speed move (0.5 m/s, 10 m/s^2): the robot is known to do them.
     tau_fraction : float
         |tau_i| <= tau_fraction * tau_max_i with the nominal model and the min-norm split
@@ -311,8 +381,13 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     singularity_margin : float
         Both singularity measures >= their threshold + this (default 0.1).
     radius : float
-        |x - c0| <= radius, m, c0 the middle of the model's first move (the region the
+        |(x, y) - c0| <= radius, m, c0 the middle of the model's first move (the region the
         model is meant for).
+    phi_v_max, phi_a_max, phi_range : float, optional
+        A platform's limits of phi: |phid| <= phi_v_max (rad/s), |phidd| <= phi_a_max
+        (rad/s^2), |phi - phi_c0| <= phi_range (rad). Not given: from the model
+        (:func:`phi_limits`: v_max / l, a_max / l with l the platform's radius, and the phi
+        excursion of the model's moves). An ArgumentError for a point (no phi).
     samples, constraint_samples : int
         Samples per period of the objective and of the constraints. The constraints are
         imposed with the limits times ``safety`` (0.98), so that they hold between the
@@ -331,38 +406,38 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     Returns
     -------
     FourierExcitation
-        Its ``info`` (the file's ``[design]``): every argument above but ``progress``, the
+        Of m = ``Model.dof`` series. Its ``info`` (the file's ``[design]``): every argument
+        above but ``progress`` (the phi limits, as used, for a platform only), the
         IPOPT options, cond and log det before (the start) and after on the objective's and
         the run's samples (module docstring), IPOPT's status and iterations, and
         :func:`design_provenance`. The same arguments on the same machine and install give
         the same coefficients and ``info`` bit for bit (no wall time in it).
     """
     import casadi as ca
-    if model.dof != 2:    # the Fourier excitation has an x and a y series (issue 26: not phi yet)
-        raise UnsupportedMechanismError(
-            f"design_excitation plans Fourier series for x and y only; model {model.name!r} "
-            f"has task {model.task_names}: use pm2dof.identification.signals.multisine")
     if not (base_hz > 0 and harmonics >= 1 and periods >= 1 and v_max > 0 and a_max > 0
             and 0 < tau_fraction <= 1 and radius > 0):
         raise ArgumentError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
                             "a_max > 0, 0 < tau_fraction <= 1, radius > 0")
+    phi = phi_limits(model, v_max=v_max, a_max=a_max, radius=radius, phi_v_max=phi_v_max,
+                     phi_a_max=phi_a_max, phi_range=phi_range)      # {} for a point
     args = {"base_hz": base_hz, "harmonics": int(harmonics), "periods": int(periods),
             "v_max": v_max, "a_max": a_max, "tau_fraction": tau_fraction,
-            "singularity_margin": singularity_margin, "radius": radius, "samples": int(samples),
+            "singularity_margin": singularity_margin, "radius": radius, **phi,
+            "samples": int(samples),
             "constraint_samples": int(constraint_samples), "safety": safety, "seed": int(seed),
             "max_iter": int(max_iter)}
     base = base_parameters(model)
-    I, L = list(base.independent), int(harmonics)
+    I, L, m = list(base.independent), int(harmonics), model.dof
     r = len(I)
     tau_lim = safety * tau_fraction * np.asarray(model.spec.limits["tau_max"], float)
     sing_min = (np.array([model.singularity_threshold, model.parallel_singularity_threshold])
                 + singularity_margin)
     c0 = region_center(model)
     per_sample = sample_function(model, I, smooth_sign=MIN_JOINT_SPEED)
-    z = ca.MX.sym("z", 4 * L + 2)
-    A = ca.reshape(z[:2 * L], L, 2)
-    B = ca.reshape(z[2 * L:4 * L], L, 2)
-    c = z[4 * L:]
+    z = ca.MX.sym("z", 2 * m * L + m)            # z = [a_x, a_y(, a_phi), b_x, ..., c]
+    A = ca.reshape(z[:m * L], L, m)
+    B = ca.reshape(z[m * L:2 * m * L], L, m)
+    c = z[2 * m * L:]
 
     def motion(K):
         Pa, Pb, Va, Vb, Aa, Ab = (ca.DM(M) for M in _basis(base_hz, L, np.arange(K) / (K * base_hz)))
@@ -371,11 +446,11 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
 
     X, V, Acc = motion(samples)
     Yv, _, _ = per_sample.map(samples)(X.T, V.T, Acc.T)
-    Phi = ca.vertcat(*[ca.reshape(Yv[:, k], 2, r) for k in range(samples)])
+    Phi = ca.vertcat(*[ca.reshape(Yv[:, k], m, r) for k in range(samples)])
 
     start = random_start(model, base_hz=base_hz, harmonics=L, periods=periods, v_max=v_max,
-                         a_max=a_max, radius=radius, seed=seed)
-    z0 = np.concatenate([start.a.ravel(), start.b.ravel(), c0])   # z = [a_x, a_y, b_x, b_y, c]
+                         a_max=a_max, radius=radius, seed=seed, **phi)
+    z0 = np.concatenate([start.a.ravel(), start.b.ravel(), c0])
     # column scaling: log det is invariant to it up to a constant; it keeps det() in range
     Phi0 = ca.Function("Phi0", [z], [Phi])(z0).full()
     norms = np.linalg.norm(Phi0, axis=0)
@@ -388,18 +463,24 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     Xc, Vc, Ac = motion(constraint_samples)
     _, Tc, Sc = per_sample.map(constraint_samples)(Xc.T, Vc.T, Ac.T)
     w = 2 * np.pi * base_hz * np.arange(1, L + 1)
-    g = [ca.vec(ca.sum1(A)), ca.mtimes(B.T, ca.DM(w)),                               # rest: 4
-         ca.sum2(Vc ** 2), ca.sum2(Ac ** 2),                                  # speed, accel
-         ca.sum2((Xc - ca.repmat(ca.DM(c0).T, constraint_samples, 1)) ** 2),  # radius
-         ca.vec(Tc), ca.vec(Sc)]
     K = constraint_samples
-    lbg = np.concatenate([np.zeros(4), np.zeros(K), np.zeros(K), np.zeros(K),
-                          -np.tile(tau_lim, K), np.tile(sing_min, K)])
-    ubg = np.concatenate([np.zeros(4), np.full(K, (safety * v_max) ** 2),
-                          np.full(K, (safety * a_max) ** 2), np.full(K, (safety * radius) ** 2),
-                          np.tile(tau_lim, K), np.full(2 * K, np.inf)])
+    g = [ca.vec(ca.sum1(A)), ca.mtimes(B.T, ca.DM(w)),                             # rest: 2 m
+         ca.sum2(Vc[:, :2] ** 2), ca.sum2(Ac[:, :2] ** 2),               # (x, y) speed, accel
+         ca.sum2((Xc[:, :2] - ca.repmat(ca.DM(c0[:2]).T, K, 1)) ** 2),  # radius
+         ca.vec(Tc), ca.vec(Sc)]
+    lbg = [np.zeros(2 * m), np.zeros(K), np.zeros(K), np.zeros(K), -np.tile(tau_lim, K),
+           np.tile(sing_min, K)]
+    ubg = [np.zeros(2 * m), np.full(K, (safety * v_max) ** 2),
+           np.full(K, (safety * a_max) ** 2), np.full(K, (safety * radius) ** 2),
+           np.tile(tau_lim, K), np.full(2 * K, np.inf)]
+    if phi:                     # a platform's phi: its own bounds, linear in z
+        g += [Vc[:, 2], Ac[:, 2], Xc[:, 2] - c0[2]]
+        for key in ("phi_v_max", "phi_a_max", "phi_range"):
+            lbg.append(np.full(K, -safety * phi[key]))
+            ubg.append(np.full(K, safety * phi[key]))
+    lbg, ubg = np.concatenate(lbg), np.concatenate(ubg)
     if progress:
-        progress(f"IPOPT: {4 * L + 2} coefficients, objective log det(Phi^T Phi / K) over "
+        progress(f"IPOPT: {z.numel()} coefficients, objective log det(Phi^T Phi / K) over "
                  f"{samples} samples per period, {len(lbg)} constraints at {constraint_samples} "
                  f"samples per period")
     with bar(progress, int(max_iter), "IPOPT", unit="it") as iterations, \
@@ -418,8 +499,9 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     stats = solver.stats()
     if ctrl_c or stats["return_status"] == "User_Requested_Stop":
         raise KeyboardInterrupt(f"IPOPT stopped after {stats['iter_count']} iterations")
-    exc = _with_rest(FourierExcitation(base_hz, periods, zs[4 * L:], zs[:2 * L].reshape(2, L),
-                                       zs[2 * L:4 * L].reshape(2, L)))
+    exc = _with_rest(FourierExcitation(base_hz, periods, zs[2 * m * L:],
+                                       zs[:m * L].reshape(m, L),
+                                       zs[m * L:2 * m * L].reshape(m, L)))
     before = regressor_condition(model, base, trajectory_of(model, start))
     after = regressor_condition(model, base, trajectory_of(model, exc))
     info = {"objective": "log det(Phi^T Phi / K) of the base regressor (D-optimal)", **args,
@@ -513,14 +595,16 @@ class DesignReport:
 
 
 def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
-               tau_fraction=0.5, seed=0, progress=None):
+               tau_fraction=0.5, phi_v_max=None, phi_a_max=None, phi_range=None, seed=0,
+               progress=None):
     """``pm2dof identify design --out FILE``: design, check at 1 ms, write; returns a
-    :class:`DesignReport`."""
+    :class:`DesignReport`. The phi limits: a platform's (:func:`phi_limits`)."""
     t0 = time.perf_counter()
     try:
         exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
-                                v_max=v_max, a_max=a_max, tau_fraction=tau_fraction, seed=seed,
-                                progress=progress)
+                                v_max=v_max, a_max=a_max, tau_fraction=tau_fraction,
+                                phi_v_max=phi_v_max, phi_a_max=phi_a_max, phi_range=phi_range,
+                                seed=seed, progress=progress)
     except KeyboardInterrupt as stop:          # an interrupted design is not written
         raise KeyboardInterrupt(f"{str(stop) + '; ' if str(stop) else ''}{out} not "
                                 f"written") from None
@@ -528,7 +612,9 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
     sing_min = max(model.singularity_threshold, model.parallel_singularity_threshold) + 0.1
     tau_limit = tau_fraction * np.max(model.spec.limits["tau_max"])
     chk = check_excitation(model, exc, v_max=v_max, a_max=a_max, tau_limit=tau_limit,
-                           sing_min=sing_min, radius=exc.info["radius"])
+                           sing_min=sing_min, radius=exc.info["radius"],
+                           **{k: exc.info[k] for k in ("phi_v_max", "phi_a_max", "phi_range")
+                              if k in exc.info})
     default = regressor_condition(model, base_parameters(model),
                                   trajectory_of(model, multisine(model, duration=exc.duration)))
     write_excitation(out, exc, model)
@@ -559,5 +645,11 @@ def format_design(r):
         f"torque (Tables 1-2, min-norm) {chk['torque']:.2f} <= {r.tau_limit:g} N m"
         f"{met('torque')}, singularity measures {chk['sing']:.3f} >= {r.sing_min:.3f}"
         f"{met('sing')}, |x - c0| {chk['radius'] * 1e3:.1f} <= {i['radius'] * 1e3:.1f} mm"
-        f"{met('radius')}, starts and ends at rest{met('rest')}: "
+        f"{met('radius')}, "
+        + ("" if "phi_speed" not in chk else
+           f"phi speed {chk['phi_speed']:.3f} <= {i['phi_v_max']:.4g} rad/s{met('phi_speed')}, "
+           f"phi acceleration {chk['phi_acceleration']:.2f} <= {i['phi_a_max']:.4g} rad/s^2"
+           f"{met('phi_acceleration')}, |phi - phi_c0| {chk['phi_range']:.3f} <= "
+           f"{i['phi_range']:.4g} rad{met('phi_range')}, ")
+        + f"starts and ends at rest{met('rest')}: "
         f"{'all met' if chk['ok'] else 'NOT MET: ' + ', '.join(chk['failed'])}"])

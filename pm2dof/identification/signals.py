@@ -1,7 +1,8 @@
 # Excitation signals: the Fourier series of a designed excitation and its file, the default multi-sine.
 """What an excitation is: a signal in task space with a known band, sampled as a Trajectory.
 
-* :class:`FourierExcitation` -- a periodic finite Fourier series per task axis j (x, y)
+* :class:`FourierExcitation` -- a periodic finite Fourier series per task axis j (x, y, and a
+  platform's phi: m = ``Model.dof`` series)
   (Swevers, Ganseman, Bilgin, De Schutter & Van Brussel, 1997), w_l = 2 pi l f0, l = 1..L::
 
       x_j(t)   = c_j + sum_l ( a_jl / w_l sin(w_l t) - b_jl / w_l cos(w_l t) )
@@ -34,7 +35,7 @@ from .model_ref import mismatch, model_entries
 
 __all__ = ["ExcitationError", "Signal", "FourierExcitation", "MultiSine", "multisine",
            "trajectory_of", "load_excitation", "write_excitation", "DEFAULT_DURATION",
-           "MAX_DURATION"]
+           "MAX_DURATION", "AXES"]
 
 #: s: the default multi-sine's length (``--duration``)
 DEFAULT_DURATION = 4.0
@@ -87,10 +88,10 @@ class FourierExcitation(Signal):
         f0, Hz (the period is 1 / f0).
     periods : int
         Whole periods the run lasts.
-    center : ndarray (2,)
-        c, m.
-    a, b : ndarray (2, L)
-        Coefficients, m/s, per axis (x, y) and harmonic.
+    center : ndarray (m,)
+        c, m (rad for phi); m = ``Model.dof``, the axes ``Model.task_names``.
+    a, b : ndarray (m, L)
+        Coefficients, m/s (rad/s for phi), per axis (x, y[, phi]) and harmonic.
     info : dict
         What the design reported (limits, objective, condition numbers), for the file.
     model : dict
@@ -110,7 +111,8 @@ class FourierExcitation(Signal):
     duration = property(lambda self: self.periods / self.base_hz, doc="s")
 
     def evaluate(self, t):
-        """Position (N, 2) m, velocity (N, 2) m/s, acceleration (N, 2) m/s^2 at times t (N,)."""
+        """Position (N, m) m, velocity (N, m) m/s, acceleration (N, m) m/s^2 at times t (N,)
+        (phi in rad, rad/s, rad/s^2)."""
         t = np.asarray(t, dtype=float)[:, None]
         w = 2 * np.pi * self.base_hz * np.arange(1, self.harmonics + 1)
         s, c = np.sin(w * t), np.cos(w * t)
@@ -209,21 +211,27 @@ def _toml_value(v):
 
 def write_excitation(path, exc, model):
     """Write ``exc`` as TOML (``[excitation]``: the model, :mod:`.model_ref`, a model file by its
-    path relative to ``path``'s folder, and the coefficients; ``[design]`` its ``info``, a dict
-    value such as ``ipopt`` or ``provenance`` as the sub-table ``[design.<key>]``),
-    atomically. The text is a function of ``exc``, the model and the file's folder only."""
+    path relative to ``path``'s folder, and the coefficients, ``a_<axis>`` and ``b_<axis>`` per
+    task axis: x and y, and phi for a platform; ``[design]`` its ``info``, a dict value such as
+    ``ipopt`` or ``provenance`` as the sub-table ``[design.<key>]``), atomically. The text is a
+    function of ``exc``, the model and the file's folder only."""
     from ..infra.results import write_atomic
     entries = model_entries(model, Path(path).parent)
+    axes = AXES[:len(exc.center)]
+    phi = len(axes) == 3
     lines = ["# pm2dof excitation: periodic finite Fourier series in task space (Swevers et al. "
              "1997)",
              "# x_j(t) = center_j + sum_l a_jl/w_l sin(w_l t) - b_jl/w_l cos(w_l t), "
-             "w_l = 2 pi l base_hz; j = x, y",
+             f"w_l = 2 pi l base_hz; j = {', '.join(axes)}",
              "# run it: pm2dof identify excite --excitation THIS_FILE --out run.csv", "",
              "[excitation]", *(f"{k} = {_toml_value(v)}" for k, v in entries.items()),
-             f"base_hz = {exc.base_hz!r}",
-             f"periods = {int(exc.periods)}", f"center = {_toml_list(exc.center)}   # m",
-             f"a_x = {_toml_list(exc.a[0])}   # m/s", f"a_y = {_toml_list(exc.a[1])}",
-             f"b_x = {_toml_list(exc.b[0])}   # m/s", f"b_y = {_toml_list(exc.b[1])}", ""]
+             f"base_hz = {exc.base_hz!r}", f"periods = {int(exc.periods)}",
+             f"center = {_toml_list(exc.center)}   # m{', m, rad' if phi else ''}"]
+    for letter, coef in (("a", exc.a), ("b", exc.b)):
+        lines += [f"{letter}_{axis} = {_toml_list(coef[j])}"
+                  + {"x": "   # m/s", "y": "", "phi": "   # rad/s"}[axis]
+                  for j, axis in enumerate(axes)]
+    lines.append("")
     if exc.info:
         tables = {k: v for k, v in exc.info.items() if isinstance(v, dict)}
         lines.append("[design]")
@@ -236,7 +244,13 @@ def write_excitation(path, exc, model):
 
 
 _MODEL_KEYS = ("model", "model_name", "formulation_sha256")
-_COEFFICIENTS = ("a_x", "a_y", "b_x", "b_y")
+#: the task axes of an excitation file's series (``Model.task_names`` of a point and a platform)
+AXES = ("x", "y", "phi")
+
+
+def _coefficient_keys(m):
+    """[excitation]'s coefficient keys of an m-axis file: a_x, a_y[, a_phi], b_x, b_y[, b_phi]."""
+    return tuple(f"{letter}_{axis}" for letter in "ab" for axis in AXES[:m])
 
 
 def _coefficients(pr, e, key):
@@ -278,32 +292,40 @@ def load_excitation(path, model=None):
     e = pr.table("excitation", d.get("excitation"))
     if e is None:
         pr.raise_if_any()
-    pr.keys("excitation", e, {*_MODEL_KEYS, "base_hz", "periods", "center", *_COEFFICIENTS},
-            ("base_hz", "periods", "center", *_COEFFICIENTS))
+    # a platform's file has a phi series too (a_phi, b_phi); a point's, x and y only
+    m = 3 if {"a_phi", "b_phi"} & set(e) else 2
+    coefficient_keys = _coefficient_keys(m)
+    pr.keys("excitation", e, {*_MODEL_KEYS, "base_hz", "periods", "center", *_coefficient_keys(3)},
+            ("base_hz", "periods", "center", *coefficient_keys))
     entries = {k: pr.text(f"excitation.{k}", e[k], nonempty=True) for k in _MODEL_KEYS
                if k in e}
     f0 = pr.number("excitation.base_hz", e["base_hz"], low=0.0, low_ok=False) \
         if "base_hz" in e else None
     periods = pr.number("excitation.periods", e["periods"], integer=True, low=1) \
         if "periods" in e else None
-    center = pr.vector("excitation.center", e["center"], ("x", "y"), meaning=", m") \
-        if "center" in e else None
+    center = pr.vector("excitation.center", e["center"], AXES[:m],
+                       meaning=", m" if m == 2 else " (x, y in m, phi in rad): a_phi and b_phi "
+                       "make it a platform's") if "center" in e else None
     design = pr.table("design", d.get("design"), required=False) or {}
-    coef = {k: _coefficients(pr, e, k) for k in _COEFFICIENTS if k in e}
+    coef = {k: _coefficients(pr, e, k) for k in coefficient_keys if k in e}
     lengths = {k: len(v) for k, v in coef.items() if v is not None}
     if len(set(lengths.values())) > 1:
-        pr.add("excitation", f"a_x, a_y, b_x, b_y need one number per harmonic each, got "
-                             f"lengths {lengths}")
+        pr.add("excitation", f"{', '.join(coefficient_keys)} need one number per harmonic each, "
+                             f"got lengths {lengths}")
     pr.raise_if_any()
     msg = None if model is None else mismatch(model, entries, Path(path).parent, str(path))
     if msg:
         raise ExcitationError(msg, path=path)
-    a = np.array([coef["a_x"], coef["a_y"]], dtype=float)
-    b = np.array([coef["b_x"], coef["b_y"]], dtype=float)
+    if model is not None and model.dof != m:
+        raise ExcitationError(f"{path} has series for ({', '.join(AXES[:m])}), but model "
+                              f"{model.name!r} has task {model.task_names}", path=path)
+    a = np.array([coef[f"a_{axis}"] for axis in AXES[:m]], dtype=float)
+    b = np.array([coef[f"b_{axis}"] for axis in AXES[:m]], dtype=float)
     exc = FourierExcitation(f0, periods, np.array(center, dtype=float), a, b, dict(design),
                             entries)
     _, v, acc = exc.evaluate([0.0])
     if np.abs(np.concatenate([v[0], acc[0]])).max() > 1e-9 * (1 + np.abs(a).max() * f0):
-        pr.stop(None, "the motion does not start at rest (sum of a_x, a_y and of w_l b_x, "
-                      "w_l b_y must be 0)")
+        pr.stop(None, f"the motion does not start at rest (sum of "
+                      f"{', '.join(coefficient_keys[:m])} and of "
+                      f"{', '.join('w_l ' + k for k in coefficient_keys[m:])} must be 0)")
     return exc

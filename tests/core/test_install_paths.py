@@ -4,6 +4,9 @@
 The full install (wheel and sdist in fresh virtual environments, used from an empty folder) is
 ``tests/install/smoke.sh`` (``make check-install``, run by CI); these are the in-process parts.
 """
+import contextlib
+import hashlib
+import io
 import json
 import shutil
 import subprocess
@@ -23,10 +26,52 @@ PM2DOF = [sys.executable, "-m", "pm2dof"]
 
 
 def _derive(*args):
-    """``pm2dof derive ARGS --no-build`` in-process; returns (exit code, stdout + stderr)."""
-    r = subprocess.run([*PM2DOF, "derive", *map(str, args), "--no-build"], capture_output=True,
-                       text=True, timeout=300)
-    return r.returncode, r.stdout + r.stderr
+    """``pm2dof derive ARGS --no-build`` in-process (``cli.main``; a subprocess would import
+    SymPy and CasADi again and derive with a cold SymPy cache, ~2 s more per call); returns
+    (exit code, stdout + stderr). The CLI's entry point as a program is checked by the
+    subprocess tests below (``models``, ``--version``, ``report``, ``table3``)."""
+    from pm2dof import cli
+    from pm2dof.infra import results
+    out, command_line = io.StringIO(), results.COMMAND_LINE
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+            rc = cli.main(["derive", *map(str, args), "--no-build"])
+    finally:
+        results.COMMAND_LINE = command_line          # main() records the command line it ran
+    return rc, out.getvalue()
+
+
+@pytest.fixture(scope="module")
+def libraries(tmp_path_factory):
+    """Compiled libraries kept across this module's tests, by the SHA-256 of their C: the user
+    model of :func:`_robot` is the same C in every test, compiled once (the first load, in
+    ``test_derive_into_the_default_folder...``) instead of once per test (~8 s of gcc -O3 each).
+    ``reuse(gen)`` copies a library built from ``gen``'s C, with its build record, into ``gen``:
+    ``load_model`` then finds it fresh by its own check (the record's source hash against the C
+    file, :func:`pm2dof.core.build.library_is_fresh`), or compiles if the C differs."""
+    from pm2dof.core.build import stamp_path
+    store = tmp_path_factory.mktemp("libraries")
+
+    class Libraries:
+        def _key(self, gen):
+            name = json.loads((gen / "manifest.json").read_text())["model"]
+            c = gen / f"{name}.c"
+            return name, hashlib.sha256(c.read_bytes()).hexdigest()
+
+        def keep(self, gen):
+            name, sha = self._key(gen)
+            lib = gen / f"lib{name}.so"
+            assert lib.is_file(), f"{lib} was not compiled"
+            (store / sha).mkdir(exist_ok=True)
+            for f in (lib, stamp_path(lib)):
+                shutil.copy2(f, store / sha / f.name)
+
+        def reuse(self, gen):
+            name, sha = self._key(gen)
+            for f in (store / sha).glob("*") if (store / sha).is_dir() else ():
+                shutil.copy2(f, gen / f.name)
+
+    return Libraries()
 
 
 def _robot(folder, name="myrobot", la="0.246", stem=None):
@@ -82,7 +127,8 @@ def test_cli_version_is_the_package_metadata():
 
 # --- your robot, your folder ------------------------------------------------------------------
 
-def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tmp_path, capfd):
+def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tmp_path, capfd,
+                                                                               libraries):
     model = _robot(tmp_path / "robots")
     rc, out = _derive(model)
     gen = tmp_path / "robots" / "generated" / "myrobot"
@@ -91,6 +137,7 @@ def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tm
     assert not (gen / "libmyrobot.so").exists()          # --no-build: compiled on first use
     m = pm2dof.load_model(model)
     assert "compiling" in capfd.readouterr().err and (gen / "libmyrobot.so").is_file()
+    libraries.keep(gen)
     assert Path(m.generated) == gen and m.spec.legs[0].la == 0.246
     q = m.ik([0.25, 0.26])
     assert abs(m.fk(q[:3]) - [0.25, 0.26]).max() < 1e-12
@@ -101,10 +148,11 @@ def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tm
     assert pm2dof.load_model(tmp_path / "moved" / "myrobot.toml").name == "myrobot"
 
 
-def test_generated_elsewhere_is_named_by_generated(tmp_path):
+def test_generated_elsewhere_is_named_by_generated(tmp_path, libraries):
     model = _robot(tmp_path)
     rc, out = _derive("--model", model, "--out", tmp_path / "build" / "c")   # --model: issue 22 #6
     assert rc == 0, out
+    libraries.reuse(tmp_path / "build" / "c")
     with pytest.raises(pm2dof.StaleGeneratedCodeError) as info:
         pm2dof.load_model(model)
     assert f"Run `pm2dof derive {model}`" in str(info.value)
@@ -188,13 +236,14 @@ def test_shipped_studies_by_name_and_study_show():
     assert r.stdout == (SHIPPED_STUDIES / "gains.toml").read_text()
 
 
-def test_a_study_names_its_model_and_generated_folder_relative_to_itself(tmp_path):
+def test_a_study_names_its_model_and_generated_folder_relative_to_itself(tmp_path, libraries):
     """A study folder holding the model file and its code in a non-default folder: the
     study's `model` and `generated` keys, relative to the study file, are all it needs; the
     whole folder can move."""
     from pm2dof.studies import SHIPPED_STUDIES, read_study, run_chunk
     model = _robot(tmp_path / "proj" / "robot")
     assert _derive(model, "--out", tmp_path / "proj" / "code")[0] == 0
+    libraries.reuse(tmp_path / "proj" / "code")
     text = (SHIPPED_STUDIES / "robustness.toml").read_text().replace(
         'model = "shang2010"', 'model = "../robot/myrobot.toml"\ngenerated = "../code"', 1)
     (tmp_path / "proj" / "studies").mkdir()

@@ -24,9 +24,9 @@ import toy_platform
 
 from pm2dof.core.model_file import read_model_file
 from pm2dof.core.paths import SHIPPED_MODELS
-from pm2dof.derive.model_functions import Derivation
 from pm2dof.derive.planning import facet_count
 from pm2dof.derive.run import derive_functions, derive_layouts
+from tests import derivations
 
 XE = np.array([0.3, 0.4, 0.2])
 XED = np.array([0.2, -0.3, 0.5])
@@ -47,7 +47,7 @@ def toy():
 
 @pytest.fixture(scope="module")
 def paper():
-    d = Derivation(read_model_file(SHIPPED_MODELS / "shang2010.toml"))
+    d = derivations.derivation(read_model_file(SHIPPED_MODELS / "shang2010.toml"))  # shared
     fs, lay = _derive(d)
     return d, fs, lay
 

@@ -9,9 +9,11 @@ model names), except where marked paper-only (``m``, ``shang2010``):
   this isolates the CasADi conversion, the code generation and the C compiler. 6 poses for
   the paper's robot, 3 for every other model (the cost is the per-model SymPy derivation
   and lambdify, ~1.5-3.5 s each, not the poses). Paper-only: sign(0) = 0 at an exact zero.
-* Regenerating into a temporary folder gives byte-identical files for every model (the
-  ``python -m pm2dof.derive --no-build`` subprocesses run in parallel, one per CPU); for the paper's
-  robot twice, with different hash seeds (deterministic output).
+* Regenerating into a temporary folder gives byte-identical files for every model
+  (``pm2dof.derive.run.derive(..., build=False)`` in this process, its SymPy derivation shared
+  with the 30-digit check: tests/derivations.py); for the paper's robot a second time in a
+  fresh interpreter (``python -m pm2dof.derive --no-build``) with another hash seed: the two
+  agree byte for byte (deterministic output, also across processes).
 * The manifest describes the files and the model file it was derived from; a model file
   whose formulation differs (an edited base, for every model; more edits for the paper's) is
   refused with :class:`pm2dof.StaleGeneratedCodeError`.
@@ -25,7 +27,6 @@ by at most 5): accumulated rounding ~1e-15..1e-14 relative; 1e-12 is a >= 100x m
 """
 from __future__ import annotations
 
-import concurrent.futures
 import hashlib
 import json
 import os
@@ -33,6 +34,7 @@ import re
 import shutil
 import subprocess
 import sys
+import traceback
 from pathlib import Path
 
 import casadi  # the build-time stack is required by these tests (dev dependencies), never skipped
@@ -44,6 +46,7 @@ import sympy
 import pm2dof
 from pm2dof.core.model_file import read_model_file
 from pm2dof.core.paths import PACKAGE, SHIPPED_GENERATED, SHIPPED_MODELS
+from tests import derivations
 
 TOL = 1e-12
 DPS = 30
@@ -101,9 +104,7 @@ def _sympy_functions(spec):
     """The SymPy derivation of a model, lambdified once per matrix for mpmath (cached)."""
     if spec.formulation_sha256 in _LAMBDIFIED:
         return _LAMBDIFIED[spec.formulation_sha256]
-    from pm2dof.derive.model_functions import Derivation
-
-    d = Derivation(spec)
+    d = derivations.derivation(spec)      # Derivation(spec), shared with the regeneration
     s, kin, dyn = d.sym, d.kin, d.dyn
     q, qa, xe = list(s.q), list(s.qa), list(s.xe)
     xed, xrd, xrdd = list(s.xed), list(s.xrd), list(s.xrdd)
@@ -252,44 +253,67 @@ def _first_difference(a: bytes, b: bytes):
         "<end of file>" if len(lb) < len(la) else lb[len(la)]
 
 
-def _derive(model_file, out, seed):
+def _layout(tmp_path_factory, model_file, label):
+    """root/models/<stem>.toml (a copy) and root/generated/<stem>/, as in the package, so the
+    manifest's relative model_file path is the same -> (copied model file, output folder)."""
+    root = tmp_path_factory.mktemp(f"derive_{model_file.stem}_{label}")
+    (root / "models").mkdir()
+    shutil.copyfile(model_file, root / "models" / model_file.name)
+    return root / "models" / model_file.name, root / "generated" / model_file.stem
+
+
+def _derive_in_process(model_file, out):
+    """``pm2dof.derive.run.derive(MODEL, OUT, build=False)`` in this process, its SymPy
+    derivation shared with the 30-digit check (tests/derivations.py) -> (rc, output)."""
+    from pm2dof.derive.run import derive
+    try:
+        with derivations.shared_in_derive():
+            derive(model_file, out, build=False, progress=None)
+    except Exception:                      # fails only this model's tests, with the traceback
+        return 1, traceback.format_exc()
+    return 0, ""
+
+
+def _derive_subprocess(model_file, out, seed):
     """python -m pm2dof.derive MODEL --out OUT --no-build with PYTHONHASHSEED=seed
-    -> (rc, output). OUT sits at the same depth below a models/ sibling as the package's
-    generated/<name>/, so the manifest's relative model_file path is the same."""
+    -> (rc, output)."""
     env = {**os.environ, "PYTHONHASHSEED": seed}
     r = subprocess.run([sys.executable, "-m", "pm2dof.derive", str(model_file), "--out", str(out),
-                        "--no-build"], cwd=out, env=env, capture_output=True, text=True,
+                        "--no-build"], cwd=out.parent, env=env, capture_output=True, text=True,
                        timeout=600)
     return r.returncode, r.stdout + r.stderr
 
 
+#: this process's hash seed ("random" unless PYTHONHASHSEED is set) and another, fixed one for
+#: the paper's second derivation
+OWN_SEED = os.environ.get("PYTHONHASHSEED", "random")
+OTHER_SEED = "4242" if OWN_SEED == "0" else "0"
+
+
 @pytest.fixture(scope="module")
 def regenerated(tmp_path_factory):
-    """Every model file of models/ regenerated into a temporary folder (PYTHONHASHSEED=4242),
-    the paper's robot a second time with PYTHONHASHSEED=0; the derivations run in parallel.
+    """Every model file of models/ regenerated into a temporary folder, in this process (its
+    hash seed, OWN_SEED: random unless PYTHONHASHSEED is set), one after the other; the paper's
+    robot a second time in a fresh interpreter with PYTHONHASHSEED=OTHER_SEED.
 
     Returns {(resolved model file, seed): (returncode, output, out_dir)}; a failing
     derivation fails only its own model's tests."""
-    jobs = [(p.resolve(), "4242") for p in sorted(SHIPPED_MODELS.glob("*.toml"))]
-    jobs.append((DEFAULT_MODEL.resolve(), "0"))
-    outs = {}
-    for job in jobs:  # root/models/<stem>.toml and root/generated/<stem>/, as in the package
-        root = tmp_path_factory.mktemp(f"derive_{job[0].stem}_seed{job[1]}")
-        (root / "models").mkdir()
-        shutil.copyfile(job[0], root / "models" / job[0].name)
-        outs[job] = root / "generated" / job[0].stem
-        outs[job].mkdir(parents=True)
-    jobs_files = {job: outs[job].parent.parent / "models" / job[0].name for job in jobs}
-    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, os.cpu_count() or 1)) as pool:
-        futures = {job: pool.submit(_derive, jobs_files[job], outs[job], job[1]) for job in jobs}
-        return {job: (*f.result(), outs[job]) for job, f in futures.items()}
+    out = {}
+    for path in sorted(SHIPPED_MODELS.glob("*.toml")):
+        model_file, folder = _layout(tmp_path_factory, path.resolve(), "own")
+        out[path.resolve(), OWN_SEED] = (*_derive_in_process(model_file, folder), folder)
+    model_file, folder = _layout(tmp_path_factory, DEFAULT_MODEL.resolve(), f"seed{OTHER_SEED}")
+    folder.mkdir(parents=True)
+    out[DEFAULT_MODEL.resolve(), OTHER_SEED] = (*_derive_subprocess(model_file, folder,
+                                                                    OTHER_SEED), folder)
+    return out
 
 
-def _regenerated_dir(model, regenerated, seed="4242"):
+def _regenerated_dir(model, regenerated, seed=OWN_SEED):
     key = (Path(model.spec.path).resolve(), seed)
     assert key in regenerated, f"{model.spec.path} was not regenerated"
     rc, output, out = regenerated[key]
-    assert rc == 0, f"python -m derive {model.spec.path} (PYTHONHASHSEED={seed}) failed ({rc}):\n{output}"
+    assert rc == 0, f"derive {model.spec.path} (PYTHONHASHSEED={seed}) failed ({rc}):\n{output}"
     return out
 
 
@@ -311,14 +335,16 @@ def test_regeneration_is_byte_identical(model, regenerated):
 
 
 def test_regeneration_is_deterministic_across_hash_seeds(m, regenerated):
-    """Paper only (one model suffices: the derivation code is shared)."""
-    o1, o2 = _regenerated_dir(m, regenerated, "4242"), _regenerated_dir(m, regenerated, "0")
+    """Paper only (one model suffices: the derivation code is shared): this process's
+    derivation against a fresh interpreter's with another hash seed."""
+    o1 = _regenerated_dir(m, regenerated, OWN_SEED)
+    o2 = _regenerated_dir(m, regenerated, OTHER_SEED)
     for name in gen_files(m):
         a, b = (o1 / name).read_bytes(), (o2 / name).read_bytes()
         if a != b:
             line, x, y = _first_difference(a, b)
-            pytest.fail(f"{name} depends on PYTHONHASHSEED (4242 vs 0) at line {line}:\n"
-                        f"  {x[:200]}\n  {y[:200]}")
+            pytest.fail(f"{name} depends on PYTHONHASHSEED ({OWN_SEED} vs {OTHER_SEED}) at line "
+                        f"{line}:\n  {x[:200]}\n  {y[:200]}")
 
 
 def test_generated_code_has_no_timestamp_or_local_path(model):

@@ -10,6 +10,8 @@ independent solvers (the 2-D case is tests/control/test_splits.py, through the g
 * preload: S^T tau = u always; where the preload holds, the optimum of the QP (SLSQP, and the
   KKT certificate); where it cannot, the LP's largest worst-case margin (HiGHS).
 """
+import functools
+
 import casadi as ca
 import numpy as np
 import pytest
@@ -22,7 +24,10 @@ M = 3
 HIGHS = {"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10}
 
 
+@functools.lru_cache(maxsize=None)
 def _functions(n):
+    """The splits as CasADi functions of S (n, 3), built once per n (n = 5: ~1.3 s; a CasADi
+    Function is immutable, so the tests may share it)."""
     S, u, w = ca.SX.sym("S", n, M), ca.SX.sym("u", M), ca.SX.sym("w", n)
     sigma, p = ca.SX.sym("sigma", n), ca.SX.sym("p", n)
     tau_pl, mode = preload(S, u, w, sigma, p)

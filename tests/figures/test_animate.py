@@ -59,3 +59,18 @@ def test_frames_are_the_full_redraws_and_drawn_once(monkeypatch):
     for j, want in full.items():
         d = np.abs(np.asarray(frames[j]).astype(int) - want.astype(int)).max(axis=2)
         assert d.max() <= 1 and np.count_nonzero(d) <= 4, (j, d.max(), np.count_nonzero(d))
+
+
+@pytest.mark.parametrize("name", ["rrr3_platform", "prr_point"])
+def test_a_png_is_one_frame_and_any_kind_animates(tmp_path, name):
+    """``--out F.png`` writes the middle frame; on a platform animate_move crashed in its
+    magnification (np.hypot of (x, y, phi))."""
+    m = pm2dof.load_model(name)
+    path, r = animate_move(m, tmp_path / "still.png", "low", "na", settle_time=0.0)
+    with Image.open(path) as im:
+        assert im.format == "PNG" and im.size[0] > 800
+    path, r = animate_move(m, tmp_path / "a.gif", "low", "apd", every=50, settle_time=0.0)
+    with Image.open(path) as im:
+        assert im.format == "GIF" and im.n_frames == -(-len(r.t) // 50)
+    with pytest.raises(ValueError, match=r"\.gif file .* or a \.png"):
+        animate_move(m, tmp_path / "a.jpg")

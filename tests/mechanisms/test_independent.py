@@ -21,6 +21,7 @@ from pm2dof.derive.dynamics import Dynamics
 from pm2dof.derive.kinematics import FK_NEWTON_STEPS, Kinematics
 from pm2dof.derive.symbols import Symbols
 from pm2dof.derive.to_casadi import Converter
+from tests import derivations
 from tests.mechanisms.independent import Mechanism, lumped_theta, random_links
 from tests.mechanisms.models import model_path
 
@@ -74,11 +75,18 @@ def _sgn(v):
 class Lambdified:
     """The derivation of one spec, as NumPy functions of (q, xe, xed, xrd, xrdd, tau, theta)."""
 
-    def __init__(self, spec):
+    def __init__(self, spec, derivation=None):
+        """``derivation``: the model file's Derivation (its sym, kin, dyn), when it is a
+        shipped file as read; else Symbols, Kinematics and Dynamics of ``spec`` are built here
+        (the same three classes, as Derivation builds them)."""
         self.spec = spec
-        sym = self.sym = Symbols(spec.n_legs, spec.param_names, spec.task_names)
-        self.kin = kin = Kinematics(spec, sym)
-        self.dyn = dyn = Dynamics(spec, sym, kin)
+        if derivation is not None:
+            sym, kin, dyn = derivation.sym, derivation.kin, derivation.dyn
+            self.sym, self.kin, self.dyn = sym, kin, dyn
+        else:
+            sym = self.sym = Symbols(spec.n_legs, spec.param_names, spec.task_names)
+            self.kin = kin = Kinematics(spec, sym)
+            self.dyn = dyn = Dynamics(spec, sym, kin)
         self.n, self.m, self.p = spec.n_legs, sym.m, len(spec.param_names)
         self.args = [list(sym.q), list(sym.xe), list(sym.xed), list(sym.xrd), list(sym.xrdd),
                      list(sym.tau_a), list(sym.theta)]
@@ -127,9 +135,9 @@ class Lambdified:
 def _case(name):
     model, change = CASES[name]
     spec = read_model_file(model_path(model))
-    if change is not None:
-        spec = change(spec)
-    return Lambdified(spec)
+    if change is None:     # a shipped file as it is: its derivation, shared (tests/derivations.py)
+        return Lambdified(spec, derivations.derivation(spec))
+    return Lambdified(change(spec))
 
 
 def _legs(spec):
@@ -452,13 +460,19 @@ def test_platform_parallel_measure_is_zero_where_the_lines_meet():
     legs = tuple(dataclasses.replace(leg, attach=(0.05 * leg.base[0] / np.hypot(*leg.base),
                                                   0.05 * leg.base[1] / np.hypot(*leg.base)))
                  for leg in spec.legs)
-    radial = Lambdified(_with(spec, legs=legs))
-    f = sp.lambdify([list(radial.sym.q), list(radial.sym.xe)], radial.kin.parallel_measure(),
-                    "numpy", cse=True)
+    radial = _with(spec, legs=legs)
+    # its kinematics only (the measure and ik): Lambdified would derive its dynamics too (~6 s)
+    sym = Symbols(radial.n_legs, radial.param_names, radial.task_names)
+    kin = Kinematics(radial, sym)
+    f = sp.lambdify([list(sym.q), list(sym.xe)], kin.parallel_measure(), "numpy", cse=True)
+    ik = sp.lambdify([list(sym.xe)], kin.ik(), "numpy")
+
+    def q_of(xe):
+        return np.array(ik(xe), dtype=float).ravel()      # as Lambdified.q
     xe = np.zeros(3)
-    q = radial.q(xe)
+    q = q_of(xe)
     assert abs(float(f(q, xe))) < 1e-5
-    assert float(f(radial.q(xe + [0, 0, 0.3]), xe + [0, 0, 0.3])) > 0.05
+    assert float(f(q_of(xe + [0, 0, 0.3]), xe + [0, 0, 0.3])) > 0.05
 
 
 # --- CasADi conversion (in this module: it reuses the cached derivations of _case) ----------

@@ -15,7 +15,7 @@ def add_parser(sub, common):
                    help="NA (eqs. 28-29, default) or APD (eq. 40)")
     p.add_argument("--split", choices=["min_norm", "min_max", "preload"],
                    help="torque split (default: [control].split)")
-    p.add_argument("--out", default="move.gif", help="GIF to write (default move.gif)")
+    p.add_argument("--out", default="move.gif", help="GIF to write (default move.gif), or a .png for one frame at the middle of the move")
     p.add_argument("--magnify", type=POSITIVE, help="error magnification (default: a power of ten "
                    "that keeps the error below 0.3 of the move's length)")
     p.add_argument("--fps", type=int, default=20, help="GIF frames per second (default 20)")

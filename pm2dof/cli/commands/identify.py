@@ -101,18 +101,29 @@ def add_parser(sub, common):
                     "Swevers et al. 1997) that maximises log det of the base regressor's "
                     "information matrix, with CasADi + IPOPT (1-2 minutes), within speed, "
                     "acceleration, torque, singularity and region limits checked every 1 ms, and "
-                    "write it as TOML to --out (the model recorded relative to the file).",
-                    ["pm2dof identify design --out exc.toml"])
+                    "write it as TOML to --out (the model recorded relative to the file). A "
+                    "platform's excitation moves phi too, within its own limits (--phi-*).",
+                    ["pm2dof identify design --out exc.toml",
+                     "pm2dof identify design --model rrr3_platform --phi-range 0.1 --out exc.toml"])
     r.add_argument("--out", required=True, metavar="FILE", help="excitation file to write (TOML)")
     for flag, kind, default, text in (
             ("--base-hz", float, 0.2, "base frequency f0, Hz (default 0.2: 5 s period)"),
             ("--harmonics", int, 10, "harmonics of f0 (default 10: up to 2 Hz)"),
             ("--periods", int, 2, "periods per run (default 2: 10 s)"),
-            ("--v-max", float, 0.5, "task speed limit, m/s (default 0.5)"),
-            ("--a-max", float, 10.0, "task acceleration limit, m/s^2 (default 10)"),
+            ("--v-max", float, 0.5, "speed limit of (x, y), m/s (default 0.5)"),
+            ("--a-max", float, 10.0, "acceleration limit of (x, y), m/s^2 (default 10)"),
             ("--tau-fraction", float, 0.5, "torque limit / tau_max (default 0.5)"),
             ("--seed", int, 0, "seed of IPOPT's random start (default 0)")):
         r.add_argument(flag, type=kind, default=default, help=text)
+    # a platform's orientation: its own limits (pm2dof.identification.design.phi_limits)
+    for flag, metavar, text in (
+            ("--phi-v-max", "RAD_S", "a platform's phi speed limit, rad/s (default: v-max / l, "
+             "l the platform's radius)"),
+            ("--phi-a-max", "RAD_S2", "a platform's phi acceleration limit, rad/s^2 (default: "
+             "a-max / l)"),
+            ("--phi-range", "RAD", "a platform's |phi - phi_c0| limit about the centre's phi, "
+             "rad (default: the largest phi excursion of the model's moves)")):
+        r.add_argument(flag, type=POSITIVE, metavar=metavar, help=text)
 
     r = sub_command("monte-carlo", "the identification targets measured over N seeds",
                     "Measure the identification targets over N seeds: each draws a plant truth "
@@ -184,7 +195,8 @@ def _design(args):
     print(format_design(run_design(
         model(args), args.out, base_hz=args.base_hz, harmonics=args.harmonics,
         periods=args.periods, v_max=args.v_max, a_max=args.a_max,
-        tau_fraction=args.tau_fraction, seed=args.seed, progress=_progress(args))))
+        tau_fraction=args.tau_fraction, phi_v_max=args.phi_v_max, phi_a_max=args.phi_a_max,
+        phi_range=args.phi_range, seed=args.seed, progress=_progress(args))))
     return 0
 
 

@@ -1,0 +1,42 @@
+# One SymPy derivation per model file per test process, shared by the modules that need one.
+"""The SymPy derivation of a shipped model (:class:`pm2dof.derive.model_functions.Derivation`)
+takes 1-8 s (rrr4_platform the most), and three test modules build the same ones:
+tests/derive/test_generated.py (regeneration and the 30-digit check), test_derive_task_dimension.py
+(the paper's robot) and tests/mechanisms/test_independent.py (the shipped mechanisms against an
+independent formulation). A derivation is a pure function of its model file, so it is built
+once per process and shared; conftest.py's scheduler runs the three modules in one pytest-xdist
+worker, so the sharing holds under ``make test`` too.
+
+Keyed by the SHA-256 of the model file's bytes: the same file content, the same derivation
+(wherever the file lies: a derivation does not depend on the file's path; a spec changed in
+memory, e.g. by ``dataclasses.replace``, is never looked up here).
+"""
+from __future__ import annotations
+
+import contextlib
+
+_CACHE: dict = {}
+
+
+def derivation(spec):
+    """``Derivation(spec)`` of a model file as read (``read_model_file``), built once per
+    process."""
+    from pm2dof.derive.model_functions import Derivation
+    key = spec.file_sha256
+    if key not in _CACHE:
+        _CACHE[key] = Derivation(spec)
+    return _CACHE[key]
+
+
+@contextlib.contextmanager
+def shared_in_derive():
+    """Within the block, :func:`pm2dof.derive.run.derive` takes its SymPy derivation from
+    :func:`derivation` (built there if not yet): everything else of the pipeline (the CasADi
+    functions, the C, the header and the manifest) runs as it does for ``pm2dof derive``."""
+    from pm2dof.derive import run
+    built = run.Derivation
+    run.Derivation = derivation
+    try:
+        yield
+    finally:
+        run.Derivation = built
