@@ -18,8 +18,7 @@ from pm2dof.control.simulate import simulate
 from pm2dof.control.trajectory import line_moves, model_move
 from pm2dof.core.model_file import read_model_file
 from pm2dof.core.paths import SHIPPED_MODELS
-from pm2dof.derive.kinematics import (FK_NEWTON_STEPS, FK_NEWTON_TOL, FK_TRACKING_STEPS,
-                                      Kinematics)
+from pm2dof.derive.kinematics import FK_NEWTON_STEPS, FK_NEWTON_TOL, FK_TRACKING_STEPS, Kinematics
 from pm2dof.derive.symbols import Symbols
 
 PLATFORMS = sorted(s.name for s in (read_model_file(p) for p in SHIPPED_MODELS.glob("*.toml"))
