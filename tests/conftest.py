@@ -306,24 +306,31 @@ def pytest_collection_modifyitems(config, items):
 #: tests/derivations.py): one work unit, so one worker builds each derivation once.
 _SHARED_UNITS = dict.fromkeys(("tests/derive/test_generated.py",
                                "tests/derive/test_derive_task_dimension.py",
-                               "tests/mechanisms/test_independent.py"), "derivations")
+                               "tests/mechanisms/test_independent.py",
+                               "tests/derivatives/test_derivatives_mpmath.py"), "derivations")
 #: The longest work units, longest first (CPU seconds of one run, Nov 2026, in brackets); the
 #: others follow in pytest-xdist's order (most tests first). Longest first keeps a long unit from
 #: starting last while the other worker idles; a stale list only costs time, never a test.
 _LONGEST_FIRST = (
-    "derivations",                                          # (97)
-    "tests/studies/test_studies_cluster.py",                # (27)
-    "tests/derivatives/test_derivatives_mpmath.py",         # (26)
-    "tests/core/test_install_paths.py",                     # (21)
-    "tests/figures/test_figures_layout.py",                 # (20)
-    "tests/identification/test_identification_conclusions.py",  # (18)
-    "tests/identification/test_identification_design.py",   # (15)
-    "tests/examples/test_c_example.py",                     # (9)
-    "tests/derive/test_splits_3d.py",                       # (8)
-    "tests/control/test_closed_loop.py",                    # (7)
-    "tests/identification/test_identification_commands.py",  # (7)
-    "tests/bench/test_bench.py",                            # (6)
-    "tests/export/test_export_project.py",                  # (6)
+    "derivations",                                          # (122)
+    "tests/studies/test_studies_cluster.py",                # (33)
+    "tests/figures/test_figures_layout.py",                 # (21)
+    "tests/identification/test_identification_conclusions.py",  # (16)
+    "tests/core/test_install_paths.py",                     # (15)
+    "tests/identification/test_identification_design.py",   # (13)
+    "tests/examples/test_c_example.py",                     # (10)
+    "tests/control/test_closed_loop.py",                    # (8)
+    "tests/export/test_export_new_kinds.py",                # (7)
+    "tests/identification/test_identification_rest.py",     # (7)
+    "tests/export/test_export_project.py",                  # (7)
+    "tests/identification/test_identification_fit.py",      # (6)
+    "tests/planning/test_planning_topp.py",                 # (6)
+    "tests/test_api.py",                                    # (6)
+    "tests/bench/test_bench.py",                            # (5)
+    "tests/identification/test_identification_commands.py",  # (5)
+    "tests/test_docs_api_links.py",                         # (4)
+    "tests/analysis/test_maps.py",                          # (4)
+    "tests/derive/test_splits_3d.py",                       # (4)
 )
 
 

@@ -20,6 +20,7 @@ import pm2dof
 from pm2dof.core import paths
 from pm2dof.core.model_file import read_model_file
 from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
+from tests import derivations
 
 PAPER = SHIPPED_MODELS / "shang2010.toml"
 PM2DOF = [sys.executable, "-m", "pm2dof"]
@@ -29,12 +30,18 @@ def _derive(*args):
     """``pm2dof derive ARGS --no-build`` in-process (``cli.main``; a subprocess would import
     SymPy and CasADi again and derive with a cold SymPy cache, ~2 s more per call); returns
     (exit code, stdout + stderr). The CLI's entry point as a program is checked by the
-    subprocess tests below (``models``, ``--version``, ``report``, ``table3``)."""
+    subprocess tests below (``models``, ``--version``, ``report``, ``table3``).
+
+    The SymPy derivation of a model file's content is built once per process
+    (tests/derivations.py): this module derives the same files (:func:`_robot`'s) several
+    times, ~1.3 s each; the rest of ``pm2dof derive`` (checks, CasADi, C, manifest) runs every
+    time."""
     from pm2dof import cli
     from pm2dof.infra import results
     out, command_line = io.StringIO(), results.COMMAND_LINE
     try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out), \
+                derivations.shared_in_derive():
             rc = cli.main(["derive", *map(str, args), "--no-build"])
     finally:
         results.COMMAND_LINE = command_line          # main() records the command line it ran

@@ -9,7 +9,9 @@ inputs: its error is a few ulps times the condition of the computation; 1e-10 of
 largest entry (the checks of the model functions use 1e-12 for single expressions; the
 Jacobians chain several) is ~1e6 ulps of margin, and a wrong entry is off by O(1).
 
-Two models (the paper's and the five-bar: the differentiation and lambdify take ~10 s each).
+Two models (the paper's and the five-bar: the differentiation and lambdify take ~5-11 s each;
+the derivation itself is the one tests/derive/test_generated.py builds: tests/derivations.py,
+the same worker under ``make test``).
 """
 import mpmath
 import numpy as np
@@ -17,6 +19,7 @@ import pytest
 import sympy
 
 import pm2dof
+from tests import derivations
 
 DPS = 30
 TOL = 1e-10
@@ -29,9 +32,8 @@ def _sgn(v):
 
 @pytest.fixture(scope="module", params=MODELS)
 def setup(request):
-    from pm2dof.derive.model_functions import Derivation
     model = pm2dof.load_model(request.param)
-    d = Derivation(model.spec)
+    d = derivations.derivation(model.spec)   # Derivation(spec), shared (tests/derivations.py)
     s, kin, dyn = d.sym, d.kin, d.dyn
     mods = [{"sgn": _sgn}, "mpmath"]
     jac = sympy.lambdify([list(s.q), list(s.xed), list(s.tau_a), list(s.theta)],
