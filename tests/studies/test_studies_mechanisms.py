@@ -1,4 +1,4 @@
-# A quick study on one model of each new kind (issue 26): a platform, prismatic actuators,
+# A quick study on one model of each new kind (issue 26): a platform, prismatic actuators, cylinders,
 # gravity. The rows go through the study's own path (check_study, run_chunk, the results
 # folder), in this process: the cluster is tested in test_studies_cluster.py.
 import numpy as np
@@ -16,8 +16,8 @@ from pm2dof.studies import (
 from pm2dof.studies.report import columns_of, summarise
 from pm2dof.studies.store import finish_out, prepare_out, write_chunk
 
-# one of each new kind: a 3-RRR platform (m = 3), PRR legs at a point, the vertical plane
-MODELS = ("rrr3_platform", "prr_point", "shang2010_vertical")
+# one of each new kind: a 3-RRR platform (m = 3), PRR legs at a point, RPR legs, the vertical plane
+MODELS = ("rrr3_platform", "prr_point", "rpr3_platform", "shang2010_vertical")
 
 STUDY = """
 [study]
