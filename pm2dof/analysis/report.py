@@ -7,14 +7,20 @@ from ..core.errors import SingularityError, WorkspaceError
 __all__ = ["model_report", "report_pose"]
 
 
+def _pose(m, x, y):
+    """The task pose at (x, y): a platform at its home orientation ``[platform] home``."""
+    return np.array([x, y] if m.dof == 2 else [x, y, m.spec.home[2]], dtype=float)
+
+
 def _grid(m, n=41):
-    """Task positions on a grid over the bases' bounding box where every function is defined."""
+    """Task positions on a grid over the bases' bounding box where every function is defined
+    (a platform at its home orientation)."""
     lo, hi = m.bases.min(axis=0), m.bases.max(axis=0)
     pts = []
     for x in np.linspace(lo[0], hi[0], n):
         for y in np.linspace(lo[1], hi[1], n):
             try:
-                q = m.ik([x, y])
+                q = m.ik(_pose(m, x, y))
                 m.W(q)
             except (WorkspaceError, SingularityError):
                 continue
@@ -23,7 +29,7 @@ def _grid(m, n=41):
 
 
 def report_pose(m, pts=None):
-    """(xe (2,), what) where the report evaluates Me: the midpoint of the model's first line
+    """(xe (m,), what) where the report evaluates Me: the midpoint of the model's first line
     move, or without one (or outside the workspace) the grid point of :func:`_grid` farthest
     from both singularities."""
     for name in line_moves(m):
@@ -41,7 +47,7 @@ def report_pose(m, pts=None):
     best = max(pts, key=lambda p: (np.asarray(m.singularity_measures(p[2])) /
                                    [m.singularity_threshold,
                                     m.parallel_singularity_threshold]).min())
-    return np.array(best[:2]), "the grid point farthest from both singularities"
+    return _pose(m, *best[:2]), "the grid point farthest from both singularities"
 
 
 def model_report(m, seed=0, samples=200):
@@ -64,17 +70,21 @@ def model_report(m, seed=0, samples=200):
     rng = np.random.default_rng(seed)
     lines = [f"model {m.name!r}: {m.n_legs} legs, {len(m.param_names)} parameters "
              f"({m.spec.friction} friction)", f"  generated C: {m.library}"]
-    lines.append("  theta_nominal (Tables 1-2):")
+    lines.append("  theta_nominal ([nominal]; Tables 1-2 for the paper's robot):")
     for name, value in zip(m.param_names, m.theta_nominal):
         lines.append(f"    {name:8s} {value:9.4f}")
     pts = _grid(m)
     xe, what = report_pose(m, pts)
     q = m.ik(xe)
     Me = m.Me(q, m.theta_nominal)
-    lines.append(f"  at xe = {np.round(xe, 6).tolist()} m ({what}):")
-    lines.append(f"    q  = {np.round(q, 4).tolist()} rad")
-    lines.append(f"    Me = [[{Me[0, 0]:.4f}, {Me[0, 1]:.4f}], [{Me[1, 0]:.4f}, {Me[1, 1]:.4f}]] kg, "
-                 f"eigenvalues {np.round(np.linalg.eigvalsh(Me), 4).tolist()}")
+    units = "m" if m.dof == 2 else "m, m, rad"
+    lines.append(f"  at xe = {np.round(xe, 6).tolist()} {units} ({what}):")
+    linear = any(leg.kind != "RRR" for leg in m.spec.legs)
+    lines.append(f"    q  = {np.round(q, 4).tolist()} "
+                 + ("rad (qa of a linear actuator in m)" if linear else "rad"))
+    rows = ", ".join("[" + ", ".join(f"{v:.4f}" for v in row) + "]" for row in Me)
+    lines.append(f"    Me = [{rows}] kg" + ("" if m.dof == 2 else " (kg m, kg m^2 in phi)")
+                 + f", eigenvalues {np.round(np.linalg.eigvalsh(Me), 4).tolist()}")
     conds, sings = [], []
     Ys = []
     for _x, _y, qq in pts:
@@ -83,7 +93,7 @@ def model_report(m, seed=0, samples=200):
         sings.append(m.singularity_measures(qq))
     sings = np.array(sings)
     for k in rng.choice(len(pts), size=min(samples, len(pts)), replace=False):
-        v = rng.normal(size=(3, 2)) * [[0.3], [0.3], [5.0]]
+        v = rng.normal(size=(3, m.dof)) * [[0.3], [0.3], [5.0]]
         Ys.append(m.Y(pts[k][2], v[0], v[0], v[2]))  # reference = measured velocity
     Y = np.vstack(Ys)
     sv = np.linalg.svd(Y, compute_uv=False)
@@ -92,9 +102,11 @@ def model_report(m, seed=0, samples=200):
                  f"and clear of both singularities:")
     lines.append(f"    cond(S^T S): min {min(conds):.3g}, median {np.median(conds):.3g}, "
                  f"max {max(conds):.3g}")
-    lines.append(f"    type I  min_i |sin(qb_i - qa_i)|: min {sings[:, 0].min():.3g}, max "
+    lines.append(f"    type I  (RRR |sin(qb_i - qa_i)|, PRR |d . u(qb)|, RPR 1): min "
+                 f"{sings[:, 0].min():.3g}, max "
                  f"{sings[:, 0].max():.3g} (threshold {m.singularity_threshold})")
-    lines.append(f"    type II sigma_min(S, unit rows)/sqrt(n/2): min {sings[:, 1].min():.3g}, max "
+    lines.append(f"    type II ({'sigma_min(S, unit rows)/sqrt(n/2)' if m.dof == 2 else 'the legs lines, docs/model-file.md'}): "
+                 f"min {sings[:, 1].min():.3g}, max "
                  f"{sings[:, 1].max():.3g} (threshold {m.parallel_singularity_threshold})")
     lines.append(f"    regressor Y stacked over {len(Ys)} random states: rank {rank} of "
                  f"{Y.shape[1]} (singular values {sv[-1]:.3g} .. {sv[0]:.3g})")
