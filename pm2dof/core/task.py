@@ -15,7 +15,7 @@ import numpy as np
 from .errors import ArgumentError, StaleGeneratedCodeError, UnsupportedMechanismError
 from .paths import derive_command
 
-__all__ = ["POINT_TASK_NAMES", "ENERGY_FUNCTIONS", "spec_task_names", "is_rr_point",
+__all__ = ["effort_unit", "POINT_TASK_NAMES", "ENERGY_FUNCTIONS", "spec_task_names", "is_rr_point",
            "require_rr_point", "require_generated", "task_vector", "mechanism",
            "orientation_length"]
 
@@ -97,3 +97,11 @@ def orientation_length(model):
     if getattr(spec, "end_effector", "point") == "point":
         return None
     return max(float(np.hypot(*leg.attach)) for leg in spec.legs)
+
+
+def effort_unit(model):
+    """The unit of the actuators' efforts, for printed text: "N m" (revolute actuators), "N"
+    (linear ones: PRR sliders, RPR cylinders) or "N m or N" (both)."""
+    kinds = {leg.actuator for leg in model.spec.legs}
+    return {frozenset({"revolute"}): "N m", frozenset({"prismatic"}): "N"}.get(
+        frozenset(kinds), "N m or N")

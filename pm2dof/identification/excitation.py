@@ -154,10 +154,11 @@ def run_excite(out, *, model=None, generated=None, excitation_file=None, duratio
     return log
 
 
-def format_excite(out, log):
-    """The line ``pm2dof identify excite`` prints of the simulated ``log`` written to ``out``."""
+def format_excite(out, log, unit="N m"):
+    """The line ``pm2dof identify excite`` prints of the simulated ``log`` written to ``out``;
+    ``unit``: the efforts' (:func:`pm2dof.core.task.effort_unit`: N for linear actuators)."""
     return (f"wrote {out}: {len(log.t)} samples, {log.duration:.3f} s at T = "
             f"{log.period * 1e3:g} ms, {log.qa.shape[1]} legs; peak |tau| "
-            f"{np.abs(log.tau).max():.3f} N m ({log.meta['saturated_samples']} saturated "
+            f"{np.abs(log.tau).max():.3f} {unit} ({log.meta['saturated_samples']} saturated "
             f"samples), tracking RMSE {log.meta['tracking_rmse_m']} m, excitation up to "
             f"{log.meta.get('excitation_max_hz', '?')} Hz")

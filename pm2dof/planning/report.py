@@ -175,9 +175,10 @@ def csv_text(model, plan, prov=None):
     return meta + head + "\n" + rows        # the shortest exact decimals, as logs write them
 
 
-def format_report(res, loops=None):
-    """The text ``pm2dof plan`` prints."""
-    lines = [f"model {res['model']}: tau_max {res['tau_max']} N m, margin {res['margin']}, "
+def format_report(res, loops=None, unit="N m"):
+    """The text ``pm2dof plan`` prints; ``unit``: the efforts' (:func:`pm2dof.core.task.effort_unit`:
+    N for linear actuators)."""
+    lines = [f"model {res['model']}: tau_max {res['tau_max']} {unit}, margin {res['margin']}, "
              f"grid {res['grid']}"]
     for row in res["paths"]:
         lines.append(f"\n{row['name']}: {row['length_m']:.4f} m ({'+'.join(row['kinds'])}; "
@@ -188,14 +189,14 @@ def format_report(res, loops=None):
                             for sp, ok in k["within_limits"].items())
             lines.append(f"  kinematic S-curve ({k['v_max']:g} m/s, {k['a_max']:g} m/s^2, "
                          f"{k['j_max']:g} m/s^3): {k['duration_s']:.4f} s; peak |tau| "
-                         f"{max(k['tau_peak_N_m']['min_norm']):.3f} N m min-norm ({lim})")
+                         f"{max(k['tau_peak_N_m']['min_norm']):.3f} {unit} min-norm ({lim})")
         for split in ("min_norm", "min_max"):
             r = row.get(split)
             if r and "infeasible" in r:
                 lines.append(f"  time-optimal, {split:8s}: infeasible: {r['infeasible']}")
             elif r:
                 lines.append(f"  time-optimal, {split:8s}: {r['duration_s']:.4f} s (peak |tau| "
-                             f"{max(r['tau_peak_N_m']):.3f} N m, top speed {r['max_speed_m_s']:.3f}"
+                             f"{max(r['tau_peak_N_m']):.3f} {unit}, top speed {r['max_speed_m_s']:.3f}"
                              f" m/s; {r['compute_ms']:.1f} ms, {r['grid']} grid points)")
         if "saving_min_max_percent" in row:
             lines.append(f"  the redundancy (min-max over min-norm) saves "
@@ -206,7 +207,7 @@ def format_report(res, loops=None):
                 lines.append(f"  smoothed, {split:8s}: {r['duration_s']:.4f} s vs strict "
                              f"{r['strict_duration_s']:.4f} s on its {r['grid']}-point grid "
                              f"(+{100 * (r['duration_s'] / r['strict_duration_s'] - 1):.1f} %, "
-                             f"|dtau/dt| <= {max(r['tau_rate']):.0f} N m/s; IPOPT "
+                             f"|dtau/dt| <= {max(r['tau_rate']):.0f} {unit}/s; IPOPT "
                              f"{r['solve_time_s']:.2f} s)")
     for name, rows in (loops or {}).items():
         lines.append(f"\nclosed loop on {name} (plant truth of the model file, quantised "
@@ -217,7 +218,7 @@ def format_report(res, loops=None):
                 lines.append(f"  margin {r['margin']:.2f} ({r['duration_s']:.4f} s) "
                              f"{law.upper():3s}: RMSE {c['rmse_m']:.3e} m, max error "
                              f"{c['max_error_m']:.3e} m, peak |tau| {max(c['tau_peak_N_m']):.3f} "
-                             f"N m, {c['saturated']} saturated samples, {c['outcome']}")
+                             f"{unit}, {c['saturated']} saturated samples, {c['outcome']}")
     return "\n".join(lines)
 
 

@@ -20,3 +20,14 @@ def test_report_prints_the_models_own_Me_and_the_rank_of_Y(name):
     np.testing.assert_allclose(rows, Me, atol=5e-5)          # printed to 4 decimals
     rank = re.search(r"rank (\d+) of (\d+)", text)
     assert int(rank.group(2)) == len(m.param_names) and 0 < int(rank.group(1)) <= len(m.param_names)
+
+
+def test_printed_efforts_carry_the_actuators_unit():
+    """A linear actuator's effort is a force: `plan` and `identify excite` printed "N m"."""
+    from pm2dof.core.task import effort_unit
+    from pm2dof.planning.report import format_report
+    assert effort_unit(pm2dof.load_model("shang2010")) == "N m"
+    assert effort_unit(pm2dof.load_model("rpr3_platform")) == "N"
+    res = {"model": "prr_point", "tau_max": [300.0] * 3, "margin": 1.0, "grid": 10, "paths": []}
+    assert format_report(res, None, effort_unit(pm2dof.load_model("prr_point"))).startswith(
+        "model prr_point: tau_max [300.0, 300.0, 300.0] N, margin")

@@ -165,12 +165,15 @@ def _report(args):
 
 
 def _excite(args):
-    from ...identification.excitation import format_excite, run_excite
+    from ...core.task import effort_unit
+    from ...identification.excitation import format_excite, model_of_excitation, run_excite
     log = run_excite(args.out, model=args.model, generated=args.generated,
                      excitation_file=args.excitation, duration=args.duration,
                      quantise=not args.exact_encoders, controller=args.controller,
                      progress=_progress(args))
-    print(format_excite(args.out, log))
+    m = model_of_excitation(args.excitation, args.duration, model=args.model,
+                            generated=args.generated)
+    print(format_excite(args.out, log, effort_unit(m)))
     return 0
 
 

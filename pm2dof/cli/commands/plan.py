@@ -46,6 +46,7 @@ def add_parser(sub, common):
 
 def run(args):
     from ...core.errors import ArgumentError
+    from ...core.task import effort_unit
     from ...infra.results import dumps
     from ...planning.report import format_report, run_plan, write_plan_csvs
     if args.tau_rate is not None and not args.smooth:
@@ -57,7 +58,7 @@ def run(args):
         kinematic={k: getattr(args, k) for k in ("v_max", "a_max", "j_max")},
         smooth=args.smooth, tau_rate=args.tau_rate,
         closed_loop_margins=args.margins if args.closed_loop else None)
-    print(dumps(res) if args.json else format_report(res, loops))
+    print(dumps(res) if args.json else format_report(res, loops, effort_unit(m)))
     if args.out:
         from ...figures.planning import plan_figures
         from ...infra.results import provenance
