@@ -183,6 +183,35 @@ def _param_index_fixture():
     return param_index
 
 
+def identified_within_3_std(model, log, truth):
+    """identify_log on a noise-free simulated ``log`` of the plant ``truth`` (no Stribeck
+    excess): every base parameter pi = base.fold(theta_truth) within 3 of its own standard
+    deviations plus 2 % (the plant's Coulomb term is smoothed; the model's is a sign). The
+    slow-sample threshold is the default (0.1 rad/s, 0.01 m/s for a linear actuator) except on
+    smooth-sign models, whose law reaches 0.99 of the plant's settled Coulomb force only at
+    7 eps: slower samples would bias fc by the model's own smoothing, not by the fit (a
+    linear actuator's threshold is min_joint_speed * SPEED_LEVER, m/s). Returns the
+    Identification."""
+    from pm2dof.control.plant import theta_truth
+    from pm2dof.identification.fit import MIN_JOINT_SPEED, SPEED_LEVER, identify_log
+    speed = MIN_JOINT_SPEED
+    if model.spec.friction == "smooth_sign":
+        eps = model.spec.friction_constants["sign_smoothing_velocity"]
+        linear = any(leg.actuator != "revolute" for leg in model.spec.legs)
+        speed = max(speed, 7 * eps / (SPEED_LEVER if linear else 1.0))
+    ident = identify_log(model, log, min_joint_speed=speed)
+    pi = ident.base.fold(theta_truth(model, truth))
+    err = np.abs(ident.estimate - pi)
+    assert np.all(err <= 3 * ident.std + 0.02 * np.abs(pi)), \
+        dict(zip(ident.names, err / np.abs(pi), strict=True))
+    return ident
+
+
+@pytest.fixture(scope="session", name="identified_within_3_std")
+def _identified_within_3_std_fixture():
+    return identified_within_3_std
+
+
 def _sci(x, digits=2):
     """4.93e-5: a number as the README and the docs pages print it (no zero-padded exponent)."""
     mant, exp = f"{x:.{digits}e}".split("e")

@@ -15,7 +15,7 @@ import numpy as np
 from .errors import ArgumentError, StaleGeneratedCodeError, UnsupportedMechanismError
 from .paths import derive_command
 
-__all__ = ["effort_unit", "POINT_TASK_NAMES", "ENERGY_FUNCTIONS", "spec_task_names", "is_rr_point",
+__all__ = ["effort_unit", "per_actuator", "POINT_TASK_NAMES", "ENERGY_FUNCTIONS", "spec_task_names", "is_rr_point",
            "require_rr_point", "require_generated", "task_vector", "mechanism",
            "orientation_length"]
 
@@ -99,9 +99,23 @@ def orientation_length(model):
     return max(float(np.hypot(*leg.attach)) for leg in spec.legs)
 
 
+def per_actuator(kinds, revolute, prismatic, mixed=None):
+    """The phrase for a model's actuators: ``revolute`` when every actuator is revolute (RRR
+    legs), ``prismatic`` when every one is linear (PRR sliders, RPR cylinders), else ``mixed``
+    (default "<revolute> (revolute actuators), <prismatic> (linear actuators)"). ``kinds``:
+    each leg's ``actuator`` ("revolute" or "prismatic"), or a Model."""
+    if hasattr(kinds, "spec"):
+        kinds = [leg.actuator for leg in kinds.spec.legs]
+    kinds = set(kinds)
+    if kinds == {"revolute"}:
+        return revolute
+    if kinds == {"prismatic"}:
+        return prismatic
+    return (f"{revolute} (revolute actuators), {prismatic} (linear actuators)" if mixed is None
+            else mixed)
+
+
 def effort_unit(model):
     """The unit of the actuators' efforts, for printed text: "N m" (revolute actuators), "N"
     (linear ones: PRR sliders, RPR cylinders) or "N m or N" (both)."""
-    kinds = {leg.actuator for leg in model.spec.legs}
-    return {frozenset({"revolute"}): "N m", frozenset({"prismatic"}): "N"}.get(
-        frozenset(kinds), "N m or N")
+    return per_actuator(model, "N m", "N", "N m or N")

@@ -6,6 +6,7 @@ platform phi in rad. An actuator's joint coordinate qa_i is an angle in rad (RRR
 length in m (PRR, RPR: a linear actuator), and its effort is a torque in N m or a force in N
 (docs/model-file.md). For the paper's robot every string is the one the header always had.
 """
+from ..core.task import per_actuator
 
 __all__ = ["ExportUnits", "export_units"]
 
@@ -38,12 +39,7 @@ class ExportUnits:
         self.efforts = self._per_actuator("torques", "forces")
 
     def _per_actuator(self, revolute, prismatic):
-        kinds = set(self.actuators)
-        if kinds == {"revolute"}:
-            return revolute
-        if kinds == {"prismatic"}:
-            return prismatic
-        return f"{revolute} (revolute actuators), {prismatic} (linear actuators)"
+        return per_actuator(self.actuators, revolute, prismatic)
 
 
 def export_units(model):

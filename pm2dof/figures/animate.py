@@ -69,11 +69,9 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
     if not (np.isfinite(magnify) and magnify > 0):
         raise ArgumentError(f"magnify must be > 0, got {magnify}")
     fig, draw, n_frames = animation_figure(plt, model, r, speed, controller, magnify,
-                                           fps=fps, every=every)
+                                           fps=fps, every=every, gif=not still)
     if still:                                    # one frame: the middle of the move
         draw(min(n_frames - 1, (r.n_move // 2) // every))
-        title = fig._suptitle.get_text()
-        fig.suptitle(title.split("; the GIF runs")[0], fontsize=10)   # no GIF speed on a PNG
         save_figure(fig, out, provenance(model))
         plt.close(fig)
         return out, r
@@ -125,8 +123,9 @@ def _save_gif(frames, path, fps):
                duration=int(1000 / fps), loop=0)
 
 
-def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2):
-    """The animation's figure for the rollout ``r`` (a :class:`SimResult`), and its frames.
+def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2, gif=True):
+    """The animation's figure for the rollout ``r`` (a :class:`SimResult`), and its frames
+    (``gif``: the title says how much slower than real time the GIF runs; False for a still).
 
     Returns (fig, draw, n_frames): ``draw(j)`` sets the figure to frame j (sample ``j * every``
     of ``r``) and returns the artists it changed (the same objects every frame: their data
@@ -194,7 +193,8 @@ def animation_figure(plt, model, r, speed, controller, magnify, fps=20, every=2)
     ae.grid(alpha=0.3)
     slow = 1.0 / (fps * every * period)            # real seconds per GIF second
     fig.suptitle(f"{model.name}: {LABELS[controller]}, {speed}-speed move, RMSE (eq. 41) "
-                 f"{sci(r.rmse)} m; the GIF runs {slow:.3g}x slower than real time",
+                 f"{sci(r.rmse)} m"
+                 + (f"; the GIF runs {slow:.3g}x slower than real time" if gif else ""),
                  fontsize=10)
     legend_outside(fig, [ax, az], "lower", ncol=5, fontsize=9)
 

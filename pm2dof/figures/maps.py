@@ -5,6 +5,7 @@ import numpy as np
 
 from ..analysis.maps import maps_summary, workspace_maps
 from ..control.trajectory import line_moves, model_move
+from ..core.task import per_actuator
 from ..infra.results import provenance, save_figure, write_json
 from .experiment import _plt
 from .robot import draw_fixed, fixed_key, fixed_points
@@ -140,8 +141,7 @@ def maps_note(model, tau_max=None, phi=None):
     """The key to the maps' figures: model, limits, a platform's orientation ``phi`` (rad; the
     maps' ``phi``), and what each line and marker is."""
     w = model.spec.limits["tau_max"] if tau_max is None else np.asarray(tau_max, dtype=float)
-    units = {("revolute",): "N m", ("prismatic",): "N"}.get(
-        tuple({leg.actuator for leg in model.spec.legs}), "N m (revolute) or N (linear)")
+    units = per_actuator(model, "N m", "N", "N m (revolute) or N (linear)")
     pose = ("" if phi is None else
             f"The platform at phi = {phi:g} rad (its home orientation unless given) over the "
             f"whole map; force: the largest ball of (fx, fy, moment), N and N m alike; "

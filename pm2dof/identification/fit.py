@@ -40,6 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import ArgumentError
+from ..core.task import per_actuator
 from .base import inertial_mask
 from .log import LogError, log_poses
 
@@ -181,10 +182,8 @@ def joint_speed_floor(model, min_joint_speed):
 def speed_phrase(model, min_joint_speed):
     """The threshold in words for messages: "0.1 rad/s", "0.01 m/s", or both for mixed
     actuators."""
-    kinds = {leg.actuator for leg in model.spec.legs}
-    parts = ([f"{min_joint_speed:g} rad/s"] if "revolute" in kinds else []) + (
-        [f"{min_joint_speed * SPEED_LEVER:g} m/s"] if "prismatic" in kinds else [])
-    return " (revolute) or ".join(parts) if len(parts) == 2 else parts[0]
+    rad, lin = f"{min_joint_speed:g} rad/s", f"{min_joint_speed * SPEED_LEVER:g} m/s"
+    return per_actuator(model, rad, lin, f"{rad} (revolute) or {lin}")
 
 
 def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,

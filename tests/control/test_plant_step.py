@@ -49,9 +49,13 @@ def test_the_rate_is_what_the_generated_step_does(name):
         h = z / lam
         x, out = np.concatenate([xe, 1e-6 * eps * v]), np.empty(2 * m)
         step(x, np.zeros(model.n_legs), plant, np.array([h]), out)
-        ratio = out[m:] @ v / (x[m:] @ v)
-        # Ce xed is O(|v|^2), the other modes decay: the ratio is R(-z) to ~1e-5
-        assert ratio == pytest.approx(_rk4_factor(z), rel=1e-4, abs=1e-4), (name, z, ratio)
+        # the whole velocity is R(-z) times the eigenvector (no other mode appears): the law
+        # departs from linear by (v / eps)^2 / 2 = 5e-13 and Ce xed is O(|v|^2), amplified by
+        # at most R's z^4 / 24 < 7 in the RK4 stages; measured <= 2.5e-9 of |v| at z = 3.5
+        gain = out[m:] / (x[m:] @ v)
+        np.testing.assert_allclose(gain, _rk4_factor(z) * v, rtol=0, atol=1e-7,
+                                   err_msg=f"{name}, h lambda = {z}")
+        ratio = gain @ v
         assert (abs(ratio) > 1) == (z > 2.785), (name, z, ratio)
 
 

@@ -156,35 +156,16 @@ def test_energy_is_conserved_along_the_generated_forward_dynamics(model):
     assert drift[1] <= drift[0] * 1.01 or drift[1] < 1e-12, drift
 
 
-def test_base_parameters_identified_from_a_simulated_log(model):
-    """identify_log on a noise-free simulated multisine (exact encoders, no Stribeck excess): the
-    base parameters pi = theta[I] + beta theta[D] of the plant's truth, each within 3 of its
-    own standard deviations plus 2 % (the plant's Coulomb term is smoothed; the model's is a
-    sign, or on smooth-sign models a sign smoothed over eps: samples slower than 7 eps are left
-    out)."""
-    from pm2dof.control.plant import plant_truth, theta_truth
+def test_base_parameters_identified_from_a_simulated_log(model, identified_within_3_std):
+    """identify_log on a noise-free simulated multisine (exact encoders, no Stribeck excess):
+    each base parameter of the plant's truth within 3 of its own standard deviations plus 2 %
+    (tests/conftest.py identified_within_3_std)."""
+    from pm2dof.control.plant import plant_truth
     from pm2dof.identification.excitation import excite
-    from pm2dof.identification.fit import MIN_JOINT_SPEED, SPEED_LEVER, identify_log
     from pm2dof.identification.signals import multisine
     truth = plant_truth(model, fs=[0.0] * model.n_legs)
     try:
         log = excite(model, multisine(model, duration=4.0), truth=truth, quantise=False)
-        # the default slow-sample threshold: 0.1 rad/s, 0.01 m/s for a linear actuator (the
-        # 3-RPR's cylinders move at a few cm/s). A smooth-sign model's law reaches 0.99 of the
-        # plant's settled Coulomb force only at 7 eps: slower samples would bias fc by the
-        # model's own smoothing, not by the fit (a linear actuator's threshold is
-        # min_joint_speed * SPEED_LEVER, m/s)
-        speed = MIN_JOINT_SPEED
-        if model.spec.friction == "smooth_sign":
-            eps = model.spec.friction_constants["sign_smoothing_velocity"]
-            linear = any(leg.kind != "RRR" for leg in model.spec.legs)
-            speed = max(speed, 7 * eps / (SPEED_LEVER if linear else 1.0))
-        ident = identify_log(model, log, min_joint_speed=speed)
+        identified_within_3_std(model, log, truth)
     except UnsupportedMechanismError as exc:
         pytest.skip(str(exc))
-    b = ident.base
-    th = theta_truth(model, truth)
-    pi = th[list(b.independent)] + b.beta @ th[list(b.dependent)]
-    err = np.abs(ident.estimate - pi)
-    assert np.all(err <= 3 * ident.std + 0.02 * np.abs(pi)), \
-        dict(zip(ident.names, err / np.abs(pi), strict=True))
