@@ -62,6 +62,7 @@ def _number(name, x, positive=False, nonnegative=False):
 
 class _Line:
     kind = "line"
+    FIELDS = ("length", "p0", "p1", "u")      # what evaluate_many reads, stacked over pieces
 
     def __init__(self, p0, p1):
         self.p0, self.p1 = p0, p1
@@ -69,23 +70,21 @@ class _Line:
         self.u = (p1 - p0) / self.length
 
     def evaluate(self, s):
-        lam = (s / self.length)[:, None]
-        p = (1.0 - lam) * self.p0 + lam * self.p1    # as pm2dof.line: exact at both ends
-        return p, np.broadcast_to(self.u, p.shape).copy(), np.zeros_like(p)
+        return _evaluate_one(self, s)
 
     @staticmethod
-    def evaluate_many(pieces, j, s, out):
-        """:meth:`evaluate` of the line ``pieces[j[i]]`` at s[i], written into ``out`` (p, dp,
-        ddp): the same operations per element, for all of a path's lines in one go."""
-        length, p0, p1, u = (np.array([getattr(pc, a) for pc in pieces])
-                             for a in ("length", "p0", "p1", "u"))
+    def evaluate_many(stacked, j, s, out):
+        """p, dp, ddp of the line ``j[i]`` of ``stacked`` (:func:`_stack`) at s[i], written into
+        ``out``: all of a path's lines in one go."""
+        length, p0, p1, u = stacked
         lam = (s / length[j])[:, None]
-        out[0][:] = (1.0 - lam) * p0[j] + lam * p1[j]
+        out[0][:] = (1.0 - lam) * p0[j] + lam * p1[j]    # as pm2dof.line: exact at both ends
         out[1][:], out[2][:] = u[j], 0.0
 
 
 class _Arc:
     kind = "arc"
+    FIELDS = ("c", "r", "a0", "d")
 
     def __init__(self, center, radius, a0, a1):
         self.c, self.r, self.a0 = center, radius, a0
@@ -93,22 +92,31 @@ class _Arc:
         self.length = radius * abs(a1 - a0)
 
     def evaluate(self, s):
-        phi = self.a0 + self.d * s / self.r
-        e = np.stack([np.cos(phi), np.sin(phi)], axis=1)
-        tangent = self.d * np.stack([-e[:, 1], e[:, 0]], axis=1)
-        return self.c + self.r * e, tangent, -e / self.r
+        return _evaluate_one(self, s)
 
     @staticmethod
-    def evaluate_many(pieces, j, s, out):
-        """:meth:`evaluate` of the arc ``pieces[j[i]]`` at s[i] into ``out`` (as
+    def evaluate_many(stacked, j, s, out):
+        """p, dp, ddp of the arc ``j[i]`` of ``stacked`` at s[i] into ``out`` (as
         :meth:`_Line.evaluate_many`)."""
-        c, r, a0, d = (np.array([getattr(pc, a) for pc in pieces]) for a in ("c", "r", "a0", "d"))
+        c, r, a0, d = stacked
         r, d = r[j], d[j]
         phi = a0[j] + d * s / r
         e = np.stack([np.cos(phi), np.sin(phi)], axis=1)
         out[1][:, 0], out[1][:, 1] = d * -e[:, 1], d * e[:, 0]
         r = r[:, None]
         out[0][:], out[2][:] = c[j] + r * e, -e / r
+
+
+def _stack(pieces):
+    """The ``FIELDS`` of same-kind ``pieces`` as arrays, for their ``evaluate_many``."""
+    return tuple(np.array([getattr(pc, a) for pc in pieces]) for a in type(pieces[0]).FIELDS)
+
+
+def _evaluate_one(piece, s):
+    """(p, dp, ddp) (len(s), 2) of one line or arc at its own arc lengths s."""
+    out = [np.empty((len(s), 2)) for _ in range(3)]
+    type(piece).evaluate_many(_stack([piece]), np.zeros(len(s), dtype=int), s, out)
+    return tuple(out)
 
 
 class _Oriented:
@@ -226,7 +234,10 @@ class TaskPath:
         kind = np.array([2 if type(pc) not in (_Line, _Arc) else int(type(pc) is _Arc)
                          for pc in pieces])
         j = np.array([int(np.count_nonzero(kind[:i] == kind[i])) for i in range(len(kind))])
-        object.__setattr__(self, "_groups", (np.array([pc.length for pc in pieces]), kind, j))
+        stacked = [_stack([pc for pc in pieces if type(pc) is cls]) if np.any(kind == g)
+                   else None for g, cls in enumerate((_Line, _Arc))]
+        object.__setattr__(self, "_groups",
+                           (np.array([pc.length for pc in pieces]), kind, j, stacked))
 
     def __setattr__(self, key, value):
         raise AttributeError(f"TaskPath is immutable (tried to set {key!r})")
@@ -281,7 +292,7 @@ class TaskPath:
             raise PlanError(f"side must be 'right' or 'left', got {side!r}")
         s = np.clip(s, 0.0, L)
         idx = np.clip(np.searchsorted(self._ends, s, side=side) - 1, 0, len(self._pieces) - 1)
-        lengths, kind, j = self._groups
+        lengths, kind, j, stacked = self._groups
         if len(self._pieces) == 1:
             return self._pieces[0].evaluate(np.clip(s - self._ends[0], 0.0, lengths[0]))
         out = [np.empty((len(s), self.dim)) for _ in range(3)]
@@ -290,8 +301,7 @@ class TaskPath:
             sel = np.flatnonzero(kind[idx] == g)
             if sel.size:
                 part = [np.empty((sel.size, self.dim)) for _ in range(3)]
-                cls.evaluate_many([pc for pc in self._pieces if type(pc) is cls], j[idx[sel]],
-                                  local[sel], part)
+                cls.evaluate_many(stacked[g], j[idx[sel]], local[sel], part)
                 for o, v in zip(out, part):
                     o[sel] = v
         for i in np.flatnonzero(kind == 2):          # splines, oriented pieces: one by one
