@@ -2,6 +2,7 @@
 # terms; the gravity term Ge; friction (eq. 2); Y (eq. 13); the energies T and V.
 import sympy as sp
 
+from .linear import linear_jacobian
 from .symbols import sgn, solve_small
 
 __all__ = ["Dynamics"]
@@ -98,7 +99,7 @@ class Dynamics:
         tau = self.Me * sym.xrdd + self.Ce * sym.xrd + self.StF              # eq. 13
         if self.gravity:
             tau = tau + self.Ge
-        self.Y = tau.jacobian(sym.theta)                                    # eq. 13: Y = d tau / d theta
+        self.Y = linear_jacobian(tau, sym.theta)                             # eq. 13: Y = d tau / d theta
         rhs = S.T * sym.tau_a - self.Ce * sym.xed - self.StF               # eq. 10
         if self.gravity:
             rhs = rhs - self.Ge
@@ -107,15 +108,15 @@ class Dynamics:
         joint = self.M * sym.qddr + self.C * sym.qdr
         if self.g_q is not None:
             joint = joint + self.g_q
-        self.Y_joint = joint.jacobian(sym.theta)
-        self.Y_friction = self.f_a.jacobian(sym.theta)
+        self.Y_joint = linear_jacobian(joint, sym.theta)
+        self.Y_friction = linear_jacobian(self.f_a, sym.theta)
         #: the platform's part of Y, a function of xe, xed, xrd, xrdd (None for a point)
         self.Y_platform = None
         if kin.platform:
             own = self.Mp * sym.xrdd + self.Cp * sym.xrd
             if self.g_p is not None:
                 own = own + self.g_p
-            self.Y_platform = own.jacobian(sym.theta)
+            self.Y_platform = linear_jacobian(own, sym.theta)
         self.xedd = solve_small(self.Me, rhs)                               # Me xedd = rhs
         # the energies as functions of the task state (q stands for ik(xe), qd for W xed)
         self.kinetic_energy = self.T.subs(on_motion) + self.T_platform
