@@ -33,10 +33,13 @@ __all__ = ["bench_planning", "bench_refinement", "bench_paths", "toppra_runner",
 
 
 def friction_free(model):
-    """theta (5n,) of the model with every friction parameter zero."""
+    """The model's nominal theta with every friction parameter (those of its friction law:
+    fv, fc, ...) zero; the inertial ones, a platform's included, as they are."""
+    from ..core.model_file import FRICTION_MODELS
     th = np.array(model.theta_nominal, dtype=float)
+    prefixes = FRICTION_MODELS[model.spec.friction]
     for j, name in enumerate(model.param_names):
-        if not name.startswith(("alpha", "beta", "gamma")):
+        if name.rstrip("0123456789") in prefixes:
             th[j] = 0.0
     return th
 

@@ -34,8 +34,8 @@ Functions (prefix ``<name>_``), all per grid point:
 * ``path_coefficients(p, dp, ddp, theta, tau_max) -> a, b, S, v1, N_min_norm, h_min_norm,
   N_min_max, h_min_max, sing`` (and ``g`` after ``b`` with gravity); NaN sing at a point out
   of reach (or, without redundancy, in the other assembly mode);
-* ``path_mvc(stage, params) -> x_mvc``: the maximum-velocity curve squared, the largest s_d^2 at
-  which [L, U] is not empty (-1: not even at rest);
+* ``path_mvc(stage, params) -> x_mvc``: the maximum-velocity curve squared, the largest s_d^2
+  such that [L, U] is not empty at every speed up to it (-1: not even at rest);
 * ``path_backward(x, pair, params) -> x_next, y``: one backward step of the controllable sets
   (TOPP-RA's recursion, exact in the friction) over the interval [s_k, s_k+1], whose ``pair``
   holds the facets leaving s_k and arriving at s_k+1 (the path's left limit there) and the
@@ -54,10 +54,15 @@ Functions (prefix ``<name>_``), all per grid point:
   it exactly; a previous pass's step is reused as in ``path_backward``;
 * ``path_torques(stage, sd, sdd, params, tau_max) -> u, tau_min_norm, tau_min_max, ratio``.
 
-The largest s_d with a non-empty interval is found by bisection with :data:`BISECTIONS`
-halvings (:data:`MVC_BISECTIONS` for the maximum-velocity curve): the stage sets are intervals
-[0, s_d*] for these robots, and the bisection keeps the feasible end, so the result never
-exceeds the true bound. The backward step reads the bisection's result off its lattice next to
+The maximum-velocity curve of a friction law affine in |v| (Coulomb + viscous, eq. 2: every
+condition a quadratic in s_d) is in closed form, the least first crossing of the quadratics
+(:meth:`_Stage.largest_exact`, exact to rounding); for the other laws (Stribeck, smooth sign)
+it is found by bisection with :data:`MVC_BISECTIONS` halvings, which keeps the feasible end.
+Where the feasible speeds at a point are two intervals (near some stops: the speed at which
+b s_d^2 balances again), the curve is the top of the first. The backward step's largest
+controllable s_d is found by bisection with :data:`BISECTIONS` halvings: the stage sets are
+intervals [0, s_d*] for these robots, and the bisection keeps the feasible end, so the result
+never exceeds the true bound. The backward step reads the bisection's result off its lattice next to
 an estimate (Newton steps from the hint) where 4 evaluations show it there, and bisects only
 where they do not (:meth:`_Stage.at_hint`, a CasADi switch). For a friction
 law affine in |v| (Coulomb + viscous, eq. 2) each facet is a quadratic in s_d whose
@@ -85,7 +90,8 @@ __all__ = ["path_layouts", "path_functions", "force_polygon", "BISECTIONS", "MVC
 #: power of two (resolution 6e-8 to 1.2e-7 of it; converged for hints above HINT_FLOOR) or,
 #: where that does not bracket the answer (a jump of the maximum-velocity curve), on
 #: [0, v_top] (3e-6 m/s at 100 m/s, on the feasible side); and for the maximum-velocity curve
-#: (a diagnostic the passes use only at breakpoints): v_top 2^-20, 1e-4 m/s at 100 m/s
+#: of a friction law that is not affine in |v| (the affine ones: closed form): v_top 2^-20,
+#: 1e-4 m/s at 100 m/s
 BISECTIONS = 25
 MVC_BISECTIONS = 20
 LATTICE_BITS = 24
@@ -291,6 +297,52 @@ class _Stage:
         L, U, Z = self.bounds(sd)
         return ca.logic_and(L <= U, Z >= 0), L
 
+    def _quadratics(self):
+        """For a friction law affine in |v|: the conditions of :meth:`feasible` as quadratics
+        c2 sd^2 + c1 sd + c0 >= 0, [(c2, c1, c0, active)]: lower_i <= upper_j for every pair of
+        facets bounding s_dd (L <= U) and h_j - e_j -+ m_j >= 0 for the ones that do not
+        (Z >= 0); ``active`` 0 where the facet's kind makes the condition void."""
+        F, I, aI = self.F, self.I, self.aI
+        free = [self.pen[j] > 0 for j in range(F)]
+        hh = [(-self.e1[j], self.h[j] - self.e0[j]) for j in range(F)]     # h_j - e_j
+        m = [(self.B[j], self.m1[j], self.m0[j]) for j in range(F)]       # m_j (eq. 2)
+        # upper_j, lower_j = -m_j I_j +- (h_j - e_j) |I_j|
+        up = [(-m[j][0] * I[j], -m[j][1] * I[j] + hh[j][0] * aI[j],
+               -m[j][2] * I[j] + hh[j][1] * aI[j]) for j in range(F)]
+        lo = [(-m[j][0] * I[j], -m[j][1] * I[j] - hh[j][0] * aI[j],
+               -m[j][2] * I[j] - hh[j][1] * aI[j]) for j in range(F)]
+        out = []
+        for i in range(F):
+            for j in range(F):
+                both = ca.logic_not(ca.logic_or(free[i], free[j]))
+                out.append((up[j][0] - lo[i][0], up[j][1] - lo[i][1], up[j][2] - lo[i][2],
+                            both))
+        for j in range(F):
+            for s in (1, -1):
+                out.append((-s * m[j][0], hh[j][0] - s * m[j][1], hh[j][1] - s * m[j][2],
+                            free[j]))
+        return out
+
+    def largest_exact(self, v_top):
+        """(largest sd in [0, v_top] with [0, sd] feasible, feasible at 0) for a friction law
+        affine in |v|: the least first crossing below zero of the quadratics of
+        :meth:`_quadratics` (each >= 0 at rest), exact to rounding. q = c2 sd^2 + c1 sd + c0,
+        c0 >= 0, first turns negative at 2 c0 / (D - c1) for c1 < 0 (D = sqrt(c1^2 - 4 c2 c0),
+        none if D is not real: c2 > 0 and q > 0 throughout) and at (c1 + D) / (-2 c2) for
+        c1 >= 0 > c2 (neither form cancels); never for c1 >= 0 <= c2."""
+        ok0 = self.feasible(ca.SX(0))[0]
+        sd = v_top
+        for c2, c1, c0, active in self._quadratics():
+            c0 = ca.fmax(c0, 0)                       # rounding of a condition that holds at rest
+            disc = c1 * c1 - 4 * c2 * c0
+            D = ca.sqrt(ca.fmax(disc, 0))
+            falling = 2 * c0 / (D - c1)
+            rising = (c1 + D) / (-2 * c2)
+            r = ca.if_else(c1 < 0, ca.if_else(disc >= 0, falling, ca.inf),
+                           ca.if_else(c2 < 0, rising, ca.inf))
+            sd = ca.if_else(active, ca.fmin(sd, r), sd)
+        return sd, ok0
+
     def largest(self, v_top, predicate, halvings, hint=None):
         """(largest sd in [0, v_top] where predicate(sd) holds, holds at 0), by bisection; with
         a ``hint``, on [hint (1 - r), hint (1 + r) + c] (r = HINT_SPAN, c = HINT_FLOOR m/s)
@@ -408,7 +460,10 @@ def path_functions(d, prefix):
     st = _Stage(n, lays["path_stage"].split(stage_v), friction, m)
     v_top = P["v_top"]
 
-    y_mvc, ok0 = st.largest(v_top, lambda sd: st.feasible(sd)[0], MVC_BISECTIONS)
+    if friction.affine:     # each condition a quadratic in s_d: the curve in closed form
+        y_mvc, ok0 = st.largest_exact(v_top)
+    else:
+        y_mvc, ok0 = st.largest(v_top, lambda sd: st.feasible(sd)[0], MVC_BISECTIONS)
     out.append(ca.Function(f"{prefix}_path_mvc", [stage_v, prm],
                            [ca.if_else(ok0, y_mvc * y_mvc, -1)], ["stage", "params"], ["x_mvc"]))
 

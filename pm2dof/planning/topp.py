@@ -7,9 +7,10 @@ s_dd = u_k on [s_k, s_k+1] (x_k+1 = x_k + 2 delta_k u_k), and the torque facets
 (x_k, u_k) and, arriving, at s_k+1 with (x_k+1, u_k). The friction term makes the facets
 nonlinear in sqrt(x) (viscous) and sign-dependent (Coulomb), so the stage sets are not
 polytopes; every set the recursion needs is one-dimensional, though, and is computed exactly
-(to 2.3e-8 m/s) by bisection in generated C (pm2dof/derive/planning.py):
+in generated C (pm2dof/derive/planning.py), in closed form or by bisection (to 2.3e-8 m/s):
 
-1. the maximum-velocity curve: the largest s_d at each point with a feasible s_dd (``map``);
+1. the maximum-velocity curve: the largest s_d at each point up to which every speed has a
+   feasible s_dd (``map``; in closed form for Coulomb + viscous friction, eq. 2);
 2. backward from rest at the end: the largest x_k from which a feasible u_k lands in
    [0, x_k+1,max] where the arrival facets hold too (one ``accumulate`` call);
 3. forward from rest at the start: the greatest feasible u_k that stays below x_k+1,max and

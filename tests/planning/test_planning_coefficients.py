@@ -221,7 +221,45 @@ def test_maximum_velocity_curve_by_brute_force(name, split):
                 lo = mid
             else:
                 hi = mid
-        assert np.sqrt(x[k]) == pytest.approx(lo, abs=2 * V_TOP * 2.0 ** -20 + 1e-9), (k, split)
+        # closed form for the affine laws (all three models: Coulomb + viscous): exact to the
+        # search's resolution; the bisection it replaced was within v_top 2^-20 below
+        assert np.sqrt(x[k]) == pytest.approx(lo, abs=1e-9), (k, split)
+
+
+@pytest.mark.parametrize("split", ["min_norm", "min_max"])
+@pytest.mark.parametrize("name", ["shang2010", "shang2010_vertical", "rrr4_platform"])
+def test_friction_free_maximum_velocity_curve_is_a_linear_program(name, split):
+    """Without friction the stage set is a polygon in (s_dd, x = s_d^2): |N_j . (a s_dd + b x
+    (+ g))| <= h_j; the largest x is a linear program (SciPy's HiGHS), which the generated
+    closed-form curve matches, at points of an arc and of the bench's spline and shipped
+    paths."""
+    from scipy.optimize import linprog
+
+    from pm2dof.bench.planning import bench_paths, friction_free
+    m = pm2dof.load_model(name)
+    if m.dof == 2:
+        paths = list(bench_paths(m, TaskPath.arc([0.245, 0.265], 0.03, 0.0, 3.0)).values())
+    else:
+        paths = [_model_arc(m)]
+    w = np.full(m.n_legs, 8.0)
+    prm, th = params(m, friction_free(m))
+    checked = 0
+    for path in paths:
+        s = np.linspace(0, path.length, 23)[1:-1]
+        stage, coef = stages(PlanProblem(m, path, w, th, split, prm), s)
+        x = np.empty(len(s))
+        m.function("path_mvc").map(len(s), stage, prm, x)
+        for k in range(len(s)):
+            N, h = coef["N"][k], coef["h"][k]
+            g = coef["g"][k] if "g" in coef else np.zeros(m.dof)
+            A = np.column_stack([N @ coef["a"][k], N @ coef["b"][k]])   # (F, 2): s_dd, x
+            res = linprog([0.0, -1.0], A_ub=np.vstack([A, -A]),
+                          b_ub=np.concatenate([h - N @ g, h + N @ g]),
+                          bounds=[(None, None), (0.0, V_TOP ** 2)], method="highs")
+            assert res.status == 0, res.message
+            assert np.sqrt(x[k]) == pytest.approx(np.sqrt(res.x[1]), rel=1e-8), (k, split)
+            checked += 1
+    assert checked >= 21
 
 
 def test_reversing_joint_is_flagged_and_costs_both_signs():
