@@ -270,10 +270,13 @@ def test_ctrl_c_during_design_writes_nothing_and_exits_130(tmp_path):
     import subprocess
     import sys
     import time
+
+    from tests.processes import terminal_sigint
     out = tmp_path / "exc.toml"
     env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
     p = subprocess.Popen([sys.executable, "-m", "pm2dof", "identify", "design", "--out", str(out)],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                         preexec_fn=terminal_sigint)
     err = ""
     while "IPOPT:" not in err:                  # the stage line printed as IPOPT starts
         line = p.stderr.readline()
