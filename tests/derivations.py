@@ -2,7 +2,7 @@
 """The SymPy derivation of a shipped model (:class:`pm2dof.derive.model_functions.Derivation`)
 takes 1-8 s (rrr4_platform the most), and four test modules build the same ones:
 tests/derive/test_generated.py (regeneration and the 30-digit check), test_derive_task_dimension.py
-(the paper's robot), tests/mechanisms/test_independent.py (the shipped mechanisms against an
+(the paper's robot), test_factored_platform.py (the shipped platforms), tests/mechanisms/test_independent.py (the shipped mechanisms against an
 independent formulation) and tests/derivatives/test_derivatives_mpmath.py (the paper's robot
 and the five-bar). A derivation is a pure function of its model file, so it is built
 once per process and shared; conftest.py's scheduler runs these modules in one pytest-xdist

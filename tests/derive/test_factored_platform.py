@@ -12,7 +12,7 @@ import pytest
 from pm2dof.core.model_file import read_model_file
 from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.derive.factored import factored, regressor, task_inertia_coriolis
-from pm2dof.derive.model_functions import Derivation
+from tests import derivations
 
 PLATFORMS = [s for s in (read_model_file(p) for p in sorted(SHIPPED_MODELS.glob("*.toml")))
              if s.end_effector == "platform"]
@@ -36,7 +36,7 @@ def _forms(d, monolithic):
 @pytest.mark.parametrize("spec", PLATFORMS, ids=[s.name for s in PLATFORMS])
 def test_factored_platform_matches_monolithic(spec):
     assert PLATFORMS, "no shipped platform model"
-    d = Derivation(spec)
+    d = derivations.derivation(spec)   # shared with test_generated (tests/derivations.py)
     assert factored(d), f"{spec.name}: the hot paths should use the factored forms"
     f_fac, f_mono = _forms(d, monolithic=False), _forms(d, monolithic=True)
     rng = np.random.default_rng(26)
