@@ -35,6 +35,7 @@ from ..core.errors import PlanError
 from .check import point_text
 from .plan import PathProfile, grid_times, sampled
 from .stages import junction_left, link, point_stages
+from .workspace import Workspace, workspace
 
 __all__ = ["Grid", "passes"]
 
@@ -85,17 +86,19 @@ def _mvc(problem, rows):
     return out
 
 
-def passes(problem, stage, arrive, s, p, prev=None):
+def passes(problem, stage, arrive, s, p, prev=None, ws=None):
     """The maximum-velocity curve and the backward and forward passes of ``problem``
     (:class:`.problem.PlanProblem`) over the grid ``s`` (K,) (``stage``, ``arrive``:
     :func:`pm2dof.planning.stages.link`; ``p`` (K, m) its points, for messages). ``prev``:
     what this returned as ``memo`` for an earlier grid of which ``s`` is a refinement (its
-    points a subset), or None: everything computed.
+    points a subset), or None: everything computed. ``ws``: the :class:`.workspace.Workspace`
+    holding the passes' inputs (default a fresh one); nothing returned lives in it.
 
     Returns (x (K,), sdd (K,), x_mvc (K,), relaxed, memo): relaxed the intervals whose arrival
     facets could not hold together with the departing ones (only the departing ones are met
     there: collocation's O(delta) error)."""
     K, model, prm = len(s), problem.model, problem.params
+    ws = Workspace() if ws is None else ws
     sl = model.layout("path_stage").slices
     if prev is None:
         src = np.full(K, -1)
@@ -141,7 +144,7 @@ def passes(problem, stage, arrive, s, p, prev=None):
     todo = np.flatnonzero(other & ~reuse)
     cap[todo] = _mvc(problem, arrive[todo])
     fin = model.layout("path_forward_input")
-    inp = np.zeros((K - 1, fin.size))             # per interval: pair, x_next_max, memo
+    inp = ws.take("forward", (K - 1, fin.size))   # per interval: pair, x_next_max, memo
     F = fin.unpack(inp)
     P = inp[:, fin.slices["pair"]]
     pair = model.layout("path_pair").unpack(P)
@@ -158,7 +161,7 @@ def passes(problem, stage, arrive, s, p, prev=None):
     hi[-1] = 0.0
     if top >= 0:
         bl = model.layout("path_backward_input")
-        rows = np.empty((top + 1, bl.size))     # every column written: pair, then the memo
+        rows = ws.take("backward", (top + 1, bl.size))  # every column: pair, then the memo
         B = bl.unpack(rows)
         rows[:, bl.slices["pair"]] = P[top::-1]
         rows[:, bl.slices["pair"].stop:] = 0.0
@@ -167,7 +170,7 @@ def passes(problem, stage, arrive, s, p, prev=None):
             B["same"][:, 0] = same[r]
             B["x_in"][:, 0] = prev["hi"][js[1:top + 2]][::-1]
             B["x_out"][:, 0] = prev["hi"][js[:top + 1]][::-1]
-        back = np.empty(top + 1)
+        back = ws.take("back", (top + 1,))
         model.function("path_backward").accumulate(np.array([hi[top + 1]]), rows, prm, back)
         hi[:top + 1] = back[::-1]
     if hi[0] < 0:
@@ -187,6 +190,9 @@ def passes(problem, stage, arrive, s, p, prev=None):
         F["same"][:, 0] = same
         F["x_in"][:, 0] = prev["x_raw"][js[:-1]]
         F["x_out"][:, 0] = prev["x_raw"][js[1:]]
+    else:
+        for key in ("same", "x_in", "x_out"):
+            F[key][:] = 0.0
     first = int(np.argmin(same)) if not same.all() else K - 1
     y = np.empty((K - 1, out.size))
     x_raw = np.empty(K)
@@ -233,6 +239,7 @@ class Grid:
         self.v1 = outs["v1"]
         self.left = junction_left(problem)
         self.memo = self.mid = None
+        self.ws = workspace()
         self.stage = self.arrive = None
 
     def insert(self, new, ev_new=None):
@@ -258,7 +265,7 @@ class Grid:
         self.stage, self.arrive = link(self.problem, self.s, self.base, self.v1, self.stops(),
                                        self.left)
         x, sdd, x_mvc, relaxed, self.memo = passes(self.problem, self.stage, self.arrive,
-                                                   self.s, self.ev[0], self.memo)
+                                                   self.s, self.ev[0], self.memo, self.ws)
         return x, sdd, x_mvc, relaxed
 
     def _ratio(self, stage, sd, sdd):
