@@ -43,8 +43,8 @@ def setup(request):
     s, kin, dyn = d.sym, d.kin, d.dyn
     mods = [{"sgn": _sgn}, "mpmath"]
     xedd = sympy.lambdify([list(s.q), list(s.xed), list(s.tau_a), list(s.theta)], dyn.xedd,
-                          modules=mods, cse=True)
-    ik = sympy.lambdify([list(s.xe)], kin.ik(), modules=mods, cse=True)
+                          modules=mods, cse=derivations.cse)
+    ik = sympy.lambdify([list(s.xe)], kin.ik(), modules=mods, cse=derivations.cse)
     m, n = len(s.xe), len(s.tau_a)
     cut = np.cumsum([m, m, n])                  # z = [xe, xed, tau_a, theta]
 

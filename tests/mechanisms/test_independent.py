@@ -108,7 +108,7 @@ class Lambdified:
                                         "numpy")
 
     def _f(self, expr):
-        fn = sp.lambdify(self.args, expr, [{"sgn": _sgn}, "numpy"], cse=True)
+        fn = sp.lambdify(self.args, expr, [{"sgn": _sgn}, "numpy"], cse=derivations.cse)
         zeros = {k: np.zeros(v) for k, v in (("m", self.m), ("n", self.n))}
 
         def call(q, xe, xed=None, xrd=None, xrdd=None, tau=None, theta=None):
@@ -440,7 +440,7 @@ def test_platform_parallel_measure(name):
     s = Setup(name, seed=11)
     lam, kin = s.lam, s.lam.kin
     f = sp.lambdify([list(lam.sym.q), list(lam.sym.xe)], kin.parallel_measure(), "numpy",
-                    cse=True)
+                    cse=derivations.cse)
     L = float(kin.moment_length())
     for _ in range(3):
         xe, q, _ = s.state()
@@ -464,7 +464,8 @@ def test_platform_parallel_measure_is_zero_where_the_lines_meet():
     # its kinematics only (the measure and ik): Lambdified would derive its dynamics too (~6 s)
     sym = Symbols(radial.n_legs, radial.param_names, radial.task_names)
     kin = Kinematics(radial, sym)
-    f = sp.lambdify([list(sym.q), list(sym.xe)], kin.parallel_measure(), "numpy", cse=True)
+    f = sp.lambdify([list(sym.q), list(sym.xe)], kin.parallel_measure(), "numpy",
+                    cse=derivations.cse)
     ik = sp.lambdify([list(sym.xe)], kin.ik(), "numpy")
 
     def q_of(xe):
