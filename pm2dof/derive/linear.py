@@ -8,7 +8,8 @@ task-space tau, whose entries hold W^T M W, that is most of the derivation (7.4 
 ``rrr4_platform``). When F is homogeneous of degree one in theta, F = sum_k theta_k c_k, so
 column k is F at theta = e_k (an ``xreplace``, one walk per parameter), exactly. This module
 checks the degree first, structurally, and otherwise falls back to ``jacobian``; on every
-shipped model the result is the same SymPy expression as ``jacobian``'s (so the same C).
+shipped model the result is the same SymPy expression as ``jacobian``'s (so the same C). The
+substitution walks only the subtrees that hold a parameter, each shared one once.
 """
 import sympy as sp
 
@@ -41,23 +42,40 @@ def _degree(expr, theta, memo):
     return out
 
 
+def _substituted(expr, rule, degree, memo):
+    """``expr.xreplace(rule)`` (rule: every parameter to a number), the same expression, built
+    by the same ``func(*args)`` calls, but walking only the subtrees that hold a parameter
+    (``degree`` of :func:`_degree` not (0, 0)) and each shared subtree once (``memo``)."""
+    got = memo.get(expr)
+    if got is not None:
+        return got
+    if expr in rule:
+        out = rule[expr]
+    elif degree[expr] == (0, 0):
+        out = expr
+    else:
+        out = expr.func(*[_substituted(a, rule, degree, memo) for a in expr.args])
+    memo[expr] = out
+    return out
+
+
 def linear_jacobian(F, theta):
     """dF/dtheta (rows: F's entries in order, columns: ``theta``), F a SymPy matrix.
 
     Where every entry of F is a polynomial of degree <= 1 in ``theta`` as written and F is 0 at
     theta = 0, column k is F at theta = e_k (exact); otherwise ``F.jacobian(theta)``."""
     theta = list(theta)
-    F = sp.Matrix(F)
-    flat = sp.Matrix(list(F))
-    memo, tset = {}, set(theta)
+    flat = list(sp.Matrix(F))
+    degree, tset = {}, set(theta)
     zero = {t: sp.Integer(0) for t in theta}
-    linear = (all(_degree(e, tset, memo)[1] <= 1 for e in flat)
-              and all(e == 0 for e in flat.xreplace(zero)))
+    at_zero = {}
+    linear = (all(_degree(e, tset, degree)[1] <= 1 for e in flat)
+              and all(_substituted(e, zero, degree, at_zero) == 0 for e in flat))
     if not linear:
-        return flat.jacobian(theta)
+        return sp.Matrix(flat).jacobian(theta)
     cols = []
     for t in theta:
-        unit = dict(zero)
+        unit, memo = dict(zero), {}
         unit[t] = sp.Integer(1)
-        cols.append(flat.xreplace(unit))
-    return sp.Matrix.hstack(*cols)
+        cols.append([_substituted(e, unit, degree, memo) for e in flat])
+    return sp.Matrix(len(flat), len(theta), lambda i, k: cols[k][i])
