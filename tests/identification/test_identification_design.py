@@ -271,12 +271,12 @@ def test_ctrl_c_during_design_writes_nothing_and_exits_130(tmp_path):
     import sys
     import time
 
-    from tests.processes import terminal_sigint
+    from tests.processes import from_a_terminal
     out = tmp_path / "exc.toml"
     env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
-    p = subprocess.Popen([sys.executable, "-m", "pm2dof", "identify", "design", "--out", str(out)],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
-                         preexec_fn=terminal_sigint)
+    p = subprocess.Popen(from_a_terminal([sys.executable, "-m", "pm2dof", "identify", "design",
+                                          "--out", out]),
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     err = ""
     while "IPOPT:" not in err:                  # the stage line printed as IPOPT starts
         line = p.stderr.readline()

@@ -27,7 +27,7 @@ from pm2dof.studies import (
     run_study,
 )
 from pm2dof.studies.report import columns_of
-from tests.processes import terminal_sigint
+from tests.processes import from_a_terminal
 
 ROOT = Path(__file__).resolve().parents[2]
 BIN = Path(sys.executable).parent
@@ -99,8 +99,9 @@ def _stop(procs):
 
 
 def _start(args, **kw):
-    return subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                            cwd=ROOT, start_new_session=True, preexec_fn=terminal_sigint, **kw)
+    return subprocess.Popen(from_a_terminal(args), stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, cwd=ROOT, start_new_session=True,
+                            **kw)
 
 
 @pytest.fixture
