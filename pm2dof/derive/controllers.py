@@ -1,6 +1,5 @@
 # Generated controller steps: Fig. 2 signal processing + NA law (eqs. 14-29), APD law (eq. 40),
 # computed torque (CTC) or time-varying LQR tracking.
-import itertools
 
 import casadi as ca
 
@@ -147,17 +146,20 @@ def controller_functions(d, prefix):
     st = lay["ctrl_state"].split(state)
     functions = []
 
-    for (name, law, project), (split, suffix) in itertools.product(LAWS, SPLITS.items()):
-        params = ca.SX.sym("params", lay[f"{law}_params"].size)
+    # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
+    # low-pass on the backward difference, passive joints from geometry (unit vectors)
+    # a platform's fk from the last pose (kinematics.FK_TRACKING_STEPS: from one sample
+    # away as exact as FK_NEWTON_STEPS from far). The same for every law and split: converted
+    # once, every function's graph takes these nodes (the C is the same as when each function
+    # converted its own copy)
+    base = d.converter_qa(qa, seed=st["xe_prev"], steps=FK_TRACKING_STEPS)
+    O = d.fk_of_qa()
+    xe = base(O)
+    sing = d.singularity_measures(base)                            # [type I, type II]
+    for name, law, project in LAWS:
+        params = ca.SX.sym("params", lay[f"{law}_params"].size)   # one law's, every split's
         P = lay[f"{law}_params"].split(params)
         extra = [(k, ca.SX.sym(k, size)) for k, size in per_sample_inputs(law, n, m)]
-        # Fig. 2 signal processing: position by fk from qa only, velocity by a first-order
-        # low-pass on the backward difference, passive joints from geometry (unit vectors)
-        # a platform's fk from the last pose (kinematics.FK_TRACKING_STEPS: from one sample
-        # away as exact as FK_NEWTON_STEPS from far)
-        base = d.converter_qa(qa, seed=st["xe_prev"], steps=FK_TRACKING_STEPS)
-        O = d.fk_of_qa()
-        xe = base(O)
         # the extra legs are a check: every leg's residual within tolerance (false for NaN)
         consistent = ca.mmax(ca.fabs(base(kin.closure_residuals(O)))) <= P["closure_tol"]
         v = st["v"] + P["vel_alpha"] * ((xe - st["xe_prev"]) / P["T"] - st["v"])
@@ -169,27 +171,36 @@ def controller_functions(d, prefix):
         if project:  # <prefix>_na_proj_step: optional, off by default (as in the paper)
             theta_next = _project(theta_next, d.spec.param_names, n,
                                   FRICTION_MODELS[d.spec.friction])
-        conv = base
-        tau, saturated, unpreloaded = _split(d, split, S, u, P)       # eq. 21 or another split
-        tau_sat = ca.fmin(ca.fmax(tau, -P["tau_max"]), P["tau_max"])
-        sing = d.singularity_measures(conv)                        # [type I, type II]
-        regular = ca.logic_and(sing[0] >= P["sing_threshold"],     # false for NaN too
-                               sing[1] >= P["parallel_sing_threshold"])
-        finite = _all_finite(ca.vertcat(tau, theta_next, xe, v))
-        good = ca.logic_and(consistent, ca.logic_and(regular, finite))
-        tau_out = ca.if_else(good, tau_sat, ca.DM.zeros(n))        # safe torque: zero
-        theta_out = ca.if_else(good, theta_next, theta)            # no update on a bad sample
-        status = ca.if_else(consistent, ca.if_else(regular, ca.if_else(finite, ca.if_else(
-            saturated, STATUS["saturated"], ca.if_else(
-                unpreloaded, STATUS["preload_infeasible"], STATUS["ok"])), STATUS["non_finite"]),
-            STATUS["singular"]), STATUS["inconsistent_encoders"])
-        carry = ca.logic_and(consistent, finite)                   # a pose worth remembering
-        state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(carry, xe, st["xe_prev"]),
-                                            v=ca.if_else(carry, v, st["v"]), theta_hat=theta_out)
-        functions.append(ca.Function(
-            f"{prefix}_{name}{suffix}_step",
-            [state, qa, xd, xd_dot, xd_ddot, params] + [sx for _, sx in extra],
-            [tau_out, state_next, status, ca.vertcat(xe, v, e, edot, sing)],
-            ["state", "qa", "xd", "xd_dot", "xd_ddot", "params"] + [k for k, _ in extra],
-            ["tau_a", "state_next", "status", "diag"]))
+        for split, suffix in SPLITS.items():
+            functions.append(_step_function(d, prefix, lay, f"{name}{suffix}", split, S, u, P,
+                                            theta, theta_next, xe, v, e, edot, sing,
+                                            consistent, st, [state, qa, xd, xd_dot, xd_ddot,
+                                                             params], extra))
     return functions
+
+
+def _step_function(d, prefix, lay, name, split, S, u, P, theta, theta_next, xe, v, e, edot,
+                   sing, consistent, st, inputs, extra):
+    """``<prefix>_<name>_step`` of one law and split: the split, saturation, the safe
+    torque on a bad sample, the status and the next state (:func:`controller_functions`)."""
+    n = d.spec.n_legs
+    tau, saturated, unpreloaded = _split(d, split, S, u, P)       # eq. 21 or another split
+    tau_sat = ca.fmin(ca.fmax(tau, -P["tau_max"]), P["tau_max"])
+    regular = ca.logic_and(sing[0] >= P["sing_threshold"],     # false for NaN too
+                           sing[1] >= P["parallel_sing_threshold"])
+    finite = _all_finite(ca.vertcat(tau, theta_next, xe, v))
+    good = ca.logic_and(consistent, ca.logic_and(regular, finite))
+    tau_out = ca.if_else(good, tau_sat, ca.DM.zeros(n))        # safe torque: zero
+    theta_out = ca.if_else(good, theta_next, theta)            # no update on a bad sample
+    status = ca.if_else(consistent, ca.if_else(regular, ca.if_else(finite, ca.if_else(
+        saturated, STATUS["saturated"], ca.if_else(
+            unpreloaded, STATUS["preload_infeasible"], STATUS["ok"])), STATUS["non_finite"]),
+        STATUS["singular"]), STATUS["inconsistent_encoders"])
+    carry = ca.logic_and(consistent, finite)                   # a pose worth remembering
+    state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(carry, xe, st["xe_prev"]),
+                                        v=ca.if_else(carry, v, st["v"]), theta_hat=theta_out)
+    return ca.Function(
+        f"{prefix}_{name}_step", inputs + [sx for _, sx in extra],
+        [tau_out, state_next, status, ca.vertcat(xe, v, e, edot, sing)],
+        ["state", "qa", "xd", "xd_dot", "xd_ddot", "params"] + [k for k, _ in extra],
+        ["tau_a", "state_next", "status", "diag"])
