@@ -21,7 +21,6 @@ tests/derive/test_generated.py builds: tests/derivations.py, the same worker und
 import mpmath
 import numpy as np
 import pytest
-import sympy
 
 import pm2dof
 from tests import derivations
@@ -42,9 +41,9 @@ def setup(request):
     d = derivations.derivation(model.spec)   # Derivation(spec), shared (tests/derivations.py)
     s, kin, dyn = d.sym, d.kin, d.dyn
     mods = [{"sgn": _sgn}, "mpmath"]
-    xedd = sympy.lambdify([list(s.q), list(s.xed), list(s.tau_a), list(s.theta)], dyn.xedd,
-                          modules=mods, cse=derivations.cse)
-    ik = sympy.lambdify([list(s.xe)], kin.ik(), modules=mods, cse=derivations.cse)
+    xedd = derivations.lambdify([list(s.q), list(s.xed), list(s.tau_a), list(s.theta)],
+                                dyn.xedd, mods)
+    ik = derivations.lambdify([list(s.xe)], kin.ik(), mods)
     m, n = len(s.xe), len(s.tau_a)
     cut = np.cumsum([m, m, n])                  # z = [xe, xed, tau_a, theta]
 

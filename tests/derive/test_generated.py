@@ -113,7 +113,7 @@ def _sympy_functions(spec):
     modules = [{"sgn": _sgn}, "mpmath"]
 
     def lam(args, expr):
-        return sympy.lambdify(args, expr, modules=modules, cse=derivations.cse)
+        return derivations.lambdify(args, expr, modules)
 
     out = {
         "ik": lam([xe], kin.ik()),

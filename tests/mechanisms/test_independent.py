@@ -108,7 +108,7 @@ class Lambdified:
                                         "numpy")
 
     def _f(self, expr):
-        fn = sp.lambdify(self.args, expr, [{"sgn": _sgn}, "numpy"], cse=derivations.cse)
+        fn = derivations.lambdify(self.args, expr, [{"sgn": _sgn}, "numpy"])
         zeros = {k: np.zeros(v) for k, v in (("m", self.m), ("n", self.n))}
 
         def call(q, xe, xed=None, xrd=None, xrdd=None, tau=None, theta=None):
