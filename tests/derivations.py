@@ -1,13 +1,16 @@
 # One SymPy derivation per model file per test process, shared by the modules that need one.
 """The SymPy derivation of a shipped model (:class:`pm2dof.derive.model_functions.Derivation`)
-takes 1-8 s (rrr4_platform the most), and four test modules build the same ones:
-tests/derive/test_generated.py (regeneration and the 30-digit check), test_derive_task_dimension.py
-(the paper's robot), test_factored_platform.py (the shipped platforms), tests/mechanisms/test_independent.py (the shipped mechanisms against an
-independent formulation) and tests/derivatives/test_derivatives_mpmath.py (the paper's robot
-and the five-bar). A derivation is a pure function of its model file, so it is built
-once per process and shared; conftest.py's scheduler runs these modules in one pytest-xdist
-worker, so the sharing holds under ``make test`` too. tests/core/test_install_paths.py derives
-the same user model files several times in its own module (its own worker is enough).
+takes 0.1-0.6 s (rrr4_platform the most), and its lambdified matrices seconds more; six test
+modules build the same ones: tests/derive/test_generated.py (regeneration and the 30-digit
+check), test_derive_task_dimension.py (the paper's robot), test_factored_platform.py (the
+shipped platforms), test_derive_path_mvc.py (the paper's robot),
+tests/mechanisms/test_independent.py (the shipped mechanisms against an independent
+formulation) and tests/derivatives/test_derivatives_mpmath.py (the paper's robot and the
+five-bar). A derivation is a pure function of its model file, so it is built once per process
+and shared; conftest.py's scheduler runs these modules (test_derive_path_mvc.py aside: one
+cheap derivation) in one pytest-xdist worker, so the sharing holds under ``make test`` too.
+tests/core/test_install_paths.py derives the same user model files several times in its own
+module (its own worker is enough).
 
 Keyed by the SHA-256 of the model file's bytes: the same file content, the same derivation
 (wherever the file lies: a derivation does not depend on the file's path; a spec changed in

@@ -15,16 +15,17 @@ timings:
 * ``toppra_solve_ms``: the same with the constraint coefficients precomputed (toppra's solver
   alone, its Cython Seidel LP).
 
-Each timed run follows an untimed run of the same: a pm2dof plan that directly follows
-toppra's run pays 0.8-1 ms more (the paper's line 2.8 -> 3.7 ms, the caches and branch
-predictors refilled after toppra's ~40 ms of Python), a cost of the run before it that the
-next plan no longer pays; toppra gets the same warm start. Timed straight after toppra, as
-before November 2026, that cost counted in the refined plan's time but not in the unrefined
-one's.
+Each timed run follows an untimed run of the same (:func:`pm2dof.bench.timing.warm_then_time`):
+a pm2dof plan that directly follows toppra's run pays 0.8-1 ms more (the paper's line 2.8 ->
+3.7 ms, the caches and branch predictors refilled after toppra's ~40 ms of Python), a cost of
+the run before it that the next plan no longer pays; toppra gets the same warm start. Timed
+straight after toppra, as before November 2026, that cost counted in the refined plan's time
+but not in the unrefined one's.
 
 toppra is optional: without it those keys are None and ``notes`` says why.
 """
 import time
+from functools import partial
 
 import numpy as np
 
@@ -33,7 +34,7 @@ from ..planning import TaskPath, plan_time_optimal
 from ..planning.problem import PlanProblem
 from ..planning.smooth import plan_smooth
 from ..planning.stages import grid_points, limits, params, stages
-from .timing import stats
+from .timing import stats, warm_then_time
 
 __all__ = ["bench_planning", "bench_refinement", "bench_paths", "toppra_runner", "ToppraPath",
            "friction_free"]
@@ -42,11 +43,10 @@ __all__ = ["bench_planning", "bench_refinement", "bench_paths", "toppra_runner",
 def friction_free(model):
     """The model's nominal theta with every friction parameter (those of its friction law:
     fv, fc, ...) zero; the inertial ones, a platform's included, as they are."""
-    from ..core.model_file import FRICTION_MODELS
+    from ..core.model_file import is_friction_param
     th = np.array(model.theta_nominal, dtype=float)
-    prefixes = FRICTION_MODELS[model.spec.friction]
     for j, name in enumerate(model.param_names):
-        if name.rstrip("0123456789") in prefixes:
+        if is_friction_param(name, model.spec.friction):
             th[j] = 0.0
     return th
 
@@ -183,17 +183,11 @@ def bench_refinement(model, line, repeats, say):
                 times = {"refined": [], "unrefined": [], "toppra": []}
                 for _ in range(repeats):
                     if run_t is not None:
-                        run_t()                                          # untimed: warm
-                        t0 = time.perf_counter()
-                        run_t()
-                        times["toppra"].append(time.perf_counter() - t0)
-                    plan_time_optimal(model, path, split=split, theta=theta)   # untimed: warm
-                    t0 = time.perf_counter()
-                    plan_time_optimal(model, path, split=split, theta=theta)
-                    times["refined"].append(time.perf_counter() - t0)
-                    t0 = time.perf_counter()
-                    plan_on_grid(model, path, plan.s, split=split, theta=theta)
-                    times["unrefined"].append(time.perf_counter() - t0)
+                        times["toppra"].append(warm_then_time(run_t)[1])
+                    times["refined"].append(warm_then_time(partial(
+                        plan_time_optimal, model, path, split=split, theta=theta))[1])
+                    times["unrefined"].append(warm_then_time(partial(
+                        plan_on_grid, model, path, plan.s, split=split, theta=theta))[1])
                 med = {k: stats([1e3 * x for x in v])["median"] if v else None
                        for k, v in times.items()}
                 rows[name][f"{split}_{friction}"] = {
@@ -277,19 +271,14 @@ def bench_planning(model, quick=False, progress=None):
             return algo.compute_parameterization(0, 0, return_data=True)[1]
 
         per = {"toppra": [], "toppra_solve": [], "pm2dof": []}
-        sd_t = run_toppra(False)
         for _ in range(repeats):
-            run_toppra(False)                                       # untimed: warm
-            t0 = time.perf_counter()
-            sd_t = run_toppra(False)
-            per["toppra"].append((time.perf_counter() - t0) * 1e3)
-            t0 = time.perf_counter()
-            sd_g = run_toppra(True)
-            per["toppra_solve"].append((time.perf_counter() - t0) * 1e3)
-            plan_time_optimal(model, path, theta=th0, split="min_max", grid=grid)  # untimed: warm
-            t0 = time.perf_counter()
-            pl = plan_time_optimal(model, path, theta=th0, split="min_max", grid=grid)
-            per["pm2dof"].append((time.perf_counter() - t0) * 1e3)
+            sd_t, dt = warm_then_time(partial(run_toppra, False))
+            per["toppra"].append(dt * 1e3)
+            sd_g, dt = warm_then_time(partial(run_toppra, True))
+            per["toppra_solve"].append(dt * 1e3)
+            pl, dt = warm_then_time(partial(plan_time_optimal, model, path, theta=th0,
+                                            split="min_max", grid=grid))
+            per["pm2dof"].append(dt * 1e3)
         res["toppra_ms"] = stats(per["toppra"])["median"]
         res["toppra_solve_ms"] = stats(per["toppra_solve"])["median"]
         res["plan_friction_free_ms"] = stats(per["pm2dof"])["median"]

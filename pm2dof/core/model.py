@@ -33,10 +33,10 @@ from .errors import (
 )
 from .layout import Layout
 from .model_file import (
-    FRICTION_MODELS,
     INERTIAL,
     PLATFORM_PARAMS,
     inertia_problem,
+    is_friction_param,
     platform_inertia_problem,
     read_model_file,
 )
@@ -317,9 +317,8 @@ class Model(DerivativeMethods, PoseMethods):
                 why = platform_inertia_problem(*(th[index[k]] for k in PLATFORM_PARAMS))
                 if why is not None:
                     raise ArgumentError(f"{name} is not physical: the platform's {why}")
-            friction = FRICTION_MODELS[self.spec.friction]
             for j, pname in enumerate(self.param_names):
-                if pname.rstrip("0123456789") in friction and th[j] < 0:
+                if is_friction_param(pname, self.spec.friction) and th[j] < 0:
                     raise ArgumentError(f"{name} is not physical: {pname} = {th[j]:.6g} < 0 "
                                         f"(friction must dissipate)")
         return th

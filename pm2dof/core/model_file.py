@@ -19,8 +19,8 @@ import numpy as np
 from .errors import ModelFileError
 from .validate import RULES, Problems, entry
 
-__all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "ELBOWS", "LEG_KINDS",
-           "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem", "attachment_points",
+__all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "is_friction_param",
+           "ELBOWS", "LEG_KINDS", "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem", "attachment_points",
            "theta_groups", "payload_increments", "LINK_BODIES", "lumped_from_links",
            "platform_from_body"]
 
@@ -356,6 +356,12 @@ def attachment_points(spec_legs, pose):
     c, s = math.cos(pose[2]), math.sin(pose[2])
     return [(pose[0] + c * lg.attach[0] - s * lg.attach[1],
              pose[1] + s * lg.attach[0] + c * lg.attach[1]) for lg in spec_legs]
+
+
+def is_friction_param(name, friction):
+    """Whether theta's entry ``name`` (a key and a leg number: fv2, fc1, ...) is a parameter of
+    the friction law ``friction`` (a key of FRICTION_MODELS)."""
+    return name.rstrip("0123456789") in FRICTION_MODELS[friction]
 
 
 def inertia_problem(alpha, beta, gamma):
