@@ -50,9 +50,6 @@ class SplinePiece:
         # c(u) on span j: P_j + k1 B + k2 B^2 + k3 B^3, B = u - u_j (c'' linear from M_j to M_j+1)
         self.k1 = (P[1:] - P[:-1]) / h - h * (2 * M0 + M1) / 6
         self.k2, self.k3 = M0 / 2, (M1 - M0) / (6 * h)
-        # per span: k1, k2, k3, 3 k3, 2 k2, 6 k3 (c' and c'' by Horner) and P_j, one gather
-        self._span = np.concatenate([self.k1, self.k2, self.k3, 3 * self.k3, 2 * self.k2,
-                                     6 * self.k3, P[:-1]], axis=1)
         # arc-length table at _SUB sub-nodes per span
         nodes = np.concatenate([np.linspace(u[j], u[j + 1], _SUB + 1)[:-1]
                                 for j in range(len(u) - 1)] + [[u[-1]]])
@@ -71,11 +68,12 @@ class SplinePiece:
         cubic in B = u - u_j (Horner)."""
         j = np.clip(np.searchsorted(self.u, u, side="right") - 1, 0, len(self.u) - 2)
         B = (u - self.u[j])[:, None]
-        k1, k2, k3, k3x3, k2x2, k3x6, P = np.split(self._span[j], 7, axis=1)
-        d1 = (k3x3 * B + k2x2) * B + k1
+        k1, k2, k3 = self.k1[j], self.k2[j], self.k3[j]
+        d1 = (3 * k3 * B + 2 * k2) * B + k1
         if order == 1:
             return d1
-        return ((k3 * B + k2) * B + k1) * B + P, d1, k3x6 * B + k2x2
+        c = ((k3 * B + k2) * B + k1) * B + self.P[j]
+        return c, d1, 6 * k3 * B + 2 * k2
 
     def _integral(self, a, b):
         """Arc length of c between parameters a and b (arrays), Gauss-Legendre."""
@@ -91,14 +89,11 @@ class SplinePiece:
         u0, u1 = self.nodes[k], self.nodes[k + 1]
         h = s1 - s0
         t = (s - s0) / h                        # cubic Hermite of u(s) on the table interval
-        t2 = t * t
-        t3 = t2 * t
+        t2, t3 = t * t, t * t * t
         u = ((2 * t3 - 3 * t2 + 1) * u0 + (t3 - 2 * t2 + t) * h * self.du_ds[k]
              + (-2 * t3 + 3 * t2) * u1 + (t3 - t2) * h * self.du_ds[k + 1])
         c, d1, d2 = self._derivs(u)
-        speed = np.hypot(d1[:, 0], d1[:, 1])[:, None]
+        speed = np.hypot(*d1.T)[:, None]
         t = d1 / speed
-        dot = d2[:, 0] * t[:, 0]                # c'' . p', as np.sum over the two columns
-        dot += d2[:, 1] * t[:, 1]
-        ddp = (d2 - dot[:, None] * t) / speed ** 2
+        ddp = (d2 - np.sum(d2 * t, axis=1, keepdims=True) * t) / speed ** 2
         return c, t, ddp
