@@ -59,10 +59,20 @@ def lambdify(args, expr, modules):
     """``sympy.lambdify(args, expr, modules, cse=cse)``, the same function, built faster:
     ``expr`` is handed over inside a list, which has no ``atoms``, so lambdify skips walking
     the whole tree for its symbols' names (a walk that does not share repeated subtrees: a
-    third of the time on a platform's xedd); its value is unwrapped here."""
-    import sympy
-    fn = sympy.lambdify(args, [expr], modules=modules, cse=cse)
+    third of the time on a platform's xedd); its value is unwrapped here. No search for
+    ``implemented_function`` (:func:`plain_lambdify`)."""
+    fn = plain_lambdify(args, [expr], modules, cse=cse)
 
     def call(*a):
         return fn(*a)[0]
     return call
+
+
+def plain_lambdify(args, expr, modules, **kw):
+    """``sympy.lambdify(args, expr, modules, **kw)`` with ``use_imps=False``: the same code.
+    By default lambdify walks the whole tree for functions made by ``implemented_function``
+    (their ``_imp_``), a walk that does not share repeated subtrees (a third of lambdify's time
+    on a platform's matrices); pm2dof.derive makes none (``sgn`` comes from ``modules``), so
+    the walk finds nothing and the generated function is the same."""
+    import sympy
+    return sympy.lambdify(args, expr, modules=modules, use_imps=False, **kw)
