@@ -32,7 +32,7 @@ XED = np.array([0.2, -0.3, 0.5])
 
 
 def _derive(d):
-    fs = derive_functions(d, d.spec)
+    fs = derivations.functions(d, d.spec)     # the paper's: shared (tests/derivations.py)
     prefix = d.spec.name + "_"
     return {f.name()[len(prefix):]: f for f in fs}, derive_layouts(d)
 
