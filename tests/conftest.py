@@ -338,32 +338,32 @@ _SHARED_UNITS = dict.fromkeys(("tests/derive/test_generated.py",
                                "tests/derive/test_derive_task_dimension.py",
                                "tests/mechanisms/test_independent.py",
                                "tests/derivatives/test_derivatives_mpmath.py"), "derivations")
-#: The longest work units, longest first (seconds of one run, Nov 25 2026, in brackets); the
+#: The longest work units, longest first (seconds of one run, Nov 26 2026, in brackets); the
 #: others follow in pytest-xdist's order (most tests first). Longest first keeps a long unit from
 #: starting last while the other worker idles; a stale list only costs time, never a test.
 _LONGEST_FIRST = (
-    "derivations",                                          # (66)
-    "tests/studies/test_studies_cluster.py",                # (28)
-    "tests/figures/test_figures_layout.py",                 # (17)
-    "tests/identification/test_identification_conclusions.py",  # (16)
-    "tests/core/test_install_paths.py",                     # (15)
-    "tests/identification/test_identification_design.py",   # (13)
-    "tests/control/test_closed_loop.py",                    # (12)
-    "tests/examples/test_c_example.py",                     # (11)
-    "tests/control/test_fk_tracking_steps.py",              # (10)
-    "tests/planning/test_planning_topp.py",                 # (9)
-    "tests/identification/test_identification_fit.py",      # (6)
-    "tests/bench/test_bench.py",                            # (5)
-    "tests/test_api.py",                                    # (5)
-    "tests/identification/test_identification_design_platform.py",  # (5)
-    "tests/export/test_export_new_kinds.py",                # (5)
-    "tests/derive/test_splits_3d.py",                       # (5)
-    "tests/test_model_file.py",                             # (5)
+    "derivations",                                          # (51)
+    "tests/studies/test_studies_cluster.py",                # (32)
+    "tests/figures/test_figures_layout.py",                 # (21)
+    "tests/core/test_install_paths.py",                     # (16)
+    "tests/identification/test_identification_design.py",   # (12)
+    "tests/control/test_closed_loop.py",                    # (9)
+    "tests/control/test_fk_tracking_steps.py",              # (8)
+    "tests/bench/test_bench.py",                            # (8)
+    "tests/planning/test_planning_topp.py",                 # (7)
+    "tests/test_api.py",                                    # (6)
+    "tests/export/test_export_new_kinds.py",                # (6)
     "tests/export/test_export_project.py",                  # (5)
     "tests/figures/test_animate.py",                        # (5)
-    "tests/identification/test_identification_commands.py",  # (4)
+    "tests/derive/test_splits_3d.py",                       # (5)
+    "tests/identification/test_identification_conclusions.py",  # (5)
     "tests/test_docs_api_links.py",                         # (4)
-    "tests/derive/test_derive_path_mvc.py",                 # (4)
+    "tests/analysis/test_maps.py",                          # (4)
+    "tests/test_bad_input.py",                              # (4)
+    "tests/examples/test_c_example.py",                     # (3)
+    "tests/identification/test_identification_design_platform.py",  # (3)
+    "tests/identification/test_identification_commands.py",  # (3)
+    "tests/test_model_file.py",                             # (3)
 )
 
 

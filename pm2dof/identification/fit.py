@@ -221,25 +221,25 @@ def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,
     sos = lowpass(cutoff_hz, T, order)
     xf = xe[0] + zero_phase(sos, xe - xe[0])   # about the first sample: a log at rest stays
     #                                            exactly at rest (xed = 0, sign(0) = 0: no fc)
+    # C-contiguous rows (sosfiltfilt's result is not): the model's fast path takes them, a
+    # strided row would be refused and copied on the checked path, ~5x slower per sample
+    xf = np.ascontiguousarray(xf)
     v, a = differentiate(xf, T)
     tau_mid = np.empty_like(tau)
     tau_mid[0] = tau[0]
     tau_mid[1:] = 0.5 * (tau[1:] + tau[:-1])   # the hold intervals before and after t_k
     m = model.dof
-    Y = np.empty((N, m, len(I)))
-    u = np.empty((N, m))
-    slow = np.zeros(N, dtype=bool)
-    floor = joint_speed_floor(model, min_joint_speed)
-    Yk = np.empty((m, len(model.param_names)))
-    S = np.empty((model.n_legs, m))
+    Y = np.empty((N, m, len(model.param_names)))
+    S = np.empty((N, model.n_legs, m))
     q = np.empty(2 * model.n_legs)
-    for k in range(N):
+    for k in range(N):                           # three calls into C per sample, no numpy
         model.ik(xf[k], out=q)
-        model.S(q, out=S)
-        model.Y(q, v[k], v[k], a[k], out=Yk)     # eq. 13 with xrd = xed, xrdd = xedd
-        Y[k] = Yk[:, I]
-        u[k] = S.T @ tau_mid[k]
-        slow[k] = np.any(np.abs(S @ v[k]) < floor)
+        model.S(q, out=S[k])
+        model.Y(q, v[k], v[k], a[k], out=Y[k])   # eq. 13 with xrd = xed, xrdd = xedd
+    Y = Y[:, :, I]
+    u = np.matmul(S.transpose(0, 2, 1), tau_mid[:, :, None])[:, :, 0]     # S^T tau per sample
+    slow = np.any(np.abs(np.matmul(S, v[:, :, None])[:, :, 0]) < joint_speed_floor(
+        model, min_joint_speed), axis=1)
     Yf, uf = zero_phase(sos, Y), zero_phase(sos, u)   # parallel filtering: the same filter
     edge = int(math.ceil(3.0 / (cutoff_hz * T)))       # filtfilt's start-up transients
     r = decimate or max(1, int(1.0 / (4.0 * cutoff_hz * T)))

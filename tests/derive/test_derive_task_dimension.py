@@ -19,7 +19,6 @@ The toy's platform terms name the pose phi directly (not only through q), so fun
 import casadi as ca
 import numpy as np
 import pytest
-import sympy as sp
 import toy_platform
 
 from pm2dof.core.model_file import read_model_file
@@ -33,7 +32,7 @@ XED = np.array([0.2, -0.3, 0.5])
 
 
 def _derive(d):
-    fs = derive_functions(d, d.spec)
+    fs = derivations.functions(d, d.spec)     # the paper's: shared (tests/derivations.py)
     prefix = d.spec.name + "_"
     return {f.name()[len(prefix):]: f for f in fs}, derive_layouts(d)
 
@@ -146,12 +145,13 @@ class _Ref:
         args = list(sym.q) + list(sym.xe) + list(sym.xed) + list(sym.theta) + list(sym.tau_a)
         self.d = d
         mods = [{"sgn": np.sign}, "numpy"]
-        self._ik = sp.lambdify(list(sym.xe), kin.ik(), mods)
-        self._f = {name: sp.lambdify(args, expr, mods) for name, expr in
+        self._ik = derivations.plain_lambdify(list(sym.xe), kin.ik(), mods)
+        self._f = {name: derivations.plain_lambdify(args, expr, mods) for name, expr in
                    (("Me", dyn.Me), ("Ce", dyn.Ce), ("Ge", dyn.Ge), ("StF", dyn.StF),
                     ("S", kin.S), ("W", kin.W))}
-        self._T = sp.lambdify(args, dyn.T.subs(dict(zip(sym.qd, kin.W * sym.xed))), mods)
-        self._V = sp.lambdify(args, dyn.V, mods)
+        self._T = derivations.plain_lambdify(
+            args, dyn.T.subs(dict(zip(sym.qd, kin.W * sym.xed))), mods)
+        self._V = derivations.plain_lambdify(args, dyn.V, mods)
 
     def q(self, xe):
         return np.asarray(self._ik(*xe), dtype=float).ravel()

@@ -265,26 +265,49 @@ def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
 def test_ctrl_c_during_design_writes_nothing_and_exits_130(tmp_path):
     """IPOPT catches SIGINT and returns User_Requested_Stop: the design used to write that
     half-made excitation and exit 0 (issue 28)."""
+    import fcntl
     import os
     import signal
+    import struct
     import subprocess
     import sys
+    import termios
     import time
 
     from tests.processes import from_a_terminal
     out = tmp_path / "exc.toml"
     env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
+    # stderr on a terminal (a pty), as where Ctrl-C is pressed: the bar of IPOPT's iterations
+    # is drawn there, and the Ctrl-C is sent once it shows a step (IPOPT's callback at its
+    # iteration 0): inside IPOPT's iterations for sure, not after a guessed sleep (was 3 s)
+    master, slave = os.openpty()
+    fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 120, 0, 0))  # 120 columns
     p = subprocess.Popen(from_a_terminal([sys.executable, "-m", "pm2dof", "identify", "design",
                                           "--out", out]),
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
-    err = ""
-    while "IPOPT:" not in err:                  # the stage line printed as IPOPT starts
-        line = p.stderr.readline()
-        assert line, "the design ended before IPOPT started"
-        err += line
-    time.sleep(3.0)
-    p.send_signal(signal.SIGINT)
-    stdout, rest = p.communicate(timeout=300)
+                         stdout=subprocess.PIPE, stderr=slave, text=True, env=env)
+    os.close(slave)
+
+    def read():
+        try:
+            return os.read(master, 65536).decode(errors="replace")
+        except OSError:                          # EIO: the command closed its terminal
+            return ""
+    err, t0 = "", time.monotonic()
+    try:
+        while not re.search(r"IPOPT[^\r\n]*\b[1-9][0-9]*/500\b", err):
+            chunk = read()
+            assert chunk, f"the design ended before IPOPT iterated: {err}"
+            assert time.monotonic() - t0 < 300, err
+            err += chunk
+        p.send_signal(signal.SIGINT)
+        rest = ""
+        while chunk := read():
+            rest += chunk
+        stdout = p.communicate(timeout=300)[0]
+    finally:
+        p.kill()
+        p.wait()
+        os.close(master)
     assert p.returncode == 130, (stdout, rest)
     assert not out.exists() and not list(tmp_path.iterdir())
     assert rest.strip().splitlines()[-1].startswith("pm2dof: interrupted (IPOPT stopped after ")

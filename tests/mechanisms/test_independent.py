@@ -26,6 +26,7 @@ from tests.mechanisms.independent import Mechanism, lumped_theta, random_links
 from tests.mechanisms.models import model_path
 
 G = (0.0, -9.81)
+_lambdify = derivations.plain_lambdify       # sympy.lambdify, the same functions, built faster
 
 
 def _with(spec, **changes):
@@ -91,21 +92,21 @@ class Lambdified:
         self.args = [list(sym.q), list(sym.xe), list(sym.xed), list(sym.xrd), list(sym.xrdd),
                      list(sym.tau_a), list(sym.theta)]
         f = self._f
-        self.ik = sp.lambdify([list(sym.xe)], kin.ik(), "numpy")
-        self.pose = sp.lambdify([list(sym.q)], kin.pose_from_q(), "numpy")
+        self.ik = _lambdify([list(sym.xe)], kin.ik(), "numpy")
+        self.pose = _lambdify([list(sym.q)], kin.pose_from_q(), "numpy")
         self.W = f(kin.W)
         self.Me, self.Ce, self.Ge, self.StF = f(dyn.Me), f(dyn.Ce), f(dyn.Ge), f(dyn.StF)
         self.xedd, self.Y = f(dyn.xedd), f(dyn.Y)
         self.T, self.V = f(sp.Matrix([dyn.kinetic_energy])), f(sp.Matrix([dyn.potential_energy]))
         qa = list(sym.qa)
         if kin.platform:
-            self.newton = sp.lambdify([list(sym.xe), qa], kin.fk_newton_step(), "numpy")
-            self.residual = sp.lambdify([list(sym.xe), qa], kin.closure_residuals(sym.xe),
-                                        "numpy")
+            self.newton = _lambdify([list(sym.xe), qa], kin.fk_newton_step(), "numpy")
+            self.residual = _lambdify([list(sym.xe), qa], kin.closure_residuals(sym.xe),
+                                      "numpy")
         else:
-            self.fk_point = sp.lambdify([qa], kin.fk(), "numpy")
-            self.residual = sp.lambdify([list(sym.xe), qa], kin.closure_residuals(sym.xe),
-                                        "numpy")
+            self.fk_point = _lambdify([qa], kin.fk(), "numpy")
+            self.residual = _lambdify([list(sym.xe), qa], kin.closure_residuals(sym.xe),
+                                      "numpy")
 
     def _f(self, expr):
         fn = derivations.lambdify(self.args, expr, [{"sgn": _sgn}, "numpy"])
@@ -439,8 +440,8 @@ def test_platform_parallel_measure(name):
     space's), moments over L, rows normalised; in (0, 1] away from singularities."""
     s = Setup(name, seed=11)
     lam, kin = s.lam, s.lam.kin
-    f = sp.lambdify([list(lam.sym.q), list(lam.sym.xe)], kin.parallel_measure(), "numpy",
-                    cse=derivations.cse)
+    f = _lambdify([list(lam.sym.q), list(lam.sym.xe)], kin.parallel_measure(), "numpy",
+              cse=derivations.cse)
     L = float(kin.moment_length())
     for _ in range(3):
         xe, q, _ = s.state()
@@ -464,9 +465,9 @@ def test_platform_parallel_measure_is_zero_where_the_lines_meet():
     # its kinematics only (the measure and ik): Lambdified would derive its dynamics too (~6 s)
     sym = Symbols(radial.n_legs, radial.param_names, radial.task_names)
     kin = Kinematics(radial, sym)
-    f = sp.lambdify([list(sym.q), list(sym.xe)], kin.parallel_measure(), "numpy",
-                    cse=derivations.cse)
-    ik = sp.lambdify([list(sym.xe)], kin.ik(), "numpy")
+    f = _lambdify([list(sym.q), list(sym.xe)], kin.parallel_measure(), "numpy",
+              cse=derivations.cse)
+    ik = _lambdify([list(sym.xe)], kin.ik(), "numpy")
 
     def q_of(xe):
         return np.array(ik(xe), dtype=float).ravel()      # as Lambdified.q
@@ -515,7 +516,7 @@ def test_expressions_convert_and_agree(name):
         exprs["fk"] = kin.fk()
     for what, e in exprs.items():
         got = np.array(ca.evalf(conv(e)), dtype=float).ravel()
-        want = np.array(sp.lambdify([], e.xreplace(values), "numpy")(), dtype=float).ravel() \
+        want = np.array(_lambdify([], e.xreplace(values), "numpy")(), dtype=float).ravel() \
             if what not in ("StF", "Y", "xedd") else None
         if want is None:   # sgn(): evaluate by lambdify with the same mapping as the tests
             fn = {"StF": lam.StF, "Y": lam.Y, "xedd": lam.xedd}[what]
