@@ -29,6 +29,13 @@ G = (0.0, -9.81)
 _lambdify = derivations.plain_lambdify       # sympy.lambdify, the same functions, built faster
 
 
+def _lambdify_cse(args, expr, modules):
+    """:data:`_lambdify` with SymPy's common-subexpression elimination: the same function,
+    each repeated subtree evaluated once (a platform's fk Newton step: 12 instead of 730 us a
+    call, 0.1 instead of 0.6 s to build)."""
+    return _lambdify(args, expr, modules, cse=derivations.cse)
+
+
 def _with(spec, **changes):
     """``spec`` with other legs or gravity, and theta's names that go with them."""
     spec = dataclasses.replace(spec, **changes)
@@ -92,21 +99,21 @@ class Lambdified:
         self.args = [list(sym.q), list(sym.xe), list(sym.xed), list(sym.xrd), list(sym.xrdd),
                      list(sym.tau_a), list(sym.theta)]
         f = self._f
-        self.ik = _lambdify([list(sym.xe)], kin.ik(), "numpy")
-        self.pose = _lambdify([list(sym.q)], kin.pose_from_q(), "numpy")
+        self.ik = _lambdify_cse([list(sym.xe)], kin.ik(), "numpy")
+        self.pose = _lambdify_cse([list(sym.q)], kin.pose_from_q(), "numpy")
         self.W = f(kin.W)
         self.Me, self.Ce, self.Ge, self.StF = f(dyn.Me), f(dyn.Ce), f(dyn.Ge), f(dyn.StF)
         self.xedd, self.Y = f(dyn.xedd), f(dyn.Y)
         self.T, self.V = f(sp.Matrix([dyn.kinetic_energy])), f(sp.Matrix([dyn.potential_energy]))
         qa = list(sym.qa)
         if kin.platform:
-            self.newton = _lambdify([list(sym.xe), qa], kin.fk_newton_step(), "numpy")
-            self.residual = _lambdify([list(sym.xe), qa], kin.closure_residuals(sym.xe),
-                                      "numpy")
+            self.newton = _lambdify_cse([list(sym.xe), qa], kin.fk_newton_step(), "numpy")
+            self.residual = _lambdify_cse([list(sym.xe), qa], kin.closure_residuals(sym.xe),
+                                          "numpy")
         else:
-            self.fk_point = _lambdify([qa], kin.fk(), "numpy")
-            self.residual = _lambdify([list(sym.xe), qa], kin.closure_residuals(sym.xe),
-                                      "numpy")
+            self.fk_point = _lambdify_cse([qa], kin.fk(), "numpy")
+            self.residual = _lambdify_cse([list(sym.xe), qa], kin.closure_residuals(sym.xe),
+                                          "numpy")
 
     def _f(self, expr):
         fn = derivations.lambdify(self.args, expr, [{"sgn": _sgn}, "numpy"])
