@@ -51,9 +51,13 @@ derive-all: $(STAMP)
 # -n auto: one pytest worker per core; --dist loadscope keeps a module's tests (and its
 # module-scoped fixtures: built models, derivations, studies) on one worker; tests/conftest.py
 # (pytest_xdist_make_scheduler) hands out the longest modules first and keeps the modules that
-# share one SymPy derivation per model (tests/derivations.py) on one worker
+# share one SymPy derivation per model (tests/derivations.py) on one worker.
+# PYTHONDONTWRITEBYTECODE cleared: both workers and the ~100 Python processes the tests start
+# (CLI runs, Dask workers, import checks) reuse the bytecode of pm2dof and of the tests (pytest's
+# rewritten asserts) that the first one compiled, instead of compiling it again (__pycache__/
+# is git-ignored)
 test: install
-	$(PY) -m pytest -q -n auto --dist loadscope
+	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist loadscope
 
 # pyflakes (F), import order (I), bugbear (B): [tool.ruff] in pyproject.toml
 lint: $(STAMP)
