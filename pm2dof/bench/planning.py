@@ -30,6 +30,7 @@ from functools import partial
 import numpy as np
 
 from ..control.trajectory import line_moves
+from ..core.model_file import is_friction_param
 from ..planning import TaskPath, plan_time_optimal
 from ..planning.problem import PlanProblem
 from ..planning.smooth import plan_smooth
@@ -43,7 +44,6 @@ __all__ = ["bench_planning", "bench_refinement", "bench_paths", "toppra_runner",
 def friction_free(model):
     """The model's nominal theta with every friction parameter (those of its friction law:
     fv, fc, ...) zero; the inertial ones, a platform's included, as they are."""
-    from ..core.model_file import is_friction_param
     th = np.array(model.theta_nominal, dtype=float)
     for j, name in enumerate(model.param_names):
         if is_friction_param(name, model.spec.friction):

@@ -20,9 +20,9 @@ from .errors import ModelFileError
 from .validate import RULES, Problems, entry
 
 __all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "is_friction_param",
-           "ELBOWS", "LEG_KINDS", "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem", "attachment_points",
-           "theta_groups", "payload_increments", "LINK_BODIES", "lumped_from_links",
-           "platform_from_body"]
+           "ELBOWS", "LEG_KINDS", "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem",
+           "attachment_points", "theta_groups", "payload_increments", "LINK_BODIES",
+           "lumped_from_links", "platform_from_body"]
 
 # friction model -> its per-leg parameters after the inertial ones (eq. 2 and extensions)
 FRICTION_MODELS = {
