@@ -53,6 +53,7 @@ from .core.errors import (
     ModelFileError,
     ModelMismatchError,
     NonFiniteError,
+    NotResetError,
     OutcomeWarning,
     OutputError,
     PlanError,
@@ -118,7 +119,7 @@ __all__ = [
     "InputFileError",
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError", "TrajectoryError", "GainError", "ModelMismatchError", "BuildError",
-    "OutcomeWarning", "PlanError", "UnsupportedMechanismError",
+    "OutcomeWarning", "PlanError", "UnsupportedMechanismError", "NotResetError",
     # layer 3 (imported on first use)
     *_LAZY,
 ]

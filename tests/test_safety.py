@@ -197,8 +197,9 @@ def test_step_argument_errors_are_clear():
         c.step(QA, XE, Z2, Z2, out=np.empty(N + 1))
     assert "tau_a" in str(info.value) or "out" in str(info.value), str(info.value)
     assert same_state(c.state, before)
-    with pytest.raises(RuntimeError, match="reset"):
+    with pytest.raises(pm2dof.NotResetError, match="reset") as info:   # a RuntimeError too
         NAController(M).step(QA, XE, Z2, Z2)
+    assert isinstance(info.value, RuntimeError)
 
 
 # --------------------------------------------------------------------------------------

@@ -20,6 +20,7 @@ from ..core.errors import (
     ArgumentTypeError,
     GainError,
     ModelMismatchError,
+    NotResetError,
     SingularityError,
 )
 from ..core.layout import Layout
@@ -246,7 +247,8 @@ class _Controller:
 
     @staticmethod
     def _not_reset(*args):
-        raise RuntimeError("call reset(qa0) before the first step")
+        raise NotResetError("call reset(qa0) with the measured active angles before the first "
+                            "step: it sets the starting pose and theta_hat")
 
     @property
     def on_singular(self):
@@ -270,7 +272,10 @@ class _Controller:
         SingularityError (a ValueError), or with ``on_singular="zero"`` returns the safe
         torque zero; either way theta_hat is not updated (``status == "singular"``). A
         non-finite intermediate result gives zero torque and leaves the whole state as it
-        was (``status == "non_finite"``). The next good sample gives a finite torque.
+        was (``status == "non_finite"``). Encoder angles that do not close the loops give
+        zero torque and leave the state as it was (``status == "inconsistent_encoders"``). The
+        next good sample gives a finite torque. Before :meth:`reset` it raises NotResetError
+        (a RuntimeError).
 
         Inputs may be any array-likes of real numbers (lists, float32, ...): they are converted
         once, and a wrong length raises ArgumentError (a ValueError) naming the input. C-contiguous float64
@@ -318,8 +323,10 @@ class _Controller:
     @property
     def status(self):
         """What the last step did: "ok", "singular" (zero torque), "saturated" (clipped),
-        "non_finite" (zero torque, state kept) or "preload_infeasible" (the preload split could
-        not keep every preload within the limits: the largest worst-case preload instead)."""
+        "non_finite" (zero torque, state kept), "preload_infeasible" (the preload split could
+        not keep every preload within the limits: the largest worst-case preload instead) or
+        "inconsistent_encoders" (the encoders do not close the loops within ``[sensing]
+        closure_tolerance``: zero torque, state kept). :class:`pm2dof.Status` names them."""
         return STATUS_NAMES[int(self._status[0])]
 
     @property

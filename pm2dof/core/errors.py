@@ -5,7 +5,7 @@ __all__ = ["Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError"
            "Problem",
            "InputFileError", "ModelFileError", "StaleGeneratedCodeError", "WorkspaceError",
            "ClosureError", "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning",
-           "PlanError", "UnsupportedMechanismError"]
+           "PlanError", "UnsupportedMechanismError", "NotResetError"]
 
 
 class Pm2dofError(Exception):
@@ -91,6 +91,10 @@ class ModelFileError(InputFileError):
 class StaleGeneratedCodeError(Pm2dofError, RuntimeError):
     """Generated code is missing, or does not match its model file: the message names the
     ``pm2dof derive ...`` command to run."""
+
+
+class NotResetError(Pm2dofError, RuntimeError):
+    """A controller stepped before ``reset(qa0)`` gave it its starting pose and estimate."""
 
 
 class WorkspaceError(Pm2dofError, ValueError):
