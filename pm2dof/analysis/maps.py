@@ -29,7 +29,11 @@ from ..core.errors import ArgumentError, WorkspaceError
 from ..infra.progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
-           "maps_summary", "format_maps_summary", "map_orientation", "FIELDS"]
+           "maps_summary", "format_maps_summary", "map_orientation", "FIELDS",
+           "RESOLUTION_MIN", "RESOLUTION_MAX"]
+
+#: grid points per axis of a map: 1001^2 poses take about 100 s and ~1 GB
+RESOLUTION_MIN, RESOLUTION_MAX = 5, 1001
 
 # quantity -> (unit, description); every map of workspace_maps has these keys
 FIELDS = {
@@ -187,7 +191,8 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
     model : Model
         The robot.
     resolution : int
-        Grid points per axis over the box where every leg can reach.
+        Grid points per axis over the box where every leg can reach, RESOLUTION_MIN = 5 to
+        RESOLUTION_MAX = 1001 (ArgumentError outside).
     theta : array_like (5n,), optional
         Parameters for Me (default Tables 1-2, the controllers' nominal model).
     tau_max : array_like (n,), optional
@@ -207,8 +212,12 @@ def workspace_maps(model, resolution=121, theta=None, tau_max=None, progress=Non
         zero the parallel-singular curve); one (ny, nx) array per :data:`FIELDS` key, NaN
         outside the reachable set and where a pose is singular.
     """
-    if not (isinstance(resolution, int) and resolution >= 5):
-        raise ArgumentError(f"resolution must be an integer >= 5, got {resolution!r}")
+    if not (isinstance(resolution, int) and not isinstance(resolution, bool)
+            and RESOLUTION_MIN <= resolution <= RESOLUTION_MAX):
+        raise ArgumentError(f"resolution (grid points per axis) must be an integer from "
+                            f"{RESOLUTION_MIN} to {RESOLUTION_MAX}, got {resolution!r}")
+    say = progress or (lambda msg: None)
+    say(f"capability maps: {resolution} x {resolution} poses")
     phi = map_orientation(model, phi)
     x, y = _grid(model, resolution, phi)
     X, Y = np.meshgrid(x, y)

@@ -169,6 +169,8 @@ def maps_figures(model, out_dir, resolution=121, theta=None, tau_max=None, progr
     out_dir = Path(out_dir)
     note = maps_note(model, tau_max, maps["phi"])
     paths = []
+    if progress is not None:
+        progress(f"capability maps: drawing {len(FIGURES)} figures into {out_dir}")
     for name, keys in FIGURES.items():
         fig = maps_figure(plt, model, maps, keys, note)
         paths.append(save_figure(fig, out_dir / name, prov))

@@ -123,14 +123,21 @@ def test_workspace_maps_shapes_and_reachable_round_trip():
     assert s["clear_area_m2"] <= s["reachable_area_m2"]
     with pytest.raises(ValueError, match="resolution"):
         workspace_maps(m, 2)
+    for bad in (100_000, True, 21.0):     # too many poses (74 GB at 10^5), a bool, a float
+        with pytest.raises(pm2dof.ArgumentError, match="from 5 to 1001"):
+            workspace_maps(m, bad)
 
 
 def test_maps_command_writes_figures_and_json(tmp_path, capsys):
     assert main(["maps", "--out", str(tmp_path), "--resolution", "21", "--json"]) == 0
-    summary = json.loads(capsys.readouterr().out)
+    cap = capsys.readouterr()
+    summary = json.loads(cap.out)
+    assert "capability maps: 21 x 21 poses" in cap.err                   # stage lines
     assert summary["over_clear_workspace"]["force_ratio"]["min"] >= 1 - 1e-12
     for f in ("maps_singularity.png", "maps_conditioning.png", "maps_force.png",
               "maps_acceleration.png", "maps.json"):
         assert (tmp_path / f).stat().st_size > 0
     assert main(["maps", "--out", str(tmp_path), "--tau-max", "1", "2"]) == 2
     assert "--tau-max" in capsys.readouterr().err
+    assert main(["maps", "--out", str(tmp_path), "--resolution", "100000"]) == 2
+    assert "from 5 to 1001" in capsys.readouterr().err

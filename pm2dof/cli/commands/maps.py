@@ -17,7 +17,8 @@ def add_parser(sub, common):
                        epilog="example: pm2dof maps --model fivebar --out out/maps")
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the PNGs and maps.json")
     p.add_argument("--resolution", type=int, default=121, metavar="N",
-                   help="grid points per axis (default 121; about 1 s per 10^4 points)")
+                   help="grid points per axis, 5 to 1001 (default 121; about 1 s per 10^4 "
+                   "points)")
     p.add_argument("--tau-max", type=POSITIVE, nargs="+", metavar="NM",
                    help="actuator limits, N m: one value for all or one per actuator "
                    "(default: [limits].tau_max)")
