@@ -8,7 +8,7 @@ from ..options import POSITIVE, progress
 
 
 def add_parser(sub, common):
-    p = sub.add_parser("study", help="many-rollout studies on Dask (run, report, bench)",
+    p = sub.add_parser("study", help="many-rollout studies on Dask (run, show, report, bench)",
                        description="Studies run thousands to millions of closed-loop rollouts "
                        "(controller x move x random plant x repetition) described by a study "
                        "file (TOML), on Dask: an embedded LocalCluster by "
