@@ -414,10 +414,14 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         the same coefficients and ``info`` bit for bit (no wall time in it).
     """
     import casadi as ca
-    if not (base_hz > 0 and harmonics >= 1 and periods >= 1 and v_max > 0 and a_max > 0
-            and 0 < tau_fraction <= 1 and radius > 0):
-        raise ArgumentError("need base_hz > 0, harmonics >= 1, periods >= 1, v_max > 0, "
-                            "a_max > 0, 0 < tau_fraction <= 1, radius > 0")
+    rules = (("base_hz", base_hz, "> 0", base_hz > 0), ("harmonics", harmonics, ">= 1",
+             harmonics >= 1), ("periods", periods, ">= 1", periods >= 1),
+             ("v_max", v_max, "> 0", v_max > 0), ("a_max", a_max, "> 0", a_max > 0),
+             ("tau_fraction", tau_fraction, "in (0, 1]", 0 < tau_fraction <= 1),
+             ("radius", radius, "> 0", radius > 0))
+    wrong = [f"{name} must be {rule}, got {value!r}" for name, value, rule, ok in rules if not ok]
+    if wrong:
+        raise ArgumentError("design_excitation: " + "; ".join(wrong))
     phi = phi_limits(model, v_max=v_max, a_max=a_max, radius=radius, phi_v_max=phi_v_max,
                      phi_a_max=phi_a_max, phi_range=phi_range)      # {} for a point
     args = {"base_hz": base_hz, "harmonics": int(harmonics), "periods": int(periods),

@@ -329,3 +329,20 @@ def test_not_met_stands_next_to_the_limit_that_failed(tmp_path, m, monkeypatch):
     assert re.search(r"\|x - c0\| 58\.\d <= 30\.0 mm NOT MET, starts and ends at rest: "
                      r"NOT MET: radius$", line), line
     assert line.count("NOT MET") == 2
+
+
+def test_bad_design_arguments_are_named(m, tmp_path, capsys):
+    """Each wrong argument is named with its value and rule (the API), and from the CLI by its
+    flag (argparse, exit 2), before IPOPT runs."""
+    with pytest.raises(pm2dof.ArgumentError) as info:
+        design_excitation(m, **{**SMALL, "base_hz": -1.0, "tau_fraction": 2.0})
+    msg = str(info.value)
+    assert "base_hz must be > 0, got -1.0" in msg and "tau_fraction must be in (0, 1]" in msg
+    assert "harmonics" not in msg                        # only what was wrong
+    out = tmp_path / "exc.toml"
+    for flag, value in (("--base-hz", "-1"), ("--harmonics", "0"), ("--tau-fraction", "2")):
+        with pytest.raises(SystemExit) as stop:
+            cli.main(["identify", "design", "--out", str(out), flag, value])
+        assert stop.value.code == 2
+        assert flag in capsys.readouterr().err
+    assert not out.exists()

@@ -107,12 +107,13 @@ def add_parser(sub, common):
                      "pm2dof identify design --model rrr3_platform --phi-range 0.1 --out exc.toml"])
     r.add_argument("--out", required=True, metavar="FILE", help="excitation file to write (TOML)")
     for flag, kind, default, text in (
-            ("--base-hz", float, 0.2, "base frequency f0, Hz (default 0.2: 5 s period)"),
-            ("--harmonics", int, 10, "harmonics of f0 (default 10: up to 2 Hz)"),
-            ("--periods", int, 2, "periods per run (default 2: 10 s)"),
-            ("--v-max", float, 0.5, "speed limit of (x, y), m/s (default 0.5)"),
-            ("--a-max", float, 10.0, "acceleration limit of (x, y), m/s^2 (default 10)"),
-            ("--tau-fraction", float, 0.5, "torque limit / tau_max (default 0.5)"),
+            ("--base-hz", POSITIVE, 0.2, "base frequency f0, Hz (default 0.2: 5 s period)"),
+            ("--harmonics", count(1, 1000), 10, "harmonics of f0 (default 10: up to 2 Hz)"),
+            ("--periods", count(1, 1000), 2, "periods per run (default 2: 10 s)"),
+            ("--v-max", POSITIVE, 0.5, "speed limit of (x, y), m/s (default 0.5)"),
+            ("--a-max", POSITIVE, 10.0, "acceleration limit of (x, y), m/s^2 (default 10)"),
+            ("--tau-fraction", number(0.0, 1.0), 0.5, "torque limit / tau_max, in (0, 1] "
+             "(default 0.5)"),
             ("--seed", int, 0, "seed of IPOPT's random start (default 0)")):
         r.add_argument(flag, type=kind, default=default, help=text)
     # a platform's orientation: its own limits (pm2dof.identification.design.phi_limits)
