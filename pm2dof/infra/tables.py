@@ -27,6 +27,11 @@ def _csv_columns(path, error):
         raise error(f"{path}: no header row (the column names)")
     rows = list(csv.reader(io.StringIO("\n".join(line for _, line in body))))
     header = [h.strip() for h in rows[0]]
+    other = next((d for d in (";", "\t", "|") if len(header) == 1 and d in rows[0][0]), None)
+    if other is not None:
+        raise error(f"{path}: line {body[0][0]}: the header is one column, "
+                    f"{rows[0][0].strip()!r}: columns must be separated by commas, not "
+                    f"{'tabs' if other == chr(9) else repr(other)}")
     cols = {h: [] for h in header}
     for r, ((line_no, _), row) in enumerate(zip(body[1:], rows[1:], strict=False), start=1):
         if len(row) != len(header):
@@ -38,7 +43,8 @@ def _csv_columns(path, error):
             except ValueError:
                 raise error(f"{path}: row {r} (line {line_no}), column {h}: {cell!r} is not a "
                             f"number") from None
-    return header, {h: np.array(v, dtype=float) for h, v in cols.items()}
+    return header, {h: np.array(v, dtype=float) for h, v in cols.items()}, \
+        [line_no for line_no, _ in body[1:]]
 
 
 def _parquet_columns(path, error):
@@ -82,7 +88,8 @@ def read_columns(path, error):
         raise error(f"{path}: unknown table format {path.suffix!r} (use .csv or .parquet)")
     if not path.is_file():
         raise error(f"{path}: no such file")
-    header, cols = (_csv_columns if kind == "csv" else _parquet_columns)(path, error)
+    header, cols, lines = _csv_columns(path, error) if kind == "csv" else (
+        *_parquet_columns(path, error), None)
     empty = [k + 1 for k, h in enumerate(header) if not h]
     if empty:
         raise error(f"{path}: column {empty[0]} of the header has no name")
@@ -95,6 +102,7 @@ def read_columns(path, error):
         bad = np.flatnonzero(~np.isfinite(cols[h]))
         if bad.size:
             r = int(bad[0])
-            raise error(f"{path}: row {r + 1}, column {h}: {float(cols[h][r])} is not a finite "
+            where = f"row {r + 1}" + ("" if lines is None else f" (line {lines[r]})")
+            raise error(f"{path}: {where}, column {h}: {float(cols[h][r])} is not a finite "
                         f"number")
     return header, cols

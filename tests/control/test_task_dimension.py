@@ -232,7 +232,13 @@ BAD = {
     "t,x,y,z\n0,0.25,0.26,1\n0.002,0.25,0.26,1\n": r"unknown column\(s\) z",
     "t,x,y\n0,0.25,0.26\n0.002,0.25,oops\n": r"row 2 \(line 4\), column y: 'oops' is not a number",
     "t,x,y\n0,0.25,0.26\n0.002,0.25\n": r"row 2 \(line 4\) has 2 fields, the header 3",
-    "t,x,y\n0,0.25,0.26\n0.002,0.25,inf\n": r"row 2, column y: inf is not a finite number",
+    "t,x,y\n0,0.25,0.26\n0.002,0.25,inf\n": r"row 2 \(line 4\), column y: inf is not a finite",
+    "t,x,y\n0,0.25,0.26\n0.002,0.25,nan\n": r"row 2 \(line 4\), column y: nan is not a finite",
+    "t;x;y\n0;0.25;0.26\n0.002;0.25;0.26\n": r"line 2: the header is one column, 't;x;y': "
+                                          r"columns must be separated by commas, not ';'",
+    "t\tx\ty\n0\t0.25\t0.26\n": r"separated by commas, not tabs",
+    "t,x,y\n0.002,0.25,0.26\n0,0.25,0.26\n": r"row 2, column t: t must increase from row to "
+                                            r"row by one period, but it goes from 0.002 s",
     "t,x,y\n0,0.25,0.26\n0.002,0.25,0.26\n0.005,0.25,0.26\n": r"row 3, column t: t must increase",
     "t,x,y,x_dot\n0,0.25,0.26,0\n0.002,0.25,0.26,0\n": r"column\(s\) x_dot without y_dot",
     "t,x,y\n0,0.25,0.26\n": r"one row",
