@@ -120,6 +120,24 @@ def test_derive_without_a_model_suggests_models_copy(capsys):
     assert "pm2dof models --copy shang2010" in err and len(err.strip().splitlines()) == 1
 
 
+def test_derive_refuses_generated_instead_of_ignoring_it(capsys, tmp_path):
+    assert cli.main(["derive", "fivebar", "--generated", str(tmp_path)]) == 2
+    assert "writes into --out DIR, not --generated" in capsys.readouterr().err
+    assert not any(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("argv", [["report", "--json"], ["study", "show", "--bogus"]])
+def test_an_unknown_option_gets_its_commands_usage(argv, capsys):
+    """argparse's top level would print `usage: pm2dof [-h] ...` for an option the command
+    does not have; the command's own usage line says which options it has."""
+    with pytest.raises(SystemExit) as stop:
+        cli.main(argv)
+    assert stop.value.code == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"usage: pm2dof {' '.join(argv[:-1])} ")
+    assert f"pm2dof {' '.join(argv[:-1])}: error: unrecognized arguments: {argv[-1]}" in err
+
+
 def test_no_generated_code_mentions_generated(tmp_path):
     from pm2dof.core.paths import SHIPPED_MODELS
     copy = tmp_path / "robot.toml"

@@ -57,13 +57,26 @@ def build_parser(command=None):
     return ap
 
 
+def _deepest(parser, args):
+    """The (sub)command's parser that ``args`` reached (``pm2dof study run`` -> run's)."""
+    while True:
+        sub = next((a for a in parser._actions if isinstance(a, argparse._SubParsersAction)),
+                   None)
+        name = getattr(args, sub.dest, None) if sub is not None else None
+        if name not in getattr(sub, "choices", {}):
+            return parser
+        parser = sub.choices[name]
+
+
 def main(argv=None):
     """``pm2dof ARGS`` (default: the command line's); returns the exit status."""
     from ..infra import results
     from .errors import run
     given = sys.argv[1:] if argv is None else list(argv)
     ap = build_parser(given[0] if given and given[0] in COMMANDS else None)
-    args = ap.parse_args(given)
+    args, extra = ap.parse_known_args(given)
+    if extra:               # the command's own usage line and error, not the top level's
+        _deepest(ap, args).error(f"unrecognized arguments: {' '.join(extra)}")
     results.COMMAND_LINE = ["pm2dof", *given]
     if not getattr(args, "func", None):
         ap.print_help()

@@ -34,6 +34,10 @@ def run(args):
     if args.path and args.model and args.path != args.model:
         raise ArgumentError(f"give the model once: positional {args.path!r} or --model "
                             f"{args.model!r}, not both")
+    if args.generated:                  # a common option: where the other commands read
+        raise ArgumentError(f"pm2dof derive writes into --out DIR, not --generated "
+                            f"({args.generated!r}): --generated tells the other commands where "
+                            f"to read the generated C")
     if not (args.path or args.model):
         raise ArgumentError("pm2dof derive needs a model file: copy a shipped one with `pm2dof "
                             "models --copy shang2010 ~/robots`, edit it, then `pm2dof derive "
