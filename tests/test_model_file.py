@@ -700,6 +700,8 @@ def test_payload_leg_is_one_based(tmp_path):
     """[plant] payload_leg counts from 1: 0 is refused, n is the last leg."""
     p, msg = load_error(tmp_path, mutated(**{"plant.payload_leg": 0}))
     assert_names(msg, p, "plant.payload_leg", "must be")
+    p, msg = load_error(tmp_path, mutated(**{"plant.payload_leg": 9}))
+    assert msg.endswith("got 9"), msg            # the number as written, not 9.0
     assert read_model_file(write(tmp_path, mutated(**{"plant.payload_leg": 3}), "ok.toml")
                            ).plant["payload_leg"] == 3
 

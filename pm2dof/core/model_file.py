@@ -696,7 +696,8 @@ def _read_plant(pr, raw, n, param_names, groups, effector, legs):
     plant.update({k: v if isinstance(v, float) else _frozen(v) for k, v in values.items()})
     leg = plant.get("payload_leg")
     if leg is not None and (leg != int(leg) or not 1 <= leg <= n):
-        pr.add("plant.payload_leg", f"must be a leg number 1..{n} (1-based), got {leg}")
+        shown = int(leg) if leg == int(leg) else leg       # read as a float: 9, not 9.0
+        pr.add("plant.payload_leg", f"must be a leg number 1..{n} (1-based), got {shown}")
     return plant
 
 

@@ -72,6 +72,10 @@ def resolve_model(ref=None, relative_to=None):
     """
     if ref is None:
         ref = DEFAULT_MODEL_NAME
+    if not str(ref).strip():
+        names = ", ".join(shipped_models()) or "(none)"
+        raise ModelFileError(f"the model is an empty string: give a shipped model's name "
+                             f"({names}) or the path of a model file (.toml)")
     if _is_name(ref):
         shipped = SHIPPED_MODELS / f"{ref}.toml"
         if shipped.is_file():

@@ -107,6 +107,10 @@ def test_unknown_name_lists_the_shipped_models():
         pm2dof.load_model("fivebars")
     msg = str(info.value)
     assert "'fivebars' is neither a shipped model" in msg and "fivebar, fourleg" in msg, msg
+    for empty in ("", "  "):        # not the working directory ("Is a directory")
+        with pytest.raises(pm2dof.ModelFileError, match="the model is an empty string") as info:
+            pm2dof.load_model(empty)
+        assert "fivebar, fourleg" in str(info.value)
 
 
 def test_paths_expand_home_and_are_taken_relative_to_a_given_folder(tmp_path, monkeypatch):

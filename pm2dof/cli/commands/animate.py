@@ -1,5 +1,5 @@
 # `pm2dof animate --out F.gif`: one closed-loop move as an animation.
-from ..options import POSITIVE, model, progress
+from ..options import POSITIVE, count, model, progress
 
 
 def add_parser(sub, common):
@@ -15,11 +15,13 @@ def add_parser(sub, common):
                    help="NA (eqs. 28-29, default) or APD (eq. 40)")
     p.add_argument("--split", choices=["min_norm", "min_max", "preload"],
                    help="torque split (default: [control].split)")
-    p.add_argument("--out", default="move.gif", help="GIF to write (default move.gif), or a .png for one frame at the middle of the move")
+    p.add_argument("--out", default="move.gif", metavar="FILE.gif|FILE.png",
+                   help="GIF to write (default move.gif), or a .png for one frame at the middle "
+                   "of the move")
     p.add_argument("--magnify", type=POSITIVE, help="error magnification (default: a power of ten "
                    "that keeps the error below 0.3 of the move's length)")
-    p.add_argument("--fps", type=int, default=20, help="GIF frames per second (default 20)")
-    p.add_argument("--every", type=int, default=2,
+    p.add_argument("--fps", type=count(1, 1000), default=20, help="GIF frames per second (default 20)")
+    p.add_argument("--every", type=count(1, 100000), default=2,
                    help="2 ms samples per frame (default 2: the GIF is 12.5x slower than life)")
     return p
 
