@@ -741,7 +741,29 @@ def test_changed_base_is_stale(tmp_path):
     with pytest.raises(StaleGeneratedCodeError) as info:  # ... whose generated code is stale
         pm2dof.load_model(p, generated=gen)
     msg = str(info.value)
-    assert f"Run `pm2dof derive {p} --out {gen}`" in msg and "different formulation" in msg, msg
+    assert "different formulation" in msg and f"another model file, {PAPER.resolve()}" in msg
+    assert f"`pm2dof derive {p}` (generated/<stem>/ beside it" in msg, msg
+    assert "--force" not in msg, msg        # never: overwrite the shipped models' code
+
+
+def test_a_folder_of_another_model_file_suggests_a_folder_of_its_own(tmp_path):
+    """--generated naming a user's folder derived from another model file: `derive --out` that
+    folder would be refused ("holds code generated from another model file"), so the message
+    suggests the default folder, or --force."""
+    gen = tmp_path / "generated" / "other"
+    gen.mkdir(parents=True)
+    (gen / "manifest.json").write_text('{"formulation_sha256": "0", "model_file": '
+                                       '"../../other.toml"}')
+    p = write(tmp_path, SRC, "mine.toml")
+    with pytest.raises(StaleGeneratedCodeError) as info:
+        pm2dof.load_model(p, generated=gen)
+    msg = str(info.value)
+    assert f"another model file, {tmp_path / 'other.toml'}" in msg, msg
+    assert f"`pm2dof derive {p}`" in msg and f"`pm2dof derive {p} --out {gen} --force`" in msg
+    (gen / "manifest.json").write_text('{"formulation_sha256": "0", "model_file": '
+                                       '"../../mine.toml"}')       # its own folder: re-derive
+    with pytest.raises(StaleGeneratedCodeError, match=f"Run `pm2dof derive {p} --out {gen}`"):
+        pm2dof.load_model(p, generated=gen)
 
 
 @pytest.mark.parametrize("edits", [
