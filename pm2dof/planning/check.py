@@ -7,7 +7,7 @@ import numpy as np
 
 from ..core.errors import ArgumentTypeError, PlanError, SingularityError, WorkspaceError
 from ..core.model import require_model
-from .paths import TaskPath
+from .paths import TaskPath, point_text
 
 __all__ = ["check_path", "raise_at", "first_bad", "require", "point_text", "STEP", "STEP_MIN",
            "STEP_MAX", "SAMPLES_MAX"]
@@ -36,27 +36,24 @@ def require(model=_UNSET, path=_UNSET):
                         f"have the model's task coordinates")
 
 
-def point_text(p):
-    """A task point for messages: (x, y) m, or a platform's (x, y, phi) m, rad."""
-    return f"({', '.join(f'{v:.6g}' for v in p)}) m" + (", rad" if len(p) == 3 else "")
+def _where(s, p, where=None):
+    place = f" ({where(s)})" if where is not None else ""
+    return f"s = {s:.6g} m, point {point_text(p)}{place}"
 
 
-def _where(s, p):
-    return f"s = {s:.6g} m, point {point_text(p)}"
-
-
-def raise_at(model, s, p, sing=None):
+def raise_at(model, s, p, sing=None, where=None):
     """Raise the error of the pose at arc length ``s`` and point ``p``: WorkspaceError (a leg
     cannot reach it; the message of ``model.ik``) or SingularityError (``sing`` = its two
-    measures, below a threshold)."""
+    measures, below a threshold). ``where``: as :func:`check_path`'s."""
     try:
         q = model.ik(p)
     except WorkspaceError as exc:
-        raise WorkspaceError(f"the path leaves the workspace at {_where(s, p)}: {exc}") from None
+        raise WorkspaceError(f"the path leaves the workspace at {_where(s, p, where)}: "
+                             f"{exc}") from None
     if sing is None or not np.isfinite(sing).all():
         sing = model.singularity_measures(q)
-    raise SingularityError(f"the path comes too close to a singularity at {_where(s, p)}: "
-                           f"{model.singularity_message(sing)}")
+    raise SingularityError(f"the path comes too close to a singularity at "
+                           f"{_where(s, p, where)}: {model.singularity_message(sing)}")
 
 
 def first_bad(model, sing):
@@ -66,7 +63,7 @@ def first_bad(model, sing):
     return None if ok.all() else int(np.argmin(ok))
 
 
-def check_path(model, path, step=STEP):
+def check_path(model, path, step=STEP, *, where=None):
     """Check that every point of ``path`` is reachable in the model's assembly mode and at
     least each singularity threshold away from a singularity (``[limits]``).
 
@@ -78,6 +75,9 @@ def check_path(model, path, step=STEP):
         Sample spacing along the path, m (default 0.5 mm), from STEP_MIN = 1e-6 m to
         STEP_MAX = 0.01 m and at most SAMPLES_MAX = 10^6 samples along the path; the
         breakpoints are sampled too.
+    where : callable, optional
+        s (m) -> the place on the path in words (a path file and its segment:
+        :meth:`.pathfile.NamedPath.where`), added to the error's message.
 
     Raises
     ------
@@ -117,4 +117,4 @@ def check_path(model, path, step=STEP):
         sing[ok] = sing_ok
     k = first_bad(model, sing)          # the first sample out of reach or too close
     if k is not None:
-        raise_at(model, s[k], p[k], sing[k])
+        raise_at(model, s[k], p[k], sing[k], where)

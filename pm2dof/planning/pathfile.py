@@ -6,20 +6,25 @@
     [path]
     name = "pick_and_place"          # optional; default the file's stem
     description = "..."              # optional
+    orientation_length = 0.05        # optional, m: for (x, y, phi) points (default the model's)
     [kinematic]                      # optional: limits of the kinematic S-curve, m/s, m/s^2, m/s^3
     v_max = 0.5
     a_max = 10.0
     j_max = 400.0
     [[segments]]
-    kind = "line"                    # start, end
+    kind = "line"                    # start, end: [x, y] or [x, y, phi]
     start = [0.22, 0.29]
     end = [0.27, 0.24]
     [[segments]]
-    kind = "arc"                     # center, radius, angle0, angle1 (rad)
+    kind = "arc"                     # center, radius, angle0, angle1 (rad), phi = [phi0, phi1]
     [[segments]]
     kind = "polyline"                # points, blend_radius (default 0: stops at the corners)
     [[segments]]
-    kind = "spline"                  # waypoints (C2, through every point)
+    kind = "spline"                  # waypoints (C2, through every point; (x, y) only)
+
+Points with an orientation (x, y, phi) (and an arc's ``phi``) need the orientation length
+l (m, :func:`pm2dof.core.task.orientation_length`): the caller passes the model's, and
+``[path] orientation_length`` overrides it.
 
 A shipped path is named by its stem (``pm2dof plan --path pick_and_place``); anything with a
 ``/`` or ending in ``.toml`` is a file. A bad file is one :class:`PathFileError` (a
@@ -29,18 +34,24 @@ reason, segments numbered from 1, as model and study files (:class:`pm2dof.core.
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from ..core.errors import InputFileError, PlanError
-from ..core.task import orientation_length
+from ..core.task import orientation_length as model_orientation_length
 from ..core.validate import Problems, entry
-from .paths import TaskPath
+from .paths import TaskPath, gap_message
 
 __all__ = ["SHIPPED_PATHS", "shipped_paths", "resolve_path_file", "read_path_file",
            "model_move_path", "PathFileError", "NamedPath"]
 
 SHIPPED_PATHS = Path(__file__).resolve().parent / "shipped"
-_SEGMENTS = {"line": ("start", "end"), "arc": ("center", "radius", "angle0", "angle1"),
-             "polyline": ("points", "blend_radius"), "spline": ("waypoints",)}
-_OPTIONAL = {"blend_radius"}
+#: each segment kind's keys: {file key: TaskPath constructor's argument}
+_SEGMENTS = {"line": {"start": "p0", "end": "p1"},
+             "arc": {"center": "center", "radius": "radius", "angle0": "angle0",
+                     "angle1": "angle1", "phi": "phi"},
+             "polyline": {"points": "points", "blend_radius": "blend_radius"},
+             "spline": {"waypoints": "waypoints"}}
+_OPTIONAL = {"blend_radius", "phi"}
 
 
 def shipped_paths():
@@ -84,6 +95,8 @@ class NamedPath:
     file : pathlib.Path or None
         The path file (None: a model file's line move).
     description : str
+    segment_ends : tuple of float
+        Arc length (m) at the end of each of the path file's segments (empty: no file).
     """
 
     name: str
@@ -91,16 +104,39 @@ class NamedPath:
     kinematic: object
     file: object
     description: str = ""
+    segment_ends: tuple = ()
+
+    def where(self, s=None):
+        """The path in words for messages: ``path file <file>``, with the segment (numbered
+        from 1) holding arc length ``s`` (m) when given; None for a path with no file."""
+        if self.file is None:
+            return None
+        if s is None or not self.segment_ends:
+            return f"path file {self.file}"
+        k = min(int(np.searchsorted(self.segment_ends, s)), len(self.segment_ends) - 1)
+        return f"path file {self.file}, segment {k + 1}"
 
 
-def read_path_file(ref, relative_to=None):
+def _has_orientation(kind, seg):
+    """Whether segment table ``seg`` gives an orientation: (x, y, phi) points or an arc's phi."""
+    pts = {"line": [seg.get("start"), seg.get("end")], "polyline": seg.get("points"),
+           "arc": [], "spline": []}[kind]
+    return ("phi" in seg if kind == "arc" else
+            isinstance(pts, list) and any(isinstance(p, list) and len(p) == 3 for p in pts))
+
+
+def read_path_file(ref, relative_to=None, orientation_length=None):
     """Read a path file (``relative_to``: see :func:`resolve_path_file`).
+
+    ``orientation_length`` (m): l for points (x, y, phi), the model's
+    (:func:`pm2dof.core.task.orientation_length`); the file's ``[path] orientation_length``
+    overrides it. Without either, a segment with an orientation is a problem of the file.
 
     Returns
     -------
     NamedPath
         ``name``, ``description``, ``path`` (TaskPath), ``kinematic`` (dict of v_max, a_max,
-        j_max, or None), ``file`` (pathlib.Path).
+        j_max, or None), ``file`` (pathlib.Path), ``segment_ends``.
 
     Raises
     ------
@@ -112,9 +148,13 @@ def read_path_file(ref, relative_to=None):
     _, data = pr.read_toml("path file")
     pr.keys("", data, {"path", "kinematic", "segments"})
     head = pr.table("path", data.get("path"), required=False) or {}
-    pr.keys("path", head, {"name", "description"})
+    pr.keys("path", head, {"name", "description", "orientation_length"})
     name = pr.text("path.name", head.get("name", path.stem), nonempty=True)
     description = pr.text("path.description", head.get("description", ""))
+    ell = orientation_length
+    if "orientation_length" in head:
+        ell = pr.number("path.orientation_length", head["orientation_length"], low=0.0,
+                        low_ok=False)
     kin = pr.table("kinematic", data.get("kinematic"), required=False)
     if kin is not None:
         pr.keys("kinematic", kin, _KINEMATIC, _KINEMATIC)
@@ -138,17 +178,31 @@ def read_path_file(ref, relative_to=None):
         if not pr.keys("segments", seg, {"kind", *keys},
                        [k for k in keys if k not in _OPTIONAL], label=label):
             continue
+        if ell is None and _has_orientation(kind, seg) and "orientation_length" not in head:
+            pr.add(entry("segments", label), "an orientation (x, y, phi) needs the orientation "
+                   "length (m) that turns phi into arc length: plan with a platform model "
+                   "(--model, which gives its own) or set [path] orientation_length")
+            continue
+        args = {arg: seg[k] for k, arg in keys.items() if k in seg}
+        if kind != "spline":
+            args["orientation_length"] = ell
         try:
-            parts.append(getattr(TaskPath, kind)(*[seg[k] for k in keys if k in seg]))
+            parts.append(getattr(TaskPath, kind)(**args))
         except PlanError as exc:
             pr.add(entry("segments", label), str(exc))
     if parts and len(parts) == len(segs):
+        for i in range(1, len(parts)):          # each segment starts where the one before ends
+            gap = gap_message(parts[i - 1], parts[i], f"segment {i + 1}", f"segment {i}")
+            if gap:
+                pr.add(entry("segments", f"segment {i + 1}"), gap)
+    if len(pr) == 0:
         try:
             joined = TaskPath.concat(*parts)
         except PlanError as exc:
             pr.add("segments", str(exc))
     pr.raise_if_any()
-    return NamedPath(str(name), joined, kin, path, str(description))
+    ends = tuple(np.cumsum([part.length for part in parts]).tolist())
+    return NamedPath(str(name), joined, kin, path, str(description), ends)
 
 
 def model_move_path(model, name):
@@ -174,9 +228,11 @@ def model_move_path(model, name):
     mv = moves[name]
     lim = {k: float(mv[k]) for k in ("v_max", "a_max", "j_max") if k in mv}
     if "path" not in mv:
-        line = TaskPath.line(mv["start"], mv["end"], orientation_length(spec))   # (x, y[, phi])
+        ell = model_orientation_length(spec)
+        line = TaskPath.line(mv["start"], mv["end"], ell)   # (x, y[, phi])
         return NamedPath(name, line, lim, None)
-    f = read_path_file(mv["path"], relative_to=Path(spec.path).parent)
+    f = read_path_file(mv["path"], relative_to=Path(spec.path).parent,
+                       orientation_length=model_orientation_length(spec))
     kin = lim if len(lim) == 3 else ({**(f.kinematic or {}), **lim} or None)
     if kin is not None and len(kin) != 3:
         raise PlanError(f"{spec.path}: [trajectories.{name}] gives {sorted(lim)} and its path "

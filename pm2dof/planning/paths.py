@@ -20,23 +20,64 @@ The tangent p'(s) is a unit vector in that metric; p'' (x, y rows 1/m, phi row 1
 planar piece's curvature scaled by (L_p / L)^2.
 """
 import math
+import numbers
 
 import numpy as np
 
 from ..core.errors import ArgumentTypeError, PlanError
 from .spline import SplinePiece
 
-__all__ = ["TaskPath"]
+__all__ = ["TaskPath", "point_text", "gap_message"]
 
 GAP = 1e-9          # m: largest gap between pieces that concat() accepts
 _TANGENT = 1e-9     # |t_out - t_in| above this: a corner (a stop)
 
 
-def _point(name, p, dims=(2,)):
-    a = np.asarray(p, dtype=float) if not isinstance(p, str) else np.array([])
+def point_text(p):
+    """A task point for messages: (x, y) m, or a platform's (x, y, phi) m, rad."""
+    return f"({', '.join(f'{v:.6g}' for v in p)}) m" + (", rad" if len(p) == 3 else "")
+
+
+def _is_real(v):
+    """A real number: not a bool (TOML's true is no coordinate), not text, not complex."""
+    return isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_))
+
+
+def _non_number(p):
+    """(v,): the first entry of the nested sequences ``p`` that is not a real number, or ()."""
+    if isinstance(p, np.ndarray) and p.dtype != object:
+        return () if p.dtype.kind in "iuf" else (p,)
+    if isinstance(p, (list, tuple, np.ndarray)):
+        return next((bad for v in p for bad in [_non_number(v)] if bad), ())
+    return () if _is_real(p) else (p,)
+
+
+def _array(name, p, want):
+    """``p`` (nested sequences of real numbers, or a numeric ndarray) as a float array;
+    PlanError "``name`` must be ``want``" naming a bool, a text, a complex number or ragged
+    nesting, before NumPy would coerce it or refuse it with its own error."""
+    if not isinstance(p, (list, tuple, np.ndarray)) and not _is_real(p):
+        raise PlanError(f"{name} must be {want}, got {type(p).__name__} {p!r}")
+    bad = _non_number(p)
+    if bad:
+        raise PlanError(f"{name} must be {want}, got {p!r}: {bad[0]!r} "
+                        f"({type(bad[0]).__name__}) is not a number")
+    try:
+        return np.array(p, dtype=float)
+    except ValueError:
+        raise PlanError(f"{name} must be {want}, got {p!r}: ragged (rows of different "
+                        f"lengths)") from None
+
+
+def _point(name, p, dims=(2,), want=None):
+    """A finite point of ``dims`` coordinates; ``want`` describes it in the message (default
+    (x, y) in m, or (x, y, phi) in m and rad)."""
+    if want is None:
+        want = "a finite point (x, y)" + (" or (x, y, phi), m and rad" if 3 in dims
+                                          else " in m")
+    a = _array(name, p, want)
     if a.ndim != 1 or a.size not in dims or not np.isfinite(a).all():
-        what = " or (x, y, phi), m and rad" if 3 in dims else " in m"
-        raise PlanError(f"{name} must be a finite point (x, y){what}, got {p!r}")
+        raise PlanError(f"{name} must be {want}, got {p!r}")
     return a
 
 
@@ -51,12 +92,14 @@ def _orientation_length(value):
 
 def _number(name, x, positive=False, nonnegative=False):
     try:
-        v = float(x)
+        v = float(x) if _is_real(x) or (isinstance(x, np.ndarray) and x.dtype.kind in "iuf"
+                                        and x.size == 1) else math.nan
     except (TypeError, ValueError):
         v = math.nan
     if not math.isfinite(v) or (positive and v <= 0) or (nonnegative and v < 0):
         want = " > 0" if positive else " >= 0" if nonnegative else ""
-        raise PlanError(f"{name} must be a finite number{want}, got {x!r}")
+        got = repr(x) if _is_real(x) else f"{type(x).__name__} {x!r}"   # a bool, a text
+        raise PlanError(f"{name} must be a finite number{want}, got {got}")
     return v
 
 
@@ -330,10 +373,10 @@ class TaskPath:
         """
         a, b = _point("p0", p0, (2, 3)), _point("p1", p1, (2, 3))
         if a.size != b.size:
-            raise PlanError(f"line: p0 {a.tolist()} and p1 {b.tolist()} must both be (x, y) or "
-                            f"both (x, y, phi)")
+            raise PlanError(f"line: p0 {point_text(a)} and p1 {point_text(b)} must both be "
+                            f"(x, y) or both (x, y, phi)")
         if np.array_equal(a, b):
-            raise PlanError(f"line: p0 and p1 coincide at {a.tolist()}: zero length")
+            raise PlanError(f"line: p0 and p1 coincide at {point_text(a)}: zero length")
         if a.size == 3:
             planar = _Line(a[:2], b[:2]) if not np.array_equal(a[:2], b[:2]) else None
             return cls([_oriented(planar, a[:2], a[2], b[2], orientation_length)])
@@ -369,7 +412,8 @@ class TaskPath:
             raise PlanError(f"arc: angle0 == angle1 == {a0}: zero length")
         if phi is None:
             return cls([_Arc(c, r, a0, a1)])
-        f0, f1 = _point("phi (phi0, phi1)", phi)
+        f0, f1 = _point("phi", phi, want="(phi0, phi1): the orientation at the start and the "
+                        "end, two finite angles in rad")
         return cls([_oriented(_Arc(c, r, a0, a1), None, f0, f1, orientation_length)])
 
     @classmethod
@@ -395,7 +439,8 @@ class TaskPath:
             l, m: the length a turn of phi counts for in the arc length (s = l |dphi| for a
             pure rotation); required with an orientation, else unused.
         """
-        P = np.asarray(points, dtype=float) if not isinstance(points, str) else np.array([])
+        want = "a finite (m, 2) or (m, 3) array with m >= 2"
+        P = _array("polyline: points", points, want)
         if P.ndim == 2 and P.shape[1] == 3 and len(P) >= 2:
             if _number("blend_radius (m)", blend_radius, nonnegative=True) != 0.0:
                 raise PlanError("polyline: blend_radius applies to (x, y) points only; with an "
@@ -403,14 +448,14 @@ class TaskPath:
             return cls.concat(*[cls.line(P[i], P[i + 1], orientation_length)
                                 for i in range(len(P) - 1)])
         if P.ndim != 2 or P.shape[1:] != (2,) or len(P) < 2 or not np.isfinite(P).all():
-            raise PlanError(f"polyline: points must be a finite (m, 2) array with m >= 2, got "
-                            f"{points!r}")
+            raise PlanError(f"polyline: points must be {want}, got {points!r}")
         r = _number("blend_radius (m)", blend_radius, nonnegative=True)
         seg = np.diff(P, axis=0)
         lens = np.hypot(*seg.T)
         if (lens == 0).any():
             i = int(np.argmax(lens == 0))
-            raise PlanError(f"polyline: points {i} and {i + 1} coincide at {P[i].tolist()}")
+            raise PlanError(f"polyline: points {i + 1} and {i + 2} coincide at "
+                            f"{point_text(P[i])} (points numbered from 1)")
         d = seg / lens[:, None]
         turn = np.array([math.atan2(d[i, 0] * d[i + 1, 1] - d[i, 1] * d[i + 1, 0],
                                     float(d[i] @ d[i + 1])) for i in range(len(d) - 1)])
@@ -418,17 +463,19 @@ class TaskPath:
             return cls.concat(*[cls.line(P[i], P[i + 1]) for i in range(len(P) - 1)])
         for i, phi in enumerate(turn):
             if abs(phi) > math.pi - 1e-9:
-                raise PlanError(f"polyline: the corner at point {i + 1} {P[i + 1].tolist()} "
+                raise PlanError(f"polyline: corner {i + 1} (point {i + 2}, "
+                                f"{point_text(P[i + 1])}; corners and points numbered from 1) "
                                 f"turns back (180 deg): no blend arc fits; use blend_radius=0 "
                                 f"to stop there")
         cut = np.concatenate([[0.0], r * np.tan(np.abs(turn) / 2), [0.0]])   # per point
         for i in range(len(lens)):
             if cut[i] + cut[i + 1] > lens[i] * (1 + 1e-12):
                 t = np.tan(np.abs(np.concatenate([[0.0], turn, [0.0]]))[[i, i + 1]] / 2).sum()
-                raise PlanError(f"polyline: blend_radius {r} m does not fit on segment {i} "
-                                f"({P[i].tolist()} -> {P[i + 1].tolist()}, {lens[i]:.6g} m): its "
-                                f"corners cut {cut[i] + cut[i + 1]:.6g} m; at most "
-                                f"{lens[i] / t:.6g} m fits")
+                raise PlanError(f"polyline: blend_radius {r:g} m does not fit on line {i + 1} "
+                                f"(points {i + 1} -> {i + 2}, {point_text(P[i])} -> "
+                                f"{point_text(P[i + 1])}, {lens[i]:.6g} m; lines and points "
+                                f"numbered from 1): its corners cut {cut[i] + cut[i + 1]:.6g} m;"
+                                f" at most {lens[i] / t:.6g} m fits")
         pieces, start = [], P[0]
         for i in range(len(lens)):
             end = P[i + 1] - cut[i + 1] * d[i]
@@ -458,18 +505,19 @@ class TaskPath:
             The points the spline passes through, in order, m; m >= 2, consecutive points
             distinct.
         """
-        P = np.asarray(waypoints, dtype=float) if not isinstance(waypoints, str) else np.array([])
+        want = "a finite (m, 2) array with m >= 2"
+        P = _array("spline: waypoints", waypoints, want)
         if P.ndim == 2 and P.shape[1:] == (3,):
             raise PlanError("spline: a C2 spline is planar (x, y); waypoints with an orientation "
                             "(x, y, phi) have no spline yet: use TaskPath.polyline (lines with "
                             "phi, stops at the corners)")
         if P.ndim != 2 or P.shape[1:] != (2,) or len(P) < 2 or not np.isfinite(P).all():
-            raise PlanError(f"spline: waypoints must be a finite (m, 2) array with m >= 2, got "
-                            f"{waypoints!r}")
+            raise PlanError(f"spline: waypoints must be {want}, got {waypoints!r}")
         gaps = np.hypot(*np.diff(P, axis=0).T)
         if (gaps == 0).any():
             i = int(np.argmax(gaps == 0))
-            raise PlanError(f"spline: waypoints {i} and {i + 1} coincide at {P[i].tolist()}")
+            raise PlanError(f"spline: waypoints {i + 1} and {i + 2} coincide at "
+                            f"{point_text(P[i])} (waypoints numbered from 1)")
         if len(P) == 2:
             return cls.line(P[0], P[1])
         return cls([SplinePiece(P)])
@@ -495,13 +543,23 @@ class TaskPath:
             if k:
                 prev = paths[k - 1]
                 _, t_out, _ = prev.evaluate(np.array([prev.length]))
-                p_in, t_in, _ = path.evaluate(np.zeros(1))
-                gap = float(np.linalg.norm(p_in[0] - prev.end))
-                if gap > GAP:
-                    raise PlanError(f"concat: path {k} starts at {p_in[0].tolist()}, {gap:.3g} m "
-                                    f"from where path {k - 1} ends ({prev.end.tolist()})")
+                _, t_in, _ = path.evaluate(np.zeros(1))
+                gap = gap_message(prev, path, f"path {k + 1}", f"path {k}")
+                if gap:
+                    raise PlanError(f"concat: {gap} (paths numbered from 1)")
                 if np.linalg.norm(t_out[0] - t_in[0]) > _TANGENT:
                     stops.append(len(pieces))
             stops += [len(pieces) + j for j in path._stops[1:-1]]
             pieces += path._pieces
         return cls(pieces, stops)
+
+
+def gap_message(before, after, name_after, name_before):
+    """None if TaskPath ``after`` starts where ``before`` ends (within GAP), else the message
+    "<name_after> starts at (x, y) m, <gap> m from where <name_before> ends ((x, y) m)"."""
+    p0, p1 = after.start, before.end
+    gap = float(np.linalg.norm(p0 - p1))
+    if gap <= GAP:
+        return None
+    return (f"{name_after} starts at {point_text(p0)}, {gap:.3g} m from where {name_before} "
+            f"ends ({point_text(p1)})")

@@ -12,6 +12,7 @@ from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from ..core.errors import ArgumentError, PlanError
 from ..infra.results import provenance
+from .check import check_path, require
 from .kinematic import plan_kinematic
 from .stages import limits
 from .topp import plan_time_optimal
@@ -41,6 +42,18 @@ def _peaks(model, plan, tau_lim):
     return {sp: np.abs(r[sp]).max(axis=0).tolist() for sp in ("min_norm", "min_max")}
 
 
+def _check_item(model, item):
+    """PlanError unless ``item``'s path has the model's task dimension; WorkspaceError or
+    SingularityError where it leaves the workspace or nears a singularity
+    (:func:`.check.check_path`), each naming the path file and its segment."""
+    try:
+        require(model, item.path)
+    except PlanError as exc:
+        where = item.where()
+        raise PlanError(f"{where}: {exc}" if where else str(exc)) from None
+    check_path(model, item.path, where=item.where if item.file is not None else None)
+
+
 def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_norm", "min_max"),
                theta=None, smooth=False, tau_rate=None):
     """Plan every item (:class:`.pathfile.NamedPath`: name, path, kinematic limits)
@@ -58,6 +71,8 @@ def plan_paths(model, items, tau_max=None, margin=1.0, grid=1000, splits=("min_n
            "grid": int(grid),
            "provenance": plan_provenance(model, tau_lim, margin, splits, theta), "paths": []}
     plans = {}
+    for item in items:        # before anything evaluates a path on the model
+        _check_item(model, item)
     for item in items:
         path = item.path
         row = {"name": item.name, "length_m": path.length, "kinds": list(path.kinds),
@@ -238,8 +253,9 @@ def run_plan(model, *, path=None, move=None, tau_max=None, margin=1.0, grid=1000
         and plans, and the closed-loop rows by path name (for :func:`format_report`).
     """
     if path:
+        from ..core.task import orientation_length
         from .pathfile import read_path_file
-        items = [read_path_file(path)]
+        items = [read_path_file(path, orientation_length=orientation_length(model))]
     else:
         items = [mv for mv in model_moves(model) if move in (None, mv.name)]
         if not items:

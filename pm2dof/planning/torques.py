@@ -6,6 +6,7 @@ one ``Function.map`` call. Used to check plans and to report a kinematic plan's 
 import numpy as np
 
 from ..core.errors import PlanError
+from .paths import point_text
 
 __all__ = ["path_torques", "resample", "plan_torques"]
 
@@ -34,7 +35,7 @@ def path_torques(model, path, s, sd, sdd, theta=None, tau_max=None):
     model.function("ik").map(K, np.ascontiguousarray(p), q)
     if not np.isfinite(q).all():
         k = int(np.argmin(np.isfinite(q).all(axis=1)))
-        raise PlanError(f"s = {s[k]:.6g} m, point {p[k].tolist()} is out of reach")
+        raise PlanError(f"s = {s[k]:.6g} m, point {point_text(p[k])} is out of reach")
     v = np.ascontiguousarray(dp * np.maximum(sd, REST)[:, None])
     acc = np.ascontiguousarray(dp * sdd[:, None] + ddp * (sd * sd)[:, None])
     Me, Ce, F = np.empty((K, m * m)), np.empty((K, m * m)), np.empty((K, m))

@@ -87,7 +87,7 @@ def test_path_file_errors(tmp_path, capsys):
         '[[segments]]\nkind = "line"\nstart = [0.2, 0.2]\nend = [0.3, 0.2]\nspeed = 1\n':
             "[segments.speed (segment 1)] unknown key",
         '[[segments]]\nkind = "line"\nstart = [0.2, 0.2]\nend = [0.3, 0.2]\n'
-        '[[segments]]\nkind = "line"\nstart = [0.3, 0.3]\nend = [0.3, 0.4]\n': "path 1 starts at",
+        '[[segments]]\nkind = "line"\nstart = [0.3, 0.3]\nend = [0.3, 0.4]\n': "[segments (segment 2)] segment 2 starts at (0.3, 0.3) m",
         '[kinematic]\nv_max = -1\n[[segments]]\nkind = "line"\nstart = [0, 0]\nend = [1, 0]\n':
             "kinematic.v_max",
         'segments = 3': "segments",

@@ -108,14 +108,15 @@ def test_sharp_corners_and_reversals_are_stops():
     (lambda: TaskPath.arc([0, 0], -1.0, 0, 1), "radius"),
     (lambda: TaskPath.arc([0, 0], 1.0, 1, 1), "zero length"),
     (lambda: TaskPath.polyline([[0.2, 0.2]], 0.01), "m >= 2"),
-    (lambda: TaskPath.polyline([[0.2, 0.2], [0.2, 0.2], [0.3, 0.3]], 0.01), "points 0 and 1"),
+    (lambda: TaskPath.polyline([[0.2, 0.2], [0.2, 0.2], [0.3, 0.3]], 0.01), r"points 1 and 2 coincide at \(0.2, 0.2\) m \(points numbered from 1\)"),
     (lambda: TaskPath.polyline([[0.2, 0.2], [0.3, 0.2], [0.3, 0.21]], 0.05),
-     "does not fit on segment 1"),
-    (lambda: TaskPath.polyline([[0.2, 0.2], [0.3, 0.2], [0.2, 0.2]], 0.01), "turns back"),
+     r"does not fit on line 2 \(points 2 -> 3, \(0.3, 0.2\) m -> \(0.3, 0.21\) m"),
+    (lambda: TaskPath.polyline([[0.2, 0.2], [0.3, 0.2], [0.2, 0.2]], 0.01), r"corner 1 \(point 2, \(0.3, 0.2\) m; .*\) turns back"),
     (lambda: TaskPath.polyline([[0.2, 0.2], [0.3, 0.2]], -0.01), "blend_radius"),
-    (lambda: TaskPath.spline([[0.2, 0.2], [0.2, 0.2]]), "waypoints 0 and 1"),
+    (lambda: TaskPath.spline([[0.2, 0.2], [0.2, 0.2]]), r"waypoints 1 and 2 coincide"),
     (lambda: TaskPath.concat(TaskPath.line([0, 0], [1, 0]), TaskPath.line([1, 1e-6], [2, 0])),
-     "path 1 starts at"),
+     r"path 2 starts at \(1, 1e-06\) m, 1e-06 m from where path 1 ends \(\(1, 0\) m\) "
+     r"\(paths numbered from 1\)"),
     (lambda: TaskPath.concat(), "one or more TaskPath"),
 ])
 def test_bad_geometry_is_a_plan_error(make, match):

@@ -7,12 +7,13 @@ from ..options import POSITIVE, count, model, number, tau_max
 
 def add_parser(sub, common):
     p = sub.add_parser("plan", parents=[common], help="time-optimal motion along a path",
-                       description="Time a path as fast as the motors allow (issue 20): the "
+                       description="Time a path as fast as the motors allow: the "
                        "kinematic S-curve of the path's arc length beside the time-optimal "
                        "timing under the torque limits with the min-norm split (eq. 21) and the "
                        "min-max split (the whole redundancy), friction included. The paths are "
                        "the model file's moves (start to end as lines) or a path file (--path: "
-                       "a shipped name such as pick_and_place, or your TOML file).",
+                       "a shipped name such as pick_and_place, or your TOML file; its format: "
+                       "docs/using-planning.md, Path files).",
                        epilog="examples: pm2dof plan --tau-max 6 --closed-loop; pm2dof plan "
                        "--path pick_and_place --out out/plan")
     p.add_argument("--path", metavar="NAME|FILE", help="a path file (default: the moves)")
@@ -22,7 +23,11 @@ def add_parser(sub, common):
                    "(default: [limits].tau_max)")
     p.add_argument("--margin", type=number(0.0, 1.0), default=1.0,
                    help="plan with tau_max * margin (default 1.0)")
-    p.add_argument("--grid", type=count(2, 100000), default=1000, help="grid points (default 1000)")
+    p.add_argument("--grid", type=count(2, 100000), default=1000,
+                   help="about this many grid points (default 1000): graded, finer near the "
+                   "stops, at least 2 intervals between two stops and a point at every junction "
+                   "of the path's pieces, then refined until the plan resolves the path; the "
+                   "count used is in the output")
     p.add_argument("--split", choices=["both", "min_norm", "min_max"], default="both",
                    help="torque split(s) to plan with (default both)")
     for flag, what in (("--v-max", "m/s"), ("--a-max", "m/s^2"), ("--j-max", "m/s^3")):
