@@ -26,6 +26,13 @@ __all__ = ["factored", "joint_W", "Wdot_times", "regressor", "task_inertia_corio
            "task_gravity", "has_gravity", "solve_small"]
 
 
+def _cofactors3(A):
+    """The cofactors C_ij of a 3 x 3 matrix, as nested lists [i][j]."""
+    return [[A[(i + 1) % 3, (j + 1) % 3] * A[(i + 2) % 3, (j + 2) % 3]
+             - A[(i + 1) % 3, (j + 2) % 3] * A[(i + 2) % 3, (j + 1) % 3] for j in range(3)]
+            for i in range(3)]
+
+
 def solve_small(A, b):
     """A^-1 b for the m x m task-space matrices (m = 2, 3) by Cramer's rule (closed form, one
     division per entry); larger A by CasADi's symbolic QR."""
@@ -34,12 +41,25 @@ def solve_small(A, b):
         det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
         return ca.vertcat(A[1, 1] * b[0] - A[0, 1] * b[1], A[0, 0] * b[1] - A[1, 0] * b[0]) / det
     if m == 3:
-        cof = [[A[(i + 1) % 3, (j + 1) % 3] * A[(i + 2) % 3, (j + 2) % 3]
-                - A[(i + 1) % 3, (j + 2) % 3] * A[(i + 2) % 3, (j + 1) % 3] for j in range(3)]
-               for i in range(3)]                       # cofactors C_ij
+        cof = _cofactors3(A)
         det = A[0, 0] * cof[0][0] + A[0, 1] * cof[0][1] + A[0, 2] * cof[0][2]
         return ca.vertcat(*[sum(cof[j][i] * b[j] for j in range(3)) for i in range(3)]) / det
     return ca.solve(A, b)
+
+
+def inverse_small(A):
+    """A^-1 of the m x m task-space matrices (m = 2, 3) in closed form: the adjugate times one
+    reciprocal of the determinant (Cramer's rule); larger A by CasADi's symbolic QR."""
+    m = A.shape[0]
+    if m == 2:
+        r = 1 / (A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0])
+        return ca.vertcat(ca.horzcat(A[1, 1] * r, -A[0, 1] * r),
+                          ca.horzcat(-A[1, 0] * r, A[0, 0] * r))
+    if m == 3:
+        cof = _cofactors3(A)
+        r = 1 / (A[0, 0] * cof[0][0] + A[0, 1] * cof[0][1] + A[0, 2] * cof[0][2])
+        return ca.vertcat(*[ca.horzcat(*[cof[j][i] * r for j in range(3)]) for i in range(3)])
+    return ca.solve(A, ca.SX.eye(m))
 
 
 def _inv2(J):

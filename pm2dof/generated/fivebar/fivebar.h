@@ -1195,7 +1195,7 @@ int fivebar_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fivebar_sampled_step_jacobians_SZ_ARG 8
 #define fivebar_sampled_step_jacobians_SZ_RES 10
 #define fivebar_sampled_step_jacobians_SZ_IW 7
-#define fivebar_sampled_step_jacobians_SZ_W 621
+#define fivebar_sampled_step_jacobians_SZ_W 610
 int fivebar_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fivebar_Ge_checkout(void);
 void fivebar_Ge_release(int mem);

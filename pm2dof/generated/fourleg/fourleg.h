@@ -1195,7 +1195,7 @@ int fourleg_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define fourleg_sampled_step_jacobians_SZ_ARG 8
 #define fourleg_sampled_step_jacobians_SZ_RES 10
 #define fourleg_sampled_step_jacobians_SZ_IW 9
-#define fourleg_sampled_step_jacobians_SZ_W 933
+#define fourleg_sampled_step_jacobians_SZ_W 922
 int fourleg_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int fourleg_Ge_checkout(void);
 void fourleg_Ge_release(int mem);

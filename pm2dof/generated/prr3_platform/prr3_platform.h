@@ -1194,7 +1194,7 @@ int prr3_platform_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_i
 #define prr3_platform_sampled_step_jacobians_SZ_ARG 8
 #define prr3_platform_sampled_step_jacobians_SZ_RES 10
 #define prr3_platform_sampled_step_jacobians_SZ_IW 10
-#define prr3_platform_sampled_step_jacobians_SZ_W 2123
+#define prr3_platform_sampled_step_jacobians_SZ_W 2010
 int prr3_platform_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int prr3_platform_Ge_checkout(void);
 void prr3_platform_Ge_release(int mem);

@@ -1195,7 +1195,7 @@ int prr_point_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* 
 #define prr_point_sampled_step_jacobians_SZ_ARG 8
 #define prr_point_sampled_step_jacobians_SZ_RES 10
 #define prr_point_sampled_step_jacobians_SZ_IW 8
-#define prr_point_sampled_step_jacobians_SZ_W 1081
+#define prr_point_sampled_step_jacobians_SZ_W 1040
 int prr_point_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int prr_point_Ge_checkout(void);
 void prr_point_Ge_release(int mem);

@@ -1194,7 +1194,7 @@ int rpr3_platform_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_i
 #define rpr3_platform_sampled_step_jacobians_SZ_ARG 8
 #define rpr3_platform_sampled_step_jacobians_SZ_RES 10
 #define rpr3_platform_sampled_step_jacobians_SZ_IW 10
-#define rpr3_platform_sampled_step_jacobians_SZ_W 3250
+#define rpr3_platform_sampled_step_jacobians_SZ_W 3180
 int rpr3_platform_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rpr3_platform_Ge_checkout(void);
 void rpr3_platform_Ge_release(int mem);

@@ -1194,7 +1194,7 @@ int rrr3_platform_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_i
 #define rrr3_platform_sampled_step_jacobians_SZ_ARG 8
 #define rrr3_platform_sampled_step_jacobians_SZ_RES 10
 #define rrr3_platform_sampled_step_jacobians_SZ_IW 10
-#define rrr3_platform_sampled_step_jacobians_SZ_W 1573
+#define rrr3_platform_sampled_step_jacobians_SZ_W 1471
 int rrr3_platform_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr3_platform_Ge_checkout(void);
 void rrr3_platform_Ge_release(int mem);

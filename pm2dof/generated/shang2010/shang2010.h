@@ -1195,7 +1195,7 @@ int shang2010_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* 
 #define shang2010_sampled_step_jacobians_SZ_ARG 8
 #define shang2010_sampled_step_jacobians_SZ_RES 10
 #define shang2010_sampled_step_jacobians_SZ_IW 8
-#define shang2010_sampled_step_jacobians_SZ_W 761
+#define shang2010_sampled_step_jacobians_SZ_W 749
 int shang2010_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int shang2010_Ge_checkout(void);
 void shang2010_Ge_release(int mem);

@@ -1195,7 +1195,7 @@ int unequal_sampled_step_jacobians_work_bytes(casadi_int *sz_arg, casadi_int* sz
 #define unequal_sampled_step_jacobians_SZ_ARG 8
 #define unequal_sampled_step_jacobians_SZ_RES 10
 #define unequal_sampled_step_jacobians_SZ_IW 8
-#define unequal_sampled_step_jacobians_SZ_W 768
+#define unequal_sampled_step_jacobians_SZ_W 756
 int unequal_Ge(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int unequal_Ge_checkout(void);
 void unequal_Ge_release(int mem);
