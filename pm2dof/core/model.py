@@ -864,7 +864,11 @@ class Model(DerivativeMethods, PoseMethods):
         tau_a : array_like (n,)
             Actuator torques, N*m.
         theta : array_like (p,)
-            Parameters, in :attr:`param_names` order (Tables 1-2 units).
+            Parameters, in :attr:`param_names` order (Tables 1-2 units). Checked for length
+            and finiteness only: this is a per-sample call, so it does not check that theta
+            is physical (Me positive definite, friction >= 0). Check once with
+            ``checked_theta(theta, physical=True)``; an unphysical theta gives the
+            acceleration of that unphysical model.
         out : ndarray (m,), optional
             Written into and returned (no allocation); a new array when None.
         """
