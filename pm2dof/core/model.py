@@ -494,8 +494,9 @@ class Model(DerivativeMethods, PoseMethods):
                 raise WorkspaceError(
                     f"xe = {xe.tolist()} is reachable by both legs, but not in the model's "
                     f"assembly mode: with these elbows the tip lies on the other side of the "
-                    f"line B1 -> B2 than model.fk_branch = {side!r}, so fk could not return to "
-                    f"it (the parallel singularity, distal links aligned, separates the modes)")
+                    f"line B1 -> B2 than the model file's fk_branch = {side!r}, so fk could not "
+                    f"return to it (the parallel singularity, distal links aligned, separates "
+                    f"the modes)")
             raise WorkspaceError(f"inverse kinematics failed at xe = {xe.tolist()}")
         return out
 
@@ -531,9 +532,14 @@ class Model(DerivativeMethods, PoseMethods):
             and its residual in m.
         """
         try:
-            return self._fast["fk"](qa, out)      # refuses a residual beyond tol: named below
+            xe = self._fast["fk"](qa, out)      # refuses a residual beyond tol: named below
         except _cbind.Refused:
-            pass
+            xe = self._fk_checked(qa, out)
+        if self.spec.home is not None:        # a platform: Gauss-Newton from [platform] home
+            self._fk_same_mode(qa, xe)
+        return xe
+
+    def _fk_checked(self, qa, out):
         out = self._out(out, (self._m,))
         (qa,), _ = self._call(self._f["fk"], (qa,), (out, self._residual))
         r = self._residual
@@ -543,12 +549,45 @@ class Model(DerivativeMethods, PoseMethods):
                                  f"{np.asarray(qa).tolist()} rad")
         worst = int(np.argmax(np.abs(r)))
         if not abs(r[worst]) <= tol:
+            seeded = (f"; or, a platform, a pose too far from [platform] home = "
+                      f"{list(self.spec.home)} for fk's Gauss-Newton from it (reliable within "
+                      f"about 0.05 m and 0.2 rad, docs/model-file.md)"
+                      if self.spec.home is not None else "")
             raise ClosureError(
                 f"the active angles qa = {np.asarray(qa).tolist()} rad do not close the loops: "
                 f"leg {worst + 1}'s tip misses the common point by {r[worst]:+.3g} m (closure "
                 f"residual |O - B_i| - lb_i; tolerance {tol:.3g} m, [sensing] "
-                f"closure_tolerance): inconsistent encoders, or angles of another robot")
+                f"closure_tolerance): inconsistent encoders, or angles of another robot"
+                f"{seeded}")
         return out
+
+    def _fk_same_mode(self, qa, xe):
+        """WorkspaceError unless ``xe`` (a platform's fk of ``qa``) is in the model's assembly
+        mode: the legs in their model file's modes at xe (``ik``) must have the active
+        coordinates qa. Gauss-Newton from [platform] home may end in another assembly mode of
+        the same qa, a pose that closes the loops but is not the robot's."""
+        qa = np.asarray(qa, dtype=float)
+        n, tol = self.n_legs, self.spec.sensing["closure_tolerance"]
+        try:
+            back = self.ik(xe)[:n]
+        except (WorkspaceError, SingularityError):
+            back = np.full(n, np.nan)
+        diff = back - qa
+        limit = np.empty(n)
+        for i, leg in enumerate(self.spec.legs):
+            if leg.actuator == "revolute":    # an angle: compared modulo 2 pi
+                diff[i] = (diff[i] + np.pi) % (2 * np.pi) - np.pi
+                limit[i] = 100 * tol / leg.la
+            else:
+                limit[i] = 100 * tol
+        if not (np.abs(diff) <= limit).all():
+            raise WorkspaceError(
+                f"fk of qa = {qa.tolist()}: the Gauss-Newton from [platform] home = "
+                f"{list(self.spec.home)} ended at the pose {np.round(xe, 6).tolist()}, which "
+                f"closes the loops in another assembly mode (the model's legs reach it with "
+                f"qa = {np.round(back, 6).tolist()}). A platform's fk from home is reliable "
+                f"within about 0.05 m and 0.2 rad of it (docs/model-file.md); the controllers "
+                f"track from the previous pose")
 
     def H(self, q, out=None):
         """Loop-closure constraints H(q), m (eq. 5): (2(n-1),) for legs meeting at a point,

@@ -1,0 +1,62 @@
+# A platform's fk (Gauss-Newton from [platform] home) returns a pose in the model's working modes
+# of the legs, or refuses with WorkspaceError: it returned another assembly silently before.
+import numpy as np
+import pytest
+
+import pm2dof
+
+PLATFORMS = ["rrr3_platform", "rrr4_platform", "prr3_platform", "rpr3_platform"]
+
+
+def _active_diff(model, a, b):
+    """a - b of active coordinates, angles of revolute actuators modulo 2 pi."""
+    d = np.asarray(a, dtype=float) - np.asarray(b, dtype=float)
+    for i, leg in enumerate(model.spec.legs):
+        if leg.actuator == "revolute":
+            d[i] = (d[i] + np.pi) % (2 * np.pi) - np.pi
+    return d
+
+
+@pytest.mark.parametrize("name", PLATFORMS)
+def test_fk_is_in_the_models_working_modes_or_refuses(name):
+    """Random poses up to 0.12 m and 0.6 rad from home (beyond the documented 0.05 m / 0.2 rad
+    where fk from home is reliable): whatever fk returns, the model's legs reach it with the
+    given active coordinates (ik round trip); where Gauss-Newton ended in another working mode
+    it says so. (Several assemblies can share the legs' working modes: fk returns the one
+    nearest home, docs/model-file.md, so fk(ik(x)) == x is not asserted far from home.)"""
+    m = pm2dof.load_model(name)
+    n, home = m.n_legs, np.array(m.spec.home)
+    rng = np.random.default_rng(0)
+    refused = returned = 0
+    for _ in range(400):
+        x = home + rng.uniform(-1, 1, 3) * np.array([0.12, 0.12, 0.6])
+        try:
+            qa = m.ik(x)[:n]
+        except pm2dof.WorkspaceError:
+            continue
+        try:
+            xe = m.fk(qa)
+        except pm2dof.ClosureError:          # diverged: the residual names it (documented)
+            continue
+        except pm2dof.WorkspaceError as exc:
+            assert "another assembly mode" in str(exc) and "[platform] home" in str(exc)
+            refused += 1
+            continue
+        returned += 1
+        # the same working modes: qa back up to the closure tolerance fk accepts (a stop of the
+        # Gauss-Newton short of rounding), far below another mode's difference (0.1-3 rad)
+        tol = m.spec.sensing["closure_tolerance"]
+        scale = np.array([leg.la if leg.actuator == "revolute" else 1.0 for leg in m.spec.legs])
+        assert (np.abs(_active_diff(m, m.ik(xe)[:n], qa)) <= 10 * tol / scale).all(), (x, xe)
+    assert returned >= 20
+    if name == "rrr3_platform":               # ends in another working mode in this sample
+        assert refused > 0
+
+
+@pytest.mark.parametrize("name", PLATFORMS)
+def test_fk_near_home_round_trips(name):
+    m = pm2dof.load_model(name)
+    home = np.array(m.spec.home)
+    for dx in ([0.0, 0.0, 0.0], [0.01, -0.01, 0.05], [-0.01, 0.01, -0.1]):
+        x = home + dx
+        np.testing.assert_allclose(m.fk(m.ik(x)[:m.n_legs]), x, atol=1e-9)
