@@ -36,9 +36,7 @@ def make_controller(model, variant, trajectory=None):
     ``trajectory`` (the study's move, its settling samples included)."""
     o = dict(variant.options)
     kw = {k: o[k] for k in ("Kp", "Kv", "Kd", "Q", "velocity_filter_hz", "split", "project",
-                            "Q_position", "Q_velocity", "R") if k in o}
-    if "tau_max" in o:
-        kw["tau_max"] = np.broadcast_to(np.asarray(o["tau_max"], dtype=float), (model.n_legs,))
+                            "Q_position", "Q_velocity", "R", "tau_max") if k in o}
     if variant.law == "apd":
         return APDController(model, **kw)
     if variant.law == "ctc":
@@ -207,15 +205,19 @@ def model_problems(pr, model, variants, moves):
     except (WorkspaceError, SingularityError, TrajectoryError):
         first = None
     entries = list(dict.fromkeys(v.name for v in variants or ()))   # one per [[controllers]]
+    said = set()        # (entry, message): a problem of a key outside the grid, said once
     for v in variants or ():
         if v.law == "lqr" and first is None:
             continue
         try:
             make_controller(model, v, first)
         except (ValueError, TypeError) as exc:
+            where = entry("controllers", f"entry {entries.index(v.name) + 1}, {v.name!r}")
+            if (where, str(exc)) in said:
+                continue
+            said.add((where, str(exc)))
             point = f"at grid point {dict(v.grid)}: " if v.grid else ""
-            pr.add(entry("controllers", f"entry {entries.index(v.name) + 1}, {v.name!r}"),
-                   f"{point}{exc}")
+            pr.add(where, f"{point}{exc}")
     for i, mv in enumerate(moves):
         try:
             check_trajectory(model, make_trajectory(model, mv, T))

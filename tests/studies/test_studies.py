@@ -448,3 +448,27 @@ def test_study_file_doc_lists_every_law_and_its_keys():
         assert (laws == "all") == (want == set(LAWS)), (key, laws)
         if laws != "all":
             assert {w.strip() for w in laws.split(",")} == want, (key, laws)
+
+
+def test_the_study_file_pages_example_is_a_valid_study_file(tmp_path):
+    """docs/study-file.md's example is read as the page shows it (it had runs = 1 with
+    [payload_change] after_run = 10, which the parser refuses)."""
+    import re
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "study-file.md").read_text()
+    assert doc.count("```") % 2 == 0, "an unclosed code fence swallows the page"
+    example = re.search(r"```toml\n(.*?)```", doc, re.S).group(1)
+    s = read_study(_write(tmp_path, example), check=True)
+    assert s.name == "robustness" and s.payload_change is not None
+    assert s.runs > s.payload_change[0]
+
+
+def test_a_wrong_tau_max_length_is_said_once_by_the_controller(tmp_path):
+    """tau_max of 2 values on the 3-actuator robot gave NumPy's broadcast error, once per grid
+    point; now the controllers' own message, once for the entry."""
+    text = BASE.replace('law = "apd"', 'law = "apd"\ntau_max = [1.0, 2.0]\n'
+                        'Kp = {grid = [30000.0, 35000.0, 40000.0]}')
+    with pytest.raises(StudyFileError) as exc:
+        read_study(_write(tmp_path, text), check=True)
+    reasons = [pr.reason for pr in exc.value.problems]
+    assert len(reasons) == 1, reasons
+    assert "tau_max must be one finite number or 3 (one per actuator)" in reasons[0]
