@@ -17,9 +17,9 @@ Any other column is refused (a misspelt ``x_dd`` would otherwise be silently dif
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.simulate import simulate
+from ..control.simulate import check_trajectory, simulate
 from ..control.trajectory import Trajectory, TrajectoryError
-from ..core.errors import InputFileError
+from ..core.errors import InputFileError, SingularityError, WorkspaceError
 from ..core.model import require_model
 from ..infra.tables import read_columns
 from .experiment import _extra_controller
@@ -178,6 +178,10 @@ def simulate_reference(model, path, laws=("na", "apd"), *, split=None, settle_ti
         raise ReferenceFileError(
             f"{path}: time step {traj.period:.9g} s, but model {model.name!r}'s controllers run "
             f"at [sensing] sample_period = {T:g} s: resample the reference to that period")
+    try:                    # reach and singularities, before any controller: the file named
+        check_trajectory(model, traj)
+    except (TrajectoryError, WorkspaceError, SingularityError) as exc:
+        raise type(exc)(f"{path}: {exc}") from None
     kw = {} if split is None else {"split": split}
     out = {}
     for law in laws:

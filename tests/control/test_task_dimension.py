@@ -257,6 +257,18 @@ def test_bad_reference_files_give_one_line_naming_file_row_and_column(text, tmp_
     assert isinstance(exc.value, pm2dof.TrajectoryError)
 
 
+def test_a_reference_out_of_reach_names_the_file(tmp_path):
+    """A well-formed file whose first pose no leg reaches: the same WorkspaceError as
+    simulate's check, with the file named (it was not)."""
+    from pm2dof.analysis.reference_file import simulate_reference
+    f = tmp_path / "reach.csv"
+    f.write_text("t,x,y\n0,0.9,0.9\n0.002,0.9,0.9\n")
+    with pytest.raises(pm2dof.WorkspaceError) as exc:
+        simulate_reference(pm2dof.load_model(), f, ("na",))
+    assert str(exc.value).startswith(f"{f}: trajectory sample 0"), str(exc.value)
+    assert "out of reach of leg 1" in str(exc.value)
+
+
 def test_simulate_command_runs_a_reference_and_refuses_a_bad_one(low, tmp_path):
     _write_csv(tmp_path / "low.csv", low)
     cmd = [sys.executable, "-m", "pm2dof", "simulate", "--reference"]
