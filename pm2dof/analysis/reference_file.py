@@ -74,11 +74,11 @@ def _grid(path, t):
                                  f"(the period is their time step)")
     steps = np.diff(t)
     T0 = steps[0]
-    bad = np.flatnonzero(~(np.abs(steps - T0) <= PERIOD_TOLERANCE * T0)) if T0 > 0 else [0]
     if T0 <= 0 or not np.isfinite(T0):
         raise ReferenceFileError(
             f"{path}: row 2, column t: t must increase from row to row by one period, but it "
             f"goes from {t[0]:.9g} s in row 1 to {t[1]:.9g} s in row 2")
+    bad = np.flatnonzero(~(np.abs(steps - T0) <= PERIOD_TOLERANCE * T0))
     if len(bad):
         k = int(bad[0])
         raise ReferenceFileError(

@@ -101,8 +101,8 @@ class DerivativeMethods:
 
         xedd = Me^-1 (S^T tau_a - Ce xed - S^T f_a) at the pose ``xe`` (m,) m, velocity ``xed``
         (m,) m/s (rad, rad/s for phi), torques ``tau_a`` (n,) N*m and parameters ``theta`` (p,) (as
-        :meth:`forward_dynamics`), differentiated by CasADi's reverse-mode AD in the generated
-        C. Friction's sign(v) contributes 0 (the Jacobian of the smooth part).
+        :meth:`forward_dynamics`), in the generated C: Me^-1 times the Jacobian of
+        S^T tau_a - Ce xed - S^T f_a - Me a at a = xedd held, by CasADi's reverse-mode AD. Friction's sign(v) contributes 0 (the Jacobian of the smooth part).
 
         Parameters
         ----------

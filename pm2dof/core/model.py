@@ -8,6 +8,7 @@ converted, on a slower path); outputs are new arrays unless ``out=`` is given, i
 the result is written there (no allocation) and returned.
 """
 import json
+import math
 import sys
 import types
 from pathlib import Path
@@ -138,6 +139,43 @@ def _check_generated(spec, gen_dir):
     return manifest, lib
 
 
+def _mode_geometry(spec):
+    """A platform's legs for :meth:`Model._fk_same_mode`, one tuple each: (kind 0 RRR, 1 PRR,
+    2 RPR (one working mode: not checked), base x, y, attachment a_x, a_y, la (RRR), the rail's
+    unit direction d_x, d_y (PRR)); the model file's modes (:func:`_mode_sides`' signs at
+    home) are added on first use as "mode"."""
+    legs = []
+    for lg in spec.legs:
+        kind = ("RRR", "PRR", "RPR").index(lg.kind)
+        d = ((lg.rail_end[0] - lg.base[0]) / lg.rail_length,
+             (lg.rail_end[1] - lg.base[1]) / lg.rail_length) if kind == 1 else (0.0, 0.0)
+        legs.append((kind, float(lg.base[0]), float(lg.base[1]), float(lg.attach[0]),
+                     float(lg.attach[1]), float(lg.la or 0.0), *d))
+    return {"legs": tuple(legs)}
+
+
+def _mode_sides(g, qa, xe):
+    """Each leg's working mode at active coordinates qa (n,) and platform pose xe (3,), as a
+    signed number (0.0 for an RPR leg): an RRR leg's u(qa) x (P_i - B_i), the side of its
+    elbow B_i; a PRR leg's (P_i - B_i) . d, its slider B_i behind or ahead of the foot of the
+    perpendicular from P_i on the rail d. P_i = p + R(phi) a_i, its attachment point. Plain
+    floats: this runs on every platform fk from Python (a few legs)."""
+    qa = qa.tolist() if isinstance(qa, np.ndarray) else [float(v) for v in qa]
+    x, y, phi = xe.tolist()
+    c, s = math.cos(phi), math.sin(phi)
+    out = []
+    for i, (kind, bx, by, ax, ay, la, dx, dy) in enumerate(g["legs"]):
+        px, py = x + c * ax - s * ay, y + s * ax + c * ay
+        if kind == 0:
+            ux, uy = math.cos(qa[i]), math.sin(qa[i])
+            out.append(ux * (py - by - la * uy) - uy * (px - bx - la * ux))
+        elif kind == 1:
+            out.append((px - bx - qa[i] * dx) * dx + (py - by - qa[i] * dy) * dy)
+        else:
+            out.append(0.0)
+    return out
+
+
 def _shapes(n, m, p, h):
     """The returned shape(s) of each Model method bound by :func:`_methods` (n legs, task
     dimension m, p parameters); a tuple of shapes for the derivative methods (their
@@ -212,7 +250,7 @@ class Model(DerivativeMethods, PoseMethods):
     """
 
     __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_fast", "_layouts",
-                 "_sing_thr", "_sing", "_residual", "_m", "_task_names", "__weakref__")
+                 "_sing_thr", "_sing", "_residual", "_m", "_task_names", "_modes", "__weakref__")
 
     #: names of the two singularity measures, in the order of :meth:`singularity_measures`
     SINGULARITY_KINDS = ("type I (a leg's links aligned)",
@@ -256,7 +294,8 @@ class Model(DerivativeMethods, PoseMethods):
                      ("_layouts", types.MappingProxyType(
                          {name: Layout(name, fl) for name, fl in manifest["layouts"].items()})),
                      ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual),
-                     ("_m", m), ("_task_names", task_names)):
+                     ("_m", m), ("_task_names", task_names),
+                     ("_modes", _mode_geometry(spec) if spec.home is not None else None)):
             object.__setattr__(self, k, v)
 
     def __setattr__(self, key, value):
@@ -519,7 +558,11 @@ class Model(DerivativeMethods, PoseMethods):
         xe : ndarray (m,)
             End-effector pose (a point: position O, m): for n >= 3 legs the least-squares point of the n
             elbow circles (B_i = A_i + la_i u(qa_i), radius lb_i), for two legs their
-            intersection on the ``fk_branch`` side.
+            intersection on the ``fk_branch`` side. A platform's pose (x, y, phi): Gauss-Newton
+            from ``[platform] home``, an assembly with every leg in its working mode; reliable
+            within about 0.05 m and 0.2 rad of home (docs/model-file.md), farther off possibly
+            another assembly of the same modes, or phi shifted by a multiple of 2 pi. About
+            2.5 us from Python (its working modes are checked in Python), 0.4 us for a point.
 
         Raises
         ------
@@ -529,7 +572,9 @@ class Model(DerivativeMethods, PoseMethods):
             :attr:`closure_tolerance` (``[sensing] closure_tolerance``, by default a few
             encoder steps at the active link's length). With three encoders for two degrees of
             freedom, the extra legs are a check of the measurement; the message names the leg
-            and its residual in m.
+            and its residual in m. A platform: WorkspaceError where Gauss-Newton from home
+            ended with a leg in the other working mode (elbow or branch) than the model
+            file's.
         """
         try:
             xe = self._fast["fk"](qa, out)      # refuses a residual beyond tol: named below
@@ -562,32 +607,28 @@ class Model(DerivativeMethods, PoseMethods):
         return out
 
     def _fk_same_mode(self, qa, xe):
-        """WorkspaceError unless ``xe`` (a platform's fk of ``qa``) is in the model's assembly
-        mode: the legs in their model file's modes at xe (``ik``) must have the active
-        coordinates qa. Gauss-Newton from [platform] home may end in another assembly mode of
-        the same qa, a pose that closes the loops but is not the robot's."""
-        qa = np.asarray(qa, dtype=float)
-        n, tol = self.n_legs, self.spec.sensing["closure_tolerance"]
-        try:
-            back = self.ik(xe)[:n]
-        except (WorkspaceError, SingularityError):
-            back = np.full(n, np.nan)
-        diff = back - qa
-        limit = np.empty(n)
-        for i, leg in enumerate(self.spec.legs):
-            if leg.actuator == "revolute":    # an angle: compared modulo 2 pi
-                diff[i] = (diff[i] + np.pi) % (2 * np.pi) - np.pi
-                limit[i] = 100 * tol / leg.la
-            else:
-                limit[i] = 100 * tol
-        if not (np.abs(diff) <= limit).all():
+        """WorkspaceError unless ``xe`` (a platform's fk of ``qa``) has every leg in its model
+        file's working mode: an RRR leg's elbow on its side of the proximal link, a PRR slider
+        ahead of or behind the foot of the perpendicular from its attachment point (RPR legs
+        have one). Gauss-Newton from [platform] home may end in another working mode of the
+        same qa: a pose that closes the loops, but not one the robot can be in."""
+        g = self._modes
+        if "mode" not in g:     # the model file's modes: the signs at [platform] home (ik's)
+            home = np.array(self.spec.home, dtype=float)
+            g["mode"] = _mode_sides(g, self._fast["ik"](home, None)[:self.n_legs], home)
+        wrong = [i for i, (side, mode) in enumerate(zip(_mode_sides(g, qa, xe), g["mode"]))
+                 if side * mode < 0]
+        if wrong:
+            qa = np.asarray(qa, dtype=float).reshape(-1)
+            legs = ", ".join(str(i + 1) for i in wrong)
             raise WorkspaceError(
                 f"fk of qa = {qa.tolist()}: the Gauss-Newton from [platform] home = "
                 f"{list(self.spec.home)} ended at the pose {np.round(xe, 6).tolist()}, which "
-                f"closes the loops in another assembly mode (the model's legs reach it with "
-                f"qa = {np.round(back, 6).tolist()}). A platform's fk from home is reliable "
-                f"within about 0.05 m and 0.2 rad of it (docs/model-file.md); the controllers "
-                f"track from the previous pose")
+                f"closes the loops with leg(s) {legs} in the other working mode (elbow or "
+                f"branch) than the model file's, another assembly of the same active "
+                f"coordinates. A platform's fk from home is reliable within about 0.05 m and "
+                f"0.2 rad of it (docs/model-file.md); the controllers track from the previous "
+                f"pose")
 
     def H(self, q, out=None):
         """Loop-closure constraints H(q), m (eq. 5): (2(n-1),) for legs meeting at a point,

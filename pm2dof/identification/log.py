@@ -407,9 +407,9 @@ def log_poses(model, log, *, encoder_tolerance=2e-3):
                            f"them), another robot's log, or angles not in rad (angles must be "
                            f"in rad, absolute from +x, as in the model file)") from None
         except WorkspaceError as exc:
-            raise LogError(f"{where}: active angles qa = {log.qa[k].tolist()} rad are outside "
-                           f"the workspace of {model.name!r} ({exc}); angles must be in rad, "
-                           f"absolute from +x, as in the model file") from None
+            raise LogError(f"{where}: active angles qa = {log.qa[k].tolist()} rad give no pose "
+                           f"of {model.name!r} in its working modes ({exc}); angles must be in "
+                           f"rad, absolute from +x, as in the model file") from None
         model.singularity_measures(q[k], out=sing)
         if not (sing[0] >= model.singularity_threshold
                 and sing[1] >= model.parallel_singularity_threshold):

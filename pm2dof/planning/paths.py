@@ -47,6 +47,8 @@ def _non_number(p):
     """(v,): the first entry of the nested sequences ``p`` that is not a real number, or ()."""
     if isinstance(p, np.ndarray) and p.dtype != object:
         return () if p.dtype.kind in "iuf" else (p,)
+    if isinstance(p, np.ndarray) and p.ndim == 0:       # a 0-d object array: its one entry
+        return _non_number(p.item())
     if isinstance(p, (list, tuple, np.ndarray)):
         return next((bad for v in p for bad in [_non_number(v)] if bad), ())
     return () if _is_real(p) else (p,)
@@ -64,6 +66,9 @@ def _array(name, p, want):
                         f"({type(bad[0]).__name__}) is not a number")
     try:
         return np.array(p, dtype=float)
+    except OverflowError:       # an int beyond float's range (10**400): not finite
+        raise PlanError(f"{name} must be {want}, got {p!r}: a number beyond float's "
+                        f"range") from None
     except ValueError:
         raise PlanError(f"{name} must be {want}, got {p!r}: ragged (rows of different "
                         f"lengths)") from None
@@ -93,8 +98,8 @@ def _orientation_length(value):
 def _number(name, x, positive=False, nonnegative=False):
     try:
         v = float(x) if _is_real(x) or (isinstance(x, np.ndarray) and x.dtype.kind in "iuf"
-                                        and x.size == 1) else math.nan
-    except (TypeError, ValueError):
+                                        and x.ndim == 0) else math.nan
+    except (TypeError, ValueError, OverflowError):     # OverflowError: an int like 10**400
         v = math.nan
     if not math.isfinite(v) or (positive and v <= 0) or (nonnegative and v < 0):
         want = " > 0" if positive else " >= 0" if nonnegative else ""

@@ -205,19 +205,19 @@ def model_problems(pr, model, variants, moves):
     except (WorkspaceError, SingularityError, TrajectoryError):
         first = None
     entries = list(dict.fromkeys(v.name for v in variants or ()))   # one per [[controllers]]
-    said = set()        # (entry, message): a problem of a key outside the grid, said once
+    failed = {}         # (entry, message) -> the grid points where it holds, in order
     for v in variants or ():
         if v.law == "lqr" and first is None:
             continue
         try:
             make_controller(model, v, first)
         except (ValueError, TypeError) as exc:
-            where = entry("controllers", f"entry {entries.index(v.name) + 1}, {v.name!r}")
-            if (where, str(exc)) in said:
-                continue
-            said.add((where, str(exc)))
-            point = f"at grid point {dict(v.grid)}: " if v.grid else ""
-            pr.add(where, f"{point}{exc}")
+            failed.setdefault((entries.index(v.name), str(exc)), []).append(v.grid)
+    for (k, msg), points in failed.items():
+        n_points = sum(v.name == entries[k] for v in variants)
+        point = ("" if not points[0] else "at every grid point: " if len(points) == n_points > 1
+                 else f"at grid point {dict(points[0])}: ")
+        pr.add(entry("controllers", f"entry {k + 1}, {entries[k]!r}"), f"{point}{msg}")
     for i, mv in enumerate(moves):
         try:
             check_trajectory(model, make_trajectory(model, mv, T))

@@ -955,7 +955,7 @@ def test_map_refuses_bad_arguments_by_name():
         f.map(4, q, m.theta_nominal, np.empty((3, 4)), None)
     with pytest.raises(TypeError, match=r"takes 5 arguments \(K, 2 inputs, 2 outputs\), got 4"):
         f.map(4, q, m.theta_nominal, out)
-    shared = np.empty(24)
+    shared = q.ravel().copy()       # finite (np.empty's garbage could hold a NaN, refused first)
     with pytest.raises(ValueError, match="shares memory with input 'q'"):
         f.map(4, shared, m.theta_nominal, shared[:16], None)
 

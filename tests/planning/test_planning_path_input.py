@@ -69,6 +69,10 @@ def test_plan_paths_checks_the_dimension_first(platform):
     (lambda: TaskPath.arc([0.25, 0.27], 0.02, True, 1.0), r"angle0 \(rad\) .* got bool True"),
     (lambda: TaskPath.line([0.2, 0.2, 0.0], [0.3, 0.2, 0.1], "0.1"), r"orientation_length .* got"
                                                                      r" str"),
+    (lambda: TaskPath.line([10**400, 0.29], [0.27, 0.24]), r"p0 .*beyond float's range"),
+    (lambda: TaskPath.arc([0.25, 0.27], 10**400, 0.0, 1.0), r"radius \(m\) must be a finite"),
+    (lambda: TaskPath.line(np.array(0.5, dtype=object), [0.27, 0.24]), r"p0 must be a finite "
+                                                                        r"point"),
     (lambda: TaskPath.arc([0.25, 0.27], 0.02, 0.0, 1.0, phi=0.1, orientation_length=0.1),
      r"phi must be \(phi0, phi1\): the orientation at the start and the end, two finite angles "
      r"in rad, got 0.1"),

@@ -471,4 +471,5 @@ def test_a_wrong_tau_max_length_is_said_once_by_the_controller(tmp_path):
         read_study(_write(tmp_path, text), check=True)
     reasons = [pr.reason for pr in exc.value.problems]
     assert len(reasons) == 1, reasons
-    assert "tau_max must be one finite number or 3 (one per actuator)" in reasons[0]
+    assert reasons[0].startswith("at every grid point: tau_max must be one finite number or "
+                                 "3 (one per actuator)"), reasons
