@@ -142,8 +142,7 @@ def _check_generated(spec, gen_dir):
 def _mode_geometry(spec):
     """A platform's legs for :meth:`Model._fk_same_mode`, one tuple each: (kind 0 RRR, 1 PRR,
     2 RPR (one working mode: not checked), base x, y, attachment a_x, a_y, la (RRR), the rail's
-    unit direction d_x, d_y (PRR)); the model file's modes (:func:`_mode_sides`' signs at
-    home) are added on first use as "mode"."""
+    unit direction d_x, d_y (PRR))."""
     legs = []
     for lg in spec.legs:
         kind = ("RRR", "PRR", "RPR").index(lg.kind)
@@ -151,10 +150,10 @@ def _mode_geometry(spec):
              (lg.rail_end[1] - lg.base[1]) / lg.rail_length) if kind == 1 else (0.0, 0.0)
         legs.append((kind, float(lg.base[0]), float(lg.base[1]), float(lg.attach[0]),
                      float(lg.attach[1]), float(lg.la or 0.0), *d))
-    return {"legs": tuple(legs)}
+    return tuple(legs)
 
 
-def _mode_sides(g, qa, xe):
+def _mode_sides(legs, qa, xe):
     """Each leg's working mode at active coordinates qa (n,) and platform pose xe (3,), as a
     signed number (0.0 for an RPR leg): an RRR leg's u(qa) x (P_i - B_i), the side of its
     elbow B_i; a PRR leg's (P_i - B_i) . d, its slider B_i behind or ahead of the foot of the
@@ -164,7 +163,7 @@ def _mode_sides(g, qa, xe):
     x, y, phi = xe.tolist()
     c, s = math.cos(phi), math.sin(phi)
     out = []
-    for i, (kind, bx, by, ax, ay, la, dx, dy) in enumerate(g["legs"]):
+    for i, (kind, bx, by, ax, ay, la, dx, dy) in enumerate(legs):
         px, py = x + c * ax - s * ay, y + s * ax + c * ay
         if kind == 0:
             ux, uy = math.cos(qa[i]), math.sin(qa[i])
@@ -294,9 +293,13 @@ class Model(DerivativeMethods, PoseMethods):
                      ("_layouts", types.MappingProxyType(
                          {name: Layout(name, fl) for name, fl in manifest["layouts"].items()})),
                      ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual),
-                     ("_m", m), ("_task_names", task_names),
-                     ("_modes", _mode_geometry(spec) if spec.home is not None else None)):
+                     ("_m", m), ("_task_names", task_names), ("_modes", None)):
             object.__setattr__(self, k, v)
+        if spec.home is not None:       # a platform: its legs' working modes, read at home
+            legs = _mode_geometry(spec)
+            home = np.array(spec.home, dtype=float)
+            modes = tuple(_mode_sides(legs, fast["ik"](home, None)[:spec.n_legs], home))
+            object.__setattr__(self, "_modes", (legs, modes))
 
     def __setattr__(self, key, value):
         raise AttributeError(f"Model is immutable (tried to set {key!r})")
@@ -580,7 +583,7 @@ class Model(DerivativeMethods, PoseMethods):
             xe = self._fast["fk"](qa, out)      # refuses a residual beyond tol: named below
         except _cbind.Refused:
             xe = self._fk_checked(qa, out)
-        if self.spec.home is not None:        # a platform: Gauss-Newton from [platform] home
+        if self._modes is not None:           # a platform: Gauss-Newton from [platform] home
             self._fk_same_mode(qa, xe)
         return xe
 
@@ -612,11 +615,8 @@ class Model(DerivativeMethods, PoseMethods):
         ahead of or behind the foot of the perpendicular from its attachment point (RPR legs
         have one). Gauss-Newton from [platform] home may end in another working mode of the
         same qa: a pose that closes the loops, but not one the robot can be in."""
-        g = self._modes
-        if "mode" not in g:     # the model file's modes: the signs at [platform] home (ik's)
-            home = np.array(self.spec.home, dtype=float)
-            g["mode"] = _mode_sides(g, self._fast["ik"](home, None)[:self.n_legs], home)
-        wrong = [i for i, (side, mode) in enumerate(zip(_mode_sides(g, qa, xe), g["mode"]))
+        legs, modes = self._modes        # the model file's modes: the signs at home (ik's)
+        wrong = [i for i, (side, mode) in enumerate(zip(_mode_sides(legs, qa, xe), modes))
                  if side * mode < 0]
         if wrong:
             qa = np.asarray(qa, dtype=float).reshape(-1)
