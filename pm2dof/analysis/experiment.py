@@ -5,11 +5,13 @@ from ..control.controllers import APDController, CTCController, NAController
 from ..control.plant import theta_truth
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
+from ..core.errors import ArgumentError
 from ..infra.progress import bar
 
 __all__ = ["PAPER_TABLE3", "is_paper_robot", "table3", "table3_json", "seeded_table3",
            "format_table3",
-           "run_table3", "repeated_runs", "sensitivity", "format_sensitivity"]
+           "run_table3", "repeated_runs", "sensitivity", "sensitivity_variants",
+           "nominal_truth", "format_sensitivity"]
 
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
 PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percent": 38.40},
@@ -72,7 +74,6 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, include
     speeds = list(line_moves(model)) if speeds is None else speeds
     unknown = sorted(set(include) - set(EXTRA_CONTROLLERS))
     if unknown:
-        from ..core.errors import ArgumentError
         raise ArgumentError(f"include: unknown controller(s) {unknown}; choose from "
                             f"{list(EXTRA_CONTROLLERS)}")
     out = {}
@@ -231,28 +232,51 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
             "theta_truth": theta_truth(model), "theta0": ctrl.theta0.copy()}
 
 
-def _nominal_truth(model):
-    """A plant whose truth is exactly the controllers' nominal model (no payload, no Stribeck)."""
-    from ..control.plant import plant_truth
-    n = model.n_legs
-    th = model.theta_nominal
-    base = plant_truth(model)
-    return {**base, "alpha": th[0:n], "beta": th[n:2 * n], "gamma": th[2 * n:3 * n],
-            "fv": th[3 * n:4 * n], "fc": th[4 * n:5 * n], "fs": np.zeros(n)}
+def nominal_truth(model):
+    """A plant whose truth is the controllers' nominal model: every parameter of
+    ``model.theta_nominal`` set by its name (``model.param_names``: alpha_i, beta_i, gamma_i,
+    kappa_i under gravity, a platform's m_p, mx_p, my_p, I_p, fv_i, fc_i, fs_i), no payload and
+    no Stribeck excess beyond the nominal model's; the rest of ``[plant]`` (the Stribeck
+    velocity, the Coulomb smoothing of the plant's sign) as the model file gives it.
+
+    Returns
+    -------
+    dict
+        A plant truth as :func:`pm2dof.plant_truth` returns it (``simulate(..., truth=...)``).
+    """
+    from ..control.plant import _param_index, plant_truth
+    truth = {k: np.array(v, dtype=float) for k, v in plant_truth(model, payload_mass=0.0).items()}
+    truth["fs"] = np.zeros(model.n_legs)
+    for (field, i), value in zip(_param_index(model.param_names), model.theta_nominal):
+        if field not in truth:
+            raise ArgumentError(f"model {model.name!r}: parameter {field!r} of theta has no "
+                                f"field in the plant's truth (fields {sorted(truth)})")
+        if truth[field].ndim:
+            truth[field][i] = value
+        else:
+            truth[field] = np.array(value, dtype=float)
+    return truth
+
+
+def sensitivity_variants(model):
+    """The variants of :func:`sensitivity`: a list of (label, keyword arguments of
+    :func:`table3`)."""
+    fc = model.spec.sensing["velocity_filter_hz"]
+    return [(f"model file (velocity filter {fc:g} Hz)", {}),
+            ("velocity filter 100 Hz", {"velocity_filter_hz": 100.0}),
+            ("velocity filter 300 Hz", {"velocity_filter_hz": 300.0}),
+            ("exact encoders", {"quantise": False}),
+            ("plant truth = nominal model", {"truth": nominal_truth(model)})]
 
 
 def sensitivity(model):
-    """Table 3 under other assumptions of the simulation (what the ranking depends on).
+    """Table 3 under other assumptions of the simulation (what the ranking depends on): the
+    variants of :func:`sensitivity_variants`.
 
     Returns a list of (label, table3_json numbers).
     """
-    fc = model.spec.sensing["velocity_filter_hz"]
-    variants = [(f"model file (velocity filter {fc:g} Hz)", {}),
-                ("velocity filter 100 Hz", {"velocity_filter_hz": 100.0}),
-                ("velocity filter 300 Hz", {"velocity_filter_hz": 300.0}),
-                ("exact encoders", {"quantise": False}),
-                ("plant truth = nominal model", {"truth": _nominal_truth(model)})]
-    return [(label, table3_json(table3(model, **kw))) for label, kw in variants]
+    return [(label, table3_json(table3(model, **kw)))
+            for label, kw in sensitivity_variants(model)]
 
 
 def format_sensitivity(rows):
