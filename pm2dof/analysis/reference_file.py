@@ -17,7 +17,7 @@ Any other column is refused (a misspelt ``x_dd`` would otherwise be silently dif
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.simulate import check_trajectory, simulate
+from ..control.simulate import check_trajectory, moving_start, simulate
 from ..control.trajectory import Trajectory, TrajectoryError
 from ..core.errors import InputFileError, SingularityError, WorkspaceError
 from ..core.model import require_model
@@ -122,7 +122,7 @@ def read_trajectory(path):
     >>> traj.xd.shape, traj.period
     ((3, 2), 0.002)
     """
-    _, cols = read_columns(path, ReferenceFileError)
+    _, cols = read_columns(path, ReferenceFileError, "a reference")
     names = _task(path, cols)
     T = _grid(path, cols["t"])
     levels = [np.stack([cols[c] for c in names], axis=1)]
@@ -162,7 +162,9 @@ def simulate_reference(model, path, laws=("na", "apd"), *, split=None, settle_ti
     Raises
     ------
     ReferenceFileError
-        The file cannot be read, or its task coordinates or time step are not the model's.
+        The file cannot be read, its task coordinates or time step are not the model's, or it
+        does not start at rest (:func:`pm2dof.control.simulate.moving_start`: the simulated
+        robot does).
     """
     require_model(model)
     unknown = [x for x in laws if x not in LAWS]
@@ -182,6 +184,10 @@ def simulate_reference(model, path, laws=("na", "apd"), *, split=None, settle_ti
         check_trajectory(model, traj)
     except (TrajectoryError, WorkspaceError, SingularityError) as exc:
         raise type(exc)(f"{path}: {exc}") from None
+    moving = moving_start(traj, model.task_names)
+    if moving is not None:  # the robot starts at rest: a file must too (docs/reference-format.md)
+        raise ReferenceFileError(f"{path}: {moving}; start the reference at rest (or simulate "
+                                 f"it with pm2dof.simulate, which warns)")
     kw = {} if split is None else {"split": split}
     out = {}
     for law in laws:

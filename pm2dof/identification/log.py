@@ -36,6 +36,7 @@ import numpy as np
 from ..core.errors import ClosureError, InputFileError, WorkspaceError
 from ..core.validate import Problems
 from ..infra.results import write_atomic
+from ..infra.tables import decode_text
 from .model_ref import mismatch, rebase
 
 __all__ = ["LogError", "IdentLog", "read_log", "write_log", "log_poses", "log_folder",
@@ -207,25 +208,10 @@ def _check_time(pr, t, meta, time_tolerance):
 
 
 def _decode(path, raw):
-    """The text of a CSV log: UTF-8 (a BOM, Excel's "CSV UTF-8", dropped). A ``#`` comment line
-    in another encoding (a logger's Latin-1 ``# operator = Müller``) is read as Latin-1; any
-    other byte that is not UTF-8 (binary junk) is a LogError naming the line."""
-    try:
-        return raw.decode("utf-8-sig")
-    except UnicodeDecodeError:
-        pass
-    lines = raw.split(b"\n")
-    for no, line in enumerate(lines):
-        try:
-            lines[no] = line.decode("utf-8-sig" if no == 0 else "utf-8")
-        except UnicodeDecodeError as exc:
-            if line.lstrip().startswith(b"#"):
-                lines[no] = line.decode("latin-1")
-                continue
-            Problems(path, LogError).stop(
-                None, f"line {no + 1} is not text (byte 0x{line[exc.start]:02x} at column "
-                      f"{exc.start + 1} is not UTF-8): a log is a UTF-8 CSV or a Parquet file")
-    return "\n".join(lines)
+    """The text of a CSV log (:func:`pm2dof.infra.tables.decode_text`, the reader of reference
+    files too): UTF-8, a Latin-1 ``#`` comment line read as such, binary junk a LogError naming
+    the line."""
+    return decode_text(path, raw, LogError, "a log")
 
 
 def _read_csv(path):
