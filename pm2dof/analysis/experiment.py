@@ -1,4 +1,6 @@
 # The paper's experiment (Sect. 5): Table 3 in simulation, the Gamma = 0 ablation, repeated runs.
+import math
+
 import numpy as np
 
 from ..control.controllers import APDController, CTCController, NAController
@@ -8,7 +10,7 @@ from ..control.trajectory import line_moves, model_move
 from ..core.errors import ArgumentError
 from ..infra.progress import bar
 
-__all__ = ["PAPER_TABLE3", "is_paper_robot", "table3", "table3_json", "seeded_table3",
+__all__ = ["PAPER_TABLE3", "is_paper_robot", "table3", "table3_json", "phi_rmse", "seeded_table3",
            "format_table3",
            "run_table3", "repeated_runs", "sensitivity", "sensitivity_variants",
            "nominal_truth", "format_sensitivity"]
@@ -40,6 +42,8 @@ def rpe(apd_rmse, na_rmse):
 
 #: the model-based controllers ``table3(include=...)`` can add (issue 21), with Tables 1-2
 EXTRA_CONTROLLERS = ("ctc", "lqr")
+#: each controller's column heading in the text table
+LABELS = {"apd": "APD", "na": "NA", "na_no_adaptation": "NA G=0"}
 
 
 def _extra_controller(model, name, traj, kw):
@@ -94,25 +98,52 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, include
     return out
 
 
+def phi_rmse(r):
+    """RMSE of a platform's orientation phi over the samples of the move, rad:
+    sqrt(1/N sum_k (phi_d,k - phi_k)^2), the angle beside eq. 41's position (which leaves it
+    out, another unit); None for a point end effector, ``inf`` for a run that did not
+    complete (as :attr:`SimResult.rmse`)."""
+    if r.xd.shape[1] < 3:
+        return None
+    if r.outcome != "completed":
+        return math.inf
+    e = r.e[:r.n_move, 2]
+    return float(np.sqrt(np.mean(e * e)))
+
+
 def table3_json(results):
-    """The numbers of :func:`table3`: RMSE in m, RPE in percent, duration in s."""
+    """The numbers of :func:`table3`: RMSE in m, RPE in percent, duration in s; for a platform
+    also each controller's ``<name>_phi_rmse`` (:func:`phi_rmse`, rad). Each move's ``units``
+    names the unit of every number (``trajectory_duration`` is ``trajectory_duration_s``
+    without the unit in its name; both are kept)."""
     out = {}
     for speed, runs in results.items():
         r = runs["na"]
+        names = ["apd", "na", "na_no_adaptation", *(x for x in EXTRA_CONTROLLERS if x in runs)]
+        duration = float(r.t[r.n_move - 1])
         out[speed] = {
             "apd_rmse": runs["apd"].rmse,
             "na_rmse": r.rmse,
             "na_no_adaptation_rmse": runs["na_no_adaptation"].rmse,
             "rpe_percent": rpe(runs["apd"].rmse, r.rmse),
             **{f"{x}_rmse": runs[x].rmse for x in EXTRA_CONTROLLERS if x in runs},
-            "trajectory_duration_s": float(r.t[r.n_move - 1]),
+            "trajectory_duration_s": duration,
             "samples": r.n_move,
             "saturated_samples": {k: v.n_saturated for k, v in runs.items()},
             "singular_samples": {k: v.n_singular for k, v in runs.items()},
         }
+        platform = r.xd.shape[1] == 3
+        if platform:
+            out[speed].update({f"{x}_phi_rmse": phi_rmse(runs[x]) for x in names})
         failed = {k: v.outcome_message for k, v in runs.items() if v.outcome != "completed"}
         if failed:  # a run that left the workspace or diverged: its RMSE is inf (JSON: null)
             out[speed]["outcomes"] = failed
+        out[speed]["trajectory_duration"] = duration
+        out[speed]["units"] = {**{f"{x}_rmse": "m" for x in names}, "rpe_percent": "%",
+                               **({f"{x}_phi_rmse": "rad" for x in names} if platform else {}),
+                               "trajectory_duration": "s", "trajectory_duration_s": "s",
+                               "samples": "1", "saturated_samples": "1",
+                               "singular_samples": "1"}
     return out
 
 
@@ -168,6 +199,14 @@ def format_table3(numbers, paper=True):
                         f"{cell(measured.get('rpe_percent'), 8, '.2f')}%" if paper else "")
                      + "".join(f" | {cell(r[f'{x}_rmse'], 11, '.4e', 'failed')}" for x in extra))
         failed += [f"  {speed} {k}: {msg}" for k, msg in r.get("outcomes", {}).items()]
+    phi = [x for x in ("apd", "na", "na_no_adaptation", *extra)
+           if all(f"{x}_phi_rmse" in r for r in numbers.values())]
+    if phi:             # a platform: its orientation, beside eq. 41's position
+        lines.append(f"RMSE of the platform's orientation phi, rad, simulated:\n{'speed':6s} "
+                     + " ".join(f"{LABELS.get(x, x.upper()) + ' sim':>11s}" for x in phi))
+        for speed, r in numbers.items():
+            lines.append(f"{speed:6s} " + " ".join(cell(r[f"{x}_phi_rmse"], 11, ".4e", "failed")
+                                                  for x in phi))
     lines.append("RPE = 100 (APD - NA) / APD: positive when NA tracks better.")
     if extra:
         lines.append("CTC: computed torque, LQR: time-varying LQR along the move; both with "

@@ -38,7 +38,7 @@ from ..core.errors import ArgumentError, WorkspaceError
 from ..infra.progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
-           "maps_summary", "format_maps_summary", "map_orientation", "FIELDS",
+           "field_units", "maps_summary", "format_maps_summary", "map_orientation", "FIELDS",
            "RESOLUTION_MIN", "RESOLUTION_MAX"]
 
 #: grid points per axis of a map: 1001^2 poses take about 100 s and ~1 GB
@@ -56,6 +56,19 @@ FIELDS = {
     "accel_min_max": ("m/s^2", "largest acceleration at rest in every direction, min-max"),
     "accel_ratio": ("1", "accel_min_max / accel_min_norm"),
 }
+
+
+def field_units(model):
+    """The unit of every :data:`FIELDS` map of ``model``: as :data:`FIELDS` for a point end
+    effector; a platform's force and acceleration maps are balls in (x, y, phi) taken alike,
+    "N, N m (phi)" and "m/s^2, rad/s^2 (phi)"."""
+    units = {k: u for k, (u, _) in FIELDS.items()}
+    if model.dof == 3:
+        for k in ("force_min_norm", "force_min_max"):
+            units[k] = "N, N m (phi)"
+        for k in ("accel_min_norm", "accel_min_max"):
+            units[k] = "m/s^2, rad/s^2 (phi)"
+    return units
 
 
 def _facet_normals(G):
@@ -291,7 +304,8 @@ def _worst(key, values):
 
 
 def maps_summary(model, maps, theta=None, tau_max=None):
-    """Numbers of :func:`workspace_maps`: the reachable area, the min/median/max of every map
+    """Numbers of :func:`workspace_maps`: the reachable area (``reachable_area``, also under its
+    former name ``reachable_area_m2``, m^2; ``clear_area`` alike), the min/median/max of every map
     over the poses clear of both singularity thresholds, and every quantity along each move
     of ``[trajectories]`` (its worst value on the path, 201 points). Under gravity also
     ``gravity`` (m/s^2, the model file's): the force and acceleration maps are then what the
@@ -307,7 +321,11 @@ def maps_summary(model, maps, theta=None, tau_max=None):
                "clear_area_m2": float(clear.sum() * dx * dy),
                "over_clear_workspace": {k: _stats(np.where(clear, maps[k], np.nan))
                                         for k in FIELDS},
-               "units": {k: u for k, (u, _) in FIELDS.items()}, "moves": {}}
+               "units": field_units(model), "moves": {}}
+    summary["reachable_area"] = summary["reachable_area_m2"]      # the same, without the unit
+    summary["clear_area"] = summary["clear_area_m2"]              # in the key (units: m^2)
+    summary["units"].update(reachable_area="m^2", clear_area="m^2", reachable_area_m2="m^2",
+                            clear_area_m2="m^2", grid="m (x, y), rad (phi)")
     if model.spec.has_gravity:      # force and acceleration: what is left once it is held up
         summary["gravity"] = list(model.spec.gravity)
     for speed in line_moves(model):
@@ -329,10 +347,11 @@ def maps_summary(model, maps, theta=None, tau_max=None):
 def format_maps_summary(summary):
     """A text table of :func:`maps_summary`."""
     phi = summary["grid"].get("phi")
+    uw = max(6, *(len(summary["units"][k]) for k in summary["over_clear_workspace"]))
     lines = [f"reachable area {summary['reachable_area_m2']:.4f} m^2, clear of both singularity "
              f"thresholds {summary['clear_area_m2']:.4f} m^2"
              + ("" if phi is None else f" (the platform at phi = {phi:g} rad)"),
-             f"{'quantity':16s} {'unit':6s} {'min':>10s} {'median':>10s} {'max':>10s}   "
+             f"{'quantity':16s} {'unit':{uw}s} {'min':>10s} {'median':>10s} {'max':>10s}   "
              + "   ".join(f"worst on {s}" for s in summary["moves"])]
     for k, st in summary["over_clear_workspace"].items():
         cols = [f"{st[c]:10.4g}" if st[c] is not None else f"{'-':>10s}"
@@ -340,7 +359,7 @@ def format_maps_summary(summary):
         path = "   ".join(f"{m['worst_on_path'][k]:>{len(s) + 9}.4g}"
                            if m["worst_on_path"][k] is not None else f"{'-':>{len(s) + 9}s}"
                            for s, m in summary["moves"].items())
-        lines.append(f"{k:16s} {summary['units'][k]:6s} {' '.join(cols)}   {path}")
+        lines.append(f"{k:16s} {summary['units'][k]:{uw}s} {' '.join(cols)}   {path}")
     lines.append("min/median/max over the grid points clear of both thresholds; worst on a move: "
                  "its largest cond(S^T S), else its smallest value")
     if summary.get("gravity") is not None:

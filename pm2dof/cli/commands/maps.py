@@ -21,8 +21,8 @@ def add_parser(sub, common):
                    help="grid points per axis, 5 to 1001 (default 121; about 1 s per 10^4 "
                    "points)")
     p.add_argument("--tau-max", type=POSITIVE, nargs="+", metavar="NM",
-                   help="actuator limits, N m: one value for all or one per actuator "
-                   "(default: [limits].tau_max)")
+                   help="actuator limits, N m (N for a linear actuator): one value for all "
+                   "or one per actuator (default: [limits].tau_max)")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
     return p
 
