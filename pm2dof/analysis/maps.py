@@ -46,8 +46,9 @@ RESOLUTION_MIN, RESOLUTION_MAX = 5, 1001
 
 # quantity -> (unit, description); every map of workspace_maps has these keys
 FIELDS = {
-    "type1": ("1", "type I measure min_i |sin(qb_i - qa_i)|"),
-    "type2": ("1", "type II measure sigma_min(S, unit rows) / sqrt(n/2)"),
+    # each kind's measure (an RRR leg's |sin(qb_i - qa_i)|, ...): Model.singularity_kinds
+    "type1": ("1", "type I measure, min over the legs of each kind's"),
+    "type2": ("1", "type II measure of the point's or the platform's actuation"),
     "cond_StS": ("1", "condition number of S^T S"),
     "force_min_norm": ("N", "largest task force in every direction, min-norm split (eq. 21)"),
     "force_min_max": ("N", "largest task force in every direction, min-max split"),
