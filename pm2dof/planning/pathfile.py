@@ -29,7 +29,10 @@ l (m, :func:`pm2dof.core.task.orientation_length`): the caller passes the model'
 A shipped path is named by its stem (``pm2dof plan --path pick_and_place``); anything with a
 ``/`` or ending in ``.toml`` is a file. A bad file is one :class:`PathFileError` (a
 :class:`pm2dof.PlanError`) naming the file and listing every problem, each with its key and
-reason, segments numbered from 1, as model and study files (:class:`pm2dof.core.validate.Problems`).
+reason, segments numbered from 1, as model and study files (:class:`pm2dof.core.validate.Problems`):
+every unknown or missing key and every value its constructor would refuse (a misspelt key hides
+no bad value beside it); the checks between a segment's values (a blend that does not fit, equal
+angles) and the joins between segments once its values are right.
 """
 from dataclasses import dataclass
 from pathlib import Path
