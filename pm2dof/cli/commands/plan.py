@@ -19,8 +19,8 @@ def add_parser(sub, common):
     p.add_argument("--path", metavar="NAME|FILE", help="a path file (default: the moves)")
     p.add_argument("--move", help="only this move of the model file (default: every move)")
     p.add_argument("--tau-max", type=POSITIVE, nargs="+", metavar="NM",
-                   help="actuator limits, N m: one value for all or one per actuator "
-                   "(default: [limits].tau_max)")
+                   help="actuator limits, N m (N for a linear actuator): one value for all "
+                   "or one per actuator (default: [limits].tau_max)")
     p.add_argument("--margin", type=number(0.0, 1.0), default=1.0,
                    help="plan with tau_max * margin (default 1.0)")
     p.add_argument("--grid", type=count(2, 100000), default=1000,
@@ -36,7 +36,8 @@ def add_parser(sub, common):
     p.add_argument("--smooth", action="store_true", help="also the torque-rate-limited "
                    "near-time-optimal plan (CasADi + IPOPT; needs casadi)")
     p.add_argument("--tau-rate", type=POSITIVE, metavar="NM_PER_S",
-                   help="--smooth: largest |dtau/dt| (default tau_max / 20 ms)")
+                   help="--smooth: largest |dtau/dt|, N m/s (N/s for a linear actuator; "
+                   "default tau_max / 20 ms)")
     p.add_argument("--closed-loop", action="store_true",
                    help="simulate NA and APD, with the same split, tracking the time-optimal "
                    "plan of the last split --split names (min-max for the default both, "
