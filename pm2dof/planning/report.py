@@ -4,7 +4,9 @@
 :func:`plan_paths` plans each path with the kinematic S-curve and time-optimally with each
 split (optionally the smoothed variant); :func:`closed_loop` tracks time-optimal plans with NA
 and APD in simulation at several margins; :func:`csv_text` is a plan's trajectory with the
-split's torques as CSV; :func:`format_report` renders all of it.
+split's torques as CSV (its columns named and given their units by :func:`csv_columns`);
+:func:`format_report` renders all of it. Every effort is in its actuator's unit
+(:func:`effort_units`: N m for a revolute actuator, N for a linear one).
 """
 import numpy as np
 
