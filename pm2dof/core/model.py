@@ -914,22 +914,23 @@ class Model(DerivativeMethods, PoseMethods):
         """The actuator torques of every split for the task force ``u`` (m,), N (N m for phi),
         at pose q (2n,).
 
-        All satisfy S^T tau = u (eqs. 10, 21) to rounding; ``tau_max`` (n,) N*m defaults to
-        ``[limits]``, ``preload`` (n,) N*m and ``preload_sign`` (n,) +-1 to ``[control]``. No
+        All satisfy S^T tau = u (eqs. 10, 21) to rounding; ``tau_max`` (n,) (N*m per revolute
+        actuator, N per linear one, as every effort below) defaults to ``[limits]``,
+        ``preload`` (n,) and ``preload_sign`` (n,) +-1 to ``[control]``. No
         clipping is applied here (the controller steps clip). Raises SingularityError at a pose
         too close to a singularity of either kind.
 
         Parameters
         ----------
         q : array_like (2n,)
-            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
-            returns them).
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n] (rad; a linear actuator's qa_i in m),
+            closing every loop (as :meth:`ik` returns them).
         u : array_like (m,)
             Task-space force, N (N m for phi).
         tau_max : array_like (n,), optional
-            Actuator limits, N*m; ``[limits] tau_max`` when None.
+            Actuator limits, N*m (revolute) or N (linear); ``[limits] tau_max`` when None.
         preload : array_like (n,), optional
-            Preload magnitudes, N*m; ``[control] preload`` when None.
+            Preload magnitudes, N*m or N by kind; ``[control] preload`` when None.
         preload_sign : array_like (n,), optional
             Preload directions, +-1 per actuator; ``[control] preload_sign`` when None.
 
@@ -974,7 +975,7 @@ class Model(DerivativeMethods, PoseMethods):
         xed : array_like (m,)
             Task-space velocity, m/s (rad/s for phi).
         tau_a : array_like (n,)
-            Actuator torques, N*m.
+            Actuator efforts, N*m (revolute) or N (linear).
         theta : array_like (p,)
             Parameters, in :attr:`param_names` order (Tables 1-2 units). Checked for length
             and finiteness only: this is a per-sample call, so it does not check that theta
