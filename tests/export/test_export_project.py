@@ -20,6 +20,7 @@ from pm2dof.cli import main
 from pm2dof.core.errors import ArgumentError, OutputError, StaleGeneratedCodeError
 from pm2dof.export import ExportError, export_project
 from pm2dof.export.single import to_single
+from tests.export.c_guards import check_guard_output, rule_driver
 
 needs_cmake = pytest.mark.skipif(shutil.which("cmake") is None or shutil.which("cc") is None,
                                  reason="needs cmake and a C compiler")
@@ -137,6 +138,71 @@ def test_two_models_installed_and_found_link_into_one_program(built, tmp_path):
     s, *v = _run([tmp_path / "cb" / "two_robots"]).stdout.split()
     assert s == "0"
     np.testing.assert_allclose([float(x) for x in v], [0.25, 0.26, *xb], rtol=0, atol=1e-12)
+
+
+@needs_cmake
+@pytest.mark.parametrize("name", ["shang2010", "fivebar"])
+def test_the_ctests_guards_are_pm2dofs(built, name):
+    """What the ctest prints of its guards (tests/export/c_guards.py): NA's blocked robot (the
+    paper's law, the projection, the freeze) equals NAController's steps bit for bit, init's
+    refusals name pm2dof's rules, the status strings are pm2dof.Status's labels, the version
+    and formulation are pm2dof's."""
+    root, build = built
+    out = _run([build / name / f"{name}_test"]).stdout
+    assert "FAIL" not in out and re.search(r"(\d+) of \1 checks passed", out), out[-3000:]
+    check_guard_output(out, name)
+
+
+@needs_cmake
+def test_init_applies_pm2dofs_rules_at_every_bound(built, tmp_path):
+    """The exported init against pm2dof.control.rules: each parameter entry at, just inside and
+    just outside its bounds, NaN and infinities; init's bad_param is the offset of the first
+    entry pm2dof's rules refuse (-1 when they accept), for every law."""
+    root, build = built
+    src, want = rule_driver("shang2010", ("na", "apd", "ctc", "lqr"))
+    (tmp_path / "driver.c").write_text(src)
+    lib = next((build / "shang2010").glob("*shang2010_pm2dof.a"))
+    _run(["cc", "-std=c99", "-Wall", "-Werror", "-I", root / "shang2010" / "include",
+          tmp_path / "driver.c", lib, "-lm", "-o", tmp_path / "driver"])
+    got = [int(v) for v in _run([tmp_path / "driver"]).stdout.split()]
+    assert len(got) == len(want) > 500
+    bad = [(i, g, w) for i, (g, w) in enumerate(zip(got, want)) if g != w]
+    assert not bad, bad[:10]
+    assert want.count(-1) > 50 and len(set(want)) > 20      # accepted and refused cases both
+
+
+@pytest.mark.skipif(shutil.which("cc") is None, reason="needs a C compiler")
+@pytest.mark.parametrize("name", ["shang2010", "rrr4_platform"])
+def test_the_library_refuses_to_compile_with_fast_math(tmp_path, name):
+    """-ffast-math and -ffinite-math-only let the compiler drop the NaN and singularity
+    guards: the API source stops with an #error that says so; without them it compiles."""
+    out = export_project(name, tmp_path / name, controllers=("na",))
+    api = out / "src" / f"{name}_pm2dof.c"
+    cmd = ["cc", "-std=c99", "-c", "-I", out / "include", "-I", out / "src", api, "-o",
+           tmp_path / "api.o"]
+    _run(cmd)
+    for flag in ("-ffast-math", "-ffinite-math-only"):
+        r = subprocess.run(cmd + [flag], capture_output=True, text=True, timeout=600)
+        assert r.returncode != 0, flag
+        assert (f"{name}_pm2dof: compile this library without -ffast-math and "
+                f"-ffinite-math-only: they remove its NaN and singularity guards") in r.stderr, (
+            flag, r.stderr)
+
+
+def test_the_export_record_names_the_model_file_not_the_machines_folders(tmp_path):
+    src = pm2dof.load_model()
+    shutil.copytree(src.generated, tmp_path / "robots" / "generated" / "shang2010")
+    shutil.copy(pm2dof.core.paths.SHIPPED_MODELS / "shang2010.toml", tmp_path / "robots")
+    out = export_project(tmp_path / "robots" / "shang2010.toml", tmp_path / "out",
+                         controllers=("na",))
+    text = (out / "pm2dof_export.json").read_text()
+    record = json.loads(text)
+    assert record["model_file"] == "shang2010.toml"
+    assert str(tmp_path) not in text and "/robots" not in text
+    header = (out / "include" / "shang2010_pm2dof.h").read_text()
+    assert f'#define SHANG2010_PM2DOF_VERSION "{pm2dof.__version__}"' in header
+    assert (f'#define SHANG2010_PM2DOF_FORMULATION "{src.spec.formulation_sha256}"'
+            in header)
 
 
 def test_exporting_a_stale_model_names_pm2dof_derive(tmp_path):
