@@ -171,6 +171,77 @@ def test_init_applies_pm2dofs_rules_at_every_bound(built, tmp_path):
     assert want.count(-1) > 50 and len(set(want)) > 20      # accepted and refused cases both
 
 
+FAKE_STEP = r"""/* the generated NA step replaced: it writes the status it is told */
+double fake_status;
+int fake_na_step(const double **arg, double **res, long long *iw, double *w, int mem)
+{
+    int i;
+    (void)iw; (void)w; (void)mem;
+    for (i = 0; i < SHANG2010_PM2DOF_N_LEGS; i++)
+        res[0][i] = 1.0;
+    for (i = 0; i < SHANG2010_PM2DOF_STATE_SIZE; i++)
+        res[1][i] = arg[0][i] + 1.0;
+    *res[2] = fake_status;
+    for (i = 0; i < SHANG2010_PM2DOF_DIAG_SIZE; i++)
+        res[3][i] = 0.0;
+    return 0;
+}
+"""
+FAKE_DRIVER = r"""#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "shang2010_pm2dof.h"
+extern double fake_status;
+int main(void)
+{
+    static shang2010_pm2dof_na c;
+    static const double values[] = {2.5, 6.0, -1.0, -2.0, NAN, INFINITY, 1e300, 2.0};
+    shang2010_pm2dof_work w;
+    double x[2] = {0.245, 0.265}, q[6], z[2] = {0, 0}, tau[3], before[SHANG2010_PM2DOF_STATE_SIZE];
+    unsigned k;
+    int s;
+    shang2010_pm2dof_ik(x, q, &w);
+    shang2010_pm2dof_na_init(&c, NULL);
+    shang2010_pm2dof_na_reset(&c, q, NULL);
+    for (k = 0; k < sizeof values / sizeof values[0]; k++) {
+        memcpy(before, shang2010_pm2dof_state(&c.core), sizeof before);
+        fake_status = values[k];
+        s = shang2010_pm2dof_na_step(&c, q, x, z, z, tau);
+        printf("%g %d %g %d\n", values[k], s, fabs(tau[0]) + fabs(tau[1]) + fabs(tau[2]),
+               memcmp(before, shang2010_pm2dof_state(&c.core), sizeof before) != 0);
+    }
+    return 0;
+}
+"""
+
+
+@needs_cmake
+def test_a_status_that_is_no_code_gives_non_finite_and_keeps_the_state(built, tmp_path):
+    """The generated step writes its status as a real. The API takes it only when it is exactly
+    a code: 2.5, 6, -1, NaN, ... (a generated step replaced by one that writes them) give
+    NON_FINITE, zero torque and the state kept (a cast to int made 2.5 SATURATED with the
+    step's torque); 2.0 gives SATURATED."""
+    root, build = built
+    inc = ["-I", root / "shang2010" / "include", "-I", root / "shang2010" / "src"]
+    (tmp_path / "fake.c").write_text('#include "shang2010_pm2dof.h"\n' + FAKE_STEP)
+    (tmp_path / "driver.c").write_text(FAKE_DRIVER)
+    lib = next((build / "shang2010").glob("*shang2010_pm2dof.a"))
+    for src, obj, extra in ((root / "shang2010" / "src" / "shang2010_pm2dof.c", "api.o",
+                             ["-Dshang2010_na_step=fake_na_step"]),
+                            (tmp_path / "fake.c", "fake.o", []),
+                            (tmp_path / "driver.c", "driver.o", [])):
+        _run(["cc", "-std=c99", "-Wall", "-Werror", "-c", *inc, *extra, src, "-o",
+              tmp_path / obj])
+    _run(["cc", *(tmp_path / o for o in ("driver.o", "api.o", "fake.o")), lib, "-lm", "-o",
+          tmp_path / "driver"])
+    rows = [line.split() for line in _run([tmp_path / "driver"]).stdout.splitlines()]
+    non_finite, saturated = int(pm2dof.Status.NON_FINITE), int(pm2dof.Status.SATURATED)
+    assert [r[0] for r in rows] == ["2.5", "6", "-1", "-2", "nan", "inf", "1e+300", "2"]
+    for value, status, tau, changed in rows[:-1]:
+        assert (int(status), float(tau), changed) == (non_finite, 0.0, "0"), value
+    assert (int(rows[-1][1]), float(rows[-1][2]), rows[-1][3]) == (saturated, 3.0, "1")
+
+
 @pytest.mark.skipif(shutil.which("cc") is None, reason="needs a C compiler")
 @pytest.mark.parametrize("name", ["shang2010", "rrr4_platform"])
 def test_the_library_refuses_to_compile_with_fast_math(tmp_path, name):
