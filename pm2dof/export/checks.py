@@ -2,8 +2,8 @@
 """C text for the exported API, generated from the one home of each rule.
 
 * :func:`param_checks` -- a law's ``<law>_first_bad`` (the offset of the first parameter entry
-  that breaks its rule of :data:`pm2dof.control.rules.RULES`, or -1) and the table of the
-  rules' texts that ``<name>_pm2dof_<law>_param_rule`` returns;
+  that breaks its rule of :data:`pm2dof.control.rules.RULES`, or -1) and the rules' texts that
+  ``<name>_pm2dof_<law>_param_rule`` returns;
 * :func:`rules_doc` -- the header's list of a law's rules, one line a field;
 * :func:`status_cases` -- ``<name>_pm2dof_status_string``'s cases, from
   :class:`pm2dof.Status` and the API's own codes;
@@ -44,9 +44,11 @@ def _condition(r, x, bound):
 
 
 def param_checks(law, layout, uname):
-    """(C body of ``static int <law>_first_bad(const real *p)``, C initialiser of the rules'
-    text table) for ``law``'s parameter ``layout`` (a :class:`pm2dof.core.layout.Layout`);
-    ``uname``: the header's prefix (``SHANG2010_PM2DOF``)."""
+    """(C body of ``static int <law>_first_bad(const real *p)``, C body of ``<law>_param_rule
+    (int offset)``: the rule's text of the field holding the offset, string literals only, so
+    the library keeps no table of pointers) for ``law``'s parameter ``layout`` (a
+    :class:`pm2dof.core.layout.Layout`); ``uname``: the header's prefix
+    (``SHANG2010_PM2DOF``)."""
     body, texts = ["    int i;"], []
     for field, size in layout.fields:
         r = rule(law, field)
@@ -56,8 +58,10 @@ def param_checks(law, layout, uname):
         body.append(f"    for (i = 0; i < {size}; i++)   /* {field}: {r.condition} */\n"
                     f"        if (!({cond}))\n            return {off} + i;")
         what = f"{field}: every entry finite and {r.condition}"
-        texts.append(f'    {{{off}, {size}, "{what}"}},')
+        texts.append(f"    if (offset >= {off} && offset < {off} + {size})\n"
+                     f'        return "{what}";')
     body.append("    return -1;")
+    texts.append("    return NULL;")
     return "\n".join(body), "\n".join(texts)
 
 

@@ -260,6 +260,20 @@ def test_the_library_refuses_to_compile_with_fast_math(tmp_path, name):
             flag, r.stderr)
 
 
+@pytest.mark.skipif(shutil.which("cc") is None or shutil.which("nm") is None,
+                    reason="needs a C compiler and nm")
+def test_the_api_holds_no_writable_data(tmp_path):
+    """The API's object, position-independent (where a table of pointers would land in
+    writable .data.rel.ro): code and read-only data only (nm: no d, D, b, B symbol)."""
+    out = export_project("shang2010", tmp_path / "p", controllers=("na", "apd", "ctc", "lqr"))
+    for opt in ("-O0", "-O2"):
+        _run(["cc", "-std=c99", opt, "-fPIC", "-c", "-I", out / "include", "-I", out / "src",
+              out / "src" / "shang2010_pm2dof.c", "-o", tmp_path / "api.o"])
+        symbols = _run(["nm", tmp_path / "api.o"]).stdout.splitlines()
+        assert symbols and not [s for s in symbols if s.split()[-2:-1] in (["d"], ["D"], ["b"],
+                                                                         ["B"])], symbols
+
+
 def test_the_export_record_names_the_model_file_not_the_machines_folders(tmp_path):
     src = pm2dof.load_model()
     shutil.copytree(src.generated, tmp_path / "robots" / "generated" / "shang2010")
