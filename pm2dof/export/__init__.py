@@ -3,6 +3,8 @@
 
 * :mod:`.project` -- :func:`export_project`: the project (generated C copied, API, CMake,
   example, ctest, ``embedded/``);
+* :mod:`.checks` -- the API's parameter checks and status strings, written from
+  :mod:`pm2dof.control.rules` and :class:`pm2dof.Status`;
 * :mod:`.single` -- the generated C rewritten for ``float``, and where float is refused;
 * :mod:`.reference` -- pm2dof's closed loops as C data, what the exported test compares with;
 * :mod:`.embedded` -- ``make embedded``: cross-compile for Cortex-M4F and M7, run under QEMU.

@@ -22,7 +22,7 @@ from ..core.model import load_model
 from ..core.status import Status
 from ..core.task import mechanism
 from ..core.version import __version__
-from . import reference, single
+from . import checks, reference, single
 from .units import export_units
 
 __all__ = ["export_project", "LAWS", "PRECISIONS", "ExportError"]
@@ -42,10 +42,6 @@ _WHAT = {"na": "the NA law (eqs. 14-17, 29) and the update of theta_hat (eq. 28)
          "lqr": "u = S^T (tau_ff - K [xe - xd, v - xd_dot])"}
 _CLASS = {"na": "NAController", "apd": "APDController", "ctc": "CTCController",
           "lqr": "LQRController (its K and tau_ff are inputs of each step)"}
-#: leading gain vectors (of m entries each) that init requires > 0, then NA's Gamma >= 0
-_GAINS = {"na": (2, "p"), "apd": (2, 0), "ctc": (2, 0), "lqr": (0, 0)}
-_GAIN_RULE = {"na": ", Kd and Q > 0, Gamma >= 0", "apd": ", Kp and Kv > 0",
-              "ctc": ", Kp and Kv > 0", "lqr": ""}
 
 
 def _field_docs(u):
@@ -54,6 +50,7 @@ def _field_docs(u):
     fields = {
         "Kd": f"{u.kd}, K_d of eq. 29 (diagonal)", "Q": "1/s, Q of eqs. 15-17 (diagonal)",
         "Gamma": "adaptation gain of eq. 28 (diagonal, theta order)",
+        "freeze_saturated": "1: theta_hat held on a saturated sample, 0: adapt (the paper)",
         "T": "s, sample period", "vel_alpha": "velocity low-pass gain a in (0, 1] (1: none)",
         "sing_threshold": "type I singularity threshold (legs)",
         "parallel_sing_threshold": "type II singularity threshold (actuation)",
@@ -251,7 +248,8 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     out = _prepare_out(out, force)
     sfx = SPLITS[split]
     gen = {law: f"{law}{sfx}_step" for law in laws}
-    sizes = _work_sizes(c_text, name, [*gen.values(), "fk", "ik", "torque_splits",
+    proj = [f"na_proj{sfx}_step"] if "na" in laws else []    # NA's projected law (an option)
+    sizes = _work_sizes(c_text, name, [*gen.values(), *proj, "fk", "ik", "torque_splits",
                                        "plant_step", "measure"])
     lays = {k: Layout(k, v) for k, v in m.manifest["layouts"].items()}
     defaults = _law_params(m)
@@ -261,6 +259,7 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
               "CMAKE_VERSION": ".".join(re.findall(r"\d+", __version__)[:3]) or "0",
               "PRECISION": precision, "REAL": real, "SINGLE": int(precision == "single"),
               "MODEL_FILE": Path(m.spec.path).name, "FORMULATION": m.spec.formulation_sha256[:12],
+              "FORMULATION_SHA256": m.spec.formulation_sha256,
               "N": n, "NQ": 2 * n, "TASK_DIM": dim, "P": p,
               "STATE_SIZE": lays["ctrl_state"].size, "DIAG_SIZE": sum(k for _, k in diag),
               "ARG_SIZE": max(s[0] for s in sizes.values()),
@@ -295,12 +294,12 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
         layout_defines += (f"/* {law}_params: the {law.upper()} controller's parameters */\n"
                            + _layout_defines(uname, law.upper(), lay, docs, law, defaults[law]))
         lqr = law == "lqr"
+        first_bad, rule_texts = checks.param_checks(law, lay, uname)
         v = dict(common, LAW=law, ULAW=law.upper(), GEN=f"{name}_{gen[law]}",
+                 FIRST_BAD=first_bad, RULE_TEXTS=rule_texts,
+                 RULES_DOC=checks.rules_doc(law, lay), **_law_options(law, name, gen, proj, uname),
                  LAW_TITLE=_TITLES[law], LAW_WHAT=_WHAT[law], SPLIT=split, CLASS=_CLASS[law],
                  DEFAULTS_FROM=f"[gains.{law}], [limits], [sensing], [control]",
-                 GAIN_RULE=_GAIN_RULE[law],
-                 N_POSITIVE=_GAINS[law][0] * dim,
-                 N_NONNEGATIVE=p if _GAINS[law][1] == "p" else 0,
                  STEP_DOC=("\n *   K         [LQR_K_SIZE = N_LEGS x 2 TASK_DIM] the sample's gain,"
                            f" row-major,\n *             {units.effort} per [xe - xd "
                            f"({units.pos}),\n *             v - xd_dot ({units.vel})]"
@@ -320,6 +319,7 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
             layout_defines += f"#define {uname}_HAVE_{law.upper()} 0\n"
 
     values = dict(common, THETA_DOC=theta_doc, LAYOUT_DEFINES=layout_defines,
+                  STATUS_CASES=checks.status_cases(uname), STATUS_CODES=checks.status_codes(),
                   STATUS_ENUM="\n".join(f"    {uname}_{s.name} = {int(s)},  /* {s.label} */"
                                         for s in Status),
                   LAW_DECLS="".join(law_decls), LAW_DEFS="".join(law_defs),
@@ -389,7 +389,8 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
         files[rel] = _render(_template(rel + (".in" if rel.endswith((".md", "replay.c"))
                                               else "")), dict(values, LAW_OPS="".join(ops)))
     files["manifest.json"] = json.dumps(_thaw(m.manifest), indent=1, sort_keys=True) + "\n"
-    record = {"pm2dof": __version__, "model": name, "model_file": str(m.spec.path),
+    # the model file's name only: not the exporting machine's folders
+    record = {"pm2dof": __version__, "model": name, "model_file": Path(m.spec.path).name,
               "formulation_sha256": m.spec.formulation_sha256, "precision": precision,
               "controllers": list(laws), "split": split, "move": ref["move"],
               "reference_rmse": dict(zip(ref["laws"], ref["rmse"])),
@@ -403,6 +404,32 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     except OSError as exc:
         raise OutputError(f"cannot write into {out}: {exc.strerror or exc}") from None
     return out
+
+
+def _law_options(law, name, gen, proj, uname):
+    """Render values of what one law has beyond the others: NA's projection (the na_proj
+    step, chosen by the params struct's ``project``), its freeze and how to pause it."""
+    if law != "na":
+        return {"LAW_NOTES": "", "PARAMS_EXTRA": "", "DEFAULTS_EXTRA": "",
+                "SET_PARAMS_NOTE": "", "STEP_FN": f"{name}_{gen[law]}"}
+    return {
+        "LAW_NOTES": (
+            "\n * Options (off by default: the paper's law):\n"
+            " * - params.project = 1: theta_hat is projected after each update onto physical "
+            "values\n *   (alpha_i, gamma_i >= 1e-6 kg m^2, beta_i^2 <= alpha_i gamma_i, "
+            "friction >= 0; the\n *   generated " f"{name}_{proj[0]}" "), as "
+            "pm2dof.NAController(project=True);\n"
+            f" * - params.p[{uname}_NA_FREEZE_SATURATED] = 1 (recommended): theta_hat is held on "
+            "a\n *   saturated sample (the clipped torque is not the law's, and eq. 28 would "
+            "integrate an\n *   error the actuators cannot act on), as "
+            "NAController(freeze_when_saturated=True).\n"
+            " * To pause adaptation without losing the state, set_params with Gamma zero; "
+            "set_params\n * with the former Gamma resumes it."),
+        "PARAMS_EXTRA": ("\n    int project;  /* NA only, not in the layout: nonzero projects "
+                         "theta_hat (see above) */"),
+        "DEFAULTS_EXTRA": "\n    params->project = 0;",
+        "SET_PARAMS_NOTE": "\n * NA: Gamma zero pauses adaptation; the former Gamma resumes it.",
+        "STEP_FN": f"(ctl->params.project ? {name}_{proj[0]} : {name}_{gen[law]})"}
 
 
 def _thaw(obj):
