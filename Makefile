@@ -33,8 +33,10 @@ $(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
 	$(PY) -m pip install --quiet -e '.[dev]'
 	touch $@
 
+# $(STAMP) is order-only: `pip install -e` (the stamp) already compiles every stale library in
+# place, so a newer stamp (pyproject.toml edited) must not compile all twelve again
 define LIB_RULE
-$(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c $(STAMP)
+$(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c | $(STAMP)
 	$(PY) pm2dof/core/build.py $$< $$@
 endef
 $(foreach d,$(MODEL_DIRS),$(eval $(call LIB_RULE,$(d))))

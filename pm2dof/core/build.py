@@ -294,6 +294,10 @@ def _main(argv=None):
     if len(args) != 2:
         print("usage: python -m pm2dof.core.build SOURCE.c OUT.so", file=sys.stderr)
         return 2
+    if library_is_fresh(args[0], args[1]):     # a touched but unchanged C file: nothing to do
+        os.utime(args[1])                       # (newer than the C file again, for make)
+        print(f"{args[1]} is up to date with {args[0]}", flush=True)
+        return 0
     try:
         compile_library(args[0], args[1], progress=lambda msg: print(msg, flush=True))
     except (BuildError, FileNotFoundError) as exc:
