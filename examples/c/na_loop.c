@@ -90,7 +90,8 @@ static const double MOVE_V = 0.5, MOVE_A = 10.0, MOVE_J = 400.0; /* m/s, m/s^2, 
 /* Layout sizes (manifest.json "layouts") */
 enum {
     STATE_SIZE = 2 + 2 + N_THETA,              /* ctrl_state: xe_prev, v, theta_hat */
-    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 4 + 3 * N_LEGS + 1, /* Kd, Q, Gamma, T, vel_alpha,
+    NA_PARAMS_SIZE = 2 + 2 + N_THETA + 1 + 4 + 3 * N_LEGS + 1, /* Kd, Q, Gamma,
+                                                      freeze_saturated, T, vel_alpha,
                                                       sing_threshold, parallel_sing_threshold,
                                                       tau_max, preload_sign, preload,
                                                       closure_tol */
@@ -365,6 +366,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < 2; i++) *pp++ = KD[i];
     for (int i = 0; i < 2; i++) *pp++ = Q[i];
     for (int i = 0; i < N_THETA; i++) *pp++ = GAMMA[i];
+    *pp++ = 0.0;                /* freeze_saturated: 0, adapt on every good sample (eq. 28) */
     *pp++ = T;
     /* velocity estimate v += a ((xe - xe_prev) / T - v): first-order low-pass, a = 1: none */
     *pp++ = VELOCITY_FILTER_HZ > 0.0 ? T / (T + 1.0 / (2.0 * PI * VELOCITY_FILTER_HZ)) : 1.0;
