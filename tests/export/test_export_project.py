@@ -66,8 +66,8 @@ def _run(cmd, **kw):
 @pytest.fixture(scope="module")
 def built(tmp_path_factory):
     root = tmp_path_factory.mktemp("export")
-    export_project("shang2010", root / "shang2010")
-    export_project("fivebar", root / "fivebar", controllers=("na", "apd"))
+    export_project("shang2010", root / "shang2010", measure_stack=False)
+    export_project("fivebar", root / "fivebar", controllers=("na", "apd"), measure_stack=False)
     (root / "CMakeLists.txt").write_text(SUPER)
     build = root / "build"
     # -O0: a quarter of the compile time of -O2, and the same IEEE results (no FMA on
@@ -169,7 +169,7 @@ def test_a_non_empty_out_is_refused_unless_force(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "exists and is not empty" in err and "--force" in err and err.count("\n") == 1, err
     assert sorted(p.name for p in out.iterdir()) == ["mine.c"]
-    assert main(["export", "--out", str(out), "--controllers", "na", "--force"]) == 0
+    assert main(["export", "--out", str(out), "--controllers", "na", "--force", "--no-stack"]) == 0
     record = json.loads((out / "pm2dof_export.json").read_text())
     assert record["controllers"] == ["na"] and (out / "mine.c").is_file()
     with pytest.raises(OutputError):
