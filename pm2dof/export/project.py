@@ -165,11 +165,11 @@ def _work_sizes(c_text, name, functions):
 
 def _generated_calls(api_c, c_text, name):
     """The generated functions (without the ``<name>_`` prefix) that the API source ``api_c``
-    calls, in the order of their first call: those of its ``<name>_<f>(`` calls that are
-    public functions of the generated C."""
+    names (calls, or takes the address of), in the order of their first mention: those of its
+    ``<name>_<f>`` words that are public functions of the generated C."""
     public = set(re.findall(rf"^CASADI_SYMBOL_EXPORT int {name}_(\w+)\(const casadi_real\*\* arg",
                             c_text, re.M))
-    calls = re.findall(rf"\b{name}_(\w+)\s*\(", api_c)
+    calls = re.findall(rf"\b{name}_(\w+)\b", api_c)
     return list(dict.fromkeys(f for f in calls if f in public))
 
 

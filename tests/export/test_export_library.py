@@ -10,6 +10,7 @@ Models: the paper's robot (shang2010), a platform (rrr4_platform, the largest ge
 a platform on linear actuators (prr3_platform) and the paper's robot under gravity
 (shang2010_vertical, whose name is long enough that the API's names share 31 characters).
 """
+import ctypes
 import json
 import re
 import shutil
@@ -115,6 +116,27 @@ def test_the_generated_code_is_pruned_to_what_the_api_calls(exports, name):
     assert len(called) < record["functions"] < record["of_functions"] / 20
 
 
+@pytest.mark.parametrize("name", MODELS)
+def test_the_work_sizes_cover_every_generated_call(exports, name):
+    """The header's work sizes against what each generated function the library calls asks
+    for, read from pm2dof's compiled copy of the generated code through CasADi's public
+    <f>_work (not from the C text the export parses)."""
+    proj, _ = exports[name]
+    header = _header(proj, name)
+    size = {k: int(v) for k, v in re.findall(
+        rf"#define {name.upper()}_PM2DOF_(ARG_SIZE|RES_SIZE|IWORK_SIZE|WORK_SIZE) (\d+)", header)}
+    m = pm2dof.load_model(name)
+    lib = ctypes.CDLL(str(Path(m.generated) / f"lib{name}.so"))
+    entries = json.loads((proj / "pm2dof_export.json").read_text())["generated_entries"]
+    assert {"fk", "ik", "torque_splits", "na_step", "apd_step"} <= set(entries)
+    for f in entries:
+        n = [ctypes.c_longlong() for _ in range(4)]
+        assert getattr(lib, f"{name}_{f}_work")(*map(ctypes.byref, n)) == 0
+        a, r, iw, w = (v.value for v in n)
+        assert (a <= size["ARG_SIZE"] and r <= size["RES_SIZE"] and iw <= size["IWORK_SIZE"]
+                and w <= size["WORK_SIZE"]), (f, a, r, iw, w, size)
+
+
 @needs_cc
 @pytest.mark.parametrize("name", MODELS)
 def test_the_library_defines_only_the_api_distinct_in_31_characters(exports, name):
@@ -124,6 +146,9 @@ def test_the_library_defines_only_the_api_distinct_in_31_characters(exports, nam
     defined = _nm(objs, "-g", "--defined-only")
     assert defined == _declared(_header(proj, name), name)
     assert len({s[:31] for s in defined}) == len(defined), sorted(defined)
+    kinds = {line.split()[-2] for line in _run(["nm", "--defined-only", *objs]).stdout.splitlines()
+             if len(line.split()) == 3}
+    assert kinds <= set("tTrR"), kinds        # code and read-only tables: no writable data
 
 
 def test_a_long_model_name_gets_short_link_names(exports):
@@ -147,6 +172,24 @@ def test_the_header_lists_every_function_the_library_needs(exports, name):
     assert _nm(objs, "-u") - _nm(objs, "--defined-only") == _listed(header)
     said = re.search(r"a compiler may add(.*?)\.", header, re.S).group(1)
     assert all(f in said for f in ("memset", "memcpy", "memmove", "sincos"))
+
+
+@pytest.mark.parametrize("precision", ["double", "single"])
+def test_the_files_deploying_md_lists_are_written(exports, tmp_path, precision):
+    """docs/deploying.md's table of the files an export writes, against an export in each
+    precision (the simulated robot, sim/<name>_sim.c, was missing from a double export)."""
+    page = (Path(pm2dof.__file__).parents[1] / "docs" / "deploying.md").read_text()
+    table = page[page.index("| `include/<name>_pm2dof.h`"):]
+    table = table[:table.index("\n\n")]
+    listed = [p.replace("<name>", "shang2010") for row in table.splitlines()
+              for p in re.findall(r"`([^`]+)`", row.split("|")[1])]
+    assert len(listed) >= 12, listed
+    proj = (exports["shang2010"][0] if precision == "double" else
+            export_project("shang2010", tmp_path / "s", precision="single",
+                           controllers=("na",), measure_stack=False))
+    written = set(json.loads((proj / "pm2dof_export.json").read_text())["files"])
+    for p in listed:
+        assert ((proj / p).is_dir() and any(f.startswith(p) for f in written)) or p in written, p
 
 
 # ---- the stack ------------------------------------------------------------------------------
