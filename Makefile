@@ -10,11 +10,12 @@ OUT    ?= out
 MODEL_DIRS := $(patsubst %/manifest.json,%,$(wildcard pm2dof/generated/*/manifest.json))
 LIBS := $(foreach d,$(MODEL_DIRS),$(d)/lib$(notdir $(d)).so)
 
-.PHONY: install derive derive-all libs test lint docs check-install dist demo bench c-example embedded clean help
+.PHONY: install derive derive-all libs test test-slow lint docs check-install dist demo bench c-example embedded clean help
 
 help:
 	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
 	@echo "make test     set up .venv, build, run the test suite"
+	@echo "make test-slow  the tests marked slow: every shipped study and study bench at full size"
 	@echo "make lint     ruff check pm2dof tests (pyflakes, import order, bugbear; pyproject.toml)"
 	@echo "make derive   re-derive $(MODEL) into pm2dof/generated/<name>/ and compile it (MODEL=path)"
 	@echo "make derive-all  re-derive every shipped model (after a change to pm2dof/derive/)"
@@ -32,8 +33,10 @@ $(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
 	$(PY) -m pip install --quiet -e '.[dev]'
 	touch $@
 
+# $(STAMP) is order-only: `pip install -e` (the stamp) already compiles every stale library in
+# place, so a newer stamp (pyproject.toml edited) must not compile all twelve again
 define LIB_RULE
-$(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c $(STAMP)
+$(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c | $(STAMP)
 	$(PY) pm2dof/core/build.py $$< $$@
 endef
 $(foreach d,$(MODEL_DIRS),$(eval $(call LIB_RULE,$(d))))
@@ -58,6 +61,11 @@ derive-all: $(STAMP)
 # is git-ignored)
 test: install
 	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist loadscope
+
+# the tests marked slow (pyproject.toml deselects them from make test): every shipped study and
+# `pm2dof study bench` at full size, one after the other (each starts a 2-worker Dask cluster)
+test-slow: install
+	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -m slow
 
 # pyflakes (F), import order (I), bugbear (B): [tool.ruff] in pyproject.toml
 lint: $(STAMP)

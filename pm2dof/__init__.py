@@ -52,6 +52,7 @@ from .core.errors import (
     InputFileError,
     ModelFileError,
     ModelMismatchError,
+    MovingStartWarning,
     NonFiniteError,
     NotResetError,
     OutcomeWarning,
@@ -119,7 +120,7 @@ __all__ = [
     "InputFileError",
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError", "TrajectoryError", "GainError", "ModelMismatchError", "BuildError",
-    "OutcomeWarning", "PlanError", "UnsupportedMechanismError", "NotResetError",
+    "OutcomeWarning", "MovingStartWarning", "PlanError", "UnsupportedMechanismError", "NotResetError",
     # layer 3 (imported on first use)
     *_LAZY,
 ]

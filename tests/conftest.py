@@ -343,6 +343,7 @@ _SHARED_UNITS = dict.fromkeys(("tests/derive/test_generated.py",
 #: starting last while the other worker idles; a stale list only costs time, never a test.
 _LONGEST_FIRST = (
     "derivations",                                          # (51)
+    "tests/bench/test_bench_kinds.py",                      # (14; 48 on a loaded machine)
     "tests/studies/test_studies_cluster.py",                # (32)
     "tests/figures/test_figures_layout.py",                 # (21)
     "tests/core/test_install_paths.py",                     # (16)

@@ -176,7 +176,9 @@ def test_plan_csv_writes_shortest_decimals_and_json_names_the_unit(tmp_path):
     assert any(len(f) < 17 for f in fields)
     res, _ = plan_paths(m, [NamedPath("line", path, None, None)], grid=100)
     row = res["paths"][0]
-    assert "tau_peak" not in row["min_norm"] and len(row["min_norm"]["tau_peak_N_m"]) == 3
+    # the unit-free name, with the unit in `units` (N for a linear actuator), beside the old key
+    assert row["min_norm"]["tau_peak"] == row["min_norm"]["tau_peak_N_m"]
+    assert len(row["min_norm"]["tau_peak"]) == 3 and res["units"]["tau_peak"] == ["N m"] * 3
 
 
 def test_save_and_out_both_create_missing_folders(tmp_path, capsys):

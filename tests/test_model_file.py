@@ -711,6 +711,28 @@ def test_every_shipped_model_file_loads():
         check_spec_invariants(read_model_file(path), str(path))
 
 
+def test_the_friction_comments_say_the_sign_the_code_uses():
+    """A shipped model file that comments "sign(0) = ..." on its friction law says what the
+    generated friction does at rest: S^T f_a(S xed) at xed = 0 is 0 with sign(0) = 0 and the
+    limit from above, S^T fc, with sign(0) = +1 (shang2010_vertical.toml said +1; the code
+    gives 0)."""
+    checked = []
+    for path in sorted(SHIPPED_MODELS.glob("*.toml")):
+        said = re.findall(r"sign\(0\) = ([-+]?\d)", path.read_text())
+        if not said:
+            continue
+        m = pm2dof.load_model(path)
+        q = m.ik(m.spec.trajectories["low"]["start"])
+        at_rest = m.StF(q, np.zeros(m.dof), m.theta_nominal)
+        from_above = m.StF(q, np.full(m.dof, 1e-12), m.theta_nominal)
+        assert np.abs(from_above).max() > 0.1, (path.name, from_above)
+        for value in said:
+            want = 0 * from_above if int(value) == 0 else from_above
+            assert np.abs(at_rest - want).max() < 1e-9, (path.name, value, at_rest)
+        checked.append(path.stem)
+    assert {"shang2010", "shang2010_vertical", "fivebar"} <= set(checked), checked
+
+
 # --------------------------------------------------------------------------------------
 # Generated code: missing or stale -> StaleGeneratedCodeError ("pm2dof derive ...")
 # --------------------------------------------------------------------------------------

@@ -373,7 +373,8 @@ def _projection_case(rng):
     xe_prev = XE + rng.normal(0, 1e-3, 2)
     state = lays["ctrl_state"].pack(xe_prev=xe_prev, v=rng.normal(0, 0.2, 2), theta_hat=theta)
     params = lays["na_params"].pack(Kd=[195.0, 195.0], Q=[280.0, 280.0],
-                                    Gamma=rng.uniform(0, 0.02, P), T=0.002, vel_alpha=1.0,
+                                    Gamma=rng.uniform(0, 0.02, P), freeze_saturated=0.0,
+                                    T=0.002, vel_alpha=1.0,
                                     sing_threshold=THR, parallel_sing_threshold=THR,
                                     tau_max=np.full(N, 1e3), preload_sign=np.ones(N),
                                     preload=np.zeros(N), closure_tol=M.closure_tolerance)

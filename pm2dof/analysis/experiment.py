@@ -1,15 +1,19 @@
 # The paper's experiment (Sect. 5): Table 3 in simulation, the Gamma = 0 ablation, repeated runs.
+import math
+
 import numpy as np
 
 from ..control.controllers import APDController, CTCController, NAController
 from ..control.plant import theta_truth
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
+from ..core.errors import ArgumentError
 from ..infra.progress import bar
 
-__all__ = ["PAPER_TABLE3", "is_paper_robot", "table3", "table3_json", "seeded_table3",
+__all__ = ["PAPER_TABLE3", "is_paper_robot", "table3", "table3_json", "phi_rmse", "seeded_table3",
            "format_table3",
-           "run_table3", "repeated_runs", "sensitivity", "format_sensitivity"]
+           "run_table3", "repeated_runs", "sensitivity", "sensitivity_variants",
+           "nominal_truth", "format_sensitivity"]
 
 # Table 3 of the paper: RMSE measured on the real robot, m; RPE in percent
 PAPER_TABLE3 = {"low": {"apd_rmse": 1.3738e-4, "na_rmse": 8.4625e-5, "rpe_percent": 38.40},
@@ -38,6 +42,8 @@ def rpe(apd_rmse, na_rmse):
 
 #: the model-based controllers ``table3(include=...)`` can add (issue 21), with Tables 1-2
 EXTRA_CONTROLLERS = ("ctc", "lqr")
+#: each controller's column heading in the text table
+LABELS = {"apd": "APD", "na": "NA", "na_no_adaptation": "NA G=0"}
 
 
 def _extra_controller(model, name, traj, kw):
@@ -72,7 +78,6 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, include
     speeds = list(line_moves(model)) if speeds is None else speeds
     unknown = sorted(set(include) - set(EXTRA_CONTROLLERS))
     if unknown:
-        from ..core.errors import ArgumentError
         raise ArgumentError(f"include: unknown controller(s) {unknown}; choose from "
                             f"{list(EXTRA_CONTROLLERS)}")
     out = {}
@@ -93,25 +98,52 @@ def table3(model, speeds=None, quantise=True, progress=None, truth=None, include
     return out
 
 
+def phi_rmse(r):
+    """RMSE of a platform's orientation phi over the samples of the move, rad:
+    sqrt(1/N sum_k (phi_d,k - phi_k)^2), the angle beside eq. 41's position (which leaves it
+    out, another unit); None for a point end effector, ``inf`` for a run that did not
+    complete (as :attr:`SimResult.rmse`)."""
+    if r.xd.shape[1] < 3:
+        return None
+    if r.outcome != "completed":
+        return math.inf
+    e = r.e[:r.n_move, 2]
+    return float(np.sqrt(np.mean(e * e)))
+
+
 def table3_json(results):
-    """The numbers of :func:`table3`: RMSE in m, RPE in percent, duration in s."""
+    """The numbers of :func:`table3`: RMSE in m, RPE in percent, duration in s; for a platform
+    also each controller's ``<name>_phi_rmse`` (:func:`phi_rmse`, rad). Each move's ``units``
+    names the unit of every number (``trajectory_duration`` is ``trajectory_duration_s``
+    without the unit in its name; both are kept)."""
     out = {}
     for speed, runs in results.items():
         r = runs["na"]
+        names = ["apd", "na", "na_no_adaptation", *(x for x in EXTRA_CONTROLLERS if x in runs)]
+        duration = float(r.t[r.n_move - 1])
         out[speed] = {
             "apd_rmse": runs["apd"].rmse,
             "na_rmse": r.rmse,
             "na_no_adaptation_rmse": runs["na_no_adaptation"].rmse,
             "rpe_percent": rpe(runs["apd"].rmse, r.rmse),
             **{f"{x}_rmse": runs[x].rmse for x in EXTRA_CONTROLLERS if x in runs},
-            "trajectory_duration_s": float(r.t[r.n_move - 1]),
+            "trajectory_duration_s": duration,
             "samples": r.n_move,
             "saturated_samples": {k: v.n_saturated for k, v in runs.items()},
             "singular_samples": {k: v.n_singular for k, v in runs.items()},
         }
+        platform = r.xd.shape[1] == 3
+        if platform:
+            out[speed].update({f"{x}_phi_rmse": phi_rmse(runs[x]) for x in names})
         failed = {k: v.outcome_message for k, v in runs.items() if v.outcome != "completed"}
         if failed:  # a run that left the workspace or diverged: its RMSE is inf (JSON: null)
             out[speed]["outcomes"] = failed
+        out[speed]["trajectory_duration"] = duration
+        out[speed]["units"] = {**{f"{x}_rmse": "m" for x in names}, "rpe_percent": "%",
+                               **({f"{x}_phi_rmse": "rad" for x in names} if platform else {}),
+                               "trajectory_duration": "s", "trajectory_duration_s": "s",
+                               "samples": "1", "saturated_samples": "1",
+                               "singular_samples": "1"}
     return out
 
 
@@ -167,6 +199,14 @@ def format_table3(numbers, paper=True):
                         f"{cell(measured.get('rpe_percent'), 8, '.2f')}%" if paper else "")
                      + "".join(f" | {cell(r[f'{x}_rmse'], 11, '.4e', 'failed')}" for x in extra))
         failed += [f"  {speed} {k}: {msg}" for k, msg in r.get("outcomes", {}).items()]
+    phi = [x for x in ("apd", "na", "na_no_adaptation", *extra)
+           if all(f"{x}_phi_rmse" in r for r in numbers.values())]
+    if phi:             # a platform: its orientation, beside eq. 41's position
+        lines.append(f"RMSE of the platform's orientation phi, rad, simulated:\n{'speed':6s} "
+                     + " ".join(f"{LABELS.get(x, x.upper()) + ' sim':>11s}" for x in phi))
+        for speed, r in numbers.items():
+            lines.append(f"{speed:6s} " + " ".join(cell(r[f"{x}_phi_rmse"], 11, ".4e", "failed")
+                                                  for x in phi))
     lines.append("RPE = 100 (APD - NA) / APD: positive when NA tracks better.")
     if extra:
         lines.append("CTC: computed torque, LQR: time-varying LQR along the move; both with "
@@ -231,28 +271,51 @@ def repeated_runs(model, speed="high", runs=20, quantise=True, progress=None):
             "theta_truth": theta_truth(model), "theta0": ctrl.theta0.copy()}
 
 
-def _nominal_truth(model):
-    """A plant whose truth is exactly the controllers' nominal model (no payload, no Stribeck)."""
-    from ..control.plant import plant_truth
-    n = model.n_legs
-    th = model.theta_nominal
-    base = plant_truth(model)
-    return {**base, "alpha": th[0:n], "beta": th[n:2 * n], "gamma": th[2 * n:3 * n],
-            "fv": th[3 * n:4 * n], "fc": th[4 * n:5 * n], "fs": np.zeros(n)}
+def nominal_truth(model):
+    """A plant whose truth is the controllers' nominal model: every parameter of
+    ``model.theta_nominal`` set by its name (``model.param_names``: alpha_i, beta_i, gamma_i,
+    kappa_i under gravity, a platform's m_p, mx_p, my_p, I_p, fv_i, fc_i, fs_i), no payload and
+    no Stribeck excess beyond the nominal model's; the rest of ``[plant]`` (the Stribeck
+    velocity, the Coulomb smoothing of the plant's sign) as the model file gives it.
+
+    Returns
+    -------
+    dict
+        A plant truth as :func:`pm2dof.plant_truth` returns it (``simulate(..., truth=...)``).
+    """
+    from ..control.plant import _param_index, plant_truth
+    truth = {k: np.array(v, dtype=float) for k, v in plant_truth(model, payload_mass=0.0).items()}
+    truth["fs"] = np.zeros(model.n_legs)
+    for (field, i), value in zip(_param_index(model.param_names), model.theta_nominal):
+        if field not in truth:
+            raise ArgumentError(f"model {model.name!r}: parameter {field!r} of theta has no "
+                                f"field in the plant's truth (fields {sorted(truth)})")
+        if truth[field].ndim:
+            truth[field][i] = value
+        else:
+            truth[field] = np.array(value, dtype=float)
+    return truth
+
+
+def sensitivity_variants(model):
+    """The variants of :func:`sensitivity`: a list of (label, keyword arguments of
+    :func:`table3`)."""
+    fc = model.spec.sensing["velocity_filter_hz"]
+    return [(f"model file (velocity filter {fc:g} Hz)", {}),
+            ("velocity filter 100 Hz", {"velocity_filter_hz": 100.0}),
+            ("velocity filter 300 Hz", {"velocity_filter_hz": 300.0}),
+            ("exact encoders", {"quantise": False}),
+            ("plant truth = nominal model", {"truth": nominal_truth(model)})]
 
 
 def sensitivity(model):
-    """Table 3 under other assumptions of the simulation (what the ranking depends on).
+    """Table 3 under other assumptions of the simulation (what the ranking depends on): the
+    variants of :func:`sensitivity_variants`.
 
     Returns a list of (label, table3_json numbers).
     """
-    fc = model.spec.sensing["velocity_filter_hz"]
-    variants = [(f"model file (velocity filter {fc:g} Hz)", {}),
-                ("velocity filter 100 Hz", {"velocity_filter_hz": 100.0}),
-                ("velocity filter 300 Hz", {"velocity_filter_hz": 300.0}),
-                ("exact encoders", {"quantise": False}),
-                ("plant truth = nominal model", {"truth": _nominal_truth(model)})]
-    return [(label, table3_json(table3(model, **kw))) for label, kw in variants]
+    return [(label, table3_json(table3(model, **kw)))
+            for label, kw in sensitivity_variants(model)]
 
 
 def format_sensitivity(rows):

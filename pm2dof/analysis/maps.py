@@ -15,6 +15,15 @@ r_mm >= r_mn always; their ratio is the gain from using the redundancy properly.
 rest for accelerations, xedd = Me^-1 f (eq. 12 with xed = 0, friction aside): the zonotope's
 generators become Me^-1 s_i tau_max,i and the min-norm rows (P Me)_i.
 
+Under gravity (``[model] gravity``, a robot in a vertical plane) part of tau_max holds the
+robot up: at rest S^T tau = f + Ge (eq. 10, Ge the gravity term), so the forces left for the
+task are Z - Ge, and the largest ball about the origin inside them is the largest ball about
+Ge inside Z: r_mm = min_j (h(n_j) - |n_j . Ge|) over the facet normals n_j (h the support
+function). With the minimum-norm split the holding torque tau_g = P Ge is taken off each
+actuator's limit: r_mn = min_i (tau_max,i - |tau_g,i|) / |P_i|. Accelerations at rest alike,
+with the centre Me^-1 Ge. Where the actuators cannot even hold the robot, both are 0 (and
+their ratio is not defined: NaN). A horizontal robot (Ge = 0) is computed exactly as before.
+
 In a task space of m = 3 (a platform: force x, y and moment phi, N and N m) the zonotope's
 facets are spanned by pairs of generators, with normals g_i x g_j (as the generated min-max
 split, derive/splits.py); the radius is then that of the largest ball in the (x, y, phi)
@@ -29,7 +38,7 @@ from ..core.errors import ArgumentError, WorkspaceError
 from ..infra.progress import bar
 
 __all__ = ["zonotope_inradius", "min_norm_radius", "capability", "workspace_maps",
-           "maps_summary", "format_maps_summary", "map_orientation", "FIELDS",
+           "field_units", "maps_summary", "format_maps_summary", "map_orientation", "FIELDS",
            "RESOLUTION_MIN", "RESOLUTION_MAX"]
 
 #: grid points per axis of a map: 1001^2 poses take about 100 s and ~1 GB
@@ -37,8 +46,9 @@ RESOLUTION_MIN, RESOLUTION_MAX = 5, 1001
 
 # quantity -> (unit, description); every map of workspace_maps has these keys
 FIELDS = {
-    "type1": ("1", "type I measure min_i |sin(qb_i - qa_i)|"),
-    "type2": ("1", "type II measure sigma_min(S, unit rows) / sqrt(n/2)"),
+    # each kind's measure (an RRR leg's |sin(qb_i - qa_i)|, ...): Model.singularity_kinds
+    "type1": ("1", "type I measure, min over the legs of each kind's"),
+    "type2": ("1", "type II measure of the point's or the platform's actuation"),
     "cond_StS": ("1", "condition number of S^T S"),
     "force_min_norm": ("N", "largest task force in every direction, min-norm split (eq. 21)"),
     "force_min_max": ("N", "largest task force in every direction, min-max split"),
@@ -47,6 +57,19 @@ FIELDS = {
     "accel_min_max": ("m/s^2", "largest acceleration at rest in every direction, min-max"),
     "accel_ratio": ("1", "accel_min_max / accel_min_norm"),
 }
+
+
+def field_units(model):
+    """The unit of every :data:`FIELDS` map of ``model``: as :data:`FIELDS` for a point end
+    effector; a platform's force and acceleration maps are balls in (x, y, phi) taken alike,
+    "N, N m (phi)" and "m/s^2, rad/s^2 (phi)"."""
+    units = {k: u for k, (u, _) in FIELDS.items()}
+    if model.dof == 3:
+        for k in ("force_min_norm", "force_min_max"):
+            units[k] = "N, N m (phi)"
+        for k in ("accel_min_norm", "accel_min_max"):
+            units[k] = "m/s^2, rad/s^2 (phi)"
+    return units
 
 
 def _facet_normals(G):
@@ -64,12 +87,14 @@ def _facet_normals(G):
     return N[keep] / size[keep, None]       # a parallel pair spans no facet (rounding noise)
 
 
-def zonotope_inradius(G):
-    """Radius of the largest origin-centred circle (ball, in 3-D) inside the zonotope
+def zonotope_inradius(G, centre=None):
+    """Radius of the largest circle (ball, in 3-D) about ``centre`` inside the zonotope
     sum_i [-1, 1] g_i.
 
-    ``G`` (n, m), m = 2 or 3: the generators g_i as rows. Zero for n < m or rank < m (the
-    zonotope is flat).
+    ``G`` (n, m), m = 2 or 3: the generators g_i as rows. ``centre`` (m,), default the origin:
+    the radius is then min_j (h(n_j) - |n_j . centre|) over the unit facet normals n_j (h the
+    support function, the zonotope being symmetric about the origin), and 0 when ``centre`` is
+    outside. Zero for n < m or rank < m (the zonotope is flat).
     """
     G = np.asarray(G, dtype=float)
     G = G[np.linalg.norm(G, axis=1) > 0]
@@ -79,15 +104,22 @@ def zonotope_inradius(G):
     if len(perp) == 0:
         return 0.0
     support = np.abs(G @ perp.T).sum(axis=0)                         # h(perp_j) = sum_i |g_i.n_j|
-    return float(support.min())
+    if centre is not None:
+        support = support - np.abs(perp @ np.asarray(centre, dtype=float))
+    return max(float(support.min()), 0.0)
 
 
-def min_norm_radius(P, tau_max):
-    """Largest |f| with |(P f)_i| <= tau_max,i for every direction of f: min_i tau_max,i/|P_i|
-    (``P`` (n, m))."""
+def min_norm_radius(P, tau_max, tau_hold=None):
+    """Largest |f| with |(P f)_i + tau_hold,i| <= tau_max,i for every direction of f:
+    min_i (tau_max,i - |tau_hold,i|) / |P_i| (``P`` (n, m); ``tau_hold`` (n,), default 0, the
+    torques already spent, e.g. holding the robot against gravity); 0 when some
+    |tau_hold,i| >= tau_max,i."""
     P = np.asarray(P, dtype=float)
     norms = np.hypot(P[:, 0], P[:, 1]) if P.shape[1] == 2 else np.linalg.norm(P, axis=1)
-    return float(np.min(np.asarray(tau_max, dtype=float) / norms))
+    room = np.asarray(tau_max, dtype=float)
+    if tau_hold is not None:
+        room = room - np.abs(np.asarray(tau_hold, dtype=float))
+    return max(float(np.min(room / norms)), 0.0)
 
 
 def _unchecked(model, short, shape, *args):
@@ -100,7 +132,8 @@ def _unchecked(model, short, shape, *args):
 
 def capability(model, q, theta=None, tau_max=None):
     """Force and acceleration capability at the pose ``q`` (2n,), also inside the singularity
-    thresholds (the measure of a map, not a controller's pose).
+    thresholds (the measure of a map, not a controller's pose). Under gravity, what is left of
+    tau_max once the robot is held at rest at ``q`` (the module docstring).
 
     Parameters
     ----------
@@ -117,7 +150,8 @@ def capability(model, q, theta=None, tau_max=None):
     -------
     dict
         force_min_norm, force_min_max (N), accel_min_norm, accel_min_max (m/s^2, at rest,
-        with Me of ``theta``) and cond_StS.
+        with Me and, under gravity, Ge of ``theta``), their ratios (NaN where the min-norm
+        value is 0) and cond_StS.
     """
     theta = model.theta_nominal if theta is None else theta
     w = np.asarray(model.spec.limits["tau_max"] if tau_max is None else tau_max, dtype=float)
@@ -128,13 +162,18 @@ def capability(model, q, theta=None, tau_max=None):
     StS = S.T @ S
     P = S @ np.linalg.inv(StS)                     # eq. 21: tau = S (S^T S)^-1 f
     Mi = np.linalg.inv(Me)
-    f_mm = zonotope_inradius(S * w[:, None])
-    f_mn = min_norm_radius(P, w)
-    a_mm = zonotope_inradius((S @ Mi) * w[:, None])  # generators Me^-1 s_i tau_max,i (Me sym.)
-    a_mn = min_norm_radius(P @ Me, w)
+    Ge = hold = Ge_a = None
+    if model.spec.has_gravity:                     # at rest: S^T tau = f + Ge (eq. 10)
+        Ge = _unchecked(model, "Ge", (m,), q, np.ascontiguousarray(theta, dtype=float))
+        hold, Ge_a = P @ Ge, Mi @ Ge               # the min-norm holding torque; Me^-1 Ge
+    f_mm = zonotope_inradius(S * w[:, None], Ge)
+    f_mn = min_norm_radius(P, w, hold)
+    a_mm = zonotope_inradius((S @ Mi) * w[:, None], Ge_a)  # generators Me^-1 s_i tau_max,i
+    a_mn = min_norm_radius(P @ Me, w, hold)
     return {"cond_StS": float(np.linalg.cond(StS)), "force_min_norm": f_mn,
-            "force_min_max": f_mm, "force_ratio": f_mm / f_mn, "accel_min_norm": a_mn,
-            "accel_min_max": a_mm, "accel_ratio": a_mm / a_mn}
+            "force_min_max": f_mm, "force_ratio": f_mm / f_mn if f_mn > 0 else np.nan,
+            "accel_min_norm": a_mn, "accel_min_max": a_mm,
+            "accel_ratio": a_mm / a_mn if a_mn > 0 else np.nan}
 
 
 def _reach_box(leg):
@@ -255,10 +294,23 @@ def _stats(a):
     return {"min": float(a.min()), "median": float(np.median(a)), "max": float(a.max())}
 
 
+def _worst(key, values):
+    """The worst of a quantity over a move's poses: the largest cond(S^T S), else the smallest
+    value; NaN (a ratio where the robot cannot be held) left out, None when all are."""
+    v = np.asarray(values, dtype=float)
+    v = v[np.isfinite(v)]
+    if v.size == 0:
+        return None
+    return float(v.max() if key == "cond_StS" else v.min())
+
+
 def maps_summary(model, maps, theta=None, tau_max=None):
-    """Numbers of :func:`workspace_maps`: the reachable area, the min/median/max of every map
+    """Numbers of :func:`workspace_maps`: the reachable area (``reachable_area``, also under its
+    former name ``reachable_area_m2``, m^2; ``clear_area`` alike), the min/median/max of every map
     over the poses clear of both singularity thresholds, and every quantity along each move
-    of ``[trajectories]`` (its worst value on the path, 201 points)."""
+    of ``[trajectories]`` (its worst value on the path, 201 points). Under gravity also
+    ``gravity`` (m/s^2, the model file's): the force and acceleration maps are then what the
+    limits leave once the robot is held at rest."""
     from ..control.trajectory import line_moves, model_move
     dx, dy = maps["x"][1] - maps["x"][0], maps["y"][1] - maps["y"][0]
     clear = (maps["reachable"] & (maps["type1"] >= model.singularity_threshold)
@@ -270,7 +322,13 @@ def maps_summary(model, maps, theta=None, tau_max=None):
                "clear_area_m2": float(clear.sum() * dx * dy),
                "over_clear_workspace": {k: _stats(np.where(clear, maps[k], np.nan))
                                         for k in FIELDS},
-               "units": {k: u for k, (u, _) in FIELDS.items()}, "moves": {}}
+               "units": field_units(model), "moves": {}}
+    summary["reachable_area"] = summary["reachable_area_m2"]      # the same, without the unit
+    summary["clear_area"] = summary["clear_area_m2"]              # in the key (units: m^2)
+    summary["units"].update(reachable_area="m^2", clear_area="m^2", reachable_area_m2="m^2",
+                            clear_area_m2="m^2", grid="m (x, y), rad (phi)")
+    if model.spec.has_gravity:      # force and acceleration: what is left once it is held up
+        summary["gravity"] = list(model.spec.gravity)
     for speed in line_moves(model):
         xd = model_move(model, speed).xd
         pts = xd[np.linspace(0, len(xd) - 1, 201).astype(int)]
@@ -281,8 +339,7 @@ def maps_summary(model, maps, theta=None, tau_max=None):
             vals["type2"].append(t2)
             for key, v in capability(model, model.ik(p), theta, tau_max).items():
                 vals[key].append(v)
-        worst = {k: float(np.max(v)) if k == "cond_StS" else float(np.min(v))
-                 for k, v in vals.items()}
+        worst = {k: _worst(k, v) for k, v in vals.items()}
         summary["moves"][speed] = {"start": pts[0].tolist(), "end": pts[-1].tolist(),
                                    "worst_on_path": worst}
     return summary
@@ -291,17 +348,23 @@ def maps_summary(model, maps, theta=None, tau_max=None):
 def format_maps_summary(summary):
     """A text table of :func:`maps_summary`."""
     phi = summary["grid"].get("phi")
+    uw = max(6, *(len(summary["units"][k]) for k in summary["over_clear_workspace"]))
     lines = [f"reachable area {summary['reachable_area_m2']:.4f} m^2, clear of both singularity "
              f"thresholds {summary['clear_area_m2']:.4f} m^2"
              + ("" if phi is None else f" (the platform at phi = {phi:g} rad)"),
-             f"{'quantity':16s} {'unit':6s} {'min':>10s} {'median':>10s} {'max':>10s}   "
+             f"{'quantity':16s} {'unit':{uw}s} {'min':>10s} {'median':>10s} {'max':>10s}   "
              + "   ".join(f"worst on {s}" for s in summary["moves"])]
     for k, st in summary["over_clear_workspace"].items():
         cols = [f"{st[c]:10.4g}" if st[c] is not None else f"{'-':>10s}"
                 for c in ("min", "median", "max")]
         path = "   ".join(f"{m['worst_on_path'][k]:>{len(s) + 9}.4g}"
+                           if m["worst_on_path"][k] is not None else f"{'-':>{len(s) + 9}s}"
                            for s, m in summary["moves"].items())
-        lines.append(f"{k:16s} {summary['units'][k]:6s} {' '.join(cols)}   {path}")
+        lines.append(f"{k:16s} {summary['units'][k]:{uw}s} {' '.join(cols)}   {path}")
     lines.append("min/median/max over the grid points clear of both thresholds; worst on a move: "
                  "its largest cond(S^T S), else its smallest value")
+    if summary.get("gravity") is not None:
+        lines.append(f"gravity {summary['gravity']} m/s^2: force and acceleration are what "
+                     f"tau_max leaves once the actuators hold the robot at rest at each pose "
+                     f"(0 where they cannot)")
     return "\n".join(lines)

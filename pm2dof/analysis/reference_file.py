@@ -17,12 +17,13 @@ Any other column is refused (a misspelt ``x_dd`` would otherwise be silently dif
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.simulate import check_trajectory, simulate
+from ..control.simulate import check_trajectory, moving_start, simulate
 from ..control.trajectory import Trajectory, TrajectoryError
 from ..core.errors import InputFileError, SingularityError, WorkspaceError
 from ..core.model import require_model
+from ..core.task import effort_unit
 from ..infra.tables import read_columns
-from .experiment import _extra_controller
+from .experiment import _extra_controller, phi_rmse
 
 __all__ = ["read_trajectory", "ReferenceFileError", "TASK_COLUMNS", "PERIOD_TOLERANCE",
            "simulate_reference", "reference_summary", "format_reference_summary", "LAWS"]
@@ -122,7 +123,7 @@ def read_trajectory(path):
     >>> traj.xd.shape, traj.period
     ((3, 2), 0.002)
     """
-    _, cols = read_columns(path, ReferenceFileError)
+    _, cols = read_columns(path, ReferenceFileError, "a reference")
     names = _task(path, cols)
     T = _grid(path, cols["t"])
     levels = [np.stack([cols[c] for c in names], axis=1)]
@@ -162,7 +163,9 @@ def simulate_reference(model, path, laws=("na", "apd"), *, split=None, settle_ti
     Raises
     ------
     ReferenceFileError
-        The file cannot be read, or its task coordinates or time step are not the model's.
+        The file cannot be read, its task coordinates or time step are not the model's, or it
+        does not start at rest (:func:`pm2dof.control.simulate.moving_start`: the simulated
+        robot does).
     """
     require_model(model)
     unknown = [x for x in laws if x not in LAWS]
@@ -182,6 +185,10 @@ def simulate_reference(model, path, laws=("na", "apd"), *, split=None, settle_ti
         check_trajectory(model, traj)
     except (TrajectoryError, WorkspaceError, SingularityError) as exc:
         raise type(exc)(f"{path}: {exc}") from None
+    moving = moving_start(traj, model.task_names)
+    if moving is not None:  # the robot starts at rest: a file must too (docs/reference-format.md)
+        raise ReferenceFileError(f"{path}: {moving}; start the reference at rest (or simulate "
+                                 f"it with pm2dof.simulate, which warns)")
     kw = {} if split is None else {"split": split}
     out = {}
     for law in laws:
@@ -191,28 +198,46 @@ def simulate_reference(model, path, laws=("na", "apd"), *, split=None, settle_ti
     return out
 
 
-def reference_summary(results):
-    """The numbers of :func:`simulate_reference`, {law: {...}}: ``rmse_m`` (eq. 41, position),
-    ``max_error_m`` (largest position error), ``max_phi_error_rad`` (a platform), ``peak_tau``
-    and the status counts, ``samples``, ``outcome`` (SimResult's, with its message)."""
+def reference_summary(results, model=None):
+    """The numbers of :func:`simulate_reference`, {law: {...}}: ``rmse`` (eq. 41, position, m),
+    ``max_error`` (largest position error, m), for a platform ``phi_rmse`` and
+    ``max_phi_error`` (rad), ``peak_tau`` (N m, N for a linear actuator) and the status counts,
+    ``samples``, ``outcome`` (SimResult's, with its message), and ``units`` naming the unit of
+    each. The former keys ``rmse_m``, ``max_error_m``, ``max_phi_error_rad`` are kept beside
+    them. ``model`` (the simulated one) gives ``peak_tau``'s unit by the actuators' kind."""
+    effort = ("N m (revolute actuators), N (linear actuators)" if model is None
+              else effort_unit(model))
     out = {}
     for law, r in results.items():
         e = r.e[:r.n_move]
-        row = {"rmse_m": r.rmse, "max_error_m": float(np.max(np.hypot(e[:, 0], e[:, 1]))),
+        err = float(np.max(np.hypot(e[:, 0], e[:, 1])))
+        row = {"rmse_m": r.rmse, "max_error_m": err,
                "peak_tau": r.peak_tau, "n_saturated": r.n_saturated,
                "n_singular": r.n_singular, "samples": r.n_move, "outcome": r.outcome,
-               "outcome_message": r.outcome_message}
+               "outcome_message": r.outcome_message, "rmse": r.rmse, "max_error": err}
+        units = {"rmse": "m", "max_error": "m", "rmse_m": "m", "max_error_m": "m",
+                 "peak_tau": effort, "n_saturated": "1", "n_singular": "1", "samples": "1"}
         if e.shape[1] == 3:
-            row["max_phi_error_rad"] = float(np.max(np.abs(e[:, 2])))
+            row["max_phi_error_rad"] = row["max_phi_error"] = float(np.max(np.abs(e[:, 2])))
+            row["phi_rmse"] = phi_rmse(r)
+            units.update(max_phi_error_rad="rad", max_phi_error="rad", phi_rmse="rad")
+        row["units"] = units
         out[law] = row
     return out
 
 
 def format_reference_summary(summary):
     """:func:`reference_summary` as the table ``pm2dof simulate`` prints."""
-    lines = [f"{'law':5s} {'RMSE m':>11s} {'max err m':>11s} {'peak tau':>9s} {'saturated':>9s}  "
-             f"outcome"]
+    phi = all("phi_rmse" in r for r in summary.values()) and bool(summary)
+    lines = [f"{'law':5s} {'RMSE m':>11s} {'max err m':>11s} "
+             + (f"{'phi RMSE rad':>12s} " if phi else "")
+             + f"{'peak tau':>9s} {'saturated':>9s}  outcome"]
     for law, r in summary.items():
-        lines.append(f"{law:5s} {r['rmse_m']:11.4e} {r['max_error_m']:11.4e} "
-                     f"{r['peak_tau']:9.4g} {r['n_saturated']:9d}  {r['outcome_message']}")
+        lines.append(f"{law:5s} {r['rmse']:11.4e} {r['max_error']:11.4e} "
+                     + (f"{r['phi_rmse']:12.4e} " if phi else "")
+                     + f"{r['peak_tau']:9.4g} {r['n_saturated']:9d}  {r['outcome_message']}")
+    units = {r["units"]["peak_tau"] for r in summary.values()}
+    if units:
+        lines.append(f"RMSE: eq. 41 (the position); peak tau: the largest |tau_i|, "
+                     f"{', '.join(sorted(units))}.")
     return "\n".join(lines)

@@ -5,8 +5,98 @@ import time
 
 import numpy as np
 
-__all__ = ["reference_geometry", "operating_point", "random_cases", "c_step", "lambdify_step",
-           "long_trajectory"]
+from ..core.errors import Pm2dofError, UnsupportedMechanismError
+from ..core.model_file import is_friction_param
+from ..core.task import is_rr_point, mechanism
+
+__all__ = ["reference_geometry", "reference_problem", "lambdify_problem", "peer_problem",
+           "friction_free", "theta_by_name", "operating_point", "random_cases", "c_step",
+           "lambdify_step", "long_trajectory"]
+
+#: the friction law the NumPy reference writes (eq. 2, sign(0) = 0)
+REFERENCE_FRICTION = "coulomb_viscous"
+
+
+def reference_problem(model):
+    """Why the NumPy reference (:mod:`pm2dof.reference`) cannot compute ``model``'s NA step, or
+    None when it can: that formulation is the paper's (RR legs meeting at a point, no
+    gravity, theta = (alpha, beta, gamma, fv, fc) per leg under eq. 2's sign friction), and
+    its flat vectors must be the model's, field by field."""
+    from ..reference.control import layouts
+    from ..reference.model import Geometry
+    try:
+        Geometry.of_model(model)
+    except UnsupportedMechanismError as exc:
+        return str(exc)
+    n = model.n_legs
+    want = tuple(f"{k}{i + 1}" for k in ("alpha", "beta", "gamma", "fv", "fc") for i in range(n))
+    if tuple(model.param_names) != want:
+        extra = [k for k in model.param_names if k not in want]
+        return (f"the NumPy reference's theta is alpha, beta, gamma, fv, fc per leg (eq. 1, "
+                f"eq. 2); model {model.name!r} has " + (
+                    f"also {', '.join(extra)}" if extra else f"{', '.join(model.param_names)}")
+                + (" (gravity)" if model.spec.has_gravity else ""))
+    if model.spec.has_gravity:
+        return (f"the NumPy reference has no gravity term; model {model.name!r} has gravity "
+                f"{list(model.spec.gravity)} m/s^2")
+    if model.spec.friction != REFERENCE_FRICTION:
+        return (f"the NumPy reference writes eq. 2's friction ({REFERENCE_FRICTION!r}, "
+                f"sign(0) = 0); model {model.name!r} has friction {model.spec.friction!r}")
+    ref = layouts(n)
+    for name in ("ctrl_state", "na_params"):
+        if tuple(map(tuple, model.manifest["layouts"][name])) != tuple(ref[name].fields):
+            return (f"the NumPy reference's {name} layout {list(ref[name].fields)} is not the "
+                    f"model's {model.manifest['layouts'][name]}")
+    return None
+
+
+def lambdify_problem(model):
+    """Why the SymPy-lambdify step (:func:`lambdify_step`) cannot compose ``model``'s NA step,
+    or None when it can: it composes the step of RR legs meeting at a point (the closed-form
+    fk of the paper's family, the type I measure sin(qb - qa), the type II measure of the
+    distal directions); theta, gravity and friction are the model's own (its regressor Y)."""
+    if is_rr_point(model.spec):
+        return None
+    return (f"the lambdify baseline composes the step of RRR legs meeting at a point (closed-"
+            f"form fk, type I measure sin(qb - qa)); model {model.name!r} has "
+            f"{mechanism(model.spec)}")
+
+
+def peer_problem(model):
+    """Why the peers (Pinocchio, MuJoCo: :mod:`.pinocchio_baseline`, :mod:`.mujoco_baseline`)
+    cannot model ``model``, or None when they can: they build RR legs meeting at a point from
+    eq. 1's alpha, beta, gamma, in a horizontal plane (no gravity)."""
+    if not is_rr_point(model.spec):
+        return (f"model {model.name!r} has {mechanism(model.spec)}, not RR legs with a point "
+                f"end effector (the peers' robot)")
+    if model.spec.has_gravity:
+        return (f"model {model.name!r} has gravity {list(model.spec.gravity)} m/s^2: the peers' "
+                f"robot is built from alpha, beta, gamma only, in a horizontal plane")
+    missing = [f"{k}{i + 1}" for k in ("alpha", "beta", "gamma") for i in range(model.n_legs)
+               if f"{k}{i + 1}" not in model.param_names]
+    if missing:
+        return f"model {model.name!r} has no {', '.join(missing)} (the peers' link inertias)"
+    return None
+
+
+def friction_free(model, theta=None):
+    """``theta`` (default: the model's nominal) with every friction parameter (those of its
+    friction law: fv, fc, ..., by name) zero; the inertial ones, a platform's and gravity's
+    included, as they are."""
+    th = np.array(model.theta_nominal if theta is None else theta, dtype=float)
+    for j, name in enumerate(model.param_names):
+        if is_friction_param(name, model.spec.friction):
+            th[j] = 0.0
+    return th
+
+
+def theta_by_name(model, theta, *keys):
+    """The entries of ``theta`` (p,) named ``<key>1..<key>n`` for each key, in leg order: a
+    tuple of (n,) arrays (e.g. ``theta_by_name(model, th, "alpha", "beta", "gamma")``)."""
+    index = {k: j for j, k in enumerate(model.param_names)}
+    th = np.asarray(theta, dtype=float)
+    return tuple(np.array([th[index[f"{k}{i + 1}"]] for i in range(model.n_legs)])
+                 for k in keys)
 
 
 def reference_geometry(model):
@@ -28,29 +118,36 @@ def operating_point(model, ctrl, traj, k):
 
 
 def random_cases(model, ctrl, rng, count, center):
-    """Random NA step inputs within 3 cm of ``center`` (m): pose, velocity, estimate, desired
-    motion. Poses out of reach or near a singularity are drawn again."""
-    n, T = model.n_legs, ctrl.sample_period
+    """Random NA step inputs within 3 cm (a platform's phi: 0.03 rad) of ``center`` (m,): pose,
+    velocity, estimate, desired motion, each task vector of the model's m = ``model.dof``
+    coordinates, the estimate by the model's parameter names (each nominal value scaled by
+    0.7-1.3), the state packed by the controller's ``ctrl_state`` layout. Poses out of reach
+    or within twice a singularity threshold (type I or II) are drawn again."""
+    n, m, T = model.n_legs, model.dof, ctrl.sample_period
+    center = np.asarray(center, dtype=float).reshape(m)
+    thresholds = np.array([model.singularity_threshold, model.parallel_singularity_threshold])
+    theta_nominal = dict(zip(model.param_names, model.theta_nominal, strict=True))
     cases = []
     for _ in range(200 * count):
         if len(cases) == count:
             break
-        xe = np.asarray(center, dtype=float) + rng.uniform(-0.03, 0.03, 2)
+        xe = center + rng.uniform(-0.03, 0.03, m)
         try:
             q = model.ik(xe)
-        except Exception:  # noqa: BLE001 (out of reach: draw again)
+        except Pm2dofError:  # out of reach: draw again
             continue
-        if np.min(np.abs(model.singularity(q))) < 2 * model.singularity_threshold:
+        if np.any(model.singularity_measures(q) < 2 * thresholds):
             continue
         qa = q[:n].copy()
         # tracking errors of the size seen on the paper's moves, so that the torques stay
         # below tau_max (a clipped torque would hide differences)
-        v = rng.uniform(-0.5, 0.5, 2)
-        theta = np.asarray(model.theta_nominal) * rng.uniform(0.7, 1.3, len(model.param_names))
-        state = np.concatenate([xe - T * v + rng.normal(0, 1e-6, 2), v, theta])
-        xd = xe + rng.normal(0, 2e-4, 2)
-        xd_dot = v + rng.normal(0, 0.02, 2)
-        cases.append((state, qa, xd, xd_dot, rng.uniform(-10, 10, 2)))
+        v = rng.uniform(-0.5, 0.5, m)
+        theta = np.array([theta_nominal[k] * rng.uniform(0.7, 1.3) for k in model.param_names])
+        state = ctrl.state_layout.pack(xe_prev=xe - T * v + rng.normal(0, 1e-6, m), v=v,
+                                       theta_hat=theta)
+        xd = xe + rng.normal(0, 2e-4, m)
+        xd_dot = v + rng.normal(0, 0.02, m)
+        cases.append((state, qa, xd, xd_dot, rng.uniform(-10, 10, m)))
     return cases
 
 
@@ -72,7 +169,11 @@ _LAMBDIFY_CACHE = {}
 def lambdify_step(model, layouts):
     """One NA step composed in NumPy from SymPy expressions turned into functions by
     sympy.lambdify (numpy backend, cse=True): fk(qa), the passive unit vectors (qa, xe),
-    S(q), Y(q, xed, xrd, xrdd), sin(qb - qa). Returns (step, build seconds)."""
+    S(q), Y(q, xed, xrd, xrdd), sin(qb - qa). Returns (step, build seconds);
+    UnsupportedMechanismError for a model :func:`lambdify_problem` gives a reason for."""
+    why = lambdify_problem(model)
+    if why is not None:
+        raise UnsupportedMechanismError(why)
     key = (model.name, model.spec.formulation_sha256)
     if key in _LAMBDIFY_CACHE:
         return _LAMBDIFY_CACHE[key], 0.0
@@ -127,7 +228,7 @@ def lambdify_step(model, layouts):
             tau_out, theta_out = np.minimum(np.maximum(tau, -tau_max), tau_max), theta_next
         else:
             status, tau_out, theta_out = 1, np.zeros(n), theta
-        return tau_out, np.concatenate([xe, v, theta_out]), status
+        return tau_out, st_lay.pack(xe_prev=xe, v=v, theta_hat=theta_out), status
 
     _LAMBDIFY_CACHE[key] = step
     return step, time.perf_counter() - t0

@@ -11,6 +11,7 @@ import numpy as np
 
 from ..control.controllers import CTCController
 from ..linear.lqr import LQRController
+from .baselines import friction_free, peer_problem
 from .timing import rel_diff, stats, time_batches
 
 __all__ = ["derivative_bench", "dynamics_state"]
@@ -61,7 +62,8 @@ def derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes):
 
     # --- from Python ----------------------------------------------------------------------
     J = model.forward_dynamics_jacobians(xe, xed, tau, th)
-    buf = np.empty(2)
+    m = model.dof
+    buf = np.empty(m)
     fd, fdj = model.forward_dynamics, model.forward_dynamics_jacobians
 
     def run_fd(k):
@@ -76,13 +78,15 @@ def derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes):
     h = 1e-6 * np.maximum(np.abs(z), 1e-3)
     zp, zm = z.copy(), z.copy()
 
+    def args(zz):      # z = [xe (m), xed (m), tau_a (n), theta (p)] split into the arguments
+        return zz[:m], zz[m:2 * m], zz[2 * m:2 * m + n], zz[2 * m + n:]
+
     def fd_jacobian():
-        out = np.empty((2, len(z)))
+        out = np.empty((m, len(z)))
         for i in range(len(z)):
             zp[i] += h[i]
             zm[i] -= h[i]
-            out[:, i] = (fd(zp[:2], zp[2:4], zp[4:4 + n], zp[4 + n:])
-                         - fd(zm[:2], zm[2:4], zm[4:4 + n], zm[4 + n:])) / (2 * h[i])
+            out[:, i] = (fd(*args(zp)) - fd(*args(zm))) / (2 * h[i])
             zp[i] = zm[i] = z[i]
         return out
 
@@ -101,18 +105,20 @@ def derivative_bench(model, traj, op, repeats, c_inner, batch_s, notes):
     res["agreement_fd_jacobians_vs_finite_differences"] = rel_diff(ad, fd_jacobian())
 
     # --- Pinocchio ----------------------------------------------------------------------
-    res["pinocchio_constraint_derivatives_python_us"] = None
-    res["speedup_fd_jacobians_vs_pinocchio"] = None
-    try:
-        import pinocchio
+    key = "pinocchio_constraint_derivatives_python_us"
+    res[key] = res["speedup_fd_jacobians_vs_pinocchio"] = None
+    why = peer_problem(model)               # None: the peer can model this robot
+    if why is None:
+        try:
+            import pinocchio
 
-        from .pinocchio_baseline import PinocchioRobot
-    except ImportError as exc:
-        notes["pinocchio_constraint_derivatives_python_us"] = (
-            f"pinocchio is not importable ({exc}); `pip install pin` adds the baseline")
+            from .pinocchio_baseline import PinocchioRobot
+        except ImportError as exc:
+            why = f"pinocchio is not importable ({exc}); `pip install pin` adds the baseline"
+    if why is not None:
+        notes[key] = why
     else:
-        th0 = th.copy()
-        th0[3 * n:] = 0.0                       # Pinocchio's robot has no friction
+        th0 = friction_free(model, th)          # Pinocchio's robot has no friction
         robot = PinocchioRobot(model, th0)
         q, v, tq = robot.state(xe, xed, tau)
         res["agreement_pinocchio_tip_acceleration"] = rel_diff(

@@ -18,7 +18,7 @@ acceleration is reported. A peer that is not installed (``pip install pin mujoco
 """
 import numpy as np
 
-from ..core.task import is_rr_point
+from .baselines import friction_free, peer_problem
 from .timing import rel_diff, stats, time_interleaved
 
 __all__ = ["peer_bench"]
@@ -55,12 +55,11 @@ def peer_bench(model, na, op, qa_prev, state, repeats, batch_s, c_inner, notes):
         f_na.time_calls(c_calls * k, 1, state0, qa, xd, xd_dot, xd_ddot, na.params, *na_outs)
 
     runs = {"fd": run_fd, "fd_c": run_fd_c, "na": run_na, "na_c": run_na_c}
-    th0 = np.array(th, dtype=float)
-    th0[3 * n:] = 0.0                                    # the peers have no friction
+    th0 = friction_free(model, th)                       # the peers have no friction
     ours0 = model.forward_dynamics(xe, xed, tau, th0)
     pin = mj = None
-    if not is_rr_point(model.spec):
-        why = f"model {model.name!r} is not RR legs with a point end effector (the peers' robot)"
+    why = peer_problem(model)
+    if why is not None:
         notes["pinocchio_forward_dynamics_python_us"] = notes["mujoco_forward_python_us"] = why
     else:
         try:

@@ -13,17 +13,17 @@ constrained forward dynamics into the tip's acceleration, to compare with pm2dof
 """
 import numpy as np
 
+from .baselines import theta_by_name
+
 __all__ = ["PinocchioRobot", "leg_bodies", "chain_state"]
 
 
 def leg_bodies(model, theta):
     """Per leg (m_b, r_b, I_a, I_b): the two bodies whose kinetic energy is eq. 1's with
-    ``theta``'s alpha, beta, gamma (the distal link a mass m_b = beta / (la r_b) at r_b = lb / 2
+    ``theta``'s alpha, beta, gamma (read by name; the distal link a mass m_b = beta / (la r_b) at r_b = lb / 2
     with inertia I_b = gamma - m_b r_b^2 about it, the active link I_a = alpha - m_b la^2 about
     its joint). ValueError where no such bodies exist."""
-    n = model.n_legs
-    th = np.asarray(theta, dtype=float)
-    alpha, beta, gamma = th[:n], th[n:2 * n], th[2 * n:3 * n]
+    alpha, beta, gamma = theta_by_name(model, theta, "alpha", "beta", "gamma")
     out = []
     for i, leg in enumerate(model.spec.legs):
         rb = leg.lb / 2

@@ -2,7 +2,8 @@
 """How fast ``plan_time_optimal`` is, and how it compares with TOPP-RA (``toppra``, the
 reference time-optimal path parameterisation) on the same friction-free problem.
 
-The problem: the model's fastest move (its start/end as a line), 1,000 grid points (toppra is
+The problem: the model's fastest move (its start/end as a line, a platform's with phi:
+dimension m = ``model.dof``), 1,000 grid points (toppra is
 given pm2dof's grid), the min-max split's force polygon (the zonotope's facets from the
 generated ``path_coefficients``) as toppra's ``F u <= g`` at both ends of every interval
 (toppra's default interpolation scheme, pm2dof's discretisation), and theta with every
@@ -10,8 +11,8 @@ friction entry zero (toppra's convex formulation cannot take viscous friction). 
 timings:
 
 * ``toppra_ms``: what a user runs, ``TOPPRA(...)`` with a ``SecondOrderConstraint`` whose
-  inverse dynamics are pm2dof's generated Me and Ce (one C call each per point) and
-  ``compute_parameterization``;
+  inverse dynamics are pm2dof's generated Me and Ce, and Ge under gravity (one C call each
+  per point) and ``compute_parameterization``;
 * ``toppra_solve_ms``: the same with the constraint coefficients precomputed (toppra's solver
   alone, its Cython Seidel LP).
 
@@ -30,33 +31,25 @@ from functools import partial
 import numpy as np
 
 from ..control.trajectory import line_moves
-from ..core.model_file import is_friction_param
 from ..planning import TaskPath, plan_time_optimal
+from ..planning.pathfile import model_move_path
 from ..planning.problem import PlanProblem
 from ..planning.smooth import plan_smooth
 from ..planning.stages import grid_points, limits, params, stages
+from .baselines import friction_free
 from .timing import stats, warm_then_time
 
 __all__ = ["bench_planning", "bench_refinement", "bench_paths", "toppra_runner", "ToppraPath",
            "friction_free"]
 
 
-def friction_free(model):
-    """The model's nominal theta with every friction parameter (those of its friction law:
-    fv, fc, ...) zero; the inertial ones, a platform's included, as they are."""
-    th = np.array(model.theta_nominal, dtype=float)
-    for j, name in enumerate(model.param_names):
-        if is_friction_param(name, model.spec.friction):
-            th[j] = 0.0
-    return th
-
-
 class ToppraPath:
-    """A :class:`pm2dof.TaskPath` as a toppra geometric path (dof 2: the task position)."""
+    """A :class:`pm2dof.TaskPath` as a toppra geometric path (dof: the path's dimension, x, y
+    and a platform's phi)."""
 
     def __init__(self, path):
         self.path = path
-        self.dof = 2
+        self.dof = path.dim
         self.path_interval = np.array([0.0, path.length])
         self.waypoints = None
 
@@ -85,17 +78,26 @@ def _toppra_constraints(model, theta, N_of, h_of, precomputed=None):
                 return canlinear_colloc_to_interpolate(*precomputed, None, None, gridpoints)
         return Given()
 
-    def inv_dyn(p, v, a):
+    gravity = model.spec.has_gravity
+
+    def inv_dyn(p, v, a):     # eq. 10's task force without friction: Me a + Ce v (+ Ge)
         q = model.ik(p)
-        return model.Me(q, theta) @ a + model.Ce(q, v, theta) @ v
+        u = model.Me(q, theta) @ a + model.Ce(q, v, theta) @ v
+        return u + model.Ge(q, theta) if gravity else u
 
     return toppra.constraint.SecondOrderConstraint(
-        inv_dyn, N_of, h_of, dof=2, discretization_scheme=DiscretizationType.Interpolation)
+        inv_dyn, N_of, h_of, dof=model.dof,
+        discretization_scheme=DiscretizationType.Interpolation)
 
 
 def _toppra_duration(sd, s):
     return float(np.sum(2 * np.diff(s) / (sd[:-1] + sd[1:])))
 
+
+#: grid points of the smoothed plan (IPOPT) in the full run and in the quick one (on a
+#: platform IPOPT took 28 iterations in 13 s at 30 points: the quick run keeps the code path,
+#: not the size)
+SMOOTH_GRID, SMOOTH_GRID_QUICK = 200, 15
 
 #: the paths of the refinement rows (issue 25): besides the model's fastest move, a half circle
 #: and the spline of issue 28 (the paper's workspace), and the shipped path files
@@ -129,19 +131,19 @@ def toppra_runner(model, path, s, split, theta):
     import toppra
     import toppra.algorithm
     w = limits(model, None, 1.0)
-    f_pc, n = model.function("path_coefficients"), model.n_legs
-    bufs = [np.empty(k) for k in (2, 2, 2 * n, n, 2 * n, n, 2 * n, n, 2)]
-    unit, zero = np.array([1.0, 0.0]), np.zeros(2)
-    j = 6 if split == "min_max" else 4
+    f_pc, m = model.function("path_coefficients"), model.dof
+    bufs = [np.empty(k) for k in f_pc.sizes_out]
+    unit, zero = np.eye(m)[0], np.zeros(m)      # p' and p'' do not enter N and h
+    j_N, j_h = (f_pc.names_out.index(f"{k}_{split}") for k in ("N", "h"))
 
     def F_of(p):     # the split's force polygon at p: one call into the generated C
         f_pc(np.ascontiguousarray(p), unit, zero, theta, w, *bufs)
-        Nk = bufs[j].reshape(n, 2)
+        Nk = bufs[j_N].reshape(-1, m)             # F facet normals (F = n when m = 2)
         return np.vstack([Nk, -Nk])
 
     def g_of(p):
         f_pc(np.ascontiguousarray(p), unit, zero, theta, w, *bufs)
-        return np.concatenate([bufs[j + 1], bufs[j + 1]])
+        return np.concatenate([bufs[j_h], bufs[j_h]])
 
     tpath = ToppraPath(path)
 
@@ -212,14 +214,16 @@ def bench_planning(model, quick=False, progress=None):
     """Time ``plan_time_optimal`` (1,000 grid points) and toppra on the same friction-free
     problem, interleaved, plus the smoothed variant's IPOPT solve. Returns a JSON-able dict
     (``plan_time_optimal_ms`` median, ``toppra_ms``, ``toppra_solve_ms``, ``speedup_vs_toppra``
-    and ``speedup_vs_toppra_solve``, the durations each finds, ``plan_smooth_*``, ``notes``;
+    and ``speedup_vs_toppra_solve``, the durations each finds, ``plan_smooth_*`` (on
+    ``plan_smooth_grid`` points: :data:`SMOOTH_GRID`, a quick run :data:`SMOOTH_GRID_QUICK`),
+    ``notes``;
     ``plan_paths``, ``plan_refined_over_unrefined_max`` and ``speedup_vs_toppra_min`` from
     :func:`bench_refinement`)."""
     say = progress or (lambda msg: None)
     repeats = 3 if quick else 7
     moves = {k: model.spec.trajectories[k] for k in line_moves(model)}
     name = max(moves, key=lambda k: moves[k]["v_max"])
-    path = TaskPath.line(moves[name]["start"], moves[name]["end"])
+    path = model_move_path(model, name).path       # a platform's line carries phi
     grid = 1000
     res = {"plan_path": f"the {name} move as a line", "plan_grid": grid, "notes": {}}
     th0 = friction_free(model)
@@ -259,6 +263,7 @@ def bench_planning(model, quick=False, progress=None):
         coef = stages(problem, s)[1]
         tpath = ToppraPath(path)
         a, b = coef["a"], coef["b"]
+        c = coef.get("g", np.zeros_like(a))        # the gravity term (a model with gravity)
         F = np.concatenate([coef["N"], -coef["N"]], axis=1)
         g = np.concatenate([coef["h"], coef["h"]], axis=1)
         end_to_end = toppra_runner(model, path, s, "min_max", th)
@@ -266,7 +271,7 @@ def bench_planning(model, quick=False, progress=None):
         def run_toppra(given):
             if not given:
                 return end_to_end()
-            cons = _toppra_constraints(model, th0, None, None, (a, b, np.zeros_like(a), F, g))
+            cons = _toppra_constraints(model, th0, None, None, (a, b, c, F, g))
             algo = toppra.algorithm.TOPPRA([cons], tpath, gridpoints=s, solver_wrapper="seidel")
             return algo.compute_parameterization(0, 0, return_data=True)[1]
 
@@ -293,12 +298,14 @@ def bench_planning(model, quick=False, progress=None):
     res["plan_paths"] = rows
     res.update(summary)
 
-    say("planning: the smoothed variant (IPOPT, 200 grid points)")
+    smooth_grid = SMOOTH_GRID_QUICK if quick else SMOOTH_GRID
+    res["plan_smooth_grid"] = smooth_grid
+    say(f"planning: the smoothed variant (IPOPT, {smooth_grid} grid points)")
     keys = ("plan_smooth_total_s", "plan_smooth_solve_s", "plan_smooth_iterations",
             "plan_smooth_duration_s", "plan_smooth_strict_duration_s")
     try:
         t0 = time.perf_counter()
-        sm = plan_smooth(model, path, split="min_max")
+        sm = plan_smooth(model, path, split="min_max", grid=smooth_grid)
         vals = (time.perf_counter() - t0, sm.info["solve_time_s"], sm.info["iterations"],
                 sm.duration, sm.info["strict_duration"])
     except ImportError as exc:

@@ -154,7 +154,8 @@ def format_bench(results):
                                  f" {_fmt(c['refined_ms']):>7s} / {_fmt(c['unrefined_ms']):>7s}"
                                  f" = {c['refined_over_unrefined']:.2f}{tp}")
         if r.get("plan_smooth_solve_s") is not None:
-            lines.append(f"  smoothed plan (IPOPT, 200 points): {r['plan_smooth_solve_s']:.3f} s "
+            lines.append(f"  smoothed plan (IPOPT, {r.get('plan_smooth_grid', 200)} points): "
+                         f"{r['plan_smooth_solve_s']:.3f} s "
                          f"solve, {r['plan_smooth_iterations']} iterations; "
                          f"{r['plan_smooth_duration_s']:.4f} s vs strict "
                          f"{r['plan_smooth_strict_duration_s']:.4f} s")
@@ -172,7 +173,8 @@ def format_bench(results):
             ("C step vs SymPy lambdify", "speedup_c_vs_lambdify", "x"),
             ("NAController.step vs casadi.Function", "speedup_binding_vs_casadi_function", "x"),
             ("bare binding vs casadi.Function", "speedup_raw_binding_vs_casadi_function", "x"),
-            (f"C vs NumPy, max rel. diff. ({r.get('agreement_cases')} states)",
+            ("C vs NumPy, max rel. diff." + (f" ({r['agreement_cases']} states)"
+                                             if r.get("agreement_cases") else ""),
              "agreement_c_vs_numpy", "rel"),
             ("C vs lambdify, max rel. diff.", "agreement_c_vs_lambdify", "rel"),
             ("casadi.Function vs binding (tau_a)", "agreement_casadi_function_vs_c", "rel"),

@@ -29,7 +29,10 @@ def rollout_call(model, na, n_roll):
     C0 = lays["ctrl_state"].unpack(X["ctrl_state"])
     C0["xe_prev"][:] = model.fk(qa0)
     C0["theta_hat"][:] = na.theta0
-    u = np.ascontiguousarray(np.hstack([long.xd, long.xd_dot, long.xd_ddot]))
+    lay_u = lays["cl_input"]                     # the reference, one row per sample
+    u = np.empty((n_roll, lay_u.size))
+    for field, rows in (("xd", long.xd), ("xd_dot", long.xd_dot), ("xd_ddot", long.xd_ddot)):
+        u[:, lay_u.slices[field]] = rows
     y = np.empty((n_roll, lays["cl_output"].size))
     x = x0.copy()
 

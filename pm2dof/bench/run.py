@@ -22,10 +22,12 @@ from ..core.status import Status
 from ..reference import control as rc
 from .baselines import (
     c_step,
+    lambdify_problem,
     lambdify_step,
     operating_point,
     random_cases,
     reference_geometry,
+    reference_problem,
 )
 from .derivatives import derivative_bench, dynamics_state
 from .machine import machine
@@ -77,6 +79,7 @@ TARGETS = (
      "binding overhead (Python - C), platform / paper's robot, worst call"),
 )
 #: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
+#: for a revolute actuator, N for a linear one
 BENCH_SPLITS = ("min_norm", "min_max", "preload")
 BENCH_PRELOAD = 1.0
 
@@ -116,11 +119,17 @@ def run_bench(model=None, quick=False, progress=None, models=None):
     Parameters
     ----------
     model : Model, optional
-        Default: the paper's robot (``load_model()``).
+        Default: the paper's robot (``load_model()``). Any kind: task vectors have the
+        model's m = ``model.dof`` entries, theta is read by parameter name. The baselines of
+        the paper's family only are None on other models, with a note naming the model and
+        why: the NumPy reference (RR legs at a point, no gravity, eq. 2's sign friction:
+        :func:`.baselines.reference_problem`), the SymPy-lambdify step (RR legs at a point:
+        :func:`.baselines.lambdify_problem`), Pinocchio and MuJoCo (RR legs at a point in a
+        horizontal plane: :func:`.baselines.peer_problem`).
     quick : bool
-        3 short batches per measurement and a 2000-sample rollout: about 3 s in all (for
-        tests; the numbers are noisier). The full run (7 batches of ~50 ms, 20000-sample
-        rollout) takes about 10 s, most of it the SymPy derivation and the NumPy reference.
+        3 short batches per measurement, a 2000-sample rollout and a smoothed plan of 15 grid
+        points (for tests; the numbers are noise). The full run: 7 batches of ~50 ms, a
+        20000-sample rollout, a smoothed plan of 200 points.
     progress : callable(str), optional
         Called with a short message before each stage.
     models : bool, optional
@@ -347,8 +356,15 @@ def bench_casadi_function(b, notes):
 
 def bench_numpy_reference(b, notes):
     """``pm2dof.reference.control.na_step`` (plain NumPy): ``na_step_numpy_us`` and its
-    agreement with the C step over ``b.cases`` (``agreement_c_vs_numpy``)."""
+    agreement with the C step over ``b.cases`` (``agreement_c_vs_numpy``); None, with a note
+    saying why, for a model that formulation does not cover (:func:`.baselines.reference_problem`:
+    a platform, prismatic legs, gravity, another friction law)."""
     model, params, n = b.model, b.na.params, b.model.n_legs
+    why = reference_problem(model)
+    if why is not None:
+        notes["na_step_numpy_us"] = notes["agreement_c_vs_numpy"] = why
+        return {"na_step_numpy_us": None, "na_step_numpy_us_min": None,
+                "agreement_c_vs_numpy": None, "agreement_cases": None}
     g = reference_geometry(model)
     ref_step = rc.na_step
     state0, qa, xd, xd_dot, xd_ddot = b.op
@@ -378,8 +394,14 @@ def bench_numpy_reference(b, notes):
 def bench_lambdify(b, notes):
     """The step composed in NumPy from the SymPy expressions through ``sympy.lambdify``:
     ``na_step_lambdify_us`` and ``agreement_c_vs_lambdify`` (None, with a note, without
-    SymPy or the derive package)."""
-    res = {"na_step_lambdify_us": None, "na_step_lambdify_us_min": None}
+    SymPy or the derive package, or for a mechanism :func:`.baselines.lambdify_problem` names
+    a reason for)."""
+    res = {"na_step_lambdify_us": None, "na_step_lambdify_us_min": None,
+           "agreement_c_vs_lambdify": None}
+    why = lambdify_problem(b.model)
+    if why is not None:
+        notes["na_step_lambdify_us"] = notes["agreement_c_vs_lambdify"] = why
+        return res
     try:
         lstep, build_s = lambdify_step(b.model, b.lays)
     except ImportError as exc:
@@ -419,7 +441,12 @@ def bench_rollout(b, say):
     run_acc(1)
     status = y[:, lays["cl_output"].slices["status"]].ravel()
     res["rollout_singular_samples"] = int(np.sum(status == Status.SINGULAR))
-    res["rollout_max_error_m"] = float(np.max(np.hypot(*(long.xd - y[:, 0:2]).T)))
+    err = long.xd - y[:, lays["cl_output"].slices["xe"]]        # (n_roll, m), task_names order
+    ix, iy = (model.task_names.index(k) for k in ("x", "y"))
+    res["rollout_max_error_m"] = float(np.max(np.hypot(err[:, ix], err[:, iy])))
+    if "phi" in model.task_names:                                 # a platform's orientation
+        res["rollout_max_error_phi_rad"] = float(np.max(np.abs(
+            err[:, model.task_names.index("phi")])))
     acc = stats(time_batches(run_acc, b.repeats, 0.0 if b.quick else 0.05)[0])
     res["rollout_steps_per_s"] = n_roll * 1e9 / acc["median"]
     res["rollout_steps_per_s_best"] = n_roll * 1e9 / acc["min"]
@@ -456,11 +483,12 @@ def ratios(res, sample_period):
     def ratio(a, b):
         return a / b if (a is not None and b) else None
 
+    def ns(us):
+        return None if us is None else us * 1e3
+
     return {
-        "speedup_c_vs_numpy": ratio(res["na_step_numpy_us"] * 1e3, res["na_step_c_ns"]),
-        "speedup_c_vs_lambdify": ratio(
-            None if res["na_step_lambdify_us"] is None else res["na_step_lambdify_us"] * 1e3,
-            res["na_step_c_ns"]),
+        "speedup_c_vs_numpy": ratio(ns(res["na_step_numpy_us"]), res["na_step_c_ns"]),
+        "speedup_c_vs_lambdify": ratio(ns(res["na_step_lambdify_us"]), res["na_step_c_ns"]),
         "speedup_binding_vs_casadi_function": ratio(res["na_step_casadi_function_us"],
                                                     res["na_step_python_us"]),
         "speedup_raw_binding_vs_casadi_function": ratio(res["na_step_casadi_function_us"],

@@ -3,11 +3,12 @@
 :class:`~pm2dof.core.errors.Pm2dofError` is one line ``pm2dof: error: ...`` and status 2; a
 missing optional dependency names the extra to install (status 2); Ctrl-C is status 130; a
 closed pipe (``| head``) is status 0; anything else is a bug and shows its traceback. A rollout
-that did not complete (an :class:`~pm2dof.core.errors.OutcomeWarning`) is one line on stderr."""
+that did not complete (an :class:`~pm2dof.core.errors.OutcomeWarning`) and a trajectory that does
+not start at rest (a :class:`~pm2dof.core.errors.MovingStartWarning`) are one line on stderr."""
 import sys
 import warnings
 
-from ..core.errors import OutcomeWarning, Pm2dofError
+from ..core.errors import MovingStartWarning, OutcomeWarning, Pm2dofError
 from .options import check_outputs
 
 __all__ = ["run", "EXTRAS", "COMMAND_EXTRAS"]
@@ -22,7 +23,7 @@ COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies",
 
 def _show_warning(message, category, filename, lineno, file=None, line=None,
                   _default=warnings.showwarning):
-    if issubclass(category, OutcomeWarning):
+    if issubclass(category, (OutcomeWarning, MovingStartWarning)):
         print(f"pm2dof: warning: {message}", file=sys.stderr, flush=True)
     else:
         _default(message, category, filename, lineno, file, line)

@@ -3,6 +3,8 @@
 
 * :mod:`.controllers` -- :class:`NAController` (eqs. 14-29), :class:`APDController` (eq. 40):
   one call into generated C per sample;
+* :mod:`.rules` -- what each entry of a controller's parameters must be: one table, read by
+  the constructors and written into the exported C's init;
 * :mod:`.trajectory` -- jerk-limited straight-line moves (:func:`line`, :func:`paper_move`);
 * :mod:`.plant` -- the simulated robot's truth (:func:`plant_truth`, :func:`theta_truth`);
 * :mod:`.simulate` -- :func:`simulate`: a whole closed-loop rollout in one call into C.

@@ -33,13 +33,14 @@ class PythonController:
         self.status = Status.OK
 
     def reset(self, qa0, trajectory):
-        """Start at rest at the measured active angles ``qa0`` (n,) rad, to follow
-        ``trajectory`` (a :class:`pm2dof.Trajectory`)."""
+        """Start at rest at the measured active coordinates ``qa0`` (n,) (rad for a revolute
+        actuator, m for a linear one), to follow ``trajectory`` (a :class:`pm2dof.Trajectory`)."""
         raise NotImplementedError
 
     def step(self, k, qa, xd, xd_dot, xd_ddot):
-        """Sample ``k``: measured active angles (n,) rad and the desired motion -> torques
-        (n,) N*m (clipped to ``tau_max`` by the rollout; a clip sets status SATURATED)."""
+        """Sample ``k``: measured active coordinates (n,) (rad or m by kind) and the desired
+        motion -> efforts (n,) (N*m for a revolute actuator, N for a linear one; clipped to
+        ``tau_max`` by the rollout; a clip sets status SATURATED)."""
         raise NotImplementedError
 
 

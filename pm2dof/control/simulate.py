@@ -15,6 +15,7 @@ import numpy as np
 from ..core.errors import (
     ArgumentError,
     ArgumentTypeError,
+    MovingStartWarning,
     OutcomeWarning,
     SingularityError,
     WorkspaceError,
@@ -28,7 +29,11 @@ from .plant_step import check_plant_step
 from .trajectory import _positive, require_trajectory
 
 __all__ = ["simulate", "SimResult", "OUTCOMES", "completed_samples", "rmse",
-           "check_trajectory", "rollout_inputs", "batch_inputs"]
+           "check_trajectory", "moving_start", "REST_VELOCITY_FLOOR", "rollout_inputs",
+           "batch_inputs"]
+
+#: m/s (rad/s for phi): a start velocity at or below it is rest, whatever the acceleration
+REST_VELOCITY_FLOOR = 1e-9
 
 
 def rmse(xd, xe):
@@ -211,6 +216,43 @@ def check_trajectory(model, trajectory):
             raise SingularityError(f"{where}: {model.singularity_message(sing)}")
 
 
+def moving_start(trajectory, names=("x", "y", "phi")):
+    """Whether a desired trajectory does not start at rest, and by how much.
+
+    The simulated robot starts at rest at the first sample. A coordinate c moves at the start
+    when |xd_dot[0, c]| > T max_k |xd_ddot[k, c]| + :data:`REST_VELOCITY_FLOOR`: more than
+    one sample (T) of the trajectory's own largest acceleration gives. A trajectory sampled
+    from a motion that starts at rest passes, also with its rates differentiated from its
+    positions (an S-curve's one-sided difference at t = 0 is j T^2 / 3, far below T a_max).
+
+    Parameters
+    ----------
+    trajectory : Trajectory
+        ``xd_dot``, ``xd_ddot`` (N, m) and ``period`` T, s.
+    names : sequence of str
+        The task coordinates' names (default x, y, phi; ``Model.task_names``).
+
+    Returns
+    -------
+    str or None
+        None at rest; else one phrase naming the desired velocity at t = 0 (m/s, rad/s for
+        phi) and the bound it exceeds.
+    """
+    v0 = np.asarray(trajectory.xd_dot[0], dtype=float)
+    acc = np.max(np.abs(np.asarray(trajectory.xd_ddot, dtype=float)), axis=0)
+    bound = trajectory.period * acc
+    if not np.any(np.abs(v0) > bound + REST_VELOCITY_FLOOR):
+        return None
+    names = list(names)[:len(v0)]
+    unit = ", ".join(sorted({"rad/s" if c == "phi" else "m/s" for c in names},
+                            key=["m/s", "rad/s"].index))
+    cols = ", ".join(f"{c}_dot" for c in names)
+    return (f"the desired velocity at t = 0 is ({cols}) = ({', '.join(f'{v:.4g}' for v in v0)}) "
+            f"{unit}, not rest: more than one sample of its own largest acceleration gives "
+            f"(T max|xd_ddot| = ({', '.join(f'{b:.3g}' for b in bound)}) {unit}); the simulated "
+            f"robot starts at rest, so its first samples answer a velocity step")
+
+
 def _reachable(model, xe):
     """(K,) bool: the poses ``xe`` (K, m) every leg reaches (RR legs at a point: |la - lb| <=
     |xe - A_i| <= la + lb; other mechanisms: the generated ik has a solution)."""
@@ -327,6 +369,13 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
         diverged ends at the failed sample (see :class:`SimResult`), and ``simulate`` warns
         (:class:`pm2dof.OutcomeWarning`) naming the sample, the time and the reason.
 
+    Warns
+    -----
+    MovingStartWarning
+        The trajectory does not start at rest (:func:`moving_start`): the robot starts at rest,
+        so the first samples answer a velocity step. The run goes on (a reference file is
+        refused instead, ``pm2dof simulate --reference``).
+
     Raises
     ------
     ModelMismatchError
@@ -345,6 +394,10 @@ def simulate(model, controller, trajectory, *, truth=None, quantise=True, theta_
                          f"controller's sample period {T} s")
     check_same_model(model, controller)
     check_trajectory(model, trajectory)
+    moving = moving_start(trajectory, model.task_names)
+    if moving is not None:
+        warnings.warn(f"simulate ({controller._law}, model {model.name!r}): {moving}",
+                      MovingStartWarning, stacklevel=2)
     n_move = len(trajectory.t)
     traj = trajectory.extended(ts) if ts > 0 else trajectory
     plant = plant_vector(model, truth, quantise, encoder_counts_per_rev)

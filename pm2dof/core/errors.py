@@ -5,7 +5,7 @@ __all__ = ["Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError"
            "Problem",
            "InputFileError", "ModelFileError", "StaleGeneratedCodeError", "WorkspaceError",
            "ClosureError", "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning",
-           "PlanError", "UnsupportedMechanismError", "NotResetError"]
+           "MovingStartWarning", "PlanError", "UnsupportedMechanismError", "NotResetError"]
 
 
 class Pm2dofError(Exception):
@@ -122,6 +122,12 @@ class ModelMismatchError(Pm2dofError, ValueError):
 class OutcomeWarning(RuntimeWarning):
     """A rollout that did not complete: it left the workspace or diverged (``SimResult.outcome``
     names which, the sample and the time)."""
+
+
+class MovingStartWarning(RuntimeWarning):
+    """A trajectory given to ``simulate`` that does not start at rest: its desired velocity at
+    t = 0 exceeds what one sample of its own largest acceleration gives. The simulated robot
+    starts at rest, so the first samples answer a velocity step (names the velocity)."""
 
 
 class PlanError(Pm2dofError, ValueError):

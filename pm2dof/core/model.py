@@ -33,6 +33,7 @@ from .errors import (
     WorkspaceError,
 )
 from .layout import Layout
+from .measures import singularity_words
 from .model_file import (
     INERTIAL,
     PLATFORM_PARAMS,
@@ -45,6 +46,7 @@ from .poses import PoseMethods
 from .status import Status
 from .task import (
     ENERGY_FUNCTIONS,
+    active_coordinates,
     is_rr_point,
     require_generated,
     spec_task_names,
@@ -133,9 +135,10 @@ def _check_generated(spec, gen_dir):
     if not build.library_is_fresh(c_file, lib, manifest.get("files", {}).get(c_file.name)):
         if paths.in_installed_package(gen_dir):
             _stale(spec, gen_dir, f"the compiled library {lib} is missing or older than {c_file}")
-        print(f"pm2dof: compiling {c_file} (first use of this generated code; a few seconds)",
-              file=sys.stderr, flush=True)
-        build.compile_library(c_file, lib)
+        build.compile_library(c_file, lib, progress=lambda msg: print(
+            f"pm2dof: {msg}" + (f" (first use of the generated code in {gen_dir})"
+                                if msg.startswith("compiling") else ""),
+            file=sys.stderr, flush=True))
     return manifest, lib
 
 
@@ -230,11 +233,12 @@ class Model(DerivativeMethods, PoseMethods):
     :meth:`ik` returns it; :meth:`H` gives the closure residual, and :meth:`fk` refuses active
     angles that do not close (:class:`ClosureError`).
 
-    Two kinds of singularity are guarded (:meth:`singularity_measures`): type I, a leg
-    stretched or folded (min_i |sin(qb_i - qa_i)| -> 0, W unbounded), and type II, the
-    actuation losing a direction (all distal links parallel, S^T rank-deficient). Functions
-    of the pose raise :class:`SingularityError` naming the kind when either measure is below
-    its threshold in ``[limits]``.
+    Two kinds of singularity are guarded (:meth:`singularity_measures`): type I, a leg's
+    Jacobian singular (an RRR leg stretched or folded, min_i |sin(qb_i - qa_i)| -> 0; a PRR
+    leg's link across its rail; W unbounded), and type II, the actuation losing a direction
+    (S^T rank-deficient: a point's distal links all parallel, a platform's lines of action
+    concurrent or all parallel). Functions of the pose raise :class:`SingularityError` naming
+    the kind and its measure when either measure is below its threshold in ``[limits]``.
 
     A Model holds one small scratch buffer, so one Model must not be called from two threads
     at once; load one Model per thread.
@@ -249,12 +253,8 @@ class Model(DerivativeMethods, PoseMethods):
     """
 
     __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_fast", "_layouts",
-                 "_sing_thr", "_sing", "_residual", "_m", "_task_names", "_modes", "__weakref__")
-
-    #: names of the two singularity measures, in the order of :meth:`singularity_measures`
-    SINGULARITY_KINDS = ("type I (a leg's links aligned)",
-                         "type II (parallel: all distal links aligned, the actuators lose a "
-                         "task direction)")
+                 "_sing_thr", "_sing", "_residual", "_m", "_task_names", "_modes", "_words",
+                 "__weakref__")
 
     def __init__(self, spec, gen_dir=None):
         gen_dir = (Path(gen_dir).expanduser().absolute() if gen_dir is not None
@@ -293,7 +293,8 @@ class Model(DerivativeMethods, PoseMethods):
                      ("_layouts", types.MappingProxyType(
                          {name: Layout(name, fl) for name, fl in manifest["layouts"].items()})),
                      ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual),
-                     ("_m", m), ("_task_names", task_names), ("_modes", None)):
+                     ("_m", m), ("_task_names", task_names), ("_modes", None),
+                     ("_words", singularity_words(spec.legs, spec.end_effector))):
             object.__setattr__(self, k, v)
         if spec.home is not None:       # a platform: its legs' working modes, read at home
             legs = _mode_geometry(spec)
@@ -321,11 +322,13 @@ class Model(DerivativeMethods, PoseMethods):
                           doc='names of the task coordinates, ("x", "y") or ("x", "y", "phi")')
     param_names = property(lambda self: self.spec.param_names, doc="names of theta, in order")
     theta_nominal = property(lambda self: self.spec.theta_nominal, doc="(5n,) Tables 1-2")
-    singularity_threshold = property(lambda self: self._sing_thr[0],
-                                     doc="type I: smallest allowed min_i |sin(qb_i - qa_i)|")
+    singularity_threshold = property(
+        lambda self: self._sing_thr[0],
+        doc="type I: smallest allowed leg measure (RRR |sin(qb_i - qa_i)|, PRR |d_i . u(qb_i)|)")
     parallel_singularity_threshold = property(
         lambda self: self._sing_thr[1],
-        doc="type II: smallest allowed normalised sigma_min of the distal directions")
+        doc="type II: smallest allowed measure of the legs' lines of action "
+            "(:meth:`singularity_measures`)")
 
     @property
     def bases(self):
@@ -485,10 +488,18 @@ class Model(DerivativeMethods, PoseMethods):
             below its threshold.
         """
         kind = 0 if not sing[0] >= self._sing_thr[0] else 1
-        what = ("min_i |sin(qb_i - qa_i)|", "sigma_min(S with unit rows) / sqrt(n/2)")[kind]
+        name, what = self._words[kind]       # by the legs' kinds and the end effector
         key = ("singularity_threshold", "parallel_singularity_threshold")[kind]
-        return (f"the pose is too close to a {self.SINGULARITY_KINDS[kind]} singularity: "
+        return (f"the pose is too close to a {name} singularity: "
                 f"{what} = {sing[kind]:.4g} < threshold {self._sing_thr[kind]} (limits.{key})")
+
+    @property
+    def singularity_kinds(self):
+        """((type I name, its measure), (type II name, its measure)): how messages name the
+        two singularities of this mechanism, by its legs' kinds and its end effector (an RRR
+        leg's |sin(qb_i - qa_i)|, a PRR leg's |d_i . u(qb_i)|; a point's or a platform's type
+        II measure, :meth:`singularity_measures`)."""
+        return self._words
 
     # --- kinematics ----------------------------------------------------------------------
     def ik(self, xe, out=None):
@@ -547,12 +558,14 @@ class Model(DerivativeMethods, PoseMethods):
         doc="largest |O - B_i| - lb_i, m, that fk and the controllers accept from the encoders")
 
     def fk(self, qa, out=None):
-        """Forward kinematics from the measured active angles.
+        """Forward kinematics from the measured active coordinates.
 
         Parameters
         ----------
         qa : array_like (n,)
-            Active (encoder) angles, rad, absolute from +x.
+            Active (encoder) coordinates, each in its actuator's unit: an RRR leg's angle in
+            rad, absolute from +x; a PRR slider's position along its rail or an RPR leg's
+            length, in m. Messages print each kind's unit.
         out : ndarray (m,), optional
             Written into and returned (no allocation); a new array when None.
 
@@ -570,8 +583,10 @@ class Model(DerivativeMethods, PoseMethods):
         Raises
         ------
         WorkspaceError
-            No assembly exists (a five-bar's circles do not meet), or (:class:`ClosureError`, a
-            WorkspaceError) the angles do not close the loops: some leg's closure residual | |O - B_i| - lb_i | exceeds
+            No assembly exists (a five-bar's circles do not meet; a platform: the Gauss-Newton
+            from home found none), or (:class:`ClosureError`, a WorkspaceError) the
+            coordinates do not close the loops: some leg's closure residual | |P_i - B_i| -
+            r_i | (P_i the point it must reach, B_i and r_i its circle's centre and radius) exceeds
             :attr:`closure_tolerance` (``[sensing] closure_tolerance``, by default a few
             encoder steps at the active link's length). With three encoders for two degrees of
             freedom, the extra legs are a check of the measurement; the message names the leg
@@ -592,21 +607,30 @@ class Model(DerivativeMethods, PoseMethods):
         (qa,), _ = self._call(self._f["fk"], (qa,), (out, self._residual))
         r = self._residual
         tol = self.spec.sensing["closure_tolerance"]
+        qa_text = active_coordinates(self, qa)
         if not (np.isfinite(out).all() and np.isfinite(r).all()):
-            raise WorkspaceError(f"no assembly of the legs has active angles qa = "
-                                 f"{np.asarray(qa).tolist()} rad")
+            if self.spec.home is not None:      # a platform: Gauss-Newton from home
+                raise WorkspaceError(
+                    f"fk of qa = {qa_text}: the Gauss-Newton from [platform] home = "
+                    f"{list(self.spec.home)} found no pose (a step was not finite): no assembly "
+                    f"of the legs has these active coordinates, or none near home (fk is "
+                    f"reliable within about 0.05 m and 0.2 rad of it, docs/model-file.md)")
+            raise WorkspaceError(f"no assembly of the legs has the active coordinates qa = "
+                                 f"{qa_text}")
         worst = int(np.argmax(np.abs(r)))
         if not abs(r[worst]) <= tol:
-            seeded = (f"; or, a platform, a pose too far from [platform] home = "
-                      f"{list(self.spec.home)} for fk's Gauss-Newton from it (reliable within "
-                      f"about 0.05 m and 0.2 rad, docs/model-file.md)"
-                      if self.spec.home is not None else "")
+            platform = self.spec.home is not None
+            seeded = (f"; or a pose too far from [platform] home = {list(self.spec.home)} "
+                      f"for fk's Gauss-Newton from it (reliable within about 0.05 m and "
+                      f"0.2 rad, docs/model-file.md)" if platform else "")
+            where, p = (f"its attachment point P_{worst + 1}", "P_i") if platform else \
+                ("the common point", "O")
             raise ClosureError(
-                f"the active angles qa = {np.asarray(qa).tolist()} rad do not close the loops: "
-                f"leg {worst + 1}'s tip misses the common point by {r[worst]:+.3g} m (closure "
-                f"residual |O - B_i| - lb_i; tolerance {tol:.3g} m, [sensing] "
-                f"closure_tolerance): inconsistent encoders, or angles of another robot"
-                f"{seeded}")
+                f"the active coordinates qa = {qa_text} do not close the loops: leg "
+                f"{worst + 1}'s tip misses {where} by {r[worst]:+.3g} m (closure residual "
+                f"|{p} - B_i| - r_i, B_i and r_i the centre and radius of the circle its "
+                f"actuator puts {p} on; tolerance {tol:.3g} m, [sensing] closure_tolerance): "
+                f"inconsistent encoders, or coordinates of another robot{seeded}")
         return out
 
     def _fk_same_mode(self, qa, xe):
@@ -619,10 +643,10 @@ class Model(DerivativeMethods, PoseMethods):
         wrong = [i for i, (side, mode) in enumerate(zip(_mode_sides(legs, qa, xe), modes))
                  if side * mode < 0]
         if wrong:
-            qa = np.asarray(qa, dtype=float).reshape(-1)
             legs = ", ".join(str(i + 1) for i in wrong)
             raise WorkspaceError(
-                f"fk of qa = {qa.tolist()}: the Gauss-Newton from [platform] home = "
+                f"fk of qa = {active_coordinates(self, qa)}: the Gauss-Newton from "
+                f"[platform] home = "
                 f"{list(self.spec.home)} ended at the pose {np.round(xe, 6).tolist()}, which "
                 f"closes the loops with leg(s) {legs} in the other working mode (elbow or "
                 f"branch) than the model file's, another assembly of the same active "
@@ -665,7 +689,9 @@ class Model(DerivativeMethods, PoseMethods):
             return self._eval("A", (self._f["H"].sizes_out[0], 2 * n), out, q)
 
     def singularity(self, q, out=None):
-        """Per-leg singularity measure sin(qb_i - qa_i) (n,); W is singular where one is 0.
+        """sin(qb_i - qa_i) of every leg (n,): an RRR leg's singularity measure (its links
+        aligned at 0, W unbounded). Not a PRR or RPR leg's measure (qa_i is a length there):
+        :meth:`singularity_measures` gives every kind's.
 
         Parameters
         ----------
@@ -683,12 +709,18 @@ class Model(DerivativeMethods, PoseMethods):
     def singularity_measures(self, q, out=None):
         """The two singularity measures at the pose q (2n,), each in [0, 1], 0 when singular.
 
-        ``[0]`` type I (a leg): min_i |sin(qb_i - qa_i)|, compared with
-        ``limits.singularity_threshold``; ``[1]`` type II (parallel, the actuation): the smallest
-        singular value of S with its rows normalised (the distal links' directions), over its
-        largest possible value sqrt(n/2), i.e. sqrt(1 - |sum_i exp(2 i qb_i)| / n); 0 when all
-        distal links are parallel; compared with ``limits.parallel_singularity_threshold``.
-        Never raises on a singular pose: it is the measure.
+        ``[0]`` type I (a leg): the minimum over the legs of an RRR leg's |sin(qb_i - qa_i)|,
+        a PRR leg's |d_i . u(qb_i)| (the cosine between its rail d_i and its link) and an RPR
+        leg's 1, compared with ``limits.singularity_threshold``; ``[1]`` type II (parallel,
+        the actuation), compared with ``limits.parallel_singularity_threshold``. For legs
+        meeting at a point: the smallest singular value of S with its rows normalised (the
+        distal links' directions), over its largest possible value sqrt(n/2), i.e.
+        sqrt(1 - |sum_i exp(2 i qb_i)| / n); 0 when all distal links are parallel. For a
+        platform: (det U^T U)^(1/3) / (n/3), U the legs' lines of action with their moments
+        about the platform's origin over L (the RMS distance of the attachment points), each
+        row of unit length; 0 when the lines are concurrent or all parallel
+        (docs/model-file.md, "Singularities"). Never raises on a singular pose: it is the
+        measure.
 
         Parameters
         ----------
@@ -882,22 +914,23 @@ class Model(DerivativeMethods, PoseMethods):
         """The actuator torques of every split for the task force ``u`` (m,), N (N m for phi),
         at pose q (2n,).
 
-        All satisfy S^T tau = u (eqs. 10, 21) to rounding; ``tau_max`` (n,) N*m defaults to
-        ``[limits]``, ``preload`` (n,) N*m and ``preload_sign`` (n,) +-1 to ``[control]``. No
+        All satisfy S^T tau = u (eqs. 10, 21) to rounding; ``tau_max`` (n,) (N*m per revolute
+        actuator, N per linear one, as every effort below) defaults to ``[limits]``,
+        ``preload`` (n,) and ``preload_sign`` (n,) +-1 to ``[control]``. No
         clipping is applied here (the controller steps clip). Raises SingularityError at a pose
         too close to a singularity of either kind.
 
         Parameters
         ----------
         q : array_like (2n,)
-            Joint coordinates [qa_1..qa_n, qb_1..qb_n], rad, closing every loop (as :meth:`ik`
-            returns them).
+            Joint coordinates [qa_1..qa_n, qb_1..qb_n] (rad; a linear actuator's qa_i in m),
+            closing every loop (as :meth:`ik` returns them).
         u : array_like (m,)
             Task-space force, N (N m for phi).
         tau_max : array_like (n,), optional
-            Actuator limits, N*m; ``[limits] tau_max`` when None.
+            Actuator limits, N*m (revolute) or N (linear); ``[limits] tau_max`` when None.
         preload : array_like (n,), optional
-            Preload magnitudes, N*m; ``[control] preload`` when None.
+            Preload magnitudes, N*m or N by kind; ``[control] preload`` when None.
         preload_sign : array_like (n,), optional
             Preload directions, +-1 per actuator; ``[control] preload_sign`` when None.
 
@@ -942,7 +975,7 @@ class Model(DerivativeMethods, PoseMethods):
         xed : array_like (m,)
             Task-space velocity, m/s (rad/s for phi).
         tau_a : array_like (n,)
-            Actuator torques, N*m.
+            Actuator efforts, N*m (revolute) or N (linear).
         theta : array_like (p,)
             Parameters, in :attr:`param_names` order (Tables 1-2 units). Checked for length
             and finiteness only: this is a per-sample call, so it does not check that theta

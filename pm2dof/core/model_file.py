@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import ModelFileError
+from .measures import TYPE_I_MEASURES, TYPE_II_MEASURES, pose_measures
 from .validate import RULES, Problems, entry
 
 __all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "is_friction_param",
@@ -741,8 +742,9 @@ def _check_reach(pr, key, legs, pose):
             pr.add(key, f"{what} at {pose}: leg {i + 1} ({leg.kind}) {why}")
 
 
-def _read_platform(pr, doc, effector, legs):
-    """[platform] (a platform only): ``home``, the pose (x, y, phi) that seeds fk."""
+def _read_platform(pr, doc, effector, legs, limits):
+    """[platform] (a platform only): ``home``, the pose (x, y, phi) that seeds fk, within
+    every leg's reach and clear of both singularities by ``limits``' thresholds."""
     raw = doc.get("platform")
     if effector != "platform":
         if raw is not None:
@@ -757,8 +759,44 @@ def _read_platform(pr, doc, effector, legs):
     home = pr.vector("platform.home", raw["home"], ["x", "y", "phi"],
                      meaning=" [x, y, phi] in m, m, rad")
     if home is not None:
+        found = len(pr)
         _check_reach(pr, "platform.home", legs, home)
+        if len(pr) == found:
+            _check_home_clear(pr, legs, home, limits or {})
     return home
+
+
+def _check_home_clear(pr, legs, home, limits):
+    """A problem for a home within a singularity threshold, naming the measure, its value at
+    home and the threshold. fk's Gauss-Newton starts at home: at a type II singularity its
+    normal equations are singular (every fk fails), and a leg at a type I singularity there
+    has no working mode to read (Model._fk_same_mode). The measures are computed from the
+    file's geometry (pm2dof.core.measures), the same as the generated singularity_measures."""
+    if None in legs or any(leg.attach is None for leg in legs):
+        return
+    type1, type2, per_leg = pose_measures(legs, home)
+    thr = limits.get("parallel_singularity_threshold")
+    if thr is not None and thr < 1 and not type2 >= thr:      # (a threshold >= 1 is reported)
+        pr.add("platform.home", f"{list(home)} is too close to a type II (parallel) "
+                                f"singularity, where the legs' lines of action are concurrent "
+                                f"or all parallel and the actuators lose a direction of the "
+                                f"platform: the measure {TYPE_II_MEASURES['platform']} is "
+                                f"{type2:.3g} < limits.parallel_singularity_threshold = {thr:g}. "
+                                f"fk's Gauss-Newton starts at home and cannot converge from "
+                                f"there; choose another home")
+    thr = limits.get("singularity_threshold")
+    low = [(i, leg, value) for i, (leg, value) in enumerate(zip(legs, per_leg))
+           if thr is not None and thr < 1 and not value >= thr]
+    if low:
+        which = "; ".join(
+            f"leg{'s' if len(group) > 1 else ''} {', '.join(str(i + 1) for i, _ in group)} "
+            f"({kind}; 0 at {TYPE_I_MEASURES[kind][1]}): {TYPE_I_MEASURES[kind][0]} = "
+            f"{', '.join(f'{v:.3g}' for _, v in group)}"
+            for kind in LEG_KINDS
+            if (group := [(i, v) for i, leg, v in low if leg.kind == kind]))
+        pr.add("platform.home", f"{list(home)} is too close to a type I singularity: {which}; "
+                                f"below limits.singularity_threshold = {thr:g}. fk reads each "
+                                f"leg's working mode at home; choose another home")
 
 
 def _read_control(pr, doc, n, tau_max):
@@ -840,7 +878,7 @@ def read_model_file(path):
     param_names, theta = _read_nominal(pr, pr.table("nominal", doc.get("nominal")), groups, legs)
     limits = _read_limits(pr, doc, n, param_names)
     sensing, gains, plant = _read_runtime(pr, doc, n, param_names, legs, groups, effector)
-    home = _read_platform(pr, doc, effector, legs)
+    home = _read_platform(pr, doc, effector, legs, limits)
     trajs = _read_trajectories(pr, doc, n, param_names, legs, END_EFFECTORS[effector])
     control = _read_control(pr, doc, n, (limits or {}).get("tau_max"))
     pr.raise_if_any()

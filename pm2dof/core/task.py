@@ -15,7 +15,7 @@ import numpy as np
 from .errors import ArgumentError, StaleGeneratedCodeError, UnsupportedMechanismError
 from .paths import derive_command
 
-__all__ = ["effort_unit", "per_actuator", "POINT_TASK_NAMES", "ENERGY_FUNCTIONS", "spec_task_names", "is_rr_point",
+__all__ = ["effort_unit", "per_actuator", "active_coordinates", "POINT_TASK_NAMES", "ENERGY_FUNCTIONS", "spec_task_names", "is_rr_point",
            "require_rr_point", "require_generated", "task_vector", "mechanism",
            "orientation_length"]
 
@@ -119,3 +119,18 @@ def effort_unit(model):
     """The unit of the actuators' efforts, for printed text: "N m" (revolute actuators), "N"
     (linear ones: PRR sliders, RPR cylinders) or "N m or N" (both)."""
     return per_actuator(model, "N m", "N", "N m or N")
+
+
+def active_coordinates(model, qa):
+    """``qa`` (n,) as printed text with each actuator's unit: "[0.1, 0.2, 0.3] rad" (revolute
+    actuators: angles), "[0.22, 0.22, 0.22] m" (linear ones: a PRR slider's position, an RPR
+    leg's length), or "[0.1, 0.2, 0.3] (rad for legs 1, 2; m for leg 3)" for a mixture.
+    ``model``: a Model or a ModelSpec."""
+    legs = getattr(model, "spec", model).legs
+    values = np.asarray(qa, dtype=float).reshape(-1).tolist()
+
+    def legs_of(kind):
+        ids = [str(i + 1) for i, leg in enumerate(legs) if leg.actuator == kind]
+        return f"leg{'s' if len(ids) > 1 else ''} {', '.join(ids)}"
+    return f"{values} " + per_actuator([leg.actuator for leg in legs], "rad", "m", (
+        f"(rad for {legs_of('revolute')}; m for {legs_of('prismatic')})"))

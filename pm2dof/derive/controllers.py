@@ -25,9 +25,10 @@ def controller_layouts(n, p, m):
     # sing_threshold: type I (legs), parallel_sing_threshold: type II (actuation)
     # preload_sign, preload: the "preload" split's sign per actuator (+-1) and least |tau|, N*m
     # closure_tol: largest |O - B_i| - lb_i of the measured pose, m ([sensing] closure_tolerance)
+    # freeze_saturated (NA): 1 holds theta_hat on a saturated sample, 0 adapts (the paper)
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
               ("tau_max", n), ("preload_sign", n), ("preload", n), ("closure_tol", 1)]
-    na = Layout([("Kd", m), ("Q", m), ("Gamma", p)] + common)
+    na = Layout([("Kd", m), ("Q", m), ("Gamma", p), ("freeze_saturated", 1)] + common)
     apd = Layout([("Kp", m), ("Kv", m)] + common)
     ctc = Layout([("Kp", m), ("Kv", m)] + common)       # 1/s^2, 1/s: Me multiplies them
     lqr = Layout(common)                                 # its gains are per-sample inputs
@@ -135,6 +136,10 @@ def controller_functions(d, prefix):
     A bad sample (encoders that do not close the loops, a singular pose, or any non-finite
     intermediate) gives the safe torque zero and leaves theta_hat unchanged; inconsistent
     encoders and a non-finite sample also keep xe_prev and v (a wrong pose is not carried on).
+    NA's ``freeze_saturated`` parameter (1) also leaves theta_hat unchanged on a saturated
+    sample (status SATURATED: the torque was clipped, so the law's u was not applied and eq.
+    28's update would integrate an error the actuators could not act on); 0 is the paper's
+    law.
     """
     from pm2dof.core.model_file import FRICTION_MODELS
     n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
@@ -191,7 +196,11 @@ def _step_function(d, prefix, lay, name, split, S, u, P, theta, theta_next, xe, 
     finite = _all_finite(ca.vertcat(tau, theta_next, xe, v))
     good = ca.logic_and(consistent, ca.logic_and(regular, finite))
     tau_out = ca.if_else(good, tau_sat, ca.DM.zeros(n))        # safe torque: zero
-    theta_out = ca.if_else(good, theta_next, theta)            # no update on a bad sample
+    update = good                                              # no update on a bad sample
+    if "freeze_saturated" in P:   # NA's option: no update while an actuator saturates either
+        update = ca.logic_and(good, ca.logic_not(ca.logic_and(P["freeze_saturated"] != 0,
+                                                              saturated)))
+    theta_out = ca.if_else(update, theta_next, theta)
     status = ca.if_else(consistent, ca.if_else(regular, ca.if_else(finite, ca.if_else(
         saturated, STATUS["saturated"], ca.if_else(
             unpreloaded, STATUS["preload_infeasible"], STATUS["ok"])), STATUS["non_finite"]),

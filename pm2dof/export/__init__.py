@@ -6,6 +6,8 @@
 * :mod:`.prune` -- the generated C pruned to what the API calls, every function static;
 * :mod:`.names` -- the library's link names, distinct in their first 31 characters;
 * :mod:`.stack` -- each function's worst-case stack from GCC's call graph;
+* :mod:`.checks` -- the API's parameter checks and status strings, written from
+  :mod:`pm2dof.control.rules` and :class:`pm2dof.Status`;
 * :mod:`.single` -- the generated C rewritten for ``float``, and where float is refused;
 * :mod:`.reference` -- pm2dof's closed loops as C data, what the exported test compares with;
 * :mod:`.embedded` -- ``make embedded``: cross-compile for Cortex-M4F and M7, run under QEMU.

@@ -29,6 +29,7 @@ import sys
 from pathlib import Path
 
 from ..core.model import load_model
+from ..core.task import effort_unit
 from . import names, stack
 from .project import ExportError, export_project
 
@@ -116,6 +117,18 @@ def _compare(host, target, single, bound, allow):
     return same, total, worst, statuses, flips
 
 
+def _agreement(same, total, worst, statuses, flips, unit):
+    """A target's comparison with the host (:func:`_compare`) as fields of its run.
+
+    ``max_abs_diff`` is the largest |effort difference| in ``units["max_abs_diff"]`` (N m for
+    revolute actuators, N for linear ones: :func:`pm2dof.core.task.effort_unit`). The same
+    number stays under its former name ``max_abs_diff_Nm`` for readers of older results; it is
+    in N for a linear actuator despite that name, and ``units`` says so for both keys."""
+    return {"bit_identical": same, "samples": total, "max_abs_diff": worst,
+            "max_abs_diff_Nm": worst, "units": {"max_abs_diff": unit, "max_abs_diff_Nm": unit},
+            "coulomb_flips": flips, "statuses_equal": statuses}
+
+
 def _symbol_sizes(elf, obj):
     """Bytes of code and of read-only/initialised data that the library's object ``obj``
     (one translation unit) contributes to the linked ``elf``: its global symbols, by name,
@@ -186,8 +199,9 @@ def run_embedded(out, model="shang2010", jobs=2, progress=print):
         record = json.loads((proj / "pm2dof_export.json").read_text())
         name = record["model"]
         results["model"] = name
-        linear = "prismatic" in {leg.actuator for leg in load_model(model).spec.legs}
-        results["effort_unit"] = "N" if linear else "N m"
+        m = load_model(model)
+        linear = "prismatic" in {leg.actuator for leg in m.spec.legs}
+        results["effort_unit"] = effort_unit(m)
         results["bound"] = (BOUND_N if linear else BOUND_NM)
         progress(f"{precision}: building and running the replay for the host, M4F and M7 "
                  f"(QEMU) in {proj / 'embedded'}")
@@ -220,9 +234,8 @@ def run_embedded(out, model="shang2010", jobs=2, progress=print):
                               "mean": tot / per_tick / n}
             results["runs"][f"{target}-{precision}"] = {
                 "target": TARGETS[target], "precision": precision,
-                "bit_identical": same, "samples": total, "max_abs_diff_Nm": worst,
-                "coulomb_flips": flips,
-                "statuses_equal": statuses, "controller_code_bytes": code,
+                **_agreement(same, total, worst, statuses, flips, results["effort_unit"]),
+                "controller_code_bytes": code,
                 "controller_data_bytes": data, "elf": _elf_size(build / target / "replay.elf"),
                 "stack_painted_bytes": max(painted.values()) if painted else None,
                 "stack_static_bytes": {law: c["bytes"] for law, c in chains.items()},
@@ -249,8 +262,8 @@ def format_results(res):
         c_lo, c_hi = na["max"] * lo, na["max"] * hi
         clock = CLOCK_HZ[target]
         agree = ("bit-identical" if r["bit_identical"] == r["samples"] else
-                 f"{r['bit_identical']}/{r['samples']} identical, max {r['max_abs_diff_Nm']:.2g}"
-                 f" {res.get('effort_unit', 'N m')}")
+                 f"{r['bit_identical']}/{r['samples']} identical, max {r['max_abs_diff']:.2g}"
+                 f" {r['units']['max_abs_diff']}")
         if r.get("coulomb_flips"):
             agree += f" ({r['coulomb_flips']} efforts within a flipped Coulomb sign)"
         lines.append(
@@ -296,7 +309,7 @@ def main(argv=None):
     if args.json:
         Path(args.json).write_text(json.dumps(res, indent=1) + "\n")
     bad = [k for k, r in res["runs"].items() if "samples" in r and (
-        not r["statuses_equal"] or r["max_abs_diff_Nm"] > res["bound"][r["precision"]])]
+        not r["statuses_equal"] or r["max_abs_diff"] > res["bound"][r["precision"]])]
     if bad:
         print(f"make embedded: the torques of {', '.join(bad)} differ from the host's beyond "
               f"the bound ({res['bound']} {res['effort_unit']})", file=sys.stderr)

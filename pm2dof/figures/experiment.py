@@ -3,6 +3,7 @@ import numpy as np
 from matplotlib.ticker import MaxNLocator
 
 from ..control.trajectory import line_moves
+from ..core.task import effort_unit
 from ..infra.results import save_figure
 from .style import kind_of, legend_outside, param_styles, place_legend, tex_name
 
@@ -47,7 +48,7 @@ def _errors(plt, results, speed, task_names=("x", "y")):
     return fig
 
 
-def _torques(plt, results):
+def _torques(plt, results, unit="N m"):
     speeds = list(results)
     fig, axes = plt.subplots(len(speeds), 2, figsize=(9, 0.4 + 3 * len(speeds)), squeeze=False,
                              sharex="row", sharey="row", layout="constrained")
@@ -61,7 +62,7 @@ def _torques(plt, results):
             ax.set_title(f"{LABELS[name]}, {speed} speed", fontsize=9)
             ax.set_xlabel("time (s)")
             ax.grid(alpha=0.3)
-        axes[i][0].set_ylabel("torque (N m)")
+        axes[i][0].set_ylabel(f"{'force' if unit == 'N' else 'torque'} ({unit})")
     fig.suptitle("Actuator torques (simulated; dotted: the end of the move)", fontsize=10)
     legend_outside(fig, axes[0][:1], "lower")
     return fig
@@ -136,7 +137,7 @@ def write_figures(model, results, repeated, out_dir, prov):
     names = list(model.param_names)
     figs = [(f"errors_{speed}.png", _errors(plt, results, speed, model.task_names))
             for speed in results]
-    figs.append(("torques.png", _torques(plt, results)))
+    figs.append(("torques.png", _torques(plt, results, effort_unit(model))))
     figs.append(("theta_hat.png", _theta(plt, results, names)))
     if repeated is not None:
         figs.append(("repeated_runs.png", _repeated(plt, repeated, names, repeated["speed"])))

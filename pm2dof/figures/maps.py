@@ -146,9 +146,13 @@ def maps_note(model, tau_max=None, phi=None):
             f"The platform at phi = {phi:g} rad (its home orientation unless given) over the "
             f"whole map; force: the largest ball of (fx, fy, moment), N and N m alike; "
             f"acceleration: m/s^2 and rad/s^2 alike; the moves drawn by their (x, y).\n")
+    hold = (f"Gravity {', '.join(f'{g:g}' for g in model.spec.gravity)} m/s^2: force and "
+            f"acceleration are what tau_max leaves once the actuators hold the robot at rest at "
+            f"each pose (0 where they cannot). "
+            if model.spec.has_gravity else "")
     return (f"Model {model.name!r}; tau_max = {', '.join(f'{v:g}' for v in w)} {units}; Me from "
-            f"Tables 1-2. {pose}Force and acceleration maps: the 95th percentile and above share "
-            f"the top colour.\nBlack: the reachable set in the assembly mode; orange dashed: the "
+            f"Tables 1-2. {hold}{pose}Force and acceleration maps: the 95th percentile and above "
+            f"share the top colour.\nBlack: the reachable set in the assembly mode; orange dashed: the "
             f"singularity threshold; "
             + ("magenta: the parallel-singular curve; " if model.n_legs == 2 else "")
             + f"red: the moves (o start, square end); {fixed_key(model)}")

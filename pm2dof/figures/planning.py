@@ -3,8 +3,9 @@
 
 * ``plan_<name>_phase.png``: the path speed s_d against the arc length s for each split's
   time-optimal plan (and the kinematic S-curve), with each split's maximum-velocity curve;
-* ``plan_<name>_torques.png``: the actuator torques against time of each time-optimal plan
-  (inverse dynamics at the 2 ms samples, the generated C) with the limits;
+* ``plan_<name>_torques.png``: the actuator efforts against time of each time-optimal plan
+  (inverse dynamics at the 2 ms samples, the generated C) with the limits; the axis in N m
+  for revolute actuators, N for linear ones (both named for a model with both);
 * ``plan_<name>_map.png``: the path over the min-max force-capability map of the workspace.
 
 Each legend is outside the axes (:func:`pm2dof.figures.style.legend_outside`): the curves and
@@ -15,6 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from ..analysis.maps import workspace_maps
+from ..core.task import per_actuator
 from ..infra.results import save_figure
 from ..planning.torques import path_torques
 from .experiment import _plt
@@ -59,7 +61,8 @@ def _torques(plt, model, name, plans, w):
         for i in range(model.n_legs):
             ax.axhline(w[i], color="k", lw=0.6, ls="--", label="+-tau_max" if i == 0 else None)
             ax.axhline(-w[i], color="k", lw=0.6, ls="--")
-        ax.set_ylabel("torque (N m)")
+        ax.set_ylabel(per_actuator(model, "torque (N m)", "force (N)",
+                                   "torque (N m), force (N)"))
         ax.set_title(f"{name}, time-optimal with {key}: {p.duration:.3f} s", fontsize=9)
     axes[-1, 0].set_xlabel("time (s)")
     legend_outside(fig, axes[:1, 0], "lower", ncol=model.n_legs + 1, fontsize=7)
@@ -84,7 +87,8 @@ def _map(plt, model, name, path, maps):
 
 def plan_figures(model, plans, out_dir, prov, w, resolution=81):
     """Write the three figures of each path of ``plans`` ({(path name, key): Plan}, key a split
-    or "kinematic") into ``out_dir``; ``w`` the torque limits (n,) N m. Returns the files."""
+    or "kinematic") into ``out_dir``; ``w`` the actuators' limits (n,), N m (N for a linear
+    actuator). Returns the files."""
     plt = _plt()
     out_dir = Path(out_dir)
     names = list(dict.fromkeys(name for name, _ in plans))

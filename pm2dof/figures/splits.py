@@ -4,6 +4,7 @@ from pathlib import Path
 import numpy as np
 
 from ..analysis.splits import split_comparison, tau_max_sweep
+from ..core.task import effort_unit
 from ..infra.results import provenance, save_figure
 from .experiment import COLORS, LABELS, _plt
 from .style import legend_outside, log_ticks
@@ -14,7 +15,7 @@ SPLIT_STYLE = {"min_norm": "-", "min_max": "--", "preload": ":"}
 
 
 def sweep_levels(model, speed="high", k=41):
-    """Uniform limits (k,) N*m from 0.7x the min-max split's peak |tau| to 1.1x min-norm's,
+    """Uniform limits (k,) N*m (N for linear actuators) from 0.7x the min-max split's peak |tau| to 1.1x min-norm's,
     on the move ``speed`` at the model's limits: the range where the splits differ."""
     r = split_comparison(model, speeds=[speed], splits=("min_norm", "min_max"))[speed]
     lo = min(r[c]["min_max"]["peak_tau"] for c in r)
@@ -36,7 +37,7 @@ def sweep_figure(plt, model, sw, speed, preload=None):
     a1.set_ylabel("RMSE, eq. 41 (mm)")
     a2.set_ylabel("samples with a clipped torque")
     for ax in (a1, a2):
-        ax.set_xlabel(r"$\tau_{max}$, every actuator (N m)")
+        ax.set_xlabel(rf"$\tau_{{max}}$, every actuator ({effort_unit(model)})")
         ax.grid(alpha=0.3, which="both")
     log_ticks(a1.yaxis)
     pre = model.spec.control["preload"] if preload is None else np.broadcast_to(
@@ -45,7 +46,7 @@ def sweep_figure(plt, model, sw, speed, preload=None):
                  f"limit", fontsize=10)
     a1.set_title("tracking", fontsize=9)
     a2.set_title(r"clipped samples; preload split: $|\tau_i| \geq$ "
-                 + ", ".join(f"{v:g}" for v in pre) + " N m", fontsize=9)
+                 + ", ".join(f"{v:g}" for v in pre) + f" {effort_unit(model)}", fontsize=9)
     legend_outside(fig, [a1], "lower", ncol=2)
     return fig
 

@@ -15,7 +15,8 @@ from ..control.trajectory import line_moves
 from ..core.errors import ArgumentError, SingularityError, WorkspaceError
 
 __all__ = ["BaseParameters", "Identifiability", "identifiability", "base_parameters",
-           "format_identifiability", "inertial_mask", "region_center", "INERTIAL"]
+           "format_identifiability", "inertial_mask", "region_center", "INERTIAL",
+           "parameter_units"]
 
 #: name prefixes of the inertial parameters of a leg (eq. 5: alpha_i, beta_i, gamma_i)
 INERTIAL = ("alpha", "beta", "gamma")
@@ -28,6 +29,49 @@ def inertial_mask(names):
     """Boolean array: which of ``names`` (parameters or base parameters) are inertial (not
     friction)."""
     return np.array([not str(n).startswith(FRICTION) for n in names], dtype=bool)
+
+
+#: units of theta's entries by key: (a revolute leg's, a linear leg's) where they differ
+#: (docs/model-file.md, [nominal]); the platform's keys have no leg
+_UNITS = {"alpha": ("kg m^2", "kg"), "beta": ("kg m^2", "kg m"), "gamma": ("kg m^2", "kg m^2"),
+          "kappa": ("kg m", "kg m"), "fv": ("N m s/rad", "N s/m"), "fc": ("N m", "N"),
+          "fs": ("N m", "N"), "m_p": "kg", "mx_p": "kg m", "my_p": "kg m", "I_p": "kg m^2"}
+
+
+def parameter_units(model, names=None):
+    """The unit of each named entry of theta, by its leg's kind (docs/model-file.md).
+
+    An RRR leg's alpha, beta, gamma are kg m^2, a PRR or RPR leg's alpha kg and beta kg m; a
+    revolute actuator's fv is N m s/rad and fc, fs N m, a linear one's N s/m and N. A base
+    parameter has the unit of the independent entry it is named after (the folded entries
+    come with coefficients in the matching units).
+
+    Parameters
+    ----------
+    model : Model
+    names : sequence of str, optional
+        Entries of ``model.param_names`` (default all of them).
+
+    Returns
+    -------
+    list of str
+        One unit per name, e.g. "kg m^2", "N s/m".
+    """
+    legs = model.spec.legs
+    out = []
+    for name in model.param_names if names is None else names:
+        key = str(name).rstrip("0123456789")
+        unit = _UNITS.get(key)
+        if unit is None:
+            raise ArgumentError(f"{name!r} is not a parameter of theta (known: "
+                                f"{', '.join(_UNITS)} with a leg number)")
+        if isinstance(unit, tuple):
+            idx = str(name)[len(key):]
+            if not idx or not 1 <= int(idx) <= len(legs):
+                raise ArgumentError(f"{name!r}: {key} needs a leg number 1..{len(legs)}")
+            unit = unit[0] if legs[int(idx) - 1].actuator == "revolute" else unit[1]
+        out.append(unit)
+    return out
 
 
 def region_center(model):

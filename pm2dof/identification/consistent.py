@@ -16,7 +16,8 @@ Two stages, each solved by IPOPT:
    theta is a convex cone, so pi* is unique.
 2. Among physical theta with P theta = pi*, the one closest to the nominal theta (Tables
    1-2) in the 2-norm. This fixes the directions the data cannot see (the null space of
-   P: point masses at the common tip booked to one leg or another).
+   P: point masses at a point robot's common tip booked to one leg or another; at a
+   platform's attachment points, booked to a leg or to the platform).
 
 Stage 2 is tried first with pi* = the plain least squares: when it is feasible, the least
 squares is already physical and is kept exactly (stage 1 is skipped).

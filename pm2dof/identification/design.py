@@ -53,20 +53,27 @@ import numpy as np
 
 from ..control.trajectory import line_moves
 from ..core.errors import ArgumentError
-from ..core.task import orientation_length
-from ..infra.progress import bar
+from ..core.task import effort_unit, orientation_length, per_actuator
+from ..infra.progress import Progress, bar
 from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED, joint_speed_floor
 from .signals import FourierExcitation, multisine, trajectory_of, write_excitation
 
 __all__ = ["design_excitation", "regressor_condition", "check_excitation",
            "sample_function", "run_design", "DesignReport", "format_design", "objective_logdet",
-           "random_start", "IPOPT_OPTIONS", "design_provenance", "phi_limits"]
+           "random_start", "IPOPT_OPTIONS", "design_provenance", "phi_limits", "CONVERGED",
+           "STAGE_SECONDS"]
 
 #: IPOPT's options of the design (``max_iter`` is an argument of :func:`design_excitation`);
 #: written to the file's ``[design.ipopt]``.
 IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "tol": 1e-6, "acceptable_tol": 1e-4,
                  "acceptable_iter": 10, "acceptable_obj_change_tol": 1e-7}
+
+#: IPOPT's return statuses of a converged design; any other (Maximum_Iterations_Exceeded,
+#: Restoration_Failed, ...) is written with ``converged = false`` in ``[design]``
+CONVERGED = ("Solve_Succeeded", "Solved_To_Acceptable_Level")
+#: s between two stage lines of IPOPT's iterations when no bar is drawn (stderr not a terminal)
+STAGE_SECONDS = 30.0
 
 
 def _basis(f0, L, t):
@@ -487,11 +494,16 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
         progress(f"IPOPT: {z.numel()} coefficients, objective log det(Phi^T Phi / K) over "
                  f"{samples} samples per period, {len(lbg)} constraints at {constraint_samples} "
                  f"samples per period")
+    # where no bar is drawn (stderr not a terminal, or a plain callable), a stage line every
+    # STAGE_SECONDS instead: a design takes minutes (docs/results-identification.md, per kind)
+    lines = (progress if progress and not (isinstance(progress, Progress) and progress.bars)
+             else None)
     with bar(progress, int(max_iter), "IPOPT", unit="it") as iterations, \
             _noticing_ctrl_c() as ctrl_c:
-        # IPOPT's iterations shown as they happen (about a minute in all); the callback also
-        # stops IPOPT at the iteration after a Ctrl-C
-        callback = _IterationProgress(z.numel(), len(lbg), iterations, to_logdet, ctrl_c)
+        # IPOPT's iterations shown as they happen; the callback also stops IPOPT at the
+        # iteration after a Ctrl-C
+        callback = _IterationProgress(z.numel(), len(lbg), iterations, to_logdet, ctrl_c,
+                                      lines, int(max_iter))
         solver = ca.nlpsol("excitation", "ipopt", {"x": z, "f": objective, "g": ca.vertcat(*g)},
                            {"iteration_callback": callback, "ipopt.print_level": 0,
                             "print_time": False, "ipopt.sb": "yes",
@@ -515,6 +527,7 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
             "cond_before": before[0], "cond_after": after[0],
             "logdet_before": before[1], "logdet_after": after[1],
             "ipopt_status": stats["return_status"], "ipopt_iterations": stats["iter_count"],
+            "converged": stats["return_status"] in CONVERGED,
             "ipopt": dict(IPOPT_OPTIONS), "blas_threads": blas_threads or "default",
             "provenance": design_provenance(model)}
     return FourierExcitation(exc.base_hz, exc.periods, exc.center, exc.a, exc.b, info)
@@ -526,12 +539,16 @@ def _iteration_progress_class():
     class IterationProgress(ca.Callback):
         """CasADi iteration callback: one step of the bar ``iterations`` per IPOPT iteration,
         its postfix log det(Phi^T Phi / K) = -f + ``to_logdet`` (f IPOPT's objective,
-        column-scaled); stops IPOPT (User_Requested_Stop) once ``stop`` is not empty."""
+        column-scaled); with ``lines`` (a callable taking a stage line), one line every
+        :data:`STAGE_SECONDS` s; stops IPOPT (User_Requested_Stop) once ``stop`` is not
+        empty."""
 
-        def __init__(self, nx, ng, iterations, to_logdet, stop=()):
+        def __init__(self, nx, ng, iterations, to_logdet, stop=(), lines=None, max_iter=None):
             ca.Callback.__init__(self)
             self.nx, self.ng, self.iterations, self.to_logdet = nx, ng, iterations, to_logdet
-            self.stop = stop
+            self.stop, self.lines, self.max_iter = stop, lines, max_iter
+            self.t0 = self.last = time.perf_counter()
+            self.count = 0
             self.construct("excitation_progress", {})
 
         def get_n_in(self):
@@ -561,6 +578,12 @@ def _iteration_progress_class():
             logdet = -float(arg[1]) + self.to_logdet
             self.iterations.set_postfix_str(f"objective log det {logdet:.3f}", refresh=False)
             self.iterations.update(1)
+            self.count += 1
+            now = time.perf_counter()
+            if self.lines and now - self.last >= STAGE_SECONDS:
+                self.last = now
+                self.lines(f"IPOPT iteration {self.count - 1} of at most {self.max_iter}: "
+                           f"objective log det {logdet:.3f}, {now - self.t0:.0f} s")
             return [1 if self.stop else 0]
 
     return IterationProgress
@@ -586,7 +609,8 @@ class DesignReport:
     ``excitation`` is the design written to ``out``; ``check`` is :func:`check_excitation`'s
     result against the limits ``v_max``, ``a_max``, ``tau_limit`` and ``sing_min``;
     ``default_cond`` the base regressor's condition number on the default multi-sine of the
-    same length; ``seconds`` the design's wall time."""
+    same length; ``seconds`` the design's wall time; ``effort`` and ``unit`` name the
+    actuators' effort by kind ("torque", N m; "force", N)."""
     out: object
     excitation: object
     check: dict
@@ -596,23 +620,36 @@ class DesignReport:
     a_max: float
     tau_limit: float
     sing_min: float
+    effort: str = "torque"
+    unit: str = "N m"
+
+    @property
+    def converged(self):
+        """Whether IPOPT converged (its status in :data:`CONVERGED`); a design that did not is
+        written all the same, marked ``converged = false`` in the file's ``[design]``."""
+        return bool(self.excitation.info.get("converged", True))
 
 
 def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
                tau_fraction=0.5, phi_v_max=None, phi_a_max=None, phi_range=None, seed=0,
-               progress=None):
+               max_iter=500, progress=None):
     """``pm2dof identify design --out FILE``: design, check at 1 ms, write; returns a
-    :class:`DesignReport`. The phi limits: a platform's (:func:`phi_limits`)."""
+    :class:`DesignReport` (its ``converged``: whether IPOPT converged; the file is written
+    either way, ``converged`` in its ``[design]``). The arguments: :func:`design_excitation`;
+    the phi limits: a platform's (:func:`phi_limits`)."""
     t0 = time.perf_counter()
     try:
         exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
                                 v_max=v_max, a_max=a_max, tau_fraction=tau_fraction,
                                 phi_v_max=phi_v_max, phi_a_max=phi_a_max, phi_range=phi_range,
-                                seed=seed, progress=progress)
+                                seed=seed, max_iter=max_iter, progress=progress)
     except KeyboardInterrupt as stop:          # an interrupted design is not written
         raise KeyboardInterrupt(f"{str(stop) + '; ' if str(stop) else ''}{out} not "
                                 f"written") from None
     seconds = time.perf_counter() - t0
+    if progress:
+        progress(f"IPOPT {exc.info['ipopt_status']} after {exc.info['ipopt_iterations']} "
+                 f"iterations, {seconds:.0f} s; checking the excitation every 1 ms, writing {out}")
     sing_min = max(model.singularity_threshold, model.parallel_singularity_threshold) + 0.1
     tau_limit = tau_fraction * np.max(model.spec.limits["tau_max"])
     chk = check_excitation(model, exc, v_max=v_max, a_max=a_max, tau_limit=tau_limit,
@@ -622,7 +659,9 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
     default = regressor_condition(model, base_parameters(model),
                                   trajectory_of(model, multisine(model, duration=exc.duration)))
     write_excitation(out, exc, model)
-    return DesignReport(out, exc, chk, seconds, default[0], v_max, a_max, tau_limit, sing_min)
+    return DesignReport(out, exc, chk, seconds, default[0], v_max, a_max, tau_limit, sing_min,
+                        per_actuator(model, "torque", "force", "torque or force"),
+                        effort_unit(model))
 
 
 def format_design(r):
@@ -632,7 +671,10 @@ def format_design(r):
     def met(key):
         return " NOT MET" if key in chk["failed"] else ""
 
-    return "\n".join([
+    unconverged = ([] if r.converged else [
+        f"NOT CONVERGED: IPOPT stopped at {i['ipopt_status']} after {i['ipopt_iterations']} "
+        f"iterations; {r.out} holds its last iterate, marked converged = false in [design]"])
+    return "\n".join(unconverged + [
         f"wrote {r.out}: {exc.harmonics} harmonics of {exc.base_hz:g} Hz (up to "
         f"{exc.max_hz:g} Hz), {exc.periods} periods = {exc.duration:g} s; IPOPT "
         f"{i['ipopt_status']} after {i['ipopt_iterations']} iterations, {r.seconds:.0f} s",
@@ -646,7 +688,7 @@ def format_design(r):
         f"multi-sine of excite: {r.default_cond:.4g})",
         f"checked every 1 ms: speed {chk['speed']:.3f} <= {r.v_max:g} m/s{met('speed')}, "
         f"acceleration {chk['acceleration']:.2f} <= {r.a_max:g} m/s^2{met('acceleration')}, "
-        f"torque (Tables 1-2, min-norm) {chk['torque']:.2f} <= {r.tau_limit:g} N m"
+        f"{r.effort} (Tables 1-2, min-norm) {chk['torque']:.2f} <= {r.tau_limit:g} {r.unit}"
         f"{met('torque')}, singularity measures {chk['sing']:.3f} >= {r.sing_min:.3f}"
         f"{met('sing')}, |x - c0| {chk['radius'] * 1e3:.1f} <= {i['radius'] * 1e3:.1f} mm"
         f"{met('radius')}, "

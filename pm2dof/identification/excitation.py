@@ -5,9 +5,11 @@
   its file) are :mod:`.signals`.
 * :func:`excite` runs an excitation on the simulated plant. The plant runs with its truth
   (``[plant]`` of the model file, or ``truth``), its encoders quantise the active angles, and a
-  controller with the nominal model (Tables 1-2) tracks the excitation. The log holds only what
-  a real set-up records: the encoder angles the controller read at t_k (quantised) and the
-  torque it commanded at t_k, held until t_k+1. Nothing of the truth is written into the log.
+  controller with the nominal model (Tables 1-2) tracks the excitation. The log's data are only
+  what a real set-up records: the encoder angles the controller read at t_k (quantised) and the
+  torque it commanded at t_k, held until t_k+1. Its header records the plant that wrote it
+  (:func:`plant_entries`: its theta and a hash of its truth), which the fit uses only for the
+  report's truth column, never for the estimate.
 * :func:`simulated_log` is what ``pm2dof identify excite`` writes and what ``pm2dof identify
   fit`` without a log fits.
 """
@@ -16,17 +18,63 @@ import dataclasses
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.plant import plant_vector
+from ..control.plant import plant_truth, plant_vector, theta_truth
 from ..control.simulate import simulate
 from ..control.trajectory import require_trajectory
 from ..core.errors import ArgumentError
+from ..core.task import per_actuator
 from .log import IdentLog
 from .model_ref import model_entries
 from .signals import DEFAULT_DURATION, Signal, load_excitation, multisine, trajectory_of
 
 __all__ = ["excite", "measured_angles", "excitation_signal", "simulated_log",
-           "model_of_excitation", "run_excite",
-           "format_excite"]
+           "model_of_excitation", "run_excite", "format_excite", "plant_entries",
+           "plant_sha256", "encoder_phrase"]
+
+
+def encoder_phrase(model, quantise=True):
+    """The simulated encoders in words, by each actuator's kind: "131072 counts/rev" (rotary),
+    "1e-06 m per count" (linear), both for mixed actuators, or "exact" (not quantised).
+
+    Parameters
+    ----------
+    model : Model
+    quantise : bool
+        Whether the encoders are quantised.
+    """
+    sensing = model.spec.sensing
+    counts = sensing["encoder_counts_per_rev"]
+    step = float(sensing.get("linear_encoder_resolution", 0.0))
+    rev = f"{int(counts)} counts/rev" if quantise and counts > 0 else "exact"
+    lin = f"{step:g} m per count" if quantise and step > 0 else "exact"
+    return per_actuator(model, rev, lin, f"{rev} (rotary), {lin} (linear)")
+
+
+def plant_sha256(truth):
+    """SHA-256 (hex) of a plant truth (:func:`pm2dof.plant_truth`'s dict): every field's values
+    as float64 in key order. Two truths hash alike iff every field is the same bit for bit."""
+    import hashlib
+    import json
+    canon = {str(k): np.asarray(v, dtype=float).ravel().tolist() for k, v in truth.items()}
+    return hashlib.sha256(json.dumps(canon, sort_keys=True).encode()).hexdigest()
+
+
+def plant_entries(model, truth=None):
+    """The log header's record of the plant that wrote it: ``plant_theta`` (its theta,
+    :func:`pm2dof.control.plant.theta_truth`, as ``name=value`` pairs, each value the shortest
+    decimal that reads back as the same float64) and ``plant_sha256`` (:func:`plant_sha256` of
+    the whole truth, the Stribeck excess and the smoothing included).
+
+    Parameters
+    ----------
+    model : Model
+    truth : dict, optional
+        The plant truth (default the model file's ``[plant]``: :func:`pm2dof.plant_truth`).
+    """
+    truth = plant_truth(model) if truth is None else truth
+    th = theta_truth(model, truth)
+    return {"plant_theta": " ".join(f"{n}={float(v)!r}" for n, v in zip(model.param_names, th)),
+            "plant_sha256": plant_sha256(truth)}
 
 def measured_angles(model, xe, quantise=True, truth=None):
     """The encoder readings (N, n), rad, of true poses ``xe`` (N, m): the generated
@@ -65,7 +113,8 @@ def excite(model, excitation, *, truth=None, quantise=True, controller="apd"):
     IdentLog
         t (N,), qa (N, n) as measured, tau (N, n) as applied; meta names the model
         (:mod:`.model_ref`; a model file by its absolute path until the log is written), the
-        sample period, the controller, the encoders and the excitation band.
+        sample period, the controller, the encoders, each leg's actuator ("revolute" or
+        "prismatic"), the plant (:func:`plant_entries`) and the excitation band.
     """
     if controller not in ("apd", "na"):
         raise ArgumentError(f"controller must be 'apd' or 'na', got {controller!r}")
@@ -78,14 +127,15 @@ def excite(model, excitation, *, truth=None, quantise=True, controller="apd"):
     if r.n_singular or r.n_non_finite:
         raise ArgumentError(f"the excitation run left the safe region ({r.n_singular} singular, "
                             f"{r.n_non_finite} non-finite samples): reduce its amplitude")
-    counts = model.spec.sensing["encoder_counts_per_rev"]
     meta = {**model_entries(model), "n_legs": model.n_legs, "sample_period": trajectory.period,
             "source": "simulated plant ([plant] of the model file)" if truth is None
             else "simulated plant (a given truth)",
             "controller": f"{controller} with Tables 1-2",
-            "encoders": f"{int(counts)} counts/rev" if (quantise and counts > 0) else "exact",
+            "encoders": encoder_phrase(model, quantise),
             "saturated_samples": r.n_saturated,
-            "tracking_rmse_m": f"{r.rmse:.4g}"}
+            "tracking_rmse_m": f"{r.rmse:.4g}",
+            "actuators": ", ".join(leg.actuator for leg in model.spec.legs),
+            **plant_entries(model, truth)}
     if max_hz:
         meta["excitation_max_hz"] = f"{max_hz:.6g}"
     return IdentLog(t=r.t, qa=measured_angles(model, r.xe, quantise, truth), tau=r.tau_a,
@@ -109,10 +159,8 @@ def simulated_log(model, excitation=None, duration=DEFAULT_DURATION, *, quantise
     says what ran. ``excitation``, ``duration``: :func:`excitation_signal`."""
     signal, what = excitation_signal(model, excitation, duration)
     if progress:
-        counts = model.spec.sensing["encoder_counts_per_rev"]
         progress(f"running {what} on the simulated plant ({controller.upper()} tracking, "
-                 f"{f'{int(counts)} counts/rev' if quantise and counts > 0 else 'exact'} "
-                 f"encoders)")
+                 f"{encoder_phrase(model, quantise)} encoders)")
     log = excite(model, signal, quantise=quantise, controller=controller)
     return dataclasses.replace(log, source=f"<simulated run of {what}>")
 

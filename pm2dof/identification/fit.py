@@ -41,7 +41,7 @@ import numpy as np
 
 from ..core.errors import ArgumentError
 from ..core.task import per_actuator
-from .base import inertial_mask
+from .base import inertial_mask, parameter_units
 from .log import LogError, log_poses
 
 __all__ = ["lowpass", "choose_cutoff", "excitation_band", "differentiate", "stack_regressor", "weighted_ls",
@@ -314,37 +314,62 @@ def weighted_ls(Phi, u, lags=None):
             "n_equations": int(flat.size)}
 
 
-def weak_directions(cov, estimate, names, rel=0.1):
+def weak_directions(cov, estimate, names, rel=0.1, units=None):
     """Directions of the base parameters the data cannot determine.
 
     The covariance is made relative: each base parameter is divided by its size, |estimate|
-    but at least 10 % of the largest of its kind (inertial: alpha, beta, gamma; friction),
-    so a parameter near zero is judged against its kind's scale. An eigenvector of that
-    relative covariance whose 2 sigma exceeds ``rel`` (default 10 %) is reported with its
-    dominant parameters.
+    but at least 10 % of the largest |estimate| in the same unit (``units``: a PRR leg's alpha
+    in kg against the platform's m_p, its gamma in kg m^2 against the other gammas and I_p),
+    so a parameter near zero is judged against the scale of its unit, and a small one (a
+    0.004 kg m^2 gamma) is not judged against a large one of another unit (a 1.3 kg alpha).
+    An eigenvector of that relative covariance whose 2 sigma exceeds ``rel`` (default 10 %) is
+    reported with its dominant parameters (coefficient above 0.2 of the largest); so is, on its
+    own, any base parameter whose own 2 sigma exceeds ``rel`` of its size and that none of
+    those directions names.
+
+    Parameters
+    ----------
+    cov : ndarray (r, r)
+        Covariance of the base parameters.
+    estimate : ndarray (r,)
+    names : list of str (r,)
+        For the descriptions.
+    rel : float
+        The largest 2 sigma, relative to the size, that is not reported.
+    units : list of str (r,), optional
+        Each base parameter's unit (:func:`pm2dof.identification.base.parameter_units`);
+        default: every inertial parameter in one group and every friction one in another
+        (right only when they share a unit, as the paper's robot's inertias do).
 
     Returns
     -------
     list of (rel_2sigma, description), largest first
     """
     est = np.abs(np.asarray(estimate, dtype=float))
-    inertial = inertial_mask(names)
+    if units is None:
+        units = ["inertial" if i else "friction" for i in inertial_mask(names)]
+    units = np.asarray(units, dtype=object)
     s = est.copy()
-    for grp in (inertial, ~inertial):
-        if grp.any():
-            s[grp] = np.maximum(est[grp], 0.1 * est[grp].max())
+    for u in set(units):
+        grp = units == u
+        s[grp] = np.maximum(est[grp], 0.1 * est[grp].max())
     s = np.maximum(s, 1e-300)
     lam, V = np.linalg.eigh(cov / np.outer(s, s))
-    out = []
+    out, named = [], set()
     for j in np.argsort(lam)[::-1]:
         r2s = 2 * math.sqrt(max(lam[j], 0.0))
         if r2s <= rel:
             break
         v = V[:, j] / np.abs(V[:, j]).max()
-        terms = [f"{c:+.2f} {n}" for c, n in sorted(zip(v, names), key=lambda z: -abs(z[0]))
+        terms = [(c, n) for c, n in sorted(zip(v, names), key=lambda z: -abs(z[0]))
                  if abs(c) > 0.2]
-        out.append((r2s, " ".join(terms)))
-    return out
+        named.update(n for _, n in terms)
+        out.append((r2s, " ".join(f"{c:+.2f} {n}" for c, n in terms)))
+    # a base parameter weak on its own but below 0.2 in every weak direction listed
+    own = 2 * np.sqrt(np.maximum(np.diag(cov), 0.0)) / s
+    out += [(float(own[k]), f"+1.00 {n}") for k, n in enumerate(names)
+            if own[k] > rel and n not in named]
+    return sorted(out, key=lambda z: -z[0])
 
 
 #: the free choices :func:`model_error` changes, as printed
@@ -574,7 +599,8 @@ def identify_log(model, log, *, base=None, cutoff_hz=None, factor=CUTOFF_FACTOR,
     warnings = []
     if log.ignored:
         warnings.append(f"columns not used: {', '.join(log.ignored)}")
-    for r2s, what in weak_directions(ls["cov"], ls["estimate"], inames):
+    for r2s, what in weak_directions(ls["cov"], ls["estimate"], inames,
+                                     units=parameter_units(model, inames)):
         warnings.append(f"the data do not determine the direction {what} well (±2 sigma = "
                         f"{100 * r2s:.0f} % of its size): excite more, or trust it less")
     frac_slow = st["n_slow"] / max(st["n_candidates"], 1)

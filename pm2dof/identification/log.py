@@ -7,8 +7,10 @@ A log is a table with one row per control sample:
 column         unit      meaning
 =============  ========  ===================================================================
 ``t``          s         sample time, increasing, on a regular grid (period T)
-``qa1..qan``   rad       active (encoder) angles, absolute from +x, as in the model file
-``tau1..taun`` N*m       torque commanded at t and held until the next sample (zero-order hold)
+``qa1..qan``   rad, m    active joints: an angle (rad, absolute from +x) or, for a linear
+                         actuator (PRR, RPR legs), a length (m), as in the model file
+``tau1..taun`` N*m, N    effort commanded at t and held until the next sample (zero-order
+                         hold): a torque, or a linear actuator's force
 ``qb1..qbn``   rad       optional: passive angles, if the robot measures them
 =============  ========  ===================================================================
 
@@ -36,10 +38,11 @@ import numpy as np
 from ..core.errors import ClosureError, InputFileError, WorkspaceError
 from ..core.validate import Problems
 from ..infra.results import write_atomic
+from ..infra.tables import decode_text
 from .model_ref import mismatch, rebase
 
 __all__ = ["LogError", "IdentLog", "read_log", "write_log", "log_poses", "log_folder",
-           "MIN_ROWS"]
+           "header_units", "MIN_ROWS"]
 
 #: fewest rows a log may have (the zero-phase filter needs a few hundred samples to settle)
 MIN_ROWS = 50
@@ -63,9 +66,9 @@ class IdentLog:
     t : ndarray (N,)
         Sample times, s.
     qa : ndarray (N, n)
-        Measured active angles, rad.
+        Measured active joints: rad, or m for a linear actuator.
     tau : ndarray (N, n)
-        Torque applied over [t_k, t_k+1), N*m.
+        Effort applied over [t_k, t_k+1): N*m, or N for a linear actuator.
     qb : ndarray (N, n) or None
         Measured passive angles, rad, if the log has them.
     meta : dict
@@ -207,25 +210,10 @@ def _check_time(pr, t, meta, time_tolerance):
 
 
 def _decode(path, raw):
-    """The text of a CSV log: UTF-8 (a BOM, Excel's "CSV UTF-8", dropped). A ``#`` comment line
-    in another encoding (a logger's Latin-1 ``# operator = Müller``) is read as Latin-1; any
-    other byte that is not UTF-8 (binary junk) is a LogError naming the line."""
-    try:
-        return raw.decode("utf-8-sig")
-    except UnicodeDecodeError:
-        pass
-    lines = raw.split(b"\n")
-    for no, line in enumerate(lines):
-        try:
-            lines[no] = line.decode("utf-8-sig" if no == 0 else "utf-8")
-        except UnicodeDecodeError as exc:
-            if line.lstrip().startswith(b"#"):
-                lines[no] = line.decode("latin-1")
-                continue
-            Problems(path, LogError).stop(
-                None, f"line {no + 1} is not text (byte 0x{line[exc.start]:02x} at column "
-                      f"{exc.start + 1} is not UTF-8): a log is a UTF-8 CSV or a Parquet file")
-    return "\n".join(lines)
+    """The text of a CSV log (:func:`pm2dof.infra.tables.decode_text`, the reader of reference
+    files too): UTF-8, a Latin-1 ``#`` comment line read as such, binary junk a LogError naming
+    the line."""
+    return decode_text(path, raw, LogError, "a log")
 
 
 def _read_csv(path):
@@ -317,6 +305,35 @@ def read_log(path, *, time_tolerance=1e-3):
     return _from_columns(cols, meta, str(path), time_tolerance)
 
 
+def header_units(meta):
+    """The units of a log's columns, for its first comment line: by each leg's actuator when the
+    metadata ``actuators`` lists them ("revolute" or "prismatic", comma-separated, as
+    ``identify excite`` writes it), else by kind in words.
+
+    Parameters
+    ----------
+    meta : dict
+        The log's metadata (str -> str).
+
+    >>> header_units({"actuators": "prismatic, prismatic"})
+    't s, qa m, tau N (held until the next row), qb rad'
+    >>> header_units({"actuators": "revolute, prismatic"})
+    't s, qa1 rad, qa2 m, tau1 N*m, tau2 N (held until the next row), qb rad'
+    """
+    kinds = [k.strip() for k in str(meta.get("actuators", "")).split(",") if k.strip()]
+    if not kinds or not set(kinds) <= {"revolute", "prismatic"}:
+        qa, tau = "qa rad (m: linear actuator)", "tau N*m (N: linear actuator)"
+    elif len(set(kinds)) == 1:
+        lin = kinds[0] == "prismatic"
+        qa, tau = f"qa {'m' if lin else 'rad'}", f"tau {'N' if lin else 'N*m'}"
+    else:
+        qa = ", ".join(f"qa{i + 1} {'m' if k == 'prismatic' else 'rad'}"
+                       for i, k in enumerate(kinds))
+        tau = ", ".join(f"tau{i + 1} {'N' if k == 'prismatic' else 'N*m'}"
+                        for i, k in enumerate(kinds))
+    return f"t s, {qa}, {tau} (held until the next row), qb rad"
+
+
 def write_log(path, log):
     """Write ``log`` (an :class:`IdentLog`) as CSV or Parquet (by the suffix), atomically.
 
@@ -339,8 +356,7 @@ def write_log(path, log):
     suffix = path.suffix.lower()
     if suffix == ".csv":
         buf = io.StringIO()
-        buf.write("# pm2dof identification log: t s, qa rad, tau N*m (held until the next "
-                  "row), qb rad\n")
+        buf.write(f"# pm2dof identification log: {header_units(meta)}\n")
         for k, v in meta.items():
             buf.write(f"# {k} = {v}\n")
         buf.write(",".join(cols) + "\n")

@@ -4,14 +4,15 @@
 Each seed draws a plant truth around the model file's ``[plant]`` (every bare-link inertia,
 viscous, Coulomb and Stribeck coefficient scaled by 1 + 0.1 N(0, 1), the payload mass
 uniform in [0, 0.5] kg) and encoder noise (Gaussian, ``noise_counts`` counts rms, added to the
-logged angles on top of the 17-bit quantisation the controller sees), runs the excitation on
+logged joints on top of the quantisation the controller sees: counts of the 17-bit rotary
+encoders, or of a linear actuator's encoder, :func:`encoder_steps`), runs the excitation on
 that plant (APD with Tables 1-2 tracking), identifies from the log alone, and compares with
 the truth:
 
 * the inertial base parameters as a vector (relative 2-norm of the error), and each one
   larger than 10 % of the largest (relative error);
 * friction (fv, fc): largest relative error;
-* the actuator torque the identified (physical) theta predicts over random states, against
+* the actuator effort the identified (physical) theta predicts over random states, against
   the plant's own (its friction with Coulomb smoothing and the Stribeck excess): relative
   2-norm over the states;
 * whether each base parameter's truth lies within its printed interval, ±(2 sigma + model
@@ -23,7 +24,8 @@ import math
 import numpy as np
 
 from ..control.plant import plant_truth, theta_truth
-from ..core.errors import ArgumentError
+from ..core.errors import ArgumentError, SingularityError, WorkspaceError
+from ..core.task import per_actuator
 from ..infra.progress import bar
 from .base import base_parameters, inertial_mask, region_center
 from .excitation import excite
@@ -31,7 +33,8 @@ from .fit import identify_log
 
 __all__ = ["random_truth", "plant_task_force", "torque_error", "monte_carlo",
            "format_monte_carlo", "substep_sensitivity", "format_seeded_table3",
-           "run_monte_carlo", "monte_carlo_json", "untrusted", "TARGETS"]
+           "run_monte_carlo", "monte_carlo_json", "untrusted", "check_before_fits",
+           "encoder_steps", "TARGETS"]
 
 #: the issue's targets: inertial vector, each large inertial parameter, friction, torque, coverage
 TARGETS = {"inertial_vector": 0.05, "inertial_each": 0.05, "friction": 0.03, "torque": 0.05,
@@ -68,16 +71,52 @@ def torque_error(model, theta, truth, n=400, seed=0, radius=0.05, speed=0.3, acc
     """Relative 2-norm of the min-norm actuator torque predicted by ``theta`` minus the plant's,
     over ``n`` random states: positions uniform in a disc of ``radius`` m around the middle of
     the model's first move, velocities N(0, speed) m/s, accelerations N(0, accel) m/s^2 per
-    axis."""
+    axis. A platform's phi is uniform within the design's ``phi_range`` of the middle's phi
+    (:func:`pm2dof.identification.design.phi_limits`), its rate N(0, speed / l) rad/s and
+    acceleration N(0, accel / l) rad/s^2, l the platform's radius (the rotation alone moves
+    the attachment points as fast as the (x, y) draws). A state outside the workspace or
+    too close to a singularity is drawn again.
+
+    Parameters
+    ----------
+    model : Model
+    theta : ndarray (p,)
+        The identified theta.
+    truth : dict
+        The plant truth (:func:`pm2dof.plant_truth`'s dict).
+    n : int
+        Number of states.
+    seed, radius, speed, accel :
+        The states' draw, as above.
+    """
+    from ..core.task import orientation_length
+    from .design import phi_limits
     rng = np.random.default_rng(seed)
-    c = region_center(model)
+    c = np.asarray(region_center(model), dtype=float)
+    platform = model.dof == 3
+    if platform:
+        l, turn = orientation_length(model), phi_limits(model)["phi_range"]
     num = den = 0.0
+    tries, budget = 0, 100 * (n + 1)
     while n > 0:
-        r, phi = radius * math.sqrt(rng.uniform()), rng.uniform(0, 2 * math.pi)
-        x = c + r * np.array([math.cos(phi), math.sin(phi)])
-        q = model.ik(x)
+        tries += 1
+        if tries > budget:
+            raise ArgumentError(f"torque_error: {tries - 1} random states around {c.tolist()} "
+                                f"fell outside the workspace of {model.name!r} or too close to "
+                                f"a singularity")
+        r, ang = radius * math.sqrt(rng.uniform()), rng.uniform(0, 2 * math.pi)
+        x = c.copy()
+        x[:2] += r * np.array([math.cos(ang), math.sin(ang)])
+        if platform:
+            x[2] += rng.uniform(-turn, turn)
         v, a = rng.normal(0, speed, 2), rng.normal(0, accel, 2)
-        S = model.S(q)
+        if platform:
+            v, a = np.append(v, rng.normal(0, speed / l)), np.append(a, rng.normal(0, accel / l))
+        try:
+            q = model.ik(x)
+            S = model.S(q)
+        except (WorkspaceError, SingularityError):
+            continue
         split = S @ np.linalg.inv(S.T @ S)                     # eq. 21
         tp = split @ plant_task_force(model, truth, q, v, a)
         ti = split @ (model.Y(q, v, v, a) @ theta)
@@ -87,25 +126,72 @@ def torque_error(model, theta, truth, n=400, seed=0, radius=0.05, speed=0.3, acc
     return math.sqrt(num / den)
 
 
-def _one(model, base, traj, truth, rng, noise_counts, identify_kw):
-    log = excite(model, traj, truth=truth)
-    if noise_counts > 0:
-        step = 2 * math.pi / model.spec.sensing["encoder_counts_per_rev"]
-        log = type(log)(t=log.t, qa=log.qa + noise_counts * step * rng.normal(size=log.qa.shape),
-                        tau=log.tau, meta=log.meta)
-    res = identify_log(model, log, base=base, **identify_kw)
+def _metrics(model, base, truth, estimate, interval, theta0, torque_states=400):
+    """The per-seed numbers of :func:`monte_carlo` from one identification's ``estimate`` and
+    ``interval`` (r,) and ``theta0`` (p,)."""
     pi = base.fold(theta_truth(model, truth))
     inert = base.inertial
-    err = res.estimate - pi
+    err = estimate - pi
     large = inert & (np.abs(pi) > 0.1 * np.abs(pi[inert]).max())
-    return {"estimate": res.estimate, "truth": pi, "std": res.std,
-            "interval": res.interval,
+    return {"estimate": estimate, "truth": pi, "interval": interval,
             "inertial_vector": float(np.linalg.norm(err[inert]) / np.linalg.norm(pi[inert])),
             "inertial_each": float(np.max(np.abs(err[large] / pi[large]))),
             "friction": float(np.max(np.abs(err[~inert] / pi[~inert]))),
-            "torque": torque_error(model, res.theta0, truth),
-            "covered": np.abs(err) <= res.interval, "theta0": res.theta0,
-            "large": large}
+            "torque": torque_error(model, theta0, truth, n=torque_states),
+            "covered": np.abs(err) <= interval, "theta0": theta0, "large": large}
+
+
+def check_before_fits(model, base):
+    """Everything :func:`monte_carlo` computes after each fit, run once on the nominal theta
+    and the model file's [plant] (two torque states) before any excitation runs, so that a
+    shape that does not fit the model (a platform's phi, a gravity model's kappa) fails in
+    the first second instead of after every fit.
+
+    Parameters
+    ----------
+    model : Model
+    base : BaseParameters
+    """
+    nominal = np.asarray(model.theta_nominal, dtype=float)
+    _metrics(model, base, plant_truth(model), base.fold(nominal), np.zeros(base.r), nominal,
+             torque_states=2)
+
+
+def encoder_steps(model):
+    """(n,) one encoder count of each actuator: 2 pi / ``[sensing] encoder_counts_per_rev``
+    rad for a revolute one, ``[sensing] linear_encoder_resolution`` m for a linear one (0 for
+    exact encoders).
+
+    Parameters
+    ----------
+    model : Model
+    """
+    sensing = model.spec.sensing
+    counts = sensing["encoder_counts_per_rev"]
+    return np.array([(2 * math.pi / counts if counts > 0 else 0.0) if leg.actuator == "revolute"
+                     else float(sensing.get("linear_encoder_resolution", 0.0))
+                     for leg in model.spec.legs])
+
+
+def _encoders(model):
+    """The encoders in words: "17-bit encoders", "1e-06 m linear encoders", or both."""
+    sensing = model.spec.sensing
+    counts = sensing["encoder_counts_per_rev"]
+    bits = math.log2(counts) if counts > 0 else 0
+    rev = (f"{bits:.0f}-bit encoders" if bits.is_integer() else f"{counts:g} counts/rev encoders")
+    lin = f"{float(sensing.get('linear_encoder_resolution', 0)):g} m linear encoders"
+    return per_actuator(model, rev, lin, f"{rev} and {lin}")
+
+
+def _one(model, base, traj, truth, rng, noise_counts, identify_kw):
+    log = excite(model, traj, truth=truth)
+    if noise_counts > 0:
+        step = encoder_steps(model)
+        log = type(log)(t=log.t, qa=log.qa + noise_counts * step * rng.normal(size=log.qa.shape),
+                        tau=log.tau, meta=log.meta)
+    res = identify_log(model, log, base=base, **identify_kw)
+    return {**_metrics(model, base, truth, res.estimate, res.interval, res.theta0),
+            "std": res.std}
 
 
 def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", identify_kw=None,
@@ -132,6 +218,7 @@ def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", iden
         the medians and 90th percentiles.
     """
     base = base_parameters(model)
+    check_before_fits(model, base)
     runs = []
     with bar(progress, seeds, "Monte Carlo", unit="seed") as done:
         for s in range(seeds):
@@ -142,6 +229,8 @@ def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", iden
                                  refresh=False)
             done.update(1)
     out = {"seeds": seeds, "noise_counts": noise_counts, "truth": truth,
+           "encoders": _encoders(model),
+           "effort": per_actuator(model, "torque", "force", "torque and force"),
            "names": base.labels(),
            "coverage": np.mean([r["covered"] for r in runs], axis=0),
            "large_inertial": runs[0]["large"]}
@@ -186,20 +275,23 @@ def untrusted(names, coverage, err, interval, inertial):
 def format_monte_carlo(mc):
     """The target table of a :func:`monte_carlo` run."""
     lines = [f"Monte Carlo over {mc['seeds']} seeds ({'random plant truths' if mc['truth'] == 'random' else 'the model file [plant]'}, "
-             f"17-bit encoders + {mc['noise_counts']:g} count rms noise in the log)",
+             f"{mc.get('encoders', '17-bit encoders')} + {mc['noise_counts']:g} count rms "
+             f"noise in the log)",
              f"{'target':52s} {'median':>9s} {'90 %':>9s} {'max':>9s} {'met in':>7s}"]
     what = {"inertial_vector": "inertial base parameters, vector, within 5 %",
             "inertial_each": "each inertial base parameter > 10 % of max, within 5 %",
             "friction": "friction (fv, fc) within 3 %",
-            "torque": "torque predicted over random states within 5 %"}
+            "torque": f"{mc.get('effort', 'torque')} predicted over random states within 5 %"}
     for k, text in what.items():
         d = mc[k]
         lines.append(f"{text:52s} {100 * d['median']:8.2f}% {100 * d['p90']:8.2f}% "
                      f"{100 * d['max']:8.2f}% {100 * d['met_fraction']:6.0f}%")
     lines.append("truth within the printed interval +-(2 sigma + model error) (target >= 90 % of "
                  "seeds), per base parameter:")
+    wn = max(44, *(len(n) for n in mc["names"]))
     for n, c in zip(mc["names"], mc["coverage"]):
-        lines.append(f"  {n[:44]:44s} {100 * c:5.0f} %{'' if c >= TARGETS['coverage'] else '  (below 90 %)'}")
+        lines.append(f"  {n:{wn}s} {100 * c:5.0f} %"
+                     f"{'' if c >= TARGETS['coverage'] else '  (below 90 %)'}")
     for n, why in mc["untrusted"].items():
         lines.append(f"untrusted interval: {n}: {why}")
     return "\n".join(lines)

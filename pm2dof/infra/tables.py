@@ -13,14 +13,45 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["read_columns", "TABLE_SUFFIXES"]
+from ..core.validate import Problems
+
+__all__ = ["read_columns", "decode_text", "TABLE_SUFFIXES"]
 
 #: file suffix -> format
 TABLE_SUFFIXES = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
 
 
-def _csv_columns(path, error):
-    lines = Path(path).read_text(encoding="utf-8-sig").splitlines()   # Excel's BOM dropped
+def decode_text(path, raw, error, what="a table"):
+    """The text of a CSV file's bytes ``raw``: UTF-8 (a BOM, Excel's "CSV UTF-8", dropped). A
+    ``#`` comment line in another encoding (a logger's Latin-1 ``# operator = Müller``) is read
+    as Latin-1; any other byte that is not UTF-8 (binary junk) raises ``error`` (an
+    :class:`~pm2dof.core.errors.InputFileError` subclass) in one line naming the file, the
+    line, the byte and its column, and saying that ``what`` ("a log", "a reference") is a UTF-8
+    CSV or a Parquet file. The one reader of CSV text for logs and reference files."""
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        pass
+    lines = raw.split(b"\n")
+    for no, line in enumerate(lines):
+        try:
+            lines[no] = line.decode("utf-8-sig" if no == 0 else "utf-8")
+        except UnicodeDecodeError as exc:
+            if line.lstrip().startswith(b"#"):
+                lines[no] = line.decode("latin-1")
+                continue
+            Problems(path, error).stop(
+                None, f"line {no + 1} is not text (byte 0x{line[exc.start]:02x} at column "
+                      f"{exc.start + 1} is not UTF-8): {what} is a UTF-8 CSV or a Parquet file")
+    return "\n".join(lines)
+
+
+def _csv_columns(path, error, what):
+    try:
+        raw = Path(path).read_bytes()
+    except OSError as exc:
+        raise error(f"{path}: cannot read the file: {exc.strerror or exc}") from None
+    lines = decode_text(path, raw, error, what).splitlines()
     body = [(k + 1, line) for k, line in enumerate(lines)
             if line.strip() and not line.lstrip().startswith("#")]
     if not body:
@@ -70,7 +101,7 @@ def _parquet_columns(path, error):
     return list(table.column_names), cols
 
 
-def read_columns(path, error):
+def read_columns(path, error, what="a table"):
     """(column names in file order, {name: float64 array}) of the table at ``path``.
 
     Parameters
@@ -80,7 +111,10 @@ def read_columns(path, error):
     error : type
         The exception class raised, with one line naming the file and, where it applies, the
         row and the column: a missing file, another suffix, a repeated or empty column name,
-        ragged CSV rows, a cell that is not a number, NaN or infinity, no data rows.
+        ragged CSV rows, a cell that is not a number, NaN or infinity, no data rows, a CSV
+        line that is not text (:func:`decode_text`).
+    what : str
+        What the file is, for the message about bytes that are not text ("a reference").
     """
     path = Path(path)
     kind = TABLE_SUFFIXES.get(path.suffix.lower())
@@ -88,7 +122,7 @@ def read_columns(path, error):
         raise error(f"{path}: unknown table format {path.suffix!r} (use .csv or .parquet)")
     if not path.is_file():
         raise error(f"{path}: no such file")
-    header, cols, lines = _csv_columns(path, error) if kind == "csv" else (
+    header, cols, lines = _csv_columns(path, error, what) if kind == "csv" else (
         *_parquet_columns(path, error), None)
     empty = [k + 1 for k, h in enumerate(header) if not h]
     if empty:

@@ -7,7 +7,8 @@
 * :mod:`.kinematic` -- :func:`plan_kinematic`: the S-curve of pm2dof.control along a path;
 * :mod:`.stages`, :mod:`.grid`, :mod:`.topp` -- :func:`plan_time_optimal`: time-optimal under
   torque limits, friction included, in generated C (:mod:`.grid`: the grid refined in place);
-* :mod:`.smooth` -- :func:`plan_smooth`: torque-rate-limited near-time-optimal (CasADi/IPOPT);
+* :mod:`.smooth` -- :func:`plan_smooth`: torque-rate-limited near-time-optimal (CasADi/IPOPT;
+  :mod:`.watch` its progress while IPOPT runs, and Ctrl-C);
 * :mod:`.plan` -- :class:`Plan`, the sampled :class:`pm2dof.Trajectory`;
 * :mod:`.torques` -- inverse dynamics along a timed path (Me, Ce, StF, then the split);
 * :mod:`.pathfile` -- path files (TOML) for ``pm2dof plan``, and :func:`model_move_path`: a model

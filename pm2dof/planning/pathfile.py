@@ -29,7 +29,10 @@ l (m, :func:`pm2dof.core.task.orientation_length`): the caller passes the model'
 A shipped path is named by its stem (``pm2dof plan --path pick_and_place``); anything with a
 ``/`` or ending in ``.toml`` is a file. A bad file is one :class:`PathFileError` (a
 :class:`pm2dof.PlanError`) naming the file and listing every problem, each with its key and
-reason, segments numbered from 1, as model and study files (:class:`pm2dof.core.validate.Problems`).
+reason, segments numbered from 1, as model and study files (:class:`pm2dof.core.validate.Problems`):
+every unknown or missing key and every value its constructor would refuse (a misspelt key hides
+no bad value beside it); the checks between a segment's values (a blend that does not fit, equal
+angles) and the joins between segments once its values are right.
 """
 from dataclasses import dataclass
 from pathlib import Path
@@ -39,7 +42,7 @@ import numpy as np
 from ..core.errors import InputFileError, PlanError
 from ..core.task import orientation_length as model_orientation_length
 from ..core.validate import Problems, entry
-from .paths import TaskPath, gap_message
+from .paths import TaskPath, _array, _number, _point, gap_message
 
 __all__ = ["SHIPPED_PATHS", "shipped_paths", "resolve_path_file", "read_path_file",
            "model_move_path", "PathFileError", "NamedPath"]
@@ -52,6 +55,45 @@ _SEGMENTS = {"line": {"start": "p0", "end": "p1"},
              "polyline": {"points": "points", "blend_radius": "blend_radius"},
              "spline": {"waypoints": "waypoints"}}
 _OPTIONAL = {"blend_radius", "phi"}
+
+
+def _points(name, value):
+    """``value`` as an (m, 2) or (m, 3) array of finite numbers, m >= 2; PlanError otherwise
+    (as the constructors: a bool, a text or a complex number is no coordinate)."""
+    want = "a list of two or more points [x, y] or [x, y, phi] (m, rad)"
+    P = _array(name, value, want)
+    if P.ndim != 2 or P.shape[1] not in (2, 3) or len(P) < 2 or not np.isfinite(P).all():
+        raise PlanError(f"{name} must be {want}, got {value!r}")
+    return P
+
+
+#: each segment key's own check, the one its TaskPath constructor makes (PlanError "<name>
+#: must be ..."): run on every key a segment gives, so that one bad key hides no other
+_VALUE_CHECKS = {
+    "start": lambda v: _point("start", v, (2, 3)),
+    "end": lambda v: _point("end", v, (2, 3)),
+    "center": lambda v: _point("center", v),
+    "radius": lambda v: _number("radius (m)", v, positive=True),
+    "angle0": lambda v: _number("angle0 (rad)", v),
+    "angle1": lambda v: _number("angle1 (rad)", v),
+    "phi": lambda v: _point("phi", v, want="[phi0, phi1]: the orientation at the start and "
+                            "the end, two finite angles in rad"),
+    "points": lambda v: _points("points", v),
+    "blend_radius": lambda v: _number("blend_radius (m)", v, nonnegative=True),
+    "waypoints": lambda v: _points("waypoints", v),
+}
+
+
+def _check_values(pr, kind, seg, label):
+    """One problem per key of segment ``seg`` (a ``kind`` segment, numbered by ``label``)
+    whose value its constructor would refuse, named ``segments.<key> (<label>)``: every
+    bad value, whatever else is wrong with the segment (a misspelt or missing key)."""
+    for key in _SEGMENTS[kind]:
+        if key in seg:
+            try:
+                _VALUE_CHECKS[key](seg[key])
+            except PlanError as exc:
+                pr.add(entry(f"segments.{key}", label), str(exc))
 
 
 def shipped_paths():
@@ -175,8 +217,11 @@ def read_path_file(ref, relative_to=None, orientation_length=None):
         if kind is None:
             continue
         keys = _SEGMENTS[kind]
-        if not pr.keys("segments", seg, {"kind", *keys},
-                       [k for k in keys if k not in _OPTIONAL], label=label):
+        before = len(pr)
+        pr.keys("segments", seg, {"kind", *keys}, [k for k in keys if k not in _OPTIONAL],
+                label=label)
+        _check_values(pr, kind, seg, label)
+        if len(pr) > before:            # the constructor would stop at the first of them
             continue
         if ell is None and _has_orientation(kind, seg) and "orientation_length" not in head:
             pr.add(entry("segments", label), "an orientation (x, y, phi) needs the orientation "

@@ -120,11 +120,21 @@ class Plan:
         The maximum-velocity curve: the largest s_d (m/s) at which some s_dd keeps every torque
         within the limits (the kinematic plan: v_max). 0 at a point where only rest is feasible.
     tau : ndarray (K, n) or None
-        Actuator torques of the split at the grid points, N m (the model's theta).
+        Actuator efforts of the split at the grid points, N m (N for a linear actuator; the
+        model's theta). Where the path speed is 0 (the two ends, an interior stop) friction is
+        the one-sided limit s_d -> 0+, the physical value as the robot starts or stops: its
+        Coulomb term opposes the motion along the path (at the start and at an interior stop
+        the motion that leaves the point, at the end the motion that arrives).
+        ``Model.inverse_dynamics`` at that state (velocity 0) takes sign(0) = 0, no Coulomb
+        term, and differs by the Coulomb friction through the split: on the paper's robot by
+        up to 0.57 N m at a rest point of the shipped paths (1.9 % of tau_max = 30 N m, 9.5 %
+        at 6 N m), on ``rrr4_platform`` 0.21 N m (1.0 % of its 20 N m); with a smoothed sign
+        (``friction = "smooth_sign"``) the two agree (docs/using-planning.md).
     tau_peak : ndarray (n,) or None
-        max_k |tau_k,i|, N m.
+        max_k |tau_k,i|, N m (N for a linear actuator).
     tau_max : ndarray (n,) or None
-        The limits the plan respects: the model's (or given) tau_max times ``margin``, N m.
+        The limits the plan respects: the model's (or given) tau_max times ``margin``, N m (N
+        for a linear actuator).
     margin : float
     trajectory : Trajectory
         The motion sampled at ``trajectory.period`` (the model's), ready for ``simulate`` and

@@ -24,11 +24,13 @@ import time
 import numpy as np
 
 from ..core.errors import PlanError
+from ..core.task import per_actuator
 from .check import require
 from .plan import PathProfile, Plan, grid_times, sample
 from .problem import PlanProblem
 from .stages import limits, params, stages
 from .topp import plan_time_optimal
+from .watch import iteration_watch, noticing_ctrl_c
 
 __all__ = ["plan_smooth", "RISE_TIME", "MAX_ITER"]
 
@@ -48,8 +50,13 @@ def _friction(problem, stage, speeds):
     return out
 
 
+def _rate_unit(model):
+    """The unit of the actuators' effort rates, for messages: N m/s, N/s (linear actuators)."""
+    return per_actuator(model, "N m/s", "N/s", "N m/s or N/s")
+
+
 def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1.0, grid=200,
-                tau_rate=None, max_iter=1000):
+                tau_rate=None, max_iter=1000, progress=None):
     """A near-time-optimal traversal of ``path`` whose torques change at a limited rate.
 
     Parameters
@@ -57,10 +64,16 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     model, path, tau_max, split, theta, margin, grid
         As :func:`plan_time_optimal` (grid: fewer points, IPOPT's cost grows with it).
     tau_rate : float or array_like (n,), optional
-        Largest |d tau_i / dt|, N m/s, > 0 (default tau_max * margin / RISE_TIME: a full swing
-        in 20 ms).
+        Largest |d tau_i / dt|, N m/s (N/s for a linear actuator), > 0 (default tau_max *
+        margin / RISE_TIME: a full swing in 20 ms).
     max_iter : int
         IPOPT's iteration limit, 1 to MAX_ITER = 100000.
+    progress : callable, optional
+        Takes one-line messages (:class:`pm2dof.infra.progress.Progress` or any callable):
+        the problem's size before IPOPT starts, IPOPT's iterations while it runs (a bar on a
+        terminal, else a line every :data:`pm2dof.planning.watch.LINE_EVERY` s with the
+        iteration and the elapsed time) and its status, iterations and time when it ends.
+        None: silent.
 
     Returns
     -------
@@ -73,6 +86,10 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     PlanError
         Bad arguments (as :func:`plan_time_optimal`; a max_iter or tau_rate out of range,
         checked before IPOPT runs), or IPOPT finds no solution.
+    KeyboardInterrupt
+        Ctrl-C while IPOPT runs: IPOPT is stopped at its next iteration (it would otherwise
+        report the interrupt as ``NonIpopt_Exception_Thrown``, a failure of the solver) and no
+        plan is returned; the message says after how many iterations.
     """
     t0 = time.perf_counter()
     require(model, path)
@@ -88,8 +105,8 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     except (TypeError, ValueError):
         rate = np.full(n, np.nan)
     if rate.shape != (n,) or not (np.isfinite(rate).all() and (rate > 0).all()):
-        raise PlanError(f"tau_rate must be one value or {n} finite rates > 0 N m/s, got "
-                        f"{tau_rate!r}")
+        raise PlanError(f"tau_rate must be one value or {n} finite rates > 0 "
+                        f"{_rate_unit(model)}, got {tau_rate!r}")
     import casadi as ca
     strict = plan_time_optimal(model, path, tau_max, split, theta, margin, grid)
     s = strict.s
@@ -150,18 +167,32 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
         opti.subject_to(y[int(k)] == 0)
     opti.minimize(ca.sum1(2 * delta / (y[1:] + y[:-1] + 1e-12)))
     opti.set_initial(y, 0.9 * strict.sdot)
-    opti.solver("ipopt", {"print_time": False},
-                {"print_level": 0, "max_iter": int(max_iter), "tol": 1e-8, "sb": "yes"})
+    what = f"smoothing ({split})"
+    if progress is not None:
+        progress(f"{what}: IPOPT on {K} grid points, {opti.nx} variables, {opti.ng} "
+                 f"constraints (friction {'affine, exact' if affine else 'by finite differences'})")
     t1 = time.perf_counter()
-    try:
-        sol = opti.solve()
-        status = "Solve_Succeeded"
-    except RuntimeError:
-        sol, status = opti.debug, opti.stats().get("return_status", "failed")
+    with noticing_ctrl_c() as ctrl_c:
+        watch = iteration_watch(opti.nx, opti.ng, progress, ctrl_c, what, max_iter)
+        opti.solver("ipopt", {"print_time": False, "iteration_callback": watch},
+                    {"print_level": 0, "max_iter": int(max_iter), "tol": 1e-8, "sb": "yes"})
+        try:
+            sol = opti.solve()
+            status = "Solve_Succeeded"
+        except RuntimeError:
+            sol, status = opti.debug, opti.stats().get("return_status", "failed")
+        finally:
+            watch.close()
     solve_s = time.perf_counter() - t1
+    iterations = int(opti.stats().get("iter_count", -1))
+    if ctrl_c or status == "User_Requested_Stop":
+        raise KeyboardInterrupt(f"IPOPT stopped after {iterations} iterations, {solve_s:.1f} s; "
+                                f"no smoothed plan")
+    if progress is not None:
+        progress(f"{what}: IPOPT {status} after {iterations} iterations, {solve_s:.1f} s")
     if not str(status).startswith(("Solve_Succeeded", "Solved_To_Acceptable")):
         raise PlanError(f"plan_smooth: IPOPT did not converge ({status}) on {K} grid points "
-                        f"with tau_rate {rate.tolist()} N m/s")
+                        f"with tau_rate {rate.tolist()} {_rate_unit(model)}")
     sdot = np.maximum(np.asarray(sol.value(y), dtype=float).ravel(), 0.0)
     sdot[stops] = 0.0
     x = sdot ** 2
@@ -171,13 +202,12 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     tau_v = np.asarray(sol.value(tau), dtype=float).reshape(K, n)
     profile = PathProfile(s, sdot, sdd, t)
     traj = sample(path, profile, model.spec.sensing["sample_period"])
-    stats = opti.stats()
     return Plan(path=path, method="smooth", split=split, duration=float(t[-1]), s=s, sdot=sdot,
                 sddot=sdd, t=t, max_velocity=strict.max_velocity, tau=tau_v,
                 tau_peak=np.abs(tau_v).max(axis=0), tau_max=tau_lim, margin=float(margin),
                 trajectory=traj, profile=profile, compute_time_s=time.perf_counter() - t0,
                 info={"grid": K, "theta": th.tolist(), "strict_duration": strict.duration,
                       "tau_max_actuators": strict.info["tau_max_actuators"],
-                      "ipopt_status": str(status), "iterations": int(stats.get("iter_count", -1)),
+                      "ipopt_status": str(status), "iterations": iterations,
                       "solve_time_s": solve_s, "tau_rate": rate.tolist(),
                       "friction": "affine, exact" if affine else "casadi.external, FD"})

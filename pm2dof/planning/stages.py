@@ -12,6 +12,7 @@ import numbers
 import numpy as np
 
 from ..core.errors import PlanError
+from ..core.task import effort_unit
 from .check import first_bad, raise_at
 
 __all__ = ["SPLITS", "GRID_MAX", "grid_points", "limits", "stages", "point_stages", "params",
@@ -67,9 +68,9 @@ def grid_points(path, grid):
 
 
 def limits(model, tau_max, margin):
-    """The torque limits the plan may use, tau_max * margin (n,), N m, checked: tau_max
-    positive and finite, 0 < margin <= 1 (a margin above 1 would plan beyond the motors'
-    limits: pass a larger tau_max instead)."""
+    """The torque limits the plan may use, tau_max * margin (n,), N m (N for a linear
+    actuator), checked: tau_max positive and finite, 0 < margin <= 1 (a margin above 1 would
+    plan beyond the motors' limits: pass a larger tau_max instead)."""
     n = model.n_legs
     try:
         m = float(margin)
@@ -79,14 +80,16 @@ def limits(model, tau_max, margin):
         raise PlanError(f"margin must be a number in (0, 1], the fraction of tau_max the plan "
                         f"may use (< 1 leaves headroom for feedback), got {margin!r}")
     tau = model.spec.limits["tau_max"] if tau_max is None else tau_max
+    unit = effort_unit(model)
     try:
         tau = np.array(tau, dtype=float).ravel()
     except (TypeError, ValueError):
-        raise PlanError(f"tau_max must be {n} torques in N m, got {tau_max!r}") from None
+        raise PlanError(f"tau_max must be {n} actuator limits in {unit}, got {tau_max!r}") \
+            from None
     if tau.size == 1:
         tau = np.full(n, tau[0])
     if tau.shape != (n,) or not np.isfinite(tau).all() or (tau <= 0).any():
-        raise PlanError(f"tau_max must be one value or {n} finite torques > 0 N m (one per "
+        raise PlanError(f"tau_max must be one value or {n} finite limits > 0 {unit} (one per "
                         f"actuator), got {np.asarray(tau_max).tolist()}")
     return tau * m
 

@@ -72,8 +72,9 @@ def layouts(n: int) -> dict:
     -------
     dict of str -> pm2dof.core.layout.Layout
         ``ctrl_state`` (xe_prev 2, v 2, theta_hat p); ``na_params`` (Kd 2, Q 2, Gamma p,
-        T, vel_alpha, sing_threshold, parallel_sing_threshold, tau_max n, preload_sign n,
-        preload n, closure_tol); ``apd_params`` and ``ctc_params`` (Kp 2, Kv 2, and the same);
+        freeze_saturated (1: theta_hat held on a saturated sample), T, vel_alpha,
+        sing_threshold, parallel_sing_threshold, tau_max n, preload_sign n, preload n,
+        closure_tol); ``apd_params`` and ``ctc_params`` (Kp 2, Kv 2, and the same);
         ``lqr_params`` (the same without gains); the reference steps are the
         min_norm split (eq. 21; tests/control/test_splits.py checks the other splits); ``plant`` (alpha, beta, gamma, fv, fc, fs
         each n, stribeck_velocity, coulomb_smoothing_velocity, encoder_step);
@@ -86,7 +87,7 @@ def layouts(n: int) -> dict:
     state = [("xe_prev", 2), ("v", 2), ("theta_hat", p)]
     fields = {
         "ctrl_state": state,
-        "na_params": [("Kd", 2), ("Q", 2), ("Gamma", p)] + common,
+        "na_params": [("Kd", 2), ("Q", 2), ("Gamma", p), ("freeze_saturated", 1)] + common,
         "apd_params": [("Kp", 2), ("Kv", 2)] + common,
         "ctc_params": [("Kp", 2), ("Kv", 2)] + common,
         "lqr_params": common,
@@ -207,7 +208,9 @@ def _step(law: str, g: Any, state, qa, xd, xd_dot, xd_ddot, params, project=Fals
     else:
         status = Status.SATURATED if np.max(np.abs(tau) - tau_max) > 0 else Status.OK
         tau_out = np.minimum(np.maximum(tau, -tau_max), tau_max)
-        theta_out = theta_next
+        # NA's freeze_saturated: no update on a saturated sample (0: the paper's law)
+        frozen = status == Status.SATURATED and P.get("freeze_saturated", [0.0])[0] != 0
+        theta_out = theta if frozen else theta_next
     if not (finite and consistent):
         xe, v = st["xe_prev"].copy(), st["v"].copy()
     state_next = np.concatenate([xe, v, theta_out])      # ctrl_state layout

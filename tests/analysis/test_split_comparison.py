@@ -66,7 +66,7 @@ def test_zero_preload_rows_say_what_they_count(capsys):
     actuator at the limit: the table must say so, and its margin column shows the reversal."""
     assert main(["splits", "--tau-max", "6.0"]) == 0
     out = capsys.readouterr().out
-    assert "every tau_i keeps the sign (+, +, +) with |tau_i| >= [0.0, 0.0, 0.0] N*m" in out
+    assert "every tau_i keeps the sign (+, +, +) with |tau_i| >= [0.0, 0.0, 0.0] N m" in out
     assert "a preload of 0 still keeps the signs" in out
     assert "largest worst-case margin" in out and "without clipping it" in out
     rows = [line.split() for line in out.splitlines() if line.startswith("low ")]

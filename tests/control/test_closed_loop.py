@@ -152,7 +152,8 @@ def _random_step_case(m, rng, law, xe=None, tau_max=1e3):
                   preload=np.zeros(N_LEGS), closure_tol=m.closure_tolerance)
     if law == "na":
         params = L["na_params"].pack(Kd=rng.uniform(50, 300, 2), Q=rng.uniform(50, 400, 2),
-                                     Gamma=rng.uniform(0.0, 0.05, 5 * N_LEGS), **common)
+                                     Gamma=rng.uniform(0.0, 0.05, 5 * N_LEGS),
+                                     freeze_saturated=0.0, **common)
     else:
         params = L["apd_params"].pack(Kp=rng.uniform(1e4, 5e4, 2), Kv=rng.uniform(100, 500, 2),
                                       **common)
@@ -247,6 +248,14 @@ def test_step_saturating_case(m, law):
         assert np.array_equal(tau_c[clipped], np.sign(tau_free[clipped]) * tmax), info
         if law == "na":  # saturation does not stop adaptation (only a singular pose does)
             assert not np.array_equal(sn_c[4:], args[0][4:]), info
+            # ... unless freeze_saturated asks it to: C and reference hold theta_hat
+            lay = Layout("p", m.manifest["layouts"]["na_params"])
+            params[lay.slices["freeze_saturated"]] = 1.0
+            args = args[:5] + (params.copy(),)
+            tau_f, sn_f, _, _, _ = _compare_step(m, law, args, f"saturating frozen {i}",
+                                                 expect_status=rc.STATUS["saturated"])
+            assert np.array_equal(sn_f[4:], args[0][4:]), info
+            assert np.array_equal(tau_f, tau_c) and np.array_equal(sn_f[:4], sn_c[:4]), info
 
 
 @pytest.mark.parametrize("law", ["na", "apd"])

@@ -224,9 +224,11 @@ def test_saturated_min_max_reports_saturation_not_preload():
     (dict(split="minmax"), "split must be one of"),
     (dict(split="preload", preload=[1.0, 1.0]),
      r"preload must be one finite number or 3 \(one per actuator\)"),
-    (dict(split="preload", preload=[40.0, 1.0, 1.0]), "preload < tau_max"),
-    (dict(split="preload", preload_sign=[1.0, 0.0, 1.0]), "preload_sign entries must be"),
-    (dict(tau_max=[30.0, -1.0, 30.0]), "tau_max > 0"),
+    (dict(split="preload", preload=[40.0, 1.0, 1.0]),
+     r"preload\[0\] \(leg 1\) = 40.0 N m must be >= 0 and < tau_max = 30 N m"),
+    (dict(split="preload", preload_sign=[1.0, 0.0, 1.0]),
+     r"preload_sign\[1\] \(leg 2\) = 0.0 must be -1 or \+1"),
+    (dict(tau_max=[30.0, -1.0, 30.0]), r"tau_max\[1\] \(leg 2\) = -1.0 N m must be in \(0, 1e\+06\]"),
 ])
 def test_bad_split_settings_are_refused(kwargs, match):
     m = pm2dof.load_model()

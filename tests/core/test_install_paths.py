@@ -8,6 +8,7 @@ import contextlib
 import hashlib
 import io
 import json
+import re
 import shutil
 import subprocess
 import sys
@@ -26,7 +27,7 @@ PAPER = SHIPPED_MODELS / "shang2010.toml"
 PM2DOF = [sys.executable, "-m", "pm2dof"]
 
 
-def _derive(*args):
+def _derive(*args, build=False):
     """``pm2dof derive ARGS --no-build`` in-process (``cli.main``; a subprocess would import
     SymPy and CasADi again and derive with a cold SymPy cache, ~2 s more per call); returns
     (exit code, stdout + stderr). The CLI's entry point as a program is checked by the
@@ -42,7 +43,7 @@ def _derive(*args):
     try:
         with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out), \
                 derivations.shared_in_derive():
-            rc = cli.main(["derive", *map(str, args), "--no-build"])
+            rc = cli.main(["derive", *map(str, args), *([] if build else ["--no-build"])])
     finally:
         results.COMMAND_LINE = command_line          # main() records the command line it ran
     return rc, out.getvalue()
@@ -147,7 +148,13 @@ def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tm
     assert json.loads((gen / "manifest.json").read_text())["model_file"] == "../../myrobot.toml"
     assert not (gen / "libmyrobot.so").exists()          # --no-build: compiled on first use
     m = pm2dof.load_model(model)
-    assert "compiling" in capfd.readouterr().err and (gen / "libmyrobot.so").is_file()
+    err = capfd.readouterr().err
+    assert (gen / "libmyrobot.so").is_file()
+    # a stage line with the C file's size and an estimate, then the time it took
+    assert re.search(r"pm2dof: compiling myrobot\.c \(\d\.\d MB of C\) with .*: about \d+ s on "
+                     r"an idle processor .*first use of the generated code in ", err), err
+    assert re.search(rf"pm2dof: compiled {re.escape(str(gen))}/libmyrobot\.so in \d+\.\d s",
+                     err), err
     libraries.keep(gen)
     assert Path(m.generated) == gen and m.spec.legs[0].la == 0.246
     q = m.ik([0.25, 0.26])
@@ -171,6 +178,32 @@ def test_generated_elsewhere_is_named_by_generated(tmp_path, libraries):
     r = subprocess.run([*PM2DOF, "report", "--model", str(model), "--generated",
                         str(tmp_path / "build" / "c")], capture_output=True, text=True, timeout=120)
     assert r.returncode == 0 and "myrobot" in r.stdout, r.stderr
+
+
+def test_derive_says_when_the_compiler_starts_and_how_long_it_took(tmp_path, monkeypatch):
+    """The compile of a generated file takes 10 s to minutes (gcc -O3: 16 s per MB on an idle
+    processor, more on a busy one), and derive printed nothing between "wrote" and "compiled".
+    A stand-in compiler (CC) that writes an empty library and sleeps 1 s: the stage line with
+    the file's size and the estimate comes before it, the elapsed time after it."""
+    cc = tmp_path / "cc.sh"
+    cc.write_text('#!/bin/sh\nwhile [ "$1" != "-o" ]; do shift; done\n: > "$2"\nsleep 1\n')
+    cc.chmod(0o755)
+    monkeypatch.setenv("CC", str(cc))
+    model = _robot(tmp_path / "robots")
+    rc, out = _derive(model, build=True)
+    assert rc == 0, out
+    lines = out.splitlines()
+    c_file = tmp_path / "robots" / "generated" / "myrobot" / "myrobot.c"
+    size = c_file.stat().st_size
+    wrote = next(i for i, line in enumerate(lines) if "] wrote myrobot.c" in line)
+    stage = lines[wrote + 1]
+    assert re.fullmatch(rf"\[derive +\d+\.\ds\] compiling myrobot\.c \({size / 1e6:.1f} MB of "
+                        rf"C\) with {re.escape(str(cc))} -O3: about {size * 16e-6:.0f} s on an "
+                        rf"idle processor \(16 s per MB\), longer while other programs use it",
+                        stage), stage
+    done = re.fullmatch(r"\[derive +(\S+)s\] compiled (\S+) in (\S+) s", lines[wrote + 2])
+    assert done and done.group(2) == str(c_file.parent / "libmyrobot.so"), lines[wrote + 2]
+    assert 1.0 <= float(done.group(3)) <= float(done.group(1)), lines[wrote + 2]
 
 
 def test_edited_geometry_names_the_exact_derive_command(tmp_path):

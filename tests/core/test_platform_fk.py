@@ -1,5 +1,7 @@
 # A platform's fk (Gauss-Newton from [platform] home) returns a pose in the model's working modes
 # of the legs, or refuses with WorkspaceError: it returned another assembly silently before.
+import types
+
 import numpy as np
 import pytest
 
@@ -71,3 +73,56 @@ def test_fk_near_home_round_trips(name):
     for dx in ([0.0, 0.0, 0.0], [0.01, -0.01, 0.05], [-0.01, 0.01, -0.1]):
         x = home + dx
         np.testing.assert_allclose(m.fk(m.ik(x)[:m.n_legs]), x, atol=1e-9)
+
+
+# --- fk's messages give each actuator kind's unit ---------------------------------------------
+
+@pytest.mark.parametrize("name,unit", [("rpr3_platform", "m"), ("prr3_platform", "m"),
+                                       ("rrr3_platform", "rad"), ("shang2010_vertical", "rad")])
+def test_inconsistent_coordinates_are_named_in_their_actuators_unit(name, unit):
+    """Active coordinates no assembly has: a redundant robot's (shang2010_vertical) leg 1 moved
+    0.05 rad from ik's at its first move's start; a non-redundant platform's all 0 (every
+    nearby qa has an assembly). Lengths in m (PRR slider, RPR cylinder), angles in rad (RRR):
+    fk's error used to print rad for all."""
+    m = pm2dof.load_model(name)
+    qa = m.ik(m.spec.trajectories["low"]["start"])[:m.n_legs].copy()
+    if m.n_legs > m.dof:
+        qa[0] += 0.05
+    else:
+        qa[:] = 0.0
+    with pytest.raises(pm2dof.ClosureError) as info:
+        m.fk(qa)
+    msg = str(info.value)
+    other = {"m": "rad", "rad": "m"}[unit]
+    assert f"qa = {qa.tolist()} {unit} do not close the loops" in msg, msg
+    assert f"{qa.tolist()} {other}" not in msg, msg
+
+
+def test_a_platforms_gauss_newton_without_a_pose_says_so_in_m():
+    """rpr3_platform's legs 1e150 m long: the Gauss-Newton from home overflows. It used to say
+    "no assembly of the legs has active angles qa = [...] rad"."""
+    m = pm2dof.load_model("rpr3_platform")
+    with pytest.raises(pm2dof.WorkspaceError) as info:
+        m.fk([1e150, 1e150, 1e150])
+    msg = str(info.value)
+    assert ("fk of qa = [1e+150, 1e+150, 1e+150] m: the Gauss-Newton from [platform] home = "
+            "[0.0, 0.0, 0.0] found no pose" in msg), msg
+
+
+def test_a_five_bar_without_an_assembly_says_rad():
+    m = pm2dof.load_model("fivebar")
+    with pytest.raises(pm2dof.WorkspaceError,
+                       match=r"no assembly of the legs has the active coordinates qa = "
+                             r"\[3\.0, 0\.2\] rad$"):
+        m.fk([3.0, 0.2])
+
+
+def test_mixed_actuators_name_each_unit_with_its_legs():
+    """No shipped model mixes revolute and linear actuators; the text of one that does."""
+    from pm2dof.core.model_file import Leg
+    from pm2dof.core.task import active_coordinates
+    rrr = Leg(base=(0.0, 0.0), la=0.2, lb=0.2, elbow=1)
+    rpr = Leg(base=(0.0, 0.0), la=None, lb=None, elbow=None, kind="RPR", stroke=(0.1, 0.4))
+    spec = types.SimpleNamespace(legs=(rrr, rrr, rpr))
+    assert active_coordinates(spec, [0.1, 0.2, 0.3]) == \
+        "[0.1, 0.2, 0.3] (rad for legs 1, 2; m for leg 3)"

@@ -14,6 +14,7 @@ And the structure behind type II: row i of S is a multiple of U's row i (the leg
 its line), so the measure vanishes exactly when S loses rank.
 """
 import numpy as np
+import pytest
 
 EPS = np.finfo(float).eps
 
@@ -86,3 +87,57 @@ def test_rows_of_S_push_along_the_legs_lines(model, sample_xe):
             cross = np.linalg.norm(np.outer(S[i], U[i]) - np.outer(U[i], S[i]))
             assert cross <= 1e-12 * np.linalg.norm(S[i]) * np.linalg.norm(U[i]), \
                 (model.name, i, S[i], U[i])
+
+
+# --- the words of a SingularityError follow the kind -----------------------------------------
+
+def test_type_ii_on_a_platform_names_the_platforms_measure():
+    """rpr3_platform turned by -60 degrees: its attachment points come onto the lines from its
+    bases to the origin, the three legs' lines meet there (S has rank 2). The error used to say
+    "all distal links aligned" and "sigma_min(S with unit rows) / sqrt(n/2)", a point's."""
+    import pm2dof
+    m = pm2dof.load_model("rpr3_platform")
+    q = m.ik([0.0, 0.0, -np.pi / 3])
+    value = m.singularity_measures(q)[1]
+    with pytest.raises(pm2dof.SingularityError) as info:
+        m.W(q)
+    msg = str(info.value)
+    for words in ("type II (parallel: the legs' lines of action concurrent or all parallel",
+                  f"(det U^T U)^(1/3) / (n/3) of the legs' unit wrench lines U = {value:.4g} < "
+                  f"threshold 0.1 (limits.parallel_singularity_threshold)"):
+        assert words in msg, msg
+    assert "distal links" not in msg and "sqrt(n/2)" not in msg, msg
+
+
+def test_type_i_on_a_prr_leg_names_the_cosine_between_rail_and_link():
+    """prr_point at (0.28, 0.2995): leg 1's rail runs along y = 0 and its link (0.3 m) reaches
+    up to 0.2995 m from it, nearly across it: |d . u(qb)| = sqrt(1 - (0.2995/0.3)^2) = 0.0577
+    (legs 2 and 3: 0.744 and 0.359). The error used to name |sin(qb_i - qa_i)|, an RRR leg's."""
+    import pm2dof
+    m = pm2dof.load_model("prr_point")
+    q = m.ik([0.28, 0.2995])
+    value = np.sqrt(1 - (0.2995 / 0.3) ** 2)
+    with pytest.raises(pm2dof.SingularityError) as info:
+        m.W(q)
+    msg = str(info.value)
+    assert ("type I (a PRR leg's link across its rail" in msg
+            and f"min_i |d_i . u(qb_i)| = {value:.4g} < threshold 0.1 "
+                f"(limits.singularity_threshold)" in msg), msg
+    assert "sin(qb" not in msg, msg
+
+
+@pytest.mark.parametrize("name", ["shang2010", "shang2010_vertical"])
+def test_type_i_on_rrr_legs_keeps_the_sine(name):
+    """RRR legs (the paper's robot, and in a vertical plane): leg 1 almost stretched, 0.9995 of
+    la + lb from its base: |sin(qb - qa)| of that leg, and the words of an RRR leg."""
+    import pm2dof
+    m = pm2dof.load_model(name)
+    leg = m.spec.legs[0]
+    d = np.array([0.25, 0.265]) - leg.base
+    q = m.ik(np.asarray(leg.base) + d / np.hypot(*d) * (leg.la + leg.lb) * 0.9995)
+    value = abs(np.sin(q[m.n_legs] - q[0]))
+    with pytest.raises(pm2dof.SingularityError) as info:
+        m.W(q)
+    msg = str(info.value)
+    assert ("type I (a leg's links aligned)" in msg
+            and f"min_i |sin(qb_i - qa_i)| = {value:.4g} < threshold" in msg), msg

@@ -309,7 +309,8 @@ def test_toy_controller_steps_deliver_the_model_task_force(toy):
     common = dict(T=0.002, vel_alpha=0.0, sing_threshold=0.0, parallel_sing_threshold=0.0,
                   tau_max=np.full(n, 1e4), preload_sign=np.ones(n), preload=np.full(n, 0.01),
                   closure_tol=1e-9)
-    gains = {"na": dict(Kd=np.full(m, 5.0), Q=np.full(m, 2.0), Gamma=np.ones(len(th))),
+    gains = {"na": dict(Kd=np.full(m, 5.0), Q=np.full(m, 2.0), Gamma=np.ones(len(th)),
+                        freeze_saturated=0.0),
              "apd": dict(Kp=np.full(m, 5.0), Kv=np.full(m, 2.0)),
              "ctc": dict(Kp=np.full(m, 5.0), Kv=np.full(m, 2.0)), "lqr": {}}
     steps = [k for k in fs if k.endswith("_step") and _law(k) in gains]

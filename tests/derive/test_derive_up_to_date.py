@@ -67,8 +67,14 @@ def test_what_changed_is_named(copied):
 def test_force_derives_again(copied, monkeypatch):
     import pm2dof.derive.run as run
     model, gen = copied
-    calls = []
-    monkeypatch.setattr(run, "derive", lambda *a, **k: calls.append((a, k)))
-    assert cli.main(["derive", str(model)]) == 0 and calls == []
+    from pm2dof.core import build
+    calls, compiled = [], []
+    monkeypatch.setattr(run, "derive", lambda *a, **k: calls.append((a, k)) or gen)
+    monkeypatch.setattr(build, "compile_library", lambda *a, **k: compiled.append((a, k)))
+    assert cli.main(["derive", str(model)]) == 0 and calls == [] and compiled == []
     assert cli.main(["derive", str(model), "--force"]) == 0
     assert len(calls) == 1 and calls[0][1]["force"] is True
+    # derive writes the C; the command compiles it, with its stage lines (progress)
+    assert calls[0][1]["build"] is False and len(compiled) == 1, compiled
+    assert compiled[0][0] == (gen / "shang2010.c", gen / "libshang2010.so")
+    assert callable(compiled[0][1]["progress"])

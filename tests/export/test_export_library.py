@@ -118,8 +118,8 @@ def test_the_generated_code_is_pruned_to_what_the_api_calls(exports, name):
 
 @pytest.mark.parametrize("name", MODELS)
 def test_the_work_sizes_cover_every_generated_call(exports, name):
-    """The header's work sizes against what each generated function the library calls asks
-    for, read from pm2dof's compiled copy of the generated code through CasADi's public
+    """The header's work sizes against what each generated function the library calls (NA's
+    projected step among them) asks for, read from pm2dof's compiled copy of the generated code through CasADi's public
     <f>_work (not from the C text the export parses)."""
     proj, _ = exports[name]
     header = _header(proj, name)
@@ -128,7 +128,7 @@ def test_the_work_sizes_cover_every_generated_call(exports, name):
     m = pm2dof.load_model(name)
     lib = ctypes.CDLL(str(Path(m.generated) / f"lib{name}.so"))
     entries = json.loads((proj / "pm2dof_export.json").read_text())["generated_entries"]
-    assert {"fk", "ik", "torque_splits", "na_step", "apd_step"} <= set(entries)
+    assert {"fk", "ik", "torque_splits", "na_step", "na_proj_step", "apd_step"} <= set(entries)
     for f in entries:
         n = [ctypes.c_longlong() for _ in range(4)]
         assert getattr(lib, f"{name}_{f}_work")(*map(ctypes.byref, n)) == 0
@@ -172,6 +172,29 @@ def test_the_header_lists_every_function_the_library_needs(exports, name):
     assert _nm(objs, "-u") - _nm(objs, "--defined-only") == _listed(header)
     said = re.search(r"a compiler may add(.*?)\.", header, re.S).group(1)
     assert all(f in said for f in ("memset", "memcpy", "memmove", "sincos"))
+
+
+#: <math.h>'s double-precision functions (their float versions end in f)
+DOUBLE_MATH = {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "log", "pow", "sqrt",
+               "cbrt", "floor", "ceil", "fabs", "fmin", "fmax", "fmod", "hypot", "copysign",
+               "round", "trunc", "sincos"}
+
+
+@needs_cc
+@pytest.mark.parametrize("name", ["shang2010", "prr3_platform", "shang2010_vertical"])
+def test_single_precision_computes_nothing_in_double(tmp_path, name):
+    """In single precision the API source promotes no float to double (-Wdouble-promotion, an
+    error here) and calls no double math function (nm at -O0 -fno-builtin; the header's list
+    says the same): fk's closure check took fabs of a float residual, in double."""
+    proj = export_project(name, tmp_path / name, precision="single", controllers=("na", "apd"),
+                          measure_stack=False)
+    obj = tmp_path / "api.o"
+    _run(["cc", "-std=c99", "-O0", "-fno-builtin", "-Wdouble-promotion", "-Werror",
+          f"-I{proj / 'include'}", "-c", proj / "src" / f"{name}_pm2dof.c", "-o", obj])
+    undefined = _nm(obj, "-u")
+    assert undefined & {f + "f" for f in DOUBLE_MATH}, undefined     # the float ones are called
+    assert not undefined & DOUBLE_MATH, sorted(undefined & DOUBLE_MATH)
+    assert not _listed(_header(proj, name)) & DOUBLE_MATH
 
 
 @pytest.mark.parametrize("precision", ["double", "single"])
@@ -230,20 +253,61 @@ def test_worst_stack_of_a_call_graph(tmp_path):
 @needs_cc
 @pytest.mark.parametrize("name", ["shang2010", "rrr4_platform"])
 def test_the_step_calls_the_generated_step_directly(exports, name):
-    """GCC's call graph at -O0 (nothing inlined): from the API's NA step the worst chain runs
-    into the generated step and its body (a call through a function pointer ended it at the
-    step's core), and it is deeper than the API's own frames."""
+    """GCC's call graph at -O0 (nothing inlined): the API's NA step reaches both generated NA
+    steps (the paper's law and the projected one, chosen by params.project) by direct calls,
+    and its worst chain runs into one of them and its body (a call through a function pointer
+    ended it at the step's core), deeper than the API's own frames."""
     _, objs = exports[name]
     if not objs[0].with_suffix(".ci").is_file():
         pytest.skip("the C compiler has no -fcallgraph-info (GCC 10 or later)")
     g = read_callgraph([o.with_suffix(".ci") for o in objs])
+    reached, todo = set(), [f"{name}_pm2dof_na_step"]
+    while todo:
+        for c in g.calls.get(todo.pop(), ()):
+            if g.names.get(c, c) not in reached:
+                reached.add(g.names.get(c, c))
+                todo.append(c)
+    assert {f"{name}_na_step", f"{name}_na_proj_step"} <= reached, reached
     s = worst_stack(g, f"{name}_pm2dof_na_step")
-    assert f"{name}_na_step" in s.chain, s.chain
+    assert {f"{name}_na_step", f"{name}_na_proj_step"} & set(s.chain), s.chain
     assert any(re.fullmatch(rf"{name}_f\d+", c) for c in s.chain), s.chain
     assert s.bounded
     api_only = sum(g.frames[t][0] for t in g.frames if t.endswith(("core_begin", "core_end"))
                    or t == f"{name}_pm2dof_na_step")
     assert s.bytes > api_only
+
+
+def _m4f_na_stack(proj, name, tmp_path, api_text):
+    """The worst-case stack of the API's NA step in ``api_text``, compiled as embedded/Makefile
+    compiles the library for the Cortex-M4F (-O2), from GCC's call graph."""
+    src = tmp_path / f"{name}_pm2dof.c"
+    src.write_text(api_text)
+    _run(["arm-none-eabi-gcc", "-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
+          "-mfpu=fpv4-sp-d16", "-std=c99", "-O2", "-ffp-contract=off", "-ffunction-sections",
+          "-fdata-sections", f"-I{proj / 'include'}", f"-I{proj / 'src'}",
+          "-fcallgraph-info=su", "-c", src, "-o", tmp_path / f"{name}_pm2dof.o"],
+         cwd=tmp_path)
+    g = read_callgraph([tmp_path / f"{name}_pm2dof.ci"])
+    links = dict(re.findall(r"^#define (\w+) (\w+)$", _header(proj, name), re.M))
+    return worst_stack(g, links.get(f"{name}_pm2dof_na_step", f"{name}_pm2dof_na_step")).bytes
+
+
+@needs_cross
+@pytest.mark.parametrize("name", ["rrr4_platform", "prr3_platform", "shang2010_vertical"])
+def test_the_projection_option_costs_no_stack(tmp_path, name):
+    """NA's step chooses between two generated steps. Its worst-case stack (Cortex-M4F, double,
+    -O2) is that of the deeper of the two alone (the choice fixed at compile time), not their
+    sum: the paper's law inlined into the step kept its frame on the stack while the projected
+    one ran (rrr4_platform: 2,584 B against 1,296 B for the deeper alone; prr3_platform 2,072 B
+    against 1,032 B)."""
+    proj = export_project(name, tmp_path / "p", controllers=("na",), measure_stack=False)
+    api = (proj / "src" / f"{name}_pm2dof.c").read_text()
+    choice = "if (ctl->params.project)"
+    assert api.count(choice) == 1
+    both = _m4f_na_stack(proj, name, tmp_path, api)
+    alone = [_m4f_na_stack(proj, name, tmp_path, api.replace(choice, f"if ({k})"))
+             for k in (0, 1)]
+    assert both <= max(alone), (both, alone)
 
 
 @needs_cross

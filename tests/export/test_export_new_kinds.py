@@ -18,6 +18,7 @@ import pytest
 
 import pm2dof
 from pm2dof.export import ExportError, export_project
+from tests.export.c_guards import check_guard_output
 
 needs_cmake = pytest.mark.skipif(shutil.which("cmake") is None or shutil.which("cc") is None,
                                  reason="needs cmake and a C compiler")
@@ -75,6 +76,18 @@ def test_c_closed_loop_gives_the_rmse_and_efforts_of_simulate(built, name):
     header = (root / name / "include" / f"{name}_pm2dof.h").read_text()
     assert f"#define {name.upper()}_PM2DOF_LQR_K_SIZE (2 * {m.dof} * {m.n_legs})" in header
     assert f"{name.upper()}_PM2DOF_HAVE_LQR 1" in header
+
+
+@needs_cmake
+@pytest.mark.parametrize("name", BUILT)
+def test_the_ctests_guards_are_pm2dofs(built, name):
+    """As for shang2010 (test_export_project.py): NA's blocked robot with the paper's law, the
+    projection and the freeze equals NAController's steps bit for bit (a platform on linear
+    actuators, gravity), init's refusals, status strings and version are pm2dof's."""
+    root, build = built
+    out = _run([build / name / f"{name}_test"]).stdout
+    assert "FAIL" not in out and re.search(r"(\d+) of \1 checks passed", out), out[-3000:]
+    check_guard_output(out, name)
 
 
 def test_the_exported_step_holds_the_vertical_robot_against_gravity():

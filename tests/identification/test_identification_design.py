@@ -346,3 +346,51 @@ def test_bad_design_arguments_are_named(m, tmp_path, capsys):
         assert stop.value.code == 2
         assert flag in capsys.readouterr().err
     assert not out.exists()
+
+
+def test_stage_lines_when_stderr_is_not_a_terminal(m, monkeypatch):
+    """Not a terminal, no bar is drawn: the design printed nothing for 812 s (the vertical
+    3-RRR). A stage line every STAGE_SECONDS of IPOPT (0 here: one per iteration)."""
+    import io
+
+    from pm2dof.identification import design
+    monkeypatch.setattr(design, "STAGE_SECONDS", 0.0)
+    stream = io.StringIO()
+    progress = Progress(stream=stream)
+    assert not progress.bars                       # a StringIO is not a terminal
+    exc = design_excitation(m, **{**SMALL, "max_iter": 3}, progress=progress)
+    lines = [ln for ln in stream.getvalue().splitlines() if "IPOPT iteration" in ln]
+    assert [int(re.search(r"IPOPT iteration (\d+) of at most 3:", ln)[1]) for ln in lines] == [
+        0, 1, 2, 3], lines                         # IPOPT's iterations 0..3
+    assert all(re.search(r"objective log det -?[0-9.]+, \d+ s$", ln) for ln in lines), lines
+    assert exc.info["ipopt_iterations"] == 3
+
+
+@pytest.mark.parametrize("accept", [False, True])
+def test_a_design_that_did_not_converge_says_so_and_exits_1(tmp_path, capsys, accept):
+    """The vertical 3-RRR's design stopped at Maximum_Iterations_Exceeded and was written with
+    exit 0, as if optimal. Now: one line, converged = false in the file, exit 1 unless
+    --accept-unconverged."""
+    out = tmp_path / "exc.toml"
+    code = cli.main(["identify", "design", "--model", "shang2010_vertical", "--harmonics", "2",
+                     "--periods", "1", "--base-hz", "0.5", "--max-iter", "2", "--out", str(out),
+                     "--quiet", *(["--accept-unconverged"] if accept else [])])
+    stdout, stderr = capsys.readouterr()
+    assert code == (0 if accept else 1), (stdout, stderr)
+    assert stdout.splitlines()[0] == (
+        f"NOT CONVERGED: IPOPT stopped at Maximum_Iterations_Exceeded after 2 iterations; {out} "
+        f"holds its last iterate, marked converged = false in [design]")
+    assert ("converged = false" in stderr) != accept, stderr
+    exc = load_excitation(out)
+    assert exc.info["converged"] is False
+    assert exc.info["ipopt_status"] == "Maximum_Iterations_Exceeded"
+
+
+def test_a_converged_design_says_nothing_more(m, designed, tmp_path, monkeypatch, capsys):
+    from pm2dof.identification import design
+    monkeypatch.setattr(design, "design_excitation", lambda *a, **k: designed)
+    assert designed.info["converged"] is (designed.info["ipopt_status"] in design.CONVERGED)
+    assert designed.info["converged"], designed.info["ipopt_status"]
+    r = design.run_design(m, tmp_path / "e.toml")
+    assert r.converged and not design.format_design(r).startswith("NOT CONVERGED")
+    assert load_excitation(tmp_path / "e.toml").info["converged"] is True

@@ -1,5 +1,6 @@
 """Issue 26: the model file's new keys (end_effector, gravity, leg kinds, [platform]) and the
 bad inputs of the issue, each one line naming the file, the table and the key."""
+import math
 import re
 
 import pytest
@@ -186,3 +187,157 @@ def test_links_and_lumped_keys_together_are_refused(tmp_path):
     path, msg = _error(tmp_path, _links_text("rrr3_platform", [rrr, bad, rrr],
                                              "mass = 0.5\ncom = [0.0, 0.0]\ninertia = 3.125e-4"))
     _one_line(msg, path, "nominal.links (leg 2).proximal.inertia", "missing")
+
+
+# --- [platform] home clear of both singularities ----------------------------------------------
+
+#: a redundant 4-RPR: bases on a circle of 0.3 m, attachment points on one of 0.08 m at the same
+#: angles (0, 90, 180, 270 degrees): at home every leg's line passes through the platform's
+#: origin, so no leg can exert a moment about it (S has rank 2, a type II singularity)
+RADIAL_4RPR = """
+[model]
+name = "rpr4_radial"
+friction = "coulomb_viscous"
+end_effector = "platform"
+{legs}
+[platform]
+home = [0.0, 0.0, 0.0]
+
+[nominal]
+alpha = [0.4, 0.4, 0.4, 0.4]
+beta = [0.04, 0.04, 0.04, 0.04]
+gamma = [0.0192, 0.0192, 0.0192, 0.0192]
+m_p = 0.5
+mx_p = 0.0
+my_p = 0.0
+I_p = 8e-4
+fv = [20.0, 20.0, 20.0, 20.0]
+fc = [4.0, 4.0, 4.0, 4.0]
+
+[limits]
+singularity_threshold = 0.1
+tau_max = [300.0, 300.0, 300.0, 300.0]
+
+[sensing]
+sample_period = 0.002
+encoder_counts_per_rev = 131072
+linear_encoder_resolution = 1e-6
+velocity_filter_hz = 0.0
+
+[gains.na]
+Kd = [150.0, 150.0, 0.76]
+Q = [280.0, 280.0, 280.0]
+Gamma = [0.02, 0.02, 0.02, 0.02, 5e-4, 5e-4, 5e-4, 5e-4, 5e-5, 5e-5, 5e-5, 5e-5,
+         0.02, 0.0, 0.0, 1e-5, 2.0, 2.0, 2.0, 2.0, 0.5, 0.5, 0.5, 0.5]
+
+[gains.apd]
+Kp = [25000.0, 25000.0, 127.0]
+Kv = [250.0, 250.0, 1.27]
+
+[plant]
+alpha = [0.4, 0.4, 0.4, 0.4]
+beta = [0.04, 0.04, 0.04, 0.04]
+gamma = [0.0192, 0.0192, 0.0192, 0.0192]
+m_p = 0.5
+mx_p = 0.0
+my_p = 0.0
+I_p = 8e-4
+payload_mass = 0.2
+fv = [17.0, 17.0, 17.0, 17.0]
+fc = [4.8, 4.8, 4.8, 4.8]
+fs = [2.0, 2.0, 2.0, 2.0]
+stribeck_velocity = 0.01
+coulomb_smoothing_velocity = 0.001
+
+[trajectories.low]
+start = [0.0, 0.0, 0.0]
+end = [0.04, 0.03, 0.2]
+v_max = 0.2
+a_max = 5.0
+j_max = 200.0
+"""
+
+
+def _radial_4rpr(folder, turn=0.0):
+    """The 4-RPR above; ``turn`` (rad) turns every attachment point about the platform's origin
+    (0: the lines meet at the origin)."""
+    legs = ""
+    for k in range(4):
+        a = k * math.pi / 2
+        legs += (f'\n[[legs]]\nkind = "RPR"\nbase = [{0.3 * math.cos(a)!r}, '
+                 f'{0.3 * math.sin(a)!r}]\nstroke = [0.15, 0.4]\n'
+                 f'attach = [{0.08 * math.cos(a + turn)!r}, {0.08 * math.sin(a + turn)!r}]\n')
+    path = folder / "rpr4_radial.toml"
+    path.write_text(RADIAL_4RPR.format(legs=legs))
+    return path
+
+
+def test_a_home_where_the_legs_lines_meet_is_refused(tmp_path):
+    """Every fk of such a file used to fail ("no assembly of the legs has active angles qa =
+    [0.22, ...] rad": the Gauss-Newton from home had singular normal equations) after `derive`
+    accepted it. The file check names the measure, its value (0 up to rounding: the lines
+    meet exactly) and the threshold; `pm2dof derive` stops there, exit 2, one line."""
+    path = _radial_4rpr(tmp_path)
+    with pytest.raises(ModelFileError) as info:
+        read_model_file(path)
+    msg = str(info.value)
+    _one_line(msg, path, "platform.home", "type II", "(det U^T U)^(1/3) / (n/3)",
+              "concurrent or all parallel", "< limits.parallel_singularity_threshold = 0.1")
+    value = float(re.search(r"wrench lines U is (\S+) <", msg).group(1))
+    assert 0.0 <= value < 1e-5, msg
+    (tmp_path / "turned").mkdir()
+    read_model_file(_radial_4rpr(tmp_path / "turned", turn=0.5))   # the lines no longer meet
+    import subprocess
+    import sys
+    r = subprocess.run([sys.executable, "-m", "pm2dof", "derive", str(path), "--no-build"],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 2 and "[platform.home]" in r.stderr and "type II" in r.stderr, \
+        (r.returncode, r.stdout, r.stderr)
+    assert not (tmp_path / "generated").exists()
+
+
+def _with_limit(text, key, value):
+    text = re.sub(rf"\n{key} = [^\n]*", "", text)
+    return text.replace("[limits]\n", f"[limits]\n{key} = {value!r}\n", 1)
+
+
+@pytest.mark.parametrize("name", ["rrr3_platform", "prr3_platform", "rpr3_platform"])
+def test_home_type_ii_measure_is_the_generated_one(tmp_path, name):
+    """A threshold 0.1 % above the generated singularity_measures at ik(home) refuses home,
+    naming that value; 0.1 % below accepts it."""
+    import pm2dof
+    m = pm2dof.load_model(name)
+    value = m.singularity_measures(m.ik(m.spec.home))[1]
+    text = _text(name)
+    path, msg = _error(tmp_path, _with_limit(text, "parallel_singularity_threshold",
+                                             float(value * 1.001)))
+    _one_line(msg, path, "platform.home", "type II", f"is {value:.3g} <")
+    path.write_text(_with_limit(text, "parallel_singularity_threshold", float(value * 0.999)))
+    assert read_model_file(path).home == tuple(m.spec.home)
+
+
+@pytest.mark.parametrize("name", ["rrr3_platform", "prr3_platform"])
+def test_home_type_i_names_the_leg_and_its_kinds_measure(tmp_path, name):
+    """A leg at a type I singularity at home has no working mode for fk to read. Each leg's
+    measure written here from the generated ik at home: RRR |sin(qb - qa)|, PRR |d . u(qb)|."""
+    import numpy as np
+
+    import pm2dof
+    m = pm2dof.load_model(name)
+    n, q = m.n_legs, m.ik(m.spec.home)
+    per_leg = []
+    for i, leg in enumerate(m.spec.legs):
+        if leg.kind == "RRR":
+            per_leg.append(abs(math.sin(q[n + i] - q[i])))
+        else:
+            d = np.subtract(leg.rail_end, leg.base) / leg.rail_length
+            per_leg.append(abs(d @ [math.cos(q[n + i]), math.sin(q[n + i])]))
+    worst = int(np.argmin(per_leg))
+    path, msg = _error(tmp_path, _with_limit(_text(name), "singularity_threshold",
+                                             float(per_leg[worst] * 1.001)))
+    measure = "|sin(qb_i - qa_i)|" if m.spec.legs[worst].kind == "RRR" else "|d_i . u(qb_i)|"
+    low = [i for i, v in enumerate(per_leg) if v < per_leg[worst] * 1.001]
+    _one_line(msg, path, "platform.home", "type I singularity",
+              f"leg{'s' if len(low) > 1 else ''} {', '.join(str(i + 1) for i in low)} "
+              f"({m.spec.legs[worst].kind}; 0 at ", f"{measure} = {per_leg[worst]:.3g}",
+              "below limits.singularity_threshold")

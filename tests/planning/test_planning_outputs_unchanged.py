@@ -6,7 +6,9 @@ tests/planning/data/plan_<case>.json were written by this module's :func:`record
 tests/planning/test_planning_outputs_unchanged.py``) on the commit before the problem object
 (issue 29 item 5) and the speed-ups (issue 25 section 3). What depends on the run, not on the
 plan, is left out: the provenance's machine-, checkout- and command-specific entries and the
-wall times (``compute_ms``, ``solve_time_s``)."""
+wall times (``compute_ms``, ``solve_time_s``). Re-recorded once, on purpose, when the results
+gained ``units`` and ``tau_peak`` beside ``tau_peak_N_m`` (efforts by their actuator's unit):
+keys added, every earlier key and value unchanged (checked before re-recording)."""
 import contextlib
 import io
 import json

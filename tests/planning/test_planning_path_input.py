@@ -90,31 +90,65 @@ def test_numeric_arrays_and_numpy_scalars_still_accepted():
     assert TaskPath.arc([0.25, 0.27], np.float64(0.02), 0, 1).length == pytest.approx(0.02)
 
 
-@pytest.mark.parametrize("segment, match", [
-    (POLY.format(points='[[0.16, 0.22], "abc", [0.36, 0.27]]'), "'abc' (str) is not a number"),
-    (POLY.format(points="[[0.16, 0.22], [0.16], [0.36, 0.27]]"), "ragged"),
-    (POLY.format(points="[[true, 0.22], [0.16, 0.27], [0.36, 0.27]]"),
+@pytest.mark.parametrize("segment, key, match", [
+    (POLY.format(points='[[0.16, 0.22], "abc", [0.36, 0.27]]'), "points",
+     "'abc' (str) is not a number"),
+    (POLY.format(points="[[0.16, 0.22], [0.16], [0.36, 0.27]]"), "points", "ragged"),
+    (POLY.format(points="[[true, 0.22], [0.16, 0.27], [0.36, 0.27]]"), "points",
      "True (bool) is not a number"),
     ('[[segments]]\nkind = "spline"\nwaypoints = [[0.22, 0.29], [0.25], [0.27, 0.24]]\n',
-     "spline: waypoints must be"),
+     "waypoints", "waypoints must be a list of two or more points"),
     ('[[segments]]\nkind = "arc"\ncenter = [0.25, [0.27]]\nradius = 0.02\nangle0 = 0.0\n'
-     'angle1 = 1.0\n', "center must be a finite point (x, y) in m"),
+     'angle1 = 1.0\n', "center", "center must be a finite point (x, y) in m"),
     ('[[segments]]\nkind = "arc"\ncenter = [0.25, 0.27]\nradius = "0.02"\nangle0 = 0.0\n'
-     'angle1 = 1.0\n', "radius (m) must be a finite number > 0, got str '0.02'"),
-    ('[[segments]]\nkind = "line"\nstart = [0.22, [0.29]]\nend = [0.27, 0.24]\n',
-     "p0 must be a finite point"),
+     'angle1 = 1.0\n', "radius", "radius (m) must be a finite number > 0, got str '0.02'"),
+    ('[[segments]]\nkind = "line"\nstart = [0.22, [0.29]]\nend = [0.27, 0.24]\n', "start",
+     "start must be a finite point"),
 ])
-def test_path_file_with_a_malformed_point(tmp_path, capsys, segment, match):
-    """From a file: one PathFileError naming the file, the segment and the argument (the CLI
+def test_path_file_with_a_malformed_point(tmp_path, capsys, segment, key, match):
+    """From a file: one PathFileError naming the file, the segment and the key (the CLI
     printed a NumPy traceback, or read `true` as 1.0)."""
     f = _file(tmp_path, segment)
     with pytest.raises(PathFileError) as exc:
         read_path_file(f)
     (problem,) = exc.value.problems
-    assert problem.key == "segments (segment 1)" and match in problem.reason
+    assert problem.key == f"segments.{key} (segment 1)" and match in problem.reason
     assert main(["plan", "--path", str(f)]) == 2
     err = capsys.readouterr().err
     assert str(f) in err and match in err and "Traceback" not in err
+
+
+def test_every_problem_of_a_segment_is_listed(tmp_path, capsys):
+    """A misspelt key hid a negative radius: the segment stopped at its first problem (the keys
+    before the values, then the constructor's first refusal). Now every key and every value,
+    as model and study files; the constructor's own checks (a blend that does not fit, equal
+    angles) once the segment's values are right."""
+    f = _file(tmp_path, '[[segments]]\nkind = "arc"\ncenter = [0.25, 0.25]\nradius = -0.02\n'
+                        'angle0 = 0.0\nangl1 = 1.0\n'
+                        '[[segments]]\nkind = "polyline"\npoints = [[0.2, 0.2], [0.3, 0.2]]\n'
+                        'blend_radius = -1\ncolour = 3\n'
+                        '[[segments]]\nkind = "line"\nstart = [0.2, "a"]\nend = [0.3]\n'
+                        '[[segments]]\nkind = "line"\nstart = [0.0, 0.0, 0.1]\n'
+                        'end = [0.02, 0.0, true]\n')
+    with pytest.raises(PathFileError) as exc:
+        read_path_file(f, orientation_length=0.1)
+    got = [(p.key, p.reason) for p in exc.value.problems]
+    assert [k for k, _ in got] == [
+        "segments.angl1 (segment 1)", "segments.angle1 (segment 1)",
+        "segments.radius (segment 1)",
+        "segments.colour (segment 2)", "segments.blend_radius (segment 2)",
+        "segments.start (segment 3)", "segments.end (segment 3)",
+        "segments.end (segment 4)"], got
+    reasons = dict(got)
+    assert reasons["segments.radius (segment 1)"] == ("radius (m) must be a finite number > 0, "
+                                                      "got -0.02")
+    assert "got -1" in reasons["segments.blend_radius (segment 2)"]
+    assert "'a' (str) is not a number" in reasons["segments.start (segment 3)"]
+    assert "got [0.3]" in reasons["segments.end (segment 3)"]
+    assert "True (bool) is not a number" in reasons["segments.end (segment 4)"]
+    assert main(["plan", "--model", "rrr3_platform", "--path", str(f)]) == 2
+    err = capsys.readouterr().err
+    assert f"{f}: 8 problems:" in err and "Traceback" not in err
 
 
 # --- 4. counts numbered from 1, points rounded ------------------------------------------

@@ -52,7 +52,20 @@ def run(args):
         print(f"{out} is up to date (its manifest matches the model file, the derivation and "
               f"its compiled library); --force derives again")
         return 0
+    import json
+    import time
+
+    from ...core import build
     from ...derive.run import derive  # needs the [derive] extra (SymPy, CasADi); main() says so
-    derive(args.path or args.model, args.out, force=args.force, build=not args.no_build,
-           progress=lambda msg: print(msg, flush=True))
+    t0 = time.perf_counter()
+
+    def say(msg):                      # derive()'s stage lines, on (almost) the same clock
+        print(f"[derive {time.perf_counter() - t0:5.1f}s] {msg}", flush=True)
+    # the compiler runs here, not inside derive(), so that a stage line (the C file's size, an
+    # estimate) comes before the wait and the elapsed time after it
+    out = derive(args.path or args.model, args.out, force=args.force, build=False,
+                 progress=lambda msg: print(msg, flush=True))
+    if not args.no_build:
+        name = json.loads((out / "manifest.json").read_text())["model"]
+        build.compile_library(out / f"{name}.c", out / f"lib{name}.so", progress=say)
     return 0

@@ -96,13 +96,16 @@ def add_parser(sub, common):
     excitation_options(r, "simulate without LOG")
     simulated_options(r, "without LOG: ")
 
-    r = sub_command("design", "design a D-optimal excitation (1-2 minutes)",
+    r = sub_command("design", "design a D-optimal excitation (minutes; longer on platforms)",
                     "Design a periodic excitation (a finite Fourier series in task space, "
                     "Swevers et al. 1997) that maximises log det of the base regressor's "
-                    "information matrix, with CasADi + IPOPT (1-2 minutes), within speed, "
+                    "information matrix, with CasADi + IPOPT (minutes: the time per kind of "
+                    "robot is in docs/results-identification.md), within speed, "
                     "acceleration, torque, singularity and region limits checked every 1 ms, and "
                     "write it as TOML to --out (the model recorded relative to the file). A "
-                    "platform's excitation moves phi too, within its own limits (--phi-*).",
+                    "platform's excitation moves phi too, within its own limits (--phi-*). If "
+                    "IPOPT does not converge, the file is written all the same, marked "
+                    "converged = false, and the command exits 1 (unless --accept-unconverged).",
                     ["pm2dof identify design --out exc.toml",
                      "pm2dof identify design --model rrr3_platform --phi-range 0.1 --out exc.toml"])
     r.add_argument("--out", required=True, metavar="FILE", help="excitation file to write (TOML)")
@@ -114,8 +117,11 @@ def add_parser(sub, common):
             ("--a-max", POSITIVE, 10.0, "acceleration limit of (x, y), m/s^2 (default 10)"),
             ("--tau-fraction", number(0.0, 1.0), 0.5, "torque limit / tau_max, in (0, 1] "
              "(default 0.5)"),
-            ("--seed", int, 0, "seed of IPOPT's random start (default 0)")):
+            ("--seed", int, 0, "seed of IPOPT's random start (default 0)"),
+            ("--max-iter", count(1, 100000), 500, "IPOPT's iteration limit (default 500)")):
         r.add_argument(flag, type=kind, default=default, help=text)
+    r.add_argument("--accept-unconverged", action="store_true",
+                   help="exit 0 when IPOPT did not converge (the file says converged = false)")
     # a platform's orientation: its own limits (pm2dof.identification.design.phi_limits)
     for flag, metavar, text in (
             ("--phi-v-max", "RAD_S", "a platform's phi speed limit, rad/s (default: v-max / l, "
@@ -195,13 +201,23 @@ def _fit(args):
 
 
 def _design(args):
+    import sys
+
     from ...identification.design import format_design, run_design
-    print(format_design(run_design(
+    r = run_design(
         model(args), args.out, base_hz=args.base_hz, harmonics=args.harmonics,
         periods=args.periods, v_max=args.v_max, a_max=args.a_max,
         tau_fraction=args.tau_fraction, phi_v_max=args.phi_v_max, phi_a_max=args.phi_a_max,
-        phi_range=args.phi_range, seed=args.seed, progress=_progress(args))))
-    return 0
+        phi_range=args.phi_range, seed=args.seed, max_iter=args.max_iter,
+        progress=_progress(args))
+    print(format_design(r))
+    if r.converged or args.accept_unconverged:
+        return 0
+    info = r.excitation.info
+    print(f"pm2dof identify design: IPOPT did not converge ({info['ipopt_status']} after "
+          f"{info['ipopt_iterations']} iterations); {args.out} is marked converged = false "
+          f"(--accept-unconverged to exit 0 with it)", file=sys.stderr)
+    return 1
 
 
 def _monte_carlo(args):

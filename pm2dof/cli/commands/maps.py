@@ -12,16 +12,17 @@ def add_parser(sub, common):
                        "force available in every direction within tau_max for the min-norm split "
                        "(eq. 21) and for the min-max split (the circle inside the zonotope "
                        "{S^T tau : |tau_i| <= tau_max_i}) and their ratio, and the same for "
-                       "acceleration at rest through Me (Tables 1-2). The model's moves are "
-                       "drawn on every map. Writes maps_*.png and maps.json into --out.",
+                       "acceleration at rest through Me (Tables 1-2); under gravity, what "
+                       "tau_max leaves once the robot is held at rest at each pose. The model's "
+                       "moves are drawn on every map. Writes maps_*.png and maps.json into --out.",
                        epilog="example: pm2dof maps --model fivebar --out out/maps")
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the PNGs and maps.json")
     p.add_argument("--resolution", type=int, default=121, metavar="N",
                    help="grid points per axis, 5 to 1001 (default 121; about 1 s per 10^4 "
                    "points)")
     p.add_argument("--tau-max", type=POSITIVE, nargs="+", metavar="NM",
-                   help="actuator limits, N m: one value for all or one per actuator "
-                   "(default: [limits].tau_max)")
+                   help="actuator limits, N m (N for a linear actuator): one value for all "
+                   "or one per actuator (default: [limits].tau_max)")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
     return p
 

@@ -2,7 +2,7 @@
 import pathlib
 import sys
 
-from ..options import POSITIVE, count, model, number, tau_max
+from ..options import POSITIVE, count, model, number, progress, tau_max
 
 
 def add_parser(sub, common):
@@ -19,8 +19,8 @@ def add_parser(sub, common):
     p.add_argument("--path", metavar="NAME|FILE", help="a path file (default: the moves)")
     p.add_argument("--move", help="only this move of the model file (default: every move)")
     p.add_argument("--tau-max", type=POSITIVE, nargs="+", metavar="NM",
-                   help="actuator limits, N m: one value for all or one per actuator "
-                   "(default: [limits].tau_max)")
+                   help="actuator limits, N m (N for a linear actuator): one value for all "
+                   "or one per actuator (default: [limits].tau_max)")
     p.add_argument("--margin", type=number(0.0, 1.0), default=1.0,
                    help="plan with tau_max * margin (default 1.0)")
     p.add_argument("--grid", type=count(2, 100000), default=1000,
@@ -36,7 +36,8 @@ def add_parser(sub, common):
     p.add_argument("--smooth", action="store_true", help="also the torque-rate-limited "
                    "near-time-optimal plan (CasADi + IPOPT; needs casadi)")
     p.add_argument("--tau-rate", type=POSITIVE, metavar="NM_PER_S",
-                   help="--smooth: largest |dtau/dt| (default tau_max / 20 ms)")
+                   help="--smooth: largest |dtau/dt|, N m/s (N/s for a linear actuator; "
+                   "default tau_max / 20 ms)")
     p.add_argument("--closed-loop", action="store_true",
                    help="simulate NA and APD, with the same split, tracking the time-optimal "
                    "plan of the last split --split names (min-max for the default both, "
@@ -51,23 +52,24 @@ def add_parser(sub, common):
 
 def run(args):
     from ...core.errors import ArgumentError
-    from ...core.task import effort_unit
     from ...infra.results import dumps
     from ...planning.report import format_report, run_plan, write_plan_csvs
     if args.tau_rate is not None and not args.smooth:
         raise ArgumentError("--tau-rate limits the smoothed plan's torque rate: add --smooth")
     m = model(args)
+    said = progress(args)           # stage lines on stderr, with --json too (stdout stays JSON)
     res, plans, loops = run_plan(
         m, path=args.path, move=args.move, tau_max=tau_max(args, m), margin=args.margin,
         grid=args.grid, splits=("min_norm", "min_max") if args.split == "both" else (args.split,),
         kinematic={k: getattr(args, k) for k in ("v_max", "a_max", "j_max")},
         smooth=args.smooth, tau_rate=args.tau_rate,
-        closed_loop_margins=args.margins if args.closed_loop else None)
-    print(dumps(res) if args.json else format_report(res, loops, effort_unit(m)))
+        closed_loop_margins=args.margins if args.closed_loop else None, progress=said)
+    print(dumps(res) if args.json else format_report(res, loops))
     if args.out:
         from ...figures.planning import plan_figures
         from ...infra.results import provenance
         written = write_plan_csvs(args.out, m, plans)
+        said("figures: the phase plane, the torques and the path on the force map")
         written += plan_figures(m, plans, pathlib.Path(args.out), provenance(m), res["tau_max"])
         for p in written:
             print(f"wrote {p}", file=sys.stderr if args.json else sys.stdout)

@@ -1,6 +1,4 @@
 # `pm2dof simulate --reference FILE`: controllers tracking a reference file.
-import json
-
 from ..options import NONNEGATIVE, model
 
 
@@ -31,7 +29,9 @@ def run(args):
         reference_summary,
         simulate_reference,
     )
-    res = reference_summary(simulate_reference(model(args), args.reference, args.controller,
-                                               split=args.split, settle_time=args.settle))
-    print(json.dumps(res, indent=1) if args.json else format_reference_summary(res))
+    from ...infra.results import dumps
+    m = model(args)
+    res = reference_summary(simulate_reference(m, args.reference, args.controller,
+                                               split=args.split, settle_time=args.settle), m)
+    print(dumps(res) if args.json else format_reference_summary(res))
     return 0

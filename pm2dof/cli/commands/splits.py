@@ -18,9 +18,11 @@ def add_parser(sub, common):
                        "and plot RMSE and clipped samples against it (splits_high.png).",
                        epilog="example: pm2dof splits --tau-max 6.0 --preload 1.0 --out out")
     p.add_argument("--tau-max", type=POSITIVE, metavar="NM",
-                   help="torque limit of every actuator, N m (default: [limits].tau_max)")
+                   help="limit of every actuator, N m (N for a linear actuator; default: "
+                   "[limits].tau_max)")
     p.add_argument("--preload", type=NONNEGATIVE, metavar="NM",
-                   help="least |tau_i| of the preload split, N m (default: [control].preload)")
+                   help="least |tau_i| of the preload split, N m (N for a linear actuator; "
+                   "default: [control].preload)")
     p.add_argument("--preload-sign", type=float, nargs="+", metavar="S",
                    help="sign (+1/-1) each actuator keeps under the preload split "
                    "(default: [control].preload_sign)")

@@ -7,10 +7,12 @@ def add_parser(sub, common):
                        description="Simulate APD, NA and NA with Gamma = 0 (same gains, no "
                        "adaptation) on each move of the model file and print the RMSE of eq. 41 "
                        "(m) and the RPE (percent reduction from APD to NA) beside the paper's "
-                       "measured Table 3. The plant uses the model file's [plant] truth, not the "
+                       "measured Table 3; a platform's orientation phi has an RMSE of its own (rad). "
+                       "The plant uses the model file's [plant] truth, not the "
                        "controllers' nominal parameters.")
     p.add_argument("--json", action="store_true", help="print JSON: {speed: {apd_rmse, na_rmse, "
-                   "na_no_adaptation_rmse, rpe_percent, trajectory_duration_s, ...}}")
+                   "na_no_adaptation_rmse (m), rpe_percent, trajectory_duration (s), a "
+                   "platform's apd_phi_rmse, ... (rad), units, ...}}")
     p.add_argument("--exact-encoders", action="store_true",
                    help="no encoder quantisation (default: [sensing].encoder_counts_per_rev)")
     p.add_argument("--save", metavar="FILE", help="also write the numbers and provenance as JSON")

@@ -133,7 +133,6 @@ extern "C" {
 #define casadi_s22 CASADI_PREFIX(s22)
 #define casadi_s23 CASADI_PREFIX(s23)
 #define casadi_s24 CASADI_PREFIX(s24)
-#define casadi_s25 CASADI_PREFIX(s25)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
@@ -339,43 +338,42 @@ static const casadi_int casadi_s4[3] = {16, 1, 1};
 static const casadi_int casadi_s5[3] = {20, 1, 1};
 static const casadi_int casadi_s6[3] = {1, 1, 1};
 static const casadi_int casadi_s7[3] = {14, 1, 1};
-static const casadi_int casadi_s8[3] = {25, 1, 1};
+static const casadi_int casadi_s8[3] = {26, 1, 1};
 static const casadi_int casadi_s9[3] = {15, 1, 1};
 static const casadi_int casadi_s10[3] = {11, 1, 1};
 static const casadi_int casadi_s11[3] = {18, 1, 1};
 static const casadi_int casadi_s12[3] = {6, 1, 1};
-static const casadi_int casadi_s13[3] = {40, 1, 1};
+static const casadi_int casadi_s13[3] = {41, 1, 1};
 static const casadi_int casadi_s14[3] = {17, 1, 1};
 static const casadi_int casadi_s15[3] = {30, 1, 1};
-static const casadi_int casadi_s16[3] = {26, 1, 1};
-static const casadi_int casadi_s17[3] = {44, 1, 1};
-static const casadi_int casadi_s18[3] = {45, 1, 1};
-static const casadi_int casadi_s19[21] = 
+static const casadi_int casadi_s16[3] = {44, 1, 1};
+static const casadi_int casadi_s17[3] = {45, 1, 1};
+static const casadi_int casadi_s18[21] = 
   {4, 6, 0, 1, 2, 3, 4, 8,
   12, 0, 1, 2, 3, 0, 1, 2,
   3, 0, 1, 2, 3};
-static const casadi_int casadi_s20[11] = 
+static const casadi_int casadi_s19[11] = 
   {6, 2, 0, 3, 6, 2, 4, 5,
   3, 4, 5};
-static const casadi_int casadi_s21[15] = 
+static const casadi_int casadi_s20[15] = 
   {2, 6, 0, 0, 0, 1, 2, 4,
   6, 0, 1, 0, 1, 0, 1};
-static const casadi_int casadi_s22[27] = 
+static const casadi_int casadi_s21[27] = 
   {4, 6, 0, 2, 4, 7, 10, 14,
   18, 2, 3, 2, 3, 0, 2, 3,
   1, 2, 3, 0, 1, 2, 3, 0,
   1, 2, 3};
-static const casadi_int casadi_s23[25] = 
+static const casadi_int casadi_s22[25] = 
   {6, 4, 0, 3, 6, 12, 18, 2,
   4, 5, 3, 4, 5, 0, 1, 2,
   3, 4, 5, 0, 1, 2, 3, 4,
   5};
-static const casadi_int casadi_s24[29] = 
+static const casadi_int casadi_s23[29] = 
   {4, 6, 0, 3, 6, 9, 12, 16,
   20, 0, 2, 3, 1, 2, 3, 0,
   2, 3, 1, 2, 3, 0, 1, 2,
   3, 0, 1, 2, 3};
-static const casadi_int casadi_s25[12] = 
+static const casadi_int casadi_s24[12] = 
   {1, 2, 4, 5, 7, 8, 10, 11,
   14, 15, 18, 19};
 
@@ -4421,7 +4419,7 @@ CASADI_SYMBOL_EXPORT int fivebar_forward_dynamics_work_bytes(casadi_int *sz_arg,
   return 0;
 }
 
-/* fivebar_na_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[25])->(tau_a[2],state_next[14],status,diag[10]) */
+/* fivebar_na_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[26])->(tau_a[2],state_next[14],status,diag[10]) */
 static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -4494,9 +4492,9 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a23=(a00+a22);
   a23=casadi_fabs(a23);
   a10=casadi_fmax(a10,a23);
-  a23=arg[5]? arg[5][24] : 0;
+  a23=arg[5]? arg[5][25] : 0;
   a10=(a10<=a23);
-  a23=arg[5]? arg[5][16] : 0;
+  a23=arg[5]? arg[5][17] : 0;
   a18=(a18/a19);
   a24=(a04*a18);
   a02=(a02/a19);
@@ -4516,7 +4514,7 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a19=2.;
   a26=(a26/a19);
   a23=(a23<=a26);
-  a22=arg[5]? arg[5][17] : 0;
+  a22=arg[5]? arg[5][18] : 0;
   a27=5.0000000000000000e-01;
   a28=1.;
   a29=casadi_sq(a18);
@@ -4563,12 +4561,12 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a35=arg[5]? arg[5][2] : 0;
   a36=arg[3]? arg[3][0] : 0;
   a37=arg[0]? arg[0][2] : 0;
-  a38=arg[5]? arg[5][15] : 0;
+  a38=arg[5]? arg[5][16] : 0;
   a17=(a21+a17);
   a17=(a17+a09);
   a09=arg[0]? arg[0][0] : 0;
   a39=(a17-a09);
-  a40=arg[5]? arg[5][14] : 0;
+  a40=arg[5]? arg[5][15] : 0;
   a39=(a39/a40);
   a39=(a39-a37);
   a39=(a38*a39);
@@ -4905,13 +4903,13 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a32=(a32<a18);
   a18=(a23&&a32);
   a18=(a10&&a18);
-  a02=arg[5]? arg[5][18] : 0;
+  a02=arg[5]? arg[5][19] : 0;
   a45=(-a02);
   a45=casadi_fmax(a22,a45);
   a45=casadi_fmin(a45,a02);
   a45=(a18?a45:0);
   if (res[0]!=0) res[0][0]=a45;
-  a45=arg[5]? arg[5][19] : 0;
+  a45=arg[5]? arg[5][20] : 0;
   a36=(-a45);
   a36=casadi_fmax(a06,a36);
   a36=casadi_fmin(a36,a45);
@@ -4935,6 +4933,18 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a34=(a34?a46:0);
   a36=(a36+a34);
   if (res[1]!=0) res[1][3]=a36;
+  a36=arg[5]? arg[5][14] : 0;
+  a34=0.;
+  a36=(a36!=a34);
+  a22=casadi_fabs(a22);
+  a22=(a22-a02);
+  a06=casadi_fabs(a06);
+  a06=(a06-a45);
+  a22=casadi_fmax(a22,a06);
+  a34=(a34<a22);
+  a36=(a36&&a34);
+  a36=(!a36);
+  a18=(a18&&a36);
   a43=(a18?a43:0);
   a36=(!a18);
   a29=(a36?a29:0);
@@ -4976,29 +4986,22 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a36=(a36?a47:0);
   a18=(a18+a36);
   if (res[1]!=0) res[1][13]=a18;
-  a18=0.;
-  a22=casadi_fabs(a22);
-  a22=(a22-a02);
-  a06=casadi_fabs(a06);
-  a06=(a06-a45);
-  a22=casadi_fmax(a22,a06);
-  a18=(a18<a22);
-  a18=(a18?a19:0);
-  a18=(a32?a18:0);
+  a34=(a34?a19:0);
+  a34=(a32?a34:0);
   a32=(!a32);
   a19=3.;
   a32=(a32?a19:0);
-  a18=(a18+a32);
-  a18=(a23?a18:0);
+  a34=(a34+a32);
+  a34=(a23?a34:0);
   a23=(!a23);
   a23=(a23?a28:0);
-  a18=(a18+a23);
-  a18=(a10?a18:0);
+  a34=(a34+a23);
+  a34=(a10?a34:0);
   a10=(!a10);
   a23=5.;
   a10=(a10?a23:0);
-  a18=(a18+a10);
-  if (res[2]!=0) res[2][0]=a18;
+  a34=(a34+a10);
+  if (res[2]!=0) res[2][0]=a34;
   if (res[3]!=0) res[3][0]=a17;
   if (res[3]!=0) res[3][1]=a14;
   if (res[3]!=0) res[3][2]=a39;
@@ -5099,7 +5102,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_step_work_bytes(casadi_int *sz_arg, casadi_i
   return 0;
 }
 
-/* fivebar_na_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[25])->(tau_a[2],state_next[14],status,diag[10]) */
+/* fivebar_na_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[26])->(tau_a[2],state_next[14],status,diag[10]) */
 static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -5172,9 +5175,9 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a23=(a00+a22);
   a23=casadi_fabs(a23);
   a10=casadi_fmax(a10,a23);
-  a23=arg[5]? arg[5][24] : 0;
+  a23=arg[5]? arg[5][25] : 0;
   a10=(a10<=a23);
-  a23=arg[5]? arg[5][16] : 0;
+  a23=arg[5]? arg[5][17] : 0;
   a18=(a18/a19);
   a24=(a04*a18);
   a02=(a02/a19);
@@ -5194,7 +5197,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a19=2.;
   a26=(a26/a19);
   a23=(a23<=a26);
-  a22=arg[5]? arg[5][17] : 0;
+  a22=arg[5]? arg[5][18] : 0;
   a27=5.0000000000000000e-01;
   a28=1.;
   a29=casadi_sq(a18);
@@ -5241,12 +5244,12 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a35=arg[5]? arg[5][2] : 0;
   a36=arg[3]? arg[3][0] : 0;
   a37=arg[0]? arg[0][2] : 0;
-  a38=arg[5]? arg[5][15] : 0;
+  a38=arg[5]? arg[5][16] : 0;
   a17=(a21+a17);
   a17=(a17+a09);
   a09=arg[0]? arg[0][0] : 0;
   a39=(a17-a09);
-  a40=arg[5]? arg[5][14] : 0;
+  a40=arg[5]? arg[5][15] : 0;
   a39=(a39/a40);
   a39=(a39-a37);
   a39=(a38*a39);
@@ -5583,13 +5586,13 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a32=(a32<a18);
   a18=(a23&&a32);
   a18=(a10&&a18);
-  a02=arg[5]? arg[5][18] : 0;
+  a02=arg[5]? arg[5][19] : 0;
   a45=(-a02);
   a45=casadi_fmax(a22,a45);
   a45=casadi_fmin(a45,a02);
   a45=(a18?a45:0);
   if (res[0]!=0) res[0][0]=a45;
-  a45=arg[5]? arg[5][19] : 0;
+  a45=arg[5]? arg[5][20] : 0;
   a36=(-a45);
   a36=casadi_fmax(a06,a36);
   a36=casadi_fmin(a36,a45);
@@ -5613,6 +5616,18 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a34=(a34?a46:0);
   a36=(a36+a34);
   if (res[1]!=0) res[1][3]=a36;
+  a36=arg[5]? arg[5][14] : 0;
+  a34=0.;
+  a36=(a36!=a34);
+  a22=casadi_fabs(a22);
+  a22=(a22/a02);
+  a06=casadi_fabs(a06);
+  a06=(a06/a45);
+  a22=casadi_fmax(a22,a06);
+  a22=(a28<a22);
+  a36=(a36&&a22);
+  a36=(!a36);
+  a18=(a18&&a36);
   a43=(a18?a43:0);
   a36=(!a18);
   a29=(a36?a29:0);
@@ -5654,12 +5669,6 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a36=(a36?a47:0);
   a18=(a18+a36);
   if (res[1]!=0) res[1][13]=a18;
-  a22=casadi_fabs(a22);
-  a22=(a22/a02);
-  a06=casadi_fabs(a06);
-  a06=(a06/a45);
-  a22=casadi_fmax(a22,a06);
-  a22=(a28<a22);
   a22=(a22?a19:0);
   a22=(a32?a22:0);
   a32=(!a32);
@@ -5776,7 +5785,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_minmax_step_work_bytes(casadi_int *sz_arg, c
   return 0;
 }
 
-/* fivebar_na_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[25])->(tau_a[2],state_next[14],status,diag[10]) */
+/* fivebar_na_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[26])->(tau_a[2],state_next[14],status,diag[10]) */
 static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -5849,9 +5858,9 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a23=(a00+a22);
   a23=casadi_fabs(a23);
   a10=casadi_fmax(a10,a23);
-  a23=arg[5]? arg[5][24] : 0;
+  a23=arg[5]? arg[5][25] : 0;
   a10=(a10<=a23);
-  a23=arg[5]? arg[5][16] : 0;
+  a23=arg[5]? arg[5][17] : 0;
   a18=(a18/a19);
   a24=(a04*a18);
   a02=(a02/a19);
@@ -5871,7 +5880,7 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a19=2.;
   a26=(a26/a19);
   a23=(a23<=a26);
-  a22=arg[5]? arg[5][17] : 0;
+  a22=arg[5]? arg[5][18] : 0;
   a27=5.0000000000000000e-01;
   a28=1.;
   a29=casadi_sq(a18);
@@ -5918,12 +5927,12 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a36=arg[5]? arg[5][2] : 0;
   a37=arg[3]? arg[3][0] : 0;
   a38=arg[0]? arg[0][2] : 0;
-  a39=arg[5]? arg[5][15] : 0;
+  a39=arg[5]? arg[5][16] : 0;
   a17=(a21+a17);
   a17=(a17+a09);
   a09=arg[0]? arg[0][0] : 0;
   a40=(a17-a09);
-  a41=arg[5]? arg[5][14] : 0;
+  a41=arg[5]? arg[5][15] : 0;
   a40=(a40/a41);
   a40=(a40-a38);
   a40=(a39*a40);
@@ -6143,13 +6152,13 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a46=(a46-a39);
   a02=(a02*a46);
   a04=(a04+a02);
-  a02=arg[5]? arg[5][18] : 0;
-  a35=arg[5]? arg[5][19] : 0;
+  a02=arg[5]? arg[5][19] : 0;
+  a35=arg[5]? arg[5][20] : 0;
   arg[6]=w+0;
   arg[7]=w+4;
-  arg[8] = arg[5]? arg[5] + 18 : 0;
-  arg[9] = arg[5]? arg[5] + 20 : 0;
-  arg[10] = arg[5]? arg[5] + 22 : 0;
+  arg[8] = arg[5]? arg[5] + 19 : 0;
+  arg[9] = arg[5]? arg[5] + 21 : 0;
+  arg[10] = arg[5]? arg[5] + 23 : 0;
   res[4]=w+12;
   res[5]=w+14;
   w[0] = a22;
@@ -6280,6 +6289,13 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a22=(a22?a47:0);
   a06=(a06+a22);
   if (res[1]!=0) res[1][3]=a06;
+  a06=arg[5]? arg[5][14] : 0;
+  a22=0.;
+  a06=(a06!=a22);
+  a22=(a33==a19);
+  a06=(a06&&a22);
+  a06=(!a06);
+  a18=(a18&&a06);
   a54=(a18?a54:0);
   a06=(!a18);
   a29=(a06?a29:0);
@@ -6321,18 +6337,17 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a06=(a06?a48:0);
   a18=(a18+a06);
   if (res[1]!=0) res[1][13]=a18;
-  a18=(a33==a19);
-  a19=(a18?a19:0);
-  a18=(!a18);
+  a19=(a22?a19:0);
+  a22=(!a22);
   a33=(a33==a28);
-  a06=4.;
-  a33=(a33?a06:0);
-  a18=(a18?a33:0);
-  a19=(a19+a18);
+  a18=4.;
+  a33=(a33?a18:0);
+  a22=(a22?a33:0);
+  a19=(a19+a22);
   a19=(a34?a19:0);
   a34=(!a34);
-  a18=3.;
-  a34=(a34?a18:0);
+  a22=3.;
+  a34=(a34?a22:0);
   a19=(a19+a34);
   a19=(a23?a19:0);
   a23=(!a23);
@@ -6444,7 +6459,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_preload_step_work_bytes(casadi_int *sz_arg, 
   return 0;
 }
 
-/* fivebar_na_proj_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[25])->(tau_a[2],state_next[14],status,diag[10]) */
+/* fivebar_na_proj_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[26])->(tau_a[2],state_next[14],status,diag[10]) */
 static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -6517,9 +6532,9 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a23=(a00+a22);
   a23=casadi_fabs(a23);
   a10=casadi_fmax(a10,a23);
-  a23=arg[5]? arg[5][24] : 0;
+  a23=arg[5]? arg[5][25] : 0;
   a10=(a10<=a23);
-  a23=arg[5]? arg[5][16] : 0;
+  a23=arg[5]? arg[5][17] : 0;
   a18=(a18/a19);
   a24=(a04*a18);
   a02=(a02/a19);
@@ -6539,7 +6554,7 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a19=2.;
   a26=(a26/a19);
   a23=(a23<=a26);
-  a22=arg[5]? arg[5][17] : 0;
+  a22=arg[5]? arg[5][18] : 0;
   a27=5.0000000000000000e-01;
   a28=1.;
   a29=casadi_sq(a18);
@@ -6586,12 +6601,12 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a35=arg[5]? arg[5][2] : 0;
   a36=arg[3]? arg[3][0] : 0;
   a37=arg[0]? arg[0][2] : 0;
-  a38=arg[5]? arg[5][15] : 0;
+  a38=arg[5]? arg[5][16] : 0;
   a17=(a21+a17);
   a17=(a17+a09);
   a09=arg[0]? arg[0][0] : 0;
   a39=(a17-a09);
-  a40=arg[5]? arg[5][14] : 0;
+  a40=arg[5]? arg[5][15] : 0;
   a39=(a39/a40);
   a39=(a39-a37);
   a39=(a38*a39);
@@ -6948,13 +6963,13 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a32=(a32<a18);
   a18=(a23&&a32);
   a18=(a10&&a18);
-  a02=arg[5]? arg[5][18] : 0;
+  a02=arg[5]? arg[5][19] : 0;
   a45=(-a02);
   a45=casadi_fmax(a22,a45);
   a45=casadi_fmin(a45,a02);
   a45=(a18?a45:0);
   if (res[0]!=0) res[0][0]=a45;
-  a45=arg[5]? arg[5][19] : 0;
+  a45=arg[5]? arg[5][20] : 0;
   a36=(-a45);
   a36=casadi_fmax(a06,a36);
   a36=casadi_fmin(a36,a45);
@@ -6978,6 +6993,17 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a34=(a34?a46:0);
   a36=(a36+a34);
   if (res[1]!=0) res[1][3]=a36;
+  a36=arg[5]? arg[5][14] : 0;
+  a36=(a36!=a15);
+  a22=casadi_fabs(a22);
+  a22=(a22-a02);
+  a06=casadi_fabs(a06);
+  a06=(a06-a45);
+  a22=casadi_fmax(a22,a06);
+  a15=(a15<a22);
+  a36=(a36&&a15);
+  a36=(!a36);
+  a18=(a18&&a36);
   a43=(a18?a43:0);
   a36=(!a18);
   a29=(a36?a29:0);
@@ -7019,12 +7045,6 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a36=(a36?a47:0);
   a18=(a18+a36);
   if (res[1]!=0) res[1][13]=a18;
-  a22=casadi_fabs(a22);
-  a22=(a22-a02);
-  a06=casadi_fabs(a06);
-  a06=(a06-a45);
-  a22=casadi_fmax(a22,a06);
-  a15=(a15<a22);
   a15=(a15?a19:0);
   a15=(a32?a15:0);
   a32=(!a32);
@@ -7141,7 +7161,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_step_work_bytes(casadi_int *sz_arg, cas
   return 0;
 }
 
-/* fivebar_na_proj_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[25])->(tau_a[2],state_next[14],status,diag[10]) */
+/* fivebar_na_proj_minmax_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[26])->(tau_a[2],state_next[14],status,diag[10]) */
 static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -7214,9 +7234,9 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a23=(a00+a22);
   a23=casadi_fabs(a23);
   a10=casadi_fmax(a10,a23);
-  a23=arg[5]? arg[5][24] : 0;
+  a23=arg[5]? arg[5][25] : 0;
   a10=(a10<=a23);
-  a23=arg[5]? arg[5][16] : 0;
+  a23=arg[5]? arg[5][17] : 0;
   a18=(a18/a19);
   a24=(a04*a18);
   a02=(a02/a19);
@@ -7236,7 +7256,7 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a19=2.;
   a26=(a26/a19);
   a23=(a23<=a26);
-  a22=arg[5]? arg[5][17] : 0;
+  a22=arg[5]? arg[5][18] : 0;
   a27=5.0000000000000000e-01;
   a28=1.;
   a29=casadi_sq(a18);
@@ -7283,12 +7303,12 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a35=arg[5]? arg[5][2] : 0;
   a36=arg[3]? arg[3][0] : 0;
   a37=arg[0]? arg[0][2] : 0;
-  a38=arg[5]? arg[5][15] : 0;
+  a38=arg[5]? arg[5][16] : 0;
   a17=(a21+a17);
   a17=(a17+a09);
   a09=arg[0]? arg[0][0] : 0;
   a39=(a17-a09);
-  a40=arg[5]? arg[5][14] : 0;
+  a40=arg[5]? arg[5][15] : 0;
   a39=(a39/a40);
   a39=(a39-a37);
   a39=(a38*a39);
@@ -7641,87 +7661,92 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a32=(a32+a39);
   a32=(a32+a38);
   a32=casadi_fabs(a32);
-  a15=casadi_inf;
-  a32=(a32<a15);
-  a15=(a23&&a32);
-  a15=(a10&&a15);
-  a18=arg[5]? arg[5][18] : 0;
-  a02=(-a18);
-  a02=casadi_fmax(a22,a02);
-  a02=casadi_fmin(a02,a18);
-  a02=(a15?a02:0);
-  if (res[0]!=0) res[0][0]=a02;
+  a18=casadi_inf;
+  a32=(a32<a18);
+  a18=(a23&&a32);
+  a18=(a10&&a18);
   a02=arg[5]? arg[5][19] : 0;
   a45=(-a02);
-  a45=casadi_fmax(a06,a45);
+  a45=casadi_fmax(a22,a45);
   a45=casadi_fmin(a45,a02);
-  a45=(a15?a45:0);
-  if (res[0]!=0) res[0][1]=a45;
-  a45=(a10&&a32);
-  a36=(a45?a17:0);
-  a24=(!a45);
-  a09=(a24?a09:0);
-  a36=(a36+a09);
-  if (res[1]!=0) res[1][0]=a36;
-  a36=(a45?a14:0);
-  a13=(a24?a13:0);
-  a36=(a36+a13);
-  if (res[1]!=0) res[1][1]=a36;
-  a36=(a45?a39:0);
-  a37=(a24?a37:0);
-  a36=(a36+a37);
-  if (res[1]!=0) res[1][2]=a36;
-  a45=(a45?a38:0);
-  a24=(a24?a46:0);
-  a45=(a45+a24);
-  if (res[1]!=0) res[1][3]=a45;
-  a43=(a15?a43:0);
-  a45=(!a15);
-  a29=(a45?a29:0);
-  a43=(a43+a29);
-  if (res[1]!=0) res[1][4]=a43;
-  a42=(a15?a42:0);
-  a00=(a45?a00:0);
-  a42=(a42+a00);
-  if (res[1]!=0) res[1][5]=a42;
-  a33=(a15?a33:0);
-  a35=(a45?a35:0);
-  a33=(a33+a35);
-  if (res[1]!=0) res[1][6]=a33;
-  a05=(a15?a05:0);
-  a58=(a45?a58:0);
-  a05=(a05+a58);
-  if (res[1]!=0) res[1][7]=a05;
-  a44=(a15?a44:0);
-  a25=(a45?a25:0);
-  a44=(a44+a25);
-  if (res[1]!=0) res[1][8]=a44;
-  a59=(a15?a59:0);
-  a60=(a45?a60:0);
-  a59=(a59+a60);
-  if (res[1]!=0) res[1][9]=a59;
-  a51=(a15?a51:0);
-  a20=(a45?a20:0);
-  a51=(a51+a20);
-  if (res[1]!=0) res[1][10]=a51;
-  a16=(a15?a16:0);
-  a57=(a45?a57:0);
-  a16=(a16+a57);
-  if (res[1]!=0) res[1][11]=a16;
-  a56=(a15?a56:0);
-  a52=(a45?a52:0);
-  a56=(a56+a52);
-  if (res[1]!=0) res[1][12]=a56;
-  a15=(a15?a40:0);
-  a45=(a45?a47:0);
-  a15=(a15+a45);
-  if (res[1]!=0) res[1][13]=a15;
+  a45=(a18?a45:0);
+  if (res[0]!=0) res[0][0]=a45;
+  a45=arg[5]? arg[5][20] : 0;
+  a36=(-a45);
+  a36=casadi_fmax(a06,a36);
+  a36=casadi_fmin(a36,a45);
+  a36=(a18?a36:0);
+  if (res[0]!=0) res[0][1]=a36;
+  a36=(a10&&a32);
+  a24=(a36?a17:0);
+  a34=(!a36);
+  a09=(a34?a09:0);
+  a24=(a24+a09);
+  if (res[1]!=0) res[1][0]=a24;
+  a24=(a36?a14:0);
+  a13=(a34?a13:0);
+  a24=(a24+a13);
+  if (res[1]!=0) res[1][1]=a24;
+  a24=(a36?a39:0);
+  a37=(a34?a37:0);
+  a24=(a24+a37);
+  if (res[1]!=0) res[1][2]=a24;
+  a36=(a36?a38:0);
+  a34=(a34?a46:0);
+  a36=(a36+a34);
+  if (res[1]!=0) res[1][3]=a36;
+  a36=arg[5]? arg[5][14] : 0;
+  a36=(a36!=a15);
   a22=casadi_fabs(a22);
-  a22=(a22/a18);
+  a22=(a22/a02);
   a06=casadi_fabs(a06);
-  a06=(a06/a02);
+  a06=(a06/a45);
   a22=casadi_fmax(a22,a06);
   a22=(a28<a22);
+  a36=(a36&&a22);
+  a36=(!a36);
+  a18=(a18&&a36);
+  a43=(a18?a43:0);
+  a36=(!a18);
+  a29=(a36?a29:0);
+  a43=(a43+a29);
+  if (res[1]!=0) res[1][4]=a43;
+  a42=(a18?a42:0);
+  a00=(a36?a00:0);
+  a42=(a42+a00);
+  if (res[1]!=0) res[1][5]=a42;
+  a33=(a18?a33:0);
+  a35=(a36?a35:0);
+  a33=(a33+a35);
+  if (res[1]!=0) res[1][6]=a33;
+  a05=(a18?a05:0);
+  a58=(a36?a58:0);
+  a05=(a05+a58);
+  if (res[1]!=0) res[1][7]=a05;
+  a44=(a18?a44:0);
+  a25=(a36?a25:0);
+  a44=(a44+a25);
+  if (res[1]!=0) res[1][8]=a44;
+  a59=(a18?a59:0);
+  a60=(a36?a60:0);
+  a59=(a59+a60);
+  if (res[1]!=0) res[1][9]=a59;
+  a51=(a18?a51:0);
+  a20=(a36?a20:0);
+  a51=(a51+a20);
+  if (res[1]!=0) res[1][10]=a51;
+  a16=(a18?a16:0);
+  a57=(a36?a57:0);
+  a16=(a16+a57);
+  if (res[1]!=0) res[1][11]=a16;
+  a56=(a18?a56:0);
+  a52=(a36?a52:0);
+  a56=(a56+a52);
+  if (res[1]!=0) res[1][12]=a56;
+  a18=(a18?a40:0);
+  a36=(a36?a47:0);
+  a18=(a18+a36);
+  if (res[1]!=0) res[1][13]=a18;
   a22=(a22?a19:0);
   a22=(a32?a22:0);
   a32=(!a32);
@@ -7838,7 +7863,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_step_work_bytes(casadi_int *sz_a
   return 0;
 }
 
-/* fivebar_na_proj_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[25])->(tau_a[2],state_next[14],status,diag[10]) */
+/* fivebar_na_proj_preload_step:(state[14],qa[2],xd[2],xd_dot[2],xd_ddot[2],params[26])->(tau_a[2],state_next[14],status,diag[10]) */
 static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -7911,9 +7936,9 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a23=(a00+a22);
   a23=casadi_fabs(a23);
   a10=casadi_fmax(a10,a23);
-  a23=arg[5]? arg[5][24] : 0;
+  a23=arg[5]? arg[5][25] : 0;
   a10=(a10<=a23);
-  a23=arg[5]? arg[5][16] : 0;
+  a23=arg[5]? arg[5][17] : 0;
   a18=(a18/a19);
   a24=(a04*a18);
   a02=(a02/a19);
@@ -7933,7 +7958,7 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a19=2.;
   a26=(a26/a19);
   a23=(a23<=a26);
-  a22=arg[5]? arg[5][17] : 0;
+  a22=arg[5]? arg[5][18] : 0;
   a27=5.0000000000000000e-01;
   a28=1.;
   a29=casadi_sq(a18);
@@ -7980,12 +8005,12 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a36=arg[5]? arg[5][2] : 0;
   a37=arg[3]? arg[3][0] : 0;
   a38=arg[0]? arg[0][2] : 0;
-  a39=arg[5]? arg[5][15] : 0;
+  a39=arg[5]? arg[5][16] : 0;
   a17=(a21+a17);
   a17=(a17+a09);
   a09=arg[0]? arg[0][0] : 0;
   a40=(a17-a09);
-  a41=arg[5]? arg[5][14] : 0;
+  a41=arg[5]? arg[5][15] : 0;
   a40=(a40/a41);
   a40=(a40-a38);
   a40=(a39*a40);
@@ -8205,13 +8230,13 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a46=(a46-a39);
   a02=(a02*a46);
   a04=(a04+a02);
-  a02=arg[5]? arg[5][18] : 0;
-  a35=arg[5]? arg[5][19] : 0;
+  a02=arg[5]? arg[5][19] : 0;
+  a35=arg[5]? arg[5][20] : 0;
   arg[6]=w+0;
   arg[7]=w+4;
-  arg[8] = arg[5]? arg[5] + 18 : 0;
-  arg[9] = arg[5]? arg[5] + 20 : 0;
-  arg[10] = arg[5]? arg[5] + 22 : 0;
+  arg[8] = arg[5]? arg[5] + 19 : 0;
+  arg[9] = arg[5]? arg[5] + 21 : 0;
+  arg[10] = arg[5]? arg[5] + 23 : 0;
   res[4]=w+12;
   res[5]=w+14;
   w[0] = a22;
@@ -8330,19 +8355,19 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a34=(a34+a40);
   a34=(a34+a39);
   a34=casadi_fabs(a34);
-  a15=casadi_inf;
-  a34=(a34<a15);
-  a15=(a23&&a34);
-  a15=(a10&&a15);
-  a18=(-a02);
-  a22=casadi_fmax(a22,a18);
+  a18=casadi_inf;
+  a34=(a34<a18);
+  a18=(a23&&a34);
+  a18=(a10&&a18);
+  a32=(-a02);
+  a22=casadi_fmax(a22,a32);
   a22=casadi_fmin(a22,a02);
-  a22=(a15?a22:0);
+  a22=(a18?a22:0);
   if (res[0]!=0) res[0][0]=a22;
   a22=(-a35);
   a06=casadi_fmax(a06,a22);
   a06=casadi_fmin(a06,a35);
-  a06=(a15?a06:0);
+  a06=(a18?a06:0);
   if (res[0]!=0) res[0][1]=a06;
   a06=(a10&&a34);
   a35=(a06?a17:0);
@@ -8362,53 +8387,58 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a22=(a22?a47:0);
   a06=(a06+a22);
   if (res[1]!=0) res[1][3]=a06;
-  a54=(a15?a54:0);
-  a06=(!a15);
+  a06=arg[5]? arg[5][14] : 0;
+  a06=(a06!=a15);
+  a15=(a33==a19);
+  a06=(a06&&a15);
+  a06=(!a06);
+  a18=(a18&&a06);
+  a54=(a18?a54:0);
+  a06=(!a18);
   a29=(a06?a29:0);
   a54=(a54+a29);
   if (res[1]!=0) res[1][4]=a54;
-  a43=(a15?a43:0);
+  a43=(a18?a43:0);
   a31=(a06?a31:0);
   a43=(a43+a31);
   if (res[1]!=0) res[1][5]=a43;
-  a61=(a15?a61:0);
+  a61=(a18?a61:0);
   a36=(a06?a36:0);
   a61=(a61+a36);
   if (res[1]!=0) res[1][6]=a61;
-  a05=(a15?a05:0);
+  a05=(a18?a05:0);
   a59=(a06?a59:0);
   a05=(a05+a59);
   if (res[1]!=0) res[1][7]=a05;
-  a45=(a15?a45:0);
+  a45=(a18?a45:0);
   a25=(a06?a25:0);
   a45=(a45+a25);
   if (res[1]!=0) res[1][8]=a45;
-  a60=(a15?a60:0);
+  a60=(a18?a60:0);
   a62=(a06?a62:0);
   a60=(a60+a62);
   if (res[1]!=0) res[1][9]=a60;
-  a52=(a15?a52:0);
+  a52=(a18?a52:0);
   a20=(a06?a20:0);
   a52=(a52+a20);
   if (res[1]!=0) res[1][10]=a52;
-  a16=(a15?a16:0);
+  a16=(a18?a16:0);
   a58=(a06?a58:0);
   a16=(a16+a58);
   if (res[1]!=0) res[1][11]=a16;
-  a57=(a15?a57:0);
+  a57=(a18?a57:0);
   a53=(a06?a53:0);
   a57=(a57+a53);
   if (res[1]!=0) res[1][12]=a57;
-  a15=(a15?a41:0);
+  a18=(a18?a41:0);
   a06=(a06?a48:0);
-  a15=(a15+a06);
-  if (res[1]!=0) res[1][13]=a15;
-  a15=(a33==a19);
+  a18=(a18+a06);
+  if (res[1]!=0) res[1][13]=a18;
   a19=(a15?a19:0);
   a15=(!a15);
   a33=(a33==a28);
-  a06=4.;
-  a33=(a33?a06:0);
+  a18=4.;
+  a33=(a33?a18:0);
   a15=(a15?a33:0);
   a19=(a19+a15);
   a19=(a34?a19:0);
@@ -15196,7 +15226,7 @@ CASADI_SYMBOL_EXPORT int fivebar_measure_work_bytes(casadi_int *sz_arg, casadi_i
   return 0;
 }
 
-/* fivebar_na_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
+/* fivebar_na_closed_loop:(x[18],u[6],p[41])->(x_next[18],y[17]) */
 static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
@@ -15210,7 +15240,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+25;
+  wr06 = wr05+26;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -15231,7 +15261,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[14];
+  w16 = wr05[15];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -15340,7 +15370,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_closed_loop_work_bytes(casadi_int *sz_arg, c
   return 0;
 }
 
-/* fivebar_na_minmax_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
+/* fivebar_na_minmax_closed_loop:(x[18],u[6],p[41])->(x_next[18],y[17]) */
 static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
@@ -15354,7 +15384,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+25;
+  wr06 = wr05+26;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -15375,7 +15405,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[14];
+  w16 = wr05[15];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -15484,7 +15514,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_minmax_closed_loop_work_bytes(casadi_int *sz
   return 0;
 }
 
-/* fivebar_na_preload_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
+/* fivebar_na_preload_closed_loop:(x[18],u[6],p[41])->(x_next[18],y[17]) */
 static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+116, *w07=w+120, *w08=w+122, *w09=w+128, *w10=w+130, *w11=w+132, *w13=w+134, *w14=w+136, w15, w16;
@@ -15498,7 +15528,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+25;
+  wr06 = wr05+26;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -15519,7 +15549,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[14];
+  w16 = wr05[15];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -15628,7 +15658,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_preload_closed_loop_work_bytes(casadi_int *s
   return 0;
 }
 
-/* fivebar_na_proj_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
+/* fivebar_na_proj_closed_loop:(x[18],u[6],p[41])->(x_next[18],y[17]) */
 static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
@@ -15642,7 +15672,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+25;
+  wr06 = wr05+26;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -15663,7 +15693,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[14];
+  w16 = wr05[15];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -15772,7 +15802,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_closed_loop_work_bytes(casadi_int *sz_a
   return 0;
 }
 
-/* fivebar_na_proj_minmax_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
+/* fivebar_na_proj_minmax_closed_loop:(x[18],u[6],p[41])->(x_next[18],y[17]) */
 static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+73, *w07=w+77, *w08=w+79, *w09=w+85, *w10=w+87, *w11=w+89, *w13=w+91, *w14=w+93, w15, w16;
@@ -15786,7 +15816,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+25;
+  wr06 = wr05+26;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -15807,7 +15837,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f22(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[14];
+  w16 = wr05[15];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -15916,7 +15946,7 @@ CASADI_SYMBOL_EXPORT int fivebar_na_proj_minmax_closed_loop_work_bytes(casadi_in
   return 0;
 }
 
-/* fivebar_na_proj_preload_closed_loop:(x[18],u[6],p[40])->(x_next[18],y[17]) */
+/* fivebar_na_proj_preload_closed_loop:(x[18],u[6],p[41])->(x_next[18],y[17]) */
 static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+116, *w07=w+120, *w08=w+122, *w09=w+128, *w10=w+130, *w11=w+132, *w13=w+134, *w14=w+136, w15, w16;
@@ -15930,7 +15960,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+25;
+  wr06 = wr05+26;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -15951,7 +15981,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f23(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[14];
+  w16 = wr05[15];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -17043,7 +17073,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_closed_loop_sparsity_in(casad
   switch (i) {
     case 0: return casadi_s11;
     case 1: return casadi_s4;
-    case 2: return casadi_s16;
+    case 2: return casadi_s8;
     default: return 0;
   }
 }
@@ -17191,7 +17221,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_minmax_closed_loop_sparsity_i
   switch (i) {
     case 0: return casadi_s11;
     case 1: return casadi_s4;
-    case 2: return casadi_s16;
+    case 2: return casadi_s8;
     default: return 0;
   }
 }
@@ -17339,7 +17369,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* fivebar_lqr_preload_closed_loop_sparsity_
   switch (i) {
     case 0: return casadi_s11;
     case 1: return casadi_s4;
-    case 2: return casadi_s16;
+    case 2: return casadi_s8;
     default: return 0;
   }
 }
@@ -21983,7 +22013,7 @@ CASADI_SYMBOL_EXPORT const char* fivebar_path_backward_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_path_backward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s6;
-    case 1: return casadi_s17;
+    case 1: return casadi_s16;
     case 2: return casadi_s10;
     default: return 0;
   }
@@ -22919,7 +22949,7 @@ CASADI_SYMBOL_EXPORT const char* fivebar_path_forward_name_out(casadi_int i) {
 CASADI_SYMBOL_EXPORT const casadi_int* fivebar_path_forward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s6;
-    case 1: return casadi_s18;
+    case 1: return casadi_s17;
     case 2: return casadi_s10;
     default: return 0;
   }
@@ -26960,18 +26990,18 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w50;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w49; i<8; ++i) *rr++ = *cs++;
-  casadi_densify(w50, casadi_s19, w51, 0);
+  casadi_densify(w50, casadi_s18, w51, 0);
   w02 = 6.;
   w02  = (w01/w02);
   for (rr=w52, cs=w50+0; cs!=w50+12; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
-  casadi_trans(w52,casadi_s21, w53, casadi_s20, iw);
+  casadi_trans(w52,casadi_s20, w53, casadi_s19, iw);
   casadi_clear(w54, 12);
   for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w49;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w49, 2, w50, casadi_s19, w54);
+  casadi_mtimes_dense_sparse(w49, 2, w50, casadi_s18, w54);
   casadi_clear(w49, 8);
   for (i=0, rr=w00, cs=w11; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w55;
@@ -26982,15 +27012,15 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w56;
   for (i=0, cs=w53; i<6; ++i) *rr++ = *cs++;
   for (i=0, cs=w55; i<12; ++i) *rr++ = *cs++;
-  casadi_trans(w56,casadi_s23, w57, casadi_s22, iw);
-  casadi_densify(w57, casadi_s22, w58, 0);
-  casadi_project(w50, casadi_s19, w59, casadi_s24, w);
+  casadi_trans(w56,casadi_s22, w57, casadi_s21, iw);
+  casadi_densify(w57, casadi_s21, w58, 0);
+  casadi_project(w50, casadi_s18, w59, casadi_s23, w);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w57, cs=w57; i<18; ++i) (*rr++)  = (w14*(*cs++));
-  casadi_project(w57, casadi_s22, w60, casadi_s24, w);
+  casadi_project(w57, casadi_s21, w60, casadi_s23, w);
   for (i=0, rr=w59, cs=w60; i<20; ++i) (*rr++) += (*cs++);
-  for (cii=casadi_s25, rr=w55, cs=w59; cii!=casadi_s25+12; ++cii) *rr++ = cs[*cii];
+  for (cii=casadi_s24, rr=w55, cs=w59; cii!=casadi_s24+12; ++cii) *rr++ = cs[*cii];
   for (i=0, rr=w54, cs=w55; i<6; ++i) for (j=0; j<2; ++j) rr[i+j*6] = *cs++;
   casadi_clear(w55, 12);
   for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
@@ -26998,7 +27028,7 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w49;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w49, 2, w59, casadi_s24, w55);
+  casadi_mtimes_dense_sparse(w49, 2, w59, casadi_s23, w55);
   casadi_clear(w49, 8);
   for (i=0, rr=w00, cs=w17; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w61;
@@ -27012,7 +27042,7 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w63, cs=w62; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w62, cs=w63; i<24; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w58, cs=w62; i<24; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s19, w62, 0);
+  casadi_densify(w50, casadi_s18, w62, 0);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w63, cs=w63; i<24; ++i) (*rr++)  = (w14*(*cs++));
@@ -27039,7 +27069,7 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w63, cs=w62; i<4; ++i) for (j=0; j<6; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w62, cs=w63; i<24; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w58, cs=w62; i<24; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s19, w62, 0);
+  casadi_densify(w50, casadi_s18, w62, 0);
   for (i=0, rr=w63, cs=w63; i<24; ++i) (*rr++)  = (w01*(*cs++));
   for (i=0, rr=w62, cs=w63; i<24; ++i) (*rr++) += (*cs++);
   for (rr=w50, cs=w62+0; cs!=w62+24; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;

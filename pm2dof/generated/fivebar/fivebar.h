@@ -31,12 +31,12 @@
  *   fivebar_Y(q[4], xed[2], xrd[2], xrdd[2]) -> (Y[20], sing[2])
  *   fivebar_torque_splits(q[4], u[2], tau_max[2], preload_sign[2], preload[2]) -> (tau_min_norm[2], tau_min_max[2], min_max_ratio[1], tau_preload[2], preload_mode[1], sing[2])
  *   fivebar_forward_dynamics(xe[2], xed[2], tau_a[2], theta[10]) -> (xedd[2], sing[2])
- *   fivebar_na_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_proj_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_proj_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
- *   fivebar_na_proj_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[25]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[26]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[26]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[26]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_proj_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[26]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_proj_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[26]) -> (tau_a[2], state_next[14], status[1], diag[10])
+ *   fivebar_na_proj_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[26]) -> (tau_a[2], state_next[14], status[1], diag[10])
  *   fivebar_apd_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
  *   fivebar_apd_minmax_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
  *   fivebar_apd_preload_step(state[14], qa[2], xd[2], xd_dot[2], xd_ddot[2], params[15]) -> (tau_a[2], state_next[14], status[1], diag[10])
@@ -49,12 +49,12 @@
  *   fivebar_plant_xedd(xe[2], xed[2], tau_a[2], plant[15]) -> (xedd[2])
  *   fivebar_plant_step(x[4], tau_a[2], plant[15], h[1]) -> (x_next[4])
  *   fivebar_measure(xe[2], plant[15]) -> (qa[2])
- *   fivebar_na_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
- *   fivebar_na_minmax_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
- *   fivebar_na_preload_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
- *   fivebar_na_proj_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
- *   fivebar_na_proj_minmax_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
- *   fivebar_na_proj_preload_closed_loop(x[18], u[6], p[40]) -> (x_next[18], y[17])
+ *   fivebar_na_closed_loop(x[18], u[6], p[41]) -> (x_next[18], y[17])
+ *   fivebar_na_minmax_closed_loop(x[18], u[6], p[41]) -> (x_next[18], y[17])
+ *   fivebar_na_preload_closed_loop(x[18], u[6], p[41]) -> (x_next[18], y[17])
+ *   fivebar_na_proj_closed_loop(x[18], u[6], p[41]) -> (x_next[18], y[17])
+ *   fivebar_na_proj_minmax_closed_loop(x[18], u[6], p[41]) -> (x_next[18], y[17])
+ *   fivebar_na_proj_preload_closed_loop(x[18], u[6], p[41]) -> (x_next[18], y[17])
  *   fivebar_apd_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
  *   fivebar_apd_minmax_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
  *   fivebar_apd_preload_closed_loop(x[18], u[6], p[30]) -> (x_next[18], y[17])
@@ -80,7 +80,7 @@
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[10]
- *   na_params: Kd[2], Q[2], Gamma[10], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
+ *   na_params: Kd[2], Q[2], Gamma[10], freeze_saturated[1], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
  *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
  *   ctc_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]
  *   lqr_params: T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[2], preload_sign[2], preload[2], closure_tol[1]

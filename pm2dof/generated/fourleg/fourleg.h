@@ -31,12 +31,12 @@
  *   fourleg_Y(q[8], xed[2], xrd[2], xrdd[2]) -> (Y[40], sing[2])
  *   fourleg_torque_splits(q[8], u[2], tau_max[4], preload_sign[4], preload[4]) -> (tau_min_norm[4], tau_min_max[4], min_max_ratio[1], tau_preload[4], preload_mode[1], sing[2])
  *   fourleg_forward_dynamics(xe[2], xed[2], tau_a[4], theta[20]) -> (xedd[2], sing[2])
- *   fourleg_na_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_proj_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_proj_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
- *   fourleg_na_proj_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[41]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[42]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[42]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[42]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_proj_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[42]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_proj_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[42]) -> (tau_a[4], state_next[24], status[1], diag[10])
+ *   fourleg_na_proj_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[42]) -> (tau_a[4], state_next[24], status[1], diag[10])
  *   fourleg_apd_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
  *   fourleg_apd_minmax_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
  *   fourleg_apd_preload_step(state[24], qa[4], xd[2], xd_dot[2], xd_ddot[2], params[21]) -> (tau_a[4], state_next[24], status[1], diag[10])
@@ -49,12 +49,12 @@
  *   fourleg_plant_xedd(xe[2], xed[2], tau_a[4], plant[27]) -> (xedd[2])
  *   fourleg_plant_step(x[4], tau_a[4], plant[27], h[1]) -> (x_next[4])
  *   fourleg_measure(xe[2], plant[27]) -> (qa[4])
- *   fourleg_na_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
- *   fourleg_na_minmax_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
- *   fourleg_na_preload_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
- *   fourleg_na_proj_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
- *   fourleg_na_proj_minmax_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
- *   fourleg_na_proj_preload_closed_loop(x[28], u[6], p[68]) -> (x_next[28], y[29])
+ *   fourleg_na_closed_loop(x[28], u[6], p[69]) -> (x_next[28], y[29])
+ *   fourleg_na_minmax_closed_loop(x[28], u[6], p[69]) -> (x_next[28], y[29])
+ *   fourleg_na_preload_closed_loop(x[28], u[6], p[69]) -> (x_next[28], y[29])
+ *   fourleg_na_proj_closed_loop(x[28], u[6], p[69]) -> (x_next[28], y[29])
+ *   fourleg_na_proj_minmax_closed_loop(x[28], u[6], p[69]) -> (x_next[28], y[29])
+ *   fourleg_na_proj_preload_closed_loop(x[28], u[6], p[69]) -> (x_next[28], y[29])
  *   fourleg_apd_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
  *   fourleg_apd_minmax_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
  *   fourleg_apd_preload_closed_loop(x[28], u[6], p[48]) -> (x_next[28], y[29])
@@ -80,7 +80,7 @@
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[20]
- *   na_params: Kd[2], Q[2], Gamma[20], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
+ *   na_params: Kd[2], Q[2], Gamma[20], freeze_saturated[1], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
  *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
  *   ctc_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
  *   lqr_params: T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]

@@ -30,12 +30,12 @@
  *   prr3_platform_Y(q[6], xed[3], xrd[3], xrdd[3]) -> (Y[57], sing[2])
  *   prr3_platform_torque_splits(q[6], u[3], tau_max[3], preload_sign[3], preload[3]) -> (tau_min_norm[3], tau_min_max[3], min_max_ratio[1], tau_preload[3], preload_mode[1], sing[2])
  *   prr3_platform_forward_dynamics(xe[3], xed[3], tau_a[3], theta[19]) -> (xedd[3], sing[2])
- *   prr3_platform_na_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[39]) -> (tau_a[3], state_next[25], status[1], diag[14])
- *   prr3_platform_na_minmax_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[39]) -> (tau_a[3], state_next[25], status[1], diag[14])
- *   prr3_platform_na_preload_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[39]) -> (tau_a[3], state_next[25], status[1], diag[14])
- *   prr3_platform_na_proj_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[39]) -> (tau_a[3], state_next[25], status[1], diag[14])
- *   prr3_platform_na_proj_minmax_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[39]) -> (tau_a[3], state_next[25], status[1], diag[14])
- *   prr3_platform_na_proj_preload_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[39]) -> (tau_a[3], state_next[25], status[1], diag[14])
+ *   prr3_platform_na_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[40]) -> (tau_a[3], state_next[25], status[1], diag[14])
+ *   prr3_platform_na_minmax_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[40]) -> (tau_a[3], state_next[25], status[1], diag[14])
+ *   prr3_platform_na_preload_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[40]) -> (tau_a[3], state_next[25], status[1], diag[14])
+ *   prr3_platform_na_proj_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[40]) -> (tau_a[3], state_next[25], status[1], diag[14])
+ *   prr3_platform_na_proj_minmax_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[40]) -> (tau_a[3], state_next[25], status[1], diag[14])
+ *   prr3_platform_na_proj_preload_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[40]) -> (tau_a[3], state_next[25], status[1], diag[14])
  *   prr3_platform_apd_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[20]) -> (tau_a[3], state_next[25], status[1], diag[14])
  *   prr3_platform_apd_minmax_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[20]) -> (tau_a[3], state_next[25], status[1], diag[14])
  *   prr3_platform_apd_preload_step(state[25], qa[3], xd[3], xd_dot[3], xd_ddot[3], params[20]) -> (tau_a[3], state_next[25], status[1], diag[14])
@@ -48,12 +48,12 @@
  *   prr3_platform_plant_xedd(xe[3], xed[3], tau_a[3], plant[26]) -> (xedd[3])
  *   prr3_platform_plant_step(x[6], tau_a[3], plant[26], h[1]) -> (x_next[6])
  *   prr3_platform_measure(xe[3], plant[26]) -> (qa[3])
- *   prr3_platform_na_closed_loop(x[31], u[9], p[65]) -> (x_next[31], y[29])
- *   prr3_platform_na_minmax_closed_loop(x[31], u[9], p[65]) -> (x_next[31], y[29])
- *   prr3_platform_na_preload_closed_loop(x[31], u[9], p[65]) -> (x_next[31], y[29])
- *   prr3_platform_na_proj_closed_loop(x[31], u[9], p[65]) -> (x_next[31], y[29])
- *   prr3_platform_na_proj_minmax_closed_loop(x[31], u[9], p[65]) -> (x_next[31], y[29])
- *   prr3_platform_na_proj_preload_closed_loop(x[31], u[9], p[65]) -> (x_next[31], y[29])
+ *   prr3_platform_na_closed_loop(x[31], u[9], p[66]) -> (x_next[31], y[29])
+ *   prr3_platform_na_minmax_closed_loop(x[31], u[9], p[66]) -> (x_next[31], y[29])
+ *   prr3_platform_na_preload_closed_loop(x[31], u[9], p[66]) -> (x_next[31], y[29])
+ *   prr3_platform_na_proj_closed_loop(x[31], u[9], p[66]) -> (x_next[31], y[29])
+ *   prr3_platform_na_proj_minmax_closed_loop(x[31], u[9], p[66]) -> (x_next[31], y[29])
+ *   prr3_platform_na_proj_preload_closed_loop(x[31], u[9], p[66]) -> (x_next[31], y[29])
  *   prr3_platform_apd_closed_loop(x[31], u[9], p[46]) -> (x_next[31], y[29])
  *   prr3_platform_apd_minmax_closed_loop(x[31], u[9], p[46]) -> (x_next[31], y[29])
  *   prr3_platform_apd_preload_closed_loop(x[31], u[9], p[46]) -> (x_next[31], y[29])
@@ -79,7 +79,7 @@
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[3], v[3], theta_hat[19]
- *   na_params: Kd[3], Q[3], Gamma[19], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
+ *   na_params: Kd[3], Q[3], Gamma[19], freeze_saturated[1], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   apd_params: Kp[3], Kv[3], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   ctc_params: Kp[3], Kv[3], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   lqr_params: T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
@@ -798,7 +798,7 @@ int prr3_platform_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_i
 #define prr3_platform_na_preload_closed_loop_SZ_ARG 14
 #define prr3_platform_na_preload_closed_loop_SZ_RES 8
 #define prr3_platform_na_preload_closed_loop_SZ_IW 0
-#define prr3_platform_na_preload_closed_loop_SZ_W 265
+#define prr3_platform_na_preload_closed_loop_SZ_W 266
 int prr3_platform_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int prr3_platform_na_proj_closed_loop_checkout(void);
 void prr3_platform_na_proj_closed_loop_release(int mem);

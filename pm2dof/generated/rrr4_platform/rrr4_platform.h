@@ -30,12 +30,12 @@
  *   rrr4_platform_Y(q[8], xed[3], xrd[3], xrdd[3]) -> (Y[72], sing[2])
  *   rrr4_platform_torque_splits(q[8], u[3], tau_max[4], preload_sign[4], preload[4]) -> (tau_min_norm[4], tau_min_max[4], min_max_ratio[1], tau_preload[4], preload_mode[1], sing[2])
  *   rrr4_platform_forward_dynamics(xe[3], xed[3], tau_a[4], theta[24]) -> (xedd[3], sing[2])
- *   rrr4_platform_na_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[47]) -> (tau_a[4], state_next[30], status[1], diag[14])
- *   rrr4_platform_na_minmax_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[47]) -> (tau_a[4], state_next[30], status[1], diag[14])
- *   rrr4_platform_na_preload_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[47]) -> (tau_a[4], state_next[30], status[1], diag[14])
- *   rrr4_platform_na_proj_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[47]) -> (tau_a[4], state_next[30], status[1], diag[14])
- *   rrr4_platform_na_proj_minmax_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[47]) -> (tau_a[4], state_next[30], status[1], diag[14])
- *   rrr4_platform_na_proj_preload_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[47]) -> (tau_a[4], state_next[30], status[1], diag[14])
+ *   rrr4_platform_na_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[48]) -> (tau_a[4], state_next[30], status[1], diag[14])
+ *   rrr4_platform_na_minmax_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[48]) -> (tau_a[4], state_next[30], status[1], diag[14])
+ *   rrr4_platform_na_preload_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[48]) -> (tau_a[4], state_next[30], status[1], diag[14])
+ *   rrr4_platform_na_proj_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[48]) -> (tau_a[4], state_next[30], status[1], diag[14])
+ *   rrr4_platform_na_proj_minmax_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[48]) -> (tau_a[4], state_next[30], status[1], diag[14])
+ *   rrr4_platform_na_proj_preload_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[48]) -> (tau_a[4], state_next[30], status[1], diag[14])
  *   rrr4_platform_apd_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[23]) -> (tau_a[4], state_next[30], status[1], diag[14])
  *   rrr4_platform_apd_minmax_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[23]) -> (tau_a[4], state_next[30], status[1], diag[14])
  *   rrr4_platform_apd_preload_step(state[30], qa[4], xd[3], xd_dot[3], xd_ddot[3], params[23]) -> (tau_a[4], state_next[30], status[1], diag[14])
@@ -48,12 +48,12 @@
  *   rrr4_platform_plant_xedd(xe[3], xed[3], tau_a[4], plant[31]) -> (xedd[3])
  *   rrr4_platform_plant_step(x[6], tau_a[4], plant[31], h[1]) -> (x_next[6])
  *   rrr4_platform_measure(xe[3], plant[31]) -> (qa[4])
- *   rrr4_platform_na_closed_loop(x[36], u[9], p[78]) -> (x_next[36], y[35])
- *   rrr4_platform_na_minmax_closed_loop(x[36], u[9], p[78]) -> (x_next[36], y[35])
- *   rrr4_platform_na_preload_closed_loop(x[36], u[9], p[78]) -> (x_next[36], y[35])
- *   rrr4_platform_na_proj_closed_loop(x[36], u[9], p[78]) -> (x_next[36], y[35])
- *   rrr4_platform_na_proj_minmax_closed_loop(x[36], u[9], p[78]) -> (x_next[36], y[35])
- *   rrr4_platform_na_proj_preload_closed_loop(x[36], u[9], p[78]) -> (x_next[36], y[35])
+ *   rrr4_platform_na_closed_loop(x[36], u[9], p[79]) -> (x_next[36], y[35])
+ *   rrr4_platform_na_minmax_closed_loop(x[36], u[9], p[79]) -> (x_next[36], y[35])
+ *   rrr4_platform_na_preload_closed_loop(x[36], u[9], p[79]) -> (x_next[36], y[35])
+ *   rrr4_platform_na_proj_closed_loop(x[36], u[9], p[79]) -> (x_next[36], y[35])
+ *   rrr4_platform_na_proj_minmax_closed_loop(x[36], u[9], p[79]) -> (x_next[36], y[35])
+ *   rrr4_platform_na_proj_preload_closed_loop(x[36], u[9], p[79]) -> (x_next[36], y[35])
  *   rrr4_platform_apd_closed_loop(x[36], u[9], p[54]) -> (x_next[36], y[35])
  *   rrr4_platform_apd_minmax_closed_loop(x[36], u[9], p[54]) -> (x_next[36], y[35])
  *   rrr4_platform_apd_preload_closed_loop(x[36], u[9], p[54]) -> (x_next[36], y[35])
@@ -79,7 +79,7 @@
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[3], v[3], theta_hat[24]
- *   na_params: Kd[3], Q[3], Gamma[24], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
+ *   na_params: Kd[3], Q[3], Gamma[24], freeze_saturated[1], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
  *   apd_params: Kp[3], Kv[3], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
  *   ctc_params: Kp[3], Kv[3], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
  *   lqr_params: T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[4], preload_sign[4], preload[4], closure_tol[1]
@@ -798,7 +798,7 @@ int rrr4_platform_na_preload_closed_loop_work_bytes(casadi_int *sz_arg, casadi_i
 #define rrr4_platform_na_preload_closed_loop_SZ_ARG 14
 #define rrr4_platform_na_preload_closed_loop_SZ_RES 8
 #define rrr4_platform_na_preload_closed_loop_SZ_IW 0
-#define rrr4_platform_na_preload_closed_loop_SZ_W 550
+#define rrr4_platform_na_preload_closed_loop_SZ_W 551
 int rrr4_platform_na_proj_closed_loop(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem);
 int rrr4_platform_na_proj_closed_loop_checkout(void);
 void rrr4_platform_na_proj_closed_loop_release(int mem);

@@ -31,12 +31,12 @@
  *   shang2010_smooth_Y(q[6], xed[2], xrd[2], xrdd[2]) -> (Y[30], sing[2])
  *   shang2010_smooth_torque_splits(q[6], u[2], tau_max[3], preload_sign[3], preload[3]) -> (tau_min_norm[3], tau_min_max[3], min_max_ratio[1], tau_preload[3], preload_mode[1], sing[2])
  *   shang2010_smooth_forward_dynamics(xe[2], xed[2], tau_a[3], theta[15]) -> (xedd[2], sing[2])
- *   shang2010_smooth_na_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_proj_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_proj_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
- *   shang2010_smooth_na_proj_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[33]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[34]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[34]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[34]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_proj_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[34]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_proj_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[34]) -> (tau_a[3], state_next[19], status[1], diag[10])
+ *   shang2010_smooth_na_proj_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[34]) -> (tau_a[3], state_next[19], status[1], diag[10])
  *   shang2010_smooth_apd_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[19], status[1], diag[10])
  *   shang2010_smooth_apd_minmax_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[19], status[1], diag[10])
  *   shang2010_smooth_apd_preload_step(state[19], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[19], status[1], diag[10])
@@ -49,12 +49,12 @@
  *   shang2010_smooth_plant_xedd(xe[2], xed[2], tau_a[3], plant[21]) -> (xedd[2])
  *   shang2010_smooth_plant_step(x[4], tau_a[3], plant[21], h[1]) -> (x_next[4])
  *   shang2010_smooth_measure(xe[2], plant[21]) -> (qa[3])
- *   shang2010_smooth_na_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_minmax_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_preload_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_proj_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_proj_minmax_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
- *   shang2010_smooth_na_proj_preload_closed_loop(x[23], u[6], p[54]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_closed_loop(x[23], u[6], p[55]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_minmax_closed_loop(x[23], u[6], p[55]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_preload_closed_loop(x[23], u[6], p[55]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_proj_closed_loop(x[23], u[6], p[55]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_proj_minmax_closed_loop(x[23], u[6], p[55]) -> (x_next[23], y[23])
+ *   shang2010_smooth_na_proj_preload_closed_loop(x[23], u[6], p[55]) -> (x_next[23], y[23])
  *   shang2010_smooth_apd_closed_loop(x[23], u[6], p[39]) -> (x_next[23], y[23])
  *   shang2010_smooth_apd_minmax_closed_loop(x[23], u[6], p[39]) -> (x_next[23], y[23])
  *   shang2010_smooth_apd_preload_closed_loop(x[23], u[6], p[39]) -> (x_next[23], y[23])
@@ -80,7 +80,7 @@
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[15]
- *   na_params: Kd[2], Q[2], Gamma[15], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
+ *   na_params: Kd[2], Q[2], Gamma[15], freeze_saturated[1], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   ctc_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   lqr_params: T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]

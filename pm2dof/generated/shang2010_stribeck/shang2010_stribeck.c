@@ -340,16 +340,16 @@ static const casadi_int casadi_s6[3] = {18, 1, 1};
 static const casadi_int casadi_s7[3] = {36, 1, 1};
 static const casadi_int casadi_s8[3] = {1, 1, 1};
 static const casadi_int casadi_s9[3] = {22, 1, 1};
-static const casadi_int casadi_s10[3] = {10, 1, 1};
-static const casadi_int casadi_s11[3] = {14, 1, 1};
-static const casadi_int casadi_s12[3] = {21, 1, 1};
-static const casadi_int casadi_s13[3] = {26, 1, 1};
-static const casadi_int casadi_s14[3] = {57, 1, 1};
-static const casadi_int casadi_s15[3] = {39, 1, 1};
-static const casadi_int casadi_s16[3] = {35, 1, 1};
-static const casadi_int casadi_s17[3] = {27, 1, 1};
-static const casadi_int casadi_s18[3] = {19, 1, 1};
-static const casadi_int casadi_s19[3] = {58, 1, 1};
+static const casadi_int casadi_s10[3] = {37, 1, 1};
+static const casadi_int casadi_s11[3] = {10, 1, 1};
+static const casadi_int casadi_s12[3] = {14, 1, 1};
+static const casadi_int casadi_s13[3] = {21, 1, 1};
+static const casadi_int casadi_s14[3] = {26, 1, 1};
+static const casadi_int casadi_s15[3] = {58, 1, 1};
+static const casadi_int casadi_s16[3] = {39, 1, 1};
+static const casadi_int casadi_s17[3] = {35, 1, 1};
+static const casadi_int casadi_s18[3] = {27, 1, 1};
+static const casadi_int casadi_s19[3] = {19, 1, 1};
 static const casadi_int casadi_s20[3] = {59, 1, 1};
 static const casadi_int casadi_s21[26] = 
   {4, 7, 0, 1, 2, 3, 4, 8,
@@ -8184,7 +8184,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_forward_dynamics_work_bytes(casadi_i
   return 0;
 }
 
-/* shang2010_stribeck_na_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_stribeck_na_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -8313,9 +8313,9 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a26=(a00+a24);
   a26=casadi_fabs(a26);
   a11=casadi_fmax(a11,a26);
-  a26=arg[5]? arg[5][35] : 0;
+  a26=arg[5]? arg[5][36] : 0;
   a11=(a11<=a26);
-  a26=arg[5]? arg[5][24] : 0;
+  a26=arg[5]? arg[5][25] : 0;
   a03=(a03/a15);
   a27=(a01*a03);
   a06=(a06/a15);
@@ -8346,7 +8346,7 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a30=(a30-a29);
   a30=(a30/a15);
   a26=(a26<=a30);
-  a29=arg[5]? arg[5][25] : 0;
+  a29=arg[5]? arg[5][26] : 0;
   a24=1.;
   a31=3.3333333333333331e-01;
   a32=casadi_sq(a03);
@@ -8409,10 +8409,10 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a41=arg[5]? arg[5][2] : 0;
   a42=arg[3]? arg[3][0] : 0;
   a43=arg[0]? arg[0][2] : 0;
-  a44=arg[5]? arg[5][23] : 0;
+  a44=arg[5]? arg[5][24] : 0;
   a45=arg[0]? arg[0][0] : 0;
   a46=(a21-a45);
-  a47=arg[5]? arg[5][22] : 0;
+  a47=arg[5]? arg[5][23] : 0;
   a46=(a46/a47);
   a46=(a46-a43);
   a46=(a44*a46);
@@ -8946,19 +8946,19 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a35=(a35<a87);
   a87=(a26&&a35);
   a87=(a11&&a87);
-  a80=arg[5]? arg[5][26] : 0;
+  a80=arg[5]? arg[5][27] : 0;
   a52=(-a80);
   a52=casadi_fmax(a29,a52);
   a52=casadi_fmin(a52,a80);
   a52=(a87?a52:0);
   if (res[0]!=0) res[0][0]=a52;
-  a52=arg[5]? arg[5][27] : 0;
+  a52=arg[5]? arg[5][28] : 0;
   a42=(-a52);
   a42=casadi_fmax(a36,a42);
   a42=casadi_fmin(a42,a52);
   a42=(a87?a42:0);
   if (res[0]!=0) res[0][1]=a42;
-  a42=arg[5]? arg[5][28] : 0;
+  a42=arg[5]? arg[5][29] : 0;
   a85=(-a42);
   a85=casadi_fmax(a17,a85);
   a85=casadi_fmin(a85,a42);
@@ -8982,6 +8982,21 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a81=(a81?a53:0);
   a85=(a85+a81);
   if (res[1]!=0) res[1][3]=a85;
+  a85=arg[5]? arg[5][22] : 0;
+  a81=0.;
+  a85=(a85!=a81);
+  a29=casadi_fabs(a29);
+  a29=(a29-a80);
+  a36=casadi_fabs(a36);
+  a36=(a36-a52);
+  a29=casadi_fmax(a29,a36);
+  a17=casadi_fabs(a17);
+  a17=(a17-a42);
+  a29=casadi_fmax(a29,a17);
+  a81=(a81<a29);
+  a85=(a85&&a81);
+  a85=(!a85);
+  a87=(a87&&a85);
   a38=(a87?a38:0);
   a85=(!a87);
   a31=(a85?a31:0);
@@ -9055,32 +9070,22 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a85=(a85?a88:0);
   a87=(a87+a85);
   if (res[1]!=0) res[1][21]=a87;
-  a87=0.;
-  a29=casadi_fabs(a29);
-  a29=(a29-a80);
-  a36=casadi_fabs(a36);
-  a36=(a36-a52);
-  a29=casadi_fmax(a29,a36);
-  a17=casadi_fabs(a17);
-  a17=(a17-a42);
-  a29=casadi_fmax(a29,a17);
-  a87=(a87<a29);
-  a87=(a87?a15:0);
-  a87=(a35?a87:0);
+  a81=(a81?a15:0);
+  a81=(a35?a81:0);
   a35=(!a35);
   a15=3.;
   a35=(a35?a15:0);
-  a87=(a87+a35);
-  a87=(a26?a87:0);
+  a81=(a81+a35);
+  a81=(a26?a81:0);
   a26=(!a26);
   a26=(a26?a24:0);
-  a87=(a87+a26);
-  a87=(a11?a87:0);
+  a81=(a81+a26);
+  a81=(a11?a81:0);
   a11=(!a11);
   a26=5.;
   a11=(a11?a26:0);
-  a87=(a87+a11);
-  if (res[2]!=0) res[2][0]=a87;
+  a81=(a81+a11);
+  if (res[2]!=0) res[2][0]=a81;
   if (res[3]!=0) res[3][0]=a21;
   if (res[3]!=0) res[3][1]=a05;
   if (res[3]!=0) res[3][2]=a46;
@@ -9150,7 +9155,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_step_sparsity_in(ca
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -9160,7 +9165,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_step_sparsity_out(c
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -9181,7 +9186,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_step_work_bytes(casadi_int *sz_ar
   return 0;
 }
 
-/* shang2010_stribeck_na_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_stribeck_na_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
@@ -9191,7 +9196,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
   casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
   casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
-  casadi_real a096, a097, a098, a099, a100, a101, a102;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103;
   a000=-2.4399999999999999e-01;
   a001=arg[1]? arg[1][0] : 0;
   a002=cos(a001);
@@ -9311,9 +9316,9 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a026=(a000+a024);
   a026=casadi_fabs(a026);
   a011=casadi_fmax(a011,a026);
-  a026=arg[5]? arg[5][35] : 0;
+  a026=arg[5]? arg[5][36] : 0;
   a011=(a011<=a026);
-  a026=arg[5]? arg[5][24] : 0;
+  a026=arg[5]? arg[5][25] : 0;
   a003=(a003/a015);
   a027=(a001*a003);
   a006=(a006/a015);
@@ -9344,7 +9349,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a030=(a030-a029);
   a030=(a030/a015);
   a026=(a026<=a030);
-  a029=arg[5]? arg[5][25] : 0;
+  a029=arg[5]? arg[5][26] : 0;
   a024=1.;
   a031=3.3333333333333331e-01;
   a032=casadi_sq(a003);
@@ -9378,7 +9383,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a004=sqrt(a004);
   a029=(a029<=a004);
   a026=(a026&&a029);
-  a029=arg[5]? arg[5][26] : 0;
+  a029=arg[5]? arg[5][27] : 0;
   a031=(a017*a003);
   a032=(a019*a031);
   a033=(a000*a006);
@@ -9392,10 +9397,10 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a038=arg[5]? arg[5][2] : 0;
   a039=arg[3]? arg[3][0] : 0;
   a040=arg[0]? arg[0][2] : 0;
-  a041=arg[5]? arg[5][23] : 0;
+  a041=arg[5]? arg[5][24] : 0;
   a042=arg[0]? arg[0][0] : 0;
   a043=(a021-a042);
-  a044=arg[5]? arg[5][22] : 0;
+  a044=arg[5]? arg[5][23] : 0;
   a043=(a043/a044);
   a043=(a043-a040);
   a043=(a041*a043);
@@ -9757,215 +9762,215 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a083=(a001*a035);
   a091=(a091+a083);
   a091=casadi_fabs(a091);
-  a036=(a036<a091);
-  a083=arg[5]? arg[5][27] : 0;
-  a063=(a083*a063);
-  a047=(a035*a063);
-  a061=(a083*a061);
-  a027=(a090*a061);
-  a047=(a047-a027);
-  a047=casadi_fabs(a047);
-  a027=arg[5]? arg[5][28] : 0;
-  a017=(a027*a017);
-  a081=(a017*a063);
-  a073=(a027*a073);
-  a010=(a073*a061);
-  a081=(a081-a010);
-  a081=casadi_fabs(a081);
-  a047=(a047+a081);
-  a081=(a091*a047);
-  a081=(a036?a081:0);
-  a010=(a060*a063);
-  a014=(a001*a061);
-  a010=(a010+a014);
+  a083=(a036<a091);
+  a047=arg[5]? arg[5][28] : 0;
+  a063=(a047*a063);
+  a027=(a035*a063);
+  a061=(a047*a061);
+  a081=(a090*a061);
+  a027=(a027-a081);
+  a027=casadi_fabs(a027);
+  a081=arg[5]? arg[5][29] : 0;
+  a017=(a081*a017);
+  a010=(a017*a063);
+  a073=(a081*a073);
+  a014=(a073*a061);
+  a010=(a010-a014);
   a010=casadi_fabs(a010);
-  a014=(a061*a090);
-  a092=(a063*a035);
-  a014=(a014-a092);
+  a027=(a027+a010);
+  a010=(a091*a027);
+  a010=(a083?a010:0);
+  a014=(a060*a063);
+  a092=(a001*a061);
+  a014=(a014+a092);
   a014=casadi_fabs(a014);
-  a092=(a017*a090);
-  a093=(a073*a035);
+  a092=(a061*a090);
+  a093=(a063*a035);
   a092=(a092-a093);
   a092=casadi_fabs(a092);
-  a014=(a014+a092);
-  a014=(a036?a014:0);
-  a092=(!a036);
-  a093=(a092?a024:0);
-  a014=(a014+a093);
-  a093=(a010*a014);
-  a081=(a081<a093);
-  a010=(a081?a010:0);
-  a093=(!a081);
-  a091=(a036?a091:0);
-  a091=(a093?a091:0);
-  a010=(a010+a091);
+  a093=(a017*a090);
+  a094=(a073*a035);
+  a093=(a093-a094);
+  a093=casadi_fabs(a093);
+  a092=(a092+a093);
+  a092=(a083?a092:0);
+  a093=(!a083);
+  a094=(a093?a024:0);
+  a092=(a092+a094);
+  a094=(a014*a092);
+  a010=(a010<a094);
+  a014=(a010?a014:0);
+  a094=(!a010);
+  a091=(a083?a091:0);
+  a091=(a094?a091:0);
+  a014=(a014+a091);
   a091=(a035*a073);
-  a094=(a090*a017);
-  a091=(a091-a094);
+  a095=(a090*a017);
+  a091=(a091-a095);
   a091=casadi_fabs(a091);
-  a094=(a061*a073);
-  a095=(a063*a017);
-  a094=(a094-a095);
-  a094=casadi_fabs(a094);
-  a091=(a091+a094);
-  a094=(a010*a091);
-  a095=(a060*a073);
-  a096=(a001*a017);
-  a095=(a095+a096);
+  a095=(a061*a073);
+  a096=(a063*a017);
+  a095=(a095-a096);
   a095=casadi_fabs(a095);
-  a047=(a081?a047:0);
-  a014=(a093?a014:0);
-  a047=(a047+a014);
-  a014=(a095*a047);
-  a094=(a094<a014);
-  a014=(a094?a073:0);
-  a096=(!a094);
-  a097=(a081?a063:0);
-  a098=(a036?a090:0);
-  a099=(a092?a090:0);
-  a098=(a098+a099);
-  a098=(a093?a098:0);
-  a097=(a097+a098);
-  a097=(a096?a097:0);
-  a014=(a014+a097);
-  a097=(a060*a014);
-  a098=(a094?a017:0);
-  a081=(a081?a061:0);
-  a036=(a036?a035:0);
-  a092=(a092?a035:0);
-  a036=(a036+a092);
-  a093=(a093?a036:0);
-  a081=(a081+a093);
-  a081=(a096?a081:0);
-  a098=(a098+a081);
-  a081=(a001*a098);
-  a097=(a097+a081);
-  a097=casadi_sign(a097);
-  a081=(a014*a097);
-  a093=(a035*a081);
-  a097=(a098*a097);
-  a036=(a090*a097);
-  a093=(a093-a036);
-  a036=casadi_sq(a093);
-  a092=9.9999999999999992e-25;
-  a099=casadi_sq(a035);
-  a100=casadi_sq(a090);
+  a091=(a091+a095);
+  a095=(a014*a091);
+  a096=(a060*a073);
+  a097=(a001*a017);
+  a096=(a096+a097);
+  a096=casadi_fabs(a096);
+  a027=(a010?a027:0);
+  a092=(a094?a092:0);
+  a027=(a027+a092);
+  a092=(a096*a027);
+  a095=(a095<a092);
+  a092=(a095?a073:0);
+  a097=(!a095);
+  a098=(a010?a063:0);
+  a099=(a083?a090:0);
+  a100=(a093?a090:0);
   a099=(a099+a100);
-  a099=(a092*a099);
-  a100=casadi_sq(a014);
-  a101=casadi_sq(a098);
+  a099=(a094?a099:0);
+  a098=(a098+a099);
+  a098=(a097?a098:0);
+  a092=(a092+a098);
+  a098=(a060*a092);
+  a099=(a095?a017:0);
+  a010=(a010?a061:0);
+  a083=(a083?a035:0);
+  a093=(a093?a035:0);
+  a083=(a083+a093);
+  a094=(a094?a083:0);
+  a010=(a010+a094);
+  a010=(a097?a010:0);
+  a099=(a099+a010);
+  a010=(a001*a099);
+  a098=(a098+a010);
+  a098=casadi_sign(a098);
+  a010=(a092*a098);
+  a094=(a035*a010);
+  a098=(a099*a098);
+  a083=(a090*a098);
+  a094=(a094-a083);
+  a083=casadi_sq(a094);
+  a093=9.9999999999999992e-25;
+  a100=casadi_sq(a035);
+  a101=casadi_sq(a090);
   a100=(a100+a101);
-  a099=(a099*a100);
-  a036=(a036<=a099);
-  a099=(a035*a098);
-  a101=(a090*a014);
-  a099=(a099+a101);
-  a101=casadi_sign(a099);
-  a102=(!a036);
-  a095=(a094?a095:0);
-  a010=(a096?a010:0);
-  a095=(a095+a010);
-  a094=(a094?a091:0);
-  a096=(a096?a047:0);
-  a094=(a094+a096);
-  a095=(a095/a094);
-  a093=casadi_sign(a093);
-  a093=(a095*a093);
-  a035=(a093*a035);
-  a035=(a102?a035:0);
-  a094=(a061*a081);
-  a096=(a063*a097);
-  a094=(a094-a096);
-  a096=casadi_sq(a094);
-  a047=casadi_sq(a061);
-  a091=casadi_sq(a063);
-  a047=(a047+a091);
-  a047=(a092*a047);
-  a047=(a047*a100);
-  a096=(a096<=a047);
-  a047=(!a096);
+  a100=(a093*a100);
+  a101=casadi_sq(a092);
+  a102=casadi_sq(a099);
+  a101=(a101+a102);
+  a100=(a100*a101);
+  a083=(a083<=a100);
+  a100=(a035*a099);
+  a102=(a090*a092);
+  a100=(a100+a102);
+  a102=casadi_sign(a100);
+  a103=(!a083);
+  a096=(a095?a096:0);
+  a014=(a097?a014:0);
+  a096=(a096+a014);
+  a095=(a095?a091:0);
+  a097=(a097?a027:0);
+  a095=(a095+a097);
+  a096=(a096/a095);
   a094=casadi_sign(a094);
-  a094=(a095*a094);
-  a091=(a094*a061);
-  a091=(a047?a091:0);
+  a094=(a096*a094);
+  a035=(a094*a035);
+  a035=(a103?a035:0);
+  a095=(a061*a010);
+  a097=(a063*a098);
+  a095=(a095-a097);
+  a097=casadi_sq(a095);
+  a027=casadi_sq(a061);
+  a091=casadi_sq(a063);
+  a027=(a027+a091);
+  a027=(a093*a027);
+  a027=(a027*a101);
+  a097=(a097<=a027);
+  a027=(!a097);
+  a095=casadi_sign(a095);
+  a095=(a096*a095);
+  a091=(a095*a061);
+  a091=(a027?a091:0);
   a035=(a035+a091);
-  a081=(a017*a081);
-  a097=(a073*a097);
-  a081=(a081-a097);
-  a097=casadi_sq(a081);
+  a010=(a017*a010);
+  a098=(a073*a098);
+  a010=(a010-a098);
+  a098=casadi_sq(a010);
   a091=casadi_sq(a017);
-  a010=casadi_sq(a073);
-  a091=(a091+a010);
-  a092=(a092*a091);
-  a092=(a092*a100);
-  a097=(a097<=a092);
-  a092=(!a097);
-  a081=casadi_sign(a081);
-  a081=(a095*a081);
-  a100=(a081*a017);
-  a100=(a092?a100:0);
-  a035=(a035+a100);
+  a014=casadi_sq(a073);
+  a091=(a091+a014);
+  a093=(a093*a091);
+  a093=(a093*a101);
+  a098=(a098<=a093);
+  a093=(!a098);
+  a010=casadi_sign(a010);
+  a010=(a096*a010);
+  a101=(a010*a017);
+  a101=(a093?a101:0);
+  a035=(a035+a101);
   a060=(a060-a035);
-  a060=(a060*a098);
-  a090=(a093*a090);
+  a060=(a060*a099);
+  a090=(a094*a090);
   a090=(-a090);
-  a090=(a102?a090:0);
-  a035=(a094*a063);
+  a090=(a103?a090:0);
+  a035=(a095*a063);
   a035=(-a035);
-  a035=(a047?a035:0);
+  a035=(a027?a035:0);
   a090=(a090+a035);
-  a035=(a081*a073);
+  a035=(a010*a073);
   a035=(-a035);
-  a035=(a092?a035:0);
+  a035=(a093?a035:0);
   a090=(a090+a035);
   a001=(a001-a090);
-  a001=(a001*a014);
+  a001=(a001*a092);
   a060=(a060-a001);
-  a099=casadi_fabs(a099);
-  a099=(a036?a099:0);
-  a061=(a061*a098);
-  a063=(a063*a014);
+  a100=casadi_fabs(a100);
+  a100=(a083?a100:0);
+  a061=(a061*a099);
+  a063=(a063*a092);
   a061=(a061+a063);
   a063=casadi_fabs(a061);
-  a063=(a096?a063:0);
-  a099=(a099+a063);
-  a017=(a017*a098);
-  a073=(a073*a014);
+  a063=(a097?a063:0);
+  a100=(a100+a063);
+  a017=(a017*a099);
+  a073=(a073*a092);
   a017=(a017+a073);
   a073=casadi_fabs(a017);
-  a073=(a097?a073:0);
-  a099=(a099+a073);
-  a060=(a060/a099);
-  a101=(a101*a060);
-  a036=(a036?a101:0);
-  a093=(a102?a093:0);
-  a102=(a102?a093:0);
-  a036=(a036+a102);
-  a036=(a029*a036);
+  a073=(a098?a073:0);
+  a100=(a100+a073);
+  a060=(a060/a100);
+  a102=(a102*a060);
+  a083=(a083?a102:0);
+  a094=(a103?a094:0);
+  a103=(a103?a094:0);
+  a083=(a083+a103);
+  a083=(a029*a083);
   a061=casadi_sign(a061);
   a061=(a061*a060);
-  a096=(a096?a061:0);
-  a094=(a047?a094:0);
-  a047=(a047?a094:0);
-  a096=(a096+a047);
-  a096=(a083*a096);
-  a047=(a036+a096);
+  a097=(a097?a061:0);
+  a095=(a027?a095:0);
+  a027=(a027?a095:0);
+  a097=(a097+a027);
+  a097=(a047*a097);
+  a027=(a083+a097);
   a017=casadi_sign(a017);
   a017=(a017*a060);
-  a097=(a097?a017:0);
-  a081=(a092?a081:0);
-  a092=(a092?a081:0);
-  a097=(a097+a092);
-  a097=(a027*a097);
-  a047=(a047+a097);
-  a092=arg[5]? arg[5][4] : 0;
-  a092=(a044*a092);
+  a098=(a098?a017:0);
+  a010=(a093?a010:0);
+  a093=(a093?a010:0);
+  a098=(a098+a093);
+  a098=(a081*a098);
+  a027=(a027+a098);
+  a093=arg[5]? arg[5][4] : 0;
+  a093=(a044*a093);
   a058=(a058*a039);
   a046=(a046*a049);
   a058=(a058-a046);
-  a092=(a092*a058);
-  a092=(a032+a092);
-  a047=(a047+a092);
+  a093=(a093*a058);
+  a093=(a032+a093);
+  a027=(a027+a093);
   a058=arg[5]? arg[5][5] : 0;
   a058=(a044*a058);
   a070=(a070*a039);
@@ -9973,7 +9978,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a070=(a070-a064);
   a058=(a058*a070);
   a058=(a062+a058);
-  a047=(a047+a058);
+  a027=(a027+a058);
   a070=arg[5]? arg[5][6] : 0;
   a070=(a044*a070);
   a072=(a072*a039);
@@ -9981,7 +9986,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a072=(a072-a074);
   a070=(a070*a072);
   a070=(a000+a070);
-  a047=(a047+a070);
+  a027=(a027+a070);
   a072=arg[5]? arg[5][7] : 0;
   a072=(a044*a072);
   a048=(a048*a039);
@@ -9989,7 +9994,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a048=(a048+a002);
   a072=(a072*a048);
   a072=(a038+a072);
-  a047=(a047+a072);
+  a027=(a027+a072);
   a048=arg[5]? arg[5][8] : 0;
   a048=(a044*a048);
   a069=(a069*a039);
@@ -9997,7 +10002,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a069=(a069+a013);
   a048=(a048*a069);
   a048=(a068+a048);
-  a047=(a047+a048);
+  a027=(a027+a048);
   a069=arg[5]? arg[5][9] : 0;
   a069=(a044*a069);
   a079=(a079*a039);
@@ -10005,7 +10010,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a079=(a079+a009);
   a069=(a069*a079);
   a069=(a078+a069);
-  a047=(a047+a069);
+  a027=(a027+a069);
   a079=arg[5]? arg[5][10] : 0;
   a079=(a044*a079);
   a019=(a019*a049);
@@ -10013,7 +10018,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a019=(a019-a034);
   a079=(a079*a019);
   a079=(a007+a079);
-  a047=(a047+a079);
+  a027=(a027+a079);
   a019=arg[5]? arg[5][11] : 0;
   a019=(a044*a019);
   a020=(a020*a049);
@@ -10021,7 +10026,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a020=(a020-a018);
   a019=(a019*a020);
   a019=(a080+a019);
-  a047=(a047+a019);
+  a027=(a027+a019);
   a020=arg[5]? arg[5][12] : 0;
   a020=(a044*a020);
   a025=(a025*a049);
@@ -10029,7 +10034,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a025=(a025-a023);
   a020=(a020*a025);
   a020=(a012+a020);
-  a047=(a047+a020);
+  a027=(a027+a020);
   a025=arg[5]? arg[5][13] : 0;
   a025=(a044*a025);
   a008=(a008*a039);
@@ -10037,7 +10042,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a008=(a008-a053);
   a025=(a025*a008);
   a025=(a076+a025);
-  a047=(a047+a025);
+  a027=(a027+a025);
   a008=arg[5]? arg[5][14] : 0;
   a008=(a044*a008);
   a077=(a077*a039);
@@ -10045,7 +10050,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a077=(a077-a065);
   a008=(a008*a077);
   a008=(a037+a008);
-  a047=(a047+a008);
+  a027=(a027+a008);
   a077=arg[5]? arg[5][15] : 0;
   a077=(a044*a077);
   a028=(a028*a039);
@@ -10053,7 +10058,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a028=(a028-a075);
   a077=(a077*a028);
   a077=(a071+a077);
-  a047=(a047+a077);
+  a027=(a027+a077);
   a028=arg[5]? arg[5][16] : 0;
   a028=(a044*a028);
   a016=(a016*a039);
@@ -10061,7 +10066,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a016=(a016-a022);
   a028=(a028*a016);
   a028=(a066+a028);
-  a047=(a047+a028);
+  a027=(a027+a028);
   a016=arg[5]? arg[5][17] : 0;
   a016=(a044*a016);
   a059=(a059*a039);
@@ -10069,7 +10074,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a059=(a059-a067);
   a016=(a016*a059);
   a016=(a006+a016);
-  a047=(a047+a016);
+  a027=(a027+a016);
   a059=arg[5]? arg[5][18] : 0;
   a059=(a044*a059);
   a054=(a054*a039);
@@ -10077,7 +10082,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a054=(a054-a003);
   a059=(a059*a054);
   a059=(a055+a059);
-  a047=(a047+a059);
+  a027=(a027+a059);
   a054=arg[5]? arg[5][19] : 0;
   a054=(a044*a054);
   a031=(a031*a039);
@@ -10085,7 +10090,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a031=(a031-a033);
   a054=(a054*a031);
   a054=(a084+a054);
-  a047=(a047+a054);
+  a027=(a027+a054);
   a031=arg[5]? arg[5][20] : 0;
   a031=(a044*a031);
   a086=(a086*a039);
@@ -10093,7 +10098,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a086=(a086-a085);
   a031=(a031*a086);
   a031=(a087+a031);
-  a047=(a047+a031);
+  a027=(a027+a031);
   a086=arg[5]? arg[5][21] : 0;
   a044=(a044*a086);
   a088=(a088*a039);
@@ -10101,139 +10106,144 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a088=(a088-a082);
   a044=(a044*a088);
   a044=(a089+a044);
-  a047=(a047+a044);
-  a047=(a047+a021);
-  a047=(a047+a005);
-  a047=(a047+a043);
-  a047=(a047+a041);
-  a047=casadi_fabs(a047);
+  a027=(a027+a044);
+  a027=(a027+a021);
+  a027=(a027+a005);
+  a027=(a027+a043);
+  a027=(a027+a041);
+  a027=casadi_fabs(a027);
   a088=casadi_inf;
-  a047=(a047<a088);
-  a088=(a026&&a047);
+  a027=(a027<a088);
+  a088=(a026&&a027);
   a088=(a011&&a088);
   a082=(-a029);
-  a036=casadi_fmax(a036,a082);
-  a036=casadi_fmin(a036,a029);
-  a036=(a088?a036:0);
-  if (res[0]!=0) res[0][0]=a036;
-  a036=(-a083);
-  a096=casadi_fmax(a096,a036);
-  a096=casadi_fmin(a096,a083);
-  a096=(a088?a096:0);
-  if (res[0]!=0) res[0][1]=a096;
-  a096=(-a027);
-  a097=casadi_fmax(a097,a096);
-  a097=casadi_fmin(a097,a027);
+  a083=casadi_fmax(a083,a082);
+  a083=casadi_fmin(a083,a029);
+  a083=(a088?a083:0);
+  if (res[0]!=0) res[0][0]=a083;
+  a083=(-a047);
+  a097=casadi_fmax(a097,a083);
+  a097=casadi_fmin(a097,a047);
   a097=(a088?a097:0);
-  if (res[0]!=0) res[0][2]=a097;
-  a097=(a011&&a047);
-  a027=(a097?a021:0);
-  a096=(!a097);
-  a042=(a096?a042:0);
-  a027=(a027+a042);
-  if (res[1]!=0) res[1][0]=a027;
-  a027=(a097?a005:0);
-  a051=(a096?a051:0);
-  a027=(a027+a051);
-  if (res[1]!=0) res[1][1]=a027;
-  a027=(a097?a043:0);
-  a040=(a096?a040:0);
-  a027=(a027+a040);
-  if (res[1]!=0) res[1][2]=a027;
-  a097=(a097?a041:0);
-  a096=(a096?a050:0);
-  a097=(a097+a096);
-  if (res[1]!=0) res[1][3]=a097;
-  a092=(a088?a092:0);
-  a097=(!a088);
-  a032=(a097?a032:0);
-  a092=(a092+a032);
-  if (res[1]!=0) res[1][4]=a092;
+  if (res[0]!=0) res[0][1]=a097;
+  a097=(-a081);
+  a098=casadi_fmax(a098,a097);
+  a098=casadi_fmin(a098,a081);
+  a098=(a088?a098:0);
+  if (res[0]!=0) res[0][2]=a098;
+  a098=(a011&&a027);
+  a081=(a098?a021:0);
+  a097=(!a098);
+  a042=(a097?a042:0);
+  a081=(a081+a042);
+  if (res[1]!=0) res[1][0]=a081;
+  a081=(a098?a005:0);
+  a051=(a097?a051:0);
+  a081=(a081+a051);
+  if (res[1]!=0) res[1][1]=a081;
+  a081=(a098?a043:0);
+  a040=(a097?a040:0);
+  a081=(a081+a040);
+  if (res[1]!=0) res[1][2]=a081;
+  a098=(a098?a041:0);
+  a097=(a097?a050:0);
+  a098=(a098+a097);
+  if (res[1]!=0) res[1][3]=a098;
+  a098=arg[5]? arg[5][22] : 0;
+  a098=(a098!=a036);
+  a096=(a024<a096);
+  a098=(a098&&a096);
+  a098=(!a098);
+  a088=(a088&&a098);
+  a093=(a088?a093:0);
+  a098=(!a088);
+  a032=(a098?a032:0);
+  a093=(a093+a032);
+  if (res[1]!=0) res[1][4]=a093;
   a058=(a088?a058:0);
-  a062=(a097?a062:0);
+  a062=(a098?a062:0);
   a058=(a058+a062);
   if (res[1]!=0) res[1][5]=a058;
   a070=(a088?a070:0);
-  a000=(a097?a000:0);
+  a000=(a098?a000:0);
   a070=(a070+a000);
   if (res[1]!=0) res[1][6]=a070;
   a072=(a088?a072:0);
-  a038=(a097?a038:0);
+  a038=(a098?a038:0);
   a072=(a072+a038);
   if (res[1]!=0) res[1][7]=a072;
   a048=(a088?a048:0);
-  a068=(a097?a068:0);
+  a068=(a098?a068:0);
   a048=(a048+a068);
   if (res[1]!=0) res[1][8]=a048;
   a069=(a088?a069:0);
-  a078=(a097?a078:0);
+  a078=(a098?a078:0);
   a069=(a069+a078);
   if (res[1]!=0) res[1][9]=a069;
   a079=(a088?a079:0);
-  a007=(a097?a007:0);
+  a007=(a098?a007:0);
   a079=(a079+a007);
   if (res[1]!=0) res[1][10]=a079;
   a019=(a088?a019:0);
-  a080=(a097?a080:0);
+  a080=(a098?a080:0);
   a019=(a019+a080);
   if (res[1]!=0) res[1][11]=a019;
   a020=(a088?a020:0);
-  a012=(a097?a012:0);
+  a012=(a098?a012:0);
   a020=(a020+a012);
   if (res[1]!=0) res[1][12]=a020;
   a025=(a088?a025:0);
-  a076=(a097?a076:0);
+  a076=(a098?a076:0);
   a025=(a025+a076);
   if (res[1]!=0) res[1][13]=a025;
   a008=(a088?a008:0);
-  a037=(a097?a037:0);
+  a037=(a098?a037:0);
   a008=(a008+a037);
   if (res[1]!=0) res[1][14]=a008;
   a077=(a088?a077:0);
-  a071=(a097?a071:0);
+  a071=(a098?a071:0);
   a077=(a077+a071);
   if (res[1]!=0) res[1][15]=a077;
   a028=(a088?a028:0);
-  a066=(a097?a066:0);
+  a066=(a098?a066:0);
   a028=(a028+a066);
   if (res[1]!=0) res[1][16]=a028;
   a016=(a088?a016:0);
-  a006=(a097?a006:0);
+  a006=(a098?a006:0);
   a016=(a016+a006);
   if (res[1]!=0) res[1][17]=a016;
   a059=(a088?a059:0);
-  a055=(a097?a055:0);
+  a055=(a098?a055:0);
   a059=(a059+a055);
   if (res[1]!=0) res[1][18]=a059;
   a054=(a088?a054:0);
-  a084=(a097?a084:0);
+  a084=(a098?a084:0);
   a054=(a054+a084);
   if (res[1]!=0) res[1][19]=a054;
   a031=(a088?a031:0);
-  a087=(a097?a087:0);
+  a087=(a098?a087:0);
   a031=(a031+a087);
   if (res[1]!=0) res[1][20]=a031;
   a088=(a088?a044:0);
-  a097=(a097?a089:0);
-  a088=(a088+a097);
+  a098=(a098?a089:0);
+  a088=(a088+a098);
   if (res[1]!=0) res[1][21]=a088;
-  a095=(a024<a095);
-  a095=(a095?a015:0);
-  a095=(a047?a095:0);
-  a047=(!a047);
+  a096=(a096?a015:0);
+  a096=(a027?a096:0);
+  a027=(!a027);
   a015=3.;
-  a047=(a047?a015:0);
-  a095=(a095+a047);
-  a095=(a026?a095:0);
+  a027=(a027?a015:0);
+  a096=(a096+a027);
+  a096=(a026?a096:0);
   a026=(!a026);
   a026=(a026?a024:0);
-  a095=(a095+a026);
-  a095=(a011?a095:0);
+  a096=(a096+a026);
+  a096=(a011?a096:0);
   a011=(!a011);
   a026=5.;
   a011=(a011?a026:0);
-  a095=(a095+a011);
-  if (res[2]!=0) res[2][0]=a095;
+  a096=(a096+a011);
+  if (res[2]!=0) res[2][0]=a096;
   if (res[3]!=0) res[3][0]=a021;
   if (res[3]!=0) res[3][1]=a005;
   if (res[3]!=0) res[3][2]=a043;
@@ -10303,7 +10313,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_minmax_step_sparsit
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -10313,7 +10323,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_minmax_step_sparsit
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -10334,7 +10344,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_minmax_step_work_bytes(casadi_int
   return 0;
 }
 
-/* shang2010_stribeck_na_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_stribeck_na_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -10463,9 +10473,9 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a26=(a00+a24);
   a26=casadi_fabs(a26);
   a11=casadi_fmax(a11,a26);
-  a26=arg[5]? arg[5][35] : 0;
+  a26=arg[5]? arg[5][36] : 0;
   a11=(a11<=a26);
-  a26=arg[5]? arg[5][24] : 0;
+  a26=arg[5]? arg[5][25] : 0;
   a03=(a03/a15);
   a27=(a01*a03);
   a06=(a06/a15);
@@ -10496,7 +10506,7 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a30=(a30-a29);
   a30=(a30/a15);
   a26=(a26<=a30);
-  a29=arg[5]? arg[5][25] : 0;
+  a29=arg[5]? arg[5][26] : 0;
   a24=1.;
   a31=3.3333333333333331e-01;
   a32=casadi_sq(a03);
@@ -10559,10 +10569,10 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a43=arg[5]? arg[5][2] : 0;
   a44=arg[3]? arg[3][0] : 0;
   a45=arg[0]? arg[0][2] : 0;
-  a46=arg[5]? arg[5][23] : 0;
+  a46=arg[5]? arg[5][24] : 0;
   a47=arg[0]? arg[0][0] : 0;
   a48=(a21-a47);
-  a49=arg[5]? arg[5][22] : 0;
+  a49=arg[5]? arg[5][23] : 0;
   a48=(a48/a49);
   a48=(a48-a45);
   a48=(a46*a48);
@@ -10904,14 +10914,14 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a54=(a54-a46);
   a83=(a83*a54);
   a01=(a01+a83);
-  a83=arg[5]? arg[5][26] : 0;
-  a87=arg[5]? arg[5][27] : 0;
-  a84=arg[5]? arg[5][28] : 0;
+  a83=arg[5]? arg[5][27] : 0;
+  a87=arg[5]? arg[5][28] : 0;
+  a84=arg[5]? arg[5][29] : 0;
   arg[6]=w+0;
   arg[7]=w+6;
-  arg[8] = arg[5]? arg[5] + 26 : 0;
-  arg[9] = arg[5]? arg[5] + 29 : 0;
-  arg[10] = arg[5]? arg[5] + 32 : 0;
+  arg[8] = arg[5]? arg[5] + 27 : 0;
+  arg[9] = arg[5]? arg[5] + 30 : 0;
+  arg[10] = arg[5]? arg[5] + 33 : 0;
   res[4]=w+17;
   res[5]=w+20;
   w[0] = a29;
@@ -11115,6 +11125,13 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a34=(a34?a55:0);
   a17=(a17+a34);
   if (res[1]!=0) res[1][3]=a17;
+  a17=arg[5]? arg[5][22] : 0;
+  a34=0.;
+  a17=(a17!=a34);
+  a34=(a39==a15);
+  a17=(a17&&a34);
+  a17=(!a17);
+  a90=(a90&&a17);
   a41=(a90?a41:0);
   a17=(!a90);
   a31=(a17?a31:0);
@@ -11188,18 +11205,17 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a17=(a17?a91:0);
   a90=(a90+a17);
   if (res[1]!=0) res[1][21]=a90;
-  a90=(a39==a15);
-  a15=(a90?a15:0);
-  a90=(!a90);
+  a15=(a34?a15:0);
+  a34=(!a34);
   a39=(a39==a24);
-  a17=4.;
-  a39=(a39?a17:0);
-  a90=(a90?a39:0);
-  a15=(a15+a90);
+  a90=4.;
+  a39=(a39?a90:0);
+  a34=(a34?a39:0);
+  a15=(a15+a34);
   a15=(a40?a15:0);
   a40=(!a40);
-  a90=3.;
-  a40=(a40?a90:0);
+  a34=3.;
+  a40=(a40?a34:0);
   a15=(a15+a40);
   a15=(a26?a15:0);
   a26=(!a26);
@@ -11280,7 +11296,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_preload_step_sparsi
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -11290,7 +11306,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_preload_step_sparsi
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -11311,7 +11327,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_preload_step_work_bytes(casadi_in
   return 0;
 }
 
-/* shang2010_stribeck_na_proj_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_stribeck_na_proj_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -11440,9 +11456,9 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a26=(a00+a24);
   a26=casadi_fabs(a26);
   a11=casadi_fmax(a11,a26);
-  a26=arg[5]? arg[5][35] : 0;
+  a26=arg[5]? arg[5][36] : 0;
   a11=(a11<=a26);
-  a26=arg[5]? arg[5][24] : 0;
+  a26=arg[5]? arg[5][25] : 0;
   a03=(a03/a15);
   a27=(a01*a03);
   a06=(a06/a15);
@@ -11473,7 +11489,7 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a30=(a30-a29);
   a30=(a30/a15);
   a26=(a26<=a30);
-  a29=arg[5]? arg[5][25] : 0;
+  a29=arg[5]? arg[5][26] : 0;
   a24=1.;
   a31=3.3333333333333331e-01;
   a32=casadi_sq(a03);
@@ -11536,10 +11552,10 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a41=arg[5]? arg[5][2] : 0;
   a42=arg[3]? arg[3][0] : 0;
   a43=arg[0]? arg[0][2] : 0;
-  a44=arg[5]? arg[5][23] : 0;
+  a44=arg[5]? arg[5][24] : 0;
   a45=arg[0]? arg[0][0] : 0;
   a46=(a21-a45);
-  a47=arg[5]? arg[5][22] : 0;
+  a47=arg[5]? arg[5][23] : 0;
   a46=(a46/a47);
   a46=(a46-a43);
   a46=(a44*a46);
@@ -12105,19 +12121,19 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a35=(a35<a87);
   a87=(a26&&a35);
   a87=(a11&&a87);
-  a80=arg[5]? arg[5][26] : 0;
+  a80=arg[5]? arg[5][27] : 0;
   a52=(-a80);
   a52=casadi_fmax(a29,a52);
   a52=casadi_fmin(a52,a80);
   a52=(a87?a52:0);
   if (res[0]!=0) res[0][0]=a52;
-  a52=arg[5]? arg[5][27] : 0;
+  a52=arg[5]? arg[5][28] : 0;
   a42=(-a52);
   a42=casadi_fmax(a36,a42);
   a42=casadi_fmin(a42,a52);
   a42=(a87?a42:0);
   if (res[0]!=0) res[0][1]=a42;
-  a42=arg[5]? arg[5][28] : 0;
+  a42=arg[5]? arg[5][29] : 0;
   a85=(-a42);
   a85=casadi_fmax(a17,a85);
   a85=casadi_fmin(a85,a42);
@@ -12141,6 +12157,20 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a81=(a81?a53:0);
   a85=(a85+a81);
   if (res[1]!=0) res[1][3]=a85;
+  a85=arg[5]? arg[5][22] : 0;
+  a85=(a85!=a08);
+  a29=casadi_fabs(a29);
+  a29=(a29-a80);
+  a36=casadi_fabs(a36);
+  a36=(a36-a52);
+  a29=casadi_fmax(a29,a36);
+  a17=casadi_fabs(a17);
+  a17=(a17-a42);
+  a29=casadi_fmax(a29,a17);
+  a08=(a08<a29);
+  a85=(a85&&a08);
+  a85=(!a85);
+  a87=(a87&&a85);
   a38=(a87?a38:0);
   a85=(!a87);
   a31=(a85?a31:0);
@@ -12214,15 +12244,6 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a85=(a85?a88:0);
   a87=(a87+a85);
   if (res[1]!=0) res[1][21]=a87;
-  a29=casadi_fabs(a29);
-  a29=(a29-a80);
-  a36=casadi_fabs(a36);
-  a36=(a36-a52);
-  a29=casadi_fmax(a29,a36);
-  a17=casadi_fabs(a17);
-  a17=(a17-a42);
-  a29=casadi_fmax(a29,a17);
-  a08=(a08<a29);
   a08=(a08?a15:0);
   a08=(a35?a08:0);
   a35=(!a35);
@@ -12308,7 +12329,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_step_sparsity_
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -12318,7 +12339,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_step_sparsity_
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -12339,7 +12360,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_step_work_bytes(casadi_int *
   return 0;
 }
 
-/* shang2010_stribeck_na_proj_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_stribeck_na_proj_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
@@ -12469,9 +12490,9 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a026=(a000+a024);
   a026=casadi_fabs(a026);
   a011=casadi_fmax(a011,a026);
-  a026=arg[5]? arg[5][35] : 0;
+  a026=arg[5]? arg[5][36] : 0;
   a011=(a011<=a026);
-  a026=arg[5]? arg[5][24] : 0;
+  a026=arg[5]? arg[5][25] : 0;
   a003=(a003/a015);
   a027=(a001*a003);
   a006=(a006/a015);
@@ -12502,7 +12523,7 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a030=(a030-a029);
   a030=(a030/a015);
   a026=(a026<=a030);
-  a029=arg[5]? arg[5][25] : 0;
+  a029=arg[5]? arg[5][26] : 0;
   a024=1.;
   a031=3.3333333333333331e-01;
   a032=casadi_sq(a003);
@@ -12536,7 +12557,7 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a004=sqrt(a004);
   a029=(a029<=a004);
   a026=(a026&&a029);
-  a029=arg[5]? arg[5][26] : 0;
+  a029=arg[5]? arg[5][27] : 0;
   a031=(a017*a003);
   a032=(a019*a031);
   a033=(a000*a006);
@@ -12550,10 +12571,10 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a038=arg[5]? arg[5][2] : 0;
   a039=arg[3]? arg[3][0] : 0;
   a040=arg[0]? arg[0][2] : 0;
-  a041=arg[5]? arg[5][23] : 0;
+  a041=arg[5]? arg[5][24] : 0;
   a042=arg[0]? arg[0][0] : 0;
   a043=(a021-a042);
-  a044=arg[5]? arg[5][22] : 0;
+  a044=arg[5]? arg[5][23] : 0;
   a043=(a043/a044);
   a043=(a043-a040);
   a043=(a041*a043);
@@ -12916,14 +12937,14 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a091=(a091+a083);
   a091=casadi_fabs(a091);
   a083=(a036<a091);
-  a047=arg[5]? arg[5][27] : 0;
+  a047=arg[5]? arg[5][28] : 0;
   a063=(a047*a063);
   a027=(a035*a063);
   a061=(a047*a061);
   a081=(a090*a061);
   a027=(a027-a081);
   a027=casadi_fabs(a027);
-  a081=arg[5]? arg[5][28] : 0;
+  a081=arg[5]? arg[5][29] : 0;
   a017=(a081*a017);
   a010=(a017*a063);
   a073=(a081*a073);
@@ -13296,24 +13317,24 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a027=(a027+a043);
   a027=(a027+a041);
   a027=casadi_fabs(a027);
-  a036=casadi_inf;
-  a027=(a027<a036);
-  a036=(a026&&a027);
-  a036=(a011&&a036);
-  a088=(-a029);
-  a083=casadi_fmax(a083,a088);
+  a088=casadi_inf;
+  a027=(a027<a088);
+  a088=(a026&&a027);
+  a088=(a011&&a088);
+  a082=(-a029);
+  a083=casadi_fmax(a083,a082);
   a083=casadi_fmin(a083,a029);
-  a083=(a036?a083:0);
+  a083=(a088?a083:0);
   if (res[0]!=0) res[0][0]=a083;
   a083=(-a047);
   a097=casadi_fmax(a097,a083);
   a097=casadi_fmin(a097,a047);
-  a097=(a036?a097:0);
+  a097=(a088?a097:0);
   if (res[0]!=0) res[0][1]=a097;
   a097=(-a081);
   a098=casadi_fmax(a098,a097);
   a098=casadi_fmin(a098,a081);
-  a098=(a036?a098:0);
+  a098=(a088?a098:0);
   if (res[0]!=0) res[0][2]=a098;
   a098=(a011&&a027);
   a081=(a098?a021:0);
@@ -13333,80 +13354,85 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a097=(a097?a050:0);
   a098=(a098+a097);
   if (res[1]!=0) res[1][3]=a098;
-  a093=(a036?a093:0);
-  a098=(!a036);
+  a098=arg[5]? arg[5][22] : 0;
+  a098=(a098!=a036);
+  a096=(a024<a096);
+  a098=(a098&&a096);
+  a098=(!a098);
+  a088=(a088&&a098);
+  a093=(a088?a093:0);
+  a098=(!a088);
   a032=(a098?a032:0);
   a093=(a093+a032);
   if (res[1]!=0) res[1][4]=a093;
-  a046=(a036?a046:0);
+  a046=(a088?a046:0);
   a062=(a098?a062:0);
   a046=(a046+a062);
   if (res[1]!=0) res[1][5]=a046;
-  a070=(a036?a070:0);
+  a070=(a088?a070:0);
   a000=(a098?a000:0);
   a070=(a070+a000);
   if (res[1]!=0) res[1][6]=a070;
-  a072=(a036?a072:0);
+  a072=(a088?a072:0);
   a038=(a098?a038:0);
   a072=(a072+a038);
   if (res[1]!=0) res[1][7]=a072;
-  a019=(a036?a019:0);
+  a019=(a088?a019:0);
   a068=(a098?a068:0);
   a019=(a019+a068);
   if (res[1]!=0) res[1][8]=a019;
-  a020=(a036?a020:0);
+  a020=(a088?a020:0);
   a078=(a098?a078:0);
   a020=(a020+a078);
   if (res[1]!=0) res[1][9]=a020;
-  a048=(a036?a048:0);
+  a048=(a088?a048:0);
   a007=(a098?a007:0);
   a048=(a048+a007);
   if (res[1]!=0) res[1][10]=a048;
-  a069=(a036?a069:0);
+  a069=(a088?a069:0);
   a080=(a098?a080:0);
   a069=(a069+a080);
   if (res[1]!=0) res[1][11]=a069;
-  a079=(a036?a079:0);
+  a079=(a088?a079:0);
   a012=(a098?a012:0);
   a079=(a079+a012);
   if (res[1]!=0) res[1][12]=a079;
-  a058=(a036?a058:0);
+  a058=(a088?a058:0);
   a076=(a098?a076:0);
   a058=(a058+a076);
   if (res[1]!=0) res[1][13]=a058;
-  a008=(a036?a008:0);
+  a008=(a088?a008:0);
   a037=(a098?a037:0);
   a008=(a008+a037);
   if (res[1]!=0) res[1][14]=a008;
-  a077=(a036?a077:0);
+  a077=(a088?a077:0);
   a071=(a098?a071:0);
   a077=(a077+a071);
   if (res[1]!=0) res[1][15]=a077;
-  a028=(a036?a028:0);
+  a028=(a088?a028:0);
   a066=(a098?a066:0);
   a028=(a028+a066);
   if (res[1]!=0) res[1][16]=a028;
-  a016=(a036?a016:0);
+  a016=(a088?a016:0);
   a006=(a098?a006:0);
   a016=(a016+a006);
   if (res[1]!=0) res[1][17]=a016;
-  a059=(a036?a059:0);
+  a059=(a088?a059:0);
   a055=(a098?a055:0);
   a059=(a059+a055);
   if (res[1]!=0) res[1][18]=a059;
-  a054=(a036?a054:0);
+  a054=(a088?a054:0);
   a084=(a098?a084:0);
   a054=(a054+a084);
   if (res[1]!=0) res[1][19]=a054;
-  a031=(a036?a031:0);
+  a031=(a088?a031:0);
   a087=(a098?a087:0);
   a031=(a031+a087);
   if (res[1]!=0) res[1][20]=a031;
-  a036=(a036?a044:0);
+  a088=(a088?a044:0);
   a098=(a098?a089:0);
-  a036=(a036+a098);
-  if (res[1]!=0) res[1][21]=a036;
-  a096=(a024<a096);
+  a088=(a088+a098);
+  if (res[1]!=0) res[1][21]=a088;
   a096=(a096?a015:0);
   a096=(a027?a096:0);
   a027=(!a027);
@@ -13492,7 +13518,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_minmax_step_sp
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -13502,7 +13528,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_minmax_step_sp
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -13523,7 +13549,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_minmax_step_work_bytes(casad
   return 0;
 }
 
-/* shang2010_stribeck_na_proj_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_stribeck_na_proj_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -13652,9 +13678,9 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a26=(a00+a24);
   a26=casadi_fabs(a26);
   a11=casadi_fmax(a11,a26);
-  a26=arg[5]? arg[5][35] : 0;
+  a26=arg[5]? arg[5][36] : 0;
   a11=(a11<=a26);
-  a26=arg[5]? arg[5][24] : 0;
+  a26=arg[5]? arg[5][25] : 0;
   a03=(a03/a15);
   a27=(a01*a03);
   a06=(a06/a15);
@@ -13685,7 +13711,7 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a30=(a30-a29);
   a30=(a30/a15);
   a26=(a26<=a30);
-  a29=arg[5]? arg[5][25] : 0;
+  a29=arg[5]? arg[5][26] : 0;
   a24=1.;
   a31=3.3333333333333331e-01;
   a32=casadi_sq(a03);
@@ -13748,10 +13774,10 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a43=arg[5]? arg[5][2] : 0;
   a44=arg[3]? arg[3][0] : 0;
   a45=arg[0]? arg[0][2] : 0;
-  a46=arg[5]? arg[5][23] : 0;
+  a46=arg[5]? arg[5][24] : 0;
   a47=arg[0]? arg[0][0] : 0;
   a48=(a21-a47);
-  a49=arg[5]? arg[5][22] : 0;
+  a49=arg[5]? arg[5][23] : 0;
   a48=(a48/a49);
   a48=(a48-a45);
   a48=(a46*a48);
@@ -14093,14 +14119,14 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a54=(a54-a46);
   a83=(a83*a54);
   a01=(a01+a83);
-  a83=arg[5]? arg[5][26] : 0;
-  a87=arg[5]? arg[5][27] : 0;
-  a84=arg[5]? arg[5][28] : 0;
+  a83=arg[5]? arg[5][27] : 0;
+  a87=arg[5]? arg[5][28] : 0;
+  a84=arg[5]? arg[5][29] : 0;
   arg[6]=w+0;
   arg[7]=w+6;
-  arg[8] = arg[5]? arg[5] + 26 : 0;
-  arg[9] = arg[5]? arg[5] + 29 : 0;
-  arg[10] = arg[5]? arg[5] + 32 : 0;
+  arg[8] = arg[5]? arg[5] + 27 : 0;
+  arg[9] = arg[5]? arg[5] + 30 : 0;
+  arg[10] = arg[5]? arg[5] + 33 : 0;
   res[4]=w+17;
   res[5]=w+20;
   w[0] = a29;
@@ -14299,24 +14325,24 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a40=(a40+a48);
   a40=(a40+a46);
   a40=casadi_fabs(a40);
-  a08=casadi_inf;
-  a40=(a40<a08);
-  a08=(a26&&a40);
-  a08=(a11&&a08);
-  a90=(-a83);
-  a29=casadi_fmax(a29,a90);
+  a90=casadi_inf;
+  a40=(a40<a90);
+  a90=(a26&&a40);
+  a90=(a11&&a90);
+  a38=(-a83);
+  a29=casadi_fmax(a29,a38);
   a29=casadi_fmin(a29,a83);
-  a29=(a08?a29:0);
+  a29=(a90?a29:0);
   if (res[0]!=0) res[0][0]=a29;
   a29=(-a87);
   a34=casadi_fmax(a34,a29);
   a34=casadi_fmin(a34,a87);
-  a34=(a08?a34:0);
+  a34=(a90?a34:0);
   if (res[0]!=0) res[0][1]=a34;
   a34=(-a84);
   a17=casadi_fmax(a17,a34);
   a17=casadi_fmin(a17,a84);
-  a17=(a08?a17:0);
+  a17=(a90?a17:0);
   if (res[0]!=0) res[0][2]=a17;
   a17=(a11&&a40);
   a84=(a17?a21:0);
@@ -14336,85 +14362,90 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a34=(a34?a55:0);
   a17=(a17+a34);
   if (res[1]!=0) res[1][3]=a17;
-  a41=(a08?a41:0);
-  a17=(!a08);
+  a17=arg[5]? arg[5][22] : 0;
+  a17=(a17!=a08);
+  a08=(a39==a15);
+  a17=(a17&&a08);
+  a17=(!a17);
+  a90=(a90&&a17);
+  a41=(a90?a41:0);
+  a17=(!a90);
   a31=(a17?a31:0);
   a41=(a41+a31);
   if (res[1]!=0) res[1][4]=a41;
-  a51=(a08?a51:0);
+  a51=(a90?a51:0);
   a35=(a17?a35:0);
   a51=(a51+a35);
   if (res[1]!=0) res[1][5]=a51;
-  a72=(a08?a72:0);
+  a72=(a90?a72:0);
   a37=(a17?a37:0);
   a72=(a72+a37);
   if (res[1]!=0) res[1][6]=a72;
-  a80=(a08?a80:0);
+  a80=(a90?a80:0);
   a43=(a17?a43:0);
   a80=(a80+a43);
   if (res[1]!=0) res[1][7]=a80;
-  a19=(a08?a19:0);
+  a19=(a90?a19:0);
   a70=(a17?a70:0);
   a19=(a19+a70);
   if (res[1]!=0) res[1][8]=a19;
-  a20=(a08?a20:0);
+  a20=(a90?a20:0);
   a78=(a17?a78:0);
   a20=(a20+a78);
   if (res[1]!=0) res[1][9]=a20;
-  a53=(a08?a53:0);
+  a53=(a90?a53:0);
   a07=(a17?a07:0);
   a53=(a53+a07);
   if (res[1]!=0) res[1][10]=a53;
-  a71=(a08?a71:0);
+  a71=(a90?a71:0);
   a81=(a17?a81:0);
   a71=(a71+a81);
   if (res[1]!=0) res[1][11]=a71;
-  a79=(a08?a79:0);
+  a79=(a90?a79:0);
   a12=(a17?a12:0);
   a79=(a79+a12);
   if (res[1]!=0) res[1][12]=a79;
-  a63=(a08?a63:0);
+  a63=(a90?a63:0);
   a76=(a17?a76:0);
   a63=(a63+a76);
   if (res[1]!=0) res[1][13]=a63;
-  a58=(a08?a58:0);
+  a58=(a90?a58:0);
   a42=(a17?a42:0);
   a58=(a58+a42);
   if (res[1]!=0) res[1][14]=a58;
-  a77=(a08?a77:0);
+  a77=(a90?a77:0);
   a73=(a17?a73:0);
   a77=(a77+a73);
   if (res[1]!=0) res[1][15]=a77;
-  a28=(a08?a28:0);
+  a28=(a90?a28:0);
   a68=(a17?a68:0);
   a28=(a28+a68);
   if (res[1]!=0) res[1][16]=a28;
-  a16=(a08?a16:0);
+  a16=(a90?a16:0);
   a06=(a17?a06:0);
   a16=(a16+a06);
   if (res[1]!=0) res[1][17]=a16;
-  a64=(a08?a64:0);
+  a64=(a90?a64:0);
   a60=(a17?a60:0);
   a64=(a64+a60);
   if (res[1]!=0) res[1][18]=a64;
-  a59=(a08?a59:0);
+  a59=(a90?a59:0);
   a86=(a17?a86:0);
   a59=(a59+a86);
   if (res[1]!=0) res[1][19]=a59;
-  a85=(a08?a85:0);
+  a85=(a90?a85:0);
   a89=(a17?a89:0);
   a85=(a85+a89);
   if (res[1]!=0) res[1][20]=a85;
-  a08=(a08?a49:0);
+  a90=(a90?a49:0);
   a17=(a17?a91:0);
-  a08=(a08+a17);
-  if (res[1]!=0) res[1][21]=a08;
-  a08=(a39==a15);
+  a90=(a90+a17);
+  if (res[1]!=0) res[1][21]=a90;
   a15=(a08?a15:0);
   a08=(!a08);
   a39=(a39==a24);
-  a17=4.;
-  a39=(a39?a17:0);
+  a90=4.;
+  a39=(a39?a90:0);
   a08=(a08?a39:0);
   a15=(a15+a08);
   a15=(a40?a15:0);
@@ -14501,7 +14532,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_preload_step_s
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -14511,7 +14542,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_preload_step_s
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -15375,7 +15406,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_step_sparsity_out(
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -16394,7 +16425,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_minmax_step_sparsi
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -17238,7 +17269,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_preload_step_spars
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -18080,7 +18111,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_step_sparsity_out(
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -19077,7 +19108,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_minmax_step_sparsi
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -19899,7 +19930,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_preload_step_spars
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -20504,7 +20535,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_step_sparsity_in(c
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s11;
+    case 5: return casadi_s12;
     case 6: return casadi_s5;
     case 7: return casadi_s2;
     default: return 0;
@@ -20516,7 +20547,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_step_sparsity_out(
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -21276,7 +21307,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_minmax_step_sparsi
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s11;
+    case 5: return casadi_s12;
     case 6: return casadi_s5;
     case 7: return casadi_s2;
     default: return 0;
@@ -21288,7 +21319,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_minmax_step_sparsi
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -21874,7 +21905,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_preload_step_spars
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s11;
+    case 5: return casadi_s12;
     case 6: return casadi_s5;
     case 7: return casadi_s2;
     default: return 0;
@@ -21886,7 +21917,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_preload_step_spars
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -22397,7 +22428,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_plant_xedd_sparsity_in
     case 0: return casadi_s0;
     case 1: return casadi_s0;
     case 2: return casadi_s2;
-    case 3: return casadi_s12;
+    case 3: return casadi_s13;
     default: return 0;
   }
 }
@@ -24140,7 +24171,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_plant_step_sparsity_in
   switch (i) {
     case 0: return casadi_s3;
     case 1: return casadi_s2;
-    case 2: return casadi_s12;
+    case 2: return casadi_s13;
     case 3: return casadi_s8;
     default: return 0;
   }
@@ -24314,7 +24345,7 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_measure_name_out(casadi_int 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_measure_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s0;
-    case 1: return casadi_s12;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -24342,7 +24373,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_measure_work_bytes(casadi_int *sz_ar
   return 0;
 }
 
-/* shang2010_stribeck_na_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
+/* shang2010_stribeck_na_closed_loop:(x[26],u[6],p[58])->(x_next[26],y[26]) */
 static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
@@ -24356,7 +24387,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -24377,7 +24408,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -24455,17 +24486,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_closed_loop_name_out(casa
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -24486,11 +24517,11 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_closed_loop_work_bytes(casadi_int
   return 0;
 }
 
-/* shang2010_stribeck_na_minmax_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
+/* shang2010_stribeck_na_minmax_closed_loop:(x[26],u[6],p[58])->(x_next[26],y[26]) */
 static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
-  casadi_real **res1=res+2, *rr, *w03=w+103, *w07=w+107, *w08=w+110, *w09=w+116, *w10=w+118, *w11=w+120, *w13=w+122, *w14=w+125, w15, w16;
-  casadi_real w17, *w18=w+147, *w19=w+151;
+  casadi_real **res1=res+2, *rr, *w03=w+104, *w07=w+108, *w08=w+111, *w09=w+117, *w10=w+119, *w11=w+121, *w13=w+123, *w14=w+126, w15, w16;
+  casadi_real w17, *w18=w+148, *w19=w+152;
   const casadi_real **arg1=arg+3, *cs, *wr00, *wr01, *wr02, *wr04, *wr05, *wr06, *wr12;
   wr00 = arg[0] ? arg[0] : casadi_zeros;
   wr01 = wr00+0;
@@ -24500,7 +24531,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -24521,7 +24552,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -24599,17 +24630,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_minmax_closed_loop_name_o
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -24618,7 +24649,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_minmax_closed_loop_work(casadi_in
   if (sz_arg) *sz_arg = 9;
   if (sz_res) *sz_res = 6;
   if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 169;
+  if (sz_w) *sz_w = 170;
   return 0;
 }
 
@@ -24626,11 +24657,11 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_minmax_closed_loop_work_bytes(cas
   if (sz_arg) *sz_arg = 9*sizeof(const casadi_real*);
   if (sz_res) *sz_res = 6*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 169*sizeof(casadi_real);
+  if (sz_w) *sz_w = 170*sizeof(casadi_real);
   return 0;
 }
 
-/* shang2010_stribeck_na_preload_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
+/* shang2010_stribeck_na_preload_closed_loop:(x[26],u[6],p[58])->(x_next[26],y[26]) */
 static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+265, *w07=w+269, *w08=w+272, *w09=w+278, *w10=w+280, *w11=w+282, *w13=w+284, *w14=w+287, w15, w16;
@@ -24644,7 +24675,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -24665,7 +24696,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -24743,17 +24774,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_preload_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -24774,7 +24805,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_preload_closed_loop_work_bytes(ca
   return 0;
 }
 
-/* shang2010_stribeck_na_proj_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
+/* shang2010_stribeck_na_proj_closed_loop:(x[26],u[6],p[58])->(x_next[26],y[26]) */
 static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+96, *w07=w+100, *w08=w+103, *w09=w+109, *w10=w+111, *w11=w+113, *w13=w+115, *w14=w+118, w15, w16;
@@ -24788,7 +24819,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -24809,7 +24840,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -24887,17 +24918,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_proj_closed_loop_name_out
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -24918,7 +24949,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_closed_loop_work_bytes(casad
   return 0;
 }
 
-/* shang2010_stribeck_na_proj_minmax_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
+/* shang2010_stribeck_na_proj_minmax_closed_loop:(x[26],u[6],p[58])->(x_next[26],y[26]) */
 static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+104, *w07=w+108, *w08=w+111, *w09=w+117, *w10=w+119, *w11=w+121, *w13=w+123, *w14=w+126, w15, w16;
@@ -24932,7 +24963,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -24953,7 +24984,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f22(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -25031,17 +25062,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_proj_minmax_closed_loop_n
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -25062,7 +25093,7 @@ CASADI_SYMBOL_EXPORT int shang2010_stribeck_na_proj_minmax_closed_loop_work_byte
   return 0;
 }
 
-/* shang2010_stribeck_na_proj_preload_closed_loop:(x[26],u[6],p[57])->(x_next[26],y[26]) */
+/* shang2010_stribeck_na_proj_preload_closed_loop:(x[26],u[6],p[58])->(x_next[26],y[26]) */
 static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+265, *w07=w+269, *w08=w+272, *w09=w+278, *w10=w+280, *w11=w+282, *w13=w+284, *w14=w+287, w15, w16;
@@ -25076,7 +25107,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -25097,7 +25128,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f23(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -25175,17 +25206,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_na_proj_preload_closed_loop_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -25319,17 +25350,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_apd_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s15;
+    case 2: return casadi_s16;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -25463,17 +25494,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_apd_minmax_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s15;
+    case 2: return casadi_s16;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -25607,17 +25638,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_apd_preload_closed_loop_name
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s15;
+    case 2: return casadi_s16;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -25751,17 +25782,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s15;
+    case 2: return casadi_s16;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -25895,17 +25926,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_minmax_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s15;
+    case 2: return casadi_s16;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -26039,17 +26070,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_ctc_preload_closed_loop_name
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
+    case 0: return casadi_s14;
     case 1: return casadi_s1;
-    case 2: return casadi_s15;
+    case 2: return casadi_s16;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -26187,17 +26218,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s12;
-    case 2: return casadi_s16;
+    case 0: return casadi_s14;
+    case 1: return casadi_s13;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -26335,17 +26366,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_minmax_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s12;
-    case 2: return casadi_s16;
+    case 0: return casadi_s14;
+    case 1: return casadi_s13;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -26483,17 +26514,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_lqr_preload_closed_loop_name
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s12;
-    case 2: return casadi_s16;
+    case 0: return casadi_s14;
+    case 1: return casadi_s13;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s13;
-    case 1: return casadi_s13;
+    case 0: return casadi_s14;
+    case 1: return casadi_s14;
     default: return 0;
   }
 }
@@ -30017,8 +30048,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_path_mvc_name_out(casadi_int
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_path_mvc_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s17;
-    case 1: return casadi_s18;
+    case 0: return casadi_s18;
+    case 1: return casadi_s19;
     default: return 0;
   }
 }
@@ -36661,8 +36692,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_path_backward_name_out(casad
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_path_backward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s8;
-    case 1: return casadi_s19;
-    case 2: return casadi_s18;
+    case 1: return casadi_s15;
+    case 2: return casadi_s19;
     default: return 0;
   }
 }
@@ -38215,7 +38246,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_path_forward_sparsity_
   switch (i) {
     case 0: return casadi_s8;
     case 1: return casadi_s20;
-    case 2: return casadi_s18;
+    case 2: return casadi_s19;
     default: return 0;
   }
 }
@@ -38647,10 +38678,10 @@ CASADI_SYMBOL_EXPORT const char* shang2010_stribeck_path_torques_name_out(casadi
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_stribeck_path_torques_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s17;
+    case 0: return casadi_s18;
     case 1: return casadi_s8;
     case 2: return casadi_s8;
-    case 3: return casadi_s18;
+    case 3: return casadi_s19;
     case 4: return casadi_s2;
     default: return 0;
   }

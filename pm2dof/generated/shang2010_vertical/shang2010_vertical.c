@@ -137,6 +137,7 @@ extern "C" {
 #define casadi_s26 CASADI_PREFIX(s26)
 #define casadi_s27 CASADI_PREFIX(s27)
 #define casadi_s28 CASADI_PREFIX(s28)
+#define casadi_s29 CASADI_PREFIX(s29)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
@@ -340,49 +341,50 @@ static const casadi_int casadi_s6[3] = {18, 1, 1};
 static const casadi_int casadi_s7[3] = {36, 1, 1};
 static const casadi_int casadi_s8[3] = {1, 1, 1};
 static const casadi_int casadi_s9[3] = {22, 1, 1};
-static const casadi_int casadi_s10[3] = {10, 1, 1};
-static const casadi_int casadi_s11[3] = {14, 1, 1};
-static const casadi_int casadi_s12[3] = {26, 1, 1};
-static const casadi_int casadi_s13[3] = {60, 1, 1};
-static const casadi_int casadi_s14[3] = {42, 1, 1};
-static const casadi_int casadi_s15[3] = {21, 1, 1};
-static const casadi_int casadi_s16[3] = {38, 1, 1};
-static const casadi_int casadi_s17[3] = {29, 1, 1};
-static const casadi_int casadi_s18[3] = {19, 1, 1};
-static const casadi_int casadi_s19[3] = {62, 1, 1};
-static const casadi_int casadi_s20[3] = {63, 1, 1};
-static const casadi_int casadi_s21[26] = 
+static const casadi_int casadi_s10[3] = {37, 1, 1};
+static const casadi_int casadi_s11[3] = {10, 1, 1};
+static const casadi_int casadi_s12[3] = {14, 1, 1};
+static const casadi_int casadi_s13[3] = {26, 1, 1};
+static const casadi_int casadi_s14[3] = {61, 1, 1};
+static const casadi_int casadi_s15[3] = {42, 1, 1};
+static const casadi_int casadi_s16[3] = {21, 1, 1};
+static const casadi_int casadi_s17[3] = {38, 1, 1};
+static const casadi_int casadi_s18[3] = {29, 1, 1};
+static const casadi_int casadi_s19[3] = {19, 1, 1};
+static const casadi_int casadi_s20[3] = {62, 1, 1};
+static const casadi_int casadi_s21[3] = {63, 1, 1};
+static const casadi_int casadi_s22[26] = 
   {4, 7, 0, 1, 2, 3, 4, 8,
   12, 16, 0, 1, 2, 3, 0, 1,
   2, 3, 0, 1, 2, 3, 0, 1,
   2, 3};
-static const casadi_int casadi_s22[13] = 
+static const casadi_int casadi_s23[13] = 
   {7, 2, 0, 4, 8, 2, 4, 5,
   6, 3, 4, 5, 6};
-static const casadi_int casadi_s23[18] = 
+static const casadi_int casadi_s24[18] = 
   {2, 7, 0, 0, 0, 1, 2, 4,
   6, 8, 0, 1, 0, 1, 0, 1,
   0, 1};
-static const casadi_int casadi_s24[32] = 
+static const casadi_int casadi_s25[32] = 
   {4, 7, 0, 2, 4, 7, 10, 14,
   18, 22, 2, 3, 2, 3, 0, 2,
   3, 1, 2, 3, 0, 1, 2, 3,
   0, 1, 2, 3, 0, 1, 2, 3};
-static const casadi_int casadi_s25[29] = 
+static const casadi_int casadi_s26[29] = 
   {7, 4, 0, 4, 8, 15, 22, 2,
   4, 5, 6, 3, 4, 5, 6, 0,
   1, 2, 3, 4, 5, 6, 0, 1,
   2, 3, 4, 5, 6};
-static const casadi_int casadi_s26[34] = 
+static const casadi_int casadi_s27[34] = 
   {4, 7, 0, 3, 6, 9, 12, 16,
   20, 24, 0, 2, 3, 1, 2, 3,
   0, 2, 3, 1, 2, 3, 0, 1,
   2, 3, 0, 1, 2, 3, 0, 1,
   2, 3};
-static const casadi_int casadi_s27[14] = 
+static const casadi_int casadi_s28[14] = 
   {1, 2, 4, 5, 7, 8, 10, 11,
   14, 15, 18, 19, 22, 23};
-static const casadi_int casadi_s28[3] = {16, 1, 1};
+static const casadi_int casadi_s29[3] = {16, 1, 1};
 
 static const casadi_real casadi_zeros[63] = 
   {0.};
@@ -8203,7 +8205,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_forward_dynamics_work_bytes(casadi_i
   return 0;
 }
 
-/* shang2010_vertical_na_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_vertical_na_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -8332,9 +8334,9 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a26=(a00+a24);
   a26=casadi_fabs(a26);
   a11=casadi_fmax(a11,a26);
-  a26=arg[5]? arg[5][35] : 0;
+  a26=arg[5]? arg[5][36] : 0;
   a11=(a11<=a26);
-  a26=arg[5]? arg[5][24] : 0;
+  a26=arg[5]? arg[5][25] : 0;
   a03=(a03/a15);
   a27=(a01*a03);
   a06=(a06/a15);
@@ -8365,7 +8367,7 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a30=(a30-a29);
   a30=(a30/a15);
   a26=(a26<=a30);
-  a29=arg[5]? arg[5][25] : 0;
+  a29=arg[5]? arg[5][26] : 0;
   a24=1.;
   a31=3.3333333333333331e-01;
   a32=casadi_sq(a03);
@@ -8428,10 +8430,10 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a41=arg[5]? arg[5][2] : 0;
   a42=arg[3]? arg[3][0] : 0;
   a43=arg[0]? arg[0][2] : 0;
-  a44=arg[5]? arg[5][23] : 0;
+  a44=arg[5]? arg[5][24] : 0;
   a45=arg[0]? arg[0][0] : 0;
   a46=(a21-a45);
-  a47=arg[5]? arg[5][22] : 0;
+  a47=arg[5]? arg[5][23] : 0;
   a46=(a46/a47);
   a46=(a46-a43);
   a46=(a44*a46);
@@ -8963,19 +8965,19 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a35=(a35<a87);
   a87=(a26&&a35);
   a87=(a11&&a87);
-  a86=arg[5]? arg[5][26] : 0;
+  a86=arg[5]? arg[5][27] : 0;
   a52=(-a86);
   a52=casadi_fmax(a29,a52);
   a52=casadi_fmin(a52,a86);
   a52=(a87?a52:0);
   if (res[0]!=0) res[0][0]=a52;
-  a52=arg[5]? arg[5][27] : 0;
+  a52=arg[5]? arg[5][28] : 0;
   a42=(-a52);
   a42=casadi_fmax(a36,a42);
   a42=casadi_fmin(a42,a52);
   a42=(a87?a42:0);
   if (res[0]!=0) res[0][1]=a42;
-  a42=arg[5]? arg[5][28] : 0;
+  a42=arg[5]? arg[5][29] : 0;
   a84=(-a42);
   a84=casadi_fmax(a17,a84);
   a84=casadi_fmin(a84,a42);
@@ -8999,6 +9001,21 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a80=(a80?a53:0);
   a84=(a84+a80);
   if (res[1]!=0) res[1][3]=a84;
+  a84=arg[5]? arg[5][22] : 0;
+  a80=0.;
+  a84=(a84!=a80);
+  a29=casadi_fabs(a29);
+  a29=(a29-a86);
+  a36=casadi_fabs(a36);
+  a36=(a36-a52);
+  a29=casadi_fmax(a29,a36);
+  a17=casadi_fabs(a17);
+  a17=(a17-a42);
+  a29=casadi_fmax(a29,a17);
+  a80=(a80<a29);
+  a84=(a84&&a80);
+  a84=(!a84);
+  a87=(a87&&a84);
   a38=(a87?a38:0);
   a84=(!a87);
   a31=(a84?a31:0);
@@ -9072,32 +9089,22 @@ static int casadi_f18(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a84=(a84?a88:0);
   a87=(a87+a84);
   if (res[1]!=0) res[1][21]=a87;
-  a87=0.;
-  a29=casadi_fabs(a29);
-  a29=(a29-a86);
-  a36=casadi_fabs(a36);
-  a36=(a36-a52);
-  a29=casadi_fmax(a29,a36);
-  a17=casadi_fabs(a17);
-  a17=(a17-a42);
-  a29=casadi_fmax(a29,a17);
-  a87=(a87<a29);
-  a87=(a87?a15:0);
-  a87=(a35?a87:0);
+  a80=(a80?a15:0);
+  a80=(a35?a80:0);
   a35=(!a35);
   a15=3.;
   a35=(a35?a15:0);
-  a87=(a87+a35);
-  a87=(a26?a87:0);
+  a80=(a80+a35);
+  a80=(a26?a80:0);
   a26=(!a26);
   a26=(a26?a24:0);
-  a87=(a87+a26);
-  a87=(a11?a87:0);
+  a80=(a80+a26);
+  a80=(a11?a80:0);
   a11=(!a11);
   a26=5.;
   a11=(a11?a26:0);
-  a87=(a87+a11);
-  if (res[2]!=0) res[2][0]=a87;
+  a80=(a80+a11);
+  if (res[2]!=0) res[2][0]=a80;
   if (res[3]!=0) res[3][0]=a21;
   if (res[3]!=0) res[3][1]=a05;
   if (res[3]!=0) res[3][2]=a46;
@@ -9167,7 +9174,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_step_sparsity_in(ca
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -9177,7 +9184,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_step_sparsity_out(c
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -9198,7 +9205,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_step_work_bytes(casadi_int *sz_ar
   return 0;
 }
 
-/* shang2010_vertical_na_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_vertical_na_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
@@ -9208,7 +9215,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
   casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
   casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
-  casadi_real a096, a097, a098, a099, a100, a101, a102;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103;
   a000=-2.4399999999999999e-01;
   a001=arg[1]? arg[1][0] : 0;
   a002=cos(a001);
@@ -9328,9 +9335,9 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a026=(a000+a024);
   a026=casadi_fabs(a026);
   a011=casadi_fmax(a011,a026);
-  a026=arg[5]? arg[5][35] : 0;
+  a026=arg[5]? arg[5][36] : 0;
   a011=(a011<=a026);
-  a026=arg[5]? arg[5][24] : 0;
+  a026=arg[5]? arg[5][25] : 0;
   a003=(a003/a015);
   a027=(a001*a003);
   a006=(a006/a015);
@@ -9361,7 +9368,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a030=(a030-a029);
   a030=(a030/a015);
   a026=(a026<=a030);
-  a029=arg[5]? arg[5][25] : 0;
+  a029=arg[5]? arg[5][26] : 0;
   a024=1.;
   a031=3.3333333333333331e-01;
   a032=casadi_sq(a003);
@@ -9395,7 +9402,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a004=sqrt(a004);
   a029=(a029<=a004);
   a026=(a026&&a029);
-  a029=arg[5]? arg[5][26] : 0;
+  a029=arg[5]? arg[5][27] : 0;
   a031=(a017*a003);
   a032=(a019*a031);
   a033=(a000*a006);
@@ -9409,10 +9416,10 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a038=arg[5]? arg[5][2] : 0;
   a039=arg[3]? arg[3][0] : 0;
   a040=arg[0]? arg[0][2] : 0;
-  a041=arg[5]? arg[5][23] : 0;
+  a041=arg[5]? arg[5][24] : 0;
   a042=arg[0]? arg[0][0] : 0;
   a043=(a021-a042);
-  a044=arg[5]? arg[5][22] : 0;
+  a044=arg[5]? arg[5][23] : 0;
   a043=(a043/a044);
   a043=(a043-a040);
   a043=(a041*a043);
@@ -9772,215 +9779,215 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a082=(a001*a035);
   a091=(a091+a082);
   a091=casadi_fabs(a091);
-  a036=(a036<a091);
-  a082=arg[5]? arg[5][27] : 0;
-  a063=(a082*a063);
-  a047=(a035*a063);
-  a061=(a082*a061);
-  a027=(a090*a061);
-  a047=(a047-a027);
-  a047=casadi_fabs(a047);
-  a027=arg[5]? arg[5][28] : 0;
-  a017=(a027*a017);
-  a081=(a017*a063);
-  a073=(a027*a073);
-  a010=(a073*a061);
-  a081=(a081-a010);
-  a081=casadi_fabs(a081);
-  a047=(a047+a081);
-  a081=(a091*a047);
-  a081=(a036?a081:0);
-  a010=(a060*a063);
-  a014=(a001*a061);
-  a010=(a010+a014);
+  a082=(a036<a091);
+  a047=arg[5]? arg[5][28] : 0;
+  a063=(a047*a063);
+  a027=(a035*a063);
+  a061=(a047*a061);
+  a081=(a090*a061);
+  a027=(a027-a081);
+  a027=casadi_fabs(a027);
+  a081=arg[5]? arg[5][29] : 0;
+  a017=(a081*a017);
+  a010=(a017*a063);
+  a073=(a081*a073);
+  a014=(a073*a061);
+  a010=(a010-a014);
   a010=casadi_fabs(a010);
-  a014=(a061*a090);
-  a092=(a063*a035);
-  a014=(a014-a092);
+  a027=(a027+a010);
+  a010=(a091*a027);
+  a010=(a082?a010:0);
+  a014=(a060*a063);
+  a092=(a001*a061);
+  a014=(a014+a092);
   a014=casadi_fabs(a014);
-  a092=(a017*a090);
-  a093=(a073*a035);
+  a092=(a061*a090);
+  a093=(a063*a035);
   a092=(a092-a093);
   a092=casadi_fabs(a092);
-  a014=(a014+a092);
-  a014=(a036?a014:0);
-  a092=(!a036);
-  a093=(a092?a024:0);
-  a014=(a014+a093);
-  a093=(a010*a014);
-  a081=(a081<a093);
-  a010=(a081?a010:0);
-  a093=(!a081);
-  a091=(a036?a091:0);
-  a091=(a093?a091:0);
-  a010=(a010+a091);
+  a093=(a017*a090);
+  a094=(a073*a035);
+  a093=(a093-a094);
+  a093=casadi_fabs(a093);
+  a092=(a092+a093);
+  a092=(a082?a092:0);
+  a093=(!a082);
+  a094=(a093?a024:0);
+  a092=(a092+a094);
+  a094=(a014*a092);
+  a010=(a010<a094);
+  a014=(a010?a014:0);
+  a094=(!a010);
+  a091=(a082?a091:0);
+  a091=(a094?a091:0);
+  a014=(a014+a091);
   a091=(a035*a073);
-  a094=(a090*a017);
-  a091=(a091-a094);
+  a095=(a090*a017);
+  a091=(a091-a095);
   a091=casadi_fabs(a091);
-  a094=(a061*a073);
-  a095=(a063*a017);
-  a094=(a094-a095);
-  a094=casadi_fabs(a094);
-  a091=(a091+a094);
-  a094=(a010*a091);
-  a095=(a060*a073);
-  a096=(a001*a017);
-  a095=(a095+a096);
+  a095=(a061*a073);
+  a096=(a063*a017);
+  a095=(a095-a096);
   a095=casadi_fabs(a095);
-  a047=(a081?a047:0);
-  a014=(a093?a014:0);
-  a047=(a047+a014);
-  a014=(a095*a047);
-  a094=(a094<a014);
-  a014=(a094?a073:0);
-  a096=(!a094);
-  a097=(a081?a063:0);
-  a098=(a036?a090:0);
-  a099=(a092?a090:0);
-  a098=(a098+a099);
-  a098=(a093?a098:0);
-  a097=(a097+a098);
-  a097=(a096?a097:0);
-  a014=(a014+a097);
-  a097=(a060*a014);
-  a098=(a094?a017:0);
-  a081=(a081?a061:0);
-  a036=(a036?a035:0);
-  a092=(a092?a035:0);
-  a036=(a036+a092);
-  a093=(a093?a036:0);
-  a081=(a081+a093);
-  a081=(a096?a081:0);
-  a098=(a098+a081);
-  a081=(a001*a098);
-  a097=(a097+a081);
-  a097=casadi_sign(a097);
-  a081=(a014*a097);
-  a093=(a035*a081);
-  a097=(a098*a097);
-  a036=(a090*a097);
-  a093=(a093-a036);
-  a036=casadi_sq(a093);
-  a092=9.9999999999999992e-25;
-  a099=casadi_sq(a035);
-  a100=casadi_sq(a090);
+  a091=(a091+a095);
+  a095=(a014*a091);
+  a096=(a060*a073);
+  a097=(a001*a017);
+  a096=(a096+a097);
+  a096=casadi_fabs(a096);
+  a027=(a010?a027:0);
+  a092=(a094?a092:0);
+  a027=(a027+a092);
+  a092=(a096*a027);
+  a095=(a095<a092);
+  a092=(a095?a073:0);
+  a097=(!a095);
+  a098=(a010?a063:0);
+  a099=(a082?a090:0);
+  a100=(a093?a090:0);
   a099=(a099+a100);
-  a099=(a092*a099);
-  a100=casadi_sq(a014);
-  a101=casadi_sq(a098);
+  a099=(a094?a099:0);
+  a098=(a098+a099);
+  a098=(a097?a098:0);
+  a092=(a092+a098);
+  a098=(a060*a092);
+  a099=(a095?a017:0);
+  a010=(a010?a061:0);
+  a082=(a082?a035:0);
+  a093=(a093?a035:0);
+  a082=(a082+a093);
+  a094=(a094?a082:0);
+  a010=(a010+a094);
+  a010=(a097?a010:0);
+  a099=(a099+a010);
+  a010=(a001*a099);
+  a098=(a098+a010);
+  a098=casadi_sign(a098);
+  a010=(a092*a098);
+  a094=(a035*a010);
+  a098=(a099*a098);
+  a082=(a090*a098);
+  a094=(a094-a082);
+  a082=casadi_sq(a094);
+  a093=9.9999999999999992e-25;
+  a100=casadi_sq(a035);
+  a101=casadi_sq(a090);
   a100=(a100+a101);
-  a099=(a099*a100);
-  a036=(a036<=a099);
-  a099=(a035*a098);
-  a101=(a090*a014);
-  a099=(a099+a101);
-  a101=casadi_sign(a099);
-  a102=(!a036);
-  a095=(a094?a095:0);
-  a010=(a096?a010:0);
-  a095=(a095+a010);
-  a094=(a094?a091:0);
-  a096=(a096?a047:0);
-  a094=(a094+a096);
-  a095=(a095/a094);
-  a093=casadi_sign(a093);
-  a093=(a095*a093);
-  a035=(a093*a035);
-  a035=(a102?a035:0);
-  a094=(a061*a081);
-  a096=(a063*a097);
-  a094=(a094-a096);
-  a096=casadi_sq(a094);
-  a047=casadi_sq(a061);
-  a091=casadi_sq(a063);
-  a047=(a047+a091);
-  a047=(a092*a047);
-  a047=(a047*a100);
-  a096=(a096<=a047);
-  a047=(!a096);
+  a100=(a093*a100);
+  a101=casadi_sq(a092);
+  a102=casadi_sq(a099);
+  a101=(a101+a102);
+  a100=(a100*a101);
+  a082=(a082<=a100);
+  a100=(a035*a099);
+  a102=(a090*a092);
+  a100=(a100+a102);
+  a102=casadi_sign(a100);
+  a103=(!a082);
+  a096=(a095?a096:0);
+  a014=(a097?a014:0);
+  a096=(a096+a014);
+  a095=(a095?a091:0);
+  a097=(a097?a027:0);
+  a095=(a095+a097);
+  a096=(a096/a095);
   a094=casadi_sign(a094);
-  a094=(a095*a094);
-  a091=(a094*a061);
-  a091=(a047?a091:0);
+  a094=(a096*a094);
+  a035=(a094*a035);
+  a035=(a103?a035:0);
+  a095=(a061*a010);
+  a097=(a063*a098);
+  a095=(a095-a097);
+  a097=casadi_sq(a095);
+  a027=casadi_sq(a061);
+  a091=casadi_sq(a063);
+  a027=(a027+a091);
+  a027=(a093*a027);
+  a027=(a027*a101);
+  a097=(a097<=a027);
+  a027=(!a097);
+  a095=casadi_sign(a095);
+  a095=(a096*a095);
+  a091=(a095*a061);
+  a091=(a027?a091:0);
   a035=(a035+a091);
-  a081=(a017*a081);
-  a097=(a073*a097);
-  a081=(a081-a097);
-  a097=casadi_sq(a081);
+  a010=(a017*a010);
+  a098=(a073*a098);
+  a010=(a010-a098);
+  a098=casadi_sq(a010);
   a091=casadi_sq(a017);
-  a010=casadi_sq(a073);
-  a091=(a091+a010);
-  a092=(a092*a091);
-  a092=(a092*a100);
-  a097=(a097<=a092);
-  a092=(!a097);
-  a081=casadi_sign(a081);
-  a081=(a095*a081);
-  a100=(a081*a017);
-  a100=(a092?a100:0);
-  a035=(a035+a100);
+  a014=casadi_sq(a073);
+  a091=(a091+a014);
+  a093=(a093*a091);
+  a093=(a093*a101);
+  a098=(a098<=a093);
+  a093=(!a098);
+  a010=casadi_sign(a010);
+  a010=(a096*a010);
+  a101=(a010*a017);
+  a101=(a093?a101:0);
+  a035=(a035+a101);
   a060=(a060-a035);
-  a060=(a060*a098);
-  a090=(a093*a090);
+  a060=(a060*a099);
+  a090=(a094*a090);
   a090=(-a090);
-  a090=(a102?a090:0);
-  a035=(a094*a063);
+  a090=(a103?a090:0);
+  a035=(a095*a063);
   a035=(-a035);
-  a035=(a047?a035:0);
+  a035=(a027?a035:0);
   a090=(a090+a035);
-  a035=(a081*a073);
+  a035=(a010*a073);
   a035=(-a035);
-  a035=(a092?a035:0);
+  a035=(a093?a035:0);
   a090=(a090+a035);
   a001=(a001-a090);
-  a001=(a001*a014);
+  a001=(a001*a092);
   a060=(a060-a001);
-  a099=casadi_fabs(a099);
-  a099=(a036?a099:0);
-  a061=(a061*a098);
-  a063=(a063*a014);
+  a100=casadi_fabs(a100);
+  a100=(a082?a100:0);
+  a061=(a061*a099);
+  a063=(a063*a092);
   a061=(a061+a063);
   a063=casadi_fabs(a061);
-  a063=(a096?a063:0);
-  a099=(a099+a063);
-  a017=(a017*a098);
-  a073=(a073*a014);
+  a063=(a097?a063:0);
+  a100=(a100+a063);
+  a017=(a017*a099);
+  a073=(a073*a092);
   a017=(a017+a073);
   a073=casadi_fabs(a017);
-  a073=(a097?a073:0);
-  a099=(a099+a073);
-  a060=(a060/a099);
-  a101=(a101*a060);
-  a036=(a036?a101:0);
-  a093=(a102?a093:0);
-  a102=(a102?a093:0);
-  a036=(a036+a102);
-  a036=(a029*a036);
+  a073=(a098?a073:0);
+  a100=(a100+a073);
+  a060=(a060/a100);
+  a102=(a102*a060);
+  a082=(a082?a102:0);
+  a094=(a103?a094:0);
+  a103=(a103?a094:0);
+  a082=(a082+a103);
+  a082=(a029*a082);
   a061=casadi_sign(a061);
   a061=(a061*a060);
-  a096=(a096?a061:0);
-  a094=(a047?a094:0);
-  a047=(a047?a094:0);
-  a096=(a096+a047);
-  a096=(a082*a096);
-  a047=(a036+a096);
+  a097=(a097?a061:0);
+  a095=(a027?a095:0);
+  a027=(a027?a095:0);
+  a097=(a097+a027);
+  a097=(a047*a097);
+  a027=(a082+a097);
   a017=casadi_sign(a017);
   a017=(a017*a060);
-  a097=(a097?a017:0);
-  a081=(a092?a081:0);
-  a092=(a092?a081:0);
-  a097=(a097+a092);
-  a097=(a027*a097);
-  a047=(a047+a097);
-  a092=arg[5]? arg[5][4] : 0;
-  a092=(a044*a092);
+  a098=(a098?a017:0);
+  a010=(a093?a010:0);
+  a093=(a093?a010:0);
+  a098=(a098+a093);
+  a098=(a081*a098);
+  a027=(a027+a098);
+  a093=arg[5]? arg[5][4] : 0;
+  a093=(a044*a093);
   a058=(a058*a039);
   a046=(a046*a049);
   a058=(a058-a046);
-  a092=(a092*a058);
-  a092=(a032+a092);
-  a047=(a047+a092);
+  a093=(a093*a058);
+  a093=(a032+a093);
+  a027=(a027+a093);
   a058=arg[5]? arg[5][5] : 0;
   a058=(a044*a058);
   a070=(a070*a039);
@@ -9988,7 +9995,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a070=(a070-a064);
   a058=(a058*a070);
   a058=(a062+a058);
-  a047=(a047+a058);
+  a027=(a027+a058);
   a070=arg[5]? arg[5][6] : 0;
   a070=(a044*a070);
   a072=(a072*a039);
@@ -9996,7 +10003,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a072=(a072-a074);
   a070=(a070*a072);
   a070=(a000+a070);
-  a047=(a047+a070);
+  a027=(a027+a070);
   a072=arg[5]? arg[5][7] : 0;
   a072=(a044*a072);
   a048=(a048*a039);
@@ -10004,7 +10011,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a048=(a048+a003);
   a072=(a072*a048);
   a072=(a038+a072);
-  a047=(a047+a072);
+  a027=(a027+a072);
   a048=arg[5]? arg[5][8] : 0;
   a048=(a044*a048);
   a069=(a069*a039);
@@ -10012,7 +10019,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a069=(a069+a016);
   a048=(a048*a069);
   a048=(a068+a048);
-  a047=(a047+a048);
+  a027=(a027+a048);
   a069=arg[5]? arg[5][9] : 0;
   a069=(a044*a069);
   a079=(a079*a039);
@@ -10020,7 +10027,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a079=(a079+a059);
   a069=(a069*a079);
   a069=(a078+a069);
-  a047=(a047+a069);
+  a027=(a027+a069);
   a079=arg[5]? arg[5][10] : 0;
   a079=(a044*a079);
   a019=(a019*a049);
@@ -10028,7 +10035,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a019=(a019-a034);
   a079=(a079*a019);
   a079=(a007+a079);
-  a047=(a047+a079);
+  a027=(a027+a079);
   a019=arg[5]? arg[5][11] : 0;
   a019=(a044*a019);
   a020=(a020*a049);
@@ -10036,7 +10043,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a020=(a020-a018);
   a019=(a019*a020);
   a019=(a076+a019);
-  a047=(a047+a019);
+  a027=(a027+a019);
   a020=arg[5]? arg[5][12] : 0;
   a020=(a044*a020);
   a025=(a025*a049);
@@ -10044,7 +10051,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a025=(a025-a023);
   a020=(a020*a025);
   a020=(a008+a020);
-  a047=(a047+a020);
+  a027=(a027+a020);
   a025=arg[5]? arg[5][13] : 0;
   a025=(a044*a025);
   a012=(a012*a039);
@@ -10052,7 +10059,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a012=(a012-a002);
   a025=(a025*a012);
   a025=(a077+a025);
-  a047=(a047+a025);
+  a027=(a027+a025);
   a012=arg[5]? arg[5][14] : 0;
   a012=(a044*a012);
   a037=(a037*a039);
@@ -10060,7 +10067,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a037=(a037-a013);
   a012=(a012*a037);
   a012=(a028+a012);
-  a047=(a047+a012);
+  a027=(a027+a012);
   a037=arg[5]? arg[5][15] : 0;
   a037=(a044*a037);
   a009=(a009*a039);
@@ -10068,7 +10075,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a009=(a009-a080);
   a037=(a037*a009);
   a037=(a066+a037);
-  a047=(a047+a037);
+  a027=(a027+a037);
   a009=arg[5]? arg[5][16] : 0;
   a009=(a044*a009);
   a071=(a071*a039);
@@ -10076,7 +10083,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a071=(a071-a053);
   a009=(a009*a071);
   a009=(a022+a009);
-  a047=(a047+a009);
+  a027=(a027+a009);
   a071=arg[5]? arg[5][17] : 0;
   a071=(a044*a071);
   a067=(a067*a039);
@@ -10084,7 +10091,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a067=(a067-a065);
   a071=(a071*a067);
   a071=(a054+a071);
-  a047=(a047+a071);
+  a027=(a027+a071);
   a067=arg[5]? arg[5][18] : 0;
   a067=(a044*a067);
   a006=(a006*a039);
@@ -10092,7 +10099,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a006=(a006-a075);
   a067=(a067*a006);
   a067=(a055+a067);
-  a047=(a047+a067);
+  a027=(a027+a067);
   a006=arg[5]? arg[5][19] : 0;
   a006=(a044*a006);
   a031=(a031*a039);
@@ -10100,7 +10107,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a031=(a031-a033);
   a006=(a006*a031);
   a006=(a083+a006);
-  a047=(a047+a006);
+  a027=(a027+a006);
   a031=arg[5]? arg[5][20] : 0;
   a031=(a044*a031);
   a085=(a085*a039);
@@ -10108,7 +10115,7 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a085=(a085-a084);
   a031=(a031*a085);
   a031=(a086+a031);
-  a047=(a047+a031);
+  a027=(a027+a031);
   a085=arg[5]? arg[5][21] : 0;
   a044=(a044*a085);
   a088=(a088*a039);
@@ -10116,139 +10123,144 @@ static int casadi_f19(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a088=(a088-a087);
   a044=(a044*a088);
   a044=(a089+a044);
-  a047=(a047+a044);
-  a047=(a047+a021);
-  a047=(a047+a005);
-  a047=(a047+a043);
-  a047=(a047+a041);
-  a047=casadi_fabs(a047);
+  a027=(a027+a044);
+  a027=(a027+a021);
+  a027=(a027+a005);
+  a027=(a027+a043);
+  a027=(a027+a041);
+  a027=casadi_fabs(a027);
   a088=casadi_inf;
-  a047=(a047<a088);
-  a088=(a026&&a047);
+  a027=(a027<a088);
+  a088=(a026&&a027);
   a088=(a011&&a088);
   a087=(-a029);
-  a036=casadi_fmax(a036,a087);
-  a036=casadi_fmin(a036,a029);
-  a036=(a088?a036:0);
-  if (res[0]!=0) res[0][0]=a036;
-  a036=(-a082);
-  a096=casadi_fmax(a096,a036);
-  a096=casadi_fmin(a096,a082);
-  a096=(a088?a096:0);
-  if (res[0]!=0) res[0][1]=a096;
-  a096=(-a027);
-  a097=casadi_fmax(a097,a096);
-  a097=casadi_fmin(a097,a027);
+  a082=casadi_fmax(a082,a087);
+  a082=casadi_fmin(a082,a029);
+  a082=(a088?a082:0);
+  if (res[0]!=0) res[0][0]=a082;
+  a082=(-a047);
+  a097=casadi_fmax(a097,a082);
+  a097=casadi_fmin(a097,a047);
   a097=(a088?a097:0);
-  if (res[0]!=0) res[0][2]=a097;
-  a097=(a011&&a047);
-  a027=(a097?a021:0);
-  a096=(!a097);
-  a042=(a096?a042:0);
-  a027=(a027+a042);
-  if (res[1]!=0) res[1][0]=a027;
-  a027=(a097?a005:0);
-  a051=(a096?a051:0);
-  a027=(a027+a051);
-  if (res[1]!=0) res[1][1]=a027;
-  a027=(a097?a043:0);
-  a040=(a096?a040:0);
-  a027=(a027+a040);
-  if (res[1]!=0) res[1][2]=a027;
-  a097=(a097?a041:0);
-  a096=(a096?a050:0);
-  a097=(a097+a096);
-  if (res[1]!=0) res[1][3]=a097;
-  a092=(a088?a092:0);
-  a097=(!a088);
-  a032=(a097?a032:0);
-  a092=(a092+a032);
-  if (res[1]!=0) res[1][4]=a092;
+  if (res[0]!=0) res[0][1]=a097;
+  a097=(-a081);
+  a098=casadi_fmax(a098,a097);
+  a098=casadi_fmin(a098,a081);
+  a098=(a088?a098:0);
+  if (res[0]!=0) res[0][2]=a098;
+  a098=(a011&&a027);
+  a081=(a098?a021:0);
+  a097=(!a098);
+  a042=(a097?a042:0);
+  a081=(a081+a042);
+  if (res[1]!=0) res[1][0]=a081;
+  a081=(a098?a005:0);
+  a051=(a097?a051:0);
+  a081=(a081+a051);
+  if (res[1]!=0) res[1][1]=a081;
+  a081=(a098?a043:0);
+  a040=(a097?a040:0);
+  a081=(a081+a040);
+  if (res[1]!=0) res[1][2]=a081;
+  a098=(a098?a041:0);
+  a097=(a097?a050:0);
+  a098=(a098+a097);
+  if (res[1]!=0) res[1][3]=a098;
+  a098=arg[5]? arg[5][22] : 0;
+  a098=(a098!=a036);
+  a096=(a024<a096);
+  a098=(a098&&a096);
+  a098=(!a098);
+  a088=(a088&&a098);
+  a093=(a088?a093:0);
+  a098=(!a088);
+  a032=(a098?a032:0);
+  a093=(a093+a032);
+  if (res[1]!=0) res[1][4]=a093;
   a058=(a088?a058:0);
-  a062=(a097?a062:0);
+  a062=(a098?a062:0);
   a058=(a058+a062);
   if (res[1]!=0) res[1][5]=a058;
   a070=(a088?a070:0);
-  a000=(a097?a000:0);
+  a000=(a098?a000:0);
   a070=(a070+a000);
   if (res[1]!=0) res[1][6]=a070;
   a072=(a088?a072:0);
-  a038=(a097?a038:0);
+  a038=(a098?a038:0);
   a072=(a072+a038);
   if (res[1]!=0) res[1][7]=a072;
   a048=(a088?a048:0);
-  a068=(a097?a068:0);
+  a068=(a098?a068:0);
   a048=(a048+a068);
   if (res[1]!=0) res[1][8]=a048;
   a069=(a088?a069:0);
-  a078=(a097?a078:0);
+  a078=(a098?a078:0);
   a069=(a069+a078);
   if (res[1]!=0) res[1][9]=a069;
   a079=(a088?a079:0);
-  a007=(a097?a007:0);
+  a007=(a098?a007:0);
   a079=(a079+a007);
   if (res[1]!=0) res[1][10]=a079;
   a019=(a088?a019:0);
-  a076=(a097?a076:0);
+  a076=(a098?a076:0);
   a019=(a019+a076);
   if (res[1]!=0) res[1][11]=a019;
   a020=(a088?a020:0);
-  a008=(a097?a008:0);
+  a008=(a098?a008:0);
   a020=(a020+a008);
   if (res[1]!=0) res[1][12]=a020;
   a025=(a088?a025:0);
-  a077=(a097?a077:0);
+  a077=(a098?a077:0);
   a025=(a025+a077);
   if (res[1]!=0) res[1][13]=a025;
   a012=(a088?a012:0);
-  a028=(a097?a028:0);
+  a028=(a098?a028:0);
   a012=(a012+a028);
   if (res[1]!=0) res[1][14]=a012;
   a037=(a088?a037:0);
-  a066=(a097?a066:0);
+  a066=(a098?a066:0);
   a037=(a037+a066);
   if (res[1]!=0) res[1][15]=a037;
   a009=(a088?a009:0);
-  a022=(a097?a022:0);
+  a022=(a098?a022:0);
   a009=(a009+a022);
   if (res[1]!=0) res[1][16]=a009;
   a071=(a088?a071:0);
-  a054=(a097?a054:0);
+  a054=(a098?a054:0);
   a071=(a071+a054);
   if (res[1]!=0) res[1][17]=a071;
   a067=(a088?a067:0);
-  a055=(a097?a055:0);
+  a055=(a098?a055:0);
   a067=(a067+a055);
   if (res[1]!=0) res[1][18]=a067;
   a006=(a088?a006:0);
-  a083=(a097?a083:0);
+  a083=(a098?a083:0);
   a006=(a006+a083);
   if (res[1]!=0) res[1][19]=a006;
   a031=(a088?a031:0);
-  a086=(a097?a086:0);
+  a086=(a098?a086:0);
   a031=(a031+a086);
   if (res[1]!=0) res[1][20]=a031;
   a088=(a088?a044:0);
-  a097=(a097?a089:0);
-  a088=(a088+a097);
+  a098=(a098?a089:0);
+  a088=(a088+a098);
   if (res[1]!=0) res[1][21]=a088;
-  a095=(a024<a095);
-  a095=(a095?a015:0);
-  a095=(a047?a095:0);
-  a047=(!a047);
+  a096=(a096?a015:0);
+  a096=(a027?a096:0);
+  a027=(!a027);
   a015=3.;
-  a047=(a047?a015:0);
-  a095=(a095+a047);
-  a095=(a026?a095:0);
+  a027=(a027?a015:0);
+  a096=(a096+a027);
+  a096=(a026?a096:0);
   a026=(!a026);
   a026=(a026?a024:0);
-  a095=(a095+a026);
-  a095=(a011?a095:0);
+  a096=(a096+a026);
+  a096=(a011?a096:0);
   a011=(!a011);
   a026=5.;
   a011=(a011?a026:0);
-  a095=(a095+a011);
-  if (res[2]!=0) res[2][0]=a095;
+  a096=(a096+a011);
+  if (res[2]!=0) res[2][0]=a096;
   if (res[3]!=0) res[3][0]=a021;
   if (res[3]!=0) res[3][1]=a005;
   if (res[3]!=0) res[3][2]=a043;
@@ -10318,7 +10330,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_minmax_step_sparsit
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -10328,7 +10340,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_minmax_step_sparsit
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -10349,7 +10361,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_minmax_step_work_bytes(casadi_int
   return 0;
 }
 
-/* shang2010_vertical_na_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_vertical_na_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -10478,9 +10490,9 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a26=(a00+a24);
   a26=casadi_fabs(a26);
   a11=casadi_fmax(a11,a26);
-  a26=arg[5]? arg[5][35] : 0;
+  a26=arg[5]? arg[5][36] : 0;
   a11=(a11<=a26);
-  a26=arg[5]? arg[5][24] : 0;
+  a26=arg[5]? arg[5][25] : 0;
   a03=(a03/a15);
   a27=(a01*a03);
   a06=(a06/a15);
@@ -10511,7 +10523,7 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a30=(a30-a29);
   a30=(a30/a15);
   a26=(a26<=a30);
-  a29=arg[5]? arg[5][25] : 0;
+  a29=arg[5]? arg[5][26] : 0;
   a24=1.;
   a31=3.3333333333333331e-01;
   a32=casadi_sq(a03);
@@ -10574,10 +10586,10 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a43=arg[5]? arg[5][2] : 0;
   a44=arg[3]? arg[3][0] : 0;
   a45=arg[0]? arg[0][2] : 0;
-  a46=arg[5]? arg[5][23] : 0;
+  a46=arg[5]? arg[5][24] : 0;
   a47=arg[0]? arg[0][0] : 0;
   a48=(a21-a47);
-  a49=arg[5]? arg[5][22] : 0;
+  a49=arg[5]? arg[5][23] : 0;
   a48=(a48/a49);
   a48=(a48-a45);
   a48=(a46*a48);
@@ -10917,14 +10929,14 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a54=(a54-a46);
   a89=(a89*a54);
   a01=(a01+a89);
-  a89=arg[5]? arg[5][26] : 0;
-  a86=arg[5]? arg[5][27] : 0;
-  a83=arg[5]? arg[5][28] : 0;
+  a89=arg[5]? arg[5][27] : 0;
+  a86=arg[5]? arg[5][28] : 0;
+  a83=arg[5]? arg[5][29] : 0;
   arg[6]=w+0;
   arg[7]=w+6;
-  arg[8] = arg[5]? arg[5] + 26 : 0;
-  arg[9] = arg[5]? arg[5] + 29 : 0;
-  arg[10] = arg[5]? arg[5] + 32 : 0;
+  arg[8] = arg[5]? arg[5] + 27 : 0;
+  arg[9] = arg[5]? arg[5] + 30 : 0;
+  arg[10] = arg[5]? arg[5] + 33 : 0;
   res[4]=w+17;
   res[5]=w+20;
   w[0] = a29;
@@ -11128,6 +11140,13 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a34=(a34?a55:0);
   a17=(a17+a34);
   if (res[1]!=0) res[1][3]=a17;
+  a17=arg[5]? arg[5][22] : 0;
+  a34=0.;
+  a17=(a17!=a34);
+  a34=(a39==a15);
+  a17=(a17&&a34);
+  a17=(!a17);
+  a90=(a90&&a17);
   a41=(a90?a41:0);
   a17=(!a90);
   a31=(a17?a31:0);
@@ -11201,18 +11220,17 @@ static int casadi_f20(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a17=(a17?a91:0);
   a90=(a90+a17);
   if (res[1]!=0) res[1][21]=a90;
-  a90=(a39==a15);
-  a15=(a90?a15:0);
-  a90=(!a90);
+  a15=(a34?a15:0);
+  a34=(!a34);
   a39=(a39==a24);
-  a17=4.;
-  a39=(a39?a17:0);
-  a90=(a90?a39:0);
-  a15=(a15+a90);
+  a90=4.;
+  a39=(a39?a90:0);
+  a34=(a34?a39:0);
+  a15=(a15+a34);
   a15=(a40?a15:0);
   a40=(!a40);
-  a90=3.;
-  a40=(a40?a90:0);
+  a34=3.;
+  a40=(a40?a34:0);
   a15=(a15+a40);
   a15=(a26?a15:0);
   a26=(!a26);
@@ -11293,7 +11311,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_preload_step_sparsi
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -11303,7 +11321,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_preload_step_sparsi
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -11324,7 +11342,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_preload_step_work_bytes(casadi_in
   return 0;
 }
 
-/* shang2010_vertical_na_proj_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_vertical_na_proj_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -11453,9 +11471,9 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a26=(a00+a24);
   a26=casadi_fabs(a26);
   a11=casadi_fmax(a11,a26);
-  a26=arg[5]? arg[5][35] : 0;
+  a26=arg[5]? arg[5][36] : 0;
   a11=(a11<=a26);
-  a26=arg[5]? arg[5][24] : 0;
+  a26=arg[5]? arg[5][25] : 0;
   a03=(a03/a15);
   a27=(a01*a03);
   a06=(a06/a15);
@@ -11486,7 +11504,7 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a30=(a30-a29);
   a30=(a30/a15);
   a26=(a26<=a30);
-  a29=arg[5]? arg[5][25] : 0;
+  a29=arg[5]? arg[5][26] : 0;
   a24=1.;
   a31=3.3333333333333331e-01;
   a32=casadi_sq(a03);
@@ -11549,10 +11567,10 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a41=arg[5]? arg[5][2] : 0;
   a42=arg[3]? arg[3][0] : 0;
   a43=arg[0]? arg[0][2] : 0;
-  a44=arg[5]? arg[5][23] : 0;
+  a44=arg[5]? arg[5][24] : 0;
   a45=arg[0]? arg[0][0] : 0;
   a46=(a21-a45);
-  a47=arg[5]? arg[5][22] : 0;
+  a47=arg[5]? arg[5][23] : 0;
   a46=(a46/a47);
   a46=(a46-a43);
   a46=(a44*a46);
@@ -12113,19 +12131,19 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a35=(a35<a87);
   a87=(a26&&a35);
   a87=(a11&&a87);
-  a86=arg[5]? arg[5][26] : 0;
+  a86=arg[5]? arg[5][27] : 0;
   a52=(-a86);
   a52=casadi_fmax(a29,a52);
   a52=casadi_fmin(a52,a86);
   a52=(a87?a52:0);
   if (res[0]!=0) res[0][0]=a52;
-  a52=arg[5]? arg[5][27] : 0;
+  a52=arg[5]? arg[5][28] : 0;
   a42=(-a52);
   a42=casadi_fmax(a36,a42);
   a42=casadi_fmin(a42,a52);
   a42=(a87?a42:0);
   if (res[0]!=0) res[0][1]=a42;
-  a42=arg[5]? arg[5][28] : 0;
+  a42=arg[5]? arg[5][29] : 0;
   a84=(-a42);
   a84=casadi_fmax(a17,a84);
   a84=casadi_fmin(a84,a42);
@@ -12149,6 +12167,20 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a80=(a80?a53:0);
   a84=(a84+a80);
   if (res[1]!=0) res[1][3]=a84;
+  a84=arg[5]? arg[5][22] : 0;
+  a84=(a84!=a71);
+  a29=casadi_fabs(a29);
+  a29=(a29-a86);
+  a36=casadi_fabs(a36);
+  a36=(a36-a52);
+  a29=casadi_fmax(a29,a36);
+  a17=casadi_fabs(a17);
+  a17=(a17-a42);
+  a29=casadi_fmax(a29,a17);
+  a71=(a71<a29);
+  a84=(a84&&a71);
+  a84=(!a84);
+  a87=(a87&&a84);
   a38=(a87?a38:0);
   a84=(!a87);
   a31=(a84?a31:0);
@@ -12222,15 +12254,6 @@ static int casadi_f21(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a84=(a84?a88:0);
   a87=(a87+a84);
   if (res[1]!=0) res[1][21]=a87;
-  a29=casadi_fabs(a29);
-  a29=(a29-a86);
-  a36=casadi_fabs(a36);
-  a36=(a36-a52);
-  a29=casadi_fmax(a29,a36);
-  a17=casadi_fabs(a17);
-  a17=(a17-a42);
-  a29=casadi_fmax(a29,a17);
-  a71=(a71<a29);
   a71=(a71?a15:0);
   a71=(a35?a71:0);
   a35=(!a35);
@@ -12316,7 +12339,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_step_sparsity_
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -12326,7 +12349,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_step_sparsity_
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -12347,7 +12370,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_proj_step_work_bytes(casadi_int *
   return 0;
 }
 
-/* shang2010_vertical_na_proj_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_vertical_na_proj_minmax_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
@@ -12477,9 +12500,9 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a026=(a000+a024);
   a026=casadi_fabs(a026);
   a011=casadi_fmax(a011,a026);
-  a026=arg[5]? arg[5][35] : 0;
+  a026=arg[5]? arg[5][36] : 0;
   a011=(a011<=a026);
-  a026=arg[5]? arg[5][24] : 0;
+  a026=arg[5]? arg[5][25] : 0;
   a003=(a003/a015);
   a027=(a001*a003);
   a006=(a006/a015);
@@ -12510,7 +12533,7 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a030=(a030-a029);
   a030=(a030/a015);
   a026=(a026<=a030);
-  a029=arg[5]? arg[5][25] : 0;
+  a029=arg[5]? arg[5][26] : 0;
   a024=1.;
   a031=3.3333333333333331e-01;
   a032=casadi_sq(a003);
@@ -12544,7 +12567,7 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a004=sqrt(a004);
   a029=(a029<=a004);
   a026=(a026&&a029);
-  a029=arg[5]? arg[5][26] : 0;
+  a029=arg[5]? arg[5][27] : 0;
   a031=(a017*a003);
   a032=(a019*a031);
   a033=(a000*a006);
@@ -12558,10 +12581,10 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a038=arg[5]? arg[5][2] : 0;
   a039=arg[3]? arg[3][0] : 0;
   a040=arg[0]? arg[0][2] : 0;
-  a041=arg[5]? arg[5][23] : 0;
+  a041=arg[5]? arg[5][24] : 0;
   a042=arg[0]? arg[0][0] : 0;
   a043=(a021-a042);
-  a044=arg[5]? arg[5][22] : 0;
+  a044=arg[5]? arg[5][23] : 0;
   a043=(a043/a044);
   a043=(a043-a040);
   a043=(a041*a043);
@@ -12922,14 +12945,14 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a091=(a091+a082);
   a091=casadi_fabs(a091);
   a082=(a036<a091);
-  a047=arg[5]? arg[5][27] : 0;
+  a047=arg[5]? arg[5][28] : 0;
   a063=(a047*a063);
   a027=(a035*a063);
   a061=(a047*a061);
   a081=(a090*a061);
   a027=(a027-a081);
   a027=casadi_fabs(a027);
-  a081=arg[5]? arg[5][28] : 0;
+  a081=arg[5]? arg[5][29] : 0;
   a017=(a081*a017);
   a010=(a017*a063);
   a073=(a081*a073);
@@ -13299,24 +13322,24 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a027=(a027+a043);
   a027=(a027+a041);
   a027=casadi_fabs(a027);
-  a036=casadi_inf;
-  a027=(a027<a036);
-  a036=(a026&&a027);
-  a036=(a011&&a036);
-  a088=(-a029);
-  a082=casadi_fmax(a082,a088);
+  a088=casadi_inf;
+  a027=(a027<a088);
+  a088=(a026&&a027);
+  a088=(a011&&a088);
+  a087=(-a029);
+  a082=casadi_fmax(a082,a087);
   a082=casadi_fmin(a082,a029);
-  a082=(a036?a082:0);
+  a082=(a088?a082:0);
   if (res[0]!=0) res[0][0]=a082;
   a082=(-a047);
   a097=casadi_fmax(a097,a082);
   a097=casadi_fmin(a097,a047);
-  a097=(a036?a097:0);
+  a097=(a088?a097:0);
   if (res[0]!=0) res[0][1]=a097;
   a097=(-a081);
   a098=casadi_fmax(a098,a097);
   a098=casadi_fmin(a098,a081);
-  a098=(a036?a098:0);
+  a098=(a088?a098:0);
   if (res[0]!=0) res[0][2]=a098;
   a098=(a011&&a027);
   a081=(a098?a021:0);
@@ -13336,80 +13359,85 @@ static int casadi_f22(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a097=(a097?a050:0);
   a098=(a098+a097);
   if (res[1]!=0) res[1][3]=a098;
-  a093=(a036?a093:0);
-  a098=(!a036);
+  a098=arg[5]? arg[5][22] : 0;
+  a098=(a098!=a036);
+  a096=(a024<a096);
+  a098=(a098&&a096);
+  a098=(!a098);
+  a088=(a088&&a098);
+  a093=(a088?a093:0);
+  a098=(!a088);
   a032=(a098?a032:0);
   a093=(a093+a032);
   if (res[1]!=0) res[1][4]=a093;
-  a046=(a036?a046:0);
+  a046=(a088?a046:0);
   a062=(a098?a062:0);
   a046=(a046+a062);
   if (res[1]!=0) res[1][5]=a046;
-  a070=(a036?a070:0);
+  a070=(a088?a070:0);
   a000=(a098?a000:0);
   a070=(a070+a000);
   if (res[1]!=0) res[1][6]=a070;
-  a072=(a036?a072:0);
+  a072=(a088?a072:0);
   a038=(a098?a038:0);
   a072=(a072+a038);
   if (res[1]!=0) res[1][7]=a072;
-  a019=(a036?a019:0);
+  a019=(a088?a019:0);
   a068=(a098?a068:0);
   a019=(a019+a068);
   if (res[1]!=0) res[1][8]=a019;
-  a020=(a036?a020:0);
+  a020=(a088?a020:0);
   a078=(a098?a078:0);
   a020=(a020+a078);
   if (res[1]!=0) res[1][9]=a020;
-  a048=(a036?a048:0);
+  a048=(a088?a048:0);
   a007=(a098?a007:0);
   a048=(a048+a007);
   if (res[1]!=0) res[1][10]=a048;
-  a069=(a036?a069:0);
+  a069=(a088?a069:0);
   a076=(a098?a076:0);
   a069=(a069+a076);
   if (res[1]!=0) res[1][11]=a069;
-  a079=(a036?a079:0);
+  a079=(a088?a079:0);
   a008=(a098?a008:0);
   a079=(a079+a008);
   if (res[1]!=0) res[1][12]=a079;
-  a058=(a036?a058:0);
+  a058=(a088?a058:0);
   a077=(a098?a077:0);
   a058=(a058+a077);
   if (res[1]!=0) res[1][13]=a058;
-  a012=(a036?a012:0);
+  a012=(a088?a012:0);
   a028=(a098?a028:0);
   a012=(a012+a028);
   if (res[1]!=0) res[1][14]=a012;
-  a037=(a036?a037:0);
+  a037=(a088?a037:0);
   a066=(a098?a066:0);
   a037=(a037+a066);
   if (res[1]!=0) res[1][15]=a037;
-  a009=(a036?a009:0);
+  a009=(a088?a009:0);
   a022=(a098?a022:0);
   a009=(a009+a022);
   if (res[1]!=0) res[1][16]=a009;
-  a071=(a036?a071:0);
+  a071=(a088?a071:0);
   a054=(a098?a054:0);
   a071=(a071+a054);
   if (res[1]!=0) res[1][17]=a071;
-  a067=(a036?a067:0);
+  a067=(a088?a067:0);
   a055=(a098?a055:0);
   a067=(a067+a055);
   if (res[1]!=0) res[1][18]=a067;
-  a006=(a036?a006:0);
+  a006=(a088?a006:0);
   a083=(a098?a083:0);
   a006=(a006+a083);
   if (res[1]!=0) res[1][19]=a006;
-  a031=(a036?a031:0);
+  a031=(a088?a031:0);
   a086=(a098?a086:0);
   a031=(a031+a086);
   if (res[1]!=0) res[1][20]=a031;
-  a036=(a036?a044:0);
+  a088=(a088?a044:0);
   a098=(a098?a089:0);
-  a036=(a036+a098);
-  if (res[1]!=0) res[1][21]=a036;
-  a096=(a024<a096);
+  a088=(a088+a098);
+  if (res[1]!=0) res[1][21]=a088;
   a096=(a096?a015:0);
   a096=(a027?a096:0);
   a027=(!a027);
@@ -13495,7 +13523,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_minmax_step_sp
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -13505,7 +13533,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_minmax_step_sp
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -13526,7 +13554,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_proj_minmax_step_work_bytes(casad
   return 0;
 }
 
-/* shang2010_vertical_na_proj_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[36])->(tau_a[3],state_next[22],status,diag[10]) */
+/* shang2010_vertical_na_proj_preload_step:(state[22],qa[3],xd[2],xd_dot[2],xd_ddot[2],params[37])->(tau_a[3],state_next[22],status,diag[10]) */
 static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
@@ -13655,9 +13683,9 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a26=(a00+a24);
   a26=casadi_fabs(a26);
   a11=casadi_fmax(a11,a26);
-  a26=arg[5]? arg[5][35] : 0;
+  a26=arg[5]? arg[5][36] : 0;
   a11=(a11<=a26);
-  a26=arg[5]? arg[5][24] : 0;
+  a26=arg[5]? arg[5][25] : 0;
   a03=(a03/a15);
   a27=(a01*a03);
   a06=(a06/a15);
@@ -13688,7 +13716,7 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a30=(a30-a29);
   a30=(a30/a15);
   a26=(a26<=a30);
-  a29=arg[5]? arg[5][25] : 0;
+  a29=arg[5]? arg[5][26] : 0;
   a24=1.;
   a31=3.3333333333333331e-01;
   a32=casadi_sq(a03);
@@ -13751,10 +13779,10 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a43=arg[5]? arg[5][2] : 0;
   a44=arg[3]? arg[3][0] : 0;
   a45=arg[0]? arg[0][2] : 0;
-  a46=arg[5]? arg[5][23] : 0;
+  a46=arg[5]? arg[5][24] : 0;
   a47=arg[0]? arg[0][0] : 0;
   a48=(a21-a47);
-  a49=arg[5]? arg[5][22] : 0;
+  a49=arg[5]? arg[5][23] : 0;
   a48=(a48/a49);
   a48=(a48-a45);
   a48=(a46*a48);
@@ -14094,14 +14122,14 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a54=(a54-a46);
   a89=(a89*a54);
   a01=(a01+a89);
-  a89=arg[5]? arg[5][26] : 0;
-  a86=arg[5]? arg[5][27] : 0;
-  a83=arg[5]? arg[5][28] : 0;
+  a89=arg[5]? arg[5][27] : 0;
+  a86=arg[5]? arg[5][28] : 0;
+  a83=arg[5]? arg[5][29] : 0;
   arg[6]=w+0;
   arg[7]=w+6;
-  arg[8] = arg[5]? arg[5] + 26 : 0;
-  arg[9] = arg[5]? arg[5] + 29 : 0;
-  arg[10] = arg[5]? arg[5] + 32 : 0;
+  arg[8] = arg[5]? arg[5] + 27 : 0;
+  arg[9] = arg[5]? arg[5] + 30 : 0;
+  arg[10] = arg[5]? arg[5] + 33 : 0;
   res[4]=w+17;
   res[5]=w+20;
   w[0] = a29;
@@ -14297,24 +14325,24 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a40=(a40+a48);
   a40=(a40+a46);
   a40=casadi_fabs(a40);
-  a73=casadi_inf;
-  a40=(a40<a73);
-  a73=(a26&&a40);
-  a73=(a11&&a73);
-  a90=(-a89);
-  a29=casadi_fmax(a29,a90);
+  a90=casadi_inf;
+  a40=(a40<a90);
+  a90=(a26&&a40);
+  a90=(a11&&a90);
+  a38=(-a89);
+  a29=casadi_fmax(a29,a38);
   a29=casadi_fmin(a29,a89);
-  a29=(a73?a29:0);
+  a29=(a90?a29:0);
   if (res[0]!=0) res[0][0]=a29;
   a29=(-a86);
   a34=casadi_fmax(a34,a29);
   a34=casadi_fmin(a34,a86);
-  a34=(a73?a34:0);
+  a34=(a90?a34:0);
   if (res[0]!=0) res[0][1]=a34;
   a34=(-a83);
   a17=casadi_fmax(a17,a34);
   a17=casadi_fmin(a17,a83);
-  a17=(a73?a17:0);
+  a17=(a90?a17:0);
   if (res[0]!=0) res[0][2]=a17;
   a17=(a11&&a40);
   a83=(a17?a21:0);
@@ -14334,85 +14362,90 @@ static int casadi_f23(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a34=(a34?a55:0);
   a17=(a17+a34);
   if (res[1]!=0) res[1][3]=a17;
-  a41=(a73?a41:0);
-  a17=(!a73);
+  a17=arg[5]? arg[5][22] : 0;
+  a17=(a17!=a73);
+  a73=(a39==a15);
+  a17=(a17&&a73);
+  a17=(!a17);
+  a90=(a90&&a17);
+  a41=(a90?a41:0);
+  a17=(!a90);
   a31=(a17?a31:0);
   a41=(a41+a31);
   if (res[1]!=0) res[1][4]=a41;
-  a51=(a73?a51:0);
+  a51=(a90?a51:0);
   a35=(a17?a35:0);
   a51=(a51+a35);
   if (res[1]!=0) res[1][5]=a51;
-  a72=(a73?a72:0);
+  a72=(a90?a72:0);
   a37=(a17?a37:0);
   a72=(a72+a37);
   if (res[1]!=0) res[1][6]=a72;
-  a80=(a73?a80:0);
+  a80=(a90?a80:0);
   a43=(a17?a43:0);
   a80=(a80+a43);
   if (res[1]!=0) res[1][7]=a80;
-  a19=(a73?a19:0);
+  a19=(a90?a19:0);
   a70=(a17?a70:0);
   a19=(a19+a70);
   if (res[1]!=0) res[1][8]=a19;
-  a20=(a73?a20:0);
+  a20=(a90?a20:0);
   a78=(a17?a78:0);
   a20=(a20+a78);
   if (res[1]!=0) res[1][9]=a20;
-  a53=(a73?a53:0);
+  a53=(a90?a53:0);
   a07=(a17?a07:0);
   a53=(a53+a07);
   if (res[1]!=0) res[1][10]=a53;
-  a71=(a73?a71:0);
+  a71=(a90?a71:0);
   a76=(a17?a76:0);
   a71=(a71+a76);
   if (res[1]!=0) res[1][11]=a71;
-  a79=(a73?a79:0);
+  a79=(a90?a79:0);
   a08=(a17?a08:0);
   a79=(a79+a08);
   if (res[1]!=0) res[1][12]=a79;
-  a63=(a73?a63:0);
+  a63=(a90?a63:0);
   a77=(a17?a77:0);
   a63=(a63+a77);
   if (res[1]!=0) res[1][13]=a63;
-  a12=(a73?a12:0);
+  a12=(a90?a12:0);
   a28=(a17?a28:0);
   a12=(a12+a28);
   if (res[1]!=0) res[1][14]=a12;
-  a42=(a73?a42:0);
+  a42=(a90?a42:0);
   a68=(a17?a68:0);
   a42=(a42+a68);
   if (res[1]!=0) res[1][15]=a42;
-  a09=(a73?a09:0);
+  a09=(a90?a09:0);
   a22=(a17?a22:0);
   a09=(a09+a22);
   if (res[1]!=0) res[1][16]=a09;
-  a58=(a73?a58:0);
+  a58=(a90?a58:0);
   a59=(a17?a59:0);
   a58=(a58+a59);
   if (res[1]!=0) res[1][17]=a58;
-  a69=(a73?a69:0);
+  a69=(a90?a69:0);
   a60=(a17?a60:0);
   a69=(a69+a60);
   if (res[1]!=0) res[1][18]=a69;
-  a06=(a73?a06:0);
+  a06=(a90?a06:0);
   a85=(a17?a85:0);
   a06=(a06+a85);
   if (res[1]!=0) res[1][19]=a06;
-  a84=(a73?a84:0);
+  a84=(a90?a84:0);
   a88=(a17?a88:0);
   a84=(a84+a88);
   if (res[1]!=0) res[1][20]=a84;
-  a73=(a73?a49:0);
+  a90=(a90?a49:0);
   a17=(a17?a91:0);
-  a73=(a73+a17);
-  if (res[1]!=0) res[1][21]=a73;
-  a73=(a39==a15);
+  a90=(a90+a17);
+  if (res[1]!=0) res[1][21]=a90;
   a15=(a73?a15:0);
   a73=(!a73);
   a39=(a39==a24);
-  a17=4.;
-  a39=(a39?a17:0);
+  a90=4.;
+  a39=(a39?a90:0);
   a73=(a73?a39:0);
   a15=(a15+a73);
   a15=(a40?a15:0);
@@ -14499,7 +14532,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_preload_step_s
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s7;
+    case 5: return casadi_s10;
     default: return 0;
   }
 }
@@ -14509,7 +14542,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_preload_step_s
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -15371,7 +15404,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_apd_step_sparsity_out(
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -16388,7 +16421,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_apd_minmax_step_sparsi
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -17230,7 +17263,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_apd_preload_step_spars
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -18073,7 +18106,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_ctc_step_sparsity_out(
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -19071,7 +19104,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_ctc_minmax_step_sparsi
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -19894,7 +19927,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_ctc_preload_step_spars
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -20499,7 +20532,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_step_sparsity_in(c
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s11;
+    case 5: return casadi_s12;
     case 6: return casadi_s5;
     case 7: return casadi_s2;
     default: return 0;
@@ -20511,7 +20544,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_step_sparsity_out(
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -21271,7 +21304,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_minmax_step_sparsi
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s11;
+    case 5: return casadi_s12;
     case 6: return casadi_s5;
     case 7: return casadi_s2;
     default: return 0;
@@ -21283,7 +21316,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_minmax_step_sparsi
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -21869,7 +21902,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_preload_step_spars
     case 2: return casadi_s0;
     case 3: return casadi_s0;
     case 4: return casadi_s0;
-    case 5: return casadi_s11;
+    case 5: return casadi_s12;
     case 6: return casadi_s5;
     case 7: return casadi_s2;
     default: return 0;
@@ -21881,7 +21914,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_preload_step_spars
     case 0: return casadi_s2;
     case 1: return casadi_s9;
     case 2: return casadi_s8;
-    case 3: return casadi_s10;
+    case 3: return casadi_s11;
     default: return 0;
   }
 }
@@ -24635,7 +24668,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_measure_work_bytes(casadi_int *sz_ar
   return 0;
 }
 
-/* shang2010_vertical_na_closed_loop:(x[26],u[6],p[60])->(x_next[26],y[26]) */
+/* shang2010_vertical_na_closed_loop:(x[26],u[6],p[61])->(x_next[26],y[26]) */
 static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+113, *w07=w+117, *w08=w+120, *w09=w+126, *w10=w+128, *w11=w+130, *w13=w+132, *w14=w+135, w15, w16;
@@ -24649,7 +24682,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -24670,7 +24703,7 @@ static int casadi_f36(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f18(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -24748,17 +24781,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_na_closed_loop_name_out(casa
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -24779,7 +24812,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_closed_loop_work_bytes(casadi_int
   return 0;
 }
 
-/* shang2010_vertical_na_minmax_closed_loop:(x[26],u[6],p[60])->(x_next[26],y[26]) */
+/* shang2010_vertical_na_minmax_closed_loop:(x[26],u[6],p[61])->(x_next[26],y[26]) */
 static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+113, *w07=w+117, *w08=w+120, *w09=w+126, *w10=w+128, *w11=w+130, *w13=w+132, *w14=w+135, w15, w16;
@@ -24793,7 +24826,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -24814,7 +24847,7 @@ static int casadi_f37(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f19(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -24892,17 +24925,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_na_minmax_closed_loop_name_o
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -24923,7 +24956,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_minmax_closed_loop_work_bytes(cas
   return 0;
 }
 
-/* shang2010_vertical_na_preload_closed_loop:(x[26],u[6],p[60])->(x_next[26],y[26]) */
+/* shang2010_vertical_na_preload_closed_loop:(x[26],u[6],p[61])->(x_next[26],y[26]) */
 static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+265, *w07=w+269, *w08=w+272, *w09=w+278, *w10=w+280, *w11=w+282, *w13=w+284, *w14=w+287, w15, w16;
@@ -24937,7 +24970,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -24958,7 +24991,7 @@ static int casadi_f38(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f20(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -25036,17 +25069,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_na_preload_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -25067,7 +25100,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_preload_closed_loop_work_bytes(ca
   return 0;
 }
 
-/* shang2010_vertical_na_proj_closed_loop:(x[26],u[6],p[60])->(x_next[26],y[26]) */
+/* shang2010_vertical_na_proj_closed_loop:(x[26],u[6],p[61])->(x_next[26],y[26]) */
 static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+113, *w07=w+117, *w08=w+120, *w09=w+126, *w10=w+128, *w11=w+130, *w13=w+132, *w14=w+135, w15, w16;
@@ -25081,7 +25114,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -25102,7 +25135,7 @@ static int casadi_f39(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f21(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -25180,17 +25213,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_na_proj_closed_loop_name_out
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -25211,7 +25244,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_proj_closed_loop_work_bytes(casad
   return 0;
 }
 
-/* shang2010_vertical_na_proj_minmax_closed_loop:(x[26],u[6],p[60])->(x_next[26],y[26]) */
+/* shang2010_vertical_na_proj_minmax_closed_loop:(x[26],u[6],p[61])->(x_next[26],y[26]) */
 static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+113, *w07=w+117, *w08=w+120, *w09=w+126, *w10=w+128, *w11=w+130, *w13=w+132, *w14=w+135, w15, w16;
@@ -25225,7 +25258,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -25246,7 +25279,7 @@ static int casadi_f40(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f22(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -25324,17 +25357,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_na_proj_minmax_closed_loop_n
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -25355,7 +25388,7 @@ CASADI_SYMBOL_EXPORT int shang2010_vertical_na_proj_minmax_closed_loop_work_byte
   return 0;
 }
 
-/* shang2010_vertical_na_proj_preload_closed_loop:(x[26],u[6],p[60])->(x_next[26],y[26]) */
+/* shang2010_vertical_na_proj_preload_closed_loop:(x[26],u[6],p[61])->(x_next[26],y[26]) */
 static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_int i;
   casadi_real **res1=res+2, *rr, *w03=w+265, *w07=w+269, *w08=w+272, *w09=w+278, *w10=w+280, *w11=w+282, *w13=w+284, *w14=w+287, w15, w16;
@@ -25369,7 +25402,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, cs=wr02; i<2; ++i) *rr++ = *cs++;
   wr04 = wr00+4;
   wr05 = arg[2] ? arg[2] : casadi_zeros;
-  wr06 = wr05+36;
+  wr06 = wr05+37;
   arg1[0]=wr01;
   arg1[1]=wr06;
   res1[0]=w07;
@@ -25390,7 +25423,7 @@ static int casadi_f41(const casadi_real** arg, casadi_real** res, casadi_int* iw
   res1[2]=(&w15);
   res1[3]=0;
   if (casadi_f23(arg1, res1, iw, w, 0)) return 1;
-  w16 = wr05[22];
+  w16 = wr05[23];
   w17 = 3.;
   w16 /= w17;
   arg1[0]=w03;
@@ -25468,17 +25501,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_na_proj_preload_closed_loop_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s13;
+    case 2: return casadi_s14;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_na_proj_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -25612,17 +25645,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_apd_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_apd_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_apd_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -25756,17 +25789,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_apd_minmax_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_apd_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_apd_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -25900,17 +25933,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_apd_preload_closed_loop_name
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_apd_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_apd_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -26044,17 +26077,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_ctc_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_ctc_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_ctc_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -26188,17 +26221,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_ctc_minmax_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_ctc_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_ctc_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -26332,17 +26365,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_ctc_preload_closed_loop_name
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_ctc_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
+    case 0: return casadi_s13;
     case 1: return casadi_s1;
-    case 2: return casadi_s14;
+    case 2: return casadi_s15;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_ctc_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -26480,17 +26513,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_lqr_closed_loop_name_out(cas
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s15;
-    case 2: return casadi_s16;
+    case 0: return casadi_s13;
+    case 1: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -26628,17 +26661,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_lqr_minmax_closed_loop_name_
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_minmax_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s15;
-    case 2: return casadi_s16;
+    case 0: return casadi_s13;
+    case 1: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_minmax_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -26776,17 +26809,17 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_lqr_preload_closed_loop_name
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_preload_closed_loop_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s15;
-    case 2: return casadi_s16;
+    case 0: return casadi_s13;
+    case 1: return casadi_s16;
+    case 2: return casadi_s17;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_lqr_preload_closed_loop_sparsity_out(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s12;
-    case 1: return casadi_s12;
+    case 0: return casadi_s13;
+    case 1: return casadi_s13;
     default: return 0;
   }
 }
@@ -28435,8 +28468,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_path_mvc_name_out(casadi_int
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_path_mvc_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s17;
-    case 1: return casadi_s18;
+    case 0: return casadi_s18;
+    case 1: return casadi_s19;
     default: return 0;
   }
 }
@@ -33468,8 +33501,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_path_backward_name_out(casad
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_path_backward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s8;
-    case 1: return casadi_s19;
-    case 2: return casadi_s18;
+    case 1: return casadi_s20;
+    case 2: return casadi_s19;
     default: return 0;
   }
 }
@@ -34793,8 +34826,8 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_path_forward_name_out(casadi
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_path_forward_sparsity_in(casadi_int i) {
   switch (i) {
     case 0: return casadi_s8;
-    case 1: return casadi_s20;
-    case 2: return casadi_s18;
+    case 1: return casadi_s21;
+    case 2: return casadi_s19;
     default: return 0;
   }
 }
@@ -35211,10 +35244,10 @@ CASADI_SYMBOL_EXPORT const char* shang2010_vertical_path_torques_name_out(casadi
 
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_path_torques_sparsity_in(casadi_int i) {
   switch (i) {
-    case 0: return casadi_s17;
+    case 0: return casadi_s18;
     case 1: return casadi_s8;
     case 2: return casadi_s8;
-    case 3: return casadi_s18;
+    case 3: return casadi_s19;
     case 4: return casadi_s2;
     default: return 0;
   }
@@ -41043,18 +41076,18 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w50;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w49; i<12; ++i) *rr++ = *cs++;
-  casadi_densify(w50, casadi_s21, w51, 0);
+  casadi_densify(w50, casadi_s22, w51, 0);
   w02 = 6.;
   w02  = (w01/w02);
   for (rr=w52, cs=w50+0; cs!=w50+16; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
-  casadi_trans(w52,casadi_s23, w53, casadi_s22, iw);
+  casadi_trans(w52,casadi_s24, w53, casadi_s23, iw);
   casadi_clear(w54, 14);
   for (i=0, rr=w00, cs=w09; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   for (i=0, rr=w09, cs=w10; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
   rr=w52;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w09; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w52, 2, w50, casadi_s21, w54);
+  casadi_mtimes_dense_sparse(w52, 2, w50, casadi_s22, w54);
   casadi_clear(w52, 8);
   for (i=0, rr=w55, cs=w11; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
   rr=w56;
@@ -41065,15 +41098,15 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w57;
   for (i=0, cs=w53; i<8; ++i) *rr++ = *cs++;
   for (i=0, cs=w56; i<14; ++i) *rr++ = *cs++;
-  casadi_trans(w57,casadi_s25, w58, casadi_s24, iw);
-  casadi_densify(w58, casadi_s24, w59, 0);
-  casadi_project(w50, casadi_s21, w60, casadi_s26, w);
+  casadi_trans(w57,casadi_s26, w58, casadi_s25, iw);
+  casadi_densify(w58, casadi_s25, w59, 0);
+  casadi_project(w50, casadi_s22, w60, casadi_s27, w);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w58, cs=w58; i<22; ++i) (*rr++)  = (w14*(*cs++));
-  casadi_project(w58, casadi_s24, w61, casadi_s26, w);
+  casadi_project(w58, casadi_s25, w61, casadi_s27, w);
   for (i=0, rr=w60, cs=w61; i<24; ++i) (*rr++) += (*cs++);
-  for (cii=casadi_s27, rr=w56, cs=w60; cii!=casadi_s27+14; ++cii) *rr++ = cs[*cii];
+  for (cii=casadi_s28, rr=w56, cs=w60; cii!=casadi_s28+14; ++cii) *rr++ = cs[*cii];
   for (i=0, rr=w54, cs=w56; i<7; ++i) for (j=0; j<2; ++j) rr[i+j*7] = *cs++;
   casadi_clear(w56, 14);
   for (i=0, rr=w00, cs=w15; i<2; ++i) for (j=0; j<2; ++j) rr[i+j*2] = *cs++;
@@ -41081,7 +41114,7 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   rr=w53;
   for (i=0, cs=w00; i<4; ++i) *rr++ = *cs++;
   for (i=0, cs=w15; i<4; ++i) *rr++ = *cs++;
-  casadi_mtimes_dense_sparse(w53, 2, w60, casadi_s26, w56);
+  casadi_mtimes_dense_sparse(w53, 2, w60, casadi_s27, w56);
   casadi_clear(w53, 8);
   for (i=0, rr=w55, cs=w17; i<2; ++i) for (j=0; j<3; ++j) rr[i+j*2] = *cs++;
   rr=w62;
@@ -41095,7 +41128,7 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s21, w63, 0);
+  casadi_densify(w50, casadi_s22, w63, 0);
   w14 = 2.;
   w14  = (w01/w14);
   for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w14*(*cs++));
@@ -41122,7 +41155,7 @@ static int casadi_f72(const casadi_real** arg, casadi_real** res, casadi_int* iw
   for (i=0, rr=w64, cs=w63; i<4; ++i) for (j=0; j<7; ++j) rr[i+j*4] = *cs++;
   for (i=0, rr=w63, cs=w64; i<28; ++i) *rr++ = (2.* *cs++ );
   for (i=0, rr=w59, cs=w63; i<28; ++i) (*rr++) += (*cs++);
-  casadi_densify(w50, casadi_s21, w63, 0);
+  casadi_densify(w50, casadi_s22, w63, 0);
   for (i=0, rr=w64, cs=w64; i<28; ++i) (*rr++)  = (w01*(*cs++));
   for (i=0, rr=w63, cs=w64; i<28; ++i) (*rr++) += (*cs++);
   for (rr=w62, cs=w63+0; cs!=w63+28; cs+=4) for (ct=cs+2; ct!=cs+4; ct+=1) *rr++ = *ct;
@@ -41416,7 +41449,7 @@ CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_sampled_step_jacobians
 CASADI_SYMBOL_EXPORT const casadi_int* shang2010_vertical_sampled_step_jacobians_sparsity_out(casadi_int i) {
   switch (i) {
     case 0: return casadi_s3;
-    case 1: return casadi_s28;
+    case 1: return casadi_s29;
     case 2: return casadi_s5;
     case 3: return casadi_s0;
     default: return 0;

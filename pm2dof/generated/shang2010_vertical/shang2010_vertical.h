@@ -31,12 +31,12 @@
  *   shang2010_vertical_Y(q[6], xed[2], xrd[2], xrdd[2]) -> (Y[36], sing[2])
  *   shang2010_vertical_torque_splits(q[6], u[2], tau_max[3], preload_sign[3], preload[3]) -> (tau_min_norm[3], tau_min_max[3], min_max_ratio[1], tau_preload[3], preload_mode[1], sing[2])
  *   shang2010_vertical_forward_dynamics(xe[2], xed[2], tau_a[3], theta[18]) -> (xedd[2], sing[2])
- *   shang2010_vertical_na_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[36]) -> (tau_a[3], state_next[22], status[1], diag[10])
- *   shang2010_vertical_na_minmax_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[36]) -> (tau_a[3], state_next[22], status[1], diag[10])
- *   shang2010_vertical_na_preload_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[36]) -> (tau_a[3], state_next[22], status[1], diag[10])
- *   shang2010_vertical_na_proj_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[36]) -> (tau_a[3], state_next[22], status[1], diag[10])
- *   shang2010_vertical_na_proj_minmax_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[36]) -> (tau_a[3], state_next[22], status[1], diag[10])
- *   shang2010_vertical_na_proj_preload_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[36]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_vertical_na_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[37]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_vertical_na_minmax_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[37]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_vertical_na_preload_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[37]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_vertical_na_proj_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[37]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_vertical_na_proj_minmax_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[37]) -> (tau_a[3], state_next[22], status[1], diag[10])
+ *   shang2010_vertical_na_proj_preload_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[37]) -> (tau_a[3], state_next[22], status[1], diag[10])
  *   shang2010_vertical_apd_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[22], status[1], diag[10])
  *   shang2010_vertical_apd_minmax_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[22], status[1], diag[10])
  *   shang2010_vertical_apd_preload_step(state[22], qa[3], xd[2], xd_dot[2], xd_ddot[2], params[18]) -> (tau_a[3], state_next[22], status[1], diag[10])
@@ -49,12 +49,12 @@
  *   shang2010_vertical_plant_xedd(xe[2], xed[2], tau_a[3], plant[24]) -> (xedd[2])
  *   shang2010_vertical_plant_step(x[4], tau_a[3], plant[24], h[1]) -> (x_next[4])
  *   shang2010_vertical_measure(xe[2], plant[24]) -> (qa[3])
- *   shang2010_vertical_na_closed_loop(x[26], u[6], p[60]) -> (x_next[26], y[26])
- *   shang2010_vertical_na_minmax_closed_loop(x[26], u[6], p[60]) -> (x_next[26], y[26])
- *   shang2010_vertical_na_preload_closed_loop(x[26], u[6], p[60]) -> (x_next[26], y[26])
- *   shang2010_vertical_na_proj_closed_loop(x[26], u[6], p[60]) -> (x_next[26], y[26])
- *   shang2010_vertical_na_proj_minmax_closed_loop(x[26], u[6], p[60]) -> (x_next[26], y[26])
- *   shang2010_vertical_na_proj_preload_closed_loop(x[26], u[6], p[60]) -> (x_next[26], y[26])
+ *   shang2010_vertical_na_closed_loop(x[26], u[6], p[61]) -> (x_next[26], y[26])
+ *   shang2010_vertical_na_minmax_closed_loop(x[26], u[6], p[61]) -> (x_next[26], y[26])
+ *   shang2010_vertical_na_preload_closed_loop(x[26], u[6], p[61]) -> (x_next[26], y[26])
+ *   shang2010_vertical_na_proj_closed_loop(x[26], u[6], p[61]) -> (x_next[26], y[26])
+ *   shang2010_vertical_na_proj_minmax_closed_loop(x[26], u[6], p[61]) -> (x_next[26], y[26])
+ *   shang2010_vertical_na_proj_preload_closed_loop(x[26], u[6], p[61]) -> (x_next[26], y[26])
  *   shang2010_vertical_apd_closed_loop(x[26], u[6], p[42]) -> (x_next[26], y[26])
  *   shang2010_vertical_apd_minmax_closed_loop(x[26], u[6], p[42]) -> (x_next[26], y[26])
  *   shang2010_vertical_apd_preload_closed_loop(x[26], u[6], p[42]) -> (x_next[26], y[26])
@@ -80,7 +80,7 @@
  *
  * Flat vectors of the controllers, plant and closed loop (field[count], in order):
  *   ctrl_state: xe_prev[2], v[2], theta_hat[18]
- *   na_params: Kd[2], Q[2], Gamma[18], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
+ *   na_params: Kd[2], Q[2], Gamma[18], freeze_saturated[1], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   apd_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   ctc_params: Kp[2], Kv[2], T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
  *   lqr_params: T[1], vel_alpha[1], sing_threshold[1], parallel_sing_threshold[1], tau_max[3], preload_sign[3], preload[3], closure_tol[1]
