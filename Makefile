@@ -24,7 +24,7 @@ help:
 	@echo "make docs     build the documentation site into site/ (mkdocs build --strict)"
 	@echo "make bench    controller step-time benchmark"
 	@echo "make c-example  standalone C: NA against the compiled plant, paced at 2 ms"
-	@echo "make embedded   pm2dof export cross-compiled for Cortex-M4F and M7, run under QEMU"
+	@echo "make embedded   pm2dof export of $(MODEL) cross-compiled for Cortex-M4F and M7, run under QEMU (MODEL=name or path)"
 	@echo "make install  only create .venv, install pm2dof (editable) and compile the generated C"
 
 $(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
@@ -105,8 +105,9 @@ bench: install
 c-example: install
 	$(MAKE) -C examples/c run
 
-# pm2dof export's project cross-compiled for a Cortex-M4F and a Cortex-M7 (single and double),
-# run under QEMU against the host build (docs/deploying.md). The Debian packages are installed
+# pm2dof export's project of $(MODEL) (any model: MODEL=rrr4_platform, or a model file whose
+# code is derived) cross-compiled for a Cortex-M4F and a Cortex-M7 (single and double), run
+# under QEMU against the host build (docs/deploying.md). The Debian packages are installed
 # when missing and this user may (root, or password-less sudo); otherwise it says what to install.
 EMBEDDED_PKGS := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
 EMBEDDED_OUT  ?= build/embedded
@@ -123,7 +124,8 @@ embedded: install
 	    "install them (Debian/Ubuntu: sudo apt-get install $(EMBEDDED_PKGS))"; exit 1; }; \
 	fi
 	@mkdir -p $(EMBEDDED_OUT)
-	$(PY) -m pm2dof.export.embedded --out $(EMBEDDED_OUT) --json $(EMBEDDED_OUT)/results.json
+	$(PY) -m pm2dof.export.embedded --model $(MODEL) --out $(EMBEDDED_OUT) \
+	  --json $(EMBEDDED_OUT)/results.json
 
 clean:
 	rm -rf $(VENV) $(BUILD_VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT) site

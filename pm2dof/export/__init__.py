@@ -3,6 +3,9 @@
 
 * :mod:`.project` -- :func:`export_project`: the project (generated C copied, API, CMake,
   example, ctest, ``embedded/``);
+* :mod:`.prune` -- the generated C pruned to what the API calls, every function static;
+* :mod:`.names` -- the library's link names, distinct in their first 31 characters;
+* :mod:`.stack` -- each function's worst-case stack from GCC's call graph;
 * :mod:`.checks` -- the API's parameter checks and status strings, written from
   :mod:`pm2dof.control.rules` and :class:`pm2dof.Status`;
 * :mod:`.single` -- the generated C rewritten for ``float``, and where float is refused;

@@ -22,7 +22,7 @@ from ..core.model import load_model
 from ..core.status import Status
 from ..core.task import mechanism
 from ..core.version import __version__
-from . import checks, reference, single
+from . import checks, names, prune, reference, single, stack
 from .units import export_units
 
 __all__ = ["export_project", "LAWS", "PRECISIONS", "ExportError"]
@@ -160,6 +160,67 @@ def _work_sizes(c_text, name, functions):
     return out
 
 
+def _generated_calls(api_c, c_text, name):
+    """The generated functions (without the ``<name>_`` prefix) that the API source ``api_c``
+    names (calls, or takes the address of), in the order of their first mention: those of its
+    ``<name>_<f>`` words that are public functions of the generated C."""
+    public = set(re.findall(rf"^CASADI_SYMBOL_EXPORT int {name}_(\w+)\(const casadi_real\*\* arg",
+                            c_text, re.M))
+    calls = re.findall(rf"\b{name}_(\w+)\b", api_c)
+    return list(dict.fromkeys(f for f in calls if f in public))
+
+
+def _generated_inc(text, name, entries):
+    """The pruned generated code as the file the API's source includes."""
+    return (f"/* {name}_generated.inc: the code `pm2dof derive` generated for {name} (CasADi), "
+            f"pruned to the\n * functions {name}_pm2dof.c calls ({', '.join(entries)}) and "
+            f"what they call, all static.\n * Included by {name}_pm2dof.c, not compiled on its "
+            f"own. */\n"
+            "#if defined(__GNUC__)  /* CasADi's functions keep arguments they do not use */\n"
+            "#pragma GCC diagnostic push\n"
+            "#pragma GCC diagnostic ignored \"-Wunused-parameter\"\n#endif\n"
+            + text + "#if defined(__GNUC__)\n#pragma GCC diagnostic pop\n#endif\n")
+
+
+def _needs_doc(functions, precision):
+    """The header's sentence on what the library calls: ``functions``, those of <math.h> that
+    the code calls (:func:`.prune.math_calls`), and what a compiler may add."""
+    sincos = "sincosf" if precision == "single" else "sincos"
+    text = (f"a C99 compiler and these functions of the C library: {', '.join(functions)} from "
+            f"<math.h> (and its macro isfinite), which the code calls; a compiler may add "
+            f"memset, memcpy and memmove (for loops that clear or copy arrays) and GCC "
+            f"{sincos} (the sine and cosine of one angle, in glibc and newlib).")
+    return _wrap_comment(text, first=len(" * What it needs: "))
+
+
+def _wrap_comment(text, first, width=92):
+    """``text`` wrapped into C comment lines (`` * ``), the first line ``first`` characters
+    in."""
+    lines, line, used = [], "", first
+    for word in text.split():
+        if line and used + len(line) + 1 + len(word) > width:
+            lines.append(line)
+            line, used = word, 3
+        else:
+            line = f"{line} {word}" if line else word
+    lines.append(line)
+    return "\n * ".join(lines)
+
+
+def _link_doc(name, link):
+    """The header's sentence on the library's external names (:mod:`.names`)."""
+    if not link:
+        return _wrap_comment(f"every external name is one of the functions below, starts with "
+                             f"{name}_pm2dof_ and is distinct from the others in its first "
+                             f"{names.SIGNIFICANT} characters (C99, MISRA C:2012 rule 5.1).",
+                             first=len(" * libraries link into one program: "))
+    return _wrap_comment(f"every external name is one of the functions below, linked under a "
+                         f"short name that starts with {names.link_prefix(name)} (the list after the include "
+                         f"guard), distinct from the others in its first {names.SIGNIFICANT} "
+                         f"characters (C99, MISRA C:2012 rule 5.1).",
+                         first=len(" * libraries link into one program: "))
+
+
 def _layout_defines(prefix, tag, layout, docs, law=None, defaults=None):
     fields, law_fields = docs
     lines = []
@@ -192,7 +253,7 @@ def _law_params(model):
 
 
 def export_project(model=None, out=None, *, precision="double", controllers=LAWS, force=False,
-                   generated=None, move=None):
+                   generated=None, move=None, measure_stack=True, progress=None):
     """Write the C project of ``model``'s controllers into the folder ``out``.
 
     Parameters
@@ -212,6 +273,12 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     move : str, optional
         The model file's move that the example and the test run (default "high", else the
         file's first line move).
+    measure_stack : bool
+        Measure each function's worst-case stack for a Cortex-M4F when ``arm-none-eabi-gcc``
+        is on the PATH (:mod:`pm2dof.export.stack`) and write it into the README (default);
+        False: the README says how to measure it.
+    progress : callable, optional
+        Called with a line before the stack is measured (a compile of about 5-40 s).
 
     Returns
     -------
@@ -234,7 +301,7 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
         raise ArgumentError("export_project: give the output folder (out=...)")
     m = load_model(model, generated)
     move_name = reference.reference_move(m, move)[0]     # an unknown move: refused here
-    c_text, h_text = _generated_sources(m)
+    c_text, _ = _generated_sources(m)
     name, n, p, dim = m.name, m.n_legs, len(m.param_names), m.dof
     units = export_units(m)
     docs = _field_docs(units)
@@ -249,8 +316,6 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     sfx = SPLITS[split]
     gen = {law: f"{law}{sfx}_step" for law in laws}
     proj = [f"na_proj{sfx}_step"] if "na" in laws else []    # NA's projected law (an option)
-    sizes = _work_sizes(c_text, name, [*gen.values(), *proj, "fk", "ik", "torque_splits",
-                                       "plant_step", "measure"])
     lays = {k: Layout(k, v) for k, v in m.manifest["layouts"].items()}
     defaults = _law_params(m)
     real, fsuffix = ("float", "f") if precision == "single" else ("double", "")
@@ -258,14 +323,11 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     common = {"NAME": name, "UNAME": name.upper(), "VERSION": __version__,
               "CMAKE_VERSION": ".".join(re.findall(r"\d+", __version__)[:3]) or "0",
               "PRECISION": precision, "REAL": real, "SINGLE": int(precision == "single"),
+              "FABS": "fabs" + fsuffix,      # the real type's: fabsf(float) is float
               "MODEL_FILE": Path(m.spec.path).name, "FORMULATION": m.spec.formulation_sha256[:12],
               "FORMULATION_SHA256": m.spec.formulation_sha256,
               "N": n, "NQ": 2 * n, "TASK_DIM": dim, "P": p,
               "STATE_SIZE": lays["ctrl_state"].size, "DIAG_SIZE": sum(k for _, k in diag),
-              "ARG_SIZE": max(s[0] for s in sizes.values()),
-              "RES_SIZE": max(s[1] for s in sizes.values()),
-              "IWORK_SIZE": max(s[2] for s in sizes.values()),
-              "WORK_SIZE": max(s[3] for s in sizes.values()),
               "SAMPLE_PERIOD": repr(m.spec.sensing["sample_period"]),
               "CLOSURE_TOL": repr(m.closure_tolerance),
               "SING_THRESHOLD": repr(m.singularity_threshold) + fsuffix,
@@ -330,18 +392,33 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
                                "1e-10, below float's\n * resolution." if precision == "single"
                                else ""))
     files = {}
-    files[f"include/{name}_pm2dof.h"] = _render(_template("include/api.h.in"), values)
-    files[f"src/{name}_pm2dof.c"] = _render(_template("src/api.c.in"), values)
+    # the API's source first: the generated functions it calls are the entry points of the
+    # pruned generated code, and their work sizes those of the header
+    api_c = _render(_template("src/api.c.in"), values)
+    entries = _generated_calls(api_c, c_text, name)
+    sizes = _work_sizes(c_text, name, entries)
+    generated = prune.prune(c_text, name, entries)
     if precision == "single":
-        files[f"src/{name}.c"] = single.to_single(c_text)
-        files[f"src/{name}.h"] = single.to_single(h_text)
-        # the simulated robot of the example and the test stays double: a renamed copy
-        files[f"sim/{name}_sim.c"] = re.sub(rf"\b{name}_", f"{name}_sim_", c_text)
-        sim_prefix, sim_sources = f"{name}_sim_", f"sim/{name}_sim.c"
-    else:
-        files[f"src/{name}.c"], files[f"src/{name}.h"] = c_text, h_text
-        sim_prefix, sim_sources = f"{name}_", ""
-    sim = [sizes["measure"], sizes["plant_step"]]
+        generated = single.to_single(generated)
+    values.update(ARG_SIZE=max(s[0] for s in sizes.values()),
+                  RES_SIZE=max(s[1] for s in sizes.values()),
+                  IWORK_SIZE=max(s[2] for s in sizes.values()),
+                  WORK_SIZE=max(s[3] for s in sizes.values()),
+                  NEEDS_DOC=_needs_doc(prune.math_calls(generated, api_c), precision))
+    header = _render(_template("include/api.h.in"), values)
+    link = names.link_names(header, name)
+    header = names.with_link_names(_render(header, {"LINK_DOC": _link_doc(name, link)}),
+                                   f"{uname}_H", link)
+    files[f"include/{name}_pm2dof.h"] = header
+    files[f"src/{name}_pm2dof.c"] = api_c
+    files[f"src/{name}_generated.inc"] = _generated_inc(generated, name, entries)
+    # the simulated robot of the example and the test: the generated plant and encoders in
+    # double precision, outside the library (its two entry points renamed <name>_sim_)
+    sim_prefix, sim_sources = f"{name}_sim_", f"sim/{name}_sim.c"
+    sim_entries = ("measure", "plant_step")
+    files[sim_sources] = re.sub(rf"\b{name}_", sim_prefix,
+                                prune.prune(c_text, name, sim_entries, external=True))
+    sim = list(_work_sizes(c_text, name, sim_entries).values())
     files[f"tests/{name}_sim.h"] = (
         f"/* The simulated robot, double precision: the generated plant and encoders. */\n"
         f"#ifndef {name.upper()}_SIM_H\n#define {name.upper()}_SIM_H\n"
@@ -375,27 +452,46 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
                + f"#define N_LAWS {len(ctls)}\n")
     files["examples/closed_loop.c"] = _render(_template("examples/closed_loop.c.in"),
                                               dict(values, LAW_OPS="".join(ops)))
-    check_work = "".join(f'    check_work("{name}_{gen[law]}_work", {name}_{gen[law]}_work);\n'
-                         for law in laws if law != "lqr")
-    files[f"tests/test_{name}.c"] = _render(
-        _template("tests/test.c.in"),
-        dict(values, CHECK_WORK=check_work, GEN_LQR=f"{name}_{gen.get('lqr', 'lqr_step')}"))
+    files[f"tests/test_{name}.c"] = _render(_template("tests/test.c.in"), values)
     files["CMakeLists.txt"] = _render(_template("CMakeLists.txt.in"),
                                       dict(values, SIM_SOURCES=sim_sources))
     files[f"cmake/{name}_pm2dofConfig.cmake.in"] = _render(_template("cmake/Config.cmake.in"),
                                                            values)
     for rel in ("embedded/Makefile", "embedded/startup.c", "embedded/mps2.ld",
-                "embedded/replay.c", "README.md"):
-        files[rel] = _render(_template(rel + (".in" if rel.endswith((".md", "replay.c"))
-                                              else "")), dict(values, LAW_OPS="".join(ops)))
+                "embedded/replay.c", "embedded/stack.awk"):
+        files[rel] = _render(_template(rel + (".in" if rel.endswith("replay.c") else "")),
+                             dict(values, LAW_OPS="".join(ops)))
     files["manifest.json"] = json.dumps(_thaw(m.manifest), indent=1, sort_keys=True) + "\n"
+    pruned = {"functions": prune.function_count(generated),
+              "lines": generated.count("\n"),
+              "of_functions": prune.function_count(c_text), "of_lines": c_text.count("\n")}
+    files["README.md"] = ""                 # written below, after the stack is measured
     # the model file's name only: not the exporting machine's folders
     record = {"pm2dof": __version__, "model": name, "model_file": Path(m.spec.path).name,
               "formulation_sha256": m.spec.formulation_sha256, "precision": precision,
               "controllers": list(laws), "split": split, "move": ref["move"],
               "reference_rmse": dict(zip(ref["laws"], ref["rmse"])),
+              "generated_entries": entries, "generated_pruned": pruned,
               "files": sorted([*files, RECORD])}
-    files[RECORD] = json.dumps(record, indent=1) + "\n"
+    _write(out, files)
+    api = names.api_functions(header, name)
+    measured = (stack.measure(out / "src" / f"{name}_pm2dof.c", out / "include",
+                              [link.get(f, f) for f in api], progress=progress)
+                if measure_stack else None)
+    if measured is not None:
+        record["stack"] = {"target": measured.target, "compiler": measured.compiler,
+                           "flags": list(measured.flags),
+                           "bytes": {f: measured.stacks[link.get(f, f)].bytes for f in api
+                                     if link.get(f, f) in measured.stacks}}
+    readme = _render(_template("README.md.in"), dict(
+        values, GENERATED_STATS=(f"{pruned['functions']} of {pruned['of_functions']} functions, "
+                                 f"{pruned['lines']:,} of {pruned['of_lines']:,} lines"),
+        STACK_DOC=_stack_doc(name, api, link, measured, precision)))
+    _write(out, {"README.md": readme, RECORD: json.dumps(record, indent=1) + "\n"})
+    return out
+
+
+def _write(out, files):
     try:
         for rel, text in files.items():
             path = out / rel
@@ -403,7 +499,35 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
             path.write_text(text)
     except OSError as exc:
         raise OutputError(f"cannot write into {out}: {exc.strerror or exc}") from None
-    return out
+
+
+def _stack_doc(name, api, link, measured, precision):
+    """The README's section on the stack: the figures measured at export (:mod:`.stack`), or
+    how to measure them."""
+    how = (f"To measure on your target and with your flags: compile `src/{name}_pm2dof.c` with "
+           f"GCC 10 or later and `-fcallgraph-info=su`, then `awk -f embedded/stack.awk "
+           f"{name}_pm2dof.ci` prints each function's worst-case stack in bytes; `make -C "
+           f"embedded stack` does this for the Cortex-M4F and the Cortex-M7 of `embedded/`.")
+    if measured is None:
+        return ("Not measured at export: `arm-none-eabi-gcc` was not on the exporting "
+                "machine's PATH (or `--no-stack` was given). " + how)
+    rows = []
+    for f in api:
+        s = measured.stacks.get(link.get(f, f))
+        if s is None or not re.search(r"_(step|reset|fk|ik|torque_splits)$", f):
+            continue
+        ext = [e for e in s.external if not e.startswith("__aeabi_")]
+        rows.append(f"| `{f}` | {s.bytes:,}{'' if s.bounded else ' (lower bound)'} | "
+                    f"{' > '.join(c.split('.')[0] for c in s.chain)} | "
+                    f"{', '.join(ext) or '-'} |")
+    return (f"The worst-case stack of each call, measured at export: {precision} precision, "
+            f"{measured.target}, `{measured.compiler}` with `{' '.join(measured.flags)}` and "
+            f"`-fcallgraph-info=su`. Each figure is the deepest chain of frames through the "
+            f"call graph (the step calls the generated step directly, so the chain is whole). "
+            f"The math library's, libgcc's and `memset`'s own frames are not in the graph and "
+            f"not counted; `make -C embedded run` paints the stack and measures them too.\n\n"
+            f"| function | bytes | chain | not counted (C library) |\n|---|---|---|---|\n"
+            + "\n".join(rows) + "\n\n" + how)
 
 
 def _law_options(law, name, gen, proj, uname):
@@ -411,7 +535,9 @@ def _law_options(law, name, gen, proj, uname):
     step, chosen by the params struct's ``project``), its freeze and how to pause it."""
     if law != "na":
         return {"LAW_NOTES": "", "PARAMS_EXTRA": "", "DEFAULTS_EXTRA": "",
-                "SET_PARAMS_NOTE": "", "STEP_FN": f"{name}_{gen[law]}"}
+                "SET_PARAMS_NOTE": "", "STEP_HELPERS": "",
+                "STEP_CALL": f"    s = {name}_{gen[law]}(arg, res, ctl->core.work.iw, "
+                             f"ctl->core.work.w, 0);"}
     return {
         "LAW_NOTES": (
             "\n * Options (off by default: the paper's law):\n"
@@ -429,7 +555,29 @@ def _law_options(law, name, gen, proj, uname):
                          "theta_hat (see above) */"),
         "DEFAULTS_EXTRA": "\n    params->project = 0;",
         "SET_PARAMS_NOTE": "\n * NA: Gamma zero pauses adaptation; the former Gamma resumes it.",
-        "STEP_FN": f"(ctl->params.project ? {name}_{proj[0]} : {name}_{gen[law]})"}
+        # two direct calls (not a pointer: the call graph, and so the stack figures, see
+        # both, and the pruning keeps both since the API's source names both)
+        "STEP_HELPERS": _na_helpers(name, gen["na"], proj[0]),
+        "STEP_CALL": ("    if (ctl->params.project)     /* the projected law */\n"
+                      "        s = na_projected_step(arg, res, &ctl->core.work);\n    else\n"
+                      "        s = na_paper_step(arg, res, &ctl->core.work);")}
+
+
+def _na_helpers(name, step, proj):
+    """NA's two generated steps (the paper's law ``step``, the projected ``proj``), each in a
+    function of its own that the compiler keeps as a call. Inlined into NA's step, the body of
+    one stayed in the step's frame while the other ran: GCC -O2 for a Cortex-M4F in double
+    inlined the paper's law of rrr4_platform and called the projected one, 2,640 B of stack
+    against 1,400 B as two calls."""
+    def one(helper, fn, what):
+        return (f"static NOINLINE int {helper}(const casadi_real **arg, casadi_real **res,\n"
+                f"{' ' * (len(helper) + 21)}{name}_pm2dof_work *work)\n"
+                f"{{\n    return {name}_{fn}(arg, res, work->iw, work->w, 0);  /* {what} */\n"
+                f"}}\n\n")
+    return ("/* NA's two generated steps, each kept as a call: inlined into the step, one's frame "
+            "would stay\n * on the stack while the other runs */\n"
+            + one("na_paper_step", step, "the paper's law")
+            + one("na_projected_step", proj, "the projected law"))
 
 
 def _thaw(obj):

@@ -1,7 +1,7 @@
 # `pm2dof export MODEL --out DIR`: the controllers as a standalone C99 library.
 import argparse
 
-from ..options import wrap
+from ..options import progress, wrap
 
 
 def add_parser(sub, common):
@@ -10,8 +10,8 @@ def add_parser(sub, common):
         formatter_class=argparse.RawDescriptionHelpFormatter,
         description=wrap(
             "Write a self-contained C99 project for MODEL's controllers into --out: its "
-            "generated C (copied, not re-derived), the API header include/<name>_pm2dof.h (fixed-"
-            "size structs; init, reset and one step per controller taking the encoder angles and "
+            "generated C (copied, not re-derived; pruned to what the API calls), the API header "
+            "include/<name>_pm2dof.h (fixed-size structs; init, reset and one step per controller taking the encoder angles and "
             "the reference and returning the torques and a status, the codes of pm2dof.Status; "
             "fk, ik, the torque splits; the parameters' layout with the model file's values as "
             "defaults), a CMakeLists.txt building a static library with a package config "
@@ -40,6 +40,9 @@ def add_parser(sub, common):
                    "previous export's files are replaced)")
     p.add_argument("--move", metavar="NAME", help="the model file's move the example and the "
                    "ctest run (default high)")
+    p.add_argument("--no-stack", action="store_true", help="do not measure each function's "
+                   "worst-case stack (by default measured for a Cortex-M4F when "
+                   "arm-none-eabi-gcc is on the PATH, and written into the README)")
     return p
 
 
@@ -51,7 +54,8 @@ def run(args):
                             f"{args.model!r}, not both")
     out = export_project(args.path or args.model, args.out, precision=args.precision,
                          controllers=args.controllers, force=args.force,
-                         generated=args.generated, move=args.move)
+                         generated=args.generated, move=args.move,
+                         measure_stack=not args.no_stack, progress=progress(args))
     print(f"wrote {out}: build and test it with\n  cmake -S {out} -B {out}/build && cmake "
           f"--build {out}/build && ctest --test-dir {out}/build\n(docs/deploying.md: the API, "
           f"a 2 ms interrupt, make -C {out}/embedded run for a Cortex-M under QEMU)")
