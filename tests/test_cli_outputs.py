@@ -165,8 +165,9 @@ def test_installed_package_outputs_omit_git_commit(monkeypatch):
 
 
 def test_plan_csv_writes_shortest_decimals_and_json_names_the_unit(tmp_path):
+    from pm2dof.planning.jobs import plan_paths
     from pm2dof.planning.pathfile import NamedPath
-    from pm2dof.planning.report import csv_text, plan_paths
+    from pm2dof.planning.report import csv_text
     m = pm2dof.load_model()
     path = pm2dof.TaskPath.line([0.22, 0.29], [0.27, 0.24])
     plan = pm2dof.plan_time_optimal(m, path, grid=100)

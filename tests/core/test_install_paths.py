@@ -38,14 +38,10 @@ def _derive(*args, build=False):
     times, ~1.3 s each; the rest of ``pm2dof derive`` (checks, CasADi, C, manifest) runs every
     time."""
     from pm2dof import cli
-    from pm2dof.infra import results
-    out, command_line = io.StringIO(), results.COMMAND_LINE
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out), \
-                derivations.shared_in_derive():
-            rc = cli.main(["derive", *map(str, args), *([] if build else ["--no-build"])])
-    finally:
-        results.COMMAND_LINE = command_line          # main() records the command line it ran
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out), \
+            derivations.shared_in_derive():
+        rc = cli.main(["derive", *map(str, args), *([] if build else ["--no-build"])])
     return rc, out.getvalue()
 
 

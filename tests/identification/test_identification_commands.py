@@ -176,7 +176,8 @@ def test_importing_identification_loads_no_heavy_library():
             "import pm2dof.identification.base, pm2dof.identification.log, "
             "pm2dof.identification.excitation, pm2dof.identification.fit, "
             "pm2dof.identification.consistent, pm2dof.identification.design, "
-            "pm2dof.identification.report, pm2dof.identification.monte_carlo, "
+            "pm2dof.identification.report, pm2dof.identification.jobs, "
+            "pm2dof.identification.monte_carlo, "
             "pm2dof.identification.model_ref, pm2dof.identification.signals\n"
             "print(sorted({k.split('.')[0] for k in sys.modules} & {'scipy', 'casadi', "
             "'pyarrow'}))")

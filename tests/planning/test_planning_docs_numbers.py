@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 import pm2dof
+from pm2dof.planning.jobs import closed_loop, plan_paths
 from pm2dof.planning.pathfile import NamedPath, read_path_file
-from pm2dof.planning.report import closed_loop, plan_paths
 
 PAGE = (Path(__file__).resolve().parents[2] / "docs" / "results-planning.md").read_text()
 FLAT = " ".join(PAGE.split())

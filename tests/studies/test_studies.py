@@ -7,6 +7,7 @@
 # closed loop on the same inputs (rollout_inputs), and accumulate_batch is accumulate per row
 # (tests/test_cbind.py). So the comparisons here are exact (assert_array_equal / ==).
 import dataclasses
+import json
 import math
 from pathlib import Path
 
@@ -408,7 +409,7 @@ def test_report_numbers_match_direct_computation(tmp_path):
     s = read_study(STUDIES / "robustness.toml", quick=True)
     m = pm2dof.load_model(s.model_path)
     out = tmp_path / "out"
-    prepare_out(out, s, m)
+    prepare_out(out, s, m, ["pm2dof", "study", "run", "robustness"])
     for i in range(s.n_chunks):
         write_chunk(out, i, run_chunk(s, i), s)
     finish_out(out, s)
@@ -430,6 +431,14 @@ def test_report_numbers_match_direct_computation(tmp_path):
         assert r["pairs"] == len(rpe) == s.draws
         assert r["median"] == pytest.approx(np.median(rpe), rel=1e-12)
         assert r["share_better"] == np.mean(np.array(rpe) > 0)
+    # the job of `pm2dof study report`: the same summary, written with the run's provenance
+    from pm2dof.studies.jobs import run_report
+    job = run_report(out)
+    assert job.summary == rep and set(job.columns) == set(cols)
+    assert job.provenance["command_line"] == ["pm2dof", "study", "run", "robustness"]
+    assert job.provenance["model"] == m.name
+    written = json.loads((out / "summary.json").read_text())
+    assert written["provenance"] == job.provenance and written["rows"] == rep["rows"]
 
 
 def test_study_file_doc_lists_every_law_and_its_keys():
