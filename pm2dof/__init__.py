@@ -48,6 +48,7 @@ from .core.errors import (
     ArgumentError,
     ArgumentTypeError,
     ClosureError,
+    CompileWarning,
     GainError,
     InputFileError,
     ModelFileError,
@@ -120,7 +121,7 @@ __all__ = [
     "InputFileError",
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError", "TrajectoryError", "GainError", "ModelMismatchError", "BuildError",
-    "OutcomeWarning", "MovingStartWarning", "PlanError", "UnsupportedMechanismError", "NotResetError",
+    "OutcomeWarning", "MovingStartWarning", "CompileWarning", "PlanError", "UnsupportedMechanismError", "NotResetError",
     # layer 3 (imported on first use)
     *_LAZY,
 ]

@@ -12,6 +12,7 @@ import re
 import shutil
 import subprocess
 import sys
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -69,6 +70,12 @@ def libraries(tmp_path_factory):
             (store / sha).mkdir(exist_ok=True)
             for f in (lib, stamp_path(lib)):
                 shutil.copy2(f, store / sha / f.name)
+
+        def kept(self, gen):
+            """The library kept from ``gen``'s C, or None."""
+            name, sha = self._key(gen)
+            lib = store / sha / f"lib{name}.so"
+            return lib if lib.is_file() else None
 
         def reuse(self, gen):
             name, sha = self._key(gen)
@@ -143,23 +150,57 @@ def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tm
     assert rc == 0 and (gen / "manifest.json").is_file() and (gen / "myrobot.c").is_file(), out
     assert json.loads((gen / "manifest.json").read_text())["model_file"] == "../../myrobot.toml"
     assert not (gen / "libmyrobot.so").exists()          # --no-build: compiled on first use
-    m = pm2dof.load_model(model)
-    err = capfd.readouterr().err
+    with pytest.warns(pm2dof.CompileWarning) as said:
+        m = pm2dof.load_model(model)
     assert (gen / "libmyrobot.so").is_file()
-    # a stage line with the C file's size and an estimate, then the time it took
-    assert re.search(r"pm2dof: compiling myrobot\.c \(\d\.\d MB of C\) with .*: about \d+ s on "
-                     r"an idle processor .*first use of the generated code in ", err), err
-    assert re.search(rf"pm2dof: compiled {re.escape(str(gen))}/libmyrobot\.so in \d+\.\d s",
-                     err), err
+    # a warning with the C file's size and an estimate, then one with the time it took; a
+    # Python caller filters them (the CLI prints them: the next test), nothing is printed
+    lines = [str(w.message) for w in said if w.category is pm2dof.CompileWarning]
+    assert len(lines) == 2, lines
+    assert re.fullmatch(r"compiling myrobot\.c \(\d\.\d MB of C\) with .*: about \d+ s on an "
+                        rf"idle processor .* \(first use of the generated code in "
+                        rf"{re.escape(str(gen))}\)", lines[0]), lines
+    assert re.fullmatch(rf"compiled {re.escape(str(gen))}/libmyrobot\.so in \d+\.\d s",
+                        lines[1]), lines
+    assert "compil" not in capfd.readouterr().err
     libraries.keep(gen)
     assert Path(m.generated) == gen and m.spec.legs[0].la == 0.246
     q = m.ik([0.25, 0.26])
     assert abs(m.fk(q[:3]) - [0.25, 0.26]).max() < 1e-12
-    pm2dof.load_model(str(model))                        # a second load compiles nothing
-    assert "compiling" not in capfd.readouterr().err
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", pm2dof.CompileWarning)
+        pm2dof.load_model(str(model))                    # a second load compiles nothing
     # the folder moves with its model file: the manifest names it relatively
     shutil.move(tmp_path / "robots", tmp_path / "moved")
     assert pm2dof.load_model(tmp_path / "moved" / "myrobot.toml").name == "myrobot"
+
+
+def test_the_cli_prints_the_compile_on_first_use_as_stage_lines(tmp_path, capfd, monkeypatch,
+                                                                libraries):
+    """``pm2dof`` turns each CompileWarning into the line it printed before the warnings: the
+    C file's size and the estimate, then the time it took. The compiler is a stand-in (CC):
+    it copies the library the test above compiled from the same C, or else builds at -O0."""
+    from pm2dof import cli
+    model = _robot(tmp_path / "robots")
+    assert _derive(model)[0] == 0
+    gen = tmp_path / "robots" / "generated" / "myrobot"
+    kept = libraries.kept(gen)
+    cc = tmp_path / "cc.sh"
+    cc.write_text('#!/bin/sh\nwhile [ "$1" != "-o" ]; do shift; done\n'
+                  f'cp {kept} "$2"\n' if kept else '#!/bin/sh\nexec cc "$@" -O0\n')
+    cc.chmod(0o755)
+    monkeypatch.setenv("CC", str(cc))
+    capfd.readouterr()
+    assert cli.main(["report", "--model", str(model)]) == 0
+    out, err = capfd.readouterr()
+    lines = err.splitlines()
+    assert len(lines) == 2 and "myrobot" in out, err
+    assert re.fullmatch(rf"pm2dof: compiling myrobot\.c \(\d\.\d MB of C\) with "
+                        rf"{re.escape(str(cc))} -O3: about \d+ s on an idle processor \(16 s per "
+                        rf"MB\), longer while other programs use it \(first use of the generated "
+                        rf"code in {re.escape(str(gen))}\)", lines[0]), lines
+    assert re.fullmatch(rf"pm2dof: compiled {re.escape(str(gen))}/libmyrobot\.so in \d+\.\d s",
+                        lines[1]), lines
 
 
 def test_generated_elsewhere_is_named_by_generated(tmp_path, libraries):
