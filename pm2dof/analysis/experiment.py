@@ -40,7 +40,7 @@ def rpe(apd_rmse, na_rmse):
     return 100.0 * (apd_rmse - na_rmse) / apd_rmse
 
 
-#: the model-based controllers ``table3(include=...)`` can add (issue 21), with Tables 1-2
+#: the model-based controllers ``table3(include=...)`` can add, with Tables 1-2
 EXTRA_CONTROLLERS = ("ctc", "lqr")
 #: each controller's column heading in the text table
 LABELS = {"apd": "APD", "na": "NA", "na_no_adaptation": "NA G=0"}

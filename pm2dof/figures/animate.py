@@ -1,4 +1,4 @@
-# Animation of a closed-loop move: the robot to scale, the paths, the error magnified (issue 11).
+# Animation of a closed-loop move: the robot to scale, the paths, the error magnified.
 from pathlib import Path
 
 import numpy as np

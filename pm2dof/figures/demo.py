@@ -53,7 +53,7 @@ def run_demo(model, out="out", runs=40, progress=None, command_line=None):
         data["repeated_runs"] = {"speed": rep["speed"], "rmse": rep["rmse"],
                                  "theta_hat_end": rep["theta_hat_end"][-1],
                                  "theta_truth": rep["theta_truth"], "param_names": m.param_names}
-    # the redundancy (issue 11): capability maps, the torque splits, the move animated
+    # the redundancy: capability maps, the torque splits, the move animated
     from .animate import animate_move
     from .maps import maps_figures
     from .splits import splits_figure

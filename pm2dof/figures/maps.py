@@ -1,4 +1,4 @@
-# Figures of the capability maps: singularities, conditioning, force and acceleration (issue 11).
+# Figures of the capability maps: singularities, conditioning, force and acceleration.
 from pathlib import Path
 
 import numpy as np

@@ -1,4 +1,4 @@
-# Figure of the torque splits: tracking and saturation against the actuator limit (issue 11).
+# Figure of the torque splits: tracking and saturation against the actuator limit.
 from pathlib import Path
 
 import numpy as np

@@ -1,4 +1,4 @@
-# `pm2dof report` on the new kinds (issue 26): it crashed on a platform (ik given (x, y)).
+# `pm2dof report` on platforms, linear actuators, gravity: it crashed on a platform (ik of (x, y)).
 import re
 
 import numpy as np

@@ -1,5 +1,5 @@
 # Where models and their generated code live: shipped names, user folders, the derive guards.
-"""Model references and generated-code folders (issue 18), and the derive guards (issue 22 #4).
+"""Model references and generated-code folders, and the derive guards.
 
 The full install (wheel and sdist in fresh virtual environments, used from an empty folder) is
 ``tests/install/smoke.sh`` (``make check-install``, run by CI); these are the in-process parts.
@@ -205,7 +205,7 @@ def test_the_cli_prints_the_compile_on_first_use_as_stage_lines(tmp_path, capfd,
 
 def test_generated_elsewhere_is_named_by_generated(tmp_path, libraries):
     model = _robot(tmp_path)
-    rc, out = _derive("--model", model, "--out", tmp_path / "build" / "c")   # --model: issue 22 #6
+    rc, out = _derive("--model", model, "--out", tmp_path / "build" / "c")   # --model, as every command
     assert rc == 0, out
     libraries.reuse(tmp_path / "build" / "c")
     with pytest.raises(pm2dof.StaleGeneratedCodeError) as info:
@@ -253,7 +253,7 @@ def test_edited_geometry_names_the_exact_derive_command(tmp_path):
 
 
 def test_derive_refuses_a_folder_generated_from_another_model_file(tmp_path):
-    """Issue 22 #4: a copied model file that keeps an existing name, derived into that name's
+    """A copied model file that keeps an existing name, derived into that name's
     folder, used to overwrite it silently. Now refused naming both files; --force overrides."""
     pkg = tmp_path / "pkg"                       # the package's layout: models/, generated/<name>/
     original = _robot(pkg / "models", name="shang2010", la="0.244")
