@@ -107,7 +107,8 @@ c-example: install
 
 # pm2dof export's project of $(MODEL) (any model: MODEL=rrr4_platform, or a model file whose
 # code is derived) cross-compiled for a Cortex-M4F and a Cortex-M7 (single and double), run
-# under QEMU against the host build (docs/deploying.md). The Debian packages are installed
+# under QEMU against the host build (docs/deploying.md): `pm2dof export MODEL --embedded`, which
+# prints the table and writes $(EMBEDDED_OUT)/results.json. The Debian packages are installed
 # when missing and this user may (root, or password-less sudo); otherwise it says what to install.
 EMBEDDED_PKGS := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
 EMBEDDED_OUT  ?= build/embedded
@@ -124,8 +125,7 @@ embedded: install
 	    "install them (Debian/Ubuntu: sudo apt-get install $(EMBEDDED_PKGS))"; exit 1; }; \
 	fi
 	@mkdir -p $(EMBEDDED_OUT)
-	$(PY) -m pm2dof.export.embedded --model $(MODEL) --out $(EMBEDDED_OUT) \
-	  --json $(EMBEDDED_OUT)/results.json
+	$(VENV)/bin/pm2dof export $(MODEL) --embedded --out $(EMBEDDED_OUT)
 
 clean:
 	rm -rf $(VENV) $(BUILD_VENV) build dist pm2dof/*.so pm2dof/*/*.so pm2dof/generated/*/*.so pm2dof/generated/*/*.so.json $(OUT) site

@@ -1,5 +1,5 @@
 # Example: nonlinear MPC on the generated dynamics and its Jacobians, run in pm2dof.simulate.
-"""Nonlinear model-predictive control of the paper's robot (issue 21, item 4).
+"""Nonlinear model-predictive control of the paper's robot.
 
 The prediction model is the model's own sampled step (``<name>_sampled_step``: the model
 file's RK4 sub-steps under the zero-order hold, Tables 1-2), loaded from the compiled library

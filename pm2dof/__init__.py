@@ -48,6 +48,7 @@ from .core.errors import (
     ArgumentError,
     ArgumentTypeError,
     ClosureError,
+    CompileWarning,
     GainError,
     InputFileError,
     ModelFileError,
@@ -81,7 +82,7 @@ _LAZY = {
     "read_study": "pm2dof.studies",
     "run_study": "pm2dof.studies",
     "StudyFileError": "pm2dof.studies",
-    # identification from logs (issue 13; pm2dof.identification, issue 19)
+    # identification from logs (pm2dof.identification)
     "IdentLog": "pm2dof.identification.log",
     "LogError": "pm2dof.identification.log",
     "read_log": "pm2dof.identification.log",
@@ -90,17 +91,17 @@ _LAZY = {
     "identify_log": "pm2dof.identification.fit",
     "design_excitation": "pm2dof.identification.design",
     "load_excitation": "pm2dof.identification.signals",
-    # a reference trajectory sampled elsewhere (issue 26)
+    # a reference trajectory sampled elsewhere
     "read_trajectory": "pm2dof.analysis.reference_file",
     "ReferenceFileError": "pm2dof.analysis.reference_file",
-    # motion planning (issue 20)
+    # motion planning
     "TaskPath": "pm2dof.planning",
     "check_path": "pm2dof.planning",
     "plan_kinematic": "pm2dof.planning",
     "plan_time_optimal": "pm2dof.planning",
     "plan_smooth": "pm2dof.planning",
     "Plan": "pm2dof.planning",
-    # derivatives and linear design (issue 21)
+    # derivatives and linear design
     "linearize_trajectory": "pm2dof.linear",
     "statespace": "pm2dof.linear",
     "LQRController": "pm2dof.linear",
@@ -120,7 +121,7 @@ __all__ = [
     "InputFileError",
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError", "TrajectoryError", "GainError", "ModelMismatchError", "BuildError",
-    "OutcomeWarning", "MovingStartWarning", "PlanError", "UnsupportedMechanismError", "NotResetError",
+    "OutcomeWarning", "MovingStartWarning", "CompileWarning", "PlanError", "UnsupportedMechanismError", "NotResetError",
     # layer 3 (imported on first use)
     *_LAZY,
 ]

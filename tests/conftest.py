@@ -233,7 +233,8 @@ def paper_model():
 
 
 # --------------------------------------------------------------------------------------
-# Issue 26's mechanisms in the tests written for the paper's family
+# The other mechanisms (platforms, linear actuators, gravity) in the tests written for the
+# paper's family
 # --------------------------------------------------------------------------------------
 
 _REFERENCE = ("compares with pm2dof.reference or docs/paper.md, the paper's RRR legs at a point in "
@@ -245,7 +246,7 @@ _GRAVITY = ("holds in a horizontal plane only: under gravity the controllers hol
             "shang2010_vertical, NA (adapting) at 5.1 after 0.6 s "
             "(tests/mechanisms/test_capabilities.py runs the closed loop)")
 _NOT_YET = ("written for RRR legs at a point (2-D task arrays, the law of cosines, sin(qb - qa)): "
-            "not yet generalised to this mechanism (issue 26 follow-up); "
+            "not yet generalised to this mechanism; "
             "tests/mechanisms/test_capabilities.py covers the capability on it")
 _PLATFORM_H = ("a platform's H is tip_i(q) - P_i(xe), A = dH/dq at fixed xe; Model.H binds xe "
                "from q, so finite differences of Model.H are not A")
@@ -275,15 +276,15 @@ for _name in ("test_table3_runs_and_tracks_on_every_move",):
     _NOT_RUN[f"control/test_models_closed_loop.py::{_name}"] = ("new", _NOT_YET)
 _NOT_RUN["derive/test_generated.py::test_C_matches_sympy_at_30_digits"] = (
     "platform", "its mpmath evaluation takes fk in closed form; a platform's fk is a "
-                "Gauss-Newton from a seed: not yet generalised (issue 26 follow-up); "
+                "Gauss-Newton from a seed: not yet generalised; "
                 "tests/mechanisms/test_independent.py checks the platform's derivation")
 _NOT_RUN["control/test_task_dimension.py::test_dof_and_task_names_follow_the_generated_code"] = (
     "platform", "compares with a point's task (x, y): tests/mechanisms/test_capabilities.py "
                 "and tests/derive/test_derive_task_dimension.py cover m = 3")
 
 
-#: (test, model) pairs that FAIL on issue 26's new models at this commit: open defects, kept
-#: visible as strict xfails (an XPASS fails the run, so a fix must remove its entry). Measured
+#: (test, model) pairs that FAIL on the other mechanisms' models at this commit: open defects,
+#: kept visible as strict xfails (an XPASS fails the run, so a fix must remove its entry). Measured
 #: in the full run after the models were shipped; the closing note of the stop lists them.
 _PLATFORMS = {"rrr3_platform", "rrr4_platform", "prr3_platform", "rpr3_platform"}
 _KNOWN_FAILING = {
@@ -315,7 +316,7 @@ def pytest_collection_modifyitems(config, items):
         failing = _KNOWN_FAILING.get(f"{path}::{item.originalname}", set())
         if hasattr(item, "callspec") and failing & ({item.callspec.id}
                                                      | set(item.callspec.id.split("-"))):
-            item.add_marker(pytest.mark.xfail(strict=True, reason="open defect of issue 26 on "
+            item.add_marker(pytest.mark.xfail(strict=True, reason="open defect on "
                                               "this model (tests/conftest.py _KNOWN_FAILING)"))
         rule = _NOT_RUN.get(f"{path}::{item.originalname}")
         if rule is None or not hasattr(item, "callspec"):

@@ -69,7 +69,7 @@ def _moved_model(tmp_path):
 
 
 def test_report_evaluates_at_a_pose_of_the_models_own(tmp_path, capsys, monkeypatch):
-    """It used the paper's path midpoint (0.245, 0.265) for every model (issue 28)."""
+    """It used the paper's path midpoint (0.245, 0.265) for every model."""
     path, gen = _moved_model(tmp_path)
     assert cli.main(["report", "--model", path, "--generated", gen]) == 0
     out = capsys.readouterr().out
@@ -95,7 +95,7 @@ def test_table3_prints_the_papers_columns_only_for_the_papers_robot():
 
 
 def test_make_dist_needs_only_the_build_frontend():
-    """`make dist` installed the whole dev extra first (3 min, issue 28): now every command it
+    """`make dist` installed the whole dev extra first (3 min): now every command it
     runs installs the build frontend only (python -m build brings the backend itself)."""
     import shutil
     import subprocess
@@ -112,7 +112,7 @@ def test_make_dist_needs_only_the_build_frontend():
     assert any("-m build --outdir dist" in ln for ln in lines)
 
 
-# ---- issue 28, "Smaller" ----
+# ---- smaller fixes ----
 
 def test_derive_without_a_model_suggests_models_copy(capsys):
     assert cli.main(["derive"]) == 2
@@ -165,8 +165,9 @@ def test_installed_package_outputs_omit_git_commit(monkeypatch):
 
 
 def test_plan_csv_writes_shortest_decimals_and_json_names_the_unit(tmp_path):
+    from pm2dof.planning.jobs import plan_paths
     from pm2dof.planning.pathfile import NamedPath
-    from pm2dof.planning.report import csv_text, plan_paths
+    from pm2dof.planning.report import csv_text
     m = pm2dof.load_model()
     path = pm2dof.TaskPath.line([0.22, 0.29], [0.27, 0.24])
     plan = pm2dof.plan_time_optimal(m, path, grid=100)

@@ -1,5 +1,5 @@
 # The CLI's registry: every command a module with add_parser and run; outputs as before the split.
-"""``pm2dof/cli/`` is a registry of command modules (issue 29). Every command is registered
+"""``pm2dof/cli/`` is a registry of command modules. Every command is registered
 and its module has ``add_parser`` and ``run``; every module under ``pm2dof/cli/commands/`` is
 registered; a command line imports its own command's module only. ``pm2dof table3 --json`` and
 every ``--help`` text equal the files in tests/cli_expected/, captured from the CLI before it

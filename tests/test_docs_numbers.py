@@ -1,5 +1,5 @@
 # The numbers the README and the docs quote, recomputed: a cheap number cannot go stale.
-"""Issue 22 #14: every number in the README comes with the command that reproduces it; the
+"""Every number in the README comes with the command that reproduces it; the
 cheap ones are recomputed here (Table 3, the move durations, the type II minimum on both grids,
 the capability ratio) and must appear in the pages, formatted as the pages print them.
 Timings (the benchmark) are machine-dependent and are not checked here: the benchmark page

@@ -1,4 +1,4 @@
-# One error base (Pm2dofError) and one definition of the status codes (issue 19).
+# One error base (Pm2dofError) and one definition of the status codes.
 """* Every typed error of pm2dof derives from :class:`pm2dof.Pm2dofError` and keeps its builtin
   base; the CLI prints a Pm2dofError as one line (exit 2) and lets any other exception show its
   traceback (a bug must look like a bug).
@@ -43,7 +43,7 @@ def test_every_typed_error_is_a_pm2dof_error_with_a_builtin_base():
 
 
 def test_every_error_of_a_users_input_file_is_an_input_file_error():
-    """One family (issue 29): each lists the file's problems (``.problems``, ``.path``). A
+    """One family: each lists the file's problems (``.problems``, ``.path``). A
     TrajectoryError is not in it: it refuses a request (a limit, a period, a move's name), and
     only its ReferenceFileError, raised for a file, is."""
     from pm2dof.analysis.reference_file import ReferenceFileError

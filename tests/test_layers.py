@@ -33,9 +33,9 @@ ALLOWED = {
     "linear": _RUNTIME | {"linear"},                    # 3: linearisation, LQR (SciPy)
     "analysis": _RUNTIME | {"infra", "analysis", "linear"},   # 3: experiment, reports, maps
     "identification": _RUNTIME | {"infra", "identification"},   # 3: logs, excitation, fit
-    "planning": _RUNTIME | {"infra", "planning"},       # 3: motion planning (issue 20)
+    "planning": _RUNTIME | {"infra", "planning"},       # 3: motion planning
     "bench": _RUNTIME | {"infra", "reference", "bench", "derive", "planning", "linear"},
-    "export": _RUNTIME | {"export"},                    # beside bench: C projects (issue 27)
+    "export": _RUNTIME | {"export"},                    # beside bench: C projects
     "studies": _RUNTIME | {"infra", "identification", "studies", "linear"},   # 3: Dask
     "figures": _RUNTIME | {"infra", "analysis", "studies", "figures", "planning", "linear"},  # 4
     # 4: the CLI, a package: its commands (cli/commands/), their registry, the shared options

@@ -600,7 +600,7 @@ def _theta_order(n):
 
 
 def test_a_fourth_leg_reports_every_three_entry_array_at_once(tmp_path):
-    """Issue 22 item 7: a fourth [[legs]] table added to the paper's model file (and a [control]
+    """A fourth [[legs]] table added to the paper's model file (and a [control]
     table with per-leg arrays) leaves 15 arrays with 3 entries. One read names all of them,
     each with the length the leg count implies; fixing exactly the named keys makes it load."""
     control = ('\n[control]\nsplit = "preload"\npreload = [1.0, 1.0, 1.0]\n'
@@ -684,7 +684,7 @@ def test_a_single_problem_is_one_line(tmp_path):
 @pytest.mark.parametrize("key", ["legs.{i}.la", "nominal.alpha.{i}", "nominal.fc.{i}",
                                  "limits.tau_max.{i}", "plant.gamma.{i}", "plant.fs.{i}"])
 def test_legs_are_numbered_from_one(tmp_path, key, leg):
-    """Issue 22 item 9: the (i+1)-th leg's bad entry is reported as "leg i+1", never with a
+    """The (i+1)-th leg's bad entry is reported as "leg i+1", never with a
     0-based index (legs[0], alpha[0])."""
     dotted = key.format(i=leg)
     p, msg = load_error(tmp_path, mutated(**{dotted: -1.0}))

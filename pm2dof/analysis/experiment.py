@@ -40,7 +40,7 @@ def rpe(apd_rmse, na_rmse):
     return 100.0 * (apd_rmse - na_rmse) / apd_rmse
 
 
-#: the model-based controllers ``table3(include=...)`` can add (issue 21), with Tables 1-2
+#: the model-based controllers ``table3(include=...)`` can add, with Tables 1-2
 EXTRA_CONTROLLERS = ("ctc", "lqr")
 #: each controller's column heading in the text table
 LABELS = {"apd": "APD", "na": "NA", "na_no_adaptation": "NA G=0"}
@@ -150,8 +150,8 @@ def table3_json(results):
 def seeded_table3(model, theta):
     """Table 3 with the controllers' model = Tables 1-2 and = ``theta`` (identified).
 
-    ``pm2dof identify fit --seed-na`` passes it to
-    :func:`pm2dof.identification.report.run_fit` (identification does not import the paper's
+    ``pm2dof identify fit --seed-na`` hands its numbers to
+    :func:`pm2dof.identification.jobs.with_table3` (identification does not import the paper's
     experiment).
 
     Parameters
@@ -216,18 +216,19 @@ def format_table3(numbers, paper=True):
     return "\n".join(lines)
 
 
-def run_table3(model, *, exact_encoders=False, save=None, progress=None, include=()):
+def run_table3(model, *, exact_encoders=False, save=None, progress=None, include=(),
+               command_line=None):
     """``pm2dof table3``: run :func:`table3`, optionally save it; returns the numbers
     (:func:`table3_json`; the text: :func:`format_table3`).
 
-    ``save`` is a path for the numbers and their provenance (JSON); ``include`` adds
-    controllers (:data:`EXTRA_CONTROLLERS`).
+    ``save`` is a path for the numbers and their provenance (JSON; ``command_line`` the command
+    it records, None: ``sys.argv``); ``include`` adds controllers (:data:`EXTRA_CONTROLLERS`).
     """
     from ..infra.results import provenance, write_json
     numbers = table3_json(table3(model, quantise=not exact_encoders, progress=progress,
                                  include=include))
     if save:
-        write_json(save, {**numbers, "provenance": provenance(model)})
+        write_json(save, {**numbers, "provenance": provenance(model, command_line)})
     return numbers
 
 

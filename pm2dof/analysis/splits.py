@@ -1,4 +1,4 @@
-# The torque splits compared in closed loop: where the redundancy delays saturation (issue 11).
+# The torque splits compared in closed loop: where the redundancy delays saturation.
 """APD and NA with each torque split on the model file's moves, at a chosen torque limit.
 
 With the paper's limits nothing saturates and every split tracks alike (they all give the same

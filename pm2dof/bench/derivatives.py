@@ -1,4 +1,4 @@
-# Benchmark of the generated derivatives and the model-based controller steps (issue 21).
+# Benchmark of the generated derivatives and the model-based controller steps.
 """Timings of the forward-dynamics Jacobians, the sampled step, the inverse dynamics and the
 CTC and LQR steps, beside the forward dynamics and NA, in one run of ``pm2dof bench``.
 

@@ -1,5 +1,5 @@
 # The platforms beside the paper's robot in one run: NA step, forward dynamics, rollout, plan.
-"""The 3-RRR and the 4-RRR platforms (issue 26, "Speed") beside the paper's robot, in one run.
+"""The 3-RRR and the 4-RRR platforms beside the paper's robot, in one run.
 
 For each model of :data:`BENCH_MODELS` (the paper's robot first), in interleaved rounds (every
 round times each call of every model once, so the ratios of a round are paired under the same

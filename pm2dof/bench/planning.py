@@ -99,8 +99,9 @@ def _toppra_duration(sd, s):
 #: not the size)
 SMOOTH_GRID, SMOOTH_GRID_QUICK = 200, 15
 
-#: the paths of the refinement rows (issue 25): besides the model's fastest move, a half circle
-#: and the spline of issue 28 (the paper's workspace), and the shipped path files
+#: the paths of the refinement rows: besides the model's fastest move, a half circle, a user's
+#: spline in the paper's workspace (the planner once exceeded tau_max on it between its
+#: samples) and the shipped path files
 ARC = dict(center=[0.245, 0.265], radius=0.03, angle0=0.0, angle1=np.pi)
 SPLINE = [[0.18, 0.20], [0.22, 0.13], [0.27, 0.21], [0.31, 0.15]]
 SHIPPED = ("pick_and_place", "curve")
@@ -155,7 +156,7 @@ def toppra_runner(model, path, s, split, theta):
 
 
 def bench_refinement(model, line, repeats, say):
-    """Refined plans beside unrefined ones of the same grid and beside toppra (issue 25): on
+    """Refined plans beside unrefined ones of the same grid and beside toppra: on
     each path of :func:`bench_paths`, both splits, with friction (the nominal theta) and
     without, ``plan_time_optimal`` at 1,000 points (refined as it needs) and
     :func:`pm2dof.planning.topp.plan_on_grid` on the refined plan's final grid (the passes and

@@ -55,24 +55,24 @@ TARGETS = (
     ("na_min_max_over_min_norm", "<=", 1.3, "x", "NA step, min_max split / min_norm split"),
     ("plan_time_optimal_ms", "<=", 5.0, "ms", "plan_time_optimal, 1000 grid points"),
     ("speedup_vs_toppra", ">=", 10.0, "x", "plan_time_optimal vs toppra, friction-free"),
-    # issue 25: refined plans (bench/planning.py, bench_refinement), worst case over the paths
+    # refined plans (bench/planning.py, bench_refinement), worst case over the paths
     ("plan_refined_over_unrefined_max", "<=", 1.3, "x",
      "refined plan / unrefined plan of its grid size, worst path"),
     ("speedup_vs_toppra_min", ">=", 12.0, "x", "plan_time_optimal vs toppra, worst path"),
-    # issue 21: derivatives and the model-based steps (bench/derivatives.py)
+    # derivatives and the model-based steps (bench/derivatives.py)
     ("fd_jacobians_over_fd_c", "<=", 3.0, "x", "forward-dynamics Jacobians / forward dynamics, C"),
     ("fd_jacobians_python_us", "<=", 1.5, "us",
      "forward-dynamics Jacobians from Python (Model.forward_dynamics_jacobians, out=)"),
     ("ctc_step_c_ns", "<=", 300.0, "ns", "CTC step in C (C loop)"),
     ("lqr_step_c_ns", "<=", 300.0, "ns", "LQR step in C (C loop)"),
-    # issue 25: the Python calls (bench/peers.py), ratios of interleaved rounds
+    # the Python calls (bench/peers.py), ratios of interleaved rounds
     ("speedup_fd_vs_pinocchio", ">=", 4.0, "x",
      "Model.forward_dynamics vs Pinocchio constraintDynamics, from Python"),
     ("speedup_fd_vs_mujoco", ">=", 4.0, "x", "Model.forward_dynamics vs MuJoCo mj_forward, "
      "from Python"),
     ("fd_binding_overhead_over_c", "<=", 4.0, "x",
      "forward dynamics: binding overhead (Python - C) / C"),
-    # issue 26: the 3-RRR and 4-RRR platforms beside the paper's robot (bench/models.py),
+    # the 3-RRR and 4-RRR platforms beside the paper's robot (bench/models.py),
     # ratios of interleaved rounds; measured when the platform rows run (``models``)
     ("rrr4_na_step_c_over_paper", "<=", 3.0, "x", "NA step in C, 4-RRR / paper's robot"),
     ("platform_binding_overhead_over_paper_max", "<=", 1.25, "x",
@@ -177,13 +177,13 @@ def run_bench(model=None, quick=False, progress=None, models=None):
     res.update(peer_bench(model, na, b.op, b.qa_prev, fd_state, b.repeats, b.batch_s,
                           b.c_inner, notes))
 
-    # --- motion planning (issue 20): plan_time_optimal beside toppra ----------------------
+    # --- motion planning: plan_time_optimal beside toppra ----------------------------------
     from .planning import bench_planning
     planning = bench_planning(model, quick, say)
     notes.update(planning.pop("notes"))
     res.update(planning)
 
-    # --- the platforms beside the paper's robot (issue 26): bench/models.py ----------------
+    # --- the platforms beside the paper's robot: bench/models.py ---------------------------
     if (not quick) if models is None else models:
         from .models import models_bench
         res.update(models_bench(b.repeats, b.batch_s, b.c_inner, b.n_roll, say))

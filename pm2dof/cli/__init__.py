@@ -69,15 +69,18 @@ def _deepest(parser, args):
 
 
 def main(argv=None):
-    """``pm2dof ARGS`` (default: the command line's); returns the exit status."""
-    from ..infra import results
+    """``pm2dof ARGS`` (default: the command line's); returns the exit status.
+
+    The command runs with ``args.command_line = ["pm2dof", *ARGS]``, which it passes to
+    whatever records a provenance (:func:`pm2dof.infra.results.provenance`): a file written
+    by ``main(argv)`` called from Python names that argv, not the caller's ``sys.argv``."""
     from .errors import run
     given = sys.argv[1:] if argv is None else list(argv)
     ap = build_parser(given[0] if given and given[0] in COMMANDS else None)
     args, extra = ap.parse_known_args(given)
     if extra:               # the command's own usage line and error, not the top level's
         _deepest(ap, args).error(f"unrecognized arguments: {' '.join(extra)}")
-    results.COMMAND_LINE = ["pm2dof", *given]
+    args.command_line = ["pm2dof", *given]
     if not getattr(args, "func", None):
         ap.print_help()
         return 2

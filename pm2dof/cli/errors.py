@@ -4,11 +4,13 @@
 missing optional dependency names the extra to install (status 2); Ctrl-C is status 130; a
 closed pipe (``| head``) is status 0; anything else is a bug and shows its traceback. A rollout
 that did not complete (an :class:`~pm2dof.core.errors.OutcomeWarning`) and a trajectory that does
-not start at rest (a :class:`~pm2dof.core.errors.MovingStartWarning`) are one line on stderr."""
+not start at rest (a :class:`~pm2dof.core.errors.MovingStartWarning`) are one line on stderr,
+as is each stage of a model's first-use compile (a
+:class:`~pm2dof.core.errors.CompileWarning`)."""
 import sys
 import warnings
 
-from ..core.errors import MovingStartWarning, OutcomeWarning, Pm2dofError
+from ..core.errors import CompileWarning, MovingStartWarning, OutcomeWarning, Pm2dofError
 from .options import check_outputs
 
 __all__ = ["run", "EXTRAS", "COMMAND_EXTRAS"]
@@ -25,6 +27,8 @@ def _show_warning(message, category, filename, lineno, file=None, line=None,
                   _default=warnings.showwarning):
     if issubclass(category, (OutcomeWarning, MovingStartWarning)):
         print(f"pm2dof: warning: {message}", file=sys.stderr, flush=True)
+    elif issubclass(category, CompileWarning):      # a stage line, not a warning
+        print(f"pm2dof: {message}", file=sys.stderr, flush=True)
     else:
         _default(message, category, filename, lineno, file, line)
 
@@ -35,6 +39,7 @@ def run(args):
         check_outputs(args)
         with warnings.catch_warnings():   # each rollout that did not complete: one line
             warnings.simplefilter("always", OutcomeWarning)
+            warnings.simplefilter("always", CompileWarning)
             warnings.showwarning = _show_warning
             return args.func(args)
     except Pm2dofError as exc:  # a typed error: the input is refused, not a bug

@@ -1,5 +1,5 @@
 # Is the plant's RK4 substep stable? The smoothed Coulomb law is stiff near rest.
-"""The stability of the simulated plant's integration (issue 26: found on the linear actuators).
+"""The stability of the simulated plant's integration (a problem found on linear actuators).
 
 The plant integrates eq. 10 with its truth's friction, whose Coulomb term is smoothed over
 ``coulomb_smoothing_velocity`` = eps. Near rest that law is a steep viscous one: its slope at

@@ -288,11 +288,16 @@ def remove_stale_temporaries(out_path, max_age_s=STALE_TMP_AGE_S):
 
 
 def _main(argv=None):
-    """``python -m pm2dof.core.build SOURCE.c OUT.so``: compile one generated file (used by make)."""
+    """``python pm2dof/core/build.py SOURCE.c OUT.so``: the Makefile's rule of each library
+    (``make libs``), not a user's entry point (that is ``pm2dof``): compile ``SOURCE.c`` into
+    ``OUT.so`` unless the library was built from that C (:func:`library_is_fresh`: then only
+    its time is renewed, so that make sees it newer than the C file). It runs as a file,
+    before the package may import (standard library only, as setup.py loads this module);
+    returns the exit status: 0, 1 (the compiler failed, or no source), 2 (usage)."""
     import sys
     args = sys.argv[1:] if argv is None else argv
     if len(args) != 2:
-        print("usage: python -m pm2dof.core.build SOURCE.c OUT.so", file=sys.stderr)
+        print("usage: python pm2dof/core/build.py SOURCE.c OUT.so", file=sys.stderr)
         return 2
     if library_is_fresh(args[0], args[1]):     # a touched but unchanged C file: nothing to do
         os.utime(args[1])                       # (newer than the C file again, for make)

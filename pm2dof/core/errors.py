@@ -5,7 +5,8 @@ __all__ = ["Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError"
            "Problem",
            "InputFileError", "ModelFileError", "StaleGeneratedCodeError", "WorkspaceError",
            "ClosureError", "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning",
-           "MovingStartWarning", "PlanError", "UnsupportedMechanismError", "NotResetError"]
+           "MovingStartWarning", "CompileWarning", "PlanError", "UnsupportedMechanismError",
+           "NotResetError"]
 
 
 class Pm2dofError(Exception):
@@ -122,6 +123,14 @@ class ModelMismatchError(Pm2dofError, ValueError):
 class OutcomeWarning(RuntimeWarning):
     """A rollout that did not complete: it left the workspace or diverged (``SimResult.outcome``
     names which, the sample and the time)."""
+
+
+class CompileWarning(UserWarning):
+    """pm2dof is compiling a model's generated C on its first use (a library missing or older
+    than its C file; tens of seconds to minutes): one warning before the compiler starts (the C
+    file's size and an estimate of the time) and one when it is done (the time it took).
+    ``pm2dof`` prints each as a line on stderr; from Python, silence them with
+    ``warnings.simplefilter("ignore", pm2dof.CompileWarning)``."""
 
 
 class MovingStartWarning(RuntimeWarning):

@@ -9,8 +9,8 @@ the result is written there (no allocation) and returned.
 """
 import json
 import math
-import sys
 import types
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -27,6 +27,7 @@ from .errors import (
     ArgumentError,
     ArgumentTypeError,
     ClosureError,
+    CompileWarning,
     NonFiniteError,
     SingularityError,
     StaleGeneratedCodeError,
@@ -99,7 +100,7 @@ def _stale(spec, gen_dir, msg):
 def _check_generated(spec, gen_dir):
     """Refuse generated code that is missing or was derived from another formulation; compile
     the C on first use when its library is missing or older than it (never inside an installed
-    package)."""
+    package), saying so by a :class:`CompileWarning` before and after the compiler runs."""
     manifest_path = gen_dir / "manifest.json"
     if not manifest_path.is_file():
         _stale(spec, gen_dir, f"no generated code for model file {spec.path} in {gen_dir} "
@@ -135,10 +136,9 @@ def _check_generated(spec, gen_dir):
     if not build.library_is_fresh(c_file, lib, manifest.get("files", {}).get(c_file.name)):
         if paths.in_installed_package(gen_dir):
             _stale(spec, gen_dir, f"the compiled library {lib} is missing or older than {c_file}")
-        build.compile_library(c_file, lib, progress=lambda msg: print(
-            f"pm2dof: {msg}" + (f" (first use of the generated code in {gen_dir})"
-                                if msg.startswith("compiling") else ""),
-            file=sys.stderr, flush=True))
+        build.compile_library(c_file, lib, progress=lambda msg: warnings.warn(
+            msg + (f" (first use of the generated code in {gen_dir})"
+                   if msg.startswith("compiling") else ""), CompileWarning, stacklevel=2))
     return manifest, lib
 
 

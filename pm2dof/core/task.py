@@ -21,14 +21,14 @@ __all__ = ["effort_unit", "per_actuator", "active_coordinates", "POINT_TASK_NAME
 
 #: the task coordinates of a point end effector (the paper's robot)
 POINT_TASK_NAMES = ("x", "y")
-#: generated energy functions (issue 26), bound when the manifest lists them
+#: generated energy functions, bound when the manifest lists them
 ENERGY_FUNCTIONS = ("kinetic_energy", "potential_energy")
 
 
 def spec_task_names(spec, m):
     """The task coordinates' names of a model file's spec whose generated code has task
-    dimension ``m``: the spec's own ``task_names`` (model files with an ``end_effector``,
-    issue 26), else (a spec without them: a point end effector) ``("x", "y")`` for m = 2."""
+    dimension ``m``: the spec's own ``task_names`` (model files with an
+    ``end_effector``), else (a spec without them: a point end effector) ``("x", "y")`` for m = 2."""
     names = getattr(spec, "task_names", None)
     if names is None:
         names = POINT_TASK_NAMES + ("phi",) if m == 3 else POINT_TASK_NAMES
@@ -63,8 +63,8 @@ def require_rr_point(model, what):
 
 
 def require_generated(model, short):
-    """Refuse a model whose generated code has no ``<name>_<short>`` (derived before issue 26
-    added the gravity term Ge and the energies): StaleGeneratedCodeError naming the command
+    """Refuse a model whose generated code has no ``<name>_<short>`` (derived before the
+    derivation added the gravity term Ge and the energies): StaleGeneratedCodeError naming the command
     that re-derives it."""
     if f"{model.name}_{short}" not in model.manifest["functions"]:
         raise StaleGeneratedCodeError(

@@ -1,4 +1,4 @@
-# Layer beside bench: a model's controllers exported as a standalone C99 project (issue 27).
+# Layer beside bench: a model's controllers exported as a standalone C99 project.
 """``pm2dof export``: the controllers as a C library for a robot's firmware or real-time loop.
 
 * :mod:`.project` -- :func:`export_project`: the project (generated C copied, API, CMake,

@@ -1,6 +1,6 @@
 # make embedded: the exported step cross-compiled for Cortex-M4F and M7, run under QEMU.
-"""``python -m pm2dof.export.embedded [--out DIR] [--model NAME|PATH]`` (what ``make embedded
-[MODEL=...]`` runs), for any model whose generated code is current.
+"""``pm2dof export [MODEL] --embedded --out DIR`` (what ``make embedded [MODEL=...]``
+runs), for any model whose generated code is current.
 
 For double and single precision (single only where the export allows it): export the model
 (single precision: build it with CMake and run its ctest on the host, the checks of
@@ -19,13 +19,11 @@ three, and report:
   per instruction, and SysTick counts that clock, so the ticks count instructions -- not
   cycles. The cycle estimate is a range of cycles per instruction (CPI) at a stated clock.
 """
-import argparse
 import json
 import re
 import shutil
 import struct
 import subprocess
-import sys
 from pathlib import Path
 
 from ..core.model import load_model
@@ -33,7 +31,8 @@ from ..core.task import effort_unit
 from . import names, stack
 from .project import ExportError, export_project
 
-__all__ = ["run_embedded", "TARGETS", "CPI", "CLOCK_HZ"]
+__all__ = ["run_embedded", "format_results", "format_stacks", "TARGETS", "CPI", "CLOCK_HZ",
+           "BOUND_NM", "TOOLS", "INSTALL"]
 
 TARGETS = {"m4f": "Cortex-M4F (mps2-an386)", "m7": "Cortex-M7 (mps2-an500)"}
 ICOUNT_SHIFT = 6              # embedded/Makefile: one instruction = 2^6 ns of virtual time
@@ -290,32 +289,3 @@ def format_stacks(res):
     return ("Worst-case stack of each step, bytes (GCC's call graph, -fcallgraph-info; the math "
             "library's and libgcc's frames not counted):\n" + "\n".join(lines))
 
-
-def main(argv=None):
-    ap = argparse.ArgumentParser(prog="python -m pm2dof.export.embedded",
-                                 description=__doc__.split("\n\n")[0])
-    ap.add_argument("--out", default="build/embedded", help="work folder")
-    ap.add_argument("--model", default="shang2010", help="a shipped model's name or a model "
-                    "file whose code is derived (default shang2010)")
-    ap.add_argument("--json", metavar="FILE", help="also write the results as JSON")
-    args = ap.parse_args(argv)
-    res = run_embedded(args.out, args.model, progress=lambda m: print(m, flush=True))
-    print("QEMU counts instructions, not cycles: the cycles are an estimate, a range of "
-          "cycles per instruction (M4F 1.0-2.0, M7 0.7-1.5) at a stated clock.")
-    for precision, why in res["refused"].items():
-        print(f"{precision} precision: not exported: {why}")
-    print(format_results(res))
-    print(format_stacks(res))
-    if args.json:
-        Path(args.json).write_text(json.dumps(res, indent=1) + "\n")
-    bad = [k for k, r in res["runs"].items() if "samples" in r and (
-        not r["statuses_equal"] or r["max_abs_diff"] > res["bound"][r["precision"]])]
-    if bad:
-        print(f"make embedded: the torques of {', '.join(bad)} differ from the host's beyond "
-              f"the bound ({res['bound']} {res['effort_unit']})", file=sys.stderr)
-        return 1
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

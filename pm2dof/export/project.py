@@ -72,7 +72,7 @@ def _diag_fields(dim):
 
 
 def _gravity_note(model):
-    """The header's sentence on gravity: the steps hold the gravity term (issue 26)."""
+    """The header's sentence on gravity: the steps hold the gravity term."""
     g = getattr(model.spec, "gravity", None)
     if not getattr(model.spec, "has_gravity", False) or g is None:
         return "a horizontal plane (no gravity)"

@@ -1,4 +1,4 @@
-# Animation of a closed-loop move: the robot to scale, the paths, the error magnified (issue 11).
+# Animation of a closed-loop move: the robot to scale, the paths, the error magnified.
 from pathlib import Path
 
 import numpy as np
@@ -20,7 +20,7 @@ CONTROLLERS = {"na": NAController, "apd": APDController}
 
 
 def animate_move(model, out, speed="high", controller="na", split=None, magnify=None,
-                 fps=20, every=2, settle_time=0.1, progress=None):
+                 fps=20, every=2, settle_time=0.1, progress=None, command_line=None):
     """Simulate one move and write it as an animated GIF (matplotlib animation, Pillow), or
     as one PNG frame at the middle of the move when ``out`` ends in .png.
 
@@ -43,6 +43,8 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
         Frames per second of the GIF, and samples per frame (2: 4 ms of motion per frame).
     settle_time : float
         Seconds at rest after the move, s.
+    command_line : list of str, optional
+        The command a PNG frame's provenance records (None: ``sys.argv``).
 
     Returns
     -------
@@ -72,7 +74,7 @@ def animate_move(model, out, speed="high", controller="na", split=None, magnify=
                                            fps=fps, every=every, gif=not still)
     if still:                                    # one frame: the middle of the move
         draw(min(n_frames - 1, (r.n_move // 2) // every))
-        save_figure(fig, out, provenance(model))
+        save_figure(fig, out, provenance(model, command_line))
         plt.close(fig)
         return out, r
     if progress:

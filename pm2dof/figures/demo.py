@@ -37,35 +37,39 @@ def demo_header(model):
             f"model {model.name!r} from {model.spec.path}; generated C {model.library}\n")
 
 
-def run_demo(model, out="out", runs=40, progress=None):
+def run_demo(model, out="out", runs=40, progress=None, command_line=None):
     """Simulate the experiment of Sect. 5 (Table 3 and a sensitivity table), repeat the move
-    ``runs`` times, and write figures and ``results.json`` to ``out``.
+    ``runs`` times, and write figures and ``results.json`` to ``out``, each with its
+    provenance (``command_line``: the command it records, None: ``sys.argv``).
 
     Returns a :class:`DemoResult` (its text: :func:`format_demo`).
     """
     m = model
-    results, rep, paths = experiment_figures(m, out, runs, progress)
+    results, rep, paths = experiment_figures(m, out, runs, progress, command_line)
     numbers = table3_json(results)
     sens = sensitivity(m)
-    data = {"table3": numbers, "sensitivity": dict(sens), "provenance": provenance(m)}
+    data = {"table3": numbers, "sensitivity": dict(sens), "provenance": provenance(m, command_line)}
     if rep is not None:
         data["repeated_runs"] = {"speed": rep["speed"], "rmse": rep["rmse"],
                                  "theta_hat_end": rep["theta_hat_end"][-1],
                                  "theta_truth": rep["theta_truth"], "param_names": m.param_names}
-    # the redundancy (issue 11): capability maps, the torque splits, the move animated
+    # the redundancy: capability maps, the torque splits, the move animated
     from .animate import animate_move
     from .maps import maps_figures
     from .splits import splits_figure
-    maps, map_paths = maps_figures(m, Path(out) / "maps", progress=progress)
+    maps, map_paths = maps_figures(m, Path(out) / "maps", progress=progress,
+                                   command_line=command_line)
     paths += map_paths
     if "high" in m.spec.trajectories:
-        split_path, _ = splits_figure(m, out, "high", progress=progress)
-        gif, _ = animate_move(m, Path(out) / "move_high_na.gif", progress=progress)
+        split_path, _ = splits_figure(m, out, "high", progress=progress,
+                                      command_line=command_line)
+        gif, _ = animate_move(m, Path(out) / "move_high_na.gif", progress=progress,
+                              command_line=command_line)
         paths += [split_path, gif]
     data["maps"] = maps
     draws = skipped = None
     try:
-        study = _demo_study(m, Path(out) / "study_robustness", progress)
+        study = _demo_study(m, Path(out) / "study_robustness", progress, command_line)
     except ModuleNotFoundError as exc:     # Dask / pyarrow: the [studies] extra
         skipped, study = exc.name, None
     if study is not None:
@@ -106,7 +110,7 @@ def format_demo(r):
     return "\n".join(lines)
 
 
-def _demo_study(m, out, progress):
+def _demo_study(m, out, progress, command_line):
     """The robustness study at its --quick size (a local Dask cluster, a few seconds), when
     the study file's model is the demo's. Returns (RPE rows, figure paths, random plants) or
     None."""
@@ -123,7 +127,7 @@ def _demo_study(m, out, progress):
     if progress:
         progress(f"study {study.name!r} --quick: {study.n_rollouts} rollouts on a local Dask "
                  f"cluster")
-    run_study(study, out, progress=False)
+    run_study(study, out, progress=False, command_line=command_line)
     info, table = read_results(out)
     cols = columns_of(table)
     s = summarise(cols, {**info, "grid_keys": []})

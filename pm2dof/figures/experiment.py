@@ -147,8 +147,9 @@ def write_figures(model, results, repeated, out_dir, prov):
     return written
 
 
-def experiment_figures(model, out, runs=40, progress=None):
-    """Run the experiment (Table 3 and ``runs`` repeated runs) and write its figures to ``out``.
+def experiment_figures(model, out, runs=40, progress=None, command_line=None):
+    """Run the experiment (Table 3 and ``runs`` repeated runs) and write its figures to ``out``,
+    each with its provenance (``command_line``: the command it records, None: ``sys.argv``).
 
     Returns (table3 results, repeated-runs dict or None, list of PNG paths).
     """
@@ -162,5 +163,5 @@ def experiment_figures(model, out, runs=40, progress=None):
         rep = repeated_runs(model, speed, runs, progress=progress)
         rep["speed"] = speed
         rep["apd_rmse"] = results[speed]["apd"].rmse
-    paths = write_figures(model, results, rep, out, provenance(model))
+    paths = write_figures(model, results, rep, out, provenance(model, command_line))
     return results, rep, paths

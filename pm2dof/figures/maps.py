@@ -1,4 +1,4 @@
-# Figures of the capability maps: singularities, conditioning, force and acceleration (issue 11).
+# Figures of the capability maps: singularities, conditioning, force and acceleration.
 from pathlib import Path
 
 import numpy as np
@@ -159,17 +159,18 @@ def maps_note(model, tau_max=None, phi=None):
 
 
 def maps_figures(model, out_dir, resolution=121, theta=None, tau_max=None, progress=None,
-                 phi=None):
+                 phi=None, command_line=None):
     """Compute :func:`workspace_maps` (a platform at the orientation ``phi``, default its home
     one), write the PNGs of :data:`FIGURES` and ``maps.json`` (the
-    summary of :func:`maps_summary` and the provenance) into ``out_dir``.
+    summary of :func:`maps_summary` and the provenance, ``command_line`` the command it records,
+    None: ``sys.argv``) into ``out_dir``.
 
     Returns (summary dict, list of written paths).
     """
     plt = _plt()
     maps = workspace_maps(model, resolution, theta, tau_max, progress, phi)
     summary = maps_summary(model, maps, theta, tau_max)
-    prov = provenance(model)
+    prov = provenance(model, command_line)
     out_dir = Path(out_dir)
     note = maps_note(model, tau_max, maps["phi"])
     paths = []

@@ -1,5 +1,5 @@
 # The robot drawn to scale for any leg kind (RRR, PRR, RPR) and end effector (point, platform).
-"""Geometry of the drawn robot, from the model file's legs and a pose (issue 26).
+"""Geometry of the drawn robot, from the model file's legs and a pose.
 
 Leg i at the joint coordinates q (2n,) = [qa, qb], as the derivation defines them
 (pm2dof/derive/kinematics.py): RRR base A_i, elbow A_i + la u(qa_i), tip + lb u(qb_i); PRR the

@@ -1,4 +1,4 @@
-# Figure of the torque splits: tracking and saturation against the actuator limit (issue 11).
+# Figure of the torque splits: tracking and saturation against the actuator limit.
 from pathlib import Path
 
 import numpy as np
@@ -52,13 +52,14 @@ def sweep_figure(plt, model, sw, speed, preload=None):
 
 
 def splits_figure(model, out_dir, speed="high", preload=None, preload_sign=None, levels=None,
-                  progress=None):
+                  progress=None, command_line=None):
     """Write ``splits_<speed>.png``: RMSE (eq. 41) and saturated samples of APD and NA with each
-    split against a uniform torque limit. Returns (path, sweep dict of :func:`tau_max_sweep`)."""
+    split against a uniform torque limit, with its provenance (``command_line``: the command it
+    records, None: ``sys.argv``). Returns (path, sweep dict of :func:`tau_max_sweep`)."""
     plt = _plt()
     levels = sweep_levels(model, speed) if levels is None else np.asarray(levels, dtype=float)
     sw = tau_max_sweep(model, levels, speed, preload, preload_sign, progress=progress)
     fig = sweep_figure(plt, model, sw, speed, preload)
-    path = save_figure(fig, Path(out_dir) / f"splits_{speed}.png", provenance(model))
+    path = save_figure(fig, Path(out_dir) / f"splits_{speed}.png", provenance(model, command_line))
     plt.close(fig)
     return path, sw

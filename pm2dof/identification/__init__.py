@@ -12,7 +12,9 @@ One module per job (``pm2dof identify SUBCOMMAND`` in brackets):
 * :mod:`.design` -- the D-optimal Fourier excitation, CasADi + IPOPT (``design``);
 * :mod:`.fit` -- the least-squares pipeline: filter, regressor, weighted least squares (``fit``);
 * :mod:`.consistent` -- the physically consistent theta (CasADi + IPOPT);
-* :mod:`.report` -- the printed and JSON report of a fit, ``--save``;
+* :mod:`.jobs` -- what ``fit`` runs: a log read or simulated, the fit, Table 3 with its theta
+  handed in, ``--save``;
+* :mod:`.report` -- the printed and JSON report of a fit;
 * :mod:`.monte_carlo` -- the accuracy targets over random plants and encoder noise
   (``monte-carlo``).
 

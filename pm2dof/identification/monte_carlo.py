@@ -1,5 +1,6 @@
 # How good is identification from logs? Monte Carlo over plant truths and encoder noise, against the targets.
-"""``pm2dof identify monte-carlo N --excitation FILE``: the issue's targets, measured.
+"""``pm2dof identify monte-carlo N --excitation FILE``: the identification's accuracy targets
+(:data:`TARGETS`), measured.
 
 Each seed draws a plant truth around the model file's ``[plant]`` (every bare-link inertia,
 viscous, Coulomb and Stribeck coefficient scaled by 1 + 0.1 N(0, 1), the payload mass
@@ -36,7 +37,7 @@ __all__ = ["random_truth", "plant_task_force", "torque_error", "monte_carlo",
            "run_monte_carlo", "monte_carlo_json", "untrusted", "check_before_fits",
            "encoder_steps", "TARGETS"]
 
-#: the issue's targets: inertial vector, each large inertial parameter, friction, torque, coverage
+#: the identification's accuracy targets: inertial vector, each large inertial parameter, friction, torque, coverage
 TARGETS = {"inertial_vector": 0.05, "inertial_each": 0.05, "friction": 0.03, "torque": 0.05,
            "coverage": 0.90}
 

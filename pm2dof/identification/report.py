@@ -1,21 +1,19 @@
-# `pm2dof identify fit [LOG]`: run the identification pipeline on a log, print, save theta.
-"""Text and JSON reports of :func:`pm2dof.identification.fit.identify_log`, and
-``pm2dof identify fit``: a log read from a file and a simulated excitation run go through the
-same pipeline and the same report."""
-import dataclasses
+# What `pm2dof identify fit` prints and saves: the identification's numbers, its text, the truth.
+"""Text and JSON reports of :func:`pm2dof.identification.fit.identify_log` (``pm2dof identify
+fit``, run by :func:`.jobs.run_fit`): a log read from a file and a simulated excitation run get
+the same report, with the truth of the plant that wrote the log when the log tells it."""
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..control.plant import plant_truth, theta_truth
-from ..core.errors import ArgumentError
 from .base import parameter_units
-from .fit import MODEL_ERROR_CHOICES, SPEED_LEVER, identify_log, joint_speed_floor, speed_phrase
-from .log import LogError, log_folder, read_log
+from .fit import MODEL_ERROR_CHOICES, SPEED_LEVER, joint_speed_floor, speed_phrase
+from .log import LogError
 
-__all__ = ["format_identification", "summary", "run_fit", "FitReport", "format_fit",
-           "load_theta", "plant_comparison", "recorded_plant", "RecordedPlant",
-           "invisible_directions", "SIMULATED_SOURCE", "INTERVAL_NOTE"]
+__all__ = ["format_identification", "summary", "format_fit", "plant_comparison",
+           "recorded_plant", "RecordedPlant", "invisible_directions", "SIMULATED_SOURCE",
+           "INTERVAL_NOTE"]
 
 #: metadata ``source`` of a log simulated with the model file's [plant] (then the truth is known)
 SIMULATED_SOURCE = "simulated plant ([plant] of the model file)"
@@ -282,22 +280,8 @@ def format_identification(model, log, res):
     return "\n".join(lines)
 
 
-@dataclass(frozen=True)
-class FitReport:
-    """What ``pm2dof identify fit`` found (:func:`run_fit`; its text: :func:`format_fit`).
-
-    ``result`` is :func:`~pm2dof.identification.fit.identify_log`'s, ``summary`` the
-    command's ``--json`` (:func:`summary`, with Table 3 when seeded), ``seed_warning`` the
-    warning of the seeded Table 3's comparison, if any."""
-    model: object
-    log: object
-    result: dict
-    summary: dict
-    seed_warning: object = None
-
-
 def format_fit(r):
-    """A :class:`FitReport` as ``pm2dof identify fit`` prints it."""
+    """A :class:`.jobs.FitRun` as ``pm2dof identify fit`` prints it."""
     from .monte_carlo import format_seeded_table3
     text = format_identification(r.model, r.log, r.result)
     if "table3" in r.summary:
@@ -305,103 +289,3 @@ def format_fit(r):
                                       r.summary["table3_comparison"]]
                                      + ([f"warning: {r.seed_warning}"] if r.seed_warning else []))
     return text
-
-
-def run_fit(log=None, *, model=None, generated=None, excitation_file=None, duration=None,
-            quantise=True, controller=None, save=None, cutoff_hz=None,
-            min_joint_speed=None, time_tolerance=1e-3, seed=None, progress=None):
-    """``pm2dof identify fit [LOG]``: identify, optionally save; returns a :class:`FitReport`.
-
-    Parameters
-    ----------
-    log : str or Path, optional
-        A log file (:func:`~pm2dof.identification.log.read_log`). Its model is the one it
-        records unless ``model`` is given, and then it must be that one. Without a log, an
-        excitation runs on the simulated plant first
-        (:func:`~pm2dof.identification.excitation.simulated_log`: ``excitation_file``, else the
-        default multi-sine of ``duration`` s; ``quantise``; ``controller`` "apd" (default) or
-        "na"), and that log is identified the same way.
-    model, generated : optional
-        ``--model`` (a name, a model file or a Model), ``--generated``.
-    save : path, optional
-        Write ``{"param_names", "theta0", ...}`` and the provenance as JSON.
-    seed : callable(model, theta) -> dict, optional
-        Also Table 3 with APD and NA using the identified theta: the CLI's ``--seed-na``
-        passes :func:`pm2dof.analysis.experiment.seeded_table3` (identification does not
-        import the paper's experiment).
-    cutoff_hz, min_joint_speed, time_tolerance :
-        See :func:`~pm2dof.identification.fit.identify_log` and ``read_log``.
-
-    Returns
-    -------
-    FitReport
-        :func:`~pm2dof.identification.fit.identify_log`'s result and the summary.
-    """
-    from ..infra.results import provenance, write_json
-    from .excitation import model_of_excitation, simulated_log
-    from .fit import MIN_JOINT_SPEED
-    from .model_ref import model_for
-    from .signals import DEFAULT_DURATION
-    if log is not None:
-        simulated = {"--excitation": excitation_file is not None,
-                     "--duration": duration is not None, "--exact-encoders": not quantise,
-                     "--controller": controller is not None}
-        given = [k for k, v in simulated.items() if v]
-        if given:
-            raise ArgumentError(f"{', '.join(given)}: options of a simulated excitation run, "
-                                f"which fit runs only without a LOG (got LOG {log})")
-        path = log
-        log = read_log(path, time_tolerance=time_tolerance)
-        assumed = model is None and "model" not in log.meta
-        model = model_for(log.meta, log_folder(log), str(path), model=model, generated=generated,
-                          error=LogError)
-        if assumed:
-            assumed = (f"model {model.name!r} ({model.spec.path}) assumed: {path} records no "
-                       f"model and no --model was given")
-        if progress:
-            progress(f"read {path}: {len(log.t)} rows; filtering, stacking the base regressor, "
-                     f"weighted and physically constrained least squares")
-    else:
-        assumed = False
-        model = model_of_excitation(excitation_file, duration, model=model, generated=generated)
-        log = simulated_log(model, excitation_file,
-                            DEFAULT_DURATION if duration is None else duration,
-                            quantise=quantise, controller=controller or "apd", progress=progress)
-        if progress:
-            progress(f"{len(log.t)} rows; filtering, stacking the base regressor, weighted and "
-                     f"physically constrained least squares")
-    try:
-        res = identify_log(model, log, cutoff_hz=cutoff_hz,
-                           min_joint_speed=MIN_JOINT_SPEED if min_joint_speed is None
-                           else min_joint_speed)
-    except LogError as exc:
-        if assumed:
-            raise LogError(f"{exc} ({assumed})") from None
-        raise
-    if assumed:
-        res = dataclasses.replace(res, warnings=(assumed, *res.warnings))
-    s = summary(model, log, res)
-    warn = None
-    if seed:
-        if progress:
-            progress("Table 3 with Tables 1-2 and with the identified theta")
-        s["table3"] = seed(model, res.theta0)
-        s["table3_comparison"], warn = plant_comparison(model, log, res)
-        if warn:
-            s["warnings"] = [*s["warnings"], warn]
-    if save:
-        write_json(save, {**s, "provenance": provenance(model)})
-    return FitReport(model, log, res, s, warn)
-
-
-def load_theta(path, model):
-    """theta0 (p,) from a JSON written by ``pm2dof identify fit --save`` (checks the names)."""
-    import json
-    d = json.loads(open(path).read())
-    if list(d.get("param_names", [])) != list(model.param_names):
-        raise ArgumentError(f"{path}: param_names {d.get('param_names')} do not match model "
-                         f"{model.name!r} ({list(model.param_names)})")
-    th = np.asarray(d["theta0"], dtype=float)
-    if th.shape != (len(model.param_names),) or not np.isfinite(th).all():
-        raise ArgumentError(f"{path}: theta0 must be {len(model.param_names)} finite numbers")
-    return th

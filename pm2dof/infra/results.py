@@ -29,13 +29,19 @@ def _git_commit():
         return None
 
 
-COMMAND_LINE = None  # set by pm2dof.cli.main to the command it runs; else sys.argv
-
-
-def provenance(model):
+def provenance(model, command_line=None):
     """Where a result came from: the pm2dof version, the model file and the generated code
     (paths, hashes, whether shipped with pm2dof), git commit (only from a checkout), versions,
-    command line."""
+    command line.
+
+    Parameters
+    ----------
+    model : Model
+    command_line : sequence of str, optional
+        The command that produced the result, recorded as given: ``pm2dof`` passes its own
+        (``["pm2dof", "table3", "--save", "t.json"]``) down to whatever writes a file. None:
+        this process's ``sys.argv`` (a script calling pm2dof).
+    """
     from ..core.paths import is_shipped
     from ..core.version import __version__
     out = {
@@ -52,7 +58,7 @@ def provenance(model):
         "python": platform.python_version(),
         "numpy": np.__version__,
         "machine": f"{platform.machine()} {platform.system()}, {os.cpu_count()} cores",
-        "command_line": list(COMMAND_LINE) if COMMAND_LINE is not None else sys.argv,
+        "command_line": list(sys.argv if command_line is None else command_line),
     }
     if out["git_commit"] is None:    # an installed package: no checkout, no key
         del out["git_commit"]

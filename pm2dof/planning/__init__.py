@@ -12,7 +12,9 @@
 * :mod:`.plan` -- :class:`Plan`, the sampled :class:`pm2dof.Trajectory`;
 * :mod:`.torques` -- inverse dynamics along a timed path (Me, Ce, StF, then the split);
 * :mod:`.pathfile` -- path files (TOML) for ``pm2dof plan``, and :func:`model_move_path`: a model
-  file's move (a line, or ``path = ...``) as a path; :mod:`.report` what ``pm2dof plan`` prints.
+  file's move (a line, or ``path = ...``) as a path;
+* :mod:`.jobs` -- what ``pm2dof plan`` runs (:func:`.jobs.run_plan`), :mod:`.report` what it
+  prints and its CSV format.
 
 Imports :mod:`pm2dof.core`, :mod:`pm2dof.control` and NumPy; CasADi only inside
 :func:`plan_smooth`.

@@ -10,7 +10,7 @@ so |p'| = 1 exactly and p'' is the curvature vector. s(u) is integrated with 4-p
 Gauss-Legendre on 4096 sub-intervals of every span (|c'| is smooth: to rounding), and u(s) is
 the cubic Hermite interpolant of that table (du/ds = 1 / |c'| at its nodes): p within 1.5e-15 m
 of the table 256 times coarser polished by two Newton steps (each a Gauss-Legendre integral)
-used before issue 25, which this evaluates ~10x faster (building a spline takes ~10 ms). c and
+that an earlier version used, which this evaluates ~10x faster (building a spline takes ~10 ms). c and
 its derivatives are each span's cubic in u - u_j by Horner's rule.
 """
 import numpy as np

@@ -2,7 +2,7 @@
 """Many-rollout studies: robustness to model error, gain maps, when adaptation pays.
 
 ``read_study`` (spec) -> ``run_study`` (runner: Dask tasks of ``run_chunk`` in evaluate, rows
-into Parquet by store) -> ``study_report`` (report). ``pm2dof study run|report|bench`` are the
+into Parquet by store) -> ``run_report`` (jobs: the summary of report, written beside the rows). ``pm2dof study run|report|bench`` are the
 commands. Nothing here is imported by ``import pm2dof`` until used.
 """
 from .evaluate import rollout_setup, run_chunk

@@ -1,5 +1,5 @@
 # What a study's rows say: RMSE per controller, NA over APD on the same plants, gain maps, runs.
-"""Summaries of a study's results (``pm2dof study report``).
+"""Summaries of a study's results (``pm2dof study report``, run by :func:`.jobs.run_report`).
 
 Every statistic is over the rows of the Parquet dataset; medians and 5th/95th percentiles
 because RMSE distributions are skewed. The RPE of a controller over APD (100 (APD - X) / APD,
@@ -8,9 +8,7 @@ move and repetition.
 """
 import numpy as np
 
-from .store import read_results
-
-__all__ = ["summarise", "format_report", "run_report", "columns_of"]
+__all__ = ["summarise", "format_report", "columns_of"]
 
 _METRIC_KEYS = {"rollout", "controller", "law", "move", "draw", "run", "rmse", "max_error",
                 "peak_tau", "n_saturated", "n_singular", "n_non_finite", "diverged",
@@ -208,22 +206,3 @@ def format_report(s):
                 lines.append(f"{r:4d}" + "".join(
                     f"{_f(by[n][r][key] if r in by[n] else None, fmt):>{w}s}" for n in cols))
     return "\n".join(lines)
-
-
-def run_report(out):
-    """``pm2dof study report DIR``: the summary, also written to DIR/summary.json.
-
-    Returns (summary dict, {column: ndarray}, study.json dict): the summary is the command's
-    ``--json`` (the text: :func:`format_report`), the rest is for the figures."""
-    from pathlib import Path
-
-    from ..infra.results import write_json
-    from .spec import GRID_KEYS, StudyFileError
-    info, table = read_results(out)
-    cols = columns_of(table)
-    if not len(cols.get("rollout", [])):
-        raise StudyFileError(f"{out}: no rows yet; run `pm2dof study run` with --out {out}")
-    info = {**info, "grid_keys": [k for k in cols if k in GRID_KEYS]}
-    s = summarise(cols, info)
-    write_json(Path(out) / "summary.json", {**s, "provenance": info.get("provenance")})
-    return s, cols, info

@@ -101,7 +101,7 @@ def _close(client):
 
 
 def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=10.0,
-              progress=True, notify=None):
+              progress=True, notify=None, command_line=None):
     """Run every rollout of ``study`` (a :class:`~pm2dof.studies.spec.Study`) into ``out``.
 
     Parameters
@@ -127,6 +127,8 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
         ready, ``{"study", "rollouts", "chunks", "skipped", "out"}`` (``skipped``: chunks
         already there); then, once the cluster is up, ``{"where", "dashboard"}``
         (``dashboard``: its link, or None).
+    command_line : list of str, optional
+        The command ``out/study.json``'s provenance records (None: ``sys.argv``).
 
     Returns
     -------
@@ -146,7 +148,7 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
         raise ArgumentError(f"--workers must be >= 1, got {workers}")
     model = load_model(study.model_path, study.generated_path)
     check_study(study, model)
-    done = prepare_out(out, study, model)
+    done = prepare_out(out, study, model, command_line)
     todo = [i for i in range(study.n_chunks) if i not in done]
     rows_done = sum(len(study.chunk_units(i)) for i in done) * study.runs
     notify = notify or (lambda notice: None)

@@ -34,8 +34,10 @@ def chunk_path(out, i):
     return Path(out) / "results" / f"chunk-{i:06d}.parquet"
 
 
-def prepare_out(out, study, model):
+def prepare_out(out, study, model, command_line=None):
     """Create or reopen ``out`` for ``study``; returns the set of finished chunk indices.
+    ``out/study.json`` records the study and its provenance (``command_line``: the command it
+    records, None: ``sys.argv``).
 
     Raises StudyOutError when ``out`` is not a writable folder or holds results of a study
     with another identity. Leftover temporary files of an interrupted run are removed.
@@ -83,7 +85,7 @@ def prepare_out(out, study, model):
                       "study_file": study.path, "study_text": study.text, "quick": study.quick,
                       "rollouts": study.n_rollouts, "chunks": study.n_chunks,
                       "runs": study.runs, "payload_change": study.payload_change,
-                      "complete": False, "rows": None, "provenance": provenance(model)})
+                      "complete": False, "rows": None, "provenance": provenance(model, command_line)})
     return done
 
 

@@ -1,4 +1,4 @@
-# Capability maps (issue 11, part 3) against an independent LP and direct geometry.
+# Capability maps against an independent LP and direct geometry.
 import json
 
 import numpy as np

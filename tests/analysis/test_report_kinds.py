@@ -1,4 +1,4 @@
-# `pm2dof report` on the new kinds (issue 26): it crashed on a platform (ik given (x, y)).
+# `pm2dof report` on platforms, linear actuators, gravity: it crashed on a platform (ik of (x, y)).
 import re
 
 import numpy as np
@@ -29,5 +29,5 @@ def test_printed_efforts_carry_the_actuators_unit():
     assert effort_unit(pm2dof.load_model("shang2010")) == "N m"
     assert effort_unit(pm2dof.load_model("rpr3_platform")) == "N"
     res = {"model": "prr_point", "tau_max": [300.0] * 3, "margin": 1.0, "grid": 10, "paths": []}
-    assert format_report(res, None, effort_unit(pm2dof.load_model("prr_point"))).startswith(
+    assert format_report(res, effort_unit(pm2dof.load_model("prr_point"))).startswith(
         "model prr_point: tau_max [300.0, 300.0, 300.0] N, margin")

@@ -1,4 +1,4 @@
-# The torque splits in closed loop (issue 11, part 4): the comparison docs/results-redundancy.md reports.
+# The torque splits in closed loop: the comparison docs/results-redundancy.md reports.
 import json
 
 import numpy as np
@@ -60,7 +60,7 @@ def test_splits_command(tmp_path, capsys):
 
 
 def test_zero_preload_rows_say_what_they_count(capsys):
-    """Issue 22, item 11: with the default preload 0 at 6 N m the preload rows of the low-speed
+    """With the default preload 0 at 6 N m the preload rows of the low-speed
     move count infeasible samples and peak at exactly tau_max while nothing is clipped. That is
     the split keeping the signs (+, +, +), and its fallback (largest worst-case margin) putting an
     actuator at the limit: the table must say so, and its margin column shows the reversal."""

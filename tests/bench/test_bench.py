@@ -90,10 +90,10 @@ def test_targets_and_machine(results):
 
 
 def test_refined_plans_beside_unrefined_ones_and_toppra(results):
-    """Issue 25 section 3: refined plans on the model's fastest move, a half circle, the
-    spline of issue 28 and both shipped paths, both splits, with and without friction, timed
-    beside an unrefined plan of the same final grid and (friction-free) toppra; the worst
-    ratios are the targets' values."""
+    """Refined plans on the model's fastest move, a half circle, a user's spline (the one
+    the planner once exceeded tau_max on between its samples) and both shipped paths, both
+    splits, with and without friction, timed beside an unrefined plan of the same final grid and
+    (friction-free) toppra; the worst ratios are the targets' values."""
     rows = results["plan_paths"]
     assert set(rows) == {"line", "half_circle", "spline", "pick_and_place", "curve"}
     cases = [c for r in rows.values() for c in r.values()]
@@ -189,7 +189,7 @@ CASADI_SYMBOL_EXPORT int m_g(const casadi_real** arg, casadi_real** res, casadi_
 
 
 def test_platform_rows_beside_the_paper_robot():
-    """Issue 26 "Speed": the 3-RRR and 4-RRR beside the paper's robot in one run (tiny
+    """The platforms' speed: the 3-RRR and 4-RRR beside the paper's robot in one run (tiny
     batches: the numbers are noise, their presence and the report's rows are checked)."""
     from pm2dof.bench.models import BENCH_MODELS, PAPER_MODEL, models_bench
     r = models_bench(repeats=2, batch_s=0.002, c_inner=200, n_roll=300)

@@ -105,7 +105,7 @@ def test_tau_max_one_value_for_every_actuator(m):
         with pytest.raises(ArgumentError, match=r"tau_max\[0\] \(leg 1\) = -?\d.* N m must be in "
                                                 r"\(0, 1e\+06\]") as info:
             NAController(m, tau_max=bad)
-        assert "preload" not in str(info.value)     # none was set (issue 28: it spoke of one)
+        assert "preload" not in str(info.value)     # none was set (the message spoke of one)
     with pytest.raises(ArgumentError, match=r"tau_max must be one finite number or 3 \(one per "
                                             r"actuator\), got \[1.0, 2.0\]"):
         NAController(m, tau_max=[1.0, 2.0])

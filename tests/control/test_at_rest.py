@@ -1,4 +1,4 @@
-# Issue 25: at rest on its reference, with zero error, no controller pushes the robot.
+# At rest on its reference, with zero error, no controller pushes the robot (sign(0) = 0).
 """Controllers at rest (eq. 2 with sign(0) = 0).
 
 * Every controller (NA, NA with projection, APD, CTC, LQR), with each torque split, at rest on

@@ -1,5 +1,5 @@
 # Gains the stability proof allows, rollouts that end (never NaN), controller vs model, step inputs.
-"""Controller gains, rollout outcomes, the controller's model and the step's inputs (issue 22).
+"""Controller gains, rollout outcomes, the controller's model and the step's inputs.
 
 * Gains outside Sect. 4's conditions (K_d, Q > 0, Gamma >= 0) or eq. 40's (Kp, Kv > 0), not
   finite, of the wrong shape or not diagonal raise :class:`pm2dof.GainError` naming the gain,
@@ -309,6 +309,6 @@ def test_step_refuses_bad_array_likes_and_keeps_its_state(args, text):
     before = a.state
     with pytest.raises((ValueError, TypeError), match=text) as info:
         a.step(*args(q))
-    assert isinstance(info.value, pm2dof.Pm2dofError), type(info.value)   # typed (issue 19)
+    assert isinstance(info.value, pm2dof.Pm2dofError), type(info.value)   # a typed error
     after = a.state
     assert all(np.array_equal(before[k], after[k]) for k in before)

@@ -2,7 +2,8 @@
 """pm2dof.control.plant_step on every shipped model.
 
 * Every shipped model's plant is stable near rest along each of its moves (h lambda <= 2.5).
-  Before issue 26's fix prr_point, prr3_platform and rpr3_platform had 3.9, 3.9 and 10.2.
+  Before their plants took more RK4 substeps, prr_point, prr3_platform and rpr3_platform had
+  3.9, 3.9 and 10.2.
 * The rate is the true one: the generated ``plant_step`` (RK4, zero torque) applied to a small
   velocity at rest along the slowest-stable eigenvector shrinks it by |R(-h lambda)| per step,
   R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24 (RK4's stability polynomial; the law is linear in v

@@ -1,4 +1,4 @@
-# Torque splits (issue 11, part 2): exact against independent LP/QP solvers; S^T tau unchanged.
+# Torque splits: exact against independent LP/QP solvers; S^T tau unchanged.
 """The three torque distributions of the generated C, checked independently.
 
 * ``Model.torque_splits`` (the same generated code as the controller steps' splits) against
@@ -143,7 +143,7 @@ def test_zero_preload_still_keeps_the_signs_as_the_lp_says():
     """A preload of 0 (the model file's default) is not "no preload": every tau_i keeps its sign
     where some torques within the limits can (mode 0, least norm), and where none can (mode 1)
     the torques are HiGHS's largest worst-case margin, which is < 0 there. Along the low-speed
-    move's inverse dynamics at 6 N m (issue 22, item 11) both happen: keeping (+, +, +) needs
+    move's inverse dynamics at 6 N m both happen: keeping (+, +, +) needs
     more torque than min-norm, so `splits --tau-max 6.0` counts preload-infeasible samples."""
     from pm2dof.control.trajectory import model_move
     m = pm2dof.load_model()

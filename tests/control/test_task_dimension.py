@@ -1,6 +1,6 @@
 # The runtime follows the model's task dimension m = Model.dof: shapes, errors naming m, paths with
 # an orientation, reference files, refusals of what a mechanism cannot do; Table 3 unchanged.
-"""No runtime function assumes a task dimension of 2 (issue 26).
+"""No runtime function assumes a task dimension of 2 (a platform's is 3).
 
 Every shipped model today is a point end effector (m = 2); an m = 3 platform has no generated
 code on this branch, so the checks are: every function's shapes follow ``Model.dof`` (read from

@@ -361,7 +361,7 @@ def test_paper_move_and_extended_errors():
 
 
 def test_the_paper_moves_have_one_home_the_model_file():
-    """PAPER_MOVES is read from the shipped model file (issue 19): the same trajectory either
+    """PAPER_MOVES is read from the shipped model file: the same trajectory either
     way, and an edit of the file's move is what paper_move would follow."""
     import pm2dof
     from pm2dof.control.trajectory import model_move

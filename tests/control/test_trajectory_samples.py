@@ -1,4 +1,4 @@
-# The sampled references of issue 26's contract: Trajectory.from_samples and Trajectory.hold.
+# The sampled references of every kind of robot: Trajectory.from_samples and Trajectory.hold.
 import numpy as np
 import pytest
 
@@ -69,7 +69,7 @@ def test_bad_samples_name_what_is_wrong(call, words):
 
 
 def test_an_object_with_a_trajectorys_fields_is_not_a_trajectory():
-    """The duck-typing branch went with identification's pseudo-trajectories (issue 29): an
+    """The duck-typing branch went with identification's pseudo-trajectories: an
     object with t, xd, xd_dot, xd_ddot and period is refused, naming what to build instead."""
     from types import SimpleNamespace
 

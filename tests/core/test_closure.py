@@ -1,5 +1,5 @@
 # The extra legs check the encoders: fk and the controller steps refuse angles that do not close.
-"""Issue 22 #1: ``fk`` returned poses the robot cannot be in.
+"""``fk`` returned poses the robot cannot be in.
 
 With three encoders for two degrees of freedom, fk fits the tip to all elbow circles by least
 squares; the closure residual |O - B_i| - lb_i of every leg measures how inconsistent the

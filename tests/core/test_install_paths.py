@@ -1,5 +1,5 @@
 # Where models and their generated code live: shipped names, user folders, the derive guards.
-"""Model references and generated-code folders (issue 18), and the derive guards (issue 22 #4).
+"""Model references and generated-code folders, and the derive guards.
 
 The full install (wheel and sdist in fresh virtual environments, used from an empty folder) is
 ``tests/install/smoke.sh`` (``make check-install``, run by CI); these are the in-process parts.
@@ -12,6 +12,7 @@ import re
 import shutil
 import subprocess
 import sys
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -38,14 +39,10 @@ def _derive(*args, build=False):
     times, ~1.3 s each; the rest of ``pm2dof derive`` (checks, CasADi, C, manifest) runs every
     time."""
     from pm2dof import cli
-    from pm2dof.infra import results
-    out, command_line = io.StringIO(), results.COMMAND_LINE
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out), \
-                derivations.shared_in_derive():
-            rc = cli.main(["derive", *map(str, args), *([] if build else ["--no-build"])])
-    finally:
-        results.COMMAND_LINE = command_line          # main() records the command line it ran
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out), \
+            derivations.shared_in_derive():
+        rc = cli.main(["derive", *map(str, args), *([] if build else ["--no-build"])])
     return rc, out.getvalue()
 
 
@@ -73,6 +70,12 @@ def libraries(tmp_path_factory):
             (store / sha).mkdir(exist_ok=True)
             for f in (lib, stamp_path(lib)):
                 shutil.copy2(f, store / sha / f.name)
+
+        def kept(self, gen):
+            """The library kept from ``gen``'s C, or None."""
+            name, sha = self._key(gen)
+            lib = store / sha / f"lib{name}.so"
+            return lib if lib.is_file() else None
 
         def reuse(self, gen):
             name, sha = self._key(gen)
@@ -147,28 +150,62 @@ def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tm
     assert rc == 0 and (gen / "manifest.json").is_file() and (gen / "myrobot.c").is_file(), out
     assert json.loads((gen / "manifest.json").read_text())["model_file"] == "../../myrobot.toml"
     assert not (gen / "libmyrobot.so").exists()          # --no-build: compiled on first use
-    m = pm2dof.load_model(model)
-    err = capfd.readouterr().err
+    with pytest.warns(pm2dof.CompileWarning) as said:
+        m = pm2dof.load_model(model)
     assert (gen / "libmyrobot.so").is_file()
-    # a stage line with the C file's size and an estimate, then the time it took
-    assert re.search(r"pm2dof: compiling myrobot\.c \(\d\.\d MB of C\) with .*: about \d+ s on "
-                     r"an idle processor .*first use of the generated code in ", err), err
-    assert re.search(rf"pm2dof: compiled {re.escape(str(gen))}/libmyrobot\.so in \d+\.\d s",
-                     err), err
+    # a warning with the C file's size and an estimate, then one with the time it took; a
+    # Python caller filters them (the CLI prints them: the next test), nothing is printed
+    lines = [str(w.message) for w in said if w.category is pm2dof.CompileWarning]
+    assert len(lines) == 2, lines
+    assert re.fullmatch(r"compiling myrobot\.c \(\d\.\d MB of C\) with .*: about \d+ s on an "
+                        rf"idle processor .* \(first use of the generated code in "
+                        rf"{re.escape(str(gen))}\)", lines[0]), lines
+    assert re.fullmatch(rf"compiled {re.escape(str(gen))}/libmyrobot\.so in \d+\.\d s",
+                        lines[1]), lines
+    assert "compil" not in capfd.readouterr().err
     libraries.keep(gen)
     assert Path(m.generated) == gen and m.spec.legs[0].la == 0.246
     q = m.ik([0.25, 0.26])
     assert abs(m.fk(q[:3]) - [0.25, 0.26]).max() < 1e-12
-    pm2dof.load_model(str(model))                        # a second load compiles nothing
-    assert "compiling" not in capfd.readouterr().err
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", pm2dof.CompileWarning)
+        pm2dof.load_model(str(model))                    # a second load compiles nothing
     # the folder moves with its model file: the manifest names it relatively
     shutil.move(tmp_path / "robots", tmp_path / "moved")
     assert pm2dof.load_model(tmp_path / "moved" / "myrobot.toml").name == "myrobot"
 
 
+def test_the_cli_prints_the_compile_on_first_use_as_stage_lines(tmp_path, capfd, monkeypatch,
+                                                                libraries):
+    """``pm2dof`` turns each CompileWarning into the line it printed before the warnings: the
+    C file's size and the estimate, then the time it took. The compiler is a stand-in (CC):
+    it copies the library the test above compiled from the same C, or else builds at -O0."""
+    from pm2dof import cli
+    model = _robot(tmp_path / "robots")
+    assert _derive(model)[0] == 0
+    gen = tmp_path / "robots" / "generated" / "myrobot"
+    kept = libraries.kept(gen)
+    cc = tmp_path / "cc.sh"
+    cc.write_text('#!/bin/sh\nwhile [ "$1" != "-o" ]; do shift; done\n'
+                  f'cp {kept} "$2"\n' if kept else '#!/bin/sh\nexec cc "$@" -O0\n')
+    cc.chmod(0o755)
+    monkeypatch.setenv("CC", str(cc))
+    capfd.readouterr()
+    assert cli.main(["report", "--model", str(model)]) == 0
+    out, err = capfd.readouterr()
+    lines = err.splitlines()
+    assert len(lines) == 2 and "myrobot" in out, err
+    assert re.fullmatch(rf"pm2dof: compiling myrobot\.c \(\d\.\d MB of C\) with "
+                        rf"{re.escape(str(cc))} -O3: about \d+ s on an idle processor \(16 s per "
+                        rf"MB\), longer while other programs use it \(first use of the generated "
+                        rf"code in {re.escape(str(gen))}\)", lines[0]), lines
+    assert re.fullmatch(rf"pm2dof: compiled {re.escape(str(gen))}/libmyrobot\.so in \d+\.\d s",
+                        lines[1]), lines
+
+
 def test_generated_elsewhere_is_named_by_generated(tmp_path, libraries):
     model = _robot(tmp_path)
-    rc, out = _derive("--model", model, "--out", tmp_path / "build" / "c")   # --model: issue 22 #6
+    rc, out = _derive("--model", model, "--out", tmp_path / "build" / "c")   # --model, as every command
     assert rc == 0, out
     libraries.reuse(tmp_path / "build" / "c")
     with pytest.raises(pm2dof.StaleGeneratedCodeError) as info:
@@ -216,7 +253,7 @@ def test_edited_geometry_names_the_exact_derive_command(tmp_path):
 
 
 def test_derive_refuses_a_folder_generated_from_another_model_file(tmp_path):
-    """Issue 22 #4: a copied model file that keeps an existing name, derived into that name's
+    """A copied model file that keeps an existing name, derived into that name's
     folder, used to overwrite it silently. Now refused naming both files; --force overrides."""
     pkg = tmp_path / "pkg"                       # the package's layout: models/, generated/<name>/
     original = _robot(pkg / "models", name="shang2010", la="0.244")

@@ -4,7 +4,7 @@
 * Round trip on every model: wherever ``ik`` answers, ``fk(ik(x)[:n]) == x``. On the five-bar,
   ``ik`` refuses exactly the positions whose pose lies in the other assembly mode -- confirmed
   independently: the NumPy reference with the other ``fk_branch`` reaches them and returns.
-  (This is the test that would have caught the 197-of-400 failure of issue 11.)
+  (This is the test that would have caught the 197-of-400 failure of the capability maps.)
 * The type II measure of the C equals an SVD of S with unit rows (NumPy reference) on every
   model, and vanishes on the five-bar's singular curve (distal links aligned, det S = 0).
 * Redundancy removes type II singularities: the 3- and 4-leg models never come near one.

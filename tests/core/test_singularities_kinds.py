@@ -1,4 +1,4 @@
-# Both singularity measures of issue 26's kinds against NumPy written from the model-file reference.
+# Both singularity measures of every leg kind against NumPy written from the model-file reference.
 """Type I and type II measures on every model, any leg kind and end effector.
 
 Written from docs/model-file.md ("Singularities"), not from the derivation's code:

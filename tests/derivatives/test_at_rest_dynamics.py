@@ -1,4 +1,4 @@
-# Issue 25: the model's dynamics at rest (eq. 2 with sign(0) = 0) and their linearisation there.
+# The model's dynamics at rest (eq. 2 with sign(0) = 0) and their linearisation there.
 """The model at rest, on every model file (m = model.dof task coordinates, any leg kind).
 
 * ``forward_dynamics(xe, 0, tau, theta)`` = Me^-1 (S^T tau - Ge) (eq. 10 at rest, Me, S, Ge

@@ -1,5 +1,5 @@
 # CTC and LQR: the generated steps against the NumPy reference, gains, planning, rollouts.
-"""The computed-torque and time-varying LQR controllers (issue 21, item 3).
+"""The computed-torque and time-varying LQR controllers.
 
 * the generated ``ctc_step`` and ``lqr_step`` against :mod:`pm2dof.reference.control` (plain
   NumPy, its own kinematics and dynamics) at random states: tau_a and the state to 1e-10;

@@ -1,5 +1,5 @@
 # The generated Jacobians against central differences of the generated functions themselves,
-# structural identities, and bad input (issue 21, items 1-2).
+# structural identities, and bad input.
 """Checks of :mod:`pm2dof.core.derivatives` on every shipped model.
 
 Finite differences: central, f'(z) ~ (f(z + h) - f(z - h)) / 2h. Its error is the truncation

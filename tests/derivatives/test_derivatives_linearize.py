@@ -1,6 +1,5 @@
 # Linearisation along trajectories, python-control state space, and the closed-loop check.
-"""``linearize_trajectory``, ``statespace`` and what the linear model predicts (issue 21,
-item 2).
+"""``linearize_trajectory``, ``statespace`` and what the linear model predicts.
 
 The closed-loop check: computed torque at rest on the smooth-friction model, against a plant
 whose truth is that model (so the linear model describes the plant). The sampled closed loop

@@ -1,5 +1,5 @@
 # `pm2dof derive` on an unchanged model: "up to date" without SymPy or CasADi; --force derives.
-"""Issue 28: re-running ``pm2dof derive`` on an unchanged model re-derived and recompiled
+"""Re-running ``pm2dof derive`` on an unchanged model re-derived and recompiled
 everything (17.8 s). The shipped shang2010's generated folder, copied beside a copy of its
 model file, is what ``derive`` would write: the check says so, and names what changed when
 something did."""

@@ -1,4 +1,4 @@
-# pm2dof export on issue 26's kinds: a platform (task x, y, phi), linear actuators (N, m) and gravity.
+# pm2dof export on the other kinds: a platform (task x, y, phi), linear actuators (N, m) and gravity.
 """One CMake build for the module, at -O0 as in test_export_project.py: a super-project holding
 two exports, prr3_platform (a moving platform, m = 3, on PRR legs: linear actuators) and
 shang2010_vertical (the paper's robot under gravity), warnings as errors on the hand-written

@@ -1,4 +1,4 @@
-# pm2dof export (issue 27): the exported C project builds, passes its ctest, links beside another
+# pm2dof export: the exported C project builds, passes its ctest, links beside another
 # model's library, and bad requests are refused with one clear line.
 """One CMake build for the module, at -O0 for the compile time: a super-project holding two
 exports, shang2010 and fivebar, with warnings as errors on the hand-written files. Its ctest

@@ -1,4 +1,4 @@
-# The move animated (issue 11, part 5): a real GIF, frames as asked, errors for bad options.
+# The move animated: a real GIF, frames as asked, errors for bad options.
 import pytest
 from PIL import Image
 
@@ -27,7 +27,7 @@ def test_bad_options_are_refused(tmp_path):
 
 
 def test_frames_are_the_full_redraws_and_drawn_once(monkeypatch):
-    """Issue 28: the GIF took 244 full redraws for 80 frames (35.8 s). The frames are now the
+    """The GIF took 244 full redraws for 80 frames (35.8 s). The frames are now the
     background drawn once and only the moving artists per frame; each is the figure's full
     redraw to one grey level at a few antialiased text pixels."""
     import io

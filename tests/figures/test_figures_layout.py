@@ -1,4 +1,4 @@
-# Layout of every figure pm2dof writes, checked as a reader would (issue 22, item 12): nothing
+# Layout of every figure pm2dof writes, checked as a reader would: nothing
 # clipped, no text over text, no legend or note over the data, readable ticks, colour bars named.
 """The figures, built from small runs of the real analyses, must pass :func:`layout_problems`.
 

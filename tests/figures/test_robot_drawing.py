@@ -1,5 +1,5 @@
 # The drawn robot (pm2dof.figures.robot) closes its loops: each leg's drawn tip is the point it
-# must reach, for every leg kind and end effector (issue 26: the animation of any mechanism).
+# must reach, for every leg kind and end effector (the animation of any mechanism).
 """At poses sampled by the generated ik: every leg's polyline ends at P_i(xe) (xe itself for a
 point, a vertex of the drawn platform polygon for a platform), a PRR slider lies on its rail
 within the rail's length, an RPR leg's drawn length is its actuated length qa_i and its

@@ -1,5 +1,5 @@
 # pm2dof identify's sub-commands: one pipeline, files naming their model by path.
-"""The command line of identification (issue 19) and the model its files record (issue 18).
+"""The command line of identification and the model its files record.
 
 * ``pm2dof identify`` without a sub-command fails with one line naming them (exit 2); each
   sub-command has its own help with an example.
@@ -176,7 +176,8 @@ def test_importing_identification_loads_no_heavy_library():
             "import pm2dof.identification.base, pm2dof.identification.log, "
             "pm2dof.identification.excitation, pm2dof.identification.fit, "
             "pm2dof.identification.consistent, pm2dof.identification.design, "
-            "pm2dof.identification.report, pm2dof.identification.monte_carlo, "
+            "pm2dof.identification.report, pm2dof.identification.jobs, "
+            "pm2dof.identification.monte_carlo, "
             "pm2dof.identification.model_ref, pm2dof.identification.signals\n"
             "print(sorted({k.split('.')[0] for k in sys.modules} & {'scipy', 'casadi', "
             "'pyarrow'}))")
@@ -212,7 +213,7 @@ def test_multisine_refuses_a_bad_duration():
 
 def test_an_excitation_file_lists_every_problem(tmp_path):
     """Read like model and study files (core.validate): every problem at once, each with its key
-    (issue 29); before, the first missing key stopped the reading."""
+    (as every input file's); before, the first missing key stopped the reading."""
     from pm2dof.identification.signals import ExcitationError
     text = EXAMPLE.read_text()
     lines = [ln for ln in text.splitlines() if not ln.startswith("b_y")]

@@ -1,5 +1,5 @@
 # What identify fit's output may be read as: the --seed-na comparison, honest intervals, the band.
-"""Issue 28, the wrong conclusions:
+"""Conclusions the output must not invite:
 
 1. ``fit LOG --seed-na`` simulates Table 3 on the model file's ``[plant]``; for a log of
    another robot it says so, and warns in one line when the identified theta is outside
@@ -148,7 +148,7 @@ def test_motionless_log_names_the_file_and_cutoff(m):
 
 
 def test_messages_about_logs_name_units_option_and_model(tmp_path, m, capsys):
-    """Issue 28 item 7: t in ms, timestamp jitter, a log that names no model."""
+    """t in ms, timestamp jitter, a log that names no model."""
     from pm2dof.identification.fit import identify_log
     from pm2dof.identification.log import LogError, read_log
     log = _without_metadata(excite(m, multisine(m, duration=2.0)))

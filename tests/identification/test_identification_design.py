@@ -181,8 +181,8 @@ def test_excite_runs_the_file(tmp_path, m, designed, capsys):
 
 def test_design_is_deterministic_and_runs_ipopt_blas_on_one_thread(m, designed):
     """The same arguments give the same file bit for bit, whatever CasADi's OpenBLAS was set
-    to before (its default, one thread per core, changed the shipped design's IPOPT path:
-    issue 22, item 5); during the solve it runs on one thread, and is restored after."""
+    to before (its default, one thread per core, changed the shipped design's IPOPT path);
+    during the solve it runs on one thread, and is restored after."""
     lib = _casadi_openblas()
     assert lib is not None, "CasADi's bundled OpenBLAS was not found"
     seen = []
@@ -221,7 +221,7 @@ def test_progress_bar_and_summary_report_one_log_det(m):
 
 
 def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
-    """examples/excitation_shang2010.toml (issue 22, item 5): its [design] holds the arguments
+    """examples/excitation_shang2010.toml: its [design] holds the arguments
     of ``pm2dof identify design`` today (the README's command), IPOPT's options,
     what it was designed with, and figures that recompute from its coefficients with today's
     model: cond and log det on the run's samples and on the objective's, at the optimum and at
@@ -233,7 +233,7 @@ def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
                 if p.default is not inspect.Parameter.empty and k != "progress"
                 and not k.startswith("phi_")}
     assert {k: info[k] for k in defaults} == defaults
-    # a point has no phi: its file records no phi limits (the 2-D file is as before issue 26)
+    # a point has no phi: its file records no phi limits (the 2-D file is as before platforms)
     assert not any(k.startswith("phi_") for k in info)
     assert info["ipopt"] == IPOPT_OPTIONS
     assert info["ipopt_status"] == "Solve_Succeeded" and info["blas_threads"] == 1
@@ -264,7 +264,7 @@ def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
 
 def test_ctrl_c_during_design_writes_nothing_and_exits_130(tmp_path):
     """IPOPT catches SIGINT and returns User_Requested_Stop: the design used to write that
-    half-made excitation and exit 0 (issue 28)."""
+    half-made excitation and exit 0."""
     import fcntl
     import os
     import signal

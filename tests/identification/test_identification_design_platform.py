@@ -1,4 +1,4 @@
-# Optimal excitation of a platform (issue 26): x, y and phi series, phi's own limits, its file, a fit from its log.
+# Optimal excitation of a platform: x, y and phi series, phi's own limits, its file, a fit from its log.
 import numpy as np
 import pytest
 

@@ -231,7 +231,7 @@ def test_round_trip_simulated_robot_log_identify(tmp_path, m, capsys):
     assert saved["param_names"] == list(m.param_names)
     assert np.array_equal(saved["theta0"], printed["theta0"])
     api = identify_log(m, log)
-    assert isinstance(api, Identification)          # a frozen dataclass (issue 29), not a dict
+    assert isinstance(api, Identification)          # a frozen dataclass, not a dict
     with pytest.raises(dataclasses.FrozenInstanceError):
         api.theta0 = None
     assert isinstance(api.warnings, tuple) and api.names == printed["base_parameters"]

@@ -77,7 +77,7 @@ def test_nan_row_is_named(tmp_path, good):
 
 def test_every_problem_of_a_log_file_is_listed_at_once(tmp_path, good):
     """A LogError is an InputFileError like a model file's: the file, then one line per problem
-    (issue 29); before, only the first (the NaN) was named."""
+    (as every input file's); before, only the first (the NaN) was named."""
     from pm2dof.core.errors import InputFileError
     t, tau = good.t.copy(), good.tau.copy()
     tau[17, 1] = np.nan
@@ -213,7 +213,7 @@ def test_time_in_ms_is_named_against_the_sample_period(tmp_path, good):
 
 
 def test_latin1_comment_is_read_and_binary_junk_is_one_line(tmp_path, good, capsys):
-    """Both were a UnicodeDecodeError traceback from read_log and identify fit (issue 28)."""
+    """Both were a UnicodeDecodeError traceback from read_log and identify fit."""
     p = write_log(tmp_path / "log.csv", good)
     raw = p.read_bytes()
     latin = tmp_path / "latin.csv"

@@ -1,5 +1,5 @@
-# pm2dof identify's outputs, byte for byte as committed (issue 29: files move, outputs stay).
-"""The expected files in ``expected/`` were written by the code before issue 29 moved the
+# pm2dof identify's outputs, byte for byte as committed (files move, outputs stay).
+"""The expected files in ``expected/`` were written by the code before a refactoring moved the
 excitation signals into one module (``identification/signals.py``) and made ``identify_log``
 return a dataclass; these tests hold every later change to the same bytes. Floating point may
 round differently on another machine or install (BLAS, libm): regenerate them there from a
@@ -22,7 +22,7 @@ HERE = Path(__file__).resolve().parent
 EXPECTED = HERE / "expected"
 EXAMPLE = HERE.parents[1] / "examples" / "excitation_shang2010.toml"
 
-#: sha256 of the logs `identify excite` wrote before issue 29
+#: sha256 of the logs `identify excite` wrote before that refactoring
 LOG_SHA256 = {"multisine_2s": "262ca41ad099df55ac9c4821a8c52de40132677ea6337bac24dc8802c6933693",
               "example": "819e451e9410e804d4f3c579eaeb8e14cae32232fb65725538b8d417bced5f9c"}
 

@@ -1,4 +1,4 @@
-# Issue 25: a sample at zero velocity has no Coulomb friction column (eq. 2, sign(0) = 0).
+# A sample at zero velocity has no Coulomb friction column (eq. 2, sign(0) = 0).
 """The regressor the fit stacks (:func:`pm2dof.identification.fit.stack_regressor`, eq. 13
 with xrd = xed, xrdd = xedd) at samples where the robot is at rest: the fc (and fs) columns
 are exactly zero on every model with a Coulomb law (sign(0) = +1 gave them S^T e_i). In a

@@ -184,6 +184,52 @@ def test_provenance_fields(model):
     json.dumps(prov)  # JSON-able as it is
 
 
+def test_provenance_records_the_command_line_it_is_given(model):
+    assert provenance(model, ["pm2dof", "plan", "--json"])["command_line"] == \
+        ["pm2dof", "plan", "--json"]
+    assert provenance(model, ("pm2dof", "x"))["command_line"] == ["pm2dof", "x"]   # a list
+    assert provenance(model)["command_line"] == sys.argv       # a script: its own argv
+
+
+def test_a_python_call_after_the_cli_records_its_own_command_line(model, capsys):
+    """The CLI passes its command line down; it set a module global before, which stayed
+    behind: a later call from Python recorded the CLI's last command, not its own."""
+    assert cli.main(["models"]) == 0
+    capsys.readouterr()
+    assert provenance(model)["command_line"] == sys.argv
+    assert not hasattr(results, "COMMAND_LINE")
+
+
+def test_every_file_the_cli_writes_records_its_own_command_line(tmp_path, capsys):
+    """Passed explicitly from ``cli.main`` to each writer: maps.json and the maps' PNGs, a
+    plan's JSON and its figures, a saved identification, on a platform, a linear-actuator
+    model and the gravity model."""
+    for name, argv in (
+            ("prr3_platform", ["maps", "--model", "prr3_platform", "--resolution", "11",
+                               "--out", str(tmp_path / "maps")]),
+            ("shang2010_vertical", ["plan", "--model", "shang2010_vertical", "--move", "low",
+                                    "--grid", "100", "--out", str(tmp_path / "plan")]),
+            ("rrr3_platform", ["identify", "fit", "--model", "rrr3_platform", "--duration", "2",
+                               "--save", str(tmp_path / "fit.json")])):
+        m = pm2dof.load_model(name)
+        assert cli.main(argv) == 0, capsys.readouterr().err
+        capsys.readouterr()
+        provs = []
+        if argv[0] == "maps":
+            provs.append(json.loads((tmp_path / "maps" / "maps.json").read_text())["provenance"])
+            provs += [json.loads(_png_text(f)["Description"])
+                      for f in sorted((tmp_path / "maps").glob("*.png"))]
+        elif argv[0] == "plan":
+            provs += [json.loads(_png_text(f)["Description"])
+                      for f in sorted((tmp_path / "plan").glob("*.png"))]
+        else:
+            provs.append(json.loads((tmp_path / "fit.json").read_text())["provenance"])
+        assert len(provs) >= 1, argv
+        for prov in provs:
+            check_provenance(prov, m)
+            assert prov["command_line"] == ["pm2dof", *argv], (prov["command_line"], argv)
+
+
 def _head():
     try:
         out = subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True,

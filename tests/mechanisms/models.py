@@ -1,4 +1,4 @@
-"""The issue-26 model files: in pm2dof/models/ once derived, in pm2dof/models/pending/ until the
+"""The model files of the other kinds: in pm2dof/models/ once derived, in pm2dof/models/pending/ until the
 generic derivation (the task dimension m) can derive them."""
 from pm2dof.core import paths
 

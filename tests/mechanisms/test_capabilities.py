@@ -1,4 +1,4 @@
-"""Every capability on one shipped model of each issue-26 kind, through the generated C.
+"""Every capability on one shipped model of each other kind, through the generated C.
 
 Kinds: the paper's robot in a vertical plane (gravity), PRR legs at a point (linear actuators,
 one redundant), and the 3-RRR, 4-RRR (redundant), 3-PRR and 3-RPR platforms (task x, y, phi).

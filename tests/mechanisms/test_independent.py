@@ -1,4 +1,4 @@
-"""Issue 26: the derivation of every mechanism kind against an independent formulation.
+"""The derivation of every mechanism kind against an independent formulation.
 
 The SymPy derivation (pm2dof.derive: Kinematics, Dynamics) is evaluated with lambdify and
 compared with tests/mechanisms/independent.py: every body from its own mass, centre of mass and
@@ -485,7 +485,7 @@ def test_platform_parallel_measure_is_zero_where_the_lines_meet():
 
 
 # --- CasADi conversion (in this module: it reuses the cached derivations of _case) ----------
-# Issue 26: every expression the generic derivation hands to CasADi converts (Converter), and
+# Every expression the generic derivation hands to CasADi converts (Converter), and
 # gives the lambdified value: q's trig from the angular coordinates only (kin.angular), the
 # prismatic coordinates as values; the platform's fk step; the energies.
 

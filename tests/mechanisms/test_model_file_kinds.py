@@ -1,5 +1,5 @@
-"""Issue 26: the model file's new keys (end_effector, gravity, leg kinds, [platform]) and the
-bad inputs of the issue, each one line naming the file, the table and the key."""
+"""The model file's keys of the other kinds (end_effector, gravity, leg kinds, [platform]) and
+their bad inputs, each one line naming the file, the table and the key."""
 import math
 import re
 

@@ -19,7 +19,7 @@ def test_plan_the_model_moves_as_json(capsys):
     assert row["kinematic"]["duration_s"] == pytest.approx(0.2164, abs=1e-4)
     assert row["min_max"]["duration_s"] <= row["min_norm"]["duration_s"]
     assert row["saving_min_max_percent"] > 0
-    prov = res["provenance"]                    # issue 18: every results file says its source
+    prov = res["provenance"]                    # every results file says its source
     assert prov["pm2dof"] == pm2dof.__version__ and prov["model"] == "shang2010"
     assert prov["model_file"].endswith("shang2010.toml") and prov["generated"]
     assert prov["tau_max"] == [6.0, 6.0, 6.0] and prov["margin"] == 1.0
@@ -54,7 +54,7 @@ def test_plan_a_path_file_writes_csv_and_figures(tmp_path, capsys):
 
 
 def test_plan_csv_says_where_it_came_from(tmp_path, capsys):
-    """Provenance in every CSV (issue 18): pm2dof version, model file and its hash, generated
+    """Provenance in every CSV: pm2dof version, model file and its hash, generated
     folder, git commit, tau_max (the actuators' limits), margin, split, theta."""
     from pm2dof.infra.results import provenance
     out = tmp_path / "out"
@@ -106,7 +106,7 @@ def test_path_file_errors(tmp_path, capsys):
 
 def test_path_file_problems_are_counted_from_1_and_listed_at_once(tmp_path):
     """Path files counted segments from 0 and stopped at the first problem; model and study
-    files count from 1 and list every problem (issue 28): one reader for all three."""
+    files count from 1 and list every problem: one reader for all three."""
     from pm2dof.core.errors import InputFileError, PlanError
     bad = tmp_path / "bad.toml"
     bad.write_text('colour = "red"\n[kinematic]\nv_max = -1\na_max = 10.0\n'

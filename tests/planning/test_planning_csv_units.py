@@ -16,8 +16,9 @@ import pm2dof
 from pm2dof.cli import main
 from pm2dof.core.errors import PlanError
 from pm2dof.core.task import orientation_length
+from pm2dof.planning.jobs import run_plan, write_plan_csvs
 from pm2dof.planning.pathfile import read_path_file
-from pm2dof.planning.report import format_report, run_plan, write_plan_csvs
+from pm2dof.planning.report import format_report
 
 #: a 3-D path (x, y, phi): two lines with a stop at the corner, within reach of every platform
 PLATFORM_PATH = ('[[segments]]\nkind = "polyline"\n'
@@ -99,8 +100,9 @@ def test_every_kinds_csv_read_by_name(tmp_path, name, text, tau):
     f = tmp_path / "p.toml"
     f.write_text(text)
     m = pm2dof.load_model(name)
-    _, plans, _ = run_plan(m, path=str(f), splits=("min_norm",), grid=300)
-    (csv_file,) = write_plan_csvs(tmp_path / "out", m, plans)
+    run = run_plan(m, path=str(f), splits=("min_norm",), grid=300)
+    plans = run.plans
+    (csv_file,) = write_plan_csvs(run, tmp_path / "out")
     comments, rows = _read(csv_file)
     _check_rows(m, plans["p", "min_norm"].path, rows, np.full(m.n_legs, tau))
     units = _units(comments)
@@ -141,10 +143,10 @@ def test_text_gives_each_kind_its_unit():
                       "smooth_min_max": {"duration_s": 0.3, "strict_duration_s": 0.2,
                                          "grid": 10, "tau_rate": [300.0, 3000.0, 3000.0],
                                          "solve_time_s": 1.0}}]}
-    loops = {"p": [{"margin": 1.0, "duration_s": 0.2,
+    res["closed_loop"] = {"p": [{"margin": 1.0, "duration_s": 0.2,
                     **{law: {"rmse_m": 1e-4, "max_error_m": 2e-4, "tau_peak": peak,
                              "saturated": 0, "outcome": "completed"} for law in ("na", "apd")}}]}
-    text = format_report(res, loops)
+    text = format_report(res)
     assert text.startswith("model mixed: tau_max [6.0 N m, 60.0 N, 60.0 N], margin")
     assert "(peak |tau| 5.000 N m, 50.000 N, top speed" in text
     assert "|dtau/dt| <= 300 N m/s, 3000 N/s;" in text

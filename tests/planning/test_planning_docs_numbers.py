@@ -1,4 +1,4 @@
-# The planning numbers docs/results-planning.md quotes, recomputed (issue 22 #14): none can go stale.
+# The planning numbers docs/results-planning.md quotes, recomputed: none can go stale.
 """The durations table (1000 grid points), the closed-loop table and the numbers quoted beside
 them, and the smoothed variant's durations are recomputed here and must appear in the page as
 it prints them. Timings (compute time, IPOPT's solve time, the benchmark) depend on the machine
@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 import pm2dof
+from pm2dof.planning.jobs import closed_loop, plan_paths
 from pm2dof.planning.pathfile import NamedPath, read_path_file
-from pm2dof.planning.report import closed_loop, plan_paths
 
 PAGE = (Path(__file__).resolve().parents[2] / "docs" / "results-planning.md").read_text()
 FLAT = " ".join(PAGE.split())
@@ -121,7 +121,7 @@ def test_the_smoothed_variant(m):
 
 
 def test_what_a_coarse_grid_gives_is_stated_with_its_numbers(m):
-    """Issue 28 item 11: the page said "a coarse grid gives a longer plan, never a shorter one",
+    """The page said "a coarse grid gives a longer plan, never a shorter one",
     which two coarse grids of a user's spline contradicted; it now states what holds and the
     counterexample, recomputed here (the statement itself: test_planning_refine.py)."""
     assert "never a shorter one" not in FLAT

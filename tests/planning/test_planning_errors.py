@@ -183,7 +183,7 @@ def test_nothing_comes_back_nan(m):
 
 
 # --------------------------------------------------------------------------------------
-# Arguments that crashed with a plain Python error (issue 20 review, item 4)
+# Arguments that crashed with a plain Python error
 # --------------------------------------------------------------------------------------
 
 def test_an_empty_or_foreign_task_path_is_refused():

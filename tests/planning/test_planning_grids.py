@@ -1,5 +1,5 @@
 # Any grid from 2 to 1000 points gives a feasible, conservative plan: the passes on coarse grids.
-"""Issue 20 review, item 1: ``plan_time_optimal`` raised "the forward pass found no feasible path
+"""``plan_time_optimal`` raised "the forward pass found no feasible path
 acceleration ... (s_dd -15.1 below its lower bound -121.4)" on valid input at moderate grids
 (pick_and_place at <= 100 points, curve at 20-40, the paper's line at 2-3). The condition that
 failed was a landing below rest, s_d^2 < 0 at the next grid point, for two reasons in the
@@ -27,8 +27,8 @@ PATHS = {"line": TaskPath.line([0.22, 0.29], [0.27, 0.24]),            # the pap
          "arc": TaskPath.arc([0.245, 0.265], 0.04, -0.5, 1.5),
          "pick_and_place": read_path_file("pick_and_place").path,
          "curve": read_path_file("curve").path,
-         # issue 28 item 11: a user's spline (coarse grids were not ordered on it)
-         "spline28": TaskPath.spline([(0.18, 0.20), (0.22, 0.13), (0.27, 0.21), (0.31, 0.15)])}
+         # a user's spline (coarse grids were not ordered on it)
+         "user_spline": TaskPath.spline([(0.18, 0.20), (0.22, 0.13), (0.27, 0.21), (0.31, 0.15)])}
 GRIDS = (2, 3, 4, 6, 10, 20, 40, 100, 250, 1000)
 #: between the grid points: the planner holds every interval's midpoint to BETWEEN_TOL (1e-3)
 #: of tau_max; elsewhere in an interval this sweep measures at most 1.1e-3 (10 points per

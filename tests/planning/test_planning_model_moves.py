@@ -1,4 +1,4 @@
-# A model file's [trajectories.<name>] may name a path file: planned by pm2dof.planning (issue 20).
+# A model file's [trajectories.<name>] may name a path file: planned by pm2dof.planning.
 import subprocess
 import sys
 

@@ -1,10 +1,10 @@
 # `pm2dof plan --json` is the same, number for number, as before the planner's problem object
-# and its speed-ups (issue 29 item 5, issue 25 section 3): the outputs were saved first.
+# and its speed-ups (the grid refined in place): the outputs were saved first.
 """The planner's results, byte for byte, against files written before the refactoring.
 
 tests/planning/data/plan_<case>.json were written by this module's :func:`record` (``python
 tests/planning/test_planning_outputs_unchanged.py``) on the commit before the problem object
-(issue 29 item 5) and the speed-ups (issue 25 section 3). What depends on the run, not on the
+(``PlanProblem``) and the speed-ups (the grid refined in place). What depends on the run, not on the
 plan, is left out: the provenance's machine-, checkout- and command-specific entries and the
 wall times (``compute_ms``, ``solve_time_s``). Re-recorded once, on purpose, when the results
 gained ``units`` and ``tau_peak`` beside ``tau_peak_N_m`` (efforts by their actuator's unit):

@@ -39,7 +39,7 @@ def test_cli_refuses_a_path_of_the_wrong_dimension(capsys):
 
 
 def test_plan_paths_checks_the_dimension_first(platform):
-    from pm2dof.planning.report import plan_paths
+    from pm2dof.planning.jobs import plan_paths
     item = read_path_file("pick_and_place")             # it has [kinematic]: the S-curve first
     with pytest.raises(PlanError, match=r"path file .*pick_and_place.toml: the path has task "
                                         r"dimension 2, model 'rrr3_platform' m = 3"):

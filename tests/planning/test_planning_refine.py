@@ -1,8 +1,7 @@
 # The planner refines its grid in place, and the trajectory it hands to simulate respects tau_max.
-"""Issue 25 section 3: a refined grid reran both passes over the whole grid (and re-evaluated
+"""A refined grid reran both passes over the whole grid (and re-evaluated
 every point) each round; now only what the added points can change is recomputed, and the
-result must equal the whole computation on the refined grid, bit for bit. Issue 28 item 11:
-between grid points the 2 ms trajectory needed 5.0046 N m at tau_max = 5 on a user's spline
+result must equal the whole computation on the refined grid, bit for bit. Between grid points the 2 ms trajectory needed 5.0046 N m at tau_max = 5 on a user's spline
 (the planner held only the intervals' midpoints, to 0.1 %); now the samples of the trajectory
 are checked too (SAMPLE_TOL = 0.01 %). And "a coarse grid gives a longer plan, never a shorter
 one" did not hold between two coarse grids: what holds is tested here."""
@@ -19,7 +18,7 @@ from pm2dof.planning.stages import limits, params, stages
 from pm2dof.planning.topp import SAMPLE_TOL, solve_profile
 from pm2dof.planning.torques import path_torques
 
-#: the user's spline of issue 28, item 11
+#: a user's spline, on which the planner once exceeded tau_max between its samples
 SPLINE = TaskPath.spline([(0.18, 0.20), (0.22, 0.13), (0.27, 0.21), (0.31, 0.15)])
 PATHS = {"half_circle": TaskPath.arc([0.245, 0.265], 0.03, 0.0, np.pi),
          "pick_and_place": read_path_file("pick_and_place").path,
@@ -100,7 +99,7 @@ def test_every_round_equals_the_whole_computation(m, name, monkeypatch):
 
 @pytest.mark.parametrize("split", ["min_max", "min_norm"])
 def test_the_trajectory_simulate_receives_respects_tau_max(m, split):
-    """Issue 28 item 11: the torques at the trajectory's samples (inverse dynamics from the
+    """The torques at the trajectory's samples (inverse dynamics from the
     generated Me, Ce, StF and the split: independent of the planner's coefficients), on the
     user's spline at tau_max = 5 N m and on the shipped paths at 6 N m, any grid: within
     tau_max to SAMPLE_TOL = 0.01 % (it was +0.094 %, 5.0046 N m, and +0.11 % at grid 100)."""

@@ -1,5 +1,5 @@
 # The passes' scratch buffers are reused across rounds and plans: the plans stay bit for bit the same.
-"""Issue 25 section 3: a refined plan paid ~15 % for fresh ~1 MB blocks every round (the passes'
+"""A refined plan paid ~15 % for fresh ~1 MB blocks every round (the passes'
 inputs); they now live in a per-thread :class:`pm2dof.planning.workspace.Workspace`. Whatever a
 workspace holds from before, the plan is the one computed with fresh buffers."""
 import threading

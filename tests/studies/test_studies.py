@@ -7,6 +7,7 @@
 # closed loop on the same inputs (rollout_inputs), and accumulate_batch is accumulate per row
 # (tests/test_cbind.py). So the comparisons here are exact (assert_array_equal / ==).
 import dataclasses
+import json
 import math
 from pathlib import Path
 
@@ -166,8 +167,8 @@ def test_unreachable_or_singular_moves_and_rejected_gains_are_refused_before_any
 
 def test_the_file_and_the_model_checks_in_one_pass(tmp_path, capsys):
     """A study file's own problems came first, and those that need the model (an unreachable
-    move, a split the controller refuses) only after they were fixed: 6 problems, then 2 more
-    (issue 28). Now one error lists them all, entries numbered from 1."""
+    move, a split the controller refuses) only after they were fixed: 6 problems, then 2
+    more. Now one error lists them all, entries numbered from 1."""
     text = (BASE.replace("draws = 3", "draws = 0")
             .replace('moves = ["high"]', 'moves = ["high", {name = "far", start = [0.24, 0.27], '
                      'end = [0.9, 0.9], v_max = 0.2, a_max = 5.0, j_max = 200.0}]')
@@ -376,7 +377,7 @@ def test_out_folder_resume_refusal_and_unwritable(tmp_path):
 
 def test_resume_follows_the_values_not_the_bytes_and_names_the_change(tmp_path):
     """A comment added to the model file blocked resuming, and the message called the study's
-    own file 'another study' (issue 28). The identity is the model file's parsed values."""
+    own file 'another study'. The identity is the model file's parsed values."""
     s0 = read_study(STUDIES / "robustness.toml", quick=True)
     model_file = tmp_path / "robot.toml"
     model_file.write_text(Path(s0.model_path).read_text())
@@ -408,7 +409,7 @@ def test_report_numbers_match_direct_computation(tmp_path):
     s = read_study(STUDIES / "robustness.toml", quick=True)
     m = pm2dof.load_model(s.model_path)
     out = tmp_path / "out"
-    prepare_out(out, s, m)
+    prepare_out(out, s, m, ["pm2dof", "study", "run", "robustness"])
     for i in range(s.n_chunks):
         write_chunk(out, i, run_chunk(s, i), s)
     finish_out(out, s)
@@ -430,6 +431,14 @@ def test_report_numbers_match_direct_computation(tmp_path):
         assert r["pairs"] == len(rpe) == s.draws
         assert r["median"] == pytest.approx(np.median(rpe), rel=1e-12)
         assert r["share_better"] == np.mean(np.array(rpe) > 0)
+    # the job of `pm2dof study report`: the same summary, written with the run's provenance
+    from pm2dof.studies.jobs import run_report
+    job = run_report(out)
+    assert job.summary == rep and set(job.columns) == set(cols)
+    assert job.provenance["command_line"] == ["pm2dof", "study", "run", "robustness"]
+    assert job.provenance["model"] == m.name
+    written = json.loads((out / "summary.json").read_text())
+    assert written["provenance"] == job.provenance and written["rows"] == rep["rows"]
 
 
 def test_study_file_doc_lists_every_law_and_its_keys():

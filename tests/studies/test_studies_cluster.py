@@ -189,7 +189,7 @@ def test_embedded_cluster_equals_in_process_rows_and_report_runs(tmp_path, study
     stream = io.StringIO()                 # a bar drawn as on a terminal, into a buffer
     res = run_study(study, out, workers=2, progress=Progress(stream, bars=True))
     assert res["rows"] == study.n_rollouts and res["skipped"] == 0
-    # the two rates (issue 22, item 10): the progress bar's is the summary's run rate, the
+    # the two rates: the progress bar's is the summary's run rate, the
     # wall-time rate also counts the cluster's start and stop
     last = [seg for seg in stream.getvalue().split("\r") if "rollout/s" in seg][-1]  # final state
     assert f"{study.n_rollouts}/{study.n_rollouts}" in last, last

@@ -1,4 +1,4 @@
-# A quick study on one model of each new kind (issue 26): a platform, prismatic actuators, cylinders,
+# A quick study on one model of each other kind: a platform, prismatic actuators, cylinders,
 # gravity. The rows go through the study's own path (check_study, run_chunk, the results
 # folder), in this process: the cluster is tested in test_studies_cluster.py.
 import numpy as np

@@ -29,7 +29,8 @@ def add_parser(sub, common):
 def run(args):
     from ...figures.animate import animate_move
     path, r = animate_move(model(args), args.out, args.move, args.controller, args.split,
-                           args.magnify, args.fps, args.every, progress=progress(args))
+                           args.magnify, args.fps, args.every, progress=progress(args),
+                           command_line=args.command_line)
     print(f"wrote {path} ({r.controller}, {r.outcome_message}, RMSE {r.rmse:.4g} m, "
           f"{r.n_saturated} saturated samples)")
     return 0

@@ -18,5 +18,6 @@ def run(args):
     from ...figures.demo import demo_header, format_demo, run_demo
     m = model(args)
     print(demo_header(m), flush=True)
-    print(format_demo(run_demo(m, args.out, args.runs, progress=progress(args))))
+    print(format_demo(run_demo(m, args.out, args.runs, progress=progress(args),
+                                     command_line=args.command_line)))
     return 0

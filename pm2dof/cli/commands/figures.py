@@ -16,7 +16,8 @@ def add_parser(sub, common):
 
 def run(args):
     from ...figures.experiment import experiment_figures
-    _, _, paths = experiment_figures(model(args), args.out, args.runs, progress(args))
+    _, _, paths = experiment_figures(model(args), args.out, args.runs, progress(args),
+                                     command_line=args.command_line)
     for p in paths:
         print(f"wrote {p}")
     return 0

@@ -185,15 +185,22 @@ def _excite(args):
 
 
 def _fit(args):
-    from ...analysis.experiment import seeded_table3
-    from ...identification.report import format_fit, run_fit
+    from ...identification.jobs import run_fit, save_fit, with_table3
+    from ...identification.report import format_fit
     from ...infra.results import dumps
+    said = _progress(args)
     r = run_fit(args.log, model=args.model, generated=args.generated,
                 excitation_file=args.excitation, duration=args.duration,
-                quantise=not args.exact_encoders, controller=args.controller, save=args.save,
+                quantise=not args.exact_encoders, controller=args.controller,
                 cutoff_hz=args.cutoff, min_joint_speed=args.min_joint_speed,
-                time_tolerance=args.time_tolerance,
-                seed=seeded_table3 if args.seed_na else None, progress=_progress(args))
+                time_tolerance=args.time_tolerance, progress=said)
+    if args.seed_na:          # the paper's experiment with the identified theta
+        from ...analysis.experiment import seeded_table3
+        if said:
+            said("Table 3 with Tables 1-2 and with the identified theta")
+        r = with_table3(r, seeded_table3(r.model, r.result.theta0))
+    if args.save:
+        save_fit(r, args.save, args.command_line)
     print(dumps(r.summary) if args.json else format_fit(r))
     if args.save and not args.json:
         print(f"saved {args.save} (theta0: use it with NAController(model, theta0=...))")

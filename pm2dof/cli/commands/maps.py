@@ -33,7 +33,7 @@ def run(args):
     from ...infra.results import dumps
     m = model(args)
     summary, paths = maps_figures(m, args.out, args.resolution, tau_max=tau_max(args, m),
-                                  progress=progress(args))
+                                  progress=progress(args), command_line=args.command_line)
     print(dumps(summary) if args.json else format_maps_summary(summary))
     for p in paths:
         print(f"wrote {p}", file=sys.stderr if args.json else sys.stdout)

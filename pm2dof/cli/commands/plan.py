@@ -53,24 +53,26 @@ def add_parser(sub, common):
 def run(args):
     from ...core.errors import ArgumentError
     from ...infra.results import dumps
-    from ...planning.report import format_report, run_plan, write_plan_csvs
+    from ...planning.jobs import run_plan, write_plan_csvs
+    from ...planning.report import format_report
     if args.tau_rate is not None and not args.smooth:
         raise ArgumentError("--tau-rate limits the smoothed plan's torque rate: add --smooth")
     m = model(args)
     said = progress(args)           # stage lines on stderr, with --json too (stdout stays JSON)
-    res, plans, loops = run_plan(
+    r = run_plan(
         m, path=args.path, move=args.move, tau_max=tau_max(args, m), margin=args.margin,
         grid=args.grid, splits=("min_norm", "min_max") if args.split == "both" else (args.split,),
         kinematic={k: getattr(args, k) for k in ("v_max", "a_max", "j_max")},
         smooth=args.smooth, tau_rate=args.tau_rate,
-        closed_loop_margins=args.margins if args.closed_loop else None, progress=said)
-    print(dumps(res) if args.json else format_report(res, loops))
+        closed_loop_margins=args.margins if args.closed_loop else None, progress=said,
+        command_line=args.command_line)
+    print(dumps(r.summary) if args.json else format_report(r.summary))
     if args.out:
         from ...figures.planning import plan_figures
-        from ...infra.results import provenance
-        written = write_plan_csvs(args.out, m, plans)
+        written = write_plan_csvs(r, args.out)
         said("figures: the phase plane, the torques and the path on the force map")
-        written += plan_figures(m, plans, pathlib.Path(args.out), provenance(m), res["tau_max"])
+        written += plan_figures(r.model, r.plans, pathlib.Path(args.out), r.provenance,
+                                r.summary["tau_max"])
         for p in written:
             print(f"wrote {p}", file=sys.stderr if args.json else sys.stdout)
     return 0

@@ -40,6 +40,7 @@ def run(args):
     if args.out:
         from ...figures.splits import splits_figure
         path, _ = splits_figure(model(args), args.out, preload=args.preload,
-                                preload_sign=args.preload_sign, progress=progress(args))
+                                preload_sign=args.preload_sign, progress=progress(args),
+                                command_line=args.command_line)
         print(f"wrote {path}", file=sys.stderr if args.json else sys.stdout)
     return 0

@@ -91,7 +91,8 @@ def _run(args):
     try:
         res = run_study(study, args.out, workers=args.workers, scheduler=args.scheduler,
                         timeout=args.timeout, progress=progress(args),
-                        notify=lambda notice: print(format_notice(notice)))
+                        notify=lambda notice: print(format_notice(notice)),
+                        command_line=args.command_line)
     except KeyboardInterrupt:
         print(f"\npm2dof: interrupted; the finished chunks are in {args.out}/results. Run the "
               f"same command again to continue where it stopped.", file=sys.stderr)
@@ -116,13 +117,14 @@ def _show(args):
 
 def _report(args):
     from ...infra.results import dumps
-    from ...studies.report import format_report, run_report
-    s, cols, info = run_report(args.dir)
-    print(dumps(s) if args.json else format_report(s))
+    from ...studies.jobs import run_report
+    from ...studies.report import format_report
+    r = run_report(args.dir)
+    print(dumps(r.summary) if args.json else format_report(r.summary))
     if not args.no_figures:
         from ...figures.studies import study_figures
-        for p in study_figures(cols, s, pathlib.Path(args.dir) / "figures",
-                               info.get("provenance", {}), info.get("payload_change")):
+        for p in study_figures(r.columns, r.summary, pathlib.Path(args.dir) / "figures",
+                               r.provenance, r.info.get("payload_change")):
             print(f"wrote {p}", file=sys.stderr if args.json else sys.stdout)
     return 0
 

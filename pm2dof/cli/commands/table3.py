@@ -28,7 +28,7 @@ def run(args):
     m = model(args)
     numbers = run_table3(m, exact_encoders=args.exact_encoders, save=args.save,
                          progress=None if args.json else progress(args),
-                         include=tuple(args.include))
+                         include=tuple(args.include), command_line=args.command_line)
     print(dumps(numbers) if args.json else format_table3(numbers, is_paper_robot(m)))
     if args.save and not args.json:
         print(f"saved {args.save}")
