@@ -39,6 +39,7 @@ def test_missing_tools_are_named_before_any_work(tmp_path, capsys, monkeypatch):
     assert cli.main(["export", "rrr3_platform", "--embedded", "--out", str(tmp_path / "e")]) == 2
     err = capsys.readouterr().err
     assert err == ("pm2dof: error: pm2dof export --embedded needs arm-none-eabi-gcc, "
-                   "arm-none-eabi-size, arm-none-eabi-nm, qemu-system-arm: apt-get install "
+                   "arm-none-eabi-size, arm-none-eabi-nm, arm-none-eabi-readelf, qemu-system-arm: "
+                   "apt-get install "
                    "gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm (Debian)\n"), err
     assert not (tmp_path / "e").exists()
