@@ -16,6 +16,7 @@ import numpy as np
 from ..control.controllers import APDController, NAController
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
+from ..core.contract import SPLITS
 from ..core.layout import Layout
 from ..core.model import load_model
 from ..core.status import Status
@@ -80,7 +81,7 @@ TARGETS = (
 )
 #: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 #: for a revolute actuator, N for a linear one
-BENCH_SPLITS = ("min_norm", "min_max", "preload")
+BENCH_SPLITS = tuple(SPLITS)
 BENCH_PRELOAD = 1.0
 
 

@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 from ..core import _cbind
+from ..core.contract import SPLITS
 from ..core.errors import (
     ArgumentError,
     ArgumentTypeError,
@@ -33,8 +34,6 @@ __all__ = ["NAController", "APDController", "CTCController", "STATUS_NAMES", "St
            "check_same_model", "CTC_DEFAULT_GAINS"]
 
 _SINGULAR = float(Status.SINGULAR)   # the hot path compares a float (an Enum lookup: ~60 ns)
-#: torque split -> suffix of its generated functions (derive/splits.py)
-SPLITS = {"min_norm": "", "min_max": "_minmax", "preload": "_preload"}
 
 
 def velocity_filter_alpha(sample_period, cutoff_hz):
@@ -179,7 +178,7 @@ class _Controller:
                                          np.zeros(self.state_layout.size))
         self._n = n
         self._status = np.zeros(1)
-        self._diag = np.zeros(4 * model.dof + 2)   # xe, v, e, edot (m each), sing, sing_parallel
+        self._diag = np.zeros(model.layout("diag").size)  # the step's diag (the manifest's)
         self._extra = ()      # the per-sample inputs of a law that has them (LQR's K_k, tau_ff_k)
         # the step's fast path, one C call: state and params bound here (checked once, now),
         # state <- state_next after the evaluation, a singular status reported (GuardTripped)
@@ -320,9 +319,9 @@ class _Controller:
         """Last step's signal processing: dict of xe (m,) m, v (m,) m/s, e (m,) m, edot (m,) m/s,
         sing (type I measure min_i |sin(qb_i - qa_i)|) and sing_parallel (type II measure, see
         :meth:`pm2dof.Model.singularity_measures`)."""
-        d, m = self._diag.copy(), self.model.dof
-        return {"xe": d[0:m], "v": d[m:2 * m], "e": d[2 * m:3 * m], "edot": d[3 * m:4 * m],
-                "sing": float(d[4 * m]), "sing_parallel": float(d[4 * m + 1])}
+        d = self.model.layout("diag").unpack(self._diag.copy())
+        sing = d.pop("sing")
+        return {**d, "sing": float(sing[0]), "sing_parallel": float(sing[1])}
 
 
 class NAController(_Controller):

@@ -18,6 +18,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .contract import DERIVATIVE_FUNCTIONS  # the generated functions bound here
 from .errors import ArgumentError
 
 try:
@@ -27,10 +28,6 @@ except ImportError:  # a source tree never built: importing pm2dof.core.model sa
 
 __all__ = ["DerivativeMethods", "ForwardDynamicsJacobians", "SampledStepJacobians",
            "InverseDynamicsJacobians", "DERIVATIVE_FUNCTIONS", "continuous_AB"]
-
-#: the generated functions bound here (``<model>_<name>``)
-DERIVATIVE_FUNCTIONS = ("forward_dynamics_jacobians", "sampled_step", "sampled_step_jacobians",
-                        "inverse_dynamics", "inverse_dynamics_jacobians")
 
 
 

@@ -7,68 +7,31 @@ a fraction of one): the model file (its bytes and its formulation), the derivati
 (``pm2dof/derive/*.py``), the SymPy and CasADi versions, the status codes, the generated
 files' hashes, and the compiled library's build record (:func:`pm2dof.core.build.library_is_fresh`).
 """
-import hashlib
-import json
-from importlib import metadata
 from pathlib import Path
 
-from . import build
-from .status import Status
+from .manifest import Manifest, derive_sources_sha256
 
 __all__ = ["up_to_date", "derive_is_current", "derive_sources_sha256"]
-
-DERIVE_DIR = Path(__file__).resolve().parent.parent / "derive"
-
-
-def derive_sources_sha256():
-    """Hash of every derivation source file (name and content), in sorted order: the manifest's
-    ``derive_sources_sha256`` (as :func:`pm2dof.derive.export.derive_sources_sha256` computes it
-    when it writes one; kept here so that the check needs no SymPy)."""
-    h = hashlib.sha256()
-    for path in sorted(DERIVE_DIR.glob("*.py")):
-        h.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
-    return h.hexdigest()
-
-
-def _version(name):
-    try:
-        return metadata.version(name)
-    except metadata.PackageNotFoundError:
-        return None
 
 
 def up_to_date(spec, out, *, library=True):
     """(True, "") if ``out`` holds the code ``pm2dof derive`` would generate from ``spec`` (a
     :class:`~pm2dof.core.model_file.ModelSpec`) now, and with ``library`` its compiled library;
     else (False, what differs)."""
-    out = Path(out)
-    try:
-        manifest = json.loads((out / "manifest.json").read_text())
-    except (OSError, ValueError):
+    manifest = Manifest.read(out)
+    if manifest is None:
         return False, "no readable manifest.json"
-    recorded = manifest.get("model_file")
-    if not recorded or (out / recorded).resolve() != Path(spec.path).resolve():
+    if not manifest.owned_by(spec.path):
         return False, "generated from another model file"
-    checks = {"the model file": (manifest.get("model_file_sha256"), spec.file_sha256),
-              "the formulation": (manifest.get("formulation_sha256"), spec.formulation_sha256),
-              "the derivation's sources": (manifest.get("derive_sources_sha256"),
-                                           derive_sources_sha256()),
-              "the SymPy and CasADi versions": (manifest.get("versions"),
-                                                {"sympy": _version("sympy"),
-                                                 "casadi": _version("casadi")}),
-              "the status codes": (manifest.get("status_codes"), Status.codes()),
-              "rk4_substeps": (manifest.get("rk4_substeps"), spec.rk4_substeps)}
-    for what, (have, want) in checks.items():
-        if have != want:
-            return False, f"{what} changed"
-    files = manifest.get("files", {})
-    for name, sha in files.items():
-        p = out / name
-        if not p.is_file() or hashlib.sha256(p.read_bytes()).hexdigest() != sha:
-            return False, f"{name} differs from its manifest"
-    name = manifest.get("model", spec.name)
-    if library and not build.library_is_fresh(out / f"{name}.c", out / f"lib{name}.so",
-                                              files.get(f"{name}.c")):
+    changed = manifest.what_changed(spec)
+    if changed:
+        return False, changed
+    differing = manifest.files_differing()
+    if differing:
+        return False, f"{differing[0]} differs from its manifest"
+    if manifest.name is None:
+        manifest.name = spec.name
+    if library and not manifest.library_is_fresh():
         return False, "the compiled library is missing or not built from the C"
     return True, ""
 

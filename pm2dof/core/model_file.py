@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from . import contract
 from .errors import ModelFileError
 from .measures import TYPE_I_MEASURES, TYPE_II_MEASURES, pose_measures
 from .validate import RULES, Problems, entry
@@ -65,8 +66,8 @@ _LEG_KEYS = {"RRR": ({"base", "la", "lb", "elbow"}, {"kind", "attach"}),
              "RPR": ({"kind", "base", "stroke"}, {"attach"})}
 _TOP_KEYS = {"model", "legs", "nominal", "limits", "sensing", "gains", "plant", "trajectories",
              "control", "platform"}
-#: torque distributions among the actuators (S^T tau_a = u; derive/splits.py)
-SPLITS = ("min_norm", "min_max", "preload")
+#: torque distributions among the actuators (S^T tau_a = u; pm2dof.core.contract)
+SPLITS = tuple(contract.SPLITS)
 
 
 @dataclass(frozen=True)
@@ -668,8 +669,8 @@ def _read_runtime(pr, doc, n, param_names, legs, groups, effector):
     gains_raw = pr.table("gains", doc.get("gains"))
     gains = {}
     if gains_raw is not None:
-        pr.keys("gains", gains_raw, ("na", "apd", "ctc", "lqr"), ("na", "apd"))
-        for law in ("na", "apd", "ctc", "lqr"):
+        pr.keys("gains", gains_raw, contract.LAWS, ("na", "apd"))
+        for law in contract.LAWS:
             if law not in gains_raw and law in ("ctc", "lqr"):    # optional: code defaults
                 continue
             gains[law] = _read_section(

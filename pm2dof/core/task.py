@@ -12,6 +12,7 @@ reach of RR legs): :func:`require_rr_point` refuses the others with
 """
 import numpy as np
 
+from .contract import ENERGY_FUNCTIONS  # the generated energies
 from .errors import ArgumentError, StaleGeneratedCodeError, UnsupportedMechanismError
 from .paths import derive_command
 
@@ -21,8 +22,6 @@ __all__ = ["effort_unit", "per_actuator", "active_coordinates", "POINT_TASK_NAME
 
 #: the task coordinates of a point end effector (the paper's robot)
 POINT_TASK_NAMES = ("x", "y")
-#: generated energy functions, bound when the manifest lists them
-ENERGY_FUNCTIONS = ("kinetic_energy", "potential_energy")
 
 
 def spec_task_names(spec, m):

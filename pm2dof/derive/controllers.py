@@ -3,14 +3,15 @@
 
 import casadi as ca
 
+from pm2dof.core.contract import SPLITS, STEP_INPUTS, STEP_OUTPUTS, STEPS, diag_layout
 from pm2dof.core.status import Status
 
 from .factored import joint_W, regressor
 from .kinematics import FK_TRACKING_STEPS
 from .layouts import Layout
-from .splits import SPLITS, min_max, min_norm
+from .splits import min_max, min_norm
 
-__all__ = ["controller_layouts", "controller_functions", "per_sample_inputs", "LAWS", "STATUS"]
+__all__ = ["controller_layouts", "controller_functions", "per_sample_inputs", "STATUS"]
 
 # status codes of a step (also in the manifest): what the step did with this sample
 STATUS = Status.codes()
@@ -33,7 +34,7 @@ def controller_layouts(n, p, m):
     ctc = Layout([("Kp", m), ("Kv", m)] + common)       # 1/s^2, 1/s: Me multiplies them
     lqr = Layout(common)                                 # its gains are per-sample inputs
     return {"ctrl_state": state, "na_params": na, "apd_params": apd, "ctc_params": ctc,
-            "lqr_params": lqr}
+            "lqr_params": lqr, "diag": Layout(diag_layout(m))}
 
 
 #: per-sample inputs of a law's step after its params (name, size for n legs, task dimension
@@ -41,11 +42,6 @@ def controller_layouts(n, p, m):
 #: the trajectory
 def per_sample_inputs(law, n, m):
     return [("K", 2 * m * n), ("tau_ff", n)] if law == "lqr" else []
-
-
-#: the controller steps: (function name, law, theta_hat projected after the update)
-LAWS = (("na", "na", False), ("na_proj", "na", True), ("apd", "apd", False),
-        ("ctc", "ctc", False), ("lqr", "lqr", False))
 
 
 def _project(theta, param_names, n, friction_names):
@@ -131,8 +127,9 @@ def controller_functions(d, prefix):
     (desired position, velocity, acceleration), params (see controller_layouts), and for lqr
     the sample's K (n x 2m, row-major) and tau_ff (n) (:func:`per_sample_inputs`); task-space
     vectors have the task dimension m.
-    Outputs: tau_a (n), state_next, status (STATUS), diag = [xe, v, e, edot (m each), sing (2):
-    type I, type II].
+    Outputs: tau_a (n), state_next, status (STATUS), diag (the ``diag`` layout,
+    :func:`pm2dof.core.contract.diag_layout`: xe, v, e, edot (m each), sing (2): type I, type
+    II).
     A bad sample (encoders that do not close the loops, a singular pose, or any non-finite
     intermediate) gives the safe torque zero and leaves theta_hat unchanged; inconsistent
     encoders and a non-finite sample also keep xe_prev and v (a wrong pose is not carried on).
@@ -161,7 +158,7 @@ def controller_functions(d, prefix):
     O = d.fk_of_qa()
     xe = base(O)
     sing = d.singularity_measures(base)                            # [type I, type II]
-    for name, law, project in LAWS:
+    for name, law, project in STEPS:             # pm2dof.core.contract
         params = ca.SX.sym("params", lay[f"{law}_params"].size)   # one law's, every split's
         P = lay[f"{law}_params"].split(params)
         extra = [(k, ca.SX.sym(k, size)) for k, size in per_sample_inputs(law, n, m)]
@@ -208,8 +205,8 @@ def _step_function(d, prefix, lay, name, split, S, u, P, theta, theta_next, xe, 
     carry = ca.logic_and(consistent, finite)                   # a pose worth remembering
     state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(carry, xe, st["xe_prev"]),
                                         v=ca.if_else(carry, v, st["v"]), theta_hat=theta_out)
+    diag = lay["diag"].pack(xe=xe, v=v, e=e, edot=edot, sing=sing)
     return ca.Function(
         f"{prefix}_{name}_step", inputs + [sx for _, sx in extra],
-        [tau_out, state_next, status, ca.vertcat(xe, v, e, edot, sing)],
-        ["state", "qa", "xd", "xd_dot", "xd_ddot", "params"] + [k for k, _ in extra],
-        ["tau_a", "state_next", "status", "diag"])
+        [tau_out, state_next, status, diag],
+        list(STEP_INPUTS) + [k for k, _ in extra], list(STEP_OUTPUTS))

@@ -1,27 +1,32 @@
 # CasADi export: one CodeGenerator -> generated/<name>/<name>.c/.h, a documenting header, a manifest.
-import hashlib
 import json
-from pathlib import Path
+import re
 
 import casadi as ca
 import sympy
 
-__all__ = ["export", "derive_sources_sha256", "MANIFEST"]
+from pm2dof.core.manifest import MANIFEST, WORK_FIELDS, derive_sources_sha256, file_sha256
 
-MANIFEST = "manifest.json"
-DERIVE_DIR = Path(__file__).resolve().parent
-
-
-def derive_sources_sha256():
-    """Hash of every derivation source file (name and content), in sorted order."""
-    h = hashlib.sha256()
-    for path in sorted(DERIVE_DIR.glob("*.py")):
-        h.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
-    return h.hexdigest()
+__all__ = ["export", "MANIFEST"]
 
 
-def _sha(path):
-    return hashlib.sha256(path.read_bytes()).hexdigest()
+def _work_sizes(c_text, f):
+    """{"arg", "res", "iw", "w"}: the work sizes the generated C declares in ``<f>_work``, read
+    once here, where the C was just written (the manifest carries them to the runtime and the
+    export). The C's sz_arg, sz_res equal CasADi's ``f.sz_arg()``, ``f.sz_res()``; its sz_iw,
+    sz_w are at most ``f.sz_iw()``, ``f.sz_w()`` (the C keeps an SX function's work in local
+    variables, so it often needs less)."""
+    m = re.search(rf"int {f.name()}_work\([^)]*\) {{\s*if \(sz_arg\) \*sz_arg = (\d+);\s*"
+                  rf"if \(sz_res\) \*sz_res = (\d+);\s*if \(sz_iw\) \*sz_iw = (\d+);\s*"
+                  rf"if \(sz_w\) \*sz_w = (\d+);", c_text)
+    if m is None:
+        raise RuntimeError(f"{f.name()}_work not found in the generated C")
+    sizes = dict(zip(WORK_FIELDS, (int(g) for g in m.groups())))
+    own = dict(zip(WORK_FIELDS, (f.sz_arg(), f.sz_res(), f.sz_iw(), f.sz_w())))
+    if (sizes["arg"], sizes["res"]) != (own["arg"], own["res"]) or \
+            sizes["iw"] > own["iw"] or sizes["w"] > own["w"]:
+        raise RuntimeError(f"{f.name()}: the C's work sizes {sizes} do not fit CasADi's {own}")
+    return sizes
 
 
 def _signature(f):
@@ -73,6 +78,8 @@ def _header_doc(spec, functions, layouts, status_codes, task_names=("x", "y")):
         ins = ", ".join(f"{a}[{k}]" for a, k in sig["inputs"])
         outs = ", ".join(f"{a}[{k}]" for a, k in sig["outputs"])
         lines.append(f" *   {f.name()}({ins}) -> ({outs})")
+    # diag is a step's output, documented by the steps' lines above
+    layouts = {k: v for k, v in layouts.items() if k != "diag"}
     if layouts:
         lines += [" *", " * Flat vectors of the controllers, plant and closed loop (field[count], in order):"]
         for name, fields in layouts.items():
@@ -111,6 +118,7 @@ def export(spec, functions, out_dir, model_file_label, extra=None, task_names=("
     for f in functions:
         cg.add(f)
     cg.generate(str(out_dir) + "/")
+    c_text = (out_dir / f"{spec.name}.c").read_text()
     header = out_dir / f"{spec.name}.h"
     header.write_text(_header_doc(spec, functions, (extra or {}).get("layouts", {}),
                                   (extra or {}).get("status_codes", {}), task_names)
@@ -123,8 +131,9 @@ def export(spec, functions, out_dir, model_file_label, extra=None, task_names=("
         "derive_sources_sha256": derive_sources_sha256(),
         "versions": {"sympy": sympy.__version__, "casadi": ca.__version__},
         "param_names": list(spec.param_names),
-        "files": {p.name: _sha(p) for p in (out_dir / f"{spec.name}.c", header)},
-        "functions": {f.name(): _signature(f) for f in functions},
+        "files": {p.name: file_sha256(p) for p in (out_dir / f"{spec.name}.c", header)},
+        "functions": {f.name(): {**_signature(f), "work": _work_sizes(c_text, f)}
+                      for f in functions},
         **(extra or {}),
     }
     (out_dir / MANIFEST).write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")

@@ -2,7 +2,9 @@
 import casadi as ca
 import sympy as sp
 
-from .controllers import LAWS, controller_layouts, per_sample_inputs
+from pm2dof.core.contract import STEPS
+
+from .controllers import controller_layouts, per_sample_inputs
 from .factored import solve_small, task_gravity, task_inertia_coriolis
 from .layouts import Layout
 
@@ -54,7 +56,7 @@ def closed_loop_layouts(n, p, m):
     motion = [("xd", m), ("xd_dot", m), ("xd_ddot", m)]
     y = Layout([("xe", m), ("xed", m), ("tau_a", n), ("status", 1), ("theta_hat", p)])
     out = {"cl_state": x, "cl_input": Layout(motion), "cl_output": y}
-    for law in dict.fromkeys(law for _, law, _ in LAWS):
+    for law in dict.fromkeys(law for _, law, _ in STEPS):
         if per_sample_inputs(law, n, m):
             out[f"{law}_cl_input"] = Layout(motion + per_sample_inputs(law, n, m))
     return out

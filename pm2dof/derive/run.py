@@ -14,6 +14,7 @@ import casadi as ca
 
 from pm2dof.core import paths
 from pm2dof.core.errors import ModelFileError, OutputError
+from pm2dof.core.manifest import Manifest
 from pm2dof.core.model_file import read_model_file
 
 from .controllers import STATUS, controller_functions, controller_layouts
@@ -52,16 +53,11 @@ def _check_out(model_path, out, force):
             f"{out} is inside the installed pm2dof package, which pm2dof never writes to. Copy "
             f"the model file into a folder of yours and derive that copy: cp {model_path} "
             f"~/robots/ && pm2dof derive ~/robots/{Path(model_path).name}")
-    manifest = out / MANIFEST
-    if force or not manifest.is_file():
+    if force or not (out / MANIFEST).is_file():
         return
-    import json
-    try:
-        recorded = json.loads(manifest.read_text()).get("model_file")
-    except ValueError:
-        recorded = None
-    source = (out / recorded).resolve() if recorded else None
-    if source != Path(model_path).resolve():
+    manifest = Manifest.read(out)            # None: unreadable, so its owner is unknown
+    source = manifest.model_file() if manifest is not None else None
+    if manifest is None or not manifest.owned_by(model_path):
         raise DeriveError(
             f"{out} holds code generated from another model file ({source or 'unknown'}), not "
             f"from {model_path}; refusing to overwrite it. Use another --out, or --force to "
@@ -127,9 +123,8 @@ def derive(model, out=None, *, force=False, build=True, progress=print):
 
 
 def task_names(d):
-    """The names of the task coordinates: the model's ``task_names``, else by dimension."""
-    names = getattr(d.spec, "task_names", None)
-    return tuple(names) if names else ("x", "y", "phi")[:d.m]
+    """The names of the task coordinates: the model's ``task_names``."""
+    return tuple(d.spec.task_names)
 
 
 def derive_functions(d, spec):

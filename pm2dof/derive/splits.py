@@ -32,10 +32,9 @@ import casadi as ca
 
 from .factored import solve_small
 
-__all__ = ["SPLITS", "min_norm", "min_max", "preload", "preload_function"]
+__all__ = ["min_norm", "min_max", "preload", "preload_function"]
 
-#: split name -> suffix of the generated function names (<law><suffix>_step)
-SPLITS = {"min_norm": "", "min_max": "_minmax", "preload": "_preload"}
+# the splits' names and their functions' suffixes: pm2dof.core.contract.SPLITS
 _TOL = 1e-10  # relative to w_i: admitted bound violation of a candidate (rounding only)
 _FREE = 1e-12  # |g_i.l| <= _FREE |g_i| |l|: g_i counts as parallel to g_j (min_max)
 

@@ -8,16 +8,16 @@ library and installs it with a package config, a closed-loop example against the
 plant, a ctest comparing the C closed loop with :func:`pm2dof.simulate`, and ``embedded/`` to
 cross-compile for a Cortex-M and run it under QEMU (docs/deploying.md).
 """
-import hashlib
 import json
 import re
 from importlib import resources
 from pathlib import Path
 
-from ..control.controllers import SPLITS, APDController, CTCController, NAController
-from ..core import paths
+from ..control.controllers import APDController, CTCController, NAController
+from ..core import contract, paths
 from ..core.errors import ArgumentError, OutputError, StaleGeneratedCodeError
 from ..core.layout import Layout
+from ..core.manifest import Manifest
 from ..core.model import load_model
 from ..core.status import Status
 from ..core.task import mechanism
@@ -27,8 +27,8 @@ from .units import export_units
 
 __all__ = ["export_project", "LAWS", "PRECISIONS", "ExportError"]
 
-#: the controllers an export can hold, in this order
-LAWS = ("na", "apd", "ctc", "lqr")
+#: the controllers an export can hold, in this order (pm2dof.core.contract)
+LAWS = contract.LAWS
 PRECISIONS = ("double", "single")
 RECORD = "pm2dof_export.json"          # what an export wrote (for --force and for tools)
 
@@ -66,11 +66,6 @@ def _field_docs(u):
     return fields, laws
 
 
-def _diag_fields(dim):
-    """The diag layout of a step's signal processing, task dimension ``dim``."""
-    return [("xe", dim), ("v", dim), ("e", dim), ("edot", dim), ("sing", 2)]
-
-
 def _gravity_note(model):
     """The header's sentence on gravity: the steps hold the gravity term."""
     g = getattr(model.spec, "gravity", None)
@@ -92,10 +87,6 @@ def _render(text, values):
     for key, value in values.items():
         text = text.replace(f"@{key}@", str(value))
     return text
-
-
-def _sha256(path):
-    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
 def _check_choice(what, value, allowed):
@@ -131,32 +122,33 @@ def _prepare_out(out, force):
 
 
 def _generated_sources(model):
-    """(c text, h text) of the model's generated code, checked against its manifest."""
+    """(c text, h text) of the model's generated code, checked against its manifest, and the
+    manifest (:class:`~pm2dof.core.manifest.Manifest`)."""
     gen = Path(model.generated)
-    name = model.manifest.get("model", model.name)
+    manifest = Manifest.read(gen) or Manifest(gen, {})
+    if manifest.name is None:
+        manifest.name = model.name
     texts = []
     for suffix in (".c", ".h"):
-        f = gen / f"{name}{suffix}"
-        want = model.manifest.get("files", {}).get(f.name)
-        if not f.is_file() or (want is not None and _sha256(f) != want):
+        f = gen / f"{manifest.name}{suffix}"
+        if manifest.file_differs(f.name):
             how = ("reinstall pm2dof" if paths.in_installed_package(gen)
                    else f"run `{paths.derive_command(model.spec.path, gen)}`")
             raise StaleGeneratedCodeError(f"{f} is missing or differs from the one "
                                           f"{gen / 'manifest.json'} records; {how}")
         texts.append(f.read_text())
-    return texts
+    return (*texts, manifest)
 
 
-def _work_sizes(c_text, name, functions):
-    """{function: (sz_arg, sz_res, sz_iw, sz_w)} read from the generated <f>_work bodies."""
+def _work_sizes(manifest, functions, model_path):
+    """{function: (sz_arg, sz_res, sz_iw, sz_w)} as the manifest records them (derive time)."""
     out = {}
     for f in functions:
-        m = re.search(rf"int {name}_{f}_work\([^)]*\) {{\s*if \(sz_arg\) \*sz_arg = (\d+);\s*"
-                      rf"if \(sz_res\) \*sz_res = (\d+);\s*if \(sz_iw\) \*sz_iw = (\d+);\s*"
-                      rf"if \(sz_w\) \*sz_w = (\d+);", c_text)
-        if m is None:
-            raise StaleGeneratedCodeError(f"{name}_{f}_work not found in the generated C")
-        out[f] = tuple(int(g) for g in m.groups())
+        out[f] = manifest.work_sizes(f)
+        if out[f] is None:
+            raise StaleGeneratedCodeError(
+                f"{manifest.path} records no work sizes of {manifest.name}_{f}; run "
+                f"`{paths.derive_command(model_path, manifest.folder)} --force`")
     return out
 
 
@@ -301,11 +293,11 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
         raise ArgumentError("export_project: give the output folder (out=...)")
     m = load_model(model, generated)
     move_name = reference.reference_move(m, move)[0]     # an unknown move: refused here
-    c_text, _ = _generated_sources(m)
+    c_text, _, manifest = _generated_sources(m)
     name, n, p, dim = m.name, m.n_legs, len(m.param_names), m.dof
     units = export_units(m)
     docs = _field_docs(units)
-    diag = _diag_fields(dim)
+    diag = m.layout("diag").fields                        # the step's diag (the manifest's)
     split = m.spec.control["split"]
     if precision == "single":
         problems = single.single_problems(c_text, m, split)
@@ -313,9 +305,8 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
             raise ExportError(f"single precision is refused for model {name!r}: "
                               + "; ".join(problems))
     out = _prepare_out(out, force)
-    sfx = SPLITS[split]
-    gen = {law: f"{law}{sfx}_step" for law in laws}
-    proj = [f"na_proj{sfx}_step"] if "na" in laws else []    # NA's projected law (an option)
+    gen = {law: contract.step_name(law, split) for law in laws}
+    proj = [contract.step_name("na_proj", split)] if "na" in laws else []   # NA's option
     lays = {k: Layout(k, v) for k, v in m.manifest["layouts"].items()}
     defaults = _law_params(m)
     real, fsuffix = ("float", "f") if precision == "single" else ("double", "")
@@ -396,7 +387,7 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     # pruned generated code, and their work sizes those of the header
     api_c = _render(_template("src/api.c.in"), values)
     entries = _generated_calls(api_c, c_text, name)
-    sizes = _work_sizes(c_text, name, entries)
+    sizes = _work_sizes(manifest, entries, m.spec.path)
     generated = prune.prune(c_text, name, entries)
     if precision == "single":
         generated = single.to_single(generated)
@@ -418,7 +409,7 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
     sim_entries = ("measure", "plant_step")
     files[sim_sources] = re.sub(rf"\b{name}_", sim_prefix,
                                 prune.prune(c_text, name, sim_entries, external=True))
-    sim = list(_work_sizes(c_text, name, sim_entries).values())
+    sim = list(_work_sizes(manifest, sim_entries, m.spec.path).values())
     files[f"tests/{name}_sim.h"] = (
         f"/* The simulated robot, double precision: the generated plant and encoders. */\n"
         f"#ifndef {name.upper()}_SIM_H\n#define {name.upper()}_SIM_H\n"

@@ -79,7 +79,8 @@ def layouts(n: int) -> dict:
         min_norm split (eq. 21; tests/control/test_splits.py checks the other splits); ``plant`` (alpha, beta, gamma, fv, fc, fs
         each n, stribeck_velocity, coulomb_smoothing_velocity, encoder_step);
         ``cl_state`` (xe 2, xed 2, ctrl_state); ``cl_input`` (xd 2, xd_dot 2,
-        xd_ddot 2), ``lqr_cl_input`` (the same, K 4n, tau_ff n); ``cl_output`` (xe 2, xed 2, tau_a n, status 1, theta_hat p).
+        xd_ddot 2), ``lqr_cl_input`` (the same, K 4n, tau_ff n); ``cl_output`` (xe 2, xed 2, tau_a n, status 1, theta_hat p);
+        ``diag``, a step's signal processing (xe 2, v 2, e 2, edot 2, sing 2: type I, type II).
     """
     p = 5 * n
     common = [("T", 1), ("vel_alpha", 1), ("sing_threshold", 1), ("parallel_sing_threshold", 1),
@@ -97,6 +98,7 @@ def layouts(n: int) -> dict:
         "cl_input": [("xd", 2), ("xd_dot", 2), ("xd_ddot", 2)],
         "lqr_cl_input": [("xd", 2), ("xd_dot", 2), ("xd_ddot", 2), ("K", 4 * n), ("tau_ff", n)],
         "cl_output": [("xe", 2), ("xed", 2), ("tau_a", n), ("status", 1), ("theta_hat", p)],
+        "diag": [("xe", 2), ("v", 2), ("e", 2), ("edot", 2), ("sing", 2)],
     }
     return {name: Layout(name, f) for name, f in fields.items()}
 
