@@ -17,7 +17,8 @@ actuator reversed its sign or fell short of its preload, by that much).
 """
 import numpy as np
 
-from ..control.controllers import SPLITS, APDController, NAController, per_actuator
+from ..control.controllers import APDController, NAController
+from ..control.settings import SPLITS, per_actuator
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
 from ..core.task import effort_unit
@@ -91,7 +92,7 @@ def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speed
     speeds : list of str, optional
         Moves of ``[trajectories]`` (default: all).
     splits : sequence of str
-        The torque splits to compare (default: all, ``pm2dof.control.controllers.SPLITS``).
+        The torque splits to compare (default: all, ``pm2dof.control.settings.SPLITS``).
     controllers : sequence of str
         "apd", "na" or both.
     quantise : bool
