@@ -18,7 +18,7 @@ actuator reversed its sign or fell short of its preload, by that much).
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.settings import SPLITS, per_actuator
+from ..control.settings import SPLITS, actuator_limits, per_actuator
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
 from ..core.task import effort_unit
@@ -206,9 +206,7 @@ def run_splits(model, tau_max=None, preload=None, preload_sign=None, progress=No
     "preload_sign", "results", "units"}`` (:func:`splits_units`), and ``"note"``
     (:func:`redundancy_note`) on a robot without a redundant actuator (its ``--json``; the
     text: :func:`format_splits`)."""
-    n = model.n_legs
-    w = model.spec.limits["tau_max"] if tau_max is None else np.broadcast_to(
-        np.asarray(tau_max, dtype=float), (n,))
+    w = actuator_limits(model.spec, tau_max, "splits")
     pre, sgn = preload_settings(model, preload, preload_sign)
     numbers = split_comparison(model, w, pre, sgn, progress=progress)
     out = {"tau_max": w, "preload": pre, "preload_sign": sgn, "results": numbers,

@@ -21,7 +21,8 @@ from ..core.errors import ArgumentError, ArgumentTypeError
 from ..core.task import effort_unit
 from . import rules
 
-__all__ = ["ControlSettings", "SPLITS", "checked_split", "per_actuator", "velocity_filter_alpha"]
+__all__ = ["ControlSettings", "SPLITS", "actuator_limits", "checked_split", "per_actuator",
+           "velocity_filter_alpha"]
 
 #: torque split -> suffix of its generated functions (derive/splits.py)
 SPLITS = {"min_norm": "", "min_max": "_minmax", "preload": "_preload"}
@@ -47,6 +48,37 @@ def per_actuator(name, value, n):
         raise ArgumentError(f"{name} must be one finite number or {n} (one per actuator), got "
                             f"{value!r}")
     return v
+
+
+def actuator_limits(spec, tau_max=None, who="tau_max"):
+    """The effort limits (n,): ``tau_max`` (one for every actuator or one each), or the model
+    file's ``[limits] tau_max`` for None; N*m per revolute actuator, N per linear one.
+
+    Raises ArgumentError naming ``who``, the leg, the value and the rule unless each limit is
+    finite and in (0, 1e6] (:data:`pm2dof.control.rules.COMMON`'s ``tau_max``).
+
+    Parameters
+    ----------
+    spec : pm2dof.core.model_file.ModelSpec
+        The model file (``Model.spec``).
+    tau_max : float or array_like (n,), optional
+        The limits; the model file's when None.
+    who : str
+        What the messages name (a controller's class name, a command).
+    """
+    tau = per_actuator("tau_max", spec.limits["tau_max"] if tau_max is None else tau_max,
+                       spec.n_legs)
+    rules.check_entries(who, None, "tau_max", tau, _legs(spec), unit=_unit(spec))
+    return tau
+
+
+def _legs(spec):
+    return [f"leg {i + 1}" for i in range(spec.n_legs)]
+
+
+def _unit(spec):
+    """The efforts' unit by the actuators' kinds after a space, for messages (" N m")."""
+    return f" {effort_unit([leg.actuator for leg in spec.legs])}"
 
 
 def checked_split(spec, split=None):
@@ -137,16 +169,13 @@ class ControlSettings:
         rules.check_entries(who, None, "T", T, (), unit=" s")
         if not (math.isfinite(fc) and fc >= 0):
             raise ArgumentError(f"velocity_filter_hz must be >= 0 (0: no filter), got {fc}")
-        tau_max = per_actuator("tau_max", spec.limits["tau_max"] if tau_max is None else tau_max,
-                               n)
+        tau_max = actuator_limits(spec, tau_max, who)
         preload = per_actuator("preload", ctl["preload"] if preload is None else preload, n)
         preload_sign = per_actuator("preload_sign", ctl["preload_sign"] if preload_sign is None
                                     else preload_sign, n)
-        legs = [f"leg {i + 1}" for i in range(n)]
-        unit = f" {effort_unit([leg.actuator for leg in spec.legs])}"
-        rules.check_entries(who, None, "tau_max", tau_max, legs, unit=unit)
-        rules.check_entries(who, None, "preload", preload, legs, tau_max, unit=unit)
-        rules.check_entries(who, None, "preload_sign", preload_sign, legs)
+        rules.check_entries(who, None, "preload", preload, _legs(spec), tau_max,
+                            unit=_unit(spec))
+        rules.check_entries(who, None, "preload_sign", preload_sign, _legs(spec))
         out = cls(sample_period=T, velocity_filter_hz=fc, tau_max=_frozen(tau_max),
                   preload=_frozen(preload), preload_sign=_frozen(preload_sign), split=split,
                   singularity_threshold=spec.limits["singularity_threshold"],
