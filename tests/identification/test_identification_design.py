@@ -405,3 +405,18 @@ def test_a_converged_design_says_nothing_more(m, designed, tmp_path, monkeypatch
     r = design.run_design(m, tmp_path / "e.toml")
     assert r.converged and not design.format_design(r).startswith("NOT CONVERGED")
     assert load_excitation(tmp_path / "e.toml").info["converged"] is True
+
+
+def test_design_takes_its_options_as_three_objects(m):
+    """design_excitation's 16 settings are three option objects (the series, the limits, the
+    solver) with their defaults in one place each; anything else is refused by type before
+    IPOPT runs."""
+    for k, kind in enumerate((SeriesOptions, LimitOptions, SolverOptions)):
+        args = [None, None, None]
+        args[k] = {"base_hz": 0.5}
+        with pytest.raises(pm2dof.ArgumentTypeError, match=rf"expected a {kind.__name__}"):
+            design_excitation(m, *args)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        SeriesOptions().base_hz = 1.0
+    assert len(dataclasses.fields(SeriesOptions) + dataclasses.fields(LimitOptions)
+               + dataclasses.fields(SolverOptions)) == 16
