@@ -9,6 +9,12 @@ parameter update (eq. 28, explicit Euler over the sample period). Torques are cl
 (``limits.singularity_threshold``: type I, a leg; ``limits.parallel_singularity_threshold``:
 type II, the actuation) the step outputs the safe torque zero and leaves theta_hat unchanged
 (see ``status``).
+
+What every controller shares besides its gains (the sample period, the velocity filter, the
+limits, the split, the model file's thresholds) is one
+:class:`~pm2dof.control.settings.ControlSettings`, given as ``settings`` or built from the
+same keywords; :func:`law_params` packs a law's parameter vector from its gains and the
+settings. The time-varying LQR's step is :mod:`pm2dof.control.lqr`.
 """
 import math
 

@@ -6,9 +6,11 @@ the generated parameter layouts (``<law>_params`` of the manifest, derive/contro
 LQR's weights ``Q_position``, ``Q_velocity``, ``R`` are not in its layout but checked here as
 well). It has two readers:
 
-* the Python controllers (:class:`pm2dof.NAController` and the others) check each argument
-  (:func:`check_entries`) and the whole vector they pack (:func:`check_params`), with a typed
-  error naming the field, the entry, the value and the rule;
+* the Python side: :meth:`pm2dof.ControlSettings.from_spec` checks the settings every law
+  shares (:data:`COMMON`), the controllers (:class:`pm2dof.NAController` and the others) their
+  gains (:func:`check_entries`), and :func:`pm2dof.control.controllers.law_params` the whole
+  vector they pack (:func:`check_params`), each with a typed error naming the field, the
+  entry, the value and the rule;
 * ``pm2dof export`` writes the same rules into ``<name>_pm2dof_<law>_init`` as C comparisons
   (pm2dof/export/checks.py), which refuse a parameter vector with BAD_PARAMS and name the
   offset of the first entry that breaks one.

@@ -72,6 +72,17 @@ def actuator_limits(spec, tau_max=None, who="tau_max"):
     return tau
 
 
+def _number(who, name, value):
+    """``value`` as a float; ArgumentTypeError naming ``who`` and ``name`` for what is not a
+    real number."""
+    try:
+        if isinstance(value, (str, bytes, bool)) or np.iscomplexobj(value):
+            raise TypeError
+        return float(value)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(f"{who}: {name} must be a real number, got {value!r}") from None
+
+
 def _legs(spec):
     return [f"leg {i + 1}" for i in range(spec.n_legs)]
 
@@ -163,9 +174,10 @@ class ControlSettings:
         """
         ctl, n = spec.control, spec.n_legs
         split = checked_split(spec, split)
-        T = spec.sensing["sample_period"] if sample_period is None else float(sample_period)
+        T = spec.sensing["sample_period"] if sample_period is None else _number(
+            who, "sample_period", sample_period)
         fc = (spec.sensing["velocity_filter_hz"] if velocity_filter_hz is None
-              else velocity_filter_hz)
+              else _number(who, "velocity_filter_hz", velocity_filter_hz))
         rules.check_entries(who, None, "T", T, (), unit=" s")
         if not (math.isfinite(fc) and fc >= 0):
             raise ArgumentError(f"velocity_filter_hz must be >= 0 (0: no filter), got {fc}")
@@ -216,6 +228,7 @@ class ControlSettings:
             raise ArgumentError(f"{who}: give settings or {', '.join(named)}, not both (build "
                                 f"the settings with ControlSettings.from_spec(model.spec, "
                                 f"...))")
+        checked_split(spec, settings.split)
         if len(settings.tau_max) != spec.n_legs:
             raise ArgumentError(f"{who}: the settings are for {len(settings.tau_max)} "
                                 f"actuators, model {spec.name!r} has {spec.n_legs}")

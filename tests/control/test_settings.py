@@ -72,6 +72,10 @@ def test_overrides_are_checked_with_who_names_them(model):
     with pytest.raises(ArgumentError, match=r"split must be one of \['min_norm', 'min_max', "
                                             r"'preload'\], got 'fast'"):
         ControlSettings.from_spec(model.spec, split="fast")
+    for key in ("sample_period", "velocity_filter_hz"):
+        with pytest.raises(ArgumentTypeError, match=rf"^Robot: {key} must be a real number, "
+                                                    rf"got 'fast'"):
+            ControlSettings.from_spec(model.spec, **{key: "fast"}, who="Robot")
 
 
 def test_every_controller_takes_the_settings_object(model):
