@@ -34,6 +34,7 @@ import importlib
 
 from .control.controllers import STATUS_NAMES, APDController, CTCController, NAController, Status
 from .control.plant import plant_truth, theta_truth
+from .control.settings import ControlSettings
 from .control.simulate import SimResult, check_trajectory, rmse, simulate
 from .control.trajectory import (
     PAPER_MOVES,
@@ -113,7 +114,7 @@ __all__ = [
     "load_model", "Model",
     # layer 2: control
     "NAController", "APDController", "CTCController", "Status", "STATUS_NAMES", "simulate", "SimResult",
-    "check_trajectory",
+    "check_trajectory", "ControlSettings",
     "plant_truth", "theta_truth", "rmse", "line", "model_move", "paper_move", "PAPER_MOVES",
     "Trajectory",
     # errors

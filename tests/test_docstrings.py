@@ -145,5 +145,5 @@ def test_the_checker_finds_an_undocumented_parameter():
     assert len(TARGETS) > 90, len(TARGETS)   # the API was found
     assert {"pm2dof.core.model.Model.ik", "pm2dof.core.derivatives.DerivativeMethods.linearize",
             "pm2dof.control.simulate.simulate", "pm2dof.control.simulate.SimResult",
-            "pm2dof.linear.lqr.LQRController.step", "pm2dof.core.errors.ModelFileError",
+            "pm2dof.control.lqr.LQRController.step", "pm2dof.core.errors.ModelFileError",
             "pm2dof.identification.base.identifiability"} <= set(TARGETS)

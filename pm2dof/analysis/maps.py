@@ -34,6 +34,7 @@ taken at one orientation phi, by default the home pose's, and say which.
 """
 import numpy as np
 
+from ..control.settings import actuator_limits
 from ..core.errors import ArgumentError, WorkspaceError
 from ..infra.progress import bar
 
@@ -154,7 +155,7 @@ def capability(model, q, theta=None, tau_max=None):
         value is 0) and cond_StS.
     """
     theta = model.theta_nominal if theta is None else theta
-    w = np.asarray(model.spec.limits["tau_max"] if tau_max is None else tau_max, dtype=float)
+    w = actuator_limits(model.spec, tau_max, "capability")
     n, m = model.n_legs, model.dof
     q = np.ascontiguousarray(q, dtype=float)
     S = _unchecked(model, "S", (n, m), q)

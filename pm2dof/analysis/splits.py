@@ -17,7 +17,8 @@ actuator reversed its sign or fell short of its preload, by that much).
 """
 import numpy as np
 
-from ..control.controllers import SPLITS, APDController, NAController, per_actuator
+from ..control.controllers import APDController, NAController
+from ..control.settings import SPLITS, actuator_limits, per_actuator
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
 from ..core.task import effort_unit
@@ -91,7 +92,7 @@ def split_comparison(model, tau_max=None, preload=None, preload_sign=None, speed
     speeds : list of str, optional
         Moves of ``[trajectories]`` (default: all).
     splits : sequence of str
-        The torque splits to compare (default: all, ``pm2dof.control.controllers.SPLITS``).
+        The torque splits to compare (default: all, ``pm2dof.control.settings.SPLITS``).
     controllers : sequence of str
         "apd", "na" or both.
     quantise : bool
@@ -205,9 +206,7 @@ def run_splits(model, tau_max=None, preload=None, preload_sign=None, progress=No
     "preload_sign", "results", "units"}`` (:func:`splits_units`), and ``"note"``
     (:func:`redundancy_note`) on a robot without a redundant actuator (its ``--json``; the
     text: :func:`format_splits`)."""
-    n = model.n_legs
-    w = model.spec.limits["tau_max"] if tau_max is None else np.broadcast_to(
-        np.asarray(tau_max, dtype=float), (n,))
+    w = actuator_limits(model.spec, tau_max, "splits")
     pre, sgn = preload_settings(model, preload, preload_sign)
     numbers = split_comparison(model, w, pre, sgn, progress=progress)
     out = {"tau_max": w, "preload": pre, "preload_sign": sgn, "results": numbers,

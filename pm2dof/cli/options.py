@@ -83,7 +83,7 @@ def tau_max(args, m):
     """``--tau-max`` (one value for every actuator or one per actuator) as (n,), or None."""
     if args.tau_max is None:
         return None
-    from ..control.controllers import per_actuator
+    from ..control.settings import per_actuator
     values = args.tau_max
     return per_actuator("--tau-max", values[0] if len(values) == 1 else values, m.n_legs)
 

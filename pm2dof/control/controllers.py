@@ -9,12 +9,18 @@ parameter update (eq. 28, explicit Euler over the sample period). Torques are cl
 (``limits.singularity_threshold``: type I, a leg; ``limits.parallel_singularity_threshold``:
 type II, the actuation) the step outputs the safe torque zero and leaves theta_hat unchanged
 (see ``status``).
+
+What every controller shares besides its gains (the sample period, the velocity filter, the
+limits, the split, the model file's thresholds) is one
+:class:`~pm2dof.control.settings.ControlSettings`, given as ``settings`` or built from the
+same keywords; :func:`law_params` packs a law's parameter vector from its gains and the
+settings. The time-varying LQR's step is :mod:`pm2dof.control.lqr`.
 """
 import math
 
 import numpy as np
 
-from ..core import _cbind
+from ..core import binding
 from ..core.contract import SPLITS
 from ..core.errors import (
     ArgumentError,
@@ -24,44 +30,26 @@ from ..core.errors import (
     NotResetError,
     SingularityError,
 )
-from ..core.layout import Layout
 from ..core.model import require_model
 from ..core.status import STATUS_NAMES, Status
-from ..core.task import effort_unit
 from . import rules
+from .settings import ControlSettings
 
 __all__ = ["NAController", "APDController", "CTCController", "STATUS_NAMES", "Status",
-           "check_same_model", "CTC_DEFAULT_GAINS"]
+           "check_same_model", "CTC_DEFAULT_GAINS", "default_gains", "law_params"]
 
 _SINGULAR = float(Status.SINGULAR)   # the hot path compares a float (an Enum lookup: ~60 ns)
-
-
-def velocity_filter_alpha(sample_period, cutoff_hz):
-    """Gain a of v_k = v_{k-1} + a ((x_k - x_{k-1})/T - v_{k-1}); cutoff 0: no filter (a = 1)."""
-    if cutoff_hz == 0:
-        return 1.0
-    return sample_period / (sample_period + 1.0 / (2.0 * math.pi * cutoff_hz))
+#: law -> its controller's class name (the name its messages give)
+_CLASS_OF_LAW = {law: name for name, law in rules.LAW_OF_CLASS.items()}
+#: law -> its parameter fields beyond the gains and the settings, at their defaults (NA's
+#: freeze_saturated: 0, adapt on every good sample, the paper's law)
+_OPTIONS = {"na": {"freeze_saturated": 0.0}}
 
 
 def _checked_on_singular(value):
     if value not in ("raise", "zero"):
         raise ArgumentError(f"on_singular must be 'raise' or 'zero', got {value!r}")
     return value
-
-
-def per_actuator(name, value, n):
-    """``value`` as (n,) floats: n finite numbers, or one for every actuator (as the planner
-    and the CLI take it); ArgumentError naming ``name`` otherwise."""
-    try:
-        v = np.array(value, dtype=float)
-    except (TypeError, ValueError):
-        v = None
-    if v is not None and v.ndim == 0:
-        v = np.full(n, float(v))
-    if v is None or v.shape != (n,) or not np.isfinite(v).all():
-        raise ArgumentError(f"{name} must be one finite number or {n} (one per actuator), got "
-                            f"{value!r}")
-    return v
 
 
 #: CTCController's gains when the model file has no [gains.ctc]: on every task axis a
@@ -121,69 +109,103 @@ def check_same_model(model, controller):
         f"{who(model)}; build the controller with the model it runs on")
 
 
-class _Controller:
-    _law = ""
-    _options = {}       # parameter fields of the law beyond gains and limits (NA's options)
+def default_gains(spec, law):
+    """{gain: value} of ``law`` in the model file ``spec``: ``[gains.<law>]`` (computed torque
+    without one: :data:`CTC_DEFAULT_GAINS`). The LQR's parameter vector holds no gains (its
+    K_k are inputs of each step): {}.
 
-    def __init__(self, model, base, gains, theta0, sample_period, velocity_filter_hz, tau_max,
-                 on_singular, split, preload, preload_sign):
-        require_model(model)
+    Parameters
+    ----------
+    spec : pm2dof.core.model_file.ModelSpec
+        The model file (``Model.spec``).
+    law : {"na", "apd", "ctc", "lqr"}
+        The control law.
+    """
+    if law == "ctc":
+        return dict(spec.gains.get("ctc") or CTC_DEFAULT_GAINS)
+    return dict(spec.gains[law]) if law in ("na", "apd") else {}
+
+
+def law_params(model, law, gains=None, settings=None, options=None, who=None):
+    """The parameter vector of ``law``'s generated step (layout ``<law>_params``), checked.
+
+    The gains (each given or the model file's, :func:`default_gains`; checked by
+    :func:`diagonal_gain`), then the settings' fields (:meth:`ControlSettings.params`) and the
+    law's options (NA's ``freeze_saturated``, default 0), packed and checked entry by entry
+    against :data:`pm2dof.control.rules.RULES`, the rules the exported C's init applies.
+    What a controller of ``law`` built with the same arguments steps with (its ``params``);
+    ``pm2dof export`` writes it as the law's defaults.
+
+    Parameters
+    ----------
+    model : Model
+    law : {"na", "apd", "ctc", "lqr"}
+        The control law.
+    gains : dict, optional
+        {gain: value or None (the model file's)}, in the order they are checked; default the
+        model file's gains of ``law``.
+    settings : ControlSettings, optional
+        Default :meth:`ControlSettings.from_spec` of the model file.
+    options : dict, optional
+        The law's options by field (NA: ``freeze_saturated``, 0 or 1).
+    who : str, optional
+        What the messages name (default the law's controller class, "NAController").
+
+    Returns
+    -------
+    ndarray (k,)
+        Read-only, in the layout's order.
+    """
+    who = who or _CLASS_OF_LAW[law]
+    if settings is None:
+        settings = ControlSettings.from_spec(model.spec, who=who)
+    defaults = default_gains(model.spec, law)
+    gains = defaults if gains is None else {k: defaults[k] if v is None else v
+                                            for k, v in gains.items()}
+    labels = {"Gamma": model.param_names}
+    gains = {k: diagonal_gain(who, k, v, labels.get(k, model.task_names))
+             for k, v in gains.items()}
+    layout = model.layout(f"{law}_params")
+    params = layout.pack(**gains, **settings.params(), **{**_OPTIONS.get(law, {}),
+                                                          **(options or {})})
+    # every entry against pm2dof.control.rules, the rules the exported C's init applies
+    # (the model's thresholds and closure tolerance, the velocity gain, the options)
+    legs = [f"leg {i + 1}" for i in range(model.n_legs)]
+    rules.check_params(who, law, layout, params,
+                       {"Gamma": model.param_names, "tau_max": legs, "preload": legs,
+                        "preload_sign": legs, **{k: model.task_names for k in gains}})
+    params.setflags(write=False)
+    return params
+
+
+class _Controller:
+    """What every controller shares: its settings, its parameter vector, the step's fast path
+    (one C call) and its checked path. ``gains``: {gain: value or None}; ``options``: the law's
+    options (:func:`law_params`)."""
+    _law = ""
+
+    def __init__(self, model, base, gains, theta0, settings, on_singular, options=None):
         self._on_singular = _checked_on_singular(on_singular)
-        spec = model.spec
-        ctl = spec.control
-        self.split = ctl["split"] if split is None else split
-        if self.split not in SPLITS:
-            raise ArgumentError(f"split must be one of {list(SPLITS)}, got {split!r}")
-        self.function_name = base + SPLITS[self.split]   # generated <name>_<function_name>_step
-        lays = model.manifest["layouts"]
         self.model = model
-        self.state_layout = Layout("ctrl_state", lays["ctrl_state"])
-        self.params_layout = Layout(f"{self._law}_params", lays[f"{self._law}_params"])
-        who = type(self).__name__
-        T = spec.sensing["sample_period"] if sample_period is None else float(sample_period)
-        fc = spec.sensing["velocity_filter_hz"] if velocity_filter_hz is None else velocity_filter_hz
-        rules.check_entries(who, self._law, "T", T, (), unit=" s")
-        if not (math.isfinite(fc) and fc >= 0):
-            raise ArgumentError(f"velocity_filter_hz must be >= 0 (0: no filter), got {fc}")
-        self.sample_period = T
+        self.settings = settings
+        self.split = settings.split
+        self.function_name = base + SPLITS[self.split]   # generated <name>_<function_name>_step
+        self.state_layout = model.layout("ctrl_state")
+        self.params_layout = model.layout(f"{self._law}_params")
+        self.sample_period = settings.sample_period
         self.theta0 = model.checked_theta(theta0, "theta0")
         n = model.n_legs
-        tau_max = per_actuator("tau_max", spec.limits["tau_max"] if tau_max is None else tau_max,
-                               n)
-        preload = per_actuator("preload", ctl["preload"] if preload is None else preload, n)
-        preload_sign = per_actuator("preload_sign", ctl["preload_sign"] if preload_sign is None
-                               else preload_sign, n)
-        legs = [f"leg {i + 1}" for i in range(n)]
-        unit = f" {effort_unit(model)}"
-        rules.check_entries(who, self._law, "tau_max", tau_max, legs, unit=unit)
-        rules.check_entries(who, self._law, "preload", preload, legs, tau_max, unit=unit)
-        rules.check_entries(who, self._law, "preload_sign", preload_sign, legs)
-        labels = {"Gamma": model.param_names}
-        gains = {k: diagonal_gain(who, k, v, labels.get(k, model.task_names))
-                 for k, v in gains.items()}
-        self.params = self.params_layout.pack(
-            **gains, T=T, vel_alpha=velocity_filter_alpha(T, fc),
-            sing_threshold=model.singularity_threshold,
-            parallel_sing_threshold=model.parallel_singularity_threshold,
-            tau_max=tau_max, preload_sign=preload_sign, preload=preload,
-            closure_tol=model.closure_tolerance, **self._options)
-        # every entry against pm2dof.control.rules, the rules the exported C's init applies
-        # (the model's thresholds and closure tolerance, the velocity gain, the options)
-        rules.check_params(who, self._law, self.params_layout, self.params,
-                           {"Gamma": model.param_names, "tau_max": legs, "preload": legs,
-                            "preload_sign": legs, **{k: model.task_names for k in gains}})
-        self.params.setflags(write=False)
+        self.params = law_params(model, self._law, gains, settings, options, type(self).__name__)
         self._f = f = model.function(f"{self.function_name}_step")
         self._state, self._state_next = (np.zeros(self.state_layout.size),
                                          np.zeros(self.state_layout.size))
         self._n = n
         self._status = np.zeros(1)
         self._diag = np.zeros(model.layout("diag").size)  # the step's diag (the manifest's)
-        self._extra = ()      # the per-sample inputs of a law that has them (LQR's K_k, tau_ff_k)
         # the step's fast path, one C call: state and params bound here (checked once, now),
         # state <- state_next after the evaluation, a singular status reported (GuardTripped)
         # when on_singular is "raise"; what it refuses takes _refused's checked path
-        self._method = _cbind.Method(
+        self._method = binding.Method(
             f, (self._state, None, None, None, None, self.params) + (None,) * (f.n_in - 6),
             ((n,), self._state_next, self._status, self._diag), empty=np.empty,
             guard=(2, "not_equal", _SINGULAR), feedback=(1, 0))
@@ -276,19 +298,20 @@ class _Controller:
         """
         try:
             return self._run(qa_meas, xd, xd_dot, xd_ddot, out)
-        except _cbind.Refused as exc:
+        except binding.Refused as exc:
             return self._refused(exc, (qa_meas, xd, xd_dot, xd_ddot), out)
 
-    def _refused(self, exc, given, out):
+    def _refused(self, exc, given, out, extra=()):
         """After the fast path refused a step: at a singular pose (GuardTripped: the step ran,
         theta_hat kept) raise SingularityError; otherwise nothing ran, so take the checked
         path: the inputs ``given`` converted once and the step run, what the binding refuses
-        raised as ArgumentError."""
-        if isinstance(exc, _cbind.GuardTripped):
+        raised as ArgumentError. ``extra``: the inputs after the parameters (a law's
+        per-sample inputs: the LQR's K_k, tau_ff_k)."""
+        if isinstance(exc, binding.GuardTripped):
             raise self._singular_error() from None
         tau = np.empty(self._n) if out is None else out  # the C checks out's dtype and size
-        self.model._call(self._f, (self._state, *given, self.params, *self._extra),
-                         (tau, self._state_next, self._status, self._diag))
+        binding.call(self._f, (self._state, *given, self.params, *extra),
+                     (tau, self._state_next, self._status, self._diag))
         self._state[:] = self._state_next
         if self._status[0] == _SINGULAR and self._on_singular == "raise":
             raise self._singular_error()
@@ -370,6 +393,10 @@ class NAController(_Controller):
         is an exact optimum, generated as its own C step (docs/results-redundancy.md).
     preload, preload_sign : float or array_like (n,), optional
         The "preload" split's least |tau_i|, N*m, and signs +-1 (default ``[control]``).
+    settings : pm2dof.control.settings.ControlSettings, optional
+        All of ``sample_period``, ``velocity_filter_hz``, ``tau_max``, ``split``, ``preload``
+        and ``preload_sign`` at once, checked
+        (:meth:`~pm2dof.control.settings.ControlSettings.from_spec`); not with any of them.
 
     Notes
     -----
@@ -384,7 +411,7 @@ class NAController(_Controller):
     def __init__(self, model, *, Kd=None, Q=None, Gamma=None, theta0=None, sample_period=None,
                  velocity_filter_hz=None, tau_max=None, project=False,
                  freeze_when_saturated=False, on_singular="raise", split=None, preload=None,
-                 preload_sign=None):
+                 preload_sign=None, settings=None):
         require_model(model)
         for name, value in (("project", project),
                             ("freeze_when_saturated", freeze_when_saturated)):
@@ -392,13 +419,13 @@ class NAController(_Controller):
                 raise ArgumentTypeError(f"{name} must be True or False, got {value!r}")
         self.project = bool(project)
         self.freeze_when_saturated = bool(freeze_when_saturated)
-        self._options = {"freeze_saturated": float(self.freeze_when_saturated)}
-        g = model.spec.gains["na"]
+        settings = ControlSettings.resolve(
+            model.spec, settings, who="NAController", sample_period=sample_period,
+            velocity_filter_hz=velocity_filter_hz, tau_max=tau_max, split=split, preload=preload,
+            preload_sign=preload_sign)
         super().__init__(model, "na_proj" if self.project else "na",
-                         {"Kd": g["Kd"] if Kd is None else Kd, "Q": g["Q"] if Q is None else Q,
-                          "Gamma": g["Gamma"] if Gamma is None else Gamma},
-                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular, split,
-                         preload, preload_sign)
+                         {"Kd": Kd, "Q": Q, "Gamma": Gamma}, theta0, settings, on_singular,
+                         {"freeze_saturated": float(self.freeze_when_saturated)})
         self._gamma = self.params[self.params_layout.slices["Gamma"]].copy()
         self._adapting = True
 
@@ -446,20 +473,20 @@ class APDController(_Controller):
         conditions raise :class:`pm2dof.GainError` naming the gain and the entry.
     theta0 : array_like (p,), optional
         The model inside the feedforward (default Tables 1-2); never updated.
-    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign
+    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign, settings
         As for :class:`NAController`.
     """
     _law = "apd"
 
     def __init__(self, model, *, Kp=None, Kv=None, theta0=None, sample_period=None,
                  velocity_filter_hz=None, tau_max=None, on_singular="raise", split=None,
-                 preload=None, preload_sign=None):
+                 preload=None, preload_sign=None, settings=None):
         require_model(model)
-        g = model.spec.gains["apd"]
-        super().__init__(model, "apd", {"Kp": g["Kp"] if Kp is None else Kp,
-                                        "Kv": g["Kv"] if Kv is None else Kv},
-                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular, split,
-                         preload, preload_sign)
+        settings = ControlSettings.resolve(
+            model.spec, settings, who="APDController", sample_period=sample_period,
+            velocity_filter_hz=velocity_filter_hz, tau_max=tau_max, split=split, preload=preload,
+            preload_sign=preload_sign)
+        super().__init__(model, "apd", {"Kp": Kp, "Kv": Kv}, theta0, settings, on_singular)
 
 
 class CTCController(_Controller):
@@ -492,17 +519,17 @@ class CTCController(_Controller):
         :class:`pm2dof.GainError` naming the gain and the entry.
     theta0 : array_like (p,), optional
         The model inside the law (default Tables 1-2); never updated.
-    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign
+    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign, settings
         As for :class:`NAController`.
     """
     _law = "ctc"
 
     def __init__(self, model, *, Kp=None, Kv=None, theta0=None, sample_period=None,
                  velocity_filter_hz=None, tau_max=None, on_singular="raise", split=None,
-                 preload=None, preload_sign=None):
+                 preload=None, preload_sign=None, settings=None):
         require_model(model)
-        g = model.spec.gains.get("ctc") or CTC_DEFAULT_GAINS
-        super().__init__(model, "ctc", {"Kp": g["Kp"] if Kp is None else Kp,
-                                        "Kv": g["Kv"] if Kv is None else Kv},
-                         theta0, sample_period, velocity_filter_hz, tau_max, on_singular, split,
-                         preload, preload_sign)
+        settings = ControlSettings.resolve(
+            model.spec, settings, who="CTCController", sample_period=sample_period,
+            velocity_filter_hz=velocity_filter_hz, tau_max=tau_max, split=split, preload=preload,
+            preload_sign=preload_sign)
+        super().__init__(model, "ctc", {"Kp": Kp, "Kv": Kv}, theta0, settings, on_singular)

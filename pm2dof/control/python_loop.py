@@ -27,8 +27,7 @@ class PythonController:
 
     def __init__(self, model, sample_period=None, theta0=None):
         self.model = model
-        self.sample_period = float(model.spec.sensing["sample_period"] if sample_period is None
-                                   else sample_period)
+        self.sample_period = model.checked_period(sample_period)
         self.theta0 = np.array(model.theta_nominal if theta0 is None else theta0, dtype=float)
         self.status = Status.OK
 

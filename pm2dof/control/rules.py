@@ -6,9 +6,11 @@ the generated parameter layouts (``<law>_params`` of the manifest, derive/contro
 LQR's weights ``Q_position``, ``Q_velocity``, ``R`` are not in its layout but checked here as
 well). It has two readers:
 
-* the Python controllers (:class:`pm2dof.NAController` and the others) check each argument
-  (:func:`check_entries`) and the whole vector they pack (:func:`check_params`), with a typed
-  error naming the field, the entry, the value and the rule;
+* the Python side: :meth:`pm2dof.ControlSettings.from_spec` checks the settings every law
+  shares (:data:`COMMON`), the controllers (:class:`pm2dof.NAController` and the others) their
+  gains (:func:`check_entries`), and :func:`pm2dof.control.controllers.law_params` the whole
+  vector they pack (:func:`check_params`), each with a typed error naming the field, the
+  entry, the value and the rule;
 * ``pm2dof export`` writes the same rules into ``<name>_pm2dof_<law>_init`` as C comparisons
   (pm2dof/export/checks.py), which refuse a parameter vector with BAD_PARAMS and name the
   offset of the first entry that breaks one.
@@ -38,7 +40,7 @@ import numpy as np
 
 from ..core.errors import ArgumentError, GainError
 
-__all__ = ["Rule", "RULES", "LAW_OF_CLASS", "T_MIN", "T_MAX", "TAU_MAX_LIMIT",
+__all__ = ["Rule", "RULES", "COMMON", "LAW_OF_CLASS", "T_MIN", "T_MAX", "TAU_MAX_LIMIT",
            "CLOSURE_TOL_MAX", "rule", "violations", "check_entries", "check_params"]
 
 #: the sample period's bounds, s
@@ -115,7 +117,9 @@ class Rule:
 _POSITIVE = dict(lo=0.0, lo_open=True, gain=True)
 _LYAPUNOV = "(the Lyapunov argument of Sect. 4)"
 _CTC = "computed torque needs {} positive definite (the error dynamics are then stable)"
-_COMMON = {
+#: field -> Rule of the fields every law's parameters share after its gains (the settings of
+#: pm2dof.control.settings.ControlSettings)
+COMMON = {
     "T": Rule(lo=T_MIN, hi=T_MAX, name="sample_period",
               why="the controller's sample period, s"),
     "vel_alpha": Rule(lo=0.0, lo_open=True, hi=1.0, name="velocity filter gain",
@@ -148,16 +152,16 @@ RULES = {
                              "switches adaptation of that parameter off)"),
            "freeze_saturated": Rule(values=(0.0, 1.0), name="freeze_when_saturated",
                                     why="1 holds theta_hat on a saturated sample, 0 adapts"),
-           **_COMMON},
+           **COMMON},
     "apd": {"Kp": Rule(**_POSITIVE, why="APD (eq. 40) needs Kp positive definite"),
             "Kv": Rule(**_POSITIVE, why="APD (eq. 40) needs Kv positive definite"),
-            **_COMMON},
+            **COMMON},
     "ctc": {"Kp": Rule(**_POSITIVE, why=_CTC.format("Kp")),
-            "Kv": Rule(**_POSITIVE, why=_CTC.format("Kv")), **_COMMON},
+            "Kv": Rule(**_POSITIVE, why=_CTC.format("Kv")), **COMMON},
     "lqr": {"Q_position": Rule(**_POSITIVE, why="the LQR needs positive state weights Q"),
             "Q_velocity": Rule(**_POSITIVE, why="the LQR needs positive state weights Q"),
             "R": Rule(**_POSITIVE, why="the LQR needs positive definite torque weights R"),
-            **_COMMON},
+            **COMMON},
 }
 #: controller class name -> law
 LAW_OF_CLASS = {"NAController": "na", "APDController": "apd", "CTCController": "ctc",
@@ -165,10 +169,11 @@ LAW_OF_CLASS = {"NAController": "na", "APDController": "apd", "CTCController": "
 
 
 def rule(law, field):
-    """The :class:`Rule` of ``field`` in ``law`` (a law or a controller class name)."""
+    """The :class:`Rule` of ``field`` in ``law`` (a law or a controller class name; None: a
+    field every law shares, :data:`COMMON`)."""
     law = LAW_OF_CLASS.get(law, law)
     try:
-        return RULES[law][field]
+        return COMMON[field] if law is None else RULES[law][field]
     except KeyError:
         raise ArgumentError(f"no parameter rule for {law!r} field {field!r}") from None
 

@@ -4,7 +4,8 @@
 Each control sample k: the encoder reads the true active angles (quantised), the controller
 step computes tau_k from them and the desired motion at t_k, and the plant integrates its
 truth dynamics over [t_k, t_k + T] with ``rk4_substeps`` RK4 steps under that torque held
-constant (zero-order hold). The loop over samples runs in C (``_cbind.Function.accumulate``).
+constant (zero-order hold). The loop over samples runs in C
+(``pm2dof.core.binding.Function.accumulate``).
 """
 import math
 import warnings

@@ -139,12 +139,6 @@ class DerivativeMethods:
                                         ((m, m), (m, m), (m, n), (m, p)), out,
                                         (xe, xed, tau_a, theta))
 
-    def _period(self, period):
-        T = self.spec.sensing["sample_period"] if period is None else period
-        if not (isinstance(T, (int, float, np.floating, np.integer)) and 0 < T < np.inf):
-            raise ArgumentError(f"period must be a finite number of seconds > 0, got {period!r}")
-        return float(T)
-
     def sampled_step(self, x, tau_a, theta, period=None, out=None):
         """One sample of the model's dynamics with ``theta`` under a zero-order hold.
 
@@ -172,7 +166,7 @@ class DerivativeMethods:
         -------
         x_next : ndarray (2m,)
         """
-        T = self._period(period)
+        T = self.checked_period(period)
         try:
             return self._fast["sampled_step"](x, tau_a, theta, T, out)
         except _cbind.Refused:
@@ -195,7 +189,7 @@ class DerivativeMethods:
         SampledStepJacobians
             ``d_x`` (2m, 2m), ``d_tau_a`` (2m, n) (the discrete-time A and B at x, tau_a).
         """
-        T, k = self._period(period), 2 * self._m
+        T, k = self.checked_period(period), 2 * self._m
         try:
             return self._fast["sampled_step_jacobians"](x, tau_a, theta, T, out)
         except _cbind.Refused:

@@ -58,6 +58,7 @@ except ImportError:  # a source tree whose C extension was never built
         f"pm2dof is not built: its C extension pm2dof.core._cbind is missing from "
         f"{Path(__file__).parent}; build it with `pip install -e .` (or `make install`) in the "
         f"source tree") from None
+from .binding import call  # noqa: E402  (after the check above: it needs the C extension)
 
 __all__ = ["Model", "load_model", "require_model"]
 
@@ -402,47 +403,8 @@ class Model(DerivativeMethods, PoseMethods):
     # in C it checks every argument's dtype (float64), contiguity, element count and
     # finiteness and out's type and shape, evaluates, and checks the result (finite, the
     # pose not singular, fk's loops closed). Whatever it refuses takes the checked path
-    # below: the arguments converted (lists, ints, float32 ...), the call retried and every
-    # problem named in a typed error.
-    def _coerce(self, f, args):
-        out = []
-        for name, size, x in zip(f.names_in, f.sizes_in, args):
-            try:
-                if x is None:
-                    raise TypeError("None is not a number")
-                if np.iscomplexobj(x):
-                    raise TypeError("complex values are not allowed")
-                a = np.asarray(x, dtype=np.float64)
-            except (TypeError, ValueError) as exc:
-                raise ArgumentTypeError(f"{f.name}: input '{name}' must be an array of {size} "
-                                        f"real numbers, got {type(x).__name__}: {exc}") from None
-            if a.shape != (size,) and not (size == 1 and a.ndim == 0):
-                raise ArgumentError(f"{f.name}: input '{name}' must have shape ({size},), got "
-                                    f"shape {a.shape}")
-            out.append(np.ascontiguousarray(a).reshape(size))
-        return out
-
-    def _call(self, f, args, outs):
-        """``f(*args, *outs)``: the fast path, else the arguments converted and the call
-        retried; the binding's refusals become typed errors. Returns (args as called, the
-        NonFiniteOutputError of a non-finite result from finite inputs, or None)."""
-        try:
-            f(*args, *outs)
-            return args, None
-        except _cbind.NonFiniteOutputError as exc:
-            return args, exc
-        except (TypeError, ValueError):  # not float64 arrays: convert (clear errors) and retry
-            args = self._coerce(f, args)
-        try:
-            f(*args, *outs)
-        except _cbind.NonFiniteOutputError as exc:
-            return args, exc
-        except TypeError as exc:
-            raise ArgumentTypeError(str(exc)) from None
-        except ValueError as exc:        # e.g. a NaN input, named by the binding
-            raise ArgumentError(str(exc)) from None
-        return args, None
-
+    # (pm2dof.core.binding.call): the arguments converted (lists, ints, float32 ...), the call
+    # retried and every problem named in a typed error.
     def _out(self, out, shape):
         if out is None:
             return np.empty(shape)
@@ -464,7 +426,7 @@ class Model(DerivativeMethods, PoseMethods):
         """``f(*args, *outs)``; raise on a singular pose (``sing``, the measures output, or
         None) and on a non-finite result from finite inputs."""
         # a NaN/inf result from finite inputs: a singular pose explains it, else NonFiniteError
-        args, nonfinite = self._call(f, args, outs)
+        args, nonfinite = call(f, args, outs)
         if sing is not None and not (sing[0] >= self._sing_thr[0] and
                                      sing[1] >= self._sing_thr[1]):
             if sing[0] != sing[0] and f.names_in[0] in ("xe", "x"):
@@ -552,6 +514,25 @@ class Model(DerivativeMethods, PoseMethods):
     closure_tolerance = property(
         lambda self: self.spec.sensing["closure_tolerance"],
         doc="largest |O - B_i| - lb_i, m, that fk and the controllers accept from the encoders")
+    sample_period = property(
+        lambda self: float(self.spec.sensing["sample_period"]),
+        doc="the controllers' sample period, s (``[sensing] sample_period``): the default of "
+            "every ``period`` and ``sample_period`` argument")
+
+    def checked_period(self, period=None):
+        """A sample period as a float, s: ``period``, or :attr:`sample_period` for None.
+
+        Raises ArgumentError unless it is a finite number of seconds > 0.
+
+        Parameters
+        ----------
+        period : float, optional
+            The sample period, s; the model file's (:attr:`sample_period`) when None.
+        """
+        T = self.sample_period if period is None else period
+        if not (isinstance(T, (int, float, np.floating, np.integer)) and 0 < T < np.inf):
+            raise ArgumentError(f"period must be a finite number of seconds > 0, got {period!r}")
+        return float(T)
 
     def fk(self, qa, out=None):
         """Forward kinematics from the measured active coordinates.
@@ -600,7 +581,7 @@ class Model(DerivativeMethods, PoseMethods):
 
     def _fk_checked(self, qa, out):
         out = self._out(out, (self._m,))
-        (qa,), _ = self._call(self._f["fk"], (qa,), (out, self._residual))
+        (qa,), _ = call(self._f["fk"], (qa,), (out, self._residual))
         r = self._residual
         tol = self.spec.sensing["closure_tolerance"]
         qa_text = active_coordinates(self, qa)
@@ -943,7 +924,7 @@ class Model(DerivativeMethods, PoseMethods):
         pre = ctl["preload"] if preload is None else preload
         sgn = ctl["preload_sign"] if preload_sign is None else preload_sign
         outs = (np.empty(n), np.empty(n), np.empty(1), np.empty(n), np.empty(1), np.empty(2))
-        self._call(self._f["torque_splits"], (q, u, w, sgn, pre), outs)
+        call(self._f["torque_splits"], (q, u, w, sgn, pre), outs)
         sing = outs[5]
         if not (sing[0] >= self._sing_thr[0] and sing[1] >= self._sing_thr[1]):
             raise SingularityError(f"torque_splits: {self.singularity_message(sing)}")

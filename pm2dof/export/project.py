@@ -13,7 +13,7 @@ import re
 from importlib import resources
 from pathlib import Path
 
-from ..control.controllers import APDController, CTCController, NAController
+from ..control.controllers import law_params
 from ..core import contract, paths
 from ..core.errors import ArgumentError, OutputError, StaleGeneratedCodeError
 from ..core.layout import Layout
@@ -235,13 +235,9 @@ def _c_list(values, suffix):
 
 
 def _law_params(model):
-    """{law: default parameter vector} from pm2dof's controllers (the model file's values)."""
-    out = {"na": NAController(model).params, "apd": APDController(model).params,
-           "ctc": CTCController(model).params}
-    lqr = Layout("lqr_params", model.manifest["layouts"]["lqr_params"])
-    na = Layout("na_params", model.manifest["layouts"]["na_params"]).unpack(out["na"])
-    out["lqr"] = lqr.pack(**{f: na[f] for f, _ in lqr.fields})
-    return out
+    """{law: default parameter vector}: the model file's gains and settings, packed and checked
+    as pm2dof's controllers pack them (:func:`pm2dof.control.controllers.law_params`)."""
+    return {law: law_params(model, law) for law in LAWS}
 
 
 def export_project(model=None, out=None, *, precision="double", controllers=LAWS, force=False,

@@ -4,6 +4,7 @@ from pathlib import Path
 import numpy as np
 
 from ..analysis.maps import maps_summary, workspace_maps
+from ..control.settings import actuator_limits
 from ..control.trajectory import line_moves, model_move
 from ..core.task import per_actuator
 from ..infra.results import provenance, save_figure, write_json
@@ -140,7 +141,7 @@ def _title(model, key):
 def maps_note(model, tau_max=None, phi=None):
     """The key to the maps' figures: model, limits, a platform's orientation ``phi`` (rad; the
     maps' ``phi``), and what each line and marker is."""
-    w = model.spec.limits["tau_max"] if tau_max is None else np.asarray(tau_max, dtype=float)
+    w = actuator_limits(model.spec, tau_max, "maps")
     units = per_actuator(model, "N m", "N", "N m (revolute) or N (linear)")
     pose = ("" if phi is None else
             f"The platform at phi = {phi:g} rad (its home orientation unless given) over the "

@@ -52,19 +52,20 @@ from pathlib import Path
 import numpy as np
 
 from ..control.trajectory import line_moves
-from ..core.errors import ArgumentError
+from ..core.errors import ArgumentError, ArgumentTypeError
 from ..core.task import effort_unit, orientation_length, per_actuator
 from ..infra.progress import Progress, bar
 from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED, joint_speed_floor
 from .signals import FourierExcitation, multisine, trajectory_of, write_excitation
 
-__all__ = ["design_excitation", "regressor_condition", "check_excitation",
+__all__ = ["design_excitation", "SeriesOptions", "LimitOptions", "SolverOptions",
+           "regressor_condition", "check_excitation",
            "sample_function", "run_design", "DesignReport", "format_design", "objective_logdet",
            "random_start", "IPOPT_OPTIONS", "design_provenance", "phi_limits", "CONVERGED",
            "STAGE_SECONDS"]
 
-#: IPOPT's options of the design (``max_iter`` is an argument of :func:`design_excitation`);
+#: IPOPT's options of the design (``max_iter``: :class:`SolverOptions`);
 #: written to the file's ``[design.ipopt]``.
 IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "tol": 1e-6, "acceptable_tol": 1e-4,
                  "acceptable_iter": 10, "acceptable_obj_change_tol": 1e-7}
@@ -74,6 +75,95 @@ IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "tol": 1e-6, "accept
 CONVERGED = ("Solve_Succeeded", "Solved_To_Acceptable_Level")
 #: s between two stage lines of IPOPT's iterations when no bar is drawn (stderr not a terminal)
 STAGE_SECONDS = 30.0
+
+
+@dataclass(frozen=True)
+class SeriesOptions:
+    """The Fourier series a design optimises (:func:`design_excitation`).
+
+    Parameters
+    ----------
+    base_hz : float
+        f0, Hz, > 0; the period is 1 / f0 (default 0.2 Hz: 5 s).
+    harmonics : int
+        L, >= 1 (default 10: up to 2 Hz).
+    periods : int
+        Whole periods of the run, >= 1 (default 2: 10 s).
+    """
+
+    base_hz: float = 0.2
+    harmonics: int = 10
+    periods: int = 2
+
+
+@dataclass(frozen=True)
+class LimitOptions:
+    """What a design's motion must keep within (:func:`design_excitation`).
+
+    Parameters
+    ----------
+    v_max, a_max : float
+        Speed (m/s) and acceleration (m/s^2) limits of (x, y), > 0; defaults are those of the
+        paper's high-speed move (0.5 m/s, 10 m/s^2): the robot is known to do them.
+    tau_fraction : float
+        |tau_i| <= tau_fraction * tau_max_i with the nominal model and the min-norm split, in
+        (0, 1] (default 0.5: the rest is left to feedback and model error).
+    singularity_margin : float
+        Both singularity measures >= their threshold + this (default 0.1).
+    radius : float
+        |(x, y) - c0| <= radius, m, > 0, c0 the middle of the model's first move (the region
+        the model is meant for).
+    phi_v_max, phi_a_max, phi_range : float, optional
+        A platform's limits of phi: |phid| <= phi_v_max (rad/s), |phidd| <= phi_a_max
+        (rad/s^2), |phi - phi_c0| <= phi_range (rad). Not given: from the model
+        (:func:`phi_limits`: v_max / l, a_max / l with l the platform's radius, and the phi
+        excursion of the model's moves). An ArgumentError for a point (no phi).
+    safety : float
+        The fraction of every limit imposed at the constraints' samples (default 0.98), in
+        (0, 1], so that the limits hold between the samples too (:func:`check_excitation`
+        checks every 1 ms).
+    """
+
+    v_max: float = 0.5
+    a_max: float = 10.0
+    tau_fraction: float = 0.5
+    singularity_margin: float = 0.1
+    radius: float = 0.06
+    phi_v_max: float = None
+    phi_a_max: float = None
+    phi_range: float = None
+    safety: float = 0.98
+
+
+@dataclass(frozen=True)
+class SolverOptions:
+    """How a design is solved (:func:`design_excitation`).
+
+    Parameters
+    ----------
+    samples, constraint_samples : int
+        Samples per period of the objective and of the constraints (default 250, 1000).
+    seed : int
+        Random start (:func:`random_start`; IPOPT finds a local optimum, log det is not
+        concave here).
+    max_iter : int
+        IPOPT's iteration limit (its other options: :data:`IPOPT_OPTIONS`).
+    """
+
+    samples: int = 250
+    constraint_samples: int = 1000
+    seed: int = 0
+    max_iter: int = 500
+
+
+def _options(kind, value):
+    """``value``, or ``kind()`` (the defaults) for None; ArgumentTypeError for another type."""
+    if value is None:
+        return kind()
+    if not isinstance(value, kind):
+        raise ArgumentTypeError(f"design_excitation: expected a {kind.__name__} "
+                                f"(pm2dof.identification.design), got {type(value).__name__}")
+    return value
 
 
 def _basis(f0, L, t):
@@ -364,48 +454,21 @@ def design_provenance(model):
             "libc": " ".join(platform.libc_ver()).strip() or "unknown"}
 
 
-def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
-                      tau_fraction=0.5, singularity_margin=0.1, radius=0.06, phi_v_max=None,
-                      phi_a_max=None, phi_range=None, samples=250, constraint_samples=1000,
-                      safety=0.98, seed=0, max_iter=500, progress=None):
+def design_excitation(model, series=None, limits=None, solver=None, *, progress=None):
     """Design a D-optimal excitation (CasADi + IPOPT).
 
     Parameters
     ----------
     model : Model
-    base_hz : float
-        f0, Hz; the period is 1 / f0 (default 0.2 Hz: 5 s).
-    harmonics : int
-        L (default 10: up to 2 Hz).
-    periods : int
-        Whole periods of the run (default 2: 10 s).
-    v_max, a_max : float
-        Speed (m/s) and acceleration (m/s^2) limits of (x, y); defaults are those of the
-        paper's high-speed move (0.5 m/s, 10 m/s^2): the robot is known to do them.
-    tau_fraction : float
-        |tau_i| <= tau_fraction * tau_max_i with the nominal model and the min-norm split
-        (default 0.5: the rest is left to feedback and model error).
-    singularity_margin : float
-        Both singularity measures >= their threshold + this (default 0.1).
-    radius : float
-        |(x, y) - c0| <= radius, m, c0 the middle of the model's first move (the region the
-        model is meant for).
-    phi_v_max, phi_a_max, phi_range : float, optional
-        A platform's limits of phi: |phid| <= phi_v_max (rad/s), |phidd| <= phi_a_max
-        (rad/s^2), |phi - phi_c0| <= phi_range (rad). Not given: from the model
-        (:func:`phi_limits`: v_max / l, a_max / l with l the platform's radius, and the phi
-        excursion of the model's moves). An ArgumentError for a point (no phi).
-    samples, constraint_samples : int
-        Samples per period of the objective and of the constraints. The constraints are
-        imposed with the limits times ``safety`` (0.98), so that they hold between the
-        samples too (:func:`check_excitation` checks every 1 ms).
-    safety : float
-        The fraction of every limit imposed at the samples (default 0.98), in (0, 1].
-    seed : int
-        Random start (:func:`random_start`; IPOPT finds a local optimum, log det is not
-        concave here).
-    max_iter : int
-        IPOPT's iteration limit (its other options: :data:`IPOPT_OPTIONS`).
+    series : SeriesOptions, optional
+        The Fourier series: f0, harmonics, periods (default ``SeriesOptions()``: 0.2 Hz, 10
+        harmonics, 2 periods).
+    limits : LimitOptions, optional
+        Speed, acceleration, effort, singularity, region and a platform's phi limits, and the
+        safety fraction imposed at the samples (default ``LimitOptions()``).
+    solver : SolverOptions, optional
+        Samples of the objective and of the constraints, the random start's seed, IPOPT's
+        iteration limit (default ``SolverOptions()``).
     progress : callable(str) or pm2dof.infra.progress.Progress, optional
         Stage lines; a :class:`~pm2dof.infra.progress.Progress` also draws a bar of IPOPT's
         iterations with the objective's log det as its postfix.
@@ -413,14 +476,27 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     Returns
     -------
     FourierExcitation
-        Of m = ``Model.dof`` series. Its ``info`` (the file's ``[design]``): every argument
-        above but ``progress`` (the phi limits, as used, for a platform only), the
-        IPOPT options, cond and log det before (the start) and after on the objective's and
-        the run's samples (module docstring), IPOPT's status and iterations, and
-        :func:`design_provenance`. The same arguments on the same machine and install give
-        the same coefficients and ``info`` bit for bit (no wall time in it).
+        Of m = ``Model.dof`` series. Its ``info`` (the file's ``[design]``): every option
+        above (the phi limits, as used, for a platform only), the IPOPT options, cond and log
+        det before (the start) and after on the objective's and the run's samples (module
+        docstring), IPOPT's status and iterations, and :func:`design_provenance`. The same
+        options on the same machine and install give the same coefficients and ``info`` bit
+        for bit (no wall time in it).
+
+    Raises
+    ------
+    ArgumentError
+        Naming every option outside its rule (base_hz, v_max, a_max, radius > 0; harmonics,
+        periods >= 1; tau_fraction in (0, 1]) before IPOPT runs.
     """
     import casadi as ca
+    series, limits = _options(SeriesOptions, series), _options(LimitOptions, limits)
+    solver = _options(SolverOptions, solver)
+    base_hz, harmonics, periods = series.base_hz, series.harmonics, series.periods
+    v_max, a_max, tau_fraction = limits.v_max, limits.a_max, limits.tau_fraction
+    singularity_margin, radius, safety = limits.singularity_margin, limits.radius, limits.safety
+    samples, constraint_samples = solver.samples, solver.constraint_samples
+    seed, max_iter = solver.seed, solver.max_iter
     rules = (("base_hz", base_hz, "> 0", base_hz > 0), ("harmonics", harmonics, ">= 1",
              harmonics >= 1), ("periods", periods, ">= 1", periods >= 1),
              ("v_max", v_max, "> 0", v_max > 0), ("a_max", a_max, "> 0", a_max > 0),
@@ -429,8 +505,9 @@ def design_excitation(model, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5,
     wrong = [f"{name} must be {rule}, got {value!r}" for name, value, rule, ok in rules if not ok]
     if wrong:
         raise ArgumentError("design_excitation: " + "; ".join(wrong))
-    phi = phi_limits(model, v_max=v_max, a_max=a_max, radius=radius, phi_v_max=phi_v_max,
-                     phi_a_max=phi_a_max, phi_range=phi_range)      # {} for a point
+    phi = phi_limits(model, v_max=v_max, a_max=a_max, radius=radius,
+                     phi_v_max=limits.phi_v_max, phi_a_max=limits.phi_a_max,
+                     phi_range=limits.phi_range)      # {} for a point
     args = {"base_hz": base_hz, "harmonics": int(harmonics), "periods": int(periods),
             "v_max": v_max, "a_max": a_max, "tau_fraction": tau_fraction,
             "singularity_margin": singularity_margin, "radius": radius, **phi,
@@ -630,19 +707,15 @@ class DesignReport:
         return bool(self.excitation.info.get("converged", True))
 
 
-def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a_max=10.0,
-               tau_fraction=0.5, phi_v_max=None, phi_a_max=None, phi_range=None, seed=0,
-               max_iter=500, progress=None):
+def run_design(model, out, series=None, limits=None, solver=None, *, progress=None):
     """``pm2dof identify design --out FILE``: design, check at 1 ms, write; returns a
     :class:`DesignReport` (its ``converged``: whether IPOPT converged; the file is written
-    either way, ``converged`` in its ``[design]``). The arguments: :func:`design_excitation`;
+    either way, ``converged`` in its ``[design]``). The options: :func:`design_excitation`;
     the phi limits: a platform's (:func:`phi_limits`)."""
+    limits = _options(LimitOptions, limits)
     t0 = time.perf_counter()
     try:
-        exc = design_excitation(model, base_hz=base_hz, harmonics=harmonics, periods=periods,
-                                v_max=v_max, a_max=a_max, tau_fraction=tau_fraction,
-                                phi_v_max=phi_v_max, phi_a_max=phi_a_max, phi_range=phi_range,
-                                seed=seed, max_iter=max_iter, progress=progress)
+        exc = design_excitation(model, series, limits, solver, progress=progress)
     except KeyboardInterrupt as stop:          # an interrupted design is not written
         raise KeyboardInterrupt(f"{str(stop) + '; ' if str(stop) else ''}{out} not "
                                 f"written") from None
@@ -650,8 +723,9 @@ def run_design(model, out, *, base_hz=0.2, harmonics=10, periods=2, v_max=0.5, a
     if progress:
         progress(f"IPOPT {exc.info['ipopt_status']} after {exc.info['ipopt_iterations']} "
                  f"iterations, {seconds:.0f} s; checking the excitation every 1 ms, writing {out}")
+    v_max, a_max = limits.v_max, limits.a_max
     sing_min = max(model.singularity_threshold, model.parallel_singularity_threshold) + 0.1
-    tau_limit = tau_fraction * np.max(model.spec.limits["tau_max"])
+    tau_limit = limits.tau_fraction * np.max(model.spec.limits["tau_max"])
     chk = check_excitation(model, exc, v_max=v_max, a_max=a_max, tau_limit=tau_limit,
                            sing_min=sing_min, radius=exc.info["radius"],
                            **{k: exc.info[k] for k in ("phi_v_max", "phi_a_max", "phi_range")

@@ -74,8 +74,7 @@ class Signal:
 def trajectory_of(model, signal, period=None):
     """``signal`` (a :class:`Signal`) sampled at the controller period (default the model's
     ``[sensing].sample_period``): a :class:`pm2dof.Trajectory`."""
-    return signal.trajectory(model.spec.sensing["sample_period"] if period is None
-                             else float(period))
+    return signal.trajectory(model.checked_period(period))
 
 
 @dataclass(frozen=True)

@@ -13,17 +13,21 @@ which minimises sum_k dx_k^T Q dx_k + dtau_k^T R dtau_k for the linearised error
 Run time (per sample, in the generated C ``<name>_lqr<split>_step``): the Fig. 2 signal
 processing, tau = tau_ff,k - K_k [xe - xd, v - xd_dot], its task force S^T tau at the measured
 pose shared by the model's split, clipping, the statuses of NA and APD. K_k and tau_ff,k (the
-inverse dynamics' torque) enter the C as per-sample inputs; nothing is solved per step.
+inverse dynamics' torque) enter the C as per-sample inputs; nothing is solved per step. The
+run-time controller is :class:`pm2dof.control.lqr.LQRController` (no SciPy); this module's
+:class:`LQRController` plans its gains and builds it.
 """
 import numpy as np
 
-from ..control.controllers import _Controller, diagonal_gain
+from ..control import lqr as control_lqr
+from ..control.controllers import diagonal_gain
+from ..control.settings import ControlSettings
 from ..control.trajectory import require_trajectory
-from ..core import _cbind
 from ..core.errors import ArgumentError
+from ..core.model import require_model
 from .trajectory import linearize_trajectory
 
-__all__ = ["lqr_gains", "LQRController", "LQR_DEFAULT_WEIGHTS"]
+__all__ = ["lqr_gains", "lqr_weights", "LQRController", "LQR_DEFAULT_WEIGHTS"]
 
 #: LQRController's weights when the model file has no [gains.lqr] (Bryson's rule: one over
 #: the square of what is acceptable): 0.1 mm of position error, 10 mm/s of velocity error,
@@ -85,8 +89,12 @@ def lqr_gains(A, B, Q, R):
     return K, P
 
 
-class LQRController(_Controller):
+class LQRController(control_lqr.LQRController):
     """Time-varying LQR tracking along ``trajectory`` (module docstring), one C call per sample.
+
+    Plans the gains (:func:`linearize_trajectory`, :func:`lqr_gains`) and builds the run-time
+    controller :class:`pm2dof.control.lqr.LQRController` with them: its step, ``reset``,
+    ``closed_loop_inputs``, and what :func:`pm2dof.simulate` runs.
 
     Parameters
     ----------
@@ -103,7 +111,7 @@ class LQRController(_Controller):
         :class:`pm2dof.GainError`.
     theta0 : array_like (5n,), optional
         The model linearised and inverted (default Tables 1-2).
-    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign
+    sample_period, velocity_filter_hz, tau_max, on_singular, split, preload, preload_sign, settings
         As for :class:`pm2dof.NAController`. ``step`` counts samples from ``reset``: sample k
         uses K_k and tau_ff,k (after the plan, its last ones).
 
@@ -113,81 +121,59 @@ class LQRController(_Controller):
         The gains, N*m per [xe, xed] ([m, m, m/s, m/s] for a point).
     tau_ff : ndarray (N, n)
         The feedforward torques, N*m.
+    weights : dict
+        ``Q`` (2m, 2m) and ``R`` (n, n), the weights planned with.
     linearization : LinearTrajectory
     """
-    _law = "lqr"
 
     def __init__(self, model, trajectory, *, Q_position=None, Q_velocity=None, R=None,
                  theta0=None, sample_period=None, velocity_filter_hz=None, tau_max=None,
-                 on_singular="raise", split=None, preload=None, preload_sign=None):
+                 on_singular="raise", split=None, preload=None, preload_sign=None,
+                 settings=None):
+        require_model(model)
         require_trajectory(trajectory)
-        super().__init__(model, "lqr", {}, theta0, sample_period, velocity_filter_hz, tau_max,
-                         on_singular, split, preload, preload_sign)
-        if abs(trajectory.period - self.sample_period) > 1e-12 * self.sample_period:
+        settings = ControlSettings.resolve(
+            model.spec, settings, who="LQRController", sample_period=sample_period,
+            velocity_filter_hz=velocity_filter_hz, tau_max=tau_max, split=split, preload=preload,
+            preload_sign=preload_sign)
+        theta0 = model.checked_theta(theta0, "theta0")
+        T = settings.sample_period
+        if abs(trajectory.period - T) > 1e-12 * T:
             raise ArgumentError(f"trajectory period {trajectory.period} s differs from the "
-                                f"controller's sample period {self.sample_period} s")
-        g = model.spec.gains.get("lqr") or _default_weights(model)
-        name, n = type(self).__name__, model.n_legs
-        qp = diagonal_gain(name, "Q_position", g["Q_position"] if Q_position is None
-                           else Q_position, model.task_names)
-        qv = diagonal_gain(name, "Q_velocity", g["Q_velocity"] if Q_velocity is None
-                           else Q_velocity, tuple(f"{c}d" for c in model.task_names))
-        r = diagonal_gain(name, "R", g["R"] if R is None else R,
-                          tuple(f"tau{i + 1}" for i in range(n)))
-        self.weights = {"Q": np.diag(np.concatenate([qp, qv])), "R": np.diag(r)}
-        self.trajectory = trajectory
-        self.linearization = lin = linearize_trajectory(model, trajectory, self.theta0,
-                                                        discrete=True, split=self.split,
-                                                        period=self.sample_period)
-        K, _ = lqr_gains(lin.A, lin.B, self.weights["Q"], self.weights["R"])
-        self.K, self.tau_ff = K, lin.tau_a
-        # the C's per-sample inputs: K_k row-major (n x 2m), tau_ff_k
-        self._rows = np.ascontiguousarray(np.hstack([K.reshape(len(K), -1), lin.tau_a]))
-        for a in (self.K, self._rows):
-            a.setflags(write=False)
-        self._k = 0
+                                f"controller's sample period {T} s")
+        weights = lqr_weights(model, Q_position, Q_velocity, R)
+        lin = linearize_trajectory(model, trajectory, theta0, discrete=True, split=settings.split,
+                                   period=T)
+        K, _ = lqr_gains(lin.A, lin.B, weights["Q"], weights["R"])
+        super().__init__(model, trajectory, K, lin.tau_a, theta0=theta0, settings=settings,
+                         on_singular=on_singular)
+        self.weights, self.linearization = weights, lin
 
-    def _row(self, k):
-        r = self._rows[min(k, len(self._rows) - 1)]
-        nk = 2 * self.model.dof * self.model.n_legs
-        return r[:nk], r[nk:]
 
-    def reset(self, qa0, theta_hat=None):
-        super().reset(qa0, theta_hat)
-        self._k = 0
+def lqr_weights(model, Q_position=None, Q_velocity=None, R=None):
+    """The LQR's weights, checked: ``Q`` (2m, 2m) = diag(Q_position, Q_velocity) and ``R``
+    (n, n), each argument given or the model file's ``[gains.lqr]`` (else
+    :data:`LQR_DEFAULT_WEIGHTS`); an entry <= 0 raises :class:`pm2dof.GainError`.
 
-    def step(self, qa_meas, xd, xd_dot, xd_ddot, out=None):
-        """As :meth:`pm2dof.NAController.step`, at the next sample of the plan (its K_k,
-        tau_ff,k; the last ones after the plan's end)."""
-        self._extra = K_k, tau_ff_k = self._row(self._k)
-        try:
-            tau = self._run(qa_meas, xd, xd_dot, xd_ddot, K_k, tau_ff_k, out)
-        except _cbind.Refused as exc:
-            tau = self._refused(exc, (qa_meas, xd, xd_dot, xd_ddot), out)
-        self._k += 1
-        return tau
+    Parameters
+    ----------
+    model : Model
+    Q_position, Q_velocity : float or array_like (m,), optional
+        Diagonal weights on the position error (1/m^2) and the velocity error (s^2/m^2).
+    R : float or array_like (n,), optional
+        Diagonal torque weight, 1/(N m)^2.
 
-    def closed_loop_inputs(self, trajectory):
-        """[xd, xd_dot, xd_ddot, K_k, tau_ff,k] per sample (``lqr_cl_input``) along
-        ``trajectory``.
-
-        Parameters
-        ----------
-        trajectory : Trajectory
-            The planned one, or it followed by rest at its end point (the last gain then
-            holds the end). Another trajectory raises ArgumentError.
-        """
-        plan = self.trajectory
-        N = len(plan.t)
-        t = trajectory
-        same = (len(t.t) >= N and all(np.array_equal(getattr(t, k)[:N], getattr(plan, k))
-                                      for k in ("xd", "xd_dot", "xd_ddot")))
-        rest = same and (np.all(t.xd[N:] == plan.xd[-1]) and not np.any(t.xd_dot[N:])
-                         and not np.any(t.xd_ddot[N:]))
-        if not rest:
-            raise ArgumentError(
-                f"this LQRController was planned for another trajectory ({N} samples from "
-                f"{plan.xd[0].tolist()} to {plan.xd[-1].tolist()}); plan one for this "
-                f"trajectory: LQRController(model, trajectory)")
-        rows = self._rows[np.minimum(np.arange(len(t.t)), N - 1)]
-        return np.ascontiguousarray(np.hstack([super().closed_loop_inputs(t), rows]))
+    Returns
+    -------
+    dict
+        ``Q`` and ``R``.
+    """
+    g = model.spec.gains.get("lqr") or _default_weights(model)
+    name, n = "LQRController", model.n_legs
+    qp = diagonal_gain(name, "Q_position", g["Q_position"] if Q_position is None
+                       else Q_position, model.task_names)
+    qv = diagonal_gain(name, "Q_velocity", g["Q_velocity"] if Q_velocity is None
+                       else Q_velocity, tuple(f"{c}d" for c in model.task_names))
+    r = diagonal_gain(name, "R", g["R"] if R is None else R,
+                      tuple(f"tau{i + 1}" for i in range(n)))
+    return {"Q": np.diag(np.concatenate([qp, qv])), "R": np.diag(r)}

@@ -67,7 +67,7 @@ def statespace(model, xe, xed, tau_a, theta=None, *, discrete=False, period=None
     """
     require_model(model)
     control = _control()
-    T = model._period(period)
+    T = model.checked_period(period)
     A, B = model.linearize(xe, xed, tau_a, theta, discrete=discrete, period=T)
     n, names = model.n_legs, list(state_names(model))
     return control.ss(A, B, np.eye(len(names)), np.zeros((len(names), n)),

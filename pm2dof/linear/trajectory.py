@@ -5,17 +5,17 @@ At sample k the state is the desired one, x_k = [xd_k, xd_dot_k], and the torque
 produces the desired acceleration in the model: the task force of the inverse dynamics
 u_k = Me xd_ddot + Ce xd_dot + S^T f_a (eqs. 10-12) split among the actuators by the model's
 split (``[control] split``: min-norm, eq. 21, by default). Every quantity (ik, inverse
-dynamics, split, Jacobians) is one :meth:`pm2dof.core._cbind.Function.map` call over all K
+dynamics, split, Jacobians) is one :meth:`pm2dof.core.binding.Function.map` call over all K
 samples.
 """
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..control.controllers import SPLITS
+from ..control.settings import checked_split
 from ..control.simulate import check_trajectory
 from ..control.trajectory import require_trajectory
-from ..core import _cbind
+from ..core import binding
 from ..core.derivatives import continuous_AB
 from ..core.errors import ArgumentError, NonFiniteError, SingularityError
 from ..core.model import require_model
@@ -67,7 +67,7 @@ def _map(model, short, K, inputs, sizes_out):
     outs = [np.empty((K, k)) for k in sizes_out]
     try:
         f.map(K, *inputs, *outs)
-    except _cbind.NonFiniteOutputError as exc:   # finite inputs, a non-finite result
+    except binding.NonFiniteOutputError as exc:   # finite inputs, a non-finite result
         raise NonFiniteError(f"linearize_trajectory: {exc}") from None
     except ValueError as exc:                    # an input the binding refuses, named
         raise ArgumentError(f"linearize_trajectory: {exc}") from None
@@ -119,11 +119,9 @@ def linearize_trajectory(model, trajectory, theta=None, *, discrete=True, split=
     require_model(model)
     require_trajectory(trajectory)
     ctl, n, m = model.spec.control, model.n_legs, model.dof
-    split = ctl["split"] if split is None else split
-    if split not in SPLITS:
-        raise ArgumentError(f"split must be one of {list(SPLITS)}, got {split!r}")
+    split = checked_split(model.spec, split)
     theta = model.checked_theta(theta)
-    T = model._period(trajectory.period if period is None else period)
+    T = model.checked_period(trajectory.period if period is None else period)
     check_trajectory(model, trajectory)
     xd, xd_dot, xd_ddot = trajectory.xd, trajectory.xd_dot, trajectory.xd_ddot
     K = len(xd)

@@ -11,7 +11,9 @@ import numbers
 
 import numpy as np
 
-from ..core.errors import PlanError
+from ..control.rules import TAU_MAX_LIMIT
+from ..control.settings import actuator_limits
+from ..core.errors import ArgumentError, PlanError
 from ..core.task import effort_unit
 from .check import first_bad, raise_at
 
@@ -79,18 +81,12 @@ def limits(model, tau_max, margin):
     if not (math.isfinite(m) and 0 < m <= 1):
         raise PlanError(f"margin must be a number in (0, 1], the fraction of tau_max the plan "
                         f"may use (< 1 leaves headroom for feedback), got {margin!r}")
-    tau = model.spec.limits["tau_max"] if tau_max is None else tau_max
-    unit = effort_unit(model)
     try:
-        tau = np.array(tau, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise PlanError(f"tau_max must be {n} actuator limits in {unit}, got {tau_max!r}") \
-            from None
-    if tau.size == 1:
-        tau = np.full(n, tau[0])
-    if tau.shape != (n,) or not np.isfinite(tau).all() or (tau <= 0).any():
-        raise PlanError(f"tau_max must be one value or {n} finite limits > 0 {unit} (one per "
-                        f"actuator), got {np.asarray(tau_max).tolist()}")
+        tau = actuator_limits(model.spec, tau_max, "plan")
+    except ArgumentError as exc:
+        raise PlanError(f"tau_max must be one value or {n} finite limits > 0 "
+                        f"{effort_unit(model)} (one per actuator), at most {TAU_MAX_LIMIT:g}, "
+                        f"got {tau_max!r} ({exc})") from None
     return tau * m
 
 

@@ -5,6 +5,7 @@ coefficients: q = ik(p), u = Me (p' s_dd + p'' s_d^2) + Ce(q, p' s_d) p' s_d + S
 one ``Function.map`` call. Used to check plans and to report a kinematic plan's torques."""
 import numpy as np
 
+from ..control.settings import actuator_limits
 from ..core.errors import PlanError
 from .paths import point_text
 
@@ -26,8 +27,7 @@ def path_torques(model, path, s, sd, sdd, theta=None, tau_max=None):
         min-max split's max_i |tau_i| / tau_max,i; ``tau_max`` default ``[limits]``).
     """
     th = np.ascontiguousarray(model.theta_nominal if theta is None else theta, dtype=float)
-    tau_lim = np.ascontiguousarray(model.spec.limits["tau_max"] if tau_max is None else tau_max,
-                                   dtype=float)
+    tau_lim = actuator_limits(model.spec, tau_max, "path_torques")
     s, sd, sdd = (np.ascontiguousarray(a, dtype=float).ravel() for a in (s, sd, sdd))
     K, n, m = len(s), model.n_legs, model.dof
     p, dp, ddp = path.evaluate(s)

@@ -1,5 +1,5 @@
 # Optimal excitation: constraints hold at dense samples, rest at both ends, the CasADi graph is the model's C, file round trip.
-import inspect
+import dataclasses
 import re
 from pathlib import Path
 
@@ -11,6 +11,9 @@ from pm2dof import cli
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.design import (
     IPOPT_OPTIONS,
+    LimitOptions,
+    SeriesOptions,
+    SolverOptions,
     _casadi_openblas,
     check_excitation,
     design_excitation,
@@ -33,6 +36,15 @@ from pm2dof.infra.progress import Progress
 LIMITS = {"v_max": 0.4, "a_max": 6.0, "tau_fraction": 0.3}
 SMALL = dict(base_hz=0.5, harmonics=4, periods=1, samples=80, constraint_samples=200, **LIMITS)
 SHIPPED = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
+
+
+def options(**fields):
+    """The design's option objects (series, limits, solver) from their fields by name."""
+    kinds = (SeriesOptions, LimitOptions, SolverOptions)
+    names = {f.name for kind in kinds for f in dataclasses.fields(kind)}
+    assert set(fields) <= names, set(fields) - names
+    return tuple(kind(**{f.name: fields[f.name] for f in dataclasses.fields(kind)
+                         if f.name in fields}) for kind in kinds)
 
 
 @pytest.fixture(scope="module")
@@ -79,7 +91,7 @@ class Recorder(Progress):
 def designed(m):
     """A small design (4 harmonics of 0.5 Hz, one 2 s period; a few seconds of IPOPT) with
     limits below the defaults, so that some of them bind."""
-    return design_excitation(m, **SMALL)
+    return design_excitation(m, *options(**SMALL))
 
 
 def test_design_meets_every_constraint_every_millisecond(m, designed):
@@ -188,7 +200,7 @@ def test_design_is_deterministic_and_runs_ipopt_blas_on_one_thread(m, designed):
     seen = []
     lib.openblas_set_num_threads(2)
     progress = Recorder(on_step=lambda: seen.append(lib.openblas_get_num_threads()))
-    again = design_excitation(m, **SMALL, progress=progress)
+    again = design_excitation(m, *options(**SMALL), progress=progress)
     assert lib.openblas_get_num_threads() == 2
     assert seen and set(seen) == {1}, seen
     # one bar, one step per IPOPT iteration (its iterations 0..n call back)
@@ -208,7 +220,7 @@ def test_progress_bar_and_summary_report_one_log_det(m):
     column-scaled value): stopped at iteration 25, the bar's last postfix equals
     :func:`objective_logdet` of the result, which the summary reports as the objective's."""
     progress = Recorder()
-    exc = design_excitation(m, **{**SMALL, "max_iter": 25}, progress=progress)
+    exc = design_excitation(m, *options(**{**SMALL, "max_iter": 25}), progress=progress)
     (iterations,) = progress.bars_made
     assert iterations.n == 26 and len(iterations.postfixes) == 26      # iterations 0..25
     value = float(re.fullmatch(r"objective log det (-?[0-9.]+)", iterations.postfixes[-1])[1])
@@ -229,9 +241,8 @@ def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
     moves these figures, makes this fail until the file is designed again."""
     exc = load_excitation(SHIPPED, m)
     info = exc.info
-    defaults = {k: p.default for k, p in inspect.signature(design_excitation).parameters.items()
-                if p.default is not inspect.Parameter.empty and k != "progress"
-                and not k.startswith("phi_")}
+    defaults = {f.name: f.default for kind in (SeriesOptions, LimitOptions, SolverOptions)
+                for f in dataclasses.fields(kind) if not f.name.startswith("phi_")}
     assert {k: info[k] for k in defaults} == defaults
     # a point has no phi: its file records no phi limits (the 2-D file is as before platforms)
     assert not any(k.startswith("phi_") for k in info)
@@ -335,7 +346,7 @@ def test_bad_design_arguments_are_named(m, tmp_path, capsys):
     """Each wrong argument is named with its value and rule (the API), and from the CLI by its
     flag (argparse, exit 2), before IPOPT runs."""
     with pytest.raises(pm2dof.ArgumentError) as info:
-        design_excitation(m, **{**SMALL, "base_hz": -1.0, "tau_fraction": 2.0})
+        design_excitation(m, *options(**{**SMALL, "base_hz": -1.0, "tau_fraction": 2.0}))
     msg = str(info.value)
     assert "base_hz must be > 0, got -1.0" in msg and "tau_fraction must be in (0, 1]" in msg
     assert "harmonics" not in msg                        # only what was wrong
@@ -358,7 +369,7 @@ def test_stage_lines_when_stderr_is_not_a_terminal(m, monkeypatch):
     stream = io.StringIO()
     progress = Progress(stream=stream)
     assert not progress.bars                       # a StringIO is not a terminal
-    exc = design_excitation(m, **{**SMALL, "max_iter": 3}, progress=progress)
+    exc = design_excitation(m, *options(**{**SMALL, "max_iter": 3}), progress=progress)
     lines = [ln for ln in stream.getvalue().splitlines() if "IPOPT iteration" in ln]
     assert [int(re.search(r"IPOPT iteration (\d+) of at most 3:", ln)[1]) for ln in lines] == [
         0, 1, 2, 3], lines                         # IPOPT's iterations 0..3
@@ -394,3 +405,18 @@ def test_a_converged_design_says_nothing_more(m, designed, tmp_path, monkeypatch
     r = design.run_design(m, tmp_path / "e.toml")
     assert r.converged and not design.format_design(r).startswith("NOT CONVERGED")
     assert load_excitation(tmp_path / "e.toml").info["converged"] is True
+
+
+def test_design_takes_its_options_as_three_objects(m):
+    """design_excitation's 16 settings are three option objects (the series, the limits, the
+    solver) with their defaults in one place each; anything else is refused by type before
+    IPOPT runs."""
+    for k, kind in enumerate((SeriesOptions, LimitOptions, SolverOptions)):
+        args = [None, None, None]
+        args[k] = {"base_hz": 0.5}
+        with pytest.raises(pm2dof.ArgumentTypeError, match=rf"expected a {kind.__name__}"):
+            design_excitation(m, *args)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        SeriesOptions().base_hz = 1.0
+    assert len(dataclasses.fields(SeriesOptions) + dataclasses.fields(LimitOptions)
+               + dataclasses.fields(SolverOptions)) == 16

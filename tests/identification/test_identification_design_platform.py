@@ -1,4 +1,6 @@
 # Optimal excitation of a platform: x, y and phi series, phi's own limits, its file, a fit from its log.
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -6,6 +8,9 @@ import pm2dof
 from pm2dof.core.errors import ArgumentError
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.design import (
+    LimitOptions,
+    SeriesOptions,
+    SolverOptions,
     check_excitation,
     design_excitation,
     phi_limits,
@@ -25,6 +30,15 @@ SMALL = dict(base_hz=1.0, harmonics=3, periods=2, samples=40, constraint_samples
 V_MAX, A_MAX, RADIUS = 0.5, 10.0, 0.06
 
 
+def options(**fields):
+    """The design's option objects (series, limits, solver) from their fields by name."""
+    kinds = (SeriesOptions, LimitOptions, SolverOptions)
+    names = {f.name for kind in kinds for f in dataclasses.fields(kind)}
+    assert set(fields) <= names, set(fields) - names
+    return tuple(kind(**{f.name: fields[f.name] for f in dataclasses.fields(kind)
+                         if f.name in fields}) for kind in kinds)
+
+
 @pytest.fixture(scope="module")
 def platform():
     return pm2dof.load_model("rrr3_platform")
@@ -32,7 +46,7 @@ def platform():
 
 @pytest.fixture(scope="module")
 def designed(platform):
-    return design_excitation(platform, **SMALL)
+    return design_excitation(platform, *options(**SMALL))
 
 
 def test_phi_limits_default_from_the_model_file(platform):
@@ -55,7 +69,7 @@ def test_a_point_has_no_phi_to_limit():
     assert phi_limits(point) == {}
     with pytest.raises(ArgumentError, match=r"phi_v_max limit a platform's orientation phi; "
                                             r"model 'shang2010' has task \('x', 'y'\), no phi"):
-        design_excitation(point, phi_v_max=1.0)
+        design_excitation(point, limits=LimitOptions(phi_v_max=1.0))
 
 
 def test_platform_design_meets_every_constraint_every_millisecond(platform, designed):

@@ -210,13 +210,20 @@ def _fit(args):
 def _design(args):
     import sys
 
-    from ...identification.design import format_design, run_design
+    from ...identification.design import (
+        LimitOptions,
+        SeriesOptions,
+        SolverOptions,
+        format_design,
+        run_design,
+    )
     r = run_design(
-        model(args), args.out, base_hz=args.base_hz, harmonics=args.harmonics,
-        periods=args.periods, v_max=args.v_max, a_max=args.a_max,
-        tau_fraction=args.tau_fraction, phi_v_max=args.phi_v_max, phi_a_max=args.phi_a_max,
-        phi_range=args.phi_range, seed=args.seed, max_iter=args.max_iter,
-        progress=_progress(args))
+        model(args), args.out,
+        SeriesOptions(base_hz=args.base_hz, harmonics=args.harmonics, periods=args.periods),
+        LimitOptions(v_max=args.v_max, a_max=args.a_max, tau_fraction=args.tau_fraction,
+                     phi_v_max=args.phi_v_max, phi_a_max=args.phi_a_max,
+                     phi_range=args.phi_range),
+        SolverOptions(seed=args.seed, max_iter=args.max_iter), progress=_progress(args))
     print(format_design(r))
     if r.converged or args.accept_unconverged:
         return 0
