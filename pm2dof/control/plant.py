@@ -2,7 +2,7 @@
 """The plant of the closed-loop rollouts: what the simulated robot really is.
 
 The truth (:func:`plant_truth`) is the model file's ``[plant]`` with the payload booked
-(:func:`pm2dof.core.model_file.payload_increments`); :func:`plant_vector` packs it with the encoder's step for the generated
+(:func:`pm2dof.core.mechanism.payload_increments`); :func:`plant_vector` packs it with the encoder's step for the generated
 plant (manifest layout ``plant``); :func:`theta_truth` gives it in theta's coordinates, to
 compare with an estimate. :mod:`.simulate` runs the controllers against it.
 """
@@ -13,7 +13,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from ..core.errors import ArgumentError, ArgumentTypeError
-from ..core.model_file import payload_increments
+from ..core.mechanism import payload_increments
 
 __all__ = ["plant_truth", "plant_vector", "theta_truth"]
 
@@ -21,7 +21,7 @@ __all__ = ["plant_truth", "plant_vector", "theta_truth"]
 def plant_truth(model, **overrides):
     """The plant's truth as a dict: the model file's ``[plant]`` with the payload booked in.
 
-    The payload's mass m is booked by ``pm2dof.core.model_file.payload_increments``: a
+    The payload's mass m is booked by ``pm2dof.core.mechanism.payload_increments``: a
     platform carries it at its origin (m_p += m); a point end effector books it to the tip of
     leg j's distal link (j = ``payload_leg``, counted from 1 as in the paper): an RRR leg's
     alpha_j, beta_j, gamma_j, kappa_j gain m la^2, m la lb, m lb^2, m la (its kinetic energy

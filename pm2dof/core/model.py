@@ -34,14 +34,15 @@ from .errors import (
 )
 from .layout import Layout
 from .measures import singularity_words
-from .model_file import (
+from .mechanism import (
     INERTIAL,
+    LEG_KINDS,
     PLATFORM_PARAMS,
     inertia_problem,
     is_friction_param,
     platform_inertia_problem,
-    read_model_file,
 )
+from .model_file import read_model_file
 from .poses import PoseMethods
 from .status import Status
 from .task import (
@@ -143,12 +144,12 @@ def _check_generated(spec, gen_dir):
 
 
 def _mode_geometry(spec):
-    """A platform's legs for :meth:`Model._fk_same_mode`, one tuple each: (kind 0 RRR, 1 PRR,
-    2 RPR (one working mode: not checked), base x, y, attachment a_x, a_y, la (RRR), the rail's
-    unit direction d_x, d_y (PRR))."""
+    """A platform's legs for :meth:`Model._fk_same_mode`, one tuple each: (kind, its index in
+    LEG_KINDS: 0 RRR, 1 PRR, 2 RPR (one working mode: not checked), base x, y, attachment a_x,
+    a_y, la (RRR), the rail's unit direction d_x, d_y (PRR))."""
     legs = []
     for lg in spec.legs:
-        kind = ("RRR", "PRR", "RPR").index(lg.kind)
+        kind = LEG_KINDS.index(lg.kind)
         d = ((lg.rail_end[0] - lg.base[0]) / lg.rail_length,
              (lg.rail_end[1] - lg.base[1]) / lg.rail_length) if kind == 1 else (0.0, 0.0)
         legs.append((kind, float(lg.base[0]), float(lg.base[1]), float(lg.attach[0]),

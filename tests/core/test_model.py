@@ -53,7 +53,7 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.core.model_file import PLATFORM_PARAMS
+from pm2dof.core.mechanism import PLATFORM_PARAMS
 from pm2dof.reference import model as ref
 
 # --------------------------------------------------------------------------------------
