@@ -298,9 +298,9 @@ def _kinds(spec):
         return out
     if not is_rr_point(spec):
         out.add("new")
-    if getattr(spec, "end_effector", "point") == "platform":
+    if spec.end_effector == "platform":
         out.add("platform")
-    if getattr(spec, "has_gravity", False):
+    if spec.has_gravity:
         out.add("gravity")
     return out
 

@@ -41,7 +41,7 @@ def plant_truth(model, **overrides):
     if unknown:
         raise ArgumentTypeError(f"unknown plant field(s) {unknown}; fields are {sorted(p)}")
     p.update(overrides)
-    platform = getattr(model.spec, "end_effector", "point") == "platform"
+    platform = model.spec.end_effector == "platform"
     leg_no = 1 if platform else p["payload_leg"]
     if not (isinstance(leg_no, (int, float, np.number)) and not isinstance(leg_no, bool)
             and leg_no == int(leg_no) and 1 <= leg_no <= model.n_legs):
@@ -51,7 +51,7 @@ def plant_truth(model, **overrides):
     inertial = [f for f, _ in model.layout("plant").fields if f in p and f not in
                 ("fv", "fc", "fs", "stribeck_velocity", "coulomb_smoothing_velocity")]
     truth = {k: np.array(p[k], dtype=float) for k in inertial}
-    for name, inc in payload_increments(model.spec.legs[j], "platform" if platform else "point",
+    for name, inc in payload_increments(model.spec.legs[j], model.spec.end_effector,
                                         float(p["payload_mass"])).items():
         if name in truth:                      # e.g. no kappa without gravity
             if truth[name].ndim:

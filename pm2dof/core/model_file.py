@@ -159,6 +159,11 @@ class ModelSpec:
     def bases(self):
         return np.array([leg.base for leg in self.legs], dtype=float)
 
+    @property
+    def actuators(self):
+        """Each leg's actuated joint, "revolute" or "prismatic" (:attr:`Leg.actuator`)."""
+        return tuple(leg.actuator for leg in self.legs)
+
     def formulation(self):
         """The part of the model that enters the generated code, as canonical JSON-able data."""
         out = {

@@ -52,7 +52,7 @@ def _friction(problem, stage, speeds):
 
 def _rate_unit(model):
     """The unit of the actuators' effort rates, for messages: N m/s, N/s (linear actuators)."""
-    return per_actuator(model, "N m/s", "N/s", "N m/s or N/s")
+    return per_actuator(model.spec.actuators, "N m/s", "N/s", "N m/s or N/s")
 
 
 def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1.0, grid=200,

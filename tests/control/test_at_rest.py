@@ -92,7 +92,7 @@ def test_preload_split_at_rest_commands_only_the_preload(model, sample_xe):
 def test_simulated_hold_stays_within_one_encoder_count(model, law):
     counts = model.spec.sensing["encoder_counts_per_rev"]
     assert counts > 0, f"{model.name}: the hold test needs quantised encoders"
-    kinds = [getattr(leg, "kind", "RRR") for leg in model.spec.legs]
+    kinds = [leg.kind for leg in model.spec.legs]
     count = np.array([2 * np.pi / counts if k == "RRR"         # rad at a revolute actuator
                       else model.spec.sensing["linear_encoder_resolution"]   # m at a linear one
                       for k in kinds])
