@@ -18,6 +18,8 @@ import pytest
 import pm2dof
 from pm2dof.linear.lqr import LQRController
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 SPLITS = ("min_norm", "min_max", "preload")
 HOLD_S = 0.6          # s: long enough for the old bias to settle at its offset (~0.1 s)
 

@@ -34,6 +34,8 @@ from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.core.task import orientation_length, require_rr_point, task_vector
 from pm2dof.planning import TaskPath
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 DATA = Path(__file__).parent / "data"
 SHIPPED = sorted(p.stem for p in SHIPPED_MODELS.glob("*.toml"))
 

@@ -25,6 +25,8 @@ from pm2dof.core.mechanism import (
 from pm2dof.core.model_file import Leg, read_model_file
 from pm2dof.core.paths import SHIPPED_MODELS
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 ROOT = Path(__file__).resolve().parents[2]
 SOURCES = sorted(p for p in (ROOT / "pm2dof").rglob("*.py") if "generated" not in p.parts)
 TESTS = sorted((ROOT / "tests").rglob("*.py"))

@@ -56,6 +56,8 @@ import pm2dof
 from pm2dof.core.mechanism import PLATFORM_PARAMS
 from pm2dof.reference import model as ref
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 # --------------------------------------------------------------------------------------
 # Constants, helpers
 # --------------------------------------------------------------------------------------

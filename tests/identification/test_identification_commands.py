@@ -25,6 +25,8 @@ from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
 from pm2dof.identification.log import IdentLog, read_log, write_log
 from pm2dof.identification.signals import load_excitation, write_excitation
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
 
 NO_SUBCOMMAND = ("pm2dof identify needs a sub-command: report, excite, fit, design or "

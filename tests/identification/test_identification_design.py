@@ -30,6 +30,8 @@ from pm2dof.identification.signals import (
 )
 from pm2dof.infra.progress import Progress
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 LIMITS = {"v_max": 0.4, "a_max": 6.0, "tau_fraction": 0.3}
 SMALL = dict(base_hz=0.5, harmonics=4, periods=1, samples=80, constraint_samples=200, **LIMITS)
 SHIPPED = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"

@@ -24,6 +24,8 @@ from pm2dof.identification.excitation import excite
 from pm2dof.identification.fit import identify_log
 from pm2dof.identification.signals import multisine
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 #: theta's units by key and leg kind, as docs/model-file.md's [nominal] table gives them
 DOC_UNITS = {"alpha": {"RRR": "kg m^2", "PRR": "kg", "RPR": "kg"},
              "beta": {"RRR": "kg m^2", "PRR": "kg m", "RPR": "kg m"},

@@ -26,6 +26,8 @@ from tests import derivations
 from tests.mechanisms.independent import Mechanism, lumped_theta, random_links
 from tests.mechanisms.models import model_path
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 G = (0.0, -9.81)
 _lambdify = derivations.plain_lambdify       # sympy.lambdify, the same functions, built faster
 

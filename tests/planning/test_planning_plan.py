@@ -19,6 +19,8 @@ from pm2dof.planning import (
     plan_time_optimal,
 )
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 GRID = ("s", "sdot", "sddot", "t")
 
 
