@@ -64,10 +64,9 @@ test: install
 	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist loadscope
 
 # the inner loop: make test without the modules marked long (pytest.mark.long: over 1.5 s
-# each; tests/conftest.py does not even import them), one process (two workers would each
-# import and collect the whole selection again)
+# each; tests/conftest.py does not even import them), on every core as make test
 test-quick: install
-	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -p no:xdist -m 'not slow and not long'
+	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist loadscope -m 'not slow and not long'
 
 # the tests marked slow (pyproject.toml deselects them from make test): every shipped study and
 # `pm2dof study bench` at full size, one after the other (each starts a 2-worker Dask cluster)

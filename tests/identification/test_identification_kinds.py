@@ -134,7 +134,7 @@ def test_the_log_records_its_plant_bit_for_bit(name, tmp_path):
     read with today's [plant] as its truth."""
     from pm2dof.control.plant import plant_truth, theta_truth
     from pm2dof.identification.log import read_log, write_log
-    from pm2dof.identification.report import recorded_plant
+    from pm2dof.identification.report import SIMULATED_SOURCE, recorded_plant
     m = _model(name)
     truth = plant_truth(m, payload_mass=0.123)
     log = excite(m, multisine(m, duration=0.5), truth=truth)
@@ -145,7 +145,6 @@ def test_the_log_records_its_plant_bit_for_bit(name, tmp_path):
     bad = dataclasses.replace(back, meta={**back.meta, "plant_theta": "alpha1=x"})
     with pytest.raises(pm2dof.LogError, match="plant_theta must be name=value"):
         recorded_plant(m, bad)
-    from pm2dof.identification.report import SIMULATED_SOURCE      # [plant]'s own run
     old = dataclasses.replace(back, meta={**{k: v for k, v in back.meta.items()
                                              if k not in ("plant_theta", "plant_sha256")},
                                           "source": SIMULATED_SOURCE})
