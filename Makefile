@@ -10,11 +10,12 @@ OUT    ?= out
 MODEL_DIRS := $(patsubst %/manifest.json,%,$(wildcard pm2dof/generated/*/manifest.json))
 LIBS := $(foreach d,$(MODEL_DIRS),$(d)/lib$(notdir $(d)).so)
 
-.PHONY: install derive derive-all libs test test-slow lint docs check-install dist demo bench c-example embedded clean help
+.PHONY: install derive derive-all libs test test-quick test-slow lint docs check-install dist demo bench c-example embedded clean help
 
 help:
 	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
-	@echo "make test     set up .venv, build, run the test suite"
+	@echo "make test     set up .venv, build, run the test suite (not the tests marked slow)"
+	@echo "make test-quick  the inner loop: the suite without the modules marked long"
 	@echo "make test-slow  the tests marked slow: every shipped study and study bench at full size"
 	@echo "make lint     ruff check pm2dof tests (pyflakes, import order, bugbear; pyproject.toml)"
 	@echo "make derive   re-derive $(MODEL) into pm2dof/generated/<name>/ and compile it (MODEL=path)"
@@ -53,14 +54,19 @@ derive-all: $(STAMP)
 
 # -n auto: one pytest worker per core; --dist loadscope keeps a module's tests (and its
 # module-scoped fixtures: built models, derivations, studies) on one worker; tests/conftest.py
-# (pytest_xdist_make_scheduler) hands out the longest modules first and keeps the modules that
-# share one SymPy derivation per model (tests/derivations.py) on one worker.
+# (pytest_xdist_make_scheduler) hands out the modules marked long first and keeps the modules
+# that share one SymPy derivation per model (tests/derivations.py) on one worker.
 # PYTHONDONTWRITEBYTECODE cleared: both workers and the ~100 Python processes the tests start
 # (CLI runs, Dask workers, import checks) reuse the bytecode of pm2dof and of the tests (pytest's
 # rewritten asserts) that the first one compiled, instead of compiling it again (__pycache__/
 # is git-ignored)
 test: install
 	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist loadscope
+
+# the inner loop: make test without the modules marked long (pytest.mark.long: over 1.5 s
+# each; tests/conftest.py does not even import them), on every core as make test
+test-quick: install
+	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist loadscope -m 'not slow and not long'
 
 # the tests marked slow (pyproject.toml deselects them from make test): every shipped study and
 # `pm2dof study bench` at full size, one after the other (each starts a 2-worker Dask cluster)

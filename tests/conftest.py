@@ -11,9 +11,16 @@
 
 Module scope (not session scope) on purpose: a session-scoped parametrised fixture makes
 pytest regroup tests of different files by parameter, which interleaves the files.
+
+The tiers (docs/developing.md, "The tests"): a module whose tests take over 1.5 s in all marks
+itself ``long``; ``make test-quick`` deselects those and this file does not even import them
+(:func:`pytest_ignore_collect`); ``make test`` hands them out first to its workers
+(:func:`long_first`). No timings are kept here.
 """
 from __future__ import annotations
 
+import functools
+import itertools
 import re
 from pathlib import Path
 
@@ -299,9 +306,9 @@ def _kinds(spec):
         return out
     if not is_rr_point(spec):
         out.add("new")
-    if getattr(spec, "end_effector", "point") == "platform":
+    if spec.end_effector == "platform":
         out.add("platform")
-    if getattr(spec, "has_gravity", False):
+    if spec.has_gravity:
         out.add("gravity")
     return out
 
@@ -329,6 +336,38 @@ def pytest_collection_modifyitems(config, items):
 
 
 # --------------------------------------------------------------------------------------
+# The tiers (pyproject.toml's markers): make test-quick, make test, make test-slow
+# --------------------------------------------------------------------------------------
+
+_LONG = re.compile(r"^pytestmark = .*pytest\.mark\.long\b", re.MULTILINE)
+
+
+@functools.cache
+def _marked_long(path):
+    """Whether the test module at ``path`` marks all its tests ``long`` (a line
+    ``pytestmark = pytest.mark.long`` at its top level): read as text, not imported."""
+    return path.suffix == ".py" and path.is_file() and bool(_LONG.search(path.read_text()))
+
+
+def pytest_ignore_collect(collection_path, config):
+    """A module marked long is not even imported when ``-m`` deselects every long test
+    whatever its other marks (make test-quick: "not slow and not long"): its imports (SciPy,
+    SymPy, toppra, ...) cost seconds of the quick tier. None (pytest decides) otherwise."""
+    expr = config.getoption("markexpr")
+    if not expr or not collection_path.name.startswith("test_") or \
+            not _marked_long(collection_path):
+        return None
+    from _pytest.mark.expression import Expression
+    compiled = Expression.compile(expr)
+    others = sorted(set(re.findall(r"[A-Za-z_]\w*", expr)) - {"and", "or", "not", "long"})
+    for values in itertools.product((False, True), repeat=len(others)):
+        marks = {"long"} | {name for name, on in zip(others, values) if on}
+        if compiled.evaluate(lambda name, marks=marks, **kw: name in marks):
+            return None                 # some test of the module may be selected
+    return True
+
+
+# --------------------------------------------------------------------------------------
 # pytest-xdist's schedule (make test: -n auto --dist loadscope)
 # --------------------------------------------------------------------------------------
 
@@ -339,47 +378,31 @@ _SHARED_UNITS = dict.fromkeys(("tests/derive/test_generated.py",
                                "tests/derive/test_derive_task_dimension.py",
                                "tests/mechanisms/test_independent.py",
                                "tests/derivatives/test_derivatives_mpmath.py"), "derivations")
-#: The longest work units, longest first (seconds of one run, Nov 26 2026, in brackets); the
-#: others follow in pytest-xdist's order (most tests first). Longest first keeps a long unit from
-#: starting last while the other worker idles; a stale list only costs time, never a test.
-_LONGEST_FIRST = (
-    "derivations",                                          # (51)
-    "tests/bench/test_bench_kinds.py",                      # (14; 48 on a loaded machine)
-    "tests/studies/test_studies_cluster.py",                # (32)
-    "tests/figures/test_figures_layout.py",                 # (21)
-    "tests/core/test_install_paths.py",                     # (16)
-    "tests/identification/test_identification_design.py",   # (12)
-    "tests/control/test_closed_loop.py",                    # (9)
-    "tests/control/test_fk_tracking_steps.py",              # (8)
-    "tests/bench/test_bench.py",                            # (8)
-    "tests/planning/test_planning_topp.py",                 # (7)
-    "tests/test_api.py",                                    # (6)
-    "tests/export/test_export_new_kinds.py",                # (6)
-    "tests/export/test_export_project.py",                  # (5)
-    "tests/figures/test_animate.py",                        # (5)
-    "tests/derive/test_splits_3d.py",                       # (5)
-    "tests/identification/test_identification_conclusions.py",  # (5)
-    "tests/test_docs_api_links.py",                         # (4)
-    "tests/analysis/test_maps.py",                          # (4)
-    "tests/test_bad_input.py",                              # (4)
-    "tests/examples/test_c_example.py",                     # (3)
-    "tests/identification/test_identification_design_platform.py",  # (3)
-    "tests/identification/test_identification_commands.py",  # (3)
-    "tests/test_model_file.py",                             # (3)
-)
+
+
+def long_first(units, root):
+    """The work units (test modules relative to ``root``, or "derivations", the modules of
+    _SHARED_UNITS) in the order they are handed out: the units holding a module marked long
+    first, each group in the order given (a stable sort)."""
+    def long_unit(unit):
+        modules = [m for m, u in _SHARED_UNITS.items() if u == unit] or [unit]
+        return any(_marked_long(root / m) for m in modules)
+    return sorted(units, key=lambda u: not long_unit(u))
 
 
 @pytest.hookimpl(tryfirst=True, optionalhook=True)
 def pytest_xdist_make_scheduler(config, log):
-    """--dist loadscope with a module per work unit (the modules of _SHARED_UNITS as one) and
-    the units of _LONGEST_FIRST handed out first; other --dist modes: pytest-xdist's own."""
+    """--dist loadscope with a module per work unit (the modules of _SHARED_UNITS as one), the
+    units of the modules marked long handed out first (a long unit that starts last keeps one
+    worker busy while the other idles), each group in pytest-xdist's order (most tests
+    first); other --dist modes: pytest-xdist's own."""
     if config.getvalue("dist") != "loadscope":
         return None
     from collections import OrderedDict
 
     from xdist.scheduler import LoadScopeScheduling
 
-    rank = {unit: k for k, unit in enumerate(_LONGEST_FIRST)}
+    root = Path(str(config.rootpath))
 
     class Scheduling(LoadScopeScheduling):
         _ordered = False
@@ -391,7 +414,7 @@ def pytest_xdist_make_scheduler(config, log):
         def _assign_work_unit(self, node):
             if not self._ordered:          # the first assignment: the queue is complete
                 self._ordered = True
-                units = sorted(self.workqueue, key=lambda u: rank.get(u, len(rank)))  # stable
+                units = long_first(self.workqueue, root)
                 self.workqueue = OrderedDict((u, self.workqueue[u]) for u in units)
             super()._assign_work_unit(node)
 

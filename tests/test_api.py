@@ -26,6 +26,8 @@ import pytest
 
 import pm2dof
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 REPO = Path(__file__).resolve().parent.parent
 README = REPO / "README.md"
 

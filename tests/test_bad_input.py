@@ -33,6 +33,8 @@ from hypothesis import strategies as st
 import pm2dof
 from pm2dof import SingularityError, WorkspaceError
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 CENTRE = np.array([0.245, 0.265])
 HALF = 0.05
 FAST = settings(derandomize=True, max_examples=150, deadline=None,

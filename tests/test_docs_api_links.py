@@ -17,6 +17,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 ROOT = Path(__file__).resolve().parent.parent
 griffe = pytest.importorskip("griffe", reason="make docs needs pm2dof[docs]")
 

@@ -16,6 +16,8 @@ from pm2dof.analysis.maps import maps_summary, workspace_maps
 from pm2dof.analysis.report import model_report
 from pm2dof.control.trajectory import line_profile
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 ROOT = Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text()
 DOCS = {p.stem: p.read_text() for p in (ROOT / "docs").glob("*.md")}

@@ -20,6 +20,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 PKG = Path(__file__).resolve().parent.parent / "pm2dof"
 
 # sub-package (or top-level module) -> the pm2dof sub-packages it may import

@@ -34,6 +34,8 @@ from pm2dof.core.errors import ModelFileError, StaleGeneratedCodeError
 from pm2dof.core.model_file import ModelSpec, read_model_file
 from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 REPO = Path(__file__).resolve().parent.parent
 PAPER = SHIPPED_MODELS / "shang2010.toml"
 FIVEBAR = SHIPPED_MODELS / "fivebar.toml"

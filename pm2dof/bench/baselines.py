@@ -6,7 +6,7 @@ import time
 import numpy as np
 
 from ..core.errors import Pm2dofError, UnsupportedMechanismError
-from ..core.model_file import is_friction_param
+from ..core.mechanism import is_friction_param
 from ..core.task import is_rr_point, mechanism
 
 __all__ = ["reference_geometry", "reference_problem", "lambdify_problem", "peer_problem",

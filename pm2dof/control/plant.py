@@ -2,7 +2,7 @@
 """The plant of the closed-loop rollouts: what the simulated robot really is.
 
 The truth (:func:`plant_truth`) is the model file's ``[plant]`` with the payload booked
-(:func:`pm2dof.core.model_file.payload_increments`); :func:`plant_vector` packs it with the encoder's step for the generated
+(:func:`pm2dof.core.mechanism.payload_increments`); :func:`plant_vector` packs it with the encoder's step for the generated
 plant (manifest layout ``plant``); :func:`theta_truth` gives it in theta's coordinates, to
 compare with an estimate. :mod:`.simulate` runs the controllers against it.
 """
@@ -13,7 +13,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from ..core.errors import ArgumentError, ArgumentTypeError
-from ..core.model_file import payload_increments
+from ..core.mechanism import payload_increments
 
 __all__ = ["plant_truth", "plant_vector", "theta_truth"]
 
@@ -21,7 +21,7 @@ __all__ = ["plant_truth", "plant_vector", "theta_truth"]
 def plant_truth(model, **overrides):
     """The plant's truth as a dict: the model file's ``[plant]`` with the payload booked in.
 
-    The payload's mass m is booked by ``pm2dof.core.model_file.payload_increments``: a
+    The payload's mass m is booked by ``pm2dof.core.mechanism.payload_increments``: a
     platform carries it at its origin (m_p += m); a point end effector books it to the tip of
     leg j's distal link (j = ``payload_leg``, counted from 1 as in the paper): an RRR leg's
     alpha_j, beta_j, gamma_j, kappa_j gain m la^2, m la lb, m lb^2, m la (its kinetic energy
@@ -41,7 +41,7 @@ def plant_truth(model, **overrides):
     if unknown:
         raise ArgumentTypeError(f"unknown plant field(s) {unknown}; fields are {sorted(p)}")
     p.update(overrides)
-    platform = getattr(model.spec, "end_effector", "point") == "platform"
+    platform = model.spec.end_effector == "platform"
     leg_no = 1 if platform else p["payload_leg"]
     if not (isinstance(leg_no, (int, float, np.number)) and not isinstance(leg_no, bool)
             and leg_no == int(leg_no) and 1 <= leg_no <= model.n_legs):
@@ -51,7 +51,7 @@ def plant_truth(model, **overrides):
     inertial = [f for f, _ in model.layout("plant").fields if f in p and f not in
                 ("fv", "fc", "fs", "stribeck_velocity", "coulomb_smoothing_velocity")]
     truth = {k: np.array(p[k], dtype=float) for k in inertial}
-    for name, inc in payload_increments(model.spec.legs[j], "platform" if platform else "point",
+    for name, inc in payload_increments(model.spec.legs[j], model.spec.end_effector,
                                         float(p["payload_mass"])).items():
         if name in truth:                      # e.g. no kappa without gravity
             if truth[name].ndim:

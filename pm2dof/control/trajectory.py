@@ -369,8 +369,13 @@ def line(start, end, v_max, a_max, j_max, period=0.002, orientation_length=None)
 
 def line_moves(model):
     """Names of the model file's line moves (``start``, ``end``): what :func:`model_move`
-    samples. A move that names a path file (``path = ...``) is planned by pm2dof.planning."""
-    spec = getattr(model, "spec", model)
+    samples. A move that names a path file (``path = ...``) is planned by pm2dof.planning.
+    ``model``: a Model."""
+    return _line_moves(model.spec)
+
+
+def _line_moves(spec):
+    """:func:`line_moves` of a model file's ``spec`` (a ModelSpec)."""
     return tuple(k for k, t in spec.trajectories.items() if "path" not in t)
 
 
@@ -399,7 +404,7 @@ def model_move(model, name, period=None):
 
     Parameters
     ----------
-    model : Model or ModelSpec
+    model : Model
     name : str
         A key of the model file's ``[trajectories]``.
     period : float, optional
@@ -410,16 +415,16 @@ def model_move(model, name, period=None):
     TrajectoryError
         No such move (the message lists the file's moves).
     """
-    spec = getattr(model, "spec", model)
+    spec = model.spec
     return line(**_move_arguments(spec, name),
                 period=spec.sensing["sample_period"] if period is None else period,
-                orientation_length=orientation_length(spec))
+                orientation_length=orientation_length(model))
 
 
 def _paper_moves():
     """The paper's moves, read from the shipped model file of the paper's robot."""
     spec = read_model_file(SHIPPED_MODELS / f"{DEFAULT_MODEL_NAME}.toml")
-    return MappingProxyType({k: _move_arguments(spec, k) for k in line_moves(spec)})
+    return MappingProxyType({k: _move_arguments(spec, k) for k in _line_moves(spec)})
 
 
 #: read-only {name: keyword arguments of line()}: the paper's low- and high-speed moves (Sect. 5),

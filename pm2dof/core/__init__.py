@@ -2,6 +2,8 @@
 """The runtime core: what a real-time loop links against.
 
 * :mod:`.model_file` -- read and validate a model file (TOML) into a frozen ``ModelSpec``;
+* :mod:`.mechanism` -- the mechanism's rules (leg kinds, theta's layout, lumped parameters,
+  payload, reach) that the model file is checked against;
 * :mod:`.model` -- :class:`Model`: the spec plus its compiled C, each method one call into C;
 * :mod:`._cbind` -- the C extension binding CasADi's C API (``dlopen``, no allocation per call);
 * :mod:`.layout` -- flat state/parameter vectors packed by field name (from the manifest);

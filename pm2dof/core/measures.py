@@ -23,6 +23,8 @@ import math
 
 import numpy as np
 
+from .mechanism import attachment_points
+
 __all__ = ["TYPE_I_MEASURES", "TYPE_II_MEASURES", "leg_lines", "pose_measures",
            "singularity_words"]
 
@@ -79,16 +81,6 @@ def singularity_words(legs, end_effector):
     return one, two
 
 
-def _attachment(leg, pose):
-    """P_i, where leg i meets the end effector at ``pose``: the point (x, y) itself, or the
-    platform's p + R(phi) a_i."""
-    if len(pose) == 2:
-        return np.array(pose, dtype=float)
-    c, s = math.cos(pose[2]), math.sin(pose[2])
-    ax, ay = leg.attach
-    return np.array([pose[0] + c * ax - s * ay, pose[1] + s * ax + c * ay])
-
-
 def leg_lines(legs, pose):
     """Each leg's line of action and type I measure at ``pose``, in its configured branch.
 
@@ -106,12 +98,12 @@ def leg_lines(legs, pose):
         of its distal link, or of an RPR leg) and P_i (its attachment point, m). NaN where
         its geometry has no solution (an RRR leg outside its annulus, a PRR leg farther than
         lb from its rail's line); an RPR leg's stroke and a PRR rail's ends are not checked
-        here (:func:`pm2dof.core.model_file.leg_reach_problem` does).
+        here (:func:`pm2dof.core.mechanism.leg_reach_problem` does).
     """
     out = []
     with np.errstate(invalid="ignore", divide="ignore"):
-        for leg in legs:
-            p = _attachment(leg, pose)
+        for leg, point in zip(legs, attachment_points(legs, pose)):
+            p = np.array(point, dtype=float)
             d = p - np.asarray(leg.base, dtype=float)
             dist = math.hypot(*d)
             if leg.kind == "RRR":     # law of cosines at the base, the model file's elbow

@@ -34,22 +34,18 @@ from .errors import (
 from .layout import Layout
 from .manifest import Manifest
 from .measures import singularity_words
-from .model_file import (
+from .mechanism import (
     INERTIAL,
+    LEG_KINDS,
     PLATFORM_PARAMS,
     inertia_problem,
     is_friction_param,
     platform_inertia_problem,
-    read_model_file,
 )
+from .model_file import read_model_file
 from .poses import PoseMethods
 from .status import Status
-from .task import (
-    active_coordinates,
-    is_rr_point,
-    require_generated,
-    spec_task_names,
-)
+from .task import active_coordinates, is_rr_point
 
 try:
     from . import _cbind
@@ -139,12 +135,12 @@ def _check_generated(spec, gen_dir):
 
 
 def _mode_geometry(spec):
-    """A platform's legs for :meth:`Model._fk_same_mode`, one tuple each: (kind 0 RRR, 1 PRR,
-    2 RPR (one working mode: not checked), base x, y, attachment a_x, a_y, la (RRR), the rail's
-    unit direction d_x, d_y (PRR))."""
+    """A platform's legs for :meth:`Model._fk_same_mode`, one tuple each: (kind, its index in
+    LEG_KINDS: 0 RRR, 1 PRR, 2 RPR (one working mode: not checked), base x, y, attachment a_x,
+    a_y, la (RRR), the rail's unit direction d_x, d_y (PRR))."""
     legs = []
     for lg in spec.legs:
-        kind = ("RRR", "PRR", "RPR").index(lg.kind)
+        kind = LEG_KINDS.index(lg.kind)
         d = ((lg.rail_end[0] - lg.base[0]) / lg.rail_length,
              (lg.rail_end[1] - lg.base[1]) / lg.rail_length) if kind == 1 else (0.0, 0.0)
         legs.append((kind, float(lg.base[0]), float(lg.base[1]), float(lg.attach[0]),
@@ -272,7 +268,7 @@ class Model(DerivativeMethods, PoseMethods):
             f.check_outputs = not contract.reports_by_status(short)
             funcs[short] = f
         m = funcs["ik"].sizes_in[0]          # the task dimension of the generated code
-        task_names = spec_task_names(spec, m)
+        task_names = spec.task_names
         if len(task_names) != m:
             _stale(spec, gen_dir, f"{lib_path} has task dimension {m}, the model file "
                                   f"{len(task_names)} ({', '.join(task_names)})")
@@ -584,7 +580,7 @@ class Model(DerivativeMethods, PoseMethods):
         (qa,), _ = call(self._f["fk"], (qa,), (out, self._residual))
         r = self._residual
         tol = self.spec.sensing["closure_tolerance"]
-        qa_text = active_coordinates(self, qa)
+        qa_text = active_coordinates(self.spec.actuators, qa)
         if not (np.isfinite(out).all() and np.isfinite(r).all()):
             if self.spec.home is not None:      # a platform: Gauss-Newton from home
                 raise WorkspaceError(
@@ -622,7 +618,7 @@ class Model(DerivativeMethods, PoseMethods):
         if wrong:
             legs = ", ".join(str(i + 1) for i in wrong)
             raise WorkspaceError(
-                f"fk of qa = {active_coordinates(self, qa)}: the Gauss-Newton from "
+                f"fk of qa = {active_coordinates(self.spec.actuators, qa)}: the Gauss-Newton from "
                 f"[platform] home = "
                 f"{list(self.spec.home)} ended at the pose {np.round(xe, 6).tolist()}, which "
                 f"closes the loops with leg(s) {legs} in the other working mode (elbow or "
@@ -979,14 +975,7 @@ class Model(DerivativeMethods, PoseMethods):
             Parameters, in :attr:`param_names` order.
         out : ndarray (m,), optional
             Written into and returned (no allocation).
-
-        Raises
-        ------
-        StaleGeneratedCodeError
-            The generated code predates the gravity term: re-derive the model (the message
-            names the command).
         """
-        require_generated(self, "Ge")
         return self._eval("Ge", (self._m,), out, q, theta)
 
     # --- energy --------------------------------------------------------------------------
@@ -1010,9 +999,6 @@ class Model(DerivativeMethods, PoseMethods):
 
         Raises
         ------
-        StaleGeneratedCodeError
-            The model's generated code predates the energies: re-derive the model (the
-            message names the command).
         WorkspaceError
             A pose some leg cannot reach.
         """
@@ -1038,15 +1024,12 @@ class Model(DerivativeMethods, PoseMethods):
 
         Raises
         ------
-        StaleGeneratedCodeError
-            The model's generated code predates the energies: re-derive the model.
         WorkspaceError
             A pose some leg cannot reach.
         """
         return self._energy("potential_energy", xe, theta)
 
     def _energy(self, short, *args):
-        require_generated(self, short)
         *pose, theta = args
         out = self._eval(short, (1,), None, *pose, self.checked_theta(theta))
         if not np.isfinite(out[0]):        # a pose some leg cannot reach: ik names the leg

@@ -4,9 +4,13 @@
 A model file describes one planar parallel manipulator: legs of kind RRR, PRR or RPR
 (``[[legs]]``) joined at a point or at a moving platform (``[model] end_effector``), an optional
 gravity vector, its friction model, its nominal parameters (the paper's Tables 1-2) and run-time
-data (limits, gains, plant truth, trajectories). docs/model-file.md is the reference. Only ``[model]`` and ``[[legs]]`` enter the generated C;
-their canonical hash (:attr:`ModelSpec.formulation_sha256`) guards generated code against
-staleness. This module is pure Python and is shared by ``derive/`` and the runtime.
+data (limits, gains, plant truth, trajectories). docs/model-file.md is the reference. Only
+``[model]`` and ``[[legs]]`` enter the generated C; their canonical hash
+(:attr:`ModelSpec.formulation_sha256`) guards generated code against staleness.
+
+This module reads and checks; the rules of the mechanism it checks against (leg kinds, theta's
+layout, lumped parameters from links, reach) are :mod:`pm2dof.core.mechanism`'s. It is pure
+Python and is shared by ``derive/`` and the runtime.
 """
 import hashlib
 import json
@@ -19,34 +23,30 @@ import numpy as np
 from . import contract
 from .errors import ModelFileError
 from .measures import TYPE_I_MEASURES, TYPE_II_MEASURES, pose_measures
+from .mechanism import (
+    ACTUATORS,
+    END_EFFECTORS,
+    FIRST_MOMENT,
+    FRICTION_CONSTANTS,
+    FRICTION_MODELS,
+    INERTIAL,
+    LEG_KINDS,
+    LINK_BODIES,
+    PLATFORM_PARAMS,
+    attachment_points,
+    inertia_problem,
+    leg_reach_problem,
+    lumped_from_links,
+    platform_from_body,
+    platform_inertia_problem,
+    theta_groups,
+    theta_names,
+)
 from .validate import RULES, Problems, entry
 
-__all__ = ["ModelSpec", "Leg", "read_model_file", "FRICTION_MODELS", "is_friction_param",
-           "ELBOWS", "LEG_KINDS", "END_EFFECTORS", "PLATFORM_PARAMS", "leg_reach_problem",
-           "attachment_points", "theta_groups", "payload_increments", "LINK_BODIES",
-           "lumped_from_links", "platform_from_body"]
+__all__ = ["ModelSpec", "Leg", "read_model_file", "ELBOWS", "FK_BRANCHES", "PRR_BRANCHES",
+           "SPLITS", "DEFAULT_PARALLEL_THRESHOLD", "default_closure_tolerance"]
 
-# friction model -> its per-leg parameters after the inertial ones (eq. 2 and extensions)
-FRICTION_MODELS = {
-    "coulomb_viscous": ("fv", "fc"),                 # eq. 2, sign(0) = 0
-    "coulomb_viscous_stribeck": ("fv", "fc", "fs"),  # + fs sign(v) / (1 + (v/vs)^2)
-    "smooth_sign": ("fv", "fc"),                     # sign(v) -> v / sqrt(v^2 + eps^2)
-}
-FRICTION_CONSTANTS = {  # formulation constants each friction model needs in [model]
-    "coulomb_viscous": (),
-    "coulomb_viscous_stribeck": ("stribeck_velocity",),
-    "smooth_sign": ("sign_smoothing_velocity",),
-}
-INERTIAL = ("alpha", "beta", "gamma")
-#: the first moment of a leg's links in the gravity term (kg m), for the kinds that need one
-FIRST_MOMENT = "kappa"
-#: the platform's parameters in theta: mass (kg), first moments m c_x, m c_y in the platform
-#: frame (kg m), inertia about the platform's origin, the task point (kg m^2)
-PLATFORM_PARAMS = ("m_p", "mx_p", "my_p", "I_p")
-#: leg kinds: actuated joint first (R revolute, P prismatic); see docs/model-file.md
-LEG_KINDS = ("RRR", "PRR", "RPR")
-#: end effectors: task coordinates and their count m
-END_EFFECTORS = {"point": ("x", "y"), "platform": ("x", "y", "phi")}
 #: PRR branch: the slider ahead of (+1) or behind (-1) the foot of the perpendicular from the
 #: attachment point onto the rail, along the rail's direction
 PRR_BRANCHES = {"ahead": 1, "behind": -1}
@@ -90,7 +90,7 @@ class Leg:
     @property
     def actuator(self):
         """"revolute" (RRR: qa an angle, rad) or "prismatic" (PRR, RPR: qa a length, m)."""
-        return "revolute" if self.kind == "RRR" else "prismatic"
+        return ACTUATORS[self.kind]
 
     @property
     def rail_length(self):
@@ -159,6 +159,11 @@ class ModelSpec:
     @property
     def bases(self):
         return np.array([leg.base for leg in self.legs], dtype=float)
+
+    @property
+    def actuators(self):
+        """Each leg's actuated joint, "revolute" or "prismatic" (:attr:`Leg.actuator`)."""
+        return tuple(leg.actuator for leg in self.legs)
 
     def formulation(self):
         """The part of the model that enters the generated code, as canonical JSON-able data."""
@@ -303,112 +308,6 @@ def _stroke(pr, key, value):
     return (lo, hi)
 
 
-def leg_reach_problem(leg, point):
-    """Why ``leg`` cannot put its tip at ``point`` (x, y) in m in its configured branch (a
-    phrase that follows "leg i"), or None.
-
-    RRR: |point - A| within [|la - lb|, la + lb]. PRR: within lb of the rail's line, with the
-    slider of the chosen branch on the rail (0 <= qa <= its length). RPR: |point - A| within
-    the stroke."""
-    e = (point[0] - leg.base[0], point[1] - leg.base[1])
-    dist = math.hypot(*e)
-    if leg.kind == "RRR":
-        lo, hi = abs(leg.la - leg.lb), leg.la + leg.lb
-        if not lo <= dist <= hi:
-            return f"is {dist:.4g} m from its base, its reach is [{lo:.4g}, {hi:.4g}] m"
-        return None
-    if leg.kind == "RPR":
-        lo, hi = leg.stroke
-        if not lo <= dist <= hi:
-            return f"is {dist:.4g} m from its base, its stroke is [{lo:.4g}, {hi:.4g}] m"
-        return None
-    length = leg.rail_length
-    d = ((leg.rail_end[0] - leg.base[0]) / length, (leg.rail_end[1] - leg.base[1]) / length)
-    h = d[0] * e[1] - d[1] * e[0]                        # signed distance from the rail's line
-    if abs(h) > leg.lb:
-        return f"is {abs(h):.4g} m from its rail's line, farther than its link lb = {leg.lb:.4g} m"
-    s = d[0] * e[0] + d[1] * e[1] + leg.elbow * math.sqrt(leg.lb ** 2 - h ** 2)
-    if not 0.0 <= s <= length:
-        return (f"would need its slider at {s:.4g} m along its rail, which runs from 0 to "
-                f"{length:.4g} m")
-    return None
-
-
-def payload_increments(leg, end_effector, mass):
-    """What a point payload of ``mass`` kg adds to theta's inertial entries: {name: increment},
-    names without the leg's number. A platform carries it at its origin (m_p += mass); a point
-    end effector books it to the tip of ``leg`` (docs/model-file.md, [plant]): RRR alpha
-    += m la^2, beta += m la lb, gamma += m lb^2, kappa += m la; PRR alpha += m, beta += m lb,
-    gamma += m lb^2; RPR alpha += m (a mass at the leg's length qa from its base)."""
-    if end_effector == "platform":
-        return {"m_p": mass}
-    if leg.kind == "RRR":
-        return {"alpha": mass * leg.la ** 2, "beta": mass * leg.la * leg.lb,
-                "gamma": mass * leg.lb ** 2, FIRST_MOMENT: mass * leg.la}
-    if leg.kind == "PRR":
-        return {"alpha": mass, "beta": mass * leg.lb, "gamma": mass * leg.lb ** 2}
-    return {"alpha": mass}
-
-
-def attachment_points(spec_legs, pose):
-    """The legs' attachment points in the base frame at a task pose: (x, y) for a point, the
-    platform's p + R(phi) a_i for a pose (x, y, phi)."""
-    if len(pose) == 2:
-        return [tuple(pose)] * len(spec_legs)
-    c, s = math.cos(pose[2]), math.sin(pose[2])
-    return [(pose[0] + c * lg.attach[0] - s * lg.attach[1],
-             pose[1] + s * lg.attach[0] + c * lg.attach[1]) for lg in spec_legs]
-
-
-def is_friction_param(name, friction):
-    """Whether theta's entry ``name`` (a key and a leg number: fv2, fc1, ...) is a parameter of
-    the friction law ``friction`` (a key of FRICTION_MODELS)."""
-    return name.rstrip("0123456789") in FRICTION_MODELS[friction]
-
-
-def inertia_problem(alpha, beta, gamma):
-    """Why one leg's M_i (eq. 1) is not positive definite for every c_i, or None: the rule for
-    [nominal] and for any theta a plan takes (alpha, gamma > 0, beta^2 < alpha gamma)."""
-    if not (alpha > 0 and gamma > 0):
-        return f"alpha and gamma must be > 0, got alpha = {alpha:.6g}, gamma = {gamma:.6g}"
-    if beta * beta >= alpha * gamma:
-        return (f"inertia is not positive definite: beta^2 = {beta * beta:.6g} >= "
-                f"alpha*gamma = {alpha * gamma:.6g}")
-    return None
-
-
-def platform_inertia_problem(m, mx, my, inertia):
-    """Why the platform's parameters (m_p, mx_p, my_p, I_p) are not a rigid body's, or None:
-    m > 0 and I_p - (mx^2 + my^2) / m > 0 (the inertia about the centre of mass)."""
-    if not m > 0:
-        return f"m_p must be > 0, got {m:.6g}"
-    if not inertia * m > mx * mx + my * my:
-        return (f"the inertia about the centre of mass, I_p - (mx_p^2 + my_p^2) / m_p = "
-                f"{inertia - (mx * mx + my * my) / m:.6g}, must be > 0")
-    return None
-
-
-def theta_groups(legs, effector, gravity, friction):
-    """theta's layout: (key, legs) pairs in order, ``legs`` the 0-based legs of a per-leg
-    array, None for a scalar. alpha, beta, gamma for every leg; kappa (the gravity term's first
-    moment, docs/model-file.md) for the RRR and RPR legs when there is gravity; the platform's
-    m_p, mx_p, my_p, I_p; then the friction parameters of every leg."""
-    every = list(range(len(legs)))
-    groups = [(key, every) for key in INERTIAL]
-    if any(g != 0.0 for g in gravity):
-        moments = [i for i, leg in enumerate(legs) if leg.kind in ("RRR", "RPR")]
-        if moments:
-            groups.append((FIRST_MOMENT, moments))
-    if effector == "platform":
-        groups += [(key, None) for key in PLATFORM_PARAMS]
-    return groups + [(key, every) for key in FRICTION_MODELS[friction]]
-
-
-def _names(groups):
-    return tuple(key if idx is None else f"{key}{i + 1}" for key, idx in groups
-                 for i in (idx if idx is not None else [0]))
-
-
 #: bound of each theta key in [nominal] and [plant] (validate.RULES)
 _THETA_RULES = {"alpha": ("pos", "pos"), "beta": ("pos", "any"), "gamma": ("pos", "pos"),
                 "kappa": ("any", "any"), "m_p": ("pos", "pos"), "mx_p": ("any", "any"),
@@ -450,40 +349,7 @@ def _flatten(groups, values):
             for j in (range(len(idx)) if idx is not None else [0])]
 
 
-#: the bodies of each leg kind in [[nominal.links]] / [[plant.links]], and their keys: mass (kg),
-#: com (m, the centre of mass's distance along the body from its joint; RPR rod: back from the
-#: platform's joint), inertia (kg m^2, about the centre of mass). A slider has a mass only.
-LINK_BODIES = {"RRR": {"proximal": ("mass", "com", "inertia"),
-                       "distal": ("mass", "com", "inertia")},
-               "PRR": {"slider": ("mass",), "link": ("mass", "com", "inertia")},
-               "RPR": {"cylinder": ("mass", "com", "inertia"), "rod": ("mass", "com", "inertia")}}
 _BODY_RULES = {"mass": "pos", "com": "any", "inertia": "nonneg"}
-
-
-def lumped_from_links(leg, bodies):
-    """{alpha, beta, gamma, kappa} of one leg from its bodies ({body: {mass, com, inertia}},
-    LINK_BODIES), by the rule of docs/model-file.md ("From the links to theta"); PRR legs
-    have no kappa."""
-    if leg.kind == "RRR":
-        a, b = bodies["proximal"], bodies["distal"]
-        return {"alpha": a["inertia"] + a["mass"] * a["com"] ** 2 + b["mass"] * leg.la ** 2,
-                "beta": b["mass"] * leg.la * b["com"],
-                "gamma": b["inertia"] + b["mass"] * b["com"] ** 2,
-                FIRST_MOMENT: a["mass"] * a["com"] + b["mass"] * leg.la}
-    if leg.kind == "PRR":
-        sl, b = bodies["slider"], bodies["link"]
-        return {"alpha": sl["mass"] + b["mass"], "beta": b["mass"] * b["com"],
-                "gamma": b["inertia"] + b["mass"] * b["com"] ** 2}
-    c, r = bodies["cylinder"], bodies["rod"]
-    return {"alpha": r["mass"], "beta": r["mass"] * r["com"],
-            "gamma": c["inertia"] + c["mass"] * c["com"] ** 2 + r["inertia"] + r["mass"] * r["com"] ** 2,
-            FIRST_MOMENT: c["mass"] * c["com"]}
-
-
-def platform_from_body(mass, com, inertia):
-    """(m_p, mx_p, my_p, I_p) of a platform of ``mass`` kg, centre of mass ``com`` (platform
-    frame, m) and ``inertia`` about it (kg m^2)."""
-    return mass, mass * com[0], mass * com[1], inertia + mass * (com[0] ** 2 + com[1] ** 2)
 
 
 def _read_bodies(pr, where, kind, raw):
@@ -560,7 +426,7 @@ def _expand_links(pr, section, table, legs, groups):
 
 def _read_nominal(pr, nominal, groups, legs):
     """[nominal]: theta's names and values (None when invalid)."""
-    param_names = _names(groups)
+    param_names = theta_names(groups)
     if nominal is None:
         return param_names, None
     nominal, unknown = _expand_links(pr, "nominal", nominal, legs, groups)

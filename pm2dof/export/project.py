@@ -68,10 +68,9 @@ def _field_docs(u):
 
 def _gravity_note(model):
     """The header's sentence on gravity: the steps hold the gravity term."""
-    g = getattr(model.spec, "gravity", None)
-    if not getattr(model.spec, "has_gravity", False) or g is None:
+    if not model.spec.has_gravity:
         return "a horizontal plane (no gravity)"
-    return (f"gravity {', '.join(f'{v:g}' for v in g)} m/s^2 in the base frame, compensated "
+    return (f"gravity {', '.join(f'{v:g}' for v in model.spec.gravity)} m/s^2 in the base frame, compensated "
             f"by the steps' gravity term (theta's first moments)")
 
 

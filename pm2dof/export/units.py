@@ -44,4 +44,4 @@ class ExportUnits:
 
 def export_units(model):
     """:class:`ExportUnits` of ``model`` (a :class:`pm2dof.Model`)."""
-    return ExportUnits(model.task_names, [leg.actuator for leg in model.spec.legs])
+    return ExportUnits(model.task_names, model.spec.actuators)

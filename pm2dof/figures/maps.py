@@ -142,7 +142,7 @@ def maps_note(model, tau_max=None, phi=None):
     """The key to the maps' figures: model, limits, a platform's orientation ``phi`` (rad; the
     maps' ``phi``), and what each line and marker is."""
     w = actuator_limits(model.spec, tau_max, "maps")
-    units = per_actuator(model, "N m", "N", "N m (revolute) or N (linear)")
+    units = per_actuator(model.spec.actuators, "N m", "N", "N m (revolute) or N (linear)")
     pose = ("" if phi is None else
             f"The platform at phi = {phi:g} rad (its home orientation unless given) over the "
             f"whole map; force: the largest ball of (fx, fy, moment), N and N m alike; "

@@ -61,7 +61,7 @@ def _torques(plt, model, name, plans, w):
         for i in range(model.n_legs):
             ax.axhline(w[i], color="k", lw=0.6, ls="--", label="+-tau_max" if i == 0 else None)
             ax.axhline(-w[i], color="k", lw=0.6, ls="--")
-        ax.set_ylabel(per_actuator(model, "torque (N m)", "force (N)",
+        ax.set_ylabel(per_actuator(model.spec.actuators, "torque (N m)", "force (N)",
                                    "torque (N m), force (N)"))
         ax.set_title(f"{name}, time-optimal with {key}: {p.duration:.3f} s", fontsize=9)
     axes[-1, 0].set_xlabel("time (s)")

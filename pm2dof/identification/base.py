@@ -13,16 +13,15 @@ import numpy as np
 
 from ..control.trajectory import line_moves
 from ..core.errors import ArgumentError, SingularityError, WorkspaceError
+from ..core.mechanism import FRICTION_MODELS
 
 __all__ = ["BaseParameters", "Identifiability", "identifiability", "base_parameters",
-           "format_identifiability", "inertial_mask", "region_center", "INERTIAL",
-           "parameter_units"]
+           "format_identifiability", "inertial_mask", "region_center", "parameter_units"]
 
-#: name prefixes of the inertial parameters of a leg (eq. 5: alpha_i, beta_i, gamma_i)
-INERTIAL = ("alpha", "beta", "gamma")
-#: name prefixes of the friction coefficients (eq. 2 and its extensions); every other
-#: parameter (a leg's alpha, beta, gamma, kappa, the platform's m_p, mx_p, my_p, I_p) is inertial
-FRICTION = ("fv", "fc", "fs")
+#: name prefixes of the friction coefficients of every friction model (eq. 2 and its
+#: extensions: fv, fc, fs); every other parameter (a leg's alpha, beta, gamma, kappa, the
+#: platform's m_p, mx_p, my_p, I_p) is inertial
+FRICTION = tuple(dict.fromkeys(key for keys in FRICTION_MODELS.values() for key in keys))
 
 
 def inertial_mask(names):

@@ -24,7 +24,7 @@ squares is already physical and is kept exactly (stage 1 is skipped).
 """
 import numpy as np
 
-from .base import INERTIAL as _INERTIAL
+from ..core.mechanism import INERTIAL as _INERTIAL
 from .base import inertial_mask
 
 __all__ = ["physical_constraints", "consistent_theta"]

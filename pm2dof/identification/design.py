@@ -734,7 +734,7 @@ def run_design(model, out, series=None, limits=None, solver=None, *, progress=No
                                   trajectory_of(model, multisine(model, duration=exc.duration)))
     write_excitation(out, exc, model)
     return DesignReport(out, exc, chk, seconds, default[0], v_max, a_max, tau_limit, sing_min,
-                        per_actuator(model, "torque", "force", "torque or force"),
+                        per_actuator(model.spec.actuators, "torque", "force", "torque or force"),
                         effort_unit(model))
 
 

@@ -47,7 +47,7 @@ def encoder_phrase(model, quantise=True):
     step = float(sensing.get("linear_encoder_resolution", 0.0))
     rev = f"{int(counts)} counts/rev" if quantise and counts > 0 else "exact"
     lin = f"{step:g} m per count" if quantise and step > 0 else "exact"
-    return per_actuator(model, rev, lin, f"{rev} (rotary), {lin} (linear)")
+    return per_actuator(model.spec.actuators, rev, lin, f"{rev} (rotary), {lin} (linear)")
 
 
 def plant_sha256(truth):

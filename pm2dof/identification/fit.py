@@ -183,7 +183,7 @@ def speed_phrase(model, min_joint_speed):
     """The threshold in words for messages: "0.1 rad/s", "0.01 m/s", or both for mixed
     actuators."""
     rad, lin = f"{min_joint_speed:g} rad/s", f"{min_joint_speed * SPEED_LEVER:g} m/s"
-    return per_actuator(model, rad, lin, f"{rad} (revolute) or {lin}")
+    return per_actuator(model.spec.actuators, rad, lin, f"{rad} (revolute) or {lin}")
 
 
 def stack_regressor(model, base, t, xe, tau, cutoff_hz, *, decimate=None,

@@ -13,9 +13,12 @@ excitation file's ``[excitation]`` table):
 ``formulation_sha256``
     The hash of what the generated code depends on (legs, geometry, friction model).
 
-Files written before these entries name their model by ``model`` alone, usually a name: they
-are still read. :func:`model_for` picks the model of a command (``--model``, else the file's,
-else the paper's robot) and refuses a file made for another model.
+A file records all three (:data:`ENTRIES`) or none (a log of a robot that pm2dof did not
+write: the command's ``--model`` says which model it is). Some without the others is a file of
+pm2dof before 0.3, which named its model by ``model`` alone: it is refused
+(:func:`incomplete`), naming what is missing. :func:`model_for` picks the model of a command
+(``--model``, else the file's, else the paper's robot) and refuses a file made for another
+model.
 """
 import os
 from pathlib import Path
@@ -23,7 +26,11 @@ from pathlib import Path
 from ..core.errors import ArgumentError, ModelFileError
 from ..core.paths import is_shipped, resolve_model
 
-__all__ = ["model_entries", "rebase", "resolve", "mismatch", "model_for"]
+__all__ = ["ENTRIES", "model_entries", "incomplete", "rebase", "resolve", "mismatch",
+           "model_for"]
+
+#: the entries a file records for its model: all three, or none
+ENTRIES = ("model", "model_name", "formulation_sha256")
 
 
 def model_entries(model, folder=None):
@@ -40,14 +47,25 @@ def model_entries(model, folder=None):
         ref = str(path)
     else:
         ref = Path(os.path.relpath(path, Path(folder).absolute())).as_posix()
-    return {"model": ref, "model_name": model.name,
-            "formulation_sha256": model.spec.formulation_sha256}
+    return dict(zip(ENTRIES, (ref, model.name, model.spec.formulation_sha256)))
+
+
+def incomplete(entries, source="the file"):
+    """A message if ``entries`` hold some of :data:`ENTRIES` but not all (a file of pm2dof
+    before 0.3, which named its model by ``model`` alone), else None."""
+    have = [k for k in ENTRIES if k in entries]
+    if not have or len(have) == len(ENTRIES):
+        return None
+    missing = [k for k in ENTRIES if k not in entries]
+    return (f"{source} records its model by {', '.join(have)} without {', '.join(missing)}: "
+            f"a file of pm2dof before 0.3, whose format this version does not read (it reads "
+            f"files that record all of {', '.join(ENTRIES)}, or none). Write it again with "
+            f"this pm2dof, or remove its {', '.join(have)} and give --model")
 
 
 def resolve(ref, folder=None):
     """The model file ``ref`` names, a path taken relative to ``folder``; None for a bare name
-    that is neither a shipped model nor a file in ``folder`` (a file that names its model by
-    name only, as files written before pm2dof 0.3 may)."""
+    that is neither a shipped model nor a file in ``folder``."""
     try:
         return Path(os.path.normpath(resolve_model(ref, relative_to=folder)))
     except ModelFileError:
@@ -64,32 +82,18 @@ def rebase(ref, from_folder, to_folder):
     return Path(os.path.relpath(path, Path(to_folder).absolute())).as_posix()
 
 
-def _recorded(entries, folder):
-    """(name, formulation hash, where) a file's entries record; name or hash None if unknown.
-    A file that records only ``model`` is completed from the model file it names, if any."""
-    ref = entries.get("model")
-    name, sha = entries.get("model_name"), entries.get("formulation_sha256")
-    if ref is not None and name is None and sha is None:
-        path = resolve(ref, folder)
-        if path is None:
-            name = str(ref)
-        elif path.is_file():
-            from ..core.model_file import read_model_file
-            spec = read_model_file(path)
-            name, sha = spec.name, spec.formulation_sha256
-    return name, sha, (ref if ref is not None else "?")
-
-
 def mismatch(model, entries, folder=None, source="the file"):
     """A message if ``entries`` (a file's recorded model) name another model than ``model``
-    (by name or by formulation hash), else None. ``folder``: where a relative ``model`` path
-    starts (the file's folder)."""
-    name, sha, ref = _recorded(entries, folder)
-    if (name is None or name == model.name) and (sha is None
-                                                 or sha == model.spec.formulation_sha256):
+    (by name or by formulation hash), or are :func:`incomplete`, else None (also for a file
+    that records no model). ``folder``: where a relative ``model`` path starts (the file's
+    folder; the message names the path as recorded)."""
+    old = incomplete(entries, source)
+    if old is not None or not entries.get("model"):
+        return old
+    ref, name, sha = (entries[k] for k in ENTRIES)
+    if name == model.name and sha == model.spec.formulation_sha256:
         return None
-    had = ", ".join([f"model {ref}"] + ([f"formulation {sha[:12]}"] if sha else []))
-    return (f"{source} was written for model {name if name is not None else ref!r} ({had}), "
+    return (f"{source} was written for model {name!r} (model {ref}, formulation {sha[:12]}), "
             f"not {model.name!r} ({model.spec.path}, formulation "
             f"{model.spec.formulation_sha256[:12]}): leave --model out to use the file's model, "
             f"or give the model it was made for")
@@ -123,12 +127,15 @@ def model_for(entries, folder=None, source="the file", *, model=None, generated=
         found (no ``model`` given).
     """
     from ..core.model import Model, load_model
+    old = incomplete(entries, source)
+    if old is not None:
+        raise error(old)
     if model is None:
         ref = entries.get("model")
         path = None if ref is None else resolve(ref, folder)
         if ref is not None and path is None:
-            raise error(f"{source} names its model {ref!r} by name only, and that is not a "
-                        f"shipped model: pass --model with its model file")
+            raise error(f"{source} names its model {ref!r}, which is neither a shipped model "
+                        f"nor a model file relative to it: pass --model with its model file")
         if path is not None and not path.is_file():
             raise error(f"{source} names its model file {ref!r} (relative to the file's folder: "
                         f"{path}), which does not exist: keep the model file beside it as "

@@ -181,7 +181,7 @@ def _encoders(model):
     bits = math.log2(counts) if counts > 0 else 0
     rev = (f"{bits:.0f}-bit encoders" if bits.is_integer() else f"{counts:g} counts/rev encoders")
     lin = f"{float(sensing.get('linear_encoder_resolution', 0)):g} m linear encoders"
-    return per_actuator(model, rev, lin, f"{rev} and {lin}")
+    return per_actuator(model.spec.actuators, rev, lin, f"{rev} and {lin}")
 
 
 def _one(model, base, traj, truth, rng, noise_counts, identify_kw):
@@ -231,7 +231,7 @@ def monte_carlo(model, traj, seeds=20, *, noise_counts=0.5, truth="random", iden
             done.update(1)
     out = {"seeds": seeds, "noise_counts": noise_counts, "truth": truth,
            "encoders": _encoders(model),
-           "effort": per_actuator(model, "torque", "force", "torque and force"),
+           "effort": per_actuator(model.spec.actuators, "torque", "force", "torque and force"),
            "names": base.labels(),
            "coverage": np.mean([r["covered"] for r in runs], axis=0),
            "large_inertial": runs[0]["large"]}

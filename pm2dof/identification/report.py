@@ -72,8 +72,8 @@ def recorded_plant(model, log):
 
     ``identify excite`` records it in the log's header (``plant_theta``, ``plant_sha256``:
     :func:`pm2dof.identification.excitation.plant_entries`), so that a later edit of the model
-    file's [plant] does not change the truth of a log already written. A log simulated with
-    [plant] before the header recorded it falls back to today's [plant], and says so.
+    file's [plant] does not change the truth of a log already written. A simulated log that
+    does not record its plant (written by an older pm2dof) is refused.
 
     Parameters
     ----------
@@ -87,7 +87,8 @@ def recorded_plant(model, log):
     Raises
     ------
     LogError
-        A ``plant_theta`` that does not list the model's parameters with finite values.
+        A ``plant_theta`` that does not list the model's parameters with finite values; a
+        simulated log without ``plant_theta``.
     """
     from .excitation import plant_sha256
     meta = log.meta
@@ -101,11 +102,10 @@ def recorded_plant(model, log):
                 if changed else None)
         return RecordedPlant(theta, "as its header records it (plant_theta)", changed, line)
     if with_plant:
-        return RecordedPlant(theta_truth(model), "taken as today's [plant] of the model file",
-                             None,
-                             "this log does not record its plant (plant_theta; written by an "
-                             "older pm2dof): the truth column is today's [plant], which may "
-                             "have changed since the log was written")
+        raise LogError(f"{log.source}: a log of the simulated plant that does not record it "
+                       f"(plant_theta, plant_sha256): written by an older pm2dof, whose log "
+                       f"format this version does not read; write it again with `pm2dof "
+                       f"identify excite`")
     return RecordedPlant(None, None, None, None)
 
 

@@ -31,7 +31,7 @@ from ..core.errors import ArgumentError, InputFileError
 from ..core.task import orientation_length
 from ..core.validate import Problems, entry
 from .base import region_center
-from .model_ref import mismatch, model_entries
+from .model_ref import ENTRIES, incomplete, mismatch, model_entries
 
 __all__ = ["ExcitationError", "Signal", "FourierExcitation", "MultiSine", "multisine",
            "trajectory_of", "load_excitation", "write_excitation", "DEFAULT_DURATION",
@@ -242,7 +242,6 @@ def write_excitation(path, exc, model):
     return path
 
 
-_MODEL_KEYS = ("model", "model_name", "formulation_sha256")
 #: the task axes of an excitation file's series (``Model.task_names`` of a point and a platform)
 AXES = ("x", "y", "phi")
 
@@ -269,9 +268,8 @@ def load_excitation(path, model=None):
     ----------
     path : str or Path
     model : Model, optional
-        Check that the file was made for this model (:func:`.model_ref.mismatch`: by name and,
-        if recorded, formulation hash; files that name their model by name only are checked
-        by name).
+        Check that the file was made for this model (:func:`.model_ref.mismatch`: by name and
+        formulation hash; a file that records no model is taken as this model's).
 
     Returns
     -------
@@ -294,10 +292,12 @@ def load_excitation(path, model=None):
     # a platform's file has a phi series too (a_phi, b_phi); a point's, x and y only
     m = 3 if {"a_phi", "b_phi"} & set(e) else 2
     coefficient_keys = _coefficient_keys(m)
-    pr.keys("excitation", e, {*_MODEL_KEYS, "base_hz", "periods", "center", *_coefficient_keys(3)},
+    pr.keys("excitation", e, {*ENTRIES, "base_hz", "periods", "center", *_coefficient_keys(3)},
             ("base_hz", "periods", "center", *coefficient_keys))
-    entries = {k: pr.text(f"excitation.{k}", e[k], nonempty=True) for k in _MODEL_KEYS
-               if k in e}
+    entries = {k: pr.text(f"excitation.{k}", e[k], nonempty=True) for k in ENTRIES if k in e}
+    old = incomplete(entries, "[excitation]")
+    if old is not None:
+        pr.add(None, old)
     f0 = pr.number("excitation.base_hz", e["base_hz"], low=0.0, low_ok=False) \
         if "base_hz" in e else None
     periods = pr.number("excitation.periods", e["periods"], integer=True, low=1) \

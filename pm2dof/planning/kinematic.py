@@ -102,8 +102,8 @@ def plan_kinematic(path, v_max, a_max, j_max, period=0.002):
     xd_dot = dp * sd[:, None] + 0.0
     xd_ddot = dp * sdd[:, None] + ddp * (sd * sd)[:, None] + 0.0
     traj = Trajectory(t, p, xd_dot, xd_ddot, period)
-    return Plan(path=path, method="kinematic", split=None, duration=float(prof.duration), s=s,
-                sdot=sd, sddot=sdd, t=t, max_velocity=np.full(len(t), parts[0].v_max),
+    return Plan(path=path, method="kinematic", split=None,
+                max_velocity=np.full(len(t), parts[0].v_max),
                 tau=None, tau_peak=None, tau_max=None, margin=1.0, trajectory=traj, profile=prof,
                 compute_time_s=time.perf_counter() - t0,
                 info={"v_max": parts[0].v_max, "a_max": parts[0].a_max,

@@ -260,12 +260,12 @@ def model_move_path(model, name):
 
     Parameters
     ----------
-    model : Model or pm2dof.core.model_file.ModelSpec
+    model : Model
         The model whose file holds the move (its ``spec`` is read).
     name : str
         The move's name, a key of the model file's ``[trajectories]``.
     """
-    spec = getattr(model, "spec", model)
+    spec = model.spec
     moves = spec.trajectories
     if name not in moves:
         raise PlanError(f"no move {name!r} in [trajectories] of {spec.path}; have "
@@ -273,11 +273,11 @@ def model_move_path(model, name):
     mv = moves[name]
     lim = {k: float(mv[k]) for k in ("v_max", "a_max", "j_max") if k in mv}
     if "path" not in mv:
-        ell = model_orientation_length(spec)
+        ell = model_orientation_length(model)
         line = TaskPath.line(mv["start"], mv["end"], ell)   # (x, y[, phi])
         return NamedPath(name, line, lim, None)
     f = read_path_file(mv["path"], relative_to=Path(spec.path).parent,
-                       orientation_length=model_orientation_length(spec))
+                       orientation_length=model_orientation_length(model))
     kin = lim if len(lim) == 3 else ({**(f.kinematic or {}), **lim} or None)
     if kin is not None and len(kin) != 3:
         raise PlanError(f"{spec.path}: [trajectories.{name}] gives {sorted(lim)} and its path "

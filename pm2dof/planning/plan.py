@@ -9,6 +9,7 @@ path acceleration s_dd on each interval (s_d^2 rises linearly in s):
 :func:`sample` turns it into a :class:`pm2dof.Trajectory` at the controller's period:
 xd = p(s), xd_dot = p' s_d, xd_ddot = p' s_dd + p'' s_d^2.
 """
+import functools
 import math
 from dataclasses import dataclass, field
 
@@ -53,6 +54,12 @@ class PathProfile:
     sdot: np.ndarray = field(repr=False)
     sddot: np.ndarray = field(repr=False)
     t: np.ndarray = field(repr=False)
+
+    def __post_init__(self):                     # read-only float64 copies
+        for name in ("s", "sdot", "sddot", "t"):
+            a = np.array(getattr(self, name), dtype=float)
+            a.setflags(write=False)
+            object.__setattr__(self, name, a)
 
     @property
     def duration(self):
@@ -113,9 +120,11 @@ class Plan:
         "min_norm" or "min_max": the torque split whose limits the plan respects (None for a
         kinematic plan, which knows no model).
     duration : float
-        Time to traverse the path, s.
+        Time to traverse the path, s (read-only: ``profile.duration``).
     s, sdot, sddot, t : ndarray (K,)
-        The profile on its grid (see :class:`PathProfile`): m, m/s, m/s^2, s.
+        The profile on its grid (read-only): m, m/s, m/s^2, s. A time-optimal or smooth plan's
+        are its :class:`PathProfile`'s own arrays; the kinematic plan's, its S-curve at the
+        trajectory's samples (``profile.evaluate(trajectory.t)``, ``t`` = ``trajectory.t``).
     max_velocity : ndarray (K,)
         The maximum-velocity curve: the largest s_d (m/s) at which some s_dd keeps every torque
         within the limits (the kinematic plan: v_max). 0 at a point where only rest is feasible.
@@ -151,11 +160,6 @@ class Plan:
     path: object = field(repr=False)
     method: str
     split: object
-    duration: float
-    s: np.ndarray = field(repr=False)
-    sdot: np.ndarray = field(repr=False)
-    sddot: np.ndarray = field(repr=False)
-    t: np.ndarray = field(repr=False)
     max_velocity: np.ndarray = field(repr=False)
     tau: object = field(repr=False)
     tau_peak: object
@@ -163,11 +167,11 @@ class Plan:
     margin: float
     trajectory: Trajectory = field(repr=False)
     compute_time_s: float
+    profile: object = field(repr=False)
     info: dict = field(repr=False, default_factory=dict)
-    profile: object = field(repr=False, default=None)
 
     def __post_init__(self):
-        for name in ("s", "sdot", "sddot", "t", "max_velocity", "tau", "tau_peak", "tau_max"):
+        for name in ("max_velocity", "tau", "tau_peak", "tau_max"):
             v = getattr(self, name)
             if v is None:
                 continue
@@ -176,3 +180,29 @@ class Plan:
                 raise PlanError(f"Plan.{name} has non-finite values")   # never handed out
             a.setflags(write=False)
             object.__setattr__(self, name, a)
+        for name, a in zip(("s", "sdot", "sddot", "t"), self._grid):
+            if not np.isfinite(a).all():
+                raise PlanError(f"Plan.{name} has non-finite values")
+
+    @functools.cached_property
+    def _grid(self):
+        """(s, sdot, sddot, t), read-only: a PathProfile's own arrays, an S-curve's (the
+        kinematic plan) at the trajectory's samples."""
+        if isinstance(self.profile, PathProfile):
+            return self.profile.s, self.profile.sdot, self.profile.sddot, self.profile.t
+        t = self.trajectory.t
+        out = (*self.profile.evaluate(t)[:3], t)     # an SCurve's evaluate adds the jerk
+        for a in out:
+            a.setflags(write=False)
+        return out
+
+    s = property(lambda self: self._grid[0], doc="Arc length at the grid points, m (K,).")
+    sdot = property(lambda self: self._grid[1], doc="Path speed at the grid points, m/s (K,).")
+    sddot = property(lambda self: self._grid[2],
+                     doc="Path acceleration on each grid interval, m/s^2 (K,).")
+    t = property(lambda self: self._grid[3], doc="Time at the grid points, s (K,).")
+
+    @property
+    def duration(self):
+        """Time to traverse the path, s."""
+        return float(self.profile.duration)

@@ -128,14 +128,14 @@ def format_report(res, unit=None):
                             for sp, ok in k["within_limits"].items())
             lines.append(f"  kinematic S-curve ({k['v_max']:g} m/s, {k['a_max']:g} m/s^2, "
                          f"{k['j_max']:g} m/s^3): {k['duration_s']:.4f} s; peak |tau| "
-                         f"{_efforts(_peak(k)['min_norm'], units)} min-norm ({lim})")
+                         f"{_efforts(k['tau_peak']['min_norm'], units)} min-norm ({lim})")
         for split in ("min_norm", "min_max"):
             r = row.get(split)
             if r and "infeasible" in r:
                 lines.append(f"  time-optimal, {split:8s}: infeasible: {r['infeasible']}")
             elif r:
                 lines.append(f"  time-optimal, {split:8s}: {r['duration_s']:.4f} s (peak |tau| "
-                             f"{_efforts(_peak(r), units)}, top speed "
+                             f"{_efforts(r['tau_peak'], units)}, top speed "
                              f"{r['max_speed_m_s']:.3f} m/s; {r['compute_ms']:.1f} ms, "
                              f"{r['grid']} grid points)")
         if "saving_min_max_percent" in row:
@@ -158,11 +158,8 @@ def format_report(res, unit=None):
                 lines.append(f"  margin {r['margin']:.2f} ({r['duration_s']:.4f} s) "
                              f"{law.upper():3s}: RMSE {c['rmse_m']:.3e} m, max error "
                              f"{c['max_error_m']:.3e} m, peak |tau| "
-                             f"{_efforts(_peak(c), units)}, {c['saturated']} saturated "
+                             f"{_efforts(c['tau_peak'], units)}, {c['saturated']} saturated "
                              f"samples, {c['outcome']}")
     return "\n".join(lines)
 
 
-def _peak(row):
-    """A row's peak efforts: ``tau_peak``, or ``tau_peak_N_m`` in results written before it."""
-    return row["tau_peak"] if "tau_peak" in row else row["tau_peak_N_m"]

@@ -52,7 +52,7 @@ def _friction(problem, stage, speeds):
 
 def _rate_unit(model):
     """The unit of the actuators' effort rates, for messages: N m/s, N/s (linear actuators)."""
-    return per_actuator(model, "N m/s", "N/s", "N m/s or N/s")
+    return per_actuator(model.spec.actuators, "N m/s", "N/s", "N m/s or N/s")
 
 
 def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1.0, grid=200,
@@ -202,9 +202,8 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     tau_v = np.asarray(sol.value(tau), dtype=float).reshape(K, n)
     profile = PathProfile(s, sdot, sdd, t)
     traj = sample(path, profile, model.spec.sensing["sample_period"])
-    return Plan(path=path, method="smooth", split=split, duration=float(t[-1]), s=s, sdot=sdot,
-                sddot=sdd, t=t, max_velocity=strict.max_velocity, tau=tau_v,
-                tau_peak=np.abs(tau_v).max(axis=0), tau_max=tau_lim, margin=float(margin),
+    return Plan(path=path, method="smooth", split=split, max_velocity=strict.max_velocity,
+                tau=tau_v, tau_peak=np.abs(tau_v).max(axis=0), tau_max=tau_lim, margin=float(margin),
                 trajectory=traj, profile=profile, compute_time_s=time.perf_counter() - t0,
                 info={"grid": K, "theta": th.tolist(), "strict_duration": strict.duration,
                       "tau_max_actuators": strict.info["tau_max_actuators"],

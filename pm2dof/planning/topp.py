@@ -218,8 +218,7 @@ def _plan(model, path, tau_max, split, theta, margin, grid, given):
     model.function("path_torques").map(K, g.stage, sdot, sdd_pt, prm, tau, *outs)
     tau_grid = outs[1] if split == "min_norm" else outs[2]
     stops = g.stops()
-    return Plan(path=path, method="time_optimal", split=split, duration=profile.duration, s=s,
-                sdot=sdot, sddot=sdd, t=profile.t,
+    return Plan(path=path, method="time_optimal", split=split,
                 max_velocity=np.sqrt(np.maximum(x_mvc, 0.0)), tau=tau_grid,
                 tau_peak=np.abs(tau_grid).max(axis=0), tau_max=problem.tau_max,
                 margin=float(margin),

@@ -44,7 +44,7 @@ def path_torques(model, path, s, sd, sdd, theta=None, tau_max=None):
     model.function("StF").map(K, q, v, th, F, None)
     u = np.einsum("kij,kj->ki", Me.reshape(K, m, m), acc) \
         + np.einsum("kij,kj->ki", Ce.reshape(K, m, m), v * (sd > 0)[:, None]) + F
-    if getattr(model.spec, "has_gravity", False):       # eq. 10's gravity term (issue 26)
+    if model.spec.has_gravity:                          # eq. 10's gravity term
         G = np.empty((K, m))
         model.function("Ge").map(K, q, th, G, None)
         u += G

@@ -153,12 +153,11 @@ class Geometry:
 
     @classmethod
     def of_model(cls, model: Any) -> "Geometry":
-        """The geometry of a :class:`pm2dof.Model` (or its spec). This formulation is of RR
-        legs meeting at a point (eqs. 1-13 as the paper writes them): any other mechanism
-        (prismatic legs, a platform) raises
-        :class:`~pm2dof.core.errors.UnsupportedMechanismError` saying so."""
+        """The geometry of a :class:`pm2dof.Model`. This formulation is of RR legs meeting at a
+        point (eqs. 1-13 as the paper writes them): any other mechanism (prismatic legs, a
+        platform) raises :class:`~pm2dof.core.errors.UnsupportedMechanismError` saying so."""
         require_rr_point(model, "the Python reference formulation (pm2dof.reference)")
-        spec = getattr(model, "spec", model)
+        spec = model.spec
         legs = spec.legs
         return cls(bases=spec.bases, la=[leg.la for leg in legs], lb=[leg.lb for leg in legs],
                    elbow=[leg.elbow for leg in legs], fk_branch=spec.fk_branch)

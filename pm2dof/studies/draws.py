@@ -11,7 +11,7 @@ import functools
 import numpy as np
 
 from ..control.plant import plant_truth
-from ..core.model_file import INERTIAL
+from ..core.mechanism import INERTIAL
 
 __all__ = ["sample_draw", "draw_columns", "plant_of"]
 

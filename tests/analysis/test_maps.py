@@ -16,6 +16,8 @@ from pm2dof.analysis.maps import (
 )
 from pm2dof.cli import main
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 
 def _radial(S, w, d):
     """LP (HiGHS): the largest t with t d = S^T tau, |tau_i| <= w_i -- the zonotope's radial

@@ -6,6 +6,8 @@ from scipy.optimize import linprog
 import pm2dof
 from pm2dof.analysis.maps import capability, maps_summary, workspace_maps, zonotope_inradius
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 DIRS = np.linspace(0, 2 * np.pi, 3600, endpoint=False)        # 0.1 deg
 COARSE = np.linspace(0, 2 * np.pi, 72, endpoint=False)        # 5 deg
 

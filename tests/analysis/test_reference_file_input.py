@@ -10,6 +10,8 @@ import pm2dof
 from pm2dof.analysis.reference_file import ReferenceFileError, read_trajectory, simulate_reference
 from pm2dof.control.simulate import moving_start
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 KINDS = ["rrr4_platform", "prr3_platform", "shang2010_vertical"]   # platform, linear, gravity
 
 

@@ -10,6 +10,8 @@ import pytest
 from pm2dof import bench, load_model
 from pm2dof.bench import baselines
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 
 @pytest.fixture(scope="module")
 def model():

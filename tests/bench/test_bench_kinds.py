@@ -19,6 +19,8 @@ import pytest
 
 from pm2dof import bench, cli, load_model
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 #: model -> the required keys that are n/a on it (each with a note)
 MODELS = {
     "rrr3_platform": {"na_step_numpy_us", "na_step_lambdify_us"},

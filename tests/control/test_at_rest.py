@@ -18,6 +18,8 @@ import pytest
 import pm2dof
 from pm2dof.linear.lqr import LQRController
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 SPLITS = ("min_norm", "min_max", "preload")
 HOLD_S = 0.6          # s: long enough for the old bias to settle at its offset (~0.1 s)
 
@@ -92,7 +94,7 @@ def test_preload_split_at_rest_commands_only_the_preload(model, sample_xe):
 def test_simulated_hold_stays_within_one_encoder_count(model, law):
     counts = model.spec.sensing["encoder_counts_per_rev"]
     assert counts > 0, f"{model.name}: the hold test needs quantised encoders"
-    kinds = [getattr(leg, "kind", "RRR") for leg in model.spec.legs]
+    kinds = [leg.kind for leg in model.spec.legs]
     count = np.array([2 * np.pi / counts if k == "RRR"         # rad at a revolute actuator
                       else model.spec.sensing["linear_encoder_resolution"]   # m at a linear one
                       for k in kinds])

@@ -46,6 +46,8 @@ from pm2dof.core.layout import Layout
 from pm2dof.reference import control as rc
 from pm2dof.reference import model as ref
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 G = ref.Geometry.paper()
 N_LEGS = 3
 _OBSERVED: dict = {}

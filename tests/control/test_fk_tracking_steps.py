@@ -21,6 +21,8 @@ from pm2dof.derive.kinematics import FK_NEWTON_STEPS, FK_NEWTON_TOL, FK_TRACKING
 from pm2dof.derive.symbols import Symbols
 from tests import derivations
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 PLATFORMS = sorted(s.name for s in (read_model_file(p) for p in SHIPPED_MODELS.glob("*.toml"))
                    if s.end_effector == "platform")
 MARGIN = 2          # steps left over at the worst sample

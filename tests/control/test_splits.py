@@ -18,6 +18,8 @@ from scipy.optimize import linprog, lsq_linear, minimize
 import pm2dof
 from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 MODELS = ("shang2010", "unequal", "fourleg")
 HIGHS = dict(primal_feasibility_tolerance=1e-10, dual_feasibility_tolerance=1e-10)
 

@@ -34,6 +34,8 @@ from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.core.task import orientation_length, require_rr_point, task_vector
 from pm2dof.planning import TaskPath
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 DATA = Path(__file__).parent / "data"
 SHIPPED = sorted(p.stem for p in SHIPPED_MODELS.glob("*.toml"))
 
@@ -115,13 +117,14 @@ def test_what_needs_rr_legs_at_a_point_refuses_other_mechanisms_saying_why(m):
                        match=r"the Python reference formulation \(pm2dof.reference\) covers RRR "
                              r"legs meeting at a point only .* model 'toy' has 3 RRR legs at a "
                              r"moving platform"):
-        Geometry.of_model(spec)
+        Geometry.of_model(SimpleNamespace(spec=spec))
     prr = SimpleNamespace(name="prr", n_legs=2, end_effector="point",
                           legs=(SimpleNamespace(kind="PRR"), SimpleNamespace(kind="RRR")))
     with pytest.raises(UnsupportedMechanismError, match="2 PRR/RRR legs at a point"):
-        require_rr_point(prr, "x")
+        require_rr_point(SimpleNamespace(spec=prr), "x")
     assert Geometry.of_model(m).n == 3 and require_rr_point(m, "x") is m
-    assert orientation_length(spec) == pytest.approx(0.05) and orientation_length(m) is None
+    assert orientation_length(SimpleNamespace(spec=spec)) == pytest.approx(0.05)
+    assert orientation_length(m) is None
 
 
 def test_a_path_with_phi_has_a_unit_tangent_in_the_metric_and_consistent_derivatives():

@@ -24,6 +24,8 @@ from pm2dof.core.model_file import read_model_file
 from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
 from tests import derivations
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 PAPER = SHIPPED_MODELS / "shang2010.toml"
 PM2DOF = [sys.executable, "-m", "pm2dof"]
 

@@ -53,8 +53,10 @@ import numpy as np
 import pytest
 
 import pm2dof
-from pm2dof.core.model_file import PLATFORM_PARAMS
+from pm2dof.core.mechanism import PLATFORM_PARAMS
 from pm2dof.reference import model as ref
+
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
 
 # --------------------------------------------------------------------------------------
 # Constants, helpers

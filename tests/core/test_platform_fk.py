@@ -1,6 +1,5 @@
 # A platform's fk (Gauss-Newton from [platform] home) returns a pose in the model's working modes
 # of the legs, or refuses with WorkspaceError: it returned another assembly silently before.
-import types
 
 import numpy as np
 import pytest
@@ -123,6 +122,6 @@ def test_mixed_actuators_name_each_unit_with_its_legs():
     from pm2dof.core.task import active_coordinates
     rrr = Leg(base=(0.0, 0.0), la=0.2, lb=0.2, elbow=1)
     rpr = Leg(base=(0.0, 0.0), la=None, lb=None, elbow=None, kind="RPR", stroke=(0.1, 0.4))
-    spec = types.SimpleNamespace(legs=(rrr, rrr, rpr))
-    assert active_coordinates(spec, [0.1, 0.2, 0.3]) == \
+    actuators = tuple(leg.actuator for leg in (rrr, rrr, rpr))
+    assert active_coordinates(actuators, [0.1, 0.2, 0.3]) == \
         "[0.1, 0.2, 0.3] (rad for legs 1, 2; m for leg 3)"

@@ -15,6 +15,8 @@ from pm2dof.bench.baselines import random_cases, reference_geometry
 from pm2dof.linear import LQRController, lqr_gains
 from pm2dof.reference import control as rc
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 MODELS = ("shang2010", "fourleg", "fivebar")
 
 

@@ -25,6 +25,8 @@ import pytest
 import pm2dof
 from tests import derivations
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 DPS = 50
 STEP = 1e-15   # central differences: h = STEP max(1, |x_j|)
 TOL = 1e-10

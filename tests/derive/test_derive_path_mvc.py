@@ -27,6 +27,8 @@ from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import grid_points, limits, params, stages
 from tests import derivations
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 HALVINGS = 44
 
 

@@ -48,6 +48,8 @@ from pm2dof.core.model_file import read_model_file
 from pm2dof.core.paths import PACKAGE, SHIPPED_GENERATED, SHIPPED_MODELS
 from tests import derivations
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 TOL = 1e-12
 DPS = 30
 N_POSES_PAPER = 6

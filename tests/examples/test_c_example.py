@@ -20,6 +20,8 @@ import pytest
 
 import pm2dof
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "c"
 
 

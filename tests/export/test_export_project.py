@@ -22,6 +22,8 @@ from pm2dof.export import ExportError, export_project
 from pm2dof.export.single import to_single
 from tests.export.c_guards import check_guard_output, rule_driver
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 needs_cmake = pytest.mark.skipif(shutil.which("cmake") is None or shutil.which("cc") is None,
                                  reason="needs cmake and a C compiler")
 

@@ -25,6 +25,8 @@ from pm2dof.core.paths import SHIPPED_GENERATED, SHIPPED_MODELS
 from pm2dof.identification.log import IdentLog, read_log, write_log
 from pm2dof.identification.signals import load_excitation, write_excitation
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
 
 NO_SUBCOMMAND = ("pm2dof identify needs a sub-command: report, excite, fit, design or "
@@ -52,11 +54,14 @@ def test_every_sub_command_has_its_help_model_options_and_an_example(sub, capsys
     assert args.identify_command == sub
 
 
-def test_model_before_the_sub_command_is_the_same_as_after(capsys):
-    assert cli.main(["identify", "--model", "fivebar", "report"]) == 0
+def test_the_sub_commands_take_the_model_and_identify_itself_does_not(capsys):
+    assert cli.main(["identify", "report", "--model", "fivebar"]) == 0
     assert "rank 9 of 10" in capsys.readouterr().out
-    assert cli.main(["identify", "--model", "fivebar", "report", "--model", "shang2010"]) == 2
-    assert "--model given twice" in capsys.readouterr().err
+    for flag, value in (("--model", "fivebar"), ("--generated", "gen")):
+        with pytest.raises(SystemExit) as info:
+            cli.main(["identify", flag, value, "report"])
+        assert info.value.code == 2
+        assert "invalid choice" in capsys.readouterr().err
 
 
 def test_plain_fit_is_the_fit_of_the_same_log_written_to_a_file(tmp_path, capsys):
@@ -154,20 +159,40 @@ def test_a_log_written_elsewhere_is_rebased(project, tmp_path, capsys):
     assert mem.meta["model"] == str(project / "robots" / "myshang.toml")
 
 
-def test_old_logs_that_name_their_model_by_name(tmp_path, capsys):
-    """Logs written before pm2dof 0.3: `model` is a name. A shipped one is found; another is
-    refused without --model, and checked by name with it."""
+def test_logs_of_before_0_3_that_name_their_model_by_name_alone_are_refused(tmp_path, capsys):
+    """Logs written before pm2dof 0.3 recorded `model` (a name) alone: refused with or without
+    --model, naming what is missing and what to do (docs/log-format.md); the same log with no
+    model entries is a log of the model --model names."""
     m = pm2dof.load_model()
     q = np.array([m.ik(x) for x in pm2dof.paper_move("low").xd])
+    for name in ("myrobot", "shang2010"):
+        log = IdentLog(t=np.arange(len(q)) * 0.002, qa=q[:, :3], tau=np.zeros((len(q), 3)),
+                       meta={"model": name})
+        path = write_log(tmp_path / "old.csv", log)
+        for extra in ((), ("--model", "shang2010")):
+            code, err = _fit(path, capsys, *extra)
+            assert code == 2 and err == (
+                f"pm2dof: error: {path} records its model by model without model_name, "
+                f"formulation_sha256: a file of pm2dof before 0.3, whose format this version "
+                f"does not read (it reads files that record all of model, model_name, "
+                f"formulation_sha256, or none). Write it again with this pm2dof, or remove its "
+                f"model and give --model\n"), (name, extra, err)
+
+
+def test_a_log_naming_a_model_that_cannot_be_found_is_refused(tmp_path, capsys):
+    m = pm2dof.load_model()
+    q = np.array([m.ik(x) for x in pm2dof.paper_move("low").xd])
+    meta = {"model": "myrobot", "model_name": "myrobot", "formulation_sha256": "ab" * 32}
     log = IdentLog(t=np.arange(len(q)) * 0.002, qa=q[:, :3], tau=np.zeros((len(q), 3)),
-                   meta={"model": "myrobot"})
-    path = write_log(tmp_path / "old.csv", log)
+                   meta=meta)
+    path = write_log(tmp_path / "lost.csv", log)
     code, err = _fit(path, capsys)
-    assert code == 2 and err == (f"pm2dof: error: {path} names its model 'myrobot' by name "
-                                 f"only, and that is not a shipped model: pass --model with its "
-                                 f"model file\n")
+    assert code == 2 and err == (f"pm2dof: error: {path} names its model 'myrobot', which is "
+                                 f"neither a shipped model nor a model file relative to it: "
+                                 f"pass --model with its model file\n")
     code, err = _fit(path, capsys, "--model", "shang2010")
-    assert code == 2 and "was written for model 'myrobot' (model myrobot), not 'shang2010'" in err
+    assert code == 2 and ("was written for model 'myrobot' (model myrobot, formulation "
+                          "abababababab), not 'shang2010'") in err
 
 
 def test_importing_identification_loads_no_heavy_library():

@@ -26,6 +26,8 @@ from pm2dof.identification.log import log_poses, write_log
 from pm2dof.identification.monte_carlo import TARGETS, format_monte_carlo, monte_carlo
 from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 EXCITATION = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
 
 

@@ -33,6 +33,8 @@ from pm2dof.identification.signals import (
 )
 from pm2dof.infra.progress import Progress
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 LIMITS = {"v_max": 0.4, "a_max": 6.0, "tau_fraction": 0.3}
 SMALL = dict(base_hz=0.5, harmonics=4, periods=1, samples=80, constraint_samples=200, **LIMITS)
 SHIPPED = Path(__file__).resolve().parents[2] / "examples" / "excitation_shang2010.toml"
@@ -159,14 +161,19 @@ def test_file_round_trip_and_bad_files(tmp_path, m, designed):
     with pytest.raises(ExcitationError, match=r"written for model 'fivebar' \(model fivebar, "
                                               r"formulation [0-9a-f]{12}\), not 'shang2010'"):
         load_excitation(bad, m)
-    # a file of before pm2dof 0.3 names its model by name only: still read, and checked
+    # a file of before pm2dof 0.3 names its model by name alone: refused, with a model or not
     old = "\n".join(l for l in text.splitlines() if not l.startswith(("model_name",
                                                                        "formulation_sha256")))
     bad.write_text(old)
-    assert load_excitation(bad, m).model == {"model": "shang2010"}
-    bad.write_text(old.replace('model = "shang2010"', 'model = "fivebar"'))
-    with pytest.raises(ExcitationError, match=r"written for model 'fivebar'.*not 'shang2010'"):
-        load_excitation(bad, m)
+    for model in (m, None):
+        with pytest.raises(ExcitationError, match=r"records its model by model without "
+                                                  r"model_name, formulation_sha256: a file of "
+                                                  r"pm2dof before 0.3"):
+            load_excitation(bad, model)
+    # with no model entries at all: a file of the model the caller gives
+    none = "\n".join(l for l in old.splitlines() if not l.startswith("model ="))
+    bad.write_text(none)
+    assert load_excitation(bad, m).model == {}
     bad.write_text("\n".join(l for l in text.splitlines() if not l.startswith("b_y")))
     with pytest.raises(ExcitationError, match=r"\[excitation.b_y\] missing \(required\)"):
         load_excitation(bad, m)

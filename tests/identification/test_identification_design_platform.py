@@ -24,6 +24,8 @@ from pm2dof.identification.signals import (
     write_excitation,
 )
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 # one 1 s period of 3 harmonics of 1 Hz, run twice (2 s); the (x, y) limits the defaults
 SMALL = dict(base_hz=1.0, harmonics=3, periods=2, samples=40, constraint_samples=100,
              tau_fraction=0.3)

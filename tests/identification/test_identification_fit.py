@@ -33,6 +33,8 @@ from pm2dof.identification.fit import Identification, identify_log, lowpass, wei
 from pm2dof.identification.log import IdentLog, LogError, read_log
 from pm2dof.identification.signals import load_excitation, multisine, trajectory_of
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 
 @pytest.fixture(scope="module")
 def m():

@@ -24,6 +24,8 @@ from pm2dof.identification.excitation import excite
 from pm2dof.identification.fit import identify_log
 from pm2dof.identification.signals import multisine
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 #: theta's units by key and leg kind, as docs/model-file.md's [nominal] table gives them
 DOC_UNITS = {"alpha": {"RRR": "kg m^2", "PRR": "kg", "RPR": "kg"},
              "beta": {"RRR": "kg m^2", "PRR": "kg m", "RPR": "kg m"},
@@ -124,14 +126,15 @@ def test_truth_is_the_plant_that_wrote_the_log(my_prr, tmp_path, capsys):
     assert after["plant_changed_since_log"] is True and after["truth"] == before["truth"]
 
 
-@pytest.mark.parametrize("name", ["shang2010_vertical", "rrr4_platform"])
+@pytest.mark.parametrize("name", ["shang2010_vertical", "rrr4_platform", "prr_point"])
 def test_the_log_records_its_plant_bit_for_bit(name, tmp_path):
     """The header's plant_theta reads back as theta_truth of the plant that ran, exactly (a
-    gravity model's kappa, a platform's m_p with the payload); a given truth is recorded as
-    given."""
+    gravity model's kappa, a platform's m_p with the payload, linear actuators); a given truth
+    is recorded as given. A simulated log without it (an older pm2dof's) is refused: it was
+    read with today's [plant] as its truth."""
     from pm2dof.control.plant import plant_truth, theta_truth
     from pm2dof.identification.log import read_log, write_log
-    from pm2dof.identification.report import recorded_plant
+    from pm2dof.identification.report import SIMULATED_SOURCE, recorded_plant
     m = _model(name)
     truth = plant_truth(m, payload_mass=0.123)
     log = excite(m, multisine(m, duration=0.5), truth=truth)
@@ -142,6 +145,13 @@ def test_the_log_records_its_plant_bit_for_bit(name, tmp_path):
     bad = dataclasses.replace(back, meta={**back.meta, "plant_theta": "alpha1=x"})
     with pytest.raises(pm2dof.LogError, match="plant_theta must be name=value"):
         recorded_plant(m, bad)
+    old = dataclasses.replace(back, meta={**{k: v for k, v in back.meta.items()
+                                             if k not in ("plant_theta", "plant_sha256")},
+                                          "source": SIMULATED_SOURCE})
+    with pytest.raises(pm2dof.LogError, match=r"run.csv: a log of the simulated plant that "
+                                              r"does not record it \(plant_theta, plant_sha256\)"
+                                              r": written by an older pm2dof"):
+        recorded_plant(m, old)
 
 
 # --- units, wording and what a platform user sees -------------------------------------------

@@ -4,6 +4,7 @@ import pytest
 
 import pm2dof
 from pm2dof.identification.log import MIN_ROWS, IdentLog, LogError, log_poses, read_log, write_log
+from pm2dof.identification.model_ref import model_entries
 from pm2dof.identification.signals import multisine, trajectory_of
 
 
@@ -19,7 +20,7 @@ def good(m):
     q = np.array([m.ik(x) for x in ex.xd])
     rng = np.random.default_rng(0)
     return IdentLog(t=ex.t, qa=q[:, :3], tau=rng.normal(0, 2, (len(ex.t), 3)), qb=q[:, 3:],
-                    meta={"model": m.name, "sample_period": ex.period})
+                    meta={**model_entries(m), "sample_period": ex.period})
 
 
 def _csv(tmp_path, log, edit=None):
@@ -137,20 +138,25 @@ def test_another_leg_count_is_refused(tmp_path, m, good):
 
 
 def test_another_model_is_refused_by_name_or_formulation(m, good):
-    # a log of before pm2dof 0.3: the model by name only
-    other = IdentLog(t=good.t, qa=good.qa, tau=good.tau, meta={"model": "myrobot"})
-    with pytest.raises(LogError, match=r"written for model 'myrobot' \(model myrobot\), not "
-                                       r"'shang2010' \(.*shang2010.toml, formulation "):
+    # another model by name
+    meta = {"model": "myrobot", "model_name": "myrobot", "formulation_sha256": "ab" * 32}
+    other = IdentLog(t=good.t, qa=good.qa, tau=good.tau, meta=meta)
+    with pytest.raises(LogError, match=r"written for model 'myrobot' \(model myrobot, "
+                                       r"formulation abababababab\), not 'shang2010' "
+                                       r"\(.*shang2010.toml, formulation "):
         log_poses(m, other)
     # the same name, another formulation (e.g. a leg length changed after the log was written)
     meta = {"model": "shang2010", "model_name": "shang2010", "formulation_sha256": "ab" * 32}
     with pytest.raises(LogError, match=r"written for model 'shang2010' \(model shang2010, "
                                        r"formulation abababababab\), not 'shang2010'"):
         log_poses(m, IdentLog(t=good.t, qa=good.qa, tau=good.tau, meta=meta))
-    # a shipped model's name resolves to its file: its formulation is compared too
-    with pytest.raises(LogError, match=r"written for model 'fivebar' \(model fivebar, "
-                                       r"formulation [0-9a-f]{12}\)"):
-        log_poses(m, IdentLog(t=good.t, qa=good.qa, tau=good.tau, meta={"model": "fivebar"}))
+    # a log of before pm2dof 0.3 named its model by `model` alone: refused, even its own
+    for meta in ({"model": "shang2010"}, {"model": "fivebar"},
+                 {"model_name": "shang2010", "formulation_sha256": m.spec.formulation_sha256}):
+        with pytest.raises(LogError, match=r"records its model by .* without .*: a file of "
+                                           r"pm2dof before 0.3, whose format this version does "
+                                           r"not read"):
+            log_poses(m, IdentLog(t=good.t, qa=good.qa, tau=good.tau, meta=meta))
 
 
 def test_angles_outside_the_workspace_are_named(m, good):

@@ -11,6 +11,8 @@ import pytest
 from pm2dof.identification.base import base_parameters
 from pm2dof.identification.fit import stack_regressor
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 
 def _kind(name):
     return name.rstrip("0123456789")

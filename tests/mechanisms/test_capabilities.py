@@ -17,6 +17,8 @@ import pytest
 import pm2dof
 from pm2dof.core.errors import UnsupportedMechanismError
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 PAGE = (Path(__file__).resolve().parents[2] / "docs" / "mechanisms.md").read_text()
 NEW_MODELS = ("shang2010_vertical", "prr_point", "rrr3_platform", "rrr4_platform",
               "prr3_platform", "rpr3_platform")

@@ -16,7 +16,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from pm2dof.core.model_file import Leg, read_model_file, theta_groups
+from pm2dof.core.mechanism import theta_groups
+from pm2dof.core.model_file import Leg, read_model_file
 from pm2dof.derive.dynamics import Dynamics
 from pm2dof.derive.kinematics import FK_NEWTON_STEPS, Kinematics
 from pm2dof.derive.symbols import Symbols
@@ -24,6 +25,8 @@ from pm2dof.derive.to_casadi import Converter
 from tests import derivations
 from tests.mechanisms.independent import Mechanism, lumped_theta, random_links
 from tests.mechanisms.models import model_path
+
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
 
 G = (0.0, -9.81)
 _lambdify = derivations.plain_lambdify       # sympy.lambdify, the same functions, built faster
@@ -370,7 +373,7 @@ def test_platform_fk_converges_from_a_seed_within_5cm_and_0p2rad(name):
 def test_payload_booked_to_a_leg_is_a_point_mass_at_its_tip(name):
     """payload_increments: theta + the increments is the mechanism with a point mass at the tip
     (Me, Ce xed and the gravity term of the independent formulation)."""
-    from pm2dof.core.model_file import payload_increments
+    from pm2dof.core.mechanism import payload_increments
     s = Setup(name, seed=8)
     lam, spec = s.lam, s.lam.spec
     legs = _legs(spec)

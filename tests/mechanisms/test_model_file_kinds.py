@@ -10,6 +10,8 @@ from pm2dof.core.errors import ModelFileError
 from pm2dof.core.model_file import read_model_file
 from tests.mechanisms.models import model_path
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 NEW_MODELS = ["rrr3_platform", "rrr4_platform", "prr3_platform", "prr_point", "rpr3_platform",
               "shang2010_vertical"]
 

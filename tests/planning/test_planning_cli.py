@@ -10,6 +10,8 @@ from pm2dof.planning.pathfile import read_path_file, shipped_paths
 from pm2dof.planning.report import CSV_KEYS, csv_text
 from pm2dof.planning.topp import BETWEEN_TOL
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 
 def test_plan_the_model_moves_as_json(capsys):
     assert main(["plan", "--move", "high", "--tau-max", "6", "--grid", "300", "--json"]) == 0

@@ -12,6 +12,8 @@ from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import V_TOP, params, stages
 from pm2dof.planning.torques import path_torques
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 PAPER_LINE = ([0.22, 0.29], [0.27, 0.24])
 
 

@@ -20,6 +20,8 @@ from pm2dof.planning.jobs import run_plan, write_plan_csvs
 from pm2dof.planning.pathfile import read_path_file
 from pm2dof.planning.report import format_report
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 #: a 3-D path (x, y, phi): two lines with a stop at the corner, within reach of every platform
 PLATFORM_PATH = ('[[segments]]\nkind = "polyline"\n'
                  'points = [[0.0, 0.0, 0.0], [0.02, 0.01, 0.1], [0.0, 0.02, -0.05]]\n')

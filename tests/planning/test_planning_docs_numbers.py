@@ -12,6 +12,8 @@ import pm2dof
 from pm2dof.planning.jobs import closed_loop, plan_paths
 from pm2dof.planning.pathfile import NamedPath, read_path_file
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 PAGE = (Path(__file__).resolve().parents[2] / "docs" / "results-planning.md").read_text()
 FLAT = " ".join(PAGE.split())
 #: the table's rows, in order: (path, tau_max)

@@ -23,6 +23,8 @@ from pm2dof.planning.stages import V_TOP, grid_points, limits, params, stages
 from pm2dof.planning.topp import BETWEEN_TOL, RESOLUTION, solve_profile
 from pm2dof.planning.torques import plan_torques
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 PATHS = {"line": TaskPath.line([0.22, 0.29], [0.27, 0.24]),            # the paper's line
          "arc": TaskPath.arc([0.245, 0.265], 0.04, -0.5, 1.5),
          "pick_and_place": read_path_file("pick_and_place").path,

@@ -7,6 +7,8 @@ from pm2dof import TaskPath
 from pm2dof.control.trajectory import line_profile
 from pm2dof.planning import plan_kinematic, plan_smooth, plan_time_optimal
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 
 @pytest.mark.parametrize("speed", ["low", "high"])
 def test_kinematic_line_is_paper_move(speed):

@@ -20,6 +20,8 @@ import pm2dof
 from pm2dof.core.task import orientation_length
 from pm2dof.planning import watch
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 ROOT = Path(__file__).resolve().parents[2]
 
 

@@ -8,6 +8,8 @@ from pm2dof.bench.planning import ToppraPath, friction_free
 from pm2dof.planning import TaskPath, model_move_path, plan_time_optimal
 from pm2dof.planning.torques import plan_torques
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 try:                                  # the oracle of the friction-free checks (the dev extra)
     import toppra
     import toppra.algorithm

@@ -30,6 +30,8 @@ from pm2dof.studies.draws import sample_draw
 from pm2dof.studies.report import columns_of, summarise
 from pm2dof.studies.store import finish_out, prepare_out, write_chunk
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 ROOT = Path(__file__).resolve().parents[2]
 STUDIES = SHIPPED_STUDIES
 MODEL = SHIPPED_MODELS / "shang2010.toml"

@@ -29,6 +29,8 @@ from pm2dof.studies import (
 from pm2dof.studies.report import columns_of
 from tests.processes import from_a_terminal
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 ROOT = Path(__file__).resolve().parents[2]
 BIN = Path(sys.executable).parent
 PM2DOF = [sys.executable, "-m", "pm2dof"]

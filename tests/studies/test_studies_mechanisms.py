@@ -16,6 +16,8 @@ from pm2dof.studies import (
 from pm2dof.studies.report import columns_of, summarise
 from pm2dof.studies.store import finish_out, prepare_out, write_chunk
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 # one of each new kind: a 3-RRR platform (m = 3), PRR legs at a point, RPR legs, the vertical plane
 MODELS = ("rrr3_platform", "prr_point", "rpr3_platform", "shang2010_vertical")
 

@@ -24,8 +24,6 @@ def add_parser(sub, common):
                            "  pm2dof identify excite --excitation exc.toml --out run.csv\n"
                            "  pm2dof identify fit run.csv --save theta.json --seed-na\n"
                            "  pm2dof identify monte-carlo 50 --excitation exc.toml"))
-    for flag in ("--model", "--generated"):   # before the sub-command: as after it
-        p.add_argument(flag, dest=f"identify_{flag[2:]}", help=argparse.SUPPRESS)
     isub = p.add_subparsers(dest="identify_command", metavar="SUBCOMMAND")
 
     def excitation_options(r, what):
@@ -145,14 +143,7 @@ def add_parser(sub, common):
 
 
 def run(args):
-    """The sub-command, with --model/--generated given before it taken as given after it."""
-    for key in ("model", "generated"):
-        before = getattr(args, f"identify_{key}", None)
-        if before is not None:
-            if getattr(args, key) not in (None, before):
-                raise ArgumentError(f"--{key} given twice ({before!r} before the "
-                                    f"sub-command, {getattr(args, key)!r} after it)")
-            setattr(args, key, before)
+    """The sub-command (each takes --model and --generated after its name)."""
     if args.identify_command is None:
         raise ArgumentError("pm2dof identify needs a sub-command: report, excite, fit, design "
                             "or monte-carlo (plain `pm2dof identify` was replaced by: pm2dof "
