@@ -17,9 +17,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core import task
 from ..core.contract import SPLITS
 from ..core.errors import ArgumentError, ArgumentTypeError
-from ..core.task import effort_unit
 from . import rules
 
 __all__ = ["ControlSettings", "SPLITS", "actuator_limits", "checked_split", "per_actuator",
@@ -90,7 +90,7 @@ def _legs(spec):
 
 def _unit(spec):
     """The efforts' unit by the actuators' kinds after a space, for messages (" N m")."""
-    return f" {effort_unit([leg.actuator for leg in spec.legs])}"
+    return " " + task.per_actuator(spec.actuators, "N m", "N", "N m or N")
 
 
 def checked_split(spec, split=None):
