@@ -7,7 +7,7 @@ CasADi's generated C: its headers, written from the derivation's text, are read)
 
 :data:`NOT_YET` lists the lines left for their owner, each exactly: the shipped model files
 (a comment change alters their hash, hence every ``--json``'s provenance and the manifests:
-reworded when the models are next derived) and three lines another change rewrites. An entry
+reworded when the models are next derived) and one line of the derivation's sources (a change there re-derives every model). An entry
 that no longer matches fails too, so that the list only shrinks."""
 import re
 from pathlib import Path
@@ -40,11 +40,6 @@ NOT_YET = {
     # the derivation's sources: a change re-derives every model (its owner's)
     ("pm2dof/derive/model_functions.py", 'if self.m != 2 and getattr(self.kin, "platform", '
      'False):   # issue 26\'s platforms'),
-    # lines another change rewrites (the spec's fields, the optional functions)
-    ("pm2dof/planning/torques.py", 'if getattr(model.spec, "has_gravity", False):       # eq. '
-     "10's gravity term (issue 26)"),
-    ("pm2dof/core/model.py", "# bound when the manifest lists them (issue 26's derivation "
-     "adds them; older code lacks them)"),
 }
 
 

@@ -63,8 +63,8 @@ def run(args):
     if args.embedded:
         return _embedded(args)
     from ...export import export_project
-    out = export_project(args.path or args.model, args.out, precision=args.precision,
-                         controllers=args.controllers, force=args.force,
+    out = export_project(args.path or args.model, args.out, precision=args.precision or "double",
+                         controllers=args.controllers or "na,apd,ctc,lqr", force=args.force,
                          generated=args.generated, move=args.move,
                          measure_stack=not args.no_stack, progress=progress(args))
     print(f"wrote {out}: build and test it with\n  cmake -S {out} -B {out}/build && cmake "
