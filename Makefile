@@ -16,7 +16,7 @@ help:
 	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
 	@echo "make test     set up .venv, build, run the test suite (not the tests marked slow)"
 	@echo "make test-quick  the inner loop: the suite without the modules marked long"
-	@echo "make test-slow  the tests marked slow: every shipped study and study bench at full size"
+	@echo "make test-slow  the tests marked slow: full-size studies, C builds, re-derivation (CI runs it)"
 	@echo "make lint     ruff check pm2dof tests (pyflakes, import order, bugbear; pyproject.toml)"
 	@echo "make derive   re-derive $(MODEL) into pm2dof/generated/<name>/ and compile it (MODEL=path)"
 	@echo "make derive-all  re-derive every shipped model (after a change to pm2dof/derive/)"
@@ -69,9 +69,11 @@ test-quick: install
 	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist loadscope -m 'not slow and not long'
 
 # the tests marked slow (pyproject.toml deselects them from make test): every shipped study and
-# `pm2dof study bench` at full size, one after the other (each starts a 2-worker Dask cluster)
+# `pm2dof study bench` at full size, the exported C projects' builds, a full re-derivation, the
+# Dask cluster tests, the pinned --json of every command (a study starts a
+# 2-worker Dask cluster; two pytest workers). CI runs it after make test
 test-slow: install
-	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -m slow
+	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist loadscope -m slow
 
 # pyflakes (F), import order (I), bugbear (B): [tool.ruff] in pyproject.toml
 lint: $(STAMP)

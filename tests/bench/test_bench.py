@@ -10,7 +10,7 @@ import pytest
 from pm2dof import bench, load_model
 from pm2dof.bench import baselines
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # runs the bench: make test-slow (CI)
 
 
 @pytest.fixture(scope="module")

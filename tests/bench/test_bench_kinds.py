@@ -19,7 +19,7 @@ import pytest
 
 from pm2dof import bench, cli, load_model
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # long runs (builds, full benches, Dask clusters): make test-slow (CI)
 
 #: model -> the required keys that are n/a on it (each with a note)
 MODELS = {

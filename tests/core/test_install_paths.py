@@ -144,6 +144,7 @@ def test_cli_version_is_the_package_metadata():
 
 # --- your robot, your folder ------------------------------------------------------------------
 
+@pytest.mark.slow      # derives and compiles a model (20 s): make test-slow (CI)
 def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tmp_path, capfd,
                                                                                libraries):
     model = _robot(tmp_path / "robots")
@@ -177,6 +178,7 @@ def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tm
     assert pm2dof.load_model(tmp_path / "moved" / "myrobot.toml").name == "myrobot"
 
 
+@pytest.mark.slow      # derives and compiles a model (15 s): make test-slow (CI)
 def test_the_cli_prints_the_compile_on_first_use_as_stage_lines(tmp_path, capfd, monkeypatch,
                                                                 libraries):
     """``pm2dof`` turns each CompileWarning into the line it printed before the warnings: the
@@ -205,6 +207,7 @@ def test_the_cli_prints_the_compile_on_first_use_as_stage_lines(tmp_path, capfd,
                         lines[1]), lines
 
 
+@pytest.mark.slow      # derives and compiles a model (15 s): make test-slow (CI)
 def test_generated_elsewhere_is_named_by_generated(tmp_path, libraries):
     model = _robot(tmp_path)
     rc, out = _derive("--model", model, "--out", tmp_path / "build" / "c")   # --model, as every command
@@ -319,6 +322,7 @@ def test_shipped_studies_by_name_and_study_show():
     assert r.stdout == (SHIPPED_STUDIES / "gains.toml").read_text()
 
 
+@pytest.mark.slow      # derives and compiles a model (15 s): make test-slow (CI)
 def test_a_study_names_its_model_and_generated_folder_relative_to_itself(tmp_path, libraries):
     """A study folder holding the model file and its code in a non-default folder: the
     study's `model` and `generated` keys, relative to the study file, are all it needs; the

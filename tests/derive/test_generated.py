@@ -319,6 +319,7 @@ def _regenerated_dir(model, regenerated, seed=OWN_SEED):
     return out
 
 
+@pytest.mark.slow      # derives every model again (minutes): make test-slow (CI)
 def test_regeneration_is_byte_identical(model, regenerated):
     out = _regenerated_dir(model, regenerated)
     problems = []
@@ -336,6 +337,7 @@ def test_regeneration_is_byte_identical(model, regenerated):
                           + "\n".join(problems))
 
 
+@pytest.mark.slow      # derives a model under several hash seeds (30 s): make test-slow (CI)
 def test_regeneration_is_deterministic_across_hash_seeds(m, regenerated):
     """Paper only (one model suffices: the derivation code is shared): this process's
     derivation against a fresh interpreter's with another hash seed."""

@@ -20,7 +20,7 @@ import pytest
 
 import pm2dof
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # builds and runs the C example: make test-slow (CI)
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "c"
 

@@ -19,6 +19,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow  # compiles and builds C projects for minutes in all: make test-slow (CI)
+
 import pm2dof
 from pm2dof.export import export_project
 from pm2dof.export.stack import read_callgraph, worst_stack

@@ -20,7 +20,7 @@ import pm2dof
 from pm2dof.export import ExportError, export_project
 from tests.export.c_guards import check_guard_output
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # long runs (builds, full benches, Dask clusters): make test-slow (CI)
 
 needs_cmake = pytest.mark.skipif(shutil.which("cmake") is None or shutil.which("cc") is None,
                                  reason="needs cmake and a C compiler")

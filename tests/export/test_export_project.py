@@ -22,7 +22,7 @@ from pm2dof.export import ExportError, export_project
 from pm2dof.export.single import to_single
 from tests.export.c_guards import check_guard_output, rule_driver
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # builds and runs exported C projects: make test-slow (CI)
 
 needs_cmake = pytest.mark.skipif(shutil.which("cmake") is None or shutil.which("cc") is None,
                                  reason="needs cmake and a C compiler")
@@ -264,6 +264,7 @@ def test_a_status_that_is_no_code_gives_non_finite_and_keeps_the_state(built, tm
                                                                                 "1")
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(shutil.which("cc") is None, reason="needs a C compiler")
 @pytest.mark.parametrize("name", ["shang2010", "rrr4_platform"])
 def test_the_library_refuses_to_compile_with_fast_math(tmp_path, name):

@@ -22,7 +22,7 @@ from pm2dof.studies import SHIPPED_STUDIES, read_study, run_chunk
 from pm2dof.studies.report import summarise
 from pm2dof.studies.spec import GRID_KEYS
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # draws every figure of every model (40 s): make test-slow (CI)
 
 TOL = 1.0        # px
 PNG_DPI = 110    # pm2dof.infra.results.save_figure

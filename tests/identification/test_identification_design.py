@@ -198,6 +198,7 @@ def test_excite_runs_the_file(tmp_path, m, designed, capsys):
                 m, multisine(m, duration=designed.duration)))[0])
 
 
+@pytest.mark.slow      # two IPOPT designs: make test-slow (CI)
 def test_design_is_deterministic_and_runs_ipopt_blas_on_one_thread(m, designed):
     """The same arguments give the same file bit for bit, whatever CasADi's OpenBLAS was set
     to before (its default, one thread per core, changed the shipped design's IPOPT path);

@@ -29,7 +29,7 @@ from pm2dof.studies import (
 from pm2dof.studies.report import columns_of
 from tests.processes import from_a_terminal
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # long runs (builds, full benches, Dask clusters): make test-slow (CI)
 
 ROOT = Path(__file__).resolve().parents[2]
 BIN = Path(sys.executable).parent
