@@ -25,10 +25,8 @@ PKG = Path(__file__).resolve().parent.parent / "pm2dof"
 #: every attribute of a ModelSpec and of a Leg: dataclass fields and properties
 FIELDS = {f.name for cls in (ModelSpec, Leg) for f in dataclasses.fields(cls)} | {
     name for cls in (ModelSpec, Leg) for name, v in vars(cls).items() if isinstance(v, property)}
-#: pm2dof/derive/*.py: its sources are hashed into every manifest, so an edit re-derives every
-#: model; these three are left to the derivation's owner (file, attribute)
-_DERIVE_STILL = {("derive/model_functions.py", "task_names"), ("derive/plant.py", "kind"),
-                 ("derive/run.py", "task_names")}
+#: (file, attribute) left to later; none: pm2dof/derive/*.py reads the spec's fields too
+_DERIVE_STILL: set = set()
 #: not a spec: pm2dof.reference's ik takes any "Geometry-like" object (bases, la, lb, elbow),
 #: its fk_branch optional (the independent formulation's own convention)
 _NOT_A_SPEC = {("reference/model.py", "fk_branch")}

@@ -5,9 +5,7 @@ change was for ("the platforms", "sign(0) = 0"), never which work item it came f
 tests, the examples, the README and the Makefile is read (the compiled libraries aside, and
 CasADi's generated C: its headers, written from the derivation's text, are read).
 
-:data:`NOT_YET` lists the lines left for their owner, each exactly: the shipped model files
-(a comment change alters their hash, hence every ``--json``'s provenance and the manifests:
-reworded when the models are next derived) and one line of the derivation's sources (a change there re-derives every model). An entry
+:data:`NOT_YET` would list, each exactly, a line left for later; it is empty, and an entry
 that no longer matches fails too, so that the list only shrinks."""
 import re
 from pathlib import Path
@@ -18,29 +16,7 @@ PLACES = ["pm2dof", "docs", "tests", "examples", "README.md", "Makefile"]
 BINARY = {".so", ".png", ".gif", ".parquet", ".pyc", ".npz", ".ico", ".woff", ".woff2"}
 
 #: (path, the whole line, stripped): lines with an issue number left to their owner
-NOT_YET = {
-    ("pm2dof/models/fivebar.toml", "# pm2dof model variant (issue 6), derived from "
-     "shang2010.toml; same units and conventions."),
-    ("pm2dof/models/fourleg.toml", "# pm2dof model variant (issue 6), derived from "
-     "shang2010.toml; same units and conventions."),
-    ("pm2dof/models/unequal.toml", "# pm2dof model variant (issue 6), derived from "
-     "shang2010.toml; same units and conventions."),
-    ("pm2dof/models/shang2010_smooth.toml", "# pm2dof model variant (issue 6): the paper robot "
-     "with a smooth-sign Coulomb model in the controllers."),
-    ("pm2dof/models/shang2010_stribeck.toml", "# pm2dof model variant (issue 6): the paper "
-     "robot with a Stribeck friction model in the controllers."),
-    ("pm2dof/models/rpr3_platform.toml", "# switched the full fc on at rest, and the hold "
-     "drifted 20-200 counts (issue 26)."),
-    ("pm2dof/models/prr_point.toml", "# switched the full fc on at rest, and the hold drifted "
-     "20-200 counts (issue 26)."),
-    ("pm2dof/models/prr3_platform.toml", "# switched the full fc on at rest, and the hold "
-     "drifted 20-200 counts (issue 26)."),
-    ("pm2dof/models/rrr3_platform.toml", "# switched the full fc on at rest, and the hold "
-     "drifted 1-3 counts (issue 26)."),
-    # the derivation's sources: a change re-derives every model (its owner's)
-    ("pm2dof/derive/model_functions.py", 'if self.m != 2 and getattr(self.kin, "platform", '
-     'False):   # issue 26\'s platforms'),
-}
+NOT_YET: set = set()
 
 
 def _files():

@@ -1,6 +1,8 @@
 # Generated controller steps: Fig. 2 signal processing + NA law (eqs. 14-29), APD law (eq. 40),
 # computed torque (CTC) or time-varying LQR tracking.
 
+from typing import NamedTuple
+
 import casadi as ca
 
 from pm2dof.core.contract import SPLITS, STEP_INPUTS, STEP_OUTPUTS, STEPS, diag_layout
@@ -138,7 +140,7 @@ def controller_functions(d, prefix):
     28's update would integrate an error the actuators could not act on); 0 is the paper's
     law.
     """
-    from pm2dof.core.model_file import FRICTION_MODELS
+    from pm2dof.core.mechanism import FRICTION_MODELS
     n, p, m = d.spec.n_legs, len(d.spec.param_names), d.m
     kin = d.kin
     lay = controller_layouts(n, p, m)
@@ -174,17 +176,36 @@ def controller_functions(d, prefix):
             theta_next = _project(theta_next, d.spec.param_names, n,
                                   FRICTION_MODELS[d.spec.friction])
         for split, suffix in SPLITS.items():
-            functions.append(_step_function(d, prefix, lay, f"{name}{suffix}", split, S, u, P,
-                                            theta, theta_next, xe, v, e, edot, sing,
-                                            consistent, st, [state, qa, xd, xd_dot, xd_ddot,
-                                                             params], extra))
+            nodes = StepNodes(S, u, P, theta, theta_next, xe, v, e, edot, sing, consistent, st)
+            functions.append(_step_function(d, prefix, lay, f"{name}{suffix}", split, nodes,
+                                            [state, qa, xd, xd_dot, xd_ddot, params], extra))
     return functions
 
 
-def _step_function(d, prefix, lay, name, split, S, u, P, theta, theta_next, xe, v, e, edot,
-                   sing, consistent, st, inputs, extra):
-    """``<prefix>_<name>_step`` of one law and split: the split, saturation, the safe
-    torque on a bad sample, the status and the next state (:func:`controller_functions`)."""
+class StepNodes(NamedTuple):
+    """One law's graph nodes that every split's step shares (:func:`controller_functions`):
+    S (n, m), the task force u = S^T tau_a, the parameters P (by field), theta_hat before and
+    after the update, the pose xe, velocity v, e, edot (eq. 14), the singularity measures, the
+    encoders' consistency and the state st (by field)."""
+    S: object
+    u: object
+    P: dict
+    theta: object
+    theta_next: object
+    xe: object
+    v: object
+    e: object
+    edot: object
+    sing: object
+    consistent: object
+    st: dict
+
+
+def _step_function(d, prefix, lay, name, split, nodes, inputs, extra):
+    """``<prefix>_<name>_step`` of one law and split from its shared ``nodes``
+    (:class:`StepNodes`): the split, saturation, the safe torque on a bad sample, the status
+    and the next state (:func:`controller_functions`)."""
+    S, u, P, theta, theta_next, xe, v, e, edot, sing, consistent, st = nodes
     n = d.spec.n_legs
     tau, saturated, unpreloaded = _split(d, split, S, u, P)       # eq. 21 or another split
     tau_sat = ca.fmin(ca.fmax(tau, -P["tau_max"]), P["tau_max"])

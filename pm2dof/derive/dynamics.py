@@ -55,7 +55,7 @@ class Dynamics:
     """
 
     def __init__(self, spec, sym, kin):
-        from pm2dof.core.model_file import FRICTION_MODELS
+        from pm2dof.core.mechanism import FRICTION_MODELS
         self.spec, self.sym, self.kin = spec, sym, kin
         n = spec.n_legs
         q = sym.q

@@ -17,7 +17,7 @@ class Derivation:
     def __init__(self, spec):
         self.spec = spec
         self.sym = Symbols(spec.n_legs, spec.param_names,
-                           tuple(getattr(spec, "task_names", None) or ("x", "y")))
+                           tuple(spec.task_names))
         self.kin = Kinematics(spec, self.sym)
         self.dyn = Dynamics(spec, self.sym, self.kin)
         self._setup()
@@ -163,7 +163,7 @@ class Derivation:
         type1 = values[0]
         for v in values[1:]:  # min(a, b) = (a + b - |a - b|) / 2: unlike C's fmin, keeps NaN
             type1 = (type1 + v - ca.fabs(type1 - v)) / 2
-        if self.m != 2 and getattr(self.kin, "platform", False):   # issue 26's platforms
+        if self.m != 2 and getattr(self.kin, "platform", False):   # a platform's pose (x, y, phi)
             return ca.vertcat(type1, conv(self.kin.parallel_measure()))
         if self.m != 2:
             return ca.vertcat(type1, self._type2_general(conv))

@@ -197,7 +197,7 @@ class _PathFriction:
     positive branch, as SX of theta; ``affine`` when it is f0 + f1 v (Coulomb + viscous)."""
 
     def __init__(self, d, theta):
-        from pm2dof.core.model_file import FRICTION_MODELS
+        from pm2dof.core.mechanism import FRICTION_MODELS
         spec, sym = d.spec, d.sym
         n = spec.n_legs
         v = sp.symbols(f"pv1:{n + 1}", real=True)

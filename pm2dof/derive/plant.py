@@ -43,8 +43,8 @@ def plant_layout(n, param_names, friction_names, linear=False):
 
 def model_plant_layout(spec):
     """:func:`plant_layout` of a model: its own inertial parameters."""
-    from pm2dof.core.model_file import FRICTION_MODELS
-    linear = any(getattr(leg, "kind", "RRR") != "RRR" for leg in spec.legs)
+    from pm2dof.core.mechanism import FRICTION_MODELS
+    linear = any(leg.kind != "RRR" for leg in spec.legs)
     return plant_layout(spec.n_legs, spec.param_names, FRICTION_MODELS[spec.friction], linear)
 
 
@@ -64,7 +64,7 @@ def closed_loop_layouts(n, p, m):
 
 def _inertial_pairs(d, P):
     """(sympy symbols, SX) pairs binding theta's inertial parameters to the plant's fields."""
-    from pm2dof.core.model_file import FRICTION_MODELS
+    from pm2dof.core.mechanism import FRICTION_MODELS
     pairs = []
     for base, count in inertial_fields(d.spec.param_names, FRICTION_MODELS[d.spec.friction]):
         syms = [None] * count
