@@ -27,7 +27,7 @@ from pm2dof.derive.planning import facet_count
 from pm2dof.derive.run import derive_functions, derive_layouts
 from tests import derivations
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # derives a toy platform with SymPy: make test-slow (CI)
 
 XE = np.array([0.3, 0.4, 0.2])
 XED = np.array([0.2, -0.3, 0.5])

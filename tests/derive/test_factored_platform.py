@@ -14,7 +14,7 @@ from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.derive.factored import factored, regressor, task_inertia_coriolis
 from tests import derivations
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # derives platforms two ways with SymPy: make test-slow (CI)
 
 PLATFORMS = [s for s in (read_model_file(p) for p in sorted(SHIPPED_MODELS.glob("*.toml")))
              if s.end_effector == "platform"]

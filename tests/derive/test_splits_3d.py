@@ -20,7 +20,7 @@ from scipy.optimize import linprog, lsq_linear, minimize
 from pm2dof.derive.planning import facet_count, force_polygon
 from pm2dof.derive.splits import min_max, min_norm, preload
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # LP checks of the 3-D min-max split: make test-slow (CI)
 
 M = 3
 HIGHS = {"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10}

@@ -6,7 +6,7 @@ import pm2dof
 from pm2dof.cli import main
 from pm2dof.figures.animate import animate_move
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # draws animations: make test-slow (CI)
 
 
 def test_animation_is_a_gif_with_one_frame_per_every_samples(tmp_path):

@@ -33,7 +33,7 @@ from pm2dof.identification.signals import (
 )
 from pm2dof.infra.progress import Progress
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # runs IPOPT designs: make test-slow (CI)
 
 LIMITS = {"v_max": 0.4, "a_max": 6.0, "tau_fraction": 0.3}
 SMALL = dict(base_hz=0.5, harmonics=4, periods=1, samples=80, constraint_samples=200, **LIMITS)
@@ -198,7 +198,6 @@ def test_excite_runs_the_file(tmp_path, m, designed, capsys):
                 m, multisine(m, duration=designed.duration)))[0])
 
 
-@pytest.mark.slow      # two IPOPT designs: make test-slow (CI)
 def test_design_is_deterministic_and_runs_ipopt_blas_on_one_thread(m, designed):
     """The same arguments give the same file bit for bit, whatever CasADi's OpenBLAS was set
     to before (its default, one thread per core, changed the shipped design's IPOPT path);

@@ -29,7 +29,7 @@ from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.infra import results
 from pm2dof.infra.results import provenance, save_figure, write_atomic, write_json
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # runs CLI commands that write files: make test-slow (CI)
 
 REPO = Path(__file__).resolve().parents[2]
 PAPER = SHIPPED_MODELS / "shang2010.toml"
