@@ -44,7 +44,6 @@ to itself (:mod:`.model_ref`), so that it can be moved together with the model f
 """
 import contextlib
 import platform
-import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -54,6 +53,7 @@ import numpy as np
 from ..control.trajectory import line_moves
 from ..core.errors import ArgumentError, ArgumentTypeError
 from ..core.task import effort_unit, orientation_length, per_actuator
+from ..infra.interrupt import noticing_ctrl_c
 from ..infra.progress import Progress, bar
 from .base import base_parameters, region_center
 from .fit import MIN_JOINT_SPEED, joint_speed_floor
@@ -406,30 +406,6 @@ def _single_thread_blas():
         lib.openblas_set_num_threads(before)
 
 
-@contextlib.contextmanager
-def _noticing_ctrl_c():
-    """A list that records a Ctrl-C during the block, instead of a KeyboardInterrupt: raised
-    inside IPOPT, CasADi caught it, printed a warning and returned (NonIpopt_Exception_Thrown
-    or User_Requested_Stop) as if the design had finished. The iteration callback stops IPOPT
-    when the list is not empty and the caller raises KeyboardInterrupt. Left alone where
-    Python does not own SIGINT (ignored, another handler, not the main thread)."""
-    import signal
-    hit = []
-
-    def handler(signum, frame):
-        hit.append(signum)
-
-    if (threading.current_thread() is not threading.main_thread()
-            or signal.getsignal(signal.SIGINT) is not signal.default_int_handler):
-        yield hit
-        return
-    signal.signal(signal.SIGINT, handler)
-    try:
-        yield hit
-    finally:
-        signal.signal(signal.SIGINT, signal.default_int_handler)
-
-
 def design_provenance(model):
     """What a design's result depends on besides its arguments: versions, the model's hashes and
     the machine's arithmetic (CPU, C library). Deterministic for one machine and install."""
@@ -576,7 +552,7 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
     lines = (progress if progress and not (isinstance(progress, Progress) and progress.bars)
              else None)
     with bar(progress, int(max_iter), "IPOPT", unit="it") as iterations, \
-            _noticing_ctrl_c() as ctrl_c:
+            noticing_ctrl_c() as ctrl_c:
         # IPOPT's iterations shown as they happen; the callback also stops IPOPT at the
         # iteration after a Ctrl-C
         callback = _IterationProgress(z.numel(), len(lbg), iterations, to_logdet, ctrl_c,

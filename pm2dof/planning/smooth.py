@@ -25,12 +25,13 @@ import numpy as np
 
 from ..core.errors import PlanError
 from ..core.task import per_actuator
+from ..infra.interrupt import noticing_ctrl_c
 from .check import require
 from .plan import PathProfile, Plan, grid_times, sample
 from .problem import PlanProblem
 from .stages import limits, params, stages
 from .topp import plan_time_optimal
-from .watch import iteration_watch, noticing_ctrl_c
+from .watch import iteration_watch
 
 __all__ = ["plan_smooth", "RISE_TIME", "MAX_ITER"]
 

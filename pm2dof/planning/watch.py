@@ -1,9 +1,7 @@
 # IPOPT's iterations in plan_smooth, watched: progress while it runs, and Ctrl-C as a stop.
-"""What :func:`pm2dof.planning.smooth.plan_smooth` shows and hears while IPOPT runs.
+"""What :func:`pm2dof.planning.smooth.plan_smooth` shows while IPOPT runs (a Ctrl-C is
+recorded by :func:`pm2dof.infra.interrupt.noticing_ctrl_c`).
 
-* :func:`noticing_ctrl_c` -- a Ctrl-C during the block is recorded instead of raised: raised
-  inside IPOPT, CasADi would catch the KeyboardInterrupt and IPOPT would return
-  ``NonIpopt_Exception_Thrown``, which read as a solver failure;
 * :func:`iteration_watch` -- IPOPT's iteration callback: one step of a bar per iteration on a
   terminal (:class:`pm2dof.infra.progress.Progress`), else a stage line every
   :data:`LINE_EVERY` seconds (iteration count and elapsed time), so that a log shows a long
@@ -11,35 +9,14 @@
 
 CasADi is imported inside the functions: the planning layer imports it lazily.
 """
-import contextlib
-import signal
-import threading
 import time
 
 from ..infra.progress import Progress
 
-__all__ = ["noticing_ctrl_c", "iteration_watch", "LINE_EVERY"]
+__all__ = ["iteration_watch", "LINE_EVERY"]
 
 #: s between two stage lines of a running IPOPT when no bar is drawn
 LINE_EVERY = 10.0
-
-
-@contextlib.contextmanager
-def noticing_ctrl_c():
-    """A list that records each SIGINT (Ctrl-C) during the block instead of raising
-    KeyboardInterrupt; the caller stops its solver when the list is not empty and raises
-    KeyboardInterrupt itself. Left alone (nothing recorded, Python's own behaviour) where
-    Python does not own SIGINT: ignored, another handler installed, or not the main thread."""
-    hit = []
-    if (threading.current_thread() is not threading.main_thread()
-            or signal.getsignal(signal.SIGINT) is not signal.default_int_handler):
-        yield hit
-        return
-    signal.signal(signal.SIGINT, lambda signum, frame: hit.append(signum))
-    try:
-        yield hit
-    finally:
-        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def iteration_watch(nx, ng, progress, stop, what, max_iter):

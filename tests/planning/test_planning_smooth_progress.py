@@ -18,6 +18,7 @@ import pytest
 
 import pm2dof
 from pm2dof.core.task import orientation_length
+from pm2dof.infra.interrupt import noticing_ctrl_c
 from pm2dof.planning import watch
 
 pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
@@ -151,7 +152,7 @@ def test_noticing_ctrl_c_leaves_a_foreign_handler_alone():
         return None
     before = signal.signal(signal.SIGINT, mine)
     try:
-        with watch.noticing_ctrl_c() as hit:
+        with noticing_ctrl_c() as hit:
             assert signal.getsignal(signal.SIGINT) is mine and hit == []
         assert signal.getsignal(signal.SIGINT) is mine
     finally:
