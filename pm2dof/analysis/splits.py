@@ -18,9 +18,10 @@ actuator reversed its sign or fell short of its preload, by that much).
 import numpy as np
 
 from ..control.controllers import APDController, NAController
-from ..control.settings import SPLITS, actuator_limits, per_actuator
+from ..control.settings import actuator_limits, per_actuator
 from ..control.simulate import simulate
 from ..control.trajectory import line_moves, model_move
+from ..core.contract import SPLITS
 from ..core.task import effort_unit
 from ..infra.progress import bar
 

@@ -22,11 +22,8 @@ from ..core.contract import SPLITS
 from ..core.errors import ArgumentError, ArgumentTypeError
 from . import rules
 
-__all__ = ["ControlSettings", "SPLITS", "actuator_limits", "checked_split", "per_actuator",
+__all__ = ["ControlSettings", "actuator_limits", "checked_split", "per_actuator",
            "velocity_filter_alpha"]
-
-#: the torque splits and their generated functions' suffixes: :data:`pm2dof.core.contract.SPLITS`
-# (re-exported here for the controllers' users)
 
 
 def velocity_filter_alpha(sample_period, cutoff_hz):
