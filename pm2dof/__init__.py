@@ -50,6 +50,7 @@ from .core.errors import (
     ArgumentTypeError,
     ClosureError,
     CompileWarning,
+    DesignError,
     GainError,
     InputFileError,
     ModelFileError,

@@ -6,7 +6,7 @@ __all__ = ["Pm2dofError", "ArgumentError", "ArgumentTypeError", "NonFiniteError"
            "InputFileError", "ModelFileError", "StaleGeneratedCodeError", "WorkspaceError",
            "ClosureError", "SingularityError", "GainError", "ModelMismatchError", "OutcomeWarning",
            "MovingStartWarning", "CompileWarning", "PlanError", "UnsupportedMechanismError",
-           "NotResetError"]
+           "NotResetError", "DesignError"]
 
 
 class Pm2dofError(Exception):
@@ -149,3 +149,9 @@ class UnsupportedMechanismError(Pm2dofError, ValueError):
     """A capability that cannot apply to this model's mechanism (its leg kinds, its end effector
     or its task dimension m): names the capability, the mechanism and why, e.g. the Python
     reference formulation, which covers RR legs meeting at a point only."""
+
+
+class DesignError(Pm2dofError, ValueError):
+    """A design (values of a model file's ``[design]`` variables) that cannot be used: a value
+    outside its bounds, an unknown variable, or a geometry where the file's home or moves cannot
+    be reached. Names the variable, or the move and the leg."""
