@@ -124,6 +124,7 @@ __all__ = [
     "ModelFileError", "SingularityError", "StaleGeneratedCodeError", "WorkspaceError",
     "ClosureError", "TrajectoryError", "GainError", "ModelMismatchError", "BuildError",
     "OutcomeWarning", "MovingStartWarning", "CompileWarning", "PlanError", "UnsupportedMechanismError", "NotResetError",
+    "DesignError",
     # layer 3 (imported on first use)
     *_LAZY,
 ]
