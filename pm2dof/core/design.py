@@ -227,7 +227,7 @@ def _default(pr, where, name, got, legs, bounds):
     and within the bounds (each a problem)."""
     if any(legs[i] is None for (i, _, _), _ in got):
         return None
-    (key0, label0), value = got[0], _leg_value(legs, got[0][0])
+    label0, value = got[0][1], _leg_value(legs, got[0][0])
     for key, label in got[1:]:
         other = _leg_value(legs, key)
         if other != value:

@@ -1,4 +1,4 @@
-# A model file's [design] table and uniform-rod links: reading, the formulation hash, spec_at_design.
+# A model file's [design] table and uniform-rod links: reading, formulation hash, spec_at_design.
 """The ``[design]`` table of a model file (pm2dof.core.design) and links given as uniform rods.
 
 * Every shipped model file keeps its formulation hash (the one its committed manifest.json
@@ -199,7 +199,7 @@ PROBLEMS = [
      "design.x.keys (legs.1.la)", "legs.1.la is listed twice in design variable 'x'"),
     ("shang2010", f'x = {{ keys = ["legs.1.la"], {_K} }}\ny = {{ keys = ["legs.1.la"], {_K} }}',
      "design.y.keys (legs.1.la)", "legs.1.la is set by design variables 'x' (legs.1.la) and 'y'"),
-    ("shang2010", f'x = {{ keys = ["legs.1.rail.1.x"], bounds = [-0.1, 0.1] }}',
+    ("shang2010", 'x = { keys = ["legs.1.rail.1.x"], bounds = [-0.1, 0.1] }',
      "design.x.keys (legs.1.rail.1.x)", "not a designable key of leg 1 (RRR)"),
     ("shang2010", f'x = {{ keys = ["legs.1.elbow"], {_K} }}', "design.x.keys (legs.1.elbow)",
      "not a designable key"),
