@@ -17,7 +17,6 @@ import json
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
-from types import MappingProxyType
 
 import numpy as np
 
@@ -403,8 +402,8 @@ def _read_bodies(pr, where, kind, raw):
                   for k in keys}
         if None in values.values():
             return None
-        out[body] = MappingProxyType(values)
-    return MappingProxyType(out)
+        out[body] = values
+    return out
 
 
 def _expand_links(pr, section, table, legs, groups, kept=None):
@@ -784,8 +783,7 @@ def read_model_file(path):
         limits=limits, sensing=sensing, gains=gains, plant=plant, trajectories=trajs,
         control=control, file_sha256=hashlib.sha256(raw).hexdigest(), end_effector=effector,
         gravity=tuple(gravity), home=None if home is None else tuple(home), design=design,
-        links=MappingProxyType({"nominal": kept.get("nominal"), "plant": kept.get("plant")})
-        if kept else None)
+        links={"nominal": kept.get("nominal"), "plant": kept.get("plant")} if kept else None)
     formulation = json.dumps(spec.formulation(), sort_keys=True, separators=(",", ":"))
     object.__setattr__(spec, "formulation_sha256", hashlib.sha256(formulation.encode()).hexdigest())
     return spec

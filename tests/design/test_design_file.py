@@ -18,6 +18,7 @@ The fixtures are shipped files with a ``[design]`` table (and rods) appended, wr
 import dataclasses
 import json
 import math
+import pickle
 import re
 from types import MappingProxyType
 
@@ -418,6 +419,9 @@ def test_rods_give_the_theta_of_the_equivalent_bodies_and_of_the_shipped_comment
     assert solid.links is None
     assert rods.links["nominal"][0]["proximal"] == {"density": 3.0}
     assert rods.links["plant"][2]["distal"] == {"density": 2.0}
+    # a spec crosses processes (Dask workers): it pickles, with its links and its design
+    again = pickle.loads(pickle.dumps(rods))
+    _assert_same_spec(again, rods)
 
 
 def test_theta_follows_the_lengths_of_rod_links_at_a_design(tmp_path):
