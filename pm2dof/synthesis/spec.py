@@ -200,11 +200,9 @@ def _variables(pr, st, spec, check_design):
     if spec is None:
         return (), ()
     if design is None:
-        if check_design:
+        if check_design:      # else: the fixed geometry is the one design; variables unused
             pr.add("study.model", f"model file {spec.path} has no [design] table: nothing to "
                                   f"search (docs/model-file.md, [design])")
-        elif "variables" in st or "bounds" in st:
-            pr.add("study.variables", f"model file {spec.path} has no [design] table")
         return (), ()
     known = dict(zip(design.names, design.bounds))
     variables = st.get("variables", list(design.names))
