@@ -322,6 +322,8 @@ class _SpecOnly:
 def _entries(pr, section, tables, spec, region, path_names, names, measures):
     """[[objectives]] or [[constraints]] as Objective tuples."""
     constraint = section == "constraints"
+    if tables is None:                     # [[objectives]] missing: reported by the keys' check
+        return ()
     if not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
         return pr.add(section, f"must be [[{section}]] tables") or ()
     out = []
