@@ -45,6 +45,7 @@ the direction the study needs: a measure with a floor (the region measures) its 
 """
 import functools
 import math
+import threading
 import warnings
 
 import numpy as np
@@ -501,12 +502,12 @@ _MODELS = {}
 
 
 def _base_model(study):
-    """The study's model, loaded once per process (workers keep it between batches)."""
+    """The study's model, loaded once per thread (a Model must not serve two threads at once;
+    a worker keeps it between batches)."""
     from ..core.model import load_model
-    key = study.model_path
+    key = (study.model_path, threading.get_ident())
     if key not in _MODELS:
-        _MODELS.clear()
-        _MODELS[key] = load_model(key)
+        _MODELS[key] = load_model(study.model_path)
     return _MODELS[key]
 
 

@@ -14,7 +14,6 @@ import dataclasses
 import hashlib
 from dataclasses import dataclass
 from pathlib import Path
-from types import MappingProxyType
 from typing import Mapping
 
 from ..core.errors import InputFileError, ModelFileError, PlanError
@@ -87,8 +86,25 @@ class DesignStudy:
     description: str = ""
 
 
+class FrozenMapping(dict):
+    """A read-only dict: the mappings of a :class:`DesignStudy` (picklable for the workers,
+    unlike ``types.MappingProxyType``; hashable by its items)."""
+
+    def _read_only(self, *args, **kwargs):
+        raise TypeError(f"{type(self).__name__} is read-only")
+
+    __setitem__ = __delitem__ = __ior__ = clear = pop = popitem = setdefault = update = \
+        _read_only
+
+    def __reduce__(self):
+        return type(self), (dict(self),)
+
+    def __hash__(self):
+        return hash(tuple(sorted(self.items())))
+
+
 def _frozen(d):
-    return MappingProxyType(dict(d))
+    return FrozenMapping(d)
 
 
 def shipped_design_studies():

@@ -23,6 +23,8 @@ from pm2dof.synthesis import evaluate_batch, evaluate_design, evaluate_with_stat
 from pm2dof.synthesis import objectives as obj
 from pm2dof.synthesis.spec import read_design_study
 
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
 KINDS = ["shang2010", "rrr4_platform", "prr_point", "prr3_platform", "shang2010_vertical"]
 RES = 13          # the maps' grid: points per axis
 TOL = 1e-9
@@ -270,7 +272,8 @@ def test_evaluate_batch_with_a_shim_design(models, tmp_path, monkeypatch):
                                      f"file's 0.244)")
         return self
     monkeypatch.setattr(type(m), "at_design", at_design, raising=False)
-    monkeypatch.setattr(obj, "_MODELS", {study.model_path: m})
+    import threading
+    monkeypatch.setattr(obj, "_MODELS", {(study.model_path, threading.get_ident()): m})
     F, G, rows = evaluate_batch(study, [[0.244], [0.3]])
     want = evaluate_design(m, study)
     assert F.shape == (2, 2) and G.shape == (2, 2)

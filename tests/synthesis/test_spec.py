@@ -89,6 +89,11 @@ def test_a_full_file(tmp_path):
         s.name = "x"
     with pytest.raises(TypeError):
         s.optimizer["seed"] = 1
+    with pytest.raises(TypeError):
+        s.objectives[1].options.update(split="min_max")
+    again = pickle.loads(pickle.dumps(s))          # sent as is to the workers
+    assert again == s and hash(again) == hash(s)
+    assert type(again.objectives[1].options) is type(s.objectives[1].options)
     # the file's objectives run on the model
     values, status = obj.evaluate_with_status(pm2dof.load_model("shang2010"), s)
     assert status == "ok" and set(values) == {"dexterity_mean", "t_high", "margin", "rmse_na"}
