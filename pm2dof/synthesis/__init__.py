@@ -11,8 +11,15 @@
 Imports core, control, analysis, planning, linear and studies; pymoo only in the optimiser.
 """
 from .objectives import MEASURES, evaluate_batch, evaluate_design, evaluate_with_status
-from .spec import (DesignStudy, DesignStudyError, Objective, find_design_study,
-                   read_design_study, shipped_design_studies, with_overrides)
+from .spec import (
+                   DesignStudy,
+                   DesignStudyError,
+                   Objective,
+                   find_design_study,
+                   read_design_study,
+                   shipped_design_studies,
+                   with_overrides,
+)
 
 __all__ = ["MEASURES", "evaluate_batch", "evaluate_design", "evaluate_with_status",
            "DesignStudy", "DesignStudyError", "Objective", "find_design_study",

@@ -345,7 +345,9 @@ def _entries(pr, section, tables, spec, region, path_names, names, measures):
     out = []
     for i, t in enumerate(tables):
         label = f"entry {i + 1}"
-        at = lambda k: entry(f"{section}.{k}", label)  # noqa: E731
+
+        def at(k, label=label):
+            return entry(f"{section}.{k}", label)
         measure = pr.choice(at("measure"), t.get("measure"), {k: k for k in measures})
         name = t.get("name", measure)
         if not isinstance(name, str) or not name.isidentifier():

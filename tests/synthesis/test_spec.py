@@ -8,8 +8,13 @@ import pm2dof
 from pm2dof.core.design import Design
 from pm2dof.core.paths import SHIPPED_MODELS
 from pm2dof.synthesis import objectives as obj
-from pm2dof.synthesis.spec import (DesignStudyError, find_design_study, read_design_study,
-                                   shipped_design_studies, with_overrides)
+from pm2dof.synthesis.spec import (
+    DesignStudyError,
+    find_design_study,
+    read_design_study,
+    shipped_design_studies,
+    with_overrides,
+)
 
 FULL = '''
 [study]
