@@ -18,11 +18,12 @@ from ..core import contract, paths
 from ..core.errors import ArgumentError, OutputError, StaleGeneratedCodeError
 from ..core.layout import Layout
 from ..core.manifest import Manifest
-from ..core.model import load_model
+from ..core.model import Model, load_model
 from ..core.status import Status
 from ..core.task import mechanism
 from ..core.version import __version__
 from . import checks, names, prune, reference, single, stack
+from .design import bind_design
 from .units import export_units
 
 __all__ = ["export_project", "LAWS", "PRECISIONS", "ExportError"]
@@ -245,8 +246,10 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
 
     Parameters
     ----------
-    model : str or Path, optional
-        A shipped model's name or a model file (default the paper's robot).
+    model : str, Path or pm2dof.Model, optional
+        A shipped model's name or a model file (default the paper's robot), or a loaded
+        Model: a model with a [design] table is exported at its design (``Model.at_design``),
+        the geometry then constants of the library.
     out : str or Path
         The project folder; refused if it exists and is not empty, unless ``force``.
     precision : {"double", "single"}
@@ -286,9 +289,10 @@ def export_project(model=None, out=None, *, precision="double", controllers=LAWS
                              else controllers)
     if out is None:
         raise ArgumentError("export_project: give the output folder (out=...)")
-    m = load_model(model, generated)
+    m = model if isinstance(model, Model) else load_model(model, generated)
     move_name = reference.reference_move(m, move)[0]     # an unknown move: refused here
     c_text, _, manifest = _generated_sources(m)
+    c_text = bind_design(c_text, m, manifest)     # a [design] model: its geometry as constants
     name, n, p, dim = m.name, m.n_legs, len(m.param_names), m.dof
     units = export_units(m)
     docs = _field_docs(units)
