@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = ["front_indices", "hypervolume", "reference_point", "MARGIN", "DesignFront",
-           "read_front"]
+           "read_front", "format_front"]
 
 #: the reference point's margin beyond the nadir, as a fraction of each objective's range
 MARGIN = 0.1
@@ -161,3 +161,27 @@ def read_front(out):
     F = np.column_stack([s * cols[o["name"]] for s, o in zip(signs, info["objectives"])])
     X = np.column_stack([cols[v] for v in info["variables"]])
     return DesignFront(info, cols, front_indices(F, cols["feasible"], X))
+
+
+def format_front(fr):
+    """The front as a text table: ``#`` (design pick's INDEX), each design variable (m), each
+    objective with its unit and sense; then how many designs were evaluated."""
+    info, cols = fr.info, fr.columns
+    units = info.get("units") or {}
+    names = [o["name"] for o in info["objectives"]]
+    heads = (["#"] + [f"{v} (m)" for v in fr.variables]
+             + [f"{n}{f' ({units[n]})' if units.get(n) else ''} {o['sense']}"
+                for n, o in zip(names, info["objectives"])])
+    rows = [[str(i)] + [f"{cols[v][r]:.6g}" for v in fr.variables]
+            + [f"{cols[n][r]:.6g}" for n in names] for i, r in enumerate(fr.index)]
+    widths = [max(len(h), *(len(r[j]) for r in rows)) if rows else len(h)
+              for j, h in enumerate(heads)]
+    line = (lambda cells: "  ".join(c.rjust(w) for c, w in zip(cells, widths)))
+    feas = int(np.sum(cols["feasible"]))
+    out = [f"design study {info.get('name')!r}: {len(fr.index)} designs on the front, of "
+           f"{len(cols['feasible'])} evaluated ({feas} feasible)"
+           + ("" if info.get("complete") else "; the run has not finished"), line(heads)]
+    out += [line(r) for r in rows]
+    if not rows:
+        out.append("  (no feasible design: every evaluated design breaks a constraint)")
+    return "\n".join(out)

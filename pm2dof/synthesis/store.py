@@ -29,7 +29,7 @@ from ..infra.results import provenance, write_atomic, write_json
 
 __all__ = ["DesignOutError", "identity", "prepare_out", "chunk_hash", "chunk_path",
            "find_chunk", "write_chunk", "read_chunk", "finish_out", "read_designs",
-           "objective_senses"]
+           "objective_senses", "units"]
 
 
 class DesignOutError(Pm2dofError, ValueError):
@@ -52,6 +52,18 @@ def _plain(x):
 def objective_senses(study):
     """[{"name", "sense"}] of the study's objectives, in order."""
     return [{"name": o.name, "sense": o.sense} for o in study.objectives]
+
+
+def units(study):
+    """{objective or constraint name: unit} (None where unknown): the record's ``unit``, else
+    ``objectives.UNITS[measure]`` when the objectives module defines it."""
+    try:
+        from . import objectives
+        table = getattr(objectives, "UNITS", {})
+    except ImportError:                   # the measures are not installed with this layer
+        table = {}
+    return {o.name: getattr(o, "unit", None) or table.get(o.measure)
+            for o in (*study.objectives, *study.constraints)}
 
 
 def _inputs(study, model_sha256=None):
@@ -120,7 +132,7 @@ def prepare_out(out, study, ident, model=None, command_line=None):
                       "study_text": _text(study.path), "inputs": _inputs(study),
                       "variables": list(study.variables),
                       "bounds": [list(map(float, b)) for b in study.bounds],
-                      "objectives": objective_senses(study),
+                      "objectives": objective_senses(study), "units": units(study),
                       "constraints": [{"name": c.name, "op": c.op, "limit": c.limit}
                                       for c in study.constraints],
                       "optimizer": _plain(study.optimizer), "model_file": study.model_path,

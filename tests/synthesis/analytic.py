@@ -59,15 +59,17 @@ class Study:
     file_sha256: str
 
 
-def study(optimizer=None, constrained=False, variables=("la", "lb"), name="analytic"):
+def study(optimizer=None, constrained=False, variables=("la", "lb"), name="analytic",
+          bounds=None):
     """A stand-in design study on the paper's robot (its model file only names the model)."""
     opt = {"kind": "nsga2", "population": 20, "generations": 6, "grid": 10, "seed": 7}
     opt.update(optimizer or {})
     cons = (Objective("reach", "margin", "", {}, 0.3, "ge"),) if constrained else ()
-    text = f"{name} {sorted(opt.items())} {constrained} {variables}"
+    bounds = tuple(map(tuple, bounds)) if bounds else ((0.0, 1.0),) * len(variables)
+    text = f"{name} {sorted(opt.items())} {constrained} {variables} {bounds}"
     return Study(name=name, path=f"/nowhere/{name}.toml",
                  model_path=str(SHIPPED_MODELS / "shang2010.toml"), variables=tuple(variables),
-                 bounds=((0.0, 1.0),) * len(variables),
+                 bounds=bounds,
                  region={"x": (0.2, 0.3), "y": (0.2, 0.3), "phi": None, "n": 5}, paths=(),
                  objectives=(Objective("f1", "analytic", "min"),
                              Objective("score", "analytic", "max")),
@@ -76,21 +78,24 @@ def study(optimizer=None, constrained=False, variables=("la", "lb"), name="analy
 
 
 def evaluate_batch(study, X):
-    """``objectives.evaluate_batch``'s contract on :func:`zdt`: ``score = -f2`` is maximised,
-    so ``F = [f1, -score]``; the constraint ``reach = x1 + x2 >= 0.3``."""
+    """``objectives.evaluate_batch``'s contract on :func:`zdt` of the designs scaled to the unit
+    square by the study's bounds: ``score = -f2`` is maximised, so ``F = [f1, -score]``; the
+    constraint ``reach = u1 + u2 >= 0.3``."""
     import os
     import time
     delay = float(os.environ.get(DELAY_ENV, "0"))
     if delay:
         time.sleep(delay * len(X))
     X = np.asarray(X, dtype=float)
-    F, G = zdt(X, constrained=bool(study.constraints))
+    lo, hi = np.array(study.bounds, dtype=float).T
+    U = (X - lo) / (hi - lo)                    # ZDT1 on the unit square
+    F, G = zdt(U, constrained=bool(study.constraints))
     rows = []
-    for x, f, g in zip(X, F, G):
+    for x, u, f in zip(X, U, F):
         row = dict(zip(study.variables, map(float, x)))
         row.update(f1=float(f[0]), score=float(-f[1]), status="ok")
         if study.constraints:
-            row["reach"] = float(x[0] + x[1])
+            row["reach"] = float(u[0] + u[1])
         rows.append(row)
     return F, G, rows
 
