@@ -159,3 +159,36 @@ def test_pick_writes_a_model_file_at_the_design(tmp_path, capsys, stand_ins):
     np.testing.assert_array_equal(spec.theta_nominal, fixed.theta_nominal)
     rc, _, err = _main(capsys, "design", "pick", out, len(front), "--out", picked)
     assert rc == 2 and f"INDEX must be in 0..{len(front) - 1}" in err
+
+
+@pytest.mark.parametrize("model, table, values, check", [
+    ("prr_point", 'rs = { keys = ["legs.2.rail.start.y", "legs.2.rail.end.y"], '
+     'bounds = [0.4, 0.6] }\nlb = { keys = ["legs.1.lb", "legs.2.lb", "legs.3.lb"], '
+     'bounds = [0.25, 0.35] }',
+     {"rs": 0.52, "lb": 0.31},
+     lambda legs: (legs[1].base[1], legs[1].rail_end[1], legs[0].lb, legs[2].lb)
+     == (0.52, 0.52, 0.31, 0.31) and legs[1].base[0] == 0.0 and legs[1].rail_end[0] == 0.5),
+    ("rrr3_platform", '# a comment inside the table\n'
+     'a3y = { keys = ["legs.3.attach.y"], bounds = [0.03, 0.07] }',
+     {"a3y": 0.061},
+     lambda legs: legs[2].attach == (0.0, 0.061) and legs[0].attach == (-0.0433, -0.025)),
+], ids=["prr_point", "rrr3_platform"])
+def test_text_at_design_on_rails_and_attachments(tmp_path, model, table, values, check):
+    """The text edit on the other designable keys (a rail moved sideways, an attachment
+    point), read back as model files: the legs carry the values, everything else of the
+    file is the same (TOML-equal)."""
+    import tomllib
+
+    from pm2dof.core.paths import SHIPPED_MODELS
+    from pm2dof.synthesis.pick import text_at_design
+    text = (SHIPPED_MODELS / f"{model}.toml").read_text()
+    text = text.replace("\n[nominal]", f"\n[design]\n{table}\n\n[nominal]", 1)
+    new, expected = text_at_design(text, values)
+    assert tomllib.loads(new) == expected
+    assert {k: v for k, v in tomllib.loads(text).items() if k not in ("design", "legs")} == \
+        {k: v for k, v in expected.items() if k != "legs"}
+    assert "[design]" not in new and "a comment inside the table" not in new
+    assert new.count("\n#") == text.count("\n#") - table.count("# ")   # other comments kept
+    p = tmp_path / f"{model}.toml"
+    p.write_text(new)
+    assert check(read_model_file(p).legs)
