@@ -227,7 +227,7 @@ def _step_function(d, prefix, lay, name, split, nodes, inputs, extra):
     state_next = lay["ctrl_state"].pack(xe_prev=ca.if_else(carry, xe, st["xe_prev"]),
                                         v=ca.if_else(carry, v, st["v"]), theta_hat=theta_out)
     diag = lay["diag"].pack(xe=xe, v=v, e=e, edot=edot, sing=sing)
-    return ca.Function(
+    return d.function(
         f"{prefix}_{name}_step", inputs + [sx for _, sx in extra],
         [tau_out, state_next, status, diag],
         list(STEP_INPUTS) + [k for k, _ in extra], list(STEP_OUTPUTS))

@@ -34,7 +34,6 @@ Sizes below for the task dimension m (2: a point, 3: a platform):
 import casadi as ca
 
 from .factored import inverse_small, solve_small, task_gravity, task_inertia_coriolis
-from .to_casadi import Converter
 
 __all__ = ["derivative_functions", "DERIVATIVE_FUNCTIONS"]
 
@@ -79,8 +78,8 @@ class _TrigForm:
         self.pose = ca.SX.sym("pose", d.m)
         values = {sym.q[k]: self.r[j] for j, k in enumerate(self.lengths)}
         values.update(zip(sym.xe, ca.vertsplit(self.pose)))
-        conv = Converter(values,
-                         {sym.q[k]: (self.c[j], self.s[j]) for j, k in enumerate(self.angles)})
+        conv = d.converter(values,
+                           {sym.q[k]: (self.c[j], self.s[j]) for j, k in enumerate(self.angles)})
         self.Me, self.Ce_v, self.S, self.W = task_inertia_coriolis(d, conv, xed,
                                                                    [(sym.theta, theta)])
         f_a = conv.extended([(sym.qd, self.W @ xed), (sym.theta, theta)])(d.dyn.f_a)  # eq. 2
@@ -149,8 +148,8 @@ def derivative_functions(d, prefix, substeps, finalize):
         """A named function of ``ins``; ``outs`` (name, expression in c, s) are bound to the
         pose xe and the singularity measures ``sing`` appended."""
         exprs, sing = tf.at_pose([v for _, v in outs], xe)
-        f = finalize(ca.Function(f"{prefix}_{name}", [v for _, v in ins], exprs + [sing],
-                                 [k for k, _ in ins], [k for k, _ in outs] + ["sing"]))
+        f = finalize(d.function(f"{prefix}_{name}", [v for _, v in ins], exprs + [sing],
+                                [k for k, _ in ins], [k for k, _ in outs] + ["sing"]))
         if export:
             out.append(f)
         return f
@@ -193,9 +192,14 @@ def _sampled_step(prefix, n, p, m, substeps, fd_value, fd_jac):
     theta, T = ca.MX.sym("theta", p), ca.MX.sym("T")
     h = T / substeps
     names_in = ["x", "tau_a", "theta", "T"]
+    ins = [x, tau, theta, T]
+    design = []          # the [design] input, passed on to the forward dynamics that take it
+    if fd_value.name_in(fd_value.n_in() - 1) == "design":
+        design = [ca.MX.sym("design", fd_value.size1_in(fd_value.n_in() - 1))]
+        names_in, ins = names_in + ["design"], ins + design
 
     def rhs(z):
-        xedd, sing = fd_value(z[0:m], z[m:2 * m], tau, theta)
+        xedd, sing = fd_value(z[0:m], z[m:2 * m], tau, theta, *design)
         return ca.vertcat(z[m:2 * m], xedd), sing
 
     z, sing0 = x, None
@@ -206,7 +210,7 @@ def _sampled_step(prefix, n, p, m, substeps, fd_value, fd_jac):
         k3, _ = rhs(z + h / 2 * k2)
         k4, _ = rhs(z + h * k3)
         z = z + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-    step = ca.Function(f"{prefix}_sampled_step", [x, tau, theta, T], [z, sing0], names_in,
+    step = ca.Function(f"{prefix}_sampled_step", ins, [z, sing0], names_in,
                        ["x_next", "sing"])
 
     # forward-mode AD over the same stages (the variational equations of RK4):
@@ -214,7 +218,7 @@ def _sampled_step(prefix, n, p, m, substeps, fd_value, fd_jac):
 
     def rhs_jac(z, Dz):
         """k = f(z) and d k / d [x, tau_a] = d f / d z Dz + [0, d f / d tau_a]."""
-        xedd, d_xe, d_xed, d_tau, _, sing = fd_jac(z[0:m], z[m:2 * m], tau, theta)
+        xedd, d_xe, d_xed, d_tau, _, sing = fd_jac(z[0:m], z[m:2 * m], tau, theta, *design)
         Ja_z = ca.horzcat(_rows(d_xe, m, m), _rows(d_xed, m, m))           # (m, 2m)
         dk = ca.vertcat(Dz[m:2 * m, :],
                         Ja_z @ Dz + ca.horzcat(ca.MX.zeros(m, 2 * m), _rows(d_tau, m, n)))
@@ -229,7 +233,7 @@ def _sampled_step(prefix, n, p, m, substeps, fd_value, fd_jac):
         k4, D4, _ = rhs_jac(z + h * k3, D + h * D3)
         z = z + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
         D = D + h / 6 * (D1 + 2 * D2 + 2 * D3 + D4)
-    step_jac = ca.Function(f"{prefix}_sampled_step_jacobians", [x, tau, theta, T],
+    step_jac = ca.Function(f"{prefix}_sampled_step_jacobians", ins,
                            [z, _row_major(D[:, 0:2 * m]), _row_major(D[:, 2 * m:]), sing0], names_in,
                            ["x_next", "d_x", "d_tau_a", "sing"])
     return [step, step_jac]

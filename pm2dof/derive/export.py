@@ -54,6 +54,15 @@ def _sing_lines(n, m):
             f" *         over sqrt(n/{m}) (type II, actuation)]"]
 
 
+def _design_lines(spec):
+    """The header's line on the [design] input (none without a [design] table)."""
+    design = getattr(spec, "design", None)
+    if design is None:
+        return []
+    return [f" * design = [{', '.join(design.names)}]  the model file's [design] variables, m: "
+            "the last input of every function that lists it"]
+
+
 def _header_doc(spec, functions, layouts, status_codes, task_names=("x", "y")):
     """A comment block for the top of the generated header: argument order and layouts."""
     n = spec.n_legs
@@ -70,6 +79,7 @@ def _header_doc(spec, functions, layouts, status_codes, task_names=("x", "y")):
         _task_line(task_names),
         f" * theta = [{', '.join(spec.param_names)}]",
         *_sing_lines(n, len(task_names)),
+        *_design_lines(spec),
         " *",
         " * Functions (inputs -> outputs, element counts):",
     ]

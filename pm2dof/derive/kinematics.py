@@ -73,10 +73,10 @@ class Kinematics:
         #: which coordinates of q are angles (get a cos/sin in the converters); prismatic
         #: coordinates (PRR, RPR actuators) are lengths
         self.angular = [k == "RRR" for k in self.kinds] + [True] * n
-        self.A_base = [sp.Matrix([_exact(c) for c in leg.base]) for leg in legs]
-        self.la = [_exact(leg.la) if leg.la is not None else None for leg in legs]
-        self.lb = [_exact(leg.lb) if leg.lb is not None else None for leg in legs]
-        self.rail = [self._rail_direction(leg) for leg in legs]      # PRR: unit d_i
+        self.A_base = [sp.Matrix(self._point(i, "base")) for i in range(n)]
+        self.la = [self._geom(i, "la") if leg.la is not None else None for i, leg in enumerate(legs)]
+        self.lb = [self._geom(i, "lb") if leg.lb is not None else None for i, leg in enumerate(legs)]
+        self.rail = [self._rail_direction(i) for i in range(n)]      # PRR: unit d_i
         self.P = [self._attachment(i) for i in range(n)]              # P_i(xe)
         self.tips = [self._tip(i) for i in range(n)]
         if not self.platform:
@@ -105,10 +105,24 @@ class Kinematics:
 
     # ---- geometry per leg kind ----
 
-    def _rail_direction(self, leg):
+    def _geom(self, i, field, comp=None):
+        """Leg i's geometric number ``field`` (entry ``comp`` of a point): the exact decimal of the
+        model file, or the symbol of the [design] variable that sets it (a run-time input)."""
+        designed = getattr(self.sym, "design_of", {}).get((i, field, comp))
+        if designed is not None:
+            return designed
+        value = getattr(self.spec.legs[i], field)
+        return _exact(value if comp is None else value[comp])
+
+    def _point(self, i, field):
+        """Leg i's point ``field`` ("base", "attach", "rail_end") as [x, y] (:meth:`_geom`)."""
+        return [self._geom(i, field, 0), self._geom(i, field, 1)]
+
+    def _rail_direction(self, i):
+        leg = self.spec.legs[i]
         if leg.kind != "PRR":
             return None
-        d = [_exact(e) - _exact(b) for e, b in zip(leg.rail_end, leg.base)]
+        d = [e - b for e, b in zip(self._point(i, "rail_end"), self._point(i, "base"))]
         length = sp.sqrt(d[0] ** 2 + d[1] ** 2)
         return sp.Matrix([d[0] / length, d[1] / length])
 
@@ -117,7 +131,7 @@ class Kinematics:
         xe = self.sym.xe
         if not self.platform:
             return xe
-        a = [_exact(c) for c in self.spec.legs[i].attach]
+        a = self._point(i, "attach")
         c, s = sp.cos(xe[2]), sp.sin(xe[2])
         return sp.Matrix([xe[0] + c * a[0] - s * a[1], xe[1] + s * a[0] + c * a[1]])
 
@@ -150,7 +164,7 @@ class Kinematics:
         t1, t2 = self.tips[0], self.tips[1]
         if not self.platform:
             return t1
-        a1, a2 = ([_exact(c) for c in self.spec.legs[i].attach] for i in (0, 1))
+        a1, a2 = (self._point(i, "attach") for i in (0, 1))
         da = sp.Matrix([a2[0] - a1[0], a2[1] - a1[1]])
         dt = t2 - t1
         phi = sp.atan2(_cross(da, dt), (da.T * dt)[0])
@@ -193,6 +207,9 @@ class Kinematics:
     def moment_length(self):
         """L, m: the platform's characteristic length, the RMS distance of its attachment points
         from its origin. Type II scales moments by 1/L to compare them with forces."""
+        if any(key[1] == "attach" for key in getattr(self.sym, "design_of", {})):
+            a = [self._point(i, "attach") for i in range(self.spec.n_legs)]
+            return sp.sqrt(sum(x ** 2 + y ** 2 for x, y in a) / len(a))
         a2 = [leg.attach[0] ** 2 + leg.attach[1] ** 2 for leg in self.spec.legs]
         return _exact((sum(a2) / len(a2)) ** 0.5)   # a scale: its rounding does not matter
 

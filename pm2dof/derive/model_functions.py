@@ -17,7 +17,7 @@ class Derivation:
     def __init__(self, spec):
         self.spec = spec
         self.sym = Symbols(spec.n_legs, spec.param_names,
-                           tuple(spec.task_names))
+                           tuple(spec.task_names), getattr(spec, "design", None))
         self.kin = Kinematics(spec, self.sym)
         self.dyn = Dynamics(spec, self.sym, self.kin)
         self._setup()
@@ -38,6 +38,27 @@ class Derivation:
         self.angular = list(getattr(self.kin, "angular", [True] * len(self.sym.q)))
         self._preload = None
         self._pose = None
+        # the [design] variables: one SX input ``design`` (k,) of every function whose graph
+        # depends on them (:meth:`function`); none without [design]
+        design = list(getattr(self.sym, "design", []))
+        self.design_sx = ca.SX.sym("design", len(design)) if design else None
+        self._g = dict(zip(design, ca.vertsplit(self.design_sx))) if design else {}
+
+    def converter(self, symbols, trig=None, lazy=None):
+        """A Converter of ``symbols`` that also knows the [design] symbols."""
+        return Converter({**self._g, **symbols}, trig, lazy)
+
+    def function(self, name, ins, outs, names_in, names_out):
+        """``ca.Function(name, ins, outs, names_in, names_out)``, with the input ``design``
+        appended when an output depends on it (an SX function; without [design]: unchanged)."""
+        if self.design_sx is not None and any(ca.depends_on(o, self.design_sx) for o in outs):
+            ins, names_in = list(ins) + [self.design_sx], list(names_in) + ["design"]
+        return ca.Function(name, ins, outs, names_in, names_out)
+
+    def design_args(self, f, design):
+        """[design] when ``f``'s last input is ``design`` (pass it on in a call), else []."""
+        takes = f.n_in() > 0 and f.name_in(f.n_in() - 1) == "design"
+        return [design] if takes else []
 
     def pose_of_qa(self):
         """{task symbol: its expression by fk in the active coordinates}: where a matrix of q
@@ -58,7 +79,7 @@ class Derivation:
         from ``seed`` (m,), in the measured qa of ``symbols``."""
         from .kinematics import FK_NEWTON_TOL
         xe = ca.SX.sym("xe_newton", self.m)
-        conv = Converter({**symbols, **dict(zip(self.sym.xe, ca.vertsplit(xe)))}, dict(trig))
+        conv = self.converter({**symbols, **dict(zip(self.sym.xe, ca.vertsplit(xe)))}, dict(trig))
         step = conv(self.kin.fk_newton_step())
         O = seed
         for _ in range(steps):
@@ -87,7 +108,7 @@ class Derivation:
     def converter_q(self, q, extra=()):
         """Converter for functions of the joint coordinates q: one cos/sin per angle."""
         sym = self.sym
-        symbols = dict(zip(sym.q, ca.vertsplit(q)))
+        symbols = {**self._g, **dict(zip(sym.q, ca.vertsplit(q)))}
         trig = {s: (ca.cos(symbols[s]), ca.sin(symbols[s])) for s in self._angles(sym.q)}
         for syms, value in extra:
             symbols.update(zip(syms, ca.vertsplit(value)))
@@ -96,7 +117,7 @@ class Derivation:
     def converter_xe(self, xe, extra=()):
         """Converter for functions of the task pose: joint directions from geometry, no trig;
         prismatic coordinates from the inverse kinematics."""
-        symbols = dict(zip(self.sym.xe, ca.vertsplit(xe)))
+        symbols = {**self._g, **dict(zip(self.sym.xe, ca.vertsplit(xe)))}
         for syms, value in extra:
             symbols.update(zip(syms, ca.vertsplit(value)))
         base = Converter(symbols)
@@ -113,7 +134,7 @@ class Derivation:
         steps, default FK_NEWTON_STEPS, from ``seed``, an SX pose; default [platform] home)."""
         from .kinematics import FK_NEWTON_STEPS
         sym = self.sym
-        symbols = dict(zip(sym.qa, ca.vertsplit(qa)))
+        symbols = {**self._g, **dict(zip(sym.qa, ca.vertsplit(qa)))}
         for syms, value in extra:
             symbols.update(zip(syms, ca.vertsplit(value)))
         trig = {s: (ca.cos(symbols[s]), ca.sin(symbols[s])) for s in self._angles(sym.qa)}
@@ -233,10 +254,10 @@ def model_functions(d, prefix):
     f = []
 
     def add(name, ins, outs):
-        f.append(ca.Function(f"{prefix}_{name}", [v for _, v in ins], [v for _, v in outs],
-                             [k for k, _ in ins], [k for k, _ in outs]))
+        f.append(d.function(f"{prefix}_{name}", [v for _, v in ins], [v for _, v in outs],
+                            [k for k, _ in ins], [k for k, _ in outs]))
 
-    cv = Converter(dict(zip(sym.xe, ca.vertsplit(xe))))
+    cv = d.converter(dict(zip(sym.xe, ca.vertsplit(xe))))
     add("ik", [("xe", xe)], [("q", assembly_guard(d, cv, cv(kin.ik()), 2 * n))])
     cqa = d.converter_qa(qa)
     O = d.fk_of_qa()
@@ -292,13 +313,13 @@ def energy_functions(d, prefix):
     # (dynamics.py: potential_energy, zero in a horizontal plane)
     T = dyn.T + getattr(dyn, "T_platform", sp.Integer(0))
     V = getattr(dyn, "potential_energy", sp.Integer(0))
-    return [ca.Function(f"{prefix}_Ge", [q, theta],
-                        [cq(_gravity_term(d)), d.singularity_measures(cq)],
-                        ["q", "theta"], ["Ge", "sing"]),
-            ca.Function(f"{prefix}_kinetic_energy", [xe, xed, theta], [ce(T)],
-                        ["xe", "xed", "theta"], ["T"]),
-            ca.Function(f"{prefix}_potential_energy", [xe, theta], [ce(V)],
-                        ["xe", "theta"], ["V"])]
+    return [d.function(f"{prefix}_Ge", [q, theta],
+                       [cq(_gravity_term(d)), d.singularity_measures(cq)],
+                       ["q", "theta"], ["Ge", "sing"]),
+            d.function(f"{prefix}_kinetic_energy", [xe, xed, theta], [ce(T)],
+                       ["xe", "xed", "theta"], ["T"]),
+            d.function(f"{prefix}_potential_energy", [xe, theta], [ce(V)],
+                       ["xe", "theta"], ["V"])]
 
 
 def _gravity_term(d):

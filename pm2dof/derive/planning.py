@@ -449,7 +449,7 @@ def path_functions(d, prefix):
     outs = [("a", Me @ dp), ("b", Me @ ddp + Ce_v)] + gravity + [
         ("S", ca.vec(S.T)), ("v1", S @ dp), ("N_min_norm", N_mn), ("h_min_norm", h_mn),
         ("N_min_max", N_mm), ("h_min_max", h_mm), ("sing", sing)]
-    out = [ca.Function(
+    out = [d.function(
         f"{prefix}_path_coefficients", [pos, dp, ddp, theta, w], [v for _, v in outs],
         ["p", "dp", "ddp", "theta", "tau_max"], [k for k, _ in outs])]
 

@@ -103,20 +103,21 @@ def plant_functions(d, prefix):
     if Ge is not None:                                   # eq. 10 with gravity
         rhs = rhs - Ge
     xedd = solve_small(Me, rhs)
-    f_xedd = ca.Function(f"{prefix}_plant_xedd", [xe, xed, tau, pp], [xedd],
-                         ["xe", "xed", "tau_a", "plant"], ["xedd"])
+    f_xedd = d.function(f"{prefix}_plant_xedd", [xe, xed, tau, pp], [xedd],
+                        ["xe", "xed", "tau_a", "plant"], ["xedd"])
+    design = d.design_args(f_xedd, d.design_sx)
     x = ca.SX.sym("x", 2 * m)
     h = ca.SX.sym("h")
 
     def f(z):
-        return ca.vertcat(z[m:2 * m], f_xedd(z[0:m], z[m:2 * m], tau, pp))
+        return ca.vertcat(z[m:2 * m], f_xedd(z[0:m], z[m:2 * m], tau, pp, *design))
     k1 = f(x)
     k2 = f(x + h / 2 * k1)
     k3 = f(x + h / 2 * k2)
     k4 = f(x + h * k3)
     x_next = x + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)   # classical RK4
-    f_step = ca.Function(f"{prefix}_plant_step", [x, tau, pp, h], [x_next],
-                         ["x", "tau_a", "plant", "h"], ["x_next"])
+    f_step = d.function(f"{prefix}_plant_step", [x, tau, pp, h], [x_next],
+                        ["x", "tau_a", "plant", "h"], ["x_next"])
     # encoder: the active coordinates of the true pose (angles from their unit vectors,
     # prismatic ones from the inverse kinematics), quantised to encoder_step, rad, or
     # linear_encoder_step, m (0: exact)
@@ -130,7 +131,7 @@ def plant_functions(d, prefix):
             q, step = cik(sym.qa[i]), P["linear_encoder_step"]
         qa_meas.append(ca.if_else(step > 0, step * ca.floor(q / step + 0.5), q))
     qa_meas = ca.vertcat(*qa_meas)
-    f_meas = ca.Function(f"{prefix}_measure", [xe, pp], [qa_meas], ["xe", "plant"], ["qa"])
+    f_meas = d.function(f"{prefix}_measure", [xe, pp], [qa_meas], ["xe", "plant"], ["qa"])
     return [f_xedd, f_step, f_meas]
 
 
@@ -157,17 +158,22 @@ def closed_loop_functions(d, prefix, ctrl_fns, plant_fns, substeps):
         X, U = lay["cl_state"].split(x), ulay.split(u)
         cp, pp = prm[:npar], prm[npar:]
         h = cp[ctrl_lay[f"{law}_params"].offsets()["T"][0]] / substeps  # zero-order hold
-        qa = f_meas(X["xe"], pp)
+        # the [design] input of the functions called, one input of the closed loop
+        dm = ca.MX.sym("design", d.design_sx.numel()) if d.design_sx is not None else None
+        qa = f_meas(X["xe"], pp, *d.design_args(f_meas, dm))
         extra = [U[k] for k, _ in per_sample_inputs(law, n, m)]     # e.g. LQR's K_k, tau_ff_k
         tau, cs_next, status, _ = step(X["ctrl_state"], qa, U["xd"], U["xd_dot"], U["xd_ddot"], cp,
-                                       *extra)
+                                       *extra, *d.design_args(step, dm))
         z = ca.vertcat(X["xe"], X["xed"])
         for _ in range(substeps):
-            z = f_step(z, tau, pp, h)
+            z = f_step(z, tau, pp, h, *d.design_args(f_step, dm))
         x_next = ca.vertcat(z, cs_next)
         theta_hat = cs_next[ctrl_lay["ctrl_state"].offsets()["theta_hat"][0]:]
         y = lay["cl_output"].pack(xe=X["xe"], xed=X["xed"], tau_a=tau, status=status,
                                   theta_hat=theta_hat)
-        out.append(ca.Function(f"{prefix}_{name}_closed_loop", [x, u, prm], [x_next, y],
-                               ["x", "u", "p"], ["x_next", "y"]))
+        ins, names_in = [x, u, prm], ["x", "u", "p"]
+        if dm is not None:
+            ins, names_in = ins + [dm], names_in + ["design"]
+        out.append(ca.Function(f"{prefix}_{name}_closed_loop", ins, [x_next, y],
+                               names_in, ["x_next", "y"]))
     return out

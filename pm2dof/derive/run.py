@@ -111,6 +111,11 @@ def derive(model, out=None, *, force=False, build=True, progress=print):
     extra = {"layouts": {k: v.to_json() for k, v in derive_layouts(d).items()},
              "status_codes": STATUS, "rk4_substeps": spec.rk4_substeps,
              "task_names": list(task_names(d))}      # the task dimension m and its coordinates
+    design = getattr(spec, "design", None)
+    if design is not None:   # the functions' input ``design``: its order; defaults for reference
+        extra["design"] = {"names": list(design.names),
+                           "keys": [list(labels) for labels in design.labels],
+                           "default": list(design.default), "bounds": [list(b) for b in design.bounds]}
     # the model file as seen from the output folder, so the pair can be moved together
     label = Path(os.path.relpath(model_path.resolve(), out.resolve())).as_posix()
     manifest = export(spec, functions, out, label, extra, task_names(d))

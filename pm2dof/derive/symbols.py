@@ -44,7 +44,7 @@ class sgn(sp.Function):
 class Symbols:
     """All symbols for an n-leg model; names follow the paper (q = [qa; qb], theta, ...)."""
 
-    def __init__(self, n_legs, param_names, task_names=("x", "y")):
+    def __init__(self, n_legs, param_names, task_names=("x", "y"), design=None):
         n = n_legs
         self.n, self.m = n, len(task_names)       # legs, task-space dimension
         self.qa = sp.Matrix(sp.symbols(f"qa1:{n + 1}", real=True))
@@ -64,6 +64,16 @@ class Symbols:
         self.qddr = sp.Matrix(sp.symbols(f"qddra1:{n + 1}", real=True) + sp.symbols(f"qddrb1:{n + 1}", real=True))
         self.theta = sp.Matrix(sp.symbols(" ".join(param_names), real=True))
         self.param = dict(zip(param_names, self.theta))
+        # a model file's [design] variables (core/design.py): symbols that stay in the generated
+        # C as its input ``design``; their signs over the bounds are SymPy assumptions
+        # (Model.at_design keeps values inside the bounds), so sqrt(la**2) folds to la
+        signs = {1: {"positive": True}, -1: {"negative": True}, 0: {}}
+        self.design = sp.Matrix([sp.Symbol(f"design_{name}", real=True, **signs[sign])
+                                 for name, sign in zip(design.names, design.signs)]
+                                if design is not None else [])
+        #: {(leg, field, component): its design symbol}
+        self.design_of = ({key: self.design[j] for j, keys in enumerate(design.keys)
+                           for key in keys} if design is not None else {})
 
     def leg_params(self, i, names):
         """Parameters of leg i (0-based) for the given base names, e.g. ("alpha", "beta")."""
