@@ -9,10 +9,11 @@ The model file of the run is copied line by line; only two things change:
 * the ``[design]`` table is removed (its header, its keys and the comments among them; the
   comments above it, and those directly above the next table, are kept).
 
-A line at the top says where the design came from. The result is checked twice before it is
+A line at the top says where the design came from. The result is checked before it is
 returned: parsed as TOML it equals the original with those values set and without
 ``[design]``; read as a model file (:func:`pm2dof.core.model_file.read_model_file`) its legs
-carry the design's values exactly. ``pm2dof derive`` then derives it as any fixed model.
+carry the design's values exactly, and equal those of
+:func:`pm2dof.core.design.spec_at_design` on the original (what ``Model.at_design`` uses). ``pm2dof derive`` then derives it as any fixed model.
 """
 import copy
 import re
@@ -228,6 +229,11 @@ def pick_design(out, index, path, command_line=None):
             got = _spec_value(spec.legs[i], key, sub)
             if got != float(value):
                 raise DesignError(f"{dest}: {label} reads back as {got!r}, not {value!r}")
+    from ..core.design import spec_at_design
+    want = spec_at_design(read_model_file(model_file), values)   # the model API's route
+    if spec.legs != want.legs:
+        raise DesignError(f"{dest}: its legs differ from the model file's at the design "
+                          f"(Model.at_design's): {spec.legs} != {want.legs}")
     return dest, values
 
 

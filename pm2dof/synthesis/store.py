@@ -54,16 +54,12 @@ def objective_senses(study):
     return [{"name": o.name, "sense": o.sense} for o in study.objectives]
 
 
-def units(study):
-    """{objective or constraint name: unit} (None where unknown): the record's ``unit``, else
-    ``objectives.UNITS[measure]`` when the objectives module defines it."""
-    try:
-        from . import objectives
-        table = getattr(objectives, "UNITS", {})
-    except ImportError:                   # the measures are not installed with this layer
-        table = {}
-    return {o.name: getattr(o, "unit", None) or table.get(o.measure)
-            for o in (*study.objectives, *study.constraints)}
+def units(study, model):
+    """{objective or constraint name: unit} (:func:`.objectives.units`; {} without a model)."""
+    if model is None:
+        return {}
+    from .objectives import units as of
+    return of(study, model)
 
 
 def _inputs(study, model_sha256=None):
@@ -132,7 +128,7 @@ def prepare_out(out, study, ident, model=None, command_line=None):
                       "study_text": _text(study.path), "inputs": _inputs(study),
                       "variables": list(study.variables),
                       "bounds": [list(map(float, b)) for b in study.bounds],
-                      "objectives": objective_senses(study), "units": units(study),
+                      "objectives": objective_senses(study), "units": units(study, model),
                       "constraints": [{"name": c.name, "op": c.op, "limit": c.limit}
                                       for c in study.constraints],
                       "optimizer": _plain(study.optimizer), "model_file": study.model_path,

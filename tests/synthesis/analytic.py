@@ -61,14 +61,15 @@ class Study:
 
 def study(optimizer=None, constrained=False, variables=("la", "lb"), name="analytic",
           bounds=None):
-    """A stand-in design study on the paper's robot (its model file only names the model)."""
+    """A stand-in design study on the paper's robot with la and lb as design variables (its
+    model file: the shipped shang2010_design)."""
     opt = {"kind": "nsga2", "population": 20, "generations": 6, "grid": 10, "seed": 7}
     opt.update(optimizer or {})
     cons = (Objective("reach", "margin", "", {}, 0.3, "ge"),) if constrained else ()
     bounds = tuple(map(tuple, bounds)) if bounds else ((0.0, 1.0),) * len(variables)
     text = f"{name} {sorted(opt.items())} {constrained} {variables} {bounds}"
     return Study(name=name, path=f"/nowhere/{name}.toml",
-                 model_path=str(SHIPPED_MODELS / "shang2010.toml"), variables=tuple(variables),
+                 model_path=str(SHIPPED_MODELS / "shang2010_design.toml"), variables=tuple(variables),
                  bounds=bounds,
                  region={"x": (0.2, 0.3), "y": (0.2, 0.3), "phi": None, "n": 5}, paths=(),
                  objectives=(Objective("f1", "analytic", "min"),

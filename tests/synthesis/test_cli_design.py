@@ -7,8 +7,8 @@ writes the figures; ``pick`` writes a model file that reads back at the design.
 The study file reader and the objectives are stand-ins (tests/synthesis/analytic.py) put in
 place of ``pm2dof.synthesis.spec`` and ``.objectives``; the cluster is an in-process one
 (threads) in place of the embedded LocalCluster's processes (tests/synthesis/test_runner.py
-runs those); ``Model.at_design`` returns the model itself, the default design, until the
-model API lands."""
+runs those). The model is the shipped shang2010_design, drawn at each design by
+``Model.at_design``."""
 import json
 import re
 import sys
@@ -18,7 +18,6 @@ import numpy as np
 import pytest
 
 from pm2dof import cli
-from pm2dof.core.model import Model
 from pm2dof.core.model_file import read_model_file
 from pm2dof.synthesis import runner
 from pm2dof.synthesis.front import read_front
@@ -53,7 +52,7 @@ def stand_ins(monkeypatch):
     spec.with_overrides = with_overrides
     objectives = types.ModuleType("pm2dof.synthesis.objectives")
     objectives.evaluate_batch = analytic.evaluate_batch
-    objectives.UNITS = {"analytic": "J"}
+    objectives.units = lambda study, model: {o.name: "J" for o in study.objectives}
     monkeypatch.setitem(sys.modules, "pm2dof.synthesis.spec", spec)
     monkeypatch.setitem(sys.modules, "pm2dof.synthesis.objectives", objectives)
 
@@ -67,7 +66,6 @@ def stand_ins(monkeypatch):
         return client
 
     monkeypatch.setattr(runner, "connect", connect)
-    monkeypatch.setattr(Model, "at_design", lambda self, values: self, raising=False)
     return made
 
 
@@ -135,12 +133,6 @@ def test_pick_writes_a_model_file_at_the_design(tmp_path, capsys, stand_ins):
                           "--json", "--quiet")
     assert rc == 0, err
     front = json.loads(text)["front"]
-    # the run's model file with a [design] table (the stand-in ran on the fixed file, which
-    # load_model reads today)
-    design_file = analytic.model_file(tmp_path)
-    info = json.loads((out / "design.json").read_text())
-    info["model_file"] = str(design_file)
-    (out / "design.json").write_text(json.dumps(info))
     i = len(front) - 1
     picked = tmp_path / "my_robot.toml"
     rc, text, err = _main(capsys, "design", "pick", out, i, "--out", picked)
@@ -154,7 +146,7 @@ def test_pick_writes_a_model_file_at_the_design(tmp_path, capsys, stand_ins):
     assert [leg.la for leg in spec.legs] == [want["la"]] * 3
     assert [leg.lb for leg in spec.legs] == [want["lb"]] * 3
     assert spec.legs[1].base == (0.433, 0.0)                 # b2x not searched: the file's
-    fixed = read_model_file(analytic.SHIPPED_MODELS / "shang2010.toml")
+    fixed = read_model_file(analytic.SHIPPED_MODELS / "shang2010_design.toml")
     assert spec.legs[0].base == fixed.legs[0].base
     np.testing.assert_array_equal(spec.theta_nominal, fixed.theta_nominal)
     rc, _, err = _main(capsys, "design", "pick", out, len(front), "--out", picked)
