@@ -19,7 +19,8 @@ COMMANDS_DIR = Path(cli.__file__).resolve().parent / "commands"
 
 #: the command lines whose --help tests/cli_expected/help/ holds (besides `pm2dof --help`)
 SUB_COMMANDS = {"identify": ["report", "excite", "fit", "design", "monte-carlo"],
-                "study": ["run", "show", "report", "bench"]}
+                "study": ["run", "show", "report", "bench"],
+                "design": ["run", "show", "pick"]}
 HELP_LINES = [[]] + [[c] for c in COMMANDS] + [[c, s] for c, subs in SUB_COMMANDS.items()
                                                for s in subs]
 

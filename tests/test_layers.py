@@ -39,11 +39,14 @@ ALLOWED = {
     "bench": _RUNTIME | {"infra", "reference", "bench", "derive", "planning", "linear"},
     "export": _RUNTIME | {"export"},                    # beside bench: C projects
     "studies": _RUNTIME | {"infra", "identification", "studies", "linear"},   # 3: Dask
-    "figures": _RUNTIME | {"infra", "analysis", "studies", "figures", "planning", "linear"},  # 4
+    # 3: design studies (pymoo's optimisers, Dask, Parquet), at the studies' level
+    "synthesis": _RUNTIME | {"infra", "analysis", "planning", "linear", "studies", "synthesis"},
+    "figures": _RUNTIME | {"infra", "analysis", "studies", "synthesis", "figures", "planning",
+                           "linear"},                                                     # 4
     # 4: the CLI, a package: its commands (cli/commands/), their registry, the shared options
     # and the error mapping; it may import every layer, and no layer imports it
-    "cli": _RUNTIME | {"infra", "analysis", "identification", "bench", "studies", "figures",
-                       "cli", "derive", "planning", "linear", "export"},                  # 4
+    "cli": _RUNTIME | {"infra", "analysis", "identification", "bench", "studies", "synthesis",
+                       "figures", "cli", "derive", "planning", "linear", "export"},       # 4
     "__init__": _RUNTIME,                               # the public API (lazy names aside)
     "__main__": {"cli"},
 }
@@ -60,6 +63,7 @@ THIRD_PARTY = {
     "derive": {"numpy", "sympy", "casadi"},             # the [derive] extra
     "bench": {"numpy", "casadi", "sympy", "toppra", "pinocchio", "mujoco"},  # optional baselines
     "studies": {"numpy", "dask", "distributed", "pyarrow"},
+    "synthesis": {"numpy", "pymoo", "dask", "distributed", "pyarrow"},   # the design extra; lazily
     "planning": {"numpy", "casadi"},                    # CasADi only in plan_smooth (lazily)
     "export": {"numpy"},                                # copies generated C: no CasADi
     "figures": {"numpy", "matplotlib", "PIL", "pyarrow"},

@@ -15,6 +15,8 @@ Typical use:
   pm2dof study run S.toml --out DIR   many rollouts on Dask (robustness, gains, adaptation,
                               model_based)
   pm2dof study report DIR     summary tables and figures of a study's results
+  pm2dof design run S.toml --out DIR   search a model's geometry (NSGA-II, GA, a grid)
+  pm2dof design pick DIR I --out F     a plain model file at a design of the front
   pm2dof plan [--path P]      time-optimal motion along a path, with either torque split
   pm2dof bench [--json]       controller step time: C, Python binding, CasADi, NumPy, SymPy
   pm2dof models               the shipped models, with their descriptions

@@ -17,8 +17,8 @@ __all__ = ["run", "EXTRAS", "COMMAND_EXTRAS"]
 
 #: optional dependencies -> the extra that installs them (pyproject.toml)
 EXTRAS = {"sympy": "derive", "casadi": "derive", "dask": "studies", "distributed": "studies",
-          "pyarrow": "studies", "scipy": "ident", "control": "control"}
-COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies",
+          "pyarrow": "studies", "scipy": "ident", "control": "control", "pymoo": "design"}
+COMMAND_EXTRAS = {"derive": "derive", "identify": "ident", "study": "studies", "design": "design",
                   "table3": "control",     # table3 --include lqr: SciPy's Riccati solver
                   "simulate": "control"}   # simulate --controller lqr: the same
 

@@ -23,7 +23,8 @@ from .evaluate import run_chunk
 from .spec import check_study
 from .store import finish_out, prepare_out, write_chunk
 
-__all__ = ["StudyRunError", "run_study", "format_notice", "format_run", "connect", "Progress"]
+__all__ = ["StudyRunError", "run_study", "format_notice", "format_run", "connect", "disconnect",
+           "dashboard_link", "Progress"]
 
 
 #: Dask settings of the embedded cluster, throughput over introspection. Each of the worker's
@@ -93,7 +94,8 @@ def connect(workers=None, scheduler=None, timeout=10.0):
     return client
 
 
-def _close(client):
+def disconnect(client):
+    """Close a client of :func:`connect`, and its embedded cluster if it started one."""
     cluster = getattr(client, "_pm2dof_owns_cluster", None)
     client.close()
     if cluster is not None:
@@ -170,7 +172,7 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
         nthreads = sum(client.nthreads().values()) or 1
         where = scheduler or f"a local cluster of {nthreads} worker process(es)"
         notify({"where": where,
-                "dashboard": client.dashboard_link if _has_dashboard(client) else None})
+                "dashboard": dashboard_link(client)})
         pending = iter(todo)
         ac, index = as_completed(), {}
 
@@ -199,7 +201,7 @@ def run_study(study, out, *, workers=None, scheduler=None, client=None, timeout=
     finally:
         bar.close()
         if own:
-            _close(client)
+            disconnect(client)
     dt = time.perf_counter() - t0
     n = study.n_rollouts - rows_done
     return {"rows": finish_out(out, study), "chunks": study.n_chunks, "skipped": len(done),
@@ -230,8 +232,11 @@ def format_run(res, out):
             f"terminal). Next: pm2dof study report {out}")
 
 
-def _has_dashboard(client):
+def dashboard_link(client):
+    """The link of the cluster's dashboard, or None when it has none (no bokeh installed)."""
     try:
-        return bool(client.dashboard_link) and importlib.util.find_spec("bokeh") is not None
+        if client.dashboard_link and importlib.util.find_spec("bokeh") is not None:
+            return client.dashboard_link
     except (KeyError, AttributeError):
-        return False
+        pass
+    return None

@@ -11,4 +11,4 @@ __all__ = ["COMMANDS"]
 #: command name -> its module
 COMMANDS = {name: f"{__name__}.{name}" for name in (
     "models", "report", "demo", "table3", "simulate", "figures", "identify", "splits", "maps",
-    "animate", "plan", "study", "bench", "derive", "export")}
+    "animate", "plan", "study", "design", "bench", "derive", "export")}

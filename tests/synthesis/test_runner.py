@@ -1,0 +1,210 @@
+# The design runner on Dask: results equal the in-process optimiser's, chunks in Parquet, resume.
+"""``run_design`` against the same optimiser run in this process (``optimize`` calling the
+stand-in ``evaluate_batch`` directly): every design, objective and constraint equal, whatever
+the chunking, the cluster or an interruption. The stand-in is the analytic problem of
+tests/synthesis/analytic.py, so the machinery is checked independently of the real objectives.
+
+Quick tests use an in-process cluster (threads, no processes); the ones marked slow start
+worker processes on 127.0.0.1 (the embedded LocalCluster, and a killed worker), each wait
+bounded, every process started here stopped here."""
+import os
+import signal
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pm2dof.synthesis.front import read_front
+from pm2dof.synthesis.optimize import optimize
+from pm2dof.synthesis.runner import DesignRunError, chunk_size, run_design
+from pm2dof.synthesis.store import DesignOutError, read_designs
+from tests.synthesis import analytic
+
+pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+
+DEADLINE = 120.0     # s: no wait of these tests may be longer
+
+
+@pytest.fixture(autouse=True)
+def _no_units(monkeypatch):
+    """The stand-in's measure ("analytic") has no unit in the real objectives' table."""
+    from pm2dof.synthesis import store
+    monkeypatch.setattr(store, "units", lambda study, model: {})
+
+
+def _reference(study):
+    opt = study.optimizer
+    return optimize(lambda X: analytic.evaluate_batch(study, X)[:2], study.bounds,
+                    len(study.objectives), len(study.constraints), kind=opt["kind"],
+                    population=opt["population"], generations=opt["generations"],
+                    grid=opt["grid"], seed=opt["seed"])
+
+
+def _assert_same(out, study):
+    ref = _reference(study)
+    info, cols = read_designs(out)
+    assert info["complete"] and info["designs"] == len(ref.X)
+    np.testing.assert_array_equal(cols["generation"], ref.generation)
+    np.testing.assert_array_equal(np.column_stack([cols[v] for v in study.variables]), ref.X)
+    np.testing.assert_array_equal(cols["f1"], ref.F[:, 0])
+    np.testing.assert_array_equal(cols["score"], -ref.F[:, 1])      # a max objective: as is
+    if study.constraints:
+        np.testing.assert_array_equal(cols["g.reach"], ref.G[:, 0])
+        np.testing.assert_array_equal(cols["reach"], ref.X.sum(axis=1))
+    np.testing.assert_array_equal(cols["feasible"], ref.feasible)
+    assert set(cols["status"]) == {"ok"}
+
+
+@pytest.fixture(scope="module")
+def client():
+    from distributed import Client, LocalCluster
+    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                           dashboard_address=":0")
+    c = Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+def _chunks(out):
+    return sorted(p.name for p in (Path(out) / "batches").glob("g*.parquet"))
+
+
+@pytest.mark.parametrize("constrained", [False, True])
+def test_run_equals_the_in_process_optimiser_and_resumes(tmp_path, client, constrained):
+    study = analytic.study(constrained=constrained)
+    out = tmp_path / "out"
+    res = run_design(study, out, client=client, progress=False,
+                     evaluate=analytic.evaluate_batch)
+    assert res["evaluated"] == res["designs"] and res["reused"] == 0
+    assert res["generations"] == 6
+    _assert_same(out, study)
+    files = _chunks(out)
+    assert len(files) == 6 * 5            # 20 designs a generation in chunks of 4
+    # a second run evaluates nothing, and needs no cluster
+    again = run_design(study, out, client=None, progress=False, evaluate=_refuse)
+    assert again["evaluated"] == 0 and again["reused"] == again["designs"] == res["designs"]
+    assert _chunks(out) == files
+    _assert_same(out, study)
+
+
+def _refuse(study, X):
+    raise AssertionError("a resumed run evaluated a design")
+
+
+def test_an_interrupted_run_resumes_from_its_chunks(tmp_path, client):
+    study = analytic.study(optimizer={"generations": 5})
+    out = tmp_path / "out"
+    calls = []
+
+    class Stop(Exception):
+        pass
+
+    def notify(notice):
+        calls.append(notice)
+
+    from pm2dof.infra.progress import Progress
+
+    class StopAfter(Progress):        # the bar is told of each chunk: stop after 9 chunks
+        def bar(self, total, desc, unit="step", **kw):
+            outer = self
+
+            class B:
+                n = 0
+
+                def update(self, k):
+                    B.n += 1
+                    if B.n == 9:
+                        raise Stop
+
+                def close(self):
+                    outer.closed = True
+            return B()
+
+    with pytest.raises(Stop):
+        run_design(study, out, client=client, progress=StopAfter(quiet=True), notify=notify,
+                   evaluate=analytic.evaluate_batch)
+    assert len(_chunks(out)) == 9 and not read_designs(out)[0]["complete"]
+    res = run_design(study, out, client=client, progress=False,
+                     evaluate=analytic.evaluate_batch)
+    assert res["reused"] == 9 * 4 and res["evaluated"] == res["designs"] - 36
+    _assert_same(out, study)
+
+
+def test_grid_run_front_and_payload(tmp_path, client):
+    study = analytic.study(optimizer={"kind": "grid", "grid": 30})
+    out = tmp_path / "g"
+    res = run_design(study, out, client=client, progress=False,
+                     evaluate=analytic.evaluate_batch, min_chunk=4)
+    assert res["designs"] == 900 and res["generations"] == 1
+    assert len(_chunks(out)) == 900 // chunk_size(900) + (900 % chunk_size(900) > 0)
+    _assert_same(out, study)
+    fr = read_front(out)
+    p = fr.payload()
+    assert p["objectives"] == [{"name": "f1", "sense": "min"}, {"name": "score", "sense": "max"}]
+    # the grid's front: x2 = 0, f1 = x1 in 30 steps, score = -(1 - sqrt(f1))
+    assert len(p["front"]) == 30
+    for e in p["front"]:
+        assert e["design"]["lb"] == 0.0 and set(e) == {"design", "objectives"}
+        assert e["objectives"]["score"] == pytest.approx(-(1 - np.sqrt(e["design"]["la"])),
+                                                         abs=1e-15)
+
+
+def test_another_study_on_a_used_folder_is_refused(tmp_path, client):
+    out = tmp_path / "out"
+    run_design(analytic.study(optimizer={"generations": 2}), out, client=client,
+               progress=False, evaluate=analytic.evaluate_batch)
+    with pytest.raises(DesignOutError, match="another design run"):
+        run_design(analytic.study(optimizer={"generations": 2, "seed": 8}), out,
+                   client=client, progress=False, evaluate=analytic.evaluate_batch)
+    with pytest.raises(DesignOutError, match="no design.json"):
+        read_front(tmp_path)
+
+
+def _fails(study, X):
+    raise ValueError("a measure broke")
+
+
+def test_a_failing_chunk_names_itself(tmp_path, client):
+    with pytest.raises(DesignRunError, match=r"generation 0, chunk \d+ .*ValueError: a measure "
+                       r"broke"):
+        run_design(analytic.study(), tmp_path / "o", client=client, progress=False,
+                   evaluate=_fails)
+
+
+# ---- real worker processes (slow): the embedded cluster, a worker killed mid-run ----
+
+@pytest.mark.slow
+def test_embedded_cluster_on_processes_and_a_killed_worker(tmp_path, monkeypatch):
+    """Two worker processes of the embedded LocalCluster (connect(), on 127.0.0.1); one is
+    killed (SIGKILL) once the first chunks are in: Dask reruns its tasks on the other (or on
+    the nanny's restart), and the designs are those of the in-process run."""
+    from pm2dof.studies.runner import connect, disconnect
+    monkeypatch.setenv(analytic.DELAY_ENV, "0.02")        # 0.08 s a chunk: time to kill one
+    client = connect(workers=2, timeout=60)
+    try:
+        pids = list(client.run(os.getpid).values())
+        assert len(pids) == 2 and os.getpid() not in pids
+        study = analytic.study(optimizer={"generations": 8}, constrained=True)
+        out = tmp_path / "out"
+        killed = []
+
+        def killer():
+            t0 = time.monotonic()
+            while len(_chunks(out)) < 6 and time.monotonic() - t0 < DEADLINE:
+                time.sleep(0.01)
+            os.kill(pids[0], signal.SIGKILL)
+            killed.append(len(_chunks(out)))
+
+        th = threading.Thread(target=killer, daemon=True)
+        th.start()
+        res = run_design(study, out, client=client, progress=False,
+                         evaluate=analytic.evaluate_batch)
+        th.join(DEADLINE)
+        assert killed and killed[0] < 8 * 5, "the run ended before a worker could be killed"
+        assert res["evaluated"] == res["designs"]
+        _assert_same(out, study)
+    finally:
+        disconnect(client)
