@@ -21,7 +21,8 @@ BUILTIN = (ValueError, TypeError, RuntimeError, OSError, ImportError)
 MODULES = ["pm2dof.core.errors", "pm2dof.core.build", "pm2dof.control.trajectory",
            "pm2dof.studies.spec", "pm2dof.studies.store", "pm2dof.studies.runner",
            "pm2dof.identification.log", "pm2dof.identification.signals", "pm2dof.derive.run",
-           "pm2dof.planning.pathfile", "pm2dof.analysis.reference_file"]
+           "pm2dof.planning.pathfile", "pm2dof.analysis.reference_file",
+           "pm2dof.synthesis.spec", "pm2dof.synthesis.runner", "pm2dof.synthesis.store"]
 
 
 def _error_classes():
