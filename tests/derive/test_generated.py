@@ -114,8 +114,12 @@ def _sympy_functions(spec):
     qd = list(dyn.qd)
     modules = [{"sgn": _sgn}, "mpmath"]
 
+    # a model with a [design] table: its design symbols at the file's design, exactly
+    design = dict(zip(s.design, [sympy.Rational(repr(float(v))) for v in spec.design.values])
+                  ) if spec.design is not None else {}
+
     def lam(args, expr):
-        return derivations.lambdify(args, expr, modules)
+        return derivations.lambdify(args, expr.xreplace(design) if design else expr, modules)
 
     out = {
         "ik": lam([xe], kin.ik()),
@@ -408,6 +412,11 @@ def test_manifest_signatures_match_the_loaded_functions(model, manifest):
         f = model.function(k)
         want = dict(manifest["functions"].get(f"{model.name}_{k}"))
         want.pop("work")                      # the work sizes: tests/core/test_contract.py
+        if want["inputs"] and want["inputs"][-1][0] == "design":   # bound to the model's design
+            assert f.fixed == tuple(model.design), f"{model.name}_{k}: design not bound"
+            want["inputs"] = want["inputs"][:-1]
+        else:
+            assert f.fixed is None
         have = {"inputs": [[a, n] for a, n in zip(f.names_in, f.sizes_in)],
                 "outputs": [[a, n] for a, n in zip(f.names_out, f.sizes_out)]}
         assert want == have, f"{model.name}_{k}: manifest {want} != loaded {have}"
