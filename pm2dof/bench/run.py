@@ -78,6 +78,11 @@ TARGETS = (
     ("rrr4_na_step_c_over_paper", "<=", 3.0, "x", "NA step in C, 4-RRR / paper's robot"),
     ("platform_binding_overhead_over_paper_max", "<=", 1.25, "x",
      "binding overhead (Python - C), platform / paper's robot, worst call"),
+    # the geometry as a run-time input (bench/design.py): a design model / the fixed one
+    ("design_fd_ratio", "<=", 1.5, "x",
+     "Model.forward_dynamics, [design] model / fixed-geometry model, from Python"),
+    ("design_na_step_ratio", "<=", 1.5, "x",
+     "NAController.step, [design] model / fixed-geometry model, from Python"),
 )
 #: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 #: for a revolute actuator, N for a linear one
@@ -193,6 +198,9 @@ def run_bench(model=None, quick=False, progress=None, models=None):
     else:
         res["rrr4_na_step_c_over_paper"] = res["platform_binding_overhead_over_paper_max"] = None
         notes["model_rows"] = "the platforms were not timed (pm2dof bench --models adds them)"
+
+    from .design import design_bench
+    res.update(design_bench(b.repeats, b.batch_s, b.c_inner, say))
 
     say("op counts from the generated C source")
     res.update(bench_op_counts(model, notes))

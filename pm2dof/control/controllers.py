@@ -95,15 +95,19 @@ def diagonal_gain(law, name, value, labels):
 
 def check_same_model(model, controller):
     """Raise :class:`ModelMismatchError` unless ``controller`` was built for ``model``: the same
-    Model, or one with the same name and formulation hash (the same generated code)."""
+    Model, or one with the same name, formulation hash (the same generated code) and design
+    (:meth:`Model.at_design`: the controller's steps are bound to its model's geometry)."""
     cm = controller.model
-    if cm is model or (cm.name, cm.spec.formulation_sha256) == (model.name,
-                                                                model.spec.formulation_sha256):
+    if cm is model or ((cm.name, cm.spec.formulation_sha256) == (model.name,
+                                                                 model.spec.formulation_sha256)
+                       and np.array_equal(cm.design, model.design)):
         return
 
     def who(m):
+        design = (", design " + ", ".join(f"{k} = {v:.6g}" for k, v in zip(m.design_names, m.design))
+                  if m.design_names else "")
         return (f"{m.name!r} ({m.n_legs} legs, {m.spec.path}, formulation "
-                f"{m.spec.formulation_sha256[:12]})")
+                f"{m.spec.formulation_sha256[:12]}{design})")
     raise ModelMismatchError(
         f"the {type(controller).__name__} was built for model {who(cm)}, not for model "
         f"{who(model)}; build the controller with the model it runs on")

@@ -12,6 +12,9 @@
  *                        compute it" (NULL res pointer).
  * f.accumulate(...)      runs a whole x_{k+1}, y_k = f(x_k, u_k, p) rollout in C.
  * f.time_calls(...)      times back-to-back calls inside a C loop.
+ * Function(lib, name, fixed=d)  binds the last input, "design", to a copy of d once for
+ *                        all: the Function then has one input fewer, and every call path
+ *                        (plain calls, map, accumulate, time_calls, Method) runs with d.
  *
  * The binding is layout-agnostic: it passes the buffers' memory as the flat nonzero
  * vectors CasADi expects. CasADi stores matrices column-major, so a 2x3 matrix argument
@@ -181,6 +184,8 @@ typedef struct {
     Py_ssize_t n_in, n_out;
     Py_ssize_t *nnz; /* n_in + n_out element counts (outputs start at nnz + n_in) */
     unsigned char *vec; /* per argument: 1 if a vector (k x 1 or 1 x k): must be 1-D */
+    double *fixed;      /* owned copy of the bound "design" input (arg[n_in]), or NULL */
+    Py_ssize_t n_fixed; /* its element count */
     casadi_int sz_arg, sz_res, sz_iw, sz_w;
     eval_fn eval;
     checkout_fn checkout;
@@ -216,7 +221,10 @@ static int
 work_init(FunctionObject *f, Work *w)
 {
     memset(w, 0, sizeof(*w));
-    size_t n_arg = (size_t)(f->sz_arg > f->n_in ? f->sz_arg : f->n_in);
+    /* with a bound design the function's real inputs are n_in + 1 (CasADi's sz_arg
+       covers them; the max is a guard) */
+    const Py_ssize_t n_in_all = f->n_in + (f->fixed != NULL);
+    size_t n_arg = (size_t)(f->sz_arg > n_in_all ? f->sz_arg : n_in_all);
     size_t n_res = (size_t)(f->sz_res > f->n_out ? f->sz_res : f->n_out);
     /* +1 everywhere: never ask for zero bytes */
     w->arg = PyMem_Calloc(n_arg + 1, sizeof(*w->arg));
@@ -244,6 +252,11 @@ work_init(FunctionObject *f, Work *w)
         w->mem = mem;
         w->checked_out = 1;
     }
+    /* The bound design: set once per work area. The binding writes arg[] only at the
+       visible inputs (0..n_in-1) and generated code only at its own n_in and beyond (the
+       arguments of nested calls), so the slot keeps this pointer: no cost per call. */
+    if (f->fixed)
+        w->arg[f->n_in] = f->fixed;
     return 0;
 }
 
@@ -1253,14 +1266,186 @@ done:
     return result;
 }
 
+/*
+ * The values of fixed= as float64 into dst[0..n): a float64 buffer (any layout; one
+ * dimension, or none for one value), a sequence of real numbers, or one Python float/int.
+ * TypeError for anything else, ValueError for a wrong count or a non-finite value.
+ */
+static int
+read_fixed(FunctionObject *f, PyObject *obj, double *dst, Py_ssize_t n)
+{
+    Py_ssize_t got;
+    if (PyFloat_Check(obj) || PyLong_Check(obj)) { /* one value */
+        double d = PyFloat_AsDouble(obj);
+        if (d == -1.0 && PyErr_Occurred()) {
+            PyErr_Clear();
+            PyErr_Format(PyExc_ValueError, "%U: fixed (the 'design' input) is an int too "
+                         "large for a float64", f->name);
+            return -1;
+        }
+        got = 1;
+        if (n == 1)
+            dst[0] = d;
+    }
+    else if (PyObject_CheckBuffer(obj)) {
+        Py_buffer v;
+        if (PyObject_GetBuffer(obj, &v, PyBUF_STRIDES | PyBUF_FORMAT) < 0) {
+            PyObject *et, *ev, *tb;
+            PyErr_Fetch(&et, &ev, &tb);
+            PyErr_NormalizeException(&et, &ev, &tb);
+            PyErr_Format(PyExc_TypeError, "%U: fixed (the 'design' input): cannot export a "
+                         "float64 buffer from %s: %S", f->name, Py_TYPE(obj)->tp_name,
+                         ev ? ev : Py_None);
+            Py_XDECREF(et);
+            Py_XDECREF(ev);
+            Py_XDECREF(tb);
+            return -1;
+        }
+        if (v.itemsize != 8 || !format_is_f64(v.format)) {
+            PyErr_Format(PyExc_TypeError,
+                         "%U: fixed (the 'design' input) must be float64 values, got a buffer "
+                         "of format '%s' (itemsize %zd) from %s",
+                         f->name, v.format ? v.format : "B", v.itemsize,
+                         Py_TYPE(obj)->tp_name);
+            PyBuffer_Release(&v);
+            return -1;
+        }
+        got = v.len / 8;
+        if (v.ndim > 1) {
+            PyErr_Format(PyExc_ValueError,
+                         "%U: fixed (the 'design' input) must be one-dimensional, got %d "
+                         "dimensions", f->name, v.ndim);
+            PyBuffer_Release(&v);
+            return -1;
+        }
+        if (got == n && PyBuffer_ToContiguous(dst, &v, v.len, 'C') < 0) {
+            PyBuffer_Release(&v);
+            return -1;
+        }
+        PyBuffer_Release(&v);
+    }
+    else {
+        if (PyUnicode_Check(obj)) {
+            PyErr_Format(PyExc_TypeError, "%U: fixed (the 'design' input) must be real "
+                         "numbers, got str", f->name);
+            return -1;
+        }
+        /* a tuple copy: converting an item may run Python code that changes a list */
+        PyObject *seq = PySequence_Check(obj) ? PySequence_Tuple(obj) : NULL;
+        if (seq == NULL) {
+            if (PyErr_Occurred() && !PyErr_ExceptionMatches(PyExc_TypeError))
+                return -1; /* e.g. a sequence whose __getitem__ failed */
+            PyErr_Clear();
+            PyErr_Format(PyExc_TypeError, "%U: fixed (the 'design' input) must be a float64 "
+                         "buffer or a sequence of real numbers, got %s",
+                         f->name, Py_TYPE(obj)->tp_name);
+            return -1;
+        }
+        got = PyTuple_GET_SIZE(seq);
+        for (Py_ssize_t k = 0; k < got && got == n; k++) {
+            PyObject *it = PyTuple_GET_ITEM(seq, k);
+            double d = -1.0;
+            if (PyFloat_Check(it) || PyLong_Check(it) || PyNumber_Check(it))
+                d = PyFloat_AsDouble(it); /* no complex: it has no __float__ */
+            else
+                PyErr_SetString(PyExc_TypeError, "not a number");
+            if (d == -1.0 && PyErr_Occurred()) {
+                PyObject *et, *ev, *tb;
+                PyErr_Fetch(&et, &ev, &tb);
+                PyErr_NormalizeException(&et, &ev, &tb);
+                PyErr_Format(PyErr_GivenExceptionMatches(et, PyExc_OverflowError)
+                                 ? PyExc_ValueError : PyExc_TypeError,
+                             "%U: fixed (the 'design' input) must be real numbers, value %zd "
+                             "is %s (%S)", f->name, k, Py_TYPE(it)->tp_name,
+                             ev ? ev : Py_None);
+                Py_XDECREF(et);
+                Py_XDECREF(ev);
+                Py_XDECREF(tb);
+                Py_DECREF(seq);
+                return -1;
+            }
+            dst[k] = d;
+        }
+        Py_DECREF(seq);
+    }
+    if (got != n) {
+        PyErr_Format(PyExc_ValueError,
+                     "%U: fixed must have %zd value%s (the 'design' input has %zd element%s), "
+                     "got %zd", f->name, n, n == 1 ? "" : "s", n, n == 1 ? "" : "s", got);
+        return -1;
+    }
+    Py_ssize_t k = first_nonfinite(dst, n);
+    if (k >= 0) {
+        PyErr_Format(PyExc_ValueError,
+                     "%U: fixed (the 'design' input) has a non-finite value at index %zd (%s)",
+                     f->name, k, isnan(dst[k]) ? "nan" : (dst[k] > 0 ? "inf" : "-inf"));
+        return -1;
+    }
+    return 0;
+}
+
+/*
+ * Bind the last input, which must be a vector named "design", to a copy of fixed: the
+ * Function then shows n_in - 1 inputs (names, sizes, shapes, nnz, vec), and work_init
+ * points arg[n_in] at the copy.
+ */
+static int
+bind_fixed(FunctionObject *f, PyObject *fixed)
+{
+    const Py_ssize_t last = f->n_in - 1;
+    PyObject *nm = last >= 0 ? PyTuple_GET_ITEM(f->names_in, last) : NULL;
+    if (nm == NULL || PyUnicode_CompareWithASCIIString(nm, "design") != 0) {
+        PyErr_Format(PyExc_ValueError,
+                     "%U: fixed= binds a last input named 'design', but the inputs are %R",
+                     f->name, f->names_in);
+        return -1;
+    }
+    if (!f->vec[last]) {
+        PyErr_Format(PyExc_ValueError,
+                     "%U: fixed= binds a vector, but input 'design' (#%zd) has shape %R",
+                     f->name, last, PyTuple_GET_ITEM(f->shapes_in, last));
+        return -1;
+    }
+    const Py_ssize_t n = f->nnz[last];
+    double *copy = PyMem_Malloc(((size_t)n + 1) * sizeof(double));
+    if (copy == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    if (read_fixed(f, fixed, copy, n) < 0) {
+        PyMem_Free(copy);
+        return -1;
+    }
+    PyObject *names = PyTuple_GetSlice(f->names_in, 0, last);
+    PyObject *sizes = PyTuple_GetSlice(f->sizes_in, 0, last);
+    PyObject *shapes = PyTuple_GetSlice(f->shapes_in, 0, last);
+    if (names == NULL || sizes == NULL || shapes == NULL) {
+        Py_XDECREF(names);
+        Py_XDECREF(sizes);
+        Py_XDECREF(shapes);
+        PyMem_Free(copy);
+        return -1;
+    }
+    Py_SETREF(f->names_in, names);
+    Py_SETREF(f->sizes_in, sizes);
+    Py_SETREF(f->shapes_in, shapes);
+    /* outputs start at nnz + n_in, vec + n_in: move them down one slot */
+    memmove(f->nnz + last, f->nnz + f->n_in, (size_t)f->n_out * sizeof(*f->nnz));
+    memmove(f->vec + last, f->vec + f->n_in, (size_t)f->n_out * sizeof(*f->vec));
+    f->n_in = last;
+    f->fixed = copy;
+    f->n_fixed = n;
+    return 0;
+}
+
 static PyObject *
 Function_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
 {
-    static char *kwlist[] = {"library", "name", NULL};
+    static char *kwlist[] = {"library", "name", "fixed", NULL};
     LibraryObject *lib;
-    PyObject *name;
-    if (!PyArg_ParseTupleAndKeywords(args, kwds, "O!U:Function", kwlist, &LibraryType, &lib,
-                                     &name))
+    PyObject *name, *fixed = Py_None;
+    if (!PyArg_ParseTupleAndKeywords(args, kwds, "O!U|$O:Function", kwlist, &LibraryType, &lib,
+                                     &name, &fixed))
         return NULL;
     const char *cname = PyUnicode_AsUTF8(name);
     if (cname == NULL)
@@ -1343,6 +1528,8 @@ Function_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
                       "output",
                       &f->sizes_out, &f->shapes_out) < 0)
         goto fail;
+    if (fixed != Py_None && bind_fixed(f, fixed) < 0)
+        goto fail;
     f->signature = make_signature(f);
     if (f->signature == NULL)
         goto fail;
@@ -1369,6 +1556,7 @@ Function_dealloc(FunctionObject *f)
         f->decref();
     PyMem_Free(f->nnz);
     PyMem_Free(f->vec);
+    PyMem_Free(f->fixed);
     Py_XDECREF(f->name);
     Py_XDECREF(f->signature);
     Py_XDECREF(f->names_in);
@@ -1384,8 +1572,39 @@ Function_dealloc(FunctionObject *f)
 static PyObject *
 Function_repr(FunctionObject *f)
 {
+    if (f->fixed)
+        return PyUnicode_FromFormat("<Function %U, design[%zd] fixed>", f->signature,
+                                    f->n_fixed);
     return PyUnicode_FromFormat("<Function %U>", f->signature);
 }
+
+/* f.fixed: the bound design as a tuple of floats, or None. */
+static PyObject *
+Function_get_fixed(FunctionObject *f, void *closure)
+{
+    (void)closure;
+    if (f->fixed == NULL)
+        Py_RETURN_NONE;
+    PyObject *t = PyTuple_New(f->n_fixed);
+    if (t == NULL)
+        return NULL;
+    for (Py_ssize_t k = 0; k < f->n_fixed; k++) {
+        PyObject *v = PyFloat_FromDouble(f->fixed[k]);
+        if (v == NULL) {
+            Py_DECREF(t);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(t, k, v);
+    }
+    return t;
+}
+
+static PyGetSetDef Function_getset[] = {
+    {"fixed", (getter)Function_get_fixed, NULL,
+     "The values bound to the last input 'design' (fixed=), a tuple of floats, or None.",
+     NULL},
+    {NULL, NULL, NULL, NULL, NULL},
+};
 
 static PyMemberDef Function_members[] = {
     {"name", T_OBJECT_EX, offsetof(FunctionObject, name), READONLY, "Function name (str)."},
@@ -1603,9 +1822,16 @@ static PyMethodDef Function_methods[] = {
 };
 
 PyDoc_STRVAR(Function_doc,
-"Function(library, name)\n"
+"Function(library, name, *, fixed=None)\n"
 "--\n\n"
 "A CasADi-generated function resolved from a Library by name.\n\n"
+"fixed: values for the function's last input, which must be a vector named\n"
+"'design': a float64 buffer or a sequence of real numbers, finite, with as many\n"
+"elements as 'design'. They are copied once and bound to every evaluation (calls,\n"
+"map, accumulate, time_calls, Method); the Function then shows one input fewer\n"
+"(n_in, names_in, sizes_in, shapes_in and signature are those of the others), at no\n"
+"cost per call. TypeError for values that are not real numbers, ValueError for a\n"
+"function without a last 'design' input, a wrong count or a non-finite value.\n\n"
 "Call as f(*inputs, *outputs) with exactly n_in + n_out positional arguments:\n"
 "each input a C-contiguous float64 buffer with sizes_in[i] elements, or a Python\n"
 "float/int when sizes_in[i] == 1; each output a writable C-contiguous float64\n"
@@ -1630,6 +1856,7 @@ static PyTypeObject FunctionType = {
     .tp_doc = Function_doc,
     .tp_methods = Function_methods,
     .tp_members = Function_members,
+    .tp_getset = Function_getset,
     .tp_new = Function_new,
 };
 

@@ -9,6 +9,9 @@ through this module only:
 * :class:`Function` -- one generated function ``<name>_<short>``, as
   :meth:`pm2dof.Model.function` returns it: ``f(*inputs, *outputs)`` evaluates once,
   ``f.map(K, ...)`` over K points, ``f.accumulate(...)`` a closed loop over samples;
+  ``Function(library, name, fixed=values)`` binds its last input ``design`` once for all
+  (every call then runs at that design, with one input fewer and no cost per call);
+* :func:`function` -- that constructor with its refusals as typed errors;
 * :class:`Method` -- a function with some inputs and outputs bound once (the controllers'
   state and parameters), called with the rest: one C call that checks every argument, and
   refuses (:class:`Refused`) what it does not accept instead of converting it;
@@ -24,7 +27,7 @@ from . import _cbind
 from .errors import ArgumentError, ArgumentTypeError
 
 __all__ = ["Library", "Function", "Method", "Refused", "GuardTripped", "NonFiniteOutputError",
-           "call", "coerce"]
+           "call", "coerce", "function"]
 
 Library = _cbind.Library
 Function = _cbind.Function
@@ -32,6 +35,40 @@ Method = _cbind.Method
 Refused = _cbind.Refused
 GuardTripped = _cbind.GuardTripped
 NonFiniteOutputError = _cbind.NonFiniteOutputError
+
+
+def function(library, name, *, fixed=None):
+    """The generated function ``name`` of ``library``, its last input bound to ``fixed``.
+
+    ``Function(library, name, fixed=fixed)``, whose refusals become typed errors: values that
+    are not real numbers are an :class:`~pm2dof.ArgumentTypeError`; a function whose last
+    input is not a vector named ``design``, a wrong number of values or a non-finite one are
+    an :class:`~pm2dof.ArgumentError`, each naming the function. A name the library does not
+    hold stays a LookupError.
+
+    Parameters
+    ----------
+    library : Library
+        The loaded shared library.
+    name : str
+        The generated function, e.g. ``"paper_robot_ik"``.
+    fixed : array_like, optional
+        The design, shape (k,): one value per element of the function's last input
+        ``design``, copied once. None (the default): every input stays an argument.
+
+    Returns
+    -------
+    Function
+        With ``fixed``, its inputs are the function's inputs but the last
+        (``names_in``, ``sizes_in`` and ``signature`` say so) and ``f.fixed`` holds the
+        values; without, the plain function.
+    """
+    try:
+        return Function(library, name, fixed=fixed)
+    except TypeError as exc:
+        raise ArgumentTypeError(str(exc)) from None
+    except ValueError as exc:
+        raise ArgumentError(str(exc)) from None
 
 
 def coerce(f, args):

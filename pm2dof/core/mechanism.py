@@ -9,9 +9,11 @@ legs; the rules that turn legs into numbers live here, one home each:
 * theta's layout: :func:`theta_groups` (which parameters, in which order), :func:`theta_names`,
   :data:`FRICTION_MODELS` and :func:`is_friction_param`;
 * physical parameters: :func:`inertia_problem`, :func:`platform_inertia_problem`;
-* from bodies to theta: :func:`lumped_from_links` (:data:`LINK_BODIES`),
-  :func:`platform_from_body`, and a payload's share, :func:`payload_increments`;
-* geometry: :func:`attachment_points`, :func:`leg_reach_problem`.
+* from bodies to theta: :func:`lumped_from_links` (:data:`LINK_BODIES`; a body with a length
+  may be a uniform rod, :data:`ROD_LENGTH`, :func:`rod_body`), :func:`platform_from_body`, and
+  a payload's share, :func:`payload_increments`;
+* geometry: :func:`attachment_points`, :func:`leg_reach_problem`, :func:`reach_problems`;
+* sensing: :func:`default_closure_tolerance`.
 
 A leg is any object with the attributes of :class:`pm2dof.core.model_file.Leg` that the rule
 reads (``kind``, ``base``, ``la``, ``lb``, ``elbow``, ``rail_end``, ``rail_length``,
@@ -21,9 +23,11 @@ import math
 
 __all__ = ["LEG_KINDS", "ACTUATORS", "END_EFFECTORS", "INERTIAL", "FIRST_MOMENT",
            "PLATFORM_PARAMS", "FRICTION_MODELS", "FRICTION_CONSTANTS", "LINK_BODIES",
+           "ROD_LENGTH", "CLOSURE_FLOOR",
            "theta_groups", "theta_names", "is_friction_param", "inertia_problem",
-           "platform_inertia_problem", "lumped_from_links", "platform_from_body",
-           "payload_increments", "attachment_points", "leg_reach_problem"]
+           "platform_inertia_problem", "rod_body", "solid_bodies", "lumped_from_links",
+           "platform_from_body", "payload_increments", "attachment_points", "leg_reach_problem",
+           "reach_problems", "default_closure_tolerance"]
 
 #: each leg kind's actuated joint (docs/model-file.md, [[legs]]): RRR's revolute at the base,
 #: PRR's slider on its rail, RPR's length (a cylinder between two passive revolutes)
@@ -58,6 +62,11 @@ LINK_BODIES = {"RRR": {"proximal": ("mass", "com", "inertia"),
                        "distal": ("mass", "com", "inertia")},
                "PRR": {"slider": ("mass",), "link": ("mass", "com", "inertia")},
                "RPR": {"cylinder": ("mass", "com", "inertia"), "rod": ("mass", "com", "inertia")}}
+#: the bodies with a length, which may be given as a uniform rod { density } (kg/m), and the
+#: Leg field that is their length: RRR proximal (la) and distal (lb), PRR link (lb)
+ROD_LENGTH = {"RRR": {"proximal": "la", "distal": "lb"}, "PRR": {"link": "lb"}}
+#: smallest default [sensing] closure_tolerance, m (exact encoders still meet rounding)
+CLOSURE_FLOOR = 1e-6
 
 
 def theta_groups(legs, effector, gravity, friction):
@@ -111,10 +120,26 @@ def platform_inertia_problem(m, mx, my, inertia):
     return None
 
 
+def rod_body(density, length):
+    """A uniform rod of ``density`` kg/m and ``length`` m as a body: {mass (kg), com (m from
+    its joint, the middle), inertia (kg m^2 about the centre of mass, as LINK_BODIES)}."""
+    return {"mass": density * length, "com": length / 2,
+            "inertia": density * length ** 3 / 12}
+
+
+def solid_bodies(leg, bodies):
+    """``bodies`` ({body: {mass, com, inertia}} or {body: {density}}, LINK_BODIES and
+    ROD_LENGTH) with every rod replaced by its :func:`rod_body` at ``leg``'s lengths."""
+    lengths = ROD_LENGTH.get(leg.kind, {})
+    return {name: rod_body(body["density"], getattr(leg, lengths[name]))
+            if "density" in body else body for name, body in bodies.items()}
+
+
 def lumped_from_links(leg, bodies):
     """{alpha, beta, gamma, kappa} of one leg from its bodies ({body: {mass, com, inertia}},
-    LINK_BODIES), by the rule of docs/model-file.md ("From the links to theta"); PRR legs
-    have no kappa."""
+    LINK_BODIES, or a rod {density}, ROD_LENGTH), by the rule of docs/model-file.md ("From the
+    links to theta"); PRR legs have no kappa."""
+    bodies = solid_bodies(leg, bodies)
     if leg.kind == "RRR":
         a, b = bodies["proximal"], bodies["distal"]
         return {"alpha": a["inertia"] + a["mass"] * a["com"] ** 2 + b["mass"] * leg.la ** 2,
@@ -164,6 +189,14 @@ def attachment_points(legs, pose):
              pose[1] + s * lg.attach[0] + c * lg.attach[1]) for lg in legs]
 
 
+def reach_problems(legs, pose):
+    """[(leg index from 0, why)] for every leg that cannot reach the task pose (x, y) or
+    (x, y, phi) (:func:`leg_reach_problem`; a platform's legs at their attachment points)."""
+    pose = [float(v) for v in pose]
+    return [(i, why) for i, (leg, point) in enumerate(zip(legs, attachment_points(legs, pose)))
+            if (why := leg_reach_problem(leg, point)) is not None]
+
+
 def leg_reach_problem(leg, point):
     """Why ``leg`` cannot put its tip at ``point`` (x, y) in m in its configured branch (a
     phrase that follows "leg i"), or None.
@@ -193,3 +226,15 @@ def leg_reach_problem(leg, point):
         return (f"would need its slider at {s:.4g} m along its rail, which runs from 0 to "
                 f"{length:.4g} m")
     return None
+
+
+def default_closure_tolerance(legs, encoder_counts_per_rev, linear_resolution=0.0):
+    """[sensing] closure_tolerance when a model file does not set it, m: five encoder steps at
+    the longest active link, at least 1 um. (One step moves an elbow by la * 2 pi / counts;
+    quantised angles over the paper robot's workspace give residuals up to 0.8 of that, and
+    up to 1.3 with a full step of error: tests/core/test_closure.py measures it.) A prismatic
+    actuator's step moves its joint by ``linear_resolution`` m."""
+    step = 2 * math.pi / encoder_counts_per_rev if encoder_counts_per_rev > 0 else 0.0
+    moves = [leg.la * step if leg.actuator == "revolute" else linear_resolution or 0.0
+             for leg in legs]
+    return max(CLOSURE_FLOOR, 5 * max(moves))

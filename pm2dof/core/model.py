@@ -26,6 +26,7 @@ from .errors import (
     ArgumentTypeError,
     ClosureError,
     CompileWarning,
+    DesignError,
     NonFiniteError,
     SingularityError,
     StaleGeneratedCodeError,
@@ -67,6 +68,30 @@ def _freeze(obj):
     if isinstance(obj, list):
         return tuple(_freeze(v) for v in obj)
     return obj
+
+
+def _design_values(spec):
+    """(k,) float64 of spec's design (None without [design]): the bound input ``design``."""
+    design = getattr(spec, "design", None)
+    return None if design is None else np.array(design.values, dtype=float)
+
+
+def _design_text(spec):
+    """", at design la = 0.25, ..." for a model with a [design] table, else ""."""
+    design = getattr(spec, "design", None)
+    if design is None:
+        return ""
+    return " at design " + ", ".join(f"{k} = {v:.6g}" for k, v in zip(design.names, design.values))
+
+
+def _check_design(spec, gen_dir, manifest):
+    """The generated code's design input must be the model file's [design] variables."""
+    have = (manifest.get("design") or {}).get("names")
+    design = getattr(spec, "design", None)
+    want = list(design.names) if design is not None else None
+    if (list(have) if have is not None else None) != want:
+        _stale(spec, gen_dir, f"{gen_dir} was generated with design variables {have}, the "
+                              f"model file has {want}")
 
 
 def _stale(spec, gen_dir, msg):
@@ -246,17 +271,28 @@ class Model(DerivativeMethods, PoseMethods):
 
     __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_fast", "_layouts",
                  "_sing_thr", "_sing", "_residual", "_m", "_task_names", "_modes", "_words",
-                 "__weakref__")
+                 "_design", "_manifest_obj", "__weakref__")
 
     def __init__(self, spec, gen_dir=None):
         gen_dir = (Path(gen_dir).expanduser().absolute() if gen_dir is not None
                    else paths.default_generated_dir(spec.path))
         manifest, lib_path = _check_generated(spec, gen_dir)
-        lib = _cbind.Library(str(lib_path))
+        _check_design(spec, gen_dir, manifest)
+        self._bind(spec, gen_dir, manifest, lib_path, _cbind.Library(str(lib_path)))
+
+    def _bind(self, spec, gen_dir, manifest, lib_path, lib, frozen=None):
+        """Bind every generated function of ``lib`` for ``spec`` (at its design, if any);
+        ``frozen``: the manifest's read-only data when already made."""
+        design = _design_values(spec)
         funcs = {}
         for short in manifest.function_names():        # every function the derivation wrote
-            f = _cbind.Function(lib, f"{manifest.name}_{short}")
             want = manifest.signature(short)
+            takes_design = bool(want["inputs"]) and want["inputs"][-1][0] == "design"
+            if takes_design:   # the design is bound once: callers see the other inputs only
+                f = _cbind.Function(lib, f"{manifest.name}_{short}", fixed=design)
+                want = {"inputs": want["inputs"][:-1], "outputs": want["outputs"]}
+            else:
+                f = _cbind.Function(lib, f"{manifest.name}_{short}")
             have = {"inputs": [[a, k] for a, k in zip(f.names_in, f.sizes_in)],
                     "outputs": [[a, k] for a, k in zip(f.names_out, f.sizes_out)]}
             if want != have:
@@ -278,7 +314,8 @@ class Model(DerivativeMethods, PoseMethods):
         h = funcs["H"].sizes_out[0]          # constraints: 2 (n - 1) at a point, 2 n a platform
         fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names), h), sing,
                         sing_thr, residual, spec.sensing["closure_tolerance"])
-        for k, v in (("spec", spec), ("manifest", _freeze(manifest.data)),
+        for k, v in (("spec", spec),
+                     ("manifest", frozen if frozen is not None else _freeze(manifest.data)),
                      ("library", str(lib_path)),
                      ("generated", str(gen_dir)),
                      ("_lib", lib), ("_f", types.MappingProxyType(funcs)), ("_fast", fast),
@@ -287,13 +324,70 @@ class Model(DerivativeMethods, PoseMethods):
                           for name, fl in manifest.get("layouts", {}).items()})),
                      ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual),
                      ("_m", m), ("_task_names", task_names), ("_modes", None),
-                     ("_words", singularity_words(spec.legs, spec.end_effector))):
+                     ("_words", singularity_words(spec.legs, spec.end_effector)),
+                     ("_design", design), ("_manifest_obj", manifest)):
             object.__setattr__(self, k, v)
         if spec.home is not None:       # a platform: its legs' working modes, read at home
             legs = _mode_geometry(spec)
             home = np.array(spec.home, dtype=float)
-            modes = tuple(_mode_sides(legs, fast["ik"](home, None)[:spec.n_legs], home))
+            qa = fast["ik"](home, None)[:spec.n_legs]
+            if not np.all(np.isfinite(qa)):
+                raise DesignError(f"model {spec.name!r}: [platform] home {tuple(spec.home)} "
+                                  f"cannot be reached" + _design_text(spec))
+            modes = tuple(_mode_sides(legs, qa, home))
             object.__setattr__(self, "_modes", (legs, modes))
+
+    # --- the design: the model file's [design] variables ----------------------------------
+    @property
+    def design_names(self):
+        """The model file's [design] variables, in the order of :attr:`design` (``()``
+        without a [design] table)."""
+        return tuple(self.spec.design.names) if self.spec.design is not None else ()
+
+    @property
+    def design(self):
+        """(k,) the current values of the design variables, m (empty without [design])."""
+        out = np.array(self._design if self._design is not None else (), dtype=float)
+        out.setflags(write=False)
+        return out
+
+    @property
+    def design_bounds(self):
+        """(k, 2) each design variable's (low, high) bounds, m."""
+        d = self.spec.design
+        return np.array(d.bounds if d is not None else np.zeros((0, 2)), dtype=float)
+
+    def at_design(self, values):
+        """This robot at another design: a new Model whose every function (kinematics,
+        dynamics, controllers, plant, planner) is that design's. No derivation and no compile:
+        the generated C takes the design as an input, bound once here (about a millisecond).
+
+        Parameters
+        ----------
+        values : mapping or sequence of float
+            {name: value} for some or all of :attr:`design_names` (the others keep this
+            model's values), or k values in the order of :attr:`design_names`; m.
+
+        Returns
+        -------
+        Model
+
+        Raises
+        ------
+        DesignError
+            The model file has no [design] table; an unknown name; a value not finite or
+            outside its bounds (naming the variable); a design where the file's home or
+            moves cannot be reached (naming the move and the leg).
+        """
+        from .design import spec_at_design
+        if self.spec.design is None:
+            raise DesignError(f"model {self.name!r} has no [design] table: its geometry is fixed "
+                              f"(add a [design] table to {self.spec.path} and derive it)")
+        spec = spec_at_design(self.spec, values)
+        out = Model.__new__(Model)
+        out._bind(spec, Path(self.generated), self._manifest_obj, self.library, self._lib,
+                  self.manifest)
+        return out
 
     def __setattr__(self, key, value):
         raise AttributeError(f"Model is immutable (tried to set {key!r})")
@@ -303,7 +397,7 @@ class Model(DerivativeMethods, PoseMethods):
 
     def __repr__(self):
         return (f"<Model {self.name!r}: {self.n_legs} legs, {len(self.param_names)} parameters, "
-                f"friction {self.spec.friction!r}>")
+                f"friction {self.spec.friction!r}{_design_text(self.spec)}>")
 
     # --- description ---------------------------------------------------------------------
     name = property(lambda self: self.spec.name)

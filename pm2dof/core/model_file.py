@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from . import contract
+from .design import read_design
 from .errors import ModelFileError
 from .measures import TYPE_I_MEASURES, TYPE_II_MEASURES, pose_measures
 from .mechanism import (
@@ -33,19 +34,20 @@ from .mechanism import (
     LEG_KINDS,
     LINK_BODIES,
     PLATFORM_PARAMS,
-    attachment_points,
+    ROD_LENGTH,
+    default_closure_tolerance,
     inertia_problem,
-    leg_reach_problem,
     lumped_from_links,
     platform_from_body,
     platform_inertia_problem,
+    reach_problems,
     theta_groups,
     theta_names,
 )
 from .validate import RULES, Problems, entry
 
 __all__ = ["ModelSpec", "Leg", "read_model_file", "ELBOWS", "FK_BRANCHES", "PRR_BRANCHES",
-           "SPLITS", "DEFAULT_PARALLEL_THRESHOLD", "default_closure_tolerance"]
+           "SPLITS", "DEFAULT_PARALLEL_THRESHOLD"]
 
 #: PRR branch: the slider ahead of (+1) or behind (-1) the foot of the perpendicular from the
 #: attachment point onto the rail, along the rail's direction
@@ -54,8 +56,6 @@ PRR_BRANCHES = {"ahead": 1, "behind": -1}
 #: see Model.singularity_measures; 0.1 is about 8 degrees between a five-bar's distal links)
 DEFAULT_PARALLEL_THRESHOLD = 0.1
 ELBOWS = {"left": 1, "right": -1}
-#: smallest default [sensing] closure_tolerance, m (exact encoders still meet rounding)
-CLOSURE_FLOOR = 1e-6
 FK_BRANCHES = {"left": 1, "right": -1}
 
 _MODEL_KEYS = {"name", "description", "friction", "fk_branch", "stribeck_velocity",
@@ -65,7 +65,7 @@ _LEG_KEYS = {"RRR": ({"base", "la", "lb", "elbow"}, {"kind", "attach"}),
              "PRR": ({"kind", "rail", "lb", "branch"}, {"attach"}),
              "RPR": ({"kind", "base", "stroke"}, {"attach"})}
 _TOP_KEYS = {"model", "legs", "nominal", "limits", "sensing", "gains", "plant", "trajectories",
-             "control", "platform"}
+             "control", "platform", "design"}
 #: torque distributions among the actuators (S^T tau_a = u; pm2dof.core.contract)
 SPLITS = tuple(contract.SPLITS)
 
@@ -99,17 +99,31 @@ class Leg:
             return None
         return math.hypot(self.rail_end[0] - self.base[0], self.rail_end[1] - self.base[1])
 
-    def formulation(self):
-        """This leg's entry of :meth:`ModelSpec.formulation` (today's RRR point legs: unchanged)."""
+    def formulation(self, designed=None):
+        """This leg's entry of :meth:`ModelSpec.formulation` (today's RRR point legs: unchanged).
+        ``designed``: {(field, component): design variable} of this leg's designed values, each
+        written as {"design": name} instead of its number (Design.variable_of)."""
+        designed = designed or {}
+
+        def value(fld, comp=None):
+            name = designed.get((fld, comp))
+            if name is not None:
+                return {"design": name}
+            return getattr(self, fld) if comp is None else getattr(self, fld)[comp]
+
+        def point(fld):
+            return [value(fld, 0), value(fld, 1)]
+
         if self.kind == "RRR":
-            out = {"base": list(self.base), "la": self.la, "lb": self.lb, "elbow": self.elbow}
+            out = {"base": point("base"), "la": value("la"), "lb": value("lb"),
+                   "elbow": self.elbow}
         elif self.kind == "PRR":
-            out = {"kind": "PRR", "rail": [list(self.base), list(self.rail_end)], "lb": self.lb,
+            out = {"kind": "PRR", "rail": [point("base"), point("rail_end")], "lb": value("lb"),
                    "branch": self.elbow}
         else:
-            out = {"kind": "RPR", "base": list(self.base), "stroke": list(self.stroke)}
+            out = {"kind": "RPR", "base": point("base"), "stroke": list(self.stroke)}
         if self.attach is not None:
-            out["attach"] = list(self.attach)
+            out["attach"] = point("attach")
         return out
 
 
@@ -137,6 +151,11 @@ class ModelSpec:
     end_effector: str = "point"
     gravity: tuple = (0.0, 0.0)             # m/s^2 in the base frame; (0, 0): horizontal plane
     home: object = None                     # platform: the fk seed pose (x, y, phi), else None
+    design: object = None                   # a Design ([design]), else None
+    # the legs' bodies when some body is a uniform rod, else None: {"nominal": tuple or None,
+    # "plant": tuple or None}, per leg {body: {mass, com, inertia} or {density}}; a design
+    # recomputes the inertial entries of theta of the legs with a rod (spec_at_design)
+    links: object = field(repr=False, default=None)
 
     @property
     def n_legs(self):
@@ -167,19 +186,23 @@ class ModelSpec:
 
     def formulation(self):
         """The part of the model that enters the generated code, as canonical JSON-able data."""
+        of = self.design.variable_of() if self.design is not None else {}
         out = {
             "name": self.name,
             "friction": self.friction,
             "friction_constants": dict(sorted(self.friction_constants.items())),
             "fk_branch": self.fk_branch,
             "rk4_substeps": self.rk4_substeps,
-            "legs": [leg.formulation() for leg in self.legs],
+            "legs": [leg.formulation({(f, c): v for (j, f, c), v in of.items() if j == i})
+                     for i, leg in enumerate(self.legs)],
         }
         # keys with their default value stay out, so today's files keep their hash
         if self.end_effector != "point":
             out["end_effector"] = self.end_effector
         if self.has_gravity:
             out["gravity"] = list(self.gravity)
+        if self.design is not None:     # a file without [design] keeps its hash
+            out["design"] = self.design.formulation()
         return out
 
 
@@ -349,11 +372,12 @@ def _flatten(groups, values):
             for j in (range(len(idx)) if idx is not None else [0])]
 
 
-_BODY_RULES = {"mass": "pos", "com": "any", "inertia": "nonneg"}
+_BODY_RULES = {"mass": "pos", "com": "any", "inertia": "nonneg", "density": "pos"}
 
 
 def _read_bodies(pr, where, kind, raw):
-    """One leg's bodies {body: {key: float}} from its [[<section>.links]] table, or None."""
+    """One leg's bodies {body: {key: float}} from its [[<section>.links]] table, or None. A
+    body with a length (ROD_LENGTH) may be a uniform rod {density}, kept as such."""
     if not isinstance(raw, dict):
         return pr.add(where, f"must be a table of the leg's bodies {sorted(LINK_BODIES[kind])}, "
                              f"got {type(raw).__name__}")
@@ -365,6 +389,13 @@ def _read_bodies(pr, where, kind, raw):
         if not isinstance(table, dict):
             return pr.add(f"{where}.{body}", f"must be a table {{ {', '.join(keys)} }}, got "
                                              f"{table!r}")
+        if "density" in table:
+            if body not in ROD_LENGTH.get(kind, {}):
+                return pr.add(f"{where}.{body}.density",
+                              f"only a body with a length (RRR proximal and distal, PRR link) "
+                              f"may be a uniform rod {{ density }}; give a {kind} {body}'s "
+                              f"{', '.join(keys)}")
+            keys = ("density",)
         if not pr.keys(f"{where}.{body}", table, keys, keys):
             return None
         values = {k: pr.number(f"{where}.{body}.{k}", table[k], **RULES[_BODY_RULES[k]])
@@ -375,11 +406,12 @@ def _read_bodies(pr, where, kind, raw):
     return out
 
 
-def _expand_links(pr, section, table, legs, groups):
+def _expand_links(pr, section, table, legs, groups, kept=None):
     """``table`` with [[<section>.links]] (one table per leg) and [<section>.platform] (mass,
     com, inertia) replaced by theta's inertial entries they give (lumped_from_links,
     platform_from_body), and the keys they claim but could not give (invalid bodies, reported).
-    Giving an entry both ways is a problem."""
+    Giving an entry both ways is a problem. ``kept[section]``: the legs' bodies (a tuple, rods
+    as {density}), when they are valid and some body is a rod (ModelSpec.links)."""
     if not isinstance(table, dict) or not ({"links", "platform"} & set(table)):
         return table, set()
     out, claimed = dict(table), set()
@@ -399,6 +431,9 @@ def _expand_links(pr, section, table, legs, groups):
             bodies = [_read_bodies(pr, entry(f"{section}.links", f"leg {i + 1}"), leg.kind, raw)
                       for i, (leg, raw) in enumerate(zip(legs, links))]
             if None not in bodies:
+                if kept is not None and any("density" in body for b in bodies
+                                            for body in b.values()):
+                    kept[section] = tuple(bodies)
                 lumped = [lumped_from_links(leg, b) for leg, b in zip(legs, bodies)]
                 for key, idx in groups:
                     if key in per_leg:
@@ -424,12 +459,12 @@ def _expand_links(pr, section, table, legs, groups):
     return out, claimed - set(out)
 
 
-def _read_nominal(pr, nominal, groups, legs):
-    """[nominal]: theta's names and values (None when invalid)."""
+def _read_nominal(pr, nominal, groups, legs, kept=None):
+    """[nominal]: theta's names and values (None when invalid); ``kept``: as _expand_links."""
     param_names = theta_names(groups)
     if nominal is None:
         return param_names, None
-    nominal, unknown = _expand_links(pr, "nominal", nominal, legs, groups)
+    nominal, unknown = _expand_links(pr, "nominal", nominal, legs, groups, kept)
     keys = [key for key, _ in groups]
     pr.keys("nominal", nominal, keys, set(keys) - unknown)
     values = _read_theta(pr, "nominal", nominal, groups)
@@ -503,20 +538,8 @@ def _read_limits(pr, doc, n, param_names):
     return limits
 
 
-def default_closure_tolerance(legs, encoder_counts_per_rev, linear_resolution=0.0):
-    """[sensing] closure_tolerance when a model file does not set it, m: five encoder steps at
-    the longest active link, at least 1 um. (One step moves an elbow by la * 2 pi / counts;
-    quantised angles over the paper robot's workspace give residuals up to 0.8 of that, and
-    up to 1.3 with a full step of error: tests/core/test_closure.py measures it.) A prismatic
-    actuator's step moves its joint by ``linear_resolution`` m."""
-    step = 2 * math.pi / encoder_counts_per_rev if encoder_counts_per_rev > 0 else 0.0
-    moves = [leg.la * step if leg.actuator == "revolute" else linear_resolution or 0.0
-             for leg in legs]
-    return max(CLOSURE_FLOOR, 5 * max(moves))
-
-
-def _read_runtime(pr, doc, n, param_names, legs, groups, effector):
-    """The run-time sections [sensing], [gains.*], [plant]."""
+def _read_runtime(pr, doc, n, param_names, legs, groups, effector, kept=None):
+    """The run-time sections [sensing], [gains.*], [plant]; ``kept``: as _expand_links."""
     task = END_EFFECTORS.get(effector, ("x", "y"))
     sensing_raw = pr.table("sensing", doc.get("sensing"))
     sensing = _read_section(pr, "sensing", sensing_raw, _SCHEMA["sensing"], n, param_names)
@@ -543,19 +566,20 @@ def _read_runtime(pr, doc, n, param_names, legs, groups, effector):
                 pr, f"gains.{law}", pr.table(f"gains.{law}", gains_raw.get(law), required=False),
                 _SCHEMA[f"gains.{law}"], n, param_names, task)
     plant = _read_plant(pr, pr.table("plant", doc.get("plant")), n, param_names, groups, effector,
-                        legs)
+                        legs, kept)
     return sensing, gains, plant
 
 
-def _read_plant(pr, raw, n, param_names, groups, effector, legs):
+def _read_plant(pr, raw, n, param_names, groups, effector, legs, kept=None):
     """[plant]: theta's inertial entries (the truth), the payload and the plant's friction.
-    A platform carries its payload at its origin; a point end effector books it to a leg."""
+    A platform carries its payload at its origin; a point end effector books it to a leg.
+    ``kept``: as _expand_links."""
     schema = dict(_SCHEMA["plant"])
     if effector == "platform":
         del schema["payload_leg"]
     inertial = [(key, idx) for key, idx in groups if key not in FRICTION_MODELS[
         "coulomb_viscous_stribeck"]]
-    raw, unknown = _expand_links(pr, "plant", raw, legs, inertial)
+    raw, unknown = _expand_links(pr, "plant", raw, legs, inertial, kept)
     plant = _read_section(pr, "plant", raw, schema, n, param_names,
                           extra=[key for key, _ in inertial if key not in unknown])
     if plant is None:
@@ -602,11 +626,9 @@ def _check_reach(pr, key, legs, pose):
     if None in legs or (len(pose) == 3 and any(leg.attach is None for leg in legs)):
         return
     pose = [float(v) for v in pose]
-    for i, (leg, point) in enumerate(zip(legs, attachment_points(legs, pose))):
-        why = leg_reach_problem(leg, point)
-        if why is not None:
-            what = "the legs cannot meet" if len(pose) == 2 else "the platform is out of reach"
-            pr.add(key, f"{what} at {pose}: leg {i + 1} ({leg.kind}) {why}")
+    for i, why in reach_problems(legs, pose):
+        what = "the legs cannot meet" if len(pose) == 2 else "the platform is out of reach"
+        pr.add(key, f"{what} at {pose}: leg {i + 1} ({legs[i].kind}) {why}")
 
 
 def _read_platform(pr, doc, effector, legs, limits):
@@ -742,9 +764,14 @@ def read_model_file(path):
         table.get("kind", "RRR")) if isinstance(table, dict) else "RRR")
         for leg, table in zip(legs, legs_raw)]
     groups = theta_groups(kinds, effector, gravity, friction)
-    param_names, theta = _read_nominal(pr, pr.table("nominal", doc.get("nominal")), groups, legs)
+    kept = {}     # the bodies of [[nominal.links]], [[plant.links]] with a rod (ModelSpec.links)
+    param_names, theta = _read_nominal(pr, pr.table("nominal", doc.get("nominal")), groups, legs,
+                                       kept)
     limits = _read_limits(pr, doc, n, param_names)
-    sensing, gains, plant = _read_runtime(pr, doc, n, param_names, legs, groups, effector)
+    sensing, gains, plant = _read_runtime(pr, doc, n, param_names, legs, groups, effector, kept)
+    sensing_raw = doc.get("sensing")
+    design = read_design(pr, doc.get("design"), legs, effector, closure_default=not (
+        isinstance(sensing_raw, dict) and "closure_tolerance" in sensing_raw))
     home = _read_platform(pr, doc, effector, legs, limits)
     trajs = _read_trajectories(pr, doc, n, param_names, legs, END_EFFECTORS[effector])
     control = _read_control(pr, doc, n, (limits or {}).get("tau_max"))
@@ -755,7 +782,8 @@ def read_model_file(path):
         rk4_substeps=substeps, legs=legs, param_names=param_names, theta_nominal=theta,
         limits=limits, sensing=sensing, gains=gains, plant=plant, trajectories=trajs,
         control=control, file_sha256=hashlib.sha256(raw).hexdigest(), end_effector=effector,
-        gravity=tuple(gravity), home=None if home is None else tuple(home))
+        gravity=tuple(gravity), home=None if home is None else tuple(home), design=design,
+        links={"nominal": kept.get("nominal"), "plant": kept.get("plant")} if kept else None)
     formulation = json.dumps(spec.formulation(), sort_keys=True, separators=(",", ":"))
     object.__setattr__(spec, "formulation_sha256", hashlib.sha256(formulation.encode()).hexdigest())
     return spec

@@ -284,6 +284,21 @@ def check_excitation(model, exc, *, v_max, a_max, tau_limit, sing_min, radius, s
     return out
 
 
+def _external(model, short):
+    """``model``'s generated function ``short`` as a CasADi Function (``casadi.external``,
+    finite-difference derivatives), with a design input bound to ``model.design`` (a model
+    with a [design] table: :meth:`pm2dof.Model.at_design`)."""
+    import casadi as ca
+    ext = ca.external(f"{model.name}_{short}", model.library, {"enable_fd": True})
+    last = ext.n_in() - 1
+    if last < 0 or ext.name_in(last) != "design":
+        return ext
+    ins = [ca.MX.sym(ext.name_in(k), ext.sparsity_in(k)) for k in range(last)]
+    return ca.Function(short, ins, ext.call(ins + [ca.DM(model.design)]),
+                       [ext.name_in(k) for k in range(last)],
+                       [ext.name_out(k) for k in range(ext.n_out())])
+
+
 def sample_function(model, independent, smooth_sign=None):
     """CasADi function (x (m), xd (m), xdd (m)) -> (vec of Y[:, independent] (m r,
     column-major), tau (n) of the min-norm split with Tables 1-2 (eq. 21), both singularity
@@ -298,8 +313,7 @@ def sample_function(model, independent, smooth_sign=None):
     """
     import casadi as ca
     n, p, m = model.n_legs, len(model.param_names), model.dof
-    ext = {k: ca.external(f"{model.name}_{k}", model.library, {"enable_fd": True})
-           for k in ("ik", "Y", "S", "singularity_measures")}
+    ext = {k: _external(model, k) for k in ("ik", "Y", "S", "singularity_measures")}
     x, v, acc = ca.MX.sym("x", m), ca.MX.sym("v", m), ca.MX.sym("a", m)
     q = ext["ik"](x)
     Yfull = ca.reshape(ext["Y"](q, v, v, acc)[0], p, m).T       # the C writes Y row-major
