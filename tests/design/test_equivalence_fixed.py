@@ -30,8 +30,14 @@ from pm2dof.core.model_file import read_model_file
 from pm2dof.core.paths import SHIPPED_MODELS
 from tests import derivations
 from tests.design.conventional import conventional_doc, conventional_file, dumps, set_key
-from tests.design.equivalence import (SING_MIN, TOL, compare_all, draw_pose, function_inputs,
-                                      short_names)
+from tests.design.equivalence import (
+    SING_MIN,
+    TOL,
+    compare_all,
+    draw_pose,
+    function_inputs,
+    short_names,
+)
 
 pytestmark = pytest.mark.long     # two in-memory derivations (seconds): make test, not quick
 
