@@ -10,8 +10,11 @@ The design's spec equals the conventional file's: the legs exactly, theta_nomina
 given as rods follow the lengths), the plant's truth and the default closure tolerance to
 1e-12.
 
-Design models: ``pm2dof/models/*_design.toml`` and ``tests/design/models/*.toml`` (generated
-C in ``tests/design/generated/<name>/`` when there). The suite draws 1 seeded design per model;
+Design models: the shipped ``pm2dof/models/*_design.toml`` (the paper's robot, a 4-RRR
+platform with rods) and the fixtures ``tests/design/models/*.toml`` (a PRR platform: linear
+actuators, a rail moved sideways; an RPR platform: a base and an attachment point; the paper's
+robot under gravity), which the slow tier derives and compiles into a temporary folder once
+per session. The suite draws 1 seeded design per shipped model;
 the slow tier (``make test-slow``) 20 per model, the first two at the bounds' low and high
 ends, redrawing a design that ``at_design`` refuses (:class:`pm2dof.DesignError`: home or a
 move out of reach), and fails when more than half are redrawn.
@@ -43,7 +46,9 @@ from tests.design.equivalence import TOL, compare_all
 pytestmark = pytest.mark.long     # one in-memory derivation per design (seconds)
 
 HERE = SHIPPED_MODELS.parent.parent / "tests" / "design"
-DESIGN_FILES = sorted(SHIPPED_MODELS.glob("*_design.toml")) + sorted((HERE / "models").glob("*.toml"))
+SHIPPED_DESIGNS = sorted(SHIPPED_MODELS.glob("*_design.toml"))
+FIXTURES = sorted((HERE / "models").glob("*.toml"))
+DESIGN_FILES = SHIPPED_DESIGNS + FIXTURES
 SLOW_COUNT = 20
 POSES = 2
 
@@ -65,22 +70,23 @@ def _report_observed():
 _LOADED: dict = {}
 
 
-def design_model(path):
-    """The design model of ``path``, or pytest.skip naming why it cannot be checked yet."""
+@pytest.fixture(scope="session")
+def fixture_dir(tmp_path_factory):
+    """Where the fixtures' generated C is derived and compiled (once per session)."""
+    return tmp_path_factory.mktemp("design_fixtures")
+
+
+def design_model(path, fixture_dir=None):
+    """The design model of ``path``: a shipped model's generated code, or a fixture derived
+    and compiled into ``fixture_dir``."""
     if path not in _LOADED:
-        gen = HERE / "generated" / path.stem
-        try:
-            m = pm2dof.load_model(path, generated=gen if gen.is_dir() else None)
-        except Exception as exc:          # any reason (not derived, stale, ...): skip, naming it
-            _LOADED[path] = f"{path.name} does not load: {type(exc).__name__}: {exc}"
-        else:
-            _LOADED[path] = m if hasattr(m, "at_design") else (
-                f"{path.name} loads, but Model has no at_design")
+        generated = None
+        if path in FIXTURES:
+            from pm2dof.derive.run import derive
+            generated = derive(path, fixture_dir / path.stem, progress=lambda *a: None)
+        _LOADED[path] = pm2dof.load_model(path, generated=generated)
     m = _LOADED[path]
-    if isinstance(m, str):
-        pytest.skip(m)
-    if not m.design_names:
-        pytest.skip(f"{path.name} has no [design] table")
+    assert m.design_names, f"{path.name} has no [design] table"
     return m
 
 
@@ -159,7 +165,7 @@ def check_design(m, values, tmp_path, seed):
 
 # --- the suite: one seeded random design per design model ----------------------------------
 
-@pytest.mark.parametrize("path", DESIGN_FILES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", SHIPPED_DESIGNS, ids=lambda p: p.stem)
 def test_a_random_design_equals_its_conventional_derivation(path, tmp_path):
     m = design_model(path)
     designs, refused = draw_designs(m, 1, _seed(m.name, 0), ends=False)
@@ -189,8 +195,8 @@ def slow_designs(m):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("path", DESIGN_FILES, ids=lambda p: p.stem)
-def test_few_designs_are_refused(path):
-    m = design_model(path)
+def test_few_designs_are_refused(path, fixture_dir):
+    m = design_model(path, fixture_dir)
     designs, refused = slow_designs(m)
     assert len(refused) <= SLOW_COUNT // 2 and len(designs) == SLOW_COUNT, (
         f"{m.name}: {len(refused)} of the designs drawn in the bounds were refused by at_design "
@@ -201,8 +207,8 @@ def test_few_designs_are_refused(path):
 @pytest.mark.slow
 @pytest.mark.parametrize("k", range(SLOW_COUNT))
 @pytest.mark.parametrize("path", DESIGN_FILES, ids=lambda p: p.stem)
-def test_twenty_designs_equal_their_conventional_derivations(path, k, tmp_path):
-    m = design_model(path)
+def test_twenty_designs_equal_their_conventional_derivations(path, k, tmp_path, fixture_dir):
+    m = design_model(path, fixture_dir)
     designs, refused = slow_designs(m)
     if k >= len(designs):
         pytest.fail(f"{m.name}: only {len(designs)} designs accepted ({len(refused)} refused)")
