@@ -13,6 +13,10 @@ excitation file's ``[excitation]`` table):
 ``formulation_sha256``
     The hash of what the generated code depends on (legs, geometry, friction model).
 
+A model with a ``[design]`` table (:meth:`pm2dof.Model.at_design`) adds ``design``: its
+variables' values as JSON (``{"la": 0.25, "lb": 0.24}``, m), which a command applies to the
+file's model and which a given model must match.
+
 A file records all three (:data:`ENTRIES`) or none (a log of a robot that pm2dof did not
 write: the command's ``--model`` says which model it is). Some without the others is a file of
 pm2dof before 0.3, which named its model by ``model`` alone: it is refused
@@ -20,6 +24,8 @@ pm2dof before 0.3, which named its model by ``model`` alone: it is refused
 (``--model``, else the file's, else the paper's robot) and refuses a file made for another
 model.
 """
+import json
+import math
 import os
 from pathlib import Path
 
@@ -47,7 +53,26 @@ def model_entries(model, folder=None):
         ref = str(path)
     else:
         ref = Path(os.path.relpath(path, Path(folder).absolute())).as_posix()
-    return dict(zip(ENTRIES, (ref, model.name, model.spec.formulation_sha256)))
+    out = dict(zip(ENTRIES, (ref, model.name, model.spec.formulation_sha256)))
+    if model.design_names:
+        out["design"] = json.dumps(dict(zip(model.design_names, map(float, model.design))))
+    return out
+
+
+def _design(entries, source):
+    """The ``design`` entry of a file as {name: value}, or None without one."""
+    text = entries.get("design")
+    if text in (None, ""):
+        return None
+    try:
+        values = json.loads(text)
+        if not (isinstance(values, dict) and all(isinstance(v, (int, float)) and math.isfinite(v)
+                                                 for v in values.values())):
+            raise ValueError("not a table of finite numbers")
+    except ValueError as exc:
+        raise ArgumentError(f"{source} records a design that cannot be read ({text!r}: {exc})") \
+            from None
+    return values
 
 
 def incomplete(entries, source="the file"):
@@ -92,7 +117,13 @@ def mismatch(model, entries, folder=None, source="the file"):
         return old
     ref, name, sha = (entries[k] for k in ENTRIES)
     if name == model.name and sha == model.spec.formulation_sha256:
-        return None
+        design = _design(entries, source)
+        have = dict(zip(model.design_names, map(float, model.design)))
+        if design is None and not have or design == have:
+            return None
+        return (f"{source} was written for model {name!r} at design {design or 'none'}, not at "
+                f"design {have or 'none'}: leave --model out to use the file's model at its "
+                f"design, or give the model at that design (Model.at_design)")
     return (f"{source} was written for model {name!r} (model {ref}, formulation {sha[:12]}), "
             f"not {model.name!r} ({model.spec.path}, formulation "
             f"{model.spec.formulation_sha256[:12]}): leave --model out to use the file's model, "
@@ -142,6 +173,10 @@ def model_for(entries, folder=None, source="the file", *, model=None, generated=
                         f"recorded, or pass --model")
         model = path
     m = model if isinstance(model, Model) else load_model(model, generated)
+    design = _design(entries, source)
+    if design is not None and not isinstance(model, Model) and m.design_names \
+            and entries.get("formulation_sha256") == m.spec.formulation_sha256:
+        m = m.at_design(design)          # the file's model at the file's design
     msg = mismatch(m, entries, folder, source)
     if msg:
         raise error(msg)

@@ -292,9 +292,11 @@ def load_excitation(path, model=None):
     # a platform's file has a phi series too (a_phi, b_phi); a point's, x and y only
     m = 3 if {"a_phi", "b_phi"} & set(e) else 2
     coefficient_keys = _coefficient_keys(m)
-    pr.keys("excitation", e, {*ENTRIES, "base_hz", "periods", "center", *_coefficient_keys(3)},
+    pr.keys("excitation", e, {*ENTRIES, "design", "base_hz", "periods", "center",
+                              *_coefficient_keys(3)},
             ("base_hz", "periods", "center", *coefficient_keys))
-    entries = {k: pr.text(f"excitation.{k}", e[k], nonempty=True) for k in ENTRIES if k in e}
+    entries = {k: pr.text(f"excitation.{k}", e[k], nonempty=True) for k in (*ENTRIES, "design")
+               if k in e}
     old = incomplete(entries, "[excitation]")
     if old is not None:
         pr.add(None, old)
