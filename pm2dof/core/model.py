@@ -280,9 +280,9 @@ class Model(DerivativeMethods, PoseMethods):
         _check_design(spec, gen_dir, manifest)
         self._bind(spec, gen_dir, manifest, lib_path, _cbind.Library(str(lib_path)))
 
-    def _bind(self, spec, gen_dir, manifest, lib_path, lib, frozen=None):
-        """Bind every generated function of ``lib`` for ``spec`` (at its design, if any);
-        ``frozen``: the manifest's read-only data when already made."""
+    def _bind(self, spec, gen_dir, manifest, lib_path, lib):
+        """Resolve and check every generated function of ``lib`` for ``spec`` (at its design,
+        if any), then :meth:`_assemble`."""
         design = _design_values(spec)
         funcs = {}
         for short in manifest.function_names():        # every function the derivation wrote
@@ -303,6 +303,15 @@ class Model(DerivativeMethods, PoseMethods):
             # (and the energies check theirs: a pose out of reach is a WorkspaceError)
             f.check_outputs = not contract.reports_by_status(short)
             funcs[short] = f
+        self._assemble(spec, gen_dir, manifest, lib_path, lib, funcs, _freeze(manifest.data),
+                       types.MappingProxyType({name: Layout(name, fl) for name, fl in
+                                               manifest.get("layouts", {}).items()}))
+
+    def _assemble(self, spec, gen_dir, manifest, lib_path, lib, funcs, frozen, layouts):
+        """Set every attribute from the bound functions ``funcs`` {short: Function}: the fast
+        paths, the scratch buffers, a platform's working modes read at home. ``frozen``: the
+        manifest's read-only data; ``layouts``: {name: Layout} (read-only)."""
+        design = _design_values(spec)
         m = funcs["ik"].sizes_in[0]          # the task dimension of the generated code
         task_names = spec.task_names
         if len(task_names) != m:
@@ -315,13 +324,11 @@ class Model(DerivativeMethods, PoseMethods):
         fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names), h), sing,
                         sing_thr, residual, spec.sensing["closure_tolerance"])
         for k, v in (("spec", spec),
-                     ("manifest", frozen if frozen is not None else _freeze(manifest.data)),
+                     ("manifest", frozen),
                      ("library", str(lib_path)),
                      ("generated", str(gen_dir)),
                      ("_lib", lib), ("_f", types.MappingProxyType(funcs)), ("_fast", fast),
-                     ("_layouts", types.MappingProxyType(
-                         {name: Layout(name, fl)
-                          for name, fl in manifest.get("layouts", {}).items()})),
+                     ("_layouts", layouts),
                      ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual),
                      ("_m", m), ("_task_names", task_names), ("_modes", None),
                      ("_words", singularity_words(spec.legs, spec.end_effector)),
@@ -360,7 +367,9 @@ class Model(DerivativeMethods, PoseMethods):
     def at_design(self, values):
         """This robot at another design: a new Model whose every function (kinematics,
         dynamics, controllers, plant, planner) is that design's. No derivation and no compile:
-        the generated C takes the design as an input, bound once here (about a millisecond).
+        the generated C takes the design as an input. Each of this model's functions is cloned
+        at the new design (``Function.clone``: no symbol lookup, the signatures already
+        checked), the two models independent.
 
         Parameters
         ----------
@@ -384,9 +393,12 @@ class Model(DerivativeMethods, PoseMethods):
             raise DesignError(f"model {self.name!r} has no [design] table: its geometry is fixed "
                               f"(add a [design] table to {self.spec.path} and derive it)")
         spec = spec_at_design(self.spec, values)
+        design = _design_values(spec)
+        funcs = {short: f.clone(fixed=design if f.fixed is not None else None)
+                 for short, f in self._f.items()}
         out = Model.__new__(Model)
-        out._bind(spec, Path(self.generated), self._manifest_obj, self.library, self._lib,
-                  self.manifest)
+        out._assemble(spec, Path(self.generated), self._manifest_obj, self.library, self._lib,
+                      funcs, self.manifest, self._layouts)
         return out
 
     def __setattr__(self, key, value):
