@@ -10,6 +10,7 @@ the result is written there (no allocation) and returned.
 import math
 import types
 import warnings
+import weakref
 from pathlib import Path
 
 import numpy as np
@@ -210,28 +211,106 @@ def _shapes(n, m, p, h):
             "inverse_dynamics_jacobians": ((m, m), (m, m))}
 
 
+_KINDS = {"forward_dynamics_jacobians": ForwardDynamicsJacobians,
+          "sampled_step_jacobians": SampledStepJacobians,
+          "inverse_dynamics_jacobians": InverseDynamicsJacobians}
+
+
+def _method(short, f, shape, sing, sing_thr, residual, closure_tol):
+    """The fast path of the Model method ``short``: one :class:`_cbind.Method` (one C call that
+    binds, evaluates and checks) of its bound function ``f``, returning ``shape``. It refuses
+    (``_cbind.Refused``) what it does not accept: a bad argument, a non-finite result, a
+    singular pose, fk's loops not closing; the method then takes its checked path, which names
+    the problem in a typed error."""
+    kind = _KINDS.get(short)
+    outs = list((None, *shape) if kind else (shape,))   # the Jacobians skip the value
+    guard = None
+    if len(outs) < f.n_out and f.names_out[-1] == "sing":   # the pose's measures, checked
+        outs.append(sing)
+        guard = (f.n_out - 1, "at_least", sing_thr)
+    elif short == "fk":                                     # the closure residuals
+        outs.append(residual)
+        guard = (1, "abs_at_most", closure_tol)
+    return _cbind.Method(f, (None,) * f.n_in, tuple(outs), empty=np.empty, kind=kind,
+                         finite=True, guard=guard)
+
+
 def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
-    """The fast path of each Model method: one :class:`_cbind.Method` (one C call that binds,
-    evaluates and checks) per entry of ``shapes``. It refuses (``_cbind.Refused``) what it does
-    not accept: a bad argument, a non-finite result, a singular pose, fk's loops not closing;
-    the method then takes its checked path, which names the problem in a typed error."""
-    kinds = {"forward_dynamics_jacobians": ForwardDynamicsJacobians,
-             "sampled_step_jacobians": SampledStepJacobians,
-             "inverse_dynamics_jacobians": InverseDynamicsJacobians}
-    out = {}
-    for short, shape in shapes.items():
-        f, kind = funcs[short], kinds.get(short)
-        outs = list((None, *shape) if kind else (shape,))   # the Jacobians skip the value
-        guard = None
-        if len(outs) < f.n_out and f.names_out[-1] == "sing":   # the pose's measures, checked
-            outs.append(sing)
-            guard = (f.n_out - 1, "at_least", sing_thr)
-        elif short == "fk":                                     # the closure residuals
-            outs.append(residual)
-            guard = (1, "abs_at_most", closure_tol)
-        out[short] = _cbind.Method(f, (None,) * f.n_in, tuple(outs), empty=np.empty, kind=kind,
-                                   finite=True, guard=guard)
-    return out
+    """{short: :func:`_method`} for every entry of ``shapes``."""
+    return {short: _method(short, funcs[short], shape, sing, sing_thr, residual, closure_tol)
+            for short, shape in shapes.items()}
+
+
+class _Functions(dict):
+    """The bound functions {short: Function} of a model at a design (:meth:`Model.at_design`),
+    each cloned from the loaded model's (``root``) at ``design`` on first use: a design whose
+    objectives call two functions pays for two. A name bound already is a plain dict lookup;
+    iterating, ``len``, ``in``, ``keys``, ``items``, ``values`` and ``copy`` see every function (and
+    bind the rest), in ``root``'s order. Read through a ``MappingProxyType``."""
+
+    __slots__ = ("_root", "_design")
+
+    def __init__(self, root, design):
+        super().__init__()
+        self._root, self._design = root, design
+
+    def __missing__(self, short):
+        f = self._root[short]                                 # KeyError for an unknown name
+        g = f.clone(fixed=self._design if f.fixed is not None else None)
+        dict.__setitem__(self, short, g)
+        return g
+
+    def _all(self):
+        if dict.__len__(self) < len(self._root):
+            bound = [(short, self[short]) for short in self._root]
+            dict.clear(self)
+            dict.update(self, bound)
+        return self
+
+    def __iter__(self):
+        return dict.__iter__(self._all())
+
+    def __len__(self):
+        return len(self._root)
+
+    def __contains__(self, short):
+        return short in self._root
+
+    def keys(self):
+        return dict.keys(self._all())
+
+    def items(self):
+        return dict.items(self._all())
+
+    def values(self):
+        return dict.values(self._all())
+
+    def get(self, short, default=None):
+        return self[short] if short in self._root else default
+
+    def copy(self):
+        return dict(self.items())
+
+
+class _Pending:
+    """A fast path of a model at a design not built yet: its first call builds the
+    :class:`_cbind.Method` (:func:`_method`), puts it in the model's ``_fast`` in its own place
+    and calls it; later calls find the Method (a dict lookup, as on a loaded model). Holds the
+    model by a weak reference (no cycle)."""
+
+    __slots__ = ("_model", "_short", "_shape")
+
+    def __init__(self, model, short, shape):
+        self._model, self._short, self._shape = weakref.ref(model), short, shape
+
+    def __call__(self, *args):
+        m = self._model()
+        if m is None:
+            raise ReferenceError(f"the model of this {self._short!r} fast path is gone")
+        meth = m._fast[self._short] = _method(
+            self._short, m._f[self._short], self._shape, m._sing, m._sing_thr, m._residual,
+            m.spec.sensing["closure_tolerance"])
+        return meth(*args)
 
 
 class Model(DerivativeMethods, PoseMethods):
@@ -271,7 +350,7 @@ class Model(DerivativeMethods, PoseMethods):
 
     __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_fast", "_layouts",
                  "_sing_thr", "_sing", "_residual", "_m", "_task_names", "_modes", "_words",
-                 "_design", "_manifest_obj", "__weakref__")
+                 "_design", "_manifest_obj", "_root", "__weakref__")
 
     def __init__(self, spec, gen_dir=None):
         gen_dir = (Path(gen_dir).expanduser().absolute() if gen_dir is not None
@@ -307,12 +386,17 @@ class Model(DerivativeMethods, PoseMethods):
                        types.MappingProxyType({name: Layout(name, fl) for name, fl in
                                                manifest.get("layouts", {}).items()}))
 
-    def _assemble(self, spec, gen_dir, manifest, lib_path, lib, funcs, frozen, layouts):
+    def _assemble(self, spec, gen_dir, manifest, lib_path, lib, funcs, frozen, layouts,
+                  root=None, words=None):
         """Set every attribute from the bound functions ``funcs`` {short: Function}: the fast
         paths, the scratch buffers, a platform's working modes read at home. ``frozen``: the
-        manifest's read-only data; ``layouts``: {name: Layout} (read-only)."""
+        manifest's read-only data; ``layouts``: {name: Layout} (read-only). ``root``: the
+        loaded model's functions when ``funcs`` is a :class:`_Functions` of a model at a
+        design (its fast paths are then built on first use, :class:`_Pending`); ``words``:
+        the loaded model's (the legs' kinds do not change with the design)."""
         design = _design_values(spec)
-        m = funcs["ik"].sizes_in[0]          # the task dimension of the generated code
+        sizes = funcs if root is None else root
+        m = sizes["ik"].sizes_in[0]          # the task dimension of the generated code
         task_names = spec.task_names
         if len(task_names) != m:
             _stale(spec, gen_dir, f"{lib_path} has task dimension {m}, the model file "
@@ -320,18 +404,25 @@ class Model(DerivativeMethods, PoseMethods):
         sing_thr = (spec.limits["singularity_threshold"],
                     spec.limits["parallel_singularity_threshold"])
         sing, residual = np.zeros(2), np.zeros(spec.n_legs)
-        h = funcs["H"].sizes_out[0]          # constraints: 2 (n - 1) at a point, 2 n a platform
-        fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names), h), sing,
-                        sing_thr, residual, spec.sensing["closure_tolerance"])
+        h = sizes["H"].sizes_out[0]          # constraints: 2 (n - 1) at a point, 2 n a platform
+        shapes = _shapes(spec.n_legs, m, len(spec.param_names), h)
+        if root is None:
+            fast = _methods(funcs, shapes, sing, sing_thr, residual,
+                            spec.sensing["closure_tolerance"])
+        else:
+            fast = {short: _Pending(self, short, shape) for short, shape in shapes.items()}
+        f = types.MappingProxyType(funcs)
         for k, v in (("spec", spec),
                      ("manifest", frozen),
                      ("library", str(lib_path)),
                      ("generated", str(gen_dir)),
-                     ("_lib", lib), ("_f", types.MappingProxyType(funcs)), ("_fast", fast),
+                     ("_lib", lib), ("_f", f), ("_fast", fast),
+                     ("_root", f if root is None else root),
                      ("_layouts", layouts),
                      ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual),
                      ("_m", m), ("_task_names", task_names), ("_modes", None),
-                     ("_words", singularity_words(spec.legs, spec.end_effector)),
+                     ("_words", words if words is not None else
+                      singularity_words(spec.legs, spec.end_effector)),
                      ("_design", design), ("_manifest_obj", manifest)):
             object.__setattr__(self, k, v)
         if spec.home is not None:       # a platform: its legs' working modes, read at home
@@ -367,9 +458,10 @@ class Model(DerivativeMethods, PoseMethods):
     def at_design(self, values):
         """This robot at another design: a new Model whose every function (kinematics,
         dynamics, controllers, plant, planner) is that design's. No derivation and no compile:
-        the generated C takes the design as an input. Each of this model's functions is cloned
-        at the new design (``Function.clone``: no symbol lookup, the signatures already
-        checked), the two models independent.
+        the generated C takes the design as an input. Each function of the loaded model is
+        cloned at the new design when the new model first uses it (``Function.clone``: no
+        symbol lookup, the signatures already checked), so a design pays for the functions it
+        calls; the models are independent.
 
         Parameters
         ----------
@@ -393,12 +485,10 @@ class Model(DerivativeMethods, PoseMethods):
             raise DesignError(f"model {self.name!r} has no [design] table: its geometry is fixed "
                               f"(add a [design] table to {self.spec.path} and derive it)")
         spec = spec_at_design(self.spec, values)
-        design = _design_values(spec)
-        funcs = {short: f.clone(fixed=design if f.fixed is not None else None)
-                 for short, f in self._f.items()}
         out = Model.__new__(Model)
         out._assemble(spec, Path(self.generated), self._manifest_obj, self.library, self._lib,
-                      funcs, self.manifest, self._layouts)
+                      _Functions(self._root, _design_values(spec)), self.manifest,
+                      self._layouts, root=self._root, words=self._words)
         return out
 
     def __setattr__(self, key, value):

@@ -139,3 +139,33 @@ def test_a_refused_design_leaves_the_source_as_it_was(base):
         base.at_design({base.design_names[0]: lo - 0.01})
     np.testing.assert_array_equal(base.ik(np.array(pose)), q0)
     assert all(f.fixed in (None, tuple(base.design)) for f in base._f.values())
+
+
+def test_a_design_binds_only_what_it_uses_and_every_view_sees_all(base):
+    pose, (d1, _) = CASES[base.name]
+    m2 = base.at_design(d1)
+    inner = gc.get_referents(m2._f)[0]                                # behind the proxy
+    n_bound = dict.__len__(inner)
+    assert n_bound == (1 if base.dof == 3 else 0)                     # a platform's ik at home
+    assert list(m2._f.copy()) == list(base._f) and len(m2._f) == len(base._f)
+    assert dict.__len__(inner) == len(base._f)
+    m3 = base.at_design(d1)
+    f = m3.function("ik")
+    assert m3.function("ik") is f and "Me" in m3._f and "nosuch" not in m3._f
+    with pytest.raises(KeyError):
+        m3.function("nosuch")
+    assert m3._f.get("nosuch") is None and m3._f.get("ik") is f
+    assert list(m3._f) == list(base._f)                               # the loaded model's order
+    assert [g.name for g in m3._f.values()] == [g.name for g in base._f.values()]
+    assert m3.function("ik") is f                                     # kept when the rest bound
+    m4 = base.at_design(d1)
+    pending = m4._fast["W"]
+    q = m4.ik(np.array(pose))
+    W = m4.W(q)                                                       # built on its first call
+    assert m4._fast["W"] is not pending and type(m4._fast["W"]) is _cbind.Method
+    np.testing.assert_array_equal(W, m2.W(q))
+    chain = base
+    for _ in range(3):                                                # a model of a model of ...
+        chain = chain.at_design(d1)
+    assert chain._root is base._root
+    np.testing.assert_array_equal(chain.W(q), W)
