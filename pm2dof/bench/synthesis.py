@@ -160,6 +160,7 @@ def _dask_overhead(repeats, quick, say, timeout=60.0):
     from ..synthesis.optimize import grid_designs
     from ..synthesis.runner import run_design
     from ..synthesis.spec import find_design_study, read_design_study, with_overrides
+    from ..synthesis.store import read_designs
     grid = 3 if quick else 8
     st = read_design_study(find_design_study("paper_legs"))
     if quick:
@@ -180,11 +181,17 @@ def _dask_overhead(repeats, quick, say, timeout=60.0):
                 if res["evaluated"] != len(X):
                     raise RuntimeError(f"run_design evaluated {res['evaluated']} of {len(X)}")
                 t0 = time.perf_counter()
-                evaluate_batch(st, X)
+                F, _, _ = evaluate_batch(st, X)
                 th = time.perf_counter() - t0
                 if r:
                     t_dask.append(td)
                     t_here.append(th)
+            _, cols = read_designs(f"{tmp}/r{r}")       # the same designs, the same values
+            got = np.column_stack([cols[v] for v in st.variables])
+            sign = [-1.0 if o.sense == "max" else 1.0 for o in st.objectives]
+            Fd = np.column_stack([s * cols[o.name] for s, o in zip(sign, st.objectives)])
+            if not (np.array_equal(got, X) and np.array_equal(Fd, F)):
+                raise RuntimeError("the designs evaluated on Dask differ from this process's")
     finally:
         disconnect(client)
     ratio = stats([a / b for a, b in zip(t_dask, t_here)])["median"]
