@@ -126,6 +126,12 @@ def run_bench(model=None, quick=False, progress=None, models=None):
       ``speedup_binding_vs_casadi_function`` (casadi.Function call / NAController.step);
       agreement ``agreement_c_vs_numpy`` (max relative difference ||a-b||/||b|| of tau_a and
       state_next over random states; ~1e-12) and ``agreement_c_vs_lambdify``.
+    - ``design_rows`` and the ``design_*`` ratios: the paper's robot with a ``[design]`` table
+      beside the fixed-geometry model (:func:`pm2dof.bench.design.design_bench`).
+    - ``synthesis_rows`` and the ``synthesis_*`` keys: design studies' designs per second per
+      objective class beside structdimsynth's published cost, a design's kinematic objectives
+      against their generated-C calls, Dask's overhead on one worker
+      (:func:`pm2dof.bench.synthesis.synthesis_bench`; it starts a one-worker LocalCluster).
     - ``targets``: pass/fail of each target (never enforced), ``machine``: CPU, cores,
       compiler and flags, Python.
 
