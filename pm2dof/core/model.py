@@ -296,12 +296,12 @@ class _Pending:
     """A fast path of a model at a design not built yet: its first call builds the
     :class:`_cbind.Method` (:func:`_method`), puts it in the model's ``_fast`` in its own place
     and calls it; later calls find the Method (a dict lookup, as on a loaded model). Holds the
-    model by a weak reference (no cycle)."""
+    model by a weak reference ``ref`` (no cycle)."""
 
     __slots__ = ("_model", "_short", "_shape")
 
-    def __init__(self, model, short, shape):
-        self._model, self._short, self._shape = weakref.ref(model), short, shape
+    def __init__(self, ref, short, shape):
+        self._model, self._short, self._shape = ref, short, shape
 
     def __call__(self, *args):
         m = self._model()
@@ -410,7 +410,8 @@ class Model(DerivativeMethods, PoseMethods):
             fast = _methods(funcs, shapes, sing, sing_thr, residual,
                             spec.sensing["closure_tolerance"])
         else:
-            fast = {short: _Pending(self, short, shape) for short, shape in shapes.items()}
+            ref = weakref.ref(self)
+            fast = {short: _Pending(ref, short, shape) for short, shape in shapes.items()}
         f = types.MappingProxyType(funcs)
         for k, v in (("spec", spec),
                      ("manifest", frozen),

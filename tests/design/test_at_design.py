@@ -169,3 +169,26 @@ def test_a_design_binds_only_what_it_uses_and_every_view_sees_all(base):
         chain = chain.at_design(d1)
     assert chain._root is base._root
     np.testing.assert_array_equal(chain.W(q), W)
+
+
+def test_a_model_at_a_design_is_freed_without_the_garbage_collector(base):
+    """No reference cycle (the pending fast paths hold their model weakly): a design study's
+    thousands of models go as soon as they are dropped, also with gc off (the benchmarks)."""
+    import weakref
+    pose, (d1, _) = CASES[base.name]
+    x = np.array(pose)
+    gc.disable()
+    try:
+        for _ in range(3):
+            m2 = base.at_design(d1)
+            q = m2.ik(x)
+            m2.W(q)
+            m2.function("singularity_measures")
+            ref = weakref.ref(m2)
+            fast = m2._fast["Me"]                       # a pending one, kept beyond the model
+            del m2
+            assert ref() is None
+            with pytest.raises(ReferenceError, match="'Me' fast path is gone"):
+                fast(q, base.theta_nominal, None)
+    finally:
+        gc.enable()
