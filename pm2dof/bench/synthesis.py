@@ -53,6 +53,8 @@ OBJECTIVE_CLASSES = {
 }
 #: the regions (50 x 50 points in a full run): the shipped studies' boxes, a platform at home
 _REGION_N = 50
+#: the Dask batch of a full run: a DASK_GRID x DASK_GRID grid of paper_legs designs
+DASK_GRID = 8
 
 
 def class_study(model_name, objective_class, n=_REGION_N):
@@ -152,16 +154,17 @@ def _kinematic_over_c(name, repeats, quick):
     return ratio, stats(t_obj)["median"], stats(t_c)["median"], len(pts)
 
 
-def _dask_overhead(repeats, quick, say, timeout=60.0):
-    """The same designs through run_design on one worker and evaluate_batch here, rounds
-    interleaved: (median of the paired ratios, median s of each, designs)."""
+def _dask_overhead(repeats, quick, say, grid=None, timeout=60.0):
+    """The same designs (a ``grid`` x ``grid`` grid; default 3 quick, else :data:`DASK_GRID`)
+    through run_design on one worker and evaluate_batch here, rounds interleaved: (median of
+    the paired ratios, median s of each, designs)."""
     from ..studies.runner import connect, disconnect
     from ..synthesis.objectives import evaluate_batch
     from ..synthesis.optimize import grid_designs
     from ..synthesis.runner import run_design
     from ..synthesis.spec import find_design_study, read_design_study, with_overrides
     from ..synthesis.store import read_designs
-    grid = 3 if quick else 8
+    grid = grid or (3 if quick else DASK_GRID)
     st = read_design_study(find_design_study("paper_legs"))
     if quick:
         st = with_overrides(st, quick=True)
@@ -198,9 +201,12 @@ def _dask_overhead(repeats, quick, say, timeout=60.0):
     return ratio, stats(t_dask)["median"], stats(t_here)["median"], len(X)
 
 
-def synthesis_bench(repeats, quick=False, say=None, models=tuple(SYNTH_MODELS), dask=True):
+def synthesis_bench(repeats, quick=False, say=None, models=tuple(SYNTH_MODELS), dask=True,
+                    dask_grid=None):
     """The measurements of the module docstring, ``repeats`` rounds each (``quick``: 8 x 8
     regions, 2 designs per batch, a 3 x 3 grid through Dask; numbers that are noise).
+    ``dask_grid``: the Dask batch's grid points per variable (default :data:`DASK_GRID`, 3
+    quick).
 
     Returns a JSON-able dict: ``synthesis_rows`` {model: {class: {designs_per_s, designs,
     ok_fraction, structdimsynth_s, speedup_vs_structdimsynth}, "kinematic_over_c": ratio,
@@ -227,7 +233,7 @@ def synthesis_bench(repeats, quick=False, say=None, models=tuple(SYNTH_MODELS), 
                r[c]["speedup_vs_structdimsynth"] for r in rows.values()
                for c in OBJECTIVE_CLASSES if c != "kinematic")}
     if dask:
-        ratio, td, th, n = _dask_overhead(repeats, quick, say)
+        ratio, td, th, n = _dask_overhead(repeats, quick, say, dask_grid)
         res.update({"synthesis_dask_overhead": ratio - 1.0,
                     "synthesis_dask_over_inprocess": ratio, "synthesis_dask_s": td,
                     "synthesis_inprocess_s": th, "synthesis_dask_designs": n})
