@@ -36,7 +36,9 @@ ALLOWED = {
     "analysis": _RUNTIME | {"infra", "analysis", "linear"},   # 3: experiment, reports, maps
     "identification": _RUNTIME | {"infra", "identification"},   # 3: logs, excitation, fit
     "planning": _RUNTIME | {"infra", "planning"},       # 3: motion planning
-    "bench": _RUNTIME | {"infra", "reference", "bench", "derive", "planning", "linear"},
+    # bench/synthesis.py times design studies (synthesis) on Dask (studies' connect)
+    "bench": _RUNTIME | {"infra", "reference", "bench", "derive", "planning", "linear",
+                         "studies", "synthesis"},
     "export": _RUNTIME | {"export"},                    # beside bench: C projects
     "studies": _RUNTIME | {"infra", "identification", "studies", "linear"},   # 3: Dask
     # 3: design studies (pymoo's optimisers, Dask, Parquet), at the studies' level

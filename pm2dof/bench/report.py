@@ -65,6 +65,62 @@ def _model_rows(r, tg):
     return out
 
 
+def _target_line(r, tg, key, label, unit="x"):
+    tgt, res = _target_cells(tg.get(key))
+    return f"  {label:60s} {_fmt(r.get(key), unit):>8s} {unit:2s} {tgt:>10s}  {res}"
+
+
+def _design_rows(r, tg):
+    """The geometry as a run-time input (``design_rows``: the [design] model beside the fixed
+    one) and the design studies (``synthesis_rows``: designs per second per objective class,
+    the kinematic objectives against their C calls, Dask's overhead)."""
+    out = []
+    rows = r.get("design_rows")
+    if rows:
+        out += ["", "the geometry as a run-time input: a [design] model beside the fixed one "
+                "(interleaved rounds, medians, ns)",
+                f"  {'model':18s} {'FD C':>8s} {'FD Py':>8s} {'NA C':>8s} {'NA Py':>8s} "
+                f"{'FD flops':>9s} {'NA flops':>9s}"]
+        for name, x in rows.items():
+            ops = x.get("ops") or {}
+            out.append(f"  {name:18s} " + " ".join(f"{_fmt(x.get(k)):>8s}" for k in (
+                "forward_dynamics_c_ns", "forward_dynamics_python_ns", "na_step_c_ns",
+                "na_step_python_ns"))
+                + f" {(ops.get('forward_dynamics') or {}).get('flops', 'n/a'):>9}"
+                + f" {(ops.get('na_step') or {}).get('flops', 'n/a'):>9}")
+        out.append(_target_line(r, tg, "design_fd_ratio",
+                                "forward dynamics, design / fixed, Python (paired)"))
+        out.append(_target_line(r, tg, "design_na_step_ratio",
+                                "NA step, design / fixed, Python (paired)"))
+    srows = r.get("synthesis_rows")
+    if not srows:
+        return out
+    out += ["", "design studies: designs per second per objective class (evaluate_batch, "
+            "at_design included), and the speed-up on structdimsynth's published s per design "
+            "(0.5 s kinematic, 1.8 s with dynamics)"]
+    classes = list(next(iter(srows.values())))
+    classes = [c for c in classes if isinstance(srows[next(iter(srows))][c], dict)]
+    out.append(f"  {'model':22s}" + "".join(f"{c:>22s}" for c in classes))
+    for name, x in srows.items():
+        out.append(f"  {name:22s}" + "".join(
+            f"{_fmt(x[c]['designs_per_s']):>10s}/s ({_fmt(x[c]['speedup_vs_structdimsynth'])}x)"
+            .rjust(22) for c in classes))
+    reg = next(iter(srows.values())).get("region_points")
+    for name, x in srows.items():
+        out.append(f"  {name:22s} kinematic objectives {_fmt(x.get('kinematic_objectives_ms'))} "
+                   f"ms per design against its C calls {_fmt(x.get('kinematic_c_ms'))} ms "
+                   f"({reg} region points): {_fmt(x.get('kinematic_over_c'))}x")
+    out.append(_target_line(r, tg, "synthesis_kinematic_over_c_max",
+                            "kinematic objectives / their C calls, worst model"))
+    if r.get("synthesis_dask_s") is not None:
+        out.append(f"  Dask, 1 worker: {r.get('synthesis_dask_designs')} designs in "
+                   f"{_fmt(r['synthesis_dask_s'])} s against {_fmt(r['synthesis_inprocess_s'])} "
+                   f"s in this process (overhead {100 * r['synthesis_dask_overhead']:.1f} %)")
+    out.append(_target_line(r, tg, "synthesis_dask_over_inprocess",
+                            "design batch, Dask 1 worker / in-process (paired)"))
+    return out
+
+
 def format_bench(results):
     """A readable report of :func:`run_bench`'s dict: timings, targets, ratios, op counts."""
     r = results
@@ -160,6 +216,7 @@ def format_bench(results):
                          f"{r['plan_smooth_duration_s']:.4f} s vs strict "
                          f"{r['plan_smooth_strict_duration_s']:.4f} s")
     lines += _model_rows(r, tg)
+    lines += _design_rows(r, tg)
     lines.append("")
     lines.append("ratios and agreement")
     for label, key, unit in (

@@ -83,6 +83,13 @@ TARGETS = (
      "Model.forward_dynamics, [design] model / fixed-geometry model, from Python"),
     ("design_na_step_ratio", "<=", 1.5, "x",
      "NAController.step, [design] model / fixed-geometry model, from Python"),
+    # design studies (bench/synthesis.py): at_design and a design's kinematic objectives on a
+    # 50 x 50 region / the generated-C calls they make (worst model); Dask on one worker / the
+    # same designs in this process
+    ("synthesis_kinematic_over_c_max", "<=", 1.5, "x",
+     "kinematic objectives, 50x50 region / their generated-C calls, worst model"),
+    ("synthesis_dask_over_inprocess", "<=", 1.1, "x",
+     "design batch through Dask on 1 worker / in-process evaluate_batch"),
 )
 #: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 #: for a revolute actuator, N for a linear one
@@ -119,6 +126,12 @@ def run_bench(model=None, quick=False, progress=None, models=None):
       ``speedup_binding_vs_casadi_function`` (casadi.Function call / NAController.step);
       agreement ``agreement_c_vs_numpy`` (max relative difference ||a-b||/||b|| of tau_a and
       state_next over random states; ~1e-12) and ``agreement_c_vs_lambdify``.
+    - ``design_rows`` and the ``design_*`` ratios: the paper's robot with a ``[design]`` table
+      beside the fixed-geometry model (:func:`pm2dof.bench.design.design_bench`).
+    - ``synthesis_rows`` and the ``synthesis_*`` keys: design studies' designs per second per
+      objective class beside structdimsynth's published cost, a design's kinematic objectives
+      against their generated-C calls, Dask's overhead on one worker
+      (:func:`pm2dof.bench.synthesis.synthesis_bench`; it starts a one-worker LocalCluster).
     - ``targets``: pass/fail of each target (never enforced), ``machine``: CPU, cores,
       compiler and flags, Python.
 
@@ -201,6 +214,10 @@ def run_bench(model=None, quick=False, progress=None, models=None):
 
     from .design import design_bench
     res.update(design_bench(b.repeats, b.batch_s, b.c_inner, say))
+
+    # --- design studies: designs per second, kinematic objectives vs C, Dask's overhead ----
+    from .synthesis import synthesis_bench
+    res.update(synthesis_bench(b.repeats, quick, say))
 
     say("op counts from the generated C source")
     res.update(bench_op_counts(model, notes))

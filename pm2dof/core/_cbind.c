@@ -15,6 +15,8 @@
  * Function(lib, name, fixed=d)  binds the last input, "design", to a copy of d once for
  *                        all: the Function then has one input fewer, and every call path
  *                        (plain calls, map, accumulate, time_calls, Method) runs with d.
+ * f.clone(fixed=d2)      the same function at another design from what f resolved (no
+ *                        dlsym): a Model at another design rebinds its functions this way.
  *
  * The binding is layout-agnostic: it passes the buffers' memory as the flat nonzero
  * vectors CasADi expects. CasADi stores matrices column-major, so a 2x3 matrix argument
@@ -190,6 +192,7 @@ typedef struct {
     eval_fn eval;
     checkout_fn checkout;
     release_fn release;
+    void_fn incref; /* kept for clone() */
     void_fn decref;
     int increfed;
     int acc_ok; /* signature fits accumulate: 3 inputs, 2 outputs, nnz_out[0] == nnz_in[0] */
@@ -1479,7 +1482,7 @@ Function_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
     /* Optional symbols (absent with some code-generation options) */
     name_fn name_in = (name_fn)lookup(lib, cname, "_name_in", 0);
     name_fn name_out = (name_fn)lookup(lib, cname, "_name_out", 0);
-    void_fn incref = (void_fn)lookup(lib, cname, "_incref", 0);
+    void_fn incref = f->incref = (void_fn)lookup(lib, cname, "_incref", 0);
     f->decref = (void_fn)lookup(lib, cname, "_decref", 0);
     f->checkout = (checkout_fn)lookup(lib, cname, "_checkout", 0);
     f->release = (release_fn)lookup(lib, cname, "_release", 0);
@@ -1537,6 +1540,86 @@ Function_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
 
     if (incref) {
         incref();
+        f->increfed = 1;
+    }
+    if (work_init(f, &f->work) < 0)
+        goto fail;
+    return (PyObject *)f;
+
+fail:
+    Py_DECREF(f);
+    return NULL;
+}
+
+/*
+ * f.clone(fixed=None): a new Function of the same generated function, from what f already
+ * resolved (the symbols, the names and sparsity, the work sizes): no dlsym, no sparsity read.
+ * It shares f's Library and immutable metadata, owns its work area and, for a Function made
+ * with fixed=, its own copy of the design: f's (fixed=None) or the values given.
+ */
+static PyObject *
+Function_clone(PyObject *self, PyObject *args, PyObject *kwds)
+{
+    static char *kwlist[] = {"fixed", NULL};
+    FunctionObject *src = (FunctionObject *)self;
+    PyObject *fixed = Py_None;
+    if (!PyArg_ParseTupleAndKeywords(args, kwds, "|$O:clone", kwlist, &fixed))
+        return NULL;
+    if (fixed != Py_None && src->fixed == NULL) {
+        PyErr_Format(PyExc_ValueError,
+                     "%U: clone(fixed=...) rebinds the 'design' input of a Function made with "
+                     "fixed=; this one was made without (inputs %R)", src->name, src->names_in);
+        return NULL;
+    }
+    FunctionObject *f = (FunctionObject *)Py_TYPE(self)->tp_alloc(Py_TYPE(self), 0);
+    if (f == NULL)
+        return NULL;
+    f->vectorcall = Function_vectorcall;
+    f->lib = (LibraryObject *)Py_NewRef((PyObject *)src->lib);
+    f->name = Py_NewRef(src->name);
+    f->signature = Py_NewRef(src->signature);
+    f->names_in = Py_NewRef(src->names_in);
+    f->names_out = Py_NewRef(src->names_out);
+    f->sizes_in = Py_NewRef(src->sizes_in);
+    f->sizes_out = Py_NewRef(src->sizes_out);
+    f->shapes_in = Py_NewRef(src->shapes_in);
+    f->shapes_out = Py_NewRef(src->shapes_out);
+    f->n_in = src->n_in;
+    f->n_out = src->n_out;
+    const size_t nio = (size_t)(src->n_in + src->n_out);
+    f->nnz = PyMem_Calloc(nio + 1, sizeof(*f->nnz));
+    f->vec = PyMem_Calloc(nio + 1, 1);
+    if (f->nnz == NULL || f->vec == NULL) {
+        PyErr_NoMemory();
+        goto fail;
+    }
+    memcpy(f->nnz, src->nnz, nio * sizeof(*f->nnz));
+    memcpy(f->vec, src->vec, nio);
+    if (src->fixed) {
+        f->fixed = PyMem_Malloc(((size_t)src->n_fixed + 1) * sizeof(double));
+        if (f->fixed == NULL) {
+            PyErr_NoMemory();
+            goto fail;
+        }
+        f->n_fixed = src->n_fixed;
+        if (fixed == Py_None)
+            memcpy(f->fixed, src->fixed, (size_t)src->n_fixed * sizeof(double));
+        else if (read_fixed(f, fixed, f->fixed, f->n_fixed) < 0)
+            goto fail;
+    }
+    f->sz_arg = src->sz_arg;
+    f->sz_res = src->sz_res;
+    f->sz_iw = src->sz_iw;
+    f->sz_w = src->sz_w;
+    f->eval = src->eval;
+    f->checkout = src->checkout;
+    f->release = src->release;
+    f->incref = src->incref;
+    f->decref = src->decref;
+    f->acc_ok = src->acc_ok;
+    f->check_outputs = src->check_outputs;
+    if (f->incref) {
+        f->incref();
         f->increfed = 1;
     }
     if (work_init(f, &f->work) < 0)
@@ -1810,6 +1893,16 @@ PyDoc_STRVAR(accumulate_doc,
 "x, u_seq and p must be finite on entry. If the function fails at step k,\n"
 "EvalError is raised and x holds x_k.");
 
+PyDoc_STRVAR(clone_doc,
+"clone(*, fixed=None) -> Function\n"
+"--\n\n"
+"A new Function of the same generated function, made from what this one resolved\n"
+"(symbols, names, sparsity, work sizes: no symbol lookup, no sparsity read). It shares\n"
+"the Library and owns its work area; check_outputs is copied. fixed: for a Function\n"
+"made with fixed=, the values to bind to 'design' instead (the same rules as\n"
+"Function(..., fixed=)); None keeps this one's (copied). ValueError for values given\n"
+"to a Function made without fixed=.");
+
 static PyMethodDef Function_methods[] = {
     {"time_calls", (PyCFunction)(void (*)(void))Function_time_calls,
      METH_FASTCALL | METH_KEYWORDS, time_calls_doc},
@@ -1818,6 +1911,8 @@ static PyMethodDef Function_methods[] = {
     {"accumulate_batch", (PyCFunction)(void (*)(void))Function_accumulate_batch,
      METH_FASTCALL | METH_KEYWORDS, accumulate_batch_doc},
     {"map", (PyCFunction)(void (*)(void))Function_map, METH_FASTCALL | METH_KEYWORDS, map_doc},
+    {"clone", (PyCFunction)(void (*)(void))Function_clone, METH_VARARGS | METH_KEYWORDS,
+     clone_doc},
     {NULL, NULL, 0, NULL},
 };
 

@@ -10,6 +10,7 @@ the result is written there (no allocation) and returned.
 import math
 import types
 import warnings
+import weakref
 from pathlib import Path
 
 import numpy as np
@@ -210,28 +211,106 @@ def _shapes(n, m, p, h):
             "inverse_dynamics_jacobians": ((m, m), (m, m))}
 
 
+_KINDS = {"forward_dynamics_jacobians": ForwardDynamicsJacobians,
+          "sampled_step_jacobians": SampledStepJacobians,
+          "inverse_dynamics_jacobians": InverseDynamicsJacobians}
+
+
+def _method(short, f, shape, sing, sing_thr, residual, closure_tol):
+    """The fast path of the Model method ``short``: one :class:`_cbind.Method` (one C call that
+    binds, evaluates and checks) of its bound function ``f``, returning ``shape``. It refuses
+    (``_cbind.Refused``) what it does not accept: a bad argument, a non-finite result, a
+    singular pose, fk's loops not closing; the method then takes its checked path, which names
+    the problem in a typed error."""
+    kind = _KINDS.get(short)
+    outs = list((None, *shape) if kind else (shape,))   # the Jacobians skip the value
+    guard = None
+    if len(outs) < f.n_out and f.names_out[-1] == "sing":   # the pose's measures, checked
+        outs.append(sing)
+        guard = (f.n_out - 1, "at_least", sing_thr)
+    elif short == "fk":                                     # the closure residuals
+        outs.append(residual)
+        guard = (1, "abs_at_most", closure_tol)
+    return _cbind.Method(f, (None,) * f.n_in, tuple(outs), empty=np.empty, kind=kind,
+                         finite=True, guard=guard)
+
+
 def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
-    """The fast path of each Model method: one :class:`_cbind.Method` (one C call that binds,
-    evaluates and checks) per entry of ``shapes``. It refuses (``_cbind.Refused``) what it does
-    not accept: a bad argument, a non-finite result, a singular pose, fk's loops not closing;
-    the method then takes its checked path, which names the problem in a typed error."""
-    kinds = {"forward_dynamics_jacobians": ForwardDynamicsJacobians,
-             "sampled_step_jacobians": SampledStepJacobians,
-             "inverse_dynamics_jacobians": InverseDynamicsJacobians}
-    out = {}
-    for short, shape in shapes.items():
-        f, kind = funcs[short], kinds.get(short)
-        outs = list((None, *shape) if kind else (shape,))   # the Jacobians skip the value
-        guard = None
-        if len(outs) < f.n_out and f.names_out[-1] == "sing":   # the pose's measures, checked
-            outs.append(sing)
-            guard = (f.n_out - 1, "at_least", sing_thr)
-        elif short == "fk":                                     # the closure residuals
-            outs.append(residual)
-            guard = (1, "abs_at_most", closure_tol)
-        out[short] = _cbind.Method(f, (None,) * f.n_in, tuple(outs), empty=np.empty, kind=kind,
-                                   finite=True, guard=guard)
-    return out
+    """{short: :func:`_method`} for every entry of ``shapes``."""
+    return {short: _method(short, funcs[short], shape, sing, sing_thr, residual, closure_tol)
+            for short, shape in shapes.items()}
+
+
+class _Functions(dict):
+    """The bound functions {short: Function} of a model at a design (:meth:`Model.at_design`),
+    each cloned from the loaded model's (``root``) at ``design`` on first use: a design whose
+    objectives call two functions pays for two. A name bound already is a plain dict lookup;
+    iterating, ``len``, ``in``, ``keys``, ``items``, ``values`` and ``copy`` see every function (and
+    bind the rest), in ``root``'s order. Read through a ``MappingProxyType``."""
+
+    __slots__ = ("_root", "_design")
+
+    def __init__(self, root, design):
+        super().__init__()
+        self._root, self._design = root, design
+
+    def __missing__(self, short):
+        f = self._root[short]                                 # KeyError for an unknown name
+        g = f.clone(fixed=self._design if f.fixed is not None else None)
+        dict.__setitem__(self, short, g)
+        return g
+
+    def _all(self):
+        if dict.__len__(self) < len(self._root):
+            bound = [(short, self[short]) for short in self._root]
+            dict.clear(self)
+            dict.update(self, bound)
+        return self
+
+    def __iter__(self):
+        return dict.__iter__(self._all())
+
+    def __len__(self):
+        return len(self._root)
+
+    def __contains__(self, short):
+        return short in self._root
+
+    def keys(self):
+        return dict.keys(self._all())
+
+    def items(self):
+        return dict.items(self._all())
+
+    def values(self):
+        return dict.values(self._all())
+
+    def get(self, short, default=None):
+        return self[short] if short in self._root else default
+
+    def copy(self):
+        return dict(self.items())
+
+
+class _Pending:
+    """A fast path of a model at a design not built yet: its first call builds the
+    :class:`_cbind.Method` (:func:`_method`), puts it in the model's ``_fast`` in its own place
+    and calls it; later calls find the Method (a dict lookup, as on a loaded model). Holds the
+    model by a weak reference ``ref`` (no cycle)."""
+
+    __slots__ = ("_model", "_short", "_shape")
+
+    def __init__(self, ref, short, shape):
+        self._model, self._short, self._shape = ref, short, shape
+
+    def __call__(self, *args):
+        m = self._model()
+        if m is None:
+            raise ReferenceError(f"the model of this {self._short!r} fast path is gone")
+        meth = m._fast[self._short] = _method(
+            self._short, m._f[self._short], self._shape, m._sing, m._sing_thr, m._residual,
+            m.spec.sensing["closure_tolerance"])
+        return meth(*args)
 
 
 class Model(DerivativeMethods, PoseMethods):
@@ -271,7 +350,7 @@ class Model(DerivativeMethods, PoseMethods):
 
     __slots__ = ("spec", "manifest", "library", "generated", "_lib", "_f", "_fast", "_layouts",
                  "_sing_thr", "_sing", "_residual", "_m", "_task_names", "_modes", "_words",
-                 "_design", "_manifest_obj", "__weakref__")
+                 "_design", "_manifest_obj", "_root", "__weakref__")
 
     def __init__(self, spec, gen_dir=None):
         gen_dir = (Path(gen_dir).expanduser().absolute() if gen_dir is not None
@@ -280,9 +359,9 @@ class Model(DerivativeMethods, PoseMethods):
         _check_design(spec, gen_dir, manifest)
         self._bind(spec, gen_dir, manifest, lib_path, _cbind.Library(str(lib_path)))
 
-    def _bind(self, spec, gen_dir, manifest, lib_path, lib, frozen=None):
-        """Bind every generated function of ``lib`` for ``spec`` (at its design, if any);
-        ``frozen``: the manifest's read-only data when already made."""
+    def _bind(self, spec, gen_dir, manifest, lib_path, lib):
+        """Resolve and check every generated function of ``lib`` for ``spec`` (at its design,
+        if any), then :meth:`_assemble`."""
         design = _design_values(spec)
         funcs = {}
         for short in manifest.function_names():        # every function the derivation wrote
@@ -303,7 +382,21 @@ class Model(DerivativeMethods, PoseMethods):
             # (and the energies check theirs: a pose out of reach is a WorkspaceError)
             f.check_outputs = not contract.reports_by_status(short)
             funcs[short] = f
-        m = funcs["ik"].sizes_in[0]          # the task dimension of the generated code
+        self._assemble(spec, gen_dir, manifest, lib_path, lib, funcs, _freeze(manifest.data),
+                       types.MappingProxyType({name: Layout(name, fl) for name, fl in
+                                               manifest.get("layouts", {}).items()}))
+
+    def _assemble(self, spec, gen_dir, manifest, lib_path, lib, funcs, frozen, layouts,
+                  root=None, words=None):
+        """Set every attribute from the bound functions ``funcs`` {short: Function}: the fast
+        paths, the scratch buffers, a platform's working modes read at home. ``frozen``: the
+        manifest's read-only data; ``layouts``: {name: Layout} (read-only). ``root``: the
+        loaded model's functions when ``funcs`` is a :class:`_Functions` of a model at a
+        design (its fast paths are then built on first use, :class:`_Pending`); ``words``:
+        the loaded model's (the legs' kinds do not change with the design)."""
+        design = _design_values(spec)
+        sizes = funcs if root is None else root
+        m = sizes["ik"].sizes_in[0]          # the task dimension of the generated code
         task_names = spec.task_names
         if len(task_names) != m:
             _stale(spec, gen_dir, f"{lib_path} has task dimension {m}, the model file "
@@ -311,20 +404,26 @@ class Model(DerivativeMethods, PoseMethods):
         sing_thr = (spec.limits["singularity_threshold"],
                     spec.limits["parallel_singularity_threshold"])
         sing, residual = np.zeros(2), np.zeros(spec.n_legs)
-        h = funcs["H"].sizes_out[0]          # constraints: 2 (n - 1) at a point, 2 n a platform
-        fast = _methods(funcs, _shapes(spec.n_legs, m, len(spec.param_names), h), sing,
-                        sing_thr, residual, spec.sensing["closure_tolerance"])
+        h = sizes["H"].sizes_out[0]          # constraints: 2 (n - 1) at a point, 2 n a platform
+        shapes = _shapes(spec.n_legs, m, len(spec.param_names), h)
+        if root is None:
+            fast = _methods(funcs, shapes, sing, sing_thr, residual,
+                            spec.sensing["closure_tolerance"])
+        else:
+            ref = weakref.ref(self)
+            fast = {short: _Pending(ref, short, shape) for short, shape in shapes.items()}
+        f = types.MappingProxyType(funcs)
         for k, v in (("spec", spec),
-                     ("manifest", frozen if frozen is not None else _freeze(manifest.data)),
+                     ("manifest", frozen),
                      ("library", str(lib_path)),
                      ("generated", str(gen_dir)),
-                     ("_lib", lib), ("_f", types.MappingProxyType(funcs)), ("_fast", fast),
-                     ("_layouts", types.MappingProxyType(
-                         {name: Layout(name, fl)
-                          for name, fl in manifest.get("layouts", {}).items()})),
+                     ("_lib", lib), ("_f", f), ("_fast", fast),
+                     ("_root", f if root is None else root),
+                     ("_layouts", layouts),
                      ("_sing_thr", sing_thr), ("_sing", sing), ("_residual", residual),
                      ("_m", m), ("_task_names", task_names), ("_modes", None),
-                     ("_words", singularity_words(spec.legs, spec.end_effector)),
+                     ("_words", words if words is not None else
+                      singularity_words(spec.legs, spec.end_effector)),
                      ("_design", design), ("_manifest_obj", manifest)):
             object.__setattr__(self, k, v)
         if spec.home is not None:       # a platform: its legs' working modes, read at home
@@ -360,7 +459,10 @@ class Model(DerivativeMethods, PoseMethods):
     def at_design(self, values):
         """This robot at another design: a new Model whose every function (kinematics,
         dynamics, controllers, plant, planner) is that design's. No derivation and no compile:
-        the generated C takes the design as an input, bound once here (about a millisecond).
+        the generated C takes the design as an input. Each function of the loaded model is
+        cloned at the new design when the new model first uses it (``Function.clone``: no
+        symbol lookup, the signatures already checked), so a design pays for the functions it
+        calls; the models are independent.
 
         Parameters
         ----------
@@ -385,8 +487,9 @@ class Model(DerivativeMethods, PoseMethods):
                               f"(add a [design] table to {self.spec.path} and derive it)")
         spec = spec_at_design(self.spec, values)
         out = Model.__new__(Model)
-        out._bind(spec, Path(self.generated), self._manifest_obj, self.library, self._lib,
-                  self.manifest)
+        out._assemble(spec, Path(self.generated), self._manifest_obj, self.library, self._lib,
+                      _Functions(self._root, _design_values(spec)), self.manifest,
+                      self._layouts, root=self._root, words=self._words)
         return out
 
     def __setattr__(self, key, value):

@@ -562,3 +562,165 @@ def test_no_memory_leak_over_many_functions(lib):
     finally:
         tracemalloc.stop()
     assert grown < 8000, grown                                # a leak of 16 B/Function: 64 kB
+
+
+# --------------------------------------------------------------------------------------
+# clone(): the same function from what a Function resolved, at another design
+# --------------------------------------------------------------------------------------
+
+
+D_SX2 = np.array([-0.2, 2.5])
+
+
+def test_a_clone_at_another_design_equals_the_unbound_function_on_every_path(lib):
+    plain = _cbind.Function(lib, "stepd")
+    f = _cbind.Function(lib, "stepd", fixed=D_SX)
+    g = f.clone(fixed=D_SX2)
+    assert g is not f and type(g) is _cbind.Function
+    assert g.fixed == tuple(D_SX2) and f.fixed == tuple(D_SX)        # the source keeps its own
+    for attr in ("name", "signature", "names_in", "names_out", "sizes_in", "sizes_out",
+                 "shapes_in", "shapes_out", "n_in", "n_out", "library"):
+        assert getattr(g, attr) == getattr(f, attr), attr
+    assert g.library is f.library
+    rng = np.random.default_rng(11)
+    x, u, p = rng.standard_normal(3), rng.standard_normal(2), 0.7
+    for fn, d in ((f, D_SX), (g, D_SX2), (f, D_SX)):                  # interleaved
+        xn, y, xn0, y0 = np.empty(3), np.empty(2), np.empty(3), np.empty(2)
+        fn(x, u, p, xn, y)
+        plain(x, u, p, d, xn0, y0)
+        np.testing.assert_array_equal(xn, xn0)
+        np.testing.assert_array_equal(y, y0)
+    K = 9
+    U = rng.standard_normal((K, 2))
+    X, Y, X0, Y0 = np.empty((K, 3)), np.empty((K, 2)), np.empty((K, 3)), np.empty((K, 2))
+    g.map(K, np.tile(x, (K, 1)), U, np.full(K, p), X, Y)
+    plain.map(K, np.tile(x, (K, 1)), U, np.full(K, p), D_SX2, X0, Y0)
+    np.testing.assert_array_equal(X, X0)
+    np.testing.assert_array_equal(Y, Y0)
+    xa, xr = x.copy(), x.copy()
+    g.accumulate(xa, U, p, None)
+    for k in range(K):                                                # the rollout by hand
+        xn = np.empty(3)
+        plain(xr, U[k], p, D_SX2, xn, None)
+        xr = xn
+    np.testing.assert_array_equal(xa, xr)
+    meth = _cbind.Method(g, (None, None, None), ((3,), None), empty=np.empty)
+    xn0 = np.empty(3)
+    plain(x, u, p, D_SX2, xn0, None)
+    np.testing.assert_array_equal(meth(x, u, p, None), xn0)
+    assert len(g.time_calls(10, 2, x, u, p, np.empty(3), None)) == 2
+
+
+def test_a_clone_keeps_the_design_and_check_outputs_and_outlives_its_source(lib):
+    f = _cbind.Function(lib, "sxd", fixed=D_SX)
+    f.check_outputs = True
+    g = f.clone()
+    assert g.fixed == f.fixed == tuple(D_SX) and g.check_outputs
+    g.check_outputs = False                                           # its own attribute
+    assert f.check_outputs and not g.clone().check_outputs
+    q, p = np.array([0.1, 0.2, 0.3]), np.array([-0.4, 0.5])
+    v0 = np.empty(3)
+    f(q, p, v0, None)
+    del f
+    gc.collect()
+    v = np.empty(3)
+    g(q, p, v, None)
+    np.testing.assert_array_equal(v, v0)
+    plain = _cbind.Function(lib, "nodesign")
+    c = plain.clone()
+    assert c.fixed is None and c.signature == plain.signature
+    x, pp, y, y0 = np.array([1.0, 2.0]), np.array([3.0, -4.0]), np.empty(2), np.empty(2)
+    c(x, pp, y)
+    plain(x, pp, y0)
+    np.testing.assert_array_equal(y, y0)
+
+
+@pytest.mark.parametrize("values, exc, pattern", [
+    ([1.0, np.nan], ValueError, r"^sxd: fixed \(the 'design' input\) has a non-finite value "
+                                r"at index 1 \(nan\)$"),
+    ([1.0, 2.0, 3.0], ValueError, r"^sxd: fixed must have 2 values"),
+    (["a", 1.0], TypeError, r"must be real numbers, value 0 is str"),
+    (np.array([1, 2]), TypeError, r"must be float64 values"),
+])
+def test_a_clone_refuses_what_the_constructor_refuses(lib, values, exc, pattern):
+    f = _cbind.Function(lib, "sxd", fixed=D_SX)
+    with pytest.raises(exc, match=pattern):
+        f.clone(fixed=values)
+    assert f.fixed == tuple(D_SX)
+
+
+def test_a_function_made_without_a_design_has_none_to_rebind(lib):
+    with pytest.raises(ValueError, match=r"^nodesign: clone\(fixed=\.\.\.\) rebinds the 'design' "
+                                         r"input of a Function made with fixed=; this one was "
+                                         r"made without \(inputs \('x', 'p'\)\)$"):
+        _cbind.Function(lib, "nodesign").clone(fixed=[1.0, 2.0])
+    with pytest.raises(TypeError):
+        _cbind.Function(lib, "sxd", fixed=D_SX).clone(D_SX2)         # keyword-only
+
+
+def test_a_clone_checks_out_and_releases_its_own_memory(hook_lib):
+    lib, c = hook_lib
+
+    def state():
+        return [c.stub_counter(i) for i in range(4)]          # incref, decref, checkout, release
+
+    f = _cbind.Function(lib, "hookd", fixed=[1.0, 2.0])
+    before = state()
+    with pytest.raises(ValueError):
+        f.clone(fixed=[1.0, np.inf])
+    gc.collect()
+    assert state() == before                                  # refused: nothing taken
+    g = f.clone(fixed=[3.0, -1.0])
+    assert [a - b for a, b in zip(state(), before)] == [1, 0, 1, 0]
+    y = np.empty(2)
+    g(np.array([0.5, 2.0]), y)
+    np.testing.assert_array_equal(y, _hookd_ref([0.5, 2.0], [3.0, -1.0]))
+    del g
+    gc.collect()
+    assert [a - b for a, b in zip(state(), before)] == [1, 1, 1, 1]
+
+
+def test_a_busy_clone_uses_a_temporary_work_area_at_its_design(hook_lib):
+    lib, c = hook_lib
+    g = _cbind.Function(lib, "hookd", fixed=[1.0, 2.0]).clone(fixed=[-0.5, 4.0])
+    x, inner = np.array([0.3, -0.7]), np.empty(2)
+
+    @ctypes.CFUNCTYPE(None)
+    def hook():
+        g(x, inner)                                           # g's primary area is in use
+
+    c.set_hook(hook)
+    outer = np.empty(2)
+    g(x, outer)
+    np.testing.assert_array_equal(inner, _hookd_ref(x, [-0.5, 4.0]))
+    np.testing.assert_array_equal(outer, inner)
+
+
+def test_clones_leak_no_memory_and_no_references(lib):
+    f = _cbind.Function(lib, "mxd", fixed=D_MX)
+    d2 = np.array([0.1, 0.2, 0.3])
+    refs = [sys.getrefcount(o) for o in (lib, f.name, f.names_in, d2)]
+
+    def churn():
+        for _ in range(2000):
+            g = f.clone(fixed=d2)
+            assert g.fixed == (0.1, 0.2, 0.3)
+            del g
+            try:
+                f.clone(fixed=[np.nan, 0.0, 0.0])
+            except ValueError:
+                pass
+            f.clone()
+
+    churn()
+    gc.collect()
+    tracemalloc.start()
+    try:
+        base = tracemalloc.get_traced_memory()[0]
+        churn()
+        gc.collect()
+        grown = tracemalloc.get_traced_memory()[0] - base
+    finally:
+        tracemalloc.stop()
+    assert grown < 8000, grown
+    assert [sys.getrefcount(o) for o in (lib, f.name, f.names_in, d2)] == refs
