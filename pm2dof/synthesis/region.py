@@ -12,6 +12,8 @@ over the stack. The force and acceleration capability is
 A pose is *reachable* where the generated ``ik`` answers: every leg reaches it in the model
 file's working modes (two legs: the assembly mode; NaN rows otherwise).
 """
+import functools
+
 import numpy as np
 
 from ..control.settings import actuator_limits
@@ -45,21 +47,31 @@ def grid_points(region, model):
         dx * dy, m^2: a grid point's share of the area, as the maps count it.
     shape : tuple
         (n_phi, n, n) for a platform, (n, n) for a point.
+
+    The arrays are cached (read-only): the grid of a study is the same at every design, but for
+    a platform's home orientation when the region gives no phi range.
     """
-    n = int(region["n"])
-    x = np.linspace(*region["x"], n)
-    y = np.linspace(*region["y"], n)
+    phi = region.get("phi")
+    home = float(model.spec.home[2]) if model.dof == 3 and phi is None else None
+    return _grid(tuple(region["x"]), tuple(region["y"]), int(region["n"]),
+                 None if phi is None else tuple(phi), int(region.get("n_phi", 1)), model.dof,
+                 home)
+
+
+@functools.lru_cache(maxsize=32)
+def _grid(xr, yr, n, phi, n_phi, dof, home):
+    """:func:`grid_points` of plain values (hashable: the cache's key)."""
+    x = np.linspace(*xr, n)
+    y = np.linspace(*yr, n)
     X, Y = np.meshgrid(x, y)
     xy = np.stack([X.ravel(), Y.ravel()], axis=1)
     cell = float((x[1] - x[0]) * (y[1] - y[0]))
-    if model.dof == 2:
+    if dof == 2:
+        xy.setflags(write=False)
         return xy, cell, (n, n)
-    phi = region.get("phi")
-    if phi is None:
-        phis = np.array([float(model.spec.home[2])])
-    else:
-        phis = np.linspace(phi[0], phi[1], int(region.get("n_phi", 1)))
+    phis = np.array([home]) if phi is None else np.linspace(phi[0], phi[1], n_phi)
     pts = np.concatenate([np.column_stack([xy, np.full(len(xy), p)]) for p in phis])
+    pts.setflags(write=False)
     return pts, cell, (len(phis), n, n)
 
 
@@ -86,10 +98,15 @@ def pose_batch(model, pts):
     q = np.empty((K, 2 * model.n_legs))
     model.function("ik").map(K, pts, q)
     reach = np.isfinite(q).all(axis=1)
+    n_reach = int(np.count_nonzero(reach))
+    if n_reach == K:                    # every pose reached (the usual case): no copies
+        sing = np.empty((K, 2))
+        model.function("singularity_measures").map(K, q, sing)
+        return q, reach, sing
     sing = np.full((K, 2), np.nan)
-    if reach.any():
-        s = np.empty((int(reach.sum()), 2))
-        model.function("singularity_measures").map(len(s), np.ascontiguousarray(q[reach]), s)
+    if n_reach:
+        s = np.empty((n_reach, 2))
+        model.function("singularity_measures").map(n_reach, np.ascontiguousarray(q[reach]), s)
         sing[reach] = s
     return q, reach, sing
 
