@@ -276,7 +276,7 @@ def spec_at_design(spec, values):
                           f"design variables")
     new = _values(design, values)
     legs = _legs_at(spec.legs, design, new)
-    theta, plant = _inertia_at(spec, legs, _shown(design, new))
+    theta, plant = _inertia_at(spec, legs, lambda: _shown(design, new))
     sensing = spec.sensing
     if design.closure_default and sensing is not None and "closure_tolerance" in sensing:
         sensing = {**sensing, "closure_tolerance": default_closure_tolerance(
@@ -350,7 +350,7 @@ def _legs_at(legs, design, values):
 
 def _inertia_at(spec, legs, shown):
     """(theta_nominal, plant) with the inertial entries of every leg whose [nominal.links] or
-    [plant.links] include a uniform rod recomputed at ``legs``; the others as given. ``shown``:
+    [plant.links] include a uniform rod recomputed at ``legs``; the others as given. ``shown()``:
     the design, for messages."""
     theta, plant = spec.theta_nominal, spec.plant
     if spec.links is None:
@@ -371,7 +371,7 @@ def _inertia_at(spec, legs, shown):
             lumped = lumped_from_links(legs[i], bodies[i])
             why = inertia_problem(*(lumped[k] for k in INERTIAL))
             if why is not None:
-                raise DesignError(f"at this design ({shown}) leg {i + 1}'s [[{section}.links]] "
+                raise DesignError(f"at this design ({shown()}) leg {i + 1}'s [[{section}.links]] "
                                   f"give a lumped inertia that no leg can have: {why}")
             for key, idx in per_leg:
                 if i not in idx:

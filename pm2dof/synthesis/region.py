@@ -97,7 +97,7 @@ def pose_batch(model, pts):
     K = len(pts)
     q = np.empty((K, 2 * model.n_legs))
     model.function("ik").map(K, pts, q)
-    reach = np.isfinite(q).all(axis=1)
+    reach = np.isfinite(q.sum(axis=1))          # a NaN anywhere in a row: out of reach
     n_reach = int(np.count_nonzero(reach))
     if n_reach == K:                    # every pose reached (the usual case): no copies
         sing = np.empty((K, 2))
