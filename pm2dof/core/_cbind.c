@@ -1967,13 +1967,23 @@ static inline int
 all_finite(const double *p, Py_ssize_t n)
 {
     /* (b & exponent) + one exponent step carries into the sign bit only from all ones */
-    uint64_t bad = 0;
-    for (Py_ssize_t k = 0; k < n; k++) {
-        uint64_t b;
-        memcpy(&b, p + k, sizeof b);
-        bad |= (b & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+    uint64_t bad0 = 0, bad1 = 0, bad2 = 0, bad3 = 0, b0, b1, b2, b3;
+    Py_ssize_t k = 0;
+    for (; k + 4 <= n; k += 4) { /* four chains: about one element per cycle */
+        memcpy(&b0, p + k, sizeof b0);
+        memcpy(&b1, p + k + 1, sizeof b1);
+        memcpy(&b2, p + k + 2, sizeof b2);
+        memcpy(&b3, p + k + 3, sizeof b3);
+        bad0 |= (b0 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+        bad1 |= (b1 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+        bad2 |= (b2 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+        bad3 |= (b3 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
     }
-    return (bad >> 63) == 0;
+    for (; k < n; k++) {
+        memcpy(&b0, p + k, sizeof b0);
+        bad0 |= (b0 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+    }
+    return ((bad0 | bad1 | bad2 | bad3) >> 63) == 0;
 }
 
 /*
@@ -2009,14 +2019,28 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *argv, int caller_out
     for (Py_ssize_t i = 0; i < n_in; i++)
         if (m->tmpl[i] == NULL && !all_finite(w->arg[i], f->nnz[i]))
             return 1;
-    if (caller_out)
-        for (Py_ssize_t r = 0; r < m->n_ret; r++) {
+    if (caller_out) {
+        /* the caller's inputs' span first: an out outside it shares memory with none */
+        const char *lo = NULL, *hi = NULL;
+        for (Py_ssize_t i = 0; i < n_in; i++) {
+            if (m->tmpl[i] != NULL || f->nnz[i] <= 0)
+                continue;
+            const char *a = (const char *)w->arg[i], *b = a + f->nnz[i] * 8;
+            if (lo == NULL || a < lo)
+                lo = a;
+            if (hi == NULL || b > hi)
+                hi = b;
+        }
+        for (Py_ssize_t r = 0; r < m->n_ret && lo != NULL; r++) {
             const Py_ssize_t j = m->ret_out[r];
+            if (!overlaps(w->res[j], f->nnz[n_in + j], lo, (hi - lo) / 8))
+                continue;
             for (Py_ssize_t i = 0; i < n_in; i++)
                 if (m->tmpl[i] == NULL &&
                     overlaps(w->res[j], f->nnz[n_in + j], w->arg[i], f->nnz[i]))
                     return 1;
         }
+    }
     return 0;
 }
 
@@ -2098,7 +2122,7 @@ method_call(MethodObject *m, PyObject *const *args, PyObject *out)
     }
     if (m->finite) {
         for (Py_ssize_t j = 0; j < n_out && !bad; j++)
-            if (w->res[j] && first_nonfinite(w->res[j], f->nnz[n_in + j]) >= 0)
+            if (w->res[j] && !all_finite(w->res[j], f->nnz[n_in + j]))
                 bad = 1;
         if (bad)
             goto release;
@@ -2476,9 +2500,55 @@ typedef struct {
     Py_ssize_t n_params, n_req, out_pos; /* out_pos: index of "out" in params, or -1 */
     PyObject *unless;    /* attribute name, or NULL */
     PyObject *dict;      /* __dict__: __doc__, __name__, __wrapped__, ... */
+    PyTypeObject *ctype; /* the last instance's type whose _fast (and unless) are slots */
+    unsigned int ctag;   /* its version tag then: a changed class is looked up again */
+    Py_ssize_t off_fast, off_unless; /* their offsets in an instance (-1: no unless) */
 } FastMethodObject;
 
 static PyObject *str_fast; /* "_fast" */
+
+/* The offset of the slot `name` of instances of `type` (a member descriptor holding an
+   object, found on the type as attribute lookup finds it), else -1. */
+static Py_ssize_t
+slot_offset(PyTypeObject *type, PyObject *name)
+{
+    PyObject *descr = _PyType_Lookup(type, name); /* borrowed */
+    if (descr == NULL || Py_TYPE(descr) != &PyMemberDescr_Type)
+        return -1;
+    PyMemberDef *def = ((PyMemberDescrObject *)descr)->d_member;
+    return def->type == T_OBJECT_EX ? def->offset : -1;
+}
+
+/* obj's attribute `name` (a new reference; NULL without an error when it has none): read
+   from its slot when obj's type is the one cached, else looked up (and the type cached when
+   both attributes are slots). */
+static PyObject *
+fm_attr(FastMethodObject *d, PyObject *obj, PyObject *name, int which)
+{
+    PyTypeObject *t = Py_TYPE(obj);
+    if (t != d->ctype || !(t->tp_flags & Py_TPFLAGS_VALID_VERSION_TAG) ||
+        t->tp_version_tag != d->ctag) {
+        Py_ssize_t of = slot_offset(t, str_fast);
+        Py_ssize_t ou = d->unless ? slot_offset(t, d->unless) : -1;
+        if (of >= 0 && (d->unless == NULL || ou >= 0) &&
+            (t->tp_flags & Py_TPFLAGS_VALID_VERSION_TAG)) {
+            Py_INCREF(t);
+            Py_XSETREF(d->ctype, t);
+            d->ctag = t->tp_version_tag;
+            d->off_fast = of;
+            d->off_unless = ou;
+        }
+        else {
+            PyObject *v = PyObject_GetAttr(obj, name);
+            if (v == NULL)
+                PyErr_Clear();
+            return v;
+        }
+    }
+    PyObject *v = *(PyObject **)((char *)obj + (which ? d->off_unless : d->off_fast));
+    Py_XINCREF(v);
+    return v;
+}
 
 static PyObject *
 FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject *kwnames)
@@ -2522,20 +2592,16 @@ FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyOb
     }
     PyObject *obj = args[0];
     if (d->unless != NULL) {
-        PyObject *u = PyObject_GetAttr(obj, d->unless);
-        if (u == NULL) {
-            PyErr_Clear();
+        PyObject *u = fm_attr(d, obj, d->unless, 1);
+        if (u == NULL)
             goto checked;
-        }
         Py_DECREF(u);
         if (u != Py_None)
             goto checked;
     }
-    PyObject *fast = PyObject_GetAttr(obj, str_fast);
-    if (fast == NULL) {
-        PyErr_Clear();
+    PyObject *fast = fm_attr(d, obj, str_fast, 0);
+    if (fast == NULL)
         goto checked;
-    }
     PyObject *meth = PyDict_Check(fast) ? PyDict_GetItemWithError(fast, d->key) : NULL;
     Py_DECREF(fast);  /* the instance holds it, and it holds meth */
     if (meth == NULL || Py_TYPE(meth) != &MethodType || ((MethodObject *)meth)->n_given != g) {
@@ -2566,6 +2632,7 @@ FastMethod_traverse(FastMethodObject *d, visitproc visit, void *arg)
 {
     Py_VISIT(d->func);
     Py_VISIT(d->dict);
+    Py_VISIT(d->ctype);
     return 0;
 }
 
@@ -2577,6 +2644,7 @@ FastMethod_clear(FastMethodObject *d)
     Py_CLEAR(d->params);
     Py_CLEAR(d->unless);
     Py_CLEAR(d->dict);
+    Py_CLEAR(d->ctype);
     return 0;
 }
 
