@@ -78,8 +78,11 @@ def targets():
 
 
 def _function(raw):
-    """The function of a class attribute (a method, class method or static method), else None."""
+    """The function of a class attribute (a method, class method or static method, or a
+    method written in C that wraps one: ``__wrapped__``, as a Model's per-sample methods),
+    else None."""
     func = raw.__func__ if isinstance(raw, (staticmethod, classmethod)) else raw
+    func = getattr(func, "__wrapped__", func)
     return func if inspect.isfunction(func) else None
 
 

@@ -121,6 +121,28 @@ def _design_rows(r, tg):
     return out
 
 
+def _overhead_rows(r, tg):
+    """Every per-sample Model method's binding overhead (``overhead_over_c_<method>``,
+    bench/overheads.py): its Python and C times and the ratio, with its target."""
+    keys = [k[len("overhead_over_c_"):] for k in r if k.startswith("overhead_over_c_")
+            and k not in ("overhead_over_c_max", "overhead_over_c_worst")]
+    if not keys:
+        return []
+    out = ["", "the binding's overhead of each per-sample Model method (Python with out= - C "
+           "loop) / C, paired rounds, medians",
+           f"  {'method':28s} {'Python ns':>10s} {'C ns':>10s} {'(Py - C) / C':>13s} "
+           f"{'target':>10s}  result"]
+    for name in keys:
+        tgt, res = _target_cells(tg.get(f"overhead_over_c_{name}"))
+        out.append(f"  {name:28s} {_fmt(r.get(f'overhead_python_ns_{name}')):>10s} "
+                   f"{_fmt(r.get(f'overhead_c_ns_{name}')):>10s} "
+                   f"{_fmt(r.get(f'overhead_over_c_{name}'), 'x'):>13s} {tgt:>10s}  {res}")
+    out.append(f"  worst: {r.get('overhead_over_c_worst')} "
+               f"{_fmt(r.get('overhead_over_c_max'), 'x')} x; the energies return a float (no "
+               f"out=) and have no target: their C takes a few ns")
+    return out
+
+
 def format_bench(results):
     """A readable report of :func:`run_bench`'s dict: timings, targets, ratios, op counts."""
     r = results
@@ -217,6 +239,7 @@ def format_bench(results):
                          f"{r['plan_smooth_strict_duration_s']:.4f} s")
     lines += _model_rows(r, tg)
     lines += _design_rows(r, tg)
+    lines += _overhead_rows(r, tg)
     lines.append("")
     lines.append("ratios and agreement")
     for label, key, unit in (

@@ -33,6 +33,7 @@ from .baselines import (
 from .derivatives import derivative_bench, dynamics_state
 from .machine import machine
 from .opcount import OPS_FUNCTIONS, count_ops
+from .overheads import OVERHEAD_METHODS, UNTARGETED, overhead_bench
 from .peers import peer_bench
 from .rollout import rollout_call
 from .timing import rel_diff, stats, time_batches
@@ -73,6 +74,10 @@ TARGETS = (
      "from Python"),
     ("fd_binding_overhead_over_c", "<=", 4.0, "x",
      "forward dynamics: binding overhead (Python - C) / C"),
+    # every per-sample Model method (bench/overheads.py), ratios of interleaved rounds
+    *((f"overhead_over_c_{name}", "<=", 1.5, "x",
+       f"Model.{name}: binding overhead (Python - C) / C") for name, _ in OVERHEAD_METHODS
+      if name not in UNTARGETED),
     # the 3-RRR and 4-RRR platforms beside the paper's robot (bench/models.py),
     # ratios of interleaved rounds; measured when the platform rows run (``models``)
     ("rrr4_na_step_c_over_paper", "<=", 3.0, "x", "NA step in C, 4-RRR / paper's robot"),
@@ -195,6 +200,11 @@ def run_bench(model=None, quick=False, progress=None, models=None):
     fd_state = dynamics_state(model, b.traj, len(b.traj.t) // 2)
     res.update(peer_bench(model, na, b.op, b.qa_prev, fd_state, b.repeats, b.batch_s,
                           b.c_inner, notes))
+
+    # --- every per-sample Model method's overhead (bench/overheads.py) ---------------------
+    say(f"binding overhead (Python - C) / C of {len(OVERHEAD_METHODS)} per-sample Model "
+        f"methods, interleaved rounds")
+    res.update(overhead_bench(model, b.traj, b.repeats, b.batch_s, b.c_inner))
 
     # --- motion planning: plan_time_optimal beside toppra ----------------------------------
     from .planning import bench_planning

@@ -2007,6 +2007,9 @@ typedef struct {
     Py_ssize_t guard_out;
     double guard_v[2];
     Py_ssize_t fb_out, fb_in; /* feedback: output fb_out copied into input fb_in (-1: none) */
+    char positive[METHOD_MAX_ARGS];  /* per input: a positive finite Python float only */
+    PyObject *scalar;    /* scalar=True: the returned 1-element output's scratch array, and
+                            the result is a Python float; else NULL */
 } MethodObject;
 
 static PyObject *
@@ -2059,13 +2062,23 @@ static inline int
 all_finite(const double *p, Py_ssize_t n)
 {
     /* (b & exponent) + one exponent step carries into the sign bit only from all ones */
-    uint64_t bad = 0;
-    for (Py_ssize_t k = 0; k < n; k++) {
-        uint64_t b;
-        memcpy(&b, p + k, sizeof b);
-        bad |= (b & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+    uint64_t bad0 = 0, bad1 = 0, bad2 = 0, bad3 = 0, b0, b1, b2, b3;
+    Py_ssize_t k = 0;
+    for (; k + 4 <= n; k += 4) { /* four chains: about one element per cycle */
+        memcpy(&b0, p + k, sizeof b0);
+        memcpy(&b1, p + k + 1, sizeof b1);
+        memcpy(&b2, p + k + 2, sizeof b2);
+        memcpy(&b3, p + k + 3, sizeof b3);
+        bad0 |= (b0 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+        bad1 |= (b1 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+        bad2 |= (b2 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+        bad3 |= (b3 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
     }
-    return (bad >> 63) == 0;
+    for (; k < n; k++) {
+        memcpy(&b0, p + k, sizeof b0);
+        bad0 |= (b0 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+    }
+    return ((bad0 | bad1 | bad2 | bad3) >> 63) == 0;
 }
 
 /*
@@ -2085,7 +2098,11 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *argv, int caller_out
         PyObject *o = argv[k];
         const int is_out = k >= n_in;
         double *p = NULL;
-        if (o != Py_None || !is_out) { /* None: an output not computed; an input never */
+        if (!is_out && f->nnz[k] == 1 && PyFloat_Check(o)) { /* a number, as bind_input */
+            w->scalars[k] = PyFloat_AS_DOUBLE(o);
+            p = &w->scalars[k];
+        }
+        else if (o != Py_None || !is_out) { /* None: an output not computed; an input never */
             if (Py_TYPE(o) != np_type || (p = np_fast(o, is_out, f->nnz[k], f->vec[k])) == NULL)
                 return -1;
         }
@@ -2097,36 +2114,62 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *argv, int caller_out
     for (Py_ssize_t i = 0; i < n_in; i++)
         if (m->tmpl[i] == NULL && !all_finite(w->arg[i], f->nnz[i]))
             return 1;
-    if (caller_out)
-        for (Py_ssize_t r = 0; r < m->n_ret; r++) {
+    if (caller_out) {
+        /* the caller's inputs' span first: an out outside it shares memory with none */
+        const char *lo = NULL, *hi = NULL;
+        for (Py_ssize_t i = 0; i < n_in; i++) {
+            if (m->tmpl[i] != NULL || f->nnz[i] <= 0)
+                continue;
+            const char *a = (const char *)w->arg[i], *b = a + f->nnz[i] * 8;
+            if (lo == NULL || a < lo)
+                lo = a;
+            if (hi == NULL || b > hi)
+                hi = b;
+        }
+        for (Py_ssize_t r = 0; r < m->n_ret && lo != NULL; r++) {
             const Py_ssize_t j = m->ret_out[r];
+            if (!overlaps(w->res[j], f->nnz[n_in + j], lo, (hi - lo) / 8))
+                continue;
             for (Py_ssize_t i = 0; i < n_in; i++)
                 if (m->tmpl[i] == NULL &&
                     overlaps(w->res[j], f->nnz[n_in + j], w->arg[i], f->nnz[i]))
                     return 1;
         }
+    }
     return 0;
 }
 
+/* The call of a Method with the caller's n_given inputs `args` and its `out`. */
 static PyObject *
-Method_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject *kwnames)
+method_call(MethodObject *m, PyObject *const *args, PyObject *out)
 {
-    MethodObject *m = (MethodObject *)self;
     FunctionObject *f = m->f;
-    const Py_ssize_t nargs = PyVectorcall_NARGS(nargsf);
-    if ((kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0) || nargs != m->n_given + 1) {
-        PyErr_Format(PyExc_TypeError, "Method of %U takes %zd positional arguments (%zd "
-                     "inputs, out), got %zd", f->name, m->n_given + 1, m->n_given, nargs);
-        return NULL;
-    }
-    PyObject *out = args[nargs - 1];
     PyObject *ret[METHOD_MAX_RET];
     PyObject *argv[METHOD_MAX_ARGS];
     const Py_ssize_t n_in = f->n_in, n_out = f->n_out;
     Py_ssize_t r;
 
+    /* the inputs: presets and the caller's */
+    for (Py_ssize_t i = 0, g = 0; i < n_in; i++) {
+        PyObject *o = m->tmpl[i];
+        if (o == NULL) {
+            o = args[g++];
+            if (m->positive[i]) { /* e.g. a sample period: a float > 0, nothing else */
+                if (!PyFloat_Check(o))
+                    return refuse();
+                const double v = PyFloat_AS_DOUBLE(o);
+                if (!(v > 0.0 && v < INFINITY))
+                    return refuse();
+            }
+        }
+        argv[i] = o;
+    }
+
     /* the returned outputs: the caller's (exact type and shape), or new arrays */
-    if (out == Py_None) {
+    if (out == Py_None && m->scalar != NULL) {
+        ret[0] = Py_NewRef(m->scalar);
+    }
+    else if (out == Py_None) {
         for (r = 0; r < m->n_ret; r++) {
             ret[r] = PyObject_CallOneArg(m->empty, m->ret_shape[r]);
             if (ret[r] == NULL) {
@@ -2151,9 +2194,6 @@ Method_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject
             ret[r] = Py_NewRef(PyTuple_GET_ITEM(out, r));
     }
 
-    Py_ssize_t g = 0;
-    for (Py_ssize_t i = 0; i < n_in; i++)
-        argv[i] = m->tmpl[i] ? m->tmpl[i] : args[g++];
     for (Py_ssize_t j = 0, rr = 0; j < n_out; j++)
         argv[n_in + j] = m->tmpl[n_in + j] ? m->tmpl[n_in + j] : ret[rr++];
 
@@ -2177,7 +2217,7 @@ Method_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject
     }
     if (m->finite) {
         for (Py_ssize_t j = 0; j < n_out && !bad; j++)
-            if (w->res[j] && first_nonfinite(w->res[j], f->nnz[n_in + j]) >= 0)
+            if (w->res[j] && !all_finite(w->res[j], f->nnz[n_in + j]))
                 bad = 1;
         if (bad)
             goto release;
@@ -2207,6 +2247,10 @@ done:
             Py_DECREF(ret[r]);
         return Py_NewRef(out);
     }
+    if (m->scalar != NULL) {
+        Py_DECREF(ret[0]);
+        return PyFloat_FromDouble(*(const double *)((const NpArray *)m->scalar)->data);
+    }
     if (m->kind == NULL)
         return ret[0];
     PyObject *items = PyTuple_New(m->n_ret);
@@ -2227,12 +2271,26 @@ done:
     return res;
 }
 
+static PyObject *
+Method_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject *kwnames)
+{
+    MethodObject *m = (MethodObject *)self;
+    const Py_ssize_t nargs = PyVectorcall_NARGS(nargsf);
+    if ((kwnames != NULL && PyTuple_GET_SIZE(kwnames) > 0) || nargs != m->n_given + 1) {
+        PyErr_Format(PyExc_TypeError, "Method of %U takes %zd positional arguments (%zd "
+                     "inputs, out), got %zd", m->f->name, m->n_given + 1, m->n_given, nargs);
+        return NULL;
+    }
+    return method_call(m, args, args[nargs - 1]);
+}
+
 static int
 Method_traverse(MethodObject *m, visitproc visit, void *arg)
 {
     Py_VISIT(m->f);
     Py_VISIT(m->empty);
     Py_VISIT(m->kind);
+    Py_VISIT(m->scalar);
     if (m->f && m->tmpl)
         for (Py_ssize_t k = 0; k < m->f->n_in + m->f->n_out; k++)
             Py_VISIT(m->tmpl[k]);
@@ -2249,6 +2307,7 @@ Method_clear(MethodObject *m)
         Py_CLEAR(m->ret_shape[r]);
     Py_CLEAR(m->empty);
     Py_CLEAR(m->kind);
+    Py_CLEAR(m->scalar);
     return 0;
 }
 
@@ -2279,13 +2338,14 @@ static PyObject *
 Method_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
 {
     static char *kwlist[] = {"function", "inputs", "outputs", "empty", "kind", "finite",
-                             "guard", "feedback", NULL};
+                             "guard", "feedback", "positive", "scalar", NULL};
     PyObject *fo, *inputs, *outputs, *empty = NULL, *kind = Py_None, *guard = Py_None,
-                                             *feedback = Py_None;
-    int finite = 0;
-    if (!PyArg_ParseTupleAndKeywords(args, kwds, "O!O!O!|$OOpOO:Method", kwlist, &FunctionType,
-                                     &fo, &PyTuple_Type, &inputs, &PyTuple_Type, &outputs,
-                                     &empty, &kind, &finite, &guard, &feedback))
+                                             *feedback = Py_None, *positive = Py_None;
+    int finite = 0, scalar = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kwds, "O!O!O!|$OOpOOOp:Method", kwlist,
+                                     &FunctionType, &fo, &PyTuple_Type, &inputs, &PyTuple_Type,
+                                     &outputs, &empty, &kind, &finite, &guard, &feedback,
+                                     &positive, &scalar))
         return NULL;
     FunctionObject *f = (FunctionObject *)fo;
     if (PyTuple_GET_SIZE(inputs) != f->n_in || PyTuple_GET_SIZE(outputs) != f->n_out) {
@@ -2419,6 +2479,40 @@ Method_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
         m->fb_out = j;
         m->fb_in = i;
     }
+    if (positive != Py_None) {
+        if (!PyTuple_Check(positive)) {
+            PyErr_SetString(PyExc_TypeError, "Method: positive must be a tuple of indices");
+            goto fail;
+        }
+        for (Py_ssize_t k = 0; k < PyTuple_GET_SIZE(positive); k++) {
+            Py_ssize_t gi = PyLong_AsSsize_t(PyTuple_GET_ITEM(positive, k)), i, g = -1;
+            if (gi == -1 && PyErr_Occurred())
+                goto fail;
+            for (i = 0; i < f->n_in; i++)      /* the given input gi's index in the inputs */
+                if (m->tmpl[i] == NULL && ++g == gi)
+                    break;
+            if (gi < 0 || i == f->n_in || f->nnz[i] != 1) {
+                PyErr_Format(PyExc_ValueError, "Method of %U: positive #%zd is not a given "
+                             "input of one element", f->name, gi);
+                goto fail;
+            }
+            m->positive[i] = 1;
+        }
+    }
+    if (scalar) {
+        if (m->n_ret != 1 || f->nnz[f->n_in + m->ret_out[0]] != 1) {
+            PyErr_Format(PyExc_ValueError, "Method of %U: scalar needs one returned output of "
+                         "one element", f->name);
+            goto fail;
+        }
+        m->scalar = PyObject_CallOneArg(empty, m->ret_shape[0]);
+        if (m->scalar == NULL)
+            goto fail;
+        if (!preset_ok(f, m->scalar, f->n_in + m->ret_out[0], 1, "output")) {
+            Py_CLEAR(m->scalar);
+            goto fail;
+        }
+    }
     return (PyObject *)m;
 
 fail:
@@ -2437,7 +2531,7 @@ static PyMemberDef Method_members[] = {
 
 PyDoc_STRVAR(Method_doc,
 "Method(function, inputs, outputs, *, empty, kind=None, finite=False, guard=None,\n"
-"       feedback=None)\n"
+"       feedback=None, positive=None, scalar=False)\n"
 "--\n\n"
 "The fast path of one call as a single C call: m(*given_inputs, out).\n\n"
 "inputs: per input of function, None (the caller gives it, in order) or a preset\n"
@@ -2447,7 +2541,11 @@ PyDoc_STRVAR(Method_doc,
 "outputs the result is a kind instance (a tuple subclass) and out is None or one.\n"
 "finite: every computed output must be finite. guard: (j, 'at_least', (a, b)),\n"
 "(j, 'abs_at_most', tol) or (j, 'not_equal', v) on scratch output j. feedback: (j, i)\n"
-"copies output j into preset input i after the evaluation.\n\n"
+"copies output j into preset input i after the evaluation. positive: indices of given\n"
+"inputs of one element that must be a Python float > 0 and finite (e.g. a sample\n"
+"period); anything else there is refused. scalar:\n"
+"the one returned output has one element, written into the Method's own array when out\n"
+"is None, and the result is a Python float.\n\n"
 "Raises Refused (no message, nothing changed) when the fast path does not accept the\n"
 "call: a bad argument, a non-finite output, a failed guard; the caller then takes its\n"
 "checked path. With feedback a failed guard raises GuardTripped after the copy.");
@@ -2465,6 +2563,290 @@ static PyTypeObject MethodType = {
     .tp_clear = (inquiry)Method_clear,
     .tp_members = Method_members,
     .tp_new = Method_new,
+};
+
+/* ------------------------------------------------------------------------------------ */
+/* FastMethod                                                                           */
+/* ------------------------------------------------------------------------------------ */
+
+/*
+ * FastMethod(func, key, params, required, *, unless=None)
+ *
+ * A method of a class (pm2dof.Model's per-sample methods) whose call from Python is one C
+ * call: a method descriptor (no bound method is made for obj.name(...)) that maps the
+ * arguments onto the instance's Method, obj._fast[key], and calls it; what that refuses, and
+ * every call it does not map (an unknown or repeated keyword, a missing argument, a Method
+ * missing, obj.<unless> not None), goes to func(obj, ...) with the arguments as given: the
+ * Python method, its checked path, which converts and names the problem in a typed error.
+ *
+ * params: the names of func's parameters after self, in order; "out", if there, is the
+ * Method's out, the others its given inputs in order (None: the Method's default, if any).
+ * required: how many leading parameters have no default.
+ */
+
+#define FM_MAX_PARAMS 16
+
+typedef struct {
+    PyObject_HEAD
+    vectorcallfunc vectorcall;
+    PyObject *func;      /* the Python method: the checked path */
+    PyObject *key;       /* the Method's key in obj._fast */
+    PyObject *params;    /* tuple of str */
+    Py_ssize_t n_params, n_req, out_pos; /* out_pos: index of "out" in params, or -1 */
+    PyObject *unless;    /* attribute name, or NULL */
+    PyObject *dict;      /* __dict__: __doc__, __name__, __wrapped__, ... */
+    PyTypeObject *ctype; /* the last instance's type whose _fast (and unless) are slots */
+    unsigned int ctag;   /* its version tag then: a changed class is looked up again */
+    Py_ssize_t off_fast, off_unless; /* their offsets in an instance (-1: no unless) */
+} FastMethodObject;
+
+static PyObject *str_fast; /* "_fast" */
+
+/* The offset of the slot `name` of instances of `type` (a member descriptor holding an
+   object, found on the type as attribute lookup finds it), else -1. */
+static Py_ssize_t
+slot_offset(PyTypeObject *type, PyObject *name)
+{
+    PyObject *descr = _PyType_Lookup(type, name); /* borrowed */
+    if (descr == NULL || Py_TYPE(descr) != &PyMemberDescr_Type)
+        return -1;
+    PyMemberDef *def = ((PyMemberDescrObject *)descr)->d_member;
+    return def->type == T_OBJECT_EX ? def->offset : -1;
+}
+
+/* obj's attribute `name` (a new reference; NULL without an error when it has none): read
+   from its slot when obj's type is the one cached, else looked up (and the type cached when
+   both attributes are slots). */
+static PyObject *
+fm_attr(FastMethodObject *d, PyObject *obj, PyObject *name, int which)
+{
+    PyTypeObject *t = Py_TYPE(obj);
+    if (t != d->ctype || !(t->tp_flags & Py_TPFLAGS_VALID_VERSION_TAG) ||
+        t->tp_version_tag != d->ctag) {
+        Py_ssize_t of = slot_offset(t, str_fast);
+        Py_ssize_t ou = d->unless ? slot_offset(t, d->unless) : -1;
+        if (of >= 0 && (d->unless == NULL || ou >= 0) &&
+            (t->tp_flags & Py_TPFLAGS_VALID_VERSION_TAG)) {
+            Py_INCREF(t);
+            Py_XSETREF(d->ctype, t);
+            d->ctag = t->tp_version_tag;
+            d->off_fast = of;
+            d->off_unless = ou;
+        }
+        else {
+            PyObject *v = PyObject_GetAttr(obj, name);
+            if (v == NULL)
+                PyErr_Clear();
+            return v;
+        }
+    }
+    PyObject *v = *(PyObject **)((char *)obj + (which ? d->off_unless : d->off_fast));
+    Py_XINCREF(v);
+    return v;
+}
+
+static PyObject *
+FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyObject *kwnames)
+{
+    FastMethodObject *d = (FastMethodObject *)self;
+    const Py_ssize_t nargs = PyVectorcall_NARGS(nargsf);
+    const Py_ssize_t nkw = kwnames ? PyTuple_GET_SIZE(kwnames) : 0;
+    PyObject *slot[FM_MAX_PARAMS] = {NULL};
+    PyObject *given[FM_MAX_PARAMS];
+    if (nargs < 1 || nargs - 1 > d->n_params)
+        goto checked;
+    for (Py_ssize_t j = 0; j < nargs - 1; j++)
+        slot[j] = args[1 + j];
+    for (Py_ssize_t i = 0; i < nkw; i++) {
+        PyObject *name = PyTuple_GET_ITEM(kwnames, i);
+        Py_ssize_t j = 0;
+        while (j < d->n_params && PyTuple_GET_ITEM(d->params, j) != name)  /* interned */
+            j++;
+        if (j == d->n_params) {  /* not the same object: compare the text */
+            for (j = 0; j < d->n_params; j++) {
+                int eq = PyUnicode_Compare(PyTuple_GET_ITEM(d->params, j), name);
+                if (eq == -1 && PyErr_Occurred())
+                    PyErr_Clear();
+                else if (eq == 0)
+                    break;
+            }
+        }
+        if (j == d->n_params || slot[j] != NULL)
+            goto checked;
+        slot[j] = args[nargs + i];
+    }
+    Py_ssize_t g = 0;
+    for (Py_ssize_t j = 0; j < d->n_params; j++) {
+        if (slot[j] == NULL) {
+            if (j < d->n_req)
+                goto checked;
+            slot[j] = Py_None;
+        }
+        if (j != d->out_pos)
+            given[g++] = slot[j];
+    }
+    PyObject *obj = args[0];
+    if (d->unless != NULL) {
+        PyObject *u = fm_attr(d, obj, d->unless, 1);
+        if (u == NULL)
+            goto checked;
+        Py_DECREF(u);
+        if (u != Py_None)
+            goto checked;
+    }
+    PyObject *fast = fm_attr(d, obj, str_fast, 0);
+    if (fast == NULL)
+        goto checked;
+    PyObject *meth = PyDict_Check(fast) ? PyDict_GetItemWithError(fast, d->key) : NULL;
+    Py_DECREF(fast);  /* the instance holds it, and it holds meth */
+    if (meth == NULL || Py_TYPE(meth) != &MethodType || ((MethodObject *)meth)->n_given != g) {
+        PyErr_Clear();
+        goto checked;
+    }
+    Py_INCREF(meth);
+    PyObject *res = method_call((MethodObject *)meth, given,
+                                d->out_pos >= 0 ? slot[d->out_pos] : Py_None);
+    Py_DECREF(meth);
+    if (res != NULL || !PyErr_ExceptionMatches(Refused))
+        return res;
+    PyErr_Clear();
+checked:
+    return PyObject_Vectorcall(d->func, args, nargsf, kwnames);
+}
+
+static PyObject *
+FastMethod_descr_get(PyObject *self, PyObject *obj, PyObject *type)
+{
+    if (obj == NULL || obj == Py_None)
+        return Py_NewRef(self);
+    return PyMethod_New(self, obj);
+}
+
+static int
+FastMethod_traverse(FastMethodObject *d, visitproc visit, void *arg)
+{
+    Py_VISIT(d->func);
+    Py_VISIT(d->dict);
+    Py_VISIT(d->ctype);
+    return 0;
+}
+
+static int
+FastMethod_clear(FastMethodObject *d)
+{
+    Py_CLEAR(d->func);
+    Py_CLEAR(d->key);
+    Py_CLEAR(d->params);
+    Py_CLEAR(d->unless);
+    Py_CLEAR(d->dict);
+    Py_CLEAR(d->ctype);
+    return 0;
+}
+
+static void
+FastMethod_dealloc(FastMethodObject *d)
+{
+    PyObject_GC_UnTrack(d);
+    FastMethod_clear(d);
+    Py_TYPE(d)->tp_free((PyObject *)d);
+}
+
+static PyObject *
+FastMethod_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
+{
+    static char *kwlist[] = {"func", "key", "params", "required", "unless", NULL};
+    PyObject *func, *key, *params, *unless = Py_None;
+    Py_ssize_t required;
+    if (!PyArg_ParseTupleAndKeywords(args, kwds, "OUO!n|$O:FastMethod", kwlist, &func, &key,
+                                     &PyTuple_Type, &params, &required, &unless))
+        return NULL;
+    const Py_ssize_t n = PyTuple_GET_SIZE(params);
+    if (!PyCallable_Check(func) || n > FM_MAX_PARAMS || required < 0 || required > n ||
+        (unless != Py_None && !PyUnicode_Check(unless))) {
+        PyErr_Format(PyExc_ValueError, "FastMethod: func must be callable, params a tuple of at "
+                     "most %d names, 0 <= required <= len(params), unless None or a str",
+                     FM_MAX_PARAMS);
+        return NULL;
+    }
+    FastMethodObject *d = (FastMethodObject *)type->tp_alloc(type, 0);
+    if (d == NULL)
+        return NULL;
+    d->vectorcall = FastMethod_vectorcall;
+    d->func = Py_NewRef(func);
+    d->key = Py_NewRef(key);
+    PyUnicode_InternInPlace(&d->key);
+    d->params = PyTuple_New(n);
+    if (d->params == NULL)
+        goto fail;
+    d->n_params = n;
+    d->n_req = required;
+    d->out_pos = -1;
+    for (Py_ssize_t j = 0; j < n; j++) {
+        PyObject *name = PyTuple_GET_ITEM(params, j);
+        if (!PyUnicode_Check(name)) {
+            PyErr_SetString(PyExc_TypeError, "FastMethod: params must be str");
+            goto fail;
+        }
+        Py_INCREF(name);
+        PyUnicode_InternInPlace(&name);
+        PyTuple_SET_ITEM(d->params, j, name);
+        if (PyUnicode_CompareWithASCIIString(name, "out") == 0)
+            d->out_pos = j;
+    }
+    if (unless != Py_None) {
+        d->unless = Py_NewRef(unless);
+        PyUnicode_InternInPlace(&d->unless);
+    }
+    return (PyObject *)d;
+fail:
+    Py_DECREF(d);
+    return NULL;
+}
+
+static PyMemberDef FastMethod_members[] = {
+    {"func", T_OBJECT_EX, offsetof(FastMethodObject, func), READONLY,
+     "The Python method: the checked path."},
+    {"key", T_OBJECT_EX, offsetof(FastMethodObject, key), READONLY,
+     "The key of the instance's Method in its _fast mapping."},
+    {"params", T_OBJECT_EX, offsetof(FastMethodObject, params), READONLY,
+     "The parameter names after self."},
+    {NULL, 0, 0, 0, NULL},
+};
+
+static PyGetSetDef FastMethod_getset[] = {
+    {"__dict__", PyObject_GenericGetDict, PyObject_GenericSetDict, NULL, NULL},
+    {NULL, NULL, NULL, NULL, NULL},
+};
+
+PyDoc_STRVAR(FastMethod_doc,
+"FastMethod(func, key, params, required, *, unless=None)\n"
+"--\n\n"
+"A method whose call is one C call: obj.name(*args, out=...) maps the arguments onto\n"
+"the Method obj._fast[key] and calls it. What the Method refuses, and any call it does\n"
+"not map (an unknown or repeated keyword, a missing argument, no such Method,\n"
+"getattr(obj, unless) not None), goes to func(obj, ...) with the arguments as given.\n\n"
+"params: func's parameter names after self; 'out', if there, is the Method's out, the\n"
+"others its given inputs in order. required: how many leading ones have no default.");
+
+static PyTypeObject FastMethodType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "pm2dof.core._cbind.FastMethod",
+    .tp_basicsize = sizeof(FastMethodObject),
+    .tp_dealloc = (destructor)FastMethod_dealloc,
+    .tp_vectorcall_offset = offsetof(FastMethodObject, vectorcall),
+    .tp_call = PyVectorcall_Call,
+    .tp_descr_get = FastMethod_descr_get,
+    .tp_getattro = PyObject_GenericGetAttr,
+    .tp_setattro = PyObject_GenericSetAttr,
+    .tp_dictoffset = offsetof(FastMethodObject, dict),
+    .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_HAVE_VECTORCALL | Py_TPFLAGS_HAVE_GC |
+                Py_TPFLAGS_METHOD_DESCRIPTOR,
+    .tp_doc = FastMethod_doc,
+    .tp_traverse = (traverseproc)FastMethod_traverse,
+    .tp_clear = (inquiry)FastMethod_clear,
+    .tp_members = FastMethod_members,
+    .tp_getset = FastMethod_getset,
+    .tp_new = FastMethod_new,
 };
 
 /* ------------------------------------------------------------------------------------ */
@@ -2487,7 +2869,10 @@ PyMODINIT_FUNC
 PyInit__cbind(void)
 {
     if (PyType_Ready(&LibraryType) < 0 || PyType_Ready(&FunctionType) < 0 ||
-        PyType_Ready(&MethodType) < 0)
+        PyType_Ready(&MethodType) < 0 || PyType_Ready(&FastMethodType) < 0)
+        return NULL;
+    str_fast = PyUnicode_InternFromString("_fast");
+    if (str_fast == NULL)
         return NULL;
     PyObject *m = PyModule_Create(&cbind_module);
     if (m == NULL)
@@ -2510,7 +2895,8 @@ PyInit__cbind(void)
         NULL);
     if (Refused == NULL || PyModule_AddObjectRef(m, "Refused", Refused) < 0 ||
         GuardTripped == NULL || PyModule_AddObjectRef(m, "GuardTripped", GuardTripped) < 0 ||
-        PyModule_AddObjectRef(m, "Method", (PyObject *)&MethodType) < 0) {
+        PyModule_AddObjectRef(m, "Method", (PyObject *)&MethodType) < 0 ||
+        PyModule_AddObjectRef(m, "FastMethod", (PyObject *)&FastMethodType) < 0) {
         Py_DECREF(m);
         return NULL;
     }

@@ -20,6 +20,7 @@ import numpy as np
 
 from .contract import DERIVATIVE_FUNCTIONS  # the generated functions bound here
 from .errors import ArgumentError
+from .fastmethod import fast_method
 
 try:
     from . import _cbind
@@ -93,6 +94,7 @@ class DerivativeMethods:
         self._checked_call(short, self._f[short], args, (None, *res, self._sing), self._sing)
         return res
 
+    @fast_method
     def forward_dynamics_jacobians(self, xe, xed, tau_a, theta, out=None):
         """Jacobians of the task-space acceleration xedd (eqs. 10-12, eq. 2 friction).
 
@@ -139,6 +141,7 @@ class DerivativeMethods:
                                         ((m, m), (m, m), (m, n), (m, p)), out,
                                         (xe, xed, tau_a, theta))
 
+    @fast_method
     def sampled_step(self, x, tau_a, theta, period=None, out=None):
         """One sample of the model's dynamics with ``theta`` under a zero-order hold.
 
@@ -172,6 +175,7 @@ class DerivativeMethods:
         except _cbind.Refused:
             return self._eval("sampled_step", (2 * self._m,), out, x, tau_a, theta, T)
 
+    @fast_method
     def sampled_step_jacobians(self, x, tau_a, theta, period=None, out=None):
         """Jacobians of :meth:`sampled_step` w.r.t. the state x = [xe, xed] and the held
         torque, by forward-mode AD of the RK4 stages (each stage's Jacobian from
@@ -196,6 +200,7 @@ class DerivativeMethods:
             return self._eval_jacobians("sampled_step_jacobians", SampledStepJacobians,
                                         ((k, k), (k, self.n_legs)), out, (x, tau_a, theta, T))
 
+    @fast_method
     def inverse_dynamics(self, xe, xed, xedd, theta, out=None):
         """The task force u = Me xedd + Ce xed + S^T f_a (m,), N (N m for phi) (eqs. 10-12,
         eq. 2 friction) that gives the acceleration ``xedd`` (m,) m/s^2 at the pose ``xe`` and
@@ -216,6 +221,7 @@ class DerivativeMethods:
         except _cbind.Refused:
             return self._eval("inverse_dynamics", (self._m,), out, xe, xed, xedd, theta)
 
+    @fast_method
     def inverse_dynamics_jacobians(self, xe, xed, xedd, theta, out=None):
         """Jacobians of :meth:`inverse_dynamics` w.r.t. the state (reverse-mode AD; friction's
         sign contributes 0). d u / d xedd is Me.

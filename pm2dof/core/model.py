@@ -33,6 +33,7 @@ from .errors import (
     StaleGeneratedCodeError,
     WorkspaceError,
 )
+from .fastmethod import fast_method
 from .layout import Layout
 from .manifest import Manifest
 from .measures import singularity_words
@@ -199,16 +200,18 @@ def _mode_sides(legs, qa, xe):
 def _shapes(n, m, p, h):
     """The returned shape(s) of each Model method bound by :func:`_methods` (n legs, task
     dimension m, p parameters); a tuple of shapes for the derivative methods (their
-    NamedTuple's fields). H (eq. 5) has h rows: 2 (n - 1) for legs meeting at a point (tip_1
-    = tip_i), 2 n for a platform (tip_i = P_i(xe), xe from q)."""
+    NamedTuple's fields); (1,) for the energies (returned as a float). H (eq. 5) has h rows:
+    2 (n - 1) for legs meeting at a point (tip_1 = tip_i), 2 n for a platform (tip_i =
+    P_i(xe), xe from q)."""
     return {"ik": (2 * n,), "fk": (m,), "H": (h,), "A": (h, 2 * n),
             "singularity": (n,), "singularity_measures": (2,), "W": (2 * n, m), "S": (n, m),
             "Wdot": (2 * n, m), "M": (2 * n, 2 * n), "C": (2 * n, 2 * n), "Me": (m, m),
-            "Ce": (m, m), "StF": (m,), "Y": (m, p), "forward_dynamics": (m,),
+            "Ce": (m, m), "StF": (m,), "Y": (m, p), "Ge": (m,), "forward_dynamics": (m,),
             "sampled_step": (2 * m,), "inverse_dynamics": (m,),
             "forward_dynamics_jacobians": ((m, m), (m, m), (m, n), (m, p)),
             "sampled_step_jacobians": ((2 * m, 2 * m), (2 * m, n)),
-            "inverse_dynamics_jacobians": ((m, m), (m, m))}
+            "inverse_dynamics_jacobians": ((m, m), (m, m)),
+            "kinetic_energy": (1,), "potential_energy": (1,)}
 
 
 _KINDS = {"forward_dynamics_jacobians": ForwardDynamicsJacobians,
@@ -220,8 +223,11 @@ def _method(short, f, shape, sing, sing_thr, residual, closure_tol):
     """The fast path of the Model method ``short``: one :class:`_cbind.Method` (one C call that
     binds, evaluates and checks) of its bound function ``f``, returning ``shape``. It refuses
     (``_cbind.Refused``) what it does not accept: a bad argument, a non-finite result, a
-    singular pose, fk's loops not closing; the method then takes its checked path, which names
-    the problem in a typed error."""
+    singular pose, fk's loops not closing, a sample period that is not a float > 0 (the
+    sampled step's), a theta of None (the energies'); the method then takes its checked path,
+    which names the problem in a typed error. The methods decorated with
+    :func:`~pm2dof.core.fastmethod.fast_method` call it from C; the energies' returns a
+    float."""
     kind = _KINDS.get(short)
     outs = list((None, *shape) if kind else (shape,))   # the Jacobians skip the value
     guard = None
@@ -231,8 +237,10 @@ def _method(short, f, shape, sing, sing_thr, residual, closure_tol):
     elif short == "fk":                                     # the closure residuals
         outs.append(residual)
         guard = (1, "abs_at_most", closure_tol)
+    positive = (f.n_in - 1,) if short.startswith("sampled_step") else None   # the period
     return _cbind.Method(f, (None,) * f.n_in, tuple(outs), empty=np.empty, kind=kind,
-                         finite=True, guard=guard)
+                         finite=True, guard=guard, positive=positive,
+                         scalar=short.endswith("_energy"))
 
 
 def _methods(funcs, shapes, sing, sing_thr, residual, closure_tol):
@@ -653,6 +661,7 @@ class Model(DerivativeMethods, PoseMethods):
         return self._words
 
     # --- kinematics ----------------------------------------------------------------------
+    @fast_method
     def ik(self, xe, out=None):
         """Inverse kinematics for the configured assembly modes.
 
@@ -727,6 +736,7 @@ class Model(DerivativeMethods, PoseMethods):
             raise ArgumentError(f"period must be a finite number of seconds > 0, got {period!r}")
         return float(T)
 
+    @fast_method(unless="_modes")   # a platform checks its working modes in Python
     def fk(self, qa, out=None):
         """Forward kinematics from the measured active coordinates.
 
@@ -824,6 +834,7 @@ class Model(DerivativeMethods, PoseMethods):
                 f"0.2 rad of it (docs/model-file.md); the controllers track from the previous "
                 f"pose")
 
+    @fast_method
     def H(self, q, out=None):
         """Loop-closure constraints H(q), m (eq. 5): (2(n-1),) for legs meeting at a point,
         (2n,) for a platform (tip_i(q) - P_i(xe), its pose xe from q).
@@ -841,6 +852,7 @@ class Model(DerivativeMethods, PoseMethods):
         except _cbind.Refused:
             return self._eval("H", (self._f["H"].sizes_out[0],), out, q)
 
+    @fast_method
     def A(self, q, out=None):
         """Constraint Jacobian A = dH/dq (rows of H, 2n) (eq. 6).
 
@@ -858,6 +870,7 @@ class Model(DerivativeMethods, PoseMethods):
             n = self.n_legs
             return self._eval("A", (self._f["H"].sizes_out[0], 2 * n), out, q)
 
+    @fast_method
     def singularity(self, q, out=None):
         """sin(qb_i - qa_i) of every leg (n,): an RRR leg's singularity measure (its links
         aligned at 0, W unbounded). Not a PRR or RPR leg's measure (qa_i is a length there):
@@ -876,6 +889,7 @@ class Model(DerivativeMethods, PoseMethods):
         except _cbind.Refused:
             return self._eval("singularity", (self.n_legs,), out, q)
 
+    @fast_method
     def singularity_measures(self, q, out=None):
         """The two singularity measures at the pose q (2n,), each in [0, 1], 0 when singular.
 
@@ -905,6 +919,7 @@ class Model(DerivativeMethods, PoseMethods):
         except _cbind.Refused:
             return self._eval("singularity_measures", (2,), out, q)
 
+    @fast_method
     def W(self, q, out=None):
         """W (2n, m) with qd = W xed (eq. 7). Raises SingularityError near singular poses.
 
@@ -921,6 +936,7 @@ class Model(DerivativeMethods, PoseMethods):
         except _cbind.Refused:
             return self._eval("W", (2 * self.n_legs, self._m), out, q)
 
+    @fast_method
     def S(self, q, out=None):
         """S (n, m), the actuated rows of W: qd_a = S xed (eq. 8).
 
@@ -937,6 +953,7 @@ class Model(DerivativeMethods, PoseMethods):
         except _cbind.Refused:
             return self._eval("S", (self.n_legs, self._m), out, q)
 
+    @fast_method
     def Wdot(self, q, xed, out=None):
         """dW/dt (2n, m) along qd = W xed, with xed (m,) in m/s (rad/s for phi) (eq. 9).
 
@@ -956,6 +973,7 @@ class Model(DerivativeMethods, PoseMethods):
             return self._eval("Wdot", (2 * self.n_legs, self._m), out, q, xed)
 
     # --- dynamics ------------------------------------------------------------------------
+    @fast_method
     def M(self, q, theta, out=None):
         """Open-chain joint-space inertia M (2n, 2n), kg*m^2 (eq. 3).
 
@@ -975,6 +993,7 @@ class Model(DerivativeMethods, PoseMethods):
             n = self.n_legs
             return self._eval("M", (2 * n, 2 * n), out, q, theta)
 
+    @fast_method
     def C(self, q, qd, theta, out=None):
         """Open-chain Coriolis/centrifugal matrix C (2n, 2n) at joint velocity qd (eq. 3).
 
@@ -996,6 +1015,7 @@ class Model(DerivativeMethods, PoseMethods):
             n = self.n_legs
             return self._eval("C", (2 * n, 2 * n), out, q, qd, theta)
 
+    @fast_method
     def Me(self, q, theta, out=None):
         """Task-space inertia Me = W^T M W (m, m), kg (kg m, kg m^2 in phi's row and column)
         (eq. 12).
@@ -1015,6 +1035,7 @@ class Model(DerivativeMethods, PoseMethods):
         except _cbind.Refused:
             return self._eval("Me", (self._m, self._m), out, q, theta)
 
+    @fast_method
     def Ce(self, q, xed, theta, out=None):
         """Task-space Coriolis matrix Ce = W^T (M Wdot + C W) (m, m), kg/s (eq. 12).
 
@@ -1035,6 +1056,7 @@ class Model(DerivativeMethods, PoseMethods):
         except _cbind.Refused:
             return self._eval("Ce", (self._m, self._m), out, q, xed, theta)
 
+    @fast_method
     def StF(self, q, xed, theta, out=None):
         """Friction in task space S^T f_a(S xed) (m,), N (N m for phi) (eqs. 2, 10).
 
@@ -1055,6 +1077,7 @@ class Model(DerivativeMethods, PoseMethods):
         except _cbind.Refused:
             return self._eval("StF", (self._m,), out, q, xed, theta)
 
+    @fast_method
     def Y(self, q, xed, xrd, xrdd, out=None):
         """Regressor Y (m, p): Y theta = Me xrdd + Ce(q, W xed) xrd + S^T f_a(S xed) (eq. 13).
 
@@ -1124,6 +1147,7 @@ class Model(DerivativeMethods, PoseMethods):
         return {"min_norm": outs[0], "min_max": outs[1], "min_max_ratio": float(outs[2][0]),
                 "preload": outs[3], "preload_mode": int(outs[4][0])}
 
+    @fast_method
     def forward_dynamics(self, xe, xed, tau_a, theta, out=None):
         """Task-space acceleration xedd (m,), m/s^2 (rad/s^2 for phi), from eq. 12 with eq. 2
         friction.
@@ -1160,6 +1184,7 @@ class Model(DerivativeMethods, PoseMethods):
         except _cbind.Refused:
             return self._eval("forward_dynamics", (self._m,), out, xe, xed, tau_a, theta)
 
+    @fast_method
     def Ge(self, q, theta, out=None):
         """Gravity term Ge (m,) of eq. 10, N (N m for phi): Me xedd + Ce xed + Ge + S^T f_a =
         S^T tau_a, Ge = W^T dV/dq (+ the platform's own). Zero in a horizontal plane.
@@ -1173,9 +1198,13 @@ class Model(DerivativeMethods, PoseMethods):
         out : ndarray (m,), optional
             Written into and returned (no allocation).
         """
-        return self._eval("Ge", (self._m,), out, q, theta)
+        try:
+            return self._fast["Ge"](q, theta, out)
+        except _cbind.Refused:
+            return self._eval("Ge", (self._m,), out, q, theta)
 
     # --- energy --------------------------------------------------------------------------
+    @fast_method
     def kinetic_energy(self, xe, xed, theta=None):
         """Kinetic energy T = 1/2 xed^T Me(xe) xed of the whole mechanism, J.
 
@@ -1201,6 +1230,7 @@ class Model(DerivativeMethods, PoseMethods):
         """
         return self._energy("kinetic_energy", xe, xed, theta)
 
+    @fast_method
     def potential_energy(self, xe, theta=None):
         """Potential energy V(xe) of the links and the payload in the model's gravity, J.
 

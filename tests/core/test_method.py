@@ -128,3 +128,34 @@ def test_construction_checks_the_layout(m, kw, match):
     with pytest.raises(ValueError, match=match):
         _cbind.Method(f, args["inputs"], args["outputs"], empty=np.empty,
                       guard=kw.get("guard"))
+
+
+def test_positive_takes_a_float_above_zero_and_refuses_anything_else(m):
+    f = m.function("sampled_step")
+    sing = np.zeros(2)
+    meth = _cbind.Method(f, (None,) * 4, ((4,), sing), empty=np.empty, finite=True,
+                         positive=(3,))
+    x, tau, th = np.array([0.25, 0.26, 0.1, -0.2]), np.zeros(3), np.array(m.theta_nominal)
+    ref, s = np.empty(4), np.empty(2)
+    f(x, tau, th, 0.002, ref, s)
+    assert np.array_equal(meth(x, tau, th, 0.002, None), ref)
+    assert np.array_equal(meth(x, tau, th, np.float64(0.002), None), ref)
+    for bad in (0.0, -0.002, np.inf, np.nan, None, 1, np.array([0.002]), np.float32(0.002)):
+        with pytest.raises(_cbind.Refused):
+            meth(x, tau, th, bad, None)
+    with pytest.raises(ValueError):          # only a given input of one element
+        _cbind.Method(f, (None,) * 4, ((4,), sing), empty=np.empty, positive=(0,))
+
+
+def test_scalar_returns_a_float_from_its_own_array(m):
+    f = m.function("kinetic_energy")
+    meth = _cbind.Method(f, (None,) * 3, ((1,),), empty=np.empty, finite=True, scalar=True)
+    args = (np.array([0.25, 0.26]), np.array([0.1, -0.2]), np.array(m.theta_nominal))
+    ref = np.empty(1)
+    f(*args, ref)
+    v = meth(*args, None)
+    assert type(v) is float and v == ref[0]
+    with pytest.raises(_cbind.Refused):      # out of reach: not finite
+        meth(np.array([5.0, 5.0]), *args[1:], None)
+    with pytest.raises(ValueError):          # one returned output of one element only
+        _cbind.Method(m.function("ik"), (None,), ((6,),), empty=np.empty, scalar=True)
