@@ -74,13 +74,13 @@ def _freeze(obj):
 
 def _design_values(spec):
     """(k,) float64 of spec's design (None without [design]): the bound input ``design``."""
-    design = getattr(spec, "design", None)
+    design = spec.design
     return None if design is None else np.array(design.values, dtype=float)
 
 
 def _design_text(spec):
     """", at design la = 0.25, ..." for a model with a [design] table, else ""."""
-    design = getattr(spec, "design", None)
+    design = spec.design
     if design is None:
         return ""
     return " at design " + ", ".join(f"{k} = {v:.6g}" for k, v in zip(design.names, design.values))
@@ -89,7 +89,7 @@ def _design_text(spec):
 def _check_design(spec, gen_dir, manifest):
     """The generated code's design input must be the model file's [design] variables."""
     have = (manifest.get("design") or {}).get("names")
-    design = getattr(spec, "design", None)
+    design = spec.design
     want = list(design.names) if design is not None else None
     if (list(have) if have is not None else None) != want:
         _stale(spec, gen_dir, f"{gen_dir} was generated with design variables {have}, the "

@@ -56,7 +56,7 @@ def _sing_lines(n, m):
 
 def _design_lines(spec):
     """The header's line on the [design] input (none without a [design] table)."""
-    design = getattr(spec, "design", None)
+    design = spec.design
     if design is None:
         return []
     return [f" * design = [{', '.join(design.names)}]  the model file's [design] variables, m: "

@@ -108,7 +108,7 @@ class Kinematics:
     def _geom(self, i, field, comp=None):
         """Leg i's geometric number ``field`` (entry ``comp`` of a point): the exact decimal of the
         model file, or the symbol of the [design] variable that sets it (a run-time input)."""
-        designed = getattr(self.sym, "design_of", {}).get((i, field, comp))
+        designed = self.sym.design_of.get((i, field, comp))
         if designed is not None:
             return designed
         value = getattr(self.spec.legs[i], field)
@@ -207,7 +207,7 @@ class Kinematics:
     def moment_length(self):
         """L, m: the platform's characteristic length, the RMS distance of its attachment points
         from its origin. Type II scales moments by 1/L to compare them with forces."""
-        if any(key[1] == "attach" for key in getattr(self.sym, "design_of", {})):
+        if any(key[1] == "attach" for key in self.sym.design_of):
             a = [self._point(i, "attach") for i in range(self.spec.n_legs)]
             return sp.sqrt(sum(x ** 2 + y ** 2 for x, y in a) / len(a))
         a2 = [leg.attach[0] ** 2 + leg.attach[1] ** 2 for leg in self.spec.legs]

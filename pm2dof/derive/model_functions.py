@@ -17,7 +17,7 @@ class Derivation:
     def __init__(self, spec):
         self.spec = spec
         self.sym = Symbols(spec.n_legs, spec.param_names,
-                           tuple(spec.task_names), getattr(spec, "design", None))
+                           tuple(spec.task_names), spec.design)
         self.kin = Kinematics(spec, self.sym)
         self.dyn = Dynamics(spec, self.sym, self.kin)
         self._setup()
@@ -40,7 +40,7 @@ class Derivation:
         self._pose = None
         # the [design] variables: one SX input ``design`` (k,) of every function whose graph
         # depends on them (:meth:`function`); none without [design]
-        design = list(getattr(self.sym, "design", []))
+        design = list(self.sym.design)
         self.design_sx = ca.SX.sym("design", len(design)) if design else None
         self._g = dict(zip(design, ca.vertsplit(self.design_sx))) if design else {}
 

@@ -111,7 +111,7 @@ def derive(model, out=None, *, force=False, build=True, progress=print):
     extra = {"layouts": {k: v.to_json() for k, v in derive_layouts(d).items()},
              "status_codes": STATUS, "rk4_substeps": spec.rk4_substeps,
              "task_names": list(task_names(d))}      # the task dimension m and its coordinates
-    design = getattr(spec, "design", None)
+    design = spec.design
     if design is not None:   # the functions' input ``design``: its order; defaults for reference
         extra["design"] = {"names": list(design.names),
                            "keys": [list(labels) for labels in design.labels],

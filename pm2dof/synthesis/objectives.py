@@ -179,7 +179,7 @@ def moving_mass(spec):
         The model file gives lumped parameters only (no body masses).
     """
     from ..core.errors import ArgumentError
-    links = getattr(spec, "links", None)
+    links = spec.links
     bodies = None if links is None else links.get("nominal")
     if bodies is None:
         raise ArgumentError(f"moving_mass: model {spec.name!r} gives its legs' inertia as lumped "

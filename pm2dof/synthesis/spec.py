@@ -212,7 +212,7 @@ def _model(pr, key, ref, folder):
 
 def _variables(pr, st, spec, check_design):
     """(variables, bounds) from study.variables and study.bounds and the model's [design]."""
-    design = getattr(spec, "design", None) if spec is not None else None
+    design = spec.design if spec is not None else None
     if spec is None:
         return (), ()
     if design is None:
@@ -407,7 +407,7 @@ def _needs(pr, section, label, measure, needs, options, region, path_names, spec
             and not options.get("paths"):
         pr.add(entry(section, label), "margin with region = false needs paths")
     if measure == "moving_mass" and spec is not None and \
-            (getattr(spec, "links", None) or {}).get("nominal") is None:
+            (spec.links or {}).get("nominal") is None:
         pr.add(entry(f"{section}.measure", label),
                f"moving_mass needs the legs' bodies: model file {spec.path} gives lumped "
                f"inertia only (give [[nominal.links]])")

@@ -32,7 +32,9 @@ def _forms(d, monolithic):
         Me, Ce_v, _, _ = task_inertia_coriolis(d, d.converter_xe(xe), v, [(d.sym.theta, theta)])
     finally:
         del d.dyn.factored
-    return ca.Function("forms", [xe, v, xrd, xrdd, theta], [W, Y, Me, Ce_v])
+    # a model with [design]: its design input too, set to the file's design by the caller
+    return d.function("forms", [xe, v, xrd, xrdd, theta], [W, Y, Me, Ce_v],
+                      ["xe", "v", "xrd", "xrdd", "theta"], ["W", "Y", "Me", "Ce_v"])
 
 
 @pytest.mark.parametrize("spec", PLATFORMS, ids=[s.name for s in PLATFORMS])
@@ -43,13 +45,14 @@ def test_factored_platform_matches_monolithic(spec):
     f_fac, f_mono = _forms(d, monolithic=False), _forms(d, monolithic=True)
     rng = np.random.default_rng(26)
     home = np.asarray(spec.home, float)
+    design = [] if spec.design is None else [np.array(spec.design.values)]
     checked = 0
     for _ in range(200):
         xe = home + rng.uniform([-0.03, -0.03, -0.15], [0.03, 0.03, 0.15])
         v, xrd, xrdd = (rng.uniform(-1, 1, 3) * s for s in ([0.5, 0.5, 2], [0.5, 0.5, 2], [10, 10, 40]))
         theta = rng.uniform(0.001, 1.0, len(spec.param_names))
-        a = [np.asarray(x) for x in f_fac(xe, v, xrd, xrdd, theta)]
-        b = [np.asarray(x) for x in f_mono(xe, v, xrd, xrdd, theta)]
+        a = [np.asarray(x) for x in f_fac(xe, v, xrd, xrdd, theta, *design)]
+        b = [np.asarray(x) for x in f_mono(xe, v, xrd, xrdd, theta, *design)]
         if not all(np.all(np.isfinite(x)) for x in b):
             continue                       # out of some leg's reach: no reference here
         for name, x, y in zip(("W", "Y", "Me", "Ce xed"), a, b):
