@@ -3,9 +3,9 @@
 
 * ``front.png`` -- every evaluated design in the plane of two objectives (each in its own
   sense, with its unit): feasible designs grey, infeasible ones light crosses, the front
-  coloured and numbered as ``design show`` lists it (the ``INDEX`` of ``design pick``); one
-  panel per pair of objectives (up to three); a single objective against the first design
-  variable.
+  coloured and numbered as ``design show`` lists it (the ``INDEX`` of ``design pick``), and
+  the model file's own design as a black star; one panel per pair of objectives (up to
+  three); a single objective against the first design variable.
 * ``designs.png`` -- the chosen designs of the front (its ends and evenly spaced ones between,
   up to four) drawn to scale with the same axes, each at the study's pose (the region's centre,
   a platform's home), with the file's default design dashed in each panel for comparison.
@@ -45,12 +45,15 @@ def front_figure(plt, fr):
              if len(names) > 1 else [(info["variables"][0], names[0])])
     fig, axes = plt.subplots(1, len(pairs), figsize=(5.2 * len(pairs), 4.4),
                              layout="constrained", squeeze=False)
-    feas = np.asarray(cols["feasible"], dtype=bool)
+    searched = fr.searched
+    feas = np.asarray(cols["feasible"], dtype=bool) & searched
+    bad = ~np.asarray(cols["feasible"], dtype=bool) & searched
+    fd, r0 = fr.file_design(), fr.file_row
     for ax, (a, b) in zip(axes[0], pairs):
         x, y = np.asarray(cols[a], float), np.asarray(cols[b], float)
         ax.plot(x[feas], y[feas], ".", color="0.7", ms=3, label="feasible designs")
-        if (~feas).any():
-            ax.plot(x[~feas], y[~feas], "x", color="0.85", ms=3,
+        if bad.any():
+            ax.plot(x[bad], y[bad], "x", color="0.85", ms=3,
                     label="infeasible (a constraint not met)")
         fx, fy = x[fr.index], y[fr.index]
         order = np.argsort(fx)
@@ -59,12 +62,17 @@ def front_figure(plt, fr):
         for i in shown:
             ax.annotate(str(i), (fx[i], fy[i]), xytext=(4, 4), textcoords="offset points",
                         fontsize=7, color="tab:red")
+        if fd is not None:
+            where = ("on the front" if fd["on_front"] else "breaks a constraint"
+                     if not fd["feasible"] else "dominated")
+            ax.plot([x[r0]], [y[r0]], "*", color="black", ms=11, mfc="gold", zorder=5,
+                    label=f"the model file's design ({where})")
         ax.set_xlabel(axis_label(info, a))
         ax.set_ylabel(axis_label(info, b))
         ax.grid(alpha=0.3)
     fig.suptitle(wrap(fig, f"design study {info.get('name')!r}: {len(fr.index)} designs on "
-                      f"the front, of {len(feas)} evaluated ({int(feas.sum())} feasible); "
-                      f"numbers: design pick's INDEX", 9), fontsize=9)
+                      f"the front, of {int(searched.sum())} evaluated ({int(feas.sum())} "
+                      f"feasible); numbers: design pick's INDEX", 9), fontsize=9)
     legend_outside(fig, axes=list(axes[0]), where="lower", ncol=3)
     return fig
 
