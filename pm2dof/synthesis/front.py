@@ -226,7 +226,8 @@ class DesignFront:
             pick's INDEX, of the designs that dominate it) and ``distance``
             (:func:`distance_to_front`: the largest fraction by which one design of the front
             beats it in every objective at once; 0 on the front; None when it breaks a
-            constraint or the front is empty).
+            constraint or the front is empty) and ``beaten_most_by`` (the position in the front
+            of that design; None when no design of the front dominates it).
         """
         r = self.file_row
         if r is None:
@@ -236,12 +237,17 @@ class DesignFront:
         f = self._minimised([r])[0]
         P = self._minimised(self.index)
         dom = dominated_by(f, P) if len(P) else np.zeros(0, dtype=int)
+        best = None
+        if len(dom):
+            scale = np.where(np.abs(f) > 0, np.abs(f), 1.0)
+            best = int(dom[np.argmax(np.min((f - P[dom]) / scale, axis=1))])
         return {"design": {v: float(self.columns[v][r]) for v in self.variables},
                 "objectives": {n: float(self.columns[n][r]) for n in names},
                 "feasible": feasible,
                 "on_front": feasible and not len(dom),
                 "dominated_by": [int(i) for i in dom],
-                "distance": (distance_to_front(f, P) if feasible and len(P) else None)}
+                "distance": (distance_to_front(f, P) if feasible and len(P) else None),
+                "beaten_most_by": best}
 
     def payload(self):
         """The front as the JSON of ``design run --json`` and ``design show --json``:
@@ -319,6 +325,7 @@ def format_file_design(fd, units=None):
         dom = fd["dominated_by"]
         said = "#" + ", #".join(map(str, dom[:8])) + (f", ... ({len(dom)} designs)"
                                                          if len(dom) > 8 else "")
-        where = (f"not on the front: dominated by {said}; the best of them is "
-                 f"{100 * fd['distance']:.3g} % better in every objective")
+        where = (f"not on the front: dominated by {said}; the best of them, "
+                 f"#{fd['beaten_most_by']}, is {100 * fd['distance']:.3g} % better (or more) in "
+                 f"every objective")
     return f"the model file's design ({var}): {obj}\n  {where}"

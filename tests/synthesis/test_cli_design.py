@@ -106,12 +106,17 @@ def test_run_json_contract_rerun_show_and_figures(tmp_path, capsys, stand_ins):
     assert "f1 (J) min" in text and "score (J) max" in text       # the table, with units
     assert "the model file's design (la = 0.244 m, lb = 0.244 m): f1 " in text
     assert f"not on the front: dominated by #{fd['dominated_by'][0]}" in text
+    assert f"the best of them, #{fd['beaten_most_by']}, is " in text
     rc, text, err = _main(capsys, "design", "show", out, "--json")
     assert rc == 0, err
     assert json.loads(text) == got
     for name in ("front.png", "designs.png"):
         assert (out / "figures" / name).stat().st_size > 10_000, name
         assert f"wrote {out / 'figures' / name}" in err
+    rc, text, err = _main(capsys, "design", "show", out, "--draw", 0, len(got["front"]) - 1)
+    assert rc == 0, err
+    rc, _, err = _main(capsys, "design", "show", out, "--draw", len(got["front"]))
+    assert rc == 2 and f"--draw: INDEX must be in 0..{len(got['front']) - 1}" in err
 
 
 def test_grid_override_and_its_refusals(tmp_path, capsys, stand_ins):

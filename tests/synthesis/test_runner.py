@@ -209,7 +209,7 @@ def test_the_file_design_against_the_front(tmp_path, client):
     assert fr.file_row == 0 and 0 not in fr.index and len(fr.index) == 12
     fd = fr.payload()["file_design"]
     assert set(fd) == {"design", "objectives", "feasible", "on_front", "dominated_by",
-                       "distance"}
+                       "distance", "beaten_most_by"}
     assert fd["design"] == {"la": 0.244, "lb": 0.244} and fd["feasible"]
     u = 0.244 / bounds[0][1]
     g = 1 + 9 * u
@@ -221,8 +221,10 @@ def test_the_file_design_against_the_front(tmp_path, client):
     f2s = 1 - np.sqrt(f1s)
     dom = [k for k in range(12) if f1s[k] <= u and f2s[k] <= f2]
     assert fd["dominated_by"] == dom and not fd["on_front"]
-    best = max(min((u - f1s[k]) / u, (f2 - f2s[k]) / f2) for k in dom)
-    assert fd["distance"] == pytest.approx(best, rel=1e-12)
+    gain = {k: min((u - f1s[k]) / u, (f2 - f2s[k]) / f2) for k in dom}
+    best = max(gain, key=gain.get)
+    assert fd["distance"] == pytest.approx(gain[best], rel=1e-12)
+    assert fd["beaten_most_by"] == best
     again = run_design(study, out, client=None, progress=False, evaluate=_refuse)
     assert again["file_design"] == "reused" and again["evaluated"] == 0
     assert read_front(out).payload() == fr.payload()
