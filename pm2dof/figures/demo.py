@@ -138,13 +138,10 @@ def format_demo(r):
 
 
 def _demo_design(out, progress, command_line):
-    """The design study paper_legs at its --quick size, evaluated on an in-process Dask
-    cluster (one thread: a second or two, mostly its start); its front figures. Returns (the
-    JSON of ``design show``, figure paths)."""
-    import logging
+    """The design study paper_legs at its --quick size, evaluated on an embedded Dask cluster
+    of one worker process (a few seconds, mostly its start); its front figures. Returns (the
+    JSON of ``design show`` with the count of designs, figure paths)."""
     import shutil
-
-    from distributed import Client, LocalCluster
 
     from ..core.model import load_model
     from ..synthesis.front import read_front
@@ -156,10 +153,7 @@ def _demo_design(out, progress, command_line):
     if progress:
         progress(f"design study {study.name!r} --quick: {study.optimizer['population']} x "
                  f"{study.optimizer['generations']} designs of la, lb")
-    with LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
-                      dashboard_address=":0", silence_logs=logging.ERROR) as cluster, \
-            Client(cluster) as client:
-        run_design(study, out, client=client, progress=False, command_line=command_line)
+    run_design(study, out, workers=1, progress=False, command_line=command_line)
     fr = read_front(out)
     paths = design_figures(fr, load_model(study.model_path), Path(out) / "figures",
                            fr.info.get("provenance"))
