@@ -14,8 +14,8 @@ evaluation (and starts no cluster).
 
 **The model file's own design.** Beside the optimiser's designs, every run evaluates the
 design the model file gives (its ``[[legs]]`` values of the searched variables,
-:func:`file_design`) once, as one more task of the first batch that needs a cluster, and stores
-it flagged (``DIR/batches/file-design-*.parquet``, :mod:`.store`). The optimiser does not see
+:func:`model_file_design`) once, as one more task of the first batch that needs a cluster,
+and stores it flagged (``DIR/batches/file-design-*.parquet``, :mod:`.store`). The optimiser does not see
 it: the search, its seed and its designs are those of a run without it. ``design show`` says
 where it stands against the front (:meth:`.front.DesignFront.file_design`).
 """
@@ -42,7 +42,7 @@ from .store import (
 )
 
 __all__ = ["DesignRunError", "run_design", "evaluate_chunk", "chunk_size", "MIN_CHUNK",
-           "MAX_CHUNKS", "expected_designs", "file_design", "format_notice", "format_run"]
+           "MAX_CHUNKS", "expected_designs", "model_file_design", "format_notice", "format_run"]
 
 #: designs per chunk (a Dask task) at least, and chunks per generation's batch at most: a
 #: population of 40 is 10 tasks of 4 designs; a 100 x 100 grid, 64 tasks of 157
@@ -69,7 +69,7 @@ def expected_designs(study):
     return int(opt["population"]) * int(opt["generations"])
 
 
-def file_design(model, study):
+def model_file_design(model, study):
     """The model file's own design in ``study.variables`` order: (1, k), m.
 
     Parameters
@@ -192,7 +192,7 @@ class _Batches:
 
 def run_design(study, out, *, workers=None, scheduler=None, client=None, timeout=10.0,
                progress=True, notify=None, command_line=None, evaluate=None,
-               min_chunk=MIN_CHUNK):
+               min_chunk=MIN_CHUNK, file_design=True):
     """Run the optimiser of ``study`` with every design evaluated on Dask, into ``out``.
 
     Parameters
@@ -224,14 +224,18 @@ def run_design(study, out, *, workers=None, scheduler=None, client=None, timeout
         ``pm2dof.synthesis.objectives.evaluate_batch``); it must be importable there.
     min_chunk : int
         Designs per Dask task at least (:func:`chunk_size`); part of the run's identity.
+    file_design : bool
+        Also evaluate the model file's own design (module docstring); False: only the
+        optimiser's designs (what a measurement of the optimiser's cost wants).
 
     Returns
     -------
     dict
         ``designs`` (evaluated in all, this run's optimiser), ``evaluated`` (by this session),
         ``reused`` (read back from ``out``), ``generations``, ``seconds`` (wall time, s),
-        ``file_design`` (``"evaluated"`` by this session or ``"reused"``: the model file's own
-        design, evaluated once beside the optimiser's and not counted in the others).
+        ``file_design`` (``"evaluated"`` by this session, ``"reused"``, or ``None`` when not
+        asked for: the model file's own design, evaluated once beside the optimiser's and not
+        counted in the others).
     """
     evaluate = evaluate or _default_evaluate()
     notify = notify or (lambda notice: None)
@@ -255,10 +259,10 @@ def run_design(study, out, *, workers=None, scheduler=None, client=None, timeout
                     "dashboard": dashboard_link(box["client"])})
         return box["client"]
 
-    file_x = file_design(model, study)
+    file_x = model_file_design(model, study)
     stored = file_design_path(out, chunk_hash(file_x)).name in have
     batches = _Batches(study, out, ident, have, evaluate, min_chunk, bar, connecter,
-                       None if stored else file_x)
+                       None if stored or not file_design else file_x)
     try:
         res = optimize(batches, study.bounds, len(study.objectives), len(study.constraints),
                        kind=opt["kind"], population=opt.get("population", 40),
@@ -272,7 +276,7 @@ def run_design(study, out, *, workers=None, scheduler=None, client=None, timeout
     finish_out(out, len(res.X))
     return {"designs": len(res.X), "evaluated": batches.evaluated, "reused": batches.reused,
             "generations": batches.generation, "seconds": time.perf_counter() - t0,
-            "file_design": "reused" if stored else "evaluated"}
+            "file_design": None if not file_design else "reused" if stored else "evaluated"}
 
 
 def format_notice(notice):

@@ -233,6 +233,11 @@ def test_the_file_design_against_the_front(tmp_path, client):
     old = read_front(out)
     assert old.file_row is None and old.payload()["file_design"] is None
     np.testing.assert_array_equal(old.index, fr.index - 1)
+    none = run_design(study, tmp_path / "n", client=client, progress=False,
+                      evaluate=analytic.evaluate_batch, file_design=False)
+    assert none["file_design"] is None and none["designs"] == 144
+    assert not list((tmp_path / "n" / "batches").glob("file-design-*"))
+    np.testing.assert_array_equal(read_front(tmp_path / "n").index, old.index)
 
 
 # ---- real worker processes (slow): the embedded cluster, a worker killed mid-run ----
