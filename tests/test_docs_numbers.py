@@ -86,3 +86,32 @@ def test_deploying_double_rmse_is_simulates(m):
                          ("CTC", pm2dof.CTCController)):
             r = pm2dof.simulate(m, cls(m), pm2dof.paper_move(speed)).rmse
             assert f"| {speed} | {law} | {r:.4e} m |" in page, (speed, law, f"{r:.4e}")
+
+
+@pytest.mark.parametrize("study, better", [("paper_redesign", {"la": 0.236, "lb": 0.32}),
+                                           ("rrr4_platform_legs", {"la": 0.15, "lb": 0.25})])
+def test_results_design_tables(study, better, sci):
+    """docs/results-design.md's tables: each study's objectives at the model file's own design
+    and at the rounded design of the front the page names, with the relative change, as the
+    page prints them (the fronts themselves come from runs of minutes, quoted with their
+    commands)."""
+    from pm2dof.synthesis import evaluate_design, read_design_study
+    s = read_design_study(study)
+    m = pm2dof.load_model(s.model_path)
+    here, there = evaluate_design(m, s), evaluate_design(m.at_design(better), s)
+    fmt = {"dexterity_mean": "{:.4f}", "force_min": "{:.1f}" if study == "paper_redesign"
+           else "{:.2f}", "duration_high": "{:.5f}"}
+
+    def cell(name, v):
+        return sci(v, 3) if name == "rmse_na_high" else fmt[name].format(v)
+
+    page = DOCS["results-design"]
+    rows = {line.split("|")[1].strip(): [c.strip() for c in line.split("|")[2:-1]]
+            for line in page.splitlines() if line.startswith("| ")}
+    names = [o.name for o in s.objectives]
+    mine = next(v for k, v in rows.items() if k.startswith("the ") and len(v) == len(names)
+                and v[0] == cell(names[0], here[names[0]]))
+    assert mine == [cell(n, here[n]) for n in names]
+    label = ", ".join(f"{k} = {v:g} m" for k, v in better.items())
+    assert rows[label] == [f"{cell(n, there[n])} ({100 * (there[n] - here[n]) / abs(here[n]):+.1f}"
+                           f" %)" for n in names], label

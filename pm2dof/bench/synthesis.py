@@ -179,7 +179,7 @@ def _dask_overhead(repeats, quick, say, grid=None, timeout=60.0):
             for r in range(max(repeats, 3) + 1):            # round 0 warms both (not kept)
                 t0 = time.perf_counter()
                 res = run_design(st, f"{tmp}/r{r}", client=client, progress=False,
-                                 command_line=["pm2dof", "bench"])
+                                 command_line=["pm2dof", "bench"], file_design=False)
                 td = time.perf_counter() - t0
                 if res["evaluated"] != len(X):
                     raise RuntimeError(f"run_design evaluated {res['evaluated']} of {len(X)}")

@@ -20,7 +20,9 @@ class DemoResult:
     """What :func:`run_demo` did: ``data`` (written to ``json_path``, results.json), the
     figures ``paths``, and what :func:`format_demo` prints besides: whether the model is the
     paper's robot, the sensitivity rows, the repeated runs, the quick robustness study's size
-    (``study_draws``) or the module it lacked (``study_skipped``)."""
+    (``study_draws``) or the module it lacked (``study_skipped``), and the quick design study's
+    front and the paper's design against it (``design``: the JSON of ``design show``, its
+    ``file_design`` included; or the module it lacked, ``design_skipped``)."""
     data: dict
     paths: tuple
     json_path: object
@@ -29,6 +31,8 @@ class DemoResult:
     repeated: object = None
     study_draws: object = None
     study_skipped: object = None
+    design: object = None
+    design_skipped: object = None
 
 
 def demo_header(model):
@@ -76,9 +80,19 @@ def run_demo(model, out="out", runs=40, progress=None, command_line=None):
         data["study_robustness_quick"] = study[0]
         paths += study[1]
         draws = study[2]
+    design = design_skipped = None
+    if is_paper_robot(m):
+        try:
+            design, design_paths = _demo_design(Path(out) / "design_paper_legs", progress,
+                                                command_line)
+        except ModuleNotFoundError as exc:     # pymoo, Dask, pyarrow
+            design_skipped = exc.name
+        else:
+            data["design_paper_legs_quick"] = design
+            paths += design_paths
     json_path = write_json(Path(out) / "results.json", data)
     return DemoResult(data, tuple(paths), json_path, is_paper_robot(m), tuple(sens), rep,
-                      draws, skipped)
+                      draws, skipped, design, design_skipped)
 
 
 def format_demo(r):
@@ -106,8 +120,44 @@ def format_demo(r):
             lines.append(f"  {s['controller']:18s} {s['move']:5s} {s['median']:5.1f} % "
                          f"[{s['p05']:5.1f}, {s['p95']:5.1f}], better on "
                          f"{100 * s['share_better']:.0f} % of the plants")
+    if r.design_skipped is not None:
+        lines.append(f"\nDesign study skipped: it needs {r.design_skipped}, which is not "
+                     f"installed (pip install 'pm2dof[studies]').")
+    elif r.design is not None:
+        fd, front = r.design["file_design"], r.design["front"]
+        where = ("on the front" if fd["on_front"] else
+                 f"dominated by {len(fd['dominated_by'])} of them, the best "
+                 f"{100 * fd['distance']:.2f} % better in both objectives")
+        lines.append(f"\nDesign study paper_legs, quick size ({r.design['designs']} designs of "
+                     f"la, lb; the full "
+                     f"study is `pm2dof design run paper_legs --out DIR`): {len(front)} "
+                     f"designs on the front of dexterity and the high move's duration; the "
+                     f"paper's la = lb = 0.244 m is {where}.")
     lines.append(f"\nfigures: {', '.join(str(p) for p in r.paths)}\nnumbers: {r.json_path}")
     return "\n".join(lines)
+
+
+def _demo_design(out, progress, command_line):
+    """The design study paper_legs at its --quick size, evaluated on an embedded Dask cluster
+    of one worker process (a few seconds, mostly its start); its front figures. Returns (the
+    JSON of ``design show`` with the count of designs, figure paths)."""
+    import shutil
+
+    from ..core.model import load_model
+    from ..synthesis.front import read_front
+    from ..synthesis.runner import run_design
+    from ..synthesis.spec import read_design_study, with_overrides
+    from .design import design_figures
+    study = with_overrides(read_design_study("paper_legs"), quick=True)
+    shutil.rmtree(out, ignore_errors=True)      # the demo's own folder: always a fresh run
+    if progress:
+        progress(f"design study {study.name!r} --quick: {study.optimizer['population']} x "
+                 f"{study.optimizer['generations']} designs of la, lb")
+    run_design(study, out, workers=1, progress=False, command_line=command_line)
+    fr = read_front(out)
+    paths = design_figures(fr, load_model(study.model_path), Path(out) / "figures",
+                           fr.info.get("provenance"))
+    return {"designs": int(fr.searched.sum()), **fr.payload()}, paths
 
 
 def _demo_study(m, out, progress, command_line):

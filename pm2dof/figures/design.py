@@ -3,9 +3,10 @@
 
 * ``front.png`` -- every evaluated design in the plane of two objectives (each in its own
   sense, with its unit): feasible designs grey, infeasible ones light crosses, the front
-  coloured and numbered as ``design show`` lists it (the ``INDEX`` of ``design pick``); one
-  panel per pair of objectives (up to three); a single objective against the first design
-  variable.
+  coloured and numbered as ``design show`` lists it (the ``INDEX`` of ``design pick``), and
+  the model file's own design as a star; one panel per pair of objectives (up to six), a
+  single objective against the first design variable; a two-variable study adds the plane of
+  its variables (where the front's designs lie).
 * ``designs.png`` -- the chosen designs of the front (its ends and evenly spaced ones between,
   up to four) drawn to scale with the same axes, each at the study's pose (the region's centre,
   a platform's home), with the file's default design dashed in each panel for comparison.
@@ -37,35 +38,85 @@ def chosen(n, k=4):
     return sorted({int(round(v)) for v in np.linspace(0, n - 1, min(k, n))}) if n else []
 
 
-def front_figure(plt, fr):
-    """The front among every evaluated design (:class:`pm2dof.synthesis.front.DesignFront`)."""
-    info, cols = fr.info, fr.columns
+def _panels(info):
+    """The (x, y) column pairs of the front figure: every pair of objectives (up to six: four
+    objectives give all six), a single objective against the first design variable; and the
+    plane of the two design variables of a two-variable study."""
     names = [o["name"] for o in info["objectives"]]
-    pairs = ([(a, b) for i, a in enumerate(names) for b in names[i + 1:]][:3]
+    pairs = ([(a, b) for i, a in enumerate(names) for b in names[i + 1:]][:6]
              if len(names) > 1 else [(info["variables"][0], names[0])])
-    fig, axes = plt.subplots(1, len(pairs), figsize=(5.2 * len(pairs), 4.4),
+    if len(info["variables"]) == 2:
+        pairs.append(tuple(info["variables"]))
+    return pairs
+
+
+def _limits(v):
+    """Axis limits holding the values ``v`` with a 5 % margin (None when there are none)."""
+    v = np.asarray(v, float)
+    v = v[np.isfinite(v)]
+    if not len(v):
+        return None
+    lo, hi = float(v.min()), float(v.max())
+    pad = 0.05 * (hi - lo) if hi > lo else 0.05 * max(abs(hi), 1e-12)
+    return lo - pad, hi + pad
+
+
+def front_figure(plt, fr):
+    """The front among every evaluated design (:class:`pm2dof.synthesis.front.DesignFront`):
+    one panel per pair of objectives (:func:`_panels`), and the design plane of a two-variable
+    study. With two objectives the front is a line; with more, a cloud of points (its
+    projection). The axes hold the feasible designs: an infeasible design whose measure failed
+    (its worst value, ±1e9) lies outside them."""
+    info, cols = fr.info, fr.columns
+    n_obj = len(info["objectives"])
+    panels = _panels(info)
+    ncol = min(len(panels), 4 if len(panels) > 6 else 3)
+    nrow = -(-len(panels) // ncol)
+    fig, axes = plt.subplots(nrow, ncol, figsize=(4.6 * ncol, 4.0 * nrow + 0.6),
                              layout="constrained", squeeze=False)
-    feas = np.asarray(cols["feasible"], dtype=bool)
-    for ax, (a, b) in zip(axes[0], pairs):
+    searched = fr.searched
+    feas = np.asarray(cols["feasible"], dtype=bool) & searched
+    bad = ~np.asarray(cols["feasible"], dtype=bool) & searched
+    fd, r0 = fr.file_design(), fr.file_row
+    shown = chosen(len(fr.index), 12 if n_obj <= 2 else 6)
+    used = []
+    for ax, (a, b) in zip(axes.ravel(), panels):
+        used.append(ax)
         x, y = np.asarray(cols[a], float), np.asarray(cols[b], float)
         ax.plot(x[feas], y[feas], ".", color="0.7", ms=3, label="feasible designs")
-        if (~feas).any():
-            ax.plot(x[~feas], y[~feas], "x", color="0.85", ms=3,
+        if bad.any():
+            ax.plot(x[bad], y[bad], "x", color="0.85", ms=3,
                     label="infeasible (a constraint not met)")
         fx, fy = x[fr.index], y[fr.index]
-        order = np.argsort(fx)
-        ax.plot(fx[order], fy[order], "-o", color="tab:red", ms=4, lw=1, label="the front")
-        shown = chosen(len(fr.index), 12)
+        if n_obj <= 2 and a not in info["variables"]:
+            order = np.argsort(fx)
+            ax.plot(fx[order], fy[order], "-o", color="tab:red", ms=4, lw=1, label="the front")
+        else:
+            ax.plot(fx, fy, "o", color="tab:red", ms=2.5, alpha=0.6, label="the front")
         for i in shown:
             ax.annotate(str(i), (fx[i], fy[i]), xytext=(4, 4), textcoords="offset points",
                         fontsize=7, color="tab:red")
+        keep = feas.copy()
+        if fd is not None:
+            where = ("on the front" if fd["on_front"] else "breaks a constraint"
+                     if not fd["feasible"] else "dominated")
+            ax.plot([x[r0]], [y[r0]], "*", color="black", ms=11, mfc="gold", zorder=5,
+                    label=f"the model file's design ({where})")
+            keep[r0] = True
+        for lim, setter in ((_limits(x[keep]), ax.set_xlim), (_limits(y[keep]), ax.set_ylim)):
+            if lim is not None:
+                setter(*lim)
         ax.set_xlabel(axis_label(info, a))
         ax.set_ylabel(axis_label(info, b))
+        if a in info["variables"] and b in info["variables"]:
+            ax.set_title("the designs searched", fontsize=8)
         ax.grid(alpha=0.3)
+    for ax in axes.ravel()[len(panels):]:
+        ax.set_visible(False)
     fig.suptitle(wrap(fig, f"design study {info.get('name')!r}: {len(fr.index)} designs on "
-                      f"the front, of {len(feas)} evaluated ({int(feas.sum())} feasible); "
-                      f"numbers: design pick's INDEX", 9), fontsize=9)
-    legend_outside(fig, axes=list(axes[0]), where="lower", ncol=3)
+                      f"the front, of {int(searched.sum())} evaluated ({int(feas.sum())} "
+                      f"feasible); numbers: design pick's INDEX", 9), fontsize=9)
+    legend_outside(fig, axes=used, where="lower", ncol=4)
     return fig
 
 
@@ -115,7 +166,8 @@ def designs_figure(plt, model, fr, picks=None):
         ok = _draw(ax, m2, pose, "tab:red", "-", "this design")
         pts.append(fixed_points(m2))
         r = fr.index[i]
-        obj = ", ".join(f"{n} {float(fr.columns[n][r]):.4g}" for n in names)
+        obj = (", " if len(names) <= 2 else "\n").join(
+            f"{n} {float(fr.columns[n][r]):.4g}" for n in names)
         var = ", ".join(f"{k} {v:.4g}" for k, v in values.items())
         ax.set_title(f"#{i}: {var}\n{obj}" + ("" if ok else "\n(not assembled at the pose)"),
                      fontsize=7)

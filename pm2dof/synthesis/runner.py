@@ -11,6 +11,13 @@ Parquet at once (:mod:`.store`), keyed by its generation, its index and the hash
 a rerun with the same ``out`` asks for the same designs (same seed) and reads those chunks
 back instead of evaluating them, so an interrupted run resumes and a finished one costs no
 evaluation (and starts no cluster).
+
+**The model file's own design.** Beside the optimiser's designs, every run evaluates the
+design the model file gives (its ``[[legs]]`` values of the searched variables,
+:func:`model_file_design`) once, as one more task of the first batch that needs a cluster,
+and stores it flagged (``DIR/batches/file-design-*.parquet``, :mod:`.store`). The optimiser does not see
+it: the search, its seed and its designs are those of a run without it. ``design show`` says
+where it stands against the front (:meth:`.front.DesignFront.file_design`).
 """
 import math
 import time
@@ -25,6 +32,7 @@ from ..studies.runner import connect, dashboard_link, disconnect
 from .optimize import optimize
 from .store import (
     chunk_hash,
+    file_design_path,
     find_chunk,
     finish_out,
     identity,
@@ -34,7 +42,7 @@ from .store import (
 )
 
 __all__ = ["DesignRunError", "run_design", "evaluate_chunk", "chunk_size", "MIN_CHUNK",
-           "MAX_CHUNKS", "expected_designs", "format_notice", "format_run"]
+           "MAX_CHUNKS", "expected_designs", "model_file_design", "format_notice", "format_run"]
 
 #: designs per chunk (a Dask task) at least, and chunks per generation's batch at most: a
 #: population of 40 is 10 tasks of 4 designs; a 100 x 100 grid, 64 tasks of 157
@@ -59,6 +67,19 @@ def expected_designs(study):
     if opt["kind"] == "grid":
         return int(opt["grid"]) ** len(study.variables)
     return int(opt["population"]) * int(opt["generations"])
+
+
+def model_file_design(model, study):
+    """The model file's own design in ``study.variables`` order: (1, k), m.
+
+    Parameters
+    ----------
+    model : Model
+        The study's model as loaded from its file (at the file's design).
+    study : DesignStudy
+    """
+    values = dict(zip(model.design_names, map(float, model.design)))
+    return np.array([[values[v] for v in study.variables]], dtype=float)
 
 
 def evaluate_chunk(study, X, evaluate):
@@ -93,11 +114,13 @@ class _Batches:
     """The optimiser's ``evaluate(X)``: one generation's batch, chunk by chunk, read back from
     ``out`` or evaluated on Dask, in order."""
 
-    def __init__(self, study, out, ident, have, evaluate, min_chunk, bar, connecter):
+    def __init__(self, study, out, ident, have, evaluate, min_chunk, bar, connecter,
+                 file_x=None):
         self.study, self.out, self.ident, self.have = study, out, ident, have
         self.evaluate, self.min_chunk, self.bar, self.connecter = (evaluate, min_chunk, bar,
                                                                    connecter)
         self.generation = self.evaluated = self.reused = 0
+        self.file_x = file_x          # the model file's design, while it is not evaluated
 
     def __call__(self, X):
         gen = self.generation
@@ -111,54 +134,65 @@ class _Batches:
             Xc = X[s:s + size]
             p = find_chunk(self.have, self.out, gen, c, chunk_hash(Xc))
             if p is None:
-                todo.append((c, s, Xc))
+                todo.append((gen, c, s, Xc))
                 continue
             F[s:s + len(Xc)], G[s:s + len(Xc)], _ = read_chunk(p, self.study)
             self.reused += len(Xc)
             self.bar.update(len(Xc))
         if todo:
-            self._run(gen, todo, F, G)
+            self._run(todo, F, G)
         return F, G
 
-    def _run(self, gen, todo, F, G):
+    def finish(self):
+        """Evaluate the model file's design if no batch has taken it along."""
+        if self.file_x is not None:
+            self._run([], None, None)
+
+    def _run(self, todo, F, G):
         from distributed import as_completed
         client = self.connecter()
+        if self.file_x is not None:              # the model file's design rides along
+            todo = [(None, 0, 0, self.file_x)] + list(todo)
+            self.file_x = None
         window = 2 * (sum(client.nthreads().values()) or 1) + 2
         pending, ac, index = iter(todo), as_completed(), {}
 
         def submit():
             item = next(pending, None)
             if item is not None:
-                c, s, Xc = item
+                gen, c, s, Xc = item
+                where = "file" if gen is None else f"g{gen}-c{c}"
                 fut = client.submit(evaluate_chunk, self.study, Xc, self.evaluate, pure=False,
-                                    retries=2, key=f"pm2dof-design-{self.ident[:12]}-g{gen}-"
-                                    f"c{c}-{chunk_hash(Xc)[:8]}")
+                                    retries=2, key=f"pm2dof-design-{self.ident[:12]}-{where}-"
+                                    f"{chunk_hash(Xc)[:8]}")
                 index[fut.key] = item
                 ac.add(fut)
 
         for _ in range(window):
             submit()
         for fut in ac:
-            c, s, Xc = index.pop(fut.key)
+            gen, c, s, Xc = index.pop(fut.key)
             try:
                 Fc, Gc, rows = fut.result()
             except Exception as exc:
-                raise DesignRunError(f"generation {gen}, chunk {c} (designs {s}..{s + len(Xc) - 1}"
-                                     f" of its batch) failed: {type(exc).__name__}: {exc}") \
-                    from exc
+                what = ("the model file's design" if gen is None else
+                        f"generation {gen}, chunk {c} (designs {s}..{s + len(Xc) - 1} of its "
+                        f"batch)")
+                raise DesignRunError(f"{what} failed: {type(exc).__name__}: {exc}") from exc
             path = write_chunk(self.out, gen, c, Xc, Fc, Gc, rows, self.study, self.ident,
-                               start=s)
+                               start=s, file_design=gen is None)
             self.have.add(path.name)
-            F[s:s + len(Xc)], G[s:s + len(Xc)] = Fc, Gc
             fut.release()
-            self.evaluated += len(Xc)
-            self.bar.update(len(Xc))
+            if gen is not None:
+                F[s:s + len(Xc)], G[s:s + len(Xc)] = Fc, Gc
+                self.evaluated += len(Xc)
+                self.bar.update(len(Xc))
             submit()
 
 
 def run_design(study, out, *, workers=None, scheduler=None, client=None, timeout=10.0,
                progress=True, notify=None, command_line=None, evaluate=None,
-               min_chunk=MIN_CHUNK):
+               min_chunk=MIN_CHUNK, file_design=True):
     """Run the optimiser of ``study`` with every design evaluated on Dask, into ``out``.
 
     Parameters
@@ -190,12 +224,18 @@ def run_design(study, out, *, workers=None, scheduler=None, client=None, timeout
         ``pm2dof.synthesis.objectives.evaluate_batch``); it must be importable there.
     min_chunk : int
         Designs per Dask task at least (:func:`chunk_size`); part of the run's identity.
+    file_design : bool
+        Also evaluate the model file's own design (module docstring); False: only the
+        optimiser's designs (what a measurement of the optimiser's cost wants).
 
     Returns
     -------
     dict
         ``designs`` (evaluated in all, this run's optimiser), ``evaluated`` (by this session),
-        ``reused`` (read back from ``out``), ``generations``, ``seconds`` (wall time, s).
+        ``reused`` (read back from ``out``), ``generations``, ``seconds`` (wall time, s),
+        ``file_design`` (``"evaluated"`` by this session, ``"reused"``, or ``None`` when not
+        asked for: the model file's own design, evaluated once beside the optimiser's and not
+        counted in the others).
     """
     evaluate = evaluate or _default_evaluate()
     notify = notify or (lambda notice: None)
@@ -219,19 +259,24 @@ def run_design(study, out, *, workers=None, scheduler=None, client=None, timeout
                     "dashboard": dashboard_link(box["client"])})
         return box["client"]
 
-    batches = _Batches(study, out, ident, have, evaluate, min_chunk, bar, connecter)
+    file_x = model_file_design(model, study)
+    stored = file_design_path(out, chunk_hash(file_x)).name in have
+    batches = _Batches(study, out, ident, have, evaluate, min_chunk, bar, connecter,
+                       None if stored or not file_design else file_x)
     try:
         res = optimize(batches, study.bounds, len(study.objectives), len(study.constraints),
                        kind=opt["kind"], population=opt.get("population", 40),
                        generations=opt.get("generations", 30), grid=opt.get("grid", 20),
                        seed=opt.get("seed", 1))
+        batches.finish()
     finally:
         bar.close()
         if box["own"]:
             disconnect(box["client"])
     finish_out(out, len(res.X))
     return {"designs": len(res.X), "evaluated": batches.evaluated, "reused": batches.reused,
-            "generations": batches.generation, "seconds": time.perf_counter() - t0}
+            "generations": batches.generation, "seconds": time.perf_counter() - t0,
+            "file_design": None if not file_design else "reused" if stored else "evaluated"}
 
 
 def format_notice(notice):

@@ -14,7 +14,8 @@ Columns of every file: ``generation``, ``position`` (the design's place in its g
 batch), one per design variable (its value), one per objective (its value in its own sense:
 a maximised objective is not negated), ``g.<constraint>`` (pymoo's constraint value, feasible
 when <= 0), ``feasible``, and what the evaluation reports besides (the constraints' measured
-values by their names, ``status``).
+values by their names, ``status``), and ``file_design`` (true on the model file's own design,
+which the optimiser did not ask for).
 """
 import dataclasses
 import hashlib
@@ -29,7 +30,11 @@ from ..infra.results import provenance, write_atomic, write_json
 
 __all__ = ["DesignOutError", "identity", "prepare_out", "chunk_hash", "chunk_path",
            "find_chunk", "write_chunk", "read_chunk", "finish_out", "read_designs",
-           "objective_senses", "units"]
+           "objective_senses", "units", "FILE_DESIGN_GENERATION", "file_design_path"]
+
+#: the ``generation`` of the model file's own design (not one of the optimiser's)
+FILE_DESIGN_GENERATION = -1
+_FILES = ("g*.parquet", "file-design-*.parquet")
 
 
 class DesignOutError(Pm2dofError, ValueError):
@@ -90,6 +95,16 @@ def chunk_path(out, generation, chunk, digest):
     return Path(out) / "batches" / f"g{generation:05d}-c{chunk:05d}-{digest[:16]}.parquet"
 
 
+def file_design_path(out, digest):
+    """The file of the model file's own design, whose values hash to ``digest``."""
+    return Path(out) / "batches" / f"file-design-{digest[:16]}.parquet"
+
+
+def _stored(batches):
+    """Every evaluated file of a run's ``batches`` folder (the chunks, the file's design)."""
+    return sorted(p for pattern in _FILES for p in Path(batches).glob(pattern))
+
+
 def prepare_out(out, study, ident, model=None, command_line=None):
     """Create or reopen ``out`` for the run ``ident`` (:func:`identity`) of ``study``; records
     ``out/design.json`` (``model``: the Model whose provenance it records, or None).
@@ -108,7 +123,7 @@ def prepare_out(out, study, ident, model=None, command_line=None):
     except OSError as exc:
         raise DesignOutError(f"--out {out}: cannot write there ({exc.strerror or exc})") \
             from None
-    have = sorted(batches.glob("g*.parquet"))
+    have = _stored(batches)
     meta = out / "design.json"
     if have:
         old = _read_json(meta) if meta.exists() else {}
@@ -118,7 +133,7 @@ def prepare_out(out, study, ident, model=None, command_line=None):
                 f"({old.get('name')!r}, from {old.get('study_file')}): other variables, "
                 f"bounds, objectives, optimiser (or --quick, --optimizer, --grid) or model "
                 f"file. Use an empty --out, or delete {out} to start over")
-    for tmp in batches.glob(".g*"):                 # an interrupted write
+    for tmp in (*batches.glob(".g*"), *batches.glob(".file-design*")):   # interrupted writes
         tmp.unlink(missing_ok=True)
     for p in have:
         md = pq.read_schema(p).metadata or {}
@@ -158,7 +173,8 @@ def find_chunk(have, out, generation, chunk, digest):
     return p if p.name in have else None
 
 
-def write_chunk(out, generation, chunk, X, F, G, rows, study, ident, start=0):
+def write_chunk(out, generation, chunk, X, F, G, rows, study, ident, start=0,
+                file_design=False):
     """Write one evaluated chunk atomically; returns its path.
 
     Parameters
@@ -181,10 +197,15 @@ def write_chunk(out, generation, chunk, X, F, G, rows, study, ident, start=0):
         The run's identity.
     start : int
         The first design's position in its generation.
+    file_design : bool
+        The chunk is the model file's own design (one row): written to
+        :func:`file_design_path`, ``generation`` and ``chunk`` ignored.
     """
     import pyarrow as pa
     import pyarrow.parquet as pq
     n = len(X)
+    if file_design:
+        generation = FILE_DESIGN_GENERATION
     cols = {"generation": np.full(n, generation, dtype=np.int64),
             "position": np.arange(start, start + n, dtype=np.int64)}
     for j, name in enumerate(study.variables):
@@ -194,6 +215,7 @@ def write_chunk(out, generation, chunk, X, F, G, rows, study, ident, start=0):
     for j, c in enumerate(study.constraints):
         cols[f"g.{c.name}"] = np.asarray(G[:, j], dtype=float)
     cols["feasible"] = np.all(np.asarray(G).reshape(n, -1) <= 0.0, axis=1)
+    cols["file_design"] = np.full(n, bool(file_design))
     extra = [k for r in rows[:1] for k in r if k not in cols]
     for k in extra:
         vals = [r.get(k) for r in rows]
@@ -206,6 +228,8 @@ def write_chunk(out, generation, chunk, X, F, G, rows, study, ident, start=0):
     sink = pa.BufferOutputStream()
     pq.write_table(table, sink, compression="zstd")
     digest = chunk_hash(X)
+    if file_design:
+        return write_atomic(file_design_path(out, digest), sink.getvalue().to_pybytes())
     path = chunk_path(out, generation, chunk, digest)
     for stale in path.parent.glob(f"g{generation:05d}-c{chunk:05d}-*.parquet"):
         if stale.name != path.name:            # another run's designs at this place: replaced
@@ -236,7 +260,8 @@ def finish_out(out, designs):
 
 def read_designs(out):
     """(design.json dict, {column: ndarray}) of every design a run evaluated, ordered by
-    generation and position.
+    generation and position: the model file's own design first (generation -1, column
+    ``file_design`` true; absent from a run of an earlier pm2dof), then the optimiser's.
 
     Raises
     ------
@@ -251,7 +276,7 @@ def read_designs(out):
         raise DesignOutError(f"{out}: no design.json; is this the --out of `pm2dof design "
                              f"run`?")
     info = _read_json(meta)
-    files = sorted((out / "batches").glob("g*.parquet"))
+    files = _stored(out / "batches")
     if not files:
         raise DesignOutError(f"{out}: no evaluated designs yet; run `pm2dof design run` with "
                              f"--out {out}")
@@ -263,4 +288,5 @@ def read_designs(out):
         col = table.column(name)
         cols[name] = (np.array(col.to_pylist(), dtype=object) if pa.types.is_string(col.type)
                       else col.to_numpy())
+    cols["file_design"] = cols["generation"] == FILE_DESIGN_GENERATION
     return info, cols

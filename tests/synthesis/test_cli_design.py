@@ -82,7 +82,13 @@ def test_run_json_contract_rerun_show_and_figures(tmp_path, capsys, stand_ins):
     assert rc == 0, err
     assert stand_ins["optimizer"]["generations"] == 3 and stand_ins["connects"] == 1
     got = json.loads(text)
-    assert set(got) == {"objectives", "front"}
+    assert set(got) == {"objectives", "front", "file_design"}
+    # the model file's design (the paper's la = lb = 0.244 m), evaluated once and not on the
+    # list: ZDT1's front is lb at its bound, which this design is not
+    fd = got["file_design"]
+    assert fd["design"] == {"la": 0.244, "lb": 0.244} and fd["feasible"]
+    assert not fd["on_front"] and fd["dominated_by"] and fd["distance"] > 0
+    assert fd["design"] not in [e["design"] for e in got["front"]]
     assert got["objectives"] == [{"name": "f1", "sense": "min"},
                                  {"name": "score", "sense": "max"}]
     assert got == read_front(out).payload() and len(got["front"]) >= 3
@@ -98,12 +104,19 @@ def test_run_json_contract_rerun_show_and_figures(tmp_path, capsys, stand_ins):
     assert rc == 0, err
     assert "all were already evaluated, nothing to run" in text and stand_ins["connects"] == 1
     assert "f1 (J) min" in text and "score (J) max" in text       # the table, with units
+    assert "the model file's design (la = 0.244 m, lb = 0.244 m): f1 " in text
+    assert f"not on the front: dominated by #{fd['dominated_by'][0]}" in text
+    assert f"the best of them, #{fd['beaten_most_by']}, is " in text
     rc, text, err = _main(capsys, "design", "show", out, "--json")
     assert rc == 0, err
     assert json.loads(text) == got
     for name in ("front.png", "designs.png"):
         assert (out / "figures" / name).stat().st_size > 10_000, name
         assert f"wrote {out / 'figures' / name}" in err
+    rc, text, err = _main(capsys, "design", "show", out, "--draw", 0, len(got["front"]) - 1)
+    assert rc == 0, err
+    rc, _, err = _main(capsys, "design", "show", out, "--draw", len(got["front"]))
+    assert rc == 2 and f"--draw: INDEX must be in 0..{len(got['front']) - 1}" in err
 
 
 def test_grid_override_and_its_refusals(tmp_path, capsys, stand_ins):

@@ -117,3 +117,24 @@ def test_front_and_hypervolume_on_known_points():
     assert hypervolume(F[i], [5.0, 5.0]) == pytest.approx(11.0)
     assert hypervolume(F[i], [1.0, 1.0]) == 0.0
     np.testing.assert_allclose(reference_point(F[i]), [4.3, 4.3])
+
+
+def test_a_point_against_a_front_dominated_by_and_distance():
+    """Known points: the front (0, 1), (0.5, 0.5), (1, 0), all minimised. (0.6, 0.6) is behind
+    (0.5, 0.5) only, by 0.1 / 0.6 of its values in both objectives; (1, 1) is behind all three,
+    the middle one by half its values; (0.4, 0.9) and a point of the front are behind none.
+    And the distance is what it says: improved by t (1 + 1e-9) in every objective, relative
+    to its own values, a point is dominated by no point of the front; by t (1 - 1e-9), still
+    by one."""
+    from pm2dof.synthesis.front import distance_to_front, dominated_by
+    P = np.array([[0.0, 1.0], [0.5, 0.5], [1.0, 0.0]])
+    for f, dom, dist in (((0.6, 0.6), [1], 0.1 / 0.6), ((1.0, 1.0), [0, 1, 2], 0.5),
+                         ((0.4, 0.9), [], 0.0), ((0.5, 0.5), [], 0.0)):
+        assert dominated_by(f, P).tolist() == dom
+        assert distance_to_front(f, P) == pytest.approx(dist, rel=1e-12)
+    rng = np.random.default_rng(3)
+    for f in rng.uniform(0.2, 1.2, (50, 2)):
+        t = distance_to_front(f, P)
+        if t > 0:
+            assert not len(dominated_by(f * (1 - t * (1 + 1e-9)), P))
+            assert len(dominated_by(f * (1 - t * (1 - 1e-9)), P))

@@ -44,7 +44,14 @@ def _reference(study):
 
 def _assert_same(out, study):
     ref = _reference(study)
-    info, cols = read_designs(out)
+    info, all_cols = read_designs(out)
+    # the model file's own design (la = lb = 0.244 m), first and flagged; the optimiser's after
+    assert all_cols["file_design"][0] and not all_cols["file_design"][1:].any()
+    assert all_cols["generation"][0] == -1
+    assert (all_cols["la"][0], all_cols["lb"][0]) == (0.244, 0.244)
+    want = analytic.evaluate_batch(study, [[0.244, 0.244]])[2][0]
+    assert (all_cols["f1"][0], all_cols["score"][0]) == (want["f1"], want["score"])
+    cols = {k: v[1:] for k, v in all_cols.items()}
     assert info["complete"] and info["designs"] == len(ref.X)
     np.testing.assert_array_equal(cols["generation"], ref.generation)
     np.testing.assert_array_equal(np.column_stack([cols[v] for v in study.variables]), ref.X)
@@ -163,15 +170,74 @@ def test_another_study_on_a_used_folder_is_refused(tmp_path, client):
         read_front(tmp_path)
 
 
-def _fails(study, X):
+def _fails_on_chunks(study, X):
+    if len(X) == 1:                  # the model file's design: one row (chunks hold 4)
+        return analytic.evaluate_batch(study, X)
     raise ValueError("a measure broke")
+
+
+def _fails_on_the_file_design(study, X):
+    if len(X) == 1:
+        raise ValueError("a measure broke")
+    return analytic.evaluate_batch(study, X)
 
 
 def test_a_failing_chunk_names_itself(tmp_path, client):
     with pytest.raises(DesignRunError, match=r"generation 0, chunk \d+ .*ValueError: a measure "
                        r"broke"):
         run_design(analytic.study(), tmp_path / "o", client=client, progress=False,
-                   evaluate=_fails)
+                   evaluate=_fails_on_chunks)
+    with pytest.raises(DesignRunError, match=r"the model file's design failed: ValueError: a "
+                       r"measure broke"):
+        run_design(analytic.study(optimizer={"seed": 8}), tmp_path / "p", client=client,
+                   progress=False, evaluate=_fails_on_the_file_design)
+
+
+def test_the_file_design_against_the_front(tmp_path, client):
+    """The model file's design (la = lb = 0.244 m) on the grid run of ZDT1 over bounds that
+    put it at u = (0.44, 0.44): f1 = 0.44, f2 = g (1 - sqrt(f1 / g)) with g = 1 + 9 * 0.44.
+    The grid's front is x2 = 0 (lb at its bound): the front's designs with f1 <= 0.44 and
+    f2 <= its f2 dominate it. It stays out of the front, is read back on a rerun, and an
+    older run's folder (no file design) still reads."""
+    bounds = ((0.0, 0.5545454545454546), (0.0, 0.5545454545454546))   # 0.244 = 0.44 * hi
+    study = analytic.study(optimizer={"kind": "grid", "grid": 12}, bounds=bounds)
+    out = tmp_path / "g"
+    res = run_design(study, out, client=client, progress=False,
+                     evaluate=analytic.evaluate_batch)
+    assert res["file_design"] == "evaluated" and res["designs"] == 144
+    fr = read_front(out)
+    assert fr.file_row == 0 and 0 not in fr.index and len(fr.index) == 12
+    fd = fr.payload()["file_design"]
+    assert set(fd) == {"design", "objectives", "feasible", "on_front", "dominated_by",
+                       "distance", "beaten_most_by"}
+    assert fd["design"] == {"la": 0.244, "lb": 0.244} and fd["feasible"]
+    u = 0.244 / bounds[0][1]
+    g = 1 + 9 * u
+    f2 = g * (1 - np.sqrt(u / g))
+    assert fd["objectives"]["f1"] == pytest.approx(u, abs=1e-15)
+    assert fd["objectives"]["score"] == pytest.approx(-f2, abs=1e-14)
+    # independently: the grid's front points x2 = 0, f1 = k / 11, f2 = 1 - sqrt(f1)
+    f1s = np.arange(12) / 11
+    f2s = 1 - np.sqrt(f1s)
+    dom = [k for k in range(12) if f1s[k] <= u and f2s[k] <= f2]
+    assert fd["dominated_by"] == dom and not fd["on_front"]
+    gain = {k: min((u - f1s[k]) / u, (f2 - f2s[k]) / f2) for k in dom}
+    best = max(gain, key=gain.get)
+    assert fd["distance"] == pytest.approx(gain[best], rel=1e-12)
+    assert fd["beaten_most_by"] == best
+    again = run_design(study, out, client=None, progress=False, evaluate=_refuse)
+    assert again["file_design"] == "reused" and again["evaluated"] == 0
+    assert read_front(out).payload() == fr.payload()
+    for p in (out / "batches").glob("file-design-*.parquet"):        # a run without it
+        p.unlink()
+    old = read_front(out)
+    assert old.file_row is None and old.payload()["file_design"] is None
+    np.testing.assert_array_equal(old.index, fr.index - 1)
+    none = run_design(study, tmp_path / "n", client=client, progress=False,
+                      evaluate=analytic.evaluate_batch, file_design=False)
+    assert none["file_design"] is None and none["designs"] == 144
+    assert not list((tmp_path / "n" / "batches").glob("file-design-*"))
+    np.testing.assert_array_equal(read_front(tmp_path / "n").index, old.index)
 
 
 # ---- real worker processes (slow): the embedded cluster, a worker killed mid-run ----

@@ -290,3 +290,24 @@ def test_the_shipped_studies(name, fixed, tmp_path):
     assert values["region_margin"] > 0
     units = obj.units(q, pm2dof.load_model(fixed))
     assert units["duration_high"] == "s"
+
+
+def test_the_shipped_paper_redesign():
+    """paper_redesign: the paper's robot on four objectives. Read on the fixed paper robot, at
+    its geometry: the region clear, NA's RMSE on the high move equal to pm2dof.simulate's (the
+    Table 3 run), and --quick small."""
+    assert "paper_redesign" in shipped_design_studies()
+    s = read_design_study("paper_redesign", model="shang2010", check_design=False)
+    assert [(o.name, o.measure, o.sense) for o in s.objectives] == [
+        ("dexterity_mean", "dexterity_mean", "max"), ("force_min", "force", "max"),
+        ("duration_high", "duration", "min"), ("rmse_na_high", "rmse", "min")]
+    full = read_design_study("paper_redesign")
+    assert full.variables == ("la", "lb") and full.model_path.endswith("shang2010_design.toml")
+    q = with_overrides(s, quick=True)
+    assert q.optimizer["population"] * q.optimizer["generations"] <= 12
+    m = pm2dof.load_model("shang2010")
+    values, status = obj.evaluate_with_status(m, q)
+    assert status == "ok", status
+    assert values["region_margin"] > 0
+    na = pm2dof.simulate(m, pm2dof.NAController(m), pm2dof.paper_move("high")).rmse
+    assert values["rmse_na_high"] == pytest.approx(na, rel=1e-9, abs=0)

@@ -67,15 +67,20 @@ def add_parser(sub, common):
     r = ssub.add_parser("show", help="the front of a run: table, figures, the designs drawn",
                         description=wrap("Print the front of the designs a run evaluated (the "
                         "non-dominated feasible ones, numbered: the INDEX of design pick) and "
-                        "write DIR/figures/front.png (the front among every design) and "
-                        "designs.png (chosen designs of the front to scale)."),
+                        "write DIR/figures/front.png (the front among every design, the model file's own design "
+                        "starred) and designs.png (chosen designs of the front to scale); then "
+                        "the model file's design: on the front, or which designs of the front "
+                        "dominate it and by how much."),
                         formatter_class=argparse.RawDescriptionHelpFormatter, epilog=(
                             "examples:\n"
                             "  pm2dof design show out/legs\n"
-                            "  pm2dof design show out/legs --json --no-figures"))
+                            "  pm2dof design show out/legs --draw 0 5 --json"))
     r.add_argument("dir", metavar="DIR", help="the --out of `pm2dof design run`")
     r.add_argument("--json", action="store_true", help="print the front as JSON")
     r.add_argument("--no-figures", action="store_true", help="the table only")
+    r.add_argument("--draw", type=count(0, 10**9), nargs="+", metavar="INDEX",
+                   help="the front's designs drawn in designs.png (default: both ends of the "
+                   "front and two between)")
     r = ssub.add_parser("pick", help="a plain model file at one design of the front",
                         description=wrap("Write the run's model file at the design INDEX of its "
                         "front (design show's #, from 0): the designed [[legs]] values set, "
@@ -138,13 +143,17 @@ def _show(args):
     from ...infra.results import dumps
     from ...synthesis.front import format_front, read_front
     fr = read_front(args.dir)
+    if args.draw and max(args.draw) >= len(fr.index):
+        raise ArgumentError(f"--draw: INDEX must be in 0..{len(fr.index) - 1} (the front's "
+                            f"designs), got {max(args.draw)}")
     print(dumps(fr.payload()) if args.json else format_front(fr))
     if not args.no_figures:
         from ...core.model import load_model
         from ...figures.design import design_figures
         model = load_model(fr.info["model_file"])
         prov = fr.info.get("provenance") or {}
-        for p in design_figures(fr, model, pathlib.Path(args.dir) / "figures", prov):
+        for p in design_figures(fr, model, pathlib.Path(args.dir) / "figures", prov,
+                                picks=args.draw):
             print(f"wrote {p}", file=sys.stderr if args.json else sys.stdout)
     return 0
 
