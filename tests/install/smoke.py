@@ -7,7 +7,9 @@
    fk(ik(x)) round trip and runs a closed loop;
 4. editing that model file's geometry makes loading fail, naming ``pm2dof derive``;
 5. a study file here, naming that model by a relative path, runs with ``--quick``;
-6. the installed package's files are unchanged (hashes before and after).
+6. the shipped design study ``paper_legs`` runs with ``--quick``, and a design picked from
+   its front is derived like a user's model file;
+7. the installed package's files are unchanged (hashes before and after).
 
 Usage: python smoke.py TABLE3_OF_THE_CHECKOUT.json
 """
@@ -94,7 +96,16 @@ def main(checkout_table3):
     assert rows["rows"] > 0 and Path(rows["provenance"]["model_file"]) == model_file, rows
     print(f"study: {r.stdout.strip()}")
 
-    # 6. nothing was written into the installed package
+    # 6. a shipped design study, and its pick derived as a user's model file
+    r = pm2dof("design", "run", "paper_legs", "--quick", "--out", "legs", "--workers", "1",
+               "--json")
+    front = json.loads(r.stdout)
+    assert front["front"] and [o["name"] for o in front["objectives"]], front
+    pm2dof("design", "pick", "legs", "0", "--out", "picked/robot.toml")
+    pm2dof("derive", "picked/robot.toml")
+    print(f"design: {len(front['front'])} designs on paper_legs' quick front; design 0 derived")
+
+    # 7. nothing was written into the installed package
     after = tree_hashes(package)
     changed = sorted(k for k in set(before) | set(after) if before.get(k) != after.get(k))
     assert not changed, f"the installed package changed: {changed[:10]}"

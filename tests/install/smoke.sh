@@ -16,10 +16,10 @@ step() { printf '\n[check-install %3ss] %s\n' "$SECONDS" "$*"; }
 # the checkout's own answer, to compare with
 "$checkout/.venv/bin/pm2dof" table3 --json > "$tmp/table3_checkout.json"
 
-step "wheel $(basename "$wheel") with [derive,studies] into a fresh venv"
+step "wheel $(basename "$wheel") with [derive,studies,design] into a fresh venv"
 "$python" -m venv "$tmp/venv"
 "$tmp/venv/bin/pip" install --quiet --upgrade pip
-"$tmp/venv/bin/pip" install --quiet "$wheel[derive,studies]"
+"$tmp/venv/bin/pip" install --quiet "$wheel[derive,studies,design]"
 mkdir "$tmp/work"
 cd "$tmp/work"       # an empty folder, no checkout on the path
 PYTHONPATH= "$tmp/venv/bin/python" "$here/smoke.py" "$tmp/table3_checkout.json"
