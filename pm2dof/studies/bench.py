@@ -25,7 +25,7 @@ import tracemalloc
 from ..control.simulate import simulate
 from . import resolve_study
 from .evaluate import rollout_setup, run_chunk
-from .runner import _close, connect, run_study
+from .runner import connect, disconnect, run_study
 from .spec import UNCERTAINTY, read_study
 
 __all__ = ["study_bench", "format_study_bench", "bench_study", "bench_uncertainty"]
@@ -131,7 +131,7 @@ def study_bench(quick=False, progress=None):
                     res[f"rollouts_per_s_study_run_2_workers_{size}"] = r["rollouts_per_s"]
                     res[f"client_peak_traced_mb_{size}"] = peak / 2 ** 20
         finally:
-            _close(client)
+            disconnect(client)
     res["rollouts_per_s_batch"] = statistics.median(batch)
     # ratios: medians of the ratios of interleaved passes
     r1, r2 = statistics.median(ratio[1]), statistics.median(ratio[2])
