@@ -87,8 +87,11 @@ def connect(workers=None, scheduler=None, timeout=10.0):
         raise ArgumentError(f"--workers must be >= 1, got {n}")
     import dask
     with dask.config.set(QUIET_WORKERS), _workers_ignore_sigint():
+        # CRITICAL: a worker's heartbeat that meets the closing scheduler logs a traceback at
+        # ERROR level (CommClosedError) on a loaded machine; a task's own failure reaches the
+        # client as its exception, and a lost worker is retried, so nothing is hidden
         cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                               dashboard_address=":0", silence_logs=logging.ERROR)
+                               dashboard_address=":0", silence_logs=logging.CRITICAL)
     client = Client(cluster, timeout=timeout)
     client._pm2dof_owns_cluster = cluster
     return client
