@@ -41,7 +41,7 @@ def bind_design(c_text, model, manifest):
         body = (f"  /* the design {', '.join(model.design_names)}, m: input {len(inputs) - 1} */\n"
                 f"  static const casadi_real design[{k}] = {{{values}}};\n"
                 f"  arg[{len(inputs) - 1}] = design;\n")
-        c_text, count = re.subn(head, lambda mo: mo.group(1) + body, c_text, count=1)
+        c_text, count = re.subn(head, lambda mo, body=body: mo.group(1) + body, c_text, count=1)
         if count != 1:
             raise ValueError(f"no public function {model.name}_{short} in the generated C")
     return c_text

@@ -45,8 +45,10 @@ __all__ = ["DesignRunError", "run_design", "evaluate_chunk", "chunk_size", "MIN_
            "MAX_CHUNKS", "expected_designs", "model_file_design", "format_notice", "format_run"]
 
 #: designs per chunk (a Dask task) at least, and chunks per generation's batch at most: a
-#: population of 40 is 10 tasks of 4 designs; a 100 x 100 grid, 64 tasks of 157
-MIN_CHUNK = 4
+#: population of 40 is 3 tasks (16, 16, 8 designs); a 100 x 100 grid, 64 tasks of 157. A
+#: design costs 5-25 ms, a Dask task a few ms of scheduling and transfer: 16 designs keep that
+#: to a few per cent (4 designs per task cost about 30 % on one worker, pm2dof bench)
+MIN_CHUNK = 16
 MAX_CHUNKS = 64
 
 

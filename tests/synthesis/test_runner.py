@@ -7,6 +7,7 @@ tests/synthesis/analytic.py, so the machinery is checked independently of the re
 Quick tests use an in-process cluster (threads, no processes); the ones marked slow start
 worker processes on 127.0.0.1 (the embedded LocalCluster, and a killed worker), each wait
 bounded, every process started here stopped here."""
+import functools
 import os
 import signal
 import threading
@@ -18,9 +19,14 @@ import pytest
 
 from pm2dof.synthesis.front import read_front
 from pm2dof.synthesis.optimize import optimize
-from pm2dof.synthesis.runner import DesignRunError, chunk_size, run_design
+from pm2dof.synthesis.runner import DesignRunError, chunk_size
+from pm2dof.synthesis.runner import run_design as _run_design
 from pm2dof.synthesis.store import DesignOutError, read_designs
 from tests.synthesis import analytic
+
+#: the machinery on small batches: chunks of 4 designs (MIN_CHUNK is 16), so that a
+#: generation of 20 makes several tasks
+run_design = functools.partial(_run_design, min_chunk=4)
 
 pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
 
@@ -146,7 +152,7 @@ def test_grid_run_front_and_payload(tmp_path, client):
     res = run_design(study, out, client=client, progress=False,
                      evaluate=analytic.evaluate_batch, min_chunk=4)
     assert res["designs"] == 900 and res["generations"] == 1
-    assert len(_chunks(out)) == 900 // chunk_size(900) + (900 % chunk_size(900) > 0)
+    assert len(_chunks(out)) == 900 // chunk_size(900, 4) + (900 % chunk_size(900, 4) > 0)
     _assert_same(out, study)
     fr = read_front(out)
     p = fr.payload()
