@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import os
 import pathlib
+import platform
 import shlex
 import subprocess
 import sysconfig
@@ -59,9 +60,20 @@ STALE_TMP_AGE_S = 600.0
 #:     made ~200 such calls). The library's own definitions are the ones used (nothing
 #:     interposes them), so they are inlined; results are unchanged (the same operations).
 #:
+#: ``-mno-fma`` (x86 only)
+#:     No fused multiply-add instructions at all. ``-ffp-contract=off`` alone does not keep GCC 12
+#:     from fusing: its SLP vectoriser turns a multiplication feeding an alternating
+#:     add/subtract into ``vfmaddsub``/``vfmsubadd`` (found in the 3-PRR point and the 4-RRR
+#:     design libraries), and whether it does depends on the code around it, so the results of
+#:     one function changed in the last bit with the translation unit it was compiled in.
+#:     Without FMA the compiler cannot fuse, and the results are those of the C text, however
+#:     it is cut (and the same as :data:`PORTABLE_FLAGS`', which never had FMA).
+#:
 #: ``-ffast-math`` is deliberately absent: it lets the compiler assume there are no
 #: NaNs or infinities (breaking ``isfinite`` checks) and reassociate arithmetic
 #: (breaking agreement with CasADi's reference evaluation).
+_X86 = platform.machine().lower() in ("x86_64", "amd64", "i386", "i686")
+
 FLAGS: tuple[str, ...] = (
     "-O3",
     "-march=native",
@@ -70,6 +82,7 @@ FLAGS: tuple[str, ...] = (
     "-shared",
     "-fno-math-errno",
     "-fno-semantic-interposition",
+    *(("-mno-fma",) if _X86 else ()),
 )
 
 #: :data:`FLAGS` without ``-march=native``: for libraries that travel to other machines (the
@@ -382,14 +395,17 @@ class _Build:
         self.tmp = pathlib.Path(tmp_name)
         self.t0 = time.monotonic()
         if self.progress is not None:
-            size = self.c_path.stat().st_size
-            how = ""
-            if self.link_flags is not None:
+            size, est = self.c_path.stat().st_size, compile_estimate(self.c_path)
+            if self.link_flags is None:
+                how, when = "", f"about {est:.0f} s on an idle processor"
+            else:
+                k = min(jobs, len(self.units))
                 how = (f" in {len(self.units)} units ({len(self.units) - self.n_hot} off the hot "
-                       f"paths at {COLD_OPT}), {min(jobs, len(self.units))} at a time")
+                       f"paths at {COLD_OPT}), {k} at a time")
+                when = (f"about {est:.0f} s of processor time, {est / k:.0f} s on {k} idle "
+                        f"processor{'s' if k > 1 else ''}")
             self.progress(f"compiling {self.c_path.name} ({size / 1e6:.1f} MB of C) with "
-                          f"{self.cc[0]} {self.flags[0]}{how}: about "
-                          f"{compile_estimate(self.c_path):.0f} s on an idle processor "
+                          f"{self.cc[0]} {self.flags[0]}{how}: {when} "
                           f"({COMPILE_SECONDS_PER_MB:.0f} s per MB), longer while other "
                           f"programs use it")
             self.t0 = time.monotonic()

@@ -6,8 +6,9 @@ patterns), then one block per generated function: ``static int casadi_fN(...)`` 
 followed by its exported entry points (``<name>_<function>``, ``..._n_in``, ``..._work``, ...).
 Blocks call each other's ``casadi_fN``. This module rewrites nothing inside a body; it only
 
-- gives every ``casadi_fN`` external linkage (``static`` dropped) and puts one prototype of each
-  in every unit, so that a block may call a function compiled in another unit; the library is
+- gives every ``casadi_fN`` that another block calls external linkage (``static`` dropped) and
+  puts one prototype of each in every unit, so that a block may call a function compiled in
+  another unit (the others stay ``static``, inlined into their entry point as before); the library is
   compiled with ``-fvisibility=hidden`` so that these stay internal to it, and with
   ``GCC_HASCLASSVISIBILITY`` defined so that CasADi's ``CASADI_SYMBOL_EXPORT`` entry points are
   the library's only exported symbols;
@@ -55,7 +56,8 @@ class Block(NamedTuple):
         The function's name in CasADi's comment above it, e.g. ``shang2010_na_step`` (an
         exported entry point of that name follows, unless the function is only called by others).
     text : str
-        The block's text: the comment, the body (``static`` dropped) and the entry points.
+        The block's text: the comment, the body (``static`` dropped when another block calls it)
+        and the entry points.
     line : int
         The 1-based line of the original file on which ``text`` starts.
     calls : frozenset of str
@@ -76,7 +78,7 @@ class Split(NamedTuple):
     ----------
     head : str
         What every unit starts with: the file's head with its helpers ``static`` and without its
-        configuration entry points, then a prototype of every ``casadi_fN``.
+        configuration entry points, then a prototype of every ``casadi_fN`` another calls.
     config : str
         The configuration entry points (``<name>_casadi_version``, ...): in one unit only.
     blocks : tuple of Block
@@ -142,17 +144,24 @@ def split_casadi_c(text: str, path: str = "generated.c") -> Split | None:
     if len(set(names)) != len(names):
         return None
     head = _HELPER.sub(r"static \1 \2(", head)
-    protos = "".join(f"int {n}{FN_SIGNATURE};\n" for n in names)
-    head += "\n/* every generated function, defined in one of the units */\n" + protos + "\n"
     body_end = len(text) - len(_TAIL)
-    blocks = []
+    chunks, calls_of = [], []
     called = re.compile(r"\b(casadi_f\d+)\(")
-    for i, (m, (start, name)) in enumerate(zip(defs, starts)):
+    for i, (m, (start, _)) in enumerate(zip(defs, starts)):
         end = starts[i + 1][0] if i + 1 < len(starts) else body_end
-        chunk = text[start:end].replace(f"static int {m.group(1)}(", f"int {m.group(1)}(", 1)
-        calls = frozenset(c for c in called.findall(chunk) if c != m.group(1))
-        if not calls <= set(names):
+        chunks.append(text[start:end])
+        calls_of.append(frozenset(c for c in called.findall(chunks[-1]) if c != m.group(1)))
+        if not calls_of[-1] <= set(names):
             return None
+    # a function another block calls may be in another unit: external linkage (hidden by
+    # -fvisibility=hidden) and a prototype in every unit; the others stay static, as in the file
+    shared = set().union(*calls_of)
+    protos = "".join(f"int {n}{FN_SIGNATURE};\n" for n in names if n in shared)
+    head += "\n/* the generated functions other functions call, each in one unit */\n" + protos
+    blocks = []
+    for m, (start, name), chunk, calls in zip(defs, starts, chunks, calls_of):
+        if m.group(1) in shared:
+            chunk = chunk.replace(f"static int {m.group(1)}(", f"int {m.group(1)}(", 1)
         blocks.append(Block(m.group(1), name, chunk, text.count("\n", 0, start) + 1, calls))
     return Split(head, config, tuple(blocks), _TAIL, path)
 

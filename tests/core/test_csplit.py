@@ -19,7 +19,7 @@ ca = pytest.importorskip("casadi")
 def _toy_c(tmp_path, name="toy"):
     """A CasADi file like a model's: ``toy_na_step`` (hot) and ``toy_fk`` (cold) both call
     ``toy_helper`` (an embedded call: its own ``casadi_fN``), each through CodeGenerator."""
-    x, y = ca.SX.sym("x", 3), ca.SX.sym("y", 2)
+    x = ca.SX.sym("x", 3)
     helper = ca.Function(f"{name}_helper", [x], [ca.sin(x) * ca.sqrt(1 + x ** 2) / 3])
     xm = ca.MX.sym("x", 3)
     ym = ca.MX.sym("y", 2)
@@ -61,9 +61,11 @@ def test_a_casadi_file_is_cut_into_blocks_that_cover_it(tmp_path):
     assert [b.name for b in s.blocks] == ["toy_helper", "toy_na_step", "toy_fk"]
     helper = s.blocks[0].fn
     assert s.blocks[1].calls == s.blocks[2].calls == {helper}
-    for b in s.blocks:      # each block starts at its line of the file, "static" dropped
+    for b in s.blocks:      # each block at its line of the file, "static" dropped if called
         first = text.splitlines()[b.line - 1]
-        assert b.text.startswith(first) and f"static int {b.fn}(" not in b.text
+        assert b.text.startswith(first)
+        assert (f"static int {b.fn}(" in b.text) == (b.fn != helper)
+    assert f"int {helper}(" in s.head and f"int {s.blocks[1].fn}(" not in s.head
     assert csplit.hot_blocks(s, "toy_") == {s.blocks[0].fn, s.blocks[1].fn}
     assert "toy_casadi_version" in s.config and "toy_casadi_version" not in s.head
     # every block in exactly one unit; hot and cold apart
