@@ -8,8 +8,8 @@ Blocks call each other's ``casadi_fN``. This module rewrites nothing inside a bo
 
 - gives every ``casadi_fN`` that another block calls external linkage (``static`` dropped) and
   puts one prototype of each in every unit, so that a block may call a function compiled in
-  another unit (the others stay ``static``, inlined into their entry point as before); the library is
-  compiled with ``-fvisibility=hidden`` so that these stay internal to it, and with
+  another unit (the others stay ``static``, inlined into their entry point as before); the
+  library is compiled with ``-fvisibility=hidden`` so that these stay internal to it, and with
   ``GCC_HASCLASSVISIBILITY`` defined so that CasADi's ``CASADI_SYMBOL_EXPORT`` entry points are
   the library's only exported symbols;
 - makes the head's helper functions (``casadi_sq``, ``casadi_copy``, ...) ``static`` in every unit
