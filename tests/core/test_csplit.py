@@ -6,6 +6,7 @@ file CasADi writes (a hot function calling another, a function off the hot paths
 same one from another unit); the shipped models' libraries are checked by the whole suite (every
 pinned number) and, whole against cut, by tests/core/test_csplit_shipped.py (slow)."""
 import ctypes
+import shutil
 import subprocess
 
 import numpy as np
@@ -48,6 +49,8 @@ def _call(lib, fname, ins, n_out):
 
 
 def _exported(path):
+    if shutil.which("nm") is None:
+        pytest.skip("nm (binutils) is not installed")
     out = subprocess.run(["nm", "-D", "--defined-only", str(path)], capture_output=True,
                          text=True, check=True).stdout
     return {line.split()[-1] for line in out.splitlines() if line.strip()}
