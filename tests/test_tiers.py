@@ -77,7 +77,11 @@ def test_quick_leaves_out_the_long_modules_without_importing_them():
     assert quick == {m for m in everything if not _declares_long(ROOT / m)}
     assert long_only == {m for m in everything if _declares_long(ROOT / m)}
     # ignored (never imported), not deselected: only the slow tests count as deselected
-    assert "deselected" not in out.splitlines()[-1], out.splitlines()[-1]
+    _, slow_out = _collected("-m", "slow")
+    n_slow = sum(1 for line in slow_out.splitlines() if "::" in line)
+    last = out.splitlines()[-1]
+    deselected = re.search(r"(\d+) deselected", last)
+    assert (int(deselected[1]) if deselected else 0) == n_slow, (last, n_slow)
 
 
 def test_make_test_hands_out_the_long_units_first(request):
