@@ -4,15 +4,9 @@ lives in pyproject.toml).
 The shipped models' generated C (pm2dof/generated/<name>/<name>.c) is compiled into
 lib<name>.so beside it, so a wheel needs no compiler at install time. In a wheel the
 libraries use portable flags (no -march=native); in an editable install they are built in place
-for this machine. All of them are compiled together, on every processor
-(pm2dof.core.build.compile_libraries; $PM2DOF_BUILD_JOBS compilers at once if set).
-
-$PM2DOF_BUILD_MODELS (an editable install only) names the models compiled here, comma-separated,
-or "none": `make demo` compiles only the libraries the demo uses, `make libs` the others; a
-model not compiled here is compiled on its first use.
+for this machine.
 """
 import importlib.util
-import os
 from pathlib import Path
 
 from setuptools import Extension, setup
@@ -35,18 +29,13 @@ class BuildExtWithModels(build_ext):
     def run(self):
         super().run()
         build = _build_module()
-        only = os.environ.get("PM2DOF_BUILD_MODELS", "").strip() if self.inplace else ""
-        names = None if not only else set() if only == "none" else set(only.split(","))
-        pairs = []
         for c_file in sorted((HERE / "pm2dof" / "generated").glob("*/*.c")):
             rel = c_file.relative_to(HERE).parent / f"lib{c_file.stem}.so"
             target = HERE / rel if self.inplace else Path(self.build_lib) / rel
-            if names is not None and c_file.stem not in names:
-                continue
             if self.inplace and build.library_is_fresh(c_file, target):
                 continue
-            pairs.append((c_file, target))
-        build.compile_libraries(pairs, portable=not self.inplace, progress=print)
+            build.compile_library(c_file, target, portable=not self.inplace)
+            print(f"compiled {rel}")
 
 
 setup(
