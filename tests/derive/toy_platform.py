@@ -28,6 +28,7 @@ PARAMS = tuple(f"{b}{i}" for b in ("alpha", "beta", "gamma", "fv", "fc", "lg")
 class Spec:
     name, n_legs, friction, friction_constants = "toy3", N_LEGS, "coulomb_viscous", {}
     fk_branch, rk4_substeps, dof, task_names = 1, 2, 3, ("x", "y", "phi")
+    design = None           # no [design] table: every function without a design input
     param_names = PARAMS
     # the leg kinds the plant's layout reads: legs 1-2 actuated by lengths (angular False)
     legs = tuple(type("Leg", (), {"kind": k})() for k in ["PRR"] * 2 + ["RRR"] * (N_LEGS - 2))
@@ -49,6 +50,7 @@ class Symbols:
                                           + sp.symbols(f"{b}1:{n + 1}", real=True)))
         self.theta = sp.Matrix(sp.symbols(" ".join(names), real=True))
         self.param = dict(zip(names, self.theta))
+        self.design, self.design_of = sp.Matrix([]), {}     # no [design] variables
 
     def leg_params(self, i, names):
         return [self.param[f"{name}{i + 1}"] for name in names]
