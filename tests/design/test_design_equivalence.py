@@ -14,12 +14,12 @@ Design models: the shipped ``pm2dof/models/*_design.toml`` (the paper's robot, a
 platform with rods) and the fixtures ``tests/design/models/*.toml`` (a PRR platform: linear
 actuators, a rail moved sideways; an RPR platform: a base and an attachment point; the paper's
 robot under gravity), which the slow tier derives and compiles into a temporary folder once
-per session. The suite draws 1 seeded design per shipped model;
-the slow tier (``make test-slow``) 20 per model, the first two at the bounds' low and high
+per session. The whole module is in the slow tier (``make test-slow``, CI): one seeded design
+per shipped model, and 20 per model, the first two at the bounds' low and high
 ends, redrawing a design that ``at_design`` refuses (:class:`pm2dof.DesignError`: home or a
 move out of reach), and fails when more than half are redrawn.
 
-The suite's design also checks the check: the same derivation against at_design with one
+That design also checks the check: the same derivation against at_design with one
 variable moved by 1e-7 m (each in turn) reports ik, fk, the forward dynamics and the NA
 step (W and Me of q do not depend on a base). The self-checks of the tools (the TOML
 writer, the inputs, the comparison on fixed models) are in test_equivalence_fixed.py.
@@ -43,7 +43,7 @@ from pm2dof.core.paths import SHIPPED_MODELS
 from tests.design.conventional import conventional_file
 from tests.design.equivalence import TOL, compare_all
 
-pytestmark = pytest.mark.long     # one in-memory derivation per design (seconds)
+pytestmark = pytest.mark.slow     # in-memory derivations of designs (seconds each): make test-slow (CI)
 
 HERE = SHIPPED_MODELS.parent.parent / "tests" / "design"
 SHIPPED_DESIGNS = sorted(SHIPPED_MODELS.glob("*_design.toml"))
@@ -163,7 +163,7 @@ def check_design(m, values, tmp_path, seed):
     return functions
 
 
-# --- the suite: one seeded random design per design model ----------------------------------
+# --- one seeded random design per shipped design model, and the check of the check ---------
 
 @pytest.mark.parametrize("path", SHIPPED_DESIGNS, ids=lambda p: p.stem)
 def test_a_random_design_equals_its_conventional_derivation(path, tmp_path):

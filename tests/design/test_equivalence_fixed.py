@@ -39,7 +39,7 @@ from tests.design.equivalence import (
     short_names,
 )
 
-pytestmark = pytest.mark.long     # two in-memory derivations (seconds): make test, not quick
+pytestmark = pytest.mark.slow     # in-memory derivations (seconds each): make test-slow (CI)
 
 FIXTURES = SHIPPED_MODELS.parent.parent / "tests" / "design" / "models"
 TOML_FILES = sorted(SHIPPED_MODELS.glob("*.toml")) + sorted(FIXTURES.glob("*.toml"))
