@@ -26,7 +26,7 @@ from tests import derivations
 from tests.mechanisms.independent import Mechanism, lumped_theta, random_links
 from tests.mechanisms.models import model_path
 
-pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
+pytestmark = pytest.mark.slow     # every mechanism against the Lagrange-multiplier formulation (30 s): make test-slow (CI)
 
 G = (0.0, -9.81)
 _lambdify = derivations.plain_lambdify       # sympy.lambdify, the same functions, built faster
