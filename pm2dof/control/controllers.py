@@ -104,8 +104,7 @@ def check_same_model(model, controller):
         return
 
     def who(m):
-        design = (", design " + ", ".join(f"{k} = {v:.6g}" for k, v in zip(m.design_names, m.design))
-                  if m.design_names else "")
+        design = f", design {m.spec.design.describe()}" if m.spec.design is not None else ""
         return (f"{m.name!r} ({m.n_legs} legs, {m.spec.path}, formulation "
                 f"{m.spec.formulation_sha256[:12]}{design})")
     raise ModelMismatchError(

@@ -80,6 +80,10 @@ class Design:
         """{(leg, field, component): variable name} for every designed key."""
         return {key: name for name, keys in zip(self.names, self.keys) for key in keys}
 
+    def describe(self):
+        """"la = 0.25, lb = 0.24": the current values, 6 significant digits (for messages)."""
+        return ", ".join(f"{n} = {v:.6g}" for n, v in zip(self.names, self.values))
+
     def formulation(self):
         """What enters the generated code: the names and the keys they set (not the values or
         bounds, so editing a default or a bound needs no new derivation)."""

@@ -83,7 +83,7 @@ def _design_text(spec):
     design = spec.design
     if design is None:
         return ""
-    return " at design " + ", ".join(f"{k} = {v:.6g}" for k, v in zip(design.names, design.values))
+    return " at design " + design.describe()
 
 
 def _check_design(spec, gen_dir, manifest):
