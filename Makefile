@@ -13,7 +13,7 @@ LIBS := $(foreach d,$(MODEL_DIRS),$(d)/lib$(notdir $(d)).so)
 .PHONY: install derive derive-all libs test test-quick test-slow lint docs check-install dist demo bench c-example embedded clean help
 
 help:
-	@echo "make demo     set up .venv, build, reproduce the paper's experiment (Table 3, figures)"
+	@echo "make demo     set up .venv (what the demo needs), build, reproduce the paper's experiment (Table 3, figures)"
 	@echo "make test     set up .venv, build, run the test suite (not the tests marked slow)"
 	@echo "make test-quick  the inner loop: the suite without the modules marked long"
 	@echo "make test-slow  the tests marked slow: full-size studies, C builds, re-derivation (CI runs it)"
@@ -26,16 +26,28 @@ help:
 	@echo "make bench    controller step-time benchmark"
 	@echo "make c-example  standalone C: NA against the compiled plant, paced at 2 ms"
 	@echo "make embedded   pm2dof export of $(MODEL) cross-compiled for Cortex-M4F and M7, run under QEMU (MODEL=name or path)"
-	@echo "make install  only create .venv, install pm2dof (editable) and compile the generated C"
+	@echo "make install  only create .venv, install pm2dof (editable) with the [dev] tools and compile every model's C (in parallel)"
+
+# two stamps: $(STAMP) is pm2dof with what `make demo` needs (the runtime: NumPy, Matplotlib,
+# tqdm; the [studies] and [design] extras: Dask, pyarrow and pymoo for the demo's robustness and
+# design studies); $(DEV_STAMP) adds the [dev] extra (tests, SymPy and CasADi, docs, the bench's
+# peers Pinocchio and MuJoCo: over 1 GB) for make test, install, lint, docs and bench.
+# `pip install -e` compiles no model here (PM2DOF_BUILD_MODELS=none, setup.py): the rules below
+# compile the libraries a target needs, all processors at once (make -j)
+DEV_STAMP := $(VENV)/.installed-dev-stamp
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 $(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e '.[dev]'
+	PM2DOF_BUILD_MODELS=none $(PY) -m pip install --quiet -e '.[studies,design]'
 	touch $@
 
-# $(STAMP) is order-only: `pip install -e` (the stamp) already compiles every stale library in
-# place, so a newer stamp (pyproject.toml edited) must not compile all twelve again
+$(DEV_STAMP): $(STAMP)
+	PM2DOF_BUILD_MODELS=none $(PY) -m pip install --quiet -e '.[dev]'
+	touch $@
+
+# $(STAMP) is order-only: a newer stamp (pyproject.toml edited) must not compile them all again
 define LIB_RULE
 $(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c | $(STAMP)
 	$(PY) pm2dof/core/build.py $$< $$@
@@ -44,12 +56,18 @@ $(foreach d,$(MODEL_DIRS),$(eval $(call LIB_RULE,$(d))))
 
 libs: $(LIBS)
 
-install: $(STAMP) libs
+# the libraries `pm2dof demo` loads: the paper's robot (its experiment, maps and robustness
+# study) and its [design] twin (the quick design study); any other is compiled on first use
+DEMO_LIBS := pm2dof/generated/shang2010/libshang2010.so \
+             pm2dof/generated/shang2010_design/libshang2010_design.so
 
-derive: $(STAMP)
+install: $(DEV_STAMP)
+	@$(MAKE) --no-print-directory -j$(JOBS) libs
+
+derive: $(DEV_STAMP)
 	$(VENV)/bin/pm2dof derive $(MODEL)
 
-derive-all: $(STAMP)
+derive-all: $(DEV_STAMP)
 	for m in pm2dof/models/*.toml; do $(VENV)/bin/pm2dof derive $$m || exit 1; done
 
 # -n auto: one pytest worker per core; --dist loadscope keeps a module's tests (and its
@@ -76,13 +94,13 @@ test-slow: install
 	PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist loadscope -m slow
 
 # pyflakes (F), import order (I), bugbear (B): [tool.ruff] in pyproject.toml
-lint: $(STAMP)
+lint: $(DEV_STAMP)
 	$(VENV)/bin/ruff check pm2dof tests
 
 # the documentation site: docs/*.md and the docstrings, warnings are errors (mkdocs.yml); the
 # docstrings' Sphinx roles become cross-links of the API page (docs/_ext/sphinx_roles.py).
 # NO_MKDOCS_2_WARNING silences the Material theme's banner about MkDocs 2 (pinned < 2).
-docs: $(STAMP)
+docs: $(DEV_STAMP)
 	NO_MKDOCS_2_WARNING=1 $(VENV)/bin/mkdocs build --strict --site-dir site
 	! grep -l -E ':(func|class|meth|attr|mod|data|exc):|autoref |&lt;autoref' site/api.html || \
 		{ echo "make docs: Sphinx roles or autoref markup left in site/api.html (docs/_ext/sphinx_roles.py)"; exit 1; }
@@ -104,7 +122,8 @@ dist: $(BUILD_STAMP)
 check-install: dist
 	bash tests/install/smoke.sh dist
 
-demo: install
+demo: $(STAMP)
+	@$(MAKE) --no-print-directory -j$(JOBS) $(DEMO_LIBS)
 	$(VENV)/bin/pm2dof demo --out $(OUT)
 
 bench: install

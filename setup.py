@@ -5,8 +5,14 @@ The shipped models' generated C (pm2dof/generated/<name>/<name>.c) is compiled i
 lib<name>.so beside it, so a wheel needs no compiler at install time. In a wheel the
 libraries use portable flags (no -march=native); in an editable install they are built in place
 for this machine.
+
+$PM2DOF_BUILD_MODELS (an editable install only) names the models compiled here, comma-separated,
+or "none": the Makefile installs with "none" and compiles the libraries a target needs with its
+own rules, on every processor at once (`make -j`); a library not compiled is compiled by
+`load_model` on its first use.
 """
 import importlib.util
+import os
 from pathlib import Path
 
 from setuptools import Extension, setup
@@ -29,9 +35,13 @@ class BuildExtWithModels(build_ext):
     def run(self):
         super().run()
         build = _build_module()
+        only = os.environ.get("PM2DOF_BUILD_MODELS", "").strip() if self.inplace else ""
+        names = None if not only else set() if only == "none" else set(only.split(","))
         for c_file in sorted((HERE / "pm2dof" / "generated").glob("*/*.c")):
             rel = c_file.relative_to(HERE).parent / f"lib{c_file.stem}.so"
             target = HERE / rel if self.inplace else Path(self.build_lib) / rel
+            if names is not None and c_file.stem not in names:
+                continue
             if self.inplace and build.library_is_fresh(c_file, target):
                 continue
             build.compile_library(c_file, target, portable=not self.inplace)
