@@ -103,7 +103,9 @@ BENCH_PRELOAD = 1.0
 
 
 def run_bench(model=None, quick=False, progress=None, models=None):
-    """Benchmark the generated NA step and closed-loop rollout, all in one run.
+    """Benchmark the generated C where users wait, all in one run: the controller steps and
+    rollouts, the derivatives, the planner, a design model and design studies, and every
+    per-sample Model method's binding, beside their peers.
 
     A development tool: besides the runtime package it imports CasADi (to call the compiled
     library through ``casadi.external``) and, for the SymPy baseline, the build-time

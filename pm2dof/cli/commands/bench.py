@@ -8,11 +8,13 @@ from ..options import model, progress
 def add_parser(sub, common):
     from ...bench.run import run_bench
     p = sub.add_parser("bench", parents=[common], help="controller step-time benchmark",
-                       description=(run_bench.__doc__ or "").split("\n\n")[0] + " Targets: NA "
-                       "step in C <= 250 ns, from Python <= 1 us, rollout >= 500k steps/s, C >= "
-                       "300x NumPy, binding >= 50x casadi.Function, forward dynamics from Python "
-                       ">= 4x Pinocchio's and MuJoCo's, binding overhead <= 4x the C. Quote "
-                       "medians from one run: this machine is shared and noisy.")
+                       formatter_class=argparse.RawDescriptionHelpFormatter,
+                       description=_wrap(" ".join((run_bench.__doc__ or "").split("\n\n")[0]
+                                                  .split())) + "\n\n" + _targets_text()
+                       + "\n\n" + _wrap("Each target is checked against the median of its "
+                                        "rounds, and ratios are taken within one run: quote "
+                                        "them from one run, as this machine is shared and "
+                                        "noisy. docs/benchmark.md explains every row."))
     p.add_argument("--json", action="store_true", help="print the results as JSON")
     p.add_argument("--quick", action="store_true", help="few repeats (a few seconds; for tests)")
     p.add_argument("--models", action=argparse.BooleanOptionalAction, default=None,
@@ -24,6 +26,28 @@ def add_parser(sub, common):
                    "CI); a target that could not be measured (n/a: a baseline not installed, "
                    "the note says which) does not count")
     return p
+
+
+def _wrap(text, indent=""):
+    import textwrap
+    return textwrap.fill(text, width=78, initial_indent=indent, subsequent_indent=indent + "  ")
+
+
+def _targets_text():
+    """The targets of ``pm2dof bench`` (bench.run.TARGETS), one line each; the per-method
+    binding overheads as one line."""
+    from ...bench.run import TARGETS
+    lines, methods = [], []
+    for key, op, value, unit, what in TARGETS:
+        if key.startswith("overhead_over_c_"):
+            methods.append(key[len("overhead_over_c_"):])
+            bound = f"{op} {value:g} {unit}"
+            continue
+        lines.append(f"  {what}: {op} {value:g} {unit}")
+    if methods:
+        lines.append(_wrap(f"every per-sample Model method ({', '.join(methods)}): binding "
+                           f"overhead (Python - C) / C {bound}", indent="  "))
+    return "Targets:\n" + "\n".join(lines)
 
 
 def run(args):
