@@ -380,38 +380,64 @@ def _inertia_at(spec, legs, shown):
     theta, plant = spec.theta_nominal, spec.plant
     if spec.links is None:
         return theta, plant
-    groups = theta_groups(legs, spec.end_effector, spec.gravity, spec.friction)
-    per_leg = [(key, idx) for key, idx in groups if key in INERTIAL + (FIRST_MOMENT,)]
-    for section in ("nominal", "plant"):
-        bodies = spec.links.get(section)
-        if bodies is None:
-            continue
-        rods = [i for i, b in enumerate(bodies) if any("density" in body for body in b.values())]
+    sections, per_leg = _inertia_plan(spec, legs)
+    if not sections:
+        return theta, plant
+    for section, bodies, rods in sections:
         if section == "nominal":
             theta = np.array(theta, dtype=float)
         else:
-            plant = {k: np.array(v, dtype=float) if k in dict(per_leg) else v
+            plant = {k: np.array(v, dtype=float) if k in per_leg else v
                      for k, v in plant.items()}
-        for i in rods:
+        for i, where in rods:
             lumped = lumped_from_links(legs[i], bodies[i])
             why = inertia_problem(*(lumped[k] for k in INERTIAL))
             if why is not None:
                 raise DesignError(f"at this design ({shown()}) leg {i + 1}'s [[{section}.links]] "
                                   f"give a lumped inertia that no leg can have: {why}")
-            for key, idx in per_leg:
-                if i not in idx:
-                    continue
-                if section == "nominal":
-                    theta[spec.param_names.index(f"{key}{i + 1}")] = lumped[key]
-                else:
-                    plant[key][idx.index(i)] = lumped[key]
+            into = theta if section == "nominal" else None
+            for key, at in where:
+                (into if into is not None else plant[key])[at] = lumped[key]
     if theta is not spec.theta_nominal:
         theta.setflags(write=False)
     if plant is not spec.plant:
-        for key, _ in per_leg:
+        for key in per_leg:
             if isinstance(plant.get(key), np.ndarray):
                 plant[key].setflags(write=False)
     return theta, plant
+
+
+_PLANS = {}
+
+
+def _inertia_plan(spec, legs):
+    """What :func:`_inertia_at` recomputes, found once per model file: ((section, bodies,
+    ((leg i, ((key, index into theta or into plant[key]), ...)), ...)), ...) for the sections
+    with a rod, and the set of theta's per-leg inertial keys. Kept per [links] table (the
+    table itself is held, so its id is not reused) and theta's names."""
+    cache_key = (id(spec.links), spec.param_names)
+    have = _PLANS.get(cache_key)
+    if have is not None and have[0] is spec.links:
+        return have[1]
+    groups = theta_groups(legs, spec.end_effector, spec.gravity, spec.friction)
+    per_leg = {key: idx for key, idx in groups if key in INERTIAL + (FIRST_MOMENT,)}
+    sections = []
+    for section in ("nominal", "plant"):
+        bodies = spec.links.get(section)
+        if bodies is None:
+            continue
+        rods = []
+        for i, b in enumerate(bodies):
+            if not any("density" in body for body in b.values()):
+                continue
+            where = tuple((key, spec.param_names.index(f"{key}{i + 1}") if section == "nominal"
+                           else idx.index(i)) for key, idx in per_leg.items() if i in idx)
+            rods.append((i, where))
+        if rods:
+            sections.append((section, bodies, tuple(rods)))
+    plan = (tuple(sections), frozenset(per_leg))
+    _PLANS[cache_key] = (spec.links, plan)
+    return plan
 
 
 def _check_reach(spec, legs, design, values):
