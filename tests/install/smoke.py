@@ -8,13 +8,15 @@
 4. editing that model file's geometry makes loading fail, naming ``pm2dof derive``;
 5. a study file here, naming that model by a relative path, runs with ``--quick``;
 6. the shipped design study ``paper_legs`` runs with ``--quick``, and a design picked from
-   its front is derived like a user's model file;
+   its front is derived like a user's model file; the platform's ``rrr4_platform_legs`` runs,
+   shows the same front and picks a plain model file;
 7. the installed package's files are unchanged (hashes before and after).
 
 Usage: python smoke.py TABLE3_OF_THE_CHECKOUT.json
 """
 import hashlib
 import json
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -104,6 +106,19 @@ def main(checkout_table3):
     pm2dof("design", "pick", "legs", "0", "--out", "picked/robot.toml")
     pm2dof("derive", "picked/robot.toml")
     print(f"design: {len(front['front'])} designs on paper_legs' quick front; design 0 derived")
+    # ... and the shipped platform study: run, show, pick (a model file without [design])
+    r = pm2dof("design", "run", "rrr4_platform_legs", "--quick", "--out", "r4", "--workers",
+               "1", "--json")
+    front = json.loads(r.stdout)
+    assert front["front"] and set(front["front"][0]["design"]) == {"la", "lb"}, front
+    shown = pm2dof("design", "show", "r4", "--json")
+    assert json.loads(shown.stdout)["front"] == front["front"]
+    pm2dof("design", "pick", "r4", "0", "--out", "picked/platform.toml")
+    text = (WORK / "picked" / "platform.toml").read_text()
+    tables = re.findall(r"^\[(\w+)\]", text, re.M)
+    assert "design" not in tables and "platform" in tables, tables
+    print(f"design: {len(front['front'])} designs on rrr4_platform_legs' quick front; design 0 "
+          f"picked")
 
     # 7. nothing was written into the installed package
     after = tree_hashes(package)
