@@ -25,7 +25,8 @@ from pm2dof.synthesis.spec import read_design_study
 
 pytestmark = pytest.mark.long     # over 1.5 s in all: make test runs it, make test-quick not
 
-KINDS = ["shang2010", "rrr4_platform", "prr_point", "prr3_platform", "shang2010_vertical"]
+KINDS = ["shang2010", "rrr4_platform", "prr_point", "prr3_platform", "rpr3_platform",
+         "shang2010_vertical"]
 RES = 13          # the maps' grid: points per axis
 TOL = 1e-9
 
@@ -195,7 +196,8 @@ def test_time_optimal_rollout_torques_and_margin(models, name, tmp_path):
     pts = np.concatenate([grid_points(study.region, m)[0], low.evaluate(s)[0]])
     _close(values["margin"], _margin_each(m, pts), "margin")
     assert values["margin"] > 0
-    assert obj.measure_unit("peak_torque", m) == ("N" if name.startswith("prr") else "N m")
+    linear = {leg.actuator for leg in m.spec.legs} == {"prismatic"}     # PRR and RPR legs
+    assert obj.measure_unit("peak_torque", m) == ("N" if linear else "N m")
 
 
 @pytest.mark.parametrize("law", ["apd", "ctc", "lqr"])
