@@ -15,8 +15,9 @@ u_k = (y_k+1^2 - y_k^2) / (2 delta_k), on the same two-ended discretisation as
     (tau_k the torque leaving s_k, the last one arriving),   y = 0 at the stops,
 
 g(y) = S^T f_a(S p' y) (+ gravity) the friction force, a CasADi expression of y with exact
-derivatives for every friction law (:func:`.path_friction.path_friction`; before, a law not
-affine in the speed went through the generated C with finite differences, minutes per plan).
+derivatives for every friction law (:func:`.path_friction.path_friction`: from the generated
+``path_torques`` where it is affine in y, by the law otherwise; before, a law not affine in the
+speed went through the generated C with finite differences, minutes per plan).
 """
 import numbers
 import time
@@ -27,7 +28,7 @@ from ..core.errors import PlanError
 from ..core.task import per_actuator
 from ..infra.interrupt import noticing_ctrl_c
 from .check import require
-from .path_friction import path_friction
+from .path_friction import AFFINE, BY_LAW, path_friction
 from .plan import PathProfile, Plan, grid_times, sample
 from .problem import PlanProblem
 from .stages import limits, params, stages
@@ -38,7 +39,6 @@ __all__ = ["plan_smooth", "RISE_TIME", "MAX_ITER"]
 
 RISE_TIME = 0.02   # s: the default tau_rate lets each torque swing 0 -> tau_max in 20 ms
 MAX_ITER = 100_000  # the most IPOPT iterations max_iter may ask for
-FRICTION = "exact, CasADi"   # info["friction"]: how g(y) enters (path_friction.py)
 
 
 def _rate_unit(model):
@@ -113,11 +113,12 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     y = opti.variable(K)
     x = y * y
     u = (x[1:] - x[:-1]) / (2 * delta)
-    taus = []
+    taus, how = [], set()
     for rows, yk in zip(ends, (y[:-1], y[1:])):
         R = lay.unpack(rows)
         a, b, S = R["a"], R["b"], R["S"].reshape(K - 1, n, m)
-        fr = path_friction(problem, rows, yk)
+        fr, formed = path_friction(problem, rows, yk)
+        how.add(formed)
         force = [ca.DM(a[:, i]) * u + ca.DM(b[:, i]) * yk * yk + fr[i] for i in range(m)]
         if split == "min_max":
             tau = opti.variable(K - 1, n)
@@ -142,10 +143,11 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
         opti.subject_to(y[int(k)] == 0)
     opti.minimize(ca.sum1(2 * delta / (y[1:] + y[:-1] + 1e-12)))
     opti.set_initial(y, 0.9 * strict.sdot)
+    friction = AFFINE if how == {AFFINE} else BY_LAW
     what = f"smoothing ({split})"
     if progress is not None:
         progress(f"{what}: IPOPT on {K} grid points, {opti.nx} variables, {opti.ng} "
-                 f"constraints (friction {FRICTION})")
+                 f"constraints (friction {friction})")
     t1 = time.perf_counter()
     with noticing_ctrl_c() as ctrl_c:
         watch = iteration_watch(opti.nx, opti.ng, progress, ctrl_c, what, max_iter)
@@ -184,4 +186,4 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
                       "tau_max_actuators": strict.info["tau_max_actuators"],
                       "ipopt_status": str(status), "iterations": iterations,
                       "solve_time_s": solve_s, "tau_rate": rate.tolist(),
-                      "friction": FRICTION})
+                      "friction": friction})

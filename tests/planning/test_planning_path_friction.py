@@ -6,7 +6,9 @@ finite differences: minutes per smoothed plan). The independent reference is the
 b y^2 is g(y). Checked on a model of every law, a platform with linear actuators and a model
 with gravity, at the departing and the arriving stage rows of a move's grid (joints moving
 both ways), at speeds from rest through the smoothing velocity to 3 m/s; the derivative
-dg/dy against central differences of the same C.
+dg/dy against central differences of the same C. Both ways of forming g: by the law
+(``law_friction``, every case) and as plan_smooth does (``path_friction``: the affine laws from
+the C alone, as before).
 
 Tolerances: the value, 1e-12 of the force's scale (the same sums in another order: a few
 roundings of terms up to that size); the derivative, central differences with h = 1e-6 m/s,
@@ -21,7 +23,7 @@ import pm2dof
 from pm2dof.core.errors import PlanError
 from pm2dof.core.mechanism import FRICTION_MODELS
 from pm2dof.core.task import orientation_length
-from pm2dof.planning.path_friction import LAWS, moving_friction, path_friction
+from pm2dof.planning import path_friction as pf
 from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import grid_points, stages
 
@@ -65,18 +67,14 @@ def _speeds(K, rng):
     return y[:K]
 
 
-@pytest.mark.parametrize("name,overrides", CASES, ids=[c[0] for c in CASES])
-def test_path_friction_equals_the_generated_torques(name, overrides):
-    problem, rows = _problem(name, overrides)
-    K = len(rows)
-    v1 = problem.model.layout("path_stage").unpack(rows)["v1"]
-    assert (v1 > 0).any() and (v1 < 0).any()          # joints moving both ways
+def _check(problem, rows, formed, name):
+    """``formed(ysym)``: the m expressions of g; against the generated C, value and dg/dy."""
+    K, dof = len(rows), problem.model.dof
     ysym = casadi.SX.sym("y", K)
-    g = casadi.Function("g", [ysym], [casadi.horzcat(*path_friction(problem, rows, ysym))])
-    dg = casadi.Function("dg", [ysym], [casadi.jacobian(casadi.horzcat(*path_friction(
-        problem, rows, ysym)).reshape((-1, 1)), ysym)])
-    rng = np.random.default_rng(7)
-    y = _speeds(K, rng)
+    G = casadi.horzcat(*formed(ysym))
+    g = casadi.Function("g", [ysym], [G])
+    dg = casadi.Function("dg", [ysym], [casadi.jacobian(G.reshape((-1, 1)), ysym)])
+    y = _speeds(K, np.random.default_rng(7))
     ref = _generated(problem, rows, y)
     scale = max(1.0, np.abs(ref).max())
     err = np.abs(np.array(g(y)) - ref).max()
@@ -87,21 +85,48 @@ def test_path_friction_equals_the_generated_torques(name, overrides):
     yc = np.maximum(y, h)                                   # the one-sided law at rest
     fd = (_generated(problem, rows, yc + h) - _generated(problem, rows, yc - h)) / (2 * h)
     J = np.array(dg(yc))                                     # (K m, K): d g[k, c] / d y_k
-    d = np.array([[J[c * K + k, k] for c in range(problem.model.dof)] for k in range(K)])
+    d = np.array([[J[c * K + k, k] for c in range(dof)] for k in range(K)])
     off = J.copy()
-    for c in range(problem.model.dof):
+    for c in range(dof):
         off[c * K + np.arange(K), np.arange(K)] = 0.0
     assert not off.any()                                    # g_k depends on y_k alone
     assert np.abs(d - fd).max() <= 1e-6 * max(scale, np.abs(fd).max()), name
 
 
+@pytest.mark.parametrize("name,overrides", CASES, ids=[c[0] for c in CASES])
+def test_the_law_equals_the_generated_torques(name, overrides):
+    """Every law written in CasADi (law_friction), on every case, affine ones included."""
+    problem, rows = _problem(name, overrides)
+    v1 = problem.model.layout("path_stage").unpack(rows)["v1"]
+    assert (v1 > 0).any() and (v1 < 0).any()          # joints moving both ways
+    g0 = _generated(problem, rows, np.zeros(len(rows)))
+    _check(problem, rows, lambda ys: pf.law_friction(problem, rows, ys, g0), name)
+
+
+@pytest.mark.parametrize("name,overrides", CASES, ids=[c[0] for c in CASES])
+def test_path_friction_equals_the_generated_torques(name, overrides):
+    """What plan_smooth uses: affine laws from the C alone (as before: those plans unchanged
+    to the bit), the others by the law."""
+    problem, rows = _problem(name, overrides)
+    affine = problem.model.spec.friction == "coulomb_viscous"
+    assert pf.path_friction(problem, rows, casadi.SX.sym("y", len(rows)))[1] == (
+        pf.AFFINE if affine else pf.BY_LAW)
+    _check(problem, rows, lambda ys: pf.path_friction(problem, rows, ys)[0], name)
+
+
+def test_a_stribeck_term_of_zero_is_affine():
+    """shang2010_stribeck's [nominal] fs = 0: g is Coulomb + viscous, formed from the C."""
+    problem, rows = _problem("shang2010_stribeck", {})
+    assert pf.path_friction(problem, rows, casadi.SX.sym("y", len(rows)))[1] == pf.AFFINE
+
+
 def test_every_friction_law_has_a_casadi_form():
     """A law added to FRICTION_MODELS must be written in path_friction.py too."""
-    assert set(LAWS) == set(FRICTION_MODELS)
+    assert set(pf.LAWS) == set(FRICTION_MODELS)
 
 
 def test_an_unknown_law_is_a_plan_error():
     fake = SimpleNamespace(spec=SimpleNamespace(friction="dahl", friction_constants={}))
     with pytest.raises(PlanError, match=r"friction law 'dahl' has no CasADi form in "
                                         r"pm2dof/planning/path_friction.py \(known: "):
-        moving_friction(fake, [], casadi.SX.sym("v"), 1.0, 0)
+        pf.moving_friction(fake, [], casadi.SX.sym("v"), 1.0, 0)
