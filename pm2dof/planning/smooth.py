@@ -70,7 +70,9 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     -------
     Plan
         ``method`` "smooth"; ``info`` holds ``strict_duration`` (the time-optimal plan on the
-        same grid), ``ipopt_status``, ``iterations``, ``solve_time_s``, ``tau_rate``.
+        same grid), ``ipopt_status``, ``iterations``, ``solve_time_s``, ``tau_rate``,
+        ``friction`` (how the friction force entered: "affine, exact" from the generated C,
+        "exact, CasADi" by the law: :func:`.path_friction.path_friction`).
 
     Raises
     ------
