@@ -14,9 +14,10 @@ u_k = (y_k+1^2 - y_k^2) / (2 delta_k), on the same two-ended discretisation as
     |tau_i| <= tau_max,i at both,   |tau_k+1,i - tau_k,i| (y_k + y_k+1) <= 2 delta_k tau_rate,i
     (tau_k the torque leaving s_k, the last one arriving),   y = 0 at the stops,
 
-g(y) = S^T f_a(S p' y) the friction force. For a friction law affine in the speed (eq. 2)
-g_k is evaluated exactly from the generated ``path_torques``; otherwise the same C function
-enters through ``casadi.external`` with finite-difference derivatives.
+g(y) = S^T f_a(S p' y) (+ gravity) the friction force, a CasADi expression of y with exact
+derivatives for every friction law (:func:`.path_friction.path_friction`: from the generated
+``path_torques`` where it is affine in y, by the law otherwise; before, a law not affine in the
+speed went through the generated C with finite differences, minutes per plan).
 """
 import numbers
 import time
@@ -27,6 +28,7 @@ from ..core.errors import PlanError
 from ..core.task import per_actuator
 from ..infra.interrupt import noticing_ctrl_c
 from .check import require
+from .path_friction import AFFINE, BY_LAW, path_friction
 from .plan import PathProfile, Plan, grid_times, sample
 from .problem import PlanProblem
 from .stages import limits, params, stages
@@ -37,18 +39,6 @@ __all__ = ["plan_smooth", "RISE_TIME", "MAX_ITER"]
 
 RISE_TIME = 0.02   # s: the default tau_rate lets each torque swing 0 -> tau_max in 20 ms
 MAX_ITER = 100_000  # the most IPOPT iterations max_iter may ask for
-
-
-def _friction(problem, stage, speeds):
-    """g(y) (K, m) at each grid point for each speed in ``speeds`` (list of (K,) arrays)."""
-    K, model = len(stage), problem.model
-    out = []
-    for y in speeds:
-        u = np.empty((K, model.dof))
-        model.function("path_torques").map(K, stage, np.ascontiguousarray(y), 0.0,
-                                           problem.params, problem.tau_max, u, None, None, None)
-        out.append(u)
-    return out
 
 
 def _rate_unit(model):
@@ -80,7 +70,9 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     -------
     Plan
         ``method`` "smooth"; ``info`` holds ``strict_duration`` (the time-optimal plan on the
-        same grid), ``ipopt_status``, ``iterations``, ``solve_time_s``, ``tau_rate``.
+        same grid), ``ipopt_status``, ``iterations``, ``solve_time_s``, ``tau_rate``,
+        ``friction`` (how the friction force entered: "affine, exact" from the generated C,
+        "exact, CasADi" by the law: :func:`.path_friction.path_friction`).
 
     Raises
     ------
@@ -119,31 +111,16 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
     delta = np.diff(s)
     lay = model.layout("path_stage")
     ends = (stage[:-1], coef["arrive"][1:])          # the facets leaving s_k, arriving s_k+1
-    affine = True
-    for rows in ends:
-        g0, g1, gh = _friction(problem, rows, [np.zeros(K - 1), np.ones(K - 1),
-                                               np.full(K - 1, 0.5)])
-        b = lay.unpack(rows)["b"]
-        g1, gh = g1 - b, gh - 0.25 * b
-        scale = max(1.0, float(np.abs(g1 - g0).max()))
-        affine &= bool(np.abs(gh - 0.5 * (g0 + g1)).max() <= 1e-9 * scale)
-
     opti = ca.Opti()
     y = opti.variable(K)
     x = y * y
     u = (x[1:] - x[:-1]) / (2 * delta)
-    taus = []
+    taus, how = [], set()
     for rows, yk in zip(ends, (y[:-1], y[1:])):
         R = lay.unpack(rows)
         a, b, S = R["a"], R["b"], R["S"].reshape(K - 1, n, m)
-        if affine:
-            g0, g1 = _friction(problem, rows, [np.zeros(K - 1), np.ones(K - 1)])
-            fr = [ca.DM(g0[:, i]) + ca.DM(g1[:, i] - b[:, i] - g0[:, i]) * yk for i in range(m)]
-        else:
-            ext = ca.external(f"{model.name}_path_torques", model.library,
-                              {"enable_fd": True, "fd_method": "central"}).map(K - 1)
-            U = ext(ca.DM(rows.T), yk.T, ca.DM.zeros(1, K - 1), ca.DM(prm), ca.DM(tau_lim))[0]
-            fr = [U[i, :].T - ca.DM(b[:, i]) * yk * yk for i in range(m)]
+        fr, formed = path_friction(problem, rows, yk)
+        how.add(formed)
         force = [ca.DM(a[:, i]) * u + ca.DM(b[:, i]) * yk * yk + fr[i] for i in range(m)]
         if split == "min_max":
             tau = opti.variable(K - 1, n)
@@ -168,10 +145,11 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
         opti.subject_to(y[int(k)] == 0)
     opti.minimize(ca.sum1(2 * delta / (y[1:] + y[:-1] + 1e-12)))
     opti.set_initial(y, 0.9 * strict.sdot)
+    friction = AFFINE if how == {AFFINE} else BY_LAW
     what = f"smoothing ({split})"
     if progress is not None:
         progress(f"{what}: IPOPT on {K} grid points, {opti.nx} variables, {opti.ng} "
-                 f"constraints (friction {'affine, exact' if affine else 'by finite differences'})")
+                 f"constraints (friction {friction})")
     t1 = time.perf_counter()
     with noticing_ctrl_c() as ctrl_c:
         watch = iteration_watch(opti.nx, opti.ng, progress, ctrl_c, what, max_iter)
@@ -210,4 +188,4 @@ def plan_smooth(model, path, tau_max=None, split="min_max", theta=None, margin=1
                       "tau_max_actuators": strict.info["tau_max_actuators"],
                       "ipopt_status": str(status), "iterations": iterations,
                       "solve_time_s": solve_s, "tau_rate": rate.tolist(),
-                      "friction": "affine, exact" if affine else "casadi.external, FD"})
+                      "friction": friction})
