@@ -21,10 +21,11 @@ back as CasADi SX (:mod:`.c_graph`: the same operations, so the same values; Cas
 differentiates them exactly); nothing is re-derived. A model whose C cannot be read that way
 falls back to ``casadi.external`` on the compiled library with finite differences. The torque
 and singularity limits' Jacobian is the per-sample Jacobian times the Fourier basis
-(:mod:`.sampled`), and IPOPT sees the limits at every ``constraint_stride``-th sample first,
-then at the samples its solution broke, until none is broken (:mod:`.design_limits`): the
-problem is the one with the limits at all ``constraint_samples``. In the objective, the Coulomb columns use tanh(qd / 0.1 rad/s) for sign(qd): it
-keeps log det differentiable, and samples slower than 0.1 rad/s are left out by
+(:mod:`.sampled`), and IPOPT sees the limits at every :data:`CONSTRAINT_STRIDE`-th sample
+first, then also at the samples its solution broke, until none is broken
+(:mod:`.design_limits`): the problem is the one with the limits at all
+``constraint_samples``. In the objective, the Coulomb columns use tanh(qd / 0.1 rad/s) for
+sign(qd): it keeps log det differentiable, and samples slower than 0.1 rad/s are left out by
 ``identify fit`` anyway.
 
 Every log det reported is one quantity, log det(Phi^T Phi / K): Phi the unscaled base regressor
@@ -67,6 +68,7 @@ from .design_limits import (
     carry_multipliers,
     limit_constraints,
     rest_constraints,
+    sample_slack,
     sample_violations,
 )
 from .fit import MIN_JOINT_SPEED, joint_speed_floor
@@ -77,7 +79,7 @@ __all__ = ["design_excitation", "SeriesOptions", "LimitOptions", "SolverOptions"
            "regressor_condition", "check_excitation",
            "sample_function", "run_design", "DesignReport", "format_design", "objective_logdet",
            "random_start", "IPOPT_OPTIONS", "design_provenance", "phi_limits", "CONVERGED",
-           "STAGE_SECONDS"]
+           "STAGE_SECONDS", "CONSTRAINT_STRIDE", "WARM_START"]
 
 #: IPOPT's options of the design (``max_iter``: :class:`SolverOptions`);
 #: written to the file's ``[design.ipopt]``.
@@ -89,6 +91,15 @@ IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "tol": 1e-6, "accept
 WARM_START = {"warm_start_init_point": "yes", "mu_init": 1e-5}
 #: samples on either side of a broken one that are added with it (:mod:`.design_limits`)
 NEIGHBOURS = 2
+#: relative slack (:func:`.design_limits.sample_slack`) below which a sample IPOPT saw is kept
+#: when it solves again; samples farther from every limit are dropped (and added back if a
+#: later solution breaks a limit there)
+NEAR = 0.01
+#: IPOPT first sees the limits at every CONSTRAINT_STRIDE-th constraint sample (250 of the
+#: default 1000 per period); the samples where its solution does worse than at those are added
+#: and it solves again from there, until none does (:mod:`.design_limits`). The problem solved
+#: is the same: the limits at all ``constraint_samples``. Recorded in the file's ``[design]``.
+CONSTRAINT_STRIDE = 4
 
 #: IPOPT's return statuses of a converged design; any other (Maximum_Iterations_Exceeded,
 #: Restoration_Failed, ...) is written with ``converged = false`` in ``[design]``
@@ -167,19 +178,14 @@ class SolverOptions:
         Random start (:func:`random_start`; IPOPT finds a local optimum, log det is not
         concave here).
     max_iter : int
-        IPOPT's iteration limit over all its solves (its other options: :data:`IPOPT_OPTIONS`).
-    constraint_stride : int
-        IPOPT first sees every ``constraint_stride``-th of the constraint samples (default 4:
-        250 of 1000); the samples where its solution does worse than at those are added and it
-        solves again from there, until none does (:mod:`.design_limits`). 1: all from the
-        start. The problem solved is the same: its limits at all ``constraint_samples``.
+        IPOPT's iteration limit over all its solves (its other options: :data:`IPOPT_OPTIONS`;
+        the limits at every :data:`CONSTRAINT_STRIDE`-th constraint sample first).
     """
 
     samples: int = 250
     constraint_samples: int = 1000
     seed: int = 0
     max_iter: int = 500
-    constraint_stride: int = 4
 
 
 def _options(kind, value):
@@ -517,13 +523,12 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
     v_max, a_max, tau_fraction = limits.v_max, limits.a_max, limits.tau_fraction
     singularity_margin, radius, safety = limits.singularity_margin, limits.radius, limits.safety
     samples, constraint_samples = solver.samples, solver.constraint_samples
-    seed, max_iter, constraint_stride = solver.seed, solver.max_iter, solver.constraint_stride
+    seed, max_iter = solver.seed, solver.max_iter
     rules = (("base_hz", base_hz, "> 0", base_hz > 0), ("harmonics", harmonics, ">= 1",
              harmonics >= 1), ("periods", periods, ">= 1", periods >= 1),
              ("v_max", v_max, "> 0", v_max > 0), ("a_max", a_max, "> 0", a_max > 0),
              ("tau_fraction", tau_fraction, "in (0, 1]", 0 < tau_fraction <= 1),
-             ("radius", radius, "> 0", radius > 0),
-             ("constraint_stride", constraint_stride, ">= 1", constraint_stride >= 1))
+             ("radius", radius, "> 0", radius > 0))
     wrong = [f"{name} must be {rule}, got {value!r}" for name, value, rule, ok in rules if not ok]
     if wrong:
         raise ArgumentError("design_excitation: " + "; ".join(wrong))
@@ -535,7 +540,7 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
             "singularity_margin": singularity_margin, "radius": radius, **phi,
             "samples": int(samples),
             "constraint_samples": int(constraint_samples), "safety": safety, "seed": int(seed),
-            "max_iter": int(max_iter), "constraint_stride": int(constraint_stride)}
+            "max_iter": int(max_iter)}
     base = base_parameters(model)
     I, L, m = list(base.independent), int(harmonics), model.dof
     r = len(I)
@@ -580,7 +585,7 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
                                               t=t_all)
     every_sample = ca.Function("limits", [z], [g_all])
     # IPOPT first sees every stride-th sample; samples that do worse are added (design_limits)
-    seen = np.arange(0, K, min(int(constraint_stride), K))
+    seen = np.arange(0, K, min(CONSTRAINT_STRIDE, K))
     if progress:
         progress(f"IPOPT: {z.numel()} coefficients, objective log det(Phi^T Phi / K) over "
                  f"{samples} samples per period, limits at {K} samples per period "
@@ -616,15 +621,18 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
             used += int(stats["iter_count"])
             if ctrl_c or stats["return_status"] == "User_Requested_Stop":
                 raise KeyboardInterrupt(f"IPOPT stopped after {used} iterations")
-            worst = sample_violations(every_sample(zs), lb_all, ub_all, n, phi)
+            values = every_sample(zs)
+            worst = sample_violations(values, lb_all, ub_all, n, phi)
             worse = np.flatnonzero(worst > max(worst[seen].max(), 1e-9))
             if (not len(worse) or stats["return_status"] not in CONVERGED
                     or used >= int(max_iter)):
                 break
-            # the broken samples and their neighbours: a peak between two samples IPOPT saw
-            # moves a little when IPOPT solves again
-            now = np.union1d(seen, (worse[:, None] + np.arange(-NEIGHBOURS, NEIGHBOURS + 1)
-                                    ).ravel() % K)
+            # again with the broken samples and their neighbours (a peak between two samples
+            # IPOPT saw moves a little when it solves again) and the samples it saw that are
+            # within NEAR of a limit; the others are dropped (checked again after the solve)
+            near = np.flatnonzero(sample_slack(values, lb_all, ub_all, n, phi) < NEAR)
+            now = np.union1d(np.intersect1d(seen, near), (
+                worse[:, None] + np.arange(-NEIGHBOURS, NEIGHBOURS + 1)).ravel() % K)
             if progress:
                 progress(f"IPOPT {stats['return_status']} after {used} iterations; "
                          f"{len(worse)} of the other samples break the limits (by up to "
@@ -644,7 +652,8 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
             "cond_before": before[0], "cond_after": after[0],
             "logdet_before": before[1], "logdet_after": after[1],
             "ipopt_status": stats["return_status"], "ipopt_iterations": used,
-            "ipopt_solves": rounds, "limit_samples_seen": int(len(seen)),
+            "constraint_stride": CONSTRAINT_STRIDE, "ipopt_solves": rounds,
+            "limit_samples_seen": int(len(seen)),
             "converged": stats["return_status"] in CONVERGED,
             "ipopt": dict(IPOPT_OPTIONS), "blas_threads": blas_threads or "default",
             "provenance": design_provenance(model)}

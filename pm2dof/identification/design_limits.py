@@ -23,7 +23,7 @@ import numpy as np
 from .sampled import fourier_basis, sampled_outputs
 
 __all__ = ["Limits", "limit_constraints", "rest_constraints", "sample_violations",
-           "carry_multipliers"]
+           "sample_slack", "carry_multipliers"]
 
 
 @dataclass(frozen=True)
@@ -98,34 +98,48 @@ def limit_constraints(z, per_sample, limits, *, base_hz, L, m, t):
     return ca.vertcat(*g), np.concatenate(lbg), np.concatenate(ubg)
 
 
+def _per_sample(rowwise, n, phi, reduce):
+    """``reduce`` (np.max or np.min) over each sample's rows of a per-row array in the layout
+    of :func:`limit_constraints` (N samples)."""
+    rows = _rows_per_sample(n, phi)
+    N = len(rowwise) // sum(rows)
+    out, start = [], 0
+    for r in rows:
+        out.append(reduce(rowwise[start:start + r * N].reshape(N, r), axis=1))
+        start += r * N
+    return reduce(np.column_stack(out), axis=1)
+
+
 def sample_violations(values, lbg, ubg, n, phi):
     """Each sample's worst violation (N,), >= 0: the largest of lbg - g and g - ubg over its
     rows, for ``values`` of :func:`limit_constraints` at N samples (its layout; n legs,
     ``phi`` a platform's phi limits or empty)."""
     values, lbg, ubg = (np.asarray(a, float).ravel() for a in (values, lbg, ubg))
     over = np.maximum(np.maximum(lbg - values, values - ubg), 0.0)
-    rows = _rows_per_sample(n, phi)
-    N = len(values) // sum(rows)
-    worst, start = np.zeros(N), 0
-    for r in rows:
-        block = over[start:start + r * N].reshape(N, r)     # sample after sample
-        worst = np.maximum(worst, block.max(axis=1))
-        start += r * N
-    return worst
+    return _per_sample(over, n, phi, np.max)
+
+
+def sample_slack(values, lbg, ubg, n, phi):
+    """Each sample's smallest relative slack (N,): over its rows, the distance of g to its
+    nearer bound over the width of its bounds (|lbg| for a row without an upper bound);
+    negative where a limit is broken. Layout as :func:`sample_violations`."""
+    values, lbg, ubg = (np.asarray(a, float).ravel() for a in (values, lbg, ubg))
+    width = np.where(np.isfinite(ubg), ubg - lbg, np.abs(lbg))
+    slack = np.minimum(values - lbg, ubg - values) / np.maximum(width, 1e-300)
+    return _per_sample(slack, n, phi, np.min)
 
 
 def carry_multipliers(lam, seen, now, n, phi):
     """The multipliers ``lam`` of :func:`limit_constraints` at the samples ``seen`` (sorted
-    indices), placed at the same samples of the constraints at ``now`` (a sorted superset), 0
-    at the added samples: IPOPT's warm start after samples are added."""
+    indices), placed at the same samples of the constraints at ``now`` (sorted indices), 0 at
+    the samples not in ``seen``; those of samples not in ``now`` are dropped. IPOPT's warm
+    start when samples are added and dropped."""
     lam, seen, now = np.asarray(lam, float).ravel(), np.asarray(seen), np.asarray(now)
-    at = np.searchsorted(now, seen)
-    if not np.array_equal(now[at], seen):
-        raise ValueError("carry_multipliers: the new samples must include the old ones")
+    common, i_seen, i_now = np.intersect1d(seen, now, return_indices=True)
     out, start_old = [], 0
     for r in _rows_per_sample(n, phi):
         block = np.zeros((len(now), r))
-        block[at] = lam[start_old:start_old + r * len(seen)].reshape(len(seen), r)
+        block[i_now] = lam[start_old:start_old + r * len(seen)].reshape(len(seen), r)[i_seen]
         out.append(block.ravel())
         start_old += r * len(seen)
     return np.concatenate(out)

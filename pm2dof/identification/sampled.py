@@ -72,7 +72,12 @@ def sampled_outputs(per_sample, outputs, f0, L, m, t, name="sampled"):
     sym = ca.SX.sym if per_sample.is_a("SXFunction") else ca.MX.sym
     x, v, a = (sym(s, m) for s in ("x", "v", "a"))
     h1 = ca.vertcat(*[per_sample(x, v, a)[i] for i in outputs])
-    jac1 = ca.Function("jac1", [x, v, a], [ca.jacobian(h1, ca.vertcat(x, v, a))])
+    w = ca.vertcat(x, v, a)
+    # SX: one reverse sweep per output row (measured: 20 % fewer operations than CasADi's
+    # choice for a platform's 5 rows x 9 inputs); MX (finite differences): CasADi's choice
+    jac1 = ca.Function("jac1", [x, v, a], [
+        ca.vertcat(*[ca.gradient(h1[i], w).T for i in range(h1.numel())])
+        if sym is ca.SX.sym else ca.jacobian(h1, w)])
     val1 = ca.Function("val1", [x, v, a], [h1])
     sizes = [per_sample.size1_out(i) for i in outputs]
     H = val1.map(K)(*args)                                   # (sum sizes, K)

@@ -415,7 +415,7 @@ def test_a_converged_design_says_nothing_more(m, designed, tmp_path, monkeypatch
 
 
 def test_design_takes_its_options_as_three_objects(m):
-    """design_excitation's 17 settings are three option objects (the series, the limits, the
+    """design_excitation's 16 settings are three option objects (the series, the limits, the
     solver) with their defaults in one place each; anything else is refused by type before
     IPOPT runs."""
     for k, kind in enumerate((SeriesOptions, LimitOptions, SolverOptions)):
@@ -426,4 +426,4 @@ def test_design_takes_its_options_as_three_objects(m):
     with pytest.raises(dataclasses.FrozenInstanceError):
         SeriesOptions().base_hz = 1.0
     assert len(dataclasses.fields(SeriesOptions) + dataclasses.fields(LimitOptions)
-               + dataclasses.fields(SolverOptions)) == 17
+               + dataclasses.fields(SolverOptions)) == 16

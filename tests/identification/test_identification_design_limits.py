@@ -9,6 +9,7 @@ from pm2dof.identification.design_limits import (
     Limits,
     carry_multipliers,
     limit_constraints,
+    sample_slack,
     sample_violations,
 )
 from pm2dof.identification.fit import MIN_JOINT_SPEED
@@ -75,11 +76,10 @@ def test_limits_at_samples_are_the_motion_and_the_model(name):
 
 def test_carried_multipliers_keep_their_samples():
     """carry_multipliers puts each multiplier at its own sample in the new layout (per block,
-    sample after sample) and zero at the added samples; a new set missing an old sample is a
-    ValueError."""
+    sample after sample), zero at the added samples, and drops those of dropped samples."""
     n, phi = 3, {}
     rows = [1, 1, 1, n, 2]
-    seen, now = np.array([0, 4, 8]), np.array([0, 3, 4, 5, 8])
+    seen, now = np.array([0, 4, 8]), np.array([0, 3, 4, 5])
     lam = np.arange(1, sum(rows) * len(seen) + 1, dtype=float)
     out = carry_multipliers(lam, seen, now, n, phi)
     assert len(out) == sum(rows) * len(now)
@@ -94,8 +94,24 @@ def test_carried_multipliers_keep_their_samples():
                 assert not new[k].any()
         old_start += r * len(seen)
         new_start += r * len(now)
-    with pytest.raises(ValueError, match="include the old"):
-        carry_multipliers(lam, seen, np.array([0, 4, 9]), n, phi)
+    # sample 8's multipliers are gone: the total is that of samples 0 and 4
+    kept = sum(lam[s0:s0 + r * 3].reshape(3, r)[:2].sum() for s0, r in
+               zip(np.cumsum([0] + [r * 3 for r in rows[:-1]]), rows))
+    assert out.sum() == kept
+
+
+def test_slack_is_the_nearest_bound_over_the_width():
+    """sample_slack: per sample the smallest (distance to the nearer bound) / (bound width,
+    or |lower bound| without an upper one), negative when broken."""
+    n, phi = 1, {}
+    # one sample: speed^2, accel^2, radius^2, torque, sing (2); bounds as the design's
+    lbg = np.array([0, 0, 0, -2.0, 0.5, 0.5])
+    ubg = np.array([1.0, 4.0, 1.0, 2.0, np.inf, np.inf])
+    values = np.array([0.5, 1.0, 0.25, 1.8, 0.6, 3.0])
+    want = min(0.5 / 1, 1.0 / 4, 0.25 / 1, 0.2 / 4, 0.1 / 0.5, 2.5 / 0.5)
+    assert sample_slack(values, lbg, ubg, n, phi) == pytest.approx([want], rel=1e-15)
+    values[4] = 0.4                                     # a singularity measure below its bound
+    assert sample_slack(values, lbg, ubg, n, phi) == pytest.approx([-0.2], rel=1e-15)
 
 
 def test_series_excitation_is_the_design_layout():
@@ -108,3 +124,42 @@ def test_series_excitation_is_the_design_layout():
     t = np.array([0.2, 0.7])
     for got, want in zip(exc.evaluate(t), start.evaluate(t)):
         np.testing.assert_array_equal(got, want)
+
+
+def test_design_solves_the_problem_on_every_constraint_sample():
+    """A small design whose first solve (every CONSTRAINT_STRIDE-th sample) breaks the limits
+    between its samples: IPOPT solves again with the broken samples added, and the result
+    keeps the limits at all constraint samples (to IPOPT's constraint tolerance; the rest
+    conditions are projected afterwards, which moves the rows by rounding only)."""
+    from pm2dof.identification.design import (
+        CONSTRAINT_STRIDE,
+        LimitOptions,
+        SeriesOptions,
+        SolverOptions,
+        design_excitation,
+    )
+    model = pm2dof.load_model("shang2010")
+    f0, L, K = 0.5, 4, 200
+    lines = []
+    exc = design_excitation(model, SeriesOptions(base_hz=f0, harmonics=L, periods=1),
+                            LimitOptions(v_max=0.4, a_max=6.0, tau_fraction=0.3),
+                            SolverOptions(samples=80, constraint_samples=K),
+                            progress=lines.append)
+    info = exc.info
+    assert info["converged"] and info["constraint_stride"] == CONSTRAINT_STRIDE
+    assert info["ipopt_solves"] >= 2, info        # else this test does not test the rounds
+    assert 0 < info["limit_samples_seen"] < K     # the last solve saw a subset
+    assert sum("break the limits" in ln for ln in lines) == info["ipopt_solves"] - 1, lines
+    I = list(base_parameters(model).independent)
+    per_sample = sample_function(model, I, smooth_sign=MIN_JOINT_SPEED)
+    lim = Limits(0.98 * 0.4, 0.98 * 6.0, 0.98 * 0.06,
+                 0.98 * 0.3 * np.asarray(model.spec.limits["tau_max"], float),
+                 np.array([model.singularity_threshold, model.parallel_singularity_threshold])
+                 + 0.1, region_center(model), {})
+    z = ca.MX.sym("z", 2 * 2 * L + 2)
+    g, lbg, ubg = limit_constraints(z, per_sample, lim, base_hz=f0, L=L, m=2,
+                                    t=np.arange(K) / (K * f0))
+    z1 = np.concatenate([exc.a.ravel(), exc.b.ravel(), exc.center])
+    worst = sample_violations(np.array(ca.Function("g", [z], [g])(z1)), lbg, ubg,
+                              model.n_legs, {})
+    assert worst.max() <= 1e-8, worst.max()
