@@ -16,10 +16,16 @@ the confidence ellipsoid of the estimate, and it rewards signal over noise, whic
 condition number ignores (doubling the motion leaves cond unchanged but halves the errors).
 The condition number of the column-scaled regressor is reported before and after.
 
-The model's Y, S, ik and singularity measures enter the optimisation as its generated C
-(``casadi.external`` on the compiled library, derivatives by finite differences): nothing is
-re-derived. In the objective, the Coulomb columns use tanh(qd / 0.1 rad/s) for sign(qd): it
-keeps log det differentiable, and samples slower than 0.1 rad/s are left out by
+The model's Y, S, ik and singularity measures enter the optimisation as its generated C, read
+back as CasADi SX (:mod:`.c_graph`: the same operations, so the same values; CasADi
+differentiates them exactly); nothing is re-derived. A model whose C cannot be read that way
+falls back to ``casadi.external`` on the compiled library with finite differences. The torque
+and singularity limits' Jacobian is the per-sample Jacobian times the Fourier basis
+(:mod:`.sampled`), and IPOPT sees the limits at every :data:`CONSTRAINT_STRIDE`-th sample
+first, then also at the samples its solution broke, until none is broken
+(:mod:`.design_limits`): the problem is the one with the limits at all
+``constraint_samples``. In the objective, the Coulomb columns use tanh(qd / 0.1 rad/s) for
+sign(qd): it keeps log det differentiable, and samples slower than 0.1 rad/s are left out by
 ``identify fit`` anyway.
 
 Every log det reported is one quantity, log det(Phi^T Phi / K): Phi the unscaled base regressor
@@ -56,19 +62,44 @@ from ..core.task import effort_unit, orientation_length, per_actuator
 from ..infra.interrupt import noticing_ctrl_c
 from ..infra.progress import Progress, bar
 from .base import base_parameters, region_center
+from .c_graph import CGraphError, sx_function
+from .design_limits import (
+    Limits,
+    carry_multipliers,
+    limit_constraints,
+    rest_constraints,
+    sample_slack,
+    sample_violations,
+)
 from .fit import MIN_JOINT_SPEED, joint_speed_floor
+from .sampled import fourier_basis
 from .signals import FourierExcitation, multisine, trajectory_of, write_excitation
 
 __all__ = ["design_excitation", "SeriesOptions", "LimitOptions", "SolverOptions",
            "regressor_condition", "check_excitation",
            "sample_function", "run_design", "DesignReport", "format_design", "objective_logdet",
            "random_start", "IPOPT_OPTIONS", "design_provenance", "phi_limits", "CONVERGED",
-           "STAGE_SECONDS"]
+           "STAGE_SECONDS", "CONSTRAINT_STRIDE", "WARM_START"]
 
 #: IPOPT's options of the design (``max_iter``: :class:`SolverOptions`);
 #: written to the file's ``[design.ipopt]``.
 IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "tol": 1e-6, "acceptable_tol": 1e-4,
                  "acceptable_iter": 10, "acceptable_obj_change_tol": 1e-7}
+
+#: IPOPT's options of a solve after samples were added (:mod:`.design_limits`): from the last
+#: solution and its multipliers, the barrier parameter near where it ended
+WARM_START = {"warm_start_init_point": "yes", "mu_init": 1e-5}
+#: samples on either side of a broken one that are added with it (:mod:`.design_limits`)
+NEIGHBOURS = 2
+#: relative slack (:func:`.design_limits.sample_slack`) below which a sample IPOPT saw is kept
+#: when it solves again; samples farther from every limit are dropped (and added back if a
+#: later solution breaks a limit there)
+NEAR = 0.01
+#: IPOPT first sees the limits at every CONSTRAINT_STRIDE-th constraint sample (250 of the
+#: default 1000 per period); the samples where its solution does worse than at those are added
+#: and it solves again from there, until none does (:mod:`.design_limits`). The problem solved
+#: is the same: the limits at all ``constraint_samples``. Recorded in the file's ``[design]``.
+CONSTRAINT_STRIDE = 4
 
 #: IPOPT's return statuses of a converged design; any other (Maximum_Iterations_Exceeded,
 #: Restoration_Failed, ...) is written with ``converged = false`` in ``[design]``
@@ -147,7 +178,8 @@ class SolverOptions:
         Random start (:func:`random_start`; IPOPT finds a local optimum, log det is not
         concave here).
     max_iter : int
-        IPOPT's iteration limit (its other options: :data:`IPOPT_OPTIONS`).
+        IPOPT's iteration limit over all its solves (its other options: :data:`IPOPT_OPTIONS`;
+        the limits at every :data:`CONSTRAINT_STRIDE`-th constraint sample first).
     """
 
     samples: int = 250
@@ -164,14 +196,6 @@ def _options(kind, value):
         raise ArgumentTypeError(f"design_excitation: expected a {kind.__name__} "
                                 f"(pm2dof.identification.design), got {type(value).__name__}")
     return value
-
-
-def _basis(f0, L, t):
-    """(pos_a, pos_b, vel_a, vel_b, acc_a, acc_b), each (N, L): x = pos_a @ a + pos_b @ b + c."""
-    w = 2 * np.pi * f0 * np.arange(1, L + 1)
-    t = np.asarray(t, dtype=float)[:, None]
-    s, c = np.sin(w * t), np.cos(w * t)
-    return s / w, -c / w, c, s, -s * w, c * w
 
 
 def _refuse_phi(model, given):
@@ -299,11 +323,23 @@ def _external(model, short):
                        [ext.name_out(k) for k in range(ext.n_out())])
 
 
+def _model_functions(model, shorts):
+    """({short: CasADi Function}, exact): ``model``'s generated functions ``shorts`` as SX
+    read from their C (:func:`.c_graph.sx_function`: exact derivatives), exact True; or, if
+    any of them cannot be read, all as ``casadi.external`` with finite differences
+    (:func:`_external`), exact False."""
+    try:
+        return {k: sx_function(model, k) for k in shorts}, True
+    except CGraphError:
+        return {k: _external(model, k) for k in shorts}, False
+
+
 def sample_function(model, independent, smooth_sign=None):
     """CasADi function (x (m), xd (m), xdd (m)) -> (vec of Y[:, independent] (m r,
     column-major), tau (n) of the min-norm split with Tables 1-2 (eq. 21), both singularity
-    measures (2)), m = ``Model.dof``, built on the model's generated C (``casadi.external``,
-    finite-difference derivatives).
+    measures (2)), m = ``Model.dof``, built on the model's generated C: an SX function of it
+    read back from the C (:func:`_model_functions`, exact derivatives), else MX on
+    ``casadi.external`` (finite-difference derivatives).
 
     ``smooth_sign`` (rad/s): replace sign(qd_i) in the Coulomb (and Stribeck) columns by
     tanh(qd_i / s_i), s_i = smooth_sign for a revolute actuator and smooth_sign x
@@ -313,8 +349,9 @@ def sample_function(model, independent, smooth_sign=None):
     """
     import casadi as ca
     n, p, m = model.n_legs, len(model.param_names), model.dof
-    ext = {k: _external(model, k) for k in ("ik", "Y", "S", "singularity_measures")}
-    x, v, acc = ca.MX.sym("x", m), ca.MX.sym("v", m), ca.MX.sym("a", m)
+    ext, exact = _model_functions(model, ("ik", "Y", "S", "singularity_measures"))
+    sym = ca.SX.sym if exact else ca.MX.sym
+    x, v, acc = sym("x", m), sym("v", m), sym("a", m)
     q = ext["ik"](x)
     Yfull = ca.reshape(ext["Y"](q, v, v, acc)[0], p, m).T       # the C writes Y row-major
     S = ca.reshape(ext["S"](q)[0], m, n).T
@@ -518,7 +555,8 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
     c = z[2 * m * L:]
 
     def motion(K):
-        Pa, Pb, Va, Vb, Aa, Ab = (ca.DM(M) for M in _basis(base_hz, L, np.arange(K) / (K * base_hz)))
+        Pa, Pb, Va, Vb, Aa, Ab = (ca.DM(M) for M in fourier_basis(base_hz, L,
+                                                              np.arange(K) / (K * base_hz)))
         X = ca.mtimes(Pa, A) + ca.mtimes(Pb, B) + ca.repmat(c.T, K, 1)
         return X, ca.mtimes(Va, A) + ca.mtimes(Vb, B), ca.mtimes(Aa, A) + ca.mtimes(Ab, B)
 
@@ -538,50 +576,70 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
     # -objective + this = log det(Phi^T Phi / samples), the unscaled per-sample log det
     to_logdet = float(2 * np.sum(np.log(norms)) - r * np.log(samples))
 
-    Xc, Vc, Ac = motion(constraint_samples)
-    _, Tc, Sc = per_sample.map(constraint_samples)(Xc.T, Vc.T, Ac.T)
-    w = 2 * np.pi * base_hz * np.arange(1, L + 1)
-    K = constraint_samples
-    g = [ca.vec(ca.sum1(A)), ca.mtimes(B.T, ca.DM(w)),                             # rest: 2 m
-         ca.sum2(Vc[:, :2] ** 2), ca.sum2(Ac[:, :2] ** 2),               # (x, y) speed, accel
-         ca.sum2((Xc[:, :2] - ca.repmat(ca.DM(c0[:2]).T, K, 1)) ** 2),  # radius
-         ca.vec(Tc), ca.vec(Sc)]
-    lbg = [np.zeros(2 * m), np.zeros(K), np.zeros(K), np.zeros(K), -np.tile(tau_lim, K),
-           np.tile(sing_min, K)]
-    ubg = [np.zeros(2 * m), np.full(K, (safety * v_max) ** 2),
-           np.full(K, (safety * a_max) ** 2), np.full(K, (safety * radius) ** 2),
-           np.tile(tau_lim, K), np.full(2 * K, np.inf)]
-    if phi:                     # a platform's phi: its own bounds, linear in z
-        g += [Vc[:, 2], Ac[:, 2], Xc[:, 2] - c0[2]]
-        for key in ("phi_v_max", "phi_a_max", "phi_range"):
-            lbg.append(np.full(K, -safety * phi[key]))
-            ubg.append(np.full(K, safety * phi[key]))
-    lbg, ubg = np.concatenate(lbg), np.concatenate(ubg)
+    lim = Limits(safety * v_max, safety * a_max, safety * radius, tau_lim, sing_min, c0,
+                 {k: safety * v for k, v in phi.items()})
+    K, n = int(constraint_samples), model.n_legs
+    t_all = np.arange(K) / (K * base_hz)
+    g_rest, lb_rest, ub_rest = rest_constraints(z, m, L, base_hz)
+    g_all, lb_all, ub_all = limit_constraints(z, per_sample, lim, base_hz=base_hz, L=L, m=m,
+                                              t=t_all)
+    every_sample = ca.Function("limits", [z], [g_all])
+    # IPOPT first sees every stride-th sample; samples that do worse are added (design_limits)
+    seen = np.arange(0, K, min(CONSTRAINT_STRIDE, K))
     if progress:
         progress(f"IPOPT: {z.numel()} coefficients, objective log det(Phi^T Phi / K) over "
-                 f"{samples} samples per period, {len(lbg)} constraints at {constraint_samples} "
-                 f"samples per period")
+                 f"{samples} samples per period, limits at {K} samples per period "
+                 f"(IPOPT first sees {len(seen)} of them)")
     # where no bar is drawn (stderr not a terminal, or a plain callable), a stage line every
     # STAGE_SECONDS instead: a design takes minutes (docs/results-identification.md, per kind)
     lines = (progress if progress and not (isinstance(progress, Progress) and progress.bars)
              else None)
+    used, rounds, zs, warm = 0, 0, z0, {}
     with bar(progress, int(max_iter), "IPOPT", unit="it") as iterations, \
-            noticing_ctrl_c() as ctrl_c:
-        # IPOPT's iterations shown as they happen; the callback also stops IPOPT at the
-        # iteration after a Ctrl-C
-        callback = _IterationProgress(z.numel(), len(lbg), iterations, to_logdet, ctrl_c,
-                                      lines, int(max_iter))
-        solver = ca.nlpsol("excitation", "ipopt", {"x": z, "f": objective, "g": ca.vertcat(*g)},
-                           {"iteration_callback": callback, "ipopt.print_level": 0,
-                            "print_time": False, "ipopt.sb": "yes",
-                            "ipopt.max_iter": int(max_iter),
-                            **{f"ipopt.{k}": v for k, v in IPOPT_OPTIONS.items()}})
-        with _single_thread_blas() as blas_threads:
-            sol = solver(x0=z0, lbg=lbg, ubg=ubg)
-    zs = np.array(sol["x"]).ravel()
-    stats = solver.stats()
-    if ctrl_c or stats["return_status"] == "User_Requested_Stop":
-        raise KeyboardInterrupt(f"IPOPT stopped after {stats['iter_count']} iterations")
+            noticing_ctrl_c() as ctrl_c, _single_thread_blas() as blas_threads:
+        while True:
+            rounds += 1
+            g, lbg, ubg = limit_constraints(z, per_sample, lim, base_hz=base_hz, L=L, m=m,
+                                            t=t_all[seen])
+            # IPOPT's iterations shown as they happen; the callback also stops IPOPT at the
+            # iteration after a Ctrl-C
+            callback = _IterationProgress(z.numel(), 2 * m + len(lbg), iterations, to_logdet,
+                                          ctrl_c, lines, int(max_iter), used)
+            solver = ca.nlpsol("excitation", "ipopt",
+                               {"x": z, "f": objective, "g": ca.vertcat(g_rest, g)},
+                               {"iteration_callback": callback, "ipopt.print_level": 0,
+                                "print_time": False, "ipopt.sb": "yes",
+                                "ipopt.max_iter": int(max_iter) - used,
+                                **{f"ipopt.{k}": v for k, v in IPOPT_OPTIONS.items()},
+                                **({f"ipopt.{k}": v for k, v in WARM_START.items()}
+                                   if warm else {})})
+            sol = solver(x0=zs, lbg=np.concatenate([lb_rest, lbg]),
+                         ubg=np.concatenate([ub_rest, ubg]), **warm)
+            zs = np.array(sol["x"]).ravel()
+            lam = np.array(sol["lam_g"]).ravel()
+            stats = solver.stats()
+            used += int(stats["iter_count"])
+            if ctrl_c or stats["return_status"] == "User_Requested_Stop":
+                raise KeyboardInterrupt(f"IPOPT stopped after {used} iterations")
+            values = every_sample(zs)
+            worst = sample_violations(values, lb_all, ub_all, n, phi)
+            worse = np.flatnonzero(worst > max(worst[seen].max(), 1e-9))
+            if (not len(worse) or stats["return_status"] not in CONVERGED
+                    or used >= int(max_iter)):
+                break
+            # again with the broken samples and their neighbours (a peak between two samples
+            # IPOPT saw moves a little when it solves again) and the samples it saw that are
+            # within NEAR of a limit; the others are dropped (checked again after the solve)
+            near = np.flatnonzero(sample_slack(values, lb_all, ub_all, n, phi) < NEAR)
+            now = np.union1d(np.intersect1d(seen, near), (
+                worse[:, None] + np.arange(-NEIGHBOURS, NEIGHBOURS + 1)).ravel() % K)
+            if progress:
+                progress(f"IPOPT {stats['return_status']} after {used} iterations; "
+                         f"{len(worse)} of the other samples break the limits (by up to "
+                         f"{worst.max():.3g}): solving again with {len(now)} samples")
+            warm = {"lam_g0": np.concatenate([lam[:2 * m], carry_multipliers(
+                lam[2 * m:], seen, now, n, phi)]), "lam_x0": np.array(sol["lam_x"]).ravel()}
+            seen = now
     exc = _with_rest(FourierExcitation(base_hz, periods, zs[2 * m * L:],
                                        zs[:m * L].reshape(m, L),
                                        zs[m * L:2 * m * L].reshape(m, L)))
@@ -593,7 +651,9 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
             "objective_logdet_after": objective_logdet(model, exc, samples, base),
             "cond_before": before[0], "cond_after": after[0],
             "logdet_before": before[1], "logdet_after": after[1],
-            "ipopt_status": stats["return_status"], "ipopt_iterations": stats["iter_count"],
+            "ipopt_status": stats["return_status"], "ipopt_iterations": used,
+            "constraint_stride": CONSTRAINT_STRIDE, "ipopt_solves": rounds,
+            "limit_samples_seen": int(len(seen)),
             "converged": stats["return_status"] in CONVERGED,
             "ipopt": dict(IPOPT_OPTIONS), "blas_threads": blas_threads or "default",
             "provenance": design_provenance(model)}
@@ -608,14 +668,18 @@ def _iteration_progress_class():
         its postfix log det(Phi^T Phi / K) = -f + ``to_logdet`` (f IPOPT's objective,
         column-scaled); with ``lines`` (a callable taking a stage line), one line every
         :data:`STAGE_SECONDS` s; stops IPOPT (User_Requested_Stop) once ``stop`` is not
-        empty."""
+        empty. ``done``: IPOPT iterations of the design's earlier solves (its lines count
+        on from there)."""
 
-        def __init__(self, nx, ng, iterations, to_logdet, stop=(), lines=None, max_iter=None):
+        def __init__(self, nx, ng, iterations, to_logdet, stop=(), lines=None, max_iter=None,
+                     done=0):
             ca.Callback.__init__(self)
             self.nx, self.ng, self.iterations, self.to_logdet = nx, ng, iterations, to_logdet
             self.stop, self.lines, self.max_iter = stop, lines, max_iter
             self.t0 = self.last = time.perf_counter()
-            self.count = 0
+            self.count = int(done)      # iterations of earlier solves of the same design
+            # a later solve's iteration 0 is the earlier solve's last iterate: not a step
+            self.repeat_first = self.count > 0
             self.construct("excitation_progress", {})
 
         def get_n_in(self):
@@ -644,6 +708,9 @@ def _iteration_progress_class():
             # IPOPT calls back at its iterations 0, 1, 2, ...: the bar counts 1, 2, ...
             logdet = -float(arg[1]) + self.to_logdet
             self.iterations.set_postfix_str(f"objective log det {logdet:.3f}", refresh=False)
+            if self.repeat_first:
+                self.repeat_first = False
+                return [1 if self.stop else 0]
             self.iterations.update(1)
             self.count += 1
             now = time.perf_counter()

@@ -94,11 +94,12 @@ def add_parser(sub, common):
     excitation_options(r, "simulate without LOG")
     simulated_options(r, "without LOG: ")
 
-    r = sub_command("design", "design a D-optimal excitation (minutes; longer on platforms)",
+    r = sub_command("design", "design a D-optimal excitation (20 s to about a minute)",
                     "Design a periodic excitation (a finite Fourier series in task space, "
                     "Swevers et al. 1997) that maximises log det of the base regressor's "
-                    "information matrix, with CasADi + IPOPT (minutes: the time per kind of "
-                    "robot is in docs/results-identification.md), within speed, "
+                    "information matrix, with CasADi + IPOPT (20 s for the paper's robot, about a "
+                    "minute for a platform: the time per kind of robot is in "
+                    "docs/results-identification.md), within speed, "
                     "acceleration, torque, singularity and region limits checked every 1 ms, and "
                     "write it as TOML to --out (the model recorded relative to the file). A "
                     "platform's excitation moves phi too, within its own limits (--phi-*). If "

@@ -1,0 +1,145 @@
+# The excitation design's limits at a chosen set of samples, and which samples break them.
+"""The constraints of :func:`~pm2dof.identification.design.design_excitation` at any subset of
+its constraint samples, and the samples of the whole set where a design breaks them.
+
+The design's problem has its limits at ``constraint_samples`` instants per period (K). IPOPT's
+cost per iteration grows with the constraints it sees (each an inequality row, dense in the
+coefficients), and a design's limits are active at few instants. So IPOPT first sees a subset
+(every ``stride``-th sample); :func:`sample_violations` then evaluates every limit at all K
+samples, and the samples outside the subset that do worse than the worst IPOPT saw are added
+and IPOPT solves again from there. A solution that no sample breaks more than the subset's
+samples is a KKT point of the problem on all K samples (the multipliers of the constraints it
+did not see are zero): the same problem, solved with fewer rows.
+
+Constraint layout at samples t (k = 0..N-1), after the 2 m rest equalities: speed^2 (N),
+acceleration^2 (N), radius^2 (N) of (x, y); the torque of every leg (n N, sample after sample),
+both singularity measures (2 N, sample after sample); a platform's phid, phidd, phi - phi_c (N
+each).
+"""
+from dataclasses import dataclass
+
+import numpy as np
+
+from .sampled import fourier_basis, sampled_outputs
+
+__all__ = ["Limits", "limit_constraints", "rest_constraints", "sample_violations",
+           "sample_slack", "carry_multipliers"]
+
+
+@dataclass(frozen=True)
+class Limits:
+    """The design's limits as imposed at the samples (already times ``safety``).
+
+    Attributes
+    ----------
+    v_max, a_max, radius : float
+        (x, y) speed (m/s), acceleration (m/s^2), distance from ``center`` (m).
+    tau : ndarray (n,)
+        |tau_i| bound, N m or N.
+    sing_min : ndarray (2,)
+        Lower bounds of both singularity measures.
+    center : ndarray (m,)
+        c0, the region's centre (m, rad).
+    phi : dict
+        A platform's ``phi_v_max``, ``phi_a_max``, ``phi_range`` (rad/s, rad/s^2, rad); empty
+        for a point.
+    """
+    v_max: float
+    a_max: float
+    radius: float
+    tau: np.ndarray
+    sing_min: np.ndarray
+    center: np.ndarray
+    phi: dict
+
+
+def _rows_per_sample(n, phi):
+    """Constraint rows per sample, by block: speed, acceleration, radius, torque (n), sing
+    (2), and phi's three for a platform."""
+    return [1, 1, 1, n, 2] + ([1, 1, 1] if phi else [])
+
+
+def rest_constraints(z, m, L, base_hz):
+    """(g, lbg, ubg): the 2 m equalities sum_l a_jl = 0 and sum_l w_l b_jl = 0 (rest at t =
+    0), g an MX of the coefficients z."""
+    import casadi as ca
+    A = ca.reshape(z[:m * L], L, m)
+    B = ca.reshape(z[m * L:2 * m * L], L, m)
+    w = 2 * np.pi * base_hz * np.arange(1, L + 1)
+    return (ca.vertcat(ca.vec(ca.sum1(A)), ca.mtimes(B.T, ca.DM(w))), np.zeros(2 * m),
+            np.zeros(2 * m))
+
+
+def limit_constraints(z, per_sample, limits, *, base_hz, L, m, t):
+    """(g, lbg, ubg): the limits at times ``t`` (N,) s (module docstring's layout), g an MX of
+    the coefficients z; the torque and singularity rows are ``per_sample``'s outputs 1 and 2
+    with their Jacobian by the chain rule (:func:`.sampled.sampled_outputs`)."""
+    import casadi as ca
+    N = len(t)
+    A = ca.reshape(z[:m * L], L, m)
+    B = ca.reshape(z[m * L:2 * m * L], L, m)
+    c = z[2 * m * L:]
+    Pa, Pb, Va, Vb, Aa, Ab = (ca.DM(M) for M in fourier_basis(base_hz, L, t))
+    X = ca.mtimes(Pa, A) + ca.mtimes(Pb, B) + ca.repmat(c.T, N, 1)
+    V, Acc = ca.mtimes(Va, A) + ca.mtimes(Vb, B), ca.mtimes(Aa, A) + ca.mtimes(Ab, B)
+    model_rows = sampled_outputs(per_sample, (1, 2), base_hz, L, m, t)(z)
+    lim = limits
+    g = [ca.sum2(V[:, :2] ** 2), ca.sum2(Acc[:, :2] ** 2),
+         ca.sum2((X[:, :2] - ca.repmat(ca.DM(lim.center[:2]).T, N, 1)) ** 2), model_rows]
+    lbg = [np.zeros(N), np.zeros(N), np.zeros(N), -np.tile(lim.tau, N),
+           np.tile(lim.sing_min, N)]
+    ubg = [np.full(N, lim.v_max ** 2), np.full(N, lim.a_max ** 2), np.full(N, lim.radius ** 2),
+           np.tile(lim.tau, N), np.full(2 * N, np.inf)]
+    if lim.phi:                     # a platform's phi: its own bounds, linear in z
+        g += [V[:, 2], Acc[:, 2], X[:, 2] - lim.center[2]]
+        for key in ("phi_v_max", "phi_a_max", "phi_range"):
+            lbg.append(np.full(N, -lim.phi[key]))
+            ubg.append(np.full(N, lim.phi[key]))
+    return ca.vertcat(*g), np.concatenate(lbg), np.concatenate(ubg)
+
+
+def _per_sample(rowwise, n, phi, reduce):
+    """``reduce`` (np.max or np.min) over each sample's rows of a per-row array in the layout
+    of :func:`limit_constraints` (N samples)."""
+    rows = _rows_per_sample(n, phi)
+    N = len(rowwise) // sum(rows)
+    out, start = [], 0
+    for r in rows:
+        out.append(reduce(rowwise[start:start + r * N].reshape(N, r), axis=1))
+        start += r * N
+    return reduce(np.column_stack(out), axis=1)
+
+
+def sample_violations(values, lbg, ubg, n, phi):
+    """Each sample's worst violation (N,), >= 0: the largest of lbg - g and g - ubg over its
+    rows, for ``values`` of :func:`limit_constraints` at N samples (its layout; n legs,
+    ``phi`` a platform's phi limits or empty)."""
+    values, lbg, ubg = (np.asarray(a, float).ravel() for a in (values, lbg, ubg))
+    over = np.maximum(np.maximum(lbg - values, values - ubg), 0.0)
+    return _per_sample(over, n, phi, np.max)
+
+
+def sample_slack(values, lbg, ubg, n, phi):
+    """Each sample's smallest relative slack (N,): over its rows, the distance of g to its
+    nearer bound over the width of its bounds (|lbg| for a row without an upper bound);
+    negative where a limit is broken. Layout as :func:`sample_violations`."""
+    values, lbg, ubg = (np.asarray(a, float).ravel() for a in (values, lbg, ubg))
+    width = np.where(np.isfinite(ubg), ubg - lbg, np.abs(lbg))
+    slack = np.minimum(values - lbg, ubg - values) / np.maximum(width, 1e-300)
+    return _per_sample(slack, n, phi, np.min)
+
+
+def carry_multipliers(lam, seen, now, n, phi):
+    """The multipliers ``lam`` of :func:`limit_constraints` at the samples ``seen`` (sorted
+    indices), placed at the same samples of the constraints at ``now`` (sorted indices), 0 at
+    the samples not in ``seen``; those of samples not in ``now`` are dropped. IPOPT's warm
+    start when samples are added and dropped."""
+    lam, seen, now = np.asarray(lam, float).ravel(), np.asarray(seen), np.asarray(now)
+    common, i_seen, i_now = np.intersect1d(seen, now, return_indices=True)
+    out, start_old = [], 0
+    for r in _rows_per_sample(n, phi):
+        block = np.zeros((len(now), r))
+        block[i_now] = lam[start_old:start_old + r * len(seen)].reshape(len(seen), r)[i_seen]
+        out.append(block.ravel())
+        start_old += r * len(seen)
+    return np.concatenate(out)
