@@ -37,6 +37,9 @@ _LOGIC = re.compile(r"\((a\d+)(&&|\|\||==|!=)(a\d+)\)")
 _ASSIGN = re.compile(r"(a\d+)=(.+);")
 _RESULT = re.compile(r"if \(res\[(\d+)\]!=0\) res\[\1\]\[(\d+)\]=(a\d+);")
 #: what a translated right-hand side may contain: names, numbers, operators, brackets
+#: an attribute access or a dunder name ("1.0.__class__", "__import__"): never in CasADi's
+#: straight-line code, refused before evaluating (the namespace has no builtins)
+_ATTRIBUTE = re.compile(r"__|\.\s*[A-Za-df-zA-DF-Z_]|\.\s*[eE](?![-+]?\d)")
 _SAFE = re.compile(r"(?:[A-Za-z_]\w*|\d+\.?\d*(?:e[-+]?\d+)?|\.\d+(?:e[-+]?\d+)?|[-+*/<>=(),\[\]\s])*")
 
 
@@ -125,7 +128,7 @@ def read_body(lines, inputs, sizes_out, name):
             outs[int(result.group(1))][int(result.group(2))] = ns[result.group(3)]
         elif assign:
             py = _translate(assign.group(2))
-            if not _SAFE.fullmatch(py):
+            if not _SAFE.fullmatch(py) or _ATTRIBUTE.search(py):
                 raise CGraphError(f"{name}: cannot read {line!r}")
             try:
                 ns[assign.group(1)] = eval(py, {"__builtins__": {}}, ns)   # noqa: S307

@@ -88,6 +88,9 @@ def test_not_straight_line_code_is_refused():
                      (["casadi_f3(arg, res, iw, w, 0);"], "not straight-line"),
                      (["a0=system(a1);"], "cannot read"),
                      (['a0=eval("1");'], "cannot read"),
+                     (["a0=(1.).__class__;"], "cannot read"),        # no attribute access
+                     (["a0=1.0.real;"], "cannot read"),
+                     (["a0=__import__;"], "cannot read"),
                      (["a0=arg[0]? arg[0][0] : 0;", "if (res[0]!=0) res[0][0]=a0;"],
                       r"output\(s\) \[0\] not written")):
         with pytest.raises(CGraphError, match=why):
