@@ -126,6 +126,7 @@ def test_series_excitation_is_the_design_layout():
         np.testing.assert_array_equal(got, want)
 
 
+@pytest.mark.slow      # a whole excitation design (4 s): make test-slow (CI)
 def test_design_solves_the_problem_on_every_constraint_sample():
     """A small design whose first solve (every CONSTRAINT_STRIDE-th sample) breaks the limits
     between its samples: IPOPT solves again with the broken samples added, and the result

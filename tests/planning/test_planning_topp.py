@@ -164,6 +164,7 @@ def _collocation(m, path, theta, w, split, s, start):
     return float(np.sum(2 * d / (yv[1:] + yv[:-1])))
 
 
+@pytest.mark.slow      # an IPOPT collocation per case (10 s in all): make test-slow (CI)
 @pytest.mark.parametrize("split, points", [
     ("min_norm", [[0.2, 0.3], [0.26, 0.26], [0.3, 0.2]]),
     ("min_max", [[0.2, 0.3], [0.26, 0.26], [0.3, 0.2]]),
@@ -186,6 +187,7 @@ def test_with_friction_agrees_with_direct_collocation(m, split, points):
     assert max(map(abs, rel)) < 1e-6, rel
 
 
+@pytest.mark.slow      # two IPOPT collocations: make test-slow (CI)
 def test_with_gravity_agrees_with_direct_collocation():
     """The paper's robot upright (gravity -y, Ge about 24 N along y here) with its friction:
     the same discretisation by IPOPT, written from Me, Ce, StF and Ge, finds the same optimum
