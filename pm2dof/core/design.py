@@ -395,9 +395,8 @@ def _inertia_at(spec, legs, shown):
             if why is not None:
                 raise DesignError(f"at this design ({shown()}) leg {i + 1}'s [[{section}.links]] "
                                   f"give a lumped inertia that no leg can have: {why}")
-            into = theta if section == "nominal" else None
             for key, at in where:
-                (into if into is not None else plant[key])[at] = lumped[key]
+                (theta if section == "nominal" else plant[key])[at] = lumped[key]
     if theta is not spec.theta_nominal:
         theta.setflags(write=False)
     if plant is not spec.plant:

@@ -554,3 +554,25 @@ def test_the_default_design_gives_the_file_back_also_after_other_designs(tmp_pat
         assert at.design.values == tuple(values)
         _assert_same_spec(spec_at_design(at, spec.design.default), spec)
     assert done >= 5
+
+
+def test_the_fast_replace_builds_what_dataclasses_replace_builds():
+    """spec_at_design copies the spec's frozen dataclasses with design._replace (no __init__):
+    for ModelSpec, Leg and Design it gives the object dataclasses.replace gives, field by
+    field (the very objects), and refuses a field the class does not have."""
+    from pm2dof.core.design import _replace
+    spec = read_model_file(SHIPPED_MODELS / "rrr4_platform_design.toml")
+    leg = spec.legs[1]
+    cases = [(spec, {"legs": spec.legs[::-1], "sensing": {}}),
+             (leg, {"la": 0.31, "base": (1.0, 2.0)}),
+             (spec.design, {"values": (0.21, 0.22)}),
+             (leg, {})]
+    for obj, changes in cases:
+        got, want = _replace(obj, **changes), dataclasses.replace(obj, **changes)
+        assert type(got) is type(want) and got is not obj
+        for f in dataclasses.fields(obj):
+            assert getattr(got, f.name) is getattr(want, f.name), f.name
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            got.name = "x"
+    with pytest.raises(TypeError, match="no field 'lc'"):
+        _replace(leg, lc=0.2)
