@@ -195,13 +195,14 @@ def bench_refinement(model, line, repeats, say):
                        for k, v in times.items()}
                 rows[name][f"{split}_{friction}"] = {
                     "grid": plan.info["grid"], "refinements": plan.info["refinements"],
+                    "split_before": plan.info["split_before"],
                     "refined_ms": med["refined"], "unrefined_ms": med["unrefined"],
                     "refined_over_unrefined": med["refined"] / med["unrefined"],
                     "toppra_ms": med["toppra"],
                     "speedup_vs_toppra": (med["toppra"] / med["refined"]
                                           if med["toppra"] is not None else None)}
     cases = [c for r in rows.values() for c in r.values()]
-    refined = [c for c in cases if c["refinements"] > 0]
+    refined = [c for c in cases if c["refinements"] > 0 or c["split_before"] > 0]
     speed = [c["speedup_vs_toppra"] for c in cases if c["speedup_vs_toppra"] is not None]
     summary = {
         "plan_refined_over_unrefined_max": max(

@@ -255,6 +255,26 @@ class Grid:
         self.base = np.concatenate([self.base, base])[order]
         self.v1 = np.concatenate([self.v1, outs["v1"]])[order]
 
+    def coarse_relaxed(self, every):
+        """Where the arrival facets will not hold, found cheaply: the passes on every
+        ``every``-th grid point (the breakpoints and stops kept), whose relaxed intervals are
+        mapped back to this grid. Returns (lo, hi) (M,) each: the grid indices that bound each
+        relaxed interval of the coarse grid (hi - lo <= ``every``), or None where the coarse
+        grid is this grid (nothing saved). Nothing of the coarse solve is kept."""
+        K = len(self.s)
+        keep = np.zeros(K, dtype=bool)
+        keep[::every] = True
+        keep[-1] = True
+        keep[np.searchsorted(self.s, self.problem.path.breakpoints)] = True
+        idx = np.flatnonzero(keep)
+        if len(idx) == K:
+            return None
+        s = self.s[idx]
+        stops = np.searchsorted(s, self.problem.path.stops)
+        stage, arrive = link(self.problem, s, self.base[idx], self.v1[idx], stops, self.left)
+        relaxed = passes(self.problem, stage, arrive, s, self.ev[0][idx], None, self.ws)[3]
+        return idx[relaxed], idx[relaxed + 1]
+
     def stops(self):
         stops = self.problem.path.stops
         return np.searchsorted(self.s, stops) if len(stops) else np.array([], dtype=int)

@@ -39,9 +39,17 @@ from .stages import GRID_MAX, grid_points, limits, params
 __all__ = ["plan_time_optimal", "plan_on_grid", "solve_profile"]
 
 #: where an interval's facets cannot hold at both ends (riding a steep maximum-velocity curve),
-#: it is split into SPLIT_INTO^2 parts and its neighbours into SPLIT_INTO, and the passes
-#: rerun, REFINE times (once: splitting in 8, twice, took a second round for about the same)
-REFINE, SPLIT_INTO = 1, 8
+#: it is split into RELAXED_INTO parts and its neighbours into SPLIT_INTO, and the passes
+#: rerun, REFINE times (once: splitting in 8, twice, took a second round for about the same;
+#: 32 parts instead of 64 leave as few rounds but let the torques inside the intervals exceed
+#: tau_max by up to 0.15 %, 48 by 0.095 %, 64 by 0.074 % on pick_and_place, 6 and 30 N m)
+REFINE, RELAXED_INTO, SPLIT_INTO = 1, 64, 8
+#: the relaxed intervals can be predicted before the first solve: the passes on every
+#: COARSE-th grid point find them, and each grid interval inside a relaxed coarse one is split
+#: as a relaxed one (the neighbours of the run too; relaxed intervals the first solve still
+#: finds outside those are split as above). COARSE = 0: not predicted (the default: the
+#: coarse passes cost 0.16 of a 1000-point plan, more than they save: docs/results-planning.md)
+COARSE = 0
 #: no joint angle and no tangent may turn by more than RESOLUTION rad over a grid interval:
 #: a coarser grid is refined (halving, RESOLVE_ROUNDS times at most) before the passes
 RESOLUTION, RESOLVE_ROUNDS = 0.05, 40
@@ -123,7 +131,9 @@ def plan_time_optimal(model, path, tau_max=None, split="min_max", theta=None, ma
         ``info``: ``grid`` (the final count), ``refinements``, ``midpoint_excess`` (the largest
         excess over the limits at an interval's midpoint, a fraction of tau_max),
         ``sample_excess`` (the same at the trajectory's samples, <= SAMPLE_TOL),
-        ``arrival_relaxed`` (arc lengths where only the departing facets hold), ``stops``,
+        ``arrival_relaxed`` (arc lengths where only the departing facets hold),
+        ``split_before`` (intervals split before the first solve where COARSE predicts
+        relaxed ones; 0 by default), ``stops``,
         ``theta``, ``tau_max_actuators`` (tau_max before the margin).
 
     Raises
@@ -159,6 +169,52 @@ def plan_on_grid(model, path, s, tau_max=None, split="min_max", theta=None, marg
     return _plan(model, path, tau_max, split, theta, margin, None, np.asarray(s, dtype=float))
 
 
+def _split(g, ks):
+    """Split the intervals ``ks`` of the grid ``g`` in RELAXED_INTO parts and their neighbours
+    in SPLIT_INTO (where the arrival facets fail); returns the arc lengths (a, b) each split
+    run spans, neighbours included (2, M)."""
+    s = g.s
+    ks = np.unique(ks)
+    nb = np.setdiff1d(np.clip(np.concatenate([ks - 1, ks + 1]), 0, len(s) - 2), ks)
+    parts = [(ks, RELAXED_INTO), (nb, SPLIT_INTO)]
+    g.insert(np.concatenate([(s[k, None] + np.diff(s)[k, None]
+                              * (np.arange(1, n) / n)).ravel() for k, n in parts]))
+    lo, hi = np.maximum(ks - 1, 0), np.minimum(ks + 2, len(s) - 1)
+    return np.array([s[lo], s[hi]])
+
+
+def _split_predicted(g):
+    """Before the first solve: split where the arrival facets will fail, found by the passes
+    on every COARSE-th grid point (:meth:`Grid.coarse_relaxed`): each of the grid's intervals
+    inside a relaxed coarse interval as :func:`_split` does. Returns (covered, count): the
+    arc lengths (2, M) the splits span (None: nothing predicted, the coarse grid being the
+    grid itself or not plannable) and the intervals split."""
+    if not COARSE:
+        return None, 0
+    try:
+        found = g.coarse_relaxed(COARSE)
+    except PlanError:           # the grid itself decides (and names what fails)
+        return None, 0
+    if found is None:
+        return None, 0
+    lo, hi = found
+    if not lo.size:
+        return np.empty((2, 0)), 0
+    ks = np.unique(np.concatenate([np.arange(a, b) for a, b in zip(lo, hi)]))
+    if len(g.s) + (RELAXED_INTO + 2 * SPLIT_INTO) * ks.size > GRID_MAX:
+        return None, 0
+    return _split(g, ks), int(ks.size)
+
+
+def _uncovered(s, relaxed, covered):
+    """The intervals of ``relaxed`` (grid ``s``) that no split run ``covered`` (2, M) holds
+    (all of them where covered is None)."""
+    if covered is None or not relaxed.size:
+        return relaxed
+    inside = (s[relaxed, None] >= covered[0]) & (s[relaxed + 1, None] <= covered[1])
+    return relaxed[~inside.any(axis=1)]
+
+
 def _unresolved(s, mid, ev_mid, excess, over, attempt):
     """PlanError: the limits could not be held between the grid points (the intervals
     ``over``: at their midpoints beyond BETWEEN_TOL, or at a sample beyond SAMPLE_TOL)."""
@@ -188,18 +244,19 @@ def _plan(model, path, tau_max, split, theta, margin, grid, given):
     g = Grid(problem, s, path.evaluate(s))
     period = model.spec.sensing["sample_period"]
     refine = given is None
+    covered, split_before = None, 0
     for attempt in range(ROUNDS + 1):
         if refine:
             _refine_until_resolved(g)
+            if attempt == 0:
+                covered, split_before = _split_predicted(g)
         x, sdd, x_mvc, relaxed = g.solve()
         s = g.s
-        if refine and relaxed.size and attempt < REFINE:   # split where the arrival facets fail
-            nb = np.setdiff1d(np.clip(np.concatenate([relaxed - 1, relaxed + 1]), 0,
-                                      len(s) - 2), relaxed)
-            parts = [(relaxed, SPLIT_INTO ** 2), (nb, SPLIT_INTO)]
-            g.insert(np.concatenate([(s[ks, None] + np.diff(s)[ks, None]
-                                      * (np.arange(1, n) / n)).ravel() for ks, n in parts]))
-            continue
+        if refine and attempt < REFINE:     # split where the arrival facets fail
+            todo = _uncovered(s, relaxed, covered)
+            if todo.size:
+                _split(g, todo)
+                continue
         mid, ev_mid, excess = g.check_midpoints(x, sdd)
         over = np.flatnonzero(excess > BETWEEN_TOL)
         if not over.size or not refine:
@@ -226,5 +283,6 @@ def _plan(model, path, tau_max, split, theta, margin, grid, given):
                 info={"grid": K, "stops": s[stops].tolist(), "theta": th.tolist(),
                       "tau_max_actuators": limits(model, tau_max, 1.0).tolist(),
                       "arrival_relaxed": s[relaxed].tolist(), "refinements": attempt,
+                      "split_before": split_before,
                       "midpoint_excess": float(max(excess.max(), 0.0)),
                       "sample_excess": float(max(sample_excess.max(initial=0.0), 0.0))})

@@ -10,12 +10,12 @@ import pytest
 
 import pm2dof
 from pm2dof.bench.planning import friction_free
-from pm2dof.planning import TaskPath, plan_time_optimal
+from pm2dof.planning import TaskPath, plan_time_optimal, topp
 from pm2dof.planning import grid as grid_module
 from pm2dof.planning.pathfile import read_path_file
 from pm2dof.planning.problem import PlanProblem
 from pm2dof.planning.stages import limits, params, stages
-from pm2dof.planning.topp import SAMPLE_TOL, solve_profile
+from pm2dof.planning.topp import BETWEEN_TOL, SAMPLE_TOL, solve_profile
 from pm2dof.planning.torques import path_torques
 
 #: a user's spline, on which the planner once exceeded tau_max between its samples
@@ -71,12 +71,13 @@ def test_every_round_equals_the_whole_computation(m, name, monkeypatch):
 
     def counting(*args):
         out = passes(*args)
-        evaluated.append((len(args[3]), out[4]["evaluated"]))
+        if args[5] is not None:         # a round from the previous solve (not a whole one)
+            evaluated.append((len(args[3]), out[4]["evaluated"]))
         return out
 
     monkeypatch.setattr(grid_module, "passes", counting)
     fast = plan_time_optimal(m, path, 6.0, "min_max", grid=400)
-    later = evaluated[1:]
+    later = evaluated
     assert later and all(b + f < 2 * (K - 1) for K, (b, f, _) in later), evaluated
     solve, between = grid_module.Grid.solve, grid_module.Grid.check_midpoints
 
@@ -95,6 +96,30 @@ def test_every_round_equals_the_whole_computation(m, name, monkeypatch):
     for key in ("s", "sdot", "sddot", "t", "max_velocity", "tau"):
         assert np.array_equal(getattr(fast, key), getattr(slow, key)), key
     assert np.array_equal(fast.trajectory.xd_ddot, slow.trajectory.xd_ddot)
+
+
+def test_relaxed_intervals_predicted_before_the_first_solve(m, monkeypatch):
+    """The prediction the planner can make (COARSE > 0; off by default): the passes on every
+    4th grid point find where the arrival facets fail, and those intervals are split before the
+    first solve on the grid. On the user's spline and the curve, friction-free, both splits,
+    1000 points: it splits there (no round left on the spline at min-max), and the plan is
+    still the whole computation on its final grid, bit for bit, with its checks held."""
+    monkeypatch.setattr(topp, "COARSE", 4)
+    th0 = friction_free(m)
+    rounds = {}
+    for name in ("spline", "curve"):
+        for split in ("min_norm", "min_max"):
+            plan = plan_time_optimal(m, PATHS[name], None, split, theta=th0, grid=1000)
+            what = (name, split)
+            assert plan.info["split_before"] > 0, what
+            rounds[what] = plan.info["refinements"]
+            x, sdd, x_mvc, _ = _full(m, PATHS[name], plan.s, None, split, th0)
+            assert np.array_equal(np.sqrt(x), plan.sdot), what
+            assert np.array_equal(sdd, plan.sddot), what
+            assert np.array_equal(np.sqrt(np.maximum(x_mvc, 0.0)), plan.max_velocity), what
+            assert plan.info["midpoint_excess"] <= BETWEEN_TOL, what
+            assert plan.info["sample_excess"] <= SAMPLE_TOL, what
+    assert rounds[("spline", "min_max")] == 0, rounds
 
 
 @pytest.mark.parametrize("split", ["min_max", "min_norm"])
