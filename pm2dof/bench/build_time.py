@@ -64,8 +64,11 @@ def build_bench(rounds=1, say=None):
         ``derive_rrr4_s``, ``gcc_paper_s``: medians of the wall times, s;
         ``derive_rrr4_cpu_s``, ``gcc_paper_cpu_s``: medians of their processor time (user +
         system, every process they started), s; ``derive_rrr4_over_gcc_paper``: the median of
-        the rounds' ratios of wall times; ``build_rounds``: the rounds' (derive, gcc) wall
-        times, s; ``build_jobs``: the compilers the derive ran at once.
+        the rounds' ratios of wall times; ``derive_rrr4_cpu_over_gcc_paper_cpu`` the same of
+        processor times (what the wall ratio tends to while other programs keep every
+        processor busy: Linux shares the processors between sessions, however many compilers
+        one runs); ``build_rounds``: the rounds' (derive, gcc) wall times, s; ``build_jobs``:
+        the compilers the derive ran at once.
     """
     say = say or (lambda msg: None)
     pkg_root = str(Path(__file__).resolve().parents[2])
@@ -94,6 +97,8 @@ def build_bench(rounds=1, say=None):
             "gcc_paper_cpu_s": stats(per["gcc_cpu"])["median"],
             "derive_rrr4_over_gcc_paper": stats([d / g for d, g in
                                                  zip(per["derive"], per["gcc"])])["median"],
+            "derive_rrr4_cpu_over_gcc_paper_cpu": stats([d / g for d, g in zip(
+                per["derive_cpu"], per["gcc_cpu"])])["median"],
             "build_rounds": [list(p) for p in zip(per["derive"], per["gcc"])],
             "build_jobs": build.build_jobs()}
 
