@@ -6,10 +6,8 @@ writes to a temporary file next to the target and renames it into place, so a
 process that loads the target path never sees a half-written library.
 
 A CasADi file is cut into translation units (:mod:`pm2dof.core.csplit`) compiled on every
-processor at once, then linked: the functions on a hot path (controller steps, closed loops,
-plant, dynamics, path functions) with :data:`FLAGS` at ``-O3`` when they hold a loop, at
-``-O2`` when they are straight-line code, the others at ``-O1`` (:func:`pm2dof.core.csplit.
-opt_levels`).
+processor at once, then linked: with :data:`FLAGS`, at ``-O3`` the functions that hold a
+loop, at ``-O2`` the straight-line ones (:func:`pm2dof.core.csplit.opt_levels`).
 :func:`compile_libraries` compiles several libraries on one pool of processors (setup.py: the
 shipped models). Any other C file is compiled whole, as one command.
 """
@@ -364,8 +362,7 @@ class _Build:
             self.units.append((len(text), self.flags, None))
             self.link_flags = None
             return
-        prefix = self.c_path.stem + "_"
-        self._plan = (csplit, split, csplit.opt_levels(split, prefix))
+        self._plan = (csplit, split, csplit.opt_levels(split))
         self.link_flags = ["-shared", *extra]
 
     def unit_flags(self, opt):

@@ -13,8 +13,7 @@ Blocks call each other's ``casadi_fN``. This module rewrites nothing inside a bo
   ``GCC_HASCLASSVISIBILITY`` defined so that CasADi's ``CASADI_SYMBOL_EXPORT`` entry points are
   the library's only exported symbols;
 - makes the head's helper functions (``casadi_sq``, ``casadi_copy``, ...) ``static`` in every unit
-  (each unit has its own copy, inlined as before), and those without a loop (``casadi_sq``,
-  ``casadi_fmax``, ...) ``static inline``, so that ``-O1`` inlines them too;
+  (each unit has its own copy, inlined as before);
 - keeps the head's exported configuration functions (``<name>_casadi_version``, ...) in the first
   unit only;
 - puts a ``#line`` directive before every block, so that the compiler's messages name the lines
@@ -32,8 +31,8 @@ from __future__ import annotations
 import re
 from typing import NamedTuple
 
-__all__ = ["Block", "Split", "split_casadi_c", "hot_blocks", "has_loop", "opt_levels", "plan_units",
-           "FN_SIGNATURE", "HOT", "LOOP_OPT", "HOT_OPT", "COLD_OPT", "OPT_COST", "UNIT_BYTES"]
+__all__ = ["Block", "Split", "split_casadi_c", "has_loop", "opt_levels", "plan_units",
+           "FN_SIGNATURE", "LOOP_OPT", "STRAIGHT_OPT", "OPT_COST", "UNIT_BYTES"]
 
 #: The signature CasADi gives every ``casadi_fN``.
 FN_SIGNATURE = ("(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, "
@@ -45,8 +44,7 @@ _HELPER = re.compile(r"^(casadi_real|casadi_int|void|int) (casadi_\w+)\(", re.M)
 _LOOP = re.compile(r"\bfor \(")
 # a helper's definition in the head (after _HELPER made it static): its name, then its body up
 # to the next definition
-_HELPER_DEF = re.compile(r"^static (?:inline )?(casadi_real|casadi_int|void|int) (casadi_\w+)\(",
-                         re.M)
+_HELPER_DEF = re.compile(r"^static (casadi_real|casadi_int|void|int) (casadi_\w+)\(", re.M)
 _CONFIG_START = "/* Configuration this file was compiled with */\n"
 _TAIL = "\n#ifdef __cplusplus\n} /* extern \"C\" */\n#endif\n"
 
@@ -150,14 +148,6 @@ def split_casadi_c(text: str, path: str = "generated.c") -> Split | None:
     if len(set(names)) != len(names):
         return None
     head = _HELPER.sub(r"static \1 \2(", head)
-    # the helpers without a loop (casadi_sq, casadi_fmax, ...) inline, as -O2 and -O3 inline
-    # them anyway: -O1 (COLD_OPT) otherwise calls them
-    helpers = [m.group(2) for m in _HELPER_DEF.finditer(head)]
-    bodies = _HELPER_DEF.split(head)[3::3]
-    for n, body in zip(helpers, bodies):
-        if not _LOOP.search(body):
-            head = re.sub(rf"^static (\w+) {n}\(", rf"static inline \1 {n}(", head, count=1,
-                          flags=re.M)
     body_end = len(text) - len(_TAIL)
     chunks, calls_of = [], []
     called = re.compile(r"\b(casadi_f\d+)\(")
@@ -180,52 +170,31 @@ def split_casadi_c(text: str, path: str = "generated.c") -> Split | None:
     return Split(head, config, tuple(blocks), _TAIL, path)
 
 
-#: Generated functions on a hot path, by their short name (the file's name prefix removed):
-#: the controller steps and closed loops, the plant, the measurement, the dynamics and their
-#: derivatives, the sampled step, the path functions of the planner. They and every function
-#: one of them calls are compiled with :data:`LOOP_OPT` or :data:`HOT_OPT`.
-HOT = re.compile(r"_step$|_closed_loop$|^plant_|^measure$|^forward_dynamics|^inverse_dynamics|"
-                 r"^sampled_step|^path_|^split_")
-
-#: The optimisation of a hot function with a loop (the closed loops, the sampled step and its
+#: The optimisation of a function with a loop (the closed loops, the sampled step and its
 #: Jacobians: the plant's Runge-Kutta substeps, CasADi's array copies): ``-O3`` unrolls the
 #: loops (at ``-O2`` the paper robot's sampled-step Jacobians ran 27 % more instructions).
 LOOP_OPT = ("-O3",)
-#: The optimisation of a hot function without a loop (straight-line code: the controller
-#: steps, the dynamics and their Jacobians, the path functions): ``-O2`` gives them the
-#: instructions of ``-O3`` (the same counts under callgrind, within 1 %) in about 10 % less
-#: compile time.
-HOT_OPT = ("-O2",)
-#: The optimisation of the functions no hot path calls (``ik``, ``fk``, the matrices of the
-#: dynamics, the energies, ...): ``-O1`` with type-based alias analysis (a store into an
-#: output then does not force the output pointers to be loaded again) and the "expensive"
-#: RTL optimisations; with CasADi's scalar helpers inline (:func:`split_casadi_c`) their
-#: straight-line code runs the instructions of ``-O3`` in about 60 % of its compile time.
-#: (Not the hot paths: a branchy function, the preload split, ran 20 % more instructions.)
-COLD_OPT = ("-O1", "-fstrict-aliasing", "-fexpensive-optimizations")
-#: Compile time per byte of C at each level, relative to ``-O3`` (gcc 12, the paper robot's
-#: and the 4-RRR platform's functions): the cost :func:`plan_units` balances.
-OPT_COST = {LOOP_OPT: 1.0, HOT_OPT: 0.9, COLD_OPT: 0.6}
+#: The optimisation of a function without a loop (CasADi's SX functions: straight-line code,
+#: the controller steps, the dynamics and their Jacobians, the path functions, ``Me``, ``ik``,
+#: ...): ``-O2`` gives them the instructions of ``-O3`` (callgrind, the paper robot's and the
+#: 4-RRR platform's functions: within 1 %) in about 10 % less compile time.
+#:
+#: Not lower, not even for the functions no controller or planner calls: every function is a
+#: per-sample ``Model`` method. ``-O1`` ran the steps 30-40 % more instructions (CasADi's
+#: ``casadi_sq``, ``casadi_fmax``, ... not inlined, the output pointers loaded again after
+#: every store); ``-O1 -fstrict-aliasing -fexpensive-optimizations`` with those helpers inline
+#: matched ``-O3``'s instructions on straight-line code in 60-70 % of the compile time, but ran
+#: the preload split 20 % more instructions, ``StF`` 5-7 % and the NA step 4-7 % slower in
+#: paired C loops; ``-O2 -fno-tree-pre -fno-gcse`` ran the preload split 15 % more.
+STRAIGHT_OPT = ("-O2",)
+#: Compile time per byte of C at each level, relative to ``-O3`` (gcc 12, the 4-RRR platform's
+#: functions compiled one by one): the cost :func:`plan_units` balances.
+OPT_COST = {LOOP_OPT: 1.0, STRAIGHT_OPT: 0.9}
 
 #: Bytes of generated C per translation unit (about 1.5 processor seconds at ``-O3``): units
 #: small enough that two or more processors stay busy to the end, large enough that the head
 #: every unit repeats (a few hundredths of a second each) stays a few per cent of the work.
 UNIT_BYTES = 100_000
-
-
-def hot_blocks(split: Split, prefix: str) -> frozenset:
-    """The ``casadi_fN`` of the blocks on a hot path (:data:`HOT`) and of every block they
-    call, directly or not. ``prefix``: the file's name prefix (``<model>_``)."""
-    by_fn = {b.fn: b for b in split.blocks}
-    todo = [b.fn for b in split.blocks
-            if b.name.startswith(prefix) and HOT.search(b.name[len(prefix):])]
-    hot = set()
-    while todo:
-        fn = todo.pop()
-        if fn not in hot:
-            hot.add(fn)
-            todo.extend(by_fn[fn].calls)
-    return frozenset(hot)
 
 
 def has_loop(split: Split, block: Block) -> bool:
@@ -240,13 +209,10 @@ def has_loop(split: Split, block: Block) -> bool:
         r"\b(?:" + "|".join(map(re.escape, looping)) + r")\(", block.text)))
 
 
-def opt_levels(split: Split, prefix: str) -> dict:
-    """``{casadi_fN: optimisation flags}`` of every block: :data:`LOOP_OPT` for a hot block with
-    a loop (:func:`has_loop`), :data:`HOT_OPT` for the other hot blocks (:func:`hot_blocks`),
-    :data:`COLD_OPT` for the rest."""
-    hot = hot_blocks(split, prefix)
-    return {b.fn: (COLD_OPT if b.fn not in hot else LOOP_OPT if has_loop(split, b)
-                   else HOT_OPT) for b in split.blocks}
+def opt_levels(split: Split) -> dict:
+    """``{casadi_fN: optimisation flags}`` of every block: :data:`LOOP_OPT` for a block with a
+    loop (:func:`has_loop`), :data:`STRAIGHT_OPT` for the others."""
+    return {b.fn: LOOP_OPT if has_loop(split, b) else STRAIGHT_OPT for b in split.blocks}
 
 
 def plan_units(split: Split, levels: dict, unit_bytes: int = UNIT_BYTES):

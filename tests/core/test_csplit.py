@@ -2,9 +2,9 @@
 """A CasADi-generated C file is compiled as several translation units (pm2dof.core.csplit) on
 every processor, then linked. The library must be the one compiling the file whole gives: the
 same exported entry points (and no other symbol), the same results bit for bit. Here on a small
-file CasADi writes (a hot function calling another, a function off the hot paths calling the
-same one from another unit); the shipped models' libraries are checked by the whole suite (every
-pinned number) and, whole against cut, by tests/core/test_csplit_shipped.py (slow)."""
+file CasADi writes (functions calling one helper from other units, one with a loop, so at
+another optimisation level); the shipped models' libraries are checked by the whole suite
+(every pinned number) and, whole against cut, by tests/core/test_csplit_shipped.py (slow)."""
 import ctypes
 import shutil
 import subprocess
@@ -75,19 +75,16 @@ def test_a_casadi_file_is_cut_into_blocks_that_cover_it(tmp_path):
         assert b.text.startswith(first)
         assert (f"static int {b.fn}(" in b.text) == (b.fn not in called)
     assert f"int {helper}(" in s.head and f"int {fn['toy_na_step']}(" not in s.head
-    # the head's helpers static, those without a loop inline (-O1 calls them otherwise)
-    assert "static inline casadi_real casadi_sq(" in s.head
-    assert "static void casadi_copy(" in s.head
-    hot = {fn[k] for k in ("toy_helper", "toy_na_step", "fold_toy_helper", "toy_plant_step")}
-    assert csplit.hot_blocks(s, "toy_") == hot
+    assert "static casadi_real casadi_sq(" in s.head and "static void casadi_copy(" in s.head
     assert "toy_casadi_version" in s.config and "toy_casadi_version" not in s.head
-    # a hot block with a loop at LOOP_OPT, other hot ones at HOT_OPT, the rest at COLD_OPT
-    levels = csplit.opt_levels(s, "toy_")
+    # a block with a loop (its own, or a helper's that loops) at LOOP_OPT, the rest at
+    # STRAIGHT_OPT
     loops = {b.fn for b in s.blocks if csplit.has_loop(s, b)}
     assert fn["fold_toy_helper"] in loops and helper not in loops     # a copy loop; pure SX
     assert "for (" not in s.blocks[3].text and "casadi_copy(" in s.blocks[3].text
-    assert levels == {b.fn: csplit.COLD_OPT if b.fn not in hot else csplit.LOOP_OPT
-                      if b.fn in loops else csplit.HOT_OPT for b in s.blocks}
+    levels = csplit.opt_levels(s)
+    assert levels == {b.fn: csplit.LOOP_OPT if b.fn in loops else csplit.STRAIGHT_OPT
+                      for b in s.blocks}
     # every block in exactly one unit, each unit at its blocks' level, costliest first
     plan = csplit.plan_units(s, levels, unit_bytes=1)
     assert sorted(b.fn for _, blocks, _ in plan for b in blocks) == sorted(b.fn for b in s.blocks)
@@ -105,10 +102,10 @@ def test_other_c_is_not_cut():
 
 
 def test_the_cut_library_equals_the_whole_one_bit_for_bit(tmp_path):
-    """Compiled in units (one per level: na_step and the fold at -O3, the helper at -O2, fk
-    at -O1: each calls the helper in another unit) and compiled whole as before: the same
-    exported symbols but CasADi's internal helpers (casadi_sq, ...: now each unit's own), the
-    same bits."""
+    """Compiled in units (one per level: the blocks with a loop at -O3, the helper and the
+    others at -O2: blocks call the helper in another unit) and compiled whole as before: the
+    same exported symbols but CasADi's internal helpers (casadi_sq, ...: now each unit's own),
+    the same bits."""
     c, funcs = _toy_c(tmp_path)
     whole = tmp_path / "libwhole.so"
     subprocess.run([*build._compiler(), *build.FLAGS, "-o", str(whole), str(c), "-lm"],
@@ -117,9 +114,10 @@ def test_the_cut_library_equals_the_whole_one_bit_for_bit(tmp_path):
     cut = build.compile_library(c, tmp_path / "libtoy.so", progress=seen.append, jobs=2)
     assert " units (" in seen[0] and seen[1].startswith(f"compiled {cut} in ")
     record = __import__("json").loads(build.stamp_path(cut).read_text())
-    assert record["flags"][0] == "-O3" and record["units"] == 3
-    assert record["unit_levels"] == {" ".join(opt): 1 for opt in
-                                     (csplit.LOOP_OPT, csplit.HOT_OPT, csplit.COLD_OPT)}
+    assert record["flags"][0] == "-O3"
+    levels = csplit.opt_levels(csplit.split_casadi_c(c.read_text()))
+    assert record["unit_levels"] == {" ".join(opt): 1 for opt in set(levels.values())}
+    assert record["units"] == 2 == len(set(levels.values()))
     exported = _exported(cut)
     assert {"toy_na_step", "toy_fk", "toy_plant_step", "toy_na_step_work",
             "toy_casadi_version"} <= exported

@@ -1,6 +1,6 @@
 # core/build.py on shipped models: the library cut into units gives the whole file's bits (slow).
 """A shipped model's C compiled whole (one gcc command with FLAGS, as before the cut) and cut
-into translation units (compile_library: hot paths -O3, the rest -O1): every generated function
+into translation units (compile_library: loops -O3, the rest -O2): every generated function
 gives the same bits on random inputs (NaN outputs: NaN in both; which NaN, its sign and payload,
 may differ with the order of a commutative operation). The 3-PRR point model is the one whose
 path coefficients changed in the last bit when GCC fused a vfmaddsub in one unit and not in the
