@@ -65,6 +65,21 @@ def _model_rows(r, tg):
     return out
 
 
+def _build_rows(r, tg):
+    """``pm2dof derive`` of the 4-RRR platform beside gcc on the paper's C (bench/build_time.py):
+    wall and processor times, the target."""
+    if r.get("derive_rrr4_s") is None:
+        return []
+    return ["", f"the build: pm2dof derive rrr4_platform (SymPy, CasADi, the C compiled on "
+            f"{r.get('build_jobs')} processors) beside gcc -O3 on the paper robot's C (whole), "
+            f"back to back",
+            f"  derive {_fmt(r['derive_rrr4_s'])} s wall ({_fmt(r['derive_rrr4_cpu_s'])} s of "
+            f"processor time); gcc {_fmt(r['gcc_paper_s'])} s wall "
+            f"({_fmt(r['gcc_paper_cpu_s'])} s); processor times "
+            f"{_fmt(r.get('derive_rrr4_cpu_over_gcc_paper_cpu'))}x",
+            _target_line(r, tg, "derive_rrr4_over_gcc_paper", "derive / gcc, wall")]
+
+
 def _target_line(r, tg, key, label, unit="x"):
     tgt, res = _target_cells(tg.get(key))
     return f"  {label:60s} {_fmt(r.get(key), unit):>8s} {unit:2s} {tgt:>10s}  {res}"
@@ -242,6 +257,7 @@ def format_bench(results):
                          f"{r['plan_smooth_duration_s']:.4f} s vs strict "
                          f"{r['plan_smooth_strict_duration_s']:.4f} s")
     lines += _model_rows(r, tg)
+    lines += _build_rows(r, tg)
     lines += _design_rows(r, tg)
     lines += _overhead_rows(r, tg)
     lines.append("")

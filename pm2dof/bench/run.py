@@ -95,6 +95,10 @@ TARGETS = (
      "kinematic objectives, 50x50 region / their generated-C calls, worst model"),
     ("synthesis_dask_over_worker", "<=", 1.1, "x",
      "design run through Dask on 1 worker / its worker's time evaluating the designs"),
+    # the build (bench/build_time.py): pm2dof derive of the 4-RRR platform / gcc -O3 on the
+    # paper's C compiled whole, back to back in the same run
+    ("derive_rrr4_over_gcc_paper", "<=", 1.5, "x",
+     "pm2dof derive rrr4_platform / gcc -O3 on the paper robot's C (whole), wall"),
 )
 #: torque splits timed side by side (docs/benchmark.md, "The torque splits"); preload, N*m
 #: for a revolute actuator, N for a linear one
@@ -102,7 +106,7 @@ BENCH_SPLITS = tuple(SPLITS)
 BENCH_PRELOAD = 1.0
 
 
-def run_bench(model=None, quick=False, progress=None, models=None):
+def run_bench(model=None, quick=False, progress=None, models=None, build=None):
     """Benchmark the generated C where users wait, all in one run: the controller steps and
     rollouts, the derivatives, the planner, a design model and design studies, and every
     per-sample Model method's binding, beside their peers.
@@ -163,6 +167,12 @@ def run_bench(model=None, quick=False, progress=None, models=None):
         (:func:`pm2dof.bench.models.models_bench`: ``model_rows`` and the two platform
         targets; about 9 s in a full run, under 1 s in a quick one). Default: in the full
         run, not in the quick one (then those targets are n/a).
+    build : bool, optional
+        Also time ``pm2dof derive`` of the 4-RRR platform beside gcc ``-O3`` on the paper
+        robot's C compiled whole (:func:`pm2dof.bench.build_time.build_bench`: the
+        ``derive_rrr4_*``, ``gcc_paper_*`` keys and their target; about a minute and a half on
+        two idle processors, SymPy, CasADi and a C compiler needed). Default: in the full run,
+        not in the quick one (then the target is n/a).
 
     Returns
     -------
@@ -226,6 +236,18 @@ def run_bench(model=None, quick=False, progress=None, models=None):
 
     from .design import design_bench
     res.update(design_bench(b.repeats, b.batch_s, b.c_inner, say))
+
+    # --- the build: derive the 4-RRR platform beside gcc on the paper's C (bench/build_time.py)
+    if (not quick) if build is None else build:
+        from .build_time import build_bench
+        try:
+            res.update(build_bench(1, say))
+        except (ImportError, OSError, RuntimeError) as exc:
+            res["derive_rrr4_over_gcc_paper"] = None
+            notes["build"] = f"the derive and the compile could not run: {exc}"
+    else:
+        res["derive_rrr4_over_gcc_paper"] = None
+        notes["build"] = "the build was not timed (pm2dof bench --build adds it)"
 
     # --- design studies: designs per second, kinematic objectives vs C, Dask's overhead ----
     from .synthesis import synthesis_bench

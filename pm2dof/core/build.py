@@ -1,24 +1,34 @@
-# pm2dof.core.build: compile one CasADi-generated C file into a shared library for pm2dof.core._cbind.
-"""Compile a CasADi-generated C file into a shared library.
+# pm2dof.core.build: compile CasADi-generated C files into shared libraries for pm2dof.core._cbind.
+"""Compile CasADi-generated C files into shared libraries.
 
 The library is meant to be loaded with :class:`pm2dof.core._cbind.Library`. Compilation
 writes to a temporary file next to the target and renames it into place, so a
 process that loads the target path never sees a half-written library.
+
+A CasADi file is cut into translation units (:mod:`pm2dof.core.csplit`) compiled on every
+processor at once, then linked: with :data:`FLAGS`, at ``-O3`` the functions that hold a
+loop, at ``-O2`` the straight-line ones (:func:`pm2dof.core.csplit.opt_levels`).
+:func:`compile_libraries` compiles several libraries on one pool of processors (setup.py: the
+shipped models). Any other C file is compiled whole, as one command.
 """
 
 from __future__ import annotations
 
 import os
 import pathlib
+import platform
 import shlex
 import subprocess
 import sysconfig
 import tempfile
+import threading
 import time
 from collections.abc import Iterable
+from concurrent.futures import ThreadPoolExecutor
 
-__all__ = ["compile_library", "library_is_fresh", "BuildError", "STALE_TMP_AGE_S", "FLAGS",
-           "PORTABLE_FLAGS", "COMPILE_SECONDS_PER_MB", "compile_estimate"]
+__all__ = ["compile_library", "compile_libraries", "library_is_fresh", "BuildError",
+           "STALE_TMP_AGE_S", "FLAGS", "PORTABLE_FLAGS", "SPLIT_FLAGS",
+           "COMPILE_SECONDS_PER_MB", "compile_estimate", "build_jobs"]
 
 #: Temporary libraries (``.lib<name>.so.*.tmp``) older than this are left-overs of a build that
 #: was killed; :func:`compile_library` removes them. Younger ones may belong to a build that is
@@ -50,9 +60,20 @@ STALE_TMP_AGE_S = 600.0
 #:     made ~200 such calls). The library's own definitions are the ones used (nothing
 #:     interposes them), so they are inlined; results are unchanged (the same operations).
 #:
+#: ``-mno-fma`` (x86 only)
+#:     No fused multiply-add instructions at all. ``-ffp-contract=off`` alone does not keep GCC 12
+#:     from fusing: its SLP vectoriser turns a multiplication feeding an alternating
+#:     add/subtract into ``vfmaddsub``/``vfmsubadd`` (found in the 3-PRR point and the 4-RRR
+#:     design libraries), and whether it does depends on the code around it, so the results of
+#:     one function changed in the last bit with the translation unit it was compiled in.
+#:     Without FMA the compiler cannot fuse, and the results are those of the C text, however
+#:     it is cut (and the same as :data:`PORTABLE_FLAGS`', which never had FMA).
+#:
 #: ``-ffast-math`` is deliberately absent: it lets the compiler assume there are no
 #: NaNs or infinities (breaking ``isfinite`` checks) and reassociate arithmetic
 #: (breaking agreement with CasADi's reference evaluation).
+_X86 = platform.machine().lower() in ("x86_64", "amd64", "i386", "i686")
+
 FLAGS: tuple[str, ...] = (
     "-O3",
     "-march=native",
@@ -61,6 +82,7 @@ FLAGS: tuple[str, ...] = (
     "-shared",
     "-fno-math-errno",
     "-fno-semantic-interposition",
+    *(("-mno-fma",) if _X86 else ()),
 )
 
 #: :data:`FLAGS` without ``-march=native``: for libraries that travel to other machines (the
@@ -68,6 +90,13 @@ FLAGS: tuple[str, ...] = (
 #: ``-ffast-math`` and with ``-ffp-contract=off`` the compiler may not reorder or fuse
 #: floating-point operations, whichever instructions it picks.
 PORTABLE_FLAGS: tuple[str, ...] = tuple(f for f in FLAGS if f != "-march=native")
+
+#: Added to the flags of every translation unit of a CasADi file cut by
+#: :mod:`pm2dof.core.csplit`: ``-fvisibility=hidden`` keeps the functions the units share
+#: (``casadi_fN``) inside the library; ``-DGCC_HASCLASSVISIBILITY`` makes CasADi's
+#: ``CASADI_SYMBOL_EXPORT`` mark its entry points visible, so they are the library's only
+#: exported symbols; ``-pipe``: no temporary assembler files.
+SPLIT_FLAGS: tuple[str, ...] = ("-fvisibility=hidden", "-DGCC_HASCLASSVISIBILITY", "-pipe")
 
 #: Processor seconds per megabyte (1e6 bytes) of generated C that :func:`compile_library`'s
 #: gcc 12 ``-O3 -march=native`` took on the shipped models, one processor each (user time):
@@ -79,6 +108,43 @@ COMPILE_SECONDS_PER_MB = 16.0
 
 #: Libraries linked after the source file: the generated code calls libm.
 LIBS: tuple[str, ...] = ("-lm",)
+
+#: Environment variable: how many compilers run at once (default: the processors this process
+#: may use, :func:`build_jobs`).
+JOBS_ENV = "PM2DOF_BUILD_JOBS"
+
+
+def build_jobs() -> int:
+    """How many compilers run at once: ``$PM2DOF_BUILD_JOBS`` if set to a positive integer, else
+    the processors this process may run on."""
+    try:
+        jobs = int(os.environ.get(JOBS_ENV, ""))
+    except ValueError:
+        jobs = 0
+    if jobs > 0:
+        return jobs
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):
+        return max(1, os.cpu_count() or 1)
+
+
+def _csplit():
+    """pm2dof.core.csplit, also when this module was loaded as a file (setup.py, make libs)."""
+    try:
+        from . import csplit
+    except ImportError:
+        import importlib.util
+        import sys
+        name = "_pm2dof_csplit"
+        if name not in sys.modules:
+            spec = importlib.util.spec_from_file_location(
+                name, pathlib.Path(__file__).with_name("csplit.py"))
+            mod = importlib.util.module_from_spec(spec)
+            sys.modules[name] = mod
+            spec.loader.exec_module(mod)
+        csplit = sys.modules[name]
+    return csplit
 
 
 try:
@@ -159,6 +225,7 @@ def compile_library(
     extra_flags: Iterable[str] = (),
     portable: bool = False,
     progress=None,
+    jobs: int | None = None,
 ) -> pathlib.Path:
     """Compile one C file into a shared library, atomically replacing ``out_path``.
 
@@ -176,6 +243,8 @@ def compile_library(
     progress : callable(str), optional
         Receives a line before the compiler starts (the C file's size and
         :func:`compile_estimate`) and one when it is done (the elapsed time).
+    jobs : int, optional
+        Compilers run at once on a CasADi file's units; default :func:`build_jobs`.
 
     Returns
     -------
@@ -194,9 +263,12 @@ def compile_library(
     Notes
     -----
     The compiler is ``$CC``, else ``sysconfig.get_config_var("CC")``, else ``cc``.
-    The command is ``CC FLAGS extra_flags -o TMP c_path -lm``, where ``TMP`` is a
-    fresh file in the directory of ``out_path`` that is then renamed onto
-    ``out_path`` with :func:`os.replace` (atomic on POSIX), so a concurrently
+    A C file that is not laid out as CasADi writes it is compiled whole:
+    ``CC FLAGS extra_flags -o TMP c_path -lm``. A CasADi file is cut into translation units
+    (:func:`pm2dof.core.csplit.plan_units`), each compiled with ``CC FLAGS SPLIT_FLAGS
+    extra_flags -c`` (the unit's level in place of ``-O3``), ``jobs`` at a time, costliest first,
+    then linked into ``TMP``. ``TMP`` is a fresh file in the directory of ``out_path`` that is
+    then renamed onto ``out_path`` with :func:`os.replace` (atomic on POSIX), so a concurrently
     running process sees either the old or the new library, never a partial one.
 
     A process that already has ``out_path`` open through ``dlopen`` keeps the old
@@ -205,65 +277,196 @@ def compile_library(
     After the library, a build record :func:`stamp_path` is written (source hash, flags), which
     :func:`library_is_fresh` reads.
     """
-    c_path = pathlib.Path(c_path)
-    out_path = pathlib.Path(out_path).absolute()
-    if not c_path.is_file():
-        raise FileNotFoundError(f"C source not found: {c_path}")
-    out_path.parent.mkdir(parents=True, exist_ok=True)
-    remove_stale_temporaries(out_path)
+    return compile_libraries([(c_path, out_path)], extra_flags=extra_flags, portable=portable,
+                             progress=progress, jobs=jobs)[0]
 
-    fd, tmp_name = tempfile.mkstemp(
-        prefix=f".{out_path.name}.", suffix=".tmp", dir=out_path.parent
-    )
-    os.close(fd)
-    tmp = pathlib.Path(tmp_name)
-    flags = [*(PORTABLE_FLAGS if portable else FLAGS), *[str(f) for f in extra_flags]]
-    cmd = [
-        *_compiler(),
-        *flags,
-        "-o",
-        str(tmp),
-        str(c_path),
-        *LIBS,
-    ]
-    if progress is not None:
-        size = c_path.stat().st_size
-        progress(f"compiling {c_path.name} ({size / 1e6:.1f} MB of C) with {cmd[0]} "
-                 f"{flags[0]}: about {compile_estimate(c_path):.0f} s on an idle processor "
-                 f"({COMPILE_SECONDS_PER_MB:.0f} s per MB), longer while other programs use it")
-    t0 = time.monotonic()
+
+def compile_libraries(pairs, *, extra_flags: Iterable[str] = (), portable: bool = False,
+                      progress=None, jobs: int | None = None) -> list[pathlib.Path]:
+    """Compile several C files into their libraries on one pool of ``jobs`` compilers.
+
+    Every library's translation units (see :func:`compile_library`) are queued together,
+    largest first, so the processors stay busy until the last library is linked.
+
+    Parameters
+    ----------
+    pairs : iterable of (path, path)
+        ``(c_path, out_path)`` of each library.
+    extra_flags, portable, progress, jobs
+        As in :func:`compile_library`; ``progress`` receives the lines of every library.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The absolute path of each library, in the order of ``pairs``.
+
+    Raises
+    ------
+    FileNotFoundError
+        If a C file does not exist (before anything is compiled).
+    BuildError
+        The first failure (the other libraries' builds are stopped); no library of a failed
+        build is replaced.
+    """
+    extra = [str(f) for f in extra_flags]
+    builds = [_Build(c, o, extra, portable, progress) for c, o in pairs]
+    jobs = build_jobs() if jobs is None else max(1, int(jobs))
+    failed = threading.Event()
+
+    def run(task):
+        b, u = task
+        if not failed.is_set():
+            try:
+                b.compile_unit(u)
+            except BaseException:
+                failed.set()
+                raise
     try:
-        try:
-            proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
-        except FileNotFoundError:
-            raise BuildError(f"{NO_COMPILER}\ncommand: {shlex.join(cmd)}") from None
-        except OSError as exc:
-            raise BuildError(
-                f"cannot run the C compiler: {exc}\ncommand: {shlex.join(cmd)}"
-            ) from exc
-        if proc.returncode != 0:
-            raise BuildError(
-                f"C compiler failed with exit status {proc.returncode}\n"
-                f"command: {shlex.join(cmd)}\n"
-                f"stderr:\n{proc.stderr.strip()}"
-            )
-        # mkstemp creates the file with mode 0600; a library is normally 0755.
-        os.chmod(tmp, 0o755)
-        os.replace(tmp, out_path)
+        for b in builds:
+            b.start()
+        for b in builds:
+            b.say_start(jobs)
+        # costliest first over every library: the processors stay busy until the last link
+        tasks = sorted(((b, u) for b in builds for u in range(len(b.units))),
+                       key=lambda bu: -bu[0].units[bu[1]][0])
+        if len(tasks) <= 1 or jobs == 1:
+            for task in tasks:
+                run(task)
+        else:
+            with ThreadPoolExecutor(max_workers=min(jobs, len(tasks))) as pool:
+                futures = [pool.submit(run, task) for task in tasks]
+                for fut in futures:
+                    fut.result()
+        return [b.finish() for b in builds]
     finally:
-        if tmp.exists():
-            tmp.unlink()
-    _write_stamp(out_path, c_path, cmd[0], flags)
-    if progress is not None:
-        progress(f"compiled {out_path} in {time.monotonic() - t0:.1f} s")
-    return out_path
+        for b in builds:
+            b.cleanup()
 
 
-def _write_stamp(lib_path, c_path, compiler, flags):
-    """The build record, written atomically after the library."""
+class _Build:
+    """One library being built: its units' commands, temporary files, the link, the record."""
+
+    def __init__(self, c_path, out_path, extra, portable, progress):
+        self.c_path = pathlib.Path(c_path)
+        self.out_path = pathlib.Path(out_path).absolute()
+        if not self.c_path.is_file():
+            raise FileNotFoundError(f"C source not found: {self.c_path}")
+        self.progress, self.cc = progress, _compiler()
+        self.flags = [*(PORTABLE_FLAGS if portable else FLAGS), *extra]
+        self.tmp = self.objdir = None
+        text = self.c_path.read_text(errors="replace")
+        csplit = _csplit()
+        split = csplit.split_casadi_c(text, str(self.c_path))
+        self.units = []                           # (cost, flags, C text or None)
+        if split is None:                         # not CasADi's layout: one command, as is
+            self.units.append((len(text), self.flags, None))
+            self.link_flags = None
+            return
+        self._plan = (csplit, split, csplit.opt_levels(split))
+        self.link_flags = ["-shared", *extra]
+
+    def unit_flags(self, opt):
+        """The flags of a unit compiled at ``opt`` (``("-O2",)``, ...): :attr:`flags` with
+        ``opt`` in place of the first (``-O3``; ``extra_flags`` come later, so they still win),
+        without ``-shared``, with :data:`SPLIT_FLAGS`."""
+        return [*opt, *(f for f in self.flags[1:] if f != "-shared"), *SPLIT_FLAGS]
+
+    def start(self):
+        """Plan the units, make the temporaries, say what starts."""
+        self.out_path.parent.mkdir(parents=True, exist_ok=True)
+        remove_stale_temporaries(self.out_path)
+        if self.link_flags is not None:
+            csplit, split, levels = self._plan
+            plan = csplit.plan_units(split, levels)
+            # (cost, flags, C text): the first unit holds the configuration entry points
+            self.units = [(cost, self.unit_flags(opt), split.unit(blocks, first=i == 0))
+                          for i, (opt, blocks, cost) in enumerate(plan)]
+            self.levels = {opt: sum(o == opt for o, _, _ in plan) for opt, _, _ in plan}
+            self.objdir = pathlib.Path(tempfile.mkdtemp(prefix="pm2dof-build-"))
+        fd, tmp_name = tempfile.mkstemp(prefix=f".{self.out_path.name}.", suffix=".tmp",
+                                        dir=self.out_path.parent)
+        os.close(fd)
+        self.tmp = pathlib.Path(tmp_name)
+        self.t0 = time.monotonic()
+
+    def say_start(self, jobs):
+        """The progress line before the compilers start."""
+        if self.progress is None:
+            return
+        size, est = self.c_path.stat().st_size, compile_estimate(self.c_path)
+        if self.link_flags is None:
+            how, when = "", f"about {est:.0f} s on an idle processor"
+        else:
+            k = min(jobs, len(self.units))
+            levels = ", ".join(f"{n} at {opt[0]}" for opt, n in sorted(self.levels.items(),
+                                                                       reverse=True))
+            how = f" in {len(self.units)} units ({levels}), {k} at a time"
+            when = (f"about {est:.0f} s of processor time, {est / k:.0f} s on {k} idle "
+                    f"processor{'s' if k > 1 else ''}")
+        self.progress(f"compiling {self.c_path.name} ({size / 1e6:.1f} MB of C) with "
+                      f"{self.cc[0]} {self.flags[0]}{how}: {when} "
+                      f"({COMPILE_SECONDS_PER_MB:.0f} s per MB), longer while other "
+                      f"programs use it")
+        self.t0 = time.monotonic()
+
+    def _obj(self, u):
+        return self.objdir / f"unit{u}.o"
+
+    def compile_unit(self, u):
+        """Compile unit ``u`` (the whole library when the file is not cut)."""
+        _, flags, text = self.units[u]
+        if text is None:
+            _run([*self.cc, *flags, "-o", str(self.tmp), str(self.c_path), *LIBS])
+        else:
+            _run([*self.cc, *flags, "-c", "-x", "c", "-o", str(self._obj(u)), "-"], text)
+
+    def finish(self):
+        """Link the units (when cut), put the library in place, write its record."""
+        if self.link_flags is not None:
+            _run([*self.cc, *self.link_flags, "-o", str(self.tmp),
+                  *(str(self._obj(u)) for u in range(len(self.units))), *LIBS])
+        # mkstemp creates the file with mode 0600; a library is normally 0755.
+        os.chmod(self.tmp, 0o755)
+        os.replace(self.tmp, self.out_path)
+        extra = None
+        if self.link_flags is not None:
+            extra = {"split_flags": list(SPLIT_FLAGS), "units": len(self.units),
+                     "unit_levels": {" ".join(opt): n for opt, n in sorted(self.levels.items())}}
+        _write_stamp(self.out_path, self.c_path, self.cc[0], self.flags, extra)
+        if self.progress is not None:
+            self.progress(f"compiled {self.out_path} in {time.monotonic() - self.t0:.1f} s")
+        return self.out_path
+
+    def cleanup(self):
+        """Remove what a failed or finished build leaves: the temporary library, the objects."""
+        if self.tmp is not None and self.tmp.exists():
+            self.tmp.unlink()
+        if self.objdir is not None:
+            import shutil
+            shutil.rmtree(self.objdir, ignore_errors=True)
+
+
+def _run(cmd, stdin=None):
+    """Run one compiler command; :class:`BuildError` with the command and its stderr."""
+    try:
+        proc = subprocess.run(cmd, input=stdin, capture_output=True, text=True, check=False)
+    except FileNotFoundError:
+        raise BuildError(f"{NO_COMPILER}\ncommand: {shlex.join(cmd)}") from None
+    except OSError as exc:
+        raise BuildError(f"cannot run the C compiler: {exc}\ncommand: {shlex.join(cmd)}") from exc
+    if proc.returncode != 0:
+        raise BuildError(
+            f"C compiler failed with exit status {proc.returncode}\n"
+            f"command: {shlex.join(cmd)}\n"
+            f"stderr:\n{proc.stderr.strip()}"
+        )
+
+
+def _write_stamp(lib_path, c_path, compiler, flags, extra=None):
+    """The build record, written atomically after the library (``extra``: more keys)."""
     import json
     record = {"source": c_path.name, "source_sha256": _sha256(c_path), "flags": flags,
-              "compiler": compiler}
+              "compiler": compiler, **(extra or {})}
     stamp = stamp_path(lib_path)
     fd, tmp = tempfile.mkstemp(prefix=f".{stamp.name}.", suffix=".tmp", dir=stamp.parent)
     with os.fdopen(fd, "w") as fh:

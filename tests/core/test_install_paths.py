@@ -240,9 +240,10 @@ def test_derive_says_when_the_compiler_starts_and_how_long_it_took(tmp_path, mon
     wrote = next(i for i, line in enumerate(lines) if "] wrote myrobot.c" in line)
     stage = lines[wrote + 1]
     assert re.fullmatch(rf"\[derive +\d+\.\ds\] compiling myrobot\.c \({size / 1e6:.1f} MB of "
-                        rf"C\) with {re.escape(str(cc))} -O3: about {size * 16e-6:.0f} s on an "
-                        rf"idle processor \(16 s per MB\), longer while other programs use it",
-                        stage), stage
+                        rf"C\) with {re.escape(str(cc))} -O3 in \d+ units \(\d+ at -O\d(, \d+ at "
+                        rf"-O\d)*\), \d+ at a time: about {size * 16e-6:.0f} s of processor time, "
+                        rf"\d+ s on \d+ idle processors? \(16 s per MB\), longer while other "
+                        rf"programs use it", stage), stage
     done = re.fullmatch(r"\[derive +(\S+)s\] compiled (\S+) in (\S+) s", lines[wrote + 2])
     assert done and done.group(2) == str(c_file.parent / "libmyrobot.so"), lines[wrote + 2]
     assert 1.0 <= float(done.group(3)) <= float(done.group(1)), lines[wrote + 2]
