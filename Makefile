@@ -47,10 +47,11 @@ $(DEV_STAMP): $(STAMP)
 	PM2DOF_BUILD_MODELS=none $(PY) -m pip install --quiet -e '.[dev]'
 	touch $@
 
-# $(STAMP) is order-only: a newer stamp (pyproject.toml edited) must not compile them all again
+# $(STAMP) is order-only: a newer stamp (pyproject.toml edited) must not compile them all again;
+# make -j runs the libraries side by side, so each runs one compiler (PM2DOF_BUILD_JOBS=1)
 define LIB_RULE
 $(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c | $(STAMP)
-	$(PY) pm2dof/core/build.py $$< $$@
+	PM2DOF_BUILD_JOBS=1 $(PY) pm2dof/core/build.py $$< $$@
 endef
 $(foreach d,$(MODEL_DIRS),$(eval $(call LIB_RULE,$(d))))
 
