@@ -95,8 +95,10 @@ IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "mu_strategy": "mono
                  "acceptable_obj_change_tol": 1e-7}
 
 #: IPOPT's options of a solve after samples were added (:mod:`.design_limits`): from the last
-#: solution and its multipliers, the barrier parameter near where it ended
-WARM_START = {"warm_start_init_point": "yes", "mu_init": 1e-5}
+#: solution and its multipliers, the barrier parameter near where it ended (the 3-PRR
+#: platform's two later solves: 170 iterations from mu 1e-5, 126 from 1e-6; from 1e-7 the
+#: second did not converge in the rest of the 500)
+WARM_START = {"warm_start_init_point": "yes", "mu_init": 1e-6}
 #: samples on either side of a broken one that are added with it (:mod:`.design_limits`)
 NEIGHBOURS = 2
 #: relative slack (:func:`.design_limits.sample_slack`) below which an added sample is kept
