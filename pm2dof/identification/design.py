@@ -111,9 +111,9 @@ NEAR = 0.01
 #: IPOPT first sees the torque and singularity limits at every CONSTRAINT_STRIDE-th constraint
 #: sample (250 of the default 1000 per period); the samples where its solution does worse than
 #: at those are added and it solves again from there, until none does (:mod:`.design_limits`).
-#: The problem solved is the same: those limits at all ``constraint_samples``. The speed,
-#: acceleration and region limits are at (at least) as many samples as IPOPT first sees
-#: (:func:`.design_limits.kinematic_samples`). Recorded in the file's ``[design]``.
+#: The problem solved is the same: those limits at all ``constraint_samples``. (The speed,
+#: acceleration and region limits are at :func:`.design_limits.kinematic_samples`, in every
+#: solve.) Recorded in the file's ``[design]``.
 CONSTRAINT_STRIDE = 4
 
 #: IPOPT's return statuses of a converged design; any other (Maximum_Iterations_Exceeded,
@@ -602,7 +602,7 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
     g_rest, lb_rest, ub_rest = rest_constraints(z, m, L, base_hz)
     # the kinematic limits at M samples that bound them everywhere; the model's at all K
     # samples, IPOPT first seeing every stride-th, then the ones that do worse (design_limits)
-    M = kinematic_samples(K, CONSTRAINT_STRIDE, L, safety)
+    M = kinematic_samples(K, L, safety)
     g_kin, lb_kin, ub_kin = kinematic_constraints(z, lim, base_hz=base_hz, L=L, m=m,
                                                   t=np.arange(M) / (M * base_hz))
     g_all, lb_all, ub_all = model_constraints(z, per_sample, lim, base_hz=base_hz, L=L, m=m,

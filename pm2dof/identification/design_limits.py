@@ -67,24 +67,25 @@ def _rows_per_sample(n):
     return [n, 2]
 
 
-def kinematic_samples(K, stride, L, safety):
-    """M, the kinematic limits' samples per period: at least K // stride, and enough that a
+def kinematic_samples(K, L, safety):
+    """M, the kinematic limits' samples per period: the fewest that bound them everywhere, a
     squared limit (degree 2 L) imposed at ``safety``^2 of its bound at M equispaced samples
-    holds everywhere, cos(2 pi L / M) >= safety^2 (module docstring; a phi limit, degree L at
-    ``safety``, then holds too). K when no M <= K does (``safety`` 1: no margin to cover).
+    holding at every instant when cos(2 pi L / M) >= safety^2 (module docstring; a phi limit,
+    degree L at ``safety``, then holds too): 223 for L = 10 and safety 0.98. Each sample is
+    6 dense rows for IPOPT (3 for a point), so no more than that. At most K: with a margin too
+    small for K samples (``safety`` 1: none), the limits at the K constraint samples.
 
     Parameters
     ----------
     K : int
-        Constraint samples per period. stride : int. L : int, harmonics.
+        Constraint samples per period. L : int, harmonics.
     safety : float
         In (0, 1].
     """
-    M = max(int(K) // int(stride), 1)
     if safety >= 1:
         return int(K)
     need = math.floor(2 * math.pi * L / math.acos(safety ** 2)) + 1
-    return int(min(max(M, need), K))
+    return int(min(need, K))
 
 
 def rest_constraints(z, m, L, base_hz):

@@ -84,19 +84,18 @@ def test_limits_at_samples_are_the_motion_and_the_model(name):
 
 @pytest.mark.parametrize("L,safety", [(10, 0.98), (4, 0.98), (10, 0.995), (25, 0.9)])
 def test_kinematic_samples_bound_the_limits_between_samples(L, safety):
-    """kinematic_samples: M >= K // stride, and M samples per period bound a squared limit
-    (degree 2 L) within safety^2 of its bound everywhere: the worst case, a top harmonic
-    whose peaks fall midway between two samples, and random series scaled to touch the bound at
-    the samples, checked on a grid 50 times finer. M = K without a margin (safety 1)."""
-    K, stride = 1000, 4
-    M = kinematic_samples(K, stride, L, safety)
-    assert K // stride <= M <= K
+    """kinematic_samples: the fewest M with cos(2 pi L / M) >= safety^2, and M samples per
+    period bound a squared limit (degree 2 L) within safety^2 of its bound everywhere: random
+    series (speed^2 of (x, y)), checked on a grid 50 times finer. M = K without a margin
+    (safety 1) or when K samples are too few."""
+    K = 1000
+    M = kinematic_samples(K, L, safety)
+    assert M <= K
     w = 2 * np.pi * np.arange(1, L + 1)                   # period 1 s
     t = np.arange(M) / M
     fine = np.arange(50 * M) / (50 * M)
-    # the top harmonic's peaks midway between samples: v^2 = cos^2(w_L (t - 1/(2 M)))
-    top = np.cos(w[-1] * (t - 0.5 / M)) ** 2
-    assert 1.0 / top.max() <= 1 / safety ** 2
+    # the fewest with the bound's factor within the margin (degree 2 L)
+    assert np.cos(2 * np.pi * L / M) >= safety ** 2 > np.cos(2 * np.pi * L / (M - 1))
     rng = np.random.default_rng(3)
     for _ in range(200):
         a, b = rng.normal(size=(2, 2, L)) / np.arange(1, L + 1) ** rng.uniform(0, 2)
@@ -106,9 +105,9 @@ def test_kinematic_samples_bound_the_limits_between_samples(L, safety):
                       for j in range(2))
             return vx ** 2 + vy ** 2
         assert speed2(fine).max() <= speed2(t).max() / safety ** 2
-    assert kinematic_samples(K, stride, L, 1.0) == K
+    assert kinematic_samples(K, L, 1.0) == K
     # a margin too small for K samples: all K (the limits at the constraint samples, as before)
-    assert kinematic_samples(K, stride, 400, 0.98) == K
+    assert kinematic_samples(K, 400, 0.98) == K
 
 
 def test_carried_multipliers_keep_their_samples():
