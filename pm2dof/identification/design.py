@@ -21,10 +21,12 @@ back as CasADi SX (:mod:`.c_graph`: the same operations, so the same values; Cas
 differentiates them exactly); nothing is re-derived. A model whose C cannot be read that way
 falls back to ``casadi.external`` on the compiled library with finite differences. The torque
 and singularity limits' Jacobian is the per-sample Jacobian times the Fourier basis
-(:mod:`.sampled`), and IPOPT sees the limits at every :data:`CONSTRAINT_STRIDE`-th sample
+(:mod:`.sampled`). The speed, acceleration, region and phi limits are polynomials in the
+series: imposed at enough samples, their ``safety`` margin bounds them between the samples
+(:func:`.design_limits.kinematic_samples`). The torque and singularity limits are checked at
+all ``constraint_samples``: IPOPT sees them at every :data:`CONSTRAINT_STRIDE`-th sample
 first, then also at the samples its solution broke, until none is broken
-(:mod:`.design_limits`): the problem is the one with the limits at all
-``constraint_samples``. In the objective, the Coulomb columns use tanh(qd / 0.1 rad/s) for
+(:mod:`.design_limits`). In the objective, the Coulomb columns use tanh(qd / 0.1 rad/s) for
 sign(qd): it keeps log det differentiable, and samples slower than 0.1 rad/s are left out by
 ``identify fit`` anyway.
 
@@ -66,7 +68,9 @@ from .c_graph import CGraphError, sx_function
 from .design_limits import (
     Limits,
     carry_multipliers,
-    limit_constraints,
+    kinematic_constraints,
+    kinematic_samples,
+    model_constraints,
     rest_constraints,
     sample_slack,
     sample_violations,
@@ -82,23 +86,34 @@ __all__ = ["design_excitation", "SeriesOptions", "LimitOptions", "SolverOptions"
            "STAGE_SECONDS", "CONSTRAINT_STRIDE", "WARM_START"]
 
 #: IPOPT's options of the design (``max_iter``: :class:`SolverOptions`);
-#: written to the file's ``[design.ipopt]``.
-IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "tol": 1e-6, "acceptable_tol": 1e-4,
-                 "acceptable_iter": 10, "acceptable_obj_change_tol": 1e-7}
+#: written to the file's ``[design.ipopt]``. ``mu_strategy`` monotone (Fiacco-McCormick):
+#: with the adaptive barrier IPOPT ran without it (mu rising and falling in its log), the
+#: 3-PRR platform's design stopped at 500 iterations; monotone converges
+#: (docs/results-identification.md, by kind)
+IPOPT_OPTIONS = {"hessian_approximation": "limited-memory", "mu_strategy": "monotone",
+                 "tol": 1e-6, "acceptable_tol": 1e-4, "acceptable_iter": 10,
+                 "acceptable_obj_change_tol": 1e-7}
 
 #: IPOPT's options of a solve after samples were added (:mod:`.design_limits`): from the last
-#: solution and its multipliers, the barrier parameter near where it ended
-WARM_START = {"warm_start_init_point": "yes", "mu_init": 1e-5}
+#: solution and its multipliers, the barrier parameter near where it ended (the 3-PRR
+#: platform's two later solves: 170 iterations from mu 1e-5, 126 from 1e-6; from 1e-7 the
+#: second did not converge in the rest of the 500)
+WARM_START = {"warm_start_init_point": "yes", "mu_init": 1e-6}
 #: samples on either side of a broken one that are added with it (:mod:`.design_limits`)
 NEIGHBOURS = 2
-#: relative slack (:func:`.design_limits.sample_slack`) below which a sample IPOPT saw is kept
-#: when it solves again; samples farther from every limit are dropped (and added back if a
-#: later solution breaks a limit there)
+#: relative slack (:func:`.design_limits.sample_slack`) below which an added sample is kept
+#: when IPOPT solves again; added samples farther from every limit are dropped (and added back
+#: if a later solution breaks a limit there). The first solve's samples are never dropped:
+#: without the singularity limits at the objective's samples (the same instants by default),
+#: log det grows without bound towards a singularity (measured: the 3-PRR point's second solve
+#: ran off to log det 285 and 1e17 steps)
 NEAR = 0.01
-#: IPOPT first sees the limits at every CONSTRAINT_STRIDE-th constraint sample (250 of the
-#: default 1000 per period); the samples where its solution does worse than at those are added
-#: and it solves again from there, until none does (:mod:`.design_limits`). The problem solved
-#: is the same: the limits at all ``constraint_samples``. Recorded in the file's ``[design]``.
+#: IPOPT first sees the torque and singularity limits at every CONSTRAINT_STRIDE-th constraint
+#: sample (250 of the default 1000 per period); the samples where its solution does worse than
+#: at those are added and it solves again from there, until none does (:mod:`.design_limits`).
+#: The problem solved is the same: those limits at all ``constraint_samples``. (The speed,
+#: acceleration and region limits are at :func:`.design_limits.kinematic_samples`, in every
+#: solve.) Recorded in the file's ``[design]``.
 CONSTRAINT_STRIDE = 4
 
 #: IPOPT's return statuses of a converged design; any other (Maximum_Iterations_Exceeded,
@@ -152,7 +167,10 @@ class LimitOptions:
     safety : float
         The fraction of every limit imposed at the constraints' samples (default 0.98), in
         (0, 1], so that the limits hold between the samples too (:func:`check_excitation`
-        checks every 1 ms).
+        checks every 1 ms): an upper limit times ``safety``, a lower one (the singularity
+        measures') over it. The speed, acceleration and region limits are at enough samples
+        that this margin bounds them at every instant
+        (:func:`.design_limits.kinematic_samples`).
     """
 
     v_max: float = 0.5
@@ -576,20 +594,26 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
     # -objective + this = log det(Phi^T Phi / samples), the unscaled per-sample log det
     to_logdet = float(2 * np.sum(np.log(norms)) - r * np.log(samples))
 
-    lim = Limits(safety * v_max, safety * a_max, safety * radius, tau_lim, sing_min, c0,
-                 {k: safety * v for k, v in phi.items()})
+    # a lower bound's margin is the same fraction as an upper bound's: sing_min / safety
+    lim = Limits(safety * v_max, safety * a_max, safety * radius, tau_lim, sing_min / safety,
+                 c0, {k: safety * v for k, v in phi.items()})
     K, n = int(constraint_samples), model.n_legs
     t_all = np.arange(K) / (K * base_hz)
     g_rest, lb_rest, ub_rest = rest_constraints(z, m, L, base_hz)
-    g_all, lb_all, ub_all = limit_constraints(z, per_sample, lim, base_hz=base_hz, L=L, m=m,
+    # the kinematic limits at M samples that bound them everywhere; the model's at all K
+    # samples, IPOPT first seeing every stride-th, then the ones that do worse (design_limits)
+    M = kinematic_samples(K, L, safety)
+    g_kin, lb_kin, ub_kin = kinematic_constraints(z, lim, base_hz=base_hz, L=L, m=m,
+                                                  t=np.arange(M) / (M * base_hz))
+    g_all, lb_all, ub_all = model_constraints(z, per_sample, lim, base_hz=base_hz, L=L, m=m,
                                               t=t_all)
     every_sample = ca.Function("limits", [z], [g_all])
-    # IPOPT first sees every stride-th sample; samples that do worse are added (design_limits)
-    seen = np.arange(0, K, min(CONSTRAINT_STRIDE, K))
+    seen = first = np.arange(0, K, min(CONSTRAINT_STRIDE, K))
     if progress:
         progress(f"IPOPT: {z.numel()} coefficients, objective log det(Phi^T Phi / K) over "
-                 f"{samples} samples per period, limits at {K} samples per period "
-                 f"(IPOPT first sees {len(seen)} of them)")
+                 f"{samples} samples per period, speed, acceleration and region limits at {M} "
+                 f"samples per period, torque and singularity limits at {K} (IPOPT first sees "
+                 f"{len(seen)} of them)")
     # where no bar is drawn (stderr not a terminal, or a plain callable), a stage line every
     # STAGE_SECONDS instead: a design takes minutes (docs/results-identification.md, per kind)
     lines = (progress if progress and not (isinstance(progress, Progress) and progress.bars)
@@ -599,22 +623,26 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
             noticing_ctrl_c() as ctrl_c, _single_thread_blas() as blas_threads:
         while True:
             rounds += 1
-            g, lbg, ubg = limit_constraints(z, per_sample, lim, base_hz=base_hz, L=L, m=m,
+            g, lbg, ubg = model_constraints(z, per_sample, lim, base_hz=base_hz, L=L, m=m,
                                             t=t_all[seen])
             # IPOPT's iterations shown as they happen; the callback also stops IPOPT at the
             # iteration after a Ctrl-C
-            callback = _IterationProgress(z.numel(), 2 * m + len(lbg), iterations, to_logdet,
+            head = 2 * m + len(lb_kin)      # rows before the model's: rest, kinematic
+            callback = _IterationProgress(z.numel(), head + len(lbg), iterations, to_logdet,
                                           ctrl_c, lines, int(max_iter), used)
             solver = ca.nlpsol("excitation", "ipopt",
-                               {"x": z, "f": objective, "g": ca.vertcat(g_rest, g)},
+                               {"x": z, "f": objective, "g": ca.vertcat(g_rest, g_kin, g)},
                                {"iteration_callback": callback, "ipopt.print_level": 0,
                                 "print_time": False, "ipopt.sb": "yes",
+                                # a trial point where a leg's ik has no solution (NaN rows) is
+                                # IPOPT's evaluation error: it cuts the step back; not printed
+                                "show_eval_warnings": False,
                                 "ipopt.max_iter": int(max_iter) - used,
                                 **{f"ipopt.{k}": v for k, v in IPOPT_OPTIONS.items()},
                                 **({f"ipopt.{k}": v for k, v in WARM_START.items()}
                                    if warm else {})})
-            sol = solver(x0=zs, lbg=np.concatenate([lb_rest, lbg]),
-                         ubg=np.concatenate([ub_rest, ubg]), **warm)
+            sol = solver(x0=zs, lbg=np.concatenate([lb_rest, lb_kin, lbg]),
+                         ubg=np.concatenate([ub_rest, ub_kin, ubg]), **warm)
             zs = np.array(sol["x"]).ravel()
             lam = np.array(sol["lam_g"]).ravel()
             stats = solver.stats()
@@ -622,23 +650,24 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
             if ctrl_c or stats["return_status"] == "User_Requested_Stop":
                 raise KeyboardInterrupt(f"IPOPT stopped after {used} iterations")
             values = every_sample(zs)
-            worst = sample_violations(values, lb_all, ub_all, n, phi)
+            worst = sample_violations(values, lb_all, ub_all, n)
             worse = np.flatnonzero(worst > max(worst[seen].max(), 1e-9))
             if (not len(worse) or stats["return_status"] not in CONVERGED
                     or used >= int(max_iter)):
                 break
-            # again with the broken samples and their neighbours (a peak between two samples
-            # IPOPT saw moves a little when it solves again) and the samples it saw that are
-            # within NEAR of a limit; the others are dropped (checked again after the solve)
-            near = np.flatnonzero(sample_slack(values, lb_all, ub_all, n, phi) < NEAR)
-            now = np.union1d(np.intersect1d(seen, near), (
+            # again with the first solve's samples, the broken samples and their neighbours (a
+            # peak between two samples IPOPT saw moves a little when it solves again) and the
+            # added samples within NEAR of a limit; the others are dropped (checked again after
+            # the solve)
+            near = np.flatnonzero(sample_slack(values, lb_all, ub_all, n) < NEAR)
+            now = np.union1d(np.union1d(first, np.intersect1d(seen, near)), (
                 worse[:, None] + np.arange(-NEIGHBOURS, NEIGHBOURS + 1)).ravel() % K)
             if progress:
                 progress(f"IPOPT {stats['return_status']} after {used} iterations; "
                          f"{len(worse)} of the other samples break the limits (by up to "
                          f"{worst.max():.3g}): solving again with {len(now)} samples")
-            warm = {"lam_g0": np.concatenate([lam[:2 * m], carry_multipliers(
-                lam[2 * m:], seen, now, n, phi)]), "lam_x0": np.array(sol["lam_x"]).ravel()}
+            warm = {"lam_g0": np.concatenate([lam[:head], carry_multipliers(
+                lam[head:], seen, now, n)]), "lam_x0": np.array(sol["lam_x"]).ravel()}
             seen = now
     exc = _with_rest(FourierExcitation(base_hz, periods, zs[2 * m * L:],
                                        zs[:m * L].reshape(m, L),
@@ -652,7 +681,8 @@ def design_excitation(model, series=None, limits=None, solver=None, *, progress=
             "cond_before": before[0], "cond_after": after[0],
             "logdet_before": before[1], "logdet_after": after[1],
             "ipopt_status": stats["return_status"], "ipopt_iterations": used,
-            "constraint_stride": CONSTRAINT_STRIDE, "ipopt_solves": rounds,
+            "constraint_stride": CONSTRAINT_STRIDE, "kinematic_samples": M,
+            "ipopt_solves": rounds,
             "limit_samples_seen": int(len(seen)),
             "converged": stats["return_status"] in CONVERGED,
             "ipopt": dict(IPOPT_OPTIONS), "blas_threads": blas_threads or "default",
