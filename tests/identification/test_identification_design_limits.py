@@ -82,7 +82,9 @@ def test_limits_at_samples_are_the_motion_and_the_model(name):
     assert worst.max() > 0                       # the tight test limits are broken somewhere
 
 
-@pytest.mark.parametrize("L,safety", [(10, 0.98), (4, 0.98), (10, 0.995), (25, 0.9)])
+@pytest.mark.parametrize("L,safety", [(10, 0.98), (4, 0.98),
+                                     pytest.param(10, 0.995, marks=pytest.mark.slow),
+                                     pytest.param(25, 0.9, marks=pytest.mark.slow)])
 def test_kinematic_samples_bound_the_limits_between_samples(L, safety):
     """kinematic_samples: the fewest M with cos(2 pi L / M) >= safety^2, and M samples per
     period bound a squared limit (degree 2 L) within safety^2 of its bound everywhere: random
