@@ -160,8 +160,10 @@ def test_derive_into_the_default_folder_compile_on_first_use_and_load_by_path(tm
     # Python caller filters them (the CLI prints them: the next test), nothing is printed
     lines = [str(w.message) for w in said if w.category is pm2dof.CompileWarning]
     assert len(lines) == 2, lines
-    assert re.fullmatch(r"compiling myrobot\.c \(\d\.\d MB of C\) with .*: about \d+ s on an "
-                        rf"idle processor .* \(first use of the generated code in "
+    # cut into units compiled side by side (core/csplit.py): the estimate is processor time
+    assert re.fullmatch(r"compiling myrobot\.c \(\d\.\d MB of C\) with \S+ -O3 in \d+ units "
+                        r"\([^)]*\), \d+ at a time: about \d+ s of processor time, \d+ s on \d+ "
+                        rf"idle processors? .* \(first use of the generated code in "
                         rf"{re.escape(str(gen))}\)", lines[0]), lines
     assert re.fullmatch(rf"compiled {re.escape(str(gen))}/libmyrobot\.so in \d+\.\d s",
                         lines[1]), lines
@@ -200,7 +202,8 @@ def test_the_cli_prints_the_compile_on_first_use_as_stage_lines(tmp_path, capfd,
     lines = err.splitlines()
     assert len(lines) == 2 and "myrobot" in out, err
     assert re.fullmatch(rf"pm2dof: compiling myrobot\.c \(\d\.\d MB of C\) with "
-                        rf"{re.escape(str(cc))} -O3: about \d+ s on an idle processor \(16 s per "
+                        rf"{re.escape(str(cc))} -O3 in \d+ units \([^)]*\), \d+ at a time: about "
+                        rf"\d+ s of processor time, \d+ s on \d+ idle processors? \(16 s per "
                         rf"MB\), longer while other programs use it \(first use of the generated "
                         rf"code in {re.escape(str(gen))}\)", lines[0]), lines
     assert re.fullmatch(rf"pm2dof: compiled {re.escape(str(gen))}/libmyrobot\.so in \d+\.\d s",
