@@ -225,6 +225,7 @@ def test_generated_elsewhere_is_named_by_generated(tmp_path, libraries):
     assert r.returncode == 0 and "myrobot" in r.stdout, r.stderr
 
 
+@pytest.mark.slow      # derives and compiles a model (9 s in make test): make test-slow (CI)
 def test_derive_says_when_the_compiler_starts_and_how_long_it_took(tmp_path, monkeypatch):
     """The compile of a generated file takes 10 s to minutes (gcc -O3: 16 s per MB on an idle
     processor, more on a busy one), and derive printed nothing between "wrote" and "compiled".
