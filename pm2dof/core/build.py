@@ -8,8 +8,9 @@ process that loads the target path never sees a half-written library.
 A CasADi file is cut into translation units (:mod:`pm2dof.core.csplit`) compiled on every
 processor at once, then linked: with :data:`FLAGS`, at ``-O3`` the functions that hold a
 loop, at ``-O2`` the straight-line ones (:func:`pm2dof.core.csplit.opt_levels`).
-:func:`compile_libraries` compiles several libraries on one pool of processors (setup.py: the
-shipped models). Any other C file is compiled whole, as one command.
+:func:`compile_libraries` compiles several libraries on one pool of processors (setup.py and
+``make libs`` still compile one library per call). Any other C file is compiled whole, as one
+command.
 """
 
 from __future__ import annotations
