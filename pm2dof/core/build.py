@@ -179,9 +179,14 @@ def _sha256(path):
 
 
 def library_is_fresh(c_path, lib_path, c_sha256=None):
-    """Whether ``lib_path`` was compiled from the current content of ``c_path``.
+    """Whether ``lib_path`` was compiled from the current content of ``c_path``, with this
+    version's flags.
 
-    The build record (:func:`stamp_path`) holds the SHA-256 of the source it was built from.
+    The build record (:func:`stamp_path`) holds the SHA-256 of the source it was built from
+    and the compiler flags. The flags must include every one of :data:`PORTABLE_FLAGS` (what
+    :data:`FLAGS` and a wheel's build share): a library compiled before a flag that decides
+    its results was added (``-mno-fma``: GCC had fused multiply-adds into some functions) is
+    compiled again, as is one whose record names no flags.
     Fast path: the record matches ``c_sha256`` (the manifest's hash of the C file) and the
     library is not older than the source. Otherwise the source is hashed (file times are not
     kept by every installer, so an older-looking library may still be right).
@@ -189,9 +194,12 @@ def library_is_fresh(c_path, lib_path, c_sha256=None):
     import json
     lib_path, c_path = pathlib.Path(lib_path), pathlib.Path(c_path)
     try:
-        built_from = json.loads(stamp_path(lib_path).read_text())["source_sha256"]
+        record = json.loads(stamp_path(lib_path).read_text())
+        built_from, flags = record["source_sha256"], record["flags"]
         lib_mtime = lib_path.stat().st_mtime
     except (OSError, ValueError, KeyError, TypeError):
+        return False
+    if not isinstance(flags, list) or not set(PORTABLE_FLAGS) <= set(flags):
         return False
     if built_from == c_sha256 and lib_mtime >= c_path.stat().st_mtime:
         return True

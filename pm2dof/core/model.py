@@ -106,8 +106,8 @@ def _stale(spec, gen_dir, msg):
 
 def _check_generated(spec, gen_dir):
     """Refuse generated code that is missing or was derived from another formulation; compile
-    the C on first use when its library is missing or older than it (never inside an installed
-    package), saying so by a :class:`CompileWarning` before and after the compiler runs.
+    the C on first use when its library is missing, older than it or compiled with other flags
+    (never inside an installed package), saying so by a :class:`CompileWarning` before and after the compiler runs.
     Returns the folder's :class:`~pm2dof.core.manifest.Manifest`."""
     manifest = Manifest.read(gen_dir)
     if manifest is None:
@@ -143,7 +143,8 @@ def _check_generated(spec, gen_dir):
         _stale(spec, gen_dir, f"{c_file} is missing")
     if not manifest.library_is_fresh():
         if paths.in_installed_package(gen_dir):
-            _stale(spec, gen_dir, f"the compiled library {lib} is missing or older than {c_file}")
+            _stale(spec, gen_dir, f"the compiled library {lib} is missing, older than {c_file} "
+                                  f"or compiled with other flags")
         build.compile_library(c_file, lib, progress=lambda msg: warnings.warn(
             msg + (f" (first use of the generated code in {gen_dir})"
                    if msg.startswith("compiling") else ""), CompileWarning, stacklevel=2))

@@ -357,6 +357,27 @@ def test_build_record_says_which_source_the_library_came_from(tmp_path):
     assert not build.library_is_fresh(c, lib)
 
 
+@pytest.mark.parametrize("flags", [None, "-O3", ["-O3", "-fPIC"], "dropped"])
+def test_a_library_built_without_this_versions_flags_is_stale(tmp_path, flags):
+    """The build record's flags must hold every portable flag: a record from before a flag
+    that decides the results (-mno-fma), or with none, makes the library stale."""
+    c, lib = tmp_path / "a.c", tmp_path / "liba.so"
+    c.write_text("int one(void) { return 1; }\n")
+    build.compile_library(c, lib)
+    assert build.library_is_fresh(c, lib)
+    stamp = tmp_path / "liba.so.json"
+    record = json.loads(stamp.read_text())
+    if flags is None:
+        del record["flags"]
+    elif flags == "dropped":        # one result-deciding flag missing
+        record["flags"] = [f for f in record["flags"] if f != "-ffp-contract=off"]
+    else:
+        record["flags"] = flags
+    stamp.write_text(json.dumps(record))
+    assert not build.library_is_fresh(c, lib)
+    assert not build.library_is_fresh(c, lib, record["source_sha256"])
+
+
 def test_compile_library_missing_source(tmp_path):
     with pytest.raises(FileNotFoundError, match="nothere.c"):
         build.compile_library(tmp_path / "nothere.c", tmp_path / "x.so")
