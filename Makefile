@@ -49,8 +49,10 @@ $(DEV_STAMP): $(STAMP)
 
 # $(STAMP) is order-only: a newer stamp (pyproject.toml edited) must not compile them all again;
 # make -j runs the libraries side by side, so each runs one compiler (PM2DOF_BUILD_JOBS=1)
+# build.py and csplit.py too: a library compiled with other flags is compiled again (its build
+# record's flags, build.library_is_fresh); one whose record matches is only touched
 define LIB_RULE
-$(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c | $(STAMP)
+$(1)/lib$(notdir $(1)).so: $(1)/$(notdir $(1)).c pm2dof/core/build.py pm2dof/core/csplit.py | $(STAMP)
 	PM2DOF_BUILD_JOBS=1 $(PY) pm2dof/core/build.py $$< $$@
 endef
 $(foreach d,$(MODEL_DIRS),$(eval $(call LIB_RULE,$(d))))

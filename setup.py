@@ -2,7 +2,8 @@
 lives in pyproject.toml).
 
 The shipped models' generated C (pm2dof/generated/<name>/<name>.c) is compiled into
-lib<name>.so beside it, so a wheel needs no compiler at install time. In a wheel the
+lib<name>.so beside it, so a wheel needs no compiler at install time (all of them on one pool
+of compilers, one per processor: pm2dof.core.build.compile_libraries). In a wheel the
 libraries use portable flags (no -march=native); in an editable install they are built in place
 for this machine.
 
@@ -37,6 +38,7 @@ class BuildExtWithModels(build_ext):
         build = _build_module()
         only = os.environ.get("PM2DOF_BUILD_MODELS", "").strip() if self.inplace else ""
         names = None if not only else set() if only == "none" else set(only.split(","))
+        pairs = []
         for c_file in sorted((HERE / "pm2dof" / "generated").glob("*/*.c")):
             rel = c_file.relative_to(HERE).parent / f"lib{c_file.stem}.so"
             target = HERE / rel if self.inplace else Path(self.build_lib) / rel
@@ -44,8 +46,11 @@ class BuildExtWithModels(build_ext):
                 continue
             if self.inplace and build.library_is_fresh(c_file, target):
                 continue
-            build.compile_library(c_file, target, portable=not self.inplace)
-            print(f"compiled {rel}")
+            pairs.append((c_file, target))
+        # every library's translation units on one pool of compilers, one per processor
+        # ($PM2DOF_BUILD_JOBS), so that no processor waits for the last unit of a library
+        build.compile_libraries(pairs, portable=not self.inplace,
+                                progress=lambda msg: print(msg, flush=True))
 
 
 setup(
