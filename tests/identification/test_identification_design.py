@@ -253,11 +253,9 @@ def test_shipped_file_records_what_recomputes_from_its_coefficients(m):
     assert {k: info[k] for k in defaults} == defaults
     # a point has no phi: its file records no phi limits (the 2-D file is as before platforms)
     assert not any(k.startswith("phi_") for k in info)
-    # designed before IPOPT's barrier became monotone (the one option since; the file is kept,
-    # as docs/results-identification.md says, so its Monte Carlo tables stand): any other
-    # change of the options, or a change of this one, fails here until it is designed again
-    assert info["ipopt"] == {k: v for k, v in IPOPT_OPTIONS.items() if k != "mu_strategy"}
-    assert IPOPT_OPTIONS["mu_strategy"] == "monotone" and "mu_strategy" not in info["ipopt"]
+    # IPOPT's options today: a change of them fails here until the file is designed again
+    # (and docs/results-identification.md's Monte Carlo tables measured again with it)
+    assert info["ipopt"] == IPOPT_OPTIONS
     assert info["ipopt_status"] == "Solve_Succeeded" and info["blas_threads"] == 1
     # what it was designed with (a model change that matters shows in the figures below)
     assert {"pm2dof", "casadi", "numpy", "model_file_sha256", "formulation_sha256", "machine",
