@@ -187,6 +187,16 @@ def _check(model, name, got, want, scale, info):
                                 f"{TOL:.0e} * {scale:.3e} at {info}\nC=\n{got}\nSymPy=\n{want}")
 
 
+#: the 30-digit check derives the model in SymPy first (1-2 s each): make test runs it on one
+#: model of each kind (the paper's robot, gravity, linear actuators, four legs, the five-bar),
+#: make test-slow (CI) on the paper robot's other variants too (Stribeck, smoothed sign, design
+#: parameters, unequal links: the same leg kinds; a platform is skipped, as below)
+_MP_QUICK = {"shang2010", "shang2010_vertical", "prr_point", "fourleg", "fivebar"}
+
+
+@pytest.mark.parametrize("model", [
+    pytest.param(path, id=path.stem, marks=() if path.stem in _MP_QUICK else pytest.mark.slow)
+    for path in sorted(SHIPPED_MODELS.glob("*.toml"))], indirect=True)
 def test_C_matches_sympy_at_30_digits(model, mp, sample_xe, random_theta):
     mpmath.mp.dps = DPS
     n = model.n_legs
