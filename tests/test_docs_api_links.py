@@ -103,6 +103,12 @@ class _Page(HTMLParser):
             self._link = None
 
 
+#: the tests that read the built site are marked slow (building it takes 8 s: make test-slow,
+#: which CI runs; CI's make docs builds the same site with --strict); the rewriting is checked on
+#: the package without MkDocs in make test
+reads_the_site = pytest.mark.slow
+
+
 @pytest.fixture(scope="module")
 def api_html(tmp_path_factory):
     """site/api.html as ``make docs`` builds it (warnings are errors)."""
@@ -122,6 +128,7 @@ def page(api_html):
     return parsed
 
 
+@reads_the_site
 def test_every_link_lands_on_an_entry_of_the_page(page):
     internal = [href for href, _, _ in page.links if href.startswith("#")]
     assert len(internal) >= len(LINKED)
@@ -129,11 +136,13 @@ def test_every_link_lands_on_an_entry_of_the_page(page):
     assert sorted({h for h in internal if h[1:] not in page.ids}) == []
 
 
+@reads_the_site
 def test_no_role_or_autoref_markup_is_left(api_html):
     assert re.findall(r":(?:func|class|meth|attr|mod|data|exc|obj|const):`", api_html) == []
     assert "autoref " not in api_html and "&lt;autoref" not in api_html
 
 
+@reads_the_site
 @pytest.mark.parametrize("entry, role, anchor, text", LINKED)
 def test_sample_roles_link_to_their_entries(page, entry, role, anchor, text):
     assert role in inspect.getdoc(_python_object(entry))
@@ -141,6 +150,7 @@ def test_sample_roles_link_to_their_entries(page, entry, role, anchor, text):
     assert ("#" + anchor, text, entry) in page.links
 
 
+@reads_the_site
 @pytest.mark.parametrize("entry, role, text", PLAIN)
 def test_roles_the_page_does_not_render_are_plain_code(api_html, page, entry, role, text):
     assert role in inspect.getdoc(_python_object(entry))
