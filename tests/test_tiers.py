@@ -69,6 +69,7 @@ def _collected(*args):
     return {line.split("::")[0] for line in r.stdout.splitlines() if "::" in line}, r.stdout
 
 
+@pytest.mark.slow      # collects the suite three times in subprocesses (5 s): make test-slow (CI)
 def test_quick_leaves_out_the_long_modules_without_importing_them():
     everything, _ = _collected()
     quick, out = _collected("-m", "not slow and not long")

@@ -304,7 +304,9 @@ def _compare_rollouts(res, Y, label, tol=1e-9):
             f"first at sample {k}: C {c[k]} ref {r[k]}")
 
 
-@pytest.mark.parametrize("speed", ["low", "high"])
+# the high-speed rollouts (3 s with the NumPy reference) in make test-slow (CI); make test runs
+# the low-speed ones, the same code at another trajectory
+@pytest.mark.parametrize("speed", ["low", pytest.param("high", marks=pytest.mark.slow)])
 @pytest.mark.parametrize("law", ["na", "apd"])
 def test_c_rollout_matches_reference_rollout(m, law, speed):
     ctrl = (NAController if law == "na" else APDController)(m)

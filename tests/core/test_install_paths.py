@@ -253,6 +253,7 @@ def test_derive_says_when_the_compiler_starts_and_how_long_it_took(tmp_path, mon
     assert 1.0 <= float(done.group(3)) <= float(done.group(1)), lines[wrote + 2]
 
 
+@pytest.mark.slow      # derives a model into a user's folder (3 s): make test-slow (CI)
 def test_edited_geometry_names_the_exact_derive_command(tmp_path):
     model = _robot(tmp_path)
     assert _derive(model)[0] == 0
@@ -262,6 +263,7 @@ def test_edited_geometry_names_the_exact_derive_command(tmp_path):
     assert r.returncode == 2 and f"Run `pm2dof derive {model}`" in r.stderr, r.stderr
 
 
+@pytest.mark.slow      # derives two models four times (4 s): make test-slow (CI)
 def test_derive_refuses_a_folder_generated_from_another_model_file(tmp_path):
     """A copied model file that keeps an existing name, derived into that name's
     folder, used to overwrite it silently. Now refused naming both files; --force overrides."""
