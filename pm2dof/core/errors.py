@@ -127,8 +127,9 @@ class OutcomeWarning(RuntimeWarning):
 
 class CompileWarning(UserWarning):
     """pm2dof is compiling a model's generated C on its first use (a library missing, older
-    than its C file or compiled with other flags; tens of seconds to minutes): one warning before the compiler starts (the C
-    file's size and an estimate of the time) and one when it is done (the time it took).
+    than its C file or compiled with other flags; tens of seconds to minutes): one warning
+    before the compiler starts (the C file's size and an estimate of the time) and one when it
+    is done (the time it took).
     ``pm2dof`` prints each as a line on stderr; from Python, silence them with
     ``warnings.simplefilter("ignore", pm2dof.CompileWarning)``."""
 

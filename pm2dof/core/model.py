@@ -107,7 +107,8 @@ def _stale(spec, gen_dir, msg):
 def _check_generated(spec, gen_dir):
     """Refuse generated code that is missing or was derived from another formulation; compile
     the C on first use when its library is missing, older than it or compiled with other flags
-    (never inside an installed package), saying so by a :class:`CompileWarning` before and after the compiler runs.
+    (never inside an installed package), saying so by a :class:`CompileWarning` before and
+    after the compiler runs.
     Returns the folder's :class:`~pm2dof.core.manifest.Manifest`."""
     manifest = Manifest.read(gen_dir)
     if manifest is None:
