@@ -36,6 +36,7 @@
 
 #include <dlfcn.h>
 #include <math.h>
+#include <float.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
@@ -390,11 +391,22 @@ typedef struct {
 static PyTypeObject *np_type; /* numpy.ndarray once its layout was verified */
 static int np_disabled;       /* layout check failed: never use the fast path */
 
+static const NpDescr *np_f64_descr; /* a float64 descriptor seen before (a reference held) */
+
 static inline int
 np_descr_is_f64(const NpDescr *d)
 {
-    return d->type_num == NP_DOUBLE && d->type == 'd' && d->kind == 'f' &&
-           (d->byteorder == '=' || d->byteorder == NP_NATIVE_ORDER);
+    if (d == np_f64_descr) /* numpy's float64 is one object: one comparison */
+        return 1;
+    if (d->type_num == NP_DOUBLE && d->type == 'd' && d->kind == 'f' &&
+        (d->byteorder == '=' || d->byteorder == NP_NATIVE_ORDER)) {
+        if (np_f64_descr == NULL) { /* kept alive, so its address is never another's */
+            Py_INCREF((PyObject *)d);
+            np_f64_descr = d;
+        }
+        return 1;
+    }
+    return 0;
 }
 
 /* Verify our view of the struct against a buffer export of one array. */
@@ -455,9 +467,10 @@ np_fast(PyObject *o, int writable, Py_ssize_t expect, int is_vec)
     if ((a->flags & need) != need || (writable && (a->flags & NP_WARN_ON_WRITE)) ||
         !np_descr_is_f64(a->descr) || !ndim_ok(is_vec, a->nd, expect))
         return NULL;
-    Py_ssize_t n = 1;
-    for (int k = 0; k < a->nd; k++)
-        n *= a->dimensions[k];
+    Py_ssize_t n = a->nd == 1 ? a->dimensions[0] : 1; /* a vector: its length */
+    if (a->nd != 1)
+        for (int k = 0; k < a->nd; k++)
+            n *= a->dimensions[k];
     return n == expect ? (double *)a->data : NULL;
 }
 
@@ -2064,6 +2077,12 @@ all_finite(const double *p, Py_ssize_t n)
     /* (b & exponent) + one exponent step carries into the sign bit only from all ones */
     uint64_t bad0 = 0, bad1 = 0, bad2 = 0, bad3 = 0, b0, b1, b2, b3;
     Py_ssize_t k = 0;
+    if (n < 8) { /* a pose, a velocity: a compare per element (NaN and inf fail it) */
+        for (; k < n; k++)
+            if (!(fabs(p[k]) <= DBL_MAX))
+                return 0;
+        return 1;
+    }
     for (; k + 4 <= n; k += 4) { /* four chains: about one element per cycle */
         memcpy(&b0, p + k, sizeof b0);
         memcpy(&b1, p + k + 1, sizeof b1);
@@ -2098,13 +2117,16 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *argv, int caller_out
         PyObject *o = argv[k];
         const int is_out = k >= n_in;
         double *p = NULL;
-        if (!is_out && f->nnz[k] == 1 && PyFloat_Check(o)) { /* a number, as bind_input */
+        if (Py_TYPE(o) == np_type) { /* the common case first */
+            if ((p = np_fast(o, is_out, f->nnz[k], f->vec[k])) == NULL)
+                return -1;
+        }
+        else if (!is_out && f->nnz[k] == 1 && PyFloat_Check(o)) { /* a number, as bind_input */
             w->scalars[k] = PyFloat_AS_DOUBLE(o);
             p = &w->scalars[k];
         }
         else if (o != Py_None || !is_out) { /* None: an output not computed; an input never */
-            if (Py_TYPE(o) != np_type || (p = np_fast(o, is_out, f->nnz[k], f->vec[k])) == NULL)
-                return -1;
+            return -1;
         }
         if (is_out)
             w->res[k - n_in] = p;
@@ -2598,6 +2620,14 @@ typedef struct {
     PyTypeObject *ctype; /* the last instance's type whose _fast (and unless) are slots */
     unsigned int ctag;   /* its version tag then: a changed class is looked up again */
     Py_ssize_t off_fast, off_unless; /* their offsets in an instance (-1: no unless) */
+#if PY_VERSION_HEX < 0x030C0000
+    /* the Method last found in an instance's _fast, with that dict and its version tag: the
+       same dict, unmodified since (a dict's version tag is unique to one dict and one state,
+       CPython 3.11), holds the same Method (borrowed: the dict keeps it). A model's _fast only
+       ever gains keys (model._Pending), and a new one is looked up again. */
+    PyObject *cdict, *cmeth;
+    uint64_t cdict_tag;
+#endif
 } FastMethodObject;
 
 static PyObject *str_fast; /* "_fast" */
@@ -2697,7 +2727,26 @@ FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyOb
     PyObject *fast = fm_attr(d, obj, str_fast, 0);
     if (fast == NULL)
         goto checked;
-    PyObject *meth = PyDict_Check(fast) ? PyDict_GetItemWithError(fast, d->key) : NULL;
+    PyObject *meth;
+#if PY_VERSION_HEX < 0x030C0000
+    _Py_COMP_DIAG_PUSH
+    _Py_COMP_DIAG_IGNORE_DEPR_DECLS
+    if (fast == d->cdict && PyDict_Check(fast) &&
+        ((PyDictObject *)fast)->ma_version_tag == d->cdict_tag) {
+        meth = d->cmeth;
+    }
+    else {
+        meth = PyDict_Check(fast) ? PyDict_GetItemWithError(fast, d->key) : NULL;
+        if (meth != NULL) {
+            d->cdict = fast;  /* borrowed, compared only together with the tag */
+            d->cdict_tag = ((PyDictObject *)fast)->ma_version_tag;
+            d->cmeth = meth;
+        }
+    }
+    _Py_COMP_DIAG_POP
+#else
+    meth = PyDict_Check(fast) ? PyDict_GetItemWithError(fast, d->key) : NULL;
+#endif
     Py_DECREF(fast);  /* the instance holds it, and it holds meth */
     if (meth == NULL || Py_TYPE(meth) != &MethodType || ((MethodObject *)meth)->n_given != g) {
         PyErr_Clear();

@@ -297,3 +297,49 @@ def test_fast_method_falls_back_for_any_object_without_the_method():
         a = _outcome(lambda: Model.W(obj, S0["q"]))        # the body runs, with its error
         b = _outcome(lambda: Model.W.__wrapped__(obj, S0["q"]))
         assert a[0] is b[0] and a[1] == b[1] and a[0] != "ok", (a, b)
+
+
+def test_a_fast_dict_that_changed_or_another_one_finds_its_own_method():
+    """The descriptor keeps the Method it found last, with the dict it came from and that
+    dict's version (CPython 3.11): a dict that gained or changed a key since, another dict, or
+    another model's, is looked up again, and each call is its own Method's result."""
+    other = load_model("unequal")                 # other links: another ik at the same point
+    mine, theirs = M.ik(XE), other.ik(XE)
+    assert not np.array_equal(mine, theirs)
+
+    class Holder:
+        __slots__ = ("_fast",)
+
+    h = Holder()
+    h._fast = {"ik": M._fast["ik"]}
+    for _ in range(3):                            # found, then kept
+        assert np.array_equal(Model.ik(h, XE), mine)
+    h._fast["ik"] = other._fast["ik"]             # the same dict, changed in place
+    assert np.array_equal(Model.ik(h, XE), theirs)
+    h._fast["W"] = M._fast["W"]                   # a key added: looked up again, same Method
+    assert np.array_equal(Model.ik(h, XE), theirs)
+    for fast, want in (({"ik": M._fast["ik"]}, mine), ({"ik": other._fast["ik"]}, theirs)):
+        h._fast = fast                            # another dict (perhaps at the same address)
+        assert np.array_equal(Model.ik(h, XE), want)
+    for _ in range(3):                            # two models in turn, each its own
+        assert np.array_equal(M.ik(XE), mine) and np.array_equal(other.ik(XE), theirs)
+    del h._fast["ik"]                             # gone: the body's path, with its error
+    with pytest.raises(KeyError):
+        Model.ik(h, XE)
+
+
+def test_a_non_finite_element_anywhere_in_a_short_or_long_input_is_refused():
+    """The finiteness check takes an input of fewer than 8 elements element by element (xe: 2,
+    q: 6) and a longer one in four chains and a tail (theta: 15): NaN, +inf and -inf at every
+    position of each are the body's ArgumentError."""
+    q, th = M.ik(XE), np.array(M.theta_nominal)
+    assert len(th) >= 12 and len(th) % 4 and len(q) < 8
+    for bad in (np.nan, np.inf, -np.inf):
+        for name, call, a in (("xe", lambda v: M.ik(v), XE), ("q", lambda v: M.Me(v, th), q),
+                              ("theta", lambda v: M.Me(q, v), th)):
+            for k in range(len(a)):
+                b = a.copy()
+                b[k] = bad
+                with pytest.raises(ArgumentError):
+                    call(b)
+            call(a.copy())                                      # finite: bound, no error
