@@ -467,8 +467,10 @@ np_fast(PyObject *o, int writable, Py_ssize_t expect, int is_vec)
     if ((a->flags & need) != need || (writable && (a->flags & NP_WARN_ON_WRITE)) ||
         !np_descr_is_f64(a->descr) || !ndim_ok(is_vec, a->nd, expect))
         return NULL;
-    Py_ssize_t n = a->nd == 1 ? a->dimensions[0] : 1; /* a vector: its length */
-    if (a->nd != 1)
+    Py_ssize_t n = 1;
+    if (a->nd == 1) /* a vector: its length */
+        n = a->dimensions[0];
+    else
         for (int k = 0; k < a->nd; k++)
             n *= a->dimensions[k];
     return n == expect ? (double *)a->data : NULL;
@@ -2069,8 +2071,9 @@ guard_passes(MethodObject *m, const double *p, Py_ssize_t n)
     }
 }
 
-/* Whether p[0..n) is all finite: an exponent field of all ones is inf or NaN. Branch-free,
-   so the compiler may vectorise it (the error path finds the index). */
+/* Whether p[0..n) is all finite: an exponent field of all ones is inf or NaN. Fewer than 8
+   elements: one comparison each; more: branch-free in four chains, so the compiler may
+   vectorise it (the error path finds the index). */
 static inline int
 all_finite(const double *p, Py_ssize_t n)
 {
@@ -2729,8 +2732,6 @@ FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyOb
         goto checked;
     PyObject *meth;
 #if PY_VERSION_HEX < 0x030C0000
-    _Py_COMP_DIAG_PUSH
-    _Py_COMP_DIAG_IGNORE_DEPR_DECLS
     if (fast == d->cdict && PyDict_Check(fast) &&
         ((PyDictObject *)fast)->ma_version_tag == d->cdict_tag) {
         meth = d->cmeth;
@@ -2743,7 +2744,6 @@ FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyOb
             d->cmeth = meth;
         }
     }
-    _Py_COMP_DIAG_POP
 #else
     meth = PyDict_Check(fast) ? PyDict_GetItemWithError(fast, d->key) : NULL;
 #endif

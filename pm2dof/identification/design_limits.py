@@ -78,7 +78,9 @@ def kinematic_samples(K, L, safety):
     Parameters
     ----------
     K : int
-        Constraint samples per period. L : int, harmonics.
+        Constraint samples per period.
+    L : int
+        Harmonics of the series.
     safety : float
         In (0, 1].
     """

@@ -335,8 +335,8 @@ def test_a_non_finite_element_anywhere_in_a_short_or_long_input_is_refused():
     q, th = M.ik(XE), np.array(M.theta_nominal)
     assert len(th) >= 12 and len(th) % 4 and len(q) < 8
     for bad in (np.nan, np.inf, -np.inf):
-        for name, call, a in (("xe", lambda v: M.ik(v), XE), ("q", lambda v: M.Me(v, th), q),
-                              ("theta", lambda v: M.Me(q, v), th)):
+        for call, a in ((lambda v: M.ik(v), XE), (lambda v: M.Me(v, th), q),
+                        (lambda v: M.Me(q, v), th)):
             for k in range(len(a)):
                 b = a.copy()
                 b[k] = bad
