@@ -37,7 +37,7 @@ help:
 DEV_STAMP := $(VENV)/.installed-dev-stamp
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-$(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c
+$(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c pm2dof/planning/_pathc.c
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	PM2DOF_BUILD_MODELS=none $(PY) -m pip install --quiet -e '.[studies,design]'

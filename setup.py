@@ -56,6 +56,9 @@ class BuildExtWithModels(build_ext):
 setup(
     ext_modules=[
         Extension("pm2dof.core._cbind", ["pm2dof/core/_cbind.c"], extra_compile_args=["-O2"]),
+        # the NumPy formulas of TaskPath.evaluate bit for bit: no fused multiply-adds
+        Extension("pm2dof.planning._pathc", ["pm2dof/planning/_pathc.c"],
+                  extra_compile_args=["-O2", "-ffp-contract=off"]),
     ],
     cmdclass={"build_ext": BuildExtWithModels},
 )

@@ -25,6 +25,8 @@ import numbers
 import numpy as np
 
 from ..core.errors import ArgumentTypeError, PlanError
+from . import _pathc
+from .pathtable import pack
 from .spline import SplinePiece
 
 __all__ = ["TaskPath", "point_text", "gap_message"]
@@ -232,7 +234,7 @@ class TaskPath:
     ([[0.22, 0.29], [0.27, 0.24]], 0.070711)
     """
 
-    __slots__ = ("_pieces", "_ends", "_stops", "_groups")
+    __slots__ = ("_pieces", "_ends", "_stops", "_table")
 
     def __init__(self, pieces, stop_junctions=()):
         """``pieces``: one or more line/arc/spline pieces in order (as the constructors make
@@ -277,15 +279,8 @@ class TaskPath:
         object.__setattr__(self, "_ends", ends)
         st = np.unique(np.concatenate([[0, len(pieces)], junctions]))
         object.__setattr__(self, "_stops", st)
-        # evaluate's groups: each piece's length, kind (0 line, 1 arc, 2 other: one by one)
-        # and index among the pieces of its kind
-        kind = np.array([2 if type(pc) not in (_Line, _Arc) else int(type(pc) is _Arc)
-                         for pc in pieces])
-        j = np.array([int(np.count_nonzero(kind[:i] == kind[i])) for i in range(len(kind))])
-        stacked = [_stack([pc for pc in pieces if type(pc) is cls]) if np.any(kind == g)
-                   else None for g, cls in enumerate((_Line, _Arc))]
-        object.__setattr__(self, "_groups",
-                           (np.array([pc.length for pc in pieces]), kind, j, stacked))
+        dim = 3 if isinstance(pieces[0], _Oriented) else 2
+        object.__setattr__(self, "_table", pack(pieces, ends, dim))   # for _pathc.evaluate
 
     def __setattr__(self, key, value):
         raise AttributeError(f"TaskPath is immutable (tried to set {key!r})")
@@ -338,26 +333,9 @@ class TaskPath:
                             f"[0, {L:.9g}] m")
         if side not in ("right", "left"):
             raise PlanError(f"side must be 'right' or 'left', got {side!r}")
-        s = np.clip(s, 0.0, L)
-        idx = np.clip(np.searchsorted(self._ends, s, side=side) - 1, 0, len(self._pieces) - 1)
-        lengths, kind, j, stacked = self._groups
-        if len(self._pieces) == 1:
-            return self._pieces[0].evaluate(np.clip(s - self._ends[0], 0.0, lengths[0]))
-        out = [np.empty((len(s), self.dim)) for _ in range(3)]
-        local = np.clip(s - self._ends[idx], 0.0, lengths[idx])   # each piece's own s
-        for g, cls in enumerate((_Line, _Arc)):     # the lines together, the arcs together
-            sel = np.flatnonzero(kind[idx] == g)
-            if sel.size:
-                part = [np.empty((sel.size, self.dim)) for _ in range(3)]
-                cls.evaluate_many(stacked[g], j[idx[sel]], local[sel], part)
-                for o, v in zip(out, part):
-                    o[sel] = v
-        for i in np.flatnonzero(kind == 2):          # splines, oriented pieces: one by one
-            sel = idx == i
-            if sel.any():
-                for o, v in zip(out, self._pieces[i].evaluate(local[sel])):
-                    o[sel] = v
-        return tuple(out)
+        out = tuple(np.empty((len(s), self.dim)) for _ in range(3))
+        _pathc.evaluate(self._table, np.ascontiguousarray(s), side == "right", *out)
+        return out
 
     # --- constructors -----------------------------------------------------------------
     @classmethod
