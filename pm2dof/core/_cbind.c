@@ -33,6 +33,7 @@
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 #include "structmember.h"
+#include "_cbind_api.h"
 
 #include <dlfcn.h>
 #include <math.h>
@@ -2898,6 +2899,73 @@ static PyTypeObject FastMethodType = {
 };
 
 /* ------------------------------------------------------------------------------------ */
+/* C API (_cbind_api.h): generated functions called from other extensions                 */
+/* ------------------------------------------------------------------------------------ */
+
+struct Pm2dofCall {
+    FunctionObject *f;
+    Work *w;
+    Work tmp;
+};
+
+static Pm2dofCall *
+api_begin(PyObject *o, Py_ssize_t n_in, Py_ssize_t n_out)
+{
+    if (!PyObject_TypeCheck(o, &FunctionType)) {
+        PyErr_Format(PyExc_TypeError, "expected a pm2dof.core._cbind.Function, got %.200s",
+                     Py_TYPE(o)->tp_name);
+        return NULL;
+    }
+    FunctionObject *f = (FunctionObject *)o;
+    if (f->n_in != n_in || f->n_out != n_out) {
+        PyErr_Format(PyExc_TypeError, "%U: expected %zd inputs and %zd outputs, it has %zd "
+                     "and %zd", f->name, n_in, n_out, f->n_in, f->n_out);
+        return NULL;
+    }
+    Pm2dofCall *c = PyMem_Calloc(1, sizeof(*c));
+    if (c == NULL)
+        return (Pm2dofCall *)PyErr_NoMemory();
+    c->w = work_acquire(f, &c->tmp);
+    if (c->w == NULL) {
+        PyMem_Free(c);
+        return NULL;
+    }
+    /* the temporary was initialised in place: it stays where it is (c is not moved) */
+    Py_INCREF(o);
+    c->f = f;
+    return c;
+}
+
+static Py_ssize_t
+api_nnz(const Pm2dofCall *c, Py_ssize_t i)
+{
+    return c->f->nnz[i];
+}
+
+static int
+api_eval(Pm2dofCall *c, const double *const *arg, double *const *res)
+{
+    Work *w = c->w;
+    for (Py_ssize_t i = 0; i < c->f->n_in; i++)
+        w->arg[i] = arg[i];
+    for (Py_ssize_t i = 0; i < c->f->n_out; i++)
+        w->res[i] = res[i];
+    return c->f->eval(w->arg, w->res, w->iw, w->w, w->mem);
+}
+
+static void
+api_end(Pm2dofCall *c)
+{
+    if (c == NULL)
+        return;
+    work_done(c->f, c->w, 0);
+    Py_DECREF((PyObject *)c->f);
+    PyMem_Free(c);
+}
+
+static const Pm2dofCbindAPI cbind_api = {api_begin, api_nnz, api_eval, api_end};
+
+/* ------------------------------------------------------------------------------------ */
 /* Module                                                                               */
 /* ------------------------------------------------------------------------------------ */
 
@@ -2956,5 +3024,12 @@ PyInit__cbind(void)
         Py_DECREF(m);
         return NULL;
     }
+    PyObject *api = PyCapsule_New((void *)&cbind_api, PM2DOF_CBIND_API, NULL);
+    if (api == NULL || PyModule_AddObjectRef(m, "_C_API", api) < 0) {
+        Py_XDECREF(api);
+        Py_DECREF(m);
+        return NULL;
+    }
+    Py_DECREF(api);
     return m;
 }

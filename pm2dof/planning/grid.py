@@ -1,38 +1,25 @@
-# The planner's grid and what the passes found on it, recomputed only where points were added.
+# The planner's grid, refined in place, and the NumPy reference of its passes (run in C).
 """The time-optimal planner's grid, refined in place: :class:`Grid`.
 
-A refinement adds points inside some intervals. What the plan needs is recomputed only where
-an added point can change it, and equals what the whole computation on the refined grid gives,
+A refinement adds points inside some intervals. What the plan needs is recomputed where an
+added point can change it, and equals what the whole computation on the refined grid gives,
 bit for bit (every generated function is evaluated per point or per interval, with the same
 inputs):
 
 * each point's coefficients (``path_coefficients``) depend on its arc length alone: only the
   new points are evaluated;
-* a point's ``path_stage`` row depends on it and its neighbours (rho, delta): the rows are
-  relinked over the whole grid (NumPy, cheap), and the maximum-velocity curve is evaluated
-  only at the rows that changed;
-* the backward pass (from the end) runs from the last interval whose input changed down to the
-  start, from the bound the previous pass found at that interval's end (the intervals above
-  are the previous ones, with the same inputs: the same bounds); the forward pass (from the
-  start) from the first interval whose input (or controllable bound) changed to the end, from
-  the speed the previous pass reached there. Each is one ``accumulate`` call over its
-  sub-range, whose rows carry the previous pass's step over the same interval: where the new
-  pass arrives with the previous state (it met the previous pass again), the generated step
-  returns the previous result without evaluating anything (pm2dof/derive/planning.py,
-  ``_reusing``). The passes meet again where a change has died out: the backward pass's
-  bisection keeps to a lattice (its result does not depend on the last bits of the bound it
-  starts from) and the forward pass lands on the controllable bound exactly, so a pass is
-  evaluated over the stretch an added point really changes (an acceleration or braking arc
-  through it), not to the end of the grid;
+* the passes (a point's ``path_stage`` row linked to its neighbours, the maximum-velocity
+  curve, the backward and the forward pass) run over the whole grid in one C call
+  (:func:`.cpasses.solve_c`, pm2dof/planning/_passes.c); :func:`passes` is the same in NumPy
+  around the generated C, the reference, and what names the place where a grid fails;
 * an interval's midpoint check is recomputed where the interval is new or its speeds or
   acceleration changed.
-
-:func:`passes` with no previous solve is the whole computation (``solve_profile``).
 """
 import numpy as np
 
 from ..core.errors import PlanError
 from .check import point_text
+from .cpasses import Linking, solve_c
 from .plan import PathProfile, grid_times, sampled
 from .stages import junction_left, link, point_stages
 from .workspace import Workspace, workspace
@@ -86,43 +73,22 @@ def _mvc(problem, rows):
     return out
 
 
-def passes(problem, stage, arrive, s, p, prev=None, ws=None):
+def passes(problem, stage, arrive, s, p, ws=None):
     """The maximum-velocity curve and the backward and forward passes of ``problem``
     (:class:`.problem.PlanProblem`) over the grid ``s`` (K,) (``stage``, ``arrive``:
-    :func:`pm2dof.planning.stages.link`; ``p`` (K, m) its points, for messages). ``prev``:
-    what this returned as ``memo`` for an earlier grid of which ``s`` is a refinement (its
-    points a subset), or None: everything computed. ``ws``: the :class:`.workspace.Workspace`
-    holding the passes' inputs (default a fresh one); nothing returned lives in it.
+    :func:`pm2dof.planning.stages.link`; ``p`` (K, m) its points, for messages), in NumPy
+    around the generated C: the reference of :func:`.cpasses.solve_c`, which the planner runs,
+    and what raises the PlanError naming where a grid fails. ``ws``: the
+    :class:`.workspace.Workspace` holding the passes' inputs (default a fresh one); nothing
+    returned lives in it.
 
-    Returns (x (K,), sdd (K,), x_mvc (K,), relaxed, memo): relaxed the intervals whose arrival
-    facets could not hold together with the departing ones (only the departing ones are met
-    there: collocation's O(delta) error)."""
+    Returns (x (K,), sdd (K,), x_mvc (K,), relaxed): relaxed the intervals whose arrival facets
+    could not hold together with the departing ones (only the departing ones are met there:
+    collocation's O(delta) error)."""
     K, model, prm = len(s), problem.model, problem.params
     ws = Workspace() if ws is None else ws
     sl = model.layout("path_stage").slices
-    if prev is None:
-        src = np.full(K, -1)
-    else:
-        j = np.minimum(np.searchsorted(prev["s"], s), len(prev["s"]) - 1)
-        src = np.where(prev["s"][j] == s, j, -1)
-    old = src >= 0
-    js = np.where(old, src, 0)
-    # a stage row depends on its point and the next (rho, delta; the last row on the last
-    # interval), an arrive row on its stage row and the previous one's rho: rows whose
-    # interval(s) are the previous grid's are the previous rows; the other old rows are compared
-    kept = old[:-1] & (src[1:] == src[:-1] + 1)         # intervals of the previous grid
-    same_st = np.append(kept, kept[-1:] & old[-1:])
-    same_ar = same_st.copy()
-    same_ar[1:] &= kept
-    for same_rows, rows, key in ((same_st, stage, "stage"), (same_ar, arrive, "arrive")):
-        check = np.flatnonzero(old & ~same_rows)
-        if check.size:
-            same_rows[check] = _same_rows(rows[check], prev[key][src[check]])
-    # the maximum-velocity curve, of the rows that changed
-    x_mvc = np.empty(K)
-    x_mvc[same_st] = prev["x_mvc"][src[same_st]] if prev else 0.0
-    fresh = np.flatnonzero(~same_st)
-    x_mvc[fresh] = _mvc(problem, stage[fresh])
+    x_mvc = _mvc(problem, stage)
     bad = np.flatnonzero(x_mvc < 0)
     if bad.size:
         k = int(bad[0])
@@ -138,10 +104,7 @@ def passes(problem, stage, arrive, s, p, prev=None, ws=None):
                         f"the path there only at rest (the maximum-velocity curve touches 0)")
     # the arrival facets' own maximum-velocity curve where they differ from the point's own
     cap = x_mvc.copy()
-    other = np.any(arrive != stage, axis=1)
-    reuse = other & same_ar & same_st
-    cap[reuse] = prev["cap"][src[reuse]] if prev else 0.0
-    todo = np.flatnonzero(other & ~reuse)
+    todo = np.flatnonzero(np.any(arrive != stage, axis=1))
     cap[todo] = _mvc(problem, arrive[todo])
     fin = model.layout("path_forward_input")
     inp = ws.take("forward", (K - 1, fin.size))   # per interval: pair, x_next_max, memo
@@ -149,80 +112,37 @@ def passes(problem, stage, arrive, s, p, prev=None, ws=None):
     P = inp[:, fin.slices["pair"]]
     pair = model.layout("path_pair").unpack(P)
     pair["stage"][:], pair["next"][:], pair["next_cap"][:, 0] = stage[:-1], arrive[1:], cap[1:]
-    # intervals of the previous grid with the same input (pair)
-    same = kept & same_st[:-1] & same_ar[1:] & same_st[1:]
-    changed = np.flatnonzero(~same)
-    # backward: controllable bounds, from rest at the end, from the last interval whose input
-    # changed (the ones above are the previous grid's, with its bounds); below it, where the
-    # pass meets the previous one again, the C returns the previous bounds
-    hi = np.empty(K)
-    top = int(changed[-1]) if changed.size else -1
-    hi[top + 1:] = prev["hi"][js[top + 1:]] if prev else 0.0
-    hi[-1] = 0.0
-    if top >= 0:
-        bl = model.layout("path_backward_input")
-        rows = ws.take("backward", (top + 1, bl.size))  # every column: pair, then the memo
-        B = bl.unpack(rows)
-        rows[:, bl.slices["pair"]] = P[top::-1]
-        rows[:, bl.slices["pair"].stop:] = 0.0
-        if prev:
-            r = slice(top, None, -1)
-            B["same"][:, 0] = same[r]
-            B["x_in"][:, 0] = prev["hi"][js[1:top + 2]][::-1]
-            B["x_out"][:, 0] = prev["hi"][js[:top + 1]][::-1]
-        back = ws.take("back", (top + 1,))
-        model.function("path_backward").accumulate(np.array([hi[top + 1]]), rows, prm, back)
-        hi[:top + 1] = back[::-1]
+    # backward: controllable bounds, from rest at the end (the memo columns, for reusing a
+    # previous pass's steps, unused: zero)
+    bl = model.layout("path_backward_input")
+    rows = ws.take("backward", (K - 1, bl.size))
+    rows[:, bl.slices["pair"]] = P[::-1]
+    rows[:, bl.slices["pair"].stop:] = 0.0
+    back = ws.take("back", (K - 1,))
+    model.function("path_backward").accumulate(np.array([0.0]), rows, prm, back)
+    hi = np.append(back[::-1], 0.0)
     if hi[0] < 0:
         k = int(np.flatnonzero(hi < 0)[-1])
         raise PlanError(f"the robot cannot reach the end of the path at rest from "
                         f"{at(p, s, k)} with these torque limits: no feasible deceleration "
                         f"(even near rest the motors must balance the Coulomb friction; a larger "
                         f"tau_max, or the min_max split, leaves more room)")
-    # forward: greedy from rest at the start, from the first interval whose input or
-    # controllable bound changed (the ones before are the previous grid's)
+    # forward: greedy from rest at the start
     F["x_next_max"][:, 0] = hi[1:]
+    for key in ("same", "x_in", "x_out"):
+        F[key][:] = 0.0
     out = model.layout("path_forward_output")
-    evaluated = [top + 1, 0]
-    if prev:
-        same &= hi[1:] == prev["hi"][js[1:]]
-        evaluated[0] -= int(np.count_nonzero(same[:top + 1]))   # met again: reused
-        F["same"][:, 0] = same
-        F["x_in"][:, 0] = prev["x_raw"][js[:-1]]
-        F["x_out"][:, 0] = prev["x_raw"][js[1:]]
-    else:
-        for key in ("same", "x_in", "x_out"):
-            F[key][:] = 0.0
-    first = int(np.argmin(same)) if not same.all() else K - 1
     y = np.empty((K - 1, out.size))
-    x_raw = np.empty(K)
-    if first:
-        y[:first] = prev["y"][js[:first]]
-        x_raw[:first + 1] = prev["x_raw"][js[:first + 1]]
-    else:
-        x_raw[0] = 0.0
-    if first < K - 1:
-        xf = np.array([x_raw[first]])
-        model.function("path_forward").accumulate(xf, inp[first:], prm, y[first:])
-        x_raw[first:-1] = y[first:, out.slices["x"]][:, 0]
-        x_raw[-1] = xf[0]
-        if prev:        # the steps that met the previous pass: its y
-            met = first + np.flatnonzero(same[first:] & (x_raw[first:-1] == F["x_in"][first:, 0]))
-            y[met] = prev["y"][js[met]]
-            x_raw[met] = prev["x_raw"][js[met]]
-            evaluated[1] = K - 1 - first - met.size
-        else:
-            evaluated[1] = K - 1 - first
+    xf = np.array([0.0])
+    model.function("path_forward").accumulate(xf, inp, prm, y)
+    x_raw = np.append(y[:, out.slices["x"]][:, 0], xf[0])
     Y = {k: v[:, 0] for k, v in out.unpack(y).items()}
     sdd, L, U, Z = Y["sdd"], Y["L"], Y["U"], Y["Z"]
     relaxed = np.flatnonzero(Y["arrival_ok"] == 0)  # the arrival facets do not hold there
     _check_forward(p, s, x_raw, sdd, L, U, Z, stage[:-1, sl["h"]].max(axis=1), x_mvc)
     x = np.maximum(x_raw, 0.0)
     x[x_cap == 0] = 0.0
-    memo = {"s": s, "stage": stage, "arrive": arrive, "x_mvc": x_mvc, "cap": cap,
-            "hi": hi, "y": y, "x_raw": x_raw,
-            "evaluated": (*evaluated, fresh.size)}   # steps of each pass, MVC rows
-    return x, np.concatenate([sdd, sdd[-1:]]), x_mvc, relaxed, memo
+    return x, np.concatenate([sdd, sdd[-1:]]), x_mvc, relaxed
 
 
 class Grid:
@@ -238,6 +158,7 @@ class Grid:
         self.base, outs = point_stages(problem, s, self.ev)
         self.v1 = outs["v1"]
         self.left = junction_left(problem)
+        self.linking = Linking(problem, self.left)
         self.memo = self.mid = None
         self.ws = workspace()
         self.stage = self.arrive = None
@@ -271,8 +192,10 @@ class Grid:
             return None
         s = self.s[idx]
         stops = np.searchsorted(s, self.problem.path.stops)
-        stage, arrive = link(self.problem, s, self.base[idx], self.v1[idx], stops, self.left)
-        relaxed = passes(self.problem, stage, arrive, s, self.ev[0][idx], None, self.ws)[3]
+        relaxed = solve_c(self.linking, s, self.base[idx], self.v1[idx], stops)
+        if relaxed is None:     # the grid itself decides (and names what fails)
+            raise PlanError("the coarse grid cannot be planned")
+        relaxed = relaxed[4]
         return idx[relaxed], idx[relaxed + 1]
 
     def stops(self):
@@ -280,12 +203,18 @@ class Grid:
         return np.searchsorted(self.s, stops) if len(stops) else np.array([], dtype=int)
 
     def solve(self):
-        """The passes on the current grid (:func:`passes`, from the previous solve's results):
-        (x, sdd, x_mvc, relaxed)."""
-        self.stage, self.arrive = link(self.problem, self.s, self.base, self.v1, self.stops(),
-                                       self.left)
-        x, sdd, x_mvc, relaxed, self.memo = passes(self.problem, self.stage, self.arrive,
-                                                   self.s, self.ev[0], self.memo, self.ws)
+        """The passes on the current grid, in one C call (:func:`.cpasses.solve_c`): (x, sdd,
+        x_mvc, relaxed). Where they fail, the NumPy passes (:func:`passes`) raise their
+        PlanError."""
+        stops = self.stops()
+        out = solve_c(self.linking, self.s, self.base, self.v1, stops)
+        if out is None:
+            self.stage, self.arrive = link(self.problem, self.s, self.base, self.v1, stops,
+                                           self.left)
+            passes(self.problem, self.stage, self.arrive, self.s, self.ev[0], self.ws)
+            raise RuntimeError("the planner's passes in C failed where the NumPy passes did "
+                               "not: please report this with the path and the model")
+        self.stage, x, sdd, x_mvc, relaxed = out
         return x, sdd, x_mvc, relaxed
 
     def _ratio(self, stage, sd, sdd):

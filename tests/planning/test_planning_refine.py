@@ -1,7 +1,7 @@
 # The planner refines its grid in place, and the trajectory it hands to simulate respects tau_max.
-"""A refined grid reran both passes over the whole grid (and re-evaluated
-every point) each round; now only what the added points can change is recomputed, and the
-result must equal the whole computation on the refined grid, bit for bit. Between grid points the 2 ms trajectory needed 5.0046 N m at tau_max = 5 on a user's spline
+"""A refined grid re-evaluates only its new points' coefficients and the midpoint checks the
+added points change; the passes run over the whole grid in C each round. The result must equal
+the whole computation on the refined grid, bit for bit. Between grid points the 2 ms trajectory needed 5.0046 N m at tau_max = 5 on a user's spline
 (the planner held only the intervals' midpoints, to 0.1 %); now the samples of the trajectory
 are checked too (SAMPLE_TOL = 0.01 %). And "a coarse grid gives a longer plan, never a shorter
 one" did not hold between two coarse grids: what holds is tested here."""
@@ -60,38 +60,26 @@ def test_the_refined_plan_equals_a_full_rerun_on_its_grid(m, name):
     assert rounds > 0          # the paths do need refinement: the comparison is not trivial
 
 
-@pytest.mark.parametrize("name", ["pick_and_place", "spline"])
-def test_every_round_equals_the_whole_computation(m, name, monkeypatch):
-    """The planner with every round computed from scratch (no previous solve, no midpoint
-    kept) makes the same decisions and returns the same plan, bit for bit; and the
-    incremental rounds did reuse: fewer steps of the passes evaluated than the grid has."""
+@pytest.mark.parametrize("name, grid, split", [("pick_and_place", 200, "min_max"),
+                                               ("spline", 100, "min_max"),
+                                               ("curve", 400, "min_norm")])
+def test_every_round_equals_the_whole_computation(m, name, grid, split, monkeypatch):
+    """The planner with every midpoint check computed from scratch (none kept from the round
+    before) makes the same decisions and returns the same plan, bit for bit (each round's
+    passes are the whole computation, in C: test_planning_passes_c.py)."""
     path = PATHS[name]
-    evaluated = []
-    passes = grid_module.passes
-
-    def counting(*args):
-        out = passes(*args)
-        if args[5] is not None:         # a round from the previous solve (not a whole one)
-            evaluated.append((len(args[3]), out[4]["evaluated"]))
-        return out
-
-    monkeypatch.setattr(grid_module, "passes", counting)
-    fast = plan_time_optimal(m, path, 6.0, "min_max", grid=400)
-    later = evaluated
-    assert later and all(b + f < 2 * (K - 1) for K, (b, f, _) in later), evaluated
-    solve, between = grid_module.Grid.solve, grid_module.Grid.check_midpoints
-
-    def solve_afresh(self):
-        self.memo = None
-        return solve(self)
+    fast = plan_time_optimal(m, path, 6.0, split, grid=grid)
+    between = grid_module.Grid.check_midpoints
+    kept = []
 
     def between_afresh(self, x, sdd):
+        kept.append(self.mid is not None)
         self.mid = None
         return between(self, x, sdd)
 
-    monkeypatch.setattr(grid_module.Grid, "solve", solve_afresh)
     monkeypatch.setattr(grid_module.Grid, "check_midpoints", between_afresh)
-    slow = plan_time_optimal(m, path, 6.0, "min_max", grid=400)
+    slow = plan_time_optimal(m, path, 6.0, split, grid=grid)
+    assert any(kept)                    # a round had a previous check to reuse
     assert fast.info["refinements"] == slow.info["refinements"] > 0
     for key in ("s", "sdot", "sddot", "t", "max_velocity", "tau"):
         assert np.array_equal(getattr(fast, key), getattr(slow, key)), key

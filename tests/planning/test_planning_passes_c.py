@@ -1,0 +1,97 @@
+"""The planner's passes in C (pm2dof/planning/_passes.c, pm2dof.planning.cpasses.solve_c)
+against the NumPy ones (stages.link, then grid.passes) on every round of real plans, bit for
+bit: a point robot, a platform, linear actuators and gravity, both splits, with and without
+friction; and the errors of the C entry point."""
+import numpy as np
+import pytest
+
+import pm2dof
+from pm2dof.bench.baselines import friction_free
+from pm2dof.control.trajectory import line_moves
+from pm2dof.planning import _passes
+from pm2dof.planning import grid as grid_module
+from pm2dof.planning.cpasses import solve_c
+from pm2dof.planning.pathfile import model_move_path, read_path_file
+from pm2dof.planning.stages import link
+
+# the paper's robot (with its shipped paths), its vertical variant (gravity), a point robot
+# on linear actuators, a 4-RRR platform and a 3-RPR platform (linear actuators)
+MODELS = ["shang2010", "shang2010_vertical", "prr_point", "rrr4_platform", "rpr3_platform"]
+
+
+def _bits(a):
+    return np.ascontiguousarray(a).view(np.int64)
+
+
+@pytest.mark.parametrize("name", MODELS)
+def test_every_round_of_the_c_passes_equals_the_numpy_passes(name, monkeypatch):
+    m = pm2dof.load_model(name)
+    paths = [model_move_path(m, k).path for k in line_moves(m)]
+    if name == "shang2010":
+        paths += [read_path_file(k).path for k in ("pick_and_place", "curve")]
+    rounds, relaxed = [], 0
+    solve = grid_module.Grid.solve
+
+    def compared(self):
+        out = solve(self)
+        stage, arrive = link(self.problem, self.s, self.base, self.v1, self.stops(), self.left)
+        ref = grid_module.passes(self.problem, stage, arrive, self.s, self.ev[0])
+        for got, want, what in zip(out, ref, ("x", "sdd", "x_mvc")):
+            assert np.array_equal(_bits(got), _bits(want)), what
+        assert np.array_equal(out[3], ref[3])
+        assert np.array_equal(_bits(self.stage), _bits(stage))
+        rounds.append(len(self.s))
+        return out
+
+    monkeypatch.setattr(grid_module.Grid, "solve", compared)
+    for path in paths:
+        for split in ("min_max", "min_norm"):
+            for theta in (None, friction_free(m)):
+                plan = pm2dof.plan_time_optimal(m, path, split=split, theta=theta, grid=300)
+                relaxed += len(plan.info["arrival_relaxed"])
+    assert len(rounds) >= 4 * len(paths)
+    if name == "shang2010":
+        assert relaxed > 0      # the rows the arrival facets fail on were compared too
+
+
+def test_the_c_passes_refuse_wrong_arguments():
+    m = pm2dof.load_model()
+    path = read_path_file("curve").path
+    g = grid_module.Grid.__new__(grid_module.Grid)
+    plan = pm2dof.plan_time_optimal(m, path, grid=50)
+    # a grid the planner built, for its linking and rows
+    from pm2dof.planning.problem import PlanProblem
+    g.__init__(PlanProblem.create(m, path), plan.s, path.evaluate(plan.s))
+    ln = g.linking
+    assert solve_c(ln, g.s, g.base, g.v1, g.stops()) is not None
+    K, S = g.base.shape
+    args = [*ln.fns, ln.problem.params, g.s, g.base, g.v1, np.zeros(K), ln.left, ln.junctions,
+            ln.offsets, np.empty((K, S)), np.empty(K), np.empty(K), np.empty(K),
+            np.empty(K - 1)]
+    bad = list(args)
+    bad[5] = g.base[:-1]
+    with pytest.raises(ValueError, match="base must be a contiguous float64 array of"):
+        _passes.solve(*bad)
+    bad = list(args)
+    bad[0] = m.function("path_forward")
+    with pytest.raises(TypeError, match="expected 2 inputs and 1 outputs"):
+        _passes.solve(*bad)
+    bad = list(args)
+    bad[0] = np.zeros(3)
+    with pytest.raises(TypeError, match="expected a pm2dof.core._cbind.Function"):
+        _passes.solve(*bad)
+    bad = list(args)
+    bad[10] = ln.offsets.astype(float)
+    with pytest.raises(ValueError, match="offsets must be a contiguous int64 array"):
+        _passes.solve(*bad)
+    assert _passes.solve(*args) == 0    # at rest everywhere (x_cap 0): a plan of zeros
+    assert not args[12].any()
+
+
+def test_where_the_c_passes_fail_the_numpy_passes_name_the_place():
+    """Limits below the Coulomb friction: the C passes return 1 and the planner raises the
+    NumPy passes' PlanError (the arc length and the point)."""
+    m = pm2dof.load_model()
+    path = read_path_file("curve").path
+    with pytest.raises(pm2dof.PlanError, match=r"cannot move the robot along the path at s = "):
+        pm2dof.plan_time_optimal(m, path, tau_max=0.05, grid=50)
