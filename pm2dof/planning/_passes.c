@@ -1,4 +1,4 @@
-/* pm2dof.planning._passes: the time-optimal planner's solve on one grid in one C call. */
+/* pm2dof.planning._passes: the time-optimal planner's rows and passes on one grid, in C. */
 
 /*
  * solve(mvc, backward, forward, params, s, base, v1, x_cap, left, junctions, offsets,
@@ -284,7 +284,98 @@ done:
     return result;
 }
 
+/* rows(coefficients, p, dp, ddp, theta, tau_max, outmap, rows, v1, sing) -> None
+ *
+ * Each point's own path_stage row (stages.point_stages): path_coefficients at (p, dp, ddp)
+ * (K, m) each, its outputs written straight into the row: outmap (n_out + 2,) int64 gives each
+ * output's offset in the row, -1 (not computed: the other split's polygon) or -2 (the
+ * singularity measures, into sing (K, 2)), then v1's offset and length, copied into v1 (K, n)
+ * too. The rest of each row (rho, delta, x_cap) is zero. */
+static PyObject *rows(PyObject *self, PyObject *args)
+{
+    PyObject *fo, *a[9];
+    if (!PyArg_ParseTuple(args, "OOOOOOOOOO", &fo, &a[0], &a[1], &a[2], &a[3], &a[4], &a[5],
+                          &a[6], &a[7], &a[8]))
+        return NULL;
+    Buf b[9];
+    int got = 0;
+    PyObject *result = NULL;
+    Pm2dofCall *f = NULL;
+    if (get(a[5], &b[got], "outmap", 0, -1, 1) < 0)
+        goto done;
+    got++;
+    const long long *map = b[0].v.buf;
+    Py_ssize_t n_map = b[0].v.len / 8;
+    if ((f = api->begin(fo, 5, n_map - 2)) == NULL)
+        goto done;
+    Py_ssize_t n_out = n_map - 2, m = api->nnz(f, 0), K;
+    if (get(a[0], &b[got], "p", 0, -1, 0) < 0)
+        goto done;
+    K = b[got++].v.len / 8 / (m ? m : 1);
+    Py_ssize_t S = 0, n = (Py_ssize_t)map[n_map - 1], v1_off = (Py_ssize_t)map[n_map - 2];
+    if (get(a[6], &b[got], "rows", 1, -1, 0) < 0)
+        goto done;
+    S = K ? b[got].v.len / 8 / K : 0;
+    got++;
+    struct { int i; const char *name; Py_ssize_t n; } spec[] = {
+        {1, "dp", K * m}, {2, "ddp", K * m}, {3, "theta", api->nnz(f, 3)},
+        {4, "tau_max", api->nnz(f, 4)}, {7, "v1", K * n}, {8, "sing", 2 * K}};
+    double *ptr[9];
+    ptr[0] = b[1].v.buf;
+    ptr[6] = b[2].v.buf;
+    for (size_t i = 0; i < sizeof(spec) / sizeof(spec[0]); i++) {
+        if (get(a[spec[i].i], &b[got], spec[i].name, spec[i].i >= 7, spec[i].n, 0) < 0)
+            goto done;
+        ptr[spec[i].i] = b[got++].v.buf;
+    }
+    if (b[1].v.len / 8 != K * m || b[2].v.len / 8 != K * S || api->nnz(f, 1) != m ||
+        api->nnz(f, 2) != m || v1_off < 0 || v1_off + n > S) {
+        PyErr_SetString(PyExc_ValueError, "rows: p, rows or outmap do not fit the function");
+        goto done;
+    }
+    for (Py_ssize_t i = 0; i < n_out; i++) {
+        Py_ssize_t d = (Py_ssize_t)map[i], nz = api->nnz(f, 5 + i);
+        if ((d >= 0 && d + nz > S) || (d == -2 && nz != 2) || d < -2) {
+            PyErr_Format(PyExc_ValueError, "rows: output %zd does not fit its place", i);
+            goto done;
+        }
+    }
+    double *res[64];
+    if (n_out > 64) {
+        PyErr_SetString(PyExc_ValueError, "rows: too many outputs");
+        goto done;
+    }
+    int rc = 0;
+    Py_ssize_t k;
+    Py_BEGIN_ALLOW_THREADS
+    for (k = 0; k < K && rc == 0; k++) {
+        double *row = ptr[6] + k * S;
+        memset(row, 0, (size_t)S * sizeof(double));
+        for (Py_ssize_t i = 0; i < n_out; i++)
+            res[i] = map[i] >= 0 ? row + map[i] : map[i] == -2 ? ptr[8] + 2 * k : NULL;
+        const double *in[5] = {ptr[0] + k * m, ptr[1] + k * m, ptr[2] + k * m, ptr[3], ptr[4]};
+        rc = api->eval(f, in, res);
+        memcpy(ptr[7] + k * n, row + v1_off, (size_t)n * sizeof(double));
+    }
+    Py_END_ALLOW_THREADS
+    if (rc != 0) {
+        PyErr_Format(PyExc_RuntimeError, "path_coefficients returned error code %d at point "
+                     "%zd", rc, k - 1);
+        goto done;
+    }
+    result = Py_None;
+    Py_INCREF(result);
+done:
+    api->end(f);
+    for (int i = 0; i < got; i++)
+        PyBuffer_Release(&b[i].v);
+    return result;
+}
+
 static PyMethodDef methods[] = {
+    {"rows", rows, METH_VARARGS,
+     "rows(coefficients, p, dp, ddp, theta, tau_max, outmap, rows, v1, sing): each point's "
+     "own path_stage row, in place."},
     {"solve", solve, METH_VARARGS,
      "solve(mvc, backward, forward, params, s, base, v1, x_cap, left, junctions, offsets, "
      "stage, x, sdd, x_mvc, arrival_ok) -> 0, or 1 where the Python passes raise."},
@@ -293,7 +384,7 @@ static PyMethodDef methods[] = {
 
 static struct PyModuleDef module = {
     PyModuleDef_HEAD_INIT, "_passes",
-    "The time-optimal planner's passes on one grid in one C call (pm2dof.planning.grid).",
+    "The time-optimal planner's rows and passes on one grid in C (pm2dof.planning.cpasses).",
     -1, methods,
 };
 

@@ -15,6 +15,7 @@ from ..control.rules import TAU_MAX_LIMIT
 from ..control.settings import actuator_limits
 from ..core.errors import ArgumentError, PlanError
 from ..core.task import effort_unit
+from . import _passes
 from .check import first_bad, raise_at
 
 __all__ = ["SPLITS", "GRID_MAX", "grid_points", "limits", "stages", "point_stages", "params",
@@ -130,17 +131,32 @@ def point_stages(problem, s, evaluated, check=True):
     if split not in SPLITS:
         raise PlanError(f"split must be one of {list(SPLITS)}, got {split!r}")
     p, dp, ddp = (np.ascontiguousarray(x) for x in evaluated)
-    outs = _coefficients(problem, p, dp, ddp)
+    K, lay = len(p), model.layout("path_stage")
+    stage, v1, sing = np.empty((K, lay.size)), np.empty((K, model.n_legs)), np.empty((K, 2))
+    _passes.rows(model.function("path_coefficients"), p, dp, ddp, problem.theta,
+                 problem.tau_max, _row_map(model, split), stage, v1, sing)
+    st = lay.unpack(stage)
+    outs = {key: st[key] for key in ("a", "b", "g", "S") if key in st}
+    outs.update({"v1": v1, "sing": sing, f"N_{split}": st["N"], f"h_{split}": st["h"]})
     if check:
-        sing = outs["sing"]
         k = first_bad(model, sing)
         bad = ~np.isfinite(outs["a"]).all(axis=1) | ~np.isfinite(outs["b"]).all(axis=1)
         if k is not None or bad.any():
             k = k if k is not None else int(np.argmax(bad))
             raise_at(model, s[k], p[k], sing[k])
-    stage = np.zeros((len(s), model.layout("path_stage").size))
-    _fill(model, stage, outs, split)
     return stage, outs
+
+
+def _row_map(model, split):
+    """Where ``_passes.rows`` writes each output of path_coefficients in a path_stage row (the
+    row offset, -1: not computed, -2: the singularity measures), then v1's offset and length
+    (as :func:`_fill` places them)."""
+    sl = model.layout("path_stage").slices
+    place = {"a": "a", "b": "b", "g": "g", "S": "S", "v1": "v1", f"N_{split}": "N",
+             f"h_{split}": "h"}
+    names = model.function("path_coefficients").names_out
+    out = [sl[place[k]].start if k in place else -2 if k == "sing" else -1 for k in names]
+    return np.array(out + [sl["v1"].start, sl["v1"].stop - sl["v1"].start], dtype=np.int64)
 
 
 def stages(problem, s, stops=(), evaluated=None):
@@ -182,6 +198,7 @@ def stages(problem, s, stops=(), evaluated=None):
     base, outs = point_stages(problem, s, (p, dp, ddp))
     left = junction_left(problem)
     stage, arrive = link(problem, s, base, outs["v1"], stops, left)
+    outs = {k: np.ascontiguousarray(v) for k, v in outs.items()}   # views of the rows
     h = outs[f"h_{split}"]
     coef = {"a": outs["a"], "b": outs["b"], "S": outs["S"].reshape(K, n, m), "v1": outs["v1"],
             "N": outs[f"N_{split}"].reshape(K, h.shape[1], m), "h": h,

@@ -95,3 +95,25 @@ def test_where_the_c_passes_fail_the_numpy_passes_name_the_place():
     path = read_path_file("curve").path
     with pytest.raises(pm2dof.PlanError, match=r"cannot move the robot along the path at s = "):
         pm2dof.plan_time_optimal(m, path, tau_max=0.05, grid=50)
+
+
+@pytest.mark.parametrize("name", MODELS)
+@pytest.mark.parametrize("split", ["min_max", "min_norm"])
+def test_the_c_rows_equal_the_coefficients_placed_by_numpy(name, split):
+    """stages.point_stages' rows from one C call (path_coefficients written into each row)
+    against the map's outputs placed by stages._fill, bit for bit, and the v1 and the
+    singularity measures beside them."""
+    from pm2dof.planning.problem import PlanProblem
+    from pm2dof.planning.stages import _coefficients, _fill, point_stages
+    m = pm2dof.load_model(name)
+    path = model_move_path(m, line_moves(m)[0]).path
+    problem = PlanProblem.create(m, path, split=split)
+    s = np.linspace(0.0, path.length, 101)
+    ev = path.evaluate(s)
+    stage, outs = point_stages(problem, s, ev)
+    ref = _coefficients(problem, *ev)
+    want = np.zeros_like(stage)
+    _fill(m, want, ref, split)
+    assert np.array_equal(_bits(stage), _bits(want))
+    for key in ("v1", "sing"):
+        assert np.array_equal(_bits(outs[key]), _bits(ref[key])), key
