@@ -23,7 +23,9 @@ def _offsets(model):
                      pair.size, p["stage"].start, p["next"].start, p["next_cap"].start,
                      bi.size, b["pair"].start, fi.size, f["pair"].start, f["x_next_max"].start,
                      fo.size, y["x"].start, y["sdd"].start, y["L"].start, y["U"].start,
-                     y["Z"].start, y["arrival_ok"].start], dtype=np.int64)
+                     y["Z"].start, y["arrival_ok"].start,
+                     *(sl[k].start for sl in (b, f) for k in ("same", "x_in", "x_out"))],
+                    dtype=np.int64)
 
 
 class Linking:
@@ -44,18 +46,24 @@ class Linking:
             _fill(model, self.left, left, problem.split)
 
 
-def solve_c(linking, s, base, v1, stops):
+def solve_c(linking, s, base, v1, stops, prev=None):
     """The passes on the grid ``s`` (K,) with its points' rows ``base`` (K, S) and v1 (K, n),
     at rest at the grid indices ``stops``: (stage (K, S), x (K,), sdd (K,), x_mvc (K,),
-    relaxed), as ``link`` then ``passes`` give them; None where those raise."""
+    relaxed, memo), as ``link`` then ``passes`` give them; None where those raise. ``prev``:
+    the ``memo`` of a solve on a grid of which ``s`` is a refinement (its points among ``s``),
+    whose steps the C takes where they cannot have changed (the result is the same, bit for
+    bit), or None."""
     K = len(s)
     x_cap = np.full(K, V_TOP ** 2)
     x_cap[list(stops)] = 0.0
     stage = np.empty((K, int(linking.offsets[0])))
     x, sdd, x_mvc, ok = np.empty(K), np.empty(K), np.empty(K), np.empty(K - 1)
+    cap, hi, x_raw = np.empty(K), np.empty(K), np.empty(K)
+    y = np.empty((K - 1, int(linking.offsets[16])))
     status = _passes.solve(*linking.fns, linking.problem.params, s, base, v1, x_cap,
                            linking.left, linking.junctions, linking.offsets, stage, x, sdd,
-                           x_mvc, ok)
+                           x_mvc, ok, cap, hi, y, x_raw, prev)
     if status:
         return None
-    return stage, x, sdd, x_mvc, np.flatnonzero(ok == 0)
+    memo = (s, stage, x_mvc, cap, hi, y, x_raw)
+    return stage, x, sdd, x_mvc, np.flatnonzero(ok == 0), memo

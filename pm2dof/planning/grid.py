@@ -9,9 +9,13 @@ inputs):
 * each point's coefficients (``path_coefficients``) depend on its arc length alone: only the
   new points are evaluated;
 * the passes (a point's ``path_stage`` row linked to its neighbours, the maximum-velocity
-  curve, the backward and the forward pass) run over the whole grid in one C call
-  (:func:`.cpasses.solve_c`, pm2dof/planning/_passes.c); :func:`passes` is the same in NumPy
-  around the generated C, the reference, and what names the place where a grid fails;
+  curve, the backward and the forward pass) are one C call (:func:`.cpasses.solve_c`,
+  pm2dof/planning/_passes.c) that takes from the previous solve what the added points cannot
+  have changed: the curve where a row is the same, the backward pass above the last interval
+  whose input changed, the forward pass before the first, and each step where the pass meets
+  the previous one again (the generated step returns the previous result: _reusing in
+  pm2dof/derive/planning.py). :func:`passes` is the whole computation in NumPy around the
+  generated C: the reference, and what names the place where a grid fails;
 * an interval's midpoint check is recomputed where the interval is new or its speeds or
   acceleration changed.
 """
@@ -195,7 +199,7 @@ class Grid:
         relaxed = solve_c(self.linking, s, self.base[idx], self.v1[idx], stops)
         if relaxed is None:     # the grid itself decides (and names what fails)
             raise PlanError("the coarse grid cannot be planned")
-        relaxed = relaxed[4]
+        relaxed = relaxed[4]         # nothing of the coarse solve is kept
         return idx[relaxed], idx[relaxed + 1]
 
     def stops(self):
@@ -203,18 +207,19 @@ class Grid:
         return np.searchsorted(self.s, stops) if len(stops) else np.array([], dtype=int)
 
     def solve(self):
-        """The passes on the current grid, in one C call (:func:`.cpasses.solve_c`): (x, sdd,
+        """The passes on the current grid, in one C call (:func:`.cpasses.solve_c`, taking the
+        previous solve's results where the added points cannot have changed them): (x, sdd,
         x_mvc, relaxed). Where they fail, the NumPy passes (:func:`passes`) raise their
         PlanError."""
         stops = self.stops()
-        out = solve_c(self.linking, self.s, self.base, self.v1, stops)
+        out = solve_c(self.linking, self.s, self.base, self.v1, stops, self.memo)
         if out is None:
             self.stage, self.arrive = link(self.problem, self.s, self.base, self.v1, stops,
                                            self.left)
             passes(self.problem, self.stage, self.arrive, self.s, self.ev[0], self.ws)
             raise RuntimeError("the planner's passes in C failed where the NumPy passes did "
                                "not: please report this with the path and the model")
-        self.stage, x, sdd, x_mvc, relaxed = out
+        self.stage, x, sdd, x_mvc, relaxed, self.memo = out
         return x, sdd, x_mvc, relaxed
 
     def _ratio(self, stage, sd, sdd):

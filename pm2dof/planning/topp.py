@@ -22,9 +22,9 @@ in generated C (pm2dof/derive/planning.py), in closed form or by bisection (to 2
 Around the passes (:func:`plan_time_optimal`) the grid is refined until it resolves the path
 (RESOLUTION) and the torques between the grid points (BETWEEN_TOL at each midpoint,
 SAMPLE_TOL at each sample of the trajectory), in place: each round evaluates the new points'
-coefficients and the midpoints the added points change, and runs the passes over the whole
-grid in one C call (:class:`pm2dof.planning.grid.Grid`), equal bit for bit to the whole
-computation on the refined grid.
+coefficients and the midpoints the added points change, and runs the passes in one C call
+that reuses what the added points cannot change (:class:`pm2dof.planning.grid.Grid`), equal
+bit for bit to the whole computation on the refined grid.
 """
 import time
 

@@ -67,7 +67,8 @@ def test_the_c_passes_refuse_wrong_arguments():
     K, S = g.base.shape
     args = [*ln.fns, ln.problem.params, g.s, g.base, g.v1, np.zeros(K), ln.left, ln.junctions,
             ln.offsets, np.empty((K, S)), np.empty(K), np.empty(K), np.empty(K),
-            np.empty(K - 1)]
+            np.empty(K - 1), np.empty(K), np.empty(K), np.empty((K - 1, ln.offsets[16])),
+            np.empty(K), None]
     bad = list(args)
     bad[5] = g.base[:-1]
     with pytest.raises(ValueError, match="base must be a contiguous float64 array of"):
@@ -83,6 +84,10 @@ def test_the_c_passes_refuse_wrong_arguments():
     bad = list(args)
     bad[10] = ln.offsets.astype(float)
     with pytest.raises(ValueError, match="offsets must be a contiguous int64 array"):
+        _passes.solve(*bad)
+    bad = list(args)
+    bad[-1] = (g.s,)
+    with pytest.raises(TypeError, match=r"prev must be None or \(s, stage"):
         _passes.solve(*bad)
     assert _passes.solve(*args) == 0    # at rest everywhere (x_cap 0): a plan of zeros
     assert not args[12].any()
@@ -117,3 +122,24 @@ def test_the_c_rows_equal_the_coefficients_placed_by_numpy(name, split):
     assert np.array_equal(_bits(stage), _bits(want))
     for key in ("v1", "sing"):
         assert np.array_equal(_bits(outs[key]), _bits(ref[key])), key
+
+
+def test_a_solve_on_the_same_grid_takes_every_step_from_the_previous_one():
+    """With a previous solve on the same grid nothing can have changed: the maximum-velocity
+    curve, the bounds and every forward step are taken from it, none evaluated again (shown by
+    a previous solve whose values were altered: they come back)."""
+    from pm2dof.planning.problem import PlanProblem
+    m = pm2dof.load_model()
+    path = read_path_file("curve").path
+    g = grid_module.Grid(PlanProblem.create(m, path), np.linspace(0.0, path.length, 400),
+                         path.evaluate(np.linspace(0.0, path.length, 400)))
+    stops = g.stops()
+    first = solve_c(g.linking, g.s, g.base, g.v1, stops)
+    s, stage, x_mvc, cap, hi, y, x_raw = first[5]
+    altered = (s, stage, x_mvc * 2, cap, hi, y + 1.0, x_raw)
+    again = solve_c(g.linking, g.s, g.base, g.v1, stops, altered)
+    assert np.array_equal(again[3], 2 * first[3])               # x_mvc reused
+    assert np.array_equal(again[2][:-1], first[2][:-1] + 1.0)    # every forward step reused
+    fresh = solve_c(g.linking, g.s, g.base, g.v1, stops, first[5])
+    for a, b in zip(fresh[:4], first[:4]):
+        assert np.array_equal(_bits(a), _bits(b))
