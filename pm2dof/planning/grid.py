@@ -174,11 +174,21 @@ class Grid:
         ev_new = tuple(np.ascontiguousarray(e)
                        for e in (ev_new or self.problem.path.evaluate(new)))
         base, outs = point_stages(self.problem, new, ev_new)
-        order = np.argsort(np.concatenate([self.s, new]), kind="stable")
-        self.s = np.concatenate([self.s, new])[order]
-        self.ev = tuple(np.concatenate([e, f])[order] for e, f in zip(self.ev, ev_new))
-        self.base = np.concatenate([self.base, base])[order]
-        self.v1 = np.concatenate([self.v1, outs["v1"]])[order]
+        s = np.concatenate([self.s, new])
+        order = np.argsort(s, kind="stable")
+        at = np.empty_like(order)            # where each old, then each new, point goes
+        at[order] = np.arange(len(s))
+        old, added = at[:len(self.s)], at[len(self.s):]
+
+        def merged(a, b):       # scattered into one new array: no concatenated temporary
+            out = np.empty((len(s),) + a.shape[1:])
+            out[old], out[added] = a, b
+            return out
+
+        self.s = s[order]
+        self.ev = tuple(merged(e, f) for e, f in zip(self.ev, ev_new))
+        self.base = merged(self.base, base)
+        self.v1 = merged(self.v1, outs["v1"])
 
     def coarse_relaxed(self, every):
         """Where the arrival facets will not hold, found cheaply: the passes on every
