@@ -262,24 +262,28 @@ class Grid:
             hit = (c["a"][j] == a) & (c["b"][j] == b)
         else:
             j, hit = np.zeros(M, dtype=int), np.zeros(M, dtype=bool)
-        ev = tuple(np.empty((M, e.shape[1])) for e in self.ev)
-        stage = np.empty((M, self.base.shape[1]))
-        if hit.any():
+        miss = np.flatnonzero(~hit)
+        if len(miss) == M:          # nothing to reuse: the new arrays as they come
+            ev = self.problem.path.evaluate(mid)
+            stage = point_stages(self.problem, mid, ev, check=False)[0]
+        else:
+            ev = tuple(np.empty((M, e.shape[1])) for e in self.ev)
+            stage = np.empty((M, self.base.shape[1]))
             for e, o in zip(ev, c["ev"]):
                 e[hit] = o[j[hit]]
             stage[hit] = c["stage"][j[hit]]
-        miss = np.flatnonzero(~hit)
-        if miss.size:
-            ev_miss = self.problem.path.evaluate(mid[miss])
-            for e, f in zip(ev, ev_miss):
-                e[miss] = f
-            stage[miss] = point_stages(self.problem, mid[miss], ev_miss, check=False)[0]
+            if miss.size:
+                ev_miss = self.problem.path.evaluate(mid[miss])
+                for e, f in zip(ev, ev_miss):
+                    e[miss] = f
+                stage[miss] = point_stages(self.problem, mid[miss], ev_miss, check=False)[0]
         excess = np.empty(M)
         same = hit & _same_rows(key, c["key"][j]) if c is not None else hit
         excess[same] = c["excess"][j[same]] if c is not None else 0.0
         todo = np.flatnonzero(~same)
         sd = np.sqrt(np.maximum(0.5 * (key[todo, 0] + key[todo, 1]), 0.0))
-        excess[todo] = self._ratio(stage[todo], sd, key[todo, 2]) - 1.0
+        rows = stage if len(todo) == M else stage[todo]     # every row: no gathered copy
+        excess[todo] = self._ratio(rows, sd, key[todo, 2]) - 1.0
         excess[~np.isfinite(excess)] = np.inf   # out of reach between two grid points: refined,
         self.mid = {"a": a, "b": b, "ev": ev, "stage": stage, "key": key,   # and the new grid
                     "excess": excess}                                       # point names it
