@@ -477,6 +477,11 @@ static PyObject *rows(PyObject *self, PyObject *args)
             goto done;
         ptr[spec[i].i] = b[got++].v.buf;
     }
+    if (K == 0) {                     /* no point: nothing to write */
+        result = Py_None;
+        Py_INCREF(result);
+        goto done;
+    }
     if (b[1].v.len / 8 != K * m || b[2].v.len / 8 != K * S || api->nnz(f, 1) != m ||
         api->nnz(f, 2) != m || v1_off < 0 || v1_off + n > S) {
         PyErr_SetString(PyExc_ValueError, "rows: p, rows or outmap do not fit the function");

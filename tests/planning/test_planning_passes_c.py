@@ -143,3 +143,13 @@ def test_a_solve_on_the_same_grid_takes_every_step_from_the_previous_one():
     fresh = solve_c(g.linking, g.s, g.base, g.v1, stops, first[5])
     for a, b in zip(fresh[:4], first[:4]):
         assert np.array_equal(_bits(a), _bits(b))
+
+
+def test_no_point_gives_no_row():
+    from pm2dof.planning.problem import PlanProblem
+    from pm2dof.planning.stages import point_stages
+    m = pm2dof.load_model()
+    path = read_path_file("curve").path
+    empty = np.empty((0, 2))
+    stage, outs = point_stages(PlanProblem.create(m, path), np.empty(0), (empty,) * 3)
+    assert stage.shape == (0, m.layout("path_stage").size) and outs["v1"].shape == (0, 3)
