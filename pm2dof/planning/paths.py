@@ -285,6 +285,9 @@ class TaskPath:
     def __setattr__(self, key, value):
         raise AttributeError(f"TaskPath is immutable (tried to set {key!r})")
 
+    def __reduce__(self):       # pickle (Dask, multiprocessing): rebuilt from its pieces
+        return TaskPath, (self._pieces, self._stops.tolist())
+
     length = property(lambda self: float(self._ends[-1]), doc="arc length, m")
     breakpoints = property(lambda self: self._ends, doc="piece junctions (arc lengths), m")
     stops = property(lambda self: self._ends[self._stops],
