@@ -38,7 +38,7 @@ DEV_STAMP := $(VENV)/.installed-dev-stamp
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 $(STAMP): pyproject.toml setup.py pm2dof/core/_cbind.c pm2dof/core/_cbind_api.h \
-          pm2dof/planning/_pathc.c pm2dof/planning/_passes.c
+          pm2dof/planning/_pathc.c pm2dof/planning/_passes.c pm2dof/planning/_buffers.h
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	PM2DOF_BUILD_MODELS=none $(PY) -m pip install --quiet -e '.[studies,design]'

@@ -59,10 +59,12 @@ setup(
                   depends=["pm2dof/core/_cbind_api.h"]),
         # the planner's passes on one grid, calling the generated C through _cbind's C API
         Extension("pm2dof.planning._passes", ["pm2dof/planning/_passes.c"],
-                  extra_compile_args=["-O2"], depends=["pm2dof/core/_cbind_api.h"]),
+                  extra_compile_args=["-O2"],
+                  depends=["pm2dof/core/_cbind_api.h", "pm2dof/planning/_buffers.h"]),
         # the NumPy formulas of TaskPath.evaluate bit for bit: no fused multiply-adds
         Extension("pm2dof.planning._pathc", ["pm2dof/planning/_pathc.c"],
-                  extra_compile_args=["-O2", "-ffp-contract=off"]),
+                  extra_compile_args=["-O2", "-ffp-contract=off"],
+                  depends=["pm2dof/planning/_buffers.h"]),
     ],
     cmdclass={"build_ext": BuildExtWithModels},
 )

@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "../core/_cbind_api.h"
+#include "_buffers.h"
 
 static const Pm2dofCbindAPI *api;
 
@@ -45,28 +46,6 @@ enum { S_, RHO, NL, DELTA, XCAP, H, NF, P_, P_STAGE, P_NEXT, P_CAP, B_, B_PAIR, 
        F_XOUT, N_OFFSETS };
 
 static const double TOL = 1e-9; /* grid.py's _TOL */
-
-typedef struct {
-    Py_buffer v;
-    const char *name;
-} Buf;
-
-static int get(PyObject *o, Buf *b, const char *name, int writable, Py_ssize_t n, int integer)
-{
-    b->name = name;
-    if (PyObject_GetBuffer(o, &b->v, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT |
-                                        (writable ? PyBUF_WRITABLE : 0)) < 0)
-        return -1;
-    const char *fmt = b->v.format ? b->v.format : "";
-    int fits = integer ? strcmp(fmt, "l") == 0 || strcmp(fmt, "q") == 0 : strcmp(fmt, "d") == 0;
-    if (b->v.itemsize != 8 || !fits || (n >= 0 && b->v.len / 8 != n)) {
-        PyErr_Format(PyExc_ValueError, "%s must be a contiguous %s array of %zd entries", name,
-                     integer ? "int64" : "float64", n);
-        PyBuffer_Release(&b->v);
-        return -1;
-    }
-    return 0;
-}
 
 /* every field of a path_stage row but rho, delta and x_cap (the ones link sets) */
 static int linked(const Py_ssize_t *o, Py_ssize_t c)
@@ -327,7 +306,7 @@ static PyObject *solve(PyObject *self, PyObject *args)
                           &a[2], &a[3], &a[4], &a[5], &a[6], &a[7], &a[8], &a[9], &a[10],
                           &a[11], &a[12], &a[13], &a[14], &a[15], &a[16], &prev))
         return NULL;
-    Buf b[24];
+    Py_buffer b[24];
     int got = 0;
     PyObject *result = NULL;
     Calls f = {NULL, NULL, NULL};
@@ -336,20 +315,20 @@ static PyObject *solve(PyObject *self, PyObject *args)
     unsigned char *flags = NULL;
     Prev pv, *pvp = NULL;
     /* offsets first: they give the sizes */
-    if (get(a[7], &b[got], "offsets", 0, N_OFFSETS, 1) < 0)
+    if (take_buffer(a[7], &b[got], "offsets", 0, N_OFFSETS, 1) < 0)
         goto done;
     got++;
-    const long long *off = b[0].v.buf;
+    const long long *off = b[0].buf;
     Py_ssize_t o[N_OFFSETS];
     for (int i = 0; i < N_OFFSETS; i++)
         o[i] = (Py_ssize_t)off[i];
     Py_ssize_t K, J, S = o[S_], n = o[NL], Y = o[Y_];
-    if (get(a[1], &b[got], "s", 0, -1, 0) < 0)
+    if (take_buffer(a[1], &b[got], "s", 0, -1, 0) < 0)
         goto done;
-    K = b[got++].v.len / 8;
-    if (get(a[6], &b[got], "junctions", 0, -1, 0) < 0)
+    K = b[got++].len / 8;
+    if (take_buffer(a[6], &b[got], "junctions", 0, -1, 0) < 0)
         goto done;
-    J = b[got++].v.len / 8;
+    J = b[got++].len / 8;
     if (K < 2) {
         PyErr_SetString(PyExc_ValueError, "s: at least 2 grid points");
         goto done;
@@ -361,13 +340,13 @@ static PyObject *solve(PyObject *self, PyObject *args)
         {14, "hi", 1, K}, {15, "y", 1, (K - 1) * Y}, {16, "x_raw", 1, K}};
     const double *ptr[17];
     for (size_t i = 0; i < sizeof(spec) / sizeof(spec[0]); i++) {
-        if (get(a[spec[i].i], &b[got], spec[i].name, spec[i].w, spec[i].n, 0) < 0)
+        if (take_buffer(a[spec[i].i], &b[got], spec[i].name, spec[i].w, spec[i].n, 0) < 0)
             goto done;
-        ptr[spec[i].i] = b[got++].v.buf;
+        ptr[spec[i].i] = b[got++].buf;
     }
-    ptr[1] = b[1].v.buf;
-    ptr[6] = b[2].v.buf;
-    Py_ssize_t np_ = b[3].v.len / 8;
+    ptr[1] = b[1].buf;
+    ptr[6] = b[2].buf;
+    Py_ssize_t np_ = b[3].len / 8;
     /* prev: None, or (s, stage, x_mvc, cap, hi, y, x_raw) of the previous solve */
     if (prev != Py_None) {
         if (!PyTuple_Check(prev) || PyTuple_GET_SIZE(prev) != 7) {
@@ -379,14 +358,14 @@ static PyObject *solve(PyObject *self, PyObject *args)
                                     "prev hi", "prev y", "prev x_raw"};
         const double *pp[7];
         for (int i = 0; i < 7; i++) {
-            if (get(PyTuple_GET_ITEM(prev, i), &b[got], pn[i], 0, -1, 0) < 0)
+            if (take_buffer(PyTuple_GET_ITEM(prev, i), &b[got], pn[i], 0, -1, 0) < 0)
                 goto done;
-            pp[i] = b[got++].v.buf;
+            pp[i] = b[got++].buf;
         }
-        pv.K = b[got - 7].v.len / 8;
+        pv.K = b[got - 7].len / 8;
         Py_ssize_t want[7] = {pv.K, pv.K * S, pv.K, pv.K, pv.K, (pv.K - 1) * Y, pv.K};
         for (int i = 0; i < 7; i++)
-            if (pv.K < 2 || b[got - 7 + i].v.len / 8 != want[i]) {
+            if (pv.K < 2 || b[got - 7 + i].len / 8 != want[i]) {
                 PyErr_Format(PyExc_ValueError, "%s does not fit the previous grid", pn[i]);
                 goto done;
             }
@@ -429,7 +408,7 @@ done:
     api->end(f.back);
     api->end(f.fwd);
     for (int i = 0; i < got; i++)
-        PyBuffer_Release(&b[i].v);
+        PyBuffer_Release(&b[i]);
     return result;
 }
 
@@ -446,43 +425,43 @@ static PyObject *rows(PyObject *self, PyObject *args)
     if (!PyArg_ParseTuple(args, "OOOOOOOOOO", &fo, &a[0], &a[1], &a[2], &a[3], &a[4], &a[5],
                           &a[6], &a[7], &a[8]))
         return NULL;
-    Buf b[9];
+    Py_buffer b[9];
     int got = 0;
     PyObject *result = NULL;
     Pm2dofCall *f = NULL;
-    if (get(a[5], &b[got], "outmap", 0, -1, 1) < 0)
+    if (take_buffer(a[5], &b[got], "outmap", 0, -1, 1) < 0)
         goto done;
     got++;
-    const long long *map = b[0].v.buf;
-    Py_ssize_t n_map = b[0].v.len / 8;
+    const long long *map = b[0].buf;
+    Py_ssize_t n_map = b[0].len / 8;
     if ((f = api->begin(fo, 5, n_map - 2)) == NULL)
         goto done;
     Py_ssize_t n_out = n_map - 2, m = api->nnz(f, 0), K;
-    if (get(a[0], &b[got], "p", 0, -1, 0) < 0)
+    if (take_buffer(a[0], &b[got], "p", 0, -1, 0) < 0)
         goto done;
-    K = b[got++].v.len / 8 / (m ? m : 1);
+    K = b[got++].len / 8 / (m ? m : 1);
     Py_ssize_t S = 0, n = (Py_ssize_t)map[n_map - 1], v1_off = (Py_ssize_t)map[n_map - 2];
-    if (get(a[6], &b[got], "rows", 1, -1, 0) < 0)
+    if (take_buffer(a[6], &b[got], "rows", 1, -1, 0) < 0)
         goto done;
-    S = K ? b[got].v.len / 8 / K : 0;
+    S = K ? b[got].len / 8 / K : 0;
     got++;
     struct { int i; const char *name; Py_ssize_t n; } spec[] = {
         {1, "dp", K * m}, {2, "ddp", K * m}, {3, "theta", api->nnz(f, 3)},
         {4, "tau_max", api->nnz(f, 4)}, {7, "v1", K * n}, {8, "sing", 2 * K}};
     double *ptr[9];
-    ptr[0] = b[1].v.buf;
-    ptr[6] = b[2].v.buf;
+    ptr[0] = b[1].buf;
+    ptr[6] = b[2].buf;
     for (size_t i = 0; i < sizeof(spec) / sizeof(spec[0]); i++) {
-        if (get(a[spec[i].i], &b[got], spec[i].name, spec[i].i >= 7, spec[i].n, 0) < 0)
+        if (take_buffer(a[spec[i].i], &b[got], spec[i].name, spec[i].i >= 7, spec[i].n, 0) < 0)
             goto done;
-        ptr[spec[i].i] = b[got++].v.buf;
+        ptr[spec[i].i] = b[got++].buf;
     }
     if (K == 0) {                     /* no point: nothing to write */
         result = Py_None;
         Py_INCREF(result);
         goto done;
     }
-    if (b[1].v.len / 8 != K * m || b[2].v.len / 8 != K * S || api->nnz(f, 1) != m ||
+    if (b[1].len / 8 != K * m || b[2].len / 8 != K * S || api->nnz(f, 1) != m ||
         api->nnz(f, 2) != m || v1_off < 0 || v1_off + n > S) {
         PyErr_SetString(PyExc_ValueError, "rows: p, rows or outmap do not fit the function");
         goto done;
@@ -522,7 +501,7 @@ static PyObject *rows(PyObject *self, PyObject *args)
 done:
     api->end(f);
     for (int i = 0; i < got; i++)
-        PyBuffer_Release(&b[i].v);
+        PyBuffer_Release(&b[i]);
     return result;
 }
 

@@ -16,6 +16,8 @@
 #include <Python.h>
 #include <math.h>
 
+#include "_buffers.h"
+
 enum { LINE = 0, ARC = 1, SPLINE = 2, ORIENTED = 3 };
 
 /* NumPy's clip and searchsorted, as they treat finite numbers (np.clip: min(max(x, lo), hi)
@@ -120,19 +122,6 @@ static void oriented(const double *d, double s, double *p, double *dp, double *d
     ddp[2] = 0.0;
 }
 
-static int get(PyObject *o, Py_buffer *v, int writable, const char *name)
-{
-    if (PyObject_GetBuffer(o, v, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT |
-                                 (writable ? PyBUF_WRITABLE : 0)) < 0)
-        return -1;
-    if (v->itemsize != 8 || !v->format || strcmp(v->format, "d") != 0) {
-        PyErr_Format(PyExc_TypeError, "%s must be a contiguous float64 array", name);
-        PyBuffer_Release(v);
-        return -1;
-    }
-    return 0;
-}
-
 static PyObject *evaluate(PyObject *self, PyObject *args)
 {
     PyObject *ot, *os, *op, *odp, *oddp;
@@ -145,7 +134,7 @@ static PyObject *evaluate(PyObject *self, PyObject *args)
     int got = 0;
     PyObject *result = NULL;
     for (; got < 5; got++)
-        if (get(objs[got], &b[got], got >= 2, names[got]) < 0)
+        if (take_buffer(objs[got], &b[got], names[got], got >= 2, -1, 0) < 0)
             goto done;
     const double *tab = b[0].buf, *s = b[1].buf;
     Py_ssize_t ntab = b[0].len / 8, k = b[1].len / 8;

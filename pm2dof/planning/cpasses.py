@@ -1,10 +1,10 @@
 # The planner's solve on one grid in one C call (pm2dof/planning/_passes.c), beside grid.passes.
-"""``solve_c``: :func:`pm2dof.planning.grid.passes` with no previous solve, after
-:func:`pm2dof.planning.stages.link`, in one call into C (``_passes.solve``): the generated
-path_mvc, path_backward and path_forward called row by row with the rows built in C, the same
-inputs as the NumPy glue builds, so the same results bit for bit
-(tests/planning/test_planning_passes_c.py). Where the passes would raise, it returns None and
-the caller runs the NumPy passes for their message."""
+"""``solve_c``: :func:`pm2dof.planning.stages.link` then :func:`pm2dof.planning.grid.passes` in one
+call into C (``_passes.solve``): the generated path_mvc, path_backward and path_forward called
+row by row with the rows built in C, the same inputs as the NumPy builds, so the same results
+bit for bit (tests/planning/test_planning_passes_c.py); given the previous solve, it takes from
+it what the added points cannot change. Where the passes would raise, it returns None and the
+caller runs the NumPy passes for their message."""
 import numpy as np
 
 from . import _passes
@@ -38,10 +38,11 @@ class Linking:
         model = problem.model
         self.problem = problem
         self.offsets = _offsets(model)
+        self.y_size = model.layout("path_forward_output").size    # path_forward's y
         self.fns = tuple(model.function(k) for k in ("path_mvc", "path_backward",
                                                      "path_forward"))
         self.junctions = np.ascontiguousarray(problem.path.breakpoints[1:-1], dtype=float)
-        self.left = np.zeros((len(self.junctions), int(self.offsets[0])))
+        self.left = np.zeros((len(self.junctions), model.layout("path_stage").size))
         if left is not None and len(self.junctions):
             _fill(model, self.left, left, problem.split)
 
@@ -56,10 +57,10 @@ def solve_c(linking, s, base, v1, stops, prev=None):
     K = len(s)
     x_cap = np.full(K, V_TOP ** 2)
     x_cap[list(stops)] = 0.0
-    stage = np.empty((K, int(linking.offsets[0])))
+    stage = np.empty((K, linking.left.shape[1]))
     x, sdd, x_mvc, ok = np.empty(K), np.empty(K), np.empty(K), np.empty(K - 1)
     cap, hi, x_raw = np.empty(K), np.empty(K), np.empty(K)
-    y = np.empty((K - 1, int(linking.offsets[16])))
+    y = np.empty((K - 1, linking.y_size))
     status = _passes.solve(*linking.fns, linking.problem.params, s, base, v1, x_cap,
                            linking.left, linking.junctions, linking.offsets, stage, x, sdd,
                            x_mvc, ok, cap, hi, y, x_raw, prev)

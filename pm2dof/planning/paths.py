@@ -112,7 +112,6 @@ def _number(name, x, positive=False, nonnegative=False):
 
 class _Line:
     kind = "line"
-    FIELDS = ("length", "p0", "p1", "u")      # what evaluate_many reads, stacked over pieces
 
     def __init__(self, p0, p1):
         self.p0, self.p1 = p0, p1
@@ -120,21 +119,16 @@ class _Line:
         self.u = (p1 - p0) / self.length
 
     def evaluate(self, s):
-        return _evaluate_one(self, s)
-
-    @staticmethod
-    def evaluate_many(stacked, j, s, out):
-        """p, dp, ddp of the line ``j[i]`` of ``stacked`` (:func:`_stack`) at s[i], written into
-        ``out``: all of a path's lines in one go."""
-        length, p0, p1, u = stacked
-        lam = (s / length[j])[:, None]
-        out[0][:] = (1.0 - lam) * p0[j] + lam * p1[j]    # as pm2dof.line: exact at both ends
-        out[1][:], out[2][:] = u[j], 0.0
+        """p, dp, ddp (len(s), 2) at its own arc lengths ``s``, in NumPy: the formulas
+        _pathc.c evaluates (TaskPath.evaluate), kept as its reference."""
+        lam = (s / self.length)[:, None]
+        k = len(s)
+        p = (1.0 - lam) * self.p0 + lam * self.p1      # as pm2dof.line: exact at both ends
+        return p, np.broadcast_to(self.u, (k, 2)).copy(), np.zeros((k, 2))
 
 
 class _Arc:
     kind = "arc"
-    FIELDS = ("c", "r", "a0", "d")
 
     def __init__(self, center, radius, a0, a1):
         self.c, self.r, self.a0 = center, radius, a0
@@ -142,31 +136,11 @@ class _Arc:
         self.length = radius * abs(a1 - a0)
 
     def evaluate(self, s):
-        return _evaluate_one(self, s)
-
-    @staticmethod
-    def evaluate_many(stacked, j, s, out):
-        """p, dp, ddp of the arc ``j[i]`` of ``stacked`` at s[i] into ``out`` (as
-        :meth:`_Line.evaluate_many`)."""
-        c, r, a0, d = stacked
-        r, d = r[j], d[j]
-        phi = a0[j] + d * s / r
+        """p, dp, ddp (len(s), 2) at its own arc lengths ``s`` (as :meth:`_Line.evaluate`)."""
+        phi = self.a0 + self.d * s / self.r
         e = np.stack([np.cos(phi), np.sin(phi)], axis=1)
-        out[1][:, 0], out[1][:, 1] = d * -e[:, 1], d * e[:, 0]
-        r = r[:, None]
-        out[0][:], out[2][:] = c[j] + r * e, -e / r
-
-
-def _stack(pieces):
-    """The ``FIELDS`` of same-kind ``pieces`` as arrays, for their ``evaluate_many``."""
-    return tuple(np.array([getattr(pc, a) for pc in pieces]) for a in type(pieces[0]).FIELDS)
-
-
-def _evaluate_one(piece, s):
-    """(p, dp, ddp) (len(s), 2) of one line or arc at its own arc lengths s."""
-    out = [np.empty((len(s), 2)) for _ in range(3)]
-    type(piece).evaluate_many(_stack([piece]), np.zeros(len(s), dtype=int), s, out)
-    return tuple(out)
+        dp = np.stack([self.d * -e[:, 1], self.d * e[:, 0]], axis=1)
+        return self.c + self.r * e, dp, -e / self.r
 
 
 class _Oriented:

@@ -12,7 +12,8 @@ from pm2dof.planning import _passes
 from pm2dof.planning import grid as grid_module
 from pm2dof.planning.cpasses import solve_c
 from pm2dof.planning.pathfile import model_move_path, read_path_file
-from pm2dof.planning.stages import link
+from pm2dof.planning.problem import PlanProblem
+from pm2dof.planning.stages import _coefficients, _fill, link, point_stages
 
 # the paper's robot (with its shipped paths), its vertical variant (gravity), a point robot
 # on linear actuators, a 4-RRR platform and a 3-RPR platform (linear actuators)
@@ -21,6 +22,11 @@ MODELS = ["shang2010", "shang2010_vertical", "prr_point", "rrr4_platform", "rpr3
 
 def _bits(a):
     return np.ascontiguousarray(a).view(np.int64)
+
+
+def _grid(m, path, s):
+    """The planner's Grid of ``path`` on the arc lengths ``s`` (the default problem)."""
+    return grid_module.Grid(PlanProblem.create(m, path), s, path.evaluate(s))
 
 
 @pytest.mark.parametrize("name", MODELS)
@@ -57,21 +63,17 @@ def test_every_round_of_the_c_passes_equals_the_numpy_passes(name, monkeypatch):
 def test_the_c_passes_refuse_wrong_arguments():
     m = pm2dof.load_model()
     path = read_path_file("curve").path
-    g = grid_module.Grid.__new__(grid_module.Grid)
-    plan = pm2dof.plan_time_optimal(m, path, grid=50)
-    # a grid the planner built, for its linking and rows
-    from pm2dof.planning.problem import PlanProblem
-    g.__init__(PlanProblem.create(m, path), plan.s, path.evaluate(plan.s))
+    g = _grid(m, path, pm2dof.plan_time_optimal(m, path, grid=50).s)   # a planner's grid
     ln = g.linking
     assert solve_c(ln, g.s, g.base, g.v1, g.stops()) is not None
     K, S = g.base.shape
     args = [*ln.fns, ln.problem.params, g.s, g.base, g.v1, np.zeros(K), ln.left, ln.junctions,
             ln.offsets, np.empty((K, S)), np.empty(K), np.empty(K), np.empty(K),
-            np.empty(K - 1), np.empty(K), np.empty(K), np.empty((K - 1, ln.offsets[16])),
+            np.empty(K - 1), np.empty(K), np.empty(K), np.empty((K - 1, ln.y_size)),
             np.empty(K), None]
     bad = list(args)
     bad[5] = g.base[:-1]
-    with pytest.raises(ValueError, match="base must be a contiguous float64 array of"):
+    with pytest.raises(ValueError, match=r"base must hold \d+ entries, got \d+"):
         _passes.solve(*bad)
     bad = list(args)
     bad[0] = m.function("path_forward")
@@ -83,7 +85,7 @@ def test_the_c_passes_refuse_wrong_arguments():
         _passes.solve(*bad)
     bad = list(args)
     bad[10] = ln.offsets.astype(float)
-    with pytest.raises(ValueError, match="offsets must be a contiguous int64 array"):
+    with pytest.raises(TypeError, match="offsets must be a contiguous int64 array"):
         _passes.solve(*bad)
     bad = list(args)
     bad[-1] = (g.s,)
@@ -108,8 +110,6 @@ def test_the_c_rows_equal_the_coefficients_placed_by_numpy(name, split):
     """stages.point_stages' rows from one C call (path_coefficients written into each row)
     against the map's outputs placed by stages._fill, bit for bit, and the v1 and the
     singularity measures beside them."""
-    from pm2dof.planning.problem import PlanProblem
-    from pm2dof.planning.stages import _coefficients, _fill, point_stages
     m = pm2dof.load_model(name)
     path = model_move_path(m, line_moves(m)[0]).path
     problem = PlanProblem.create(m, path, split=split)
@@ -128,11 +128,9 @@ def test_a_solve_on_the_same_grid_takes_every_step_from_the_previous_one():
     """With a previous solve on the same grid nothing can have changed: the maximum-velocity
     curve, the bounds and every forward step are taken from it, none evaluated again (shown by
     a previous solve whose values were altered: they come back)."""
-    from pm2dof.planning.problem import PlanProblem
     m = pm2dof.load_model()
     path = read_path_file("curve").path
-    g = grid_module.Grid(PlanProblem.create(m, path), np.linspace(0.0, path.length, 400),
-                         path.evaluate(np.linspace(0.0, path.length, 400)))
+    g = _grid(m, path, np.linspace(0.0, path.length, 400))
     stops = g.stops()
     first = solve_c(g.linking, g.s, g.base, g.v1, stops)
     s, stage, x_mvc, cap, hi, y, x_raw = first[5]
@@ -146,8 +144,6 @@ def test_a_solve_on_the_same_grid_takes_every_step_from_the_previous_one():
 
 
 def test_no_point_gives_no_row():
-    from pm2dof.planning.problem import PlanProblem
-    from pm2dof.planning.stages import point_stages
     m = pm2dof.load_model()
     path = read_path_file("curve").path
     empty = np.empty((0, 2))

@@ -1,6 +1,8 @@
 """TaskPath.evaluate in C (pm2dof/planning/_pathc.c) against each piece's own NumPy evaluation
 (paths.py, spline.py), bit for bit: every kind of piece, both sides of a junction, the ends,
 the junctions and their neighbouring floats, rounding beyond the ends."""
+import pickle
+
 import numpy as np
 import pytest
 
@@ -9,6 +11,11 @@ from pm2dof.planning import _pathc
 from pm2dof.planning.pathfile import read_path_file
 
 L = 0.1     # orientation length, m
+
+
+def _bits(a):
+    """The float64 entries' bits (signed zeros told apart)."""
+    return np.ascontiguousarray(a).view(np.int64)
 
 
 def _numpy(path, s, side):
@@ -62,7 +69,7 @@ def test_c_evaluation_equals_the_pieces_numpy_bit_for_bit(name, side):
     for g, w, what in zip(got, want, ("p", "dp", "ddp")):
         assert g.shape == (len(s), path.dim)
         assert np.isfinite(w).all()
-        same = g.view(np.int64) == w.view(np.int64)     # bits: signed zeros too
+        same = _bits(g) == _bits(w)
         assert same.all(), f"{what} differs at s = {s[~same.all(axis=1)][:3]}"
 
 
@@ -92,14 +99,9 @@ def test_a_path_survives_pickling(name):
     """A TaskPath sent to another process (Dask, multiprocessing) is rebuilt from its pieces:
     the same stops and the same points, bit for bit (it could not be unpickled before: its
     immutability refused the attributes pickle sets)."""
-    import pickle
     path = PATHS[name]()
     back = pickle.loads(pickle.dumps(path))
     assert np.array_equal(back.stops, path.stops) and back.kinds == path.kinds
     s = np.linspace(0.0, path.length, 501)
     for a, b in zip(back.evaluate(s), path.evaluate(s)):
-        assert np.array_equal(_bits_of(a), _bits_of(b))
-
-
-def _bits_of(a):
-    return np.ascontiguousarray(a).view(np.int64)
+        assert np.array_equal(_bits(a), _bits(b))
