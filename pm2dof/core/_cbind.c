@@ -543,10 +543,45 @@ get_f64_buffer(FunctionObject *f, PyObject *obj, Py_buffer *view, int writable,
     return 0;
 }
 
-/* Index of the first non-finite value in p[0..n), or -1. */
+/* Whether p[0..n) is all finite: an exponent field of all ones is inf or NaN. Fewer than 8
+   elements: one comparison each; more: branch-free in four chains, so the compiler may
+   vectorise it (the error path finds the index). */
+static inline int
+all_finite(const double *p, Py_ssize_t n)
+{
+    /* (b & exponent) + one exponent step carries into the sign bit only from all ones */
+    uint64_t bad0 = 0, bad1 = 0, bad2 = 0, bad3 = 0, b0, b1, b2, b3;
+    Py_ssize_t k = 0;
+    if (n < 8) { /* a pose, a velocity: a compare per element (NaN and inf fail it) */
+        for (; k < n; k++)
+            if (!(fabs(p[k]) <= DBL_MAX))
+                return 0;
+        return 1;
+    }
+    for (; k + 4 <= n; k += 4) { /* four chains: about one element per cycle */
+        memcpy(&b0, p + k, sizeof b0);
+        memcpy(&b1, p + k + 1, sizeof b1);
+        memcpy(&b2, p + k + 2, sizeof b2);
+        memcpy(&b3, p + k + 3, sizeof b3);
+        bad0 |= (b0 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+        bad1 |= (b1 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+        bad2 |= (b2 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+        bad3 |= (b3 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+    }
+    for (; k < n; k++) {
+        memcpy(&b0, p + k, sizeof b0);
+        bad0 |= (b0 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+    }
+    return ((bad0 | bad1 | bad2 | bad3) >> 63) == 0;
+}
+
+/* Index of the first non-finite value in p[0..n), or -1: a long array is tested whole
+   first, branch-free (all_finite), and searched only when something is not finite. */
 static inline Py_ssize_t
 first_nonfinite(const double *p, Py_ssize_t n)
 {
+    if (n >= 8 && all_finite(p, n))
+        return -1;
     for (Py_ssize_t k = 0; k < n; k++)
         if (!isfinite(p[k]))
             return k;
@@ -2023,6 +2058,8 @@ typedef struct {
     double guard_v[2];
     Py_ssize_t fb_out, fb_in; /* feedback: output fb_out copied into input fb_in (-1: none) */
     char positive[METHOD_MAX_ARGS];  /* per input: a positive finite Python float only */
+    char plain_in;       /* every input the caller's, none positive: they are bound as given */
+    char plain_out;      /* every output returned: the returned arrays are the outputs */
     PyObject *scalar;    /* scalar=True: the returned 1-element output's scratch array, and
                             the result is a Python float; else NULL */
 } MethodObject;
@@ -2071,38 +2108,6 @@ guard_passes(MethodObject *m, const double *p, Py_ssize_t n)
     }
 }
 
-/* Whether p[0..n) is all finite: an exponent field of all ones is inf or NaN. Fewer than 8
-   elements: one comparison each; more: branch-free in four chains, so the compiler may
-   vectorise it (the error path finds the index). */
-static inline int
-all_finite(const double *p, Py_ssize_t n)
-{
-    /* (b & exponent) + one exponent step carries into the sign bit only from all ones */
-    uint64_t bad0 = 0, bad1 = 0, bad2 = 0, bad3 = 0, b0, b1, b2, b3;
-    Py_ssize_t k = 0;
-    if (n < 8) { /* a pose, a velocity: a compare per element (NaN and inf fail it) */
-        for (; k < n; k++)
-            if (!(fabs(p[k]) <= DBL_MAX))
-                return 0;
-        return 1;
-    }
-    for (; k + 4 <= n; k += 4) { /* four chains: about one element per cycle */
-        memcpy(&b0, p + k, sizeof b0);
-        memcpy(&b1, p + k + 1, sizeof b1);
-        memcpy(&b2, p + k + 2, sizeof b2);
-        memcpy(&b3, p + k + 3, sizeof b3);
-        bad0 |= (b0 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
-        bad1 |= (b1 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
-        bad2 |= (b2 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
-        bad3 |= (b3 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
-    }
-    for (; k < n; k++) {
-        memcpy(&b0, p + k, sizeof b0);
-        bad0 |= (b0 & 0x7ff0000000000000ull) + 0x0010000000000000ull;
-    }
-    return ((bad0 | bad1 | bad2 | bad3) >> 63) == 0;
-}
-
 /*
  * The Method's binding when every argument is an ndarray the numpy fast path takes (else -1,
  * nothing bound: bind_all then does it all, with its messages). Presets were checked once,
@@ -2112,46 +2117,58 @@ all_finite(const double *p, Py_ssize_t n)
  * must be finite, and the caller's out must not share memory with them.
  */
 static int
-method_bind_fast(MethodObject *m, Work *w, PyObject *const *argv, int caller_out)
+method_bind_fast(MethodObject *m, Work *w, PyObject *const *ins, PyObject *const *outs,
+                 int caller_out)
 {
     FunctionObject *f = m->f;
     const Py_ssize_t n_in = f->n_in, n_out = f->n_out;
-    for (Py_ssize_t k = 0; k < n_in + n_out; k++) {
-        PyObject *o = argv[k];
-        const int is_out = k >= n_in;
-        double *p = NULL;
+    /* the inputs; the caller's: finite, and the span of their memory */
+    const char *lo = (const char *)UINTPTR_MAX, *hi = NULL;
+    for (Py_ssize_t k = 0; k < n_in; k++) {
+        PyObject *o = ins[k];
+        const Py_ssize_t nk = f->nnz[k];
+        double *p;
         if (Py_TYPE(o) == np_type) { /* the common case first */
-            if ((p = np_fast(o, is_out, f->nnz[k], f->vec[k])) == NULL)
+            const NpArray *a = (const NpArray *)o;
+            /* a vector of the right length, float64, contiguous and aligned: what np_fast
+               checks, in the order that settles the usual argument soonest */
+            if (a->nd == 1 && a->dimensions[0] == nk && a->descr == np_f64_descr &&
+                (a->flags & (NP_C_CONTIGUOUS | NP_ALIGNED)) == (NP_C_CONTIGUOUS | NP_ALIGNED))
+                p = (double *)a->data;
+            else if ((p = np_fast(o, 0, nk, f->vec[k])) == NULL)
                 return -1;
         }
-        else if (!is_out && f->nnz[k] == 1 && PyFloat_Check(o)) { /* a number, as bind_input */
+        else if (nk == 1 && PyFloat_Check(o)) { /* a number, as bind_input */
             w->scalars[k] = PyFloat_AS_DOUBLE(o);
             p = &w->scalars[k];
         }
-        else if (o != Py_None || !is_out) { /* None: an output not computed; an input never */
+        else {
             return -1;
         }
-        if (is_out)
-            w->res[k - n_in] = p;
-        else
-            w->arg[k] = p;
-    }
-    for (Py_ssize_t i = 0; i < n_in; i++)
-        if (m->tmpl[i] == NULL && !all_finite(w->arg[i], f->nnz[i]))
+        w->arg[k] = p;
+        if (m->tmpl[k] != NULL || nk <= 0)
+            continue;
+        if (!all_finite(p, nk))
             return 1;
-    if (caller_out) {
-        /* the caller's inputs' span first: an out outside it shares memory with none */
-        const char *lo = NULL, *hi = NULL;
-        for (Py_ssize_t i = 0; i < n_in; i++) {
-            if (m->tmpl[i] != NULL || f->nnz[i] <= 0)
-                continue;
-            const char *a = (const char *)w->arg[i], *b = a + f->nnz[i] * 8;
-            if (lo == NULL || a < lo)
-                lo = a;
-            if (hi == NULL || b > hi)
-                hi = b;
+        const char *b0 = (const char *)p, *b1 = b0 + nk * 8;
+        lo = b0 < lo ? b0 : lo;
+        hi = b1 > hi ? b1 : hi;
+    }
+    for (Py_ssize_t j = 0; j < n_out; j++) {
+        PyObject *o = outs[j];
+        double *p = NULL;
+        if (Py_TYPE(o) == np_type) {
+            if ((p = np_fast(o, 1, f->nnz[n_in + j], f->vec[n_in + j])) == NULL)
+                return -1;
         }
-        for (Py_ssize_t r = 0; r < m->n_ret && lo != NULL; r++) {
+        else if (o != Py_None) { /* None: an output not computed */
+            return -1;
+        }
+        w->res[j] = p;
+    }
+    if (caller_out && hi != NULL) {
+        /* an out outside the caller's inputs' span shares memory with none */
+        for (Py_ssize_t r = 0; r < m->n_ret; r++) {
             const Py_ssize_t j = m->ret_out[r];
             if (!overlaps(w->res[j], f->nnz[n_in + j], lo, (hi - lo) / 8))
                 continue;
@@ -2174,8 +2191,9 @@ method_call(MethodObject *m, PyObject *const *args, PyObject *out)
     const Py_ssize_t n_in = f->n_in, n_out = f->n_out;
     Py_ssize_t r;
 
-    /* the inputs: presets and the caller's */
-    for (Py_ssize_t i = 0, g = 0; i < n_in; i++) {
+    /* the inputs: presets and the caller's (as given when there are only the caller's) */
+    PyObject *const *ins = args, *const *outs = ret;
+    for (Py_ssize_t i = 0, g = 0; i < n_in && !m->plain_in; i++) {
         PyObject *o = m->tmpl[i];
         if (o == NULL) {
             o = args[g++];
@@ -2219,8 +2237,13 @@ method_call(MethodObject *m, PyObject *const *args, PyObject *out)
             ret[r] = Py_NewRef(PyTuple_GET_ITEM(out, r));
     }
 
-    for (Py_ssize_t j = 0, rr = 0; j < n_out; j++)
-        argv[n_in + j] = m->tmpl[n_in + j] ? m->tmpl[n_in + j] : ret[rr++];
+    if (!m->plain_in)
+        ins = argv;
+    if (!m->plain_out) {
+        for (Py_ssize_t j = 0, rr = 0; j < n_out; j++)
+            argv[n_in + j] = m->tmpl[n_in + j] ? m->tmpl[n_in + j] : ret[rr++];
+        outs = argv + n_in;
+    }
 
     Work tmp;
     Work *w = work_acquire(f, &tmp);
@@ -2230,7 +2253,13 @@ method_call(MethodObject *m, PyObject *const *args, PyObject *out)
         bad = -1;
         goto done;
     }
-    int fast = method_bind_fast(m, w, argv, out != Py_None);
+    int fast = method_bind_fast(m, w, ins, outs, out != Py_None);
+    if (fast < 0) { /* bind_all takes the inputs and outputs in one array */
+        for (Py_ssize_t i = 0; i < n_in && m->plain_in; i++)
+            argv[i] = ins[i];
+        for (Py_ssize_t j = 0; j < n_out && m->plain_out; j++)
+            argv[n_in + j] = outs[j];
+    }
     if (fast > 0 || (fast < 0 && bind_all(f, w, argv, 1, NULL, &held) < 0)) {
         bad = 1;
         goto release;
@@ -2524,6 +2553,11 @@ Method_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
             m->positive[i] = 1;
         }
     }
+    m->plain_in = m->n_given == f->n_in;
+    for (Py_ssize_t i = 0; i < f->n_in; i++)
+        if (m->positive[i])
+            m->plain_in = 0;
+    m->plain_out = m->n_ret == f->n_out;
     if (scalar) {
         if (m->n_ret != 1 || f->nnz[f->n_in + m->ret_out[0]] != 1) {
             PyErr_Format(PyExc_ValueError, "Method of %U: scalar needs one returned output of "
@@ -2618,6 +2652,7 @@ typedef struct {
     PyObject *key;       /* the Method's key in obj._fast */
     PyObject *params;    /* tuple of str */
     Py_ssize_t n_params, n_req, out_pos; /* out_pos: index of "out" in params, or -1 */
+    Py_ssize_t n_inputs; /* n_params without out */
     PyObject *unless;    /* attribute name, or NULL */
     PyObject *dict;      /* __dict__: __doc__, __name__, __wrapped__, ... */
     PyTypeObject *ctype; /* the last instance's type whose _fast (and unless) are slots */
@@ -2684,10 +2719,25 @@ FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyOb
     FastMethodObject *d = (FastMethodObject *)self;
     const Py_ssize_t nargs = PyVectorcall_NARGS(nargsf);
     const Py_ssize_t nkw = kwnames ? PyTuple_GET_SIZE(kwnames) : 0;
-    PyObject *slot[FM_MAX_PARAMS] = {NULL};
-    PyObject *given[FM_MAX_PARAMS];
+    PyObject *slot[FM_MAX_PARAMS];
+    PyObject *given_buf[FM_MAX_PARAMS];
+    PyObject *const *given = given_buf;
+    PyObject *out;
+    Py_ssize_t g = 0;
     if (nargs < 1 || nargs - 1 > d->n_params)
         goto checked;
+    /* the usual call, every input by position and out (last) by keyword or not given: the
+       inputs are the caller's own array of arguments */
+    if (nargs - 1 == d->n_inputs && (d->out_pos < 0 || d->out_pos == d->n_params - 1) &&
+        (nkw == 0 || (nkw == 1 && d->out_pos >= 0 &&
+                      PyTuple_GET_ITEM(kwnames, 0) == PyTuple_GET_ITEM(d->params, d->out_pos)))) {
+        given = args + 1;
+        g = d->n_inputs;
+        out = nkw ? args[nargs] : Py_None;
+        goto mapped;
+    }
+    for (Py_ssize_t j = 0; j < d->n_params; j++)
+        slot[j] = NULL;
     for (Py_ssize_t j = 0; j < nargs - 1; j++)
         slot[j] = args[1 + j];
     for (Py_ssize_t i = 0; i < nkw; i++) {
@@ -2708,7 +2758,6 @@ FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyOb
             goto checked;
         slot[j] = args[nargs + i];
     }
-    Py_ssize_t g = 0;
     for (Py_ssize_t j = 0; j < d->n_params; j++) {
         if (slot[j] == NULL) {
             if (j < d->n_req)
@@ -2716,8 +2765,10 @@ FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyOb
             slot[j] = Py_None;
         }
         if (j != d->out_pos)
-            given[g++] = slot[j];
+            given_buf[g++] = slot[j];
     }
+    out = d->out_pos >= 0 ? slot[d->out_pos] : Py_None;
+mapped:;
     PyObject *obj = args[0];
     if (d->unless != NULL) {
         PyObject *u = fm_attr(d, obj, d->unless, 1);
@@ -2753,8 +2804,7 @@ FastMethod_vectorcall(PyObject *self, PyObject *const *args, size_t nargsf, PyOb
         goto checked;
     }
     Py_INCREF(meth);
-    PyObject *res = method_call((MethodObject *)meth, given,
-                                d->out_pos >= 0 ? slot[d->out_pos] : Py_None);
+    PyObject *res = method_call((MethodObject *)meth, given, out);
     Py_DECREF(meth);
     if (res != NULL || !PyErr_ExceptionMatches(Refused))
         return res;
@@ -2842,6 +2892,7 @@ FastMethod_new(PyTypeObject *type, PyObject *args, PyObject *kwds)
         if (PyUnicode_CompareWithASCIIString(name, "out") == 0)
             d->out_pos = j;
     }
+    d->n_inputs = n - (d->out_pos >= 0);
     if (unless != Py_None) {
         d->unless = Py_NewRef(unless);
         PyUnicode_InternInPlace(&d->unless);

@@ -1011,6 +1011,27 @@ def test_map_refuses_bad_arguments_by_name():
         f.map(4, shared, m.theta_nominal, shared[:16], None)
 
 
+@pytest.mark.parametrize("K", [1, 2, 3, 5])
+def test_map_names_every_non_finite_input_element_of_a_long_input(K):
+    """map's inputs (6 K elements: long ones are tested whole first, then searched) name the
+    first NaN, +inf or -inf wherever it is, the last elements and a lone one included."""
+    import pm2dof
+    m = pm2dof.load_model()
+    f = m.function("Me")
+    q = np.tile(m.ik([0.245, 0.265]), (K, 1))
+    out = np.empty((K, 4))
+    f.map(K, q, m.theta_nominal, out, None)
+    for i in range(q.size):
+        for v, word in ((np.nan, "nan"), (np.inf, "inf"), (-np.inf, "-inf")):
+            bad = q.copy()
+            bad.flat[i] = v
+            if i + 3 < q.size:          # a later one too: the first is named
+                bad.flat[i + 3] = np.nan
+            with pytest.raises(ValueError, match=rf"map: input 'q' \(#0\) has a non-finite "
+                                                 rf"value at index {i} \({word}\)"):
+                f.map(K, bad, m.theta_nominal, out, None)
+
+
 def test_map_names_the_point_of_a_non_finite_output():
     import pm2dof
     m = pm2dof.load_model()

@@ -187,6 +187,40 @@ def test_keywords_map_and_unknown_ones_are_the_bodys_type_error(name):
         getattr(M, name)(*args, **{params[0]: args[0]})    # given twice
 
 
+@pytest.mark.parametrize("name", sorted(CALLS))
+def test_every_way_of_giving_out_writes_the_same_bits(name):
+    """The descriptor's shortcut (every input by position, ``out=`` by keyword or absent) and
+    its general mapping (``out`` by position, inputs by keyword) give the same result; an out
+    that shares memory with an input and an input with a NaN take the body's errors."""
+    args = _args(name)
+    ref = getattr(M, name)(*args)
+    params = list(inspect.signature(getattr(M, name)).parameters)
+    kw = dict(zip(params, args))
+
+    def fresh():
+        return (type(ref)(*(np.full_like(r, np.nan) for r in ref)) if isinstance(ref, tuple)
+                else np.full_like(ref, np.nan))
+    for call in (lambda o: getattr(M, name)(*args, out=o),
+                 lambda o: getattr(M, name)(*args, o),
+                 lambda o: getattr(M, name)(**kw, out=o),
+                 lambda o: getattr(M, name)(*args[:1], **dict(list(kw.items())[1:]), out=o)):
+        o = fresh()
+        assert call(o) is o
+        assert _same(o, ref)
+    bad = list(args)
+    k = next(i for i, a in enumerate(bad) if isinstance(a, np.ndarray))
+    bad[k] = bad[k].copy()
+    bad[k][-1] = np.nan
+    _same_outcome(name, M, *bad)
+    if not isinstance(ref, tuple):      # out on an input's memory: the body's ArgumentError
+        big = np.zeros(args[k].size + ref.size)
+        shared = list(args)
+        shared[k] = big[:args[k].size]
+        shared[k][:] = args[k]
+        out = big[args[k].size - 1:args[k].size - 1 + ref.size].reshape(ref.shape)
+        assert _same_outcome(name, M, *shared, out=out)[0] is ArgumentError
+
+
 def _singular_xe(model):
     """A reachable pose near a type I singularity: leg 1 almost stretched, towards XE."""
     leg = model.spec.legs[0]
