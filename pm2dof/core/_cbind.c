@@ -479,6 +479,18 @@ np_fast(PyObject *o, int writable, Py_ssize_t expect, int is_vec)
     return n == expect ? (double *)a->data : NULL;
 }
 
+/* The usual argument, a vector of exactly n float64 elements with the flags `need` (and not
+   warning on write): its data pointer in one test, else NULL (then np_fast decides). */
+static inline double *
+np_vector(PyObject *o, Py_ssize_t n, int need)
+{
+    const NpArray *a = (const NpArray *)o;
+    return a->nd == 1 && a->dimensions[0] == n && a->descr == np_f64_descr &&
+                   (a->flags & (need | NP_WARN_ON_WRITE)) == need
+               ? (double *)a->data
+               : NULL;
+}
+
 /*
  * Get a C-contiguous, aligned float64 buffer from obj into *view. On failure sets an
  * exception and holds no view. The element count is checked by the caller.
@@ -2149,13 +2161,8 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *ins, PyObject *const
         const Py_ssize_t nk = f->nnz[k];
         double *p;
         if (Py_TYPE(o) == np_type) { /* the common case first */
-            const NpArray *a = (const NpArray *)o;
-            /* a vector of the right length, float64, contiguous and aligned: what np_fast
-               checks, in the order that settles the usual argument soonest */
-            if (a->nd == 1 && a->dimensions[0] == nk && a->descr == np_f64_descr &&
-                (a->flags & (NP_C_CONTIGUOUS | NP_ALIGNED)) == (NP_C_CONTIGUOUS | NP_ALIGNED))
-                p = (double *)a->data;
-            else if ((p = np_fast(o, 0, nk, f->vec[k])) == NULL)
+            if ((p = np_vector(o, nk, NP_C_CONTIGUOUS | NP_ALIGNED)) == NULL &&
+                (p = np_fast(o, 0, nk, f->vec[k])) == NULL)
                 return -1;
         }
         else if (nk == 1 && PyFloat_Check(o)) { /* a number, as bind_input */
@@ -2178,12 +2185,9 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *ins, PyObject *const
         PyObject *o = outs[j];
         double *p = NULL;
         if (Py_TYPE(o) == np_type) {
-            const NpArray *a = (const NpArray *)o;
-            const int need = NP_C_CONTIGUOUS | NP_ALIGNED | NP_WRITEABLE;
-            if (a->nd == 1 && a->dimensions[0] == f->nnz[n_in + j] &&
-                a->descr == np_f64_descr && (a->flags & (need | NP_WARN_ON_WRITE)) == need)
-                p = (double *)a->data; /* a vector, as for the inputs */
-            else if ((p = np_fast(o, 1, f->nnz[n_in + j], f->vec[n_in + j])) == NULL)
+            const Py_ssize_t nj = f->nnz[n_in + j];
+            if ((p = np_vector(o, nj, NP_C_CONTIGUOUS | NP_ALIGNED | NP_WRITEABLE)) == NULL &&
+                (p = np_fast(o, 1, nj, f->vec[n_in + j])) == NULL)
                 return -1;
         }
         else if (o != Py_None) { /* None: an output not computed */
@@ -2218,19 +2222,22 @@ method_call(MethodObject *m, PyObject *const *args, PyObject *out)
 
     /* the inputs: presets and the caller's (as given when there are only the caller's) */
     PyObject *const *ins = args, *const *outs = ret;
-    for (Py_ssize_t i = 0, g = 0; i < n_in && !m->plain_in; i++) {
-        PyObject *o = m->tmpl[i];
-        if (o == NULL) {
-            o = args[g++];
-            if (m->positive[i]) { /* e.g. a sample period: a float > 0, nothing else */
-                if (!PyFloat_Check(o))
-                    return refuse();
-                const double v = PyFloat_AS_DOUBLE(o);
-                if (!(v > 0.0 && v < INFINITY))
-                    return refuse();
+    if (!m->plain_in) {
+        for (Py_ssize_t i = 0, g = 0; i < n_in; i++) {
+            PyObject *o = m->tmpl[i];
+            if (o == NULL) {
+                o = args[g++];
+                if (m->positive[i]) { /* e.g. a sample period: a float > 0, nothing else */
+                    if (!PyFloat_Check(o))
+                        return refuse();
+                    const double v = PyFloat_AS_DOUBLE(o);
+                    if (!(v > 0.0 && v < INFINITY))
+                        return refuse();
+                }
             }
+            argv[i] = o;
         }
-        argv[i] = o;
+        ins = argv;
     }
 
     /* the returned outputs: the caller's (exact type and shape), or new arrays */
@@ -2262,9 +2269,7 @@ method_call(MethodObject *m, PyObject *const *args, PyObject *out)
             ret[r] = Py_NewRef(PyTuple_GET_ITEM(out, r));
     }
 
-    if (!m->plain_in)
-        ins = argv;
-    if (!m->plain_out) {
+    if (!m->plain_out) { /* the returned arrays among the presets */
         for (Py_ssize_t j = 0, rr = 0; j < n_out; j++)
             argv[n_in + j] = m->tmpl[n_in + j] ? m->tmpl[n_in + j] : ret[rr++];
         outs = argv + n_in;
@@ -2280,10 +2285,10 @@ method_call(MethodObject *m, PyObject *const *args, PyObject *out)
     }
     int fast = method_bind_fast(m, w, ins, outs, out != Py_None);
     if (fast < 0) { /* bind_all takes the inputs and outputs in one array */
-        for (Py_ssize_t i = 0; i < n_in && m->plain_in; i++)
-            argv[i] = ins[i];
-        for (Py_ssize_t j = 0; j < n_out && m->plain_out; j++)
-            argv[n_in + j] = outs[j];
+        if (m->plain_in)
+            memcpy(argv, ins, (size_t)n_in * sizeof(*argv));
+        if (m->plain_out)
+            memcpy(argv + n_in, outs, (size_t)n_out * sizeof(*argv));
     }
     if (fast > 0 || (fast < 0 && bind_all(f, w, argv, 1, NULL, &held) < 0)) {
         bad = 1;

@@ -4,8 +4,8 @@
  * solve(mvc, backward, forward, params, s, base, v1, x_cap, left, junctions, offsets,
  *       stage, x, sdd, x_mvc, arrival_ok, cap, hi, y, x_raw, prev) -> int
  *
- * What pm2dof.planning.grid.passes computes with no previous solve (prev=None), after
- * pm2dof.planning.stages.link, with the generated functions path_mvc, path_backward and
+ * What pm2dof.planning.stages.link then pm2dof.planning.grid.passes (the whole
+ * computation) give, with the generated functions path_mvc, path_backward and
  * path_forward called per row through _cbind's C API (_cbind_api.h): the same inputs, row
  * for row, so the same results bit for bit (tests/planning/test_planning_passes_c.py).
  *
