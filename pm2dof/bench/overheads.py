@@ -5,7 +5,8 @@ For each method of :data:`OVERHEAD_METHODS`, in interleaved rounds (every round 
 of these once, so the ratios of a round are paired under the same machine load):
 
 * the method from Python with ``out=`` an array it returned before (no allocation; the
-  energies, which return a float, without), its arguments float64 arrays;
+  energies, which return a float, without), its arguments float64 arrays, in
+  :mod:`timeit`'s loop;
 * its generated function ``<name>_<method>`` in a C loop (``Function.time_calls``) with the
   same inputs and preallocated outputs: the C time of one call.
 
@@ -14,6 +15,8 @@ time (``overhead_over_c_<method>``, the median over the rounds of each round's r
 both times (``overhead_python_ns_<method>``, ``overhead_c_ns_<method>``). The state is the
 forward dynamics' of :mod:`.derivatives` (the middle of the bench's move, its model torque).
 """
+from itertools import repeat
+
 import numpy as np
 
 from .derivatives import dynamics_state
@@ -70,45 +73,47 @@ def _arguments(model, traj):
 
 def _python_run(meth, args, out):
     """run(k): k calls ``meth(*args, out=out)`` (``out`` None: without it), the arguments
-    spelt out (a call through ``*args`` costs more than a user's call)."""
+    spelt out (a call through ``*args`` costs more than a user's call), in :mod:`timeit`'s
+    loop (``itertools.repeat``: a ``range`` past 256 makes and frees an int per call, about
+    50 instructions that are the loop's, not the call's)."""
     n = len(args)
     if out is None:
         if n == 2:
             a, b = args
 
             def run(k):
-                for _ in range(k):
+                for _ in repeat(None, k):
                     meth(a, b)
         else:
             a, b, c = args
 
             def run(k):
-                for _ in range(k):
+                for _ in repeat(None, k):
                     meth(a, b, c)
         return run
     if n == 1:
         (a,) = args
 
         def run(k):
-            for _ in range(k):
+            for _ in repeat(None, k):
                 meth(a, out=out)
     elif n == 2:
         a, b = args
 
         def run(k):
-            for _ in range(k):
+            for _ in repeat(None, k):
                 meth(a, b, out=out)
     elif n == 3:
         a, b, c = args
 
         def run(k):
-            for _ in range(k):
+            for _ in repeat(None, k):
                 meth(a, b, c, out=out)
     else:
         a, b, c, d = args
 
         def run(k):
-            for _ in range(k):
+            for _ in repeat(None, k):
                 meth(a, b, c, d, out=out)
     return run
 

@@ -2146,7 +2146,8 @@ guard_passes(MethodObject *m, const double *p, Py_ssize_t n)
  * when the Method was built: they are not re-checked for finiteness (a controller's
  * parameters are read-only and its state is written only by its own step, which keeps the
  * state when a result is not finite), nor for overlap (private arrays). The caller's inputs
- * must be finite, and the caller's out must not share memory with them.
+ * must be finite, and the caller's out must not share memory with them. Any refusal (1 or -1)
+ * ends in the Python body, which gives the error: the order of the tests is free.
  */
 static int
 method_bind_fast(MethodObject *m, Work *w, PyObject *const *ins, PyObject *const *outs,
@@ -2154,8 +2155,31 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *ins, PyObject *const
 {
     FunctionObject *f = m->f;
     const Py_ssize_t n_in = f->n_in, n_out = f->n_out;
-    /* the inputs; the caller's: finite, and the span of their memory */
-    const char *lo = (const char *)UINTPTR_MAX, *hi = NULL;
+    for (Py_ssize_t j = 0; j < n_out; j++) {
+        PyObject *o = outs[j];
+        double *p = NULL;
+        if (Py_TYPE(o) == np_type) {
+            const Py_ssize_t nj = f->nnz[n_in + j];
+            if ((p = np_vector(o, nj, NP_C_CONTIGUOUS | NP_ALIGNED | NP_WRITEABLE)) == NULL &&
+                (p = np_fast(o, 1, nj, f->vec[n_in + j])) == NULL)
+                return -1;
+        }
+        else if (o != Py_None) { /* None: an output not computed */
+            return -1;
+        }
+        w->res[j] = p;
+    }
+    /* one returned array (the usual case): an input shares memory with the caller's out if
+       and only if it meets its span [ob, oe) (empty without an out); several: if it meets
+       one that meets the inputs' span [lo, hi) */
+    const int several = caller_out && m->n_ret > 1;
+    uintptr_t ob = 0, oe = 0, lo = UINTPTR_MAX, hi = 0;
+    if (caller_out && !several) {
+        ob = (uintptr_t)w->res[m->ret_out[0]];
+        oe = ob + (uintptr_t)f->nnz[n_in + m->ret_out[0]] * 8;
+    }
+    /* the inputs; the caller's: finite, and where they lie */
+    int meets = 0;
     for (Py_ssize_t k = 0; k < n_in; k++) {
         PyObject *o = ins[k];
         const Py_ssize_t nk = f->nnz[k];
@@ -2177,35 +2201,23 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *ins, PyObject *const
             continue;
         if (!all_finite(p, nk))
             return 1;
-        const char *b0 = (const char *)p, *b1 = b0 + nk * 8;
-        lo = b0 < lo ? b0 : lo;
-        hi = b1 > hi ? b1 : hi;
+        const uintptr_t b0 = (uintptr_t)p, b1 = b0 + (uintptr_t)nk * 8;
+        meets |= (b0 < oe) & (ob < b1);
+        if (several) {
+            lo = b0 < lo ? b0 : lo;
+            hi = b1 > hi ? b1 : hi;
+        }
     }
-    for (Py_ssize_t j = 0; j < n_out; j++) {
-        PyObject *o = outs[j];
-        double *p = NULL;
-        if (Py_TYPE(o) == np_type) {
-            const Py_ssize_t nj = f->nnz[n_in + j];
-            if ((p = np_vector(o, nj, NP_C_CONTIGUOUS | NP_ALIGNED | NP_WRITEABLE)) == NULL &&
-                (p = np_fast(o, 1, nj, f->vec[n_in + j])) == NULL)
-                return -1;
-        }
-        else if (o != Py_None) { /* None: an output not computed */
-            return -1;
-        }
-        w->res[j] = p;
-    }
-    if (caller_out && hi != NULL) {
-        /* an out outside the caller's inputs' span shares memory with none */
-        for (Py_ssize_t r = 0; r < m->n_ret; r++) {
-            const Py_ssize_t j = m->ret_out[r];
-            if (!overlaps(w->res[j], f->nnz[n_in + j], lo, (hi - lo) / 8))
-                continue;
-            for (Py_ssize_t i = 0; i < n_in; i++)
-                if (m->tmpl[i] == NULL &&
-                    overlaps(w->res[j], f->nnz[n_in + j], w->arg[i], f->nnz[i]))
-                    return 1;
-        }
+    if (!several || hi == 0)
+        return meets;
+    for (Py_ssize_t r = 0; r < m->n_ret; r++) {
+        const Py_ssize_t j = m->ret_out[r];
+        if (!overlaps(w->res[j], f->nnz[n_in + j], (const void *)lo, (Py_ssize_t)(hi - lo) / 8))
+            continue;
+        for (Py_ssize_t i = 0; i < n_in; i++)
+            if (m->tmpl[i] == NULL &&
+                overlaps(w->res[j], f->nnz[n_in + j], w->arg[i], f->nnz[i]))
+                return 1;
     }
     return 0;
 }

@@ -377,3 +377,44 @@ def test_a_non_finite_element_anywhere_in_a_short_or_long_input_is_refused():
                 with pytest.raises(ArgumentError):
                     call(b)
             call(a.copy())                                      # finite: bound, no error
+
+
+@pytest.mark.parametrize("name", sorted(CALLS))
+def test_an_out_on_any_inputs_memory_is_refused_and_one_beside_it_is_not(name):
+    """Every caller's input, with a returned array of ``out`` ending on its first element,
+    starting on its last, or just beside it in the same buffer (correct, then): the fast
+    path's overlap test is exact, for one returned array and for several (an input lying
+    between two of them shares memory with neither)."""
+    args = _args(name)
+    ref = getattr(M, name)(*args)
+    refs = tuple(ref) if isinstance(ref, tuple) else (ref,)
+
+    def outs(arrays):
+        return type(ref)(*arrays) if isinstance(ref, tuple) else arrays[0]
+    for k, a in enumerate(args):
+        if not isinstance(a, np.ndarray):
+            continue
+        n = a.size
+        for r, rr in enumerate(refs):
+            m = rr.size
+            for start, clash in ((n, False), (n - 1, True), (-m, False), (-m + 1, True)):
+                big = np.zeros(n + 2 * m + 2)
+                base = m + 1                                # the input at big[base:base + n]
+                shared = list(args)
+                shared[k] = big[base:base + n]
+                shared[k][:] = a
+                arrays = [np.full_like(x, np.nan) for x in refs]
+                arrays[r] = big[base + start:base + start + m].reshape(rr.shape)
+                if len(refs) > 1 and not clash and start == n:   # another one before it
+                    other = (r + 1) % len(refs)
+                    if refs[other].size <= base:
+                        arrays[other] = big[base - refs[other].size:base].reshape(
+                            refs[other].shape)
+                o = outs(arrays)
+                if clash:
+                    assert _same_outcome(name, M, *shared, out=o)[0] is ArgumentError, \
+                        (name, k, r, start)
+                else:
+                    assert getattr(M, name)(*shared, out=o) is o
+                    assert _same(o, ref), (name, k, r, start)
+                    assert np.array_equal(big[base:base + n], a)
