@@ -2,6 +2,7 @@
 what the descriptor's fast path returns is bit for bit what the method's Python body (its
 checked path, ``__wrapped__``) returns; ``out=`` is written and returned; whatever the fast
 path refuses or does not map takes the body, so every typed error is the body's."""
+import functools
 import inspect
 
 import numpy as np
@@ -379,14 +380,34 @@ def test_a_non_finite_element_anywhere_in_a_short_or_long_input_is_refused():
             call(a.copy())                                      # finite: bound, no error
 
 
+#: every kind: a point on revolute legs, with gravity, on linear actuators; two platforms
+KINDS = ("shang2010", "shang2010_vertical", "prr_point", "rpr3_platform", "rrr3_platform")
+
+
+@functools.cache
+def _kind_state(kind):
+    """A model of each kind and the state of _state at the middle of its own first move."""
+    from pm2dof.control.trajectory import model_move
+    model = load_model(kind)
+    traj = model_move(model, "high")
+    k = len(traj.t) // 2
+    st = _state(model, np.ascontiguousarray(traj.xd[k]))
+    st["xed"] = np.ascontiguousarray(traj.xd_dot[k])
+    st["qd"] = model.W(st["q"]) @ st["xed"]
+    st["x"] = np.concatenate([st["xe"], st["xed"]])
+    return model, st
+
+
+@pytest.mark.parametrize("kind", KINDS)
 @pytest.mark.parametrize("name", sorted(CALLS))
-def test_an_out_on_any_inputs_memory_is_refused_and_one_beside_it_is_not(name):
+def test_an_out_on_any_inputs_memory_is_refused_and_one_beside_it_is_not(kind, name):
     """Every caller's input, with a returned array of ``out`` ending on its first element,
     starting on its last, or just beside it in the same buffer (correct, then): the fast
     path's overlap test is exact, for one returned array and for several (an input lying
-    between two of them shares memory with neither)."""
-    args = _args(name)
-    ref = getattr(M, name)(*args)
+    between two of them shares memory with neither), on every kind of model."""
+    model, state = _kind_state(kind)
+    args = _args(name, state)
+    ref = getattr(model, name)(*args)
     refs = tuple(ref) if isinstance(ref, tuple) else (ref,)
 
     def outs(arrays):
@@ -412,9 +433,9 @@ def test_an_out_on_any_inputs_memory_is_refused_and_one_beside_it_is_not(name):
                             refs[other].shape)
                 o = outs(arrays)
                 if clash:
-                    assert _same_outcome(name, M, *shared, out=o)[0] is ArgumentError, \
+                    assert _same_outcome(name, model, *shared, out=o)[0] is ArgumentError, \
                         (name, k, r, start)
                 else:
-                    assert getattr(M, name)(*shared, out=o) is o
+                    assert getattr(model, name)(*shared, out=o) is o
                     assert _same(o, ref), (name, k, r, start)
                     assert np.array_equal(big[base:base + n], a)
