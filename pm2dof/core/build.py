@@ -61,6 +61,13 @@ STALE_TMP_AGE_S = 600.0
 #:     made ~200 such calls). The library's own definitions are the ones used (nothing
 #:     interposes them), so they are inlined; results are unchanged (the same operations).
 #:
+#: ``-DPM2DOF_INLINE_FMINMAX``
+#:     ``fmax`` and ``fmin`` inline in a CasADi file's units, computing glibc's results bit for
+#:     bit (:data:`pm2dof.core.csplit.MINMAX_PRELUDE`; x86-64 with glibc only, else libm's):
+#:     like CasADi's helpers above, each was a call around which every live register was
+#:     spilled (a plan's maximum-velocity curve and passes, the controllers' torque splits).
+#:     A library built without it is built again (:func:`library_is_fresh`).
+#:
 #: ``-mno-fma`` (x86 only)
 #:     No fused multiply-add instructions at all. ``-ffp-contract=off`` alone does not keep GCC 12
 #:     from fusing: its SLP vectoriser turns a multiplication feeding an alternating
@@ -83,6 +90,7 @@ FLAGS: tuple[str, ...] = (
     "-shared",
     "-fno-math-errno",
     "-fno-semantic-interposition",
+    "-DPM2DOF_INLINE_FMINMAX",
     *(("-mno-fma",) if _X86 else ()),
 )
 

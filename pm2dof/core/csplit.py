@@ -17,7 +17,11 @@ Blocks call each other's ``casadi_fN``. This module rewrites nothing inside a bo
 - keeps the head's exported configuration functions (``<name>_casadi_version``, ...) in the first
   unit only;
 - puts a ``#line`` directive before every block, so that the compiler's messages name the lines
-  of the original file.
+  of the original file;
+- after the head's ``#include <math.h>``, puts :data:`MINMAX_PRELUDE`: with
+  ``PM2DOF_INLINE_FMINMAX`` defined (:data:`pm2dof.core.build.FLAGS`), on x86-64 with glibc,
+  ``fmax`` and ``fmin`` (which CasADi's ``casadi_fmax``, ``casadi_fmin`` call) are inline
+  functions computing what glibc's do, bit for bit, instead of calls into libm.
 
 The arithmetic of every function is the same text, compiled with the same floating-point flags,
 so the results are the same bit for bit (checked by the tests on the shipped models).
@@ -32,7 +36,7 @@ import re
 from typing import NamedTuple
 
 __all__ = ["Block", "Split", "split_casadi_c", "has_loop", "opt_levels", "plan_units",
-           "FN_SIGNATURE", "LOOP_OPT", "STRAIGHT_OPT", "OPT_COST", "UNIT_BYTES"]
+           "FN_SIGNATURE", "MINMAX_PRELUDE", "LOOP_OPT", "STRAIGHT_OPT", "OPT_COST", "UNIT_BYTES"]
 
 #: The signature CasADi gives every ``casadi_fN``.
 FN_SIGNATURE = ("(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, "
@@ -46,6 +50,24 @@ _LOOP = re.compile(r"\bfor \(")
 # to the next definition
 _HELPER_DEF = re.compile(r"^static (casadi_real|casadi_int|void|int) (casadi_\w+)\(", re.M)
 _CONFIG_START = "/* Configuration this file was compiled with */\n"
+_MATH_H = "#include <math.h>\n"
+
+#: Put after the head's ``#include <math.h>``. glibc's x86-64 ``fmax(x, y)`` is ``maxsd`` when
+#: both are numbers (``x > y ? x : y``: ``y`` on a tie, so ``fmax(-0., +0.)`` is ``+0.`` and
+#: ``fmax(+0., -0.)`` is ``-0.``) and the number when one is NaN; ``fmin`` likewise with
+#: ``minsd``. The inline functions below give the same bits (a signalling NaN aside, which
+#: glibc quiets), without a call into libm, around which every live register is spilled: the
+#: 4-RRR preload split calls each 115 times. Elsewhere (another processor, another C library,
+#: whose ``fmax`` may order the zeros otherwise) libm's are kept.
+MINMAX_PRELUDE = """
+/* pm2dof: fmax and fmin inline, as glibc's x86-64 ones compute them (pm2dof.core.csplit) */
+#if defined(PM2DOF_INLINE_FMINMAX) && defined(__x86_64__) && defined(__GLIBC__)
+static inline double pm2dof_fmax(double x, double y) { return y != y ? x : x > y ? x : y; }
+static inline double pm2dof_fmin(double x, double y) { return y != y ? x : x < y ? x : y; }
+#define fmax(x, y) pm2dof_fmax(x, y)
+#define fmin(x, y) pm2dof_fmin(x, y)
+#endif
+"""
 _TAIL = "\n#ifdef __cplusplus\n} /* extern \"C\" */\n#endif\n"
 
 
@@ -148,6 +170,8 @@ def split_casadi_c(text: str, path: str = "generated.c") -> Split | None:
     if len(set(names)) != len(names):
         return None
     head = _HELPER.sub(r"static \1 \2(", head)
+    if _MATH_H in head:
+        head = head.replace(_MATH_H, _MATH_H + MINMAX_PRELUDE, 1)
     body_end = len(text) - len(_TAIL)
     chunks, calls_of = [], []
     called = re.compile(r"\b(casadi_f\d+)\(")

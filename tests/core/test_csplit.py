@@ -6,6 +6,7 @@ file CasADi writes (functions calling one helper from other units, one with a lo
 another optimisation level); the shipped models' libraries are checked by the whole suite
 (every pinned number) and, whole against cut, by tests/core/test_csplit_shipped.py (slow)."""
 import ctypes
+import platform
 import shutil
 import subprocess
 
@@ -176,3 +177,50 @@ def test_build_jobs_reads_the_environment(monkeypatch):
     assert build.build_jobs() == 3
     monkeypatch.setenv(build.JOBS_ENV, "zero")
     assert build.build_jobs() >= 1
+
+
+def test_inline_fmax_and_fmin_give_libms_bits_on_every_special_value(tmp_path):
+    """CasADi's fmax and fmin call libm; in a cut library on x86-64 with glibc they are inline
+    (csplit.MINMAX_PRELUDE): the bits of libm's fmax(x, y), fmin(x, y) (called through ctypes,
+    in the C's order) on every pair of zeros of both signs, infinities, NaNs of both signs,
+    subnormals and the largest double, in both orders. The whole file's library may call libm
+    with the operands swapped (gcc 12 does: it takes fmax and fmin as commutative, which C
+    allows, the sign of a zero they return being unspecified): each result is libm's bits in
+    one order or the other, which differ on a tie of zeros of opposite signs and on two NaNs."""
+    import ctypes.util
+    x = ca.SX.sym("x", 2)
+    f = ca.Function("mm_step", [x], [ca.vertcat(ca.fmax(x[0], x[1]), ca.fmin(x[0], x[1]))])
+    cg = ca.CodeGenerator("mm.c", {"with_header": True, "verbose": False})
+    cg.add(f)
+    cg.generate(str(tmp_path) + "/")
+    c = tmp_path / "mm.c"
+    assert "casadi_fmax(a0,a1)" in c.read_text() and "casadi_fmin(a0,a1)" in c.read_text()
+    whole = tmp_path / "libwhole.so"
+    subprocess.run([*build._compiler(), *build.FLAGS, "-o", str(whole), str(c), "-lm"],
+                   check=True)
+    cut = build.compile_library(c, tmp_path / "libmm.so", progress=None, jobs=1)
+
+    def imports(lib):
+        return subprocess.run(["nm", "-D", "--undefined-only", str(lib)], capture_output=True,
+                              text=True, check=True).stdout.split()
+    inline = build._X86 and platform.libc_ver()[0] == "glibc"
+    assert {"fmax@GLIBC_2.2.5", "fmin@GLIBC_2.2.5"} <= set(imports(whole)) or not inline
+    assert (not any(s.startswith(("fmax", "fmin")) for s in imports(cut))) == inline
+    libm = ctypes.CDLL(ctypes.util.find_library("m"))
+    for fn in (libm.fmax, libm.fmin):
+        fn.restype, fn.argtypes = ctypes.c_double, (ctypes.c_double, ctypes.c_double)
+    la, lb = ctypes.CDLL(str(whole)), ctypes.CDLL(str(cut))
+    special = [0.0, -0.0, 1.0, -1.0, np.inf, -np.inf, np.nan, -np.nan, 5e-324, -5e-324,
+               np.finfo(float).max, 2.5]
+    swapped = 0
+    for a in special:
+        for b in special:
+            ins = [np.array([a, b])]
+            want = np.array([libm.fmax(a, b), libm.fmin(a, b)]).view(np.int64)
+            other = np.array([libm.fmax(b, a), libm.fmin(b, a)]).view(np.int64)
+            wa = _call(la, "mm_step", ins, [2])[0].view(np.int64)
+            wb = _call(lb, "mm_step", ins, [2])[0].view(np.int64)
+            assert np.array_equal(wb, want), (a, b, wb, want)
+            assert np.all((wa == want) | (wa == other)), (a, b, wa)   # each, one order
+            swapped += int(np.sum(want != other))
+    assert swapped == 2 * 2 * 2  # fmax, fmin: 0 and -0, nan and -nan, each in both orders
