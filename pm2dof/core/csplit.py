@@ -24,7 +24,11 @@ Blocks call each other's ``casadi_fN``. This module rewrites nothing inside a bo
   functions computing what glibc's do, bit for bit, instead of calls into libm.
 
 The arithmetic of every function is the same text, compiled with the same floating-point flags,
-so the results are the same bit for bit (checked by the tests on the shipped models).
+so the results are the same bit for bit (checked by the tests on the shipped models). ``fmax`` and
+``fmin`` give libm's bits for the operands in the C's order; the whole file's calls into libm
+need not keep that order (gcc 12 swaps them, C leaving the sign of a zero they return
+unspecified), so on a tie of zeros of opposite signs the two libraries may return different
+zeros.
 
 Standard library only: setup.py loads :mod:`pm2dof.core.build` (which uses this module) as a file,
 before the package can be imported.
