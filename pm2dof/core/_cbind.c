@@ -2170,8 +2170,8 @@ method_bind_fast(MethodObject *m, Work *w, PyObject *const *ins, PyObject *const
         w->res[j] = p;
     }
     /* one returned array (the usual case): an input shares memory with the caller's out if
-       and only if it meets its span [ob, oe) (empty without an out); several: if it meets
-       one that meets the inputs' span [lo, hi) */
+       and only if it meets its span [ob, oe) (empty without an out). Several: each returned
+       array that meets the inputs' span [lo, hi) is tested against each input, after them */
     const int several = caller_out && m->n_ret > 1;
     uintptr_t ob = 0, oe = 0, lo = UINTPTR_MAX, hi = 0;
     if (caller_out && !several) {

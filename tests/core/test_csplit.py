@@ -203,9 +203,10 @@ def test_inline_fmax_and_fmin_give_libms_bits_on_every_special_value(tmp_path):
     def imports(lib):
         return subprocess.run(["nm", "-D", "--undefined-only", str(lib)], capture_output=True,
                               text=True, check=True).stdout.split()
+    def calls_libm(lib):
+        return {s.split("@")[0] for s in imports(lib)} >= {"fmax", "fmin"}
     inline = build._X86 and platform.libc_ver()[0] == "glibc"
-    assert {"fmax@GLIBC_2.2.5", "fmin@GLIBC_2.2.5"} <= set(imports(whole)) or not inline
-    assert (not any(s.startswith(("fmax", "fmin")) for s in imports(cut))) == inline
+    assert calls_libm(whole) and calls_libm(cut) != inline
     libm = ctypes.CDLL(ctypes.util.find_library("m"))
     for fn in (libm.fmax, libm.fmin):
         fn.restype, fn.argtypes = ctypes.c_double, (ctypes.c_double, ctypes.c_double)
@@ -223,4 +224,5 @@ def test_inline_fmax_and_fmin_give_libms_bits_on_every_special_value(tmp_path):
             assert np.array_equal(wb, want), (a, b, wb, want)
             assert np.all((wa == want) | (wa == other)), (a, b, wa)   # each, one order
             swapped += int(np.sum(want != other))
-    assert swapped == 2 * 2 * 2  # fmax, fmin: 0 and -0, nan and -nan, each in both orders
+    if inline:                   # glibc: fmax, fmin differ with the order on 0 and -0, nan
+        assert swapped == 2 * 2 * 2      # and -nan, each in both orders

@@ -418,9 +418,10 @@ def test_an_out_on_any_inputs_memory_is_refused_and_one_beside_it_is_not(kind, n
         n = a.size
         for r, rr in enumerate(refs):
             m = rr.size
+            room = max(x.size for x in refs) + 1      # before the input, after it
             for start, clash in ((n, False), (n - 1, True), (-m, False), (-m + 1, True)):
-                big = np.zeros(n + 2 * m + 2)
-                base = m + 1                                # the input at big[base:base + n]
+                big = np.zeros(room + n + room)
+                base = room                                 # the input at big[base:base + n]
                 shared = list(args)
                 shared[k] = big[base:base + n]
                 shared[k][:] = a
@@ -428,9 +429,8 @@ def test_an_out_on_any_inputs_memory_is_refused_and_one_beside_it_is_not(kind, n
                 arrays[r] = big[base + start:base + start + m].reshape(rr.shape)
                 if len(refs) > 1 and not clash and start == n:   # another one before it
                     other = (r + 1) % len(refs)
-                    if refs[other].size <= base:
-                        arrays[other] = big[base - refs[other].size:base].reshape(
-                            refs[other].shape)
+                    arrays[other] = big[base - refs[other].size:base].reshape(
+                        refs[other].shape)
                 o = outs(arrays)
                 if clash:
                     assert _same_outcome(name, model, *shared, out=o)[0] is ArgumentError, \
