@@ -178,13 +178,15 @@ static int run(const Calls *f, const Py_ssize_t *o, const double *prm, const dou
             return 1;
     }
     for (Py_ssize_t k = 0; k < K; k++) {
+        if (same_ar[k] && same_st[k]) {     /* its rows and so its cap are the previous */
+            cap[k] = pv->cap[src[k]];
+            continue;
+        }
         Py_ssize_t j = junction(bp, J, s[k]);
         arrive_row(o, stage, k, j >= 0 ? left + j * S : NULL, arr);
         int other = !rows_equal(arr, stage + k * S, S);
         cap[k] = x_mvc[k];
-        if (other && same_ar[k] && same_st[k]) {
-            cap[k] = pv->cap[src[k]];
-        } else if (other) {
+        if (other) {
             const double *a[2] = {arr, prm};
             double *r[1] = {cap + k};
             if (api->eval(f->mvc, a, r) != 0)
@@ -215,6 +217,11 @@ static int run(const Calls *f, const Py_ssize_t *o, const double *prm, const dou
         memset(in, 0, (size_t)o[B_] * sizeof(double));
         xs[0] = hi[top + 1];
         for (Py_ssize_t k = top; k >= 0; k--) {
+            if (pv != NULL && same_int[k] && xs[0] == pv->hi[JS(k + 1)]) {
+                /* what the generated step's switch returns, without building its input */
+                hi[k] = xs[0] = pv->hi[JS(k)];
+                continue;
+            }
             PAIR(in + o[B_PAIR], k);
             if (pv != NULL) {
                 in[o[B_SAME]] = same_int[k];
@@ -250,6 +257,14 @@ static int run(const Calls *f, const Py_ssize_t *o, const double *prm, const dou
         memset(in, 0, (size_t)o[FI_] * sizeof(double));
         xs[0] = x_raw[first];
         for (Py_ssize_t k = first; k + 1 < K; k++) {
+            if (pv != NULL && same_int[k] && xs[0] == pv->x_raw[JS(k)]) {
+                /* met the previous pass: what the generated step's switch and the copy below
+                   give, without building its input */
+                memcpy(yall + k * Y, pv->y + JS(k) * Y, (size_t)Y * sizeof(double));
+                x_raw[k] = pv->x_raw[JS(k)];
+                xs[0] = pv->x_raw[JS(k + 1)];
+                continue;
+            }
             PAIR(in + o[F_PAIR], k);
             in[o[F_XNM]] = hi[k + 1];
             double x_in = pv != NULL ? pv->x_raw[JS(k)] : 0.0;

@@ -28,7 +28,7 @@ from .plan import PathProfile, grid_times, sampled
 from .stages import junction_left, link, point_stages
 from .workspace import Workspace, workspace
 
-__all__ = ["Grid", "passes"]
+__all__ = ["Grid", "passes", "row_max"]
 
 _TOL = 1e-9   # relative slack of the forward pass's own checks (rounding)
 
@@ -36,6 +36,15 @@ _TOL = 1e-9   # relative slack of the forward pass's own checks (rounding)
 def at(p, s, k):
     """Where grid point ``k`` is, for messages: its arc length and point."""
     return f"s = {s[k]:.6g} m, point {point_text(p[k])}"
+
+
+def row_max(a):
+    """a.max(axis=1) of ``a`` (K, n), column by column: the same values, at a tenth of the
+    cost for a few columns (numpy reduces a short last axis row by row)."""
+    out = a[:, 0].copy()
+    for col in a.T[1:]:
+        np.maximum(out, col, out=out)
+    return out
 
 
 def _same_rows(a, b):
@@ -242,7 +251,7 @@ class Grid:
                                                   np.ascontiguousarray(sdd), pb.params,
                                                   pb.tau_max, None, tau_mn, None, ratio)
         if pb.split == "min_norm":
-            ratio = np.abs(tau_mn / pb.tau_max).max(axis=1)
+            ratio = row_max(np.abs(tau_mn / pb.tau_max))
         return ratio
 
     def check_midpoints(self, x, sdd):

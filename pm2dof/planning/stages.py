@@ -74,6 +74,11 @@ def limits(model, tau_max, margin):
     """The torque limits the plan may use, tau_max * margin (n,), N m (N for a linear
     actuator), checked: tau_max positive and finite, 0 < margin <= 1 (a margin above 1 would
     plan beyond the motors' limits: pass a larger tau_max instead)."""
+    return limits_and_actuators(model, tau_max, margin)[0]
+
+
+def limits_and_actuators(model, tau_max, margin):
+    """(:func:`limits`, the actuators' limits before the margin (n,)), checked once."""
     n = model.n_legs
     try:
         m = float(margin)
@@ -88,7 +93,7 @@ def limits(model, tau_max, margin):
         raise PlanError(f"tau_max must be one value or {n} finite limits > 0 "
                         f"{effort_unit(model)} (one per actuator), at most {TAU_MAX_LIMIT:g}, "
                         f"got {tau_max!r} ({exc})") from None
-    return tau * m
+    return tau * m, tau
 
 
 def params(model, theta):
@@ -140,8 +145,8 @@ def point_stages(problem, s, evaluated, check=True):
     outs.update({"v1": v1, "sing": sing, f"N_{split}": st["N"], f"h_{split}": st["h"]})
     if check:
         k = first_bad(model, sing)
-        bad = ~np.isfinite(outs["a"]).all(axis=1) | ~np.isfinite(outs["b"]).all(axis=1)
-        if k is not None or bad.any():
+        if k is not None or not (np.isfinite(outs["a"]).all() and np.isfinite(outs["b"]).all()):
+            bad = ~np.isfinite(outs["a"]).all(axis=1) | ~np.isfinite(outs["b"]).all(axis=1)
             k = k if k is not None else int(np.argmax(bad))
             raise_at(model, s[k], p[k], sing[k])
     return stage, outs

@@ -32,10 +32,10 @@ import numpy as np
 
 from ..core.errors import PlanError
 from .check import check_path, require
-from .grid import Grid, at, passes
+from .grid import Grid, at, passes, row_max
 from .plan import Plan
 from .problem import PlanProblem
-from .stages import GRID_MAX, grid_points, limits, params
+from .stages import GRID_MAX, grid_points, limits_and_actuators, params
 
 __all__ = ["plan_time_optimal", "plan_on_grid", "solve_profile"]
 
@@ -78,7 +78,7 @@ def _refine_until_resolved(grid):
         # |p''| of the planar rows: phi is linear along every piece (p''_phi = 0, paths.py);
         # np.hypot(*ev.T) of a platform's (K, 3) would take the phi row as ``out``, overwrite it
         ddp = grid.ev[2]
-        rate = np.maximum(np.abs(grid.v1).max(axis=1), np.hypot(ddp[:, 0], ddp[:, 1]))
+        rate = np.maximum(row_max(np.abs(grid.v1)), np.hypot(ddp[:, 0], ddp[:, 1]))
         wide = np.maximum(rate[:-1], rate[1:]) * np.diff(s)
         bad = np.flatnonzero(wide > RESOLUTION)
         if not bad.size:
@@ -176,7 +176,10 @@ def _split(g, ks):
     run spans, neighbours included (2, M)."""
     s = g.s
     ks = np.unique(ks)
-    nb = np.setdiff1d(np.clip(np.concatenate([ks - 1, ks + 1]), 0, len(s) - 2), ks)
+    near = np.zeros(len(s) - 1, dtype=bool)     # the neighbours not split themselves
+    near[np.clip(ks - 1, 0, None)] = near[np.minimum(ks + 1, len(s) - 2)] = True
+    near[ks] = False
+    nb = np.flatnonzero(near)
     parts = [(ks, RELAXED_INTO), (nb, SPLIT_INTO)]
     g.insert(np.concatenate([(s[k, None] + np.diff(s)[k, None]
                               * (np.arange(1, n) / n)).ravel() for k, n in parts]))
@@ -237,7 +240,7 @@ def _unresolved(s, mid, ev_mid, excess, over, attempt):
 def _plan(model, path, tau_max, split, theta, margin, grid, given):
     t0 = time.perf_counter()
     require(model, path)
-    tau = limits(model, tau_max, margin)
+    tau, tau_actuators = limits_and_actuators(model, tau_max, margin)
     s = grid_points(path, grid) if given is None else given
     prm, th = params(model, theta)
     problem = PlanProblem(model, path, tau, th, split, prm)
@@ -282,7 +285,7 @@ def _plan(model, path, tau_max, split, theta, margin, grid, given):
                 margin=float(margin),
                 trajectory=traj, profile=profile, compute_time_s=time.perf_counter() - t0,
                 info={"grid": K, "stops": s[stops].tolist(), "theta": th.tolist(),
-                      "tau_max_actuators": limits(model, tau_max, 1.0).tolist(),
+                      "tau_max_actuators": tau_actuators.tolist(),
                       "arrival_relaxed": s[relaxed].tolist(), "refinements": attempt,
                       "split_before": split_before,
                       "midpoint_excess": float(max(excess.max(), 0.0)),

@@ -143,6 +143,31 @@ def test_a_solve_on_the_same_grid_takes_every_step_from_the_previous_one():
         assert np.array_equal(_bits(a), _bits(b))
 
 
+def test_a_point_whose_arriving_interval_changed_gets_its_cap_computed_again():
+    """A point added just before the far end of an interval on which a joint reverses makes
+    that end's arriving interval one without the reversal: its arrival facets, and so its cap,
+    differ from the previous solve's although its own row does not. With every cap of the
+    previous solve altered, that point's cap is the one a solve from scratch computes, and a
+    point whose rows are both unchanged takes the altered one."""
+    m = pm2dof.load_model()
+    path = read_path_file("pick_and_place").path
+    s0 = np.linspace(0.0, path.length, 300)
+    g = _grid(m, path, s0)
+    sign = g.v1 >= 0
+    reversing = np.flatnonzero((sign[:-1] != sign[1:]).any(axis=1))
+    assert reversing.size >= 3
+    s, stage, x_mvc, cap, hi, y, x_raw = solve_c(g.linking, g.s, g.base, g.v1, g.stops())[5]
+    altered = (s, stage, x_mvc, cap + 1.0, hi, y, x_raw)
+    for k in reversing[:3]:
+        g2 = _grid(m, path, s0)
+        g2.insert(np.array([s0[k + 1] - 1e-4 * (s0[k + 1] - s0[k])]))
+        assert ((g2.v1[k + 1] >= 0) == sign[k + 1]).all()   # the added point: k + 1's side
+        again = solve_c(g2.linking, g2.s, g2.base, g2.v1, g2.stops(), altered)[5][3]
+        fresh = solve_c(g2.linking, g2.s, g2.base, g2.v1, g2.stops())[5][3]
+        assert _bits(again[k + 2]) == _bits(fresh[k + 2]) and again[k + 2] != cap[k + 1] + 1.0
+        assert again[k + 4] == cap[k + 3] + 1.0          # unchanged rows: the previous cap
+
+
 def test_no_point_gives_no_row():
     m = pm2dof.load_model()
     path = read_path_file("curve").path

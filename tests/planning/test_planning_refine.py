@@ -142,3 +142,17 @@ def test_what_a_coarse_grid_gives(m):
             assert min(d.values()) >= d[1000] * (1 - 1e-9) >= fine * (1 - 1e-9), d
     d2, d5 = (plan_time_optimal(m, SPLINE, 5.0, "min_max", grid=g).duration for g in (2, 5))
     assert d2 < d5
+
+
+def test_row_max_is_the_largest_entry_of_each_row():
+    """grid.row_max, the planner's max over a row (the joints' |v1|, the torque ratios),
+    against numpy's max(axis=1): the same values, NaN where a row holds one, for one column
+    and several."""
+    rng = np.random.default_rng(3)
+    for n in (1, 2, 3, 4):
+        a = rng.normal(size=(50, n))
+        a[7, n - 1] = np.nan
+        a[9, 0] = -np.inf
+        got = grid_module.row_max(a)
+        assert got.shape == (50,) and np.array_equal(got, a.max(axis=1), equal_nan=True)
+        assert np.isnan(got[7]) and not np.isnan(got[8])
