@@ -107,7 +107,8 @@ static int rows_equal(const double *a, const double *b, Py_ssize_t S)
  * row is the same, the backward pass's bounds above the last interval whose input changed,
  * the forward pass's steps before the first one whose input or bound changed, and the
  * generated steps' own memo (same, x_in, x_out: they hand the previous result back where the
- * pass meets the previous one again). The result is the whole computation's, bit for bit. */
+ * pass meets the previous one again; where the step would, it is taken here without building
+ * its input or calling it). The result is the whole computation's, bit for bit. */
 static int run(const Calls *f, const Py_ssize_t *o, const double *prm, const double *s,
                const double *base, const double *v1, const double *x_cap, const double *left,
                const double *bp, Py_ssize_t J, Py_ssize_t K, const Prev *pv, double *stage,
