@@ -18,8 +18,7 @@
  *   offsets     int64: S, rho, n, delta, x_cap, h, F, then path_pair's size, stage, next,
  *               next_cap, path_backward_input's size and pair, path_forward_input's size,
  *               pair and x_next_max, path_forward_output's size, x, sdd, L, U, Z,
- *               arrival_ok, then the memo entries same, x_in, x_out of the backward input and
- *               of the forward input
+ *               arrival_ok (the inputs' memo entries are left zero: see run())
  *   outputs     stage (K, S) the linked rows; x (K,) s_d^2 >= 0 (0 at the stops); sdd (K,)
  *               (the last repeats the one before); x_mvc (K,); arrival_ok (K - 1,); and what
  *               a next solve reuses: cap (K,), hi (K,), y (K - 1, path_forward's y), x_raw (K,)
@@ -42,8 +41,7 @@
 static const Pm2dofCbindAPI *api;
 
 enum { S_, RHO, NL, DELTA, XCAP, H, NF, P_, P_STAGE, P_NEXT, P_CAP, B_, B_PAIR, FI_, F_PAIR,
-       F_XNM, Y_, Y_X, Y_SDD, Y_L, Y_U, Y_Z, Y_OK, B_SAME, B_XIN, B_XOUT, F_SAME, F_XIN,
-       F_XOUT, N_OFFSETS };
+       F_XNM, Y_, Y_X, Y_SDD, Y_L, Y_U, Y_Z, Y_OK, N_OFFSETS };
 
 static const double TOL = 1e-9; /* grid.py's _TOL */
 
@@ -106,9 +104,10 @@ static int rows_equal(const double *a, const double *b, Py_ssize_t S)
  * it (grid.py before the passes moved to C): a row's maximum-velocity curve where its stage
  * row is the same, the backward pass's bounds above the last interval whose input changed,
  * the forward pass's steps before the first one whose input or bound changed, and the
- * generated steps' own memo (same, x_in, x_out: they hand the previous result back where the
- * pass meets the previous one again; where the step would, it is taken here without building
- * its input or calling it). The result is the whole computation's, bit for bit. */
+ * previous steps where the pass meets the previous one again (the same interval, arrived at
+ * with the same bound or speed), neither built nor evaluated: what the generated steps' own
+ * memo (same, x_in, x_out, left zero here) would hand back. The result is the whole
+ * computation's, bit for bit. */
 static int run(const Calls *f, const Py_ssize_t *o, const double *prm, const double *s,
                const double *base, const double *v1, const double *x_cap, const double *left,
                const double *bp, Py_ssize_t J, Py_ssize_t K, const Prev *pv, double *stage,
@@ -219,16 +218,11 @@ static int run(const Calls *f, const Py_ssize_t *o, const double *prm, const dou
         xs[0] = hi[top + 1];
         for (Py_ssize_t k = top; k >= 0; k--) {
             if (pv != NULL && same_int[k] && xs[0] == pv->hi[JS(k + 1)]) {
-                /* what the generated step's switch returns, without building its input */
+                /* the same interval from the same bound: the previous step's result */
                 hi[k] = xs[0] = pv->hi[JS(k)];
                 continue;
             }
             PAIR(in + o[B_PAIR], k);
-            if (pv != NULL) {
-                in[o[B_SAME]] = same_int[k];
-                in[o[B_XIN]] = pv->hi[JS(k + 1)];
-                in[o[B_XOUT]] = pv->hi[JS(k)];
-            }
             const double *a[3] = {xs, in, prm};
             double *r[2] = {xs + 1, hi + k};
             if (api->eval(f->back, a, r) != 0)
@@ -259,8 +253,7 @@ static int run(const Calls *f, const Py_ssize_t *o, const double *prm, const dou
         xs[0] = x_raw[first];
         for (Py_ssize_t k = first; k + 1 < K; k++) {
             if (pv != NULL && same_int[k] && xs[0] == pv->x_raw[JS(k)]) {
-                /* met the previous pass: what the generated step's switch and the copy below
-                   give, without building its input */
+                /* met the previous pass: the same interval from the same speed */
                 memcpy(yall + k * Y, pv->y + JS(k) * Y, (size_t)Y * sizeof(double));
                 x_raw[k] = pv->x_raw[JS(k)];
                 xs[0] = pv->x_raw[JS(k + 1)];
@@ -268,22 +261,12 @@ static int run(const Calls *f, const Py_ssize_t *o, const double *prm, const dou
             }
             PAIR(in + o[F_PAIR], k);
             in[o[F_XNM]] = hi[k + 1];
-            double x_in = pv != NULL ? pv->x_raw[JS(k)] : 0.0;
-            if (pv != NULL) {
-                in[o[F_SAME]] = same_int[k];
-                in[o[F_XIN]] = x_in;
-                in[o[F_XOUT]] = pv->x_raw[JS(k + 1)];
-            }
             double *yk = yall + k * Y;
             const double *a[3] = {xs, in, prm};
             double *r[2] = {xs + 1, yk};
             if (api->eval(f->fwd, a, r) != 0)
                 return 1;
             x_raw[k] = yk[o[Y_X]];
-            if (pv != NULL && same_int[k] && x_raw[k] == x_in) {   /* met the previous pass */
-                memcpy(yk, pv->y + JS(k) * Y, (size_t)Y * sizeof(double));
-                x_raw[k] = pv->x_raw[JS(k)];
-            }
             xs[0] = xs[1];
         }
         x_raw[K - 1] = xs[0];

@@ -23,9 +23,7 @@ def _offsets(model):
                      pair.size, p["stage"].start, p["next"].start, p["next_cap"].start,
                      bi.size, b["pair"].start, fi.size, f["pair"].start, f["x_next_max"].start,
                      fo.size, y["x"].start, y["sdd"].start, y["L"].start, y["U"].start,
-                     y["Z"].start, y["arrival_ok"].start,
-                     *(sl[k].start for sl in (b, f) for k in ("same", "x_in", "x_out"))],
-                    dtype=np.int64)
+                     y["Z"].start, y["arrival_ok"].start], dtype=np.int64)
 
 
 class Linking:

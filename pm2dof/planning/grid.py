@@ -13,8 +13,8 @@ inputs):
   pm2dof/planning/_passes.c) that takes from the previous solve what the added points cannot
   have changed: the curve where a row is the same, the backward pass above the last interval
   whose input changed, the forward pass before the first, and each step where the pass meets
-  the previous one again (the generated step returns the previous result: _reusing in
-  pm2dof/derive/planning.py). :func:`passes` is the whole computation in NumPy around the
+  the previous one again (the same interval from the same bound or speed: the previous step,
+  not evaluated). :func:`passes` is the whole computation in NumPy around the
   generated C: the reference, and what names the place where a grid fails;
 * an interval's midpoint check is recomputed where the interval is new or its speeds or
   acceleration changed.
